@@ -1,0 +1,26 @@
+#pragma once
+// A straight or circular piece of path in the (z, x_radius) plane.
+#include "klueng/core/geometry.h"
+
+namespace klueng::core {
+
+struct Segment {
+  enum class Kind { Line, Arc };
+  Kind kind = Kind::Line;
+  Vec2 start = Vec2::Zero();
+  Vec2 end = Vec2::Zero();
+  Vec2 centre = Vec2::Zero();  // arcs only, absolute
+  bool ccw = false;            // arcs: counter-clockwise in the X-up drawing (G03)
+
+  static Segment line(const Vec2& a, const Vec2& b) { return {Kind::Line, a, b, Vec2::Zero(), false}; }
+  static Segment arc(const Vec2& a, const Vec2& b, const Vec2& c, bool ccw) { return {Kind::Arc, a, b, c, ccw}; }
+  bool isArc() const { return kind == Kind::Arc; }
+  double radius() const { return (start - centre).norm(); }
+  double length() const;                 // path length (arc length for arcs)
+  Vec2 pointAt(double s) const;          // s in [0,1] of the path length
+  Vec2 startTangent() const;             // unit direction of travel at the start
+  Vec2 endTangent() const;               // unit direction of travel at the end
+  double sweep() const;                  // arcs: swept angle in radians, > 0
+};
+
+}  // namespace klueng::core

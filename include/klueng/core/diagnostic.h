@@ -1,0 +1,42 @@
+#pragma once
+// Errors are data: a stable code plus arguments. The core never builds user
+// text itself; messages.h turns a Diagnostic into English or Thai.
+#include <string>
+#include <vector>
+
+namespace klueng::core {
+
+enum class Severity { Warning, Error, Alarm };
+
+// A place in a source file. line is 1-based in the whole file (header lines
+// included); column is the 1-based index of the Unicode code point; length in
+// code points (0 when it marks a point, not a word).
+struct SourceRange {
+  int line = 0;
+  int column = 0;
+  int length = 0;
+  friend bool operator==(const SourceRange&, const SourceRange&) = default;
+};
+
+struct Diagnostic {
+  Severity severity = Severity::Error;
+  std::string code;               // stable, e.g. "E104", "A203", "F012"
+  SourceRange range;
+  std::vector<std::string> args;  // fill the {0} {1} ... of the catalog's text
+};
+
+// Code ranges, one catalog file per module (src/core/base/messages_*.cpp):
+//   E1xx word formats and lexical errors (SPEC 3-4)       gcode
+//   E2nn block rule nn of SPEC 5 (E201 = rule 1 ... E213)  gcode
+//   E3xx "ext" block rules (arcs, comp, tool table)         gcode
+//   W1xx warnings of the checker                            gcode
+//   F1xx file formats: program header, tools.cfg,
+//        offset.cfg, machine.cfg, bitmaps                   io
+//   A1xx run-time alarms of the interpreter (SPEC 8)        machine
+//   A2xx nose radius compensation alarms                    comp
+//   A3xx alarms that need the stock (collisions, cutting)   cut
+//   I1xx informational notes (e.g. G28 without axes)        any
+
+bool hasErrors(const std::vector<Diagnostic>& diags);
+
+}  // namespace klueng::core

@@ -1,0 +1,22 @@
+#pragma once
+// The grammar checker (SPEC 4-5 and the "ext" rules that need no modal state).
+// Returns every diagnostic of the whole program, sorted by line and column.
+#include <optional>
+#include <vector>
+
+#include "klueng/core/diagnostic.h"
+#include "klueng/core/gcode/code_table.h"
+#include "klueng/core/gcode/program.h"
+
+namespace klueng::core::gcode {
+
+struct CheckOptions {
+  Dialect dialect = Dialect::Fanuc;
+  // Tools 1..8 that have a bitmap in tools.cfg; empty = do not check (no table loaded).
+  std::optional<std::vector<int>> toolsWithBitmap;
+};
+
+// Includes program.lexicalDiagnostics.
+std::vector<Diagnostic> check(const Program& program, const CheckOptions& options = {});
+
+}  // namespace klueng::core::gcode

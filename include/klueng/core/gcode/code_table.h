@@ -1,0 +1,56 @@
+#pragma once
+// Codes as data: one row per G or M code with its modal group, in-block
+// execution priority and help text, for both dialects (SPEC 6, 7, 13).
+// The checker, the interpreter, the editor's tooltips and the help pages all
+// read this one table.
+#include <optional>
+#include <span>
+#include <string_view>
+
+namespace klueng::core::gcode {
+
+enum class Dialect { Fanuc, Classic };
+
+enum class ModalGroup {
+  NonModal,      // 00: G04 G27 G28 G29 G50 (G53 in Fanuc)
+  Motion,        // 01: G00 G01 G02 G03 G32 (G90 G92 G94)
+  Units,         // 06: G20 G21
+  NoseComp,      // 07: G40 G41 G42
+  SpindleMode,   // 02: G96 G97
+  FeedMode,      // 05: G98 G99
+  Plane,         // 16: G18 (Fanuc)
+  WorkOffset,    // 14: G54..G59 (Fanuc)
+  CannedCycle,   // 10/00: G70..G76, G80
+  // M code groups, for rule 4 and the interpreter
+  MSpindle,      // M03 M04 M05
+  MCoolant,      // M08 M09
+  MCAxis,        // M41 M91 (classic)
+  MBrake,        // M86 M87
+  MGear,         // M41 M42 (Fanuc gear range)
+  MProgram,      // M00 M01 M02 M30
+  MSubprogram,   // M98 M99
+  MOther,
+};
+
+// When an M/G code acts inside its block (SPEC 7: lower runs first).
+enum class Phase { State = 0, BeforeMotion = 1, Motion = 2, AfterMotion = 3 };
+
+struct CodeInfo {
+  char letter;            // 'G' or 'M'
+  int number;             // 0..99
+  ModalGroup group;
+  Phase phase;
+  bool fanuc;             // accepted in the Fanuc 0i-TF dialect
+  bool classic;           // accepted in the Rook classic dialect
+  bool mustStandAlone;    // M00 M01 M02 M30 (and G98/G99 in classic)
+  std::string_view nameEn;  // short help: "Rapid traverse"
+  std::string_view nameTh;
+  std::string_view exampleEn;  // one-line example with explanation
+  std::string_view exampleTh;
+};
+
+std::span<const CodeInfo> codeTable();
+// The row for a code in a dialect; nullopt when the dialect does not know it.
+std::optional<CodeInfo> lookupCode(char letter, int number, Dialect dialect);
+
+}  // namespace klueng::core::gcode

@@ -1,0 +1,43 @@
+#pragma once
+// The parsed program: blocks of words, each with its source range. No modal
+// knowledge lives here (that is the interpreter's job).
+#include <string>
+#include <vector>
+
+#include "klueng/core/diagnostic.h"
+
+namespace klueng::core::gcode {
+
+struct Word {
+  char letter = 0;          // upper-case address letter, 'A'..'Z'
+  double value = 0.0;       // numeric value as written (mm or inch, diameters for X/U)
+  std::string number;       // the number exactly as written ("01", "-.5", "25.")
+  bool hasDecimalPoint = false;
+  int decimals = 0;         // digits after the decimal point
+  SourceRange range;        // covers letter and number
+
+  // Integer code of a G/M/T/N/O word ("G01" -> 1). Only meaningful when
+  // !hasDecimalPoint; G-code numbers like "G1.5" are reported by the checker.
+  int code() const { return static_cast<int>(value); }
+};
+
+struct Block {
+  int line = 0;                 // 1-based line in the file
+  bool blockSkip = false;       // started with '/'
+  std::vector<Word> words;      // in source order
+  std::string comment;          // text of ( ) and ; comments, joined by a space
+
+  const Word* find(char letter) const;
+  bool has(char letter) const { return find(letter) != nullptr; }
+  // Every G (or M) code word of the block, in source order.
+  std::vector<const Word*> all(char letter) const;
+};
+
+struct Program {
+  std::vector<Block> blocks;    // only lines with words; blank, comment-only and % lines are dropped
+  std::vector<Diagnostic> lexicalDiagnostics;  // errors found while reading the text
+  int firstLine = 1;            // file line of the first G-code line
+  int lineCount = 0;            // number of G-code lines read
+};
+
+}  // namespace klueng::core::gcode

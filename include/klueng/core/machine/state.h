@@ -1,0 +1,54 @@
+#pragma once
+// Modal state (one field per modal group) and machine run state: small
+// copyable values, snapshotted after every block for stepping and step back.
+#include "klueng/core/geometry.h"
+
+namespace klueng::core::machine {
+
+enum class MotionMode { Rapid, Line, ArcCw, ArcCcw, Thread };   // G00 G01 G02 G03 G32
+enum class Units { Mm, Inch };                                   // G21 G20
+enum class NoseCompMode { Off, Left, Right };                    // G40 G41 G42
+enum class SpindleMode { ConstantRpm, ConstantSurface };         // G97 G96
+enum class FeedMode { PerMinute, PerRev };                       // G98 G99
+enum class SpindleDir { Stopped, Cw, Ccw };                      // M05 M03 M04
+
+struct ModalState {
+  MotionMode motion = MotionMode::Rapid;
+  Units units = Units::Mm;
+  NoseCompMode noseComp = NoseCompMode::Off;
+  SpindleMode spindleMode = SpindleMode::ConstantRpm;
+  FeedMode feedMode = FeedMode::PerRev;
+  double feed = 0.0;          // F as programmed (mm/min, mm/rev, or lead for G32), 0 = not set
+  double sWord = 0.0;         // last S (rpm under G97, m/min under G96), 0 = not set
+  double rpmClamp = 0.0;      // G50 S, 0 = none
+};
+
+struct MachineState {
+  Vec2 position = Vec2::Zero();    // controlled point, work coordinates (z, x radius)
+  SpindleDir spindle = SpindleDir::Stopped;
+  double rpm = 0.0;                // actual spindle speed now
+  bool coolant = false;            // M08/M09
+  bool brake = false;              // M86/M87
+  bool cAxisMode = false;          // M41/M91 (classic)
+  double cAngle = 0.0;             // degrees
+  bool positionCheck = false;      // G27 lamp
+  bool optionalStopSwitch = false;
+  int tool = 0;                    // 1..8, 0 = none
+  int offset = 0;                  // 0..16, 0 = none
+  double offsetX = 0.0;            // active offset, diameter
+  double offsetZ = 0.0;
+  double noseRadius = 0.0;
+  int tip = 0;
+};
+
+struct StateSnapshot {
+  int line = 0;                 // block's file line
+  int blockIndex = 0;           // index into Program::blocks
+  double time = 0.0;            // seconds when the block has finished
+  int moveEnd = 0;              // Timeline::moves index one past the block's last move
+  ModalState modal;
+  MachineState machine;
+  bool stopped = false;         // M00, M01 with the switch on, M02/M30
+};
+
+}  // namespace klueng::core::machine

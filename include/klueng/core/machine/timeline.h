@@ -1,0 +1,46 @@
+#pragma once
+// The result of interpreting a program: every move with exact times, and the
+// state after every block. Consumers: the cut simulator, trace/CSV writer,
+// cycle-time report, the GUI's animation (which maps time -> pose).
+#include <optional>
+#include <vector>
+
+#include "klueng/core/comp/segment.h"
+#include "klueng/core/diagnostic.h"
+#include "klueng/core/machine/state.h"
+
+namespace klueng::core::machine {
+
+enum class MoveKind { Rapid, Line, Arc, Thread, Dwell };
+
+struct Move {
+  MoveKind kind = MoveKind::Line;
+  int line = 0;              // source file line of the block
+  int blockIndex = 0;
+  double tStart = 0.0;       // seconds
+  double tEnd = 0.0;
+  Segment path;              // controlled point (imaginary tip), work coords, (z, x radius);
+                             // a rapid dog-leg is several Rapid moves, each a straight Segment
+  Vec2 noseCentre = Vec2::Zero();  // nose centre minus controlled point (constant while a tool is active)
+  double feed = 0.0;         // mm/min actually used (rapid rate for rapids; at the start for G96)
+  double rpm = 0.0;          // spindle rpm at the move's start
+  double rpmEnd = 0.0;       // spindle rpm at the move's end (differs under G96)
+  double lead = 0.0;         // G32 lead mm/rev
+  int tool = 0;
+  int offset = 0;
+  SpindleDir spindle = SpindleDir::Stopped;
+  bool compensated = false;  // produced under G41/G42
+};
+
+struct Timeline {
+  std::vector<Move> moves;
+  std::vector<StateSnapshot> snapshots;   // one per executed block, in execution order
+  std::optional<Diagnostic> alarm;        // the alarm that stopped the run, if any
+  double cycleTime() const { return moves.empty() ? 0.0 : moves.back().tEnd; }
+  // Position of the controlled point at time t (clamped to [0, cycleTime]).
+  Vec2 positionAt(double t) const;
+  // Index of the move active at time t (-1 before the first move).
+  int moveAt(double t) const;
+};
+
+}  // namespace klueng::core::machine

@@ -1,0 +1,31 @@
+#pragma once
+// The one message catalog: every diagnostic and alarm code with its English
+// and Thai text. Texts use fmt placeholders {0} {1} ... filled from
+// Diagnostic::args. The GUI and CLI call formatMessage(); tests may check that
+// every code has both texts.
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "klueng/core/diagnostic.h"
+
+namespace klueng::core {
+
+enum class Lang { En, Th };
+
+struct MessageText {
+  std::string_view code;
+  std::string_view en;
+  std::string_view th;
+};
+
+// Every catalog entry of every module.
+std::span<const MessageText> allMessages();
+// nullptr when the code is unknown.
+const MessageText* findMessage(std::string_view code);
+// Text of the diagnostic in the language; an unknown code gives the code and args.
+std::string formatMessage(const Diagnostic& d, Lang lang);
+// "error", "warning", "alarm" / Thai equivalents.
+std::string_view severityName(Severity s, Lang lang);
+
+}  // namespace klueng::core

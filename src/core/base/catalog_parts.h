@@ -1,0 +1,13 @@
+#pragma once
+// Each module keeps its own part of the catalog in messages_<module>.cpp.
+#include <span>
+
+#include "klueng/core/messages.h"
+
+namespace klueng::core::catalog {
+std::span<const MessageText> gcodeMessages();
+std::span<const MessageText> ioMessages();
+std::span<const MessageText> machineMessages();
+std::span<const MessageText> compMessages();
+std::span<const MessageText> cutMessages();
+}  // namespace klueng::core::catalog

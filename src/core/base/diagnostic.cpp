@@ -1,0 +1,12 @@
+#include "klueng/core/diagnostic.h"
+
+#include <algorithm>
+
+namespace klueng::core {
+
+bool hasErrors(const std::vector<Diagnostic>& diags) {
+  return std::any_of(diags.begin(), diags.end(),
+                     [](const Diagnostic& d) { return d.severity != Severity::Warning; });
+}
+
+}  // namespace klueng::core

@@ -1,0 +1,2 @@
+// Material removal lives here (issue 4).
+namespace klueng::core::cut {}

@@ -1,0 +1,2 @@
+// File formats live here (issue 2).
+namespace klueng::core::io {}
