@@ -1,6 +1,36 @@
+// klueng-cli: the command-line twin of the simulator.
 #include <cstdio>
+#include <string>
+#include <vector>
 
-int main() {
-  std::puts("klueng-cli: not yet");
-  return 0;
+#include "commands.h"
+
+namespace {
+
+void printUsage(std::FILE* out) {
+  std::fputs(
+      "usage: klueng-cli check FILE... [--lang en|th] [--dialect fanuc|classic] [--json]\n"
+      "       klueng-cli simulate FILE [--trace out.csv] [--cycle-time] [--config DIR]\n"
+      "                               [--lang en|th] [--dialect fanuc|classic]\n",
+      out);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    printUsage(stderr);
+    return 2;
+  }
+  const std::string command = argv[1];
+  const std::vector<std::string> args(argv + 2, argv + argc);
+  if (command == "check") return klueng::cli::runCheck(args);
+  if (command == "simulate") return klueng::cli::runSimulate(args);
+  if (command == "--help" || command == "-h" || command == "help") {
+    printUsage(stdout);
+    return 0;
+  }
+  std::fprintf(stderr, "klueng-cli: unknown command '%s'\n", command.c_str());
+  printUsage(stderr);
+  return 2;
 }

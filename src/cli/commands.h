@@ -1,0 +1,13 @@
+#pragma once
+// klueng-cli subcommands. Each returns the process exit status.
+#include <string>
+#include <vector>
+
+namespace klueng::cli {
+
+// klueng-cli check FILE... [--lang en|th] [--dialect fanuc|classic] [--json]
+int runCheck(const std::vector<std::string>& args);
+// klueng-cli simulate FILE [--trace out.csv] [--cycle-time] [--config DIR] [--lang en|th] ...
+int runSimulate(const std::vector<std::string>& args);
+
+}  // namespace klueng::cli
