@@ -1,0 +1,2 @@
+// Widgets (issue 5).
+namespace klueng::gui {}

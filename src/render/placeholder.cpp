@@ -1,0 +1,2 @@
+// Painters shared by screen, print and export (issue 5).
+namespace klueng::render {}
