@@ -1,0 +1,44 @@
+#pragma once
+// Job details (SPEC 2): project, part, material, stock diameter and length
+// (each with mm/inch), programmer. Diameter and length must be > 0.
+//
+// Public API
+//   JobDetailsDialog dlg(header, parent);  if (dlg.exec()) header = dlg.header();
+//   header() is the edited core::io::JobHeader (units as chosen)
+#include <QDialog>
+
+#include "klueng/core/io/program_file.h"
+
+class QLineEdit;
+class QDoubleSpinBox;
+class QComboBox;
+class QFormLayout;
+class QLabel;
+class QDialogButtonBox;
+
+namespace klueng::gui {
+
+class JobDetailsDialog : public QDialog {
+  Q_OBJECT
+ public:
+  explicit JobDetailsDialog(const core::io::JobHeader& header, QWidget* parent = nullptr);
+  core::io::JobHeader header() const;
+
+ protected:
+  void changeEvent(QEvent* event) override;
+
+ private:
+  void retranslate();
+  QFormLayout* form_ = nullptr;
+  QLineEdit* project_ = nullptr;
+  QLineEdit* part_ = nullptr;
+  QLineEdit* material_ = nullptr;
+  QDoubleSpinBox* diameter_ = nullptr;
+  QComboBox* diameterUnit_ = nullptr;
+  QDoubleSpinBox* length_ = nullptr;
+  QComboBox* lengthUnit_ = nullptr;
+  QLineEdit* programmer_ = nullptr;
+  QDialogButtonBox* buttons_ = nullptr;
+};
+
+}  // namespace klueng::gui

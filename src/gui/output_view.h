@@ -1,0 +1,87 @@
+#pragma once
+// The output screen (SPEC 12): the stock as a lathe section (both halves), the
+// chuck, the tool bitmap at its controlled point, the path trail (rapid
+// dashed, feed solid), X and Z rulers that follow zoom and pan.
+// Wheel = zoom about the mouse, drag = pan, fitToView() = everything in sight.
+//
+// Public API (F1 puts an OutputView in the main window)
+//   OutputView view(parent);  view.setRunController(&controller);
+//     - follows the controller: programReset -> rebuild, frameAdvanced -> move the
+//       tool, cut the stock, extend the trail
+//   fitToView()            zoom to stock + chuck + tool path
+//   zoomIn() zoomOut()     keyboard/menu zoom
+//   setShowPath(bool)      show/hide the trail
+//   toolItemPos()          the tool item's scene position == controlled point (z, -radius)
+//   renderToImage(size)    the drawing (no rulers) as an image, e.g. for PNG export
+//   pixelsPerMm()          current zoom
+//   scene()                the QGraphicsScene (mm units, Y up = -scene y)
+#include <QGraphicsView>
+#include <QImage>
+#include <QPointer>
+
+#include "klueng/core/geometry.h"
+
+namespace klueng::gui {
+
+class RunController;
+class OutputRuler;
+class StockItem;
+class ChuckItem;
+class ToolItem;
+class TrailItem;
+
+class OutputView : public QGraphicsView {
+  Q_OBJECT
+ public:
+  explicit OutputView(QWidget* parent = nullptr);
+  ~OutputView() override;
+
+  void setRunController(RunController* controller);
+  RunController* runController() const { return controller_; }
+
+  QPointF toolItemPos() const;
+  bool toolVisible() const;
+  double pixelsPerMm() const;
+  QImage renderToImage(const QSize& size);
+  void setShowPath(bool show);
+  // The ruler thickness in pixels (the viewport margins).
+  static constexpr int kRulerSize = 24;
+
+ public slots:
+  void fitToView();
+  void zoomIn();
+  void zoomOut();
+  void rebuild();      // from the controller's job, timeline and stock
+  void updateFrame();  // tool pose, stock and trail at the controller's time
+
+ signals:
+  void zoomChanged(double pixelsPerMm);
+  // Mouse position in work coordinates (X as diameter), for a coordinate readout.
+  void cursorPositionChanged(double xDiameter, double z);
+
+ protected:
+  void wheelEvent(QWheelEvent* event) override;
+  void resizeEvent(QResizeEvent* event) override;
+  void scrollContentsBy(int dx, int dy) override;
+  void mouseMoveEvent(QMouseEvent* event) override;
+  void drawBackground(QPainter* painter, const QRectF& rect) override;
+  void changeEvent(QEvent* event) override;
+
+ private:
+  void zoomBy(double factor, const QPoint& anchorViewportPos);
+  void updateRulers();
+  QRectF contentRect() const;
+
+  QPointer<RunController> controller_;
+  OutputRuler* xRuler_ = nullptr;  // vertical ruler at the left: X (diameter)
+  OutputRuler* zRuler_ = nullptr;  // horizontal ruler at the top: Z
+  QWidget* corner_ = nullptr;
+  StockItem* stock_ = nullptr;
+  ChuckItem* chuck_ = nullptr;
+  ToolItem* tool_ = nullptr;
+  TrailItem* trail_ = nullptr;
+  int trailMoves_ = 0;        // moves of the timeline already in the trail
+  bool fitPending_ = true;
+};
+
+}  // namespace klueng::gui

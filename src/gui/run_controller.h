@@ -1,0 +1,184 @@
+#pragma once
+// Plays the core's Timeline (and the core's cut) for the GUI: Go, Step, Pause,
+// Stop, Step Back, Run to line, breakpoints, speed. Holds no machining logic:
+// the core checks, interprets and cuts; this class only maps wall-clock time
+// to machine time and stops where the user asked.
+//
+// Public API (F1 wires these into the main window)
+//   setProgram(file, displayName)   the document's current text (call on every change;
+//                                   cheap: the timeline is rebuilt lazily on the next run)
+//   setMachineSetup(setup)          tools.cfg / offset.cfg / machine.cfg (after the dialogs)
+//   setDialect(d), setOptionalStop(on), setBlockSkip(on)   switches (SPEC 10)
+//   setBreakpoints(QSet<int> fileLines)                      editor margin breakpoints
+//   setSpeed(factor)  machine seconds per wall second; kAsFastAsPossible (0) = no animation
+//   go() step() pause() stop() stepBack() runToLine(fileLine)   the Run menu (slots)
+//   state(), currentTime(), currentLine(), status(), timeline(), stockShape()
+// Signals
+//   stateChanged(RunState)                 enable/disable the Run actions
+//   checkFailed(QList<core::Diagnostic>)   the program has errors; the run did not start
+//   alarmRaised(core::Diagnostic)          run stopped on an alarm (line in d.range.line);
+//                                          formatMessage(d, Language::coreLang()) for the text
+//   executingLineChanged(int fileLine)     highlight this line (0 = none)
+//   statusChanged(RunStatus)               status bar fields and lamps
+//   frameAdvanced()                        the output view should repaint (pose/stock changed)
+//   programReset()                         new timeline / stock: rebuild the scene
+//   busyChanged(bool)                      background work (check/interpret/cut to end) running
+#include <QElapsedTimer>
+#include <QFutureWatcher>
+#include <QList>
+#include <QMetaType>
+#include <QObject>
+#include <QSet>
+#include <QString>
+#include <QTimer>
+#include <memory>
+#include <optional>
+
+#include "klueng/core/diagnostic.h"
+#include "klueng/core/gcode/code_table.h"
+#include "klueng/core/io/program_file.h"
+#include "klueng/core/machine/interpreter.h"
+#include "klueng/core/machine/timeline.h"
+#include "render/lathe_painters.h"
+
+namespace klueng::gui {
+
+class CutEngine;  // run_cut_engine.h: the core's cut, wrapped for the controller
+
+enum class RunState {
+  Idle,       // nothing run yet, or stopped (reset)
+  Preparing,  // checking + interpreting in the background
+  Running,    // Go: animating
+  Stepping,   // Step: animating one block
+  Paused,     // waiting after a step, a pause, a breakpoint, M00/M01
+  Finished,   // reached the program's end
+  Alarm,      // stopped on an alarm
+};
+
+// Everything the status bar and the lamps show (SPEC 12).
+struct RunStatus {
+  core::Vec2 position = core::Vec2::Zero();   // controlled point, work coords (z, radius)
+  double feedMmPerMin = 0.0;                  // actual feed of the active move (0 when idle)
+  double programmedFeed = 0.0;                // F as programmed
+  core::machine::FeedMode feedMode = core::machine::FeedMode::PerRev;
+  double rpm = 0.0;
+  core::machine::MachineState machine;        // tool, offset, lamps ...
+  double time = 0.0;                          // machine seconds since the start
+  double cycleTime = 0.0;
+  int line = 0;                               // file line of the block (0 = none)
+};
+
+class RunController : public QObject {
+  Q_OBJECT
+ public:
+  static constexpr double kAsFastAsPossible = 0.0;
+
+  explicit RunController(QObject* parent = nullptr);
+  ~RunController() override;
+
+  void setProgram(const core::io::ProgramFile& file, const QString& displayName = {});
+  void setMachineSetup(const core::machine::MachineSetup& setup);
+  const core::machine::MachineSetup& machineSetup() const { return setup_; }
+  void setDialect(core::gcode::Dialect dialect);
+  void setOptionalStop(bool on);
+  bool optionalStop() const { return options_.optionalStop; }
+  void setBlockSkip(bool on);
+  bool blockSkip() const { return options_.blockSkip; }
+  void setBreakpoints(const QSet<int>& fileLines);
+  QSet<int> breakpoints() const { return breakpoints_; }
+  void setSpeed(double factor);
+  double speed() const { return speed_; }
+
+  RunState state() const { return state_; }
+  bool isBusy() const { return busy_; }
+  double currentTime() const { return time_; }
+  int currentLine() const { return currentLine_; }
+  RunStatus status() const;
+  // The timeline being played (nullptr before the first run).
+  const core::machine::Timeline* timeline() const { return timeline_.get(); }
+  const core::io::JobHeader& jobHeader() const { return file_.header; }
+  // The stock as the core's cut has left it at currentTime().
+  render::StockShape stockShape() const;
+  // Index of the snapshot of the block being executed or last finished (-1 = none).
+  int currentSnapshot() const { return snapshotIndex_; }
+  // Frames drawn since the last reset (for the frame-rate probe).
+  qint64 frameCount() const { return frames_; }
+
+ public slots:
+  void go();
+  void step();
+  void pause();
+  void stop();
+  void stepBack();
+  void runToLine(int fileLine);
+  // Blocks until any background preparation/cut finished (tests, batch export).
+  void waitForIdle();
+
+ signals:
+  void stateChanged(klueng::gui::RunState state);
+  void checkFailed(const QList<klueng::core::Diagnostic>& diagnostics);
+  void alarmRaised(const klueng::core::Diagnostic& alarm);
+  void executingLineChanged(int fileLine);
+  void statusChanged(const klueng::gui::RunStatus& status);
+  void frameAdvanced();
+  void programReset();
+  void busyChanged(bool busy);
+
+ private:
+  enum class Pending { None, Go, Step, RunToLine };
+  struct Prepared;
+
+  void prepareAndThen(Pending what);
+  void onPrepared();
+  void startPending();
+  void tick();
+  void advanceTo(double t);
+  void setState(RunState s);
+  void setBusy(bool b);
+  void resetPlayback();
+  void reachStopPoint();
+  double nextStopTime() const;
+  double blockEndTime(int snapshot) const;
+  int snapshotAtTime(double t) const;
+  void emitStatus();
+  void runFastTo(double target);
+  void onFastDone();
+  void seekTo(double t);   // step back / reset: rebuild the cut to t
+
+  core::io::ProgramFile file_;
+  QString displayName_;
+  core::machine::MachineSetup setup_;
+  core::machine::RunOptions options_;
+  QSet<int> breakpoints_;
+  double speed_ = 1.0;
+  bool stale_ = true;
+
+  std::shared_ptr<const core::machine::Timeline> timeline_;
+  std::unique_ptr<CutEngine> cut_;
+  RunState state_ = RunState::Idle;
+  bool busy_ = false;
+  Pending pending_ = Pending::None;
+  int runToLine_ = 0;
+  double time_ = 0.0;
+  double stopTime_ = 0.0;       // where the current Go/Step ends (before breakpoints)
+  int snapshotIndex_ = -1;
+  int currentLine_ = 0;
+  bool alarmAtEnd_ = false;
+  bool ignoreBreakpointAt_ = false;
+  double resumeFrom_ = -1.0;
+  qint64 frames_ = 0;
+
+  QTimer frameTimer_;
+  QElapsedTimer wallClock_;
+  qint64 lastTickNs_ = 0;
+  QFutureWatcher<std::shared_ptr<Prepared>> prepareWatcher_;
+  QFutureWatcher<void> fastWatcher_;
+  double fastTarget_ = 0.0;
+};
+
+QString runStateName(RunState s);
+
+}  // namespace klueng::gui
+
+Q_DECLARE_METATYPE(klueng::gui::RunStatus)
+Q_DECLARE_METATYPE(klueng::core::Diagnostic)
