@@ -1,11 +1,93 @@
 // Catalog part for the io module: code, English, Thai. Keep codes sorted.
+// Every io diagnostic carries the file name as {0}; texts about a field whose
+// place (line and column) already says which file leave it out.
 #include "catalog_parts.h"
 
 namespace klueng::core::catalog {
 
 namespace {
 constexpr MessageText kMessages[] = {
-    {"_io", "(no messages yet)", "(ยังไม่มีข้อความ)"},
+    // SPEC 5 rule 13 lives here because the stock size comes from the program header.
+    {"E213", "stock diameter and length must be greater than 0 (this line gives {1})",
+     "เส้นผ่านศูนย์กลางและความยาวของชิ้นงานต้องมากกว่า 0 (บรรทัดนี้ให้ค่า {1})"},
+
+    // Whole files.
+    {"F101", "{0}: no such file", "{0}: ไม่พบไฟล์"},
+    {"F102", "{0}: cannot read the file (it is a folder, or access is denied)",
+     "{0}: อ่านไฟล์ไม่ได้ (เป็นโฟลเดอร์ หรือไม่มีสิทธิ์เข้าถึง)"},
+    {"F103", "{0}: the file is {1} bytes; files over 64 MB are refused",
+     "{0}: ไฟล์มีขนาด {1} ไบต์ ไม่รับไฟล์ที่ใหญ่กว่า 64 MB"},
+    {"F104", "{0}: this is a binary file (it contains a NUL byte), not text",
+     "{0}: ไฟล์นี้เป็นไฟล์ไบนารี (มีไบต์ NUL) ไม่ใช่ไฟล์ข้อความ"},
+    {"F105", "{0}: the file is empty", "{0}: ไฟล์ว่างเปล่า"},
+    {"F106", "{0}: the line is too long ({1} characters, at most {2}); it is ignored",
+     "{0}: บรรทัดยาวเกินไป ({1} ตัวอักษร ยาวได้ไม่เกิน {2}) จึงไม่นำบรรทัดนี้มาใช้"},
+    {"F107", "{0}: lines after line {1} are ignored",
+     "{0}: บรรทัดที่อยู่หลังบรรทัดที่ {1} จะไม่ถูกนำมาใช้"},
+    {"F108", "{0}: cannot write the file ({1})", "{0}: บันทึกไฟล์ไม่ได้ ({1})"},
+
+    // Program header (SPEC 2).
+    {"F110",
+     "{0}: the job header needs 6 lines (project, part, material, diameter, length, programmer) "
+     "but the file has only {1}",
+     "{0}: ส่วนหัวของงานต้องมี 6 บรรทัด (ชื่องาน ชิ้นงาน วัสดุ เส้นผ่านศูนย์กลาง ความยาว ผู้เขียน) "
+     "แต่ไฟล์มีเพียง {1} บรรทัด"},
+    {"F111", "stock diameter: the unit digit must be 0 (inch) or 1 (mm), not '{1}'",
+     "เส้นผ่านศูนย์กลางของชิ้นงาน: หลักแรกต้องเป็นหน่วย 0 (นิ้ว) หรือ 1 (มม.) ไม่ใช่ '{1}'"},
+    {"F112", "stock diameter: '{1}' is not a number",
+     "เส้นผ่านศูนย์กลางของชิ้นงาน: '{1}' ไม่ใช่ตัวเลข"},
+    {"F113", "stock length: the unit digit must be 0 (inch) or 1 (mm), not '{1}'",
+     "ความยาวของชิ้นงาน: หลักแรกต้องเป็นหน่วย 0 (นิ้ว) หรือ 1 (มม.) ไม่ใช่ '{1}'"},
+    {"F114", "stock length: '{1}' is not a number", "ความยาวของชิ้นงาน: '{1}' ไม่ใช่ตัวเลข"},
+    {"F115", "stock diameter is missing: line 4 must hold a unit digit and a number, e.g. 150 = 50 mm",
+     "ไม่มีเส้นผ่านศูนย์กลางของชิ้นงาน: บรรทัดที่ 4 ต้องมีหลักหน่วยตามด้วยตัวเลข เช่น 150 = 50 มม."},
+    {"F116", "stock length is missing: line 5 must hold a unit digit and a number, e.g. 1100 = 100 mm",
+     "ไม่มีความยาวของชิ้นงาน: บรรทัดที่ 5 ต้องมีหลักหน่วยตามด้วยตัวเลข เช่น 1100 = 100 มม."},
+
+    // tools.cfg (SPEC 11).
+    {"F120", "{0}: the tool table needs 8 lines (bitmaps of tools 01 to 08) but has {1}; tools {2} to 08 have no bitmap",
+     "{0}: ตารางมีดตัดต้องมี 8 บรรทัด (ภาพของมีดตัด 01 ถึง 08) แต่มีเพียง {1} บรรทัด มีดตัด {2} ถึง 08 จึงไม่มีภาพ"},
+    {"F121", "{0}: tool {1}: the bitmap '{2}' does not exist",
+     "{0}: มีดตัด {1}: ไม่พบไฟล์ภาพ '{2}'"},
+    {"F122", "{0}: tool {1}: '{2}' is not a .bmp or .png file name",
+     "{0}: มีดตัด {1}: '{2}' ไม่ใช่ชื่อไฟล์ภาพ .bmp หรือ .png"},
+
+    // offset.cfg (SPEC 11).
+    {"F130", "{0}: the offset table needs 16 lines (X Z R T of offsets 01 to 16) but has {1}; offsets {2} to 16 are set to 0 0 0 0",
+     "{0}: ตารางค่าออฟเซตต้องมี 16 บรรทัด (X Z R T ของออฟเซต 01 ถึง 16) แต่มีเพียง {1} บรรทัด ออฟเซต {2} ถึง 16 จึงเป็น 0 0 0 0"},
+    {"F131", "{0}: offset {1} is empty; it needs four numbers X Z R T",
+     "{0}: ออฟเซต {1} ว่างอยู่ ต้องมีตัวเลขสี่ค่า X Z R T"},
+    {"F132", "{0}: offset {1} needs four numbers X Z R T but has {2}",
+     "{0}: ออฟเซต {1} ต้องมีตัวเลขสี่ค่า X Z R T แต่มี {2} ค่า"},
+    {"F133", "{0}: offset {1}: '{2}' is not a number", "{0}: ออฟเซต {1}: '{2}' ไม่ใช่ตัวเลข"},
+    {"F134", "{0}: offset {1}: the nose radius R must not be negative ({2})",
+     "{0}: ออฟเซต {1}: รัศมีจมูกมีด R ต้องไม่ติดลบ ({2})"},
+    {"F135", "{0}: offset {1}: the tip number must be a whole number from 0 to 9, not '{2}'",
+     "{0}: ออฟเซต {1}: หมายเลขปลายมีดต้องเป็นจำนวนเต็มตั้งแต่ 0 ถึง 9 ไม่ใช่ '{2}'"},
+
+    // machine.cfg.
+    {"F140", "{0}: expected 'key = value'", "{0}: ต้องเขียนในรูปแบบ 'ชื่อค่า = ค่า'"},
+    {"F141", "{0}: unknown machine parameter '{1}'", "{0}: ไม่รู้จักค่าพารามิเตอร์ของเครื่อง '{1}'"},
+    {"F142", "{0}: {1}: '{2}' is not a number", "{0}: {1}: '{2}' ไม่ใช่ตัวเลข"},
+    {"F143", "{0}: {1} must be greater than 0 ({2})", "{0}: {1} ต้องมากกว่า 0 ({2})"},
+    {"F144", "{0}: {1} must not be negative ({2})", "{0}: {1} ต้องไม่ติดลบ ({2})"},
+    {"F145", "{0}: {1} is given twice; the later value is used",
+     "{0}: มีการกำหนด {1} ซ้ำสองครั้ง จะใช้ค่าหลัง"},
+    {"F146", "{0}: travel limits: {1} must be less than {2}",
+     "{0}: ระยะเคลื่อนที่สูงสุดของเครื่อง: {1} ต้องน้อยกว่า {2}"},
+
+    // Tool bitmaps (SPEC 11).
+    {"F150", "{0}: not a BMP or PNG image", "{0}: ไม่ใช่ไฟล์ภาพ BMP หรือ PNG"},
+    {"F151", "{0}: the image data ends too early (truncated file)",
+     "{0}: ข้อมูลภาพสิ้นสุดก่อนกำหนด (ไฟล์ไม่สมบูรณ์)"},
+    {"F152", "{0}: image size {1} × {2} pixels is not allowed (1 to 4096 pixels each way)",
+     "{0}: ขนาดภาพ {1} × {2} พิกเซลใช้ไม่ได้ (ด้านละ 1 ถึง 4096 พิกเซล)"},
+    {"F153", "{0}: unsupported BMP format ({1} bits per pixel, compression {2})",
+     "{0}: ไม่รองรับรูปแบบ BMP นี้ ({1} บิตต่อพิกเซล การบีบอัดแบบ {2})"},
+    {"F154", "{0}: the BMP header is damaged ({1})", "{0}: ส่วนหัวของไฟล์ BMP เสียหาย ({1})"},
+    {"F155", "{0}: the PNG data is damaged ({1})", "{0}: ข้อมูล PNG เสียหาย ({1})"},
+    {"F156", "{0}: a pixel uses colour {1}, but the palette has only {2} colours",
+     "{0}: มีพิกเซลที่ใช้สีหมายเลข {1} แต่จานสีมีเพียง {2} สี"},
 };
 }  // namespace
 

@@ -34,13 +34,18 @@ struct ProgramFile {
 
 // Decodes bytes (UTF-8, or TIS-620/Windows-874 when not valid UTF-8) and splits
 // header from code. `fileName` is only used in diagnostics' args.
-// Never throws; binary or huge input gives F1xx diagnostics.
-ReadResult<ProgramFile> parseProgramFile(std::string_view bytes, const JobHeader& defaultsForPlain = {});
+// Never throws; binary or huge input gives F1xx diagnostics. A stock diameter or
+// length <= 0 gives E213 (SPEC 5 rule 13). Lines longer than 4096 characters
+// are reported (F106) and read as empty lines, so line numbers stay right.
+ReadResult<ProgramFile> parseProgramFile(std::string_view bytes, const JobHeader& defaultsForPlain = {},
+                                         const std::string& fileName = {});
 ReadResult<ProgramFile> readProgramFile(const std::string& path, const JobHeader& defaultsForPlain = {});
 
 // Text in Klueng's format (UTF-8, LF). A plain file is written back plain.
+// Sizes are written as unit digit + shortest number (50 mm -> "150").
 std::string formatProgramFile(const ProgramFile& file);
-// Atomic write (temporary file + rename). Returns false and fills error on failure.
+// Atomic write (temporary file in the same folder + fsync + rename).
+// Returns false and fills error (English, for logs) on failure.
 bool writeTextFileAtomic(const std::string& path, std::string_view text, std::string* error = nullptr);
 
 }  // namespace klueng::core::io

@@ -45,22 +45,38 @@ struct MachineConfig {
   double chuckJawHeight = 20.0;  // radial size of the jaws outside the stock, mm
 };
 
+// Line n = bitmap of tool 0n (empty line = no bitmap); lines after 8 are ignored
+// (warning F107). readToolTable also reports bitmaps that do not exist (F121).
 ReadResult<ToolTable> readToolTable(const std::string& path);
 ReadResult<ToolTable> parseToolTable(std::string_view text, const std::string& folder, const std::string& fileName);
 std::string formatToolTable(const ToolTable& t);
 
+// Line n = `X Z R T` of offset n; a bad row stays 0 0 0 0 and is reported.
 ReadResult<OffsetTable> readOffsetTable(const std::string& path);
 ReadResult<OffsetTable> parseOffsetTable(std::string_view text, const std::string& fileName);
 std::string formatOffsetTable(const OffsetTable& t);
 
 // machine.cfg: `key = value` lines, '#' comments; unknown keys and bad values are errors.
+// Keys: rapid_x rapid_z max_spindle_rpm reference_x reference_z start_x start_z
+// travel_x_min travel_x_max travel_z_min travel_z_max chuck_grip chuck_jaw_height.
+// Missing keys keep MachineConfig's defaults (SPEC 1).
 ReadResult<MachineConfig> readMachineConfig(const std::string& path);
 ReadResult<MachineConfig> parseMachineConfig(std::string_view text, const std::string& fileName);
 std::string formatMachineConfig(const MachineConfig& m);
 
 // The folder holding tools.cfg/offset.cfg/machine.cfg: explicit dir if given,
-// else $KLUENG_DATA_DIR, else a per-user copy (~/.local/share/klueng, created
-// from the shipped defaults), else the shipped folder.
+// else $KLUENG_DATA_DIR, else the per-user copy if it holds a tools.cfg,
+// else the shipped folder.
 std::string findConfigDir(const std::string& explicitDir = {});
+
+// $XDG_DATA_HOME/klueng, or ~/.local/share/klueng; empty when neither is known.
+std::string userConfigDir();
+// The folder of the shipped defaults (the repository top in a build tree).
+std::string shippedConfigDir();
+// Creates the per-user copy from the shipped defaults (cfg files and the
+// bitmaps tools.cfg names), copying only what is missing, so a read-only
+// install still has a writable tool table. Returns the folder, or empty and
+// fills error.
+std::string ensureUserConfigDir(std::string* error = nullptr);
 
 }  // namespace klueng::core::io

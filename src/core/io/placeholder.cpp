@@ -1,2 +1,0 @@
-// File formats live here (issue 2).
-namespace klueng::core::io {}

@@ -1,0 +1,253 @@
+#include "klueng/core/io/program_file.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "io/text_util.h"
+#include "klueng/core/io/text_encoding.h"
+
+#ifndef _WIN32
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#endif
+
+namespace klueng::core::io {
+
+namespace {
+
+using detail::makeDiagnostic;
+
+constexpr int kHeaderLines = 6;
+
+bool isAsciiDigit(char c) { return c >= '0' && c <= '9'; }
+
+// SPEC 2 (ext): a first line starting with % ( ; or an address letter O N G M T
+// followed at once by a number is G-code. "Grammar demo" or "Mild steel" are
+// header lines even though they start with G or M.
+bool looksLikeGcode(std::string_view firstLine) {
+  const std::string_view s = detail::trim(firstLine);
+  if (s.empty()) return false;
+  const char c = s.front();
+  if (c == '%' || c == '(' || c == ';') return true;
+  const char upper = (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c;
+  if (upper != 'O' && upper != 'N' && upper != 'G' && upper != 'M' && upper != 'T') return false;
+  if (s.size() < 2) return false;
+  std::string_view rest = s.substr(1);
+  if (rest.front() == '-' || rest.front() == '+') rest.remove_prefix(1);
+  return !rest.empty() && (isAsciiDigit(rest.front()) ||
+                           (rest.front() == '.' && rest.size() > 1 && isAsciiDigit(rest[1])));
+}
+
+struct SizeCodes {
+  const char* missing;
+  const char* badUnit;
+  const char* badNumber;
+};
+
+// Reads "150" (unit digit 1 = mm, then 50) from header line 4 or 5.
+void parseStockSize(std::string_view line, int lineNumber, const SizeCodes& codes,
+                    const std::string& fileName, double& value, LengthUnit& unit,
+                    std::vector<Diagnostic>& diags) {
+  const std::string_view field = detail::trim(line);
+  if (field.empty()) {
+    diags.push_back(makeDiagnostic(Severity::Error, codes.missing, lineNumber, 1, 0, {fileName}));
+    return;
+  }
+  const int fieldColumn = detail::columnOf(line, field);
+  const int fieldLength = utf8Length(field);
+  if (field.front() != '0' && field.front() != '1') {
+    // Quote the whole first character, which may be a Thai letter.
+    const auto lead = static_cast<unsigned char>(field.front());
+    const std::size_t bytesOfFirst = lead < 0xC0 ? 1 : lead < 0xE0 ? 2 : lead < 0xF0 ? 3 : 4;
+    const std::string_view first = field.substr(0, bytesOfFirst);
+    diags.push_back(makeDiagnostic(Severity::Error, codes.badUnit, lineNumber, fieldColumn, 1,
+                                   {fileName, std::string(first)}));
+    return;
+  }
+  const std::string_view number = field.substr(1);
+  const std::optional<double> parsed = detail::parseNumber(number);
+  if (!parsed) {
+    diags.push_back(makeDiagnostic(Severity::Error, codes.badNumber, lineNumber, fieldColumn + 1,
+                                   utf8Length(number), {fileName, std::string(number)}));
+    return;
+  }
+  if (*parsed <= 0.0) {
+    diags.push_back(makeDiagnostic(Severity::Error, "E213", lineNumber, fieldColumn, fieldLength,
+                                   {fileName, std::string(field)}));
+    return;
+  }
+  unit = field.front() == '0' ? LengthUnit::Inch : LengthUnit::Millimetre;
+  value = *parsed;
+}
+
+std::string oneLine(std::string_view text) {
+  std::string s(text);
+  for (char& c : s)
+    if (c == '\n' || c == '\r') c = ' ';
+  return s;
+}
+
+std::string formatStockSize(double value, LengthUnit unit) {
+  return (unit == LengthUnit::Inch ? "0" : "1") + detail::formatNumber(value);
+}
+
+}  // namespace
+
+ReadResult<ProgramFile> parseProgramFile(std::string_view bytes, const JobHeader& defaultsForPlain,
+                                         const std::string& fileName) {
+  ReadResult<ProgramFile> result;
+  auto& diags = result.diagnostics;
+  if (bytes.size() > detail::kMaxFileBytes) {
+    diags.push_back(makeDiagnostic(Severity::Error, "F103", 0, 0, 0,
+                                   {fileName, std::to_string(bytes.size())}));
+    return result;
+  }
+  if (const auto nul = detail::findNulByte(bytes)) {
+    diags.push_back(makeDiagnostic(Severity::Error, "F104", nul->line, nul->column, 1, {fileName}));
+    return result;
+  }
+
+  ProgramFile file;
+  file.header = defaultsForPlain;
+  const std::string text = detail::decodeText(bytes, &file.encoding);
+  std::vector<std::string_view> lines = detail::splitLines(text);
+
+  if (lines.empty()) {
+    diags.push_back(makeDiagnostic(Severity::Error, "F105", 1, 1, 0, {fileName}));
+    file.plainGcode = true;
+    file.gcodeFirstLine = 1;
+    result.value = std::move(file);
+    return result;
+  }
+
+  // A 10 MB line is not a program line: report it once and read it as empty,
+  // instead of handing the parser millions of words.
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    if (lines[i].size() <= static_cast<std::size_t>(detail::kMaxLineChars)) continue;
+    const int chars = utf8Length(lines[i]);
+    if (chars <= detail::kMaxLineChars) continue;
+    diags.push_back(makeDiagnostic(Severity::Error, "F106", static_cast<int>(i) + 1, 1, 0,
+                                   {fileName, std::to_string(chars),
+                                    std::to_string(detail::kMaxLineChars)}));
+    lines[i] = std::string_view();
+  }
+
+  std::size_t firstCodeLine = 0;
+  if (looksLikeGcode(lines[0])) {
+    file.plainGcode = true;
+    file.gcodeFirstLine = 1;
+  } else {
+    file.plainGcode = false;
+    file.gcodeFirstLine = kHeaderLines + 1;
+    firstCodeLine = kHeaderLines;
+    const auto headerLine = [&](int n) -> std::string_view {
+      return static_cast<std::size_t>(n) <= lines.size() ? lines[n - 1] : std::string_view();
+    };
+    file.header.project = std::string(detail::trim(headerLine(1)));
+    file.header.part = std::string(detail::trim(headerLine(2)));
+    file.header.material = std::string(detail::trim(headerLine(3)));
+    file.header.programmer = std::string(detail::trim(headerLine(6)));
+    if (lines.size() < static_cast<std::size_t>(kHeaderLines)) {
+      const int last = static_cast<int>(lines.size());
+      diags.push_back(makeDiagnostic(Severity::Error, "F110", last, utf8Length(lines.back()) + 1, 0,
+                                     {fileName, std::to_string(last)}));
+    }
+    if (lines.size() >= 4)
+      parseStockSize(lines[3], 4, {"F115", "F111", "F112"}, fileName, file.header.diameter,
+                     file.header.diameterUnit, diags);
+    if (lines.size() >= 5)
+      parseStockSize(lines[4], 5, {"F116", "F113", "F114"}, fileName, file.header.length,
+                     file.header.lengthUnit, diags);
+  }
+
+  // The G-code part, with every line end normalised to '\n'.
+  std::string& code = file.gcode;
+  for (std::size_t i = firstCodeLine; i < lines.size(); ++i) {
+    code.append(lines[i]);
+    if (i + 1 < lines.size() || detail::endsWithLineBreak(text)) code.push_back('\n');
+  }
+  result.value = std::move(file);
+  return result;
+}
+
+ReadResult<ProgramFile> readProgramFile(const std::string& path, const JobHeader& defaultsForPlain) {
+  ReadResult<ProgramFile> result;
+  std::optional<std::string> bytes = detail::readFileBytes(path, result.diagnostics);
+  if (!bytes) return result;
+  return parseProgramFile(*bytes, defaultsForPlain, path);
+}
+
+std::string formatProgramFile(const ProgramFile& file) {
+  if (file.plainGcode) return file.gcode;
+  const JobHeader& h = file.header;
+  std::string out;
+  out.reserve(file.gcode.size() + 256);
+  for (const std::string& line :
+       {oneLine(h.project), oneLine(h.part), oneLine(h.material),
+        formatStockSize(h.diameter, h.diameterUnit), formatStockSize(h.length, h.lengthUnit),
+        oneLine(h.programmer)}) {
+    out += line;
+    out += '\n';
+  }
+  out += file.gcode;
+  return out;
+}
+
+bool writeTextFileAtomic(const std::string& path, std::string_view text, std::string* error) {
+  namespace fs = std::filesystem;
+  const auto fail = [&](const std::string& what) {
+    if (error) *error = what;
+    return false;
+  };
+#ifndef _WIN32
+  const fs::path target(path);
+  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::string pattern = (folder / ("." + target.filename().string() + ".tmp-XXXXXX")).string();
+  const int fd = ::mkstemp(pattern.data());
+  if (fd < 0) return fail(path + ": cannot create a temporary file: " + std::strerror(errno));
+  // Keep the mode of the file we replace; new files get rw-r--r--.
+  struct stat old {};
+  ::fchmod(fd, ::stat(path.c_str(), &old) == 0 ? (old.st_mode & 07777) : 0644);
+  std::size_t written = 0;
+  while (written < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      const std::string reason = std::strerror(errno);
+      ::close(fd);
+      ::unlink(pattern.c_str());
+      return fail(path + ": write failed: " + reason);
+    }
+    written += static_cast<std::size_t>(n);
+  }
+  if (::fsync(fd) != 0 || ::close(fd) != 0) {
+    const std::string reason = std::strerror(errno);
+    ::unlink(pattern.c_str());
+    return fail(path + ": write failed: " + reason);
+  }
+  if (::rename(pattern.c_str(), path.c_str()) != 0) {
+    const std::string reason = std::strerror(errno);
+    ::unlink(pattern.c_str());
+    return fail(path + ": cannot replace the file: " + reason);
+  }
+  return true;
+#else
+  const std::string temp = path + ".tmp";
+  {
+    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+    if (!out) return fail(path + ": cannot create a temporary file");
+    out.write(text.data(), static_cast<std::streamsize>(text.size()));
+    if (!out.flush()) return fail(path + ": write failed");
+  }
+  std::error_code ec;
+  fs::rename(temp, path, ec);
+  if (ec) return fail(path + ": cannot replace the file: " + ec.message());
+  return true;
+#endif
+}
+
+}  // namespace klueng::core::io

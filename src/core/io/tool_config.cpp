@@ -1,0 +1,418 @@
+#include "klueng/core/io/tool_config.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+
+#include "io/text_util.h"
+#include "klueng/core/io/text_encoding.h"
+
+#ifndef KLUENG_SHIPPED_DATA_DIR
+#define KLUENG_SHIPPED_DATA_DIR "."
+#endif
+
+namespace klueng::core::io {
+
+namespace fs = std::filesystem;
+using detail::makeDiagnostic;
+
+namespace {
+
+std::string twoDigits(int n) { return fmt::format("{:02}", n); }
+
+// Decodes a config file's bytes; nullopt (with F104) for binary data.
+std::optional<std::string> decodeConfig(std::string_view bytes, const std::string& fileName,
+                                        std::vector<Diagnostic>& diags) {
+  if (const auto nul = detail::findNulByte(bytes)) {
+    diags.push_back(makeDiagnostic(Severity::Error, "F104", nul->line, nul->column, 1, {fileName}));
+    return std::nullopt;
+  }
+  return detail::decodeText(bytes);
+}
+
+// Warns once about non-blank lines past the last one the format uses.
+void warnAboutExtraLines(const std::vector<std::string_view>& lines, std::size_t used,
+                         const std::string& fileName, std::vector<Diagnostic>& diags) {
+  for (std::size_t i = used; i < lines.size(); ++i) {
+    if (detail::trim(lines[i]).empty()) continue;
+    diags.push_back(makeDiagnostic(Severity::Warning, "F107", static_cast<int>(i) + 1, 1, 0,
+                                   {fileName, std::to_string(used)}));
+    return;
+  }
+}
+
+bool hasImageExtension(std::string_view name) {
+  if (name.size() < 5) return false;
+  std::string ext(name.substr(name.size() - 4));
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == ".bmp" || ext == ".png";
+}
+
+bool hasControlCharacters(std::string_view s) {
+  return std::any_of(s.begin(), s.end(), [](char c) {
+    const auto u = static_cast<unsigned char>(c);
+    return u < 0x20 || u == 0x7F;
+  });
+}
+
+std::string oneLine(std::string_view text) {
+  std::string s(text);
+  std::replace_if(s.begin(), s.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+  return s;
+}
+
+std::string folderOf(const std::string& path) {
+  const fs::path p(path);
+  return p.has_parent_path() ? p.parent_path().string() : std::string(".");
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------- tools.cfg
+
+std::string ToolTable::bitmapPath(int tool) const {
+  if (tool < 1 || tool > kToolCount) return {};
+  const std::string& name = bitmap[static_cast<std::size_t>(tool - 1)];
+  if (name.empty()) return {};
+  const fs::path p(name);
+  if (p.is_absolute() || folder.empty()) return name;
+  return (fs::path(folder) / p).string();
+}
+
+ReadResult<ToolTable> parseToolTable(std::string_view text, const std::string& folder,
+                                     const std::string& fileName) {
+  ReadResult<ToolTable> result;
+  auto& diags = result.diagnostics;
+  const std::optional<std::string> decoded = decodeConfig(text, fileName, diags);
+  if (!decoded) return result;
+  const std::vector<std::string_view> lines = detail::splitLines(*decoded);
+
+  ToolTable table;
+  table.folder = folder;
+  for (int tool = 1; tool <= kToolCount && static_cast<std::size_t>(tool) <= lines.size(); ++tool) {
+    const std::string_view line = lines[static_cast<std::size_t>(tool - 1)];
+    const std::string_view name = detail::trim(line);
+    if (name.empty()) continue;  // a tool without a bitmap
+    if (hasControlCharacters(name) || !hasImageExtension(name)) {
+      diags.push_back(makeDiagnostic(Severity::Error, "F122", tool, detail::columnOf(line, name),
+                                     utf8Length(name), {fileName, twoDigits(tool), std::string(name)}));
+      continue;
+    }
+    table.bitmap[static_cast<std::size_t>(tool - 1)] = std::string(name);
+  }
+  if (lines.size() < static_cast<std::size_t>(kToolCount)) {
+    const int count = static_cast<int>(lines.size());
+    diags.push_back(makeDiagnostic(Severity::Error, "F120", std::max(count, 1), 1, 0,
+                                   {fileName, std::to_string(count), twoDigits(count + 1)}));
+  }
+  warnAboutExtraLines(lines, kToolCount, fileName, diags);
+  result.value = std::move(table);
+  return result;
+}
+
+ReadResult<ToolTable> readToolTable(const std::string& path) {
+  ReadResult<ToolTable> result;
+  const std::optional<std::string> bytes = detail::readFileBytes(path, result.diagnostics);
+  if (!bytes) return result;
+  result = parseToolTable(*bytes, folderOf(path), path);
+  if (!result.value) return result;
+  for (int tool = 1; tool <= kToolCount; ++tool) {
+    const std::string file = result.value->bitmapPath(tool);
+    std::error_code ec;
+    if (file.empty() || fs::is_regular_file(file, ec)) continue;
+    const std::string& name = result.value->bitmap[static_cast<std::size_t>(tool - 1)];
+    result.diagnostics.push_back(makeDiagnostic(Severity::Error, "F121", tool, 1, utf8Length(name),
+                                                {path, twoDigits(tool), name}));
+  }
+  std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(),
+                   [](const Diagnostic& a, const Diagnostic& b) { return a.range.line < b.range.line; });
+  return result;
+}
+
+std::string formatToolTable(const ToolTable& t) {
+  std::string out;
+  for (const std::string& name : t.bitmap) out += oneLine(name) + '\n';
+  return out;
+}
+
+// ---------------------------------------------------------------- offset.cfg
+
+ReadResult<OffsetTable> parseOffsetTable(std::string_view text, const std::string& fileName) {
+  ReadResult<OffsetTable> result;
+  auto& diags = result.diagnostics;
+  const std::optional<std::string> decoded = decodeConfig(text, fileName, diags);
+  if (!decoded) return result;
+  const std::vector<std::string_view> lines = detail::splitLines(*decoded);
+
+  OffsetTable table;
+  for (int number = 1; number <= kOffsetCount && static_cast<std::size_t>(number) <= lines.size();
+       ++number) {
+    const std::string_view line = lines[static_cast<std::size_t>(number - 1)];
+    const std::vector<std::string_view> fields = detail::splitFields(line);
+    const std::string label = twoDigits(number);
+    if (fields.empty()) {
+      diags.push_back(makeDiagnostic(Severity::Error, "F131", number, 1, 0, {fileName, label}));
+      continue;
+    }
+    if (fields.size() != 4) {
+      // Point at the first field too many, or at the end of a short line.
+      const int column = fields.size() > 4 ? detail::columnOf(line, fields[4])
+                                           : utf8Length(detail::trim(line)) +
+                                                 detail::columnOf(line, fields[0]);
+      diags.push_back(makeDiagnostic(Severity::Error, "F132", number, column, 0,
+                                     {fileName, label, std::to_string(fields.size())}));
+      continue;
+    }
+    Offset offset;
+    bool rowOk = true;
+    double* numbers[3] = {&offset.x, &offset.z, &offset.r};
+    for (int i = 0; i < 3; ++i) {
+      const std::optional<double> v = detail::parseNumber(fields[static_cast<std::size_t>(i)]);
+      if (!v) {
+        const std::string_view f = fields[static_cast<std::size_t>(i)];
+        diags.push_back(makeDiagnostic(Severity::Error, "F133", number, detail::columnOf(line, f),
+                                       utf8Length(f), {fileName, label, std::string(f)}));
+        rowOk = false;
+      } else {
+        *numbers[i] = *v;
+      }
+    }
+    if (rowOk && offset.r < 0.0) {
+      diags.push_back(makeDiagnostic(Severity::Error, "F134", number, detail::columnOf(line, fields[2]),
+                                     utf8Length(fields[2]), {fileName, label, std::string(fields[2])}));
+      rowOk = false;
+    }
+    const std::string_view tip = fields[3];
+    if (tip.size() != 1 || tip[0] < '0' || tip[0] > '9') {
+      diags.push_back(makeDiagnostic(Severity::Error, "F135", number, detail::columnOf(line, tip),
+                                     utf8Length(tip), {fileName, label, std::string(tip)}));
+      rowOk = false;
+    } else {
+      offset.tip = tip[0] - '0';
+    }
+    // A row with any error stays 0 0 0 0 rather than half read.
+    if (rowOk) table.offsets[static_cast<std::size_t>(number - 1)] = offset;
+  }
+  if (lines.size() < static_cast<std::size_t>(kOffsetCount)) {
+    const int count = static_cast<int>(lines.size());
+    diags.push_back(makeDiagnostic(Severity::Error, "F130", std::max(count, 1), 1, 0,
+                                   {fileName, std::to_string(count), twoDigits(count + 1)}));
+  }
+  warnAboutExtraLines(lines, kOffsetCount, fileName, diags);
+  std::stable_sort(diags.begin(), diags.end(),
+                   [](const Diagnostic& a, const Diagnostic& b) { return a.range.line < b.range.line; });
+  result.value = table;
+  return result;
+}
+
+ReadResult<OffsetTable> readOffsetTable(const std::string& path) {
+  ReadResult<OffsetTable> result;
+  const std::optional<std::string> bytes = detail::readFileBytes(path, result.diagnostics);
+  if (!bytes) return result;
+  return parseOffsetTable(*bytes, path);
+}
+
+std::string formatOffsetTable(const OffsetTable& t) {
+  std::string out;
+  for (const Offset& o : t.offsets)
+    out += fmt::format("{} {} {} {}\n", detail::formatNumber(o.x), detail::formatNumber(o.z),
+                       detail::formatNumber(o.r), std::clamp(o.tip, 0, 9));
+  return out;
+}
+
+// ---------------------------------------------------------------- machine.cfg
+
+namespace {
+
+enum class Rule { Any, Positive, NonNegative };
+
+struct MachineKey {
+  const char* name;
+  double MachineConfig::*field;
+  Rule rule;
+  const char* comment;
+};
+
+constexpr MachineKey kMachineKeys[] = {
+    {"rapid_x", &MachineConfig::rapidX, Rule::Positive, "X rapid rate, mm/min (radial)"},
+    {"rapid_z", &MachineConfig::rapidZ, Rule::Positive, "Z rapid rate, mm/min"},
+    {"max_spindle_rpm", &MachineConfig::maxSpindleRpm, Rule::Positive, "maximum spindle speed, rpm"},
+    {"reference_x", &MachineConfig::referenceX, Rule::Any, "reference point X (diameter), G27/G28/G29"},
+    {"reference_z", &MachineConfig::referenceZ, Rule::Any, "reference point Z"},
+    {"start_x", &MachineConfig::startX, Rule::Any, "tool start position X (diameter)"},
+    {"start_z", &MachineConfig::startZ, Rule::Any, "tool start position Z"},
+    {"travel_x_min", &MachineConfig::travelXMin, Rule::Any, "travel limits, X as diameter"},
+    {"travel_x_max", &MachineConfig::travelXMax, Rule::Any, nullptr},
+    {"travel_z_min", &MachineConfig::travelZMin, Rule::Any, "travel limits, Z"},
+    {"travel_z_max", &MachineConfig::travelZMax, Rule::Any, nullptr},
+    {"chuck_grip", &MachineConfig::chuckGrip, Rule::NonNegative, "length of stock held by the chuck jaws, mm"},
+    {"chuck_jaw_height", &MachineConfig::chuckJawHeight, Rule::NonNegative,
+     "radial height of the jaws above the stock, mm"},
+};
+
+}  // namespace
+
+ReadResult<MachineConfig> parseMachineConfig(std::string_view text, const std::string& fileName) {
+  ReadResult<MachineConfig> result;
+  auto& diags = result.diagnostics;
+  const std::optional<std::string> decoded = decodeConfig(text, fileName, diags);
+  if (!decoded) return result;
+  const std::vector<std::string_view> lines = detail::splitLines(*decoded);
+
+  MachineConfig config;
+  std::map<std::string, int> lineOfKey;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const int lineNumber = static_cast<int>(i) + 1;
+    const std::string_view line = lines[i];
+    std::string_view content = line.substr(0, std::min(line.find('#'), line.size()));
+    content = detail::trim(content);
+    if (content.empty()) continue;
+    const std::size_t eq = content.find('=');
+    if (eq == std::string_view::npos) {
+      diags.push_back(makeDiagnostic(Severity::Error, "F140", lineNumber, detail::columnOf(line, content),
+                                     utf8Length(content), {fileName}));
+      continue;
+    }
+    const std::string_view key = detail::trim(content.substr(0, eq));
+    const std::string_view value = detail::trim(content.substr(eq + 1));
+    if (key.empty()) {
+      diags.push_back(makeDiagnostic(Severity::Error, "F140", lineNumber, detail::columnOf(line, content),
+                                     utf8Length(content), {fileName}));
+      continue;
+    }
+    const MachineKey* entry = nullptr;
+    for (const MachineKey& k : kMachineKeys)
+      if (key == k.name) entry = &k;
+    if (!entry) {
+      diags.push_back(makeDiagnostic(Severity::Error, "F141", lineNumber, detail::columnOf(line, key),
+                                     utf8Length(key), {fileName, std::string(key)}));
+      continue;
+    }
+    const int valueColumn = value.empty() ? detail::columnOf(line, content) + utf8Length(content)
+                                          : detail::columnOf(line, value);
+    const std::optional<double> number = detail::parseNumber(value);
+    if (!number) {
+      diags.push_back(makeDiagnostic(Severity::Error, "F142", lineNumber, valueColumn, utf8Length(value),
+                                     {fileName, std::string(key), std::string(value)}));
+      continue;
+    }
+    if (entry->rule == Rule::Positive && *number <= 0.0) {
+      diags.push_back(makeDiagnostic(Severity::Error, "F143", lineNumber, valueColumn, utf8Length(value),
+                                     {fileName, std::string(key), std::string(value)}));
+      continue;
+    }
+    if (entry->rule == Rule::NonNegative && *number < 0.0) {
+      diags.push_back(makeDiagnostic(Severity::Error, "F144", lineNumber, valueColumn, utf8Length(value),
+                                     {fileName, std::string(key), std::string(value)}));
+      continue;
+    }
+    if (lineOfKey.count(entry->name))
+      diags.push_back(makeDiagnostic(Severity::Warning, "F145", lineNumber, detail::columnOf(line, key),
+                                     utf8Length(key), {fileName, std::string(key)}));
+    lineOfKey[entry->name] = lineNumber;
+    config.*(entry->field) = *number;
+  }
+
+  const auto checkRange = [&](const char* minKey, double MachineConfig::*min, const char* maxKey,
+                              double MachineConfig::*max) {
+    if (config.*min < config.*max) return;
+    const int line = std::max(lineOfKey.count(minKey) ? lineOfKey[minKey] : 0,
+                              lineOfKey.count(maxKey) ? lineOfKey[maxKey] : 0);
+    diags.push_back(makeDiagnostic(Severity::Error, "F146", line, line ? 1 : 0, 0,
+                                   {fileName, minKey, maxKey}));
+    MachineConfig defaults;
+    config.*min = defaults.*min;
+    config.*max = defaults.*max;
+  };
+  checkRange("travel_x_min", &MachineConfig::travelXMin, "travel_x_max", &MachineConfig::travelXMax);
+  checkRange("travel_z_min", &MachineConfig::travelZMin, "travel_z_max", &MachineConfig::travelZMax);
+
+  result.value = config;
+  return result;
+}
+
+ReadResult<MachineConfig> readMachineConfig(const std::string& path) {
+  ReadResult<MachineConfig> result;
+  const std::optional<std::string> bytes = detail::readFileBytes(path, result.diagnostics);
+  if (!bytes) return result;
+  return parseMachineConfig(*bytes, path);
+}
+
+std::string formatMachineConfig(const MachineConfig& m) {
+  std::string out =
+      "# Klueng machine parameters: key = value, '#' starts a comment.\n"
+      "# X values are diameters; lengths in mm, rates in mm/min.\n";
+  for (const MachineKey& k : kMachineKeys) {
+    if (k.comment) out += fmt::format("\n# {}\n", k.comment);
+    out += fmt::format("{} = {}\n", k.name, detail::formatNumber(m.*(k.field)));
+  }
+  return out;
+}
+
+// ---------------------------------------------------------------- folders
+
+std::string shippedConfigDir() { return KLUENG_SHIPPED_DATA_DIR; }
+
+std::string userConfigDir() {
+  if (const char* xdg = std::getenv("XDG_DATA_HOME"); xdg && *xdg && fs::path(xdg).is_absolute())
+    return (fs::path(xdg) / "klueng").string();
+  if (const char* home = std::getenv("HOME"); home && *home)
+    return (fs::path(home) / ".local" / "share" / "klueng").string();
+  return {};
+}
+
+std::string findConfigDir(const std::string& explicitDir) {
+  if (!explicitDir.empty()) return explicitDir;
+  if (const char* env = std::getenv("KLUENG_DATA_DIR"); env && *env) return env;
+  const std::string user = userConfigDir();
+  std::error_code ec;
+  if (!user.empty() && fs::is_regular_file(fs::path(user) / "tools.cfg", ec)) return user;
+  return shippedConfigDir();
+}
+
+std::string ensureUserConfigDir(std::string* error) {
+  const auto fail = [&](const std::string& what) {
+    if (error) *error = what;
+    return std::string();
+  };
+  const std::string user = userConfigDir();
+  if (user.empty()) return fail("neither XDG_DATA_HOME nor HOME is set");
+  const fs::path userDir(user);
+  const fs::path shipped(shippedConfigDir());
+  std::error_code ec;
+  fs::create_directories(userDir, ec);
+  if (ec) return fail(user + ": " + ec.message());
+
+  // Copy only what is missing: the user's own edits are never overwritten.
+  const auto copyIfMissing = [&](const fs::path& relative) -> bool {
+    const fs::path to = userDir / relative;
+    const fs::path from = shipped / relative;
+    std::error_code e;
+    if (fs::exists(to, e) || !fs::is_regular_file(from, e)) return true;
+    if (to.has_parent_path()) fs::create_directories(to.parent_path(), e);
+    fs::copy_file(from, to, e);
+    if (e) {
+      if (error) *error = to.string() + ": " + e.message();
+      return false;
+    }
+    // The shipped files may be read-only; the per-user copy must be writable.
+    fs::permissions(to, fs::perms::owner_read | fs::perms::owner_write, fs::perm_options::add, e);
+    return true;
+  };
+  for (const char* name : {"tools.cfg", "offset.cfg", "machine.cfg"})
+    if (!copyIfMissing(name)) return {};
+
+  // The bitmaps named by the shipped tools.cfg, kept at the same relative paths.
+  const ReadResult<ToolTable> shippedTools = readToolTable((shipped / "tools.cfg").string());
+  if (shippedTools.value)
+    for (const std::string& name : shippedTools.value->bitmap)
+      if (!name.empty() && fs::path(name).is_relative() && !copyIfMissing(name)) return {};
+  return user;
+}
+
+}  // namespace klueng::core::io
