@@ -1,0 +1,117 @@
+#pragma once
+// Cuts the stock along a machine::Timeline with the bitmap tools (SPEC 8, 10, 11).
+//
+//   CutSimulator sim(timeline, CutSetup::from(header, setup));
+//   sim.runToEnd();                 // as fast as possible, or
+//   sim.advanceTo(t);               // for the animation: any t; going back re-cuts from 0
+//   sim.stock(), sim.alarm(), sim.toolPosition(), FinishedPart(sim.stock())
+//
+// Every move removes what its cutting edge sweeps, without gaps: the nose circle
+// is swept analytically along lines (arcs: chords within 0.0005 mm), bitmap
+// boxes are swept per stock column. Rapid dog-legs come as separate Rapid moves.
+// A G32 move stamps the tool once per lead along its path (the section plane sees
+// the tool once per revolution), so threads show their teeth.
+//
+// Alarms (A3xx, Severity::Alarm; range.line = the block's line; args {0} = Z,
+// {1} = X diameter of the controlled point where it happened, "%.3f"):
+//   A301 rapid move overlaps the stock by more than the tolerance (grazing is fine)
+//   A302 cutting while the spindle is stopped
+//   A303 holder (black pixels) overlaps the stock
+//   A304 tool or holder overlaps the chuck
+// The simulation stops at the first alarm, with the tool where it happened.
+// Tool loading problems (F1xx from the image reader, A310/A311) are reported by
+// toolDiagnostics(); moves of a tool that cannot be loaded cut nothing.
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "klueng/core/cut/stock.h"
+#include "klueng/core/cut/tool_shape.h"
+#include "klueng/core/diagnostic.h"
+#include "klueng/core/io/program_file.h"
+#include "klueng/core/io/tool_config.h"
+#include "klueng/core/machine/interpreter.h"
+#include "klueng/core/machine/timeline.h"
+
+namespace klueng::core::cut {
+
+struct CutOptions {
+  double resolution = kDefaultResolution;  // stock column width along Z, mm
+  double collisionTolerance = 0.001;       // mm of overlap that still counts as grazing
+  bool detectCollisions = true;
+};
+
+struct CutSetup {
+  double stockDiameter = 50.0;  // mm
+  double stockLength = 100.0;   // mm
+  io::MachineConfig machine;    // chuck grip and jaw height
+  io::ToolTable tools;
+  io::OffsetTable offsets;
+  static CutSetup from(const io::JobHeader& header, const machine::MachineSetup& setup);
+};
+
+// Tool shapes by (tool, offset), loaded on first use from the tool and offset tables.
+class ToolLibrary {
+ public:
+  ToolLibrary() = default;
+  ToolLibrary(io::ToolTable tools, io::OffsetTable offsets);
+  // nullptr when the tool has no bitmap or it cannot be loaded (see diagnostics()).
+  const ToolShape* get(int tool, int offset);
+  // Installs a ready shape (tests, tools drawn in the GUI) for (tool, offset).
+  void set(int tool, int offset, ToolShape shape);
+  const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
+
+ private:
+  io::ToolTable tools_;
+  io::OffsetTable offsets_;
+  std::map<std::pair<int, int>, std::optional<ToolShape>> cache_;
+  std::vector<Diagnostic> diagnostics_;
+};
+
+class CutSimulator {
+ public:
+  // `timeline` must outlive the simulator.
+  CutSimulator(const machine::Timeline& timeline, const CutSetup& setup, const CutOptions& options = {});
+  CutSimulator(const machine::Timeline& timeline, const CutSetup& setup, ToolLibrary tools,
+               const CutOptions& options = {});
+
+  void advanceTo(double t);
+  void runToEnd();
+  void reset();
+
+  double time() const { return time_; }
+  // The end of the run: the timeline's cycle time, or when the cut alarm happened.
+  double endTime() const;
+  bool finished() const;
+  const std::optional<Diagnostic>& alarm() const { return alarm_; }
+  // The alarm that stopped the run: the cut alarm, else the timeline's own alarm.
+  std::optional<Diagnostic> stoppingAlarm() const;
+
+  Vec2 toolPosition() const;            // controlled point at time()
+  int currentMove() const;              // -1 before the first move
+  const ToolShape* currentTool();       // shape of the tool at time(), nullptr if none
+  const Stock& stock() const { return stock_; }
+  const Chuck& chuck() const { return chuck_; }
+  double removedVolume() const { return stock_.initialVolume() - stock_.volume(); }
+  const std::vector<Diagnostic>& toolDiagnostics() const { return tools_.diagnostics(); }
+
+ private:
+  void cutMove(std::size_t index, double sEnd);
+
+  const machine::Timeline* timeline_;
+  CutSetup setup_;
+  CutOptions options_;
+  ToolLibrary tools_;
+  Stock stock_;
+  Chuck chuck_;
+  double time_ = 0.0;
+  std::size_t nextMove_ = 0;     // first move not completely cut
+  double nextMoveDone_ = 0.0;    // path parameter of nextMove_ already cut
+  std::optional<Diagnostic> alarm_;
+  double alarmTime_ = 0.0;
+  Vec2 alarmPosition_ = Vec2::Zero();
+};
+
+}  // namespace klueng::core::cut

@@ -1,0 +1,81 @@
+#pragma once
+// The bar being turned, as per-Z-column radial material intervals (dexels).
+// Work coordinates (SPEC 1): the stock occupies Z in [-length, 0] and radius
+// in [0, diameter/2]. Radial values are exact doubles; Z is resolved to
+// `resolution` mm: column i stands for Z in [zLeft(i), zLeft(i) + resolution]
+// and is sampled at its centre. Bores and undercuts are several intervals.
+#include <span>
+#include <vector>
+
+namespace klueng::core::cut {
+
+constexpr double kDefaultResolution = 0.05;  // mm along Z
+
+struct Interval {
+  double lo = 0.0;  // radius, mm
+  double hi = 0.0;
+};
+
+class Stock {
+ public:
+  Stock() = default;
+  // diameter, length > 0; resolution > 0 (clamped so there are at most 2^24 columns).
+  Stock(double diameter, double length, double resolution = kDefaultResolution);
+
+  double diameter() const { return diameter_; }
+  double length() const { return length_; }
+  double resolution() const { return dz_; }
+  int columnCount() const { return static_cast<int>(columns_.size()); }
+  double zLeft(int i) const { return -length_ + i * dz_; }
+  double zCentre(int i) const { return -length_ + (i + 0.5) * dz_; }
+  // Column whose Z range holds z, or -1 outside the bar.
+  int columnAt(double z) const;
+  // Columns whose centres lie in [z0, z1] (z0 <= z1): [first, last], empty when first > last.
+  void columnRange(double z0, double z1, int& first, int& last) const;
+
+  // Material intervals of column i, ascending, disjoint.
+  std::span<const Interval> column(int i) const;
+  double outerRadius(int i) const { return outer_[i]; }  // 0 when the column is empty
+  double innerRadius(int i) const;                       // start of the lowest interval (0 = solid)
+  // Largest outer radius over columns [first, last] (fast: block maxima).
+  double maxOuterRadius(int first, int last) const;
+
+  // Removes radius range [lo, hi] from column i; returns the removed volume in mm^3.
+  double remove(int i, double lo, double hi);
+  // Longest overlap, in mm, of radius range [lo, hi] with the material of column i (0 = none).
+  double overlap(int i, double lo, double hi) const;
+
+  double volume() const;          // mm^3 of material left
+  double initialVolume() const;   // mm^3 of the bar
+
+ private:
+  void updateOuter(int i);
+
+  double diameter_ = 0.0;
+  double length_ = 0.0;
+  double dz_ = kDefaultResolution;
+  // Most columns hold one interval; the rest spill into a per-column vector.
+  std::vector<std::vector<Interval>> columns_;
+  std::vector<double> outer_;
+  std::vector<double> blockMax_;  // max outer radius per block of kBlock columns
+  static constexpr int kBlock = 32;
+};
+
+// The chuck (SPEC 1 ext): jaws grip the stock's left `grip` mm; the body sits left of the bar.
+struct Chuck {
+  double stockLength = 0.0;   // mm
+  double stockRadius = 0.0;   // mm
+  double grip = 15.0;         // mm of bar inside the jaws
+  double jawHeight = 20.0;    // radial size of the jaws outside the bar
+  double bodyWidth = 40.0;    // Z size of the chuck body left of the bar
+  // Axis-aligned boxes in (z, x radius): the jaws, then the body.
+  double jawZMin() const { return -stockLength; }
+  double jawZMax() const { return -stockLength + grip; }
+  double jawXMin() const { return stockRadius; }
+  double jawXMax() const { return stockRadius + jawHeight; }
+  double bodyZMin() const { return -stockLength - bodyWidth; }
+  double bodyZMax() const { return -stockLength; }
+  double bodyXMax() const { return stockRadius + jawHeight + 10.0; }
+};
+
+}  // namespace klueng::core::cut

@@ -1,0 +1,51 @@
+#pragma once
+// A cutting tool built from its bitmap (SPEC 11: 2 px/mm; black 0x000000 =
+// holder, white 0xFFFFFF = empty, any other colour = cutting edge) and the
+// active offset's nose radius R and tip number.
+//
+// Local coordinates: mm, (z, x radius), origin at the CONTROLLED POINT, which is
+// the corner / edge middle / centre of the cutting pixels' bounding box in the
+// direction tipVector(tip). The nose is exact: a circle of radius R centred at
+// -R * tipVector(tip). Cutting pixels inside the nose square (the R x R box(es)
+// between the controlled point and the nose centre) are dropped so that only the
+// circle cuts there; everywhere else the bitmap (0.5 mm pixels) is the edge.
+#include <string>
+#include <vector>
+
+#include "klueng/core/geometry.h"
+#include "klueng/core/io/image.h"
+#include "klueng/core/io/result.h"
+
+namespace klueng::core::cut {
+
+constexpr double kPixelsPerMm = 2.0;
+constexpr int kMaxToolPixels = 1000;  // a tool bitmap is at most 500 mm each way
+
+struct Box {
+  double z0 = 0.0, z1 = 0.0;  // z0 <= z1
+  double x0 = 0.0, x1 = 0.0;  // x0 <= x1
+};
+
+struct ToolShape {
+  double noseRadius = 0.0;
+  int tip = 0;
+  Vec2 noseCentre = Vec2::Zero();   // relative to the controlled point
+  std::vector<Box> cutting;         // cutting-edge region minus the nose square
+  std::vector<Box> holder;          // black pixels
+  Box bounds;                       // of everything, including the nose circle
+  // For drawing: the bitmap and the controlled point in pixel units
+  // (x to the right from the image's left edge, y down from its top edge).
+  io::RgbImage image;
+  double controlPixelX = 0.0;
+  double controlPixelY = 0.0;
+  std::string fileName;
+};
+
+// Refuses (A310) a bitmap with no cutting pixels and (A311) one larger than
+// kMaxToolPixels; diagnostics name the file.
+io::ReadResult<ToolShape> makeToolShape(const io::RgbImage& image, const std::string& fileName,
+                                        double noseRadius, int tip);
+// readImage (F1xx for missing / malformed / oversized files) + makeToolShape.
+io::ReadResult<ToolShape> loadToolShape(const std::string& path, double noseRadius, int tip);
+
+}  // namespace klueng::core::cut
