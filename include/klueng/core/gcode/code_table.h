@@ -49,8 +49,17 @@ struct CodeInfo {
   std::string_view exampleTh;
 };
 
+// Every row of both dialects. A code whose meaning differs between the
+// dialects (M41, G98/G99 standing alone) has one row per dialect.
 std::span<const CodeInfo> codeTable();
 // The row for a code in a dialect; nullopt when the dialect does not know it.
 std::optional<CodeInfo> lookupCode(char letter, int number, Dialect dialect);
+// Same, without a copy (constant time): nullptr when unknown.
+const CodeInfo* findCode(char letter, int number, Dialect dialect);
+
+// Fanuc's number of a modal group, as printed in messages ("01" for Motion).
+std::string_view modalGroupNumber(ModalGroup group);
+// "fanuc" / "classic", as the CLI spells them.
+std::string_view dialectName(Dialect dialect);
 
 }  // namespace klueng::core::gcode

@@ -1,0 +1,152 @@
+#pragma once
+// Generates a realistic lathe program of an exact number of body blocks, for
+// benchmarks and tests. Header-only so the generator executable, the benchmark
+// and the gcode tests share one implementation.
+//
+// The job: Ø50 x 100 mm bar, the chuck grips the left 15 mm (Z -85..-100), so
+// Z never goes below -80. Roughing passes take 1 mm on diameter down to Ø20
+// over Z 0..-60; after that the same kind of passes, tapers, arcs (R and I/K)
+// and dwells repeat in air above Ø20. The last tenth of the blocks repeats a
+// finishing profile under G42. Every rapid moves in Z only above material that
+// is already cut below it, or at X52 (above the bar).
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace klueng::bench {
+
+class ProgramGenerator {
+ public:
+  // Body blocks (N-numbered blocks) of the program; O0001 is not counted.
+  static constexpr int kMinimumBlocks = 16;
+
+  static std::string generate(int bodyBlocks) {
+    ProgramGenerator g;
+    g.build(bodyBlocks < kMinimumBlocks ? kMinimumBlocks : bodyBlocks);
+    return g.text_;
+  }
+
+ private:
+  std::string text_;
+  int emitted_ = 0;
+
+  void block(const char* words) {
+    // N must stay within 1..9999 (SPEC 4); long programs reuse numbers, as
+    // real tapes do.
+    const int n = emitted_ % 9999 + 1;
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "N%d ", n);
+    text_ += buf;
+    text_ += words;
+    text_ += '\n';
+    ++emitted_;
+  }
+
+  static std::string fmtMm(const char* pattern, int value) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, pattern, value);
+    return buf;
+  }
+
+  // One in-air or roughing pattern; each starts and ends at Z2 with X <= 52.
+  static std::vector<std::string> roughingPass(int diameter) {
+    return {"G00 X52. Z2.", fmtMm("G01 X%d. F0.25", diameter), "G01 Z-60.",
+            fmtMm("G01 X%d.", diameter + 2), "G00 Z2."};
+  }
+  static std::vector<std::string> taperPass() {
+    return {"G00 X52. Z2.", "G01 X20. Z0. F0.25", "X30. Z-10.", "Z-30.", "X52.", "G00 Z2."};
+  }
+  static std::vector<std::string> arcPassRadius() {
+    return {"G00 X52. Z2.", "G01 X20. Z0. F0.25", "G01 Z-20.", "G02 X28. Z-24. R4.",
+            "G01 Z-40.",    "G03 X36. Z-44. R4.", "G01 X52.",  "G00 Z2."};
+  }
+  static std::vector<std::string> arcPassCentre() {
+    return {"G00 X52. Z2.",        "G01 X20. Z0. F0.25", "G01 Z-20.",
+            "G02 X28. Z-24. I4. K0.", "G01 Z-40.",        "G03 X36. Z-44. I0. K-4.",
+            "G01 X52.",            "G00 Z2."};
+  }
+  // The finishing profile: Ø20 face corner, 1 mm chamfer, R4 fillet, R4 corner.
+  static std::vector<std::string> finishingProfile(bool first) {
+    return {first ? "G42 G00 X20. Z2." : "G00 X20. Z2.",
+            "G01 Z0. F0.1",
+            "X22. Z-1.",
+            "Z-20.",
+            "G02 X30. Z-24. R4.",
+            "G01 Z-40.",
+            "G03 X38. Z-44. I0. K-4.",
+            "G01 X52.",
+            "G00 Z2."};
+  }
+
+  // Emits the pattern if it fits in `budget` blocks; returns blocks used.
+  int emitIfFits(const std::vector<std::string>& pattern, int budget) {
+    if (static_cast<int>(pattern.size()) > budget) return 0;
+    for (const std::string& w : pattern) block(w.c_str());
+    return static_cast<int>(pattern.size());
+  }
+
+  void build(int bodyBlocks) {
+    text_.reserve(static_cast<std::size_t>(bodyBlocks) * 24 + 64);
+    text_ += "Generated lathe job\nBenchmark shaft\nAluminium 6061\n150\n1100\nklueng-gen-program\n";
+    text_ += "O0001\n";
+
+    const int preamble = 5;
+    const int ending = 3;
+    const int finishing = bodyBlocks / 10;
+    int middle = bodyBlocks - preamble - ending - finishing;
+
+    block("G21 G40 G97");
+    block("G99");
+    block("T0101");
+    block("G50 S2500");
+    block("G96 S180 M03");
+
+    // Roughing Ø49 down to Ø20, then passes in air.
+    int diameter = 49;
+    int passes = 0;
+    int cycle = 0;
+    while (middle > 0) {
+      int used = 0;
+      if (diameter >= 20) {
+        used = emitIfFits(roughingPass(diameter), middle);
+        if (used) --diameter;
+      } else {
+        switch (cycle++ % 5) {
+          case 0: used = emitIfFits(roughingPass(20), middle); break;
+          case 1: used = emitIfFits(taperPass(), middle); break;
+          case 2: used = emitIfFits(arcPassRadius(), middle); break;
+          case 3: used = emitIfFits(arcPassCentre(), middle); break;
+          default: used = emitIfFits(roughingPass(20), middle); break;
+        }
+      }
+      if (used == 0) {
+        // Not enough room for a whole pass: fill with no-op rapids to the safe point.
+        block("G00 X52. Z2.");
+        used = 1;
+      } else if (++passes % 7 == 0 && middle - used > 0) {
+        block(passes % 14 == 0 ? "G04 P300" : "G04 U0.5");
+        ++used;
+      }
+      middle -= used;
+    }
+
+    // Finishing under G42: the profile repeated, padded with safe-point rapids.
+    int left = finishing;
+    bool first = true;
+    while (left > 0) {
+      int used = emitIfFits(finishingProfile(first), left);
+      if (used == 0) {
+        block(first ? "G42 G00 X52. Z2." : "G00 X52. Z2.");
+        used = 1;
+      }
+      first = false;
+      left -= used;
+    }
+
+    block("G40 G00 X100. Z100.");
+    block("M05");
+    block("M30");
+  }
+};
+
+}  // namespace klueng::bench

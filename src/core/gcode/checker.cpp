@@ -1,0 +1,299 @@
+// The grammar checker (SPEC 4-5, 13 and the "ext" rules): one pass over the
+// blocks, every diagnostic reported, driven by the code table.
+#include "klueng/core/gcode/checker.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+
+#include "diagnostic_codes.h"
+
+namespace klueng::core::gcode {
+
+namespace {
+
+constexpr double kMaxReal = 9999.999;
+constexpr double kMinPositive = 0.001;
+constexpr double kMaxWholeNumber = 99999999.0;
+
+bool allowedLetter(char l) {
+  switch (l) {
+    case 'C': case 'F': case 'G': case 'H': case 'I': case 'K': case 'M': case 'N': case 'O':
+    case 'S': case 'T': case 'U': case 'W': case 'X': case 'Z':
+    case 'R': case 'P': case 'Q':  // ext
+      return true;
+    default:
+      return false;
+  }
+}
+
+// Rule 2: letters that may appear at most once per block.
+bool onceOnly(char l) {
+  switch (l) {
+    case 'C': case 'F': case 'H': case 'I': case 'K': case 'N': case 'O': case 'R': case 'S':
+    case 'T': case 'U': case 'W': case 'X': case 'Z':
+      return true;
+    default:
+      return false;
+  }
+}
+
+bool hasSign(const Word& w) { return !w.number.empty() && (w.number[0] == '-' || w.number[0] == '+'); }
+std::string wordText(const Word& w) { return w.letter + w.number; }
+std::string twoDigits(int n) { return n < 10 ? "0" + std::to_string(n) : std::to_string(n); }
+
+// The code number of a G/M/T/N/O word when it is a plain non-negative integer
+// that fits; -1 otherwise (no undefined float-to-int conversion on junk).
+long long wholeNumber(const Word& w) {
+  if (w.hasDecimalPoint || hasSign(w) || !(w.value <= kMaxWholeNumber)) return -1;
+  return static_cast<long long>(w.value);
+}
+
+bool isRuleFourGroup(ModalGroup g) {
+  return g == ModalGroup::MSpindle || g == ModalGroup::MCoolant || g == ModalGroup::MCAxis ||
+         g == ModalGroup::MBrake || g == ModalGroup::MGear || g == ModalGroup::MSubprogram;
+}
+
+constexpr int kGroupCount = static_cast<int>(ModalGroup::MOther) + 1;
+
+class Checker {
+ public:
+  Checker(const CheckOptions& options, std::vector<Diagnostic>& out) : options_(options), out_(out) {}
+
+  bool full() const { return full_; }
+
+  void checkBlock(const Block& block, bool firstBlock) {
+    // Units apply to the whole block they appear in, then stay modal.
+    for (const Word& w : block.words)
+      if (w.letter == 'G') {
+        const long long n = wholeNumber(w);
+        if (n == 20) inch_ = true;
+        else if (n == 21) inch_ = false;
+      }
+
+    std::array<const Word*, 26> firstOfLetter{};
+    std::array<const Word*, kGroupCount> firstOfGroup{};
+    std::array<const Word*, kGroupCount> firstMOfGroup{};
+    const Word* standAlone[4] = {};
+    int standAloneCount = 0;
+    const Word* motionWord = nullptr;  // last valid group-01 G word
+    int motionCode = -1;
+    const Word* oneShotWord = nullptr;
+    const Word* g04 = nullptr;
+    const Word* g28 = nullptr;
+    const Word* compWord = nullptr;
+    int compCode = -1;
+    bool cannedCycle = false;
+    int nonNWords = 0;
+
+    const int wordCount = static_cast<int>(block.words.size());
+    for (int i = 0; i < wordCount && !full_; ++i) {
+      const Word& w = block.words[static_cast<std::size_t>(i)];
+      const char l = w.letter;
+      if (l != 'N') ++nonNWords;
+      if (!allowedLetter(l)) {
+        emit(codes::kLetterNotAllowed, w, {wordText(w), std::string(1, l)});
+        continue;
+      }
+      const Word*& first = firstOfLetter[static_cast<std::size_t>(l - 'A')];
+      if (first && onceOnly(l)) emit(codes::kLetterTwice, w, {std::string(1, l)});
+      if (!first) first = &w;
+
+      switch (l) {
+        case 'C': case 'H': case 'I': case 'K': case 'U': case 'W': case 'X': case 'Z': case 'R':
+          checkReal(w, -kMaxReal);
+          break;
+        case 'F': case 'S':
+          if (!(w.value >= kMinPositive)) emit(codes::kNotPositive, w, {wordText(w), std::string(1, l)});
+          else checkReal(w, kMinPositive);
+          break;
+        case 'N': case 'O': {
+          const long long n = wholeNumber(w);
+          if (n < 1 || n > 9999) emit(codes::kBadSequenceNumber, w, {wordText(w), std::string(1, l)});
+          if (l == 'N' && i != 0) emit(codes::kNNotFirst, w, {wordText(w)});
+          if (l == 'O' && !(firstBlock && i == 0 && wordCount == 1)) emit(codes::kMisplacedO, w, {wordText(w)});
+          break;
+        }
+        case 'T':
+          checkTool(w);
+          break;
+        case 'P': case 'Q':
+          if (wholeNumber(w) < 0) emit(codes::kNotWholeNumber, w, {wordText(w), std::string(1, l)});
+          break;
+        case 'G': case 'M': {
+          if (w.hasDecimalPoint) {
+            emit(codes::kCodeNotInteger, w, {wordText(w)});
+            break;
+          }
+          const long long n = wholeNumber(w);
+          const CodeInfo* row = n >= 0 && n <= 99 ? findCode(l, static_cast<int>(n), options_.dialect) : nullptr;
+          if (!row) {
+            if (l == 'G') emit(codes::kUnknownGCode, w, {wordText(w)});
+            else if (options_.dialect == Dialect::Fanuc)
+              emit(codes::kMachineSpecificM, w, {wordText(w)}, Severity::Warning);
+            else emit(codes::kUnknownMCode, w, {wordText(w)});
+            break;
+          }
+          const auto group = static_cast<std::size_t>(row->group);
+          if (row->mustStandAlone && standAloneCount < 4) standAlone[standAloneCount++] = &w;
+          if (l == 'G') {
+            if (firstOfGroup[group])
+              emit(codes::kSameModalGroup, w,
+                   {wordText(*firstOfGroup[group]), wordText(w), std::string(modalGroupNumber(row->group))});
+            else firstOfGroup[group] = &w;
+            if (row->group == ModalGroup::Motion) {
+              motionWord = &w;
+              motionCode = row->number;
+            } else if (row->group == ModalGroup::NonModal && !oneShotWord) {
+              oneShotWord = &w;
+            } else if (row->group == ModalGroup::NoseComp) {
+              compWord = &w;
+              compCode = row->number;
+            } else if (row->group == ModalGroup::CannedCycle) {
+              cannedCycle = true;
+            }
+            if (row->number == 4) g04 = &w;
+            if (row->number == 28) g28 = &w;
+          } else if (isRuleFourGroup(row->group)) {
+            if (firstMOfGroup[group])
+              emit(codes::kConflictingMCodes, w, {wordText(*firstMOfGroup[group]), wordText(w)});
+            else firstMOfGroup[group] = &w;
+          }
+          break;
+        }
+        default:
+          break;
+      }
+    }
+    if (full_) return;
+
+    const auto has = [&](char l) { return firstOfLetter[static_cast<std::size_t>(l - 'A')]; };
+    const auto later = [](const Word* a, const Word* b) { return a->range.column > b->range.column ? a : b; };
+
+    // Rules 3 and 7: stand-alone codes (N may come before them).
+    for (int k = 0; k < standAloneCount; ++k)
+      if (nonNWords > 1)
+        emit(standAlone[k]->letter == 'G' ? codes::kFeedModeNotAlone : codes::kMustStandAlone, *standAlone[k],
+             {wordText(*standAlone[k])});
+
+    // Rule 6: a one-shot G with a motion G.
+    if (oneShotWord && motionWord) {
+      const Word* second = later(oneShotWord, motionWord);
+      emit(codes::kOneShotWithMotion, *second, {wordText(*oneShotWord), wordText(*motionWord)});
+    }
+
+    // Rule 10: absolute and incremental words of one axis.
+    static constexpr std::array<std::pair<char, char>, 3> kPairs{{{'X', 'U'}, {'Z', 'W'}, {'C', 'H'}}};
+    for (const auto& [abs, inc] : kPairs)
+      if (has(abs) && has(inc))
+        emit(codes::kAbsoluteAndIncremental, *later(has(abs), has(inc)), {std::string(1, abs), std::string(1, inc)});
+
+    // Rule 11 and the dwell's own rules.
+    if (g04) checkDwell(block, *g04, has('U') ? has('U') : has('X'), has('P'));
+
+    // G28 without axis words moves nothing.
+    const bool axisWords = has('X') || has('Z') || has('U') || has('W');
+    if (g28 && !axisWords) {
+      if (options_.dialect == Dialect::Fanuc) emit(codes::kG28NoMotion, *g28, {}, Severity::Warning);
+      else emit(codes::kG28WithoutAxes, *g28, {});
+    }
+
+    // Arc rules: the motion group is modal, so "X20 Z-5 R2" after a G02 is an arc too.
+    if (motionCode >= 0) motion_ = motionCode;
+    const bool arc = motion_ == 2 || motion_ == 3;
+    if (arc) {
+      const std::string arcCode = motion_ == 2 ? "G02" : "G03";
+      if (motionWord && !axisWords) emit(codes::kArcWithoutEndPoint, *motionWord, {wordText(*motionWord)});
+      if (!cannedCycle && has('R') && (has('I') || has('K'))) emit(codes::kArcRadiusAndCentre, *has('R'), {arcCode});
+      if (compWord && (motionWord || axisWords)) {
+        if (compCode == 40) emit(codes::kCompEndOnArc, *compWord, {arcCode});
+        else emit(codes::kCompStartOnArc, *compWord, {wordText(*compWord), arcCode});
+      }
+    }
+  }
+
+ private:
+  const CheckOptions& options_;
+  std::vector<Diagnostic>& out_;
+  bool inch_ = false;   // G20 seen last (G21 is the initial state)
+  int motion_ = 0;      // group 01 code in force (G00 at start)
+  bool full_ = false;
+
+  void emit(const char* code, const Word& w, std::vector<std::string> args, Severity severity = Severity::Error) {
+    if (full_) return;
+    if (out_.size() + 1 >= codes::kMaxDiagnostics) {
+      out_.push_back(Diagnostic{Severity::Error, codes::kTooManyDiagnostics, {w.range.line, w.range.column, 0},
+                                {std::to_string(codes::kMaxDiagnostics)}});
+      full_ = true;
+      return;
+    }
+    out_.push_back(Diagnostic{severity, code, w.range, std::move(args)});
+  }
+
+  void checkReal(const Word& w, double min) {
+    if (!(w.value >= min && w.value <= kMaxReal)) {
+      emit(codes::kOutOfRange, w, {wordText(w), min == kMinPositive ? "0.001" : "-9999.999", "9999.999"});
+      return;
+    }
+    const int maxDecimals = inch_ ? 4 : 3;
+    if (w.decimals > maxDecimals) emit(codes::kTooManyDecimals, w, {wordText(w), std::to_string(maxDecimals)});
+  }
+
+  void checkTool(const Word& w) {
+    const bool fanuc = options_.dialect == Dialect::Fanuc;
+    const std::size_t digits = w.number.size();
+    const long long n = wholeNumber(w);
+    const bool shapeOk = n >= 0 && (digits == 4 || (fanuc && digits == 3));
+    const int tool = static_cast<int>(n / 100);
+    const int offset = static_cast<int>(n % 100);
+    if (!shapeOk || tool < 1 || tool > 8 || offset > 16) {
+      emit(fanuc ? codes::kBadToolWordFanuc : codes::kBadToolWord, w, {wordText(w)});
+      return;
+    }
+    if (options_.toolsWithBitmap) {
+      const auto& tools = *options_.toolsWithBitmap;
+      if (std::find(tools.begin(), tools.end(), tool) == tools.end())
+        emit(codes::kToolWithoutBitmap, w, {wordText(w), twoDigits(tool)});
+    }
+  }
+
+  void checkDwell(const Block& block, const Word& g04, const Word* seconds, const Word* millis) {
+    if (!seconds && !millis) {
+      emit(codes::kDwellWithoutTime, g04, {});
+    } else {
+      if (seconds && seconds->value < 0) emit(codes::kNegativeDwell, *seconds, {wordText(*seconds)});
+      if (seconds && millis) {
+        const bool pFirst = millis->range.column < seconds->range.column;
+        const Word& a = pFirst ? *millis : *seconds;
+        const Word& b = pFirst ? *seconds : *millis;
+        emit(codes::kDwellTwice, b, {wordText(a), wordText(b)});
+      }
+    }
+    for (const Word& w : block.words)
+      if (w.letter == 'Z' || w.letter == 'W' || w.letter == 'I' || w.letter == 'K' || w.letter == 'R' ||
+          w.letter == 'C' || w.letter == 'H')
+        emit(codes::kDwellWithAxis, w, {wordText(w)});
+  }
+};
+
+}  // namespace
+
+std::vector<Diagnostic> check(const Program& program, const CheckOptions& options) {
+  std::vector<Diagnostic> out = program.lexicalDiagnostics;
+  Checker checker(options, out);
+  bool first = true;
+  for (const Block& block : program.blocks) {
+    checker.checkBlock(block, first);
+    first = false;
+    if (checker.full()) break;
+  }
+  // Blocks come in line order, so this only reorders within a line.
+  std::stable_sort(out.begin(), out.end(), [](const Diagnostic& a, const Diagnostic& b) {
+    if (a.range.line != b.range.line) return a.range.line < b.range.line;
+    return a.range.column < b.range.column;
+  });
+  return out;
+}
+
+}  // namespace klueng::core::gcode

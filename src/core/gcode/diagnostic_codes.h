@@ -1,0 +1,64 @@
+#pragma once
+// Stable diagnostic codes of the gcode module (texts in
+// src/core/base/messages_gcode.cpp). One constant per code so the parser, the
+// checker and the tests cannot drift apart.
+#include <cstddef>
+
+namespace klueng::core::gcode::codes {
+
+// E1xx lexical errors and word formats (SPEC 3-4)
+inline constexpr const char* kLoneLetter = "E101";          // {0}=letter
+inline constexpr const char* kLoneNumber = "E102";          // {0}=number
+inline constexpr const char* kMalformedNumber = "E103";     // {0}=word as written
+inline constexpr const char* kUnknownCharacter = "E104";    // {0}=character
+inline constexpr const char* kUnclosedComment = "E105";
+inline constexpr const char* kMisplacedBlockSkip = "E106";
+inline constexpr const char* kMisplacedTapeMark = "E107";
+inline constexpr const char* kTextAfterTapeMark = "E108";   // {0}=word
+inline constexpr const char* kTooManyLexicalErrors = "E109";
+inline constexpr const char* kOutOfRange = "E110";          // {0}=word {1}=min {2}=max
+inline constexpr const char* kTooManyDecimals = "E111";     // {0}=word {1}=max decimals
+inline constexpr const char* kNotPositive = "E112";         // {0}=word {1}=letter
+inline constexpr const char* kCodeNotInteger = "E113";      // {0}=word
+inline constexpr const char* kUnknownGCode = "E114";        // {0}=word
+inline constexpr const char* kUnknownMCode = "E115";        // {0}=word
+inline constexpr const char* kBadSequenceNumber = "E116";   // {0}=word {1}=letter
+inline constexpr const char* kBadToolWord = "E117";         // {0}=word
+inline constexpr const char* kBadToolWordFanuc = "E118";    // {0}=word
+inline constexpr const char* kNotWholeNumber = "E119";      // {0}=word {1}=letter
+inline constexpr const char* kTooManyDiagnostics = "E199";  // {0}=limit
+
+// E2nn block rule nn of SPEC 5 (E213, stock size, belongs to the io module)
+inline constexpr const char* kLetterNotAllowed = "E201";    // {0}=word {1}=letter
+inline constexpr const char* kLetterTwice = "E202";         // {0}=letter
+inline constexpr const char* kMustStandAlone = "E203";      // {0}=code
+inline constexpr const char* kConflictingMCodes = "E204";   // {0}=first {1}=second
+inline constexpr const char* kSameModalGroup = "E205";      // {0}=first {1}=second {2}=group
+inline constexpr const char* kOneShotWithMotion = "E206";   // {0}=group-00 code {1}=group-01 code
+inline constexpr const char* kFeedModeNotAlone = "E207";    // {0}=code
+inline constexpr const char* kMisplacedO = "E208";          // {0}=word
+inline constexpr const char* kNNotFirst = "E209";           // {0}=word
+inline constexpr const char* kAbsoluteAndIncremental = "E210";  // {0}=absolute letter {1}=incremental
+inline constexpr const char* kDwellWithoutTime = "E211";
+
+// E3xx "ext" block rules
+inline constexpr const char* kArcWithoutEndPoint = "E301";  // {0}=code
+inline constexpr const char* kArcRadiusAndCentre = "E302";  // {0}=code
+inline constexpr const char* kCompStartOnArc = "E303";      // {0}=comp code {1}=arc code
+inline constexpr const char* kCompEndOnArc = "E304";        // {0}=arc code
+inline constexpr const char* kToolWithoutBitmap = "E305";   // {0}=word {1}=tool number
+inline constexpr const char* kNegativeDwell = "E306";       // {0}=word
+inline constexpr const char* kDwellTwice = "E307";          // {0}=first {1}=second
+inline constexpr const char* kDwellWithAxis = "E308";       // {0}=word
+inline constexpr const char* kG28WithoutAxes = "E309";
+
+// W1xx warnings
+inline constexpr const char* kMachineSpecificM = "W101";    // {0}=word
+inline constexpr const char* kG28NoMotion = "W102";
+
+// Beyond these, a hostile input only repeats itself; the report ends with
+// E109 / E199 instead of growing without bound.
+inline constexpr std::size_t kMaxLexicalDiagnostics = 2000;
+inline constexpr std::size_t kMaxDiagnostics = 10000;
+
+}  // namespace klueng::core::gcode::codes

@@ -1,0 +1,224 @@
+// Lexer and parser in one pass (SPEC 3). Each line is scanned once, byte by
+// byte, with the column counted in Unicode code points so that a Thai comment
+// before a word still gives the word's true column.
+#include "klueng/core/gcode/parser.h"
+
+#include <charconv>
+#include <string>
+
+#include "diagnostic_codes.h"
+
+namespace klueng::core::gcode {
+
+namespace {
+
+bool isLetter(unsigned char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+bool isDigit(unsigned char c) { return c >= '0' && c <= '9'; }
+bool isNumberChar(unsigned char c) { return isDigit(c) || c == '.' || c == '+' || c == '-'; }
+bool isBlank(unsigned char c) { return c == ' ' || c == '\t' || c == '\f' || c == '\v'; }
+
+// Byte length of the UTF-8 sequence starting at s[i]; 1 for an invalid byte
+// (counted as one code point, like io::utf8Length).
+std::size_t utf8SequenceLength(std::string_view s, std::size_t i) {
+  const auto c = static_cast<unsigned char>(s[i]);
+  std::size_t n = 1;
+  if (c >= 0xC2 && c <= 0xDF) n = 2;
+  else if (c >= 0xE0 && c <= 0xEF) n = 3;
+  else if (c >= 0xF0 && c <= 0xF4) n = 4;
+  else return 1;
+  if (i + n > s.size()) return 1;
+  for (std::size_t k = 1; k < n; ++k)
+    if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return 1;
+  return n;
+}
+
+class LineParser {
+ public:
+  LineParser(Program& program, std::size_t& diagnosticBudget)
+      : program_(program), budget_(diagnosticBudget) {}
+
+  void parseLine(std::string_view line, int lineNumber) {
+    line_ = line;
+    lineNumber_ = lineNumber;
+    Block block;
+    block.line = lineNumber;
+    bool sawWordOrSkip = false;  // '/' is block skip only before the first word
+    bool tapeLine = false;
+
+    std::size_t i = 0;
+    int col = 1;
+    while (i < line.size()) {
+      const auto c = static_cast<unsigned char>(line[i]);
+      if (isBlank(c)) {
+        ++i;
+        ++col;
+      } else if (c == '(') {
+        const int startCol = col;
+        std::size_t j = i + 1;
+        int endCol = col + 1;
+        while (j < line.size() && line[j] != ')') {
+          const std::size_t n = utf8SequenceLength(line, j);
+          j += n;
+          ++endCol;
+        }
+        appendComment(block, line.substr(i + 1, j - i - 1));
+        if (j >= line.size()) {
+          report(codes::kUnclosedComment, startCol, endCol - startCol, {});
+          i = j;
+          col = endCol;
+        } else {
+          i = j + 1;
+          col = endCol + 1;
+        }
+      } else if (c == ';') {
+        appendComment(block, line.substr(i + 1));
+        i = line.size();
+      } else if (isLetter(c)) {
+        col = lexWord(block, i, col);
+        sawWordOrSkip = true;
+      } else if (isNumberChar(c)) {
+        // A number with no address letter before it.
+        const std::size_t start = i;
+        while (i < line.size() && isNumberChar(static_cast<unsigned char>(line[i]))) ++i;
+        const int length = static_cast<int>(i - start);
+        report(codes::kLoneNumber, col, length, {std::string(line.substr(start, i - start))});
+        col += length;
+        sawWordOrSkip = true;
+      } else if (c == '/' && !sawWordOrSkip && !tapeLine) {
+        block.blockSkip = true;
+        sawWordOrSkip = true;
+        ++i;
+        ++col;
+      } else if (c == '%' && !sawWordOrSkip && !tapeLine && block.comment.empty()) {
+        // Tape start/end mark: only blanks and comments may follow it.
+        tapeLine = true;
+        sawWordOrSkip = true;
+        ++i;
+        ++col;
+      } else {
+        // Unknown characters: one diagnostic for a run of them, so binary
+        // junk gives few messages.
+        const std::size_t start = i;
+        const int startCol = col;
+        while (i < line.size()) {
+          const auto d = static_cast<unsigned char>(line[i]);
+          if (isBlank(d) || isLetter(d) || isNumberChar(d) || d == '(' || d == ';') break;
+          if (d == '/' && !sawWordOrSkip) break;
+          i += utf8SequenceLength(line, i);
+          ++col;
+        }
+        const std::string_view run = line.substr(start, i - start);
+        const std::size_t first = utf8SequenceLength(run, 0);
+        const bool slash = run.size() == 1 && run[0] == '/';
+        const bool percent = run.size() == 1 && run[0] == '%';
+        const char* code = slash     ? codes::kMisplacedBlockSkip
+                           : percent ? codes::kMisplacedTapeMark
+                                     : codes::kUnknownCharacter;
+        report(code, startCol, col - startCol, {std::string(run.substr(0, first))});
+      }
+    }
+    if (block.words.empty()) return;
+    if (tapeLine) {
+      // Words after '%' are reported, not run: the line is a tape mark.
+      const SourceRange& r = block.words.front().range;
+      report(codes::kTextAfterTapeMark, r.column, r.length, {block.words.front().letter + block.words.front().number});
+      return;
+    }
+    program_.blocks.push_back(std::move(block));
+  }
+
+ private:
+  Program& program_;
+  std::size_t& budget_;
+  std::string_view line_;
+  int lineNumber_ = 0;
+
+  static void appendComment(Block& block, std::string_view text) {
+    if (!block.comment.empty()) block.comment += ' ';
+    block.comment.append(text);
+  }
+
+  void report(const char* code, int column, int length, std::vector<std::string> args) {
+    if (budget_ == 0) return;
+    if (--budget_ == 0) {
+      program_.lexicalDiagnostics.push_back(
+          Diagnostic{Severity::Error, codes::kTooManyLexicalErrors, {lineNumber_, column, 0}, {}});
+      return;
+    }
+    program_.lexicalDiagnostics.push_back(
+        Diagnostic{Severity::Error, code, {lineNumber_, column, length}, std::move(args)});
+  }
+
+  // Reads letter + number at line_[i]; returns the column after the word.
+  int lexWord(Block& block, std::size_t& i, int col) {
+    const char letter = static_cast<char>(line_[i] & ~0x20);  // upper case
+    const std::size_t start = i;
+    ++i;
+    const std::size_t numberStart = i;
+    while (i < line_.size() && isNumberChar(static_cast<unsigned char>(line_[i]))) ++i;
+    const std::string_view number = line_.substr(numberStart, i - numberStart);
+    const int length = static_cast<int>(i - start);
+    if (number.empty()) {
+      report(codes::kLoneLetter, col, 1, {std::string(1, letter)});
+      return col + 1;
+    }
+
+    // number := [+-]? ( digits [. digits?] | . digits )
+    std::size_t k = 0;
+    if (number[k] == '+' || number[k] == '-') ++k;
+    const std::size_t intStart = k;
+    while (k < number.size() && isDigit(static_cast<unsigned char>(number[k]))) ++k;
+    const std::size_t intDigits = k - intStart;
+    bool point = false;
+    std::size_t fracDigits = 0;
+    if (k < number.size() && number[k] == '.') {
+      point = true;
+      ++k;
+      const std::size_t fracStart = k;
+      while (k < number.size() && isDigit(static_cast<unsigned char>(number[k]))) ++k;
+      fracDigits = k - fracStart;
+    }
+    if (k != number.size() || intDigits + fracDigits == 0) {
+      report(codes::kMalformedNumber, col, length, {std::string(line_.substr(start, i - start))});
+      return col + length;
+    }
+
+    Word w;
+    w.letter = letter;
+    w.number.assign(number);
+    w.hasDecimalPoint = point;
+    w.decimals = static_cast<int>(fracDigits);
+    w.range = SourceRange{lineNumber_, col, length};
+    const std::size_t unsignedStart = intStart;
+    double v = 0.0;
+    const auto result = std::from_chars(number.data() + unsignedStart, number.data() + number.size(), v);
+    if (result.ec == std::errc::result_out_of_range) v = 1e308;  // reported as out of range by the checker
+    w.value = number[0] == '-' ? -v : v;
+    block.words.push_back(std::move(w));
+    return col + length;
+  }
+};
+
+}  // namespace
+
+Program parse(std::string_view text, int firstLine) {
+  Program program;
+  program.firstLine = firstLine;
+  std::size_t budget = codes::kMaxLexicalDiagnostics;
+  LineParser parser(program, budget);
+
+  std::size_t pos = 0;
+  int lineNumber = firstLine;
+  while (pos < text.size()) {
+    std::size_t end = pos;
+    while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
+    parser.parseLine(text.substr(pos, end - pos), lineNumber);
+    ++program.lineCount;
+    ++lineNumber;
+    if (end < text.size() && text[end] == '\r' && end + 1 < text.size() && text[end + 1] == '\n') ++end;
+    pos = end + 1;
+  }
+  return program;
+}
+
+}  // namespace klueng::core::gcode

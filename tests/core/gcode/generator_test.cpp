@@ -1,0 +1,90 @@
+// The benchmark's program generator must produce clean programs in both dialects.
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+
+#include "../../../bench/program_generator.h"
+#include "klueng/core/gcode/checker.h"
+#include "klueng/core/gcode/parser.h"
+#include "klueng/core/messages.h"
+
+namespace klueng::core::gcode {
+namespace {
+
+std::string afterHeader(const std::string& file, int lines) {
+  std::size_t pos = 0;
+  for (int i = 0; i < lines; ++i) pos = file.find('\n', pos) + 1;
+  return file.substr(pos);
+}
+
+std::string describe(const std::vector<Diagnostic>& diags) {
+  std::ostringstream s;
+  for (const auto& d : diags) s << d.range.line << ':' << d.range.column << ' ' << formatMessage(d, Lang::En) << '\n';
+  return s.str();
+}
+
+class GeneratedProgram : public ::testing::TestWithParam<Dialect> {};
+
+TEST_P(GeneratedProgram, TwoThousandBlocksAreClean) {
+  const std::string file = klueng::bench::ProgramGenerator::generate(2000);
+  const Program program = parse(afterHeader(file, 6), 7);
+  // O0001 plus exactly 2000 N-numbered blocks.
+  ASSERT_EQ(program.blocks.size(), 2001u);
+  EXPECT_EQ(program.blocks.front().words.front().letter, 'O');
+  EXPECT_EQ(program.blocks[1].words.front().letter, 'N');
+  EXPECT_EQ(program.blocks.back().line, 7 + 2000);
+  CheckOptions options;
+  options.dialect = GetParam();
+  options.toolsWithBitmap = std::vector<int>{1};
+  const auto diags = check(program, options);
+  EXPECT_TRUE(diags.empty()) << describe(diags);
+}
+
+TEST_P(GeneratedProgram, OddSizesAreCleanToo) {
+  for (int blocks : {16, 17, 63, 157, 1001}) {
+    const std::string file = klueng::bench::ProgramGenerator::generate(blocks);
+    const Program program = parse(afterHeader(file, 6), 7);
+    EXPECT_EQ(program.blocks.size(), static_cast<std::size_t>(blocks) + 1);
+    CheckOptions options;
+    options.dialect = GetParam();
+    const auto diags = check(program, options);
+    EXPECT_TRUE(diags.empty()) << blocks << " blocks:\n" << describe(diags);
+  }
+}
+
+TEST(GeneratedProgramShape, HeaderStockAndSafeLimits) {
+  const std::string file = klueng::bench::ProgramGenerator::generate(500);
+  std::istringstream in(file);
+  std::string line;
+  std::vector<std::string> header;
+  for (int i = 0; i < 6 && std::getline(in, line); ++i) header.push_back(line);
+  ASSERT_EQ(header.size(), 6u);
+  EXPECT_EQ(header[3], "150");   // Ø50 mm
+  EXPECT_EQ(header[4], "1100");  // 100 mm
+  // No Z word below -80 (the chuck grips Z -85..-100).
+  const Program program = parse(afterHeader(file, 6), 7);
+  bool sawG42 = false, sawArcR = false, sawArcIK = false, sawDwell = false;
+  for (const Block& b : program.blocks) {
+    for (const Word& w : b.words) {
+      if (w.letter == 'Z') {
+        EXPECT_GE(w.value, -80.0) << "line " << b.line;
+      }
+      if (w.letter == 'X') {
+        EXPECT_GE(w.value, 20.0) << "line " << b.line;
+      }
+      if (w.letter == 'G' && w.code() == 42) sawG42 = true;
+      if (w.letter == 'G' && w.code() == 4) sawDwell = true;
+      if (w.letter == 'R') sawArcR = true;
+      if (w.letter == 'I') sawArcIK = true;
+    }
+  }
+  EXPECT_TRUE(sawG42 && sawArcR && sawArcIK && sawDwell);
+  EXPECT_EQ(program.blocks.back().words.back().letter, 'M');
+  EXPECT_EQ(program.blocks.back().words.back().code(), 30);
+}
+
+INSTANTIATE_TEST_SUITE_P(BothDialects, GeneratedProgram, ::testing::Values(Dialect::Fanuc, Dialect::Classic));
+
+}  // namespace
+}  // namespace klueng::core::gcode
