@@ -1,5 +1,6 @@
 #include "klueng/core/comp/segment.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -46,6 +47,33 @@ Vec2 Segment::startTangent() const {
 Vec2 Segment::endTangent() const {
   if (!isArc()) return startTangent();
   return perpendicular(end - centre, ccw).normalized();
+}
+
+Segment Segment::translated(const Vec2& by) const {
+  Segment s = *this;
+  s.start += by;
+  s.end += by;
+  if (isArc()) s.centre += by;
+  return s;
+}
+
+double distanceTo(const Segment& s, const Vec2& p) {
+  if (!s.isArc()) {
+    const Vec2 d = s.end - s.start;
+    const double len2 = d.squaredNorm();
+    const double t = len2 > 0 ? std::clamp((p - s.start).dot(d) / len2, 0.0, 1.0) : 0.0;
+    return (p - (s.start + t * d)).norm();
+  }
+  const Vec2 a = s.start - s.centre;
+  const Vec2 v = p - s.centre;
+  const double r = a.norm();
+  if (v.norm() == 0.0) return r;  // every point of the arc is r away from its centre
+  // Angle from the start radius to p, measured in the direction of travel, in [0, 2pi).
+  double ang = std::atan2(a.x() * v.y() - a.y() * v.x(), a.dot(v));
+  if (!s.ccw) ang = -ang;
+  if (ang < 0) ang += 2 * std::numbers::pi;
+  if (ang <= s.sweep()) return std::abs(v.norm() - r);
+  return std::min((p - s.start).norm(), (p - s.end).norm());
 }
 
 }  // namespace klueng::core

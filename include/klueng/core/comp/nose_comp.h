@@ -11,8 +11,26 @@
 // arcs around convex corners are attached to the move that follows the corner,
 // as a real control does), each tagged with the index of its input move.
 // The controlled point (what the trace shows) is centre + R * tipVector(tip).
+//
+// Rules (Fanuc 0i-TF type A; docs/nose-compensation.md):
+//   start-up: from the uncompensated centre of its start to its end point offset
+//             by R perpendicular to the START direction of the next move;
+//   corners:  concave -> both offsets trimmed at their intersection; convex ->
+//             two lines turning <= 90 deg (or a line/arc pair whose carriers meet
+//             within 2R of the corner) are extended to their intersection, any
+//             other convex corner gets a bridging arc of radius R around the
+//             programmed corner point; tangent continuation adds nothing;
+//   cancel:   from where the previous piece ended (offset perpendicular to the
+//             END direction of the previous move) to the uncompensated centre
+//             of its end point.
+// Every move before an interference yields at least one piece; a zero-length
+// move (or a piece trimmed to nothing) yields a zero-length line. R <= 0 leaves
+// the path unchanged. A lone move with endsWithCancel is start-up and cancel at
+// once: uncompensated centre to uncompensated centre.
 #include <optional>
 #include <span>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "klueng/core/comp/segment.h"
@@ -38,7 +56,11 @@ struct CompPiece {
 
 struct Interference {
   int source = 0;     // index of the move where the nose cannot follow
-  enum class Kind { ArcSmallerThanRadius, PathReversal } kind = Kind::PathReversal;
+  enum class Kind {
+    ArcSmallerThanRadius,   // concave arc radius < R (A201)
+    PathReversal,           // the offset piece would run against its programmed direction (A202)
+    ArcInStartUpOrCancel,   // start-up or cancel move is an arc: only G00/G01 allowed (A203)
+  } kind = Kind::PathReversal;
 };
 
 struct CompOutput {
@@ -47,6 +69,20 @@ struct CompOutput {
 };
 
 CompOutput compensate(const CompInput& in);
+
+// The alarm code (A2xx, messages_comp.cpp) of an interference, and the
+// Diagnostic::args its text expects: A201 {0} = arc radius, {1} = nose radius;
+// A202 {0} = nose radius; A203 none. Radii in mm, at most 3 decimals.
+std::string_view interferenceCode(Interference::Kind kind);
+std::vector<std::string> interferenceArgs(const Interference& i, const CompInput& in);
+
+// Without compensation (G40) the imaginary tip follows the program: the nose
+// centre is programmed - R * tipVector(tip).
+Vec2 uncompensatedCentre(const Vec2& programmed, double radius, int tip);
+Segment uncompensatedCentrePath(const Segment& programmed, double radius, int tip);
+// The controlled point (imaginary tip, what the trace shows) of a nose centre.
+Vec2 controlledPoint(const Vec2& centre, double radius, int tip);
+Segment controlledPath(const Segment& centrePath, double radius, int tip);
 
 // Offset of one segment by d to the left (d > 0) or right (d < 0) of travel;
 // nullopt if an arc would collapse (radius - d <= 0 on its concave side).

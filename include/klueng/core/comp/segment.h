@@ -21,6 +21,12 @@ struct Segment {
   Vec2 startTangent() const;             // unit direction of travel at the start
   Vec2 endTangent() const;               // unit direction of travel at the end
   double sweep() const;                  // arcs: swept angle in radians, > 0
+  Segment translated(const Vec2& by) const;  // the same piece moved by `by`
 };
+
+// Shortest distance from p to the piece (its end points included). For an arc
+// this is | |p - centre| - radius | when p lies in the arc's angular range,
+// else the distance to the nearer end point.
+double distanceTo(const Segment& s, const Vec2& p);
 
 }  // namespace klueng::core
