@@ -3,6 +3,7 @@
 #include "klueng/core/gcode/code_table.h"
 #include "klueng/core/gcode/program.h"
 #include "klueng/core/io/tool_config.h"
+#include "klueng/core/machine/sink.h"
 #include "klueng/core/machine/timeline.h"
 
 namespace klueng::core::machine {
@@ -20,6 +21,17 @@ struct MachineSetup {
   io::ToolTable tools;
 };
 
+// Tool offsets: the controlled point for a programmed position P is P + (X offset / 2, Z offset);
+// a new offset takes effect with the next move (the tool does not jump), and
+// U/W moves are plain displacements. G50 X Z declares the controlled point to
+// be at the given position (+ offset) in work coordinates, where the stock is;
+// the reference point and travel limits are machine positions and follow it.
+// C/H rotations take no time. Zero-length moves are not recorded.
+//
+// The full chain: interpreter -> compensation stage -> timeline builder.
 Timeline interpret(const gcode::Program& program, const MachineSetup& setup, const RunOptions& options = {});
+
+// The interpreter alone, emitting canonical calls to `sink` (for custom chains).
+void run(const gcode::Program& program, const MachineSetup& setup, const RunOptions& options, MachineSink& sink);
 
 }  // namespace klueng::core::machine

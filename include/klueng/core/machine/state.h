@@ -21,6 +21,7 @@ struct ModalState {
   double feed = 0.0;          // F as programmed (mm/min, mm/rev, or lead for G32), 0 = not set
   double sWord = 0.0;         // last S (rpm under G97, m/min under G96), 0 = not set
   double rpmClamp = 0.0;      // G50 S, 0 = none
+  int workCoordinate = 54;    // G54..G59 (Fanuc; all work offsets are zero)
 };
 
 struct MachineState {
@@ -39,6 +40,8 @@ struct MachineState {
   double offsetZ = 0.0;
   double noseRadius = 0.0;
   int tip = 0;
+  int gearRange = 0;               // Fanuc M41/M42 (no motion), 0 = not selected
+  Vec2 workShift = Vec2::Zero();   // work minus machine coordinates, changed by G50 X Z
 };
 
 struct StateSnapshot {

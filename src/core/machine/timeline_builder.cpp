@@ -1,0 +1,143 @@
+// Last stage of the chain: turns canonical calls into the Timeline with exact
+// times (SPEC 10).
+#include <cmath>
+#include <limits>
+
+#include "klueng/core/geometry.h"
+#include "klueng/core/machine/kinematics.h"
+#include "klueng/core/machine/sink.h"
+
+namespace klueng::core::machine {
+
+namespace {
+
+constexpr double kMinLength = 1e-9;  // mm; shorter moves take no time and are not recorded
+
+class TimelineBuilder final : public MachineSink {
+ public:
+  TimelineBuilder(Timeline& out, const TimingConfig& config) : out_(out), config_(config) {}
+
+  void motion(const MotionCall& m) override {
+    if (halted()) return;
+    if (!m.path.isArc() && (m.path.end - m.path.start).norm() < kMinLength) {
+      position_ = m.path.end;
+      return;
+    }
+    if (m.kind == MoveKind::Rapid && !m.path.isArc()) {
+      rapidDogLeg(m);
+      return;
+    }
+    double seconds = 0.0;
+    double feed = 0.0;
+    const double rpmStart = spindleRpm(m.ctx, xOf(m.path.start));
+    switch (m.kind) {
+      case MoveKind::Rapid:  // a bridging arc of a compensated rapid
+        seconds = rapidSeconds(m.path, config_.rapidX, config_.rapidZ);
+        break;
+      case MoveKind::Thread:
+        feed = m.lead * rpmStart;
+        seconds = feed > 0.0 ? m.path.length() / feed * 60.0 : std::numeric_limits<double>::infinity();
+        break;
+      default:
+        seconds = feedMoveSeconds(m.path, m.ctx);
+        feed = m.ctx.feedMode == FeedMode::PerMinute ? m.ctx.feed : m.ctx.feed * rpmStart;
+        break;
+    }
+    if (m.kind == MoveKind::Rapid) feed = seconds > 0.0 ? m.path.length() / seconds * 60.0 : 0.0;
+    push(m, m.path, seconds, feed);
+  }
+
+  void dwell(const DwellCall& d) override {
+    if (halted()) return;
+    Move mv;
+    mv.kind = MoveKind::Dwell;
+    mv.line = d.line;
+    mv.blockIndex = d.blockIndex;
+    mv.tStart = time_;
+    mv.tEnd = time_ + d.seconds;
+    mv.path = Segment::line(position_, position_);
+    mv.noseCentre = -d.ctx.noseRadius * tipVector(d.ctx.tip);
+    mv.rpm = mv.rpmEnd = spindleRpm(d.ctx, xOf(position_));
+    mv.tool = d.ctx.tool;
+    mv.offset = d.ctx.offset;
+    mv.spindle = d.ctx.spindle;
+    time_ = mv.tEnd;
+    out_.moves.push_back(mv);
+  }
+
+  void setPosition(const Vec2& p) override { position_ = p; }
+  void compensation(NoseCompMode, double, int) override {}
+
+  void blockDone(const StateSnapshot& s) override {
+    if (halted()) return;
+    StateSnapshot snap = s;
+    snap.time = time_;
+    snap.moveEnd = static_cast<int>(out_.moves.size());
+    snap.machine.position = position_;
+    out_.snapshots.push_back(snap);
+  }
+
+  void alarm(const Diagnostic& d) override {
+    if (!out_.alarm) out_.alarm = d;
+  }
+  void end() override {}
+  bool halted() const override { return out_.alarm.has_value(); }
+
+ private:
+  void push(const MotionCall& m, const Segment& path, double seconds, double feed) {
+    Move mv;
+    mv.kind = m.kind;
+    mv.line = m.line;
+    mv.blockIndex = m.blockIndex;
+    mv.tStart = time_;
+    mv.tEnd = time_ + seconds;
+    mv.path = path;
+    mv.noseCentre = -m.ctx.noseRadius * tipVector(m.ctx.tip);
+    mv.feed = feed;
+    mv.rpm = spindleRpm(m.ctx, xOf(path.start));
+    mv.rpmEnd = spindleRpm(m.ctx, xOf(path.end));
+    mv.lead = m.lead;
+    mv.tool = m.ctx.tool;
+    mv.offset = m.ctx.offset;
+    mv.spindle = m.ctx.spindle;
+    mv.compensated = m.compensated;
+    time_ = mv.tEnd;
+    position_ = path.end;
+    out_.moves.push_back(mv);
+  }
+
+  // G00: both axes start together, each at its own rapid rate; the one with
+  // less time to go arrives first, the other finishes alone (SPEC 7).
+  void rapidDogLeg(const MotionCall& m) {
+    const Vec2 p0 = m.path.start, p1 = m.path.end;
+    const double dz = zOf(p1) - zOf(p0), dx = xOf(p1) - xOf(p0);
+    const double tz = std::abs(dz) / config_.rapidZ, tx = std::abs(dx) / config_.rapidX;  // minutes
+    const double tBoth = std::min(tz, tx);
+    const double tRest = std::max(tz, tx) - tBoth;
+    if (tBoth <= 0.0 || tRest <= 1e-12 * std::max(tz, tx)) {
+      const double seconds = std::max(tz, tx) * 60.0;
+      push(m, m.path, seconds, m.path.length() / (seconds / 60.0));
+      return;
+    }
+    // Where the faster-arriving axis is done: the other has moved rate * tBoth.
+    const Vec2 corner = tz < tx ? Vec2(zOf(p1), xOf(p0) + std::copysign(config_.rapidX * tBoth, dx))
+                                : Vec2(zOf(p0) + std::copysign(config_.rapidZ * tBoth, dz), xOf(p1));
+    const Segment first = Segment::line(p0, corner);
+    const Segment second = Segment::line(corner, p1);
+    push(m, first, tBoth * 60.0, first.length() / tBoth);
+    push(m, second, tRest * 60.0, second.length() / tRest);
+  }
+
+  Timeline& out_;
+  TimingConfig config_;
+  Vec2 position_ = Vec2::Zero();
+  double time_ = 0.0;
+};
+
+}  // namespace
+
+std::unique_ptr<MachineSink> makeTimelineBuilder(Timeline& out, const TimingConfig& config) {
+  return std::make_unique<TimelineBuilder>(out, config);
+}
+
+}  // namespace klueng::core::machine
