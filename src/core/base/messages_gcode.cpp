@@ -45,6 +45,8 @@ constexpr MessageText kMessages[] = {
      "{0}: เขียน T เป็นหมายเลขมีดตัด 01-08 ตามด้วยหมายเลขออฟเซต 00-16 เช่น T0101 (หรือ T101)"},
     {"E119", "{0}: {1} must be a whole number without sign or decimal point (e.g. {1}500)",
      "{0}: ค่า {1} ต้องเป็นจำนวนเต็มไม่มีเครื่องหมายและจุดทศนิยม (เช่น {1}500)"},
+    {"E120", "this block has more than {0} words; the rest of the line is not read: split it into several blocks",
+     "บล็อกนี้มีคำสั่งมากกว่า {0} คำ จึงไม่อ่านส่วนที่เหลือของบรรทัด: แบ่งเป็นหลายบล็อก"},
     {"E199", "more than {0} errors; the rest of the program is not checked",
      "พบข้อผิดพลาดมากกว่า {0} รายการ จึงไม่ตรวจสอบส่วนที่เหลือของโปรแกรม"},
 

@@ -26,6 +26,7 @@ inline constexpr const char* kBadSequenceNumber = "E116";   // {0}=word {1}=lett
 inline constexpr const char* kBadToolWord = "E117";         // {0}=word
 inline constexpr const char* kBadToolWordFanuc = "E118";    // {0}=word
 inline constexpr const char* kNotWholeNumber = "E119";      // {0}=word {1}=letter
+inline constexpr const char* kBlockTooLong = "E120";       // {0}=limit
 inline constexpr const char* kTooManyDiagnostics = "E199";  // {0}=limit
 
 // E2nn block rule nn of SPEC 5 (E213, stock size, belongs to the io module)
@@ -56,9 +57,59 @@ inline constexpr const char* kG28WithoutAxes = "E309";
 inline constexpr const char* kMachineSpecificM = "W101";    // {0}=word
 inline constexpr const char* kG28NoMotion = "W102";
 
+// Every code above, for the catalog completeness test.
+inline constexpr const char* kAll[] = {
+    kLoneLetter,
+    kLoneNumber,
+    kMalformedNumber,
+    kUnknownCharacter,
+    kUnclosedComment,
+    kMisplacedBlockSkip,
+    kMisplacedTapeMark,
+    kTextAfterTapeMark,
+    kTooManyLexicalErrors,
+    kOutOfRange,
+    kTooManyDecimals,
+    kNotPositive,
+    kCodeNotInteger,
+    kUnknownGCode,
+    kUnknownMCode,
+    kBadSequenceNumber,
+    kBadToolWord,
+    kBadToolWordFanuc,
+    kNotWholeNumber,
+    kBlockTooLong,
+    kTooManyDiagnostics,
+    kLetterNotAllowed,
+    kLetterTwice,
+    kMustStandAlone,
+    kConflictingMCodes,
+    kSameModalGroup,
+    kOneShotWithMotion,
+    kFeedModeNotAlone,
+    kMisplacedO,
+    kNNotFirst,
+    kAbsoluteAndIncremental,
+    kDwellWithoutTime,
+    kArcWithoutEndPoint,
+    kArcRadiusAndCentre,
+    kCompStartOnArc,
+    kCompEndOnArc,
+    kToolWithoutBitmap,
+    kNegativeDwell,
+    kDwellTwice,
+    kDwellWithAxis,
+    kG28WithoutAxes,
+    kMachineSpecificM,
+    kG28NoMotion,
+};
+
 // Beyond these, a hostile input only repeats itself; the report ends with
 // E109 / E199 instead of growing without bound.
 inline constexpr std::size_t kMaxLexicalDiagnostics = 2000;
 inline constexpr std::size_t kMaxDiagnostics = 10000;
+// A real block has a handful of words; past this the line is junk and the
+// rest of it is not read (bounds memory on a 10 MB single line).
+inline constexpr std::size_t kMaxWordsPerBlock = 1000;
 
 }  // namespace klueng::core::gcode::codes

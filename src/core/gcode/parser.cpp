@@ -3,7 +3,10 @@
 // before a word still gives the word's true column.
 #include "klueng/core/gcode/parser.h"
 
+#include <algorithm>
 #include <charconv>
+#include <cstdint>
+#include <iterator>
 #include <string>
 
 #include "diagnostic_codes.h"
@@ -32,6 +35,24 @@ std::size_t utf8SequenceLength(std::string_view s, std::size_t i) {
   return n;
 }
 
+// Value of "digits[.digits]" (no sign). Short numbers take the exact fast
+// path: an integer mantissa below 2^53 divided by an exact power of ten is
+// correctly rounded, i.e. the same double strtod gives.
+double parseUnsigned(std::string_view digits, std::size_t digitCount, std::size_t fracDigits) {
+  static constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8,
+                                      1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+  if (digitCount <= 15) {
+    std::uint64_t mantissa = 0;
+    for (char c : digits)
+      if (c != '.') mantissa = mantissa * 10 + static_cast<std::uint64_t>(c - '0');
+    return static_cast<double>(mantissa) / kPow10[fracDigits];
+  }
+  double v = 0.0;
+  const auto result = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+  if (result.ec == std::errc::result_out_of_range) v = 1e308;  // reported as out of range by the checker
+  return v;
+}
+
 class LineParser {
  public:
   LineParser(Program& program, std::size_t& diagnosticBudget)
@@ -42,6 +63,7 @@ class LineParser {
     lineNumber_ = lineNumber;
     Block block;
     block.line = lineNumber;
+    words_.clear();
     bool sawWordOrSkip = false;  // '/' is block skip only before the first word
     bool tapeLine = false;
 
@@ -74,7 +96,11 @@ class LineParser {
         appendComment(block, line.substr(i + 1));
         i = line.size();
       } else if (isLetter(c)) {
-        col = lexWord(block, i, col);
+        if (words_.size() == codes::kMaxWordsPerBlock) {
+          report(codes::kBlockTooLong, col, 0, {std::to_string(codes::kMaxWordsPerBlock)});
+          break;
+        }
+        col = lexWord(i, col);
         sawWordOrSkip = true;
       } else if (isNumberChar(c)) {
         // A number with no address letter before it.
@@ -117,13 +143,14 @@ class LineParser {
         report(code, startCol, col - startCol, {std::string(run.substr(0, first))});
       }
     }
-    if (block.words.empty()) return;
+    if (words_.empty()) return;
     if (tapeLine) {
       // Words after '%' are reported, not run: the line is a tape mark.
-      const SourceRange& r = block.words.front().range;
-      report(codes::kTextAfterTapeMark, r.column, r.length, {block.words.front().letter + block.words.front().number});
+      const Word& w = words_.front();
+      report(codes::kTextAfterTapeMark, w.range.column, w.range.length, {w.letter + w.number});
       return;
     }
+    block.words.assign(std::make_move_iterator(words_.begin()), std::make_move_iterator(words_.end()));
     program_.blocks.push_back(std::move(block));
   }
 
@@ -132,8 +159,13 @@ class LineParser {
   std::size_t& budget_;
   std::string_view line_;
   int lineNumber_ = 0;
+  // Words of the current line; reused so each block gets one exact allocation.
+  std::vector<Word> words_;
 
   static void appendComment(Block& block, std::string_view text) {
+    while (!text.empty() && isBlank(static_cast<unsigned char>(text.front()))) text.remove_prefix(1);
+    while (!text.empty() && isBlank(static_cast<unsigned char>(text.back()))) text.remove_suffix(1);
+    if (text.empty()) return;
     if (!block.comment.empty()) block.comment += ' ';
     block.comment.append(text);
   }
@@ -150,7 +182,7 @@ class LineParser {
   }
 
   // Reads letter + number at line_[i]; returns the column after the word.
-  int lexWord(Block& block, std::size_t& i, int col) {
+  int lexWord(std::size_t& i, int col) {
     const char letter = static_cast<char>(line_[i] & ~0x20);  // upper case
     const std::size_t start = i;
     ++i;
@@ -189,12 +221,9 @@ class LineParser {
     w.hasDecimalPoint = point;
     w.decimals = static_cast<int>(fracDigits);
     w.range = SourceRange{lineNumber_, col, length};
-    const std::size_t unsignedStart = intStart;
-    double v = 0.0;
-    const auto result = std::from_chars(number.data() + unsignedStart, number.data() + number.size(), v);
-    if (result.ec == std::errc::result_out_of_range) v = 1e308;  // reported as out of range by the checker
+    const double v = parseUnsigned(number.substr(intStart), intDigits + fracDigits, fracDigits);
     w.value = number[0] == '-' ? -v : v;
-    block.words.push_back(std::move(w));
+    words_.push_back(std::move(w));
     return col + length;
   }
 };
@@ -207,6 +236,10 @@ Program parse(std::string_view text, int firstLine) {
   std::size_t budget = codes::kMaxLexicalDiagnostics;
   LineParser parser(program, budget);
 
+  // One reservation instead of repeated regrowth; a block needs at least a
+  // few bytes, which bounds the guess for files of blank lines.
+  const auto lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
+  program.blocks.reserve(std::min(lines, text.size() / 4 + 1));
   std::size_t pos = 0;
   int lineNumber = firstLine;
   while (pos < text.size()) {
