@@ -1,0 +1,137 @@
+// Run-time alarms (SPEC 8): code, line and column of the offending word; the
+// run stops there and the timeline up to it stays usable.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "klueng/core/messages.h"
+#include "test_support.h"
+
+namespace klueng::core::machine {
+namespace {
+
+using testing::runText;
+
+struct AlarmCase {
+  const char* name;
+  const char* program;
+  gcode::Dialect dialect;
+  const char* code;
+  int line;
+  int column;
+  int snapshotsBefore;  // blocks executed before the alarm
+};
+
+void PrintTo(const AlarmCase& c, std::ostream* os) { *os << c.name; }
+
+class AlarmTest : public ::testing::TestWithParam<AlarmCase> {};
+
+TEST_P(AlarmTest, StopsOnTheOffendingWord) {
+  const AlarmCase& c = GetParam();
+  RunOptions options;
+  options.dialect = c.dialect;
+  const Timeline t = runText(c.program, options);
+  ASSERT_TRUE(t.alarm.has_value()) << "no alarm";
+  EXPECT_EQ(t.alarm->code, c.code);
+  EXPECT_EQ(t.alarm->severity, Severity::Alarm);
+  EXPECT_EQ(t.alarm->range.line, c.line);
+  EXPECT_EQ(t.alarm->range.column, c.column);
+  EXPECT_EQ(static_cast<int>(t.snapshots.size()), c.snapshotsBefore);
+  // Both languages have a real text with every placeholder filled.
+  const std::string en = formatMessage(*t.alarm, Lang::En);
+  const std::string th = formatMessage(*t.alarm, Lang::Th);
+  EXPECT_EQ(en.find('?'), std::string::npos) << en;
+  EXPECT_EQ(en.find('{'), std::string::npos) << en;
+  EXPECT_NE(en, th);
+  EXPECT_NE(en, c.code);
+  // No move of the offending block is in the timeline (G27 moves, then checks).
+  if (std::string(c.code) != "A115") {
+    for (const Move& m : t.moves) EXPECT_NE(m.line, c.line);
+  }
+}
+
+constexpr auto F = gcode::Dialect::Fanuc;
+constexpr auto C = gcode::Dialect::Classic;
+
+INSTANTIATE_TEST_SUITE_P(
+    Spec8, AlarmTest,
+    ::testing::Values(
+        AlarmCase{"SpeedAboveMaximum", "G97 S3500 M03\n", F, "A101", 1, 5, 0},
+        AlarmCase{"SpeedAboveMaximumLater", "G00 X20.\nS3001\n", F, "A101", 2, 1, 1},
+        AlarmCase{"NoFeedG01", "G98\nG01 X10. Z10.\n", F, "A102", 2, 1, 1},
+        AlarmCase{"NoFeedModalArc", "G98\nG02 X10. Z290. R20.\n", F, "A102", 2, 1, 1},
+        AlarmCase{"NoFeedG32", "G97 S100 M03\nG32 Z10.\n", F, "A102", 2, 1, 1},
+        AlarmCase{"G99WithoutS", "M03\nG01 X10. F0.2\n", F, "A103", 2, 1, 1},
+        AlarmCase{"G99SpindleStopped", "G98 G01 X20. Z10. F100\nG99\n  X18.\n", F, "A104", 3, 3, 2},
+        AlarmCase{"G04UnderG99SpindleStopped", "G04 X1.\n", F, "A104", 1, 1, 0},
+        AlarmCase{"ReversalWithoutM05", "S500 M03\nM04\n", F, "A105", 2, 1, 1},
+        AlarmCase{"StartWithBrakeOn", "M86\nS100 M03\n", F, "A106", 2, 6, 1},
+        AlarmCase{"BrakeWhileTurning", "S100 M03\nM86\n", F, "A107", 2, 1, 1},
+        AlarmCase{"ThreadUnderG96", "G96 S100 M03\nG32 Z-10. F1.\n", F, "A108", 2, 1, 1},
+        AlarmCase{"COutsideCAxisMode", "G00 C90.\n", C, "A109", 1, 5, 0},
+        AlarmCase{"HOutsideCAxisMode", "M86\nH10.\n", C, "A109", 2, 1, 1},
+        AlarmCase{"CAxisWithoutBrake", "M41\n", C, "A110", 1, 1, 0},
+        AlarmCase{"BrakeReleaseInCAxisMode", "M86\nM41\nM87\n", C, "A111", 3, 1, 2},
+        AlarmCase{"TravelLimitZ", "G00 Z1200.\n", F, "A112", 1, 1, 0},
+        AlarmCase{"TravelLimitArc", "G98 G00 X900. Z0.\nG03 X900. Z-200. R100. F100\n", F, "A112", 2, 1, 1},
+        AlarmCase{"ArcNotOnOneCircle", "G98 G00 X20. Z0.\nG02 X30. Z-5. I5. K1. F100\n", F, "A113", 2, 15, 1},
+        AlarmCase{"ArcRadiusTooSmall", "G98 G00 X20. Z0.\nG02 X30. Z-5. R3. F100\n", F, "A114", 2, 15, 1},
+        AlarmCase{"G27NotAtReference", "G27 X10. Z20.\n", F, "A115", 1, 1, 0},
+        AlarmCase{"ThreadSpindleStopped", "G97 S500\nG32 Z-10. F1.\n", F, "A116", 2, 1, 1},
+        AlarmCase{"CannedCycleNotSupported", "G90 X20. Z-10. F0.2\n", F, "A117", 1, 1, 0},
+        AlarmCase{"OffsetDoesNotExist", "G00 X10.\nT0117\n", F, "A118", 2, 1, 1},
+        AlarmCase{"ThreadWithoutS", "M03\nG32 Z-10. F1.\n", F, "A119", 2, 1, 1}),
+    [](const ::testing::TestParamInfo<AlarmCase>& i) { return std::string(i.param.name); });
+
+TEST(Alarm, SampleFiveStopsOnN40) {
+  // 05-runtime-alarms.txt body, line 12 = N40 (after six header lines and O0005).
+  const Timeline t = runText(
+      "\n\n\n\n\n\n"
+      "O0005\n"
+      "N10 G21 G97\n"
+      "N15 G99\n"
+      "N20 T0101\n"
+      "N30 G00 X45. Z2.\n"
+      "N40 G01 X38. Z-10. F0.2 (alarm: cutting while the spindle is stopped)\n"
+      "N50 M30\n");
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->code, "A104");
+  EXPECT_EQ(t.alarm->range.line, 12);
+  EXPECT_EQ(t.alarm->range.column, 5);
+  // The timeline up to it stays usable: the rapid of N30 is there.
+  ASSERT_EQ(t.moves.size(), 2u);
+  EXPECT_EQ(t.moves.back().line, 11);
+  EXPECT_EQ(t.snapshots.back().line, 11);
+  EXPECT_DOUBLE_EQ(t.cycleTime(), t.moves.back().tEnd);
+}
+
+TEST(Alarm, TheTimelineBeforeTheAlarmIsKept) {
+  const Timeline t = runText("G98\nG01 X20. Z290. F100\nG01 X30.\nS100 M03\nM04\nG00 X0.\n");
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->code, "A105");
+  EXPECT_EQ(t.snapshots.size(), 4u);
+  EXPECT_EQ(t.moves.size(), 2u);
+  EXPECT_POINT(t.positionAt(1e9), 30.0, 290.0);
+}
+
+TEST(Alarm, NoseCompInterferenceComesFromTheKernel) {
+  // A concave R0.3 fillet is smaller than the nose radius R0.8 of offset 01.
+  const Timeline t = runText(
+      "G98 T0101\n"
+      "G42 G00 X20. Z2.\n"
+      "G01 Z-10. F100\n"
+      "G02 X20.6 Z-10.3 R0.3\n"
+      "G01 X30.\n"
+      "G40 G00 X50. Z10.\n");
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->code, "A201");
+  EXPECT_EQ(t.alarm->range.line, 4);
+  EXPECT_EQ(t.alarm->range.column, 1);
+  // The moves before the arc are there; nothing of the arc's block or later.
+  ASSERT_FALSE(t.moves.empty());
+  for (const Move& m : t.moves) EXPECT_LT(m.line, 4);
+  for (const auto& s : t.snapshots) EXPECT_LT(s.line, 4);
+}
+
+}  // namespace
+}  // namespace klueng::core::machine
