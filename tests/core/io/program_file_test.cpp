@@ -1,0 +1,335 @@
+#include "klueng/core/io/program_file.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "klueng/core/messages.h"
+#include "test_util.h"
+
+namespace klueng::core::io {
+namespace {
+
+using testing::TempDir;
+
+const Diagnostic* findCode(const std::vector<Diagnostic>& diags, const std::string& code) {
+  for (const Diagnostic& d : diags)
+    if (d.code == code) return &d;
+  return nullptr;
+}
+
+std::string codes(const std::vector<Diagnostic>& diags) {
+  std::string s;
+  for (const Diagnostic& d : diags) s += d.code + "@" + std::to_string(d.range.line) + ":" +
+                                         std::to_string(d.range.column) + " ";
+  return s;
+}
+
+const std::string kHeader = "Step shaft\nShaft SS-01\nAluminium\n150\n1100\nSomchai\n";
+
+TEST(ProgramFile, ReadsTheSixLineHeaderOfSample01) {
+  const auto r = readProgramFile(std::string(KLUENG_SAMPLES_DIR) + "/01-step-shaft.txt");
+  ASSERT_TRUE(r.ok()) << codes(r.diagnostics);
+  const ProgramFile& f = *r.value;
+  EXPECT_FALSE(f.plainGcode);
+  EXPECT_EQ(f.header.project, "Step shaft exercise");
+  EXPECT_EQ(f.header.part, "Shaft SS-01");
+  EXPECT_EQ(f.header.material, "Aluminium 6061");
+  EXPECT_DOUBLE_EQ(f.header.diameter, 50.0);
+  EXPECT_EQ(f.header.diameterUnit, LengthUnit::Millimetre);
+  EXPECT_DOUBLE_EQ(f.header.length, 100.0);
+  EXPECT_EQ(f.header.programmer, "Klueng samples");
+  EXPECT_EQ(f.gcodeFirstLine, 7);
+  EXPECT_EQ(f.gcode.substr(0, 16), "O0001\nN10 G21 G4");
+  EXPECT_EQ(f.encoding, SourceEncoding::Utf8);
+}
+
+TEST(ProgramFile, HeaderStartingWithGOrMWordsIsStillAHeader) {
+  // Sample 04's project name starts with G, its material with M.
+  const auto r = readProgramFile(std::string(KLUENG_SAMPLES_DIR) + "/04-grammar-errors.txt");
+  ASSERT_TRUE(r.ok()) << codes(r.diagnostics);
+  EXPECT_FALSE(r.value->plainGcode);
+  EXPECT_EQ(r.value->header.project, "Grammar checker demonstration");
+  EXPECT_DOUBLE_EQ(r.value->header.diameter, 40.0);
+  EXPECT_DOUBLE_EQ(r.value->header.length, 80.0);
+}
+
+TEST(ProgramFile, InchUnitDigit) {
+  const auto r = parseProgramFile("P\nQ\nSteel\n02.5\n04\nMe\nG20\n");
+  ASSERT_TRUE(r.ok()) << codes(r.diagnostics);
+  EXPECT_DOUBLE_EQ(r.value->header.diameter, 2.5);
+  EXPECT_EQ(r.value->header.diameterUnit, LengthUnit::Inch);
+  EXPECT_DOUBLE_EQ(r.value->header.diameterMm(), 63.5);
+  EXPECT_DOUBLE_EQ(r.value->header.lengthMm(), 101.6);
+  EXPECT_EQ(r.value->gcode, "G20\n");
+}
+
+class PlainGcodeFirstLine : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(PlainGcodeFirstLine, IsReadAsPlainGcodeWithDefaults) {
+  JobHeader defaults;
+  defaults.project = "Last job";
+  defaults.diameter = 32.0;
+  const std::string text = std::string(GetParam()) + "\nG00 X10.\n";
+  const auto r = parseProgramFile(text, defaults, "plain.nc");
+  ASSERT_TRUE(r.ok()) << codes(r.diagnostics);
+  EXPECT_TRUE(r.value->plainGcode);
+  EXPECT_EQ(r.value->gcodeFirstLine, 1);
+  EXPECT_EQ(r.value->gcode, text);
+  EXPECT_EQ(r.value->header.project, "Last job");
+  EXPECT_DOUBLE_EQ(r.value->header.diameter, 32.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Starts, PlainGcodeFirstLine,
+                         ::testing::Values("%", "O0001", "N10 G21", "G21 G99", "g01 x20", "M03 S500",
+                                           "T0101", "(turning)", "; comment", "  N5", "G.5"));
+
+class HeaderFirstLine : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(HeaderFirstLine, IsReadAsAHeader) {
+  const std::string text = std::string(GetParam()) + "\nPart\nSteel\n150\n1100\nMe\nG00 X10.\n";
+  const auto r = parseProgramFile(text);
+  ASSERT_TRUE(r.ok()) << codes(r.diagnostics);
+  EXPECT_FALSE(r.value->plainGcode);
+  EXPECT_EQ(r.value->gcode, "G00 X10.\n");
+}
+
+INSTANTIATE_TEST_SUITE_P(Starts, HeaderFirstLine,
+                         ::testing::Values("Gear shaft", "Mild steel", "Turning job", "Nut", "O-ring groove",
+                                           "", "งานกลึง", "Shaft"));
+
+TEST(ProgramFile, BadUnitDigitNamesLineAndColumn) {
+  const auto r = parseProgramFile("P\nQ\nSteel\n  250\n1100\nMe\n", {}, "job.txt");
+  ASSERT_TRUE(r.value);
+  ASSERT_EQ(r.diagnostics.size(), 1u) << codes(r.diagnostics);
+  const Diagnostic& d = r.diagnostics[0];
+  EXPECT_EQ(d.code, "F111");
+  EXPECT_EQ(d.severity, Severity::Error);
+  EXPECT_EQ(d.range, (SourceRange{4, 3, 1}));
+  EXPECT_EQ(d.args, (std::vector<std::string>{"job.txt", "2"}));
+  EXPECT_EQ(formatMessage(d, Lang::En),
+            "stock diameter: the unit digit must be 0 (inch) or 1 (mm), not '2'");
+  EXPECT_DOUBLE_EQ(r.value->header.diameter, JobHeader{}.diameter);  // default kept
+}
+
+TEST(ProgramFile, ThaiUnitDigitIsQuotedWhole) {
+  const auto r = parseProgramFile("P\nQ\nSteel\n150\nกขค\nMe\n");
+  const Diagnostic* d = findCode(r.diagnostics, "F113");
+  ASSERT_NE(d, nullptr) << codes(r.diagnostics);
+  EXPECT_EQ(d->range, (SourceRange{5, 1, 1}));
+  EXPECT_EQ(d->args.at(1), "ก");
+}
+
+TEST(ProgramFile, NonNumberAfterTheUnitDigit) {
+  const auto r = parseProgramFile("P\nQ\nSteel\n15O\n1abc\nMe\n", {}, "j");
+  ASSERT_EQ(r.diagnostics.size(), 2u) << codes(r.diagnostics);
+  EXPECT_EQ(r.diagnostics[0].code, "F112");
+  EXPECT_EQ(r.diagnostics[0].range, (SourceRange{4, 2, 2}));
+  EXPECT_EQ(r.diagnostics[0].args.at(1), "5O");
+  EXPECT_EQ(r.diagnostics[1].code, "F114");
+  EXPECT_EQ(r.diagnostics[1].range, (SourceRange{5, 2, 3}));
+  EXPECT_FALSE(r.ok());
+}
+
+TEST(ProgramFile, EmptySizeLines) {
+  const auto r = parseProgramFile("P\nQ\nSteel\n\n   \nMe\n");
+  ASSERT_EQ(r.diagnostics.size(), 2u) << codes(r.diagnostics);
+  EXPECT_EQ(r.diagnostics[0].code, "F115");
+  EXPECT_EQ(r.diagnostics[0].range.line, 4);
+  EXPECT_EQ(r.diagnostics[1].code, "F116");
+  EXPECT_EQ(r.diagnostics[1].range.line, 5);
+}
+
+TEST(ProgramFile, StockSizeMustBePositiveRule13) {
+  const auto r = parseProgramFile("P\nQ\nSteel\n1-50\n10\nMe\nG00 X10.\n", {}, "neg.txt");
+  ASSERT_EQ(r.diagnostics.size(), 2u) << codes(r.diagnostics);
+  EXPECT_EQ(r.diagnostics[0].code, "E213");
+  EXPECT_EQ(r.diagnostics[0].range, (SourceRange{4, 1, 4}));
+  EXPECT_EQ(r.diagnostics[0].args, (std::vector<std::string>{"neg.txt", "1-50"}));
+  EXPECT_EQ(r.diagnostics[1].code, "E213");
+  EXPECT_EQ(r.diagnostics[1].range.line, 5);
+  EXPECT_NE(formatMessage(r.diagnostics[0], Lang::Th).find("มากกว่า 0"), std::string::npos);
+  EXPECT_FALSE(r.ok());
+  ASSERT_TRUE(r.value);  // the G-code is still there to check
+  EXPECT_EQ(r.value->gcode, "G00 X10.\n");
+}
+
+TEST(ProgramFile, MissingHeaderLines) {
+  const auto r = parseProgramFile("Project\nPart\nSteel", {}, "short.txt");
+  ASSERT_EQ(r.diagnostics.size(), 1u) << codes(r.diagnostics);
+  EXPECT_EQ(r.diagnostics[0].code, "F110");
+  EXPECT_EQ(r.diagnostics[0].range.line, 3);
+  EXPECT_EQ(r.diagnostics[0].range.column, 6);  // just after "Steel"
+  EXPECT_EQ(r.diagnostics[0].args, (std::vector<std::string>{"short.txt", "3"}));
+}
+
+TEST(ProgramFile, SixHeaderLinesAndNoCodeIsAnEmptyProgram) {
+  const auto r = parseProgramFile("P\nQ\nSteel\n150\n1100\nMe");
+  ASSERT_TRUE(r.ok()) << codes(r.diagnostics);
+  EXPECT_EQ(r.value->gcode, "");
+  EXPECT_EQ(r.value->header.programmer, "Me");
+}
+
+TEST(ProgramFile, BinaryContentIsRefusedWithThePositionOfTheNul) {
+  const std::string bytes = std::string("P\nQ\nab") + '\0' + "cd\n";
+  const auto r = parseProgramFile(bytes, {}, "bin.dat");
+  EXPECT_FALSE(r.value);
+  ASSERT_EQ(r.diagnostics.size(), 1u);
+  EXPECT_EQ(r.diagnostics[0].code, "F104");
+  EXPECT_EQ(r.diagnostics[0].range.line, 3);
+  EXPECT_EQ(r.diagnostics[0].range.column, 3);
+  EXPECT_EQ(formatMessage(r.diagnostics[0], Lang::En),
+            "bin.dat: this is a binary file (it contains a NUL byte), not text");
+}
+
+TEST(ProgramFile, EmptyFile) {
+  for (const char* text : {"", "\xEF\xBB\xBF"}) {
+    const auto r = parseProgramFile(text, {}, "empty.txt");
+    ASSERT_EQ(r.diagnostics.size(), 1u);
+    EXPECT_EQ(r.diagnostics[0].code, "F105");
+    EXPECT_FALSE(r.ok());
+  }
+}
+
+TEST(ProgramFile, OverSixtyFourMegabytesIsRefused) {
+  const std::string big(64u * 1024u * 1024u + 1u, 'G');
+  const auto r = parseProgramFile(big, {}, "big.nc");
+  EXPECT_FALSE(r.value);
+  ASSERT_EQ(r.diagnostics.size(), 1u);
+  EXPECT_EQ(r.diagnostics[0].code, "F103");
+  EXPECT_EQ(r.diagnostics[0].args.at(1), std::to_string(big.size()));
+}
+
+TEST(ProgramFile, OverlongLineIsReportedAndReadAsEmpty) {
+  const std::string longLine = "G01" + std::string(5000, 'X');
+  const auto r = parseProgramFile("O0001\n" + longLine + "\nG00 X1.\n", {}, "long.nc");
+  ASSERT_EQ(r.diagnostics.size(), 1u) << codes(r.diagnostics);
+  EXPECT_EQ(r.diagnostics[0].code, "F106");
+  EXPECT_EQ(r.diagnostics[0].range.line, 2);
+  EXPECT_EQ(r.diagnostics[0].args, (std::vector<std::string>{"long.nc", "5003", "4096"}));
+  EXPECT_EQ(r.value->gcode, "O0001\n\nG00 X1.\n");  // line 3 stays line 3
+}
+
+TEST(ProgramFile, ThaiCommentOfFourThousandCharactersIsNotTooLong) {
+  std::string comment;
+  for (int i = 0; i < 4000; ++i) comment += "ก";  // 12000 bytes, 4000 characters
+  const auto r = parseProgramFile("O0001 (" + comment + ")\n");
+  EXPECT_TRUE(r.ok()) << codes(r.diagnostics);
+}
+
+TEST(ProgramFile, NormalisesCrLfAndCrLineEnds) {
+  const auto crlf = parseProgramFile("P\r\nQ\r\nSteel\r\n150\r\n1100\r\nMe\r\nN10 G00\r\nN20 M30\r\n");
+  ASSERT_TRUE(crlf.ok());
+  EXPECT_EQ(crlf.value->gcode, "N10 G00\nN20 M30\n");
+  EXPECT_EQ(crlf.value->header.programmer, "Me");
+  const auto cr = parseProgramFile("P\rQ\rSteel\r150\r1100\rMe\rN10 G00\rN20 M30");
+  ASSERT_TRUE(cr.ok());
+  EXPECT_EQ(cr.value->gcode, "N10 G00\nN20 M30");
+  EXPECT_DOUBLE_EQ(cr.value->header.length, 100.0);
+}
+
+TEST(ProgramFile, ReadsTis620AndUtf8Bom) {
+  // "งาน" (A7 D2 B9) as project, "เหล็ก" (E0 CB C5 E7 A1) as material, in TIS-620.
+  const auto r = parseProgramFile("\xA7\xD2\xB9\nPart\n\xE0\xCB\xC5\xE7\xA1\n150\n1100\nMe\nG00 (\xA1)\n");
+  ASSERT_TRUE(r.ok()) << codes(r.diagnostics);
+  EXPECT_EQ(r.value->encoding, SourceEncoding::Tis620);
+  EXPECT_EQ(r.value->header.project, "งาน");
+  EXPECT_EQ(r.value->header.material, "เหล็ก");
+  EXPECT_EQ(r.value->gcode, "G00 (ก)\n");
+  const auto bom = parseProgramFile("\xEF\xBB\xBFO0001\nG00\n");
+  ASSERT_TRUE(bom.ok());
+  EXPECT_TRUE(bom.value->plainGcode);
+  EXPECT_EQ(bom.value->gcode, "O0001\nG00\n");
+}
+
+TEST(ProgramFile, ColumnsCountThaiCharactersNotBytes) {
+  const auto r = parseProgramFile("P\nQ\nS\n1ห้า\n1100\nMe\n");
+  ASSERT_EQ(r.diagnostics.size(), 1u);
+  EXPECT_EQ(r.diagnostics[0].code, "F112");
+  EXPECT_EQ(r.diagnostics[0].range, (SourceRange{4, 2, 3}));
+}
+
+TEST(ProgramFile, FormatRoundTripsAHeaderFile) {
+  ProgramFile f;
+  f.header.project = "งานกลึง";
+  f.header.part = "Shaft";
+  f.header.material = "S45C";
+  f.header.diameter = 2.5;
+  f.header.diameterUnit = LengthUnit::Inch;
+  f.header.length = 0.1 + 0.2;  // needs all 17 digits
+  f.header.programmer = "สมชาย";
+  f.gcode = "O0001\nG00 X10.\n";
+  const std::string text = formatProgramFile(f);
+  EXPECT_EQ(text.substr(0, text.find("0.3")), "งานกลึง\nShaft\nS45C\n02.5\n1");
+  const auto r = parseProgramFile(text);
+  ASSERT_TRUE(r.ok()) << codes(r.diagnostics);
+  EXPECT_EQ(r.value->header.project, f.header.project);
+  EXPECT_EQ(r.value->header.diameterUnit, LengthUnit::Inch);
+  EXPECT_DOUBLE_EQ(r.value->header.diameter, 2.5);
+  EXPECT_EQ(r.value->header.length, f.header.length);
+  EXPECT_EQ(r.value->header.programmer, "สมชาย");
+  EXPECT_EQ(r.value->gcode, f.gcode);
+  EXPECT_EQ(formatProgramFile(*r.value), text);
+}
+
+TEST(ProgramFile, FormatKeepsAPlainFilePlain) {
+  const std::string text = "%\nO0001\nG00 X10.\n%\n";
+  const auto r = parseProgramFile(text);
+  ASSERT_TRUE(r.ok());
+  EXPECT_EQ(formatProgramFile(*r.value), text);
+}
+
+TEST(ProgramFile, FormatFlattensLineBreaksInHeaderFields) {
+  ProgramFile f;
+  f.header.project = "two\nlines";
+  const auto r = parseProgramFile(formatProgramFile(f));
+  ASSERT_TRUE(r.ok()) << codes(r.diagnostics);
+  EXPECT_EQ(r.value->header.project, "two lines");
+  EXPECT_DOUBLE_EQ(r.value->header.diameter, 50.0);
+}
+
+TEST(ProgramFile, SamplesRoundTripByteForByte) {
+  for (const char* name : {"01-step-shaft.txt", "02-thread.txt", "04-grammar-errors.txt", "05-runtime-alarms.txt"}) {
+    const std::string path = std::string(KLUENG_SAMPLES_DIR) + "/" + name;
+    const auto r = readProgramFile(path);
+    ASSERT_TRUE(r.ok()) << name << " " << codes(r.diagnostics);
+    EXPECT_EQ(formatProgramFile(*r.value), testing::readFile(path)) << name;
+  }
+}
+
+TEST(ProgramFile, ReadReportsMissingFilesAndFolders) {
+  TempDir dir;
+  const auto missing = readProgramFile(dir.file("nope.txt"));
+  EXPECT_FALSE(missing.value);
+  ASSERT_EQ(missing.diagnostics.size(), 1u);
+  EXPECT_EQ(missing.diagnostics[0].code, "F101");
+  EXPECT_EQ(missing.diagnostics[0].args.at(0), dir.file("nope.txt"));
+  const auto folder = readProgramFile(dir.path().string());
+  ASSERT_EQ(folder.diagnostics.size(), 1u);
+  EXPECT_EQ(folder.diagnostics[0].code, "F102");
+}
+
+TEST(ProgramFile, AtomicWriteCreatesAndReplaces) {
+  TempDir dir;
+  const std::string path = dir.file("job.txt");
+  std::string error;
+  ASSERT_TRUE(writeTextFileAtomic(path, "first\n", &error)) << error;
+  EXPECT_EQ(testing::readFile(path), "first\n");
+  ASSERT_TRUE(writeTextFileAtomic(path, "second ไทย\n", &error)) << error;
+  EXPECT_EQ(testing::readFile(path), "second ไทย\n");
+  // No temporary file is left behind.
+  int files = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir.path())) ++files;
+  EXPECT_EQ(files, 1);
+}
+
+TEST(ProgramFile, AtomicWriteFailsCleanlyInAMissingFolder) {
+  TempDir dir;
+  std::string error;
+  EXPECT_FALSE(writeTextFileAtomic(dir.file("no/such/folder/job.txt"), "x", &error));
+  EXPECT_NE(error.find("job.txt"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace klueng::core::io
