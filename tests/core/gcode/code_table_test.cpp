@@ -1,0 +1,107 @@
+// The code table (SPEC 4, 6, 7, 13) and the message catalog of the gcode module.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <iterator>
+#include <set>
+#include <string>
+
+#include "../../../src/core/gcode/diagnostic_codes.h"
+#include "klueng/core/gcode/code_table.h"
+#include "klueng/core/messages.h"
+
+namespace klueng::core::gcode {
+namespace {
+
+bool hasThai(std::string_view s) { return s.find("\xE0\xB8") != std::string_view::npos; }
+
+TEST(CodeTable, ClassicIsExactlyTheSpecList) {
+  const std::set<int> g = {0, 1, 2, 3, 4, 20, 21, 27, 28, 29, 32, 40, 41, 42, 50, 96, 97, 98, 99,
+                           70, 71, 72, 73, 74, 75, 76, 90, 92, 94};
+  const std::set<int> m = {0, 1, 2, 3, 4, 5, 8, 9, 41, 86, 87, 91, 30, 98, 99};
+  for (int n = 0; n < 100; ++n) {
+    EXPECT_EQ(findCode('G', n, Dialect::Classic) != nullptr, g.count(n) == 1) << "G" << n;
+    EXPECT_EQ(findCode('M', n, Dialect::Classic) != nullptr, m.count(n) == 1) << "M" << n;
+  }
+}
+
+TEST(CodeTable, FanucAddsItsCodes) {
+  for (int n : {18, 53, 54, 55, 56, 57, 58, 59, 80}) {
+    EXPECT_NE(findCode('G', n, Dialect::Fanuc), nullptr) << "G" << n;
+    EXPECT_EQ(findCode('G', n, Dialect::Classic), nullptr) << "G" << n;
+  }
+  for (int n = 0; n < 100; ++n) {
+    if (findCode('G', n, Dialect::Classic)) {
+      EXPECT_NE(findCode('G', n, Dialect::Fanuc), nullptr) << "G" << n;
+    }
+  }
+  EXPECT_NE(findCode('M', 42, Dialect::Fanuc), nullptr);
+  EXPECT_EQ(findCode('M', 77, Dialect::Fanuc), nullptr);
+  EXPECT_EQ(findCode('X', 1, Dialect::Fanuc), nullptr);
+  EXPECT_EQ(findCode('G', -1, Dialect::Fanuc), nullptr);
+  EXPECT_EQ(findCode('G', 100, Dialect::Fanuc), nullptr);
+}
+
+TEST(CodeTable, DialectMeanings) {
+  EXPECT_EQ(lookupCode('M', 41, Dialect::Classic)->group, ModalGroup::MCAxis);
+  EXPECT_EQ(lookupCode('M', 41, Dialect::Fanuc)->group, ModalGroup::MGear);
+  EXPECT_TRUE(lookupCode('G', 99, Dialect::Classic)->mustStandAlone);
+  EXPECT_FALSE(lookupCode('G', 99, Dialect::Fanuc)->mustStandAlone);
+  EXPECT_TRUE(lookupCode('M', 30, Dialect::Classic)->mustStandAlone);
+  EXPECT_FALSE(lookupCode('G', 7, Dialect::Fanuc).has_value());
+}
+
+TEST(CodeTable, ModalGroupsOfSection6) {
+  const std::pair<int, ModalGroup> rows[] = {
+      {0, ModalGroup::Motion},      {1, ModalGroup::Motion},      {2, ModalGroup::Motion},
+      {3, ModalGroup::Motion},      {32, ModalGroup::Motion},     {90, ModalGroup::Motion},
+      {4, ModalGroup::NonModal},    {27, ModalGroup::NonModal},   {28, ModalGroup::NonModal},
+      {29, ModalGroup::NonModal},   {50, ModalGroup::NonModal},   {20, ModalGroup::Units},
+      {21, ModalGroup::Units},      {40, ModalGroup::NoseComp},   {41, ModalGroup::NoseComp},
+      {42, ModalGroup::NoseComp},   {96, ModalGroup::SpindleMode}, {97, ModalGroup::SpindleMode},
+      {98, ModalGroup::FeedMode},   {99, ModalGroup::FeedMode}};
+  for (const auto& [n, group] : rows)
+    for (Dialect d : {Dialect::Fanuc, Dialect::Classic}) EXPECT_EQ(findCode('G', n, d)->group, group) << "G" << n;
+}
+
+TEST(CodeTable, InBlockOrderOfSection7) {
+  for (int n : {20, 21, 40, 41, 42, 96, 97, 98, 99}) EXPECT_EQ(findCode('G', n, Dialect::Classic)->phase, Phase::State);
+  for (int n : {3, 4, 8, 41, 86, 87, 91}) EXPECT_EQ(findCode('M', n, Dialect::Classic)->phase, Phase::BeforeMotion);
+  for (int n : {0, 1, 2, 3, 4, 27, 28, 29, 32, 50}) EXPECT_EQ(findCode('G', n, Dialect::Classic)->phase, Phase::Motion);
+  for (int n : {5, 9, 0, 1, 2, 30}) EXPECT_EQ(findCode('M', n, Dialect::Classic)->phase, Phase::AfterMotion);
+}
+
+TEST(CodeTable, EveryRowHasEnglishAndThaiHelp) {
+  for (const CodeInfo& row : codeTable()) {
+    const std::string code = std::string(1, row.letter) + std::to_string(row.number);
+    EXPECT_TRUE(row.fanuc || row.classic) << code;
+    EXPECT_FALSE(row.nameEn.empty()) << code;
+    EXPECT_TRUE(hasThai(row.nameTh)) << code;
+    EXPECT_TRUE(hasThai(row.exampleTh)) << code;
+    // The example starts with the code itself, e.g. "G01 Z-30. F0.2 - ...".
+    char prefix[4];
+    std::snprintf(prefix, sizeof prefix, "%c%02d", row.letter, row.number);
+    EXPECT_EQ(row.exampleEn.substr(0, 3), prefix) << code;
+    EXPECT_EQ(row.exampleTh.substr(0, 3), prefix) << code;
+  }
+}
+
+TEST(Catalog, EveryGcodeDiagnosticHasEnglishAndThai) {
+  for (const char* code : codes::kAll) {
+    const MessageText* m = findMessage(code);
+    ASSERT_NE(m, nullptr) << code;
+    EXPECT_FALSE(m->en.empty()) << code;
+    EXPECT_TRUE(hasThai(m->th)) << code;
+    // Same placeholders in both languages.
+    for (const char* ph : {"{0}", "{1}", "{2}"})
+      EXPECT_EQ(m->en.find(ph) == std::string_view::npos, m->th.find(ph) == std::string_view::npos) << code << ph;
+  }
+  // Rule 13 (stock size) belongs to the file reader's catalog part, not here.
+  EXPECT_EQ(std::count_if(std::begin(codes::kAll), std::end(codes::kAll),
+                          [](const char* c) { return std::string_view(c) == "E213"; }),
+            0);
+}
+
+}  // namespace
+}  // namespace klueng::core::gcode
