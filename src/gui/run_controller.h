@@ -13,6 +13,8 @@
 //   setSpeed(factor)  machine seconds per wall second; kAsFastAsPossible (0) = no animation
 //   go() step() pause() stop() stepBack() runToLine(fileLine)   the Run menu (slots)
 //   state(), currentTime(), currentLine(), status(), timeline(), stockShape()
+//   Breakpoints stop BEFORE the block on that line runs; Go/Step from there runs it.
+//   M00, M01 (switch on) and M02/M30 pause after their block; alarms stop the run.
 // Signals
 //   stateChanged(RunState)                 enable/disable the Run actions
 //   checkFailed(QList<core::Diagnostic>)   the program has errors; the run did not start
@@ -34,6 +36,7 @@
 #include <memory>
 #include <optional>
 
+#include "klueng/core/cut/cut_simulator.h"
 #include "klueng/core/diagnostic.h"
 #include "klueng/core/gcode/code_table.h"
 #include "klueng/core/io/program_file.h"
@@ -43,7 +46,6 @@
 
 namespace klueng::gui {
 
-class CutEngine;  // run_cut_engine.h: the core's cut, wrapped for the controller
 
 enum class RunState {
   Idle,       // nothing run yet, or stopped (reset)
@@ -124,26 +126,38 @@ class RunController : public QObject {
   void programReset();
   void busyChanged(bool busy);
 
+ public:
+  // The machine-time step a slow-motion frame may take so that the tool moves at most
+  // `mm` (one display pixel; the view sets it from its zoom). 0 = no limit.
+  void setMaxStepMm(double mm) { maxStepMm_ = mm; }
+  // The core's cut simulator (nullptr before the first run). Do not use while isBusy().
+  const core::cut::CutSimulator* cutSimulator() const { return cut_.get(); }
+  // Tool shape at the current time, nullptr when no tool / no bitmap.
+  const core::cut::ToolShape* currentToolShape() const;
+
  private:
   enum class Pending { None, Go, Step, RunToLine };
-  struct Prepared;
+  struct Prepared {
+    std::shared_ptr<core::machine::Timeline> timeline;
+    QList<core::Diagnostic> errors;
+  };
 
   void prepareAndThen(Pending what);
   void onPrepared();
-  void startPending();
+  void startPending(Pending what);
+  void startRun(bool stepOnly);
   void tick();
   void advanceTo(double t);
+  void finishStop();
   void setState(RunState s);
   void setBusy(bool b);
   void resetPlayback();
-  void reachStopPoint();
-  double nextStopTime() const;
-  double blockEndTime(int snapshot) const;
-  int snapshotAtTime(double t) const;
+  void invalidate();
+  void updateLine();
   void emitStatus();
-  void runFastTo(double target);
-  void onFastDone();
-  void seekTo(double t);   // step back / reset: rebuild the cut to t
+  void runInBackground(double target);
+  void onBackgroundDone();
+  double limitSlowStep(double from, double dt) const;
 
   core::io::ProgramFile file_;
   QString displayName_;
@@ -151,29 +165,31 @@ class RunController : public QObject {
   core::machine::RunOptions options_;
   QSet<int> breakpoints_;
   double speed_ = 1.0;
+  double maxStepMm_ = 0.0;
   bool stale_ = true;
 
-  std::shared_ptr<const core::machine::Timeline> timeline_;
-  std::unique_ptr<CutEngine> cut_;
+  std::shared_ptr<core::machine::Timeline> timeline_;
+  std::unique_ptr<core::cut::CutSimulator> cut_;
+  mutable render::StockShape stockShape_;
+  mutable double stockShapeVolume_ = -1.0;
   RunState state_ = RunState::Idle;
   bool busy_ = false;
   Pending pending_ = Pending::None;
   int runToLine_ = 0;
   double time_ = 0.0;
-  double stopTime_ = 0.0;       // where the current Go/Step ends (before breakpoints)
-  int snapshotIndex_ = -1;
+  double targetTime_ = 0.0;     // where the current Go/Step pauses
+  int targetSnapshot_ = -1;     // snapshots done when targetTime_ is reached
+  bool targetIsEnd_ = false;
+  int snapshotIndex_ = -1;      // last completed block's snapshot
   int currentLine_ = 0;
-  bool alarmAtEnd_ = false;
-  bool ignoreBreakpointAt_ = false;
-  double resumeFrom_ = -1.0;
   qint64 frames_ = 0;
+  std::optional<core::Diagnostic> reportedAlarm_;
 
   QTimer frameTimer_;
   QElapsedTimer wallClock_;
   qint64 lastTickNs_ = 0;
   QFutureWatcher<std::shared_ptr<Prepared>> prepareWatcher_;
-  QFutureWatcher<void> fastWatcher_;
-  double fastTarget_ = 0.0;
+  QFutureWatcher<void> backgroundWatcher_;
 };
 
 QString runStateName(RunState s);
@@ -182,3 +198,4 @@ QString runStateName(RunState s);
 
 Q_DECLARE_METATYPE(klueng::gui::RunStatus)
 Q_DECLARE_METATYPE(klueng::core::Diagnostic)
+Q_DECLARE_METATYPE(klueng::gui::RunState)

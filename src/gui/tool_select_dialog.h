@@ -14,10 +14,8 @@
 //   previewSprite()        the sprite shown (tests)
 //   loadDiagnostics()      problems found reading the files (shown in the dialog)
 // Helpers shared by the dialogs:
-//   userConfigDir()        ~/.local/share/klueng (QStandardPaths GenericDataLocation)
-//   saveConfigFile(dir, fileName, text, &savedDir, &error)  atomic write through the core;
-//                          falls back to userConfigDir() (copying the other .cfg files and
-//                          the tool bitmaps there) when dir is not writable.
+//   writableConfigDir(dir, &error)   dir when tools.cfg/offset.cfg there can be written,
+//                          else the per-user copy (core::io::ensureUserConfigDir())
 #include <QDialog>
 #include <QList>
 #include <QString>
@@ -36,9 +34,7 @@ class QPlainTextEdit;
 
 namespace klueng::gui {
 
-QString userConfigDir();
-bool saveConfigFile(const QString& dir, const QString& fileName, const QByteArray& text,
-                    QString* savedDir, QString* error);
+QString writableConfigDir(const QString& dir, QString* error);
 
 class ToolPreview;
 

@@ -5,9 +5,10 @@
 // Public API
 //   Scene coordinates are millimetres with Z to the right and X (radius) UP:
 //     render::toScene(Vec2(z, r)) == QPointF(z, -r)   (Qt's y grows downward)
-//   StockShape       material left in the stock: closed (z, radius) polygons
-//                    in the upper half (radius >= 0); drawn mirrored about the
-//                    centre line so the whole section shows.
+//   StockShape       material left in the stock (upper half, scene units): a fill
+//                    path (column runs of the core's dexel Stock) and its exact
+//                    outline; drawn mirrored about the centre line.
+//   stockShapeFromStock(stock)  from core::cut::Stock (what the core has cut)
 //   paintStock()     fills the section (both halves) and the centre line.
 //   paintChuck()     the jaws gripping the stock's left end (machine.cfg's
 //                    chuckGrip / chuckJawHeight), both halves.
@@ -16,11 +17,13 @@
 //   Colours: render::palette() (one place, so screen and print agree).
 #include <QColor>
 #include <QPainter>
+#include <QPainterPath>
 #include <QPointF>
 #include <QPolygonF>
 #include <QRectF>
 #include <vector>
 
+#include "klueng/core/cut/stock.h"
 #include "klueng/core/geometry.h"
 
 namespace klueng::render {
@@ -43,15 +46,19 @@ struct Palette {
 };
 const Palette& palette();
 
-// Material in the upper half plane as closed polygons of (z, radius) points.
+// Material in the upper half plane, in scene units (z, -radius), see toScene.
 struct StockShape {
-  std::vector<QPolygonF> polygons;   // each in scene units (z, -radius), see toScene
-  QRectF blank;                      // the uncut bar's upper half, in scene units
-  bool isEmpty() const { return polygons.empty(); }
+  QPainterPath fill;       // union of rectangles: runs of equal columns x material intervals
+  QPainterPath outline;    // the boundary of `fill` (no seams between runs)
+  QRectF blank;            // the uncut bar's upper half
+  bool isEmpty() const { return fill.isEmpty(); }
   QRectF boundingRect() const;       // both halves
+  // Is the point (z, radius) material?  (Tests compare this with the core's part.)
+  bool containsMaterial(double z, double radius) const;
 };
 
 StockShape stockShapeFromBlank(double diameterMm, double lengthMm);
+StockShape stockShapeFromStock(const core::cut::Stock& stock);
 
 // Fills both halves of the stock section; `cosmetic` pens stay 1 px at any zoom.
 void paintStock(QPainter& painter, const StockShape& stock, bool showBlankOutline = true);

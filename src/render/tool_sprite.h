@@ -3,8 +3,10 @@
 // (SPEC 11), with its controlled point for an imaginary-tip number.
 //
 // Public API
-//   ToolSprite::fromImage(rgb, tip)   from a core io::RgbImage (io::readImage)
-//   ToolSprite::fromFile(path, tip)   reads .bmp/.png through the core; isNull() on failure
+//   ToolSprite::fromShape(shape)      from the core's cut::ToolShape (its bitmap and the
+//                                     core's controlled point) -- what the view draws
+//   ToolSprite::fromImage(rgb, tip)   any bitmap (also one the core refuses as a tool);
+//                                     the controlled point by the same SPEC 11 rule
 //   image()            ARGB32 image, white made transparent
 //   controlledPointPx()  the controlled point in image pixel coordinates (may lie on
 //                      a pixel edge: the corner of the cutting-edge bounding box)
@@ -18,6 +20,7 @@
 #include <QRectF>
 #include <QString>
 
+#include "klueng/core/cut/tool_shape.h"
 #include "klueng/core/io/image.h"
 
 namespace klueng::render {
@@ -28,7 +31,7 @@ class ToolSprite {
 
   ToolSprite() = default;
   static ToolSprite fromImage(const core::io::RgbImage& rgb, int tip);
-  static ToolSprite fromFile(const QString& path, int tip, QString* error = nullptr);
+  static ToolSprite fromShape(const core::cut::ToolShape& shape);
 
   bool isNull() const { return image_.isNull(); }
   const QImage& image() const { return image_; }

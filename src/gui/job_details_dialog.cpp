@@ -1,0 +1,99 @@
+#include "gui/job_details_dialog.h"
+
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QEvent>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QVBoxLayout>
+
+namespace klueng::gui {
+
+namespace io = core::io;
+
+namespace {
+QDoubleSpinBox* makeSize(QWidget* parent, double value) {
+  auto* box = new QDoubleSpinBox(parent);
+  box->setDecimals(3);
+  box->setRange(0.001, 9999.999);   // SPEC 2: diameter and length must be > 0
+  box->setValue(value);
+  return box;
+}
+QComboBox* makeUnit(QWidget* parent, io::LengthUnit unit) {
+  auto* box = new QComboBox(parent);
+  box->addItem(QString(), static_cast<int>(io::LengthUnit::Millimetre));
+  box->addItem(QString(), static_cast<int>(io::LengthUnit::Inch));
+  box->setCurrentIndex(unit == io::LengthUnit::Millimetre ? 0 : 1);
+  return box;
+}
+QWidget* pair(QWidget* parent, QWidget* a, QWidget* b) {
+  auto* w = new QWidget(parent);
+  auto* l = new QHBoxLayout(w);
+  l->setContentsMargins(0, 0, 0, 0);
+  l->addWidget(a, 1);
+  l->addWidget(b);
+  return w;
+}
+}  // namespace
+
+JobDetailsDialog::JobDetailsDialog(const io::JobHeader& h, QWidget* parent) : QDialog(parent) {
+  project_ = new QLineEdit(QString::fromStdString(h.project), this);
+  part_ = new QLineEdit(QString::fromStdString(h.part), this);
+  material_ = new QLineEdit(QString::fromStdString(h.material), this);
+  diameter_ = makeSize(this, h.diameter);
+  diameterUnit_ = makeUnit(this, h.diameterUnit);
+  length_ = makeSize(this, h.length);
+  lengthUnit_ = makeUnit(this, h.lengthUnit);
+  programmer_ = new QLineEdit(QString::fromStdString(h.programmer), this);
+  for (QLineEdit* e : {project_, part_, material_, programmer_}) e->setMinimumWidth(280);
+  form_ = new QFormLayout;
+  form_->addRow(QString(), project_);
+  form_->addRow(QString(), part_);
+  form_->addRow(QString(), material_);
+  form_->addRow(QString(), pair(this, diameter_, diameterUnit_));
+  form_->addRow(QString(), pair(this, length_, lengthUnit_));
+  form_->addRow(QString(), programmer_);
+  buttons_ = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+  auto* layout = new QVBoxLayout(this);
+  layout->addLayout(form_);
+  layout->addWidget(buttons_);
+  connect(buttons_, &QDialogButtonBox::accepted, this, &QDialog::accept);
+  connect(buttons_, &QDialogButtonBox::rejected, this, &QDialog::reject);
+  retranslate();
+}
+
+io::JobHeader JobDetailsDialog::header() const {
+  io::JobHeader h;
+  // A header line holds one line of text: line breaks would shift the G-code.
+  auto line = [](const QLineEdit* e) { return e->text().simplified().toStdString(); };
+  h.project = line(project_);
+  h.part = line(part_);
+  h.material = line(material_);
+  h.programmer = line(programmer_);
+  h.diameter = diameter_->value();
+  h.diameterUnit = static_cast<io::LengthUnit>(diameterUnit_->currentData().toInt());
+  h.length = length_->value();
+  h.lengthUnit = static_cast<io::LengthUnit>(lengthUnit_->currentData().toInt());
+  return h;
+}
+
+void JobDetailsDialog::retranslate() {
+  setWindowTitle(tr("Job Details"));
+  const QString labels[] = {tr("Project:"), tr("Part:"), tr("Material:"), tr("Stock diameter:"), tr("Stock length:"), tr("Programmer:")};
+  for (int i = 0; i < 6; ++i)
+    if (auto* label = qobject_cast<QLabel*>(form_->itemAt(i, QFormLayout::LabelRole)->widget())) label->setText(labels[i]);
+  for (QComboBox* unit : {diameterUnit_, lengthUnit_}) {
+    unit->setItemText(0, tr("mm"));
+    unit->setItemText(1, tr("inch"));
+  }
+}
+
+void JobDetailsDialog::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) retranslate();
+  QDialog::changeEvent(event);
+}
+
+}  // namespace klueng::gui

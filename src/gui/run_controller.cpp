@@ -1,0 +1,500 @@
+#include "gui/run_controller.h"
+
+#include <QtConcurrent/QtConcurrentRun>
+#include <algorithm>
+#include <cmath>
+
+#include "klueng/core/gcode/checker.h"
+#include "klueng/core/gcode/parser.h"
+
+namespace klueng::gui {
+
+namespace machine = core::machine;
+
+namespace {
+constexpr double kEps = 1e-9;
+constexpr int kFrameIntervalMs = 15;
+constexpr double kMaxFrameSeconds = 0.1;   // a stalled frame never jumps further than this
+}  // namespace
+
+QString runStateName(RunState s) {
+  switch (s) {
+    case RunState::Idle: return QStringLiteral("Idle");
+    case RunState::Preparing: return QStringLiteral("Preparing");
+    case RunState::Running: return QStringLiteral("Running");
+    case RunState::Stepping: return QStringLiteral("Stepping");
+    case RunState::Paused: return QStringLiteral("Paused");
+    case RunState::Finished: return QStringLiteral("Finished");
+    case RunState::Alarm: return QStringLiteral("Alarm");
+  }
+  return {};
+}
+
+RunController::RunController(QObject* parent) : QObject(parent) {
+  qRegisterMetaType<klueng::gui::RunStatus>();
+  qRegisterMetaType<klueng::core::Diagnostic>();
+  qRegisterMetaType<klueng::gui::RunState>();
+  frameTimer_.setTimerType(Qt::PreciseTimer);
+  frameTimer_.setInterval(kFrameIntervalMs);
+  connect(&frameTimer_, &QTimer::timeout, this, &RunController::tick);
+  connect(&prepareWatcher_, &QFutureWatcher<std::shared_ptr<Prepared>>::finished, this, &RunController::onPrepared);
+  connect(&backgroundWatcher_, &QFutureWatcher<void>::finished, this, &RunController::onBackgroundDone);
+  wallClock_.start();
+}
+
+RunController::~RunController() { waitForIdle(); }
+
+// ---------------------------------------------------------------- inputs
+
+void RunController::setProgram(const core::io::ProgramFile& file, const QString& displayName) {
+  file_ = file;
+  displayName_ = displayName;
+  invalidate();
+}
+
+void RunController::setMachineSetup(const machine::MachineSetup& setup) {
+  setup_ = setup;
+  invalidate();
+}
+
+void RunController::setDialect(core::gcode::Dialect dialect) {
+  if (options_.dialect == dialect) return;
+  options_.dialect = dialect;
+  invalidate();
+}
+
+void RunController::setOptionalStop(bool on) {
+  if (options_.optionalStop == on) return;
+  options_.optionalStop = on;
+  invalidate();
+  emitStatus();
+}
+
+void RunController::setBlockSkip(bool on) {
+  if (options_.blockSkip == on) return;
+  options_.blockSkip = on;
+  invalidate();
+}
+
+void RunController::setBreakpoints(const QSet<int>& fileLines) { breakpoints_ = fileLines; }
+
+void RunController::setSpeed(double factor) {
+  speed_ = std::max(0.0, factor);
+  // Switching to "as fast as possible" during a run finishes the rest in the background.
+  if (speed_ == kAsFastAsPossible && frameTimer_.isActive()) {
+    frameTimer_.stop();
+    runInBackground(targetTime_);
+  }
+}
+
+// A changed input applies to the next run; a run in progress keeps its timeline.
+void RunController::invalidate() {
+  stale_ = true;
+  if (busy_ || state_ == RunState::Running || state_ == RunState::Stepping || state_ == RunState::Paused) return;
+  frameTimer_.stop();
+  cut_.reset();
+  timeline_.reset();
+  stockShapeVolume_ = -1.0;
+  time_ = 0.0;
+  snapshotIndex_ = -1;
+  currentLine_ = 0;
+  reportedAlarm_.reset();
+  setState(RunState::Idle);
+  emit executingLineChanged(0);
+  emit programReset();
+  emitStatus();
+}
+
+// ---------------------------------------------------------------- queries
+
+const core::cut::ToolShape* RunController::currentToolShape() const {
+  if (!cut_ || busy_) return nullptr;
+  return const_cast<core::cut::CutSimulator*>(cut_.get())->currentTool();
+}
+
+render::StockShape RunController::stockShape() const {
+  if (!cut_) {
+    return render::stockShapeFromBlank(file_.header.diameterMm(), file_.header.lengthMm());
+  }
+  if (busy_) return stockShape_;   // the worker owns the simulator: show the last shape
+  const double volume = cut_->stock().volume();
+  if (volume != stockShapeVolume_) {
+    stockShape_ = render::stockShapeFromStock(cut_->stock());
+    stockShapeVolume_ = volume;
+  }
+  return stockShape_;
+}
+
+RunStatus RunController::status() const {
+  RunStatus s;
+  s.time = time_;
+  s.line = currentLine_;
+  s.machine.optionalStopSwitch = options_.optionalStop;
+  s.position = core::zx(setup_.machine.startZ, setup_.machine.startX / 2.0);
+  if (!timeline_) return s;
+  const auto& snaps = timeline_->snapshots;
+  s.cycleTime = timeline_->cycleTime();
+  if (!timeline_->moves.empty()) s.position = timeline_->positionAt(time_);
+  // Mid-block the executing block's state shows (its M03/T/F act before its motion).
+  int k = snapshotIndex_;
+  const double doneTime = snapshotIndex_ >= 0 ? snaps[static_cast<std::size_t>(snapshotIndex_)].time : 0.0;
+  if (time_ > doneTime + kEps && snapshotIndex_ + 1 < static_cast<int>(snaps.size())) k = snapshotIndex_ + 1;
+  if (k >= 0 && k < static_cast<int>(snaps.size())) {
+    const machine::StateSnapshot& snap = snaps[static_cast<std::size_t>(k)];
+    s.machine = snap.machine;
+    s.programmedFeed = snap.modal.feed;
+    s.feedMode = snap.modal.feedMode;
+    s.rpm = snap.machine.rpm;
+  }
+  s.machine.optionalStopSwitch = options_.optionalStop;
+  const int m = timeline_->moveAt(time_);
+  if (m >= 0 && time_ < timeline_->moves[static_cast<std::size_t>(m)].tEnd - kEps && time_ > doneTime + kEps) {
+    const machine::Move& move = timeline_->moves[static_cast<std::size_t>(m)];
+    const double span = move.tEnd - move.tStart;
+    const double f = span > 0 ? std::clamp((time_ - move.tStart) / span, 0.0, 1.0) : 1.0;
+    s.feedMmPerMin = move.feed;
+    s.rpm = move.rpm + (move.rpmEnd - move.rpm) * f;
+    s.machine.spindle = move.spindle;
+  }
+  if (cut_ && !busy_ && cut_->alarm()) s.position = const_cast<core::cut::CutSimulator*>(cut_.get())->toolPosition();
+  return s;
+}
+
+// ---------------------------------------------------------------- commands
+
+void RunController::go() { prepareAndThen(Pending::Go); }
+
+void RunController::step() { prepareAndThen(Pending::Step); }
+
+void RunController::runToLine(int fileLine) {
+  runToLine_ = fileLine;
+  prepareAndThen(Pending::RunToLine);
+}
+
+void RunController::pause() {
+  if (state_ != RunState::Running && state_ != RunState::Stepping) return;
+  if (busy_) {
+    pending_ = Pending::None;   // the background cut cannot be interrupted; it pauses when done
+    targetIsEnd_ = false;
+    return;
+  }
+  frameTimer_.stop();
+  setState(RunState::Paused);
+  updateLine();
+  emitStatus();
+}
+
+void RunController::stop() {
+  frameTimer_.stop();
+  if (busy_) waitForIdle();
+  pending_ = Pending::None;
+  resetPlayback();
+  setState(RunState::Idle);
+  if (stale_) invalidate();
+}
+
+void RunController::stepBack() {
+  if (busy_ || !timeline_ || !cut_) return;
+  frameTimer_.stop();
+  const auto& snaps = timeline_->snapshots;
+  double doneTime = snapshotIndex_ >= 0 ? snaps[static_cast<std::size_t>(snapshotIndex_)].time : 0.0;
+  int target = snapshotIndex_;
+  // At a block boundary: back over the last block; mid-block: back to the block's start.
+  if (time_ <= doneTime + kEps) target = snapshotIndex_ - 1;
+  if (target < -1) target = -1;
+  const double t = target >= 0 ? snaps[static_cast<std::size_t>(target)].time : 0.0;
+  reportedAlarm_.reset();
+  targetSnapshot_ = target;
+  targetTime_ = t;
+  targetIsEnd_ = false;
+  snapshotIndex_ = target;
+  // Going back re-cuts from the start; a long way runs in the background.
+  const int moves = timeline_->moveAt(t) + 1;
+  cut_->reset();
+  time_ = 0.0;
+  if (moves > 2000) {
+    pending_ = Pending::None;
+    setState(RunState::Paused);
+    runInBackground(t);
+    return;
+  }
+  cut_->advanceTo(t);
+  time_ = t;
+  setState(RunState::Paused);
+  updateLine();
+  emitStatus();
+  emit frameAdvanced();
+}
+
+void RunController::waitForIdle() {
+  if (prepareWatcher_.isRunning()) {
+    prepareWatcher_.waitForFinished();
+    onPrepared();
+  }
+  if (backgroundWatcher_.isRunning()) {
+    backgroundWatcher_.waitForFinished();
+    onBackgroundDone();
+  }
+}
+
+// ---------------------------------------------------------------- preparation
+
+void RunController::prepareAndThen(Pending what) {
+  if (busy_) return;
+  const bool fresh = state_ == RunState::Idle || state_ == RunState::Finished || state_ == RunState::Alarm;
+  if (timeline_ && !(stale_ && fresh)) {
+    startPending(what);
+    return;
+  }
+  pending_ = what;
+  setBusy(true);
+  setState(RunState::Preparing);
+  auto file = file_;
+  auto setup = setup_;
+  auto options = options_;
+  prepareWatcher_.setFuture(QtConcurrent::run([file, setup, options]() {
+    auto result = std::make_shared<Prepared>();
+    const core::gcode::Program program = core::gcode::parse(file.gcode, file.gcodeFirstLine);
+    core::gcode::CheckOptions check;
+    check.dialect = options.dialect;
+    std::vector<int> withBitmap;
+    for (int t = 1; t <= core::io::kToolCount; ++t)
+      if (!setup.tools.bitmap[static_cast<std::size_t>(t - 1)].empty()) withBitmap.push_back(t);
+    check.toolsWithBitmap = withBitmap;
+    std::vector<core::Diagnostic> diags = core::gcode::check(program, check);
+    if (file.header.diameter <= 0 || file.header.length <= 0) {
+      // Stock size problems are reported by the file reader; the run needs a bar.
+      core::Diagnostic d;
+      d.code = file.header.diameter <= 0 ? "F115" : "F116";
+      d.range.line = file.header.diameter <= 0 ? 4 : 5;
+      d.range.column = 1;
+      diags.push_back(d);
+    }
+    if (core::hasErrors(diags)) {
+      for (auto& d : diags) result->errors.push_back(d);
+      return result;
+    }
+    result->timeline = std::make_shared<machine::Timeline>(machine::interpret(program, setup, options));
+    return result;
+  }));
+}
+
+void RunController::onPrepared() {
+  if (!busy_ || !prepareWatcher_.future().isValid() || prepareWatcher_.isRunning()) return;
+  std::shared_ptr<Prepared> result = prepareWatcher_.result();
+  prepareWatcher_.setFuture(QFuture<std::shared_ptr<Prepared>>());
+  setBusy(false);
+  const Pending what = pending_;
+  pending_ = Pending::None;
+  if (!result->errors.isEmpty()) {
+    setState(RunState::Idle);
+    emit checkFailed(result->errors);
+    return;
+  }
+  timeline_ = result->timeline;
+  cut_ = std::make_unique<core::cut::CutSimulator>(*timeline_, core::cut::CutSetup::from(file_.header, setup_));
+  stale_ = false;
+  resetPlayback();
+  startPending(what);
+}
+
+void RunController::resetPlayback() {
+  if (cut_) cut_->reset();
+  time_ = 0.0;
+  snapshotIndex_ = -1;
+  currentLine_ = 0;
+  frames_ = 0;
+  reportedAlarm_.reset();
+  stockShapeVolume_ = -1.0;
+  emit executingLineChanged(0);
+  emit programReset();
+  emitStatus();
+}
+
+void RunController::startPending(Pending what) {
+  if (what == Pending::None) {
+    setState(RunState::Idle);
+    return;
+  }
+  if (state_ == RunState::Finished || state_ == RunState::Alarm) resetPlayback();
+  startRun(what == Pending::Step);
+  if (what != Pending::RunToLine) runToLine_ = 0;
+}
+
+// ---------------------------------------------------------------- playing
+
+void RunController::startRun(bool stepOnly) {
+  const auto& snaps = timeline_->snapshots;
+  const int count = static_cast<int>(snaps.size());
+  const int next = snapshotIndex_ + 1;
+  const double end = cut_->endTime();
+  targetIsEnd_ = true;
+  targetSnapshot_ = count - 1;
+  targetTime_ = end;
+  if (stepOnly && next < count) {
+    targetIsEnd_ = next == count - 1 && snaps[static_cast<std::size_t>(next)].time >= end - kEps;
+    targetSnapshot_ = next;
+    targetTime_ = snaps[static_cast<std::size_t>(next)].time;
+  } else if (!stepOnly) {
+    for (int j = next; j < count; ++j) {
+      const machine::StateSnapshot& s = snaps[static_cast<std::size_t>(j)];
+      // The block we resume on has already been stopped at; its breakpoint lets it run.
+      const bool breakHere = j > next && (breakpoints_.contains(s.line) || (runToLine_ > 0 && s.line >= runToLine_));
+      if (breakHere) {
+        targetIsEnd_ = false;
+        targetSnapshot_ = j - 1;
+        targetTime_ = snaps[static_cast<std::size_t>(j - 1)].time;
+        break;
+      }
+      if (s.stopped && j < count - 1) {   // M00 / M01 with the switch on
+        targetIsEnd_ = false;
+        targetSnapshot_ = j;
+        targetTime_ = s.time;
+        break;
+      }
+    }
+  }
+  // A cut alarm ends the run before the timeline does.
+  targetTime_ = std::min(targetTime_, end);
+  setState(stepOnly ? RunState::Stepping : RunState::Running);
+  if (speed_ == kAsFastAsPossible) {
+    runInBackground(targetTime_);
+    return;
+  }
+  if (targetTime_ <= time_ + kEps) {
+    finishStop();
+    return;
+  }
+  lastTickNs_ = wallClock_.nsecsElapsed();
+  frameTimer_.start();
+}
+
+double RunController::limitSlowStep(double from, double dt) const {
+  // Walk the path from `from` and stop after maxStepMm_ of tool travel.
+  const auto& moves = timeline_->moves;
+  double t = from;
+  double budget = maxStepMm_;
+  int i = std::max(0, timeline_->moveAt(from));
+  while (t < from + dt && i < static_cast<int>(moves.size())) {
+    const machine::Move& m = moves[static_cast<std::size_t>(i)];
+    const double span = m.tEnd - m.tStart;
+    const double end = std::min(m.tEnd, from + dt);
+    if (span > 0 && end > t && m.kind != machine::MoveKind::Dwell) {
+      const double speed = m.path.length() / span;   // mm per machine second
+      const double dist = speed * (end - t);
+      if (dist > budget) return t + budget / speed - from;
+      budget -= dist;
+    }
+    t = std::max(t, end);
+    ++i;
+  }
+  return dt;
+}
+
+void RunController::tick() {
+  const qint64 now = wallClock_.nsecsElapsed();
+  const double wall = std::min(kMaxFrameSeconds, (now - lastTickNs_) * 1e-9);
+  lastTickNs_ = now;
+  double dt = wall * speed_;
+  if (speed_ < 1.0 && maxStepMm_ > 0.0) dt = limitSlowStep(time_, dt);
+  advanceTo(std::min(time_ + dt, targetTime_));
+  ++frames_;
+  if (cut_->alarm() || time_ >= targetTime_ - kEps) finishStop();
+}
+
+void RunController::advanceTo(double t) {
+  cut_->advanceTo(t);
+  time_ = cut_->time();
+  const auto& snaps = timeline_->snapshots;
+  while (snapshotIndex_ + 1 <= targetSnapshot_ && snaps[static_cast<std::size_t>(snapshotIndex_ + 1)].time <= time_ + kEps &&
+         !(cut_->alarm() && snaps[static_cast<std::size_t>(snapshotIndex_ + 1)].line >= cut_->alarm()->range.line))
+    ++snapshotIndex_;
+  updateLine();
+  emitStatus();
+  emit frameAdvanced();
+}
+
+void RunController::finishStop() {
+  frameTimer_.stop();
+  if (const auto alarm = cut_->alarm()) {
+    time_ = cut_->time();
+  } else {
+    time_ = targetTime_;
+    snapshotIndex_ = std::max(snapshotIndex_, targetSnapshot_);
+  }
+  const std::optional<core::Diagnostic> alarm =
+      cut_->alarm() ? cut_->alarm() : (targetIsEnd_ ? cut_->stoppingAlarm() : std::nullopt);
+  if (alarm) {
+    setState(RunState::Alarm);
+    currentLine_ = alarm->range.line;
+    emit executingLineChanged(currentLine_);
+    emitStatus();
+    emit frameAdvanced();
+    if (!reportedAlarm_) {
+      reportedAlarm_ = alarm;
+      emit alarmRaised(*alarm);
+    }
+    return;
+  }
+  setState(targetIsEnd_ ? RunState::Finished : RunState::Paused);
+  updateLine();
+  emitStatus();
+  emit frameAdvanced();
+}
+
+void RunController::runInBackground(double target) {
+  setBusy(true);
+  core::cut::CutSimulator* sim = cut_.get();
+  backgroundWatcher_.setFuture(QtConcurrent::run([sim, target] { sim->advanceTo(target); }));
+}
+
+void RunController::onBackgroundDone() {
+  if (!busy_ || !backgroundWatcher_.future().isValid() || backgroundWatcher_.isRunning()) return;
+  backgroundWatcher_.setFuture(QFuture<void>());
+  setBusy(false);
+  if (state_ == RunState::Paused && !cut_->alarm()) {   // a step back's re-cut
+    time_ = cut_->time();
+    updateLine();
+    emitStatus();
+    emit frameAdvanced();
+    return;
+  }
+  time_ = cut_->time();
+  finishStop();
+}
+
+void RunController::updateLine() {
+  int line = 0;
+  if (timeline_) {
+    const auto& snaps = timeline_->snapshots;
+    const int count = static_cast<int>(snaps.size());
+    const bool moving = state_ == RunState::Running || state_ == RunState::Stepping;
+    const bool beforeBreakpoint = state_ == RunState::Paused && snapshotIndex_ + 1 < count &&
+                                  breakpoints_.contains(snaps[static_cast<std::size_t>(snapshotIndex_ + 1)].line);
+    int k = (moving || beforeBreakpoint) ? snapshotIndex_ + 1 : snapshotIndex_;
+    if (state_ == RunState::Paused && snapshotIndex_ >= 0 && time_ > snaps[static_cast<std::size_t>(snapshotIndex_)].time + kEps)
+      k = snapshotIndex_ + 1;   // paused in the middle of a block
+    if (k >= count) k = count - 1;
+    if (k >= 0) line = snaps[static_cast<std::size_t>(k)].line;
+  }
+  if (line != currentLine_) {
+    currentLine_ = line;
+    emit executingLineChanged(line);
+  }
+}
+
+void RunController::emitStatus() { emit statusChanged(status()); }
+
+void RunController::setState(RunState s) {
+  if (state_ == s) return;
+  state_ = s;
+  emit stateChanged(s);
+}
+
+void RunController::setBusy(bool b) {
+  if (busy_ == b) return;
+  busy_ = b;
+  emit busyChanged(b);
+}
+
+}  // namespace klueng::gui

@@ -1,0 +1,202 @@
+#include "gui/status_panel.h"
+
+#include "gui/language.h"
+
+#include <QEvent>
+#include <QHBoxLayout>
+#include <QLocale>
+#include <QPainter>
+#include <QRadialGradient>
+
+namespace klueng::gui {
+
+namespace {
+
+QString number(double v, int decimals = 3) { return QString::number(v, 'f', decimals); }
+
+const char* const kThaiMonths[12] = {"มกราคม", "กุมภาพันธ์", "มีนาคม", "เมษายน", "พฤษภาคม", "มิถุนายน",
+                                     "กรกฎาคม", "สิงหาคม", "กันยายน", "ตุลาคม", "พฤศจิกายน", "ธันวาคม"};
+
+bool uiIsThai() { return Language::coreLang() == core::Lang::Th; }
+
+}  // namespace
+
+// ---------------------------------------------------------------- StatusFields
+
+StatusFields::StatusFields(QWidget* parent) : QWidget(parent) {
+  auto* layout = new QHBoxLayout(this);
+  layout->setContentsMargins(2, 0, 2, 0);
+  layout->setSpacing(4);
+  for (int i = 0; i < kCount; ++i) {
+    names_[i] = new QLabel(this);
+    values_[i] = new QLabel(this);
+    values_[i]->setFrameShape(QFrame::StyledPanel);
+    values_[i]->setFrameShadow(QFrame::Sunken);
+    values_[i]->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    values_[i]->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    layout->addWidget(names_[i]);
+    layout->addWidget(values_[i]);
+    if (i + 1 < kCount) layout->addSpacing(6);
+  }
+  // Wide enough for "-9999.999" so the bar does not jump while the tool moves.
+  const int wide = values_[0]->fontMetrics().horizontalAdvance(QStringLiteral("-9999.999")) + 8;
+  for (Field f : {Field::ToolX, Field::ToolZ, Field::OffsetX, Field::OffsetZ}) values_[static_cast<int>(f)]->setMinimumWidth(wide);
+  retranslate();
+  setStatus(RunStatus{});
+}
+
+QString StatusFields::formatDate(const QDate& date, bool thai) {
+  if (thai) {
+    return QStringLiteral("%1 %2 พ.ศ. %3")
+        .arg(date.day())
+        .arg(QString::fromUtf8(kThaiMonths[date.month() - 1]))
+        .arg(date.year() + 543);
+  }
+  return QLocale(QLocale::English, QLocale::UnitedStates).toString(date, QStringLiteral("MMMM d, yyyy"));
+}
+
+QString StatusFields::fieldText(Field f) const { return values_[static_cast<int>(f)]->text(); }
+
+void StatusFields::setStatus(const RunStatus& s) {
+  status_ = s;
+  const auto& m = s.machine;
+  auto set = [this](Field f, const QString& text) { values_[static_cast<int>(f)]->setText(text); };
+  set(Field::ToolX, number(core::diameterOf(s.position)));
+  set(Field::ToolZ, number(core::zOf(s.position)));
+  const bool perRev = s.feedMode == core::machine::FeedMode::PerRev;
+  set(Field::Feed, s.programmedFeed > 0
+                       ? (perRev ? tr("%1 mm/rev").arg(number(s.programmedFeed)) : tr("%1 mm/min").arg(number(s.programmedFeed, 1)))
+                       : QStringLiteral("-"));
+  set(Field::Spindle, tr("%1 rpm").arg(number(s.rpm, 0)));
+  set(Field::OffsetX, number(m.offsetX));
+  set(Field::OffsetZ, number(m.offsetZ));
+  set(Field::NoseRadius, number(m.noseRadius));
+  set(Field::Tip, QString::number(m.tip));
+  set(Field::Tool, m.tool > 0 ? QStringLiteral("T%1%2").arg(m.tool, 2, 10, QLatin1Char('0')).arg(m.offset, 2, 10, QLatin1Char('0'))
+                              : QStringLiteral("-"));
+  set(Field::Date, formatDate(QDate::currentDate(), uiIsThai()));
+}
+
+void StatusFields::retranslate() {
+  const QString names[kCount] = {tr("Tool X"),   tr("Tool Z"),   tr("Feed"),        tr("Spindle"), tr("X offset"),
+                                 tr("Z offset"), tr("Nose R"),   tr("Tip"),         tr("Tool"),    tr("Date")};
+  const QString tips[kCount] = {tr("Tool position X (diameter, mm)"), tr("Tool position Z (mm)"), tr("Feed rate as programmed"),
+                                tr("Spindle speed (rpm)"), tr("X offset of the active tool offset (diameter, mm)"),
+                                tr("Z offset of the active tool offset (mm)"), tr("Nose radius of the active offset (mm)"),
+                                tr("Imaginary tool tip number of the active offset"), tr("Tool number and offset number"),
+                                tr("Today's date")};
+  for (int i = 0; i < kCount; ++i) {
+    names_[i]->setText(names[i]);
+    names_[i]->setToolTip(tips[i]);
+    values_[i]->setToolTip(tips[i]);
+  }
+  setStatus(status_);
+}
+
+void StatusFields::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) retranslate();
+  QWidget::changeEvent(event);
+}
+
+// ---------------------------------------------------------------- StatusLamp
+
+StatusLamp::StatusLamp(QWidget* parent) : QWidget(parent) {
+  setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);
+}
+
+void StatusLamp::setOn(bool on) {
+  if (on_ == on) return;
+  on_ = on;
+  update();
+}
+
+void StatusLamp::setColor(const QColor& c) {
+  if (color_ == c) return;
+  color_ = c;
+  update();
+}
+
+void StatusLamp::setText(const QString& text) {
+  text_ = text;
+  updateGeometry();
+  update();
+}
+
+QSize StatusLamp::sizeHint() const {
+  const QFontMetrics fm = fontMetrics();
+  const int h = std::max(fm.height(), 14) + 2;
+  return {h + 4 + fm.horizontalAdvance(text_) + 4, h};
+}
+
+void StatusLamp::paintEvent(QPaintEvent*) {
+  QPainter p(this);
+  p.setRenderHint(QPainter::Antialiasing);
+  const int d = std::min(height(), 16) - 2;
+  const QRectF lampRect(2, (height() - d) / 2.0, d, d);
+  const QColor base = on_ ? color_ : QColor(110, 110, 110);
+  QRadialGradient g(lampRect.center() - QPointF(d * 0.2, d * 0.2), d * 0.7);
+  g.setColorAt(0.0, on_ ? base.lighter(170) : QColor(170, 170, 170));
+  g.setColorAt(1.0, on_ ? base : base.darker(130));
+  p.setBrush(g);
+  p.setPen(QPen(QColor(40, 40, 40), 1.0));
+  p.drawEllipse(lampRect);
+  p.setPen(palette().color(QPalette::WindowText));
+  p.drawText(QRectF(lampRect.right() + 5, 0, width() - lampRect.right() - 5, height()),
+             Qt::AlignVCenter | Qt::AlignLeft, text_);
+}
+
+// ---------------------------------------------------------------- StatusLamps
+
+StatusLamps::StatusLamps(QWidget* parent) : QWidget(parent) {
+  auto* layout = new QHBoxLayout(this);
+  layout->setContentsMargins(2, 0, 2, 0);
+  layout->setSpacing(10);
+  for (auto*& lamp : lamps_) {
+    lamp = new StatusLamp(this);
+    layout->addWidget(lamp);
+  }
+  lamp(Lamp::OptionalStop)->setColor(QColor(240, 180, 0));
+  lamp(Lamp::Coolant)->setColor(QColor(30, 140, 240));
+  lamp(Lamp::PositionCheck)->setColor(QColor(40, 200, 60));
+  lamp(Lamp::Brake)->setColor(QColor(220, 40, 40));
+  retranslate();
+}
+
+void StatusLamps::setStatus(const RunStatus& s) {
+  const auto& m = s.machine;
+  if (spindle_ != m.spindle) {
+    spindle_ = m.spindle;
+    retranslate();
+  }
+  lamp(Lamp::Spindle)->setOn(m.spindle != core::machine::SpindleDir::Stopped);
+  lamp(Lamp::Spindle)->setColor(m.spindle == core::machine::SpindleDir::Ccw ? QColor(240, 140, 0) : QColor(40, 200, 60));
+  lamp(Lamp::OptionalStop)->setOn(m.optionalStopSwitch);
+  lamp(Lamp::Coolant)->setOn(m.coolant);
+  lamp(Lamp::PositionCheck)->setOn(m.positionCheck);
+  lamp(Lamp::Brake)->setOn(m.brake);
+}
+
+void StatusLamps::setOptionalStopSwitch(bool on) { lamp(Lamp::OptionalStop)->setOn(on); }
+
+void StatusLamps::retranslate() {
+  using core::machine::SpindleDir;
+  lamp(Lamp::Spindle)->setText(spindle_ == SpindleDir::Cw    ? tr("Spindle CW")
+                               : spindle_ == SpindleDir::Ccw ? tr("Spindle CCW")
+                                                             : tr("Spindle stop"));
+  lamp(Lamp::Spindle)->setToolTip(tr("Spindle direction: green clockwise (M03), amber counter-clockwise (M04), grey stopped (M05)"));
+  lamp(Lamp::OptionalStop)->setText(tr("Optional stop"));
+  lamp(Lamp::OptionalStop)->setToolTip(tr("Optional Stop switch: M01 stops the program when lit"));
+  lamp(Lamp::Coolant)->setText(tr("Coolant"));
+  lamp(Lamp::Coolant)->setToolTip(tr("Coolant on (M08) / off (M09)"));
+  lamp(Lamp::PositionCheck)->setText(tr("Position check"));
+  lamp(Lamp::PositionCheck)->setToolTip(tr("Lit when G27 found the tool at the reference point"));
+  lamp(Lamp::Brake)->setText(tr("Brake"));
+  lamp(Lamp::Brake)->setToolTip(tr("Spindle brake on (M86) / off (M87)"));
+}
+
+void StatusLamps::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) retranslate();
+  QWidget::changeEvent(event);
+}
+
+}  // namespace klueng::gui
