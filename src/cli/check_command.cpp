@@ -1,12 +1,189 @@
-#include <cstdio>
+// klueng-cli check FILE|FOLDER... [--lang en|th] [--dialect fanuc|classic] [--json]
+//                                 [--config DIR] [--summary]
+// Reads each program, parses and checks it (SPEC 3-5, 13) against the tool
+// table found by findConfigDir, and prints every diagnostic: one GCC-style
+// line each, or one JSON array for all files. Exit 0 = no errors, 1 = errors,
+// 2 = a file could not be read or the command line is wrong.
+#include <fmt/format.h>
 
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli_common.h"
 #include "commands.h"
 
 namespace klueng::cli {
 
-int runCheck(const std::vector<std::string>&) {
-  std::fputs("klueng-cli check: not built yet\n", stderr);
+namespace {
+
+using namespace klueng::core;
+
+constexpr const char* kUsage =
+    "usage: klueng-cli check FILE|FOLDER... [--lang en|th] [--dialect fanuc|classic] [--json]\n"
+    "                                       [--config DIR] [--summary]\n";
+
+struct CheckOptions {
+  std::vector<std::string> files;
+  Lang lang = Lang::En;
+  gcode::Dialect dialect = gcode::Dialect::Fanuc;
+  bool json = false;
+  bool summary = false;
+  std::string configDir;
+};
+
+int usageError(const std::string& message) {
+  std::fprintf(stderr, "klueng-cli check: %s\n%s", message.c_str(), kUsage);
   return 2;
+}
+
+// Accepts "--opt value" and "--opt=value". Returns an exit code on error.
+std::optional<int> parseArgs(const std::vector<std::string>& args, CheckOptions& o) {
+  o.lang = langFromLocale();
+  bool onlyFiles = false;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    std::string arg = args[i];
+    if (onlyFiles || arg.rfind("--", 0) != 0 || arg == "--") {
+      if (!onlyFiles && arg == "--") {
+        onlyFiles = true;
+        continue;
+      }
+      o.files.push_back(arg);
+      continue;
+    }
+    if (arg == "--help") {
+      std::fputs(kUsage, stdout);
+      return 0;
+    }
+    if (arg == "--json") {
+      o.json = true;
+      continue;
+    }
+    if (arg == "--summary") {
+      o.summary = true;
+      continue;
+    }
+    std::string value;
+    bool hasValue = false;
+    if (const std::size_t eq = arg.find('='); eq != std::string::npos) {
+      value = arg.substr(eq + 1);
+      arg.resize(eq);
+      hasValue = true;
+    }
+    if (arg != "--lang" && arg != "--dialect" && arg != "--config") return usageError("unknown option '" + arg + "'");
+    if (!hasValue) {
+      if (i + 1 >= args.size()) return usageError(arg + " needs a value");
+      value = args[++i];
+    }
+    if (arg == "--lang") {
+      const auto lang = parseLang(value);
+      if (!lang) return usageError("--lang must be en or th, not '" + value + "'");
+      o.lang = *lang;
+    } else if (arg == "--dialect") {
+      const auto dialect = parseDialect(value);
+      if (!dialect) return usageError("--dialect must be fanuc or classic, not '" + value + "'");
+      o.dialect = *dialect;
+    } else {
+      o.configDir = value;
+    }
+  }
+  if (o.files.empty()) return usageError("no FILE given");
+  return std::nullopt;
+}
+
+// A folder stands for the program files in it (not its subfolders), sorted by name.
+std::vector<std::string> expandFolders(const std::vector<std::string>& args) {
+  namespace fs = std::filesystem;
+  std::vector<std::string> files;
+  for (const std::string& arg : args) {
+    std::error_code ec;
+    if (!fs::is_directory(arg, ec)) {
+      files.push_back(arg);
+      continue;
+    }
+    std::vector<std::string> inFolder;
+    for (const auto& entry : fs::directory_iterator(arg, ec)) {
+      std::string ext = entry.path().extension().string();
+      std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+      if (entry.is_regular_file(ec) &&
+          (ext == ".txt" || ext == ".nc" || ext == ".cnc" || ext == ".tap" || ext == ".ngc" || ext == ".gcode"))
+        inFolder.push_back(entry.path().string());
+    }
+    std::sort(inFolder.begin(), inFolder.end());
+    if (inFolder.empty()) files.push_back(arg);  // reported as unreadable (a folder)
+    files.insert(files.end(), inFolder.begin(), inFolder.end());
+  }
+  return files;
+}
+
+struct FileSummary {
+  std::string file;
+  int errors = 0;
+  int warnings = 0;
+  bool unreadable = false;
+};
+
+void printSummary(const std::vector<FileSummary>& rows, Lang lang) {
+  const bool th = lang == Lang::Th;
+  std::size_t width = 4;
+  for (const auto& r : rows) width = std::max(width, r.file.size());
+  std::string out = fmt::format("\n{:<{}}  {:>6}  {:>8}  {}\n", th ? "ไฟล์" : "file", width,
+                                th ? "ข้อผิดพลาด" : "errors", th ? "คำเตือน" : "warnings", th ? "ผล" : "result");
+  for (const auto& r : rows) {
+    const char* result = r.unreadable ? (th ? "อ่านไม่ได้" : "unreadable")
+                         : r.errors   ? (th ? "ไม่ผ่าน" : "FAIL")
+                                      : (th ? "ผ่าน" : "ok");
+    out += fmt::format("{:<{}}  {:>6}  {:>8}  {}\n", r.file, width, r.errors, r.warnings, result);
+  }
+  std::fwrite(out.data(), 1, out.size(), stdout);
+}
+
+}  // namespace
+
+int runCheck(const std::vector<std::string>& args) {
+  CheckOptions o;
+  if (const auto exit = parseArgs(args, o)) return *exit;
+
+  const LoadedConfig config = loadConfig(o.configDir);
+  gcode::CheckOptions checkOptions;
+  checkOptions.dialect = o.dialect;
+  // Without a readable tool table nothing is known about bitmaps: do not check T words against it.
+  if (!config.unreadable) checkOptions.toolsWithBitmap = config.toolsWithBitmap();
+
+  std::vector<FileDiagnostic> all = config.diagnostics;
+  bool anyError = config.hasErrors();
+  bool anyUnreadable = config.unreadable;
+  std::vector<FileSummary> summary;
+
+  for (const std::string& path : expandFolders(o.files)) {
+    const CheckedProgram checked = checkProgramFile(path, checkOptions);
+    FileSummary row{path};
+    for (const Diagnostic& d : checked.diagnostics) {
+      (d.severity == Severity::Warning ? row.warnings : row.errors)++;
+      all.push_back({path, d});
+    }
+    row.unreadable = checked.unreadable;
+    anyUnreadable = anyUnreadable || checked.unreadable;
+    anyError = anyError || row.errors > 0;
+    summary.push_back(row);
+  }
+
+  if (o.json) {
+    std::string out = "[";
+    for (std::size_t i = 0; i < all.size(); ++i)
+      out += (i ? ",\n  " : "\n  ") + diagnosticJson(all[i].file, all[i].diagnostic, o.lang);
+    out += all.empty() ? "]\n" : "\n]\n";
+    std::fwrite(out.data(), 1, out.size(), stdout);
+  } else {
+    for (const FileDiagnostic& f : all) printDiagnostic(stdout, f.file, f.diagnostic, o.lang);
+    if (o.summary) printSummary(summary, o.lang);
+  }
+  std::fflush(stdout);
+  return anyUnreadable ? 2 : anyError ? 1 : 0;
 }
 
 }  // namespace klueng::cli

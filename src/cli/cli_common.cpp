@@ -1,0 +1,166 @@
+#include "cli_common.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+
+#include "klueng/core/gcode/parser.h"
+#include "klueng/core/io/text_encoding.h"
+
+namespace klueng::cli {
+
+using namespace klueng::core;
+
+Lang langFromLocale() {
+  for (const char* name : {"LC_ALL", "LC_MESSAGES", "LANG"}) {
+    const char* value = std::getenv(name);
+    if (!value || !*value) continue;
+    const std::string_view v(value);
+    return v.substr(0, 2) == "th" ? Lang::Th : Lang::En;
+  }
+  return Lang::En;
+}
+
+std::optional<Lang> parseLang(std::string_view text) {
+  if (text == "en") return Lang::En;
+  if (text == "th") return Lang::Th;
+  return std::nullopt;
+}
+
+std::optional<gcode::Dialect> parseDialect(std::string_view text) {
+  if (text == "fanuc") return gcode::Dialect::Fanuc;
+  if (text == "classic") return gcode::Dialect::Classic;
+  return std::nullopt;
+}
+
+std::string formatGccStyle(const std::string& file, const Diagnostic& d, Lang lang) {
+  std::string where = file;
+  if (d.range.line > 0) where += fmt::format(":{}:{}", d.range.line, std::max(d.range.column, 1));
+  return fmt::format("{}: {} {}: {}", where, severityName(d.severity, lang), d.code, formatMessage(d, lang));
+}
+
+void printDiagnostic(std::FILE* out, const std::string& file, const Diagnostic& d, Lang lang) {
+  const std::string line = formatGccStyle(file, d, lang) + '\n';
+  std::fwrite(line.data(), 1, line.size(), out);
+}
+
+std::string jsonEscape(std::string_view text) {
+  std::string out;
+  out.reserve(text.size() + 8);
+  for (std::size_t i = 0; i < text.size();) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c < 0x80) {
+      switch (c) {
+        case '"': out += "\\\""; break;
+        case '\\': out += "\\\\"; break;
+        case '\n': out += "\\n"; break;
+        case '\r': out += "\\r"; break;
+        case '\t': out += "\\t"; break;
+        case '\b': out += "\\b"; break;
+        case '\f': out += "\\f"; break;
+        default:
+          if (c < 0x20 || c == 0x7F) out += fmt::format("\\u{:04x}", c);
+          else out += static_cast<char>(c);
+      }
+      ++i;
+      continue;
+    }
+    // Copy a whole valid UTF-8 sequence; replace a broken byte.
+    std::size_t n = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : c >= 0xC0 ? 2 : 1;
+    if (n > 1 && i + n <= text.size() && io::isValidUtf8(text.substr(i, n))) {
+      out.append(text.substr(i, n));
+      i += n;
+    } else {
+      out += "\\ufffd";
+      ++i;
+    }
+  }
+  return out;
+}
+
+std::string diagnosticJson(const std::string& file, const Diagnostic& d, Lang lang) {
+  return fmt::format(R"({{"file": "{}", "line": {}, "column": {}, "severity": "{}", "code": "{}", "message": "{}"}})",
+                     jsonEscape(file), d.range.line, d.range.column, severityName(d.severity, Lang::En),
+                     jsonEscape(d.code), jsonEscape(formatMessage(d, lang)));
+}
+
+std::string joinPath(const std::string& dir, std::string_view name) {
+  if (dir.empty()) return std::string(name);
+  return (std::filesystem::path(dir) / name).string();
+}
+
+bool isUnreadable(const Diagnostic& d) { return d.code == "F101" || d.code == "F102" || d.code == "F103"; }
+
+bool LoadedConfig::hasErrors() const {
+  return std::any_of(diagnostics.begin(), diagnostics.end(),
+                     [](const FileDiagnostic& f) { return f.diagnostic.severity != Severity::Warning; });
+}
+
+std::vector<int> LoadedConfig::toolsWithBitmap() const {
+  std::vector<int> tools;
+  for (int t = 1; t <= io::kToolCount; ++t)
+    if (bitmaps[static_cast<std::size_t>(t - 1)]) tools.push_back(t);
+  return tools;
+}
+
+LoadedConfig loadConfig(const std::string& explicitDir) {
+  LoadedConfig config;
+  config.dir = io::findConfigDir(explicitDir);
+  const auto collect = [&](const std::string& file, const std::vector<Diagnostic>& diags) {
+    for (const Diagnostic& d : diags) {
+      if (isUnreadable(d)) config.unreadable = true;
+      config.diagnostics.push_back({file, d});
+    }
+  };
+
+  const std::string toolsPath = joinPath(config.dir, "tools.cfg");
+  auto tools = io::readToolTable(toolsPath);
+  collect(toolsPath, tools.diagnostics);
+  if (tools.value) config.tools = *tools.value;
+
+  const std::string offsetsPath = joinPath(config.dir, "offset.cfg");
+  auto offsets = io::readOffsetTable(offsetsPath);
+  collect(offsetsPath, offsets.diagnostics);
+  if (offsets.value) config.offsets = *offsets.value;
+
+  // machine.cfg is optional: without it the SPEC 1 defaults apply.
+  const std::string machinePath = joinPath(config.dir, "machine.cfg");
+  std::error_code ec;
+  if (std::filesystem::exists(machinePath, ec)) {
+    auto machine = io::readMachineConfig(machinePath);
+    collect(machinePath, machine.diagnostics);
+    if (machine.value) config.machine = *machine.value;
+  }
+
+  for (int t = 1; t <= io::kToolCount; ++t) {
+    const std::string path = config.tools.bitmapPath(t);
+    if (path.empty() || !std::filesystem::is_regular_file(path, ec)) continue;  // F121 already says so
+    auto image = io::readImage(path);
+    for (const Diagnostic& d : image.diagnostics) config.diagnostics.push_back({path, d});
+    if (image.ok()) config.bitmaps[static_cast<std::size_t>(t - 1)] = std::move(*image.value);
+  }
+  return config;
+}
+
+CheckedProgram checkProgramFile(const std::string& path, const gcode::CheckOptions& options,
+                                const io::JobHeader& defaultsForPlain) {
+  CheckedProgram result;
+  result.path = path;
+  auto read = io::readProgramFile(path, defaultsForPlain);
+  result.diagnostics = std::move(read.diagnostics);
+  result.unreadable = std::any_of(result.diagnostics.begin(), result.diagnostics.end(), isUnreadable);
+  if (!read.value) return result;
+  const gcode::Program program = gcode::parse(read.value->gcode, read.value->gcodeFirstLine);
+  std::vector<Diagnostic> found = gcode::check(program, options);
+  result.diagnostics.insert(result.diagnostics.end(), std::make_move_iterator(found.begin()),
+                            std::make_move_iterator(found.end()));
+  std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {
+    return a.range.line != b.range.line ? a.range.line < b.range.line : a.range.column < b.range.column;
+  });
+  result.file = std::move(read.value);
+  return result;
+}
+
+}  // namespace klueng::cli
