@@ -1,0 +1,304 @@
+#!/usr/bin/env python3
+"""Writes the golden-trace cases from the hand derivations below.
+
+Each row is written from the hand calculation in its comment (README.md has
+the long derivations); this script only formats the numbers to 4 decimals.
+Rapids: X 4000 mm/min on the radius, Z 8000 mm/min, each axis on its own.
+Rows: (kind, line, t0, t1, x0, z0, x1, z1, i, k, dir, feed, rpm).
+Run it again after changing a case: python3 tests/golden/make_cases.py
+"""
+import math
+import os
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+HEADER = "kind,line,t_start,t_end,x_start,z_start,x_end,z_end,i,k,dir,feed_mm_min,rpm"
+BOTH = math.hypot(8000, 4000)  # path speed of a dog-leg's first leg when it moves 2:1 (Z:X radius)
+
+
+def row(kind, line, t0, t1, x0, z0, x1, z1, i=0.0, k=0.0, d="", feed=0.0, rpm=0.0):
+    nums = [t0, t1, x0, z0, x1, z1, i, k]
+    f = lambda v: "%.4f" % (0.0 if abs(v) < 5e-5 else v)
+    return ",".join([kind, str(line)] + [f(v) for v in nums] + [d, f(feed), f(rpm)])
+
+
+def case(name, program, rows, alarm=None, args=None):
+    d = os.path.join(HERE, name)
+    os.makedirs(d, exist_ok=True)
+    with open(os.path.join(d, "program.nc"), "w") as fh:
+        fh.write(program)
+    with open(os.path.join(d, "expected.csv"), "w") as fh:
+        fh.write("\n".join([HEADER] + rows) + "\n")
+    for fname, content in (("expected_alarm", alarm), ("args", args)):
+        p = os.path.join(d, fname)
+        if content:
+            with open(p, "w") as fh:
+                fh.write(content + "\n")
+        elif os.path.exists(p):
+            os.remove(p)
+
+
+# ---------------------------------------------------------------- G codes
+# G00 X100 Z100 from X0 Z300: X 50 mm (radius) takes 0.75 s, Z 200 mm 1.5 s;
+# together for 0.75 s (Z covers 100), then Z alone.
+case("g00_rapid_dogleg", "G00 X100. Z100.\n", [
+    row("RAPID", 1, 0, 0.75, 0, 300, 100, 200, feed=BOTH),
+    row("RAPID", 1, 0.75, 1.5, 100, 200, 100, 100, feed=8000),
+])
+
+# G98 G01: Z10 -> Z-20 = 30 mm at 300 mm/min = 6 s. Rapid: X 20 radius 0.3 s,
+# Z 290 mm 2.175 s; Z covers 40 mm in the first 0.3 s.
+case("g01_line_g98", "G98\nG00 X40. Z10.\nG01 Z-20. F300.\n", [
+    row("RAPID", 2, 0, 0.3, 0, 300, 40, 260, feed=BOTH),
+    row("RAPID", 2, 0.3, 2.175, 40, 260, 40, 10, feed=8000),
+    row("LINE", 3, 2.175, 8.175, 40, 10, 40, -20, feed=300),
+])
+
+# G99 at 500 rpm: F0.2 -> 100 mm/min. Z2 -> Z-18: 20 mm = 12 s; the taper to
+# X40 Z-23: dx 5, dz 5 -> 7.0711 mm = 4.2426 s.
+case("g99_line_per_rev", "G97 S500 M03\nG99\nG00 X30. Z2.\nG01 Z-18. F0.2\nG01 X40. Z-23.\nM05\n", [
+    row("RAPID", 3, 0, 0.225, 0, 300, 30, 270, feed=BOTH, rpm=500),
+    row("RAPID", 3, 0.225, 2.235, 30, 270, 30, 2, feed=8000, rpm=500),
+    row("LINE", 4, 2.235, 14.235, 30, 2, 30, -18, feed=100, rpm=500),
+    row("LINE", 5, 14.235, 14.235 + math.sqrt(50) / 100 * 60, 30, -18, 40, -23, feed=100, rpm=500),
+])
+
+# G02 R5 from X20 Z0 to X30 Z-5: centre Z0 X30 (radius 15) -> i = 5, k = 0;
+# quarter circle 5*pi/2 = 7.854 mm at 100 mm/min = 4.7124 s.
+RAPID_TO_X20_Z0 = [
+    row("RAPID", 2, 0, 0.15, 0, 300, 20, 280, feed=BOTH),
+    row("RAPID", 2, 0.15, 2.25, 20, 280, 20, 0, feed=8000),
+]
+case("g02_arc_radius", "G98\nG00 X20. Z0.\nG02 X30. Z-5. R5. F100.\n", RAPID_TO_X20_Z0 + [
+    row("ARC", 3, 2.25, 2.25 + 5 * math.pi / 2 / 100 * 60, 20, 0, 30, -5, 5, 0, "CW", 100),
+])
+# R-5: the 270-degree arc, centre Z-5 X20 (radius 10) -> i = 0, k = -5.
+case("g02_arc_long_radius", "G98\nG00 X20. Z0.\nG02 X30. Z-5. R-5. F100.\n", RAPID_TO_X20_Z0 + [
+    row("ARC", 3, 2.25, 2.25 + 5 * 1.5 * math.pi / 100 * 60, 20, 0, 30, -5, 0, -5, "CW", 100),
+])
+# G03 by I/K from X36 Z-20 to X40 Z-22, centre Z-22 X36: quarter circle R2,
+# pi mm = 1.885 s. Rapid: X 18 radius 0.27 s (Z covers 36), Z 320 mm 2.4 s.
+case("g03_arc_centre", "G98\nG00 X36. Z-20.\nG03 X40. Z-22. I0. K-2. F100.\n", [
+    row("RAPID", 2, 0, 0.27, 0, 300, 36, 264, feed=BOTH),
+    row("RAPID", 2, 0.27, 2.4, 36, 264, 36, -20, feed=8000),
+    row("ARC", 3, 2.4, 2.4 + math.pi / 100 * 60, 36, -20, 40, -22, 0, -2, "CCW", 100),
+])
+
+# G04: X and U in seconds, P in milliseconds (G98: a dwell with the spindle stopped is fine).
+case("g04_dwell", "G98\nG04 X1.5\nG04 U0.5\nG04 P250\n", [
+    row("DWELL", 2, 0, 1.5, 0, 300, 0, 300),
+    row("DWELL", 3, 1.5, 2.0, 0, 300, 0, 300),
+    row("DWELL", 4, 2.0, 2.25, 0, 300, 0, 300),
+])
+
+# G20: X1 Z1 = 25.4 mm; F10 in/min = 254 mm/min; W-1 = 25.4 mm in 6 s.
+# Rapid: X 12.7 radius 0.1905 s (Z covers 25.4), Z 274.6 mm 2.0595 s.
+case("g20_inch", "G20 G98\nG00 X1. Z1.\nG01 W-1. F10.\n", [
+    row("RAPID", 2, 0, 0.1905, 0, 300, 25.4, 274.6, feed=BOTH),
+    row("RAPID", 2, 0.1905, 2.0595, 25.4, 274.6, 25.4, 25.4, feed=8000),
+    row("LINE", 3, 2.0595, 8.0595, 25.4, 25.4, 25.4, 0, feed=254),
+])
+# G21 back to mm: X1 inch = 25.4, then X20 mm (2.7 mm radius, 0.0405 s).
+case("g21_metric", "G20\nG00 X1.\nG21\nG00 X20.\n", [
+    row("RAPID", 2, 0, 0.1905, 0, 300, 25.4, 300, feed=4000),
+    row("RAPID", 4, 0.1905, 0.231, 25.4, 300, 20, 300, feed=4000),
+])
+
+# G27 X0 Z300 = the reference point: rapid back, lamp on, no alarm.
+TO_X40_Z50 = [
+    row("RAPID", 1, 0, 0.3, 0, 300, 40, 260, feed=BOTH),
+    row("RAPID", 1, 0.3, 1.875, 40, 260, 40, 50, feed=8000),
+]
+case("g27_reference_check", "G00 X40. Z50.\nG27 X0. Z300.\n", TO_X40_Z50 + [
+    row("RAPID", 2, 1.875, 2.175, 40, 50, 0, 90, feed=BOTH),
+    row("RAPID", 2, 2.175, 3.75, 0, 90, 0, 300, feed=8000),
+])
+
+# G28 via X60 Z100 to the reference X0 Z300, G29 back via X60 Z100 to X30 Z20.
+case("g28_g29_reference", "G00 X40. Z50.\nG28 X60. Z100.\nG29 X30. Z20.\n", TO_X40_Z50 + [
+    row("RAPID", 2, 1.875, 2.025, 40, 50, 60, 70, feed=BOTH),   # X 10 radius 0.15 s, Z 50 0.375 s
+    row("RAPID", 2, 2.025, 2.25, 60, 70, 60, 100, feed=8000),
+    row("RAPID", 2, 2.25, 2.7, 60, 100, 0, 160, feed=BOTH),     # X 30 radius 0.45 s, Z 200 1.5 s
+    row("RAPID", 2, 2.7, 3.75, 0, 160, 0, 300, feed=8000),
+    row("RAPID", 3, 3.75, 4.2, 0, 300, 60, 240, feed=BOTH),
+    row("RAPID", 3, 4.2, 5.25, 60, 240, 60, 100, feed=8000),
+    row("RAPID", 3, 5.25, 5.475, 60, 100, 30, 70, feed=BOTH),   # X 15 radius 0.225 s, Z 80 0.6 s
+    row("RAPID", 3, 5.475, 5.85, 30, 70, 30, 20, feed=8000),
+])
+# Fanuc: G28 without axis words moves nothing.
+case("g28_no_axes", "G00 X40. Z50.\nG28\n", TO_X40_Z50)
+
+# G32 at 500 rpm, lead 1.5: 750 mm/min; Z5 -> Z-25 = 30 mm in 2.4 s.
+case("g32_thread", "G97 S500 M03\nG00 X30. Z5.\nG32 Z-25. F1.5\n", [
+    row("RAPID", 2, 0, 0.225, 0, 300, 30, 270, feed=BOTH, rpm=500),
+    row("RAPID", 2, 0.225, 2.2125, 30, 270, 30, 5, feed=8000, rpm=500),
+    row("THREAD", 3, 2.2125, 4.6125, 30, 5, 30, -25, feed=750, rpm=500),
+])
+
+# G42, offset 01 (R0.8, tip 3 -> tip = centre + 0.8*(-1,-1) in (z, x)).
+# Start-up ends R to the right of the first contour move's start: centre
+# Z2 x10.8 -> tip X20 Z1.2. Inside corner at Z-10 X20 (both offsets meet at
+# centre Z-9.2 x10.8 -> tip X20 Z-10). The last contour move ends offset
+# perpendicular to itself: centre Z-9.2 x15 -> tip X28.4 Z-10. Cancel to the
+# uncompensated point X50 Z10: X 10.8 radius 0.162 s, Z 20 0.15 s.
+case("g42_nose_comp_right",
+     "G98 T0101\nG42 G00 X20. Z2.\nG01 Z-10. F100.\nX30.\nG40 G00 X50. Z10.\n", [
+         row("RAPID", 2, 0, 0.15, 0, 300, 20, 280, feed=BOTH),
+         row("RAPID", 2, 0.15, 2.241, 20, 280, 20, 1.2, feed=8000),
+         row("LINE", 3, 2.241, 8.961, 20, 1.2, 20, -10, feed=100),
+         row("LINE", 4, 8.961, 11.481, 20, -10, 28.4, -10, feed=100),
+         row("RAPID", 5, 11.481, 11.631, 28.4, -10, 48.4, 10, feed=BOTH),
+         row("RAPID", 5, 11.631, 11.643, 48.4, 10, 50, 10, feed=4000),
+     ])
+# G41 boring, offset 04 (R0.4, tip 2 -> tip = centre + 0.4*(-1,+1)). Travel
+# -Z with the tool on the left = below the bore line: centre x9.6; start-up
+# tip X20 Z1.6; inside corner tip X20 Z-10; face end centre Z-9.6 x6 -> tip
+# X12.8 Z-10; cancel to X0 Z10: X 6.4 radius 0.096 s, Z 20 0.15 s.
+case("g41_nose_comp_left",
+     "G98 T0404\nG41 G00 X20. Z2.\nG01 Z-10. F100.\nX12.\nG40 G00 X0. Z10.\n", [
+         row("RAPID", 2, 0, 0.15, 0, 300, 20, 280, feed=BOTH),
+         row("RAPID", 2, 0.15, 2.238, 20, 280, 20, 1.6, feed=8000),
+         row("LINE", 3, 2.238, 9.198, 20, 1.6, 20, -10, feed=100),
+         row("LINE", 4, 9.198, 11.358, 20, -10, 12.8, -10, feed=100),
+         row("RAPID", 5, 11.358, 11.454, 12.8, -10, 0, 2.8, feed=BOTH),
+         row("RAPID", 5, 11.454, 11.508, 0, 2.8, 0, 10, feed=8000),
+     ])
+# G40 alone: the same path without compensation (the tip follows the program).
+case("g40_no_comp", "G98 T0101 G40\nG00 X20. Z2.\nG01 Z-10. F100.\nX30.\n", [
+    row("RAPID", 2, 0, 0.15, 0, 300, 20, 280, feed=BOTH),
+    row("RAPID", 2, 0.15, 2.235, 20, 280, 20, 2, feed=8000),
+    row("LINE", 3, 2.235, 9.435, 20, 2, 20, -10, feed=100),
+    row("LINE", 4, 9.435, 12.435, 20, -10, 30, -10, feed=100),
+])
+
+# G50 X100 Z50 at the start position: the tool now reads X100 Z50.
+# X 10 radius 0.15 s, Z 10 0.075 s: X covers 5 mm radius in the first 0.075 s.
+case("g50_coordinate_set", "G50 X100. Z50.\nG00 X80. Z40.\n", [
+    row("RAPID", 2, 0, 0.075, 100, 50, 90, 40, feed=BOTH),
+    row("RAPID", 2, 0.075, 0.15, 90, 40, 80, 40, feed=4000),
+])
+
+# G50 S2000 + G96 S150: C = 1000*150/(2 pi) = 23873.24 rpm*mm, clamp radius
+# xc = C/2000 = 11.9366. Facing X60 -> X0 at F0.25:
+# t = 60/0.25 * ((30^2 - xc^2)/(2C) + xc/2000) = 5.2401 s.
+C150 = 1000 * 150 / (2 * math.pi)
+XC150 = C150 / 2000
+FACE = 60 / 0.25 * ((30 ** 2 - XC150 ** 2) / (2 * C150) + XC150 / 2000)
+RPM60 = 1000 * 150 / (math.pi * 60)
+case("g96_g50s_facing", "G50 S2000\nG96 S150 M03\nG00 X60. Z0.\nG01 X0. F0.25\n", [
+    row("RAPID", 3, 0, 0.45, 0, 300, 60, 240, feed=BOTH, rpm=2000),
+    row("RAPID", 3, 0.45, 2.25, 60, 240, 60, 0, feed=8000, rpm=RPM60),
+    row("LINE", 4, 2.25, 2.25 + FACE, 60, 0, 0, 0, feed=0.25 * RPM60, rpm=RPM60),
+])
+# G97 after G96: constant 1000 rpm; F0.1 -> 100 mm/min, 10 mm in 6 s.
+case("g97_constant_rpm", "G96 S100 M03\nG97 S1000\nG00 X20. Z10.\nG01 Z0. F0.1\n", [
+    row("RAPID", 3, 0, 0.15, 0, 300, 20, 280, feed=BOTH, rpm=1000),
+    row("RAPID", 3, 0.15, 2.175, 20, 280, 20, 10, feed=8000, rpm=1000),
+    row("LINE", 4, 2.175, 8.175, 20, 10, 20, 0, feed=100, rpm=1000),
+])
+# G98 and G99 in turn: 5 mm at 100 mm/min (3 s), then 5 mm at 0.1 * 800 = 80 mm/min (3.75 s).
+case("g98_g99_feed_modes", "M03 S800\nG98 G01 X10. F100.\nG99 G01 X20. F0.1\n", [
+    row("LINE", 2, 0, 3, 0, 300, 10, 300, feed=100, rpm=800),
+    row("LINE", 3, 3, 6.75, 10, 300, 20, 300, feed=80, rpm=800),
+])
+
+# ---------------------------------------------------------------- M codes, T, switches
+# Headless runs record M00/M01 and go on; nothing after M02 runs.
+case("m00_m01_m02", "G00 X10.\nM00\nM01\nG00 X20.\nM02\nG00 X30.\n", [
+    row("RAPID", 1, 0, 0.075, 0, 300, 10, 300, feed=4000),
+    row("RAPID", 4, 0.075, 0.15, 10, 300, 20, 300, feed=4000),
+])
+case("m01_optional_stop_on", "G00 X10.\nM01\nG00 X20.\n", [
+    row("RAPID", 1, 0, 0.075, 0, 300, 10, 300, feed=4000),
+    row("RAPID", 3, 0.075, 0.15, 10, 300, 20, 300, feed=4000),
+], args="--optional-stop")
+case("m30_end", "G00 X10.\nM30\nG00 X20.\n", [
+    row("RAPID", 1, 0, 0.075, 0, 300, 10, 300, feed=4000),
+])
+# M03/M05/M04: the rpm column follows the spindle (G98 cuts need no spindle).
+case("m03_m04_m05_spindle", "G98 G97 S800\nM03\nG01 X10. F100.\nM05\nG01 X20.\nM04\nG01 X30.\n", [
+    row("LINE", 3, 0, 3, 0, 300, 10, 300, feed=100, rpm=800),
+    row("LINE", 5, 3, 6, 10, 300, 20, 300, feed=100, rpm=0),
+    row("LINE", 7, 6, 9, 20, 300, 30, 300, feed=100, rpm=800),
+])
+# M05 in a cutting block acts after the cut (SPEC 7 order).
+case("m05_after_motion", "M03 S500\nG01 X10. F0.2 M05\n", [
+    row("LINE", 2, 0, 3, 0, 300, 10, 300, feed=100, rpm=500),
+])
+case("m08_m09_coolant", "G98\nM08\nG01 X10. F100. M09\n", [
+    row("LINE", 3, 0, 3, 0, 300, 10, 300, feed=100),
+])
+# Classic C axis: brake on, C-axis mode, C/H rotations (no time), off again.
+case("m41_m91_m86_m87_c_axis", "M86\nM41\nG00 C90.\nH-100.\nM91\nM87\nG00 X10.\n", [
+    row("RAPID", 7, 0, 0.075, 0, 300, 10, 300, feed=4000),
+], args="--dialect classic")
+# Offset 02 (X +0.4 diameter, Z -0.2) shifts the controlled point; T0200 cancels.
+case("t_tool_offset", "T0202\nG00 X20. Z10.\nG00 U-2.\nT0200\nG00 X20.\n", [
+    row("RAPID", 2, 0, 0.153, 0, 300, 20.4, 279.6, feed=BOTH),
+    row("RAPID", 2, 0.153, 2.1765, 20.4, 279.6, 20.4, 9.8, feed=8000),
+    row("RAPID", 3, 2.1765, 2.1915, 20.4, 9.8, 18.4, 9.8, feed=4000),
+    row("RAPID", 5, 2.1915, 2.2035, 18.4, 9.8, 20, 9.8, feed=4000),
+])
+case("block_skip_on", "G00 X10.\n/G00 X50.\nG00 Z250.\n", [
+    row("RAPID", 1, 0, 0.075, 0, 300, 10, 300, feed=4000),
+    row("RAPID", 3, 0.075, 0.45, 10, 300, 10, 250, feed=8000),
+], args="--block-skip")
+case("block_skip_off", "G00 X10.\n/G00 X50.\nG00 Z250.\n", [
+    row("RAPID", 1, 0, 0.075, 0, 300, 10, 300, feed=4000),
+    row("RAPID", 2, 0.075, 0.375, 10, 300, 50, 300, feed=4000),
+    row("RAPID", 3, 0.375, 0.75, 50, 300, 50, 250, feed=8000),
+])
+
+# ---------------------------------------------------------------- alarms
+X10 = [row("RAPID", 1, 0, 0.075, 0, 300, 10, 300, feed=4000)]
+case("alarm_a101_speed_above_max", "G00 X10.\nG97 S3500 M03\n", X10,
+     alarm="program.nc:2:5: alarm A101")
+case("alarm_a102_no_feed", "G98\nG00 X10.\nG01 Z290.\n",
+     [row("RAPID", 2, 0, 0.075, 0, 300, 10, 300, feed=4000)], alarm="program.nc:3:1: alarm A102")
+case("alarm_a103_g99_without_s", "M03\nG00 X10.\nG01 Z290. F0.2\n",
+     [row("RAPID", 2, 0, 0.075, 0, 300, 10, 300, feed=4000)], alarm="program.nc:3:1: alarm A103")
+# Sample 05: N40 (line 12) cuts under G99 with the spindle stopped.
+with open(os.path.join(HERE, "..", "..", "resources", "samples", "05-runtime-alarms.txt")) as fh:
+    SAMPLE05 = fh.read()
+case("alarm_a104_sample05", SAMPLE05, [
+    row("RAPID", 11, 0, 0.3375, 0, 300, 45, 255, feed=BOTH),   # X 22.5 radius 0.3375 s
+    row("RAPID", 11, 0.3375, 2.235, 45, 255, 45, 2, feed=8000),  # Z 298 mm 2.235 s
+], alarm="program.nc:12:5: alarm A104")
+case("alarm_a105_reversal", "M03 S500\nG98 G01 X10. F100.\nM04\n",
+     [row("LINE", 2, 0, 3, 0, 300, 10, 300, feed=100, rpm=500)], alarm="program.nc:3:1: alarm A105")
+case("alarm_a106_start_with_brake", "M86\nS100 M03\n", [], alarm="program.nc:2:6: alarm A106")
+case("alarm_a107_brake_while_turning", "M03 S100\nM86\n", [], alarm="program.nc:2:1: alarm A107")
+RPM30 = 1000 * 100 / (math.pi * 30)
+case("alarm_a108_thread_under_g96", "G96 S100 M03\nG00 X30. Z5.\nG32 Z-10. F1.\n", [
+    row("RAPID", 2, 0, 0.225, 0, 300, 30, 270, feed=BOTH, rpm=3000),  # X0: clamped to the maximum
+    row("RAPID", 2, 0.225, 2.2125, 30, 270, 30, 5, feed=8000, rpm=RPM30),
+], alarm="program.nc:3:1: alarm A108")
+case("alarm_a109_c_outside_c_axis_mode", "G00 C90.\n", [], alarm="program.nc:1:5: alarm A109",
+     args="--dialect classic")
+case("alarm_a110_c_axis_without_brake", "M41\n", [], alarm="program.nc:1:1: alarm A110",
+     args="--dialect classic")
+case("alarm_a111_brake_release_in_c_axis", "M86\nM41\nM87\n", [], alarm="program.nc:3:1: alarm A111",
+     args="--dialect classic")
+case("alarm_a112_travel_limit", "G00 X10.\nG00 Z1200.\n", X10, alarm="program.nc:2:1: alarm A112")
+case("alarm_a113_arc_not_on_one_circle", "G98 G00 X20. Z0.\nG02 X30. Z-5. I5. K1. F100.\n",
+     [row("RAPID", 1, 0, 0.15, 0, 300, 20, 280, feed=BOTH), row("RAPID", 1, 0.15, 2.25, 20, 280, 20, 0, feed=8000)],
+     alarm="program.nc:2:15: alarm A113")
+case("alarm_a114_arc_radius_too_small", "G98 G00 X20. Z0.\nG02 X30. Z-5. R3. F100.\n",
+     [row("RAPID", 1, 0, 0.15, 0, 300, 20, 280, feed=BOTH), row("RAPID", 1, 0.15, 2.25, 20, 280, 20, 0, feed=8000)],
+     alarm="program.nc:2:15: alarm A114")
+# G27 to X10 Z20 (not the reference point): the move runs, then the alarm.
+# From X40 Z50: X 15 radius and Z 30 both take 0.225 s: one straight rapid.
+case("alarm_a115_g27_not_reference", "G00 X40. Z50.\nG27 X10. Z20.\n", TO_X40_Z50 + [
+    row("RAPID", 2, 1.875, 2.1, 40, 50, 10, 20, feed=BOTH),
+], alarm="program.nc:2:1: alarm A115")
+case("alarm_a116_thread_spindle_stopped", "G97 S500\nG32 Z-10. F1.\n", [], alarm="program.nc:2:1: alarm A116")
+case("alarm_a119_thread_without_s", "M03\nG32 Z-10. F1.\n", [], alarm="program.nc:2:1: alarm A119")
+# Nose-comp interference: a concave R0.3 fillet under a R0.8 nose. The fillet
+# is tangent to the Z-10 line, so the line's offset runs on to Z-10 + 0 in
+# centre terms: centre Z-10 x10.8 -> tip X20 Z-10.8 (12 mm, 7.2 s); the arc
+# block (line 4) raises A201 and nothing after it runs.
+case("alarm_a201_nose_comp_interference",
+     "G98 T0101\nG42 G00 X20. Z2.\nG01 Z-10. F100.\nG02 X20.6 Z-10.3 R0.3\nG01 X30.\nG40 G00 X50. Z10.\n", [
+         row("RAPID", 2, 0, 0.15, 0, 300, 20, 280, feed=BOTH),
+         row("RAPID", 2, 0.15, 2.241, 20, 280, 20, 1.2, feed=8000),
+         row("LINE", 3, 2.241, 9.441, 20, 1.2, 20, -10.8, feed=100),
+     ], alarm="program.nc:4:1: alarm A201")
