@@ -71,10 +71,11 @@ TEST_P(LineLineCorner, MatchesTheSeedClosedFormOrBridges) {
       }
       // Nowhere along them does the nose come closer than R to the two programmed lines.
       const std::vector<Segment> contour{moves[1], moves[2]};
-      for (const CompPiece& piece : out.pieces)
-        if (piece.source >= 1)
-          for (int k = 0; k <= 40; ++k)
+      for (const CompPiece& piece : out.pieces) {
+        if (piece.source == 0) continue;
+        for (int k = 0; k <= 40; ++k)
           EXPECT_GE(testing::distanceToPath(piece.path.pointAt(k / 40.0), contour), R - 1e-9);
+      }
     }
   }
 }
