@@ -7,7 +7,7 @@
 //   sim.stock(), sim.alarm(), sim.toolPosition(), FinishedPart(sim.stock())
 //
 // Every move removes what its cutting edge sweeps, without gaps: the nose circle
-// is swept analytically along lines (arcs: chords within 0.0005 mm), bitmap
+// is swept analytically along lines (arcs: chords within 0.0002 mm), bitmap
 // boxes are swept per stock column. Rapid dog-legs come as separate Rapid moves.
 // A G32 move stamps the tool once per lead along its path (the section plane sees
 // the tool once per revolution), so threads show their teeth.
@@ -94,7 +94,7 @@ class CutSimulator {
   const ToolShape* currentTool();       // shape of the tool at time(), nullptr if none
   const Stock& stock() const { return stock_; }
   const Chuck& chuck() const { return chuck_; }
-  double removedVolume() const { return stock_.initialVolume() - stock_.volume(); }
+  double removedVolume() const { return stock_.removedVolume(); }
   const std::vector<Diagnostic>& toolDiagnostics() const { return tools_.diagnostics(); }
 
  private:

@@ -27,6 +27,7 @@ class Stock {
   double resolution() const { return dz_; }
   int columnCount() const { return static_cast<int>(columns_.size()); }
   double zLeft(int i) const { return -length_ + i * dz_; }
+  double zRight(int i) const { return i + 1 == columnCount() ? 0.0 : -length_ + (i + 1) * dz_; }
   double zCentre(int i) const { return -length_ + (i + 0.5) * dz_; }
   // Column whose Z range holds z, or -1 outside the bar.
   int columnAt(double z) const;
@@ -47,6 +48,7 @@ class Stock {
 
   double volume() const;          // mm^3 of material left
   double initialVolume() const;   // mm^3 of the bar
+  double removedVolume() const { return removed_; }  // sum of what remove() took
 
  private:
   void updateOuter(int i);
@@ -54,6 +56,7 @@ class Stock {
   double diameter_ = 0.0;
   double length_ = 0.0;
   double dz_ = kDefaultResolution;
+  double removed_ = 0.0;
   // Most columns hold one interval; the rest spill into a per-column vector.
   std::vector<std::vector<Interval>> columns_;
   std::vector<double> outer_;

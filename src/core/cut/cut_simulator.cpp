@@ -1,0 +1,362 @@
+#include "klueng/core/cut/cut_simulator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "sweep.h"
+
+namespace klueng::core::cut {
+
+using machine::Move;
+using machine::MoveKind;
+
+namespace {
+
+constexpr double kNoseChordTolerance = 0.0002;  // mm: nose sweeps along arcs are this close to exact
+constexpr double kBoxChordTolerance = 0.01;      // mm: the bitmap edge is 0.5 mm pixels anyway
+
+// Controlled-point pieces of the sub-path [s0, s1] of a move: straight pieces
+// (arcs as chords within `tolerance`), or for G32 the stamp positions (a == b).
+std::vector<std::pair<Vec2, Vec2>> piecesOf(const Move& m, double s0, double s1, double tolerance) {
+  std::vector<std::pair<Vec2, Vec2>> out;
+  const Segment& p = m.path;
+  if (m.kind == MoveKind::Thread) {
+    const double dz = std::abs(p.end.x() - p.start.x());
+    const double span = dz > 1e-9 ? dz : p.length();
+    if (m.lead <= 0.0 || span <= 1e-12) {
+      if (s0 == 0.0) out.emplace_back(p.start, p.start);
+      if (s1 >= 1.0 && span > 1e-12) out.emplace_back(p.end, p.end);
+      return out;
+    }
+    const double step = m.lead / span;  // path parameter per revolution
+    const long kFirst = s0 == 0.0 ? 0 : static_cast<long>(std::floor(s0 / step)) + 1;
+    for (long k = kFirst;; ++k) {
+      const double s = k * step;
+      if (s > s1 || s > 1.0) break;
+      if (s > s0 || k == 0) out.emplace_back(p.pointAt(s), p.pointAt(s));
+    }
+    if (s1 >= 1.0) out.emplace_back(p.end, p.end);  // the tool stands here before it retracts
+    return out;
+  }
+  if (!p.isArc()) {
+    out.emplace_back(p.pointAt(s0), p.pointAt(s1));
+    return out;
+  }
+  const double rho = p.radius();
+  const double sweep = p.sweep() * (s1 - s0);
+  double maxStep = std::numbers::pi / 8;
+  if (rho > tolerance) maxStep = std::min(maxStep, 2.0 * std::acos(1.0 - tolerance / rho));
+  const int n = std::max(1, static_cast<int>(std::ceil(sweep / maxStep)));
+  Vec2 prev = p.pointAt(s0);
+  for (int k = 1; k <= n; ++k) {
+    const Vec2 next = p.pointAt(s0 + (s1 - s0) * k / n);
+    out.emplace_back(prev, next);
+    prev = next;
+  }
+  return out;
+}
+
+Diagnostic makeAlarm(const char* code, const Move& m, const Vec2& where) {
+  Diagnostic d;
+  d.severity = Severity::Alarm;
+  d.code = code;
+  d.range = SourceRange{m.line, 1, 0};
+  d.args = {fmt::format("{:.3f}", where.x() + 0.0), fmt::format("{:.3f}", 2.0 * where.y() + 0.0)};
+  return d;
+}
+
+enum class Hit { None, Rapid, SpindleStopped, Holder, Chuck };
+
+}  // namespace
+
+CutSetup CutSetup::from(const io::JobHeader& header, const machine::MachineSetup& setup) {
+  CutSetup s;
+  s.stockDiameter = header.diameterMm();
+  s.stockLength = header.lengthMm();
+  s.machine = setup.machine;
+  s.tools = setup.tools;
+  s.offsets = setup.offsets;
+  return s;
+}
+
+ToolLibrary::ToolLibrary(io::ToolTable tools, io::OffsetTable offsets)
+    : tools_(std::move(tools)), offsets_(std::move(offsets)) {}
+
+const ToolShape* ToolLibrary::get(int tool, int offset) {
+  if (tool < 1 || tool > io::kToolCount) return nullptr;
+  const auto key = std::make_pair(tool, offset);
+  auto it = cache_.find(key);
+  if (it == cache_.end()) {
+    std::optional<ToolShape> shape;
+    const std::string path = tools_.bitmapPath(tool);
+    if (!path.empty()) {
+      const io::Offset o = offset >= 1 && offset <= io::kOffsetCount ? offsets_.at(offset) : io::Offset{};
+      io::ReadResult<ToolShape> r = loadToolShape(path, o.r, o.tip);
+      // One report per bitmap file, not one per offset it is used with.
+      bool known = false;
+      for (const auto& [k, v] : cache_) known = known || (k.first == tool);
+      if (!known) diagnostics_.insert(diagnostics_.end(), r.diagnostics.begin(), r.diagnostics.end());
+      if (r.ok()) shape = std::move(r.value);
+    }
+    it = cache_.emplace(key, std::move(shape)).first;
+  }
+  return it->second ? &*it->second : nullptr;
+}
+
+void ToolLibrary::set(int tool, int offset, ToolShape shape) { cache_[{tool, offset}] = std::move(shape); }
+
+CutSimulator::CutSimulator(const machine::Timeline& timeline, const CutSetup& setup, const CutOptions& options)
+    : CutSimulator(timeline, setup, ToolLibrary(setup.tools, setup.offsets), options) {}
+
+CutSimulator::CutSimulator(const machine::Timeline& timeline, const CutSetup& setup, ToolLibrary tools,
+                           const CutOptions& options)
+    : timeline_(&timeline), setup_(setup), options_(options), tools_(std::move(tools)) {
+  reset();
+}
+
+void CutSimulator::reset() {
+  stock_ = Stock(setup_.stockDiameter, setup_.stockLength, options_.resolution);
+  chuck_ = Chuck{};
+  chuck_.stockLength = setup_.stockLength;
+  chuck_.stockRadius = setup_.stockDiameter / 2.0;
+  chuck_.grip = std::clamp(setup_.machine.chuckGrip, 0.0, setup_.stockLength);
+  chuck_.jawHeight = std::max(0.0, setup_.machine.chuckJawHeight);
+  time_ = 0.0;
+  nextMove_ = 0;
+  nextMoveDone_ = 0.0;
+  alarm_.reset();
+  alarmTime_ = 0.0;
+  alarmPosition_ = Vec2::Zero();
+}
+
+double CutSimulator::endTime() const { return alarm_ ? alarmTime_ : timeline_->cycleTime(); }
+
+bool CutSimulator::finished() const { return alarm_.has_value() || nextMove_ >= timeline_->moves.size(); }
+
+std::optional<Diagnostic> CutSimulator::stoppingAlarm() const {
+  if (alarm_) return alarm_;
+  return timeline_->alarm;
+}
+
+void CutSimulator::runToEnd() { advanceTo(timeline_->cycleTime()); }
+
+void CutSimulator::advanceTo(double t) {
+  if (t < time_) reset();
+  const auto& moves = timeline_->moves;
+  while (!alarm_ && nextMove_ < moves.size()) {
+    const Move& m = moves[nextMove_];
+    if (t < m.tStart) break;
+    const double span = m.tEnd - m.tStart;
+    const double s = (t >= m.tEnd || span <= 0.0) ? 1.0 : std::clamp((t - m.tStart) / span, 0.0, 1.0);
+    if (s > nextMoveDone_ || s >= 1.0) {
+      cutMove(nextMove_, s);
+    }
+    if (alarm_) break;
+    if (s >= 1.0) {
+      ++nextMove_;
+      nextMoveDone_ = 0.0;
+    } else {
+      nextMoveDone_ = s;
+      break;
+    }
+  }
+  time_ = alarm_ ? std::min(t, alarmTime_) : t;
+}
+
+Vec2 CutSimulator::toolPosition() const {
+  if (alarm_ && time_ >= alarmTime_) return alarmPosition_;
+  return timeline_->positionAt(time_);
+}
+
+int CutSimulator::currentMove() const { return timeline_->moveAt(time_); }
+
+const ToolShape* CutSimulator::currentTool() {
+  const int i = currentMove();
+  if (i < 0) return nullptr;
+  const Move& m = timeline_->moves[static_cast<std::size_t>(i)];
+  return tools_.get(m.tool, m.offset);
+}
+
+namespace {
+
+// What one move's sweep does to the stock and chuck.
+struct SweepContext {
+  Stock* stock;
+  const Chuck* chuck;
+  const ToolShape* tool;
+  double tolerance;
+  detail::Grid grid;
+};
+
+// True if any swept primitive overlaps the box (z0..z1, x0..x1) by more than tolerance.
+template <typename Primitive>
+bool hitsBox(const SweepContext& c, const Box& target, Primitive&& sweepOn) {
+  if (target.z1 <= target.z0 || target.x1 <= target.x0) return false;
+  const double dz = c.grid.dz;
+  detail::Grid g{target.z0, dz, std::max(1, static_cast<int>(std::ceil((target.z1 - target.z0) / dz)))};
+  g.dz = (target.z1 - target.z0) / g.count;
+  bool hit = false;
+  sweepOn(g, [&](int, double lo, double hi) {
+    if (std::min(hi, target.x1) - std::max(lo, target.x0) > c.tolerance) hit = true;
+  });
+  return hit;
+}
+
+bool boxesOverlap(const Box& a, const Box& b) {
+  return a.z0 < b.z1 && b.z0 < a.z1 && a.x0 < b.x1 && b.x0 < a.x1;
+}
+
+Box sweptBounds(const std::vector<std::pair<Vec2, Vec2>>& pieces, const Box& local) {
+  Box b{1e300, -1e300, 1e300, -1e300};
+  for (const auto& [a, e] : pieces) {
+    b.z0 = std::min({b.z0, a.x() + local.z0, e.x() + local.z0});
+    b.z1 = std::max({b.z1, a.x() + local.z1, e.x() + local.z1});
+    b.x0 = std::min({b.x0, a.y() + local.x0, e.y() + local.x0});
+    b.x1 = std::max({b.x1, a.y() + local.x1, e.y() + local.x1});
+  }
+  return b;
+}
+
+// Runs f(i, lo, hi) over every column interval of the cutting edge (or of the
+// holder) swept along the pieces, skipping primitives that stay above all material.
+template <typename F>
+void forEachInterval(const SweepContext& c, const std::vector<std::pair<Vec2, Vec2>>& nosePieces,
+                     const std::vector<std::pair<Vec2, Vec2>>& boxPieces, bool holder, F&& f) {
+  const ToolShape& t = *c.tool;
+  auto above = [&](const Box& swept) {
+    int first, last;
+    c.stock->columnRange(swept.z0, swept.z1, first, last);
+    return first > last || swept.x0 >= c.stock->maxOuterRadius(first, last);
+  };
+  if (!holder && t.noseRadius > 0.0) {
+    const double r = t.noseRadius;
+    for (const auto& [a, b] : nosePieces) {
+      const Vec2 ca = a + t.noseCentre, cb = b + t.noseCentre;
+      const Box swept{std::min(ca.x(), cb.x()) - r, std::max(ca.x(), cb.x()) + r,
+                      std::min(ca.y(), cb.y()) - r, std::max(ca.y(), cb.y()) + r};
+      if (above(swept)) continue;
+      detail::sweepDiscLine(c.grid, ca, cb, r, f);
+    }
+  }
+  for (const Box& box : holder ? t.holder : t.cutting) {
+    for (const auto& [a, b] : boxPieces) {
+      const Box swept{std::min(a.x(), b.x()) + box.z0, std::max(a.x(), b.x()) + box.z1,
+                      std::min(a.y(), b.y()) + box.x0, std::max(a.y(), b.y()) + box.x1};
+      if (above(swept)) continue;
+      detail::sweepBoxLine(c.grid, a, b, box, f);
+    }
+  }
+}
+
+bool overlapsStock(const SweepContext& c, const std::vector<std::pair<Vec2, Vec2>>& nosePieces,
+                   const std::vector<std::pair<Vec2, Vec2>>& boxPieces, bool holder) {
+  bool hit = false;
+  forEachInterval(c, nosePieces, boxPieces, holder, [&](int i, double lo, double hi) {
+    if (!hit && c.stock->overlap(i, lo, hi) > c.tolerance) hit = true;
+  });
+  return hit;
+}
+
+bool hitsChuck(const SweepContext& c, const std::vector<std::pair<Vec2, Vec2>>& nosePieces,
+               const std::vector<std::pair<Vec2, Vec2>>& boxPieces) {
+  const Chuck& k = *c.chuck;
+  const Box targets[] = {{k.jawZMin(), k.jawZMax(), k.jawXMin(), k.jawXMax()},
+                         {k.bodyZMin(), k.bodyZMax(), 0.0, k.bodyXMax()}};
+  const ToolShape& t = *c.tool;
+  for (const Box& target : targets) {
+    if (!boxesOverlap(sweptBounds(boxPieces, t.bounds), target)) continue;
+    for (const auto* list : {&t.cutting, &t.holder})
+      for (const Box& box : *list)
+        for (const auto& [a, b] : boxPieces)
+          if (hitsBox(c, target, [&](const detail::Grid& g, auto&& f) { detail::sweepBoxLine(g, a, b, box, f); }))
+            return true;
+    if (t.noseRadius > 0.0)
+      for (const auto& [a, b] : nosePieces)
+        if (hitsBox(c, target, [&](const detail::Grid& g, auto&& f) {
+              detail::sweepDiscLine(g, a + t.noseCentre, b + t.noseCentre, t.noseRadius, f);
+            }))
+          return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+void CutSimulator::cutMove(std::size_t index, double sEnd) {
+  const Move& m = timeline_->moves[index];
+  if (m.kind == MoveKind::Dwell) return;
+  const ToolShape* tool = tools_.get(m.tool, m.offset);
+  if (!tool) return;
+  const double s0 = nextMoveDone_;
+  SweepContext ctx{&stock_, &chuck_, tool, options_.collisionTolerance,
+                   detail::Grid{-stock_.length(), stock_.resolution(), stock_.columnCount()}};
+
+  auto nose = [&](double a, double b) { return piecesOf(m, a, b, kNoseChordTolerance); };
+  auto boxes = [&](double a, double b) { return piecesOf(m, a, b, kBoxChordTolerance); };
+
+  // Smallest s in (s0, sEnd] at which test(s0, s) holds (test(s0, sEnd) is known to hold).
+  auto earliest = [&](auto&& test) {
+    double lo = s0, hi = sEnd;
+    for (int k = 0; k < 40 && hi - lo > 1e-9; ++k) {
+      const double mid = (lo + hi) / 2;
+      if (test(mid)) hi = mid;
+      else lo = mid;
+    }
+    return hi;
+  };
+  auto raise = [&](const char* code, double s) {
+    alarm_ = makeAlarm(code, m, m.path.pointAt(s));
+    alarmPosition_ = m.path.pointAt(s);
+    alarmTime_ = m.tStart + s * (m.tEnd - m.tStart);
+  };
+
+  const auto nosePieces = nose(s0, sEnd);
+  const auto boxPieces = boxes(s0, sEnd);
+
+  // Quick rejection: the whole tool stays above every bit of material it passes.
+  const Box swept = sweptBounds(boxPieces, tool->bounds);
+  int first, last;
+  stock_.columnRange(swept.z0, swept.z1, first, last);
+  const bool nearStock = first <= last && swept.x0 < stock_.maxOuterRadius(first, last);
+
+  if (options_.detectCollisions && hitsChuck(ctx, nosePieces, boxPieces)) {
+    const double s = earliest([&](double e) { return hitsChuck(ctx, nose(s0, e), boxes(s0, e)); });
+    // Cut what the tool removed on its way in, then stop at the crash.
+    const auto inNose = nose(s0, s);
+    const auto inBoxes = boxes(s0, s);
+    if (nearStock && m.kind != MoveKind::Rapid && m.spindle != machine::SpindleDir::Stopped)
+      forEachInterval(ctx, inNose, inBoxes, false, [&](int i, double lo, double hi) { stock_.remove(i, lo, hi); });
+    raise("A304", s);
+    return;
+  }
+  if (!nearStock) return;
+
+  const bool cutting = m.kind != MoveKind::Rapid && m.spindle != machine::SpindleDir::Stopped;
+  if (!cutting) {
+    if (!options_.detectCollisions) return;
+    // Rapids and a stopped spindle must not touch the material at all.
+    if (overlapsStock(ctx, nosePieces, boxPieces, false) || overlapsStock(ctx, nosePieces, boxPieces, true)) {
+      const double s = earliest([&](double e) {
+        const auto n = nose(s0, e);
+        const auto b = boxes(s0, e);
+        return overlapsStock(ctx, n, b, false) || overlapsStock(ctx, n, b, true);
+      });
+      const auto n = nose(s0, s);
+      const auto b = boxes(s0, s);
+      const bool edge = overlapsStock(ctx, n, b, false);
+      raise(m.kind == MoveKind::Rapid ? "A301" : (edge ? "A302" : "A303"), s);
+    }
+    return;
+  }
+
+  forEachInterval(ctx, nosePieces, boxPieces, false, [&](int i, double lo, double hi) { stock_.remove(i, lo, hi); });
+  if (options_.detectCollisions && !tool->holder.empty() && overlapsStock(ctx, nosePieces, boxPieces, true)) {
+    const double s = earliest([&](double e) { return overlapsStock(ctx, nose(s0, e), boxes(s0, e), true); });
+    raise("A303", s);
+  }
+}
+
+}  // namespace klueng::core::cut

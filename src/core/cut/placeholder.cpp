@@ -1,2 +1,0 @@
-// Material removal lives here (issue 4).
-namespace klueng::core::cut {}

@@ -1,0 +1,134 @@
+#include "klueng/core/cut/stock.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace klueng::core::cut {
+
+namespace {
+constexpr int kMaxColumns = 1 << 24;
+}
+
+Stock::Stock(double diameter, double length, double resolution)
+    : diameter_(diameter), length_(length), dz_(resolution) {
+  if (!(diameter_ > 0.0)) diameter_ = 0.0;
+  if (!(length_ > 0.0)) length_ = 0.0;
+  if (!(dz_ > 0.0)) dz_ = kDefaultResolution;
+  if (length_ / dz_ > kMaxColumns) dz_ = length_ / kMaxColumns;
+  const int n = length_ > 0.0 ? std::max(1, static_cast<int>(std::lround(std::ceil(length_ / dz_ - 1e-9)))) : 0;
+  // Keep the columns exactly tiling [-length, 0].
+  if (n > 0) dz_ = length_ / n;
+  const double r = diameter_ / 2.0;
+  columns_.assign(static_cast<std::size_t>(n), std::vector<Interval>{Interval{0.0, r}});
+  if (r <= 0.0)
+    for (auto& c : columns_) c.clear();
+  outer_.assign(static_cast<std::size_t>(n), r);
+  blockMax_.assign(static_cast<std::size_t>((n + kBlock - 1) / kBlock), r);
+}
+
+int Stock::columnAt(double z) const {
+  const double f = (z + length_) / dz_;
+  if (!(f >= 0.0) || f > columnCount()) return -1;
+  return std::min(static_cast<int>(f), columnCount() - 1);
+}
+
+void Stock::columnRange(double z0, double z1, int& first, int& last) const {
+  // Centre of column i is -L + (i + 0.5) dz; want z0 <= centre <= z1.
+  const double f0 = std::ceil((z0 + length_) / dz_ - 0.5);
+  const double f1 = std::floor((z1 + length_) / dz_ - 0.5);
+  const double n = columnCount();
+  first = static_cast<int>(std::clamp(f0, 0.0, n));
+  last = static_cast<int>(std::clamp(f1, -1.0, n - 1));
+}
+
+std::span<const Interval> Stock::column(int i) const { return columns_[static_cast<std::size_t>(i)]; }
+
+double Stock::innerRadius(int i) const {
+  const auto& c = columns_[static_cast<std::size_t>(i)];
+  return c.empty() ? 0.0 : c.front().lo;
+}
+
+double Stock::maxOuterRadius(int first, int last) const {
+  double m = 0.0;
+  first = std::max(first, 0);
+  last = std::min(last, columnCount() - 1);
+  int i = first;
+  while (i <= last) {
+    if (i % kBlock == 0 && i + kBlock - 1 <= last) {
+      m = std::max(m, blockMax_[static_cast<std::size_t>(i / kBlock)]);
+      i += kBlock;
+    } else {
+      m = std::max(m, outer_[static_cast<std::size_t>(i)]);
+      ++i;
+    }
+  }
+  return m;
+}
+
+void Stock::updateOuter(int i) {
+  const auto& c = columns_[static_cast<std::size_t>(i)];
+  const double old = outer_[static_cast<std::size_t>(i)];
+  const double now = c.empty() ? 0.0 : c.back().hi;
+  outer_[static_cast<std::size_t>(i)] = now;
+  double& bm = blockMax_[static_cast<std::size_t>(i / kBlock)];
+  if (now < old && old >= bm) {
+    const int b0 = (i / kBlock) * kBlock;
+    const int b1 = std::min(b0 + kBlock, columnCount());
+    bm = 0.0;
+    for (int k = b0; k < b1; ++k) bm = std::max(bm, outer_[static_cast<std::size_t>(k)]);
+  }
+}
+
+double Stock::remove(int i, double lo, double hi) {
+  if (i < 0 || i >= columnCount() || !(hi > lo)) return 0.0;
+  if (lo >= outer_[static_cast<std::size_t>(i)]) return 0.0;  // fast path: above the material
+  auto& c = columns_[static_cast<std::size_t>(i)];
+  if (c.size() == 1 && hi >= c[0].hi && lo > c[0].lo) {
+    // The common case: turning the outside of a solid or bored column down.
+    const double area = c[0].hi * c[0].hi - lo * lo;
+    c[0].hi = lo;
+    updateOuter(i);
+    removed_ += std::numbers::pi * area * dz_;
+    return std::numbers::pi * area * dz_;
+  }
+  double removedArea = 0.0;  // integral of 2*pi*r dr over the removed radii, / pi
+  std::vector<Interval> kept;
+  bool changed = false;
+  for (const Interval& in : c) {
+    if (in.hi <= lo || in.lo >= hi) {
+      kept.push_back(in);
+      continue;
+    }
+    changed = true;
+    const double a = std::max(in.lo, lo);
+    const double b = std::min(in.hi, hi);
+    removedArea += b * b - a * a;
+    if (in.lo < lo) kept.push_back({in.lo, lo});
+    if (in.hi > hi) kept.push_back({hi, in.hi});
+  }
+  if (!changed) return 0.0;
+  c = std::move(kept);
+  updateOuter(i);
+  removed_ += std::numbers::pi * removedArea * dz_;
+  return std::numbers::pi * removedArea * dz_;
+}
+
+double Stock::overlap(int i, double lo, double hi) const {
+  if (i < 0 || i >= columnCount() || lo >= outer_[static_cast<std::size_t>(i)]) return 0.0;
+  double best = 0.0;
+  for (const Interval& in : columns_[static_cast<std::size_t>(i)])
+    best = std::max(best, std::min(in.hi, hi) - std::max(in.lo, lo));
+  return best;
+}
+
+double Stock::volume() const {
+  double area = 0.0;
+  for (const auto& c : columns_)
+    for (const Interval& in : c) area += in.hi * in.hi - in.lo * in.lo;
+  return std::numbers::pi * area * dz_;
+}
+
+double Stock::initialVolume() const { return std::numbers::pi * diameter_ * diameter_ / 4.0 * length_; }
+
+}  // namespace klueng::core::cut

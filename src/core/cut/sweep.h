@@ -1,0 +1,91 @@
+#pragma once
+// Column-wise sweeps of tool primitives (internal to the cut module).
+// A column grid samples Z at column centres zStart + (i + 0.5) * dz; each sweep
+// calls f(i, lo, hi) with the radial interval the swept primitive covers at
+// column i's centre. Convex primitives give one interval per column.
+#include <algorithm>
+#include <cmath>
+
+#include "klueng/core/cut/tool_shape.h"
+#include "klueng/core/geometry.h"
+
+namespace klueng::core::cut::detail {
+
+struct Grid {
+  double zStart = 0.0;
+  double dz = 0.05;
+  int count = 0;
+  double centre(int i) const { return zStart + (i + 0.5) * dz; }
+  // Columns with centres in [z0, z1].
+  void range(double z0, double z1, int& first, int& last) const {
+    const double f0 = std::ceil((z0 - zStart) / dz - 0.5);
+    const double f1 = std::floor((z1 - zStart) / dz - 0.5);
+    first = static_cast<int>(std::clamp(f0, 0.0, static_cast<double>(count)));
+    last = static_cast<int>(std::clamp(f1, -1.0, static_cast<double>(count) - 1));
+  }
+};
+
+// Box (local, relative to the controlled point) swept with the controlled point
+// moving along the line a -> b.
+template <typename F>
+void sweepBoxLine(const Grid& g, const Vec2& a, const Vec2& b, const Box& box, F&& f) {
+  const double dz = b.x() - a.x();
+  int first, last;
+  g.range(std::min(a.x(), b.x()) + box.z0, std::max(a.x(), b.x()) + box.z1, first, last);
+  if (first > last) return;
+  if (std::abs(dz) < 1e-12) {
+    const double lo = std::min(a.y(), b.y()) + box.x0, hi = std::max(a.y(), b.y()) + box.x1;
+    for (int i = first; i <= last; ++i) f(i, lo, hi);
+    return;
+  }
+  const double dx = b.y() - a.y();
+  for (int i = first; i <= last; ++i) {
+    const double z = g.centre(i);
+    double s0 = (z - box.z1 - a.x()) / dz, s1 = (z - box.z0 - a.x()) / dz;
+    if (s0 > s1) std::swap(s0, s1);
+    s0 = std::max(s0, 0.0);
+    s1 = std::min(s1, 1.0);
+    if (s0 > s1) continue;
+    const double x0 = a.y() + s0 * dx, x1 = a.y() + s1 * dx;
+    f(i, std::min(x0, x1) + box.x0, std::max(x0, x1) + box.x1);
+  }
+}
+
+// Disc of radius r whose centre moves along the line a -> b (a capsule).
+template <typename F>
+void sweepDiscLine(const Grid& g, Vec2 a, Vec2 b, double r, F&& f) {
+  if (a.x() > b.x()) std::swap(a, b);
+  int first, last;
+  g.range(a.x() - r, b.x() + r, first, last);
+  if (first > last) return;
+  const double r2 = r * r;
+  auto half = [r2](double d) { return std::sqrt(std::max(0.0, r2 - d * d)); };
+  const double len = (b - a).norm();
+  if (b.x() - a.x() < 1e-9 * std::max(1.0, len) || len < 1e-12) {
+    const double lo = std::min(a.y(), b.y()), hi = std::max(a.y(), b.y());
+    const double zc = (a.x() + b.x()) / 2;
+    for (int i = first; i <= last; ++i) {
+      const double h = half(g.centre(i) - zc);
+      f(i, lo - h, hi + h);
+    }
+    return;
+  }
+  const Vec2 d = (b - a) / len;
+  const Vec2 down(d.y() * r, -d.x() * r);  // normal with negative x, length r
+  const double tLoA = a.x() + down.x(), tLoB = b.x() + down.x();  // lower tangent points' z
+  const double tHiA = a.x() - down.x(), tHiB = b.x() - down.x();  // upper tangent points' z
+  const double slope = (b.y() - a.y()) / (b.x() - a.x());
+  for (int i = first; i <= last; ++i) {
+    const double z = g.centre(i);
+    double lo, hi;
+    if (z < tLoA) lo = a.y() - half(z - a.x());
+    else if (z > tLoB) lo = b.y() - half(z - b.x());
+    else lo = a.y() + down.y() + (z - tLoA) * slope;
+    if (z < tHiA) hi = a.y() + half(z - a.x());
+    else if (z > tHiB) hi = b.y() + half(z - b.x());
+    else hi = a.y() - down.y() + (z - tHiA) * slope;
+    if (hi >= lo) f(i, lo, hi);
+  }
+}
+
+}  // namespace klueng::core::cut::detail

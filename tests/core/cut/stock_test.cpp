@@ -1,0 +1,77 @@
+#include "klueng/core/cut/stock.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace klueng::core::cut {
+namespace {
+
+TEST(Stock, ColumnsTileTheBarInWorkCoordinates) {
+  Stock s(50.0, 100.0);
+  ASSERT_EQ(s.columnCount(), 2000);
+  EXPECT_DOUBLE_EQ(s.resolution(), 0.05);
+  EXPECT_DOUBLE_EQ(s.zLeft(0), -100.0);
+  EXPECT_NEAR(s.zCentre(1999), -0.025, 1e-12);
+  EXPECT_EQ(s.columnAt(-0.01), 1999);
+  EXPECT_EQ(s.columnAt(-100.0), 0);
+  EXPECT_EQ(s.columnAt(0.5), -1);
+  EXPECT_EQ(s.columnAt(-100.5), -1);
+  EXPECT_DOUBLE_EQ(s.outerRadius(7), 25.0);
+  EXPECT_DOUBLE_EQ(s.innerRadius(7), 0.0);
+  int first, last;
+  s.columnRange(-1.0, 0.0, first, last);  // centres -0.975 .. -0.025
+  EXPECT_EQ(first, 1980);
+  EXPECT_EQ(last, 1999);
+}
+
+TEST(Stock, ResolutionIsAdjustedToTileTheLengthExactly) {
+  Stock s(20.0, 10.0, 0.03);
+  EXPECT_EQ(s.columnCount(), 334);
+  EXPECT_NEAR(s.zLeft(s.columnCount() - 1) + s.resolution(), 0.0, 1e-12);
+}
+
+TEST(Stock, RemovingTheOutsideIsExactAndCountsVolume) {
+  Stock s(50.0, 100.0);
+  const double before = s.volume();
+  EXPECT_NEAR(before, std::numbers::pi * 625.0 * 100.0, 1e-6);
+  const double removed = s.remove(10, 23.4567, 40.0);
+  EXPECT_DOUBLE_EQ(s.outerRadius(10), 23.4567);
+  EXPECT_NEAR(removed, std::numbers::pi * (625.0 - 23.4567 * 23.4567) * 0.05, 1e-9);
+  EXPECT_NEAR(s.volume(), before - removed, 1e-6);
+  EXPECT_EQ(s.remove(10, 24.0, 30.0), 0.0);  // air
+}
+
+TEST(Stock, BoresAndUndercutsAreSeparateIntervals) {
+  Stock s(40.0, 50.0);
+  s.remove(3, 0.0, 5.0);    // bore
+  s.remove(3, 10.0, 12.0);  // internal groove
+  const auto col = s.column(3);
+  ASSERT_EQ(col.size(), 2u);
+  EXPECT_DOUBLE_EQ(col[0].lo, 5.0);
+  EXPECT_DOUBLE_EQ(col[0].hi, 10.0);
+  EXPECT_DOUBLE_EQ(col[1].lo, 12.0);
+  EXPECT_DOUBLE_EQ(col[1].hi, 20.0);
+  EXPECT_DOUBLE_EQ(s.innerRadius(3), 5.0);
+  EXPECT_DOUBLE_EQ(s.outerRadius(3), 20.0);
+  EXPECT_DOUBLE_EQ(s.overlap(3, 9.0, 13.0), 1.0);
+  EXPECT_DOUBLE_EQ(s.overlap(3, 10.5, 11.5), 0.0);
+  s.remove(3, 0.0, 100.0);
+  EXPECT_TRUE(s.column(3).empty());
+  EXPECT_DOUBLE_EQ(s.outerRadius(3), 0.0);
+}
+
+TEST(Stock, BlockMaximaFollowRemovals) {
+  Stock s(50.0, 100.0);
+  for (int i = 0; i < 1000; ++i) s.remove(i, 10.0, 30.0);
+  EXPECT_DOUBLE_EQ(s.maxOuterRadius(0, 999), 10.0);
+  EXPECT_DOUBLE_EQ(s.maxOuterRadius(0, 1000), 25.0);
+  EXPECT_DOUBLE_EQ(s.maxOuterRadius(500, 531), 10.0);
+  s.remove(517, 3.0, 30.0);
+  EXPECT_DOUBLE_EQ(s.maxOuterRadius(517, 517), 3.0);
+  EXPECT_DOUBLE_EQ(s.maxOuterRadius(500, 600), 10.0);
+}
+
+}  // namespace
+}  // namespace klueng::core::cut
