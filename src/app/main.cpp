@@ -1,7 +1,76 @@
-// Placeholder until the main window lands (issue 5).
+// klueng: the desktop CNC lathe simulator.
+//   klueng [FILE]                      open FILE (a program) at start
+//   klueng --lang th|en                UI language for this and later starts
+//   klueng --screenshot OUT.png FILE   open, check, save a picture of the window, exit
 #include <QApplication>
+#include <QCommandLineParser>
+#include <QFileInfo>
+#include <QIcon>
+#include <QTimer>
+#include <cstdio>
+
+#include "gui/language.h"
+#include "gui/main_window.h"
+#include "gui/resources.h"
+#include "gui/settings.h"
+
+namespace {
+
+// Grab the window once the file is loaded and checked, then quit.
+void scheduleScreenshot(klueng::gui::MainWindow* window, const QString& out, int* exitCode) {
+  auto* poll = new QTimer(window);
+  poll->setInterval(100);
+  QObject::connect(poll, &QTimer::timeout, window, [window, out, exitCode, poll] {
+    if (window->isBusy()) return;
+    poll->stop();
+    // One more pass so the last repaint (underlines, fit to view) is done.
+    QTimer::singleShot(300, window, [window, out, exitCode] {
+      const QPixmap shot = window->grab();
+      const bool ok = shot.save(out, "PNG");
+      std::printf("screenshot %s %dx%d window %dx%d\n", ok ? "saved" : "FAILED", shot.width(), shot.height(),
+                  window->width(), window->height());
+      std::fflush(stdout);
+      *exitCode = ok ? 0 : 1;
+      QApplication::exit(*exitCode);
+    });
+  });
+  poll->start();
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   QApplication app(argc, argv);
-  return 0;
+  QApplication::setOrganizationName(QStringLiteral("Klueng"));
+  QApplication::setApplicationName(QStringLiteral("klueng"));
+  QApplication::setApplicationDisplayName(QStringLiteral("Klueng"));
+  QApplication::setApplicationVersion(QStringLiteral(KLUENG_VERSION));
+  klueng::gui::initResources();
+  QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/klueng.svg")));
+
+  QCommandLineParser parser;
+  parser.setApplicationDescription(QStringLiteral("Klueng CNC lathe simulator"));
+  parser.addHelpOption();
+  parser.addVersionOption();
+  const QCommandLineOption langOption(QStringLiteral("lang"), QStringLiteral("UI language: th or en."),
+                                      QStringLiteral("code"));
+  const QCommandLineOption shotOption(QStringLiteral("screenshot"),
+                                      QStringLiteral("Save a PNG of the window to FILE and exit."),
+                                      QStringLiteral("FILE"));
+  parser.addOption(langOption);
+  parser.addOption(shotOption);
+  parser.addPositionalArgument(QStringLiteral("program"), QStringLiteral("The program file to open."));
+  parser.process(app);
+
+  if (parser.isSet(langOption)) klueng::gui::Settings().setLanguage(parser.value(langOption));
+
+  klueng::gui::MainWindow window;
+  window.show();
+  const QStringList files = parser.positionalArguments();
+  if (!files.isEmpty()) window.openFile(QFileInfo(files.first()).absoluteFilePath());
+
+  int screenshotExit = 0;
+  if (parser.isSet(shotOption)) scheduleScreenshot(&window, parser.value(shotOption), &screenshotExit);
+  const int rc = QApplication::exec();
+  return parser.isSet(shotOption) ? screenshotExit : rc;
 }

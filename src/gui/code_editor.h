@@ -1,0 +1,84 @@
+#pragma once
+// The G-code editor: a QPlainTextEdit with a gutter (breakpoint margin + file
+// line numbers), syntax colours, diagnostics underlined, the current line and
+// the executing block highlighted, and tooltips that explain the G/M word
+// under the mouse from the core's code table.
+//
+// Line numbers: the editor shows only the G-code part of the file; its first
+// line is file line firstFileLine() (7 after the 6-line header, 1 for a plain
+// G-code file). Every public line number here is a FILE line, as the core's
+// diagnostics and timeline use.
+#include <QList>
+#include <QPlainTextEdit>
+
+#include "klueng/core/diagnostic.h"
+#include "klueng/core/gcode/code_table.h"
+
+namespace klueng::gui {
+
+class GcodeHighlighter;
+class LineNumberArea;
+
+class CodeEditor : public QPlainTextEdit {
+  Q_OBJECT
+ public:
+  explicit CodeEditor(QWidget* parent = nullptr);
+
+  void setFirstFileLine(int line);
+  int firstFileLine() const { return firstFileLine_; }
+  int editorLineFromFileLine(int fileLine) const { return fileLine - firstFileLine_; }  // 0-based block
+  int fileLineFromBlock(int blockNumber) const { return blockNumber + firstFileLine_; }
+
+  void setDialect(core::gcode::Dialect d) { dialect_ = d; }
+
+  // Underline every diagnostic that falls on a G-code line (others are ignored here).
+  void setDiagnostics(const std::vector<core::Diagnostic>& diags);
+  GcodeHighlighter* highlighter() const { return highlighter_; }
+
+  // Breakpoints move with their lines as the text is edited.
+  QList<int> breakpointFileLines() const;
+  bool hasBreakpoint(int fileLine) const;
+  void toggleBreakpoint(int fileLine);
+  void clearBreakpoints();
+
+  int executingFileLine() const { return executingLine_; }
+  int cursorFileLine() const { return fileLineFromBlock(textCursor().blockNumber()); }
+
+  // Move the cursor to a file line and 1-based code-point column (0 = line start).
+  void goToFileLine(int fileLine, int column = 0);
+
+  // Help text for the word at a position in the document (empty when none).
+  QString helpForPosition(int position) const;
+
+  // Gutter helpers used by LineNumberArea.
+  int gutterWidth() const;
+  int breakpointMarginWidth() const;
+  void paintGutter(QPaintEvent* event);
+  void gutterClicked(QPoint pos);
+
+ public slots:
+  // Highlight the block being executed (file line); 0 or negative clears.
+  void setExecutingLine(int fileLine);
+
+ signals:
+  void breakpointsChanged();
+
+ protected:
+  void resizeEvent(QResizeEvent* event) override;
+  bool viewportEvent(QEvent* event) override;
+  void changeEvent(QEvent* event) override;
+
+ private:
+  void updateGutterWidth();
+  void updateGutter(const QRect& rect, int dy);
+  void updateExtraSelections();
+
+  GcodeHighlighter* highlighter_ = nullptr;
+  LineNumberArea* gutter_ = nullptr;
+  int firstFileLine_ = 1;
+  int executingLine_ = 0;
+  int breakpointCount_ = 0;
+  core::gcode::Dialect dialect_ = core::gcode::Dialect::Fanuc;
+};
+
+}  // namespace klueng::gui

@@ -1,0 +1,70 @@
+#pragma once
+// The open program file: its path, its job header (lines 1-6, edited in the Job
+// details dialog) and how it was written (plain G-code or not, encoding). The
+// G-code text itself lives in the editor's QTextDocument; this class reads and
+// writes the whole file through the core's io::readProgramFile /
+// formatProgramFile / writeTextFileAtomic so the GUI and CLI agree byte for byte.
+#include <QObject>
+#include <QString>
+#include <vector>
+
+#include "klueng/core/diagnostic.h"
+#include "klueng/core/io/program_file.h"
+
+namespace klueng::gui {
+
+// What a background load returns (plain value, safe to build off the GUI thread).
+struct LoadedProgram {
+  QString path;
+  bool ok = false;                 // a usable program was read
+  core::io::ProgramFile file;
+  QString gcode;                   // file.gcode as QString, converted off the GUI thread
+  std::vector<core::Diagnostic> diagnostics;  // header / file diagnostics (F1xx)
+};
+
+class Document : public QObject {
+  Q_OBJECT
+ public:
+  explicit Document(QObject* parent = nullptr);
+
+  // Reads and splits a program file; thread-safe (touches no Document).
+  static LoadedProgram load(const QString& path, const core::io::JobHeader& defaultsForPlain);
+
+  // Start an untitled program with the given job details.
+  void reset(const core::io::JobHeader& header);
+  // Take over a successfully loaded program.
+  void adopt(const LoadedProgram& loaded);
+
+  // Writes header + gcode atomically (UTF-8, LF). On success the path becomes
+  // `path` and the header is no longer modified.
+  bool save(const QString& path, const QString& gcode, QString* error);
+  // The exact text save() would write.
+  std::string formatted(const QString& gcode) const;
+
+  QString filePath() const { return path_; }
+  bool isUntitled() const { return path_.isEmpty(); }
+  // "untitled.txt" or the file's name, for the title bar.
+  QString displayName() const;
+
+  const core::io::JobHeader& header() const { return file_.header; }
+  void setHeader(const core::io::JobHeader& header);
+  bool isPlainGcode() const { return file_.plainGcode; }
+  // File line of the editor's first line: 7 after a 6-line header, 1 for plain files.
+  int gcodeFirstLine() const { return file_.gcodeFirstLine; }
+  // Diagnostics of the header and file format from the last load (F1xx, rule 13).
+  const std::vector<core::Diagnostic>& fileDiagnostics() const { return fileDiagnostics_; }
+
+  bool isHeaderModified() const { return headerModified_; }
+
+ signals:
+  void headerChanged();
+  void pathChanged(const QString& path);
+
+ private:
+  QString path_;
+  core::io::ProgramFile file_;
+  std::vector<core::Diagnostic> fileDiagnostics_;
+  bool headerModified_ = false;
+};
+
+}  // namespace klueng::gui

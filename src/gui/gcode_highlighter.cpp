@@ -1,0 +1,108 @@
+#include "gui/gcode_highlighter.h"
+
+#include <QColor>
+#include <QSet>
+#include <QTextDocument>
+
+namespace klueng::gui {
+
+GcodeHighlighter::GcodeHighlighter(QTextDocument* document) : QSyntaxHighlighter(document) {
+  auto set = [this](Kind k, const QColor& c, bool bold = false, bool italic = false) {
+    QTextCharFormat f;
+    f.setForeground(c);
+    if (bold) f.setFontWeight(QFont::Bold);
+    f.setFontItalic(italic);
+    formats_[static_cast<int>(k)] = f;
+  };
+  set(Kind::GCode, QColor(0x1f, 0x4e, 0xc8), true);    // blue
+  set(Kind::MCode, QColor(0xa0, 0x22, 0xa8), true);    // purple
+  set(Kind::Tool, QColor(0xc4, 0x5a, 0x00), true);     // orange
+  set(Kind::Axis, QColor(0x0b, 0x7a, 0x3e));           // green
+  set(Kind::FeedSpeed, QColor(0x00, 0x7c, 0x8c));      // teal
+  set(Kind::Sequence, QColor(0x88, 0x88, 0x88));       // grey
+  set(Kind::Program, QColor(0x8b, 0x00, 0x00), true);  // dark red
+  set(Kind::Comment, QColor(0x6a, 0x73, 0x7d), false, true);
+  set(Kind::Skip, QColor(0xd0, 0x60, 0x00), true);
+}
+
+GcodeHighlighter::Kind GcodeHighlighter::kindOf(QChar letter) {
+  switch (letter.toUpper().unicode()) {
+    case 'G': return Kind::GCode;
+    case 'M': return Kind::MCode;
+    case 'T': return Kind::Tool;
+    case 'X': case 'Z': case 'U': case 'W': case 'I': case 'K': case 'R': case 'C': case 'H':
+      return Kind::Axis;
+    case 'F': case 'S': case 'P': case 'Q': return Kind::FeedSpeed;
+    case 'N': return Kind::Sequence;
+    case 'O': return Kind::Program;
+    default: return Kind::Other;
+  }
+}
+
+QTextCharFormat GcodeHighlighter::format(Kind kind) const { return formats_[static_cast<int>(kind)]; }
+
+void GcodeHighlighter::setUnderlines(QHash<int, QVector<Underline>> byLine) {
+  QSet<int> changed;
+  for (auto it = underlines_.cbegin(); it != underlines_.cend(); ++it) {
+    auto other = byLine.constFind(it.key());
+    if (other == byLine.cend() || other->size() != it->size()) changed.insert(it.key());
+    else
+      for (int i = 0; i < it->size(); ++i)
+        if ((*it)[i].start != (*other)[i].start || (*it)[i].length != (*other)[i].length ||
+            (*it)[i].severity != (*other)[i].severity)
+          changed.insert(it.key());
+  }
+  for (auto it = byLine.cbegin(); it != byLine.cend(); ++it)
+    if (!underlines_.contains(it.key())) changed.insert(it.key());
+  underlines_ = std::move(byLine);
+  QTextDocument* doc = document();
+  if (!doc) return;
+  for (int line : changed) {
+    const QTextBlock block = doc->findBlockByNumber(line);
+    if (block.isValid()) rehighlightBlock(block);
+  }
+}
+
+void GcodeHighlighter::highlightBlock(const QString& text) {
+  const int n = static_cast<int>(text.size());
+  int i = 0;
+  while (i < n) {
+    const QChar c = text[i];
+    if (c == u'(') {
+      int end = static_cast<int>(text.indexOf(u')', i));
+      end = end < 0 ? n : end + 1;
+      setFormat(i, end - i, format(Kind::Comment));
+      i = end;
+    } else if (c == u';') {
+      setFormat(i, n - i, format(Kind::Comment));
+      break;
+    } else if (c == u'/' || c == u'%') {
+      setFormat(i, 1, format(Kind::Skip));
+      ++i;
+    } else if (c.isLetter() && c.unicode() < 128) {
+      int end = i + 1;
+      while (end < n && (text[end].isDigit() || text[end] == u'.' || text[end] == u'-' || text[end] == u'+')) ++end;
+      const Kind k = kindOf(c);
+      if (k != Kind::Other) setFormat(i, end - i, format(k));
+      i = end;
+    } else {
+      ++i;
+    }
+  }
+  const auto it = underlines_.constFind(currentBlock().blockNumber());
+  if (it == underlines_.cend()) return;
+  for (const Underline& u : *it) {
+    const int start = std::clamp(u.start, 0, std::max(0, n - 1));
+    const int len = u.length > 0 ? std::min(u.length, n - start) : n - start;
+    const QColor colour = u.severity == core::Severity::Warning ? QColor(0xe0, 0x8a, 0x00) : QColor(0xd0, 0x10, 0x10);
+    for (int k = start; k < start + std::max(len, 1) && k <= n; ++k) {
+      // Keep the syntax colour; add the underline on top of it.
+      QTextCharFormat f = QSyntaxHighlighter::format(std::min(k, std::max(0, n - 1)));
+      f.setUnderlineStyle(QTextCharFormat::WaveUnderline);
+      f.setUnderlineColor(colour);
+      setFormat(k, 1, f);
+    }
+  }
+}
+
+}  // namespace klueng::gui

@@ -1,0 +1,1004 @@
+#include "gui/main_window.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QComboBox>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFileSystemWatcher>
+#include <QHBoxLayout>
+#include <QInputDialog>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QTimer>
+#include <QToolBar>
+#include <QToolButton>
+#include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include "gui/about_dialog.h"
+#include "gui/code_editor.h"
+#include "gui/diagnostics_panel.h"
+#include "gui/find_dialog.h"
+#include "gui/help_contents.h"
+#include "gui/job_details_dialog.h"
+#include "gui/language.h"
+#include "gui/offset_define_dialog.h"
+#include "gui/output_view.h"
+#include "gui/settings.h"
+#include "gui/status_panel.h"
+#include "gui/tool_select_dialog.h"
+#include "klueng/core/gcode/checker.h"
+#include "klueng/core/gcode/parser.h"
+#include "klueng/core/io/tool_config.h"
+#include "klueng/core/messages.h"
+
+namespace klueng::gui {
+
+namespace {
+
+// Animation speeds: machine seconds per wall second; 0 = as fast as possible.
+constexpr double kSpeeds[] = {0.1, 0.25, 0.5, 1.0, 2.0, 5.0, 10.0, 100.0, RunController::kAsFastAsPossible};
+constexpr int kSpeedCount = static_cast<int>(std::size(kSpeeds));
+constexpr int kDefaultSpeed = 3;  // 1x, real machine time
+
+QString speedText(int i) {
+  if (kSpeeds[i] == RunController::kAsFastAsPossible) return MainWindow::tr("As fast as possible");
+  if (kSpeeds[i] == 1.0) return MainWindow::tr("1× (real time)");
+  return MainWindow::tr("%1×").arg(QLocale().toString(kSpeeds[i]));
+}
+
+std::vector<core::Diagnostic> runCheck(std::string text, int firstLine, core::gcode::CheckOptions options) {
+  const core::gcode::Program program = core::gcode::parse(text, firstLine);
+  return core::gcode::check(program, options);
+}
+
+}  // namespace
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::make_unique<Settings>()) {
+  setObjectName(QStringLiteral("mainWindow"));
+  setWindowIcon(QIcon(QStringLiteral(":/icons/klueng.svg")));
+  dialect_ = settings_->dialect();
+  document_ = new Document(this);
+
+  editor_ = new CodeEditor(this);
+  editor_->setObjectName(QStringLiteral("codeEditor"));
+  editor_->setDialect(dialect_);
+
+  runner_ = new RunController(this);
+  runner_->setDialect(dialect_);
+  runner_->setOptionalStop(settings_->optionalStop());
+  runner_->setBlockSkip(settings_->blockSkip());
+
+  output_ = new OutputView(this);
+  output_->setObjectName(QStringLiteral("outputView"));
+  output_->setRunController(runner_);
+
+  // Banner above the editor: alarms and refused runs, in the UI language.
+  banner_ = new QWidget(this);
+  banner_->setObjectName(QStringLiteral("banner"));
+  bannerLabel_ = new QLabel(banner_);
+  bannerLabel_->setWordWrap(true);
+  bannerLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  auto* bannerClose = new QToolButton(banner_);
+  bannerClose->setIcon(QIcon(QStringLiteral(":/icons/close.svg")));
+  bannerClose->setAutoRaise(true);
+  connect(bannerClose, &QToolButton::clicked, this, &MainWindow::hideBanner);
+  auto* bannerLayout = new QHBoxLayout(banner_);
+  bannerLayout->setContentsMargins(8, 4, 4, 4);
+  bannerLayout->addWidget(bannerLabel_, 1);
+  bannerLayout->addWidget(bannerClose, 0, Qt::AlignTop);
+  banner_->setAutoFillBackground(true);
+  banner_->hide();
+
+  auto* editorPane = new QWidget(this);
+  auto* editorLayout = new QVBoxLayout(editorPane);
+  editorLayout->setContentsMargins(0, 0, 0, 0);
+  editorLayout->setSpacing(0);
+  editorLayout->addWidget(banner_);
+  editorLayout->addWidget(editor_, 1);
+
+  statusLamps_ = new StatusLamps(this);
+  statusLamps_->setObjectName(QStringLiteral("statusLamps"));
+  statusLamps_->setOptionalStopSwitch(settings_->optionalStop());
+  auto* outputPane = new QWidget(this);
+  auto* outputLayout = new QVBoxLayout(outputPane);
+  outputLayout->setContentsMargins(0, 0, 0, 0);
+  outputLayout->setSpacing(2);
+  outputLayout->addWidget(output_, 1);
+  outputLayout->addWidget(statusLamps_);
+
+  splitter_ = new QSplitter(Qt::Horizontal, this);
+  splitter_->setObjectName(QStringLiteral("mainSplitter"));
+  splitter_->addWidget(editorPane);
+  splitter_->addWidget(outputPane);
+  splitter_->setStretchFactor(0, 2);
+  splitter_->setStretchFactor(1, 3);
+  splitter_->setChildrenCollapsible(false);
+  setCentralWidget(splitter_);
+
+  statusFields_ = new StatusFields(this);
+  statusFields_->setObjectName(QStringLiteral("statusFields"));
+  statusBar()->addWidget(statusFields_, 1);
+  busyBar_ = new QProgressBar(this);
+  busyBar_->setRange(0, 0);
+  busyBar_->setMaximumWidth(140);
+  busyBar_->hide();
+  statusBar()->addPermanentWidget(busyBar_);
+
+  watcher_ = new QFileSystemWatcher(this);
+  connect(watcher_, &QFileSystemWatcher::fileChanged, this, &MainWindow::onFileChangedOnDisk);
+  diskChangeTimer_ = new QTimer(this);
+  diskChangeTimer_->setSingleShot(true);
+  diskChangeTimer_->setInterval(250);
+
+  checkTimer_ = new QTimer(this);
+  checkTimer_->setSingleShot(true);
+  checkTimer_->setInterval(300);  // debounce: check once typing pauses
+  connect(checkTimer_, &QTimer::timeout, this, &MainWindow::startCheck);
+  connect(&checkWatcher_, &QFutureWatcherBase::finished, this, &MainWindow::onCheckFinished);
+  connect(&loadWatcher_, &QFutureWatcherBase::finished, this, &MainWindow::onLoadFinished);
+
+  createActions();
+  createMenus();
+  createToolBars();
+  createDocks();
+
+  // Only real edits re-check; the highlighter's re-colouring changes no characters.
+  connect(editor_->document(), &QTextDocument::contentsChange, this, [this](int, int removed, int added) {
+    if (removed == 0 && added == 0) return;
+    runnerStale_ = true;
+    scheduleCheck();
+  });
+  connect(editor_->document(), &QTextDocument::modificationChanged, this, &MainWindow::updateTitle);
+  connect(document_, &Document::headerChanged, this, [this] {
+    runnerStale_ = true;
+    updateTitle();
+  });
+  connect(editor_, &CodeEditor::breakpointsChanged, this, [this] {
+    const QList<int> lines = editor_->breakpointFileLines();
+    runner_->setBreakpoints(QSet<int>(lines.begin(), lines.end()));
+  });
+  connect(diagnostics_, &DiagnosticsPanel::diagnosticActivated, this, [this](int line, int column) {
+    if (line >= editor_->firstFileLine()) editor_->goToFileLine(line, column);
+    else if (line >= 1 && !document_->isPlainGcode()) showJobDetails();  // a header line
+  });
+
+  connect(runner_, &RunController::executingLineChanged, editor_, &CodeEditor::setExecutingLine);
+  connect(runner_, &RunController::statusChanged, statusFields_, &StatusFields::setStatus);
+  connect(runner_, &RunController::statusChanged, statusLamps_, &StatusLamps::setStatus);
+  connect(runner_, &RunController::stateChanged, this, &MainWindow::onRunStateChanged);
+  connect(runner_, &RunController::alarmRaised, this, &MainWindow::onAlarm);
+  connect(runner_, &RunController::checkFailed, this, &MainWindow::onCheckFailed);
+  connect(runner_, &RunController::busyChanged, this, [this](bool busy) {
+    if (busy) QTimer::singleShot(300, this, &MainWindow::showBusyIndicator);
+    else if (!isBusy()) busyBar_->hide();
+  });
+
+  loadMachineSetup();
+  Language::instance()->setLanguage(settings_->language());
+  retranslateUi();
+  restoreLayout();
+  newFile();
+  onRunStateChanged(RunState::Idle);
+}
+
+MainWindow::~MainWindow() {
+  loadWatcher_.waitForFinished();
+  checkWatcher_.waitForFinished();
+}
+
+// ---------------------------------------------------------------- actions
+
+QAction* MainWindow::action(const QString& objectName) const { return actions_.value(objectName, nullptr); }
+
+void MainWindow::createActions() {
+  auto make = [this](const char* name, const char* icon, QKeySequence key = {}) {
+    auto* a = new QAction(this);
+    a->setObjectName(QString::fromLatin1(name));
+    if (icon) a->setIcon(QIcon(QStringLiteral(":/icons/%1.svg").arg(QString::fromLatin1(icon))));
+    if (!key.isEmpty()) a->setShortcut(key);
+    actions_.insert(a->objectName(), a);
+    return a;
+  };
+  // File
+  connect(make("actionNew", "new", QKeySequence::New), &QAction::triggered, this, &MainWindow::newFile);
+  connect(make("actionOpen", "open", QKeySequence::Open), &QAction::triggered, this, &MainWindow::open);
+  connect(make("actionSave", "save", QKeySequence::Save), &QAction::triggered, this, &MainWindow::save);
+  connect(make("actionSaveAs", "save-as", QKeySequence(QStringLiteral("Ctrl+Shift+S"))), &QAction::triggered, this,
+          &MainWindow::saveAs);
+  connect(make("actionJobDetails", "job", QKeySequence(QStringLiteral("Ctrl+J"))), &QAction::triggered, this,
+          &MainWindow::showJobDetails);
+  auto* quit = make("actionExit", "exit", QKeySequence(QStringLiteral("Ctrl+Q")));
+  quit->setMenuRole(QAction::QuitRole);
+  connect(quit, &QAction::triggered, this, &QWidget::close);
+
+  // Edit
+  auto* undo = make("actionUndo", "undo", QKeySequence::Undo);
+  auto* redo = make("actionRedo", "redo", QKeySequence::Redo);
+  auto* cut = make("actionCut", "cut", QKeySequence::Cut);
+  auto* copy = make("actionCopy", "copy", QKeySequence::Copy);
+  auto* paste = make("actionPaste", "paste", QKeySequence::Paste);
+  auto* del = make("actionDelete", "delete", QKeySequence::Delete);
+  auto* selectAll = make("actionSelectAll", nullptr, QKeySequence::SelectAll);
+  // Editor-local keys (Delete, Ctrl+C ...) keep working inside the editor; the
+  // actions take the shortcut only when another widget has the focus.
+  for (QAction* a : {undo, redo, cut, copy, paste, del, selectAll}) a->setShortcutContext(Qt::WidgetShortcut);
+  connect(undo, &QAction::triggered, editor_, &QPlainTextEdit::undo);
+  connect(redo, &QAction::triggered, editor_, &QPlainTextEdit::redo);
+  connect(cut, &QAction::triggered, editor_, &QPlainTextEdit::cut);
+  connect(copy, &QAction::triggered, editor_, &QPlainTextEdit::copy);
+  connect(paste, &QAction::triggered, editor_, &QPlainTextEdit::paste);
+  connect(del, &QAction::triggered, editor_, [this] { editor_->textCursor().removeSelectedText(); });
+  connect(selectAll, &QAction::triggered, editor_, &QPlainTextEdit::selectAll);
+  undo->setEnabled(false);
+  redo->setEnabled(false);
+  cut->setEnabled(false);
+  copy->setEnabled(false);
+  del->setEnabled(false);
+  connect(editor_, &QPlainTextEdit::undoAvailable, undo, &QAction::setEnabled);
+  connect(editor_, &QPlainTextEdit::redoAvailable, redo, &QAction::setEnabled);
+  for (QAction* a : {cut, copy, del}) connect(editor_, &QPlainTextEdit::copyAvailable, a, &QAction::setEnabled);
+  connect(make("actionFind", "find", QKeySequence::Find), &QAction::triggered, this, &MainWindow::showFind);
+  connect(make("actionReplace", nullptr, QKeySequence(QStringLiteral("Ctrl+H"))), &QAction::triggered, this,
+          &MainWindow::showFind);
+  connect(make("actionGoToLine", "goto", QKeySequence(QStringLiteral("Ctrl+G"))), &QAction::triggered, this,
+          &MainWindow::goToLine);
+
+  // Run
+  connect(make("actionGo", "go", QKeySequence(Qt::Key_F5)), &QAction::triggered, this, [this] {
+    syncRunner();
+    hideBanner();
+    runner_->go();
+  });
+  connect(make("actionStep", "step", QKeySequence(Qt::Key_F10)), &QAction::triggered, this, [this] {
+    syncRunner();
+    hideBanner();
+    runner_->step();
+  });
+  connect(make("actionPause", "pause", QKeySequence(Qt::Key_F6)), &QAction::triggered, runner_, &RunController::pause);
+  connect(make("actionStop", "stop", QKeySequence(QStringLiteral("Shift+F5"))), &QAction::triggered, this, [this] {
+    runner_->stop();
+    editor_->setExecutingLine(0);
+  });
+  connect(make("actionStepBack", "step-back", QKeySequence(QStringLiteral("Shift+F10"))), &QAction::triggered,
+          runner_, &RunController::stepBack);
+  connect(make("actionRunToCursor", "run-to-cursor", QKeySequence(QStringLiteral("Ctrl+F10"))), &QAction::triggered,
+          this, &MainWindow::runToCursor);
+  connect(make("actionToggleBreakpoint", "breakpoint", QKeySequence(Qt::Key_F9)), &QAction::triggered, this,
+          &MainWindow::toggleBreakpoint);
+  auto* optStop = make("actionOptionalStop", "optional-stop", QKeySequence(QStringLiteral("Ctrl+M")));
+  optStop->setCheckable(true);
+  optStop->setChecked(settings_->optionalStop());
+  connect(optStop, &QAction::toggled, this, [this](bool on) {
+    runner_->setOptionalStop(on);
+    statusLamps_->setOptionalStopSwitch(on);
+    settings_->setOptionalStop(on);
+  });
+  auto* skip = make("actionBlockSkip", "block-skip", QKeySequence(QStringLiteral("Ctrl+/")));
+  skip->setCheckable(true);
+  skip->setChecked(settings_->blockSkip());
+  connect(skip, &QAction::toggled, this, [this](bool on) {
+    runner_->setBlockSkip(on);
+    settings_->setBlockSkip(on);
+  });
+  speedGroup_ = new QActionGroup(this);
+  for (int i = 0; i < kSpeedCount; ++i) {
+    auto* a = make(QStringLiteral("actionSpeed%1").arg(i).toLatin1().constData(), nullptr);
+    a->setCheckable(true);
+    a->setData(i);
+    speedGroup_->addAction(a);
+    connect(a, &QAction::triggered, this, [this, i] { setSpeedIndex(i); });
+  }
+
+  // Tool setting
+  connect(make("actionToolSelect", "tool", QKeySequence(QStringLiteral("Ctrl+T"))), &QAction::triggered, this,
+          &MainWindow::showToolSelect);
+  connect(make("actionOffsetDefine", "offset", QKeySequence(QStringLiteral("Ctrl+Shift+O"))), &QAction::triggered,
+          this, &MainWindow::showOffsetDefine);
+  dialectGroup_ = new QActionGroup(this);
+  auto* fanuc = make("actionDialectFanuc", nullptr);
+  auto* classic = make("actionDialectClassic", nullptr);
+  for (QAction* a : {fanuc, classic}) {
+    a->setCheckable(true);
+    dialectGroup_->addAction(a);
+  }
+  (dialect_ == core::gcode::Dialect::Fanuc ? fanuc : classic)->setChecked(true);
+  connect(fanuc, &QAction::triggered, this, [this] { setDialect(core::gcode::Dialect::Fanuc); });
+  connect(classic, &QAction::triggered, this, [this] { setDialect(core::gcode::Dialect::Classic); });
+
+  // View
+  connect(make("actionFitView", "fit", QKeySequence(QStringLiteral("Ctrl+0"))), &QAction::triggered, output_,
+          &OutputView::fitToView);
+  connect(make("actionZoomIn", "zoom-in", QKeySequence::ZoomIn), &QAction::triggered, output_, &OutputView::zoomIn);
+  connect(make("actionZoomOut", "zoom-out", QKeySequence::ZoomOut), &QAction::triggered, output_,
+          &OutputView::zoomOut);
+  auto* showPath = make("actionShowPath", nullptr);
+  showPath->setCheckable(true);
+  showPath->setChecked(true);
+  connect(showPath, &QAction::toggled, output_, &OutputView::setShowPath);
+  auto* showStatus = make("actionShowStatusBar", nullptr);
+  showStatus->setCheckable(true);
+  showStatus->setChecked(true);
+  connect(showStatus, &QAction::toggled, statusBar(), &QWidget::setVisible);
+  auto* showLamps = make("actionShowLamps", nullptr);
+  showLamps->setCheckable(true);
+  showLamps->setChecked(true);
+  connect(showLamps, &QAction::toggled, statusLamps_, &QWidget::setVisible);
+
+  // Help
+  connect(make("actionContents", "contents", QKeySequence::HelpContents), &QAction::triggered, this,
+          &MainWindow::showHelpContents);
+  connect(make("actionToggleLanguage", "language", QKeySequence(QStringLiteral("Ctrl+Shift+L"))), &QAction::triggered,
+          this, &MainWindow::toggleLanguage);
+  auto* about = make("actionAbout", "klueng");
+  about->setMenuRole(QAction::AboutRole);
+  connect(about, &QAction::triggered, this, &MainWindow::showAbout);
+
+}
+
+void MainWindow::createMenus() {
+  fileMenu_ = menuBar()->addMenu(QString());
+  fileMenu_->setObjectName(QStringLiteral("menuFile"));
+  fileMenu_->addAction(action(QStringLiteral("actionNew")));
+  fileMenu_->addAction(action(QStringLiteral("actionOpen")));
+  recentMenu_ = fileMenu_->addMenu(QString());
+  recentMenu_->setObjectName(QStringLiteral("menuRecent"));
+  connect(recentMenu_, &QMenu::aboutToShow, this, &MainWindow::updateRecentMenu);
+  fileMenu_->addAction(action(QStringLiteral("actionSave")));
+  fileMenu_->addAction(action(QStringLiteral("actionSaveAs")));
+  fileMenu_->addSeparator();
+  fileMenu_->addAction(action(QStringLiteral("actionJobDetails")));
+  fileMenu_->addSeparator();
+  fileMenu_->addAction(action(QStringLiteral("actionExit")));
+
+  editMenu_ = menuBar()->addMenu(QString());
+  editMenu_->setObjectName(QStringLiteral("menuEdit"));
+  for (const char* n : std::initializer_list<const char*>{"actionUndo", "actionRedo", nullptr, "actionCut", "actionCopy", "actionPaste", "actionDelete",
+                        "actionSelectAll", nullptr, "actionFind", "actionReplace", "actionGoToLine"}) {
+    if (n) editMenu_->addAction(action(QString::fromLatin1(n)));
+    else editMenu_->addSeparator();
+  }
+
+  runMenu_ = menuBar()->addMenu(QString());
+  runMenu_->setObjectName(QStringLiteral("menuRun"));
+  for (const char* n : std::initializer_list<const char*>{"actionGo", "actionStep", "actionPause", "actionStop", nullptr, "actionStepBack",
+                        "actionRunToCursor", "actionToggleBreakpoint", nullptr, "actionOptionalStop",
+                        "actionBlockSkip"}) {
+    if (n) runMenu_->addAction(action(QString::fromLatin1(n)));
+    else runMenu_->addSeparator();
+  }
+  speedMenu_ = runMenu_->addMenu(QString());
+  speedMenu_->setObjectName(QStringLiteral("menuSpeed"));
+  speedMenu_->addActions(speedGroup_->actions());
+
+  toolMenu_ = menuBar()->addMenu(QString());
+  toolMenu_->setObjectName(QStringLiteral("menuToolSetting"));
+  toolMenu_->addAction(action(QStringLiteral("actionToolSelect")));
+  toolMenu_->addAction(action(QStringLiteral("actionOffsetDefine")));
+  toolMenu_->addAction(action(QStringLiteral("actionOptionalStop")));
+  toolMenu_->addSeparator();
+  dialectMenu_ = toolMenu_->addMenu(QString());
+  dialectMenu_->setObjectName(QStringLiteral("menuDialect"));
+  dialectMenu_->addActions(dialectGroup_->actions());
+
+  viewMenu_ = menuBar()->addMenu(QString());
+  viewMenu_->setObjectName(QStringLiteral("menuView"));
+
+  helpMenu_ = menuBar()->addMenu(QString());
+  helpMenu_->setObjectName(QStringLiteral("menuHelp"));
+  helpMenu_->addAction(action(QStringLiteral("actionContents")));
+  helpMenu_->addAction(action(QStringLiteral("actionToggleLanguage")));
+  helpMenu_->addSeparator();
+  helpMenu_->addAction(action(QStringLiteral("actionAbout")));
+}
+
+void MainWindow::createToolBars() {
+  auto bar = [this](const char* name) {
+    QToolBar* t = addToolBar(QString());
+    t->setObjectName(QString::fromLatin1(name));
+    t->setIconSize(QSize(24, 24));
+    return t;
+  };
+  fileToolBar_ = bar("fileToolBar");
+  for (const char* n : {"actionNew", "actionOpen", "actionSave"}) fileToolBar_->addAction(action(QString::fromLatin1(n)));
+  editToolBar_ = bar("editToolBar");
+  for (const char* n : std::initializer_list<const char*>{"actionUndo", "actionCut", "actionCopy", "actionPaste", "actionDelete", "actionFind"})
+    editToolBar_->addAction(action(QString::fromLatin1(n)));
+  runToolBar_ = bar("runToolBar");
+  for (const char* n : {"actionGo", "actionStep", "actionPause", "actionStop", "actionStepBack", "actionRunToCursor"})
+    runToolBar_->addAction(action(QString::fromLatin1(n)));
+  speedLabel_ = new QLabel(this);
+  speedLabel_->setContentsMargins(8, 0, 4, 0);
+  speedCombo_ = new QComboBox(this);
+  speedCombo_->setObjectName(QStringLiteral("speedCombo"));
+  speedCombo_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+  for (int i = 0; i < kSpeedCount; ++i) speedCombo_->addItem(QString());
+  connect(speedCombo_, &QComboBox::activated, this, &MainWindow::setSpeedIndex);
+  runToolBar_->addWidget(speedLabel_);
+  runToolBar_->addWidget(speedCombo_);
+  helpToolBar_ = bar("helpToolBar");
+  helpToolBar_->addAction(action(QStringLiteral("actionContents")));
+  helpToolBar_->addAction(action(QStringLiteral("actionToggleLanguage")));
+  setSpeedIndex(kDefaultSpeed);
+}
+
+void MainWindow::createDocks() {
+  diagnostics_ = new DiagnosticsPanel(this);
+  addDockWidget(Qt::BottomDockWidgetArea, diagnostics_);
+  for (QToolBar* t : {fileToolBar_, editToolBar_, runToolBar_, helpToolBar_}) viewMenu_->addAction(t->toggleViewAction());
+  viewMenu_->addAction(action(QStringLiteral("actionShowStatusBar")));
+  viewMenu_->addAction(action(QStringLiteral("actionShowLamps")));
+  viewMenu_->addAction(diagnostics_->toggleViewAction());
+  viewMenu_->addSeparator();
+  viewMenu_->addAction(action(QStringLiteral("actionShowPath")));
+  viewMenu_->addAction(action(QStringLiteral("actionFitView")));
+  viewMenu_->addAction(action(QStringLiteral("actionZoomIn")));
+  viewMenu_->addAction(action(QStringLiteral("actionZoomOut")));
+}
+
+void MainWindow::retranslateUi() {
+  auto set = [this](const char* name, const QString& text, const QString& tip = {}) {
+    QAction* a = action(QString::fromLatin1(name));
+    a->setText(text);
+    QString t = tip.isEmpty() ? QString(text).remove(QLatin1Char('&')) : tip;
+    if (!a->shortcut().isEmpty()) t += QStringLiteral(" (%1)").arg(a->shortcut().toString(QKeySequence::NativeText));
+    a->setToolTip(t);
+    a->setStatusTip(tip.isEmpty() ? QString(text).remove(QLatin1Char('&')) : tip);
+  };
+  fileMenu_->setTitle(tr("&File"));
+  recentMenu_->setTitle(tr("&Recent Files"));
+  editMenu_->setTitle(tr("&Edit"));
+  runMenu_->setTitle(tr("&Run"));
+  speedMenu_->setTitle(tr("S&peed"));
+  toolMenu_->setTitle(tr("&Tool setting"));
+  dialectMenu_->setTitle(tr("G-code &dialect"));
+  viewMenu_->setTitle(tr("&View"));
+  helpMenu_->setTitle(tr("&Help"));
+
+  set("actionNew", tr("&New"), tr("Start a new program"));
+  set("actionOpen", tr("&Open..."), tr("Open a program file"));
+  set("actionSave", tr("&Save"), tr("Save the program"));
+  set("actionSaveAs", tr("Save &As..."), tr("Save the program under a new name"));
+  set("actionJobDetails", tr("&Job details..."), tr("Project, part, material, stock size and programmer"));
+  set("actionExit", tr("E&xit"));
+  set("actionUndo", tr("&Undo"));
+  set("actionRedo", tr("&Redo"));
+  set("actionCut", tr("Cu&t"));
+  set("actionCopy", tr("&Copy"));
+  set("actionPaste", tr("&Paste"));
+  set("actionDelete", tr("&Delete"));
+  set("actionSelectAll", tr("Select &All"));
+  set("actionFind", tr("&Find..."), tr("Find text in the program"));
+  set("actionReplace", tr("R&eplace..."), tr("Find and replace text"));
+  set("actionGoToLine", tr("&Go to Line..."));
+  set("actionGo", tr("&Go"), tr("Run the program continuously"));
+  set("actionStep", tr("&Step"), tr("Run one block, then wait"));
+  set("actionPause", tr("&Pause"), tr("Stop after the current step; Go or Step resumes"));
+  set("actionStop", tr("S&top"), tr("Abort the run and reset"));
+  set("actionStepBack", tr("Step &Back"), tr("Go back one block"));
+  set("actionRunToCursor", tr("Run to &Cursor"), tr("Run up to the block at the cursor"));
+  set("actionToggleBreakpoint", tr("Toggle &Breakpoint"), tr("Stop the run before this line"));
+  set("actionOptionalStop", tr("&Optional Stop"), tr("M01 stops the run when this switch is on"));
+  set("actionBlockSkip", tr("Block S&kip"), tr("Blocks starting with / are skipped when this switch is on"));
+  set("actionToolSelect", tr("Tool &Select..."), tr("Choose the bitmap of each tool 01-08"));
+  set("actionOffsetDefine", tr("Offset &Define..."), tr("Edit the 16 tool offsets"));
+  set("actionDialectFanuc", tr("&Fanuc 0i-TF"));
+  set("actionDialectClassic", tr("&Rook classic (1999 rules)"));
+  set("actionFitView", tr("&Fit to View"));
+  set("actionZoomIn", tr("Zoom &In"));
+  set("actionZoomOut", tr("Zoom &Out"));
+  set("actionShowPath", tr("Show Tool &Path"));
+  set("actionShowStatusBar", tr("&Status Bar"));
+  set("actionShowLamps", tr("Status &Lamps"));
+  set("actionContents", tr("&Contents"), tr("Help for self-learners: every G and M code with an example"));
+  set("actionToggleLanguage", tr("Toggle &Language (ไทย/English)"), tr("Switch between Thai and English"));
+  set("actionAbout", tr("&About Klueng"));
+  for (int i = 0; i < kSpeedCount; ++i) {
+    action(QStringLiteral("actionSpeed%1").arg(i))->setText(speedText(i));
+    speedCombo_->setItemText(i, speedText(i));
+  }
+  fileToolBar_->setWindowTitle(tr("File tool bar"));
+  editToolBar_->setWindowTitle(tr("Edit tool bar"));
+  runToolBar_->setWindowTitle(tr("Run tool bar"));
+  helpToolBar_->setWindowTitle(tr("Help tool bar"));
+  speedLabel_->setText(tr("Speed:"));
+  speedCombo_->setToolTip(tr("Animation speed: slow motion, real machine time, or as fast as possible"));
+  updateTitle();
+}
+
+void MainWindow::changeEvent(QEvent* event) {
+  QMainWindow::changeEvent(event);
+  if (event->type() == QEvent::LanguageChange && fileMenu_) {
+    retranslateUi();
+    if (!runDiagnostics_.empty()) onAlarm(runDiagnostics_.front());
+  }
+}
+
+void MainWindow::toggleLanguage() {
+  Language::instance()->toggle();
+  settings_->setLanguage(Language::instance()->language());
+}
+
+void MainWindow::setDialect(core::gcode::Dialect d) {
+  dialect_ = d;
+  settings_->setDialect(d);
+  editor_->setDialect(d);
+  runner_->setDialect(d);
+  action(d == core::gcode::Dialect::Fanuc ? QStringLiteral("actionDialectFanuc")
+                                          : QStringLiteral("actionDialectClassic"))
+      ->setChecked(true);
+  if (help_) help_->setDialect(d);
+  runnerStale_ = true;
+  checkNow();
+}
+
+void MainWindow::setSpeedIndex(int index) {
+  index = std::clamp(index, 0, kSpeedCount - 1);
+  runner_->setSpeed(kSpeeds[index]);
+  speedCombo_->setCurrentIndex(index);
+  action(QStringLiteral("actionSpeed%1").arg(index))->setChecked(true);
+}
+
+// ---------------------------------------------------------------- layout
+
+void MainWindow::restoreLayout() {
+  resize(1280, 800);
+  if (!restoreGeometry(settings_->windowGeometry())) resize(1280, 800);
+  restoreState(settings_->windowState());
+  if (!splitter_->restoreState(settings_->splitterState())) splitter_->setSizes({520, 760});
+}
+
+void MainWindow::saveLayout() {
+  settings_->setWindowGeometry(saveGeometry());
+  settings_->setWindowState(saveState());
+  settings_->setSplitterState(splitter_->saveState());
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  if (!maybeSave()) {
+    event->ignore();
+    return;
+  }
+  runner_->stop();
+  saveLayout();
+  event->accept();
+}
+
+// ---------------------------------------------------------------- files
+
+bool MainWindow::isModified() const {
+  return editor_->document()->isModified() || document_->isHeaderModified();
+}
+
+void MainWindow::updateTitle() {
+  if (!document_ || !editor_) return;
+  setWindowTitle(tr("Klueng : %1[*]").arg(document_->displayName()));
+  setWindowModified(isModified());
+}
+
+bool MainWindow::maybeSave() {
+  if (!isModified()) return true;
+  QMessageBox box(this);
+  box.setObjectName(QStringLiteral("unsavedChangesBox"));
+  box.setIcon(QMessageBox::Warning);
+  box.setWindowTitle(tr("Unsaved changes"));
+  box.setText(tr("The program \"%1\" has been changed.").arg(document_->displayName()));
+  box.setInformativeText(tr("Do you want to save your changes?"));
+  QPushButton* saveButton = box.addButton(tr("&Save"), QMessageBox::AcceptRole);
+  QPushButton* discardButton = box.addButton(tr("&Discard"), QMessageBox::DestructiveRole);
+  QPushButton* cancelButton = box.addButton(tr("Cancel"), QMessageBox::RejectRole);
+  saveButton->setObjectName(QStringLiteral("saveButton"));
+  discardButton->setObjectName(QStringLiteral("discardButton"));
+  cancelButton->setObjectName(QStringLiteral("cancelButton"));
+  box.setDefaultButton(saveButton);
+  box.setEscapeButton(cancelButton);
+  box.exec();
+  if (box.clickedButton() == saveButton) return save();
+  return box.clickedButton() == discardButton;
+}
+
+void MainWindow::newFile() {
+  if (!maybeSave()) return;
+  runner_->stop();
+  if (!document_->filePath().isEmpty()) watcher_->removePath(document_->filePath());
+  document_->reset(settings_->lastJobHeader());
+  editor_->setFirstFileLine(document_->gcodeFirstLine());
+  editor_->clearBreakpoints();
+  editor_->setPlainText(QString());
+  editor_->document()->setModified(false);
+  hideBanner();
+  runnerStale_ = true;
+  updateTitle();
+  checkNow();
+}
+
+void MainWindow::open() {
+  if (!maybeSave()) return;
+  QString dir = settings_->lastDirectory();
+  if (dir.isEmpty()) dir = QDir::homePath();
+  const QString path = QFileDialog::getOpenFileName(
+      this, tr("Open program"), dir, tr("Lathe programs (*.txt *.nc *.tap *.cnc *.gc);;All files (*)"));
+  if (!path.isEmpty()) startLoad(path);
+}
+
+bool MainWindow::openFile(const QString& path) {
+  if (!maybeSave()) return false;
+  startLoad(path);
+  return true;
+}
+
+void MainWindow::startLoad(const QString& path) {
+  if (loadWatcher_.isRunning()) loadWatcher_.waitForFinished();
+  loadingPath_ = path;
+  loadInFlight_ = true;
+  const core::io::JobHeader defaults = settings_->lastJobHeader();
+  loadWatcher_.setFuture(QtConcurrent::run([path, defaults] { return Document::load(path, defaults); }));
+  QTimer::singleShot(300, this, &MainWindow::showBusyIndicator);
+}
+
+void MainWindow::showBusyIndicator() {
+  if (isBusy() || runner_->isBusy()) busyBar_->show();
+}
+
+bool MainWindow::isBusy() const {
+  // The flags cover the gap between a future finishing and its slot running.
+  return loadInFlight_ || checkInFlight_ || checkTimer_->isActive() || checkPending_;
+}
+
+void MainWindow::onLoadFinished() {
+  const LoadedProgram loaded = loadWatcher_.result();
+  loadInFlight_ = false;
+  if (!loaded.ok) {
+    busyBar_->hide();
+    QStringList lines;
+    for (const auto& d : loaded.diagnostics)
+      lines << QString::fromStdString(core::formatMessage(d, Language::coreLang()));
+    QMessageBox::warning(this, tr("Cannot open the program"),
+                         tr("\"%1\" could not be read.").arg(QDir::toNativeSeparators(loaded.path)) +
+                             (lines.isEmpty() ? QString() : QStringLiteral("\n\n") + lines.join(QLatin1Char('\n'))));
+    settings_->removeRecentFile(loaded.path);
+    emit loadFailed(loaded.path);
+    return;
+  }
+  runner_->stop();
+  if (!document_->filePath().isEmpty()) watcher_->removePath(document_->filePath());
+  document_->adopt(loaded);
+  editor_->setFirstFileLine(document_->gcodeFirstLine());
+  editor_->clearBreakpoints();
+  editor_->setExecutingLine(0);
+  editor_->setDiagnostics({});
+  editor_->setPlainText(loaded.gcode);
+  editor_->document()->setModified(false);
+  editor_->moveCursor(QTextCursor::Start);
+  hideBanner();
+  settings_->addRecentFile(loaded.path);
+  settings_->setLastDirectory(QFileInfo(loaded.path).absolutePath());
+  if (!document_->isPlainGcode()) settings_->setLastJobHeader(document_->header());
+  watchFile(loaded.path);
+  runnerStale_ = true;
+  updateTitle();
+  checkNow();
+  emit fileLoaded(loaded.path);
+}
+
+bool MainWindow::save() {
+  if (document_->isUntitled()) return saveAs();
+  return saveFile(document_->filePath());
+}
+
+bool MainWindow::saveAs() {
+  QString suggestion = document_->filePath();
+  if (suggestion.isEmpty()) {
+    const QString dir = settings_->lastDirectory().isEmpty() ? QDir::homePath() : settings_->lastDirectory();
+    suggestion = QDir(dir).filePath(document_->displayName());
+  }
+  const QString path = QFileDialog::getSaveFileName(this, tr("Save program as"), suggestion,
+                                                    tr("Lathe programs (*.txt *.nc);;All files (*)"));
+  if (path.isEmpty()) return false;
+  return saveFile(path);
+}
+
+bool MainWindow::saveFile(const QString& path) {
+  QString error;
+  const QString old = document_->filePath();
+  if (!old.isEmpty()) watcher_->removePath(old);
+  if (!document_->save(path, editor_->toPlainText(), &error)) {
+    if (!old.isEmpty()) watcher_->addPath(old);
+    QMessageBox::critical(this, tr("Cannot save the program"),
+                          tr("\"%1\" could not be written:\n%2").arg(QDir::toNativeSeparators(path), error));
+    return false;
+  }
+  editor_->document()->setModified(false);
+  settings_->addRecentFile(document_->filePath());
+  settings_->setLastDirectory(QFileInfo(document_->filePath()).absolutePath());
+  if (!document_->isPlainGcode()) settings_->setLastJobHeader(document_->header());
+  watchFile(document_->filePath());
+  updateTitle();
+  statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(document_->filePath())), 3000);
+  return true;
+}
+
+void MainWindow::watchFile(const QString& path) {
+  // An atomic save replaces the file; watch the new one.
+  if (!watcher_->files().contains(path)) watcher_->addPath(path);
+}
+
+void MainWindow::onFileChangedOnDisk(const QString& path) {
+  if (path != document_->filePath()) return;
+  // Editors often write in several steps: wait until the file settles.
+  diskChangeTimer_->disconnect();
+  connect(diskChangeTimer_, &QTimer::timeout, this, [this, path] {
+    if (path != document_->filePath()) return;
+    if (!QFileInfo::exists(path)) return;  // deleted or mid-rename; a later change re-triggers
+    watchFile(path);
+    QMessageBox box(this);
+    box.setObjectName(QStringLiteral("fileChangedBox"));
+    box.setIcon(QMessageBox::Question);
+    box.setWindowTitle(tr("File changed on disk"));
+    box.setText(tr("\"%1\" was changed by another program.").arg(document_->displayName()));
+    box.setInformativeText(isModified() ? tr("Reload it and lose your changes here?") : tr("Reload it?"));
+    QPushButton* reload = box.addButton(tr("&Reload"), QMessageBox::AcceptRole);
+    QPushButton* keep = box.addButton(tr("&Keep mine"), QMessageBox::RejectRole);
+    reload->setObjectName(QStringLiteral("reloadButton"));
+    keep->setObjectName(QStringLiteral("keepButton"));
+    box.exec();
+    if (box.clickedButton() == reload) startLoad(path);
+  });
+  diskChangeTimer_->start();
+}
+
+void MainWindow::updateRecentMenu() {
+  recentMenu_->clear();
+  const QStringList files = settings_->recentFiles();
+  for (int i = 0; i < files.size(); ++i) {
+    QAction* a = recentMenu_->addAction(
+        QStringLiteral("&%1 %2").arg(i + 1).arg(QFileInfo(files[i]).fileName().replace(QLatin1Char('&'), QStringLiteral("&&"))));
+    a->setToolTip(QDir::toNativeSeparators(files[i]));
+    a->setStatusTip(QDir::toNativeSeparators(files[i]));
+    const QString path = files[i];
+    connect(a, &QAction::triggered, this, [this, path] { openFile(path); });
+  }
+  if (files.isEmpty()) recentMenu_->addAction(tr("(none)"))->setEnabled(false);
+}
+
+// ---------------------------------------------------------------- checking
+
+void MainWindow::scheduleCheck() { checkTimer_->start(); }
+
+void MainWindow::checkNow() {
+  checkTimer_->stop();
+  startCheck();
+}
+
+core::io::ProgramFile MainWindow::currentProgramFile() const {
+  core::io::ProgramFile f;
+  f.header = document_->header();
+  f.plainGcode = document_->isPlainGcode();
+  f.gcodeFirstLine = document_->gcodeFirstLine();
+  f.gcode = editor_->toPlainText().toStdString();
+  return f;
+}
+
+void MainWindow::startCheck() {
+  if (checkWatcher_.isRunning()) {  // one check at a time; the newest text goes next
+    checkPending_ = true;
+    return;
+  }
+  checkPending_ = false;
+  core::gcode::CheckOptions options;
+  options.dialect = dialect_;
+  options.toolsWithBitmap = toolsWithBitmap_;
+  ++checkGeneration_;
+  checkInFlight_ = true;
+  checkWatcher_.setFuture(QtConcurrent::run(runCheck, editor_->toPlainText().toStdString(),
+                                            document_->gcodeFirstLine(), options));
+  QTimer::singleShot(300, this, &MainWindow::showBusyIndicator);
+}
+
+void MainWindow::onCheckFinished() {
+  checkInFlight_ = false;
+  if (checkPending_ || checkTimer_->isActive()) {
+    // The text changed while checking: this result is out of date.
+    if (checkPending_) startCheck();
+    return;
+  }
+  appliedGeneration_ = checkGeneration_;
+  lastDiagnostics_ = document_->fileDiagnostics();
+  const auto found = checkWatcher_.result();
+  lastDiagnostics_.insert(lastDiagnostics_.end(), found.begin(), found.end());
+  std::stable_sort(lastDiagnostics_.begin(), lastDiagnostics_.end(), [](const auto& a, const auto& b) {
+    return a.range.line != b.range.line ? a.range.line < b.range.line : a.range.column < b.range.column;
+  });
+  showDiagnostics();
+  if (!isBusy() && !runner_->isBusy()) busyBar_->hide();
+  emit checkFinished();
+}
+
+void MainWindow::showDiagnostics() {
+  std::vector<core::Diagnostic> all = lastDiagnostics_;
+  all.insert(all.end(), runDiagnostics_.begin(), runDiagnostics_.end());
+  editor_->setDiagnostics(all);
+  diagnostics_->setDiagnostics(std::move(all));
+}
+
+// ---------------------------------------------------------------- running
+
+void MainWindow::loadMachineSetup(const QString& dir) {
+  // A dialog that wrote a per-user copy tells us where; otherwise the core decides.
+  configDir_ = dir.isEmpty() ? QString::fromStdString(core::io::findConfigDir(configDirOverride_.toStdString())) : dir;
+  if (!dir.isEmpty()) configDirOverride_ = dir;
+  const QDir folder(configDir_);
+  QStringList problems;
+  auto note = [&problems](const std::vector<core::Diagnostic>& diags) {
+    for (const auto& d : diags)
+      if (d.severity != core::Severity::Warning)
+        problems << QString::fromStdString(core::formatMessage(d, Language::coreLang()));
+  };
+  auto tools = core::io::readToolTable(folder.filePath(QStringLiteral("tools.cfg")).toStdString());
+  note(tools.diagnostics);
+  if (tools.value) {
+    setup_.tools = *tools.value;
+    std::vector<int> withBitmap;
+    for (int t = 1; t <= core::io::kToolCount; ++t)
+      if (!setup_.tools.bitmap[static_cast<std::size_t>(t - 1)].empty()) withBitmap.push_back(t);
+    toolsWithBitmap_ = withBitmap;
+  } else {
+    toolsWithBitmap_.reset();
+  }
+  auto offsets = core::io::readOffsetTable(folder.filePath(QStringLiteral("offset.cfg")).toStdString());
+  note(offsets.diagnostics);
+  if (offsets.value) setup_.offsets = *offsets.value;
+  const QString machinePath = folder.filePath(QStringLiteral("machine.cfg"));
+  if (QFileInfo::exists(machinePath)) {
+    auto machine = core::io::readMachineConfig(machinePath.toStdString());
+    note(machine.diagnostics);
+    if (machine.value) setup_.machine = *machine.value;
+  }
+  setupProblems_ = problems.join(QLatin1Char('\n'));
+  runner_->setMachineSetup(setup_);
+}
+
+void MainWindow::syncRunner() {
+  if (checkTimer_->isActive()) checkNow();
+  if (!runnerStale_) return;
+  const QList<int> lines = editor_->breakpointFileLines();
+  runner_->setBreakpoints(QSet<int>(lines.begin(), lines.end()));
+  runner_->setProgram(currentProgramFile(), document_->displayName());
+  runnerStale_ = false;
+}
+
+void MainWindow::runToCursor() {
+  syncRunner();
+  hideBanner();
+  runner_->runToLine(editor_->cursorFileLine());
+}
+
+void MainWindow::toggleBreakpoint() { editor_->toggleBreakpoint(editor_->cursorFileLine()); }
+
+void MainWindow::onRunStateChanged(RunState state) {
+  const bool running = state == RunState::Running || state == RunState::Stepping || state == RunState::Preparing;
+  const bool active = running || state == RunState::Paused;
+  action(QStringLiteral("actionGo"))->setEnabled(!running || state == RunState::Stepping);
+  action(QStringLiteral("actionStep"))->setEnabled(!running || state == RunState::Running);
+  action(QStringLiteral("actionPause"))->setEnabled(running);
+  action(QStringLiteral("actionStop"))->setEnabled(active || state == RunState::Finished || state == RunState::Alarm);
+  action(QStringLiteral("actionStepBack"))->setEnabled(!running && state != RunState::Idle);
+  // The text being run must not change under the animation.
+  editor_->setReadOnly(running);
+  for (const char* n : {"actionNew", "actionOpen", "actionToolSelect", "actionOffsetDefine", "actionJobDetails"})
+    action(QString::fromLatin1(n))->setEnabled(!running);
+  if (state == RunState::Idle) editor_->setExecutingLine(0);
+  if (state == RunState::Running || state == RunState::Stepping || state == RunState::Preparing) {
+    if (!runDiagnostics_.empty()) {
+      runDiagnostics_.clear();
+      showDiagnostics();
+    }
+  }
+}
+
+void MainWindow::onAlarm(const core::Diagnostic& alarm) {
+  runDiagnostics_ = {alarm};
+  showDiagnostics();
+  editor_->setExecutingLine(alarm.range.line);
+  showBanner(tr("Alarm %1 on line %2: %3")
+                 .arg(QString::fromStdString(alarm.code))
+                 .arg(alarm.range.line)
+                 .arg(QString::fromStdString(core::formatMessage(alarm, Language::coreLang()))),
+             true);
+}
+
+void MainWindow::onCheckFailed(const QList<core::Diagnostic>& diags) {
+  int errors = 0;
+  for (const auto& d : diags) errors += d.severity != core::Severity::Warning;
+  showBanner(tr("The program has %n error(s); fix them before running. Click an error below to go to it.", nullptr,
+                errors),
+             true);
+  diagnostics_->show();
+  diagnostics_->raise();
+  if (!diags.isEmpty()) editor_->goToFileLine(diags.front().range.line, diags.front().range.column);
+}
+
+void MainWindow::showBanner(const QString& text, bool error) {
+  QPalette p = banner_->palette();
+  p.setColor(QPalette::Window, error ? QColor(0xfd, 0xe2, 0xe2) : QColor(0xfd, 0xf4, 0xd0));
+  p.setColor(QPalette::WindowText, error ? QColor(0x80, 0x10, 0x10) : QColor(0x60, 0x48, 0x00));
+  banner_->setPalette(p);
+  bannerLabel_->setText(text);
+  banner_->show();
+}
+
+void MainWindow::hideBanner() {
+  banner_->hide();
+  bannerLabel_->clear();
+}
+
+QString MainWindow::bannerText() const { return banner_->isVisible() ? bannerLabel_->text() : QString(); }
+
+// ---------------------------------------------------------------- dialogs
+
+void MainWindow::showJobDetails() {
+  JobDetailsDialog dlg(document_->header(), this);
+  if (dlg.exec() != QDialog::Accepted) return;
+  document_->setHeader(dlg.header());
+  settings_->setLastJobHeader(dlg.header());
+  checkNow();
+}
+
+void MainWindow::showFind() {
+  if (!findDialog_) findDialog_ = new FindDialog(editor_, this);
+  const QString selected = editor_->textCursor().selectedText();
+  if (!selected.isEmpty() && !selected.contains(QChar::ParagraphSeparator)) findDialog_->setFindText(selected);
+  findDialog_->show();
+  findDialog_->raise();
+  findDialog_->activateWindow();
+}
+
+void MainWindow::goToLine() {
+  const int first = editor_->firstFileLine();
+  const int last = first + editor_->blockCount() - 1;
+  bool ok = false;
+  const int line = QInputDialog::getInt(this, tr("Go to Line"), tr("Line (%1-%2):").arg(first).arg(last),
+                                        editor_->cursorFileLine(), first, last, 1, &ok);
+  if (ok) editor_->goToFileLine(line);
+}
+
+void MainWindow::showToolSelect() {
+  ToolSelectDialog dlg(configDir_, this);
+  if (dlg.exec() != QDialog::Accepted) return;
+  loadMachineSetup(dlg.savedConfigDir());
+  runnerStale_ = true;
+  checkNow();
+}
+
+void MainWindow::showOffsetDefine() {
+  OffsetDefineDialog dlg(configDir_, this);
+  if (dlg.exec() != QDialog::Accepted) return;
+  loadMachineSetup(dlg.savedConfigDir());
+  runnerStale_ = true;
+}
+
+void MainWindow::showHelpContents() {
+  if (!help_) {
+    help_ = new HelpContents(this);
+    help_->setDialect(dialect_);
+  }
+  help_->show();
+  help_->raise();
+  help_->activateWindow();
+}
+
+void MainWindow::showAbout() {
+  AboutDialog dlg(this);
+  dlg.exec();
+}
+
+}  // namespace klueng::gui

@@ -1,0 +1,196 @@
+#pragma once
+// The main window (SPEC 12): title "Klueng : <file>", menus File / Edit / Run /
+// Tool setting / View / Help, the tool bar, the G-code editor | output screen
+// splitter, the diagnostics dock, status fields and lamps. It wires the
+// editor, the document and the checker to F2's run controller, output view,
+// status widgets and dialogs; it holds no machining logic.
+#include <QFutureWatcher>
+#include <QHash>
+#include <QMainWindow>
+#include <QPointer>
+#include <memory>
+#include <optional>
+
+#include "gui/document.h"
+#include "gui/run_controller.h"
+#include "klueng/core/gcode/code_table.h"
+#include "klueng/core/machine/interpreter.h"
+
+class QAction;
+class QActionGroup;
+class QComboBox;
+class QFileSystemWatcher;
+class QLabel;
+class QMenu;
+class QProgressBar;
+class QSplitter;
+class QTimer;
+class QToolBar;
+class QToolButton;
+
+namespace klueng::gui {
+
+class CodeEditor;
+class DiagnosticsPanel;
+class FindDialog;
+class HelpContents;
+class OutputView;
+class Settings;
+class StatusFields;
+class StatusLamps;
+
+class MainWindow : public QMainWindow {
+  Q_OBJECT
+ public:
+  explicit MainWindow(QWidget* parent = nullptr);
+  ~MainWindow() override;
+
+  // Opens a file in the background (after the unsaved-changes prompt). Returns
+  // false when the user cancelled; fileLoaded / loadFailed follow otherwise.
+  bool openFile(const QString& path);
+  // Saves to `path` atomically; false (with a message box) on failure.
+  bool saveFile(const QString& path);
+
+  CodeEditor* editor() const { return editor_; }
+  DiagnosticsPanel* diagnosticsPanel() const { return diagnostics_; }
+  Document* document() const { return document_; }
+  RunController* runController() const { return runner_; }
+  OutputView* outputView() const { return output_; }
+  StatusFields* statusFields() const { return statusFields_; }
+  StatusLamps* statusLamps() const { return statusLamps_; }
+  QSplitter* splitter() const { return splitter_; }
+  // The banner above the editor (alarms, "fix the errors first"); empty when hidden.
+  QString bannerText() const;
+  // Actions by object name ("actionGo", "actionSave", ...), for tests.
+  QAction* action(const QString& objectName) const;
+
+  // True while a file loads or a check runs in the background.
+  bool isBusy() const;
+  // Diagnostics of the last finished check (checker + file header).
+  const std::vector<core::Diagnostic>& diagnostics() const { return lastDiagnostics_; }
+  core::gcode::Dialect dialect() const { return dialect_; }
+  void setDialect(core::gcode::Dialect d);
+  QString configDir() const { return configDir_; }
+
+ public slots:
+  void newFile();
+  void open();
+  bool save();
+  bool saveAs();
+  void showJobDetails();
+  void showFind();
+  void goToLine();
+  void toggleBreakpoint();
+  void runToCursor();
+  void showToolSelect();
+  void showOffsetDefine();
+  void showHelpContents();
+  void showAbout();
+  void toggleLanguage();
+  // Check the editor's text now (still off the GUI thread).
+  void checkNow();
+
+ signals:
+  void fileLoaded(const QString& path);
+  void loadFailed(const QString& path);
+  void checkFinished();
+
+ protected:
+  void closeEvent(QCloseEvent* event) override;
+  void changeEvent(QEvent* event) override;
+
+ private:
+  void createActions();
+  void createMenus();
+  void createToolBars();
+  void createDocks();
+  void retranslateUi();
+  void restoreLayout();
+  void saveLayout();
+
+  // Save / Discard / Cancel when there are unsaved changes; true = go on.
+  bool maybeSave();
+  bool isModified() const;
+  void updateTitle();
+  void updateRecentMenu();
+  void startLoad(const QString& path);
+  void onLoadFinished();
+  void watchFile(const QString& path);
+  void onFileChangedOnDisk(const QString& path);
+  void showBusyIndicator();
+
+  void scheduleCheck();
+  void startCheck();
+  void onCheckFinished();
+  void showDiagnostics();
+
+  void loadMachineSetup(const QString& dir = {});
+  // Hand the editor's current text to the run controller (before a run).
+  void syncRunner();
+  core::io::ProgramFile currentProgramFile() const;
+  void onRunStateChanged(RunState state);
+  void onAlarm(const core::Diagnostic& alarm);
+  void onCheckFailed(const QList<core::Diagnostic>& diags);
+  void showBanner(const QString& text, bool error);
+  void hideBanner();
+  void setSpeedIndex(int index);
+
+  std::unique_ptr<Settings> settings_;
+  Document* document_ = nullptr;
+  CodeEditor* editor_ = nullptr;
+  DiagnosticsPanel* diagnostics_ = nullptr;
+  RunController* runner_ = nullptr;
+  OutputView* output_ = nullptr;
+  StatusFields* statusFields_ = nullptr;
+  StatusLamps* statusLamps_ = nullptr;
+  QSplitter* splitter_ = nullptr;
+  QWidget* banner_ = nullptr;
+  QLabel* bannerLabel_ = nullptr;
+  QProgressBar* busyBar_ = nullptr;
+  QPointer<FindDialog> findDialog_;
+  QPointer<HelpContents> help_;
+  QFileSystemWatcher* watcher_ = nullptr;
+  QTimer* checkTimer_ = nullptr;
+  QTimer* diskChangeTimer_ = nullptr;
+
+  QToolBar* fileToolBar_ = nullptr;
+  QToolBar* editToolBar_ = nullptr;
+  QToolBar* runToolBar_ = nullptr;
+  QToolBar* helpToolBar_ = nullptr;
+  QMenu* fileMenu_ = nullptr;
+  QMenu* recentMenu_ = nullptr;
+  QMenu* editMenu_ = nullptr;
+  QMenu* runMenu_ = nullptr;
+  QMenu* speedMenu_ = nullptr;
+  QMenu* toolMenu_ = nullptr;
+  QMenu* dialectMenu_ = nullptr;
+  QMenu* viewMenu_ = nullptr;
+  QMenu* helpMenu_ = nullptr;
+  QHash<QString, QAction*> actions_;
+  QActionGroup* speedGroup_ = nullptr;
+  QActionGroup* dialectGroup_ = nullptr;
+  QLabel* speedLabel_ = nullptr;
+  QComboBox* speedCombo_ = nullptr;
+
+  QFutureWatcher<LoadedProgram> loadWatcher_;
+  QString loadingPath_;
+  QFutureWatcher<std::vector<core::Diagnostic>> checkWatcher_;
+  bool checkPending_ = false;
+  bool checkInFlight_ = false;
+  bool loadInFlight_ = false;
+  quint64 checkGeneration_ = 0;
+  quint64 appliedGeneration_ = 0;
+  std::vector<core::Diagnostic> lastDiagnostics_;
+  std::vector<core::Diagnostic> runDiagnostics_;  // the last alarm / refused run
+
+  core::gcode::Dialect dialect_ = core::gcode::Dialect::Fanuc;
+  QString configDir_;
+  QString configDirOverride_;  // where the dialogs last saved the .cfg files
+  core::machine::MachineSetup setup_;
+  std::optional<std::vector<int>> toolsWithBitmap_;
+  QString setupProblems_;
+  bool ignoreNextDiskChange_ = false;
+  bool runnerStale_ = true;
+};
+
+}  // namespace klueng::gui

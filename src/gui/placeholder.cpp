@@ -1,2 +1,0 @@
-// Widgets (issue 5).
-namespace klueng::gui {}

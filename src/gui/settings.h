@@ -1,0 +1,55 @@
+#pragma once
+// The GUI's remembered choices (QSettings, organisation "Klueng"): window
+// layout, recent files, UI language, dialect, last job header. One typed
+// accessor per key so no string key is spelled twice.
+#include <QByteArray>
+#include <QSettings>
+#include <QString>
+#include <QStringList>
+
+#include "klueng/core/gcode/code_table.h"
+#include "klueng/core/io/program_file.h"
+
+namespace klueng::gui {
+
+class Settings {
+ public:
+  static constexpr int kMaxRecentFiles = 8;
+
+  Settings();
+
+  QString language() const;  // "en" or "th"
+  void setLanguage(const QString& code);
+
+  core::gcode::Dialect dialect() const;
+  void setDialect(core::gcode::Dialect d);
+
+  QStringList recentFiles() const;
+  // Puts path first, removes duplicates, keeps at most kMaxRecentFiles.
+  void addRecentFile(const QString& path);
+  void removeRecentFile(const QString& path);
+
+  QByteArray windowGeometry() const;
+  void setWindowGeometry(const QByteArray& g);
+  QByteArray windowState() const;
+  void setWindowState(const QByteArray& s);
+  QByteArray splitterState() const;
+  void setSplitterState(const QByteArray& s);
+
+  // Stock and job details used for plain G-code files and new programs (SPEC 2 ext).
+  core::io::JobHeader lastJobHeader() const;
+  void setLastJobHeader(const core::io::JobHeader& h);
+
+  bool optionalStop() const;
+  void setOptionalStop(bool on);
+  bool blockSkip() const;
+  void setBlockSkip(bool on);
+
+  QString lastDirectory() const;
+  void setLastDirectory(const QString& dir);
+
+ private:
+  mutable QSettings settings_;
+};
+
+}  // namespace klueng::gui
