@@ -1,6 +1,8 @@
 // klueng-cli simulate FILE [--trace out.csv] [--cycle-time] [--config DIR]
 //                          [--lang en|th] [--dialect fanuc|classic]
 //                          [--optional-stop] [--block-skip]
+//                          [--png out.png] [--profile out.csv] [--json summary.json] [--resolution MM]
+//                          [--no-stock]   (interpret only: no cutting, no stock collisions)
 // Checks the program (errors -> printed, exit 1), runs it into a Timeline and
 // writes what was asked for. An alarm is printed like a diagnostic
 // (FILE:LINE:COL: alarm A104: ...) and gives exit 1; the trace up to it is
@@ -14,6 +16,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "cut_outputs.h"
 #include "klueng/core/gcode/checker.h"
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/io/program_file.h"
@@ -37,6 +40,7 @@ struct SimulateOptions {
   gcode::Dialect dialect = gcode::Dialect::Fanuc;
   bool optionalStop = false;
   bool blockSkip = false;
+  CutOutputOptions cut;  // --png --profile --json --resolution (cut_outputs.h)
 };
 
 // One row per option: name, whether it takes a value, what it does. New
@@ -66,6 +70,12 @@ const std::vector<OptionSpec>& optionSpecs() {
        }},
       {"--optional-stop", false, [](SimulateOptions& o, const std::string&) { o.optionalStop = true; return true; }},
       {"--block-skip", false, [](SimulateOptions& o, const std::string&) { o.blockSkip = true; return true; }},
+      {"--png", true, [](SimulateOptions& o, const std::string& v) { o.cut.pngPath = v; return true; }},
+      {"--profile", true, [](SimulateOptions& o, const std::string& v) { o.cut.profilePath = v; return true; }},
+      {"--json", true, [](SimulateOptions& o, const std::string& v) { o.cut.jsonPath = v; return true; }},
+      {"--no-stock", false, [](SimulateOptions& o, const std::string&) { o.cut.enabled = false; return true; }},
+      {"--resolution", true,
+       [](SimulateOptions& o, const std::string& v) { return parseResolution(v, o.cut.resolution); }},
   };
   return specs;
 }
@@ -105,7 +115,9 @@ std::optional<SimulateOptions> parseOptions(const std::vector<std::string>& args
   if (o.file.empty()) {
     std::fputs("usage: klueng-cli simulate FILE [--trace out.csv] [--cycle-time] [--config DIR]\n"
                "                              [--lang en|th] [--dialect fanuc|classic]\n"
-               "                              [--optional-stop] [--block-skip]\n",
+               "                              [--optional-stop] [--block-skip]\n"
+               "                              [--png out.png] [--profile out.csv] [--json summary.json]\n"
+               "                              [--resolution MM] [--no-stock]\n",
                stderr);
     return std::nullopt;
   }
@@ -179,7 +191,15 @@ int runSimulate(const std::vector<std::string>& args) {
       return 1;
     }
   }
+  // The stock: collisions stop the run on their block (SPEC 8), and the cut outputs.
+  const CutOutcome cut = o.cut.enabled ? runCut(o.file, file.value->header, setup, timeline, o.cut) : CutOutcome{};
+  for (const auto& d : cut.toolErrors) printDiagnostic(o.file, d, o.lang);
   if (o.cycleTime) std::printf("%.4f\n", timeline.cycleTime());
+  if (cut.alarm) {
+    printDiagnostic(o.file, *cut.alarm, o.lang);
+    return 1;
+  }
+  if (!cut.written) return 1;
   if (timeline.alarm) {
     printDiagnostic(o.file, *timeline.alarm, o.lang);
     return 1;

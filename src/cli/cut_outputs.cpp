@@ -1,0 +1,117 @@
+#include "cut_outputs.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+#include "klueng/core/cut/cut_simulator.h"
+#include "klueng/core/cut/finished_part.h"
+#include "klueng/core/cut/section_image.h"
+
+namespace klueng::cli {
+
+using namespace klueng::core;
+
+namespace {
+
+std::string jsonString(const std::string& s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    switch (c) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\n': out += "\\n"; break;
+      case '\r': out += "\\r"; break;
+      case '\t': out += "\\t"; break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20) out += fmt::format("\\u{:04x}", static_cast<int>(c));
+        else out += c;
+    }
+  }
+  return out + "\"";
+}
+
+std::string jsonDiagnostic(const Diagnostic& d) {
+  std::string args;
+  for (const auto& a : d.args) args += (args.empty() ? "" : ", ") + jsonString(a);
+  return fmt::format(
+      "{{\"code\": {}, \"severity\": {}, \"line\": {}, \"column\": {}, \"args\": [{}], \"message_en\": {}, "
+      "\"message_th\": {}}}",
+      jsonString(d.code), jsonString(std::string(severityName(d.severity, Lang::En))), d.range.line, d.range.column,
+      args, jsonString(formatMessage(d, Lang::En)), jsonString(formatMessage(d, Lang::Th)));
+}
+
+bool writeText(const std::string& path, const std::string& text) {
+  std::string error;
+  if (io::writeTextFileAtomic(path, text, &error)) return true;
+  std::fprintf(stderr, "klueng-cli simulate: cannot write %s: %s\n", path.c_str(), error.c_str());
+  return false;
+}
+
+}  // namespace
+
+bool parseResolution(const std::string& text, double& out) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v) || v < 0.001 || v > 5.0) return false;
+  out = v;
+  return true;
+}
+
+CutOutcome runCut(const std::string& file, const io::JobHeader& header, const machine::MachineSetup& setup,
+                  const machine::Timeline& timeline, const CutOutputOptions& options) {
+  CutOutcome outcome;
+  cut::CutOptions cutOptions;
+  cutOptions.resolution = options.resolution;
+  cut::CutSimulator sim(timeline, cut::CutSetup::from(header, setup), cutOptions);
+  sim.runToEnd();
+  outcome.alarm = sim.alarm();
+  outcome.toolErrors = sim.toolDiagnostics();
+  const cut::FinishedPart part(sim.stock());
+
+  if (!options.pngPath.empty()) {
+    cut::SectionView view;
+    view.stock = &sim.stock();
+    view.chuck = &sim.chuck();
+    view.tool = sim.currentTool();
+    view.toolPosition = sim.toolPosition();
+    std::string error;
+    if (!cut::writePng(options.pngPath, cut::renderSection(view), &error)) {
+      std::fprintf(stderr, "klueng-cli simulate: cannot write %s: %s\n", options.pngPath.c_str(), error.c_str());
+      outcome.written = false;
+    }
+  }
+  if (!options.profilePath.empty()) outcome.written = writeText(options.profilePath, part.toCsv()) && outcome.written;
+  if (!options.jsonPath.empty()) {
+    std::string alarms;
+    const std::optional<Diagnostic> stop = sim.stoppingAlarm();
+    if (stop) alarms = jsonDiagnostic(*stop);
+    std::string toolErrors;
+    for (const auto& d : outcome.toolErrors) toolErrors += (toolErrors.empty() ? "" : ", ") + jsonDiagnostic(d);
+    const Vec2 tool = sim.toolPosition();
+    const std::string json = fmt::format(
+        "{{\n"
+        "  \"file\": {},\n"
+        "  \"cycle_time_s\": {:.4f},\n"
+        "  \"completed\": {},\n"
+        "  \"alarms\": [{}],\n"
+        "  \"tool_errors\": [{}],\n"
+        "  \"stock\": {{\"diameter_mm\": {:.4f}, \"length_mm\": {:.4f}, \"volume_mm3\": {:.3f}}},\n"
+        "  \"removed_volume_mm3\": {:.3f},\n"
+        "  \"part\": {{\"volume_mm3\": {:.3f}, \"max_diameter_mm\": {:.4f}, \"length_mm\": {:.4f}, "
+        "\"z_min\": {:.4f}, \"z_max\": {:.4f}}},\n"
+        "  \"resolution_mm\": {:.4f},\n"
+        "  \"tool_end\": {{\"z\": {:.4f}, \"x\": {:.4f}}}\n"
+        "}}\n",
+        jsonString(file), sim.endTime(), stop ? "false" : "true", alarms, toolErrors, sim.stock().diameter(),
+        sim.stock().length(), sim.stock().initialVolume(), sim.removedVolume(), part.volume(), part.maxDiameter(),
+        part.length(), part.leftFaceZ(), part.rightFaceZ(), sim.stock().resolution(), tool.x() + 0.0,
+        2.0 * tool.y() + 0.0);
+    outcome.written = writeText(options.jsonPath, json) && outcome.written;
+  }
+  return outcome;
+}
+
+}  // namespace klueng::cli

@@ -1,0 +1,36 @@
+#pragma once
+// The cut part of `klueng-cli simulate`: runs the CutSimulator over the
+// timeline and writes --png (section view), --profile (CSV z,x_outer,x_inner
+// in diameters), --json (summary); --resolution sets the stock's Z column width.
+#include <optional>
+#include <string>
+
+#include "klueng/core/diagnostic.h"
+#include "klueng/core/io/program_file.h"
+#include "klueng/core/machine/interpreter.h"
+#include "klueng/core/messages.h"
+
+namespace klueng::cli {
+
+struct CutOutputOptions {
+  std::string pngPath;
+  std::string profilePath;
+  std::string jsonPath;
+  double resolution = 0.05;  // mm
+  bool enabled = true;       // false with --no-stock: the timeline alone
+};
+
+// Parses a --resolution value: a number in [0.001, 5] mm.
+bool parseResolution(const std::string& text, double& out);
+
+struct CutOutcome {
+  std::optional<core::Diagnostic> alarm;     // the cut alarm (A3xx) that stopped the run
+  std::vector<core::Diagnostic> toolErrors;  // bitmaps that could not be loaded
+  bool written = true;                       // false: an output file could not be written (message printed)
+};
+
+// Cuts, then writes the requested outputs. `file` only names the program in the JSON.
+CutOutcome runCut(const std::string& file, const core::io::JobHeader& header, const core::machine::MachineSetup& setup,
+                  const core::machine::Timeline& timeline, const CutOutputOptions& options);
+
+}  // namespace klueng::cli
