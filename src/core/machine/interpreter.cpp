@@ -102,7 +102,10 @@ class Interpreter {
     return false;
   }
 
-  const Word* find(char letter) const { return block_->find(letter); }
+  // The block's first word of a letter (indexed once per block).
+  const Word* find(char letter) const {
+    return letter >= 'A' && letter <= 'Z' ? byLetter_[static_cast<std::size_t>(letter - 'A')] : nullptr;
+  }
 
   // The word a motion alarm points at: the motion G of the block, else its
   // first axis word, else its first word.
@@ -113,11 +116,7 @@ class Interpreter {
     return block_->words.empty() ? nullptr : &block_->words.front();
   }
 
-  bool hasAxisWords() const {
-    for (const Word& w : block_->words)
-      if (w.letter == 'X' || w.letter == 'Z' || w.letter == 'U' || w.letter == 'W') return true;
-    return false;
-  }
+  bool hasAxisWords() const { return find('X') || find('Z') || find('U') || find('W'); }
 
   // Target of the controlled point from X/Z (absolute) and U/W (incremental).
   Vec2 axisTarget() const {
@@ -197,7 +196,10 @@ class Interpreter {
     std::array<CodeWord, 16> gs{};
     std::array<CodeWord, 16> ms{};
     std::size_t gCount = 0, mCount = 0;
+    byLetter_.fill(nullptr);
     for (const Word& w : block_->words) {
+      if (w.letter >= 'A' && w.letter <= 'Z' && !byLetter_[static_cast<std::size_t>(w.letter - 'A')])
+        byLetter_[static_cast<std::size_t>(w.letter - 'A')] = &w;
       if (w.letter != 'G' && w.letter != 'M') continue;
       const CodeInfo* info = gcode::findCode(w.letter, w.code(), options_.dialect);
       if (w.letter == 'G') {
@@ -269,7 +271,8 @@ class Interpreter {
     updateRpm();
 
     // 2. M codes before the motion, in code order: M03 M04 M08 M41 M86 M87 M91.
-    std::sort(ms.begin(), ms.begin() + static_cast<std::ptrdiff_t>(mCount),
+    if (mCount > 1)
+      std::sort(ms.begin(), ms.begin() + static_cast<std::ptrdiff_t>(mCount),
               [](const CodeWord& a, const CodeWord& b) {
                 return std::pair(a.info->phase, a.info->number) < std::pair(b.info->phase, b.info->number);
               });
@@ -575,6 +578,7 @@ class Interpreter {
   Vec2 pos_ = Vec2::Zero();            // controlled point without compensation, work coordinates
   std::optional<double> g28X_, g28Z_;  // G28 intermediate point (work coordinates)
   const gcode::Block* block_ = nullptr;
+  std::array<const Word*, 26> byLetter_{};
   int blockIndex_ = 0;
   bool stopped_ = false;
   bool stopEndsRun_ = false;

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <vector>
 
 namespace klueng::core::machine {
 
@@ -23,39 +22,31 @@ struct InverseRpm {
   std::array<double, 3> kinks() const { return {0.0, invCap * c, -invCap * c}; }
 };
 
-// Five-point Gauss-Legendre on [a, b].
-template <typename F>
-double gauss5(F&& f, double a, double b) {
-  static constexpr double xs[5] = {0.0, -0.5384693101056831, 0.5384693101056831, -0.9061798459386640,
-                                   0.9061798459386640};
-  static constexpr double ws[5] = {0.5688888888888889, 0.4786286704993665, 0.4786286704993665,
-                                   0.2369268850561891, 0.2369268850561891};
-  const double h = 0.5 * (b - a), m = 0.5 * (a + b);
-  double sum = 0.0;
-  for (int i = 0; i < 5; ++i) sum += ws[i] * f(m + h * xs[i]);
-  return sum * h;
-}
-
-// Integral of 1/rpm over the path length (mm * min / rev).
+// Integral of 1/rpm over the path length (mm * min / rev), exact: between the
+// kinks the integrand is either constant (clamped) or |x| / C with x linear
+// (lines) or cx + r sin(phi) (arcs), both integrated in closed form.
 double integrateInverseRpm(const Segment& path, const InverseRpm& g) {
+  std::array<double, 8> us{};
+  std::size_t n = 0;
+  const double xc = g.invCap * g.c;  // radius below which the rpm is clamped
   if (!path.isArc()) {
     const double x0 = xOf(path.start), x1 = xOf(path.end);
-    const double len = path.length();
-    std::vector<double> us{0.0, 1.0};
+    us[n++] = 0.0;
     if (x1 != x0) {
       for (double k : g.kinks()) {
         const double u = (k - x0) / (x1 - x0);
-        if (u > 0.0 && u < 1.0) us.push_back(u);
+        if (u > 0.0 && u < 1.0) us[n++] = u;
       }
     }
-    std::sort(us.begin(), us.end());
+    us[n++] = 1.0;
+    std::sort(us.begin(), us.begin() + static_cast<std::ptrdiff_t>(n));
     // The integrand is linear between kinks: the trapezoid rule is exact.
     double sum = 0.0;
-    for (std::size_t i = 1; i < us.size(); ++i) {
+    for (std::size_t i = 1; i < n; ++i) {
       const double xa = x0 + us[i - 1] * (x1 - x0), xb = x0 + us[i] * (x1 - x0);
       sum += 0.5 * (g(xa) + g(xb)) * (us[i] - us[i - 1]);
     }
-    return sum * len;
+    return sum * path.length();
   }
   const double r = path.radius();
   const double sweep = path.sweep();
@@ -64,7 +55,7 @@ double integrateInverseRpm(const Segment& path, const InverseRpm& g) {
   const double phi0 = std::atan2(xOf(a), zOf(a));  // angle in the (z, x) plane
   const double cx = xOf(path.centre);
   auto xAt = [&](double u) { return cx + r * std::sin(phi0 + dir * u); };
-  std::vector<double> us{0.0, sweep};
+  us[n++] = 0.0;
   for (double k : g.kinks()) {
     const double s = (k - cx) / r;
     if (s < -1.0 || s > 1.0) continue;
@@ -73,17 +64,23 @@ double integrateInverseRpm(const Segment& path, const InverseRpm& g) {
       double u = dir * (phi - phi0);
       u = std::fmod(u, 2 * std::numbers::pi);
       if (u < 0) u += 2 * std::numbers::pi;
-      if (u > 0.0 && u < sweep) us.push_back(u);
+      if (u > 0.0 && u < sweep) us[n++] = u;
     }
   }
-  std::sort(us.begin(), us.end());
+  us[n++] = sweep;
+  std::sort(us.begin(), us.begin() + static_cast<std::ptrdiff_t>(n));
   double sum = 0.0;
-  constexpr int kPieces = 8;  // smooth between kinks: 8 x 5-point GL is far below 1e-9 relative
-  for (std::size_t i = 1; i < us.size(); ++i) {
-    const double h = (us[i] - us[i - 1]) / kPieces;
-    for (int p = 0; p < kPieces; ++p) {
-      const double ua = us[i - 1] + p * h;
-      sum += gauss5([&](double u) { return g(xAt(u)); }, ua, ua + h);
+  for (std::size_t i = 1; i < n; ++i) {
+    const double ua = us[i - 1], ub = us[i];
+    if (ub <= ua) continue;
+    const double xm = xAt(0.5 * (ua + ub));
+    if (std::abs(xm) <= xc) {
+      sum += (ub - ua) * g.invCap;
+    } else {
+      // integral of x du = cx (ub - ua) - (r / dir) (cos(phi0 + dir ub) - cos(phi0 + dir ua))
+      const double integral =
+          cx * (ub - ua) - dir * r * (std::cos(phi0 + dir * ub) - std::cos(phi0 + dir * ua));
+      sum += (xm < 0 ? -integral : integral) / g.c;
     }
   }
   return sum * r;

@@ -70,11 +70,10 @@ class TimelineBuilder final : public MachineSink {
 
   void blockDone(const StateSnapshot& s) override {
     if (halted()) return;
-    StateSnapshot snap = s;
+    StateSnapshot& snap = out_.snapshots.emplace_back(s);
     snap.time = time_;
     snap.moveEnd = static_cast<int>(out_.moves.size());
     snap.machine.position = position_;
-    out_.snapshots.push_back(snap);
   }
 
   void alarm(const Diagnostic& d) override {
@@ -85,7 +84,7 @@ class TimelineBuilder final : public MachineSink {
 
  private:
   void push(const MotionCall& m, const Segment& path, double seconds, double feed) {
-    Move mv;
+    Move& mv = out_.moves.emplace_back();
     mv.kind = m.kind;
     mv.line = m.line;
     mv.blockIndex = m.blockIndex;
@@ -103,7 +102,6 @@ class TimelineBuilder final : public MachineSink {
     mv.compensated = m.compensated;
     time_ = mv.tEnd;
     position_ = path.end;
-    out_.moves.push_back(mv);
   }
 
   // G00: both axes start together, each at its own rapid rate; the one with

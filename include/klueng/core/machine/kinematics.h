@@ -13,8 +13,8 @@ namespace klueng::core::machine {
 double spindleRpm(const MotionContext& ctx, double xRadius);
 
 // Time in seconds of a feed move (G01/G02/G03) along `path` under ctx.
-// G98: length / F. G99: the integral of ds / (F * rpm(x(s))) -- exact for
-// lines, Gauss-Legendre between the clamp's kinks for arcs. Returns +inf when
+// G98: length / F. G99: the integral of ds / (F * rpm(x(s))), in closed form
+// between the kinks of the clamp (lines and arcs). Returns +inf when
 // the feed cannot advance (F or rpm is 0).
 double feedMoveSeconds(const Segment& path, const MotionContext& ctx);
 

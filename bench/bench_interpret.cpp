@@ -1,0 +1,77 @@
+// Interpreting a generated 100,000-block program (G96 roughing, arcs, dwells,
+// the last tenth under G42) into a full Timeline (issue 3 target: <= 100 ms
+// median, <= 150 MB). Parsing is done once, outside the timed loop.
+// KLUENG_BENCH_PROGRAM=path interprets that program file instead.
+#include <benchmark/benchmark.h>
+#include <sys/resource.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "klueng/core/gcode/parser.h"
+#include "klueng/core/io/program_file.h"
+#include "klueng/core/machine/interpreter.h"
+#include "klueng/core/messages.h"
+#include "program_generator.h"
+
+namespace {
+
+using namespace klueng::core;
+
+gcode::Program loadProgram(int blocks) {
+  io::ProgramFile file;
+  if (const char* path = std::getenv("KLUENG_BENCH_PROGRAM"); path && *path) {
+    auto read = io::readProgramFile(path);
+    if (read.value) file = *read.value;
+  } else {
+    auto parsed = io::parseProgramFile(klueng::bench::ProgramGenerator::generate(blocks));
+    if (parsed.value) file = *parsed.value;
+  }
+  return gcode::parse(file.gcode, file.gcodeFirstLine);
+}
+
+machine::MachineSetup benchSetup() {
+  machine::MachineSetup setup;
+  setup.offsets.offsets[0] = {0.0, 0.0, 0.8, 3};  // T0101: the shipped outside turning tool
+  return setup;
+}
+
+double peakRssMb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // Linux: kB
+}
+
+void BM_Interpret(benchmark::State& state) {
+  const gcode::Program program = loadProgram(static_cast<int>(state.range(0)));
+  const machine::MachineSetup setup = benchSetup();
+  std::size_t moves = 0, compensated = 0;
+  double cycle = 0.0;
+  bool alarm = false;
+  std::string alarmText;
+  for (auto _ : state) {
+    const machine::Timeline t = machine::interpret(program, setup);
+    moves = t.moves.size();
+    cycle = t.cycleTime();
+    alarm = t.alarm.has_value();
+    if (alarm) alarmText = t.alarm->code + " line " + std::to_string(t.alarm->range.line) + ": " +
+                           formatMessage(*t.alarm, Lang::En);
+    compensated = 0;
+    for (const auto& m : t.moves) compensated += m.compensated ? 1 : 0;
+    benchmark::DoNotOptimize(t.moves.data());
+  }
+  if (alarm) state.SkipWithError(("the program stopped with an alarm: " + alarmText).c_str());
+  state.counters["blocks"] = static_cast<double>(program.blocks.size());
+  state.counters["moves"] = static_cast<double>(moves);
+  state.counters["compensated"] = static_cast<double>(compensated);
+  state.counters["cycle_s"] = cycle;
+  state.counters["peak_rss_MB"] = peakRssMb();
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(program.blocks.size()));
+}
+
+}  // namespace
+
+BENCHMARK(BM_Interpret)->Arg(100'000)->Unit(benchmark::kMillisecond);
+
+BENCHMARK_MAIN();
