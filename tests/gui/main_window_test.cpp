@@ -1,0 +1,429 @@
+// The main window as a student uses it: open, see errors underlined and
+// listed, jump to them, save, switch language, answer the unsaved-changes
+// prompt, run a program that raises an alarm. Offscreen platform (QTest).
+#include <QAction>
+#include <QApplication>
+#include <QFile>
+#include <QMenu>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTableView>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTextBlock>
+#include <QTimer>
+
+#include "gui/code_editor.h"
+#include "gui/diagnostics_panel.h"
+#include "gui/find_dialog.h"
+#include "gui/gcode_highlighter.h"
+#include "gui/language.h"
+#include "gui/main_window.h"
+#include "gui/resources.h"
+#include "gui/run_controller.h"
+#include "gui/settings.h"
+#include "klueng/core/gcode/code_table.h"
+#include "klueng/core/io/program_file.h"
+#include "klueng/core/messages.h"
+
+using namespace klueng;
+using namespace klueng::gui;
+
+namespace {
+
+QString sample(const char* name) { return QStringLiteral(KLUENG_SAMPLES_DIR "/") + QString::fromLatin1(name); }
+
+QByteArray readAll(const QString& path) {
+  QFile f(path);
+  return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+bool waitIdle(MainWindow& w, int ms = 30000) {
+  return QTest::qWaitFor([&w] { return !w.isBusy(); }, ms);
+}
+
+// Answers the next modal message box by clicking the button with this object name.
+void answerNextMessageBox(const QString& buttonName, QString* seenBoxName = nullptr) {
+  QTimer::singleShot(0, [buttonName, seenBoxName] {
+    QTRY_VERIFY(QApplication::activeModalWidget() != nullptr);
+    auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+    QVERIFY(box);
+    if (seenBoxName) *seenBoxName = box->objectName();
+    auto* button = box->findChild<QPushButton*>(buttonName);
+    QVERIFY(button);
+    button->click();
+  });
+}
+
+// The underline colour formats the highlighter put on block `block` at UTF-16 index `pos`.
+bool hasWavyUnderlineAt(const QTextBlock& block, int pos) {
+  for (const QTextLayout::FormatRange& r : block.layout()->formats())
+    if (pos >= r.start && pos < r.start + r.length &&
+        r.format.underlineStyle() == QTextCharFormat::WaveUnderline)
+      return true;
+  return false;
+}
+
+}  // namespace
+
+class MainWindowTest : public QObject {
+  Q_OBJECT
+ private slots:
+  void initTestCase() {
+    QStandardPaths::setTestModeEnabled(true);
+    initResources();
+  }
+  void init() {
+    QSettings(QStringLiteral("Klueng"), QStringLiteral("klueng")).clear();
+    Language::instance()->setLanguage(QStringLiteral("en"));
+  }
+
+  void opensSample01WithoutErrors() {
+    MainWindow w;
+    w.show();
+    QSignalSpy loaded(&w, &MainWindow::fileLoaded);
+    QVERIFY(w.openFile(sample("01-step-shaft.txt")));
+    QVERIFY(waitIdle(w));
+    QCOMPARE(loaded.count(), 1);
+    QCOMPARE(w.windowTitle(), QStringLiteral("Klueng : 01-step-shaft.txt[*]"));
+    QVERIFY(!w.isWindowModified());
+    // The editor shows the G-code part only; its first line is file line 7.
+    QCOMPARE(w.editor()->firstFileLine(), 7);
+    QCOMPARE(w.editor()->document()->firstBlock().text(), QStringLiteral("O0001"));
+    // File line 54, the last one, is editor block 47.
+    QCOMPARE(w.editor()->document()->findBlockByNumber(54 - 7).text(), QStringLiteral("N460 M30"));
+    QCOMPARE(w.document()->header().project, std::string("Step shaft exercise"));
+    QCOMPARE(w.document()->header().diameterMm(), 50.0);
+    QCOMPARE(w.document()->header().lengthMm(), 100.0);
+    QCOMPARE(w.diagnosticsPanel()->errorCount(), 0);
+  }
+
+  void grammarErrorsAreUnderlinedAndListed() {
+    MainWindow w;
+    w.setDialect(core::gcode::Dialect::Classic);
+    w.show();
+    QVERIFY(w.openFile(sample("04-grammar-errors.txt")));
+    QVERIFY(waitIdle(w));
+    DiagnosticsPanel* panel = w.diagnosticsPanel();
+    QVERIFY(panel->errorCount() >= 15);
+    // "N30 G01 X30. Y5. F0.2" is file line 11; Y (column 14) is not a lathe word.
+    const auto& diags = panel->diagnostics();
+    auto y = std::find_if(diags.begin(), diags.end(), [](const core::Diagnostic& d) {
+      return d.range.line == 11 && d.range.column == 14;
+    });
+    QVERIFY(y != diags.end());
+    QCOMPARE(y->severity, core::Severity::Error);
+    const QTextBlock block = w.editor()->document()->findBlockByNumber(11 - 7);
+    QCOMPARE(block.text().mid(13, 3), QStringLiteral("Y5."));
+    QVERIFY(hasWavyUnderlineAt(block, 13));
+    QVERIFY(!hasWavyUnderlineAt(block, 0));  // N30 itself is fine
+    // The panel shows the message in the UI language, and a click jumps to the word.
+    const int row = static_cast<int>(y - diags.begin());
+    const QModelIndex msg = panel->model()->index(row, DiagnosticsModel::MessageColumn);
+    QCOMPARE(msg.data().toString(), QString::fromStdString(core::formatMessage(*y, core::Lang::En)));
+    QCOMPARE(panel->model()->index(row, DiagnosticsModel::LineColumn).data().toInt(), 11);
+    QTableView* view = panel->view();
+    view->scrollTo(msg);
+    QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, view->visualRect(msg).center());
+    QCOMPARE(w.editor()->cursorFileLine(), 11);
+    QCOMPARE(w.editor()->textCursor().positionInBlock(), 13);
+    // Every diagnostic on an editor line is underlined at its column.
+    for (const auto& d : diags) {
+      if (d.range.line < 7 || d.range.column < 1) continue;
+      const QTextBlock b = w.editor()->document()->findBlockByNumber(d.range.line - 7);
+      QVERIFY2(hasWavyUnderlineAt(b, std::min<int>(d.range.column - 1, b.length() - 2)),
+               qPrintable(QStringLiteral("%1 at %2:%3").arg(QString::fromStdString(d.code)).arg(d.range.line).arg(d.range.column)));
+    }
+  }
+
+  void typingAnErrorUnderlinesItAfterThePause() {
+    MainWindow w;
+    w.show();
+    QVERIFY(waitIdle(w));
+    w.editor()->insertPlainText(QStringLiteral("G01 X20. Z-5. F0.2\n"));
+    QTest::keyClicks(w.editor(), QStringLiteral("G01 X20. Q"));
+    // Debounced: nothing is checked while typing goes on ...
+    QVERIFY(w.isBusy());
+    QVERIFY(waitIdle(w));
+    // ... then the lone letter Q on editor line 2 (file line 8, column 10) is found.
+    const auto& diags = w.diagnostics();
+    auto it = std::find_if(diags.begin(), diags.end(), [](const core::Diagnostic& d) {
+      return d.range.line == 8 && d.range.column == 10 && d.severity == core::Severity::Error;
+    });
+    QVERIFY(it != diags.end());
+    QVERIFY(hasWavyUnderlineAt(w.editor()->document()->findBlockByNumber(1), 9));
+    QVERIFY(w.isWindowModified());
+    QVERIFY(w.windowTitle().startsWith(QStringLiteral("Klueng : untitled.txt")));
+    // Fixing it clears the underline.
+    QTest::keyClick(w.editor(), Qt::Key_Backspace);
+    QVERIFY(waitIdle(w));
+    QVERIFY(!hasWavyUnderlineAt(w.editor()->document()->findBlockByNumber(1), 9));
+  }
+
+  void unsavedChangesPromptCancelKeepsAndDiscardDrops() {
+    MainWindow w;
+    w.show();
+    QVERIFY(waitIdle(w));
+    QTest::keyClicks(w.editor(), QStringLiteral("G00 X50. Z2."));
+    QString boxName;
+    answerNextMessageBox(QStringLiteral("cancelButton"), &boxName);
+    w.newFile();
+    QCOMPARE(boxName, QStringLiteral("unsavedChangesBox"));
+    QCOMPARE(w.editor()->toPlainText(), QStringLiteral("G00 X50. Z2."));
+    answerNextMessageBox(QStringLiteral("cancelButton"));
+    QVERIFY(!w.close());  // closing asks too, and Cancel keeps the window
+    boxName.clear();
+    answerNextMessageBox(QStringLiteral("discardButton"), &boxName);
+    QVERIFY(w.openFile(sample("01-step-shaft.txt")));
+    QCOMPARE(boxName, QStringLiteral("unsavedChangesBox"));
+    QVERIFY(waitIdle(w));
+    QCOMPARE(w.editor()->document()->firstBlock().text(), QStringLiteral("O0001"));
+    QVERIFY(!w.isWindowModified());
+    QVERIFY(w.close());  // nothing changed: no prompt
+  }
+
+  void saveRoundTripsTheFile() {
+    QTemporaryDir tmp;
+    const QString copy = tmp.filePath(QStringLiteral("shaft.txt"));
+    MainWindow w;
+    w.show();
+    QVERIFY(w.openFile(sample("01-step-shaft.txt")));
+    QVERIFY(waitIdle(w));
+    QVERIFY(w.saveFile(copy));
+    // Unchanged program: the saved bytes are the core's canonical form of the sample.
+    const auto original = core::io::readProgramFile(sample("01-step-shaft.txt").toStdString());
+    QVERIFY(original.value);
+    QCOMPARE(readAll(copy), QByteArray::fromStdString(core::io::formatProgramFile(*original.value)));
+    QCOMPARE(w.windowTitle(), QStringLiteral("Klueng : shaft.txt[*]"));
+    // Edit line 8 (N10 ...) and save again: header kept, code changed.
+    QTextCursor c(w.editor()->document()->findBlockByNumber(1));
+    c.movePosition(QTextCursor::EndOfBlock);
+    c.insertText(QStringLiteral(" (edited)"));
+    QVERIFY(w.isWindowModified());
+    QVERIFY(w.saveFile(copy));
+    QVERIFY(!w.isWindowModified());
+    const auto back = core::io::readProgramFile(copy.toStdString());
+    QVERIFY(back.ok());
+    QCOMPARE(back.value->header.project, std::string("Step shaft exercise"));
+    QCOMPARE(back.value->header.programmer, std::string("Klueng samples"));
+    QVERIFY(back.value->gcode.find("N10 G21 G40 G97 (edited)\n") != std::string::npos);
+    QCOMPARE(QString::fromStdString(back.value->gcode).trimmed(), w.editor()->toPlainText().trimmed());
+    // The recent files list remembers it.
+    QCOMPARE(Settings().recentFiles().value(0), QFileInfo(copy).absoluteFilePath());
+  }
+
+  void fileChangedOnDiskOffersReload() {
+    QTemporaryDir tmp;
+    const QString path = tmp.filePath(QStringLiteral("p.txt"));
+    QFile::copy(sample("01-step-shaft.txt"), path);
+    QFile::setPermissions(path, QFile::ReadOwner | QFile::WriteOwner);
+    MainWindow w;
+    w.show();
+    QVERIFY(w.openFile(path));
+    QVERIFY(waitIdle(w));
+    QString boxName;
+    answerNextMessageBox(QStringLiteral("reloadButton"), &boxName);
+    {
+      QFile f(path);
+      QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+      f.write("P\nS\nSteel\n130\n150\nMe\nO0002\nG00 X10. Z5.\n");
+    }
+    QTRY_COMPARE_WITH_TIMEOUT(boxName, QStringLiteral("fileChangedBox"), 10000);
+    QTRY_COMPARE_WITH_TIMEOUT(w.editor()->document()->firstBlock().text(), QStringLiteral("O0002"), 10000);
+    QVERIFY(waitIdle(w));
+    QCOMPARE(w.document()->header().material, std::string("Steel"));
+  }
+
+  void languageToggleTranslatesMenusAndMessages() {
+    MainWindow w;
+    w.show();
+    QVERIFY(w.openFile(sample("01-step-shaft.txt")));
+    QVERIFY(waitIdle(w));
+    QMenu* file = w.menuBar()->findChild<QMenu*>(QStringLiteral("menuFile"));
+    QVERIFY(file);
+    QCOMPARE(file->title(), QStringLiteral("&File"));
+    QCOMPARE(w.action(QStringLiteral("actionGo"))->text(), QStringLiteral("&Go"));
+    w.action(QStringLiteral("actionToggleLanguage"))->trigger();
+    QVERIFY(Language::instance()->isThai());
+    QTRY_COMPARE(file->title(), QStringLiteral("แฟ้ม (&F)"));
+    QCOMPARE(w.action(QStringLiteral("actionGo"))->text(), QStringLiteral("เริ่มทำงาน (&G)"));
+    QCOMPARE(w.action(QStringLiteral("actionStep"))->text(), QStringLiteral("ทำงานทีละบรรทัด (&S)"));
+    QCOMPARE(w.menuBar()->findChild<QMenu*>(QStringLiteral("menuToolSetting"))->title(),
+             QStringLiteral("ตั้งค่ามีดตัด (&T)"));
+    QCOMPARE(Settings().language(), QStringLiteral("th"));
+    // Core texts follow: a diagnostic is listed in Thai.
+    QTest::keyClicks(w.editor(), QStringLiteral("Y5 "));
+    QVERIFY(waitIdle(w));
+    QVERIFY(w.diagnosticsPanel()->errorCount() >= 1);
+    const auto& d = w.diagnosticsPanel()->diagnostics().front();
+    QCOMPARE(w.diagnosticsPanel()->model()->index(0, DiagnosticsModel::MessageColumn).data().toString(),
+             QString::fromStdString(core::formatMessage(d, core::Lang::Th)));
+    // And back.
+    w.action(QStringLiteral("actionToggleLanguage"))->trigger();
+    QTRY_COMPARE(file->title(), QStringLiteral("&File"));
+    QCOMPARE(Settings().language(), QStringLiteral("en"));
+  }
+
+  void everyMenuTextIsTranslated() {
+    MainWindow w;
+    Language::instance()->setLanguage(QStringLiteral("th"));
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
+    QTRY_COMPARE(w.menuBar()->findChild<QMenu*>(QStringLiteral("menuFile"))->title(), QStringLiteral("แฟ้ม (&F)"));
+    // Every action with text in a menu must contain Thai letters (no English left behind).
+    const QList<QAction*> actions = w.findChildren<QAction*>();
+    int checked = 0;
+    for (QAction* a : actions) {
+      if (a->parent() != &w || a->objectName().isEmpty() || a->text().isEmpty() || a->objectName().startsWith(QStringLiteral("actionSpeed")))
+        continue;
+      if (a->objectName() == QStringLiteral("actionDialectFanuc")) continue;  // a product name
+      bool thai = false;
+      for (QChar c : a->text()) thai |= c.unicode() >= 0x0E00 && c.unicode() <= 0x0E7F;
+      QVERIFY2(thai, qPrintable(a->objectName() + QStringLiteral(": ") + a->text()));
+      ++checked;
+    }
+    QVERIFY(checked >= 35);
+  }
+
+  void breakpointsFollowTheirLines() {
+    MainWindow w;
+    w.show();
+    QVERIFY(w.openFile(sample("01-step-shaft.txt")));
+    QVERIFY(waitIdle(w));
+    CodeEditor* e = w.editor();
+    e->goToFileLine(13);  // N50 G00 X54. Z2. M08
+    w.action(QStringLiteral("actionToggleBreakpoint"))->trigger();
+    QCOMPARE(e->breakpointFileLines(), QList<int>{13});
+    QVERIFY(w.runController()->breakpoints().contains(13));
+    // A line inserted above moves the breakpoint down with its block.
+    QTextCursor c(e->document()->findBlockByNumber(1));
+    c.insertText(QStringLiteral("(new line)\n"));
+    QCOMPARE(e->breakpointFileLines(), QList<int>{14});
+    QCOMPARE(e->document()->findBlockByNumber(14 - 7).text(), QStringLiteral("N50 G00 X54. Z2. M08"));
+    e->toggleBreakpoint(14);
+    QVERIFY(e->breakpointFileLines().isEmpty());
+  }
+
+  void findReplaceAndGoToLine() {
+    MainWindow w;
+    w.show();
+    QVERIFY(w.openFile(sample("01-step-shaft.txt")));
+    QVERIFY(waitIdle(w));
+    FindDialog find(w.editor());
+    find.setFindText(QStringLiteral("G01"));
+    QVERIFY(find.findNext());
+    QCOMPARE(w.editor()->cursorFileLine(), 15);  // N70 G01 F0.2 (face)
+    QVERIFY(find.findNext());
+    QCOMPARE(w.editor()->cursorFileLine(), 18);  // N100 G01 Z-59.8 F0.25 (rough)
+    find.setFindText(QStringLiteral("X100."));
+    find.setReplaceText(QStringLiteral("X120."));
+    QCOMPARE(find.replaceAll(), 2);
+    QVERIFY(!w.editor()->toPlainText().contains(QStringLiteral("X100.")));
+    w.editor()->undo();  // Replace All is one undo step
+    QCOMPARE(w.editor()->toPlainText().count(QStringLiteral("X100.")), 2);
+    find.setFindText(QStringLiteral("NOPE"));
+    QVERIFY(!find.findNext());
+  }
+
+  void tooltipsExplainCodesFromTheCodeTable() {
+    MainWindow w;
+    w.editor()->setPlainText(QStringLiteral("N10 G01 X20. M03 (G02 in a comment)"));
+    const auto g01 = core::gcode::lookupCode('G', 1, core::gcode::Dialect::Fanuc);
+    QVERIFY(g01);
+    const QString tipG = w.editor()->helpForPosition(5);  // on "G01"
+    QVERIFY2(tipG.contains(QString::fromUtf8(g01->nameEn.data(), static_cast<qsizetype>(g01->nameEn.size()))),
+             qPrintable(tipG));
+    const auto m03 = core::gcode::lookupCode('M', 3, core::gcode::Dialect::Fanuc);
+    QVERIFY(w.editor()->helpForPosition(15).contains(
+        QString::fromUtf8(m03->nameEn.data(), static_cast<qsizetype>(m03->nameEn.size()))));
+    QVERIFY(w.editor()->helpForPosition(9).contains(QStringLiteral("diameter")));  // X20.
+    QVERIFY(w.editor()->helpForPosition(19).isEmpty());  // G02 inside a comment
+    Language::instance()->setLanguage(QStringLiteral("th"));
+    QVERIFY(w.editor()->helpForPosition(5).contains(
+        QString::fromUtf8(g01->nameTh.data(), static_cast<qsizetype>(g01->nameTh.size()))));
+  }
+
+  void highlighterColoursWordKinds() {
+    using K = GcodeHighlighter::Kind;
+    QCOMPARE(GcodeHighlighter::kindOf(u'g'), K::GCode);
+    QCOMPARE(GcodeHighlighter::kindOf(u'M'), K::MCode);
+    QCOMPARE(GcodeHighlighter::kindOf(u'T'), K::Tool);
+    QCOMPARE(GcodeHighlighter::kindOf(u'X'), K::Axis);
+    QCOMPARE(GcodeHighlighter::kindOf(u'N'), K::Sequence);
+    MainWindow w;
+    w.editor()->setPlainText(QStringLiteral("N10 G01 X20. T0101 (cut)"));
+    const QTextBlock b = w.editor()->document()->firstBlock();
+    auto colourAt = [&b](int pos) {
+      for (const auto& r : b.layout()->formats())
+        if (pos >= r.start && pos < r.start + r.length) return r.format.foreground().color();
+      return QColor();
+    };
+    const GcodeHighlighter* h = w.editor()->highlighter();
+    QCOMPARE(colourAt(4), h->format(K::GCode).foreground().color());
+    QCOMPARE(colourAt(8), h->format(K::Axis).foreground().color());
+    QCOMPARE(colourAt(13), h->format(K::Tool).foreground().color());
+    QCOMPARE(colourAt(20), h->format(K::Comment).foreground().color());
+    QVERIFY(colourAt(4) != colourAt(8) && colourAt(8) != colourAt(13) && colourAt(13) != colourAt(20));
+  }
+
+  void programWithErrorsDoesNotRun() {
+    MainWindow w;
+    w.show();
+    QVERIFY(waitIdle(w));
+    w.editor()->setPlainText(QStringLiteral("G01 X20. Y5. F0.2\n"));
+    QVERIFY(waitIdle(w));
+    w.action(QStringLiteral("actionGo"))->trigger();
+    QTRY_VERIFY_WITH_TIMEOUT(!w.bannerText().isEmpty(), 10000);
+    QVERIFY(w.bannerText().contains(QStringLiteral("error")));
+    QVERIFY(w.runController()->state() != RunState::Running);
+    QCOMPARE(w.editor()->cursorFileLine(), 7);
+  }
+
+  void alarmStopsOnItsBlockAndSaysWhy() {
+    MainWindow w;
+    w.show();
+    QVERIFY(waitIdle(w));
+    // Cutting with the spindle stopped: G01 on file line 9 raises an alarm there.
+    w.editor()->setPlainText(QStringLiteral("G21 G99\nT0101 G00 X60. Z5.\nG01 X40. Z-10. F0.2\nM30\n"));
+    QVERIFY(waitIdle(w));
+    QCOMPARE(w.diagnosticsPanel()->errorCount(), 0);
+    QSignalSpy alarms(w.runController(), &RunController::alarmRaised);
+    w.runController()->setSpeed(RunController::kAsFastAsPossible);
+    w.action(QStringLiteral("actionGo"))->trigger();
+    QTRY_COMPARE_WITH_TIMEOUT(w.runController()->state(), RunState::Alarm, 20000);
+    QCOMPARE(alarms.count(), 1);
+    const auto alarm = alarms.first().first().value<core::Diagnostic>();
+    QCOMPARE(alarm.range.line, 9);
+    QCOMPARE(w.editor()->executingFileLine(), 9);
+    QVERIFY(w.bannerText().contains(QString::fromStdString(core::formatMessage(alarm, core::Lang::En))));
+    QVERIFY(w.bannerText().contains(QStringLiteral("line 9")));
+    // The alarm is also listed with the program's diagnostics.
+    const auto& listed = w.diagnosticsPanel()->diagnostics();
+    QVERIFY(std::any_of(listed.begin(), listed.end(), [&](const core::Diagnostic& d) { return d.code == alarm.code; }));
+  }
+
+  void stepHighlightsTheExecutingBlock() {
+    MainWindow w;
+    w.show();
+    QVERIFY(w.openFile(sample("01-step-shaft.txt")));
+    QVERIFY(waitIdle(w));
+    RunController* run = w.runController();
+    run->setSpeed(RunController::kAsFastAsPossible);
+    int lastLine = 0;
+    for (int i = 0; i < 5; ++i) {
+      w.action(QStringLiteral("actionStep"))->trigger();
+      QTRY_COMPARE_WITH_TIMEOUT(run->state(), RunState::Paused, 20000);
+      QVERIFY(run->currentLine() > lastLine);
+      lastLine = run->currentLine();
+      QCOMPARE(w.editor()->executingFileLine(), run->currentLine());
+    }
+    // While paused the editor can be read; Stop clears the marker.
+    w.action(QStringLiteral("actionStop"))->trigger();
+    QTRY_COMPARE(w.editor()->executingFileLine(), 0);
+  }
+};
+
+QTEST_MAIN(MainWindowTest)
+#include "main_window_test.moc"

@@ -1,0 +1,51 @@
+// Starts the real `klueng` under Xvfb (xvfb-run -a) with --screenshot, then
+// checks the PNG: the window's size, and a real picture, not a blank one.
+#include <QGuiApplication>
+#include <QImage>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QSet>
+#include <QTest>
+
+class ScreenshotCheck : public QObject {
+  Q_OBJECT
+ private slots:
+  void realProgramUnderXvfb() {
+    const QString out = QStringLiteral(KLUENG_SHOT_DIR "/klueng-xvfb.png");
+    QFile::remove(out);
+    QProcess p;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.remove(QStringLiteral("QT_QPA_PLATFORM"));  // the real xcb platform on Xvfb's display
+    p.setProcessEnvironment(env);
+    p.start(QStringLiteral(XVFB_RUN_PATH),
+            {QStringLiteral("-a"), QStringLiteral("-s"), QStringLiteral("-screen 0 1600x1000x24"),
+             QStringLiteral(KLUENG_APP_PATH), QStringLiteral("--screenshot"), out,
+             QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt")});
+    QVERIFY2(p.waitForFinished(90000), "klueng did not finish under Xvfb");
+    const QString stdoutText = QString::fromLocal8Bit(p.readAllStandardOutput());
+    QCOMPARE(p.exitCode(), 0);
+    const QRegularExpression re(QStringLiteral("screenshot saved (\\d+)x(\\d+) window (\\d+)x(\\d+)"));
+    const auto m = re.match(stdoutText);
+    QVERIFY2(m.hasMatch(), qPrintable(stdoutText + QString::fromLocal8Bit(p.readAllStandardError())));
+    const int windowW = m.captured(3).toInt();
+    const int windowH = m.captured(4).toInt();
+    QVERIFY(windowW >= 800 && windowH >= 500);
+
+    QImage img(out);
+    QVERIFY(!img.isNull());
+    QCOMPARE(img.width(), windowW * static_cast<int>(img.devicePixelRatio()));
+    QCOMPARE(img.height(), windowH * static_cast<int>(img.devicePixelRatio()));
+    // Non-blank: many colours (text, icons, the stock) and no colour covering nearly all of it.
+    QHash<QRgb, int> counts;
+    for (int y = 0; y < img.height(); y += 2)
+      for (int x = 0; x < img.width(); x += 2) ++counts[img.pixel(x, y)];
+    int dominant = 0;
+    for (int c : counts) dominant = std::max(dominant, c);
+    const int samples = ((img.width() + 1) / 2) * ((img.height() + 1) / 2);
+    QVERIFY2(counts.size() > 100, qPrintable(QStringLiteral("only %1 colours").arg(counts.size())));
+    QVERIFY2(dominant < samples * 0.8, "one colour covers more than 80% of the window");
+  }
+};
+
+QTEST_GUILESS_MAIN(ScreenshotCheck)
+#include "screenshot_check.moc"

@@ -1,0 +1,797 @@
+<?xml version='1.0' encoding='utf-8'?>
+<TS version="2.1" language="th_TH">
+<context>
+    <name>klueng::gui::CodeEditor</name>
+    <message>
+        <location filename="../src/gui/code_editor.cpp" line="278" />
+        <source>&lt;b&gt;%1&lt;/b&gt;: not a code of this dialect</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;: ไม่มีรหัสนี้ในภาษาจีโค้ดแบบที่เลือก</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/code_editor.cpp" line="287" />
+        <source>X position (diameter)</source>
+        <translation>ตำแหน่งแกน X (เส้นผ่านศูนย์กลาง)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/code_editor.cpp" line="288" />
+        <source>Z position</source>
+        <translation>ตำแหน่งแกน Z</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/code_editor.cpp" line="289" />
+        <source>incremental X move (diameter)</source>
+        <translation>ระยะเคลื่อนที่แกน X แบบสัมพัทธ์ (เส้นผ่านศูนย์กลาง)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/code_editor.cpp" line="290" />
+        <source>incremental Z move</source>
+        <translation>ระยะเคลื่อนที่แกน Z แบบสัมพัทธ์</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/code_editor.cpp" line="291" />
+        <source>arc centre in X from the start point (radius)</source>
+        <translation>จุดศูนย์กลางส่วนโค้งในแนวแกน X วัดจากจุดเริ่ม (รัศมี)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/code_editor.cpp" line="292" />
+        <source>arc centre in Z from the start point</source>
+        <translation>จุดศูนย์กลางส่วนโค้งในแนวแกน Z วัดจากจุดเริ่ม</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/code_editor.cpp" line="293" />
+        <source>arc radius or cycle value</source>
+        <translation>รัศมีส่วนโค้ง หรือค่าของวัฏจักรการกลึง</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/code_editor.cpp" line="294" />
+        <source>feed rate (mm/rev under G99, mm/min under G98, lead for G32)</source>
+        <translation>อัตราป้อน (มม./รอบ เมื่อใช้ G99, มม./นาที เมื่อใช้ G98, ระยะพิตช์เกลียวสำหรับ G32)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/code_editor.cpp" line="295" />
+        <source>spindle speed (rpm under G97, m/min under G96)</source>
+        <translation>ความเร็วรอบ (รอบ/นาที เมื่อใช้ G97, ม./นาที เมื่อใช้ G96)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/code_editor.cpp" line="296" />
+        <source>tool number (first two digits) and offset number (last two)</source>
+        <translation>หมายเลขมีดตัด (สองหลักแรก) และหมายเลขค่าออฟเซต (สองหลักหลัง)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/code_editor.cpp" line="297" />
+        <source>sequence (block) number</source>
+        <translation>หมายเลขบล็อก</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/code_editor.cpp" line="298" />
+        <source>program number</source>
+        <translation>หมายเลขโปรแกรม</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/code_editor.cpp" line="299" />
+        <source>spindle angle in C-axis mode (absolute, degrees)</source>
+        <translation>มุมของเพลาหัวจับในโหมดควบคุมการเคลื่อนที่ของแกน C (ค่าสัมบูรณ์, องศา)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/code_editor.cpp" line="300" />
+        <source>spindle angle in C-axis mode (incremental, degrees)</source>
+        <translation>มุมของเพลาหัวจับในโหมดควบคุมการเคลื่อนที่ของแกน C (ค่าสัมพัทธ์, องศา)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/code_editor.cpp" line="301" />
+        <source>dwell time in ms, or a cycle/subprogram parameter</source>
+        <translation>เวลาหยุดรอ (มิลลิวินาที) หรือค่าพารามิเตอร์ของวัฏจักร/โปรแกรมย่อย</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/code_editor.cpp" line="302" />
+        <source>cycle parameter</source>
+        <translation>ค่าพารามิเตอร์ของวัฏจักรการกลึง</translation>
+    </message>
+</context>
+<context>
+    <name>klueng::gui::DiagnosticsModel</name>
+    <message>
+        <location filename="../src/gui/diagnostics_panel.cpp" line="60" />
+        <source>Kind</source>
+        <translation>ประเภท</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/diagnostics_panel.cpp" line="61" />
+        <source>Code</source>
+        <translation>รหัส</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/diagnostics_panel.cpp" line="62" />
+        <source>Line</source>
+        <translation>บรรทัด</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/diagnostics_panel.cpp" line="63" />
+        <source>Column</source>
+        <translation>คอลัมน์</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/diagnostics_panel.cpp" line="64" />
+        <source>Message</source>
+        <translation>ข้อความ</translation>
+    </message>
+</context>
+<context>
+    <name>klueng::gui::DiagnosticsPanel</name>
+    <message>
+        <location filename="../src/gui/diagnostics_panel.cpp" line="116" />
+        <source>Diagnostics: no errors</source>
+        <translation>การตรวจสอบไวยากรณ์: ไม่มีข้อผิดพลาด</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/diagnostics_panel.cpp" line="117" />
+        <source>Diagnostics: %1 errors, %2 warnings</source>
+        <translation>การตรวจสอบไวยากรณ์: ข้อผิดพลาด %1 รายการ, คำเตือน %2 รายการ</translation>
+    </message>
+</context>
+<context>
+    <name>klueng::gui::Document</name>
+    <message>
+        <location filename="../src/gui/document.cpp" line="66" />
+        <source>untitled.txt</source>
+        <translation>ไม่มีชื่อ.txt</translation>
+    </message>
+</context>
+<context>
+    <name>klueng::gui::FindDialog</name>
+    <message>
+        <location filename="../src/gui/find_dialog.cpp" line="87" />
+        <source>"%1" was not found.</source>
+        <translation>ไม่พบ "%1"</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../src/gui/find_dialog.cpp" line="119" />
+        <source>%n replacement(s) made.</source>
+        <translation><numerusform>แทนที่แล้ว %n ตำแหน่ง</numerusform></translation>
+    </message>
+    <message>
+        <location filename="../src/gui/find_dialog.cpp" line="124" />
+        <source>Find and Replace</source>
+        <translation>ค้นหาและแทนที่</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/find_dialog.cpp" line="125" />
+        <source>&amp;Find:</source>
+        <translation>ค้นหา (&amp;F):</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/find_dialog.cpp" line="126" />
+        <source>Replace &amp;with:</source>
+        <translation>แทนที่ด้วย (&amp;W):</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/find_dialog.cpp" line="127" />
+        <source>Match &amp;case</source>
+        <translation>ตรงตามตัวพิมพ์ใหญ่-เล็ก (&amp;C)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/find_dialog.cpp" line="128" />
+        <source>Whole &amp;words</source>
+        <translation>ทั้งคำ (&amp;W)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/find_dialog.cpp" line="129" />
+        <source>Find &amp;Next</source>
+        <translation>ค้นหาถัดไป (&amp;N)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/find_dialog.cpp" line="130" />
+        <source>Find &amp;Previous</source>
+        <translation>ค้นหาก่อนหน้า (&amp;P)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/find_dialog.cpp" line="131" />
+        <source>&amp;Replace</source>
+        <translation>แทนที่ (&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/find_dialog.cpp" line="132" />
+        <source>Replace &amp;All</source>
+        <translation>แทนที่ทั้งหมด (&amp;A)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/find_dialog.cpp" line="133" />
+        <source>Close</source>
+        <translation>ปิด</translation>
+    </message>
+</context>
+<context>
+    <name>klueng::gui::HelpContents</name>
+    <message>
+        <location filename="../src/gui/help_contents.cpp" line="39" />
+        <source>Klueng help: the G and M codes</source>
+        <translation>ระบบช่วยเหลือของกลึง: รหัส G และรหัส M</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/help_contents.cpp" line="41" />
+        <source>A program file starts with six lines: project name, part name, material, stock diameter, stock length and programmer. Diameter and length begin with a unit digit (0 = inch, 1 = mm): &lt;tt&gt;150&lt;/tt&gt; is 50 mm. From line 7 on comes the G-code, one block per line.</source>
+        <translation>แฟ้มชุดรหัสสั่งการทำงานเริ่มด้วยหกบรรทัด: ชื่องาน, ชื่อชิ้นงาน, วัสดุ, เส้นผ่านศูนย์กลางชิ้นงาน, ความยาวชิ้นงาน และผู้เขียนโปรแกรม เส้นผ่านศูนย์กลางและความยาวขึ้นต้นด้วยเลขบอกหน่วย (0 = นิ้ว, 1 = มม.): &lt;tt&gt;150&lt;/tt&gt; คือ 50 มม. ตั้งแต่บรรทัดที่ 7 เป็นต้นไปคือโปรแกรมจีโค้ด บรรทัดละหนึ่งบล็อก</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/help_contents.cpp" line="45" />
+        <source>A word is a letter followed at once by a number: &lt;tt&gt;X25.4&lt;/tt&gt;, &lt;tt&gt;G1&lt;/tt&gt;, &lt;tt&gt;Z-3&lt;/tt&gt;. X is a diameter. Comments are written in ( ) or after ;. A / at the start of a block skips it when the Block Skip switch is on. Numbers without a decimal point are millimetres.</source>
+        <translation>คำสั่งหนึ่งคำคืออักขระตามด้วยตัวเลขทันที: &lt;tt&gt;X25.4&lt;/tt&gt;, &lt;tt&gt;G1&lt;/tt&gt;, &lt;tt&gt;Z-3&lt;/tt&gt; ค่า X เป็นเส้นผ่านศูนย์กลาง หมายเหตุเขียนไว้ใน ( ) หรือหลังเครื่องหมาย ; เครื่องหมาย / หน้าบล็อกจะข้ามบล็อกนั้นเมื่อเปิดสวิตช์ข้ามบล็อก ตัวเลขที่ไม่มีจุดทศนิยมมีหน่วยเป็นมิลลิเมตร</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/help_contents.cpp" line="49" />
+        <source>Dialect:</source>
+        <translation>ภาษาจีโค้ด:</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/help_contents.cpp" line="49" />
+        <source>Fanuc 0i-TF</source>
+        <translation>Fanuc 0i-TF</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/help_contents.cpp" line="49" />
+        <source>Rook classic</source>
+        <translation>Rook แบบดั้งเดิม</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/help_contents.cpp" line="52" />
+        <source>G codes (preparatory functions)</source>
+        <translation>รหัส G (คำสั่งเตรียมการ)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/help_contents.cpp" line="53" />
+        <source>M codes (miscellaneous functions)</source>
+        <translation>รหัส M (คำสั่งช่วย)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/help_contents.cpp" line="56" />
+        <source>Code</source>
+        <translation>รหัส</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/help_contents.cpp" line="56" />
+        <source>Meaning</source>
+        <translation>ความหมาย</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/help_contents.cpp" line="56" />
+        <source>Example</source>
+        <translation>ตัวอย่าง</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/help_contents.cpp" line="66" />
+        <source>not in this dialect</source>
+        <translation>ไม่มีในภาษาจีโค้ดแบบนี้</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/help_contents.cpp" line="75" />
+        <source>Running a program</source>
+        <translation>การจำลองการทำงานของชุดรหัสสั่งการทำงาน</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/help_contents.cpp" line="76" />
+        <source>F5 Go runs the program, F10 Step runs one block, Pause waits after the current step, Stop resets. F9 sets a breakpoint on the cursor's line; Run to cursor stops at the cursor's block. Every error is underlined in the editor and listed below it; click one to jump to it.</source>
+        <translation>F5 เริ่มทำงานจนจบ, F10 ทำงานทีละบรรทัด, หยุดชั่วคราวจะรอหลังบล็อกปัจจุบัน, หยุดจะยกเลิกและเริ่มใหม่ F9 ตั้งจุดหยุดที่บรรทัดของเคอร์เซอร์ ทำงานถึงเคอร์เซอร์จะหยุดที่บล็อกของเคอร์เซอร์ ข้อผิดพลาดทุกรายการมีเส้นขีดใต้ในหน้าต่างแก้ไขและแสดงในรายการด้านล่าง คลิกเพื่อไปยังตำแหน่งนั้น</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/help_contents.cpp" line="85" />
+        <source>Help Contents</source>
+        <translation>เนื้อหาระบบช่วยเหลือ</translation>
+    </message>
+</context>
+<context>
+    <name>klueng::gui::MainWindow</name>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="54" />
+        <source>As fast as possible</source>
+        <translation>เร็วที่สุด</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="55" />
+        <source>1× (real time)</source>
+        <translation>1× (เวลาจริงของเครื่อง)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="56" />
+        <source>%1×</source>
+        <translation>%1×</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="457" />
+        <source>&amp;File</source>
+        <translation>แฟ้ม (&amp;F)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="458" />
+        <source>&amp;Recent Files</source>
+        <translation>แฟ้มที่ใช้ล่าสุด (&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="459" />
+        <source>&amp;Edit</source>
+        <translation>แก้ไข (&amp;E)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="460" />
+        <source>&amp;Run</source>
+        <translation>การทำงาน (&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="461" />
+        <source>S&amp;peed</source>
+        <translation>ความเร็วการจำลอง (&amp;P)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="462" />
+        <source>&amp;Tool setting</source>
+        <translation>ตั้งค่ามีดตัด (&amp;T)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="463" />
+        <source>G-code &amp;dialect</source>
+        <translation>ภาษาจีโค้ด (&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="464" />
+        <source>&amp;View</source>
+        <translation>มุมมอง (&amp;V)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="465" />
+        <source>&amp;Help</source>
+        <translation>ช่วยเหลือ (&amp;H)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="467" />
+        <source>&amp;New</source>
+        <translation>สร้างใหม่ (&amp;N)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="467" />
+        <source>Start a new program</source>
+        <translation>เริ่มชุดรหัสสั่งการทำงานใหม่</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="468" />
+        <source>&amp;Open...</source>
+        <translation>เปิด... (&amp;O)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="468" />
+        <source>Open a program file</source>
+        <translation>เปิดแฟ้มชุดรหัสสั่งการทำงาน</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="469" />
+        <location filename="../src/gui/main_window.cpp" line="596" />
+        <source>&amp;Save</source>
+        <translation>บันทึก (&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="469" />
+        <source>Save the program</source>
+        <translation>บันทึกชุดรหัสสั่งการทำงาน</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="470" />
+        <source>Save &amp;As...</source>
+        <translation>บันทึกเป็น... (&amp;A)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="470" />
+        <source>Save the program under a new name</source>
+        <translation>บันทึกชุดรหัสสั่งการทำงานด้วยชื่อใหม่</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="471" />
+        <source>&amp;Job details...</source>
+        <translation>รายละเอียดงาน... (&amp;J)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="471" />
+        <source>Project, part, material, stock size and programmer</source>
+        <translation>ชื่องาน ชิ้นงาน วัสดุ ขนาดชิ้นงาน และผู้เขียนโปรแกรม</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="472" />
+        <source>E&amp;xit</source>
+        <translation>ออกจากโปรแกรม (&amp;X)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="473" />
+        <source>&amp;Undo</source>
+        <translation>เลิกทำ (&amp;U)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="474" />
+        <source>&amp;Redo</source>
+        <translation>ทำซ้ำ (&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="475" />
+        <source>Cu&amp;t</source>
+        <translation>ตัด (&amp;T)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="476" />
+        <source>&amp;Copy</source>
+        <translation>คัดลอก (&amp;C)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="477" />
+        <source>&amp;Paste</source>
+        <translation>วาง (&amp;P)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="478" />
+        <source>&amp;Delete</source>
+        <translation>ลบ (&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="479" />
+        <source>Select &amp;All</source>
+        <translation>เลือกทั้งหมด (&amp;A)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="480" />
+        <source>&amp;Find...</source>
+        <translation>ค้นหา... (&amp;F)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="480" />
+        <source>Find text in the program</source>
+        <translation>ค้นหาข้อความในชุดรหัสสั่งการทำงาน</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="481" />
+        <source>R&amp;eplace...</source>
+        <translation>แทนที่... (&amp;E)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="481" />
+        <source>Find and replace text</source>
+        <translation>ค้นหาและแทนที่ข้อความ</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="482" />
+        <source>&amp;Go to Line...</source>
+        <translation>ไปยังบรรทัด... (&amp;G)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="483" />
+        <source>&amp;Go</source>
+        <translation>เริ่มทำงาน (&amp;G)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="483" />
+        <source>Run the program continuously</source>
+        <translation>จำลองการทำงานต่อเนื่องจนจบ</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="484" />
+        <source>&amp;Step</source>
+        <translation>ทำงานทีละบรรทัด (&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="484" />
+        <source>Run one block, then wait</source>
+        <translation>ทำงานหนึ่งบล็อกแล้วรอ</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="485" />
+        <source>&amp;Pause</source>
+        <translation>หยุดชั่วคราว (&amp;P)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="485" />
+        <source>Stop after the current step; Go or Step resumes</source>
+        <translation>หยุดหลังบล็อกปัจจุบัน กดเริ่มทำงานหรือทำงานทีละบรรทัดเพื่อทำต่อ</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="486" />
+        <source>S&amp;top</source>
+        <translation>หยุด (&amp;T)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="486" />
+        <source>Abort the run and reset</source>
+        <translation>ยกเลิกการทำงานและเริ่มต้นใหม่</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="487" />
+        <source>Step &amp;Back</source>
+        <translation>ย้อนกลับหนึ่งบล็อก (&amp;B)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="487" />
+        <source>Go back one block</source>
+        <translation>ถอยกลับไปหนึ่งบล็อก</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="488" />
+        <source>Run to &amp;Cursor</source>
+        <translation>ทำงานถึงเคอร์เซอร์ (&amp;C)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="488" />
+        <source>Run up to the block at the cursor</source>
+        <translation>ทำงานจนถึงบล็อกที่เคอร์เซอร์อยู่</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="489" />
+        <source>Toggle &amp;Breakpoint</source>
+        <translation>ตั้ง/ยกเลิกจุดหยุด (&amp;B)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="489" />
+        <source>Stop the run before this line</source>
+        <translation>หยุดการทำงานก่อนบรรทัดนี้</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="490" />
+        <source>&amp;Optional Stop</source>
+        <translation>ทางเลือกการหยุด (&amp;O)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="490" />
+        <source>M01 stops the run when this switch is on</source>
+        <translation>M01 จะหยุดการทำงานเมื่อเปิดสวิตช์นี้</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="491" />
+        <source>Block S&amp;kip</source>
+        <translation>ข้ามบล็อก (&amp;K)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="491" />
+        <source>Blocks starting with / are skipped when this switch is on</source>
+        <translation>บล็อกที่ขึ้นต้นด้วย / จะถูกข้ามเมื่อเปิดสวิตช์นี้</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="492" />
+        <source>Tool &amp;Select...</source>
+        <translation>เลือกมีดตัด... (&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="492" />
+        <source>Choose the bitmap of each tool 01-08</source>
+        <translation>เลือกภาพบิตแมปของมีดตัดหมายเลข 01-08</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="493" />
+        <source>Offset &amp;Define...</source>
+        <translation>กำหนดค่าออฟเซต... (&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="493" />
+        <source>Edit the 16 tool offsets</source>
+        <translation>แก้ไขค่าออฟเซตของมีดตัดทั้ง 16 ชุด</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="494" />
+        <source>&amp;Fanuc 0i-TF</source>
+        <translation>Fanuc 0i-TF (&amp;F)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="495" />
+        <source>&amp;Rook classic (1999 rules)</source>
+        <translation>Rook แบบดั้งเดิม (กฎปี 1999) (&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="496" />
+        <source>&amp;Fit to View</source>
+        <translation>พอดีหน้าจอ (&amp;F)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="497" />
+        <source>Zoom &amp;In</source>
+        <translation>ขยาย (&amp;I)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="498" />
+        <source>Zoom &amp;Out</source>
+        <translation>ย่อ (&amp;O)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="499" />
+        <source>Show Tool &amp;Path</source>
+        <translation>แสดงเส้นทางเดินมีด (&amp;P)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="500" />
+        <source>&amp;Status Bar</source>
+        <translation>แถบแสดงสถานะ (&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="501" />
+        <source>Status &amp;Lamps</source>
+        <translation>ไฟแสดงสถานะ (&amp;L)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="502" />
+        <source>&amp;Contents</source>
+        <translation>เนื้อหาระบบช่วยเหลือ (&amp;C)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="502" />
+        <source>Help for self-learners: every G and M code with an example</source>
+        <translation>ระบบช่วยเหลือสำหรับผู้เรียนด้วยตนเอง: รหัส G และ M ทุกตัวพร้อมตัวอย่าง</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="503" />
+        <source>Toggle &amp;Language (ไทย/English)</source>
+        <translation>เปลี่ยนภาษา (ไทย/English) (&amp;L)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="503" />
+        <source>Switch between Thai and English</source>
+        <translation>สลับระหว่างภาษาไทยและภาษาอังกฤษ</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="504" />
+        <source>&amp;About Klueng</source>
+        <translation>เกี่ยวกับโปรแกรมกลึง (&amp;A)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="509" />
+        <source>File tool bar</source>
+        <translation>แถบเครื่องมือแฟ้ม</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="510" />
+        <source>Edit tool bar</source>
+        <translation>แถบเครื่องมือแก้ไข</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="511" />
+        <source>Run tool bar</source>
+        <translation>แถบเครื่องมือการทำงาน</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="512" />
+        <source>Help tool bar</source>
+        <translation>แถบเครื่องมือช่วยเหลือ</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="513" />
+        <source>Speed:</source>
+        <translation>ความเร็ว:</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="514" />
+        <source>Animation speed: slow motion, real machine time, or as fast as possible</source>
+        <translation>ความเร็วการจำลอง: ช้า, เวลาจริงของเครื่อง หรือเร็วที่สุด</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="584" />
+        <source>Klueng : %1[*]</source>
+        <translation>Klueng : %1[*]</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="593" />
+        <source>Unsaved changes</source>
+        <translation>มีการแก้ไขที่ยังไม่บันทึก</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="594" />
+        <source>The program "%1" has been changed.</source>
+        <translation>ชุดรหัสสั่งการทำงาน "%1" ถูกแก้ไข</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="595" />
+        <source>Do you want to save your changes?</source>
+        <translation>ต้องการบันทึกการแก้ไขหรือไม่?</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="597" />
+        <source>&amp;Discard</source>
+        <translation>ไม่บันทึก (&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="598" />
+        <source>Cancel</source>
+        <translation>ยกเลิก</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="629" />
+        <source>Open program</source>
+        <translation>เปิดชุดรหัสสั่งการทำงาน</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="629" />
+        <source>Lathe programs (*.txt *.nc *.tap *.cnc *.gc);;All files (*)</source>
+        <translation>ชุดรหัสสั่งการทำงานเครื่องกลึง (*.txt *.nc *.tap *.cnc *.gc);;ทุกแฟ้ม (*)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="665" />
+        <source>Cannot open the program</source>
+        <translation>เปิดชุดรหัสสั่งการทำงานไม่ได้</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="666" />
+        <source>"%1" could not be read.</source>
+        <translation>อ่านแฟ้ม "%1" ไม่ได้</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="704" />
+        <source>Save program as</source>
+        <translation>บันทึกชุดรหัสสั่งการทำงานเป็น</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="705" />
+        <source>Lathe programs (*.txt *.nc);;All files (*)</source>
+        <translation>ชุดรหัสสั่งการทำงานเครื่องกลึง (*.txt *.nc);;ทุกแฟ้ม (*)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="716" />
+        <source>Cannot save the program</source>
+        <translation>บันทึกชุดรหัสสั่งการทำงานไม่ได้</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="717" />
+        <source>"%1" could not be written:
+%2</source>
+        <translation>เขียนแฟ้ม "%1" ไม่ได้:
+%2</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="726" />
+        <source>Saved %1</source>
+        <translation>บันทึก %1 แล้ว</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="746" />
+        <source>File changed on disk</source>
+        <translation>แฟ้มถูกเปลี่ยนแปลงบนดิสก์</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="747" />
+        <source>"%1" was changed by another program.</source>
+        <translation>แฟ้ม "%1" ถูกแก้ไขโดยโปรแกรมอื่น</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="748" />
+        <source>Reload it and lose your changes here?</source>
+        <translation>โหลดแฟ้มใหม่และทิ้งการแก้ไขในโปรแกรมนี้หรือไม่?</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="748" />
+        <source>Reload it?</source>
+        <translation>โหลดแฟ้มใหม่หรือไม่?</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="749" />
+        <source>&amp;Reload</source>
+        <translation>โหลดใหม่ (&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="750" />
+        <source>&amp;Keep mine</source>
+        <translation>ใช้ของฉัน (&amp;K)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="770" />
+        <source>(none)</source>
+        <translation>(ไม่มี)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="912" />
+        <source>Alarm %1 on line %2: %3</source>
+        <translation>สัญญาณเตือน %1 ที่บรรทัด %2: %3</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../src/gui/main_window.cpp" line="922" />
+        <source>The program has %n error(s); fix them before running. Click an error below to go to it.</source>
+        <translation><numerusform>ชุดรหัสสั่งการทำงานมีข้อผิดพลาด %n รายการ ต้องแก้ไขก่อนจึงจะเริ่มทำงานได้ คลิกข้อผิดพลาดด้านล่างเพื่อไปยังตำแหน่งนั้น</numerusform></translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="969" />
+        <source>Go to Line</source>
+        <translation>ไปยังบรรทัด</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="969" />
+        <source>Line (%1-%2):</source>
+        <translation>บรรทัด (%1-%2):</translation>
+    </message>
+</context>
+</TS>
