@@ -4,7 +4,7 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
+#include <cstdint>
 #include <string>
 
 #include "diagnostic_codes.h"
@@ -56,6 +56,7 @@ bool isRuleFourGroup(ModalGroup g) {
 }
 
 constexpr int kGroupCount = static_cast<int>(ModalGroup::MOther) + 1;
+static_assert(kGroupCount <= 32, "group masks are 32-bit");
 
 class Checker {
  public:
@@ -72,9 +73,12 @@ class Checker {
         else if (n == 21) inch_ = false;
       }
 
-    std::array<const Word*, 26> firstOfLetter{};
-    std::array<const Word*, kGroupCount> firstOfGroup{};
-    std::array<const Word*, kGroupCount> firstMOfGroup{};
+    // Slots are valid only where the mask bit is set: no per-block clearing
+    // of the arrays (this runs for every block of a 100,000-block program).
+    std::uint32_t letterMask = 0, groupMask = 0, mGroupMask = 0;
+    std::array<const Word*, 26> firstOfLetter;
+    std::array<const Word*, kGroupCount> firstOfGroup;
+    std::array<const Word*, kGroupCount> firstMOfGroup;
     const Word* standAlone[4] = {};
     int standAloneCount = 0;
     const Word* motionWord = nullptr;  // last valid group-01 G word
@@ -96,9 +100,14 @@ class Checker {
         emit(codes::kLetterNotAllowed, w, {wordText(w), std::string(1, l)});
         continue;
       }
-      const Word*& first = firstOfLetter[static_cast<std::size_t>(l - 'A')];
-      if (first && onceOnly(l)) emit(codes::kLetterTwice, w, {std::string(1, l)});
-      if (!first) first = &w;
+      const auto letterIndex = static_cast<std::size_t>(l - 'A');
+      const std::uint32_t letterBit = 1u << letterIndex;
+      if (letterMask & letterBit) {
+        if (onceOnly(l)) emit(codes::kLetterTwice, w, {std::string(1, l)});
+      } else {
+        letterMask |= letterBit;
+        firstOfLetter[letterIndex] = &w;
+      }
 
       switch (l) {
         case 'C': case 'H': case 'I': case 'K': case 'U': case 'W': case 'X': case 'Z': case 'R':
@@ -137,11 +146,15 @@ class Checker {
           }
           const auto group = static_cast<std::size_t>(row->group);
           if (row->mustStandAlone && standAloneCount < 4) standAlone[standAloneCount++] = &w;
+          const std::uint32_t groupBit = 1u << group;
           if (l == 'G') {
-            if (firstOfGroup[group])
+            if (groupMask & groupBit) {
               emit(codes::kSameModalGroup, w,
                    {wordText(*firstOfGroup[group]), wordText(w), std::string(modalGroupNumber(row->group))});
-            else firstOfGroup[group] = &w;
+            } else {
+              groupMask |= groupBit;
+              firstOfGroup[group] = &w;
+            }
             if (row->group == ModalGroup::Motion) {
               motionWord = &w;
               motionCode = row->number;
@@ -156,9 +169,12 @@ class Checker {
             if (row->number == 4) g04 = &w;
             if (row->number == 28) g28 = &w;
           } else if (isRuleFourGroup(row->group)) {
-            if (firstMOfGroup[group])
+            if (mGroupMask & groupBit) {
               emit(codes::kConflictingMCodes, w, {wordText(*firstMOfGroup[group]), wordText(w)});
-            else firstMOfGroup[group] = &w;
+            } else {
+              mGroupMask |= groupBit;
+              firstMOfGroup[group] = &w;
+            }
           }
           break;
         }
@@ -168,7 +184,10 @@ class Checker {
     }
     if (full_) return;
 
-    const auto has = [&](char l) { return firstOfLetter[static_cast<std::size_t>(l - 'A')]; };
+    const auto has = [&](char l) -> const Word* {
+      const auto index = static_cast<std::size_t>(l - 'A');
+      return (letterMask >> index) & 1u ? firstOfLetter[index] : nullptr;
+    };
     const auto later = [](const Word* a, const Word* b) { return a->range.column > b->range.column ? a : b; };
 
     // Rules 3 and 7: stand-alone codes (N may come before them).

@@ -9,11 +9,12 @@
 namespace klueng::core::gcode {
 
 struct Word {
+  // (Members ordered to avoid padding: a big program holds millions of words.)
   char letter = 0;          // upper-case address letter, 'A'..'Z'
-  double value = 0.0;       // numeric value as written (mm or inch, diameters for X/U)
-  std::string number;       // the number exactly as written ("01", "-.5", "25.")
   bool hasDecimalPoint = false;
   int decimals = 0;         // digits after the decimal point
+  double value = 0.0;       // numeric value as written (mm or inch, diameters for X/U)
+  std::string number;       // the number exactly as written ("01", "-.5", "25.")
   SourceRange range;        // covers letter and number
 
   // Integer code of a G/M/T/N/O word ("G01" -> 1). Only meaningful when
