@@ -7,14 +7,13 @@
 // writes what was asked for. An alarm is printed like a diagnostic
 // (FILE:LINE:COL: alarm A104: ...) and gives exit 1; the trace up to it is
 // still written.
-#include <fmt/format.h>
-
 #include <cstdio>
 #include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "cli_common.h"
 #include "commands.h"
 #include "cut_outputs.h"
 #include "klueng/core/gcode/checker.h"
@@ -58,15 +57,15 @@ const std::vector<OptionSpec>& optionSpecs() {
       {"--config", true, [](SimulateOptions& o, const std::string& v) { o.configDir = v; return true; }},
       {"--lang", true,
        [](SimulateOptions& o, const std::string& v) {
-         if (v != "en" && v != "th") return false;
-         o.lang = v == "th" ? Lang::Th : Lang::En;
-         return true;
+         const auto lang = parseLang(v);
+         if (lang) o.lang = *lang;
+         return lang.has_value();
        }},
       {"--dialect", true,
        [](SimulateOptions& o, const std::string& v) {
-         if (v != "fanuc" && v != "classic") return false;
-         o.dialect = v == "classic" ? gcode::Dialect::Classic : gcode::Dialect::Fanuc;
-         return true;
+         const auto dialect = parseDialect(v);
+         if (dialect) o.dialect = *dialect;
+         return dialect.has_value();
        }},
       {"--optional-stop", false, [](SimulateOptions& o, const std::string&) { o.optionalStop = true; return true; }},
       {"--block-skip", false, [](SimulateOptions& o, const std::string&) { o.blockSkip = true; return true; }},
@@ -82,6 +81,7 @@ const std::vector<OptionSpec>& optionSpecs() {
 
 std::optional<SimulateOptions> parseOptions(const std::vector<std::string>& args) {
   SimulateOptions o;
+  o.lang = langFromLocale();
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a.rfind("--", 0) != 0) {
@@ -124,23 +124,8 @@ std::optional<SimulateOptions> parseOptions(const std::vector<std::string>& args
   return o;
 }
 
-// FILE:LINE:COL: severity CODE: message
 void printDiagnostic(const std::string& file, const Diagnostic& d, Lang lang) {
-  std::string where = file;
-  if (d.range.line > 0) where += fmt::format(":{}:{}", d.range.line, d.range.column);
-  std::fprintf(stderr, "%s: %s %s: %s\n", where.c_str(), std::string(severityName(d.severity, lang)).c_str(),
-               d.code.c_str(), formatMessage(d, lang).c_str());
-}
-
-// Prints every diagnostic; true when none is an error.
-bool report(const std::string& file, const std::vector<Diagnostic>& diags, Lang lang) {
-  for (const auto& d : diags) printDiagnostic(file, d, lang);
-  return !hasErrors(diags);
-}
-
-std::string joinPath(const std::string& dir, const char* name) {
-  if (dir.empty()) return name;
-  return dir.back() == '/' ? dir + name : dir + "/" + name;
+  klueng::cli::printDiagnostic(stderr, file, d, lang);
 }
 
 }  // namespace
@@ -151,32 +136,24 @@ int runSimulate(const std::vector<std::string>& args) {
   const SimulateOptions& o = *parsed;
 
   // The machine files first: the checker needs to know which tools have a bitmap.
-  const std::string dir = io::findConfigDir(o.configDir);
+  const LoadedConfig config = loadConfig(o.configDir);
+  for (const auto& fd : config.diagnostics) printDiagnostic(fd.file, fd.diagnostic, o.lang);
+  if (config.unreadable) return 2;
+  if (config.hasErrors()) return 1;
   machine::MachineSetup setup;
-  const std::string toolsPath = joinPath(dir, "tools.cfg");
-  const std::string offsetsPath = joinPath(dir, "offset.cfg");
-  const std::string machinePath = joinPath(dir, "machine.cfg");
-  auto tools = io::readToolTable(toolsPath);
-  auto offsets = io::readOffsetTable(offsetsPath);
-  auto machineCfg = io::readMachineConfig(machinePath);
-  bool configOk = report(toolsPath, tools.diagnostics, o.lang);
-  configOk = report(offsetsPath, offsets.diagnostics, o.lang) && configOk;
-  configOk = report(machinePath, machineCfg.diagnostics, o.lang) && configOk;
-  if (!configOk || !tools.value || !offsets.value || !machineCfg.value) return 1;
-  setup.tools = *tools.value;
-  setup.offsets = *offsets.value;
-  setup.machine = *machineCfg.value;
+  setup.tools = config.tools;
+  setup.offsets = config.offsets;
+  setup.machine = config.machine;
 
-  const auto file = io::readProgramFile(o.file);
-  if (!report(o.file, file.diagnostics, o.lang) || !file.value) return 1;
-  const gcode::Program program = gcode::parse(file.value->gcode, file.value->gcodeFirstLine);
   gcode::CheckOptions checkOptions;
   checkOptions.dialect = o.dialect;
-  std::vector<int> withBitmap;
-  for (int t = 1; t <= io::kToolCount; ++t)
-    if (!setup.tools.bitmap[static_cast<std::size_t>(t - 1)].empty()) withBitmap.push_back(t);
-  checkOptions.toolsWithBitmap = withBitmap;
-  if (!report(o.file, gcode::check(program, checkOptions), o.lang)) return 1;
+  checkOptions.toolsWithBitmap = config.toolsWithBitmap();
+  const CheckedProgram checked = checkProgramFile(o.file, checkOptions);
+  for (const auto& d : checked.diagnostics) printDiagnostic(o.file, d, o.lang);
+  if (checked.unreadable) return 2;
+  if (!checked.file || hasErrors(checked.diagnostics)) return 1;
+  const io::ProgramFile& programFile = *checked.file;
+  const gcode::Program program = gcode::parse(programFile.gcode, programFile.gcodeFirstLine);
 
   machine::RunOptions runOptions;
   runOptions.dialect = o.dialect;
@@ -192,7 +169,7 @@ int runSimulate(const std::vector<std::string>& args) {
     }
   }
   // The stock: collisions stop the run on their block (SPEC 8), and the cut outputs.
-  const CutOutcome cut = o.cut.enabled ? runCut(o.file, file.value->header, setup, timeline, o.cut) : CutOutcome{};
+  const CutOutcome cut = o.cut.enabled ? runCut(o.file, programFile.header, setup, timeline, o.cut) : CutOutcome{};
   for (const auto& d : cut.toolErrors) printDiagnostic(o.file, d, o.lang);
   if (o.cycleTime) std::printf("%.4f\n", timeline.cycleTime());
   if (cut.alarm) {
