@@ -91,6 +91,7 @@ class Compensator {
 };
 
 void Compensator::buildWorks(int contourEnd) {
+  works_.reserve(static_cast<std::size_t>(contourEnd));
   for (int i = 1; i < contourEnd; ++i) {
     const Segment& m = in_.moves[i];
     Work w;
@@ -248,6 +249,7 @@ CompOutput Compensator::run() {
     }
   }
 
+  out_.pieces.reserve(works_.size() + 2);
   Vec2 cursor = startUpEnd();
   emit(Segment::line(uncompensatedCentre(moves[0].start, r, tip), cursor), 0);
   for (const Work& w : works_) {
