@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdint>
+#include <cstring>
 #include <iterator>
 #include <string>
 
@@ -238,18 +239,40 @@ Program parse(std::string_view text, int firstLine) {
 
   // One reservation instead of repeated regrowth; a block needs at least a
   // few bytes, which bounds the guess for files of blank lines.
-  const auto lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
+  const char* const begin = text.data();
+  const char* const end = begin + text.size();
+  if (text.empty()) return program;
+  std::size_t lines = 1;
+  const char* p = begin;
+  while ((p = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)))) != nullptr) {
+    ++lines;
+    ++p;
+  }
   program.blocks.reserve(std::min(lines, text.size() / 4 + 1));
-  std::size_t pos = 0;
+
   int lineNumber = firstLine;
-  while (pos < text.size()) {
-    std::size_t end = pos;
-    while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
-    parser.parseLine(text.substr(pos, end - pos), lineNumber);
+  const char* pos = begin;
+  // The next LF at or after pos; kept between lines so that a file with CR-only
+  // line ends is not rescanned to its end for every line.
+  const char* lf = nullptr;
+  bool lfSearched = false;
+  while (pos < end) {
+    // Line ends: LF, CRLF or CR (memchr keeps this fast on big files).
+    if (!lfSearched || (lf && lf < pos)) {
+      lf = static_cast<const char*>(std::memchr(pos, '\n', static_cast<std::size_t>(end - pos)));
+      lfSearched = true;
+    }
+    const char* lineEnd = lf ? lf : end;
+    const char* cr = static_cast<const char*>(std::memchr(pos, '\r', static_cast<std::size_t>(lineEnd - pos)));
+    const char* next = lf ? lf + 1 : end;
+    if (cr) {
+      lineEnd = cr;
+      next = cr + 1 == lf ? lf + 1 : cr + 1;
+    }
+    parser.parseLine(std::string_view(pos, static_cast<std::size_t>(lineEnd - pos)), lineNumber);
     ++program.lineCount;
     ++lineNumber;
-    if (end < text.size() && text[end] == '\r' && end + 1 < text.size() && text[end + 1] == '\n') ++end;
-    pos = end + 1;
+    pos = next;
   }
   return program;
 }

@@ -306,6 +306,16 @@ TEST(Checker, UnitsAreTrackedLeftToRightAcrossBlocks) {
   EXPECT_EQ(diags[0].args, (std::vector<std::string>{"X1.2345", "3"}));
 }
 
+TEST(Checker, ReportIsCappedWithAFinalNote) {
+  std::string text;
+  for (int i = 0; i < 20'000; ++i) text += "Y1.\n";
+  const auto diags = checkText(text, Dialect::Fanuc);
+  ASSERT_EQ(diags.size(), 10'000u);
+  EXPECT_EQ(diags.front().code, "E201");
+  EXPECT_EQ(diags.back().code, "E199");
+  EXPECT_EQ(diags.back().args, (std::vector<std::string>{"10000"}));
+}
+
 TEST(Checker, HugeNumbersAreOutOfRangeNotUndefined) {
   for (const char* text : {"G99999999999999999999", "M1e5", "T99999999999999999999", "N99999999999999999999",
                            "P99999999999999999999", "X99999999999999999999"}) {

@@ -312,6 +312,17 @@ TEST(ParserRobustness, TenMegabyteNumberAndComment) {
   EXPECT_EQ(diags[0].range.column, 1);
 }
 
+TEST(ParserRobustness, TenMegabytesOfCrOnlyLineEndsIsLinear) {
+  std::string text;
+  text.reserve(10'000'000);
+  while (text.size() < 10'000'000) text += "(c)\r";
+  text += "X1.";
+  const Program p = parse(text);
+  EXPECT_EQ(p.lineCount, 2'500'001);
+  ASSERT_EQ(p.blocks.size(), 1u);
+  EXPECT_EQ(p.blocks[0].line, 2'500'001);
+}
+
 TEST(ParserRobustness, ManyErrorsAreCapped) {
   std::string text;
   for (int i = 0; i < 5000; ++i) text += "X\n";
