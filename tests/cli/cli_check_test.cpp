@@ -507,7 +507,8 @@ TEST(CliBadInput, NegativeStockSizeIsRule13) {
   const std::string file = dir.write("neg.txt", "Job\nPart\nSteel\n150\n1-20\nMe\nG00 X10.\n");
   const CliRun run = runCli("check " + quote(file));
   EXPECT_EQ(run.exitCode, 1);
-  EXPECT_EQ(run.out, file + ":5:1: error E213: stock diameter and length must be greater than 0 (this line gives 1-20)\n");
+  EXPECT_EQ(run.out, file + ":5:1: error E213: stock diameter and length must be greater than 0, not -20 "
+                     "(written '1-20': unit digit, then the size)\n");
 }
 
 TEST(CliBadInput, MissingHeaderLines) {

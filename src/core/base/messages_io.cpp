@@ -8,8 +8,8 @@ namespace klueng::core::catalog {
 namespace {
 constexpr MessageText kMessages[] = {
     // SPEC 5 rule 13 lives here because the stock size comes from the program header.
-    {"E213", "stock diameter and length must be greater than 0 (this line gives {1})",
-     "เส้นผ่านศูนย์กลางและความยาวของชิ้นงานต้องมากกว่า 0 (บรรทัดนี้ให้ค่า {1})"},
+    {"E213", "stock diameter and length must be greater than 0, not {1} (written '{2}': unit digit, then the size)",
+     "เส้นผ่านศูนย์กลางและความยาวของชิ้นงานต้องมากกว่า 0 ไม่ใช่ {1} (เขียนไว้ว่า '{2}': หลักหน่วยตามด้วยขนาด)"},
 
     // Whole files.
     {"F101", "{0}: no such file", "{0}: ไม่พบไฟล์"},

@@ -77,7 +77,7 @@ void parseStockSize(std::string_view line, int lineNumber, const SizeCodes& code
   }
   if (*parsed <= 0.0) {
     diags.push_back(makeDiagnostic(Severity::Error, "E213", lineNumber, fieldColumn, fieldLength,
-                                   {fileName, std::string(field)}));
+                                   {fileName, std::string(number), std::string(field)}));
     return;
   }
   unit = field.front() == '0' ? LengthUnit::Inch : LengthUnit::Millimetre;

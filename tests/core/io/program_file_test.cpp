@@ -146,7 +146,9 @@ TEST(ProgramFile, StockSizeMustBePositiveRule13) {
   ASSERT_EQ(r.diagnostics.size(), 2u) << codes(r.diagnostics);
   EXPECT_EQ(r.diagnostics[0].code, "E213");
   EXPECT_EQ(r.diagnostics[0].range, (SourceRange{4, 1, 4}));
-  EXPECT_EQ(r.diagnostics[0].args, (std::vector<std::string>{"neg.txt", "1-50"}));
+  EXPECT_EQ(r.diagnostics[0].args, (std::vector<std::string>{"neg.txt", "-50", "1-50"}));
+  EXPECT_EQ(formatMessage(r.diagnostics[1], Lang::En),
+            "stock diameter and length must be greater than 0, not 0 (written '10': unit digit, then the size)");
   EXPECT_EQ(r.diagnostics[1].code, "E213");
   EXPECT_EQ(r.diagnostics[1].range.line, 5);
   EXPECT_NE(formatMessage(r.diagnostics[0], Lang::Th).find("มากกว่า 0"), std::string::npos);
