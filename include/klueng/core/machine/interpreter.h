@@ -26,7 +26,9 @@ struct MachineSetup {
 // U/W moves are plain displacements. G50 X Z declares the controlled point to
 // be at the given position (+ offset) in work coordinates, where the stock is;
 // the reference point and travel limits are machine positions and follow it.
-// C/H rotations take no time. Zero-length moves are not recorded.
+// G27/G28/G29/G53 bring the controlled point itself (no offset) to the
+// reference or machine position. Under G96 the rpm follows the controlled
+// point's diameter. C/H rotations take no time. Zero-length moves are not recorded.
 //
 // The full chain: interpreter -> compensation stage -> timeline builder.
 Timeline interpret(const gcode::Program& program, const MachineSetup& setup, const RunOptions& options = {});
