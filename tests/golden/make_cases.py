@@ -302,3 +302,109 @@ case("alarm_a201_nose_comp_interference",
          row("RAPID", 2, 0.15, 2.241, 20, 280, 20, 1.2, feed=8000),
          row("LINE", 3, 2.241, 9.441, 20, 1.2, 20, -10.8, feed=100),
      ], alarm="program.nc:4:1: alarm A201")
+
+
+# ---------------------------------------------------------------- the samples
+class Hand:
+    """Bookkeeping for a hand derivation: time and the controlled point (X as a
+    diameter). Every duration and point is given by the derivation; this only
+    adds up the times and splits rapids into their dog-leg legs."""
+
+    def __init__(self, rpm_at):
+        self.t, self.x, self.z, self.rows, self.rpm_at = 0.0, 0.0, 300.0, [], rpm_at
+
+    def rapid(self, line, x, z):
+        tx, tz = abs(x - self.x) / 2 / 4000, abs(z - self.z) / 8000  # minutes
+        legs = []
+        if tx == 0 or tz == 0 or abs(tx - tz) < 1e-12:
+            legs.append((x, z, max(tx, tz)))
+        elif tx < tz:  # X arrives first; Z has covered 8000 * tx
+            legs += [(x, self.z + math.copysign(8000 * tx, z - self.z), tx), (x, z, tz - tx)]
+        else:
+            legs += [(self.x + math.copysign(2 * 4000 * tz, x - self.x), z, tz), (x, z, tx - tz)]
+        for lx, lz, minutes in legs:
+            length = math.hypot((lx - self.x) / 2, lz - self.z)
+            self.rows.append(row("RAPID", line, self.t, self.t + minutes * 60, self.x, self.z, lx, lz,
+                                 feed=length / minutes, rpm=self.rpm_at(self.x)))
+            self.t, self.x, self.z = self.t + minutes * 60, lx, lz
+
+    def feed(self, kind, line, x, z, seconds, feed, i=0.0, k=0.0, d=""):
+        self.rows.append(row(kind, line, self.t, self.t + seconds, self.x, self.z, x, z, i, k, d, feed,
+                             self.rpm_at(self.x)))
+        self.t, self.x, self.z = self.t + seconds, x, z
+
+
+def sample(name):
+    with open(os.path.join(HERE, "..", "..", "resources", "samples", name)) as fh:
+        return fh.read()
+
+
+# Sample 01 (config offsets = the shipped ones for T0101: R0.8 tip 3, X/Z 0).
+# G96 S180, G50 S2500: rpm(x) = min(C / x, 2500), x = radius, C = 1000*180/(2 pi).
+# A G99 cut at F with x >= x_c = C/2500 all along: t = 60/(F C) * L * (x0 + x1)/2.
+C180 = 1000 * 180 / (2 * math.pi)
+XC180 = C180 / 2500
+rpm01 = lambda xd: min(C180 / (abs(xd) / 2), 2500) if xd != 0 else 2500
+
+
+def g96cut(h, line, x, z, f, kind="LINE"):
+    length = math.hypot((x - h.x) / 2, z - h.z)
+    assert min(h.x, x) / 2 >= XC180
+    h.feed(kind, line, x, z, 60 / (f * C180) * length * (h.x + x) / 4, f * rpm01(h.x))
+
+
+s01 = Hand(rpm01)
+s01.rapid(13, 54, 2)   # N50
+s01.rapid(14, 54, 0)   # N60
+# N70 facing X54 -> X-1.6: (60/0.2) * ((27^2 - x_c^2)/(2C) + (x_c + 0.8)/2500) = 4.6006 s
+s01.feed("LINE", 15, -1.6, 0, 60 / 0.2 * ((27 ** 2 - XC180 ** 2) / (2 * C180) + (XC180 + 0.8) / 2500),
+         0.2 * rpm01(54))
+s01.rapid(16, -1.6, 2)  # N80
+s01.rapid(17, 47, 2)    # N90
+line = 18
+for i, (x, z, up) in enumerate([(47, -59.8, 50), (44, -39.8, 47), (41, -39.8, 44),
+                                (37, -19.8, 41), (33, -19.8, 37), (31, -19.8, 33)]):
+    if i > 0:
+        s01.rapid(line, x, 2)
+        line += 1
+    g96cut(s01, line, x, z, 0.25)
+    g96cut(s01, line + 1, up, z, 0.25)
+    line += 2
+    if i < 5:
+        s01.rapid(line, up, 2)
+        line += 1
+s01.rapid(40, 100, 100)  # N320
+# Finishing under G42 (see README: the tip keeps the diameters and faces; the
+# 45-degree chamfers move the corners by k = 0.8 (2 - sqrt 2); the R2 corner
+# becomes a quarter circle R2.8 around Z-22.8 X34.4).
+K = 0.8 * (2 - math.sqrt(2))
+s01.rapid(41, 24, 1.2)
+for ln, x, z in [(42, 24, -K), (43, 30, -3 - K), (44, 30, -20), (45, 34.4, -20)]:
+    g96cut(s01, ln, x, z, 0.1)
+s01.feed("ARC", 46, 40, -22.8, 60 / (0.1 * C180) * 2.8 * (17.2 * math.pi / 2 + 2.8), 0.1 * rpm01(34.4),
+         i=0, k=-2.8, d="CCW")
+for ln, x, z in [(47, 40, -40), (48, 44 - 2 * K, -40), (49, 46, -41 - K), (50, 46, -60), (51, 50.4, -60)]:
+    g96cut(s01, ln, x, z, 0.1)
+s01.rapid(52, 100, 100)  # N440 cancel
+case("sample01_step_shaft", sample("01-step-shaft.txt"), s01.rows)
+
+# Sample 02: G97. Turning at 1000 rpm, F0.2 (200 mm/min); threads at 800 rpm,
+# lead 1.5 (1200 mm/min), Z5 -> Z-30 = 35 mm in 1.75 s.
+s02 = Hand(lambda xd: 1000)
+s02.rapid(12, 34, 2)                                   # N40
+s02.feed("LINE", 13, 30, 2, 2 / 200 * 60, 200)         # N50: 2 mm radius
+s02.feed("LINE", 14, 30, -40, 42 / 200 * 60, 200)      # N60
+s02.feed("LINE", 15, 34, -40, 2 / 200 * 60, 200)       # N70
+s02.rapid(16, 100, 100)                                # N80
+s02.rpm_at = lambda xd: 800                            # N100 G97 S800
+s02.rapid(19, 32, 5)                                   # N110
+line = 20
+for x in (29.4, 28.9, 28.5, 28.16):
+    s02.rapid(line, x, 5)
+    s02.feed("THREAD", line + 1, x, -30, 35 / 1200 * 60, 1200)
+    s02.rapid(line + 2, 32, -30)
+    if x != 28.16:
+        s02.rapid(line + 3, 32, 5)
+    line += 4
+s02.rapid(line - 1, 100, 100)                          # N270
+case("sample02_thread", sample("02-thread.txt"), s02.rows)
