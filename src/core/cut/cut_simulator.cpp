@@ -16,7 +16,7 @@ using machine::MoveKind;
 namespace {
 
 constexpr double kNoseChordTolerance = 0.0002;  // mm: nose sweeps along arcs are this close to exact
-constexpr double kBoxChordTolerance = 0.01;      // mm: the bitmap edge is 0.5 mm pixels anyway
+constexpr double kBoxChordTolerance = 0.0002;    // mm: bitmap edges next to the nose touch the surface too
 
 // Controlled-point pieces of the sub-path [s0, s1] of a move: straight pieces
 // (arcs as chords within `tolerance`), or for G32 the stamp positions (a == b).

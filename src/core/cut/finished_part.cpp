@@ -26,17 +26,25 @@ FinishedPart::FinishedPart(const Stock& stock) : stock_(&stock), volume_(stock.v
 double FinishedPart::rightFaceZ() const { return empty() ? 0.0 : stock_->zRight(last_); }
 double FinishedPart::leftFaceZ() const { return empty() ? 0.0 : stock_->zLeft(first_); }
 
-std::optional<double> FinishedPart::outerDiameterAt(double z) const {
-  const int i = stock_->columnAt(z);
-  if (i < 0 || stock_->outerRadius(i) <= 0.0) return std::nullopt;
-  return 2.0 * stock_->outerRadius(i);
+namespace {
+
+// Linear interpolation between the two column centres around z (exact on
+// cylinders, cones and chamfers; a step is spread over one column).
+std::optional<double> sampleAt(const Stock& stock, double z, bool outer) {
+  const int i = stock.columnAt(z);
+  if (i < 0 || stock.outerRadius(i) <= 0.0) return std::nullopt;
+  auto value = [&](int k) { return 2.0 * (outer ? stock.outerRadius(k) : stock.innerRadius(k)); };
+  const int j = z < stock.zCentre(i) ? i - 1 : i + 1;
+  if (j < 0 || j >= stock.columnCount() || stock.outerRadius(j) <= 0.0) return value(i);
+  const double w = std::abs(z - stock.zCentre(i)) / stock.resolution();
+  return (1.0 - w) * value(i) + w * value(j);
 }
 
-std::optional<double> FinishedPart::innerDiameterAt(double z) const {
-  const int i = stock_->columnAt(z);
-  if (i < 0 || stock_->outerRadius(i) <= 0.0) return std::nullopt;
-  return 2.0 * stock_->innerRadius(i);
-}
+}  // namespace
+
+std::optional<double> FinishedPart::outerDiameterAt(double z) const { return sampleAt(*stock_, z, true); }
+
+std::optional<double> FinishedPart::innerDiameterAt(double z) const { return sampleAt(*stock_, z, false); }
 
 std::pair<double, double> FinishedPart::stepExtent(double z, double tolerance) const {
   const int i = stock_->columnAt(z);

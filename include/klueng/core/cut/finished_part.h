@@ -28,7 +28,8 @@ class FinishedPart {
   bool empty() const { return first_ > last_; }
   double rightFaceZ() const;   // right edge of the rightmost column with material
   double leftFaceZ() const;
-  // nullopt outside the part or where nothing is left.
+  // Interpolated linearly between column centres; nullopt outside the part or
+  // where nothing is left.
   std::optional<double> outerDiameterAt(double z) const;
   std::optional<double> innerDiameterAt(double z) const;
   // Z extent [zMin, zMax] (column edges) of the stretch around z whose outer diameter
