@@ -234,6 +234,11 @@ bool writeTextFileAtomic(const std::string& path, std::string_view text, std::st
     ::unlink(pattern.c_str());
     return fail(path + ": cannot replace the file: " + reason);
   }
+  // Make the rename itself durable; failure here does not undo a complete write.
+  if (const int dirFd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY); dirFd >= 0) {
+    ::fsync(dirFd);
+    ::close(dirFd);
+  }
   return true;
 #else
   const std::string temp = path + ".tmp";
