@@ -242,6 +242,28 @@ TEST(Png, GreyImageBecomesRgb) {
   EXPECT_EQ(r.value->pixels, (std::vector<std::uint32_t>{0x000000u, 0xFFFFFFu, 0x000000u}));
 }
 
+TEST(Png, PaletteImageBecomesRgb) {
+  png_image png;
+  std::memset(&png, 0, sizeof png);
+  png.version = PNG_IMAGE_VERSION;
+  png.width = 3;
+  png.height = 1;
+  png.format = PNG_FORMAT_RGB_COLORMAP;
+  png.colormap_entries = 3;
+  const unsigned char colormap[] = {255, 255, 255, 0, 0, 0, 224, 160, 0};
+  const unsigned char indices[] = {2, 1, 0};
+  png_alloc_size_t size = 0;
+  ASSERT_TRUE(png_image_write_to_memory(&png, nullptr, &size, 0, indices, 0, colormap));
+  std::string bytes(size, '\0');
+  ASSERT_TRUE(png_image_write_to_memory(&png, bytes.data(), &size, 0, indices, 0, colormap));
+  bytes.resize(size);
+  ASSERT_EQ(bytes[25], 3);  // IHDR colour type 3: really a palette PNG
+  ASSERT_NE(bytes.find("PLTE"), std::string::npos);
+  const auto r = decodeImage(bytes, "p.png");
+  ASSERT_TRUE(r.ok()) << firstCode(r);
+  EXPECT_EQ(r.value->pixels, (std::vector<std::uint32_t>{0xE0A000u, 0x000000u, 0xFFFFFFu}));
+}
+
 TEST(Png, TruncatedDataIsReported) {
   const std::string png = encodePng(8, 8, PNG_FORMAT_RGB, std::vector<unsigned char>(8 * 8 * 3, 77));
   const auto r = decodeImage(png.substr(0, png.size() - 20), "cut.png");
