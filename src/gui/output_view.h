@@ -18,6 +18,7 @@
 #include <QGraphicsView>
 #include <QImage>
 #include <QPointer>
+#include <vector>
 
 #include "klueng/core/geometry.h"
 
@@ -29,6 +30,7 @@ class StockItem;
 class ChuckItem;
 class ToolItem;
 class TrailItem;
+class MarkerItem;
 
 class OutputView : public QGraphicsView {
   Q_OBJECT
@@ -64,12 +66,23 @@ class OutputView : public QGraphicsView {
   void resizeEvent(QResizeEvent* event) override;
   void scrollContentsBy(int dx, int dy) override;
   void mouseMoveEvent(QMouseEvent* event) override;
+  void mouseDoubleClickEvent(QMouseEvent* event) override;
   void drawBackground(QPainter* painter, const QRectF& rect) override;
   void changeEvent(QEvent* event) override;
+
+ public:
+  // Paint events of the viewport since construction (frame-rate probe).
+  qint64 paintCount() const { return paints_; }
+  const StockItem* stockItem() const { return stock_; }
+
+ protected:
+  void paintEvent(QPaintEvent* event) override;
 
  private:
   void zoomBy(double factor, const QPoint& anchorViewportPos);
   void updateRulers();
+  void clearTrail();
+  void appendTrail(double time);
   QRectF contentRect() const;
 
   QPointer<RunController> controller_;
@@ -79,9 +92,15 @@ class OutputView : public QGraphicsView {
   StockItem* stock_ = nullptr;
   ChuckItem* chuck_ = nullptr;
   ToolItem* tool_ = nullptr;
-  TrailItem* trail_ = nullptr;
-  int trailMoves_ = 0;        // moves of the timeline already in the trail
+  MarkerItem* marker_ = nullptr;
+  std::vector<TrailItem*> trail_;   // completed chunks, then the live one
+  int trailMoves_ = 0;              // timeline moves already in the trail
+  double trailTime_ = 0.0;
+  QRectF pathBounds_;
+  QPointF lastToolPos_;
+  bool showPath_ = true;
   bool fitPending_ = true;
+  qint64 paints_ = 0;
 };
 
 }  // namespace klueng::gui

@@ -179,6 +179,7 @@ void RunController::pause() {
     return;
   }
   frameTimer_.stop();
+  pausedBeforeNext_ = false;
   setState(RunState::Paused);
   updateLine();
   emitStatus();
@@ -204,6 +205,7 @@ void RunController::stepBack() {
   if (target < -1) target = -1;
   const double t = target >= 0 ? snaps[static_cast<std::size_t>(target)].time : 0.0;
   reportedAlarm_.reset();
+  pausedBeforeNext_ = false;
   targetSnapshot_ = target;
   targetTime_ = t;
   targetIsEnd_ = false;
@@ -227,13 +229,16 @@ void RunController::stepBack() {
 }
 
 void RunController::waitForIdle() {
-  if (prepareWatcher_.isRunning()) {
-    prepareWatcher_.waitForFinished();
-    onPrepared();
-  }
-  if (backgroundWatcher_.isRunning()) {
-    backgroundWatcher_.waitForFinished();
-    onBackgroundDone();
+  // Preparing may chain into a background cut ("as fast as possible"): wait for both.
+  while (preparing_ || cutting_) {
+    if (preparing_) {
+      prepareWatcher_.waitForFinished();
+      onPrepared();
+    }
+    if (cutting_) {
+      backgroundWatcher_.waitForFinished();
+      onBackgroundDone();
+    }
   }
 }
 
@@ -247,6 +252,7 @@ void RunController::prepareAndThen(Pending what) {
     return;
   }
   pending_ = what;
+  preparing_ = true;
   setBusy(true);
   setState(RunState::Preparing);
   auto file = file_;
@@ -280,7 +286,9 @@ void RunController::prepareAndThen(Pending what) {
 }
 
 void RunController::onPrepared() {
-  if (!busy_ || !prepareWatcher_.future().isValid() || prepareWatcher_.isRunning()) return;
+  if (!preparing_) return;
+  prepareWatcher_.waitForFinished();
+  preparing_ = false;
   std::shared_ptr<Prepared> result = prepareWatcher_.result();
   prepareWatcher_.setFuture(QFuture<std::shared_ptr<Prepared>>());
   setBusy(false);
@@ -329,6 +337,8 @@ void RunController::startRun(bool stepOnly) {
   const int next = snapshotIndex_ + 1;
   const double end = cut_->endTime();
   targetIsEnd_ = true;
+  targetBeforeNext_ = false;
+  pausedBeforeNext_ = false;
   targetSnapshot_ = count - 1;
   targetTime_ = end;
   if (stepOnly && next < count) {
@@ -342,6 +352,7 @@ void RunController::startRun(bool stepOnly) {
       const bool breakHere = j > next && (breakpoints_.contains(s.line) || (runToLine_ > 0 && s.line >= runToLine_));
       if (breakHere) {
         targetIsEnd_ = false;
+        targetBeforeNext_ = true;
         targetSnapshot_ = j - 1;
         targetTime_ = snaps[static_cast<std::size_t>(j - 1)].time;
         break;
@@ -436,6 +447,7 @@ void RunController::finishStop() {
     }
     return;
   }
+  pausedBeforeNext_ = !targetIsEnd_ && targetBeforeNext_;
   setState(targetIsEnd_ ? RunState::Finished : RunState::Paused);
   updateLine();
   emitStatus();
@@ -443,13 +455,16 @@ void RunController::finishStop() {
 }
 
 void RunController::runInBackground(double target) {
+  cutting_ = true;
   setBusy(true);
   core::cut::CutSimulator* sim = cut_.get();
   backgroundWatcher_.setFuture(QtConcurrent::run([sim, target] { sim->advanceTo(target); }));
 }
 
 void RunController::onBackgroundDone() {
-  if (!busy_ || !backgroundWatcher_.future().isValid() || backgroundWatcher_.isRunning()) return;
+  if (!cutting_) return;
+  backgroundWatcher_.waitForFinished();
+  cutting_ = false;
   backgroundWatcher_.setFuture(QFuture<void>());
   setBusy(false);
   if (state_ == RunState::Paused && !cut_->alarm()) {   // a step back's re-cut
@@ -469,9 +484,8 @@ void RunController::updateLine() {
     const auto& snaps = timeline_->snapshots;
     const int count = static_cast<int>(snaps.size());
     const bool moving = state_ == RunState::Running || state_ == RunState::Stepping;
-    const bool beforeBreakpoint = state_ == RunState::Paused && snapshotIndex_ + 1 < count &&
-                                  breakpoints_.contains(snaps[static_cast<std::size_t>(snapshotIndex_ + 1)].line);
-    int k = (moving || beforeBreakpoint) ? snapshotIndex_ + 1 : snapshotIndex_;
+    const bool beforeNext = state_ == RunState::Paused && pausedBeforeNext_;
+    int k = (moving || beforeNext) ? snapshotIndex_ + 1 : snapshotIndex_;
     if (state_ == RunState::Paused && snapshotIndex_ >= 0 && time_ > snaps[static_cast<std::size_t>(snapshotIndex_)].time + kEps)
       k = snapshotIndex_ + 1;   // paused in the middle of a block
     if (k >= count) k = count - 1;

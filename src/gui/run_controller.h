@@ -174,12 +174,16 @@ class RunController : public QObject {
   mutable double stockShapeVolume_ = -1.0;
   RunState state_ = RunState::Idle;
   bool busy_ = false;
+  bool preparing_ = false;       // prepareWatcher_ has a job not handled yet
+  bool cutting_ = false;         // backgroundWatcher_ has a job not handled yet
   Pending pending_ = Pending::None;
   int runToLine_ = 0;
   double time_ = 0.0;
   double targetTime_ = 0.0;     // where the current Go/Step pauses
   int targetSnapshot_ = -1;     // snapshots done when targetTime_ is reached
   bool targetIsEnd_ = false;
+  bool targetBeforeNext_ = false;  // the target stops before a block (breakpoint, run to line)
+  bool pausedBeforeNext_ = false;  // paused there: the next block's line is highlighted
   int snapshotIndex_ = -1;      // last completed block's snapshot
   int currentLine_ = 0;
   qint64 frames_ = 0;

@@ -1,0 +1,117 @@
+#include "gui/output_items.h"
+
+#include <QPainter>
+#include <QStyleOptionGraphicsItem>
+
+namespace klueng::gui {
+
+namespace {
+QRectF mirrored(const QRectF& r) { return QRectF(r.left(), -r.bottom(), r.width(), r.height()); }
+QRectF segmentRect(const core::Segment& s) {
+  QPainterPath p;
+  render::appendSegment(p, s, true);
+  return p.boundingRect().adjusted(-0.5, -0.5, 0.5, 0.5);
+}
+}  // namespace
+
+// ---------------------------------------------------------------- StockItem
+
+StockItem::StockItem() { setZValue(0); }
+
+void StockItem::setShape(const render::StockShape& shape) {
+  const QRectF b = shape.boundingRect().adjusted(-12, -1, 12, 1);   // + the centre line overhang
+  if (b != bounds_) {
+    prepareGeometryChange();
+    bounds_ = b;
+  }
+  shape_ = shape;
+}
+
+void StockItem::updateRegion(const QRectF& upperRect) {
+  update(upperRect);
+  update(mirrored(upperRect));
+}
+
+void StockItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*) { render::paintStock(*painter, shape_); }
+
+// ---------------------------------------------------------------- ChuckItem
+
+void ChuckItem::setGeometry(double stockDiameter, double stockLength, double grip, double jawHeight) {
+  prepareGeometryChange();
+  diameter_ = stockDiameter;
+  length_ = stockLength;
+  grip_ = grip;
+  jaw_ = jawHeight;
+}
+
+QRectF ChuckItem::boundingRect() const {
+  return render::chuckRect(diameter_, length_, grip_, jaw_).adjusted(-16, -1, 1, 1);
+}
+
+void ChuckItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*) {
+  render::paintChuck(*painter, diameter_, length_, grip_, jaw_);
+}
+
+// ---------------------------------------------------------------- ToolItem
+
+ToolItem::ToolItem() { setZValue(3); }
+
+void ToolItem::setSprite(const render::ToolSprite& sprite, const void* identity) {
+  prepareGeometryChange();
+  sprite_ = sprite;
+  identity_ = identity;
+}
+
+QRectF ToolItem::boundingRect() const {
+  return sprite_.isNull() ? QRectF() : sprite_.sceneRect(QPointF(0, 0)).adjusted(-0.5, -0.5, 0.5, 0.5);
+}
+
+void ToolItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*) { sprite_.paint(*painter, QPointF(0, 0)); }
+
+// ---------------------------------------------------------------- MarkerItem
+
+MarkerItem::MarkerItem() {
+  setFlag(ItemIgnoresTransformations);
+  setZValue(4);
+}
+
+void MarkerItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*) {
+  painter->setPen(QPen(render::palette().controlledPoint, 1.5));
+  painter->drawLine(QPointF(-5, 0), QPointF(5, 0));
+  painter->drawLine(QPointF(0, -5), QPointF(0, 5));
+}
+
+// ---------------------------------------------------------------- TrailItem
+
+void TrailItem::append(const core::machine::Move& move) {
+  trail_.append(move);
+  ++moves_;
+  if (move.kind != core::machine::MoveKind::Dwell) update(segmentRect(move.path));
+}
+
+void TrailItem::setPartial(const core::machine::Move* move, double fraction) {
+  const QRectF old = partialFeed_.boundingRect().united(partialRapid_.boundingRect());
+  partialFeed_ = QPainterPath();
+  partialRapid_ = QPainterPath();
+  if (move && move->kind != core::machine::MoveKind::Dwell && fraction > 0) {
+    QPainterPath& path = move->kind == core::machine::MoveKind::Rapid ? partialRapid_ : partialFeed_;
+    render::appendSegment(path, render::partialSegment(move->path, fraction), true);
+  }
+  const QRectF now = partialFeed_.boundingRect().united(partialRapid_.boundingRect());
+  if (!old.isNull()) update(old.adjusted(-0.5, -0.5, 0.5, 0.5));
+  if (!now.isNull()) update(now.adjusted(-0.5, -0.5, 0.5, 0.5));
+}
+
+void TrailItem::clear() {
+  trail_.clear();
+  partialFeed_ = partialRapid_ = QPainterPath();
+  moves_ = 0;
+  update();
+}
+
+void TrailItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*) {
+  trail_.paint(*painter);
+  render::PathTrail::paintPaths(*painter, partialFeed_, partialRapid_);
+}
+
+}  // namespace klueng::gui

@@ -1,0 +1,285 @@
+#include "gui/output_view.h"
+
+#include <QEvent>
+#include <QLabel>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QScrollBar>
+#include <QWheelEvent>
+#include <cmath>
+
+#include "gui/output_items.h"
+#include "gui/output_ruler.h"
+#include "gui/run_controller.h"
+
+namespace klueng::gui {
+
+namespace {
+constexpr int kTrailChunk = 4096;        // moves per completed trail item
+constexpr double kMinPixelsPerMm = 0.05;
+constexpr double kMaxPixelsPerMm = 400.0;
+constexpr double kSceneMargin = 5000.0;  // mm of room to pan around the content
+}  // namespace
+
+OutputView::OutputView(QWidget* parent) : QGraphicsView(parent) {
+  setScene(new QGraphicsScene(this));
+  setRenderHint(QPainter::Antialiasing, false);
+  setViewportUpdateMode(QGraphicsView::MinimalViewportUpdate);
+  setOptimizationFlags(QGraphicsView::DontAdjustForAntialiasing);
+  setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  setDragMode(QGraphicsView::ScrollHandDrag);
+  setTransformationAnchor(QGraphicsView::AnchorUnderMouse);
+  setResizeAnchor(QGraphicsView::AnchorViewCenter);
+  setMouseTracking(true);
+  setViewportMargins(kRulerSize, kRulerSize, 0, 0);
+  setMinimumSize(200, 150);
+  scene()->setItemIndexMethod(QGraphicsScene::NoIndex);
+
+  zRuler_ = new OutputRuler(OutputRuler::Axis::Z, this, this);
+  xRuler_ = new OutputRuler(OutputRuler::Axis::X, this, this);
+  auto* corner = new QLabel(QStringLiteral("X\\Z"), this);
+  corner->setAlignment(Qt::AlignCenter);
+  corner->setStyleSheet(QStringLiteral("background: #ececE8; color: #505050; font-size: 8pt;"));
+  corner_ = corner;
+
+  stock_ = new StockItem;
+  chuck_ = new ChuckItem;
+  tool_ = new ToolItem;
+  marker_ = new MarkerItem;
+  scene()->addItem(chuck_);
+  scene()->addItem(stock_);
+  scene()->addItem(tool_);
+  scene()->addItem(marker_);
+  rebuild();
+}
+
+OutputView::~OutputView() = default;
+
+void OutputView::setRunController(RunController* controller) {
+  if (controller_) disconnect(controller_, nullptr, this, nullptr);
+  controller_ = controller;
+  if (controller_) {
+    connect(controller_, &RunController::programReset, this, &OutputView::rebuild);
+    connect(controller_, &RunController::frameAdvanced, this, &OutputView::updateFrame);
+    controller_->setMaxStepMm(1.0 / pixelsPerMm());
+  }
+  fitPending_ = true;
+  rebuild();
+}
+
+double OutputView::pixelsPerMm() const { return std::abs(transform().m11()); }
+
+QPointF OutputView::toolItemPos() const { return tool_->pos(); }
+
+bool OutputView::toolVisible() const { return tool_->isVisible() && !tool_->sprite().isNull(); }
+
+void OutputView::setShowPath(bool show) {
+  showPath_ = show;
+  for (TrailItem* t : trail_) t->setVisible(show);
+}
+
+QRectF OutputView::contentRect() const {
+  QRectF r = stock_->boundingRect().united(chuck_->boundingRect());
+  if (!pathBounds_.isNull()) r = r.united(pathBounds_);
+  r = r.united(QRectF(lastToolPos_ - QPointF(1, 1), QSizeF(2, 2)));
+  return r;
+}
+
+void OutputView::clearTrail() {
+  for (TrailItem* t : trail_) {
+    scene()->removeItem(t);
+    delete t;
+  }
+  trail_.clear();
+  trailMoves_ = 0;
+  trailTime_ = 0.0;
+}
+
+void OutputView::rebuild() {
+  clearTrail();
+  pathBounds_ = QRectF();
+  core::io::JobHeader header;
+  core::io::MachineConfig machineCfg;
+  if (controller_) {
+    header = controller_->jobHeader();
+    machineCfg = controller_->machineSetup().machine;
+  }
+  stock_->setShape(controller_ ? controller_->stockShape() : render::stockShapeFromBlank(header.diameterMm(), header.lengthMm()));
+  chuck_->setGeometry(header.diameterMm(), header.lengthMm(), machineCfg.chuckGrip, machineCfg.chuckJawHeight);
+  if (const auto* tl = controller_ ? controller_->timeline() : nullptr) {
+    QPainterPath all;
+    for (const auto& m : tl->moves)
+      if (m.kind != core::machine::MoveKind::Dwell) render::appendSegment(all, m.path, true);
+    pathBounds_ = all.boundingRect();
+  }
+  lastToolPos_ = render::toScene(core::zx(machineCfg.startZ, machineCfg.startX / 2.0));
+  tool_->setSprite(render::ToolSprite(), nullptr);
+  const QRectF content = contentRect();
+  scene()->setSceneRect(content.adjusted(-kSceneMargin, -kSceneMargin, kSceneMargin, kSceneMargin));
+  updateFrame();
+  if (fitPending_ || !controller_ || !controller_->timeline()) fitToView();
+  scene()->update();
+}
+
+void OutputView::appendTrail(double time) {
+  const auto* tl = controller_->timeline();
+  if (!tl) return;
+  if (time < trailTime_ - 1e-12) clearTrail();   // stepped back: draw the trail again
+  trailTime_ = time;
+  const auto& moves = tl->moves;
+  const QRectF bounds = pathBounds_.adjusted(-1, -1, 1, 1);
+  while (trailMoves_ < static_cast<int>(moves.size()) && moves[static_cast<std::size_t>(trailMoves_)].tEnd <= time + 1e-12) {
+    if (trail_.empty() || trail_.back()->moveCount() >= kTrailChunk) {
+      auto* item = new TrailItem(bounds);
+      item->setZValue(2);
+      item->setVisible(showPath_);
+      if (!trail_.empty()) trail_.back()->setPartial(nullptr, 0);
+      scene()->addItem(item);
+      trail_.push_back(item);
+    }
+    trail_.back()->append(moves[static_cast<std::size_t>(trailMoves_)]);
+    ++trailMoves_;
+  }
+  if (trail_.empty()) {
+    auto* item = new TrailItem(bounds);
+    item->setZValue(2);
+    item->setVisible(showPath_);
+    scene()->addItem(item);
+    trail_.push_back(item);
+  }
+  // The move under way is drawn up to the tool.
+  const core::machine::Move* partial = nullptr;
+  double fraction = 0.0;
+  if (trailMoves_ < static_cast<int>(moves.size())) {
+    const auto& m = moves[static_cast<std::size_t>(trailMoves_)];
+    if (time > m.tStart && m.tEnd > m.tStart) {
+      partial = &m;
+      fraction = (time - m.tStart) / (m.tEnd - m.tStart);
+    }
+  }
+  trail_.back()->setPartial(partial, fraction);
+}
+
+void OutputView::updateFrame() {
+  if (!controller_) return;
+  const RunStatus status = controller_->status();
+  const QPointF toolPos = render::toScene(status.position);
+  // Material only changes where the tool has been since the last frame.
+  const render::StockShape shape = controller_->stockShape();
+  if (!(shape.fill == stock_->stockShape().fill)) {
+    QRectF swept = QRectF(lastToolPos_, toolPos).normalized();
+    if (!tool_->sprite().isNull()) swept = swept.united(tool_->boundingRect().translated(lastToolPos_));
+    stock_->setShape(shape);
+    if (const auto* sprite = controller_->currentToolShape()) {
+      const render::ToolSprite s = render::ToolSprite::fromShape(*sprite);
+      swept = swept.united(s.sceneRect(toolPos));
+    }
+    stock_->updateRegion(swept.adjusted(-1, -1, 1, 1));
+    if (controller_->state() != RunState::Running && controller_->state() != RunState::Stepping) stock_->update();
+  }
+  if (!controller_->isBusy()) {
+    const core::cut::ToolShape* shapePtr = controller_->currentToolShape();
+    if (shapePtr != tool_->identity()) tool_->setSprite(shapePtr ? render::ToolSprite::fromShape(*shapePtr) : render::ToolSprite(), shapePtr);
+  }
+  tool_->setPos(toolPos);
+  marker_->setPos(toolPos);
+  lastToolPos_ = toolPos;
+  appendTrail(controller_->currentTime());
+}
+
+void OutputView::fitToView() {
+  const QRectF content = contentRect();
+  if (content.isEmpty() || viewport()->width() < 10) return;
+  fitInView(content.adjusted(-content.width() * 0.04, -content.height() * 0.08, content.width() * 0.04,
+                             content.height() * 0.08),
+            Qt::KeepAspectRatio);
+  fitPending_ = false;
+  if (controller_) controller_->setMaxStepMm(1.0 / pixelsPerMm());
+  updateRulers();
+  emit zoomChanged(pixelsPerMm());
+}
+
+void OutputView::zoomIn() { zoomBy(1.25, viewport()->rect().center()); }
+void OutputView::zoomOut() { zoomBy(0.8, viewport()->rect().center()); }
+
+void OutputView::zoomBy(double factor, const QPoint& anchor) {
+  const double now = pixelsPerMm();
+  factor = std::clamp(now * factor, kMinPixelsPerMm, kMaxPixelsPerMm) / now;
+  const QPointF before = mapToScene(anchor);
+  const ViewportAnchor old = transformationAnchor();
+  setTransformationAnchor(QGraphicsView::NoAnchor);
+  scale(factor, factor);
+  // Keep the scene point under the anchor where it was.
+  const QPointF after = mapToScene(anchor);
+  translate(after.x() - before.x(), after.y() - before.y());
+  centerOn(mapToScene(viewport()->rect().center()) - (after - before));
+  setTransformationAnchor(old);
+  if (controller_) controller_->setMaxStepMm(1.0 / pixelsPerMm());
+  updateRulers();
+  emit zoomChanged(pixelsPerMm());
+}
+
+void OutputView::wheelEvent(QWheelEvent* event) {
+  const double steps = event->angleDelta().y() / 120.0;
+  if (steps == 0) return;
+  zoomBy(std::pow(1.2, steps), event->position().toPoint());
+  event->accept();
+}
+
+void OutputView::resizeEvent(QResizeEvent* event) {
+  QGraphicsView::resizeEvent(event);
+  const QRect vp = viewport()->geometry();
+  zRuler_->setGeometry(vp.left(), vp.top() - kRulerSize, vp.width(), kRulerSize);
+  xRuler_->setGeometry(vp.left() - kRulerSize, vp.top(), kRulerSize, vp.height());
+  corner_->setGeometry(vp.left() - kRulerSize, vp.top() - kRulerSize, kRulerSize, kRulerSize);
+  if (fitPending_) fitToView();
+  updateRulers();
+}
+
+void OutputView::scrollContentsBy(int dx, int dy) {
+  QGraphicsView::scrollContentsBy(dx, dy);
+  updateRulers();
+}
+
+void OutputView::updateRulers() {
+  zRuler_->update();
+  xRuler_->update();
+}
+
+void OutputView::mouseMoveEvent(QMouseEvent* event) {
+  QGraphicsView::mouseMoveEvent(event);
+  const core::Vec2 p = render::fromScene(mapToScene(event->position().toPoint()));
+  emit cursorPositionChanged(core::diameterOf(p), core::zOf(p));
+}
+
+void OutputView::mouseDoubleClickEvent(QMouseEvent* event) {
+  fitToView();
+  event->accept();
+}
+
+void OutputView::drawBackground(QPainter* painter, const QRectF& rect) {
+  painter->fillRect(rect, render::palette().background);
+}
+
+void OutputView::paintEvent(QPaintEvent* event) {
+  ++paints_;
+  QGraphicsView::paintEvent(event);
+}
+
+void OutputView::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) {
+    setToolTip(tr("Output screen: wheel to zoom, drag to pan, double-click to fit"));
+  }
+  QGraphicsView::changeEvent(event);
+}
+
+QImage OutputView::renderToImage(const QSize& size) {
+  QImage image(size, QImage::Format_ARGB32_Premultiplied);
+  image.fill(render::palette().background);
+  QPainter p(&image);
+  scene()->render(&p, QRectF(), contentRect().adjusted(-5, -5, 5, 5), Qt::KeepAspectRatio);
+  return image;
+}
+
+}  // namespace klueng::gui
