@@ -15,11 +15,12 @@
 // Rules (Fanuc 0i-TF type A; docs/nose-compensation.md):
 //   start-up: from the uncompensated centre of its start to its end point offset
 //             by R perpendicular to the START direction of the next move;
-//   corners:  concave -> both offsets trimmed at their intersection; convex ->
-//             two lines turning <= 90 deg (or a line/arc pair whose carriers meet
-//             within 2R of the corner) are extended to their intersection, any
-//             other convex corner gets a bridging arc of radius R around the
-//             programmed corner point; tangent continuation adds nothing;
+//   corners:  concave -> both offsets trimmed at their intersection; convex
+//             turn <= 90 deg -> both extended to the intersection of their
+//             carriers (lines always; with arcs when it lies past the ends and
+//             within 2R of the corner); any other convex corner gets a bridging
+//             arc of radius R around the programmed corner point; tangent
+//             continuation adds nothing;
 //   cancel:   from where the previous piece ended (offset perpendicular to the
 //             END direction of the previous move) to the uncompensated centre
 //             of its end point.
