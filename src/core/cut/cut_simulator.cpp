@@ -50,13 +50,49 @@ std::vector<std::pair<Vec2, Vec2>> piecesOf(const Move& m, double s0, double s1,
   double maxStep = std::numbers::pi / 8;
   if (rho > tolerance) maxStep = std::min(maxStep, 2.0 * std::acos(1.0 - tolerance / rho));
   const int n = std::max(1, static_cast<int>(std::ceil(sweep / maxStep)));
-  Vec2 prev = p.pointAt(s0);
+  // Rotate the radius vector step by step: one sincos per arc, not per chord.
+  const double step = (p.ccw ? 1.0 : -1.0) * sweep / n;
+  const double c = std::cos(step), sn = std::sin(step);
+  const Vec2 first = p.pointAt(s0), last = p.pointAt(s1);
+  Vec2 v = first - p.centre;
+  Vec2 prev = first;
+  out.reserve(static_cast<std::size_t>(n));
   for (int k = 1; k <= n; ++k) {
-    const Vec2 next = p.pointAt(s0 + (s1 - s0) * k / n);
+    v = Vec2(c * v.x() - sn * v.y(), sn * v.x() + c * v.y());
+    const Vec2 next = k == n ? last : Vec2(p.centre + v);
     out.emplace_back(prev, next);
     prev = next;
   }
   return out;
+}
+
+// Bounding box of the controlled point's sub-path [s0, s1] (arcs: exact, from
+// the axis-extreme points inside the sweep), grown by the local box `local`.
+Box pathBounds(const Move& m, double s0, double s1, const Box& local) {
+  const Segment& p = m.path;
+  const Vec2 a = p.pointAt(s0), b = p.pointAt(s1);
+  Box box{std::min(a.x(), b.x()), std::max(a.x(), b.x()), std::min(a.y(), b.y()), std::max(a.y(), b.y())};
+  if (p.isArc() && m.kind != MoveKind::Thread) {
+    const double rho = p.radius();
+    const Vec2 from = a - p.centre;
+    const double start = std::atan2(from.y(), from.x());
+    const double sweep = p.sweep() * (s1 - s0);
+    const double dir = p.ccw ? 1.0 : -1.0;
+    for (int q = 0; q < 4; ++q) {
+      const double angle = q * std::numbers::pi / 2;
+      // Angle travelled from the start to this extreme point, in [0, 2pi).
+      double travelled = dir * (angle - start);
+      travelled = std::fmod(travelled, 2 * std::numbers::pi);
+      if (travelled < 0) travelled += 2 * std::numbers::pi;
+      if (travelled > sweep) continue;
+      const Vec2 e = p.centre + rho * Vec2(std::cos(angle), std::sin(angle));
+      box.z0 = std::min(box.z0, e.x());
+      box.z1 = std::max(box.z1, e.x());
+      box.x0 = std::min(box.x0, e.y());
+      box.x1 = std::max(box.x1, e.y());
+    }
+  }
+  return Box{box.z0 + local.z0, box.z1 + local.z1, box.x0 + local.x0, box.x1 + local.x1};
 }
 
 Diagnostic makeAlarm(const char* code, const Move& m, const Vec2& where) {
@@ -313,16 +349,21 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
     alarmTime_ = m.tStart + s * (m.tEnd - m.tStart);
   };
 
-  const auto nosePieces = nose(s0, sEnd);
-  const auto boxPieces = boxes(s0, sEnd);
-
-  // Quick rejection: the whole tool stays above every bit of material it passes.
-  const Box swept = sweptBounds(boxPieces, tool->bounds);
+  // Quick rejection: the whole tool stays above every bit of material it passes
+  // and away from the chuck (most moves of a long program are in air).
+  const Box swept = pathBounds(m, s0, sEnd, tool->bounds);
   int first, last;
   stock_.columnRange(swept.z0, swept.z1, first, last);
   const bool nearStock = first <= last && swept.x0 < stock_.maxOuterRadius(first, last);
+  const Box jaws{chuck_.jawZMin(), chuck_.jawZMax(), chuck_.jawXMin(), chuck_.jawXMax()};
+  const Box body{chuck_.bodyZMin(), chuck_.bodyZMax(), 0.0, chuck_.bodyXMax()};
+  const bool nearChuck = options_.detectCollisions && (boxesOverlap(swept, jaws) || boxesOverlap(swept, body));
+  if (!nearStock && !nearChuck) return;
 
-  if (options_.detectCollisions && hitsChuck(ctx, nosePieces, boxPieces)) {
+  const auto nosePieces = nose(s0, sEnd);
+  const auto boxPieces = boxes(s0, sEnd);
+
+  if (nearChuck && hitsChuck(ctx, nosePieces, boxPieces)) {
     const double s = earliest([&](double e) { return hitsChuck(ctx, nose(s0, e), boxes(s0, e)); });
     // Cut what the tool removed on its way in, then stop at the crash.
     const auto inNose = nose(s0, s);

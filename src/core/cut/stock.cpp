@@ -50,19 +50,15 @@ double Stock::innerRadius(int i) const {
 }
 
 double Stock::maxOuterRadius(int first, int last) const {
-  double m = 0.0;
   first = std::max(first, 0);
   last = std::min(last, columnCount() - 1);
+  double m = 0.0;
   int i = first;
-  while (i <= last) {
-    if (i % kBlock == 0 && i + kBlock - 1 <= last) {
-      m = std::max(m, blockMax_[static_cast<std::size_t>(i / kBlock)]);
-      i += kBlock;
-    } else {
-      m = std::max(m, outer_[static_cast<std::size_t>(i)]);
-      ++i;
-    }
-  }
+  const int headEnd = std::min(last + 1, (first + kBlock - 1) / kBlock * kBlock);
+  for (; i < headEnd; ++i) m = std::max(m, outer_[static_cast<std::size_t>(i)]);
+  const int blocksEnd = (last + 1) / kBlock * kBlock;
+  for (; i < blocksEnd; i += kBlock) m = std::max(m, blockMax_[static_cast<std::size_t>(i / kBlock)]);
+  for (; i <= last; ++i) m = std::max(m, outer_[static_cast<std::size_t>(i)]);
   return m;
 }
 

@@ -1,0 +1,130 @@
+// Check + interpret + cut of a generated program (issue 4 target: the
+// 100,000-block program on the Ø50 x 100 bar at the default resolution in
+// <= 1 s median, <= 300 MB), at 10k / 100k / 1M blocks to show linear cost.
+//
+//   klueng_bench_cut                           Google Benchmark, all sizes
+//   klueng_bench_cut --cut-file=PROGRAM.txt    one run of a program file with
+//                                              stage times and peak RSS
+#include <benchmark/benchmark.h>
+
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <string_view>
+
+#include "klueng/core/cut/cut_simulator.h"
+#include "klueng/core/gcode/checker.h"
+#include "klueng/core/gcode/parser.h"
+#include "klueng/core/io/program_file.h"
+#include "klueng/core/io/tool_config.h"
+#include "klueng/core/machine/interpreter.h"
+#include "program_generator.h"
+
+namespace {
+
+using namespace klueng::core;
+
+// The shipped machine files (tools.cfg names the real bitmaps).
+machine::MachineSetup shippedSetup() {
+  const std::string dir = KLUENG_SOURCE_DIR;
+  machine::MachineSetup setup;
+  setup.tools = *io::readToolTable(dir + "/tools.cfg").value;
+  setup.offsets = *io::readOffsetTable(dir + "/offset.cfg").value;
+  setup.machine = *io::readMachineConfig(dir + "/machine.cfg").value;
+  return setup;
+}
+
+struct Outcome {
+  double removed = 0.0;
+  bool alarm = false;
+  std::size_t moves = 0;
+};
+
+using Clock = std::chrono::steady_clock;
+struct StageTimes {
+  double parseCheck = 0, interpret = 0, cut = 0;
+};
+
+Outcome checkInterpretCut(const io::ProgramFile& file, const machine::MachineSetup& setup, StageTimes* times = nullptr) {
+  const auto t0 = Clock::now();
+  const gcode::Program program = gcode::parse(file.gcode, file.gcodeFirstLine);
+  gcode::CheckOptions checkOptions;
+  checkOptions.toolsWithBitmap = std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8};
+  const auto diags = gcode::check(program, checkOptions);
+  const auto t1 = Clock::now();
+  const machine::Timeline timeline = machine::interpret(program, setup);
+  const auto t2 = Clock::now();
+  cut::CutSimulator sim(timeline, cut::CutSetup::from(file.header, setup));
+  sim.runToEnd();
+  const auto t3 = Clock::now();
+  if (times) {
+    times->parseCheck = std::chrono::duration<double, std::milli>(t1 - t0).count();
+    times->interpret = std::chrono::duration<double, std::milli>(t2 - t1).count();
+    times->cut = std::chrono::duration<double, std::milli>(t3 - t2).count();
+  }
+  return {sim.removedVolume(), hasErrors(diags) || timeline.alarm.has_value() || sim.alarm().has_value(),
+          timeline.moves.size()};
+}
+
+void BM_CheckInterpretCut(benchmark::State& state) {
+  const std::string text = klueng::bench::ProgramGenerator::generate(static_cast<int>(state.range(0)));
+  const io::ProgramFile file = *io::parseProgramFile(text).value;
+  const machine::MachineSetup setup = shippedSetup();
+  Outcome outcome;
+  for (auto _ : state) {
+    outcome = checkInterpretCut(file, setup);
+    benchmark::DoNotOptimize(outcome.removed);
+  }
+  if (outcome.alarm) state.SkipWithError("the generated program stopped on an error or alarm");
+  state.counters["moves"] = static_cast<double>(outcome.moves);
+  state.counters["removed_cm3"] = outcome.removed / 1000.0;
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
+// The cut alone, on a timeline built once.
+void BM_CutOnly(benchmark::State& state) {
+  const std::string text = klueng::bench::ProgramGenerator::generate(static_cast<int>(state.range(0)));
+  const io::ProgramFile file = *io::parseProgramFile(text).value;
+  const machine::MachineSetup setup = shippedSetup();
+  const gcode::Program program = gcode::parse(file.gcode, file.gcodeFirstLine);
+  const machine::Timeline timeline = machine::interpret(program, setup);
+  for (auto _ : state) {
+    cut::CutSimulator sim(timeline, cut::CutSetup::from(file.header, setup));
+    sim.runToEnd();
+    benchmark::DoNotOptimize(sim.removedVolume());
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
+}  // namespace
+
+BENCHMARK(BM_CheckInterpretCut)->Arg(10'000)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CutOnly)->Arg(10'000)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
+
+int main(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    if (arg.rfind("--cut-file=", 0) != 0) continue;
+    const auto file = io::readProgramFile(std::string(arg.substr(11)));
+    if (!file.ok()) {
+      std::fprintf(stderr, "cannot read %s\n", argv[i] + 11);
+      return 1;
+    }
+    StageTimes times;
+    const Outcome o = checkInterpretCut(*file.value, shippedSetup(), &times);
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    std::printf("moves %zu, parse+check %.1f ms, interpret %.1f ms, cut %.1f ms, total %.1f ms, removed %.0f mm3, "
+                "%s, peak RSS %.1f MB\n",
+                o.moves, times.parseCheck, times.interpret, times.cut, times.parseCheck + times.interpret + times.cut,
+                o.removed, o.alarm ? "STOPPED" : "ran to the end", static_cast<double>(usage.ru_maxrss) / 1024.0);
+    return o.alarm ? 1 : 0;
+  }
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
