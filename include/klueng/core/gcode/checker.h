@@ -1,6 +1,9 @@
 #pragma once
-// The grammar checker (SPEC 4-5 and the "ext" rules that need no modal state).
-// Returns every diagnostic of the whole program, sorted by line and column.
+// The grammar checker (SPEC 4-5, 13 and the "ext" rules that need no
+// positions: arc radius mismatch is the interpreter's). Units (G20/G21) and
+// the motion group are tracked left to right. Returns every diagnostic of the
+// whole program, sorted by line and column; a hostile input's report stops at
+// 10,000 entries with a final E199. Codes: src/core/gcode/diagnostic_codes.h.
 #include <optional>
 #include <vector>
 
