@@ -1,5 +1,6 @@
 #include "klueng/core/io/program_file.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -164,8 +165,17 @@ ReadResult<ProgramFile> parseProgramFile(std::string_view bytes, const JobHeader
                      file.header.lengthUnit, diags);
   }
 
-  // The G-code part, with every line end normalised to '\n'.
+  // The G-code part, with every line end normalised to '\n'. With LF line
+  // ends and no blanked line the text after the header is already that.
   std::string& code = file.gcode;
+  const bool plainLf = text.find('\r') == std::string::npos &&
+                       std::none_of(diags.begin(), diags.end(), [](const Diagnostic& d) { return d.code == "F106"; });
+  if (plainLf) {
+    if (firstCodeLine < lines.size())
+      code.assign(text, static_cast<std::size_t>(lines[firstCodeLine].data() - text.data()));
+    result.value = std::move(file);
+    return result;
+  }
   for (std::size_t i = firstCodeLine; i < lines.size(); ++i) {
     code.append(lines[i]);
     if (i + 1 < lines.size() || detail::endsWithLineBreak(text)) code.push_back('\n');

@@ -1,6 +1,7 @@
 #include "klueng/core/io/text_encoding.h"
 
 #include <cstdint>
+#include <cstring>
 
 namespace klueng::core::io {
 
@@ -74,6 +75,14 @@ std::uint32_t tis620CodePoint(unsigned char b) {
 
 bool isValidUtf8(std::string_view bytes) {
   for (std::size_t i = 0; i < bytes.size();) {
+    // Programs are mostly ASCII: skip it eight bytes at a time.
+    while (i + 8 <= bytes.size()) {
+      std::uint64_t word;
+      std::memcpy(&word, bytes.data() + i, 8);
+      if (word & 0x8080808080808080ull) break;
+      i += 8;
+    }
+    if (i >= bytes.size()) break;
     const std::size_t n = utf8SequenceLength(bytes, i);
     if (n == 0) return false;
     i += n;

@@ -88,6 +88,13 @@ std::string decodeText(std::string_view bytes, SourceEncoding* encoding) {
 std::vector<std::string_view> splitLines(std::string_view text) {
   std::vector<std::string_view> lines;
   std::size_t start = 0;
+  if (text.find('\r') == std::string_view::npos) {
+    // LF only (the usual case): let find() (memchr) do the scanning.
+    for (std::size_t end; (end = text.find('\n', start)) != std::string_view::npos; start = end + 1)
+      lines.push_back(text.substr(start, end - start));
+    if (start < text.size()) lines.push_back(text.substr(start));
+    return lines;
+  }
   for (std::size_t i = 0; i < text.size(); ++i) {
     if (text[i] == '\n' || text[i] == '\r') {
       lines.push_back(text.substr(start, i - start));
