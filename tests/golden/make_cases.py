@@ -408,3 +408,14 @@ for x in (29.4, 28.9, 28.5, 28.16):
     line += 4
 s02.rapid(line - 1, 100, 100)                          # N270
 case("sample02_thread", sample("02-thread.txt"), s02.rows)
+
+
+# ---------------------------------------------------------------- Fanuc extras (SPEC 13)
+# G18/G80 are no-ops, G55 a (zero) work offset, M42 a gear range. After G50
+# X100 Z50 at the start position (machine Z300 X0), work = machine + (Z-250,
+# X+100): G53 X0 Z250 (machine) is work X100 Z0, a Z-only rapid of 50 mm.
+case("fanuc_g18_g53_g55_g80_m42", "G18 G21 G40 G80 G99\nG55\nG50 X100. Z50.\nG53 X0. Z250.\nM42\n", [
+    row("RAPID", 4, 0, 0.375, 100, 50, 100, 0, feed=8000),
+])
+# Canned cycles are not simulated yet: the run stops on them with A117.
+case("alarm_a117_canned_cycle", "G00 X10.\nG90 X20. Z-10. F0.2\n", X10, alarm="program.nc:2:1: alarm A117")
