@@ -77,6 +77,8 @@ CutOutcome runCut(const std::string& file, const io::JobHeader& header, const ma
     view.chuck = &sim.chuck();
     view.tool = sim.currentTool();
     view.toolPosition = sim.toolPosition();
+    view.path = &timeline;
+    view.pathUntil = sim.endTime();
     std::string error;
     if (!cut::writePng(options.pngPath, cut::renderSection(view), &error)) {
       std::fprintf(stderr, "klueng-cli simulate: cannot write %s: %s\n", options.pngPath.c_str(), error.c_str());
@@ -84,6 +86,7 @@ CutOutcome runCut(const std::string& file, const io::JobHeader& header, const ma
     }
   }
   if (!options.profilePath.empty()) outcome.written = writeText(options.profilePath, part.toCsv()) && outcome.written;
+  if (!options.svgPath.empty()) outcome.written = writeText(options.svgPath, part.toSvg()) && outcome.written;
   if (!options.jsonPath.empty()) {
     std::string alarms;
     const std::optional<Diagnostic> stop = sim.stoppingAlarm();

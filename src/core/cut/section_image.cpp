@@ -20,6 +20,9 @@ constexpr std::uint32_t kJaw = 0x5A6470;
 constexpr std::uint32_t kBody = 0x3A424C;
 constexpr std::uint32_t kCentreLine = 0x2060C0;
 constexpr std::uint32_t kNose = 0xD02020;
+constexpr std::uint32_t kRapidPath = 0xD04040;
+constexpr std::uint32_t kFeedPath = 0x2050D0;
+constexpr std::uint32_t kThreadPath = 0x109040;
 
 struct Canvas {
   io::RgbImage img;
@@ -127,6 +130,26 @@ io::RgbImage renderSection(const SectionView& view) {
   for (int x = 0; x < cv.img.width; ++x) {
     const int phase = x % 24;
     if (phase < 14 || (phase >= 17 && phase < 20)) cv.set(x, yc, kCentreLine);
+  }
+
+  if (view.path) {
+    for (const machine::Move& m : view.path->moves) {
+      if (m.tStart > view.pathUntil || m.kind == machine::MoveKind::Dwell) break;
+      const double sEnd = m.tEnd > view.pathUntil && m.tEnd > m.tStart
+                              ? (view.pathUntil - m.tStart) / (m.tEnd - m.tStart)
+                              : 1.0;
+      const std::uint32_t colour = m.kind == machine::MoveKind::Rapid    ? kRapidPath
+                                   : m.kind == machine::MoveKind::Thread ? kThreadPath
+                                                                         : kFeedPath;
+      const double len = m.path.length() * sEnd;
+      const int steps = std::max(1, static_cast<int>(std::ceil(len * ppm * 2)));
+      for (int k = 0; k <= steps; ++k) {
+        const double along = static_cast<double>(k) / steps;
+        if (m.kind == machine::MoveKind::Rapid && static_cast<int>(along * len * ppm / 4) % 2 == 1) continue;
+        const Vec2 p = m.path.pointAt(along * sEnd);
+        cv.set(cv.px(p.x()), cv.py(p.y()), colour);
+      }
+    }
   }
 
   if (view.tool) {

@@ -9,6 +9,7 @@
 #include "klueng/core/cut/tool_shape.h"
 #include "klueng/core/geometry.h"
 #include "klueng/core/io/image.h"
+#include "klueng/core/machine/timeline.h"
 
 namespace klueng::core::cut {
 
@@ -17,9 +18,13 @@ struct SectionView {
   const Chuck* chuck = nullptr;
   const ToolShape* tool = nullptr;   // may be null
   Vec2 toolPosition = Vec2::Zero();  // controlled point
+  // Optional: the controlled point's path up to `pathUntil` seconds, drawn on the
+  // upper half (rapids dashed red, feeds blue, threading green).
+  const machine::Timeline* path = nullptr;
+  double pathUntil = 1e300;
   double pixelsPerMm = 0.0;          // 0 = fit into maxWidth x maxHeight
-  int maxWidth = 1600;
-  int maxHeight = 1000;
+  int maxWidth = 2400;
+  int maxHeight = 1600;
 };
 
 io::RgbImage renderSection(const SectionView& view);
