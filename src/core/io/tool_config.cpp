@@ -77,8 +77,12 @@ std::string folderOf(const std::string& path) {
 
 std::string ToolTable::bitmapPath(int tool) const {
   if (tool < 1 || tool > kToolCount) return {};
-  const std::string& name = bitmap[static_cast<std::size_t>(tool - 1)];
+  std::string name = bitmap[static_cast<std::size_t>(tool - 1)];
   if (name.empty()) return {};
+#ifndef _WIN32
+  // tools.cfg files from the Windows program write folders with backslashes.
+  std::replace(name.begin(), name.end(), '\\', '/');
+#endif
   const fs::path p(name);
   if (p.is_absolute() || folder.empty()) return name;
   return (fs::path(folder) / p).string();

@@ -65,6 +65,13 @@ TEST(ToolTable, EmptyLineMeansNoBitmapAndPathsResolveAgainstTheFolder) {
   EXPECT_EQ(r.value->bitmapPath(4), "/abs/d.bmp");
 }
 
+TEST(ToolTable, WindowsBackslashesInNamesAreFolderSeparators) {
+  const auto r = parseToolTable("tools\\turn.bmp\n\n\n\n\n\n\n\n", "/data", "tools.cfg");
+  ASSERT_TRUE(r.ok()) << codes(r.diagnostics);
+  EXPECT_EQ(r.value->bitmap[0], "tools\\turn.bmp");  // kept as written
+  EXPECT_EQ(r.value->bitmapPath(1), "/data/tools/turn.bmp");
+}
+
 TEST(ToolTable, MissingLinesAreAnError) {
   const auto r = parseToolTable("a.bmp\nb.bmp\nc.bmp\n", "/d", "tools.cfg");
   ASSERT_EQ(r.diagnostics.size(), 1u) << codes(r.diagnostics);
