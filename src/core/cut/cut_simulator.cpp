@@ -20,10 +20,13 @@ constexpr double kBoxChordTolerance = 0.0002;    // mm: bitmap edges next to the
 
 // Controlled-point pieces of the sub-path [s0, s1] of a move: straight pieces
 // (arcs as chords within `tolerance`), or for G32 the stamp positions (a == b).
-std::vector<std::pair<Vec2, Vec2>> piecesOf(const Move& m, double s0, double s1, double tolerance) {
+std::vector<std::pair<Vec2, Vec2>> piecesOf(const Move& m, double s0, double s1, double tolerance,
+                                             double resolution) {
   std::vector<std::pair<Vec2, Vec2>> out;
   const Segment& p = m.path;
-  if (m.kind == MoveKind::Thread) {
+  // A lead finer than two stock columns cannot show teeth: sweep it as a groove
+  // (and keep a fine-lead G32 from stamping the tool millions of times).
+  if (m.kind == MoveKind::Thread && m.lead >= 2.0 * resolution) {
     const double dz = std::abs(p.end.x() - p.start.x());
     const double span = dz > 1e-9 ? dz : p.length();
     if (m.lead <= 0.0 || span <= 1e-12) {
@@ -330,8 +333,9 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
   SweepContext ctx{&stock_, &chuck_, tool, options_.collisionTolerance,
                    detail::Grid{-stock_.length(), stock_.resolution(), stock_.columnCount()}};
 
-  auto nose = [&](double a, double b) { return piecesOf(m, a, b, kNoseChordTolerance); };
-  auto boxes = [&](double a, double b) { return piecesOf(m, a, b, kBoxChordTolerance); };
+  const double dz = stock_.resolution();
+  auto nose = [&](double a, double b) { return piecesOf(m, a, b, kNoseChordTolerance, dz); };
+  auto boxes = [&](double a, double b) { return piecesOf(m, a, b, kBoxChordTolerance, dz); };
 
   // Smallest s in (s0, sEnd] at which test(s0, s) holds (test(s0, sEnd) is known to hold).
   auto earliest = [&](auto&& test) {

@@ -7,7 +7,7 @@
 namespace klueng::core::cut {
 
 namespace {
-constexpr int kMaxColumns = 1 << 24;
+constexpr int kMaxColumns = 1 << 21;  // ~2 million columns: 0.05 mm over 100 m, 0.001 mm over 2 m
 }
 
 Stock::Stock(double diameter, double length, double resolution)

@@ -238,6 +238,17 @@ TEST(CutSimulator, ThreadingStampsTheToolOncePerLead) {
   EXPECT_DOUBLE_EQ(radiusAt(s, -30.0), 14.6);  // where the tool stood before retracting
 }
 
+TEST(CutSimulator, ALeadFinerThanTheColumnsCutsAGroove) {
+  io::RgbImage img = blankImage(9, 30);
+  for (int k = 0; k < 5; ++k) paint(img, 4 - k, 29 - k, 4 + k, 29 - k, 0xE0A000);
+  const ToolShape v = *makeToolShape(img, "v.bmp", 0.0, 8).value;
+  machine::Move pass = move(MoveKind::Thread, Segment::line(zx(5, 14.6), zx(-30, 14.6)), 0, 1, 130);
+  pass.lead = 0.05;  // = one column: no teeth can be resolved
+  CutSimulator sim(timelineOf({pass}), barSetup(30, 50), libraryWith(v));
+  sim.runToEnd();
+  for (double z = -29.0; z < -0.1; z += 0.11) EXPECT_DOUBLE_EQ(radiusAt(sim.stock(), z), 14.6) << z;
+}
+
 TEST(CutSimulator, AdvancingInStepsEqualsRunningToTheEnd) {
   const machine::Timeline tl = timelineOf({
       move(MoveKind::Line, Segment::line(zx(2, 23), zx(-48, 23)), 0, 10, 10),

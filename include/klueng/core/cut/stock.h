@@ -19,7 +19,7 @@ struct Interval {
 class Stock {
  public:
   Stock() = default;
-  // diameter, length > 0; resolution > 0 (clamped so there are at most 2^24 columns).
+  // diameter, length > 0; resolution > 0 (coarsened so there are at most 2^21 columns).
   Stock(double diameter, double length, double resolution = kDefaultResolution);
 
   double diameter() const { return diameter_; }
