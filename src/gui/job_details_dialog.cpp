@@ -50,12 +50,12 @@ JobDetailsDialog::JobDetailsDialog(const io::JobHeader& h, QWidget* parent) : QD
   programmer_ = new QLineEdit(QString::fromStdString(h.programmer), this);
   for (QLineEdit* e : {project_, part_, material_, programmer_}) e->setMinimumWidth(280);
   form_ = new QFormLayout;
-  form_->addRow(QString(), project_);
-  form_->addRow(QString(), part_);
-  form_->addRow(QString(), material_);
-  form_->addRow(QString(), pair(this, diameter_, diameterUnit_));
-  form_->addRow(QString(), pair(this, length_, lengthUnit_));
-  form_->addRow(QString(), programmer_);
+  form_->addRow(new QLabel(this), project_);
+  form_->addRow(new QLabel(this), part_);
+  form_->addRow(new QLabel(this), material_);
+  form_->addRow(new QLabel(this), pair(this, diameter_, diameterUnit_));
+  form_->addRow(new QLabel(this), pair(this, length_, lengthUnit_));
+  form_->addRow(new QLabel(this), programmer_);
   buttons_ = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(form_);

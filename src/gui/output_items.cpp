@@ -36,21 +36,14 @@ void StockItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidge
 
 // ---------------------------------------------------------------- ChuckItem
 
-void ChuckItem::setGeometry(double stockDiameter, double stockLength, double grip, double jawHeight) {
+void ChuckItem::setChuck(const core::cut::Chuck& chuck) {
   prepareGeometryChange();
-  diameter_ = stockDiameter;
-  length_ = stockLength;
-  grip_ = grip;
-  jaw_ = jawHeight;
+  chuck_ = chuck;
 }
 
-QRectF ChuckItem::boundingRect() const {
-  return render::chuckRect(diameter_, length_, grip_, jaw_).adjusted(-16, -1, 1, 1);
-}
+QRectF ChuckItem::boundingRect() const { return render::chuckRect(chuck_).adjusted(-1, -1, 1, 1); }
 
-void ChuckItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*) {
-  render::paintChuck(*painter, diameter_, length_, grip_, jaw_);
-}
+void ChuckItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*) { render::paintChuck(*painter, chuck_); }
 
 // ---------------------------------------------------------------- ToolItem
 

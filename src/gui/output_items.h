@@ -31,12 +31,12 @@ class StockItem : public QGraphicsItem {
 
 class ChuckItem : public QGraphicsItem {
  public:
-  void setGeometry(double stockDiameter, double stockLength, double grip, double jawHeight);
+  void setChuck(const core::cut::Chuck& chuck);
   QRectF boundingRect() const override;
   void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
 
  private:
-  double diameter_ = 50, length_ = 100, grip_ = 15, jaw_ = 20;
+  core::cut::Chuck chuck_;
 };
 
 // The tool bitmap; the item's position is the controlled point.

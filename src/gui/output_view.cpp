@@ -106,7 +106,9 @@ void OutputView::rebuild() {
     machineCfg = controller_->machineSetup().machine;
   }
   stock_->setShape(controller_ ? controller_->stockShape() : render::stockShapeFromBlank(header.diameterMm(), header.lengthMm()));
-  chuck_->setGeometry(header.diameterMm(), header.lengthMm(), machineCfg.chuckGrip, machineCfg.chuckJawHeight);
+  const auto* sim = controller_ && !controller_->isBusy() ? controller_->cutSimulator() : nullptr;
+  chuck_->setChuck(sim ? sim->chuck()
+                       : render::chuckFor(header.diameterMm(), header.lengthMm(), machineCfg.chuckGrip, machineCfg.chuckJawHeight));
   if (const auto* tl = controller_ ? controller_->timeline() : nullptr) {
     QPainterPath all;
     for (const auto& m : tl->moves)
@@ -118,7 +120,11 @@ void OutputView::rebuild() {
   const QRectF content = contentRect();
   scene()->setSceneRect(content.adjusted(-kSceneMargin, -kSceneMargin, kSceneMargin, kSceneMargin));
   updateFrame();
-  if (fitPending_ || !controller_ || !controller_->timeline()) fitToView();
+  // A new program (timeline) is fitted once; after that zoom and pan are the user's.
+  const void* timeline = controller_ ? controller_->timeline() : nullptr;
+  if (timeline != fittedTimeline_) fitPending_ = true;
+  fittedTimeline_ = timeline;
+  if (fitPending_ || !timeline) fitToView();
   scene()->update();
 }
 

@@ -100,6 +100,7 @@ class OutputView : public QGraphicsView {
   QPointF lastToolPos_;
   bool showPath_ = true;
   bool fitPending_ = true;
+  const void* fittedTimeline_ = nullptr;
   qint64 paints_ = 0;
 };
 

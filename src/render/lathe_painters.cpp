@@ -152,34 +152,32 @@ void paintCentreLine(QPainter& painter, double zFrom, double zTo) {
   painter.restore();
 }
 
-QRectF chuckRect(double stockDiameterMm, double stockLengthMm, double gripMm, double jawHeightMm) {
-  const double r = stockDiameterMm / 2.0;
-  const double left = -stockLengthMm - 5.0;
-  const double right = -stockLengthMm + gripMm;
-  return QRectF(QPointF(left, -(r + jawHeightMm)), QPointF(right, r + jawHeightMm));
+core::cut::Chuck chuckFor(double stockDiameterMm, double stockLengthMm, double gripMm, double jawHeightMm) {
+  core::cut::Chuck c;
+  c.stockLength = stockLengthMm;
+  c.stockRadius = stockDiameterMm / 2.0;
+  c.grip = gripMm;
+  c.jawHeight = jawHeightMm;
+  return c;
 }
 
-void paintChuck(QPainter& painter, double stockDiameterMm, double stockLengthMm, double gripMm,
-                double jawHeightMm) {
+QRectF chuckRect(const core::cut::Chuck& c) {
+  const double top = std::max(c.jawXMax(), c.bodyXMax());
+  return QRectF(QPointF(c.bodyZMin(), -top), QPointF(c.jawZMax(), top));
+}
+
+void paintChuck(QPainter& painter, const core::cut::Chuck& c) {
   const Palette& pal = palette();
-  const double r = stockDiameterMm / 2.0;
-  const double left = -stockLengthMm - 5.0;
-  const double right = -stockLengthMm + gripMm;
   painter.save();
   painter.setPen(cosmeticPen(pal.chuckEdge, 1.0));
-  painter.setBrush(pal.chuckFill);
-  // Upper jaw (stepped: the gripping step hugs the bar) and its mirror image.
   for (double sign : {1.0, -1.0}) {
-    QPolygonF jaw;
-    const double step = std::min(gripMm, 10.0);
-    jaw << QPointF(left, -sign * r) << QPointF(right, -sign * r) << QPointF(right, -sign * (r + jawHeightMm * 0.5))
-        << QPointF(right - step, -sign * (r + jawHeightMm * 0.5)) << QPointF(right - step, -sign * (r + jawHeightMm))
-        << QPointF(left, -sign * (r + jawHeightMm));
-    painter.drawPolygon(jaw);
+    // Jaw: the box the crash check uses, gripping the bar's left end.
+    painter.setBrush(pal.chuckFill);
+    painter.drawRect(QRectF(QPointF(c.jawZMin(), -sign * c.jawXMin()), QPointF(c.jawZMax(), -sign * c.jawXMax())).normalized());
   }
-  // The chuck body behind the bar's end.
+  // The chuck body behind the bar's end, across the axis.
   painter.setBrush(pal.chuckFill.darker(130));
-  painter.drawRect(QRectF(QPointF(left - 15.0, -(r + jawHeightMm)), QPointF(left, r + jawHeightMm)));
+  painter.drawRect(QRectF(QPointF(c.bodyZMin(), -c.bodyXMax()), QPointF(c.bodyZMax(), c.bodyXMax())));
   painter.restore();
 }
 

@@ -10,8 +10,8 @@
 //                    outline; drawn mirrored about the centre line.
 //   stockShapeFromStock(stock)  from core::cut::Stock (what the core has cut)
 //   paintStock()     fills the section (both halves) and the centre line.
-//   paintChuck()     the jaws gripping the stock's left end (machine.cfg's
-//                    chuckGrip / chuckJawHeight), both halves.
+//   paintChuck()     the core's cut::Chuck (jaws gripping the stock's left end, the
+//                    body behind it), both halves -- the same boxes the crash check uses.
 //   paintCentreLine()  dash-dot axis line over a Z range.
 //   stockShapeFromBlank()  the rectangle of an uncut bar (diameter, length).
 //   Colours: render::palette() (one place, so screen and print agree).
@@ -63,9 +63,8 @@ StockShape stockShapeFromStock(const core::cut::Stock& stock);
 // Fills both halves of the stock section; `cosmetic` pens stay 1 px at any zoom.
 void paintStock(QPainter& painter, const StockShape& stock, bool showBlankOutline = true);
 void paintCentreLine(QPainter& painter, double zFrom, double zTo);
-// Jaws at z in [-length - 5, -length + grip], outside radius diameter/2 .. + jawHeight.
-void paintChuck(QPainter& painter, double stockDiameterMm, double stockLengthMm, double gripMm,
-                double jawHeightMm);
-QRectF chuckRect(double stockDiameterMm, double stockLengthMm, double gripMm, double jawHeightMm);
+void paintChuck(QPainter& painter, const core::cut::Chuck& chuck);
+QRectF chuckRect(const core::cut::Chuck& chuck);   // both halves, scene units
+core::cut::Chuck chuckFor(double stockDiameterMm, double stockLengthMm, double gripMm, double jawHeightMm);
 
 }  // namespace klueng::render
