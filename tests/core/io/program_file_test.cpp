@@ -29,7 +29,7 @@ std::string codes(const std::vector<Diagnostic>& diags) {
 const std::string kHeader = "Step shaft\nShaft SS-01\nAluminium\n150\n1100\nSomchai\n";
 
 TEST(ProgramFile, ReadsTheSixLineHeaderOfSample01) {
-  const auto r = readProgramFile(std::string(KLUENG_SAMPLES_DIR) + "/01-step-shaft.txt");
+  const auto r = readProgramFile(std::string(KLUENG_SOURCE_DIR "/resources/samples") + "/01-step-shaft.txt");
   ASSERT_TRUE(r.ok()) << codes(r.diagnostics);
   const ProgramFile& f = *r.value;
   EXPECT_FALSE(f.plainGcode);
@@ -47,7 +47,7 @@ TEST(ProgramFile, ReadsTheSixLineHeaderOfSample01) {
 
 TEST(ProgramFile, HeaderStartingWithGOrMWordsIsStillAHeader) {
   // Sample 04's project name starts with G, its material with M.
-  const auto r = readProgramFile(std::string(KLUENG_SAMPLES_DIR) + "/04-grammar-errors.txt");
+  const auto r = readProgramFile(std::string(KLUENG_SOURCE_DIR "/resources/samples") + "/04-grammar-errors.txt");
   ASSERT_TRUE(r.ok()) << codes(r.diagnostics);
   EXPECT_FALSE(r.value->plainGcode);
   EXPECT_EQ(r.value->header.project, "Grammar checker demonstration");
@@ -293,7 +293,7 @@ TEST(ProgramFile, FormatFlattensLineBreaksInHeaderFields) {
 
 TEST(ProgramFile, SamplesRoundTripByteForByte) {
   for (const char* name : {"01-step-shaft.txt", "02-thread.txt", "04-grammar-errors.txt", "05-runtime-alarms.txt"}) {
-    const std::string path = std::string(KLUENG_SAMPLES_DIR) + "/" + name;
+    const std::string path = std::string(KLUENG_SOURCE_DIR "/resources/samples") + "/" + name;
     const auto r = readProgramFile(path);
     ASSERT_TRUE(r.ok()) << name << " " << codes(r.diagnostics);
     EXPECT_EQ(formatProgramFile(*r.value), testing::readFile(path)) << name;
