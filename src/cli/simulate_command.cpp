@@ -171,7 +171,6 @@ int runSimulate(const std::vector<std::string>& args) {
   }
   // The stock: collisions stop the run on their block (SPEC 8), and the cut outputs.
   const CutOutcome cut = o.cut.enabled ? runCut(o.file, programFile.header, setup, timeline, o.cut) : CutOutcome{};
-  for (const auto& d : cut.toolErrors) printDiagnostic(o.file, d, o.lang);
   if (o.cycleTime) std::printf("%.4f\n", timeline.cycleTime());
   if (cut.alarm) {
     printDiagnostic(o.file, *cut.alarm, o.lang);

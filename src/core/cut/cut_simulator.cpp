@@ -328,7 +328,19 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
   const Move& m = timeline_->moves[index];
   if (m.kind == MoveKind::Dwell) return;
   const ToolShape* tool = tools_.get(m.tool, m.offset);
-  if (!tool) return;
+  if (!tool) {
+    // A tool whose bitmap is refused stops the run where it is first used.
+    if (m.tool >= 1 && hasErrors(tools_.diagnostics())) {
+      for (const Diagnostic& d : tools_.diagnostics())
+        if (d.severity == Severity::Error && !alarm_) alarm_ = d;
+      if (alarm_) {
+        alarm_->range = SourceRange{m.line, 1, 0};
+        alarmPosition_ = m.path.start;
+        alarmTime_ = m.tStart;
+      }
+    }
+    return;
+  }
   const double s0 = nextMoveDone_;
   SweepContext ctx{&stock_, &chuck_, tool, options_.collisionTolerance,
                    detail::Grid{-stock_.length(), stock_.resolution(), stock_.columnCount()}};

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 
 #include "cut_test_util.h"
@@ -268,6 +269,29 @@ TEST(CutSimulator, AdvancingInStepsEqualsRunningToTheEnd) {
   stepped.advanceTo(1.0);  // back in time: re-cut from the start
   EXPECT_DOUBLE_EQ(radiusAt(stepped.stock(), -10.0), 25.0);
   EXPECT_DOUBLE_EQ(radiusAt(stepped.stock(), -1.0), 23.0);
+}
+
+TEST(CutSimulator, ARefusedBitmapStopsTheRunWhereTheToolIsFirstUsed) {
+  io::RgbImage img = blankImage(10, 10);
+  paint(img, 0, 0, 9, 4, 0x000000);  // holder only, no cutting edge
+  const std::string path = (std::filesystem::temp_directory_path() / "klueng_cut_holder_only.bmp").string();
+  ASSERT_TRUE(io::writeBmp(path, img));
+  CutSetup setup = barSetup(50, 100);
+  setup.tools.bitmap[0] = path;
+  const machine::Timeline tl = timelineOf({
+      move(MoveKind::Rapid, Segment::line(zx(300, 0), zx(2, 30)), 0, 1, 12),
+      move(MoveKind::Line, Segment::line(zx(2, 23), zx(-50, 23)), 0, 10, 13),
+  });
+  CutSimulator sim(tl, setup);
+  sim.runToEnd();
+  ASSERT_TRUE(sim.alarm().has_value());
+  EXPECT_EQ(sim.alarm()->code, "A310");
+  EXPECT_EQ(sim.alarm()->severity, Severity::Error);
+  EXPECT_EQ(sim.alarm()->range.line, 12);
+  EXPECT_EQ(sim.alarm()->args.at(0), path);
+  ASSERT_EQ(sim.toolDiagnostics().size(), 1u);
+  EXPECT_EQ(sim.removedVolume(), 0.0);
+  EXPECT_DOUBLE_EQ(sim.endTime(), 0.0);
 }
 
 TEST(CutSimulator, MovesOfAToolWithoutABitmapCutNothing) {

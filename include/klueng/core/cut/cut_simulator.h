@@ -20,7 +20,9 @@
 //   A304 tool or holder overlaps the chuck
 // The simulation stops at the first alarm, with the tool where it happened.
 // Tool loading problems (F1xx from the image reader, A310/A311) are reported by
-// toolDiagnostics(); moves of a tool that cannot be loaded cut nothing.
+// toolDiagnostics(); the first move of a tool whose bitmap is refused stops the
+// run with that error (alarm(), Severity::Error, range.line = the move's block).
+// Moves without a tool (T00 or before the first T) cut nothing.
 #include <map>
 #include <optional>
 #include <string>
