@@ -154,7 +154,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
 
   // Only real edits re-check; the highlighter's re-colouring changes no characters.
   connect(editor_->document(), &QTextDocument::contentsChange, this, [this](int, int removed, int added) {
-    if (removed == 0 && added == 0) return;
+    if ((removed == 0 && added == 0) || fillingEditor_) return;
     runnerStale_ = true;
     scheduleCheck();
   });
@@ -610,6 +610,12 @@ void MainWindow::newFile() {
   if (!maybeSave()) return;
   runner_->stop();
   if (!document_->filePath().isEmpty()) watcher_->removePath(document_->filePath());
+  ++fillGeneration_;  // drop the rest of a file still going into the editor
+  pendingText_.clear();
+  fillingEditor_ = false;
+  loadInFlight_ = loadWatcher_.isRunning();
+  editor_->setUndoRedoEnabled(true);
+  editor_->setReadOnly(false);
   document_->reset(settings_->lastJobHeader());
   editor_->setFirstFileLine(document_->gcodeFirstLine());
   editor_->clearBreakpoints();
@@ -676,18 +682,54 @@ void MainWindow::onLoadFinished() {
   editor_->clearBreakpoints();
   editor_->setExecutingLine(0);
   editor_->setDiagnostics({});
-  editor_->setPlainText(loaded.gcode);
+  hideBanner();
+  // The text goes into the editor a few thousand lines per event-loop pass, so
+  // colouring a 100,000-line program never freezes the window.
+  loadInFlight_ = true;
+  fillingEditor_ = true;
+  editor_->setReadOnly(true);
+  editor_->setUndoRedoEnabled(false);
+  editor_->clear();
+  pendingText_ = loaded.gcode;
+  pendingOffset_ = 0;
+  ++fillGeneration_;
+  appendNextChunk();
+}
+
+void MainWindow::appendNextChunk() {
+  constexpr int kChunkLines = 4000;
+  const qsizetype size = pendingText_.size();
+  qsizetype end = pendingOffset_;
+  for (int n = 0; n < kChunkLines && end < size; ++n) {
+    const qsizetype nl = pendingText_.indexOf(QLatin1Char('\n'), end);
+    end = nl < 0 ? size : nl + 1;
+  }
+  QTextCursor c(editor_->document());
+  c.movePosition(QTextCursor::End);
+  c.insertText(pendingText_.mid(pendingOffset_, end - pendingOffset_));
+  pendingOffset_ = end;
+  if (pendingOffset_ < size) {
+    QTimer::singleShot(0, this, [this, generation = fillGeneration_] {
+      if (generation == fillGeneration_) appendNextChunk();  // else a newer file took over
+    });
+    return;
+  }
+  pendingText_.clear();
+  fillingEditor_ = false;
+  loadInFlight_ = false;
+  editor_->setUndoRedoEnabled(true);
+  editor_->setReadOnly(false);
   editor_->document()->setModified(false);
   editor_->moveCursor(QTextCursor::Start);
-  hideBanner();
-  settings_->addRecentFile(loaded.path);
-  settings_->setLastDirectory(QFileInfo(loaded.path).absolutePath());
+  const QString path = document_->filePath();
+  settings_->addRecentFile(path);
+  settings_->setLastDirectory(QFileInfo(path).absolutePath());
   if (!document_->isPlainGcode()) settings_->setLastJobHeader(document_->header());
-  watchFile(loaded.path);
+  watchFile(path);
   runnerStale_ = true;
   updateTitle();
   checkNow();
-  emit fileLoaded(loaded.path);
+  emit fileLoaded(path);
 }
 
 bool MainWindow::save() {

@@ -115,6 +115,7 @@ class MainWindow : public QMainWindow {
   void updateRecentMenu();
   void startLoad(const QString& path);
   void onLoadFinished();
+  void appendNextChunk();
   void watchFile(const QString& path);
   void onFileChangedOnDisk(const QString& path);
   void showBusyIndicator();
@@ -174,6 +175,10 @@ class MainWindow : public QMainWindow {
 
   QFutureWatcher<LoadedProgram> loadWatcher_;
   QString loadingPath_;
+  QString pendingText_;        // G-code still to go into the editor
+  qsizetype pendingOffset_ = 0;
+  bool fillingEditor_ = false;
+  quint64 fillGeneration_ = 0;
   QFutureWatcher<std::vector<core::Diagnostic>> checkWatcher_;
   bool checkPending_ = false;
   bool checkInFlight_ = false;

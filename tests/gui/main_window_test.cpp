@@ -45,17 +45,25 @@ bool waitIdle(MainWindow& w, int ms = 30000) {
   return QTest::qWaitFor([&w] { return !w.isBusy(); }, ms);
 }
 
-// Answers the next modal message box by clicking the button with this object name.
+// Answers the next modal message box by clicking the button with this object
+// name. Polls from the event loop (never blocks), so it also works when the box
+// opens inside another wait.
 void answerNextMessageBox(const QString& buttonName, QString* seenBoxName = nullptr) {
-  QTimer::singleShot(0, [buttonName, seenBoxName] {
-    QTRY_VERIFY(QApplication::activeModalWidget() != nullptr);
+  auto* poll = new QTimer(qApp);
+  auto* waited = new int(0);
+  poll->setInterval(20);
+  QObject::connect(poll, &QTimer::timeout, poll, [poll, waited, buttonName, seenBoxName] {
     auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
-    QVERIFY(box);
+    QPushButton* button = box ? box->findChild<QPushButton*>(buttonName) : nullptr;
+    if (!button && ++*waited < 1000) return;  // up to 20 s
+    poll->stop();
+    poll->deleteLater();
+    delete waited;
+    if (!button) return;
     if (seenBoxName) *seenBoxName = box->objectName();
-    auto* button = box->findChild<QPushButton*>(buttonName);
-    QVERIFY(button);
     button->click();
   });
+  poll->start();
 }
 
 // The underline colour formats the highlighter put on block `block` at UTF-16 index `pos`.

@@ -1,0 +1,88 @@
+// A 100,000-line program opens and is checked without freezing the window:
+// the file is read and checked off the GUI thread. The test asserts behaviour
+// (all lines in the editor, the checker's verdict, the window kept serving its
+// event loop) and prints the longest event-loop stall as a measurement.
+#include <QElapsedTimer>
+#include <QFile>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTextBlock>
+#include <QTimer>
+
+#include "../../bench/program_generator.h"
+#include "gui/code_editor.h"
+#include "gui/diagnostics_panel.h"
+#include "gui/main_window.h"
+#include "gui/resources.h"
+
+using namespace klueng::gui;
+
+class LargeProgramTest : public QObject {
+  Q_OBJECT
+ private slots:
+  void initTestCase() {
+    QStandardPaths::setTestModeEnabled(true);
+    initResources();
+  }
+
+  void hundredThousandLinesOpenAndCheckInTheBackground() {
+    QTemporaryDir tmp;
+    const QString path = tmp.filePath(QStringLiteral("big.txt"));
+    {
+      QFile f(path);
+      QVERIFY(f.open(QIODevice::WriteOnly));
+      f.write("Big program\nGenerated\nAluminium\n150\n1100\nbench\nO0001\n");
+      f.write(QByteArray::fromStdString(klueng::bench::ProgramGenerator::generate(100000)));
+    }
+    MainWindow w;
+    w.resize(1280, 800);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 10000));
+
+    // A 5 ms heartbeat: the largest gap between beats is the longest stall.
+    QElapsedTimer clock;
+    qint64 last = 0;
+    qint64 longest = 0;
+    int beats = 0;
+    QTimer heartbeat;
+    heartbeat.setInterval(5);
+    connect(&heartbeat, &QTimer::timeout, this, [&] {
+      const qint64 now = clock.elapsed();
+      longest = std::max(longest, now - last);
+      last = now;
+      ++beats;
+    });
+    clock.start();
+    heartbeat.start();
+    QVERIFY(w.openFile(path));
+    QVERIFY(w.isBusy());
+    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 120000));
+    const qint64 total = clock.elapsed();
+    heartbeat.stop();
+
+    QVERIFY(w.editor()->blockCount() >= 100001);
+    QCOMPARE(w.editor()->document()->findBlockByNumber(1).text().left(4), QStringLiteral("N1 G"));
+    QCOMPARE(w.diagnosticsPanel()->errorCount(), 0);  // the generator writes a valid program
+    QVERIFY(beats > 10);  // the event loop kept running while loading and checking
+    qInfo("100k-line open + check: %lld ms total, %d heartbeats, longest event-loop stall %lld ms", total, beats,
+          longest);
+
+    // Typing at the end re-checks in the background too.
+    last = clock.elapsed();
+    longest = 0;
+    heartbeat.start();
+    QTextCursor c(w.editor()->document());
+    c.movePosition(QTextCursor::End);
+    w.editor()->setTextCursor(c);
+    QTest::keyClicks(w.editor(), QStringLiteral("G01 X20. Y1."));
+    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 60000));
+    heartbeat.stop();
+    QVERIFY(w.diagnosticsPanel()->errorCount() >= 1);
+    qInfo("100k-line re-check after typing: longest event-loop stall %lld ms", longest);
+  }
+};
+
+QTEST_MAIN(LargeProgramTest)
+#include "large_program_test.moc"
