@@ -1,0 +1,440 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="th_TH">
+<context>
+    <name>klueng::gui::AboutDialog</name>
+    <message>
+        <location filename="../src/gui/about_dialog.cpp" line="30"/>
+        <source>About Klueng</source>
+        <translation>เกี่ยวกับโปรแกรมกลึง (Klueng)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/about_dialog.cpp" line="31"/>
+        <source>Klueng %1</source>
+        <translation>กลึง (Klueng) %1</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/about_dialog.cpp" line="33"/>
+        <source>&lt;p&gt;A CNC lathe simulator for students and instructors: write a Fanuc-style lathe program, see every mistake explained, and watch bitmap tools cut the stock, block by block.&lt;/p&gt;&lt;p&gt;Klueng descends from the 1999 Thai thesis program “Rook.IE Lathe”.&lt;/p&gt;&lt;p&gt;Built with Qt %1, Eigen, fmt and libpng.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;โปรแกรมจำลองการทำงานของเครื่องกลึงซีเอ็นซีสำหรับนักศึกษาและผู้สอน: เขียนชุดรหัสสั่งการทำงานแบบ Fanuc ดูคำอธิบายข้อผิดพลาดทุกจุด และดูมีดตัดจากภาพบิตแมปตัดเฉือนชิ้นงานทีละบล็อก&lt;/p&gt;&lt;p&gt;Klueng พัฒนาต่อจากโปรแกรมวิทยานิพนธ์ไทยปี 2542 “Rook.IE Lathe”&lt;/p&gt;&lt;p&gt;สร้างด้วย Qt %1, Eigen, fmt และ libpng&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>klueng::gui::JobDetailsDialog</name>
+    <message>
+        <location filename="../src/gui/job_details_dialog.cpp" line="84"/>
+        <source>Job Details</source>
+        <translation>รายละเอียดงาน</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/job_details_dialog.cpp" line="85"/>
+        <source>Project:</source>
+        <translation>ชื่องาน:</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/job_details_dialog.cpp" line="85"/>
+        <source>Part:</source>
+        <translation>ชิ้นงาน:</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/job_details_dialog.cpp" line="85"/>
+        <source>Material:</source>
+        <translation>วัสดุ:</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/job_details_dialog.cpp" line="85"/>
+        <source>Stock diameter:</source>
+        <translation>เส้นผ่านศูนย์กลางชิ้นงาน:</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/job_details_dialog.cpp" line="85"/>
+        <source>Stock length:</source>
+        <translation>ความยาวชิ้นงาน:</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/job_details_dialog.cpp" line="85"/>
+        <source>Programmer:</source>
+        <translation>ผู้เขียนโปรแกรม:</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/job_details_dialog.cpp" line="89"/>
+        <source>mm</source>
+        <translation>มม.</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/job_details_dialog.cpp" line="90"/>
+        <source>inch</source>
+        <translation>นิ้ว</translation>
+    </message>
+</context>
+<context>
+    <name>klueng::gui::OffsetDefineDialog</name>
+    <message>
+        <location filename="../src/gui/offset_define_dialog.cpp" line="92"/>
+        <source>the tip number must be a whole number from 0 to 9</source>
+        <translation>หมายเลขปลายมีดต้องเป็นจำนวนเต็มตั้งแต่ 0 ถึง 9</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/offset_define_dialog.cpp" line="95"/>
+        <source>&apos;%1&apos; is not a number</source>
+        <translation>&apos;%1&apos; ไม่ใช่ตัวเลข</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/offset_define_dialog.cpp" line="98"/>
+        <source>at most 3 decimals</source>
+        <translation>ทศนิยมได้ไม่เกิน 3 ตำแหน่ง</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/offset_define_dialog.cpp" line="99"/>
+        <source>must lie between -9999.999 and 9999.999</source>
+        <translation>ต้องอยู่ระหว่าง -9999.999 ถึง 9999.999</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/offset_define_dialog.cpp" line="100"/>
+        <source>the nose radius must not be negative</source>
+        <translation>รัศมีจมูกมีดต้องไม่ติดลบ</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/offset_define_dialog.cpp" line="111"/>
+        <source>Offset %1, %2: %3</source>
+        <translation>ออฟเซต %1, %2: %3</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/offset_define_dialog.cpp" line="136"/>
+        <source>All offsets are valid.</source>
+        <translation>ค่าออฟเซตทุกค่าถูกต้อง</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/offset_define_dialog.cpp" line="170"/>
+        <source>Cannot save the offset table: %1</source>
+        <translation>บันทึกตารางค่าออฟเซตไม่ได้: %1</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/offset_define_dialog.cpp" line="178"/>
+        <source>Offset Define</source>
+        <translation>กำหนดค่าออฟเซต</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/offset_define_dialog.cpp" line="179"/>
+        <source>Offsets 01–16: X offset (diameter, mm), Z offset (mm), nose radius R (mm) and the imaginary tool tip number T (0–9). Use offset nn with T..nn, e.g. T0101.</source>
+        <translation>ออฟเซต 01–16: ค่าออฟเซต X (เส้นผ่านศูนย์กลาง, มม.), ค่าออฟเซต Z (มม.), รัศมีจมูกมีด R (มม.) และหมายเลขปลายมีด T (0–9) เรียกใช้ออฟเซต nn ด้วย T..nn เช่น T0101</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/offset_define_dialog.cpp" line="181"/>
+        <source>X (dia.)</source>
+        <translation>X (เส้นผ่าศก.)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/offset_define_dialog.cpp" line="181"/>
+        <source>Z</source>
+        <translation>Z</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/offset_define_dialog.cpp" line="181"/>
+        <source>R</source>
+        <translation>R</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/offset_define_dialog.cpp" line="181"/>
+        <source>Tip T</source>
+        <translation>ปลายมีด T</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/offset_define_dialog.cpp" line="181"/>
+        <source>Tip</source>
+        <translation>ปลายมีด</translation>
+    </message>
+</context>
+<context>
+    <name>klueng::gui::OutputView</name>
+    <message>
+        <location filename="../src/gui/output_view.cpp" line="278"/>
+        <source>Output screen: wheel to zoom, drag to pan, double-click to fit</source>
+        <translation>จอแสดงผล: หมุนล้อเมาส์เพื่อย่อ/ขยาย ลากเพื่อเลื่อน ดับเบิลคลิกเพื่อแสดงทั้งหมด</translation>
+    </message>
+</context>
+<context>
+    <name>klueng::gui::RunSpeedControl</name>
+    <message>
+        <location filename="../src/gui/run_speed_control.cpp" line="64"/>
+        <source>Speed</source>
+        <translation>ความเร็ว</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/run_speed_control.cpp" line="66"/>
+        <source>fastest</source>
+        <translation>เร็วที่สุด</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/run_speed_control.cpp" line="66"/>
+        <source>%1×</source>
+        <translation>%1×</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/run_speed_control.cpp" line="67"/>
+        <source>Animation speed: 1× is real machine time; slower is slow motion; &quot;fastest&quot; cuts to the next stop at once</source>
+        <translation>ความเร็วการจำลองการทำงาน: 1× เท่ากับเวลาจริงของเครื่อง ช้ากว่านั้นเป็นภาพช้า &quot;เร็วที่สุด&quot; ตัดเฉือนไปถึงจุดหยุดถัดไปทันที</translation>
+    </message>
+</context>
+<context>
+    <name>klueng::gui::StatusFields</name>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="68"/>
+        <source>%1 mm/rev</source>
+        <translation>%1 มม./รอบ</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="68"/>
+        <source>%1 mm/min</source>
+        <translation>%1 มม./นาที</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="70"/>
+        <source>%1 rpm</source>
+        <translation>%1 รอบ/นาที</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="81"/>
+        <source>Tool X</source>
+        <translation>มีดตัด X</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="81"/>
+        <source>Tool Z</source>
+        <translation>มีดตัด Z</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="81"/>
+        <source>Feed</source>
+        <translation>อัตราป้อน</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="81"/>
+        <source>Spindle</source>
+        <translation>ความเร็วรอบ</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="81"/>
+        <source>X offset</source>
+        <translation>ออฟเซต X</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="82"/>
+        <source>Z offset</source>
+        <translation>ออฟเซต Z</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="82"/>
+        <source>Nose R</source>
+        <translation>รัศมีจมูกมีด</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="82"/>
+        <source>Tip</source>
+        <translation>ปลายมีด</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="82"/>
+        <source>Tool</source>
+        <translation>มีดตัด</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="82"/>
+        <source>Date</source>
+        <translation>วันที่</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="83"/>
+        <source>Tool position X (diameter, mm)</source>
+        <translation>ตำแหน่งมีดตัด X (เส้นผ่านศูนย์กลาง, มม.)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="83"/>
+        <source>Tool position Z (mm)</source>
+        <translation>ตำแหน่งมีดตัด Z (มม.)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="83"/>
+        <source>Feed rate as programmed</source>
+        <translation>อัตราการป้อนตัดตามชุดรหัสสั่งการทำงาน</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="84"/>
+        <source>Spindle speed (rpm)</source>
+        <translation>ความเร็วรอบ (รอบ/นาที)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="84"/>
+        <source>X offset of the active tool offset (diameter, mm)</source>
+        <translation>ค่าออฟเซต X ของมีดตัดที่ใช้อยู่ (เส้นผ่านศูนย์กลาง, มม.)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="85"/>
+        <source>Z offset of the active tool offset (mm)</source>
+        <translation>ค่าออฟเซต Z ของมีดตัดที่ใช้อยู่ (มม.)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="85"/>
+        <source>Nose radius of the active offset (mm)</source>
+        <translation>รัศมีจมูกมีดของออฟเซตที่ใช้อยู่ (มม.)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="86"/>
+        <source>Imaginary tool tip number of the active offset</source>
+        <translation>หมายเลขปลายมีดของออฟเซตที่ใช้อยู่</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="86"/>
+        <source>Tool number and offset number</source>
+        <translation>หมายเลขมีดตัดและหมายเลขออฟเซต</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="87"/>
+        <source>Today&apos;s date</source>
+        <translation>วันที่วันนี้</translation>
+    </message>
+</context>
+<context>
+    <name>klueng::gui::StatusLamps</name>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="183"/>
+        <source>Spindle CW</source>
+        <translation>หมุนตามเข็มนาฬิกา</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="184"/>
+        <source>Spindle CCW</source>
+        <translation>หมุนทวนเข็มนาฬิกา</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="185"/>
+        <source>Spindle stop</source>
+        <translation>หยุดหมุน</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="186"/>
+        <source>Spindle direction: green clockwise (M03), amber counter-clockwise (M04), grey stopped (M05)</source>
+        <translation>ทิศทางการหมุน: สีเขียว หมุนตามเข็มนาฬิกา (M03) สีส้ม หมุนทวนเข็มนาฬิกา (M04) สีเทา หยุดหมุน (M05)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="187"/>
+        <source>Optional stop</source>
+        <translation>หยุดเลือกได้</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="188"/>
+        <source>Optional Stop switch: M01 stops the program when lit</source>
+        <translation>สวิตช์ทางเลือกการหยุด: เมื่อไฟติด M01 จะหยุดโปรแกรม</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="189"/>
+        <source>Coolant</source>
+        <translation>สารหล่อเย็น</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="190"/>
+        <source>Coolant on (M08) / off (M09)</source>
+        <translation>เปิด (M08) / ปิด (M09) สารหล่อเย็น</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="191"/>
+        <source>Position check</source>
+        <translation>ตรวจสอบตำแหน่ง</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="192"/>
+        <source>Lit when G27 found the tool at the reference point</source>
+        <translation>ไฟติดเมื่อ G27 พบว่ามีดตัดอยู่ที่จุดอ้างอิง</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="193"/>
+        <source>Brake</source>
+        <translation>เบรก</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/status_panel.cpp" line="194"/>
+        <source>Spindle brake on (M86) / off (M87)</source>
+        <translation>เบรกเพลาหมุน เปิด (M86) / ปิด (M87)</translation>
+    </message>
+</context>
+<context>
+    <name>klueng::gui::ToolSelectDialog</name>
+    <message>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="198"/>
+        <source>Tool bitmap</source>
+        <translation>ภาพบิตแมปของมีดตัด</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="198"/>
+        <source>Tool bitmaps (*.bmp *.png)</source>
+        <translation>ภาพบิตแมปของมีดตัด (*.bmp *.png)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="211"/>
+        <source>tip %1, nose radius %2 mm</source>
+        <translation>ปลายมีด %1, รัศมีจมูกมีด %2 มม.</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="214"/>
+        <source>Tool %1 has no bitmap.</source>
+        <translation>มีดตัด %1 ยังไม่มีภาพบิตแมป</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="220"/>
+        <source>cannot read the bitmap</source>
+        <translation>อ่านภาพบิตแมปไม่ได้</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="227"/>
+        <source>No cutting-edge pixels: every pixel is black (holder) or white (empty).</source>
+        <translation>ไม่มีจุดภาพของคมตัด: ทุกจุดเป็นสีดำ (ด้ามจับมีด) หรือสีขาว (ว่าง)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="228"/>
+        <source>%1 × %2 pixels = %3 × %4 mm; red cross = controlled point for tip %5</source>
+        <translation>%1 × %2 จุดภาพ = %3 × %4 มม. กากบาทสีแดง = จุดควบคุมของปลายมีด %5</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="245"/>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="294"/>
+        <source>Tool %1: %2</source>
+        <translation>มีดตัด %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="256"/>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="278"/>
+        <source>Cannot save the tool table: %1</source>
+        <translation>บันทึกตารางมีดตัดไม่ได้: %1</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="287"/>
+        <source>Tool Select</source>
+        <translation>เลือกมีดตัด</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="288"/>
+        <source>Bitmap file:</source>
+        <translation>ไฟล์ภาพบิตแมป:</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="289"/>
+        <source>Browse...</source>
+        <translation>เลือกไฟล์...</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="290"/>
+        <source>Preview with offset:</source>
+        <translation>แสดงตัวอย่างกับออฟเซต:</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="291"/>
+        <source>e.g. resources/tools/turning.bmp</source>
+        <translation>เช่น resources/tools/turning.bmp</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="294"/>
+        <source>(none)</source>
+        <translation>(ไม่มี)</translation>
+    </message>
+</context>
+</TS>
