@@ -103,7 +103,8 @@ class Checker {
       const auto letterIndex = static_cast<std::size_t>(l - 'A');
       const std::uint32_t letterBit = 1u << letterIndex;
       if (letterMask & letterBit) {
-        if (onceOnly(l)) emit(codes::kLetterTwice, w, {std::string(1, l)});
+        // A second N is reported once, by rule 9 (N only first).
+        if (onceOnly(l) && l != 'N') emit(codes::kLetterTwice, w, {std::string(1, l)});
       } else {
         letterMask |= letterBit;
         firstOfLetter[letterIndex] = &w;
