@@ -87,6 +87,7 @@ CutOutcome runCut(const std::string& file, const io::JobHeader& header, const ma
   }
   if (!options.profilePath.empty()) outcome.written = writeText(options.profilePath, part.toCsv()) && outcome.written;
   if (!options.svgPath.empty()) outcome.written = writeText(options.svgPath, part.toSvg()) && outcome.written;
+  if (!options.dxfPath.empty()) outcome.written = writeText(options.dxfPath, part.toDxf()) && outcome.written;
   if (!options.jsonPath.empty()) {
     std::string alarms;
     const std::optional<Diagnostic> stop = sim.stoppingAlarm();

@@ -1,7 +1,7 @@
 #pragma once
 // The cut part of `klueng-cli simulate`: runs the CutSimulator over the
 // timeline and writes --png (section view), --profile (CSV z,x_outer,x_inner
-// in diameters), --svg (profile drawing), --json (summary); --resolution sets
+// in diameters), --svg / --dxf (profile drawing), --json (summary); --resolution sets
 // the stock's Z column width.
 #include <optional>
 #include <string>
@@ -18,6 +18,7 @@ struct CutOutputOptions {
   std::string profilePath;
   std::string jsonPath;
   std::string svgPath;       // the finished part's profile, both halves
+  std::string dxfPath;       // the same as DXF (R12 LINE entities)
   double resolution = 0.05;  // mm
   bool enabled = true;       // false with --no-stock: the timeline alone
 };

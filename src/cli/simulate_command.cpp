@@ -2,7 +2,7 @@
 //                          [--lang en|th] [--dialect fanuc|classic]
 //                          [--optional-stop] [--block-skip]
 //                          [--png out.png] [--profile out.csv] [--json summary.json] [--resolution MM]
-//                          [--svg out.svg] [--no-stock]   (--no-stock: interpret only, no stock collisions)
+//                          [--svg out.svg] [--dxf out.dxf] [--no-stock]   (--no-stock: interpret only, no stock collisions)
 // Checks the program (errors -> printed, exit 1), runs it into a Timeline and
 // writes what was asked for. An alarm is printed like a diagnostic
 // (FILE:LINE:COL: alarm A104: ...) and gives exit 1; the trace up to it is
@@ -73,6 +73,7 @@ const std::vector<OptionSpec>& optionSpecs() {
       {"--profile", true, [](SimulateOptions& o, const std::string& v) { o.cut.profilePath = v; return true; }},
       {"--json", true, [](SimulateOptions& o, const std::string& v) { o.cut.jsonPath = v; return true; }},
       {"--svg", true, [](SimulateOptions& o, const std::string& v) { o.cut.svgPath = v; return true; }},
+      {"--dxf", true, [](SimulateOptions& o, const std::string& v) { o.cut.dxfPath = v; return true; }},
       {"--no-stock", false, [](SimulateOptions& o, const std::string&) { o.cut.enabled = false; return true; }},
       {"--resolution", true,
        [](SimulateOptions& o, const std::string& v) { return parseResolution(v, o.cut.resolution); }},
@@ -118,7 +119,7 @@ std::optional<SimulateOptions> parseOptions(const std::vector<std::string>& args
                "                              [--lang en|th] [--dialect fanuc|classic]\n"
                "                              [--optional-stop] [--block-skip]\n"
                "                              [--png out.png] [--profile out.csv] [--json summary.json]\n"
-               "                              [--svg out.svg] [--resolution MM] [--no-stock]\n",
+               "                              [--svg out.svg] [--dxf out.dxf] [--resolution MM] [--no-stock]\n",
                stderr);
     return std::nullopt;
   }

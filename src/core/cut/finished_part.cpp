@@ -142,4 +142,19 @@ std::string FinishedPart::toSvg() const {
   return out;
 }
 
+std::string FinishedPart::toDxf() const {
+  std::string out = "0\nSECTION\n2\nENTITIES\n";
+  auto lines = [&](const std::vector<Vec2>& pts, const char* layer) {
+    for (const double sign : {1.0, -1.0})
+      for (std::size_t k = 1; k < pts.size(); ++k)
+        out += fmt::format("0\nLINE\n8\n{}\n10\n{:.4f}\n20\n{:.4f}\n30\n0.0\n11\n{:.4f}\n21\n{:.4f}\n31\n0.0\n",
+                           layer, pts[k - 1].x() + 0.0, sign * pts[k - 1].y() + 0.0, pts[k].x() + 0.0,
+                           sign * pts[k].y() + 0.0);
+  };
+  lines(outerProfile(), "PART");
+  lines(innerProfile(), "BORE");
+  out += "0\nENDSEC\n0\nEOF\n";
+  return out;
+}
+
 }  // namespace klueng::core::cut

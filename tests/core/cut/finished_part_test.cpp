@@ -86,6 +86,17 @@ TEST(FinishedPart, SvgDrawsBothHalvesAndTheBore) {
   EXPECT_NE(svg.find("</svg>"), std::string::npos);
 }
 
+TEST(FinishedPart, DxfHasALinePerProfileEdgeOnBothHalves) {
+  const Stock s = steppedBush();
+  const std::string dxf = FinishedPart(s).toDxf();
+  std::size_t lines = 0;
+  for (std::size_t at = dxf.find("0\nLINE\n"); at != std::string::npos; at = dxf.find("0\nLINE\n", at + 1)) ++lines;
+  EXPECT_EQ(lines, 2u * (6 - 1) + 2u * (4 - 1));  // outer: 6 points, bore: 4 points, mirrored
+  EXPECT_NE(dxf.find("8\nPART\n10\n-10.0000\n20\n0.0000\n30\n0.0\n11\n-10.0000\n21\n20.0000\n"), std::string::npos);
+  EXPECT_NE(dxf.find("8\nBORE\n"), std::string::npos);
+  EXPECT_TRUE(dxf.ends_with("ENDSEC\n0\nEOF\n"));
+}
+
 TEST(FinishedPart, DrilledAndBoredWithTheShippedTools) {
   const std::string text =
       "Bore test\nBush\nSteel\n140\n150\nKlueng tests\n"

@@ -20,6 +20,7 @@ struct ProfileRow {
 
 class FinishedPart {
  public:
+  // Keeps a reference: `stock` must outlive the part and not change meanwhile.
   explicit FinishedPart(const Stock& stock);
 
   // One row per stock column (at its centre), plus rows at the part's left and
@@ -47,6 +48,7 @@ class FinishedPart {
 
   std::string toCsv() const;  // header "z,x_outer,x_inner", diameters, "%.4f"
   std::string toSvg() const;  // both halves, mm units, X up
+  std::string toDxf() const;  // AutoCAD R12 DXF: LINE entities of both halves (layer PART) and the bore (BORE), mm
 
  private:
   const Stock* stock_;
