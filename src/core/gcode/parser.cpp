@@ -216,7 +216,7 @@ class LineParser {
       return col + length;
     }
 
-    Word w;
+    Word& w = words_.emplace_back();
     w.letter = letter;
     w.number.assign(number);
     w.hasDecimalPoint = point;
@@ -224,7 +224,6 @@ class LineParser {
     w.range = SourceRange{lineNumber_, col, length};
     const double v = parseUnsigned(number.substr(intStart), intDigits + fracDigits, fracDigits);
     w.value = number[0] == '-' ? -v : v;
-    words_.push_back(std::move(w));
     return col + length;
   }
 };
