@@ -280,13 +280,20 @@ void forEachInterval(const SweepContext& c, const std::vector<std::pair<Vec2, Ve
       detail::sweepDiscLine(c.grid, ca, cb, r, f);
     }
   }
-  for (const Box& box : holder ? t.holder : t.cutting) {
-    for (const auto& [a, b] : boxPieces) {
-      const Box swept{std::min(a.x(), b.x()) + box.z0, std::max(a.x(), b.x()) + box.z1,
-                      std::min(a.y(), b.y()) + box.x0, std::max(a.y(), b.y()) + box.x1};
-      if (above(swept)) continue;
-      detail::sweepBoxLine(c.grid, a, b, box, f);
-    }
+  auto sweptBox = [](const Vec2& a, const Vec2& b, const Box& box) {
+    return Box{std::min(a.x(), b.x()) + box.z0, std::max(a.x(), b.x()) + box.z1, std::min(a.y(), b.y()) + box.x0,
+               std::max(a.y(), b.y()) + box.x1};
+  };
+  if (holder) {
+    for (const Box& box : t.holder)
+      for (const auto& [a, b] : boxPieces)
+        if (!above(sweptBox(a, b, box))) detail::sweepBoxLine(c.grid, a, b, box, f);
+    return;
+  }
+  for (const Trapezoid& edge : t.cutting) {
+    const Box box = edge.bounds();
+    for (const auto& [a, b] : boxPieces)
+      if (!above(sweptBox(a, b, box))) detail::sweepTrapezoidLine(c.grid, a, b, edge, f);
   }
 }
 
@@ -307,11 +314,14 @@ bool hitsChuck(const SweepContext& c, const std::vector<std::pair<Vec2, Vec2>>& 
   const ToolShape& t = *c.tool;
   for (const Box& target : targets) {
     if (!boxesOverlap(sweptBounds(boxPieces, t.bounds), target)) continue;
-    for (const auto* list : {&t.cutting, &t.holder})
-      for (const Box& box : *list)
-        for (const auto& [a, b] : boxPieces)
-          if (hitsBox(c, target, [&](const detail::Grid& g, auto&& f) { detail::sweepBoxLine(g, a, b, box, f); }))
-            return true;
+    for (const Box& box : t.holder)
+      for (const auto& [a, b] : boxPieces)
+        if (hitsBox(c, target, [&](const detail::Grid& g, auto&& f) { detail::sweepBoxLine(g, a, b, box, f); }))
+          return true;
+    for (const Trapezoid& edge : t.cutting)
+      for (const auto& [a, b] : boxPieces)
+        if (hitsBox(c, target, [&](const detail::Grid& g, auto&& f) { detail::sweepTrapezoidLine(g, a, b, edge, f); }))
+          return true;
     if (t.noseRadius > 0.0)
       for (const auto& [a, b] : nosePieces)
         if (hitsBox(c, target, [&](const detail::Grid& g, auto&& f) {

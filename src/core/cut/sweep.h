@@ -51,6 +51,36 @@ void sweepBoxLine(const Grid& g, const Vec2& a, const Vec2& b, const Box& box, F
   }
 }
 
+// Trapezoid (local) swept along the line a -> b. x(s) + bottom(z - z(s)) is
+// linear in s, so the extremes over the s-range sit at its ends.
+template <typename F>
+void sweepTrapezoidLine(const Grid& g, const Vec2& a, const Vec2& b, const Trapezoid& t, F&& f) {
+  const double dz = b.x() - a.x();
+  int first, last;
+  g.range(std::min(a.x(), b.x()) + t.z0, std::max(a.x(), b.x()) + t.z1, first, last);
+  if (first > last) return;
+  if (std::abs(dz) < 1e-12) {
+    const double xLo = std::min(a.y(), b.y()), xHi = std::max(a.y(), b.y());
+    for (int i = first; i <= last; ++i) {
+      const double u = g.centre(i) - a.x();
+      f(i, xLo + t.bottomAt(u), xHi + t.topAt(u));
+    }
+    return;
+  }
+  const double dx = b.y() - a.y();
+  for (int i = first; i <= last; ++i) {
+    const double z = g.centre(i);
+    double s0 = (z - t.z1 - a.x()) / dz, s1 = (z - t.z0 - a.x()) / dz;
+    if (s0 > s1) std::swap(s0, s1);
+    s0 = std::max(s0, 0.0);
+    s1 = std::min(s1, 1.0);
+    if (s0 > s1) continue;
+    const double xa = a.y() + s0 * dx, xb = a.y() + s1 * dx;
+    const double ua = z - (a.x() + s0 * dz), ub = z - (a.x() + s1 * dz);
+    f(i, std::min(xa + t.bottomAt(ua), xb + t.bottomAt(ub)), std::max(xa + t.topAt(ua), xb + t.topAt(ub)));
+  }
+}
+
 // Disc of radius r whose centre moves along the line a -> b (a capsule).
 template <typename F>
 void sweepDiscLine(const Grid& g, Vec2 a, Vec2 b, double r, F&& f) {

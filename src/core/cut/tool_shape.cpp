@@ -73,6 +73,66 @@ std::vector<Box> boxesOf(const io::RgbImage& image, PixelKind kind, double origi
   return out;
 }
 
+// Sharp tools (R = 0): per pixel column with a single run of cutting pixels,
+// bottom and top go straight from this column's centre to the neighbour's
+// centre (when the neighbour also has a single run); elsewhere pixel boxes.
+std::vector<Trapezoid> smoothedEdge(const io::RgbImage& image, double originZ, double originX) {
+  const double px = 1.0 / kPixelsPerMm;
+  struct Run {
+    bool single = false;
+    double bottom = 0.0, top = 0.0;
+  };
+  std::vector<Run> runs(static_cast<std::size_t>(image.width));
+  std::vector<Trapezoid> out;
+  for (int col = 0; col < image.width; ++col) {
+    int count = 0, rowTop = -1, rowBottom = -1;
+    for (int row = 0; row < image.height; ++row) {
+      const bool cut = classify(image.at(col, row)) == PixelKind::Cutting;
+      const bool above = row > 0 && classify(image.at(col, row - 1)) == PixelKind::Cutting;
+      if (cut && !above) {
+        ++count;
+        rowTop = row;
+      }
+      if (cut) rowBottom = row;
+    }
+    Run& r = runs[static_cast<std::size_t>(col)];
+    r.single = count == 1;
+    r.top = (image.height - rowTop) * px - originX;
+    r.bottom = (image.height - rowBottom - 1) * px - originX;
+  }
+  // Columns with several runs keep their pixel boxes.
+  for (const Box& b : boxesOf(image, PixelKind::Cutting, originZ, originX)) {
+    const int col0 = static_cast<int>(std::lround((b.z0 + originZ) * kPixelsPerMm));
+    const int col1 = static_cast<int>(std::lround((b.z1 + originZ) * kPixelsPerMm));
+    for (int col = col0; col < col1; ++col)
+      if (!runs[static_cast<std::size_t>(col)].single)
+        out.push_back(Trapezoid::of(Box{col * px - originZ, (col + 1) * px - originZ, b.x0, b.x1}));
+  }
+  for (int col = 0; col < image.width; ++col) {
+    const Run& r = runs[static_cast<std::size_t>(col)];
+    if (!r.single) continue;
+    const double zl = col * px - originZ, zc = zl + px / 2, zr = zl + px;
+    auto joins = [&](int other) {
+      if (other < 0 || other >= image.width) return false;
+      const Run& o = runs[static_cast<std::size_t>(other)];
+      return o.single && o.bottom < r.top && r.bottom < o.top;  // touching runs: one outline
+    };
+    auto half = [&](int other, double zFrom, double zTo, bool leftHalf) {
+      double bottomEdge = r.bottom, topEdge = r.top;
+      if (joins(other)) {
+        const Run& o = runs[static_cast<std::size_t>(other)];
+        bottomEdge = (r.bottom + o.bottom) / 2;
+        topEdge = (r.top + o.top) / 2;
+      }
+      if (leftHalf) out.push_back({zFrom, zTo, bottomEdge, r.bottom, topEdge, r.top});
+      else out.push_back({zFrom, zTo, r.bottom, bottomEdge, r.top, topEdge});
+    };
+    half(col - 1, zl, zc, true);
+    half(col + 1, zc, zr, false);
+  }
+  return out;
+}
+
 // Box minus the nose square q: up to four boxes.
 void subtract(const Box& b, const Box& q, std::vector<Box>& out) {
   if (b.z1 <= q.z0 || b.z0 >= q.z1 || b.x1 <= q.x0 || b.x0 >= q.x1) {
@@ -143,7 +203,6 @@ io::ReadResult<ToolShape> makeToolShape(const io::RgbImage& image, const std::st
   shape.controlPixelX = pz * kPixelsPerMm;
   shape.controlPixelY = image.height - pxr * kPixelsPerMm;
 
-  const std::vector<Box> cutting = boxesOf(image, PixelKind::Cutting, pz, pxr);
   shape.holder = boxesOf(image, PixelKind::Holder, pz, pxr);
   const double r = shape.noseRadius;
   if (r > 0.0) {
@@ -156,13 +215,15 @@ io::ReadResult<ToolShape> makeToolShape(const io::RgbImage& image, const std::st
     Box q;
     range(c.x(), t.x(), q.z0, q.z1);
     range(c.y(), t.y(), q.x0, q.x1);
-    for (const Box& b : cutting) subtract(b, q, shape.cutting);
+    std::vector<Box> boxes;
+    for (const Box& b : boxesOf(image, PixelKind::Cutting, pz, pxr)) subtract(b, q, boxes);
+    for (const Box& b : boxes) shape.cutting.push_back(Trapezoid::of(b));
   } else {
-    shape.cutting = cutting;
+    shape.cutting = smoothedEdge(image, pz, pxr);
   }
 
   bool first = true;
-  for (const Box& b : shape.cutting) grow(shape.bounds, b, first);
+  for (const Trapezoid& t : shape.cutting) grow(shape.bounds, t.bounds(), first);
   for (const Box& b : shape.holder) grow(shape.bounds, b, first);
   const Vec2 c = shape.noseCentre;
   grow(shape.bounds, Box{c.x() - r, c.x() + r, c.y() - r, c.y() + r}, first);

@@ -136,12 +136,15 @@ TEST(Sample02, FourThreadPassesCutTeethOfThePitch) {
     const double z = 5.0 - 1.5 * k;
     EXPECT_NEAR(*part.outerDiameterAt(z), 28.16, 0.01) << z;
     EXPECT_NEAR(*part.outerDiameterAt(z - 0.75), 30.0, 0.01) << z - 0.75;
+    // Flanks, not square notches: half way up the tooth the diameter is in between.
+    EXPECT_GT(*part.outerDiameterAt(z - 0.5), 28.5) << z - 0.5;
+    EXPECT_LT(*part.outerDiameterAt(z - 0.5), 29.9) << z - 0.5;
     ++roots01;
   }
   EXPECT_EQ(roots01, 19);
   // Count grooves along Z0..Z-29 from the profile itself: each is a run below Ø30.
   int grooves = 0;
-  bool in = false;
+  bool in = true;  // a groove cut off by the ends of the range does not count
   double firstStart = 0, lastStart = 0;
   for (const ProfileRow& row : part.rows()) {
     if (row.z < -29.0 || row.z > 0.0) continue;

@@ -47,13 +47,15 @@ TEST(ToolShape, NoseIsExactAndPixelsLeaveTheNoseSquare) {
   EXPECT_DOUBLE_EQ(t.noseRadius, 0.8);
   EXPECT_DOUBLE_EQ(t.noseCentre.x(), 0.8);
   EXPECT_DOUBLE_EQ(t.noseCentre.y(), 0.8);
-  for (const Box& b : t.cutting) {
+  for (const Trapezoid& e : t.cutting) {
+    const Box b = e.bounds();
     const bool insideSquare = b.z0 < 0.8 && b.x0 < 0.8;
     EXPECT_FALSE(insideSquare) << b.z0 << " " << b.z1 << " " << b.x0 << " " << b.x1;
   }
   // Cutting boxes still reach the bbox edges away from the nose.
   double minX = 1e9, minZ = 1e9;
-  for (const Box& b : t.cutting) {
+  for (const Trapezoid& e : t.cutting) {
+    const Box b = e.bounds();
     minX = std::min(minX, b.x0);
     minZ = std::min(minZ, b.z0);
   }
@@ -70,7 +72,8 @@ TEST(ToolShape, TipEightNoseSquareIsCentred) {
   ASSERT_TRUE(r.ok());
   EXPECT_DOUBLE_EQ(r.value->noseCentre.x(), 0.0);
   EXPECT_DOUBLE_EQ(r.value->noseCentre.y(), 0.5);
-  for (const Box& b : r.value->cutting) {
+  for (const Trapezoid& e : r.value->cutting) {
+    const Box b = e.bounds();
     const bool inside = b.z0 < 0.5 && b.z1 > -0.5 && b.x0 < 0.5;
     EXPECT_FALSE(inside);
   }

@@ -9,6 +9,10 @@
 // -R * tipVector(tip). Cutting pixels inside the nose square (the R x R box(es)
 // between the controlled point and the nose centre) are dropped so that only the
 // circle cuts there; everywhere else the bitmap (0.5 mm pixels) is the edge.
+// With R = 0 (e.g. a threading tool) the edge's bottom and top run straight
+// between the centres of neighbouring pixel columns instead of in 0.5 mm steps,
+// so a V drawn in pixels cuts a V, not a staircase; the bounding box and so the
+// controlled point are unchanged.
 #include <string>
 #include <vector>
 
@@ -26,11 +30,23 @@ struct Box {
   double x0 = 0.0, x1 = 0.0;  // x0 <= x1
 };
 
+// A vertical strip of cutting edge: z in [z0, z1], x between a straight bottom
+// (bottom0 at z0 .. bottom1 at z1) and a straight top (top0 .. top1).
+struct Trapezoid {
+  double z0 = 0.0, z1 = 0.0;
+  double bottom0 = 0.0, bottom1 = 0.0;
+  double top0 = 0.0, top1 = 0.0;
+  static Trapezoid of(const Box& b) { return {b.z0, b.z1, b.x0, b.x0, b.x1, b.x1}; }
+  double bottomAt(double z) const { return z1 > z0 ? bottom0 + (bottom1 - bottom0) * (z - z0) / (z1 - z0) : bottom0; }
+  double topAt(double z) const { return z1 > z0 ? top0 + (top1 - top0) * (z - z0) / (z1 - z0) : top0; }
+  Box bounds() const { return {z0, z1, bottom0 < bottom1 ? bottom0 : bottom1, top0 > top1 ? top0 : top1}; }
+};
+
 struct ToolShape {
   double noseRadius = 0.0;
   int tip = 0;
   Vec2 noseCentre = Vec2::Zero();   // relative to the controlled point
-  std::vector<Box> cutting;         // cutting-edge region minus the nose square
+  std::vector<Trapezoid> cutting;   // cutting-edge region minus the nose square
   std::vector<Box> holder;          // black pixels
   Box bounds;                       // of everything, including the nose circle
   // For drawing: the bitmap and the controlled point in pixel units
