@@ -212,7 +212,7 @@ Vec2 CutSimulator::toolPosition() const {
 
 int CutSimulator::currentMove() const { return timeline_->moveAt(time_); }
 
-const ToolShape* CutSimulator::currentTool() {
+const ToolShape* CutSimulator::currentTool() const {
   const int i = currentMove();
   if (i < 0) return nullptr;
   const Move& m = timeline_->moves[static_cast<std::size_t>(i)];

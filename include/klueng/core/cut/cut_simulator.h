@@ -93,7 +93,7 @@ class CutSimulator {
 
   Vec2 toolPosition() const;            // controlled point at time()
   int currentMove() const;              // -1 before the first move
-  const ToolShape* currentTool();       // shape of the tool at time(), nullptr if none
+  const ToolShape* currentTool() const; // shape of the tool at time(), nullptr if none (loads it on first use)
   const Stock& stock() const { return stock_; }
   const Chuck& chuck() const { return chuck_; }
   double removedVolume() const { return stock_.removedVolume(); }
@@ -105,7 +105,7 @@ class CutSimulator {
   const machine::Timeline* timeline_;
   CutSetup setup_;
   CutOptions options_;
-  ToolLibrary tools_;
+  mutable ToolLibrary tools_;  // a cache: loading a shape does not change what was cut
   Stock stock_;
   Chuck chuck_;
   double time_ = 0.0;
