@@ -417,5 +417,106 @@ case("sample02_thread", sample("02-thread.txt"), s02.rows)
 case("fanuc_g18_g53_g55_g80_m42", "G18 G21 G40 G80 G99\nG55\nG50 X100. Z50.\nG53 X0. Z250.\nM42\n", [
     row("RAPID", 4, 0, 0.375, 100, 50, 100, 0, feed=8000),
 ])
-# Canned cycles are not simulated yet: the run stops on them with A117.
-case("alarm_a117_canned_cycle", "G00 X10.\nG90 X20. Z-10. F0.2\n", X10, alarm="program.nc:2:1: alarm A117")
+# Subprograms are not simulated yet: the run stops on M98 with A117.
+case("alarm_a117_subprogram", "G00 X10.\nM98 P1000\n", X10, alarm="program.nc:2:1: alarm A117")
+
+
+# ---------------------------------------------------------------- canned cycles (Fanuc 0i-TF)
+# All at G98 F100 (cuts: length / 100 mm/min) or G97 S500 (threads at lead * 500).
+# The cycle's moves all carry the cycle block's line; derivations in
+# tests/core/machine/cycles_test.cpp and README.md.
+rpm500 = lambda xd: 500
+CYC = "G98 G97 S500 M03\n"
+
+# G90 X40 Z-20 from X50 Z2: X in, 22 mm along Z (13.2 s), out 5 mm radius
+# (3 s), rapid back; "X35." repeats it (out 7.5 mm: 4.5 s). G94 X20 Z-2: Z to
+# -2, face 15 mm (9 s), back 4 mm along Z (2.4 s), rapid out. G00 cancels.
+h = Hand(rpm500)
+h.rapid(2, 50, 2)
+for line, x, up in ((3, 40, 3.0), (4, 35, 4.5)):
+    h.rapid(line, x, 2)
+    h.feed("LINE", line, x, -20, 13.2, 100)
+    h.feed("LINE", line, 50, -20, up, 100)
+    h.rapid(line, 50, 2)
+h.rapid(5, 50, -2)
+h.feed("LINE", 5, 20, -2, 9.0, 100)
+h.feed("LINE", 5, 20, 2, 2.4, 100)
+h.rapid(5, 50, 2)
+h.rapid(6, 60, 2)
+case("cycle_g90_g94", CYC + "G00 X50. Z2.\nG90 X40. Z-20. F100.\nX35.\nG94 X20. Z-2.\nG00 X60.\n", h.rows)
+
+# G92 from X35 Z5: rapid to the pass diameter, thread 25 mm at 1.5 * 500 =
+# 750 mm/min (2 s), rapid out in X, rapid back in Z; "X28.9" repeats it.
+h = Hand(rpm500)
+h.rapid(2, 35, 5)
+for line, x in ((3, 29.4), (4, 28.9)):
+    h.rapid(line, x, 5)
+    h.feed("THREAD", line, x, -20, 2.0, 750)
+    h.rapid(line, 35, -20)
+    h.rapid(line, 35, 5)
+h.rapid(5, 100, 100)
+case("cycle_g92_thread", "G97 S500 M03\nG00 X35. Z5.\nG92 X29.4 Z-20. F1.5\nX28.9\nG00 X100. Z100.\n", h.rows)
+
+# G71 U2 R0.5 / P10 Q20 U0.4 W0.1 from X50 Z2 on the profile X30 Z-20 X40 Z-40
+# X50: levels X46 X42 (to the offset shoulder Z-39.9) and X38 X34 (to Z-19.9),
+# 45-degree retract X+1 Z+0.5, rapid back to Z2; then the profile offset by
+# X+0.4 Z+0.1 and a rapid back to A. The profile blocks are skipped; G70 then
+# follows the profile itself and returns to A.
+h = Hand(rpm500)
+h.rapid(2, 50, 2)
+for x, z_end in ((46, -39.9), (42, -39.9), (38, -19.9), (34, -19.9)):
+    h.rapid(4, x, 2)
+    h.feed("LINE", 4, x, z_end, (2 - z_end) / 100 * 60, 100)
+    h.rapid(4, x + 1, z_end + 0.5)
+    h.rapid(4, x + 1, 2)
+h.rapid(4, 30.4, 2.1)
+for x, z, mm in ((30.4, -19.9, 22), (40.4, -19.9, 5), (40.4, -39.9, 20), (50.4, -39.9, 5)):
+    h.feed("LINE", 4, x, z, mm / 100 * 60, 100)
+h.rapid(4, 50, 2)
+h.rapid(10, 30, 2)
+for x, z, mm in ((30, -20, 22), (40, -20, 5), (40, -40, 20), (50, -40, 5)):
+    h.feed("LINE", 10, x, z, mm / 100 * 60, 100)
+h.rapid(10, 50, 2)
+h.rapid(11, 100, 100)
+case("cycle_g71_g70", CYC + "G00 X50. Z2.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F100.\nN10 G00 X30.\n"
+     "G01 Z-20.\nX40.\nZ-40.\nN20 X50.\nG70 P10 Q20\nG00 X100. Z100.\n", h.rows)
+
+# G74 R1 / Z-10 Q4000 from X0 Z2: pecks to Z-2, -6, -10 (4, 5, 5 mm: 2.4, 3,
+# 3 s), backing off 1 mm between, rapid out. G75 R0.5 / X30 Z-24 P3000 Q2000
+# from X42 Z-20: in X pecks of 3 mm radius to X36 (1.8 s), back 0.5 to X37,
+# on to X30 (3.5 mm, 2.1 s), out to X42; at Z-20, -22, -24; back to the start.
+h = Hand(rpm500)
+h.rapid(2, 0, 2)
+for z, back, secs in ((-2, -1, 2.4), (-6, -5, 3.0), (-10, None, 3.0)):
+    h.feed("LINE", 4, 0, z, secs, 100)
+    if back is not None:
+        h.rapid(4, 0, back)
+h.rapid(4, 0, 2)
+h.rapid(5, 42, -20)
+for z in (-20, -22, -24):
+    if z != -20:
+        h.rapid(7, 42, z)
+    h.feed("LINE", 7, 36, z, 1.8, 100)
+    h.rapid(7, 37, z)
+    h.feed("LINE", 7, 30, z, 2.1, 100)
+    h.rapid(7, 42, z)
+h.rapid(7, 42, -20)
+case("cycle_g74_g75", CYC + "G00 X0. Z2.\nG74 R1.\nG74 Z-10. Q4000 F100.\nG00 X42. Z-20.\nG75 R0.5\n"
+     "G75 X30. Z-24. P3000 Q2000 F100.\n", h.rows)
+
+# G76 P020060 Q50 R0.05 / X28.16 Z-20 P920 Q300 F1.5 from X35 Z5: depths
+# 0.3 sqrt(n) up to k - d = 0.87, then 2 passes at k = 0.92 (11 passes). Pass
+# at depth d: X = 28.16 + 2 (0.92 - d), starting d tan(30) towards -Z
+# (one-flank infeed), thread to Z-20 at 750 mm/min, out in X, back in Z.
+depths = [0.3 * math.sqrt(n) for n in range(1, 9)] + [0.87, 0.92, 0.92]
+h = Hand(rpm500)
+h.rapid(2, 35, 5)
+for d in depths:
+    zs = 5 - d * math.tan(math.radians(30))
+    h.rapid(4, 35, zs)
+    h.rapid(4, 28.16 + 2 * (0.92 - d), zs)
+    h.feed("THREAD", 4, 28.16 + 2 * (0.92 - d), -20, (zs + 20) / 750 * 60, 750)
+    h.rapid(4, 35, -20)
+    h.rapid(4, 35, 5)
+case("cycle_g76_thread", "G97 S500 M03\nG00 X35. Z5.\nG76 P020060 Q50 R0.05\nG76 X28.16 Z-20. P920 Q300 F1.5\n",
+     h.rows)

@@ -45,6 +45,18 @@ constexpr MessageText kMessages[] = {
      "{0} เลือกค่าออฟเซตหมายเลข {1} ซึ่งไม่มีอยู่ (มีหมายเลข 00 ถึง 16)"},
     {"A119", "thread cutting (G32) with no spindle speed S given",
      "การกลึงเกลียว (G32) โดยยังไม่ได้กำหนดความเร็วรอบ S"},
+    {"A120", "{0}: the profile block {1}{2} was not found (N{2} must exist in the program)",
+     "{0}: ไม่พบบล็อกรูปร่างชิ้นงาน {1}{2} (ต้องมีบล็อก N{2} อยู่ในโปรแกรม)"},
+    {"A121", "{0}: the profile is not monotonic in X and Z at line {1} (type I profiles only)",
+     "{0}: รูปร่างชิ้นงานไม่เปลี่ยนแปลงไปทางเดียวในแกน X และ Z ที่บรรทัด {1} (รองรับเฉพาะรูปร่างแบบที่ 1)"},
+    {"A122", "{0} needs a depth of cut {1} greater than zero",
+     "{0} ต้องกำหนดระยะป้อนลึก {1} ที่มากกว่าศูนย์"},
+    {"A123", "{0} cannot run under nose radius compensation (G41/G42); cancel it with G40 first",
+     "{0} ใช้ร่วมกับการชดเชยรัศมีปลายมีด (G41/G42) ไม่ได้ ต้องยกเลิกด้วย G40 ก่อน"},
+    {"A124", "{0}: the first profile block must move along {1} only (type I profile)",
+     "{0}: บล็อกแรกของรูปร่างชิ้นงานต้องเคลื่อนที่ตามแกน {1} เท่านั้น (รูปร่างแบบที่ 1)"},
+    {"A125", "{0}: the profile N{1} to N{2} has no moves to follow",
+     "{0}: รูปร่างชิ้นงานตั้งแต่ N{1} ถึง N{2} ไม่มีการเคลื่อนที่ให้ตาม"},
 };
 }  // namespace
 

@@ -13,6 +13,7 @@
 #include <optional>
 
 #include "klueng/core/machine/kinematics.h"
+#include "machine/cycles.h"
 
 namespace klueng::core::machine {
 
@@ -59,6 +60,10 @@ class Interpreter {
       blockIndex_ = static_cast<int>(i);
       if (!executeBlock()) break;
       if (sink_.halted() || ended_) break;
+      if (resumeAfter_ >= 0) {  // G71-G73 skip their own profile
+        i = static_cast<std::size_t>(resumeAfter_);
+        resumeAfter_ = -1;
+      }
     }
     sink_.end();
   }
@@ -215,6 +220,8 @@ class Interpreter {
     // 1. State words: units, T, modes, F, S, compensation.
     const CodeWord* motionG = nullptr;
     const CodeWord* oneShotG = nullptr;
+    const CodeWord* cycleG = nullptr;        // G70-G76
+    const CodeWord* singleCycleG = nullptr;  // G90 G92 G94
     bool compChanged = false;
     for (std::size_t i = 0; i < gCount; ++i)
       if (gs[i].info->group == ModalGroup::Units)
@@ -226,8 +233,13 @@ class Interpreter {
       const int n = c.info->number;
       switch (c.info->group) {
         case ModalGroup::Motion:
-          if (n == 0 || n == 1 || n == 2 || n == 3 || n == 32) motionG = &c;
-          else return raise("A117", c.word, {wordText(*c.word)});  // G90/G92/G94 single cycles
+          if (n == 0 || n == 1 || n == 2 || n == 3 || n == 32) {
+            motionG = &c;
+            singleCycle_ = 0;
+          } else {
+            singleCycleG = &c;  // G90/G92/G94 stay modal until another group 01 code
+            singleCycle_ = n;
+          }
           break;
         case ModalGroup::NonModal: oneShotG = &c; break;
         case ModalGroup::NoseComp:
@@ -250,7 +262,7 @@ class Interpreter {
         case ModalGroup::FeedMode: modal_.feedMode = n == 98 ? FeedMode::PerMinute : FeedMode::PerRev; break;
         case ModalGroup::WorkOffset: modal_.workCoordinate = n; break;   // all work offsets are zero
         case ModalGroup::CannedCycle:
-          if (n != 80) return raise("A117", c.word, {wordText(*c.word)});
+          if (n != 80) cycleG = &c;
           break;
         default: break;  // G18 plane, G20/G21 done above
       }
@@ -283,8 +295,13 @@ class Interpreter {
     // 3. The motion or one-shot G of the block.
     if (motionG) modal_.motion = motionFor(motionG->info->number);
     if (!cAxisWords()) return false;
-    if (oneShotG) {
+    if (cycleG) {
+      if (!cannedCycle(*cycleG)) return false;
+    } else if (oneShotG) {
       if (!oneShot(*oneShotG)) return false;
+    } else if (singleCycle_ != 0 && (singleCycleG || hasAxisWords())) {
+      if (!singleCycle(singleCycleG ? singleCycleG->word : motionWord(nullptr), singleCycleG != nullptr))
+        return false;
     } else if (hasAxisWords()) {
       if (!move(motionG ? motionG->word : nullptr)) return false;
     }
@@ -484,6 +501,109 @@ class Interpreter {
     return Segment::arc(start, end, centre, ccw);
   }
 
+  // ---- canned cycles (cycles.h expands them; the moves go down the same chain) ----
+
+  bool compensationAllowed(const Word* g) {
+    if (modal_.noseComp == NoseCompMode::Off) return true;
+    return raise("A123", g, {wordText(*g)});
+  }
+
+  // G90/G92/G94: X Z R are modal while the cycle is (Fanuc); U/W count from the start point.
+  bool singleCycle(const Word* where, bool fresh) {
+    const double u = unit();
+    if (fresh) {
+      singleTarget_ = pos_;
+      singleTaper_ = 0.0;
+    }
+    if (!hasAxisWords() && fresh) return true;  // G90 alone: the mode only
+    if (!compensationAllowed(where)) return false;
+    Vec2 target = singleTarget_;
+    const Vec2 off = offsetVector();
+    if (const Word* w = find('X')) target.y() = w->value * u / 2.0 + off.y();
+    if (const Word* w = find('U')) target.y() = xOf(pos_) + w->value * u / 2.0;
+    if (const Word* w = find('Z')) target.x() = w->value * u + off.x();
+    if (const Word* w = find('W')) target.x() = zOf(pos_) + w->value * u;
+    if (const Word* r = find('R')) singleTaper_ = r->value * u;  // G90/G92: radius; G94: Z
+    singleTarget_ = target;
+    return emitCycle(cycles::singleCycle(singleCycle_, pos_, target, singleTaper_, modal_.feed), where,
+                     fmt::format("G{}", singleCycle_));
+  }
+
+  bool cannedCycle(const CodeWord& c) {
+    const int g = c.info->number;
+    if (g != 70 && !compensationAllowed(c.word)) return false;
+    cycles::CycleInput in;
+    in.program = &program_;
+    in.blockIndex = blockIndex_;
+    in.gWord = c.word;
+    in.start = pos_;
+    in.offset = offsetVector();
+    in.unit = unit();
+    in.feed = modal_.feed;
+    in.motion = modal_.motion;
+    in.blockSkip = options_.blockSkip;
+    cycles::Expansion e = cycles::expand(g, in, cycleMemory_);
+    if (e.alarm) {
+      Diagnostic d;
+      d.severity = Severity::Alarm;
+      d.code = e.alarm->code;
+      d.range = e.alarm->where;
+      d.args = e.alarm->args;
+      sink_.alarm(d);
+      return false;
+    }
+    if (!emitCycle(e.steps, c.word, wordText(*c.word))) return false;
+    resumeAfter_ = e.resumeAfter;
+    return true;
+  }
+
+  // Sends a cycle's moves down the chain as if each were its own block (same
+  // checks), all carrying the cycle block's line.
+  bool emitCycle(const std::vector<cycles::Step>& steps, const Word* g, const std::string& name) {
+    for (const cycles::Step& s : steps) {
+      if (sink_.halted()) return false;
+      Word at;  // a profile step points its alarms at its own block's word
+      const Word* where = g;
+      if (s.where.line != 0) {
+        at.range = s.where;
+        where = &at;
+      }
+      if (s.feed > 0.0) modal_.feed = s.feed;
+      switch (s.kind) {
+        case cycles::StepKind::Compensation:
+          modal_.noseComp = s.comp;
+          sink_.compensation(modal_.noseComp, mach_.noseRadius, mach_.tip);
+          break;
+        case cycles::StepKind::Rapid:
+          if (!rapidTo(s.path.end, where)) return false;
+          break;
+        case cycles::StepKind::Feed: {
+          if (!feedReady(where, name.c_str())) return false;
+          Segment path = s.path;
+          path.start = pos_;
+          if (!feedMove(path.isArc() ? MoveKind::Arc : MoveKind::Line, path, where)) return false;
+          break;
+        }
+        case cycles::StepKind::Thread: {
+          if (s.lead <= 0.0) return raise("A102", where, {name});
+          if (modal_.spindleMode == SpindleMode::ConstantSurface) return raise("A108", where, {});
+          if (mach_.spindle == SpindleDir::Stopped) return raise("A116", where, {});
+          if (modal_.sWord <= 0.0) return raise("A119", where, {});
+          MotionCall m;
+          m.kind = MoveKind::Thread;
+          m.path = Segment::line(pos_, s.path.end);
+          m.lead = s.lead;
+          if (!pathWithinTravel(m.path, where)) return false;
+          fillCall(m, where);
+          sink_.motion(m);
+          moved(s.path.end);
+          break;
+        }
+      }
+    }
+    return true;
+  }
+
   // ---- one-shot codes of group 00 ----------------------------------------------
 
   Vec2 referencePoint() const {
@@ -580,6 +700,11 @@ class Interpreter {
   const gcode::Block* block_ = nullptr;
   std::array<const Word*, 26> byLetter_{};
   int blockIndex_ = 0;
+  int resumeAfter_ = -1;               // block index the run continues after (G71-G73 profile)
+  int singleCycle_ = 0;                // 90, 92 or 94 while a single cycle is modal
+  Vec2 singleTarget_ = Vec2::Zero();   // its modal X Z (controlled point)
+  double singleTaper_ = 0.0;           // its modal R (mm)
+  cycles::CycleMemory cycleMemory_;
   bool stopped_ = false;
   bool stopEndsRun_ = false;
   bool ended_ = false;

@@ -78,9 +78,25 @@ INSTANTIATE_TEST_SUITE_P(
         AlarmCase{"ArcRadiusTooSmall", "G98 G00 X20. Z0.\nG02 X30. Z-5. R3. F100\n", F, "A114", 2, 15, 1},
         AlarmCase{"G27NotAtReference", "G27 X10. Z20.\n", F, "A115", 1, 1, 0},
         AlarmCase{"ThreadSpindleStopped", "G97 S500\nG32 Z-10. F1.\n", F, "A116", 2, 1, 1},
-        AlarmCase{"CannedCycleNotSupported", "G90 X20. Z-10. F0.2\n", F, "A117", 1, 1, 0},
+        AlarmCase{"SubprogramNotSupported", "M98 P1000\n", F, "A117", 1, 1, 0},
         AlarmCase{"OffsetDoesNotExist", "G00 X10.\nT0117\n", F, "A118", 2, 1, 1},
-        AlarmCase{"ThreadWithoutS", "M03\nG32 Z-10. F1.\n", F, "A119", 2, 1, 1}),
+        AlarmCase{"ThreadWithoutS", "M03\nG32 Z-10. F1.\n", F, "A119", 2, 1, 1},
+        // Canned cycles (cycles_test.cpp has their motion).
+        AlarmCase{"CycleProfileNotFound", "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\n"
+                  "G71 P10 Q20 U0.4 F100.\n", F, "A120", 4, 5, 3},
+        AlarmCase{"CycleProfileNotMonotonic",
+                  "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\n"
+                  "G71 P10 Q20 F100.\nN10 G00 X30.\nG01 Z-20.\nX40.\nZ-30.\nN20 X36.\n", F,
+                  "A121", 9, 1, 3},
+        AlarmCase{"CycleDepthZero", "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U0 R0.5\n", F, "A122", 3, 5, 2},
+        AlarmCase{"CycleUnderNoseComp", "G98 G97 S500 M03 T0101\nG42 G00 X50. Z2.\nG71 U2. R0.5\n", F, "A123",
+                  3, 1, 2},
+        AlarmCase{"CycleProfileTypeII", "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\n"
+                  "G71 P10 Q20 F100.\nN10 G00 X30. Z0.\nN20 G01 Z-20.\n", F,
+                  "A124", 5, 1, 3},
+        AlarmCase{"CycleProfileWithoutMoves", "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\n"
+                  "G71 P10 Q20 F100.\nN10 G00 X30.\nN20 F0.2\n", F,
+                  "A125", 4, 5, 3}),
     [](const ::testing::TestParamInfo<AlarmCase>& i) { return std::string(i.param.name); });
 
 TEST(Alarm, SampleFiveStopsOnN40) {

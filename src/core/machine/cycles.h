@@ -1,0 +1,83 @@
+#pragma once
+// Fanuc 0i-TF lathe canned cycles (SPEC "Beyond") as a pure expansion: the
+// cycle block's words, the start point and, for G70-G73, the profile blocks
+// N(P)..N(Q) become the simple moves the control makes (rapids, lines, arcs,
+// thread passes). The interpreter sends each move down the ordinary sink
+// chain with the cycle block's line.
+//
+// All points are controlled-point positions in work coordinates (z, x radius),
+// tool offset applied, like the interpreter's.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "klueng/core/comp/segment.h"
+#include "klueng/core/diagnostic.h"
+#include "klueng/core/gcode/program.h"
+#include "klueng/core/machine/state.h"
+
+namespace klueng::core::machine::cycles {
+
+enum class StepKind { Rapid, Feed, Thread, Compensation };
+
+struct Step {
+  StepKind kind = StepKind::Rapid;
+  Segment path;                           // Feed: a line or an arc
+  double lead = 0.0;                      // Thread: mm/rev
+  double feed = 0.0;                      // > 0: F (mm) takes effect from this step on (G70 profile F)
+  NoseCompMode comp = NoseCompMode::Off;  // Compensation: G40/G41/G42 inside a G70 profile
+  SourceRange where;                      // the word an alarm about this step points at (0 = the cycle's G)
+};
+
+struct CycleAlarm {
+  std::string code;
+  SourceRange where;
+  std::vector<std::string> args;
+};
+
+// Parameters of the first block of the two-block formats (G71 U R, G76 P Q R,
+// ...), kept until the next first block of the same cycle. Lengths in mm, radius.
+struct CycleMemory {
+  double g71Depth = 0.0, g71Retract = 0.0;
+  double g72Depth = 0.0, g72Retract = 0.0;
+  double g73ReliefX = 0.0, g73ReliefZ = 0.0;
+  int g73Count = 0;
+  double g74Retract = 0.0, g75Retract = 0.0;
+  int g76Finishing = 1;          // m
+  double g76Angle = 60.0;        // a, degrees (tool angle)
+  double g76MinDepth = 0.0;      // Δdmin
+  double g76Allowance = 0.0;     // d
+};
+
+struct CycleInput {
+  const gcode::Program* program = nullptr;
+  int blockIndex = 0;                     // the cycle block
+  const gcode::Word* gWord = nullptr;     // the cycle's G word
+  Vec2 start = Vec2::Zero();              // controlled point when the cycle starts
+  Vec2 offset = Vec2::Zero();             // tool offset vector (z, x radius)
+  double unit = 1.0;                      // mm per program unit (25.4 under G20)
+  double feed = 0.0;                      // modal F in mm (after the cycle block's own F)
+  MotionMode motion = MotionMode::Rapid;  // modal motion when the profile starts
+  bool blockSkip = false;                 // '/' blocks of the profile skipped
+};
+
+struct Expansion {
+  std::vector<Step> steps;
+  std::optional<CycleAlarm> alarm;
+  int resumeAfter = -1;  // G71-G73 whose profile follows: the run continues after this block index
+};
+
+// G70-G76 (one block of either format). A first block only fills `memory`.
+Expansion expand(int g, const CycleInput& in, CycleMemory& memory);
+
+// G90 (turning), G92 (threading, `lead` = F) and G94 (facing) from `start` to
+// `target` with taper `taper` (radius for G90/G92, Z for G94: start of the cut
+// minus its end).
+std::vector<Step> singleCycle(int g, const Vec2& start, const Vec2& target, double taper, double lead);
+
+// G76 cumulative depths of cut (radius) for thread height k, first depth d1,
+// minimum depth dmin, finishing allowance d and m finishing passes: d1·√n
+// (at least dmin more than the previous pass) up to k - d, then m passes at k.
+std::vector<double> threadDepths(double k, double d1, double dmin, double d, int m);
+
+}  // namespace klueng::core::machine::cycles
