@@ -56,8 +56,10 @@ QString speedText(int i) {
   return MainWindow::tr("%1×").arg(QLocale().toString(kSpeeds[i]));
 }
 
-std::vector<core::Diagnostic> runCheck(std::string text, int firstLine, core::gcode::CheckOptions options) {
-  const core::gcode::Program program = core::gcode::parse(text, firstLine);
+// Runs on a worker thread: the UTF-8 conversion happens there too.
+std::vector<core::Diagnostic> runCheck(const QString& text, int firstLine, core::gcode::CheckOptions options) {
+  const std::string utf8 = text.toStdString();
+  const core::gcode::Program program = core::gcode::parse(utf8, firstLine);
   return core::gcode::check(program, options);
 }
 
@@ -697,7 +699,7 @@ void MainWindow::onLoadFinished() {
 }
 
 void MainWindow::appendNextChunk() {
-  constexpr int kChunkLines = 4000;
+  constexpr int kChunkLines = 1500;
   const qsizetype size = pendingText_.size();
   qsizetype end = pendingOffset_;
   for (int n = 0; n < kChunkLines && end < size; ++n) {
@@ -714,7 +716,13 @@ void MainWindow::appendNextChunk() {
     });
     return;
   }
-  pendingText_.clear();
+  QTimer::singleShot(0, this, [this, generation = fillGeneration_] {
+    if (generation == fillGeneration_) finishLoad();
+  });
+}
+
+void MainWindow::finishLoad() {
+  const QString loadedText = std::exchange(pendingText_, QString());
   fillingEditor_ = false;
   loadInFlight_ = false;
   editor_->setUndoRedoEnabled(true);
@@ -728,7 +736,8 @@ void MainWindow::appendNextChunk() {
   watchFile(path);
   runnerStale_ = true;
   updateTitle();
-  checkNow();
+  checkTimer_->stop();
+  startCheckOn(loadedText);  // the text just loaded: no need to read it back from the editor
   emit fileLoaded(path);
 }
 
@@ -830,7 +839,9 @@ core::io::ProgramFile MainWindow::currentProgramFile() const {
   return f;
 }
 
-void MainWindow::startCheck() {
+void MainWindow::startCheck() { startCheckOn(editor_->toPlainText()); }
+
+void MainWindow::startCheckOn(const QString& text) {
   if (checkWatcher_.isRunning()) {  // one check at a time; the newest text goes next
     checkPending_ = true;
     return;
@@ -841,8 +852,7 @@ void MainWindow::startCheck() {
   options.toolsWithBitmap = toolsWithBitmap_;
   ++checkGeneration_;
   checkInFlight_ = true;
-  checkWatcher_.setFuture(QtConcurrent::run(runCheck, editor_->toPlainText().toStdString(),
-                                            document_->gcodeFirstLine(), options));
+  checkWatcher_.setFuture(QtConcurrent::run(runCheck, text, document_->gcodeFirstLine(), options));
   QTimer::singleShot(300, this, &MainWindow::showBusyIndicator);
 }
 

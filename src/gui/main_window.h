@@ -116,12 +116,14 @@ class MainWindow : public QMainWindow {
   void startLoad(const QString& path);
   void onLoadFinished();
   void appendNextChunk();
+  void finishLoad();
   void watchFile(const QString& path);
   void onFileChangedOnDisk(const QString& path);
   void showBusyIndicator();
 
   void scheduleCheck();
   void startCheck();
+  void startCheckOn(const QString& text);
   void onCheckFinished();
   void showDiagnostics();
 
