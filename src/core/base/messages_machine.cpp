@@ -57,6 +57,8 @@ constexpr MessageText kMessages[] = {
      "{0}: บล็อกแรกของรูปร่างชิ้นงานต้องเคลื่อนที่ตามแกน {1} เท่านั้น (รูปร่างแบบที่ 1)"},
     {"A125", "{0}: the profile N{1} to N{2} has no moves to follow",
      "{0}: รูปร่างชิ้นงานตั้งแต่ N{1} ถึง N{2} ไม่มีการเคลื่อนที่ให้ตาม"},
+    {"A126", "{0} needs both P and Q: the sequence numbers of the first and last profile blocks",
+     "{0} ต้องกำหนดทั้ง P และ Q: หมายเลขลำดับ (N) ของบล็อกแรกและบล็อกสุดท้ายของรูปร่างชิ้นงาน"},
 };
 }  // namespace
 

@@ -117,7 +117,7 @@ std::optional<CycleAlarm> readProfile(const CycleInput& in, const Block& cycle, 
   const Word* qw = cycle.find('Q');
   const std::string gText = in.gWord ? std::string(1, in.gWord->letter) + in.gWord->number : "G7x";
   const char* g = gText.c_str();
-  if (!pw || !qw) return alarmAt("A120", pw ? qw : pw, cycle, {g, pw ? "Q" : "P", "?"});
+  if (!pw || !qw) return alarmAt("A126", in.gWord, cycle, {g});
   out.ns = findSequence(*in.program, pw->code(), in.blockIndex + 1);
   if (out.ns < 0) return alarmAt("A120", pw, cycle, {g, "P", pw->number});
   out.nf = -1;
@@ -441,7 +441,7 @@ Expansion expand(int g, const CycleInput& in, CycleMemory& memory) {
         memory.g76Allowance = value('R', memory.g76Allowance);
         break;
       case 70:
-        e.alarm = alarmAt("A120", in.gWord, b, {name, "P", "?"});
+        e.alarm = alarmAt("A126", in.gWord, b, {name});
         break;
       default: break;
     }

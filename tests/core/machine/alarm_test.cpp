@@ -96,7 +96,8 @@ INSTANTIATE_TEST_SUITE_P(
                   "A124", 5, 1, 3},
         AlarmCase{"CycleProfileWithoutMoves", "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\n"
                   "G71 P10 Q20 F100.\nN10 G00 X30.\nN20 F0.2\n", F,
-                  "A125", 4, 5, 3}),
+                  "A125", 4, 5, 3},
+        AlarmCase{"CycleWithoutQ", "G98 G97 S500 M03\nG00 X50. Z2.\nG70 P10\nN10 G01 X30.\n", F, "A126", 3, 1, 2}),
     [](const ::testing::TestParamInfo<AlarmCase>& i) { return std::string(i.param.name); });
 
 TEST(Alarm, SampleFiveStopsOnN40) {
