@@ -1,0 +1,128 @@
+// klueng-cli simulate's cut outputs, end to end: --png --profile --json --svg
+// --dxf --resolution, and stock alarms (A3xx) with their block.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+const std::string kCut = KLUENG_CLI_PATH;
+const std::string kCutSamples = KLUENG_SAMPLES_DIR;
+const std::string kCutShipped = KLUENG_SOURCE_DIR;
+
+struct Result {
+  int exitCode = -1;
+  std::string err;
+};
+
+// Runs klueng-cli with stderr captured (stdout discarded).
+Result simulate(const std::string& args) {
+  const std::string command = "env LC_ALL= LC_MESSAGES= LANG=C '" + kCut + "' simulate " + args + " --config '" +
+                              kCutShipped + "' 2>&1 >/dev/null";
+  Result r;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (!pipe) return r;
+  char buf[4096];
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) r.err.append(buf, n);
+  const int status = ::pclose(pipe);
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / "klueng_cli_cut_test";
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+// Outer diameter in the profile CSV at the row nearest to z.
+double diameterAt(const std::string& csv, double z) {
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  double best = 1e9, value = -1;
+  while (std::getline(in, line)) {
+    double rz, outer, inner;
+    if (std::sscanf(line.c_str(), "%lf,%lf,%lf", &rz, &outer, &inner) != 3) continue;
+    if (std::abs(rz - z) < best) {
+      best = std::abs(rz - z);
+      value = outer;
+    }
+  }
+  return value;
+}
+
+TEST(CliSimulateCut, Sample01WritesEveryOutput) {
+  const fs::path png = scratch("01.png"), csv = scratch("01.csv"), json = scratch("01.json"), svg = scratch("01.svg"),
+                 dxf = scratch("01.dxf");
+  const Result r = simulate("'" + kCutSamples + "/01-step-shaft.txt' --png '" + png.string() + "' --profile '" +
+                            csv.string() + "' --json '" + json.string() + "' --svg '" + svg.string() + "' --dxf '" +
+                            dxf.string() + "'");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string image = slurp(png);
+  ASSERT_GT(image.size(), 24u);
+  EXPECT_EQ(image.substr(1, 3), "PNG");
+  const std::string profile = slurp(csv);
+  EXPECT_EQ(profile.substr(0, 18), "z,x_outer,x_inner\n");
+  EXPECT_NEAR(diameterAt(profile, -10.0), 30.0, 0.01);
+  EXPECT_NEAR(diameterAt(profile, -30.0), 40.0, 0.01);
+  EXPECT_NEAR(diameterAt(profile, -50.0), 46.0, 0.01);
+  EXPECT_NEAR(diameterAt(profile, 0.0), diameterAt(profile, -0.025), 1e-9);  // the face row
+  const std::string summary = slurp(json);
+  EXPECT_THAT(summary, HasSubstr("\"completed\": true"));
+  EXPECT_THAT(summary, HasSubstr("\"alarms\": []"));
+  EXPECT_THAT(summary, HasSubstr("\"diameter_mm\": 50.0000, \"length_mm\": 100.0000"));
+  EXPECT_THAT(summary, HasSubstr("\"resolution_mm\": 0.0500"));
+  EXPECT_THAT(slurp(svg), HasSubstr("<svg"));
+  EXPECT_THAT(slurp(dxf), HasSubstr("ENTITIES"));
+}
+
+TEST(CliSimulateCut, ResolutionSetsTheColumnWidth) {
+  const fs::path csv = scratch("01-coarse.csv");
+  ASSERT_EQ(simulate("'" + kCutSamples + "/01-step-shaft.txt' --resolution 0.5 --profile '" + csv.string() + "'").exitCode,
+            0);
+  const std::string profile = slurp(csv);
+  const long rows = std::count(profile.begin(), profile.end(), '\n');
+  EXPECT_EQ(rows, 1 + 200 + 2);  // header, 100 mm / 0.5, both faces
+  EXPECT_EQ(simulate("'" + kCutSamples + "/01-step-shaft.txt' --resolution zero").exitCode, 2);
+  EXPECT_EQ(simulate("'" + kCutSamples + "/01-step-shaft.txt' --resolution 0").exitCode, 2);
+}
+
+TEST(CliSimulateCut, RapidIntoTheStockStopsWithItsBlock) {
+  const fs::path program = scratch("crash.txt");
+  std::ofstream(program) << "Crash\nPart\nSteel\n150\n1100\nKlueng tests\n"
+                            "N10 G21 G97 S800 M03\nN20 T0101\nN30 G00 X60. Z40.\nN40 G00 X40. Z-10.\nN50 M30\n";
+  const fs::path json = scratch("crash.json");
+  const Result r = simulate("'" + program.string() + "' --json '" + json.string() + "'");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_THAT(r.err, HasSubstr("crash.txt:10:1: alarm A301"));
+  EXPECT_THAT(r.err, HasSubstr("X40.000"));
+  EXPECT_THAT(slurp(json), HasSubstr("\"completed\": false"));
+  EXPECT_THAT(slurp(json), HasSubstr("\"code\": \"A301\""));
+  // --no-stock: the interpreter alone finds nothing wrong.
+  EXPECT_EQ(simulate("'" + program.string() + "' --no-stock").exitCode, 0);
+}
+
+TEST(CliSimulateCut, Sample05StopsOnN40) {
+  const Result r = simulate("'" + kCutSamples + "/05-runtime-alarms.txt'");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_THAT(r.err, HasSubstr("05-runtime-alarms.txt:12:"));
+}
+
+}  // namespace
