@@ -52,7 +52,8 @@ std::vector<std::pair<Vec2, Vec2>> piecesOf(const Move& m, double s0, double s1,
   const double sweep = p.sweep() * (s1 - s0);
   double maxStep = std::numbers::pi / 8;
   if (rho > tolerance) maxStep = std::min(maxStep, 2.0 * std::acos(1.0 - tolerance / rho));
-  const int n = std::max(1, static_cast<int>(std::ceil(sweep / maxStep)));
+  // At most 100k chords: even a 1 m radius half circle is within 0.0002 mm.
+  const int n = static_cast<int>(std::clamp(std::ceil(sweep / maxStep), 1.0, 100000.0));
   // Rotate the radius vector step by step: one sincos per arc, not per chord.
   const double step = (p.ccw ? 1.0 : -1.0) * sweep / n;
   const double c = std::cos(step), sn = std::sin(step);
@@ -337,6 +338,8 @@ bool hitsChuck(const SweepContext& c, const std::vector<std::pair<Vec2, Vec2>>& 
 void CutSimulator::cutMove(std::size_t index, double sEnd) {
   const Move& m = timeline_->moves[index];
   if (m.kind == MoveKind::Dwell) return;
+  const Segment& path = m.path;
+  if (!path.start.allFinite() || !path.end.allFinite() || (path.isArc() && !path.centre.allFinite())) return;
   const ToolShape* tool = tools_.get(m.tool, m.offset);
   if (!tool) {
     // A tool whose bitmap is refused stops the run where it is first used.

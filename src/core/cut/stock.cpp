@@ -34,6 +34,11 @@ int Stock::columnAt(double z) const {
 }
 
 void Stock::columnRange(double z0, double z1, int& first, int& last) const {
+  if (!std::isfinite(z0) || !std::isfinite(z1)) {
+    first = 0;
+    last = -1;
+    return;
+  }
   // Centre of column i is -L + (i + 0.5) dz; want z0 <= centre <= z1.
   const double f0 = std::ceil((z0 + length_) / dz_ - 0.5);
   const double f1 = std::floor((z1 + length_) / dz_ - 0.5);

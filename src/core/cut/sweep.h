@@ -18,6 +18,11 @@ struct Grid {
   double centre(int i) const { return zStart + (i + 0.5) * dz; }
   // Columns with centres in [z0, z1].
   void range(double z0, double z1, int& first, int& last) const {
+    if (!std::isfinite(z0) || !std::isfinite(z1)) {
+      first = 0;
+      last = -1;
+      return;
+    }
     const double f0 = std::ceil((z0 - zStart) / dz - 0.5);
     const double f1 = std::floor((z1 - zStart) / dz - 0.5);
     first = static_cast<int>(std::clamp(f0, 0.0, static_cast<double>(count)));

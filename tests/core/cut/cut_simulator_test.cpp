@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <numbers>
 
 #include "cut_test_util.h"
@@ -297,6 +298,42 @@ TEST(CutSimulator, ARefusedBitmapStopsTheRunWhereTheToolIsFirstUsed) {
   ASSERT_EQ(sim.toolDiagnostics().size(), 1u);
   EXPECT_EQ(sim.removedVolume(), 0.0);
   EXPECT_DOUBLE_EQ(sim.endTime(), 0.0);
+}
+
+TEST(CutSimulator, GarbageMovesNeverCrashOrHang) {
+  // Random lines, arcs, threads and rapids with feed (never alarms: collisions
+  // are off), plus non-finite coordinates: the run must finish and keep the
+  // stock consistent.
+  std::uint64_t seed = 12345;
+  auto next = [&seed](double lo, double hi) {
+    seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+    return lo + (hi - lo) * static_cast<double>(seed >> 11) / 9007199254740992.0;
+  };
+  std::vector<machine::Move> moves;
+  Vec2 at = zx(5, 30);
+  for (int k = 0; k < 400; ++k) {
+    const Vec2 to = zx(next(-120, 20), next(-5, 40));
+    const int kind = static_cast<int>(next(0, 4));
+    machine::Move m = kind == 0   ? move(MoveKind::Line, Segment::line(at, to), 0, 1, k)
+                      : kind == 1 ? move(MoveKind::Arc, Segment::arc(at, to, (at + to) / 2 + zx(0, next(-3, 3)), k % 2 == 0), 0, 1, k)
+                      : kind == 2 ? move(MoveKind::Thread, Segment::line(at, to), 0, 1, k)
+                                  : move(MoveKind::Rapid, Segment::line(at, to), 0, 1, k);
+    m.lead = next(0.0, 3.0);
+    moves.push_back(m);
+    at = to;
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  moves.push_back(move(MoveKind::Line, Segment::line(at, zx(nan, 3)), 0, 1, 999));
+  moves.push_back(move(MoveKind::Arc, Segment::arc(zx(1e300, 0), zx(-1e300, 1), zx(0, nan), true), 0, 1, 1000));
+  CutOptions options;
+  options.detectCollisions = false;
+  CutSimulator sim(timelineOf(moves), barSetup(50, 100), libraryWith(squareTool(0.8, 3)), options);
+  sim.runToEnd();
+  EXPECT_TRUE(sim.finished());
+  EXPECT_FALSE(sim.alarm().has_value());
+  EXPECT_NEAR(sim.removedVolume() + sim.stock().volume(), sim.stock().initialVolume(), 1e-6 * sim.stock().initialVolume());
+  for (int i = 0; i < sim.stock().columnCount(); ++i)
+    for (const Interval& in : sim.stock().column(i)) ASSERT_LT(in.lo, in.hi);
 }
 
 TEST(CutSimulator, MovesOfAToolWithoutABitmapCutNothing) {
