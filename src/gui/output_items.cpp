@@ -7,12 +7,17 @@ namespace klueng::gui {
 
 namespace {
 QRectF mirrored(const QRectF& r) { return QRectF(r.left(), -r.bottom(), r.width(), r.height()); }
-QRectF segmentRect(const core::Segment& s) {
-  QPainterPath p;
-  render::appendSegment(p, s, true);
-  return p.boundingRect().adjusted(-0.5, -0.5, 0.5, 0.5);
-}
 }  // namespace
+
+QRectF segmentRect(const core::Segment& s) {
+  QRectF r = QRectF(render::toScene(s.start), render::toScene(s.end)).normalized();
+  if (s.isArc()) {
+    // Conservative: the whole circle (cheap, and arcs are short).
+    const double radius = s.radius();
+    r = r.united(QRectF(render::toScene(s.centre) - QPointF(radius, radius), QSizeF(2 * radius, 2 * radius)));
+  }
+  return r.adjusted(-0.5, -0.5, 0.5, 0.5);
+}
 
 // ---------------------------------------------------------------- StockItem
 
@@ -76,10 +81,10 @@ void MarkerItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidg
 
 // ---------------------------------------------------------------- TrailItem
 
-void TrailItem::append(const core::machine::Move& move) {
+void TrailItem::append(const core::machine::Move& move, bool repaint) {
   trail_.append(move);
   ++moves_;
-  if (move.kind != core::machine::MoveKind::Dwell) update(segmentRect(move.path));
+  if (repaint && move.kind != core::machine::MoveKind::Dwell) update(segmentRect(move.path));
 }
 
 void TrailItem::setPartial(const core::machine::Move* move, double fraction) {

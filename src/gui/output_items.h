@@ -14,6 +14,9 @@ namespace klueng::gui {
 
 // The stock section, both halves. Its bounding rect is the blank's, fixed, so a
 // cut only repaints the region the tool swept (updateRegion()).
+// Scene rectangle covering a segment (arcs: their whole circle), with half a mm to spare.
+QRectF segmentRect(const core::Segment& segment);
+
 class StockItem : public QGraphicsItem {
  public:
   StockItem();
@@ -67,7 +70,8 @@ class MarkerItem : public QGraphicsItem {
 class TrailItem : public QGraphicsItem {
  public:
   explicit TrailItem(const QRectF& bounds) : bounds_(bounds) {}
-  void append(const core::machine::Move& move);
+  // repaint = false when many moves come at once (the caller repaints the item once).
+  void append(const core::machine::Move& move, bool repaint = true);
   void setPartial(const core::machine::Move* move, double fraction);
   int moveCount() const { return moves_; }
   void clear();

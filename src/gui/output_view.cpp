@@ -110,10 +110,8 @@ void OutputView::rebuild() {
   chuck_->setChuck(sim ? sim->chuck()
                        : render::chuckFor(header.diameterMm(), header.lengthMm(), machineCfg.chuckGrip, machineCfg.chuckJawHeight));
   if (const auto* tl = controller_ ? controller_->timeline() : nullptr) {
-    QPainterPath all;
     for (const auto& m : tl->moves)
-      if (m.kind != core::machine::MoveKind::Dwell) render::appendSegment(all, m.path, true);
-    pathBounds_ = all.boundingRect();
+      if (m.kind != core::machine::MoveKind::Dwell) pathBounds_ = pathBounds_.united(segmentRect(m.path));
   }
   lastToolPos_ = render::toScene(core::zx(machineCfg.startZ, machineCfg.startX / 2.0));
   tool_->setSprite(render::ToolSprite(), nullptr);
@@ -135,6 +133,13 @@ void OutputView::appendTrail(double time) {
   trailTime_ = time;
   const auto& moves = tl->moves;
   const QRectF bounds = pathBounds_.adjusted(-1, -1, 1, 1);
+  // Many moves at once (a fast run, a step back): repaint whole items, not each segment.
+  int pending = 0;
+  while (trailMoves_ + pending < static_cast<int>(moves.size()) &&
+         moves[static_cast<std::size_t>(trailMoves_ + pending)].tEnd <= time + 1e-12 && pending <= 64)
+    ++pending;
+  const bool bulk = pending > 64;
+  std::size_t firstTouched = trail_.empty() ? 0 : trail_.size() - 1;
   while (trailMoves_ < static_cast<int>(moves.size()) && moves[static_cast<std::size_t>(trailMoves_)].tEnd <= time + 1e-12) {
     if (trail_.empty() || trail_.back()->moveCount() >= kTrailChunk) {
       auto* item = new TrailItem(bounds);
@@ -144,9 +149,11 @@ void OutputView::appendTrail(double time) {
       scene()->addItem(item);
       trail_.push_back(item);
     }
-    trail_.back()->append(moves[static_cast<std::size_t>(trailMoves_)]);
+    trail_.back()->append(moves[static_cast<std::size_t>(trailMoves_)], !bulk);
     ++trailMoves_;
   }
+  if (bulk)
+    for (std::size_t i = firstTouched; i < trail_.size(); ++i) trail_[i]->update();
   if (trail_.empty()) {
     auto* item = new TrailItem(bounds);
     item->setZValue(2);
@@ -177,10 +184,7 @@ void OutputView::updateFrame() {
     QRectF swept = QRectF(lastToolPos_, toolPos).normalized();
     if (!tool_->sprite().isNull()) swept = swept.united(tool_->boundingRect().translated(lastToolPos_));
     stock_->setShape(shape);
-    if (const auto* sprite = controller_->currentToolShape()) {
-      const render::ToolSprite s = render::ToolSprite::fromShape(*sprite);
-      swept = swept.united(s.sceneRect(toolPos));
-    }
+    if (!tool_->sprite().isNull()) swept = swept.united(tool_->boundingRect().translated(toolPos));
     stock_->updateRegion(swept.adjusted(-1, -1, 1, 1));
     if (controller_->state() != RunState::Running && controller_->state() != RunState::Stepping) stock_->update();
   }

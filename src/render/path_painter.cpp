@@ -14,10 +14,15 @@ void appendSegment(QPainterPath& path, const core::Segment& segment, bool moveTo
     path.lineTo(toScene(segment.end));
     return;
   }
-  // Arcs as short chords: 2 degrees, at least 4 pieces, so they stay round when zoomed.
-  const double sweep = segment.sweep();
-  const int pieces = std::max(4, static_cast<int>(std::ceil(sweep / (2.0 * std::numbers::pi / 180.0))));
-  for (int i = 1; i <= pieces; ++i) path.lineTo(toScene(segment.pointAt(static_cast<double>(i) / pieces)));
+  // Qt's arcs (Bezier pieces) are exact enough at any zoom and cheap for long trails.
+  // Scene y is -X, so the drawing's counter-clockwise is the screen's counter-clockwise too.
+  const double r = segment.radius();
+  const core::Vec2 d = segment.start - segment.centre;
+  const double startDeg = std::atan2(d.y(), d.x()) * 180.0 / std::numbers::pi;
+  const double sweepDeg = segment.sweep() * 180.0 / std::numbers::pi * (segment.ccw ? 1.0 : -1.0);
+  const QPointF c = toScene(segment.centre);
+  if (!moveToStart && path.currentPosition() != toScene(segment.start)) path.lineTo(toScene(segment.start));
+  path.arcTo(QRectF(c.x() - r, c.y() - r, 2 * r, 2 * r), startDeg, sweepDeg);
 }
 
 core::Segment partialSegment(const core::Segment& segment, double s) {
@@ -54,7 +59,8 @@ void PathTrail::paintPaths(QPainter& painter, const QPainterPath& feed, const QP
   rapidPen.setCosmetic(true);
   painter.setPen(rapidPen);
   painter.drawPath(rapid);
-  QPen feedPen(palette().feedPath, 1.5, Qt::SolidLine);
+  // Width 1 cosmetic pens take the raster engine's fast stroker (long trails stay quick).
+  QPen feedPen(palette().feedPath, 1.0, Qt::SolidLine);
   feedPen.setCosmetic(true);
   painter.setPen(feedPen);
   painter.drawPath(feed);
