@@ -132,7 +132,10 @@ std::optional<CycleAlarm> readProfile(const CycleInput& in, const Block& cycle, 
 
   MotionMode motion = in.motion;
   Vec2 pos = in.start;
-  double pendingFeed = 0.0;
+  Vec2 offset = in.offset;
+  double pendingFeed = 0.0;  // F, S, T of the profile apply from the next move on (G70)
+  const Word* pendingS = nullptr;
+  const Word* pendingT = nullptr;
   for (int i = out.ns; i <= out.nf; ++i) {
     const Block& b = in.program->blocks[static_cast<std::size_t>(i)];
     if (b.blockSkip && in.blockSkip) continue;
@@ -157,13 +160,28 @@ std::optional<CycleAlarm> readProfile(const CycleInput& in, const Block& cycle, 
       }
       motionWord = &w;
     }
-    if (withFeed)
+    if (withFeed) {
       if (const Word* f = b.find('F')) pendingFeed = f->value * in.unit;
+      if (const Word* sw = b.find('S')) pendingS = sw;
+      if (const Word* tw = b.find('T')) {
+        pendingT = tw;
+        // The new offset counts from this block's own target on (as in the interpreter).
+        const int number = tw->code() % 100;
+        if (number == 0) offset = Vec2::Zero();
+        else if (in.offsets && number <= io::kOffsetCount) {
+          const io::Offset& o = in.offsets->at(number);
+          offset = Vec2(o.z, o.x / 2.0);
+        }
+      }
+    }
     if (!hasAxis(b)) continue;  // an F alone applies to the next move
-    const Vec2 end = axisTarget(b, pos, in.offset, in.unit);
+    const Vec2 end = axisTarget(b, pos, offset, in.unit);
     Step s;
     s.feed = pendingFeed;
+    s.sWord = pendingS;
+    s.tWord = pendingT;
     pendingFeed = 0.0;
+    pendingS = pendingT = nullptr;
     s.where = motionWord ? motionWord->range : b.words.front().range;
     switch (motion) {
       case MotionMode::Rapid: s.kind = StepKind::Rapid; s.path = Segment::line(pos, end); break;
@@ -435,6 +453,7 @@ Expansion expand(int g, const CycleInput& in, CycleMemory& memory) {
         if (const Word* p = b.find('P')) {
           const int mra = p->code();
           memory.g76Finishing = mra / 10000;
+          memory.g76Chamfer = (mra / 100) % 100;
           memory.g76Angle = mra % 100;
         }
         if (const Word* q = b.find('Q')) memory.g76MinDepth = increment(*q, u);
@@ -564,8 +583,19 @@ Expansion expand(int g, const CycleInput& in, CycleMemory& memory) {
         const Vec2 s3(target.x(), a.y());
         if ((s0 - a).norm() > kEps) e.steps.push_back(rapid(a, s0));
         e.steps.push_back(rapid(s0, s1));
-        e.steps.push_back(thread(s1, s2, in.feed));
-        e.steps.push_back(rapid(s2, s3));
+        const double length = std::abs(s2.x() - s1.x());
+        const double chamfer = std::min(memory.g76Chamfer / 10.0 * in.feed, length);
+        if (chamfer > kEps) {
+          // Pull-out at 45 degrees over the last r/10 leads, still threading.
+          const Vec2 c0 = s1 + (s2 - s1) * ((length - chamfer) / length);
+          const Vec2 c1(target.x(), c0.y() + sx * chamfer);
+          e.steps.push_back(thread(s1, c0, in.feed));
+          e.steps.push_back(thread(c0, c1, in.feed));
+          e.steps.push_back(rapid(c1, s3));
+        } else {
+          e.steps.push_back(thread(s1, s2, in.feed));
+          e.steps.push_back(rapid(s2, s3));
+        }
         e.steps.push_back(rapid(s3, a));
       }
       return e;

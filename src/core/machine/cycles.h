@@ -14,6 +14,7 @@
 #include "klueng/core/comp/segment.h"
 #include "klueng/core/diagnostic.h"
 #include "klueng/core/gcode/program.h"
+#include "klueng/core/io/tool_config.h"
 #include "klueng/core/machine/state.h"
 
 namespace klueng::core::machine::cycles {
@@ -27,6 +28,8 @@ struct Step {
   double feed = 0.0;                      // > 0: F (mm) takes effect from this step on (G70 profile F)
   NoseCompMode comp = NoseCompMode::Off;  // Compensation: G40/G41/G42 inside a G70 profile
   SourceRange where;                      // the word an alarm about this step points at (0 = the cycle's G)
+  const gcode::Word* sWord = nullptr;     // G70: an S of the profile, applied before this step
+  const gcode::Word* tWord = nullptr;     // G70: a T of the profile, applied before this step
 };
 
 struct CycleAlarm {
@@ -44,6 +47,7 @@ struct CycleMemory {
   int g73Count = 0;
   double g74Retract = 0.0, g75Retract = 0.0;
   int g76Finishing = 1;          // m
+  int g76Chamfer = 0;            // r: the pull-out is r/10 leads long, at 45 degrees
   double g76Angle = 60.0;        // a, degrees (tool angle)
   double g76MinDepth = 0.0;      // Δdmin
   double g76Allowance = 0.0;     // d
@@ -55,6 +59,7 @@ struct CycleInput {
   const gcode::Word* gWord = nullptr;     // the cycle's G word
   Vec2 start = Vec2::Zero();              // controlled point when the cycle starts
   Vec2 offset = Vec2::Zero();             // tool offset vector (z, x radius)
+  const io::OffsetTable* offsets = nullptr;  // for a T inside a G70 profile (none: offsets stay)
   double unit = 1.0;                      // mm per program unit (25.4 under G20)
   double feed = 0.0;                      // modal F in mm (after the cycle block's own F)
   MotionMode motion = MotionMode::Rapid;  // modal motion when the profile starts

@@ -538,6 +538,7 @@ class Interpreter {
     in.gWord = c.word;
     in.start = pos_;
     in.offset = offsetVector();
+    in.offsets = &setup_.offsets;
     in.unit = unit();
     in.feed = modal_.feed;
     in.motion = modal_.motion;
@@ -569,6 +570,17 @@ class Interpreter {
         where = &at;
       }
       if (s.feed > 0.0) modal_.feed = s.feed;
+      if (s.tWord && !selectTool(*s.tWord)) return false;
+      if (s.sWord) {
+        if (modal_.spindleMode == SpindleMode::ConstantSurface) {
+          modal_.sWord = s.sWord->value * (modal_.units == Units::Inch ? kMetresPerFoot : 1.0);
+        } else {
+          if (s.sWord->value > setup_.machine.maxSpindleRpm + 1e-9)
+            return raise("A101", s.sWord, {num(s.sWord->value), num(setup_.machine.maxSpindleRpm)});
+          modal_.sWord = s.sWord->value;
+        }
+        updateRpm();
+      }
       switch (s.kind) {
         case cycles::StepKind::Compensation:
           modal_.noseComp = s.comp;

@@ -257,6 +257,35 @@ TEST(StockRemoval, G70UnderG42CompensatesTheProfile) {
   EXPECT_TRUE(sawZLine);
 }
 
+TEST(StockRemoval, FSAndTInTheProfileApplyUnderG70Only) {
+  // N10 carries S800 and T0202 (offset 02: X +0.4 diameter, Z -0.2), the next block F80.
+  // G71 roughs at the cycle's F100 and S500 without the offset; G70 turns at
+  // 800 rpm, cuts the Z line at 80 mm/min and moves the controlled point by
+  // the offset from its first move on: X30.4 Z-20.2 at the end of the Z line.
+  const CycleRun t(
+      "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F100.\n"
+      "N10 G00 X30. S800 T0202\nG01 Z-20. F80.\nX40.\nZ-40.\nN20 X50.\nG70 P10 Q20\n");
+  ASSERT_FALSE(t.alarm) << t.alarm->code;
+  for (const Move& m : t.moves) {
+    if (m.line == 4) {
+      EXPECT_DOUBLE_EQ(m.rpm, 500.0);
+      if (m.kind == L) {
+        EXPECT_DOUBLE_EQ(m.feed, 100.0);
+      }
+    }
+    if (m.line == 10) {
+      EXPECT_DOUBLE_EQ(m.rpm, 800.0);
+    }
+  }
+  const auto g70 = pathOf(t, 10);
+  ASSERT_GE(g70.size(), 2u);
+  EXPECT_NEAR(g70[1].x, 30.4, 1e-9);
+  EXPECT_NEAR(g70[1].z, -20.2, 1e-9);
+  bool sawFeed80 = false;
+  for (const Move& m : t.moves) sawFeed80 = sawFeed80 || (m.line == 10 && m.kind == L && m.feed == 80.0);
+  EXPECT_TRUE(sawFeed80);
+}
+
 TEST(StockRemoval, G71UnderG42RaisesA123) {
   const CycleRun t("G98 G97 S500 M03 T0101\nG42 G00 X50. Z2.\nG71 U2. R0.5\n");
   ASSERT_TRUE(t.alarm);
@@ -388,6 +417,24 @@ TEST(Threading, G76PassesRunAtTheRootPlusTheDepthLeftWithFlankInfeed) {
   EXPECT_NEAR(2.0 * xOf(threads.front()->path.start), 29.4, 1e-9);  // 28.16 + 2·0.62
   // Back at the start point after the cycle.
   EXPECT_POINT(t.moves.back().path.end, 35.0, 5.0);
+}
+
+TEST(Threading, G76ChamferPullsOutAt45DegreesOverRTenthsOfALead) {
+  // P021060: m = 2, r = 10 -> 1.0 lead = 1.5 mm. The first pass (X29.4)
+  // threads to Z-18.5, then, still threading, out to X29.4 + 2·1.5 = X32.4 at Z-20.
+  const CycleRun t("G97 S500 M03\nG00 X35. Z5.\nG76 P021060 Q50 R0.05\nG76 X28.16 Z-20. P920 Q300 F1.5\n");
+  ASSERT_FALSE(t.alarm) << t.alarm->code;
+  const auto p = pathOf(t, 4);
+  ASSERT_GE(p.size(), 6u);
+  // Rapid to Z5 - 0.3 tan 30, rapid in to X29.4, thread, thread out, rapid out, rapid back.
+  EXPECT_EQ(p[2].kind, T);
+  EXPECT_NEAR(p[2].x, 29.4, 1e-9);
+  EXPECT_NEAR(p[2].z, -18.5, 1e-9);
+  EXPECT_EQ(p[3].kind, T);
+  EXPECT_NEAR(p[3].x, 32.4, 1e-9);
+  EXPECT_NEAR(p[3].z, -20.0, 1e-9);
+  EXPECT_EQ(p[4].kind, R);
+  EXPECT_NEAR(p[4].x, 35.0, 1e-9);
 }
 
 TEST(Threading, G76UnderG96RaisesA108) {
