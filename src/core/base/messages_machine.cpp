@@ -59,6 +59,8 @@ constexpr MessageText kMessages[] = {
      "{0}: รูปร่างชิ้นงานตั้งแต่ N{1} ถึง N{2} ไม่มีการเคลื่อนที่ให้ตาม"},
     {"A126", "{0} needs both P and Q: the sequence numbers of the first and last profile blocks",
      "{0} ต้องกำหนดทั้ง P และ Q: หมายเลขลำดับ (N) ของบล็อกแรกและบล็อกสุดท้ายของรูปร่างชิ้นงาน"},
+    {"A127", "{0} would make {1} passes (depth of cut {2}); more than 10000 passes is refused",
+     "{0} จะต้องกลึง {1} เที่ยว (ระยะป้อนลึก {2}) ซึ่งเกิน 10000 เที่ยว จึงไม่ทำงาน"},
 };
 }  // namespace
 

@@ -16,6 +16,7 @@ using gcode::Word;
 
 constexpr double kEps = 1e-6;
 constexpr double kArcTolerance = 0.01;  // mm, as the interpreter's arcs
+constexpr double kMaxPasses = 10000;    // more passes than this is a typing slip, not a program
 
 std::string num(double v) {
   if (std::abs(v) < 0.0005) v = 0.0;
@@ -304,6 +305,10 @@ std::optional<CycleAlarm> stockRemoval(const CycleInput& in, Profile& profile, d
     shifted.push_back(t);
   }
   const Vec2 aShift = aPrime + shift;
+  if (std::abs(start.y() - aShift.y()) / depth > kMaxPasses) {
+    const std::string passes = fmt::format("{:.0f}", std::ceil(std::abs(start.y() - aShift.y()) / depth));
+    return CycleAlarm{"A127", in.gWord ? in.gWord->range : SourceRange{}, {g, passes, num(depth)}};
+  }
   const bool infeedRapid = first.kind == StepKind::Rapid;
   std::vector<Step> steps;
   Vec2 pos = start;
@@ -503,6 +508,10 @@ Expansion expand(int g, const CycleInput& in, CycleMemory& memory) {
       return e;
     }
     case 73: {
+      if (memory.g73Count > kMaxPasses) {
+        e.alarm = alarmAt("A127", in.gWord, b, {name, std::to_string(memory.g73Count), "R"});
+        return e;
+      }
       if (memory.g73Count < 1) {
         e.alarm = alarmAt("A122", in.gWord, b, {name, "R"});
         return e;
@@ -545,6 +554,13 @@ Expansion expand(int g, const CycleInput& in, CycleMemory& memory) {
       const Word* qw = b.find('Q');
       const double across = pw ? increment(*pw, u) : 0.0;  // Δi: X step (G74) or X peck (G75)
       const double along = qw ? increment(*qw, u) : 0.0;   // Δk: Z peck (G74) or Z step (G75)
+      const double drill = std::abs(g == 74 ? zOf(target) - zOf(in.start) : xOf(target) - xOf(in.start));
+      const double peck = g == 74 ? along : across;
+      if (peck > kEps && drill / peck > kMaxPasses) {
+        e.alarm = alarmAt("A127", g == 74 ? qw : pw, b,
+                          {name, fmt::format("{:.0f}", std::ceil(drill / peck)), num(peck)});
+        return e;
+      }
       if (g == 74) {
         e.steps = pecks(in.start, target, along, across, memory.g74Retract);
       } else {

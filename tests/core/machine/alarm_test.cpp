@@ -97,7 +97,9 @@ INSTANTIATE_TEST_SUITE_P(
         AlarmCase{"CycleProfileWithoutMoves", "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\n"
                   "G71 P10 Q20 F100.\nN10 G00 X30.\nN20 F0.2\n", F,
                   "A125", 4, 5, 3},
-        AlarmCase{"CycleWithoutQ", "G98 G97 S500 M03\nG00 X50. Z2.\nG70 P10\nN10 G01 X30.\n", F, "A126", 3, 1, 2}),
+        AlarmCase{"CycleWithoutQ", "G98 G97 S500 M03\nG00 X50. Z2.\nG70 P10\nN10 G01 X30.\n", F, "A126", 3, 1, 2},
+        AlarmCase{"CycleTooManyPecks", "G98 G97 S500 M03\nG00 X0. Z2.\nG74 R1.\nG74 Z-100. Q1 F100.\n", F, "A127", 4,
+                  12, 3}),
     [](const ::testing::TestParamInfo<AlarmCase>& i) { return std::string(i.param.name); });
 
 TEST(Alarm, SampleFiveStopsOnN40) {
