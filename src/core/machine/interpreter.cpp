@@ -558,9 +558,40 @@ class Interpreter {
     return true;
   }
 
+  // The feed and spindle alarms of a whole cycle before its first move (the
+  // control refuses the cycle; no half-run cycle). F and S inside a G70 profile count.
+  bool cycleReady(const std::vector<cycles::Step>& steps, const Word* g, const std::string& name) {
+    double feed = modal_.feed;
+    bool sSet = modal_.sWord > 0.0;
+    for (const cycles::Step& s : steps) {
+      Word at;
+      const Word* where = g;
+      if (s.where.line != 0) {
+        at.range = s.where;
+        where = &at;
+      }
+      if (s.feed > 0.0) feed = s.feed;
+      if (s.sWord && s.sWord->value > 0.0) sSet = true;
+      if (s.kind == cycles::StepKind::Feed) {
+        if (feed <= 0.0) return raise("A102", where, {name});
+        if (modal_.feedMode == FeedMode::PerRev) {
+          if (mach_.spindle == SpindleDir::Stopped) return raise("A104", where, {name});
+          if (!sSet) return raise("A103", where, {name});
+        }
+      } else if (s.kind == cycles::StepKind::Thread) {
+        if (s.lead <= 0.0) return raise("A102", where, {name});
+        if (modal_.spindleMode == SpindleMode::ConstantSurface) return raise("A108", where, {});
+        if (mach_.spindle == SpindleDir::Stopped) return raise("A116", where, {});
+        if (!sSet) return raise("A119", where, {});
+      }
+    }
+    return true;
+  }
+
   // Sends a cycle's moves down the chain as if each were its own block (same
   // checks), all carrying the cycle block's line.
   bool emitCycle(const std::vector<cycles::Step>& steps, const Word* g, const std::string& name) {
+    if (!cycleReady(steps, g, name)) return false;
     for (const cycles::Step& s : steps) {
       if (sink_.halted()) return false;
       Word at;  // a profile step points its alarms at its own block's word

@@ -162,6 +162,7 @@ TEST(SingleCycles, G92WithTheSpindleStoppedRaisesA116AtTheCycle) {
   EXPECT_EQ(t.alarm->code, "A116");
   EXPECT_EQ(t.alarm->range.line, 3);
   EXPECT_EQ(t.alarm->range.column, 1);
+  expectPath(t, 3, {});
 }
 
 TEST(SingleCycles, G90UnderG99WithTheSpindleStoppedRaisesA104) {
@@ -169,8 +170,8 @@ TEST(SingleCycles, G90UnderG99WithTheSpindleStoppedRaisesA104) {
   ASSERT_TRUE(t.alarm);
   EXPECT_EQ(t.alarm->code, "A104");
   EXPECT_EQ(t.alarm->range.line, 3);
-  // The rapid in X ran, the cut did not.
-  expectPath(t, 3, {{R, 40, 2}});
+  // The cycle is refused as a whole: none of its moves ran.
+  expectPath(t, 3, {});
 }
 
 // ---- G71 / G70 -----------------------------------------------------------------
