@@ -251,7 +251,8 @@ TEST(CutSimulator, ALeadFinerThanTheColumnsCutsAGroove) {
   const ToolShape v = *makeToolShape(img, "v.bmp", 0.0, 8).value;
   machine::Move pass = move(MoveKind::Thread, Segment::line(zx(5, 14.6), zx(-30, 14.6)), 0, 1, 130);
   pass.lead = 0.05;  // = one column: no teeth can be resolved
-  CutSimulator sim(timelineOf({pass}), barSetup(30, 50), libraryWith(v));
+  const machine::Timeline tl = timelineOf({pass});
+  CutSimulator sim(tl, barSetup(30, 50), libraryWith(v));
   sim.runToEnd();
   for (double z = -29.0; z < -0.1; z += 0.11) EXPECT_DOUBLE_EQ(radiusAt(sim.stock(), z), 14.6) << z;
 }
@@ -327,7 +328,8 @@ TEST(CutSimulator, GarbageMovesNeverCrashOrHang) {
   moves.push_back(move(MoveKind::Arc, Segment::arc(zx(1e300, 0), zx(-1e300, 1), zx(0, nan), true), 0, 1, 1000));
   CutOptions options;
   options.detectCollisions = false;
-  CutSimulator sim(timelineOf(moves), barSetup(50, 100), libraryWith(squareTool(0.8, 3)), options);
+  const machine::Timeline tl = timelineOf(moves);
+  CutSimulator sim(tl, barSetup(50, 100), libraryWith(squareTool(0.8, 3)), options);
   sim.runToEnd();
   EXPECT_TRUE(sim.finished());
   EXPECT_FALSE(sim.alarm().has_value());

@@ -78,6 +78,9 @@ class CutSimulator {
   CutSimulator(const machine::Timeline& timeline, const CutSetup& setup, const CutOptions& options = {});
   CutSimulator(const machine::Timeline& timeline, const CutSetup& setup, ToolLibrary tools,
                const CutOptions& options = {});
+  // The simulator keeps a pointer to the timeline: a temporary one would dangle.
+  CutSimulator(machine::Timeline&&, const CutSetup&, const CutOptions& = {}) = delete;
+  CutSimulator(machine::Timeline&&, const CutSetup&, ToolLibrary, const CutOptions& = {}) = delete;
 
   void advanceTo(double t);
   void runToEnd();
