@@ -52,7 +52,7 @@ constexpr MessageText kMessages[] = {
     {"A122", "{0} needs a depth of cut {1} greater than zero",
      "{0} ต้องกำหนดระยะป้อนลึก {1} ที่มากกว่าศูนย์"},
     {"A123", "{0} cannot run under nose radius compensation (G41/G42); cancel it with G40 first",
-     "{0} ใช้ร่วมกับการชดเชยรัศมีปลายมีด (G41/G42) ไม่ได้ ต้องยกเลิกด้วย G40 ก่อน"},
+     "{0} ใช้ร่วมกับการชดเชยรัศมีจมูกมีด (G41/G42) ไม่ได้ ต้องยกเลิกด้วย G40 ก่อน"},
     {"A124", "{0}: the first profile block must move along {1} only (type I profile)",
      "{0}: บล็อกแรกของรูปร่างชิ้นงานต้องเคลื่อนที่ตามแกน {1} เท่านั้น (รูปร่างแบบที่ 1)"},
     {"A125", "{0}: the profile N{1} to N{2} has no moves to follow",

@@ -206,7 +206,7 @@ std::optional<CycleAlarm> readProfile(const CycleInput& in, const Block& cycle, 
   return std::nullopt;
 }
 
-// Removes the F/compensation carriers (roughing cycles ignore them).
+// Keeps only the moves (roughing cycles ignore G40-G42 inside the profile).
 void movesOnly(Profile& p) {
   std::vector<Step> moves;
   std::vector<int> blocks;
