@@ -218,6 +218,34 @@ TEST(StockRemoval, G71RoughsFourPassesThenTheOffsetProfile) {
   EXPECT_EQ(feedPasses, 4);
 }
 
+TEST(StockRemoval, G71PassesEndWhereTheyMeetAnArcOfTheProfile) {
+  // Profile X20 -> Z-10 -> G02 to X40 Z-20 R10 -> X50, no allowance. The arc
+  // is centred at Z-10 X40 (on the right of travel, cw), so on it
+  // x(z) = 20 - sqrt(100 - (z + 10)^2) (radius). From X50, U2: levels
+  // (radius) 23 21 19 17 15 13 11. 23 and 21 meet the X50 face at Z-20; level
+  // x meets the arc at z = -10 - sqrt(100 - (20 - x)^2): x19 -> -10 - sqrt(99),
+  // x17 -> -10 - sqrt(91), x15 -> -10 - sqrt(75), x13 -> -10 - sqrt(51), x11 -> -10 - sqrt(19).
+  const CycleRun t(
+      "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\nG71 P10 Q20 F100.\n"
+      "N10 G00 X20.\nG01 Z-10.\nG02 X40. Z-20. R10.\nN20 G01 X50.\n");
+  ASSERT_FALSE(t.alarm) << t.alarm->code;
+  std::vector<Corner> cuts;
+  for (const Corner& c : pathOf(t, 4))
+    if (c.kind == L && c.x < 50.0 - 1e-9) cuts.push_back(c);
+  const std::vector<std::pair<double, double>> expected = {
+      {46, -20}, {42, -20}, {38, -10 - std::sqrt(99.0)}, {34, -10 - std::sqrt(91.0)},
+      {30, -10 - std::sqrt(75.0)}, {26, -10 - std::sqrt(51.0)}, {22, -10 - std::sqrt(19.0)}};
+  // The seven pass ends, then the profile's own Z-10 line and arc (the last pass).
+  ASSERT_GE(cuts.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_NEAR(cuts[i].x, expected[i].first, 1e-9) << i;
+    EXPECT_NEAR(cuts[i].z, expected[i].second, 1e-9) << i;
+  }
+  int arcs = 0;
+  for (const MotionCall& m : t.calls) arcs += m.line == 4 && m.kind == MoveKind::Arc;
+  EXPECT_EQ(arcs, 1);  // only the last pass follows the arc
+}
+
 TEST(StockRemoval, G70FinishesAlongTheProfileAndReturns) {
   const CycleRun t(std::string(kG71) + "G70 P10 Q20\nG00 X100. Z100.\n");
   ASSERT_FALSE(t.alarm) << t.alarm->code;
