@@ -15,7 +15,9 @@ Language::Language(QObject* parent) : QObject(parent) {
 }
 
 Language::~Language() {
-  for (auto& t : translators_) QCoreApplication::removeTranslator(t.get());
+  // Parented to the application, this may run after the application is gone.
+  if (QCoreApplication::instance())
+    for (auto& t : translators_) QCoreApplication::removeTranslator(t.get());
   if (g_instance == this) g_instance = nullptr;
 }
 

@@ -33,6 +33,7 @@
 #include "gui/language.h"
 #include "gui/offset_define_dialog.h"
 #include "gui/output_view.h"
+#include "gui/run_speed_control.h"
 #include "gui/settings.h"
 #include "gui/status_panel.h"
 #include "gui/tool_select_dialog.h"
@@ -46,14 +47,15 @@ namespace klueng::gui {
 namespace {
 
 // Animation speeds: machine seconds per wall second; 0 = as fast as possible.
-constexpr double kSpeeds[] = {0.1, 0.25, 0.5, 1.0, 2.0, 5.0, 10.0, 100.0, RunController::kAsFastAsPossible};
-constexpr int kSpeedCount = static_cast<int>(std::size(kSpeeds));
-constexpr int kDefaultSpeed = 3;  // 1x, real machine time
+// The same stops as the tool bar's speed slider.
+const std::vector<double>& speeds() { return RunSpeedControl::steps(); }
+int speedCount() { return static_cast<int>(speeds().size()); }
 
 QString speedText(int i) {
-  if (kSpeeds[i] == RunController::kAsFastAsPossible) return MainWindow::tr("As fast as possible");
-  if (kSpeeds[i] == 1.0) return MainWindow::tr("1× (real time)");
-  return MainWindow::tr("%1×").arg(QLocale().toString(kSpeeds[i]));
+  const double v = speeds()[static_cast<std::size_t>(i)];
+  if (v == RunController::kAsFastAsPossible) return MainWindow::tr("As fast as possible");
+  if (v == 1.0) return MainWindow::tr("1× (real time)");
+  return MainWindow::tr("%1×").arg(QLocale().toString(v));
 }
 
 // Runs on a worker thread: the UTF-8 conversion happens there too.
@@ -293,7 +295,7 @@ void MainWindow::createActions() {
     settings_->setBlockSkip(on);
   });
   speedGroup_ = new QActionGroup(this);
-  for (int i = 0; i < kSpeedCount; ++i) {
+  for (int i = 0; i < speedCount(); ++i) {
     auto* a = make(QStringLiteral("actionSpeed%1").arg(i).toLatin1().constData(), nullptr);
     a->setCheckable(true);
     a->setData(i);
@@ -418,19 +420,20 @@ void MainWindow::createToolBars() {
   runToolBar_ = bar("runToolBar");
   for (const char* n : {"actionGo", "actionStep", "actionPause", "actionStop", "actionStepBack", "actionRunToCursor"})
     runToolBar_->addAction(action(QString::fromLatin1(n)));
-  speedLabel_ = new QLabel(this);
-  speedLabel_->setContentsMargins(8, 0, 4, 0);
-  speedCombo_ = new QComboBox(this);
-  speedCombo_->setObjectName(QStringLiteral("speedCombo"));
-  speedCombo_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
-  for (int i = 0; i < kSpeedCount; ++i) speedCombo_->addItem(QString());
-  connect(speedCombo_, &QComboBox::activated, this, &MainWindow::setSpeedIndex);
-  runToolBar_->addWidget(speedLabel_);
-  runToolBar_->addWidget(speedCombo_);
+  speedControl_ = new RunSpeedControl(this);
+  speedControl_->setObjectName(QStringLiteral("speedControl"));
+  speedControl_->setRunController(runner_);
+  // The slider and the Run > Speed menu show the same choice.
+  connect(speedControl_, &RunSpeedControl::speedChanged, this, [this](double factor) {
+    for (int i = 0; i < speedCount(); ++i)
+      if (speeds()[static_cast<std::size_t>(i)] == factor) action(QStringLiteral("actionSpeed%1").arg(i))->setChecked(true);
+  });
+  runToolBar_->addSeparator();
+  runToolBar_->addWidget(speedControl_);
   helpToolBar_ = bar("helpToolBar");
   helpToolBar_->addAction(action(QStringLiteral("actionContents")));
   helpToolBar_->addAction(action(QStringLiteral("actionToggleLanguage")));
-  setSpeedIndex(kDefaultSpeed);
+  setSpeedIndex(static_cast<int>(std::find(speeds().begin(), speeds().end(), 1.0) - speeds().begin()));
 }
 
 void MainWindow::createDocks() {
@@ -504,16 +507,11 @@ void MainWindow::retranslateUi() {
   set("actionContents", tr("&Contents"), tr("Help for self-learners: every G and M code with an example"));
   set("actionToggleLanguage", tr("Toggle &Language (ไทย/English)"), tr("Switch between Thai and English"));
   set("actionAbout", tr("&About Klueng"));
-  for (int i = 0; i < kSpeedCount; ++i) {
-    action(QStringLiteral("actionSpeed%1").arg(i))->setText(speedText(i));
-    speedCombo_->setItemText(i, speedText(i));
-  }
+  for (int i = 0; i < speedCount(); ++i) action(QStringLiteral("actionSpeed%1").arg(i))->setText(speedText(i));
   fileToolBar_->setWindowTitle(tr("File tool bar"));
   editToolBar_->setWindowTitle(tr("Edit tool bar"));
   runToolBar_->setWindowTitle(tr("Run tool bar"));
   helpToolBar_->setWindowTitle(tr("Help tool bar"));
-  speedLabel_->setText(tr("Speed:"));
-  speedCombo_->setToolTip(tr("Animation speed: slow motion, real machine time, or as fast as possible"));
   updateTitle();
 }
 
@@ -544,9 +542,10 @@ void MainWindow::setDialect(core::gcode::Dialect d) {
 }
 
 void MainWindow::setSpeedIndex(int index) {
-  index = std::clamp(index, 0, kSpeedCount - 1);
-  runner_->setSpeed(kSpeeds[index]);
-  speedCombo_->setCurrentIndex(index);
+  index = std::clamp(index, 0, speedCount() - 1);
+  const double factor = speeds()[static_cast<std::size_t>(index)];
+  speedControl_->setSpeed(factor);
+  runner_->setSpeed(factor);
   action(QStringLiteral("actionSpeed%1").arg(index))->setChecked(true);
 }
 
@@ -555,7 +554,7 @@ void MainWindow::setSpeedIndex(int index) {
 void MainWindow::restoreLayout() {
   resize(1280, 800);
   if (!restoreGeometry(settings_->windowGeometry())) resize(1280, 800);
-  restoreState(settings_->windowState());
+  if (!restoreState(settings_->windowState())) resizeDocks({diagnostics_}, {150}, Qt::Vertical);
   if (!splitter_->restoreState(settings_->splitterState())) splitter_->setSizes({520, 760});
 }
 

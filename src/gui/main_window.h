@@ -34,6 +34,7 @@ class CodeEditor;
 class DiagnosticsPanel;
 class FindDialog;
 class HelpContents;
+class RunSpeedControl;
 class OutputView;
 class Settings;
 class StatusFields;
@@ -172,8 +173,7 @@ class MainWindow : public QMainWindow {
   QHash<QString, QAction*> actions_;
   QActionGroup* speedGroup_ = nullptr;
   QActionGroup* dialectGroup_ = nullptr;
-  QLabel* speedLabel_ = nullptr;
-  QComboBox* speedCombo_ = nullptr;
+  RunSpeedControl* speedControl_ = nullptr;
 
   QFutureWatcher<LoadedProgram> loadWatcher_;
   QString loadingPath_;
