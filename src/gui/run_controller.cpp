@@ -65,8 +65,13 @@ void RunController::setDialect(core::gcode::Dialect dialect) {
 
 void RunController::setOptionalStop(bool on) {
   if (options_.optionalStop == on) return;
+  // No new timeline needed: every M01 is recorded as a stop and the switch is read
+  // when the run reaches it (startRun), so it acts at once, as on the machine.
   options_.optionalStop = on;
-  invalidate();
+  if (state_ == RunState::Running && timeline_) {
+    frameTimer_.stop();
+    startRun(false);
+  }
   emitStatus();
 }
 
@@ -258,6 +263,7 @@ void RunController::prepareAndThen(Pending what) {
   auto file = file_;
   auto setup = setup_;
   auto options = options_;
+  options.optionalStop = true;   // record every M01; the switch decides while playing
   prepareWatcher_.setFuture(QtConcurrent::run([file, setup, options]() {
     auto result = std::make_shared<Prepared>();
     const core::gcode::Program program = core::gcode::parse(file.gcode, file.gcodeFirstLine);
@@ -281,6 +287,13 @@ void RunController::prepareAndThen(Pending what) {
       return result;
     }
     result->timeline = std::make_shared<machine::Timeline>(machine::interpret(program, setup, options));
+    for (const auto& snap : result->timeline->snapshots) {
+      bool m01 = false;
+      if (snap.blockIndex >= 0 && snap.blockIndex < static_cast<int>(program.blocks.size()))
+        for (const auto* m : program.blocks[static_cast<std::size_t>(snap.blockIndex)].all('M'))
+          if (!m->hasDecimalPoint && m->code() == 1) m01 = true;
+      result->optionalStopBlock.push_back(m01 ? 1 : 0);
+    }
     return result;
   }));
 }
@@ -300,6 +313,7 @@ void RunController::onPrepared() {
     return;
   }
   timeline_ = result->timeline;
+  optionalStopBlock_ = result->optionalStopBlock;
   cut_ = std::make_unique<core::cut::CutSimulator>(*timeline_, core::cut::CutSetup::from(file_.header, setup_));
   stale_ = false;
   resetPlayback();
@@ -357,7 +371,8 @@ void RunController::startRun(bool stepOnly) {
         targetTime_ = snaps[static_cast<std::size_t>(j - 1)].time;
         break;
       }
-      if (s.stopped && j < count - 1) {   // M00 / M01 with the switch on
+      const bool optional = j < static_cast<int>(optionalStopBlock_.size()) && optionalStopBlock_[static_cast<std::size_t>(j)];
+      if (s.stopped && j < count - 1 && (!optional || options_.optionalStop)) {   // M00 / M01 with the switch on
         targetIsEnd_ = false;
         targetSnapshot_ = j;
         targetTime_ = s.time;

@@ -15,6 +15,8 @@
 //   state(), currentTime(), currentLine(), status(), timeline(), stockShape()
 //   Breakpoints stop BEFORE the block on that line runs; Go/Step from there runs it.
 //   M00, M01 (switch on) and M02/M30 pause after their block; alarms stop the run.
+//   The Optional Stop switch acts at once, also during a run; Block Skip and the
+//   dialect apply from the next run (they change the path).
 // Signals
 //   stateChanged(RunState)                 enable/disable the Run actions
 //   checkFailed(QList<core::Diagnostic>)   the program has errors; the run did not start
@@ -139,6 +141,7 @@ class RunController : public QObject {
   enum class Pending { None, Go, Step, RunToLine };
   struct Prepared {
     std::shared_ptr<core::machine::Timeline> timeline;
+    std::vector<char> optionalStopBlock;   // per snapshot: the block holds M01
     QList<core::Diagnostic> errors;
   };
 
@@ -169,6 +172,7 @@ class RunController : public QObject {
   bool stale_ = true;
 
   std::shared_ptr<core::machine::Timeline> timeline_;
+  std::vector<char> optionalStopBlock_;
   std::unique_ptr<core::cut::CutSimulator> cut_;
   mutable render::StockShape stockShape_;
   mutable double stockShapeVolume_ = -1.0;

@@ -253,6 +253,32 @@ class RunControllerTest : public QObject {
     QVERIFY(controller.timeline() == nullptr);
   }
 
+  void optionalStopSwitchActsAtOnce() {
+    RunController controller;
+    controller.setMachineSetup(loadSetup());
+    auto file = loadProgram("01-step-shaft.txt");
+    file.gcode = "N10 G00 X60. Z10.\nN20 M01\nN30 G00 X70. Z20.\nN40 M00\nN50 G00 X80. Z30.\nN60 M30\n";
+    const int first = file.gcodeFirstLine;
+    controller.setProgram(file);
+    controller.setSpeed(RunController::kAsFastAsPossible);
+    // Switch off: M01 is passed, M00 stops.
+    controller.go();
+    controller.waitForIdle();
+    QCOMPARE(controller.state(), RunState::Paused);
+    QCOMPARE(controller.currentLine(), first + 3);
+    controller.go();
+    controller.waitForIdle();
+    QCOMPARE(controller.state(), RunState::Finished);
+    // Switch on (no re-check needed): M01 stops too.
+    controller.setOptionalStop(true);
+    controller.go();
+    controller.waitForIdle();
+    QCOMPARE(controller.state(), RunState::Paused);
+    QCOMPARE(controller.currentLine(), first + 1);
+    QVERIFY(controller.status().machine.optionalStopSwitch);
+    QCOMPARE(core::diameterOf(controller.status().position), 60.0);
+  }
+
   void slowMotionMovesAtMostOnePixelPerFrame() {
     Rig rig("01-step-shaft.txt", 0.5);
     const double mmPerPixel = 1.0 / rig.view.pixelsPerMm();
