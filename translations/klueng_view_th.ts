@@ -148,7 +148,7 @@
 <context>
     <name>klueng::gui::OutputView</name>
     <message>
-        <location filename="../src/gui/output_view.cpp" line="278"/>
+        <location filename="../src/gui/output_view.cpp" line="282"/>
         <source>Output screen: wheel to zoom, drag to pan, double-click to fit</source>
         <translation>จอแสดงผล: หมุนล้อเมาส์เพื่อย่อ/ขยาย ลากเพื่อเลื่อน ดับเบิลคลิกเพื่อแสดงทั้งหมด</translation>
     </message>

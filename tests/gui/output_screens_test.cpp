@@ -94,6 +94,25 @@ class OutputScreensTest : public QObject {
     QVERIFY(near(pixel(-100.0 + 5.0, 28.0), pal.chuckFill));
   }
 
+  void alarmPicture() {
+    RunController controller;
+    controller.setMachineSetup(loadSetup());
+    controller.setProgram(*core::io::readProgramFile(KLUENG_SAMPLES_DIR "/05-runtime-alarms.txt").value);
+    controller.setSpeed(RunController::kAsFastAsPossible);
+    OutputView view;
+    view.resize(1000, 600);
+    view.setRunController(&controller);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    controller.go();
+    controller.waitForIdle();
+    QCOMPARE(controller.state(), RunState::Alarm);
+    QApplication::processEvents();
+    // The tool stays where the alarm happened: the start of N40, at X45 Z2.
+    QCOMPARE(view.toolItemPos(), render::toScene(2.0, 22.5));
+    save(view, QStringLiteral("output-05-alarm.png"));
+  }
+
   void dialogsInEnglishAndThai() {
     const QString dir = QString::fromStdString(core::io::findConfigDir(KLUENG_SOURCE_DIR));
     for (const QString& lang : {QStringLiteral("en"), QStringLiteral("th")}) {
