@@ -281,515 +281,505 @@
 <context>
     <name>klueng::gui::MainWindow</name>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="54" />
+        <location filename="../src/gui/main_window.cpp" line="56" />
         <source>As fast as possible</source>
         <translation>เร็วที่สุด</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="55" />
+        <location filename="../src/gui/main_window.cpp" line="57" />
         <source>1× (real time)</source>
         <translation>1× (เวลาจริงของเครื่อง)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="56" />
+        <location filename="../src/gui/main_window.cpp" line="58" />
         <source>%1×</source>
         <translation>%1×</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="457" />
+        <location filename="../src/gui/main_window.cpp" line="462" />
         <source>&amp;File</source>
         <translation>แฟ้ม (&amp;F)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="458" />
+        <location filename="../src/gui/main_window.cpp" line="463" />
         <source>&amp;Recent Files</source>
         <translation>แฟ้มที่ใช้ล่าสุด (&amp;R)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="459" />
+        <location filename="../src/gui/main_window.cpp" line="464" />
         <source>&amp;Edit</source>
         <translation>แก้ไข (&amp;E)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="460" />
+        <location filename="../src/gui/main_window.cpp" line="465" />
         <source>&amp;Run</source>
         <translation>การทำงาน (&amp;R)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="461" />
+        <location filename="../src/gui/main_window.cpp" line="466" />
         <source>S&amp;peed</source>
         <translation>ความเร็วการจำลอง (&amp;P)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="462" />
+        <location filename="../src/gui/main_window.cpp" line="467" />
         <source>&amp;Tool setting</source>
         <translation>ตั้งค่ามีดตัด (&amp;T)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="463" />
+        <location filename="../src/gui/main_window.cpp" line="468" />
         <source>G-code &amp;dialect</source>
         <translation>ภาษาจีโค้ด (&amp;D)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="464" />
+        <location filename="../src/gui/main_window.cpp" line="469" />
         <source>&amp;View</source>
         <translation>มุมมอง (&amp;V)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="465" />
+        <location filename="../src/gui/main_window.cpp" line="470" />
         <source>&amp;Help</source>
         <translation>ช่วยเหลือ (&amp;H)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="467" />
+        <location filename="../src/gui/main_window.cpp" line="472" />
         <source>&amp;New</source>
         <translation>สร้างใหม่ (&amp;N)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="467" />
+        <location filename="../src/gui/main_window.cpp" line="472" />
         <source>Start a new program</source>
         <translation>เริ่มชุดรหัสสั่งการทำงานใหม่</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="468" />
+        <location filename="../src/gui/main_window.cpp" line="473" />
         <source>&amp;Open...</source>
         <translation>เปิด... (&amp;O)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="468" />
+        <location filename="../src/gui/main_window.cpp" line="473" />
         <source>Open a program file</source>
         <translation>เปิดแฟ้มชุดรหัสสั่งการทำงาน</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="469" />
-        <location filename="../src/gui/main_window.cpp" line="596" />
+        <location filename="../src/gui/main_window.cpp" line="474" />
+        <location filename="../src/gui/main_window.cpp" line="597" />
         <source>&amp;Save</source>
         <translation>บันทึก (&amp;S)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="469" />
+        <location filename="../src/gui/main_window.cpp" line="474" />
         <source>Save the program</source>
         <translation>บันทึกชุดรหัสสั่งการทำงาน</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="470" />
+        <location filename="../src/gui/main_window.cpp" line="475" />
         <source>Save &amp;As...</source>
         <translation>บันทึกเป็น... (&amp;A)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="470" />
+        <location filename="../src/gui/main_window.cpp" line="475" />
         <source>Save the program under a new name</source>
         <translation>บันทึกชุดรหัสสั่งการทำงานด้วยชื่อใหม่</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="471" />
+        <location filename="../src/gui/main_window.cpp" line="476" />
         <source>&amp;Job details...</source>
         <translation>รายละเอียดงาน... (&amp;J)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="471" />
+        <location filename="../src/gui/main_window.cpp" line="476" />
         <source>Project, part, material, stock size and programmer</source>
         <translation>ชื่องาน ชิ้นงาน วัสดุ ขนาดชิ้นงาน และผู้เขียนโปรแกรม</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="472" />
+        <location filename="../src/gui/main_window.cpp" line="477" />
         <source>E&amp;xit</source>
         <translation>ออกจากโปรแกรม (&amp;X)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="473" />
+        <location filename="../src/gui/main_window.cpp" line="478" />
         <source>&amp;Undo</source>
         <translation>เลิกทำ (&amp;U)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="474" />
+        <location filename="../src/gui/main_window.cpp" line="479" />
         <source>&amp;Redo</source>
         <translation>ทำซ้ำ (&amp;R)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="475" />
+        <location filename="../src/gui/main_window.cpp" line="480" />
         <source>Cu&amp;t</source>
         <translation>ตัด (&amp;T)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="476" />
+        <location filename="../src/gui/main_window.cpp" line="481" />
         <source>&amp;Copy</source>
         <translation>คัดลอก (&amp;C)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="477" />
+        <location filename="../src/gui/main_window.cpp" line="482" />
         <source>&amp;Paste</source>
         <translation>วาง (&amp;P)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="478" />
+        <location filename="../src/gui/main_window.cpp" line="483" />
         <source>&amp;Delete</source>
         <translation>ลบ (&amp;D)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="479" />
+        <location filename="../src/gui/main_window.cpp" line="484" />
         <source>Select &amp;All</source>
         <translation>เลือกทั้งหมด (&amp;A)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="480" />
+        <location filename="../src/gui/main_window.cpp" line="485" />
         <source>&amp;Find...</source>
         <translation>ค้นหา... (&amp;F)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="480" />
+        <location filename="../src/gui/main_window.cpp" line="485" />
         <source>Find text in the program</source>
         <translation>ค้นหาข้อความในชุดรหัสสั่งการทำงาน</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="481" />
+        <location filename="../src/gui/main_window.cpp" line="486" />
         <source>R&amp;eplace...</source>
         <translation>แทนที่... (&amp;E)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="481" />
+        <location filename="../src/gui/main_window.cpp" line="486" />
         <source>Find and replace text</source>
         <translation>ค้นหาและแทนที่ข้อความ</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="482" />
+        <location filename="../src/gui/main_window.cpp" line="487" />
         <source>&amp;Go to Line...</source>
         <translation>ไปยังบรรทัด... (&amp;G)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="483" />
+        <location filename="../src/gui/main_window.cpp" line="488" />
         <source>&amp;Go</source>
         <translation>เริ่มทำงาน (&amp;G)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="483" />
+        <location filename="../src/gui/main_window.cpp" line="488" />
         <source>Run the program continuously</source>
         <translation>จำลองการทำงานต่อเนื่องจนจบ</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="484" />
+        <location filename="../src/gui/main_window.cpp" line="489" />
         <source>&amp;Step</source>
         <translation>ทำงานทีละบรรทัด (&amp;S)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="484" />
+        <location filename="../src/gui/main_window.cpp" line="489" />
         <source>Run one block, then wait</source>
         <translation>ทำงานหนึ่งบล็อกแล้วรอ</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="485" />
+        <location filename="../src/gui/main_window.cpp" line="490" />
         <source>&amp;Pause</source>
         <translation>หยุดชั่วคราว (&amp;P)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="485" />
+        <location filename="../src/gui/main_window.cpp" line="490" />
         <source>Stop after the current step; Go or Step resumes</source>
         <translation>หยุดหลังบล็อกปัจจุบัน กดเริ่มทำงานหรือทำงานทีละบรรทัดเพื่อทำต่อ</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="486" />
+        <location filename="../src/gui/main_window.cpp" line="491" />
         <source>S&amp;top</source>
         <translation>หยุด (&amp;T)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="486" />
+        <location filename="../src/gui/main_window.cpp" line="491" />
         <source>Abort the run and reset</source>
         <translation>ยกเลิกการทำงานและเริ่มต้นใหม่</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="487" />
+        <location filename="../src/gui/main_window.cpp" line="492" />
         <source>Step &amp;Back</source>
         <translation>ย้อนกลับหนึ่งบล็อก (&amp;B)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="487" />
+        <location filename="../src/gui/main_window.cpp" line="492" />
         <source>Go back one block</source>
         <translation>ถอยกลับไปหนึ่งบล็อก</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="488" />
+        <location filename="../src/gui/main_window.cpp" line="493" />
         <source>Run to &amp;Cursor</source>
         <translation>ทำงานถึงเคอร์เซอร์ (&amp;C)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="488" />
+        <location filename="../src/gui/main_window.cpp" line="493" />
         <source>Run up to the block at the cursor</source>
         <translation>ทำงานจนถึงบล็อกที่เคอร์เซอร์อยู่</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="489" />
+        <location filename="../src/gui/main_window.cpp" line="494" />
         <source>Toggle &amp;Breakpoint</source>
         <translation>ตั้ง/ยกเลิกจุดหยุด (&amp;B)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="489" />
+        <location filename="../src/gui/main_window.cpp" line="494" />
         <source>Stop the run before this line</source>
         <translation>หยุดการทำงานก่อนบรรทัดนี้</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="490" />
+        <location filename="../src/gui/main_window.cpp" line="495" />
         <source>&amp;Optional Stop</source>
         <translation>ทางเลือกการหยุด (&amp;O)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="490" />
+        <location filename="../src/gui/main_window.cpp" line="495" />
         <source>M01 stops the run when this switch is on</source>
         <translation>M01 จะหยุดการทำงานเมื่อเปิดสวิตช์นี้</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="491" />
+        <location filename="../src/gui/main_window.cpp" line="496" />
         <source>Block S&amp;kip</source>
         <translation>ข้ามบล็อก (&amp;K)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="491" />
+        <location filename="../src/gui/main_window.cpp" line="496" />
         <source>Blocks starting with / are skipped when this switch is on</source>
         <translation>บล็อกที่ขึ้นต้นด้วย / จะถูกข้ามเมื่อเปิดสวิตช์นี้</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="492" />
+        <location filename="../src/gui/main_window.cpp" line="497" />
         <source>Tool &amp;Select...</source>
         <translation>เลือกมีดตัด... (&amp;S)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="492" />
+        <location filename="../src/gui/main_window.cpp" line="497" />
         <source>Choose the bitmap of each tool 01-08</source>
         <translation>เลือกภาพบิตแมปของมีดตัดหมายเลข 01-08</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="493" />
+        <location filename="../src/gui/main_window.cpp" line="498" />
         <source>Offset &amp;Define...</source>
         <translation>กำหนดค่าออฟเซต... (&amp;D)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="493" />
+        <location filename="../src/gui/main_window.cpp" line="498" />
         <source>Edit the 16 tool offsets</source>
         <translation>แก้ไขค่าออฟเซตของมีดตัดทั้ง 16 ชุด</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="494" />
+        <location filename="../src/gui/main_window.cpp" line="499" />
         <source>&amp;Fanuc 0i-TF</source>
         <translation>Fanuc 0i-TF (&amp;F)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="495" />
+        <location filename="../src/gui/main_window.cpp" line="500" />
         <source>&amp;Rook classic (1999 rules)</source>
         <translation>Rook แบบดั้งเดิม (กฎปี 1999) (&amp;R)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="496" />
+        <location filename="../src/gui/main_window.cpp" line="501" />
         <source>&amp;Fit to View</source>
         <translation>พอดีหน้าจอ (&amp;F)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="497" />
+        <location filename="../src/gui/main_window.cpp" line="502" />
         <source>Zoom &amp;In</source>
         <translation>ขยาย (&amp;I)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="498" />
+        <location filename="../src/gui/main_window.cpp" line="503" />
         <source>Zoom &amp;Out</source>
         <translation>ย่อ (&amp;O)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="499" />
+        <location filename="../src/gui/main_window.cpp" line="504" />
         <source>Show Tool &amp;Path</source>
         <translation>แสดงเส้นทางเดินมีด (&amp;P)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="500" />
+        <location filename="../src/gui/main_window.cpp" line="505" />
         <source>&amp;Status Bar</source>
         <translation>แถบแสดงสถานะ (&amp;S)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="501" />
+        <location filename="../src/gui/main_window.cpp" line="506" />
         <source>Status &amp;Lamps</source>
         <translation>ไฟแสดงสถานะ (&amp;L)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="502" />
+        <location filename="../src/gui/main_window.cpp" line="507" />
         <source>&amp;Contents</source>
         <translation>เนื้อหาระบบช่วยเหลือ (&amp;C)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="502" />
+        <location filename="../src/gui/main_window.cpp" line="507" />
         <source>Help for self-learners: every G and M code with an example</source>
         <translation>ระบบช่วยเหลือสำหรับผู้เรียนด้วยตนเอง: รหัส G และ M ทุกตัวพร้อมตัวอย่าง</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="503" />
+        <location filename="../src/gui/main_window.cpp" line="508" />
         <source>Toggle &amp;Language (ไทย/English)</source>
         <translation>เปลี่ยนภาษา (ไทย/English) (&amp;L)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="503" />
+        <location filename="../src/gui/main_window.cpp" line="508" />
         <source>Switch between Thai and English</source>
         <translation>สลับระหว่างภาษาไทยและภาษาอังกฤษ</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="504" />
+        <location filename="../src/gui/main_window.cpp" line="509" />
         <source>&amp;About Klueng</source>
         <translation>เกี่ยวกับโปรแกรมกลึง (&amp;A)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="509" />
+        <location filename="../src/gui/main_window.cpp" line="511" />
         <source>File tool bar</source>
         <translation>แถบเครื่องมือแฟ้ม</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="510" />
+        <location filename="../src/gui/main_window.cpp" line="512" />
         <source>Edit tool bar</source>
         <translation>แถบเครื่องมือแก้ไข</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="511" />
+        <location filename="../src/gui/main_window.cpp" line="513" />
         <source>Run tool bar</source>
         <translation>แถบเครื่องมือการทำงาน</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="512" />
+        <location filename="../src/gui/main_window.cpp" line="514" />
         <source>Help tool bar</source>
         <translation>แถบเครื่องมือช่วยเหลือ</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="513" />
-        <source>Speed:</source>
-        <translation>ความเร็ว:</translation>
-    </message>
-    <message>
-        <location filename="../src/gui/main_window.cpp" line="514" />
-        <source>Animation speed: slow motion, real machine time, or as fast as possible</source>
-        <translation>ความเร็วการจำลอง: ช้า, เวลาจริงของเครื่อง หรือเร็วที่สุด</translation>
-    </message>
-    <message>
-        <location filename="../src/gui/main_window.cpp" line="584" />
+        <location filename="../src/gui/main_window.cpp" line="585" />
         <source>Klueng : %1[*]</source>
         <translation>Klueng : %1[*]</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="593" />
+        <location filename="../src/gui/main_window.cpp" line="594" />
         <source>Unsaved changes</source>
         <translation>มีการแก้ไขที่ยังไม่บันทึก</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="594" />
+        <location filename="../src/gui/main_window.cpp" line="595" />
         <source>The program "%1" has been changed.</source>
         <translation>ชุดรหัสสั่งการทำงาน "%1" ถูกแก้ไข</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="595" />
+        <location filename="../src/gui/main_window.cpp" line="596" />
         <source>Do you want to save your changes?</source>
         <translation>ต้องการบันทึกการแก้ไขหรือไม่?</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="597" />
+        <location filename="../src/gui/main_window.cpp" line="598" />
         <source>&amp;Discard</source>
         <translation>ไม่บันทึก (&amp;D)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="598" />
+        <location filename="../src/gui/main_window.cpp" line="599" />
         <source>Cancel</source>
         <translation>ยกเลิก</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="629" />
+        <location filename="../src/gui/main_window.cpp" line="636" />
         <source>Open program</source>
         <translation>เปิดชุดรหัสสั่งการทำงาน</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="629" />
+        <location filename="../src/gui/main_window.cpp" line="636" />
         <source>Lathe programs (*.txt *.nc *.tap *.cnc *.gc);;All files (*)</source>
         <translation>ชุดรหัสสั่งการทำงานเครื่องกลึง (*.txt *.nc *.tap *.cnc *.gc);;ทุกแฟ้ม (*)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="665" />
+        <location filename="../src/gui/main_window.cpp" line="672" />
         <source>Cannot open the program</source>
         <translation>เปิดชุดรหัสสั่งการทำงานไม่ได้</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="666" />
+        <location filename="../src/gui/main_window.cpp" line="673" />
         <source>"%1" could not be read.</source>
         <translation>อ่านแฟ้ม "%1" ไม่ได้</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="704" />
+        <location filename="../src/gui/main_window.cpp" line="754" />
         <source>Save program as</source>
         <translation>บันทึกชุดรหัสสั่งการทำงานเป็น</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="705" />
+        <location filename="../src/gui/main_window.cpp" line="755" />
         <source>Lathe programs (*.txt *.nc);;All files (*)</source>
         <translation>ชุดรหัสสั่งการทำงานเครื่องกลึง (*.txt *.nc);;ทุกแฟ้ม (*)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="716" />
+        <location filename="../src/gui/main_window.cpp" line="766" />
         <source>Cannot save the program</source>
         <translation>บันทึกชุดรหัสสั่งการทำงานไม่ได้</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="717" />
+        <location filename="../src/gui/main_window.cpp" line="767" />
         <source>"%1" could not be written:
 %2</source>
         <translation>เขียนแฟ้ม "%1" ไม่ได้:
 %2</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="726" />
+        <location filename="../src/gui/main_window.cpp" line="776" />
         <source>Saved %1</source>
         <translation>บันทึก %1 แล้ว</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="746" />
+        <location filename="../src/gui/main_window.cpp" line="796" />
         <source>File changed on disk</source>
         <translation>แฟ้มถูกเปลี่ยนแปลงบนดิสก์</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="747" />
+        <location filename="../src/gui/main_window.cpp" line="797" />
         <source>"%1" was changed by another program.</source>
         <translation>แฟ้ม "%1" ถูกแก้ไขโดยโปรแกรมอื่น</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="748" />
+        <location filename="../src/gui/main_window.cpp" line="798" />
         <source>Reload it and lose your changes here?</source>
         <translation>โหลดแฟ้มใหม่และทิ้งการแก้ไขในโปรแกรมนี้หรือไม่?</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="748" />
+        <location filename="../src/gui/main_window.cpp" line="798" />
         <source>Reload it?</source>
         <translation>โหลดแฟ้มใหม่หรือไม่?</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="749" />
+        <location filename="../src/gui/main_window.cpp" line="799" />
         <source>&amp;Reload</source>
         <translation>โหลดใหม่ (&amp;R)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="750" />
+        <location filename="../src/gui/main_window.cpp" line="800" />
         <source>&amp;Keep mine</source>
         <translation>ใช้ของฉัน (&amp;K)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="770" />
+        <location filename="../src/gui/main_window.cpp" line="820" />
         <source>(none)</source>
         <translation>(ไม่มี)</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="912" />
+        <location filename="../src/gui/main_window.cpp" line="963" />
         <source>Alarm %1 on line %2: %3</source>
         <translation>สัญญาณเตือน %1 ที่บรรทัด %2: %3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../src/gui/main_window.cpp" line="922" />
+        <location filename="../src/gui/main_window.cpp" line="973" />
         <source>The program has %n error(s); fix them before running. Click an error below to go to it.</source>
         <translation><numerusform>ชุดรหัสสั่งการทำงานมีข้อผิดพลาด %n รายการ ต้องแก้ไขก่อนจึงจะเริ่มทำงานได้ คลิกข้อผิดพลาดด้านล่างเพื่อไปยังตำแหน่งนั้น</numerusform></translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="969" />
+        <location filename="../src/gui/main_window.cpp" line="1020" />
         <source>Go to Line</source>
         <translation>ไปยังบรรทัด</translation>
     </message>
     <message>
-        <location filename="../src/gui/main_window.cpp" line="969" />
+        <location filename="../src/gui/main_window.cpp" line="1020" />
         <source>Line (%1-%2):</source>
         <translation>บรรทัด (%1-%2):</translation>
     </message>
