@@ -9,6 +9,7 @@
 #include "klueng/core/cut/cut_simulator.h"
 #include "klueng/core/cut/finished_part.h"
 #include "klueng/core/cut/section_image.h"
+#include "cli_common.h"
 
 namespace klueng::cli {
 
@@ -16,22 +17,7 @@ using namespace klueng::core;
 
 namespace {
 
-std::string jsonString(const std::string& s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\r': out += "\\r"; break;
-      case '\t': out += "\\t"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) out += fmt::format("\\u{:04x}", static_cast<int>(c));
-        else out += c;
-    }
-  }
-  return out + "\"";
-}
+std::string jsonString(const std::string& s) { return "\"" + jsonEscape(s) + "\""; }
 
 std::string jsonDiagnostic(const Diagnostic& d) {
   std::string args;
