@@ -12,6 +12,7 @@
 #include <QStandardPaths>
 #include <QTableView>
 #include <QTemporaryDir>
+#include <QTextBrowser>
 #include <QTest>
 #include <QTextBlock>
 #include <QTimer>
@@ -20,6 +21,7 @@
 #include "gui/diagnostics_panel.h"
 #include "gui/find_dialog.h"
 #include "gui/gcode_highlighter.h"
+#include "gui/help_contents.h"
 #include "gui/language.h"
 #include "gui/main_window.h"
 #include "gui/resources.h"
@@ -351,6 +353,27 @@ class MainWindowTest : public QObject {
     Language::instance()->setLanguage(QStringLiteral("th"));
     QVERIFY(w.editor()->helpForPosition(5).contains(
         QString::fromUtf8(g01->nameTh.data(), static_cast<qsizetype>(g01->nameTh.size()))));
+  }
+
+  void helpContentsListsEveryCodeInBothLanguages() {
+    MainWindow w;
+    w.show();
+    w.action(QStringLiteral("actionContents"))->trigger();
+    auto* help = w.findChild<HelpContents*>();
+    QVERIFY(help && help->isVisible());
+    const QString page = help->browser()->toPlainText();
+    int codes = 0;
+    for (const auto& c : core::gcode::codeTable()) {
+      const QString word = QStringLiteral("%1%2").arg(QLatin1Char(c.letter)).arg(c.number, 2, 10, QLatin1Char('0'));
+      QVERIFY2(page.contains(word), qPrintable(word));
+      QVERIFY(page.contains(QString::fromUtf8(c.nameEn.data(), static_cast<qsizetype>(c.nameEn.size()))));
+      QVERIFY(page.contains(QString::fromUtf8(c.nameTh.data(), static_cast<qsizetype>(c.nameTh.size()))));
+      ++codes;
+    }
+    QVERIFY(codes > 30);
+    QVERIFY(page.contains(QStringLiteral("G codes")));
+    w.action(QStringLiteral("actionToggleLanguage"))->trigger();
+    QTRY_VERIFY(help->browser()->toPlainText().contains(QStringLiteral("รหัส G")));
   }
 
   void highlighterColoursWordKinds() {
