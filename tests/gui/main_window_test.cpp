@@ -11,6 +11,7 @@
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTableView>
+#include <QSplitter>
 #include <QTemporaryDir>
 #include <QTextBrowser>
 #include <QTest>
@@ -353,6 +354,30 @@ class MainWindowTest : public QObject {
     Language::instance()->setLanguage(QStringLiteral("th"));
     QVERIFY(w.editor()->helpForPosition(5).contains(
         QString::fromUtf8(g01->nameTh.data(), static_cast<qsizetype>(g01->nameTh.size()))));
+  }
+
+  void layoutAndSettingsAreRemembered() {
+    QList<int> sizes;
+    {
+      MainWindow w;
+      w.resize(1200, 760);
+      w.show();
+      QVERIFY(QTest::qWaitForWindowExposed(&w));
+      w.splitter()->setSizes({300, 880});
+      sizes = w.splitter()->sizes();
+      w.setDialect(core::gcode::Dialect::Classic);
+      w.action(QStringLiteral("actionOptionalStop"))->setChecked(true);
+      QVERIFY(w.close());
+    }
+    MainWindow again;
+    again.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&again));
+    QCOMPARE(again.size(), QSize(1200, 760));
+    QCOMPARE(again.splitter()->sizes(), sizes);
+    QCOMPARE(again.dialect(), core::gcode::Dialect::Classic);
+    QVERIFY(again.action(QStringLiteral("actionDialectClassic"))->isChecked());
+    QVERIFY(again.action(QStringLiteral("actionOptionalStop"))->isChecked());
+    QVERIFY(again.runController()->optionalStop());
   }
 
   void helpContentsListsEveryCodeInBothLanguages() {
