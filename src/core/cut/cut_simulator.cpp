@@ -1,6 +1,7 @@
 #include "klueng/core/cut/cut_simulator.h"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <numbers>
 
@@ -298,11 +299,17 @@ void forEachInterval(const SweepContext& c, const std::vector<std::pair<Vec2, Ve
   }
 }
 
+// Columns whose centres lie outside (zMin, zMax) are not counted: a rapid
+// retract may shave the sliver a tool's flank leaves beside a shoulder.
 bool overlapsStock(const SweepContext& c, const std::vector<std::pair<Vec2, Vec2>>& nosePieces,
-                   const std::vector<std::pair<Vec2, Vec2>>& boxPieces, bool holder) {
+                   const std::vector<std::pair<Vec2, Vec2>>& boxPieces, bool holder,
+                   double zMin = -std::numeric_limits<double>::infinity(),
+                   double zMax = std::numeric_limits<double>::infinity()) {
   bool hit = false;
   forEachInterval(c, nosePieces, boxPieces, holder, [&](int i, double lo, double hi) {
-    if (!hit && c.stock->overlap(i, lo, hi) > c.tolerance) hit = true;
+    if (hit) return;
+    const double z = c.stock->zCentre(i);
+    if (z > zMin && z < zMax && c.stock->overlap(i, lo, hi) > c.tolerance) hit = true;
   });
   return hit;
 }
@@ -407,16 +414,23 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
   const bool cutting = m.kind != MoveKind::Rapid && m.spindle != machine::SpindleDir::Stopped;
   if (!cutting) {
     if (!options_.detectCollisions) return;
-    // Rapids and a stopped spindle must not touch the material at all.
-    if (overlapsStock(ctx, nosePieces, boxPieces, false) || overlapsStock(ctx, nosePieces, boxPieces, true)) {
+    // Rapids and a stopped spindle must not touch the material, except for
+    // grazing: a sliver within rapidFlankAllowance of the tool's left or right
+    // side, as when G00 X retracts straight up beside a shoulder just turned.
+    const double zMin = swept.z0 + options_.rapidFlankAllowance;
+    const double zMax = swept.z1 - options_.rapidFlankAllowance;
+    auto touches = [&](const auto& n, const auto& b, bool holder) {
+      return overlapsStock(ctx, n, b, holder, zMin, zMax);
+    };
+    if (touches(nosePieces, boxPieces, false) || touches(nosePieces, boxPieces, true)) {
       const double s = earliest([&](double e) {
         const auto n = nose(s0, e);
         const auto b = boxes(s0, e);
-        return overlapsStock(ctx, n, b, false) || overlapsStock(ctx, n, b, true);
+        return touches(n, b, false) || touches(n, b, true);
       });
       const auto n = nose(s0, s);
       const auto b = boxes(s0, s);
-      const bool edge = overlapsStock(ctx, n, b, false);
+      const bool edge = touches(n, b, false);
       raise(m.kind == MoveKind::Rapid ? "A301" : (edge ? "A302" : "A303"), s);
     }
     return;

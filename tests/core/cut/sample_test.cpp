@@ -259,3 +259,33 @@ TEST(Crash, CutWithTheSpindleStopped) {
 
 }  // namespace
 }  // namespace klueng::core::cut
+
+namespace klueng::core::cut {
+namespace {
+
+// Turning to a shoulder and retracting straight up with G00, as most lathe
+// programs do: the tool's flank leaves a sliver beside the shoulder (the
+// shipped tool 01's left edge leans about 8 degrees), which the rapid shaves.
+// That is grazing (SPEC 8), not a crash.
+TEST(Crash, RapidRetractBesideAShoulderJustTurnedIsGrazing) {
+  const std::string text = std::string(kHeader) +
+                           "N10 G21 G97 G99 S1000 M03\nN20 T0101\nN30 G00 X52. Z2.\nN40 X40.\n"
+                           "N50 G01 Z-30. F0.2\nN60 G00 X52.\nN70 Z2.\nN80 M30\n";
+  const Cut c = cutProgram(text);
+  ASSERT_FALSE(c.run.timeline.alarm.has_value());
+  EXPECT_FALSE(c.sim->alarm().has_value()) << c.sim->alarm()->code << " on line " << c.sim->alarm()->range.line;
+}
+
+// The same retract 1 mm to the left of the shoulder runs into it: a crash.
+TEST(Crash, RapidRetractIntoTheShoulderIsStillACrash) {
+  const std::string text = std::string(kHeader) +
+                           "N10 G21 G97 G99 S1000 M03\nN20 T0101\nN30 G00 X52. Z2.\nN40 X40.\n"
+                           "N50 G01 Z-30. F0.2\nN60 G00 X40. Z-31.\nN70 G00 X52.\nN80 M30\n";
+  const Cut c = cutProgram(text);
+  ASSERT_TRUE(c.sim->alarm().has_value());
+  EXPECT_EQ(c.sim->alarm()->code, "A301");
+  EXPECT_EQ(c.sim->alarm()->range.line, lineOf(text, "N60 "));
+}
+
+}  // namespace
+}  // namespace klueng::core::cut

@@ -42,6 +42,10 @@ namespace klueng::core::cut {
 struct CutOptions {
   double resolution = kDefaultResolution;  // stock column width along Z, mm
   double collisionTolerance = 0.001;       // mm of overlap that still counts as grazing
+  // Width (Z) of material beside the tool's left and right sides that a rapid
+  // or a stopped-spindle move may shave without a crash alarm: the wedge a
+  // 95-degree tool's flank leaves at a shoulder, which G00 X retracts touch.
+  double rapidFlankAllowance = 0.5;
   bool detectCollisions = true;
 };
 
