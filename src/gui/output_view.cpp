@@ -6,6 +6,7 @@
 #include <QPainter>
 #include <QScrollBar>
 #include <QWheelEvent>
+#include <algorithm>
 #include <cmath>
 
 #include "gui/output_items.h"
@@ -86,6 +87,16 @@ QRectF OutputView::contentRect() const {
   return r;
 }
 
+// What "fit" shows: the bar, the chuck and where the tool cuts, with room for
+// the tool above and to the right, not the whole travel from the start point
+// (which would shrink the part to a few pixels).
+QRectF OutputView::fitRect() const {
+  QRectF r = stock_->boundingRect().united(chuck_->boundingRect());
+  if (!cutBounds_.isNull()) r = r.united(cutBounds_);
+  const double room = std::clamp(0.35 * std::max(r.width(), r.height()), 20.0, 80.0);
+  return r.adjusted(0, -room, room, room);
+}
+
 void OutputView::clearTrail() {
   for (TrailItem* t : trail_) {
     scene()->removeItem(t);
@@ -99,6 +110,7 @@ void OutputView::clearTrail() {
 void OutputView::rebuild() {
   clearTrail();
   pathBounds_ = QRectF();
+  cutBounds_ = QRectF();
   core::io::JobHeader header;
   core::io::MachineConfig machineCfg;
   if (controller_) {
@@ -111,7 +123,10 @@ void OutputView::rebuild() {
                        : render::chuckFor(header.diameterMm(), header.lengthMm(), machineCfg.chuckGrip, machineCfg.chuckJawHeight));
   if (const auto* tl = controller_ ? controller_->timeline() : nullptr) {
     for (const auto& m : tl->moves)
-      if (m.kind != core::machine::MoveKind::Dwell) pathBounds_ = pathBounds_.united(segmentRect(m.path));
+      if (m.kind != core::machine::MoveKind::Dwell) {
+        pathBounds_ = pathBounds_.united(segmentRect(m.path));
+        if (m.kind != core::machine::MoveKind::Rapid) cutBounds_ = cutBounds_.united(segmentRect(m.path));
+      }
   }
   lastToolPos_ = render::toScene(core::zx(machineCfg.startZ, machineCfg.startX / 2.0));
   tool_->setSprite(render::ToolSprite(), nullptr);
@@ -199,7 +214,7 @@ void OutputView::updateFrame() {
 }
 
 void OutputView::fitToView() {
-  const QRectF content = contentRect();
+  const QRectF content = fitRect();
   if (content.isEmpty() || viewport()->width() < 10) return;
   fitInView(content.adjusted(-content.width() * 0.04, -content.height() * 0.08, content.width() * 0.04,
                              content.height() * 0.08),

@@ -84,6 +84,7 @@ class OutputView : public QGraphicsView {
   void clearTrail();
   void appendTrail(double time);
   QRectF contentRect() const;
+  QRectF fitRect() const;
 
   QPointer<RunController> controller_;
   OutputRuler* xRuler_ = nullptr;  // vertical ruler at the left: X (diameter)
@@ -97,6 +98,7 @@ class OutputView : public QGraphicsView {
   int trailMoves_ = 0;              // timeline moves already in the trail
   double trailTime_ = 0.0;
   QRectF pathBounds_;
+  QRectF cutBounds_;  // feed moves only: what fit-to-view frames
   QPointF lastToolPos_;
   bool showPath_ = true;
   bool fitPending_ = true;
