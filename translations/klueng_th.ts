@@ -783,5 +783,100 @@
         <source>Line (%1-%2):</source>
         <translation>บรรทัด (%1-%2):</translation>
     </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="0" />
+        <source>&amp;Print Code...</source>
+        <translation>พิมพ์ชุดรหัสสั่งการทำงาน... (&amp;P)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="0" />
+        <source>Print the program sheet: job details and the numbered program</source>
+        <translation>พิมพ์เอกสารชุดรหัสสั่งการทำงาน: รายละเอียดงานและโปรแกรมพร้อมเลขบรรทัด</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="0" />
+        <source>Print</source>
+        <translation>พิมพ์</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="0" />
+        <source>Print the program sheet at once on the default printer</source>
+        <translation>พิมพ์เอกสารชุดรหัสสั่งการทำงานทันทีที่เครื่องพิมพ์หลัก</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="0" />
+        <source>Print &amp;Drawing...</source>
+        <translation>พิมพ์ภาพชิ้นงาน... (&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="0" />
+        <source>Print the finished part to scale with its title block</source>
+        <translation>พิมพ์ภาพชิ้นงานที่กลึงเสร็จตามมาตราส่วน พร้อมตารางรายละเอียดงาน</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="0" />
+        <source>Print Pre&amp;view...</source>
+        <translation>ดูตัวอย่างก่อนพิมพ์... (&amp;V)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="0" />
+        <source>Preview the program sheet and the drawing sheet</source>
+        <translation>ดูตัวอย่างเอกสารชุดรหัสสั่งการทำงานและเอกสารแสดงภาพชิ้นงาน</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="0" />
+        <source>&amp;Export PDF...</source>
+        <translation>ส่งออกเป็น PDF... (&amp;E)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="0" />
+        <source>Save the program sheet and the drawing sheet as a PDF file</source>
+        <translation>บันทึกเอกสารชุดรหัสสั่งการทำงานและเอกสารแสดงภาพชิ้นงานเป็นไฟล์ PDF</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="0" />
+        <source>Print Code</source>
+        <translation>พิมพ์ชุดรหัสสั่งการทำงาน</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="0" />
+        <source>No printer is set up: use File &gt; Export PDF to save the sheet.</source>
+        <translation>ยังไม่ได้ตั้งค่าเครื่องพิมพ์: ใช้ แฟ้ม &gt; ส่งออกเป็น PDF เพื่อบันทึกเอกสาร</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="0" />
+        <source>Program sheet sent to %1</source>
+        <translation>ส่งเอกสารชุดรหัสสั่งการทำงานไปที่ %1 แล้ว</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="0" />
+        <source>Print Drawing</source>
+        <translation>พิมพ์ภาพชิ้นงาน</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="0" />
+        <source>Print Preview</source>
+        <translation>ดูตัวอย่างก่อนพิมพ์</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="0" />
+        <source>Export PDF</source>
+        <translation>ส่งออกเป็น PDF</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="0" />
+        <source>PDF files (*.pdf)</source>
+        <translation>ไฟล์ PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="0" />
+        <source>Cannot write %1</source>
+        <translation>เขียนไฟล์ %1 ไม่ได้</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="0" />
+        <source>Exported %1</source>
+        <translation>ส่งออก %1 แล้ว</translation>
+    </message>
 </context>
 </TS>

@@ -15,6 +15,12 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
+#include <QPageSize>
+#include <QPdfWriter>
+#include <QPrintDialog>
+#include <QPrintPreviewDialog>
+#include <QPrinter>
+#include <QPrinterInfo>
 #include <QPushButton>
 #include <QSplitter>
 #include <QStatusBar>
@@ -221,6 +227,12 @@ void MainWindow::createActions() {
           &MainWindow::saveAs);
   connect(make("actionJobDetails", "job", QKeySequence(QStringLiteral("Ctrl+J"))), &QAction::triggered, this,
           &MainWindow::showJobDetails);
+  connect(make("actionPrintCode", "print", QKeySequence::Print), &QAction::triggered, this, &MainWindow::printCode);
+  connect(make("actionPrint", "print"), &QAction::triggered, this, &MainWindow::printCodeNow);
+  connect(make("actionPrintDrawing", "print-drawing", QKeySequence(QStringLiteral("Ctrl+Shift+P"))), &QAction::triggered,
+          this, &MainWindow::printDrawing);
+  connect(make("actionPrintPreview", "print-preview"), &QAction::triggered, this, &MainWindow::printPreview);
+  connect(make("actionExportPdf", "export-pdf"), &QAction::triggered, this, [this] { exportPdf(); });
   auto* quit = make("actionExit", "exit", QKeySequence(QStringLiteral("Ctrl+Q")));
   quit->setMenuRole(QAction::QuitRole);
   connect(quit, &QAction::triggered, this, &QWidget::close);
@@ -362,6 +374,11 @@ void MainWindow::createMenus() {
   fileMenu_->addSeparator();
   fileMenu_->addAction(action(QStringLiteral("actionJobDetails")));
   fileMenu_->addSeparator();
+  fileMenu_->addAction(action(QStringLiteral("actionPrintCode")));
+  fileMenu_->addAction(action(QStringLiteral("actionPrintDrawing")));
+  fileMenu_->addAction(action(QStringLiteral("actionPrintPreview")));
+  fileMenu_->addAction(action(QStringLiteral("actionExportPdf")));
+  fileMenu_->addSeparator();
   fileMenu_->addAction(action(QStringLiteral("actionExit")));
 
   editMenu_ = menuBar()->addMenu(QString());
@@ -413,7 +430,7 @@ void MainWindow::createToolBars() {
     return t;
   };
   fileToolBar_ = bar("fileToolBar");
-  for (const char* n : {"actionNew", "actionOpen", "actionSave"}) fileToolBar_->addAction(action(QString::fromLatin1(n)));
+  for (const char* n : {"actionNew", "actionOpen", "actionSave", "actionPrint"}) fileToolBar_->addAction(action(QString::fromLatin1(n)));
   editToolBar_ = bar("editToolBar");
   for (const char* n : std::initializer_list<const char*>{"actionUndo", "actionCut", "actionCopy", "actionPaste", "actionDelete", "actionFind"})
     editToolBar_->addAction(action(QString::fromLatin1(n)));
@@ -474,6 +491,11 @@ void MainWindow::retranslateUi() {
   set("actionSave", tr("&Save"), tr("Save the program"));
   set("actionSaveAs", tr("Save &As..."), tr("Save the program under a new name"));
   set("actionJobDetails", tr("&Job details..."), tr("Project, part, material, stock size and programmer"));
+  set("actionPrintCode", tr("&Print Code..."), tr("Print the program sheet: job details and the numbered program"));
+  set("actionPrint", tr("Print"), tr("Print the program sheet at once on the default printer"));
+  set("actionPrintDrawing", tr("Print &Drawing..."), tr("Print the finished part to scale with its title block"));
+  set("actionPrintPreview", tr("Print Pre&view..."), tr("Preview the program sheet and the drawing sheet"));
+  set("actionExportPdf", tr("&Export PDF..."), tr("Save the program sheet and the drawing sheet as a PDF file"));
   set("actionExit", tr("E&xit"));
   set("actionUndo", tr("&Undo"));
   set("actionRedo", tr("&Redo"));
@@ -995,6 +1017,121 @@ void MainWindow::hideBanner() {
 QString MainWindow::bannerText() const { return banner_->isVisible() ? bannerLabel_->text() : QString(); }
 
 // ---------------------------------------------------------------- dialogs
+
+// ---------------------------------------------------------------- reports
+
+render::ReportData MainWindow::reportData(bool withPart) const {
+  const render::ReportLanguage lang =
+      Language::instance()->isThai() ? render::ReportLanguage::Thai : render::ReportLanguage::English;
+  render::ReportData data;
+  data.program = currentProgramFile();
+  data.fileName = document_->displayName();
+  data.date = QDate::currentDate();
+  if (withPart) {
+    QApplication::setOverrideCursor(Qt::WaitCursor);
+    data.part = render::finishedPart(data.program, setup_, dialect_, lang, &data.partNote);
+    QApplication::restoreOverrideCursor();
+  }
+  return data;
+}
+
+void MainWindow::paintReports(QPainter& painter, QPagedPaintDevice& device, const render::ReportData& data, bool code,
+                              bool drawing) {
+  const render::ReportLanguage lang =
+      Language::instance()->isThai() ? render::ReportLanguage::Thai : render::ReportLanguage::English;
+  if (code) render::paintProgramSheet(painter, device, data, lang);
+  if (code && drawing) device.newPage();
+  if (drawing) render::paintDrawingSheet(painter, device, data, lang);
+}
+
+namespace {
+void preparePrinter(QPrinter& printer, const QString& title) {
+  printer.setDocName(title);
+  printer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
+}
+}  // namespace
+
+void MainWindow::printCode() {
+  QPrinter printer(QPrinter::HighResolution);
+  preparePrinter(printer, document_->displayName());
+  QPrintDialog dialog(&printer, this);
+  dialog.setWindowTitle(tr("Print Code"));
+  if (dialog.exec() != QDialog::Accepted) return;
+  const render::ReportData data = reportData(false);
+  QPainter painter(&printer);
+  paintReports(painter, printer, data, true, false);
+}
+
+void MainWindow::printCodeNow() {
+  const QPrinterInfo info = QPrinterInfo::defaultPrinter();
+  if (info.isNull()) {
+    statusBar()->showMessage(tr("No printer is set up: use File > Export PDF to save the sheet."), 5000);
+    return;
+  }
+  QPrinter printer(info, QPrinter::HighResolution);
+  preparePrinter(printer, document_->displayName());
+  const render::ReportData data = reportData(false);
+  QPainter painter(&printer);
+  paintReports(painter, printer, data, true, false);
+  statusBar()->showMessage(tr("Program sheet sent to %1").arg(info.printerName()), 3000);
+}
+
+void MainWindow::printDrawing() {
+  QPrinter printer(QPrinter::HighResolution);
+  preparePrinter(printer, document_->displayName());
+  printer.setPageOrientation(QPageLayout::Landscape);   // a shaft is long: landscape fits it larger
+  QPrintDialog dialog(&printer, this);
+  dialog.setWindowTitle(tr("Print Drawing"));
+  if (dialog.exec() != QDialog::Accepted) return;
+  const render::ReportData data = reportData(true);
+  QPainter painter(&printer);
+  paintReports(painter, printer, data, false, true);
+}
+
+void MainWindow::printPreview() {
+  QPrinter printer(QPrinter::HighResolution);
+  preparePrinter(printer, document_->displayName());
+  const render::ReportData data = reportData(true);
+  QPrintPreviewDialog dialog(&printer, this);
+  dialog.setWindowTitle(tr("Print Preview"));
+  connect(&dialog, &QPrintPreviewDialog::paintRequested, this, [this, &data](QPrinter* p) {
+    QPainter painter(p);
+    paintReports(painter, *p, data, true, true);
+  });
+  dialog.exec();
+}
+
+bool MainWindow::exportPdf(const QString& path) {
+  QString target = path;
+  if (target.isEmpty()) {
+    const QFileInfo source(document_->isUntitled() ? document_->displayName() : document_->filePath());
+    target = QFileDialog::getSaveFileName(this, tr("Export PDF"),
+                                          source.dir().filePath(source.completeBaseName() + QStringLiteral(".pdf")),
+                                          tr("PDF files (*.pdf)"));
+    if (target.isEmpty()) return false;
+  }
+  const render::ReportData data = reportData(true);
+  QPdfWriter writer(target);
+  writer.setTitle(document_->displayName());
+  writer.setCreator(render::kluengVersion());
+  writer.setResolution(600);
+  writer.setPageSize(QPageSize(QPageSize::A4));
+  writer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
+  QPainter painter;
+  if (!painter.begin(&writer)) {
+    QMessageBox::warning(this, tr("Export PDF"), tr("Cannot write %1").arg(QDir::toNativeSeparators(target)));
+    return false;
+  }
+  const render::ReportLanguage lang =
+      Language::instance()->isThai() ? render::ReportLanguage::Thai : render::ReportLanguage::English;
+  render::paintProgramSheet(painter, writer, data, lang);
+  writer.setPageOrientation(QPageLayout::Landscape);   // takes effect on the next page: the drawing
+  writer.newPage();
+  render::paintDrawingSheet(painter, writer, data, lang);
+  painter.end();
+  statusBar()->showMessage(tr("Exported %1").arg(QDir::toNativeSeparators(target)), 3000);
+  return true;
+}
 
 void MainWindow::showJobDetails() {
   JobDetailsDialog dlg(document_->header(), this);

@@ -15,6 +15,7 @@
 #include "gui/run_controller.h"
 #include "klueng/core/gcode/code_table.h"
 #include "klueng/core/machine/interpreter.h"
+#include "render/report_sheets.h"
 
 class QAction;
 class QActionGroup;
@@ -79,6 +80,12 @@ class MainWindow : public QMainWindow {
   bool save();
   bool saveAs();
   void showJobDetails();
+  // Reports (SPEC 12): the program sheet and the drawing sheet, in the UI's language.
+  void printCode();        // File > Print Code: printer dialog
+  void printCodeNow();     // tool bar Print: the default printer, no dialog
+  void printDrawing();
+  void printPreview();     // both sheets
+  bool exportPdf(const QString& path = {});   // both sheets; asks for a path when empty
   void showFind();
   void goToLine();
   void toggleBreakpoint();
@@ -132,6 +139,10 @@ class MainWindow : public QMainWindow {
   // Hand the editor's current text to the run controller (before a run).
   void syncRunner();
   core::io::ProgramFile currentProgramFile() const;
+  render::ReportData reportData(bool withPart) const;
+  // Paints the chosen sheets on `device` (painter active); a new page between them.
+  void paintReports(QPainter& painter, QPagedPaintDevice& device, const render::ReportData& data, bool code,
+                    bool drawing);
   void onRunStateChanged(RunState state);
   void onAlarm(const core::Diagnostic& alarm);
   void onCheckFailed(const QList<core::Diagnostic>& diags);

@@ -1,0 +1,454 @@
+#include "render/report_sheets.h"
+
+#include <QFontMetricsF>
+#include <QPen>
+#include <QStringList>
+#include <QTextLayout>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "klueng/core/cut/cut_simulator.h"
+#include "klueng/core/gcode/checker.h"
+#include "klueng/core/gcode/parser.h"
+
+#ifndef KLUENG_VERSION
+#define KLUENG_VERSION "0"
+#endif
+
+namespace klueng::render {
+namespace {
+
+bool thai(ReportLanguage lang) { return lang == ReportLanguage::Thai; }
+
+// The texts of SPEC 12 (and GLOSSARY.md), fixed per sheet language.
+struct Texts {
+  QString programTitle, page, project, material, part, diameter, programmer, length;
+  QString drawingTitle, date, fileName, version, scale, untitled;
+};
+
+const Texts& texts(ReportLanguage lang) {
+  static const Texts english{
+      QStringLiteral("CNC Program Sheet"), QStringLiteral("Page %1"), QStringLiteral("Project"),
+      QStringLiteral("Material"), QStringLiteral("Part"), QStringLiteral("Diameter (mm.)"),
+      QStringLiteral("Programmer"), QStringLiteral("Length (mm.)"), QStringLiteral("Part Drawing"),
+      QStringLiteral("Date"), QStringLiteral("Program"), QStringLiteral("Version"), QStringLiteral("Scale"),
+      QStringLiteral("Untitled")};
+  static const Texts thaiTexts{
+      QStringLiteral("ชุดรหัสสั่งการทำงาน"), QStringLiteral("หน้าที่ %1"), QStringLiteral("ชื่องาน"),
+      QStringLiteral("วัสดุ"), QStringLiteral("ชิ้นงาน"), QStringLiteral("เส้นผ่าศก. (มม.)"),
+      QStringLiteral("ผู้เขียน"), QStringLiteral("ความยาว (มม.)"), QStringLiteral("เอกสารแสดงภาพชิ้นงาน"),
+      QStringLiteral("วันที่"), QStringLiteral("ไฟล์โปรแกรม"), QStringLiteral("รุ่นโปรแกรม"),
+      QStringLiteral("มาตราส่วน"), QStringLiteral("ไม่มีชื่อ")};
+  return thai(lang) ? thaiTexts : english;
+}
+
+QString number(double v) {
+  QString s = QString::number(v, 'f', 3);
+  while (s.endsWith(QLatin1Char('0'))) s.chop(1);
+  if (s.endsWith(QLatin1Char('.'))) s.chop(1);
+  return s;
+}
+
+QString qs(const std::string& s) { return QString::fromStdString(s); }
+
+QFont reportFont(double points, bool bold = false) {
+  QFont f(QString::fromLatin1(kReportFontFamily));
+  f.setPointSizeF(points);
+  f.setBold(bold);
+  f.setStyleStrategy(QFont::PreferOutline);
+  return f;
+}
+
+QFont monoFont(double points) {
+  QFont f(QString::fromLatin1(kReportMonoFamily));
+  f.setStyleHint(QFont::Monospace);
+  f.setPointSizeF(points);
+  return f;
+}
+
+double pixelsPerMm(const QPaintDevice& device) { return device.logicalDpiX() / 25.4; }
+
+// A pen `mm` wide on paper.
+QPen paperPen(const QPaintDevice& device, double mm, const QColor& colour = Qt::black,
+              Qt::PenStyle style = Qt::SolidLine) {
+  QPen pen(colour, mm * pixelsPerMm(device), style);
+  pen.setCapStyle(Qt::FlatCap);
+  return pen;
+}
+
+// One printed row of the listing: a file line, or the continuation of a long one.
+struct ListingRow {
+  int fileLine = 0;   // 0 for a continuation row
+  QString text;
+};
+
+std::vector<ListingRow> listingRows(const core::io::ProgramFile& file, const QFont& font, QPaintDevice* device,
+                                    double textWidth) {
+  QString code = qs(file.gcode);
+  if (code.endsWith(QLatin1Char('\n'))) code.chop(1);
+  const QStringList lines = code.split(QLatin1Char('\n'));
+  std::vector<ListingRow> rows;
+  rows.reserve(static_cast<std::size_t>(lines.size()));
+  const QFontMetricsF fm(font, device);
+  for (int i = 0; i < lines.size(); ++i) {
+    QString line = lines[i];
+    line.replace(QLatin1Char('\t'), QStringLiteral("    "));
+    const int fileLine = file.gcodeFirstLine + i;
+    if (fm.horizontalAdvance(line) <= textWidth) {
+      rows.push_back({fileLine, line});
+      continue;
+    }
+    // Long lines wrap (a printout never drops code).
+    QTextLayout layout(line, font, device);
+    QTextOption option;
+    option.setWrapMode(QTextOption::WrapAtWordBoundaryOrAnywhere);
+    layout.setTextOption(option);
+    layout.beginLayout();
+    bool first = true;
+    for (QTextLine tl = layout.createLine(); tl.isValid(); tl = layout.createLine()) {
+      tl.setLineWidth(textWidth);
+      rows.push_back({first ? fileLine : 0, line.mid(tl.textStart(), tl.textLength())});
+      first = false;
+    }
+    layout.endLayout();
+  }
+  return rows;
+}
+
+// Draws `text` in `rect`, shrinking the font until it fits the width.
+void drawFitted(QPainter& painter, const QRectF& rect, const QString& text, QFont font, int flags) {
+  QPaintDevice* device = painter.device();
+  for (int i = 0; i < 8 && QFontMetricsF(font, device).horizontalAdvance(text) > rect.width(); ++i)
+    font.setPointSizeF(font.pointSizeF() * 0.9);
+  painter.setFont(font);
+  const QString shown = QFontMetricsF(font, device).elidedText(text, Qt::ElideRight, rect.width());
+  painter.drawText(rect, flags | Qt::TextSingleLine, shown);
+}
+
+// A label/value cell: small label on the left, value after it.
+void drawField(QPainter& painter, const QRectF& cell, const QString& label, const QString& value, double labelWidth) {
+  const double pad = pixelsPerMm(*painter.device()) * 1.5;
+  const QRectF labelRect(cell.left() + pad, cell.top(), labelWidth - pad, cell.height());
+  const QRectF valueRect(cell.left() + labelWidth, cell.top(), cell.width() - labelWidth - pad, cell.height());
+  painter.setPen(QColor(70, 70, 70));
+  drawFitted(painter, labelRect, label, reportFont(9), Qt::AlignLeft | Qt::AlignVCenter);
+  painter.setPen(Qt::black);
+  drawFitted(painter, valueRect, value, reportFont(10.5, true), Qt::AlignLeft | Qt::AlignVCenter);
+}
+
+}  // namespace
+
+QString reportDate(const QDate& date, ReportLanguage lang) {
+  static const std::array<const char*, 12> english = {"January", "February", "March",     "April",
+                                                      "May",     "June",     "July",      "August",
+                                                      "September", "October", "November", "December"};
+  static const std::array<const char*, 12> thaiMonths = {
+      "มกราคม", "กุมภาพันธ์", "มีนาคม", "เมษายน", "พฤษภาคม", "มิถุนายน",
+      "กรกฎาคม", "สิงหาคม", "กันยายน", "ตุลาคม", "พฤศจิกายน", "ธันวาคม"};
+  if (!date.isValid()) return {};
+  const auto m = static_cast<std::size_t>(date.month() - 1);
+  if (thai(lang))
+    return QStringLiteral("%1 %2 พ.ศ. %3").arg(date.day()).arg(QString::fromUtf8(thaiMonths[m])).arg(date.year() + 543);
+  return QStringLiteral("%1 %2, %3").arg(QString::fromLatin1(english[m])).arg(date.day()).arg(date.year());
+}
+
+QString kluengVersion() { return QStringLiteral("Klueng %1").arg(QString::fromLatin1(KLUENG_VERSION)); }
+
+StockShape finishedPart(const core::io::ProgramFile& file, const core::machine::MachineSetup& setup,
+                        core::gcode::Dialect dialect, ReportLanguage lang, QString* note) {
+  const StockShape blank = stockShapeFromBlank(file.header.diameterMm(), file.header.lengthMm());
+  if (file.header.diameterMm() <= 0 || file.header.lengthMm() <= 0) {
+    if (note) *note = thai(lang) ? QStringLiteral("ขนาดชิ้นงานไม่ถูกต้อง") : QStringLiteral("The stock size is not valid.");
+    return blank;
+  }
+  const core::gcode::Program program = core::gcode::parse(file.gcode, file.gcodeFirstLine);
+  core::gcode::CheckOptions check;
+  check.dialect = dialect;
+  std::vector<int> withBitmap;
+  for (int t = 1; t <= core::io::kToolCount; ++t)
+    if (!setup.tools.bitmap[static_cast<std::size_t>(t - 1)].empty()) withBitmap.push_back(t);
+  if (!withBitmap.empty()) check.toolsWithBitmap = withBitmap;   // no tools.cfg read: not checked
+  if (core::hasErrors(core::gcode::check(program, check))) {
+    if (note)
+      *note = thai(lang) ? QStringLiteral("โปรแกรมมีข้อผิดพลาด: ภาพนี้แสดงชิ้นงานก่อนกลึง")
+                         : QStringLiteral("The program has errors: the drawing shows the uncut bar.");
+    return blank;
+  }
+  core::machine::RunOptions options;
+  options.dialect = dialect;
+  const core::machine::Timeline timeline = core::machine::interpret(program, setup, options);
+  core::cut::CutSimulator cut(timeline, core::cut::CutSetup::from(file.header, setup));
+  cut.runToEnd();
+  if (cut.alarm() && note)
+    *note = thai(lang) ? QStringLiteral("โปรแกรมหยุดด้วยสัญญาณเตือน: ภาพนี้แสดงชิ้นงานจนถึงจุดที่หยุด")
+                       : QStringLiteral("The program stopped on an alarm: the drawing shows the part up to it.");
+  return stockShapeFromStock(cut.stock());
+}
+
+// ------------------------------------------------------------------ program sheet
+
+int paintProgramSheet(QPainter& painter, QPagedPaintDevice& device, const ReportData& data, ReportLanguage lang) {
+  const Texts& t = texts(lang);
+  const double mm = pixelsPerMm(device);
+  const QRectF page(0, 0, device.width(), device.height());
+  const core::io::JobHeader& h = data.program.header;
+
+  const QFont titleFont = reportFont(16, true);
+  const QFont listFont = monoFont(9.5);
+  const QFontMetricsF listMetrics(listFont, &device);
+  const double rowHeight = listMetrics.lineSpacing();
+
+  // Header block: title row, then a 3 x 2 grid of fields (SPEC 12 order, row by row).
+  const double titleHeight = 12 * mm;
+  const double fieldHeight = 8 * mm;
+  const QRectF grid(page.left(), page.top() + titleHeight, page.width(), 3 * fieldHeight);
+  const double listTop = grid.bottom() + 5 * mm;
+  const double footerHeight = 6 * mm;
+  const double listBottom = page.bottom() - footerHeight;
+
+  int lastLine = data.program.gcodeFirstLine;
+  for (char c : data.program.gcode) lastLine += (c == '\n') ? 1 : 0;
+  const QString widest = QString(QString::number(lastLine).size(), QLatin1Char('0'));
+  const double numberWidth = listMetrics.horizontalAdvance(widest);
+  const double textLeft = page.left() + numberWidth + 4 * mm;
+  const std::vector<ListingRow> rows = listingRows(data.program, listFont, &device, page.right() - textLeft);
+  const int rowsPerPage = std::max(1, static_cast<int>((listBottom - listTop) / rowHeight));
+  const int pages = std::max(1, static_cast<int>((rows.size() + static_cast<std::size_t>(rowsPerPage) - 1) /
+                                                 static_cast<std::size_t>(rowsPerPage)));
+
+  const QString fileName = data.fileName.isEmpty() ? t.untitled : data.fileName;
+  const std::array<std::pair<QString, QString>, 6> fields = {{
+      {t.project, qs(h.project)},
+      {t.material, qs(h.material)},
+      {t.part, qs(h.part)},
+      {t.diameter, number(h.diameterMm())},
+      {t.programmer, qs(h.programmer)},
+      {t.length, number(h.lengthMm())},
+  }};
+
+  for (int p = 0; p < pages; ++p) {
+    if (p > 0) device.newPage();
+    painter.save();
+    // Title and page number.
+    painter.setPen(Qt::black);
+    drawFitted(painter, QRectF(page.left(), page.top(), page.width() * 0.7, titleHeight), t.programTitle, titleFont,
+               Qt::AlignLeft | Qt::AlignVCenter);
+    drawFitted(painter, QRectF(page.left() + page.width() * 0.7, page.top(), page.width() * 0.3, titleHeight),
+               t.page.arg(p + 1), reportFont(11), Qt::AlignRight | Qt::AlignVCenter);
+    // Field grid.
+    painter.setPen(paperPen(device, 0.3));
+    painter.setBrush(Qt::NoBrush);
+    painter.drawRect(grid);
+    const double half = grid.width() / 2;
+    painter.drawLine(QPointF(grid.left() + half, grid.top()), QPointF(grid.left() + half, grid.bottom()));
+    for (int r = 1; r < 3; ++r)
+      painter.drawLine(QPointF(grid.left(), grid.top() + r * fieldHeight),
+                       QPointF(grid.right(), grid.top() + r * fieldHeight));
+    for (std::size_t i = 0; i < fields.size(); ++i) {
+      const int row = static_cast<int>(i / 2);
+      const int col = static_cast<int>(i % 2);
+      const QRectF cell(grid.left() + col * half, grid.top() + row * fieldHeight, half, fieldHeight);
+      drawField(painter, cell, fields[i].first, fields[i].second, 32 * mm);
+    }
+    // Listing.
+    painter.setFont(listFont);
+    const std::size_t first = static_cast<std::size_t>(p) * static_cast<std::size_t>(rowsPerPage);
+    const std::size_t last = std::min(rows.size(), first + static_cast<std::size_t>(rowsPerPage));
+    double y = listTop;
+    for (std::size_t i = first; i < last; ++i, y += rowHeight) {
+      if (rows[i].fileLine > 0) {
+        painter.setPen(QColor(110, 110, 110));
+        painter.drawText(QRectF(page.left(), y, numberWidth, rowHeight), Qt::AlignRight | Qt::AlignVCenter,
+                         QString::number(rows[i].fileLine));
+      }
+      painter.setPen(Qt::black);
+      painter.drawText(QRectF(textLeft, y, page.right() - textLeft, rowHeight), Qt::AlignLeft | Qt::AlignVCenter,
+                       rows[i].text);
+    }
+    // Footer: file name and date, so loose pages find their program.
+    painter.setPen(paperPen(device, 0.2, QColor(120, 120, 120)));
+    painter.drawLine(QPointF(page.left(), listBottom + 1 * mm), QPointF(page.right(), listBottom + 1 * mm));
+    painter.setPen(QColor(90, 90, 90));
+    const QRectF footer(page.left(), listBottom + 1 * mm, page.width(), footerHeight - 1 * mm);
+    drawFitted(painter, QRectF(footer.left(), footer.top(), footer.width() * 0.6, footer.height()), fileName,
+               reportFont(8), Qt::AlignLeft | Qt::AlignVCenter);
+    drawFitted(painter, QRectF(footer.left() + footer.width() * 0.6, footer.top(), footer.width() * 0.4, footer.height()),
+               reportDate(data.date, lang), reportFont(8), Qt::AlignRight | Qt::AlignVCenter);
+    painter.restore();
+  }
+  return pages;
+}
+
+// ------------------------------------------------------------------ drawing sheet
+
+double drawingScale(const QSizeF& partMm, const QSizeF& areaMm) {
+  static const std::array<double, 12> scales = {10.0, 5.0, 2.0, 1.0, 0.5, 0.2, 0.1, 0.05, 0.02, 0.01, 0.005, 0.002};
+  for (double s : scales)
+    if (partMm.width() * s <= areaMm.width() && partMm.height() * s <= areaMm.height()) return s;
+  return scales.back();
+}
+
+QString scaleText(double scale) {
+  if (scale >= 1.0) return QStringLiteral("%1:1").arg(number(scale));
+  return QStringLiteral("1:%1").arg(number(1.0 / scale));
+}
+
+namespace {
+constexpr int kTitleRows = 8;
+
+QRectF partSceneRect(const StockShape& part) {
+  QRectF r = part.boundingRect();
+  if (r.isEmpty()) r = part.blank.united(QRectF(part.blank.left(), 0, part.blank.width(), part.blank.height()));
+  return r;
+}
+}  // namespace
+
+DrawingLayout drawingLayout(const QPagedPaintDevice& device, const StockShape& part) {
+  DrawingLayout l;
+  l.pixelsPerMm = pixelsPerMm(device);
+  const double mm = l.pixelsPerMm;
+  l.frame = QRectF(0, 0, device.width(), device.height()).adjusted(1 * mm, 1 * mm, -1 * mm, -1 * mm);
+  const double blockWidth = std::min(120 * mm, l.frame.width() * 0.6);
+  const double blockHeight = kTitleRows * 7 * mm;
+  l.titleBlock = QRectF(l.frame.right() - blockWidth, l.frame.bottom() - blockHeight, blockWidth, blockHeight);
+  // Room for the sheet title above and dimensions around the part.
+  l.drawingArea = QRectF(l.frame.left() + 15 * mm, l.frame.top() + 22 * mm, l.frame.width() - 30 * mm,
+                         l.titleBlock.top() - 12 * mm - (l.frame.top() + 22 * mm));
+  const QRectF scene = partSceneRect(part);
+  l.scale = drawingScale(scene.size(), l.drawingArea.size() / mm);
+  const QSizeF onPaper = scene.size() * l.scale * mm;
+  l.partRect = QRectF(l.drawingArea.center() - QPointF(onPaper.width() / 2, onPaper.height() / 2), onPaper);
+  return l;
+}
+
+void paintDrawingSheet(QPainter& painter, QPagedPaintDevice& device, const ReportData& data, ReportLanguage lang) {
+  const Texts& t = texts(lang);
+  const DrawingLayout l = drawingLayout(device, data.part);
+  const double mm = l.pixelsPerMm;
+  const core::io::JobHeader& h = data.program.header;
+  painter.save();
+  painter.setRenderHint(QPainter::Antialiasing);
+
+  // Border and sheet title.
+  painter.setPen(paperPen(device, 0.5));
+  painter.setBrush(Qt::NoBrush);
+  painter.drawRect(l.frame);
+  painter.setPen(Qt::black);
+  drawFitted(painter, QRectF(l.frame.left() + 5 * mm, l.frame.top() + 3 * mm, l.frame.width() * 0.6, 12 * mm),
+             t.drawingTitle, reportFont(16, true), Qt::AlignLeft | Qt::AlignVCenter);
+  drawFitted(painter, QRectF(l.frame.right() - 65 * mm, l.frame.top() + 3 * mm, 60 * mm, 12 * mm),
+             QStringLiteral("%1 %2").arg(t.scale, scaleText(l.scale)), reportFont(12), Qt::AlignRight | Qt::AlignVCenter);
+
+  // The part, to scale: scene millimetres -> paper millimetres * scale.
+  const QRectF scene = partSceneRect(data.part);
+  const double k = l.scale * mm;
+  painter.save();
+  painter.translate(l.partRect.center());
+  painter.scale(k, k);
+  painter.translate(-scene.center());
+  paintStock(painter, data.part, true);
+  // Print-weight lines over the screen's hairlines.
+  painter.setBrush(Qt::NoBrush);
+  QPen outline(palette().stockEdge, 0.35 * mm / k);
+  outline.setJoinStyle(Qt::MiterJoin);
+  painter.setPen(outline);
+  // Only the profile: the section's edge along the axis would hide the centre line.
+  const double halfPen = outline.widthF() / 2;
+  for (double side : {1.0, -1.0}) {
+    painter.save();
+    painter.scale(1.0, side);
+    painter.setClipRect(QRectF(scene.left() - 1.0, scene.top() - 1.0, scene.width() + 2.0, -scene.top() + 1.0 - halfPen));
+    painter.drawPath(data.part.outline);
+    painter.restore();
+  }
+  QPen centre(palette().centreLine, 0.25 * mm / k, Qt::DashDotLine);
+  painter.setPen(centre);
+  painter.drawLine(QPointF(scene.left() - 8 * mm / k, 0.0), QPointF(scene.right() + 8 * mm / k, 0.0));
+  painter.restore();
+
+  // Overall dimensions: length below the part, diameter on its left (part millimetres).
+  const QRectF fillBox = data.part.fill.boundingRect();
+  if (!fillBox.isEmpty()) {
+    painter.setPen(paperPen(device, 0.2));
+    const auto arrow = [&](const QPointF& tip, const QPointF& towards) {
+      const QPointF d = towards - tip;
+      const double len = std::hypot(d.x(), d.y());
+      if (len <= 0) return;
+      const QPointF u = d / len * (2.5 * mm);
+      const QPointF n(-u.y() * 0.3, u.x() * 0.3);
+      painter.save();
+      painter.setBrush(Qt::black);
+      painter.drawPolygon(QPolygonF({tip, tip + u + n, tip + u - n}));
+      painter.restore();
+    };
+    const auto toPage = [&](double z, double y) {
+      return QPointF(l.partRect.center().x() + (z - scene.center().x()) * k,
+                     l.partRect.center().y() + (y - scene.center().y()) * k);
+    };
+    const QPointF a = toPage(fillBox.left(), scene.bottom());
+    const QPointF b = toPage(fillBox.right(), scene.bottom());
+    const double y = a.y() + 6 * mm;
+    painter.drawLine(QPointF(a.x(), a.y() + 1 * mm), QPointF(a.x(), y + 1.5 * mm));
+    painter.drawLine(QPointF(b.x(), b.y() + 1 * mm), QPointF(b.x(), y + 1.5 * mm));
+    painter.drawLine(QPointF(a.x(), y), QPointF(b.x(), y));
+    arrow(QPointF(a.x(), y), QPointF(b.x(), y));
+    arrow(QPointF(b.x(), y), QPointF(a.x(), y));
+    painter.drawText(QRectF(a.x(), y, std::max(b.x() - a.x(), 20 * mm), 6 * mm), Qt::AlignHCenter | Qt::AlignTop,
+                     number(fillBox.width()));
+    const QPointF top = toPage(scene.left(), -fillBox.height());
+    const QPointF bottom = toPage(scene.left(), fillBox.height());
+    const double x = top.x() - 6 * mm;
+    painter.drawLine(QPointF(x, top.y()), QPointF(x, bottom.y()));
+    arrow(QPointF(x, top.y()), QPointF(x, bottom.y()));
+    arrow(QPointF(x, bottom.y()), QPointF(x, top.y()));
+    painter.drawLine(QPointF(x - 1.5 * mm, top.y()), QPointF(top.x() - 1 * mm, top.y()));
+    painter.drawLine(QPointF(x - 1.5 * mm, bottom.y()), QPointF(bottom.x() - 1 * mm, bottom.y()));
+    painter.save();
+    painter.translate(x - 1 * mm, (top.y() + bottom.y()) / 2);
+    painter.rotate(-90);
+    painter.setFont(reportFont(9));
+    painter.drawText(QRectF(-30 * mm, -6 * mm, 60 * mm, 6 * mm), Qt::AlignHCenter | Qt::AlignBottom,
+                     QStringLiteral("Ø%1").arg(number(2.0 * fillBox.height())));
+    painter.restore();
+  }
+  if (!data.partNote.isEmpty()) {
+    painter.setPen(QColor(170, 30, 30));
+    drawFitted(painter, QRectF(l.frame.left() + 5 * mm, l.titleBlock.top() - 10 * mm, l.frame.width() - 10 * mm, 8 * mm),
+               data.partNote, reportFont(10), Qt::AlignLeft | Qt::AlignVCenter);
+  }
+
+  // Title block.
+  const QString fileName = data.fileName.isEmpty() ? t.untitled : data.fileName;
+  const std::array<std::pair<QString, QString>, kTitleRows> rows = {{
+      {t.project, qs(h.project)},
+      {t.part, qs(h.part)},
+      {t.programmer, qs(h.programmer)},
+      {t.material, qs(h.material)},
+      {t.date, reportDate(data.date, lang)},
+      {t.fileName, fileName},
+      {t.version, kluengVersion()},
+      {t.scale, scaleText(l.scale)},
+  }};
+  painter.setPen(paperPen(device, 0.4));
+  painter.setBrush(Qt::white);
+  painter.drawRect(l.titleBlock);
+  const double rowHeight = l.titleBlock.height() / kTitleRows;
+  const double labelWidth = 35 * mm;
+  painter.setPen(paperPen(device, 0.2));
+  painter.drawLine(QPointF(l.titleBlock.left() + labelWidth, l.titleBlock.top()),
+                   QPointF(l.titleBlock.left() + labelWidth, l.titleBlock.bottom()));
+  for (int r = 0; r < kTitleRows; ++r) {
+    const QRectF cell(l.titleBlock.left(), l.titleBlock.top() + r * rowHeight, l.titleBlock.width(), rowHeight);
+    if (r > 0) {
+      painter.setPen(paperPen(device, 0.2));
+      painter.drawLine(cell.topLeft(), cell.topRight());
+    }
+    drawField(painter, cell, rows[static_cast<std::size_t>(r)].first, rows[static_cast<std::size_t>(r)].second,
+              labelWidth + 1.5 * mm);
+  }
+  painter.restore();
+}
+
+}  // namespace klueng::render

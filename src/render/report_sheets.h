@@ -1,0 +1,76 @@
+#pragma once
+// Printed reports (SPEC 12): the program sheet and the drawing sheet, painted
+// onto any QPagedPaintDevice (QPrinter, QPdfWriter) in the language asked for,
+// whatever language the UI shows. Qt Gui only (no widgets).
+//
+// Public API
+//   ReportLanguage                 English or Thai (texts are fixed by SPEC 12, not tr()).
+//   reportDate(date, lang)         "October 19, 1999" / "19 ตุลาคม พ.ศ. 2542" (Buddhist era).
+//   ReportData                     what both sheets print: the program file (header + G-code),
+//                                  its file name, the date, the finished part.
+//   finishedPart(file, setup, dialect, &note)   checks, interprets and cuts the program to its
+//                                  end with the core; the uncut bar (and a note) if it cannot run.
+//   paintProgramSheet(painter, device, data, lang)   header block on every page, numbered
+//                                  listing (file line numbers), "Page n"; returns the page count.
+//   paintDrawingSheet(painter, device, data, lang)   the part to scale (1:1, 1:2 ...,
+//                                  chosen to fit) about the centre line, and the title block.
+//   drawingScale(partMm, areaMm)   the standard scale used (paper mm per part mm).
+//   The painter must be active on `device`; sheets after the first start with
+//   device.newPage() by the caller.
+#include <QDate>
+#include <QFont>
+#include <QPagedPaintDevice>
+#include <QPainter>
+#include <QRectF>
+#include <QSizeF>
+#include <QString>
+
+#include "klueng/core/gcode/code_table.h"
+#include "klueng/core/io/program_file.h"
+#include "klueng/core/machine/interpreter.h"
+#include "render/lathe_painters.h"
+
+namespace klueng::render {
+
+enum class ReportLanguage { English, Thai };
+
+// Fonts with Thai glyphs (fonts-thai-tlwg), so Thai never prints as boxes.
+inline constexpr const char* kReportFontFamily = "Loma";
+inline constexpr const char* kReportMonoFamily = "Tlwg Mono";
+
+QString reportDate(const QDate& date, ReportLanguage lang);
+QString kluengVersion();
+
+struct ReportData {
+  core::io::ProgramFile program;   // header + G-code; gcodeFirstLine numbers the listing
+  QString fileName;                // shown on the sheets ("Untitled" when empty)
+  QDate date = QDate::currentDate();
+  StockShape part;                 // the finished part (see finishedPart)
+  QString partNote;                // printed under the drawing when the part is not the finished one
+};
+
+// Runs the whole program with the core and returns the stock it leaves. If the
+// program has errors or stops on an alarm, `note` says so (in `lang`) and the
+// shape is the uncut bar or the part up to the alarm.
+StockShape finishedPart(const core::io::ProgramFile& file, const core::machine::MachineSetup& setup,
+                        core::gcode::Dialect dialect, ReportLanguage lang, QString* note);
+
+int paintProgramSheet(QPainter& painter, QPagedPaintDevice& device, const ReportData& data, ReportLanguage lang);
+void paintDrawingSheet(QPainter& painter, QPagedPaintDevice& device, const ReportData& data, ReportLanguage lang);
+
+// Largest standard scale (5:1, 2:1, 1:1, 1:2, 1:5, 1:10, ...) at which partMm fits in areaMm.
+double drawingScale(const QSizeF& partMm, const QSizeF& areaMm);
+QString scaleText(double scale);   // "1:1", "1:2", "2:1"
+
+// Where paintDrawingSheet put things, in device pixels (for tests and previews).
+struct DrawingLayout {
+  QRectF frame;          // sheet border
+  QRectF drawingArea;    // where the part may go
+  QRectF titleBlock;
+  QRectF partRect;       // the part's both-halves bounding box on the page
+  double scale = 1.0;    // paper mm per part mm
+  double pixelsPerMm = 1.0;
+};
+DrawingLayout drawingLayout(const QPagedPaintDevice& device, const StockShape& part);
+
+}  // namespace klueng::render

@@ -1,0 +1,315 @@
+// Printed reports (SPEC 12): sample 01's program sheet and drawing sheet written
+// to PDF with QPdfWriter in English and Thai, read back with pdftotext and
+// checked with pdffonts (Thai font embedded); pagination of a long program; the
+// drawing is to the stated scale (measured on a rasterised page).
+#include <QDir>
+#include <QFile>
+#include <QGuiApplication>
+#include <QImage>
+#include <QPdfWriter>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <QToolBar>
+
+#include "gui/language.h"
+#include "gui/main_window.h"
+#include "gui/resources.h"
+#include "klueng/core/io/program_file.h"
+#include "klueng/core/io/tool_config.h"
+#include "render/report_sheets.h"
+
+using namespace klueng;
+using render::ReportLanguage;
+
+namespace {
+
+core::machine::MachineSetup loadSetup() {
+  const std::string dir = core::io::findConfigDir(KLUENG_SOURCE_DIR);
+  core::machine::MachineSetup s;
+  s.tools = *core::io::readToolTable(dir + "/tools.cfg").value;
+  s.offsets = *core::io::readOffsetTable(dir + "/offset.cfg").value;
+  s.machine = *core::io::readMachineConfig(dir + "/machine.cfg").value;
+  return s;
+}
+
+render::ReportData sampleData(ReportLanguage lang) {
+  render::ReportData d;
+  d.program = *core::io::readProgramFile(KLUENG_SAMPLES_DIR "/01-step-shaft.txt").value;
+  d.fileName = QStringLiteral("01-step-shaft.txt");
+  d.date = QDate(1999, 10, 19);
+  d.part = render::finishedPart(d.program, loadSetup(), core::gcode::Dialect::Fanuc, lang, &d.partNote);
+  return d;
+}
+
+enum class Sheet { Program, Drawing };
+
+// Writes one sheet to `path` (A4, 300 dpi); returns the program sheet's page count.
+int writePdf(const QString& path, const render::ReportData& data, ReportLanguage lang, Sheet sheet) {
+  QPdfWriter writer(path);
+  writer.setResolution(300);
+  writer.setPageSize(QPageSize(QPageSize::A4));
+  writer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
+  if (sheet == Sheet::Drawing) writer.setPageOrientation(QPageLayout::Landscape);
+  QPainter painter(&writer);
+  int pages = 1;
+  if (sheet == Sheet::Program)
+    pages = render::paintProgramSheet(painter, writer, data, lang);
+  else
+    render::paintDrawingSheet(painter, writer, data, lang);
+  painter.end();
+  return pages;
+}
+
+QString run(const QString& program, const QStringList& args) {
+  QProcess p;
+  p.start(program, args);
+  if (!p.waitForFinished(60000) || p.exitCode() != 0) return QStringLiteral("<%1 failed>").arg(program);
+  return QString::fromUtf8(p.readAllStandardOutput());
+}
+
+// The TLWG Thai fonts reach their repositioned tone marks and vowels (drawn lower or
+// further left over some consonants) through the legacy Thai code points U+F700-U+F71A
+// of their cmap, draw a tone mark before the vowel it sits on, and shape SARA AM as NIKHAHIT + SARA AA; the PDF's text layer
+// therefore reads back with those. Map them to the Unicode letters they stand for.
+QString normaliseThai(QString text) {
+  static const char16_t legacy[] = {0x0E10, 0x0E34, 0x0E35, 0x0E36, 0x0E37, 0x0E48, 0x0E49, 0x0E4A, 0x0E4B,
+                                    0x0E4C, 0x0E48, 0x0E49, 0x0E4A, 0x0E4B, 0x0E4C, 0x0E0D, 0x0E31, 0x0E4D,
+                                    0x0E47, 0x0E48, 0x0E49, 0x0E4A, 0x0E4B, 0x0E4C, 0x0E38, 0x0E39, 0x0E3A};
+  for (QChar& c : text)
+    if (c.unicode() >= 0xF700 && c.unicode() <= 0xF71A) c = QChar(legacy[c.unicode() - 0xF700]);
+  // A tone mark drawn before the vowel under or over the same consonant: Unicode puts the vowel first.
+  auto isToneMark = [](QChar c) { return c.unicode() >= 0x0E48 && c.unicode() <= 0x0E4C; };
+  auto isVowelMark = [](QChar c) { return c.unicode() == 0x0E31 || (c.unicode() >= 0x0E34 && c.unicode() <= 0x0E3A); };
+  for (qsizetype i = 0; i + 1 < text.size(); ++i)
+    if (isToneMark(text[i]) && isVowelMark(text[i + 1])) std::swap(text[i], text[i + 1]);
+  text.replace(QString::fromUtf8("\u0E4D\u0E32"), QString::fromUtf8("\u0E33"));
+  return text;
+}
+
+// The text layer in drawing order (-raw keeps each mark with its letter).
+QString pdfText(const QString& pdf) {
+  return normaliseThai(run(QStringLiteral("pdftotext"), {QStringLiteral("-raw"), pdf, QStringLiteral("-")}));
+}
+QString pageText(const QString& pdf, int page) {
+  const QString n = QString::number(page);
+  return normaliseThai(run(QStringLiteral("pdftotext"),
+                           {QStringLiteral("-raw"), QStringLiteral("-f"), n, QStringLiteral("-l"), n, pdf, QStringLiteral("-")}));
+}
+
+bool havePoppler() { return !QStandardPaths::findExecutable(QStringLiteral("pdftotext")).isEmpty(); }
+
+}  // namespace
+
+class ReportTest : public QObject {
+  Q_OBJECT
+ private slots:
+  void initTestCase() {
+    QVERIFY(dir_.isValid());
+    if (!havePoppler()) QSKIP("poppler-utils (pdftotext) not installed");
+  }
+
+  void datesInBothLanguages() {
+    QCOMPARE(render::reportDate(QDate(1999, 10, 19), ReportLanguage::Thai), QStringLiteral("19 ตุลาคม พ.ศ. 2542"));
+    QCOMPARE(render::reportDate(QDate(1999, 10, 19), ReportLanguage::English), QStringLiteral("October 19, 1999"));
+    QCOMPARE(render::reportDate(QDate(2026, 1, 2), ReportLanguage::Thai), QStringLiteral("2 มกราคม พ.ศ. 2569"));
+    QCOMPARE(render::reportDate(QDate(2024, 2, 29), ReportLanguage::English), QStringLiteral("February 29, 2024"));
+  }
+
+  void scalesAreStandardAndFit() {
+    QCOMPARE(render::drawingScale(QSizeF(150, 50), QSizeF(250, 120)), 1.0);
+    QCOMPARE(render::drawingScale(QSizeF(300, 80), QSizeF(250, 120)), 0.5);
+    QCOMPARE(render::drawingScale(QSizeF(40, 20), QSizeF(250, 120)), 5.0);
+    QCOMPARE(render::drawingScale(QSizeF(1100, 150), QSizeF(250, 120)), 0.2);
+    QCOMPARE(render::scaleText(1.0), QStringLiteral("1:1"));
+    QCOMPARE(render::scaleText(0.5), QStringLiteral("1:2"));
+    QCOMPARE(render::scaleText(2.0), QStringLiteral("2:1"));
+  }
+
+  void englishProgramSheet() {
+    const QString pdf = out(QStringLiteral("sheet-en.pdf"));
+    QCOMPARE(writePdf(pdf, sampleData(ReportLanguage::English), ReportLanguage::English, Sheet::Program), 1);
+    const QString text = pdfText(pdf);
+    for (const char* s : {"CNC Program Sheet", "Page 1", "Project", "Material", "Part", "Diameter (mm.)", "Programmer",
+                          "Length (mm.)", "Step shaft exercise", "Shaft SS-01", "Aluminium 6061", "Klueng samples",
+                          "N100 G01 Z-59.8 F0.25 (rough)", "October 19, 1999"})
+      QVERIFY2(text.contains(QString::fromUtf8(s)), s);
+    QVERIFY(!text.contains(QStringLiteral("Page 2")));
+    // The listing is numbered with file lines: N100 is line 18 of the file.
+    QVERIFY2(text.contains(QRegularExpression(QStringLiteral("\\b18\\s+N100 G01 Z-59.8"))), qPrintable(text));
+    QVERIFY(text.contains(QRegularExpression(QStringLiteral("\\b7\\s+O0001"))));
+    // Diameter and length from the header ("150" = mm, 50; "1100" = mm, 100).
+    QVERIFY(text.contains(QRegularExpression(QStringLiteral("Diameter \\(mm\\.\\)\\s+50\\b"))));
+    QVERIFY(text.contains(QRegularExpression(QStringLiteral("Length \\(mm\\.\\)\\s+100\\b"))));
+  }
+
+  void thaiProgramSheetWithEmbeddedThaiFont() {
+    const QString pdf = out(QStringLiteral("sheet-th.pdf"));
+    QCOMPARE(writePdf(pdf, sampleData(ReportLanguage::Thai), ReportLanguage::Thai, Sheet::Program), 1);
+    const QString text = pdfText(pdf);
+    for (const char* s : {"ชุดรหัสสั่งการทำงาน", "หน้าที่ 1", "ชื่องาน", "วัสดุ", "ชิ้นงาน", "เส้นผ่าศก. (มม.)", "ผู้เขียน",
+                          "ความยาว (มม.)", "19 ตุลาคม พ.ศ. 2542", "Step shaft exercise", "N100 G01 Z-59.8 F0.25"})
+      QVERIFY2(text.contains(QString::fromUtf8(s)), s);
+    QVERIFY(!text.contains(QStringLiteral("CNC Program Sheet")));
+    const QString fonts = run(QStringLiteral("pdffonts"), {pdf});
+    // Every font embedded ("emb" column yes), the Thai one among them.
+    QVERIFY2(fonts.contains(QStringLiteral("Loma")), qPrintable(fonts));
+    for (const QString& line : fonts.split(QLatin1Char('\n')).mid(2))
+      if (!line.trimmed().isEmpty()) QVERIFY2(line.contains(QStringLiteral(" yes ")), qPrintable(line));
+  }
+
+  void longProgramPaginatesWithTheHeaderOnEveryPage() {
+    render::ReportData d = sampleData(ReportLanguage::English);
+    std::string code;
+    for (int n = 1; n <= 300; ++n) code += "N" + std::to_string(n * 10) + " G01 X" + std::to_string(n) + ". Z-1.\n";
+    d.program.gcode = code;
+    const QString pdf = out(QStringLiteral("long.pdf"));
+    const int pages = writePdf(pdf, d, ReportLanguage::English, Sheet::Program);
+    QVERIFY2(pages >= 3, qPrintable(QString::number(pages)));
+    QCOMPARE(run(QStringLiteral("pdfinfo"), {pdf}).contains(QRegularExpression(QStringLiteral("Pages:\\s+%1\\b").arg(pages))), true);
+    int seen = 0;
+    for (int p = 1; p <= pages; ++p) {
+      const QString text = pageText(pdf, p);
+      QVERIFY2(text.contains(QStringLiteral("CNC Program Sheet")), qPrintable(text));
+      QVERIFY(text.contains(QStringLiteral("Page %1").arg(p)));
+      QVERIFY(text.contains(QStringLiteral("Step shaft exercise")));
+      QVERIFY(text.contains(QStringLiteral("Programmer")));
+      // Every block printed exactly once, in order, across the pages.
+      for (int n = seen + 1; n <= 300; ++n) {
+        if (!text.contains(QStringLiteral("N%1 G01 X%2. Z-1.").arg(n * 10).arg(n))) break;
+        seen = n;
+      }
+    }
+    QCOMPARE(seen, 300);
+  }
+
+  void drawingSheetTitleBlock_data() {
+    QTest::addColumn<int>("lang");
+    QTest::newRow("en") << 0;
+    QTest::newRow("th") << 1;
+  }
+  void drawingSheetTitleBlock() {
+    QFETCH(int, lang);
+    const ReportLanguage l = lang ? ReportLanguage::Thai : ReportLanguage::English;
+    const render::ReportData d = sampleData(l);
+    QVERIFY2(d.partNote.isEmpty(), qPrintable(d.partNote));
+    const QString pdf = out(QStringLiteral("drawing-%1.pdf").arg(lang));
+    writePdf(pdf, d, l, Sheet::Drawing);
+    const QString text = pdfText(pdf);
+    const QStringList expected =
+        lang ? QStringList{QStringLiteral("เอกสารแสดงภาพชิ้นงาน"), QStringLiteral("ชื่องาน"), QStringLiteral("ชิ้นงาน"),
+                           QStringLiteral("ผู้เขียน"), QStringLiteral("วัสดุ"), QStringLiteral("วันที่"),
+                           QStringLiteral("19 ตุลาคม พ.ศ. 2542"), QStringLiteral("มาตราส่วน")}
+             : QStringList{QStringLiteral("Part Drawing"), QStringLiteral("Project"), QStringLiteral("Part"),
+                           QStringLiteral("Programmer"), QStringLiteral("Material"), QStringLiteral("Date"),
+                           QStringLiteral("October 19, 1999"), QStringLiteral("Scale")};
+    for (const QString& s : expected) QVERIFY2(text.contains(s), qPrintable(s + QStringLiteral("\n") + text));
+    for (const char* s : {"Step shaft exercise", "Shaft SS-01", "Klueng samples", "Aluminium 6061", "01-step-shaft.txt"})
+      QVERIFY2(text.contains(QString::fromUtf8(s)), s);
+    QVERIFY(text.contains(render::kluengVersion()));
+    QVERIFY(text.contains(QStringLiteral("Klueng 0.")));
+  }
+
+  void drawingIsToTheStatedScale() {
+    // Sample 01's bar: Ø150 x 1100 is too long for 1:1 on A4 landscape; a short part is drawn 1:1.
+    render::ReportData d = sampleData(ReportLanguage::English);
+    d.part = render::stockShapeFromBlank(40.0, 120.0);
+    d.partNote.clear();
+    const QString pdf = out(QStringLiteral("scale.pdf"));
+    writePdf(pdf, d, ReportLanguage::English, Sheet::Drawing);
+    QVERIFY(pdfText(pdf).contains(QStringLiteral("Scale 1:1")));
+    // Rasterise at 254 dpi (10 px per mm) and measure the stock fill: 120 x 40 mm on paper.
+    const QString png = out(QStringLiteral("scale"));
+    run(QStringLiteral("pdftoppm"), {QStringLiteral("-png"), QStringLiteral("-r"), QStringLiteral("254"),
+                                     QStringLiteral("-singlefile"), pdf, png});
+    const QImage image(png + QStringLiteral(".png"));
+    QVERIFY(!image.isNull());
+    const QColor fill = render::palette().stockFill;
+    auto isFill = [&](int x, int y) {
+      const QColor c = image.pixelColor(x, y);
+      return std::abs(c.red() - fill.red()) < 12 && std::abs(c.green() - fill.green()) < 12 &&
+             std::abs(c.blue() - fill.blue()) < 12;
+    };
+    int left = image.width(), right = -1, top = image.height(), bottom = -1;
+    for (int y = 0; y < image.height(); y += 2)
+      for (int x = 0; x < image.width(); x += 2)
+        if (isFill(x, y)) {
+          left = std::min(left, x);
+          right = std::max(right, x);
+          top = std::min(top, y);
+          bottom = std::max(bottom, y);
+        }
+    QVERIFY(right > left);
+    QVERIFY2(std::abs((right - left) - 1200) <= 12, qPrintable(QString::number(right - left)));
+    QVERIFY2(std::abs((bottom - top) - 400) <= 12, qPrintable(QString::number(bottom - top)));
+
+    // A long bar goes down to a smaller standard scale that fits.
+    d.part = render::stockShapeFromBlank(150.0, 1100.0);
+    QPdfWriter writer(out(QStringLiteral("layout.pdf")));
+    writer.setResolution(300);
+    writer.setPageSize(QPageSize(QPageSize::A4));
+    writer.setPageOrientation(QPageLayout::Landscape);
+    const render::DrawingLayout layout = render::drawingLayout(writer, d.part);
+    QCOMPARE(layout.scale, 0.2);
+    QVERIFY(layout.drawingArea.contains(layout.partRect));
+    QCOMPARE(qRound(layout.partRect.width() / layout.pixelsPerMm), 220);
+  }
+
+  // File > Export PDF of the main window: program sheet then the drawing (landscape),
+  // in the UI's language; the actions are in the File menu and Print on the tool bar.
+  void mainWindowExportsBothSheetsInTheUiLanguage() {
+    QStandardPaths::setTestModeEnabled(true);
+    gui::initResources();
+    gui::Language::instance()->setLanguage(QStringLiteral("en"));
+    gui::MainWindow w;
+    w.show();
+    QVERIFY(w.openFile(QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt")));
+    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    for (const char* name : {"actionPrintCode", "actionPrintDrawing", "actionPrintPreview", "actionExportPdf", "actionPrint"}) {
+      QAction* a = w.action(QString::fromLatin1(name));
+      QVERIFY2(a && !a->icon().isNull() && !a->text().isEmpty(), name);
+    }
+    auto* fileBar = w.findChild<QToolBar*>(QStringLiteral("fileToolBar"));
+    QVERIFY(fileBar && fileBar->actions().contains(w.action(QStringLiteral("actionPrint"))));
+    QVERIFY(w.action(QStringLiteral("actionPrintCode"))->shortcut() == QKeySequence(QKeySequence::Print));
+
+    const QString en = out(QStringLiteral("window-en.pdf"));
+    QVERIFY(w.exportPdf(en));
+    const QString info = run(QStringLiteral("pdfinfo"), {QStringLiteral("-f"), QStringLiteral("1"), QStringLiteral("-l"),
+                                                         QStringLiteral("2"), en});
+    QVERIFY2(info.contains(QRegularExpression(QStringLiteral("Pages:\\s+2\\b"))), qPrintable(info));
+    QVERIFY2(info.contains(QRegularExpression(QStringLiteral("Page\\s+1 size:\\s+595(\\.\\d+)? x 84[12]"))), qPrintable(info));
+    QVERIFY2(info.contains(QRegularExpression(QStringLiteral("Page\\s+2 size:\\s+84[12](\\.\\d+)? x 595"))), qPrintable(info));
+    const QString sheet = pageText(en, 1);
+    QVERIFY(sheet.contains(QStringLiteral("CNC Program Sheet")));
+    QVERIFY(sheet.contains(QStringLiteral("N100 G01 Z-59.8 F0.25")));
+    const QString drawing = pageText(en, 2);
+    QVERIFY(drawing.contains(QStringLiteral("Part Drawing")));
+    QVERIFY(drawing.contains(QStringLiteral("01-step-shaft.txt")));
+    QVERIFY(drawing.contains(render::reportDate(QDate::currentDate(), ReportLanguage::English)));
+    QVERIFY2(!drawing.contains(QStringLiteral("errors")) && !drawing.contains(QStringLiteral("alarm")), qPrintable(drawing));
+
+    gui::Language::instance()->setLanguage(QStringLiteral("th"));
+    QTRY_VERIFY(w.action(QStringLiteral("actionExportPdf"))->text().contains(QStringLiteral("ส่งออก")));   // LanguageChange is posted
+    QVERIFY(w.action(QStringLiteral("actionPrintCode"))->text().contains(QStringLiteral("พิมพ์")));
+    const QString th = out(QStringLiteral("window-th.pdf"));
+    QVERIFY(w.exportPdf(th));
+    QVERIFY(pageText(th, 1).contains(QStringLiteral("ชุดรหัสสั่งการทำงาน")));
+    QVERIFY(pageText(th, 2).contains(render::reportDate(QDate::currentDate(), ReportLanguage::Thai)));
+    gui::Language::instance()->setLanguage(QStringLiteral("en"));
+  }
+
+ private:
+  // KLUENG_REPORT_OUT=<folder> keeps the PDFs for a look (pdftoppm -png -r 60 ...).
+  QString out(const QString& name) const {
+    const QString keep = qEnvironmentVariable("KLUENG_REPORT_OUT");
+    return keep.isEmpty() ? dir_.filePath(name) : QDir(keep).filePath(name);
+  }
+  QTemporaryDir dir_;
+};
+
+QTEST_MAIN(ReportTest)
+#include "report_test.moc"
