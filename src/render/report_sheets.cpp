@@ -415,7 +415,7 @@ void paintDrawingSheet(QPainter& painter, QPagedPaintDevice& device, const Repor
   }
   if (!data.partNote.isEmpty()) {
     painter.setPen(QColor(170, 30, 30));
-    drawFitted(painter, QRectF(l.frame.left() + 5 * mm, l.titleBlock.top() - 10 * mm, l.frame.width() - 10 * mm, 8 * mm),
+    drawFitted(painter, QRectF(l.frame.left() + 5 * mm, l.frame.top() + 14 * mm, l.frame.width() - 10 * mm, 7 * mm),
                data.partNote, reportFont(10), Qt::AlignLeft | Qt::AlignVCenter);
   }
 

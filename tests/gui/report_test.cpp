@@ -213,6 +213,55 @@ class ReportTest : public QObject {
     QVERIFY(text.contains(QStringLiteral("Klueng 0.")));
   }
 
+  void drawingShowsTheFinishedPartWithItsSize() {
+    const render::ReportData d = sampleData(ReportLanguage::English);
+    // Sample 01 finishes Ø30 from Z-3 to Z-20, Ø40 to Z-40 and Ø46 to Z-60 (bar Ø50 x 100).
+    QVERIFY(d.part.containsMaterial(-10.0, 14.8));
+    QVERIFY(!d.part.containsMaterial(-10.0, 15.3));
+    QVERIFY(d.part.containsMaterial(-30.0, 19.8));
+    QVERIFY(!d.part.containsMaterial(-30.0, 20.3));
+    QVERIFY(d.part.containsMaterial(-80.0, 24.9));
+    const QString pdf = out(QStringLiteral("drawing-size.pdf"));
+    writePdf(pdf, d, ReportLanguage::English, Sheet::Drawing);
+    const QString text = pdfText(pdf);
+    QVERIFY2(text.contains(QStringLiteral("Ø50")), qPrintable(text));   // largest diameter left
+    QVERIFY(text.contains(QRegularExpression(QStringLiteral("(^|\\n)100\\n"))));   // overall length
+    QVERIFY(text.contains(QStringLiteral("Scale 1:1")));
+  }
+
+  void programWithErrorsDrawsTheBarAndSaysSo() {
+    render::ReportData d;
+    d.program = *core::io::readProgramFile(KLUENG_SAMPLES_DIR "/04-grammar-errors.txt").value;
+    d.date = QDate(1999, 10, 19);
+    d.part = render::finishedPart(d.program, loadSetup(), core::gcode::Dialect::Classic, ReportLanguage::English,
+                                  &d.partNote);
+    QCOMPARE(d.partNote, QStringLiteral("The program has errors: the drawing shows the uncut bar."));
+    QCOMPARE(d.part.blank, d.part.fill.boundingRect());   // nothing cut
+    const QString pdf = out(QStringLiteral("drawing-errors.pdf"));
+    writePdf(pdf, d, ReportLanguage::English, Sheet::Drawing);
+    QVERIFY(pdfText(pdf).contains(QStringLiteral("The program has errors")));
+    QString thaiNote;
+    render::finishedPart(d.program, loadSetup(), core::gcode::Dialect::Classic, ReportLanguage::Thai, &thaiNote);
+    QVERIFY(thaiNote.contains(QStringLiteral("ข้อผิดพลาด")));
+  }
+
+  void longLinesWrapWithoutLosingCode() {
+    render::ReportData d = sampleData(ReportLanguage::English);
+    std::string longLine = "N10 G01 X10. Z-5. F0.1 (";
+    for (int i = 0; i < 40; ++i) longLine += "word" + std::to_string(i) + " ";
+    longLine += "end)";
+    d.program.gcode = longLine + "\nN20 M30\n";
+    const QString pdf = out(QStringLiteral("wrap.pdf"));
+    QCOMPARE(writePdf(pdf, d, ReportLanguage::English, Sheet::Program), 1);
+    const QString text = pdfText(pdf);
+    for (int i = 0; i < 40; ++i) QVERIFY2(text.contains(QStringLiteral("word%1 ").arg(i)) || text.contains(QStringLiteral("word%1\n").arg(i)), qPrintable(QString::number(i)));
+    QVERIFY(text.contains(QStringLiteral("end)")));
+    // Two file lines, the first wrapped: line numbers 7 and 8 only.
+    QVERIFY(text.contains(QRegularExpression(QStringLiteral("(^|\\n)7 N10 G01"))));
+    QVERIFY(text.contains(QRegularExpression(QStringLiteral("(^|\\n)8 N20 M30"))));
+    QVERIFY(!text.contains(QRegularExpression(QStringLiteral("(^|\\n)9 "))));
+  }
+
   void drawingIsToTheStatedScale() {
     // Sample 01's bar: Ø150 x 1100 is too long for 1:1 on A4 landscape; a short part is drawn 1:1.
     render::ReportData d = sampleData(ReportLanguage::English);
