@@ -1040,7 +1040,16 @@ void MainWindow::paintReports(QPainter& painter, QPagedPaintDevice& device, cons
   const render::ReportLanguage lang =
       Language::instance()->isThai() ? render::ReportLanguage::Thai : render::ReportLanguage::English;
   if (code) render::paintProgramSheet(painter, device, data, lang);
-  if (code && drawing) device.newPage();
+  if (code && drawing) {
+    // A shaft is long: the drawing goes on a landscape page (takes effect on the next page);
+    // the device keeps its own orientation for the next job.
+    const QPageLayout::Orientation before = device.pageLayout().orientation();
+    device.setPageOrientation(QPageLayout::Landscape);
+    device.newPage();
+    render::paintDrawingSheet(painter, device, data, lang);
+    device.setPageOrientation(before);
+    return;
+  }
   if (drawing) render::paintDrawingSheet(painter, device, data, lang);
 }
 
@@ -1122,12 +1131,7 @@ bool MainWindow::exportPdf(const QString& path) {
     QMessageBox::warning(this, tr("Export PDF"), tr("Cannot write %1").arg(QDir::toNativeSeparators(target)));
     return false;
   }
-  const render::ReportLanguage lang =
-      Language::instance()->isThai() ? render::ReportLanguage::Thai : render::ReportLanguage::English;
-  render::paintProgramSheet(painter, writer, data, lang);
-  writer.setPageOrientation(QPageLayout::Landscape);   // takes effect on the next page: the drawing
-  writer.newPage();
-  render::paintDrawingSheet(painter, writer, data, lang);
+  paintReports(painter, writer, data, true, true);
   painter.end();
   statusBar()->showMessage(tr("Exported %1").arg(QDir::toNativeSeparators(target)), 3000);
   return true;

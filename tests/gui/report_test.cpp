@@ -13,6 +13,11 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <QApplication>
+#include <QPrintPreviewDialog>
+#include <QPrintPreviewWidget>
+#include <QPrinter>
+#include <QTimer>
 #include <QToolBar>
 
 #include "gui/language.h"
@@ -349,6 +354,31 @@ class ReportTest : public QObject {
     QVERIFY(pageText(th, 1).contains(QStringLiteral("ชุดรหัสสั่งการทำงาน")));
     QVERIFY(pageText(th, 2).contains(render::reportDate(QDate::currentDate(), ReportLanguage::Thai)));
     gui::Language::instance()->setLanguage(QStringLiteral("en"));
+  }
+
+  // File > Print Preview lays out both sheets: the program sheet, then the drawing.
+  void printPreviewShowsBothSheets() {
+    QStandardPaths::setTestModeEnabled(true);
+    gui::initResources();
+    gui::MainWindow w;
+    w.show();
+    QVERIFY(w.openFile(QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt")));
+    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    int pages = -1;
+    bool orientationRestored = false;
+    QTimer::singleShot(0, this, [&] {
+      QVERIFY(QTest::qWaitFor([] { return qobject_cast<QPrintPreviewDialog*>(QApplication::activeModalWidget()); }, 10000));
+      auto* dialog = qobject_cast<QPrintPreviewDialog*>(QApplication::activeModalWidget());
+      auto* preview = dialog->findChild<QPrintPreviewWidget*>();
+      QVERIFY(preview);
+      QVERIFY(QTest::qWaitFor([preview] { return preview->pageCount() > 0; }, 10000));
+      pages = preview->pageCount();
+      orientationRestored = dialog->printer()->pageLayout().orientation() == QPageLayout::Portrait;   // after the landscape drawing
+      dialog->reject();
+    });
+    w.printPreview();
+    QCOMPARE(pages, 2);
+    QVERIFY(orientationRestored);
   }
 
  private:
