@@ -19,19 +19,14 @@
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/io/tool_config.h"
 
+#include "gui_test_support.h"
+
 using namespace klueng;
 using namespace klueng::gui;
 
 namespace {
 
-core::machine::MachineSetup loadSetup() {
-  const std::string dir = core::io::findConfigDir(KLUENG_SOURCE_DIR);
-  core::machine::MachineSetup s;
-  s.tools = *core::io::readToolTable(dir + "/tools.cfg").value;
-  s.offsets = *core::io::readOffsetTable(dir + "/offset.cfg").value;
-  s.machine = *core::io::readMachineConfig(dir + "/machine.cfg").value;
-  return s;
-}
+using gui_test::loadSetup;
 
 // The longest gap between two 1 ms timer ticks = the longest the event loop was blocked.
 class StallProbe : public QObject {

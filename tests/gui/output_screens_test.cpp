@@ -17,6 +17,8 @@
 #include "klueng/core/io/tool_config.h"
 #include "render/lathe_painters.h"
 
+#include "gui_test_support.h"
+
 using namespace klueng;
 using namespace klueng::gui;
 
@@ -34,14 +36,7 @@ void save(QWidget& w, const QString& name) {
   QVERIFY(img.save(QDir(shotDir()).filePath(name)));
 }
 
-core::machine::MachineSetup loadSetup() {
-  const std::string dir = core::io::findConfigDir(KLUENG_SOURCE_DIR);
-  core::machine::MachineSetup s;
-  s.tools = *core::io::readToolTable(dir + "/tools.cfg").value;
-  s.offsets = *core::io::readOffsetTable(dir + "/offset.cfg").value;
-  s.machine = *core::io::readMachineConfig(dir + "/machine.cfg").value;
-  return s;
-}
+using gui_test::loadSetup;
 
 bool near(QRgb a, const QColor& b, int tolerance = 12) {
   return std::abs(qRed(a) - b.red()) <= tolerance && std::abs(qGreen(a) - b.green()) <= tolerance &&

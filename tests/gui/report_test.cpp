@@ -27,19 +27,14 @@
 #include "klueng/core/io/tool_config.h"
 #include "render/report_sheets.h"
 
+#include "gui_test_support.h"
+
 using namespace klueng;
 using render::ReportLanguage;
 
 namespace {
 
-core::machine::MachineSetup loadSetup() {
-  const std::string dir = core::io::findConfigDir(KLUENG_SOURCE_DIR);
-  core::machine::MachineSetup s;
-  s.tools = *core::io::readToolTable(dir + "/tools.cfg").value;
-  s.offsets = *core::io::readOffsetTable(dir + "/offset.cfg").value;
-  s.machine = *core::io::readMachineConfig(dir + "/machine.cfg").value;
-  return s;
-}
+using gui_test::loadSetup;
 
 render::ReportData sampleData(ReportLanguage lang) {
   render::ReportData d;

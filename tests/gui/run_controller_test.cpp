@@ -16,6 +16,8 @@
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/io/tool_config.h"
 
+#include "gui_test_support.h"
+
 using namespace klueng;
 using namespace klueng::gui;
 
@@ -23,14 +25,7 @@ namespace {
 
 std::string sample(const char* name) { return std::string(KLUENG_SAMPLES_DIR "/") + name; }
 
-core::machine::MachineSetup loadSetup() {
-  const std::string dir = core::io::findConfigDir(KLUENG_SOURCE_DIR);
-  core::machine::MachineSetup s;
-  s.tools = *core::io::readToolTable(dir + "/tools.cfg").value;
-  s.offsets = *core::io::readOffsetTable(dir + "/offset.cfg").value;
-  s.machine = *core::io::readMachineConfig(dir + "/machine.cfg").value;
-  return s;
-}
+using gui_test::loadSetup;
 
 core::io::ProgramFile loadProgram(const char* name) {
   auto r = core::io::readProgramFile(sample(name));
