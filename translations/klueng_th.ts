@@ -233,6 +233,10 @@
         <translation>Rook แบบดั้งเดิม</translation>
     </message>
     <message>
+        <source>Haas ST (NGC)</source>
+        <translation>Haas ST (NGC) เครื่องกลึงฮาส</translation>
+    </message>
+    <message>
         <location filename="../src/gui/help_contents.cpp" line="52" />
         <source>G codes (preparatory functions)</source>
         <translation>รหัส G (คำสั่งเตรียมการ)</translation>
@@ -575,6 +579,11 @@
         <location filename="../src/gui/main_window.cpp" line="500" />
         <source>&amp;Rook classic (1999 rules)</source>
         <translation>Rook แบบดั้งเดิม (กฎปี 1999) (&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/main_window.cpp" line="521" />
+        <source>&amp;Haas ST lathe (NGC)</source>
+        <translation>เครื่องกลึง Haas ST (NGC) (&amp;H)</translation>
     </message>
     <message>
         <location filename="../src/gui/main_window.cpp" line="501" />

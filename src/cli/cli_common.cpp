@@ -30,8 +30,8 @@ std::optional<Lang> parseLang(std::string_view text) {
 }
 
 std::optional<gcode::Dialect> parseDialect(std::string_view text) {
-  if (text == "fanuc") return gcode::Dialect::Fanuc;
-  if (text == "classic") return gcode::Dialect::Classic;
+  gcode::Dialect d{};
+  if (gcode::parseDialectId(text, d)) return d;
   return std::nullopt;
 }
 

@@ -46,7 +46,9 @@ QString HelpContents::buildHtml(bool thai, core::gcode::Dialect dialect) {
          "X is a diameter. Comments are written in ( ) or after ;. A / at the start of a block skips it "
          "when the Block Skip switch is on. Numbers without a decimal point are millimetres."));
   html += QStringLiteral("<p>%1 <b>%2</b></p>")
-              .arg(tr("Dialect:"), dialect == core::gcode::Dialect::Fanuc ? tr("Fanuc 0i-TF") : tr("Rook classic"));
+              .arg(tr("Dialect:"), dialect == core::gcode::Dialect::Fanuc ? tr("Fanuc 0i-TF")
+                                  : dialect == core::gcode::Dialect::Haas ? tr("Haas ST (NGC)")
+                                                                          : tr("Rook classic"));
   for (const char letter : {'G', 'M'}) {
     html += QStringLiteral("<h3><a name='%1'></a>%2</h3>")
                 .arg(QString(QLatin1Char(letter)), letter == 'G' ? tr("G codes (preparatory functions)")
@@ -56,7 +58,7 @@ QString HelpContents::buildHtml(bool thai, core::gcode::Dialect dialect) {
                 .arg(tr("Code"), tr("Meaning"), tr("Example"));
     for (const auto& c : core::gcode::codeTable()) {
       if (c.letter != letter) continue;
-      const bool known = dialect == core::gcode::Dialect::Fanuc ? c.fanuc : c.classic;
+      const bool known = c.in(dialect);
       const QString code = QStringLiteral("%1%2").arg(QLatin1Char(c.letter)).arg(c.number, 2, 10, QLatin1Char('0'));
       const auto name = thai ? c.nameTh : c.nameEn;
       const auto other = thai ? c.nameEn : c.nameTh;

@@ -52,6 +52,16 @@ namespace klueng::gui {
 
 namespace {
 
+// The Dialect menu's action of a machine profile ("actionDialectHaas").
+QString dialectActionName(core::gcode::Dialect d) {
+  switch (d) {
+    case core::gcode::Dialect::Fanuc: return QStringLiteral("actionDialectFanuc");
+    case core::gcode::Dialect::Haas: return QStringLiteral("actionDialectHaas");
+    case core::gcode::Dialect::Classic: return QStringLiteral("actionDialectClassic");
+  }
+  return QStringLiteral("actionDialectFanuc");
+}
+
 // Animation speeds: machine seconds per wall second; 0 = as fast as possible.
 // The same stops as the tool bar's speed slider.
 const std::vector<double>& speeds() { return RunSpeedControl::steps(); }
@@ -321,15 +331,14 @@ void MainWindow::createActions() {
   connect(make("actionOffsetDefine", "offset", QKeySequence(QStringLiteral("Ctrl+Shift+O"))), &QAction::triggered,
           this, &MainWindow::showOffsetDefine);
   dialectGroup_ = new QActionGroup(this);
-  auto* fanuc = make("actionDialectFanuc", nullptr);
-  auto* classic = make("actionDialectClassic", nullptr);
-  for (QAction* a : {fanuc, classic}) {
+  for (const core::gcode::MachineProfile& profile : core::gcode::machineProfiles()) {
+    QAction* a = make(dialectActionName(profile.dialect).toLatin1().constData(), nullptr);
     a->setCheckable(true);
+    a->setChecked(profile.dialect == dialect_);
     dialectGroup_->addAction(a);
+    const core::gcode::Dialect d = profile.dialect;
+    connect(a, &QAction::triggered, this, [this, d] { setDialect(d); });
   }
-  (dialect_ == core::gcode::Dialect::Fanuc ? fanuc : classic)->setChecked(true);
-  connect(fanuc, &QAction::triggered, this, [this] { setDialect(core::gcode::Dialect::Fanuc); });
-  connect(classic, &QAction::triggered, this, [this] { setDialect(core::gcode::Dialect::Classic); });
 
   // View
   connect(make("actionFitView", "fit", QKeySequence(QStringLiteral("Ctrl+0"))), &QAction::triggered, output_,
@@ -519,6 +528,7 @@ void MainWindow::retranslateUi() {
   set("actionToolSelect", tr("Tool &Select..."), tr("Choose the bitmap of each tool 01-08"));
   set("actionOffsetDefine", tr("Offset &Define..."), tr("Edit the 16 tool offsets"));
   set("actionDialectFanuc", tr("&Fanuc 0i-TF"));
+  set("actionDialectHaas", tr("&Haas ST lathe (NGC)"));
   set("actionDialectClassic", tr("&Rook classic (1999 rules)"));
   set("actionFitView", tr("&Fit to View"));
   set("actionZoomIn", tr("Zoom &In"));
@@ -555,9 +565,7 @@ void MainWindow::setDialect(core::gcode::Dialect d) {
   settings_->setDialect(d);
   editor_->setDialect(d);
   runner_->setDialect(d);
-  action(d == core::gcode::Dialect::Fanuc ? QStringLiteral("actionDialectFanuc")
-                                          : QStringLiteral("actionDialectClassic"))
-      ->setChecked(true);
+  action(dialectActionName(d))->setChecked(true);
   if (help_) help_->setDialect(d);
   runnerStale_ = true;
   checkNow();

@@ -17,13 +17,15 @@ QString Settings::language() const {
 void Settings::setLanguage(const QString& code) { settings_.setValue(key("ui/language"), code); }
 
 core::gcode::Dialect Settings::dialect() const {
-  return settings_.value(key("gcode/dialect")).toString() == QStringLiteral("classic")
-             ? core::gcode::Dialect::Classic
-             : core::gcode::Dialect::Fanuc;
+  const QByteArray id = settings_.value(key("gcode/dialect")).toString().toUtf8();
+  core::gcode::Dialect d = core::gcode::Dialect::Fanuc;
+  if (!core::gcode::parseDialectId(std::string_view(id.constData(), static_cast<std::size_t>(id.size())), d))
+    d = core::gcode::Dialect::Fanuc;
+  return d;
 }
 void Settings::setDialect(core::gcode::Dialect d) {
-  settings_.setValue(key("gcode/dialect"),
-                     d == core::gcode::Dialect::Classic ? QStringLiteral("classic") : QStringLiteral("fanuc"));
+  const std::string_view id = core::gcode::machineProfile(d).id;
+  settings_.setValue(key("gcode/dialect"), QString::fromUtf8(id.data(), static_cast<qsizetype>(id.size())));
 }
 
 QStringList Settings::recentFiles() const { return settings_.value(key("files/recent")).toStringList(); }

@@ -313,7 +313,7 @@ TEST(CliCheck, UnreadableFileWinsOverErrorsButEveryFileIsStillChecked) {
 TEST(CliCheck, UsageErrorsExitTwo) {
   EXPECT_EQ(runCli("check").exitCode, 2);
   EXPECT_EQ(runCli("check --lang de " + quote(kSamples + "/01-step-shaft.txt")).exitCode, 2);
-  EXPECT_EQ(runCli("check --dialect haas " + quote(kSamples + "/01-step-shaft.txt")).exitCode, 2);
+  EXPECT_EQ(runCli("check --dialect okuma " + quote(kSamples + "/01-step-shaft.txt")).exitCode, 2);
   EXPECT_EQ(runCli("check --frobnicate " + quote(kSamples + "/01-step-shaft.txt")).exitCode, 2);
   EXPECT_EQ(runCli("check " + quote(kSamples + "/01-step-shaft.txt") + " --config").exitCode, 2);
   EXPECT_EQ(runCli("nosuchcommand").exitCode, 2);

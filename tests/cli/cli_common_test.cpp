@@ -85,7 +85,9 @@ TEST(CliCommon, OptionValues) {
   EXPECT_FALSE(parseLang("TH"));
   EXPECT_EQ(parseDialect("classic"), core::gcode::Dialect::Classic);
   EXPECT_EQ(parseDialect("fanuc"), core::gcode::Dialect::Fanuc);
-  EXPECT_FALSE(parseDialect("haas"));
+  EXPECT_EQ(parseDialect("haas"), core::gcode::Dialect::Haas);
+  EXPECT_FALSE(parseDialect("okuma"));
+  EXPECT_FALSE(parseDialect("Fanuc"));
 }
 
 TEST(CliCommon, ShippedConfigLoadsCleanWithEveryBitmap) {

@@ -60,7 +60,8 @@ static_assert(kGroupCount <= 32, "group masks are 32-bit");
 
 class Checker {
  public:
-  Checker(const CheckOptions& options, std::vector<Diagnostic>& out) : options_(options), out_(out) {}
+  Checker(const CheckOptions& options, std::vector<Diagnostic>& out)
+      : options_(options), profile_(machineProfile(options.dialect)), out_(out) {}
 
   bool full() const { return full_; }
 
@@ -140,7 +141,7 @@ class Checker {
           const CodeInfo* row = n >= 0 && n <= 99 ? findCode(l, static_cast<int>(n), options_.dialect) : nullptr;
           if (!row) {
             if (l == 'G') emit(codes::kUnknownGCode, w, {wordText(w)});
-            else if (options_.dialect == Dialect::Fanuc)
+            else if (profile_.unknownMIsWarning)
               emit(codes::kMachineSpecificM, w, {wordText(w)}, Severity::Warning);
             else emit(codes::kUnknownMCode, w, {wordText(w)});
             break;
@@ -215,8 +216,8 @@ class Checker {
     // G28 without axis words moves nothing.
     const bool axisWords = has('X') || has('Z') || has('U') || has('W');
     if (g28 && !axisWords) {
-      if (options_.dialect == Dialect::Fanuc) emit(codes::kG28NoMotion, *g28, {}, Severity::Warning);
-      else emit(codes::kG28WithoutAxes, *g28, {});
+      if (profile_.bareG28 == BareG28::NoMotion) emit(codes::kG28NoMotion, *g28, {}, Severity::Warning);
+      else if (profile_.bareG28 == BareG28::Error) emit(codes::kG28WithoutAxes, *g28, {});
     }
 
     // Arc rules: the motion group is modal, so "X20 Z-5 R2" after a G02 is an arc too.
@@ -235,6 +236,7 @@ class Checker {
 
  private:
   const CheckOptions& options_;
+  const MachineProfile& profile_;
   std::vector<Diagnostic>& out_;
   bool inch_ = false;   // G20 seen last (G21 is the initial state)
   int motion_ = 0;      // group 01 code in force (G00 at start)
@@ -261,14 +263,14 @@ class Checker {
   }
 
   void checkTool(const Word& w) {
-    const bool fanuc = options_.dialect == Dialect::Fanuc;
-    const std::size_t digits = w.number.size();
+    const auto digits = static_cast<int>(w.number.size());
     const long long n = wholeNumber(w);
-    const bool shapeOk = n >= 0 && (digits == 4 || (fanuc && digits == 3));
+    const bool shapeOk = n >= 0 && digits >= profile_.minToolDigits && digits <= 4;
     const int tool = static_cast<int>(n / 100);
     const int offset = static_cast<int>(n % 100);
-    if (!shapeOk || tool < 1 || tool > 8 || offset > 16) {
-      emit(fanuc ? codes::kBadToolWordFanuc : codes::kBadToolWord, w, {wordText(w)});
+    const int maxTool = profile_.maxToolStation > 0 ? profile_.maxToolStation : options_.turretStations;
+    if (!shapeOk || tool < 1 || tool > maxTool || offset > profile_.maxOffset) {
+      emit(profile_.minToolDigits < 4 ? codes::kBadToolWordFanuc : codes::kBadToolWord, w, {wordText(w)});
       return;
     }
     if (options_.toolsWithBitmap) {

@@ -2,6 +2,7 @@
 #include "klueng/core/gcode/code_table.h"
 
 #include <array>
+#include <cstdint>
 
 namespace klueng::core::gcode {
 
@@ -9,189 +10,193 @@ namespace {
 
 using G = ModalGroup;
 using P = Phase;
-constexpr bool kF = true;   // in the Fanuc dialect
-constexpr bool kC = true;   // in the classic dialect
-constexpr bool kNo = false;
+// Dialect masks of a row.
+constexpr std::uint8_t kF = dialectBit(Dialect::Fanuc);
+constexpr std::uint8_t kH = dialectBit(Dialect::Haas);
+constexpr std::uint8_t kC = dialectBit(Dialect::Classic);
+constexpr std::uint8_t kFH = kF | kH;
+constexpr std::uint8_t kAll = kF | kH | kC;
 
 constexpr CodeInfo kTable[] = {
     // --- G codes -------------------------------------------------------------
-    {'G', 0, G::Motion, P::Motion, kF, kC, false, "Rapid traverse", "การเคลื่อนที่เร็ว",
+    {'G', 0, G::Motion, P::Motion, kAll, false, "Rapid traverse", "การเคลื่อนที่เร็ว",
      "G00 X52. Z2. - rapid to diameter 52, 2 mm in front of the face",
      "G00 X52. Z2. - เคลื่อนที่เร็วไปที่เส้นผ่าศก. 52 ห่างหน้างาน 2 มม."},
-    {'G', 1, G::Motion, P::Motion, kF, kC, false, "Linear interpolation", "การเคลื่อนที่เป็นเส้นตรง",
+    {'G', 1, G::Motion, P::Motion, kAll, false, "Linear interpolation", "การเคลื่อนที่เป็นเส้นตรง",
      "G01 Z-30. F0.2 - cut in a straight line to Z-30 at 0.2 mm/rev",
      "G01 Z-30. F0.2 - กลึงเป็นเส้นตรงไปที่ Z-30 ด้วยอัตราป้อน 0.2 มม./รอบ"},
-    {'G', 2, G::Motion, P::Motion, kF, kC, false, "Circular interpolation, clockwise",
+    {'G', 2, G::Motion, P::Motion, kAll, false, "Circular interpolation, clockwise",
      "การเคลื่อนที่เป็นส่วนโค้งตามเข็มนาฬิกา", "G02 X30. Z-24. R4. - clockwise arc of radius 4 to X30 Z-24",
      "G02 X30. Z-24. R4. - กลึงส่วนโค้งตามเข็มนาฬิการัศมี 4 มม. ไปที่ X30 Z-24"},
-    {'G', 3, G::Motion, P::Motion, kF, kC, false, "Circular interpolation, counter-clockwise",
+    {'G', 3, G::Motion, P::Motion, kAll, false, "Circular interpolation, counter-clockwise",
      "การเคลื่อนที่เป็นส่วนโค้งทวนเข็มนาฬิกา",
      "G03 X40. Z-22. R2. - counter-clockwise arc of radius 2 to X40 Z-22",
      "G03 X40. Z-22. R2. - กลึงส่วนโค้งทวนเข็มนาฬิการัศมี 2 มม. ไปที่ X40 Z-22"},
-    {'G', 4, G::NonModal, P::Motion, kF, kC, false, "Dwell", "การหยุดรอ (หน่วงเวลา)",
+    {'G', 4, G::NonModal, P::Motion, kAll, false, "Dwell", "การหยุดรอ (หน่วงเวลา)",
      "G04 U0.5 - wait 0.5 s (G04 P500 waits 500 ms)",
      "G04 U0.5 - หยุดรอ 0.5 วินาที (G04 P500 หยุดรอ 500 มิลลิวินาที)"},
-    {'G', 18, G::Plane, P::State, kF, kNo, false, "ZX plane", "เลือกระนาบ ZX",
+    {'G', 18, G::Plane, P::State, kFH, false, "ZX plane", "เลือกระนาบ ZX",
      "G18 - select the ZX plane (a lathe always works in it; no effect)",
      "G18 - เลือกระนาบ ZX (เครื่องกลึงใช้ระนาบนี้เสมอ จึงไม่มีผลใด ๆ)"},
-    {'G', 20, G::Units, P::State, kF, kC, false, "Inch input", "ป้อนค่าเป็นหน่วยนิ้ว",
+    {'G', 20, G::Units, P::State, kAll, false, "Inch input", "ป้อนค่าเป็นหน่วยนิ้ว",
      "G20 - the values that follow are in inches (up to 4 decimals)",
      "G20 - ค่าที่ตามมาเป็นหน่วยนิ้ว (ทศนิยมได้ไม่เกิน 4 ตำแหน่ง)"},
-    {'G', 21, G::Units, P::State, kF, kC, false, "Metric input", "ป้อนค่าเป็นหน่วยมิลลิเมตร",
+    {'G', 21, G::Units, P::State, kAll, false, "Metric input", "ป้อนค่าเป็นหน่วยมิลลิเมตร",
      "G21 - the values that follow are in millimetres", "G21 - ค่าที่ตามมาเป็นหน่วยมิลลิเมตร"},
-    {'G', 27, G::NonModal, P::Motion, kF, kC, false, "Reference point return check",
+    {'G', 27, G::NonModal, P::Motion, kAll, false, "Reference point return check",
      "การตรวจสอบการกลับสู่จุดอ้างอิง",
      "G27 X0. Z300. - rapid to the point and check that it is the reference point",
      "G27 X0. Z300. - เคลื่อนที่เร็วไปยังจุดนั้นแล้วตรวจสอบตำแหน่งว่าเป็นจุดอ้างอิง"},
-    {'G', 28, G::NonModal, P::Motion, kF, kC, false, "Reference point return", "การกลับสู่จุดอ้างอิง",
+    {'G', 28, G::NonModal, P::Motion, kAll, false, "Reference point return", "การกลับสู่จุดอ้างอิง",
      "G28 U0. W0. - return to the reference point straight from here",
      "G28 U0. W0. - กลับสู่จุดอ้างอิงจากตำแหน่งปัจจุบันโดยตรง"},
-    {'G', 29, G::NonModal, P::Motion, kF, kC, false, "Return from the reference point",
+    {'G', 29, G::NonModal, P::Motion, kAll, false, "Return from the reference point",
      "การกลับจากจุดอ้างอิง",
      "G29 X30. Z2. - from the reference point through the G28 intermediate point to X30 Z2",
      "G29 X30. Z2. - กลับจากจุดอ้างอิงผ่านจุดกลางทางของ G28 ไปที่ X30 Z2"},
-    {'G', 32, G::Motion, P::Motion, kF, kC, false, "Thread cutting", "การกลึงเกลียว",
+    {'G', 32, G::Motion, P::Motion, kAll, false, "Thread cutting", "การกลึงเกลียว",
      "G32 Z-30. F1.5 - cut a thread of lead 1.5 mm to Z-30 (under G97)",
      "G32 Z-30. F1.5 - กลึงเกลียวระยะพิตช์ 1.5 มม. ไปที่ Z-30 (ใช้กับ G97)"},
-    {'G', 40, G::NoseComp, P::State, kF, kC, false, "Nose radius compensation off",
+    {'G', 40, G::NoseComp, P::State, kAll, false, "Nose radius compensation off",
      "ยกเลิกการชดเชยรัศมีจมูกมีด", "G40 G00 X100. Z100. - cancel compensation on a rapid away from the part",
      "G40 G00 X100. Z100. - ยกเลิกการชดเชยขณะเคลื่อนที่เร็วออกจากชิ้นงาน"},
-    {'G', 41, G::NoseComp, P::State, kF, kC, false, "Nose radius compensation, tool left",
+    {'G', 41, G::NoseComp, P::State, kAll, false, "Nose radius compensation, tool left",
      "การชดเชยรัศมีจมูกมีด มีดตัดอยู่ด้านซ้าย",
      "G41 G00 X20. Z2. - start compensation with the tool left of the path (boring)",
      "G41 G00 X20. Z2. - เริ่มการชดเชย มีดตัดอยู่ด้านซ้ายของแนวการเคลื่อนที่ (งานคว้านรู)"},
-    {'G', 42, G::NoseComp, P::State, kF, kC, false, "Nose radius compensation, tool right",
+    {'G', 42, G::NoseComp, P::State, kAll, false, "Nose radius compensation, tool right",
      "การชดเชยรัศมีจมูกมีด มีดตัดอยู่ด้านขวา",
      "G42 G00 X24. Z2. - start compensation with the tool right of the path (outside turning)",
      "G42 G00 X24. Z2. - เริ่มการชดเชย มีดตัดอยู่ด้านขวาของแนวการเคลื่อนที่ (งานกลึงปอกผิว)"},
-    {'G', 50, G::NonModal, P::Motion, kF, kC, false, "Coordinate setting / spindle speed limit",
+    {'G', 50, G::NonModal, P::Motion, kAll, false, "Coordinate setting / spindle speed limit",
      "ตั้งระบบพิกัดงาน / จำกัดความเร็วรอบ",
      "G50 S2500 - limit the spindle to 2500 rpm under G96 (G50 X_ Z_ sets the work coordinates)",
      "G50 S2500 - จำกัดความเร็วรอบไม่เกิน 2500 รอบ/นาที ขณะใช้ G96 (G50 X_ Z_ ตั้งพิกัดงาน)"},
-    {'G', 53, G::NonModal, P::Motion, kF, kNo, false, "Move in machine coordinates",
+    {'G', 53, G::NonModal, P::Motion, kFH, false, "Move in machine coordinates",
      "เคลื่อนที่ในระบบพิกัดเครื่อง", "G53 X0. Z0. - rapid to X0 Z0 of the machine coordinates",
      "G53 X0. Z0. - เคลื่อนที่เร็วไปที่ X0 Z0 ของระบบพิกัดเครื่อง"},
-    {'G', 54, G::WorkOffset, P::State, kF, kNo, false, "Work offset 1", "ระบบพิกัดงานที่ 1",
+    {'G', 54, G::WorkOffset, P::State, kFH, false, "Work offset 1", "ระบบพิกัดงานที่ 1",
      "G54 - use work offset 1 (zero unless set)", "G54 - ใช้ระบบพิกัดงานที่ 1 (เป็นศูนย์ถ้าไม่ได้กำหนด)"},
-    {'G', 55, G::WorkOffset, P::State, kF, kNo, false, "Work offset 2", "ระบบพิกัดงานที่ 2",
+    {'G', 55, G::WorkOffset, P::State, kFH, false, "Work offset 2", "ระบบพิกัดงานที่ 2",
      "G55 - use work offset 2 (zero unless set)", "G55 - ใช้ระบบพิกัดงานที่ 2 (เป็นศูนย์ถ้าไม่ได้กำหนด)"},
-    {'G', 56, G::WorkOffset, P::State, kF, kNo, false, "Work offset 3", "ระบบพิกัดงานที่ 3",
+    {'G', 56, G::WorkOffset, P::State, kFH, false, "Work offset 3", "ระบบพิกัดงานที่ 3",
      "G56 - use work offset 3 (zero unless set)", "G56 - ใช้ระบบพิกัดงานที่ 3 (เป็นศูนย์ถ้าไม่ได้กำหนด)"},
-    {'G', 57, G::WorkOffset, P::State, kF, kNo, false, "Work offset 4", "ระบบพิกัดงานที่ 4",
+    {'G', 57, G::WorkOffset, P::State, kFH, false, "Work offset 4", "ระบบพิกัดงานที่ 4",
      "G57 - use work offset 4 (zero unless set)", "G57 - ใช้ระบบพิกัดงานที่ 4 (เป็นศูนย์ถ้าไม่ได้กำหนด)"},
-    {'G', 58, G::WorkOffset, P::State, kF, kNo, false, "Work offset 5", "ระบบพิกัดงานที่ 5",
+    {'G', 58, G::WorkOffset, P::State, kFH, false, "Work offset 5", "ระบบพิกัดงานที่ 5",
      "G58 - use work offset 5 (zero unless set)", "G58 - ใช้ระบบพิกัดงานที่ 5 (เป็นศูนย์ถ้าไม่ได้กำหนด)"},
-    {'G', 59, G::WorkOffset, P::State, kF, kNo, false, "Work offset 6", "ระบบพิกัดงานที่ 6",
+    {'G', 59, G::WorkOffset, P::State, kFH, false, "Work offset 6", "ระบบพิกัดงานที่ 6",
      "G59 - use work offset 6 (zero unless set)", "G59 - ใช้ระบบพิกัดงานที่ 6 (เป็นศูนย์ถ้าไม่ได้กำหนด)"},
-    {'G', 70, G::CannedCycle, P::Motion, kF, kC, false, "Finishing cycle", "วัฏจักรกลึงเก็บผิว",
+    {'G', 70, G::CannedCycle, P::Motion, kAll, false, "Finishing cycle", "วัฏจักรกลึงเก็บผิว",
      "G70 P100 Q200 - finish along the contour of blocks N100 to N200",
      "G70 P100 Q200 - กลึงเก็บผิวตามรูปร่างในบล็อก N100 ถึง N200"},
-    {'G', 71, G::CannedCycle, P::Motion, kF, kC, false, "Stock removal in turning",
+    {'G', 71, G::CannedCycle, P::Motion, kAll, false, "Stock removal in turning",
      "วัฏจักรกลึงปาดผิวตามแนวแกน Z",
      "G71 U1. R0.5 - cut 1 mm per side, retract 0.5 mm; then G71 P_ Q_ U_ W_ F_",
      "G71 U1. R0.5 - ป้อนลึกด้านละ 1 มม. ถอยมีด 0.5 มม. แล้วตามด้วย G71 P_ Q_ U_ W_ F_"},
-    {'G', 72, G::CannedCycle, P::Motion, kF, kC, false, "Stock removal in facing",
+    {'G', 72, G::CannedCycle, P::Motion, kAll, false, "Stock removal in facing",
      "วัฏจักรกลึงปาดหน้า",
      "G72 W1. R0.5 - cut 1 mm along Z, retract 0.5 mm; then G72 P_ Q_ U_ W_ F_",
      "G72 W1. R0.5 - ป้อนลึกตามแนวแกน Z ครั้งละ 1 มม. ถอยมีด 0.5 มม. แล้วตามด้วย G72 P_ Q_ U_ W_ F_"},
-    {'G', 73, G::CannedCycle, P::Motion, kF, kC, false, "Pattern repeating cycle",
+    {'G', 73, G::CannedCycle, P::Motion, kAll, false, "Pattern repeating cycle",
      "วัฏจักรกลึงซ้ำตามรูปร่าง",
      "G73 U3. W0. R3 - remove 3 mm in 3 passes that follow the contour; then G73 P_ Q_ U_ W_ F_",
      "G73 U3. W0. R3 - กลึงออก 3 มม. ใน 3 เที่ยวตามรูปร่าง แล้วตามด้วย G73 P_ Q_ U_ W_ F_"},
-    {'G', 74, G::CannedCycle, P::Motion, kF, kC, false, "Face peck drilling cycle",
+    {'G', 74, G::CannedCycle, P::Motion, kAll, false, "Face peck drilling cycle",
      "วัฏจักรเจาะแบบถอยเป็นช่วง",
      "G74 R1. - retract 1 mm after each peck; then G74 Z_ Q_ F_",
      "G74 R1. - ถอยดอกเจาะ 1 มม. หลังเจาะแต่ละช่วง แล้วตามด้วย G74 Z_ Q_ F_"},
-    {'G', 75, G::CannedCycle, P::Motion, kF, kC, false, "Grooving cycle", "วัฏจักรกลึงร่อง",
+    {'G', 75, G::CannedCycle, P::Motion, kAll, false, "Grooving cycle", "วัฏจักรกลึงร่อง",
      "G75 R1. - retract 1 mm after each peck; then G75 X_ Z_ P_ Q_ F_",
      "G75 R1. - ถอยมีด 1 มม. หลังป้อนแต่ละช่วง แล้วตามด้วย G75 X_ Z_ P_ Q_ F_"},
-    {'G', 76, G::CannedCycle, P::Motion, kF, kC, false, "Multi-pass threading cycle",
+    {'G', 76, G::CannedCycle, P::Motion, kAll, false, "Multi-pass threading cycle",
      "วัฏจักรกลึงเกลียวหลายเที่ยว",
      "G76 P020060 Q50 R0.05 - then G76 X28.16 Z-30. P920 Q300 F1.5",
      "G76 P020060 Q50 R0.05 - แล้วตามด้วย G76 X28.16 Z-30. P920 Q300 F1.5"},
-    {'G', 80, G::CannedCycle, P::State, kF, kNo, false, "Canned cycle cancel", "ยกเลิกวัฏจักร",
+    {'G', 80, G::CannedCycle, P::State, kFH, false, "Canned cycle cancel", "ยกเลิกวัฏจักร",
      "G80 - cancel a canned cycle (no effect on this lathe)",
      "G80 - ยกเลิกวัฏจักร (ไม่มีผลกับเครื่องกลึงนี้)"},
-    {'G', 90, G::Motion, P::Motion, kF, kC, false, "Turning cycle", "วัฏจักรกลึงปอกผิวอย่างง่าย",
+    {'G', 90, G::Motion, P::Motion, kAll, false, "Turning cycle", "วัฏจักรกลึงปอกผิวอย่างง่าย",
      "G90 X45. Z-30. F0.2 - one pass to diameter 45 over 30 mm, then back to the start",
      "G90 X45. Z-30. F0.2 - กลึงหนึ่งเที่ยวที่เส้นผ่าศก. 45 ยาว 30 มม. แล้วกลับจุดเริ่ม"},
-    {'G', 92, G::Motion, P::Motion, kF, kC, false, "Threading cycle", "วัฏจักรกลึงเกลียวอย่างง่าย",
+    {'G', 92, G::Motion, P::Motion, kAll, false, "Threading cycle", "วัฏจักรกลึงเกลียวอย่างง่าย",
      "G92 X29.4 Z-30. F1.5 - one thread pass, then back to the start",
      "G92 X29.4 Z-30. F1.5 - กลึงเกลียวหนึ่งเที่ยว แล้วกลับจุดเริ่ม"},
-    {'G', 94, G::Motion, P::Motion, kF, kC, false, "Facing cycle", "วัฏจักรกลึงปาดหน้าอย่างง่าย",
+    {'G', 94, G::Motion, P::Motion, kAll, false, "Facing cycle", "วัฏจักรกลึงปาดหน้าอย่างง่าย",
      "G94 X20. Z-2. F0.2 - one facing pass to Z-2, then back to the start",
      "G94 X20. Z-2. F0.2 - กลึงปาดหน้าหนึ่งเที่ยวถึง Z-2 แล้วกลับจุดเริ่ม"},
-    {'G', 96, G::SpindleMode, P::State, kF, kC, false, "Constant surface speed", "ความเร็วผิวคงที่",
+    {'G', 96, G::SpindleMode, P::State, kAll, false, "Constant surface speed", "ความเร็วผิวคงที่",
      "G96 S180 - keep the cutting speed at 180 m/min", "G96 S180 - รักษาความเร็วผิวคงที่ 180 ม./นาที"},
-    {'G', 97, G::SpindleMode, P::State, kF, kC, false, "Constant spindle speed", "ความเร็วรอบคงที่",
+    {'G', 97, G::SpindleMode, P::State, kAll, false, "Constant spindle speed", "ความเร็วรอบคงที่",
      "G97 S1000 - turn the spindle at 1000 rpm", "G97 S1000 - หมุนด้วยความเร็วรอบคงที่ 1000 รอบ/นาที"},
     // G98/G99 stand alone only in the classic dialect (SPEC 5 rule 7, 13).
-    {'G', 98, G::FeedMode, P::State, kF, kNo, false, "Feed per minute", "อัตราป้อนเป็น มม./นาที",
+    {'G', 98, G::FeedMode, P::State, kFH, false, "Feed per minute", "อัตราป้อนเป็น มม./นาที",
      "G98 - F is in mm/min from here on", "G98 - ค่า F เป็น มม./นาที ตั้งแต่บล็อกนี้"},
-    {'G', 98, G::FeedMode, P::State, kNo, kC, true, "Feed per minute", "อัตราป้อนเป็น มม./นาที",
+    {'G', 98, G::FeedMode, P::State, kC, true, "Feed per minute", "อัตราป้อนเป็น มม./นาที",
      "G98 - alone in its block: F is in mm/min from here on",
      "G98 - อยู่เดี่ยวในบล็อก: ค่า F เป็น มม./นาที ตั้งแต่บล็อกนี้"},
-    {'G', 99, G::FeedMode, P::State, kF, kNo, false, "Feed per revolution", "อัตราป้อนเป็น มม./รอบ",
+    {'G', 99, G::FeedMode, P::State, kFH, false, "Feed per revolution", "อัตราป้อนเป็น มม./รอบ",
      "G99 - F is in mm/rev from here on", "G99 - ค่า F เป็น มม./รอบ ตั้งแต่บล็อกนี้"},
-    {'G', 99, G::FeedMode, P::State, kNo, kC, true, "Feed per revolution", "อัตราป้อนเป็น มม./รอบ",
+    {'G', 99, G::FeedMode, P::State, kC, true, "Feed per revolution", "อัตราป้อนเป็น มม./รอบ",
      "G99 - alone in its block: F is in mm/rev from here on",
      "G99 - อยู่เดี่ยวในบล็อก: ค่า F เป็น มม./รอบ ตั้งแต่บล็อกนี้"},
 
     // --- M codes -------------------------------------------------------------
-    {'M', 0, G::MProgram, P::AfterMotion, kF, kC, true, "Program stop", "หยุดโปรแกรม",
+    {'M', 0, G::MProgram, P::AfterMotion, kAll, true, "Program stop", "หยุดโปรแกรม",
      "M00 - stop; press Go to carry on", "M00 - หยุดการทำงาน กด เริ่มทำงาน เพื่อทำงานต่อ"},
-    {'M', 1, G::MProgram, P::AfterMotion, kF, kC, true, "Optional stop", "ทางเลือกการหยุด (หยุดเลือกได้)",
+    {'M', 1, G::MProgram, P::AfterMotion, kAll, true, "Optional stop", "ทางเลือกการหยุด (หยุดเลือกได้)",
      "M01 - stop only when the Optional Stop switch is on",
      "M01 - หยุดเฉพาะเมื่อเปิดสวิตช์ทางเลือกการหยุด"},
-    {'M', 2, G::MProgram, P::AfterMotion, kF, kC, true, "End of program", "จบโปรแกรม",
+    {'M', 2, G::MProgram, P::AfterMotion, kAll, true, "End of program", "จบโปรแกรม",
      "M02 - end of program", "M02 - จบโปรแกรม"},
-    {'M', 3, G::MSpindle, P::BeforeMotion, kF, kC, false, "Spindle clockwise", "หมุนตามเข็มนาฬิกา",
+    {'M', 3, G::MSpindle, P::BeforeMotion, kAll, false, "Spindle clockwise", "หมุนตามเข็มนาฬิกา",
      "M03 S1000 - start the spindle clockwise at 1000 rpm",
      "M03 S1000 - เริ่มหมุนตามเข็มนาฬิกาที่ 1000 รอบ/นาที"},
-    {'M', 4, G::MSpindle, P::BeforeMotion, kF, kC, false, "Spindle counter-clockwise", "หมุนทวนเข็มนาฬิกา",
+    {'M', 4, G::MSpindle, P::BeforeMotion, kAll, false, "Spindle counter-clockwise", "หมุนทวนเข็มนาฬิกา",
      "M04 S1000 - start the spindle counter-clockwise at 1000 rpm",
      "M04 S1000 - เริ่มหมุนทวนเข็มนาฬิกาที่ 1000 รอบ/นาที"},
-    {'M', 5, G::MSpindle, P::AfterMotion, kF, kC, false, "Spindle stop", "หยุดหมุน",
+    {'M', 5, G::MSpindle, P::AfterMotion, kAll, false, "Spindle stop", "หยุดหมุน",
      "M05 - stop the spindle (after the motion of its block)",
      "M05 - หยุดหมุนเพลาจับงาน (หลังการเคลื่อนที่ในบล็อกเดียวกัน)"},
-    {'M', 8, G::MCoolant, P::BeforeMotion, kF, kC, false, "Coolant on", "เปิดสารหล่อเย็น",
+    {'M', 8, G::MCoolant, P::BeforeMotion, kAll, false, "Coolant on", "เปิดสารหล่อเย็น",
      "M08 - coolant on", "M08 - เปิดสารหล่อเย็น"},
-    {'M', 9, G::MCoolant, P::AfterMotion, kF, kC, false, "Coolant off", "ปิดสารหล่อเย็น",
+    {'M', 9, G::MCoolant, P::AfterMotion, kAll, false, "Coolant off", "ปิดสารหล่อเย็น",
      "M09 - coolant off (after the motion of its block)",
      "M09 - ปิดสารหล่อเย็น (หลังการเคลื่อนที่ในบล็อกเดียวกัน)"},
-    {'M', 30, G::MProgram, P::AfterMotion, kF, kC, true, "End of program and rewind",
+    {'M', 30, G::MProgram, P::AfterMotion, kAll, true, "End of program and rewind",
      "จบโปรแกรมและย้อนกลับต้นโปรแกรม", "M30 - end of program, back to its start",
      "M30 - จบโปรแกรมและย้อนกลับไปต้นโปรแกรม"},
     // M41 means C-axis mode in the classic dialect, a gear range on a Fanuc (SPEC 13).
-    {'M', 41, G::MCAxis, P::BeforeMotion, kNo, kC, false, "C-axis mode on",
+    {'M', 41, G::MCAxis, P::BeforeMotion, kC, false, "C-axis mode on",
      "เปิดโหมดควบคุมการเคลื่อนที่ของแกน C", "M41 - enter C-axis mode (the brake must be on: M86 first)",
      "M41 - เข้าสู่โหมดควบคุมการเคลื่อนที่ของแกน C (ต้องเบรกก่อนด้วย M86)"},
-    {'M', 41, G::MGear, P::BeforeMotion, kF, kNo, false, "Gear range 1 (low)", "เลือกช่วงเกียร์ 1 (ต่ำ)",
+    {'M', 41, G::MGear, P::BeforeMotion, kFH, false, "Gear range 1 (low)", "เลือกช่วงเกียร์ 1 (ต่ำ)",
      "M41 - select the low gear range (no motion)", "M41 - เลือกช่วงเกียร์ต่ำ (ไม่มีการเคลื่อนที่)"},
-    {'M', 42, G::MGear, P::BeforeMotion, kF, kNo, false, "Gear range 2 (high)", "เลือกช่วงเกียร์ 2 (สูง)",
+    {'M', 42, G::MGear, P::BeforeMotion, kFH, false, "Gear range 2 (high)", "เลือกช่วงเกียร์ 2 (สูง)",
      "M42 - select the high gear range (no motion)", "M42 - เลือกช่วงเกียร์สูง (ไม่มีการเคลื่อนที่)"},
-    {'M', 86, G::MBrake, P::BeforeMotion, kF, kC, false, "Spindle brake on", "เบรกเพลาจับงาน",
+    {'M', 86, G::MBrake, P::BeforeMotion, kAll, false, "Spindle brake on", "เบรกเพลาจับงาน",
      "M86 - apply the brake (the spindle must be stopped)", "M86 - เบรกเพลาจับงาน (เพลาต้องหยุดหมุนก่อน)"},
-    {'M', 87, G::MBrake, P::BeforeMotion, kF, kC, false, "Spindle brake off", "ปลดเบรกเพลาจับงาน",
+    {'M', 87, G::MBrake, P::BeforeMotion, kAll, false, "Spindle brake off", "ปลดเบรกเพลาจับงาน",
      "M87 - release the brake (leave C-axis mode first)",
      "M87 - ปลดเบรก (ต้องออกจากโหมดควบคุมการเคลื่อนที่ของแกน C ก่อน)"},
-    {'M', 91, G::MCAxis, P::BeforeMotion, kF, kC, false, "C-axis mode off",
+    {'M', 91, G::MCAxis, P::BeforeMotion, kAll, false, "C-axis mode off",
      "ปิดโหมดควบคุมการเคลื่อนที่ของแกน C", "M91 - leave C-axis mode",
      "M91 - ออกจากโหมดควบคุมการเคลื่อนที่ของแกน C"},
-    {'M', 98, G::MSubprogram, P::AfterMotion, kF, kC, false, "Subprogram call", "เรียกโปรแกรมย่อย",
+    {'M', 98, G::MSubprogram, P::AfterMotion, kAll, false, "Subprogram call", "เรียกโปรแกรมย่อย",
      "M98 P1234 - run subprogram O1234", "M98 P1234 - เรียกใช้โปรแกรมย่อย O1234"},
-    {'M', 99, G::MSubprogram, P::AfterMotion, kF, kC, false, "End of subprogram", "จบโปรแกรมย่อย",
+    {'M', 99, G::MSubprogram, P::AfterMotion, kAll, false, "End of subprogram", "จบโปรแกรมย่อย",
      "M99 - return to the calling program", "M99 - กลับไปยังโปรแกรมที่เรียก"},
 };
 
 // Direct index [dialect][G/M][number] -> row, built once.
 struct Index {
-  std::array<std::array<std::array<const CodeInfo*, 100>, 2>, 2> rows{};
+  static constexpr std::size_t kDialects = 3;
+  std::array<std::array<std::array<const CodeInfo*, 100>, 2>, kDialects> rows{};
   Index() {
     for (const CodeInfo& row : kTable) {
       const int kind = row.letter == 'G' ? 0 : 1;
-      if (row.fanuc) rows[0][kind][row.number] = &row;
-      if (row.classic) rows[1][kind][row.number] = &row;
+      for (std::size_t d = 0; d < kDialects; ++d)
+        if (row.dialects & (1u << d)) rows[d][kind][row.number] = &row;
     }
   }
 };
@@ -207,7 +212,7 @@ std::span<const CodeInfo> codeTable() { return kTable; }
 
 const CodeInfo* findCode(char letter, int number, Dialect dialect) {
   if ((letter != 'G' && letter != 'M') || number < 0 || number > 99) return nullptr;
-  return index().rows[dialect == Dialect::Fanuc ? 0 : 1][letter == 'G' ? 0 : 1][number];
+  return index().rows[static_cast<std::size_t>(dialect)][letter == 'G' ? 0 : 1][number];
 }
 
 std::optional<CodeInfo> lookupCode(char letter, int number, Dialect dialect) {
@@ -239,6 +244,6 @@ std::string_view modalGroupNumber(ModalGroup group) {
   return "?";
 }
 
-std::string_view dialectName(Dialect dialect) { return dialect == Dialect::Fanuc ? "fanuc" : "classic"; }
+std::string_view dialectName(Dialect dialect) { return machineProfile(dialect).id; }
 
 }  // namespace klueng::core::gcode

@@ -15,6 +15,9 @@ namespace klueng::core::gcode {
 
 struct CheckOptions {
   Dialect dialect = Dialect::Fanuc;
+  // Turret stations of the machine (machine.cfg turret_stations), where the
+  // profile takes the T range from the machine.
+  int turretStations = 8;
   // Tools 1..8 that have a bitmap in tools.cfg; empty = do not check (no table loaded).
   std::optional<std::vector<int>> toolsWithBitmap;
 };

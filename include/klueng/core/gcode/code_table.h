@@ -7,9 +7,10 @@
 #include <span>
 #include <string_view>
 
+#include "klueng/core/gcode/machine_profile.h"
+
 namespace klueng::core::gcode {
 
-enum class Dialect { Fanuc, Classic };
 
 enum class ModalGroup {
   NonModal,      // 00: G04 G27 G28 G29 G50 (G53 in Fanuc)
@@ -36,12 +37,12 @@ enum class ModalGroup {
 enum class Phase { State = 0, BeforeMotion = 1, Motion = 2, AfterMotion = 3 };
 
 struct CodeInfo {
+  bool in(Dialect d) const { return (dialects & dialectBit(d)) != 0; }
   char letter;            // 'G' or 'M'
   int number;             // 0..99
   ModalGroup group;
   Phase phase;
-  bool fanuc;             // accepted in the Fanuc 0i-TF dialect
-  bool classic;           // accepted in the Rook classic dialect
+  std::uint8_t dialects;  // dialectBit() of each dialect that accepts the row
   bool mustStandAlone;    // M00 M01 M02 M30 (and G98/G99 in classic)
   std::string_view nameEn;  // short help: "Rapid traverse"
   std::string_view nameTh;
@@ -49,8 +50,8 @@ struct CodeInfo {
   std::string_view exampleTh;
 };
 
-// Every row of both dialects. A code whose meaning differs between the
-// dialects (M41, G98/G99 standing alone) has one row per dialect.
+// Every row of every dialect. A code whose meaning differs between the
+// dialects (M41, G98/G99 standing alone) has one row per meaning.
 std::span<const CodeInfo> codeTable();
 // The row for a code in a dialect; nullopt when the dialect does not know it.
 std::optional<CodeInfo> lookupCode(char letter, int number, Dialect dialect);
@@ -59,7 +60,7 @@ const CodeInfo* findCode(char letter, int number, Dialect dialect);
 
 // Fanuc's number of a modal group, as printed in messages ("01" for Motion).
 std::string_view modalGroupNumber(ModalGroup group);
-// "fanuc" / "classic", as the CLI spells them.
+// "fanuc" / "haas" / "classic", as the CLI spells them.
 std::string_view dialectName(Dialect dialect);
 
 }  // namespace klueng::core::gcode

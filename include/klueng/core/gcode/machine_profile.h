@@ -1,0 +1,82 @@
+#pragma once
+// Machine profiles (SPEC 13): what differs between the dialects, as data.
+// A dialect is the code table (which G/M codes exist, with what meaning) plus
+// one row of this table (word formats, program numbers, T words, cycle forms,
+// power-on units ...). A rule that differs between dialects is one field here,
+// read by the checker, the interpreter and the cycles; they never branch on
+// the dialect itself. Sources of each Fanuc/Haas value: docs/dialects.md.
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+namespace klueng::core::gcode {
+
+enum class Dialect : std::uint8_t { Fanuc, Haas, Classic };
+
+// Bit of a dialect in a code-table row's mask.
+constexpr std::uint8_t dialectBit(Dialect d) { return static_cast<std::uint8_t>(1u << static_cast<unsigned>(d)); }
+
+enum class InputUnits : std::uint8_t { Millimetre, Inch };
+
+// How the control reads more decimals than the least input increment.
+enum class ExtraDecimals : std::uint8_t {
+  Error,             // classic: E111
+  RoundWithWarning,  // Fanuc/Haas: rounded to the increment, a warning says so
+};
+
+// The format of the multiple repetitive cycles G70-G76.
+enum class CycleForm : std::uint8_t {
+  TwoBlock,  // Fanuc 0i-TF (G-code system A): G71 U R / G71 P Q U W F
+  OneBlock,  // Haas: G71 P Q U W D I K F S T in one block
+};
+
+// The unit of G04 P.
+enum class DwellPUnit : std::uint8_t {
+  Milliseconds,             // classic, Fanuc: P is an integer in ms (P500 = 0.5 s)
+  SecondsWithPointElseMs,   // Haas: P1.5 = 1.5 s, P1500 = 1.5 s (no point: ms)
+};
+
+// What a G28 without axis words does.
+enum class BareG28 : std::uint8_t {
+  Error,        // classic: E309
+  NoMotion,     // Fanuc: moves nothing, warning W102
+  HomeAllAxes,  // Haas: returns X and Z to the reference point
+};
+
+struct MachineProfile {
+  Dialect dialect;
+  std::string_view id;       // "fanuc", "haas", "classic" (CLI, settings)
+  std::string_view nameEn;   // "Fanuc 0i-TF"
+  std::string_view nameTh;
+  // Address letters a block may hold (SPEC 5 rule 1 and its extensions).
+  std::string_view letters;
+  // Program numbers: O (or ':' where colonProgramNumber) with 1..programNumberMax.
+  int programNumberMax;
+  bool colonProgramNumber;
+  int sequenceNumberMax;     // N 1..max
+  // Word formats: decimals of the least input increment, mm and inch.
+  int decimalsMm;
+  int decimalsInch;
+  ExtraDecimals extraDecimals;
+  InputUnits powerOnUnits;   // before any G20/G21 (overridden by --units / the GUI setting)
+  // T words: tool number and offset number. Digits: a T word has minToolDigits..4
+  // digits (T101 = tool 01 offset 01 when 3 are allowed).
+  int minToolDigits;
+  int maxToolStation;        // 0 = the machine's turret size (machine.cfg turret_stations)
+  int maxOffset;             // offset rows (16 classic, 64 others)
+  DwellPUnit dwellP;
+  BareG28 bareG28;
+  // Group-00 codes that may share a block with G00/G01 (G28, G30, G53), as G numbers.
+  std::span<const int> oneShotsWithMotion;
+  CycleForm cycleForm;
+  bool unknownMIsWarning;    // an M code outside the table: W101 (true) or E115 (false)
+};
+
+// The row of a dialect.
+const MachineProfile& machineProfile(Dialect dialect);
+// Every profile, in menu order (Fanuc, Haas, classic).
+std::span<const MachineProfile> machineProfiles();
+// "fanuc" / "haas" / "classic" -> dialect; nullopt-like false when unknown.
+bool parseDialectId(std::string_view id, Dialect& out);
+
+}  // namespace klueng::core::gcode

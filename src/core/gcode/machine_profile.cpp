@@ -1,0 +1,102 @@
+// The machine profile table (SPEC 13): one row per dialect. Sources of the
+// Fanuc and Haas values are in docs/dialects.md.
+#include "klueng/core/gcode/machine_profile.h"
+
+#include <array>
+
+namespace klueng::core::gcode {
+
+namespace {
+
+constexpr std::array<int, 0> kNoOneShots{};
+constexpr std::array<int, 3> kG28G30G53{28, 30, 53};
+
+constexpr MachineProfile kProfiles[] = {
+    {
+        .dialect = Dialect::Fanuc,
+        .id = "fanuc",
+        .nameEn = "Fanuc 0i-TF",
+        .nameTh = "ฟานัค 0i-TF",
+        .letters = "CFGHIKMNOPQRSTUWXZ",
+        .programNumberMax = 99999999,
+        .colonProgramNumber = true,
+        .sequenceNumberMax = 99999,
+        .decimalsMm = 3,
+        .decimalsInch = 4,
+        .extraDecimals = ExtraDecimals::RoundWithWarning,
+        .powerOnUnits = InputUnits::Millimetre,
+        .minToolDigits = 3,
+        .maxToolStation = 0,
+        .maxOffset = 64,
+        .dwellP = DwellPUnit::Milliseconds,
+        .bareG28 = BareG28::NoMotion,
+        .oneShotsWithMotion = kG28G30G53,
+        .cycleForm = CycleForm::TwoBlock,
+        .unknownMIsWarning = true,
+    },
+    {
+        .dialect = Dialect::Haas,
+        .id = "haas",
+        .nameEn = "Haas ST (NGC)",
+        .nameTh = "ฮาส ST (NGC)",
+        .letters = "ACDEFGHIJKMNOPQRSTUWXZ",
+        .programNumberMax = 99999,
+        .colonProgramNumber = false,
+        .sequenceNumberMax = 99999,
+        .decimalsMm = 3,
+        .decimalsInch = 4,
+        .extraDecimals = ExtraDecimals::RoundWithWarning,
+        .powerOnUnits = InputUnits::Inch,
+        .minToolDigits = 3,
+        .maxToolStation = 0,
+        .maxOffset = 64,
+        .dwellP = DwellPUnit::SecondsWithPointElseMs,
+        .bareG28 = BareG28::HomeAllAxes,
+        .oneShotsWithMotion = kG28G30G53,
+        .cycleForm = CycleForm::OneBlock,
+        .unknownMIsWarning = true,
+    },
+    {
+        .dialect = Dialect::Classic,
+        .id = "classic",
+        .nameEn = "Rook classic (1999 rules)",
+        .nameTh = "รุก คลาสสิก (กฎปี 2542)",
+        .letters = "CFGHIKMNOPQRSTUWXZ",
+        .programNumberMax = 9999,
+        .colonProgramNumber = false,
+        .sequenceNumberMax = 9999,
+        .decimalsMm = 3,
+        .decimalsInch = 4,
+        .extraDecimals = ExtraDecimals::Error,
+        .powerOnUnits = InputUnits::Millimetre,
+        .minToolDigits = 4,
+        .maxToolStation = 8,
+        .maxOffset = 16,
+        .dwellP = DwellPUnit::Milliseconds,
+        .bareG28 = BareG28::Error,
+        .oneShotsWithMotion = kNoOneShots,
+        .cycleForm = CycleForm::TwoBlock,
+        .unknownMIsWarning = false,
+    },
+};
+
+}  // namespace
+
+const MachineProfile& machineProfile(Dialect dialect) {
+  for (const MachineProfile& p : kProfiles)
+    if (p.dialect == dialect) return p;
+  return kProfiles[0];
+}
+
+std::span<const MachineProfile> machineProfiles() { return kProfiles; }
+
+bool parseDialectId(std::string_view id, Dialect& out) {
+  for (const MachineProfile& p : kProfiles)
+    if (p.id == id) {
+      out = p.dialect;
+      return true;
+    }
+  return false;
+}
+
+}  // namespace klueng::core::gcode
