@@ -22,7 +22,8 @@
 //   T08 offset 08: R0, tip 6 - inside thread tool, apex controlled.
 // Stations the shipped tools.cfg has no tool for are given with --tool from
 // the tool library: 12=parting-3mm (blade 3 mm = 0.1181 in, left corner
-// controlled) and 2=vnmg-35-r02 (35 degree VNMG, R0.2 mm, tip 3).
+// controlled) and 9=vnmg-35-r02 (35 degree VNMG, R0.2 mm, tip 3; offset row 09
+// is 0 0 0 0, so it takes the library tool's nose radius and tip).
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -333,7 +334,7 @@ TEST(RealStyleHaas, Bushing_Tube_OdThenBore_M00) {
 // a 35 degree VNMG for the neck (an 80 degree CNMG's trailing edge would rub
 // the back slope).
 TEST(RealStyleHaas, Knob_G73_Vnmg) {
-  const Job job{"haas-06-knob-g73.nc", "haas", "--units inch --stock 1.5x3in --tool 2=vnmg-35-r02", true};
+  const Job job{"haas-06-knob-g73.nc", "haas", "--units inch --stock 1.5x3in --tool 9=vnmg-35-r02", true};
   RUN_CLEAN(job, r);
   const Profile& p = r.part;
   // G03 X1. Z-0.15 R0.15 from X0.7 Z0: centre Z-0.15 at radius 0.35 (convex).
@@ -510,7 +511,7 @@ TEST(RealStyleFanuc, Flange_Lowercase_G72) {
 // O0300 two-block G73 U W R / G73 P Q U W F (R = divisions), G42 before G70;
 // the 35 degree VNMG for the neck.
 TEST(RealStyleFanuc, Knob_G73_Vnmg) {
-  const Job job{"fanuc-03-knob-g73.nc", "fanuc", "--stock 40x90 --tool 2=vnmg-35-r02", false};
+  const Job job{"fanuc-03-knob-g73.nc", "fanuc", "--stock 40x90 --tool 9=vnmg-35-r02", false};
   RUN_CLEAN(job, r);
   const Profile& p = r.part;
   // G03 X24. Z-5. R5. from X14. Z0.: centre Z-5. at radius 7. At Z-2.:
