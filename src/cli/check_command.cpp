@@ -163,7 +163,8 @@ int runCheck(const std::vector<std::string>& args) {
     const CheckedProgram checked = checkProgramFile(path, checkOptions);
     FileSummary row{path};
     for (const Diagnostic& d : checked.diagnostics) {
-      (d.severity == Severity::Warning ? row.warnings : row.errors)++;
+      if (isError(d.severity)) ++row.errors;
+      else if (d.severity == Severity::Warning) ++row.warnings;
       all.push_back({path, d});
     }
     row.unreadable = checked.unreadable;

@@ -95,7 +95,7 @@ bool isUnreadable(const Diagnostic& d) { return d.code == "F101" || d.code == "F
 
 bool LoadedConfig::hasErrors() const {
   return std::any_of(diagnostics.begin(), diagnostics.end(),
-                     [](const FileDiagnostic& f) { return f.diagnostic.severity != Severity::Warning; });
+                     [](const FileDiagnostic& f) { return isError(f.diagnostic.severity); });
 }
 
 std::vector<int> LoadedConfig::toolsWithBitmap() const {

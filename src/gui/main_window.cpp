@@ -921,7 +921,7 @@ void MainWindow::loadMachineSetup(const QString& dir) {
   QStringList problems;
   auto note = [&problems](const std::vector<core::Diagnostic>& diags) {
     for (const auto& d : diags)
-      if (d.severity != core::Severity::Warning)
+      if (core::isError(d.severity))
         problems << QString::fromStdString(core::formatMessage(d, Language::coreLang()));
   };
   auto tools = core::io::readToolTable(folder.filePath(QStringLiteral("tools.cfg")).toStdString());
@@ -999,7 +999,7 @@ void MainWindow::onAlarm(const core::Diagnostic& alarm) {
 
 void MainWindow::onCheckFailed(const QList<core::Diagnostic>& diags) {
   int errors = 0;
-  for (const auto& d : diags) errors += d.severity != core::Severity::Warning;
+  for (const auto& d : diags) errors += core::isError(d.severity);
   showBanner(tr("The program has %n error(s); fix them before running. Click an error below to go to it.", nullptr,
                 errors),
              true);
