@@ -33,6 +33,7 @@
 #include "gui/about_dialog.h"
 #include "gui/code_editor.h"
 #include "gui/diagnostics_panel.h"
+#include "gui/dialect_offer_bar.h"
 #include "gui/find_dialog.h"
 #include "gui/help_contents.h"
 #include "gui/job_details_dialog.h"
@@ -124,6 +125,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   editorLayout->setContentsMargins(0, 0, 0, 0);
   editorLayout->setSpacing(0);
   editorLayout->addWidget(banner_);
+  dialectOffer_ = new DialectOfferBar(this);
+  connect(dialectOffer_, &DialectOfferBar::switchRequested, this, &MainWindow::setDialect);
+  editorLayout->addWidget(dialectOffer_);
   editorLayout->addWidget(editor_, 1);
 
   statusLamps_ = new StatusLamps(this);
