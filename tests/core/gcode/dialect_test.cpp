@@ -218,6 +218,38 @@ TEST(WordFormat, RoundsHalfAwayFromZeroToTheIncrement) {
   EXPECT_EQ(formatFixed(0.4293, 4), "0.4293");
 }
 
+TEST(Lexer, ColonProgramNumberIsAnOWordThatRemembersItsColon) {
+  const Program p = parse(":0100 (PART)\nG00 X1.");
+  ASSERT_TRUE(p.lexicalDiagnostics.empty());
+  ASSERT_EQ(p.blocks.size(), 2u);
+  const Word& o = p.blocks[0].words.at(0);
+  EXPECT_EQ(o.letter, 'O');
+  EXPECT_TRUE(o.colon);
+  EXPECT_EQ(o.number, "0100");
+  EXPECT_EQ(o.code(), 100);
+  EXPECT_EQ(o.text(), ":0100");
+  EXPECT_EQ(o.range, (SourceRange{1, 1, 5}));
+  EXPECT_EQ(p.blocks[0].comment, "PART");
+  // A ':' without digits stays an unknown character.
+  const Program bad = parse("G00 : X1.");
+  ASSERT_EQ(bad.lexicalDiagnostics.size(), 1u);
+  EXPECT_EQ(bad.lexicalDiagnostics[0].code, "E104");
+  EXPECT_EQ(bad.lexicalDiagnostics[0].range, (SourceRange{1, 5, 1}));
+}
+
+TEST(Lexer, LowercasePackedWords) {
+  const Program p = parse("n1g0x380.z300.t0101m16\nN2G01X-.5Z-3.F.2");
+  ASSERT_TRUE(p.lexicalDiagnostics.empty());
+  ASSERT_EQ(p.blocks.size(), 2u);
+  std::vector<std::string> words;
+  for (const Block& b : p.blocks)
+    for (const Word& w : b.words) words.push_back(w.text() + "@" + std::to_string(w.range.column));
+  EXPECT_THAT(words, ElementsAre("N1@1", "G0@3", "X380.@5", "Z300.@10", "T0101@15", "M16@20", "N2@1", "G01@3",
+                                 "X-.5@6", "Z-3.@10", "F.2@14"));
+  EXPECT_DOUBLE_EQ(p.blocks[1].words[2].value, -0.5);
+  EXPECT_DOUBLE_EQ(p.blocks[1].words[4].value, 0.2);
+}
+
 // ---- say which dialect fits -------------------------------------------------
 
 const char* kHaasStyle =
