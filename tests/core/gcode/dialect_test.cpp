@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "klueng/core/gcode/checker.h"
+#include "klueng/core/gcode/code_table.h"
 #include "klueng/core/gcode/dialect_fit.h"
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/gcode/word_format.h"
@@ -80,6 +81,9 @@ INSTANTIATE_TEST_SUITE_P(
         Row{"G30 U0. W0.", {}, {}, {"E114@1:1"}},
         Row{"G00 G30 U0. W0.", {}, {}, {"E114@1:5"}},
         Row{"G04 G01 U1.", {"E206@1:5"}, {"E206@1:5"}, {"E206@1:5"}},
+        Row{"G50 S2000 G00", {"E206@1:11"}, {"E206@1:11"}, {"E206@1:11"}},
+        // bare G28: Fanuc moves nothing (warning), Haas homes both axes
+        Row{"N5 G28", {"W102@1:4"}, {}, {"E309@1:4"}},
         // 6. Haas one-block cycles; D is not a Fanuc word
         Row{"G71 P10 Q20 U0.02 W0.005 D0.1 F0.01", {"E201@1:26"}, {}, {"E201@1:26"}},
         Row{"G72 P10 Q20 U0.02 W0.005 D0.05 F0.01", {"E201@1:26"}, {}, {"E201@1:26"}},
@@ -116,6 +120,8 @@ INSTANTIATE_TEST_SUITE_P(
         Row{"M85 M86", {"W101@1:1"}, {"E204@1:5"}, {"E115@1:1"}},
         Row{"M14 M15", {"W101@1:1", "W101@1:5"}, {"E204@1:5"}, {"E115@1:1", "E115@1:5"}},
         Row{"M91", {}, {"W101@1:1"}, {}},
+        Row{"M97 P1000", {"W101@1:1"}, {}, {"E115@1:1"}},
+        Row{"M97 P1000 M98 P2000", {"W101@1:1"}, {"E204@1:11"}, {"E115@1:1"}},
         Row{"M133 P2000", {"W101@1:1"}, {"W101@1:1"}, {"E115@1:1"}},
         // 10. lowercase, packed words
         Row{"n1g0x380.z300.t0101m16", {"W101@1:20"}, {"W101@1:20"}, {"E115@1:20"}},
@@ -203,6 +209,21 @@ TEST(Dialects, HaasMessagesNameItsLettersAndInchRanges) {
   const auto f = check(parse("F0"), haas);
   ASSERT_EQ(f.size(), 1u);
   EXPECT_EQ(formatMessage(f[0], Lang::En), "F0: F must be positive (0.0001 to 999.9999)");
+}
+
+TEST(CodeTable, CodesCarryTheirWordKinds) {
+  EXPECT_EQ(wordKind(*findCode('G', 83, Dialect::Haas), 'Q'), '+');
+  EXPECT_EQ(wordKind(*findCode('G', 83, Dialect::Fanuc), 'Q'), '#');
+  EXPECT_EQ(wordKind(*findCode('G', 76, Dialect::Haas), 'K'), '+');
+  EXPECT_EQ(wordKind(*findCode('G', 73, Dialect::Haas), 'D'), '#');
+  EXPECT_EQ(wordKind(*findCode('G', 4, Dialect::Classic), 'P'), 'd');
+  EXPECT_EQ(wordKind(*findCode('G', 71, Dialect::Fanuc), 'D'), 0);
+  EXPECT_EQ(findCode('M', 86, Dialect::Haas)->group, ModalGroup::MDoor);
+  EXPECT_EQ(findCode('M', 86, Dialect::Fanuc)->group, ModalGroup::MBrake);
+  EXPECT_EQ(findCode('M', 14, Dialect::Haas)->group, ModalGroup::MBrake);
+  EXPECT_EQ(findCode('M', 97, Dialect::Haas)->group, ModalGroup::MSubprogram);
+  EXPECT_EQ(findCode('G', 30, Dialect::Classic), nullptr);
+  EXPECT_EQ(findCode('G', 82, Dialect::Fanuc), nullptr);
 }
 
 TEST(WordFormat, RoundsHalfAwayFromZeroToTheIncrement) {
