@@ -57,6 +57,11 @@ struct MachineProfile {
   // Word formats: decimals of the least input increment, mm and inch.
   int decimalsMm;
   int decimalsInch;
+  // Ranges of lengths (|value| <= maxAbs) and of F/S (>= minPositive), per input unit.
+  double maxAbsMm;
+  double maxAbsInch;
+  double minPositiveMm;
+  double minPositiveInch;
   ExtraDecimals extraDecimals;
   InputUnits powerOnUnits;   // before any G20/G21 (overridden by --units / the GUI setting)
   // T words: tool number and offset number. Digits: a T word has minToolDigits..4
