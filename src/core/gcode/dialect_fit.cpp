@@ -33,7 +33,7 @@ std::optional<DialectFit> suggestDialect(const Program& program, const CheckOpti
     if (hasErrors(there)) continue;
     // Every block with an error here is clean there.
     DialectFit fit{profile.dialect, static_cast<int>(current.size()), {}};
-    fit.note = Diagnostic{Severity::Warning,
+    fit.note = Diagnostic{Severity::Note,
                           codes::kDialectFits,
                           {*current.begin(), 1, 0},
                           {std::to_string(fit.blocks), std::string(profile.nameEn), std::string(profile.id)}};

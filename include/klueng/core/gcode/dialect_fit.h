@@ -13,7 +13,7 @@ struct DialectFit {
   Dialect dialect;    // the dialect that checks the program without errors
   int blocks = 0;     // blocks with errors in the current dialect that are clean there
   // Note I102 ("13 blocks with errors are Haas ST (NGC) forms: choose ..."),
-  // severity Warning (a note, never an error), at the first such block.
+  // severity Note (never an error), at the first such block.
   Diagnostic note;
 };
 
