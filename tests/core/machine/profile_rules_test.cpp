@@ -113,7 +113,9 @@ TEST(OneShotWithMotion, G28G01UWReturnsAndLeavesG01Modal) {
   EXPECT_POINT(t.snapshots[2].machine.position, 0.0, 300.0);
   EXPECT_EQ(t.snapshots[2].modal.motion, MotionMode::Line);
   for (const Move& m : t.moves) {
-    if (m.line == 3) EXPECT_EQ(m.kind, MoveKind::Rapid);
+    if (m.line == 3) {
+      EXPECT_EQ(m.kind, MoveKind::Rapid);
+    }
   }
   EXPECT_EQ(t.moves.back().kind, MoveKind::Line);
   // Line 4: from X0 Z300 to X20 Z290: sqrt(10^2 + 10^2) = 14.142 mm at 100 mm/min = 8.485 s.
