@@ -130,11 +130,11 @@ bool Interpreter::executeBlock() {
           motionG = &c;
           singleCycle_ = 0;
           drillCycle_ = 0;  // a group 01 code ends a drilling cycle
-        } else {
+        } else if (n == 90 || n == 92 || n == 94) {
           singleCycleG = &c;  // G90/G92/G94 stay modal until another group 01 code
           singleCycle_ = n;
           drillCycle_ = 0;
-        }
+        }  // any other group 01 row of a profile's code table: no motion of its own
         break;
       case ModalGroup::NonModal: oneShotG = &c; break;
       case ModalGroup::NoseComp:
