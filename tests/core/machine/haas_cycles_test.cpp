@@ -303,6 +303,27 @@ TEST(FanucG82, DwellsPMillisecondsAtTheBottom) {
   expectPath(r, 3, 1.0, {{R, 0, 2}, {L, 0, -4}, {R, 0, 5}});
 }
 
+TEST(FanucG81, DrillsInOneFeedAndIgnoresP) {
+  // from the initial level Z3: the R point Z0.5; feed to Z-12 (12.5 mm at
+  // 125 mm/min = 6 s), no dwell for G81, rapid back to Z3.
+  const CycleRun r("G98 G97 S500 M03\nG00 X0 Z3.\nG81 Z-12. R-2.5 P500 F125.\n", Dialect::Fanuc);
+  ASSERT_FALSE(r.timeline.alarm);
+  expectPath(r, 3, 1.0, {{R, 0, 0.5}, {L, 0, -12}, {R, 0, 3}});
+  EXPECT_TRUE(r.sink.dwells.empty());
+  for (const Move& m : r.timeline.moves) {
+    if (m.line == 3 && m.kind == L) {
+      EXPECT_NEAR(m.tEnd - m.tStart, 6.0, 1e-9);
+    }
+  }
+}
+
+TEST(FanucG83, WIsCountedFromTheRPoint) {
+  // Initial level Z5, R point Z2 (R-3.); W-10. = 10 mm below the R point: Z-8.
+  const CycleRun r("G98 G97 S500 M03\nG00 X0 Z5.\nG83 W-10. R-3. F100.\n", Dialect::Fanuc);
+  ASSERT_FALSE(r.timeline.alarm);
+  expectPath(r, 3, 1.0, {{R, 0, 2}, {L, 0, -8}, {R, 0, 5}});
+}
+
 TEST(HaasG81, RIsTheRPlaneZ) {
   // Haas R0.05 is the plane Z0.05 (not a distance): rapid there, drill to Z-0.5, back to Z0.2.
   const CycleRun r("G98 G97 S500 M03\nG00 X0 Z0.2\nG81 Z-0.5 R0.05 F5.\n", Dialect::Haas);

@@ -122,6 +122,16 @@ TEST(OneShotWithMotion, G28G01UWReturnsAndLeavesG01Modal) {
   EXPECT_NEAR(t.moves.back().tEnd - t.moves.back().tStart, std::sqrt(200.0) / 100.0 * 60.0, 1e-9);
 }
 
+TEST(OneShotWithMotion, G28G00UWInHaasInch) {
+  // Haas, inch: G00 X2. Z0.5 = X50.8 Z12.7 mm; G28 G00 U0 W0 homes both axes
+  // (the intermediate point is where the tool is), G00 stays modal.
+  const Timeline t = runText("G00 X2. Z0.5\nG28 G00 U0 W0\nX1.\n", in(Dialect::Haas));
+  ASSERT_FALSE(t.alarm);
+  EXPECT_POINT(t.snapshots[1].machine.position, 0.0, 300.0);
+  EXPECT_EQ(t.moves.back().kind, MoveKind::Rapid);
+  EXPECT_POINT(endPosition(t), 25.4, 300.0);
+}
+
 // ---- G28 without axes, G30 -----------------------------------------------------------
 
 TEST(BareG28, HaasHomesXAndZ) {
