@@ -7,6 +7,7 @@
 // never from the dialect itself.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
