@@ -67,6 +67,7 @@ struct CycleInput {
   MotionMode motion = MotionMode::Rapid;  // modal motion when the profile starts
   bool blockSkip = false;                 // '/' blocks of the profile skipped
   const gcode::MachineProfile* profile = nullptr;  // one-block forms, drilling: settings, G04 P rule
+  bool threadChamfer = true;              // Haas M23/M24 state (G76 one-block pull-out)
 };
 
 struct Expansion {

@@ -137,7 +137,8 @@ Expansion threading(const CycleInput& in, const Block& b) {
     if ((s0 - a).norm() > kEps) e.steps.push_back(rapid(a, s0));
     e.steps.push_back(rapid(s0, s1));
     const double lengthZ = std::abs(s2.x() - s1.x());
-    const double chamfer = std::min(s.threadChamferLeads * in.feed, lengthZ);  // Settings 95/96: 45 degrees
+    const double leads = in.threadChamfer ? s.threadChamferLeads : 0.0;  // M23/M24
+    const double chamfer = std::min(leads * in.feed, lengthZ);             // Settings 95/96: 45 degrees
     if (chamfer > kEps) {
       const Vec2 c0 = s1 + (s2 - s1) * ((lengthZ - chamfer) / lengthZ);
       const Vec2 c1(target.x(), c0.y() + sx * chamfer);

@@ -294,6 +294,11 @@ bool Interpreter::mCode(const CodeWord& c) {
       }
       return true;
     case ModalGroup::MGear: mach_.gearRange = n - 40; return true;
+    case ModalGroup::MOther:
+      // Haas M23/M24: chamfer out of a thread on/off (a profile without a
+      // thread chamfer setting ignores them, as other machine M codes).
+      if (n == 23 || n == 24) mach_.threadChamfer = n == 23;
+      return true;
     case ModalGroup::MProgram:
       if (n == 1 && !options_.optionalStop) return true;
       stopped_ = true;

@@ -44,6 +44,7 @@ cycles::CycleInput Interpreter::cycleInput(const Word* g) const {
   in.motion = modal_.motion;
   in.blockSkip = options_.blockSkip;
   in.profile = &profile_;
+  in.threadChamfer = mach_.threadChamfer;
   return in;
 }
 

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "klueng/core/gcode/code_table.h"
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/machine/interpreter.h"
 #include "test_support.h"
@@ -233,6 +234,20 @@ TEST(HaasG76, SingleEdgeInfeedMovesAlongTheFlankByDepthTimesTanHalfA) {
   ASSERT_FALSE(p.empty());
   EXPECT_NEAR(p[0].z, 0.2 - 0.02 * std::tan(std::numbers::pi / 6.0), 1e-6);
   EXPECT_NEAR(p[0].x, 1.1, 1e-6);
+}
+
+TEST(HaasG76, M24TurnsTheChamferOff) {
+  // Only if the code table knows M24 (Haas machine M codes); then the last pass
+  // threads straight to Z-1. and rapids out.
+  const gcode::CodeInfo* m24 = gcode::findCode('M', 24, Dialect::Haas);
+  if (!m24) GTEST_SKIP() << "M24 is not in the Haas code table (yet)";
+  const CycleRun r("G97 S500 M03 M24\nG00 X1.1 Z0.2\nG76 X0.9 Z-1. K0.05 D0.02 F0.1\n", Dialect::Haas);
+  ASSERT_FALSE(r.timeline.alarm);
+  const auto p = r.path(3, kInch);
+  ASSERT_GE(p.size(), 4u);
+  EXPECT_EQ(static_cast<int>(p[p.size() - 3].kind), static_cast<int>(T));
+  EXPECT_NEAR(p[p.size() - 3].z, -1.0, 1e-6);
+  EXPECT_NEAR(p[p.size() - 3].x, 0.9, 1e-6);
 }
 
 TEST(HaasG76, P3CutsAConstantDepthPerPass) {
