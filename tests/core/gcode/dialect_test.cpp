@@ -287,7 +287,7 @@ TEST(DialectFit, NamesTheDialectThatAcceptsTheProgram) {
   EXPECT_EQ(fit->dialect, Dialect::Haas);
   EXPECT_EQ(fit->blocks, 2);
   EXPECT_EQ(fit->note.code, "I102");
-  EXPECT_EQ(fit->note.severity, Severity::Warning);
+  EXPECT_EQ(fit->note.severity, Severity::Note);
   EXPECT_EQ(fit->note.range, (SourceRange{5, 1, 0}));
   EXPECT_EQ(formatMessage(fit->note, Lang::En),
             "2 blocks with errors are Haas ST (NGC) forms: choose the Haas ST (NGC) dialect (--dialect haas)");
