@@ -888,4 +888,17 @@
         <translation>ส่งออก %1 แล้ว</translation>
     </message>
 </context>
+<context>
+    <name>klueng::gui::DialectOfferBar</name>
+    <message numerus="yes">
+        <location filename="../src/gui/dialect_offer_bar.cpp" line="85" />
+        <source>%n block(s) of this program are %1 forms that the current dialect refuses; the %1 dialect accepts the whole program.</source>
+        <translation><numerusform>โปรแกรมนี้มี %n บล็อกที่เป็นรูปแบบของ %1 ซึ่งภาษาเครื่องที่เลือกอยู่ไม่รับ แต่ภาษาเครื่อง %1 รับได้ทั้งโปรแกรม</numerusform></translation>
+    </message>
+    <message>
+        <location filename="../src/gui/dialect_offer_bar.cpp" line="89" />
+        <source>Switch to %1</source>
+        <translation>เปลี่ยนเป็น %1</translation>
+    </message>
+</context>
 </TS>

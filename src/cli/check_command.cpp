@@ -1,4 +1,4 @@
-// klueng-cli check FILE|FOLDER... [--lang en|th] [--dialect fanuc|classic] [--json]
+// klueng-cli check FILE|FOLDER... [--lang en|th] [--dialect fanuc|haas|classic] [--json]
 //                                 [--config DIR] [--summary]
 // Reads each program, parses and checks it (SPEC 3-5, 13) against the tool
 // table found by findConfigDir, and prints every diagnostic: one GCC-style
@@ -24,7 +24,7 @@ namespace {
 using namespace klueng::core;
 
 constexpr const char* kUsage =
-    "usage: klueng-cli check FILE|FOLDER... [--lang en|th] [--dialect fanuc|classic] [--json]\n"
+    "usage: klueng-cli check FILE|FOLDER... [--lang en|th] [--dialect fanuc|haas|classic] [--json]\n"
     "                                       [--config DIR] [--summary]\n";
 
 struct CheckOptions {
@@ -85,7 +85,7 @@ std::optional<int> parseArgs(const std::vector<std::string>& args, CheckOptions&
       o.lang = *lang;
     } else if (arg == "--dialect") {
       const auto dialect = parseDialect(value);
-      if (!dialect) return usageError("--dialect must be fanuc or classic, not '" + value + "'");
+      if (!dialect) return usageError("--dialect must be fanuc, haas or classic, not '" + value + "'");
       o.dialect = *dialect;
     } else {
       o.configDir = value;
@@ -163,7 +163,8 @@ int runCheck(const std::vector<std::string>& args) {
     const CheckedProgram checked = checkProgramFile(path, checkOptions);
     FileSummary row{path};
     for (const Diagnostic& d : checked.diagnostics) {
-      (d.severity == Severity::Warning ? row.warnings : row.errors)++;
+      if (isError(d.severity)) ++row.errors;
+      else if (d.severity == Severity::Warning) ++row.warnings;
       all.push_back({path, d});
     }
     row.unreadable = checked.unreadable;

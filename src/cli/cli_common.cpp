@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "klueng/core/gcode/dialect_fit.h"
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/io/text_encoding.h"
 
@@ -95,7 +96,7 @@ bool isUnreadable(const Diagnostic& d) { return d.code == "F101" || d.code == "F
 
 bool LoadedConfig::hasErrors() const {
   return std::any_of(diagnostics.begin(), diagnostics.end(),
-                     [](const FileDiagnostic& f) { return f.diagnostic.severity != Severity::Warning; });
+                     [](const FileDiagnostic& f) { return isError(f.diagnostic.severity); });
 }
 
 std::vector<int> LoadedConfig::toolsWithBitmap() const {
@@ -154,6 +155,8 @@ CheckedProgram checkProgramFile(const std::string& path, const gcode::CheckOptio
   if (!read.value) return result;
   const gcode::Program program = gcode::parse(read.value->gcode, read.value->gcodeFirstLine);
   std::vector<Diagnostic> found = gcode::check(program, options);
+  // Say once which dialect accepts a program this one refuses (I102).
+  if (auto fit = gcode::suggestDialect(program, options, found)) found.push_back(fit->note);
   result.diagnostics.insert(result.diagnostics.end(), std::make_move_iterator(found.begin()),
                             std::make_move_iterator(found.end()));
   std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {

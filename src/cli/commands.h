@@ -5,7 +5,7 @@
 
 namespace klueng::cli {
 
-// klueng-cli check FILE... [--lang en|th] [--dialect fanuc|classic] [--json]
+// klueng-cli check FILE... [--lang en|th] [--dialect fanuc|haas|classic] [--json]
 int runCheck(const std::vector<std::string>& args);
 // klueng-cli simulate FILE [--trace out.csv] [--cycle-time] [--config DIR] [--lang en|th] ...
 int runSimulate(const std::vector<std::string>& args);

@@ -9,9 +9,9 @@ namespace {
 
 void printUsage(std::FILE* out) {
   std::fputs(
-      "usage: klueng-cli check FILE... [--lang en|th] [--dialect fanuc|classic] [--json]\n"
+      "usage: klueng-cli check FILE... [--lang en|th] [--dialect fanuc|haas|classic] [--json]\n"
       "       klueng-cli simulate FILE [--trace out.csv] [--cycle-time] [--config DIR]\n"
-      "                               [--lang en|th] [--dialect fanuc|classic]\n",
+      "                               [--lang en|th] [--dialect fanuc|haas|classic]\n",
       out);
 }
 

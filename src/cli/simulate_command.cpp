@@ -1,5 +1,5 @@
 // klueng-cli simulate FILE [--trace out.csv] [--cycle-time] [--config DIR]
-//                          [--lang en|th] [--dialect fanuc|classic]
+//                          [--lang en|th] [--dialect fanuc|haas|classic]
 //                          [--optional-stop] [--block-skip]
 //                          [--png out.png] [--profile out.csv] [--json summary.json] [--resolution MM]
 //                          [--svg out.svg] [--dxf out.dxf] [--no-stock]   (--no-stock: interpret only, no stock collisions)
@@ -81,6 +81,14 @@ const std::vector<OptionSpec>& optionSpecs() {
   return specs;
 }
 
+// What an option accepts, for the message on a bad value.
+std::string allowedValues(const std::string& option) {
+  if (option == "--dialect") return " (allowed: fanuc, haas, classic)";
+  if (option == "--lang") return " (allowed: en, th)";
+  if (option == "--resolution") return " (allowed: 0.001 to 5 mm)";
+  return {};
+}
+
 std::optional<SimulateOptions> parseOptions(const std::vector<std::string>& args) {
   SimulateOptions o;
   o.lang = langFromLocale();
@@ -110,13 +118,14 @@ std::optional<SimulateOptions> parseOptions(const std::vector<std::string>& args
       value = args[++i];
     }
     if (!spec->apply(o, value)) {
-      std::fprintf(stderr, "klueng-cli simulate: bad value '%s' for %s\n", value.c_str(), a.c_str());
+      std::fprintf(stderr, "klueng-cli simulate: bad value '%s' for %s%s\n", value.c_str(), a.c_str(),
+                   allowedValues(a).c_str());
       return std::nullopt;
     }
   }
   if (o.file.empty()) {
     std::fputs("usage: klueng-cli simulate FILE [--trace out.csv] [--cycle-time] [--config DIR]\n"
-               "                              [--lang en|th] [--dialect fanuc|classic]\n"
+               "                              [--lang en|th] [--dialect fanuc|haas|classic]\n"
                "                              [--optional-stop] [--block-skip]\n"
                "                              [--png out.png] [--profile out.csv] [--json summary.json]\n"
                "                              [--svg out.svg] [--dxf out.dxf] [--resolution MM] [--no-stock]\n",

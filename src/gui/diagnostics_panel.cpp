@@ -45,8 +45,9 @@ QVariant DiagnosticsModel::data(const QModelIndex& index, int role) const {
     }
   }
   if (role == Qt::DecorationRole && index.column() == SeverityColumn)
-    return QIcon(d.severity == core::Severity::Warning ? QStringLiteral(":/icons/warning.svg")
-                                                       : QStringLiteral(":/icons/error.svg"));
+    return QIcon(core::isError(d.severity) ? QStringLiteral(":/icons/error.svg")
+                                           : d.severity == core::Severity::Note ? QStringLiteral(":/icons/note.svg")
+                                                                                : QStringLiteral(":/icons/warning.svg"));
   if (role == Qt::ToolTipRole && index.column() == MessageColumn)
     return QString::fromStdString(core::formatMessage(d, lang));
   if (role == Qt::TextAlignmentRole && (index.column() == LineColumn || index.column() == ColumnColumn))
@@ -102,7 +103,7 @@ void DiagnosticsPanel::setDiagnostics(std::vector<core::Diagnostic> diags) {
 
 int DiagnosticsPanel::errorCount() const {
   int n = 0;
-  for (const auto& d : model_->diagnostics()) n += d.severity != core::Severity::Warning;
+  for (const auto& d : model_->diagnostics()) n += core::isError(d.severity);
   return n;
 }
 

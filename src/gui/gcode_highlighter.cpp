@@ -94,7 +94,9 @@ void GcodeHighlighter::highlightBlock(const QString& text) {
   for (const Underline& u : *it) {
     const int start = std::clamp(u.start, 0, std::max(0, n - 1));
     const int len = u.length > 0 ? std::min(u.length, n - start) : n - start;
-    const QColor colour = u.severity == core::Severity::Warning ? QColor(0xe0, 0x8a, 0x00) : QColor(0xd0, 0x10, 0x10);
+    const QColor colour = core::isError(u.severity)                ? QColor(0xd0, 0x10, 0x10)
+                         : u.severity == core::Severity::Note ? QColor(0x20, 0x60, 0xc0)
+                                                              : QColor(0xe0, 0x8a, 0x00);
     for (int k = start; k < start + std::max(len, 1) && k <= n; ++k) {
       // Keep the syntax colour; add the underline on top of it.
       QTextCharFormat f = QSyntaxHighlighter::format(std::min(k, std::max(0, n - 1)));

@@ -33,6 +33,7 @@
 #include "gui/about_dialog.h"
 #include "gui/code_editor.h"
 #include "gui/diagnostics_panel.h"
+#include "gui/dialect_offer_bar.h"
 #include "gui/find_dialog.h"
 #include "gui/help_contents.h"
 #include "gui/job_details_dialog.h"
@@ -124,6 +125,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   editorLayout->setContentsMargins(0, 0, 0, 0);
   editorLayout->setSpacing(0);
   editorLayout->addWidget(banner_);
+  dialectOffer_ = new DialectOfferBar(this);
+  connect(dialectOffer_, &DialectOfferBar::switchRequested, this, &MainWindow::setDialect);
+  editorLayout->addWidget(dialectOffer_);
   editorLayout->addWidget(editor_, 1);
 
   statusLamps_ = new StatusLamps(this);
@@ -921,7 +925,7 @@ void MainWindow::loadMachineSetup(const QString& dir) {
   QStringList problems;
   auto note = [&problems](const std::vector<core::Diagnostic>& diags) {
     for (const auto& d : diags)
-      if (d.severity != core::Severity::Warning)
+      if (core::isError(d.severity))
         problems << QString::fromStdString(core::formatMessage(d, Language::coreLang()));
   };
   auto tools = core::io::readToolTable(folder.filePath(QStringLiteral("tools.cfg")).toStdString());
@@ -999,7 +1003,7 @@ void MainWindow::onAlarm(const core::Diagnostic& alarm) {
 
 void MainWindow::onCheckFailed(const QList<core::Diagnostic>& diags) {
   int errors = 0;
-  for (const auto& d : diags) errors += d.severity != core::Severity::Warning;
+  for (const auto& d : diags) errors += core::isError(d.severity);
   showBanner(tr("The program has %n error(s); fix them before running. Click an error below to go to it.", nullptr,
                 errors),
              true);

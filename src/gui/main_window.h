@@ -33,6 +33,7 @@ namespace klueng::gui {
 
 class CodeEditor;
 class DiagnosticsPanel;
+class DialectOfferBar;
 class FindDialog;
 class HelpContents;
 class RunSpeedControl;
@@ -161,6 +162,7 @@ class MainWindow : public QMainWindow {
   QSplitter* splitter_ = nullptr;
   QWidget* banner_ = nullptr;
   QLabel* bannerLabel_ = nullptr;
+  DialectOfferBar* dialectOffer_ = nullptr;
   QProgressBar* busyBar_ = nullptr;
   QPointer<FindDialog> findDialog_;
   QPointer<HelpContents> help_;

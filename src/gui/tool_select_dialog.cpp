@@ -295,7 +295,7 @@ void ToolSelectDialog::retranslate() {
   }
   QStringList lines;
   for (const auto& d : loadDiagnostics_)
-    if (d.severity != core::Severity::Warning) lines << QString::fromStdString(core::formatMessage(d, Language::coreLang()));
+    if (core::isError(d.severity)) lines << QString::fromStdString(core::formatMessage(d, Language::coreLang()));
   problems_->setText(lines.join(QLatin1Char('\n')));
   problems_->setVisible(!lines.isEmpty());
   if (list_->currentRow() >= 0) updatePreview();

@@ -520,3 +520,18 @@ for d in depths:
     h.rapid(4, 35, 5)
 case("cycle_g76_thread", "G97 S500 M03\nG00 X35. Z5.\nG76 P020060 Q50 R0.05\nG76 X28.16 Z-20. P920 Q300 F1.5\n",
      h.rows)
+
+# G83 Z-20 R-3 Q8000 from the initial level X0 Z5 (Fanuc, G-code system A):
+# the R point is 3 mm below the initial level, Z2; 8 mm pecks from it reach
+# Z-6, Z-14, Z-20. Between pecks: rapid to Z2, rapid down to d = 1 mm
+# (parameter 5115) above the last peck (Z-5, Z-13), feed on at 100 mm/min
+# (8, 9, 7 mm: 4.8, 5.4, 4.2 s). Then back to the initial level; G80 ends it.
+h = Hand(rpm500)
+h.rapid(2, 0, 5)
+for z_from, z_to in ((None, -6), (-5, -14), (-13, -20)):
+    h.rapid(3, 0, 2)
+    if z_from is not None:
+        h.rapid(3, 0, z_from)
+    h.feed("LINE", 3, 0, z_to, abs(h.z - z_to) / 100 * 60, 100)
+h.rapid(3, 0, 5)
+case("cycle_g83_fanuc_peck", CYC + "G00 X0 Z5.\nG83 Z-20. R-3. Q8000 F100.\nG80\n", h.rows)

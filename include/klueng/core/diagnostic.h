@@ -6,7 +6,12 @@
 
 namespace klueng::core {
 
-enum class Severity { Warning, Error, Alarm };
+// Note: information for the user (where the stock came from, which dialect
+// fits); never stops a check or a run.
+enum class Severity { Warning, Error, Alarm, Note };
+
+// Errors and alarms stop a run; warnings and notes do not.
+constexpr bool isError(Severity s) { return s == Severity::Error || s == Severity::Alarm; }
 
 // A place in a source file. line is 1-based in the whole file (header lines
 // included); column is the 1-based index of the Unicode code point; length in

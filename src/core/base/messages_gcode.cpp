@@ -29,20 +29,20 @@ constexpr MessageText kMessages[] = {
      "{0} มีค่าเกินขอบเขต: ค่าต้องอยู่ระหว่าง {1} ถึง {2}"},
     {"E111", "{0} has too many decimals: at most {1} digits after the decimal point",
      "{0} มีทศนิยมมากเกินไป: ใช้ทศนิยมได้ไม่เกิน {1} ตำแหน่ง"},
-    {"E112", "{0}: {1} must be positive (0.001 to 9999.999)",
-     "{0}: ค่า {1} ต้องเป็นบวก (0.001 ถึง 9999.999)"},
+    {"E112", "{0}: {1} must be positive ({2} to {3})",
+     "{0}: ค่า {1} ต้องเป็นบวก ({2} ถึง {3})"},
     {"E113", "{0}: a G or M code is a whole number, write it without a decimal point (e.g. G01)",
      "{0}: รหัส G หรือ M ต้องเป็นจำนวนเต็ม เขียนโดยไม่มีจุดทศนิยม (เช่น G01)"},
     {"E114", "{0} is not a G code of this lathe: see Help > Contents for the list of G codes",
      "{0} ไม่ใช่รหัส G ของเครื่องกลึงนี้: ดูรายการรหัส G ได้ที่ ช่วยเหลือ > เนื้อหาระบบช่วยเหลือ"},
     {"E115", "{0} is not an M code of this lathe: see Help > Contents for the list of M codes",
      "{0} ไม่ใช่รหัส M ของเครื่องกลึงนี้: ดูรายการรหัส M ได้ที่ ช่วยเหลือ > เนื้อหาระบบช่วยเหลือ"},
-    {"E116", "{0}: {1} must be a whole number from 1 to 9999",
-     "{0}: ค่า {1} ต้องเป็นจำนวนเต็มตั้งแต่ 1 ถึง 9999"},
+    {"E116", "{0}: {1} must be a whole number from 1 to {2}",
+     "{0}: ค่า {1} ต้องเป็นจำนวนเต็มตั้งแต่ 1 ถึง {2}"},
     {"E117", "{0}: write T with 4 digits, tool 01-08 then offset 00-16 (e.g. T0101)",
      "{0}: เขียน T ด้วยตัวเลข 4 หลัก คือหมายเลขมีดตัด 01-08 ตามด้วยหมายเลขออฟเซต 00-16 (เช่น T0101)"},
-    {"E118", "{0}: write T as tool 01-08 then offset 00-16, e.g. T0101 (or T101)",
-     "{0}: เขียน T เป็นหมายเลขมีดตัด 01-08 ตามด้วยหมายเลขออฟเซต 00-16 เช่น T0101 (หรือ T101)"},
+    {"E118", "{0}: write T as tool 01-{1} then offset 00-{2}, e.g. T0101 (or T101)",
+     "{0}: เขียน T เป็นหมายเลขมีดตัด 01-{1} ตามด้วยหมายเลขออฟเซต 00-{2} เช่น T0101 (หรือ T101)"},
     {"E119", "{0}: {1} must be a whole number without sign or decimal point (e.g. {1}500)",
      "{0}: ค่า {1} ต้องเป็นจำนวนเต็มไม่มีเครื่องหมายและจุดทศนิยม (เช่น {1}500)"},
     {"E120", "this block has more than {0} words; the rest of the line is not read: split it into several blocks",
@@ -51,8 +51,8 @@ constexpr MessageText kMessages[] = {
      "พบข้อผิดพลาดมากกว่า {0} รายการ จึงไม่ตรวจสอบส่วนที่เหลือของโปรแกรม"},
 
     // E2nn: block rule nn of SPEC 5
-    {"E201", "{0}: letter {1} is not a lathe word; use C F G H I K M N O P Q R S T U W X Z",
-     "{0}: อักขระ {1} ไม่ใช่คำสั่งของเครื่องกลึง ใช้ได้เฉพาะ C F G H I K M N O P Q R S T U W X Z"},
+    {"E201", "{0}: letter {1} is not a lathe word; use {2}",
+     "{0}: อักขระ {1} ไม่ใช่คำสั่งของเครื่องกลึง ใช้ได้เฉพาะ {2}"},
     {"E202", "{0} appears twice in this block: keep only one {0} word",
      "{0} ปรากฏสองครั้งในบล็อกนี้: ให้เหลือคำสั่ง {0} เพียงคำเดียว"},
     {"E203", "{0} must stand alone in its block (only N may come before it): move the other words to another block",
@@ -99,6 +99,12 @@ constexpr MessageText kMessages[] = {
      "{0} ไม่ใช่รหัส M มาตรฐาน: เป็นรหัสเฉพาะของเครื่อง จะไม่ถูกทำงาน"},
     {"W102", "G28 without axis words moves nothing: add U0. W0. to return to the reference point",
      "G28 ที่ไม่มีคำสั่งแกนจะไม่เคลื่อนที่: เติม U0. W0. เพื่อกลับสู่จุดอ้างอิง"},
+    {"W103", "{0} has more than {2} decimals: the control rounds it to {1}",
+     "{0} มีทศนิยมเกิน {2} ตำแหน่ง: เครื่องจะปัดค่าเป็น {1}"},
+
+    // I1xx: notes
+    {"I102", "{0} blocks with errors are {1} forms: choose the {1} dialect (--dialect {2})",
+     "บล็อกที่ผิดพลาด {0} บล็อกเป็นรูปแบบของ {1}: เลือกรูปแบบคำสั่ง {1} (--dialect {2})"},
 };
 }  // namespace
 

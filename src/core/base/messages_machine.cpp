@@ -41,8 +41,8 @@ constexpr MessageText kMessages[] = {
      "การกลึงเกลียว (G32) ขณะที่เพลาจับงานหยุดหมุน"},
     {"A117", "{0} is not supported by the simulator yet; the run stops here",
      "โปรแกรมจำลองยังไม่รองรับ {0} จึงหยุดการทำงานที่บล็อกนี้"},
-    {"A118", "{0} selects offset {1}, which does not exist (offsets 00 to 16)",
-     "{0} เลือกค่าออฟเซตหมายเลข {1} ซึ่งไม่มีอยู่ (มีหมายเลข 00 ถึง 16)"},
+    {"A118", "{0} selects offset {1}, which does not exist (offsets 00 to {2})",
+     "{0} เลือกค่าออฟเซตหมายเลข {1} ซึ่งไม่มีอยู่ (มีหมายเลข 00 ถึง {2})"},
     {"A119", "thread cutting (G32) with no spindle speed S given",
      "การกลึงเกลียว (G32) โดยยังไม่ได้กำหนดความเร็วรอบ S"},
     {"A120", "{0}: no block N{2} for {1}{2} (the profile runs from block N of P down to block N of Q)",
@@ -61,6 +61,8 @@ constexpr MessageText kMessages[] = {
      "{0} ต้องกำหนดทั้ง P และ Q: หมายเลขลำดับ (N) ของบล็อกแรกและบล็อกสุดท้ายของรูปร่างชิ้นงาน"},
     {"A127", "{0} would make {1} passes (depth of cut {2}); more than 10000 passes is refused",
      "{0} จะต้องกลึง {1} เที่ยว (ระยะป้อนลึก {2}) ซึ่งเกิน 10000 เที่ยว จึงไม่ทำงาน"},
+    {"A128", "{0} selects tool station {1}, which the turret does not have (stations 01 to {2})",
+     "{0} เลือกสถานีมีดหมายเลข {1} ซึ่งป้อมมีดไม่มี (มีสถานี 01 ถึง {2})"},
 };
 }  // namespace
 

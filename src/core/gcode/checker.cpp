@@ -8,31 +8,20 @@
 #include <string>
 
 #include "diagnostic_codes.h"
+#include "klueng/core/gcode/word_format.h"
 
 namespace klueng::core::gcode {
 
 namespace {
 
-constexpr double kMaxReal = 9999.999;
-constexpr double kMinPositive = 0.001;
 constexpr double kMaxWholeNumber = 99999999.0;
-
-bool allowedLetter(char l) {
-  switch (l) {
-    case 'C': case 'F': case 'G': case 'H': case 'I': case 'K': case 'M': case 'N': case 'O':
-    case 'S': case 'T': case 'U': case 'W': case 'X': case 'Z':
-    case 'R': case 'P': case 'Q':  // ext
-      return true;
-    default:
-      return false;
-  }
-}
 
 // Rule 2: letters that may appear at most once per block.
 bool onceOnly(char l) {
   switch (l) {
     case 'C': case 'F': case 'H': case 'I': case 'K': case 'N': case 'O': case 'R': case 'S':
     case 'T': case 'U': case 'W': case 'X': case 'Z':
+    case 'A': case 'D': case 'E': case 'J':  // Haas cycle words
       return true;
     default:
       return false;
@@ -40,7 +29,25 @@ bool onceOnly(char l) {
 }
 
 bool hasSign(const Word& w) { return !w.number.empty() && (w.number[0] == '-' || w.number[0] == '+'); }
-std::string wordText(const Word& w) { return w.letter + w.number; }
+std::string wordText(const Word& w) { return w.text(); }
+
+// A limit as SPEC 4 prints it: "9999.999", "0.0001" (no trailing zeros).
+std::string limitText(double v) {
+  std::string s = formatFixed(v, 4);
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  return s;
+}
+
+// "CFG" -> "C F G", for E201.
+std::string spaced(std::string_view letters) {
+  std::string s;
+  for (char c : letters) {
+    if (!s.empty()) s += ' ';
+    s += c;
+  }
+  return s;
+}
 std::string twoDigits(int n) { return n < 10 ? "0" + std::to_string(n) : std::to_string(n); }
 
 // The code number of a G/M/T/N/O word when it is a plain non-negative integer
@@ -52,7 +59,10 @@ long long wholeNumber(const Word& w) {
 
 bool isRuleFourGroup(ModalGroup g) {
   return g == ModalGroup::MSpindle || g == ModalGroup::MCoolant || g == ModalGroup::MCAxis ||
-         g == ModalGroup::MBrake || g == ModalGroup::MGear || g == ModalGroup::MSubprogram;
+         g == ModalGroup::MBrake || g == ModalGroup::MGear || g == ModalGroup::MSubprogram ||
+         g == ModalGroup::MChuck || g == ModalGroup::MAirBlast || g == ModalGroup::MTailstock ||
+         g == ModalGroup::MThreadChamfer || g == ModalGroup::MConveyor || g == ModalGroup::MPartsCatcher ||
+         g == ModalGroup::MDoor || g == ModalGroup::MHighPressureCoolant;
 }
 
 constexpr int kGroupCount = static_cast<int>(ModalGroup::MOther) + 1;
@@ -61,7 +71,11 @@ static_assert(kGroupCount <= 32, "group masks are 32-bit");
 class Checker {
  public:
   Checker(const CheckOptions& options, std::vector<Diagnostic>& out)
-      : options_(options), profile_(machineProfile(options.dialect)), out_(out) {}
+      : options_(options),
+        profile_(machineProfile(options.dialect)),
+        out_(out),
+        letters_(spaced(profile_.letters)),
+        inch_(options.powerOnUnits.value_or(profile_.powerOnUnits) == InputUnits::Inch) {}
 
   bool full() const { return full_; }
 
@@ -85,6 +99,8 @@ class Checker {
     const Word* motionWord = nullptr;  // last valid group-01 G word
     int motionCode = -1;
     const Word* oneShotWord = nullptr;
+    int oneShotCode = -1;
+    const CodeInfo* wordRow = nullptr;  // the code whose word list sets the kinds of this block's words
     const Word* g04 = nullptr;
     const Word* g28 = nullptr;
     const Word* compWord = nullptr;
@@ -97,8 +113,8 @@ class Checker {
       const Word& w = block.words[static_cast<std::size_t>(i)];
       const char l = w.letter;
       if (l != 'N') ++nonNWords;
-      if (!allowedLetter(l)) {
-        emit(codes::kLetterNotAllowed, w, {wordText(w), std::string(1, l)});
+      if (!allowed(l)) {
+        emit(codes::kLetterNotAllowed, w, {wordText(w), std::string(1, l), letters_});
         continue;
       }
       const auto letterIndex = static_cast<std::size_t>(l - 'A');
@@ -112,26 +128,25 @@ class Checker {
       }
 
       switch (l) {
-        case 'C': case 'H': case 'I': case 'K': case 'U': case 'W': case 'X': case 'Z': case 'R':
-          checkReal(w, -kMaxReal);
-          break;
-        case 'F': case 'S':
-          if (!(w.value >= kMinPositive)) emit(codes::kNotPositive, w, {wordText(w), std::string(1, l)});
-          else checkReal(w, kMinPositive);
-          break;
-        case 'N': case 'O': {
+        case 'N': {
           const long long n = wholeNumber(w);
-          if (n < 1 || n > 9999) emit(codes::kBadSequenceNumber, w, {wordText(w), std::string(1, l)});
-          if (l == 'N' && i != 0) emit(codes::kNNotFirst, w, {wordText(w)});
-          if (l == 'O' && !(firstBlock && i == 0 && wordCount == 1)) emit(codes::kMisplacedO, w, {wordText(w)});
+          if (n < 1 || n > profile_.sequenceNumberMax)
+            emit(codes::kBadSequenceNumber, w, {wordText(w), "N", std::to_string(profile_.sequenceNumberMax)});
+          if (i != 0) emit(codes::kNNotFirst, w, {wordText(w)});
           break;
         }
-        case 'T':
-          checkTool(w);
+        case 'O': {
+          if (w.colon && !profile_.colonProgramNumber) {
+            // ':' is not an address of this control: the seed's E104, naming ':'.
+            emit(codes::kUnknownCharacter, SourceRange{w.range.line, w.range.column, 1}, {":"});
+            break;
+          }
+          const long long n = wholeNumber(w);
+          if (n < 1 || n > profile_.programNumberMax)
+            emit(codes::kBadSequenceNumber, w, {wordText(w), "O", std::to_string(profile_.programNumberMax)});
+          if (!(firstBlock && i == 0 && wordCount == 1)) emit(codes::kMisplacedO, w, {wordText(w)});
           break;
-        case 'P': case 'Q':
-          if (wholeNumber(w) < 0) emit(codes::kNotWholeNumber, w, {wordText(w), std::string(1, l)});
-          break;
+        }
         case 'G': case 'M': {
           if (w.hasDecimalPoint) {
             emit(codes::kCodeNotInteger, w, {wordText(w)});
@@ -162,12 +177,14 @@ class Checker {
               motionCode = row->number;
             } else if (row->group == ModalGroup::NonModal && !oneShotWord) {
               oneShotWord = &w;
+              oneShotCode = row->number;
             } else if (row->group == ModalGroup::NoseComp) {
               compWord = &w;
               compCode = row->number;
             } else if (row->group == ModalGroup::CannedCycle) {
               cannedCycle = true;
             }
+            if (!row->words.empty() && !wordRow) wordRow = row;
             if (row->number == 4) g04 = &w;
             if (row->number == 28) g28 = &w;
           } else if (isRuleFourGroup(row->group)) {
@@ -186,6 +203,13 @@ class Checker {
     }
     if (full_) return;
 
+    // Values, once the block's codes are known: a word's kind may depend on
+    // its code (Haas G83 Q0.1 is a length, Fanuc G83 Q5000 least increments).
+    for (const Word& w : block.words) {
+      if (full_) return;
+      if (allowed(w.letter)) checkValue(w, wordRow);
+    }
+
     const auto has = [&](char l) -> const Word* {
       const auto index = static_cast<std::size_t>(l - 'A');
       return (letterMask >> index) & 1u ? firstOfLetter[index] : nullptr;
@@ -199,7 +223,9 @@ class Checker {
              {wordText(*standAlone[k])});
 
     // Rule 6: a one-shot G with a motion G.
-    if (oneShotWord && motionWord) {
+    const auto& withMotion = profile_.oneShotsWithMotion;
+    if (oneShotWord && motionWord &&
+        std::find(withMotion.begin(), withMotion.end(), oneShotCode) == withMotion.end()) {
       const Word* second = later(oneShotWord, motionWord);
       emit(codes::kOneShotWithMotion, *second, {wordText(*oneShotWord), wordText(*motionWord)});
     }
@@ -238,28 +264,90 @@ class Checker {
   const CheckOptions& options_;
   const MachineProfile& profile_;
   std::vector<Diagnostic>& out_;
-  bool inch_ = false;   // G20 seen last (G21 is the initial state)
+  std::string letters_;  // the profile's letters, spaced, for E201
+  bool inch_;            // inch in force: G20 seen last, or inch at power-on
   int motion_ = 0;      // group 01 code in force (G00 at start)
   bool full_ = false;
 
+  bool allowed(char l) const { return profile_.letters.find(l) != std::string_view::npos; }
+
   void emit(const char* code, const Word& w, std::vector<std::string> args, Severity severity = Severity::Error) {
+    emit(code, w.range, std::move(args), severity);
+  }
+  void emit(const char* code, SourceRange range, std::vector<std::string> args,
+            Severity severity = Severity::Error) {
     if (full_) return;
     if (out_.size() + 1 >= codes::kMaxDiagnostics) {
-      out_.push_back(Diagnostic{Severity::Error, codes::kTooManyDiagnostics, {w.range.line, w.range.column, 0},
+      out_.push_back(Diagnostic{Severity::Error, codes::kTooManyDiagnostics, {range.line, range.column, 0},
                                 {std::to_string(codes::kMaxDiagnostics)}});
       full_ = true;
       return;
     }
-    out_.push_back(Diagnostic{severity, code, w.range, std::move(args)});
+    out_.push_back(Diagnostic{severity, code, range, std::move(args)});
   }
 
-  void checkReal(const Word& w, double min) {
-    if (!(w.value >= min && w.value <= kMaxReal)) {
-      emit(codes::kOutOfRange, w, {wordText(w), min == kMinPositive ? "0.001" : "-9999.999", "9999.999"});
+  InputUnits units() const { return inch_ ? InputUnits::Inch : InputUnits::Millimetre; }
+
+  // SPEC 4's kind of a letter, unless the block's code lists it otherwise.
+  static char defaultKind(char l) {
+    switch (l) {
+      case 'F': case 'S': return '+';
+      case 'P': case 'Q': return '#';
+      case 'T': return 'T';
+      case 'G': case 'M': case 'N': case 'O': return 0;  // checked with the codes
+      default: return '.';
+    }
+  }
+
+  void checkValue(const Word& w, const CodeInfo* row) {
+    char kind = row ? wordKind(*row, w.letter) : 0;
+    if (!kind) kind = defaultKind(w.letter);
+    if (kind == 'd')  // a dwell time: the profile says how P is read
+      kind = profile_.dwellP == DwellPUnit::SecondsWithPointElseMs && w.hasDecimalPoint ? 's' : '#';
+    switch (kind) {
+      case '.': checkReal(w, false); break;
+      case '+': {
+        // S (rpm, m/min or ft/min) keeps one range in both units.
+        const bool unitless = w.letter == 'S';
+        const double min = unitless ? profile_.minPositiveMm : minPositive();
+        if (!(w.value >= min))
+          emit(codes::kNotPositive, w, {wordText(w), std::string(1, w.letter), limitText(min),
+                                        limitText(unitless ? profile_.maxAbsMm : maxAbs())});
+        else checkReal(w, true, unitless);
+        break;
+      }
+      case '#':
+        if (wholeNumber(w) < 0) emit(codes::kNotWholeNumber, w, {wordText(w), std::string(1, w.letter)});
+        break;
+      case 's':  // seconds (Haas G04 P3.)
+        if (w.value < 0) emit(codes::kNegativeDwell, w, {wordText(w)});
+        else checkReal(w, false);
+        break;
+      case 'T': checkTool(w); break;
+      default: break;
+    }
+  }
+
+  double maxAbs() const { return inch_ ? profile_.maxAbsInch : profile_.maxAbsMm; }
+  double minPositive() const { return inch_ ? profile_.minPositiveInch : profile_.minPositiveMm; }
+
+  void checkReal(const Word& w, bool positive, bool unitless = false) {
+    const double max = unitless ? profile_.maxAbsMm : maxAbs();
+    const double min = positive ? (unitless ? profile_.minPositiveMm : minPositive()) : -max;
+    if (!(w.value >= min && w.value <= max)) {
+      emit(codes::kOutOfRange, w, {wordText(w), limitText(min), limitText(max)});
       return;
     }
-    const int maxDecimals = inch_ ? 4 : 3;
-    if (w.decimals > maxDecimals) emit(codes::kTooManyDecimals, w, {wordText(w), std::to_string(maxDecimals)});
+    const int maxDecimals = incrementDecimals(profile_, units());
+    if (w.decimals <= maxDecimals) return;
+    if (profile_.extraDecimals == ExtraDecimals::Error) {
+      emit(codes::kTooManyDecimals, w, {wordText(w), std::to_string(maxDecimals)});
+    } else {
+      const double rounded = roundToIncrement(w.value, profile_, units());
+      emit(codes::kRoundedToIncrement, w,
+           {wordText(w), std::string(1, w.letter) + formatFixed(rounded, maxDecimals), std::to_string(maxDecimals)},
+           Severity::Warning);
+    }
   }
 
   void checkTool(const Word& w) {
@@ -270,7 +358,10 @@ class Checker {
     const int offset = static_cast<int>(n % 100);
     const int maxTool = profile_.maxToolStation > 0 ? profile_.maxToolStation : options_.turretStations;
     if (!shapeOk || tool < 1 || tool > maxTool || offset > profile_.maxOffset) {
-      emit(profile_.minToolDigits < 4 ? codes::kBadToolWordFanuc : codes::kBadToolWord, w, {wordText(w)});
+      if (profile_.minToolDigits < 4)
+        emit(codes::kBadToolWordFanuc, w, {wordText(w), twoDigits(maxTool), twoDigits(profile_.maxOffset)});
+      else
+        emit(codes::kBadToolWord, w, {wordText(w)});
       return;
     }
     if (options_.toolsWithBitmap) {

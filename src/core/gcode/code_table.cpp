@@ -15,6 +15,7 @@ constexpr std::uint8_t kF = dialectBit(Dialect::Fanuc);
 constexpr std::uint8_t kH = dialectBit(Dialect::Haas);
 constexpr std::uint8_t kC = dialectBit(Dialect::Classic);
 constexpr std::uint8_t kFH = kF | kH;
+constexpr std::uint8_t kFC = kF | kC;
 constexpr std::uint8_t kAll = kF | kH | kC;
 
 constexpr CodeInfo kTable[] = {
@@ -34,7 +35,7 @@ constexpr CodeInfo kTable[] = {
      "G03 X40. Z-22. R2. - กลึงส่วนโค้งทวนเข็มนาฬิการัศมี 2 มม. ไปที่ X40 Z-22"},
     {'G', 4, G::NonModal, P::Motion, kAll, false, "Dwell", "การหยุดรอ (หน่วงเวลา)",
      "G04 U0.5 - wait 0.5 s (G04 P500 waits 500 ms)",
-     "G04 U0.5 - หยุดรอ 0.5 วินาที (G04 P500 หยุดรอ 500 มิลลิวินาที)"},
+     "G04 U0.5 - หยุดรอ 0.5 วินาที (G04 P500 หยุดรอ 500 มิลลิวินาที)", "Pd"},
     {'G', 18, G::Plane, P::State, kFH, false, "ZX plane", "เลือกระนาบ ZX",
      "G18 - select the ZX plane (a lathe always works in it; no effect)",
      "G18 - เลือกระนาบ ZX (เครื่องกลึงใช้ระนาบนี้เสมอ จึงไม่มีผลใด ๆ)"},
@@ -54,6 +55,9 @@ constexpr CodeInfo kTable[] = {
      "การกลับจากจุดอ้างอิง",
      "G29 X30. Z2. - from the reference point through the G28 intermediate point to X30 Z2",
      "G29 X30. Z2. - กลับจากจุดอ้างอิงผ่านจุดกลางทางของ G28 ไปที่ X30 Z2"},
+    {'G', 30, G::NonModal, P::Motion, kFH, false, "2nd reference point return", "การกลับสู่จุดอ้างอิงที่ 2",
+     "G30 U0. W0. - return to the 2nd reference point straight from here (P3, P4: 3rd, 4th)",
+     "G30 U0. W0. - กลับสู่จุดอ้างอิงที่ 2 จากตำแหน่งปัจจุบันโดยตรง (P3, P4: จุดที่ 3, 4)", "P#"},
     {'G', 32, G::Motion, P::Motion, kAll, false, "Thread cutting", "การกลึงเกลียว",
      "G32 Z-30. F1.5 - cut a thread of lead 1.5 mm to Z-30 (under G97)",
      "G32 Z-30. F1.5 - กลึงเกลียวระยะพิตช์ 1.5 มม. ไปที่ Z-30 (ใช้กับ G97)"},
@@ -89,33 +93,74 @@ constexpr CodeInfo kTable[] = {
      "G59 - use work offset 6 (zero unless set)", "G59 - ใช้ระบบพิกัดงานที่ 6 (เป็นศูนย์ถ้าไม่ได้กำหนด)"},
     {'G', 70, G::CannedCycle, P::Motion, kAll, false, "Finishing cycle", "วัฏจักรกลึงเก็บผิว",
      "G70 P100 Q200 - finish along the contour of blocks N100 to N200",
-     "G70 P100 Q200 - กลึงเก็บผิวตามรูปร่างในบล็อก N100 ถึง N200"},
-    {'G', 71, G::CannedCycle, P::Motion, kAll, false, "Stock removal in turning",
+     "G70 P100 Q200 - กลึงเก็บผิวตามรูปร่างในบล็อก N100 ถึง N200", "P#Q#"},
+    {'G', 71, G::CannedCycle, P::Motion, kFC, false, "Stock removal in turning",
      "วัฏจักรกลึงปาดผิวตามแนวแกน Z",
      "G71 U1. R0.5 - cut 1 mm per side, retract 0.5 mm; then G71 P_ Q_ U_ W_ F_",
      "G71 U1. R0.5 - ป้อนลึกด้านละ 1 มม. ถอยมีด 0.5 มม. แล้วตามด้วย G71 P_ Q_ U_ W_ F_"},
-    {'G', 72, G::CannedCycle, P::Motion, kAll, false, "Stock removal in facing",
+    {'G', 72, G::CannedCycle, P::Motion, kFC, false, "Stock removal in facing",
      "วัฏจักรกลึงปาดหน้า",
      "G72 W1. R0.5 - cut 1 mm along Z, retract 0.5 mm; then G72 P_ Q_ U_ W_ F_",
      "G72 W1. R0.5 - ป้อนลึกตามแนวแกน Z ครั้งละ 1 มม. ถอยมีด 0.5 มม. แล้วตามด้วย G72 P_ Q_ U_ W_ F_"},
-    {'G', 73, G::CannedCycle, P::Motion, kAll, false, "Pattern repeating cycle",
+    {'G', 73, G::CannedCycle, P::Motion, kFC, false, "Pattern repeating cycle",
      "วัฏจักรกลึงซ้ำตามรูปร่าง",
      "G73 U3. W0. R3 - remove 3 mm in 3 passes that follow the contour; then G73 P_ Q_ U_ W_ F_",
      "G73 U3. W0. R3 - กลึงออก 3 มม. ใน 3 เที่ยวตามรูปร่าง แล้วตามด้วย G73 P_ Q_ U_ W_ F_"},
-    {'G', 74, G::CannedCycle, P::Motion, kAll, false, "Face peck drilling cycle",
+    {'G', 74, G::CannedCycle, P::Motion, kFC, false, "Face peck drilling cycle",
      "วัฏจักรเจาะแบบถอยเป็นช่วง",
      "G74 R1. - retract 1 mm after each peck; then G74 Z_ Q_ F_",
      "G74 R1. - ถอยดอกเจาะ 1 มม. หลังเจาะแต่ละช่วง แล้วตามด้วย G74 Z_ Q_ F_"},
-    {'G', 75, G::CannedCycle, P::Motion, kAll, false, "Grooving cycle", "วัฏจักรกลึงร่อง",
+    {'G', 75, G::CannedCycle, P::Motion, kFC, false, "Grooving cycle", "วัฏจักรกลึงร่อง",
      "G75 R1. - retract 1 mm after each peck; then G75 X_ Z_ P_ Q_ F_",
      "G75 R1. - ถอยมีด 1 มม. หลังป้อนแต่ละช่วง แล้วตามด้วย G75 X_ Z_ P_ Q_ F_"},
-    {'G', 76, G::CannedCycle, P::Motion, kAll, false, "Multi-pass threading cycle",
+    {'G', 76, G::CannedCycle, P::Motion, kFC, false, "Multi-pass threading cycle",
      "วัฏจักรกลึงเกลียวหลายเที่ยว",
      "G76 P020060 Q50 R0.05 - then G76 X28.16 Z-30. P920 Q300 F1.5",
      "G76 P020060 Q50 R0.05 - แล้วตามด้วย G76 X28.16 Z-30. P920 Q300 F1.5"},
+    // Haas one-block forms (Haas lathe operator's manual, G-codes; docs/dialects.md).
+    {'G', 71, G::CannedCycle, P::Motion, kH, false, "O.D./I.D. stock removal cycle",
+     "วัฏจักรกลึงปาดผิวตามแนวแกน Z",
+     "G71 P100 Q200 U0.02 W0.005 D0.1 F0.01 - rough the contour N100-N200, 0.1 deep per pass (D, radius)",
+     "G71 P100 Q200 U0.02 W0.005 D0.1 F0.01 - กลึงหยาบตามรูปร่าง N100-N200 ลึกเที่ยวละ 0.1 (D, ค่ารัศมี)",
+     "P#Q#D+I.K.U.W.F+S+"},
+    {'G', 72, G::CannedCycle, P::Motion, kH, false, "End face stock removal cycle", "วัฏจักรกลึงปาดหน้า",
+     "G72 P100 Q200 U0.02 W0.005 D0.05 F0.01 - rough the face contour N100-N200, 0.05 per pass along Z",
+     "G72 P100 Q200 U0.02 W0.005 D0.05 F0.01 - กลึงหยาบปาดหน้าตามรูปร่าง N100-N200 ป้อนตามแกน Z เที่ยวละ 0.05",
+     "P#Q#D+I.K.U.W.F+S+"},
+    {'G', 73, G::CannedCycle, P::Motion, kH, false, "Irregular path stock removal cycle",
+     "วัฏจักรกลึงซ้ำตามรูปร่าง",
+     "G73 P100 Q200 U0.02 W0.005 I0.3 K0.1 D3 F0.01 - remove I/K of stock in D=3 passes that follow the contour",
+     "G73 P100 Q200 U0.02 W0.005 I0.3 K0.1 D3 F0.01 - กลึงออกตามระยะ I/K ใน D=3 เที่ยวตามรูปร่าง",
+     "P#Q#D#I.K.U.W.F+S+"},
+    {'G', 74, G::CannedCycle, P::Motion, kH, false, "End face grooving cycle", "วัฏจักรกลึงร่องหน้าตัด",
+     "G74 X1. Z-0.5 K0.1 F0.005 - peck the face groove 0.1 at a time to Z-0.5 (I: step in X)",
+     "G74 X1. Z-0.5 K0.1 F0.005 - ป้อนร่องหน้าตัดครั้งละ 0.1 จนถึง Z-0.5 (I: ระยะเลื่อนตามแกน X)",
+     "D+I+K+U.W.X.Z.F+"},
+    {'G', 75, G::CannedCycle, P::Motion, kH, false, "O.D./I.D. grooving cycle", "วัฏจักรกลึงร่อง",
+     "G75 X1.5 Z-0.8 I0.05 K0.1 F0.004 - peck the groove 0.05 at a time to X1.5 (K: step along Z)",
+     "G75 X1.5 Z-0.8 I0.05 K0.1 F0.004 - ป้อนร่องครั้งละ 0.05 จนถึง X1.5 (K: ระยะเลื่อนตามแกน Z)",
+     "D+I+K+U.W.X.Z.F+"},
+    {'G', 76, G::CannedCycle, P::Motion, kH, false, "Multi-pass threading cycle", "วัฏจักรกลึงเกลียวหลายเที่ยว",
+     "G76 X0.9 Z-1. K0.0613 D0.01 F0.0833 A60 - thread 12 TPI: height K, first pass D, 60 degree insert",
+     "G76 X0.9 Z-1. K0.0613 D0.01 F0.0833 A60 - กลึงเกลียว 12 เกลียว/นิ้ว: สูง K ป้อนเที่ยวแรก D มีดมุม 60 องศา",
+     "A#D+I.K+P#Q#U.W.X.Z.F+E+"},
     {'G', 80, G::CannedCycle, P::State, kFH, false, "Canned cycle cancel", "ยกเลิกวัฏจักร",
      "G80 - cancel a canned cycle (no effect on this lathe)",
      "G80 - ยกเลิกวัฏจักร (ไม่มีผลกับเครื่องกลึงนี้)"},
+    // Drilling on centre. Fanuc 0i-TF: G83 Q in least increments, P in ms;
+    // Haas: Q a length with a decimal point, P a dwell as G04 reads it.
+    {'G', 81, G::CannedCycle, P::Motion, kFH, false, "Drilling cycle", "วัฏจักรเจาะรู",
+     "G81 Z-20. R2. F0.1 - drill on centre to Z-20 from 2 above the face, then rapid out",
+     "G81 Z-20. R2. F0.1 - เจาะรูที่ศูนย์กลางถึง Z-20 เริ่มป้อนห่างหน้างาน 2 แล้วถอยออกเร็ว", "R.F+"},
+    {'G', 82, G::CannedCycle, P::Motion, kH, false, "Spot drilling cycle", "วัฏจักรเจาะนำศูนย์",
+     "G82 Z-0.1 R0.1 P0.3 F0.005 - spot drill to Z-0.1 and dwell 0.3 s at the bottom",
+     "G82 Z-0.1 R0.1 P0.3 F0.005 - เจาะนำศูนย์ถึง Z-0.1 แล้วหยุดรอ 0.3 วินาทีที่ก้นรู", "PdR.F+"},
+    {'G', 83, G::CannedCycle, P::Motion, kF, false, "Peck drilling cycle", "วัฏจักรเจาะรูแบบถอยเป็นช่วง",
+     "G83 Z-30. R-48. Q5000 F0.1 - peck 5 mm (Q in 0.001 mm) to Z-30, R from the start point",
+     "G83 Z-30. R-48. Q5000 F0.1 - เจาะทีละ 5 มม. (Q หน่วย 0.001 มม.) ถึง Z-30 R วัดจากจุดเริ่ม", "Q#PdR.K#F+"},
+    {'G', 83, G::CannedCycle, P::Motion, kH, false, "Peck drilling cycle", "วัฏจักรเจาะรูแบบถอยเป็นช่วง",
+     "G83 Z-1.5 R0.1 Q0.25 F0.005 - peck 0.25 at a time to Z-1.5, out to R0.1 after each peck",
+     "G83 Z-1.5 R0.1 Q0.25 F0.005 - เจาะทีละ 0.25 ถึง Z-1.5 ถอยออกถึง R0.1 ทุกครั้ง", "Q+I+J+K+PdR.F+"},
     {'G', 90, G::Motion, P::Motion, kAll, false, "Turning cycle", "วัฏจักรกลึงปอกผิวอย่างง่าย",
      "G90 X45. Z-30. F0.2 - one pass to diameter 45 over 30 mm, then back to the start",
      "G90 X45. Z-30. F0.2 - กลึงหนึ่งเที่ยวที่เส้นผ่าศก. 45 ยาว 30 มม. แล้วกลับจุดเริ่ม"},
@@ -174,14 +219,63 @@ constexpr CodeInfo kTable[] = {
      "M41 - select the low gear range (no motion)", "M41 - เลือกช่วงเกียร์ต่ำ (ไม่มีการเคลื่อนที่)"},
     {'M', 42, G::MGear, P::BeforeMotion, kFH, false, "Gear range 2 (high)", "เลือกช่วงเกียร์ 2 (สูง)",
      "M42 - select the high gear range (no motion)", "M42 - เลือกช่วงเกียร์สูง (ไม่มีการเคลื่อนที่)"},
-    {'M', 86, G::MBrake, P::BeforeMotion, kAll, false, "Spindle brake on", "เบรกเพลาจับงาน",
+    {'M', 86, G::MBrake, P::BeforeMotion, kFC, false, "Spindle brake on", "เบรกเพลาจับงาน",
      "M86 - apply the brake (the spindle must be stopped)", "M86 - เบรกเพลาจับงาน (เพลาต้องหยุดหมุนก่อน)"},
-    {'M', 87, G::MBrake, P::BeforeMotion, kAll, false, "Spindle brake off", "ปลดเบรกเพลาจับงาน",
+    {'M', 87, G::MBrake, P::BeforeMotion, kFC, false, "Spindle brake off", "ปลดเบรกเพลาจับงาน",
      "M87 - release the brake (leave C-axis mode first)",
      "M87 - ปลดเบรก (ต้องออกจากโหมดควบคุมการเคลื่อนที่ของแกน C ก่อน)"},
-    {'M', 91, G::MCAxis, P::BeforeMotion, kAll, false, "C-axis mode off",
+    {'M', 91, G::MCAxis, P::BeforeMotion, kFC, false, "C-axis mode off",
      "ปิดโหมดควบคุมการเคลื่อนที่ของแกน C", "M91 - leave C-axis mode",
      "M91 - ออกจากโหมดควบคุมการเคลื่อนที่ของแกน C"},
+    // Haas machine M codes (Haas lathe operator's manual, M-codes; docs/dialects.md).
+    {'M', 10, G::MChuck, P::BeforeMotion, kH, false, "Chuck clamp", "จับชิ้นงาน (หนีบหัวจับ)",
+     "M10 - clamp the chuck", "M10 - หนีบหัวจับชิ้นงาน"},
+    {'M', 11, G::MChuck, P::BeforeMotion, kH, false, "Chuck unclamp", "ปลดหัวจับชิ้นงาน",
+     "M11 - unclamp the chuck (spindle stopped)", "M11 - ปลดหัวจับชิ้นงาน (เพลาต้องหยุดหมุน)"},
+    {'M', 12, G::MAirBlast, P::BeforeMotion, kH, false, "Air blast on", "เปิดลมเป่า",
+     "M12 - auto air jet on", "M12 - เปิดลมเป่าอัตโนมัติ"},
+    {'M', 13, G::MAirBlast, P::AfterMotion, kH, false, "Air blast off", "ปิดลมเป่า",
+     "M13 - auto air jet off", "M13 - ปิดลมเป่าอัตโนมัติ"},
+    {'M', 14, G::MBrake, P::BeforeMotion, kH, false, "Main spindle brake on", "เบรกเพลาจับงาน",
+     "M14 - clamp the main spindle (spindle stopped)", "M14 - เบรกเพลาจับงาน (เพลาต้องหยุดหมุน)"},
+    {'M', 15, G::MBrake, P::BeforeMotion, kH, false, "Main spindle brake off", "ปลดเบรกเพลาจับงาน",
+     "M15 - release the main spindle brake", "M15 - ปลดเบรกเพลาจับงาน"},
+    {'M', 19, G::MOther, P::BeforeMotion, kH, false, "Spindle orient", "หมุนเพลาไปยังมุมที่กำหนด",
+     "M19 P90 - stop the spindle at 90 degrees", "M19 P90 - หยุดเพลาจับงานที่มุม 90 องศา"},
+    {'M', 21, G::MTailstock, P::BeforeMotion, kH, false, "Tailstock advance", "เลื่อนยันศูนย์ท้ายเข้า",
+     "M21 - move the tailstock to the part", "M21 - เลื่อนยันศูนย์ท้ายเข้าหาชิ้นงาน"},
+    {'M', 22, G::MTailstock, P::BeforeMotion, kH, false, "Tailstock retract", "ถอยยันศูนย์ท้ายออก",
+     "M22 - retract the tailstock", "M22 - ถอยยันศูนย์ท้ายออก"},
+    {'M', 23, G::MThreadChamfer, P::BeforeMotion, kH, false, "Thread chamfer on", "เปิดการลบมุมปลายเกลียว",
+     "M23 - angle out of the thread at its end (Settings 95, 96)",
+     "M23 - ถอยมีดเป็นมุมเมื่อสุดเกลียว (ตั้งค่า 95, 96)"},
+    {'M', 24, G::MThreadChamfer, P::BeforeMotion, kH, false, "Thread chamfer off", "ปิดการลบมุมปลายเกลียว",
+     "M24 - pull straight out of the thread at its end", "M24 - ถอยมีดตรงออกเมื่อสุดเกลียว"},
+    {'M', 31, G::MConveyor, P::BeforeMotion, kH, false, "Chip conveyor forward", "เปิดสายพานลำเลียงเศษ",
+     "M31 - run the chip conveyor forward", "M31 - เดินสายพานลำเลียงเศษไปข้างหน้า"},
+    {'M', 33, G::MConveyor, P::BeforeMotion, kH, false, "Chip conveyor stop", "หยุดสายพานลำเลียงเศษ",
+     "M33 - stop the chip conveyor", "M33 - หยุดสายพานลำเลียงเศษ"},
+    {'M', 36, G::MPartsCatcher, P::BeforeMotion, kH, false, "Parts catcher on", "ยกถาดรับชิ้นงานขึ้น",
+     "M36 - swing the parts catcher in", "M36 - ยกถาดรับชิ้นงานเข้ารับ"},
+    {'M', 37, G::MPartsCatcher, P::BeforeMotion, kH, false, "Parts catcher off", "เก็บถาดรับชิ้นงาน",
+     "M37 - swing the parts catcher out", "M37 - เก็บถาดรับชิ้นงานออก"},
+    {'M', 59, G::MOther, P::BeforeMotion, kH, false, "Set output relay", "เปิดรีเลย์เอาต์พุต",
+     "M59 P1103 - switch output relay 1103 on", "M59 P1103 - เปิดรีเลย์เอาต์พุตหมายเลข 1103"},
+    {'M', 69, G::MOther, P::BeforeMotion, kH, false, "Clear output relay", "ปิดรีเลย์เอาต์พุต",
+     "M69 P1103 - switch output relay 1103 off", "M69 P1103 - ปิดรีเลย์เอาต์พุตหมายเลข 1103"},
+    {'M', 85, G::MDoor, P::BeforeMotion, kH, false, "Automatic door open", "เปิดประตูอัตโนมัติ",
+     "M85 - open the automatic door", "M85 - เปิดประตูเครื่องอัตโนมัติ"},
+    {'M', 86, G::MDoor, P::BeforeMotion, kH, false, "Automatic door close", "ปิดประตูอัตโนมัติ",
+     "M86 - close the automatic door (Haas; a brake elsewhere)", "M86 - ปิดประตูเครื่องอัตโนมัติ (ของ Haas)"},
+    {'M', 88, G::MHighPressureCoolant, P::BeforeMotion, kH, false, "High-pressure coolant on",
+     "เปิดสารหล่อเย็นแรงดันสูง", "M88 - high-pressure coolant on", "M88 - เปิดสารหล่อเย็นแรงดันสูง"},
+    {'M', 89, G::MHighPressureCoolant, P::AfterMotion, kH, false, "High-pressure coolant off",
+     "ปิดสารหล่อเย็นแรงดันสูง", "M89 - high-pressure coolant off", "M89 - ปิดสารหล่อเย็นแรงดันสูง"},
+    {'M', 95, G::MOther, P::AfterMotion, kH, false, "Sleep mode", "โหมดพักเครื่อง",
+     "M95 (00:30) - sleep for 30 minutes, then warm up", "M95 (00:30) - พักเครื่อง 30 นาทีแล้วอุ่นเครื่อง"},
+    {'M', 97, G::MSubprogram, P::AfterMotion, kH, false, "Local subprogram call", "เรียกโปรแกรมย่อยภายใน",
+     "M97 P1000 - run the blocks from N1000 of this program up to M99",
+     "M97 P1000 - เรียกใช้บล็อกตั้งแต่ N1000 ของโปรแกรมนี้จนถึง M99"},
     {'M', 98, G::MSubprogram, P::AfterMotion, kAll, false, "Subprogram call", "เรียกโปรแกรมย่อย",
      "M98 P1234 - run subprogram O1234", "M98 P1234 - เรียกใช้โปรแกรมย่อย O1234"},
     {'M', 99, G::MSubprogram, P::AfterMotion, kAll, false, "End of subprogram", "จบโปรแกรมย่อย",
@@ -209,6 +303,12 @@ const Index& index() {
 }  // namespace
 
 std::span<const CodeInfo> codeTable() { return kTable; }
+
+char wordKind(const CodeInfo& row, char letter) {
+  for (std::size_t i = 0; i + 1 < row.words.size(); i += 2)
+    if (row.words[i] == letter) return row.words[i + 1];
+  return 0;
+}
 
 const CodeInfo* findCode(char letter, int number, Dialect dialect) {
   if ((letter != 'G' && letter != 'M') || number < 0 || number > 99) return nullptr;
@@ -239,6 +339,14 @@ std::string_view modalGroupNumber(ModalGroup group) {
     case ModalGroup::MGear: return "M41/M42";
     case ModalGroup::MProgram: return "M00/M01/M02/M30";
     case ModalGroup::MSubprogram: return "M98/M99";
+    case ModalGroup::MChuck: return "M10/M11";
+    case ModalGroup::MAirBlast: return "M12/M13";
+    case ModalGroup::MTailstock: return "M21/M22";
+    case ModalGroup::MThreadChamfer: return "M23/M24";
+    case ModalGroup::MConveyor: return "M31/M33";
+    case ModalGroup::MPartsCatcher: return "M36/M37";
+    case ModalGroup::MDoor: return "M85/M86";
+    case ModalGroup::MHighPressureCoolant: return "M88/M89";
     case ModalGroup::MOther: return "M";
   }
   return "?";

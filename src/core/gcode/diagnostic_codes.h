@@ -18,19 +18,19 @@ inline constexpr const char* kTextAfterTapeMark = "E108";   // {0}=word
 inline constexpr const char* kTooManyLexicalErrors = "E109";
 inline constexpr const char* kOutOfRange = "E110";          // {0}=word {1}=min {2}=max
 inline constexpr const char* kTooManyDecimals = "E111";     // {0}=word {1}=max decimals
-inline constexpr const char* kNotPositive = "E112";         // {0}=word {1}=letter
+inline constexpr const char* kNotPositive = "E112";         // {0}=word {1}=letter {2}=min {3}=max
 inline constexpr const char* kCodeNotInteger = "E113";      // {0}=word
 inline constexpr const char* kUnknownGCode = "E114";        // {0}=word
 inline constexpr const char* kUnknownMCode = "E115";        // {0}=word
-inline constexpr const char* kBadSequenceNumber = "E116";   // {0}=word {1}=letter
+inline constexpr const char* kBadSequenceNumber = "E116";   // {0}=word {1}=letter {2}=max
 inline constexpr const char* kBadToolWord = "E117";         // {0}=word
-inline constexpr const char* kBadToolWordFanuc = "E118";    // {0}=word
+inline constexpr const char* kBadToolWordFanuc = "E118";    // {0}=word {1}=max tool {2}=max offset (2 digits)
 inline constexpr const char* kNotWholeNumber = "E119";      // {0}=word {1}=letter
 inline constexpr const char* kBlockTooLong = "E120";       // {0}=limit
 inline constexpr const char* kTooManyDiagnostics = "E199";  // {0}=limit
 
 // E2nn block rule nn of SPEC 5 (E213, stock size, belongs to the io module)
-inline constexpr const char* kLetterNotAllowed = "E201";    // {0}=word {1}=letter
+inline constexpr const char* kLetterNotAllowed = "E201";    // {0}=word {1}=letter {2}=allowed letters
 inline constexpr const char* kLetterTwice = "E202";         // {0}=letter
 inline constexpr const char* kMustStandAlone = "E203";      // {0}=code
 inline constexpr const char* kConflictingMCodes = "E204";   // {0}=first {1}=second
@@ -56,6 +56,10 @@ inline constexpr const char* kG28WithoutAxes = "E309";
 // W1xx warnings
 inline constexpr const char* kMachineSpecificM = "W101";    // {0}=word
 inline constexpr const char* kG28NoMotion = "W102";
+inline constexpr const char* kRoundedToIncrement = "W103";  // {0}=word {1}=rounded word {2}=decimals
+
+// I1xx notes
+inline constexpr const char* kDialectFits = "I102";  // {0}=blocks {1}=dialect name {2}=dialect id
 
 // Every code above, for the catalog completeness test.
 inline constexpr const char* kAll[] = {
@@ -102,6 +106,8 @@ inline constexpr const char* kAll[] = {
     kG28WithoutAxes,
     kMachineSpecificM,
     kG28NoMotion,
+    kRoundedToIncrement,
+    kDialectFits,
 };
 
 // Beyond these, a hostile input only repeats itself; the report ends with

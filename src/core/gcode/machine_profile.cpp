@@ -11,6 +11,32 @@ namespace {
 constexpr std::array<int, 0> kNoOneShots{};
 constexpr std::array<int, 3> kG28G30G53{28, 30, 53};
 
+// Haas NGC lathe settings at their factory values (Haas lathe operator's
+// manual, Settings: 22 Can Cycle Delta Z .050 in, 72 Canned Cycle Cut Depth
+// .100 in, 73 Canned Cycle Retraction .050 in, 86 Thread Finish Allowance 0,
+// 95 Thread Chamfer Size 1 thread, 99 Thread Minimum Cut .001 in); the mm
+// values are the same lengths as the control shows them in metric.
+constexpr CycleSettings kHaasCycles{
+    .roughDepthInch = 0.1, .roughDepthMm = 2.54,
+    .roughRetractInch = 0.05, .roughRetractMm = 1.27,
+    .peckClearInch = 0.05, .peckClearMm = 1.27,
+    .threadMinCutInch = 0.001, .threadMinCutMm = 0.0254,
+    .threadFinishInch = 0.0, .threadFinishMm = 0.0,
+    .threadChamferLeads = 1.0,
+    .drillR = DrillR::Plane,
+};
+// Fanuc 0i-TF: the two-block cycles carry their own values; only the G83
+// clearance d (parameter 5115, set by the machine builder) is used: 1 mm / .04 in.
+constexpr CycleSettings kFanucCycles{
+    .roughDepthInch = 0.1, .roughDepthMm = 2.54,
+    .roughRetractInch = 0.05, .roughRetractMm = 1.27,
+    .peckClearInch = 0.04, .peckClearMm = 1.0,
+    .threadMinCutInch = 0.001, .threadMinCutMm = 0.0254,
+    .threadFinishInch = 0.0, .threadFinishMm = 0.0,
+    .threadChamferLeads = 0.0,
+    .drillR = DrillR::FromInitialLevel,
+};
+
 constexpr MachineProfile kProfiles[] = {
     {
         .dialect = Dialect::Fanuc,
@@ -23,6 +49,10 @@ constexpr MachineProfile kProfiles[] = {
         .sequenceNumberMax = 99999,
         .decimalsMm = 3,
         .decimalsInch = 4,
+        .maxAbsMm = 9999.999,
+        .maxAbsInch = 999.9999,
+        .minPositiveMm = 0.001,
+        .minPositiveInch = 0.0001,
         .extraDecimals = ExtraDecimals::RoundWithWarning,
         .powerOnUnits = InputUnits::Millimetre,
         .minToolDigits = 3,
@@ -33,6 +63,7 @@ constexpr MachineProfile kProfiles[] = {
         .oneShotsWithMotion = kG28G30G53,
         .cycleForm = CycleForm::TwoBlock,
         .unknownMIsWarning = true,
+        .cycles = kFanucCycles,
     },
     {
         .dialect = Dialect::Haas,
@@ -45,6 +76,10 @@ constexpr MachineProfile kProfiles[] = {
         .sequenceNumberMax = 99999,
         .decimalsMm = 3,
         .decimalsInch = 4,
+        .maxAbsMm = 9999.999,
+        .maxAbsInch = 999.9999,
+        .minPositiveMm = 0.001,
+        .minPositiveInch = 0.0001,
         .extraDecimals = ExtraDecimals::RoundWithWarning,
         .powerOnUnits = InputUnits::Inch,
         .minToolDigits = 3,
@@ -55,6 +90,7 @@ constexpr MachineProfile kProfiles[] = {
         .oneShotsWithMotion = kG28G30G53,
         .cycleForm = CycleForm::OneBlock,
         .unknownMIsWarning = true,
+        .cycles = kHaasCycles,
     },
     {
         .dialect = Dialect::Classic,
@@ -67,6 +103,10 @@ constexpr MachineProfile kProfiles[] = {
         .sequenceNumberMax = 9999,
         .decimalsMm = 3,
         .decimalsInch = 4,
+        .maxAbsMm = 9999.999,
+        .maxAbsInch = 9999.999,  // the seed keeps the mm range after G20
+        .minPositiveMm = 0.001,
+        .minPositiveInch = 0.001,
         .extraDecimals = ExtraDecimals::Error,
         .powerOnUnits = InputUnits::Millimetre,
         .minToolDigits = 4,
@@ -77,6 +117,7 @@ constexpr MachineProfile kProfiles[] = {
         .oneShotsWithMotion = kNoOneShots,
         .cycleForm = CycleForm::TwoBlock,
         .unknownMIsWarning = false,
+        .cycles = kFanucCycles,
     },
 };
 

@@ -103,6 +103,15 @@ class LineParser {
         }
         col = lexWord(i, col);
         sawWordOrSkip = true;
+      } else if (c == ':' && i + 1 < line.size() && isDigit(static_cast<unsigned char>(line[i + 1]))) {
+        // ISO program number ":0100": read as an O word; the checker decides
+        // whether the profile allows it.
+        if (words_.size() == codes::kMaxWordsPerBlock) {
+          report(codes::kBlockTooLong, col, 0, {std::to_string(codes::kMaxWordsPerBlock)});
+          break;
+        }
+        col = lexWord(i, col);
+        sawWordOrSkip = true;
       } else if (isNumberChar(c)) {
         // A number with no address letter before it.
         const std::size_t start = i;
@@ -184,7 +193,8 @@ class LineParser {
 
   // Reads letter + number at line_[i]; returns the column after the word.
   int lexWord(std::size_t& i, int col) {
-    const char letter = static_cast<char>(line_[i] & ~0x20);  // upper case
+    const bool colon = line_[i] == ':';
+    const char letter = colon ? 'O' : static_cast<char>(line_[i] & ~0x20);  // upper case
     const std::size_t start = i;
     ++i;
     const std::size_t numberStart = i;
@@ -218,6 +228,7 @@ class LineParser {
 
     Word& w = words_.emplace_back();
     w.letter = letter;
+    w.colon = colon;
     w.number.assign(number);
     w.hasDecimalPoint = point;
     w.decimals = static_cast<int>(fracDigits);

@@ -13,13 +13,14 @@
 
 #include "klueng/core/comp/segment.h"
 #include "klueng/core/diagnostic.h"
+#include "klueng/core/gcode/machine_profile.h"
 #include "klueng/core/gcode/program.h"
 #include "klueng/core/io/tool_config.h"
 #include "klueng/core/machine/state.h"
 
 namespace klueng::core::machine::cycles {
 
-enum class StepKind { Rapid, Feed, Thread, Compensation };
+enum class StepKind { Rapid, Feed, Thread, Compensation, Dwell };
 
 struct Step {
   StepKind kind = StepKind::Rapid;
@@ -30,6 +31,7 @@ struct Step {
   SourceRange where;                      // the word an alarm about this step points at (0 = the cycle's G)
   const gcode::Word* sWord = nullptr;     // G70: an S of the profile, applied before this step
   const gcode::Word* tWord = nullptr;     // G70: a T of the profile, applied before this step
+  double seconds = 0.0;                   // Dwell: how long
 };
 
 struct CycleAlarm {
@@ -64,6 +66,8 @@ struct CycleInput {
   double feed = 0.0;                      // modal F in mm (after the cycle block's own F)
   MotionMode motion = MotionMode::Rapid;  // modal motion when the profile starts
   bool blockSkip = false;                 // '/' blocks of the profile skipped
+  const gcode::MachineProfile* profile = nullptr;  // one-block forms, drilling: settings, G04 P rule
+  bool threadChamfer = true;              // Haas M23/M24 state (G76 one-block pull-out)
 };
 
 struct Expansion {
@@ -74,6 +78,38 @@ struct Expansion {
 
 // G70-G76 (one block of either format). A first block only fills `memory`.
 Expansion expand(int g, const CycleInput& in, CycleMemory& memory);
+
+// Haas one-block G70-G76 (MachineProfile::cycleForm == OneBlock): G71/G72
+// P Q U W D I K F, G73 P Q U W I K D F, G70 P Q, G74/G75 X Z I K D F,
+// G76 X Z K D F I A P U W. Readings and the manual's sections: docs/haas-cycles.md.
+Expansion expandOneBlock(int g, const CycleInput& in);
+
+// The words of a drilling cycle G81/G82/G83, in mm (controlled point, work
+// coordinates). Modal: a later block with only a hole position reuses them.
+struct DrillWords {
+  int g = 0;                  // 81, 82, 83
+  Vec2 hole = Vec2::Zero();   // hole position and bottom (z = bottom of the hole)
+  double rPlane = 0.0;        // Z of the R point
+  double peck = 0.0;          // Q: depth of each peck (G83), 0 = one feed to the bottom
+  double firstPeck = 0.0;     // Haas G83 I: first peck; J: reduction per peck; K: least peck
+  double reduce = 0.0;
+  double minPeck = 0.0;
+  double dwell = 0.0;         // P: seconds at the bottom
+  double clearance = 0.0;     // G83: rapid down to this much above the last peck
+  int repeats = 1;            // Fanuc K, Haas L
+};
+
+// Reads a drilling block into `words` (words not in the block keep their
+// value; `fresh` = a new G81-G83, whose R defaults to the initial level).
+std::optional<CycleAlarm> readDrillWords(int g, const CycleInput& in, bool fresh, DrillWords& words);
+// The moves of one drilling cycle from `start` (the initial level): rapid to
+// the hole's X, rapid to the R point, feed (in pecks) to the bottom, dwell,
+// rapid back to the initial level (Fanuc G-code system A; Haas).
+std::vector<Step> drill(const DrillWords& words, const Vec2& start);
+
+// Seconds of a dwell word P as the profile reads it (Fanuc: ms; Haas: with a
+// decimal point seconds, else ms).
+double dwellSeconds(const gcode::Word& p, gcode::DwellPUnit rule);
 
 // G90 (turning), G92 (threading, `lead` = F) and G94 (facing) from `start` to
 // `target` with taper `taper` (radius for G90/G92, Z for G94: start of the cut

@@ -177,7 +177,7 @@ INSTANTIATE_TEST_SUITE_P(
         FailCase{"G04 U1. G50 S100", In::Both, "E205", 1, 9, 3},
         // rule 6
         FailCase{"G04 G01 U1.", In::Both, "E206", 1, 5, 3},
-        FailCase{"G01 X20. G28", In::Both, "E206", 1, 10, 3},
+        FailCase{"G01 X20. G28", In::Classic, "E206", 1, 10, 3},
         FailCase{"G50 S2000 G00", In::Both, "E206", 1, 11, 3},
         // rule 7
         FailCase{"G98 F100.", In::Classic, "E207", 1, 1, 3},
@@ -204,10 +204,10 @@ INSTANTIATE_TEST_SUITE_P(
         FailCase{"Z-10000.", In::Both, "E110", 1, 1, 8},
         FailCase{"I9999.9991", In::Both, "E110", 1, 1, 10},
         FailCase{"F10000.", In::Both, "E110", 1, 1, 7},
-        FailCase{"X1.2345", In::Both, "E111", 1, 1, 7},
-        FailCase{"G21\nZ-0.0001", In::Both, "E111", 2, 1, 8},
-        FailCase{"G20\nX1.23456", In::Both, "E111", 2, 1, 8},
-        FailCase{"G20 X1.\nG21\nK1.2345", In::Both, "E111", 3, 1, 7},
+        FailCase{"X1.2345", In::Classic, "E111", 1, 1, 7},
+        FailCase{"G21\nZ-0.0001", In::Classic, "E111", 2, 1, 8},
+        FailCase{"G20\nX1.23456", In::Classic, "E111", 2, 1, 8},
+        FailCase{"G20 X1.\nG21\nK1.2345", In::Classic, "E111", 3, 1, 7},
         FailCase{"F-0.2", In::Both, "E112", 1, 1, 5},
         FailCase{"F0", In::Both, "E112", 1, 1, 2},
         FailCase{"M03 S0.0001", In::Both, "E112", 1, 5, 7},
@@ -223,11 +223,11 @@ INSTANTIATE_TEST_SUITE_P(
         FailCase{"M77", In::Classic, "E115", 1, 1, 3},
         FailCase{"M42", In::Classic, "E115", 1, 1, 3},
         FailCase{"N0 G00", In::Both, "E116", 1, 1, 2},
-        FailCase{"N10000", In::Both, "E116", 1, 1, 6},
+        FailCase{"N10000", In::Classic, "E116", 1, 1, 6},
         FailCase{"N1.5", In::Both, "E116", 1, 1, 4},
         FailCase{"O0", In::Both, "E116", 1, 1, 2},
         FailCase{"T0917", In::Classic, "E117", 1, 1, 5},
-        FailCase{"T0917", In::Fanuc, "E118", 1, 1, 5},
+        FailCase{"T1317", In::Fanuc, "E118", 1, 1, 5},
         FailCase{"T0900", In::Classic, "E117", 1, 1, 5},
         FailCase{"T0017", In::Fanuc, "E118", 1, 1, 5},
         FailCase{"T101", In::Classic, "E117", 1, 1, 4},
@@ -299,7 +299,7 @@ TEST(Checker, FanucStartLineIsCleanButClassicSaysG99MustStandAlone) {
 
 TEST(Checker, UnitsAreTrackedLeftToRightAcrossBlocks) {
   // G20 in force: 4 decimals are fine; after G21 they are not.
-  const auto diags = checkText("G20\nX1.2345\nG21\nX1.2345\nG20 X1.2345", Dialect::Fanuc);
+  const auto diags = checkText("G20\nX1.2345\nG21\nX1.2345\nG20 X1.2345", Dialect::Classic);
   ASSERT_EQ(diags.size(), 1u) << listing(diags);
   EXPECT_EQ(diags[0].code, "E111");
   EXPECT_EQ(diags[0].range.line, 4);

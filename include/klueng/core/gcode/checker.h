@@ -17,7 +17,10 @@ struct CheckOptions {
   Dialect dialect = Dialect::Fanuc;
   // Turret stations of the machine (machine.cfg turret_stations), where the
   // profile takes the T range from the machine.
-  int turretStations = 8;
+  int turretStations = 12;
+  // Units before any G20/G21 (CLI --units, the GUI setting); nullopt = the
+  // profile's power-on units (inch on a US Haas).
+  std::optional<InputUnits> powerOnUnits;
   // Tools 1..8 that have a bitmap in tools.cfg; empty = do not check (no table loaded).
   std::optional<std::vector<int>> toolsWithBitmap;
 };

@@ -21,7 +21,7 @@ enum class ModalGroup {
   FeedMode,      // 05: G98 G99
   Plane,         // 16: G18 (Fanuc)
   WorkOffset,    // 14: G54..G59 (Fanuc)
-  CannedCycle,   // 10/00: G70..G76, G80
+  CannedCycle,   // 10/00: G70..G76, G80, G81..G83 drilling
   // M code groups, for rule 4 and the interpreter
   MSpindle,      // M03 M04 M05
   MCoolant,      // M08 M09
@@ -29,7 +29,16 @@ enum class ModalGroup {
   MBrake,        // M86 M87
   MGear,         // M41 M42 (Fanuc gear range)
   MProgram,      // M00 M01 M02 M30
-  MSubprogram,   // M98 M99
+  MSubprogram,   // M98 M99 (M97 Haas)
+  // Haas machine M codes: on/off pairs that may not share a block (rule 4)
+  MChuck,        // M10 M11
+  MAirBlast,     // M12 M13
+  MTailstock,    // M21 M22
+  MThreadChamfer,  // M23 M24
+  MConveyor,     // M31 M33
+  MPartsCatcher,   // M36 M37
+  MDoor,         // M85 M86
+  MHighPressureCoolant,  // M88 M89
   MOther,
 };
 
@@ -48,7 +57,16 @@ struct CodeInfo {
   std::string_view nameTh;
   std::string_view exampleEn;  // one-line example with explanation
   std::string_view exampleTh;
+  // The words the code takes whose value kind differs from the default, as
+  // letter + kind pairs ("P#Q#D+"): '.' signed length, '+' positive real
+  // (F-like range), '#' whole number (block number, count, least increments),
+  // 'd' dwell time read as the profile's dwellP says. Letters not listed keep
+  // SPEC 4's kind. Read by the checker (and the help pages).
+  std::string_view words = {};
 };
+
+// The kind of `letter` in `row`'s word list; 0 when not listed.
+char wordKind(const CodeInfo& row, char letter);
 
 // Every row of every dialect. A code whose meaning differs between the
 // dialects (M41, G98/G99 standing alone) has one row per meaning.

@@ -43,6 +43,25 @@ enum class BareG28 : std::uint8_t {
   HomeAllAxes,  // Haas: returns X and Z to the reference point
 };
 
+// What R means in the drilling cycles G81-G83 (docs/haas-cycles.md).
+enum class DrillR : std::uint8_t {
+  FromInitialLevel,  // Fanuc 0i-TF: the signed distance from the initial level to the R point
+  Plane,             // Haas: the Z of the R plane
+};
+
+// Machine settings the cycles use where a program leaves a value out (Haas
+// settings, Fanuc parameters), in inch and mm as the control keeps them.
+struct CycleSettings {
+  double roughDepthInch, roughDepthMm;        // G71/G72 depth per pass without D (Haas setting 72)
+  double roughRetractInch, roughRetractMm;    // G71/G72 retract after a pass (Haas setting 73)
+  double peckClearInch, peckClearMm;          // G74/G75 chip-breaking retract, G83 clearance above the
+                                              // last peck (Haas setting 22; Fanuc parameter 5115)
+  double threadMinCutInch, threadMinCutMm;    // G76 one-block: least depth of a pass (Haas setting 99)
+  double threadFinishInch, threadFinishMm;    // G76 one-block: depth of the last pass (Haas setting 86)
+  double threadChamferLeads;                  // G76 one-block: pull-out length in leads (Haas setting 95)
+  DrillR drillR;
+};
+
 struct MachineProfile {
   Dialect dialect;
   std::string_view id;       // "fanuc", "haas", "classic" (CLI, settings)
@@ -57,6 +76,11 @@ struct MachineProfile {
   // Word formats: decimals of the least input increment, mm and inch.
   int decimalsMm;
   int decimalsInch;
+  // Ranges of lengths (|value| <= maxAbs) and of F/S (>= minPositive), per input unit.
+  double maxAbsMm;
+  double maxAbsInch;
+  double minPositiveMm;
+  double minPositiveInch;
   ExtraDecimals extraDecimals;
   InputUnits powerOnUnits;   // before any G20/G21 (overridden by --units / the GUI setting)
   // T words: tool number and offset number. Digits: a T word has minToolDigits..4
@@ -70,6 +94,7 @@ struct MachineProfile {
   std::span<const int> oneShotsWithMotion;
   CycleForm cycleForm;
   bool unknownMIsWarning;    // an M code outside the table: W101 (true) or E115 (false)
+  CycleSettings cycles;      // defaults of the cycles (one-block forms, drilling)
 };
 
 // The row of a dialect.

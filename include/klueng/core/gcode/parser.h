@@ -8,6 +8,8 @@ namespace klueng::core::gcode {
 
 // text: the G-code part of a file (UTF-8, LF/CRLF/CR line ends).
 // firstLine: the file line number of text's first line (7 after a 6-line header).
+// An ISO program number ":0100" is read as an O word with Word::colon set
+// (the checker decides whether the machine profile allows it).
 // Never throws. Lexical errors (E101-E109, E120) go to lexicalDiagnostics;
 // they stop at 2,000 (E109), and a block keeps at most 1,000 words (E120), so
 // memory stays bounded on junk such as a 10 MB single line.

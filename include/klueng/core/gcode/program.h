@@ -12,14 +12,18 @@ struct Word {
   // (Members ordered to avoid padding: a big program holds millions of words.)
   char letter = 0;          // upper-case address letter, 'A'..'Z'
   bool hasDecimalPoint = false;
+  bool colon = false;       // an ISO ':' program number (":0100"), stored as letter 'O'
   int decimals = 0;         // digits after the decimal point
   double value = 0.0;       // numeric value as written (mm or inch, diameters for X/U)
   std::string number;       // the number exactly as written ("01", "-.5", "25.")
+                            // (an O word written ':0100' has colon set and number "0100")
   SourceRange range;        // covers letter and number
 
   // Integer code of a G/M/T/N/O word ("G01" -> 1). Only meaningful when
   // !hasDecimalPoint; G-code numbers like "G1.5" are reported by the checker.
   int code() const { return static_cast<int>(value); }
+  // The word as written, for messages: "X25.4", ":0100".
+  std::string text() const { return (colon ? ':' : letter) + number; }
 };
 
 struct Block {

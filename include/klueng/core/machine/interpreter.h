@@ -1,5 +1,7 @@
 #pragma once
 // Runs a checked Program into a Timeline (SPEC 6-10).
+#include <optional>
+
 #include "klueng/core/gcode/code_table.h"
 #include "klueng/core/gcode/program.h"
 #include "klueng/core/io/tool_config.h"
@@ -13,6 +15,9 @@ struct RunOptions {
   bool optionalStop = false;   // M01 stops when on
   bool blockSkip = false;      // '/' blocks skipped when on
   bool stopAtM00 = false;      // false: a headless run records the stop and continues
+  // Units before any G20/G21 (CLI --units, the GUI setting); nullopt = the
+  // profile's power-on units (Haas: inch).
+  std::optional<gcode::InputUnits> powerOnUnits;
 };
 
 struct MachineSetup {
@@ -26,7 +31,7 @@ struct MachineSetup {
 // U/W moves are plain displacements. G50 X Z declares the controlled point to
 // be at the given position (+ offset) in work coordinates, where the stock is;
 // the reference point and travel limits are machine positions and follow it.
-// G27/G28/G29/G53 bring the controlled point itself (no offset) to the
+// G27/G28/G29/G30/G53 bring the controlled point itself (no offset) to the
 // reference or machine position. Under G96 the rpm follows the controlled
 // point's diameter. C/H rotations take no time. Zero-length moves are not recorded.
 //

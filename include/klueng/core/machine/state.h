@@ -41,6 +41,7 @@ struct MachineState {
   double noseRadius = 0.0;
   int tip = 0;
   int gearRange = 0;               // Fanuc M41/M42 (no motion), 0 = not selected
+  bool threadChamfer = true;       // Haas M23 (on, the power-on state) / M24 (off): G76 pull-out
   Vec2 workShift = Vec2::Zero();   // work minus machine coordinates, changed by G50 X Z
 };
 

@@ -1,0 +1,191 @@
+// Haas one-block multiple repetitive cycles (Haas NGC lathe operator's manual,
+// "G-codes"; readings in docs/haas-cycles.md), expanded with the machinery of
+// the Fanuc forms: the same profile reader, roughing, pecks and thread passes.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "machine/cycles_internal.h"
+
+namespace klueng::core::machine::cycles {
+
+using namespace detail;
+
+namespace {
+
+// A length word in mm (value in program units), or `fallback` (mm) without it.
+double length(const Block& b, char letter, double unit, double fallback) {
+  const Word* w = b.find(letter);
+  return w ? w->value * unit : fallback;
+}
+
+// A machine setting in mm for the units in force (Haas keeps one value per unit).
+double setting(double inchValue, double mmValue, double unit) { return unit > 1.0 ? inchValue * unit : mmValue; }
+
+// Depths (radius, from the crest) of the G76 passes: D, then D·√n ("cutting
+// amount constant", P1/P2) or n·D ("cutting depth constant", P3/P4), each at
+// least `minCut` deeper than the one before, up to height - finish; then one
+// pass at the full height when a finish allowance is set (Setting 86).
+std::vector<double> haasThreadDepths(double height, double first, double minCut, double finish, bool constantDepth) {
+  std::vector<double> depths;
+  const double rough = height - finish;
+  double prev = 0.0;
+  for (int n = 1; rough > kEps && prev < rough - kEps && n <= kMaxPasses; ++n) {
+    double next = constantDepth ? n * first : first * std::sqrt(static_cast<double>(n));
+    if (next - prev < minCut) next = prev + minCut;
+    next = std::min(next, rough);
+    depths.push_back(next);
+    prev = next;
+  }
+  if (finish > kEps || depths.empty()) depths.push_back(height);
+  return depths;
+}
+
+Expansion roughing(int g, const CycleInput& in, const Block& b) {
+  Expansion e;
+  const double u = in.unit;
+  const std::string name = gName(in, g);
+  const gcode::CycleSettings& s = in.profile->cycles;
+  const double depth = length(b, 'D', u, setting(s.roughDepthInch, s.roughDepthMm, u));
+  if (depth <= 0.0) {
+    const Word* d = b.find('D');
+    e.alarm = alarmAt("A122", d ? d : in.gWord, b, {name, "D"});
+    return e;
+  }
+  Profile p;
+  if (auto a = readProfile(in, b, false, p)) {
+    e.alarm = a;
+    return e;
+  }
+  // U/W: finish allowance (U diameter); I/K: rough pass allowance (I radius).
+  const Vec2 finish(length(b, 'W', u, 0.0), length(b, 'U', u, 0.0) / 2.0);
+  const Vec2 rough(length(b, 'K', u, 0.0), length(b, 'I', u, 0.0));
+  const double retract = setting(s.roughRetractInch, s.roughRetractMm, u);
+  if (auto a = stockRemoval(in, p, depth, retract, finish, g == 72, e.steps, rough, true)) {
+    e.alarm = a;
+    return e;
+  }
+  if (p.ns > in.blockIndex) e.resumeAfter = p.nf;
+  return e;
+}
+
+Expansion grooving(int g, const CycleInput& in, const Block& b) {
+  Expansion e;
+  const double u = in.unit;
+  const gcode::CycleSettings& s = in.profile->cycles;
+  const Vec2 target = axisTarget(b, in.start, in.offset, u);
+  const Word* iw = b.find('I');
+  const Word* kw = b.find('K');
+  const double i = iw ? std::abs(increment(*iw, u)) : 0.0;  // radius: X step (G74) or X peck (G75)
+  const double k = kw ? std::abs(increment(*kw, u)) : 0.0;  // Z peck (G74) or Z step (G75)
+  const double retract = setting(s.peckClearInch, s.peckClearMm, u);  // Setting 22
+  const double drillDepth = std::abs(g == 74 ? zOf(target) - zOf(in.start) : xOf(target) - xOf(in.start));
+  const double peck = g == 74 ? k : i;
+  if (peck > kEps && drillDepth / peck > kMaxPasses) {
+    e.alarm = alarmAt("A127", g == 74 ? kw : iw, b,
+                      {gName(in, g), fmt::format("{:.0f}", std::ceil(drillDepth / peck)), num(peck)});
+    return e;
+  }
+  if (g == 74) {
+    e.steps = pecks(in.start, target, k, i, retract);
+  } else {
+    e.steps = pecks(swapped(in.start), swapped(target), i, k, retract);
+    swapAll(e.steps);
+  }
+  return e;
+}
+
+Expansion threading(const CycleInput& in, const Block& b) {
+  Expansion e;
+  const double u = in.unit;
+  const std::string name = gName(in, 76);
+  const gcode::CycleSettings& s = in.profile->cycles;
+  const Vec2 target = axisTarget(b, in.start, in.offset, u);
+  const double height = length(b, 'K', u, 0.0);
+  const double first = length(b, 'D', u, 0.0);
+  if (height <= 0.0) {
+    const Word* k = b.find('K');
+    e.alarm = alarmAt("A122", k ? k : in.gWord, b, {name, "K"});
+    return e;
+  }
+  if (first <= 0.0) {
+    const Word* d = b.find('D');
+    e.alarm = alarmAt("A122", d ? d : in.gWord, b, {name, "D"});
+    return e;
+  }
+  const int method = b.has('P') ? b.find('P')->code() : 1;  // P1..P4, default P1
+  const bool doubleEdge = method == 2 || method == 4;
+  const bool constantDepth = method == 3 || method == 4;
+  const double angle = b.has('A') ? b.find('A')->value : 0.0;  // tool nose angle, degrees
+  const double taper = length(b, 'I', u, 0.0);                  // radius, start minus end
+  const double minCut = setting(s.threadMinCutInch, s.threadMinCutMm, u);
+  const double finish = setting(s.threadFinishInch, s.threadFinishMm, u);
+  if (constantDepth && height / first > kMaxPasses) {
+    e.alarm = alarmAt("A127", b.find('D'), b, {name, fmt::format("{:.0f}", std::ceil(height / first)), num(first)});
+    return e;
+  }
+  const double sx = sign(in.start.y() - target.y());  // towards the crest (outside: +1)
+  const double sz = sign(target.x() - in.start.x());
+  const double flank = doubleEdge ? 0.0 : std::tan(angle / 2.0 * std::numbers::pi / 180.0);
+  const Vec2& a = in.start;
+  for (const double depth : haasThreadDepths(height, first, minCut, finish, constantDepth)) {
+    const double xPass = target.y() + sx * (height - depth);
+    const Vec2 s0(a.x() + sz * depth * flank, a.y());
+    const Vec2 s1(s0.x(), xPass + taper);
+    const Vec2 s2(target.x(), xPass);
+    const Vec2 s3(target.x(), a.y());
+    if ((s0 - a).norm() > kEps) e.steps.push_back(rapid(a, s0));
+    e.steps.push_back(rapid(s0, s1));
+    const double lengthZ = std::abs(s2.x() - s1.x());
+    const double leads = in.threadChamfer ? s.threadChamferLeads : 0.0;  // M23/M24
+    const double chamfer = std::min(leads * in.feed, lengthZ);             // Settings 95/96: 45 degrees
+    if (chamfer > kEps) {
+      const Vec2 c0 = s1 + (s2 - s1) * ((lengthZ - chamfer) / lengthZ);
+      const Vec2 c1(target.x(), c0.y() + sx * chamfer);
+      e.steps.push_back(thread(s1, c0, in.feed));
+      e.steps.push_back(thread(c0, c1, in.feed));
+      e.steps.push_back(rapid(c1, s3));
+    } else {
+      e.steps.push_back(thread(s1, s2, in.feed));
+      e.steps.push_back(rapid(s2, s3));
+    }
+    e.steps.push_back(rapid(s3, a));
+  }
+  return e;
+}
+
+}  // namespace
+
+Expansion expandOneBlock(int g, const CycleInput& in) {
+  const Block& b = in.program->blocks[static_cast<std::size_t>(in.blockIndex)];
+  switch (g) {
+    case 70: {
+      // G70 P Q is the same block in both forms.
+      CycleMemory unused;
+      return expand(70, in, unused);
+    }
+    case 71:
+    case 72: return roughing(g, in, b);
+    case 73: {
+      // D = number of passes, I/K = total relief (I radius): the Fanuc pattern
+      // repeat with these values in its memory.
+      const Word* d = b.find('D');
+      CycleMemory m;
+      m.g73Count = d ? static_cast<int>(std::lround(d->value)) : 0;
+      m.g73ReliefX = length(b, 'I', in.unit, 0.0);
+      m.g73ReliefZ = length(b, 'K', in.unit, 0.0);
+      if (m.g73Count < 1) {
+        Expansion e;
+        e.alarm = alarmAt("A122", d ? d : in.gWord, b, {gName(in, 73), "D"});
+        return e;
+      }
+      return expand(73, in, m);
+    }
+    case 74:
+    case 75: return grooving(g, in, b);
+    case 76: return threading(in, b);
+    default: return {};
+  }
+}
+
+}  // namespace klueng::core::machine::cycles

@@ -1,0 +1,100 @@
+#pragma once
+// Shared machinery of the cycle expansions (cycles.cpp: Fanuc two-block forms,
+// cycles_haas.cpp: Haas one-block forms, drilling.cpp: G81-G83). Not a public API.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "machine/cycles.h"
+
+namespace klueng::core::machine::cycles::detail {
+
+using gcode::Block;
+using gcode::Word;
+
+inline constexpr double kEps = 1e-6;
+inline constexpr double kArcTolerance = 0.01;  // mm, as the interpreter's arcs
+inline constexpr double kMaxPasses = 10000;    // more passes than this is a typing slip, not a program
+
+inline std::string num(double v) {
+  if (std::abs(v) < 0.0005) v = 0.0;
+  return fmt::format("{:.3f}", v);
+}
+
+inline double sign(double v) { return v > kEps ? 1.0 : v < -kEps ? -1.0 : 0.0; }
+
+inline Step rapid(const Vec2& a, const Vec2& b) { return Step{StepKind::Rapid, Segment::line(a, b), 0.0, 0.0, {}, {}}; }
+inline Step feedLine(const Vec2& a, const Vec2& b) { return Step{StepKind::Feed, Segment::line(a, b), 0.0, 0.0, {}, {}}; }
+inline Step thread(const Vec2& a, const Vec2& b, double lead) {
+  return Step{StepKind::Thread, Segment::line(a, b), lead, 0.0, {}, {}};
+}
+
+inline CycleAlarm alarmAt(const char* code, const Word* w, const Block& b, std::vector<std::string> args) {
+  return CycleAlarm{code, w ? w->range : SourceRange{b.line, 1, 0}, std::move(args)};
+}
+
+// P/Q of G74-G76 without a decimal point are in the least input increment
+// (0.001 mm, 0.0001 inch); with one they are lengths.
+inline double increment(const Word& w, double unit) {
+  if (w.hasDecimalPoint) return w.value * unit;
+  return w.value * (unit > 1.0 ? 0.0001 * unit : 0.001);
+}
+
+inline bool hasAxis(const Block& b) { return b.has('X') || b.has('Z') || b.has('U') || b.has('W'); }
+
+// Target of an X/Z/U/W block from `from`, as the interpreter's axisTarget.
+inline Vec2 axisTarget(const Block& b, const Vec2& from, const Vec2& offset, double unit) {
+  Vec2 p = from;
+  if (const Word* w = b.find('X')) p.y() = w->value * unit / 2.0 + offset.y();
+  if (const Word* w = b.find('U')) p.y() += w->value * unit / 2.0;
+  if (const Word* w = b.find('Z')) p.x() = w->value * unit + offset.x();
+  if (const Word* w = b.find('W')) p.x() += w->value * unit;
+  return p;
+}
+
+// Mirror (z, x) -> (x, z): G72 and G75 are G71 and G74 with the axes swapped.
+// A mirror reverses the sense of rotation.
+inline Vec2 swapped(const Vec2& p) { return Vec2(p.y(), p.x()); }
+inline Segment swapped(const Segment& s) {
+  if (s.isArc()) return Segment::arc(swapped(s.start), swapped(s.end), swapped(s.centre), !s.ccw);
+  return Segment::line(swapped(s.start), swapped(s.end));
+}
+inline void swapAll(std::vector<Step>& steps) {
+  for (Step& s : steps) s.path = swapped(s.path);
+}
+
+// The profile N(P)..N(Q) of G70-G73 as moves from the cycle's start point.
+struct Profile {
+  std::vector<Step> moves;   // moves[0] starts at the cycle's start point
+  std::vector<int> blockOf;  // program block index of each move
+  int ns = -1, nf = -1;
+};
+
+// Reads N(P)..N(Q) from the cycle's start point. `withFeed`: F, S, T, G40-G42
+// inside apply (G70); roughing cycles ignore them.
+std::optional<CycleAlarm> readProfile(const CycleInput& in, const Block& cycle, bool withFeed, Profile& out);
+// Keeps only the moves (roughing cycles ignore G40-G42 inside the profile).
+void movesOnly(Profile& p);
+
+// G71 (swap = false) / G72 (swap = true) roughing of a type I profile: passes
+// `depth` apart down to the profile offset by `allowance` + `roughAllowance`,
+// each retracted by `retract` at 45 degrees, then one pass along the profile
+// offset by `allowance`. `firstMayMoveAlong`: the first profile block may
+// also move along the passes (Haas: a P block with X and Z).
+std::optional<CycleAlarm> stockRemoval(const CycleInput& in, Profile& profile, double depth, double retract,
+                                       const Vec2& allowance, bool swap, std::vector<Step>& out,
+                                       const Vec2& roughAllowance = Vec2::Zero(), bool firstMayMoveAlong = false);
+
+// G74 peck cycle in the frame where pecks run along the first coordinate
+// (G75: swap before and after): pecks of `peck` with `retract` back between
+// them, `shiftStep` between the rows, then back to the start.
+std::vector<Step> pecks(const Vec2& start, const Vec2& target, double peck, double shiftStep, double retract);
+
+inline std::string gName(const CycleInput& in, int g) {
+  return in.gWord ? "G" + in.gWord->number : fmt::format("G{}", g);
+}
+
+}  // namespace klueng::core::machine::cycles::detail

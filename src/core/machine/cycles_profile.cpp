@@ -1,0 +1,330 @@
+// The profile of G70-G73 and the roughing and pecking machinery shared by
+// the Fanuc and Haas forms (see cycles_internal.h).
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "machine/cycles_internal.h"
+
+namespace klueng::core::machine::cycles::detail {
+
+namespace {
+// ---- the profile N(P)..N(Q) ----------------------------------------------------
+
+int findSequence(const gcode::Program& p, int n, int from) {
+  const int count = static_cast<int>(p.blocks.size());
+  for (int pass = 0; pass < 2; ++pass)
+    for (int i = pass == 0 ? from : 0; i < (pass == 0 ? count : from); ++i) {
+      const Word* w = p.blocks[static_cast<std::size_t>(i)].find('N');
+      if (w && w->code() == n) return i;
+    }
+  return -1;
+}
+
+std::optional<CycleAlarm> arcSegment(const Block& b, const Vec2& start, const Vec2& end, bool ccw, double unit,
+                                     Segment& out) {
+  if (const Word* rw = b.find('R')) {
+    const double r = rw->value * unit;
+    const double chord = (end - start).norm();
+    if (chord < 1e-9) {
+      out = Segment::line(start, end);
+      return std::nullopt;
+    }
+    const double half = chord / 2.0;
+    if (std::abs(r) < half - kArcTolerance) return alarmAt("A114", rw, b, {num(std::abs(r)), num(half)});
+    const double d = std::sqrt(std::max(0.0, r * r - half * half));
+    const Vec2 dir = (end - start) / chord;
+    const Vec2 left(-dir.y(), dir.x());
+    const double side = (ccw ? 1.0 : -1.0) * (r > 0 ? 1.0 : -1.0);
+    out = Segment::arc(start, end, 0.5 * (start + end) + side * d * left, ccw);
+    return std::nullopt;
+  }
+  const Word* iw = b.find('I');
+  const Word* kw = b.find('K');
+  const Vec2 centre = start + Vec2(kw ? kw->value * unit : 0.0, iw ? iw->value * unit : 0.0);
+  const double r0 = (start - centre).norm(), r1 = (end - centre).norm();
+  if (r0 < 1e-9 || std::abs(r0 - r1) > kArcTolerance)
+    return alarmAt("A113", iw ? iw : kw, b, {num(r0), num(r1)});
+  out = Segment::arc(start, end, centre, ccw);
+  return std::nullopt;
+}
+
+
+
+}  // namespace
+
+std::optional<CycleAlarm> readProfile(const CycleInput& in, const Block& cycle, bool withFeed, Profile& out) {
+  const Word* pw = cycle.find('P');
+  const Word* qw = cycle.find('Q');
+  const std::string gText = in.gWord ? std::string(1, in.gWord->letter) + in.gWord->number : "G7x";
+  const char* g = gText.c_str();
+  if (!pw || !qw) return alarmAt("A126", in.gWord, cycle, {g});
+  out.ns = findSequence(*in.program, pw->code(), in.blockIndex + 1);
+  if (out.ns < 0) return alarmAt("A120", pw, cycle, {g, "P", pw->number});
+  out.nf = -1;
+  for (int i = out.ns; i < static_cast<int>(in.program->blocks.size()); ++i) {
+    const Word* w = in.program->blocks[static_cast<std::size_t>(i)].find('N');
+    if (w && w->code() == qw->code()) {
+      out.nf = i;
+      break;
+    }
+  }
+  if (out.nf < 0) return alarmAt("A120", qw, cycle, {g, "Q", qw->number});
+
+  MotionMode motion = in.motion;
+  Vec2 pos = in.start;
+  Vec2 offset = in.offset;
+  double pendingFeed = 0.0;  // F, S, T of the profile apply from the next move on (G70)
+  const Word* pendingS = nullptr;
+  const Word* pendingT = nullptr;
+  for (int i = out.ns; i <= out.nf; ++i) {
+    const Block& b = in.program->blocks[static_cast<std::size_t>(i)];
+    if (b.blockSkip && in.blockSkip) continue;
+    const Word* motionWord = nullptr;
+    for (const Word& w : b.words) {
+      if (w.letter != 'G' || w.hasDecimalPoint) continue;
+      const int n = w.code();
+      if (n == 0) motion = MotionMode::Rapid;
+      else if (n == 1) motion = MotionMode::Line;
+      else if (n == 2) motion = MotionMode::ArcCw;
+      else if (n == 3) motion = MotionMode::ArcCcw;
+      else if (withFeed && (n == 40 || n == 41 || n == 42)) {
+        Step c;
+        c.kind = StepKind::Compensation;
+        c.comp = n == 41 ? NoseCompMode::Left : n == 42 ? NoseCompMode::Right : NoseCompMode::Off;
+        c.path = Segment::line(pos, pos);
+        out.moves.push_back(c);
+        out.blockOf.push_back(i);
+        continue;
+      } else {
+        continue;
+      }
+      motionWord = &w;
+    }
+    if (withFeed) {
+      if (const Word* f = b.find('F')) pendingFeed = f->value * in.unit;
+      if (const Word* sw = b.find('S')) pendingS = sw;
+      if (const Word* tw = b.find('T')) {
+        pendingT = tw;
+        // The new offset counts from this block's own target on (as in the interpreter).
+        const int number = tw->code() % 100;
+        if (number == 0) offset = Vec2::Zero();
+        else if (in.offsets && number <= io::kOffsetCount) {
+          const io::Offset& o = in.offsets->at(number);
+          offset = Vec2(o.z, o.x / 2.0);
+        }
+      }
+    }
+    if (!hasAxis(b)) continue;  // an F alone applies to the next move
+    const Vec2 end = axisTarget(b, pos, offset, in.unit);
+    Step s;
+    s.feed = pendingFeed;
+    s.sWord = pendingS;
+    s.tWord = pendingT;
+    pendingFeed = 0.0;
+    pendingS = pendingT = nullptr;
+    s.where = motionWord ? motionWord->range : b.words.front().range;
+    switch (motion) {
+      case MotionMode::Rapid: s.kind = StepKind::Rapid; s.path = Segment::line(pos, end); break;
+      case MotionMode::Line:
+      case MotionMode::Thread: s.kind = StepKind::Feed; s.path = Segment::line(pos, end); break;
+      case MotionMode::ArcCw:
+      case MotionMode::ArcCcw:
+        s.kind = StepKind::Feed;
+        if (auto a = arcSegment(b, pos, end, motion == MotionMode::ArcCcw, in.unit, s.path)) return a;
+        break;
+    }
+    out.moves.push_back(s);
+    out.blockOf.push_back(i);
+    pos = end;
+  }
+  // Only moves count for the roughing cycles.
+  std::size_t moves = 0;
+  for (const Step& s : out.moves)
+    if (s.kind != StepKind::Compensation) ++moves;
+  if (moves < 2) return alarmAt("A125", pw, cycle, {g, pw->number, qw->number});
+  return std::nullopt;
+}
+
+void movesOnly(Profile& p) {
+  std::vector<Step> moves;
+  std::vector<int> blocks;
+  for (std::size_t i = 0; i < p.moves.size(); ++i)
+    if (p.moves[i].kind != StepKind::Compensation) {
+      moves.push_back(p.moves[i]);
+      blocks.push_back(p.blockOf[i]);
+    }
+  p.moves = std::move(moves);
+  p.blockOf = std::move(blocks);
+}
+
+namespace {
+
+// ---- G71 / G72 stock removal (in the frame where passes run along the first coordinate) --
+
+// Points along a piece, for the monotony check of arcs.
+std::vector<Vec2> samples(const Segment& s) {
+  std::vector<Vec2> pts;
+  const int n = s.isArc() ? 32 : 1;
+  for (int i = 0; i <= n; ++i) pts.push_back(s.pointAt(static_cast<double>(i) / n));
+  return pts;
+}
+
+// Where the depth line b = level, travelled along the pass direction, first
+// meets the contour (a of the crossing); nullopt when the contour never reaches it.
+std::optional<double> crossing(const std::vector<Step>& contour, double level, double sb) {
+  for (const Step& s : contour) {
+    const double b0 = s.path.start.y(), b1 = s.path.end.y();
+    if ((level - b0) * sb < -kEps || (b1 - level) * sb < -kEps) continue;
+    if (!s.path.isArc()) {
+      if (std::abs(b1 - b0) < kEps) return s.path.start.x();
+      const double t = (level - b0) / (b1 - b0);
+      return s.path.start.x() + t * (s.path.end.x() - s.path.start.x());
+    }
+    // Arc: the point of the circle at b = level that lies on the swept part,
+    // nearest to the arc's start along it.
+    const Segment& a = s.path;
+    const double r = a.radius();
+    const double db = level - a.centre.y();
+    if (std::abs(db) > r + kEps) continue;
+    const double da = std::sqrt(std::max(0.0, r * r - db * db));
+    const Vec2 rel0 = a.start - a.centre;
+    const double phi0 = std::atan2(rel0.y(), rel0.x());
+    double best = -1.0, bestA = 0.0;
+    for (const double cand : {a.centre.x() - da, a.centre.x() + da}) {
+      const double phi = std::atan2(db, cand - a.centre.x());
+      double u = (a.ccw ? 1.0 : -1.0) * (phi - phi0);
+      u = std::fmod(u, 2.0 * std::numbers::pi);
+      if (u < 0) u += 2.0 * std::numbers::pi;
+      if (u <= a.sweep() + 1e-9 && (best < 0 || u < best)) {
+        best = u;
+        bestA = cand;
+      }
+    }
+    if (best >= 0) return bestA;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<CycleAlarm> stockRemoval(const CycleInput& in, Profile& profile, double depth, double retract,
+                                       const Vec2& allowance, bool swap, std::vector<Step>& out,
+                                       const Vec2& roughAllowance, bool firstMayMoveAlong) {
+  const std::string g = in.gWord ? "G" + in.gWord->number : "G71";
+  movesOnly(profile);
+  std::vector<Step> moves = profile.moves;
+  Vec2 start = in.start;
+  Vec2 shift = allowance;
+  Vec2 roughShift = allowance + roughAllowance;  // where the passes stop (Haas I/K)
+  if (swap) {
+    swapAll(moves);
+    start = swapped(start);
+    shift = swapped(shift);
+    roughShift = swapped(roughShift);
+  }
+  // Type I: the first profile block moves only across the passes (X for G71).
+  const Step& first = moves.front();
+  const Block& nsBlock = in.program->blocks[static_cast<std::size_t>(profile.blockOf.front())];
+  if (!firstMayMoveAlong && std::abs(first.path.end.x() - first.path.start.x()) > kEps)
+    return alarmAt("A124", nsBlock.words.empty() ? nullptr : &nsBlock.words.front(), nsBlock,
+                   {g, swap ? "Z" : "X"});
+  const Vec2 aPrime = first.path.end;
+  std::vector<Step> contour(moves.begin() + 1, moves.end());
+  const double sb = sign(start.y() - aPrime.y());           // towards the stock
+  const double sa = sign(contour.back().path.end.x() - aPrime.x());  // along the passes
+  // The profile must move steadily away from A' in both axes.
+  for (std::size_t i = 0; i < contour.size(); ++i) {
+    const auto pts = samples(contour[i].path);
+    bool ok = sa != 0.0 && sb != 0.0;
+    for (std::size_t j = 1; ok && j < pts.size(); ++j)
+      ok = (pts[j].y() - pts[j - 1].y()) * sb >= -1e-4 && (pts[j].x() - pts[j - 1].x()) * sa >= -1e-4;
+    if (!ok) {
+      const Block& b = in.program->blocks[static_cast<std::size_t>(profile.blockOf[i + 1])];
+      return alarmAt("A121", b.words.empty() ? nullptr : &b.words.front(), b, {g, std::to_string(b.line)});
+    }
+  }
+  std::vector<Step> shifted, roughed;
+  for (const Step& s : contour) {
+    Step t = s;
+    t.path = s.path.translated(shift);
+    shifted.push_back(t);
+    t.path = s.path.translated(roughShift);
+    roughed.push_back(t);
+  }
+  const Vec2 aShift = aPrime + shift;
+  const Vec2 aRough = aPrime + roughShift;
+  if (std::abs(start.y() - aShift.y()) / depth > kMaxPasses) {
+    const std::string passes = fmt::format("{:.0f}", std::ceil(std::abs(start.y() - aShift.y()) / depth));
+    return CycleAlarm{"A127", in.gWord ? in.gWord->range : SourceRange{}, {g, passes, num(depth)}};
+  }
+  const bool infeedRapid = first.kind == StepKind::Rapid;
+  std::vector<Step> steps;
+  Vec2 pos = start;
+  for (int k = 1;; ++k) {
+    const double level = start.y() - sb * k * depth;
+    if ((level - aRough.y()) * sb <= kEps) break;
+    const Vec2 in0(start.x(), level);
+    steps.push_back(infeedRapid ? rapid(pos, in0) : feedLine(pos, in0));
+    const double aEnd = crossing(roughed, level, sb).value_or(roughed.back().path.end.x());
+    pos = in0;
+    if ((aEnd - start.x()) * sa > kEps) {
+      const Vec2 cutEnd(aEnd, level);
+      steps.push_back(feedLine(pos, cutEnd));
+      pos = cutEnd;
+    }
+    // 45-degree retract by e, then back to the start along the passes.
+    const Vec2 away(pos.x() - sa * retract, level + sb * retract);
+    steps.push_back(rapid(pos, away));
+    steps.push_back(rapid(away, Vec2(start.x(), away.y())));
+    pos = Vec2(start.x(), away.y());
+  }
+  // The last pass follows the profile offset by the finishing allowance.
+  steps.push_back(infeedRapid ? rapid(pos, aShift) : feedLine(pos, aShift));
+  for (const Step& s : shifted) steps.push_back(s);
+  steps.push_back(rapid(shifted.back().path.end, start));
+  for (Step& s : steps) s.feed = 0.0, s.where = {};
+  if (swap) swapAll(steps);
+  out = std::move(steps);
+  return std::nullopt;
+}
+
+// ---- G74 / G75 peck cycles (frame: pecks along the first coordinate) ------------
+
+std::vector<Step> pecks(const Vec2& start, const Vec2& target, double peck, double shiftStep, double retract) {
+  std::vector<Step> steps;
+  const double sa = sign(target.x() - start.x());
+  const double sb = sign(target.y() - start.y());
+  const double depth = std::abs(target.x() - start.x());
+  const double across = std::abs(target.y() - start.y());
+  Vec2 pos = start;
+  double b = start.y();
+  for (;;) {
+    if (std::abs(b - pos.y()) > kEps) {
+      steps.push_back(rapid(pos, Vec2(pos.x(), b)));
+      pos = Vec2(pos.x(), b);
+    }
+    if (sa != 0.0) {
+      double done = 0.0;
+      for (;;) {
+        done = peck > kEps ? std::min(depth, done + peck) : depth;
+        const Vec2 bottom(start.x() + sa * done, b);
+        steps.push_back(feedLine(pos, bottom));
+        pos = bottom;
+        if (done >= depth - kEps) break;
+        const Vec2 back(bottom.x() - sa * retract, b);
+        steps.push_back(rapid(pos, back));
+        pos = back;
+      }
+      steps.push_back(rapid(pos, Vec2(start.x(), b)));
+      pos = Vec2(start.x(), b);
+    }
+    const double moved = std::abs(b - start.y());
+    if (sb == 0.0 || moved >= across - kEps) break;
+    b = shiftStep > kEps ? start.y() + sb * std::min(across, moved + shiftStep) : target.y();
+  }
+  if ((pos - start).norm() > kEps) steps.push_back(rapid(pos, start));
+  return steps;
+}
+
+}  // namespace klueng::core::machine::cycles::detail

@@ -1,0 +1,121 @@
+// Drilling cycles on the spindle axis, G81/G82/G83, Fanuc 0i-TF and Haas
+// (docs/haas-cycles.md, "Drilling"). The dialects differ in what R means
+// (MachineProfile::cycles.drillR), the unit of P (dwellP) and the peck
+// clearance (cycles.peckClear*); the moves are the same.
+#include <algorithm>
+#include <cmath>
+
+#include "machine/cycles_internal.h"
+
+namespace klueng::core::machine::cycles {
+
+using namespace detail;
+
+double dwellSeconds(const gcode::Word& p, gcode::DwellPUnit rule) {
+  if (rule == gcode::DwellPUnit::SecondsWithPointElseMs && p.hasDecimalPoint) return std::max(0.0, p.value);
+  return std::max(0.0, p.value / 1000.0);
+}
+
+std::optional<CycleAlarm> readDrillWords(int g, const CycleInput& in, bool fresh, DrillWords& w) {
+  const Block& b = in.program->blocks[static_cast<std::size_t>(in.blockIndex)];
+  const gcode::MachineProfile& profile = *in.profile;
+  const double u = in.unit;
+  const bool inch = u > 1.0;
+  const std::string name = gName(in, g);
+  w.g = g;
+  if (fresh) {
+    // A new cycle: only what this block says (R at the initial level unless given).
+    w.rPlane = in.start.x();
+    w.peck = w.firstPeck = w.reduce = w.minPeck = w.dwell = 0.0;
+    w.repeats = 1;
+    w.hole = in.start;
+  }
+  w.clearance = inch ? profile.cycles.peckClearInch * u : profile.cycles.peckClearMm;
+  if (!b.has('Z') && !b.has('W') && fresh) return alarmAt("A122", in.gWord, b, {name, "Z"});
+  const bool plane = profile.cycles.drillR == gcode::DrillR::Plane;
+  if (const Word* r = b.find('R')) {
+    // Fanuc: the distance from the initial level to the R point; Haas: the R plane's Z.
+    w.rPlane = plane ? r->value * u + in.offset.x() : in.start.x() + r->value * u;
+  }
+  // The hole: X (U) its position on the initial level, Z its bottom; W counts
+  // from the R point (Fanuc) or from the initial level (Haas).
+  const double bottom = w.hole.x();
+  w.hole = axisTarget(b, Vec2(bottom, w.hole.y()), in.offset, u);
+  if (const Word* wz = b.find('W')) w.hole.x() = (plane ? in.start.x() : w.rPlane) + wz->value * u;
+  if (const Word* q = b.find('Q')) w.peck = std::abs(increment(*q, u));
+  if (g == 83) {
+    // Haas G83 I J K: first peck, reduction per peck, least peck (Fanuc has no I J
+    // in this cycle; its K is the repeat count).
+    if (const Word* i = b.find('I')) w.firstPeck = std::abs(i->value * u);
+    if (const Word* j = b.find('J')) w.reduce = std::abs(j->value * u);
+    if (profile.cycles.drillR == gcode::DrillR::Plane)
+      if (const Word* k = b.find('K')) w.minPeck = std::abs(k->value * u);
+  }
+  if (const Word* p = b.find('P')) w.dwell = g == 81 ? 0.0 : dwellSeconds(*p, profile.dwellP);
+  const Word* repeat = profile.cycles.drillR == gcode::DrillR::Plane ? b.find('L') : b.find('K');
+  if (repeat) w.repeats = std::max(0, static_cast<int>(std::lround(repeat->value)));
+  if (g == 83 && w.firstPeck <= 0.0 && w.peck > kEps) {
+    const double depth = std::abs(w.hole.x() - w.rPlane);
+    if (depth / w.peck > kMaxPasses) {
+      const Word* q = b.find('Q');
+      return alarmAt("A127", q ? q : in.gWord, b,
+                     {name, fmt::format("{:.0f}", std::ceil(depth / w.peck)), num(w.peck)});
+    }
+  }
+  return std::nullopt;
+}
+
+std::vector<Step> drill(const DrillWords& w, const Vec2& start) {
+  std::vector<Step> steps;
+  const double bottom = w.hole.x();
+  const double sz = sign(bottom - w.rPlane);  // into the hole (-1 drilling from the right face)
+  const double depth = std::abs(bottom - w.rPlane);
+  // Peck depths from the R point: Q each (Haas I, then less by J, never under K).
+  std::vector<double> levels;
+  if (w.g == 83 && (w.peck > kEps || w.firstPeck > kEps)) {
+    double done = 0.0;
+    double peck = w.firstPeck > kEps ? w.firstPeck : w.peck;
+    while (done < depth - kEps && levels.size() < static_cast<std::size_t>(kMaxPasses)) {
+      done = std::min(depth, done + peck);
+      levels.push_back(done);
+      if (w.firstPeck > kEps) peck = std::max(peck - w.reduce, w.minPeck > kEps ? w.minPeck : kEps * 10);
+    }
+  } else {
+    levels.push_back(depth);
+  }
+  Vec2 pos = start;
+  const Vec2 overHole(start.x(), w.hole.y());
+  const Vec2 rPoint(w.rPlane, w.hole.y());
+  auto rapidTo = [&](const Vec2& p) {
+    if ((p - pos).norm() > kEps) steps.push_back(rapid(pos, p));
+    pos = p;
+  };
+  for (int n = 0; n < w.repeats; ++n) {
+    rapidTo(overHole);
+    rapidTo(rPoint);
+    double reached = 0.0;
+    for (std::size_t i = 0; i < levels.size(); ++i) {
+      if (i > 0) {
+        // Back to the R point to clear the chips, then rapid down to the
+        // clearance above the last peck and feed on.
+        rapidTo(rPoint);
+        rapidTo(Vec2(w.rPlane + sz * std::max(0.0, reached - w.clearance), w.hole.y()));
+      }
+      const Vec2 to(w.rPlane + sz * levels[i], w.hole.y());
+      steps.push_back(feedLine(pos, to));
+      pos = to;
+      reached = levels[i];
+    }
+    if (w.dwell > 0.0) {
+      Step d;
+      d.kind = StepKind::Dwell;
+      d.path = Segment::line(pos, pos);
+      d.seconds = w.dwell;
+      steps.push_back(d);
+    }
+    rapidTo(overHole);  // G-code system A (Fanuc) and Haas: back to the initial level
+  }
+  return steps;
+}
+
+}  // namespace klueng::core::machine::cycles

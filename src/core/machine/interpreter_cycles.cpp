@@ -1,0 +1,179 @@
+// The cycles inside the interpreter: G90/G92/G94 single cycles, G70-G76 in
+// the profile's form (Fanuc two-block, Haas one-block) and G81-G83 drilling.
+// cycles.h expands them into simple moves; they go down the ordinary chain
+// with the ordinary checks, all carrying the cycle block's line.
+#include "machine/interpreter_impl.h"
+
+namespace klueng::core::machine::detail {
+
+bool Interpreter::compensationAllowed(const Word* g) {
+  if (modal_.noseComp == NoseCompMode::Off) return true;
+  return raise("A123", g, {wordText(*g)});
+}
+
+bool Interpreter::singleCycle(const Word* where, bool fresh) {
+  const double u = unit();
+  if (fresh) {
+    singleTarget_ = pos_;
+    singleTaper_ = 0.0;
+  }
+  if (!hasAxisWords() && fresh) return true;  // G90 alone: the mode only
+  if (!compensationAllowed(where)) return false;
+  Vec2 target = singleTarget_;
+  const Vec2 off = offsetVector();
+  if (const Word* w = find('X')) target.y() = w->value * u / 2.0 + off.y();
+  if (const Word* w = find('U')) target.y() = xOf(pos_) + w->value * u / 2.0;
+  if (const Word* w = find('Z')) target.x() = w->value * u + off.x();
+  if (const Word* w = find('W')) target.x() = zOf(pos_) + w->value * u;
+  if (const Word* r = find('R')) singleTaper_ = r->value * u;  // G90/G92: radius; G94: Z
+  singleTarget_ = target;
+  return emitCycle(cycles::singleCycle(singleCycle_, pos_, target, singleTaper_, modal_.feed), where,
+                   fmt::format("G{}", singleCycle_));
+}
+
+cycles::CycleInput Interpreter::cycleInput(const Word* g) const {
+  cycles::CycleInput in;
+  in.program = &program_;
+  in.blockIndex = blockIndex_;
+  in.gWord = g;
+  in.start = pos_;
+  in.offset = offsetVector();
+  in.offsets = &setup_.offsets;
+  in.unit = unit();
+  in.feed = modal_.feed;
+  in.motion = modal_.motion;
+  in.blockSkip = options_.blockSkip;
+  in.profile = &profile_;
+  in.threadChamfer = mach_.threadChamfer;
+  return in;
+}
+
+bool Interpreter::cycleAlarm(const cycles::CycleAlarm& a) {
+  Diagnostic d;
+  d.severity = Severity::Alarm;
+  d.code = a.code;
+  d.range = a.where;
+  d.args = a.args;
+  sink_.alarm(d);
+  return false;
+}
+
+// G70-G76 in the profile's form, or a drilling cycle G81-G83.
+bool Interpreter::cannedCycle(const CodeWord& c) {
+  const int g = c.info->number;
+  if (g >= 81 && g <= 83) return drillingCycle(g, c.word, true);
+  if (g != 70 && !compensationAllowed(c.word)) return false;
+  const cycles::CycleInput in = cycleInput(c.word);
+  cycles::Expansion e = profile_.cycleForm == gcode::CycleForm::OneBlock ? cycles::expandOneBlock(g, in)
+                                                                        : cycles::expand(g, in, cycleMemory_);
+  if (e.alarm) return cycleAlarm(*e.alarm);
+  if (!emitCycle(e.steps, c.word, wordText(*c.word))) return false;
+  resumeAfter_ = e.resumeAfter;
+  return true;
+}
+
+// G81/G82/G83: `fresh` for the cycle's own block, else a later block with
+// only a hole position (the cycle is modal until G80 or a group 01 code).
+bool Interpreter::drillingCycle(int g, const Word* where, bool fresh) {
+  if (!compensationAllowed(where)) return false;
+  const cycles::CycleInput in = cycleInput(where);
+  if (auto a = cycles::readDrillWords(g, in, fresh, drill_)) return cycleAlarm(*a);
+  drillCycle_ = g;
+  return emitCycle(cycles::drill(drill_, pos_), where, fmt::format("G{}", g));
+}
+
+bool Interpreter::cycleReady(const std::vector<cycles::Step>& steps, const Word* g, const std::string& name) {
+  double feed = modal_.feed;
+  bool sSet = modal_.sWord > 0.0;
+  for (const cycles::Step& s : steps) {
+    Word at;
+    const Word* where = g;
+    if (s.where.line != 0) {
+      at.range = s.where;
+      where = &at;
+    }
+    if (s.feed > 0.0) feed = s.feed;
+    if (s.sWord && s.sWord->value > 0.0) sSet = true;
+    if (s.kind == cycles::StepKind::Feed) {
+      if (feed <= 0.0) return raise("A102", where, {name});
+      if (modal_.feedMode == FeedMode::PerRev) {
+        if (mach_.spindle == SpindleDir::Stopped) return raise("A104", where, {name});
+        if (!sSet) return raise("A103", where, {name});
+      }
+    } else if (s.kind == cycles::StepKind::Thread) {
+      if (s.lead <= 0.0) return raise("A102", where, {name});
+      if (modal_.spindleMode == SpindleMode::ConstantSurface) return raise("A108", where, {});
+      if (mach_.spindle == SpindleDir::Stopped) return raise("A116", where, {});
+      if (!sSet) return raise("A119", where, {});
+    }
+  }
+  return true;
+}
+
+bool Interpreter::emitCycle(const std::vector<cycles::Step>& steps, const Word* g, const std::string& name) {
+  if (!cycleReady(steps, g, name)) return false;
+  for (const cycles::Step& s : steps) {
+    if (sink_.halted()) return false;
+    Word at;  // a profile step points its alarms at its own block's word
+    const Word* where = g;
+    if (s.where.line != 0) {
+      at.range = s.where;
+      where = &at;
+    }
+    if (s.feed > 0.0) modal_.feed = s.feed;
+    if (s.tWord && !selectTool(*s.tWord)) return false;
+    if (s.sWord) {
+      if (modal_.spindleMode == SpindleMode::ConstantSurface) {
+        modal_.sWord = s.sWord->value * (modal_.units == Units::Inch ? kMetresPerFoot : 1.0);
+      } else {
+        if (s.sWord->value > setup_.machine.maxSpindleRpm + 1e-9)
+          return raise("A101", s.sWord, {num(s.sWord->value), num(setup_.machine.maxSpindleRpm)});
+        modal_.sWord = s.sWord->value;
+      }
+      updateRpm();
+    }
+    switch (s.kind) {
+      case cycles::StepKind::Compensation:
+        modal_.noseComp = s.comp;
+        sink_.compensation(modal_.noseComp, mach_.noseRadius, mach_.tip);
+        break;
+      case cycles::StepKind::Rapid:
+        if (!rapidTo(s.path.end, where)) return false;
+        break;
+      case cycles::StepKind::Feed: {
+        if (!feedReady(where, name.c_str())) return false;
+        Segment path = s.path;
+        path.start = pos_;
+        if (!feedMove(path.isArc() ? MoveKind::Arc : MoveKind::Line, path, where)) return false;
+        break;
+      }
+      case cycles::StepKind::Thread: {
+        if (s.lead <= 0.0) return raise("A102", where, {name});
+        if (modal_.spindleMode == SpindleMode::ConstantSurface) return raise("A108", where, {});
+        if (mach_.spindle == SpindleDir::Stopped) return raise("A116", where, {});
+        if (modal_.sWord <= 0.0) return raise("A119", where, {});
+        MotionCall m;
+        m.kind = MoveKind::Thread;
+        m.path = Segment::line(pos_, s.path.end);
+        m.lead = s.lead;
+        if (!pathWithinTravel(m.path, where)) return false;
+        fillCall(m, where);
+        sink_.motion(m);
+        moved(s.path.end);
+        break;
+      }
+      case cycles::StepKind::Dwell: {
+        DwellCall d;
+        d.seconds = s.seconds;
+        d.line = block_->line;
+        d.blockIndex = blockIndex_;
+        d.ctx = context();
+        sink_.dwell(d);
+        break;
+      }
+    }
+  }
+  return true;
+}
+
+}  // namespace klueng::core::machine::detail

@@ -1,0 +1,88 @@
+#include "gui/dialect_offer_bar.h"
+
+#include <QEvent>
+#include <QHBoxLayout>
+#include <QIcon>
+#include <QLabel>
+#include <QPushButton>
+#include <QToolButton>
+
+#include "gui/language.h"
+
+namespace klueng::gui {
+
+namespace {
+
+QString profileName(core::gcode::Dialect d, bool thai) {
+  const auto& p = core::gcode::machineProfile(d);
+  const std::string_view name = thai ? p.nameTh : p.nameEn;
+  return QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
+}
+
+}  // namespace
+
+DialectOfferBar::DialectOfferBar(QWidget* parent) : QWidget(parent) {
+  setObjectName(QStringLiteral("dialectOffer"));
+  label_ = new QLabel(this);
+  label_->setWordWrap(true);
+  switchButton_ = new QPushButton(this);
+  switchButton_->setObjectName(QStringLiteral("dialectOfferSwitch"));
+  auto* close = new QToolButton(this);
+  close->setIcon(QIcon(QStringLiteral(":/icons/close.svg")));
+  close->setAutoRaise(true);
+  auto* layout = new QHBoxLayout(this);
+  layout->setContentsMargins(8, 3, 4, 3);
+  auto* icon = new QLabel(this);
+  icon->setPixmap(QIcon(QStringLiteral(":/icons/note.svg")).pixmap(18, 18));
+  layout->addWidget(icon, 0, Qt::AlignTop);
+  layout->addWidget(label_, 1);
+  layout->addWidget(switchButton_, 0);
+  layout->addWidget(close, 0, Qt::AlignTop);
+  QPalette p = palette();
+  p.setColor(QPalette::Window, QColor(0xe3, 0xf0, 0xfd));
+  p.setColor(QPalette::WindowText, QColor(0x0d, 0x3a, 0x6e));
+  setPalette(p);
+  setAutoFillBackground(true);
+  connect(switchButton_, &QPushButton::clicked, this, [this] {
+    hide();
+    emit switchRequested(dialect_);
+  });
+  connect(close, &QToolButton::clicked, this, [this] {
+    dismissed_ = true;
+    hide();
+  });
+  hide();
+}
+
+void DialectOfferBar::offer(core::gcode::Dialect dialect, int blocks) {
+  if (dismissed_ && dialect == dialect_) return;
+  dismissed_ = false;
+  dialect_ = dialect;
+  blocks_ = blocks;
+  retranslate();
+  show();
+}
+
+void DialectOfferBar::clear() {
+  dismissed_ = false;
+  hide();
+}
+
+QString DialectOfferBar::text() const { return isVisible() ? label_->text() : QString(); }
+
+void DialectOfferBar::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) retranslate();
+  QWidget::changeEvent(event);
+}
+
+void DialectOfferBar::retranslate() {
+  const bool thai = Language::instance()->language() == QStringLiteral("th");
+  const QString name = profileName(dialect_, thai);
+  label_->setText(tr("%n block(s) of this program are %1 forms that the current dialect refuses; the %1 dialect "
+                     "accepts the whole program.",
+                     nullptr, blocks_)
+                      .arg(name));
+  switchButton_->setText(tr("Switch to %1").arg(name));
+}
+
+}  // namespace klueng::gui
