@@ -57,7 +57,7 @@ struct StockShape {
   bool containsMaterial(double z, double radius) const;
 };
 
-StockShape stockShapeFromBlank(double diameterMm, double lengthMm);
+StockShape stockShapeFromBlank(double diameterMm, double lengthMm, double boreMm = 0.0);  // bore > 0: a tube
 StockShape stockShapeFromStock(const core::cut::Stock& stock);
 
 // Fills both halves of the stock section; `cosmetic` pens stay 1 px at any zoom.
@@ -65,6 +65,7 @@ void paintStock(QPainter& painter, const StockShape& stock, bool showBlankOutlin
 void paintCentreLine(QPainter& painter, double zFrom, double zTo);
 void paintChuck(QPainter& painter, const core::cut::Chuck& chuck);
 QRectF chuckRect(const core::cut::Chuck& chuck);   // both halves, scene units
-core::cut::Chuck chuckFor(double stockDiameterMm, double stockLengthMm, double gripMm, double jawHeightMm);
+core::cut::Chuck chuckFor(double stockDiameterMm, double stockLengthMm, double gripMm, double jawHeightMm,
+                          double spindleBoreMm = 40.0);
 
 }  // namespace klueng::render

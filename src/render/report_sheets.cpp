@@ -158,7 +158,7 @@ QString kluengVersion() { return QStringLiteral("Klueng %1").arg(QString::fromLa
 
 StockShape finishedPart(const core::io::ProgramFile& file, const core::machine::MachineSetup& setup,
                         core::gcode::Dialect dialect, ReportLanguage lang, QString* note) {
-  const StockShape blank = stockShapeFromBlank(file.header.diameterMm(), file.header.lengthMm());
+  const StockShape blank = stockShapeFromBlank(file.header.diameterMm(), file.header.lengthMm(), file.header.boreMm());
   if (file.header.diameterMm() <= 0 || file.header.lengthMm() <= 0) {
     if (note) *note = thai(lang) ? QStringLiteral("ขนาดชิ้นงานไม่ถูกต้อง") : QStringLiteral("The stock size is not valid.");
     return blank;

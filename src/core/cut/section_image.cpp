@@ -122,7 +122,8 @@ io::RgbImage renderSection(const SectionView& view) {
       cv.frame(c.jawZMin(), c.jawZMax(), std::min(s * c.jawXMin(), s * c.jawXMax()),
                std::max(s * c.jawXMin(), s * c.jawXMax()), kEdge);
     }
-    cv.fill(c.bodyZMin(), c.bodyZMax(), -c.bodyXMax(), c.bodyXMax(), kBody);
+    cv.fill(c.bodyZMin(), c.bodyZMax(), c.bodyXMin(), c.bodyXMax(), kBody);  // a ring around the spindle bore
+    cv.fill(c.bodyZMin(), c.bodyZMax(), -c.bodyXMax(), -c.bodyXMin(), kBody);
   }
 
   // Centre line, dash-dot.

@@ -20,6 +20,8 @@ struct CheckOptions {
   int turretStations = 8;
   // Tools 1..8 that have a bitmap in tools.cfg; empty = do not check (no table loaded).
   std::optional<std::vector<int>> toolsWithBitmap;
+  // Units before any G20/G21 (CLI --units, the GUI setting); nullopt = the dialect's.
+  std::optional<gcode::InputUnits> powerOnUnits;
 };
 
 // Includes program.lexicalDiagnostics.

@@ -1,5 +1,7 @@
 #pragma once
 // Runs a checked Program into a Timeline (SPEC 6-10).
+#include <optional>
+
 #include "klueng/core/gcode/code_table.h"
 #include "klueng/core/gcode/program.h"
 #include "klueng/core/io/tool_config.h"
@@ -13,6 +15,8 @@ struct RunOptions {
   bool optionalStop = false;   // M01 stops when on
   bool blockSkip = false;      // '/' blocks skipped when on
   bool stopAtM00 = false;      // false: a headless run records the stop and continues
+  // Units before any G20/G21 (CLI --units, the GUI setting); nullopt = the dialect's.
+  std::optional<gcode::InputUnits> powerOnUnits;
 };
 
 struct MachineSetup {
