@@ -95,6 +95,7 @@ std::vector<Diagnostic> resolveStock(io::ProgramFile& file, const std::optional<
   };
   if (stock) keepSize(*stock);
   if (h.stockSource == io::StockSource::Header) return {};
+  if (file.gcode.find_first_not_of(" \t\r\n") == std::string::npos) return {};  // nothing to cut
   if (h.stockSource != io::StockSource::CommandLine && h.stockSource != io::StockSource::JobDetails) {
     const gcode::Program program = gcode::parse(file.gcode, file.gcodeFirstLine);
     const machine::StockInference inferred = machine::inferStock(program, setup, options);
