@@ -190,6 +190,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
     runnerStale_ = true;
     updateTitle();
     updateStockLabel();
+    // Draw the new stock at once; the runner re-reads the whole program before a run.
+    if (runner_->state() == RunState::Idle && !runner_->isBusy()) {
+      core::io::ProgramFile stockOnly;
+      stockOnly.header = document_->header();
+      runner_->setProgram(stockOnly, document_->displayName());
+    }
   });
   connect(editor_, &CodeEditor::breakpointsChanged, this, [this] {
     const QList<int> lines = editor_->breakpointFileLines();

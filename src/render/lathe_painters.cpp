@@ -25,10 +25,9 @@ StockShape stockShapeFromBlank(double diameterMm, double lengthMm, double boreMm
   StockShape s;
   const double r = diameterMm / 2.0;
   const double b = boreMm > 0.0 && boreMm < diameterMm ? boreMm / 2.0 : 0.0;
-  s.blank = QRectF(QPointF(-lengthMm, -r), QPointF(0.0, 0.0));
-  const QRectF material(QPointF(-lengthMm, -r), QPointF(0.0, -b));  // a tube leaves its bore empty
-  s.fill.addRect(material);
-  s.outline.addRect(material);
+  s.blank = QRectF(QPointF(-lengthMm, -r), QPointF(0.0, -b));  // a tube leaves its bore empty
+  s.fill.addRect(s.blank);
+  s.outline.addRect(s.blank);
   return s;
 }
 
@@ -73,7 +72,7 @@ void addSeam(QPainterPath& outline, double z, Intervals left, Intervals right) {
 StockShape stockShapeFromStock(const core::cut::Stock& stock) {
   StockShape s;
   const double r = stock.diameter() / 2.0;
-  s.blank = QRectF(QPointF(-stock.length(), -r), QPointF(0.0, 0.0));
+  s.blank = QRectF(QPointF(-stock.length(), -r), QPointF(0.0, -stock.bore() / 2.0));  // the uncut ring of a tube
   const int n = stock.columnCount();
   const double dz = stock.resolution();
   Intervals previous;
@@ -128,7 +127,7 @@ void paintStock(QPainter& painter, const StockShape& stock, bool showBlankOutlin
   painter.save();
   if (showBlankOutline && !stock.blank.isEmpty()) {
     // What was removed stays visible as a faint outline of the bar.
-    const QRectF lower(stock.blank.left(), 0.0, stock.blank.width(), stock.blank.height());
+    const QRectF lower(stock.blank.left(), -stock.blank.bottom(), stock.blank.width(), stock.blank.height());
     painter.setPen(cosmeticPen(pal.stockEdge.lighter(220), 1.0, Qt::DotLine));
     painter.setBrush(pal.removedFill);
     painter.drawRect(stock.blank);

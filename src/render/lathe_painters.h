@@ -50,7 +50,7 @@ const Palette& palette();
 struct StockShape {
   QPainterPath fill;       // union of rectangles: runs of equal columns x material intervals
   QPainterPath outline;    // the boundary of `fill` (no seams between runs)
-  QRectF blank;            // the uncut bar's upper half
+  QRectF blank;            // the uncut bar's upper half (a tube's: radii bore/2 .. diameter/2)
   bool isEmpty() const { return fill.isEmpty(); }
   QRectF boundingRect() const;       // both halves
   // Is the point (z, radius) material?  (Tests compare this with the core's part.)
