@@ -223,7 +223,9 @@ int paintProgramSheet(QPainter& painter, QPagedPaintDevice& device, const Report
       {t.project, qs(h.project)},
       {t.material, qs(h.material)},
       {t.part, qs(h.part)},
-      {t.diameter, number(h.diameterMm())},
+      // A tube as "118/Ø90" (outside/bore), as the stock line writes it (docs/program-file.md).
+      {t.diameter, h.boreMm() > 0 ? number(h.diameterMm()) + QStringLiteral("/\u00D8") + number(h.boreMm())
+                                  : number(h.diameterMm())},
       {t.programmer, qs(h.programmer)},
       {t.length, number(h.lengthMm())},
   }};
