@@ -66,6 +66,21 @@
         <source>inch</source>
         <translation>นิ้ว</translation>
     </message>
+    <message>
+        <location filename="../src/gui/job_details_dialog.cpp" line="108"/>
+        <source>Bore diameter (tube; 0 = solid bar):</source>
+        <translation>เส้นผ่านศูนย์กลางรูใน (ชิ้นงานท่อ; 0 = เพลาตัน):</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/job_details_dialog.cpp" line="94"/>
+        <source>The bore (%1) must be smaller than the stock diameter (%2).</source>
+        <translation>รูใน (%1) ต้องเล็กกว่าเส้นผ่านศูนย์กลางชิ้นงาน (%2)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/job_details_dialog.cpp" line="119"/>
+        <source>Tube stock: the diameter of the hole through it. 0 = a solid bar.</source>
+        <translation>ชิ้นงานท่อ: เส้นผ่านศูนย์กลางของรูที่ทะลุตลอดชิ้นงาน 0 = เพลาตัน</translation>
+    </message>
 </context>
 <context>
     <name>klueng::gui::OffsetDefineDialog</name>

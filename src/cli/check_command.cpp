@@ -1,8 +1,9 @@
 // klueng-cli check FILE|FOLDER... [--lang en|th] [--dialect fanuc|haas|classic] [--json]
-//                                 [--config DIR] [--summary]
+//                                 [--config DIR] [--summary] [--stock DxL[xBORE][in]] [--units mm|inch]
 // Reads each program, parses and checks it (SPEC 3-5, 13) against the tool
 // table found by findConfigDir, and prints every diagnostic: one GCC-style
-// line each, or one JSON array for all files. Exit 0 = no errors, 1 = errors,
+// line each, or one JSON array for all files. A file without a job header
+// gets a note saying where its stock comes from (--stock, or inferred). Exit 0 = no errors, 1 = errors,
 // 2 = a file could not be read or the command line is wrong.
 #include <fmt/format.h>
 
@@ -25,7 +26,10 @@ using namespace klueng::core;
 
 constexpr const char* kUsage =
     "usage: klueng-cli check FILE|FOLDER... [--lang en|th] [--dialect fanuc|haas|classic] [--json]\n"
-    "                                       [--config DIR] [--summary]\n";
+    "                                       [--config DIR] [--summary]\n"
+    "                                       [--stock DxL[xBORE][in]] [--units mm|inch]\n"
+    "  --stock   stock for every FILE, before its header: 50x100 (mm), 2.1x4in, 118x80x90 (tube, bore 90)\n"
+    "  --units   power-on units before any G20/G21: mm or inch\n";
 
 struct CheckOptions {
   std::vector<std::string> files;
@@ -34,6 +38,8 @@ struct CheckOptions {
   bool json = false;
   bool summary = false;
   std::string configDir;
+  std::optional<io::JobHeader> stock;            // --stock
+  std::optional<gcode::InputUnits> powerOnUnits;  // --units
 };
 
 int usageError(const std::string& message) {
@@ -74,7 +80,8 @@ std::optional<int> parseArgs(const std::vector<std::string>& args, CheckOptions&
       arg.resize(eq);
       hasValue = true;
     }
-    if (arg != "--lang" && arg != "--dialect" && arg != "--config") return usageError("unknown option '" + arg + "'");
+    if (arg != "--lang" && arg != "--dialect" && arg != "--config" && arg != "--stock" && arg != "--units")
+      return usageError("unknown option '" + arg + "'");
     if (!hasValue) {
       if (i + 1 >= args.size()) return usageError(arg + " needs a value");
       value = args[++i];
@@ -87,6 +94,12 @@ std::optional<int> parseArgs(const std::vector<std::string>& args, CheckOptions&
       const auto dialect = parseDialect(value);
       if (!dialect) return usageError("--dialect must be fanuc, haas or classic, not '" + value + "'");
       o.dialect = *dialect;
+    } else if (arg == "--stock") {
+      o.stock = parseStock(value);
+      if (!o.stock) return usageError(std::string("--stock must be ") + kStockAllowed + ", not '" + value + "'");
+    } else if (arg == "--units") {
+      o.powerOnUnits = parseUnits(value);
+      if (!o.powerOnUnits) return usageError(std::string("--units must be ") + kUnitsAllowed + ", not '" + value + "'");
     } else {
       o.configDir = value;
     }
@@ -151,6 +164,11 @@ int runCheck(const std::vector<std::string>& args) {
   const LoadedConfig config = loadConfig(o.configDir);
   gcode::CheckOptions checkOptions;
   checkOptions.dialect = o.dialect;
+  checkOptions.powerOnUnits = o.powerOnUnits;
+  machine::MachineSetup setup{config.machine, config.offsets, config.tools};
+  machine::RunOptions runOptions;
+  runOptions.dialect = o.dialect;
+  runOptions.powerOnUnits = o.powerOnUnits;
   // Without a readable tool table nothing is known about bitmaps: do not check T words against it.
   if (!config.unreadable) checkOptions.toolsWithBitmap = config.toolsWithBitmap();
 
@@ -158,9 +176,12 @@ int runCheck(const std::vector<std::string>& args) {
   bool anyError = config.hasErrors();
   bool anyUnreadable = config.unreadable;
   std::vector<FileSummary> summary;
+  std::vector<FileDiagnostic> notes;  // where each plain file's stock comes from
 
   for (const std::string& path : expandFolders(o.files)) {
-    const CheckedProgram checked = checkProgramFile(path, checkOptions);
+    CheckedProgram checked = checkProgramFile(path, checkOptions);
+    if (checked.file)
+      for (Diagnostic& n : resolveStock(*checked.file, o.stock, setup, runOptions)) notes.push_back({path, std::move(n)});
     FileSummary row{path};
     for (const Diagnostic& d : checked.diagnostics) {
       if (isError(d.severity)) ++row.errors;
@@ -181,6 +202,7 @@ int runCheck(const std::vector<std::string>& args) {
     std::fwrite(out.data(), 1, out.size(), stdout);
   } else {
     for (const FileDiagnostic& f : all) printDiagnostic(stdout, f.file, f.diagnostic, o.lang);
+    for (const FileDiagnostic& n : notes) std::printf("%s\n", formatNote(n.file, n.diagnostic, o.lang).c_str());
     if (o.summary) printSummary(summary, o.lang);
   }
   std::fflush(stdout);

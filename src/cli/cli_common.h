@@ -15,6 +15,7 @@
 #include "klueng/core/io/image.h"
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/io/tool_config.h"
+#include "klueng/core/machine/interpreter.h"
 #include "klueng/core/messages.h"
 
 namespace klueng::cli {
@@ -23,6 +24,26 @@ namespace klueng::cli {
 core::Lang langFromLocale();
 std::optional<core::Lang> parseLang(std::string_view text);                  // "en" | "th"
 std::optional<core::gcode::Dialect> parseDialect(std::string_view text);     // "fanuc" | "classic"
+
+// --stock DxL[xBORE][in]: "50x100", "2.1x4in", "118x80x90" (Ø118 tube, 80 long,
+// Ø90 bore). D, L > 0, 0 < BORE < D; mm unless "in". stockSource = CommandLine.
+std::optional<core::io::JobHeader> parseStock(std::string_view text);
+// --units mm|inch: the power-on units (before any G20/G21).
+std::optional<core::gcode::InputUnits> parseUnits(std::string_view text);
+// What the options accept, for the exit-2 messages.
+inline constexpr const char* kStockAllowed =
+    "DxL[xBORE][in] with D, L > 0 and 0 < BORE < D, e.g. 50x100, 2.1x4in, 118x80x90";
+inline constexpr const char* kUnitsAllowed = "mm or inch";
+
+// SPEC 2 (ext), the stock of one program: `stock` (--stock) if given, else the
+// file's header, else inferred from the program (machine/stock_inference.h),
+// else the defaults. Writes it into file.header and returns the notes that say
+// where it came from (none for a header file without --stock).
+std::vector<core::Diagnostic> resolveStock(core::io::ProgramFile& file, const std::optional<core::io::JobHeader>& stock,
+                                           const core::machine::MachineSetup& setup,
+                                           const core::machine::RunOptions& options);
+// `FILE: note: message` (the notes of resolveStock), no newline.
+std::string formatNote(const std::string& file, const core::Diagnostic& d, core::Lang lang);
 
 // A diagnostic with the file it belongs to (a program, a cfg file, a bitmap).
 struct FileDiagnostic {

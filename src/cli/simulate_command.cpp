@@ -3,6 +3,9 @@
 //                          [--optional-stop] [--block-skip]
 //                          [--png out.png] [--profile out.csv] [--json summary.json] [--resolution MM]
 //                          [--svg out.svg] [--dxf out.dxf] [--no-stock]   (--no-stock: interpret only, no stock collisions)
+//                          [--stock DxL[xBORE][in]] [--units mm|inch]
+// The stock: --stock, else the file's header, else inferred from the program
+// (a note on stderr says which, SPEC 2 ext).
 // Checks the program (errors -> printed, exit 1), runs it into a Timeline and
 // writes what was asked for. An alarm is printed like a diagnostic
 // (FILE:LINE:COL: alarm A104: ...) and gives exit 1; the trace up to it is
@@ -40,6 +43,8 @@ struct SimulateOptions {
   bool optionalStop = false;
   bool blockSkip = false;
   CutOutputOptions cut;  // --png --profile --json --resolution (cut_outputs.h)
+  std::optional<io::JobHeader> stock;            // --stock
+  std::optional<gcode::InputUnits> powerOnUnits;  // --units
 };
 
 // One row per option: name, whether it takes a value, what it does. New
@@ -75,17 +80,29 @@ const std::vector<OptionSpec>& optionSpecs() {
       {"--svg", true, [](SimulateOptions& o, const std::string& v) { o.cut.svgPath = v; return true; }},
       {"--dxf", true, [](SimulateOptions& o, const std::string& v) { o.cut.dxfPath = v; return true; }},
       {"--no-stock", false, [](SimulateOptions& o, const std::string&) { o.cut.enabled = false; return true; }},
+      {"--stock", true,
+       [](SimulateOptions& o, const std::string& v) {
+         o.stock = parseStock(v);
+         return o.stock.has_value();
+       }},
+      {"--units", true,
+       [](SimulateOptions& o, const std::string& v) {
+         o.powerOnUnits = parseUnits(v);
+         return o.powerOnUnits.has_value();
+       }},
       {"--resolution", true,
        [](SimulateOptions& o, const std::string& v) { return parseResolution(v, o.cut.resolution); }},
   };
   return specs;
 }
 
-// What an option accepts, for the message on a bad value.
+// ": allowed: ..." for the options whose values are a closed set or a form.
 std::string allowedValues(const std::string& option) {
-  if (option == "--dialect") return " (allowed: fanuc, haas, classic)";
-  if (option == "--lang") return " (allowed: en, th)";
-  if (option == "--resolution") return " (allowed: 0.001 to 5 mm)";
+  if (option == "--stock") return std::string("; allowed: ") + kStockAllowed;
+  if (option == "--units") return std::string("; allowed: ") + kUnitsAllowed;
+  if (option == "--lang") return "; allowed: en or th";
+  if (option == "--dialect") return "; allowed: fanuc, haas or classic";
+  if (option == "--resolution") return "; allowed: a number from 0.001 to 5 (mm)";
   return {};
 }
 
@@ -128,7 +145,10 @@ std::optional<SimulateOptions> parseOptions(const std::vector<std::string>& args
                "                              [--lang en|th] [--dialect fanuc|haas|classic]\n"
                "                              [--optional-stop] [--block-skip]\n"
                "                              [--png out.png] [--profile out.csv] [--json summary.json]\n"
-               "                              [--svg out.svg] [--dxf out.dxf] [--resolution MM] [--no-stock]\n",
+               "                              [--svg out.svg] [--dxf out.dxf] [--resolution MM] [--no-stock]\n"
+               "                              [--stock DxL[xBORE][in]] [--units mm|inch]\n"
+               "  --stock   stock before the file's header: 50x100 (mm), 2.1x4in, 118x80x90 (tube, bore 90)\n"
+               "  --units   power-on units before any G20/G21: mm or inch\n",
                stderr);
     return std::nullopt;
   }
@@ -158,16 +178,20 @@ int runSimulate(const std::vector<std::string>& args) {
 
   gcode::CheckOptions checkOptions;
   checkOptions.dialect = o.dialect;
+  checkOptions.powerOnUnits = o.powerOnUnits;
   checkOptions.toolsWithBitmap = config.toolsWithBitmap();
-  const CheckedProgram checked = checkProgramFile(o.file, checkOptions);
+  CheckedProgram checked = checkProgramFile(o.file, checkOptions);
   for (const auto& d : checked.diagnostics) printDiagnostic(o.file, d, o.lang);
   if (checked.unreadable) return 2;
   if (!checked.file || hasErrors(checked.diagnostics)) return 1;
+  machine::RunOptions runOptions;
+  runOptions.dialect = o.dialect;
+  runOptions.powerOnUnits = o.powerOnUnits;
+  for (const Diagnostic& n : resolveStock(*checked.file, o.stock, setup, runOptions))
+    std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
   const io::ProgramFile& programFile = *checked.file;
   const gcode::Program program = gcode::parse(programFile.gcode, programFile.gcodeFirstLine);
 
-  machine::RunOptions runOptions;
-  runOptions.dialect = o.dialect;
   runOptions.optionalStop = o.optionalStop;
   runOptions.blockSkip = o.blockSkip;
   const machine::Timeline timeline = machine::interpret(program, setup, runOptions);

@@ -137,6 +137,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   auto* outputLayout = new QVBoxLayout(outputPane);
   outputLayout->setContentsMargins(0, 0, 0, 0);
   outputLayout->setSpacing(2);
+  // SPEC 2 (ext): the user is always told where the stock came from.
+  stockLabel_ = new QLabel(outputPane);
+  stockLabel_->setObjectName(QStringLiteral("stockSource"));
+  stockLabel_->setWordWrap(true);
+  stockLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  stockLabel_->setContentsMargins(6, 2, 6, 2);
+  outputLayout->addWidget(stockLabel_);
   outputLayout->addWidget(output_, 1);
   outputLayout->addWidget(statusLamps_);
 
@@ -186,6 +193,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   connect(document_, &Document::headerChanged, this, [this] {
     runnerStale_ = true;
     updateTitle();
+    updateStockLabel();
+    // Draw the new stock at once; the runner re-reads the whole program before a run.
+    if (runner_->state() == RunState::Idle && !runner_->isBusy()) {
+      core::io::ProgramFile stockOnly;
+      stockOnly.header = document_->header();
+      runner_->setProgram(stockOnly, document_->displayName());
+    }
   });
   connect(editor_, &CodeEditor::breakpointsChanged, this, [this] {
     const QList<int> lines = editor_->breakpointFileLines();
@@ -549,6 +563,7 @@ void MainWindow::retranslateUi() {
   runToolBar_->setWindowTitle(tr("Run tool bar"));
   helpToolBar_->setWindowTitle(tr("Help tool bar"));
   updateTitle();
+  updateStockLabel();
 }
 
 void MainWindow::changeEvent(QEvent* event) {
@@ -681,8 +696,13 @@ void MainWindow::startLoad(const QString& path) {
   if (loadWatcher_.isRunning()) loadWatcher_.waitForFinished();
   loadingPath_ = path;
   loadInFlight_ = true;
+  // A plain file's stock: its own Job details, else inferred; never the last file's.
   const core::io::JobHeader defaults = settings_->lastJobHeader();
-  loadWatcher_.setFuture(QtConcurrent::run([path, defaults] { return Document::load(path, defaults); }));
+  const std::optional<core::io::JobHeader> details = settings_->jobDetailsFor(path);
+  const core::machine::MachineSetup setup = runner_->machineSetup();
+  loadWatcher_.setFuture(QtConcurrent::run([path, defaults, details, setup] {
+    return Document::load(path, defaults, details, setup);
+  }));
   QTimer::singleShot(300, this, &MainWindow::showBusyIndicator);
 }
 
@@ -1026,6 +1046,20 @@ void MainWindow::hideBanner() {
   bannerLabel_->clear();
 }
 
+void MainWindow::updateStockLabel() {
+  if (!stockLabel_ || !document_) return;
+  QStringList notes;
+  for (const core::Diagnostic& d : document_->stockNotes())
+    notes << QString::fromStdString(core::formatMessage(d, Language::coreLang()));
+  QString first = notes.isEmpty() ? QString() : notes.front();
+  if (!first.isEmpty()) first[0] = first[0].toUpper();  // "Stock Ø50 x 80 mm inferred from ..."
+  stockLabel_->setText(first);
+  stockLabel_->setToolTip(notes.join(QLatin1Char('\n')));
+  stockLabel_->setVisible(!notes.isEmpty());
+}
+
+QString MainWindow::stockSourceText() const { return stockLabel_ ? stockLabel_->text() : QString(); }
+
 QString MainWindow::bannerText() const { return banner_->isVisible() ? bannerLabel_->text() : QString(); }
 
 // ---------------------------------------------------------------- dialogs
@@ -1153,7 +1187,8 @@ void MainWindow::showJobDetails() {
   JobDetailsDialog dlg(document_->header(), this);
   if (dlg.exec() != QDialog::Accepted) return;
   document_->setHeader(dlg.header());
-  settings_->setLastJobHeader(dlg.header());
+  if (!document_->isPlainGcode()) settings_->setLastJobHeader(dlg.header());
+  else if (!document_->isUntitled()) settings_->setJobDetailsFor(document_->filePath(), dlg.header());
   checkNow();
 }
 

@@ -64,6 +64,8 @@ class MainWindow : public QMainWindow {
   QSplitter* splitter() const { return splitter_; }
   // The banner above the editor (alarms, "fix the errors first"); empty when hidden.
   QString bannerText() const;
+  // Where the open program's stock came from (header, Job details, inferred ...).
+  QString stockSourceText() const;
   // Actions by object name ("actionGo", "actionSave", ...), for tests.
   QAction* action(const QString& objectName) const;
 
@@ -149,6 +151,7 @@ class MainWindow : public QMainWindow {
   void onCheckFailed(const QList<core::Diagnostic>& diags);
   void showBanner(const QString& text, bool error);
   void hideBanner();
+  void updateStockLabel();
   void setSpeedIndex(int index);
 
   std::unique_ptr<Settings> settings_;
@@ -163,6 +166,7 @@ class MainWindow : public QMainWindow {
   QWidget* banner_ = nullptr;
   QLabel* bannerLabel_ = nullptr;
   DialectOfferBar* dialectOffer_ = nullptr;
+  QLabel* stockLabel_ = nullptr;
   QProgressBar* busyBar_ = nullptr;
   QPointer<FindDialog> findDialog_;
   QPointer<HelpContents> help_;

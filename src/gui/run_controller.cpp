@@ -119,7 +119,7 @@ const core::cut::ToolShape* RunController::currentToolShape() const {
 
 render::StockShape RunController::stockShape() const {
   if (!cut_) {
-    return render::stockShapeFromBlank(file_.header.diameterMm(), file_.header.lengthMm());
+    return render::stockShapeFromBlank(file_.header.diameterMm(), file_.header.lengthMm(), file_.header.boreMm());
   }
   if (busy_) return stockShape_;   // the worker owns the simulator: show the last shape
   const double volume = cut_->stock().volume();

@@ -492,14 +492,16 @@ TEST(CliBadInput, RandomInvalidUtf8DoesNotCrash) {
   EXPECT_TRUE(run.exitCode == 0 || run.exitCode == 1) << run.exitCode;
 }
 
-TEST(CliBadInput, HeaderWithBadUnitDigit) {
+TEST(CliBadInput, HeaderWithBadUnitDigitIsReadAsPlainGcode) {
+  // SPEC 2 (ext): without sizes on lines 4 and 5 there is no header; a warning says why.
   TempDir dir;
   const std::string file = dir.write("unit.txt", "Job\nPart\nSteel\n250\n1100\nMe\nG00 X10.\n");
   const CliRun run = runCli("check " + quote(file));
-  EXPECT_EQ(run.exitCode, 1);
-  EXPECT_EQ(run.out, file + ":4:1: error F111: stock diameter: the unit digit must be 0 (inch) or 1 (mm), not '2'\n");
+  EXPECT_EQ(run.exitCode, 1);  // "Job" is not G-code
+  EXPECT_THAT(run.out, HasSubstr(file + ":4:1: warning F117: " + file +
+                                 ": read as a plain G-code file without a job header: line 4 ('250') is not a stock size"));
   const CliRun th = runCli("check --lang th " + quote(file));
-  EXPECT_THAT(th.out, HasSubstr("เส้นผ่านศูนย์กลางของชิ้นงาน"));
+  EXPECT_THAT(th.out, HasSubstr("ไม่มีส่วนหัวของงาน"));
 }
 
 TEST(CliBadInput, NegativeStockSizeIsRule13) {
@@ -513,10 +515,10 @@ TEST(CliBadInput, NegativeStockSizeIsRule13) {
 
 TEST(CliBadInput, MissingHeaderLines) {
   TempDir dir;
-  const std::string file = dir.write("short.txt", "Job\nPart\n");
+  const std::string file = dir.write("short.txt", "Job\nPart\nSteel\n150\n180");
   const CliRun run = runCli("check " + quote(file));
   EXPECT_EQ(run.exitCode, 1);
-  EXPECT_THAT(run.out, HasSubstr(file + ":2:5: error F110: "));
+  EXPECT_THAT(run.out, HasSubstr(file + ":5:4: error F110: "));
 }
 
 TEST(CliBadInput, FolderWithoutProgramsIsUnreadable) {

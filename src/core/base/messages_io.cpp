@@ -43,6 +43,13 @@ constexpr MessageText kMessages[] = {
      "ไม่มีเส้นผ่านศูนย์กลางของชิ้นงาน: บรรทัดที่ 4 ต้องมีหลักหน่วยตามด้วยตัวเลข เช่น 150 = 50 มม."},
     {"F116", "stock length is missing: line 5 must hold a unit digit and a number, e.g. 1100 = 100 mm",
      "ไม่มีความยาวของชิ้นงาน: บรรทัดที่ 5 ต้องมีหลักหน่วยตามด้วยตัวเลข เช่น 1100 = 100 มม."},
+    {"F117",
+     "{0}: read as a plain G-code file without a job header: line {2} ('{1}') is not a stock size "
+     "(a unit digit 0 = inch or 1 = mm, then the size, e.g. 150 = 50 mm)",
+     "{0}: อ่านเป็นไฟล์รหัสจีล้วนที่ไม่มีส่วนหัวของงาน: บรรทัดที่ {2} ('{1}') ไม่ใช่ขนาดชิ้นงาน "
+     "(หลักหน่วย 0 = นิ้ว หรือ 1 = มม. ตามด้วยขนาด เช่น 150 = 50 มม.)"},
+    {"F118", "stock bore: '{1}' must be a number greater than 0 and less than the diameter {2}",
+     "รูในของชิ้นงานท่อ: '{1}' ต้องเป็นตัวเลขที่มากกว่า 0 และน้อยกว่าเส้นผ่านศูนย์กลาง {2}"},
 
     // tools.cfg (SPEC 11).
     {"F120", "{0}: the tool table needs 8 lines (bitmaps of tools 01 to 08) but has {1}; tools {2} to 08 have no bitmap",
@@ -75,6 +82,8 @@ constexpr MessageText kMessages[] = {
      "{0}: มีการกำหนด {1} ซ้ำสองครั้ง จะใช้ค่าหลัง"},
     {"F146", "{0}: travel limits: {1} must be less than {2}",
      "{0}: ระยะเคลื่อนที่สูงสุดของเครื่อง: {1} ต้องน้อยกว่า {2}"},
+    {"F147", "{0}: {1} must be a whole number from {3} to {4}, not {2}",
+     "{0}: {1} ต้องเป็นจำนวนเต็มตั้งแต่ {3} ถึง {4} ไม่ใช่ {2}"},
 
     // Tool bitmaps (SPEC 11).
     {"F150", "{0}: not a BMP or PNG image", "{0}: ไม่ใช่ไฟล์ภาพ BMP หรือ PNG"},
@@ -88,6 +97,23 @@ constexpr MessageText kMessages[] = {
     {"F155", "{0}: the PNG data is damaged ({1})", "{0}: ข้อมูล PNG เสียหาย ({1})"},
     {"F156", "{0}: a pixel uses colour {1}, but the palette has only {2} colours",
      "{0}: มีพิกเซลที่ใช้สีหมายเลข {1} แต่จานสีมีเพียง {2} สี"},
+
+    // Where a job's stock came from (SPEC 2 ext): notes, never errors. {0} is
+    // the stock as stockSizeText() writes it ("Ø50 x 100 mm", "Ø118/Ø90 x 80 mm").
+    {"I150", "stock {0} from the command line (--stock)", "ชิ้นงาน {0} จากบรรทัดคำสั่ง (--stock)"},
+    {"I151", "stock {0} from Job details set for this file",
+     "ชิ้นงาน {0} จากรายละเอียดงานที่ตั้งไว้สำหรับไฟล์นี้"},
+    {"I152", "stock {0} inferred from {1} (first approach)",
+     "ชิ้นงาน {0} ประมาณจาก {1} (ตำแหน่งเข้าหาชิ้นงานครั้งแรก)"},
+    {"I153", "stock {0} inferred from {1} (cycle start)",
+     "ชิ้นงาน {0} ประมาณจาก {1} (จุดเริ่มวัฏจักร)"},
+    {"I154", "bore Ø{0} inferred from {1} (work inside without drilling first: tube stock)",
+     "รูใน Ø{0} ประมาณจาก {1} (กลึงด้านในโดยไม่เจาะก่อน: ชิ้นงานท่อ)"},
+    {"I155", "stock {0} is the default: the program has no approach to infer it from; set it in Job details or with --stock",
+     "ชิ้นงาน {0} เป็นค่าเริ่มต้น: โปรแกรมไม่มีตำแหน่งเข้าหาชิ้นงานให้ประมาณได้ ตั้งค่าได้ที่รายละเอียดงานหรือ --stock"},
+    {"I156", "stock {0} from the file's job header", "ชิ้นงาน {0} จากส่วนหัวของงานในไฟล์"},
+    {"I157", "stock length {0}: the deepest cut Z{1} ({2}) + {3} for the cut-off + {4} held in the chuck",
+     "ความยาวชิ้นงาน {0}: ตัดลึกสุดที่ Z{1} ({2}) + {3} สำหรับการตัดขาด + {4} ส่วนที่หัวจับยึด"},
 };
 }  // namespace
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -233,14 +234,17 @@ std::string formatOffsetTable(const OffsetTable& t) {
 
 namespace {
 
-enum class Rule { Any, Positive, NonNegative };
+enum class Rule { Any, Positive, NonNegative, Stations };
 
 struct MachineKey {
   const char* name;
-  double MachineConfig::*field;
+  double MachineConfig::*field;  // nullptr: an int field (turret_stations)
   Rule rule;
   const char* comment;
 };
+
+constexpr int kMinTurretStations = 1;
+constexpr int kMaxTurretStations = 24;
 
 constexpr MachineKey kMachineKeys[] = {
     {"rapid_x", &MachineConfig::rapidX, Rule::Positive, "X rapid rate, mm/min (radial)"},
@@ -257,6 +261,9 @@ constexpr MachineKey kMachineKeys[] = {
     {"chuck_grip", &MachineConfig::chuckGrip, Rule::NonNegative, "length of stock held by the chuck jaws, mm"},
     {"chuck_jaw_height", &MachineConfig::chuckJawHeight, Rule::NonNegative,
      "radial height of the jaws above the stock, mm"},
+    {"spindle_bore", &MachineConfig::spindleBore, Rule::NonNegative,
+     "through-hole of the spindle and chuck (diameter, mm): drills may pass the part's end into it"},
+    {"turret_stations", nullptr, Rule::Stations, "tool stations on the turret (1 to 24)"},
 };
 
 }  // namespace
@@ -315,11 +322,19 @@ ReadResult<MachineConfig> parseMachineConfig(std::string_view text, const std::s
                                      {fileName, std::string(key), std::string(value)}));
       continue;
     }
+    if (entry->rule == Rule::Stations &&
+        (*number != std::floor(*number) || *number < kMinTurretStations || *number > kMaxTurretStations)) {
+      diags.push_back(makeDiagnostic(Severity::Error, "F147", lineNumber, valueColumn, utf8Length(value),
+                                     {fileName, std::string(key), std::string(value),
+                                      std::to_string(kMinTurretStations), std::to_string(kMaxTurretStations)}));
+      continue;
+    }
     if (lineOfKey.count(entry->name))
       diags.push_back(makeDiagnostic(Severity::Warning, "F145", lineNumber, detail::columnOf(line, key),
                                      utf8Length(key), {fileName, std::string(key)}));
     lineOfKey[entry->name] = lineNumber;
-    config.*(entry->field) = *number;
+    if (entry->field) config.*(entry->field) = *number;
+    else config.turretStations = static_cast<int>(*number);
   }
 
   const auto checkRange = [&](const char* minKey, double MachineConfig::*min, const char* maxKey,
@@ -353,7 +368,8 @@ std::string formatMachineConfig(const MachineConfig& m) {
       "# X values are diameters; lengths in mm, rates in mm/min.\n";
   for (const MachineKey& k : kMachineKeys) {
     if (k.comment) out += fmt::format("\n# {}\n", k.comment);
-    out += fmt::format("{} = {}\n", k.name, detail::formatNumber(m.*(k.field)));
+    out += fmt::format("{} = {}\n", k.name,
+                       k.field ? detail::formatNumber(m.*(k.field)) : std::to_string(m.turretStations));
   }
   return out;
 }

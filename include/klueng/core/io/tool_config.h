@@ -43,6 +43,11 @@ struct MachineConfig {
   double travelZMax = 1000.0;
   double chuckGrip = 15.0;       // mm of stock held by the jaws
   double chuckJawHeight = 20.0;  // radial size of the jaws outside the stock, mm
+  // Through-hole of the spindle and chuck body (diameter, mm): a drill or boring
+  // bar passing the part's left end inside it is not a chuck collision. 40 mm is
+  // the through-hole of a 160 mm three-jaw chuck on a school lathe; 0 = none.
+  double spindleBore = 40.0;
+  int turretStations = 12;       // tool stations on the turret, 1..24
 };
 
 // Line n = bitmap of tool 0n (empty line = no bitmap); lines after 8 are ignored
@@ -58,7 +63,8 @@ std::string formatOffsetTable(const OffsetTable& t);
 
 // machine.cfg: `key = value` lines, '#' comments; unknown keys and bad values are errors.
 // Keys: rapid_x rapid_z max_spindle_rpm reference_x reference_z start_x start_z
-// travel_x_min travel_x_max travel_z_min travel_z_max chuck_grip chuck_jaw_height.
+// travel_x_min travel_x_max travel_z_min travel_z_max chuck_grip chuck_jaw_height
+// spindle_bore turret_stations (a whole number 1..24, F147 otherwise).
 // Missing keys keep MachineConfig's defaults (SPEC 1).
 ReadResult<MachineConfig> readMachineConfig(const std::string& path);
 ReadResult<MachineConfig> parseMachineConfig(std::string_view text, const std::string& fileName);
