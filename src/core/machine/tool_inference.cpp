@@ -147,8 +147,11 @@ class Scanner {
       : program_(program), lines_(splitLines(text)), firstLine_(firstLine) {}
 
   std::map<int, StationUse> scan() {
+    // Lines that hold words other than N: a comment above such a line belongs to it.
     std::set<int> blockLines;
-    for (const gcode::Block& b : program_.blocks) blockLines.insert(b.line);
+    for (const gcode::Block& b : program_.blocks)
+      if (std::any_of(b.words.begin(), b.words.end(), [](const gcode::Word& w) { return w.letter != 'N'; }))
+        blockLines.insert(b.line);
     for (std::size_t bi = 0; bi < program_.blocks.size(); ++bi) {
       const gcode::Block& b = program_.blocks[bi];
       for (const gcode::Word* g : b.all('G'))
@@ -190,13 +193,13 @@ class Scanner {
     if (!u.firstLine) u.firstLine = b.line;
     if (offset > 0) u.offsets.insert(offset);
     if (u.comment) return;
-    // The T block's comment, then comment-only lines just before it (up to 3),
-    // then just after it.
+    // The T block's comment, then comment lines just before it (up to 3; an
+    // `N1 (OD ROUGH)` line is one, as Haas programs write them), then just after it.
     std::vector<int> candidates = {b.line};
     for (int l = b.line - 1; l >= b.line - 3 && !blockLines.count(l); --l) candidates.push_back(l);
     for (int l = b.line + 1; l <= b.line + 2 && !blockLines.count(l); ++l) candidates.push_back(l);
     for (int l : candidates) {
-      const std::string text = l == b.line ? b.comment : rawComment(l);
+      const std::string text = rawComment(l);
       if (text.empty()) continue;
       const detail::CommentTool c = detail::classifyComment(text);
       if (c.kind == ToolKind::Unknown) continue;
@@ -266,6 +269,8 @@ class Scanner {
       const int code = cycle >= 0 ? cycle : 32;
       note(inside ? ToolKind::ThreadingId : ToolKind::ThreadingOd,
            inside ? ToolReason::ThreadingInside : ToolReason::Threading, gText(code), b.line);
+    } else if ((cycle == 75 || cycle == 74) && !xw && !zw && !uw && !ww) {
+      return;  // the first G74/G75 block of the two (retract R only)
     } else if (cycle == 75) {
       if (x && *x <= kOnCentreMm) note(ToolKind::Parting, ToolReason::Parting, "G75 X0", b.line);
       else note(ToolKind::Grooving, ToolReason::Grooving, "G75", b.line);
@@ -342,11 +347,14 @@ const ToolChoice* ToolInference::choiceFor(int station) const {
 
 ToolInference inferTools(const gcode::Program& program, std::string_view gcodeText, int gcodeFirstLine,
                          const MachineSetup& setup, const io::ToolLibrary& library,
-                         const std::vector<StationOverride>& overrides) {
+                         const std::vector<StationOverride>& overrides, int stations) {
   ToolInference out;
   out.setup = setup;
   Scanner scanner(program, gcodeText, gcodeFirstLine);
   std::map<int, StationUse> uses = scanner.scan();
+  // Stations past the turret (or the dialect's T range) are the checker's business.
+  const int lastStation = std::clamp(stations > 0 ? stations : setup.tools.stations, 1, io::kMaxStations);
+  std::erase_if(uses, [&](const auto& entry) { return entry.first > lastStation; });
 
   // Parting counts only for one of the last two tools the program selects.
   std::vector<int> last;
@@ -376,7 +384,7 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
   std::set<int> overridden;
   for (const StationOverride& o : overrides) {
     const io::LibraryTool* tool = library.find(o.libraryId);
-    if (!tool || o.station < 1 || o.station > io::kMaxStations) continue;
+    if (!tool || o.station < 1 || o.station > lastStation) continue;
     overridden.insert(o.station);
     const auto it = uses.find(o.station);
     assign(o.station, *tool, ToolReason::Override, {}, 0, it == uses.end() ? std::set<int>{} : it->second.offsets);

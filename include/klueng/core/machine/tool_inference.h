@@ -63,9 +63,12 @@ struct ToolInference {
 
 // gcodeText is the G-code part of the file (the text parse() read, its first
 // line being file line gcodeFirstLine); comment-only lines are read from it.
+// stations: the highest station T may name (the turret, or the dialect's
+// limit, e.g. 8 in classic); 0 = setup.tools.stations. Stations beyond it are
+// left alone (the checker reports them).
 ToolInference inferTools(const gcode::Program& program, std::string_view gcodeText, int gcodeFirstLine,
                          const MachineSetup& setup, const io::ToolLibrary& library,
-                         const std::vector<StationOverride>& overrides = {});
+                         const std::vector<StationOverride>& overrides = {}, int stations = 0);
 
 // `N=ID` (the CLI's --tool value): station 1..stations and a library id.
 // Returns false and fills error with a message in English when it is not.
