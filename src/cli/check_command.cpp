@@ -1,8 +1,11 @@
 // klueng-cli check FILE|FOLDER... [--lang en|th] [--dialect fanuc|classic] [--json]
-//                                 [--config DIR] [--summary]
+//                                 [--config DIR] [--summary] [--tool N=ID]...
 // Reads each program, parses and checks it (SPEC 3-5, 13) against the tool
 // table found by findConfigDir, and prints every diagnostic: one GCC-style
-// line each, or one JSON array for all files. Exit 0 = no errors, 1 = errors,
+// line each, or one JSON array for all files. Tools the program names in
+// comments or cycles come from the library (a note says which; --tool N=ID
+// sets a station for this run); T words naming stations still without a tool
+// are E305. Exit 0 = no errors, 1 = errors,
 // 2 = a file could not be read or the command line is wrong.
 #include <fmt/format.h>
 
@@ -25,7 +28,8 @@ using namespace klueng::core;
 
 constexpr const char* kUsage =
     "usage: klueng-cli check FILE|FOLDER... [--lang en|th] [--dialect fanuc|classic] [--json]\n"
-    "                                       [--config DIR] [--summary]\n";
+    "                                       [--config DIR] [--summary] [--tool N=ID]...\n"
+    "  --tool N=ID   use library tool ID at station N for this run (repeatable), e.g. --tool 12=parting-3mm\n";
 
 struct CheckOptions {
   std::vector<std::string> files;
@@ -34,6 +38,7 @@ struct CheckOptions {
   bool json = false;
   bool summary = false;
   std::string configDir;
+  std::vector<std::string> tools;  // --tool N=ID, checked once the turret size is known
 };
 
 int usageError(const std::string& message) {
@@ -74,7 +79,8 @@ std::optional<int> parseArgs(const std::vector<std::string>& args, CheckOptions&
       arg.resize(eq);
       hasValue = true;
     }
-    if (arg != "--lang" && arg != "--dialect" && arg != "--config") return usageError("unknown option '" + arg + "'");
+    if (arg != "--lang" && arg != "--dialect" && arg != "--config" && arg != "--tool")
+      return usageError("unknown option '" + arg + "'");
     if (!hasValue) {
       if (i + 1 >= args.size()) return usageError(arg + " needs a value");
       value = args[++i];
@@ -87,6 +93,8 @@ std::optional<int> parseArgs(const std::vector<std::string>& args, CheckOptions&
       const auto dialect = parseDialect(value);
       if (!dialect) return usageError("--dialect must be fanuc or classic, not '" + value + "'");
       o.dialect = *dialect;
+    } else if (arg == "--tool") {
+      o.tools.push_back(value);
     } else {
       o.configDir = value;
     }
@@ -149,22 +157,40 @@ int runCheck(const std::vector<std::string>& args) {
   if (const auto exit = parseArgs(args, o)) return *exit;
 
   const LoadedConfig config = loadConfig(o.configDir);
+  std::vector<machine::StationOverride> overrides;
+  for (const std::string& t : o.tools) {
+    machine::StationOverride ov;
+    std::string error;
+    if (!machine::parseStationOverride(t, stationLimit(config, o.dialect), io::shippedToolLibrary(), ov, error))
+      return usageError(error);
+    overrides.push_back(ov);
+  }
   gcode::CheckOptions checkOptions;
   checkOptions.dialect = o.dialect;
-  // Without a readable tool table nothing is known about bitmaps: do not check T words against it.
-  if (!config.unreadable) checkOptions.toolsWithBitmap = config.toolsWithBitmap();
+  checkOptions.turretStations = config.tools.stations;  // the turret the tool table was read for
 
   std::vector<FileDiagnostic> all = config.diagnostics;
+  std::vector<bool> isNote(all.size(), false);
   bool anyError = config.hasErrors();
   bool anyUnreadable = config.unreadable;
   std::vector<FileSummary> summary;
 
   for (const std::string& path : expandFolders(o.files)) {
+    // Without a readable tool table nothing is known about bitmaps: do not check T words against it.
+    if (!config.unreadable) {
+      const JobTools job = inferJobTools(config, path, o.dialect, overrides);
+      checkOptions.toolsWithBitmap = job.toolsWithBitmap;
+      for (const Diagnostic& n : job.notes) {
+        all.push_back({path, n});
+        isNote.push_back(true);
+      }
+    }
     const CheckedProgram checked = checkProgramFile(path, checkOptions);
     FileSummary row{path};
     for (const Diagnostic& d : checked.diagnostics) {
       (d.severity == Severity::Warning ? row.warnings : row.errors)++;
       all.push_back({path, d});
+      isNote.push_back(false);
     }
     row.unreadable = checked.unreadable;
     anyUnreadable = anyUnreadable || checked.unreadable;
@@ -173,13 +199,25 @@ int runCheck(const std::vector<std::string>& args) {
   }
 
   if (o.json) {
+    // Notes are not diagnostics: the JSON array holds errors and warnings only.
     std::string out = "[";
-    for (std::size_t i = 0; i < all.size(); ++i)
-      out += (i ? ",\n  " : "\n  ") + diagnosticJson(all[i].file, all[i].diagnostic, o.lang);
-    out += all.empty() ? "]\n" : "\n]\n";
+    bool first = true;
+    for (std::size_t i = 0; i < all.size(); ++i) {
+      if (isNote[i]) continue;
+      out += (first ? "\n  " : ",\n  ") + diagnosticJson(all[i].file, all[i].diagnostic, o.lang);
+      first = false;
+    }
+    out += first ? "]\n" : "\n]\n";
     std::fwrite(out.data(), 1, out.size(), stdout);
   } else {
-    for (const FileDiagnostic& f : all) printDiagnostic(stdout, f.file, f.diagnostic, o.lang);
+    for (std::size_t i = 0; i < all.size(); ++i) {
+      if (!isNote[i]) {
+        printDiagnostic(stdout, all[i].file, all[i].diagnostic, o.lang);
+        continue;
+      }
+      const std::string line = formatNote(all[i].file, all[i].diagnostic, o.lang) + "\n";
+      std::fwrite(line.data(), 1, line.size(), stdout);
+    }
     if (o.summary) printSummary(summary, o.lang);
   }
   std::fflush(stdout);

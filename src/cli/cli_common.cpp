@@ -6,7 +6,9 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "klueng/core/gcode/machine_profile.h"
 #include "klueng/core/gcode/parser.h"
+#include "klueng/core/io/tool_library.h"
 #include "klueng/core/io/text_encoding.h"
 
 namespace klueng::cli {
@@ -142,6 +144,44 @@ LoadedConfig loadConfig(const std::string& explicitDir) {
     if (image.ok()) config.bitmaps[static_cast<std::size_t>(t - 1)] = std::move(*image.value);
   }
   return config;
+}
+
+int stationLimit(const LoadedConfig& config, gcode::Dialect dialect) {
+  const int profileLimit = gcode::machineProfile(dialect).maxToolStation;
+  return profileLimit > 0 ? std::min(profileLimit, config.tools.stations) : config.tools.stations;
+}
+
+JobTools inferJobTools(const LoadedConfig& config, const std::string& programPath, gcode::Dialect dialect,
+                       const std::vector<machine::StationOverride>& overrides) {
+  JobTools job;
+  job.setup.tools = config.tools;
+  job.setup.offsets = config.offsets;
+  job.setup.machine = config.machine;
+  job.toolsWithBitmap = config.toolsWithBitmap();
+  const auto read = io::readProgramFile(programPath);
+  if (!read.value) return job;
+  const gcode::Program program = gcode::parse(read.value->gcode, read.value->gcodeFirstLine);
+  machine::ToolInference inferred =
+      machine::inferTools(program, read.value->gcode, read.value->gcodeFirstLine, job.setup,
+                          io::shippedToolLibrary(), overrides, stationLimit(config, dialect));
+  job.setup = std::move(inferred.setup);
+  job.notes = inferred.notes();
+  std::error_code ec;
+  for (const machine::ToolChoice& c : inferred.choices) {
+    auto& have = job.toolsWithBitmap;
+    const bool exists = std::filesystem::is_regular_file(job.setup.tools.bitmapPath(c.station), ec);
+    const auto it = std::find(have.begin(), have.end(), c.station);
+    if (exists && it == have.end()) have.push_back(c.station);
+    if (!exists && it != have.end()) have.erase(it);
+  }
+  std::sort(job.toolsWithBitmap.begin(), job.toolsWithBitmap.end());
+  return job;
+}
+
+std::string formatNote(const std::string& file, const Diagnostic& d, Lang lang) {
+  const char* label = lang == Lang::Th ? "หมายเหตุ" : "note";
+  if (d.range.line > 0) return fmt::format("{}:{}: {}: {}", file, d.range.line, label, formatMessage(d, lang));
+  return fmt::format("{}: {}: {}", file, label, formatMessage(d, lang));
 }
 
 CheckedProgram checkProgramFile(const std::string& path, const gcode::CheckOptions& options,

@@ -15,6 +15,7 @@
 #include "klueng/core/io/image.h"
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/io/tool_config.h"
+#include "klueng/core/machine/tool_inference.h"
 #include "klueng/core/messages.h"
 
 namespace klueng::cli {
@@ -62,6 +63,21 @@ struct LoadedConfig {
   std::vector<int> toolsWithBitmap() const;
 };
 LoadedConfig loadConfig(const std::string& explicitDir = {});
+
+// Tools from the program (core/machine/tool_inference.h) for one program: the
+// setup with the library's choices and the --tool overrides, the stations that
+// then have a tool (for the checker's E305), and the notes to print.
+struct JobTools {
+  core::machine::MachineSetup setup;
+  std::vector<int> toolsWithBitmap;
+  std::vector<core::Diagnostic> notes;  // I401..I410
+};
+JobTools inferJobTools(const LoadedConfig& config, const std::string& programPath, core::gcode::Dialect dialect,
+                       const std::vector<core::machine::StationOverride>& overrides);
+// The highest station a T word may name: the dialect's limit, else the turret.
+int stationLimit(const LoadedConfig& config, core::gcode::Dialect dialect);
+// `FILE:LINE: note: message` (`FILE: note: ...` without a line), no newline; Thai "หมายเหตุ".
+std::string formatNote(const std::string& file, const core::Diagnostic& d, core::Lang lang);
 
 // Reads, parses and checks one program. diagnostics holds the file's own
 // (header, encoding) and the checker's, sorted by line and column.

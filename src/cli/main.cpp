@@ -9,9 +9,11 @@ namespace {
 
 void printUsage(std::FILE* out) {
   std::fputs(
-      "usage: klueng-cli check FILE... [--lang en|th] [--dialect fanuc|classic] [--json]\n"
+      "usage: klueng-cli check FILE... [--lang en|th] [--dialect fanuc|classic] [--json] [--tool N=ID]...\n"
       "       klueng-cli simulate FILE [--trace out.csv] [--cycle-time] [--config DIR]\n"
-      "                               [--lang en|th] [--dialect fanuc|classic]\n",
+      "                               [--lang en|th] [--dialect fanuc|classic] [--tool N=ID]...\n"
+      "  --tool N=ID   library tool ID at turret station N for this run (e.g. --tool 12=parting-3mm);\n"
+      "                see resources/tools/library/library.cfg and docs/tools.md for the IDs\n",
       out);
 }
 

@@ -3,6 +3,7 @@
 //                          [--optional-stop] [--block-skip]
 //                          [--png out.png] [--profile out.csv] [--json summary.json] [--resolution MM]
 //                          [--svg out.svg] [--dxf out.dxf] [--no-stock]   (--no-stock: interpret only, no stock collisions)
+//                          [--tool N=ID]...   (library tool ID at station N for this run)
 // Checks the program (errors -> printed, exit 1), runs it into a Timeline and
 // writes what was asked for. An alarm is printed like a diagnostic
 // (FILE:LINE:COL: alarm A104: ...) and gives exit 1; the trace up to it is
@@ -20,6 +21,7 @@
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/io/tool_config.h"
+#include "klueng/core/io/tool_library.h"
 #include "klueng/core/machine/interpreter.h"
 #include "klueng/core/machine/trace.h"
 #include "klueng/core/messages.h"
@@ -40,6 +42,7 @@ struct SimulateOptions {
   bool optionalStop = false;
   bool blockSkip = false;
   CutOutputOptions cut;  // --png --profile --json --resolution (cut_outputs.h)
+  std::vector<std::string> tools;  // --tool N=ID, checked once the turret size is known
 };
 
 // One row per option: name, whether it takes a value, what it does. New
@@ -75,6 +78,7 @@ const std::vector<OptionSpec>& optionSpecs() {
       {"--svg", true, [](SimulateOptions& o, const std::string& v) { o.cut.svgPath = v; return true; }},
       {"--dxf", true, [](SimulateOptions& o, const std::string& v) { o.cut.dxfPath = v; return true; }},
       {"--no-stock", false, [](SimulateOptions& o, const std::string&) { o.cut.enabled = false; return true; }},
+      {"--tool", true, [](SimulateOptions& o, const std::string& v) { o.tools.push_back(v); return true; }},
       {"--resolution", true,
        [](SimulateOptions& o, const std::string& v) { return parseResolution(v, o.cut.resolution); }},
   };
@@ -119,7 +123,8 @@ std::optional<SimulateOptions> parseOptions(const std::vector<std::string>& args
                "                              [--lang en|th] [--dialect fanuc|classic]\n"
                "                              [--optional-stop] [--block-skip]\n"
                "                              [--png out.png] [--profile out.csv] [--json summary.json]\n"
-               "                              [--svg out.svg] [--dxf out.dxf] [--resolution MM] [--no-stock]\n",
+               "                              [--svg out.svg] [--dxf out.dxf] [--resolution MM] [--no-stock]\n"
+               "                              [--tool N=ID]...  (library tool ID at station N, e.g. 12=parting-3mm)\n",
                stderr);
     return std::nullopt;
   }
@@ -142,14 +147,25 @@ int runSimulate(const std::vector<std::string>& args) {
   for (const auto& fd : config.diagnostics) printDiagnostic(fd.file, fd.diagnostic, o.lang);
   if (config.unreadable) return 2;
   if (config.hasErrors()) return 1;
-  machine::MachineSetup setup;
-  setup.tools = config.tools;
-  setup.offsets = config.offsets;
-  setup.machine = config.machine;
+  std::vector<machine::StationOverride> overrides;
+  for (const std::string& t : o.tools) {
+    machine::StationOverride ov;
+    std::string error;
+    if (!machine::parseStationOverride(t, stationLimit(config, o.dialect), io::shippedToolLibrary(), ov, error)) {
+      std::fprintf(stderr, "klueng-cli simulate: %s\n", error.c_str());
+      return 2;
+    }
+    overrides.push_back(ov);
+  }
+  // Tools from the program: library choices for stations without a fitting tool (notes say which).
+  const JobTools job = inferJobTools(config, o.file, o.dialect, overrides);
+  for (const Diagnostic& n : job.notes) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
+  const machine::MachineSetup& setup = job.setup;
 
   gcode::CheckOptions checkOptions;
   checkOptions.dialect = o.dialect;
-  checkOptions.toolsWithBitmap = config.toolsWithBitmap();
+  checkOptions.turretStations = config.tools.stations;  // the turret the tool table was read for
+  checkOptions.toolsWithBitmap = job.toolsWithBitmap;
   const CheckedProgram checked = checkProgramFile(o.file, checkOptions);
   for (const auto& d : checked.diagnostics) printDiagnostic(o.file, d, o.lang);
   if (checked.unreadable) return 2;
