@@ -301,7 +301,7 @@ QString ToolSelectDialog::shownEntry(int tool) const {
   return QString::fromStdString(tools_.bitmap[static_cast<std::size_t>(tool - 1)]);
 }
 
-QString ToolSelectDialog::choiceText() const { return choice_->isVisible() ? choice_->text() : QString(); }
+QString ToolSelectDialog::choiceText() const { return choice_->text(); }
 
 void ToolSelectDialog::syncControls() {
   const int row = list_->currentRow();
@@ -314,7 +314,7 @@ void ToolSelectDialog::syncControls() {
                          ? entry.mid(int(io::kLibraryPrefix.size())).trimmed() : QString();
   const int index = libraryCombo_->findData(id);
   libraryCombo_->setCurrentIndex(index < 0 ? 0 : index);
-  jobOnly_->setChecked(!overrideOf(tool).isEmpty());
+  jobOnly_->setChecked(!overrideOf(tool).isEmpty() || jobOnlyPending_ == tool);
   syncing_ = false;
   const auto* c = inference_.choiceFor(tool);
   if (!overrideOf(tool).isEmpty()) {
@@ -343,6 +343,7 @@ void ToolSelectDialog::onLibraryChosen(int index) {
   const int row = list_->currentRow();
   if (row < 0 || index < 0) return;
   const QString id = libraryCombo_->itemData(index).toString();
+  jobOnlyPending_ = 0;
   if (jobOnly_->isChecked()) {
     setOverride(row + 1, id);
   } else {
@@ -360,6 +361,7 @@ void ToolSelectDialog::onJobOnlyToggled(bool on) {
   const int row = list_->currentRow();
   if (row < 0) return;
   const QString id = libraryCombo_->currentData().toString();
+  jobOnlyPending_ = on && id.isEmpty() ? row + 1 : 0;
   setOverride(row + 1, on ? id : QString());
   retranslate();
 }

@@ -95,6 +95,7 @@ class ToolSelectDialog : public QDialog {
   core::machine::ToolInference inference_;
   std::vector<core::machine::StationOverride> overrides_;
   bool syncing_ = false;
+  int jobOnlyPending_ = 0;  // station ticked "only for this program" before a library tool was chosen
 
   QListWidget* list_ = nullptr;
   QLabel* libraryLabel_ = nullptr;
