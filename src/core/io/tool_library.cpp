@@ -192,6 +192,7 @@ ReadResult<ToolLibrary> parseToolLibrary(std::string_view text, const std::strin
     tool.nameTh = std::string(f[8]);
     if (!ok) continue;
     lineOfId.emplace(tool.id, lineNo);
+    tool.line = lineNo;
     library.tools.push_back(std::move(tool));
   }
   result.value = std::move(library);
@@ -208,7 +209,8 @@ ReadResult<ToolLibrary> readToolLibrary(const std::string& path) {
   for (const LibraryTool& t : result.value->tools) {
     std::error_code ec;
     if (!fs::is_regular_file(result.value->bitmapPath(t), ec))
-      result.diagnostics.push_back(makeDiagnostic(Severity::Error, "F169", 0, 0, 0, {path, t.id, t.bitmap}));
+      result.diagnostics.push_back(
+          makeDiagnostic(Severity::Error, "F169", t.line, 1, utf8Length(t.id), {path, t.id, t.bitmap}));
   }
   return result;
 }

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 
 #include "klueng/core/io/tool_config.h"
@@ -187,6 +188,23 @@ INSTANTIATE_TEST_SUITE_P(Cases, LibraryErrors,
                                            BadLine{"t2 | turning | 10 | 0 | 12 | 0 | a.png | A | ก", "F166", 25},
                                            BadLine{"t2 | turning | 10 | 0 | 3 | 0 | a.gif | A | ก", "F167", 33},
                                            BadLine{"t2 | turning | 10 | 0 | 3 | 0 | a.png |  | ก", "F168", 40}));
+
+TEST(Library, AMissingBitmapIsF169OnItsLine) {
+  const auto dir = std::filesystem::temp_directory_path() / "klueng-library-test";
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "library.cfg").string();
+  {
+    std::FILE* f = std::fopen(path.c_str(), "wb");
+    ASSERT_NE(f, nullptr);
+    std::fputs("# tools\ngone | drill | 10 | 0 | 7 | 8 | gone.png | Drill 8 | ดอกสว่าน 8 มม.\n", f);
+    std::fclose(f);
+  }
+  const auto r = readToolLibrary(path);
+  ASSERT_EQ(r.diagnostics.size(), 1u) << codes(r.diagnostics);
+  EXPECT_EQ(r.diagnostics[0].code, "F169");
+  EXPECT_EQ(r.diagnostics[0].range, (SourceRange{2, 1, 4}));
+  std::filesystem::remove_all(dir);
+}
 
 TEST(Library, ToolsCfgNamesALibraryTool) {
   const auto r = parseToolTable("a.bmp\n\nlibrary:threading-60\n\n\n\n\n\n\n\n\nlibrary: parting-3mm\n", "/d", "t.cfg");

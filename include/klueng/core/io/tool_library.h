@@ -38,6 +38,7 @@ struct LibraryTool {
   std::string bitmap;      // file name, relative to the library's folder
   std::string nameEn;
   std::string nameTh;
+  int line = 0;            // its line in library.cfg, for diagnostics
 };
 
 struct ToolLibrary {
