@@ -8,7 +8,9 @@
 #include <filesystem>
 
 #include "klueng/core/gcode/dialect_fit.h"
+#include "klueng/core/gcode/machine_profile.h"
 #include "klueng/core/gcode/parser.h"
+#include "klueng/core/io/tool_library.h"
 #include "klueng/core/io/text_encoding.h"
 #include "klueng/core/machine/stock_inference.h"
 
@@ -108,7 +110,7 @@ std::vector<Diagnostic> resolveStock(io::ProgramFile& file, const std::optional<
 }
 
 std::string formatNote(const std::string& file, const Diagnostic& d, Lang lang) {
-  return fmt::format("{}: {} {}: {}", file, lang == Lang::Th ? "หมายเหตุ" : "note", d.code, formatMessage(d, lang));
+  return formatGccStyle(file, d, lang);
 }
 
 std::string formatGccStyle(const std::string& file, const Diagnostic& d, Lang lang) {
@@ -191,17 +193,8 @@ LoadedConfig loadConfig(const std::string& explicitDir) {
     }
   };
 
-  const std::string toolsPath = joinPath(config.dir, "tools.cfg");
-  auto tools = io::readToolTable(toolsPath);
-  collect(toolsPath, tools.diagnostics);
-  if (tools.value) config.tools = *tools.value;
-
-  const std::string offsetsPath = joinPath(config.dir, "offset.cfg");
-  auto offsets = io::readOffsetTable(offsetsPath);
-  collect(offsetsPath, offsets.diagnostics);
-  if (offsets.value) config.offsets = *offsets.value;
-
-  // machine.cfg is optional: without it the SPEC 1 defaults apply.
+  // machine.cfg is optional: without it the SPEC 1 defaults apply. It comes
+  // first because its turret size bounds the tool table.
   const std::string machinePath = joinPath(config.dir, "machine.cfg");
   std::error_code ec;
   if (std::filesystem::exists(machinePath, ec)) {
@@ -209,6 +202,16 @@ LoadedConfig loadConfig(const std::string& explicitDir) {
     collect(machinePath, machine.diagnostics);
     if (machine.value) config.machine = *machine.value;
   }
+
+  const std::string toolsPath = joinPath(config.dir, "tools.cfg");
+  auto tools = io::readToolTable(toolsPath, config.machine.turretStations);
+  collect(toolsPath, tools.diagnostics);
+  if (tools.value) config.tools = *tools.value;
+
+  const std::string offsetsPath = joinPath(config.dir, "offset.cfg");
+  auto offsets = io::readOffsetTable(offsetsPath);
+  collect(offsetsPath, offsets.diagnostics);
+  if (offsets.value) config.offsets = *offsets.value;
 
   for (int t = 1; t <= io::kToolCount; ++t) {
     const std::string path = config.tools.bitmapPath(t);
@@ -219,6 +222,39 @@ LoadedConfig loadConfig(const std::string& explicitDir) {
   }
   return config;
 }
+
+int stationLimit(const LoadedConfig& config, gcode::Dialect dialect) {
+  const int profileLimit = gcode::machineProfile(dialect).maxToolStation;
+  return profileLimit > 0 ? std::min(profileLimit, config.tools.stations) : config.tools.stations;
+}
+
+JobTools inferJobTools(const LoadedConfig& config, const std::string& programPath, gcode::Dialect dialect,
+                       const std::vector<machine::StationOverride>& overrides) {
+  JobTools job;
+  job.setup.tools = config.tools;
+  job.setup.offsets = config.offsets;
+  job.setup.machine = config.machine;
+  job.toolsWithBitmap = config.toolsWithBitmap();
+  const auto read = io::readProgramFile(programPath);
+  if (!read.value) return job;
+  const gcode::Program program = gcode::parse(read.value->gcode, read.value->gcodeFirstLine);
+  machine::ToolInference inferred =
+      machine::inferTools(program, read.value->gcode, read.value->gcodeFirstLine, job.setup,
+                          io::shippedToolLibrary(), overrides, stationLimit(config, dialect));
+  job.setup = std::move(inferred.setup);
+  job.notes = inferred.notes();
+  std::error_code ec;
+  for (const machine::ToolChoice& c : inferred.choices) {
+    auto& have = job.toolsWithBitmap;
+    const bool exists = std::filesystem::is_regular_file(job.setup.tools.bitmapPath(c.station), ec);
+    const auto it = std::find(have.begin(), have.end(), c.station);
+    if (exists && it == have.end()) have.push_back(c.station);
+    if (!exists && it != have.end()) have.erase(it);
+  }
+  std::sort(job.toolsWithBitmap.begin(), job.toolsWithBitmap.end());
+  return job;
+}
+
 
 CheckedProgram checkProgramFile(const std::string& path, const gcode::CheckOptions& options,
                                 const io::JobHeader& defaultsForPlain) {

@@ -16,6 +16,7 @@
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/io/tool_config.h"
 #include "klueng/core/machine/interpreter.h"
+#include "klueng/core/machine/tool_inference.h"
 #include "klueng/core/messages.h"
 
 namespace klueng::cli {
@@ -42,7 +43,7 @@ inline constexpr const char* kUnitsAllowed = "mm or inch";
 std::vector<core::Diagnostic> resolveStock(core::io::ProgramFile& file, const std::optional<core::io::JobHeader>& stock,
                                            const core::machine::MachineSetup& setup,
                                            const core::machine::RunOptions& options);
-// `FILE: note: message` (the notes of resolveStock), no newline.
+// `FILE:LINE:COL: note I152: message` (`FILE: note ...` without a line), no newline; Thai "หมายเหตุ".
 std::string formatNote(const std::string& file, const core::Diagnostic& d, core::Lang lang);
 
 // A diagnostic with the file it belongs to (a program, a cfg file, a bitmap).
@@ -83,6 +84,19 @@ struct LoadedConfig {
   std::vector<int> toolsWithBitmap() const;
 };
 LoadedConfig loadConfig(const std::string& explicitDir = {});
+
+// Tools from the program (core/machine/tool_inference.h) for one program: the
+// setup with the library's choices and the --tool overrides, the stations that
+// then have a tool (for the checker's E305), and the notes to print.
+struct JobTools {
+  core::machine::MachineSetup setup;
+  std::vector<int> toolsWithBitmap;
+  std::vector<core::Diagnostic> notes;  // I401..I410
+};
+JobTools inferJobTools(const LoadedConfig& config, const std::string& programPath, core::gcode::Dialect dialect,
+                       const std::vector<core::machine::StationOverride>& overrides);
+// The highest station a T word may name: the dialect's limit, else the turret.
+int stationLimit(const LoadedConfig& config, core::gcode::Dialect dialect);
 
 // Reads, parses and checks one program. diagnostics holds the file's own
 // (header, encoding) and the checker's, sorted by line and column.

@@ -6,6 +6,7 @@
 //                          [--stock DxL[xBORE][in]] [--units mm|inch]
 // The stock: --stock, else the file's header, else inferred from the program
 // (a note on stderr says which, SPEC 2 ext).
+//                          [--tool N=ID]...   (library tool ID at station N for this run)
 // Checks the program (errors -> printed, exit 1), runs it into a Timeline and
 // writes what was asked for. An alarm is printed like a diagnostic
 // (FILE:LINE:COL: alarm A104: ...) and gives exit 1; the trace up to it is
@@ -23,6 +24,7 @@
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/io/tool_config.h"
+#include "klueng/core/io/tool_library.h"
 #include "klueng/core/machine/interpreter.h"
 #include "klueng/core/machine/trace.h"
 #include "klueng/core/messages.h"
@@ -45,6 +47,7 @@ struct SimulateOptions {
   CutOutputOptions cut;  // --png --profile --json --resolution (cut_outputs.h)
   std::optional<io::JobHeader> stock;            // --stock
   std::optional<gcode::InputUnits> powerOnUnits;  // --units
+  std::vector<std::string> tools;  // --tool N=ID, checked once the turret size is known
 };
 
 // One row per option: name, whether it takes a value, what it does. New
@@ -90,6 +93,7 @@ const std::vector<OptionSpec>& optionSpecs() {
          o.powerOnUnits = parseUnits(v);
          return o.powerOnUnits.has_value();
        }},
+      {"--tool", true, [](SimulateOptions& o, const std::string& v) { o.tools.push_back(v); return true; }},
       {"--resolution", true,
        [](SimulateOptions& o, const std::string& v) { return parseResolution(v, o.cut.resolution); }},
   };
@@ -146,9 +150,10 @@ std::optional<SimulateOptions> parseOptions(const std::vector<std::string>& args
                "                              [--optional-stop] [--block-skip]\n"
                "                              [--png out.png] [--profile out.csv] [--json summary.json]\n"
                "                              [--svg out.svg] [--dxf out.dxf] [--resolution MM] [--no-stock]\n"
-               "                              [--stock DxL[xBORE][in]] [--units mm|inch]\n"
+               "                              [--stock DxL[xBORE][in]] [--units mm|inch] [--tool N=ID]...\n"
                "  --stock   stock before the file's header: 50x100 (mm), 2.1x4in, 118x80x90 (tube, bore 90)\n"
-               "  --units   power-on units before any G20/G21: mm or inch\n",
+               "  --units   power-on units before any G20/G21: mm or inch\n"
+               "  --tool N=ID   library tool ID at station N for this run, e.g. 12=parting-3mm\n",
                stderr);
     return std::nullopt;
   }
@@ -171,15 +176,26 @@ int runSimulate(const std::vector<std::string>& args) {
   for (const auto& fd : config.diagnostics) printDiagnostic(fd.file, fd.diagnostic, o.lang);
   if (config.unreadable) return 2;
   if (config.hasErrors()) return 1;
-  machine::MachineSetup setup;
-  setup.tools = config.tools;
-  setup.offsets = config.offsets;
-  setup.machine = config.machine;
+  std::vector<machine::StationOverride> overrides;
+  for (const std::string& t : o.tools) {
+    machine::StationOverride ov;
+    std::string error;
+    if (!machine::parseStationOverride(t, stationLimit(config, o.dialect), io::shippedToolLibrary(), ov, error)) {
+      std::fprintf(stderr, "klueng-cli simulate: %s\n", error.c_str());
+      return 2;
+    }
+    overrides.push_back(ov);
+  }
+  // Tools from the program: library choices for stations without a fitting tool (notes say which).
+  const JobTools job = inferJobTools(config, o.file, o.dialect, overrides);
+  for (const Diagnostic& n : job.notes) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
+  const machine::MachineSetup& setup = job.setup;
 
   gcode::CheckOptions checkOptions;
   checkOptions.dialect = o.dialect;
   checkOptions.powerOnUnits = o.powerOnUnits;
-  checkOptions.toolsWithBitmap = config.toolsWithBitmap();
+  checkOptions.turretStations = config.tools.stations;  // the turret the tool table was read for
+  checkOptions.toolsWithBitmap = job.toolsWithBitmap;
   CheckedProgram checked = checkProgramFile(o.file, checkOptions);
   for (const auto& d : checked.diagnostics) printDiagnostic(o.file, d, o.lang);
   if (checked.unreadable) return 2;

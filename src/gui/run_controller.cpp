@@ -269,6 +269,7 @@ void RunController::prepareAndThen(Pending what) {
     const core::gcode::Program program = core::gcode::parse(file.gcode, file.gcodeFirstLine);
     core::gcode::CheckOptions check;
     check.dialect = options.dialect;
+    check.turretStations = setup.tools.stations;
     std::vector<int> withBitmap;
     for (int t = 1; t <= core::io::kToolCount; ++t)
       if (!setup.tools.bitmap[static_cast<std::size_t>(t - 1)].empty()) withBitmap.push_back(t);

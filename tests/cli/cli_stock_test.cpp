@@ -52,8 +52,8 @@ TEST(CliStock, PlainFileTellsTheInferredStock) {
   const std::string file = writeFile("plain.nc", kPlain);
   const CliRun run = runCli("check " + file);
   EXPECT_EQ(run.exitCode, 0) << run.out;
-  EXPECT_EQ(run.out, file + ": note I152: stock Ø50 x 80 mm inferred from N30 G00 X52. Z0. (first approach)\n" +
-                         file + ": note I157: stock length 80: the deepest cut Z-60 (N70 G01 Z-60.) + 5 for the cut-off"
+  EXPECT_EQ(run.out, file + ":5:1: note I152: stock Ø50 x 80 mm inferred from N30 G00 X52. Z0. (first approach)\n" +
+                         file + ":9:1: note I157: stock length 80: the deepest cut Z-60 (N70 G01 Z-60.) + 5 for the cut-off"
                                 " + 15 held in the chuck\n");
   const CliRun th = runCli("check --lang th " + file);
   EXPECT_THAT(th.out, HasSubstr(": หมายเหตุ I152: ชิ้นงาน Ø50 x 80 mm ประมาณจาก N30 G00 X52. Z0."));

@@ -136,7 +136,7 @@ const ToolShape* ToolLibrary::get(int tool, int offset) {
     const std::string path = tools_.bitmapPath(tool);
     if (!path.empty()) {
       const io::Offset o = offset >= 1 && offset <= io::kOffsetCount ? offsets_.at(offset) : io::Offset{};
-      io::ReadResult<ToolShape> r = loadToolShape(path, o.r, o.tip);
+      io::ReadResult<ToolShape> r = loadToolShape(path, o.r, o.tip, tools_.pixelsPerMmOf(tool));
       // One report per bitmap file, not one per offset it is used with.
       bool known = false;
       for (const auto& [k, v] : cache_) known = known || (k.first == tool);

@@ -157,7 +157,7 @@ io::RgbImage renderSection(const SectionView& view) {
 
   if (view.tool) {
     const ToolShape& t = *view.tool;
-    const double pixelMm = 1.0 / kPixelsPerMm;
+    const double pixelMm = 1.0 / t.pixelsPerMm;
     // Bitmap pixel (col,row) -> local mm relative to the controlled point.
     for (int row = 0; row < t.image.height; ++row)
       for (int col = 0; col < t.image.width; ++col) {
