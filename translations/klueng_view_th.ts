@@ -66,6 +66,21 @@
         <source>inch</source>
         <translation>นิ้ว</translation>
     </message>
+    <message>
+        <location filename="../src/gui/job_details_dialog.cpp" line="108"/>
+        <source>Bore diameter (tube; 0 = solid bar):</source>
+        <translation>เส้นผ่านศูนย์กลางรูใน (ชิ้นงานท่อ; 0 = เพลาตัน):</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/job_details_dialog.cpp" line="94"/>
+        <source>The bore (%1) must be smaller than the stock diameter (%2).</source>
+        <translation>รูใน (%1) ต้องเล็กกว่าเส้นผ่านศูนย์กลางชิ้นงาน (%2)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/job_details_dialog.cpp" line="119"/>
+        <source>Tube stock: the diameter of the hole through it. 0 = a solid bar.</source>
+        <translation>ชิ้นงานท่อ: เส้นผ่านศูนย์กลางของรูที่ทะลุตลอดชิ้นงาน 0 = เพลาตัน</translation>
+    </message>
 </context>
 <context>
     <name>klueng::gui::OffsetDefineDialog</name>
@@ -116,31 +131,35 @@
     </message>
     <message>
         <location filename="../src/gui/offset_define_dialog.cpp" line="179"/>
-        <source>Offsets 01–16: X offset (diameter, mm), Z offset (mm), nose radius R (mm) and the imaginary tool tip number T (0–9). Use offset nn with T..nn, e.g. T0101.</source>
-        <translation>ออฟเซต 01–16: ค่าออฟเซต X (เส้นผ่านศูนย์กลาง, มม.), ค่าออฟเซต Z (มม.), รัศมีจมูกมีด R (มม.) และหมายเลขปลายมีด T (0–9) เรียกใช้ออฟเซต nn ด้วย T..nn เช่น T0101</translation>
+        <source>Offsets 01–64: X offset (diameter, mm), Z offset (mm), nose radius R (mm) and the imaginary tool tip number T (0–9). Use offset nn with T..nn, e.g. T0101. Rows 17–64 that stay 0 0 0 0 are not written; a tool chosen from the program fills an empty row with its own R and tip.</source>
+        <translation>ออฟเซต 01–64: ค่าออฟเซต X (เส้นผ่านศูนย์กลาง, มม.), ค่าออฟเซต Z (มม.), รัศมีจมูกมีด R (มม.) และหมายเลขปลายมีด T (0–9) เรียกใช้ออฟเซต nn ด้วย T..nn เช่น T0101 แถว 17–64 ที่เป็น 0 0 0 0 จะไม่ถูกบันทึก มีดตัดที่เลือกจากชุดรหัสสั่งการทำงานจะเติมรัศมีจมูกมีดและหมายเลขปลายมีดของตนลงในแถวที่ว่าง</translation>
     </message>
     <message>
-        <location filename="../src/gui/offset_define_dialog.cpp" line="181"/>
+        <source>Offsets 01–16: X offset (diameter, mm), Z offset (mm), nose radius R (mm) and the imaginary tool tip number T (0–9). Use offset nn with T..nn, e.g. T0101.</source>
+        <translation type="vanished">ออฟเซต 01–16: ค่าออฟเซต X (เส้นผ่านศูนย์กลาง, มม.), ค่าออฟเซต Z (มม.), รัศมีจมูกมีด R (มม.) และหมายเลขปลายมีด T (0–9) เรียกใช้ออฟเซต nn ด้วย T..nn เช่น T0101</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/offset_define_dialog.cpp" line="182"/>
         <source>X (dia.)</source>
         <translation>X (เส้นผ่าศก.)</translation>
     </message>
     <message>
-        <location filename="../src/gui/offset_define_dialog.cpp" line="181"/>
+        <location filename="../src/gui/offset_define_dialog.cpp" line="182"/>
         <source>Z</source>
         <translation>Z</translation>
     </message>
     <message>
-        <location filename="../src/gui/offset_define_dialog.cpp" line="181"/>
+        <location filename="../src/gui/offset_define_dialog.cpp" line="182"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location filename="../src/gui/offset_define_dialog.cpp" line="181"/>
+        <location filename="../src/gui/offset_define_dialog.cpp" line="182"/>
         <source>Tip T</source>
         <translation>ปลายมีด T</translation>
     </message>
     <message>
-        <location filename="../src/gui/offset_define_dialog.cpp" line="181"/>
+        <location filename="../src/gui/offset_define_dialog.cpp" line="182"/>
         <source>Tip</source>
         <translation>ปลายมีด</translation>
     </message>
@@ -148,7 +167,7 @@
 <context>
     <name>klueng::gui::OutputView</name>
     <message>
-        <location filename="../src/gui/output_view.cpp" line="282"/>
+        <location filename="../src/gui/output_view.cpp" line="297"/>
         <source>Output screen: wheel to zoom, drag to pan, double-click to fit</source>
         <translation>จอแสดงผล: หมุนล้อเมาส์เพื่อย่อ/ขยาย ลากเพื่อเลื่อน ดับเบิลคลิกเพื่อแสดงทั้งหมด</translation>
     </message>
@@ -360,79 +379,124 @@
 <context>
     <name>klueng::gui::ToolSelectDialog</name>
     <message>
-        <location filename="../src/gui/tool_select_dialog.cpp" line="198"/>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="229"/>
         <source>Tool bitmap</source>
         <translation>ภาพบิตแมปของมีดตัด</translation>
     </message>
     <message>
-        <location filename="../src/gui/tool_select_dialog.cpp" line="198"/>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="229"/>
         <source>Tool bitmaps (*.bmp *.png)</source>
         <translation>ภาพบิตแมปของมีดตัด (*.bmp *.png)</translation>
     </message>
     <message>
-        <location filename="../src/gui/tool_select_dialog.cpp" line="211"/>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="250"/>
         <source>tip %1, nose radius %2 mm</source>
         <translation>ปลายมีด %1, รัศมีจมูกมีด %2 มม.</translation>
     </message>
     <message>
-        <location filename="../src/gui/tool_select_dialog.cpp" line="214"/>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="252"/>
         <source>Tool %1 has no bitmap.</source>
         <translation>มีดตัด %1 ยังไม่มีภาพบิตแมป</translation>
     </message>
     <message>
-        <location filename="../src/gui/tool_select_dialog.cpp" line="220"/>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="258"/>
         <source>cannot read the bitmap</source>
         <translation>อ่านภาพบิตแมปไม่ได้</translation>
     </message>
     <message>
-        <location filename="../src/gui/tool_select_dialog.cpp" line="227"/>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="266"/>
         <source>No cutting-edge pixels: every pixel is black (holder) or white (empty).</source>
         <translation>ไม่มีจุดภาพของคมตัด: ทุกจุดเป็นสีดำ (ด้ามจับมีด) หรือสีขาว (ว่าง)</translation>
     </message>
     <message>
-        <location filename="../src/gui/tool_select_dialog.cpp" line="228"/>
         <source>%1 × %2 pixels = %3 × %4 mm; red cross = controlled point for tip %5</source>
-        <translation>%1 × %2 จุดภาพ = %3 × %4 มม. กากบาทสีแดง = จุดควบคุมของปลายมีด %5</translation>
+        <translation type="vanished">%1 × %2 จุดภาพ = %3 × %4 มม. กากบาทสีแดง = จุดควบคุมของปลายมีด %5</translation>
     </message>
     <message>
-        <location filename="../src/gui/tool_select_dialog.cpp" line="245"/>
-        <location filename="../src/gui/tool_select_dialog.cpp" line="294"/>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="267"/>
+        <source>%1 × %2 pixels at %3 px/mm = %4 × %5 mm; red cross = controlled point for tip %6</source>
+        <translation>%1 × %2 จุดภาพ ที่ %3 จุดภาพ/มม. = %4 × %5 มม. กากบาทสีแดง = จุดควบคุมของปลายมีด %6</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="321"/>
+        <source>Set for this program only: %1 (tools.cfg has: %2)</source>
+        <translation>กำหนดไว้สำหรับชุดรหัสสั่งการทำงานนี้เท่านั้น: %1 (ใน tools.cfg คือ: %2)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="326"/>
+        <source>Chosen from the program: %1</source>
+        <translation>เลือกจากชุดรหัสสั่งการทำงาน: %1</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="377"/>
+        <source>Tool %1: %2 is not in the tool library</source>
+        <translation>มีดตัด %1: ไม่มี %2 ในคลังมีดตัด</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="382"/>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="444"/>
         <source>Tool %1: %2</source>
         <translation>มีดตัด %1: %2</translation>
     </message>
     <message>
-        <location filename="../src/gui/tool_select_dialog.cpp" line="256"/>
-        <location filename="../src/gui/tool_select_dialog.cpp" line="278"/>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="393"/>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="417"/>
         <source>Cannot save the tool table: %1</source>
         <translation>บันทึกตารางมีดตัดไม่ได้: %1</translation>
     </message>
     <message>
-        <location filename="../src/gui/tool_select_dialog.cpp" line="287"/>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="426"/>
         <source>Tool Select</source>
         <translation>เลือกมีดตัด</translation>
     </message>
     <message>
-        <location filename="../src/gui/tool_select_dialog.cpp" line="288"/>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="427"/>
         <source>Bitmap file:</source>
         <translation>ไฟล์ภาพบิตแมป:</translation>
     </message>
     <message>
-        <location filename="../src/gui/tool_select_dialog.cpp" line="289"/>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="428"/>
         <source>Browse...</source>
         <translation>เลือกไฟล์...</translation>
     </message>
     <message>
-        <location filename="../src/gui/tool_select_dialog.cpp" line="290"/>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="429"/>
         <source>Preview with offset:</source>
         <translation>แสดงตัวอย่างกับออฟเซต:</translation>
     </message>
     <message>
-        <location filename="../src/gui/tool_select_dialog.cpp" line="291"/>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="430"/>
         <source>e.g. resources/tools/turning.bmp</source>
         <translation>เช่น resources/tools/turning.bmp</translation>
     </message>
     <message>
-        <location filename="../src/gui/tool_select_dialog.cpp" line="294"/>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="431"/>
+        <source>Library tool:</source>
+        <translation>มีดตัดจากคลัง:</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="432"/>
+        <source>Only for this program (tools.cfg is not changed)</source>
+        <translation>เฉพาะชุดรหัสสั่งการทำงานนี้ (ไม่เปลี่ยน tools.cfg)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="433"/>
+        <source>(a bitmap file, below)</source>
+        <translation>(ไฟล์ภาพบิตแมป ด้านล่าง)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="445"/>
+        <source> (this program)</source>
+        <translation> (เฉพาะงานนี้)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="446"/>
+        <source> (from the program)</source>
+        <translation> (เลือกจากชุดรหัส)</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="323"/>
+        <location filename="../src/gui/tool_select_dialog.cpp" line="442"/>
         <source>(none)</source>
         <translation>(ไม่มี)</translation>
     </message>

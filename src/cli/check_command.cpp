@@ -1,8 +1,13 @@
 // klueng-cli check FILE|FOLDER... [--lang en|th] [--dialect fanuc|haas|classic] [--json]
-//                                 [--config DIR] [--summary]
+//                                 [--config DIR] [--summary] [--stock DxL[xBORE][in]] [--units mm|inch]
+//                                 [--tool N=ID]...
 // Reads each program, parses and checks it (SPEC 3-5, 13) against the tool
 // table found by findConfigDir, and prints every diagnostic: one GCC-style
-// line each, or one JSON array for all files. Exit 0 = no errors, 1 = errors,
+// line each, or one JSON array for all files. A file without a job header
+// gets a note saying where its stock comes from (--stock, or inferred). Tools
+// the program names in comments or cycles come from the library (a note says
+// which; --tool N=ID sets a station for this run); T words naming stations
+// still without a tool are E305. Exit 0 = no errors, 1 = errors,
 // 2 = a file could not be read or the command line is wrong.
 #include <fmt/format.h>
 
@@ -25,7 +30,12 @@ using namespace klueng::core;
 
 constexpr const char* kUsage =
     "usage: klueng-cli check FILE|FOLDER... [--lang en|th] [--dialect fanuc|haas|classic] [--json]\n"
-    "                                       [--config DIR] [--summary]\n";
+    "                                       [--config DIR] [--summary]\n"
+    "                                       [--stock DxL[xBORE][in]] [--units mm|inch] [--tool N=ID]...\n"
+    "  --dialect     machine profile: fanuc (Fanuc 0i-TF, default), haas (Haas ST lathe), classic (1999 rules)\n"
+    "  --stock       stock for every FILE, before its header: 50x100 (mm), 2.1x4in, 118x80x90 (tube, bore 90)\n"
+    "  --units       power-on units before any G20/G21: mm or inch\n"
+    "  --tool N=ID   use library tool ID at station N for this run (repeatable), e.g. --tool 12=parting-3mm\n";
 
 struct CheckOptions {
   std::vector<std::string> files;
@@ -34,6 +44,9 @@ struct CheckOptions {
   bool json = false;
   bool summary = false;
   std::string configDir;
+  std::optional<io::JobHeader> stock;            // --stock
+  std::optional<gcode::InputUnits> powerOnUnits;  // --units
+  std::vector<std::string> tools;                 // --tool N=ID, checked once the turret size is known
 };
 
 int usageError(const std::string& message) {
@@ -74,7 +87,9 @@ std::optional<int> parseArgs(const std::vector<std::string>& args, CheckOptions&
       arg.resize(eq);
       hasValue = true;
     }
-    if (arg != "--lang" && arg != "--dialect" && arg != "--config") return usageError("unknown option '" + arg + "'");
+    if (arg != "--lang" && arg != "--dialect" && arg != "--config" && arg != "--stock" && arg != "--units" &&
+        arg != "--tool")
+      return usageError("unknown option '" + arg + "'");
     if (!hasValue) {
       if (i + 1 >= args.size()) return usageError(arg + " needs a value");
       value = args[++i];
@@ -87,6 +102,14 @@ std::optional<int> parseArgs(const std::vector<std::string>& args, CheckOptions&
       const auto dialect = parseDialect(value);
       if (!dialect) return usageError("--dialect must be fanuc, haas or classic, not '" + value + "'");
       o.dialect = *dialect;
+    } else if (arg == "--stock") {
+      o.stock = parseStock(value);
+      if (!o.stock) return usageError(std::string("--stock must be ") + kStockAllowed + ", not '" + value + "'");
+    } else if (arg == "--units") {
+      o.powerOnUnits = parseUnits(value);
+      if (!o.powerOnUnits) return usageError(std::string("--units must be ") + kUnitsAllowed + ", not '" + value + "'");
+    } else if (arg == "--tool") {
+      o.tools.push_back(value);
     } else {
       o.configDir = value;
     }
@@ -149,18 +172,39 @@ int runCheck(const std::vector<std::string>& args) {
   if (const auto exit = parseArgs(args, o)) return *exit;
 
   const LoadedConfig config = loadConfig(o.configDir);
+  std::vector<machine::StationOverride> overrides;
+  for (const std::string& t : o.tools) {
+    machine::StationOverride ov;
+    std::string error;
+    if (!machine::parseStationOverride(t, stationLimit(config, o.dialect), io::shippedToolLibrary(), ov, error))
+      return usageError(error);
+    overrides.push_back(ov);
+  }
   gcode::CheckOptions checkOptions;
   checkOptions.dialect = o.dialect;
-  // Without a readable tool table nothing is known about bitmaps: do not check T words against it.
-  if (!config.unreadable) checkOptions.toolsWithBitmap = config.toolsWithBitmap();
+  checkOptions.powerOnUnits = o.powerOnUnits;
+  checkOptions.turretStations = config.tools.stations;  // the turret the tool table was read for
+  machine::MachineSetup setup{config.machine, config.offsets, config.tools};
+  machine::RunOptions runOptions;
+  runOptions.dialect = o.dialect;
+  runOptions.powerOnUnits = o.powerOnUnits;
 
   std::vector<FileDiagnostic> all = config.diagnostics;
   bool anyError = config.hasErrors();
   bool anyUnreadable = config.unreadable;
   std::vector<FileSummary> summary;
+  std::vector<FileDiagnostic> notes;  // where each plain file's stock comes from
 
   for (const std::string& path : expandFolders(o.files)) {
-    const CheckedProgram checked = checkProgramFile(path, checkOptions);
+    // Without a readable tool table nothing is known about bitmaps: do not check T words against it.
+    if (!config.unreadable) {
+      const JobTools job = inferJobTools(config, path, o.dialect, overrides);
+      checkOptions.toolsWithBitmap = job.toolsWithBitmap;
+      for (const Diagnostic& n : job.notes) notes.push_back({path, n});
+    }
+    CheckedProgram checked = checkProgramFile(path, checkOptions);
+    if (checked.file)
+      for (Diagnostic& n : resolveStock(*checked.file, o.stock, setup, runOptions)) notes.push_back({path, std::move(n)});
     FileSummary row{path};
     for (const Diagnostic& d : checked.diagnostics) {
       if (isError(d.severity)) ++row.errors;
@@ -174,6 +218,8 @@ int runCheck(const std::vector<std::string>& args) {
   }
 
   if (o.json) {
+    // The stock and tool notes stay out of the array (they describe the run,
+    // not the program); the checker's own notes (I102) are in it.
     std::string out = "[";
     for (std::size_t i = 0; i < all.size(); ++i)
       out += (i ? ",\n  " : "\n  ") + diagnosticJson(all[i].file, all[i].diagnostic, o.lang);
@@ -181,6 +227,7 @@ int runCheck(const std::vector<std::string>& args) {
     std::fwrite(out.data(), 1, out.size(), stdout);
   } else {
     for (const FileDiagnostic& f : all) printDiagnostic(stdout, f.file, f.diagnostic, o.lang);
+    for (const FileDiagnostic& n : notes) printDiagnostic(stdout, n.file, n.diagnostic, o.lang);
     if (o.summary) printSummary(summary, o.lang);
   }
   std::fflush(stdout);

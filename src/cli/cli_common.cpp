@@ -3,12 +3,16 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 
 #include "klueng/core/gcode/dialect_fit.h"
+#include "klueng/core/gcode/machine_profile.h"
 #include "klueng/core/gcode/parser.h"
+#include "klueng/core/io/tool_library.h"
 #include "klueng/core/io/text_encoding.h"
+#include "klueng/core/machine/stock_inference.h"
 
 namespace klueng::cli {
 
@@ -34,6 +38,79 @@ std::optional<gcode::Dialect> parseDialect(std::string_view text) {
   gcode::Dialect d{};
   if (gcode::parseDialectId(text, d)) return d;
   return std::nullopt;
+}
+
+namespace {
+std::optional<double> positiveNumber(std::string_view s) {
+  if (s.empty() || s.size() > 32) return std::nullopt;
+  const std::string text(s);
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (end != text.c_str() + text.size() || !(v > 0.0) || !std::isfinite(v) || text.front() == '+') return std::nullopt;
+  return v;
+}
+}  // namespace
+
+std::optional<io::JobHeader> parseStock(std::string_view text) {
+  io::JobHeader h;
+  io::LengthUnit unit = io::LengthUnit::Millimetre;
+  if (text.size() > 2 && text.substr(text.size() - 2) == "in") {
+    unit = io::LengthUnit::Inch;
+    text.remove_suffix(2);
+  } else if (text.size() > 2 && text.substr(text.size() - 2) == "mm") {
+    text.remove_suffix(2);
+  }
+  std::vector<double> parts;
+  while (true) {
+    const std::size_t x = text.find_first_of("xX");
+    const auto v = positiveNumber(text.substr(0, x));
+    if (!v) return std::nullopt;
+    parts.push_back(*v);
+    if (x == std::string_view::npos) break;
+    text.remove_prefix(x + 1);
+  }
+  if (parts.size() < 2 || parts.size() > 3) return std::nullopt;
+  h.diameter = parts[0];
+  h.length = parts[1];
+  h.bore = parts.size() == 3 ? parts[2] : 0.0;
+  if (h.bore >= h.diameter) return std::nullopt;
+  h.diameterUnit = h.lengthUnit = unit;
+  h.stockSource = io::StockSource::CommandLine;
+  return h;
+}
+
+std::optional<gcode::InputUnits> parseUnits(std::string_view text) {
+  if (text == "mm") return gcode::InputUnits::Millimetre;
+  if (text == "inch") return gcode::InputUnits::Inch;
+  return std::nullopt;
+}
+
+std::vector<Diagnostic> resolveStock(io::ProgramFile& file, const std::optional<io::JobHeader>& stock,
+                                     const machine::MachineSetup& setup, const machine::RunOptions& options) {
+  io::JobHeader& h = file.header;
+  const auto keepSize = [&h](const io::JobHeader& from) {
+    h.diameter = from.diameter;
+    h.diameterUnit = from.diameterUnit;
+    h.length = from.length;
+    h.lengthUnit = from.lengthUnit;
+    h.bore = from.bore;
+    h.stockSource = from.stockSource;
+  };
+  if (stock) keepSize(*stock);
+  if (h.stockSource == io::StockSource::Header) return {};
+  if (file.gcode.find_first_not_of(" \t\r\n") == std::string::npos) return {};  // nothing to cut
+  if (h.stockSource != io::StockSource::CommandLine && h.stockSource != io::StockSource::JobDetails) {
+    const gcode::Program program = gcode::parse(file.gcode, file.gcodeFirstLine);
+    const machine::StockInference inferred = machine::inferStock(program, setup, options);
+    if (inferred.found) inferred.applyTo(h);
+    else keepSize(io::JobHeader{});
+    return machine::stockNotes(h, &inferred, file.gcode, file.gcodeFirstLine);
+  }
+  return machine::stockNotes(h, nullptr, file.gcode, file.gcodeFirstLine);
+}
+
+std::string formatNote(const std::string& file, const Diagnostic& d, Lang lang) {
+  return formatGccStyle(file, d, lang);
 }
 
 std::string formatGccStyle(const std::string& file, const Diagnostic& d, Lang lang) {
@@ -116,17 +193,8 @@ LoadedConfig loadConfig(const std::string& explicitDir) {
     }
   };
 
-  const std::string toolsPath = joinPath(config.dir, "tools.cfg");
-  auto tools = io::readToolTable(toolsPath);
-  collect(toolsPath, tools.diagnostics);
-  if (tools.value) config.tools = *tools.value;
-
-  const std::string offsetsPath = joinPath(config.dir, "offset.cfg");
-  auto offsets = io::readOffsetTable(offsetsPath);
-  collect(offsetsPath, offsets.diagnostics);
-  if (offsets.value) config.offsets = *offsets.value;
-
-  // machine.cfg is optional: without it the SPEC 1 defaults apply.
+  // machine.cfg is optional: without it the SPEC 1 defaults apply. It comes
+  // first because its turret size bounds the tool table.
   const std::string machinePath = joinPath(config.dir, "machine.cfg");
   std::error_code ec;
   if (std::filesystem::exists(machinePath, ec)) {
@@ -134,6 +202,16 @@ LoadedConfig loadConfig(const std::string& explicitDir) {
     collect(machinePath, machine.diagnostics);
     if (machine.value) config.machine = *machine.value;
   }
+
+  const std::string toolsPath = joinPath(config.dir, "tools.cfg");
+  auto tools = io::readToolTable(toolsPath, config.machine.turretStations);
+  collect(toolsPath, tools.diagnostics);
+  if (tools.value) config.tools = *tools.value;
+
+  const std::string offsetsPath = joinPath(config.dir, "offset.cfg");
+  auto offsets = io::readOffsetTable(offsetsPath);
+  collect(offsetsPath, offsets.diagnostics);
+  if (offsets.value) config.offsets = *offsets.value;
 
   for (int t = 1; t <= io::kToolCount; ++t) {
     const std::string path = config.tools.bitmapPath(t);
@@ -144,6 +222,39 @@ LoadedConfig loadConfig(const std::string& explicitDir) {
   }
   return config;
 }
+
+int stationLimit(const LoadedConfig& config, gcode::Dialect dialect) {
+  const int profileLimit = gcode::machineProfile(dialect).maxToolStation;
+  return profileLimit > 0 ? std::min(profileLimit, config.tools.stations) : config.tools.stations;
+}
+
+JobTools inferJobTools(const LoadedConfig& config, const std::string& programPath, gcode::Dialect dialect,
+                       const std::vector<machine::StationOverride>& overrides) {
+  JobTools job;
+  job.setup.tools = config.tools;
+  job.setup.offsets = config.offsets;
+  job.setup.machine = config.machine;
+  job.toolsWithBitmap = config.toolsWithBitmap();
+  const auto read = io::readProgramFile(programPath);
+  if (!read.value) return job;
+  const gcode::Program program = gcode::parse(read.value->gcode, read.value->gcodeFirstLine);
+  machine::ToolInference inferred =
+      machine::inferTools(program, read.value->gcode, read.value->gcodeFirstLine, job.setup,
+                          io::shippedToolLibrary(), overrides, stationLimit(config, dialect));
+  job.setup = std::move(inferred.setup);
+  job.notes = inferred.notes();
+  std::error_code ec;
+  for (const machine::ToolChoice& c : inferred.choices) {
+    auto& have = job.toolsWithBitmap;
+    const bool exists = std::filesystem::is_regular_file(job.setup.tools.bitmapPath(c.station), ec);
+    const auto it = std::find(have.begin(), have.end(), c.station);
+    if (exists && it == have.end()) have.push_back(c.station);
+    if (!exists && it != have.end()) have.erase(it);
+  }
+  std::sort(job.toolsWithBitmap.begin(), job.toolsWithBitmap.end());
+  return job;
+}
+
 
 CheckedProgram checkProgramFile(const std::string& path, const gcode::CheckOptions& options,
                                 const io::JobHeader& defaultsForPlain) {

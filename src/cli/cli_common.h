@@ -15,6 +15,8 @@
 #include "klueng/core/io/image.h"
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/io/tool_config.h"
+#include "klueng/core/machine/interpreter.h"
+#include "klueng/core/machine/tool_inference.h"
 #include "klueng/core/messages.h"
 
 namespace klueng::cli {
@@ -23,6 +25,26 @@ namespace klueng::cli {
 core::Lang langFromLocale();
 std::optional<core::Lang> parseLang(std::string_view text);                  // "en" | "th"
 std::optional<core::gcode::Dialect> parseDialect(std::string_view text);     // "fanuc" | "classic"
+
+// --stock DxL[xBORE][in]: "50x100", "2.1x4in", "118x80x90" (Ø118 tube, 80 long,
+// Ø90 bore). D, L > 0, 0 < BORE < D; mm unless "in". stockSource = CommandLine.
+std::optional<core::io::JobHeader> parseStock(std::string_view text);
+// --units mm|inch: the power-on units (before any G20/G21).
+std::optional<core::gcode::InputUnits> parseUnits(std::string_view text);
+// What the options accept, for the exit-2 messages.
+inline constexpr const char* kStockAllowed =
+    "DxL[xBORE][in] with D, L > 0 and 0 < BORE < D, e.g. 50x100, 2.1x4in, 118x80x90";
+inline constexpr const char* kUnitsAllowed = "mm or inch";
+
+// SPEC 2 (ext), the stock of one program: `stock` (--stock) if given, else the
+// file's header, else inferred from the program (machine/stock_inference.h),
+// else the defaults. Writes it into file.header and returns the notes that say
+// where it came from (none for a header file without --stock).
+std::vector<core::Diagnostic> resolveStock(core::io::ProgramFile& file, const std::optional<core::io::JobHeader>& stock,
+                                           const core::machine::MachineSetup& setup,
+                                           const core::machine::RunOptions& options);
+// `FILE:LINE:COL: note I152: message` (`FILE: note ...` without a line), no newline; Thai "หมายเหตุ".
+std::string formatNote(const std::string& file, const core::Diagnostic& d, core::Lang lang);
 
 // A diagnostic with the file it belongs to (a program, a cfg file, a bitmap).
 struct FileDiagnostic {
@@ -62,6 +84,19 @@ struct LoadedConfig {
   std::vector<int> toolsWithBitmap() const;
 };
 LoadedConfig loadConfig(const std::string& explicitDir = {});
+
+// Tools from the program (core/machine/tool_inference.h) for one program: the
+// setup with the library's choices and the --tool overrides, the stations that
+// then have a tool (for the checker's E305), and the notes to print.
+struct JobTools {
+  core::machine::MachineSetup setup;
+  std::vector<int> toolsWithBitmap;
+  std::vector<core::Diagnostic> notes;  // I401..I410
+};
+JobTools inferJobTools(const LoadedConfig& config, const std::string& programPath, core::gcode::Dialect dialect,
+                       const std::vector<core::machine::StationOverride>& overrides);
+// The highest station a T word may name: the dialect's limit, else the turret.
+int stationLimit(const LoadedConfig& config, core::gcode::Dialect dialect);
 
 // Reads, parses and checks one program. diagnostics holds the file's own
 // (header, encoding) and the checker's, sorted by line and column.

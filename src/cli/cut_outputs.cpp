@@ -88,7 +88,7 @@ CutOutcome runCut(const std::string& file, const io::JobHeader& header, const ma
         "  \"completed\": {},\n"
         "  \"alarms\": [{}],\n"
         "  \"tool_errors\": [{}],\n"
-        "  \"stock\": {{\"diameter_mm\": {:.4f}, \"length_mm\": {:.4f}, \"volume_mm3\": {:.3f}}},\n"
+        "  \"stock\": {{\"diameter_mm\": {:.4f}, \"length_mm\": {:.4f}, \"bore_mm\": {:.4f}, \"volume_mm3\": {:.3f}}},\n"
         "  \"removed_volume_mm3\": {:.3f},\n"
         "  \"part\": {{\"volume_mm3\": {:.3f}, \"max_diameter_mm\": {:.4f}, \"length_mm\": {:.4f}, "
         "\"z_min\": {:.4f}, \"z_max\": {:.4f}}},\n"
@@ -96,7 +96,7 @@ CutOutcome runCut(const std::string& file, const io::JobHeader& header, const ma
         "  \"tool_end\": {{\"z\": {:.4f}, \"x\": {:.4f}}}\n"
         "}}\n",
         jsonString(file), sim.endTime(), stop ? "false" : "true", alarms, toolErrors, sim.stock().diameter(),
-        sim.stock().length(), sim.stock().initialVolume(), sim.removedVolume(), part.volume(), part.maxDiameter(),
+        sim.stock().length(), sim.stock().bore(), sim.stock().initialVolume(), sim.removedVolume(), part.volume(), part.maxDiameter(),
         part.length(), part.leftFaceZ(), part.rightFaceZ(), sim.stock().resolution(), tool.x() + 0.0,
         2.0 * tool.y() + 0.0);
     outcome.written = writeText(options.jsonPath, json) && outcome.written;

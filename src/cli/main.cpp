@@ -10,8 +10,16 @@ namespace {
 void printUsage(std::FILE* out) {
   std::fputs(
       "usage: klueng-cli check FILE... [--lang en|th] [--dialect fanuc|haas|classic] [--json]\n"
+      "                               [--stock DxL[xBORE][in]] [--units mm|inch] [--tool N=ID]...\n"
       "       klueng-cli simulate FILE [--trace out.csv] [--cycle-time] [--config DIR]\n"
-      "                               [--lang en|th] [--dialect fanuc|haas|classic]\n",
+      "                               [--lang en|th] [--dialect fanuc|haas|classic]\n"
+      "                               [--stock DxL[xBORE][in]] [--units mm|inch] [--tool N=ID]...\n"
+      "  --dialect  fanuc (Fanuc 0i-TF, default), haas (Haas ST lathe), classic (1999 rules)\n"
+      "  --stock  50x100 (mm), 2.1x4in, 118x80x90 (tube: bore 90); without it the file's\n"
+      "           header, else the stock inferred from the program (a note says which)\n"
+      "  --units  power-on units before any G20/G21: mm or inch\n"
+      "  --tool N=ID   library tool ID at turret station N for this run (e.g. --tool 12=parting-3mm);\n"
+      "                see resources/tools/library/library.cfg and docs/tools.md for the IDs\n",
       out);
 }
 

@@ -3,6 +3,10 @@
 //                          [--optional-stop] [--block-skip]
 //                          [--png out.png] [--profile out.csv] [--json summary.json] [--resolution MM]
 //                          [--svg out.svg] [--dxf out.dxf] [--no-stock]   (--no-stock: interpret only, no stock collisions)
+//                          [--stock DxL[xBORE][in]] [--units mm|inch]
+// The stock: --stock, else the file's header, else inferred from the program
+// (a note on stderr says which, SPEC 2 ext).
+//                          [--tool N=ID]...   (library tool ID at station N for this run)
 // Checks the program (errors -> printed, exit 1), runs it into a Timeline and
 // writes what was asked for. An alarm is printed like a diagnostic
 // (FILE:LINE:COL: alarm A104: ...) and gives exit 1; the trace up to it is
@@ -20,6 +24,7 @@
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/io/tool_config.h"
+#include "klueng/core/io/tool_library.h"
 #include "klueng/core/machine/interpreter.h"
 #include "klueng/core/machine/trace.h"
 #include "klueng/core/messages.h"
@@ -40,6 +45,9 @@ struct SimulateOptions {
   bool optionalStop = false;
   bool blockSkip = false;
   CutOutputOptions cut;  // --png --profile --json --resolution (cut_outputs.h)
+  std::optional<io::JobHeader> stock;            // --stock
+  std::optional<gcode::InputUnits> powerOnUnits;  // --units
+  std::vector<std::string> tools;  // --tool N=ID, checked once the turret size is known
 };
 
 // One row per option: name, whether it takes a value, what it does. New
@@ -75,17 +83,30 @@ const std::vector<OptionSpec>& optionSpecs() {
       {"--svg", true, [](SimulateOptions& o, const std::string& v) { o.cut.svgPath = v; return true; }},
       {"--dxf", true, [](SimulateOptions& o, const std::string& v) { o.cut.dxfPath = v; return true; }},
       {"--no-stock", false, [](SimulateOptions& o, const std::string&) { o.cut.enabled = false; return true; }},
+      {"--stock", true,
+       [](SimulateOptions& o, const std::string& v) {
+         o.stock = parseStock(v);
+         return o.stock.has_value();
+       }},
+      {"--units", true,
+       [](SimulateOptions& o, const std::string& v) {
+         o.powerOnUnits = parseUnits(v);
+         return o.powerOnUnits.has_value();
+       }},
+      {"--tool", true, [](SimulateOptions& o, const std::string& v) { o.tools.push_back(v); return true; }},
       {"--resolution", true,
        [](SimulateOptions& o, const std::string& v) { return parseResolution(v, o.cut.resolution); }},
   };
   return specs;
 }
 
-// What an option accepts, for the message on a bad value.
+// ": allowed: ..." for the options whose values are a closed set or a form.
 std::string allowedValues(const std::string& option) {
-  if (option == "--dialect") return " (allowed: fanuc, haas, classic)";
-  if (option == "--lang") return " (allowed: en, th)";
-  if (option == "--resolution") return " (allowed: 0.001 to 5 mm)";
+  if (option == "--stock") return std::string("; allowed: ") + kStockAllowed;
+  if (option == "--units") return std::string("; allowed: ") + kUnitsAllowed;
+  if (option == "--lang") return "; allowed: en or th";
+  if (option == "--dialect") return "; allowed: fanuc, haas or classic";
+  if (option == "--resolution") return "; allowed: a number from 0.001 to 5 (mm)";
   return {};
 }
 
@@ -128,7 +149,11 @@ std::optional<SimulateOptions> parseOptions(const std::vector<std::string>& args
                "                              [--lang en|th] [--dialect fanuc|haas|classic]\n"
                "                              [--optional-stop] [--block-skip]\n"
                "                              [--png out.png] [--profile out.csv] [--json summary.json]\n"
-               "                              [--svg out.svg] [--dxf out.dxf] [--resolution MM] [--no-stock]\n",
+               "                              [--svg out.svg] [--dxf out.dxf] [--resolution MM] [--no-stock]\n"
+               "                              [--stock DxL[xBORE][in]] [--units mm|inch] [--tool N=ID]...\n"
+               "  --stock   stock before the file's header: 50x100 (mm), 2.1x4in, 118x80x90 (tube, bore 90)\n"
+               "  --units   power-on units before any G20/G21: mm or inch\n"
+               "  --tool N=ID   library tool ID at station N for this run, e.g. 12=parting-3mm\n",
                stderr);
     return std::nullopt;
   }
@@ -151,23 +176,38 @@ int runSimulate(const std::vector<std::string>& args) {
   for (const auto& fd : config.diagnostics) printDiagnostic(fd.file, fd.diagnostic, o.lang);
   if (config.unreadable) return 2;
   if (config.hasErrors()) return 1;
-  machine::MachineSetup setup;
-  setup.tools = config.tools;
-  setup.offsets = config.offsets;
-  setup.machine = config.machine;
+  std::vector<machine::StationOverride> overrides;
+  for (const std::string& t : o.tools) {
+    machine::StationOverride ov;
+    std::string error;
+    if (!machine::parseStationOverride(t, stationLimit(config, o.dialect), io::shippedToolLibrary(), ov, error)) {
+      std::fprintf(stderr, "klueng-cli simulate: %s\n", error.c_str());
+      return 2;
+    }
+    overrides.push_back(ov);
+  }
+  // Tools from the program: library choices for stations without a fitting tool (notes say which).
+  const JobTools job = inferJobTools(config, o.file, o.dialect, overrides);
+  for (const Diagnostic& n : job.notes) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
+  const machine::MachineSetup& setup = job.setup;
 
   gcode::CheckOptions checkOptions;
   checkOptions.dialect = o.dialect;
-  checkOptions.toolsWithBitmap = config.toolsWithBitmap();
-  const CheckedProgram checked = checkProgramFile(o.file, checkOptions);
+  checkOptions.powerOnUnits = o.powerOnUnits;
+  checkOptions.turretStations = config.tools.stations;  // the turret the tool table was read for
+  checkOptions.toolsWithBitmap = job.toolsWithBitmap;
+  CheckedProgram checked = checkProgramFile(o.file, checkOptions);
   for (const auto& d : checked.diagnostics) printDiagnostic(o.file, d, o.lang);
   if (checked.unreadable) return 2;
   if (!checked.file || hasErrors(checked.diagnostics)) return 1;
+  machine::RunOptions runOptions;
+  runOptions.dialect = o.dialect;
+  runOptions.powerOnUnits = o.powerOnUnits;
+  for (const Diagnostic& n : resolveStock(*checked.file, o.stock, setup, runOptions))
+    std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
   const io::ProgramFile& programFile = *checked.file;
   const gcode::Program program = gcode::parse(programFile.gcode, programFile.gcodeFirstLine);
 
-  machine::RunOptions runOptions;
-  runOptions.dialect = o.dialect;
   runOptions.optionalStop = o.optionalStop;
   runOptions.blockSkip = o.blockSkip;
   const machine::Timeline timeline = machine::interpret(program, setup, runOptions);

@@ -2,18 +2,44 @@
 
 #include <QFileInfo>
 
+#include "klueng/core/gcode/parser.h"
+#include "klueng/core/machine/stock_inference.h"
+
 namespace klueng::gui {
 
 Document::Document(QObject* parent) : QObject(parent) {}
 
-LoadedProgram Document::load(const QString& path, const core::io::JobHeader& defaultsForPlain) {
+namespace {
+void takeStock(core::io::JobHeader& h, const core::io::JobHeader& from) {
+  h.diameter = from.diameter;
+  h.diameterUnit = from.diameterUnit;
+  h.length = from.length;
+  h.lengthUnit = from.lengthUnit;
+  h.bore = from.bore;
+  h.stockSource = from.stockSource;
+}
+}  // namespace
+
+LoadedProgram Document::load(const QString& path, const core::io::JobHeader& defaultsForPlain,
+                             const std::optional<core::io::JobHeader>& jobDetails,
+                             const core::machine::MachineSetup& setup) {
   LoadedProgram out;
   out.path = QFileInfo(path).absoluteFilePath();
-  auto result = core::io::readProgramFile(path.toStdString(), defaultsForPlain);
+  core::io::JobHeader defaults = defaultsForPlain;
+  takeStock(defaults, core::io::JobHeader{});  // never another file's stock
+  if (jobDetails) defaults = *jobDetails;
+  auto result = core::io::readProgramFile(path.toStdString(), defaults);
   out.diagnostics = std::move(result.diagnostics);
   if (result.value) {
     out.ok = true;
     out.file = std::move(*result.value);
+    core::io::ProgramFile& f = out.file;
+    std::optional<core::machine::StockInference> inferred;
+    if (f.plainGcode && !jobDetails) {
+      inferred = core::machine::inferStock(core::gcode::parse(f.gcode, f.gcodeFirstLine), setup);
+      if (inferred->found) inferred->applyTo(f.header);
+    }
+    out.stockNotes = core::machine::stockNotes(f.header, inferred ? &*inferred : nullptr, f.gcode, f.gcodeFirstLine);
     out.gcode = QString::fromStdString(out.file.gcode);
     out.file.gcode.clear();  // the editor owns the text from now on
   }
@@ -23,6 +49,8 @@ LoadedProgram Document::load(const QString& path, const core::io::JobHeader& def
 void Document::reset(const core::io::JobHeader& header) {
   file_ = core::io::ProgramFile{};
   file_.header = header;
+  file_.header.stockSource = core::io::StockSource::Header;  // a new program is written with a header
+  stockNotes_ = core::machine::stockNotes(file_.header, nullptr, {}, 1);
   file_.plainGcode = false;
   file_.gcodeFirstLine = 7;
   fileDiagnostics_.clear();
@@ -35,6 +63,7 @@ void Document::reset(const core::io::JobHeader& header) {
 void Document::adopt(const LoadedProgram& loaded) {
   file_ = loaded.file;
   fileDiagnostics_ = loaded.diagnostics;
+  stockNotes_ = loaded.stockNotes;
   headerModified_ = false;
   path_ = loaded.path;
   emit pathChanged(path_);
@@ -68,10 +97,13 @@ QString Document::displayName() const {
 
 void Document::setHeader(const core::io::JobHeader& header) {
   file_.header = header;
+  file_.header.stockSource = file_.plainGcode ? core::io::StockSource::JobDetails : core::io::StockSource::Header;
+  stockNotes_ = core::machine::stockNotes(file_.header, nullptr, {}, 1);
   // The old header's diagnostics (lines 1-6, e.g. a bad stock size) no longer apply.
   if (!file_.plainGcode)
     std::erase_if(fileDiagnostics_, [](const core::Diagnostic& d) { return d.range.line >= 1 && d.range.line <= 6; });
-  headerModified_ = true;
+  // A plain file is saved without a header: its Job details are remembered elsewhere.
+  headerModified_ = headerModified_ || !file_.plainGcode;
   emit headerChanged();
 }
 

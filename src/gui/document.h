@@ -6,10 +6,12 @@
 // formatProgramFile / writeTextFileAtomic so the GUI and CLI agree byte for byte.
 #include <QObject>
 #include <QString>
+#include <optional>
 #include <vector>
 
 #include "klueng/core/diagnostic.h"
 #include "klueng/core/io/program_file.h"
+#include "klueng/core/machine/interpreter.h"
 
 namespace klueng::gui {
 
@@ -20,6 +22,7 @@ struct LoadedProgram {
   core::io::ProgramFile file;
   QString gcode;                   // file.gcode as QString, converted off the GUI thread
   std::vector<core::Diagnostic> diagnostics;  // header / file diagnostics (F1xx)
+  std::vector<core::Diagnostic> stockNotes;   // where the stock came from (I15x)
 };
 
 class Document : public QObject {
@@ -28,7 +31,12 @@ class Document : public QObject {
   explicit Document(QObject* parent = nullptr);
 
   // Reads and splits a program file; thread-safe (touches no Document).
-  static LoadedProgram load(const QString& path, const core::io::JobHeader& defaultsForPlain);
+  // A plain file's stock (SPEC 2 ext): `jobDetails` (set for this very file),
+  // else inferred from the program with `setup`, else JobHeader's defaults —
+  // never `defaultsForPlain`'s stock, whose text fields (project ...) it keeps.
+  static LoadedProgram load(const QString& path, const core::io::JobHeader& defaultsForPlain,
+                            const std::optional<core::io::JobHeader>& jobDetails = std::nullopt,
+                            const core::machine::MachineSetup& setup = {});
 
   // Start an untitled program with the given job details.
   void reset(const core::io::JobHeader& header);
@@ -47,7 +55,11 @@ class Document : public QObject {
   QString displayName() const;
 
   const core::io::JobHeader& header() const { return file_.header; }
+  // A header file's header is part of the file (modified until saved); a plain
+  // file's Job details are not (the caller remembers them per file).
   void setHeader(const core::io::JobHeader& header);
+  // Where the stock came from (I15x notes; the first one says it in short).
+  const std::vector<core::Diagnostic>& stockNotes() const { return stockNotes_; }
   bool isPlainGcode() const { return file_.plainGcode; }
   // File line of the editor's first line: 7 after a 6-line header, 1 for plain files.
   int gcodeFirstLine() const { return file_.gcodeFirstLine; }
@@ -64,6 +76,7 @@ class Document : public QObject {
   QString path_;
   core::io::ProgramFile file_;
   std::vector<core::Diagnostic> fileDiagnostics_;
+  std::vector<core::Diagnostic> stockNotes_;
   bool headerModified_ = false;
 };
 

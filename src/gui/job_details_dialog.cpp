@@ -8,6 +8,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QVBoxLayout>
 
 namespace klueng::gui {
@@ -47,6 +48,15 @@ JobDetailsDialog::JobDetailsDialog(const io::JobHeader& h, QWidget* parent) : QD
   diameterUnit_ = makeUnit(this, h.diameterUnit);
   length_ = makeSize(this, h.length);
   lengthUnit_ = makeUnit(this, h.lengthUnit);
+  bore_ = makeSize(this, h.bore);
+  bore_->setObjectName(QStringLiteral("bore"));
+  bore_->setMinimum(0.0);  // 0 = a solid bar
+  bore_->setValue(h.bore);
+  boreUnit_ = new QLabel(this);
+  problem_ = new QLabel(this);
+  problem_->setObjectName(QStringLiteral("jobDetailsProblem"));
+  problem_->setWordWrap(true);
+  problem_->setStyleSheet(QStringLiteral("color: #b00020;"));
   programmer_ = new QLineEdit(QString::fromStdString(h.programmer), this);
   for (QLineEdit* e : {project_, part_, material_, programmer_}) e->setMinimumWidth(280);
   form_ = new QFormLayout;
@@ -55,13 +65,18 @@ JobDetailsDialog::JobDetailsDialog(const io::JobHeader& h, QWidget* parent) : QD
   form_->addRow(new QLabel(this), material_);
   form_->addRow(new QLabel(this), pair(this, diameter_, diameterUnit_));
   form_->addRow(new QLabel(this), pair(this, length_, lengthUnit_));
+  form_->addRow(new QLabel(this), pair(this, bore_, boreUnit_));
   form_->addRow(new QLabel(this), programmer_);
   buttons_ = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(form_);
+  layout->addWidget(problem_);
   layout->addWidget(buttons_);
   connect(buttons_, &QDialogButtonBox::accepted, this, &QDialog::accept);
   connect(buttons_, &QDialogButtonBox::rejected, this, &QDialog::reject);
+  connect(diameter_, &QDoubleSpinBox::valueChanged, this, &JobDetailsDialog::validate);
+  connect(bore_, &QDoubleSpinBox::valueChanged, this, &JobDetailsDialog::validate);
+  connect(diameterUnit_, &QComboBox::currentIndexChanged, this, &JobDetailsDialog::retranslate);
   retranslate();
 }
 
@@ -77,18 +92,35 @@ io::JobHeader JobDetailsDialog::header() const {
   h.diameterUnit = static_cast<io::LengthUnit>(diameterUnit_->currentData().toInt());
   h.length = length_->value();
   h.lengthUnit = static_cast<io::LengthUnit>(lengthUnit_->currentData().toInt());
+  h.bore = bore_->value() < h.diameter ? bore_->value() : 0.0;
   return h;
+}
+
+void JobDetailsDialog::validate() {
+  const bool boreOk = bore_->value() < diameter_->value();
+  problem_->setText(boreOk ? QString()
+                           : tr("The bore (%1) must be smaller than the stock diameter (%2).")
+                                 .arg(bore_->value())
+                                 .arg(diameter_->value()));
+  problem_->setVisible(!boreOk);
+  if (QPushButton* ok = buttons_->button(QDialogButtonBox::Ok)) ok->setEnabled(boreOk);
 }
 
 void JobDetailsDialog::retranslate() {
   setWindowTitle(tr("Job Details"));
-  const QString labels[] = {tr("Project:"), tr("Part:"), tr("Material:"), tr("Stock diameter:"), tr("Stock length:"), tr("Programmer:")};
-  for (int i = 0; i < 6; ++i)
+  const QString labels[] = {tr("Project:"),      tr("Part:"),
+                            tr("Material:"),     tr("Stock diameter:"),
+                            tr("Stock length:"), tr("Bore diameter (tube; 0 = solid bar):"),
+                            tr("Programmer:")};
+  for (int i = 0; i < 7; ++i)
     if (auto* label = qobject_cast<QLabel*>(form_->itemAt(i, QFormLayout::LabelRole)->widget())) label->setText(labels[i]);
   for (QComboBox* unit : {diameterUnit_, lengthUnit_}) {
     unit->setItemText(0, tr("mm"));
     unit->setItemText(1, tr("inch"));
   }
+  boreUnit_->setText(diameterUnit_->currentText());  // the bore is in the diameter's unit
+  bore_->setToolTip(tr("Tube stock: the diameter of the hole through it. 0 = a solid bar."));
+  validate();
 }
 
 void JobDetailsDialog::changeEvent(QEvent* event) {

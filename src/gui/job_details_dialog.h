@@ -1,6 +1,8 @@
 #pragma once
 // Job details (SPEC 2): project, part, material, stock diameter and length
-// (each with mm/inch), programmer. Diameter and length must be > 0.
+// (each with mm/inch), bore (tube stock, in the diameter's unit; 0 = solid bar),
+// programmer. Diameter and length must be > 0 and the bore less than the
+// diameter: OK stays disabled and a line under the form says why.
 //
 // Public API
 //   JobDetailsDialog dlg(header, parent);  if (dlg.exec()) header = dlg.header();
@@ -29,6 +31,7 @@ class JobDetailsDialog : public QDialog {
 
  private:
   void retranslate();
+  void validate();
   QFormLayout* form_ = nullptr;
   QLineEdit* project_ = nullptr;
   QLineEdit* part_ = nullptr;
@@ -37,6 +40,9 @@ class JobDetailsDialog : public QDialog {
   QComboBox* diameterUnit_ = nullptr;
   QDoubleSpinBox* length_ = nullptr;
   QComboBox* lengthUnit_ = nullptr;
+  QDoubleSpinBox* bore_ = nullptr;
+  QLabel* boreUnit_ = nullptr;
+  QLabel* problem_ = nullptr;
   QLineEdit* programmer_ = nullptr;
   QDialogButtonBox* buttons_ = nullptr;
 };

@@ -45,6 +45,7 @@
 #include "gui/status_panel.h"
 #include "gui/tool_select_dialog.h"
 #include "klueng/core/gcode/checker.h"
+#include "klueng/core/gcode/machine_profile.h"
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/io/tool_config.h"
 #include "klueng/core/messages.h"
@@ -76,12 +77,6 @@ QString speedText(int i) {
 }
 
 // Runs on a worker thread: the UTF-8 conversion happens there too.
-std::vector<core::Diagnostic> runCheck(const QString& text, int firstLine, core::gcode::CheckOptions options) {
-  const std::string utf8 = text.toStdString();
-  const core::gcode::Program program = core::gcode::parse(utf8, firstLine);
-  return core::gcode::check(program, options);
-}
-
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::make_unique<Settings>()) {
@@ -137,6 +132,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   auto* outputLayout = new QVBoxLayout(outputPane);
   outputLayout->setContentsMargins(0, 0, 0, 0);
   outputLayout->setSpacing(2);
+  // SPEC 2 (ext): the user is always told where the stock came from.
+  stockLabel_ = new QLabel(outputPane);
+  stockLabel_->setObjectName(QStringLiteral("stockSource"));
+  stockLabel_->setWordWrap(true);
+  stockLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  stockLabel_->setContentsMargins(6, 2, 6, 2);
+  outputLayout->addWidget(stockLabel_);
   outputLayout->addWidget(output_, 1);
   outputLayout->addWidget(statusLamps_);
 
@@ -186,6 +188,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   connect(document_, &Document::headerChanged, this, [this] {
     runnerStale_ = true;
     updateTitle();
+    updateStockLabel();
+    // Draw the new stock at once; the runner re-reads the whole program before a run.
+    if (runner_->state() == RunState::Idle && !runner_->isBusy()) {
+      core::io::ProgramFile stockOnly;
+      stockOnly.header = document_->header();
+      runner_->setProgram(stockOnly, document_->displayName());
+    }
   });
   connect(editor_, &CodeEditor::breakpointsChanged, this, [this] {
     const QList<int> lines = editor_->breakpointFileLines();
@@ -549,6 +558,7 @@ void MainWindow::retranslateUi() {
   runToolBar_->setWindowTitle(tr("Run tool bar"));
   helpToolBar_->setWindowTitle(tr("Help tool bar"));
   updateTitle();
+  updateStockLabel();
 }
 
 void MainWindow::changeEvent(QEvent* event) {
@@ -681,8 +691,13 @@ void MainWindow::startLoad(const QString& path) {
   if (loadWatcher_.isRunning()) loadWatcher_.waitForFinished();
   loadingPath_ = path;
   loadInFlight_ = true;
+  // A plain file's stock: its own Job details, else inferred; never the last file's.
   const core::io::JobHeader defaults = settings_->lastJobHeader();
-  loadWatcher_.setFuture(QtConcurrent::run([path, defaults] { return Document::load(path, defaults); }));
+  const std::optional<core::io::JobHeader> details = settings_->jobDetailsFor(path);
+  const core::machine::MachineSetup setup = runner_->machineSetup();
+  loadWatcher_.setFuture(QtConcurrent::run([path, defaults, details, setup] {
+    return Document::load(path, defaults, details, setup);
+  }));
   QTimer::singleShot(300, this, &MainWindow::showBusyIndicator);
 }
 
@@ -766,6 +781,7 @@ void MainWindow::finishLoad() {
   settings_->addRecentFile(path);
   settings_->setLastDirectory(QFileInfo(path).absolutePath());
   if (!document_->isPlainGcode()) settings_->setLastJobHeader(document_->header());
+  toolOverrides_ = loadToolOverrides(path);
   watchFile(path);
   runnerStale_ = true;
   updateTitle();
@@ -885,7 +901,11 @@ void MainWindow::startCheckOn(const QString& text) {
   options.toolsWithBitmap = toolsWithBitmap_;
   ++checkGeneration_;
   checkInFlight_ = true;
-  checkWatcher_.setFuture(QtConcurrent::run(runCheck, text, document_->gcodeFirstLine(), options));
+  const int profileLimit = core::gcode::machineProfile(dialect_).maxToolStation;
+  const int stations = profileLimit > 0 ? std::min(profileLimit, setup_.tools.stations) : setup_.tools.stations;
+  options.turretStations = setup_.tools.stations;
+  checkWatcher_.setFuture(QtConcurrent::run(checkWithTools, text, document_->gcodeFirstLine(), options, setup_,
+                                            toolOverrides_, stations));
   QTimer::singleShot(300, this, &MainWindow::showBusyIndicator);
 }
 
@@ -898,8 +918,13 @@ void MainWindow::onCheckFinished() {
   }
   appliedGeneration_ = checkGeneration_;
   lastDiagnostics_ = document_->fileDiagnostics();
-  const auto found = checkWatcher_.result();
+  const JobToolsResult result = checkWatcher_.result();
+  const auto& found = result.diagnostics;
   lastDiagnostics_.insert(lastDiagnostics_.end(), found.begin(), found.end());
+  // The job's tools: library choices for the stations the program uses (a note per choice in Tool Select).
+  const bool toolsChanged = !sameTools(result.inference.setup, toolInference_.setup);
+  toolInference_ = result.inference;
+  if (toolsChanged) runner_->setMachineSetup(toolInference_.setup);
   std::stable_sort(lastDiagnostics_.begin(), lastDiagnostics_.end(), [](const auto& a, const auto& b) {
     return a.range.line != b.range.line ? a.range.line < b.range.line : a.range.column < b.range.column;
   });
@@ -928,7 +953,15 @@ void MainWindow::loadMachineSetup(const QString& dir) {
       if (core::isError(d.severity))
         problems << QString::fromStdString(core::formatMessage(d, Language::coreLang()));
   };
-  auto tools = core::io::readToolTable(folder.filePath(QStringLiteral("tools.cfg")).toStdString());
+  // machine.cfg first: its turret size bounds the tool table.
+  const QString machinePath = folder.filePath(QStringLiteral("machine.cfg"));
+  if (QFileInfo::exists(machinePath)) {
+    auto machine = core::io::readMachineConfig(machinePath.toStdString());
+    note(machine.diagnostics);
+    if (machine.value) setup_.machine = *machine.value;
+  }
+  auto tools = core::io::readToolTable(folder.filePath(QStringLiteral("tools.cfg")).toStdString(),
+                                       setup_.machine.turretStations);
   note(tools.diagnostics);
   if (tools.value) {
     setup_.tools = *tools.value;
@@ -942,14 +975,10 @@ void MainWindow::loadMachineSetup(const QString& dir) {
   auto offsets = core::io::readOffsetTable(folder.filePath(QStringLiteral("offset.cfg")).toStdString());
   note(offsets.diagnostics);
   if (offsets.value) setup_.offsets = *offsets.value;
-  const QString machinePath = folder.filePath(QStringLiteral("machine.cfg"));
-  if (QFileInfo::exists(machinePath)) {
-    auto machine = core::io::readMachineConfig(machinePath.toStdString());
-    note(machine.diagnostics);
-    if (machine.value) setup_.machine = *machine.value;
-  }
   setupProblems_ = problems.join(QLatin1Char('\n'));
   runner_->setMachineSetup(setup_);
+  toolInference_ = {};  // the next check decides the job's tools from the new tables
+  toolInference_.setup = setup_;
 }
 
 void MainWindow::syncRunner() {
@@ -1026,6 +1055,20 @@ void MainWindow::hideBanner() {
   bannerLabel_->clear();
 }
 
+void MainWindow::updateStockLabel() {
+  if (!stockLabel_ || !document_) return;
+  QStringList notes;
+  for (const core::Diagnostic& d : document_->stockNotes())
+    notes << QString::fromStdString(core::formatMessage(d, Language::coreLang()));
+  QString first = notes.isEmpty() ? QString() : notes.front();
+  if (!first.isEmpty()) first[0] = first[0].toUpper();  // "Stock Ø50 x 80 mm inferred from ..."
+  stockLabel_->setText(first);
+  stockLabel_->setToolTip(notes.join(QLatin1Char('\n')));
+  stockLabel_->setVisible(!notes.isEmpty());
+}
+
+QString MainWindow::stockSourceText() const { return stockLabel_ ? stockLabel_->text() : QString(); }
+
 QString MainWindow::bannerText() const { return banner_->isVisible() ? bannerLabel_->text() : QString(); }
 
 // ---------------------------------------------------------------- dialogs
@@ -1041,7 +1084,7 @@ render::ReportData MainWindow::reportData(bool withPart) const {
   data.date = QDate::currentDate();
   if (withPart) {
     QApplication::setOverrideCursor(Qt::WaitCursor);
-    data.part = render::finishedPart(data.program, setup_, dialect_, lang, &data.partNote);
+    data.part = render::finishedPart(data.program, toolInference_.setup, dialect_, lang, &data.partNote);
     QApplication::restoreOverrideCursor();
   }
   return data;
@@ -1153,7 +1196,8 @@ void MainWindow::showJobDetails() {
   JobDetailsDialog dlg(document_->header(), this);
   if (dlg.exec() != QDialog::Accepted) return;
   document_->setHeader(dlg.header());
-  settings_->setLastJobHeader(dlg.header());
+  if (!document_->isPlainGcode()) settings_->setLastJobHeader(dlg.header());
+  else if (!document_->isUntitled()) settings_->setJobDetailsFor(document_->filePath(), dlg.header());
   checkNow();
 }
 
@@ -1177,7 +1221,10 @@ void MainWindow::goToLine() {
 
 void MainWindow::showToolSelect() {
   ToolSelectDialog dlg(configDir_, this);
+  dlg.setProgramTools(toolInference_, toolOverrides_);
   if (dlg.exec() != QDialog::Accepted) return;
+  toolOverrides_ = dlg.jobOverrides();
+  saveToolOverrides(document_->filePath(), toolOverrides_);
   loadMachineSetup(dlg.savedConfigDir());
   runnerStale_ = true;
   checkNow();
@@ -1188,6 +1235,7 @@ void MainWindow::showOffsetDefine() {
   if (dlg.exec() != QDialog::Accepted) return;
   loadMachineSetup(dlg.savedConfigDir());
   runnerStale_ = true;
+  checkNow();  // empty offset rows may take a library tool's nose radius and tip
 }
 
 void MainWindow::showHelpContents() {

@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 
+#include "gui/job_tools.h"
 #include "gui/document.h"
 #include "gui/run_controller.h"
 #include "klueng/core/gcode/code_table.h"
@@ -64,6 +65,8 @@ class MainWindow : public QMainWindow {
   QSplitter* splitter() const { return splitter_; }
   // The banner above the editor (alarms, "fix the errors first"); empty when hidden.
   QString bannerText() const;
+  // Where the open program's stock came from (header, Job details, inferred ...).
+  QString stockSourceText() const;
   // Actions by object name ("actionGo", "actionSave", ...), for tests.
   QAction* action(const QString& objectName) const;
 
@@ -149,6 +152,7 @@ class MainWindow : public QMainWindow {
   void onCheckFailed(const QList<core::Diagnostic>& diags);
   void showBanner(const QString& text, bool error);
   void hideBanner();
+  void updateStockLabel();
   void setSpeedIndex(int index);
 
   std::unique_ptr<Settings> settings_;
@@ -163,6 +167,7 @@ class MainWindow : public QMainWindow {
   QWidget* banner_ = nullptr;
   QLabel* bannerLabel_ = nullptr;
   DialectOfferBar* dialectOffer_ = nullptr;
+  QLabel* stockLabel_ = nullptr;
   QProgressBar* busyBar_ = nullptr;
   QPointer<FindDialog> findDialog_;
   QPointer<HelpContents> help_;
@@ -194,7 +199,7 @@ class MainWindow : public QMainWindow {
   qsizetype pendingOffset_ = 0;
   bool fillingEditor_ = false;
   quint64 fillGeneration_ = 0;
-  QFutureWatcher<std::vector<core::Diagnostic>> checkWatcher_;
+  QFutureWatcher<JobToolsResult> checkWatcher_;
   bool checkPending_ = false;
   bool checkInFlight_ = false;
   bool loadInFlight_ = false;
@@ -206,8 +211,12 @@ class MainWindow : public QMainWindow {
   core::gcode::Dialect dialect_ = core::gcode::Dialect::Fanuc;
   QString configDir_;
   QString configDirOverride_;  // where the dialogs last saved the .cfg files
-  core::machine::MachineSetup setup_;
+  core::machine::MachineSetup setup_;   // tools.cfg / offset.cfg / machine.cfg as read
   std::optional<std::vector<int>> toolsWithBitmap_;
+  // Tools from the program (job_tools.h): the stations set for this file, and
+  // the last inference (its setup is what the run uses).
+  std::vector<core::machine::StationOverride> toolOverrides_;
+  core::machine::ToolInference toolInference_;
   QString setupProblems_;
   bool ignoreNextDiskChange_ = false;
   bool runnerStale_ = true;

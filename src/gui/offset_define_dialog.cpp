@@ -8,6 +8,7 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <algorithm>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -176,9 +177,14 @@ void OffsetDefineDialog::accept() {
 
 void OffsetDefineDialog::retranslate() {
   setWindowTitle(tr("Offset Define"));
-  intro_->setText(tr("Offsets 01–16: X offset (diameter, mm), Z offset (mm), nose radius R (mm) and the imaginary "
-                     "tool tip number T (0–9). Use offset nn with T..nn, e.g. T0101."));
+  intro_->setText(tr("Offsets 01–64: X offset (diameter, mm), Z offset (mm), nose radius R (mm) and the imaginary "
+                     "tool tip number T (0–9). Use offset nn with T..nn, e.g. T0101. Rows 17–64 that stay 0 0 0 0 "
+                     "are not written; a tool chosen from the program fills an empty row with its own R and tip."));
   table_->setHorizontalHeaderLabels({tr("X (dia.)"), tr("Z"), tr("R"), tr("Tip T"), tr("Tip")});
+  // The picture column is as wide as its header ("ปลายมีด" in Thai) with room to spare, never clipped.
+  QHeaderView* header = table_->horizontalHeader();
+  header->setSectionResizeMode(ColPicture, QHeaderView::Fixed);
+  header->resizeSection(ColPicture, std::max(48, header->fontMetrics().horizontalAdvance(tr("Tip")) + 28));
   QStringList rows;
   for (int row = 1; row <= io::kOffsetCount; ++row) rows << QStringLiteral("%1").arg(row, 2, 10, QLatin1Char('0'));
   table_->setVerticalHeaderLabels(rows);

@@ -117,10 +117,11 @@ void OutputView::rebuild() {
     header = controller_->jobHeader();
     machineCfg = controller_->machineSetup().machine;
   }
-  stock_->setShape(controller_ ? controller_->stockShape() : render::stockShapeFromBlank(header.diameterMm(), header.lengthMm()));
+  stock_->setShape(controller_ ? controller_->stockShape() : render::stockShapeFromBlank(header.diameterMm(), header.lengthMm(), header.boreMm()));
   const auto* sim = controller_ && !controller_->isBusy() ? controller_->cutSimulator() : nullptr;
   chuck_->setChuck(sim ? sim->chuck()
-                       : render::chuckFor(header.diameterMm(), header.lengthMm(), machineCfg.chuckGrip, machineCfg.chuckJawHeight));
+                       : render::chuckFor(header.diameterMm(), header.lengthMm(), machineCfg.chuckGrip, machineCfg.chuckJawHeight,
+                                        machineCfg.spindleBore));
   if (const auto* tl = controller_ ? controller_->timeline() : nullptr) {
     for (const auto& m : tl->moves)
       if (m.kind != core::machine::MoveKind::Dwell) {

@@ -119,7 +119,7 @@ const core::cut::ToolShape* RunController::currentToolShape() const {
 
 render::StockShape RunController::stockShape() const {
   if (!cut_) {
-    return render::stockShapeFromBlank(file_.header.diameterMm(), file_.header.lengthMm());
+    return render::stockShapeFromBlank(file_.header.diameterMm(), file_.header.lengthMm(), file_.header.boreMm());
   }
   if (busy_) return stockShape_;   // the worker owns the simulator: show the last shape
   const double volume = cut_->stock().volume();
@@ -269,6 +269,7 @@ void RunController::prepareAndThen(Pending what) {
     const core::gcode::Program program = core::gcode::parse(file.gcode, file.gcodeFirstLine);
     core::gcode::CheckOptions check;
     check.dialect = options.dialect;
+    check.turretStations = setup.tools.stations;
     std::vector<int> withBitmap;
     for (int t = 1; t <= core::io::kToolCount; ++t)
       if (!setup.tools.bitmap[static_cast<std::size_t>(t - 1)].empty()) withBitmap.push_back(t);

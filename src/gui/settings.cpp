@@ -1,11 +1,48 @@
 #include "gui/settings.h"
 
+#include <QCryptographicHash>
 #include <QFileInfo>
 
 namespace klueng::gui {
 
 namespace {
 QString key(const char* k) { return QString::fromLatin1(k); }
+
+// One group per file: "jobs/<sha1 of the absolute path>" (a path's slashes would be groups).
+QString jobKey(const QString& path) {
+  const QByteArray abs = QFileInfo(path).absoluteFilePath().toUtf8();
+  return key("jobs/") + QString::fromLatin1(QCryptographicHash::hash(abs, QCryptographicHash::Sha1).toHex());
+}
+
+core::io::JobHeader readJob(QSettings& s, core::io::JobHeader h) {
+  h.project = s.value(key("project"), QString::fromStdString(h.project)).toString().toStdString();
+  h.part = s.value(key("part"), QString::fromStdString(h.part)).toString().toStdString();
+  h.material = s.value(key("material"), QString::fromStdString(h.material)).toString().toStdString();
+  h.programmer = s.value(key("programmer"), QString::fromStdString(h.programmer)).toString().toStdString();
+  const double dia = s.value(key("diameter"), h.diameter).toDouble();
+  const double len = s.value(key("length"), h.length).toDouble();
+  const double bore = s.value(key("bore"), 0.0).toDouble();
+  if (dia > 0) h.diameter = dia;
+  if (len > 0) h.length = len;
+  h.bore = bore > 0 && bore < h.diameter ? bore : 0.0;
+  h.diameterUnit = s.value(key("diameterInch"), false).toBool() ? core::io::LengthUnit::Inch
+                                                                : core::io::LengthUnit::Millimetre;
+  h.lengthUnit = s.value(key("lengthInch"), false).toBool() ? core::io::LengthUnit::Inch
+                                                            : core::io::LengthUnit::Millimetre;
+  return h;
+}
+
+void writeJob(QSettings& s, const core::io::JobHeader& h) {
+  s.setValue(key("project"), QString::fromStdString(h.project));
+  s.setValue(key("part"), QString::fromStdString(h.part));
+  s.setValue(key("material"), QString::fromStdString(h.material));
+  s.setValue(key("programmer"), QString::fromStdString(h.programmer));
+  s.setValue(key("diameter"), h.diameter);
+  s.setValue(key("length"), h.length);
+  s.setValue(key("bore"), h.bore);
+  s.setValue(key("diameterInch"), h.diameterUnit == core::io::LengthUnit::Inch);
+  s.setValue(key("lengthInch"), h.lengthUnit == core::io::LengthUnit::Inch);
+}
 }  // namespace
 
 Settings::Settings() : settings_(QStringLiteral("Klueng"), QStringLiteral("klueng")) {}
@@ -53,34 +90,33 @@ QByteArray Settings::splitterState() const { return settings_.value(key("window/
 void Settings::setSplitterState(const QByteArray& s) { settings_.setValue(key("window/splitter"), s); }
 
 core::io::JobHeader Settings::lastJobHeader() const {
-  core::io::JobHeader h;
   settings_.beginGroup(key("job"));
-  h.project = settings_.value(key("project")).toString().toStdString();
-  h.part = settings_.value(key("part")).toString().toStdString();
-  h.material = settings_.value(key("material")).toString().toStdString();
-  h.programmer = settings_.value(key("programmer")).toString().toStdString();
-  const double dia = settings_.value(key("diameter"), h.diameter).toDouble();
-  const double len = settings_.value(key("length"), h.length).toDouble();
-  if (dia > 0) h.diameter = dia;
-  if (len > 0) h.length = len;
-  h.diameterUnit = settings_.value(key("diameterInch"), false).toBool() ? core::io::LengthUnit::Inch
-                                                                       : core::io::LengthUnit::Millimetre;
-  h.lengthUnit = settings_.value(key("lengthInch"), false).toBool() ? core::io::LengthUnit::Inch
-                                                                   : core::io::LengthUnit::Millimetre;
+  const core::io::JobHeader h = readJob(settings_, {});
   settings_.endGroup();
   return h;
 }
 
 void Settings::setLastJobHeader(const core::io::JobHeader& h) {
   settings_.beginGroup(key("job"));
-  settings_.setValue(key("project"), QString::fromStdString(h.project));
-  settings_.setValue(key("part"), QString::fromStdString(h.part));
-  settings_.setValue(key("material"), QString::fromStdString(h.material));
-  settings_.setValue(key("programmer"), QString::fromStdString(h.programmer));
-  settings_.setValue(key("diameter"), h.diameter);
-  settings_.setValue(key("length"), h.length);
-  settings_.setValue(key("diameterInch"), h.diameterUnit == core::io::LengthUnit::Inch);
-  settings_.setValue(key("lengthInch"), h.lengthUnit == core::io::LengthUnit::Inch);
+  writeJob(settings_, h);
+  settings_.endGroup();
+}
+
+std::optional<core::io::JobHeader> Settings::jobDetailsFor(const QString& path) const {
+  settings_.beginGroup(jobKey(path));
+  std::optional<core::io::JobHeader> h;
+  if (settings_.contains(key("diameter"))) {
+    h = readJob(settings_, {});
+    h->stockSource = core::io::StockSource::JobDetails;
+  }
+  settings_.endGroup();
+  return h;
+}
+
+void Settings::setJobDetailsFor(const QString& path, const core::io::JobHeader& h) {
+  settings_.beginGroup(jobKey(path));
+  settings_.setValue(key("path"), QFileInfo(path).absoluteFilePath());
+  writeJob(settings_, h);
   settings_.endGroup();
 }
 

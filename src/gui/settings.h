@@ -6,6 +6,7 @@
 #include <QSettings>
 #include <QString>
 #include <QStringList>
+#include <optional>
 
 #include "klueng/core/gcode/code_table.h"
 #include "klueng/core/io/program_file.h"
@@ -36,9 +37,14 @@ class Settings {
   QByteArray splitterState() const;
   void setSplitterState(const QByteArray& s);
 
-  // Stock and job details used for plain G-code files and new programs (SPEC 2 ext).
+  // Job details for new programs; a plain file takes only its text fields
+  // (project, programmer ...), never its stock (SPEC 2 ext).
   core::io::JobHeader lastJobHeader() const;
   void setLastJobHeader(const core::io::JobHeader& h);
+  // Job details set for one plain G-code file, keyed by its absolute path
+  // (stockSource = JobDetails); nullopt when none were set.
+  std::optional<core::io::JobHeader> jobDetailsFor(const QString& path) const;
+  void setJobDetailsFor(const QString& path, const core::io::JobHeader& h);
 
   bool optionalStop() const;
   void setOptionalStop(bool on);

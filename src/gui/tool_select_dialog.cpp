@@ -1,5 +1,7 @@
 #include "gui/tool_select_dialog.h"
 
+#include <QCheckBox>
+#include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QEvent>
@@ -18,6 +20,7 @@
 
 #include "gui/language.h"
 #include "klueng/core/io/program_file.h"
+#include "klueng/core/io/tool_library.h"
 #include "klueng/core/messages.h"
 #include "render/lathe_painters.h"
 
@@ -65,15 +68,20 @@ class ToolPreview : public QWidget {
       return;
     }
     const QImage& img = sprite_.image();
-    const double scale = std::max(1.0, std::floor(std::min((width() - 40.0) / img.width(), (height() - 40.0) / img.height())));
+    // True scale: screen pixels per millimetre, the same on both axes, whatever
+    // the bitmap's own resolution (2 px/mm seed bitmaps, 10 px/mm library tools).
+    const double ppm = sprite_.pixelsPerMm();
+    const double mmW = img.width() / ppm, mmH = img.height() / ppm;
+    const double mm = std::min((width() - 40.0) / mmW, (height() - 40.0) / mmH);
+    const double scale = mm / ppm;  // screen pixels per bitmap pixel
     const QSizeF size(img.width() * scale, img.height() * scale);
     const QPointF origin((width() - size.width()) / 2.0, (height() - size.height()) / 2.0);
-    // 1 mm grid (2 pixels) behind the bitmap.
+    // 1 mm grid (5 mm when 1 mm is too fine to see) behind the bitmap.
     p.setPen(QColor(235, 235, 235));
-    const double mm = scale * render::ToolSprite::pixelsPerMm;
-    for (double x = origin.x(); x <= origin.x() + size.width() + 0.5; x += mm) p.drawLine(QPointF(x, origin.y()), QPointF(x, origin.y() + size.height()));
-    for (double y = origin.y(); y <= origin.y() + size.height() + 0.5; y += mm) p.drawLine(QPointF(origin.x(), y), QPointF(origin.x() + size.width(), y));
-    p.setRenderHint(QPainter::SmoothPixmapTransform, false);
+    const double step = mm >= 4.0 ? mm : 5.0 * mm;
+    for (double x = origin.x(); x <= origin.x() + size.width() + 0.5; x += step) p.drawLine(QPointF(x, origin.y()), QPointF(x, origin.y() + size.height()));
+    for (double y = origin.y(); y <= origin.y() + size.height() + 0.5; y += step) p.drawLine(QPointF(origin.x(), y), QPointF(origin.x() + size.width(), y));
+    p.setRenderHint(QPainter::SmoothPixmapTransform, scale < 1.0);
     p.drawImage(QRectF(origin, size), img);
     // Cutting-edge bounding box and the controlled point.
     const QRect box = sprite_.cuttingEdgeBox();
@@ -109,8 +117,18 @@ ToolSelectDialog::ToolSelectDialog(const QString& configDir, QWidget* parent)
   for (auto& d : offsets.diagnostics) loadDiagnostics_.push_back(d);
 
   list_ = new QListWidget(this);
-  list_->setMaximumWidth(260);
-  for (int t = 1; t <= io::kToolCount; ++t) list_->addItem(QString());
+  list_->setMinimumWidth(300);
+  list_->setMaximumWidth(380);
+  for (int t = 1; t <= stationCount(); ++t) list_->addItem(QString());
+  libraryLabel_ = new QLabel(this);
+  libraryCombo_ = new QComboBox(this);
+  libraryCombo_->addItem(QString(), QString());
+  for (const io::LibraryTool& t : io::shippedToolLibrary().tools)
+    libraryCombo_->addItem(QString(), QString::fromStdString(t.id));
+  jobOnly_ = new QCheckBox(this);
+  choice_ = new QLabel(this);
+  choice_->setWordWrap(true);
+  choice_->setStyleSheet(QStringLiteral("color: #0050a0"));
   nameLabel_ = new QLabel(this);
   nameEdit_ = new QLineEdit(this);
   browseButton_ = new QPushButton(this);
@@ -125,18 +143,22 @@ ToolSelectDialog::ToolSelectDialog(const QString& configDir, QWidget* parent)
   buttons_ = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
 
   auto* right = new QGridLayout;
-  right->addWidget(nameLabel_, 0, 0);
+  right->addWidget(libraryLabel_, 0, 0);
+  right->addWidget(libraryCombo_, 0, 1);
+  right->addWidget(nameLabel_, 1, 0);
   auto* nameRow = new QHBoxLayout;
   nameRow->addWidget(nameEdit_, 1);
   nameRow->addWidget(browseButton_);
-  right->addLayout(nameRow, 0, 1);
-  right->addWidget(offsetLabel_, 1, 0);
+  right->addLayout(nameRow, 1, 1);
+  right->addWidget(jobOnly_, 2, 1);
+  right->addWidget(offsetLabel_, 3, 0);
   auto* offsetRow = new QHBoxLayout;
   offsetRow->addWidget(offsetSpin_);
   offsetRow->addWidget(tipInfo_, 1);
-  right->addLayout(offsetRow, 1, 1);
-  right->addWidget(preview_, 2, 0, 1, 2);
-  right->setRowStretch(2, 1);
+  right->addLayout(offsetRow, 3, 1);
+  right->addWidget(choice_, 4, 0, 1, 2);
+  right->addWidget(preview_, 5, 0, 1, 2);
+  right->setRowStretch(5, 1);
   auto* top = new QHBoxLayout;
   top->addWidget(list_);
   top->addLayout(right, 1);
@@ -148,20 +170,24 @@ ToolSelectDialog::ToolSelectDialog(const QString& configDir, QWidget* parent)
   connect(list_, &QListWidget::currentRowChanged, this, &ToolSelectDialog::onToolRowChanged);
   connect(nameEdit_, &QLineEdit::textEdited, this, &ToolSelectDialog::onNameEdited);
   connect(browseButton_, &QPushButton::clicked, this, &ToolSelectDialog::browse);
+  connect(libraryCombo_, &QComboBox::activated, this, &ToolSelectDialog::onLibraryChosen);
+  connect(jobOnly_, &QCheckBox::toggled, this, &ToolSelectDialog::onJobOnlyToggled);
   connect(offsetSpin_, &QSpinBox::valueChanged, this, &ToolSelectDialog::updatePreview);
   connect(buttons_, &QDialogButtonBox::accepted, this, &ToolSelectDialog::accept);
   connect(buttons_, &QDialogButtonBox::rejected, this, &QDialog::reject);
 
   retranslate();
   list_->setCurrentRow(0);
-  resize(720, 480);
+  resize(900, 560);
 }
 
 io::ToolTable ToolSelectDialog::toolTable() const { return tools_; }
 
 int ToolSelectDialog::currentTool() const { return list_->currentRow() + 1; }
 
-void ToolSelectDialog::setCurrentTool(int tool) { list_->setCurrentRow(std::clamp(tool, 1, io::kToolCount) - 1); }
+void ToolSelectDialog::setCurrentTool(int tool) { list_->setCurrentRow(std::clamp(tool, 1, stationCount()) - 1); }
+
+int ToolSelectDialog::stationCount() const { return std::clamp(tools_.stations, 1, io::kMaxStations); }
 
 void ToolSelectDialog::setBitmapName(int tool, const QString& name) {
   setCurrentTool(tool);
@@ -173,24 +199,29 @@ const render::ToolSprite& ToolSelectDialog::previewSprite() const { return previ
 
 QString ToolSelectDialog::resolve(const QString& name) const {
   if (name.isEmpty()) return {};
+  if (name.startsWith(QLatin1String(io::kLibraryPrefix.data()))) {
+    const io::LibraryTool* t = io::shippedToolLibrary().find(name.mid(int(io::kLibraryPrefix.size())).trimmed().toStdString());
+    return t ? QString::fromStdString(io::shippedToolLibrary().bitmapPath(*t)) : QString();
+  }
   if (QFileInfo(name).isAbsolute()) return name;
   return QDir(configDir_).filePath(name);
 }
 
 void ToolSelectDialog::onToolRowChanged(int row) {
   if (row < 0) return;
-  nameEdit_->setText(QString::fromStdString(tools_.bitmap[static_cast<std::size_t>(row)]));
   // Tool n is usually used with offset n (T0101): preview with that offset's tip.
+  syncing_ = true;
   offsetSpin_->setValue(row + 1);
-  updatePreview();
+  syncing_ = false;
+  syncControls();
 }
 
 void ToolSelectDialog::onNameEdited(const QString& text) {
   const int row = list_->currentRow();
   if (row < 0) return;
   tools_.bitmap[static_cast<std::size_t>(row)] = text.trimmed().toStdString();
+  setOverride(row + 1, {});  // typing a file name sets the station in tools.cfg
   retranslate();
-  updatePreview();
 }
 
 void ToolSelectDialog::browse() {
@@ -207,9 +238,16 @@ void ToolSelectDialog::browse() {
 void ToolSelectDialog::updatePreview() {
   const int row = list_->currentRow();
   if (row < 0) return;
-  const io::Offset& off = offsets_.at(offsetSpin_->value());
+  const QString name = shownEntry(row + 1);
+  const io::LibraryTool* libraryTool =
+      name.startsWith(QLatin1String(io::kLibraryPrefix.data()))
+          ? io::shippedToolLibrary().find(name.mid(int(io::kLibraryPrefix.size())).trimmed().toStdString())
+          : nullptr;
+  io::Offset off = inference_.setup.offsets.at(offsetSpin_->value());
+  const io::Offset& own = offsets_.at(offsetSpin_->value());
+  if (own.x != 0.0 || own.z != 0.0 || own.r != 0.0 || own.tip != 0) off = own;
+  else if (libraryTool) off = io::Offset{0.0, 0.0, libraryTool->noseRadius, libraryTool->tip};
   tipInfo_->setText(tr("tip %1, nose radius %2 mm").arg(off.tip).arg(off.r, 0, 'f', 3));
-  const QString name = nameEdit_->text().trimmed();
   if (name.isEmpty()) {
     preview_->setSprite(render::ToolSprite(), tr("Tool %1 has no bitmap.").arg(row + 1, 2, 10, QLatin1Char('0')));
     return;
@@ -222,25 +260,124 @@ void ToolSelectDialog::updatePreview() {
     preview_->setSprite(render::ToolSprite(), why);
     return;
   }
-  render::ToolSprite sprite = render::ToolSprite::fromImage(*image.value, off.tip);
+  const double ppm = libraryTool ? libraryTool->pixelsPerMm : render::ToolSprite::seedPixelsPerMm;
+  render::ToolSprite sprite = render::ToolSprite::fromImage(*image.value, off.tip, ppm);
   const QString info = sprite.cuttingEdgeBox().isEmpty()
                            ? tr("No cutting-edge pixels: every pixel is black (holder) or white (empty).")
-                           : tr("%1 × %2 pixels = %3 × %4 mm; red cross = controlled point for tip %5")
+                           : tr("%1 × %2 pixels at %3 px/mm = %4 × %5 mm; red cross = controlled point for tip %6")
                                  .arg(image.value->width)
                                  .arg(image.value->height)
-                                 .arg(image.value->width / render::ToolSprite::pixelsPerMm)
-                                 .arg(image.value->height / render::ToolSprite::pixelsPerMm)
+                                 .arg(ppm)
+                                 .arg(image.value->width / ppm)
+                                 .arg(image.value->height / ppm)
                                  .arg(off.tip);
   preview_->setSprite(sprite, info);
+}
+
+void ToolSelectDialog::setProgramTools(const core::machine::ToolInference& inference,
+                                       const std::vector<core::machine::StationOverride>& overrides) {
+  inference_ = inference;
+  overrides_ = overrides;
+  retranslate();
+}
+
+std::vector<core::machine::StationOverride> ToolSelectDialog::jobOverrides() const { return overrides_; }
+
+QString ToolSelectDialog::overrideOf(int tool) const {
+  for (const auto& o : overrides_)
+    if (o.station == tool) return QString::fromStdString(o.libraryId);
+  return {};
+}
+
+void ToolSelectDialog::setOverride(int tool, const QString& id) {
+  std::erase_if(overrides_, [tool](const core::machine::StationOverride& o) { return o.station == tool; });
+  if (!id.isEmpty()) overrides_.push_back({tool, id.toStdString()});
+}
+
+QString ToolSelectDialog::shownEntry(int tool) const {
+  if (const QString o = overrideOf(tool); !o.isEmpty()) return QString::fromLatin1(io::kLibraryPrefix.data()) + o;
+  if (const auto* c = inference_.choiceFor(tool); c && c->reason != core::machine::ToolReason::Override)
+    return QString::fromLatin1(io::kLibraryPrefix.data()) + QString::fromStdString(c->libraryId);
+  return QString::fromStdString(tools_.bitmap[static_cast<std::size_t>(tool - 1)]);
+}
+
+QString ToolSelectDialog::choiceText() const { return choice_->text(); }
+
+void ToolSelectDialog::syncControls() {
+  const int row = list_->currentRow();
+  if (row < 0) return;
+  const int tool = row + 1;
+  const QString entry = shownEntry(tool);
+  syncing_ = true;
+  nameEdit_->setText(QString::fromStdString(tools_.bitmap[static_cast<std::size_t>(row)]));
+  const QString id = entry.startsWith(QLatin1String(io::kLibraryPrefix.data()))
+                         ? entry.mid(int(io::kLibraryPrefix.size())).trimmed() : QString();
+  const int index = libraryCombo_->findData(id);
+  libraryCombo_->setCurrentIndex(index < 0 ? 0 : index);
+  jobOnly_->setChecked(!overrideOf(tool).isEmpty() || jobOnlyPending_ == tool);
+  syncing_ = false;
+  const auto* c = inference_.choiceFor(tool);
+  if (!overrideOf(tool).isEmpty()) {
+    choice_->setText(tr("Set for this program only: %1 (tools.cfg has: %2)")
+                         .arg(overrideOf(tool))
+                         .arg(nameEdit_->text().isEmpty() ? tr("(none)") : nameEdit_->text()));
+  } else if (c) {
+    const QString why = QString::fromStdString(core::formatMessage(c->note(), Language::coreLang()));
+    choice_->setText(tr("Chosen from the program: %1").arg(why));
+  } else {
+    choice_->clear();
+  }
+  choice_->setVisible(!choice_->text().isEmpty());
+  updatePreview();
+}
+
+void ToolSelectDialog::setLibraryTool(int tool, const QString& id, bool jobOnly) {
+  setCurrentTool(tool);
+  jobOnly_->setChecked(jobOnly);
+  const int index = libraryCombo_->findData(id);
+  libraryCombo_->setCurrentIndex(index < 0 ? 0 : index);
+  onLibraryChosen(libraryCombo_->currentIndex());
+}
+
+void ToolSelectDialog::onLibraryChosen(int index) {
+  const int row = list_->currentRow();
+  if (row < 0 || index < 0) return;
+  const QString id = libraryCombo_->itemData(index).toString();
+  jobOnlyPending_ = 0;
+  if (jobOnly_->isChecked()) {
+    setOverride(row + 1, id);
+  } else {
+    setOverride(row + 1, {});
+    if (!id.isEmpty()) {
+      const io::LibraryTool* t = io::shippedToolLibrary().find(id.toStdString());
+      if (t) tools_.setLibraryTool(row + 1, t->id, io::shippedToolLibrary().bitmapPath(*t), t->pixelsPerMm);
+    }
+  }
+  retranslate();
+}
+
+void ToolSelectDialog::onJobOnlyToggled(bool on) {
+  if (syncing_) return;
+  const int row = list_->currentRow();
+  if (row < 0) return;
+  const QString id = libraryCombo_->currentData().toString();
+  jobOnlyPending_ = on && id.isEmpty() ? row + 1 : 0;
+  setOverride(row + 1, on ? id : QString());
+  retranslate();
 }
 
 void ToolSelectDialog::accept() {
   // Every named bitmap must load, so the saved table is one the loader accepts.
   QStringList problems;
-  for (int t = 1; t <= io::kToolCount; ++t) {
+  for (int t = 1; t <= stationCount(); ++t) {
     const QString name = QString::fromStdString(tools_.bitmap[static_cast<std::size_t>(t - 1)]);
     if (name.isEmpty()) continue;
-    const auto image = io::readImage(resolve(name).toStdString());
+    const QString path = resolve(name);
+    if (path.isEmpty()) {
+      problems << tr("Tool %1: %2 is not in the tool library").arg(t, 2, 10, QLatin1Char('0')).arg(name);
+      continue;
+    }
+    const auto image = io::readImage(path.toStdString());
     if (!image.value)
       problems << tr("Tool %1: %2").arg(t, 2, 10, QLatin1Char('0'))
                       .arg(image.diagnostics.empty() ? name
@@ -261,13 +398,15 @@ void ToolSelectDialog::accept() {
     // A per-user copy: names relative to the old folder must still find their bitmaps.
     for (auto& name : out.bitmap) {
       const QString q = QString::fromStdString(name);
-      if (q.isEmpty() || QFileInfo(q).isAbsolute() || QFileInfo::exists(QDir(target).filePath(q))) continue;
+      if (q.isEmpty() || q.startsWith(QLatin1String(io::kLibraryPrefix.data())) || QFileInfo(q).isAbsolute() ||
+          QFileInfo::exists(QDir(target).filePath(q)))
+        continue;
       name = QFileInfo(resolve(q)).absoluteFilePath().toStdString();
     }
   }
   out.folder = target.toStdString();
   const std::string text = io::formatToolTable(out);
-  const auto check = io::parseToolTable(text, out.folder, "tools.cfg");
+  const auto check = io::parseToolTable(text, out.folder, "tools.cfg", stationCount());
   if (!check.ok()) {
     QMessageBox::warning(this, windowTitle(),
                          QString::fromStdString(core::formatMessage(check.diagnostics.front(), Language::coreLang())));
@@ -289,16 +428,30 @@ void ToolSelectDialog::retranslate() {
   browseButton_->setText(tr("Browse..."));
   offsetLabel_->setText(tr("Preview with offset:"));
   nameEdit_->setPlaceholderText(tr("e.g. resources/tools/turning.bmp"));
-  for (int t = 1; t <= io::kToolCount; ++t) {
-    const QString name = QString::fromStdString(tools_.bitmap[static_cast<std::size_t>(t - 1)]);
-    list_->item(t - 1)->setText(tr("Tool %1: %2").arg(t, 2, 10, QLatin1Char('0')).arg(name.isEmpty() ? tr("(none)") : QFileInfo(name).fileName()));
+  libraryLabel_->setText(tr("Library tool:"));
+  jobOnly_->setText(tr("Only for this program (tools.cfg is not changed)"));
+  libraryCombo_->setItemText(0, tr("(a bitmap file, below)"));
+  const bool th = Language::coreLang() == core::Lang::Th;
+  for (int i = 1; i < libraryCombo_->count(); ++i) {
+    const io::LibraryTool* t = io::shippedToolLibrary().find(libraryCombo_->itemData(i).toString().toStdString());
+    if (t) libraryCombo_->setItemText(i, QStringLiteral("%1 — %2").arg(QString::fromStdString(t->id),
+                                                                     QString::fromStdString(th ? t->nameTh : t->nameEn)));
+  }
+  for (int t = 1; t <= stationCount(); ++t) {
+    const QString entry = shownEntry(t);
+    QString name = entry.isEmpty() ? tr("(none)") : QFileInfo(entry).fileName();
+    if (entry.startsWith(QLatin1String(io::kLibraryPrefix.data()))) name = entry.mid(int(io::kLibraryPrefix.size()));
+    QString text = tr("Tool %1: %2").arg(t, 2, 10, QLatin1Char('0')).arg(name);
+    if (!overrideOf(t).isEmpty()) text += tr(" (this program)");
+    else if (inference_.choiceFor(t)) text += tr(" (from the program)");
+    list_->item(t - 1)->setText(text);
   }
   QStringList lines;
   for (const auto& d : loadDiagnostics_)
     if (core::isError(d.severity)) lines << QString::fromStdString(core::formatMessage(d, Language::coreLang()));
   problems_->setText(lines.join(QLatin1Char('\n')));
   problems_->setVisible(!lines.isEmpty());
-  if (list_->currentRow() >= 0) updatePreview();
+  if (list_->currentRow() >= 0) syncControls();
 }
 
 void ToolSelectDialog::changeEvent(QEvent* event) {

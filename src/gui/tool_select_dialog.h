@@ -1,7 +1,9 @@
 #pragma once
-// Tool Select (SPEC 11-12): tools 01-08 -> bitmap files, with a live preview
-// of the selected bitmap and its controlled point for the tip of the chosen
-// offset; Browse... for .bmp/.png.
+// Tool Select (SPEC 11-12): every station of the turret -> a bitmap file or a
+// tool of the library (docs/tools.md), with a live preview at the tool's true
+// scale and its controlled point for the tip of the chosen offset; Browse...
+// for .bmp/.png. The tools the program got from the library (tool_inference.h)
+// are marked with their reason; a station can be set for this program only.
 //
 // Public API
 //   ToolSelectDialog dlg(configDir, parent);   reads configDir/tools.cfg and offset.cfg
@@ -9,7 +11,12 @@
 //   toolTable()            the edited table (names as written, folder = savedConfigDir())
 //   savedConfigDir()       where tools.cfg went: configDir, or the per-user copy
 //                          (userConfigDir()) when configDir is read-only
-//   setCurrentTool(n) / currentTool()   1..8
+//   setCurrentTool(n) / currentTool()   1..stations
+//   stationCount()         list rows (the turret)
+//   setProgramTools(inference, overrides)  the program's choices and this file's overrides
+//   jobOverrides()         the stations set for this program only (after exec)
+//   setLibraryTool(tool, id, jobOnly)      as if chosen in the Library box (tests)
+//   choiceText()           the "chosen from the program" line shown (tests)
 //   setBitmapName(tool, name)           as if typed (tests)
 //   previewSprite()        the sprite shown (tests)
 //   loadDiagnostics()      problems found reading the files (shown in the dialog)
@@ -22,8 +29,10 @@
 
 #include "klueng/core/diagnostic.h"
 #include "klueng/core/io/tool_config.h"
+#include "klueng/core/machine/tool_inference.h"
 #include "render/tool_sprite.h"
 
+class QCheckBox;
 class QComboBox;
 class QLabel;
 class QLineEdit;
@@ -50,6 +59,12 @@ class ToolSelectDialog : public QDialog {
   void setBitmapName(int tool, const QString& name);
   const render::ToolSprite& previewSprite() const;
   QList<core::Diagnostic> loadDiagnostics() const { return loadDiagnostics_; }
+  int stationCount() const;
+  void setProgramTools(const core::machine::ToolInference& inference,
+                       const std::vector<core::machine::StationOverride>& overrides);
+  std::vector<core::machine::StationOverride> jobOverrides() const;
+  void setLibraryTool(int tool, const QString& id, bool jobOnly);
+  QString choiceText() const;
 
  public slots:
   void accept() override;
@@ -64,14 +79,29 @@ class ToolSelectDialog : public QDialog {
   void onToolRowChanged(int row);
   void onNameEdited(const QString& text);
   QString resolve(const QString& name) const;
+  void onLibraryChosen(int index);
+  void onJobOnlyToggled(bool on);
+  // What the station uses for this program: an override, the program's choice, or tools.cfg.
+  QString shownEntry(int tool) const;
+  QString overrideOf(int tool) const;
+  void setOverride(int tool, const QString& id);
+  void syncControls();
 
   QString configDir_;
   QString savedDir_;
   core::io::ToolTable tools_;
   core::io::OffsetTable offsets_;
   QList<core::Diagnostic> loadDiagnostics_;
+  core::machine::ToolInference inference_;
+  std::vector<core::machine::StationOverride> overrides_;
+  bool syncing_ = false;
+  int jobOnlyPending_ = 0;  // station ticked "only for this program" before a library tool was chosen
 
   QListWidget* list_ = nullptr;
+  QLabel* libraryLabel_ = nullptr;
+  QComboBox* libraryCombo_ = nullptr;
+  QCheckBox* jobOnly_ = nullptr;
+  QLabel* choice_ = nullptr;
   QLabel* nameLabel_ = nullptr;
   QLineEdit* nameEdit_ = nullptr;
   QLabel* browseHint_ = nullptr;

@@ -21,10 +21,11 @@ QRectF StockShape::boundingRect() const {
 
 bool StockShape::containsMaterial(double z, double radius) const { return fill.contains(toScene(z, radius)); }
 
-StockShape stockShapeFromBlank(double diameterMm, double lengthMm) {
+StockShape stockShapeFromBlank(double diameterMm, double lengthMm, double boreMm) {
   StockShape s;
   const double r = diameterMm / 2.0;
-  s.blank = QRectF(QPointF(-lengthMm, -r), QPointF(0.0, 0.0));
+  const double b = boreMm > 0.0 && boreMm < diameterMm ? boreMm / 2.0 : 0.0;
+  s.blank = QRectF(QPointF(-lengthMm, -r), QPointF(0.0, -b));  // a tube leaves its bore empty
   s.fill.addRect(s.blank);
   s.outline.addRect(s.blank);
   return s;
@@ -71,7 +72,7 @@ void addSeam(QPainterPath& outline, double z, Intervals left, Intervals right) {
 StockShape stockShapeFromStock(const core::cut::Stock& stock) {
   StockShape s;
   const double r = stock.diameter() / 2.0;
-  s.blank = QRectF(QPointF(-stock.length(), -r), QPointF(0.0, 0.0));
+  s.blank = QRectF(QPointF(-stock.length(), -r), QPointF(0.0, -stock.bore() / 2.0));  // the uncut ring of a tube
   const int n = stock.columnCount();
   const double dz = stock.resolution();
   Intervals previous;
@@ -126,7 +127,7 @@ void paintStock(QPainter& painter, const StockShape& stock, bool showBlankOutlin
   painter.save();
   if (showBlankOutline && !stock.blank.isEmpty()) {
     // What was removed stays visible as a faint outline of the bar.
-    const QRectF lower(stock.blank.left(), 0.0, stock.blank.width(), stock.blank.height());
+    const QRectF lower(stock.blank.left(), -stock.blank.bottom(), stock.blank.width(), stock.blank.height());
     painter.setPen(cosmeticPen(pal.stockEdge.lighter(220), 1.0, Qt::DotLine));
     painter.setBrush(pal.removedFill);
     painter.drawRect(stock.blank);
@@ -152,8 +153,10 @@ void paintCentreLine(QPainter& painter, double zFrom, double zTo) {
   painter.restore();
 }
 
-core::cut::Chuck chuckFor(double stockDiameterMm, double stockLengthMm, double gripMm, double jawHeightMm) {
+core::cut::Chuck chuckFor(double stockDiameterMm, double stockLengthMm, double gripMm, double jawHeightMm,
+                          double spindleBoreMm) {
   core::cut::Chuck c;
+  c.spindleBoreRadius = std::max(0.0, spindleBoreMm / 2.0);
   c.stockLength = stockLengthMm;
   c.stockRadius = stockDiameterMm / 2.0;
   c.grip = gripMm;
@@ -175,9 +178,10 @@ void paintChuck(QPainter& painter, const core::cut::Chuck& c) {
     painter.setBrush(pal.chuckFill);
     painter.drawRect(QRectF(QPointF(c.jawZMin(), -sign * c.jawXMin()), QPointF(c.jawZMax(), -sign * c.jawXMax())).normalized());
   }
-  // The chuck body behind the bar's end, across the axis.
+  // The chuck body behind the bar's end: a ring around the spindle bore.
   painter.setBrush(pal.chuckFill.darker(130));
-  painter.drawRect(QRectF(QPointF(c.bodyZMin(), -c.bodyXMax()), QPointF(c.bodyZMax(), c.bodyXMax())));
+  for (double sign : {1.0, -1.0})
+    painter.drawRect(QRectF(QPointF(c.bodyZMin(), sign * c.bodyXMin()), QPointF(c.bodyZMax(), sign * c.bodyXMax())).normalized());
   painter.restore();
 }
 

@@ -50,14 +50,14 @@ const Palette& palette();
 struct StockShape {
   QPainterPath fill;       // union of rectangles: runs of equal columns x material intervals
   QPainterPath outline;    // the boundary of `fill` (no seams between runs)
-  QRectF blank;            // the uncut bar's upper half
+  QRectF blank;            // the uncut bar's upper half (a tube's: radii bore/2 .. diameter/2)
   bool isEmpty() const { return fill.isEmpty(); }
   QRectF boundingRect() const;       // both halves
   // Is the point (z, radius) material?  (Tests compare this with the core's part.)
   bool containsMaterial(double z, double radius) const;
 };
 
-StockShape stockShapeFromBlank(double diameterMm, double lengthMm);
+StockShape stockShapeFromBlank(double diameterMm, double lengthMm, double boreMm = 0.0);  // bore > 0: a tube
 StockShape stockShapeFromStock(const core::cut::Stock& stock);
 
 // Fills both halves of the stock section; `cosmetic` pens stay 1 px at any zoom.
@@ -65,6 +65,7 @@ void paintStock(QPainter& painter, const StockShape& stock, bool showBlankOutlin
 void paintCentreLine(QPainter& painter, double zFrom, double zTo);
 void paintChuck(QPainter& painter, const core::cut::Chuck& chuck);
 QRectF chuckRect(const core::cut::Chuck& chuck);   // both halves, scene units
-core::cut::Chuck chuckFor(double stockDiameterMm, double stockLengthMm, double gripMm, double jawHeightMm);
+core::cut::Chuck chuckFor(double stockDiameterMm, double stockLengthMm, double gripMm, double jawHeightMm,
+                          double spindleBoreMm = 40.0);
 
 }  // namespace klueng::render

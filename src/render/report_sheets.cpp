@@ -158,7 +158,7 @@ QString kluengVersion() { return QStringLiteral("Klueng %1").arg(QString::fromLa
 
 StockShape finishedPart(const core::io::ProgramFile& file, const core::machine::MachineSetup& setup,
                         core::gcode::Dialect dialect, ReportLanguage lang, QString* note) {
-  const StockShape blank = stockShapeFromBlank(file.header.diameterMm(), file.header.lengthMm());
+  const StockShape blank = stockShapeFromBlank(file.header.diameterMm(), file.header.lengthMm(), file.header.boreMm());
   if (file.header.diameterMm() <= 0 || file.header.lengthMm() <= 0) {
     if (note) *note = thai(lang) ? QStringLiteral("ขนาดชิ้นงานไม่ถูกต้อง") : QStringLiteral("The stock size is not valid.");
     return blank;
@@ -223,7 +223,9 @@ int paintProgramSheet(QPainter& painter, QPagedPaintDevice& device, const Report
       {t.project, qs(h.project)},
       {t.material, qs(h.material)},
       {t.part, qs(h.part)},
-      {t.diameter, number(h.diameterMm())},
+      // A tube as "118/Ø90" (outside/bore), as the stock line writes it (docs/program-file.md).
+      {t.diameter, h.boreMm() > 0 ? number(h.diameterMm()) + QStringLiteral("/\u00D8") + number(h.boreMm())
+                                  : number(h.diameterMm())},
       {t.programmer, qs(h.programmer)},
       {t.length, number(h.lengthMm())},
   }};

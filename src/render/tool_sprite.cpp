@@ -27,9 +27,10 @@ QPointF controlledPointForTip(const QRect& box, int tip) {
   return {x, y};
 }
 
-ToolSprite ToolSprite::fromImage(const core::io::RgbImage& rgb, int tip) {
+ToolSprite ToolSprite::fromImage(const core::io::RgbImage& rgb, int tip, double pixelsPerMm) {
   ToolSprite s;
   s.tip_ = tip;
+  s.ppm_ = pixelsPerMm > 0.0 ? pixelsPerMm : seedPixelsPerMm;
   if (rgb.width <= 0 || rgb.height <= 0) return s;
   s.image_ = QImage(rgb.width, rgb.height, QImage::Format_ARGB32);
   int minX = rgb.width, minY = rgb.height, maxX = -1, maxY = -1;
@@ -56,14 +57,14 @@ ToolSprite ToolSprite::fromImage(const core::io::RgbImage& rgb, int tip) {
 }
 
 ToolSprite ToolSprite::fromShape(const core::cut::ToolShape& shape) {
-  ToolSprite s = fromImage(shape.image, shape.tip);
+  ToolSprite s = fromImage(shape.image, shape.tip, shape.pixelsPerMm);
   s.controlPx_ = QPointF(shape.controlPixelX, shape.controlPixelY);
   return s;
 }
 
 QRectF ToolSprite::sceneRect(const QPointF& cp) const {
-  const QPointF topLeft = cp - controlPx_ / pixelsPerMm;
-  return {topLeft, QSizeF(image_.width() / pixelsPerMm, image_.height() / pixelsPerMm)};
+  const QPointF topLeft = cp - controlPx_ / ppm_;
+  return {topLeft, QSizeF(image_.width() / ppm_, image_.height() / ppm_)};
 }
 
 void ToolSprite::paint(QPainter& painter, const QPointF& cp) const {

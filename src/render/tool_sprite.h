@@ -1,6 +1,6 @@
 #pragma once
-// A tool bitmap ready to draw: white pixels transparent, 2 pixels per mm
-// (SPEC 11), with its controlled point for an imaginary-tip number.
+// A tool bitmap ready to draw: white pixels transparent, at its own
+// resolution (2 pixels per mm for the seed's bitmaps, SPEC 11; a library tool's own), with its controlled point for an imaginary-tip number.
 //
 // Public API
 //   ToolSprite::fromShape(shape)      from the core's cut::ToolShape (its bitmap and the
@@ -13,7 +13,7 @@
 //   paint(painter, controlledPointScene)  draws the tool, in scene millimetres, so
 //                      that its controlled point sits at that scene point
 //   sceneRect(controlledPointScene)       the rectangle paint() covers
-//   static pixelsPerMm == 2
+//   pixelsPerMm()      the bitmap's resolution (seedPixelsPerMm == 2 unless given)
 #include <QImage>
 #include <QPainter>
 #include <QPointF>
@@ -27,16 +27,17 @@ namespace klueng::render {
 
 class ToolSprite {
  public:
-  static constexpr double pixelsPerMm = 2.0;
+  static constexpr double seedPixelsPerMm = 2.0;
 
   ToolSprite() = default;
-  static ToolSprite fromImage(const core::io::RgbImage& rgb, int tip);
+  static ToolSprite fromImage(const core::io::RgbImage& rgb, int tip, double pixelsPerMm = seedPixelsPerMm);
   static ToolSprite fromShape(const core::cut::ToolShape& shape);
 
   bool isNull() const { return image_.isNull(); }
   const QImage& image() const { return image_; }
   QPointF controlledPointPx() const { return controlPx_; }
   int tip() const { return tip_; }
+  double pixelsPerMm() const { return ppm_; }
   // Cutting-edge pixels' bounding box in pixel coordinates (empty if the bitmap has none).
   QRect cuttingEdgeBox() const { return edgeBox_; }
 
@@ -48,6 +49,7 @@ class ToolSprite {
   QPointF controlPx_;
   QRect edgeBox_;
   int tip_ = 0;
+  double ppm_ = seedPixelsPerMm;
 };
 
 // The controlled point of a bitmap for a tip (pixel coordinates, y down): the

@@ -492,14 +492,16 @@ TEST(CliBadInput, RandomInvalidUtf8DoesNotCrash) {
   EXPECT_TRUE(run.exitCode == 0 || run.exitCode == 1) << run.exitCode;
 }
 
-TEST(CliBadInput, HeaderWithBadUnitDigit) {
+TEST(CliBadInput, HeaderWithBadUnitDigitIsReadAsPlainGcode) {
+  // SPEC 2 (ext): without sizes on lines 4 and 5 there is no header; a warning says why.
   TempDir dir;
   const std::string file = dir.write("unit.txt", "Job\nPart\nSteel\n250\n1100\nMe\nG00 X10.\n");
   const CliRun run = runCli("check " + quote(file));
-  EXPECT_EQ(run.exitCode, 1);
-  EXPECT_EQ(run.out, file + ":4:1: error F111: stock diameter: the unit digit must be 0 (inch) or 1 (mm), not '2'\n");
+  EXPECT_EQ(run.exitCode, 1);  // "Job" is not G-code
+  EXPECT_THAT(run.out, HasSubstr(file + ":4:1: warning F117: " + file +
+                                 ": read as a plain G-code file without a job header: line 4 ('250') is not a stock size"));
   const CliRun th = runCli("check --lang th " + quote(file));
-  EXPECT_THAT(th.out, HasSubstr("เส้นผ่านศูนย์กลางของชิ้นงาน"));
+  EXPECT_THAT(th.out, HasSubstr("ไม่มีส่วนหัวของงาน"));
 }
 
 TEST(CliBadInput, NegativeStockSizeIsRule13) {
@@ -513,10 +515,10 @@ TEST(CliBadInput, NegativeStockSizeIsRule13) {
 
 TEST(CliBadInput, MissingHeaderLines) {
   TempDir dir;
-  const std::string file = dir.write("short.txt", "Job\nPart\n");
+  const std::string file = dir.write("short.txt", "Job\nPart\nSteel\n150\n180");
   const CliRun run = runCli("check " + quote(file));
   EXPECT_EQ(run.exitCode, 1);
-  EXPECT_THAT(run.out, HasSubstr(file + ":2:5: error F110: "));
+  EXPECT_THAT(run.out, HasSubstr(file + ":5:4: error F110: "));
 }
 
 TEST(CliBadInput, FolderWithoutProgramsIsUnreadable) {
@@ -559,7 +561,7 @@ TEST(CliConfig, ToolsCfgGarbageLineAndMissingBitmap) {
 TEST(CliConfig, OffsetCfgGarbageAndExtraLines) {
   TempDir dir;
   std::string offsets = "0 0 0.8 3\n0 0 abc 4\n0 0 0 8 9\n";
-  for (int i = 4; i <= 16; ++i) offsets += "0 0 0 0\n";
+  for (int i = 4; i <= 64; ++i) offsets += "0 0 0 0\n";  // rows 17-64 are optional, 64 the last
   offsets += "this line is too many\n";
   const std::string config = dir.config({{"offset.cfg", offsets}});
   const CliRun run = runCli("check --config " + quote(config) + " " + quote(kSamples + "/01-step-shaft.txt"));
@@ -567,13 +569,13 @@ TEST(CliConfig, OffsetCfgGarbageAndExtraLines) {
   const std::string cfg = config + "/offset.cfg";
   EXPECT_THAT(run.out, HasSubstr(cfg + ":2:5: error F133: " + cfg + ": offset 02: 'abc' is not a number"));
   EXPECT_THAT(run.out, HasSubstr(cfg + ":3:9: error F132: "));
-  EXPECT_THAT(run.out, HasSubstr(cfg + ":17:1: warning F107: "));
+  EXPECT_THAT(run.out, HasSubstr(cfg + ":65:1: warning F107: "));
 }
 
 TEST(CliConfig, OffsetCfgExtraLinesAloneAreOnlyAWarning) {
   TempDir dir;
   std::string offsets;
-  for (int i = 1; i <= 16; ++i) offsets += "0 0 0.4 3\n";
+  for (int i = 1; i <= 64; ++i) offsets += "0 0 0.4 3\n";
   const std::string config = dir.config({{"offset.cfg", offsets + "0 0 0 0\n"}});
   const CliRun run = runCli("check --config " + quote(config) + " " + quote(kSamples + "/01-step-shaft.txt"));
   EXPECT_EQ(run.exitCode, 0) << run.out;

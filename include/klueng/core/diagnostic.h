@@ -41,6 +41,7 @@ struct Diagnostic {
 //   A2xx nose radius compensation alarms                    comp
 //   A3xx alarms that need the stock (collisions, cutting)   cut
 //   I1xx informational notes (e.g. G28 without axes)        any
+//   I4xx tools chosen from the program (notes)              io
 
 bool hasErrors(const std::vector<Diagnostic>& diags);
 

@@ -43,6 +43,13 @@ constexpr MessageText kMessages[] = {
      "ไม่มีเส้นผ่านศูนย์กลางของชิ้นงาน: บรรทัดที่ 4 ต้องมีหลักหน่วยตามด้วยตัวเลข เช่น 150 = 50 มม."},
     {"F116", "stock length is missing: line 5 must hold a unit digit and a number, e.g. 1100 = 100 mm",
      "ไม่มีความยาวของชิ้นงาน: บรรทัดที่ 5 ต้องมีหลักหน่วยตามด้วยตัวเลข เช่น 1100 = 100 มม."},
+    {"F117",
+     "{0}: read as a plain G-code file without a job header: line {2} ('{1}') is not a stock size "
+     "(a unit digit 0 = inch or 1 = mm, then the size, e.g. 150 = 50 mm)",
+     "{0}: อ่านเป็นไฟล์รหัสจีล้วนที่ไม่มีส่วนหัวของงาน: บรรทัดที่ {2} ('{1}') ไม่ใช่ขนาดชิ้นงาน "
+     "(หลักหน่วย 0 = นิ้ว หรือ 1 = มม. ตามด้วยขนาด เช่น 150 = 50 มม.)"},
+    {"F118", "stock bore: '{1}' must be a number greater than 0 and less than the diameter {2}",
+     "รูในของชิ้นงานท่อ: '{1}' ต้องเป็นตัวเลขที่มากกว่า 0 และน้อยกว่าเส้นผ่านศูนย์กลาง {2}"},
 
     // tools.cfg (SPEC 11).
     {"F120", "{0}: the tool table needs 8 lines (bitmaps of tools 01 to 08) but has {1}; tools {2} to 08 have no bitmap",
@@ -51,6 +58,8 @@ constexpr MessageText kMessages[] = {
      "{0}: มีดตัด {1}: ไม่พบไฟล์ภาพ '{2}'"},
     {"F122", "{0}: tool {1}: '{2}' is not a .bmp or .png file name",
      "{0}: มีดตัด {1}: '{2}' ไม่ใช่ชื่อไฟล์ภาพ .bmp หรือ .png"},
+    {"F123", "{0}: tool {1}: the tool library has no tool '{2}' (it has: {3})",
+     "{0}: มีดตัด {1}: ไม่มีมีดตัด '{2}' ในคลังมีดตัด (ที่มี: {3})"},
 
     // offset.cfg (SPEC 11).
     {"F130", "{0}: the offset table needs 16 lines (X Z R T of offsets 01 to 16) but has {1}; offsets {2} to 16 are set to 0 0 0 0",
@@ -75,6 +84,8 @@ constexpr MessageText kMessages[] = {
      "{0}: มีการกำหนด {1} ซ้ำสองครั้ง จะใช้ค่าหลัง"},
     {"F146", "{0}: travel limits: {1} must be less than {2}",
      "{0}: ระยะเคลื่อนที่สูงสุดของเครื่อง: {1} ต้องน้อยกว่า {2}"},
+    {"F147", "{0}: {1} must be a whole number from {3} to {4}, not {2}",
+     "{0}: {1} ต้องเป็นจำนวนเต็มตั้งแต่ {3} ถึง {4} ไม่ใช่ {2}"},
 
     // Tool bitmaps (SPEC 11).
     {"F150", "{0}: not a BMP or PNG image", "{0}: ไม่ใช่ไฟล์ภาพ BMP หรือ PNG"},
@@ -88,6 +99,59 @@ constexpr MessageText kMessages[] = {
     {"F155", "{0}: the PNG data is damaged ({1})", "{0}: ข้อมูล PNG เสียหาย ({1})"},
     {"F156", "{0}: a pixel uses colour {1}, but the palette has only {2} colours",
      "{0}: มีพิกเซลที่ใช้สีหมายเลข {1} แต่จานสีมีเพียง {2} สี"},
+
+    // Where a job's stock came from (SPEC 2 ext): notes, never errors. {0} is
+    // the stock as stockSizeText() writes it ("Ø50 x 100 mm", "Ø118/Ø90 x 80 mm").
+    {"I150", "stock {0} from the command line (--stock)", "ชิ้นงาน {0} จากบรรทัดคำสั่ง (--stock)"},
+    {"I151", "stock {0} from Job details set for this file",
+     "ชิ้นงาน {0} จากรายละเอียดงานที่ตั้งไว้สำหรับไฟล์นี้"},
+    {"I152", "stock {0} inferred from {1} (first approach)",
+     "ชิ้นงาน {0} ประมาณจาก {1} (ตำแหน่งเข้าหาชิ้นงานครั้งแรก)"},
+    {"I153", "stock {0} inferred from {1} (cycle start)",
+     "ชิ้นงาน {0} ประมาณจาก {1} (จุดเริ่มวัฏจักร)"},
+    {"I154", "bore Ø{0} inferred from {1} (work inside without drilling first: tube stock)",
+     "รูใน Ø{0} ประมาณจาก {1} (กลึงด้านในโดยไม่เจาะก่อน: ชิ้นงานท่อ)"},
+    {"I155", "stock {0} is the default: the program has no approach to infer it from; set it in Job details or with --stock",
+     "ชิ้นงาน {0} เป็นค่าเริ่มต้น: โปรแกรมไม่มีตำแหน่งเข้าหาชิ้นงานให้ประมาณได้ ตั้งค่าได้ที่รายละเอียดงานหรือ --stock"},
+    {"I156", "stock {0} from the file's job header", "ชิ้นงาน {0} จากส่วนหัวของงานในไฟล์"},
+    {"I157", "stock length {0}: the deepest cut Z{1} ({2}) + {3} for the cut-off + {4} held in the chuck",
+     "ความยาวชิ้นงาน {0}: ตัดลึกสุดที่ Z{1} ({2}) + {3} สำหรับการตัดขาด + {4} ส่วนที่หัวจับยึด"},
+    // The tool library, library.cfg (docs/tools.md).
+    {"F160", "{0}: a library line needs 9 fields separated by '|' (id | kind | px/mm | R | tip | size | bitmap | "
+             "English name | Thai name) but has {1}",
+     "{0}: บรรทัดของคลังมีดตัดต้องมี 9 ช่องคั่นด้วย '|' (รหัส | ชนิด | พิกเซล/มม. | R | ปลายมีด | ขนาด | "
+     "ไฟล์ภาพ | ชื่อภาษาอังกฤษ | ชื่อภาษาไทย) แต่มี {1} ช่อง"},
+    {"F161", "{0}: '{1}' is not a tool id (lowercase letters, digits, '-', '.' and '_')",
+     "{0}: '{1}' ไม่ใช่รหัสมีดตัด (ใช้ได้เฉพาะอักษรอังกฤษตัวเล็ก ตัวเลข '-' '.' และ '_')"},
+    {"F162", "{0}: the tool id '{1}' is already used on line {2}",
+     "{0}: รหัสมีดตัด '{1}' ถูกใช้แล้วในบรรทัดที่ {2}"},
+    {"F163", "{0}: '{1}' is not a tool kind (one of: {2})", "{0}: '{1}' ไม่ใช่ชนิดของมีดตัด (ใช้ได้: {2})"},
+    {"F164", "{0}: pixels per mm must be a number from 1 to 100, not '{1}'",
+     "{0}: จำนวนพิกเซลต่อมม. ต้องเป็นตัวเลข 1 ถึง 100 ไม่ใช่ '{1}'"},
+    {"F165", "{0}: {1} must be a number of 0 or more, not '{2}'",
+     "{0}: {1} ต้องเป็นตัวเลขตั้งแต่ 0 ขึ้นไป ไม่ใช่ '{2}'"},
+    {"F166", "{0}: the tip number must be 0 to 9, not '{1}'", "{0}: หมายเลขปลายมีดต้องเป็น 0 ถึง 9 ไม่ใช่ '{1}'"},
+    {"F167", "{0}: '{1}' is not a .bmp or .png file name", "{0}: '{1}' ไม่ใช่ชื่อไฟล์ภาพ .bmp หรือ .png"},
+    {"F168", "{0}: the tool needs an English and a Thai name", "{0}: มีดตัดต้องมีชื่อภาษาอังกฤษและชื่อภาษาไทย"},
+    {"F169", "{0}: tool '{1}': the bitmap '{2}' does not exist", "{0}: มีดตัด '{1}': ไม่พบไฟล์ภาพ '{2}'"},
+
+    // Tools chosen from the program (core/machine/tool_inference.h): notes, never errors.
+    // {0} station (2 digits), {1} library id, {2} what was seen, {3} file line.
+    {"I401", "T{0} = {1} (comment \"{2}\" on line {3})", "T{0} = {1} (หมายเหตุ \"{2}\" ในบรรทัดที่ {3})"},
+    {"I402", "T{0} = {1} (threading, {2} on line {3})", "T{0} = {1} (กลึงเกลียว {2} ในบรรทัดที่ {3})"},
+    {"I403", "T{0} = {1} (threading inside a bore, {2} on line {3})",
+     "T{0} = {1} (กลึงเกลียวใน {2} ในบรรทัดที่ {3})"},
+    {"I404", "T{0} = {1} (grooving cycle {2} on line {3})", "T{0} = {1} (วัฏจักรกลึงร่อง {2} ในบรรทัดที่ {3})"},
+    {"I405", "T{0} = {1} (drilling on the centre line, {2} on line {3})",
+     "T{0} = {1} (เจาะรูตามแนวศูนย์กลาง {2} ในบรรทัดที่ {3})"},
+    {"I406", "T{0} = {1} (cutting inside a bore, {2} on line {3})",
+     "T{0} = {1} (กลึงภายในรู (คว้าน) {2} ในบรรทัดที่ {3})"},
+    {"I407", "T{0} = {1} (plunge to {2} near the end of the program on line {3})",
+     "T{0} = {1} (ป้อนตัดลงถึง {2} ใกล้ท้ายโปรแกรม (ตัดขาด) ในบรรทัดที่ {3})"},
+    {"I408", "T{0} = {1} (outside turning, {2} on line {3})", "T{0} = {1} (กลึงผิวนอก {2} ในบรรทัดที่ {3})"},
+    {"I409", "T{0} = {1} (set for this job)", "T{0} = {1} (กำหนดไว้สำหรับงานนี้)"},
+    {"I410", "offset {0} was 0 0 0 0: nose radius {1} and tip {2} of {3} are used",
+     "ออฟเซต {0} เป็น 0 0 0 0: ใช้รัศมีจมูกมีด {1} และหมายเลขปลายมีด {2} ของ {3}"},
 };
 }  // namespace
 

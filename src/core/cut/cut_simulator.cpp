@@ -117,6 +117,7 @@ CutSetup CutSetup::from(const io::JobHeader& header, const machine::MachineSetup
   CutSetup s;
   s.stockDiameter = header.diameterMm();
   s.stockLength = header.lengthMm();
+  s.stockBore = header.boreMm();
   s.machine = setup.machine;
   s.tools = setup.tools;
   s.offsets = setup.offsets;
@@ -135,7 +136,7 @@ const ToolShape* ToolLibrary::get(int tool, int offset) {
     const std::string path = tools_.bitmapPath(tool);
     if (!path.empty()) {
       const io::Offset o = offset >= 1 && offset <= io::kOffsetCount ? offsets_.at(offset) : io::Offset{};
-      io::ReadResult<ToolShape> r = loadToolShape(path, o.r, o.tip);
+      io::ReadResult<ToolShape> r = loadToolShape(path, o.r, o.tip, tools_.pixelsPerMmOf(tool));
       // One report per bitmap file, not one per offset it is used with.
       bool known = false;
       for (const auto& [k, v] : cache_) known = known || (k.first == tool);
@@ -159,12 +160,13 @@ CutSimulator::CutSimulator(const machine::Timeline& timeline, const CutSetup& se
 }
 
 void CutSimulator::reset() {
-  stock_ = Stock(setup_.stockDiameter, setup_.stockLength, options_.resolution);
+  stock_ = Stock(setup_.stockDiameter, setup_.stockLength, options_.resolution, setup_.stockBore);
   chuck_ = Chuck{};
   chuck_.stockLength = setup_.stockLength;
   chuck_.stockRadius = setup_.stockDiameter / 2.0;
   chuck_.grip = std::clamp(setup_.machine.chuckGrip, 0.0, setup_.stockLength);
   chuck_.jawHeight = std::max(0.0, setup_.machine.chuckJawHeight);
+  chuck_.spindleBoreRadius = std::max(0.0, setup_.machine.spindleBore / 2.0);
   time_ = 0.0;
   nextMove_ = 0;
   nextMoveDone_ = 0.0;
@@ -318,7 +320,7 @@ bool hitsChuck(const SweepContext& c, const std::vector<std::pair<Vec2, Vec2>>& 
                const std::vector<std::pair<Vec2, Vec2>>& boxPieces) {
   const Chuck& k = *c.chuck;
   const Box targets[] = {{k.jawZMin(), k.jawZMax(), k.jawXMin(), k.jawXMax()},
-                         {k.bodyZMin(), k.bodyZMax(), 0.0, k.bodyXMax()}};
+                         {k.bodyZMin(), k.bodyZMax(), k.bodyXMin(), k.bodyXMax()}};
   const ToolShape& t = *c.tool;
   for (const Box& target : targets) {
     if (!boxesOverlap(sweptBounds(boxPieces, t.bounds), target)) continue;
@@ -392,7 +394,7 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
   stock_.columnRange(swept.z0, swept.z1, first, last);
   const bool nearStock = first <= last && swept.x0 < stock_.maxOuterRadius(first, last);
   const Box jaws{chuck_.jawZMin(), chuck_.jawZMax(), chuck_.jawXMin(), chuck_.jawXMax()};
-  const Box body{chuck_.bodyZMin(), chuck_.bodyZMax(), 0.0, chuck_.bodyXMax()};
+  const Box body{chuck_.bodyZMin(), chuck_.bodyZMax(), chuck_.bodyXMin(), chuck_.bodyXMax()};
   const bool nearChuck = options_.detectCollisions && (boxesOverlap(swept, jaws) || boxesOverlap(swept, body));
   if (!nearStock && !nearChuck) return;
 

@@ -83,8 +83,10 @@ io::RgbImage renderSection(const SectionView& view) {
   cv.img.height = std::max(1, static_cast<int>(std::ceil((xMax - xMin) * ppm)));
   cv.img.pixels.assign(static_cast<std::size_t>(cv.img.width) * cv.img.height, kBackground);
 
-  // The raw bar, faintly, so the removed material shows.
-  cv.fill(-stock.length(), 0.0, -r, r, kBarOutline);
+  // The raw bar (a tube: its ring), faintly, so the removed material shows.
+  const double b = stock.bore() / 2.0;
+  cv.fill(-stock.length(), 0.0, b, r, kBarOutline);
+  cv.fill(-stock.length(), 0.0, -r, -b, kBarOutline);
 
   // The part, both halves: per image column, the material of the stock column under its centre.
   std::vector<std::uint8_t> mask(cv.img.pixels.size(), 0);
@@ -122,7 +124,8 @@ io::RgbImage renderSection(const SectionView& view) {
       cv.frame(c.jawZMin(), c.jawZMax(), std::min(s * c.jawXMin(), s * c.jawXMax()),
                std::max(s * c.jawXMin(), s * c.jawXMax()), kEdge);
     }
-    cv.fill(c.bodyZMin(), c.bodyZMax(), -c.bodyXMax(), c.bodyXMax(), kBody);
+    cv.fill(c.bodyZMin(), c.bodyZMax(), c.bodyXMin(), c.bodyXMax(), kBody);  // a ring around the spindle bore
+    cv.fill(c.bodyZMin(), c.bodyZMax(), -c.bodyXMax(), -c.bodyXMin(), kBody);
   }
 
   // Centre line, dash-dot.
@@ -154,7 +157,7 @@ io::RgbImage renderSection(const SectionView& view) {
 
   if (view.tool) {
     const ToolShape& t = *view.tool;
-    const double pixelMm = 1.0 / kPixelsPerMm;
+    const double pixelMm = 1.0 / t.pixelsPerMm;
     // Bitmap pixel (col,row) -> local mm relative to the controlled point.
     for (int row = 0; row < t.image.height; ++row)
       for (int col = 0; col < t.image.width; ++col) {

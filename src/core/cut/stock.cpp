@@ -10,9 +10,10 @@ namespace {
 constexpr int kMaxColumns = 1 << 21;  // ~2 million columns: 0.05 mm over 100 m, 0.001 mm over 2 m
 }
 
-Stock::Stock(double diameter, double length, double resolution)
-    : diameter_(diameter), length_(length), dz_(resolution) {
+Stock::Stock(double diameter, double length, double resolution, double bore)
+    : diameter_(diameter), bore_(bore), length_(length), dz_(resolution) {
   if (!(diameter_ > 0.0)) diameter_ = 0.0;
+  if (!(bore_ > 0.0) || !(bore_ < diameter_)) bore_ = 0.0;
   if (!(length_ > 0.0)) length_ = 0.0;
   if (!(dz_ > 0.0)) dz_ = kDefaultResolution;
   if (length_ / dz_ > kMaxColumns) dz_ = length_ / kMaxColumns;
@@ -20,7 +21,7 @@ Stock::Stock(double diameter, double length, double resolution)
   // Keep the columns exactly tiling [-length, 0].
   if (n > 0) dz_ = length_ / n;
   const double r = diameter_ / 2.0;
-  columns_.assign(static_cast<std::size_t>(n), std::vector<Interval>{Interval{0.0, r}});
+  columns_.assign(static_cast<std::size_t>(n), std::vector<Interval>{Interval{bore_ / 2.0, r}});
   if (r <= 0.0)
     for (auto& c : columns_) c.clear();
   outer_.assign(static_cast<std::size_t>(n), r);
@@ -130,6 +131,8 @@ double Stock::volume() const {
   return std::numbers::pi * area * dz_;
 }
 
-double Stock::initialVolume() const { return std::numbers::pi * diameter_ * diameter_ / 4.0 * length_; }
+double Stock::initialVolume() const {
+  return std::numbers::pi * (diameter_ * diameter_ - bore_ * bore_) / 4.0 * length_;
+}
 
 }  // namespace klueng::core::cut

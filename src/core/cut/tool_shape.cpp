@@ -28,13 +28,13 @@ Diagnostic toolError(std::string code, std::vector<std::string> args) {
 }
 
 // Rectangles covering the pixels of one kind: runs per row, merged with identical runs of the rows below.
-std::vector<Box> boxesOf(const io::RgbImage& image, PixelKind kind, double originZ, double originX) {
+std::vector<Box> boxesOf(const io::RgbImage& image, PixelKind kind, double originZ, double originX, double ppm) {
   struct Open {
     int c0, c1, rowTop, rowBottom;
   };
   std::vector<Box> out;
   std::vector<Open> open;
-  const double px = 1.0 / kPixelsPerMm;
+  const double px = 1.0 / ppm;
   auto close = [&](const Open& o) {
     Box b;
     b.z0 = o.c0 * px - originZ;
@@ -76,8 +76,8 @@ std::vector<Box> boxesOf(const io::RgbImage& image, PixelKind kind, double origi
 // Sharp tools (R = 0): per pixel column with a single run of cutting pixels,
 // bottom and top go straight from this column's centre to the neighbour's
 // centre (when the neighbour also has a single run); elsewhere pixel boxes.
-std::vector<Trapezoid> smoothedEdge(const io::RgbImage& image, double originZ, double originX) {
-  const double px = 1.0 / kPixelsPerMm;
+std::vector<Trapezoid> smoothedEdge(const io::RgbImage& image, double originZ, double originX, double ppm) {
+  const double px = 1.0 / ppm;
   struct Run {
     bool single = false;
     double bottom = 0.0, top = 0.0;
@@ -101,9 +101,9 @@ std::vector<Trapezoid> smoothedEdge(const io::RgbImage& image, double originZ, d
     r.bottom = (image.height - rowBottom - 1) * px - originX;
   }
   // Columns with several runs keep their pixel boxes.
-  for (const Box& b : boxesOf(image, PixelKind::Cutting, originZ, originX)) {
-    const int col0 = static_cast<int>(std::lround((b.z0 + originZ) * kPixelsPerMm));
-    const int col1 = static_cast<int>(std::lround((b.z1 + originZ) * kPixelsPerMm));
+  for (const Box& b : boxesOf(image, PixelKind::Cutting, originZ, originX, ppm)) {
+    const int col0 = static_cast<int>(std::lround((b.z0 + originZ) * ppm));
+    const int col1 = static_cast<int>(std::lround((b.z1 + originZ) * ppm));
     for (int col = col0; col < col1; ++col)
       if (!runs[static_cast<std::size_t>(col)].single)
         out.push_back(Trapezoid::of(Box{col * px - originZ, (col + 1) * px - originZ, b.x0, b.x1}));
@@ -161,16 +161,18 @@ void grow(Box& bounds, const Box& b, bool& first) {
 }  // namespace
 
 io::ReadResult<ToolShape> makeToolShape(const io::RgbImage& image, const std::string& fileName, double noseRadius,
-                                        int tip) {
+                                        int tip, double pixelsPerMm) {
   io::ReadResult<ToolShape> result;
+  const double ppm = pixelsPerMm > 0.0 ? pixelsPerMm : kPixelsPerMm;
+  const int maxPixels = maxToolPixels(ppm);
   if (image.width <= 0 || image.height <= 0 ||
       image.pixels.size() != static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height)) {
     result.diagnostics.push_back(toolError("A310", {fileName}));
     return result;
   }
-  if (image.width > kMaxToolPixels || image.height > kMaxToolPixels) {
+  if (image.width > maxPixels || image.height > maxPixels) {
     result.diagnostics.push_back(toolError(
-        "A311", {fileName, std::to_string(image.width), std::to_string(image.height), std::to_string(kMaxToolPixels)}));
+        "A311", {fileName, std::to_string(image.width), std::to_string(image.height), std::to_string(maxPixels)}));
     return result;
   }
   int c0 = image.width, c1 = -1, r0 = image.height, r1 = -1;
@@ -187,7 +189,7 @@ io::ReadResult<ToolShape> makeToolShape(const io::RgbImage& image, const std::st
     return result;
   }
 
-  const double px = 1.0 / kPixelsPerMm;
+  const double px = 1.0 / ppm;
   const double zMin = c0 * px, zMax = (c1 + 1) * px;
   const double xMin = (image.height - r1 - 1) * px, xMax = (image.height - r0) * px;
   const Vec2 t = tipVector(tip);
@@ -200,10 +202,11 @@ io::ReadResult<ToolShape> makeToolShape(const io::RgbImage& image, const std::st
   shape.noseCentre = -shape.noseRadius * t;
   shape.image = image;
   shape.fileName = fileName;
-  shape.controlPixelX = pz * kPixelsPerMm;
-  shape.controlPixelY = image.height - pxr * kPixelsPerMm;
+  shape.pixelsPerMm = ppm;
+  shape.controlPixelX = pz * ppm;
+  shape.controlPixelY = image.height - pxr * ppm;
 
-  shape.holder = boxesOf(image, PixelKind::Holder, pz, pxr);
+  shape.holder = boxesOf(image, PixelKind::Holder, pz, pxr, ppm);
   const double r = shape.noseRadius;
   if (r > 0.0) {
     // The nose square: where the exact circle, not the pixels, is the edge.
@@ -216,10 +219,10 @@ io::ReadResult<ToolShape> makeToolShape(const io::RgbImage& image, const std::st
     range(c.x(), t.x(), q.z0, q.z1);
     range(c.y(), t.y(), q.x0, q.x1);
     std::vector<Box> boxes;
-    for (const Box& b : boxesOf(image, PixelKind::Cutting, pz, pxr)) subtract(b, q, boxes);
+    for (const Box& b : boxesOf(image, PixelKind::Cutting, pz, pxr, ppm)) subtract(b, q, boxes);
     for (const Box& b : boxes) shape.cutting.push_back(Trapezoid::of(b));
   } else {
-    shape.cutting = smoothedEdge(image, pz, pxr);
+    shape.cutting = smoothedEdge(image, pz, pxr, ppm);
   }
 
   bool first = true;
@@ -231,7 +234,7 @@ io::ReadResult<ToolShape> makeToolShape(const io::RgbImage& image, const std::st
   return result;
 }
 
-io::ReadResult<ToolShape> loadToolShape(const std::string& path, double noseRadius, int tip) {
+io::ReadResult<ToolShape> loadToolShape(const std::string& path, double noseRadius, int tip, double pixelsPerMm) {
   io::ReadResult<io::RgbImage> image = io::readImage(path);
   io::ReadResult<ToolShape> result;
   result.diagnostics = image.diagnostics;
@@ -239,7 +242,7 @@ io::ReadResult<ToolShape> loadToolShape(const std::string& path, double noseRadi
     if (!hasErrors(result.diagnostics)) result.diagnostics.push_back(toolError("A310", {path}));
     return result;
   }
-  io::ReadResult<ToolShape> shape = makeToolShape(*image.value, path, noseRadius, tip);
+  io::ReadResult<ToolShape> shape = makeToolShape(*image.value, path, noseRadius, tip, pixelsPerMm);
   result.value = std::move(shape.value);
   result.diagnostics.insert(result.diagnostics.end(), shape.diagnostics.begin(), shape.diagnostics.end());
   return result;

@@ -49,7 +49,24 @@ struct SizeCodes {
   const char* badNumber;
 };
 
-// Reads "150" (unit digit 1 = mm, then 50) from header line 4 or 5.
+// A unit digit (0 = inch, 1 = mm) followed at once by a number; line 4 may add
+// `x` and a bore number. The number may be <= 0 (that is E213, not G-code).
+bool isUnitDigitSize(std::string_view line, bool allowBore) {
+  const std::string_view field = detail::trim(line);
+  if (field.size() < 2 || (field.front() != '0' && field.front() != '1')) return false;
+  std::string_view number = field.substr(1);
+  if (allowBore) {
+    const std::size_t x = number.find_first_of("xX");
+    if (x != std::string_view::npos) {
+      if (!detail::parseNumber(detail::trim(number.substr(x + 1)))) return false;
+      number = detail::trim(number.substr(0, x));
+    }
+  }
+  return detail::parseNumber(number).has_value();
+}
+
+// Reads "150" (unit digit 1 = mm, then 50) from header line 4 or 5; the caller
+// has checked the form with isUnitDigitSize.
 void parseStockSize(std::string_view line, int lineNumber, const SizeCodes& codes,
                     const std::string& fileName, double& value, LengthUnit& unit,
                     std::vector<Diagnostic>& diags) {
@@ -85,6 +102,29 @@ void parseStockSize(std::string_view line, int lineNumber, const SizeCodes& code
   value = *parsed;
 }
 
+// Line 4: "1118x90" = diameter 118 with a 90 bore; "150" = solid bar.
+void parseDiameterLine(std::string_view line, const std::string& fileName, JobHeader& h,
+                       std::vector<Diagnostic>& diags) {
+  const std::size_t x = line.find_first_of("xX");
+  h.bore = 0.0;
+  if (x == std::string_view::npos) {
+    parseStockSize(line, 4, {"F115", "F111", "F112"}, fileName, h.diameter, h.diameterUnit, diags);
+    return;
+  }
+  const std::size_t before = diags.size();
+  parseStockSize(line.substr(0, x), 4, {"F115", "F111", "F112"}, fileName, h.diameter, h.diameterUnit, diags);
+  const std::string_view boreText = detail::trim(line.substr(x + 1));
+  const double bore = detail::parseNumber(boreText).value_or(0.0);
+  if (diags.size() != before) return;
+  if (!(bore > 0.0) || bore >= h.diameter) {
+    diags.push_back(makeDiagnostic(Severity::Error, "F118", 4, detail::columnOf(line, boreText),
+                                   utf8Length(boreText),
+                                   {fileName, std::string(boreText), detail::formatNumber(h.diameter)}));
+    return;
+  }
+  h.bore = bore;
+}
+
 std::string oneLine(std::string_view text) {
   std::string s(text);
   for (char& c : s)
@@ -96,7 +136,42 @@ std::string formatStockSize(double value, LengthUnit unit) {
   return (unit == LengthUnit::Inch ? "0" : "1") + detail::formatNumber(value);
 }
 
+// SPEC 2 (ext): lines 4 and 5 are sizes and lines 1-3 and 6 are not G-code.
+bool isKluengHeader(const std::vector<std::string_view>& lines) {
+  if (lines.size() < 5) return false;
+  if (!isUnitDigitSize(lines[3], true) || !isUnitDigitSize(lines[4], false)) return false;
+  for (const std::size_t i : {0u, 1u, 2u, 5u})
+    if (i < lines.size() && looksLikeGcode(lines[i])) return false;
+  return true;
+}
+
+// A plain file whose first line is text and whose line 4 or 5 starts with a
+// digit was probably meant to have a header: say which line is not a size.
+void hintBrokenHeader(const std::vector<std::string_view>& lines, const std::string& fileName,
+                      std::vector<Diagnostic>& diags) {
+  if (lines.size() < 5 || detail::trim(lines[0]).empty() || looksLikeGcode(lines[0])) return;
+  for (const int n : {4, 5}) {
+    const std::string_view field = detail::trim(lines[static_cast<std::size_t>(n - 1)]);
+    if (field.empty() || !isAsciiDigit(field.front()) || isUnitDigitSize(field, n == 4)) continue;
+    diags.push_back(makeDiagnostic(Severity::Warning, "F117", n, detail::columnOf(lines[n - 1], field),
+                                   utf8Length(field), {fileName, std::string(field), std::to_string(n)}));
+    return;
+  }
+}
+
 }  // namespace
+
+std::string stockSizeText(const JobHeader& h) {
+  const bool sameUnit = h.diameterUnit == h.lengthUnit;
+  const bool inch = sameUnit && h.diameterUnit == LengthUnit::Inch;
+  const double d = inch ? h.diameter : h.diameterMm();
+  const double bore = inch ? h.bore : h.boreMm();
+  const double len = inch ? h.length : h.lengthMm();
+  std::string s = "\xC3\x98" + detail::formatNumber(d);
+  if (bore > 0.0) s += "/\xC3\x98" + detail::formatNumber(bore);
+  s += " x " + detail::formatNumber(len) + (inch ? " in" : " mm");
+  return s;
+}
 
 ReadResult<ProgramFile> parseProgramFile(std::string_view bytes, const JobHeader& defaultsForPlain,
                                          const std::string& fileName) {
@@ -138,10 +213,12 @@ ReadResult<ProgramFile> parseProgramFile(std::string_view bytes, const JobHeader
   }
 
   std::size_t firstCodeLine = 0;
-  if (looksLikeGcode(lines[0])) {
+  if (!isKluengHeader(lines)) {
     file.plainGcode = true;
     file.gcodeFirstLine = 1;
+    hintBrokenHeader(lines, fileName, diags);
   } else {
+    file.header.stockSource = StockSource::Header;
     file.plainGcode = false;
     file.gcodeFirstLine = kHeaderLines + 1;
     firstCodeLine = kHeaderLines;
@@ -157,12 +234,9 @@ ReadResult<ProgramFile> parseProgramFile(std::string_view bytes, const JobHeader
       diags.push_back(makeDiagnostic(Severity::Error, "F110", last, utf8Length(lines.back()) + 1, 0,
                                      {fileName, std::to_string(last)}));
     }
-    if (lines.size() >= 4)
-      parseStockSize(lines[3], 4, {"F115", "F111", "F112"}, fileName, file.header.diameter,
-                     file.header.diameterUnit, diags);
-    if (lines.size() >= 5)
-      parseStockSize(lines[4], 5, {"F116", "F113", "F114"}, fileName, file.header.length,
-                     file.header.lengthUnit, diags);
+    parseDiameterLine(lines[3], fileName, file.header, diags);
+    parseStockSize(lines[4], 5, {"F116", "F113", "F114"}, fileName, file.header.length,
+                   file.header.lengthUnit, diags);
   }
 
   // The G-code part, with every line end normalised to '\n'. With LF line
@@ -198,7 +272,8 @@ std::string formatProgramFile(const ProgramFile& file) {
   out.reserve(file.gcode.size() + 256);
   for (const std::string& line :
        {oneLine(h.project), oneLine(h.part), oneLine(h.material),
-        formatStockSize(h.diameter, h.diameterUnit), formatStockSize(h.length, h.lengthUnit),
+        formatStockSize(h.diameter, h.diameterUnit) + (h.bore > 0.0 ? "x" + detail::formatNumber(h.bore) : ""),
+        formatStockSize(h.length, h.lengthUnit),
         oneLine(h.programmer)}) {
     out += line;
     out += '\n';

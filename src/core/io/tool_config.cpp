@@ -4,12 +4,14 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
 
 #include "io/text_util.h"
 #include "klueng/core/io/text_encoding.h"
+#include "klueng/core/io/tool_library.h"
 
 #ifndef KLUENG_SHIPPED_DATA_DIR
 #define KLUENG_SHIPPED_DATA_DIR "."
@@ -76,9 +78,11 @@ std::string folderOf(const std::string& path) {
 // ---------------------------------------------------------------- tools.cfg
 
 std::string ToolTable::bitmapPath(int tool) const {
-  if (tool < 1 || tool > kToolCount) return {};
-  std::string name = bitmap[static_cast<std::size_t>(tool - 1)];
+  if (tool < 1 || tool > kMaxStations) return {};
+  const auto i = static_cast<std::size_t>(tool - 1);
+  std::string name = bitmap[i];
   if (name.empty()) return {};
+  if (name.rfind(kLibraryPrefix, 0) == 0) return libraryPath[i];
 #ifndef _WIN32
   // tools.cfg files from the Windows program write folders with backslashes.
   std::replace(name.begin(), name.end(), '\\', '/');
@@ -88,20 +92,54 @@ std::string ToolTable::bitmapPath(int tool) const {
   return (fs::path(folder) / p).string();
 }
 
+double ToolTable::pixelsPerMmOf(int tool) const {
+  if (tool < 1 || tool > kMaxStations) return kSeedPixelsPerMm;
+  return pixelsPerMm[static_cast<std::size_t>(tool - 1)];
+}
+
+std::string ToolTable::libraryId(int tool) const {
+  if (tool < 1 || tool > kMaxStations) return {};
+  const std::string& line = bitmap[static_cast<std::size_t>(tool - 1)];
+  return line.rfind(kLibraryPrefix, 0) == 0 ? line.substr(kLibraryPrefix.size()) : std::string();
+}
+
+void ToolTable::setLibraryTool(int tool, const std::string& id, const std::string& path, double ppm) {
+  if (tool < 1 || tool > kMaxStations) return;
+  const auto i = static_cast<std::size_t>(tool - 1);
+  bitmap[i] = std::string(kLibraryPrefix) + id;
+  libraryPath[i] = path;
+  pixelsPerMm[i] = ppm;
+}
+
 ReadResult<ToolTable> parseToolTable(std::string_view text, const std::string& folder,
-                                     const std::string& fileName) {
+                                     const std::string& fileName, int stations, const ToolLibrary* library) {
   ReadResult<ToolTable> result;
   auto& diags = result.diagnostics;
   const std::optional<std::string> decoded = decodeConfig(text, fileName, diags);
   if (!decoded) return result;
   const std::vector<std::string_view> lines = detail::splitLines(*decoded);
+  stations = std::clamp(stations, 1, kMaxStations);
+  if (!library) library = &shippedToolLibrary();
 
   ToolTable table;
   table.folder = folder;
-  for (int tool = 1; tool <= kToolCount && static_cast<std::size_t>(tool) <= lines.size(); ++tool) {
+  table.stations = stations;
+  for (int tool = 1; tool <= stations && static_cast<std::size_t>(tool) <= lines.size(); ++tool) {
     const std::string_view line = lines[static_cast<std::size_t>(tool - 1)];
     const std::string_view name = detail::trim(line);
     if (name.empty()) continue;  // a tool without a bitmap
+    if (name.rfind(kLibraryPrefix, 0) == 0) {
+      const std::string_view id = detail::trim(name.substr(kLibraryPrefix.size()));
+      const LibraryTool* t = library->find(id);
+      if (!t) {
+        const std::string_view at = id.empty() ? name : id;
+        diags.push_back(makeDiagnostic(Severity::Error, "F123", tool, detail::columnOf(line, at), utf8Length(at),
+                                       {fileName, twoDigits(tool), std::string(id), library->idList()}));
+        continue;
+      }
+      table.setLibraryTool(tool, t->id, library->bitmapPath(*t), t->pixelsPerMm);
+      continue;
+    }
     if (hasControlCharacters(name) || !hasImageExtension(name)) {
       diags.push_back(makeDiagnostic(Severity::Error, "F122", tool, detail::columnOf(line, name),
                                      utf8Length(name), {fileName, twoDigits(tool), std::string(name)}));
@@ -109,23 +147,24 @@ ReadResult<ToolTable> parseToolTable(std::string_view text, const std::string& f
     }
     table.bitmap[static_cast<std::size_t>(tool - 1)] = std::string(name);
   }
-  if (lines.size() < static_cast<std::size_t>(kToolCount)) {
+  const int required = std::min(kSeedToolLines, stations);
+  if (lines.size() < static_cast<std::size_t>(required)) {
     const int count = static_cast<int>(lines.size());
     diags.push_back(makeDiagnostic(Severity::Error, "F120", std::max(count, 1), 1, 0,
                                    {fileName, std::to_string(count), twoDigits(count + 1)}));
   }
-  warnAboutExtraLines(lines, kToolCount, fileName, diags);
+  warnAboutExtraLines(lines, static_cast<std::size_t>(stations), fileName, diags);
   result.value = std::move(table);
   return result;
 }
 
-ReadResult<ToolTable> readToolTable(const std::string& path) {
+ReadResult<ToolTable> readToolTable(const std::string& path, int stations, const ToolLibrary* library) {
   ReadResult<ToolTable> result;
   const std::optional<std::string> bytes = detail::readFileBytes(path, result.diagnostics);
   if (!bytes) return result;
-  result = parseToolTable(*bytes, folderOf(path), path);
+  result = parseToolTable(*bytes, folderOf(path), path, stations, library);
   if (!result.value) return result;
-  for (int tool = 1; tool <= kToolCount; ++tool) {
+  for (int tool = 1; tool <= kMaxStations; ++tool) {
     const std::string file = result.value->bitmapPath(tool);
     std::error_code ec;
     if (file.empty() || fs::is_regular_file(file, ec)) continue;
@@ -139,8 +178,11 @@ ReadResult<ToolTable> readToolTable(const std::string& path) {
 }
 
 std::string formatToolTable(const ToolTable& t) {
+  int last = kSeedToolLines;
+  for (int i = 0; i < kMaxStations; ++i)
+    if (!t.bitmap[static_cast<std::size_t>(i)].empty()) last = std::max(last, i + 1);
   std::string out;
-  for (const std::string& name : t.bitmap) out += oneLine(name) + '\n';
+  for (int i = 0; i < last; ++i) out += oneLine(t.bitmap[static_cast<std::size_t>(i)]) + '\n';
   return out;
 }
 
@@ -202,7 +244,7 @@ ReadResult<OffsetTable> parseOffsetTable(std::string_view text, const std::strin
     // A row with any error stays 0 0 0 0 rather than half read.
     if (rowOk) table.offsets[static_cast<std::size_t>(number - 1)] = offset;
   }
-  if (lines.size() < static_cast<std::size_t>(kOffsetCount)) {
+  if (lines.size() < static_cast<std::size_t>(kSeedOffsetLines)) {
     const int count = static_cast<int>(lines.size());
     diags.push_back(makeDiagnostic(Severity::Error, "F130", std::max(count, 1), 1, 0,
                                    {fileName, std::to_string(count), twoDigits(count + 1)}));
@@ -222,10 +264,17 @@ ReadResult<OffsetTable> readOffsetTable(const std::string& path) {
 }
 
 std::string formatOffsetTable(const OffsetTable& t) {
+  int last = kSeedOffsetLines;
+  for (int i = 0; i < kOffsetCount; ++i) {
+    const Offset& o = t.offsets[static_cast<std::size_t>(i)];
+    if (o.x != 0.0 || o.z != 0.0 || o.r != 0.0 || o.tip != 0) last = std::max(last, i + 1);
+  }
   std::string out;
-  for (const Offset& o : t.offsets)
+  for (int i = 0; i < last; ++i) {
+    const Offset& o = t.offsets[static_cast<std::size_t>(i)];
     out += fmt::format("{} {} {} {}\n", detail::formatNumber(o.x), detail::formatNumber(o.z),
                        detail::formatNumber(o.r), std::clamp(o.tip, 0, 9));
+  }
   return out;
 }
 
@@ -233,14 +282,17 @@ std::string formatOffsetTable(const OffsetTable& t) {
 
 namespace {
 
-enum class Rule { Any, Positive, NonNegative };
+enum class Rule { Any, Positive, NonNegative, Stations };
 
 struct MachineKey {
   const char* name;
-  double MachineConfig::*field;
+  double MachineConfig::*field;  // nullptr: an int field (turret_stations)
   Rule rule;
   const char* comment;
 };
+
+constexpr int kMinTurretStations = 1;
+constexpr int kMaxTurretStations = 24;
 
 constexpr MachineKey kMachineKeys[] = {
     {"rapid_x", &MachineConfig::rapidX, Rule::Positive, "X rapid rate, mm/min (radial)"},
@@ -257,6 +309,9 @@ constexpr MachineKey kMachineKeys[] = {
     {"chuck_grip", &MachineConfig::chuckGrip, Rule::NonNegative, "length of stock held by the chuck jaws, mm"},
     {"chuck_jaw_height", &MachineConfig::chuckJawHeight, Rule::NonNegative,
      "radial height of the jaws above the stock, mm"},
+    {"spindle_bore", &MachineConfig::spindleBore, Rule::NonNegative,
+     "through-hole of the spindle and chuck (diameter, mm): drills may pass the part's end into it"},
+    {"turret_stations", nullptr, Rule::Stations, "tool stations on the turret (1 to 24)"},
 };
 
 }  // namespace
@@ -315,11 +370,19 @@ ReadResult<MachineConfig> parseMachineConfig(std::string_view text, const std::s
                                      {fileName, std::string(key), std::string(value)}));
       continue;
     }
+    if (entry->rule == Rule::Stations &&
+        (*number != std::floor(*number) || *number < kMinTurretStations || *number > kMaxTurretStations)) {
+      diags.push_back(makeDiagnostic(Severity::Error, "F147", lineNumber, valueColumn, utf8Length(value),
+                                     {fileName, std::string(key), std::string(value),
+                                      std::to_string(kMinTurretStations), std::to_string(kMaxTurretStations)}));
+      continue;
+    }
     if (lineOfKey.count(entry->name))
       diags.push_back(makeDiagnostic(Severity::Warning, "F145", lineNumber, detail::columnOf(line, key),
                                      utf8Length(key), {fileName, std::string(key)}));
     lineOfKey[entry->name] = lineNumber;
-    config.*(entry->field) = *number;
+    if (entry->field) config.*(entry->field) = *number;
+    else config.turretStations = static_cast<int>(*number);
   }
 
   const auto checkRange = [&](const char* minKey, double MachineConfig::*min, const char* maxKey,
@@ -353,7 +416,8 @@ std::string formatMachineConfig(const MachineConfig& m) {
       "# X values are diameters; lengths in mm, rates in mm/min.\n";
   for (const MachineKey& k : kMachineKeys) {
     if (k.comment) out += fmt::format("\n# {}\n", k.comment);
-    out += fmt::format("{} = {}\n", k.name, detail::formatNumber(m.*(k.field)));
+    out += fmt::format("{} = {}\n", k.name,
+                       k.field ? detail::formatNumber(m.*(k.field)) : std::to_string(m.turretStations));
   }
   return out;
 }
@@ -415,7 +479,9 @@ std::string ensureUserConfigDir(std::string* error) {
   const ReadResult<ToolTable> shippedTools = readToolTable((shipped / "tools.cfg").string());
   if (shippedTools.value)
     for (const std::string& name : shippedTools.value->bitmap)
-      if (!name.empty() && fs::path(name).is_relative() && !copyIfMissing(name)) return {};
+      if (!name.empty() && name.rfind(kLibraryPrefix, 0) != 0 && fs::path(name).is_relative() &&
+          !copyIfMissing(name))
+        return {};
   return user;
 }
 

@@ -13,12 +13,6 @@ namespace {
 
 using testing::TempDir;
 
-const Diagnostic* findCode(const std::vector<Diagnostic>& diags, const std::string& code) {
-  for (const Diagnostic& d : diags)
-    if (d.code == code) return &d;
-  return nullptr;
-}
-
 std::string codes(const std::vector<Diagnostic>& diags) {
   std::string s;
   for (const Diagnostic& d : diags) s += d.code + "@" + std::to_string(d.range.line) + ":" +
@@ -99,46 +93,102 @@ INSTANTIATE_TEST_SUITE_P(Starts, HeaderFirstLine,
                          ::testing::Values("Gear shaft", "Mild steel", "Turning job", "Nut", "O-ring groove",
                                            "", "งานกลึง", "Shaft"));
 
-TEST(ProgramFile, BadUnitDigitNamesLineAndColumn) {
+// SPEC 2 (ext): a header needs sizes on lines 4 and 5; a broken size line
+// makes the file plain G-code, with a warning that names the line.
+TEST(ProgramFile, BadUnitDigitMakesAPlainFileWithAHint) {
   const auto r = parseProgramFile("P\nQ\nSteel\n  250\n1100\nMe\n", {}, "job.txt");
   ASSERT_TRUE(r.value);
+  EXPECT_TRUE(r.value->plainGcode);
   ASSERT_EQ(r.diagnostics.size(), 1u) << codes(r.diagnostics);
   const Diagnostic& d = r.diagnostics[0];
-  EXPECT_EQ(d.code, "F111");
-  EXPECT_EQ(d.severity, Severity::Error);
-  EXPECT_EQ(d.range, (SourceRange{4, 3, 1}));
-  EXPECT_EQ(d.args, (std::vector<std::string>{"job.txt", "2"}));
+  EXPECT_EQ(d.code, "F117");
+  EXPECT_EQ(d.severity, Severity::Warning);
+  EXPECT_EQ(d.range, (SourceRange{4, 3, 3}));
+  EXPECT_EQ(d.args, (std::vector<std::string>{"job.txt", "250", "4"}));
   EXPECT_EQ(formatMessage(d, Lang::En),
-            "stock diameter: the unit digit must be 0 (inch) or 1 (mm), not '2'");
-  EXPECT_DOUBLE_EQ(r.value->header.diameter, JobHeader{}.diameter);  // default kept
+            "job.txt: read as a plain G-code file without a job header: line 4 ('250') is not a stock size "
+            "(a unit digit 0 = inch or 1 = mm, then the size, e.g. 150 = 50 mm)");
+  EXPECT_NE(formatMessage(d, Lang::Th).find("ไม่มีส่วนหัวของงาน"), std::string::npos);
 }
 
-TEST(ProgramFile, ThaiUnitDigitIsQuotedWhole) {
-  const auto r = parseProgramFile("P\nQ\nSteel\n150\nกขค\nMe\n");
-  const Diagnostic* d = findCode(r.diagnostics, "F113");
-  ASSERT_NE(d, nullptr) << codes(r.diagnostics);
-  EXPECT_EQ(d->range, (SourceRange{5, 1, 1}));
-  EXPECT_EQ(d->args.at(1), "ก");
+TEST(ProgramFile, NonSizeLinesMakeAPlainFile) {
+  for (const char* text : {"P\nQ\nSteel\n150\nกขค\nMe\n", "P\nQ\nSteel\n15O\n1abc\nMe\n",
+                           "P\nQ\nSteel\n\n   \nMe\n", "Project\nPart\nSteel"}) {
+    const auto r = parseProgramFile(text);
+    ASSERT_TRUE(r.value) << text;
+    EXPECT_TRUE(r.value->plainGcode) << text;
+    EXPECT_EQ(r.value->gcode, text);
+  }
 }
 
-TEST(ProgramFile, NonNumberAfterTheUnitDigit) {
-  const auto r = parseProgramFile("P\nQ\nSteel\n15O\n1abc\nMe\n", {}, "j");
-  ASSERT_EQ(r.diagnostics.size(), 2u) << codes(r.diagnostics);
-  EXPECT_EQ(r.diagnostics[0].code, "F112");
-  EXPECT_EQ(r.diagnostics[0].range, (SourceRange{4, 2, 2}));
-  EXPECT_EQ(r.diagnostics[0].args.at(1), "5O");
-  EXPECT_EQ(r.diagnostics[1].code, "F114");
-  EXPECT_EQ(r.diagnostics[1].range, (SourceRange{5, 2, 3}));
-  EXPECT_FALSE(r.ok());
+// Issue 8: files that used to lose lines to the header.
+class NeverAHeader : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(NeverAHeader, IsPlainAndKeepsEveryLine) {
+  const std::string text = GetParam();
+  const auto r = parseProgramFile(text, {}, "p.nc");
+  ASSERT_TRUE(r.ok()) << codes(r.diagnostics);
+  EXPECT_TRUE(r.value->plainGcode);
+  EXPECT_EQ(r.value->gcodeFirstLine, 1);
+  EXPECT_EQ(r.value->gcode, text);
+  EXPECT_EQ(r.value->header.stockSource, StockSource::Default);
 }
 
-TEST(ProgramFile, EmptySizeLines) {
-  const auto r = parseProgramFile("P\nQ\nSteel\n\n   \nMe\n");
-  ASSERT_EQ(r.diagnostics.size(), 2u) << codes(r.diagnostics);
-  EXPECT_EQ(r.diagnostics[0].code, "F115");
-  EXPECT_EQ(r.diagnostics[0].range.line, 4);
-  EXPECT_EQ(r.diagnostics[1].code, "F116");
-  EXPECT_EQ(r.diagnostics[1].range.line, 5);
+INSTANTIATE_TEST_SUITE_P(
+    Files, NeverAHeader,
+    ::testing::Values("\nO0001\nG21 G99\nT0101\nG00 X52. Z2.\nG01 Z-30. F0.2\nM30\n",  // blank first line
+                      "%\n\nO1000\nG20\nT0101\nG00 X2.1 Z0.1\nM30\n%\n",             // % then a blank line
+                      "(SHAFT 50 X 100)\n(OD ROUGH)\nG21\nT0101\nG00 X52. Z2.\nM30\n",  // comment first
+                      "O1234\nN10 G21\nN20 T0101\n150\n1100\nN60 M30\n",              // O number, size-like lines
+                      "\n\n\n150\n1100\nG00 X10.\n",  // size lines but G-code on line 6
+                      "G21\nG99\nT0101\n150\n1100\nMe\n"));  // size lines but G-code on lines 1-3
+
+TEST(ProgramFile, RealHeaderAndThaiHeader) {
+  const auto r = parseProgramFile(kHeader + "G00 X10.\n");
+  ASSERT_TRUE(r.ok()) << codes(r.diagnostics);
+  EXPECT_FALSE(r.value->plainGcode);
+  EXPECT_EQ(r.value->header.stockSource, StockSource::Header);
+  const auto th = parseProgramFile("งานกลึงเพลา\nเพลาขั้นบันได\nอะลูมิเนียม\n150\n1100\nสมชาย ใจดี\nG00 X10.\n");
+  ASSERT_TRUE(th.ok()) << codes(th.diagnostics);
+  EXPECT_FALSE(th.value->plainGcode);
+  EXPECT_EQ(th.value->header.material, "อะลูมิเนียม");
+  EXPECT_EQ(th.value->header.programmer, "สมชาย ใจดี");
+  EXPECT_DOUBLE_EQ(th.value->header.diameter, 50.0);
+  EXPECT_EQ(th.value->gcode, "G00 X10.\n");
+}
+
+TEST(ProgramFile, TubeStockOnLineFour) {
+  const std::string text = "Bush\nB-1\nSteel\n1118x90\n180\nMe\nG00 X120.\n";
+  const auto r = parseProgramFile(text);
+  ASSERT_TRUE(r.ok()) << codes(r.diagnostics);
+  EXPECT_FALSE(r.value->plainGcode);
+  EXPECT_DOUBLE_EQ(r.value->header.diameter, 118.0);
+  EXPECT_DOUBLE_EQ(r.value->header.bore, 90.0);
+  EXPECT_DOUBLE_EQ(r.value->header.length, 80.0);
+  EXPECT_EQ(formatProgramFile(*r.value), text);
+  EXPECT_EQ(stockSizeText(r.value->header), "Ø118/Ø90 x 80 mm");
+  const auto inch = parseProgramFile("P\nQ\nS\n02.5X1.25\n04\nMe\n");
+  ASSERT_TRUE(inch.ok()) << codes(inch.diagnostics);
+  EXPECT_DOUBLE_EQ(inch.value->header.boreMm(), 31.75);
+  EXPECT_EQ(stockSizeText(inch.value->header), "Ø2.5/Ø1.25 x 4 in");
+  // Solid bars are written as before.
+  const auto solid = parseProgramFile(kHeader);
+  EXPECT_EQ(formatProgramFile(*solid.value), kHeader);
+  EXPECT_DOUBLE_EQ(solid.value->header.bore, 0.0);
+  EXPECT_EQ(stockSizeText(solid.value->header), "Ø50 x 100 mm");
+}
+
+TEST(ProgramFile, BoreMustBeInsideTheDiameter) {
+  for (const char* line : {"150x50", "150x60", "150x0", "150x-5"}) {
+    const auto r = parseProgramFile(std::string("P\nQ\nS\n") + line + "\n1100\nMe\n", {}, "t.txt");
+    ASSERT_EQ(r.diagnostics.size(), 1u) << line << " " << codes(r.diagnostics);
+    EXPECT_EQ(r.diagnostics[0].code, "F118");
+    EXPECT_EQ(r.diagnostics[0].range.column, 5);
+    EXPECT_DOUBLE_EQ(r.value->header.bore, 0.0);
+  }
+  const auto r = parseProgramFile("P\nQ\nS\n150x60\n1100\nMe\n", {}, "t.txt");
+  EXPECT_EQ(formatMessage(r.diagnostics[0], Lang::En),
+            "stock bore: '60' must be a number greater than 0 and less than the diameter 50");
 }
 
 TEST(ProgramFile, StockSizeMustBePositiveRule13) {
@@ -158,12 +208,12 @@ TEST(ProgramFile, StockSizeMustBePositiveRule13) {
 }
 
 TEST(ProgramFile, MissingHeaderLines) {
-  const auto r = parseProgramFile("Project\nPart\nSteel", {}, "short.txt");
+  const auto r = parseProgramFile("Project\nPart\nSteel\n150\n1100", {}, "short.txt");
   ASSERT_EQ(r.diagnostics.size(), 1u) << codes(r.diagnostics);
   EXPECT_EQ(r.diagnostics[0].code, "F110");
-  EXPECT_EQ(r.diagnostics[0].range.line, 3);
-  EXPECT_EQ(r.diagnostics[0].range.column, 6);  // just after "Steel"
-  EXPECT_EQ(r.diagnostics[0].args, (std::vector<std::string>{"short.txt", "3"}));
+  EXPECT_EQ(r.diagnostics[0].range.line, 5);
+  EXPECT_EQ(r.diagnostics[0].range.column, 5);  // just after "1100"
+  EXPECT_EQ(r.diagnostics[0].args, (std::vector<std::string>{"short.txt", "5"}));
 }
 
 TEST(ProgramFile, SixHeaderLinesAndNoCodeIsAnEmptyProgram) {
@@ -248,8 +298,8 @@ TEST(ProgramFile, ReadsTis620AndUtf8Bom) {
 TEST(ProgramFile, ColumnsCountThaiCharactersNotBytes) {
   const auto r = parseProgramFile("P\nQ\nS\n1ห้า\n1100\nMe\n");
   ASSERT_EQ(r.diagnostics.size(), 1u);
-  EXPECT_EQ(r.diagnostics[0].code, "F112");
-  EXPECT_EQ(r.diagnostics[0].range, (SourceRange{4, 2, 3}));
+  EXPECT_EQ(r.diagnostics[0].code, "F117");  // not a size: the file is plain G-code
+  EXPECT_EQ(r.diagnostics[0].range, (SourceRange{4, 1, 4}));
 }
 
 TEST(ProgramFile, FormatRoundTripsAHeaderFile) {

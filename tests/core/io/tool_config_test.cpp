@@ -49,10 +49,11 @@ TEST(ToolTable, ShippedTableNamesEightExistingBitmaps) {
   ASSERT_TRUE(r.ok()) << codes(r.diagnostics);
   EXPECT_EQ(r.value->bitmap[0], "resources/tools/01-outside-turning.bmp");
   EXPECT_EQ(r.value->bitmap[2], "resources/tools/03-threading-60.bmp");
-  for (int tool = 1; tool <= kToolCount; ++tool)
+  for (int tool = 1; tool <= kSeedToolLines; ++tool)
     EXPECT_TRUE(std::filesystem::is_regular_file(r.value->bitmapPath(tool))) << tool;
   EXPECT_EQ(r.value->bitmapPath(0), "");
   EXPECT_EQ(r.value->bitmapPath(9), "");
+  EXPECT_EQ(r.value->stations, kDefaultTurretStations);
 }
 
 TEST(ToolTable, EmptyLineMeansNoBitmapAndPathsResolveAgainstTheFolder) {
@@ -93,7 +94,8 @@ TEST(ToolTable, EmptyFileHasNoLines) {
 }
 
 TEST(ToolTable, ExtraLinesAreIgnoredWithAWarning) {
-  const auto r = parseToolTable("1.bmp\n2.bmp\n3.bmp\n4.bmp\n5.bmp\n6.bmp\n7.bmp\n8.bmp\n\nnine.bmp\n", "/d", "t.cfg");
+  // An 8-station turret (the seed's): line 10 is past it.
+  const auto r = parseToolTable("1.bmp\n2.bmp\n3.bmp\n4.bmp\n5.bmp\n6.bmp\n7.bmp\n8.bmp\n\nnine.bmp\n", "/d", "t.cfg", 8);
   ASSERT_EQ(r.diagnostics.size(), 1u) << codes(r.diagnostics);
   EXPECT_EQ(r.diagnostics[0].code, "F107");
   EXPECT_EQ(r.diagnostics[0].severity, Severity::Warning);
@@ -231,11 +233,13 @@ TEST(OffsetTable, ErrorInALaterLineNamesThatLine) {
 }
 
 TEST(OffsetTable, ExtraLinesAreIgnoredWithAWarning) {
-  const auto r = parseOffsetTable(sixteen("0 0 0 0") + "garbage here\n", "o.cfg");
+  std::string text = sixteen("0 0 0 0");
+  for (int i = 17; i <= 64; ++i) text += "0 0 0 0\n";
+  const auto r = parseOffsetTable(text + "garbage here\n", "o.cfg");
   ASSERT_EQ(r.diagnostics.size(), 1u);
   EXPECT_EQ(r.diagnostics[0].code, "F107");
-  EXPECT_EQ(r.diagnostics[0].range.line, 17);
-  EXPECT_EQ(r.diagnostics[0].args.at(1), "16");
+  EXPECT_EQ(r.diagnostics[0].range.line, 65);
+  EXPECT_EQ(r.diagnostics[0].args.at(1), "64");
   EXPECT_TRUE(r.ok());
 }
 

@@ -79,7 +79,7 @@ INSTANTIATE_TEST_SUITE_P(
         AlarmCase{"G27NotAtReference", "G27 X10. Z20.\n", F, "A115", 1, 1, 0},
         AlarmCase{"ThreadSpindleStopped", "G97 S500\nG32 Z-10. F1.\n", F, "A116", 2, 1, 1},
         AlarmCase{"SubprogramNotSupported", "M98 P1000\n", F, "A117", 1, 1, 0},
-        AlarmCase{"OffsetDoesNotExist", "G00 X10.\nT0117\n", F, "A118", 2, 1, 1},
+        AlarmCase{"OffsetDoesNotExist", "G00 X10.\nT0165\n", F, "A118", 2, 1, 1},
         AlarmCase{"ThreadWithoutS", "M03\nG32 Z-10. F1.\n", F, "A119", 2, 1, 1},
         // Canned cycles (cycles_test.cpp has their motion).
         AlarmCase{"CycleProfileNotFound", "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\n"

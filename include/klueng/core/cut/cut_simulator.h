@@ -17,7 +17,8 @@
 //   A301 rapid move overlaps the stock by more than the tolerance (grazing is fine)
 //   A302 cutting while the spindle is stopped
 //   A303 holder (black pixels) overlaps the stock
-//   A304 tool or holder overlaps the chuck
+//   A304 tool or holder overlaps the chuck (the jaws, or the chuck body outside
+//        the spindle bore: a drill passing the part's end inside it is fine)
 // The simulation stops at the first alarm, with the tool where it happened.
 // Tool loading problems (F1xx from the image reader, A310/A311) are reported by
 // toolDiagnostics(); the first move of a tool whose bitmap is refused stops the
@@ -52,7 +53,8 @@ struct CutOptions {
 struct CutSetup {
   double stockDiameter = 50.0;  // mm
   double stockLength = 100.0;   // mm
-  io::MachineConfig machine;    // chuck grip and jaw height
+  double stockBore = 0.0;       // mm; 0 = solid bar, else a tube
+  io::MachineConfig machine;    // chuck grip, jaw height, spindle bore
   io::ToolTable tools;
   io::OffsetTable offsets;
   static CutSetup from(const io::JobHeader& header, const machine::MachineSetup& setup);

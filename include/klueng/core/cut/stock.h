@@ -1,7 +1,7 @@
 #pragma once
 // The bar being turned, as per-Z-column radial material intervals (dexels).
 // Work coordinates (SPEC 1): the stock occupies Z in [-length, 0] and radius
-// in [0, diameter/2]. Radial values are exact doubles; Z is resolved to
+// in [bore/2, diameter/2] (bore 0 = a solid bar; a tube otherwise). Radial values are exact doubles; Z is resolved to
 // `resolution` mm: column i stands for Z in [zLeft(i), zLeft(i) + resolution]
 // and is sampled at its centre. Bores and undercuts are several intervals.
 #include <span>
@@ -19,10 +19,12 @@ struct Interval {
 class Stock {
  public:
   Stock() = default;
-  // diameter, length > 0; resolution > 0 (coarsened so there are at most 2^21 columns).
-  Stock(double diameter, double length, double resolution = kDefaultResolution);
+  // diameter, length > 0; resolution > 0 (coarsened so there are at most 2^21 columns);
+  // bore in [0, diameter) (anything else is read as 0: a solid bar).
+  Stock(double diameter, double length, double resolution = kDefaultResolution, double bore = 0.0);
 
   double diameter() const { return diameter_; }
+  double bore() const { return bore_; }
   double length() const { return length_; }
   double resolution() const { return dz_; }
   int columnCount() const { return static_cast<int>(columns_.size()); }
@@ -54,6 +56,7 @@ class Stock {
   void updateOuter(int i);
 
   double diameter_ = 0.0;
+  double bore_ = 0.0;
   double length_ = 0.0;
   double dz_ = kDefaultResolution;
   double removed_ = 0.0;
@@ -69,15 +72,18 @@ struct Chuck {
   double stockLength = 0.0;   // mm
   double stockRadius = 0.0;   // mm
   double grip = 15.0;         // mm of bar inside the jaws
+  double spindleBoreRadius = 20.0;  // the body's through-hole: nothing there to hit
   double jawHeight = 20.0;    // radial size of the jaws outside the bar
   double bodyWidth = 40.0;    // Z size of the chuck body left of the bar
-  // Axis-aligned boxes in (z, x radius): the jaws, then the body.
+  // Axis-aligned boxes in (z, x radius): the jaws, then the body (a ring
+  // around the spindle bore).
   double jawZMin() const { return -stockLength; }
   double jawZMax() const { return -stockLength + grip; }
   double jawXMin() const { return stockRadius; }
   double jawXMax() const { return stockRadius + jawHeight; }
   double bodyZMin() const { return -stockLength - bodyWidth; }
   double bodyZMax() const { return -stockLength; }
+  double bodyXMin() const { return spindleBoreRadius; }
   double bodyXMax() const { return stockRadius + jawHeight + 10.0; }
 };
 

@@ -1,5 +1,6 @@
 #pragma once
-// A cutting tool built from its bitmap (SPEC 11: 2 px/mm; black 0x000000 =
+// A cutting tool built from its bitmap (SPEC 11: 2 px/mm, or a library
+// tool's own resolution; black 0x000000 =
 // holder, white 0xFFFFFF = empty, any other colour = cutting edge) and the
 // active offset's nose radius R and tip number.
 //
@@ -22,8 +23,12 @@
 
 namespace klueng::core::cut {
 
-constexpr double kPixelsPerMm = 2.0;
-constexpr int kMaxToolPixels = 1000;  // a tool bitmap is at most 500 mm each way
+constexpr double kPixelsPerMm = 2.0;   // the seed's resolution (SPEC 11)
+constexpr int kMaxToolPixels = 1000;  // a tool bitmap is at most 500 mm each way (at 2 px/mm)
+// The pixel limit at a bitmap's own resolution: 500 mm each way.
+constexpr int maxToolPixels(double pixelsPerMm) {
+  return static_cast<int>(kMaxToolPixels * pixelsPerMm / kPixelsPerMm);
+}
 
 struct Box {
   double z0 = 0.0, z1 = 0.0;  // z0 <= z1
@@ -54,14 +59,18 @@ struct ToolShape {
   io::RgbImage image;
   double controlPixelX = 0.0;
   double controlPixelY = 0.0;
+  double pixelsPerMm = kPixelsPerMm;  // the bitmap's resolution
   std::string fileName;
 };
 
 // Refuses (A310) a bitmap with no cutting pixels and (A311) one larger than
 // kMaxToolPixels; diagnostics name the file.
+// pixelsPerMm: the bitmap's resolution (2 for the seed's plain bitmaps; a
+// library tool's own, e.g. 10). Limit: maxToolPixels(pixelsPerMm).
 io::ReadResult<ToolShape> makeToolShape(const io::RgbImage& image, const std::string& fileName,
-                                        double noseRadius, int tip);
+                                        double noseRadius, int tip, double pixelsPerMm = kPixelsPerMm);
 // readImage (F1xx for missing / malformed / oversized files) + makeToolShape.
-io::ReadResult<ToolShape> loadToolShape(const std::string& path, double noseRadius, int tip);
+io::ReadResult<ToolShape> loadToolShape(const std::string& path, double noseRadius, int tip,
+                                        double pixelsPerMm = kPixelsPerMm);
 
 }  // namespace klueng::core::cut

@@ -9,6 +9,15 @@ namespace klueng::core::io {
 
 enum class LengthUnit { Inch = 0, Millimetre = 1 };
 
+// Where a job's stock size came from (SPEC 2 ext); the user is always told.
+enum class StockSource {
+  Header,       // the file's own 6-line header
+  CommandLine,  // klueng-cli --stock
+  JobDetails,   // Job details the user set for this (plain) file, remembered per file
+  Inferred,     // from the program itself (machine/stock_inference.h)
+  Default,      // nothing to go by: JobHeader's defaults
+};
+
 struct JobHeader {
   std::string project;
   std::string part;
@@ -18,9 +27,18 @@ struct JobHeader {
   double length = 100.0;
   LengthUnit lengthUnit = LengthUnit::Millimetre;
   std::string programmer;
+  // Tube stock: the bore diameter in `diameterUnit`; 0 = solid bar. Written on
+  // line 4 after the diameter: `1118x90` = 118 mm tube with a 90 mm bore.
+  double bore = 0.0;
+  StockSource stockSource = StockSource::Default;
   double diameterMm() const { return diameterUnit == LengthUnit::Inch ? diameter * 25.4 : diameter; }
   double lengthMm() const { return lengthUnit == LengthUnit::Inch ? length * 25.4 : length; }
+  double boreMm() const { return diameterUnit == LengthUnit::Inch ? bore * 25.4 : bore; }
 };
+
+// "Ø50 x 100 mm", "Ø118/Ø90 x 80 mm" (tube), "Ø2.125 x 4 in": the stock in
+// words that need no translation, for notes (I15x) and status texts.
+std::string stockSizeText(const JobHeader& header);
 
 enum class SourceEncoding { Utf8, Tis620 };
 
@@ -32,17 +50,27 @@ struct ProgramFile {
   SourceEncoding encoding = SourceEncoding::Utf8;
 };
 
+// SPEC 2 (ext): a file is a 6-line Klueng file only when its lines 4 and 5 are
+// unit-digit sizes (`150`, `02.5`, `1-5`, line 4 also `1118x90`) and none of
+// lines 1-3 and 6 is G-code (`%`, `(`, `;`, O/N/G/M/T + number). Anything
+// else is plain G-code: leading blank lines, `%`, comments and O numbers never
+// make a header, and no G-code line is ever read as one. A plain file that
+// looks like a header with a broken size line gets warning F117.
+//
 // Decodes bytes (UTF-8, or TIS-620/Windows-874 when not valid UTF-8) and splits
 // header from code. `fileName` is only used in diagnostics' args.
 // Never throws; binary or huge input gives F1xx diagnostics. A stock diameter or
-// length <= 0 gives E213 (SPEC 5 rule 13). Lines longer than 4096 characters
+// length <= 0 gives E213 (SPEC 5 rule 13); a bore that is not in (0, diameter)
+// gives F118. A plain file's header is `defaultsForPlain` as given (its
+// stockSource included); a header file's stockSource is Header. Lines longer than 4096 characters
 // are reported (F106) and read as empty lines, so line numbers stay right.
 ReadResult<ProgramFile> parseProgramFile(std::string_view bytes, const JobHeader& defaultsForPlain = {},
                                          const std::string& fileName = {});
 ReadResult<ProgramFile> readProgramFile(const std::string& path, const JobHeader& defaultsForPlain = {});
 
 // Text in Klueng's format (UTF-8, LF). A plain file is written back plain.
-// Sizes are written as unit digit + shortest number (50 mm -> "150").
+// Sizes are written as unit digit + shortest number (50 mm -> "150"), a bore
+// after an `x` on line 4 ("1118x90"); a file without a bore is written as before.
 std::string formatProgramFile(const ProgramFile& file);
 // Atomic write (temporary file in the same folder + fsync + rename).
 // Returns false and fills error (English, for logs) on failure.

@@ -2,19 +2,47 @@
 // tools.cfg and offset.cfg (SPEC 11) and the machine parameter file.
 #include <array>
 #include <string>
+#include <string_view>
 
 #include "klueng/core/io/result.h"
 
 namespace klueng::core::io {
 
-constexpr int kToolCount = 8;
-constexpr int kOffsetCount = 16;
+struct ToolLibrary;
+
+// Turret stations: a machine has 1..kMaxStations (machine.cfg turret_stations,
+// default kDefaultTurretStations). tools.cfg must have the seed's 8 lines;
+// lines 9..stations are optional.
+constexpr int kMaxStations = 24;
+constexpr int kDefaultTurretStations = 12;
+constexpr int kSeedToolLines = 8;
+constexpr int kToolCount = kMaxStations;  // every array and loop over stations
+// Offset rows 01..64; offset.cfg must have the seed's 16 lines, 17..64 are optional (0 0 0 0).
+constexpr int kOffsetCount = 64;
+constexpr int kSeedOffsetLines = 16;
+constexpr double kSeedPixelsPerMm = 2.0;  // SPEC 11: a plain bitmap is drawn at 2 px/mm
+constexpr std::string_view kLibraryPrefix = "library:";
 
 struct ToolTable {
-  // bitmap file name of tool 01..08 ([0] = tool 01), as written; empty = none.
-  std::array<std::string, kToolCount> bitmap;
+  // Line n of tools.cfg for station n ([0] = station 01), as written: a bitmap
+  // file name, `library:ID` (a tool of the library, docs/tools.md), or empty = none.
+  std::array<std::string, kMaxStations> bitmap;
+  // For `library:ID` lines: the library bitmap's path (empty while unresolved),
+  // its resolution, nose radius and tip. Plain bitmaps: empty / 2 px/mm.
+  std::array<std::string, kMaxStations> libraryPath;
+  std::array<double, kMaxStations> pixelsPerMm = filledPixelsPerMm();
+  int stations = kDefaultTurretStations;  // turret size the table was read for
   std::string folder;  // folder of tools.cfg, to resolve relative names
   std::string bitmapPath(int tool) const;  // resolved path, empty if none
+  double pixelsPerMmOf(int tool) const;    // 2 for a plain bitmap
+  std::string libraryId(int tool) const;   // the ID of a `library:ID` line, else empty
+  // Station `tool` becomes the library tool (line `library:ID`).
+  void setLibraryTool(int tool, const std::string& id, const std::string& path, double pixelsPerMm);
+  static std::array<double, kMaxStations> filledPixelsPerMm() {
+    std::array<double, kMaxStations> a{};
+    a.fill(kSeedPixelsPerMm);
+    return a;
+  }
 };
 
 struct Offset {
@@ -26,7 +54,8 @@ struct Offset {
 
 struct OffsetTable {
   std::array<Offset, kOffsetCount> offsets;  // [0] = offset 01
-  const Offset& at(int number) const { return offsets.at(number - 1); }  // number 1..16
+  const Offset& at(int number) const { return offsets.at(number - 1); }  // number 1..64
+  Offset& at(int number) { return offsets.at(number - 1); }
 };
 
 struct MachineConfig {
@@ -43,22 +72,36 @@ struct MachineConfig {
   double travelZMax = 1000.0;
   double chuckGrip = 15.0;       // mm of stock held by the jaws
   double chuckJawHeight = 20.0;  // radial size of the jaws outside the stock, mm
+  // Through-hole of the spindle and chuck body (diameter, mm): a drill or boring
+  // bar passing the part's left end inside it is not a chuck collision. 40 mm is
+  // the through-hole of a 160 mm three-jaw chuck on a school lathe; 0 = none.
+  double spindleBore = 40.0;
+  int turretStations = 12;       // tool stations on the turret, 1..24
 };
 
-// Line n = bitmap of tool 0n (empty line = no bitmap); lines after 8 are ignored
-// (warning F107). readToolTable also reports bitmaps that do not exist (F121).
-ReadResult<ToolTable> readToolTable(const std::string& path);
-ReadResult<ToolTable> parseToolTable(std::string_view text, const std::string& folder, const std::string& fileName);
+// Line n = bitmap of station n (empty line = no bitmap), or `library:ID`; at
+// least 8 lines (F120), lines after `stations` are ignored (warning F107).
+// `library:ID` lines are resolved against `library` (the shipped one when
+// null; F123 for an unknown ID). readToolTable also reports bitmaps that do
+// not exist (F121).
+ReadResult<ToolTable> readToolTable(const std::string& path, int stations = kDefaultTurretStations,
+                                    const ToolLibrary* library = nullptr);
+ReadResult<ToolTable> parseToolTable(std::string_view text, const std::string& folder, const std::string& fileName,
+                                     int stations = kDefaultTurretStations, const ToolLibrary* library = nullptr);
+// At least 8 lines, up to the last station with a tool.
 std::string formatToolTable(const ToolTable& t);
 
 // Line n = `X Z R T` of offset n; a bad row stays 0 0 0 0 and is reported.
+// At least 16 lines (F130); rows 17..64 are optional; later lines F107.
 ReadResult<OffsetTable> readOffsetTable(const std::string& path);
 ReadResult<OffsetTable> parseOffsetTable(std::string_view text, const std::string& fileName);
+// 16 rows, and more up to the last row that is not 0 0 0 0.
 std::string formatOffsetTable(const OffsetTable& t);
 
 // machine.cfg: `key = value` lines, '#' comments; unknown keys and bad values are errors.
 // Keys: rapid_x rapid_z max_spindle_rpm reference_x reference_z start_x start_z
-// travel_x_min travel_x_max travel_z_min travel_z_max chuck_grip chuck_jaw_height.
+// travel_x_min travel_x_max travel_z_min travel_z_max chuck_grip chuck_jaw_height
+// spindle_bore turret_stations (a whole number 1..24, F147 otherwise).
 // Missing keys keep MachineConfig's defaults (SPEC 1).
 ReadResult<MachineConfig> readMachineConfig(const std::string& path);
 ReadResult<MachineConfig> parseMachineConfig(std::string_view text, const std::string& fileName);

@@ -15,8 +15,7 @@ struct RunOptions {
   bool optionalStop = false;   // M01 stops when on
   bool blockSkip = false;      // '/' blocks skipped when on
   bool stopAtM00 = false;      // false: a headless run records the stop and continues
-  // Units before any G20/G21 (CLI --units, the GUI setting); nullopt = the
-  // profile's power-on units (Haas: inch).
+  // Units before any G20/G21 (CLI --units, the GUI setting); nullopt = the dialect's.
   std::optional<gcode::InputUnits> powerOnUnits;
 };
 

@@ -1,0 +1,211 @@
+#include "klueng/core/machine/stock_inference.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+
+#include "klueng/core/geometry.h"
+
+namespace klueng::core::machine {
+
+namespace {
+
+constexpr double kMmPerInch = 25.4;
+constexpr double kOnCentre = 0.5;  // mm of diameter: a feed at X0 (drill, face to centre)
+
+bool isFeed(const Move& m) {
+  return m.kind == MoveKind::Line || m.kind == MoveKind::Arc || m.kind == MoveKind::Thread;
+}
+
+// A pass along -Z: mostly axial, going left.
+bool isZPass(const Move& m) {
+  const Vec2 d = m.path.end - m.path.start;
+  return isFeed(m) && d.x() < -1e-6 && std::abs(d.x()) > 5.0 * std::abs(d.y());
+}
+
+// A -Z pass inside the part whose next change in X goes toward the centre:
+// the tool leaves an inside wall (boring), not an outside one (turning).
+bool isInsidePass(const std::vector<Move>& moves, std::size_t i) {
+  const Move& m = moves[i];
+  if (!isZPass(m) || zOf(m.path.end) >= 0.0 || diameterOf(m.path.start) < kOnCentre) return false;
+  for (std::size_t k = i + 1; k < moves.size(); ++k) {
+    const double dx = xOf(moves[k].path.end) - xOf(moves[k].path.start);
+    if (std::abs(dx) > 1e-6) return dx < 0.0;
+  }
+  return false;
+}
+
+bool isCycleBlock(const gcode::Block& b) {
+  for (const gcode::Word* g : b.all('G')) {
+    const int c = g->code();
+    if (!g->hasDecimalPoint && ((c >= 70 && c <= 76) || c == 90 || c == 92 || c == 94)) return true;
+  }
+  return false;
+}
+
+double roundUp(double value, double step) { return std::ceil(value / step - 1e-9) * step; }
+double roundDown(double value, double step) { return std::floor(value / step + 1e-9) * step; }
+
+std::string lineText(std::string_view gcode, int firstLine, int line) {
+  int n = firstLine;
+  std::size_t pos = 0;
+  while (n < line && pos < gcode.size()) {
+    const std::size_t nl = gcode.find('\n', pos);
+    if (nl == std::string_view::npos) return {};
+    pos = nl + 1;
+    ++n;
+  }
+  if (n != line || pos > gcode.size()) return {};
+  std::string_view s = gcode.substr(pos, gcode.find('\n', pos) - pos);
+  // Drop the comment and trailing blanks: "N20 G00 X52. Z2." is the block.
+  s = s.substr(0, std::min(s.find('('), s.find(';')));
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  return std::string(s);
+}
+
+std::string number(double v) {
+  std::string s = fmt::format("{:.4f}", v + 0.0);
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  return s;
+}
+
+Diagnostic note(const char* code, int line, std::vector<std::string> args) {
+  Diagnostic d;
+  d.severity = Severity::Note;
+  d.code = code;
+  d.range = SourceRange{line, line > 0 ? 1 : 0, 0};
+  d.args = std::move(args);
+  return d;
+}
+
+}  // namespace
+
+double metricBarSize(double d, bool above) {
+  if (above) {
+    for (const double s : kMetricBarSizes)
+      if (s > d + 1e-9) return s;
+    return roundUp(d + 1e-9, 10.0);
+  }
+  double best = 0.0;
+  for (const double s : kMetricBarSizes)
+    if (s <= d + 1e-9) best = s;
+  return best > 0.0 ? best : std::max(1.0, std::floor(d));
+}
+
+double inchBarSize(double d, bool above) {
+  if (above) return roundDown(d, 0.125) + 0.125;
+  const double s = roundDown(d, 0.125);
+  return s > 0.0 ? s : std::max(0.0625, roundDown(d, 0.0625));
+}
+
+void StockInference::applyTo(io::JobHeader& h) const {
+  const io::LengthUnit unit = inch ? io::LengthUnit::Inch : io::LengthUnit::Millimetre;
+  h.diameter = diameter;
+  h.length = length;
+  h.bore = bore;
+  h.diameterUnit = unit;
+  h.lengthUnit = unit;
+  h.stockSource = io::StockSource::Inferred;
+}
+
+StockInference inferStock(const gcode::Program& program, const MachineSetup& setup, const RunOptions& options,
+                          const InferenceOptions& inference) {
+  StockInference r;
+  const Timeline tl = interpret(program, setup, options);
+  const std::vector<Move>& moves = tl.moves;
+  std::map<int, Units> unitsOfBlock;
+  for (const StateSnapshot& s : tl.snapshots) unitsOfBlock[s.blockIndex] = s.modal.units;
+
+  // Ø: the first feeding block off the centre that is not inside work.
+  std::size_t decider = moves.size();
+  for (std::size_t i = 0; i < moves.size() && decider == moves.size(); ++i) {
+    const Move& m = moves[i];
+    if (!isFeed(m) || isInsidePass(moves, i)) continue;
+    std::size_t first = i;  // the block's first move starts where the block started
+    while (first > 0 && moves[first - 1].blockIndex == m.blockIndex) --first;
+    // An approach comes from in front of the face, off the centre (not a drill,
+    // not a retract inside the part).
+    if (diameterOf(moves[first].path.start) < kOnCentre || zOf(moves[first].path.start) < -1e-6) continue;
+    decider = i;
+    // Quote the block that brought the tool there (N30 G00 X52. Z2.), not the cut.
+    r.diameterLine = first > 0 ? moves[first - 1].line : m.line;
+    const gcode::Block* block = m.blockIndex >= 0 && static_cast<std::size_t>(m.blockIndex) < program.blocks.size()
+                                    ? &program.blocks[static_cast<std::size_t>(m.blockIndex)]
+                                    : nullptr;
+    r.cycleStart = block && isCycleBlock(*block);
+    r.inch = unitsOfBlock.count(m.blockIndex) && unitsOfBlock[m.blockIndex] == Units::Inch;
+    const double unit = r.inch ? kMmPerInch : 1.0;
+    // A plain first cut along -Z is a pass inside the bar; anything else starts above it.
+    const bool insideBar = !r.cycleStart && first == i && isZPass(m);
+    r.approachDiameter = diameterOf(moves[first].path.start) / unit;
+    r.diameter = r.inch ? inchBarSize(r.approachDiameter, insideBar) : metricBarSize(r.approachDiameter, insideBar);
+  }
+  if (decider == moves.size()) return r;
+  r.found = true;
+  const double unit = r.inch ? kMmPerInch : 1.0;
+
+  // Length: the deepest Z while feeding, the cut-off margin and the chuck grip.
+  double deepest = 0.0;
+  for (const Move& m : moves) {
+    if (!isFeed(m)) continue;
+    const double z = std::min(zOf(m.path.start), zOf(m.path.end));
+    if (z < deepest - 1e-9) {
+      deepest = z;
+      r.lengthLine = m.line;
+    }
+  }
+  r.deepestZ = deepest / unit;
+  r.cutOffMargin = r.inch ? roundUp(inference.cutOffMarginMm / kMmPerInch, 0.05) : inference.cutOffMarginMm;
+  r.chuckGrip = std::max(0.0, setup.machine.chuckGrip) / unit;
+  r.length = roundUp(-r.deepestZ + r.cutOffMargin + r.chuckGrip, r.inch ? 0.25 : 5.0);
+
+  // Bore: inside passes before the first drilling on centre.
+  for (std::size_t i = 0; i < moves.size(); ++i) {
+    const Move& m = moves[i];
+    if (isZPass(m) && diameterOf(m.path.start) < kOnCentre && zOf(m.path.end) < 0.0) break;  // drilled
+    if (!isInsidePass(moves, i)) continue;
+    const double d = diameterOf(m.path.start) / unit;
+    if (r.insidePassDiameter == 0.0 || d < r.insidePassDiameter) {
+      r.insidePassDiameter = d;
+      r.boreLine = m.line;
+    }
+  }
+  if (r.insidePassDiameter > 0.0) {
+    const double bore = r.inch ? roundDown(r.insidePassDiameter - 0.0625, 0.0625)
+                               : std::floor(r.insidePassDiameter - 1.0 + 1e-9);
+    if (bore > 0.0 && bore < r.diameter) r.bore = bore;
+    else r.boreLine = 0;
+  }
+  return r;
+}
+
+std::vector<Diagnostic> stockNotes(const io::JobHeader& stock, const StockInference* inference,
+                                   std::string_view gcode, int firstLine) {
+  const std::string size = io::stockSizeText(stock);
+  switch (stock.stockSource) {
+    case io::StockSource::Header: return {note("I156", 0, {size})};
+    case io::StockSource::CommandLine: return {note("I150", 0, {size})};
+    case io::StockSource::JobDetails: return {note("I151", 0, {size})};
+    case io::StockSource::Default: return {note("I155", 0, {size})};
+    case io::StockSource::Inferred: break;
+  }
+  if (!inference || !inference->found) return {note("I155", 0, {size})};
+  const StockInference& r = *inference;
+  std::vector<Diagnostic> notes;
+  notes.push_back(note(r.cycleStart ? "I153" : "I152", r.diameterLine,
+                       {size, lineText(gcode, firstLine, r.diameterLine)}));
+  if (r.lengthLine > 0)
+    notes.push_back(note("I157", r.lengthLine,
+                         {number(r.length), number(r.deepestZ), lineText(gcode, firstLine, r.lengthLine),
+                          number(r.cutOffMargin), number(r.chuckGrip)}));
+  if (r.bore > 0.0)
+    notes.push_back(note("I154", r.boreLine, {number(r.bore), lineText(gcode, firstLine, r.boreLine)}));
+  return notes;
+}
+
+}  // namespace klueng::core::machine

@@ -1,0 +1,453 @@
+#include "klueng/core/machine/tool_inference.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <set>
+
+#include "machine/tool_words.h"
+
+namespace klueng::core::machine {
+
+namespace {
+
+using io::ToolKind;
+
+constexpr double kOnCentreMm = 0.01;     // |X| below this (diameter) is on the centre line
+constexpr double kCentreDrillMaxMm = 5.0;  // a drill on centre no deeper than this is a centre drill
+constexpr double kPartingBeyondMm = 2.0;   // a plunge to X0 deeper than this in Z is not facing
+
+struct Evidence {
+  ToolKind kind = ToolKind::Unknown;
+  ToolReason reason = ToolReason::Turning;
+  std::string detail;
+  int line = 0;
+  bool strong = false;
+  bool finishing = false;
+  std::string insert;
+  double drillMm = 0.0;
+  double depthMm = 0.0;  // drilling: deepest Z (negative)
+};
+
+struct StationUse {
+  int firstLine = 0;              // the first T block selecting it
+  std::set<int> offsets;          // offset numbers used with it (1..)
+  std::optional<Evidence> comment;
+  std::optional<Evidence> cycle;  // the first telling cycle / move
+  std::optional<Evidence> turning;
+  double drillDepthMm = 0.0;      // deepest drilling on centre
+  int drillLine = 0;
+  std::string drillCode;
+  std::optional<double> approachX;  // first rapid X after selection (mm, diameter)
+};
+
+std::string twoDigits(int n) { return fmt::format("{:02}", n); }
+
+// The text of ( ) and ; comments on one raw line.
+std::string commentOf(std::string_view line) {
+  std::string out;
+  int depth = 0;
+  std::string cur;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (depth == 0 && c == ';') {
+      if (!out.empty()) out += ' ';
+      out += std::string(line.substr(i + 1));
+      break;
+    }
+    if (c == '(') {
+      if (depth++ == 0) continue;
+    } else if (c == ')' && depth > 0) {
+      if (--depth == 0) {
+        if (!out.empty()) out += ' ';
+        out += cur;
+        cur.clear();
+        continue;
+      }
+    }
+    if (depth > 0) cur += c;
+  }
+  if (depth > 0) out += (out.empty() ? "" : " ") + cur;
+  // Trim.
+  const auto b = out.find_first_not_of(" \t");
+  const auto e = out.find_last_not_of(" \t\r");
+  return b == std::string::npos ? std::string() : out.substr(b, e - b + 1);
+}
+
+std::vector<std::string_view> splitLines(std::string_view text) {
+  std::vector<std::string_view> lines;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\n' || text[i] == '\r') {
+      lines.push_back(text.substr(start, i - start));
+      if (text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;
+      start = i + 1;
+    }
+  }
+  if (start < text.size()) lines.push_back(text.substr(start));
+  return lines;
+}
+
+const char* noteCode(ToolReason r) {
+  switch (r) {
+    case ToolReason::Comment: return "I401";
+    case ToolReason::Threading: return "I402";
+    case ToolReason::ThreadingInside: return "I403";
+    case ToolReason::Grooving: return "I404";
+    case ToolReason::Drilling: return "I405";
+    case ToolReason::Boring: return "I406";
+    case ToolReason::Parting: return "I407";
+    case ToolReason::Turning: return "I408";
+    case ToolReason::Override: return "I409";
+  }
+  return "I408";
+}
+
+// The library tool for a kind of work: the first of that kind, refined by the
+// insert or drill size a comment names and by finishing.
+const io::LibraryTool* pick(const io::ToolLibrary& lib, const Evidence& e) {
+  const io::LibraryTool* best = nullptr;
+  const std::string insert = e.insert.empty() ? "cnmg" : e.insert;  // the everyday insert unless named
+  for (const io::LibraryTool& t : lib.tools) {
+    if (t.kind != e.kind) continue;
+    if (!best) best = &t;
+    if (e.kind == ToolKind::Turning) {
+      const bool insertMatch = t.id.rfind(insert, 0) == 0;
+      const bool bestInsert = best->id.rfind(insert, 0) == 0;
+      if (insertMatch && !bestInsert) best = &t;
+      else if (insertMatch && bestInsert && e.finishing && t.noseRadius < best->noseRadius) best = &t;
+    } else if (e.kind == ToolKind::Drill && e.drillMm > 0.0) {
+      if (std::abs(t.size - e.drillMm) < std::abs(best->size - e.drillMm)) best = &t;
+    }
+  }
+  return best;
+}
+
+bool offsetEmpty(const io::Offset& o) { return o.x == 0.0 && o.z == 0.0 && o.r == 0.0 && o.tip == 0; }
+
+// What the station's current tool is: a library tool's kind, a library
+// bitmap's, or what its file name says.
+std::optional<ToolKind> currentKind(const io::ToolTable& tools, int station, const io::ToolLibrary& lib) {
+  const std::string& line = tools.bitmap[static_cast<std::size_t>(station - 1)];
+  if (line.empty()) return std::nullopt;
+  if (const std::string id = tools.libraryId(station); !id.empty()) {
+    const io::LibraryTool* t = lib.find(id);
+    return t ? t->kind : ToolKind::Unknown;
+  }
+  return io::guessToolKind(line);
+}
+
+// Walks the blocks once, collecting per station what it does.
+class Scanner {
+ public:
+  Scanner(const gcode::Program& program, std::string_view text, int firstLine)
+      : program_(program), lines_(splitLines(text)), firstLine_(firstLine) {}
+
+  std::map<int, StationUse> scan() {
+    // Lines that hold words other than N: a comment above such a line belongs to it.
+    std::set<int> blockLines;
+    for (const gcode::Block& b : program_.blocks)
+      if (std::any_of(b.words.begin(), b.words.end(), [](const gcode::Word& w) { return w.letter != 'N'; }))
+        blockLines.insert(b.line);
+    for (std::size_t bi = 0; bi < program_.blocks.size(); ++bi) {
+      const gcode::Block& b = program_.blocks[bi];
+      for (const gcode::Word* g : b.all('G'))
+        if (!g->hasDecimalPoint && (g->code() == 20 || g->code() == 21)) unit_ = g->code() == 20 ? 25.4 : 1.0;
+      if (const gcode::Word* t = b.find('T'); t && !t->hasDecimalPoint) select(b, *t, blockLines);
+      if (station_ > 0) motion(b);
+    }
+    return std::move(uses_);
+  }
+  const std::vector<int>& order() const { return order_; }
+  std::map<int, Evidence> partings_;  // station -> its plunge to X0 (kept when among the last tools)
+
+ private:
+  const gcode::Program& program_;
+  std::vector<std::string_view> lines_;
+  int firstLine_;
+  std::map<int, StationUse> uses_;
+  std::vector<int> order_;  // station of every T selection, in program order
+  int station_ = 0;
+  double unit_ = 1.0;
+  int motion_ = 0;
+  std::optional<double> x_, z_;  // mm (x diameter)
+  bool afterSelect_ = false;
+
+  std::string rawComment(int fileLine) const {
+    const int i = fileLine - firstLine_;
+    if (i < 0 || i >= static_cast<int>(lines_.size())) return {};
+    return commentOf(lines_[static_cast<std::size_t>(i)]);
+  }
+
+  void select(const gcode::Block& b, const gcode::Word& t, const std::set<int>& blockLines) {
+    const int code = t.code();
+    const int station = code / 100, offset = code % 100;
+    if (station < 1 || station > io::kMaxStations) return;
+    station_ = station;
+    afterSelect_ = true;
+    order_.push_back(station);
+    StationUse& u = uses_[station];
+    if (!u.firstLine) u.firstLine = b.line;
+    if (offset > 0) u.offsets.insert(offset);
+    if (u.comment) return;
+    // The T block's comment, then comment lines just before it (up to 3; an
+    // `N1 (OD ROUGH)` line is one, as Haas programs write them), then just after it.
+    std::vector<int> candidates = {b.line};
+    for (int l = b.line - 1; l >= b.line - 3 && !blockLines.count(l); --l) candidates.push_back(l);
+    for (int l = b.line + 1; l <= b.line + 2 && !blockLines.count(l); ++l) candidates.push_back(l);
+    for (int l : candidates) {
+      const std::string text = rawComment(l);
+      if (text.empty()) continue;
+      const detail::CommentTool c = detail::classifyComment(text);
+      if (c.kind == ToolKind::Unknown) continue;
+      Evidence e;
+      e.kind = c.kind;
+      e.reason = ToolReason::Comment;
+      e.detail = text.size() > 60 ? text.substr(0, 60) : text;
+      e.line = l;
+      e.strong = true;
+      e.finishing = c.finishing;
+      e.insert = c.insert;
+      e.drillMm = c.drillMm;
+      u.comment = e;
+      return;
+    }
+  }
+
+  void note(ToolKind kind, ToolReason reason, const std::string& detail, int line, bool strong = true,
+            bool finishing = false) {
+    StationUse& u = uses_[station_];
+    Evidence e;
+    e.kind = kind;
+    e.reason = reason;
+    e.detail = detail;
+    e.line = line;
+    e.strong = strong;
+    e.finishing = finishing;
+    if (strong && !u.cycle) u.cycle = e;
+    if (!strong && !u.turning) u.turning = e;
+  }
+
+  static std::string gText(int g) { return fmt::format("G{:02}", g); }
+
+  void motion(const gcode::Block& b) {
+    StationUse& u = uses_[station_];
+    int cycle = -1;
+    for (const gcode::Word* g : b.all('G')) {
+      if (g->hasDecimalPoint) continue;
+      const int n = g->code();
+      if (n == 27 || n == 28 || n == 29 || n == 30 || n == 53) {
+        x_.reset();  // to the reference / machine position: not a work position
+        z_.reset();
+        return;
+      }
+      if (n == 50 && (b.has('X') || b.has('Z'))) {
+        if (const gcode::Word* w = b.find('X')) x_ = w->value * unit_;
+        if (const gcode::Word* w = b.find('Z')) z_ = w->value * unit_;
+        return;
+      }
+      if (n == 0 || n == 1 || n == 2 || n == 3 || n == 32 || n == 90 || n == 92 || n == 94) motion_ = n;
+      if ((n >= 70 && n <= 76) || (n >= 81 && n <= 83) || n == 90 || n == 92 || n == 94) cycle = n;
+      if (n == 80) motion_ = 0;
+    }
+    const gcode::Word* xw = b.find('X');
+    const gcode::Word* uw = b.find('U');
+    const gcode::Word* zw = b.find('Z');
+    const gcode::Word* ww = b.find('W');
+    std::optional<double> x = x_, z = z_;
+    if (xw) x = xw->value * unit_;
+    else if (uw && x) x = *x + uw->value * unit_;
+    if (zw) z = zw->value * unit_;
+    else if (ww && z) z = *z + ww->value * unit_;
+
+    if (cycle == 76 || cycle == 92 || motion_ == 32) {
+      if (cycle == 76 && !xw && !zw && !uw && !ww) return;  // the first G76 block of the two
+      const bool inside = u.approachX && x && *x > *u.approachX + kOnCentreMm;
+      const int code = cycle >= 0 ? cycle : 32;
+      note(inside ? ToolKind::ThreadingId : ToolKind::ThreadingOd,
+           inside ? ToolReason::ThreadingInside : ToolReason::Threading, gText(code), b.line);
+    } else if ((cycle == 75 || cycle == 74) && !xw && !zw && !uw && !ww) {
+      return;  // the first G74/G75 block of the two (retract R only)
+    } else if (cycle == 75) {
+      if (x && *x <= kOnCentreMm) note(ToolKind::Parting, ToolReason::Parting, "G75 X0", b.line);
+      else note(ToolKind::Grooving, ToolReason::Grooving, "G75", b.line);
+    } else if (cycle == 74 || (cycle >= 81 && cycle <= 83)) {
+      if (cycle == 74 && xw && std::abs(xw->value) > kOnCentreMm) {
+        note(ToolKind::Grooving, ToolReason::Grooving, "G74", b.line);
+      } else if (zw || ww) {
+        drilling(u, z.value_or(0.0), gText(cycle), b.line);
+      }
+    } else if (cycle >= 71 && cycle <= 73) {
+      const gcode::Word* allowance = b.find('U');
+      if (b.find('P') && allowance && allowance->value < 0.0)
+        note(ToolKind::Boring, ToolReason::Boring, fmt::format("{} U{}", gText(cycle), allowance->number), b.line);
+      else if (b.find('P'))
+        note(ToolKind::Turning, ToolReason::Turning, gText(cycle), b.line, false);
+    } else if (cycle == 70 || cycle == 90 || cycle == 94) {
+      note(ToolKind::Turning, ToolReason::Turning, gText(cycle), b.line, false, cycle == 70);
+    } else if (motion_ == 0 && (xw || uw) && afterSelect_ && !u.approachX) {
+      u.approachX = x;
+    } else if ((motion_ == 1 || motion_ == 2 || motion_ == 3) && (xw || uw || zw || ww)) {
+      const bool onCentre = x_ && std::abs(*x_) <= kOnCentreMm && x && std::abs(*x) <= kOnCentreMm;
+      if (onCentre && (zw || ww) && z && *z < 0.0) {
+        drilling(u, *z, motion_ == 1 ? "G01 X0" : gText(motion_), b.line);
+      } else if (x && *x <= kOnCentreMm && !zw && !ww && z && *z < -kPartingBeyondMm && x_ && *x_ > *x) {
+        Evidence e;
+        e.kind = ToolKind::Parting;
+        e.reason = ToolReason::Parting;
+        e.detail = xw ? "X" + xw->number : "U" + uw->number;
+        e.line = b.line;
+        e.strong = true;
+        partings_[station_] = e;
+      } else {
+        note(ToolKind::Turning, ToolReason::Turning, gText(motion_), b.line, false);
+      }
+    }
+    x_ = x;
+    z_ = z;
+  }
+
+  void drilling(StationUse& u, double depth, const std::string& code, int line) {
+    if (depth < u.drillDepthMm || !u.drillLine) {
+      u.drillDepthMm = std::min(depth, u.drillDepthMm);
+      if (!u.drillLine) {
+        u.drillLine = line;
+        u.drillCode = code;
+      }
+    }
+  }
+};
+
+}  // namespace
+
+Diagnostic ToolChoice::note() const {
+  Diagnostic d;
+  d.severity = Severity::Note;
+  d.code = noteCode(reason);
+  d.range.line = line;
+  d.args = {twoDigits(station), libraryId, detail, std::to_string(line)};
+  return d;
+}
+
+std::vector<Diagnostic> ToolInference::notes() const {
+  std::vector<Diagnostic> out;
+  for (const ToolChoice& c : choices) out.push_back(c.note());
+  out.insert(out.end(), offsetNotes.begin(), offsetNotes.end());
+  return out;
+}
+
+const ToolChoice* ToolInference::choiceFor(int station) const {
+  for (const ToolChoice& c : choices)
+    if (c.station == station) return &c;
+  return nullptr;
+}
+
+ToolInference inferTools(const gcode::Program& program, std::string_view gcodeText, int gcodeFirstLine,
+                         const MachineSetup& setup, const io::ToolLibrary& library,
+                         const std::vector<StationOverride>& overrides, int stations) {
+  ToolInference out;
+  out.setup = setup;
+  Scanner scanner(program, gcodeText, gcodeFirstLine);
+  std::map<int, StationUse> uses = scanner.scan();
+  // Stations past the turret (or the dialect's T range) are the checker's business.
+  const int lastStation = std::clamp(stations > 0 ? stations : setup.tools.stations, 1, io::kMaxStations);
+  std::erase_if(uses, [&](const auto& entry) { return entry.first > lastStation; });
+
+  // Parting counts only for one of the last two tools the program selects.
+  std::vector<int> last;
+  for (auto it = scanner.order().rbegin(); it != scanner.order().rend() && last.size() < 2; ++it)
+    if (std::find(last.begin(), last.end(), *it) == last.end()) last.push_back(*it);
+  for (const auto& [station, e] : scanner.partings_)
+    if (std::find(last.begin(), last.end(), station) != last.end() && !uses[station].cycle) uses[station].cycle = e;
+
+  const auto assign = [&](int station, const io::LibraryTool& tool, ToolReason reason, std::string detail, int line,
+                          const std::set<int>& offsets) {
+    out.setup.tools.setLibraryTool(station, tool.id, library.bitmapPath(tool), tool.pixelsPerMm);
+    out.choices.push_back({station, tool.id, reason, std::move(detail), line});
+    for (int n : offsets) {
+      if (n < 1 || n > io::kOffsetCount || !offsetEmpty(out.setup.offsets.at(n))) continue;
+      io::Offset& o = out.setup.offsets.at(n);
+      o.r = tool.noseRadius;
+      o.tip = tool.tip;
+      Diagnostic d;
+      d.severity = Severity::Note;
+      d.code = "I410";
+      d.range.line = line;
+      d.args = {twoDigits(n), fmt::format("{:g}", tool.noseRadius), std::to_string(tool.tip), tool.id};
+      out.offsetNotes.push_back(std::move(d));
+    }
+  };
+
+  std::set<int> overridden;
+  for (const StationOverride& o : overrides) {
+    const io::LibraryTool* tool = library.find(o.libraryId);
+    if (!tool || o.station < 1 || o.station > lastStation) continue;
+    overridden.insert(o.station);
+    const auto it = uses.find(o.station);
+    assign(o.station, *tool, ToolReason::Override, {}, 0, it == uses.end() ? std::set<int>{} : it->second.offsets);
+  }
+
+  for (auto& [station, use] : uses) {
+    if (overridden.count(station)) continue;
+    // Drilling on centre: a centre drill when shallow, else a drill.
+    if (use.drillLine && !use.cycle) {
+      Evidence e;
+      e.kind = -use.drillDepthMm <= kCentreDrillMaxMm ? ToolKind::CentreDrill : ToolKind::Drill;
+      e.reason = ToolReason::Drilling;
+      e.detail = use.drillCode;
+      e.line = use.drillLine;
+      e.strong = true;
+      use.cycle = e;
+    }
+    std::optional<Evidence> want = use.comment;
+    if (use.cycle) {
+      const bool refine = !want || want->kind == ToolKind::Turning ||
+                          (want->kind == ToolKind::ThreadingOd && use.cycle->kind == ToolKind::ThreadingId);
+      if (refine) want = use.cycle;
+    }
+    if (!want) want = use.turning;
+    if (!want || want->kind == ToolKind::Unknown) continue;
+    const std::optional<ToolKind> have = currentKind(setup.tools, station, library);
+    if (have && (io::toolKindFits(*have, want->kind) || !want->strong)) continue;  // keeps its tool
+    const io::LibraryTool* tool = pick(library, *want);
+    if (!tool) continue;
+    assign(station, *tool, want->reason, want->detail, want->line, use.offsets);
+  }
+  std::sort(out.choices.begin(), out.choices.end(),
+            [](const ToolChoice& a, const ToolChoice& b) { return a.station < b.station; });
+  return out;
+}
+
+bool parseStationOverride(std::string_view text, int stations, const io::ToolLibrary& library, StationOverride& out,
+                          std::string& error) {
+  const std::size_t eq = text.find('=');
+  const std::string_view number = eq == std::string_view::npos ? std::string_view() : text.substr(0, eq);
+  const std::string_view id = eq == std::string_view::npos ? std::string_view() : text.substr(eq + 1);
+  int station = 0;
+  bool digits = !number.empty() && number.size() <= 2;
+  for (char c : number) {
+    if (c < '0' || c > '9') digits = false;
+    else station = station * 10 + (c - '0');
+  }
+  if (eq == std::string_view::npos || !digits || id.empty()) {
+    error = fmt::format("--tool wants N=ID (a station and a library tool, e.g. 3=threading-60), not '{}'; "
+                        "library tools: {}", text, library.idList());
+    return false;
+  }
+  if (station < 1 || station > stations) {
+    error = fmt::format("--tool {}: station {} is not on the turret (1 to {})", text, station, stations);
+    return false;
+  }
+  if (!library.find(id)) {
+    error = fmt::format("--tool {}: no library tool '{}'; library tools: {}", text, id, library.idList());
+    return false;
+  }
+  out.station = station;
+  out.libraryId = std::string(id);
+  return true;
+}
+
+}  // namespace klueng::core::machine

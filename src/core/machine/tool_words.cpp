@@ -1,0 +1,129 @@
+#include "machine/tool_words.h"
+
+#include <cctype>
+#include <cstdlib>
+#include <initializer_list>
+#include <vector>
+
+namespace klueng::core::machine::detail {
+
+namespace {
+
+using io::ToolKind;
+
+// Upper-case ASCII; Thai and other UTF-8 bytes kept as they are.
+std::string upper(std::string_view s) {
+  std::string out(s);
+  for (char& c : out)
+    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+  return out;
+}
+
+// ASCII words of the comment ("I.D." -> "ID", "CUT-OFF" -> "CUT", "OFF").
+std::vector<std::string> words(const std::string& up) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (char c : up) {
+    if ((c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9')) {
+      cur += c;
+    } else if (c == '.' && !cur.empty() && cur.size() <= 2 && std::isalpha(static_cast<unsigned char>(cur.back()))) {
+      continue;  // I.D. / O.D.
+    } else if (!cur.empty()) {
+      out.push_back(cur);
+      cur.clear();
+    }
+  }
+  if (!cur.empty()) out.push_back(cur);
+  return out;
+}
+
+bool hasWord(const std::vector<std::string>& ws, std::initializer_list<std::string_view> any) {
+  for (const std::string& w : ws)
+    for (std::string_view a : any)
+      if (w == a) return true;
+  return false;
+}
+
+bool hasPrefix(const std::vector<std::string>& ws, std::initializer_list<std::string_view> any) {
+  for (const std::string& w : ws)
+    for (std::string_view a : any)
+      if (w.rfind(a, 0) == 0) return true;
+  return false;
+}
+
+bool hasText(const std::string& up, std::initializer_list<std::string_view> any) {
+  for (std::string_view a : any)
+    if (up.find(a) != std::string::npos) return true;
+  return false;
+}
+
+bool followedBy(const std::vector<std::string>& ws, std::string_view first, std::string_view second) {
+  for (std::size_t i = 0; i + 1 < ws.size(); ++i)
+    if (ws[i] == first && ws[i + 1] == second) return true;
+  return false;
+}
+
+// A size in mm written with the tool: "16MM", "16 MM", "Ø16", "DIA 16", "D16", "16 มม".
+double sizeMm(const std::string& up) {
+  const auto number = [&](std::size_t at, std::size_t& end) -> double {
+    std::size_t i = at;
+    while (i < up.size() && (std::isdigit(static_cast<unsigned char>(up[i])) || up[i] == '.')) ++i;
+    end = i;
+    if (i == at) return 0.0;
+    return std::strtod(up.substr(at, i - at).c_str(), nullptr);
+  };
+  for (std::size_t i = 0; i < up.size(); ++i) {
+    if (!std::isdigit(static_cast<unsigned char>(up[i])) || (i > 0 && (std::isdigit(static_cast<unsigned char>(up[i - 1])) || up[i - 1] == '.')))
+      continue;
+    std::size_t end = 0;
+    const double v = number(i, end);
+    std::size_t j = end;
+    while (j < up.size() && up[j] == ' ') ++j;
+    if (up.compare(j, 2, "MM") == 0 || up.compare(j, 6, "มม") == 0) return v;
+    // Ø (C3 98) or "DIA" just before the number.
+    std::size_t k = i;
+    while (k > 0 && up[k - 1] == ' ') --k;
+    if ((k >= 2 && static_cast<unsigned char>(up[k - 2]) == 0xC3 && static_cast<unsigned char>(up[k - 1]) == 0x98) ||
+        (k >= 3 && up.compare(k - 3, 3, "DIA") == 0))
+      return v;
+  }
+  return 0.0;
+}
+
+}  // namespace
+
+CommentTool classifyComment(std::string_view comment) {
+  CommentTool out;
+  const std::string up = upper(comment);
+  const std::vector<std::string> ws = words(up);
+  const bool inside = hasWord(ws, {"ID", "INTERNAL", "INSIDE", "INNER"}) || hasText(up, {"เกลียวใน", "ภายใน"});
+
+  if (hasWord(ws, {"VNMG", "VBMT", "VCMT"})) out.insert = "vnmg";
+  else if (hasWord(ws, {"DNMG", "DCMT", "DCGT"})) out.insert = "dnmg";
+  else if (hasWord(ws, {"CNMG", "CCMT"})) out.insert = "cnmg";
+  out.finishing = hasPrefix(ws, {"FINISH", "FIN"}) || hasText(up, {"กลึงละเอียด", "ละเอียด"});
+
+  if (followedBy(ws, "CENTER", "DRILL") || followedBy(ws, "CENTRE", "DRILL") || hasWord(ws, {"SPOT", "CENTERDRILL"}) ||
+      hasText(up, {"นำศูนย์", "รูศูนย์"})) {
+    out.kind = ToolKind::CentreDrill;
+  } else if (hasPrefix(ws, {"THREAD", "THD", "THRD"}) || hasText(up, {"เกลียว"})) {
+    out.kind = inside ? ToolKind::ThreadingId : ToolKind::ThreadingOd;
+  } else if (followedBy(ws, "CUT", "OFF") || followedBy(ws, "PART", "OFF") || hasPrefix(ws, {"CUTOFF", "PARTING", "PARTOFF"}) ||
+             hasText(up, {"ตัดขาด", "ตัดชิ้นงาน"})) {
+    out.kind = ToolKind::Parting;
+  } else if (hasPrefix(ws, {"GROOV"}) || hasText(up, {"ร่อง"})) {
+    out.kind = ToolKind::Grooving;
+  } else if (hasPrefix(ws, {"DRILL"}) || hasText(up, {"ดอกสว่าน", "เจาะ"})) {
+    out.kind = ToolKind::Drill;
+    out.drillMm = sizeMm(up);
+  } else if (hasPrefix(ws, {"BORE", "BORING"}) || hasText(up, {"คว้าน"}) || inside) {
+    out.kind = ToolKind::Boring;
+  } else if (!out.insert.empty() || out.finishing ||
+             hasWord(ws, {"OD", "ROUGH", "ROUGHING", "TURN", "TURNING", "FACE", "FACING", "PROFILE", "CONTOUR"}) ||
+             hasText(up, {"กลึงปอก", "กลึงหยาบ", "ปาดหน้า", "กลึงผิว", "กลึงขึ้นรูป"})) {
+    out.kind = ToolKind::Turning;
+  }
+  return out;
+}
+
+}  // namespace klueng::core::machine::detail

@@ -1,0 +1,75 @@
+#include "gui/job_tools.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QSettings>
+#include <QStringList>
+
+#include "klueng/core/gcode/parser.h"
+#include "klueng/core/io/tool_library.h"
+
+namespace klueng::gui {
+
+namespace machine = core::machine;
+
+JobToolsResult checkWithTools(const QString& text, int firstLine, core::gcode::CheckOptions options,
+                              const machine::MachineSetup& setup, const std::vector<machine::StationOverride>& overrides,
+                              int stations) {
+  JobToolsResult result;
+  const std::string utf8 = text.toStdString();
+  const core::gcode::Program program = core::gcode::parse(utf8, firstLine);
+  result.inference =
+      machine::inferTools(program, utf8, firstLine, setup, core::io::shippedToolLibrary(), overrides, stations);
+  if (options.toolsWithBitmap) {
+    std::vector<int> withBitmap;
+    for (int t = 1; t <= core::io::kMaxStations; ++t)
+      if (!result.inference.setup.tools.bitmap[static_cast<std::size_t>(t - 1)].empty()) withBitmap.push_back(t);
+    options.toolsWithBitmap = withBitmap;
+  }
+  result.diagnostics = core::gcode::check(program, options);
+  return result;
+}
+
+namespace {
+QString overridesKey(const QString& filePath) {
+  // One key per file; '/' would make QSettings groups, so the path is encoded.
+  const QString abs = QFileInfo(filePath).absoluteFilePath();
+  return QStringLiteral("toolOverrides/") + QString::fromLatin1(abs.toUtf8().toBase64(QByteArray::Base64UrlEncoding));
+}
+}  // namespace
+
+std::vector<machine::StationOverride> loadToolOverrides(const QString& filePath) {
+  std::vector<machine::StationOverride> out;
+  if (filePath.isEmpty()) return out;
+  const QSettings settings(QStringLiteral("Klueng"), QStringLiteral("klueng"));
+  const QStringList items = settings.value(overridesKey(filePath)).toStringList();
+  const auto& library = core::io::shippedToolLibrary();
+  for (const QString& item : items) {
+    machine::StationOverride o;
+    std::string error;
+    if (machine::parseStationOverride(item.toStdString(), core::io::kMaxStations, library, o, error)) out.push_back(o);
+  }
+  return out;
+}
+
+void saveToolOverrides(const QString& filePath, const std::vector<machine::StationOverride>& overrides) {
+  if (filePath.isEmpty()) return;
+  QSettings settings(QStringLiteral("Klueng"), QStringLiteral("klueng"));
+  QStringList items;
+  for (const auto& o : overrides)
+    items << QStringLiteral("%1=%2").arg(o.station).arg(QString::fromStdString(o.libraryId));
+  if (items.isEmpty()) settings.remove(overridesKey(filePath));
+  else settings.setValue(overridesKey(filePath), items);
+}
+
+bool sameTools(const machine::MachineSetup& a, const machine::MachineSetup& b) {
+  if (a.tools.bitmap != b.tools.bitmap || a.tools.libraryPath != b.tools.libraryPath) return false;
+  for (std::size_t i = 0; i < a.offsets.offsets.size(); ++i) {
+    const auto& x = a.offsets.offsets[i];
+    const auto& y = b.offsets.offsets[i];
+    if (x.x != y.x || x.z != y.z || x.r != y.r || x.tip != y.tip) return false;
+  }
+  return true;
+}
+
+}  // namespace klueng::gui

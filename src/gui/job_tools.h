@@ -1,0 +1,35 @@
+#pragma once
+// Tools from the program in the GUI (core/machine/tool_inference.h): the
+// background check also decides the job's tools, so the checker's E305, the
+// run and Tool Select all see the same setup.
+//
+// Public API
+//   checkWithTools(text, firstLine, options, setup, overrides, stations)
+//        parse + inferTools + check (T words against the amended table); runs off the GUI thread
+//   loadToolOverrides(path) / saveToolOverrides(path, list)
+//        the stations the user set for one program file (QSettings "Klueng"/"klueng", per file)
+//   sameTools(a, b)    whether two setups have the same tool table and offsets
+#include <QString>
+#include <vector>
+
+#include "klueng/core/diagnostic.h"
+#include "klueng/core/gcode/checker.h"
+#include "klueng/core/machine/tool_inference.h"
+
+namespace klueng::gui {
+
+struct JobToolsResult {
+  std::vector<core::Diagnostic> diagnostics;
+  core::machine::ToolInference inference;
+};
+
+JobToolsResult checkWithTools(const QString& text, int firstLine, core::gcode::CheckOptions options,
+                              const core::machine::MachineSetup& setup,
+                              const std::vector<core::machine::StationOverride>& overrides, int stations);
+
+std::vector<core::machine::StationOverride> loadToolOverrides(const QString& filePath);
+void saveToolOverrides(const QString& filePath, const std::vector<core::machine::StationOverride>& overrides);
+
+bool sameTools(const core::machine::MachineSetup& a, const core::machine::MachineSetup& b);
+
+}  // namespace klueng::gui

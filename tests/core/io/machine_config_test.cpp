@@ -1,0 +1,49 @@
+// machine.cfg keys added for issue 8: spindle_bore and turret_stations.
+#include <gtest/gtest.h>
+
+#include "klueng/core/io/tool_config.h"
+#include "klueng/core/messages.h"
+
+namespace klueng::core::io {
+namespace {
+
+TEST(MachineConfigKeys, DefaultsAndShippedFile) {
+  const MachineConfig m;
+  EXPECT_DOUBLE_EQ(m.spindleBore, 40.0);
+  EXPECT_EQ(m.turretStations, 12);
+  const auto shipped = readMachineConfig(std::string(KLUENG_SOURCE_DIR) + "/machine.cfg");
+  ASSERT_TRUE(shipped.ok());
+  EXPECT_DOUBLE_EQ(shipped.value->spindleBore, 40.0);
+  EXPECT_EQ(shipped.value->turretStations, 12);
+}
+
+TEST(MachineConfigKeys, ReadAndWritten) {
+  const auto r = parseMachineConfig("spindle_bore = 52\nturret_stations = 8\n", "m.cfg");
+  ASSERT_TRUE(r.ok());
+  EXPECT_DOUBLE_EQ(r.value->spindleBore, 52.0);
+  EXPECT_EQ(r.value->turretStations, 8);
+  const std::string text = formatMachineConfig(*r.value);
+  EXPECT_NE(text.find("spindle_bore = 52\n"), std::string::npos);
+  EXPECT_NE(text.find("turret_stations = 8\n"), std::string::npos);
+  EXPECT_EQ(parseMachineConfig(text, "m.cfg").value->turretStations, 8);
+  EXPECT_DOUBLE_EQ(parseMachineConfig("spindle_bore = 0\n", "m.cfg").value->spindleBore, 0.0);
+}
+
+TEST(MachineConfigKeys, BadValues) {
+  const auto neg = parseMachineConfig("spindle_bore = -1\n", "m.cfg");
+  ASSERT_EQ(neg.diagnostics.size(), 1u);
+  EXPECT_EQ(neg.diagnostics[0].code, "F144");
+  for (const char* v : {"0", "25", "12.5", "-3"}) {
+    const auto r = parseMachineConfig(std::string("turret_stations = ") + v + "\n", "m.cfg");
+    ASSERT_EQ(r.diagnostics.size(), 1u) << v;
+    EXPECT_EQ(r.diagnostics[0].code, "F147") << v;
+    EXPECT_EQ(r.value->turretStations, 12) << v;
+  }
+  const auto r = parseMachineConfig("turret_stations = 25\n", "m.cfg");
+  EXPECT_EQ(formatMessage(r.diagnostics[0], Lang::En), "m.cfg: turret_stations must be a whole number from 1 to 24, not 25");
+  EXPECT_EQ(formatMessage(r.diagnostics[0], Lang::Th),
+            "m.cfg: turret_stations ต้องเป็นจำนวนเต็มตั้งแต่ 1 ถึง 24 ไม่ใช่ 25");
+}
+
+}  // namespace
+}  // namespace klueng::core::io

@@ -1,0 +1,271 @@
+// Tools from the program: programs written in Haas and Fanuc shops' habits,
+// each choice and the line of its evidence asserted.
+#include "klueng/core/machine/tool_inference.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "klueng/core/gcode/parser.h"
+#include "klueng/core/io/program_file.h"
+#include "klueng/core/io/tool_config.h"
+#include "klueng/core/messages.h"
+
+namespace klueng::core::machine {
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kTop = KLUENG_SOURCE_DIR;
+
+// The shipped tools.cfg and offset.cfg (stations 1-8: the seed's bitmaps; 9-12 empty).
+MachineSetup shippedSetup() {
+  MachineSetup s;
+  s.tools = *io::readToolTable(kTop + "/tools.cfg").value;
+  s.offsets = *io::readOffsetTable(kTop + "/offset.cfg").value;
+  return s;
+}
+
+ToolInference infer(const std::string& text, const MachineSetup& setup = shippedSetup(),
+                    const std::vector<StationOverride>& overrides = {}) {
+  const gcode::Program program = gcode::parse(text, 1);
+  return inferTools(program, text, 1, setup, io::shippedToolLibrary(), overrides);
+}
+
+std::string summary(const ToolInference& r) {
+  std::string s;
+  for (const Diagnostic& d : r.notes()) s += formatMessage(d, Lang::En) + "\n";
+  return s;
+}
+
+void expectChoice(const ToolInference& r, int station, const std::string& id, ToolReason reason, int line,
+                  const std::string& detail = {}) {
+  const ToolChoice* c = r.choiceFor(station);
+  ASSERT_NE(c, nullptr) << "T" << station << "\n" << summary(r);
+  EXPECT_EQ(c->libraryId, id) << summary(r);
+  EXPECT_EQ(c->reason, reason) << summary(r);
+  EXPECT_EQ(c->line, line) << summary(r);
+  if (!detail.empty()) {
+    EXPECT_EQ(c->detail, detail);
+  }
+  EXPECT_EQ(r.setup.tools.libraryId(station), id);
+  EXPECT_TRUE(fs::is_regular_file(r.setup.tools.bitmapPath(station)));
+}
+
+// A Haas ST shop program (inch, one-block cycles, N-comment lines, T1212 cut-off).
+const char* kHaasShaft =
+    "%\n"                                              // 1
+    "O20012 (SHAFT 1.5 DIA)\n"                         // 2
+    "G20 G40 G80 G99\n"                                // 3
+    "N1 (OD ROUGH)\n"                                  // 4
+    "G28 U0 W0\n"                                      // 5
+    "T101\n"                                           // 6
+    "G50 S3000\n"                                      // 7
+    "G96 S600 M03\n"                                   // 8
+    "G00 G54 X1.6 Z0.1 M08\n"                          // 9
+    "G71 P10 Q20 U0.02 W0.005 D0.05 F0.012\n"          // 10
+    "N10 G00 X0.8\n"                                   // 11
+    "G01 Z-1.\n"                                       // 12
+    "X1.2 Z-1.5\n"                                     // 13
+    "N20 X1.6\n"                                       // 14
+    "G00 G53 X0\n"                                     // 15
+    "M01\n"                                            // 16
+    "N3 (THREAD 3/4-12)\n"                             // 17
+    "T909\n"                                           // 18
+    "G97 S800 M03\n"                                   // 19
+    "G00 X1.0 Z0.2\n"                                  // 20
+    "G76 X0.7 Z-0.9 K0.0613 D0.01 F0.0833\n"           // 21
+    "G00 G53 X0\n"                                     // 22
+    "M01\n"                                            // 23
+    "N12 (CUT OFF)\n"                                  // 24
+    "T1212\n"                                          // 25
+    "G97 S600 M03\n"                                   // 26
+    "G00 X1.7 Z-2.2\n"                                 // 27
+    "G01 X-0.02 F0.003\n"                              // 28
+    "G00 X1.7\n"                                       // 29
+    "G28 U0 W0\n"                                      // 30
+    "M30\n"                                            // 31
+    "%\n";
+
+TEST(ToolInference, HaasShaftNamesItsToolsInNLineComments) {
+  const ToolInference r = infer(kHaasShaft);
+  // T1 has the seed's outside turning tool: it fits "OD ROUGH" and stays.
+  EXPECT_EQ(r.choiceFor(1), nullptr) << summary(r);
+  EXPECT_EQ(r.setup.tools.bitmap[0], "resources/tools/01-outside-turning.bmp");
+  expectChoice(r, 9, "threading-60", ToolReason::Comment, 17, "THREAD 3/4-12");
+  expectChoice(r, 12, "parting-3mm", ToolReason::Comment, 24, "CUT OFF");
+  EXPECT_EQ(r.choices.size(), 2u) << summary(r);
+  // Their empty offset rows get the library tools' nose radius and tip.
+  EXPECT_EQ(r.setup.offsets.at(9).tip, 8);
+  EXPECT_EQ(r.setup.offsets.at(12).tip, 3);
+  EXPECT_EQ(r.setup.offsets.at(12).r, 0.0);
+  ASSERT_EQ(r.offsetNotes.size(), 2u);
+  EXPECT_EQ(r.offsetNotes[1].code, "I410");
+  const Diagnostic note = r.choiceFor(12)->note();
+  EXPECT_EQ(note.code, "I401");
+  EXPECT_EQ(formatMessage(note, Lang::En), "T12 = parting-3mm (comment \"CUT OFF\" on line 24)");
+  EXPECT_EQ(formatMessage(note, Lang::Th), "T12 = parting-3mm (หมายเหตุ \"CUT OFF\" ในบรรทัดที่ 24)");
+}
+
+TEST(ToolInference, WithoutCommentsTheCyclesTell) {
+  std::string text = kHaasShaft;
+  for (const char* c : {"N3 (THREAD 3/4-12)\n", "N12 (CUT OFF)\n"}) text.replace(text.find(c), std::string(c).size(), "\n");
+  const ToolInference r = infer(text);
+  expectChoice(r, 9, "threading-60", ToolReason::Threading, 21, "G76");
+  expectChoice(r, 12, "parting-3mm", ToolReason::Parting, 28, "X-0.02");
+}
+
+// A Fanuc 0i shop program in mm: two-block cycles, Thai comments, tube work.
+const char* kFanucFlange =
+    "O0100 (FLANGE)\n"                                 // 1
+    "N1 G21 G40 G99\n"                                 // 2
+    "N10 T0101 (กลึงปอก หยาบ)\n"                        // 3
+    "G50 S2000\n"                                      // 4
+    "G96 S180 M03\n"                                   // 5
+    "G00 X82. Z2.\n"                                   // 6
+    "G71 U2. R0.5\n"                                   // 7
+    "G71 P100 Q200 U0.4 W0.1 F0.25\n"                  // 8
+    "N100 G00 X60.\n"                                  // 9
+    "G01 Z-30.\n"                                      // 10
+    "N200 X82.\n"                                      // 11
+    "G28 U0.\n"                                        // 12
+    "(เจาะนำศูนย์)\n"                                   // 13
+    "N20 T0505\n"                                      // 14
+    "G97 S1200 M03\n"                                  // 15
+    "G00 X0 Z5.\n"                                     // 16
+    "G01 Z-4. F0.08\n"                                 // 17
+    "G00 Z5.\n"                                        // 18
+    "N30 T1010 (ดอกสว่าน 16 มม.)\n"                     // 19
+    "G00 X0 Z5.\n"                                     // 20
+    "G74 R1.\n"                                        // 21
+    "G74 Z-40. Q5000 F0.1\n"                           // 22
+    "N40 T1111\n"                                      // 23
+    "G00 X14. Z2.\n"                                   // 24
+    "G71 U1. R0.5\n"                                   // 25
+    "G71 P300 Q400 U-0.3 W0.1 F0.15\n"                 // 26
+    "N300 G00 X30.\n"                                  // 27
+    "G01 Z-20.\n"                                      // 28
+    "N400 X16.\n"                                      // 29
+    "N50 T0909\n"                                      // 30
+    "G00 X84. Z-12.\n"                                 // 31
+    "G75 R0.5\n"                                       // 32
+    "G75 X70. Z-15. P1000 Q2500 F0.05\n"               // 33
+    "N60 T0808 (ID THREAD M36x1.5)\n"                  // 34
+    "G00 X32. Z5.\n"                                   // 35
+    "G76 P010060 Q50 R0.05\n"                          // 36
+    "G76 X36. Z-15. P920 Q300 F1.5\n"                  // 37
+    "N70 T0707\n"                                      // 38
+    "G00 X84. Z-48.\n"                                 // 39
+    "G01 X-1. F0.05\n"                                 // 40
+    "G00 X84.\n"                                       // 41
+    "M30\n";                                           // 42
+
+TEST(ToolInference, FanucFlangeThaiCommentsAndCycles) {
+  const ToolInference r = infer(kFanucFlange);
+  EXPECT_EQ(r.choiceFor(1), nullptr) << summary(r);  // turning tool for กลึงปอก: kept
+  // Station 5 holds the seed's boring bar, but the program centre-drills with it.
+  expectChoice(r, 5, "centre-drill", ToolReason::Comment, 13, "เจาะนำศูนย์");
+  expectChoice(r, 10, "drill-16mm", ToolReason::Comment, 19, "ดอกสว่าน 16 มม.");
+  expectChoice(r, 11, "boring-bar-16", ToolReason::Boring, 26, "G71 U-0.3");
+  expectChoice(r, 9, "grooving-3mm", ToolReason::Grooving, 33, "G75");
+  EXPECT_EQ(r.choiceFor(8), nullptr) << summary(r);  // the seed's inside threading tool fits
+  EXPECT_EQ(r.choiceFor(7), nullptr) << summary(r);  // the seed's parting tool fits
+  EXPECT_EQ(r.choices.size(), 4u) << summary(r);
+  // Offset 05 is the shipped R0.4 tip 2 row: not empty, so kept.
+  EXPECT_EQ(r.setup.offsets.at(5).tip, 2);
+  EXPECT_EQ(r.setup.offsets.at(11).tip, 2);  // empty row 11: the boring bar's tip
+  EXPECT_EQ(r.setup.offsets.at(11).r, 0.4);
+}
+
+TEST(ToolInference, InternalThreadingAndDrillingWithoutComments) {
+  const std::string text =
+      "G21 G99\n"                     // 1
+      "T1010\n"                       // 2
+      "G00 X0 Z3.\n"                  // 3
+      "G01 Z-25. F0.1\n"              // 4
+      "G00 Z3.\n"                     // 5
+      "T1111\n"                       // 6
+      "G00 X18. Z5.\n"                // 7
+      "G92 X20.2 Z-15. F1.5\n"        // 8
+      "X20.6\n"                       // 9
+      "G00 X18. Z5.\n"                // 10
+      "M30\n";
+  const ToolInference r = infer(text);
+  expectChoice(r, 10, "drill-6mm", ToolReason::Drilling, 4, "G01 X0");
+  expectChoice(r, 11, "threading-60-id", ToolReason::ThreadingInside, 8, "G92");
+}
+
+TEST(ToolInference, AWrongKindIsReplacedOnlyOnStrongEvidence) {
+  // Station 4 holds the seed's grooving tool; threading with it is clearly wrong.
+  const std::string text = "T0404\nG97 S500 M03\nG00 X32. Z5.\nG92 X29.2 Z-20. F1.5\nM30\n";
+  const ToolInference r = infer(text);
+  expectChoice(r, 4, "threading-60", ToolReason::Threading, 4, "G92");
+  // Plain turning with the boring bar (weak evidence): the user's choice stands.
+  const ToolInference kept = infer("T0505\nG00 X40. Z2.\nG01 Z-10. F0.2\nM30\n");
+  EXPECT_TRUE(kept.choices.empty()) << summary(kept);
+  // A station with no tool gets the everyday turning tool for any cutting.
+  const ToolInference filled = infer("T1010\nG00 X40. Z2.\nG01 Z-10. F0.2\nM30\n");
+  expectChoice(filled, 10, "cnmg-80-r08", ToolReason::Turning, 3, "G01");
+}
+
+TEST(ToolInference, AnOverrideIsNeverReplaced) {
+  const ToolInference r = infer(kHaasShaft, shippedSetup(), {{12, "grooving-3mm"}, {3, "threading-60"}});
+  expectChoice(r, 12, "grooving-3mm", ToolReason::Override, 0);
+  expectChoice(r, 3, "threading-60", ToolReason::Override, 0);
+  EXPECT_EQ(formatMessage(r.choiceFor(12)->note(), Lang::En), "T12 = grooving-3mm (set for this job)");
+}
+
+TEST(ToolInference, FinishAndInsertNamesPickTheInsert) {
+  MachineSetup empty = shippedSetup();
+  for (auto& b : empty.tools.bitmap) b.clear();
+  const ToolInference r = infer(
+      "T0101 (OD FINISH)\nG00 X40. Z2.\nG01 Z-10. F0.1\n(PROFILE VNMG)\nT0202\nG00 X40. Z2.\nG01 Z-10. F0.1\n"
+      "T0303 (FACE + ROUGH)\nG00 X40. Z2.\nG01 Z-10. F0.1\nM30\n",
+      empty);
+  expectChoice(r, 1, "cnmg-80-r04", ToolReason::Comment, 1, "OD FINISH");
+  expectChoice(r, 2, "vnmg-35-r02", ToolReason::Comment, 4, "PROFILE VNMG");
+  expectChoice(r, 3, "cnmg-80-r08", ToolReason::Comment, 8);
+}
+
+TEST(StationOverride, ParsesNEqualsId) {
+  const io::ToolLibrary& lib = io::shippedToolLibrary();
+  StationOverride o;
+  std::string error;
+  ASSERT_TRUE(parseStationOverride("12=parting-3mm", 12, lib, o, error)) << error;
+  EXPECT_EQ(o.station, 12);
+  EXPECT_EQ(o.libraryId, "parting-3mm");
+  EXPECT_FALSE(parseStationOverride("13=parting-3mm", 12, lib, o, error));
+  EXPECT_NE(error.find("1 to 12"), std::string::npos) << error;
+  EXPECT_FALSE(parseStationOverride("3=knurl", 12, lib, o, error));
+  EXPECT_NE(error.find("threading-60"), std::string::npos) << error;
+  EXPECT_FALSE(parseStationOverride("threading-60", 12, lib, o, error));
+  EXPECT_FALSE(parseStationOverride("0=threading-60", 12, lib, o, error));
+}
+
+// The shipped samples and golden programs keep their tools exactly.
+TEST(ToolInference, ShippedSamplesAndGoldenProgramsAreUnchanged) {
+  std::vector<fs::path> files;
+  for (const std::string& dir : {kTop + "/resources/samples", std::string(KLUENG_SAMPLES_DIR)})
+    if (fs::is_directory(dir))
+      for (const auto& e : fs::directory_iterator(dir))
+        if (e.is_regular_file()) files.push_back(e.path());
+  for (const auto& e : fs::recursive_directory_iterator(kTop + "/tests/golden"))
+    if (e.path().filename() == "program.nc") files.push_back(e.path());
+  ASSERT_GT(files.size(), 20u);
+  const MachineSetup setup = shippedSetup();
+  for (const fs::path& f : files) {
+    const auto file = io::readProgramFile(f.string());
+    if (!file.value) continue;
+    const gcode::Program program = gcode::parse(file.value->gcode, file.value->gcodeFirstLine);
+    // 04-grammar-errors.txt is meant for the classic dialect: stations 01-08 (its T0917 is E118).
+    const int stations = f.filename() == "04-grammar-errors.txt" ? 8 : 0;
+    const ToolInference r = inferTools(program, file.value->gcode, file.value->gcodeFirstLine, setup,
+                                       io::shippedToolLibrary(), {}, stations);
+    EXPECT_TRUE(r.choices.empty()) << f << "\n" << summary(r);
+    EXPECT_EQ(r.setup.tools.bitmap, setup.tools.bitmap) << f;
+  }
+}
+
+}  // namespace
+}  // namespace klueng::core::machine

@@ -1,0 +1,116 @@
+// Tool Select with the turret (12 stations), the tool library and the tools
+// the program got from the library.
+#include <QDir>
+#include <QFile>
+#include <QListWidget>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include "gui/offset_define_dialog.h"
+#include "gui/tool_select_dialog.h"
+#include "klueng/core/gcode/parser.h"
+#include "klueng/core/io/tool_config.h"
+#include "klueng/core/io/tool_library.h"
+
+using namespace klueng;
+using namespace klueng::gui;
+
+namespace {
+
+bool makeConfigCopy(const QString& to) {
+  const QDir src(QStringLiteral(KLUENG_SOURCE_DIR));
+  QDir dst(to);
+  for (const char* name : {"tools.cfg", "offset.cfg", "machine.cfg"})
+    if (!QFile::copy(src.filePath(QString::fromLatin1(name)), dst.filePath(QString::fromLatin1(name)))) return false;
+  dst.mkpath(QStringLiteral("resources/tools"));
+  for (const QString& bmp : QDir(src.filePath(QStringLiteral("resources/tools"))).entryList({QStringLiteral("*.bmp")}))
+    QFile::copy(src.filePath(QStringLiteral("resources/tools/") + bmp), dst.filePath(QStringLiteral("resources/tools/") + bmp));
+  for (const char* name : {"tools.cfg", "offset.cfg"})
+    QFile(dst.filePath(QString::fromLatin1(name))).setPermissions(QFileDevice::ReadOwner | QFileDevice::WriteOwner);
+  return true;
+}
+
+core::machine::ToolInference inferFor(const std::string& text, const QString& configDir) {
+  core::machine::MachineSetup setup;
+  setup.tools = *core::io::readToolTable(configDir.toStdString() + "/tools.cfg").value;
+  setup.offsets = *core::io::readOffsetTable(configDir.toStdString() + "/offset.cfg").value;
+  const auto program = core::gcode::parse(text, 1);
+  return core::machine::inferTools(program, text, 1, setup, core::io::shippedToolLibrary());
+}
+
+}  // namespace
+
+class ToolLibraryDialogTest : public QObject {
+  Q_OBJECT
+ private slots:
+  void listsTwelveStations() {
+    QTemporaryDir dir;
+    QVERIFY(makeConfigCopy(dir.path()));
+    ToolSelectDialog d(dir.path());
+    QCOMPARE(d.stationCount(), 12);
+    auto* list = d.findChild<QListWidget*>();
+    QVERIFY(list);
+    QCOMPARE(list->count(), 12);
+    QVERIFY(list->item(11)->text().startsWith(QStringLiteral("Tool 12")));
+    d.setCurrentTool(12);
+    QCOMPARE(d.currentTool(), 12);
+  }
+
+  void showsTheProgramsChoiceAtTrueScale() {
+    QTemporaryDir dir;
+    QVERIFY(makeConfigCopy(dir.path()));
+    const auto inference = inferFor("T0101\nG00 X52. Z2.\n(CUT OFF)\nT1212\nG00 X55. Z-43.\nG01 X-1. F0.05\nM30\n", dir.path());
+    QVERIFY(inference.choiceFor(12));
+    ToolSelectDialog d(dir.path());
+    d.setProgramTools(inference, {});
+    auto* list = d.findChild<QListWidget*>();
+    QVERIFY2(list->item(11)->text().contains(QStringLiteral("parting-3mm")), qPrintable(list->item(11)->text()));
+    QVERIFY(list->item(11)->text().contains(QStringLiteral("from the program")));
+    d.setCurrentTool(12);
+    QVERIFY2(d.choiceText().contains(QStringLiteral("comment \"CUT OFF\" on line 3")), qPrintable(d.choiceText()));
+    QVERIFY(!d.previewSprite().isNull());
+    QCOMPARE(d.previewSprite().pixelsPerMm(), 10.0);
+    // 3 mm parting insert, corner bottom-left (tip 3): 30 px wide cutting edge at 10 px/mm.
+    QVERIFY(qAbs(d.previewSprite().cuttingEdgeBox().width() - 30) <= 1);
+  }
+
+  void aLibraryToolForThisProgramOnlyLeavesToolsCfg() {
+    QTemporaryDir dir;
+    QVERIFY(makeConfigCopy(dir.path()));
+    QFile f(dir.filePath(QStringLiteral("tools.cfg")));
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QByteArray original = f.readAll();
+    f.close();
+    ToolSelectDialog d(dir.path());
+    d.setLibraryTool(3, QStringLiteral("threading-60-id"), true);
+    d.setLibraryTool(10, QStringLiteral("drill-16mm"), false);
+    d.accept();
+    QCOMPARE(d.result(), int(QDialog::Accepted));
+    QCOMPARE(d.jobOverrides().size(), std::size_t(1));
+    QCOMPARE(d.jobOverrides()[0].station, 3);
+    QCOMPARE(d.jobOverrides()[0].libraryId, std::string("threading-60-id"));
+    const auto saved = core::io::readToolTable(dir.filePath(QStringLiteral("tools.cfg")).toStdString());
+    QVERIFY(saved.ok());
+    QCOMPARE(saved.value->libraryId(10), std::string("drill-16mm"));
+    QCOMPARE(saved.value->bitmap[2], std::string("resources/tools/03-threading-60.bmp"));
+    QVERIFY(original.startsWith(QByteArray("resources/tools/01-outside-turning.bmp")));
+  }
+
+  void offsetDefineEditsSixtyFourRows() {
+    QTemporaryDir dir;
+    QVERIFY(makeConfigCopy(dir.path()));
+    OffsetDefineDialog d(dir.path());
+    d.setCell(39, 2, QStringLiteral("0.4"));
+    d.setCell(39, 3, QStringLiteral("2"));
+    d.accept();
+    QCOMPARE(d.result(), int(QDialog::Accepted));
+    const auto saved = core::io::readOffsetTable(d.savedConfigDir().toStdString() + "/offset.cfg");
+    QVERIFY(saved.ok());
+    QCOMPARE(saved.value->at(40).r, 0.4);
+    QCOMPARE(saved.value->at(40).tip, 2);
+    QCOMPARE(saved.value->at(1).r, 0.8);
+  }
+};
+
+QTEST_MAIN(ToolLibraryDialogTest)
+#include "tool_library_dialog_test.moc"
