@@ -305,6 +305,19 @@ TEST(RealStyleHaas, Shaft_Op1_G71G70_CutOff) {
   EXPECT_NEAR(p.edge(-2.95, -3.05, 1.0), -2.9999, kIn);
 }
 
+// The same program as a teacher first runs it, without --tool: station 12 has
+// no tool in tools.cfg, and the comment before T1212 ("CUT OFF AT 3.000 LONG")
+// makes Klueng take the library's parting blade (note I401), its empty offset
+// row the blade's R0 and tip 3 (I410) - so the cut-off lands where it did above.
+TEST(RealStyleHaas, Shaft_Op1_CutOffToolFromComment) {
+  const Job job{"haas-01-shaft-op1.nc", "haas", "--stock 2.1x4in", true};
+  RUN_CLEAN(job, r);
+  EXPECT_NE(r.check.text.find("T12 = parting-3mm"), std::string::npos) << r.check.text;
+  EXPECT_NEAR(r.part.d(-3.06), 0.0, kIn);                  // the blade's gap [-3.118, -2.99989]
+  EXPECT_NEAR(r.part.edge(-2.95, -3.05, 1.0), -2.9999, kIn);  // the part is 3.000 long
+  EXPECT_NEAR(r.part.d(-2.5), 2.0000, kIn);
+}
+
 // O20102: the second setup of O20101 (turned around) as its own file, G20,
 // M00 between roughing and finishing, tool and spindle restated after M00.
 TEST(RealStyleHaas, Shaft_Op2_SecondSetup_M00) {
