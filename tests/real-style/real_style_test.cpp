@@ -479,16 +479,25 @@ TEST(RealStyleHaas, GuidePin_NoNoseComp) {
 
 // O20109: G76 to a shoulder with M23 (thread chamfer out), a wide G75 groove
 // stepped by K, G53 safe lines.
-TEST(RealStyleHaas, PumpShaft_1_8_M23_WideGroove) {
-  const Job job{"haas-09-thread-1-8-chamfer.nc", "haas", "--units inch --stock 1.25x3in", true,
-                "haas-09-thread-1-8-chamfer.nc:41:1: alarm A301",
-                "G53 is read as work coordinates: `G53 G00 X0` / `G53 G00 Z0` (Haas: X and Z home) "
-                "park the tool on the centre of the face, and the thread tool called there starts "
-                "inside the stock (Haas lathe manual, G53 Machine Coordinate Selection)"};
+const Job kPumpShaft{"haas-09-thread-1-8-chamfer.nc", "haas", "--units inch --stock 1.25x3in", true,
+                    "haas-09-thread-1-8-chamfer.nc:41:1: alarm A301",
+                    "G53 is read as work coordinates: `G53 G00 X0` / `G53 G00 Z0` (Haas: X and Z home) "
+                    "park the tool on the centre of the face, and the thread tool called there starts "
+                    "inside the stock (Haas lathe manual, G53 Machine Coordinate Selection)"};
+
+// The whole program: the thread is cut after the second G53 park.
+TEST(RealStyleHaas, PumpShaft_1_8_M23_Thread) {
+  const Job& job = kPumpShaft;
   RUN_CLEAN(job, r);
-  const Profile& p = r.part;
   // 1-8 UNC: major X0.995, K = 0.6134/8 = 0.0767, last pass X0.995 - 0.1534 = X0.8416.
-  EXPECT_NEAR(p.minD(-0.8, -0.2), 0.8416, kIn);
+  EXPECT_NEAR(r.part.minD(-0.8, -0.2), 0.8416, kIn);
+}
+
+// The OD and the groove, finished before the park that Klueng stops on.
+TEST(RealStyleHaas, PumpShaft_WideGroove) {
+  const Job& job = kPumpShaft;
+  RUN_UNTIL_KNOWN(job, r);
+  const Profile& p = r.part;
   EXPECT_NEAR(p.d(-1.4), 1.2000, kIn);  // X1.2 from Z-1.2 to Z-2.3, right of the groove
   // G75 X0.9 Z-2. from Z-1.718, K0.1: plunges at -1.718, -1.818, -1.918, -2.0;
   // groove [-2.0, -1.718 + 0.11811 = -1.59989], floor X0.9.
