@@ -921,6 +921,8 @@ void MainWindow::onCheckFinished() {
   const JobToolsResult result = checkWatcher_.result();
   const auto& found = result.diagnostics;
   lastDiagnostics_.insert(lastDiagnostics_.end(), found.begin(), found.end());
+  if (result.fit) dialectOffer_->offer(*result.fit, result.fitBlocks);
+  else dialectOffer_->clear();
   // The job's tools: library choices for the stations the program uses (a note per choice in Tool Select).
   const bool toolsChanged = !sameTools(result.inference.setup, toolInference_.setup);
   toolInference_ = result.inference;
