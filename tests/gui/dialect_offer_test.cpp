@@ -9,6 +9,7 @@
 #include <QTest>
 
 #include "gui/dialect_offer_bar.h"
+#include "gui/document.h"
 #include "gui/language.h"
 #include "gui/main_window.h"
 #include "gui/resources.h"
@@ -70,6 +71,11 @@ class DialectOfferTest : public QObject {
     QTRY_VERIFY(!bar->isOffering());
     QVERIFY(w.action(QStringLiteral("actionDialectHaas"))->isChecked());
     QCOMPARE(Settings().dialect(), core::gcode::Dialect::Haas);
+    // The stock is inferred again in the new dialect: the Haas inch cycle starts
+    // at X2.1, the largest 1/8-inch bar not above it is Ø2 in.
+    QTRY_VERIFY(w.stockSourceText().startsWith(QStringLiteral("Stock Ø2 x ")));
+    QVERIFY(w.stockSourceText().contains(QStringLiteral("inferred from G00 X2.1 Z0.1")));
+    QCOMPARE(w.document()->header().diameterMm(), 2.0 * 25.4);
   }
 
   void cleanProgramGetsNoOffer() {
