@@ -890,10 +890,10 @@
 </context>
 <context>
     <name>klueng::gui::DialectOfferBar</name>
-    <message numerus="yes">
+    <message>
         <location filename="../src/gui/dialect_offer_bar.cpp" line="85" />
-        <source>%n block(s) of this program are %1 forms that the current dialect refuses; the %1 dialect accepts the whole program.</source>
-        <translation><numerusform>โปรแกรมนี้มี %n บล็อกที่เป็นรูปแบบของ %1 ซึ่งภาษาเครื่องที่เลือกอยู่ไม่รับ แต่ภาษาเครื่อง %1 รับได้ทั้งโปรแกรม</numerusform></translation>
+        <source>Blocks in %1 form that the current dialect refuses: %2. The %1 dialect accepts the whole program.</source>
+        <translation>บล็อกที่เป็นรูปแบบของ %1 ซึ่งภาษาเครื่องที่เลือกอยู่ไม่รับ: %2 บล็อก ภาษาเครื่อง %1 รับได้ทั้งโปรแกรม</translation>
     </message>
     <message>
         <location filename="../src/gui/dialect_offer_bar.cpp" line="89" />

@@ -108,7 +108,9 @@ int DiagnosticsPanel::errorCount() const {
 }
 
 int DiagnosticsPanel::warningCount() const {
-  return static_cast<int>(model_->diagnostics().size()) - errorCount();
+  int n = 0;
+  for (const auto& d : model_->diagnostics()) n += d.severity == core::Severity::Warning;
+  return n;
 }
 
 void DiagnosticsPanel::retranslateUi() {

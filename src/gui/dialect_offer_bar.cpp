@@ -78,10 +78,10 @@ void DialectOfferBar::changeEvent(QEvent* event) {
 void DialectOfferBar::retranslate() {
   const bool thai = Language::instance()->language() == QStringLiteral("th");
   const QString name = profileName(dialect_, thai);
-  label_->setText(tr("%n block(s) of this program are %1 forms that the current dialect refuses; the %1 dialect "
-                     "accepts the whole program.",
-                     nullptr, blocks_)
-                      .arg(name));
+  label_->setText(tr("Blocks in %1 form that the current dialect refuses: %2. The %1 dialect accepts the "
+                     "whole program.")
+                      .arg(name)
+                      .arg(blocks_));
   switchButton_->setText(tr("Switch to %1").arg(name));
 }
 

@@ -22,7 +22,7 @@ void takeStock(core::io::JobHeader& h, const core::io::JobHeader& from) {
 
 LoadedProgram Document::load(const QString& path, const core::io::JobHeader& defaultsForPlain,
                              const std::optional<core::io::JobHeader>& jobDetails,
-                             const core::machine::MachineSetup& setup) {
+                             const core::machine::MachineSetup& setup, const core::machine::RunOptions& run) {
   LoadedProgram out;
   out.path = QFileInfo(path).absoluteFilePath();
   core::io::JobHeader defaults = defaultsForPlain;
@@ -36,7 +36,7 @@ LoadedProgram Document::load(const QString& path, const core::io::JobHeader& def
     core::io::ProgramFile& f = out.file;
     std::optional<core::machine::StockInference> inferred;
     if (f.plainGcode && !jobDetails) {
-      inferred = core::machine::inferStock(core::gcode::parse(f.gcode, f.gcodeFirstLine), setup);
+      inferred = core::machine::inferStock(core::gcode::parse(f.gcode, f.gcodeFirstLine), setup, run);
       if (inferred->found) inferred->applyTo(f.header);
     }
     out.stockNotes = core::machine::stockNotes(f.header, inferred ? &*inferred : nullptr, f.gcode, f.gcodeFirstLine);
@@ -44,6 +44,26 @@ LoadedProgram Document::load(const QString& path, const core::io::JobHeader& def
     out.file.gcode.clear();  // the editor owns the text from now on
   }
   return out;
+}
+
+bool Document::reinferStock(const QString& gcode, const core::machine::MachineSetup& setup,
+                            const core::machine::RunOptions& run) {
+  const auto source = file_.header.stockSource;
+  if (!file_.plainGcode || (source != core::io::StockSource::Inferred && source != core::io::StockSource::Default))
+    return false;
+  const std::string text = gcode.toStdString();
+  core::io::JobHeader header = file_.header;
+  takeStock(header, core::io::JobHeader{});
+  const core::machine::StockInference inferred =
+      core::machine::inferStock(core::gcode::parse(text, file_.gcodeFirstLine), setup, run);
+  if (inferred.found) inferred.applyTo(header);
+  else header.stockSource = core::io::StockSource::Default;
+  stockNotes_ = core::machine::stockNotes(header, &inferred, text, file_.gcodeFirstLine);
+  const bool changed = header.diameter != file_.header.diameter || header.length != file_.header.length ||
+                       header.bore != file_.header.bore || header.diameterUnit != file_.header.diameterUnit;
+  file_.header = header;
+  emit headerChanged();
+  return changed;
 }
 
 void Document::reset(const core::io::JobHeader& header) {

@@ -36,7 +36,15 @@ class Document : public QObject {
   // never `defaultsForPlain`'s stock, whose text fields (project ...) it keeps.
   static LoadedProgram load(const QString& path, const core::io::JobHeader& defaultsForPlain,
                             const std::optional<core::io::JobHeader>& jobDetails = std::nullopt,
-                            const core::machine::MachineSetup& setup = {});
+                            const core::machine::MachineSetup& setup = {},
+                            const core::machine::RunOptions& run = {});
+
+  // A plain file whose stock was inferred (or defaulted) infers it again from
+  // `gcode` — after the dialect or the units changed, the same text may mean
+  // another approach. Job details and headers are left alone. Returns true
+  // when the stock changed.
+  bool reinferStock(const QString& gcode, const core::machine::MachineSetup& setup,
+                    const core::machine::RunOptions& run);
 
   // Start an untitled program with the given job details.
   void reset(const core::io::JobHeader& header);

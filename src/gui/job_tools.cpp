@@ -5,6 +5,7 @@
 #include <QSettings>
 #include <QStringList>
 
+#include "klueng/core/gcode/dialect_fit.h"
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/io/tool_library.h"
 
@@ -27,6 +28,12 @@ JobToolsResult checkWithTools(const QString& text, int firstLine, core::gcode::C
     options.toolsWithBitmap = withBitmap;
   }
   result.diagnostics = core::gcode::check(program, options);
+  // The dialect that accepts a program this one refuses (I102), for the offer bar.
+  if (auto fit = core::gcode::suggestDialect(program, options, result.diagnostics)) {
+    result.fit = fit->dialect;
+    result.fitBlocks = fit->blocks;
+    result.diagnostics.push_back(fit->note);
+  }
   return result;
 }
 

@@ -10,6 +10,7 @@
 //        the stations the user set for one program file (QSettings "Klueng"/"klueng", per file)
 //   sameTools(a, b)    whether two setups have the same tool table and offsets
 #include <QString>
+#include <optional>
 #include <vector>
 
 #include "klueng/core/diagnostic.h"
@@ -21,6 +22,9 @@ namespace klueng::gui {
 struct JobToolsResult {
   std::vector<core::Diagnostic> diagnostics;
   core::machine::ToolInference inference;
+  // Another dialect that accepts the whole program (the current one refuses it).
+  std::optional<core::gcode::Dialect> fit;
+  int fitBlocks = 0;
 };
 
 JobToolsResult checkWithTools(const QString& text, int firstLine, core::gcode::CheckOptions options,

@@ -581,6 +581,10 @@ void MainWindow::setDialect(core::gcode::Dialect d) {
   runner_->setDialect(d);
   action(dialectActionName(d))->setChecked(true);
   if (help_) help_->setDialect(d);
+  // The same plain text may approach the part elsewhere in another dialect (units, cycle forms).
+  core::machine::RunOptions run;
+  run.dialect = d;
+  document_->reinferStock(editor_->toPlainText(), runner_->machineSetup(), run);
   runnerStale_ = true;
   checkNow();
 }
@@ -695,8 +699,10 @@ void MainWindow::startLoad(const QString& path) {
   const core::io::JobHeader defaults = settings_->lastJobHeader();
   const std::optional<core::io::JobHeader> details = settings_->jobDetailsFor(path);
   const core::machine::MachineSetup setup = runner_->machineSetup();
-  loadWatcher_.setFuture(QtConcurrent::run([path, defaults, details, setup] {
-    return Document::load(path, defaults, details, setup);
+  core::machine::RunOptions run;
+  run.dialect = dialect_;
+  loadWatcher_.setFuture(QtConcurrent::run([path, defaults, details, setup, run] {
+    return Document::load(path, defaults, details, setup, run);
   }));
   QTimer::singleShot(300, this, &MainWindow::showBusyIndicator);
 }
@@ -921,6 +927,8 @@ void MainWindow::onCheckFinished() {
   const JobToolsResult result = checkWatcher_.result();
   const auto& found = result.diagnostics;
   lastDiagnostics_.insert(lastDiagnostics_.end(), found.begin(), found.end());
+  if (result.fit) dialectOffer_->offer(*result.fit, result.fitBlocks);
+  else dialectOffer_->clear();
   // The job's tools: library choices for the stations the program uses (a note per choice in Tool Select).
   const bool toolsChanged = !sameTools(result.inference.setup, toolInference_.setup);
   toolInference_ = result.inference;

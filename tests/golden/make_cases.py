@@ -415,7 +415,9 @@ case("sample02_thread", sample("02-thread.txt"), s02.rows)
 # X100 Z50 at the start position (machine Z300 X0), work = machine + (Z-250,
 # X+100): G53 X0 Z250 (machine) is work X100 Z0, a Z-only rapid of 50 mm.
 case("fanuc_g18_g53_g55_g80_m42", "G18 G21 G40 G80 G99\nG55\nG50 X100. Z50.\nG53 X0. Z250.\nM42\n", [
-    row("RAPID", 4, 0, 0.375, 100, 50, 100, 0, feed=8000),
+    # G53: machine zero is the reference point X0 Z300, shifted with the work by
+    # G50 (+100 in X, -250 in Z): machine X0 Z250 = work X100 Z300; 250 mm of Z at 8000.
+    row("RAPID", 4, 0, 1.875, 100, 50, 100, 300, feed=8000),
 ])
 # Subprograms are not simulated yet: the run stops on M98 with A117.
 case("alarm_a117_subprogram", "G00 X10.\nM98 P1000\n", X10, alarm="program.nc:2:1: alarm A117")

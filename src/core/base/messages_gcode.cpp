@@ -103,7 +103,7 @@ constexpr MessageText kMessages[] = {
      "{0} มีทศนิยมเกิน {2} ตำแหน่ง: เครื่องจะปัดค่าเป็น {1}"},
 
     // I1xx: notes
-    {"I102", "{0} blocks with errors are {1} forms: choose the {1} dialect (--dialect {2})",
+    {"I102", "blocks with errors that are {1} forms: {0}; choose the {1} dialect (--dialect {2})",
      "บล็อกที่ผิดพลาด {0} บล็อกเป็นรูปแบบของ {1}: เลือกรูปแบบคำสั่ง {1} (--dialect {2})"},
 };
 }  // namespace

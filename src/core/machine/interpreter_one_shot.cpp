@@ -91,12 +91,18 @@ bool Interpreter::oneShot(const CodeWord& c) {
       return true;
     }
     case 53: {
-      // Rapid to a position in machine coordinates (offsets ignored).
+      // Rapid to a position in machine coordinates (offsets ignored). Machine
+      // zero is the reference point, as on the real controls: Fanuc sets the
+      // machine coordinate system so that the reference position reads
+      // parameter 1240 (0 as shipped); Haas machine zero is home. So
+      // `G53 X0` retracts X to home and `G00 G53 X0 Z-2.` stops 2 in short of
+      // home in Z (docs/dialects.md).
       if (!hasAxisWords()) return true;
       Vec2 target = pos_;
       const double u = unit();
-      if (const Word* x = find('X')) target.y() = x->value * u / 2.0 + xOf(mach_.workShift);
-      if (const Word* z = find('Z')) target.x() = z->value * u + zOf(mach_.workShift);
+      const Vec2 zero = referencePoint();
+      if (const Word* x = find('X')) target.y() = x->value * u / 2.0 + xOf(zero);
+      if (const Word* z = find('Z')) target.x() = z->value * u + zOf(zero);
       return rapidTo(target, w);
     }
     default: return raise("A117", w, {wordText(*w)});

@@ -272,9 +272,16 @@ TEST(MachineConfigFile, ShippedFileHoldsTheSpecDefaults) {
   EXPECT_EQ(r.value->startX, 0.0);
   EXPECT_EQ(r.value->startZ, 300.0);
   EXPECT_EQ(r.value->referenceZ, 300.0);
+  // The shipped lathe's home (reference point) is above the part, Ø200, as on
+  // a real lathe, so real programs' G28 U0 / G53 X0 retract away from the
+  // part; the SPEC 1 default X0 applies when there is no machine.cfg.
+  EXPECT_EQ(r.value->referenceX, 200.0);
+  EXPECT_EQ(MachineConfig{}.referenceX, 0.0);
   EXPECT_EQ(r.value->chuckGrip, 15.0);
-  // The shipped file is exactly what the dialogs would write for the defaults.
-  EXPECT_EQ(testing::readFile(kShipped + "/machine.cfg"), formatMachineConfig(MachineConfig{}));
+  // The shipped file is exactly what the dialogs would write for those values.
+  MachineConfig shipped;
+  shipped.referenceX = 200.0;
+  EXPECT_EQ(testing::readFile(kShipped + "/machine.cfg"), formatMachineConfig(shipped));
 }
 
 TEST(MachineConfigFile, KeysCommentsAndMissingKeys) {

@@ -367,10 +367,12 @@ TEST(Interpreter, FanucM41SelectsAGearRangeWithoutMotion) {
 }
 
 TEST(Interpreter, FanucExtrasAreNoOpsOrMachineCoordinates) {
-  const Timeline t = runText("G18 G21 G40 G80 G99\nG55\nG50 X100. Z50.\nG53 X0. Z300.\n");
+  const Timeline t = runText("G18 G21 G40 G80 G99\nG55\nG50 X100. Z50.\nG53 X0. Z-20.\nG53 X0. Z0.\n");
   ASSERT_FALSE(t.alarm) << t.alarm->code;
   EXPECT_EQ(t.snapshots[1].modal.workCoordinate, 55);
-  // G53 goes to the machine position X0 Z300, which now reads X100 Z50.
+  // Machine zero is the reference point (X0 Z300, where the tool started),
+  // which reads X100 Z50 after G50; machine Z-20 is 20 mm short of it.
+  EXPECT_POINT(t.snapshots[3].machine.position, 100.0, 30.0);
   EXPECT_POINT(t.snapshots.back().machine.position, 100.0, 50.0);
 }
 

@@ -84,7 +84,7 @@ TEST(OneShotWithMotion, G53G00MovesInMachineCoordinatesAndG00StaysModal) {
   const Timeline t = runText(
       "G98 G97 S500 M03\n"     // 1
       "G01 X40. Z-5. F100.\n"  // 2
-      "G53 G00 X0\n"           // 3: machine X0 = work X0 (no G50 shift)
+      "G53 G00 X0\n"           // 3: machine X0 = the reference point's X, work X0
       "X10.\n",                // 4: a rapid (G00 is modal now)
       in(Dialect::Fanuc));
   ASSERT_FALSE(t.alarm);
@@ -96,10 +96,11 @@ TEST(OneShotWithMotion, G53G00MovesInMachineCoordinatesAndG00StaysModal) {
 }
 
 TEST(OneShotWithMotion, G00G53WithXAndZ) {
-  // G00 G53 X0 Z-2.: both axes to the machine position (no shift: the same in work).
+  // G00 G53 X0 Z-2.: both axes to the machine position; machine zero is the
+  // reference point X0 Z300, so Z-2. (mm after G21) is work Z298.
   const Timeline t = runText("G21\nG00 X40. Z10.\nG00 G53 X0 Z-2.\n", in(Dialect::Haas));
   ASSERT_FALSE(t.alarm);
-  EXPECT_POINT(endPosition(t), 0.0, -2.0);
+  EXPECT_POINT(endPosition(t), 0.0, 298.0);
 }
 
 TEST(OneShotWithMotion, G28G01UWReturnsAndLeavesG01Modal) {

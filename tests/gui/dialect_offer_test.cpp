@@ -1,0 +1,91 @@
+// "Say which dialect fits" in the GUI (issue 8 item 5): a Haas program opened
+// in the Fanuc dialect gets a bar offering the Haas dialect; one click
+// switches, the errors go and the choice is remembered.
+#include <QFile>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include "gui/dialect_offer_bar.h"
+#include "gui/document.h"
+#include "gui/language.h"
+#include "gui/main_window.h"
+#include "gui/resources.h"
+#include "gui/settings.h"
+
+using namespace klueng;
+using namespace klueng::gui;
+
+namespace {
+
+// Haas one-block G71 (D = depth per pass) and G70: two blocks Fanuc refuses (E201 on D).
+const char* kHaas =
+    "%\nO20031 (HAAS OD)\nG53 G00 X0\nT101\nG97 S900 M03\nG00 X2.1 Z0.1\n"
+    "G71 P10 Q20 U0.02 W0.005 D0.05 F0.01\nN10 G00 X1.5\nG01 Z-1. F0.006\nN20 X2.1\n"
+    "G72 P10 Q20 D0.05 F0.01\nG70 P10 Q20\nG53 G00 X0\nM30\n%\n";
+
+bool openAndWait(MainWindow& w, const QString& path) {
+  QSignalSpy loaded(&w, &MainWindow::fileLoaded);
+  if (!w.openFile(path)) return false;
+  return QTest::qWaitFor([&] { return loaded.count() > 0; }, 30000) &&
+         QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000);
+}
+
+}  // namespace
+
+class DialectOfferTest : public QObject {
+  Q_OBJECT
+ private slots:
+  void initTestCase() {
+    QStandardPaths::setTestModeEnabled(true);
+    initResources();
+  }
+
+  void haasProgramInFanucModeOffersTheSwitch() {
+    Settings().setDialect(core::gcode::Dialect::Fanuc);
+    Language::instance()->setLanguage(QStringLiteral("en"));
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("haas.nc"));
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(kHaas);
+    f.close();
+
+    MainWindow w;
+    w.show();
+    QVERIFY(openAndWait(w, path));
+    auto* bar = w.findChild<DialectOfferBar*>(QStringLiteral("dialectOffer"));
+    QVERIFY(bar);
+    QTRY_VERIFY(bar->isOffering());
+    QCOMPARE(bar->text(), QStringLiteral("Blocks in Haas ST (NGC) form that the current dialect refuses: 2. "
+                                         "The Haas ST (NGC) dialect accepts the whole program."));
+    Language::instance()->setLanguage(QStringLiteral("th"));
+    QTRY_VERIFY(bar->text().contains(QStringLiteral("รับได้ทั้งโปรแกรม")));
+    Language::instance()->setLanguage(QStringLiteral("en"));
+
+    QSignalSpy checked(&w, &MainWindow::checkFinished);
+    bar->findChild<QPushButton*>(QStringLiteral("dialectOfferSwitch"))->click();
+    QTRY_VERIFY(checked.count() > 0);
+    QTRY_VERIFY(!bar->isOffering());
+    QVERIFY(w.action(QStringLiteral("actionDialectHaas"))->isChecked());
+    QCOMPARE(Settings().dialect(), core::gcode::Dialect::Haas);
+    // The stock is inferred again in the new dialect: the Haas inch cycle starts
+    // at X2.1, the largest 1/8-inch bar not above it is Ø2 in.
+    QTRY_VERIFY(w.stockSourceText().startsWith(QStringLiteral("Stock Ø2 x ")));
+    QVERIFY(w.stockSourceText().contains(QStringLiteral("inferred from G00 X2.1 Z0.1")));
+    QCOMPARE(w.document()->header().diameterMm(), 2.0 * 25.4);
+  }
+
+  void cleanProgramGetsNoOffer() {
+    Settings().setDialect(core::gcode::Dialect::Fanuc);
+    MainWindow w;
+    w.show();
+    QVERIFY(openAndWait(w, QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt")));
+    QVERIFY(!w.findChild<DialectOfferBar*>(QStringLiteral("dialectOffer"))->isOffering());
+  }
+};
+
+QTEST_MAIN(DialectOfferTest)
+#include "dialect_offer_test.moc"
