@@ -453,8 +453,8 @@ TEST(RealStyleHaas, GuidePin_ParkG53G00) {
   EXPECT_NEAR(r.part.d(-0.5), 1.0000, kIn);
 }
 
-// The part: it is finished before the park, so it is measured even while the
-// park still stops the run (the disagreement above).
+// The part: it is finished before the park, so it is measured even if the
+// park stops the run (the disagreement above, fixed on main in 2268fb4).
 TEST(RealStyleHaas, GuidePin_NoNoseComp) {
   const Job& job = kGuidePin;
   RUN_UNTIL_KNOWN(job, r);
@@ -493,7 +493,8 @@ TEST(RealStyleHaas, PumpShaft_1_8_M23_Thread) {
   EXPECT_NEAR(r.part.minD(-0.8, -0.2), 0.8416, kIn);
 }
 
-// The OD and the groove, finished before the park that Klueng stops on.
+// The OD and the groove, finished before the park (measured even if the park
+// stops the run, as it did before 2268fb4).
 TEST(RealStyleHaas, PumpShaft_WideGroove) {
   const Job& job = kPumpShaft;
   RUN_UNTIL_KNOWN(job, r);
