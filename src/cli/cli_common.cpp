@@ -88,22 +88,14 @@ std::optional<gcode::InputUnits> parseUnits(std::string_view text) {
 std::vector<Diagnostic> resolveStock(io::ProgramFile& file, const std::optional<io::JobHeader>& stock,
                                      const machine::MachineSetup& setup, const machine::RunOptions& options) {
   io::JobHeader& h = file.header;
-  const auto keepSize = [&h](const io::JobHeader& from) {
-    h.diameter = from.diameter;
-    h.diameterUnit = from.diameterUnit;
-    h.length = from.length;
-    h.lengthUnit = from.lengthUnit;
-    h.bore = from.bore;
-    h.stockSource = from.stockSource;
-  };
-  if (stock) keepSize(*stock);
+  if (stock) h.takeStockFrom(*stock);
   if (h.stockSource == io::StockSource::Header) return {};
   if (file.gcode.find_first_not_of(" \t\r\n") == std::string::npos) return {};  // nothing to cut
   if (h.stockSource != io::StockSource::CommandLine && h.stockSource != io::StockSource::JobDetails) {
     const gcode::Program program = gcode::parse(file.gcode, file.gcodeFirstLine);
     const machine::StockInference inferred = machine::inferStock(program, setup, options);
     if (inferred.found) inferred.applyTo(h);
-    else keepSize(io::JobHeader{});
+    else h.takeStockFrom(io::JobHeader{});
     return machine::stockNotes(h, &inferred, file.gcode, file.gcodeFirstLine);
   }
   return machine::stockNotes(h, nullptr, file.gcode, file.gcodeFirstLine);

@@ -10,14 +10,7 @@ namespace klueng::gui {
 Document::Document(QObject* parent) : QObject(parent) {}
 
 namespace {
-void takeStock(core::io::JobHeader& h, const core::io::JobHeader& from) {
-  h.diameter = from.diameter;
-  h.diameterUnit = from.diameterUnit;
-  h.length = from.length;
-  h.lengthUnit = from.lengthUnit;
-  h.bore = from.bore;
-  h.stockSource = from.stockSource;
-}
+void takeStock(core::io::JobHeader& h, const core::io::JobHeader& from) { h.takeStockFrom(from); }
 }  // namespace
 
 LoadedProgram Document::load(const QString& path, const core::io::JobHeader& defaultsForPlain,

@@ -114,6 +114,8 @@ constexpr MessageText kMessages[] = {
     {"I155", "stock {0} is the default: the program has no approach to infer it from; set it in Job details or with --stock",
      "ชิ้นงาน {0} เป็นค่าเริ่มต้น: โปรแกรมไม่มีตำแหน่งเข้าหาชิ้นงานให้ประมาณได้ ตั้งค่าได้ที่รายละเอียดงานหรือ --stock"},
     {"I156", "stock {0} from the file's job header", "ชิ้นงาน {0} จากส่วนหัวของงานในไฟล์"},
+    {"I158", "stock {0} inferred: the program works only inside a bore, so the bar is a size above its largest cut Ø{1} with a wall around it",
+     "ชิ้นงาน {0} ประมาณจากงานกลึงด้านในเท่านั้น: ใช้ขนาดเหล็กเพลาที่โตกว่าเส้นผ่าศก. ใหญ่สุดที่ตัด Ø{1} โดยเผื่อความหนาผนัง"},
     {"I157", "stock length {0}: the deepest cut Z{1} ({2}) + {3} for the cut-off + {4} held in the chuck",
      "ความยาวชิ้นงาน {0}: ตัดลึกสุดที่ Z{1} ({2}) + {3} สำหรับการตัดขาด + {4} ส่วนที่หัวจับยึด"},
     // The tool library, library.cfg (docs/tools.md).

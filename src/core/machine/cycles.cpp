@@ -228,19 +228,8 @@ Expansion expand(int g, const CycleInput& in, CycleMemory& memory) {
         const Vec2 s3(target.x(), a.y());
         if ((s0 - a).norm() > kEps) e.steps.push_back(rapid(a, s0));
         e.steps.push_back(rapid(s0, s1));
-        const double length = std::abs(s2.x() - s1.x());
-        const double chamfer = std::min(memory.g76Chamfer / 10.0 * in.feed, length);
-        if (chamfer > kEps) {
-          // Pull-out at 45 degrees over the last r/10 leads, still threading.
-          const Vec2 c0 = s1 + (s2 - s1) * ((length - chamfer) / length);
-          const Vec2 c1(target.x(), c0.y() + sx * chamfer);
-          e.steps.push_back(thread(s1, c0, in.feed));
-          e.steps.push_back(thread(c0, c1, in.feed));
-          e.steps.push_back(rapid(c1, s3));
-        } else {
-          e.steps.push_back(thread(s1, s2, in.feed));
-          e.steps.push_back(rapid(s2, s3));
-        }
+        // Pull-out at 45 degrees over the last r/10 leads, still threading.
+        threadPass(e.steps, s1, s2, s3, memory.g76Chamfer / 10.0 * in.feed, sx, in.feed);
         e.steps.push_back(rapid(s3, a));
       }
       return e;

@@ -136,19 +136,8 @@ Expansion threading(const CycleInput& in, const Block& b) {
     const Vec2 s3(target.x(), a.y());
     if ((s0 - a).norm() > kEps) e.steps.push_back(rapid(a, s0));
     e.steps.push_back(rapid(s0, s1));
-    const double lengthZ = std::abs(s2.x() - s1.x());
-    const double leads = in.threadChamfer ? s.threadChamferLeads : 0.0;  // M23/M24
-    const double chamfer = std::min(leads * in.feed, lengthZ);             // Settings 95/96: 45 degrees
-    if (chamfer > kEps) {
-      const Vec2 c0 = s1 + (s2 - s1) * ((lengthZ - chamfer) / lengthZ);
-      const Vec2 c1(target.x(), c0.y() + sx * chamfer);
-      e.steps.push_back(thread(s1, c0, in.feed));
-      e.steps.push_back(thread(c0, c1, in.feed));
-      e.steps.push_back(rapid(c1, s3));
-    } else {
-      e.steps.push_back(thread(s1, s2, in.feed));
-      e.steps.push_back(rapid(s2, s3));
-    }
+    const double leads = in.threadChamfer ? s.threadChamferLeads : 0.0;  // M23/M24, Settings 95/96
+    threadPass(e.steps, s1, s2, s3, leads * in.feed, sx, in.feed);
     e.steps.push_back(rapid(s3, a));
   }
   return e;

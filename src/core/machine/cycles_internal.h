@@ -3,6 +3,7 @@
 // cycles_haas.cpp: Haas one-block forms, drilling.cpp: G81-G83). Not a public API.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -30,6 +31,25 @@ inline Step rapid(const Vec2& a, const Vec2& b) { return Step{StepKind::Rapid, S
 inline Step feedLine(const Vec2& a, const Vec2& b) { return Step{StepKind::Feed, Segment::line(a, b), 0.0, 0.0, {}, {}}; }
 inline Step thread(const Vec2& a, const Vec2& b, double lead) {
   return Step{StepKind::Thread, Segment::line(a, b), lead, 0.0, {}, {}};
+}
+
+// One thread pass from s1 to s2 (then out to s3) at `lead`; with a chamfer,
+// the last `chamfer` of Z is pulled out at 45 degrees, still threading
+// (Fanuc G76 r, Haas Settings 95/96). sx: the direction towards the crest.
+inline void threadPass(std::vector<Step>& steps, const Vec2& s1, const Vec2& s2, const Vec2& s3, double chamfer,
+                       double sx, double lead) {
+  const double length = std::abs(s2.x() - s1.x());
+  chamfer = std::min(chamfer, length);
+  if (chamfer > kEps) {
+    const Vec2 c0 = s1 + (s2 - s1) * ((length - chamfer) / length);
+    const Vec2 c1(s2.x(), c0.y() + sx * chamfer);
+    steps.push_back(thread(s1, c0, lead));
+    steps.push_back(thread(c0, c1, lead));
+    steps.push_back(rapid(c1, s3));
+  } else {
+    steps.push_back(thread(s1, s2, lead));
+    steps.push_back(rapid(s2, s3));
+  }
 }
 
 inline CycleAlarm alarmAt(const char* code, const Word* w, const Block& b, std::vector<std::string> args) {

@@ -175,6 +175,24 @@ StockInference inferStock(const gcode::Program& program, const MachineSetup& set
       r.boreLine = m.line;
     }
   }
+  // ID work on a tube: when the "approach" was inside what the program cuts,
+  // the bar must be larger than everything cut, with a wall around it.
+  if (r.insidePassDiameter > 0.0) {
+    double largest = 0.0, largestInside = 0.0;
+    for (std::size_t i = 0; i < moves.size(); ++i) {
+      const Move& m = moves[i];
+      if (!isFeed(m)) continue;
+      largest = std::max({largest, diameterOf(m.path.start), diameterOf(m.path.end)});
+      if (isInsidePass(moves, i)) largestInside = std::max(largestInside, diameterOf(m.path.start));
+    }
+    largest /= unit;
+    if (r.diameter <= largestInside / unit + 1e-6) {
+      const double wall = r.inch ? 0.5 : 10.0;
+      r.outsideFromInside = true;
+      r.largestCutDiameter = largest;
+      r.diameter = r.inch ? inchBarSize(largest + wall, true) : metricBarSize(largest + wall, true);
+    }
+  }
   if (r.insidePassDiameter > 0.0) {
     const double bore = r.inch ? roundDown(r.insidePassDiameter - 0.0625, 0.0625)
                                : std::floor(r.insidePassDiameter - 1.0 + 1e-9);
@@ -197,8 +215,11 @@ std::vector<Diagnostic> stockNotes(const io::JobHeader& stock, const StockInfere
   if (!inference || !inference->found) return {note("I155", 0, {size})};
   const StockInference& r = *inference;
   std::vector<Diagnostic> notes;
-  notes.push_back(note(r.cycleStart ? "I153" : "I152", r.diameterLine,
-                       {size, lineText(gcode, firstLine, r.diameterLine)}));
+  if (r.outsideFromInside)
+    notes.push_back(note("I158", r.boreLine, {size, number(r.largestCutDiameter)}));
+  else
+    notes.push_back(note(r.cycleStart ? "I153" : "I152", r.diameterLine,
+                         {size, lineText(gcode, firstLine, r.diameterLine)}));
   if (r.lengthLine > 0)
     notes.push_back(note("I157", r.lengthLine,
                          {number(r.length), number(r.deepestZ), lineText(gcode, firstLine, r.lengthLine),

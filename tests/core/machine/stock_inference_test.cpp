@@ -137,6 +137,41 @@ TEST(StockInference, InsideWorkWithoutDrillingIsATube) {
             "bore Ø91 inferred from G01 Z-40. (work inside without drilling first: tube stock)");
 }
 
+// A Fanuc boring program that never turns the outside: G71 with U-0.4 (inside)
+// from X86. Roughing passes from X88 (U1. per side) out to the Ø100 profile.
+const std::string kBoreOnly =
+    "G21 G99 G97 S600 M03\n"                  // 1
+    "T0505\n"                                 // 2
+    "G00 X86. Z2.\n"                          // 3
+    "G71 U1. R0.5\n"                          // 4
+    "G71 P10 Q20 U-0.4 W0.1 F0.2\n"           // 5
+    "N10 G00 X100.\n"                         // 6
+    "G01 Z0. F0.1\n"                          // 7
+    "X96. Z-2.\n"                             // 8
+    "Z-30.\n"                                 // 9
+    "X90.\n"                                  // 10
+    "N20 Z-45.\n"                             // 11
+    "G70 P10 Q20\n"                           // 12
+    "G00 Z100.\n"                             // 13
+    "M30\n";                                  // 14
+
+TEST(StockInference, BoringOnlyProgramGetsABarAroundItsLargestCut) {
+  const StockInference r = infer(kBoreOnly);
+  ASSERT_TRUE(r.found);
+  // Largest diameter cut: Ø100 (the profile's start, reached by G70) + 2 x 10 mm
+  // wall = Ø120, a bar size; the smallest inside pass is the first G71 pass at
+  // X86 + 2 x 1 = Ø88, so the bore is Ø87 (1 mm under it).
+  EXPECT_TRUE(r.outsideFromInside);
+  EXPECT_DOUBLE_EQ(r.largestCutDiameter, 100.0);
+  EXPECT_DOUBLE_EQ(r.diameter, 120.0);
+  EXPECT_DOUBLE_EQ(r.insidePassDiameter, 88.0);
+  EXPECT_DOUBLE_EQ(r.bore, 87.0);
+  EXPECT_EQ(r.boreLine, 5);
+  EXPECT_EQ(noteText(kBoreOnly, r, 0),
+            "stock Ø120/Ø87 x 65 mm inferred: the program works only inside a bore, so the bar is a size above "
+            "its largest cut Ø100 with a wall around it");
+}
+
 TEST(StockInference, DrilledFirstIsASolidBar) {
   const std::string text =
       "G21 G99 G97 S800 M03\nT0303 (DRILL)\nG00 X0. Z2.\nG01 Z-30. F0.1\nG00 Z2.\n"

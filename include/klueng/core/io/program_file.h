@@ -34,6 +34,16 @@ struct JobHeader {
   double diameterMm() const { return diameterUnit == LengthUnit::Inch ? diameter * 25.4 : diameter; }
   double lengthMm() const { return lengthUnit == LengthUnit::Inch ? length * 25.4 : length; }
   double boreMm() const { return diameterUnit == LengthUnit::Inch ? bore * 25.4 : bore; }
+  // Takes the stock (sizes, units, bore and where it came from) of `from`,
+  // keeping this header's text fields.
+  void takeStockFrom(const JobHeader& from) {
+    diameter = from.diameter;
+    diameterUnit = from.diameterUnit;
+    length = from.length;
+    lengthUnit = from.lengthUnit;
+    bore = from.bore;
+    stockSource = from.stockSource;
+  }
 };
 
 // "Ø50 x 100 mm", "Ø118/Ø90 x 80 mm" (tube), "Ø2.125 x 4 in": the stock in

@@ -53,6 +53,10 @@ struct StockInference {
   int lengthLine = 0;
   double insidePassDiameter = 0.0;  // smallest inside pass before any drilling; 0 = none
   int boreLine = 0;
+  // The program only works inside (every approach is within the bore): Ø is
+  // one bar size above the largest diameter it cuts plus a wall.
+  bool outsideFromInside = false;
+  double largestCutDiameter = 0.0;  // in the unit above
   double cutOffMargin = 0.0;   // margin and chuck grip added to the length, in the unit above
   double chuckGrip = 0.0;
 
