@@ -415,6 +415,17 @@ TEST(RealStyleHaas, Knob_G73_Vnmg) {
   EXPECT_NEAR(p.d(-2.3), 1.5000, kIn);  // the bar
 }
 
+// The same knob without --tool: the tool list at the top, "(T9 VNMG 332 -
+// 35 DEG ...)", names station 9, so the 35 degree VNMG comes from the library
+// and the neck is the same as with --tool.
+TEST(RealStyleHaas, Knob_ToolFromTheToolList) {
+  const Job job{"haas-06-knob-g73.nc", "haas", "--units inch --stock 1.5x3in", true};
+  RUN_CLEAN(job, r);
+  EXPECT_NE(r.check.text.find("T09 = vnmg-35-r02 (comment \"T9 VNMG 332"), std::string::npos) << r.check.text;
+  EXPECT_NEAR(r.part.d(-0.4), 1.0000, kIn);
+  EXPECT_NEAR(r.part.d(-0.9), 0.8748, kIn);
+}
+
 // O20107: CAM output (X0.42928932: more decimals than 0.0001, rounded with a
 // warning), M88/M89, T1212 cut-off.
 TEST(RealStyleHaas, TaperPin_CamDecimals_CutOff) {

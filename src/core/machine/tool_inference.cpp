@@ -152,6 +152,7 @@ class Scanner {
     for (const gcode::Block& b : program_.blocks)
       if (std::any_of(b.words.begin(), b.words.end(), [](const gcode::Word& w) { return w.letter != 'N'; }))
         blockLines.insert(b.line);
+    readToolList(blockLines);
     for (std::size_t bi = 0; bi < program_.blocks.size(); ++bi) {
       const gcode::Block& b = program_.blocks[bi];
       for (const gcode::Word* g : b.all('G'))
@@ -175,6 +176,28 @@ class Scanner {
   int motion_ = 0;
   std::optional<double> x_, z_;  // mm (x diameter)
   bool afterSelect_ = false;
+  std::map<int, int> toolList_;  // station -> file line of its entry in a tool list comment
+
+  // A tool list, as real programs write one at the top: comment-only lines
+  // that start with a T word, "(T9 VNMG 332 - 35 DEG)", "(T0303 THREAD)".
+  // Station: 1-2 digits as written, 3-4 digits = station and offset.
+  void readToolList(const std::set<int>& blockLines) {
+    for (std::size_t i = 0; i < lines_.size(); ++i) {
+      const int line = firstLine_ + static_cast<int>(i);
+      if (blockLines.count(line)) continue;
+      const std::string text = commentOf(lines_[i]);
+      std::size_t k = 0;
+      while (k < text.size() && text[k] == ' ') ++k;
+      if (k >= text.size() || (text[k] != 'T' && text[k] != 't')) continue;
+      std::size_t d = k + 1;
+      while (d < text.size() && d - k <= 4 && text[d] >= '0' && text[d] <= '9') ++d;
+      const std::size_t digits = d - k - 1;
+      if (digits == 0 || digits > 4 || (d < text.size() && text[d] >= '0' && text[d] <= '9')) continue;
+      const int value = std::stoi(text.substr(k + 1, digits));
+      const int station = digits <= 2 ? value : value / 100;
+      if (station >= 1 && station <= io::kMaxStations && !toolList_.count(station)) toolList_[station] = line;
+    }
+  }
 
   std::string rawComment(int fileLine) const {
     const int i = fileLine - firstLine_;
@@ -198,6 +221,7 @@ class Scanner {
     std::vector<int> candidates = {b.line};
     for (int l = b.line - 1; l >= b.line - 3 && !blockLines.count(l); --l) candidates.push_back(l);
     for (int l = b.line + 1; l <= b.line + 2 && !blockLines.count(l); ++l) candidates.push_back(l);
+    if (auto listed = toolList_.find(station); listed != toolList_.end()) candidates.push_back(listed->second);
     for (int l : candidates) {
       const std::string text = rawComment(l);
       if (text.empty()) continue;
