@@ -11,6 +11,7 @@
 // writes what was asked for. An alarm is printed like a diagnostic
 // (FILE:LINE:COL: alarm A104: ...) and gives exit 1; the trace up to it is
 // still written.
+#include <algorithm>
 #include <cstdio>
 #include <functional>
 #include <optional>
@@ -100,6 +101,18 @@ const std::vector<OptionSpec>& optionSpecs() {
   return specs;
 }
 
+constexpr const char* kSimulateUsage =
+    "usage: klueng-cli simulate FILE [--trace out.csv] [--cycle-time] [--config DIR]\n"
+    "                              [--lang en|th] [--dialect fanuc|haas|classic]\n"
+    "                              [--optional-stop] [--block-skip]\n"
+    "                              [--png out.png] [--profile out.csv] [--json summary.json]\n"
+    "                              [--svg out.svg] [--dxf out.dxf] [--resolution MM] [--no-stock]\n"
+    "                              [--stock DxL[xBORE][in]] [--units mm|inch] [--tool N=ID]...\n"
+    "  --dialect  fanuc (Fanuc 0i-TF, default), haas (Haas ST lathe), classic (1999 rules)\n"
+    "  --stock   stock before the file's header: 50x100 (mm), 2.1x4in, 118x80x90 (tube, bore 90)\n"
+    "  --units   power-on units before any G20/G21: mm or inch\n"
+    "  --tool N=ID   library tool ID at station N for this run, e.g. 12=parting-3mm\n";
+
 // ": allowed: ..." for the options whose values are a closed set or a form.
 std::string allowedValues(const std::string& option) {
   if (option == "--stock") return std::string("; allowed: ") + kStockAllowed;
@@ -145,16 +158,7 @@ std::optional<SimulateOptions> parseOptions(const std::vector<std::string>& args
     }
   }
   if (o.file.empty()) {
-    std::fputs("usage: klueng-cli simulate FILE [--trace out.csv] [--cycle-time] [--config DIR]\n"
-               "                              [--lang en|th] [--dialect fanuc|haas|classic]\n"
-               "                              [--optional-stop] [--block-skip]\n"
-               "                              [--png out.png] [--profile out.csv] [--json summary.json]\n"
-               "                              [--svg out.svg] [--dxf out.dxf] [--resolution MM] [--no-stock]\n"
-               "                              [--stock DxL[xBORE][in]] [--units mm|inch] [--tool N=ID]...\n"
-               "  --stock   stock before the file's header: 50x100 (mm), 2.1x4in, 118x80x90 (tube, bore 90)\n"
-               "  --units   power-on units before any G20/G21: mm or inch\n"
-               "  --tool N=ID   library tool ID at station N for this run, e.g. 12=parting-3mm\n",
-               stderr);
+    std::fputs(kSimulateUsage, stderr);
     return std::nullopt;
   }
   return o;
@@ -167,6 +171,10 @@ void printDiagnostic(const std::string& file, const Diagnostic& d, Lang lang) {
 }  // namespace
 
 int runSimulate(const std::vector<std::string>& args) {
+  if (std::find(args.begin(), args.end(), "--help") != args.end()) {
+    std::fputs(kSimulateUsage, stdout);
+    return 0;
+  }
   const std::optional<SimulateOptions> parsed = parseOptions(args);
   if (!parsed) return 2;
   const SimulateOptions& o = *parsed;

@@ -310,6 +310,16 @@ TEST(CliCheck, UnreadableFileWinsOverErrorsButEveryFileIsStillChecked) {
   EXPECT_THAT(run.out, HasSubstr("/no/such.txt: error F101"));
 }
 
+TEST(CliCheck, HelpOfEachCommandListsTheDialectsAndExitsZero) {
+  for (const char* command : {"check --help", "simulate --help"}) {
+    const auto r = runCli(command);
+    EXPECT_EQ(r.exitCode, 0) << command;
+    EXPECT_NE(r.out.find("--dialect fanuc|haas|classic"), std::string::npos) << command << "\n" << r.out;
+    EXPECT_NE(r.out.find("--stock DxL[xBORE][in]"), std::string::npos) << command;
+    EXPECT_NE(r.out.find("--tool N=ID"), std::string::npos) << command;
+  }
+}
+
 TEST(CliCheck, UsageErrorsExitTwo) {
   EXPECT_EQ(runCli("check").exitCode, 2);
   EXPECT_EQ(runCli("check --lang de " + quote(kSamples + "/01-step-shaft.txt")).exitCode, 2);
