@@ -586,6 +586,18 @@
         <translation>เครื่องกลึง Haas ST (NGC) (&amp;H)</translation>
     </message>
     <message>
+        <source>Power-on units as the &amp;machine (Haas: inch)</source>
+        <translation>หน่วยเมื่อเปิดเครื่องตามเครื่องจักร (Haas: นิ้ว) (&amp;M)</translation>
+    </message>
+    <message>
+        <source>Power-on units: milli&amp;metres</source>
+        <translation>หน่วยเมื่อเปิดเครื่อง: มิลลิเมตร (&amp;M)</translation>
+    </message>
+    <message>
+        <source>Power-on units: &amp;inches</source>
+        <translation>หน่วยเมื่อเปิดเครื่อง: นิ้ว (&amp;I)</translation>
+    </message>
+    <message>
         <location filename="../src/gui/main_window.cpp" line="501" />
         <source>&amp;Fit to View</source>
         <translation>พอดีหน้าจอ (&amp;F)</translation>

@@ -83,6 +83,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   setObjectName(QStringLiteral("mainWindow"));
   setWindowIcon(QIcon(QStringLiteral(":/icons/klueng.svg")));
   dialect_ = settings_->dialect();
+  powerOnUnits_ = settings_->powerOnUnits();
   document_ = new Document(this);
 
   editor_ = new CodeEditor(this);
@@ -91,6 +92,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
 
   runner_ = new RunController(this);
   runner_->setDialect(dialect_);
+  runner_->setPowerOnUnits(powerOnUnits_);
   runner_->setOptionalStop(settings_->optionalStop());
   runner_->setBlockSkip(settings_->blockSkip());
 
@@ -352,6 +354,19 @@ void MainWindow::createActions() {
     const core::gcode::Dialect d = profile.dialect;
     connect(a, &QAction::triggered, this, [this, d] { setDialect(d); });
   }
+  unitsGroup_ = new QActionGroup(this);
+  const std::pair<const char*, std::optional<core::gcode::InputUnits>> unitChoices[] = {
+      {"actionUnitsMachine", std::nullopt},
+      {"actionUnitsMm", core::gcode::InputUnits::Millimetre},
+      {"actionUnitsInch", core::gcode::InputUnits::Inch}};
+  for (const auto& [name, units] : unitChoices) {
+    QAction* a = make(name, nullptr);
+    a->setCheckable(true);
+    a->setChecked(units == powerOnUnits_);
+    unitsGroup_->addAction(a);
+    const auto u = units;
+    connect(a, &QAction::triggered, this, [this, u] { setPowerOnUnits(u); });
+  }
 
   // View
   connect(make("actionFitView", "fit", QKeySequence(QStringLiteral("Ctrl+0"))), &QAction::triggered, output_,
@@ -432,6 +447,8 @@ void MainWindow::createMenus() {
   dialectMenu_ = toolMenu_->addMenu(QString());
   dialectMenu_->setObjectName(QStringLiteral("menuDialect"));
   dialectMenu_->addActions(dialectGroup_->actions());
+  dialectMenu_->addSeparator();
+  dialectMenu_->addActions(unitsGroup_->actions());
 
   viewMenu_ = menuBar()->addMenu(QString());
   viewMenu_->setObjectName(QStringLiteral("menuView"));
@@ -543,6 +560,9 @@ void MainWindow::retranslateUi() {
   set("actionDialectFanuc", tr("&Fanuc 0i-TF"));
   set("actionDialectHaas", tr("&Haas ST lathe (NGC)"));
   set("actionDialectClassic", tr("&Rook classic (1999 rules)"));
+  set("actionUnitsMachine", tr("Power-on units as the &machine (Haas: inch)"));
+  set("actionUnitsMm", tr("Power-on units: milli&metres"));
+  set("actionUnitsInch", tr("Power-on units: &inches"));
   set("actionFitView", tr("&Fit to View"));
   set("actionZoomIn", tr("Zoom &In"));
   set("actionZoomOut", tr("Zoom &Out"));
@@ -584,6 +604,25 @@ void MainWindow::setDialect(core::gcode::Dialect d) {
   // The same plain text may approach the part elsewhere in another dialect (units, cycle forms).
   core::machine::RunOptions run;
   run.dialect = d;
+  run.powerOnUnits = powerOnUnits_;
+  document_->reinferStock(editor_->toPlainText(), runner_->machineSetup(), run);
+  runnerStale_ = true;
+  checkNow();
+}
+
+void MainWindow::setPowerOnUnits(std::optional<core::gcode::InputUnits> units) {
+  powerOnUnits_ = units;
+  settings_->setPowerOnUnits(units);
+  runner_->setPowerOnUnits(units);
+  for (QAction* a : unitsGroup_->actions()) {
+    const QString name = a->objectName();
+    a->setChecked(name == (!units                                      ? QStringLiteral("actionUnitsMachine")
+                           : *units == core::gcode::InputUnits::Inch ? QStringLiteral("actionUnitsInch")
+                                                                     : QStringLiteral("actionUnitsMm")));
+  }
+  core::machine::RunOptions run;
+  run.dialect = dialect_;
+  run.powerOnUnits = units;
   document_->reinferStock(editor_->toPlainText(), runner_->machineSetup(), run);
   runnerStale_ = true;
   checkNow();
@@ -701,6 +740,7 @@ void MainWindow::startLoad(const QString& path) {
   const core::machine::MachineSetup setup = runner_->machineSetup();
   core::machine::RunOptions run;
   run.dialect = dialect_;
+  run.powerOnUnits = powerOnUnits_;
   loadWatcher_.setFuture(QtConcurrent::run([path, defaults, details, setup, run] {
     return Document::load(path, defaults, details, setup, run);
   }));
@@ -904,6 +944,7 @@ void MainWindow::startCheckOn(const QString& text) {
   checkPending_ = false;
   core::gcode::CheckOptions options;
   options.dialect = dialect_;
+  options.powerOnUnits = powerOnUnits_;
   options.toolsWithBitmap = toolsWithBitmap_;
   ++checkGeneration_;
   checkInFlight_ = true;

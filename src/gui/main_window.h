@@ -76,6 +76,8 @@ class MainWindow : public QMainWindow {
   const std::vector<core::Diagnostic>& diagnostics() const { return lastDiagnostics_; }
   core::gcode::Dialect dialect() const { return dialect_; }
   void setDialect(core::gcode::Dialect d);
+  // Units before any G20/G21 (Dialect menu; remembered): nullopt = the dialect's.
+  void setPowerOnUnits(std::optional<core::gcode::InputUnits> units);
   QString configDir() const { return configDir_; }
 
  public slots:
@@ -209,6 +211,8 @@ class MainWindow : public QMainWindow {
   std::vector<core::Diagnostic> runDiagnostics_;  // the last alarm / refused run
 
   core::gcode::Dialect dialect_ = core::gcode::Dialect::Fanuc;
+  std::optional<core::gcode::InputUnits> powerOnUnits_;  // nullopt: as the dialect's machine
+  QActionGroup* unitsGroup_ = nullptr;
   QString configDir_;
   QString configDirOverride_;  // where the dialogs last saved the .cfg files
   core::machine::MachineSetup setup_;   // tools.cfg / offset.cfg / machine.cfg as read

@@ -63,6 +63,12 @@ void RunController::setDialect(core::gcode::Dialect dialect) {
   invalidate();
 }
 
+void RunController::setPowerOnUnits(std::optional<core::gcode::InputUnits> units) {
+  if (options_.powerOnUnits == units) return;
+  options_.powerOnUnits = units;
+  invalidate();
+}
+
 void RunController::setOptionalStop(bool on) {
   if (options_.optionalStop == on) return;
   // No new timeline needed: every M01 is recorded as a stop and the switch is read
@@ -269,6 +275,7 @@ void RunController::prepareAndThen(Pending what) {
     const core::gcode::Program program = core::gcode::parse(file.gcode, file.gcodeFirstLine);
     core::gcode::CheckOptions check;
     check.dialect = options.dialect;
+    check.powerOnUnits = options.powerOnUnits;
     check.turretStations = setup.tools.stations;
     std::vector<int> withBitmap;
     for (int t = 1; t <= core::io::kToolCount; ++t)

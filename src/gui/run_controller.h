@@ -84,6 +84,8 @@ class RunController : public QObject {
   void setMachineSetup(const core::machine::MachineSetup& setup);
   const core::machine::MachineSetup& machineSetup() const { return setup_; }
   void setDialect(core::gcode::Dialect dialect);
+  // Units before any G20/G21; nullopt = the dialect's (Haas: inch).
+  void setPowerOnUnits(std::optional<core::gcode::InputUnits> units);
   void setOptionalStop(bool on);
   bool optionalStop() const { return options_.optionalStop; }
   void setBlockSkip(bool on);

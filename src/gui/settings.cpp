@@ -65,6 +65,18 @@ void Settings::setDialect(core::gcode::Dialect d) {
   settings_.setValue(key("gcode/dialect"), QString::fromUtf8(id.data(), static_cast<qsizetype>(id.size())));
 }
 
+std::optional<core::gcode::InputUnits> Settings::powerOnUnits() const {
+  const QString v = settings_.value(key("gcode/units")).toString();
+  if (v == QStringLiteral("mm")) return core::gcode::InputUnits::Millimetre;
+  if (v == QStringLiteral("inch")) return core::gcode::InputUnits::Inch;
+  return std::nullopt;
+}
+void Settings::setPowerOnUnits(std::optional<core::gcode::InputUnits> units) {
+  settings_.setValue(key("gcode/units"), !units                                      ? QStringLiteral("machine")
+                                         : *units == core::gcode::InputUnits::Inch ? QStringLiteral("inch")
+                                                                                   : QStringLiteral("mm"));
+}
+
 QStringList Settings::recentFiles() const { return settings_.value(key("files/recent")).toStringList(); }
 
 void Settings::addRecentFile(const QString& path) {

@@ -24,6 +24,9 @@ class Settings {
 
   core::gcode::Dialect dialect() const;
   void setDialect(core::gcode::Dialect d);
+  // Power-on units: nullopt = as the dialect's machine powers on.
+  std::optional<core::gcode::InputUnits> powerOnUnits() const;
+  void setPowerOnUnits(std::optional<core::gcode::InputUnits> units);
 
   QStringList recentFiles() const;
   // Puts path first, removes duplicates, keeps at most kMaxRecentFiles.

@@ -78,6 +78,38 @@ class DialectOfferTest : public QObject {
     QCOMPARE(w.document()->header().diameterMm(), 2.0 * 25.4);
   }
 
+  void powerOnUnitsAreASettingOfTheDialectMenu() {
+    // A US shop's Fanuc program without G20: X1.2345 has 4 decimals, too many
+    // for mm (W103) but the inch increment; the stock is inferred in inches.
+    Settings().setDialect(core::gcode::Dialect::Fanuc);
+    Settings().setPowerOnUnits(std::nullopt);
+    Language::instance()->setLanguage(QStringLiteral("en"));
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("us.nc"));
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write("%\nO0042\nT0101\nG97 S900 M03\nG00 X2.1 Z0.1\nG01 X1.2345 Z0. F0.005\nZ-1.5\nG00 X2.2\nM30\n%\n");
+    f.close();
+    MainWindow w;
+    w.show();
+    QVERIFY(openAndWait(w, path));
+    const auto hasW103 = [&w] {
+      for (const auto& d : w.diagnostics())
+        if (d.code == "W103") return true;
+      return false;
+    };
+    QTRY_VERIFY(hasW103());
+    QSignalSpy checked(&w, &MainWindow::checkFinished);
+    w.action(QStringLiteral("actionUnitsInch"))->trigger();
+    QTRY_VERIFY(checked.count() > 0);
+    QTRY_VERIFY(!hasW103());
+    QCOMPARE(Settings().powerOnUnits(), std::optional(core::gcode::InputUnits::Inch));
+    QVERIFY(w.action(QStringLiteral("actionUnitsInch"))->isChecked());
+    QVERIFY(w.stockSourceText().startsWith(QStringLiteral("Stock Ø2 x ")));
+    QVERIFY(w.stockSourceText().contains(QStringLiteral(" in ")));
+    Settings().setPowerOnUnits(std::nullopt);
+  }
+
   void cleanProgramGetsNoOffer() {
     Settings().setDialect(core::gcode::Dialect::Fanuc);
     MainWindow w;
