@@ -590,8 +590,8 @@
         <translation>หน่วยเมื่อเปิดเครื่องตามเครื่องจักร (Haas: นิ้ว) (&amp;M)</translation>
     </message>
     <message>
-        <source>Power-on units: milli&amp;metres</source>
-        <translation>หน่วยเมื่อเปิดเครื่อง: มิลลิเมตร (&amp;M)</translation>
+        <source>&amp;Power-on units: millimetres</source>
+        <translation>หน่วยเมื่อเปิดเครื่อง: มิลลิเมตร (&amp;P)</translation>
     </message>
     <message>
         <source>Power-on units: &amp;inches</source>

@@ -561,7 +561,7 @@ void MainWindow::retranslateUi() {
   set("actionDialectHaas", tr("&Haas ST lathe (NGC)"));
   set("actionDialectClassic", tr("&Rook classic (1999 rules)"));
   set("actionUnitsMachine", tr("Power-on units as the &machine (Haas: inch)"));
-  set("actionUnitsMm", tr("Power-on units: milli&metres"));
+  set("actionUnitsMm", tr("&Power-on units: millimetres"));
   set("actionUnitsInch", tr("Power-on units: &inches"));
   set("actionFitView", tr("&Fit to View"));
   set("actionZoomIn", tr("Zoom &In"));
