@@ -2,7 +2,7 @@
 
 #include <QFileInfo>
 
-#include "klueng/core/gcode/parser.h"
+#include "klueng/core/machine/job_check.h"
 #include "klueng/core/machine/stock_inference.h"
 
 namespace klueng::gui {
@@ -29,7 +29,7 @@ LoadedProgram Document::load(const QString& path, const core::io::JobHeader& def
     core::io::ProgramFile& f = out.file;
     std::optional<core::machine::StockInference> inferred;
     if (f.plainGcode && !jobDetails) {
-      inferred = core::machine::inferStock(core::gcode::parse(f.gcode, f.gcodeFirstLine), setup, run);
+      inferred = core::machine::inferStockFromText(f.gcode, f.gcodeFirstLine, setup, run);
       if (inferred->found) inferred->applyTo(f.header);
     }
     out.stockNotes = core::machine::stockNotes(f.header, inferred ? &*inferred : nullptr, f.gcode, f.gcodeFirstLine);
@@ -48,7 +48,7 @@ bool Document::reinferStock(const QString& gcode, const core::machine::MachineSe
   core::io::JobHeader header = file_.header;
   takeStock(header, core::io::JobHeader{});
   const core::machine::StockInference inferred =
-      core::machine::inferStock(core::gcode::parse(text, file_.gcodeFirstLine), setup, run);
+      core::machine::inferStockFromText(text, file_.gcodeFirstLine, setup, run);
   if (inferred.found) inferred.applyTo(header);
   else header.stockSource = core::io::StockSource::Default;
   stockNotes_ = core::machine::stockNotes(header, &inferred, text, file_.gcodeFirstLine);

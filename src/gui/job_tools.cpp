@@ -5,8 +5,7 @@
 #include <QSettings>
 #include <QStringList>
 
-#include "klueng/core/gcode/dialect_fit.h"
-#include "klueng/core/gcode/parser.h"
+#include "klueng/core/machine/job_check.h"
 #include "klueng/core/io/tool_library.h"
 
 namespace klueng::gui {
@@ -16,24 +15,13 @@ namespace machine = core::machine;
 JobToolsResult checkWithTools(const QString& text, int firstLine, core::gcode::CheckOptions options,
                               const machine::MachineSetup& setup, const std::vector<machine::StationOverride>& overrides,
                               int stations) {
+  core::machine::JobCheck job = machine::checkJob(text.toStdString(), firstLine, std::move(options), setup,
+                                                  core::io::shippedToolLibrary(), overrides, stations);
   JobToolsResult result;
-  const std::string utf8 = text.toStdString();
-  const core::gcode::Program program = core::gcode::parse(utf8, firstLine);
-  result.inference =
-      machine::inferTools(program, utf8, firstLine, setup, core::io::shippedToolLibrary(), overrides, stations);
-  if (options.toolsWithBitmap) {
-    std::vector<int> withBitmap;
-    for (int t = 1; t <= core::io::kMaxStations; ++t)
-      if (!result.inference.setup.tools.bitmap[static_cast<std::size_t>(t - 1)].empty()) withBitmap.push_back(t);
-    options.toolsWithBitmap = withBitmap;
-  }
-  result.diagnostics = core::gcode::check(program, options);
-  // The dialect that accepts a program this one refuses (I102), for the offer bar.
-  if (auto fit = core::gcode::suggestDialect(program, options, result.diagnostics)) {
-    result.fit = fit->dialect;
-    result.fitBlocks = fit->blocks;
-    result.diagnostics.push_back(fit->note);
-  }
+  result.diagnostics = std::move(job.diagnostics);
+  result.inference = std::move(job.inference);
+  result.fit = job.fit;
+  result.fitBlocks = job.fitBlocks;
   return result;
 }
 

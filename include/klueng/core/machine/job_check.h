@@ -1,0 +1,34 @@
+#pragma once
+// The check of one program as the GUI needs it, in one call: parse, the tools
+// the program asks for (library choices), the grammar check against those
+// tools, and the dialect that fits when this one refuses the program. The GUI
+// asks this instead of parsing G-code itself.
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "klueng/core/diagnostic.h"
+#include "klueng/core/gcode/checker.h"
+#include "klueng/core/io/tool_library.h"
+#include "klueng/core/machine/stock_inference.h"
+#include "klueng/core/machine/tool_inference.h"
+
+namespace klueng::core::machine {
+
+struct JobCheck {
+  std::vector<Diagnostic> diagnostics;  // the checker's, plus the I102 note when another dialect fits
+  ToolInference inference;              // the job's tools (setup amended by library choices)
+  std::optional<gcode::Dialect> fit;    // another dialect that accepts the whole program
+  int fitBlocks = 0;
+};
+
+// options.toolsWithBitmap, when set, is replaced by the stations that have a
+// tool after inference.
+JobCheck checkJob(std::string_view gcode, int firstLine, gcode::CheckOptions options, const MachineSetup& setup,
+                  const io::ToolLibrary& library, const std::vector<StationOverride>& overrides, int stations);
+
+// inferStock on G-code text (parsed here).
+StockInference inferStockFromText(std::string_view gcode, int firstLine, const MachineSetup& setup,
+                                  const RunOptions& options);
+
+}  // namespace klueng::core::machine
