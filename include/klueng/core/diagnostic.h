@@ -20,6 +20,7 @@ struct SourceRange {
   int line = 0;
   int column = 0;
   int length = 0;
+  int file = 0;  // 0 = the program; else a subprogram file (gcode::Program::files)
   friend bool operator==(const SourceRange&, const SourceRange&) = default;
 };
 

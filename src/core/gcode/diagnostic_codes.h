@@ -27,6 +27,17 @@ inline constexpr const char* kBadToolWord = "E117";         // {0}=word
 inline constexpr const char* kBadToolWordFanuc = "E118";    // {0}=word {1}=max tool {2}=max offset (2 digits)
 inline constexpr const char* kNotWholeNumber = "E119";      // {0}=word {1}=letter
 inline constexpr const char* kBlockTooLong = "E120";       // {0}=limit
+inline constexpr const char* kMacroUnclosedBracket = "E121";  // '[' without ']'
+inline constexpr const char* kMacroExpectedValue = "E122";    // {0}=what was found instead
+inline constexpr const char* kMacroUnknownWord = "E123";      // {0}=word
+inline constexpr const char* kMacroExpectedBracket = "E124";  // {0}=function
+inline constexpr const char* kMacroBadVariable = "E125";      // {0}=text
+inline constexpr const char* kMacroTooDeep = "E126";          // {0}=limit
+inline constexpr const char* kStatementNotAlone = "E127";     // {0}=word
+inline constexpr const char* kIfWithoutGotoThen = "E128";
+inline constexpr const char* kWhileWithoutDo = "E129";
+inline constexpr const char* kBadLoopNumber = "E130";         // {0}=number
+inline constexpr const char* kExpectedAssignment = "E131";    // {0}=text
 inline constexpr const char* kTooManyDiagnostics = "E199";  // {0}=limit
 
 // E2nn block rule nn of SPEC 5 (E213, stock size, belongs to the io module)
@@ -53,6 +64,19 @@ inline constexpr const char* kDwellTwice = "E307";          // {0}=first {1}=sec
 inline constexpr const char* kDwellWithAxis = "E308";       // {0}=word
 inline constexpr const char* kG28WithoutAxes = "E309";
 
+// E4xx program flow (subprograms and macro B), checked before the run
+inline constexpr const char* kDoWithoutEnd = "E401";          // {0}=loop number
+inline constexpr const char* kEndWithoutDo = "E402";          // {0}=loop number
+inline constexpr const char* kGotoNowhere = "E403";           // {0}=word {1}=N number
+inline constexpr const char* kProgramNotFound = "E404";       // {0}=word {1}=O number
+inline constexpr const char* kLocalTargetMissing = "E405";    // {0}=word {1}=N number
+inline constexpr const char* kBadMacroArgument = "E406";      // {0}=word {1}=letter
+inline constexpr const char* kMacroNotInDialect = "E407";     // {0}=word
+inline constexpr const char* kLoopsTooDeep = "E408";          // {0}=loop number
+inline constexpr const char* kLoopsCross = "E409";            // {0}=END word {1}=DO line
+inline constexpr const char* kReadOnlyVariable = "E410";      // {0}=variable
+inline constexpr const char* kCallsTooDeep = "E411";          // {0}=word {1}=limit
+
 // W1xx warnings
 inline constexpr const char* kMachineSpecificM = "W101";    // {0}=word
 inline constexpr const char* kG28NoMotion = "W102";
@@ -72,6 +96,28 @@ inline constexpr const char* kAll[] = {
     kMisplacedTapeMark,
     kTextAfterTapeMark,
     kTooManyLexicalErrors,
+    kMacroUnclosedBracket,
+    kMacroExpectedValue,
+    kMacroUnknownWord,
+    kMacroExpectedBracket,
+    kMacroBadVariable,
+    kMacroTooDeep,
+    kStatementNotAlone,
+    kIfWithoutGotoThen,
+    kWhileWithoutDo,
+    kBadLoopNumber,
+    kExpectedAssignment,
+    kDoWithoutEnd,
+    kEndWithoutDo,
+    kGotoNowhere,
+    kProgramNotFound,
+    kLocalTargetMissing,
+    kBadMacroArgument,
+    kMacroNotInDialect,
+    kLoopsTooDeep,
+    kLoopsCross,
+    kReadOnlyVariable,
+    kCallsTooDeep,
     kOutOfRange,
     kTooManyDecimals,
     kNotPositive,

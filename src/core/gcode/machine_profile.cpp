@@ -64,6 +64,8 @@ constexpr MachineProfile kProfiles[] = {
         .cycleForm = CycleForm::TwoBlock,
         .unknownMIsWarning = true,
         .cycles = kFanucCycles,
+        // Fanuc 0i-TF manual: subprograms nest 10 deep, macro calls 5; M98 P packs the repeats.
+        .flow = {.macroB = true, .packedRepeats = true, .maxSubprogramNesting = 10, .maxMacroNesting = 5},
     },
     {
         .dialect = Dialect::Haas,
@@ -91,6 +93,8 @@ constexpr MachineProfile kProfiles[] = {
         .cycleForm = CycleForm::OneBlock,
         .unknownMIsWarning = true,
         .cycles = kHaasCycles,
+        // Haas lathe manual: 5-digit O numbers, so P is the program and L the repeats.
+        .flow = {.macroB = true, .packedRepeats = false, .maxSubprogramNesting = 10, .maxMacroNesting = 5},
     },
     {
         .dialect = Dialect::Classic,
@@ -118,6 +122,8 @@ constexpr MachineProfile kProfiles[] = {
         .cycleForm = CycleForm::TwoBlock,
         .unknownMIsWarning = false,
         .cycles = kFanucCycles,
+        // The 1999 rules: M98/M99 only, no macros.
+        .flow = {.macroB = false, .packedRepeats = true, .maxSubprogramNesting = 10, .maxMacroNesting = 0},
     },
 };
 

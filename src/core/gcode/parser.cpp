@@ -4,6 +4,7 @@
 #include "klueng/core/gcode/parser.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cstdint>
 #include <cstring>
@@ -11,6 +12,7 @@
 #include <string>
 
 #include "diagnostic_codes.h"
+#include "klueng/core/gcode/macro.h"
 
 namespace klueng::core::gcode {
 
@@ -56,14 +58,15 @@ double parseUnsigned(std::string_view digits, std::size_t digitCount, std::size_
 
 class LineParser {
  public:
-  LineParser(Program& program, std::size_t& diagnosticBudget)
-      : program_(program), budget_(diagnosticBudget) {}
+  LineParser(Program& program, std::size_t& diagnosticBudget, int file)
+      : program_(program), budget_(diagnosticBudget), file_(file) {}
 
   void parseLine(std::string_view line, int lineNumber) {
     line_ = line;
     lineNumber_ = lineNumber;
     Block block;
     block.line = lineNumber;
+    block.file = file_;
     words_.clear();
     bool sawWordOrSkip = false;  // '/' is block skip only before the first word
     bool tapeLine = false;
@@ -96,6 +99,30 @@ class LineParser {
       } else if (c == ';') {
         appendComment(block, line.substr(i + 1));
         i = line.size();
+      } else if (block.statement.kind == StatementKind::None && isLetter(c) && i + 1 < line.size() &&
+                 isLetter(static_cast<unsigned char>(line[i + 1])) && startsStatement(line.substr(i))) {
+        // IF / WHILE / GOTO / DO / END: a macro statement to the end of the line.
+        col = lexStatement(block, i, col);
+        sawWordOrSkip = true;
+      } else if (block.statement.kind == StatementKind::None && c == '#') {
+        col = lexAssignment(block.statement, i, col, false);
+        sawWordOrSkip = true;
+      } else if (c == ',' && i + 1 < line.size() && isLetter(static_cast<unsigned char>(line[i + 1]))) {
+        // ',C' ',R' ',A': chamfer, corner radius and angle words of G01.
+        if (words_.size() == codes::kMaxWordsPerBlock) {
+          report(codes::kBlockTooLong, col, 0, {std::to_string(codes::kMaxWordsPerBlock)});
+          break;
+        }
+        ++i;
+        const std::size_t before = words_.size();
+        col = lexWord(i, col + 1) ;
+        if (words_.size() > before) {
+          Word& w = words_.back();
+          w.comma = true;
+          w.range.column -= 1;
+          w.range.length += 1;
+        }
+        sawWordOrSkip = true;
       } else if (isLetter(c)) {
         if (words_.size() == codes::kMaxWordsPerBlock) {
           report(codes::kBlockTooLong, col, 0, {std::to_string(codes::kMaxWordsPerBlock)});
@@ -153,6 +180,16 @@ class LineParser {
         report(code, startCol, col - startCol, {std::string(run.substr(0, first))});
       }
     }
+    if (block.statement.kind != StatementKind::None) {
+      // Only an N word may share the block with a statement.
+      for (std::size_t k = 0; k < words_.size(); ++k)
+        if (words_[k].letter != 'N' || k != 0)
+          report(codes::kStatementNotAlone, words_[k].range.column, words_[k].range.length, {words_[k].text()});
+      if (!words_.empty() && words_[0].letter == 'N') block.words.push_back(std::move(words_[0]));
+      for (const Word& w : block.words) block.hasExpressions |= w.expr >= 0;
+      program_.blocks.push_back(std::move(block));
+      return;
+    }
     if (words_.empty()) return;
     if (tapeLine) {
       // Words after '%' are reported, not run: the line is a tape mark.
@@ -161,12 +198,14 @@ class LineParser {
       return;
     }
     block.words.assign(std::make_move_iterator(words_.begin()), std::make_move_iterator(words_.end()));
+    for (const Word& w : block.words) block.hasExpressions |= w.expr >= 0;
     program_.blocks.push_back(std::move(block));
   }
 
  private:
   Program& program_;
   std::size_t& budget_;
+  int file_ = 0;
   std::string_view line_;
   int lineNumber_ = 0;
   // Words of the current line; reused so each block gets one exact allocation.
@@ -184,11 +223,11 @@ class LineParser {
     if (budget_ == 0) return;
     if (--budget_ == 0) {
       program_.lexicalDiagnostics.push_back(
-          Diagnostic{Severity::Error, codes::kTooManyLexicalErrors, {lineNumber_, column, 0}, {}});
+          Diagnostic{Severity::Error, codes::kTooManyLexicalErrors, {lineNumber_, column, 0, file_}, {}});
       return;
     }
     program_.lexicalDiagnostics.push_back(
-        Diagnostic{Severity::Error, code, {lineNumber_, column, length}, std::move(args)});
+        Diagnostic{Severity::Error, code, {lineNumber_, column, length, file_}, std::move(args)});
   }
 
   // Reads letter + number at line_[i]; returns the column after the word.
@@ -197,6 +236,7 @@ class LineParser {
     const char letter = colon ? 'O' : static_cast<char>(line_[i] & ~0x20);  // upper case
     const std::size_t start = i;
     ++i;
+    if (startsAddressExpression(i)) return lexAddressExpression(letter, start, i, col);
     const std::size_t numberStart = i;
     while (i < line_.size() && isNumberChar(static_cast<unsigned char>(line_[i]))) ++i;
     const std::string_view number = line_.substr(numberStart, i - numberStart);
@@ -232,20 +272,220 @@ class LineParser {
     w.number.assign(number);
     w.hasDecimalPoint = point;
     w.decimals = static_cast<int>(fracDigits);
-    w.range = SourceRange{lineNumber_, col, length};
+    w.range = SourceRange{lineNumber_, col, length, file_};
     const double v = parseUnsigned(number.substr(intStart), intDigits + fracDigits, fracDigits);
     w.value = number[0] == '-' ? -v : v;
     return col + length;
+  }
+
+  // ---- custom macro B ------------------------------------------------------
+
+  static bool startsWithKeyword(std::string_view s, std::string_view keyword) {
+    if (s.size() < keyword.size()) return false;
+    for (std::size_t k = 0; k < keyword.size(); ++k)
+      if (std::toupper(static_cast<unsigned char>(s[k])) != keyword[k]) return false;
+    return s.size() == keyword.size() || !isLetter(static_cast<unsigned char>(s[keyword.size()]));
+  }
+
+  static bool startsStatement(std::string_view s) {
+    return startsWithKeyword(s, "IF") || startsWithKeyword(s, "WHILE") || startsWithKeyword(s, "GOTO") ||
+           startsWithKeyword(s, "DO") || startsWithKeyword(s, "END");
+  }
+
+  bool startsAddressExpression(std::size_t i) const {
+    if (i >= line_.size()) return false;
+    char c = line_[i];
+    if ((c == '-' || c == '+') && i + 1 < line_.size()) c = line_[i + 1];
+    return c == '#' || c == '[';
+  }
+
+  // Stores an expression; returns its index, or -1 (reported) when it does not read.
+  int readInto(std::size_t& i, int& col, ExprForm form) {
+    Expression e;
+    const ExprReadResult r = readExpression(line_.substr(i), col, form, e);
+    if (!r.ok) {
+      report(r.code, r.errorColumn, 1, r.args);
+      // Skip to a comment or the end of the line so one mistake gives one message.
+      while (i < line_.size() && line_[i] != '(' && line_[i] != ';') {
+        ++i;
+        ++col;
+      }
+      return -1;
+    }
+    e.range.line = lineNumber_;
+    e.range.file = file_;
+    i += r.end;
+    col += static_cast<int>(r.end);
+    program_.expressions.push_back(std::move(e));
+    return static_cast<int>(program_.expressions.size() - 1);
+  }
+
+  void skipBlanks(std::size_t& i, int& col) const {
+    while (i < line_.size() && isBlank(static_cast<unsigned char>(line_[i]))) {
+      ++i;
+      ++col;
+    }
+  }
+
+  // X#101, Z-[#1+2.]: an address whose value is an expression.
+  int lexAddressExpression(char letter, std::size_t start, std::size_t& i, int col) {
+    int c = col + 1;
+    const std::size_t exprStart = i;
+    const int index = readInto(i, c, ExprForm::Address);
+    if (index < 0) return c;
+    Word& w = words_.emplace_back();
+    w.letter = letter;
+    w.number.assign(line_.substr(exprStart, i - exprStart));
+    w.expr = index;
+    w.hasDecimalPoint = true;
+    w.range = SourceRange{lineNumber_, col, c - col, file_};
+    return c;
+  }
+
+  // #i = expr (at '#'). In an IF ... THEN, `then` is set.
+  int lexAssignment(Statement& st, std::size_t& i, int col, bool then) {
+    const std::size_t start = i;
+    const int startCol = col;
+    ++i;
+    ++col;
+    const int target = readInto(i, col, ExprForm::Variable);
+    if (target < 0) return col;
+    skipBlanks(i, col);
+    if (i >= line_.size() || line_[i] != '=') {
+      report(codes::kExpectedAssignment, startCol, col - startCol, {std::string(line_.substr(start, i - start))});
+      i = line_.size();
+      return col;
+    }
+    ++i;
+    ++col;
+    const int value = readInto(i, col, ExprForm::Full);
+    if (value < 0) return col;
+    if (!then) st.kind = StatementKind::Assign;
+    st.target = target;
+    st.value = value;
+    if (!then) st.range = SourceRange{lineNumber_, startCol, 1, file_};
+    return col;
+  }
+
+  // The loop number after DO / END: 1, 2 or 3 (a missing number reads as 1, as on the 0i).
+  int loopNumber(std::size_t& i, int& col) {
+    skipBlanks(i, col);
+    const std::size_t start = i;
+    while (i < line_.size() && isDigit(static_cast<unsigned char>(line_[i]))) ++i;
+    col += static_cast<int>(i - start);
+    if (i == start) return 1;
+    const std::string digits(line_.substr(start, i - start));
+    const int n = digits.size() > 3 ? 999 : std::stoi(digits);
+    if (n < 1 || n > 3) {
+      report(codes::kBadLoopNumber, col - static_cast<int>(i - start), static_cast<int>(i - start), {digits});
+      return 0;
+    }
+    return n;
+  }
+
+  int lexStatement(Block& block, std::size_t& i, int col) {
+    Statement& st = block.statement;
+    const std::size_t start = i;
+    const int startCol = col;
+    auto keyword = [&](std::string_view k) {
+      skipBlanks(i, col);
+      if (!startsWithKeyword(line_.substr(i), k)) return false;
+      i += k.size();
+      col += static_cast<int>(k.size());
+      return true;
+    };
+    auto gotoTarget = [&]() {
+      skipBlanks(i, col);
+      // GOTO n, GOTO #1, GOTO [#1+10]
+      if (i < line_.size() && (line_[i] == '#' || line_[i] == '[')) return readInto(i, col, ExprForm::Full);
+      const std::size_t s0 = i;
+      while (i < line_.size() && isDigit(static_cast<unsigned char>(line_[i]))) ++i;
+      if (i == s0) {
+        report(codes::kMacroExpectedValue, col, 1, {i < line_.size() ? std::string(1, line_[i]) : "end of line"});
+        i = line_.size();
+        return -1;
+      }
+      Expression e;
+      e.code.push_back(ExprToken{ExprOp::Constant, static_cast<double>(std::stoll(std::string(line_.substr(s0, std::min<std::size_t>(i - s0, 9)))))});
+      e.range = SourceRange{lineNumber_, col, static_cast<int>(i - s0), file_};
+      col += static_cast<int>(i - s0);
+      program_.expressions.push_back(std::move(e));
+      return static_cast<int>(program_.expressions.size() - 1);
+    };
+    auto condition = [&](const char* name) {
+      skipBlanks(i, col);
+      if (i >= line_.size() || line_[i] != '[') {
+        report(codes::kMacroExpectedBracket, col, 1, {name});
+        i = line_.size();
+        return -1;
+      }
+      return readInto(i, col, ExprForm::Full);
+    };
+    if (keyword("IF")) {
+      st.kind = StatementKind::If;
+      st.range = SourceRange{lineNumber_, startCol, 2, file_};
+      st.condition = condition("IF");
+      if (st.condition < 0) return col;
+      if (keyword("GOTO")) {
+        st.value = gotoTarget();
+      } else if (keyword("THEN")) {
+        st.then = true;
+        skipBlanks(i, col);
+        if (i < line_.size() && line_[i] == '#') {
+          lexAssignment(st, i, col, true);
+          col = startCol + static_cast<int>(i - start);
+        } else {
+          report(codes::kIfWithoutGotoThen, startCol, 2, {});
+          i = line_.size();
+        }
+      } else {
+        report(codes::kIfWithoutGotoThen, startCol, 2, {});
+        i = line_.size();
+      }
+    } else if (keyword("WHILE")) {
+      st.kind = StatementKind::While;
+      st.range = SourceRange{lineNumber_, startCol, 5, file_};
+      st.condition = condition("WHILE");
+      if (st.condition < 0) return col;
+      if (keyword("DO")) {
+        st.loop = loopNumber(i, col);
+      } else {
+        report(codes::kWhileWithoutDo, startCol, 5, {});
+        i = line_.size();
+      }
+    } else if (keyword("GOTO")) {
+      st.kind = StatementKind::Goto;
+      st.range = SourceRange{lineNumber_, startCol, 4, file_};
+      st.value = gotoTarget();
+    } else if (keyword("DO")) {
+      st.kind = StatementKind::Do;
+      st.range = SourceRange{lineNumber_, startCol, 2, file_};
+      st.loop = loopNumber(i, col);
+    } else if (keyword("END")) {
+      st.kind = StatementKind::End;
+      st.range = SourceRange{lineNumber_, startCol, 3, file_};
+      st.loop = loopNumber(i, col);
+    }
+    // Whatever follows the statement (but a comment) is reported once.
+    skipBlanks(i, col);
+    if (i < line_.size() && line_[i] != '(' && line_[i] != ';') {
+      std::size_t e = i;
+      while (e < line_.size() && line_[e] != '(' && line_[e] != ';') ++e;
+      report(codes::kStatementNotAlone, col, static_cast<int>(e - i), {std::string(line_.substr(i, std::min<std::size_t>(e - i, 20)))});
+      col += static_cast<int>(e - i);
+      i = e;
+    }
+    return col;
   }
 };
 
 }  // namespace
 
-Program parse(std::string_view text, int firstLine) {
+Program parse(std::string_view text, int firstLine, int file) {
   Program program;
   program.firstLine = firstLine;
   std::size_t budget = codes::kMaxLexicalDiagnostics;
-  LineParser parser(program, budget);
+  LineParser parser(program, budget, file);
 
   // One reservation instead of repeated regrowth; a block needs at least a
   // few bytes, which bounds the guess for files of blank lines.

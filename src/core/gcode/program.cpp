@@ -4,15 +4,33 @@ namespace klueng::core::gcode {
 
 const Word* Block::find(char letter) const {
   for (const Word& w : words)
-    if (w.letter == letter) return &w;
+    if (w.letter == letter && !w.comma) return &w;
+  return nullptr;
+}
+
+const Word* Block::findComma(char letter) const {
+  for (const Word& w : words)
+    if (w.letter == letter && w.comma) return &w;
   return nullptr;
 }
 
 std::vector<const Word*> Block::all(char letter) const {
   std::vector<const Word*> out;
   for (const Word& w : words)
-    if (w.letter == letter) out.push_back(&w);
+    if (w.letter == letter && !w.comma) out.push_back(&w);
   return out;
+}
+
+int programNumberAt(const Program& program, int index) {
+  if (index < 0 || index >= static_cast<int>(program.blocks.size())) return 0;
+  const int file = program.blocks[static_cast<std::size_t>(index)].file;
+  for (int i = index; i >= 0; --i) {
+    const Block& b = program.blocks[static_cast<std::size_t>(i)];
+    if (b.file != file) break;
+    if (!b.words.empty() && b.words.front().letter == 'O' && b.words.front().expr < 0)
+      return b.words.front().code();
+  }
+  return 0;
 }
 
 }  // namespace klueng::core::gcode

@@ -53,6 +53,9 @@ class TimelineBuilder final : public MachineSink {
     mv.kind = MoveKind::Dwell;
     mv.line = d.line;
     mv.blockIndex = d.blockIndex;
+    mv.file = d.file;
+    mv.callLevel = d.callLevel;
+    mv.program = d.program;
     mv.tStart = time_;
     mv.tEnd = time_ + d.seconds;
     mv.path = Segment::line(position_, position_);
@@ -88,6 +91,9 @@ class TimelineBuilder final : public MachineSink {
     mv.kind = m.kind;
     mv.line = m.line;
     mv.blockIndex = m.blockIndex;
+    mv.file = m.file;
+    mv.callLevel = m.callLevel;
+    mv.program = m.program;
     mv.tStart = time_;
     mv.tEnd = time_ + seconds;
     mv.path = path;

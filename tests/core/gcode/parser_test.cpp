@@ -215,17 +215,23 @@ INSTANTIATE_TEST_SUITE_P(
                       LexCase{"X-", "E103", 1, 2, "X-"},              // sign without digits
                       LexCase{"X.", "E103", 1, 2, "X."},              // point without digits
                       LexCase{"X1-2", "E103", 1, 4, "X1-2"},          // sign in the middle
-                      LexCase{"G01 # X1.", "E104", 5, 1, "#"},        // unknown character
+                      LexCase{"G01 # X1.", "E125", 5, 1, "#"},        // '#' without a variable number
+                      LexCase{"G01 X[#1+2.", "E121", 6, 1, nullptr},  // unclosed bracket
+                      LexCase{"G01 X#1 Z[#2 PLUS 1]", "E123", 14, 1, "PLUS"},
+                      LexCase{"#1=SIN 30.", "E124", 4, 1, "SIN"},
+                      LexCase{"WHILE [#1 LT 3] DO 4", "E130", 20, 1, "4"},
+                      LexCase{"IF [#1 EQ 0] X1.", "E128", 1, 2, nullptr},
                       LexCase{"G01 X20. @", "E104", 10, 1, "@"},
                       LexCase{"G01 X20. ===", "E104", 10, 3, "="},    // a run of unknown characters
                       LexCase{"G01 X20. (open", "E105", 10, 5, nullptr},
                       LexCase{"G01 X20. []", "E104", 10, 2, "["}));
 
 TEST(Parser, EveryErrorOfALineIsReported) {
-  const Program p = parse("X Y. #Z1.2.3 (x");
+  const Program p = parse("X Y. @Z1.2.3 #Z (x");
   std::vector<std::string> codes;
   for (const auto& d : p.lexicalDiagnostics) codes.push_back(d.code + "@" + std::to_string(d.range.column));
-  EXPECT_THAT(codes, ElementsAre("E101@1", "E103@3", "E104@6", "E103@7", "E105@14"));
+  // '#' starts a macro statement; its error skips to the comment.
+  EXPECT_THAT(codes, ElementsAre("E101@1", "E103@3", "E104@6", "E103@7", "E125@14", "E105@17"));
 }
 
 // ---- bad input never crashes ------------------------------------------------
@@ -294,10 +300,18 @@ TEST(ParserRobustness, TenMegabyteCommentBeforeAWord) {
 }
 
 TEST(ParserRobustness, TenMegabyteSingleLineOfJunk) {
-  const std::string junk(10'000'000, '#');
+  const std::string junk(10'000'000, '@');
   const Program p = parse(junk);
   ASSERT_EQ(p.lexicalDiagnostics.size(), 1u);
   EXPECT_EQ(p.lexicalDiagnostics[0].range, (SourceRange{1, 1, 10'000'000}));
+}
+
+TEST(ParserRobustness, TenMegabytesOfHashesAreOneMacroError) {
+  // '##...#' nests variable references: refused past the depth limit, no stack overflow.
+  const Program p = parse(std::string(10'000'000, '#'));
+  ASSERT_EQ(p.lexicalDiagnostics.size(), 1u);
+  EXPECT_EQ(p.lexicalDiagnostics[0].code, "E126");
+  EXPECT_EQ(p.lexicalDiagnostics[0].range.line, 1);
 }
 
 TEST(ParserRobustness, TenMegabyteNumberAndComment) {

@@ -62,6 +62,14 @@ struct CycleSettings {
   DrillR drillR;
 };
 
+// Program flow (issue 9): subprograms and custom macro B.
+struct FlowSettings {
+  bool macroB;                // #variables, expressions, IF/WHILE/GOTO, G65/G66
+  bool packedRepeats;         // M98 P31000 = 3 x O1000 (Fanuc); Haas reads P as the program number
+  int maxSubprogramNesting;   // M98/M97 levels below the main program
+  int maxMacroNesting;        // G65/G66 levels
+};
+
 struct MachineProfile {
   Dialect dialect;
   std::string_view id;       // "fanuc", "haas", "classic" (CLI, settings)
@@ -95,6 +103,7 @@ struct MachineProfile {
   CycleForm cycleForm;
   bool unknownMIsWarning;    // an M code outside the table: W101 (true) or E115 (false)
   CycleSettings cycles;      // defaults of the cycles (one-block forms, drilling)
+  FlowSettings flow;
 };
 
 // The row of a dialect.

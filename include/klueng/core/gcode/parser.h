@@ -13,6 +13,10 @@ namespace klueng::core::gcode {
 // Never throws. Lexical errors (E101-E109, E120) go to lexicalDiagnostics;
 // they stop at 2,000 (E109), and a block keeps at most 1,000 words (E120), so
 // memory stays bounded on junk such as a 10 MB single line.
-Program parse(std::string_view text, int firstLine = 1);
+// file: the Program::files index the text belongs to (set on blocks and ranges).
+// Macro B (issue 9): an address may hold an expression (X#101, Z-[#1+2.]) and
+// a line may be a statement (#1=..., IF, WHILE/DO, END, GOTO); ',C' ',R' ',A'
+// read as comma words.
+Program parse(std::string_view text, int firstLine = 1, int file = 0);
 
 }  // namespace klueng::core::gcode

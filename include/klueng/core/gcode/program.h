@@ -1,6 +1,7 @@
 #pragma once
 // The parsed program: blocks of words, each with its source range. No modal
 // knowledge lives here (that is the interpreter's job).
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -13,11 +14,15 @@ struct Word {
   char letter = 0;          // upper-case address letter, 'A'..'Z'
   bool hasDecimalPoint = false;
   bool colon = false;       // an ISO ':' program number (":0100"), stored as letter 'O'
+  bool comma = false;       // a Fanuc ',C' ',R' ',A' word (chamfer, corner radius, angle) on G01
   int decimals = 0;         // digits after the decimal point
   double value = 0.0;       // numeric value as written (mm or inch, diameters for X/U)
   std::string number;       // the number exactly as written ("01", "-.5", "25.")
                             // (an O word written ':0100' has colon set and number "0100")
   SourceRange range;        // covers letter and number
+  int expr = -1;            // macro B: index into Program::expressions when the value is an
+                            // expression (X#101, Z-[#1+2.]); value is 0 then and number holds
+                            // the expression as written ("#101", "-[#1+2.]")
 
   // Integer code of a G/M/T/N/O word ("G01" -> 1). Only meaningful when
   // !hasDecimalPoint; G-code numbers like "G1.5" are reported by the checker.
@@ -26,13 +31,61 @@ struct Word {
   std::string text() const { return (colon ? ':' : letter) + number; }
 };
 
+// Custom macro B statements (Fanuc 0i-TF manual, custom macro chapter; Haas
+// reads the same). A statement block holds only its statement (and an N word).
+enum class StatementKind : std::uint8_t {
+  None,    // an NC block
+  Assign,  // #i = expr              (target: the variable number, value: the value)
+  Goto,    // GOTO n                 (value: the sequence number)
+  If,      // IF [c] GOTO n          (condition, value)
+           // IF [c] THEN #i = expr  (condition, then, target, value)
+  While,   // WHILE [c] DO m         (condition, loop)
+  Do,      // DO m without WHILE: an endless loop until GOTO leaves it (loop)
+  End,     // END m                  (loop)
+};
+
+struct Statement {
+  StatementKind kind = StatementKind::None;
+  bool then = false;     // IF ... THEN assignment (else IF ... GOTO)
+  int loop = 0;          // DO m / END m identifier (1-3)
+  int condition = -1;    // expression index (Program::expressions)
+  int target = -1;       // expression index of the variable number: #[#1+100] = ...
+  int value = -1;        // expression index of the value or the GOTO target
+  SourceRange range;     // the keyword (or the '#' of an assignment)
+};
+
+// Macro expressions, compiled to postfix when the line is read.
+enum class ExprOp : std::uint8_t {
+  Constant,   // push value
+  Variable,   // pop n, push #n
+  Negate, Plus,
+  Add, Sub, Mul, Div, Mod, And, Or, Xor,
+  Eq, Ne, Gt, Ge, Lt, Le,
+  Sin, Cos, Tan, Asin, Acos, Atan, Atan2, Sqrt, Abs, Round, Fix, Fup, Ln, Exp, Pow, Bin, Bcd,
+};
+
+struct ExprToken {
+  ExprOp op = ExprOp::Constant;
+  double value = 0.0;    // Constant only
+};
+
+struct Expression {
+  std::vector<ExprToken> code;   // postfix
+  SourceRange range;             // the expression as written
+};
+
 struct Block {
   int line = 0;                 // 1-based line in the file
   bool blockSkip = false;       // started with '/'
   std::vector<Word> words;      // in source order
   std::string comment;          // text of ( ) and ; comments, joined by a space
+  Statement statement;          // a macro statement (kind None for an NC block)
+  bool hasExpressions = false;  // some word's value is an expression (evaluated when the block runs)
+  int file = 0;                 // Program::files index: 0 = the program itself, else a subprogram file
 
+  // The first word of a letter (comma words ',C' excluded: findComma).
   const Word* find(char letter) const;
+  const Word* findComma(char letter) const;
   bool has(char letter) const { return find(letter) != nullptr; }
   // Every G (or M) code word of the block, in source order.
   std::vector<const Word*> all(char letter) const;
@@ -43,6 +96,14 @@ struct Program {
   std::vector<Diagnostic> lexicalDiagnostics;  // errors found while reading the text
   int firstLine = 1;            // file line of the first G-code line
   int lineCount = 0;            // number of G-code lines read
+  std::vector<Expression> expressions;  // macro expressions of every block (Word::expr, Statement)
+  // Subprogram files appended after the program's own blocks (io/subprogram_files.h):
+  // files[0] is the program itself (empty name); files[i] the path of file i.
+  std::vector<std::string> files{std::string()};
 };
+
+// The O number whose program contains block `index` (the nearest O word at or
+// before it within the same file); 0 when none.
+int programNumberAt(const Program& program, int index);
 
 }  // namespace klueng::core::gcode

@@ -34,6 +34,9 @@ struct MotionCall {
   double lead = 0.0;               // Thread: mm/rev
   int line = 0;
   int blockIndex = 0;
+  int file = 0;                    // as StateSnapshot: file, call level, O number
+  int callLevel = 0;
+  int program = 0;
   SourceRange where;               // the word an alarm about this move points at
   MotionContext ctx;
   bool compensated = false;        // set by the compensation stage
@@ -43,6 +46,9 @@ struct DwellCall {
   double seconds = 0.0;
   int line = 0;
   int blockIndex = 0;
+  int file = 0;
+  int callLevel = 0;
+  int program = 0;
   MotionContext ctx;
 };
 

@@ -48,6 +48,10 @@ struct MachineState {
 struct StateSnapshot {
   int line = 0;                 // block's file line
   int blockIndex = 0;           // index into Program::blocks
+  int file = 0;                 // Program::files index of the block (0 = the program itself)
+  int callStack = 0;            // Timeline::flow.stacks index: the call stack while the block ran
+  int callLevel = 0;            // 0 = main program, 1 = first subprogram or macro level ...
+  int program = 0;              // O number of the program the block belongs to (0 = none)
   double time = 0.0;            // seconds when the block has finished
   int moveEnd = 0;              // Timeline::moves index one past the block's last move
   ModalState modal;

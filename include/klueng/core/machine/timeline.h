@@ -7,6 +7,7 @@
 
 #include "klueng/core/comp/segment.h"
 #include "klueng/core/diagnostic.h"
+#include "klueng/core/machine/flow.h"
 #include "klueng/core/machine/state.h"
 
 namespace klueng::core::machine {
@@ -17,6 +18,9 @@ struct Move {
   MoveKind kind = MoveKind::Line;
   int line = 0;              // source file line of the block
   int blockIndex = 0;
+  int file = 0;              // Program::files index of the block
+  int callLevel = 0;         // 0 = main program
+  int program = 0;           // O number of the program the block belongs to
   double tStart = 0.0;       // seconds
   double tEnd = 0.0;
   Segment path;              // controlled point (imaginary tip), work coords, (z, x radius);
@@ -36,6 +40,7 @@ struct Timeline {
   std::vector<Move> moves;
   std::vector<StateSnapshot> snapshots;   // one per executed block, in execution order
   std::optional<Diagnostic> alarm;        // the alarm that stopped the run, if any
+  FlowLog flow;                           // call stacks and macro variables (flow.h)
   double cycleTime() const { return moves.empty() ? 0.0 : moves.back().tEnd; }
   // Position of the controlled point at time t (clamped to [0, cycleTime]).
   Vec2 positionAt(double t) const;
