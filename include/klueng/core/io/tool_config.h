@@ -77,6 +77,11 @@ struct MachineConfig {
   // the through-hole of a 160 mm three-jaw chuck on a school lathe; 0 = none.
   double spindleBore = 40.0;
   int turretStations = 12;       // tool stations on the turret, 1..24
+  // A program that loops without end stops with an alarm (issue 9): after this
+  // many blocks run again by a loop, a jump or a call (max_blocks), or after
+  // this much simulated machining time in seconds (max_run_time).
+  int maxBlocks = 500000;
+  double maxRunTime = 36000.0;
 };
 
 // Line n = bitmap of station n (empty line = no bitmap), or `library:ID`; at

@@ -1,5 +1,6 @@
 #pragma once
 // Runs a checked Program into a Timeline (SPEC 6-10).
+#include <map>
 #include <optional>
 
 #include "klueng/core/gcode/code_table.h"
@@ -17,6 +18,10 @@ struct RunOptions {
   bool stopAtM00 = false;      // false: a headless run records the stop and continues
   // Units before any G20/G21 (CLI --units, the GUI setting); nullopt = the dialect's.
   std::optional<gcode::InputUnits> powerOnUnits;
+  // Custom macro B: the persistent common variables #500-#999 (io/macro_variables.h
+  // keeps them in a file beside the program). The run reads them and writes
+  // its assignments back; nullptr = they start vacant and are not kept.
+  std::map<int, double>* persistentVariables = nullptr;
 };
 
 struct MachineSetup {
