@@ -420,7 +420,8 @@ case("fanuc_g18_g53_g55_g80_m42", "G18 G21 G40 G80 G99\nG55\nG50 X100. Z50.\nG53
     row("RAPID", 4, 0, 1.875, 100, 50, 100, 300, feed=8000),
 ])
 # Subprograms are not simulated yet: the run stops on M98 with A117.
-case("alarm_a117_subprogram", "G00 X10.\nM98 P1000\n", X10, alarm="program.nc:2:1: alarm A117")
+# The P of M98 comes from a variable, so only the run finds that O1000 is missing.
+case("alarm_a135_subprogram_missing", "G00 X10.\n#1=1000\nM98 P#1\n", X10, alarm="program.nc:3:1: alarm A135")
 
 
 # ---------------------------------------------------------------- canned cycles (Fanuc 0i-TF)

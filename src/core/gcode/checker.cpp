@@ -8,6 +8,7 @@
 #include <string>
 
 #include "diagnostic_codes.h"
+#include "flow_check.h"
 #include "klueng/core/gcode/word_format.h"
 
 namespace klueng::core::gcode {
@@ -80,6 +81,22 @@ class Checker {
   bool full() const { return full_; }
 
   void checkBlock(const Block& block, bool firstBlock) {
+    if (block.statement.kind != StatementKind::None) {
+      // A macro statement: its N word and the dialect (expressions are checked by the reader).
+      for (const Word& w : block.words)
+        if (w.letter == 'N' && w.expr < 0) {
+          const long long n = wholeNumber(w);
+          if (n < 1 || n > profile_.sequenceNumberMax)
+            emit(codes::kBadSequenceNumber, w, {wordText(w), "N", std::to_string(profile_.sequenceNumberMax)});
+        }
+      if (!profile_.flow.macroB) emit(codes::kMacroNotInDialect, block.statement.range, {"#"});
+      return;
+    }
+    // A macro call's block: its letters are arguments (A -> #1 ...), not addresses.
+    bool macroCall = false;
+    for (const Word& w : block.words)
+      if (w.letter == 'G' && w.expr < 0 && !w.hasDecimalPoint && (w.value == 65.0 || w.value == 66.0))
+        macroCall = profile_.flow.macroB;
     // Units apply to the whole block they appear in, then stay modal.
     for (const Word& w : block.words)
       if (w.letter == 'G') {
@@ -113,6 +130,19 @@ class Checker {
       const Word& w = block.words[static_cast<std::size_t>(i)];
       const char l = w.letter;
       if (l != 'N') ++nonNWords;
+      if (w.comma) continue;  // ,C ,R ,A: checked with the corner rules
+      if (w.expr >= 0) {
+        // X#1: the value is known when the block runs; only the letter is checked here.
+        if (!profile_.flow.macroB) emit(codes::kMacroNotInDialect, w, {wordText(w)});
+        else if (!allowed(l) && !macroCall)
+          emit(codes::kLetterNotAllowed, w, {wordText(w), std::string(1, l), letters_});
+        continue;
+      }
+      if (macroCall && l != 'G' && l != 'N' && l != 'O') {
+        if (letterMask & (1u << static_cast<std::size_t>(l - 'A'))) emit(codes::kLetterTwice, w, {std::string(1, l)});
+        letterMask |= 1u << static_cast<std::size_t>(l - 'A');
+        continue;  // an argument: any value
+      }
       if (!allowed(l)) {
         emit(codes::kLetterNotAllowed, w, {wordText(w), std::string(1, l), letters_});
         continue;
@@ -144,7 +174,8 @@ class Checker {
           const long long n = wholeNumber(w);
           if (n < 1 || n > profile_.programNumberMax)
             emit(codes::kBadSequenceNumber, w, {wordText(w), "O", std::to_string(profile_.programNumberMax)});
-          if (!(firstBlock && i == 0 && wordCount == 1)) emit(codes::kMisplacedO, w, {wordText(w)});
+          const bool alone = i == 0 && wordCount == 1;
+          if (!(alone && (firstBlock || profile_.flow.programsInOneFile))) emit(codes::kMisplacedO, w, {wordText(w)});
           break;
         }
         case 'G': case 'M': {
@@ -205,9 +236,10 @@ class Checker {
 
     // Values, once the block's codes are known: a word's kind may depend on
     // its code (Haas G83 Q0.1 is a length, Fanuc G83 Q5000 least increments).
+    if (macroCall) return;  // the arguments are the macro's to judge
     for (const Word& w : block.words) {
       if (full_) return;
-      if (allowed(w.letter)) checkValue(w, wordRow);
+      if (allowed(w.letter) && w.expr < 0 && !w.comma) checkValue(w, wordRow);
     }
 
     const auto has = [&](char l) -> const Word* {
@@ -396,13 +428,21 @@ std::vector<Diagnostic> check(const Program& program, const CheckOptions& option
   std::vector<Diagnostic> out = program.lexicalDiagnostics;
   Checker checker(options, out);
   bool first = true;
+  int file = 0;
   for (const Block& block : program.blocks) {
+    // Each subprogram file starts with its own O block.
+    if (block.file != file) {
+      file = block.file;
+      first = true;
+    }
     checker.checkBlock(block, first);
     first = false;
     if (checker.full()) break;
   }
+  if (!checker.full()) checkFlow(program, options, out);
   // Blocks come in line order, so this only reorders within a line.
   std::stable_sort(out.begin(), out.end(), [](const Diagnostic& a, const Diagnostic& b) {
+    if (a.range.file != b.range.file) return a.range.file < b.range.file;
     if (a.range.line != b.range.line) return a.range.line < b.range.line;
     return a.range.column < b.range.column;
   });

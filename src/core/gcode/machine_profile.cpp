@@ -43,7 +43,7 @@ constexpr MachineProfile kProfiles[] = {
         .id = "fanuc",
         .nameEn = "Fanuc 0i-TF",
         .nameTh = "ฟานัค 0i-TF",
-        .letters = "CFGHIKMNOPQRSTUWXZ",
+        .letters = "CFGHIKLMNOPQRSTUWXZ",
         .programNumberMax = 99999999,
         .colonProgramNumber = true,
         .sequenceNumberMax = 99999,
@@ -65,14 +65,14 @@ constexpr MachineProfile kProfiles[] = {
         .unknownMIsWarning = true,
         .cycles = kFanucCycles,
         // Fanuc 0i-TF manual: subprograms nest 10 deep, macro calls 5; M98 P packs the repeats.
-        .flow = {.macroB = true, .packedRepeats = true, .maxSubprogramNesting = 10, .maxMacroNesting = 5},
+        .flow = {.macroB = true, .packedRepeats = true, .maxSubprogramNesting = 10, .maxMacroNesting = 5, .programsInOneFile = true},
     },
     {
         .dialect = Dialect::Haas,
         .id = "haas",
         .nameEn = "Haas ST (NGC)",
         .nameTh = "ฮาส ST (NGC)",
-        .letters = "ACDEFGHIJKMNOPQRSTUWXZ",
+        .letters = "ACDEFGHIJKLMNOPQRSTUWXZ",
         .programNumberMax = 99999,
         .colonProgramNumber = false,
         .sequenceNumberMax = 99999,
@@ -94,7 +94,7 @@ constexpr MachineProfile kProfiles[] = {
         .unknownMIsWarning = true,
         .cycles = kHaasCycles,
         // Haas lathe manual: 5-digit O numbers, so P is the program and L the repeats.
-        .flow = {.macroB = true, .packedRepeats = false, .maxSubprogramNesting = 10, .maxMacroNesting = 5},
+        .flow = {.macroB = true, .packedRepeats = false, .maxSubprogramNesting = 10, .maxMacroNesting = 5, .programsInOneFile = true},
     },
     {
         .dialect = Dialect::Classic,
@@ -123,7 +123,7 @@ constexpr MachineProfile kProfiles[] = {
         .unknownMIsWarning = false,
         .cycles = kFanucCycles,
         // The 1999 rules: M98/M99 only, no macros.
-        .flow = {.macroB = false, .packedRepeats = true, .maxSubprogramNesting = 10, .maxMacroNesting = 0},
+        .flow = {.macroB = false, .packedRepeats = true, .maxSubprogramNesting = 10, .maxMacroNesting = 0, .programsInOneFile = false},
     },
 };
 

@@ -79,6 +79,7 @@ class CompensationStage final : public MachineSink {
   }
 
   bool halted() const override { return next_.halted(); }
+  double elapsed() const override { return next_.elapsed(); }
 
  private:
   enum class State { Off, Armed, Active };

@@ -19,9 +19,9 @@ using gcode::ModalGroup;
 using gcode::Phase;
 
 Interpreter::Interpreter(const gcode::Program& program, const MachineSetup& setup, const RunOptions& options,
-                         MachineSink& sink)
+                         MachineSink& sink, FlowLog* flow)
     : program_(program), setup_(setup), options_(options), profile_(gcode::machineProfile(options.dialect)),
-      sink_(sink) {
+      sink_(sink), flow_(flow), index_(program) {
   const auto& m = setup_.machine;
   pos_ = Vec2(m.startZ, m.startX / 2.0);
   mach_.position = pos_;
@@ -29,23 +29,6 @@ Interpreter::Interpreter(const gcode::Program& program, const MachineSetup& setu
   // Power-on units: the run option (CLI --units, the GUI setting), else the profile's.
   const gcode::InputUnits units = options.powerOnUnits.value_or(profile_.powerOnUnits);
   modal_.units = units == gcode::InputUnits::Inch ? Units::Inch : Units::Mm;
-}
-
-void Interpreter::run() {
-  sink_.setPosition(pos_);
-  for (std::size_t i = 0; i < program_.blocks.size(); ++i) {
-    const gcode::Block& b = program_.blocks[i];
-    if (b.blockSkip && options_.blockSkip) continue;
-    block_ = &b;
-    blockIndex_ = static_cast<int>(i);
-    if (!executeBlock()) break;
-    if (sink_.halted() || ended_) break;
-    if (resumeAfter_ >= 0) {  // G71-G73 skip their own profile
-      i = static_cast<std::size_t>(resumeAfter_);
-      resumeAfter_ = -1;
-    }
-  }
-  sink_.end();
 }
 
 bool Interpreter::withinTravel(const Vec2& work, const Word* where) {
@@ -95,7 +78,9 @@ bool Interpreter::executeBlock() {
   std::array<CodeWord, 16> ms{};
   std::size_t gCount = 0, mCount = 0;
   byLetter_.fill(nullptr);
+  movedThisBlock_ = false;
   for (const Word& w : block_->words) {
+    if (w.comma) continue;  // ,C ,R ,A: the corner words, not addresses
     if (w.letter >= 'A' && w.letter <= 'Z' && !byLetter_[static_cast<std::size_t>(w.letter - 'A')])
       byLetter_[static_cast<std::size_t>(w.letter - 'A')] = &w;
     if (w.letter != 'G' && w.letter != 'M') continue;
@@ -209,16 +194,28 @@ bool Interpreter::executeBlock() {
     if (!mCode(ms[mi])) return false;
   updateRpm();
 
+  if (const Word* t = find('T')) lastT_ = t->code();
+  if (const Word* n = find('N')) lastN_ = n->code();
+  if (mCount > 0) lastM_ = ms[mCount - 1].info->number;
+  emitSnapshot();
+  return true;
+}
+
+void Interpreter::emitSnapshot() {
   StateSnapshot snap;
   snap.line = block_->line;
   snap.blockIndex = blockIndex_;
+  snap.file = block_->file;
+  snap.callStack = stackId_;
+  snap.callLevel = static_cast<int>(frames_.size()) - 1;
+  snap.program = frames_.empty() ? 0 : frames_.back().program;
   snap.modal = modal_;
   snap.machine = mach_;
   snap.machine.position = pos_;
   snap.stopped = stopped_;
   sink_.blockDone(snap);
+  ++snapshots_;
   if (stopped_ && stopEndsRun_) ended_ = true;
-  return true;
 }
 
 MotionMode Interpreter::motionFor(int g) {
@@ -303,8 +300,30 @@ bool Interpreter::mCode(const CodeWord& c) {
       if (n == 1 && !options_.optionalStop) return true;
       stopped_ = true;
       stopEndsRun_ = n == 2 || n == 30 || options_.stopAtM00;
+      if (n == 2 || n == 30) partsMachined_ += 1.0;  // #3901 counts finished parts
       return true;
-    case ModalGroup::MSubprogram: return raise("A117", c.word, {wordText(*c.word)});
+    case ModalGroup::MSubprogram: {
+      // Performed after the block (interpreter_flow.cpp): M98 P L, M97 P L, M99 [P].
+      pending_ = PendingCall{};
+      pending_.kind = n == 98 ? PendingCall::Kind::Subprogram
+                      : n == 97 ? PendingCall::Kind::Local
+                                : PendingCall::Kind::Return;
+      pending_.word = c.word;
+      pending_.where = c.word->range;
+      pending_.text = wordText(*c.word);
+      const Word* p = find('P');
+      const Word* l = find('L');
+      pending_.hasP = p != nullptr;
+      const bool packed = n == 98 && profile_.flow.packedRepeats;
+      pending_.target = gcode::callTarget(p ? p->value : 0.0, l ? std::optional<double>(l->value) : std::nullopt, packed);
+      // A missing target stops the run on this block, before its snapshot.
+      if (n == 98 && pending_.target.repeats > 0 && !index_.program(pending_.target.number))
+        return raise("A135", c.word, {pending_.text, std::to_string(pending_.target.number)});
+      if (n == 97 && pending_.target.repeats > 0 &&
+          index_.findSequence(index_.sectionOf(blockIndex_), pending_.target.number, -1) < 0)
+        return raise("A136", c.word, {pending_.text, std::to_string(pending_.target.number)});
+      return true;
+    }
     default: return true;
   }
 }
@@ -416,7 +435,15 @@ void run(const gcode::Program& program, const MachineSetup& setup, const RunOpti
   const gcode::MachineProfile& profile = gcode::machineProfile(options.dialect);
   const std::optional<gcode::Program> rounded =
       roundToIncrements(program, profile, options.powerOnUnits.value_or(profile.powerOnUnits));
-  detail::Interpreter(rounded ? *rounded : program, setup, options, sink).run();
+  detail::Interpreter(rounded ? *rounded : program, setup, options, sink, nullptr).run();
+}
+
+void run(const gcode::Program& program, const MachineSetup& setup, const RunOptions& options, MachineSink& sink,
+         FlowLog& flow) {
+  const gcode::MachineProfile& profile = gcode::machineProfile(options.dialect);
+  const std::optional<gcode::Program> rounded =
+      roundToIncrements(program, profile, options.powerOnUnits.value_or(profile.powerOnUnits));
+  detail::Interpreter(rounded ? *rounded : program, setup, options, sink, &flow).run();
 }
 
 Timeline interpret(const gcode::Program& program, const MachineSetup& setup, const RunOptions& options) {
@@ -425,7 +452,7 @@ Timeline interpret(const gcode::Program& program, const MachineSetup& setup, con
   timeline.snapshots.reserve(program.blocks.size());
   auto builder = makeTimelineBuilder(timeline, TimingConfig{setup.machine.rapidX, setup.machine.rapidZ});
   auto compensation = makeCompensationStage(*builder);
-  run(program, setup, options, *compensation);
+  run(program, setup, options, *compensation, timeline.flow);
   return timeline;
 }
 

@@ -165,9 +165,7 @@ bool Interpreter::emitCycle(const std::vector<cycles::Step>& steps, const Word* 
       case cycles::StepKind::Dwell: {
         DwellCall d;
         d.seconds = s.seconds;
-        d.line = block_->line;
-        d.blockIndex = blockIndex_;
-        d.ctx = context();
+        fillDwell(d);
         sink_.dwell(d);
         break;
       }

@@ -16,6 +16,9 @@
 
 #include "klueng/core/gcode/code_table.h"
 #include "klueng/core/gcode/machine_profile.h"
+#include "klueng/core/gcode/macro.h"
+#include "klueng/core/gcode/program_index.h"
+#include "klueng/core/machine/flow.h"
 #include "klueng/core/machine/interpreter.h"
 #include "klueng/core/machine/kinematics.h"
 #include "machine/cycles.h"
@@ -23,6 +26,7 @@
 namespace klueng::core::machine::detail {
 
 using gcode::CodeInfo;
+using gcode::CallTarget;
 using gcode::Word;
 
 inline constexpr double kMmPerInch = 25.4;
@@ -42,10 +46,39 @@ struct CodeWord {
   const CodeInfo* info;
 };
 
-class Interpreter {
+// One level of program flow: the main program, a subprogram (M98), a local
+// subprogram (M97) or a macro (G65/G66) being run.
+struct FlowFrame {
+  CallFrame::Kind kind = CallFrame::Kind::Main;
+  int program = 0;       // O number
+  int section = 0;       // ProgramIndex section of the running program
+  int entry = 0;         // block index where each pass starts
+  int returnTo = -1;     // block index the caller continues at
+  int callBlock = -1;    // block index of the call (M99 P searches the caller from here)
+  int callFile = 0, callLine = 0;
+  int repeat = 1, repeats = 1;
+  int localLevel = 0;    // index into the local-variable stack
+  int localId = 0;       // FlowLog local frame id
+  std::array<int, 4> doBlock{-1, -1, -1, -1};  // the WHILE/DO block of each active loop 1-3
+  std::array<gcode::MacroValue, 33> arguments{};  // G65/G66: each pass starts with these locals
+};
+
+// A call found in an NC block, performed after the block's motion.
+struct PendingCall {
+  enum class Kind { None, Subprogram, Local, Return } kind = Kind::None;
+  const Word* word = nullptr;   // M98 / M97 / M99 (in the block being run)
+  CallTarget target;
+  bool hasP = false;            // M99 P n
+  SourceRange where;
+  std::string text;
+};
+
+class Interpreter final : public gcode::MacroVariables {
  public:
-  Interpreter(const gcode::Program& program, const MachineSetup& setup, const RunOptions& options, MachineSink& sink);
+  Interpreter(const gcode::Program& program, const MachineSetup& setup, const RunOptions& options, MachineSink& sink,
+              FlowLog* flow);
   void run();
+  bool read(int n, gcode::MacroValue& out, const char*& errorCode) override;
 
  private:
   // ---- helpers -------------------------------------------------------------
@@ -116,14 +149,27 @@ class Interpreter {
   bool movesX() const { return find('X') || find('U'); }
   bool movesZ() const { return find('Z') || find('W'); }
 
+  void fillDwell(DwellCall& d) const {
+    d.line = block_->line;
+    d.blockIndex = blockIndex_;
+    d.file = block_->file;
+    d.callLevel = static_cast<int>(frames_.size()) - 1;
+    d.program = frames_.empty() ? 0 : frames_.back().program;
+    d.ctx = context();
+  }
+
   void fillCall(MotionCall& m, const Word* where) const {
     m.line = block_->line;
     m.blockIndex = blockIndex_;
+    m.file = block_->file;
+    m.callLevel = static_cast<int>(frames_.size()) - 1;
+    m.program = frames_.empty() ? 0 : frames_.back().program;
     m.where = where ? where->range : SourceRange{block_->line, 1, 0};
     m.ctx = context();
   }
 
   void moved(const Vec2& target) {
+    movedThisBlock_ = true;
     if ((target - pos_).norm() > 1e-9) mach_.positionCheck = false;
     pos_ = target;
   }
@@ -141,6 +187,30 @@ class Interpreter {
   bool feedReady(const Word* where, const char* code);
   bool feedMove(MoveKind kind, const Segment& path, const Word* where);
   std::optional<Segment> arcTo(const Vec2& end, bool ccw, const Word* where);
+
+  void emitSnapshot();
+
+  // ---- interpreter_flow.cpp (program flow: subprograms, macro statements) -------
+  bool runBlock(int index);
+  bool statement(const gcode::Block& b);
+  bool evaluateWords(const gcode::Block& b);
+  bool evaluate(int expr, const SourceRange& at, gcode::MacroValue& out);
+  bool writeVariable(int n, gcode::MacroValue v, const SourceRange& at);
+  bool jumpTo(int n, const SourceRange& at, const std::string& text);
+  bool performCall();
+  bool macroCall(const gcode::Block& b, int g);
+  bool modalMacroCall();
+  bool callProgram(CallFrame::Kind kind, int number, int repeats, const SourceRange& at, const std::string& text,
+                   const gcode::Block* arguments);
+  double positionValue(int axis, bool machine) const;
+  bool returnFromCall(std::optional<int> sequence, const SourceRange& at, const std::string& text);
+  bool loopLimits();
+  void noteStack();
+  void setArguments(const gcode::Block& b, std::array<gcode::MacroValue, 33>& locals) const;
+  int modalCode(int group) const;
+  void matchLoops();
+  bool flowAlarm(const char* code, const SourceRange& at, std::vector<std::string> args);
+  void notice(Severity severity, const char* code, const SourceRange& at, std::vector<std::string> args);
 
   // ---- interpreter_one_shot.cpp -------------------------------------------------
   Vec2 referencePoint() const;
@@ -181,6 +251,38 @@ class Interpreter {
   bool stopped_ = false;
   bool stopEndsRun_ = false;
   bool ended_ = false;
+
+  // Program flow (interpreter_flow.cpp).
+  FlowLog* flow_ = nullptr;
+  gcode::ProgramIndex index_;
+  std::vector<FlowFrame> frames_;
+  std::vector<std::array<gcode::MacroValue, 33>> locals_;   // one per G65/G66 level (and the main's)
+  std::array<gcode::MacroValue, 100> common_{};             // #100-#199
+  std::array<gcode::MacroValue, 500> persistent_{};         // #500-#999
+  std::vector<int> loopPartner_;      // WHILE/DO block -> its END, END -> its WHILE/DO (-1 none)
+  std::vector<char> visited_;         // blocks run at least once (the endless-loop limit counts repeats)
+  long long repeatedBlocks_ = 0;
+  SourceRange lastJumpAt_;            // the last backward jump (named by the endless-loop alarm)
+  std::string lastJumpText_;
+  int next_ = 0;                      // block index to run next
+  int snapshots_ = 0;                 // snapshots emitted so far (the index of the next one)
+  int stackId_ = 0;                   // FlowLog::stacks index of the current call stack
+  int nextLocalId_ = 1;
+  bool mainRepeated_ = false;         // M99 in the main program has looped once
+  PendingCall pending_;
+  struct ModalCall {
+    bool active = false;
+    int program = 0, repeats = 1, level = 0;
+    gcode::Block arguments;
+    SourceRange where;
+    std::string text;
+  } modalCall_;
+  bool movedThisBlock_ = false;
+  gcode::Block scratch_;              // the running block with its expressions evaluated
+  double timerBase_ = 0.0;            // #3001 counts from here (ms); #3002 (hours)
+  double hourBase_ = 0.0;
+  double partsMachined_ = 0.0, partsRequired_ = 0.0;  // #3901 #3902
+  int lastT_ = 0, lastM_ = 0, lastN_ = 0;             // #4120 #4113 #4114
 };
 
 }  // namespace klueng::core::machine::detail

@@ -21,9 +21,7 @@ bool Interpreter::dwell(const Word* w) {
   else if (const Word* uw = find('U')) seconds = uw->value;
   DwellCall d;
   d.seconds = std::max(0.0, seconds);
-  d.line = block_->line;
-  d.blockIndex = blockIndex_;
-  d.ctx = context();
+  fillDwell(d);
   sink_.dwell(d);
   return true;
 }

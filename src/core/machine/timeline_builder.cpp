@@ -84,6 +84,7 @@ class TimelineBuilder final : public MachineSink {
   }
   void end() override {}
   bool halted() const override { return out_.alarm.has_value(); }
+  double elapsed() const override { return time_; }
 
  private:
   void push(const MotionCall& m, const Segment& path, double seconds, double feed) {

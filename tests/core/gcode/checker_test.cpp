@@ -105,7 +105,7 @@ INSTANTIATE_TEST_SUITE_P(
         CleanCase{"N1\nN9999 G00", In::Both}, CleanCase{"T0316", In::Both}, CleanCase{"T0100", In::Both},
         CleanCase{"T101", In::Fanuc}, CleanCase{"G1 X1.\ng01 x2.", In::Both}, CleanCase{"M3 S100", In::Both},
         CleanCase{"G76 P020060 Q50 R0.05", In::Both}, CleanCase{"G71 P100 Q200 U0.5 W0.1 F0.25", In::Both},
-        CleanCase{"M98 P1234", In::Both}, CleanCase{"M42", In::Fanuc}, CleanCase{"G54\nG53 X0. Z0.", In::Fanuc},
+        CleanCase{"M98 P1234\nM30\nO1234\nM99", In::Fanuc}, CleanCase{"M42", In::Fanuc}, CleanCase{"G54\nG53 X0. Z0.", In::Fanuc},
         // ext arc rules
         CleanCase{"G02 X20. Z-5. I2. K0.", In::Both}, CleanCase{"G03 U4. W-2. R2.", In::Both},
         CleanCase{"G02 X20. Z-5. R2.\nX22. Z-6. R1.", In::Both},
@@ -186,8 +186,10 @@ INSTANTIATE_TEST_SUITE_P(
         // rule 8
         FailCase{"N10 O0001", In::Both, "E208", 1, 5, 5},
         FailCase{"O0001 G00", In::Both, "E208", 1, 1, 5},
-        FailCase{"O0001\nO0002", In::Both, "E208", 2, 1, 5},
-        FailCase{"G00 X1.\nO0002", In::Both, "E208", 2, 1, 5},
+        // (an O block alone later in the file starts a subprogram on Fanuc and Haas)
+        FailCase{"O0001\nO0002", In::Classic, "E208", 2, 1, 5},
+        FailCase{"G00 X1.\nO0002", In::Classic, "E208", 2, 1, 5},
+        FailCase{"G00 X1.\nO0002 G00", In::Both, "E208", 2, 1, 5},
         // rule 9
         FailCase{"X30. N200", In::Both, "E209", 1, 6, 4},
         FailCase{"/G00 N5", In::Both, "E209", 1, 6, 2},

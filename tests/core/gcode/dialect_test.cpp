@@ -57,7 +57,7 @@ INSTANTIATE_TEST_SUITE_P(
         Row{"O12345678", {}, {"E116@1:1"}, {"E116@1:1"}},
         Row{"O123456789", {"E116@1:1"}, {"E116@1:1"}, {"E116@1:1"}},
         Row{":0100\nG00 X1.", {}, {"E104@1:1"}, {"E104@1:1"}},
-        Row{"G00 X1.\n:0100", {"E208@2:1"}, {"E104@2:1"}, {"E104@2:1"}},
+        Row{"G00 X1.\n:0100", {}, {"E104@2:1"}, {"E104@2:1"}},  // Fanuc: a subprogram starts
         Row{"N99999 G00", {}, {}, {"E116@1:1"}},
         Row{"N100000 G00", {"E116@1:1"}, {"E116@1:1"}, {"E116@1:1"}},
         // 2. more decimals than the least increment (Haas powers on in inch: 4 decimals)
@@ -120,8 +120,11 @@ INSTANTIATE_TEST_SUITE_P(
         Row{"M85 M86", {"W101@1:1"}, {"E204@1:5"}, {"E115@1:1"}},
         Row{"M14 M15", {"W101@1:1", "W101@1:5"}, {"E204@1:5"}, {"E115@1:1", "E115@1:5"}},
         Row{"M91", {}, {"W101@1:1"}, {}},
-        Row{"M97 P1000", {"W101@1:1"}, {}, {"E115@1:1"}},
-        Row{"M97 P1000 M98 P2000", {"W101@1:1"}, {"E204@1:11"}, {"E115@1:1"}},
+        Row{"M97 P1000\nN1000 M99", {"W101@1:1"}, {}, {"E115@1:1"}},
+        Row{"M97 P1000", {"W101@1:1"}, {"E405@1:5"}, {"E115@1:1"}},  // Haas: no N1000
+        // M97 and M98 share the one P: M98 calls O1000, which is not there.
+        Row{"M97 P1000 M98 P2000\nN1000 M99\nO2000\nM99", {"W101@1:1", "E404@1:5"}, {"E404@1:5", "E204@1:11"},
+            {"E115@1:1", "E404@1:5", "E208@3:1"}},
         Row{"M133 P2000", {"W101@1:1"}, {"W101@1:1"}, {"E115@1:1"}},
         // 10. lowercase, packed words
         Row{"n1g0x380.z300.t0101m16", {"W101@1:20"}, {"W101@1:20"}, {"E115@1:20"}},
@@ -130,7 +133,7 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(Dialects, HaasMachineCodesAreKnownByName) {
   const std::string program =
       "M10\nM11\nM12\nM13\nM14\nM15\nM19 P90\nM21\nM22\nM23\nM24\nM31\nM33\nM36\nM37\nM41\nM42\n"
-      "M59 P1103\nM69 P1103\nM85\nM86\nM88\nM89\nM95\nM97 P1000\nM98 P2000\nM99";
+      "M59 P1103\nM69 P1103\nM85\nM86\nM88\nM89\nM95\nM97 P1000\nM98 P2000\nM99\nN1000 M99\nO2000\nM99";
   EXPECT_THAT(got(program, Dialect::Haas), IsEmpty());
 }
 
@@ -205,7 +208,7 @@ TEST(Dialects, HaasMessagesNameItsLettersAndInchRanges) {
   const auto y = check(parse("Y1."), haas);
   ASSERT_EQ(y.size(), 1u);
   EXPECT_EQ(formatMessage(y[0], Lang::En),
-            "Y1.: letter Y is not a lathe word; use A C D E F G H I J K M N O P Q R S T U W X Z");
+            "Y1.: letter Y is not a lathe word; use A C D E F G H I J K L M N O P Q R S T U W X Z");
   const auto f = check(parse("F0"), haas);
   ASSERT_EQ(f.size(), 1u);
   EXPECT_EQ(formatMessage(f[0], Lang::En), "F0: F must be positive (0.0001 to 999.9999)");

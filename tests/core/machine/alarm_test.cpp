@@ -78,7 +78,7 @@ INSTANTIATE_TEST_SUITE_P(
         AlarmCase{"ArcRadiusTooSmall", "G98 G00 X20. Z0.\nG02 X30. Z-5. R3. F100\n", F, "A114", 2, 15, 1},
         AlarmCase{"G27NotAtReference", "G27 X10. Z20.\n", F, "A115", 1, 1, 0},
         AlarmCase{"ThreadSpindleStopped", "G97 S500\nG32 Z-10. F1.\n", F, "A116", 2, 1, 1},
-        AlarmCase{"SubprogramNotSupported", "M98 P1000\n", F, "A117", 1, 1, 0},
+        AlarmCase{"SubprogramMissing", "M98 P1000\n", F, "A135", 1, 1, 0},
         AlarmCase{"OffsetDoesNotExist", "G00 X10.\nT0165\n", F, "A118", 2, 1, 1},
         AlarmCase{"ThreadWithoutS", "M03\nG32 Z-10. F1.\n", F, "A119", 2, 1, 1},
         // Canned cycles (cycles_test.cpp has their motion).

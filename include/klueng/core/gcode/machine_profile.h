@@ -68,6 +68,7 @@ struct FlowSettings {
   bool packedRepeats;         // M98 P31000 = 3 x O1000 (Fanuc); Haas reads P as the program number
   int maxSubprogramNesting;   // M98/M97 levels below the main program
   int maxMacroNesting;        // G65/G66 levels
+  bool programsInOneFile;     // an O block alone may start a subprogram anywhere in a file (else first block only)
 };
 
 struct MachineProfile {

@@ -44,5 +44,8 @@ Timeline interpret(const gcode::Program& program, const MachineSetup& setup, con
 
 // The interpreter alone, emitting canonical calls to `sink` (for custom chains).
 void run(const gcode::Program& program, const MachineSetup& setup, const RunOptions& options, MachineSink& sink);
+// Same, recording the program flow (call stacks, macro variables, notices) in `flow`.
+void run(const gcode::Program& program, const MachineSetup& setup, const RunOptions& options, MachineSink& sink,
+         FlowLog& flow);
 
 }  // namespace klueng::core::machine

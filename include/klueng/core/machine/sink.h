@@ -68,6 +68,9 @@ class MachineSink {
   virtual void end() = 0;
   // True once a sink down the chain has stopped the run (an alarm).
   virtual bool halted() const = 0;
+  // Machining time so far in seconds, as far as the chain knows it (the
+  // macro timers #3001/#3002 and the endless-loop limit read it).
+  virtual double elapsed() const { return 0.0; }
 };
 
 // Nose radius compensation stage: buffers each compensated stretch (start-up

@@ -1,0 +1,208 @@
+// Program-flow rules checked before the run (issue 9; Fanuc 0i-TF manual,
+// "Subprogram" and "Custom macro"): what can be known without running —
+// loops that pair and nest, jump and call targets that exist, argument
+// letters, and call chains deeper than the control allows. Targets given as
+// expressions are checked when the program runs.
+#include "flow_check.h"
+
+#include <functional>
+#include <map>
+#include <optional>
+
+#include "diagnostic_codes.h"
+#include "klueng/core/gcode/program_index.h"
+
+namespace klueng::core::gcode {
+
+namespace {
+
+std::optional<int> constantValue(const Program& program, int expr) {
+  if (expr < 0 || expr >= static_cast<int>(program.expressions.size())) return std::nullopt;
+  const Expression& e = program.expressions[static_cast<std::size_t>(expr)];
+  if (e.code.size() != 1 || e.code[0].op != ExprOp::Constant) return std::nullopt;
+  return static_cast<int>(e.code[0].value);
+}
+
+const Word* codeWord(const Block& b, char letter, int number) {
+  for (const Word& w : b.words)
+    if (w.letter == letter && w.expr < 0 && !w.hasDecimalPoint && !w.comma && w.code() == number) return &w;
+  return nullptr;
+}
+
+const Word* constantWord(const Block& b, char letter) {
+  const Word* w = b.find(letter);
+  return w && w->expr < 0 ? w : nullptr;
+}
+
+struct Call {
+  int section;       // the calling section
+  int callee;        // the called section
+  const Word* word;  // M98 / G65 / G66
+  int block;
+};
+
+class FlowChecker {
+ public:
+  FlowChecker(const Program& program, const CheckOptions& options, std::vector<Diagnostic>& out)
+      : program_(program), profile_(machineProfile(options.dialect)), out_(out), index_(program) {}
+
+  void run() {
+    for (std::size_t s = 0; s < index_.sections().size(); ++s) checkSection(static_cast<int>(s));
+    checkDepth();
+  }
+
+ private:
+  const Program& program_;
+  const MachineProfile& profile_;
+  std::vector<Diagnostic>& out_;
+  ProgramIndex index_;
+  std::vector<Call> calls_;
+  std::vector<bool> hasConditions_;  // per section: IF/WHILE/GOTO/M99 P may end a recursion
+
+  void emit(const char* code, SourceRange range, std::vector<std::string> args) {
+    if (out_.size() >= 10000) return;
+    out_.push_back(Diagnostic{Severity::Error, code, range, std::move(args)});
+  }
+
+  void checkSection(int section) {
+    const ProgramSection& s = index_.section(section);
+    hasConditions_.resize(index_.sections().size(), false);
+    struct Open {
+      int loop;
+      int block;
+    };
+    std::vector<Open> open;
+    for (int i = s.first; i < s.end; ++i) {
+      const Block& b = program_.blocks[static_cast<std::size_t>(i)];
+      const Statement& st = b.statement;
+      switch (st.kind) {
+        case StatementKind::While:
+        case StatementKind::Do:
+          if (st.loop == 0) break;  // the lexer reported the number
+          if (open.size() >= 3) emit(codes::kLoopsTooDeep, st.range, {std::to_string(st.loop)});
+          open.push_back({st.loop, i});
+          if (st.kind == StatementKind::While) hasConditions_[static_cast<std::size_t>(section)] = true;
+          break;
+        case StatementKind::End: {
+          if (st.loop == 0) break;
+          int match = -1;
+          for (int k = static_cast<int>(open.size()) - 1; k >= 0; --k)
+            if (open[static_cast<std::size_t>(k)].loop == st.loop) {
+              match = k;
+              break;
+            }
+          if (match < 0) {
+            emit(codes::kEndWithoutDo, st.range, {std::to_string(st.loop)});
+          } else {
+            if (match != static_cast<int>(open.size()) - 1) {
+              const Open& crossed = open.back();
+              emit(codes::kLoopsCross, st.range,
+                   {"END" + std::to_string(st.loop),
+                    std::to_string(program_.blocks[static_cast<std::size_t>(crossed.block)].line)});
+            }
+            open.resize(static_cast<std::size_t>(match));
+          }
+          break;
+        }
+        case StatementKind::Goto:
+        case StatementKind::If: {
+          hasConditions_[static_cast<std::size_t>(section)] = true;
+          if (st.kind == StatementKind::If && st.then) break;
+          if (const auto n = constantValue(program_, st.value))
+            if (index_.findSequence(section, *n, i) < 0)
+              emit(codes::kGotoNowhere, st.range, {"GOTO" + std::to_string(*n), std::to_string(*n)});
+          break;
+        }
+        default: break;
+      }
+      if (st.kind == StatementKind::None) checkCalls(b, section, i);
+    }
+    for (const Open& o : open) {
+      const Block& b = program_.blocks[static_cast<std::size_t>(o.block)];
+      emit(codes::kDoWithoutEnd, b.statement.range, {std::to_string(o.loop)});
+    }
+  }
+
+  void checkCalls(const Block& b, int section, int index) {
+    const Word* p = constantWord(b, 'P');
+    const Word* lw = constantWord(b, 'L');
+    const std::optional<double> l = lw ? std::optional<double>(lw->value) : std::nullopt;
+    if (const Word* m98 = codeWord(b, 'M', 98); m98 && p) {
+      const CallTarget t = callTarget(p->value, l, profile_.flow.packedRepeats);
+      if (const ProgramSection* callee = index_.program(t.number))
+        calls_.push_back({section, static_cast<int>(callee - index_.sections().data()), m98, index});
+      else emit(codes::kProgramNotFound, p->range, {"M98 " + p->text(), std::to_string(t.number)});
+    }
+    if (const Word* m97 = codeWord(b, 'M', 97); m97 && p && findCode('M', 97, profile_.dialect)) {
+      const CallTarget t = callTarget(p->value, l, false);
+      if (index_.findSequence(section, t.number, index) < 0)
+        emit(codes::kLocalTargetMissing, p->range, {"M97 " + p->text(), std::to_string(t.number)});
+    }
+    if (const Word* m99 = codeWord(b, 'M', 99); m99 && p) hasConditions_[static_cast<std::size_t>(section)] = true;
+    const Word* g65 = codeWord(b, 'G', 65);
+    const Word* g66 = codeWord(b, 'G', 66);
+    const Word* g = g65 ? g65 : g66;
+    if (!g || !profile_.flow.macroB) return;
+    for (const Word& w : b.words) {
+      if (&w == g || w.comma) continue;
+      if (w.letter == 'G' || w.letter == 'O' || (w.letter == 'N' && &w != &b.words.front()))
+        emit(codes::kBadMacroArgument, w.range, {w.text(), std::string(1, w.letter)});
+    }
+    if (!b.find('P')) {
+      emit(codes::kProgramNotFound, g->range, {g->text(), "?"});
+    } else if (p) {
+      const CallTarget t = callTarget(p->value, l, false);
+      if (const ProgramSection* callee = index_.program(t.number))
+        calls_.push_back({section, static_cast<int>(callee - index_.sections().data()), g, index});
+      else emit(codes::kProgramNotFound, p->range, {g->text() + " " + p->text(), std::to_string(t.number)});
+    }
+  }
+
+  // Call chains through constant calls: deeper than the control allows is an
+  // error at the call that goes too deep; so is a recursion that nothing can end.
+  void checkDepth() {
+    const int n = static_cast<int>(index_.sections().size());
+    std::vector<std::vector<const Call*>> out(static_cast<std::size_t>(n));
+    for (const Call& c : calls_) out[static_cast<std::size_t>(c.section)].push_back(&c);
+    std::vector<int> state(static_cast<std::size_t>(n), 0);  // 0 new, 1 on the path, 2 done
+    std::vector<const Call*> path;
+    bool reported = false;
+    const int limit = profile_.flow.maxSubprogramNesting + profile_.flow.maxMacroNesting;
+    long steps = 0;  // the walk is bounded whatever the call graph
+    std::function<void(int)> visit = [&](int s) {
+      if (reported || ++steps > 100000) return;
+      state[static_cast<std::size_t>(s)] = 1;
+      for (const Call* c : out[static_cast<std::size_t>(s)]) {
+        if (reported) return;
+        path.push_back(c);
+        if (state[static_cast<std::size_t>(c->callee)] == 1) {
+          // A cycle: fine when some program on it can stop calling (IF, WHILE, GOTO).
+          bool conditional = false;
+          for (const Call* k : path) conditional = conditional || hasConditions_[static_cast<std::size_t>(k->callee)] ||
+                                                   hasConditions_[static_cast<std::size_t>(k->section)];
+          if (!conditional) {
+            emit(codes::kCallsTooDeep, c->word->range, {c->word->text(), std::to_string(profile_.flow.maxSubprogramNesting)});
+            reported = true;
+          }
+        } else if (static_cast<int>(path.size()) > limit) {
+          emit(codes::kCallsTooDeep, c->word->range, {c->word->text(), std::to_string(limit)});
+          reported = true;
+        } else if (state[static_cast<std::size_t>(c->callee)] == 0 || static_cast<int>(path.size()) < limit) {
+          visit(c->callee);
+          state[static_cast<std::size_t>(c->callee)] = 0;  // other paths may reach it deeper
+        }
+        path.pop_back();
+      }
+      state[static_cast<std::size_t>(s)] = 2;
+    };
+    if (n > 0 && n <= 500) visit(0);
+  }
+};
+
+}  // namespace
+
+void checkFlow(const Program& program, const CheckOptions& options, std::vector<Diagnostic>& out) {
+  FlowChecker(program, options, out).run();
+}
+
+}  // namespace klueng::core::gcode

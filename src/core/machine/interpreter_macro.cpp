@@ -1,0 +1,140 @@
+// Custom macro B variables (Fanuc 0i-TF manual, "Types of variables" and
+// "System variables"): #0 vacant, locals #1-#33 per macro level, common
+// #100-#199 and #500-#999 (kept between runs by the caller), and the system
+// variables a simulation can honour. Reads and writes are recorded in the
+// FlowLog for the variable watch.
+#include <cmath>
+
+#include "machine/interpreter_impl.h"
+
+namespace klueng::core::machine::detail {
+
+using gcode::MacroValue;
+
+// The modal G code of a Fanuc group number (#4001-#4022).
+int Interpreter::modalCode(int group) const {
+  switch (group) {
+    case 1:
+      if (singleCycle_ != 0) return singleCycle_;
+      switch (modal_.motion) {
+        case MotionMode::Rapid: return 0;
+        case MotionMode::Line: return 1;
+        case MotionMode::ArcCw: return 2;
+        case MotionMode::ArcCcw: return 3;
+        case MotionMode::Thread: return 32;
+      }
+      return 0;
+    case 2: return modal_.spindleMode == SpindleMode::ConstantSurface ? 96 : 97;
+    case 5: return modal_.feedMode == FeedMode::PerMinute ? 98 : 99;
+    case 6: return modal_.units == Units::Inch ? 20 : 21;
+    case 7: return modal_.noseComp == NoseCompMode::Left ? 41 : modal_.noseComp == NoseCompMode::Right ? 42 : 40;
+    case 10: return drillCycle_ != 0 ? drillCycle_ : 80;
+    case 12: return modalCall_.active ? 66 : 67;
+    case 14: return modal_.workCoordinate;
+    case 16: return 18;
+    default: return 0;
+  }
+}
+
+// #5001/#5002 (#5041/#5042): the programmed point in work coordinates; #5021/#5022
+// in machine coordinates. X as a diameter, in the input units.
+double Interpreter::positionValue(int axis, bool machine) const {
+  Vec2 p = machine ? pos_ - mach_.workShift : pos_ - offsetVector();
+  const double v = axis == 1 ? 2.0 * xOf(p) : zOf(p);
+  return v / unit();
+}
+
+bool Interpreter::read(int n, MacroValue& out, const char*& errorCode) {
+  errorCode = "A137";
+  out = MacroValue{};
+  if (n == 0) return true;
+  if (n >= 1 && n <= 33) {
+    out = locals_.empty() ? MacroValue{} : locals_[static_cast<std::size_t>(frames_.back().localLevel)][static_cast<std::size_t>(n - 1)];
+    return true;
+  }
+  if (n >= 100 && n <= 199) {
+    out = common_[static_cast<std::size_t>(n - 100)];
+    return true;
+  }
+  if (n >= 500 && n <= 999) {
+    out = persistent_[static_cast<std::size_t>(n - 500)];
+    return true;
+  }
+  const int offsets = static_cast<int>(setup_.offsets.offsets.size());
+  // Tool offsets: #2001+ X, #2101+ Z, #2201+ nose radius, #2301+ tip (per offset number).
+  if (n >= 2001 && n <= 2400) {
+    const int kind = (n - 2001) / 100, row = (n - 2001) % 100 + 1;
+    if (row > offsets) return false;
+    const io::Offset& o = setup_.offsets.at(row);
+    const double lengthUnit = unit();
+    switch (kind) {
+      case 0: out = MacroValue::of(o.x / lengthUnit); break;
+      case 1: out = MacroValue::of(o.z / lengthUnit); break;
+      case 2: out = MacroValue::of(o.r / lengthUnit); break;
+      default: out = MacroValue::of(o.tip); break;
+    }
+    return true;
+  }
+  switch (n) {
+    case 3000: return true;  // vacant until written (the write raises the alarm)
+    case 3001: out = MacroValue::of(sink_.elapsed() * 1000.0 - timerBase_); return true;
+    case 3002: out = MacroValue::of(sink_.elapsed() / 3600.0 - hourBase_); return true;
+    case 3901: out = MacroValue::of(partsMachined_); return true;
+    case 3902: out = MacroValue::of(partsRequired_); return true;
+    case 4109: out = MacroValue::of(modal_.feed / unit()); return true;
+    case 4113: out = MacroValue::of(lastM_); return true;
+    case 4114: out = MacroValue::of(lastN_); return true;
+    case 4115: out = MacroValue::of(frames_.back().program); return true;
+    case 4119: out = MacroValue::of(modal_.sWord); return true;
+    case 4120: out = MacroValue::of(lastT_); return true;
+    case 5001: case 5041: out = MacroValue::of(positionValue(1, false)); return true;
+    case 5002: case 5042: out = MacroValue::of(positionValue(2, false)); return true;
+    case 5021: out = MacroValue::of(positionValue(1, true)); return true;
+    case 5022: out = MacroValue::of(positionValue(2, true)); return true;
+    default: break;
+  }
+  if (n >= 4001 && n <= 4022) {
+    out = MacroValue::of(modalCode(n - 4000));
+    return true;
+  }
+  return false;
+}
+
+bool Interpreter::writeVariable(int n, MacroValue v, const SourceRange& at) {
+  const std::string name = "#" + std::to_string(n);
+  int localFrame = -1;
+  if (n >= 1 && n <= 33) {
+    locals_[static_cast<std::size_t>(frames_.back().localLevel)][static_cast<std::size_t>(n - 1)] = v;
+    localFrame = frames_.back().localId;
+  } else if (n >= 100 && n <= 199) {
+    common_[static_cast<std::size_t>(n - 100)] = v;
+  } else if (n >= 500 && n <= 999) {
+    persistent_[static_cast<std::size_t>(n - 500)] = v;
+  } else if (n == 3000) {
+    // #3000 = n (MESSAGE): a program alarm with the block's comment as its text.
+    if (flow_) flow_->writes.push_back(VariableWrite{snapshots_, n, -1, v.value, v.vacant});
+    return flowAlarm("A130", at, {gcode::macroNumberText(v.value), block_->comment});
+  } else if (n == 3006) {
+    // #3006 = n (MESSAGE): a stop with a message, as M00.
+    notice(Severity::Note, "A147", at, {block_->comment});
+    stopped_ = true;
+    stopEndsRun_ = options_.stopAtM00;
+  } else if (n == 3001) {
+    timerBase_ = sink_.elapsed() * 1000.0 - v.value;
+  } else if (n == 3002) {
+    hourBase_ = sink_.elapsed() / 3600.0 - v.value;
+  } else if (n == 3901) {
+    partsMachined_ = v.value;
+  } else if (n == 3902) {
+    partsRequired_ = v.value;
+  } else {
+    MacroValue ignored;
+    const char* code = nullptr;
+    if (n == 0 || read(n, ignored, code)) return flowAlarm("A139", at, {name + " =", std::to_string(n)});
+    return flowAlarm("A137", at, {std::to_string(n)});
+  }
+  if (flow_) flow_->writes.push_back(VariableWrite{snapshots_, n, localFrame, v.value, v.vacant});
+  return true;
+}
+
+}  // namespace klueng::core::machine::detail
