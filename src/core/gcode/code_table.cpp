@@ -91,6 +91,14 @@ constexpr CodeInfo kTable[] = {
      "G58 - use work offset 5 (zero unless set)", "G58 - ใช้ระบบพิกัดงานที่ 5 (เป็นศูนย์ถ้าไม่ได้กำหนด)"},
     {'G', 59, G::WorkOffset, P::State, kFH, false, "Work offset 6", "ระบบพิกัดงานที่ 6",
      "G59 - use work offset 6 (zero unless set)", "G59 - ใช้ระบบพิกัดงานที่ 6 (เป็นศูนย์ถ้าไม่ได้กำหนด)"},
+    {'G', 65, G::NonModal, P::Motion, kFH, false, "Macro call", "เรียกใช้มาโคร",
+     "G65 P9010 L2 A1. B2. - run macro O9010 twice with #1 = 1, #2 = 2",
+     "G65 P9010 L2 A1. B2. - เรียกใช้มาโคร O9010 สองครั้ง โดย #1 = 1, #2 = 2", "P#L#"},
+    {'G', 66, G::MacroModal, P::Motion, kFH, false, "Modal macro call", "เรียกใช้มาโครแบบโมดอล",
+     "G66 P9020 A2. - run macro O9020 after every move until G67",
+     "G66 P9020 A2. - เรียกใช้มาโคร O9020 หลังการเคลื่อนที่ทุกครั้งจนกว่าจะสั่ง G67", "P#L#"},
+    {'G', 67, G::MacroModal, P::State, kFH, false, "Modal macro call cancel", "ยกเลิกการเรียกมาโครแบบโมดอล",
+     "G67 - stop calling the G66 macro after each move", "G67 - เลิกเรียกมาโครของ G66 หลังการเคลื่อนที่"},
     {'G', 70, G::CannedCycle, P::Motion, kAll, false, "Finishing cycle", "วัฏจักรกลึงเก็บผิว",
      "G70 P100 Q200 - finish along the contour of blocks N100 to N200",
      "G70 P100 Q200 - กลึงเก็บผิวตามรูปร่างในบล็อก N100 ถึง N200", "P#Q#"},
@@ -330,6 +338,7 @@ std::string_view modalGroupNumber(ModalGroup group) {
     case ModalGroup::Units: return "06";
     case ModalGroup::NoseComp: return "07";
     case ModalGroup::CannedCycle: return "10";
+    case ModalGroup::MacroModal: return "12";
     case ModalGroup::WorkOffset: return "14";
     case ModalGroup::Plane: return "16";
     case ModalGroup::MSpindle: return "M03/M04/M05";

@@ -157,7 +157,7 @@ class Scanner {
       const gcode::Block& b = program_.blocks[bi];
       for (const gcode::Word* g : b.all('G'))
         if (!g->hasDecimalPoint && (g->code() == 20 || g->code() == 21)) unit_ = g->code() == 20 ? 25.4 : 1.0;
-      if (const gcode::Word* t = b.find('T'); t && !t->hasDecimalPoint) select(b, *t, blockLines);
+      if (const gcode::Word* t = b.find('T'); t && !t->hasDecimalPoint && t->expr < 0) select(b, *t, blockLines);
       if (station_ > 0) motion(b);
     }
     return std::move(uses_);
@@ -269,8 +269,8 @@ class Scanner {
         return;
       }
       if (n == 50 && (b.has('X') || b.has('Z'))) {
-        if (const gcode::Word* w = b.find('X')) x_ = w->value * unit_;
-        if (const gcode::Word* w = b.find('Z')) z_ = w->value * unit_;
+        if (const gcode::Word* w = b.find('X')) x_ = w->expr < 0 ? std::optional<double>(w->value * unit_) : std::nullopt;
+        if (const gcode::Word* w = b.find('Z')) z_ = w->expr < 0 ? std::optional<double>(w->value * unit_) : std::nullopt;
         return;
       }
       if (n == 0 || n == 1 || n == 2 || n == 3 || n == 32 || n == 90 || n == 92 || n == 94) motion_ = n;
@@ -282,10 +282,11 @@ class Scanner {
     const gcode::Word* zw = b.find('Z');
     const gcode::Word* ww = b.find('W');
     std::optional<double> x = x_, z = z_;
-    if (xw) x = xw->value * unit_;
-    else if (uw && x) x = *x + uw->value * unit_;
-    if (zw) z = zw->value * unit_;
-    else if (ww && z) z = *z + ww->value * unit_;
+    // A macro expression (X#100) is known only when the program runs: the position becomes unknown.
+    if (xw) x = xw->expr < 0 ? std::optional<double>(xw->value * unit_) : std::nullopt;
+    else if (uw && x) x = uw->expr < 0 ? std::optional<double>(*x + uw->value * unit_) : std::nullopt;
+    if (zw) z = zw->expr < 0 ? std::optional<double>(zw->value * unit_) : std::nullopt;
+    else if (ww && z) z = ww->expr < 0 ? std::optional<double>(*z + ww->value * unit_) : std::nullopt;
 
     if (cycle == 76 || cycle == 92 || motion_ == 32) {
       if (cycle == 76 && !xw && !zw && !uw && !ww) return;  // the first G76 block of the two

@@ -22,6 +22,7 @@ enum class ModalGroup {
   Plane,         // 16: G18 (Fanuc)
   WorkOffset,    // 14: G54..G59 (Fanuc)
   CannedCycle,   // 10/00: G70..G76, G80, G81..G83 drilling
+  MacroModal,    // 12: G66 G67 (custom macro modal call; G65 is group 00)
   // M code groups, for rule 4 and the interpreter
   MSpindle,      // M03 M04 M05
   MCoolant,      // M08 M09
