@@ -236,7 +236,7 @@ class LineParser {
     const char letter = colon ? 'O' : static_cast<char>(line_[i] & ~0x20);  // upper case
     const std::size_t start = i;
     ++i;
-    if (startsAddressExpression(i)) return lexAddressExpression(letter, start, i, col);
+    if (startsAddressExpression(i)) return lexAddressExpression(letter, i, col);
     const std::size_t numberStart = i;
     while (i < line_.size() && isNumberChar(static_cast<unsigned char>(line_[i]))) ++i;
     const std::string_view number = line_.substr(numberStart, i - numberStart);
@@ -289,7 +289,8 @@ class LineParser {
 
   static bool startsStatement(std::string_view s) {
     return startsWithKeyword(s, "IF") || startsWithKeyword(s, "WHILE") || startsWithKeyword(s, "GOTO") ||
-           startsWithKeyword(s, "DO") || startsWithKeyword(s, "END");
+           startsWithKeyword(s, "DO") || startsWithKeyword(s, "END") || startsWithKeyword(s, "POPEN") ||
+           startsWithKeyword(s, "PCLOS") || startsWithKeyword(s, "DPRNT") || startsWithKeyword(s, "BPRNT");
   }
 
   bool startsAddressExpression(std::size_t i) const {
@@ -328,7 +329,7 @@ class LineParser {
   }
 
   // X#101, Z-[#1+2.]: an address whose value is an expression.
-  int lexAddressExpression(char letter, std::size_t start, std::size_t& i, int col) {
+  int lexAddressExpression(char letter, std::size_t& i, int col) {
     int c = col + 1;
     const std::size_t exprStart = i;
     const int index = readInto(i, c, ExprForm::Address);
@@ -461,6 +462,21 @@ class LineParser {
       st.kind = StatementKind::Do;
       st.range = SourceRange{lineNumber_, startCol, 2, file_};
       st.loop = loopNumber(i, col);
+    } else if (keyword("POPEN") || keyword("PCLOS") || keyword("DPRNT") || keyword("BPRNT")) {
+      // External output (a printer or a file on the real control): read past, not simulated.
+      st.kind = StatementKind::Output;
+      st.range = SourceRange{lineNumber_, startCol, static_cast<int>(i - start), file_};
+      skipBlanks(i, col);
+      if (i < line_.size() && line_[i] == '[') {
+        int depth = 0;
+        while (i < line_.size()) {
+          const char ch = line_[i];
+          ++i;
+          ++col;
+          if (ch == '[') ++depth;
+          else if (ch == ']' && --depth == 0) break;
+        }
+      }
     } else if (keyword("END")) {
       st.kind = StatementKind::End;
       st.range = SourceRange{lineNumber_, startCol, 3, file_};

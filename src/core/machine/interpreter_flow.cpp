@@ -4,6 +4,9 @@
 // "Custom macro" chapters; Haas reads the same. Variables: interpreter_macro.cpp.
 #include <cmath>
 
+#include <string_view>
+
+#include "klueng/core/gcode/word_format.h"
 #include "machine/interpreter_impl.h"
 
 namespace klueng::core::machine::detail {
@@ -254,8 +257,12 @@ bool Interpreter::evaluateWords(const Block& b) {
     Word e = w;
     e.expr = -1;
     e.value = v.value;
+    // A length takes the least input increment, as the control reads the address.
+    if (std::string_view("XZUWIKRC").find(w.letter) != std::string_view::npos)
+      e.value = gcode::roundToIncrement(v.value, profile_,
+                                        modal_.units == Units::Inch ? gcode::InputUnits::Inch : gcode::InputUnits::Millimetre);
     e.hasDecimalPoint = true;
-    e.number = gcode::macroNumberText(v.value);
+    e.number = gcode::macroNumberText(e.value);
     if (e.number.find('.') == std::string::npos) e.number += '.';
     const auto dot = e.number.find('.');
     e.decimals = static_cast<int>(e.number.size() - dot - 1);
@@ -326,6 +333,7 @@ bool Interpreter::statement(const Block& b) {
       lastJumpText_ = statementText(b);
       return true;
     }
+    case StatementKind::Output:  // DPRNT and friends print on the real control; nothing moves
     case StatementKind::None: return true;
   }
   return true;

@@ -42,6 +42,7 @@ enum class StatementKind : std::uint8_t {
   While,   // WHILE [c] DO m         (condition, loop)
   Do,      // DO m without WHILE: an endless loop until GOTO leaves it (loop)
   End,     // END m                  (loop)
+  Output,  // POPEN, PCLOS, DPRNT[...], BPRNT[...]: external output, nothing to simulate
 };
 
 struct Statement {
