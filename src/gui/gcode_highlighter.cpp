@@ -1,5 +1,9 @@
 #include "gui/gcode_highlighter.h"
 
+#include <algorithm>
+#include <iterator>
+#include <string_view>
+
 #include <QColor>
 #include <QSet>
 #include <QTextDocument>
@@ -23,7 +27,22 @@ GcodeHighlighter::GcodeHighlighter(QTextDocument* document) : QSyntaxHighlighter
   set(Kind::Program, QColor(0x8b, 0x00, 0x00), true);  // dark red
   set(Kind::Comment, QColor(0x6a, 0x73, 0x7d), false, true);
   set(Kind::Skip, QColor(0xd0, 0x60, 0x00), true);
+  set(Kind::Macro, QColor(0x00, 0x5f, 0x73), true);     // macro B keywords and functions
+  set(Kind::Variable, QColor(0x9a, 0x5b, 0x00));        // #101
 }
+
+namespace {
+// Custom macro B words (docs/macro.md): statements, operators and functions.
+bool isMacroWord(const QString& w) {
+  static constexpr std::string_view kWords[] = {
+      "IF", "THEN", "GOTO", "WHILE", "DO", "END", "EQ", "NE", "GT", "GE", "LT", "LE", "AND", "OR", "XOR", "MOD",
+      "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "SQRT", "SQR", "ABS", "ROUND", "RND", "FIX", "FUP", "LN", "EXP",
+      "POW", "BIN", "BCD", "POPEN", "PCLOS", "DPRNT", "BPRNT"};
+  const QByteArray upper = w.toUpper().toLatin1();
+  const std::string_view word(upper.constData(), static_cast<std::size_t>(upper.size()));
+  return std::find(std::begin(kWords), std::end(kWords), word) != std::end(kWords);
+}
+}  // namespace
 
 GcodeHighlighter::Kind GcodeHighlighter::kindOf(QChar letter) {
   switch (letter.toUpper().unicode()) {
@@ -79,6 +98,20 @@ void GcodeHighlighter::highlightBlock(const QString& text) {
     } else if (c == u'/' || c == u'%') {
       setFormat(i, 1, format(Kind::Skip));
       ++i;
+    } else if (c == u'#') {
+      int end = i + 1;
+      while (end < n && text[end].isDigit()) ++end;
+      setFormat(i, end - i, format(Kind::Variable));
+      i = end;
+    } else if (c.isLetter() && c.unicode() < 128 && i + 1 < n && text[i + 1].isLetter()) {
+      int end = i + 1;
+      while (end < n && text[end].isLetter() && text[end].unicode() < 128) ++end;
+      if (isMacroWord(text.mid(i, end - i))) {
+        setFormat(i, end - i, format(Kind::Macro));
+        i = end;
+      } else {
+        ++i;
+      }
     } else if (c.isLetter() && c.unicode() < 128) {
       int end = i + 1;
       while (end < n && (text[end].isDigit() || text[end] == u'.' || text[end] == u'-' || text[end] == u'+')) ++end;

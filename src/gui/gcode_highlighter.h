@@ -21,7 +21,7 @@ struct Underline {
 class GcodeHighlighter : public QSyntaxHighlighter {
   Q_OBJECT
  public:
-  enum class Kind { GCode, MCode, Tool, Axis, FeedSpeed, Sequence, Program, Comment, Skip, Other };
+  enum class Kind { GCode, MCode, Tool, Axis, FeedSpeed, Sequence, Program, Comment, Skip, Macro, Variable, Other };
 
   explicit GcodeHighlighter(QTextDocument* document);
 

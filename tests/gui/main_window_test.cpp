@@ -422,6 +422,21 @@ class MainWindowTest : public QObject {
     QCOMPARE(colourAt(13), h->format(K::Tool).foreground().color());
     QCOMPARE(colourAt(20), h->format(K::Comment).foreground().color());
     QVERIFY(colourAt(4) != colourAt(8) && colourAt(8) != colourAt(13) && colourAt(13) != colourAt(20));
+
+    // Macro B: statement words and #variables have their own colours; X of X#101 stays an axis.
+    w.editor()->setPlainText(QStringLiteral("WHILE [#101 GT 30.] DO1\nG00 X#101"));
+    const QTextBlock m = w.editor()->document()->firstBlock();
+    auto colourIn = [](const QTextBlock& block, int pos) {
+      for (const auto& r : block.layout()->formats())
+        if (pos >= r.start && pos < r.start + r.length) return r.format.foreground().color();
+      return QColor();
+    };
+    QCOMPARE(colourIn(m, 0), h->format(K::Macro).foreground().color());    // WHILE
+    QCOMPARE(colourIn(m, 7), h->format(K::Variable).foreground().color()); // #101
+    QCOMPARE(colourIn(m, 12), h->format(K::Macro).foreground().color());   // GT
+    QCOMPARE(colourIn(m, 20), h->format(K::Macro).foreground().color());   // DO
+    QCOMPARE(colourIn(m.next(), 4), h->format(K::Axis).foreground().color());
+    QCOMPARE(colourIn(m.next(), 5), h->format(K::Variable).foreground().color());
   }
 
   void programWithErrorsDoesNotRun() {

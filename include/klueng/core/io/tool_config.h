@@ -80,7 +80,7 @@ struct MachineConfig {
   // A program that loops without end stops with an alarm (issue 9): after this
   // many blocks run again by a loop, a jump or a call (max_blocks), or after
   // this much simulated machining time in seconds (max_run_time).
-  int maxBlocks = 500000;
+  int maxBlocks = 200000;
   double maxRunTime = 36000.0;
 };
 
