@@ -3,6 +3,7 @@
 // #100-#199 and #500-#999 (kept between runs by the caller), and the system
 // variables a simulation can honour. Reads and writes are recorded in the
 // FlowLog for the variable watch.
+#include <algorithm>
 #include <cmath>
 
 #include "machine/interpreter_impl.h"
@@ -113,7 +114,9 @@ bool Interpreter::writeVariable(int n, MacroValue v, const SourceRange& at) {
   } else if (n == 3000) {
     // #3000 = n (MESSAGE): a program alarm with the block's comment as its text.
     if (flow_) flow_->writes.push_back(VariableWrite{snapshots_, n, -1, v.value, v.vacant});
-    return flowAlarm("A130", at, {gcode::macroNumberText(v.value), block_->comment});
+    // The control shows it as alarm 3000 + n (Fanuc: n = 0..200).
+    const int number = 3000 + static_cast<int>(std::clamp(std::round(v.value), 0.0, 999.0));
+    return flowAlarm("A130", at, {gcode::macroNumberText(v.value), block_->comment, std::to_string(number)});
   } else if (n == 3006) {
     // #3006 = n (MESSAGE): a stop with a message, as M00.
     notice(Severity::Note, "A147", at, {block_->comment});
