@@ -854,6 +854,15 @@ bool MainWindow::saveAs() {
 }
 
 bool MainWindow::saveFile(const QString& path) {
+  // A file still going into the editor is saved whole: put the rest in first.
+  if (fillingEditor_) {
+    QTextCursor c(editor_->document());
+    c.movePosition(QTextCursor::End);
+    c.insertText(pendingText_.mid(pendingOffset_));
+    pendingOffset_ = pendingText_.size();
+    ++fillGeneration_;  // the queued chunks and finishLoad() of this fill are void now
+    finishLoad();
+  }
   QString error;
   const QString old = document_->filePath();
   if (!old.isEmpty()) watcher_->removePath(old);
