@@ -209,7 +209,7 @@ int runCheck(const std::vector<std::string>& args) {
     for (const Diagnostic& d : checked.diagnostics) {
       if (isError(d.severity)) ++row.errors;
       else if (d.severity == Severity::Warning) ++row.warnings;
-      all.push_back({path, d});
+      all.push_back({checked.fileOf(d), d});
     }
     row.unreadable = checked.unreadable;
     anyUnreadable = anyUnreadable || checked.unreadable;

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "klueng/core/machine/subprogram_files.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -256,17 +258,29 @@ CheckedProgram checkProgramFile(const std::string& path, const gcode::CheckOptio
   result.diagnostics = std::move(read.diagnostics);
   result.unreadable = std::any_of(result.diagnostics.begin(), result.diagnostics.end(), isUnreadable);
   if (!read.value) return result;
-  const gcode::Program program = gcode::parse(read.value->gcode, read.value->gcodeFirstLine);
+  gcode::Program program = gcode::parse(read.value->gcode, read.value->gcodeFirstLine);
+  // The program's folder is the control's memory: subprograms it calls come from there.
+  for (Diagnostic& d : machine::attachSubprogramFiles(program, std::filesystem::path(path).parent_path().string(),
+                                                       options.dialect))
+    result.diagnostics.push_back(std::move(d));
+  result.unreadable = std::any_of(result.diagnostics.begin(), result.diagnostics.end(),
+                                  [](const Diagnostic& d) { return d.range.file == 0 && isUnreadable(d); });
   std::vector<Diagnostic> found = gcode::check(program, options);
   // Say once which dialect accepts a program this one refuses (I102).
   if (auto fit = gcode::suggestDialect(program, options, found)) found.push_back(fit->note);
   result.diagnostics.insert(result.diagnostics.end(), std::make_move_iterator(found.begin()),
                             std::make_move_iterator(found.end()));
   std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {
+    if (a.range.file != b.range.file) return a.range.file < b.range.file;
     return a.range.line != b.range.line ? a.range.line < b.range.line : a.range.column < b.range.column;
   });
   result.file = std::move(read.value);
+  result.program = std::move(program);
   return result;
+}
+
+std::string CheckedProgram::fileOf(const Diagnostic& d) const {
+  return program ? machine::diagnosticFile(*program, d, path) : path;
 }
 
 }  // namespace klueng::cli

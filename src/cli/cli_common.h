@@ -103,8 +103,13 @@ int stationLimit(const LoadedConfig& config, core::gcode::Dialect dialect);
 struct CheckedProgram {
   std::string path;
   std::optional<core::io::ProgramFile> file;
+  // The parsed program with its subprogram files from the same folder
+  // appended (machine/subprogram_files.h): run it, do not parse again.
+  std::optional<core::gcode::Program> program;
   std::vector<core::Diagnostic> diagnostics;
   bool unreadable = false;
+  // The file a diagnostic belongs to: the program or one of its subprogram files.
+  std::string fileOf(const core::Diagnostic& d) const;
 };
 CheckedProgram checkProgramFile(const std::string& path, const core::gcode::CheckOptions& options,
                                 const core::io::JobHeader& defaultsForPlain = {});

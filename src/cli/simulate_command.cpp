@@ -1,6 +1,6 @@
 // klueng-cli simulate FILE [--trace out.csv] [--cycle-time] [--config DIR]
 //                          [--lang en|th] [--dialect fanuc|haas|classic]
-//                          [--optional-stop] [--block-skip]
+//                          [--optional-stop] [--block-skip] [--no-persist]
 //                          [--png out.png] [--profile out.csv] [--json summary.json] [--resolution MM]
 //                          [--svg out.svg] [--dxf out.dxf] [--no-stock]   (--no-stock: interpret only, no stock collisions)
 //                          [--stock DxL[xBORE][in]] [--units mm|inch]
@@ -13,6 +13,7 @@
 // still written.
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <functional>
 #include <optional>
 #include <string>
@@ -23,6 +24,7 @@
 #include "cut_outputs.h"
 #include "klueng/core/gcode/checker.h"
 #include "klueng/core/gcode/parser.h"
+#include "klueng/core/io/macro_variables.h"
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/io/tool_config.h"
 #include "klueng/core/io/tool_library.h"
@@ -45,6 +47,7 @@ struct SimulateOptions {
   gcode::Dialect dialect = gcode::Dialect::Fanuc;
   bool optionalStop = false;
   bool blockSkip = false;
+  bool persistVariables = true;  // write #500-#999 back to the folder's macro_variables.cfg
   CutOutputOptions cut;  // --png --profile --json --resolution (cut_outputs.h)
   std::optional<io::JobHeader> stock;            // --stock
   std::optional<gcode::InputUnits> powerOnUnits;  // --units
@@ -78,6 +81,7 @@ const std::vector<OptionSpec>& optionSpecs() {
        }},
       {"--optional-stop", false, [](SimulateOptions& o, const std::string&) { o.optionalStop = true; return true; }},
       {"--block-skip", false, [](SimulateOptions& o, const std::string&) { o.blockSkip = true; return true; }},
+      {"--no-persist", false, [](SimulateOptions& o, const std::string&) { o.persistVariables = false; return true; }},
       {"--png", true, [](SimulateOptions& o, const std::string& v) { o.cut.pngPath = v; return true; }},
       {"--profile", true, [](SimulateOptions& o, const std::string& v) { o.cut.profilePath = v; return true; }},
       {"--json", true, [](SimulateOptions& o, const std::string& v) { o.cut.jsonPath = v; return true; }},
@@ -104,14 +108,15 @@ const std::vector<OptionSpec>& optionSpecs() {
 constexpr const char* kSimulateUsage =
     "usage: klueng-cli simulate FILE [--trace out.csv] [--cycle-time] [--config DIR]\n"
     "                              [--lang en|th] [--dialect fanuc|haas|classic]\n"
-    "                              [--optional-stop] [--block-skip]\n"
+    "                              [--optional-stop] [--block-skip] [--no-persist]\n"
     "                              [--png out.png] [--profile out.csv] [--json summary.json]\n"
     "                              [--svg out.svg] [--dxf out.dxf] [--resolution MM] [--no-stock]\n"
     "                              [--stock DxL[xBORE][in]] [--units mm|inch] [--tool N=ID]...\n"
     "  --dialect  fanuc (Fanuc 0i-TF, default), haas (Haas ST lathe), classic (1999 rules)\n"
     "  --stock   stock before the file's header: 50x100 (mm), 2.1x4in, 118x80x90 (tube, bore 90)\n"
     "  --units   power-on units before any G20/G21: mm or inch\n"
-    "  --tool N=ID   library tool ID at station N for this run, e.g. 12=parting-3mm\n";
+    "  --tool N=ID   library tool ID at station N for this run, e.g. 12=parting-3mm\n"
+    "  --no-persist  do not write macro variables #500-#999 back to the folder's macro_variables.cfg\n";
 
 // ": allowed: ..." for the options whose values are a closed set or a form.
 std::string allowedValues(const std::string& option) {
@@ -205,20 +210,34 @@ int runSimulate(const std::vector<std::string>& args) {
   checkOptions.turretStations = config.tools.stations;  // the turret the tool table was read for
   checkOptions.toolsWithBitmap = job.toolsWithBitmap;
   CheckedProgram checked = checkProgramFile(o.file, checkOptions);
-  for (const auto& d : checked.diagnostics) printDiagnostic(o.file, d, o.lang);
+  for (const auto& d : checked.diagnostics) printDiagnostic(checked.fileOf(d), d, o.lang);
   if (checked.unreadable) return 2;
-  if (!checked.file || hasErrors(checked.diagnostics)) return 1;
+  if (!checked.file || !checked.program || hasErrors(checked.diagnostics)) return 1;
   machine::RunOptions runOptions;
   runOptions.dialect = o.dialect;
   runOptions.powerOnUnits = o.powerOnUnits;
   for (const Diagnostic& n : resolveStock(*checked.file, o.stock, setup, runOptions))
     std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
   const io::ProgramFile& programFile = *checked.file;
-  const gcode::Program program = gcode::parse(programFile.gcode, programFile.gcodeFirstLine);
+  const gcode::Program& program = *checked.program;
 
   runOptions.optionalStop = o.optionalStop;
   runOptions.blockSkip = o.blockSkip;
+  // #500-#999 live in the folder's macro_variables.cfg between runs.
+  const std::string variablesPath =
+      io::macroVariablesPath(std::filesystem::path(o.file).parent_path().string());
+  const io::ReadResult<io::MacroVariables> stored = io::readMacroVariables(variablesPath);
+  for (const Diagnostic& d : stored.diagnostics) printDiagnostic(variablesPath, d, o.lang);
+  io::MacroVariables variables = stored.value.value_or(io::MacroVariables{});
+  const io::MacroVariables before = variables;
+  runOptions.persistentVariables = &variables;
   const machine::Timeline timeline = machine::interpret(program, setup, runOptions);
+  for (const Diagnostic& n : timeline.flow.notices) printDiagnostic(checked.fileOf(n), n, o.lang);
+  if (variables != before && o.persistVariables && stored.value) {
+    std::string error;
+    if (!io::writeTextFileAtomic(variablesPath, io::formatMacroVariables(variables), &error))
+      std::fprintf(stderr, "klueng-cli simulate: cannot write %s: %s\n", variablesPath.c_str(), error.c_str());
+  }
 
   if (!o.tracePath.empty()) {
     std::string error;
@@ -231,12 +250,12 @@ int runSimulate(const std::vector<std::string>& args) {
   const CutOutcome cut = o.cut.enabled ? runCut(o.file, programFile.header, setup, timeline, o.cut) : CutOutcome{};
   if (o.cycleTime) std::printf("%.4f\n", timeline.cycleTime());
   if (cut.alarm) {
-    printDiagnostic(o.file, *cut.alarm, o.lang);
+    printDiagnostic(checked.fileOf(*cut.alarm), *cut.alarm, o.lang);
     return 1;
   }
   if (!cut.written) return 1;
   if (timeline.alarm) {
-    printDiagnostic(o.file, *timeline.alarm, o.lang);
+    printDiagnostic(checked.fileOf(*timeline.alarm), *timeline.alarm, o.lang);
     return 1;
   }
   return 0;

@@ -11,14 +11,30 @@ import math
 import os
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-HEADER = "kind,line,t_start,t_end,x_start,z_start,x_end,z_end,i,k,dir,feed_mm_min,rpm"
+HEADER = "kind,line,t_start,t_end,x_start,z_start,x_end,z_end,i,k,dir,feed_mm_min,rpm,level,program"
+MAIN = "{MAIN}"  # the main program's O number, filled in by case()
 BOTH = math.hypot(8000, 4000)  # path speed of a dog-leg's first leg when it moves 2:1 (Z:X radius)
 
 
-def row(kind, line, t0, t1, x0, z0, x1, z1, i=0.0, k=0.0, d="", feed=0.0, rpm=0.0):
+def row(kind, line, t0, t1, x0, z0, x1, z1, i=0.0, k=0.0, d="", feed=0.0, rpm=0.0, level=0, prog=MAIN):
+    """level: call level (0 = main program); prog: the O number of the program the move is in ("O1000")."""
     nums = [t0, t1, x0, z0, x1, z1, i, k]
     f = lambda v: "%.4f" % (0.0 if abs(v) < 5e-5 else v)
-    return ",".join([kind, str(line)] + [f(v) for v in nums] + [d, f(feed), f(rpm)])
+    return ",".join([kind, str(line)] + [f(v) for v in nums] + [d, f(feed), f(rpm), str(level), prog])
+
+
+def main_program(program):
+    """The O number of a program's first block ("O0001"), "" when it has none."""
+    for line in program.splitlines():
+        t = line.strip()
+        if not t or t.startswith("%") or t.startswith("("):
+            continue
+        if t[0] in "Oo" and len(t) > 1 and t[1].isdigit():
+            digits = "".join(ch for ch in t[1:].split()[0] if ch.isdigit())
+            return "O%04d" % int(digits)
+        if t[0].isalpha() and len(t) > 1 and (t[1].isdigit() or t[1] in "-."):
+            return ""  # a G-code line before any O word (header lines are skipped)
+    return ""
 
 
 def case(name, program, rows, alarm=None, args=None):
@@ -27,7 +43,8 @@ def case(name, program, rows, alarm=None, args=None):
     with open(os.path.join(d, "program.nc"), "w") as fh:
         fh.write(program)
     with open(os.path.join(d, "expected.csv"), "w") as fh:
-        fh.write("\n".join([HEADER] + rows) + "\n")
+        main = main_program(program)
+        fh.write("\n".join([HEADER] + [r.replace(MAIN, main) for r in rows]) + "\n")
     for fname, content in (("expected_alarm", alarm), ("args", args)):
         p = os.path.join(d, fname)
         if content:

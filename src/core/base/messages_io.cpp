@@ -136,6 +136,10 @@ constexpr MessageText kMessages[] = {
     {"F167", "{0}: '{1}' is not a .bmp or .png file name", "{0}: '{1}' ไม่ใช่ชื่อไฟล์ภาพ .bmp หรือ .png"},
     {"F168", "{0}: the tool needs an English and a Thai name", "{0}: มีดตัดต้องมีชื่อภาษาอังกฤษและชื่อภาษาไทย"},
     {"F169", "{0}: tool '{1}': the bitmap '{2}' does not exist", "{0}: มีดตัด '{1}': ไม่พบไฟล์ภาพ '{2}'"},
+    {"F170", "{0}: '{1}' is not a macro variable line; write #500 = 12.5",
+     "{0}: '{1}' ไม่ใช่บรรทัดตัวแปรมาโคร ต้องเขียนเป็น #500 = 12.5"},
+    {"F171", "{0}: #{1} is not kept between runs; only #500 to #999 are",
+     "{0}: #{1} ไม่ถูกเก็บไว้ระหว่างการทำงานแต่ละครั้ง เก็บได้เฉพาะ #500 ถึง #999"},
 
     // Tools chosen from the program (core/machine/tool_inference.h): notes, never errors.
     // {0} station (2 digits), {1} library id, {2} what was seen, {3} file line.

@@ -48,6 +48,8 @@ std::string formatTraceCsv(const Timeline& timeline) {
     if (arc) out += m.path.ccw ? "CCW" : "CW";
     put(out, m.feed);
     put(out, m.rpm);
+    fmt::format_to(std::back_inserter(out), ",{},", m.callLevel);
+    if (m.program > 0) fmt::format_to(std::back_inserter(out), "O{:04d}", m.program);
     out += '\n';
   }
   return out;

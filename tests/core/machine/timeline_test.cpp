@@ -105,12 +105,12 @@ TEST(Timeline, PositionAtAndMoveAtFollowTheMoves) {
 TEST(Timeline, TraceCsvHasTheExactHeaderAndOneRowPerMove) {
   const Timeline t = runText("G98 G00 X20. Z0.\nG02 X30. Z-5. R5. F100.\nG04 P500\n");
   const std::string csv = formatTraceCsv(t);
-  const std::string header = "kind,line,t_start,t_end,x_start,z_start,x_end,z_end,i,k,dir,feed_mm_min,rpm\n";
+  const std::string header = "kind,line,t_start,t_end,x_start,z_start,x_end,z_end,i,k,dir,feed_mm_min,rpm,level,program\n";
   ASSERT_EQ(csv.rfind(header, 0), 0u);
-  EXPECT_NE(csv.find("\nARC,2,2.2500,6.9624,20.0000,0.0000,30.0000,-5.0000,5.0000,0.0000,CW,100.0000,0.0000\n"),
+  EXPECT_NE(csv.find("\nARC,2,2.2500,6.9624,20.0000,0.0000,30.0000,-5.0000,5.0000,0.0000,CW,100.0000,0.0000,0,\n"),
             std::string::npos)
       << csv;
-  EXPECT_NE(csv.find("\nDWELL,3,6.9624,7.4624,30.0000,-5.0000,30.0000,-5.0000,0.0000,0.0000,,0.0000,0.0000\n"),
+  EXPECT_NE(csv.find("\nDWELL,3,6.9624,7.4624,30.0000,-5.0000,30.0000,-5.0000,0.0000,0.0000,,0.0000,0.0000,0,\n"),
             std::string::npos)
       << csv;
   std::size_t rows = 0;
