@@ -555,3 +555,95 @@ for z_from, z_to in ((None, -6), (-5, -14), (-13, -20)):
     h.feed("LINE", 3, 0, z_to, abs(h.z - z_to) / 100 * 60, 100)
 h.rapid(3, 0, 5)
 case("cycle_g83_fanuc_peck", CYC + "G00 X0 Z5.\nG83 Z-20. R-3. Q8000 F100.\nG80\n", h.rows)
+
+
+# ---------------------------------------------------------------- program flow (issue 9)
+# Every case starts with G98 G00 X40. Z0. from X0 Z300: X 20 mm on the radius
+# takes 0.3 s, while Z covers 8000 * 0.3 / 60 = 40 mm (to Z260); then Z alone
+# 260 mm = 1.95 s. Feed-per-minute moves take length / F minutes.
+def to_x40_z0(line):
+    return [row("RAPID", line, 0, 0.3, 0, 300, 40, 260, feed=BOTH),
+            row("RAPID", line, 0.3, 2.25, 40, 260, 40, 0, feed=8000)]
+
+
+# M98 P2000 L2 calls O2000 twice; each pass cuts W-5 (5 mm at 300 = 1 s) and
+# calls O3000 twice (L2): U-2 is 1 mm on the radius at 120 mm/min = 0.5 s, the
+# rapid U2 back is 1 mm at 4000 mm/min = 0.015 s. Then G00 X60: 10 mm = 0.15 s.
+rows = to_x40_z0(2)
+t, z = 2.25, 0.0
+for _ in range(2):
+    rows.append(row("LINE", 7, t, t + 1, 40, z, 40, z - 5, feed=300, level=1, prog="O2000"))
+    t, z = t + 1, z - 5
+    for _ in range(2):
+        rows.append(row("LINE", 11, t, t + 0.5, 40, z, 38, z, feed=120, level=2, prog="O3000"))
+        rows.append(row("RAPID", 12, t + 0.5, t + 0.515, 38, z, 40, z, feed=4000, level=2, prog="O3000"))
+        t += 0.515
+rows.append(row("RAPID", 4, t, t + 0.15, 40, z, 60, z, feed=4000))
+case("flow_nested_calls_l_repeats",
+     "O0100 (NESTED CALLS)\nG98 G00 X40. Z0.\nM98 P2000 L2\nG00 X60.\nM30\n"
+     "O2000 (STEP LEFT, TWO DIPS)\nG01 W-5. F300.\nM98 P3000 L2\nM99\n"
+     "O3000 (ONE DIP)\nG01 U-2. F120.\nG00 U2.\nM99\n", rows)
+
+# M99 P50 returns to N50 of the caller, skipping N40 (X80 never happens):
+# Z0 -> Z-10 at 600 mm/min = 1 s, then X40 -> X60 = 0.15 s.
+case("flow_m99_p_returns_to_n",
+     "O0200\nG98 G00 X40. Z0.\nM98 P2100\nN40 G00 X80.\nN50 G00 X60.\nM30\nO2100\nG01 Z-10. F600.\nM99 P50\n",
+     to_x40_z0(2) + [
+         row("LINE", 8, 2.25, 3.25, 40, 0, 40, -10, feed=600, level=1, prog="O2100"),
+         row("RAPID", 5, 3.25, 3.4, 40, -10, 60, -10, feed=4000),
+     ])
+
+# Haas M97 P100 L3: the blocks from N100 of the same program up to M99, three
+# times; W-4. at 480 mm/min = 0.5 s each. Program O00300 (Haas, G21 for mm).
+rows = to_x40_z0(4)
+for k in range(3):
+    rows.append(row("LINE", 8, 2.25 + 0.5 * k, 2.75 + 0.5 * k, 40, -4 * k, 40, -4 * (k + 1), feed=480,
+                    level=1, prog="O0300"))
+rows.append(row("RAPID", 6, 3.75, 3.9, 40, -12, 60, -12, feed=4000))
+case("flow_m97_haas_local_repeats",
+     "%\nO00300 (M97 LOCAL)\nG21 G98\nG00 X40. Z0.\nM97 P100 L3\nG00 X60.\nM30\nN100 G01 W-4. F480.\nM99\n%\n",
+     rows, args="--dialect haas")
+
+# A backward GOTO: N10 runs while #1 < 3 after counting, so three times;
+# W-2. at 240 mm/min = 0.5 s each.
+rows = to_x40_z0(2)
+for k in range(3):
+    rows.append(row("LINE", 4, 2.25 + 0.5 * k, 2.75 + 0.5 * k, 40, -2 * k, 40, -2 * (k + 1), feed=240))
+rows.append(row("RAPID", 7, 3.75, 3.9, 40, -6, 60, -6, feed=4000))
+case("flow_goto_backward_loop",
+     "O0400\nG98 G00 X40. Z0.\n#1 = 0\nN10 G01 W-2. F240.\n#1 = #1 + 1\nIF [#1 LT 3] GOTO 10\nG00 X60.\nM30\n", rows)
+
+# WHILE DO2 around WHILE DO1: two outer passes of two W-1. cuts (1 mm at
+# 120 mm/min = 0.5 s), each outer pass ending with U2. (1 mm radius rapid,
+# 0.015 s). Then X44 -> X60: 8 mm at 4000 = 0.12 s.
+rows = to_x40_z0(2)
+t, z, x = 2.25, 0.0, 40.0
+for _ in range(2):
+    for _ in range(2):
+        rows.append(row("LINE", 7, t, t + 0.5, x, z, x, z - 1, feed=120))
+        t, z = t + 0.5, z - 1
+    rows.append(row("RAPID", 10, t, t + 0.015, x, z, x + 2, z, feed=4000))
+    t, x = t + 0.015, x + 2
+rows.append(row("RAPID", 13, t, t + 0.12, 44, z, 60, z, feed=4000))
+case("flow_nested_while",
+     "O0500\nG98 G00 X40. Z0.\n#1 = 0\nWHILE [#1 LT 2] DO2\n#2 = 0\nWHILE [#2 LT 2] DO1\nG01 W-1. F120.\n"
+     "#2 = #2 + 1\nEND1\nG00 U2.\n#1 = #1 + 1\nEND2\nG00 X60.\nM30\n", rows)
+
+# G65 P9600 X30. Z-6. A10. F200.: X -> #24, Z -> #26, A -> #1, F -> #9.
+# X40 -> X30 at 200 mm/min: 5 mm = 1.5 s; Z0 -> Z-6: 1.8 s; rapid to X[30+10]
+# = X40: 5 mm on the radius = 0.075 s; back in the main: X60, 0.15 s.
+case("flow_g65_arguments",
+     "O0600\nG98 G00 X40. Z0.\nG65 P9600 X30. Z-6. A10. F200.\nG00 X60.\nM30\n"
+     "O9600 (GROOVE TO X#24 Z#26, CLEAR BY #1)\nG01 X#24 F#9\nZ#26\nG00 X[#24+#1]\nM99\n",
+     to_x40_z0(2) + [
+         row("LINE", 7, 2.25, 3.75, 40, 0, 30, 0, feed=200, level=1, prog="O9600"),
+         row("LINE", 8, 3.75, 5.55, 30, 0, 30, -6, feed=200, level=1, prog="O9600"),
+         row("RAPID", 9, 5.55, 5.625, 30, -6, 40, -6, feed=4000, level=1, prog="O9600"),
+         row("RAPID", 4, 5.625, 5.775, 40, -6, 60, -6, feed=4000),
+     ])
+
+# #3000 = 1 stops the run with program alarm 3001 and the comment as its text;
+# the G01 after it never runs.
+case("flow_program_alarm_3000",
+     "O0700\nG98 G00 X40. Z0.\n#1 = 5\nIF [#1 GT 4] THEN #3000 = 1 (DIAMETER TOO SMALL)\nG01 Z-10. F300.\nM30\n",
+     to_x40_z0(2), alarm="program.nc:4:1: alarm A130: program alarm 3001 (#3000 = 1): DIAMETER TOO SMALL")
