@@ -361,6 +361,20 @@ class LineParser {
     ++col;
     const int value = readInto(i, col, ExprForm::Full);
     if (value < 0) return col;
+    skipBlanks(i, col);
+    std::size_t e = i;
+    while (e < line_.size() && isLetter(static_cast<unsigned char>(line_[e]))) ++e;
+    if (e - i >= 2) {
+      // #1 = 1 PLUS 2: a word the expression does not know (X10. after it is E127).
+      std::string word(line_.substr(i, e - i));
+      for (char& ch : word) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+      report(codes::kMacroUnknownWord, col, static_cast<int>(e - i), {word});
+      while (i < line_.size() && line_[i] != '(' && line_[i] != ';') {
+        ++i;
+        ++col;
+      }
+      return col;
+    }
     if (!then) st.kind = StatementKind::Assign;
     st.target = target;
     st.value = value;
