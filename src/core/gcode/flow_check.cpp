@@ -109,8 +109,12 @@ class FlowChecker {
           hasConditions_[static_cast<std::size_t>(section)] = true;
           if (st.kind == StatementKind::If && st.then) break;
           if (const auto n = constantValue(program_, st.value))
-            if (index_.findSequence(section, *n, i) < 0)
-              emit(codes::kGotoNowhere, st.range, {"GOTO" + std::to_string(*n), std::to_string(*n)});
+            if (index_.findSequence(section, *n, i) < 0) {
+              // Point at the number after GOTO.
+              SourceRange at = program_.expressions[static_cast<std::size_t>(st.value)].range;
+              if (at.line == 0) at = st.range;
+              emit(codes::kGotoNowhere, at, {"GOTO" + std::to_string(*n), std::to_string(*n)});
+            }
           break;
         }
         default: break;

@@ -1,0 +1,230 @@
+// Program flow at run time and in the check (issue 9): subprogram nesting,
+// macro calls and variables, and every kind of bad input giving a clear
+// message with line and column (English and Thai), never a hang.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+
+#include "klueng/core/gcode/checker.h"
+#include "klueng/core/messages.h"
+#include "test_support.h"
+
+namespace klueng::core::machine {
+namespace {
+
+using testing::runText;
+
+std::vector<Diagnostic> checkText(const std::string& text, gcode::Dialect d = gcode::Dialect::Fanuc) {
+  gcode::CheckOptions o;
+  o.dialect = d;
+  return gcode::check(gcode::parse(text, 1), o);
+}
+
+// The one diagnostic with `code`, else a failure.
+const Diagnostic* find(const std::vector<Diagnostic>& ds, const std::string& code) {
+  for (const Diagnostic& d : ds)
+    if (d.code == code) return &d;
+  ADD_FAILURE() << "no " << code;
+  return nullptr;
+}
+
+void expectBilingual(const Diagnostic& d) {
+  const std::string en = formatMessage(d, Lang::En);
+  const std::string th = formatMessage(d, Lang::Th);
+  EXPECT_FALSE(en.empty());
+  EXPECT_NE(en, th) << d.code;
+  EXPECT_EQ(en.find("{0}"), std::string::npos) << en;
+  EXPECT_EQ(th.find("{0}"), std::string::npos) << th;
+}
+
+TEST(FlowCheck, UnmatchedDoAndEnd) {
+  const auto ds = checkText("#1=0\nWHILE [#1 LT 3] DO1\n#1=#1+1\nEND2\n");
+  const Diagnostic* end = find(ds, "E402");
+  const Diagnostic* open = find(ds, "E401");
+  ASSERT_TRUE(end && open);
+  EXPECT_EQ(end->range, (SourceRange{4, 1, 3}));
+  EXPECT_EQ(open->range, (SourceRange{2, 1, 5}));  // the WHILE
+  expectBilingual(*end);
+  expectBilingual(*open);
+}
+
+TEST(FlowCheck, LoopsMustNestAndAtMostThreeDeep) {
+  auto ds = checkText("DO1\nDO2\nEND1\nEND2\n");
+  const Diagnostic* cross = find(ds, "E409");
+  ASSERT_TRUE(cross);
+  EXPECT_EQ(cross->range.line, 3);
+  ds = checkText("DO1\nDO2\nDO3\nDO1\nEND1\nEND3\nEND2\nEND1\n");
+  const Diagnostic* deep = find(ds, "E408");
+  ASSERT_TRUE(deep);
+  EXPECT_EQ(deep->range.line, 4);
+}
+
+TEST(FlowCheck, GotoToNowhere) {
+  const auto ds = checkText("N10 G00 X10.\nIF [#1 GT 2] GOTO 20\nGOTO 10\n");
+  const Diagnostic* d = find(ds, "E403");
+  ASSERT_TRUE(d);
+  EXPECT_EQ(d->range, (SourceRange{2, 19, 2}));  // the 20 of GOTO 20
+  EXPECT_EQ(d->args.at(1), "20");
+  EXPECT_EQ(ds.size(), 1u);  // GOTO 10 finds N10
+  expectBilingual(*d);
+}
+
+TEST(FlowCheck, UnconditionalRecursionIsAnErrorAtTheCall) {
+  const auto ds = checkText("M98 P1000\nM30\nO1000\nG00 U1.\nM98 P1000\nM99\n");
+  const Diagnostic* d = find(ds, "E411");
+  ASSERT_TRUE(d);
+  EXPECT_EQ(d->range.line, 5);
+  EXPECT_EQ(d->range.column, 1);
+  expectBilingual(*d);
+}
+
+TEST(FlowCheck, MacroArgumentsAndTheClassicDialect) {
+  auto ds = checkText("G65 P9000 A1. Y2. V3.\nM30\nO9000\nM99\n");
+  EXPECT_TRUE(ds.empty()) << ds.front().code;  // Y and V are arguments (#25, #22)
+  ds = checkText("G65 P9000 A1. O5\nM30\nO9000\nM99\n");
+  ASSERT_TRUE(find(ds, "E406"));
+  ds = checkText("#1=2\nG00 X#1\n", gcode::Dialect::Classic);
+  const Diagnostic* d = find(ds, "E407");
+  ASSERT_TRUE(d);
+  EXPECT_EQ(d->range.line, 1);
+}
+
+TEST(FlowRun, DivisionByZeroStopsAtTheExpression) {
+  const Timeline t = runText("#1=0\n#2=10/#1\n");
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->code, "A131");
+  EXPECT_EQ(t.alarm->range.line, 2);
+  EXPECT_EQ(t.alarm->range.column, 4);
+  expectBilingual(*t.alarm);
+}
+
+TEST(FlowRun, VacantAxisWordIsLeftOutWithAWarning) {
+  const Timeline t = runText("G00 X40. Z#5\n");
+  ASSERT_FALSE(t.alarm);
+  ASSERT_EQ(t.flow.notices.size(), 1u);
+  const Diagnostic& n = t.flow.notices[0];
+  EXPECT_EQ(n.code, "W130");
+  EXPECT_EQ(n.severity, Severity::Warning);
+  EXPECT_EQ(n.range, (SourceRange{1, 10, 3}));
+  expectBilingual(n);
+  // X moved, Z stayed at 300.
+  EXPECT_POINT(t.moves.back().path.end, 40.0, 300.0);
+}
+
+TEST(FlowRun, RecursionPastTheLimitStopsWithAnAlarm) {
+  // An IF the run never takes: the check lets it through, the run stops at level 11.
+  const std::string text = "#100=0\nM98 P1000\nM30\nO1000\n#100=#100+1\nIF [#100 LT 0] GOTO 9\nM98 P1000\nN9 M99\n";
+  EXPECT_TRUE(checkText(text).empty());
+  const Timeline t = runText(text);
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->code, "A134");
+  EXPECT_EQ(t.alarm->range, (SourceRange{7, 1, 3}));
+  EXPECT_EQ(t.alarm->args.at(1), "10");
+  expectBilingual(*t.alarm);
+}
+
+TEST(FlowRun, EndlessLoopsStopByBlocksOrByTime) {
+  MachineSetup setup = testing::testSetup();
+  setup.machine.maxBlocks = 5000;
+  Timeline t = runText("#1=0\nWHILE [1 EQ 1] DO1\n#1=#1+1\nEND1\n", {}, setup);
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->code, "A132");
+  EXPECT_EQ(t.alarm->range, (SourceRange{4, 1, 3}));
+  EXPECT_EQ(t.alarm->args.at(0), "END1");
+  expectBilingual(*t.alarm);
+  // With motion, the time limit comes first: 10 mm at 100 mm/min = 6 s a pass.
+  setup.machine.maxBlocks = 1000000;
+  setup.machine.maxRunTime = 60.0;
+  t = runText("G98 G00 X20. Z0.\nN5 G01 W-10. F100.\nG00 W10.\nGOTO 5\n", {}, setup);
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->code, "A133");
+  EXPECT_EQ(t.alarm->range, (SourceRange{4, 1, 4}));
+  EXPECT_GE(t.cycleTime(), 60.0);
+  EXPECT_LT(t.cycleTime(), 67.0);
+}
+
+TEST(FlowRun, ModalMacroRunsAfterEachMoveUntilG67) {
+  // G66 P9100: after each move, O9100 dips 1 mm (U-2.) and back.
+  const Timeline t = runText(
+      "G98 G00 X40. Z0.\nG66 P9100 F60.\nG01 W-5. F300.\nW-5.\nG67\nW-5.\nM30\n"
+      "O9100\nG01 U-2. F#9\nG00 U2.\nM99\n");
+  ASSERT_FALSE(t.alarm) << t.alarm->code;
+  int dips = 0;
+  for (const Move& m : t.moves)
+    if (m.kind == MoveKind::Line && m.line == 9) {
+      ++dips;
+      EXPECT_EQ(m.callLevel, 1);
+      EXPECT_EQ(m.program, 9100);
+      EXPECT_NEAR(m.feed, 60.0, 1e-9);  // F60. passed as #9
+    }
+  EXPECT_EQ(dips, 2);  // after the two moves under G66, not after the one under G67
+}
+
+TEST(FlowRun, SystemVariablesReadTheMachineState) {
+  // #5001/#5002: the end point of the last block (X as a diameter); #4001 G01;
+  // #4006 G21; #4109 the F.
+  const Timeline t = runText(
+      "G21 G98 G00 X40. Z5.\nG01 Z-10. F250.\n#100=#5001\n#101=#5002\n#102=#4001\n#103=#4006\n#104=#4109\n");
+  ASSERT_FALSE(t.alarm);
+  std::map<int, double> got;
+  for (const VariableWrite& w : t.flow.writes) got[w.number] = w.value;
+  EXPECT_DOUBLE_EQ(got[100], 40.0);
+  EXPECT_DOUBLE_EQ(got[101], -10.0);
+  EXPECT_DOUBLE_EQ(got[102], 1.0);
+  EXPECT_DOUBLE_EQ(got[103], 21.0);
+  EXPECT_DOUBLE_EQ(got[104], 250.0);
+}
+
+TEST(FlowRun, StopWithMessageAndPartsCounter) {
+  const Timeline t = runText("#3006=1 (CHECK THE INSERT)\n#3901=#3901+1\nM30\n");
+  ASSERT_FALSE(t.alarm);
+  ASSERT_EQ(t.flow.notices.size(), 1u);
+  EXPECT_EQ(t.flow.notices[0].code, "A147");
+  EXPECT_EQ(t.flow.notices[0].args.at(0), "CHECK THE INSERT");
+  ASSERT_GE(t.snapshots.size(), 1u);
+  EXPECT_TRUE(t.snapshots[0].stopped);
+}
+
+TEST(FlowRun, PersistentVariablesComeAndGoThroughTheRunOptions) {
+  std::map<int, double> keep{{500, 4.0}};
+  RunOptions o;
+  o.persistentVariables = &keep;
+  runText("#500=#500+1\n#501=#500*2\n#100=7\n", o);
+  EXPECT_EQ(keep, (std::map<int, double>{{500, 5.0}, {501, 10.0}}));
+  runText("#500=#500+1\n", o);
+  EXPECT_DOUBLE_EQ(keep[500], 6.0);
+}
+
+TEST(FlowRun, CallStacksAndVariableWritesAreRecordedForTheWatch) {
+  const Timeline t = runText("G65 P9000 A3.\nM30\nO9000\n#2=#1*2\nM98 P9100\nM99\nO9100\nM99\n");
+  ASSERT_FALSE(t.alarm);
+  // Snapshot of #2=#1*2 (line 4): stack main -> O9000 (G65).
+  const StateSnapshot* s4 = nullptr;
+  const StateSnapshot* s8 = nullptr;
+  for (const StateSnapshot& s : t.snapshots) {
+    if (s.line == 4) s4 = &s;
+    if (s.line == 8) s8 = &s;
+  }
+  ASSERT_TRUE(s4 && s8);
+  EXPECT_EQ(s4->callLevel, 1);
+  EXPECT_EQ(s4->program, 9000);
+  const auto& stack = t.flow.stacks.at(static_cast<std::size_t>(s8->callStack));
+  ASSERT_EQ(stack.size(), 3u);
+  EXPECT_EQ(stack[1].kind, CallFrame::Kind::Macro);
+  EXPECT_EQ(stack[1].callLine, 1);
+  EXPECT_EQ(stack[2].kind, CallFrame::Kind::Subprogram);
+  EXPECT_EQ(stack[2].program, 9100);
+  EXPECT_EQ(stack[2].callLine, 5);
+  // #1 = 3 (the argument), then #2 = 6, both in the macro's local frame.
+  bool arg = false, product = false;
+  for (const VariableWrite& w : t.flow.writes) {
+    if (w.number == 1 && w.value == 3.0 && w.localFrame == stack[1].locals) arg = true;
+    if (w.number == 2 && w.value == 6.0 && w.localFrame == stack[1].locals) product = true;
+  }
+  EXPECT_TRUE(arg);
+  EXPECT_TRUE(product);
+}
+
+}  // namespace
+}  // namespace klueng::core::machine
