@@ -69,6 +69,10 @@ constexpr MessageText kMessages[] = {
      "ใช้หมายเลขลูป {0} ไม่ได้: DO และ END ใช้ได้เฉพาะ 1, 2 หรือ 3"},
     {"E131", "'{0}' is not a macro statement: write #i = value",
      "'{0}' ไม่ใช่คำสั่งมาโครที่ถูกต้อง: ต้องเขียนเป็น #i = ค่า"},
+    {"E132", "{0}: chamfer ,C, corner ,R and angle ,A belong to a G01 block",
+     "{0}: การลบมุม ,C การมนมุม ,R และมุม ,A ใช้ได้เฉพาะในบล็อก G01"},
+    {"E133", "{0} and {1} in one block: a corner is either a chamfer or a radius",
+     "{0} และ {1} อยู่ในบล็อกเดียวกัน: มุมหนึ่งเป็นได้เพียงการลบมุมหรือการมนมุมอย่างใดอย่างหนึ่ง"},
     {"E199", "more than {0} errors; the rest of the program is not checked",
      "พบข้อผิดพลาดมากกว่า {0} รายการ จึงไม่ตรวจสอบส่วนที่เหลือของโปรแกรม"},
 

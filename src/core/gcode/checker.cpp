@@ -280,6 +280,22 @@ class Checker {
 
     // Arc rules: the motion group is modal, so "X20 Z-5 R2" after a G02 is an arc too.
     if (motionCode >= 0) motion_ = motionCode;
+
+    // Chamfer and corner words (Fanuc 0i-TF ",C" ",R" ",A"): on a G01 only, one corner kind.
+    const Word* chamfer = nullptr;
+    const Word* corner = nullptr;
+    for (const Word& w : block.words) {
+      if (!w.comma) continue;
+      const bool known = w.letter == 'C' || w.letter == 'R' || w.letter == 'A';
+      if (!known || motion_ != 1 || cannedCycle || oneShotWord) {
+        emit(codes::kCornerNotOnG01, w, {"," + wordText(w)});
+        continue;
+      }
+      if (w.letter == 'C') chamfer = &w;
+      if (w.letter == 'R') corner = &w;
+      if (w.expr < 0) checkValue(w, nullptr);
+    }
+    if (chamfer && corner) emit(codes::kChamferAndCorner, *later(chamfer, corner), {"," + wordText(*chamfer), "," + wordText(*corner)});
     const bool arc = motion_ == 2 || motion_ == 3;
     if (arc) {
       const std::string arcCode = motion_ == 2 ? "G02" : "G03";

@@ -38,6 +38,8 @@ inline constexpr const char* kIfWithoutGotoThen = "E128";
 inline constexpr const char* kWhileWithoutDo = "E129";
 inline constexpr const char* kBadLoopNumber = "E130";         // {0}=number
 inline constexpr const char* kExpectedAssignment = "E131";    // {0}=text
+inline constexpr const char* kCornerNotOnG01 = "E132";        // {0}=word
+inline constexpr const char* kChamferAndCorner = "E133";      // {0}=first {1}=second
 inline constexpr const char* kTooManyDiagnostics = "E199";  // {0}=limit
 
 // E2nn block rule nn of SPEC 5 (E213, stock size, belongs to the io module)
@@ -107,6 +109,8 @@ inline constexpr const char* kAll[] = {
     kWhileWithoutDo,
     kBadLoopNumber,
     kExpectedAssignment,
+    kCornerNotOnG01,
+    kChamferAndCorner,
     kDoWithoutEnd,
     kEndWithoutDo,
     kGotoNowhere,

@@ -194,6 +194,8 @@ bool Interpreter::executeBlock() {
     if (!mCode(ms[mi])) return false;
   updateRpm();
 
+  // A chamfer or corner waits for a move in the very next block.
+  if (corner_.active && corner_.blockIndex != blockIndex_) return cornerNeedsMove();
   if (const Word* t = find('T')) lastT_ = t->code();
   if (const Word* n = find('N')) lastN_ = n->code();
   if (mCount > 0) lastM_ = ms[mCount - 1].info->number;
@@ -343,12 +345,18 @@ bool Interpreter::cAxisWords() {
 
 bool Interpreter::move(const Word* g) {
   const Word* where = motionWord(g);
-  const Vec2 target = axisTarget();
+  Vec2 target = axisTarget();
+  if (corner_.active && modal_.motion != MotionMode::Line && modal_.motion != MotionMode::ArcCw &&
+      modal_.motion != MotionMode::ArcCcw)
+    return cornerNeedsMove();
   switch (modal_.motion) {
     case MotionMode::Rapid: return rapidTo(target, where);
     case MotionMode::Line: {
       if (!feedReady(where, "G01")) return false;
-      return feedMove(MoveKind::Line, Segment::line(pos_, target), where);
+      if (!angleTarget(target, where)) return false;
+      const Segment path = Segment::line(pos_, target);
+      if (commaWord('C') || commaWord('R')) return holdCorner(path, where);
+      return feedMoveAfterCorner(MoveKind::Line, path, where);
     }
     case MotionMode::ArcCw:
     case MotionMode::ArcCcw: {
@@ -356,7 +364,7 @@ bool Interpreter::move(const Word* g) {
       if (!feedReady(where, ccw ? "G03" : "G02")) return false;
       std::optional<Segment> arc = arcTo(target, ccw, where);
       if (!arc) return false;
-      return feedMove(arc->isArc() ? MoveKind::Arc : MoveKind::Line, *arc, where);
+      return feedMoveAfterCorner(arc->isArc() ? MoveKind::Arc : MoveKind::Line, *arc, where);
     }
     case MotionMode::Thread: {
       if (modal_.feed <= 0.0) return raise("A102", where, {"G32"});

@@ -159,6 +159,8 @@ void Interpreter::run() {
     if (!runBlock(pc)) break;
     pc = next_;
   }
+  // A chamfer or corner still waiting for its move when the program ends.
+  if (corner_.active && !sink_.halted()) cornerNeedsMove();
   // The persistent variables go back to the caller (who keeps them in a file).
   if (options_.persistentVariables) {
     for (int n = 500; n <= 999; ++n) {

@@ -212,6 +212,14 @@ class Interpreter final : public gcode::MacroVariables {
   bool flowAlarm(const char* code, const SourceRange& at, std::vector<std::string> args);
   void notice(Severity severity, const char* code, const SourceRange& at, std::vector<std::string> args);
 
+  // ---- interpreter_corner.cpp (,C ,R ,A on G01) ---------------------------------
+  const Word* commaWord(char letter) const { return block_->findComma(letter); }
+  bool holdCorner(const Segment& first, const Word* where);
+  bool feedMoveAfterCorner(MoveKind kind, const Segment& path, const Word* where);
+  bool cutHeldCorner(const Segment& path, Vec2& start, const Word* where);
+  bool cornerNeedsMove();
+  bool angleTarget(Vec2& target, const Word* where);
+
   // ---- interpreter_one_shot.cpp -------------------------------------------------
   Vec2 referencePoint() const;
   bool oneShot(const CodeWord& c);
@@ -278,6 +286,16 @@ class Interpreter final : public gcode::MacroVariables {
     std::string text;
   } modalCall_;
   bool movedThisBlock_ = false;
+  // A G01 with ,C or ,R waits for the next block's move to know its corner.
+  struct PendingCorner {
+    bool active = false;
+    MotionCall first;       // the G01 to the virtual corner
+    char kind = 0;          // 'C' chamfer, 'R' radius
+    double size = 0.0;      // mm
+    SourceRange where;      // the ,C / ,R word
+    std::string text;
+    int blockIndex = -1;
+  } corner_;
   gcode::Block scratch_;              // the running block with its expressions evaluated
   double timerBase_ = 0.0;            // #3001 counts from here (ms); #3002 (hours)
   double hourBase_ = 0.0;

@@ -120,5 +120,37 @@ TEST(FlowCut, GrooveSubprogramCalledFourTimesCutsFourEqualGrooves) {
   EXPECT_NEAR(g[0].to - g[0].from, 3.0, 0.05);  // the 3 mm tool
 }
 
+// Sample 01's finishing contour with ,C and ,R instead of the written-out
+// chamfer (N350 X30. Z-3.) and corner arc (N370 X36. / N380 G03 X40. Z-22. R2.).
+TEST(FlowCut, ChamferAndCornerWordsCutSampleOnesPart) {
+  const std::string sample = testing::readText(testing::samplesDir() + "/01-step-shaft.txt");
+  ASSERT_FALSE(sample.empty());
+  std::string words = sample;
+  const auto swap = [&words](const std::string& from, const std::string& to) {
+    const auto at = words.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    words.replace(at, from.size(), to);
+  };
+  swap("N350 X30. Z-3.\n", "N350 X30. ,C3.\n");
+  swap("N370 X36.\nN380 G03 X40. Z-22. R2.\nN390 G01 Z-40.\n", "N370 X40. ,R2.\nN390 Z-40.\n");
+  const Cut written = cut(sample);
+  const Cut corners = cut(words);
+  const auto a = written.part().outerProfile();
+  const auto b = corners.part().outerProfile();
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    EXPECT_NEAR(a[k].x(), b[k].x(), 0.001) << k;
+    EXPECT_NEAR(a[k].y(), b[k].y(), 0.001) << k;
+  }
+  // The same moves, too (under G42: the compensated path).
+  ASSERT_EQ(written.run.timeline.moves.size(), corners.run.timeline.moves.size());
+  for (std::size_t k = 0; k < written.run.timeline.moves.size(); ++k) {
+    const Segment& p = written.run.timeline.moves[k].path;
+    const Segment& q = corners.run.timeline.moves[k].path;
+    EXPECT_LT((p.end - q.end).norm(), 0.001) << k;
+    EXPECT_EQ(p.isArc(), q.isArc()) << k;
+  }
+}
+
 }  // namespace
 }  // namespace klueng::core::cut

@@ -1,0 +1,113 @@
+// Chamfer ,C, corner ,R and angle ,A on G01 (Fanuc 0i-TF manual, "Chamfering
+// and corner R", "Direct drawing dimension programming"): exact segments and
+// the alarms, with line and column.
+#include <gtest/gtest.h>
+
+#include "klueng/core/gcode/checker.h"
+#include "test_support.h"
+
+namespace klueng::core::machine {
+namespace {
+
+using testing::at;
+using testing::runText;
+
+std::vector<const Move*> cuts(const Timeline& t) {
+  std::vector<const Move*> out;
+  for (const Move& m : t.moves)
+    if (m.kind != MoveKind::Rapid) out.push_back(&m);
+  return out;
+}
+
+TEST(Corner, ChamferBetweenAFaceAndADiameter) {
+  // Face up to X30 at Z0 with a 2 mm chamfer, then along Z: the chamfer runs
+  // from X26 Z0 to X30 Z-2 (2 mm on the radius and 2 mm in Z from the corner).
+  const Timeline t = runText("G98 G00 X20. Z0.\nG01 X30. ,C2. F100.\nZ-20.\n");
+  ASSERT_FALSE(t.alarm) << t.alarm->code;
+  const auto c = cuts(t);
+  ASSERT_EQ(c.size(), 3u);
+  EXPECT_POINT(c[0]->path.start, 20.0, 0.0);
+  EXPECT_POINT(c[0]->path.end, 26.0, 0.0);
+  EXPECT_EQ(c[0]->line, 2);
+  EXPECT_POINT(c[1]->path.end, 30.0, -2.0);  // the chamfer, on the G01's line
+  EXPECT_EQ(c[1]->line, 2);
+  EXPECT_POINT(c[2]->path.start, 30.0, -2.0);
+  EXPECT_POINT(c[2]->path.end, 30.0, -20.0);
+  EXPECT_EQ(c[2]->line, 3);
+}
+
+TEST(Corner, RadiusBetweenADiameterAndAShoulder) {
+  // Along Z to Z-20 then up the shoulder to X50 with R3: the arc runs from
+  // X30 Z-17 to X36 Z-20, centre X36 Z-17, clockwise (G02) seen from +Y.
+  const Timeline t = runText("G98 G00 X30. Z2.\nG01 Z-20. ,R3. F100.\nX50.\n");
+  ASSERT_FALSE(t.alarm) << t.alarm->code;
+  const auto c = cuts(t);
+  ASSERT_EQ(c.size(), 3u);
+  EXPECT_POINT(c[0]->path.end, 30.0, -17.0);
+  ASSERT_TRUE(c[1]->path.isArc());
+  EXPECT_FALSE(c[1]->path.ccw);
+  EXPECT_POINT(c[1]->path.centre, 36.0, -17.0);
+  EXPECT_POINT(c[1]->path.end, 36.0, -20.0);
+  EXPECT_POINT(c[2]->path.start, 36.0, -20.0);
+  EXPECT_POINT(c[2]->path.end, 50.0, -20.0);
+}
+
+TEST(Corner, ChamferOnATaperUsesTheDistanceAlongEachMove) {
+  // 45-degree taper into a face: ,C1.414 ends 1 mm back in X and Z on the taper.
+  const Timeline t = runText("G98 G00 X20. Z0.\nG01 X24. Z-2. ,C1.4142 F100.\nX40.\n");
+  ASSERT_FALSE(t.alarm);
+  const auto c = cuts(t);
+  ASSERT_EQ(c.size(), 3u);
+  EXPECT_NEAR(2.0 * c[0]->path.end.y(), 22.0, 1e-3);
+  EXPECT_NEAR(c[0]->path.end.x(), -1.0, 1e-3);
+  EXPECT_NEAR(2.0 * c[1]->path.end.y(), 24.0 + 2.0 * 1.4142, 1e-3);
+  EXPECT_NEAR(c[1]->path.end.x(), -2.0, 1e-6);
+}
+
+TEST(Corner, AngleGivesTheMissingCoordinate) {
+  // ,A135 from X20 Z0 to X30: 5 mm up on the radius at 135 degrees from +Z
+  // goes 5 mm toward -Z.
+  const Timeline t = runText("G98 G00 X20. Z0.\nG01 X30. ,A135. F100.\n");
+  ASSERT_FALSE(t.alarm);
+  EXPECT_POINT(t.moves.back().path.end, 30.0, -5.0);
+}
+
+TEST(Corner, TheNextBlockMustMove) {
+  Timeline t = runText("G98 G00 X20. Z0.\nG01 X30. ,C2. F100.\nM08\nZ-20.\n");
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->code, "A144");
+  EXPECT_EQ(t.alarm->range, (SourceRange{2, 10, 4}));
+  t = runText("G98 G00 X20. Z0.\nG01 X30. ,R2. F100.\nG00 Z5.\n");
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->code, "A144");
+  t = runText("G98 G00 X20. Z0.\nG01 X30. ,C2. F100.\n");  // the program ends
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->code, "A144");
+}
+
+TEST(Corner, ACornerLongerThanAMoveIsAnAlarm) {
+  Timeline t = runText("G98 G00 X20. Z0.\nG01 X24. ,C3. F100.\nZ-20.\n");  // the face is 2 mm
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->code, "A145");
+  EXPECT_EQ(t.alarm->range, (SourceRange{2, 10, 4}));
+  t = runText("G98 G00 X20. Z0.\nG01 X40. ,R5. F100.\nZ-2.\n");  // the next move is 2 mm
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->code, "A145");
+}
+
+TEST(Corner, TheCheckerKeepsCornersOnG01) {
+  gcode::CheckOptions o;
+  auto ds = gcode::check(gcode::parse("G00 X20. ,C1.\n"), o);
+  ASSERT_EQ(ds.size(), 1u);
+  EXPECT_EQ(ds[0].code, "E132");
+  EXPECT_EQ(ds[0].range, (SourceRange{1, 10, 4}));
+  ds = gcode::check(gcode::parse("G01 X20. ,C1. ,R2. F0.1\n"), o);
+  ASSERT_EQ(ds.size(), 1u);
+  EXPECT_EQ(ds[0].code, "E133");
+  EXPECT_TRUE(gcode::check(gcode::parse("G01 X20. ,C1. F0.1\nZ-5. ,R0.5\nX30. ,A90.\n"), o).empty());
+  // ,C is not the C axis: no "two C words" and no C-axis rule.
+  EXPECT_TRUE(gcode::check(gcode::parse("G01 X20. C0. ,C1. F0.1\nZ-5.\n"), o).empty());
+}
+
+}  // namespace
+}  // namespace klueng::core::machine
