@@ -228,3 +228,55 @@ TEST(FlowRun, CallStacksAndVariableWritesAreRecordedForTheWatch) {
 
 }  // namespace
 }  // namespace klueng::core::machine
+
+#include "klueng/core/machine/flow_view.h"
+
+namespace klueng::core::machine {
+namespace {
+
+TEST(FlowView, VariablesOfTheRunningLevelAndTheLastStepsChanges) {
+  // Line 1: #100=1; line 2 G65 A5. -> O9000: line 5 #2=#1*2, line 6 #100=#2; back: line 3.
+  const Timeline t = runText("#100=1\nG65 P9000 A5.\nG00 X10.\nM30\nO9000\n#2=#1*2\n#100=#2\nM99\n");
+  ASSERT_FALSE(t.alarm);
+  auto snapOfLine = [&t](int line) {
+    for (std::size_t i = 0; i < t.snapshots.size(); ++i)
+      if (t.snapshots[i].line == line) return static_cast<int>(i);
+    return -1;
+  };
+  const int s6 = snapOfLine(6), s7 = snapOfLine(7), s3 = snapOfLine(3);
+  ASSERT_TRUE(s6 >= 0 && s7 >= 0 && s3 >= 0);
+  auto v = variablesAt(t, s6, s6 - 1);
+  // Inside the macro: #1 = 5 (argument), #2 = 10 (just written), #100 = 1.
+  ASSERT_EQ(v.size(), 3u);
+  EXPECT_EQ(v[0].number, 1);
+  EXPECT_DOUBLE_EQ(v[0].value, 5.0);
+  EXPECT_EQ(v[1].number, 2);
+  EXPECT_DOUBLE_EQ(v[1].value, 10.0);
+  EXPECT_TRUE(v[1].changed);
+  EXPECT_EQ(v[2].number, 100);
+  EXPECT_FALSE(v[2].changed);
+  v = variablesAt(t, s7, s6);
+  EXPECT_DOUBLE_EQ(v[2].value, 10.0);
+  EXPECT_TRUE(v[2].changed);
+  // Back in the main program: the macro's locals are gone.
+  v = variablesAt(t, s3, s7);
+  ASSERT_EQ(v.size(), 1u);
+  EXPECT_EQ(v[0].number, 100);
+  // Step Over from the G65 block lands on line 3; Step Out of the macro too.
+  const int s2 = snapOfLine(2);
+  EXPECT_EQ(nextSnapshotAtLevel(t, s2, t.snapshots[static_cast<std::size_t>(s2)].callLevel), s3);
+  EXPECT_EQ(nextSnapshotAtLevel(t, s6, 0), s3);
+}
+
+TEST(FlowView, TheValueAWordHadTheLastTimeItsLineRan) {
+  const Timeline t = runText("G98\n#1=10.\nN5 G01 X#1 F100.\n#1=#1+10.\nIF [#1 LE 30.] GOTO 5\n");
+  ASSERT_FALSE(t.alarm);
+  const int last = static_cast<int>(t.snapshots.size()) - 1;
+  const auto v = wordValueAt(t, last, 0, 3, 8);
+  ASSERT_TRUE(v);
+  EXPECT_DOUBLE_EQ(v->value, 30.0);
+  EXPECT_FALSE(wordValueAt(t, 0, 0, 3, 8));  // not run yet at the first snapshot
+}
+
+}  // namespace
+}  // namespace klueng::core::machine
