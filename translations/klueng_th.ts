@@ -285,6 +285,26 @@
 <context>
     <name>klueng::gui::MainWindow</name>
     <message>
+        <source>Step &amp;Into</source>
+        <translation>ทำงานเข้าไปใน&amp;โปรแกรมย่อย</translation>
+    </message>
+    <message>
+        <source>Step O&amp;ut</source>
+        <translation>ทำงานจนออกจาก&amp;โปรแกรมย่อย</translation>
+    </message>
+    <message>
+        <source>Run one block, then wait (a subprogram or macro call runs whole)</source>
+        <translation>ทำงานหนึ่งบล็อกแล้วรอ (การเรียกโปรแกรมย่อยหรือมาโครจะทำงานจนจบในครั้งเดียว)</translation>
+    </message>
+    <message>
+        <source>Run one block, into a subprogram or macro it calls</source>
+        <translation>ทำงานหนึ่งบล็อก โดยเข้าไปทีละบล็อกในโปรแกรมย่อยหรือมาโครที่ถูกเรียก</translation>
+    </message>
+    <message>
+        <source>Run to the end of this subprogram or macro</source>
+        <translation>ทำงานจนจบโปรแกรมย่อยหรือมาโครนี้แล้วกลับไปยังโปรแกรมที่เรียก</translation>
+    </message>
+    <message>
         <location filename="../src/gui/main_window.cpp" line="56" />
         <source>As fast as possible</source>
         <translation>เร็วที่สุด</translation>
@@ -911,6 +931,65 @@
         <location filename="../src/gui/dialect_offer_bar.cpp" line="89" />
         <source>Switch to %1</source>
         <translation>เปลี่ยนเป็น %1</translation>
+    </message>
+</context>
+<context>
+    <name>klueng::gui::FlowPanel</name>
+    <message>
+        <source>Program flow</source>
+        <translation>ลำดับการทำงานของโปรแกรม</translation>
+    </message>
+    <message>
+        <source>Call stack</source>
+        <translation>ลำดับการเรียกโปรแกรม</translation>
+    </message>
+    <message>
+        <source>Called from</source>
+        <translation>เรียกจาก</translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation>ตัวแปร</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>ค่า</translation>
+    </message>
+    <message>
+        <source>vacant</source>
+        <translation>ว่าง</translation>
+    </message>
+    <message>
+        <source>main program</source>
+        <translation>โปรแกรมหลัก</translation>
+    </message>
+    <message>
+        <source>subprogram (M98)</source>
+        <translation>โปรแกรมย่อย (M98)</translation>
+    </message>
+    <message>
+        <source>local subprogram (M97)</source>
+        <translation>โปรแกรมย่อยภายใน (M97)</translation>
+    </message>
+    <message>
+        <source>macro (G65)</source>
+        <translation>มาโคร (G65)</translation>
+    </message>
+    <message>
+        <source>modal macro (G66)</source>
+        <translation>มาโครแบบโมดอล (G66)</translation>
+    </message>
+    <message>
+        <source>(pass %1 of %2)</source>
+        <translation>(รอบที่ %1 จาก %2)</translation>
+    </message>
+    <message>
+        <source>line %1</source>
+        <translation>บรรทัด %1</translation>
+    </message>
+    <message>
+        <source>Running in %1, line %2</source>
+        <translation>กำลังทำงานใน %1 บรรทัด %2</translation>
     </message>
 </context>
 </TS>

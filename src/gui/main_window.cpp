@@ -35,6 +35,7 @@
 #include "gui/diagnostics_panel.h"
 #include "gui/dialect_offer_bar.h"
 #include "gui/find_dialog.h"
+#include "gui/flow_panel.h"
 #include "gui/help_contents.h"
 #include "gui/job_details_dialog.h"
 #include "gui/language.h"
@@ -300,10 +301,21 @@ void MainWindow::createActions() {
     hideBanner();
     runner_->go();
   });
+  // F10 Step (over): one block of this level; F11 into calls; Shift+F11 out of one.
   connect(make("actionStep", "step", QKeySequence(Qt::Key_F10)), &QAction::triggered, this, [this] {
     syncRunner();
     hideBanner();
+    runner_->stepOver();
+  });
+  connect(make("actionStepInto", "step", QKeySequence(Qt::Key_F11)), &QAction::triggered, this, [this] {
+    syncRunner();
+    hideBanner();
     runner_->step();
+  });
+  connect(make("actionStepOut", "step", QKeySequence(QStringLiteral("Shift+F11"))), &QAction::triggered, this, [this] {
+    syncRunner();
+    hideBanner();
+    runner_->stepOut();
   });
   connect(make("actionPause", "pause", QKeySequence(Qt::Key_F6)), &QAction::triggered, runner_, &RunController::pause);
   connect(make("actionStop", "stop", QKeySequence(QStringLiteral("Shift+F5"))), &QAction::triggered, this, [this] {
@@ -428,7 +440,8 @@ void MainWindow::createMenus() {
 
   runMenu_ = menuBar()->addMenu(QString());
   runMenu_->setObjectName(QStringLiteral("menuRun"));
-  for (const char* n : std::initializer_list<const char*>{"actionGo", "actionStep", "actionPause", "actionStop", nullptr, "actionStepBack",
+  for (const char* n : std::initializer_list<const char*>{"actionGo", "actionStep", "actionStepInto", "actionStepOut",
+                        "actionPause", "actionStop", nullptr, "actionStepBack",
                         "actionRunToCursor", "actionToggleBreakpoint", nullptr, "actionOptionalStop",
                         "actionBlockSkip"}) {
     if (n) runMenu_->addAction(action(QString::fromLatin1(n)));
@@ -495,10 +508,19 @@ void MainWindow::createToolBars() {
 void MainWindow::createDocks() {
   diagnostics_ = new DiagnosticsPanel(this);
   addDockWidget(Qt::BottomDockWidgetArea, diagnostics_);
+  flow_ = new FlowPanel(this);
+  addDockWidget(Qt::BottomDockWidgetArea, flow_);
+  tabifyDockWidget(diagnostics_, flow_);
+  diagnostics_->raise();
+  flow_->follow(runner_);
+  connect(flow_, &FlowPanel::callerActivated, this, [this](int file, int line) {
+    if (file == 0) editor_->goToFileLine(line, 1);
+  });
   for (QToolBar* t : {fileToolBar_, editToolBar_, runToolBar_, helpToolBar_}) viewMenu_->addAction(t->toggleViewAction());
   viewMenu_->addAction(action(QStringLiteral("actionShowStatusBar")));
   viewMenu_->addAction(action(QStringLiteral("actionShowLamps")));
   viewMenu_->addAction(diagnostics_->toggleViewAction());
+  viewMenu_->addAction(flow_->toggleViewAction());
   viewMenu_->addSeparator();
   viewMenu_->addAction(action(QStringLiteral("actionShowPath")));
   viewMenu_->addAction(action(QStringLiteral("actionFitView")));
@@ -547,7 +569,9 @@ void MainWindow::retranslateUi() {
   set("actionReplace", tr("R&eplace..."), tr("Find and replace text"));
   set("actionGoToLine", tr("&Go to Line..."));
   set("actionGo", tr("&Go"), tr("Run the program continuously"));
-  set("actionStep", tr("&Step"), tr("Run one block, then wait"));
+  set("actionStep", tr("&Step"), tr("Run one block, then wait (a subprogram or macro call runs whole)"));
+  set("actionStepInto", tr("Step &Into"), tr("Run one block, into a subprogram or macro it calls"));
+  set("actionStepOut", tr("Step O&ut"), tr("Run to the end of this subprogram or macro"));
   set("actionPause", tr("&Pause"), tr("Stop after the current step; Go or Step resumes"));
   set("actionStop", tr("S&top"), tr("Abort the run and reset"));
   set("actionStepBack", tr("Step &Back"), tr("Go back one block"));
@@ -1045,6 +1069,8 @@ void MainWindow::syncRunner() {
   const QList<int> lines = editor_->breakpointFileLines();
   runner_->setBreakpoints(QSet<int>(lines.begin(), lines.end()));
   runner_->setProgram(currentProgramFile(), document_->displayName());
+  // The program's folder is the control's memory: subprogram files (O1000.nc) come from there.
+  runner_->setProgramFolder(document_->filePath().isEmpty() ? QString() : QFileInfo(document_->filePath()).absolutePath());
   runnerStale_ = false;
 }
 
@@ -1061,6 +1087,8 @@ void MainWindow::onRunStateChanged(RunState state) {
   const bool active = running || state == RunState::Paused;
   action(QStringLiteral("actionGo"))->setEnabled(!running || state == RunState::Stepping);
   action(QStringLiteral("actionStep"))->setEnabled(!running || state == RunState::Running);
+  action(QStringLiteral("actionStepInto"))->setEnabled(!running || state == RunState::Running);
+  action(QStringLiteral("actionStepOut"))->setEnabled(!running || state == RunState::Running);
   action(QStringLiteral("actionPause"))->setEnabled(running);
   action(QStringLiteral("actionStop"))->setEnabled(active || state == RunState::Finished || state == RunState::Alarm);
   action(QStringLiteral("actionStepBack"))->setEnabled(!running && state != RunState::Idle);

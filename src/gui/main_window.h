@@ -161,6 +161,7 @@ class MainWindow : public QMainWindow {
   Document* document_ = nullptr;
   CodeEditor* editor_ = nullptr;
   DiagnosticsPanel* diagnostics_ = nullptr;
+  class FlowPanel* flow_ = nullptr;
   RunController* runner_ = nullptr;
   OutputView* output_ = nullptr;
   StatusFields* statusFields_ = nullptr;

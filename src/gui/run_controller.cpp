@@ -6,6 +6,8 @@
 
 #include "klueng/core/gcode/checker.h"
 #include "klueng/core/gcode/parser.h"
+#include "klueng/core/machine/flow_view.h"
+#include "klueng/core/machine/subprogram_files.h"
 
 namespace klueng::gui {
 
@@ -49,6 +51,12 @@ RunController::~RunController() { waitForIdle(); }
 void RunController::setProgram(const core::io::ProgramFile& file, const QString& displayName) {
   file_ = file;
   displayName_ = displayName;
+  invalidate();
+}
+
+void RunController::setProgramFolder(const QString& folder) {
+  if (folder == folder_) return;
+  folder_ = folder;
   invalidate();
 }
 
@@ -109,6 +117,7 @@ void RunController::invalidate() {
   time_ = 0.0;
   snapshotIndex_ = -1;
   currentLine_ = 0;
+  currentFile_ = 0;
   reportedAlarm_.reset();
   setState(RunState::Idle);
   emit executingLineChanged(0);
@@ -176,6 +185,8 @@ RunStatus RunController::status() const {
 void RunController::go() { prepareAndThen(Pending::Go); }
 
 void RunController::step() { prepareAndThen(Pending::Step); }
+void RunController::stepOver() { prepareAndThen(Pending::StepOver); }
+void RunController::stepOut() { prepareAndThen(Pending::StepOut); }
 
 void RunController::runToLine(int fileLine) {
   runToLine_ = fileLine;
@@ -269,10 +280,15 @@ void RunController::prepareAndThen(Pending what) {
   auto file = file_;
   auto setup = setup_;
   auto options = options_;
+  const std::string folder = folder_.toStdString();
   options.optionalStop = true;   // record every M01; the switch decides while playing
-  prepareWatcher_.setFuture(QtConcurrent::run([file, setup, options]() {
+  prepareWatcher_.setFuture(QtConcurrent::run([file, setup, options, folder]() {
     auto result = std::make_shared<Prepared>();
-    const core::gcode::Program program = core::gcode::parse(file.gcode, file.gcodeFirstLine);
+    core::gcode::Program program = core::gcode::parse(file.gcode, file.gcodeFirstLine);
+    // The folder is the control's memory: called programs come from there.
+    std::vector<core::Diagnostic> fileDiags;
+    if (!folder.empty()) fileDiags = machine::attachSubprogramFiles(program, folder, options.dialect);
+    result->files = program.files;
     core::gcode::CheckOptions check;
     check.dialect = options.dialect;
     check.powerOnUnits = options.powerOnUnits;
@@ -282,6 +298,7 @@ void RunController::prepareAndThen(Pending what) {
       if (!setup.tools.bitmap[static_cast<std::size_t>(t - 1)].empty()) withBitmap.push_back(t);
     check.toolsWithBitmap = withBitmap;
     std::vector<core::Diagnostic> diags = core::gcode::check(program, check);
+    diags.insert(diags.end(), fileDiags.begin(), fileDiags.end());
     if (file.header.diameter <= 0 || file.header.length <= 0) {
       // Stock size problems are reported by the file reader; the run needs a bar.
       core::Diagnostic d;
@@ -321,6 +338,7 @@ void RunController::onPrepared() {
     return;
   }
   timeline_ = result->timeline;
+  files_ = result->files;
   optionalStopBlock_ = result->optionalStopBlock;
   cut_ = std::make_unique<core::cut::CutSimulator>(*timeline_, core::cut::CutSetup::from(file_.header, setup_));
   stale_ = false;
@@ -333,6 +351,7 @@ void RunController::resetPlayback() {
   time_ = 0.0;
   snapshotIndex_ = -1;
   currentLine_ = 0;
+  currentFile_ = 0;
   frames_ = 0;
   reportedAlarm_.reset();
   stockShapeVolume_ = -1.0;
@@ -347,7 +366,8 @@ void RunController::startPending(Pending what) {
     return;
   }
   if (state_ == RunState::Finished || state_ == RunState::Alarm) resetPlayback();
-  startRun(what == Pending::Step);
+  stepKind_ = what;
+  startRun(what == Pending::Step || what == Pending::StepOver || what == Pending::StepOut);
   if (what != Pending::RunToLine) runToLine_ = 0;
 }
 
@@ -364,14 +384,24 @@ void RunController::startRun(bool stepOnly) {
   targetSnapshot_ = count - 1;
   targetTime_ = end;
   if (stepOnly && next < count) {
-    targetIsEnd_ = next == count - 1 && snaps[static_cast<std::size_t>(next)].time >= end - kEps;
-    targetSnapshot_ = next;
-    targetTime_ = snaps[static_cast<std::size_t>(next)].time;
+    // Step Over: the next block of this level (a call runs whole); Step Out: of the level above.
+    int target = next;
+    if (stepKind_ == Pending::StepOver || stepKind_ == Pending::StepOut) {
+      const int level = snapshotIndex_ >= 0 ? snaps[static_cast<std::size_t>(snapshotIndex_)].callLevel : 0;
+      const int want = stepKind_ == Pending::StepOut ? std::max(0, level - 1) : level;
+      target = machine::nextSnapshotAtLevel(*timeline_, snapshotIndex_, want);
+      if (target < 0) target = count - 1;
+    }
+    targetIsEnd_ = target == count - 1 && snaps[static_cast<std::size_t>(target)].time >= end - kEps;
+    targetSnapshot_ = target;
+    targetTime_ = snaps[static_cast<std::size_t>(target)].time;
   } else if (!stepOnly) {
     for (int j = next; j < count; ++j) {
       const machine::StateSnapshot& s = snaps[static_cast<std::size_t>(j)];
       // The block we resume on has already been stopped at; its breakpoint lets it run.
-      const bool breakHere = j > next && (breakpoints_.contains(s.line) || (runToLine_ > 0 && s.line >= runToLine_));
+      // Breakpoints and Run to cursor are lines of the program in the editor (file 0).
+      const bool breakHere =
+          j > next && s.file == 0 && (breakpoints_.contains(s.line) || (runToLine_ > 0 && s.line >= runToLine_));
       if (breakHere) {
         targetIsEnd_ = false;
         targetBeforeNext_ = true;
@@ -461,7 +491,9 @@ void RunController::finishStop() {
   if (alarm) {
     setState(RunState::Alarm);
     currentLine_ = alarm->range.line;
-    emit executingLineChanged(currentLine_);
+    currentFile_ = alarm->range.file;
+    emit executingFileLineChanged(currentFile_, currentLine_);
+    emit executingLineChanged(currentFile_ == 0 ? currentLine_ : 0);
     emitStatus();
     emit frameAdvanced();
     if (!reportedAlarm_) {
@@ -503,6 +535,7 @@ void RunController::onBackgroundDone() {
 
 void RunController::updateLine() {
   int line = 0;
+  int file = 0;
   if (timeline_) {
     const auto& snaps = timeline_->snapshots;
     const int count = static_cast<int>(snaps.size());
@@ -512,11 +545,16 @@ void RunController::updateLine() {
     if (state_ == RunState::Paused && snapshotIndex_ >= 0 && time_ > snaps[static_cast<std::size_t>(snapshotIndex_)].time + kEps)
       k = snapshotIndex_ + 1;   // paused in the middle of a block
     if (k >= count) k = count - 1;
-    if (k >= 0) line = snaps[static_cast<std::size_t>(k)].line;
+    if (k >= 0) {
+      line = snaps[static_cast<std::size_t>(k)].line;
+      file = snaps[static_cast<std::size_t>(k)].file;
+    }
   }
-  if (line != currentLine_) {
+  if (line != currentLine_ || file != currentFile_) {
     currentLine_ = line;
-    emit executingLineChanged(line);
+    currentFile_ = file;
+    emit executingFileLineChanged(file, line);
+    emit executingLineChanged(file == 0 ? line : 0);
   }
 }
 

@@ -81,6 +81,12 @@ class RunController : public QObject {
   ~RunController() override;
 
   void setProgram(const core::io::ProgramFile& file, const QString& displayName = {});
+  // The folder subprogram files (O1000.nc ...) are read from: the program's own (empty = none).
+  void setProgramFolder(const QString& folder);
+  // The files of the running program: [0] the program itself (""), then its subprogram files.
+  const std::vector<std::string>& programFiles() const { return files_; }
+  // Program::files index of the block being executed (0 = the program in the editor).
+  int currentFile() const { return currentFile_; }
   void setMachineSetup(const core::machine::MachineSetup& setup);
   const core::machine::MachineSetup& machineSetup() const { return setup_; }
   void setDialect(core::gcode::Dialect dialect);
@@ -112,7 +118,9 @@ class RunController : public QObject {
 
  public slots:
   void go();
-  void step();
+  void step();       // one block (Step Into: also into a subprogram or macro)
+  void stepOver();   // one block of this call level: a call runs whole
+  void stepOut();    // on to the block after the call of this level
   void pause();
   void stop();
   void stepBack();
@@ -124,7 +132,8 @@ class RunController : public QObject {
   void stateChanged(klueng::gui::RunState state);
   void checkFailed(const QList<klueng::core::Diagnostic>& diagnostics);
   void alarmRaised(const klueng::core::Diagnostic& alarm);
-  void executingLineChanged(int fileLine);
+  void executingLineChanged(int fileLine);          // a line of the program in the editor (0 = elsewhere)
+  void executingFileLineChanged(int file, int line);  // any file of the program (programFiles())
   void statusChanged(const klueng::gui::RunStatus& status);
   void frameAdvanced();
   void programReset();
@@ -140,10 +149,11 @@ class RunController : public QObject {
   const core::cut::ToolShape* currentToolShape() const;
 
  private:
-  enum class Pending { None, Go, Step, RunToLine };
+  enum class Pending { None, Go, Step, StepOver, StepOut, RunToLine };
   struct Prepared {
     std::shared_ptr<core::machine::Timeline> timeline;
     std::vector<char> optionalStopBlock;   // per snapshot: the block holds M01
+    std::vector<std::string> files;        // Program::files
     QList<core::Diagnostic> errors;
   };
 
@@ -166,6 +176,9 @@ class RunController : public QObject {
 
   core::io::ProgramFile file_;
   QString displayName_;
+  QString folder_;                   // subprogram files come from here
+  std::vector<std::string> files_;   // Program::files of the prepared run
+  Pending stepKind_ = Pending::Step;
   core::machine::MachineSetup setup_;
   core::machine::RunOptions options_;
   QSet<int> breakpoints_;
@@ -192,6 +205,7 @@ class RunController : public QObject {
   bool pausedBeforeNext_ = false;  // paused there: the next block's line is highlighted
   int snapshotIndex_ = -1;      // last completed block's snapshot
   int currentLine_ = 0;
+  int currentFile_ = 0;
   qint64 frames_ = 0;
   std::optional<core::Diagnostic> reportedAlarm_;
 

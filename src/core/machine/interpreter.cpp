@@ -240,6 +240,8 @@ bool Interpreter::selectTool(const Word& t) {
   const int tableStations = static_cast<int>(setup_.tools.bitmap.size());
   const int stations = profile_.maxToolStation > 0 ? std::min(profile_.maxToolStation, tableStations) : tableStations;
   const int offsets = std::min(profile_.maxOffset, static_cast<int>(setup_.offsets.offsets.size()));
+  // A T from a macro expression skips the checker: refuse what no turret has.
+  if (value < 0) return raise("A128", &t, {wordText(t), t.number, fmt::format("{:02d}", stations)});
   if (tool > stations)
     return raise("A128", &t, {wordText(t), fmt::format("{:02d}", tool), fmt::format("{:02d}", stations)});
   if (offset > offsets)

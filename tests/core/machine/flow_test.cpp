@@ -280,3 +280,23 @@ TEST(FlowView, TheValueAWordHadTheLastTimeItsLineRan) {
 
 }  // namespace
 }  // namespace klueng::core::machine
+
+namespace klueng::core::machine {
+namespace {
+
+// Found by fuzz_macro: values the checker never sees reach the interpreter through variables.
+TEST(FlowRun, CodesFromVariablesAreRefusedNotCrashedOn) {
+  Timeline t = runText("#1=-6\nT#1\n");
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->code, "A128");
+  EXPECT_EQ(t.alarm->range.line, 2);
+  t = runText("#1=POW[10,84]/3\nG#1\n");
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->code, "A143");
+  t = runText("#1=3.3333\nM#1\n");
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->code, "A143");
+}
+
+}  // namespace
+}  // namespace klueng::core::machine

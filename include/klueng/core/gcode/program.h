@@ -26,7 +26,8 @@ struct Word {
 
   // Integer code of a G/M/T/N/O word ("G01" -> 1). Only meaningful when
   // !hasDecimalPoint; G-code numbers like "G1.5" are reported by the checker.
-  int code() const { return static_cast<int>(value); }
+  // (A value outside int's range, reachable through a macro expression, gives -1.)
+  int code() const { return value > -2.0e9 && value < 2.0e9 ? static_cast<int>(value) : -1; }
   // The word as written, for messages: "X25.4", ":0100".
   std::string text() const { return (colon ? ':' : letter) + number; }
 };
