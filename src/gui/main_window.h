@@ -59,6 +59,7 @@ class MainWindow : public QMainWindow {
   DiagnosticsPanel* diagnosticsPanel() const { return diagnostics_; }
   Document* document() const { return document_; }
   RunController* runController() const { return runner_; }
+  class FlowPanel* flowPanel() const { return flow_; }
   OutputView* outputView() const { return output_; }
   StatusFields* statusFields() const { return statusFields_; }
   StatusLamps* statusLamps() const { return statusLamps_; }
