@@ -14,9 +14,10 @@ namespace machine = core::machine;
 
 JobToolsResult checkWithTools(const QString& text, int firstLine, core::gcode::CheckOptions options,
                               const machine::MachineSetup& setup, const std::vector<machine::StationOverride>& overrides,
-                              int stations) {
+                              int stations, const QString& folder) {
   core::machine::JobCheck job = machine::checkJob(text.toStdString(), firstLine, std::move(options), setup,
-                                                  core::io::shippedToolLibrary(), overrides, stations);
+                                                  core::io::shippedToolLibrary(), overrides, stations,
+                                                  folder.toStdString());
   JobToolsResult result;
   result.diagnostics = std::move(job.diagnostics);
   result.inference = std::move(job.inference);

@@ -984,8 +984,10 @@ void MainWindow::startCheckOn(const QString& text) {
   const int profileLimit = core::gcode::machineProfile(dialect_).maxToolStation;
   const int stations = profileLimit > 0 ? std::min(profileLimit, setup_.tools.stations) : setup_.tools.stations;
   options.turretStations = setup_.tools.stations;
+  const QString folder =
+      document_->filePath().isEmpty() ? QString() : QFileInfo(document_->filePath()).absolutePath();
   checkWatcher_.setFuture(QtConcurrent::run(checkWithTools, text, document_->gcodeFirstLine(), options, setup_,
-                                            toolOverrides_, stations));
+                                            toolOverrides_, stations, folder));
   QTimer::singleShot(300, this, &MainWindow::showBusyIndicator);
 }
 
@@ -1124,7 +1126,12 @@ void MainWindow::onCheckFailed(const QList<core::Diagnostic>& diags) {
              true);
   diagnostics_->show();
   diagnostics_->raise();
-  if (!diags.isEmpty()) editor_->goToFileLine(diags.front().range.line, diags.front().range.column);
+  // Go to the first error in the editor's own file (a subprogram file's are E412 on its call).
+  for (const auto& d : diags)
+    if (d.range.file == 0) {
+      editor_->goToFileLine(d.range.line, d.range.column);
+      break;
+    }
 }
 
 void MainWindow::showBanner(const QString& text, bool error) {

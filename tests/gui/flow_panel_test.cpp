@@ -12,6 +12,7 @@
 #include <QTreeWidget>
 
 #include "gui/code_editor.h"
+#include "gui/diagnostics_panel.h"
 #include "gui/flow_panel.h"
 #include "gui/main_window.h"
 #include "gui/resources.h"
@@ -66,6 +67,8 @@ class FlowPanelTest : public QObject {
     QVERIFY(QTest::qWaitForWindowExposed(&w));
     QVERIFY(w.openFile(main));
     QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    // The editor's check reads O1000.nc from the folder too: no "program not found".
+    QCOMPARE(w.diagnosticsPanel()->errorCount(), 0);
     RunController* run = w.runController();
     run->setSpeed(RunController::kAsFastAsPossible);
     auto stepAndWait = [&](const char* action) {
@@ -114,6 +117,25 @@ class FlowPanelTest : public QObject {
     QCOMPARE(w.editor()->executingFileLine(), 13);
     QCOMPARE(panel->callStack()->topLevelItemCount(), 1);
     QVERIFY(!panel->source()->isVisible());
+  }
+
+  void anErrorInTheSubprogramFileIsShownOnTheCall() {
+    QTemporaryDir dir;
+    const QString main = dir.filePath(QStringLiteral("grooves.nc"));
+    write(main, kMain);
+    write(dir.filePath(QStringLiteral("O1000.nc")), "O1000\nG01 X36. Y1. F0.05\nM99\n");
+    MainWindow w;
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.openFile(main));
+    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    QCOMPARE(w.diagnosticsPanel()->errorCount(), 1);
+    const auto& d = w.diagnosticsPanel()->diagnostics().front();
+    QCOMPARE(QString::fromStdString(d.code), QStringLiteral("E412"));
+    QCOMPARE(d.range.line, 12);     // M98 P1000 L2: the P word
+    QCOMPARE(d.range.column, 5);
+    QCOMPARE(QString::fromStdString(d.args.at(0)), QStringLiteral("O1000.nc"));
+    QCOMPARE(QString::fromStdString(d.args.at(3)), QStringLiteral("E201"));
   }
 
   void stepOverRunsACallWhole() {

@@ -143,6 +143,8 @@ constexpr MessageText kMessages[] = {
      "เขียนค่าลงใน #{0} ไม่ได้ (อ่านได้อย่างเดียวหรือไม่ใช่ตัวแปร)"},
     {"E411", "{0}: subprogram calls nest more than {1} levels deep",
      "{0}: การเรียกโปรแกรมย่อยซ้อนกันลึกเกิน {1} ชั้น"},
+    {"E412", "{0} has errors: the first is {3} at line {1}, column {2} of that file (open it to see them all)",
+     "{0} มีข้อผิดพลาด: ข้อแรกคือ {3} ที่บรรทัด {1} คอลัมน์ {2} ของไฟล์นั้น (เปิดไฟล์นั้นเพื่อดูทั้งหมด)"},
     {"W101", "{0} is not a standard M code: machine-specific, ignored",
      "{0} ไม่ใช่รหัส M มาตรฐาน: เป็นรหัสเฉพาะของเครื่อง จะไม่ถูกทำงาน"},
     {"W102", "G28 without axis words moves nothing: add U0. W0. to return to the reference point",

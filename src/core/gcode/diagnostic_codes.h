@@ -78,6 +78,7 @@ inline constexpr const char* kLoopsTooDeep = "E408";          // {0}=loop number
 inline constexpr const char* kLoopsCross = "E409";            // {0}=END word {1}=DO line
 inline constexpr const char* kReadOnlyVariable = "E410";      // {0}=variable
 inline constexpr const char* kCallsTooDeep = "E411";          // {0}=word {1}=limit
+inline constexpr const char* kSubprogramFileErrors = "E412";  // {0}=file {1}=line {2}=column {3}=code
 
 // W1xx warnings
 inline constexpr const char* kMachineSpecificM = "W101";    // {0}=word
@@ -122,6 +123,7 @@ inline constexpr const char* kAll[] = {
     kLoopsCross,
     kReadOnlyVariable,
     kCallsTooDeep,
+    kSubprogramFileErrors,
     kOutOfRange,
     kTooManyDecimals,
     kNotPositive,

@@ -2,14 +2,44 @@
 #include "klueng/core/machine/job_check.h"
 
 #include "klueng/core/gcode/dialect_fit.h"
+#include <algorithm>
+
 #include "klueng/core/gcode/parser.h"
+#include "klueng/core/gcode/program_index.h"
+#include "klueng/core/machine/subprogram_files.h"
 
 namespace klueng::core::machine {
 
+namespace {
+
+// The call in the program itself (file 0) that reaches subprogram file `file`.
+SourceRange callInto(const gcode::Program& program, int file) {
+  const gcode::ProgramIndex index(program);
+  const bool packed = true;
+  for (const gcode::Block& b : program.blocks) {
+    if (b.file != 0) break;
+    const gcode::Word* p = b.find('P');
+    if (!p || p->expr >= 0) continue;
+    for (const gcode::Word& w : b.words)
+      if ((w.letter == 'M' && w.code() == 98) || (w.letter == 'G' && (w.code() == 65 || w.code() == 66))) {
+        const gcode::CallTarget t = gcode::callTarget(p->value, std::nullopt, packed && w.letter == 'M');
+        const gcode::ProgramSection* s = index.program(t.number);
+        if (!s) s = index.program(static_cast<int>(p->value));
+        if (s && s->file == file) return p->range;
+      }
+  }
+  return SourceRange{program.blocks.empty() ? program.firstLine : program.blocks.front().line, 1, 0, 0};
+}
+
+}  // namespace
+
 JobCheck checkJob(std::string_view gcode, int firstLine, gcode::CheckOptions options, const MachineSetup& setup,
-                  const io::ToolLibrary& library, const std::vector<StationOverride>& overrides, int stations) {
+                  const io::ToolLibrary& library, const std::vector<StationOverride>& overrides, int stations,
+                  const std::string& folder) {
   JobCheck result;
-  const gcode::Program program = gcode::parse(gcode, firstLine);
+  gcode::Program program = gcode::parse(gcode, firstLine);
+  std::vector<Diagnostic> fileDiagnostics;
+  if (!folder.empty()) fileDiagnostics = attachSubprogramFiles(program, folder, options.dialect);
   result.inference = inferTools(program, gcode, firstLine, setup, library, overrides, stations);
   if (options.toolsWithBitmap) {
     std::vector<int> withBitmap;
@@ -18,6 +48,26 @@ JobCheck checkJob(std::string_view gcode, int firstLine, gcode::CheckOptions opt
     options.toolsWithBitmap = withBitmap;
   }
   result.diagnostics = gcode::check(program, options);
+  result.diagnostics.insert(result.diagnostics.end(), fileDiagnostics.begin(), fileDiagnostics.end());
+  // Errors in subprogram files: one E412 per file, on the call that reaches it.
+  std::vector<Diagnostic> own;
+  std::vector<int> reported;
+  for (Diagnostic& d : result.diagnostics) {
+    if (d.range.file == 0) {
+      own.push_back(std::move(d));
+      continue;
+    }
+    if (!isError(d.severity) || std::find(reported.begin(), reported.end(), d.range.file) != reported.end()) continue;
+    reported.push_back(d.range.file);
+    Diagnostic e;
+    e.severity = Severity::Error;
+    e.code = "E412";
+    e.range = callInto(program, d.range.file);
+    const std::string& path = program.files[static_cast<std::size_t>(d.range.file)];
+    e.args = {path.substr(path.find_last_of('/') + 1), std::to_string(d.range.line), std::to_string(d.range.column), d.code};
+    own.push_back(std::move(e));
+  }
+  result.diagnostics = std::move(own);
   // The dialect that accepts a program this one refuses (I102), for the offer bar.
   if (auto fit = gcode::suggestDialect(program, options, result.diagnostics)) {
     result.fit = fit->dialect;

@@ -4,6 +4,7 @@
 // tools, and the dialect that fits when this one refuses the program. The GUI
 // asks this instead of parsing G-code itself.
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -24,8 +25,13 @@ struct JobCheck {
 
 // options.toolsWithBitmap, when set, is replaced by the stations that have a
 // tool after inference.
+// `folder`: where subprogram files called by the program are read from
+// (machine/subprogram_files.h; empty = none). The editor shows one file, so an
+// error inside a subprogram file is reported once, as E412 on the call that
+// reaches that file.
 JobCheck checkJob(std::string_view gcode, int firstLine, gcode::CheckOptions options, const MachineSetup& setup,
-                  const io::ToolLibrary& library, const std::vector<StationOverride>& overrides, int stations);
+                  const io::ToolLibrary& library, const std::vector<StationOverride>& overrides, int stations,
+                  const std::string& folder = {});
 
 // inferStock on G-code text (parsed here).
 StockInference inferStockFromText(std::string_view gcode, int firstLine, const MachineSetup& setup,
