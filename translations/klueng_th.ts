@@ -3,6 +3,10 @@
 <context>
     <name>klueng::gui::CodeEditor</name>
     <message>
+        <source>(the last time this line ran)</source>
+        <translation>(ค่าเมื่อบรรทัดนี้ทำงานครั้งล่าสุด)</translation>
+    </message>
+    <message>
         <location filename="../src/gui/code_editor.cpp" line="278" />
         <source>&lt;b&gt;%1&lt;/b&gt;: not a code of this dialect</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;: ไม่มีรหัสนี้ในภาษาจีโค้ดแบบที่เลือก</translation>
@@ -284,6 +288,10 @@
 </context>
 <context>
     <name>klueng::gui::MainWindow</name>
+    <message>
+        <source>vacant (the address was left out)</source>
+        <translation>ว่าง (ไม่ได้ใช้ตำแหน่งนี้)</translation>
+    </message>
     <message>
         <source>Step &amp;Into</source>
         <translation>ทำงานเข้าไปใน&amp;โปรแกรมย่อย</translation>

@@ -267,6 +267,12 @@ QString CodeEditor::helpForPosition(int position) const {
   if (!letter.isLetter() || letter.unicode() >= 128) return {};
   int end = i + 1;
   while (end < text.size() && (text[end].isDigit() || text[end] == u'.' || text[end] == u'-' || text[end] == u'+')) ++end;
+  // X#101, Z-[#1+2.]: a macro expression; its value when the line last ran, if it has run.
+  QString lastValue;
+  if (end < text.size() && (text[end] == u'#' || text[end] == u'[') && wordValue_) {
+    const QString v = wordValue_(firstFileLine() + b.blockNumber(), i + 1);
+    if (!v.isEmpty()) lastValue = QStringLiteral("<br>= %1 ").arg(v.toHtmlEscaped()) + tr("(the last time this line ran)");
+  }
   const QString number = text.mid(i + 1, end - i - 1);
   const bool thai = Language::coreLang() == core::Lang::Th;
   if ((letter == u'G' || letter == u'M') && !number.isEmpty()) {
@@ -302,7 +308,7 @@ QString CodeEditor::helpForPosition(int position) const {
     case 'Q': what = tr("cycle parameter"); break;
     default: return {};
   }
-  return QStringLiteral("<b>%1%2</b> — %3").arg(QString(letter), number.toHtmlEscaped(), what);
+  return QStringLiteral("<b>%1%2</b> — %3").arg(QString(letter), number.toHtmlEscaped(), what) + lastValue;
 }
 
 bool CodeEditor::viewportEvent(QEvent* event) {

@@ -10,6 +10,7 @@
 // diagnostics and timeline use.
 #include <QList>
 #include <QPlainTextEdit>
+#include <functional>
 
 #include "klueng/core/diagnostic.h"
 #include "klueng/core/gcode/code_table.h"
@@ -30,6 +31,9 @@ class CodeEditor : public QPlainTextEdit {
   int fileLineFromBlock(int blockNumber) const { return blockNumber + firstFileLine_; }
 
   void setDialect(core::gcode::Dialect d) { dialect_ = d; }
+  // The value an expression word (X#101) had the last time its line ran: set by
+  // the main window from the run (file line, 1-based column -> text, or empty).
+  void setWordValueLookup(std::function<QString(int fileLine, int column)> lookup) { wordValue_ = std::move(lookup); }
 
   // Underline every diagnostic that falls on a G-code line (others are ignored here).
   void setDiagnostics(const std::vector<core::Diagnostic>& diags);
@@ -79,6 +83,7 @@ class CodeEditor : public QPlainTextEdit {
   int executingLine_ = 0;
   int breakpointCount_ = 0;
   core::gcode::Dialect dialect_ = core::gcode::Dialect::Fanuc;
+  std::function<QString(int, int)> wordValue_;
 };
 
 }  // namespace klueng::gui

@@ -36,6 +36,8 @@
 #include "gui/dialect_offer_bar.h"
 #include "gui/find_dialog.h"
 #include "gui/flow_panel.h"
+#include "klueng/core/gcode/macro.h"
+#include "klueng/core/machine/flow_view.h"
 #include "gui/help_contents.h"
 #include "gui/job_details_dialog.h"
 #include "gui/language.h"
@@ -209,6 +211,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   });
 
   connect(runner_, &RunController::executingLineChanged, editor_, &CodeEditor::setExecutingLine);
+  editor_->setWordValueLookup([this](int fileLine, int column) -> QString {
+    const core::machine::Timeline* t = runner_->timeline();
+    if (!t || runner_->currentSnapshot() < 0) return {};
+    const auto v = core::machine::wordValueAt(*t, runner_->currentSnapshot(), 0, fileLine, column);
+    if (!v) return {};
+    return v->vacant ? tr("vacant (the address was left out)") : QString::fromStdString(core::gcode::macroNumberText(v->value));
+  });
   connect(runner_, &RunController::statusChanged, statusFields_, &StatusFields::setStatus);
   connect(runner_, &RunController::statusChanged, statusLamps_, &StatusLamps::setStatus);
   connect(runner_, &RunController::stateChanged, this, &MainWindow::onRunStateChanged);

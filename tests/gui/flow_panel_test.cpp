@@ -9,6 +9,7 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTextBlock>
 #include <QTreeWidget>
 
 #include "gui/code_editor.h"
@@ -136,6 +137,24 @@ class FlowPanelTest : public QObject {
     QCOMPARE(d.range.column, 5);
     QCOMPARE(QString::fromStdString(d.args.at(0)), QStringLiteral("O1000.nc"));
     QCOMPARE(QString::fromStdString(d.args.at(3)), QStringLiteral("E201"));
+  }
+
+  void hoveringAnExpressionWordShowsItsLastValue() {
+    MainWindow w;
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    w.editor()->setPlainText(QStringLiteral("G21 G98\n#1 = 25.\nG00 X#1 Z10.\nM30\n"));
+    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    RunController* run = w.runController();
+    run->setSpeed(RunController::kAsFastAsPossible);
+    const int xAt = w.editor()->document()->findBlockByNumber(2).position() + 4;  // the X of "G00 X#1"
+    QVERIFY(!w.editor()->helpForPosition(xAt).contains(QStringLiteral("= 25")));  // not run yet
+    w.action(QStringLiteral("actionGo"))->trigger();
+    QVERIFY(QTest::qWaitFor([run] { return run->state() == RunState::Finished; }, 30000));
+    const QString help = w.editor()->helpForPosition(xAt);
+    QVERIFY2(help.contains(QStringLiteral("= 25 ")), qPrintable(help));
+    QVERIFY(help.contains(QStringLiteral("X position")));
   }
 
   void stepOverRunsACallWhole() {
