@@ -1114,6 +1114,24 @@ void MainWindow::onRunStateChanged(RunState state) {
       showDiagnostics();
     }
   }
+  // The run's notices (a vacant address left out, M99 in the main program, a
+  // #3006 stop message) up to where it stands, for lines of this file.
+  if ((state == RunState::Paused || state == RunState::Finished) && runner_->timeline()) {
+    const core::machine::Timeline& t = *runner_->timeline();
+    const int upTo = runner_->currentSnapshot() < 0 ? -1 : t.snapshots[static_cast<std::size_t>(runner_->currentSnapshot())].line;
+    bool added = false;
+    for (const core::Diagnostic& n : t.flow.notices) {
+      if (n.range.file != 0 || (state == RunState::Paused && n.range.line > upTo)) continue;
+      const bool seen = std::any_of(runDiagnostics_.begin(), runDiagnostics_.end(), [&n](const core::Diagnostic& d) {
+        return d.code == n.code && d.range == n.range;
+      });
+      if (!seen) {
+        runDiagnostics_.push_back(n);
+        added = true;
+      }
+    }
+    if (added) showDiagnostics();
+  }
 }
 
 void MainWindow::onAlarm(const core::Diagnostic& alarm) {
