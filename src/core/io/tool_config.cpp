@@ -282,17 +282,19 @@ std::string formatOffsetTable(const OffsetTable& t) {
 
 namespace {
 
-enum class Rule { Any, Positive, NonNegative, Stations };
+enum class Rule { Any, Positive, NonNegative, Stations, Count };
 
 struct MachineKey {
   const char* name;
-  double MachineConfig::*field;  // nullptr: an int field (turret_stations)
+  double MachineConfig::*field;  // nullptr: a whole-number field (count)
   Rule rule;
   const char* comment;
+  int MachineConfig::*count = nullptr;
 };
 
 constexpr int kMinTurretStations = 1;
 constexpr int kMaxTurretStations = 24;
+constexpr int kMaxBlockLimit = 100000000;
 
 constexpr MachineKey kMachineKeys[] = {
     {"rapid_x", &MachineConfig::rapidX, Rule::Positive, "X rapid rate, mm/min (radial)"},
@@ -311,7 +313,12 @@ constexpr MachineKey kMachineKeys[] = {
      "radial height of the jaws above the stock, mm"},
     {"spindle_bore", &MachineConfig::spindleBore, Rule::NonNegative,
      "through-hole of the spindle and chuck (diameter, mm): drills may pass the part's end into it"},
-    {"turret_stations", nullptr, Rule::Stations, "tool stations on the turret (1 to 24)"},
+    {"turret_stations", nullptr, Rule::Stations, "tool stations on the turret (1 to 24)", &MachineConfig::turretStations},
+    {"max_blocks", nullptr, Rule::Count,
+     "a program that loops without end stops after this many blocks run again by a loop, jump or call",
+     &MachineConfig::maxBlocks},
+    {"max_run_time", &MachineConfig::maxRunTime, Rule::Positive,
+     "... or after this much simulated machining time, seconds"},
 };
 
 }  // namespace
@@ -370,11 +377,14 @@ ReadResult<MachineConfig> parseMachineConfig(std::string_view text, const std::s
                                      {fileName, std::string(key), std::string(value)}));
       continue;
     }
-    if (entry->rule == Rule::Stations &&
-        (*number != std::floor(*number) || *number < kMinTurretStations || *number > kMaxTurretStations)) {
+    const bool stations = entry->rule == Rule::Stations;
+    if ((stations || entry->rule == Rule::Count) &&
+        (*number != std::floor(*number) || *number < (stations ? kMinTurretStations : 1) ||
+         *number > (stations ? kMaxTurretStations : kMaxBlockLimit))) {
       diags.push_back(makeDiagnostic(Severity::Error, "F147", lineNumber, valueColumn, utf8Length(value),
                                      {fileName, std::string(key), std::string(value),
-                                      std::to_string(kMinTurretStations), std::to_string(kMaxTurretStations)}));
+                                      std::to_string(stations ? kMinTurretStations : 1),
+                                      std::to_string(stations ? kMaxTurretStations : kMaxBlockLimit)}));
       continue;
     }
     if (lineOfKey.count(entry->name))
@@ -382,7 +392,7 @@ ReadResult<MachineConfig> parseMachineConfig(std::string_view text, const std::s
                                      utf8Length(key), {fileName, std::string(key)}));
     lineOfKey[entry->name] = lineNumber;
     if (entry->field) config.*(entry->field) = *number;
-    else config.turretStations = static_cast<int>(*number);
+    else config.*(entry->count) = static_cast<int>(*number);
   }
 
   const auto checkRange = [&](const char* minKey, double MachineConfig::*min, const char* maxKey,
@@ -417,7 +427,7 @@ std::string formatMachineConfig(const MachineConfig& m) {
   for (const MachineKey& k : kMachineKeys) {
     if (k.comment) out += fmt::format("\n# {}\n", k.comment);
     out += fmt::format("{} = {}\n", k.name,
-                       k.field ? detail::formatNumber(m.*(k.field)) : std::to_string(m.turretStations));
+                       k.field ? detail::formatNumber(m.*(k.field)) : std::to_string(m.*(k.count)));
   }
   return out;
 }

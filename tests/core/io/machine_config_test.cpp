@@ -47,3 +47,30 @@ TEST(MachineConfigKeys, BadValues) {
 
 }  // namespace
 }  // namespace klueng::core::io
+
+namespace klueng::core::io {
+namespace {
+
+// Issue 9: the endless-loop limits of program flow.
+TEST(MachineConfigLoopLimits, ReadTheirKeysAndRefuseNonsense) {
+  auto r = parseMachineConfig("max_blocks = 5000\nmax_run_time = 600\n", "machine.cfg");
+  ASSERT_TRUE(r.ok());
+  EXPECT_EQ(r.value->maxBlocks, 5000);
+  EXPECT_DOUBLE_EQ(r.value->maxRunTime, 600.0);
+  r = parseMachineConfig("max_blocks = 0\nmax_run_time = -1\nmax_blocks = 2.5\n", "machine.cfg");
+  ASSERT_EQ(r.diagnostics.size(), 3u);
+  EXPECT_EQ(r.diagnostics[0].code, "F147");
+  EXPECT_EQ(r.diagnostics[0].range.line, 1);
+  EXPECT_EQ(r.diagnostics[1].code, "F143");
+  EXPECT_EQ(r.diagnostics[2].code, "F147");
+  EXPECT_EQ(r.value->maxBlocks, MachineConfig{}.maxBlocks);
+  // The shipped machine.cfg writes the defaults back unchanged.
+  const MachineConfig d;
+  const auto again = parseMachineConfig(formatMachineConfig(d), "machine.cfg");
+  ASSERT_TRUE(again.ok());
+  EXPECT_EQ(again.value->maxBlocks, 200000);
+  EXPECT_DOUBLE_EQ(again.value->maxRunTime, 36000.0);
+}
+
+}  // namespace
+}  // namespace klueng::core::io
