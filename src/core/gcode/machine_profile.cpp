@@ -65,7 +65,8 @@ constexpr MachineProfile kProfiles[] = {
         .unknownMIsWarning = true,
         .cycles = kFanucCycles,
         // Fanuc 0i-TF manual: subprograms nest 10 deep, macro calls 5; M98 P packs the repeats.
-        .flow = {.macroB = true, .packedRepeats = true, .maxSubprogramNesting = 10, .maxMacroNesting = 5, .programsInOneFile = true},
+        .flow = {.macroB = true, .packedRepeats = true, .maxSubprogramNesting = 10, .maxMacroNesting = 5, .programsInOneFile = true,
+                  .dwellBeforeCornerMove = false},
     },
     {
         .dialect = Dialect::Haas,
@@ -94,7 +95,8 @@ constexpr MachineProfile kProfiles[] = {
         .unknownMIsWarning = true,
         .cycles = kHaasCycles,
         // Haas lathe manual: 5-digit O numbers, so P is the program and L the repeats.
-        .flow = {.macroB = true, .packedRepeats = false, .maxSubprogramNesting = 10, .maxMacroNesting = 5, .programsInOneFile = true},
+        .flow = {.macroB = true, .packedRepeats = false, .maxSubprogramNesting = 10, .maxMacroNesting = 5, .programsInOneFile = true,
+                  .dwellBeforeCornerMove = true},
     },
     {
         .dialect = Dialect::Classic,
@@ -123,7 +125,8 @@ constexpr MachineProfile kProfiles[] = {
         .unknownMIsWarning = false,
         .cycles = kFanucCycles,
         // The 1999 rules: M98/M99 only, no macros.
-        .flow = {.macroB = false, .packedRepeats = true, .maxSubprogramNesting = 10, .maxMacroNesting = 0, .programsInOneFile = false},
+        .flow = {.macroB = false, .packedRepeats = true, .maxSubprogramNesting = 10, .maxMacroNesting = 0, .programsInOneFile = false,
+                  .dwellBeforeCornerMove = false},
     },
 };
 

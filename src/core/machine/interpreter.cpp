@@ -195,7 +195,10 @@ bool Interpreter::executeBlock() {
   updateRpm();
 
   // A chamfer or corner waits for a move in the very next block.
-  if (corner_.active && corner_.blockIndex != blockIndex_) return cornerNeedsMove();
+  if (corner_.active && corner_.blockIndex != blockIndex_) {
+    const bool dwellOnly = oneShotG && oneShotG->info->number == 4 && !motionG && mCount == 0;
+    if (!(dwellOnly && profile_.flow.dwellBeforeCornerMove)) return cornerNeedsMove();
+  }
   if (const Word* t = find('T')) lastT_ = t->code();
   if (const Word* n = find('N')) lastN_ = n->code();
   if (mCount > 0) lastM_ = ms[mCount - 1].info->number;

@@ -85,6 +85,20 @@ TEST(Corner, TheNextBlockMustMove) {
   EXPECT_EQ(t.alarm->code, "A144");
 }
 
+TEST(Corner, HaasLetsADwellComeBetweenTheTwoMoves) {
+  const std::string text = "G21 G98 G00 X20. Z0.\nG01 X30. ,C2. F100.\nG04 P500\nZ-20.\n";
+  RunOptions haas;
+  haas.dialect = gcode::Dialect::Haas;
+  Timeline t = runText(text, haas);
+  ASSERT_FALSE(t.alarm) << t.alarm->code;
+  const auto c = cuts(t);
+  ASSERT_EQ(c.size(), 4u);  // the dwell, then the cut short face, the chamfer, the diameter
+  EXPECT_POINT(c.back()->path.start, 30.0, -2.0);
+  t = runText(text);  // Fanuc: the move must come next
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->code, "A144");
+}
+
 TEST(Corner, ACornerLongerThanAMoveIsAnAlarm) {
   Timeline t = runText("G98 G00 X20. Z0.\nG01 X24. ,C3. F100.\nZ-20.\n");  // the face is 2 mm
   ASSERT_TRUE(t.alarm);

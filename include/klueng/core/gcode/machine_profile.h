@@ -69,6 +69,9 @@ struct FlowSettings {
   int maxSubprogramNesting;   // M98/M97 levels below the main program
   int maxMacroNesting;        // G65/G66 levels
   bool programsInOneFile;     // an O block alone may start a subprogram anywhere in a file (else first block only)
+  // ,C / ,R on G01: a G04 dwell may come between the corner's two moves (Haas
+  // lathe manual, "Corner rounding and chamfering"); Fanuc wants the move next.
+  bool dwellBeforeCornerMove;
 };
 
 struct MachineProfile {
