@@ -120,48 +120,36 @@ class Reader {
     return true;
   }
 
-  bool additive(int depth) {
-    if (!term(depth)) return false;
-    for (;;) {
-      const char c = peek();
-      ExprOp op;
-      std::size_t len = 1;
-      if (c == '+') op = ExprOp::Add;
-      else if (c == '-') op = ExprOp::Sub;
-      else if (std::isalpha(static_cast<unsigned char>(c))) {
-        const std::string w = letterWord();
-        if (w == "OR") op = ExprOp::Or;
-        else if (w == "XOR") op = ExprOp::Xor;
-        else return true;
-        len = w.size();
-      } else {
-        return true;
-      }
-      i_ += len;
-      if (!term(depth)) return false;
-      emit(op);
-    }
-  }
+  bool additive(int depth) { return binary(depth, 2); }
 
-  bool term(int depth) {
-    if (!unary(depth)) return false;
+  // One level of left-associative binary operators: 2 = + - OR XOR, 3 = * / AND MOD.
+  bool binary(int depth, int level) {
+    const auto operand = [&] { return level == 3 ? unary(depth) : binary(depth, 3); };
+    if (!operand()) return false;
     for (;;) {
       const char c = peek();
-      ExprOp op;
+      ExprOp op = ExprOp::Add;
       std::size_t len = 1;
-      if (c == '*') op = ExprOp::Mul;
-      else if (c == '/') op = ExprOp::Div;
-      else if (std::isalpha(static_cast<unsigned char>(c))) {
+      bool found = true;
+      if (level == 2 && (c == '+' || c == '-')) {
+        op = c == '+' ? ExprOp::Add : ExprOp::Sub;
+      } else if (level == 3 && (c == '*' || c == '/')) {
+        op = c == '*' ? ExprOp::Mul : ExprOp::Div;
+      } else if (std::isalpha(static_cast<unsigned char>(c))) {
         const std::string w = letterWord();
-        if (w == "AND") op = ExprOp::And;
-        else if (w == "MOD") op = ExprOp::Mod;
-        else return true;
-        len = w.size();
+        found = false;
+        for (const Operator& o : kWordOperators)
+          if (o.level == level && w == o.name) {
+            op = o.op;
+            len = w.size();
+            found = true;
+          }
       } else {
-        return true;
+        found = false;
       }
+      if (!found) return true;
       i_ += len;
-      if (!unary(depth)) return false;
+      if (!operand()) return false;
       emit(op);
     }
   }

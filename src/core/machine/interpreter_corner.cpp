@@ -74,15 +74,8 @@ bool Interpreter::holdCorner(const Segment& path, const Word* where) {
 }
 
 bool Interpreter::cornerNeedsMove() {
-  const SourceRange at = corner_.where;
-  const std::string text = corner_.text;
   corner_.active = false;
-  Diagnostic d;
-  d.severity = Severity::Alarm;
-  d.code = "A144";
-  d.range = at;
-  d.args = {text};
-  sink_.alarm(d);
+  sink_.alarm(Diagnostic{Severity::Alarm, "A144", corner_.where, {corner_.text}});
   return false;
 }
 
@@ -107,15 +100,11 @@ bool Interpreter::cutHeldCorner(const Segment& path, Vec2& start, const Word* wh
   const double len1 = (first.end - first.start).norm();
   const Vec2 d1 = unitVector(first.end - first.start);
   const Vec2 d2 = startDirection(path);
-  const auto tooLong = [&]() {
-    Diagnostic d;
-    d.severity = Severity::Alarm;
-    d.code = "A145";
-    d.range = held.where;
-    d.args = {held.text};
-    sink_.alarm(d);
+  const auto alarm = [&](const char* code) {
+    sink_.alarm(Diagnostic{Severity::Alarm, code, held.where, {held.text}});
     return false;
   };
+  const auto tooLong = [&]() { return alarm("A145"); };
   Vec2 p1, p2;
   std::optional<Segment> round;
   if (held.kind == 'C') {
@@ -127,16 +116,8 @@ bool Interpreter::cutHeldCorner(const Segment& path, Vec2& start, const Word* wh
   } else {
     // A tangent arc of radius r between two lines: its ends lie r * tan(theta/2)
     // from the corner, theta the turn between the two directions.
-    if (path.isArc()) {
-      // Corner R into an arc: the control rounds it too; the simulation needs the two lines.
-      Diagnostic d;
-      d.severity = Severity::Alarm;
-      d.code = "A146";
-      d.range = held.where;
-      d.args = {held.text};
-      sink_.alarm(d);
-      return false;
-    }
+    // Corner R into an arc: the control rounds it too; the simulation needs the two lines.
+    if (path.isArc()) return alarm("A146");
     const double cross = d1.x() * d2.y() - d1.y() * d2.x();
     const double dot = std::clamp(d1.dot(d2), -1.0, 1.0);
     const double theta = std::acos(dot);
