@@ -289,6 +289,14 @@
 <context>
     <name>klueng::gui::MainWindow</name>
     <message>
+        <source>Cannot save over this file</source>
+        <translation>บันทึกทับไฟล์นี้ไม่ได้</translation>
+    </message>
+    <message>
+        <source>Line %1 of "%2" is too long to edit, so it is not in the editor. Saving over the file would delete it: use Save As to write your version to another file.</source>
+        <translation>บรรทัดที่ %1 ของ "%2" ยาวเกินกว่าจะแก้ไขได้ จึงไม่ได้แสดงในหน้าต่างแก้ไข การบันทึกทับไฟล์จะทำให้บรรทัดนั้นหายไป ให้ใช้ "บันทึกเป็น" เพื่อบันทึกเป็นไฟล์ใหม่</translation>
+    </message>
+    <message>
         <source>vacant (the address was left out)</source>
         <translation>ว่าง (ไม่ได้ใช้ตำแหน่งนี้)</translation>
     </message>

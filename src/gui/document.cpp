@@ -59,6 +59,12 @@ bool Document::reinferStock(const QString& gcode, const core::machine::MachineSe
   return changed;
 }
 
+int Document::firstOmittedLine() const {
+  for (const core::Diagnostic& d : fileDiagnostics_)
+    if (d.code == "F106") return d.range.line;
+  return 0;
+}
+
 void Document::reset(const core::io::JobHeader& header) {
   file_ = core::io::ProgramFile{};
   file_.header = header;

@@ -73,6 +73,9 @@ class Document : public QObject {
   int gcodeFirstLine() const { return file_.gcodeFirstLine; }
   // Diagnostics of the header and file format from the last load (F1xx, rule 13).
   const std::vector<core::Diagnostic>& fileDiagnostics() const { return fileDiagnostics_; }
+  // The first line the reader left out because it is too long to edit (F106),
+  // 0 when none: saving over the file would lose it, so the window refuses.
+  int firstOmittedLine() const;
 
   bool isHeaderModified() const { return headerModified_; }
 

@@ -887,6 +887,16 @@ bool MainWindow::saveAs() {
 }
 
 bool MainWindow::saveFile(const QString& path) {
+  // A line too long to edit was left out of the editor: writing over the file would delete it.
+  if (const int omitted = document_->firstOmittedLine();
+      omitted > 0 && QFileInfo(path).absoluteFilePath() == QFileInfo(document_->filePath()).absoluteFilePath()) {
+    QMessageBox::warning(this, tr("Cannot save over this file"),
+                         tr("Line %1 of \"%2\" is too long to edit, so it is not in the editor. Saving over the file "
+                            "would delete it: use Save As to write your version to another file.")
+                             .arg(omitted)
+                             .arg(document_->displayName()));
+    return false;
+  }
   // A file still going into the editor is saved whole: put the rest in first.
   if (fillingEditor_) {
     QTextCursor c(editor_->document());

@@ -2,6 +2,7 @@
 // the file is read and checked off the GUI thread. The test asserts behaviour
 // (all lines in the editor, the checker's verdict, the window kept serving its
 // event loop) and prints the longest event-loop stall as a measurement.
+#include <QApplication>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QStandardPaths>
@@ -51,6 +52,41 @@ class LargeProgramTest : public QObject {
     QVERIFY(f.readAll() == original);
     QVERIFY(!w.editor()->document()->isModified());
     QVERIFY(w.editor()->blockCount() >= 200000);
+  }
+
+  // Issue 13: a line over 4096 characters is left out of the editor (F106);
+  // an edit plus Save used to delete it from disk. Saving over it is refused now.
+  void aLineTooLongToEditIsNeverSavedAway() {
+    QTemporaryDir tmp;
+    const QString path = tmp.filePath(QStringLiteral("long.nc"));
+    const QByteArray original = "O0001\nG21 G99\n(" + QByteArray(5000, 'x') + ")\nG00 X50. Z5.\nM30\n";
+    {
+      QFile f(path);
+      QVERIFY(f.open(QIODevice::WriteOnly));
+      f.write(original);
+    }
+    MainWindow w;
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.openFile(path));
+    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    QTextCursor c(w.editor()->document());
+    c.movePosition(QTextCursor::End);
+    c.insertText(QStringLiteral("(edited)\n"));
+    QVERIFY(w.editor()->document()->isModified());
+    bool warned = false;
+    QTimer::singleShot(200, [&warned] {
+      if (QWidget* box = QApplication::activeModalWidget()) {
+        warned = true;
+        box->close();
+      }
+    });
+    QVERIFY(!w.save());
+    QVERIFY(warned);
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    QVERIFY(f.readAll() == original);
+    QVERIFY(w.editor()->document()->isModified());  // the edit is still there to Save As
   }
 
   void hundredThousandLinesOpenAndCheckInTheBackground() {
