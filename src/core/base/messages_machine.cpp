@@ -99,6 +99,8 @@ constexpr MessageText kMessages[] = {
      "{0}: ไม่สามารถเคลื่อนที่ตามมุมที่กำหนดจากตำแหน่งนี้ได้ (,A)"},
     {"A147", "#3006 stop: {0}",
      "#3006 หยุดชั่วคราว: {0}"},
+    {"A148", "{0}: the profile holds a macro expression or statement at line {1}; the simulator reads cycle profiles as numbers only",
+     "{0}: รูปร่างชิ้นงานมีนิพจน์หรือคำสั่งมาโครที่บรรทัด {1} โปรแกรมจำลองอ่านรูปร่างของวัฏจักรได้เฉพาะค่าตัวเลข"},
     {"I160", "M99 at the end of the main program: the control runs it again from the start; the simulation stops after one repeat",
      "M99 ท้ายโปรแกรมหลัก: เครื่องจริงจะวนกลับไปทำงานใหม่ตั้งแต่ต้น แต่การจำลองจะหยุดหลังวนซ้ำหนึ่งรอบ"},
     {"W130", "{0}: #{1} is vacant, so the control omits the address {2} from this block",

@@ -80,6 +80,9 @@ std::optional<CycleAlarm> readProfile(const CycleInput& in, const Block& cycle, 
   for (int i = out.ns; i <= out.nf; ++i) {
     const Block& b = in.program->blocks[static_cast<std::size_t>(i)];
     if (b.blockSkip && in.blockSkip) continue;
+    // The cycle reads its profile as written: a macro value there is not known to it.
+    if (b.hasExpressions || b.statement.kind != gcode::StatementKind::None)
+      return alarmAt("A148", in.gWord, cycle, {g, std::to_string(b.line)});
     const Word* motionWord = nullptr;
     for (const Word& w : b.words) {
       if (w.letter != 'G' || w.hasDecimalPoint) continue;

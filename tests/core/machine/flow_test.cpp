@@ -300,3 +300,18 @@ TEST(FlowRun, CodesFromVariablesAreRefusedNotCrashedOn) {
 
 }  // namespace
 }  // namespace klueng::core::machine
+
+namespace klueng::core::machine {
+namespace {
+
+TEST(FlowRun, ACycleProfileWithAMacroValueIsAnAlarmNotAWrongPart) {
+  const Timeline t = runText(
+      "G98 G97 S500 M03\nG00 X50. Z2.\n#1=30.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 F100.\nN10 G00 X#1\nG01 Z-20.\nN20 X50.\n");
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->code, "A148");
+  EXPECT_EQ(t.alarm->range.line, 5);
+  EXPECT_EQ(t.alarm->args.at(1), "6");
+}
+
+}  // namespace
+}  // namespace klueng::core::machine
