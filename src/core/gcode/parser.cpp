@@ -293,7 +293,9 @@ class LineParser {
            startsWithKeyword(s, "PCLOS") || startsWithKeyword(s, "DPRNT") || startsWithKeyword(s, "BPRNT");
   }
 
+  // X#1, X-[#1+2.], and with blanks between as a control reads them: "X [#1 + 2.]".
   bool startsAddressExpression(std::size_t i) const {
+    while (i < line_.size() && isBlank(static_cast<unsigned char>(line_[i]))) ++i;
     if (i >= line_.size()) return false;
     char c = line_[i];
     if ((c == '-' || c == '+') && i + 1 < line_.size()) c = line_[i + 1];
@@ -336,7 +338,9 @@ class LineParser {
     if (index < 0) return c;
     Word& w = words_.emplace_back();
     w.letter = letter;
-    w.number.assign(line_.substr(exprStart, i - exprStart));
+    std::size_t from = exprStart;
+    while (from < i && isBlank(static_cast<unsigned char>(line_[from]))) ++from;
+    w.number.assign(line_.substr(from, i - from));
     w.expr = index;
     w.hasDecimalPoint = true;
     w.range = SourceRange{lineNumber_, col, c - col, file_};

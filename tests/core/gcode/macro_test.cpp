@@ -166,5 +166,14 @@ TEST(MacroStatements, ParseIntoStatementsWithTheirColumns) {
   EXPECT_EQ(p.blocks[7].statement.kind, StatementKind::Output);
 }
 
+TEST(MacroStatements, BlanksMayStandBetweenAnAddressAndItsExpression) {
+  const Program p = parse("G01 X [#1 + 2.] Z -#2\n");
+  ASSERT_TRUE(p.lexicalDiagnostics.empty()) << p.lexicalDiagnostics.front().code;
+  ASSERT_EQ(p.blocks[0].words.size(), 3u);
+  EXPECT_EQ(p.blocks[0].words[1].text(), "X[#1 + 2.]");
+  EXPECT_EQ(p.blocks[0].words[1].range, (SourceRange{1, 5, 11}));
+  EXPECT_EQ(p.blocks[0].words[2].text(), "Z-#2");
+}
+
 }  // namespace
 }  // namespace klueng::core::gcode
