@@ -7,6 +7,7 @@
 #include "klueng/core/gcode/checker.h"
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/machine/flow_view.h"
+#include "klueng/core/machine/job.h"
 #include "klueng/core/machine/subprogram_files.h"
 
 namespace klueng::gui {
@@ -284,41 +285,17 @@ void RunController::prepareAndThen(Pending what) {
   options.optionalStop = true;   // record every M01; the switch decides while playing
   prepareWatcher_.setFuture(QtConcurrent::run([file, setup, options, folder]() {
     auto result = std::make_shared<Prepared>();
-    core::gcode::Program program = core::gcode::parse(file.gcode, file.gcodeFirstLine);
-    // The folder is the control's memory: called programs come from there.
-    std::vector<core::Diagnostic> fileDiags;
-    if (!folder.empty()) fileDiags = machine::attachSubprogramFiles(program, folder, options.dialect);
-    result->files = program.files;
-    core::gcode::CheckOptions check;
-    check.dialect = options.dialect;
-    check.powerOnUnits = options.powerOnUnits;
-    check.turretStations = setup.tools.stations;
-    std::vector<int> withBitmap;
-    for (int t = 1; t <= core::io::kToolCount; ++t)
-      if (!setup.tools.bitmap[static_cast<std::size_t>(t - 1)].empty()) withBitmap.push_back(t);
-    check.toolsWithBitmap = withBitmap;
-    std::vector<core::Diagnostic> diags = core::gcode::check(program, check);
-    diags.insert(diags.end(), fileDiags.begin(), fileDiags.end());
-    if (file.header.diameter <= 0 || file.header.length <= 0) {
-      // Stock size problems are reported by the file reader; the run needs a bar.
-      core::Diagnostic d;
-      d.code = file.header.diameter <= 0 ? "F115" : "F116";
-      d.range.line = file.header.diameter <= 0 ? 4 : 5;
-      d.range.column = 1;
-      diags.push_back(d);
-    }
-    if (core::hasErrors(diags)) {
-      for (auto& d : diags) result->errors.push_back(d);
+    machine::JobOptions job;
+    job.run = options;
+    job.folder = folder;
+    machine::CompiledJob compiled = machine::compileJob(file, setup, job);
+    result->files = compiled.program.files;
+    if (compiled.hasErrors()) {
+      for (auto& d : compiled.diagnostics) result->errors.push_back(d);
       return result;
     }
-    result->timeline = std::make_shared<machine::Timeline>(machine::interpret(program, setup, options));
-    for (const auto& snap : result->timeline->snapshots) {
-      bool m01 = false;
-      if (snap.blockIndex >= 0 && snap.blockIndex < static_cast<int>(program.blocks.size()))
-        for (const auto* m : program.blocks[static_cast<std::size_t>(snap.blockIndex)].all('M'))
-          if (!m->hasDecimalPoint && m->code() == 1) m01 = true;
-      result->optionalStopBlock.push_back(m01 ? 1 : 0);
-    }
+    result->timeline = std::make_shared<machine::Timeline>(std::move(*compiled.timeline));
+    for (const auto& snap : result->timeline->snapshots) result->optionalStopBlock.push_back(snap.optionalStop ? 1 : 0);
     return result;
   }));
 }

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "klueng/core/cut/cut_simulator.h"
+#include "klueng/core/machine/job.h"
 #include "klueng/core/gcode/checker.h"
-#include "klueng/core/gcode/parser.h"
 
 #ifndef KLUENG_VERSION
 #define KLUENG_VERSION "0"
@@ -163,22 +163,16 @@ StockShape finishedPart(const core::io::ProgramFile& file, const core::machine::
     if (note) *note = thai(lang) ? QStringLiteral("ขนาดชิ้นงานไม่ถูกต้อง") : QStringLiteral("The stock size is not valid.");
     return blank;
   }
-  const core::gcode::Program program = core::gcode::parse(file.gcode, file.gcodeFirstLine);
-  core::gcode::CheckOptions check;
-  check.dialect = dialect;
-  std::vector<int> withBitmap;
-  for (int t = 1; t <= core::io::kToolCount; ++t)
-    if (!setup.tools.bitmap[static_cast<std::size_t>(t - 1)].empty()) withBitmap.push_back(t);
-  if (!withBitmap.empty()) check.toolsWithBitmap = withBitmap;   // no tools.cfg read: not checked
-  if (core::hasErrors(core::gcode::check(program, check))) {
+  core::machine::JobOptions job;
+  job.run.dialect = dialect;
+  const core::machine::CompiledJob compiled = core::machine::compileJob(file, setup, job);
+  if (!compiled.timeline) {
     if (note)
       *note = thai(lang) ? QStringLiteral("โปรแกรมมีข้อผิดพลาด: ภาพนี้แสดงชิ้นงานก่อนกลึง")
                          : QStringLiteral("The program has errors: the drawing shows the uncut bar.");
     return blank;
   }
-  core::machine::RunOptions options;
-  options.dialect = dialect;
-  const core::machine::Timeline timeline = core::machine::interpret(program, setup, options);
+  const core::machine::Timeline& timeline = *compiled.timeline;
   core::cut::CutSimulator cut(timeline, core::cut::CutSetup::from(file.header, setup));
   cut.runToEnd();
   if (cut.alarm() && note)

@@ -218,6 +218,8 @@ void Interpreter::emitSnapshot() {
   snap.machine = mach_;
   snap.machine.position = pos_;
   snap.stopped = stopped_;
+  snap.optionalStop = optionalStopBlock_;
+  optionalStopBlock_ = false;
   sink_.blockDone(snap);
   ++snapshots_;
   if (stopped_ && stopEndsRun_) ended_ = true;
@@ -304,6 +306,7 @@ bool Interpreter::mCode(const CodeWord& c) {
       mach_.threadChamfer = n == 23;
       return true;
     case ModalGroup::MProgram:
+      if (n == 1) optionalStopBlock_ = true;
       if (n == 1 && !options_.optionalStop) return true;
       stopped_ = true;
       stopEndsRun_ = n == 2 || n == 30 || options_.stopAtM00;

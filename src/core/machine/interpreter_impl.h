@@ -258,6 +258,7 @@ class Interpreter final : public gcode::MacroVariables {
   cycles::CycleMemory cycleMemory_;
   bool stopped_ = false;
   bool stopEndsRun_ = false;
+  bool optionalStopBlock_ = false;     // this block holds M01
   bool ended_ = false;
 
   // Program flow (interpreter_flow.cpp).

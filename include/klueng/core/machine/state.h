@@ -57,6 +57,7 @@ struct StateSnapshot {
   ModalState modal;
   MachineState machine;
   bool stopped = false;         // M00, M01 with the switch on, M02/M30
+  bool optionalStop = false;    // the block holds M01 (whatever the switch): players decide while playing
 };
 
 }  // namespace klueng::core::machine

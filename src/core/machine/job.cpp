@@ -1,0 +1,48 @@
+// One compiled job (job.h).
+#include "klueng/core/machine/job.h"
+
+#include <algorithm>
+
+#include "klueng/core/gcode/checker.h"
+#include "klueng/core/gcode/parser.h"
+#include "klueng/core/machine/subprogram_files.h"
+
+namespace klueng::core::machine {
+
+std::vector<int> toolsWithBitmap(const MachineSetup& setup) {
+  std::vector<int> out;
+  const int stations = static_cast<int>(setup.tools.bitmap.size());
+  for (int t = 1; t <= stations; ++t)
+    if (!setup.tools.bitmap[static_cast<std::size_t>(t - 1)].empty()) out.push_back(t);
+  return out;
+}
+
+CompiledJob compileJob(const io::ProgramFile& file, const MachineSetup& setup, const JobOptions& options) {
+  CompiledJob job;
+  job.program = gcode::parse(file.gcode, file.gcodeFirstLine);
+  if (!options.folder.empty())
+    job.diagnostics = attachSubprogramFiles(job.program, options.folder, options.run.dialect);
+  gcode::CheckOptions check;
+  check.dialect = options.run.dialect;
+  check.powerOnUnits = options.run.powerOnUnits;
+  check.turretStations = setup.tools.stations;
+  // No bitmap at all means no tool table was read: T words are not checked against it.
+  if (std::vector<int> tools = toolsWithBitmap(setup); !tools.empty()) check.toolsWithBitmap = std::move(tools);
+  std::vector<Diagnostic> found = gcode::check(job.program, check);
+  job.diagnostics.insert(job.diagnostics.end(), found.begin(), found.end());
+  // The run needs a bar: a header without a size is reported on its line (SPEC 2).
+  if (file.header.diameter <= 0 || file.header.length <= 0) {
+    Diagnostic d;
+    d.code = file.header.diameter <= 0 ? "F115" : "F116";
+    d.range = SourceRange{file.header.diameter <= 0 ? 4 : 5, 1, 0};
+    job.diagnostics.push_back(d);
+  }
+  std::stable_sort(job.diagnostics.begin(), job.diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {
+    if (a.range.file != b.range.file) return a.range.file < b.range.file;
+    return a.range.line != b.range.line ? a.range.line < b.range.line : a.range.column < b.range.column;
+  });
+  if (!job.hasErrors()) job.timeline = interpret(job.program, setup, options.run);
+  return job;
+}
+
+}  // namespace klueng::core::machine
