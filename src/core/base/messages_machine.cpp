@@ -101,6 +101,8 @@ constexpr MessageText kMessages[] = {
      "#3006 หยุดชั่วคราว: {0}"},
     {"A148", "{0}: the profile holds a macro expression or statement at line {1}; the simulator reads cycle profiles as numbers only",
      "{0}: รูปร่างชิ้นงานมีนิพจน์หรือคำสั่งมาโครที่บรรทัด {1} โปรแกรมจำลองอ่านรูปร่างของวัฏจักรได้เฉพาะค่าตัวเลข"},
+    {"A149", "{0} would make {1} moves (more than {2}): check its pecks, steps or passes for a typing slip",
+     "{0} จะเคลื่อนที่ {1} ครั้ง (เกิน {2} ครั้ง) ให้ตรวจสอบระยะป้อน ระยะเลื่อน หรือจำนวนเที่ยว ว่าพิมพ์ผิดหรือไม่"},
     {"I160", "M99 at the end of the main program: the control runs it again from the start; the simulation stops after one repeat",
      "M99 ท้ายโปรแกรมหลัก: เครื่องจริงจะวนกลับไปทำงานใหม่ตั้งแต่ต้น แต่การจำลองจะหยุดหลังวนซ้ำหนึ่งรอบ"},
     {"W130", "{0}: #{1} is vacant, so the control omits the address {2} from this block",

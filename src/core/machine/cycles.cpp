@@ -151,6 +151,11 @@ Expansion expand(int g, const CycleInput& in, CycleMemory& memory) {
         return e;
       }
       movesOnly(p);
+      const double moves = static_cast<double>(memory.g73Count) * static_cast<double>(p.moves.size() + 1);
+      if (moves > kMaxCycleMoves) {
+        e.alarm = alarmAt("A149", in.gWord, b, {name, fmt::format("{:.0f}", moves), fmt::format("{:.0f}", kMaxCycleMoves)});
+        return e;
+      }
       const Vec2 allowance(value('W', 0.0), value('U', 0.0) / 2.0);
       const Vec2 relief(memory.g73ReliefZ, memory.g73ReliefX);
       const int d = memory.g73Count;
@@ -188,6 +193,12 @@ Expansion expand(int g, const CycleInput& in, CycleMemory& memory) {
       if (peck > kEps && drill / peck > kMaxPasses) {
         e.alarm = alarmAt("A127", g == 74 ? qw : pw, b,
                           {name, fmt::format("{:.0f}", std::ceil(drill / peck)), num(peck)});
+        return e;
+      }
+      const double width = std::abs(g == 74 ? xOf(target) - xOf(in.start) : zOf(target) - zOf(in.start));
+      const double moves = peckCycleMoves(drill, peck, width, std::abs(g == 74 ? across : along));
+      if (moves > kMaxCycleMoves) {
+        e.alarm = alarmAt("A149", in.gWord, b, {name, fmt::format("{:.0f}", moves), fmt::format("{:.0f}", kMaxCycleMoves)});
         return e;
       }
       if (g == 74) {

@@ -86,6 +86,13 @@ Expansion grooving(int g, const CycleInput& in, const Block& b) {
                       {gName(in, g), fmt::format("{:.0f}", std::ceil(drillDepth / peck)), num(peck)});
     return e;
   }
+  const double width = std::abs(g == 74 ? xOf(target) - xOf(in.start) : zOf(target) - zOf(in.start));
+  const double moves = peckCycleMoves(drillDepth, peck, width, g == 74 ? i : k);
+  if (moves > kMaxCycleMoves) {
+    e.alarm = alarmAt("A149", in.gWord, b,
+                      {gName(in, g), fmt::format("{:.0f}", moves), fmt::format("{:.0f}", kMaxCycleMoves)});
+    return e;
+  }
   if (g == 74) {
     e.steps = pecks(in.start, target, k, i, retract);
   } else {

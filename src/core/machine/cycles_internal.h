@@ -19,6 +19,17 @@ using gcode::Word;
 inline constexpr double kEps = 1e-6;
 inline constexpr double kArcTolerance = 0.01;  // mm, as the interpreter's arcs
 inline constexpr double kMaxPasses = 10000;    // more passes than this is a typing slip, not a program
+// A cycle's whole expansion (moves, not passes: pecks x positions, passes x
+// profile length) is bounded too, checked before anything is allocated.
+inline constexpr double kMaxCycleMoves = 200000;
+
+// Moves of a peck cycle (G74/G75): per position, pecks of 2 moves and a
+// retract and a step. `drill` along the pecks, `width` across, `peck`, `step`.
+inline double peckCycleMoves(double drill, double peck, double width, double step) {
+  const double pecks = peck > kEps ? std::ceil(drill / peck) : 1.0;
+  const double positions = step > kEps ? std::floor(width / step) + 1.0 : 1.0;
+  return positions * (2.0 * pecks + 3.0);
+}
 
 inline std::string num(double v) {
   if (std::abs(v) < 0.0005) v = 0.0;

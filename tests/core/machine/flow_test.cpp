@@ -349,3 +349,33 @@ TEST(CompiledJob, CheckThenRunInOneCall) {
 
 }  // namespace
 }  // namespace klueng::core::machine
+
+namespace klueng::core::machine {
+namespace {
+
+// Issue 13: peck cycles that would expand into millions of moves (and gigabytes)
+// are refused before anything is allocated; their moves, not only their passes, count.
+TEST(CycleBounds, HugePeckAndPatternCyclesAreAlarmsNotBlowUps) {
+  const char* cases[] = {
+      "G98 G97 S500 M03\nG00 X50. Z2.\nG75 R0.5\nG75 X40. Z-100. P1 Q2 F50.\n",
+      "G98 G97 S500 M03\nG00 X0. Z2.\nG74 R1.\nG74 X999. Z-40. P1 Q1000 F50.\n",
+      "G98 G97 S500 M03\nG00 X50. Z2.\nG75 R0.5\nG75 X40. Z-999. P1000 Q1 F50.\n",
+  };
+  for (const char* text : cases) {
+    const Timeline t = runText(text);
+    ASSERT_TRUE(t.alarm) << text;
+    EXPECT_EQ(t.alarm->code, "A149") << text;
+    EXPECT_EQ(t.alarm->range.line, 4) << text;
+    EXPECT_LT(t.moves.size(), 10u);
+  }
+  // G73 R9999 over a 30-block profile: 9999 x 31 moves.
+  std::string g73 = "G98 G97 S500 M03\nG00 X60. Z2.\nG73 U3. W0. R9999\nG73 P10 Q20 U0.4 F100.\nN10 G00 X20.\n";
+  for (int k = 1; k <= 28; ++k) g73 += "G01 Z-" + std::to_string(k) + ".\n";
+  g73 += "N20 X60.\n";
+  const Timeline t = runText(g73);
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->code, "A149");
+}
+
+}  // namespace
+}  // namespace klueng::core::machine
