@@ -73,6 +73,8 @@ constexpr MessageText kMessages[] = {
      "{0}: ออฟเซต {1}: รัศมีจมูกมีด R ต้องไม่ติดลบ ({2})"},
     {"F135", "{0}: offset {1}: the tip number must be a whole number from 0 to 9, not '{2}'",
      "{0}: ออฟเซต {1}: หมายเลขปลายมีดต้องเป็นจำนวนเต็มตั้งแต่ 0 ถึง 9 ไม่ใช่ '{2}'"},
+    {"F136", "{0}: offset {1}: '{2}' is beyond any lathe's offset (at most {3} mm); the row is set to 0 0 0 0",
+     "{0}: ออฟเซต {1}: '{2}' เกินค่าออฟเซตของเครื่องกลึงทั่วไป (ไม่เกิน {3} มม.) จึงตั้งแถวนี้เป็น 0 0 0 0"},
 
     // machine.cfg.
     {"F140", "{0}: expected 'key = value'", "{0}: ต้องเขียนในรูปแบบ 'ชื่อค่า = ค่า'"},
@@ -86,6 +88,8 @@ constexpr MessageText kMessages[] = {
      "{0}: ระยะเคลื่อนที่สูงสุดของเครื่อง: {1} ต้องน้อยกว่า {2}"},
     {"F147", "{0}: {1} must be a whole number from {3} to {4}, not {2}",
      "{0}: {1} ต้องเป็นจำนวนเต็มตั้งแต่ {3} ถึง {4} ไม่ใช่ {2}"},
+    {"F148", "{0}: {1} = {2} is outside what a lathe can have ({3} to {4}); the default is used",
+     "{0}: {1} = {2} อยู่นอกช่วงที่เครื่องกลึงจะมีได้ ({3} ถึง {4}) จึงใช้ค่าเริ่มต้นแทน"},
 
     // Tool bitmaps (SPEC 11).
     {"F150", "{0}: not a BMP or PNG image", "{0}: ไม่ใช่ไฟล์ภาพ BMP หรือ PNG"},

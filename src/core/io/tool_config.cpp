@@ -233,6 +233,17 @@ ReadResult<OffsetTable> parseOffsetTable(std::string_view text, const std::strin
                                      utf8Length(fields[2]), {fileName, label, std::string(fields[2])}));
       rowOk = false;
     }
+    // A wear or geometry offset beyond any lathe's (1e308 once passed here) is a typing slip.
+    constexpr double kMaxOffsetMm = 1000.0, kMaxNoseRadiusMm = 50.0;
+    for (int i = 0; rowOk && i < 3; ++i) {
+      const double limit = i == 2 ? kMaxNoseRadiusMm : kMaxOffsetMm;
+      if (std::abs(*numbers[i]) > limit) {
+        const std::string_view f = fields[static_cast<std::size_t>(i)];
+        diags.push_back(makeDiagnostic(Severity::Error, "F136", number, detail::columnOf(line, f), utf8Length(f),
+                                       {fileName, label, std::string(f), detail::formatNumber(limit)}));
+        rowOk = false;
+      }
+    }
     const std::string_view tip = fields[3];
     if (tip.size() != 1 || tip[0] < '0' || tip[0] > '9') {
       diags.push_back(makeDiagnostic(Severity::Error, "F135", number, detail::columnOf(line, tip),
@@ -290,6 +301,21 @@ struct MachineKey {
   Rule rule;
   const char* comment;
   int MachineConfig::*count = nullptr;
+};
+
+// Values no lathe has (rapid_x = 1e-300, max_spindle_rpm = 1e308 once passed): F148.
+struct Plausible {
+  const char* name;
+  double min, max;
+};
+constexpr Plausible kPlausible[] = {
+    {"rapid_x", 1.0, 200000.0},       {"rapid_z", 1.0, 200000.0},      {"max_spindle_rpm", 1.0, 100000.0},
+    {"reference_x", -100000.0, 100000.0}, {"reference_z", -100000.0, 100000.0},
+    {"start_x", -100000.0, 100000.0}, {"start_z", -100000.0, 100000.0},
+    {"travel_x_min", -100000.0, 100000.0}, {"travel_x_max", -100000.0, 100000.0},
+    {"travel_z_min", -100000.0, 100000.0}, {"travel_z_max", -100000.0, 100000.0},
+    {"chuck_grip", 0.0, 10000.0},     {"chuck_jaw_height", 0.0, 10000.0}, {"spindle_bore", 0.0, 10000.0},
+    {"max_run_time", 1.0, 1.0e7},
 };
 
 constexpr int kMinTurretStations = 1;
@@ -387,6 +413,15 @@ ReadResult<MachineConfig> parseMachineConfig(std::string_view text, const std::s
                                       std::to_string(stations ? kMaxTurretStations : kMaxBlockLimit)}));
       continue;
     }
+    bool plausible = true;
+    for (const Plausible& p : kPlausible)
+      if (key == p.name && (*number < p.min || *number > p.max)) {
+        diags.push_back(makeDiagnostic(Severity::Error, "F148", lineNumber, valueColumn, utf8Length(value),
+                                       {fileName, std::string(key), std::string(value), detail::formatNumber(p.min),
+                                        detail::formatNumber(p.max)}));
+        plausible = false;
+      }
+    if (!plausible) continue;
     if (lineOfKey.count(entry->name))
       diags.push_back(makeDiagnostic(Severity::Warning, "F145", lineNumber, detail::columnOf(line, key),
                                      utf8Length(key), {fileName, std::string(key)}));

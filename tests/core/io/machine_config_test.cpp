@@ -74,3 +74,29 @@ TEST(MachineConfigLoopLimits, ReadTheirKeysAndRefuseNonsense) {
 
 }  // namespace
 }  // namespace klueng::core::io
+
+namespace klueng::core::io {
+namespace {
+
+// Issue 13: values no lathe has are refused with file, line and column.
+TEST(MachineConfigRanges, ImplausibleValuesAreRefused) {
+  const auto r = parseMachineConfig("rapid_x = 1e-300\nmax_spindle_rpm = 1e308\nstart_z = 300\n", "machine.cfg");
+  ASSERT_EQ(r.diagnostics.size(), 2u);
+  EXPECT_EQ(r.diagnostics[0].code, "F148");
+  EXPECT_EQ(r.diagnostics[0].range, (SourceRange{1, 11, 6}));
+  EXPECT_EQ(r.diagnostics[1].code, "F148");
+  EXPECT_EQ(r.diagnostics[1].range.line, 2);
+  EXPECT_DOUBLE_EQ(r.value->rapidX, MachineConfig{}.rapidX);
+  EXPECT_DOUBLE_EQ(r.value->maxSpindleRpm, MachineConfig{}.maxSpindleRpm);
+  EXPECT_EQ(formatMessage(r.diagnostics[1], Lang::En),
+            "machine.cfg: max_spindle_rpm = 1e308 is outside what a lathe can have (1 to 100000); the default is used");
+  const auto o = parseOffsetTable("0 0 0.8 3\n1e308 0 0.4 2\n0 0 1e300 3\n", "offset.cfg");
+  int f136 = 0;
+  for (const Diagnostic& d : o.diagnostics) f136 += d.code == "F136";
+  EXPECT_EQ(f136, 2);
+  EXPECT_DOUBLE_EQ(o.value->offsets[1].x, 0.0);
+  EXPECT_DOUBLE_EQ(o.value->offsets[2].r, 0.0);
+}
+
+}  // namespace
+}  // namespace klueng::core::io
