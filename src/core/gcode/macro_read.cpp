@@ -197,18 +197,21 @@ class Reader {
     return true;
   }
 
+  // At '#': a variable whose number follows.
+  bool variable(int depth) {
+    hash_ = i_;
+    ++i_;
+    if (!variableNumber(depth + 1)) return false;
+    emit(ExprOp::Variable);
+    return true;
+  }
+
   // After '#': the variable number (a constant, a bracket or another #).
   bool variableNumber(int depth) {
     if (depth >= kMaxDepth) return fail(codes::kMacroTooDeep, {std::to_string(kMaxDepth)}, i_);
     const char c = peek();
     if (c == '[') return bracketed(depth);
-    if (c == '#') {
-      hash_ = i_;
-      ++i_;
-      if (!variableNumber(depth + 1)) return false;
-      emit(ExprOp::Variable);
-      return true;
-    }
+    if (c == '#') return variable(depth);
     if (std::isdigit(static_cast<unsigned char>(c))) {
       const std::size_t start = i_;
       while (i_ < s_.size() && std::isdigit(static_cast<unsigned char>(s_[i_]))) ++i_;
@@ -226,13 +229,7 @@ class Reader {
     if (depth >= kMaxDepth) return fail(codes::kMacroTooDeep, {std::to_string(kMaxDepth)}, i_);
     const char c = peek();
     if (c == '[') return bracketed(depth);
-    if (c == '#') {
-      hash_ = i_;
-      ++i_;
-      if (!variableNumber(depth + 1)) return false;
-      emit(ExprOp::Variable);
-      return true;
-    }
+    if (c == '#') return variable(depth);
     if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') return number();
     if (std::isalpha(static_cast<unsigned char>(c))) {
       const std::size_t start = i_;
