@@ -90,6 +90,8 @@ constexpr MessageText kMessages[] = {
      "{0}: {1} ต้องเป็นจำนวนเต็มตั้งแต่ {3} ถึง {4} ไม่ใช่ {2}"},
     {"F148", "{0}: {1} = {2} is outside what a lathe can have ({3} to {4}); the default is used",
      "{0}: {1} = {2} อยู่นอกช่วงที่เครื่องกลึงจะมีได้ ({3} ถึง {4}) จึงใช้ค่าเริ่มต้นแทน"},
+    {"F149", "{0}: the tool start {1} = {2} is outside the travel limits {3} to {4}",
+     "{0}: ตำแหน่งเริ่มต้นของมีด {1} = {2} อยู่นอกระยะเคลื่อนที่ {3} ถึง {4}"},
 
     // Tool bitmaps (SPEC 11).
     {"F150", "{0}: not a BMP or PNG image", "{0}: ไม่ใช่ไฟล์ภาพ BMP หรือ PNG"},

@@ -444,6 +444,17 @@ ReadResult<MachineConfig> parseMachineConfig(std::string_view text, const std::s
   checkRange("travel_x_min", &MachineConfig::travelXMin, "travel_x_max", &MachineConfig::travelXMax);
   checkRange("travel_z_min", &MachineConfig::travelZMin, "travel_z_max", &MachineConfig::travelZMax);
 
+  // The tool starts inside the travel limits, or every program would be blamed for the machine's slip.
+  const auto inside = [&](const char* key, double MachineConfig::*v, double lo, double hi) {
+    if (config.*v >= lo && config.*v <= hi) return;
+    const int line = lineOfKey.count(key) ? lineOfKey[key] : 0;
+    diags.push_back(makeDiagnostic(Severity::Error, "F149", line, line ? 1 : 0, 0,
+                                   {fileName, key, detail::formatNumber(config.*v), detail::formatNumber(lo),
+                                    detail::formatNumber(hi)}));
+  };
+  inside("start_x", &MachineConfig::startX, config.travelXMin, config.travelXMax);
+  inside("start_z", &MachineConfig::startZ, config.travelZMin, config.travelZMax);
+
   result.value = config;
   return result;
 }

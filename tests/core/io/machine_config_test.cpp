@@ -96,6 +96,13 @@ TEST(MachineConfigRanges, ImplausibleValuesAreRefused) {
   EXPECT_EQ(f136, 2);
   EXPECT_DOUBLE_EQ(o.value->offsets[1].x, 0.0);
   EXPECT_DOUBLE_EQ(o.value->offsets[2].r, 0.0);
+  // The tool may not start outside its travel.
+  const auto s = parseMachineConfig("travel_z_min = -200\ntravel_z_max = 250\nstart_z = 300\n", "machine.cfg");
+  ASSERT_EQ(s.diagnostics.size(), 1u);
+  EXPECT_EQ(s.diagnostics[0].code, "F149");
+  EXPECT_EQ(s.diagnostics[0].range.line, 3);
+  EXPECT_EQ(formatMessage(s.diagnostics[0], Lang::En),
+            "machine.cfg: the tool start start_z = 300 is outside the travel limits -200 to 250");
 }
 
 }  // namespace
