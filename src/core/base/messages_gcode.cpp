@@ -119,6 +119,8 @@ constexpr MessageText kMessages[] = {
      "{0} อยู่ในบล็อก G04: การหยุดรอไม่มีการเคลื่อนที่ ให้ลบ {0} หรือย้ายไปไว้บล็อกอื่น"},
     {"E309", "G28 needs an intermediate point: add X/U and Z/W (e.g. G28 U0. W0.)",
      "G28 ต้องกำหนดจุดกลางทาง: เติม X/U และ Z/W (เช่น G28 U0. W0.)"},
+    {"E310", "{0} needs its radius R or its centre I/K: an arc cannot be cut from its end point alone",
+     "{0} ต้องกำหนดรัศมี R หรือจุดศูนย์กลาง I/K: ส่วนโค้งกำหนดจากจุดปลายอย่างเดียวไม่ได้"},
 
     // W1xx: warnings
     {"E401", "DO{0} has no END{0} after it in this program",

@@ -301,6 +301,9 @@ class Checker {
       const std::string arcCode = motion_ == 2 ? "G02" : "G03";
       if (motionWord && !axisWords) emit(codes::kArcWithoutEndPoint, *motionWord, {wordText(*motionWord)});
       if (!cannedCycle && has('R') && (has('I') || has('K'))) emit(codes::kArcRadiusAndCentre, *has('R'), {arcCode});
+      // No R, I or K: "not on one circle (radius 0)" at run time said nothing useful.
+      if (!cannedCycle && axisWords && !has('R') && !has('I') && !has('K'))
+        emit(codes::kArcWithoutRadius, motionWord ? *motionWord : *(has('X') ? has('X') : has('Z') ? has('Z') : has('U') ? has('U') : has('W')), {arcCode});
       if (compWord && (motionWord || axisWords)) {
         if (compCode == 40) emit(codes::kCompEndOnArc, *compWord, {arcCode});
         else emit(codes::kCompStartOnArc, *compWord, {wordText(*compWord), arcCode});

@@ -65,6 +65,7 @@ inline constexpr const char* kNegativeDwell = "E306";       // {0}=word
 inline constexpr const char* kDwellTwice = "E307";          // {0}=first {1}=second
 inline constexpr const char* kDwellWithAxis = "E308";       // {0}=word
 inline constexpr const char* kG28WithoutAxes = "E309";
+inline constexpr const char* kArcWithoutRadius = "E310";    // {0}=code
 
 // E4xx program flow (subprograms and macro B), checked before the run
 inline constexpr const char* kDoWithoutEnd = "E401";          // {0}=loop number
@@ -156,6 +157,7 @@ inline constexpr const char* kAll[] = {
     kDwellTwice,
     kDwellWithAxis,
     kG28WithoutAxes,
+    kArcWithoutRadius,
     kMachineSpecificM,
     kG28NoMotion,
     kRoundedToIncrement,

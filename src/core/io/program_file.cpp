@@ -182,6 +182,15 @@ ReadResult<ProgramFile> parseProgramFile(std::string_view bytes, const JobHeader
                                    {fileName, std::to_string(bytes.size())}));
     return result;
   }
+  // UTF-16 text (Notepad's "Unicode") is text, not binary: read it as UTF-8.
+  std::string fromUtf16;
+  if (bytes.size() >= 2 && (detail::findNulByte(bytes) || static_cast<unsigned char>(bytes[0]) == 0xFF ||
+                            static_cast<unsigned char>(bytes[0]) == 0xFE)) {
+    if (std::optional<std::string> utf8 = utf16ToUtf8(bytes)) {
+      fromUtf16 = std::move(*utf8);
+      bytes = fromUtf16;
+    }
+  }
   if (const auto nul = detail::findNulByte(bytes)) {
     diags.push_back(makeDiagnostic(Severity::Error, "F104", nul->line, nul->column, 1, {fileName}));
     return result;

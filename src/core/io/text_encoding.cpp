@@ -1,5 +1,7 @@
 #include "klueng/core/io/text_encoding.h"
 
+#include <algorithm>
+
 #include <cstdint>
 #include <cstring>
 
@@ -105,6 +107,70 @@ int utf8Length(std::string_view text) {
     ++count;
   }
   return count;
+}
+
+}  // namespace klueng::core::io
+
+namespace klueng::core::io {
+
+std::optional<std::string> utf16ToUtf8(std::string_view bytes) {
+  if (bytes.size() < 2) return std::nullopt;
+  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(bytes[i]); };
+  bool little = true;
+  std::size_t start = 0;
+  if (byte(0) == 0xFF && byte(1) == 0xFE) {
+    start = 2;
+  } else if (byte(0) == 0xFE && byte(1) == 0xFF) {
+    little = false;
+    start = 2;
+  } else {
+    // No BOM: ASCII text in UTF-16 has a NUL in every other byte.
+    if (bytes.size() % 2 != 0 || bytes.size() < 4) return std::nullopt;
+    std::size_t evenNul = 0, oddNul = 0;
+    const std::size_t n = std::min<std::size_t>(bytes.size(), 4096);
+    for (std::size_t i = 0; i + 1 < n; i += 2) {
+      evenNul += byte(i) == 0;
+      oddNul += byte(i + 1) == 0;
+    }
+    const std::size_t pairs = n / 2;
+    // Mostly ASCII (a G-code program is): at least half the high bytes are NUL, no low byte is.
+    if (oddNul * 2 >= pairs && evenNul == 0) little = true;
+    else if (evenNul * 2 >= pairs && oddNul == 0) little = false;
+    else return std::nullopt;
+  }
+  if ((bytes.size() - start) % 2 != 0) return std::nullopt;
+  std::string out;
+  out.reserve((bytes.size() - start) / 2);
+  const auto unit = [&](std::size_t i) -> unsigned {
+    return little ? byte(i) | (byte(i + 1) << 8) : (byte(i) << 8) | byte(i + 1);
+  };
+  for (std::size_t i = start; i + 1 < bytes.size(); i += 2) {
+    unsigned cp = unit(i);
+    if (cp >= 0xD800 && cp <= 0xDBFF && i + 3 < bytes.size()) {
+      const unsigned lo = unit(i + 2);
+      if (lo >= 0xDC00 && lo <= 0xDFFF) {
+        cp = 0x10000 + ((cp - 0xD800) << 10) + (lo - 0xDC00);
+        i += 2;
+      }
+    }
+    if (cp == 0) return std::nullopt;  // a real NUL: binary after all
+    if (cp < 0x80) {
+      out += static_cast<char>(cp);
+    } else if (cp < 0x800) {
+      out += static_cast<char>(0xC0 | (cp >> 6));
+      out += static_cast<char>(0x80 | (cp & 0x3F));
+    } else if (cp < 0x10000) {
+      out += static_cast<char>(0xE0 | (cp >> 12));
+      out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+      out += static_cast<char>(0x80 | (cp & 0x3F));
+    } else {
+      out += static_cast<char>(0xF0 | (cp >> 18));
+      out += static_cast<char>(0x80 | ((cp >> 12) & 0x3F));
+      out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+      out += static_cast<char>(0x80 | (cp & 0x3F));
+    }
+  }
+  return out;
 }
 
 }  // namespace klueng::core::io

@@ -385,3 +385,35 @@ TEST(ProgramFile, AtomicWriteFailsCleanlyInAMissingFolder) {
 
 }  // namespace
 }  // namespace klueng::core::io
+
+namespace klueng::core::io {
+namespace {
+
+// Issue 13: a UTF-16 program (Notepad's "Unicode") is text, not "binary (NUL byte)".
+std::string utf16(const std::u16string& text, bool little, bool bom) {
+  std::string out;
+  if (bom) out += little ? std::string("\xFF\xFE") : std::string("\xFE\xFF");
+  for (char16_t c : text) {
+    const char lo = static_cast<char>(c & 0xFF), hi = static_cast<char>(c >> 8);
+    out += little ? std::string{lo, hi} : std::string{hi, lo};
+  }
+  return out;
+}
+
+TEST(ProgramFile, Utf16ProgramsAreReadAsText) {
+  const std::u16string text = u"O0001 (\u0E01\u0E25\u0E36\u0E07)\nG00 X20. Z2.\nM30\n";
+  for (bool little : {true, false})
+    for (bool bom : {true, false}) {
+      if (!bom && !little) continue;  // without a BOM, only little-endian is guessed from the NULs
+      const auto r = parseProgramFile(utf16(text, little, bom), {}, "u16.nc");
+      ASSERT_TRUE(r.ok()) << little << bom << (r.diagnostics.empty() ? "" : r.diagnostics[0].code);
+      EXPECT_EQ(r.value->gcode, "O0001 (\xE0\xB8\x81\xE0\xB8\xA5\xE0\xB8\xB6\xE0\xB8\x87)\nG00 X20. Z2.\nM30\n");
+    }
+  // Real binary with NULs is still refused.
+  const auto bin = parseProgramFile(std::string("G00\0\x01\x02X", 7), {}, "bin.nc");
+  ASSERT_FALSE(bin.value);
+  EXPECT_EQ(bin.diagnostics[0].code, "F104");
+}
+
+}  // namespace
+}  // namespace klueng::core::io

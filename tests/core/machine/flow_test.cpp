@@ -379,3 +379,19 @@ TEST(CycleBounds, HugePeckAndPatternCyclesAreAlarmsNotBlowUps) {
 
 }  // namespace
 }  // namespace klueng::core::machine
+
+namespace klueng::core::machine {
+namespace {
+
+// Issue 13: "G02 X40. Z-20." said "not on one circle (radius 0.000)" at run time.
+TEST(FlowCheck, AnArcWithoutRadiusOrCentreSaysSo) {
+  const auto ds = checkText("G98 G00 X20. Z0.\nG02 X40. Z-20. F100.\nG03 X50. Z-25. R5.\n");
+  ASSERT_EQ(ds.size(), 1u);
+  EXPECT_EQ(ds[0].code, "E310");
+  EXPECT_EQ(ds[0].range, (SourceRange{2, 1, 3}));
+  EXPECT_EQ(formatMessage(ds[0], Lang::En),
+            "G02 needs its radius R or its centre I/K: an arc cannot be cut from its end point alone");
+}
+
+}  // namespace
+}  // namespace klueng::core::machine
