@@ -1,4 +1,5 @@
 #include "klueng/core/cut/section_image.h"
+#include "klueng/core/io/program_file.h"
 
 #include <algorithm>
 #include <cmath>
@@ -185,6 +186,14 @@ io::RgbImage renderSection(const SectionView& view) {
   return cv.img;
 }
 
+namespace {
+void appendToString(png_structp png, png_bytep data, png_size_t length) {
+  static_cast<std::string*>(png_get_io_ptr(png))->append(reinterpret_cast<const char*>(data), length);
+}
+void flushNothing(png_structp) {}
+}  // namespace
+
+// Encoded in memory, then written atomically: a full disk never leaves a truncated PNG behind.
 bool writePng(const std::string& path, const io::RgbImage& image, std::string* error) {
   auto fail = [&](const std::string& why) {
     if (error) *error = why;
@@ -193,8 +202,7 @@ bool writePng(const std::string& path, const io::RgbImage& image, std::string* e
   if (image.width <= 0 || image.height <= 0 ||
       image.pixels.size() != static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height))
     return fail("empty image");
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "wb"), &std::fclose);
-  if (!file) return fail("cannot open " + path + " for writing");
+  std::string encoded;
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   if (!png) return fail("libpng: out of memory");
   png_infop info = png_create_info_struct(png);
@@ -205,9 +213,9 @@ bool writePng(const std::string& path, const io::RgbImage& image, std::string* e
   std::vector<png_byte> row(static_cast<std::size_t>(image.width) * 3);
   if (setjmp(png_jmpbuf(png))) {
     png_destroy_write_struct(&png, &info);
-    return fail("libpng: error writing " + path);
+    return fail("libpng: error encoding " + path);
   }
-  png_init_io(png, file.get());
+  png_set_write_fn(png, &encoded, appendToString, flushNothing);
   png_set_IHDR(png, info, static_cast<png_uint_32>(image.width), static_cast<png_uint_32>(image.height), 8,
                PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_write_info(png, info);
@@ -222,7 +230,8 @@ bool writePng(const std::string& path, const io::RgbImage& image, std::string* e
   }
   png_write_end(png, nullptr);
   png_destroy_write_struct(&png, &info);
-  if (std::fflush(file.get()) != 0) return fail("cannot write " + path);
+  std::string why;
+  if (!io::writeTextFileAtomic(path, encoded, &why)) return fail(why);
   return true;
 }
 
