@@ -551,7 +551,8 @@ Program parse(std::string_view text, int firstLine, int file) {
     const char* next = lf ? lf + 1 : end;
     if (cr) {
       lineEnd = cr;
-      next = cr + 1 == lf ? lf + 1 : cr + 1;
+      // CRLF, and CR CR LF (a CRLF file converted once more), end one line.
+      next = cr + 1 == lf ? lf + 1 : (cr + 2 == lf && cr[1] == '\r') ? lf + 1 : cr + 1;
     }
     parser.parseLine(std::string_view(pos, static_cast<std::size_t>(lineEnd - pos)), lineNumber);
     ++program.lineCount;

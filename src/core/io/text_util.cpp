@@ -98,6 +98,8 @@ std::vector<std::string_view> splitLines(std::string_view text) {
   for (std::size_t i = 0; i < text.size(); ++i) {
     if (text[i] == '\n' || text[i] == '\r') {
       lines.push_back(text.substr(start, i - start));
+      // CRLF is one line end; so is CR CR LF (a CRLF file converted once more).
+      if (text[i] == '\r' && i + 2 < text.size() && text[i + 1] == '\r' && text[i + 2] == '\n') i += 1;
       if (text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;
       start = i + 1;
     }

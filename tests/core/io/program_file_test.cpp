@@ -3,6 +3,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "klueng/core/gcode/parser.h"
+
 #include <filesystem>
 
 #include "klueng/core/messages.h"
@@ -413,6 +415,24 @@ TEST(ProgramFile, Utf16ProgramsAreReadAsText) {
   const auto bin = parseProgramFile(std::string("G00\0\x01\x02X", 7), {}, "bin.nc");
   ASSERT_FALSE(bin.value);
   EXPECT_EQ(bin.diagnostics[0].code, "F104");
+}
+
+}  // namespace
+}  // namespace klueng::core::io
+
+namespace klueng::core::io {
+namespace {
+
+// Issue 13: CR CR LF (a CRLF file converted again) shifted the header by a line per line.
+TEST(ProgramFile, CrCrLfEndsOneLine) {
+  const auto r = parseProgramFile("P\r\r\nQ\r\r\nSteel\r\r\n150\r\r\n1100\r\r\nMe\r\r\nN10 G00\r\r\nN20 M30\r\r\n");
+  ASSERT_TRUE(r.ok()) << (r.diagnostics.empty() ? "" : r.diagnostics[0].code);
+  EXPECT_FALSE(r.value->plainGcode);
+  EXPECT_DOUBLE_EQ(r.value->header.diameter, 50.0);
+  EXPECT_EQ(r.value->gcode, "N10 G00\nN20 M30\n");
+  const gcode::Program p = gcode::parse("G00 X1.\r\r\nG01 Z2.\r\r\n", 7);
+  ASSERT_EQ(p.blocks.size(), 2u);
+  EXPECT_EQ(p.blocks[1].line, 8);
 }
 
 }  // namespace
