@@ -60,6 +60,8 @@ constexpr MessageText kMessages[] = {
      "{0}: มีดตัด {1}: '{2}' ไม่ใช่ชื่อไฟล์ภาพ .bmp หรือ .png"},
     {"F123", "{0}: tool {1}: the tool library has no tool '{2}' (it has: {3})",
      "{0}: มีดตัด {1}: ไม่มีมีดตัด '{2}' ในคลังมีดตัด (ที่มี: {3})"},
+    {"F124", "{0}: tool {1}: '{2}' is a folder, not a bitmap file",
+     "{0}: มีดตัด {1}: '{2}' เป็นโฟลเดอร์ ไม่ใช่ไฟล์ภาพ"},
 
     // offset.cfg (SPEC 11).
     {"F130", "{0}: the offset table needs 16 lines (X Z R T of offsets 01 to 16) but has {1}; offsets {2} to 16 are set to 0 0 0 0",

@@ -169,7 +169,9 @@ ReadResult<ToolTable> readToolTable(const std::string& path, int stations, const
     std::error_code ec;
     if (file.empty() || fs::is_regular_file(file, ec)) continue;
     const std::string& name = result.value->bitmap[static_cast<std::size_t>(tool - 1)];
-    result.diagnostics.push_back(makeDiagnostic(Severity::Error, "F121", tool, 1, utf8Length(name),
+    // A folder where a bitmap should be is not "missing": say what it is.
+    const bool folder = fs::is_directory(file, ec);
+    result.diagnostics.push_back(makeDiagnostic(Severity::Error, folder ? "F124" : "F121", tool, 1, utf8Length(name),
                                                 {path, twoDigits(tool), name}));
   }
   std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(),

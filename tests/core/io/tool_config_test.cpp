@@ -1,6 +1,8 @@
 #include "klueng/core/io/tool_config.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
+#include <fstream>
 
 #include <cstdlib>
 #include <filesystem>
@@ -399,6 +401,27 @@ TEST(ConfigDir, EnsureUserCopyCopiesShippedFilesAndBitmapsOnce) {
   writeFile(user + "/offset.cfg", "edited\n");
   ASSERT_EQ(ensureUserConfigDir(&error), user) << error;
   EXPECT_EQ(testing::readFile(user + "/offset.cfg"), "edited\n");
+}
+
+}  // namespace
+}  // namespace klueng::core::io
+
+namespace klueng::core::io {
+namespace {
+
+// Issue 13: a bitmap path that is a folder was called "does not exist".
+TEST(ToolTable, ABitmapPathThatIsAFolderSaysSo) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("klueng-bitmap-folder-" + std::to_string(::getpid()));
+  fs::create_directories(dir / "01-outside.bmp");
+  {
+    std::ofstream(dir / "tools.cfg") << "01-outside.bmp\n\n\n\n\n\n\n\n";
+  }
+  const auto r = readToolTable((dir / "tools.cfg").string());
+  fs::remove_all(dir);
+  ASSERT_EQ(r.diagnostics.size(), 1u);
+  EXPECT_EQ(r.diagnostics[0].code, "F124");
+  EXPECT_EQ(r.diagnostics[0].range.line, 1);
 }
 
 }  // namespace
