@@ -324,18 +324,24 @@ bool hitsChuck(const SweepContext& c, const std::vector<std::pair<Vec2, Vec2>>& 
   const ToolShape& t = *c.tool;
   for (const Box& target : targets) {
     if (!boxesOverlap(sweptBounds(boxPieces, t.bounds), target)) continue;
+    // (Pieces by reference, not structured bindings: clang 14, the fuzz preset's
+    // compiler, cannot capture those in a lambda.)
     for (const Box& box : t.holder)
-      for (const auto& [a, b] : boxPieces)
-        if (hitsBox(c, target, [&](const detail::Grid& g, auto&& f) { detail::sweepBoxLine(g, a, b, box, f); }))
+      for (const auto& piece : boxPieces)
+        if (hitsBox(c, target, [&](const detail::Grid& g, auto&& f) {
+              detail::sweepBoxLine(g, piece.first, piece.second, box, f);
+            }))
           return true;
     for (const Trapezoid& edge : t.cutting)
-      for (const auto& [a, b] : boxPieces)
-        if (hitsBox(c, target, [&](const detail::Grid& g, auto&& f) { detail::sweepTrapezoidLine(g, a, b, edge, f); }))
+      for (const auto& piece : boxPieces)
+        if (hitsBox(c, target, [&](const detail::Grid& g, auto&& f) {
+              detail::sweepTrapezoidLine(g, piece.first, piece.second, edge, f);
+            }))
           return true;
     if (t.noseRadius > 0.0)
-      for (const auto& [a, b] : nosePieces)
+      for (const auto& piece : nosePieces)
         if (hitsBox(c, target, [&](const detail::Grid& g, auto&& f) {
-              detail::sweepDiscLine(g, a + t.noseCentre, b + t.noseCentre, t.noseRadius, f);
+              detail::sweepDiscLine(g, piece.first + t.noseCentre, piece.second + t.noseCentre, t.noseRadius, f);
             }))
           return true;
   }
