@@ -21,7 +21,7 @@ using gcode::Phase;
 Interpreter::Interpreter(const gcode::Program& program, const MachineSetup& setup, const RunOptions& options,
                          MachineSink& sink, FlowLog* flow)
     : program_(program), setup_(setup), options_(options), profile_(gcode::machineProfile(options.dialect)),
-      sink_(sink), flow_(flow), index_(program) {
+      sink_(sink), offsets_(setup.offsets), flow_(flow), index_(program) {
   const auto& m = setup_.machine;
   pos_ = Vec2(m.startZ, m.startX / 2.0);
   mach_.position = pos_;
@@ -244,7 +244,7 @@ bool Interpreter::selectTool(const Word& t) {
   // TODO: read the turret size from io::MachineConfig once it has one.
   const int tableStations = static_cast<int>(setup_.tools.bitmap.size());
   const int stations = profile_.maxToolStation > 0 ? std::min(profile_.maxToolStation, tableStations) : tableStations;
-  const int offsets = std::min(profile_.maxOffset, static_cast<int>(setup_.offsets.offsets.size()));
+  const int offsets = std::min(profile_.maxOffset, static_cast<int>(offsets_.offsets.size()));
   // A T from a macro expression skips the checker: refuse what no turret has.
   if (value < 0) return raise("A128", &t, {wordText(t), t.number, fmt::format("{:02d}", stations)});
   if (tool > stations)
@@ -257,7 +257,7 @@ bool Interpreter::selectTool(const Word& t) {
     mach_.offsetX = mach_.offsetZ = mach_.noseRadius = 0.0;
     mach_.tip = 0;
   } else {
-    const io::Offset& o = setup_.offsets.at(offset);
+    const io::Offset& o = offsets_.at(offset);
     mach_.offsetX = o.x;
     mach_.offsetZ = o.z;
     mach_.noseRadius = o.r;

@@ -38,7 +38,7 @@ cycles::CycleInput Interpreter::cycleInput(const Word* g) const {
   in.gWord = g;
   in.start = pos_;
   in.offset = offsetVector();
-  in.offsets = &setup_.offsets;
+  in.offsets = &offsets_;
   in.unit = unit();
   in.feed = modal_.feed;
   in.motion = modal_.motion;

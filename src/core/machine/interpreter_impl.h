@@ -244,6 +244,7 @@ class Interpreter final : public gcode::MacroVariables {
 
   ModalState modal_;
   MachineState mach_;
+  io::OffsetTable offsets_;            // the setup's offsets; macro B may write them (#2001 ...)
   Vec2 pos_ = Vec2::Zero();            // controlled point without compensation, work coordinates
   std::optional<double> g28X_, g28Z_;  // G28/G30 intermediate point (work coordinates)
   const gcode::Block* block_ = nullptr;

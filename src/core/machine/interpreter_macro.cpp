@@ -61,12 +61,12 @@ bool Interpreter::read(int n, MacroValue& out, const char*& errorCode) {
     out = persistent_[static_cast<std::size_t>(n - 500)];
     return true;
   }
-  const int offsets = static_cast<int>(setup_.offsets.offsets.size());
+  const int offsets = static_cast<int>(offsets_.offsets.size());
   // Tool offsets: #2001+ X, #2101+ Z, #2201+ nose radius, #2301+ tip (per offset number).
   if (n >= 2001 && n <= 2400) {
     const int kind = (n - 2001) / 100, row = (n - 2001) % 100 + 1;
     if (row > offsets) return false;
-    const io::Offset& o = setup_.offsets.at(row);
+    const io::Offset& o = offsets_.at(row);
     const double lengthUnit = unit();
     switch (kind) {
       case 0: out = MacroValue::of(o.x / lengthUnit); break;
@@ -126,6 +126,26 @@ bool Interpreter::writeVariable(int n, MacroValue v, const SourceRange& at) {
     timerBase_ = sink_.elapsed() * 1000.0 - v.value;
   } else if (n == 3002) {
     hourBase_ = sink_.elapsed() / 3600.0 - v.value;
+  } else if (n >= 2001 && n <= 2400 && (n - 2001) % 100 < static_cast<int>(offsets_.offsets.size())) {
+    // Offsets: #2001+ X (diameter), #2101+ Z, #2201+ nose radius, #2301+ tip. A program
+    // that corrects its own wear writes them; the new value counts from the next T word.
+    const int kind = (n - 2001) / 100, row = (n - 2001) % 100;
+    io::Offset& o = offsets_.offsets[static_cast<std::size_t>(row)];
+    const double value = v.vacant ? 0.0 : v.value;
+    switch (kind) {
+      case 0: o.x = value * unit(); break;
+      case 1: o.z = value * unit(); break;
+      case 2:
+        if (value < 0.0) return flowAlarm("A139", at, {name + " =", std::to_string(n)});
+        o.r = value * unit();
+        break;
+      default: {
+        const double tip = std::round(value);
+        if (tip < 0.0 || tip > 9.0 || tip != value) return flowAlarm("A139", at, {name + " =", std::to_string(n)});
+        o.tip = static_cast<int>(tip);
+        break;
+      }
+    }
   } else if (n == 3901) {
     partsMachined_ = v.value;
   } else if (n == 3902) {

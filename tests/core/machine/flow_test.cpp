@@ -395,3 +395,24 @@ TEST(FlowCheck, AnArcWithoutRadiusOrCentreSaysSo) {
 
 }  // namespace
 }  // namespace klueng::core::machine
+
+namespace klueng::core::machine {
+namespace {
+
+// A program that corrects its own wear: #2002 (X of offset 02) written, then T0202 uses it.
+TEST(FlowRun, WritingAnOffsetCountsFromTheNextTWord) {
+  const Timeline t = runText("#2002 = #2002 + 0.2\n#100 = #2002\nT0202\nG98 G00 X20. Z10.\n");
+  ASSERT_FALSE(t.alarm) << t.alarm->code;
+  double got = 0.0;
+  for (const VariableWrite& w : t.flow.writes)
+    if (w.number == 100) got = w.value;
+  EXPECT_NEAR(got, 0.6, 1e-9);  // the test setup's offset 02 has X +0.4
+  // X20 with X offset 0.6 (diameter): the controlled point at diameter 20.6.
+  EXPECT_NEAR(2.0 * t.moves.back().path.end.y(), 20.6, 1e-9);
+  const Timeline bad = runText("#2202 = -1.\n");
+  ASSERT_TRUE(bad.alarm);
+  EXPECT_EQ(bad.alarm->code, "A139");
+}
+
+}  // namespace
+}  // namespace klueng::core::machine
