@@ -22,6 +22,7 @@
 #include <QPrinter>
 #include <QPrinterInfo>
 #include <QPushButton>
+#include <QScreen>
 #include <QSplitter>
 #include <QStatusBar>
 #include <QTimer>
@@ -672,8 +673,14 @@ void MainWindow::setSpeedIndex(int index) {
 // ---------------------------------------------------------------- layout
 
 void MainWindow::restoreLayout() {
-  resize(1280, 800);
-  if (!restoreGeometry(settings_->windowGeometry())) resize(1280, 800);
+  // Never larger than the screen: a classroom's 1366 x 768 leaves about 1366 x 740 for a window.
+  // (The title bar is not part of the window's size: keep 40 px for it.)
+  QRect screenArea = screen() ? screen()->availableGeometry() : QRect(0, 0, 1280, 840);
+  screenArea.setHeight(screenArea.height() - 40);
+  const QSize fit(std::min(1280, screenArea.width()), std::min(800, screenArea.height()));
+  resize(fit);
+  // A remembered geometry is the user's (Qt moves it onto the screen if it is off it).
+  if (!restoreGeometry(settings_->windowGeometry())) resize(fit);
   if (!restoreState(settings_->windowState())) resizeDocks({diagnostics_}, {150}, Qt::Vertical);
   if (!splitter_->restoreState(settings_->splitterState())) splitter_->setSizes({520, 760});
 }

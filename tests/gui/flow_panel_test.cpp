@@ -6,6 +6,7 @@
 #include <QFile>
 #include <QLabel>
 #include <QPlainTextEdit>
+#include <QScreen>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
@@ -56,6 +57,17 @@ class FlowPanelTest : public QObject {
   void initTestCase() {
     QStandardPaths::setTestModeEnabled(true);
     initResources();
+  }
+
+  // (First in this file: no layout has been saved yet.) A new window fits the
+  // screen with room for its title bar (issue 11: 1366 x 768 classrooms).
+  void aNewWindowFitsTheScreen() {
+    MainWindow w;
+    QScreen* s = w.screen();
+    QVERIFY(s);
+    const QRect area = s->availableGeometry();
+    QVERIFY2(w.width() <= area.width() && w.height() <= area.height() - 40,
+             qPrintable(QStringLiteral("%1x%2 on %3x%4").arg(w.width()).arg(w.height()).arg(area.width()).arg(area.height())));
   }
 
   void steppingIntoAndOutOfASubprogramFile() {
