@@ -289,6 +289,10 @@
 <context>
     <name>klueng::gui::MainWindow</name>
     <message>
+        <source>The machine setup has errors:</source>
+        <translation>ไฟล์ตั้งค่าเครื่องมีข้อผิดพลาด:</translation>
+    </message>
+    <message>
         <source>Cannot save over this file</source>
         <translation>บันทึกทับไฟล์นี้ไม่ได้</translation>
     </message>
@@ -1006,6 +1010,142 @@
     <message>
         <source>Running in %1, line %2</source>
         <translation>กำลังทำงานใน %1 บรรทัด %2</translation>
+    </message>
+</context>
+<context>
+    <name>klueng::gui::DocumentManager</name>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>มีการแก้ไขที่ยังไม่บันทึก</translation>
+    </message>
+    <message>
+        <source>The program "%1" has been changed.</source>
+        <translation>ชุดรหัสสั่งการทำงาน "%1" ถูกแก้ไข</translation>
+    </message>
+    <message>
+        <source>Do you want to save your changes?</source>
+        <translation>ต้องการบันทึกการแก้ไขหรือไม่?</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>บันทึก (&amp;S)</translation>
+    </message>
+    <message>
+        <source>&amp;Discard</source>
+        <translation>ไม่บันทึก (&amp;D)</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>ยกเลิก</translation>
+    </message>
+    <message>
+        <source>Open program</source>
+        <translation>เปิดชุดรหัสสั่งการทำงาน</translation>
+    </message>
+    <message>
+        <source>Lathe programs (*.txt *.nc *.tap *.cnc *.gc);;All files (*)</source>
+        <translation>ชุดรหัสสั่งการทำงานเครื่องกลึง (*.txt *.nc *.tap *.cnc *.gc);;ทุกแฟ้ม (*)</translation>
+    </message>
+    <message>
+        <source>Cannot open the program</source>
+        <translation>เปิดชุดรหัสสั่งการทำงานไม่ได้</translation>
+    </message>
+    <message>
+        <source>"%1" could not be read.</source>
+        <translation>อ่านแฟ้ม "%1" ไม่ได้</translation>
+    </message>
+    <message>
+        <source>Save program as</source>
+        <translation>บันทึกชุดรหัสสั่งการทำงานเป็น</translation>
+    </message>
+    <message>
+        <source>Lathe programs (*.txt *.nc);;All files (*)</source>
+        <translation>ชุดรหัสสั่งการทำงานเครื่องกลึง (*.txt *.nc);;ทุกแฟ้ม (*)</translation>
+    </message>
+    <message>
+        <source>Cannot save over this file</source>
+        <translation>บันทึกทับไฟล์นี้ไม่ได้</translation>
+    </message>
+    <message>
+        <source>Line %1 of "%2" is too long to edit, so it is not in the editor. Saving over the file would delete it: use Save As to write your version to another file.</source>
+        <translation>บรรทัดที่ %1 ของ "%2" ยาวเกินกว่าจะแก้ไขได้ จึงไม่ได้แสดงในหน้าต่างแก้ไข การบันทึกทับไฟล์จะทำให้บรรทัดนั้นหายไป ให้ใช้ "บันทึกเป็น" เพื่อบันทึกเป็นไฟล์ใหม่</translation>
+    </message>
+    <message>
+        <source>Cannot save the program</source>
+        <translation>บันทึกชุดรหัสสั่งการทำงานไม่ได้</translation>
+    </message>
+    <message>
+        <source>"%1" could not be written:
+%2</source>
+        <translation>เขียนแฟ้ม "%1" ไม่ได้:
+%2</translation>
+    </message>
+    <message>
+        <source>File changed on disk</source>
+        <translation>แฟ้มถูกเปลี่ยนแปลงบนดิสก์</translation>
+    </message>
+    <message>
+        <source>"%1" was changed by another program.</source>
+        <translation>แฟ้ม "%1" ถูกแก้ไขโดยโปรแกรมอื่น</translation>
+    </message>
+    <message>
+        <source>Reload it and lose your changes here?</source>
+        <translation>โหลดแฟ้มใหม่และทิ้งการแก้ไขในโปรแกรมนี้หรือไม่?</translation>
+    </message>
+    <message>
+        <source>Reload it?</source>
+        <translation>โหลดแฟ้มใหม่หรือไม่?</translation>
+    </message>
+    <message>
+        <source>&amp;Reload</source>
+        <translation>โหลดใหม่ (&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Keep mine</source>
+        <translation>ใช้ของฉัน (&amp;K)</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(ไม่มี)</translation>
+    </message>
+</context>
+<context>
+    <name>klueng::gui::ReportController</name>
+    <message>
+        <source>Print Code</source>
+        <translation>พิมพ์ชุดรหัสสั่งการทำงาน</translation>
+    </message>
+    <message>
+        <source>No printer is set up: use File &gt; Export PDF to save the sheet.</source>
+        <translation>ยังไม่ได้ตั้งค่าเครื่องพิมพ์: ใช้ แฟ้ม &gt; ส่งออกเป็น PDF เพื่อบันทึกเอกสาร</translation>
+    </message>
+    <message>
+        <source>Program sheet sent to %1</source>
+        <translation>ส่งเอกสารชุดรหัสสั่งการทำงานไปที่ %1 แล้ว</translation>
+    </message>
+    <message>
+        <source>Print Drawing</source>
+        <translation>พิมพ์ภาพชิ้นงาน</translation>
+    </message>
+    <message>
+        <source>Print Preview</source>
+        <translation>ดูตัวอย่างก่อนพิมพ์</translation>
+    </message>
+    <message>
+        <source>Export PDF</source>
+        <translation>ส่งออกเป็น PDF</translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
+        <translation>ไฟล์ PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Cannot write %1</source>
+        <translation>เขียนไฟล์ %1 ไม่ได้</translation>
+    </message>
+    <message>
+        <source>Exported %1</source>
+        <translation>ส่งออก %1 แล้ว</translation>
     </message>
 </context>
 </TS>

@@ -183,8 +183,8 @@ int runCheck(const std::vector<std::string>& args) {
   gcode::CheckOptions checkOptions;
   checkOptions.dialect = o.dialect;
   checkOptions.powerOnUnits = o.powerOnUnits;
-  checkOptions.turretStations = config.tools.stations;  // the turret the tool table was read for
-  machine::MachineSetup setup{config.machine, config.offsets, config.tools};
+  checkOptions.turretStations = config.setup.tools.stations;  // the turret the tool table was read for
+  machine::MachineSetup setup = config.setup;
   machine::RunOptions runOptions;
   runOptions.dialect = o.dialect;
   runOptions.powerOnUnits = o.powerOnUnits;

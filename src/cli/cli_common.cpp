@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "klueng/core/machine/job.h"
 #include "klueng/core/machine/subprogram_files.h"
 
 #include <algorithm>
@@ -163,72 +164,18 @@ std::string joinPath(const std::string& dir, std::string_view name) {
   return (std::filesystem::path(dir) / name).string();
 }
 
-bool isUnreadable(const Diagnostic& d) { return d.code == "F101" || d.code == "F102" || d.code == "F103"; }
-
-bool LoadedConfig::hasErrors() const {
-  return std::any_of(diagnostics.begin(), diagnostics.end(),
-                     [](const FileDiagnostic& f) { return isError(f.diagnostic.severity); });
-}
-
-std::vector<int> LoadedConfig::toolsWithBitmap() const {
-  std::vector<int> tools;
-  for (int t = 1; t <= io::kToolCount; ++t)
-    if (bitmaps[static_cast<std::size_t>(t - 1)]) tools.push_back(t);
-  return tools;
-}
-
-LoadedConfig loadConfig(const std::string& explicitDir) {
-  LoadedConfig config;
-  config.dir = io::findConfigDir(explicitDir);
-  const auto collect = [&](const std::string& file, const std::vector<Diagnostic>& diags) {
-    for (const Diagnostic& d : diags) {
-      if (isUnreadable(d)) config.unreadable = true;
-      config.diagnostics.push_back({file, d});
-    }
-  };
-
-  // machine.cfg is optional: without it the SPEC 1 defaults apply. It comes
-  // first because its turret size bounds the tool table.
-  const std::string machinePath = joinPath(config.dir, "machine.cfg");
-  std::error_code ec;
-  if (std::filesystem::exists(machinePath, ec)) {
-    auto machine = io::readMachineConfig(machinePath);
-    collect(machinePath, machine.diagnostics);
-    if (machine.value) config.machine = *machine.value;
-  }
-
-  const std::string toolsPath = joinPath(config.dir, "tools.cfg");
-  auto tools = io::readToolTable(toolsPath, config.machine.turretStations);
-  collect(toolsPath, tools.diagnostics);
-  if (tools.value) config.tools = *tools.value;
-
-  const std::string offsetsPath = joinPath(config.dir, "offset.cfg");
-  auto offsets = io::readOffsetTable(offsetsPath);
-  collect(offsetsPath, offsets.diagnostics);
-  if (offsets.value) config.offsets = *offsets.value;
-
-  for (int t = 1; t <= io::kToolCount; ++t) {
-    const std::string path = config.tools.bitmapPath(t);
-    if (path.empty() || !std::filesystem::is_regular_file(path, ec)) continue;  // F121 already says so
-    auto image = io::readImage(path);
-    for (const Diagnostic& d : image.diagnostics) config.diagnostics.push_back({path, d});
-    if (image.ok()) config.bitmaps[static_cast<std::size_t>(t - 1)] = std::move(*image.value);
-  }
-  return config;
-}
+LoadedConfig loadConfig(const std::string& explicitDir) { return machine::loadMachineSetup(explicitDir, true); }
 
 int stationLimit(const LoadedConfig& config, gcode::Dialect dialect) {
   const int profileLimit = gcode::machineProfile(dialect).maxToolStation;
-  return profileLimit > 0 ? std::min(profileLimit, config.tools.stations) : config.tools.stations;
+  return profileLimit > 0 ? std::min(profileLimit, config.setup.tools.stations) : config.setup.tools.stations;
 }
 
 JobTools inferJobTools(const LoadedConfig& config, const std::string& programPath, gcode::Dialect dialect,
                        const std::vector<machine::StationOverride>& overrides) {
   JobTools job;
-  job.setup.tools = config.tools;
-  job.setup.offsets = config.offsets;
-  job.setup.machine = config.machine;
-  job.toolsWithBitmap = config.toolsWithBitmap();
+  job.setup = config.setup;
+  job.toolsWithBitmap = machine::toolsWithBitmap(config.setup);
   const auto read = io::readProgramFile(programPath);
   if (!read.value) return job;
   const gcode::Program program = gcode::parse(read.value->gcode, read.value->gcodeFirstLine);
@@ -237,15 +184,7 @@ JobTools inferJobTools(const LoadedConfig& config, const std::string& programPat
                           io::shippedToolLibrary(), overrides, stationLimit(config, dialect));
   job.setup = std::move(inferred.setup);
   job.notes = inferred.notes();
-  std::error_code ec;
-  for (const machine::ToolChoice& c : inferred.choices) {
-    auto& have = job.toolsWithBitmap;
-    const bool exists = std::filesystem::is_regular_file(job.setup.tools.bitmapPath(c.station), ec);
-    const auto it = std::find(have.begin(), have.end(), c.station);
-    if (exists && it == have.end()) have.push_back(c.station);
-    if (!exists && it != have.end()) have.erase(it);
-  }
-  std::sort(job.toolsWithBitmap.begin(), job.toolsWithBitmap.end());
+  job.toolsWithBitmap = machine::toolsWithBitmap(job.setup);
   return job;
 }
 

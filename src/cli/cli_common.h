@@ -16,6 +16,7 @@
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/io/tool_config.h"
 #include "klueng/core/machine/interpreter.h"
+#include "klueng/core/machine/setup_files.h"
 #include "klueng/core/machine/tool_inference.h"
 #include "klueng/core/messages.h"
 
@@ -47,10 +48,7 @@ std::vector<core::Diagnostic> resolveStock(core::io::ProgramFile& file, const st
 std::string formatNote(const std::string& file, const core::Diagnostic& d, core::Lang lang);
 
 // A diagnostic with the file it belongs to (a program, a cfg file, a bitmap).
-struct FileDiagnostic {
-  std::string file;
-  core::Diagnostic diagnostic;
-};
+using FileDiagnostic = core::machine::SetupDiagnostic;
 
 // `FILE:LINE:COL: error E104: message` (`FILE: ...` when the line is unknown), no newline.
 std::string formatGccStyle(const std::string& file, const core::Diagnostic& d, core::Lang lang);
@@ -67,22 +65,11 @@ std::string joinPath(const std::string& dir, std::string_view name);
 
 // True for diagnostics meaning "the file could not be read at all"
 // (missing, a folder, no access, over 64 MB): klueng-cli exits 2 on them.
-bool isUnreadable(const core::Diagnostic& d);
+using core::machine::isUnreadable;
 
-// tools.cfg, offset.cfg, machine.cfg (optional: defaults when absent) and the
-// tool bitmaps, from findConfigDir(explicitDir).
-struct LoadedConfig {
-  std::string dir;
-  core::io::ToolTable tools;
-  core::io::OffsetTable offsets;
-  core::io::MachineConfig machine;
-  std::array<std::optional<core::io::RgbImage>, core::io::kToolCount> bitmaps;  // [0] = tool 01
-  std::vector<FileDiagnostic> diagnostics;
-  bool unreadable = false;  // tools.cfg or offset.cfg could not be read
-  bool hasErrors() const;
-  // Tools whose bitmap exists and decodes, for gcode::CheckOptions.
-  std::vector<int> toolsWithBitmap() const;
-};
+// tools.cfg, offset.cfg, machine.cfg and the tool bitmaps, from
+// findConfigDir(explicitDir): the core's one reader of a setup.
+using LoadedConfig = core::machine::LoadedSetup;
 LoadedConfig loadConfig(const std::string& explicitDir = {});
 
 // Tools from the program (core/machine/tool_inference.h) for one program: the

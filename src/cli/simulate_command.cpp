@@ -207,7 +207,7 @@ int runSimulate(const std::vector<std::string>& args) {
   gcode::CheckOptions checkOptions;
   checkOptions.dialect = o.dialect;
   checkOptions.powerOnUnits = o.powerOnUnits;
-  checkOptions.turretStations = config.tools.stations;  // the turret the tool table was read for
+  checkOptions.turretStations = config.setup.tools.stations;  // the turret the tool table was read for
   checkOptions.toolsWithBitmap = job.toolsWithBitmap;
   CheckedProgram checked = checkProgramFile(o.file, checkOptions);
   for (const auto& d : checked.diagnostics) printDiagnostic(checked.fileOf(d), d, o.lang);

@@ -11,12 +11,12 @@
 #include <memory>
 #include <optional>
 
+#include "gui/check_controller.h"
 #include "gui/job_tools.h"
 #include "gui/document.h"
 #include "gui/run_controller.h"
 #include "klueng/core/gcode/code_table.h"
 #include "klueng/core/machine/interpreter.h"
-#include "render/report_sheets.h"
 
 class QAction;
 class QActionGroup;
@@ -116,40 +116,25 @@ class MainWindow : public QMainWindow {
 
  private:
   void createActions();
-  void createMenus();
-  void createToolBars();
   void createDocks();
+  void connectDocuments();
   void retranslateUi();
   void restoreLayout();
   void saveLayout();
 
-  // Save / Discard / Cancel when there are unsaved changes; true = go on.
-  bool maybeSave();
-  bool isModified() const;
   void updateTitle();
-  void updateRecentMenu();
-  void startLoad(const QString& path);
-  void onLoadFinished();
-  void appendNextChunk();
-  void finishLoad();
-  void watchFile(const QString& path);
-  void onFileChangedOnDisk(const QString& path);
   void showBusyIndicator();
 
-  void scheduleCheck();
-  void startCheck();
-  void startCheckOn(const QString& text);
-  void onCheckFinished();
+  CheckController::Request checkRequest() const;
+  void onCheckFinished(const JobToolsResult& result);
   void showDiagnostics();
 
   void loadMachineSetup(const QString& dir = {});
+  // The open file's folder (subprogram files come from there); empty when untitled.
+  QString programFolder() const;
   // Hand the editor's current text to the run controller (before a run).
   void syncRunner();
   core::io::ProgramFile currentProgramFile() const;
-  render::ReportData reportData(bool withPart) const;
-  // Paints the chosen sheets on `device` (painter active); a new page between them.
-  void paintReports(QPainter& painter, QPagedPaintDevice& device, const render::ReportData& data, bool code,
-                    bool drawing);
   void onRunStateChanged(RunState state);
   void onAlarm(const core::Diagnostic& alarm);
   void onCheckFailed(const QList<core::Diagnostic>& diags);
@@ -159,7 +144,10 @@ class MainWindow : public QMainWindow {
   void setSpeedIndex(int index);
 
   std::unique_ptr<Settings> settings_;
-  Document* document_ = nullptr;
+  class DocumentManager* docs_ = nullptr;
+  Document* document_ = nullptr;  // docs_'s
+  class ReportController* reports_ = nullptr;
+  class ActionTable* actions_ = nullptr;
   CodeEditor* editor_ = nullptr;
   DiagnosticsPanel* diagnostics_ = nullptr;
   class FlowPanel* flow_ = nullptr;
@@ -168,53 +156,21 @@ class MainWindow : public QMainWindow {
   StatusFields* statusFields_ = nullptr;
   StatusLamps* statusLamps_ = nullptr;
   QSplitter* splitter_ = nullptr;
-  QWidget* banner_ = nullptr;
-  QLabel* bannerLabel_ = nullptr;
+  class Banner* banner_ = nullptr;
   DialectOfferBar* dialectOffer_ = nullptr;
   QLabel* stockLabel_ = nullptr;
   QProgressBar* busyBar_ = nullptr;
   QPointer<FindDialog> findDialog_;
   QPointer<HelpContents> help_;
-  QFileSystemWatcher* watcher_ = nullptr;
-  QTimer* checkTimer_ = nullptr;
-  QTimer* diskChangeTimer_ = nullptr;
+  CheckController* checker_ = nullptr;
 
-  QToolBar* fileToolBar_ = nullptr;
-  QToolBar* editToolBar_ = nullptr;
-  QToolBar* runToolBar_ = nullptr;
-  QToolBar* helpToolBar_ = nullptr;
-  QMenu* fileMenu_ = nullptr;
-  QMenu* recentMenu_ = nullptr;
-  QMenu* editMenu_ = nullptr;
-  QMenu* runMenu_ = nullptr;
-  QMenu* speedMenu_ = nullptr;
-  QMenu* toolMenu_ = nullptr;
-  QMenu* dialectMenu_ = nullptr;
-  QMenu* viewMenu_ = nullptr;
-  QMenu* helpMenu_ = nullptr;
-  QHash<QString, QAction*> actions_;
-  QActionGroup* speedGroup_ = nullptr;
-  QActionGroup* dialectGroup_ = nullptr;
   RunSpeedControl* speedControl_ = nullptr;
 
-  QFutureWatcher<LoadedProgram> loadWatcher_;
-  QString loadingPath_;
-  QString pendingText_;        // G-code still to go into the editor
-  qsizetype pendingOffset_ = 0;
-  bool fillingEditor_ = false;
-  quint64 fillGeneration_ = 0;
-  QFutureWatcher<JobToolsResult> checkWatcher_;
-  bool checkPending_ = false;
-  bool checkInFlight_ = false;
-  bool loadInFlight_ = false;
-  quint64 checkGeneration_ = 0;
-  quint64 appliedGeneration_ = 0;
   std::vector<core::Diagnostic> lastDiagnostics_;
   std::vector<core::Diagnostic> runDiagnostics_;  // the last alarm / refused run
 
   core::gcode::Dialect dialect_ = core::gcode::Dialect::Fanuc;
   std::optional<core::gcode::InputUnits> powerOnUnits_;  // nullopt: as the dialect's machine
-  QActionGroup* unitsGroup_ = nullptr;
   QString configDir_;
   QString configDirOverride_;  // where the dialogs last saved the .cfg files
   core::machine::MachineSetup setup_;   // tools.cfg / offset.cfg / machine.cfg as read
@@ -223,8 +179,6 @@ class MainWindow : public QMainWindow {
   // the last inference (its setup is what the run uses).
   std::vector<core::machine::StationOverride> toolOverrides_;
   core::machine::ToolInference toolInference_;
-  QString setupProblems_;
-  bool ignoreNextDiskChange_ = false;
   bool runnerStale_ = true;
 };
 

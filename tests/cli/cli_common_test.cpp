@@ -94,9 +94,9 @@ TEST(CliCommon, ShippedConfigLoadsCleanWithEveryBitmap) {
   const LoadedConfig config = loadConfig(KLUENG_SOURCE_DIR);
   EXPECT_FALSE(config.unreadable);
   EXPECT_TRUE(config.diagnostics.empty()) << config.diagnostics.front().diagnostic.code;
-  EXPECT_EQ(config.toolsWithBitmap(), (std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8}));
-  EXPECT_EQ(config.offsets.at(1).tip, 3);
-  EXPECT_EQ(config.machine.rapidZ, 8000.0);
+  EXPECT_EQ(config.toolsWithBitmap(), (std::optional<std::vector<int>>{{1, 2, 3, 4, 5, 6, 7, 8}}));
+  EXPECT_EQ(config.setup.offsets.at(1).tip, 3);
+  EXPECT_EQ(config.setup.machine.rapidZ, 8000.0);
   ASSERT_TRUE(config.bitmaps[2]);
   EXPECT_EQ(config.bitmaps[2]->width, 60);  // 30 mm at 2 px/mm
 }

@@ -109,6 +109,7 @@ void ToolTable::setLibraryTool(int tool, const std::string& id, const std::strin
   bitmap[i] = std::string(kLibraryPrefix) + id;
   libraryPath[i] = path;
   pixelsPerMm[i] = ppm;
+  bitmapUnreadable[i] = false;
 }
 
 ReadResult<ToolTable> parseToolTable(std::string_view text, const std::string& folder,

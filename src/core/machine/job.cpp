@@ -2,6 +2,7 @@
 #include "klueng/core/machine/job.h"
 
 #include <algorithm>
+#include <filesystem>
 
 #include "klueng/core/gcode/checker.h"
 #include "klueng/core/gcode/parser.h"
@@ -11,9 +12,13 @@ namespace klueng::core::machine {
 
 std::vector<int> toolsWithBitmap(const MachineSetup& setup) {
   std::vector<int> out;
+  std::error_code ec;
   const int stations = static_cast<int>(setup.tools.bitmap.size());
-  for (int t = 1; t <= stations; ++t)
-    if (!setup.tools.bitmap[static_cast<std::size_t>(t - 1)].empty()) out.push_back(t);
+  for (int t = 1; t <= stations; ++t) {
+    const std::string path = setup.tools.bitmapPath(t);
+    if (setup.tools.bitmapUnreadable[static_cast<std::size_t>(t - 1)]) continue;
+    if (!path.empty() && std::filesystem::is_regular_file(path, ec)) out.push_back(t);
+  }
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "klueng/core/gcode/parser.h"
+#include "klueng/core/machine/job.h"
 #include "klueng/core/gcode/program_index.h"
 #include "klueng/core/machine/subprogram_files.h"
 
@@ -41,12 +42,8 @@ JobCheck checkJob(std::string_view gcode, int firstLine, gcode::CheckOptions opt
   std::vector<Diagnostic> fileDiagnostics;
   if (!folder.empty()) fileDiagnostics = attachSubprogramFiles(program, folder, options.dialect);
   result.inference = inferTools(program, gcode, firstLine, setup, library, overrides, stations);
-  if (options.toolsWithBitmap) {
-    std::vector<int> withBitmap;
-    for (int t = 1; t <= io::kMaxStations; ++t)
-      if (!result.inference.setup.tools.bitmap[static_cast<std::size_t>(t - 1)].empty()) withBitmap.push_back(t);
-    options.toolsWithBitmap = withBitmap;
-  }
+  // The program's tools decide which T words have a tool (one meaning: job.h).
+  if (options.toolsWithBitmap) options.toolsWithBitmap = toolsWithBitmap(result.inference.setup);
   result.diagnostics = gcode::check(program, options);
   result.diagnostics.insert(result.diagnostics.end(), fileDiagnostics.begin(), fileDiagnostics.end());
   // Errors in subprogram files: one E412 per file, on the call that reaches it.

@@ -33,6 +33,8 @@ struct ToolTable {
   std::array<double, kMaxStations> pixelsPerMm = filledPixelsPerMm();
   int stations = kDefaultTurretStations;  // turret size the table was read for
   std::string folder;  // folder of tools.cfg, to resolve relative names
+  // Bitmaps that exist but do not decode (machine/setup_files.h sets them): no tool there.
+  std::array<bool, kMaxStations> bitmapUnreadable{};
   std::string bitmapPath(int tool) const;  // resolved path, empty if none
   double pixelsPerMmOf(int tool) const;    // 2 for a plain bitmap
   std::string libraryId(int tool) const;   // the ID of a `library:ID` line, else empty

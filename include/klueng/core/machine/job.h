@@ -27,8 +27,9 @@ struct CompiledJob {
   bool hasErrors() const { return core::hasErrors(diagnostics); }
 };
 
-// The stations that have a bitmap in the setup's tool table: the T words the
-// check accepts (none: no table was read, and T words are not checked).
+// The stations whose bitmap (tools.cfg line or library tool) names an existing
+// file: the T words the check accepts (E305). The one meaning for the editor,
+// a run, the CLI and the reports.
 std::vector<int> toolsWithBitmap(const MachineSetup& setup);
 
 CompiledJob compileJob(const io::ProgramFile& file, const MachineSetup& setup, const JobOptions& options);

@@ -1,0 +1,66 @@
+// Reading a machine setup's folder (setup_files.h).
+#include "klueng/core/machine/setup_files.h"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "klueng/core/machine/job.h"
+
+namespace klueng::core::machine {
+
+bool isUnreadable(const Diagnostic& d) { return d.code == "F101" || d.code == "F102" || d.code == "F103"; }
+
+bool LoadedSetup::hasErrors() const {
+  return std::any_of(diagnostics.begin(), diagnostics.end(),
+                     [](const SetupDiagnostic& f) { return isError(f.diagnostic.severity); });
+}
+
+std::optional<std::vector<int>> LoadedSetup::toolsWithBitmap() const {
+  if (!toolTableRead) return std::nullopt;
+  return machine::toolsWithBitmap(setup);
+}
+
+LoadedSetup loadMachineSetup(const std::string& explicitDir, bool readBitmaps) {
+  LoadedSetup loaded;
+  loaded.dir = io::findConfigDir(explicitDir);
+  const std::filesystem::path dir(loaded.dir);
+  const auto collect = [&loaded](const std::string& file, const std::vector<Diagnostic>& diags) {
+    for (const Diagnostic& d : diags) {
+      if (isUnreadable(d)) loaded.unreadable = true;
+      loaded.diagnostics.push_back({file, d});
+    }
+  };
+  std::error_code ec;
+  const std::string machinePath = (dir / "machine.cfg").string();
+  if (std::filesystem::exists(machinePath, ec)) {
+    auto machine = io::readMachineConfig(machinePath);
+    collect(machinePath, machine.diagnostics);
+    if (machine.value) loaded.setup.machine = *machine.value;
+  }
+  const std::string toolsPath = (dir / "tools.cfg").string();
+  auto tools = io::readToolTable(toolsPath, loaded.setup.machine.turretStations);
+  collect(toolsPath, tools.diagnostics);
+  if (tools.value) {
+    loaded.setup.tools = *tools.value;
+    loaded.toolTableRead = true;
+  }
+  const std::string offsetsPath = (dir / "offset.cfg").string();
+  auto offsets = io::readOffsetTable(offsetsPath);
+  collect(offsetsPath, offsets.diagnostics);
+  if (offsets.value) loaded.setup.offsets = *offsets.value;
+
+  // Every bitmap is decoded once here: one that does not decode is no tool,
+  // for the editor, a run and the CLI alike.
+  for (int t = 1; t <= io::kToolCount; ++t) {
+    const std::string path = loaded.setup.tools.bitmapPath(t);
+    if (path.empty() || !std::filesystem::is_regular_file(path, ec)) continue;  // F121 already says so
+    auto image = io::readImage(path);
+    for (const Diagnostic& d : image.diagnostics) loaded.diagnostics.push_back({path, d});
+    const auto i = static_cast<std::size_t>(t - 1);
+    loaded.setup.tools.bitmapUnreadable[i] = !image.ok();
+    if (image.ok() && readBitmaps) loaded.bitmaps[i] = std::move(*image.value);
+  }
+  return loaded;
+}
+
+}  // namespace klueng::core::machine

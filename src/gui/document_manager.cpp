@@ -1,0 +1,283 @@
+#include "gui/document_manager.h"
+
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFileSystemWatcher>
+#include <QMenu>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QTextCursor>
+#include <QTimer>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include "gui/code_editor.h"
+#include "gui/language.h"
+#include "gui/settings.h"
+#include "klueng/core/messages.h"
+
+namespace klueng::gui {
+
+DocumentManager::DocumentManager(QWidget* window, CodeEditor* editor, Settings* settings,
+                                 std::function<LoadContext()> context)
+    : QObject(window),
+      window_(window),
+      editor_(editor),
+      settings_(settings),
+      context_(std::move(context)),
+      document_(new Document(this)),
+      watcher_(new QFileSystemWatcher(this)),
+      diskChangeTimer_(new QTimer(this)) {
+  connect(watcher_, &QFileSystemWatcher::fileChanged, this, &DocumentManager::onFileChangedOnDisk);
+  diskChangeTimer_->setSingleShot(true);
+  diskChangeTimer_->setInterval(250);
+  connect(&loadWatcher_, &QFutureWatcherBase::finished, this, &DocumentManager::onLoadFinished);
+  connect(editor_->document(), &QTextDocument::modificationChanged, this, &DocumentManager::modificationChanged);
+  connect(document_, &Document::headerChanged, this, &DocumentManager::modificationChanged);
+}
+
+DocumentManager::~DocumentManager() { loadWatcher_.waitForFinished(); }
+
+bool DocumentManager::isModified() const {
+  return editor_->document()->isModified() || document_->isHeaderModified();
+}
+
+bool DocumentManager::maybeSave() {
+  if (!isModified()) return true;
+  QMessageBox box(window_);
+  box.setObjectName(QStringLiteral("unsavedChangesBox"));
+  box.setIcon(QMessageBox::Warning);
+  box.setWindowTitle(tr("Unsaved changes"));
+  box.setText(tr("The program \"%1\" has been changed.").arg(document_->displayName()));
+  box.setInformativeText(tr("Do you want to save your changes?"));
+  QPushButton* saveButton = box.addButton(tr("&Save"), QMessageBox::AcceptRole);
+  QPushButton* discardButton = box.addButton(tr("&Discard"), QMessageBox::DestructiveRole);
+  QPushButton* cancelButton = box.addButton(tr("Cancel"), QMessageBox::RejectRole);
+  saveButton->setObjectName(QStringLiteral("saveButton"));
+  discardButton->setObjectName(QStringLiteral("discardButton"));
+  cancelButton->setObjectName(QStringLiteral("cancelButton"));
+  box.setDefaultButton(saveButton);
+  box.setEscapeButton(cancelButton);
+  box.exec();
+  if (box.clickedButton() == saveButton) return save();
+  return box.clickedButton() == discardButton;
+}
+
+void DocumentManager::newFile() {
+  if (!maybeSave()) return;
+  emit aboutToReplace();
+  if (!document_->filePath().isEmpty()) watcher_->removePath(document_->filePath());
+  ++fillGeneration_;  // drop the rest of a file still going into the editor
+  pendingText_.clear();
+  fillingEditor_ = false;
+  loadInFlight_ = loadWatcher_.isRunning();
+  editor_->setUndoRedoEnabled(true);
+  editor_->setReadOnly(false);
+  document_->reset(settings_->lastJobHeader());
+  editor_->setFirstFileLine(document_->gcodeFirstLine());
+  editor_->clearBreakpoints();
+  editor_->setPlainText(QString());
+  editor_->document()->setModified(false);
+  emit cleared();
+}
+
+void DocumentManager::open() {
+  if (!maybeSave()) return;
+  QString dir = settings_->lastDirectory();
+  if (dir.isEmpty()) dir = QDir::homePath();
+  const QString path = QFileDialog::getOpenFileName(
+      window_, tr("Open program"), dir, tr("Lathe programs (*.txt *.nc *.tap *.cnc *.gc);;All files (*)"));
+  if (!path.isEmpty()) startLoad(path);
+}
+
+bool DocumentManager::openFile(const QString& path) {
+  if (!maybeSave()) return false;
+  startLoad(path);
+  return true;
+}
+
+void DocumentManager::startLoad(const QString& path) {
+  if (loadWatcher_.isRunning()) loadWatcher_.waitForFinished();
+  loadInFlight_ = true;
+  // A plain file's stock: its own Job details, else inferred; never the last file's.
+  const core::io::JobHeader defaults = settings_->lastJobHeader();
+  const std::optional<core::io::JobHeader> details = settings_->jobDetailsFor(path);
+  const LoadContext context = context_();
+  loadWatcher_.setFuture(QtConcurrent::run([path, defaults, details, context] {
+    return Document::load(path, defaults, details, context.setup, context.run);
+  }));
+  emit busyChanged();
+}
+
+void DocumentManager::onLoadFinished() {
+  const LoadedProgram loaded = loadWatcher_.result();
+  loadInFlight_ = false;
+  if (!loaded.ok) {
+    emit busyChanged();
+    QStringList lines;
+    for (const auto& d : loaded.diagnostics)
+      lines << QString::fromStdString(core::formatMessage(d, Language::coreLang()));
+    QMessageBox::warning(window_, tr("Cannot open the program"),
+                         tr("\"%1\" could not be read.").arg(QDir::toNativeSeparators(loaded.path)) +
+                             (lines.isEmpty() ? QString() : QStringLiteral("\n\n") + lines.join(QLatin1Char('\n'))));
+    settings_->removeRecentFile(loaded.path);
+    emit loadFailed(loaded.path);
+    return;
+  }
+  emit aboutToReplace();
+  if (!document_->filePath().isEmpty()) watcher_->removePath(document_->filePath());
+  document_->adopt(loaded);
+  editor_->setFirstFileLine(document_->gcodeFirstLine());
+  editor_->clearBreakpoints();
+  editor_->setExecutingLine(0);
+  editor_->setDiagnostics({});
+  // The text goes into the editor a few thousand lines per event-loop pass, so
+  // colouring a 100,000-line program never freezes the window.
+  loadInFlight_ = true;
+  fillingEditor_ = true;
+  editor_->setReadOnly(true);
+  editor_->setUndoRedoEnabled(false);
+  editor_->clear();
+  pendingText_ = loaded.gcode;
+  pendingOffset_ = 0;
+  ++fillGeneration_;
+  appendNextChunk();
+}
+
+void DocumentManager::appendNextChunk() {
+  constexpr int kChunkLines = 1500;
+  const qsizetype size = pendingText_.size();
+  qsizetype end = pendingOffset_;
+  for (int n = 0; n < kChunkLines && end < size; ++n) {
+    const qsizetype nl = pendingText_.indexOf(QLatin1Char('\n'), end);
+    end = nl < 0 ? size : nl + 1;
+  }
+  QTextCursor c(editor_->document());
+  c.movePosition(QTextCursor::End);
+  c.insertText(pendingText_.mid(pendingOffset_, end - pendingOffset_));
+  pendingOffset_ = end;
+  const quint64 generation = fillGeneration_;
+  QTimer::singleShot(0, this, [this, generation, done = pendingOffset_ >= size] {
+    if (generation != fillGeneration_) return;  // a newer file took over
+    if (done) finishLoad();
+    else appendNextChunk();
+  });
+}
+
+void DocumentManager::finishLoad() {
+  const QString loadedText = std::exchange(pendingText_, QString());
+  fillingEditor_ = false;
+  loadInFlight_ = false;
+  editor_->setUndoRedoEnabled(true);
+  editor_->setReadOnly(false);
+  editor_->document()->setModified(false);
+  editor_->moveCursor(QTextCursor::Start);
+  rememberFile();
+  emit loaded(document_->filePath(), loadedText);
+}
+
+void DocumentManager::rememberFile() {
+  const QString path = document_->filePath();
+  settings_->addRecentFile(path);
+  settings_->setLastDirectory(QFileInfo(path).absolutePath());
+  if (!document_->isPlainGcode()) settings_->setLastJobHeader(document_->header());
+  watchFile(path);
+}
+
+bool DocumentManager::save() {
+  if (document_->isUntitled()) return saveAs();
+  return saveFile(document_->filePath());
+}
+
+bool DocumentManager::saveAs() {
+  QString suggestion = document_->filePath();
+  if (suggestion.isEmpty()) {
+    const QString dir = settings_->lastDirectory().isEmpty() ? QDir::homePath() : settings_->lastDirectory();
+    suggestion = QDir(dir).filePath(document_->displayName());
+  }
+  const QString path = QFileDialog::getSaveFileName(window_, tr("Save program as"), suggestion,
+                                                    tr("Lathe programs (*.txt *.nc);;All files (*)"));
+  if (path.isEmpty()) return false;
+  return saveFile(path);
+}
+
+bool DocumentManager::saveFile(const QString& path) {
+  // A line too long to edit was left out of the editor: writing over the file would delete it.
+  if (const int omitted = document_->firstOmittedLine();
+      omitted > 0 && QFileInfo(path).absoluteFilePath() == QFileInfo(document_->filePath()).absoluteFilePath()) {
+    QMessageBox::warning(window_, tr("Cannot save over this file"),
+                         tr("Line %1 of \"%2\" is too long to edit, so it is not in the editor. Saving over the file "
+                            "would delete it: use Save As to write your version to another file.")
+                             .arg(omitted)
+                             .arg(document_->displayName()));
+    return false;
+  }
+  // A file still going into the editor is saved whole: put the rest in first.
+  if (fillingEditor_) {
+    QTextCursor c(editor_->document());
+    c.movePosition(QTextCursor::End);
+    c.insertText(pendingText_.mid(pendingOffset_));
+    pendingOffset_ = pendingText_.size();
+    ++fillGeneration_;  // the queued chunks and finishLoad() of this fill are void now
+    finishLoad();
+  }
+  QString error;
+  const QString old = document_->filePath();
+  if (!old.isEmpty()) watcher_->removePath(old);
+  if (!document_->save(path, editor_->toPlainText(), &error)) {
+    if (!old.isEmpty()) watcher_->addPath(old);
+    QMessageBox::critical(window_, tr("Cannot save the program"),
+                          tr("\"%1\" could not be written:\n%2").arg(QDir::toNativeSeparators(path), error));
+    return false;
+  }
+  editor_->document()->setModified(false);
+  rememberFile();
+  emit modificationChanged();
+  emit saved(document_->filePath());
+  return true;
+}
+
+void DocumentManager::watchFile(const QString& path) {
+  // An atomic save replaces the file; watch the new one.
+  if (!watcher_->files().contains(path)) watcher_->addPath(path);
+}
+
+void DocumentManager::onFileChangedOnDisk(const QString& path) {
+  if (path != document_->filePath()) return;
+  // Editors often write in several steps: wait until the file settles.
+  diskChangeTimer_->disconnect();
+  connect(diskChangeTimer_, &QTimer::timeout, this, [this, path] {
+    if (path != document_->filePath()) return;
+    if (!QFileInfo::exists(path)) return;  // deleted or mid-rename; a later change re-triggers
+    watchFile(path);
+    QMessageBox box(window_);
+    box.setObjectName(QStringLiteral("fileChangedBox"));
+    box.setIcon(QMessageBox::Question);
+    box.setWindowTitle(tr("File changed on disk"));
+    box.setText(tr("\"%1\" was changed by another program.").arg(document_->displayName()));
+    box.setInformativeText(isModified() ? tr("Reload it and lose your changes here?") : tr("Reload it?"));
+    QPushButton* reload = box.addButton(tr("&Reload"), QMessageBox::AcceptRole);
+    QPushButton* keep = box.addButton(tr("&Keep mine"), QMessageBox::RejectRole);
+    reload->setObjectName(QStringLiteral("reloadButton"));
+    keep->setObjectName(QStringLiteral("keepButton"));
+    box.exec();
+    if (box.clickedButton() == reload) startLoad(path);
+  });
+  diskChangeTimer_->start();
+}
+
+void DocumentManager::fillRecentMenu(QMenu* menu) {
+  menu->clear();
+  const QStringList files = settings_->recentFiles();
+  for (int i = 0; i < files.size(); ++i) {
+    QAction* a = menu->addAction(QStringLiteral("&%1 %2").arg(i + 1).arg(
+        QFileInfo(files[i]).fileName().replace(QLatin1Char('&'), QStringLiteral("&&"))));
+    a->setToolTip(QDir::toNativeSeparators(files[i]));
+    a->setStatusTip(QDir::toNativeSeparators(files[i]));
+    const QString path = files[i];
+    connect(a, &QAction::triggered, this, [this, path] { openFile(path); });
+  }
+  if (files.isEmpty()) menu->addAction(tr("(none)"))->setEnabled(false);
+}
+
+}  // namespace klueng::gui

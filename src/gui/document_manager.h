@@ -1,0 +1,91 @@
+#pragma once
+// The open file's life in the window (issue 12, the way Tiled's DocumentManager
+// does it): new, open (read off the GUI thread, then fed to the editor a few
+// thousand lines per event-loop pass), save / save as (atomic), the unsaved-
+// changes prompt, watching the file on disk and the recent-files menu. It owns
+// no machining: the window tells it how to read a plain file's stock
+// (LoadContext) and hears `replaced`, `loaded` and `saved`.
+#include <QFutureWatcher>
+#include <QObject>
+#include <QString>
+#include <functional>
+
+#include "gui/document.h"
+
+class QFileSystemWatcher;
+class QMenu;
+class QTimer;
+class QWidget;
+
+namespace klueng::gui {
+
+class CodeEditor;
+class Settings;
+
+class DocumentManager : public QObject {
+  Q_OBJECT
+ public:
+  // What a load needs to infer a plain file's stock: the setup and the run's dialect and units.
+  struct LoadContext {
+    core::machine::MachineSetup setup;
+    core::machine::RunOptions run;
+  };
+
+  DocumentManager(QWidget* window, CodeEditor* editor, Settings* settings, std::function<LoadContext()> context);
+  ~DocumentManager() override;
+
+  Document* document() const { return document_; }
+  bool isModified() const;
+  // True while a file is read or still going into the editor.
+  bool isLoading() const { return loadInFlight_; }
+  // True while the editor is being filled: its changes are not the user's.
+  bool isFillingEditor() const { return fillingEditor_; }
+
+  // Save / Discard / Cancel when there are unsaved changes; true = go on.
+  bool maybeSave();
+  void newFile();
+  void open();
+  bool openFile(const QString& path);  // false when the user cancelled
+  bool save();
+  bool saveAs();
+  bool saveFile(const QString& path);  // atomic; false (with a message box) on failure
+  // Fills File > Recent Files.
+  void fillRecentMenu(QMenu* menu);
+
+ signals:
+  // The editor is about to get another program (stop the run, clear alarms).
+  void aboutToReplace();
+  // A new untitled program is in the editor.
+  void cleared();
+  // A file is wholly in the editor; `text` is its G-code (no need to read it back).
+  void loaded(const QString& path, const QString& text);
+  void loadFailed(const QString& path);
+  void saved(const QString& path);
+  void modificationChanged();
+  void busyChanged();
+
+ private:
+  void startLoad(const QString& path);
+  void onLoadFinished();
+  void appendNextChunk();
+  void finishLoad();
+  void watchFile(const QString& path);
+  void onFileChangedOnDisk(const QString& path);
+  void rememberFile();
+
+  QWidget* window_;
+  CodeEditor* editor_;
+  Settings* settings_;
+  std::function<LoadContext()> context_;
+  Document* document_;
+  QFileSystemWatcher* watcher_;
+  QTimer* diskChangeTimer_;
+  QFutureWatcher<LoadedProgram> loadWatcher_;
+  QString pendingText_;  // G-code still to go into the editor
+  qsizetype pendingOffset_ = 0;
+  bool fillingEditor_ = false;
+  bool loadInFlight_ = false;
+  quint64 fillGeneration_ = 0;
+};
+
+}  // namespace klueng::gui

@@ -1,0 +1,247 @@
+// The main window's commands (issue 12): the action table's actions wired to
+// their slots, the docks, retranslation, and the choices the menus make
+// (dialect, power-on units, animation speed).
+#include <QAction>
+#include <QMenu>
+#include <QStatusBar>
+#include <QToolBar>
+
+#include "gui/action_table.h"
+#include "gui/code_editor.h"
+#include "gui/diagnostics_panel.h"
+#include "gui/document_manager.h"
+#include "gui/flow_panel.h"
+#include "gui/help_contents.h"
+#include "gui/language.h"
+#include "gui/main_window.h"
+#include "gui/output_view.h"
+#include "gui/run_speed_control.h"
+#include "gui/settings.h"
+#include "gui/status_panel.h"
+#include "klueng/core/gcode/machine_profile.h"
+
+namespace klueng::gui {
+
+namespace {
+
+// The Dialect menu's action of a machine profile ("actionDialectHaas").
+QString dialectActionName(core::gcode::Dialect d) {
+  switch (d) {
+    case core::gcode::Dialect::Fanuc: return QStringLiteral("actionDialectFanuc");
+    case core::gcode::Dialect::Haas: return QStringLiteral("actionDialectHaas");
+    case core::gcode::Dialect::Classic: return QStringLiteral("actionDialectClassic");
+  }
+  return QStringLiteral("actionDialectFanuc");
+}
+
+// Animation speeds: machine seconds per wall second; 0 = as fast as possible.
+// The same stops as the tool bar's speed slider.
+const std::vector<double>& speeds() { return RunSpeedControl::steps(); }
+int speedCount() { return static_cast<int>(speeds().size()); }
+
+}  // namespace
+
+// ---------------------------------------------------------------- actions
+
+QAction* MainWindow::action(const QString& objectName) const { return actions_->action(objectName); }
+
+void MainWindow::createActions() {
+  // The table makes every action, menu and tool bar (action_table.cpp); here each gets its slot.
+  actions_ = new ActionTable(this, speedCount());
+  actions_->add(QStringLiteral("diagnosticsDock"), diagnostics_->toggleViewAction());
+  actions_->add(QStringLiteral("flowDock"), flow_->toggleViewAction());
+  actions_->buildToolBars();
+  actions_->buildMenus();
+  connect(actions_->menu(QStringLiteral("menuRecent")), &QMenu::aboutToShow, this,
+          [this] { docs_->fillRecentMenu(actions_->menu(QStringLiteral("menuRecent"))); });
+
+  const auto on = [this](const char* name, auto&& slot) {
+    connect(action(QString::fromLatin1(name)), &QAction::triggered, this, std::forward<decltype(slot)>(slot));
+  };
+  // File
+  on("actionNew", [this] { newFile(); });
+  on("actionOpen", [this] { open(); });
+  on("actionSave", [this] { save(); });
+  on("actionSaveAs", [this] { saveAs(); });
+  on("actionJobDetails", [this] { showJobDetails(); });
+  on("actionPrintCode", [this] { printCode(); });
+  on("actionPrint", [this] { printCodeNow(); });
+  on("actionPrintDrawing", [this] { printDrawing(); });
+  on("actionPrintPreview", [this] { printPreview(); });
+  on("actionExportPdf", [this] { exportPdf(); });
+  on("actionExit", [this] { close(); });
+
+  // Edit: the editor's own commands; the editor enables them.
+  on("actionUndo", [this] { editor_->undo(); });
+  on("actionRedo", [this] { editor_->redo(); });
+  on("actionCut", [this] { editor_->cut(); });
+  on("actionCopy", [this] { editor_->copy(); });
+  on("actionPaste", [this] { editor_->paste(); });
+  on("actionDelete", [this] { editor_->textCursor().removeSelectedText(); });
+  on("actionSelectAll", [this] { editor_->selectAll(); });
+  for (const char* n : {"actionUndo", "actionRedo", "actionCut", "actionCopy", "actionDelete"})
+    action(QString::fromLatin1(n))->setEnabled(false);
+  connect(editor_, &QPlainTextEdit::undoAvailable, action(QStringLiteral("actionUndo")), &QAction::setEnabled);
+  connect(editor_, &QPlainTextEdit::redoAvailable, action(QStringLiteral("actionRedo")), &QAction::setEnabled);
+  for (const char* n : {"actionCut", "actionCopy", "actionDelete"})
+    connect(editor_, &QPlainTextEdit::copyAvailable, action(QString::fromLatin1(n)), &QAction::setEnabled);
+  on("actionFind", [this] { showFind(); });
+  on("actionReplace", [this] { showFind(); });
+  on("actionGoToLine", [this] { goToLine(); });
+
+  // Run: the runner gets the editor's text first.
+  const auto run = [this](void (RunController::*command)()) {
+    return [this, command] {
+      syncRunner();
+      hideBanner();
+      (runner_->*command)();
+    };
+  };
+  on("actionGo", run(&RunController::go));
+  on("actionStep", run(&RunController::stepOver));      // F10: one block of this level
+  on("actionStepInto", run(&RunController::step));      // F11: into calls
+  on("actionStepOut", run(&RunController::stepOut));    // Shift+F11: out of one
+  on("actionPause", [this] { runner_->pause(); });
+  on("actionStop", [this] {
+    runner_->stop();
+    editor_->setExecutingLine(0);
+  });
+  on("actionStepBack", [this] { runner_->stepBack(); });
+  on("actionRunToCursor", [this] { runToCursor(); });
+  on("actionToggleBreakpoint", [this] { toggleBreakpoint(); });
+  QAction* optStop = action(QStringLiteral("actionOptionalStop"));
+  optStop->setChecked(settings_->optionalStop());
+  connect(optStop, &QAction::toggled, this, [this](bool checked) {
+    runner_->setOptionalStop(checked);
+    statusLamps_->setOptionalStopSwitch(checked);
+    settings_->setOptionalStop(checked);
+  });
+  QAction* skip = action(QStringLiteral("actionBlockSkip"));
+  skip->setChecked(settings_->blockSkip());
+  connect(skip, &QAction::toggled, this, [this](bool checked) {
+    runner_->setBlockSkip(checked);
+    settings_->setBlockSkip(checked);
+  });
+  for (int i = 0; i < speedCount(); ++i)
+    connect(action(QStringLiteral("actionSpeed%1").arg(i)), &QAction::triggered, this, [this, i] { setSpeedIndex(i); });
+  speedControl_ = new RunSpeedControl(this);
+  speedControl_->setObjectName(QStringLiteral("speedControl"));
+  speedControl_->setRunController(runner_);
+  // The slider and the Run > Speed menu show the same choice.
+  connect(speedControl_, &RunSpeedControl::speedChanged, this, [this](double factor) {
+    for (int i = 0; i < speedCount(); ++i)
+      if (speeds()[static_cast<std::size_t>(i)] == factor) action(QStringLiteral("actionSpeed%1").arg(i))->setChecked(true);
+  });
+  QToolBar* runBar = actions_->toolBar(QStringLiteral("runToolBar"));
+  runBar->addSeparator();
+  runBar->addWidget(speedControl_);
+  setSpeedIndex(static_cast<int>(std::find(speeds().begin(), speeds().end(), 1.0) - speeds().begin()));
+
+  // Tool setting
+  on("actionToolSelect", [this] { showToolSelect(); });
+  on("actionOffsetDefine", [this] { showOffsetDefine(); });
+  for (const core::gcode::MachineProfile& profile : core::gcode::machineProfiles()) {
+    const core::gcode::Dialect d = profile.dialect;
+    QAction* a = action(dialectActionName(d));
+    a->setChecked(d == dialect_);
+    connect(a, &QAction::triggered, this, [this, d] { setDialect(d); });
+  }
+  const std::pair<const char*, std::optional<core::gcode::InputUnits>> unitChoices[] = {
+      {"actionUnitsMachine", std::nullopt},
+      {"actionUnitsMm", core::gcode::InputUnits::Millimetre},
+      {"actionUnitsInch", core::gcode::InputUnits::Inch}};
+  for (const auto& [name, units] : unitChoices) {
+    QAction* a = action(QString::fromLatin1(name));
+    a->setChecked(units == powerOnUnits_);
+    const auto u = units;
+    connect(a, &QAction::triggered, this, [this, u] { setPowerOnUnits(u); });
+  }
+
+  // View
+  on("actionFitView", [this] { output_->fitToView(); });
+  on("actionZoomIn", [this] { output_->zoomIn(); });
+  on("actionZoomOut", [this] { output_->zoomOut(); });
+  for (const char* n : {"actionShowPath", "actionShowStatusBar", "actionShowLamps"}) action(QString::fromLatin1(n))->setChecked(true);
+  connect(action(QStringLiteral("actionShowPath")), &QAction::toggled, output_, &OutputView::setShowPath);
+  connect(action(QStringLiteral("actionShowStatusBar")), &QAction::toggled, statusBar(), &QWidget::setVisible);
+  connect(action(QStringLiteral("actionShowLamps")), &QAction::toggled, statusLamps_, &QWidget::setVisible);
+
+  // Help
+  on("actionContents", [this] { showHelpContents(); });
+  on("actionToggleLanguage", [this] { toggleLanguage(); });
+  on("actionAbout", [this] { showAbout(); });
+}
+
+void MainWindow::createDocks() {
+  diagnostics_ = new DiagnosticsPanel(this);
+  addDockWidget(Qt::BottomDockWidgetArea, diagnostics_);
+  flow_ = new FlowPanel(this);
+  addDockWidget(Qt::BottomDockWidgetArea, flow_);
+  tabifyDockWidget(diagnostics_, flow_);
+  diagnostics_->raise();
+  flow_->follow(runner_);
+  connect(flow_, &FlowPanel::callerActivated, this, [this](int file, int line) {
+    if (file == 0) editor_->goToFileLine(line, 1);
+  });
+}
+
+void MainWindow::retranslateUi() {
+  actions_->retranslate();
+  updateTitle();
+  updateStockLabel();
+}
+
+void MainWindow::changeEvent(QEvent* event) {
+  QMainWindow::changeEvent(event);
+  if (event->type() == QEvent::LanguageChange && actions_) {
+    retranslateUi();
+    if (!runDiagnostics_.empty()) onAlarm(runDiagnostics_.front());
+  }
+}
+
+void MainWindow::toggleLanguage() {
+  Language::instance()->toggle();
+  settings_->setLanguage(Language::instance()->language());
+}
+
+void MainWindow::setDialect(core::gcode::Dialect d) {
+  dialect_ = d;
+  settings_->setDialect(d);
+  editor_->setDialect(d);
+  runner_->setDialect(d);
+  action(dialectActionName(d))->setChecked(true);
+  if (help_) help_->setDialect(d);
+  // The same plain text may approach the part elsewhere in another dialect (units, cycle forms).
+  core::machine::RunOptions run;
+  run.dialect = d;
+  run.powerOnUnits = powerOnUnits_;
+  document_->reinferStock(editor_->toPlainText(), runner_->machineSetup(), run);
+  runnerStale_ = true;
+  checkNow();
+}
+
+void MainWindow::setPowerOnUnits(std::optional<core::gcode::InputUnits> units) {
+  powerOnUnits_ = units;
+  settings_->setPowerOnUnits(units);
+  runner_->setPowerOnUnits(units);
+  action(!units                                      ? QStringLiteral("actionUnitsMachine")
+         : *units == core::gcode::InputUnits::Inch ? QStringLiteral("actionUnitsInch")
+                                                   : QStringLiteral("actionUnitsMm"))
+      ->setChecked(true);  // the group unchecks the others
+  core::machine::RunOptions run;
+  run.dialect = dialect_;
+  run.powerOnUnits = units;
+  document_->reinferStock(editor_->toPlainText(), runner_->machineSetup(), run);
+  runnerStale_ = true;
+  checkNow();
+}
+
+void MainWindow::setSpeedIndex(int index) {
+  index = std::clamp(index, 0, speedCount() - 1);
+  const double factor = speeds()[static_cast<std::size_t>(index)];
+  speedControl_->setSpeed(factor);
+  runner_->setSpeed(factor);
+  action(QStringLiteral("actionSpeed%1").arg(index))->setChecked(true);
+}
+
+}  // namespace klueng::gui

@@ -1,0 +1,148 @@
+#include "gui/report_controller.h"
+
+#include <QApplication>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMessageBox>
+#include <QPageSize>
+#include <QPainter>
+#include <QPdfWriter>
+#include <QPrintDialog>
+#include <QPrintPreviewDialog>
+#include <QPrinter>
+#include <QPrinterInfo>
+
+#include "gui/language.h"
+
+namespace klueng::gui {
+
+namespace {
+
+render::ReportLanguage reportLanguage() {
+  return Language::instance()->isThai() ? render::ReportLanguage::Thai : render::ReportLanguage::English;
+}
+
+void preparePrinter(QPrinter& printer, const QString& title) {
+  printer.setDocName(title);
+  printer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
+}
+
+}  // namespace
+
+ReportController::ReportController(QWidget* window, std::function<Source()> source)
+    : QObject(window), window_(window), source_(std::move(source)) {}
+
+render::ReportData ReportController::reportData(const Source& source, bool withPart) const {
+  render::ReportData data;
+  data.program = source.program;
+  data.fileName = source.displayName;
+  data.date = QDate::currentDate();
+  if (withPart) {
+    QApplication::setOverrideCursor(Qt::WaitCursor);
+    data.part = render::finishedPart(data.program, source.setup, source.dialect, reportLanguage(), &data.partNote);
+    QApplication::restoreOverrideCursor();
+  }
+  return data;
+}
+
+void ReportController::paint(QPainter& painter, QPagedPaintDevice& device, const render::ReportData& data, bool code,
+                             bool drawing) {
+  const render::ReportLanguage lang = reportLanguage();
+  if (code) render::paintProgramSheet(painter, device, data, lang);
+  if (code && drawing) {
+    // A shaft is long: the drawing goes on a landscape page (takes effect on the next page);
+    // the device keeps its own orientation for the next job.
+    const QPageLayout::Orientation before = device.pageLayout().orientation();
+    device.setPageOrientation(QPageLayout::Landscape);
+    device.newPage();
+    render::paintDrawingSheet(painter, device, data, lang);
+    device.setPageOrientation(before);
+    return;
+  }
+  if (drawing) render::paintDrawingSheet(painter, device, data, lang);
+}
+
+void ReportController::printCode() {
+  const Source source = source_();
+  QPrinter printer(QPrinter::HighResolution);
+  preparePrinter(printer, source.displayName);
+  QPrintDialog dialog(&printer, window_);
+  dialog.setWindowTitle(tr("Print Code"));
+  if (dialog.exec() != QDialog::Accepted) return;
+  const render::ReportData data = reportData(source, false);
+  QPainter painter(&printer);
+  paint(painter, printer, data, true, false);
+}
+
+void ReportController::printCodeNow() {
+  const QPrinterInfo info = QPrinterInfo::defaultPrinter();
+  if (info.isNull()) {
+    emit message(tr("No printer is set up: use File > Export PDF to save the sheet."), 5000);
+    return;
+  }
+  const Source source = source_();
+  QPrinter printer(info, QPrinter::HighResolution);
+  preparePrinter(printer, source.displayName);
+  const render::ReportData data = reportData(source, false);
+  QPainter painter(&printer);
+  paint(painter, printer, data, true, false);
+  emit message(tr("Program sheet sent to %1").arg(info.printerName()), 3000);
+}
+
+void ReportController::printDrawing() {
+  const Source source = source_();
+  QPrinter printer(QPrinter::HighResolution);
+  preparePrinter(printer, source.displayName);
+  printer.setPageOrientation(QPageLayout::Landscape);  // a shaft is long: landscape fits it larger
+  QPrintDialog dialog(&printer, window_);
+  dialog.setWindowTitle(tr("Print Drawing"));
+  if (dialog.exec() != QDialog::Accepted) return;
+  const render::ReportData data = reportData(source, true);
+  QPainter painter(&printer);
+  paint(painter, printer, data, false, true);
+}
+
+void ReportController::printPreview() {
+  const Source source = source_();
+  QPrinter printer(QPrinter::HighResolution);
+  preparePrinter(printer, source.displayName);
+  const render::ReportData data = reportData(source, true);
+  QPrintPreviewDialog dialog(&printer, window_);
+  dialog.setWindowTitle(tr("Print Preview"));
+  connect(&dialog, &QPrintPreviewDialog::paintRequested, this, [&data](QPrinter* p) {
+    QPainter painter(p);
+    paint(painter, *p, data, true, true);
+  });
+  dialog.exec();
+}
+
+bool ReportController::exportPdf(const QString& path) {
+  const Source source = source_();
+  QString target = path;
+  if (target.isEmpty()) {
+    const QFileInfo file(source.filePath.isEmpty() ? source.displayName : source.filePath);
+    target = QFileDialog::getSaveFileName(window_, tr("Export PDF"),
+                                          file.dir().filePath(file.completeBaseName() + QStringLiteral(".pdf")),
+                                          tr("PDF files (*.pdf)"));
+    if (target.isEmpty()) return false;
+  }
+  const render::ReportData data = reportData(source, true);
+  QPdfWriter writer(target);
+  writer.setTitle(source.displayName);
+  writer.setCreator(render::kluengVersion());
+  writer.setResolution(600);
+  writer.setPageSize(QPageSize(QPageSize::A4));
+  writer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
+  QPainter painter;
+  if (!painter.begin(&writer)) {
+    QMessageBox::warning(window_, tr("Export PDF"), tr("Cannot write %1").arg(QDir::toNativeSeparators(target)));
+    return false;
+  }
+  paint(painter, writer, data, true, true);
+  painter.end();
+  emit message(tr("Exported %1").arg(QDir::toNativeSeparators(target)), 3000);
+  return true;
+}
+
+}  // namespace klueng::gui
