@@ -100,8 +100,56 @@ void BM_CutOnly(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 
+// Step Back (issue 12: <= 16 ms a step on a 100,000-block program): the run is
+// paused 70% of the way through; each iteration goes back one block.
+void BM_StepBack(benchmark::State& state) {
+  const std::string text = klueng::bench::ProgramGenerator::generate(static_cast<int>(state.range(0)));
+  const io::ProgramFile file = *io::parseProgramFile(text).value;
+  const machine::MachineSetup setup = shippedSetup();
+  const gcode::Program program = gcode::parse(file.gcode, file.gcodeFirstLine);
+  const machine::Timeline timeline = machine::interpret(program, setup);
+  cut::CutOptions options;
+  if (state.range(1) == 0) options.checkpointBudgetBytes = 0;  // the old way: re-cut from the bar
+  cut::CutSimulator sim(timeline, cut::CutSetup::from(file.header, setup), options);
+  const auto& snaps = timeline.snapshots;
+  std::size_t k = snaps.size() * 7 / 10;
+  sim.advanceTo(snaps[k].time);
+  std::size_t moved = 0;
+  for (auto _ : state) {
+    // Back to the start of the previous block that moves (blocks without motion take no time).
+    const double now = sim.time();
+    while (k > 0 && snaps[k].time >= now) --k;
+    moved += sim.movesToCut(snaps[k].time);
+    sim.advanceTo(snaps[k].time);
+    benchmark::ClobberMemory();
+  }
+  state.counters["checkpoints"] = static_cast<double>(sim.checkpointCount());
+  state.counters["recut_moves"] = static_cast<double>(moved) / static_cast<double>(state.iterations());
+}
+
+// Scrubbing: jumps to pseudo-random times anywhere in the run, back and forth.
+void BM_Scrub(benchmark::State& state) {
+  const std::string text = klueng::bench::ProgramGenerator::generate(static_cast<int>(state.range(0)));
+  const io::ProgramFile file = *io::parseProgramFile(text).value;
+  const machine::MachineSetup setup = shippedSetup();
+  const gcode::Program program = gcode::parse(file.gcode, file.gcodeFirstLine);
+  const machine::Timeline timeline = machine::interpret(program, setup);
+  cut::CutSimulator sim(timeline, cut::CutSetup::from(file.header, setup));
+  sim.runToEnd();  // the first pass keeps the checkpoints
+  std::uint64_t seed = 12345;
+  for (auto _ : state) {
+    seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
+    const double t = timeline.cycleTime() * static_cast<double>(seed >> 11) / 9007199254740992.0;
+    sim.advanceTo(t);
+    benchmark::ClobberMemory();
+  }
+}
+
 }  // namespace
 
+BENCHMARK(BM_StepBack)->Args({100'000, 1})->Iterations(1000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StepBack)->Args({100'000, 0})->Iterations(20)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Scrub)->Arg(100'000)->Iterations(500)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CheckInterpretCut)->Arg(10'000)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CutOnly)->Arg(10'000)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
 

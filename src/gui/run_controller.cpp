@@ -233,11 +233,9 @@ void RunController::stepBack() {
   targetTime_ = t;
   targetIsEnd_ = false;
   snapshotIndex_ = target;
-  // Going back re-cuts from the start; a long way runs in the background.
-  const int moves = timeline_->moveAt(t) + 1;
-  cut_->reset();
-  time_ = 0.0;
-  if (moves > 2000) {
+  // Going back restores the nearest stock checkpoint and re-cuts from there;
+  // only a long re-cut (the first pass had no checkpoints yet) runs in the background.
+  if (cut_->movesToCut(t) > 2000) {
     pending_ = Pending::None;
     setState(RunState::Paused);
     runInBackground(t);

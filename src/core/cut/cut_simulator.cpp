@@ -157,6 +157,11 @@ CutSimulator::CutSimulator(const machine::Timeline& timeline, const CutSetup& se
                            const CutOptions& options)
     : timeline_(&timeline), setup_(setup), options_(options), tools_(std::move(tools)) {
   reset();
+  // Spread the checkpoints over the whole run within the memory budget: about
+  // 64 bytes a stock column (its interval, the vector holding it, its radius).
+  const std::size_t stockBytes = 64u * static_cast<std::size_t>(std::max(1, stock_.columnCount())) + 256u;
+  const std::size_t most = std::clamp<std::size_t>(options_.checkpointBudgetBytes / stockBytes, 1, 4096);
+  checkpointEvery_ = std::max<std::size_t>(64, timeline_->moves.size() / most + 1);
 }
 
 void CutSimulator::reset() {
@@ -186,8 +191,45 @@ std::optional<Diagnostic> CutSimulator::stoppingAlarm() const {
 
 void CutSimulator::runToEnd() { advanceTo(timeline_->cycleTime()); }
 
+const CutCheckpoint* CutSimulator::checkpointBefore(double t) const {
+  auto it = std::upper_bound(checkpoints_.begin(), checkpoints_.end(), t,
+                             [](double v, const CutCheckpoint& c) { return v < c.time; });
+  return it == checkpoints_.begin() ? nullptr : &*std::prev(it);
+}
+
+std::size_t CutSimulator::movesToCut(double t) const {
+  std::size_t from = nextMove_;
+  if (t < time_) {
+    const CutCheckpoint* c = checkpointBefore(t);
+    from = c ? c->nextMove : 0;
+  }
+  const int target = timeline_->moveAt(t);
+  std::size_t to = target < 0 ? 0 : static_cast<std::size_t>(target) + 1;
+  // A move that starts exactly at t is not cut yet.
+  if (target >= 0 && t <= timeline_->moves[static_cast<std::size_t>(target)].tStart) --to;
+  return to > from ? to - from : 0;
+}
+
+void CutSimulator::keepCheckpoint() {
+  if (nextMove_ == 0 || nextMove_ % checkpointEvery_ != 0) return;
+  if (!checkpoints_.empty() && checkpoints_.back().nextMove >= nextMove_) return;  // kept on an earlier pass
+  checkpoints_.push_back({nextMove_, timeline_->moves[nextMove_ - 1].tEnd, stock_});
+}
+
 void CutSimulator::advanceTo(double t) {
-  if (t < time_) reset();
+  if (t < time_) {
+    // Back: the nearest stock kept at or before t (every checkpoint lies before any alarm).
+    const CutCheckpoint* c = checkpointBefore(t);
+    if (!c) {
+      reset();
+    } else {
+      stock_ = c->stock;
+      nextMove_ = c->nextMove;
+      nextMoveDone_ = 0.0;
+      time_ = c->time;
+      alarm_.reset();
+    }
+  }
   const auto& moves = timeline_->moves;
   while (!alarm_ && nextMove_ < moves.size()) {
     const Move& m = moves[nextMove_];
@@ -201,6 +243,7 @@ void CutSimulator::advanceTo(double t) {
     if (s >= 1.0) {
       ++nextMove_;
       nextMoveDone_ = 0.0;
+      keepCheckpoint();
     } else {
       nextMoveDone_ = s;
       break;

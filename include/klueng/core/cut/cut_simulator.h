@@ -3,7 +3,8 @@
 //
 //   CutSimulator sim(timeline, CutSetup::from(header, setup));
 //   sim.runToEnd();                 // as fast as possible, or
-//   sim.advanceTo(t);               // for the animation: any t; going back re-cuts from 0
+//   sim.advanceTo(t);               // for the animation: any t; going back restores
+//                                   // the nearest stock checkpoint and re-cuts from there
 //   sim.stock(), sim.alarm(), sim.toolPosition(), FinishedPart(sim.stock())
 //
 // Every move removes what its cutting edge sweeps, without gaps: the nose circle
@@ -48,6 +49,10 @@ struct CutOptions {
   // 95-degree tool's flank leaves at a shoulder, which G00 X retracts touch.
   double rapidFlankAllowance = 0.5;
   bool detectCollisions = true;
+  // Going back (Step Back, scrubbing) restores a copy of the stock kept while
+  // cutting forward, at most this many bytes of them (issue 12: a step back on
+  // a 100,000-block program re-cuts a few hundred moves, not all of them).
+  std::size_t checkpointBudgetBytes = 64u << 20;
 };
 
 struct CutSetup {
@@ -78,6 +83,13 @@ class ToolLibrary {
   std::vector<Diagnostic> diagnostics_;
 };
 
+// The stock as it was after some moves (CutSimulator's way back).
+struct CutCheckpoint {
+  std::size_t nextMove = 0;  // the moves before it are cut whole
+  double time = 0.0;         // when the last of them ended
+  Stock stock;
+};
+
 class CutSimulator {
  public:
   // `timeline` must outlive the simulator.
@@ -90,7 +102,13 @@ class CutSimulator {
 
   void advanceTo(double t);
   void runToEnd();
+  // Back to the bar before the first move (the checkpoints stay: they depend only on the timeline).
   void reset();
+  // How many moves advanceTo(t) would cut from where it would start (the
+  // current state, or a checkpoint when going back): its cost, for a caller
+  // deciding whether to cut on a worker thread.
+  std::size_t movesToCut(double t) const;
+  std::size_t checkpointCount() const { return checkpoints_.size(); }
 
   double time() const { return time_; }
   // The end of the run: the timeline's cycle time, or when the cut alarm happened.
@@ -110,6 +128,9 @@ class CutSimulator {
 
  private:
   void cutMove(std::size_t index, double sEnd);
+  void keepCheckpoint();
+  // The latest checkpoint at or before t; nullptr when only the bar is.
+  const CutCheckpoint* checkpointBefore(double t) const;
 
   const machine::Timeline* timeline_;
   CutSetup setup_;
@@ -123,6 +144,10 @@ class CutSimulator {
   std::optional<Diagnostic> alarm_;
   double alarmTime_ = 0.0;
   Vec2 alarmPosition_ = Vec2::Zero();
+  // The stock after every checkpointEvery_ moves (at a move boundary, no alarm yet).
+  std::vector<CutCheckpoint> checkpoints_;
+  std::size_t checkpointEvery_ = 64;
 };
+
 
 }  // namespace klueng::core::cut
