@@ -446,6 +446,8 @@ class Checker {
 std::vector<Diagnostic> check(const Program& program, const CheckOptions& options) {
   std::vector<Diagnostic> out = program.lexicalDiagnostics;
   Checker checker(options, out);
+  if (options.stopAtFirstError && hasErrors(out)) return out;
+  std::size_t seen = out.size();  // diagnostics already looked at for stopAtFirstError
   bool first = true;
   int file = 0;
   for (const Block& block : program.blocks) {
@@ -457,6 +459,10 @@ std::vector<Diagnostic> check(const Program& program, const CheckOptions& option
     checker.checkBlock(block, first);
     first = false;
     if (checker.full()) break;
+    if (options.stopAtFirstError) {
+      for (; seen < out.size(); ++seen)
+        if (isError(out[seen].severity)) return out;
+    }
   }
   if (!checker.full()) checkFlow(program, options, out);
   // Blocks come in line order, so this only reorders within a line.

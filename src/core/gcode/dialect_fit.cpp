@@ -29,6 +29,7 @@ std::optional<DialectFit> suggestDialect(const Program& program, const CheckOpti
     if (profile.dialect == options.dialect) continue;
     CheckOptions other = options;
     other.dialect = profile.dialect;
+    other.stopAtFirstError = true;  // only whether it accepts the program
     const std::vector<Diagnostic> there = check(program, other);
     if (hasErrors(there)) continue;
     // Every block with an error here is clean there.

@@ -148,16 +148,18 @@ class Scanner {
 
   std::map<int, StationUse> scan() {
     // Lines that hold words other than N: a comment above such a line belongs to it.
-    std::set<int> blockLines;
+    // (A flag per line of the program's own text: a set of 100,000 lines cost most of the scan.)
+    isBlockLine_.assign(lines_.size(), false);
     for (const gcode::Block& b : program_.blocks)
-      if (std::any_of(b.words.begin(), b.words.end(), [](const gcode::Word& w) { return w.letter != 'N'; }))
-        blockLines.insert(b.line);
-    readToolList(blockLines);
+      if (b.file == 0 && b.line >= firstLine_ && b.line - firstLine_ < static_cast<int>(lines_.size()) &&
+          std::any_of(b.words.begin(), b.words.end(), [](const gcode::Word& w) { return w.letter != 'N'; }))
+        isBlockLine_[static_cast<std::size_t>(b.line - firstLine_)] = true;
+    readToolList();
     for (std::size_t bi = 0; bi < program_.blocks.size(); ++bi) {
       const gcode::Block& b = program_.blocks[bi];
       for (const gcode::Word* g : b.all('G'))
         if (!g->hasDecimalPoint && (g->code() == 20 || g->code() == 21)) unit_ = g->code() == 20 ? 25.4 : 1.0;
-      if (const gcode::Word* t = b.find('T'); t && !t->hasDecimalPoint && t->expr < 0) select(b, *t, blockLines);
+      if (const gcode::Word* t = b.find('T'); t && !t->hasDecimalPoint && t->expr < 0) select(b, *t);
       if (station_ > 0) motion(b);
     }
     return std::move(uses_);
@@ -177,14 +179,20 @@ class Scanner {
   std::optional<double> x_, z_;  // mm (x diameter)
   bool afterSelect_ = false;
   std::map<int, int> toolList_;  // station -> file line of its entry in a tool list comment
+  std::vector<bool> isBlockLine_;  // per text line: it holds words other than N
 
   // A tool list, as real programs write one at the top: comment-only lines
   // that start with a T word, "(T9 VNMG 332 - 35 DEG)", "(T0303 THREAD)".
   // Station: 1-2 digits as written, 3-4 digits = station and offset.
-  void readToolList(const std::set<int>& blockLines) {
+  bool blockLine(int line) const {
+    const int i = line - firstLine_;
+    return i >= 0 && i < static_cast<int>(isBlockLine_.size()) && isBlockLine_[static_cast<std::size_t>(i)];
+  }
+
+  void readToolList() {
     for (std::size_t i = 0; i < lines_.size(); ++i) {
       const int line = firstLine_ + static_cast<int>(i);
-      if (blockLines.count(line)) continue;
+      if (blockLine(line)) continue;
       const std::string text = commentOf(lines_[i]);
       std::size_t k = 0;
       while (k < text.size() && text[k] == ' ') ++k;
@@ -205,7 +213,7 @@ class Scanner {
     return commentOf(lines_[static_cast<std::size_t>(i)]);
   }
 
-  void select(const gcode::Block& b, const gcode::Word& t, const std::set<int>& blockLines) {
+  void select(const gcode::Block& b, const gcode::Word& t) {
     const int code = t.code();
     const int station = code / 100, offset = code % 100;
     if (station < 1 || station > io::kMaxStations) return;
@@ -219,8 +227,8 @@ class Scanner {
     // The T block's comment, then comment lines just before it (up to 3; an
     // `N1 (OD ROUGH)` line is one, as Haas programs write them), then just after it.
     std::vector<int> candidates = {b.line};
-    for (int l = b.line - 1; l >= b.line - 3 && !blockLines.count(l); --l) candidates.push_back(l);
-    for (int l = b.line + 1; l <= b.line + 2 && !blockLines.count(l); ++l) candidates.push_back(l);
+    for (int l = b.line - 1; l >= b.line - 3 && !blockLine(l); --l) candidates.push_back(l);
+    for (int l = b.line + 1; l <= b.line + 2 && !blockLine(l); ++l) candidates.push_back(l);
     if (auto listed = toolList_.find(station); listed != toolList_.end()) candidates.push_back(listed->second);
     for (int l : candidates) {
       const std::string text = rawComment(l);

@@ -269,6 +269,23 @@ TEST(Checker, EveryDiagnosticOfTheProgramIsReportedInOrder) {
                                           "E209@4:4"));
 }
 
+TEST(Checker, StopAtFirstErrorAnswersOnlyWhetherTheProgramIsAccepted) {
+  const Program program = parse("G00 G01 X1. U1.\nM03 M04 Y1.\nG04\nN5 N6", 1);
+  CheckOptions options;
+  options.dialect = Dialect::Classic;
+  options.stopAtFirstError = true;
+  const auto first = check(program, options);
+  // The first block's errors, nothing after it (the whole list is in the test above).
+  ASSERT_FALSE(first.empty());
+  EXPECT_TRUE(hasErrors(first));
+  for (const auto& d : first) EXPECT_EQ(d.range.line, 1) << d.code;
+  options.stopAtFirstError = false;
+  EXPECT_GT(check(program, options).size(), first.size());
+  // A clean program is checked to its end either way.
+  options.stopAtFirstError = true;
+  EXPECT_TRUE(check(parse("G00 X10. Z2.\nM30", 1), options).empty());
+}
+
 TEST(Checker, MessagesNameTheWordAndSayHowToFixIt) {
   const auto diags = checkText("G01 X30. U2.", Dialect::Fanuc);
   ASSERT_EQ(diags.size(), 1u);

@@ -23,6 +23,8 @@ struct CheckOptions {
   std::optional<InputUnits> powerOnUnits;
   // Tools 1..8 that have a bitmap in tools.cfg; empty = do not check (no table loaded).
   std::optional<std::vector<int>> toolsWithBitmap;
+  // Stop at the first error (a yes/no question: does this dialect accept the program?).
+  bool stopAtFirstError = false;
 };
 
 // Includes program.lexicalDiagnostics.
