@@ -289,6 +289,42 @@
 <context>
     <name>klueng::gui::MainWindow</name>
     <message>
+        <source>Undo &amp;Setup Change</source>
+        <translation>เลิกทำการตั้งค่า (&amp;S)</translation>
+    </message>
+    <message>
+        <source>Redo Setup Chan&amp;ge</source>
+        <translation>ทำการตั้งค่าซ้ำ (&amp;G)</translation>
+    </message>
+    <message>
+        <source>Undo the last change to the job details, the tools or the offsets</source>
+        <translation>เลิกทำการแก้ไขล่าสุดของรายละเอียดงาน มีดตัด หรือค่าออฟเซต</translation>
+    </message>
+    <message>
+        <source>Redo the last change to the job details, the tools or the offsets undone</source>
+        <translation>ทำซ้ำการแก้ไขรายละเอียดงาน มีดตัด หรือค่าออฟเซตที่เพิ่งเลิกทำ</translation>
+    </message>
+    <message>
+        <source>Undo: %1</source>
+        <translation>เลิกทำ: %1</translation>
+    </message>
+    <message>
+        <source>Redo: %1</source>
+        <translation>ทำซ้ำ: %1</translation>
+    </message>
+    <message>
+        <source>Tool Select</source>
+        <translation>เลือกมีดตัด</translation>
+    </message>
+    <message>
+        <source>Offset Define</source>
+        <translation>กำหนดค่าออฟเซต</translation>
+    </message>
+    <message>
+        <source>The machine setup could not be written back: %1</source>
+        <translation>เขียนไฟล์ตั้งค่าเครื่องกลับคืนไม่ได้: %1</translation>
+    </message>
+    <message>
         <source>The machine setup has errors:</source>
         <translation>ไฟล์ตั้งค่าเครื่องมีข้อผิดพลาด:</translation>
     </message>
@@ -1146,6 +1182,13 @@
     <message>
         <source>Exported %1</source>
         <translation>ส่งออก %1 แล้ว</translation>
+    </message>
+</context>
+<context>
+    <name>klueng::gui::SetupCommands</name>
+    <message>
+        <source>Job details</source>
+        <translation>รายละเอียดงาน</translation>
     </message>
 </context>
 </TS>

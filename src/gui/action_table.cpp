@@ -59,6 +59,10 @@ const ActionSpec kActions[] = {
     // Edit
     {"actionUndo", "undo", QKeySequence::Undo, nullptr, KLUENG_TR("&Undo"), nullptr, EnabledWhen::Always, false, true},
     {"actionRedo", "redo", QKeySequence::Redo, nullptr, KLUENG_TR("&Redo"), nullptr, EnabledWhen::Always, false, true},
+    {"actionUndoSetup", "undo", kNoKey, "Ctrl+Alt+Z", KLUENG_TR("Undo &Setup Change"),
+     KLUENG_TR("Undo the last change to the job details, the tools or the offsets")},  // the undo stack enables it
+    {"actionRedoSetup", "redo", kNoKey, "Ctrl+Alt+Y", KLUENG_TR("Redo Setup Chan&ge"),
+     KLUENG_TR("Redo the last change to the job details, the tools or the offsets undone")},
     {"actionCut", "cut", QKeySequence::Cut, nullptr, KLUENG_TR("Cu&t"), nullptr, EnabledWhen::Always, false, true},
     {"actionCopy", "copy", QKeySequence::Copy, nullptr, KLUENG_TR("&Copy"), nullptr, EnabledWhen::Always, false, true},
     {"actionPaste", "paste", QKeySequence::Paste, nullptr, KLUENG_TR("&Paste"), nullptr, EnabledWhen::Always, false,
@@ -137,7 +141,7 @@ const MenuSpec kMenus[] = {
      "actionPrintPreview actionExportPdf | actionExit"},
     {"menuRecent", KLUENG_TR("&Recent Files"), ""},
     {"menuEdit", KLUENG_TR("&Edit"),
-     "actionUndo actionRedo | actionCut actionCopy actionPaste actionDelete actionSelectAll | actionFind actionReplace "
+     "actionUndo actionRedo actionUndoSetup actionRedoSetup | actionCut actionCopy actionPaste actionDelete actionSelectAll | actionFind actionReplace "
      "actionGoToLine"},
     {"menuRun", KLUENG_TR("&Run"),
      "actionGo actionStep actionStepInto actionStepOut actionPause actionStop | actionStepBack actionRunToCursor "

@@ -126,4 +126,11 @@ void Document::setHeader(const core::io::JobHeader& header) {
   emit headerChanged();
 }
 
+void Document::restoreHeader(const HeaderState& state) {
+  file_.header = state.header;
+  stockNotes_ = state.stockNotes;
+  headerModified_ = state.modified;
+  emit headerChanged();
+}
+
 }  // namespace klueng::gui

@@ -30,6 +30,16 @@ class Document : public QObject {
  public:
   explicit Document(QObject* parent = nullptr);
 
+  // The header as it stands, for undo (setup_commands.h): restoreHeader() puts
+  // back exactly this, where the stock came from and the modified flag included.
+  struct HeaderState {
+    core::io::JobHeader header;
+    std::vector<core::Diagnostic> stockNotes;
+    bool modified = false;
+  };
+  HeaderState headerState() const { return {file_.header, stockNotes_, headerModified_}; }
+  void restoreHeader(const HeaderState& state);
+
   // Reads and splits a program file; thread-safe (touches no Document).
   // A plain file's stock (SPEC 2 ext): `jobDetails` (set for this very file),
   // else inferred from the program with `setup`, else JobHeader's defaults —

@@ -45,8 +45,10 @@ JobDetailsDialog::JobDetailsDialog(const io::JobHeader& h, QWidget* parent) : QD
   part_ = new QLineEdit(QString::fromStdString(h.part), this);
   material_ = new QLineEdit(QString::fromStdString(h.material), this);
   diameter_ = makeSize(this, h.diameter);
+  diameter_->setObjectName(QStringLiteral("diameter"));
   diameterUnit_ = makeUnit(this, h.diameterUnit);
   length_ = makeSize(this, h.length);
+  length_->setObjectName(QStringLiteral("length"));
   lengthUnit_ = makeUnit(this, h.lengthUnit);
   bore_ = makeSize(this, h.bore);
   bore_->setObjectName(QStringLiteral("bore"));

@@ -17,6 +17,7 @@
 #include <QToolBar>
 #include <QToolButton>
 #include <QVBoxLayout>
+#include <QUndoStack>
 #include <QtConcurrent/QtConcurrentRun>
 
 #include "gui/about_dialog.h"
@@ -36,6 +37,7 @@
 #include "gui/report_controller.h"
 #include "gui/run_speed_control.h"
 #include "gui/settings.h"
+#include "gui/setup_commands.h"
 #include "gui/status_panel.h"
 #include "gui/tool_select_dialog.h"
 #include "klueng/core/gcode/checker.h"
@@ -140,6 +142,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   connect(checker_, &CheckController::started, this, [this] { QTimer::singleShot(300, this, &MainWindow::showBusyIndicator); });
   connect(checker_, &CheckController::finished, this, &MainWindow::onCheckFinished);
 
+  setupUndo_ = new QUndoStack(this);
   createDocks();
   createActions();
   connectDocuments();
@@ -195,7 +198,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   onRunStateChanged(RunState::Idle);
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+  // The stack clears itself when Qt deletes it, after this object's members are gone.
+  setupUndo_->disconnect(this);
+}
 
 // ---------------------------------------------------------------- documents
 
@@ -206,6 +212,7 @@ void MainWindow::connectDocuments() {
     hideBanner();
   });
   connect(docs_, &DocumentManager::cleared, this, [this] {
+    setupUndo_->clear();  // one undo history per document
     runnerStale_ = true;
     updateTitle();
     checkNow();
@@ -216,6 +223,7 @@ void MainWindow::connectDocuments() {
   });
   connect(docs_, &DocumentManager::loadFailed, this, &MainWindow::loadFailed);
   connect(docs_, &DocumentManager::loaded, this, [this](const QString& path, const QString& text) {
+    setupUndo_->clear();
     toolOverrides_ = loadToolOverrides(path);
     runnerStale_ = true;
     updateTitle();
@@ -468,9 +476,22 @@ QString MainWindow::bannerText() const { return banner_->text(); }
 void MainWindow::showJobDetails() {
   JobDetailsDialog dlg(document_->header(), this);
   if (dlg.exec() != QDialog::Accepted) return;
-  document_->setHeader(dlg.header());
-  if (!document_->isPlainGcode()) settings_->setLastJobHeader(dlg.header());
-  else if (!document_->isUntitled()) settings_->setJobDetailsFor(document_->filePath(), dlg.header());
+  const Document::HeaderState before = document_->headerState();
+  applyJobDetails(dlg.header());
+  setupUndo_->push(new JobDetailsCommand(before, document_->headerState(), [this](const Document::HeaderState& state) {
+    document_->restoreHeader(state);
+    if (!document_->isPlainGcode()) settings_->setLastJobHeader(state.header);
+    else if (!document_->isUntitled() && state.header.stockSource == core::io::StockSource::JobDetails)
+      settings_->setJobDetailsFor(document_->filePath(), state.header);
+    else if (!document_->isUntitled()) settings_->removeJobDetailsFor(document_->filePath());
+    checkNow();
+  }));
+}
+
+void MainWindow::applyJobDetails(const core::io::JobHeader& header) {
+  document_->setHeader(header);
+  if (!document_->isPlainGcode()) settings_->setLastJobHeader(header);
+  else if (!document_->isUntitled()) settings_->setJobDetailsFor(document_->filePath(), header);
   checkNow();
 }
 
@@ -495,20 +516,33 @@ void MainWindow::goToLine() {
 void MainWindow::showToolSelect() {
   ToolSelectDialog dlg(configDir_, this);
   dlg.setProgramTools(toolInference_, toolOverrides_);
+  const SetupSnapshot before = SetupSnapshot::read(configDir_, toolOverrides_);
   if (dlg.exec() != QDialog::Accepted) return;
-  toolOverrides_ = dlg.jobOverrides();
-  saveToolOverrides(document_->filePath(), toolOverrides_);
-  loadMachineSetup(dlg.savedConfigDir());
-  runnerStale_ = true;
-  checkNow();
+  const QString dir = dlg.savedConfigDir();
+  pushSetupChange(tr("Tool Select"), dir, before, SetupSnapshot::read(dir, dlg.jobOverrides()));
 }
 
 void MainWindow::showOffsetDefine() {
   OffsetDefineDialog dlg(configDir_, this);
+  const SetupSnapshot before = SetupSnapshot::read(configDir_, toolOverrides_);
   if (dlg.exec() != QDialog::Accepted) return;
-  loadMachineSetup(dlg.savedConfigDir());
-  runnerStale_ = true;
-  checkNow();  // empty offset rows may take a library tool's nose radius and tip
+  const QString dir = dlg.savedConfigDir();
+  pushSetupChange(tr("Offset Define"), dir, before, SetupSnapshot::read(dir, toolOverrides_));
+}
+
+void MainWindow::pushSetupChange(const QString& text, const QString& dir, const SetupSnapshot& before,
+                                 const SetupSnapshot& after) {
+  const auto reload = [this](const QString& folder, const std::vector<core::machine::StationOverride>& overrides,
+                             const QString& error) {
+    toolOverrides_ = overrides;
+    saveToolOverrides(document_->filePath(), toolOverrides_);
+    loadMachineSetup(folder);
+    if (!error.isEmpty()) showBanner(tr("The machine setup could not be written back: %1").arg(error), true);
+    runnerStale_ = true;
+    checkNow();  // empty offset rows may take a library tool's nose radius and tip
+  };
+  reload(dir, after.overrides, {});  // the dialog wrote the files; this takes them in
+  if (!(before == after)) setupUndo_->push(new SetupFilesCommand(text, dir, before, after, reload));
 }
 
 void MainWindow::showHelpContents() {

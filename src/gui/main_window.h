@@ -8,6 +8,7 @@
 #include <QHash>
 #include <QMainWindow>
 #include <QPointer>
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -29,6 +30,7 @@ class QSplitter;
 class QTimer;
 class QToolBar;
 class QToolButton;
+class QUndoStack;
 
 namespace klueng::gui {
 
@@ -58,6 +60,7 @@ class MainWindow : public QMainWindow {
   CodeEditor* editor() const { return editor_; }
   DiagnosticsPanel* diagnosticsPanel() const { return diagnostics_; }
   Document* document() const { return document_; }
+  QUndoStack* setupUndoStack() const { return setupUndo_; }
   RunController* runController() const { return runner_; }
   class FlowPanel* flowPanel() const { return flow_; }
   OutputView* outputView() const { return output_; }
@@ -130,6 +133,10 @@ class MainWindow : public QMainWindow {
   void showDiagnostics();
 
   void loadMachineSetup(const QString& dir = {});
+  void applyJobDetails(const core::io::JobHeader& header);
+  // Takes in what a setup dialog wrote and makes it one undoable step.
+  void pushSetupChange(const QString& text, const QString& dir, const struct SetupSnapshot& before,
+                       const struct SetupSnapshot& after);
   // The open file's folder (subprogram files come from there); empty when untitled.
   QString programFolder() const;
   // Hand the editor's current text to the run controller (before a run).
@@ -163,6 +170,8 @@ class MainWindow : public QMainWindow {
   QPointer<FindDialog> findDialog_;
   QPointer<HelpContents> help_;
   CheckController* checker_ = nullptr;
+  QUndoStack* setupUndo_ = nullptr;  // job details, tools, offsets of this document
+  std::function<void()> updateSetupUndo_;  // enables and names Undo/Redo Setup Change
 
   RunSpeedControl* speedControl_ = nullptr;
 

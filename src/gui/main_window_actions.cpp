@@ -5,6 +5,7 @@
 #include <QMenu>
 #include <QStatusBar>
 #include <QToolBar>
+#include <QUndoStack>
 
 #include "gui/action_table.h"
 #include "gui/code_editor.h"
@@ -85,6 +86,23 @@ void MainWindow::createActions() {
   connect(editor_, &QPlainTextEdit::redoAvailable, action(QStringLiteral("actionRedo")), &QAction::setEnabled);
   for (const char* n : {"actionCut", "actionCopy", "actionDelete"})
     connect(editor_, &QPlainTextEdit::copyAvailable, action(QString::fromLatin1(n)), &QAction::setEnabled);
+  // Job details, tools and offsets: the document's own undo stack.
+  QAction* undoSetup = action(QStringLiteral("actionUndoSetup"));
+  QAction* redoSetup = action(QStringLiteral("actionRedoSetup"));
+  on("actionUndoSetup", [this] { setupUndo_->undo(); });
+  on("actionRedoSetup", [this] { setupUndo_->redo(); });
+  updateSetupUndo_ = [this, undoSetup, redoSetup] {
+    const bool idle = !runner_ || runner_->state() == RunState::Idle || runner_->state() == RunState::Paused ||
+                      runner_->state() == RunState::Finished || runner_->state() == RunState::Alarm;
+    undoSetup->setEnabled(idle && setupUndo_->canUndo());
+    redoSetup->setEnabled(idle && setupUndo_->canRedo());
+    // The step it would undo, in the tip: "Undo Setup Change: Tool Select".
+    undoSetup->setStatusTip(setupUndo_->canUndo() ? tr("Undo: %1").arg(setupUndo_->undoText()) : QString());
+    redoSetup->setStatusTip(setupUndo_->canRedo() ? tr("Redo: %1").arg(setupUndo_->redoText()) : QString());
+  };
+  connect(setupUndo_, &QUndoStack::indexChanged, this, [this] { updateSetupUndo_(); });
+  connect(runner_, &RunController::stateChanged, this, [this] { updateSetupUndo_(); });
+  updateSetupUndo_();
   on("actionFind", [this] { showFind(); });
   on("actionReplace", [this] { showFind(); });
   on("actionGoToLine", [this] { goToLine(); });
@@ -187,6 +205,7 @@ void MainWindow::createDocks() {
 
 void MainWindow::retranslateUi() {
   actions_->retranslate();
+  updateSetupUndo_();  // its tips name the step in the new language
   updateTitle();
   updateStockLabel();
 }

@@ -132,6 +132,8 @@ void Settings::setJobDetailsFor(const QString& path, const core::io::JobHeader& 
   settings_.endGroup();
 }
 
+void Settings::removeJobDetailsFor(const QString& path) { settings_.remove(jobKey(path)); }
+
 bool Settings::optionalStop() const { return settings_.value(key("run/optionalStop"), false).toBool(); }
 void Settings::setOptionalStop(bool on) { settings_.setValue(key("run/optionalStop"), on); }
 bool Settings::blockSkip() const { return settings_.value(key("run/blockSkip"), false).toBool(); }

@@ -48,6 +48,7 @@ class Settings {
   // (stockSource = JobDetails); nullopt when none were set.
   std::optional<core::io::JobHeader> jobDetailsFor(const QString& path) const;
   void setJobDetailsFor(const QString& path, const core::io::JobHeader& h);
+  void removeJobDetailsFor(const QString& path);  // back to an inferred stock
 
   bool optionalStop() const;
   void setOptionalStop(bool on);
