@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "cli_common.h"
+#include "klueng/core/machine/job_file.h"
 #include "commands.h"
 
 namespace klueng::cli {
@@ -180,39 +181,33 @@ int runCheck(const std::vector<std::string>& args) {
       return usageError(error);
     overrides.push_back(ov);
   }
-  gcode::CheckOptions checkOptions;
-  checkOptions.dialect = o.dialect;
-  checkOptions.powerOnUnits = o.powerOnUnits;
-  checkOptions.turretStations = config.setup.tools.stations;  // the turret the tool table was read for
-  machine::MachineSetup setup = config.setup;
-  machine::RunOptions runOptions;
-  runOptions.dialect = o.dialect;
-  runOptions.powerOnUnits = o.powerOnUnits;
+  machine::JobFileRequest request;
+  request.run.dialect = o.dialect;
+  request.run.powerOnUnits = o.powerOnUnits;
+  request.stock = o.stock;
+  request.overrides = overrides;
+  request.stations = stationLimit(config, o.dialect);
+  // Without a readable tool table nothing is known about bitmaps: do not check T words against it.
+  request.toolTable = !config.unreadable;
 
   std::vector<FileDiagnostic> all = config.diagnostics;
   bool anyError = config.hasErrors();
   bool anyUnreadable = config.unreadable;
   std::vector<FileSummary> summary;
-  std::vector<FileDiagnostic> notes;  // where each plain file's stock comes from
+  std::vector<FileDiagnostic> notes;  // each file's tool choices and where its stock comes from
 
   for (const std::string& path : expandFolders(o.files)) {
-    // Without a readable tool table nothing is known about bitmaps: do not check T words against it.
-    if (!config.unreadable) {
-      const JobTools job = inferJobTools(config, path, o.dialect, overrides);
-      checkOptions.toolsWithBitmap = job.toolsWithBitmap;
-      for (const Diagnostic& n : job.notes) notes.push_back({path, n});
-    }
-    CheckedProgram checked = checkProgramFile(path, checkOptions);
-    if (checked.file)
-      for (Diagnostic& n : resolveStock(*checked.file, o.stock, setup, runOptions)) notes.push_back({path, std::move(n)});
+    const machine::JobFile job = machine::loadJobFile(path, config.setup, request, io::shippedToolLibrary());
+    for (const Diagnostic& n : job.toolNotes) notes.push_back({path, n});
+    for (const Diagnostic& n : job.stockNotes) notes.push_back({path, n});
     FileSummary row{path};
-    for (const Diagnostic& d : checked.diagnostics) {
+    for (const Diagnostic& d : job.diagnostics) {
       if (isError(d.severity)) ++row.errors;
       else if (d.severity == Severity::Warning) ++row.warnings;
-      all.push_back({checked.fileOf(d), d});
+      all.push_back({job.fileOf(d), d});
     }
-    row.unreadable = checked.unreadable;
-    anyUnreadable = anyUnreadable || checked.unreadable;
+    row.unreadable = job.unreadable;
+    anyUnreadable = anyUnreadable || job.unreadable;
     anyError = anyError || row.errors > 0;
     summary.push_back(row);
   }

@@ -88,22 +88,6 @@ std::optional<gcode::InputUnits> parseUnits(std::string_view text) {
   return std::nullopt;
 }
 
-std::vector<Diagnostic> resolveStock(io::ProgramFile& file, const std::optional<io::JobHeader>& stock,
-                                     const machine::MachineSetup& setup, const machine::RunOptions& options) {
-  io::JobHeader& h = file.header;
-  if (stock) h.takeStockFrom(*stock);
-  if (h.stockSource == io::StockSource::Header) return {};
-  if (file.gcode.find_first_not_of(" \t\r\n") == std::string::npos) return {};  // nothing to cut
-  if (h.stockSource != io::StockSource::CommandLine && h.stockSource != io::StockSource::JobDetails) {
-    const gcode::Program program = gcode::parse(file.gcode, file.gcodeFirstLine);
-    const machine::StockInference inferred = machine::inferStock(program, setup, options);
-    if (inferred.found) inferred.applyTo(h);
-    else h.takeStockFrom(io::JobHeader{});
-    return machine::stockNotes(h, &inferred, file.gcode, file.gcodeFirstLine);
-  }
-  return machine::stockNotes(h, nullptr, file.gcode, file.gcodeFirstLine);
-}
-
 std::string formatNote(const std::string& file, const Diagnostic& d, Lang lang) {
   return formatGccStyle(file, d, lang);
 }
@@ -169,57 +153,6 @@ LoadedConfig loadConfig(const std::string& explicitDir) { return machine::loadMa
 int stationLimit(const LoadedConfig& config, gcode::Dialect dialect) {
   const int profileLimit = gcode::machineProfile(dialect).maxToolStation;
   return profileLimit > 0 ? std::min(profileLimit, config.setup.tools.stations) : config.setup.tools.stations;
-}
-
-JobTools inferJobTools(const LoadedConfig& config, const std::string& programPath, gcode::Dialect dialect,
-                       const std::vector<machine::StationOverride>& overrides) {
-  JobTools job;
-  job.setup = config.setup;
-  job.toolsWithBitmap = machine::toolsWithBitmap(config.setup);
-  const auto read = io::readProgramFile(programPath);
-  if (!read.value) return job;
-  const gcode::Program program = gcode::parse(read.value->gcode, read.value->gcodeFirstLine);
-  machine::ToolInference inferred =
-      machine::inferTools(program, read.value->gcode, read.value->gcodeFirstLine, job.setup,
-                          io::shippedToolLibrary(), overrides, stationLimit(config, dialect));
-  job.setup = std::move(inferred.setup);
-  job.notes = inferred.notes();
-  job.toolsWithBitmap = machine::toolsWithBitmap(job.setup);
-  return job;
-}
-
-
-CheckedProgram checkProgramFile(const std::string& path, const gcode::CheckOptions& options,
-                                const io::JobHeader& defaultsForPlain) {
-  CheckedProgram result;
-  result.path = path;
-  auto read = io::readProgramFile(path, defaultsForPlain);
-  result.diagnostics = std::move(read.diagnostics);
-  result.unreadable = std::any_of(result.diagnostics.begin(), result.diagnostics.end(), isUnreadable);
-  if (!read.value) return result;
-  gcode::Program program = gcode::parse(read.value->gcode, read.value->gcodeFirstLine);
-  // The program's folder is the control's memory: subprograms it calls come from there.
-  for (Diagnostic& d : machine::attachSubprogramFiles(program, std::filesystem::path(path).parent_path().string(),
-                                                       options.dialect))
-    result.diagnostics.push_back(std::move(d));
-  result.unreadable = std::any_of(result.diagnostics.begin(), result.diagnostics.end(),
-                                  [](const Diagnostic& d) { return d.range.file == 0 && isUnreadable(d); });
-  std::vector<Diagnostic> found = gcode::check(program, options);
-  // Say once which dialect accepts a program this one refuses (I102).
-  if (auto fit = gcode::suggestDialect(program, options, found)) found.push_back(fit->note);
-  result.diagnostics.insert(result.diagnostics.end(), std::make_move_iterator(found.begin()),
-                            std::make_move_iterator(found.end()));
-  std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {
-    if (a.range.file != b.range.file) return a.range.file < b.range.file;
-    return a.range.line != b.range.line ? a.range.line < b.range.line : a.range.column < b.range.column;
-  });
-  result.file = std::move(read.value);
-  result.program = std::move(program);
-  return result;
-}
-
-std::string CheckedProgram::fileOf(const Diagnostic& d) const {
-  return program ? machine::diagnosticFile(*program, d, path) : path;
 }
 
 }  // namespace klueng::cli

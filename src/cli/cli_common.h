@@ -37,13 +37,6 @@ inline constexpr const char* kStockAllowed =
     "DxL[xBORE][in] with D, L > 0 and 0 < BORE < D, e.g. 50x100, 2.1x4in, 118x80x90";
 inline constexpr const char* kUnitsAllowed = "mm or inch";
 
-// SPEC 2 (ext), the stock of one program: `stock` (--stock) if given, else the
-// file's header, else inferred from the program (machine/stock_inference.h),
-// else the defaults. Writes it into file.header and returns the notes that say
-// where it came from (none for a header file without --stock).
-std::vector<core::Diagnostic> resolveStock(core::io::ProgramFile& file, const std::optional<core::io::JobHeader>& stock,
-                                           const core::machine::MachineSetup& setup,
-                                           const core::machine::RunOptions& options);
 // `FILE:LINE:COL: note I152: message` (`FILE: note ...` without a line), no newline; Thai "หมายเหตุ".
 std::string formatNote(const std::string& file, const core::Diagnostic& d, core::Lang lang);
 
@@ -72,33 +65,8 @@ using core::machine::isUnreadable;
 using LoadedConfig = core::machine::LoadedSetup;
 LoadedConfig loadConfig(const std::string& explicitDir = {});
 
-// Tools from the program (core/machine/tool_inference.h) for one program: the
-// setup with the library's choices and the --tool overrides, the stations that
-// then have a tool (for the checker's E305), and the notes to print.
-struct JobTools {
-  core::machine::MachineSetup setup;
-  std::vector<int> toolsWithBitmap;
-  std::vector<core::Diagnostic> notes;  // I401..I410
-};
-JobTools inferJobTools(const LoadedConfig& config, const std::string& programPath, core::gcode::Dialect dialect,
-                       const std::vector<core::machine::StationOverride>& overrides);
 // The highest station a T word may name: the dialect's limit, else the turret.
 int stationLimit(const LoadedConfig& config, core::gcode::Dialect dialect);
 
-// Reads, parses and checks one program. diagnostics holds the file's own
-// (header, encoding) and the checker's, sorted by line and column.
-struct CheckedProgram {
-  std::string path;
-  std::optional<core::io::ProgramFile> file;
-  // The parsed program with its subprogram files from the same folder
-  // appended (machine/subprogram_files.h): run it, do not parse again.
-  std::optional<core::gcode::Program> program;
-  std::vector<core::Diagnostic> diagnostics;
-  bool unreadable = false;
-  // The file a diagnostic belongs to: the program or one of its subprogram files.
-  std::string fileOf(const core::Diagnostic& d) const;
-};
-CheckedProgram checkProgramFile(const std::string& path, const core::gcode::CheckOptions& options,
-                                const core::io::JobHeader& defaultsForPlain = {});
 
 }  // namespace klueng::cli

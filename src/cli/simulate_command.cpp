@@ -27,6 +27,7 @@
 #include "klueng/core/io/macro_variables.h"
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/io/tool_config.h"
+#include "klueng/core/machine/job_file.h"
 #include "klueng/core/io/tool_library.h"
 #include "klueng/core/machine/interpreter.h"
 #include "klueng/core/machine/trace.h"
@@ -199,28 +200,23 @@ int runSimulate(const std::vector<std::string>& args) {
     }
     overrides.push_back(ov);
   }
-  // Tools from the program: library choices for stations without a fitting tool (notes say which).
-  const JobTools job = inferJobTools(config, o.file, o.dialect, overrides);
-  for (const Diagnostic& n : job.notes) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
+  // Read and parse once: tools from the program (library choices, notes say which), the check, the stock.
+  machine::JobFileRequest request;
+  request.run.dialect = o.dialect;
+  request.run.powerOnUnits = o.powerOnUnits;
+  request.stock = o.stock;
+  request.overrides = overrides;
+  request.stations = stationLimit(config, o.dialect);
+  const machine::JobFile job = machine::loadJobFile(o.file, config.setup, request, io::shippedToolLibrary());
+  for (const Diagnostic& n : job.toolNotes) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
+  for (const auto& d : job.diagnostics) printDiagnostic(job.fileOf(d), d, o.lang);
+  if (job.unreadable) return 2;
+  if (!job.file || !job.program || job.hasErrors()) return 1;
+  for (const Diagnostic& n : job.stockNotes) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
   const machine::MachineSetup& setup = job.setup;
-
-  gcode::CheckOptions checkOptions;
-  checkOptions.dialect = o.dialect;
-  checkOptions.powerOnUnits = o.powerOnUnits;
-  checkOptions.turretStations = config.setup.tools.stations;  // the turret the tool table was read for
-  checkOptions.toolsWithBitmap = job.toolsWithBitmap;
-  CheckedProgram checked = checkProgramFile(o.file, checkOptions);
-  for (const auto& d : checked.diagnostics) printDiagnostic(checked.fileOf(d), d, o.lang);
-  if (checked.unreadable) return 2;
-  if (!checked.file || !checked.program || hasErrors(checked.diagnostics)) return 1;
-  machine::RunOptions runOptions;
-  runOptions.dialect = o.dialect;
-  runOptions.powerOnUnits = o.powerOnUnits;
-  for (const Diagnostic& n : resolveStock(*checked.file, o.stock, setup, runOptions))
-    std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
-  const io::ProgramFile& programFile = *checked.file;
-  const gcode::Program& program = *checked.program;
-
+  const io::ProgramFile& programFile = *job.file;
+  const gcode::Program& program = *job.program;
+  machine::RunOptions runOptions = request.run;
   runOptions.optionalStop = o.optionalStop;
   runOptions.blockSkip = o.blockSkip;
   // #500-#999 live in the folder's macro_variables.cfg between runs.
@@ -232,7 +228,7 @@ int runSimulate(const std::vector<std::string>& args) {
   const io::MacroVariables before = variables;
   runOptions.persistentVariables = &variables;
   const machine::Timeline timeline = machine::interpret(program, setup, runOptions);
-  for (const Diagnostic& n : timeline.flow.notices) printDiagnostic(checked.fileOf(n), n, o.lang);
+  for (const Diagnostic& n : timeline.flow.notices) printDiagnostic(job.fileOf(n), n, o.lang);
   if (variables != before && o.persistVariables && stored.value) {
     std::string error;
     if (!io::writeTextFileAtomic(variablesPath, io::formatMacroVariables(variables), &error))
@@ -250,12 +246,12 @@ int runSimulate(const std::vector<std::string>& args) {
   const CutOutcome cut = o.cut.enabled ? runCut(o.file, programFile.header, setup, timeline, o.cut) : CutOutcome{};
   if (o.cycleTime) std::printf("%.4f\n", timeline.cycleTime());
   if (cut.alarm) {
-    printDiagnostic(checked.fileOf(*cut.alarm), *cut.alarm, o.lang);
+    printDiagnostic(job.fileOf(*cut.alarm), *cut.alarm, o.lang);
     return 1;
   }
   if (!cut.written) return 1;
   if (timeline.alarm) {
-    printDiagnostic(checked.fileOf(*timeline.alarm), *timeline.alarm, o.lang);
+    printDiagnostic(job.fileOf(*timeline.alarm), *timeline.alarm, o.lang);
     return 1;
   }
   return 0;

@@ -101,21 +101,5 @@ TEST(CliCommon, ShippedConfigLoadsCleanWithEveryBitmap) {
   EXPECT_EQ(config.bitmaps[2]->width, 60);  // 30 mm at 2 px/mm
 }
 
-TEST(CliCommon, CheckProgramFileMergesHeaderAndGrammarDiagnosticsInOrder) {
-  core::gcode::CheckOptions options;
-  options.dialect = core::gcode::Dialect::Classic;
-  const CheckedProgram checked = checkProgramFile(KLUENG_SAMPLES_DIR "/04-grammar-errors.txt", options);
-  ASSERT_TRUE(checked.file);
-  EXPECT_FALSE(checked.unreadable);
-  ASSERT_FALSE(checked.diagnostics.empty());
-  EXPECT_EQ(checked.diagnostics.front().range.line, 11);
-  EXPECT_EQ(checked.diagnostics.back().range.line, 30);
-  for (std::size_t i = 1; i < checked.diagnostics.size(); ++i)
-    EXPECT_LE(checked.diagnostics[i - 1].range.line, checked.diagnostics[i].range.line);
-  const CheckedProgram missing = checkProgramFile("/no/such/file.txt", options);
-  EXPECT_TRUE(missing.unreadable);
-  EXPECT_FALSE(missing.file);
-}
-
 }  // namespace
 }  // namespace klueng::cli

@@ -29,6 +29,7 @@
 #include "gui/run_controller.h"
 #include "gui/settings.h"
 #include "klueng/core/gcode/code_table.h"
+#include "klueng/core/gcode/parser.h"
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/messages.h"
 
@@ -172,6 +173,20 @@ class MainWindowTest : public QObject {
     QTest::keyClick(w.editor(), Qt::Key_Backspace);
     QVERIFY(waitIdle(w));
     QVERIFY(!hasWavyUnderlineAt(w.editor()->document()->findBlockByNumber(1), 9));
+  }
+
+  void oneEditIsParsedOnce() {
+    // Issue 12: the window never parses G-code itself; one typing pause = one
+    // parse (the check's), whatever the highlighter, tool tips or status do.
+    MainWindow w;
+    w.show();
+    QVERIFY(w.openFile(sample("01-step-shaft.txt")));
+    QVERIFY(waitIdle(w));
+    w.editor()->goToFileLine(15, 1);
+    const std::size_t before = core::gcode::parseCount();
+    QTest::keyClicks(w.editor(), QStringLiteral("G00 X60. "));
+    QVERIFY(waitIdle(w));
+    QCOMPARE(core::gcode::parseCount() - before, std::size_t{1});
   }
 
   void unsavedChangesPromptCancelKeepsAndDiscardDrops() {

@@ -4,6 +4,7 @@
 #include "klueng/core/gcode/parser.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cctype>
 #include <charconv>
 #include <cstdint>
@@ -515,7 +516,14 @@ class LineParser {
 
 }  // namespace
 
+namespace {
+std::atomic<std::size_t> parses{0};
+}  // namespace
+
+std::size_t parseCount() { return parses.load(std::memory_order_relaxed); }
+
 Program parse(std::string_view text, int firstLine, int file) {
+  parses.fetch_add(1, std::memory_order_relaxed);
   Program program;
   program.firstLine = firstLine;
   std::size_t budget = codes::kMaxLexicalDiagnostics;

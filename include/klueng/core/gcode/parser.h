@@ -1,5 +1,6 @@
 #pragma once
 // Lexer + parser in one pass over the G-code text (SPEC 3).
+#include <cstddef>
 #include <string_view>
 
 #include "klueng/core/gcode/program.h"
@@ -18,5 +19,9 @@ namespace klueng::core::gcode {
 // a line may be a statement (#1=..., IF, WHILE/DO, END, GOTO); ',C' ',R' ',A'
 // read as comma words.
 Program parse(std::string_view text, int firstLine = 1, int file = 0);
+
+// How many times parse() has run in this process (issue 12: the tests count
+// the parses one edit or one CLI command costs).
+std::size_t parseCount();
 
 }  // namespace klueng::core::gcode

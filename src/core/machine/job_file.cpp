@@ -1,0 +1,87 @@
+// One program file made ready to run (job_file.h).
+#include "klueng/core/machine/job_file.h"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "klueng/core/gcode/checker.h"
+#include "klueng/core/gcode/dialect_fit.h"
+#include "klueng/core/gcode/parser.h"
+#include "klueng/core/machine/job.h"
+#include "klueng/core/machine/setup_files.h"
+#include "klueng/core/machine/stock_inference.h"
+#include "klueng/core/machine/subprogram_files.h"
+
+namespace klueng::core::machine {
+
+namespace {
+
+// SPEC 2 (ext): the stock given for the run, else the header, else inferred
+// from the program, else the defaults. Returns the notes that say which.
+std::vector<Diagnostic> resolveStock(io::ProgramFile& file, const gcode::Program& program,
+                                     const std::optional<io::JobHeader>& stock, const MachineSetup& setup,
+                                     const RunOptions& run) {
+  io::JobHeader& h = file.header;
+  if (stock) h.takeStockFrom(*stock);
+  if (h.stockSource == io::StockSource::Header) return {};
+  if (file.gcode.find_first_not_of(" \t\r\n") == std::string::npos) return {};  // nothing to cut
+  if (h.stockSource == io::StockSource::CommandLine || h.stockSource == io::StockSource::JobDetails)
+    return stockNotes(h, nullptr, file.gcode, file.gcodeFirstLine);
+  const StockInference inferred = inferStock(program, setup, run);
+  if (inferred.found) inferred.applyTo(h);
+  else h.takeStockFrom(io::JobHeader{});
+  return stockNotes(h, &inferred, file.gcode, file.gcodeFirstLine);
+}
+
+}  // namespace
+
+std::string JobFile::fileOf(const Diagnostic& d) const {
+  return program ? diagnosticFile(*program, d, path) : path;
+}
+
+JobFile loadJobFile(const std::string& path, const MachineSetup& setup, const JobFileRequest& request,
+                    const io::ToolLibrary& library) {
+  JobFile job;
+  job.path = path;
+  job.setup = setup;
+  auto read = io::readProgramFile(path, request.defaultsForPlain);
+  job.diagnostics = std::move(read.diagnostics);
+  job.unreadable = std::any_of(job.diagnostics.begin(), job.diagnostics.end(), isUnreadable);
+  if (!read.value) return job;
+  io::ProgramFile& file = *read.value;
+  gcode::Program program = gcode::parse(file.gcode, file.gcodeFirstLine);
+  // The program's folder is the control's memory: subprograms it calls come from there.
+  for (Diagnostic& d : attachSubprogramFiles(program, std::filesystem::path(path).parent_path().string(),
+                                             request.run.dialect))
+    job.diagnostics.push_back(std::move(d));
+  job.unreadable = std::any_of(job.diagnostics.begin(), job.diagnostics.end(),
+                               [](const Diagnostic& d) { return d.range.file == 0 && isUnreadable(d); });
+
+  gcode::CheckOptions check;
+  check.dialect = request.run.dialect;
+  check.powerOnUnits = request.run.powerOnUnits;
+  check.turretStations = setup.tools.stations;  // the turret the tool table was read for
+  if (request.toolTable) {
+    // Tools from the program: library choices for stations without a fitting tool.
+    ToolInference inferred = inferTools(program, file.gcode, file.gcodeFirstLine, setup, library,
+                                        request.overrides, request.stations);
+    job.setup = std::move(inferred.setup);
+    job.toolNotes = inferred.notes();
+    check.toolsWithBitmap = toolsWithBitmap(job.setup);
+  }
+  std::vector<Diagnostic> found = gcode::check(program, check);
+  // Say once which dialect accepts a program this one refuses (I102).
+  if (auto fit = gcode::suggestDialect(program, check, found)) found.push_back(fit->note);
+  job.diagnostics.insert(job.diagnostics.end(), std::make_move_iterator(found.begin()),
+                         std::make_move_iterator(found.end()));
+  std::stable_sort(job.diagnostics.begin(), job.diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {
+    if (a.range.file != b.range.file) return a.range.file < b.range.file;
+    return a.range.line != b.range.line ? a.range.line < b.range.line : a.range.column < b.range.column;
+  });
+  job.stockNotes = resolveStock(file, program, request.stock, job.setup, request.run);
+  job.file = std::move(read.value);
+  job.program = std::move(program);
+  return job;
+}
+
+}  // namespace klueng::core::machine

@@ -1,0 +1,132 @@
+// One program file made ready to run (job_file.h): what klueng-cli check and
+// simulate see, read and parsed once.
+#include "klueng/core/machine/job_file.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "klueng/core/gcode/parser.h"
+#include "klueng/core/io/tool_library.h"
+#include "klueng/core/machine/setup_files.h"
+
+namespace klueng::core::machine {
+namespace {
+
+namespace fs = std::filesystem;
+
+class Folder {
+ public:
+  Folder() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    path_ = fs::temp_directory_path() / ("klueng-jobfile-" + std::string(info->name()) + "-" + std::to_string(::getpid()));
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~Folder() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  std::string write(const std::string& name, const std::string& text) const {
+    std::ofstream(path_ / name, std::ios::binary) << text;
+    return (path_ / name).string();
+  }
+
+ private:
+  fs::path path_;
+};
+
+const LoadedSetup& shipped() {
+  static const LoadedSetup setup = loadMachineSetup(KLUENG_SOURCE_DIR);
+  return setup;
+}
+
+JobFileRequest request(gcode::Dialect dialect = gcode::Dialect::Fanuc) {
+  JobFileRequest r;
+  r.run.dialect = dialect;
+  r.stations = shipped().setup.tools.stations;
+  return r;
+}
+
+TEST(LoadJobFile, HeaderAndGrammarDiagnosticsComeSortedByLine) {
+  const JobFile job = loadJobFile(KLUENG_SAMPLES_DIR "/04-grammar-errors.txt", shipped().setup,
+                                  request(gcode::Dialect::Classic), io::shippedToolLibrary());
+  ASSERT_TRUE(job.file && job.program);
+  EXPECT_FALSE(job.unreadable);
+  ASSERT_FALSE(job.diagnostics.empty());
+  EXPECT_EQ(job.diagnostics.front().range.line, 11);
+  EXPECT_EQ(job.diagnostics.back().range.line, 30);
+  for (std::size_t i = 1; i < job.diagnostics.size(); ++i)
+    EXPECT_LE(job.diagnostics[i - 1].range.line, job.diagnostics[i].range.line);
+  EXPECT_TRUE(job.stockNotes.empty());  // the header's stock: nothing to say
+  EXPECT_EQ(job.file->header.stockSource, io::StockSource::Header);
+}
+
+TEST(LoadJobFile, AFileThatCannotBeReadIsUnreadable) {
+  const JobFile job = loadJobFile("/no/such/file.nc", shipped().setup, request(), io::shippedToolLibrary());
+  EXPECT_TRUE(job.unreadable);
+  EXPECT_FALSE(job.file);
+  EXPECT_TRUE(job.hasErrors());
+}
+
+TEST(LoadJobFile, APlainProgramWithASubprogramFileIsParsedOnceEach) {
+  Folder folder;
+  // A plain file as a shop writes it: no header, the stock only in the approach.
+  const std::string main = folder.write("MAIN.nc",
+                                        "O0100\n"
+                                        "G21 G40 G99\n"
+                                        "T0909 (BORING BAR)\n"
+                                        "G97 S800 M03\n"
+                                        "G00 X42. Z2.\n"
+                                        "M98 P1000\n"
+                                        "G00 X150. Z150.\n"
+                                        "M30\n");
+  folder.write("O1000.nc",
+               "O1000 (FACE)\n"
+               "G01 Z0. F0.2\n"
+               "X-1.6\n"
+               "G00 Z2.\n"
+               "M99\n");
+  const std::size_t before = gcode::parseCount();
+  const JobFile job = loadJobFile(main, shipped().setup, request(), io::shippedToolLibrary());
+  EXPECT_EQ(gcode::parseCount() - before, 2u);  // MAIN.nc and O1000.nc, nothing twice
+  ASSERT_TRUE(job.program);
+  EXPECT_EQ(job.program->files.size(), 2u);
+  for (const Diagnostic& d : job.diagnostics) ADD_FAILURE() << d.code << " line " << d.range.line << " file " << d.range.file;
+  // The stock comes from the approach X42. (the next bar up), and a note says so.
+  EXPECT_EQ(job.file->header.stockSource, io::StockSource::Inferred);
+  EXPECT_GE(job.file->header.diameter, 42.0);
+  ASSERT_FALSE(job.stockNotes.empty());
+  // A boring bar for the empty station 9, from its comment.
+  ASSERT_FALSE(job.toolNotes.empty());
+  EXPECT_NE(job.setup.tools.libraryId(9).find("bor"), std::string::npos) << job.setup.tools.libraryId(9);
+}
+
+TEST(LoadJobFile, TheStockGivenForTheRunWinsOverTheHeader) {
+  JobFileRequest r = request();
+  io::JobHeader stock;
+  stock.diameter = 30.0;
+  stock.length = 60.0;
+  stock.stockSource = io::StockSource::CommandLine;
+  r.stock = stock;
+  const JobFile job = loadJobFile(KLUENG_SAMPLES_DIR "/01-step-shaft.txt", shipped().setup, r, io::shippedToolLibrary());
+  ASSERT_TRUE(job.file);
+  EXPECT_EQ(job.file->header.diameter, 30.0);
+  EXPECT_EQ(job.file->header.length, 60.0);
+  EXPECT_EQ(job.file->header.stockSource, io::StockSource::CommandLine);
+  ASSERT_FALSE(job.stockNotes.empty());
+}
+
+TEST(LoadJobFile, WithoutAToolTableTWordsAreNotChecked) {
+  JobFileRequest r = request();
+  r.toolTable = false;
+  MachineSetup bare;  // no bitmaps at all
+  const JobFile job = loadJobFile(KLUENG_SAMPLES_DIR "/01-step-shaft.txt", bare, r, io::shippedToolLibrary());
+  EXPECT_FALSE(job.hasErrors());
+  EXPECT_TRUE(job.toolNotes.empty());
+}
+
+}  // namespace
+}  // namespace klueng::core::machine
