@@ -1,5 +1,9 @@
 #include "gui/run_controller.h"
 
+#include <set>
+
+#include "klueng/core/machine/playback.h"
+
 #include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
 #include <cmath>
@@ -153,30 +157,17 @@ RunStatus RunController::status() const {
   s.machine.optionalStopSwitch = options_.optionalStop;
   s.position = core::zx(setup_.machine.startZ, setup_.machine.startX / 2.0);
   if (!timeline_) return s;
-  const auto& snaps = timeline_->snapshots;
   s.cycleTime = timeline_->cycleTime();
-  if (!timeline_->moves.empty()) s.position = timeline_->positionAt(time_);
-  // Mid-block the executing block's state shows (its M03/T/F act before its motion).
-  int k = snapshotIndex_;
-  const double doneTime = snapshotIndex_ >= 0 ? snaps[static_cast<std::size_t>(snapshotIndex_)].time : 0.0;
-  if (time_ > doneTime + kEps && snapshotIndex_ + 1 < static_cast<int>(snaps.size())) k = snapshotIndex_ + 1;
-  if (k >= 0 && k < static_cast<int>(snaps.size())) {
-    const machine::StateSnapshot& snap = snaps[static_cast<std::size_t>(k)];
-    s.machine = snap.machine;
-    s.programmedFeed = snap.modal.feed;
-    s.feedMode = snap.modal.feedMode;
-    s.rpm = snap.machine.rpm;
+  const machine::Pose pose = machine::poseAt(*timeline_, snapshotIndex_, time_);
+  if (!timeline_->moves.empty()) s.position = pose.position;
+  if (machine::shownSnapshot(*timeline_, snapshotIndex_, time_) >= 0) {
+    s.machine = pose.machine;
+    s.programmedFeed = pose.programmedFeed;
+    s.feedMode = pose.feedMode;
   }
+  s.rpm = pose.rpm;
+  s.feedMmPerMin = pose.feedMmPerMin;
   s.machine.optionalStopSwitch = options_.optionalStop;
-  const int m = timeline_->moveAt(time_);
-  if (m >= 0 && time_ < timeline_->moves[static_cast<std::size_t>(m)].tEnd - kEps && time_ > doneTime + kEps) {
-    const machine::Move& move = timeline_->moves[static_cast<std::size_t>(m)];
-    const double span = move.tEnd - move.tStart;
-    const double f = span > 0 ? std::clamp((time_ - move.tStart) / span, 0.0, 1.0) : 1.0;
-    s.feedMmPerMin = move.feed;
-    s.rpm = move.rpm + (move.rpmEnd - move.rpm) * f;
-    s.machine.spindle = move.spindle;
-  }
   if (cut_ && !busy_ && cut_->alarm()) s.position = const_cast<core::cut::CutSimulator*>(cut_.get())->toolPosition();
   return s;
 }
@@ -220,13 +211,9 @@ void RunController::stop() {
 void RunController::stepBack() {
   if (busy_ || !timeline_ || !cut_) return;
   frameTimer_.stop();
-  const auto& snaps = timeline_->snapshots;
-  double doneTime = snapshotIndex_ >= 0 ? snaps[static_cast<std::size_t>(snapshotIndex_)].time : 0.0;
-  int target = snapshotIndex_;
-  // At a block boundary: back over the last block; mid-block: back to the block's start.
-  if (time_ <= doneTime + kEps) target = snapshotIndex_ - 1;
-  if (target < -1) target = -1;
-  const double t = target >= 0 ? snaps[static_cast<std::size_t>(target)].time : 0.0;
+  const machine::StopTarget back = machine::stepBackStop(*timeline_, snapshotIndex_, time_);
+  const int target = back.snapshot;
+  const double t = back.time;
   reportedAlarm_.reset();
   pausedBeforeNext_ = false;
   targetSnapshot_ = target;
@@ -293,7 +280,6 @@ void RunController::prepareAndThen(Pending what) {
       return result;
     }
     result->timeline = std::make_shared<machine::Timeline>(std::move(*compiled.timeline));
-    for (const auto& snap : result->timeline->snapshots) result->optionalStopBlock.push_back(snap.optionalStop ? 1 : 0);
     return result;
   }));
 }
@@ -314,7 +300,6 @@ void RunController::onPrepared() {
   }
   timeline_ = result->timeline;
   files_ = result->files;
-  optionalStopBlock_ = result->optionalStopBlock;
   cut_ = std::make_unique<core::cut::CutSimulator>(*timeline_, core::cut::CutSetup::from(file_.header, setup_));
   stale_ = false;
   resetPlayback();
@@ -349,52 +334,23 @@ void RunController::startPending(Pending what) {
 // ---------------------------------------------------------------- playing
 
 void RunController::startRun(bool stepOnly) {
-  const auto& snaps = timeline_->snapshots;
-  const int count = static_cast<int>(snaps.size());
-  const int next = snapshotIndex_ + 1;
-  const double end = cut_->endTime();
-  targetIsEnd_ = true;
-  targetBeforeNext_ = false;
+  machine::StopRequest request;
+  request.command = !stepOnly                          ? machine::RunCommand::Go
+                    : stepKind_ == Pending::StepOver ? machine::RunCommand::StepOver
+                    : stepKind_ == Pending::StepOut  ? machine::RunCommand::StepOut
+                                                     : machine::RunCommand::Step;
+  request.done = snapshotIndex_;
+  request.endTime = cut_->endTime();
+  request.optionalStop = options_.optionalStop;
+  const std::set<int> breakpoints(breakpoints_.begin(), breakpoints_.end());
+  request.breakpoints = &breakpoints;
+  request.runToLine = runToLine_;
+  const machine::StopTarget stop = machine::nextStop(*timeline_, request);
+  targetSnapshot_ = stop.snapshot;
+  targetTime_ = stop.time;
+  targetIsEnd_ = stop.isEnd;
+  targetBeforeNext_ = stop.beforeNext;
   pausedBeforeNext_ = false;
-  targetSnapshot_ = count - 1;
-  targetTime_ = end;
-  if (stepOnly && next < count) {
-    // Step Over: the next block of this level (a call runs whole); Step Out: of the level above.
-    int target = next;
-    if (stepKind_ == Pending::StepOver || stepKind_ == Pending::StepOut) {
-      const int level = snapshotIndex_ >= 0 ? snaps[static_cast<std::size_t>(snapshotIndex_)].callLevel : 0;
-      const int want = stepKind_ == Pending::StepOut ? std::max(0, level - 1) : level;
-      target = machine::nextSnapshotAtLevel(*timeline_, snapshotIndex_, want);
-      if (target < 0) target = count - 1;
-    }
-    targetIsEnd_ = target == count - 1 && snaps[static_cast<std::size_t>(target)].time >= end - kEps;
-    targetSnapshot_ = target;
-    targetTime_ = snaps[static_cast<std::size_t>(target)].time;
-  } else if (!stepOnly) {
-    for (int j = next; j < count; ++j) {
-      const machine::StateSnapshot& s = snaps[static_cast<std::size_t>(j)];
-      // The block we resume on has already been stopped at; its breakpoint lets it run.
-      // Breakpoints and Run to cursor are lines of the program in the editor (file 0).
-      const bool breakHere =
-          j > next && s.file == 0 && (breakpoints_.contains(s.line) || (runToLine_ > 0 && s.line >= runToLine_));
-      if (breakHere) {
-        targetIsEnd_ = false;
-        targetBeforeNext_ = true;
-        targetSnapshot_ = j - 1;
-        targetTime_ = snaps[static_cast<std::size_t>(j - 1)].time;
-        break;
-      }
-      const bool optional = j < static_cast<int>(optionalStopBlock_.size()) && optionalStopBlock_[static_cast<std::size_t>(j)];
-      if (s.stopped && j < count - 1 && (!optional || options_.optionalStop)) {   // M00 / M01 with the switch on
-        targetIsEnd_ = false;
-        targetSnapshot_ = j;
-        targetTime_ = s.time;
-        break;
-      }
-    }
-  }
-  // A cut alarm ends the run before the timeline does.
-  targetTime_ = std::min(targetTime_, end);
   setState(stepOnly ? RunState::Stepping : RunState::Running);
   if (speed_ == kAsFastAsPossible) {
     runInBackground(targetTime_);
@@ -408,34 +364,12 @@ void RunController::startRun(bool stepOnly) {
   frameTimer_.start();
 }
 
-double RunController::limitSlowStep(double from, double dt) const {
-  // Walk the path from `from` and stop after maxStepMm_ of tool travel.
-  const auto& moves = timeline_->moves;
-  double t = from;
-  double budget = maxStepMm_;
-  int i = std::max(0, timeline_->moveAt(from));
-  while (t < from + dt && i < static_cast<int>(moves.size())) {
-    const machine::Move& m = moves[static_cast<std::size_t>(i)];
-    const double span = m.tEnd - m.tStart;
-    const double end = std::min(m.tEnd, from + dt);
-    if (span > 0 && end > t && m.kind != machine::MoveKind::Dwell) {
-      const double speed = m.path.length() / span;   // mm per machine second
-      const double dist = speed * (end - t);
-      if (dist > budget) return t + budget / speed - from;
-      budget -= dist;
-    }
-    t = std::max(t, end);
-    ++i;
-  }
-  return dt;
-}
-
 void RunController::tick() {
   const qint64 now = wallClock_.nsecsElapsed();
   const double wall = std::min(kMaxFrameSeconds, (now - lastTickNs_) * 1e-9);
   lastTickNs_ = now;
   double dt = wall * speed_;
-  if (speed_ < 1.0 && maxStepMm_ > 0.0) dt = limitSlowStep(time_, dt);
+  if (speed_ < 1.0 && maxStepMm_ > 0.0) dt = machine::limitTravel(*timeline_, time_, dt, maxStepMm_);
   advanceTo(std::min(time_ + dt, targetTime_));
   ++frames_;
   if (cut_->alarm() || time_ >= targetTime_ - kEps) finishStop();

@@ -152,7 +152,6 @@ class RunController : public QObject {
   enum class Pending { None, Go, Step, StepOver, StepOut, RunToLine };
   struct Prepared {
     std::shared_ptr<core::machine::Timeline> timeline;
-    std::vector<char> optionalStopBlock;   // per snapshot: the block holds M01
     std::vector<std::string> files;        // Program::files
     QList<core::Diagnostic> errors;
   };
@@ -172,7 +171,6 @@ class RunController : public QObject {
   void emitStatus();
   void runInBackground(double target);
   void onBackgroundDone();
-  double limitSlowStep(double from, double dt) const;
 
   core::io::ProgramFile file_;
   QString displayName_;
@@ -187,7 +185,6 @@ class RunController : public QObject {
   bool stale_ = true;
 
   std::shared_ptr<core::machine::Timeline> timeline_;
-  std::vector<char> optionalStopBlock_;
   std::unique_ptr<core::cut::CutSimulator> cut_;
   mutable render::StockShape stockShape_;
   mutable double stockShapeVolume_ = -1.0;
