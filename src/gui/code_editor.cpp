@@ -1,5 +1,7 @@
 #include "gui/code_editor.h"
 
+#include "klueng/core/gcode/address_table.h"
+
 #include <QFontDatabase>
 #include <QHelpEvent>
 #include <QPainter>
@@ -288,26 +290,10 @@ QString CodeEditor::helpForPosition(int position) const {
         .arg(word, QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size())),
              QString::fromUtf8(example.data(), static_cast<qsizetype>(example.size())).toHtmlEscaped());
   }
-  QString what;
-  switch (letter.unicode()) {
-    case 'X': what = tr("X position (diameter)"); break;
-    case 'Z': what = tr("Z position"); break;
-    case 'U': what = tr("incremental X move (diameter)"); break;
-    case 'W': what = tr("incremental Z move"); break;
-    case 'I': what = tr("arc centre in X from the start point (radius)"); break;
-    case 'K': what = tr("arc centre in Z from the start point"); break;
-    case 'R': what = tr("arc radius or cycle value"); break;
-    case 'F': what = tr("feed rate (mm/rev under G99, mm/min under G98, lead for G32)"); break;
-    case 'S': what = tr("spindle speed (rpm under G97, m/min under G96)"); break;
-    case 'T': what = tr("tool number (first two digits) and offset number (last two)"); break;
-    case 'N': what = tr("sequence (block) number"); break;
-    case 'O': what = tr("program number"); break;
-    case 'C': what = tr("spindle angle in C-axis mode (absolute, degrees)"); break;
-    case 'H': what = tr("spindle angle in C-axis mode (incremental, degrees)"); break;
-    case 'P': what = tr("dwell time in ms, or a cycle/subprogram parameter"); break;
-    case 'Q': what = tr("cycle parameter"); break;
-    default: return {};
-  }
+  const core::gcode::AddressInfo* address = core::gcode::addressInfo(static_cast<char>(letter.unicode()));
+  if (!address) return {};
+  const std::string_view meaning = thai ? address->meaningTh : address->meaningEn;
+  const QString what = QString::fromUtf8(meaning.data(), static_cast<qsizetype>(meaning.size()));
   return QStringLiteral("<b>%1%2</b> — %3").arg(QString(letter), number.toHtmlEscaped(), what) + lastValue;
 }
 

@@ -1,5 +1,7 @@
 #include "gui/gcode_highlighter.h"
 
+#include "klueng/core/gcode/address_table.h"
+
 #include <algorithm>
 #include <iterator>
 #include <string_view>
@@ -45,17 +47,22 @@ bool isMacroWord(const QString& w) {
 }  // namespace
 
 GcodeHighlighter::Kind GcodeHighlighter::kindOf(QChar letter) {
-  switch (letter.toUpper().unicode()) {
-    case 'G': return Kind::GCode;
-    case 'M': return Kind::MCode;
-    case 'T': return Kind::Tool;
-    case 'X': case 'Z': case 'U': case 'W': case 'I': case 'K': case 'R': case 'C': case 'H':
-      return Kind::Axis;
-    case 'F': case 'S': case 'P': case 'Q': return Kind::FeedSpeed;
-    case 'N': return Kind::Sequence;
-    case 'O': return Kind::Program;
-    default: return Kind::Other;
+  const QChar upper = letter.toUpper();
+  if (upper.unicode() >= 128) return Kind::Other;
+  // The core's address table says what a letter is; this only picks its colour.
+  const core::gcode::AddressInfo* a = core::gcode::addressInfo(static_cast<char>(upper.unicode()));
+  if (!a) return Kind::Other;
+  switch (a->kind) {
+    case core::gcode::AddressKind::GCode: return Kind::GCode;
+    case core::gcode::AddressKind::MCode: return Kind::MCode;
+    case core::gcode::AddressKind::Tool: return Kind::Tool;
+    case core::gcode::AddressKind::Axis: return Kind::Axis;
+    case core::gcode::AddressKind::FeedSpeed:
+    case core::gcode::AddressKind::Parameter: return Kind::FeedSpeed;
+    case core::gcode::AddressKind::Sequence: return Kind::Sequence;
+    case core::gcode::AddressKind::Program: return Kind::Program;
   }
+  return Kind::Other;
 }
 
 QTextCharFormat GcodeHighlighter::format(Kind kind) const { return formats_[static_cast<int>(kind)]; }

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "diagnostic_codes.h"
+#include "klueng/core/gcode/address_table.h"
 #include "flow_check.h"
 #include "klueng/core/gcode/word_format.h"
 
@@ -17,16 +18,10 @@ namespace {
 
 constexpr double kMaxWholeNumber = 99999999.0;
 
-// Rule 2: letters that may appear at most once per block.
+// Rule 2: letters that may appear at most once per block (the address table says which).
 bool onceOnly(char l) {
-  switch (l) {
-    case 'C': case 'F': case 'H': case 'I': case 'K': case 'N': case 'O': case 'R': case 'S':
-    case 'T': case 'U': case 'W': case 'X': case 'Z':
-    case 'A': case 'D': case 'E': case 'J':  // Haas cycle words
-      return true;
-    default:
-      return false;
-  }
+  const AddressInfo* a = addressInfo(l);
+  return a && a->oncePerBlock;
 }
 
 bool hasSign(const Word& w) { return !w.number.empty() && (w.number[0] == '-' || w.number[0] == '+'); }

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "../../../src/core/gcode/diagnostic_codes.h"
+#include "klueng/core/gcode/address_table.h"
 #include "klueng/core/gcode/code_table.h"
 #include "klueng/core/messages.h"
 
@@ -101,6 +102,35 @@ TEST(Catalog, EveryGcodeDiagnosticHasEnglishAndThai) {
   EXPECT_EQ(std::count_if(std::begin(codes::kAll), std::end(codes::kAll),
                           [](const char* c) { return std::string_view(c) == "E213"; }),
             0);
+}
+
+}  // namespace
+}  // namespace klueng::core::gcode
+
+// The address table (issue 12): one list of letters for the checker, the editor and its tool tips.
+namespace klueng::core::gcode {
+namespace {
+
+TEST(AddressTable, EveryLatheLetterIsThereOnceWithBothMeanings) {
+  std::string letters;
+  for (const AddressInfo& a : addressTable()) {
+    letters += a.letter;
+    EXPECT_FALSE(a.meaningEn.empty()) << a.letter;
+    // Thai letters (U+0E00-U+0E7F are E0 B8 80 .. E0 B9 BF in UTF-8).
+    EXPECT_NE(a.meaningTh.find("\xE0\xB8"), std::string_view::npos) << a.letter;
+    EXPECT_EQ(addressInfo(a.letter), &a);
+  }
+  EXPECT_EQ(letters, "ACDEFGHIJKLMNOPQRSTUWXZ");
+  for (char missing : {'B', 'V', 'Y', 'a', '#'}) EXPECT_EQ(addressInfo(missing), nullptr) << missing;
+}
+
+TEST(AddressTable, RuleTwoLettersAreOncePerBlock) {
+  // SPEC 4 rule 2: G, M, P, Q and L may repeat (G00 G40 G97, M03 M08, a cycle's P and Q).
+  for (const AddressInfo& a : addressTable())
+    EXPECT_EQ(a.oncePerBlock, std::string_view("GMPQL").find(a.letter) == std::string_view::npos) << a.letter;
+  EXPECT_EQ(addressInfo('X')->kind, AddressKind::Axis);
+  EXPECT_EQ(addressInfo('T')->kind, AddressKind::Tool);
+  EXPECT_EQ(addressInfo('X')->meaningEn, "X position (diameter)");
 }
 
 }  // namespace
