@@ -173,22 +173,10 @@ int runCheck(const std::vector<std::string>& args) {
   if (const auto exit = parseArgs(args, o)) return *exit;
 
   const LoadedConfig config = loadConfig(o.configDir);
-  std::vector<machine::StationOverride> overrides;
-  for (const std::string& t : o.tools) {
-    machine::StationOverride ov;
-    std::string error;
-    if (!machine::parseStationOverride(t, stationLimit(config, o.dialect), io::shippedToolLibrary(), ov, error))
-      return usageError(error);
-    overrides.push_back(ov);
-  }
-  machine::JobFileRequest request;
-  request.run.dialect = o.dialect;
-  request.run.powerOnUnits = o.powerOnUnits;
-  request.stock = o.stock;
-  request.overrides = overrides;
-  request.stations = stationLimit(config, o.dialect);
-  // Without a readable tool table nothing is known about bitmaps: do not check T words against it.
-  request.toolTable = !config.unreadable;
+  std::string error;
+  const std::optional<machine::JobFileRequest> request =
+      jobRequest(config, o.dialect, o.powerOnUnits, o.stock, o.tools, error);
+  if (!request) return usageError(error);
 
   std::vector<FileDiagnostic> all = config.diagnostics;
   bool anyError = config.hasErrors();
@@ -197,7 +185,7 @@ int runCheck(const std::vector<std::string>& args) {
   std::vector<FileDiagnostic> notes;  // each file's tool choices and where its stock comes from
 
   for (const std::string& path : expandFolders(o.files)) {
-    const machine::JobFile job = machine::loadJobFile(path, config.setup, request, io::shippedToolLibrary());
+    const machine::JobFile job = machine::loadJobFile(path, config.setup, *request, io::shippedToolLibrary());
     for (const Diagnostic& n : job.toolNotes) notes.push_back({path, n});
     for (const Diagnostic& n : job.stockNotes) notes.push_back({path, n});
     FileSummary row{path};

@@ -155,4 +155,23 @@ int stationLimit(const LoadedConfig& config, gcode::Dialect dialect) {
   return profileLimit > 0 ? std::min(profileLimit, config.setup.tools.stations) : config.setup.tools.stations;
 }
 
+std::optional<machine::JobFileRequest> jobRequest(const LoadedConfig& config, gcode::Dialect dialect,
+                                                  std::optional<gcode::InputUnits> powerOnUnits,
+                                                  const std::optional<io::JobHeader>& stock,
+                                                  const std::vector<std::string>& tools, std::string& error) {
+  machine::JobFileRequest request;
+  request.run.dialect = dialect;
+  request.run.powerOnUnits = powerOnUnits;
+  request.stock = stock;
+  request.stations = stationLimit(config, dialect);
+  // Without a readable tool table nothing is known about bitmaps: do not check T words against it.
+  request.toolTable = !config.unreadable;
+  for (const std::string& t : tools) {
+    machine::StationOverride o;
+    if (!machine::parseStationOverride(t, request.stations, io::shippedToolLibrary(), o, error)) return std::nullopt;
+    request.overrides.push_back(o);
+  }
+  return request;
+}
+
 }  // namespace klueng::cli

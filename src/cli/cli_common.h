@@ -16,6 +16,7 @@
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/io/tool_config.h"
 #include "klueng/core/machine/interpreter.h"
+#include "klueng/core/machine/job_file.h"
 #include "klueng/core/machine/setup_files.h"
 #include "klueng/core/machine/tool_inference.h"
 #include "klueng/core/messages.h"
@@ -67,6 +68,14 @@ LoadedConfig loadConfig(const std::string& explicitDir = {});
 
 // The highest station a T word may name: the dialect's limit, else the turret.
 int stationLimit(const LoadedConfig& config, core::gcode::Dialect dialect);
+
+// What check and simulate ask of machine::loadJobFile: the run's dialect and
+// units, --stock, and the --tool N=ID choices (checked against the turret).
+// nullopt with `error` set when a --tool choice is refused (exit 2).
+std::optional<core::machine::JobFileRequest> jobRequest(const LoadedConfig& config, core::gcode::Dialect dialect,
+                                                        std::optional<core::gcode::InputUnits> powerOnUnits,
+                                                        const std::optional<core::io::JobHeader>& stock,
+                                                        const std::vector<std::string>& tools, std::string& error);
 
 
 }  // namespace klueng::cli

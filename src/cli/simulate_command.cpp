@@ -190,24 +190,15 @@ int runSimulate(const std::vector<std::string>& args) {
   for (const auto& fd : config.diagnostics) printDiagnostic(fd.file, fd.diagnostic, o.lang);
   if (config.unreadable) return 2;
   if (config.hasErrors()) return 1;
-  std::vector<machine::StationOverride> overrides;
-  for (const std::string& t : o.tools) {
-    machine::StationOverride ov;
-    std::string error;
-    if (!machine::parseStationOverride(t, stationLimit(config, o.dialect), io::shippedToolLibrary(), ov, error)) {
-      std::fprintf(stderr, "klueng-cli simulate: %s\n", error.c_str());
-      return 2;
-    }
-    overrides.push_back(ov);
+  std::string error;
+  const std::optional<machine::JobFileRequest> request =
+      jobRequest(config, o.dialect, o.powerOnUnits, o.stock, o.tools, error);
+  if (!request) {
+    std::fprintf(stderr, "klueng-cli simulate: %s\n", error.c_str());
+    return 2;
   }
   // Read and parse once: tools from the program (library choices, notes say which), the check, the stock.
-  machine::JobFileRequest request;
-  request.run.dialect = o.dialect;
-  request.run.powerOnUnits = o.powerOnUnits;
-  request.stock = o.stock;
-  request.overrides = overrides;
-  request.stations = stationLimit(config, o.dialect);
-  const machine::JobFile job = machine::loadJobFile(o.file, config.setup, request, io::shippedToolLibrary());
+  const machine::JobFile job = machine::loadJobFile(o.file, config.setup, *request, io::shippedToolLibrary());
   for (const Diagnostic& n : job.toolNotes) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
   for (const auto& d : job.diagnostics) printDiagnostic(job.fileOf(d), d, o.lang);
   if (job.unreadable) return 2;
@@ -216,7 +207,7 @@ int runSimulate(const std::vector<std::string>& args) {
   const machine::MachineSetup& setup = job.setup;
   const io::ProgramFile& programFile = *job.file;
   const gcode::Program& program = *job.program;
-  machine::RunOptions runOptions = request.run;
+  machine::RunOptions runOptions = request->run;
   runOptions.optionalStop = o.optionalStop;
   runOptions.blockSkip = o.blockSkip;
   // #500-#999 live in the folder's macro_variables.cfg between runs.
