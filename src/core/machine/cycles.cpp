@@ -224,25 +224,12 @@ Expansion expand(int g, const CycleInput& in, CycleMemory& memory) {
         return e;
       }
       const double taper = value('R', 0.0);  // R(i): radius difference, start minus end
-      const double sx = sign(in.start.y() - target.y());  // towards the crest (outside: +1)
-      const double sz = sign(target.x() - in.start.x());
       const double flank = std::tan(memory.g76Angle / 2.0 * std::numbers::pi / 180.0);
       const auto depths = threadDepths(height, first, memory.g76MinDepth, memory.g76Allowance,
                                        memory.g76Finishing);
-      const Vec2& a = in.start;
-      for (const double depth : depths) {
-        // One-flank infeed: each pass starts depth·tan(a/2) further along the thread.
-        const double xPass = target.y() + sx * (height - depth);
-        const Vec2 s0(a.x() + sz * depth * flank, a.y());
-        const Vec2 s1(s0.x(), xPass + taper);
-        const Vec2 s2(target.x(), xPass);
-        const Vec2 s3(target.x(), a.y());
-        if ((s0 - a).norm() > kEps) e.steps.push_back(rapid(a, s0));
-        e.steps.push_back(rapid(s0, s1));
-        // Pull-out at 45 degrees over the last r/10 leads, still threading.
-        threadPass(e.steps, s1, s2, s3, memory.g76Chamfer / 10.0 * in.feed, sx, in.feed);
-        e.steps.push_back(rapid(s3, a));
-      }
+      // Pull-out at 45 degrees over the last r/10 leads, still threading.
+      threadInfeed(e.steps, in.start, target, height, taper, flank, depths, memory.g76Chamfer / 10.0 * in.feed,
+                   in.feed);
       return e;
     }
     default: break;

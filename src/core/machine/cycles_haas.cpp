@@ -131,22 +131,10 @@ Expansion threading(const CycleInput& in, const Block& b) {
     e.alarm = alarmAt("A127", b.find('D'), b, {name, fmt::format("{:.0f}", std::ceil(height / first)), num(first)});
     return e;
   }
-  const double sx = sign(in.start.y() - target.y());  // towards the crest (outside: +1)
-  const double sz = sign(target.x() - in.start.x());
   const double flank = doubleEdge ? 0.0 : std::tan(angle / 2.0 * std::numbers::pi / 180.0);
-  const Vec2& a = in.start;
-  for (const double depth : haasThreadDepths(height, first, minCut, finish, constantDepth)) {
-    const double xPass = target.y() + sx * (height - depth);
-    const Vec2 s0(a.x() + sz * depth * flank, a.y());
-    const Vec2 s1(s0.x(), xPass + taper);
-    const Vec2 s2(target.x(), xPass);
-    const Vec2 s3(target.x(), a.y());
-    if ((s0 - a).norm() > kEps) e.steps.push_back(rapid(a, s0));
-    e.steps.push_back(rapid(s0, s1));
-    const double leads = in.threadChamfer ? s.threadChamferLeads : 0.0;  // M23/M24, Settings 95/96
-    threadPass(e.steps, s1, s2, s3, leads * in.feed, sx, in.feed);
-    e.steps.push_back(rapid(s3, a));
-  }
+  const double leads = in.threadChamfer ? s.threadChamferLeads : 0.0;  // M23/M24, Settings 95/96
+  threadInfeed(e.steps, in.start, target, height, taper, flank,
+               haasThreadDepths(height, first, minCut, finish, constantDepth), leads * in.feed, in.feed);
   return e;
 }
 

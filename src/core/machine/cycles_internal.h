@@ -63,6 +63,29 @@ inline void threadPass(std::vector<Step>& steps, const Vec2& s1, const Vec2& s2,
   }
 }
 
+// The passes of a multi-pass thread (Fanuc G76, Haas G76): for each depth, a
+// rapid in along the flank (one-flank infeed: each pass starts depth·flank
+// further along; flank = tan(angle/2), 0 for straight infeed), the thread pass
+// to `target` with its pull-out chamfer, and back to the start `a`. height:
+// thread height; taper: radius difference, start minus end.
+template <typename Depths>
+void threadInfeed(std::vector<Step>& steps, const Vec2& a, const Vec2& target, double height, double taper,
+                  double flank, const Depths& depths, double chamfer, double lead) {
+  const double sx = sign(a.y() - target.y());  // towards the crest (outside: +1)
+  const double sz = sign(target.x() - a.x());
+  for (const double depth : depths) {
+    const double xPass = target.y() + sx * (height - depth);
+    const Vec2 s0(a.x() + sz * depth * flank, a.y());
+    const Vec2 s1(s0.x(), xPass + taper);
+    const Vec2 s2(target.x(), xPass);
+    const Vec2 s3(target.x(), a.y());
+    if ((s0 - a).norm() > kEps) steps.push_back(rapid(a, s0));
+    steps.push_back(rapid(s0, s1));
+    threadPass(steps, s1, s2, s3, chamfer, sx, lead);
+    steps.push_back(rapid(s3, a));
+  }
+}
+
 inline CycleAlarm alarmAt(const char* code, const Word* w, const Block& b, std::vector<std::string> args) {
   return CycleAlarm{code, w ? w->range : SourceRange{b.line, 1, 0}, std::move(args)};
 }
