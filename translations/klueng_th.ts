@@ -289,6 +289,10 @@
 <context>
     <name>klueng::gui::MainWindow</name>
     <message>
+        <source>Autosave failed: %1</source>
+        <translation>บันทึกอัตโนมัติไม่สำเร็จ: %1</translation>
+    </message>
+    <message>
         <source>Undo &amp;Setup Change</source>
         <translation>เลิกทำการตั้งค่า (&amp;S)</translation>
     </message>
@@ -1189,6 +1193,53 @@
     <message>
         <source>Job details</source>
         <translation>รายละเอียดงาน</translation>
+    </message>
+</context>
+<context>
+    <name>klueng::gui::RecoveryBar</name>
+    <message>
+        <source>&amp;Restore</source>
+        <translation>กู้คืน (&amp;R)</translation>
+    </message>
+    <message>
+        <source>Co&amp;mpare</source>
+        <translation>เปรียบเทียบ (&amp;M)</translation>
+    </message>
+    <message>
+        <source>Dis&amp;card</source>
+        <translation>ทิ้ง (&amp;C)</translation>
+    </message>
+    <message>
+        <source>the same as the file on disk</source>
+        <translation>เหมือนกับไฟล์ในดิสก์</translation>
+    </message>
+    <message>
+        <source>Klueng closed without saving "%1" (edited %2): %3.</source>
+        <translation>Klueng ปิดไปโดยยังไม่ได้บันทึก "%1" (แก้ไขเมื่อ %2): %3</translation>
+    </message>
+    <message>
+        <source>line %1</source>
+        <translation>บรรทัด %1</translation>
+    </message>
+    <message>
+        <source>Unsaved work</source>
+        <translation>งานที่ยังไม่ได้บันทึก</translation>
+    </message>
+    <message>
+        <source>Lines marked - are in the file; lines marked + are in the unsaved copy.</source>
+        <translation>บรรทัดที่ขึ้นต้นด้วย - อยู่ในไฟล์ ส่วนบรรทัดที่ขึ้นต้นด้วย + อยู่ในสำเนาที่ยังไม่ได้บันทึก</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n line(s) of unsaved work</source>
+        <translation><numerusform>งานที่ยังไม่ได้บันทึก %n บรรทัด</numerusform></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n line(s) differ from the file, the first at line %1</source>
+        <translation><numerusform>ต่างจากไฟล์ %n บรรทัด เริ่มที่บรรทัด %1</numerusform></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n more after this one.</source>
+        <translation><numerusform>ยังมีอีก %n รายการ</numerusform></translation>
     </message>
 </context>
 </TS>

@@ -27,16 +27,57 @@ DocumentManager::DocumentManager(QWidget* window, CodeEditor* editor, Settings* 
       context_(std::move(context)),
       document_(new Document(this)),
       watcher_(new QFileSystemWatcher(this)),
-      diskChangeTimer_(new QTimer(this)) {
+      diskChangeTimer_(new QTimer(this)),
+      autosaveTimer_(new QTimer(this)) {
   connect(watcher_, &QFileSystemWatcher::fileChanged, this, &DocumentManager::onFileChangedOnDisk);
   diskChangeTimer_->setSingleShot(true);
   diskChangeTimer_->setInterval(250);
   connect(&loadWatcher_, &QFutureWatcherBase::finished, this, &DocumentManager::onLoadFinished);
   connect(editor_->document(), &QTextDocument::modificationChanged, this, &DocumentManager::modificationChanged);
   connect(document_, &Document::headerChanged, this, &DocumentManager::modificationChanged);
+  // Every real edit of the text or the header is a new revision for the autosave.
+  connect(editor_->document(), &QTextDocument::contentsChange, this, [this](int, int removed, int added) {
+    if ((removed || added) && !fillingEditor_) ++revision_;
+  });
+  connect(document_, &Document::headerChanged, this, [this] { ++revision_; });
+  autosaveTimer_->setInterval(settings_->autosaveSeconds() * 1000);
+  connect(autosaveTimer_, &QTimer::timeout, this, &DocumentManager::autosave);
+  autosaveTimer_->start();
 }
 
-DocumentManager::~DocumentManager() { loadWatcher_.waitForFinished(); }
+DocumentManager::~DocumentManager() {
+  loadWatcher_.waitForFinished();
+  discardRecovery();  // an orderly end (a crash never gets here): nothing to recover
+}
+
+void DocumentManager::autosave() {
+  if (fillingEditor_ || restoring_) return;
+  if (!isModified()) {
+    discardRecovery();
+    return;
+  }
+  if (hasRecoveryCopy_ && autosavedRevision_ == revision_) return;
+  QString error;
+  if (!recovery_.write(sessionId_, document_->formatted(editor_->toPlainText()), document_->filePath(),
+                       document_->displayName(), &error)) {
+    emit autosaveFailed(error);
+    return;
+  }
+  hasRecoveryCopy_ = true;
+  autosavedRevision_ = revision_;
+}
+
+void DocumentManager::discardRecovery() {
+  if (!hasRecoveryCopy_) return;
+  recovery_.remove(sessionId_);
+  hasRecoveryCopy_ = false;
+}
+
+void DocumentManager::restoreRecovery(const RecoveryCopy& copy) {
+  if (!maybeSave()) return;
+  restoring_ = copy;
+  startLoad(copy.copyPath, copy.originalPath);
+}
 
 bool DocumentManager::isModified() const {
   return editor_->document()->isModified() || document_->isHeaderModified();
@@ -66,6 +107,7 @@ bool DocumentManager::maybeSave() {
 void DocumentManager::newFile() {
   if (!maybeSave()) return;
   emit aboutToReplace();
+  discardRecovery();
   if (!document_->filePath().isEmpty()) watcher_->removePath(document_->filePath());
   ++fillGeneration_;  // drop the rest of a file still going into the editor
   pendingText_.clear();
@@ -96,12 +138,13 @@ bool DocumentManager::openFile(const QString& path) {
   return true;
 }
 
-void DocumentManager::startLoad(const QString& path) {
+void DocumentManager::startLoad(const QString& path, const QString& detailsFor) {
   if (loadWatcher_.isRunning()) loadWatcher_.waitForFinished();
   loadInFlight_ = true;
   // A plain file's stock: its own Job details, else inferred; never the last file's.
   const core::io::JobHeader defaults = settings_->lastJobHeader();
-  const std::optional<core::io::JobHeader> details = settings_->jobDetailsFor(path);
+  const std::optional<core::io::JobHeader> details =
+      detailsFor.isEmpty() && restoring_ ? std::nullopt : settings_->jobDetailsFor(detailsFor.isEmpty() ? path : detailsFor);
   const LoadContext context = context_();
   loadWatcher_.setFuture(QtConcurrent::run([path, defaults, details, context] {
     return Document::load(path, defaults, details, context.setup, context.run);
@@ -110,9 +153,10 @@ void DocumentManager::startLoad(const QString& path) {
 }
 
 void DocumentManager::onLoadFinished() {
-  const LoadedProgram loaded = loadWatcher_.result();
+  LoadedProgram loaded = loadWatcher_.result();
   loadInFlight_ = false;
   if (!loaded.ok) {
+    restoring_.reset();
     emit busyChanged();
     QStringList lines;
     for (const auto& d : loaded.diagnostics)
@@ -124,7 +168,10 @@ void DocumentManager::onLoadFinished() {
     emit loadFailed(loaded.path);
     return;
   }
+  // A recovery copy becomes the program it belongs to (untitled when it had no file).
+  if (restoring_) loaded.path = restoring_->originalPath;
   emit aboutToReplace();
+  discardRecovery();
   if (!document_->filePath().isEmpty()) watcher_->removePath(document_->filePath());
   document_->adopt(loaded);
   editor_->setFirstFileLine(document_->gcodeFirstLine());
@@ -170,9 +217,19 @@ void DocumentManager::finishLoad() {
   loadInFlight_ = false;
   editor_->setUndoRedoEnabled(true);
   editor_->setReadOnly(false);
-  editor_->document()->setModified(false);
   editor_->moveCursor(QTextCursor::Start);
-  rememberFile();
+  if (restoring_) {
+    // Unsaved work again, as it was: modified until the user saves it.
+    recovery_.remove(restoring_->id);
+    restoring_.reset();
+    editor_->document()->setModified(true);
+    ++revision_;
+    if (!document_->filePath().isEmpty()) watchFile(document_->filePath());
+    autosave();  // this window's own copy from now on
+  } else {
+    editor_->document()->setModified(false);
+    rememberFile();
+  }
   emit loaded(document_->filePath(), loadedText);
 }
 
@@ -232,6 +289,7 @@ bool DocumentManager::saveFile(const QString& path) {
   }
   editor_->document()->setModified(false);
   rememberFile();
+  discardRecovery();
   emit modificationChanged();
   emit saved(document_->filePath());
   return true;

@@ -9,8 +9,10 @@
 #include <QObject>
 #include <QString>
 #include <functional>
+#include <optional>
 
 #include "gui/document.h"
+#include "gui/recovery.h"
 
 class QFileSystemWatcher;
 class QMenu;
@@ -52,6 +54,17 @@ class DocumentManager : public QObject {
   // Fills File > Recent Files.
   void fillRecentMenu(QMenu* menu);
 
+  // Autosave (recovery.h): writes the unsaved program to the recovery folder
+  // now if it changed since the last copy; removes the copy when nothing is unsaved.
+  void autosave();
+  // The window closes or drops its changes: no copy is left behind.
+  void discardRecovery();
+  const Recovery& recovery() const { return recovery_; }
+  QString sessionId() const { return sessionId_; }
+  // Opens a copy a crash left behind as the program it belongs to (modified,
+  // not saved); the copy is removed once it is in the editor.
+  void restoreRecovery(const RecoveryCopy& copy);
+
  signals:
   // The editor is about to get another program (stop the run, clear alarms).
   void aboutToReplace();
@@ -61,11 +74,12 @@ class DocumentManager : public QObject {
   void loaded(const QString& path, const QString& text);
   void loadFailed(const QString& path);
   void saved(const QString& path);
+  void autosaveFailed(const QString& error);
   void modificationChanged();
   void busyChanged();
 
  private:
-  void startLoad(const QString& path);
+  void startLoad(const QString& path, const QString& detailsFor = {});
   void onLoadFinished();
   void appendNextChunk();
   void finishLoad();
@@ -86,6 +100,13 @@ class DocumentManager : public QObject {
   bool fillingEditor_ = false;
   bool loadInFlight_ = false;
   quint64 fillGeneration_ = 0;
+  Recovery recovery_;
+  QString sessionId_ = Recovery::newId();
+  QTimer* autosaveTimer_;
+  quint64 revision_ = 0;           // counts edits of the text and the header
+  quint64 autosavedRevision_ = 0;  // the revision the recovery copy holds
+  bool hasRecoveryCopy_ = false;
+  std::optional<RecoveryCopy> restoring_;  // a recovery copy being loaded
 };
 
 }  // namespace klueng::gui

@@ -2,6 +2,7 @@
 
 #include <QAction>
 #include <QActionGroup>
+#include <QApplication>
 #include <QCloseEvent>
 #include <QDir>
 #include <QFileInfo>
@@ -34,6 +35,7 @@
 #include "gui/language.h"
 #include "gui/offset_define_dialog.h"
 #include "gui/output_view.h"
+#include "gui/recovery_bar.h"
 #include "gui/report_controller.h"
 #include "gui/run_speed_control.h"
 #include "gui/settings.h"
@@ -98,6 +100,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   editorLayout->setContentsMargins(0, 0, 0, 0);
   editorLayout->setSpacing(0);
   editorLayout->addWidget(banner_);
+  recoveryBar_ = new RecoveryBar(this);
+  editorLayout->addWidget(recoveryBar_);
   dialectOffer_ = new DialectOfferBar(this);
   connect(dialectOffer_, &DialectOfferBar::switchRequested, this, &MainWindow::setDialect);
   editorLayout->addWidget(dialectOffer_);
@@ -196,6 +200,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   restoreLayout();
   newFile();
   onRunStateChanged(RunState::Idle);
+  // Unsaved work a crash, a kill or a power cut left behind (issue 13).
+  recoveryBar_->offer(docs_->recovery().orphans());
 }
 
 MainWindow::~MainWindow() {
@@ -229,6 +235,16 @@ void MainWindow::connectDocuments() {
     updateTitle();
     checker_->checkText(text);  // the text just loaded: no need to read it back from the editor
     emit fileLoaded(path);
+  });
+  connect(recoveryBar_, &RecoveryBar::restoreRequested, docs_, &DocumentManager::restoreRecovery);
+  connect(recoveryBar_, &RecoveryBar::discardRequested, this,
+          [this](const RecoveryCopy& copy) { docs_->recovery().remove(copy.id); });
+  connect(docs_, &DocumentManager::autosaveFailed, this, [this](const QString& error) {
+    statusBar()->showMessage(tr("Autosave failed: %1").arg(error), 5000);
+  });
+  // Losing the focus (another program, a locked screen) writes the copy at once.
+  connect(qApp, &QGuiApplication::applicationStateChanged, this, [this](Qt::ApplicationState state) {
+    if (state != Qt::ApplicationActive) docs_->autosave();
   });
   connect(docs_, &DocumentManager::saved, this, [this](const QString& path) {
     updateTitle();
@@ -289,6 +305,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     event->ignore();
     return;
   }
+  docs_->discardRecovery();  // saved or discarded: nothing to recover
   runner_->stop();
   saveLayout();
   event->accept();

@@ -60,6 +60,8 @@ class MainWindow : public QMainWindow {
   CodeEditor* editor() const { return editor_; }
   DiagnosticsPanel* diagnosticsPanel() const { return diagnostics_; }
   Document* document() const { return document_; }
+  class DocumentManager* documentManager() const { return docs_; }
+  class RecoveryBar* recoveryBar() const { return recoveryBar_; }
   QUndoStack* setupUndoStack() const { return setupUndo_; }
   RunController* runController() const { return runner_; }
   class FlowPanel* flowPanel() const { return flow_; }
@@ -165,6 +167,7 @@ class MainWindow : public QMainWindow {
   QSplitter* splitter_ = nullptr;
   class Banner* banner_ = nullptr;
   DialectOfferBar* dialectOffer_ = nullptr;
+  class RecoveryBar* recoveryBar_ = nullptr;
   QLabel* stockLabel_ = nullptr;
   QProgressBar* busyBar_ = nullptr;
   QPointer<FindDialog> findDialog_;

@@ -1,5 +1,7 @@
 #include "gui/settings.h"
 
+#include <algorithm>
+
 #include <QCryptographicHash>
 #include <QFileInfo>
 
@@ -141,5 +143,12 @@ void Settings::setBlockSkip(bool on) { settings_.setValue(key("run/blockSkip"), 
 
 QString Settings::lastDirectory() const { return settings_.value(key("files/lastDirectory")).toString(); }
 void Settings::setLastDirectory(const QString& dir) { settings_.setValue(key("files/lastDirectory"), dir); }
+
+int Settings::autosaveSeconds() const {
+  bool ok = false;
+  const int s = settings_.value(key("files/autosaveSeconds"), 30).toInt(&ok);
+  return ok ? std::clamp(s, 1, 3600) : 30;
+}
+void Settings::setAutosaveSeconds(int seconds) { settings_.setValue(key("files/autosaveSeconds"), seconds); }
 
 }  // namespace klueng::gui

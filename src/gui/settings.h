@@ -58,6 +58,10 @@ class Settings {
   QString lastDirectory() const;
   void setLastDirectory(const QString& dir);
 
+  // How often unsaved work goes to the recovery folder (1..3600 s, default 30).
+  int autosaveSeconds() const;
+  void setAutosaveSeconds(int seconds);
+
  private:
   mutable QSettings settings_;
 };
