@@ -1198,8 +1198,8 @@
 <context>
     <name>klueng::gui::RecoveryBar</name>
     <message>
-        <source>&amp;Restore</source>
-        <translation>กู้คืน (&amp;R)</translation>
+        <source>Rest&amp;ore</source>
+        <translation>กู้คืน (&amp;O)</translation>
     </message>
     <message>
         <source>Co&amp;mpare</source>

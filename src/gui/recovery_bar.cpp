@@ -104,7 +104,7 @@ void RecoveryBar::changeEvent(QEvent* event) {
 }
 
 void RecoveryBar::retranslate() {
-  restore_->setText(tr("&Restore"));
+  restore_->setText(tr("Rest&ore"));
   compare_->setText(tr("Co&mpare"));
   discard_->setText(tr("Dis&card"));
   if (copies_.isEmpty()) {
