@@ -10,6 +10,7 @@ packages=(
   libeigen3-dev libfmt-dev libpng-dev
   libgtest-dev libgmock-dev googletest libbenchmark-dev
   fonts-thai-tlwg xvfb xauth x11-apps poppler-utils
+  desktop-file-utils shared-mime-info dpkg-dev file
 )
 
 missing=()

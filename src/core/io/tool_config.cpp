@@ -483,7 +483,25 @@ std::string formatMachineConfig(const MachineConfig& m) {
 
 // ---------------------------------------------------------------- folders
 
-std::string shippedConfigDir() { return KLUENG_SHIPPED_DATA_DIR; }
+std::string installedDataDir(const std::string& executable) {
+  if (executable.empty()) return {};
+  // <prefix>/bin/klueng -> <prefix>/share/klueng
+  const fs::path share = fs::path(executable).parent_path().parent_path() / "share" / "klueng";
+  std::error_code ec;
+  return fs::is_regular_file(share / "tools.cfg", ec) ? share.string() : std::string();
+}
+
+std::string shippedConfigDir() {
+  // An installed Klueng finds its data beside its own bin/ (a package unpacked
+  // anywhere works); only a program run from the build tree uses the sources.
+  static const std::string dir = [] {
+    std::error_code ec;
+    const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+    const std::string installed = ec ? std::string() : installedDataDir(self.string());
+    return installed.empty() ? std::string(KLUENG_SHIPPED_DATA_DIR) : installed;
+  }();
+  return dir;
+}
 
 std::string userConfigDir() {
   if (const char* xdg = std::getenv("XDG_DATA_HOME"); xdg && *xdg && fs::path(xdg).is_absolute())

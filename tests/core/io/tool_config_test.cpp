@@ -380,6 +380,16 @@ TEST(ConfigDir, ExplicitThenEnvironmentThenUserCopyThenShipped) {
   EXPECT_EQ(findConfigDir(), user + "/klueng");
 }
 
+TEST(ConfigDir, AnInstalledProgramFindsShareKluengBesideItsBin) {
+  TempDir dir;
+  const std::string exe = dir.file("usr/bin/klueng-cli");
+  writeFile(exe, "");
+  EXPECT_EQ(installedDataDir(exe), "");  // no share/klueng/tools.cfg: not an installed tree
+  writeFile(dir.file("usr/share/klueng/tools.cfg"), "\n");
+  EXPECT_TRUE(std::filesystem::equivalent(installedDataDir(exe), dir.file("usr/share/klueng")));
+  EXPECT_EQ(installedDataDir(""), "");
+}
+
 TEST(ConfigDir, UserConfigFallsBackToHome) {
   ScopedEnv xdg("XDG_DATA_HOME", std::nullopt);
   ScopedEnv home("HOME", std::string("/home/somchai"));

@@ -121,8 +121,12 @@ std::string findConfigDir(const std::string& explicitDir = {});
 
 // $XDG_DATA_HOME/klueng, or ~/.local/share/klueng; empty when neither is known.
 std::string userConfigDir();
-// The folder of the shipped defaults (the repository top in a build tree).
+// The folder of the shipped defaults: <prefix>/share/klueng beside the running
+// program's bin/ when installed, the repository top in a build tree.
 std::string shippedConfigDir();
+// <prefix>/share/klueng for a program at <prefix>/bin/NAME, when it holds a
+// tools.cfg; empty otherwise.
+std::string installedDataDir(const std::string& executable);
 // Creates the per-user copy from the shipped defaults (cfg files and the
 // bitmaps tools.cfg names), copying only what is missing, so a read-only
 // install still has a writable tool table. Returns the folder, or empty and
