@@ -7,8 +7,9 @@
 // gets a note saying where its stock comes from (--stock, or inferred). Tools
 // the program names in comments or cycles come from the library (a note says
 // which; --tool N=ID sets a station for this run); T words naming stations
-// still without a tool are E305. Exit 0 = no errors, 1 = errors,
-// 2 = a file could not be read or the command line is wrong.
+// still without a tool are E305. Exit 0 = no errors, 1 = errors in a program,
+// 2 = a file could not be read, a setup file (machine.cfg, tools.cfg,
+// offset.cfg, a tool bitmap) has errors, or the command line is wrong.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -179,8 +180,9 @@ int runCheck(const std::vector<std::string>& args) {
   if (!request) return usageError(error);
 
   std::vector<FileDiagnostic> all = config.diagnostics;
-  bool anyError = config.hasErrors();
-  bool anyUnreadable = config.unreadable;
+  bool anyError = false;
+  // A setup file that cannot be read or holds a wrong value is the machine's fault, not the program's: exit 2.
+  bool anyUnreadable = config.unreadable || config.hasErrors();
   std::vector<FileSummary> summary;
   std::vector<FileDiagnostic> notes;  // each file's tool choices and where its stock comes from
 

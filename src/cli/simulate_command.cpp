@@ -188,8 +188,7 @@ int runSimulate(const std::vector<std::string>& args) {
   // The machine files first: the checker needs to know which tools have a bitmap.
   const LoadedConfig config = loadConfig(o.configDir);
   for (const auto& fd : config.diagnostics) printDiagnostic(fd.file, fd.diagnostic, o.lang);
-  if (config.unreadable) return 2;
-  if (config.hasErrors()) return 1;
+  if (config.unreadable || config.hasErrors()) return 2;  // the setup, not the program, is wrong
   std::string error;
   const std::optional<machine::JobFileRequest> request =
       jobRequest(config, o.dialect, o.powerOnUnits, o.stock, o.tools, error);

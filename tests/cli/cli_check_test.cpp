@@ -548,7 +548,7 @@ TEST(CliConfig, ToolsCfgWithMissingLinesLeavesToolsWithoutBitmap) {
                                           "resources/tools/03-threading-60.bmp\n"}});
   const std::string program = dir.write("t4.nc", "O0001\nT0101\nT0404\nM30\n");
   const CliRun run = runCli("check --config " + quote(config) + " " + quote(program));
-  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_EQ(run.exitCode, 2);  // the setup has errors (issue 13: exit 2, not 1)
   EXPECT_THAT(run.out, HasSubstr(config + "/tools.cfg:3:1: error F120: "));
   EXPECT_THAT(run.out, HasSubstr("tools 04 to 08 have no bitmap"));
   EXPECT_THAT(run.out, HasSubstr(program + ":3:1: error E305: "));  // T0404: no bitmap
@@ -561,7 +561,7 @@ TEST(CliConfig, ToolsCfgGarbageLineAndMissingBitmap) {
   for (int i = 4; i <= 8; ++i) tools += "\n";
   const std::string config = dir.config({{"tools.cfg", tools}});
   const CliRun run = runCli("check --config " + quote(config) + " " + quote(kSamples + "/02-thread.txt"));
-  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_EQ(run.exitCode, 2);  // the setup has errors (issue 13: exit 2, not 1)
   EXPECT_THAT(run.out, HasSubstr(config + "/tools.cfg:2:1: error F122: "));
   EXPECT_THAT(run.out, HasSubstr(config + "/tools.cfg:3:1: error F121: "));
   // Sample 02 uses T0303, whose bitmap is gone.
@@ -575,7 +575,7 @@ TEST(CliConfig, OffsetCfgGarbageAndExtraLines) {
   offsets += "this line is too many\n";
   const std::string config = dir.config({{"offset.cfg", offsets}});
   const CliRun run = runCli("check --config " + quote(config) + " " + quote(kSamples + "/01-step-shaft.txt"));
-  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_EQ(run.exitCode, 2);  // the setup has errors (issue 13: exit 2, not 1)
   const std::string cfg = config + "/offset.cfg";
   EXPECT_THAT(run.out, HasSubstr(cfg + ":2:5: error F133: " + cfg + ": offset 02: 'abc' is not a number"));
   EXPECT_THAT(run.out, HasSubstr(cfg + ":3:9: error F132: "));
@@ -596,7 +596,7 @@ TEST(CliConfig, OffsetCfgMissingLines) {
   TempDir dir;
   const std::string config = dir.config({{"offset.cfg", "0 0 0.8 3\n"}});
   const CliRun run = runCli("check --config " + quote(config) + " " + quote(kSamples + "/01-step-shaft.txt"));
-  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_EQ(run.exitCode, 2);  // the setup has errors (issue 13: exit 2, not 1)
   EXPECT_THAT(run.out, HasSubstr(config + "/offset.cfg:1:1: error F130: "));
 }
 
@@ -604,7 +604,7 @@ TEST(CliConfig, MachineCfgUnknownKeyAndBadValue) {
   TempDir dir;
   const std::string config = dir.config({{"machine.cfg", "rapid_x = 4000\nturbo = 1\nrapid_z = fast\n"}});
   const CliRun run = runCli("check --config " + quote(config) + " " + quote(kSamples + "/01-step-shaft.txt"));
-  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_EQ(run.exitCode, 2);  // the setup has errors (issue 13: exit 2, not 1)
   EXPECT_THAT(run.out, HasSubstr(config + "/machine.cfg:2:1: error F141: "));
   EXPECT_THAT(run.out, HasSubstr(config + "/machine.cfg:3:11: error F142: "));
 }
@@ -629,7 +629,7 @@ TEST(CliConfig, DamagedBitmapIsReportedAndItsToolHasNoBitmap) {
   TempDir dir;
   const std::string config = dir.config({{"resources/tools/01-outside-turning.bmp", "BM this is not a bitmap"}});
   const CliRun run = runCli("check --config " + quote(config) + " " + quote(kSamples + "/01-step-shaft.txt"));
-  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_EQ(run.exitCode, 2);  // the setup has errors (issue 13: exit 2, not 1)
   EXPECT_THAT(run.out, HasSubstr("01-outside-turning.bmp: error F15"));
   EXPECT_THAT(run.out, HasSubstr("01-step-shaft.txt:10:5: error E305"));  // N20 T0101
 }
@@ -638,7 +638,7 @@ TEST(CliConfig, BinaryConfigFileDoesNotCrash) {
   TempDir dir;
   const std::string config = dir.config({{"offset.cfg", std::string("\x01\x02\x00\xFF", 4)}});
   const CliRun run = runCli("check --config " + quote(config) + " " + quote(kSamples + "/01-step-shaft.txt"));
-  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_EQ(run.exitCode, 2);  // the setup has errors (issue 13: exit 2, not 1)
   EXPECT_THAT(run.out, HasSubstr("error F104"));
 }
 
