@@ -71,6 +71,8 @@ constexpr MessageText kMessages[] = {
      "'{0}' ไม่ใช่คำสั่งมาโครที่ถูกต้อง: ต้องเขียนเป็น #i = ค่า"},
     {"E132", "{0}: chamfer ,C, corner ,R and angle ,A belong to a G01 block",
      "{0}: การลบมุม ,C การมนมุม ,R และมุม ,A ใช้ได้เฉพาะในบล็อก G01"},
+    {"E134", "{0}{1}: a G-code number has no exponent (E): write the value of {0}{1} in digits with a decimal point",
+     "{0}{1}: ตัวเลขในจีโค้ดเขียนแบบยกกำลัง (E) ไม่ได้: ให้เขียนค่าของ {0}{1} เป็นตัวเลขพร้อมจุดทศนิยม"},
     {"E133", "{0} and {1} in one block: a corner is either a chamfer or a radius",
      "{0} และ {1} อยู่ในบล็อกเดียวกัน: มุมหนึ่งเป็นได้เพียงการลบมุมหรือการมนมุมอย่างใดอย่างหนึ่ง"},
     {"E199", "more than {0} errors; the rest of the program is not checked",

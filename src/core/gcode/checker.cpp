@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cstdint>
 #include <string>
 
@@ -139,6 +140,16 @@ class Checker {
         continue;  // an argument: any value
       }
       if (!allowed(l)) {
+        // X1e9, Z2.5E-3: a number written with an exponent reads as two words; say so.
+        const Word* before = i > 0 ? &block.words[static_cast<std::size_t>(i - 1)] : nullptr;
+        if (l == 'E' && before && before->expr < 0 && !before->comma && before->range.line == w.range.line &&
+            before->range.column + before->range.length == w.range.column && !before->number.empty() &&
+            (std::isdigit(static_cast<unsigned char>(before->number.back())) != 0 || before->number.back() == '.')) {
+          SourceRange both = before->range;
+          both.length = before->range.length + w.range.length;
+          emit(codes::kExponentNumber, both, {wordText(*before), wordText(w)});
+          continue;
+        }
         emit(codes::kLetterNotAllowed, w, {wordText(w), std::string(1, l), letters_});
         continue;
       }

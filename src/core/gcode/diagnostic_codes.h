@@ -40,6 +40,7 @@ inline constexpr const char* kBadLoopNumber = "E130";         // {0}=number
 inline constexpr const char* kExpectedAssignment = "E131";    // {0}=text
 inline constexpr const char* kCornerNotOnG01 = "E132";        // {0}=word
 inline constexpr const char* kChamferAndCorner = "E133";      // {0}=first {1}=second
+inline constexpr const char* kExponentNumber = "E134";        // {0}=the word before {1}=the E word
 inline constexpr const char* kTooManyDiagnostics = "E199";  // {0}=limit
 
 // E2nn block rule nn of SPEC 5 (E213, stock size, belongs to the io module)
@@ -113,6 +114,7 @@ inline constexpr const char* kAll[] = {
     kExpectedAssignment,
     kCornerNotOnG01,
     kChamferAndCorner,
+    kExponentNumber,
     kDoWithoutEnd,
     kEndWithoutDo,
     kGotoNowhere,

@@ -433,6 +433,10 @@ ReadResult<MachineConfig> parseMachineConfig(std::string_view text, const std::s
     else config.*(entry->count) = static_cast<int>(*number);
   }
 
+  // An empty machine.cfg (or only comments) is not what anyone meant to write: say the defaults apply.
+  if (lineOfKey.empty() && !hasErrors(diags))
+    diags.push_back(makeDiagnostic(Severity::Warning, "F137", 0, 0, 0, {fileName}));
+
   const auto checkRange = [&](const char* minKey, double MachineConfig::*min, const char* maxKey,
                               double MachineConfig::*max) {
     if (config.*min < config.*max) return;

@@ -286,6 +286,25 @@ TEST(Checker, StopAtFirstErrorAnswersOnlyWhetherTheProgramIsAccepted) {
   EXPECT_TRUE(check(parse("G00 X10. Z2.\nM30", 1), options).empty());
 }
 
+TEST(Checker, ANumberWithAnExponentIsNamedAsOne) {
+  // X1e9 reads as X1 and E9: not "E is not a lathe word" but what was meant.
+  const auto diags = checkText("G00 X1e9 Z2.\nG01 Z2.5E-3 F0.2\nG00 X20.E3", Dialect::Fanuc);
+  ASSERT_EQ(diags.size(), 3u) << listing(diags);
+  EXPECT_EQ(diags[0].code, "E134");
+  EXPECT_EQ(diags[0].range.line, 1);
+  EXPECT_EQ(diags[0].range.column, 5);
+  EXPECT_EQ(diags[0].range.length, 4);  // X1e9
+  EXPECT_EQ(formatMessage(diags[0], Lang::En),
+            "X1E9: a G-code number has no exponent (E): write the value of X1E9 in digits with a decimal point");
+  EXPECT_EQ(diags[1].code, "E134");
+  EXPECT_EQ(diags[1].range.column, 5);  // Z2.5E-3
+  EXPECT_EQ(diags[2].code, "E134");
+  // A lone E with a space before it is still just a letter the lathe does not know.
+  const auto lone = checkText("G00 X1. E9", Dialect::Fanuc);
+  ASSERT_EQ(lone.size(), 1u);
+  EXPECT_EQ(lone[0].code, "E201");
+}
+
 TEST(Checker, MessagesNameTheWordAndSayHowToFixIt) {
   const auto diags = checkText("G01 X30. U2.", Dialect::Fanuc);
   ASSERT_EQ(diags.size(), 1u);

@@ -29,6 +29,19 @@ TEST(MachineConfigKeys, ReadAndWritten) {
   EXPECT_DOUBLE_EQ(parseMachineConfig("spindle_bore = 0\n", "m.cfg").value->spindleBore, 0.0);
 }
 
+TEST(MachineConfigKeys, AnEmptyFileSaysTheDefaultsApply) {
+  for (const char* text : {"", "\n\n", "# only a comment\n   \n"}) {
+    const auto r = parseMachineConfig(text, "m.cfg");
+    ASSERT_TRUE(r.ok()) << text;  // the defaults are still a machine
+    ASSERT_EQ(r.diagnostics.size(), 1u) << text;
+    EXPECT_EQ(r.diagnostics[0].code, "F137");
+    EXPECT_EQ(r.diagnostics[0].severity, Severity::Warning);
+    EXPECT_EQ(formatMessage(r.diagnostics[0], Lang::En), "m.cfg: sets no machine parameter: every parameter keeps its default (SPEC 1)");
+    EXPECT_DOUBLE_EQ(r.value->rapidX, MachineConfig{}.rapidX);
+  }
+  EXPECT_TRUE(parseMachineConfig("rapid_x = 3000\n", "m.cfg").diagnostics.empty());
+}
+
 TEST(MachineConfigKeys, BadValues) {
   const auto neg = parseMachineConfig("spindle_bore = -1\n", "m.cfg");
   ASSERT_EQ(neg.diagnostics.size(), 1u);
