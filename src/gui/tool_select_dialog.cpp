@@ -13,6 +13,7 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMessageBox>
+#include <QTemporaryFile>
 #include <QPainter>
 #include <QPushButton>
 #include <QSpinBox>
@@ -28,13 +29,22 @@ namespace klueng::gui {
 
 namespace io = core::io;
 
+// Tried, not asked: access() (behind QFileInfo::isWritable) answers for the real user, and
+// root or a read-only mount would be told "writable" where the save then fails.
+static bool canWriteIn(const QString& dir) {
+  QTemporaryFile probe(QDir(dir).filePath(QStringLiteral(".klueng-write-test-XXXXXX")));
+  return probe.open();
+}
+
+static bool canWriteFile(const QString& path) {
+  QFile f(path);
+  return !f.exists() || f.open(QIODevice::ReadWrite | QIODevice::Append);
+}
+
 QString writableConfigDir(const QString& dir, QString* error) {
-  const QFileInfo dirInfo(dir);
-  bool writable = dirInfo.isDir() && dirInfo.isWritable();
-  for (const char* name : {"tools.cfg", "offset.cfg"}) {
-    const QFileInfo f(QDir(dir).filePath(QString::fromLatin1(name)));
-    if (f.exists() && !f.isWritable()) writable = false;
-  }
+  bool writable = QFileInfo(dir).isDir() && canWriteIn(dir);
+  for (const char* name : {"tools.cfg", "offset.cfg"})
+    if (writable && !canWriteFile(QDir(dir).filePath(QString::fromLatin1(name)))) writable = false;
   if (writable) return dir;
   std::string err;
   const std::string user = io::ensureUserConfigDir(&err);

@@ -8,6 +8,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "fresh_user_folders.h"
 #include "gui/dialect_offer_bar.h"
 #include "gui/document.h"
 #include "gui/language.h"
@@ -39,7 +40,7 @@ class DialectOfferTest : public QObject {
   Q_OBJECT
  private slots:
   void initTestCase() {
-    QStandardPaths::setTestModeEnabled(true);
+    klueng::test::freshUserFolders();
     initResources();
   }
 

@@ -95,17 +95,55 @@ class DialogsTest : public QObject {
   }
 
   void toolSelectWritesAPerUserCopyWhenTheFolderIsReadOnly() {
-    if (::geteuid() == 0) QSKIP("running as root: a read-only folder is still writable");
+    // A shared folder the user may read but not write (/usr/share/klueng). Root may write
+    // anything, so as root the dialog runs as the user "nobody" (seteuid) against a folder
+    // that nobody may write: the same test as root and as a normal user, never skipped.
     QTemporaryDir dir;
+    QTemporaryDir home;
     QVERIFY(makeConfigCopy(dir.path()));
-    QFile(dir.filePath(QStringLiteral("tools.cfg"))).setPermissions(QFileDevice::ReadOwner);
-    ToolSelectDialog d(dir.path());
-    d.setBitmapName(4, QStringLiteral("resources/tools/01-outside-turning.bmp"));
-    d.accept();
-    QCOMPARE(d.result(), int(QDialog::Accepted));
-    QVERIFY(d.savedConfigDir() != dir.path());
-    const auto saved = core::io::readToolTable(d.savedConfigDir().toStdString() + "/tools.cfg");
+    const QFileDevice::Permissions readable = QFileDevice::ReadOwner | QFileDevice::ReadGroup | QFileDevice::ReadOther;
+    QFile(dir.filePath(QStringLiteral("tools.cfg"))).setPermissions(readable);
+    QFile(dir.filePath(QStringLiteral("offset.cfg"))).setPermissions(readable);
+    const QFileDevice::Permissions listable = readable | QFileDevice::ExeOwner | QFileDevice::ExeGroup |
+                                              QFileDevice::ExeOther;
+    QFile(dir.path()).setPermissions(listable);
+    QFile(dir.filePath(QStringLiteral("resources"))).setPermissions(listable);
+    QFile(dir.filePath(QStringLiteral("resources/tools"))).setPermissions(listable);
+    for (const QString& bmp : QDir(dir.filePath(QStringLiteral("resources/tools"))).entryList({QStringLiteral("*.bmp")}))
+      QFile(dir.filePath(QStringLiteral("resources/tools/") + bmp)).setPermissions(readable);
+    QFile(home.path()).setPermissions(listable | QFileDevice::WriteOwner | QFileDevice::WriteGroup |
+                                      QFileDevice::WriteOther);
+    const QByteArray oldHome = qgetenv("XDG_DATA_HOME");
+    qputenv("XDG_DATA_HOME", home.path().toUtf8());
+    const bool root = ::geteuid() == 0;
+    if (root) QCOMPARE(::seteuid(65534), 0);
+    QString savedDir;
+    bool accepted = false;
+    QString modalText;  // a message box would block the test: record and close it
+    QTimer closer;
+    QObject::connect(&closer, &QTimer::timeout, [&] {
+      if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+        modalText = box->text();
+        box->reject();
+      }
+    });
+    closer.start(50);
+    {
+      ToolSelectDialog d(dir.path());
+      d.setBitmapName(4, QStringLiteral("resources/tools/01-outside-turning.bmp"));
+      d.accept();
+      accepted = d.result() == QDialog::Accepted;
+      savedDir = d.savedConfigDir();
+    }
+    if (root) QCOMPARE(::seteuid(0), 0);
+    qputenv("XDG_DATA_HOME", oldHome);
+    QVERIFY2(modalText.isEmpty(), qPrintable(modalText));
+    QVERIFY(accepted);
+    QVERIFY(savedDir != dir.path());
+    QVERIFY2(savedDir.startsWith(home.path()), qPrintable(savedDir));
+    const auto saved = core::io::readToolTable(savedDir.toStdString() + "/tools.cfg");
     QVERIFY(saved.ok());
+    QCOMPARE(QString::fromStdString(saved.value->bitmap[3]), QStringLiteral("resources/tools/01-outside-turning.bmp"));
   }
 
   void offsetDefineRoundTripsOffsetCfg() {

@@ -13,6 +13,7 @@
 #include <QTextBlock>
 #include <QTreeWidget>
 
+#include "fresh_user_folders.h"
 #include "gui/code_editor.h"
 #include "gui/diagnostics_panel.h"
 #include "gui/flow_panel.h"
@@ -55,7 +56,7 @@ class FlowPanelTest : public QObject {
   Q_OBJECT
  private slots:
   void initTestCase() {
-    QStandardPaths::setTestModeEnabled(true);
+    klueng::test::freshUserFolders();
     initResources();
   }
 

@@ -11,6 +11,7 @@
 #include <QTextBlock>
 #include <QTimer>
 
+#include "fresh_user_folders.h"
 #include "../../bench/program_generator.h"
 #include "gui/code_editor.h"
 #include "gui/diagnostics_panel.h"
@@ -23,7 +24,7 @@ class LargeProgramTest : public QObject {
   Q_OBJECT
  private slots:
   void initTestCase() {
-    QStandardPaths::setTestModeEnabled(true);
+    klueng::test::freshUserFolders();
     initResources();
   }
 

@@ -18,6 +18,7 @@
 #include <QTextBlock>
 #include <QTimer>
 
+#include "fresh_user_folders.h"
 #include "gui/code_editor.h"
 #include "gui/diagnostics_panel.h"
 #include "gui/find_dialog.h"
@@ -85,7 +86,7 @@ class MainWindowTest : public QObject {
   Q_OBJECT
  private slots:
   void initTestCase() {
-    QStandardPaths::setTestModeEnabled(true);
+    klueng::test::freshUserFolders();
     initResources();
   }
   void init() {

@@ -20,6 +20,7 @@
 #include <QTimer>
 #include <QToolBar>
 
+#include "fresh_user_folders.h"
 #include "gui/language.h"
 #include "gui/main_window.h"
 #include "gui/resources.h"
@@ -109,7 +110,8 @@ class ReportTest : public QObject {
  private slots:
   void initTestCase() {
     QVERIFY(dir_.isValid());
-    if (!havePoppler()) QSKIP("poppler-utils (pdftotext) not installed");
+    // Never a silent skip: the reports are read back from the PDF with pdftotext.
+    if (!havePoppler()) QFAIL("poppler-utils (pdftotext) is missing: scripts/setup.sh installs it");
   }
 
   void datesInBothLanguages() {
@@ -310,7 +312,7 @@ class ReportTest : public QObject {
   // File > Export PDF of the main window: program sheet then the drawing (landscape),
   // in the UI's language; the actions are in the File menu and Print on the tool bar.
   void mainWindowExportsBothSheetsInTheUiLanguage() {
-    QStandardPaths::setTestModeEnabled(true);
+    klueng::test::freshUserFolders();
     gui::initResources();
     gui::Language::instance()->setLanguage(QStringLiteral("en"));
     gui::MainWindow w;
@@ -353,7 +355,7 @@ class ReportTest : public QObject {
 
   // File > Print Preview lays out both sheets: the program sheet, then the drawing.
   void printPreviewShowsBothSheets() {
-    QStandardPaths::setTestModeEnabled(true);
+    klueng::test::freshUserFolders();
     gui::initResources();
     gui::MainWindow w;
     w.show();

@@ -12,6 +12,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "fresh_user_folders.h"
 #include "gui/document.h"
 #include "gui/job_details_dialog.h"
 #include "gui/language.h"
@@ -54,7 +55,7 @@ class StockSourceTest : public QObject {
   Q_OBJECT
  private slots:
   void initTestCase() {
-    QStandardPaths::setTestModeEnabled(true);
+    klueng::test::freshUserFolders();
     initResources();
   }
   void init() {

@@ -10,6 +10,7 @@
 #include <QTest>
 #include <QTextBlock>
 
+#include "fresh_user_folders.h"
 #include "gui/code_editor.h"
 #include "gui/diagnostics_panel.h"
 #include "gui/language.h"
@@ -47,7 +48,7 @@ class StudentSessionTest : public QObject {
   Q_OBJECT
  private slots:
   void initTestCase() {
-    QStandardPaths::setTestModeEnabled(true);
+    klueng::test::freshUserFolders();
     initResources();
     QSettings(QStringLiteral("Klueng"), QStringLiteral("klueng")).clear();
   }
