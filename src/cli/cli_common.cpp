@@ -93,9 +93,7 @@ std::string formatNote(const std::string& file, const Diagnostic& d, Lang lang) 
 }
 
 std::string formatGccStyle(const std::string& file, const Diagnostic& d, Lang lang) {
-  std::string where = file;
-  if (d.range.line > 0) where += fmt::format(":{}:{}", d.range.line, std::max(d.range.column, 1));
-  return fmt::format("{}: {} {}: {}", where, severityName(d.severity, lang), d.code, formatMessage(d, lang));
+  return formatWithPlace(file, d, lang);
 }
 
 void printDiagnostic(std::FILE* out, const std::string& file, const Diagnostic& d, Lang lang) {

@@ -160,7 +160,8 @@ void DocumentManager::onLoadFinished() {
     emit busyChanged();
     QStringList lines;
     for (const auto& d : loaded.diagnostics)
-      lines << QString::fromStdString(core::formatMessage(d, Language::coreLang()));
+      lines << QString::fromStdString(
+          core::formatWithPlace(QFileInfo(loaded.path).fileName().toStdString(), d, Language::coreLang()));
     QMessageBox::warning(window_, tr("Cannot open the program"),
                          tr("\"%1\" could not be read.").arg(QDir::toNativeSeparators(loaded.path)) +
                              (lines.isEmpty() ? QString() : QStringLiteral("\n\n") + lines.join(QLatin1Char('\n'))));

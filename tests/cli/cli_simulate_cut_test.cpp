@@ -93,6 +93,26 @@ TEST(CliSimulateCut, Sample01WritesEveryOutput) {
   EXPECT_THAT(slurp(dxf), HasSubstr("ENTITIES"));
 }
 
+// A full disk (/dev/full) is reported, never taken for success; an existing output
+// file is replaced whole or not at all (written beside it, then renamed).
+TEST(CliSimulateCut, AFullDiskIsReportedAndAnOldOutputSurvives) {
+  const Result full = simulate("'" + kCutSamples + "/01-step-shaft.txt' --png /dev/full");
+  EXPECT_NE(full.exitCode, 0);
+  EXPECT_THAT(full.err, HasSubstr("/dev/full"));
+  EXPECT_THAT(full.err, HasSubstr("No space left on device"));
+  EXPECT_TRUE(fs::is_character_file("/dev/full"));
+
+  const fs::path png = scratch("kept.png");
+  { std::ofstream(png) << "old picture"; }
+  const Result bad = simulate("'" + kCutSamples + "/no-such-file.txt' --png '" + png.string() + "'");
+  EXPECT_NE(bad.exitCode, 0);
+  EXPECT_EQ(slurp(png), "old picture");
+  ASSERT_EQ(simulate("'" + kCutSamples + "/01-step-shaft.txt' --png '" + png.string() + "'").exitCode, 0);
+  EXPECT_EQ(slurp(png).substr(1, 3), "PNG");
+  for (const auto& e : fs::directory_iterator(png.parent_path()))
+    EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
+}
+
 TEST(CliSimulateCut, ResolutionSetsTheColumnWidth) {
   const fs::path csv = scratch("01-coarse.csv");
   ASSERT_EQ(simulate("'" + kCutSamples + "/01-step-shaft.txt' --resolution 0.5 --profile '" + csv.string() + "'").exitCode,

@@ -25,6 +25,9 @@ std::span<const MessageText> allMessages();
 const MessageText* findMessage(std::string_view code);
 // Text of the diagnostic in the language; an unknown code gives the code and args.
 std::string formatMessage(const Diagnostic& d, Lang lang);
+// GCC style, as the CLI prints it and the GUI shows it:
+// "file:line:column: error F104: text" (no line:column when the diagnostic has none).
+std::string formatWithPlace(std::string_view file, const Diagnostic& d, Lang lang);
 // "error", "warning", "alarm" / Thai equivalents.
 std::string_view severityName(Severity s, Lang lang);
 

@@ -32,6 +32,12 @@ const MessageText* findMessage(std::string_view code) {
   return it == index.end() ? nullptr : it->second;
 }
 
+std::string formatWithPlace(std::string_view file, const Diagnostic& d, Lang lang) {
+  std::string where(file);
+  if (d.range.line > 0) where += fmt::format(":{}:{}", d.range.line, std::max(d.range.column, 1));
+  return fmt::format("{}: {} {}: {}", where, severityName(d.severity, lang), d.code, formatMessage(d, lang));
+}
+
 std::string formatMessage(const Diagnostic& d, Lang lang) {
   const MessageText* t = findMessage(d.code);
   if (!t) {

@@ -1,3 +1,4 @@
+#include <cstring>
 #include "klueng/core/io/program_file.h"
 
 #include <gmock/gmock.h>
@@ -376,6 +377,36 @@ TEST(ProgramFile, AtomicWriteCreatesAndReplaces) {
   int files = 0;
   for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir.path())) ++files;
   EXPECT_EQ(files, 1);
+}
+
+// Saving through a link writes the file it names; the link stays a link.
+TEST(ProgramFile, AtomicWriteFollowsASymlink) {
+  TempDir dir;
+  const std::string real = dir.file("real.nc");
+  const std::string link = dir.file("link.nc");
+  std::string error;
+  ASSERT_TRUE(writeTextFileAtomic(real, "old\n", &error)) << error;
+  std::filesystem::create_symlink(real, link);
+  ASSERT_TRUE(writeTextFileAtomic(link, "new\n", &error)) << error;
+  EXPECT_TRUE(std::filesystem::is_symlink(link));
+  EXPECT_EQ(testing::readFile(real), "new\n");
+}
+
+// A device is written into, never renamed over: /dev/full reports a full disk
+// (and stays a device, even for root).
+TEST(ProgramFile, AtomicWriteToAFullDeviceFailsAndLeavesIt) {
+  ASSERT_TRUE(std::filesystem::is_character_file("/dev/full"));
+  std::string error;
+  EXPECT_FALSE(writeTextFileAtomic("/dev/full", "G21\n", &error));
+  EXPECT_NE(error.find(std::strerror(ENOSPC)), std::string::npos) << error;
+  EXPECT_TRUE(std::filesystem::is_character_file("/dev/full"));
+}
+
+TEST(ProgramFile, AtomicWriteRefusesAFolder) {
+  TempDir dir;
+  std::string error;
+  EXPECT_FALSE(writeTextFileAtomic(dir.path().string(), "x", &error));
+  EXPECT_NE(error.find("folder"), std::string::npos) << error;
 }
 
 TEST(ProgramFile, AtomicWriteFailsCleanlyInAMissingFolder) {
