@@ -1,0 +1,35 @@
+O0006
+N10 G21 G40 G97
+N15 G99
+N20 T0101 (outside turning tool, R0.8, tip 3)
+N30 G50 S2500
+N40 G96 S180 M03
+N50 G00 X54. Z2. M08
+N60 Z0.
+N70 G01 X-1.6 F0.2 (face)
+N80 G00 X50. Z2.
+N90 G71 U1.5 R0.5 (rough: 1.5 mm per side, retract 0.5 mm)
+N100 G71 P110 Q210 U0.4 W0.1 F0.25 (leave 0.4 mm on X, 0.1 mm on Z)
+N110 G00 X24.
+N120 G01 Z0. F0.1
+N130 X30. Z-3.
+N140 Z-20.
+N150 X36.
+N160 G03 X40. Z-22. R2.
+N170 G01 Z-40.
+N180 X44.
+N190 X46. Z-41.
+N200 Z-60.
+N210 X52.
+N220 G00 X100. Z100.
+N230 G42 G00 X50. Z2. (finish with nose radius compensation)
+N240 G70 P110 Q210
+N250 G40 G00 X100. Z100.
+N260 T0303 (60 degree threading tool, tip 8)
+N270 G97 S800 M03
+N280 G00 X32. Z5.
+N290 G76 P020060 Q50 R0.05 (2 finishing passes, 60 degrees, min. depth 0.05 mm)
+N300 G76 X28.16 Z-15. P920 Q300 F1.5 (M30x1.5 thread: height 0.92 mm, first cut 0.3 mm)
+N310 G00 X100. Z100. M09
+N320 M05
+N330 M30
