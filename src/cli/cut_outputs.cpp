@@ -51,6 +51,7 @@ CutOutcome runCut(const std::string& file, const io::JobHeader& header, const ma
   CutOutcome outcome;
   cut::CutOptions cutOptions;
   cutOptions.resolution = options.resolution;
+  cutOptions.checkpointBudgetBytes = 0;  // one run forward: no way back to keep stock copies for
   cut::CutSimulator sim(timeline, cut::CutSetup::from(header, setup), cutOptions);
   sim.runToEnd();
   outcome.alarm = sim.alarm();

@@ -161,7 +161,9 @@ CutSimulator::CutSimulator(const machine::Timeline& timeline, const CutSetup& se
   // 64 bytes a stock column (its interval, the vector holding it, its radius).
   const std::size_t stockBytes = 64u * static_cast<std::size_t>(std::max(1, stock_.columnCount())) + 256u;
   const std::size_t most = std::clamp<std::size_t>(options_.checkpointBudgetBytes / stockBytes, 1, 4096);
-  checkpointEvery_ = std::max<std::size_t>(64, timeline_->moves.size() / most + 1);
+  checkpointEvery_ = options_.checkpointBudgetBytes == 0
+                        ? std::numeric_limits<std::size_t>::max()  // no way back wanted (a batch run)
+                        : std::max<std::size_t>(64, timeline_->moves.size() / most + 1);
 }
 
 void CutSimulator::reset() {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "klueng/core/gcode/code_table.h"
@@ -18,6 +19,26 @@ bool startsProgram(const Block& b) {
 int wholeOr(double v, int fallback) {
   if (!(std::abs(v) < 1e9)) return fallback;
   return static_cast<int>(std::lround(v));
+}
+
+// Sequence numbers come in ascending runs (N1 .. N9999, then N1 again): merging
+// the runs costs n log(runs), a fraction of a full sort.
+void sortRuns(std::vector<std::pair<int, int>>& v) {
+  std::vector<std::size_t> starts{0};
+  for (std::size_t i = 1; i < v.size(); ++i)
+    if (v[i] < v[i - 1]) starts.push_back(i);
+  while (starts.size() > 1) {
+    std::vector<std::size_t> merged;
+    for (std::size_t r = 0; r < starts.size(); r += 2) {
+      merged.push_back(starts[r]);
+      if (r + 1 == starts.size()) break;
+      const std::size_t end = r + 2 < starts.size() ? starts[r + 2] : v.size();
+      std::inplace_merge(v.begin() + static_cast<std::ptrdiff_t>(starts[r]),
+                         v.begin() + static_cast<std::ptrdiff_t>(starts[r + 1]),
+                         v.begin() + static_cast<std::ptrdiff_t>(end));
+    }
+    starts = std::move(merged);
+  }
 }
 
 }  // namespace
@@ -42,9 +63,10 @@ ProgramIndex::ProgramIndex(const Program& program) {
     }
     sectionOfBlock_[static_cast<std::size_t>(i)] = static_cast<int>(sections_.size()) - 1;
     if (!b.words.empty() && b.words.front().letter == 'N' && b.words.front().expr < 0)
-      sequences_.back().emplace(b.words.front().code(), i);
+      sequences_.back().emplace_back(b.words.front().code(), i);
   }
   if (!sections_.empty()) sections_.back().end = n;
+  for (auto& numbers : sequences_) sortRuns(numbers);
   for (std::size_t s = 0; s < sections_.size(); ++s)
     if (sections_[s].number > 0) byNumber_.emplace(sections_[s].number, static_cast<int>(s));  // first one wins
 }
@@ -61,14 +83,13 @@ int ProgramIndex::sectionOf(int index) const {
 
 int ProgramIndex::findSequence(int section, int n, int from) const {
   if (section < 0 || section >= static_cast<int>(sections_.size())) return -1;
-  const auto range = sequences_[static_cast<std::size_t>(section)].equal_range(n);
-  int after = -1, first = -1;
-  for (auto it = range.first; it != range.second; ++it) {
-    const int b = it->second;
-    if (first < 0 || b < first) first = b;
-    if (b > from && (after < 0 || b < after)) after = b;
-  }
-  return after >= 0 ? after : first;
+  // Blocks numbered n, in program order: the first after `from`, else the first.
+  const auto& numbers = sequences_[static_cast<std::size_t>(section)];
+  const auto begin = std::lower_bound(numbers.begin(), numbers.end(), std::pair{n, std::numeric_limits<int>::min()});
+  const auto end = std::upper_bound(begin, numbers.end(), std::pair{n, std::numeric_limits<int>::max()});
+  if (begin == end) return -1;
+  const auto after = std::upper_bound(begin, end, std::pair{n, from});
+  return after != end ? after->second : begin->second;
 }
 
 CallTarget callTarget(double p, std::optional<double> l, bool packedRepeats) {

@@ -79,5 +79,19 @@ TEST(CutCheckpoints, TheBudgetSpreadsThemOverALongRun) {
   EXPECT_GE(sim.checkpointCount(), 19u);
 }
 
+// A run that only goes forward (the CLI) asks for none: no copies, the same part.
+TEST(CutCheckpoints, ABudgetOfZeroKeepsNone) {
+  const machine::Timeline tl = passes(300);
+  CutOptions none;
+  none.checkpointBudgetBytes = 0;
+  CutSimulator lean(tl, barSetup(50, 100), libraryWith(squareTool(0.8, 3)), none);
+  lean.runToEnd();
+  EXPECT_EQ(lean.checkpointCount(), 0u);
+  CutSimulator usual(tl, barSetup(50, 100), libraryWith(squareTool(0.8, 3)));
+  usual.runToEnd();
+  EXPECT_GT(usual.checkpointCount(), 0u);
+  EXPECT_DOUBLE_EQ(lean.stock().volume(), usual.stock().volume());
+}
+
 }  // namespace
 }  // namespace klueng::core::cut

@@ -52,6 +52,7 @@ struct CutOptions {
   // Going back (Step Back, scrubbing) restores a copy of the stock kept while
   // cutting forward, at most this many bytes of them (issue 12: a step back on
   // a 100,000-block program re-cuts a few hundred moves, not all of them).
+  // 0 = none: a run that only goes forward (the CLI) keeps no copies.
   std::size_t checkpointBudgetBytes = 64u << 20;
 };
 

@@ -6,6 +6,7 @@
 #include <optional>
 #include <span>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "klueng/core/gcode/machine_profile.h"
@@ -38,7 +39,9 @@ class ProgramIndex {
   std::vector<ProgramSection> sections_;
   std::vector<int> sectionOfBlock_;
   std::unordered_map<int, int> byNumber_;
-  std::vector<std::unordered_multimap<int, int>> sequences_;  // per section: N -> block index
+  // Per section: (N, block index), sorted; a flat array, not a node per block
+  // (issue 13: the index is built for every check of a 100,000-block program).
+  std::vector<std::vector<std::pair<int, int>>> sequences_;
 };
 
 // A call's program number and repeat count (M98 P L, M97 P L, G65 P L).
