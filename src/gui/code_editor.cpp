@@ -1,6 +1,7 @@
 #include "gui/code_editor.h"
 
 #include "klueng/core/gcode/address_table.h"
+#include "klueng/core/gcode/display_tokens.h"
 
 #include <QFontDatabase>
 #include <QHelpEvent>
@@ -255,20 +256,16 @@ QString CodeEditor::helpForPosition(int position) const {
   const QString text = b.text();
   int i = position - b.position();
   if (i < 0 || i >= text.size()) return {};
-  // Inside a comment nothing is explained.
-  const int semi = static_cast<int>(text.indexOf(u';'));
-  if (semi >= 0 && semi <= i) return {};
-  const qsizetype open = text.lastIndexOf(u'(', i);
-  if (open >= 0) {
-    const qsizetype close = text.indexOf(u')', open);
-    if (close < 0 || close >= i) return {};
-  }
-  // Walk back over the number to the address letter.
-  while (i > 0 && (text[i].isDigit() || text[i] == u'.' || text[i] == u'-' || text[i] == u'+')) --i;
-  const QChar letter = text[i].toUpper();
-  if (!letter.isLetter() || letter.unicode() >= 128) return {};
-  int end = i + 1;
-  while (end < text.size() && (text[end].isDigit() || text[end] == u'.' || text[end] == u'-' || text[end] == u'+')) ++end;
+  // The word under the cursor, as the core cuts the line; a comment explains nothing.
+  const std::u16string_view line(reinterpret_cast<const char16_t*>(text.utf16()), static_cast<std::size_t>(text.size()));
+  const core::gcode::DisplayToken* word = nullptr;
+  const std::vector<core::gcode::DisplayToken> tokens = core::gcode::displayTokens(line);
+  for (const core::gcode::DisplayToken& t : tokens)
+    if (i >= t.start && i < t.start + t.length) word = &t;
+  if (!word || word->kind != core::gcode::DisplayTokenKind::Address) return {};
+  const QChar letter = QChar::fromLatin1(word->letter);
+  i = word->start;
+  const int end = word->start + word->length;
   // X#101, Z-[#1+2.]: a macro expression; its value when the line last ran, if it has run.
   QString lastValue;
   if (end < text.size() && (text[end] == u'#' || text[end] == u'[') && wordValue_) {

@@ -1,6 +1,7 @@
 #include "gui/gcode_highlighter.h"
 
 #include "klueng/core/gcode/address_table.h"
+#include "klueng/core/gcode/display_tokens.h"
 
 #include <algorithm>
 #include <iterator>
@@ -32,19 +33,6 @@ GcodeHighlighter::GcodeHighlighter(QTextDocument* document) : QSyntaxHighlighter
   set(Kind::Macro, QColor(0x00, 0x5f, 0x73), true);     // macro B keywords and functions
   set(Kind::Variable, QColor(0x9a, 0x5b, 0x00));        // #101
 }
-
-namespace {
-// Custom macro B words (docs/macro.md): statements, operators and functions.
-bool isMacroWord(const QString& w) {
-  static constexpr std::string_view kWords[] = {
-      "IF", "THEN", "GOTO", "WHILE", "DO", "END", "EQ", "NE", "GT", "GE", "LT", "LE", "AND", "OR", "XOR", "MOD",
-      "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "SQRT", "SQR", "ABS", "ROUND", "RND", "FIX", "FUP", "LN", "EXP",
-      "POW", "BIN", "BCD", "POPEN", "PCLOS", "DPRNT", "BPRNT"};
-  const QByteArray upper = w.toUpper().toLatin1();
-  const std::string_view word(upper.constData(), static_cast<std::size_t>(upper.size()));
-  return std::find(std::begin(kWords), std::end(kWords), word) != std::end(kWords);
-}
-}  // namespace
 
 GcodeHighlighter::Kind GcodeHighlighter::kindOf(QChar letter) {
   const QChar upper = letter.toUpper();
@@ -91,43 +79,18 @@ void GcodeHighlighter::setUnderlines(QHash<int, QVector<Underline>> byLine) {
 
 void GcodeHighlighter::highlightBlock(const QString& text) {
   const int n = static_cast<int>(text.size());
-  int i = 0;
-  while (i < n) {
-    const QChar c = text[i];
-    if (c == u'(') {
-      int end = static_cast<int>(text.indexOf(u')', i));
-      end = end < 0 ? n : end + 1;
-      setFormat(i, end - i, format(Kind::Comment));
-      i = end;
-    } else if (c == u';') {
-      setFormat(i, n - i, format(Kind::Comment));
-      break;
-    } else if (c == u'/' || c == u'%') {
-      setFormat(i, 1, format(Kind::Skip));
-      ++i;
-    } else if (c == u'#') {
-      int end = i + 1;
-      while (end < n && text[end].isDigit()) ++end;
-      setFormat(i, end - i, format(Kind::Variable));
-      i = end;
-    } else if (c.isLetter() && c.unicode() < 128 && i + 1 < n && text[i + 1].isLetter()) {
-      int end = i + 1;
-      while (end < n && text[end].isLetter() && text[end].unicode() < 128) ++end;
-      if (isMacroWord(text.mid(i, end - i))) {
-        setFormat(i, end - i, format(Kind::Macro));
-        i = end;
-      } else {
-        ++i;
-      }
-    } else if (c.isLetter() && c.unicode() < 128) {
-      int end = i + 1;
-      while (end < n && (text[end].isDigit() || text[end] == u'.' || text[end] == u'-' || text[end] == u'+')) ++end;
-      const Kind k = kindOf(c);
-      if (k != Kind::Other) setFormat(i, end - i, format(k));
-      i = end;
-    } else {
-      ++i;
+  // The core cuts the line into tokens; this only picks their colours.
+  const std::u16string_view line(reinterpret_cast<const char16_t*>(text.utf16()), static_cast<std::size_t>(n));
+  for (const core::gcode::DisplayToken& t : core::gcode::displayTokens(line)) {
+    Kind kind = Kind::Other;
+    switch (t.kind) {
+      case core::gcode::DisplayTokenKind::Comment: kind = Kind::Comment; break;
+      case core::gcode::DisplayTokenKind::Skip: kind = Kind::Skip; break;
+      case core::gcode::DisplayTokenKind::Variable: kind = Kind::Variable; break;
+      case core::gcode::DisplayTokenKind::MacroWord: kind = Kind::Macro; break;
+      case core::gcode::DisplayTokenKind::Address: kind = kindOf(QChar::fromLatin1(t.letter)); break;
     }
+    if (kind != Kind::Other) setFormat(t.start, t.length, format(kind));
   }
   const auto it = underlines_.constFind(currentBlock().blockNumber());
   if (it == underlines_.cend()) return;

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "diagnostic_codes.h"
+#include "klueng/core/gcode/display_tokens.h"
 #include "klueng/core/gcode/macro.h"
 
 namespace klueng::core::gcode {
@@ -38,6 +39,10 @@ constexpr Operator kWordOperators[] = {
     {"LT", ExprOp::Lt, 1}, {"LE", ExprOp::Le, 1}, {"OR", ExprOp::Or, 2}, {"XOR", ExprOp::Xor, 2},
     {"AND", ExprOp::And, 3}, {"MOD", ExprOp::Mod, 3},
 };
+
+// Statement keywords (the parser reads them, parser.cpp), for isMacroKeyword.
+constexpr const char* kStatementWords[] = {"IF",    "THEN",  "GOTO",  "WHILE", "DO",
+                                           "END",   "POPEN", "PCLOS", "DPRNT", "BPRNT"};
 
 class Reader {
  public:
@@ -293,6 +298,16 @@ class Reader {
 };
 
 }  // namespace
+
+bool isMacroKeyword(std::string_view upperWord) {
+  for (const char* w : kStatementWords)
+    if (upperWord == w) return true;
+  for (const Function& f : kFunctions)
+    if (upperWord == f.name) return true;
+  for (const Operator& o : kWordOperators)
+    if (upperWord == o.name) return true;
+  return false;
+}
 
 ExprReadResult readExpression(std::string_view text, int column, ExprForm form, Expression& out) {
   return Reader(text, column, out).read(form);
