@@ -8,7 +8,8 @@
 
 #include "klueng/core/cut/cut_simulator.h"
 #include "klueng/core/cut/finished_part.h"
-#include "klueng/core/cut/section_image.h"
+#include "png_writer.h"
+#include "render/section_picture.h"
 #include "cli_common.h"
 
 namespace klueng::cli {
@@ -59,19 +60,21 @@ CutOutcome runCut(const std::string& file, const io::JobHeader& header, const ma
   const cut::FinishedPart part(sim.stock());
 
   if (!options.pngPath.empty()) {
-    cut::SectionView view;
-    view.stock = &sim.stock();
-    view.chuck = &sim.chuck();
-    view.tool = sim.currentTool();
-    view.toolPosition = sim.toolPosition();
-    view.path = &timeline;
-    view.pathUntil = sim.endTime();
+    // The screen's painters (render/), offscreen into an image, by the picture module.
+    render::SectionPicture picture;
+    picture.stock = &sim.stock();
+    picture.chuck = &sim.chuck();
+    picture.tool = sim.currentTool();
+    picture.toolPosition = sim.toolPosition();
+    picture.path = &timeline;
+    picture.pathUntil = sim.endTime();
     std::string error;
-    if (!cut::writePng(options.pngPath, cut::renderSection(view), &error)) {
+    if (!writeSectionPng(picture, options.pngPath, &error)) {
       std::fprintf(stderr, "klueng-cli simulate: cannot write %s: %s\n", options.pngPath.c_str(), error.c_str());
       outcome.written = false;
     }
   }
+
   if (!options.profilePath.empty()) outcome.written = writeText(options.profilePath, part.toCsv()) && outcome.written;
   if (!options.svgPath.empty()) outcome.written = writeText(options.svgPath, part.toSvg()) && outcome.written;
   if (!options.dxfPath.empty()) outcome.written = writeText(options.dxfPath, part.toDxf()) && outcome.written;

@@ -74,9 +74,7 @@ MarkerItem::MarkerItem() {
 }
 
 void MarkerItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*) {
-  painter->setPen(QPen(render::palette().controlledPoint, 1.5));
-  painter->drawLine(QPointF(-5, 0), QPointF(5, 0));
-  painter->drawLine(QPointF(0, -5), QPointF(0, 5));
+  render::paintMarker(*painter, QPointF(0, 0), 5.0, 1.5);  // device pixels: the item ignores the zoom
 }
 
 // ---------------------------------------------------------------- TrailItem

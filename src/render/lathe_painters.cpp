@@ -185,4 +185,10 @@ void paintChuck(QPainter& painter, const core::cut::Chuck& c) {
   painter.restore();
 }
 
+void paintMarker(QPainter& painter, const QPointF& at, double halfLength, double penWidth) {
+  painter.setPen(QPen(palette().controlledPoint, penWidth));
+  painter.drawLine(at - QPointF(halfLength, 0), at + QPointF(halfLength, 0));
+  painter.drawLine(at - QPointF(0, halfLength), at + QPointF(0, halfLength));
+}
+
 }  // namespace klueng::render

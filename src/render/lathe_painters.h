@@ -65,6 +65,8 @@ void paintStock(QPainter& painter, const StockShape& stock, bool showBlankOutlin
 void paintCentreLine(QPainter& painter, double zFrom, double zTo);
 void paintChuck(QPainter& painter, const core::cut::Chuck& chuck);
 QRectF chuckRect(const core::cut::Chuck& chuck);   // both halves, scene units
+// The controlled point's cross: arms of halfLength, pen width in the painter's units.
+void paintMarker(QPainter& painter, const QPointF& at, double halfLength, double penWidth);
 core::cut::Chuck chuckFor(double stockDiameterMm, double stockLengthMm, double gripMm, double jawHeightMm,
                           double spindleBoreMm = 40.0);
 

@@ -10,6 +10,8 @@
 #include <sstream>
 #include <string>
 
+#include "klueng/core/io/image.h"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -111,6 +113,51 @@ TEST(CliSimulateCut, AFullDiskIsReportedAndAnOldOutputSurvives) {
   EXPECT_EQ(slurp(png).substr(1, 3), "PNG");
   for (const auto& e : fs::directory_iterator(png.parent_path()))
     EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
+}
+
+// --png is drawn by the screen's painters (render/, through the picture module):
+// the bar in the stock colour between the chuck's jaws, the chuck, the centre line.
+TEST(CliSimulateCut, ThePngIsTheScreensSection) {
+  const fs::path png = scratch("section.png");
+  ASSERT_EQ(simulate("'" + kCutSamples + "/01-step-shaft.txt' --png '" + png.string() + "'").exitCode, 0);
+  const auto image = klueng::core::io::readImage(png.string());
+  ASSERT_TRUE(image.value);
+  const auto& img = *image.value;
+  EXPECT_TRUE(img.width == 2400 || img.height == 1600) << img.width << "x" << img.height;
+  EXPECT_LE(img.width, 2400);
+  EXPECT_LE(img.height, 1600);
+  // render::palette(): stock fill (176,190,204), chuck (90,90,96), background (250,250,247).
+  std::size_t stock = 0, chuck = 0, background = 0;
+  for (std::uint32_t p : img.pixels) {
+    stock += p == 0xB0BECCu;
+    chuck += p == 0x5A5A60u;
+    background += p == 0xFAFAF7u;
+  }
+  EXPECT_GT(stock, img.pixels.size() / 20);
+  EXPECT_GT(chuck, img.pixels.size() / 100);
+  EXPECT_GT(background, img.pixels.size() / 4);
+  // The part is symmetric about the centre line (the row with most of its red):
+  // a column through the bar has as much stock above that row as below it (the
+  // tool path is drawn on the upper half only, so only columns clear of it count).
+  int centre = 0, most = 0;
+  for (int y = 0; y < img.height; ++y) {
+    int red = 0;
+    for (int col = 0; col < img.width; ++col) {  // anti-aliased: reddish, not exactly (200,40,40)
+      const std::uint32_t p = img.at(col, y);
+      red += (p >> 16) > 150 && ((p >> 8) & 0xFF) < 150 && (p & 0xFF) < 150;
+    }
+    if (red > most) most = red, centre = y;
+  }
+  ASSERT_GT(most, img.width / 4);
+  int x = 0;
+  for (int col = 0; col < img.width && x == 0; ++col)
+    if (img.at(col, centre + 5) == 0xB0BECCu) x = col;
+  ASSERT_GT(x, 0);
+  int above = 0, below = 0;
+  for (int y = 0; y < img.height; ++y)
+    if (img.at(x + 5, y) == 0xB0BECCu) (y < centre ? above : below)++;
+  EXPECT_GT(above, img.height / 10);
+  EXPECT_NEAR(above, below, 3);
 }
 
 TEST(CliSimulateCut, ResolutionSetsTheColumnWidth) {

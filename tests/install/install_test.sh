@@ -36,6 +36,10 @@ check_tree() {  # check_tree ROOT: the programs and data under ROOT/usr
   local t
   t="$(run_as_new_user "$cli" simulate "$sample" --cycle-time --no-persist)" || fail "simulate failed"
   [[ "$t" =~ ^[0-9]+\.[0-9]+$ ]] || fail "simulate --cycle-time printed '$t'"
+  # --png opens the picture module from ../lib/klueng (the screen's painters).
+  rm -f "$work/section.png"
+  run_as_new_user "$cli" simulate "$sample" --no-persist --png "$work/section.png" || fail "simulate --png failed"
+  file "$work/section.png" | grep -q "PNG image data" || fail "simulate --png wrote no PNG"
 
   # It reads the installed setup, not the sources: a bad value in the installed machine.cfg is reported there.
   cp "$data/machine.cfg" "$work/machine.cfg.keep"

@@ -1,0 +1,13 @@
+#pragma once
+// klueng-cli --png: draws the section with the screen's painters by opening the
+// picture module (klueng-png.so) beside the program, or in ../lib/klueng when
+// installed, and writes the file atomically.
+#include <string>
+
+#include "render/section_picture.h"
+
+namespace klueng::cli {
+
+bool writeSectionPng(const render::SectionPicture& picture, const std::string& path, std::string* error);
+
+}  // namespace klueng::cli
