@@ -18,7 +18,7 @@ constexpr std::uint8_t kFH = kF | kH;
 constexpr std::uint8_t kFC = kF | kC;
 constexpr std::uint8_t kAll = kF | kH | kC;
 
-constexpr CodeInfo kTable[] = {
+constexpr CodeInfo kRows[] = {
     // --- G codes -------------------------------------------------------------
     {'G', 0, G::Motion, P::Motion, kAll, false, "Rapid traverse", "การเคลื่อนที่เร็ว",
      "G00 X52. Z2. - rapid to diameter 52, 2 mm in front of the face",
@@ -289,6 +289,63 @@ constexpr CodeInfo kTable[] = {
     {'M', 99, G::MSubprogram, P::AfterMotion, kAll, false, "End of subprogram", "จบโปรแกรมย่อย",
      "M99 - return to the calling program", "M99 - กลับไปยังโปรแกรมที่เรียก"},
 };
+
+// What each code does (CodeAction), by letter, number and group: a number with two
+// meanings (M41 C-axis or gear, M86 brake or door) has one per group.
+struct ActionRow {
+  char letter;
+  int number;
+  ModalGroup group;
+  CodeAction action;
+};
+using A = CodeAction;
+constexpr ActionRow kActions[] = {
+    {'G', 0, G::Motion, A::Rapid},           {'G', 1, G::Motion, A::Line},
+    {'G', 2, G::Motion, A::ArcCw},           {'G', 3, G::Motion, A::ArcCcw},
+    {'G', 32, G::Motion, A::Thread},         {'G', 90, G::Motion, A::BoxTurning},
+    {'G', 92, G::Motion, A::BoxThreading},   {'G', 94, G::Motion, A::BoxFacing},
+    {'G', 20, G::Units, A::Inch},            {'G', 21, G::Units, A::Metric},
+    {'G', 40, G::NoseComp, A::CompOff},      {'G', 41, G::NoseComp, A::CompLeft},
+    {'G', 42, G::NoseComp, A::CompRight},    {'G', 96, G::SpindleMode, A::ConstantSurface},
+    {'G', 97, G::SpindleMode, A::ConstantRpm}, {'G', 98, G::FeedMode, A::FeedPerMinute},
+    {'G', 99, G::FeedMode, A::FeedPerRev},   {'G', 54, G::WorkOffset, A::WorkOffset},
+    {'G', 55, G::WorkOffset, A::WorkOffset}, {'G', 56, G::WorkOffset, A::WorkOffset},
+    {'G', 57, G::WorkOffset, A::WorkOffset}, {'G', 58, G::WorkOffset, A::WorkOffset},
+    {'G', 59, G::WorkOffset, A::WorkOffset}, {'G', 4, G::NonModal, A::Dwell},
+    {'G', 27, G::NonModal, A::ReferenceCheck}, {'G', 28, G::NonModal, A::ReferenceReturn},
+    {'G', 30, G::NonModal, A::ReferenceReturn}, {'G', 29, G::NonModal, A::ReturnFromReference},
+    {'G', 50, G::NonModal, A::CoordinateSet}, {'G', 53, G::NonModal, A::MachineCoordinates},
+    {'G', 65, G::NonModal, A::MacroCall},    {'G', 66, G::MacroModal, A::MacroModalCall},
+    {'G', 67, G::MacroModal, A::MacroModalCancel}, {'G', 80, G::CannedCycle, A::CycleCancel},
+    {'G', 70, G::CannedCycle, A::Finishing}, {'G', 71, G::CannedCycle, A::TurnRoughing},
+    {'G', 72, G::CannedCycle, A::FaceRoughing}, {'G', 73, G::CannedCycle, A::PatternRepeating},
+    {'G', 74, G::CannedCycle, A::FacePecking}, {'G', 75, G::CannedCycle, A::Grooving},
+    {'G', 76, G::CannedCycle, A::ThreadCutting}, {'G', 81, G::CannedCycle, A::Drilling},
+    {'G', 82, G::CannedCycle, A::SpotDrilling}, {'G', 83, G::CannedCycle, A::PeckDrilling},
+    {'M', 3, G::MSpindle, A::SpindleCw},     {'M', 4, G::MSpindle, A::SpindleCcw},
+    {'M', 5, G::MSpindle, A::SpindleStop},   {'M', 8, G::MCoolant, A::CoolantOn},
+    {'M', 9, G::MCoolant, A::CoolantOff},    {'M', 86, G::MBrake, A::SpindleClamp},
+    {'M', 14, G::MBrake, A::SpindleClamp},   {'M', 87, G::MBrake, A::SpindleRelease},
+    {'M', 15, G::MBrake, A::SpindleRelease}, {'M', 41, G::MCAxis, A::CAxisOn},
+    {'M', 91, G::MCAxis, A::CAxisOff},       {'M', 41, G::MGear, A::GearRange},
+    {'M', 42, G::MGear, A::GearRange},       {'M', 43, G::MGear, A::GearRange},
+    {'M', 44, G::MGear, A::GearRange},       {'M', 23, G::MThreadChamfer, A::ThreadChamferOn},
+    {'M', 24, G::MThreadChamfer, A::ThreadChamferOff}, {'M', 0, G::MProgram, A::ProgramStop},
+    {'M', 1, G::MProgram, A::OptionalStop},  {'M', 2, G::MProgram, A::ProgramEnd},
+    {'M', 30, G::MProgram, A::ProgramEnd},   {'M', 97, G::MSubprogram, A::LocalCall},
+    {'M', 98, G::MSubprogram, A::SubprogramCall}, {'M', 99, G::MSubprogram, A::SubprogramReturn},
+};
+
+constexpr auto withActions() {
+  std::array<CodeInfo, std::size(kRows)> rows{};
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    rows[i] = kRows[i];
+    for (const ActionRow& a : kActions)
+      if (a.letter == rows[i].letter && a.number == rows[i].number && a.group == rows[i].group) rows[i].action = a.action;
+  }
+  return rows;
+}
+constexpr auto kTable = withActions();
 
 // Direct index [dialect][G/M][number] -> row, built once.
 struct Index {

@@ -111,8 +111,9 @@ std::optional<CycleAlarm> readProfile(const CycleInput& in, const Block& cycle, 
         pendingT = tw;
         // The new offset counts from this block's own target on (as in the interpreter).
         const int number = tw->code() % 100;
+        // (A negative T, from a typing slip the check reports, names no offset.)
         if (number == 0) offset = Vec2::Zero();
-        else if (in.offsets && number <= io::kOffsetCount) {
+        else if (in.offsets && number > 0 && number <= io::kOffsetCount) {
           const io::Offset& o = in.offsets->at(number);
           offset = Vec2(o.z, o.x / 2.0);
         }

@@ -570,5 +570,16 @@ TEST(Samples, CannedCycleSampleRoughsAndFinishesLikeSample01) {
   EXPECT_NEAR(zOf(threads.back()->path.end), -15.0, 1e-9);
 }
 
+// Found by fuzz_pipeline (issue 13): a negative T inside a G71 profile (the check
+// refuses it with E118; the interpreter runs what it is given) threw out of the
+// offset table's at(-2). It names no offset: the profile keeps the one in force.
+TEST(CycleProfile, ANegativeTInTheProfileNamesNoOffset) {
+  const Timeline t = testing::runText(
+      "G21 G99\nT0101\nG97 S500 M03\nG00 X52. Z2.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.2\n"
+      "N10 G00 X30. T-101\nG01 Z-20.\nN20 X52.\nM30\n");
+  ASSERT_FALSE(t.moves.empty());
+  for (const Move& m : t.moves) EXPECT_TRUE(std::isfinite(m.path.end.x()) && std::isfinite(m.path.end.y()));
+}
+
 }  // namespace
 }  // namespace klueng::core::machine

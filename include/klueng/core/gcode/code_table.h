@@ -3,6 +3,7 @@
 // execution priority and help text, for both dialects (SPEC 6, 7, 13).
 // The checker, the interpreter, the editor's tooltips and the help pages all
 // read this one table.
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string_view>
@@ -46,6 +47,31 @@ enum class ModalGroup {
 // When an M/G code acts inside its block (SPEC 7: lower runs first).
 enum class Phase { State = 0, BeforeMotion = 1, Motion = 2, AfterMotion = 3 };
 
+// What a code does when it runs. The interpreter and the cycles switch on this,
+// never on the code's number (issue 12); a profile that gives a number another
+// meaning gives its row another action. None: the code only selects a state its
+// group keeps (G18), or is a machine function the simulator shows but does not
+// model (M10 chuck, M31 conveyor ...). Work offsets (G54-G59) and gear ranges
+// (M41-M44) carry their number as their value.
+enum class CodeAction : std::uint8_t {
+  None,
+  // group 01
+  Rapid, Line, ArcCw, ArcCcw, Thread, BoxTurning, BoxThreading, BoxFacing,
+  // modal states
+  Inch, Metric, CompOff, CompLeft, CompRight, ConstantSurface, ConstantRpm, FeedPerMinute, FeedPerRev,
+  WorkOffset,
+  // one block only
+  Dwell, ReferenceCheck, ReferenceReturn, ReturnFromReference, CoordinateSet, MachineCoordinates, MacroCall,
+  MacroModalCall, MacroModalCancel,
+  // canned cycles
+  CycleCancel, Finishing, TurnRoughing, FaceRoughing, PatternRepeating, FacePecking, Grooving, ThreadCutting,
+  Drilling, SpotDrilling, PeckDrilling,
+  // M codes
+  SpindleCw, SpindleCcw, SpindleStop, CoolantOn, CoolantOff, SpindleClamp, SpindleRelease, CAxisOn, CAxisOff,
+  GearRange, ThreadChamferOn, ThreadChamferOff, ProgramStop, OptionalStop, ProgramEnd, LocalCall,
+  SubprogramCall, SubprogramReturn,
+};
+
 struct CodeInfo {
   bool in(Dialect d) const { return (dialects & dialectBit(d)) != 0; }
   char letter;            // 'G' or 'M'
@@ -64,6 +90,7 @@ struct CodeInfo {
   // 'd' dwell time read as the profile's dwellP says. Letters not listed keep
   // SPEC 4's kind. Read by the checker (and the help pages).
   std::string_view words = {};
+  CodeAction action = CodeAction::None;  // from the table's action list (code_table.cpp)
 };
 
 // The kind of `letter` in `row`'s word list; 0 when not listed.
