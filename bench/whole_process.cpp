@@ -10,6 +10,7 @@
 #include <spawn.h>
 #include <sys/resource.h>
 #include <fcntl.h>
+#include <malloc.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -27,7 +28,6 @@
 #include "klueng/core/io/tool_library.h"
 #include "klueng/core/machine/job_file.h"
 #include "klueng/core/machine/setup_files.h"
-#include "program_generator.h"
 
 extern char** environ;
 
@@ -114,40 +114,65 @@ int main(int argc, char** argv) {
   const fs::path scratch = fs::temp_directory_path() / ("klueng-whole-process-" + std::to_string(::getpid()));
   fs::create_directories(scratch);
   const fs::path config = makeConfig(scratch);
-  const machine::LoadedSetup loaded = machine::loadMachineSetup(config.string());
 
-  std::printf("%-9s %-8s %10s %10s %7s %9s %12s\n", "blocks", "command", "process", "in-proc", "ratio", "peak RSS",
-              "process/1k");
+  // 1. The programs, written before anything is timed.
+  std::vector<fs::path> programs;
   for (int blocks : sizes) {
-    const fs::path program = scratch / ("p" + std::to_string(blocks) + ".txt");
-    std::ofstream(program) << klueng::bench::ProgramGenerator::generate(blocks);
-    for (const std::string command : {"check", "simulate"}) {
-      std::vector<double> process, inProcess;
-      long rss = 0;
-      int exitCode = 0;
+    programs.push_back(scratch / ("p" + std::to_string(blocks) + ".txt"));
+    // By klueng-gen-program: this process stays small (see 2.).
+    if (runProcess({KLUENG_GEN_PROGRAM_PATH, std::to_string(blocks), programs.back().string()}).exitCode != 0) {
+      std::fprintf(stderr, "cannot generate %s\n", programs.back().c_str());
+      return 1;
+    }
+  }
+  // 2. The processes, while this one is still small: a spawned child starts with its
+  // parent's peak RSS as its own (the kernel keeps the larger at exec), so every
+  // in-process run comes after them.
+  ::malloc_trim(0);
+  const std::vector<std::string> commands = {"check", "simulate"};
+  struct Row {
+    std::vector<double> process, inProcess;
+    long rssKb = 0;
+    int exitCode = 0;
+  };
+  std::vector<Row> rows(sizes.size() * commands.size());
+  for (std::size_t s = 0; s < sizes.size(); ++s)
+    for (std::size_t c = 0; c < commands.size(); ++c)
       for (int r = 0; r < runs; ++r) {
-        const Sample s = runProcess({cli, command, program.string(), "--config", config.string()});
-        process.push_back(s.ms);
-        rss = std::max(rss, s.rssKb);
-        exitCode = std::max(exitCode, s.exitCode);
-        inProcess.push_back(timeIt([&] {
+        Row& row = rows[s * commands.size() + c];
+        const Sample sample = runProcess({cli, commands[c], programs[s].string(), "--config", config.string()});
+        row.process.push_back(sample.ms);
+        row.rssKb = std::max(row.rssKb, sample.rssKb);
+        row.exitCode = std::max(row.exitCode, sample.exitCode);
+      }
+  // 3. The same calls in-process, as the CLI makes them (a one-way cut keeps no checkpoints).
+  const machine::LoadedSetup loaded = machine::loadMachineSetup(config.string());
+  for (std::size_t s = 0; s < sizes.size(); ++s)
+    for (std::size_t c = 0; c < commands.size(); ++c)
+      for (int r = 0; r < runs; ++r)
+        rows[s * commands.size() + c].inProcess.push_back(timeIt([&] {
           machine::JobFileRequest request;
           request.stations = loaded.setup.tools.stations;
           const machine::JobFile job =
-              machine::loadJobFile(program.string(), loaded.setup, request, io::shippedToolLibrary());
-          if (command == "simulate" && job.program && job.file && !job.hasErrors()) {
+              machine::loadJobFile(programs[s].string(), loaded.setup, request, io::shippedToolLibrary());
+          if (commands[c] == "simulate" && job.program && job.file && !job.hasErrors()) {
             const machine::Timeline timeline = machine::interpret(*job.program, job.setup, request.run);
-            cut::CutSimulator sim(timeline, cut::CutSetup::from(job.file->header, job.setup));
+            cut::CutOptions options;
+            options.checkpointBudgetBytes = 0;
+            cut::CutSimulator sim(timeline, cut::CutSetup::from(job.file->header, job.setup), options);
             sim.runToEnd();
           }
         }));
-      }
-      const double p = median(process), q = median(inProcess);
-      std::printf("%-9d %-8s %8.1f ms %7.1f ms %6.2fx %6ld MB %9.3f ms%s\n", blocks, command.c_str(), p, q, p / q,
-                  rss / 1024, p / (blocks / 1000.0), exitCode ? "  (exit status not 0!)" : "");
-      std::fflush(stdout);
+
+  std::printf("%-9s %-8s %10s %10s %7s %9s %12s\n", "blocks", "command", "process", "in-proc", "ratio", "peak RSS",
+              "process/1k");
+  for (std::size_t s = 0; s < sizes.size(); ++s)
+    for (std::size_t c = 0; c < commands.size(); ++c) {
+      const Row& row = rows[s * commands.size() + c];
+      const double p = median(row.process), q = median(row.inProcess);
+      std::printf("%-9d %-8s %8.1f ms %7.1f ms %6.2fx %6ld MB %9.3f ms%s\n", sizes[s], commands[c].c_str(), p, q,
+                  p / q, row.rssKb / 1024, p / (sizes[s] / 1000.0), row.exitCode ? "  (exit status not 0!)" : "");
     }
-  }
   fs::remove_all(scratch);
   return 0;
 }
