@@ -27,9 +27,9 @@ std::vector<double> threadDepths(double k, double d1, double dmin, double d, int
   return depths;
 }
 
-std::vector<Step> singleCycle(int g, const Vec2& start, const Vec2& target, double taper, double lead) {
+std::vector<Step> singleCycle(gcode::CodeAction g, const Vec2& start, const Vec2& target, double taper, double lead) {
   std::vector<Step> s;
-  if (g == 94) {
+  if (g == A::BoxFacing) {
     // Rapid in Z to the face (taper: Z at the start of the cut), face to X, back along Z, rapid out.
     const Vec2 p1(target.x() + taper, start.y());
     const Vec2 p3(start.x(), target.y());
@@ -42,7 +42,7 @@ std::vector<Step> singleCycle(int g, const Vec2& start, const Vec2& target, doub
   const Vec2 p1(start.x(), target.y() + taper);
   const Vec2 p3(target.x(), start.y());
   s.push_back(rapid(start, p1));
-  if (g == 92) {
+  if (g == A::BoxThreading) {
     s.push_back(thread(p1, target, lead));
     s.push_back(rapid(target, p3));
   } else {
@@ -53,12 +53,13 @@ std::vector<Step> singleCycle(int g, const Vec2& start, const Vec2& target, doub
   return s;
 }
 
-Expansion expand(int g, const CycleInput& in, CycleMemory& memory) {
+Expansion expand(const gcode::CodeInfo& code, const CycleInput& in, CycleMemory& memory) {
+  const gcode::CodeAction g = code.action;
   Expansion e;
   const Block& b = in.program->blocks[static_cast<std::size_t>(in.blockIndex)];
   const double u = in.unit;
-  const std::string name = gName(in, g);
-  const bool secondBlock = (g >= 70 && g <= 73) ? (b.has('P') || b.has('Q')) : hasAxis(b);
+  const std::string name = gName(in, code);
+  const bool secondBlock = (g == A::Finishing || g == A::TurnRoughing || g == A::FaceRoughing || g == A::PatternRepeating) ? (b.has('P') || b.has('Q')) : hasAxis(b);
   auto value = [&](char letter, double fallback) {
     const Word* w = b.find(letter);
     return w ? w->value * u : fallback;
@@ -66,24 +67,24 @@ Expansion expand(int g, const CycleInput& in, CycleMemory& memory) {
 
   if (!secondBlock) {
     switch (g) {
-      case 71:
-      case 72: {
-        const char depthLetter = g == 71 ? 'U' : 'W';
+      case A::TurnRoughing:
+      case A::FaceRoughing: {
+        const char depthLetter = g == A::TurnRoughing ? 'U' : 'W';
         const Word* dw = b.find(depthLetter);
         if (!dw || dw->value <= 0.0)
           e.alarm = alarmAt("A122", dw ? dw : in.gWord, b, {name, std::string(1, depthLetter)});
-        else if (g == 71) memory.g71Depth = dw->value * u, memory.g71Retract = value('R', memory.g71Retract);
+        else if (g == A::TurnRoughing) memory.g71Depth = dw->value * u, memory.g71Retract = value('R', memory.g71Retract);
         else memory.g72Depth = dw->value * u, memory.g72Retract = value('R', memory.g72Retract);
         break;
       }
-      case 73:
+      case A::PatternRepeating:
         memory.g73ReliefX = value('U', memory.g73ReliefX);
         memory.g73ReliefZ = value('W', memory.g73ReliefZ);
         if (const Word* r = b.find('R')) memory.g73Count = static_cast<int>(std::lround(r->value));
         break;
-      case 74: memory.g74Retract = value('R', memory.g74Retract); break;
-      case 75: memory.g75Retract = value('R', memory.g75Retract); break;
-      case 76:
+      case A::FacePecking: memory.g74Retract = value('R', memory.g74Retract); break;
+      case A::Grooving: memory.g75Retract = value('R', memory.g75Retract); break;
+      case A::ThreadCutting:
         if (const Word* p = b.find('P')) {
           const int mra = p->code();
           memory.g76Finishing = mra / 10000;
@@ -93,7 +94,7 @@ Expansion expand(int g, const CycleInput& in, CycleMemory& memory) {
         if (const Word* q = b.find('Q')) memory.g76MinDepth = increment(*q, u);
         memory.g76Allowance = value('R', memory.g76Allowance);
         break;
-      case 70:
+      case A::Finishing:
         e.alarm = alarmAt("A126", in.gWord, b, {name});
         break;
       default: break;
@@ -102,7 +103,7 @@ Expansion expand(int g, const CycleInput& in, CycleMemory& memory) {
   }
 
   switch (g) {
-    case 70: {
+    case A::Finishing: {
       Profile p;
       if (auto a = readProfile(in, b, true, p)) {
         e.alarm = a;
@@ -115,11 +116,11 @@ Expansion expand(int g, const CycleInput& in, CycleMemory& memory) {
       e.steps.push_back(rapid(end, in.start));
       return e;
     }
-    case 71:
-    case 72: {
-      const double depth = g == 71 ? memory.g71Depth : memory.g72Depth;
+    case A::TurnRoughing:
+    case A::FaceRoughing: {
+      const double depth = g == A::TurnRoughing ? memory.g71Depth : memory.g72Depth;
       if (depth <= 0.0) {
-        e.alarm = alarmAt("A122", in.gWord, b, {name, g == 71 ? "U" : "W"});
+        e.alarm = alarmAt("A122", in.gWord, b, {name, g == A::TurnRoughing ? "U" : "W"});
         return e;
       }
       Profile p;
@@ -128,15 +129,15 @@ Expansion expand(int g, const CycleInput& in, CycleMemory& memory) {
         return e;
       }
       const Vec2 allowance(value('W', 0.0), value('U', 0.0) / 2.0);
-      if (auto a = stockRemoval(in, p, depth, g == 71 ? memory.g71Retract : memory.g72Retract, allowance,
-                                g == 72, e.steps)) {
+      if (auto a = stockRemoval(in, p, depth, g == A::TurnRoughing ? memory.g71Retract : memory.g72Retract, allowance,
+                                g == A::FaceRoughing, e.steps)) {
         e.alarm = a;
         return e;
       }
       if (p.ns > in.blockIndex) e.resumeAfter = p.nf;
       return e;
     }
-    case 73: {
+    case A::PatternRepeating: {
       if (memory.g73Count > kMaxPasses) {
         e.alarm = alarmAt("A127", in.gWord, b, {name, std::to_string(memory.g73Count), "R"});
         return e;
@@ -181,27 +182,27 @@ Expansion expand(int g, const CycleInput& in, CycleMemory& memory) {
       if (p.ns > in.blockIndex) e.resumeAfter = p.nf;
       return e;
     }
-    case 74:
-    case 75: {
+    case A::FacePecking:
+    case A::Grooving: {
       const Vec2 target = axisTarget(b, in.start, in.offset, u);
       const Word* pw = b.find('P');
       const Word* qw = b.find('Q');
       const double across = pw ? increment(*pw, u) : 0.0;  // Δi: X step (G74) or X peck (G75)
       const double along = qw ? increment(*qw, u) : 0.0;   // Δk: Z peck (G74) or Z step (G75)
-      const double drill = std::abs(g == 74 ? zOf(target) - zOf(in.start) : xOf(target) - xOf(in.start));
-      const double peck = g == 74 ? along : across;
+      const double drill = std::abs(g == A::FacePecking ? zOf(target) - zOf(in.start) : xOf(target) - xOf(in.start));
+      const double peck = g == A::FacePecking ? along : across;
       if (peck > kEps && drill / peck > kMaxPasses) {
-        e.alarm = alarmAt("A127", g == 74 ? qw : pw, b,
+        e.alarm = alarmAt("A127", g == A::FacePecking ? qw : pw, b,
                           {name, fmt::format("{:.0f}", std::ceil(drill / peck)), num(peck)});
         return e;
       }
-      const double width = std::abs(g == 74 ? xOf(target) - xOf(in.start) : zOf(target) - zOf(in.start));
-      const double moves = peckCycleMoves(drill, peck, width, std::abs(g == 74 ? across : along));
+      const double width = std::abs(g == A::FacePecking ? xOf(target) - xOf(in.start) : zOf(target) - zOf(in.start));
+      const double moves = peckCycleMoves(drill, peck, width, std::abs(g == A::FacePecking ? across : along));
       if (moves > kMaxCycleMoves) {
         e.alarm = alarmAt("A149", in.gWord, b, {name, fmt::format("{:.0f}", moves), fmt::format("{:.0f}", kMaxCycleMoves)});
         return e;
       }
-      if (g == 74) {
+      if (g == A::FacePecking) {
         e.steps = pecks(in.start, target, along, across, memory.g74Retract);
       } else {
         e.steps = pecks(swapped(in.start), swapped(target), across, along, memory.g75Retract);
@@ -209,7 +210,7 @@ Expansion expand(int g, const CycleInput& in, CycleMemory& memory) {
       }
       return e;
     }
-    case 76: {
+    case A::ThreadCutting: {
       const Vec2 target = axisTarget(b, in.start, in.offset, u);
       const Word* pw = b.find('P');
       const Word* qw = b.find('Q');

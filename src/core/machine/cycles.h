@@ -13,6 +13,7 @@
 
 #include "klueng/core/comp/segment.h"
 #include "klueng/core/diagnostic.h"
+#include "klueng/core/gcode/code_table.h"
 #include "klueng/core/gcode/machine_profile.h"
 #include "klueng/core/gcode/program.h"
 #include "klueng/core/io/tool_config.h"
@@ -77,17 +78,17 @@ struct Expansion {
 };
 
 // G70-G76 (one block of either format). A first block only fills `memory`.
-Expansion expand(int g, const CycleInput& in, CycleMemory& memory);
+Expansion expand(const gcode::CodeInfo& code, const CycleInput& in, CycleMemory& memory);
 
 // Haas one-block G70-G76 (MachineProfile::cycleForm == OneBlock): G71/G72
 // P Q U W D I K F, G73 P Q U W I K D F, G70 P Q, G74/G75 X Z I K D F,
 // G76 X Z K D F I A P U W. Readings and the manual's sections: docs/haas-cycles.md.
-Expansion expandOneBlock(int g, const CycleInput& in);
+Expansion expandOneBlock(const gcode::CodeInfo& code, const CycleInput& in);
 
 // The words of a drilling cycle G81/G82/G83, in mm (controlled point, work
 // coordinates). Modal: a later block with only a hole position reuses them.
 struct DrillWords {
-  int g = 0;                  // 81, 82, 83
+  gcode::CodeAction g = gcode::CodeAction::Drilling;  // Drilling, SpotDrilling, PeckDrilling
   Vec2 hole = Vec2::Zero();   // hole position and bottom (z = bottom of the hole)
   double rPlane = 0.0;        // Z of the R point
   double peck = 0.0;          // Q: depth of each peck (G83), 0 = one feed to the bottom
@@ -101,7 +102,8 @@ struct DrillWords {
 
 // Reads a drilling block into `words` (words not in the block keep their
 // value; `fresh` = a new G81-G83, whose R defaults to the initial level).
-std::optional<CycleAlarm> readDrillWords(int g, const CycleInput& in, bool fresh, DrillWords& words);
+std::optional<CycleAlarm> readDrillWords(const gcode::CodeInfo& code, const CycleInput& in, bool fresh,
+                                         DrillWords& words);
 // The moves of one drilling cycle from `start` (the initial level): rapid to
 // the hole's X, rapid to the R point, feed (in pecks) to the bottom, dwell,
 // rapid back to the initial level (Fanuc G-code system A; Haas).
@@ -114,7 +116,7 @@ double dwellSeconds(const gcode::Word& p, gcode::DwellPUnit rule);
 // G90 (turning), G92 (threading, `lead` = F) and G94 (facing) from `start` to
 // `target` with taper `taper` (radius for G90/G92, Z for G94: start of the cut
 // minus its end).
-std::vector<Step> singleCycle(int g, const Vec2& start, const Vec2& target, double taper, double lead);
+std::vector<Step> singleCycle(gcode::CodeAction g, const Vec2& start, const Vec2& target, double taper, double lead);
 
 // G76 cumulative depths of cut (radius) for thread height k, first depth d1,
 // minimum depth dmin, finishing allowance d and m finishing passes: d1·√n

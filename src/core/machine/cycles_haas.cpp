@@ -41,10 +41,11 @@ std::vector<double> haasThreadDepths(double height, double first, double minCut,
   return depths;
 }
 
-Expansion roughing(int g, const CycleInput& in, const Block& b) {
+Expansion roughing(const gcode::CodeInfo& code, const CycleInput& in, const Block& b) {
+  const gcode::CodeAction g = code.action;
   Expansion e;
   const double u = in.unit;
-  const std::string name = gName(in, g);
+  const std::string name = gName(in, code);
   const gcode::CycleSettings& s = in.profile->cycles;
   const double depth = length(b, 'D', u, setting(s.roughDepthInch, s.roughDepthMm, u));
   if (depth <= 0.0) {
@@ -61,7 +62,7 @@ Expansion roughing(int g, const CycleInput& in, const Block& b) {
   const Vec2 finish(length(b, 'W', u, 0.0), length(b, 'U', u, 0.0) / 2.0);
   const Vec2 rough(length(b, 'K', u, 0.0), length(b, 'I', u, 0.0));
   const double retract = setting(s.roughRetractInch, s.roughRetractMm, u);
-  if (auto a = stockRemoval(in, p, depth, retract, finish, g == 72, e.steps, rough, true)) {
+  if (auto a = stockRemoval(in, p, depth, retract, finish, g == A::FaceRoughing, e.steps, rough, true)) {
     e.alarm = a;
     return e;
   }
@@ -69,7 +70,8 @@ Expansion roughing(int g, const CycleInput& in, const Block& b) {
   return e;
 }
 
-Expansion grooving(int g, const CycleInput& in, const Block& b) {
+Expansion grooving(const gcode::CodeInfo& code, const CycleInput& in, const Block& b) {
+  const gcode::CodeAction g = code.action;
   Expansion e;
   const double u = in.unit;
   const gcode::CycleSettings& s = in.profile->cycles;
@@ -79,21 +81,21 @@ Expansion grooving(int g, const CycleInput& in, const Block& b) {
   const double i = iw ? std::abs(increment(*iw, u)) : 0.0;  // radius: X step (G74) or X peck (G75)
   const double k = kw ? std::abs(increment(*kw, u)) : 0.0;  // Z peck (G74) or Z step (G75)
   const double retract = setting(s.peckClearInch, s.peckClearMm, u);  // Setting 22
-  const double drillDepth = std::abs(g == 74 ? zOf(target) - zOf(in.start) : xOf(target) - xOf(in.start));
-  const double peck = g == 74 ? k : i;
+  const double drillDepth = std::abs(g == A::FacePecking ? zOf(target) - zOf(in.start) : xOf(target) - xOf(in.start));
+  const double peck = g == A::FacePecking ? k : i;
   if (peck > kEps && drillDepth / peck > kMaxPasses) {
-    e.alarm = alarmAt("A127", g == 74 ? kw : iw, b,
-                      {gName(in, g), fmt::format("{:.0f}", std::ceil(drillDepth / peck)), num(peck)});
+    e.alarm = alarmAt("A127", g == A::FacePecking ? kw : iw, b,
+                      {gName(in, code), fmt::format("{:.0f}", std::ceil(drillDepth / peck)), num(peck)});
     return e;
   }
-  const double width = std::abs(g == 74 ? xOf(target) - xOf(in.start) : zOf(target) - zOf(in.start));
-  const double moves = peckCycleMoves(drillDepth, peck, width, g == 74 ? i : k);
+  const double width = std::abs(g == A::FacePecking ? xOf(target) - xOf(in.start) : zOf(target) - zOf(in.start));
+  const double moves = peckCycleMoves(drillDepth, peck, width, g == A::FacePecking ? i : k);
   if (moves > kMaxCycleMoves) {
     e.alarm = alarmAt("A149", in.gWord, b,
-                      {gName(in, g), fmt::format("{:.0f}", moves), fmt::format("{:.0f}", kMaxCycleMoves)});
+                      {gName(in, code), fmt::format("{:.0f}", moves), fmt::format("{:.0f}", kMaxCycleMoves)});
     return e;
   }
-  if (g == 74) {
+  if (g == A::FacePecking) {
     e.steps = pecks(in.start, target, k, i, retract);
   } else {
     e.steps = pecks(swapped(in.start), swapped(target), i, k, retract);
@@ -102,10 +104,10 @@ Expansion grooving(int g, const CycleInput& in, const Block& b) {
   return e;
 }
 
-Expansion threading(const CycleInput& in, const Block& b) {
+Expansion threading(const gcode::CodeInfo& code, const CycleInput& in, const Block& b) {
   Expansion e;
   const double u = in.unit;
-  const std::string name = gName(in, 76);
+  const std::string name = gName(in, code);
   const gcode::CycleSettings& s = in.profile->cycles;
   const Vec2 target = axisTarget(b, in.start, in.offset, u);
   const double height = length(b, 'K', u, 0.0);
@@ -140,17 +142,17 @@ Expansion threading(const CycleInput& in, const Block& b) {
 
 }  // namespace
 
-Expansion expandOneBlock(int g, const CycleInput& in) {
+Expansion expandOneBlock(const gcode::CodeInfo& code, const CycleInput& in) {
   const Block& b = in.program->blocks[static_cast<std::size_t>(in.blockIndex)];
-  switch (g) {
-    case 70: {
+  switch (code.action) {
+    case A::Finishing: {
       // G70 P Q is the same block in both forms.
       CycleMemory unused;
-      return expand(70, in, unused);
+      return expand(code, in, unused);
     }
-    case 71:
-    case 72: return roughing(g, in, b);
-    case 73: {
+    case A::TurnRoughing:
+    case A::FaceRoughing: return roughing(code, in, b);
+    case A::PatternRepeating: {
       // D = number of passes, I/K = total relief (I radius): the Fanuc pattern
       // repeat with these values in its memory.
       const Word* d = b.find('D');
@@ -160,14 +162,14 @@ Expansion expandOneBlock(int g, const CycleInput& in) {
       m.g73ReliefZ = length(b, 'K', in.unit, 0.0);
       if (m.g73Count < 1) {
         Expansion e;
-        e.alarm = alarmAt("A122", d ? d : in.gWord, b, {gName(in, 73), "D"});
+        e.alarm = alarmAt("A122", d ? d : in.gWord, b, {gName(in, code), "D"});
         return e;
       }
-      return expand(73, in, m);
+      return expand(code, in, m);
     }
-    case 74:
-    case 75: return grooving(g, in, b);
-    case 76: return threading(in, b);
+    case A::FacePecking:
+    case A::Grooving: return grooving(code, in, b);
+    case A::ThreadCutting: return threading(code, in, b);
     default: return {};
   }
 }

@@ -13,6 +13,8 @@
 
 namespace klueng::core::machine::cycles::detail {
 
+using A = gcode::CodeAction;  // the cycles switch on what a code does, not its number
+
 using gcode::Block;
 using gcode::Word;
 
@@ -147,8 +149,8 @@ std::optional<CycleAlarm> stockRemoval(const CycleInput& in, Profile& profile, d
 // them, `shiftStep` between the rows, then back to the start.
 std::vector<Step> pecks(const Vec2& start, const Vec2& target, double peck, double shiftStep, double retract);
 
-inline std::string gName(const CycleInput& in, int g) {
-  return in.gWord ? "G" + in.gWord->number : fmt::format("G{}", g);
+inline std::string gName(const CycleInput& in, const gcode::CodeInfo& code) {
+  return in.gWord ? "G" + in.gWord->number : fmt::format("G{}", code.number);
 }
 
 }  // namespace klueng::core::machine::cycles::detail

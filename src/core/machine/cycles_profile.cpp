@@ -86,15 +86,18 @@ std::optional<CycleAlarm> readProfile(const CycleInput& in, const Block& cycle, 
     const Word* motionWord = nullptr;
     for (const Word& w : b.words) {
       if (w.letter != 'G' || w.hasDecimalPoint) continue;
-      const int n = w.code();
-      if (n == 0) motion = MotionMode::Rapid;
-      else if (n == 1) motion = MotionMode::Line;
-      else if (n == 2) motion = MotionMode::ArcCw;
-      else if (n == 3) motion = MotionMode::ArcCcw;
-      else if (withFeed && (n == 40 || n == 41 || n == 42)) {
+      // What the code does, from the code table of the run's dialect (Fanuc's when none is given).
+      const gcode::CodeInfo* info =
+          gcode::findCode('G', w.code(), in.profile ? in.profile->dialect : gcode::Dialect::Fanuc);
+      const A a = info ? info->action : A::None;
+      if (a == A::Rapid) motion = MotionMode::Rapid;
+      else if (a == A::Line) motion = MotionMode::Line;
+      else if (a == A::ArcCw) motion = MotionMode::ArcCw;
+      else if (a == A::ArcCcw) motion = MotionMode::ArcCcw;
+      else if (withFeed && (a == A::CompOff || a == A::CompLeft || a == A::CompRight)) {
         Step c;
         c.kind = StepKind::Compensation;
-        c.comp = n == 41 ? NoseCompMode::Left : n == 42 ? NoseCompMode::Right : NoseCompMode::Off;
+        c.comp = a == A::CompLeft ? NoseCompMode::Left : a == A::CompRight ? NoseCompMode::Right : NoseCompMode::Off;
         c.path = Segment::line(pos, pos);
         out.moves.push_back(c);
         out.blockOf.push_back(i);

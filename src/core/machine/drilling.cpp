@@ -16,13 +16,14 @@ double dwellSeconds(const gcode::Word& p, gcode::DwellPUnit rule) {
   return std::max(0.0, p.value / 1000.0);
 }
 
-std::optional<CycleAlarm> readDrillWords(int g, const CycleInput& in, bool fresh, DrillWords& w) {
+std::optional<CycleAlarm> readDrillWords(const gcode::CodeInfo& code, const CycleInput& in, bool fresh, DrillWords& w) {
+  const gcode::CodeAction g = code.action;
   const Block& b = in.program->blocks[static_cast<std::size_t>(in.blockIndex)];
   const gcode::MachineProfile& profile = *in.profile;
   const double u = in.unit;
   const bool inch = u > 1.0;
-  const std::string name = gName(in, g);
-  w.g = g;
+  const std::string name = gName(in, code);
+  w.g = g;  // the kind of hole, kept for the next positions
   if (fresh) {
     // A new cycle: only what this block says (R at the initial level unless given).
     w.rPlane = in.start.x();
@@ -43,7 +44,7 @@ std::optional<CycleAlarm> readDrillWords(int g, const CycleInput& in, bool fresh
   w.hole = axisTarget(b, Vec2(bottom, w.hole.y()), in.offset, u);
   if (const Word* wz = b.find('W')) w.hole.x() = (plane ? in.start.x() : w.rPlane) + wz->value * u;
   if (const Word* q = b.find('Q')) w.peck = std::abs(increment(*q, u));
-  if (g == 83) {
+  if (g == A::PeckDrilling) {
     // Haas G83 I J K: first peck, reduction per peck, least peck (Fanuc has no I J
     // in this cycle; its K is the repeat count).
     if (const Word* i = b.find('I')) w.firstPeck = std::abs(i->value * u);
@@ -51,10 +52,10 @@ std::optional<CycleAlarm> readDrillWords(int g, const CycleInput& in, bool fresh
     if (profile.cycles.drillR == gcode::DrillR::Plane)
       if (const Word* k = b.find('K')) w.minPeck = std::abs(k->value * u);
   }
-  if (const Word* p = b.find('P')) w.dwell = g == 81 ? 0.0 : dwellSeconds(*p, profile.dwellP);
+  if (const Word* p = b.find('P')) w.dwell = g == A::Drilling ? 0.0 : dwellSeconds(*p, profile.dwellP);
   const Word* repeat = profile.cycles.drillR == gcode::DrillR::Plane ? b.find('L') : b.find('K');
   if (repeat) w.repeats = std::max(0, static_cast<int>(std::lround(repeat->value)));
-  if (g == 83 && w.firstPeck <= 0.0 && w.peck > kEps) {
+  if (g == A::PeckDrilling && w.firstPeck <= 0.0 && w.peck > kEps) {
     const double depth = std::abs(w.hole.x() - w.rPlane);
     if (depth / w.peck > kMaxPasses) {
       const Word* q = b.find('Q');
@@ -72,7 +73,7 @@ std::vector<Step> drill(const DrillWords& w, const Vec2& start) {
   const double depth = std::abs(bottom - w.rPlane);
   // Peck depths from the R point: Q each (Haas I, then less by J, never under K).
   std::vector<double> levels;
-  if (w.g == 83 && (w.peck > kEps || w.firstPeck > kEps)) {
+  if (w.g == A::PeckDrilling && (w.peck > kEps || w.firstPeck > kEps)) {
     double done = 0.0;
     double peck = w.firstPeck > kEps ? w.firstPeck : w.peck;
     while (done < depth - kEps && levels.size() < static_cast<std::size_t>(kMaxPasses)) {

@@ -103,31 +103,34 @@ bool Interpreter::executeBlock() {
   bool compChanged = false;
   for (std::size_t i = 0; i < gCount; ++i)
     if (gs[i].info->group == ModalGroup::Units)
-      modal_.units = gs[i].info->number == 20 ? Units::Inch : Units::Mm;
+      modal_.units = gs[i].info->action == CodeAction::Inch ? Units::Inch : Units::Mm;
   if (const Word* t = find('T'))
     if (!selectTool(*t)) return false;
   for (std::size_t i = 0; i < gCount; ++i) {
     const CodeWord& c = gs[i];
-    const int n = c.info->number;
+    const CodeAction a = c.info->action;
     switch (c.info->group) {
       case ModalGroup::Motion:
-        if (n == 0 || n == 1 || n == 2 || n == 3 || n == 32) {
+        if (a == CodeAction::Rapid || a == CodeAction::Line || a == CodeAction::ArcCw || a == CodeAction::ArcCcw ||
+            a == CodeAction::Thread) {
           motionG = &c;
-          singleCycle_ = 0;
-          drillCycle_ = 0;  // a group 01 code ends a drilling cycle
-        } else if (n == 90 || n == 92 || n == 94) {
+          singleCycle_ = nullptr;
+          drillCycle_ = nullptr;  // a group 01 code ends a drilling cycle
+        } else if (a == CodeAction::BoxTurning || a == CodeAction::BoxThreading || a == CodeAction::BoxFacing) {
           singleCycleG = &c;  // G90/G92/G94 stay modal until another group 01 code
-          singleCycle_ = n;
-          drillCycle_ = 0;
+          singleCycle_ = c.info;
+          drillCycle_ = nullptr;
         }  // any other group 01 row of a profile's code table: no motion of its own
         break;
       case ModalGroup::NonModal: oneShotG = &c; break;
       case ModalGroup::NoseComp:
-        modal_.noseComp = n == 41 ? NoseCompMode::Left : n == 42 ? NoseCompMode::Right : NoseCompMode::Off;
+        modal_.noseComp = a == CodeAction::CompLeft    ? NoseCompMode::Left
+                          : a == CodeAction::CompRight ? NoseCompMode::Right
+                                                       : NoseCompMode::Off;
         compChanged = true;
         break;
       case ModalGroup::SpindleMode:
-        if (n == 97) {
+        if (a == CodeAction::ConstantRpm) {
           // G97 without S keeps the rpm G96 last computed (Fanuc).
           if (modal_.spindleMode == SpindleMode::ConstantSurface && !find('S')) {
             MotionContext turning = context();
@@ -139,10 +142,12 @@ bool Interpreter::executeBlock() {
           modal_.spindleMode = SpindleMode::ConstantSurface;
         }
         break;
-      case ModalGroup::FeedMode: modal_.feedMode = n == 98 ? FeedMode::PerMinute : FeedMode::PerRev; break;
-      case ModalGroup::WorkOffset: modal_.workCoordinate = n; break;   // all work offsets are zero
+      case ModalGroup::FeedMode:
+        modal_.feedMode = a == CodeAction::FeedPerMinute ? FeedMode::PerMinute : FeedMode::PerRev;
+        break;
+      case ModalGroup::WorkOffset: modal_.workCoordinate = c.info->number; break;  // G54..: all zero
       case ModalGroup::CannedCycle:
-        if (n == 80) drillCycle_ = 0;  // G80: drilling cycle cancel
+        if (a == CodeAction::CycleCancel) drillCycle_ = nullptr;  // G80: drilling cycle cancel
         else cycleG = &c;              // G70-G76, G81-G83
         break;
       default: break;  // G18 plane, G20/G21 done above
@@ -150,7 +155,7 @@ bool Interpreter::executeBlock() {
   }
   if (const Word* f = find('F')) modal_.feed = f->value * unit();
   if (const Word* s = find('S')) {
-    if (oneShotG && oneShotG->info->number == 50) {
+    if (oneShotG && oneShotG->info->action == CodeAction::CoordinateSet) {
       modal_.rpmClamp = s->value;
     } else if (modal_.spindleMode == SpindleMode::ConstantSurface) {
       modal_.sWord = s->value * (modal_.units == Units::Inch ? kMetresPerFoot : 1.0);
@@ -174,17 +179,17 @@ bool Interpreter::executeBlock() {
     if (!mCode(ms[mi])) return false;
 
   // 3. The motion or one-shot G of the block.
-  if (motionG) modal_.motion = motionFor(motionG->info->number);
+  if (motionG) modal_.motion = motionFor(motionG->info->action);
   if (!cAxisWords()) return false;
   if (cycleG) {
     if (!cannedCycle(*cycleG)) return false;
   } else if (oneShotG) {
     if (!oneShot(*oneShotG)) return false;
-  } else if (singleCycle_ != 0 && (singleCycleG || hasAxisWords())) {
+  } else if (singleCycle_ && (singleCycleG || hasAxisWords())) {
     if (!singleCycle(singleCycleG ? singleCycleG->word : motionWord(nullptr), singleCycleG != nullptr))
       return false;
-  } else if (drillCycle_ != 0 && !motionG && hasAxisWords()) {
-    if (!drillingCycle(drillCycle_, motionWord(nullptr), false)) return false;  // the next hole
+  } else if (drillCycle_ && !motionG && hasAxisWords()) {
+    if (!drillingCycle(*drillCycle_, motionWord(nullptr), false)) return false;  // the next hole
   } else if (hasAxisWords()) {
     if (!move(motionG ? motionG->word : nullptr)) return false;
   }
@@ -196,7 +201,7 @@ bool Interpreter::executeBlock() {
 
   // A chamfer or corner waits for a move in the very next block.
   if (corner_.active && corner_.blockIndex != blockIndex_) {
-    const bool dwellOnly = oneShotG && oneShotG->info->number == 4 && !motionG && mCount == 0;
+    const bool dwellOnly = oneShotG && oneShotG->info->action == CodeAction::Dwell && !motionG && mCount == 0;
     if (!(dwellOnly && profile_.flow.dwellBeforeCornerMove)) return cornerNeedsMove();
   }
   if (const Word* t = find('T')) lastT_ = t->code();
@@ -225,12 +230,12 @@ void Interpreter::emitSnapshot() {
   if (stopped_ && stopEndsRun_) ended_ = true;
 }
 
-MotionMode Interpreter::motionFor(int g) {
-  switch (g) {
-    case 1: return MotionMode::Line;
-    case 2: return MotionMode::ArcCw;
-    case 3: return MotionMode::ArcCcw;
-    case 32: return MotionMode::Thread;
+MotionMode Interpreter::motionFor(CodeAction action) {
+  switch (action) {
+    case CodeAction::Line: return MotionMode::Line;
+    case CodeAction::ArcCw: return MotionMode::ArcCw;
+    case CodeAction::ArcCcw: return MotionMode::ArcCcw;
+    case CodeAction::Thread: return MotionMode::Thread;
     default: return MotionMode::Rapid;
   }
 }
@@ -267,13 +272,13 @@ bool Interpreter::selectTool(const Word& t) {
 }
 
 bool Interpreter::mCode(const CodeWord& c) {
-  const int n = c.info->number;
+  const CodeAction a = c.info->action;
   switch (c.info->group) {
     case ModalGroup::MSpindle:
-      if (n == 5) {
+      if (a == CodeAction::SpindleStop) {
         mach_.spindle = SpindleDir::Stopped;
       } else {
-        const SpindleDir dir = n == 3 ? SpindleDir::Cw : SpindleDir::Ccw;
+        const SpindleDir dir = a == CodeAction::SpindleCw ? SpindleDir::Cw : SpindleDir::Ccw;
         if (mach_.brake) return raise("A106", c.word, {wordText(*c.word)});
         if (mach_.spindle != SpindleDir::Stopped && mach_.spindle != dir)
           return raise("A105", c.word, {wordText(*c.word)});
@@ -281,9 +286,9 @@ bool Interpreter::mCode(const CodeWord& c) {
       }
       updateRpm();
       return true;
-    case ModalGroup::MCoolant: mach_.coolant = n == 8; return true;
+    case ModalGroup::MCoolant: mach_.coolant = a == CodeAction::CoolantOn; return true;
     case ModalGroup::MBrake:
-      if (n == 86 || n == 14) {  // M86; Haas M14 spindle clamp (M15 releases, as M87)
+      if (a == CodeAction::SpindleClamp) {  // M86; Haas M14 (M15 releases, as M87)
         if (mach_.spindle != SpindleDir::Stopped) return raise("A107", c.word, {});
         mach_.brake = true;
       } else {
@@ -292,44 +297,44 @@ bool Interpreter::mCode(const CodeWord& c) {
       }
       return true;
     case ModalGroup::MCAxis:
-      if (n == 41) {
+      if (a == CodeAction::CAxisOn) {
         if (!mach_.brake) return raise("A110", c.word, {});
         mach_.cAxisMode = true;
       } else {
         mach_.cAxisMode = false;
       }
       return true;
-    case ModalGroup::MGear: mach_.gearRange = n - 40; return true;
+    case ModalGroup::MGear: mach_.gearRange = c.info->number - 40; return true;  // M41 = range 1
     case ModalGroup::MThreadChamfer:
       // Haas M23/M24: chamfer out of a thread on/off (a profile without a
       // thread chamfer setting ignores them, as other machine M codes).
-      mach_.threadChamfer = n == 23;
+      mach_.threadChamfer = a == CodeAction::ThreadChamferOn;
       return true;
     case ModalGroup::MProgram:
-      if (n == 1) optionalStopBlock_ = true;
-      if (n == 1 && !options_.optionalStop) return true;
+      if (a == CodeAction::OptionalStop) optionalStopBlock_ = true;
+      if (a == CodeAction::OptionalStop && !options_.optionalStop) return true;
       stopped_ = true;
-      stopEndsRun_ = n == 2 || n == 30 || options_.stopAtM00;
-      if (n == 2 || n == 30) partsMachined_ += 1.0;  // #3901 counts finished parts
+      stopEndsRun_ = a == CodeAction::ProgramEnd || options_.stopAtM00;
+      if (a == CodeAction::ProgramEnd) partsMachined_ += 1.0;  // #3901 counts finished parts
       return true;
     case ModalGroup::MSubprogram: {
       // Performed after the block (interpreter_flow.cpp): M98 P L, M97 P L, M99 [P].
       pending_ = PendingCall{};
-      pending_.kind = n == 98 ? PendingCall::Kind::Subprogram
-                      : n == 97 ? PendingCall::Kind::Local
-                                : PendingCall::Kind::Return;
+      pending_.kind = a == CodeAction::SubprogramCall ? PendingCall::Kind::Subprogram
+                      : a == CodeAction::LocalCall    ? PendingCall::Kind::Local
+                                                      : PendingCall::Kind::Return;
       pending_.word = c.word;
       pending_.where = c.word->range;
       pending_.text = wordText(*c.word);
       const Word* p = find('P');
       const Word* l = find('L');
       pending_.hasP = p != nullptr;
-      const bool packed = n == 98 && profile_.flow.packedRepeats;
+      const bool packed = a == CodeAction::SubprogramCall && profile_.flow.packedRepeats;
       pending_.target = gcode::callTarget(p ? p->value : 0.0, l ? std::optional<double>(l->value) : std::nullopt, packed);
       // A missing target stops the run on this block, before its snapshot.
-      if (n == 98 && pending_.target.repeats > 0 && !index_.program(pending_.target.number))
+      if (a == CodeAction::SubprogramCall && pending_.target.repeats > 0 && !index_.program(pending_.target.number))
         return raise("A135", c.word, {pending_.text, std::to_string(pending_.target.number)});
-      if (n == 97 && pending_.target.repeats > 0 &&
+      if (a == CodeAction::LocalCall && pending_.target.repeats > 0 &&
           index_.findSequence(index_.sectionOf(blockIndex_), pending_.target.number, -1) < 0)
         return raise("A136", c.word, {pending_.text, std::to_string(pending_.target.number)});
       return true;

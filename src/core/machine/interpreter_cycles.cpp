@@ -27,8 +27,8 @@ bool Interpreter::singleCycle(const Word* where, bool fresh) {
   if (const Word* w = find('W')) target.x() = zOf(pos_) + w->value * u;
   if (const Word* r = find('R')) singleTaper_ = r->value * u;  // G90/G92: radius; G94: Z
   singleTarget_ = target;
-  return emitCycle(cycles::singleCycle(singleCycle_, pos_, target, singleTaper_, modal_.feed), where,
-                   fmt::format("G{}", singleCycle_));
+  return emitCycle(cycles::singleCycle(singleCycle_->action, pos_, target, singleTaper_, modal_.feed), where,
+                   fmt::format("G{}", singleCycle_->number));
 }
 
 cycles::CycleInput Interpreter::cycleInput(const Word* g) const {
@@ -60,12 +60,13 @@ bool Interpreter::cycleAlarm(const cycles::CycleAlarm& a) {
 
 // G70-G76 in the profile's form, or a drilling cycle G81-G83.
 bool Interpreter::cannedCycle(const CodeWord& c) {
-  const int g = c.info->number;
-  if (g >= 81 && g <= 83) return drillingCycle(g, c.word, true);
-  if (g != 70 && !compensationAllowed(c.word)) return false;
+  const CodeAction a = c.info->action;
+  if (a == CodeAction::Drilling || a == CodeAction::SpotDrilling || a == CodeAction::PeckDrilling)
+    return drillingCycle(*c.info, c.word, true);
+  if (a != CodeAction::Finishing && !compensationAllowed(c.word)) return false;
   const cycles::CycleInput in = cycleInput(c.word);
-  cycles::Expansion e = profile_.cycleForm == gcode::CycleForm::OneBlock ? cycles::expandOneBlock(g, in)
-                                                                        : cycles::expand(g, in, cycleMemory_);
+  cycles::Expansion e = profile_.cycleForm == gcode::CycleForm::OneBlock ? cycles::expandOneBlock(*c.info, in)
+                                                                        : cycles::expand(*c.info, in, cycleMemory_);
   if (e.alarm) return cycleAlarm(*e.alarm);
   if (!emitCycle(e.steps, c.word, wordText(*c.word))) return false;
   resumeAfter_ = e.resumeAfter;
@@ -74,12 +75,12 @@ bool Interpreter::cannedCycle(const CodeWord& c) {
 
 // G81/G82/G83: `fresh` for the cycle's own block, else a later block with
 // only a hole position (the cycle is modal until G80 or a group 01 code).
-bool Interpreter::drillingCycle(int g, const Word* where, bool fresh) {
+bool Interpreter::drillingCycle(const CodeInfo& g, const Word* where, bool fresh) {
   if (!compensationAllowed(where)) return false;
   const cycles::CycleInput in = cycleInput(where);
   if (auto a = cycles::readDrillWords(g, in, fresh, drill_)) return cycleAlarm(*a);
-  drillCycle_ = g;
-  return emitCycle(cycles::drill(drill_, pos_), where, fmt::format("G{}", g));
+  drillCycle_ = &g;
+  return emitCycle(cycles::drill(drill_, pos_), where, fmt::format("G{}", g.number));
 }
 
 bool Interpreter::cycleReady(const std::vector<cycles::Step>& steps, const Word* g, const std::string& name) {

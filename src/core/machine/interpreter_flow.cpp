@@ -17,12 +17,17 @@ using gcode::StatementKind;
 
 namespace {
 
-bool isMacroCallBlock(const Block& b, int& g) {
-  for (const Word& w : b.words)
-    if (w.letter == 'G' && w.expr < 0 && !w.hasDecimalPoint && (w.code() == 65 || w.code() == 66 || w.code() == 67)) {
-      g = w.code();
+// A G65 / G66 / G67 block (the code table's macro call actions) runs as a call, not as motion.
+bool isMacroCallBlock(const Block& b, gcode::Dialect dialect, CodeWord& g) {
+  for (const Word& w : b.words) {
+    if (w.letter != 'G' || w.expr >= 0 || w.hasDecimalPoint) continue;
+    const CodeInfo* info = gcode::findCode('G', w.code(), dialect);
+    if (info && (info->action == CodeAction::MacroCall || info->action == CodeAction::MacroModalCall ||
+                 info->action == CodeAction::MacroModalCancel)) {
+      g = {&w, info};
       return true;
     }
+  }
   return false;
 }
 
@@ -203,8 +208,8 @@ bool Interpreter::runBlock(int index) {
     return true;
   }
   if (b.hasExpressions && !evaluateWords(b)) return false;
-  int g = 0;
-  if (isMacroCallBlock(*block_, g)) return macroCall(*block_, g);
+  CodeWord g{};
+  if (isMacroCallBlock(*block_, options_.dialect, g)) return macroCall(*block_, g);
   pending_ = PendingCall{};
   if (!executeBlock()) return false;
   if (resumeAfter_ >= 0) {  // G71-G73 skip their own profile
@@ -485,14 +490,11 @@ void Interpreter::setArguments(const Block& b, std::array<MacroValue, 33>& local
   }
 }
 
-bool Interpreter::macroCall(const Block& b, int g) {
-  const Word* gw = nullptr;
-  for (const Word& w : b.words)
-    if (w.letter == 'G' && w.code() == g) gw = &w;
-  const SourceRange at = gw ? gw->range : SourceRange{b.line, 1, 0, b.file};
-  const std::string text = "G" + std::to_string(g);
+bool Interpreter::macroCall(const Block& b, const CodeWord& g) {
+  const SourceRange at = g.word->range;
+  const std::string text = "G" + std::to_string(g.info->number);
   emitSnapshot();
-  if (g == 67) {
+  if (g.info->action == CodeAction::MacroModalCancel) {
     modalCall_.active = false;
     return true;
   }
@@ -506,7 +508,7 @@ bool Interpreter::macroCall(const Block& b, int g) {
   for (const Word& w : b.words)
     if (w.letter == 'L') l = &w;
   const CallTarget t = gcode::callTarget(p->value, l ? std::optional<double>(l->value) : std::nullopt, false);
-  if (g == 66) {
+  if (g.info->action == CodeAction::MacroModalCall) {
     // G66: the macro runs after each move of the following blocks until G67.
     if (!index_.program(t.number)) return flowAlarm("A135", at, {text, std::to_string(t.number)});
     modalCall_.active = true;

@@ -26,6 +26,7 @@
 namespace klueng::core::machine::detail {
 
 using gcode::CodeInfo;
+using gcode::CodeAction;
 using gcode::CallTarget;
 using gcode::Word;
 
@@ -179,7 +180,7 @@ class Interpreter final : public gcode::MacroVariables {
   bool pathWithinTravel(const Segment& s, const Word* where);
   bool rapidTo(const Vec2& target, const Word* where);
   bool executeBlock();
-  static MotionMode motionFor(int g);
+  static MotionMode motionFor(gcode::CodeAction action);
   bool selectTool(const Word& t);
   bool mCode(const CodeWord& c);
   bool cAxisWords();
@@ -198,7 +199,7 @@ class Interpreter final : public gcode::MacroVariables {
   bool writeVariable(int n, gcode::MacroValue v, const SourceRange& at);
   bool jumpTo(int n, const SourceRange& at, const std::string& text);
   bool performCall();
-  bool macroCall(const gcode::Block& b, int g);
+  bool macroCall(const gcode::Block& b, const CodeWord& g);
   bool modalMacroCall();
   bool callProgram(CallFrame::Kind kind, int number, int repeats, const SourceRange& at, const std::string& text,
                    const gcode::Block* arguments);
@@ -231,7 +232,7 @@ class Interpreter final : public gcode::MacroVariables {
   bool singleCycle(const Word* where, bool fresh);
   cycles::CycleInput cycleInput(const Word* g) const;
   bool cannedCycle(const CodeWord& c);
-  bool drillingCycle(int g, const Word* where, bool fresh);
+  bool drillingCycle(const CodeInfo& g, const Word* where, bool fresh);
   bool cycleAlarm(const cycles::CycleAlarm& a);
   bool cycleReady(const std::vector<cycles::Step>& steps, const Word* g, const std::string& name);
   bool emitCycle(const std::vector<cycles::Step>& steps, const Word* g, const std::string& name);
@@ -251,10 +252,10 @@ class Interpreter final : public gcode::MacroVariables {
   std::array<const Word*, 26> byLetter_{};
   int blockIndex_ = 0;
   int resumeAfter_ = -1;               // block index the run continues after (G71-G73 profile)
-  int singleCycle_ = 0;                // 90, 92 or 94 while a single cycle is modal
+  const CodeInfo* singleCycle_ = nullptr;  // G90, G92 or G94 while a single cycle is modal
   Vec2 singleTarget_ = Vec2::Zero();   // its modal X Z (controlled point)
   double singleTaper_ = 0.0;           // its modal R (mm)
-  int drillCycle_ = 0;                 // 81, 82 or 83 while a drilling cycle is modal (G80 ends it)
+  const CodeInfo* drillCycle_ = nullptr;   // G81, G82 or G83 while a drilling cycle is modal (G80 ends it)
   cycles::DrillWords drill_;           // its modal words
   cycles::CycleMemory cycleMemory_;
   bool stopped_ = false;

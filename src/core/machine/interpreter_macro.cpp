@@ -16,7 +16,7 @@ using gcode::MacroValue;
 int Interpreter::modalCode(int group) const {
   switch (group) {
     case 1:
-      if (singleCycle_ != 0) return singleCycle_;
+      if (singleCycle_) return singleCycle_->number;
       switch (modal_.motion) {
         case MotionMode::Rapid: return 0;
         case MotionMode::Line: return 1;
@@ -29,7 +29,7 @@ int Interpreter::modalCode(int group) const {
     case 5: return modal_.feedMode == FeedMode::PerMinute ? 98 : 99;
     case 6: return modal_.units == Units::Inch ? 20 : 21;
     case 7: return modal_.noseComp == NoseCompMode::Left ? 41 : modal_.noseComp == NoseCompMode::Right ? 42 : 40;
-    case 10: return drillCycle_ != 0 ? drillCycle_ : 80;
+    case 10: return drillCycle_ ? drillCycle_->number : 80;
     case 12: return modalCall_.active ? 66 : 67;
     case 14: return modal_.workCoordinate;
     case 16: return 18;

@@ -54,9 +54,9 @@ bool Interpreter::referenceReturn(const Word* w) {
 
 bool Interpreter::oneShot(const CodeWord& c) {
   const Word* w = c.word;
-  switch (c.info->number) {
-    case 4: return dwell(w);
-    case 27: {
+  switch (c.info->action) {
+    case CodeAction::Dwell: return dwell(w);
+    case CodeAction::ReferenceCheck: {
       if (!hasAxisWords()) return true;
       if (!rapidTo(axisTarget(), w)) return false;
       const Vec2 ref = referencePoint();
@@ -67,9 +67,8 @@ bool Interpreter::oneShot(const CodeWord& c) {
       mach_.positionCheck = true;
       return true;
     }
-    case 28:
-    case 30: return referenceReturn(w);  // G30 P2..P4 would pick among several points; there is one
-    case 29: {
+    case CodeAction::ReferenceReturn: return referenceReturn(w);  // G30 P2..P4 would pick among several points; there is one
+    case CodeAction::ReturnFromReference: {
       // From the reference point via the G28 intermediate point to the target.
       if (!hasAxisWords()) return true;
       const Vec2 target = axisTarget();
@@ -79,7 +78,7 @@ bool Interpreter::oneShot(const CodeWord& c) {
       if (!rapidTo(via, w)) return false;
       return rapidTo(target, w);
     }
-    case 50: {
+    case CodeAction::CoordinateSet: {
       // Coordinate setting: the tool's controlled point now reads X Z.
       if (!hasAxisWords()) return true;  // G50 S alone: the clamp, handled with the S word
       const Vec2 declared = axisTarget();
@@ -88,7 +87,7 @@ bool Interpreter::oneShot(const CodeWord& c) {
       sink_.setPosition(pos_);
       return true;
     }
-    case 53: {
+    case CodeAction::MachineCoordinates: {
       // Rapid to a position in machine coordinates (offsets ignored). Machine
       // zero is the reference point, as on the real controls: Fanuc sets the
       // machine coordinate system so that the reference position reads

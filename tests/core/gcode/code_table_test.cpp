@@ -135,3 +135,30 @@ TEST(AddressTable, RuleTwoLettersAreOncePerBlock) {
 
 }  // namespace
 }  // namespace klueng::core::gcode
+
+namespace klueng::core::gcode {
+namespace {
+
+// Issue 12: the interpreter and the cycles switch on what a code does. Every row of a
+// group they act on says it; the rows the simulator only shows (G18, M10 chuck ...) say None.
+TEST(CodeTable, EveryCodeTheInterpreterRunsHasItsAction) {
+  const ModalGroup acted[] = {ModalGroup::Motion,   ModalGroup::NonModal,  ModalGroup::Units,     ModalGroup::NoseComp,
+                              ModalGroup::SpindleMode, ModalGroup::FeedMode, ModalGroup::WorkOffset, ModalGroup::CannedCycle,
+                              ModalGroup::MacroModal, ModalGroup::MSpindle, ModalGroup::MCoolant, ModalGroup::MCAxis,
+                              ModalGroup::MBrake,   ModalGroup::MGear,     ModalGroup::MProgram,  ModalGroup::MSubprogram,
+                              ModalGroup::MThreadChamfer};
+  for (const CodeInfo& row : codeTable()) {
+    const bool isActed = std::find(std::begin(acted), std::end(acted), row.group) != std::end(acted);
+    if (isActed) EXPECT_NE(row.action, CodeAction::None) << row.letter << row.number;
+    else EXPECT_EQ(row.action, CodeAction::None) << row.letter << row.number;
+  }
+  // A number with two meanings has two actions: M41 is the C axis (classic) or gear range 1 (Fanuc).
+  EXPECT_EQ(findCode('M', 41, Dialect::Classic)->action, CodeAction::CAxisOn);
+  EXPECT_EQ(findCode('M', 41, Dialect::Fanuc)->action, CodeAction::GearRange);
+  EXPECT_EQ(findCode('M', 14, Dialect::Haas)->action, CodeAction::SpindleClamp);
+  EXPECT_EQ(findCode('G', 30, Dialect::Fanuc)->action, CodeAction::ReferenceReturn);
+  EXPECT_EQ(findCode('G', 71, Dialect::Haas)->action, CodeAction::TurnRoughing);
+}
+
+}  // namespace
+}  // namespace klueng::core::gcode
