@@ -1,22 +1,23 @@
 // Catalog part for the cut module: code, English, Thai. Keep codes sorted.
 // Alarm args: {0} = Z, {1} = X (diameter) of the controlled point where it happened.
 #include "catalog_parts.h"
+#include "klueng/core/diagnostic_codes.h"
 
 namespace klueng::core::catalog {
 
 namespace {
 constexpr MessageText kMessages[] = {
-    {"A301", "Rapid move runs into the stock at Z{0} X{1}: a rapid move may not remove material",
+    {codes::kRapidIntoStock, "Rapid move runs into the stock at Z{0} X{1}: a rapid move may not remove material",
      "การเคลื่อนที่เร็วชนชิ้นงานที่ Z{0} X{1}: การเคลื่อนที่เร็วต้องไม่ตัดเนื้อชิ้นงาน"},
-    {"A302", "Cutting while the spindle is not turning, at Z{0} X{1}",
+    {codes::kCutWithSpindleStopped, "Cutting while the spindle is not turning, at Z{0} X{1}",
      "มีดตัดกินเนื้อชิ้นงานขณะเพลาจับงานหยุดหมุน ที่ Z{0} X{1}"},
-    {"A303", "The tool holder hits the stock at Z{0} X{1}",
+    {codes::kHolderHitsStock, "The tool holder hits the stock at Z{0} X{1}",
      "ด้ามจับมีดชนชิ้นงานที่ Z{0} X{1}"},
-    {"A304", "The tool hits the chuck at Z{0} X{1}",
+    {codes::kToolHitsChuck, "The tool hits the chuck at Z{0} X{1}",
      "มีดตัดชนหัวจับ (ชัค) ที่ Z{0} X{1}"},
-    {"A310", "Tool bitmap {0} has no cutting-edge pixels (every colour other than black and white is cutting edge)",
+    {codes::kBitmapHasNoEdge, "Tool bitmap {0} has no cutting-edge pixels (every colour other than black and white is cutting edge)",
      "ภาพมีดตัด {0} ไม่มีจุดภาพของคมตัด (สีอื่นที่ไม่ใช่สีดำและสีขาวคือคมตัด)"},
-    {"A311", "Tool bitmap {0} is {1} x {2} pixels; a tool bitmap may be at most {3} x {3} pixels (2 pixels per mm)",
+    {codes::kBitmapTooLarge, "Tool bitmap {0} is {1} x {2} pixels; a tool bitmap may be at most {3} x {3} pixels (2 pixels per mm)",
      "ภาพมีดตัด {0} มีขนาด {1} x {2} จุดภาพ ซึ่งใหญ่เกินไป ภาพมีดตัดต้องไม่เกิน {3} x {3} จุดภาพ (2 จุดภาพต่อ มม.)"},
 };
 }  // namespace

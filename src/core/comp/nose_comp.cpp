@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "klueng/core/comp/intersect.h"
+#include "klueng/core/diagnostic_codes.h"
 
 namespace klueng::core::comp {
 
@@ -299,11 +300,11 @@ std::optional<Segment> offsetSegment(const Segment& s, double d) {
 
 std::string_view interferenceCode(Interference::Kind kind) {
   switch (kind) {
-    case Interference::Kind::ArcSmallerThanRadius: return "A201";
-    case Interference::Kind::PathReversal: return "A202";
-    case Interference::Kind::ArcInStartUpOrCancel: return "A203";
+    case Interference::Kind::ArcSmallerThanRadius: return codes::kConcaveArcTooSmall;
+    case Interference::Kind::PathReversal: return codes::kNoseDoesNotFit;
+    case Interference::Kind::ArcInStartUpOrCancel: return codes::kCompStartOrCancelOnArc;
   }
-  return "A202";
+  return codes::kNoseDoesNotFit;
 }
 
 std::vector<std::string> interferenceArgs(const Interference& i, const CompInput& in) {

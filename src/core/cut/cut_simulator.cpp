@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "sweep.h"
+#include "klueng/core/diagnostic_codes.h"
 
 namespace klueng::core::cut {
 
@@ -459,7 +460,7 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
     const auto inBoxes = boxes(s0, s);
     if (nearStock && m.kind != MoveKind::Rapid && m.spindle != machine::SpindleDir::Stopped)
       forEachInterval(ctx, inNose, inBoxes, false, [&](int i, double lo, double hi) { stock_.remove(i, lo, hi); });
-    raise("A304", s);
+    raise(codes::kToolHitsChuck, s);
     return;
   }
   if (!nearStock) return;
@@ -484,7 +485,7 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
       const auto n = nose(s0, s);
       const auto b = boxes(s0, s);
       const bool edge = touches(n, b, false);
-      raise(m.kind == MoveKind::Rapid ? "A301" : (edge ? "A302" : "A303"), s);
+      raise(m.kind == MoveKind::Rapid ? codes::kRapidIntoStock : (edge ? codes::kCutWithSpindleStopped : codes::kHolderHitsStock), s);
     }
     return;
   }
@@ -492,7 +493,7 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
   forEachInterval(ctx, nosePieces, boxPieces, false, [&](int i, double lo, double hi) { stock_.remove(i, lo, hi); });
   if (options_.detectCollisions && !tool->holder.empty() && overlapsStock(ctx, nosePieces, boxPieces, true)) {
     const double s = earliest([&](double e) { return overlapsStock(ctx, nose(s0, e), boxes(s0, e), true); });
-    raise("A303", s);
+    raise(codes::kHolderHitsStock, s);
   }
 }
 

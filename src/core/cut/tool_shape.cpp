@@ -5,6 +5,7 @@
 #include <string>
 
 #include <fmt/format.h>
+#include "klueng/core/diagnostic_codes.h"
 
 namespace klueng::core::cut {
 
@@ -167,12 +168,12 @@ io::ReadResult<ToolShape> makeToolShape(const io::RgbImage& image, const std::st
   const int maxPixels = maxToolPixels(ppm);
   if (image.width <= 0 || image.height <= 0 ||
       image.pixels.size() != static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height)) {
-    result.diagnostics.push_back(toolError("A310", {fileName}));
+    result.diagnostics.push_back(toolError(codes::kBitmapHasNoEdge, {fileName}));
     return result;
   }
   if (image.width > maxPixels || image.height > maxPixels) {
     result.diagnostics.push_back(toolError(
-        "A311", {fileName, std::to_string(image.width), std::to_string(image.height), std::to_string(maxPixels)}));
+        codes::kBitmapTooLarge, {fileName, std::to_string(image.width), std::to_string(image.height), std::to_string(maxPixels)}));
     return result;
   }
   int c0 = image.width, c1 = -1, r0 = image.height, r1 = -1;
@@ -185,7 +186,7 @@ io::ReadResult<ToolShape> makeToolShape(const io::RgbImage& image, const std::st
         r1 = std::max(r1, row);
       }
   if (c1 < 0) {
-    result.diagnostics.push_back(toolError("A310", {fileName}));
+    result.diagnostics.push_back(toolError(codes::kBitmapHasNoEdge, {fileName}));
     return result;
   }
 
@@ -239,7 +240,7 @@ io::ReadResult<ToolShape> loadToolShape(const std::string& path, double noseRadi
   io::ReadResult<ToolShape> result;
   result.diagnostics = image.diagnostics;
   if (!image.value || hasErrors(image.diagnostics)) {
-    if (!hasErrors(result.diagnostics)) result.diagnostics.push_back(toolError("A310", {path}));
+    if (!hasErrors(result.diagnostics)) result.diagnostics.push_back(toolError(codes::kBitmapHasNoEdge, {path}));
     return result;
   }
   io::ReadResult<ToolShape> shape = makeToolShape(*image.value, path, noseRadius, tip, pixelsPerMm);

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "klueng/core/gcode/macro.h"
+#include "klueng/core/diagnostic_codes.h"
 
 namespace klueng::core::gcode {
 
@@ -95,7 +96,7 @@ EvalResult evaluate(const Expression& expr, MacroVariables& variables) {
         const MacroValue n = pop();
         const int number = variableNumber(n.value);
         MacroValue v;
-        const char* code = "A137";
+        const char* code = codes::kNoSuchVariable;
         if (!variables.read(number, v, code)) return fail(code, {std::to_string(number)});
         stack.push_back(v);
         break;
@@ -126,11 +127,11 @@ EvalResult evaluate(const Expression& expr, MacroVariables& variables) {
           case ExprOp::Sub: v = a - b; break;
           case ExprOp::Mul: v = a * b; break;
           case ExprOp::Div:
-            if (b == 0.0) return fail("A131", {macroNumberText(a), "/"});
+            if (b == 0.0) return fail(codes::kDivisionByZero, {macroNumberText(a), "/"});
             v = a / b;
             break;
           case ExprOp::Mod:
-            if (roundHalfAway(b) == 0.0) return fail("A131", {macroNumberText(a), "MOD"});
+            if (roundHalfAway(b) == 0.0) return fail(codes::kDivisionByZero, {macroNumberText(a), "MOD"});
             v = std::fmod(roundHalfAway(a), roundHalfAway(b));
             break;
           case ExprOp::And: v = static_cast<double>(bits(a) & bits(b)); break;
@@ -142,14 +143,14 @@ EvalResult evaluate(const Expression& expr, MacroVariables& variables) {
           case ExprOp::Le: v = a <= b ? 1.0 : 0.0; break;
           case ExprOp::Atan2: {
             // ATAN[a]/[b] = the angle of the point (b, a): 0..360 (Fanuc's default range).
-            if (a == 0.0 && b == 0.0) return fail("A138", {"ATAN", "0, 0"});
+            if (a == 0.0 && b == 0.0) return fail(codes::kOutsideFunctionDomain, {"ATAN", "0, 0"});
             v = std::atan2(a, b) / kDeg;
             if (v < 0) v += 360.0;
             break;
           }
           case ExprOp::Pow:
             v = std::pow(a, b);
-            if (!std::isfinite(v)) return fail("A138", {"POW", macroNumberText(a) + ", " + macroNumberText(b)});
+            if (!std::isfinite(v)) return fail(codes::kOutsideFunctionDomain, {"POW", macroNumberText(a) + ", " + macroNumberText(b)});
             break;
           default: break;
         }
@@ -163,20 +164,20 @@ EvalResult evaluate(const Expression& expr, MacroVariables& variables) {
           case ExprOp::Sin: v = std::sin(a * kDeg); break;
           case ExprOp::Cos: v = std::cos(a * kDeg); break;
           case ExprOp::Tan:
-            if (std::abs(std::fmod(std::abs(a), 180.0) - 90.0) < 1e-12) return fail("A138", {"TAN", macroNumberText(a)});
+            if (std::abs(std::fmod(std::abs(a), 180.0) - 90.0) < 1e-12) return fail(codes::kOutsideFunctionDomain, {"TAN", macroNumberText(a)});
             v = std::tan(a * kDeg);
             break;
           case ExprOp::Asin:
-            if (a < -1.0 || a > 1.0) return fail("A138", {"ASIN", macroNumberText(a)});
+            if (a < -1.0 || a > 1.0) return fail(codes::kOutsideFunctionDomain, {"ASIN", macroNumberText(a)});
             v = std::asin(a) / kDeg;
             break;
           case ExprOp::Acos:
-            if (a < -1.0 || a > 1.0) return fail("A138", {"ACOS", macroNumberText(a)});
+            if (a < -1.0 || a > 1.0) return fail(codes::kOutsideFunctionDomain, {"ACOS", macroNumberText(a)});
             v = std::acos(a) / kDeg;
             break;
           case ExprOp::Atan: v = std::atan(a) / kDeg; break;
           case ExprOp::Sqrt:
-            if (a < 0.0) return fail("A138", {"SQRT", macroNumberText(a)});
+            if (a < 0.0) return fail(codes::kOutsideFunctionDomain, {"SQRT", macroNumberText(a)});
             v = std::sqrt(a);
             break;
           case ExprOp::Abs: v = std::abs(a); break;
@@ -184,12 +185,12 @@ EvalResult evaluate(const Expression& expr, MacroVariables& variables) {
           case ExprOp::Fix: v = fix(a); break;
           case ExprOp::Fup: v = fup(a); break;
           case ExprOp::Ln:
-            if (a <= 0.0) return fail("A138", {"LN", macroNumberText(a)});
+            if (a <= 0.0) return fail(codes::kOutsideFunctionDomain, {"LN", macroNumberText(a)});
             v = std::log(a);
             break;
           case ExprOp::Exp:
             v = std::exp(a);
-            if (!std::isfinite(v)) return fail("A138", {"EXP", macroNumberText(a)});
+            if (!std::isfinite(v)) return fail(codes::kOutsideFunctionDomain, {"EXP", macroNumberText(a)});
             break;
           case ExprOp::Bin: v = fromBcd(a); break;
           case ExprOp::Bcd: v = toBcd(a); break;
@@ -201,7 +202,7 @@ EvalResult evaluate(const Expression& expr, MacroVariables& variables) {
     }
   }
   r.value = stack.empty() ? MacroValue{} : stack.back();
-  if (!r.value.vacant && !std::isfinite(r.value.value)) return fail("A138", {"=", "overflow"});
+  if (!r.value.vacant && !std::isfinite(r.value.value)) return fail(codes::kOutsideFunctionDomain, {"=", "overflow"});
   return r;
 }
 

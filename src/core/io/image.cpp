@@ -9,6 +9,7 @@
 
 #include "io/text_util.h"
 #include "klueng/core/io/program_file.h"
+#include "klueng/core/diagnostic_codes.h"
 
 namespace klueng::core::io {
 
@@ -56,11 +57,11 @@ ReadResult<RgbImage> decodeBmp(std::string_view b, const std::string& fileName) 
   ReadResult<RgbImage> result;
   auto& diags = result.diagnostics;
   const auto damaged = [&](const char* what) {
-    diags.push_back(fileError("F154", fileName, {what}));
+    diags.push_back(fileError(codes::kBmpHeaderDamaged, fileName, {what}));
     return result;
   };
   if (b.size() < 14 + 12) {
-    diags.push_back(fileError("F151", fileName));
+    diags.push_back(fileError(codes::kImageTruncated, fileName));
     return result;
   }
   const std::uint32_t pixelOffset = readLe32(b, 10);
@@ -69,7 +70,7 @@ ReadResult<RgbImage> decodeBmp(std::string_view b, const std::string& fileName) 
       headerSize != 64 && headerSize != 108 && headerSize != 124)
     return damaged("unknown header size");
   if (14 + static_cast<std::size_t>(headerSize) > b.size()) {
-    diags.push_back(fileError("F151", fileName));
+    diags.push_back(fileError(codes::kImageTruncated, fileName));
     return result;
   }
 
@@ -94,7 +95,7 @@ ReadResult<RgbImage> decodeBmp(std::string_view b, const std::string& fileName) 
   const bool topDown = height < 0;
   if (topDown) height = -height;
   if (width < 1 || height < 1 || width > kMaxSide || height > kMaxSide) {
-    diags.push_back(fileError("F152", fileName, {std::to_string(width), std::to_string(height)}));
+    diags.push_back(fileError(codes::kImageSizeRefused, fileName, {std::to_string(width), std::to_string(height)}));
     return result;
   }
 
@@ -106,7 +107,7 @@ ReadResult<RgbImage> decodeBmp(std::string_view b, const std::string& fileName) 
        (compression == kRgb || compression == kBitfields || compression == kAlphaBitfields)) ||
       (bitsPerPixel == 24 && compression == kRgb);
   if (!supported) {
-    diags.push_back(fileError("F153", fileName, {std::to_string(bitsPerPixel), std::to_string(compression)}));
+    diags.push_back(fileError(codes::kUnsupportedBmp, fileName, {std::to_string(bitsPerPixel), std::to_string(compression)}));
     return result;
   }
 
@@ -123,7 +124,7 @@ ReadResult<RgbImage> decodeBmp(std::string_view b, const std::string& fileName) 
     const int count = compression == kAlphaBitfields || headerSize >= 56 ? 4 : 3;
     if (headerSize == 40) afterHeader += static_cast<std::size_t>(count) * 4;
     if (at + static_cast<std::size_t>(count) * 4 > b.size()) {
-      diags.push_back(fileError("F151", fileName));
+      diags.push_back(fileError(codes::kImageTruncated, fileName));
       return result;
     }
     for (int i = 0; i < count; ++i) masks[i] = readLe32(b, at + static_cast<std::size_t>(i) * 4);
@@ -136,7 +137,7 @@ ReadResult<RgbImage> decodeBmp(std::string_view b, const std::string& fileName) 
     const std::uint32_t count = colorsUsed == 0 ? maxColors : colorsUsed;
     if (count > maxColors) return damaged("too many palette colours");
     if (afterHeader + static_cast<std::size_t>(count) * paletteEntrySize > b.size()) {
-      diags.push_back(fileError("F151", fileName));
+      diags.push_back(fileError(codes::kImageTruncated, fileName));
       return result;
     }
     palette.resize(count);
@@ -152,7 +153,7 @@ ReadResult<RgbImage> decodeBmp(std::string_view b, const std::string& fileName) 
   const std::size_t needed = static_cast<std::size_t>(pixelOffset) + stride * static_cast<std::size_t>(height);
   if (pixelOffset < afterHeader || pixelOffset > b.size()) return damaged("pixel data offset out of range");
   if (needed > b.size()) {
-    diags.push_back(fileError("F151", fileName));
+    diags.push_back(fileError(codes::kImageTruncated, fileName));
     return result;
   }
 
@@ -176,7 +177,7 @@ ReadResult<RgbImage> decodeBmp(std::string_view b, const std::string& fileName) 
         const unsigned shift = 8 - bitsPerPixel - static_cast<unsigned>(bit % 8);
         const std::uint32_t index = (byte >> shift) & ((1u << bitsPerPixel) - 1);
         if (index >= palette.size()) {
-          diags.push_back(fileError("F156", fileName, {std::to_string(index), std::to_string(palette.size())}));
+          diags.push_back(fileError(codes::kColourOutsidePalette, fileName, {std::to_string(index), std::to_string(palette.size())}));
           return result;
         }
         rgb = palette[index];
@@ -212,20 +213,20 @@ ReadResult<RgbImage> decodePng(std::string_view bytes, const std::string& fileNa
   std::memset(&png, 0, sizeof png);
   png.version = PNG_IMAGE_VERSION;
   if (!png_image_begin_read_from_memory(&png, bytes.data(), bytes.size())) {
-    result.diagnostics.push_back(fileError("F155", fileName, {png.message}));
+    result.diagnostics.push_back(fileError(codes::kPngDamaged, fileName, {png.message}));
     png_image_free(&png);
     return result;
   }
   if (png.width < 1 || png.height < 1 || png.width > kMaxSide || png.height > kMaxSide) {
     result.diagnostics.push_back(
-        fileError("F152", fileName, {std::to_string(png.width), std::to_string(png.height)}));
+        fileError(codes::kImageSizeRefused, fileName, {std::to_string(png.width), std::to_string(png.height)}));
     png_image_free(&png);
     return result;
   }
   png.format = PNG_FORMAT_RGBA;  // palette, grey and 16-bit all become 8-bit RGBA
   std::vector<unsigned char> rgba(PNG_IMAGE_SIZE(png));
   if (!png_image_finish_read(&png, nullptr, rgba.data(), 0, nullptr)) {
-    result.diagnostics.push_back(fileError("F155", fileName, {png.message}));
+    result.diagnostics.push_back(fileError(codes::kPngDamaged, fileName, {png.message}));
     png_image_free(&png);
     return result;
   }
@@ -250,14 +251,14 @@ ReadResult<RgbImage> decodePng(std::string_view bytes, const std::string& fileNa
 ReadResult<RgbImage> decodeImage(std::string_view bytes, const std::string& fileName) {
   if (bytes.size() > detail::kMaxFileBytes) {
     ReadResult<RgbImage> result;
-    result.diagnostics.push_back(fileError("F103", fileName, {std::to_string(bytes.size())}));
+    result.diagnostics.push_back(fileError(codes::kFileTooLarge, fileName, {std::to_string(bytes.size())}));
     return result;
   }
   if (bytes.size() >= 2 && bytes[0] == 'B' && bytes[1] == 'M') return decodeBmp(bytes, fileName);
   if (bytes.size() >= 8 && bytes.substr(0, 8) == std::string_view("\x89PNG\r\n\x1a\n", 8))
     return decodePng(bytes, fileName);
   ReadResult<RgbImage> result;
-  result.diagnostics.push_back(fileError("F150", fileName));
+  result.diagnostics.push_back(fileError(codes::kNotAnImage, fileName));
   return result;
 }
 

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "io/text_util.h"
+#include "klueng/core/diagnostic_codes.h"
 
 namespace klueng::core::io {
 
@@ -42,7 +43,7 @@ ReadResult<MacroVariables> parseMacroVariables(std::string_view text, const std:
     };
     const std::size_t eq = body.find('=');
     if (body.front() != '#' || eq == std::string_view::npos) {
-      bad("F170", std::string(body.substr(0, 40)));
+      bad(codes::kNotVariableLine, std::string(body.substr(0, 40)));
       continue;
     }
     const std::string_view name = trim(body.substr(1, eq - 1));
@@ -53,11 +54,11 @@ ReadResult<MacroVariables> parseMacroVariables(std::string_view text, const std:
     const auto n2 = std::from_chars(value.data(), value.data() + value.size(), v);
     if (name.empty() || n1.ec != std::errc() || n1.ptr != name.data() + name.size() || value.empty() ||
         n2.ec != std::errc() || n2.ptr != value.data() + value.size() || !std::isfinite(v)) {
-      bad("F170", std::string(body.substr(0, 40)));
+      bad(codes::kNotVariableLine, std::string(body.substr(0, 40)));
       continue;
     }
     if (number < 500 || number > 999) {
-      bad("F171", std::to_string(number));
+      bad(codes::kVariableNotKept, std::to_string(number));
       continue;
     }
     values[number] = v;

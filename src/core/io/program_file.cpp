@@ -14,6 +14,7 @@
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include "klueng/core/diagnostic_codes.h"
 #endif
 
 namespace klueng::core::io {
@@ -94,7 +95,7 @@ void parseStockSize(std::string_view line, int lineNumber, const SizeCodes& code
     return;
   }
   if (*parsed <= 0.0) {
-    diags.push_back(makeDiagnostic(Severity::Error, "E213", lineNumber, fieldColumn, fieldLength,
+    diags.push_back(makeDiagnostic(Severity::Error, codes::kStockSizeNotPositive, lineNumber, fieldColumn, fieldLength,
                                    {fileName, std::string(number), std::string(field)}));
     return;
   }
@@ -108,16 +109,16 @@ void parseDiameterLine(std::string_view line, const std::string& fileName, JobHe
   const std::size_t x = line.find_first_of("xX");
   h.bore = 0.0;
   if (x == std::string_view::npos) {
-    parseStockSize(line, 4, {"F115", "F111", "F112"}, fileName, h.diameter, h.diameterUnit, diags);
+    parseStockSize(line, 4, {codes::kDiameterMissing, codes::kDiameterUnitDigit, codes::kDiameterNotNumber}, fileName, h.diameter, h.diameterUnit, diags);
     return;
   }
   const std::size_t before = diags.size();
-  parseStockSize(line.substr(0, x), 4, {"F115", "F111", "F112"}, fileName, h.diameter, h.diameterUnit, diags);
+  parseStockSize(line.substr(0, x), 4, {codes::kDiameterMissing, codes::kDiameterUnitDigit, codes::kDiameterNotNumber}, fileName, h.diameter, h.diameterUnit, diags);
   const std::string_view boreText = detail::trim(line.substr(x + 1));
   const double bore = detail::parseNumber(boreText).value_or(0.0);
   if (diags.size() != before) return;
   if (!(bore > 0.0) || bore >= h.diameter) {
-    diags.push_back(makeDiagnostic(Severity::Error, "F118", 4, detail::columnOf(line, boreText),
+    diags.push_back(makeDiagnostic(Severity::Error, codes::kBadBore, 4, detail::columnOf(line, boreText),
                                    utf8Length(boreText),
                                    {fileName, std::string(boreText), detail::formatNumber(h.diameter)}));
     return;
@@ -153,7 +154,7 @@ void hintBrokenHeader(const std::vector<std::string_view>& lines, const std::str
   for (const int n : {4, 5}) {
     const std::string_view field = detail::trim(lines[static_cast<std::size_t>(n - 1)]);
     if (field.empty() || !isAsciiDigit(field.front()) || isUnitDigitSize(field, n == 4)) continue;
-    diags.push_back(makeDiagnostic(Severity::Warning, "F117", n, detail::columnOf(lines[n - 1], field),
+    diags.push_back(makeDiagnostic(Severity::Warning, codes::kPlainGcodeFile, n, detail::columnOf(lines[n - 1], field),
                                    utf8Length(field), {fileName, std::string(field), std::to_string(n)}));
     return;
   }
@@ -178,7 +179,7 @@ ReadResult<ProgramFile> parseProgramFile(std::string_view bytes, const JobHeader
   ReadResult<ProgramFile> result;
   auto& diags = result.diagnostics;
   if (bytes.size() > detail::kMaxFileBytes) {
-    diags.push_back(makeDiagnostic(Severity::Error, "F103", 0, 0, 0,
+    diags.push_back(makeDiagnostic(Severity::Error, codes::kFileTooLarge, 0, 0, 0,
                                    {fileName, std::to_string(bytes.size())}));
     return result;
   }
@@ -192,7 +193,7 @@ ReadResult<ProgramFile> parseProgramFile(std::string_view bytes, const JobHeader
     }
   }
   if (const auto nul = detail::findNulByte(bytes)) {
-    diags.push_back(makeDiagnostic(Severity::Error, "F104", nul->line, nul->column, 1, {fileName}));
+    diags.push_back(makeDiagnostic(Severity::Error, codes::kBinaryFile, nul->line, nul->column, 1, {fileName}));
     return result;
   }
 
@@ -202,7 +203,7 @@ ReadResult<ProgramFile> parseProgramFile(std::string_view bytes, const JobHeader
   std::vector<std::string_view> lines = detail::splitLines(text);
 
   if (lines.empty()) {
-    diags.push_back(makeDiagnostic(Severity::Error, "F105", 1, 1, 0, {fileName}));
+    diags.push_back(makeDiagnostic(Severity::Error, codes::kEmptyFile, 1, 1, 0, {fileName}));
     file.plainGcode = true;
     file.gcodeFirstLine = 1;
     result.value = std::move(file);
@@ -215,7 +216,7 @@ ReadResult<ProgramFile> parseProgramFile(std::string_view bytes, const JobHeader
     if (lines[i].size() <= static_cast<std::size_t>(detail::kMaxLineChars)) continue;
     const int chars = utf8Length(lines[i]);
     if (chars <= detail::kMaxLineChars) continue;
-    diags.push_back(makeDiagnostic(Severity::Error, "F106", static_cast<int>(i) + 1, 1, 0,
+    diags.push_back(makeDiagnostic(Severity::Error, codes::kLineTooLong, static_cast<int>(i) + 1, 1, 0,
                                    {fileName, std::to_string(chars),
                                     std::to_string(detail::kMaxLineChars)}));
     lines[i] = std::string_view();
@@ -240,11 +241,11 @@ ReadResult<ProgramFile> parseProgramFile(std::string_view bytes, const JobHeader
     file.header.programmer = std::string(detail::trim(headerLine(6)));
     if (lines.size() < static_cast<std::size_t>(kHeaderLines)) {
       const int last = static_cast<int>(lines.size());
-      diags.push_back(makeDiagnostic(Severity::Error, "F110", last, utf8Length(lines.back()) + 1, 0,
+      diags.push_back(makeDiagnostic(Severity::Error, codes::kHeaderTooShort, last, utf8Length(lines.back()) + 1, 0,
                                      {fileName, std::to_string(last)}));
     }
     parseDiameterLine(lines[3], fileName, file.header, diags);
-    parseStockSize(lines[4], 5, {"F116", "F113", "F114"}, fileName, file.header.length,
+    parseStockSize(lines[4], 5, {codes::kLengthMissing, codes::kLengthUnitDigit, codes::kLengthNotNumber}, fileName, file.header.length,
                    file.header.lengthUnit, diags);
   }
 
@@ -252,7 +253,7 @@ ReadResult<ProgramFile> parseProgramFile(std::string_view bytes, const JobHeader
   // ends and no blanked line the text after the header is already that.
   std::string& code = file.gcode;
   const bool plainLf = text.find('\r') == std::string::npos &&
-                       std::none_of(diags.begin(), diags.end(), [](const Diagnostic& d) { return d.code == "F106"; });
+                       std::none_of(diags.begin(), diags.end(), [](const Diagnostic& d) { return d.code == codes::kLineTooLong; });
   if (plainLf) {
     if (firstCodeLine < lines.size())
       code.assign(text, static_cast<std::size_t>(lines[firstCodeLine].data() - text.data()));

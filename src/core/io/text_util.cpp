@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "klueng/core/io/text_encoding.h"
+#include "klueng/core/diagnostic_codes.h"
 
 namespace klueng::core::io::detail {
 
@@ -23,16 +24,16 @@ std::optional<std::string> readFileBytes(const std::string& path, std::vector<Di
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
   if (!fs::exists(status)) {
-    diags.push_back(makeDiagnostic(Severity::Error, "F101", 0, 0, 0, {path}));
+    diags.push_back(makeDiagnostic(Severity::Error, codes::kNoSuchFile, 0, 0, 0, {path}));
     return std::nullopt;
   }
   if (fs::is_directory(status)) {
-    diags.push_back(makeDiagnostic(Severity::Error, "F102", 0, 0, 0, {path}));
+    diags.push_back(makeDiagnostic(Severity::Error, codes::kCannotReadFile, 0, 0, 0, {path}));
     return std::nullopt;
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
-    diags.push_back(makeDiagnostic(Severity::Error, "F102", 0, 0, 0, {path}));
+    diags.push_back(makeDiagnostic(Severity::Error, codes::kCannotReadFile, 0, 0, 0, {path}));
     return std::nullopt;
   }
   // Regular files report their size; read in chunks anyway so a pipe or a
@@ -40,7 +41,7 @@ std::optional<std::string> readFileBytes(const std::string& path, std::vector<Di
   std::string bytes;
   const std::uintmax_t size = fs::is_regular_file(status) ? fs::file_size(path, ec) : 0;
   if (!ec && size > maxBytes) {
-    diags.push_back(makeDiagnostic(Severity::Error, "F103", 0, 0, 0, {path, std::to_string(size)}));
+    diags.push_back(makeDiagnostic(Severity::Error, codes::kFileTooLarge, 0, 0, 0, {path, std::to_string(size)}));
     return std::nullopt;
   }
   if (!ec && size > 0) bytes.reserve(static_cast<std::size_t>(size));
@@ -49,12 +50,12 @@ std::optional<std::string> readFileBytes(const std::string& path, std::vector<Di
     bytes.append(buffer, static_cast<std::size_t>(in.gcount()));
     if (bytes.size() > maxBytes) {
       diags.push_back(
-          makeDiagnostic(Severity::Error, "F103", 0, 0, 0, {path, std::to_string(bytes.size())}));
+          makeDiagnostic(Severity::Error, codes::kFileTooLarge, 0, 0, 0, {path, std::to_string(bytes.size())}));
       return std::nullopt;
     }
   }
   if (in.bad()) {
-    diags.push_back(makeDiagnostic(Severity::Error, "F102", 0, 0, 0, {path}));
+    diags.push_back(makeDiagnostic(Severity::Error, codes::kCannotReadFile, 0, 0, 0, {path}));
     return std::nullopt;
   }
   return bytes;

@@ -12,6 +12,7 @@
 #include "io/text_util.h"
 #include "klueng/core/io/text_encoding.h"
 #include "klueng/core/io/tool_library.h"
+#include "klueng/core/diagnostic_codes.h"
 
 #ifndef KLUENG_SHIPPED_DATA_DIR
 #define KLUENG_SHIPPED_DATA_DIR "."
@@ -30,7 +31,7 @@ std::string twoDigits(int n) { return fmt::format("{:02}", n); }
 std::optional<std::string> decodeConfig(std::string_view bytes, const std::string& fileName,
                                         std::vector<Diagnostic>& diags) {
   if (const auto nul = detail::findNulByte(bytes)) {
-    diags.push_back(makeDiagnostic(Severity::Error, "F104", nul->line, nul->column, 1, {fileName}));
+    diags.push_back(makeDiagnostic(Severity::Error, codes::kBinaryFile, nul->line, nul->column, 1, {fileName}));
     return std::nullopt;
   }
   return detail::decodeText(bytes);
@@ -41,7 +42,7 @@ void warnAboutExtraLines(const std::vector<std::string_view>& lines, std::size_t
                          const std::string& fileName, std::vector<Diagnostic>& diags) {
   for (std::size_t i = used; i < lines.size(); ++i) {
     if (detail::trim(lines[i]).empty()) continue;
-    diags.push_back(makeDiagnostic(Severity::Warning, "F107", static_cast<int>(i) + 1, 1, 0,
+    diags.push_back(makeDiagnostic(Severity::Warning, codes::kLinesIgnored, static_cast<int>(i) + 1, 1, 0,
                                    {fileName, std::to_string(used)}));
     return;
   }
@@ -134,7 +135,7 @@ ReadResult<ToolTable> parseToolTable(std::string_view text, const std::string& f
       const LibraryTool* t = library->find(id);
       if (!t) {
         const std::string_view at = id.empty() ? name : id;
-        diags.push_back(makeDiagnostic(Severity::Error, "F123", tool, detail::columnOf(line, at), utf8Length(at),
+        diags.push_back(makeDiagnostic(Severity::Error, codes::kNotInToolLibrary, tool, detail::columnOf(line, at), utf8Length(at),
                                        {fileName, twoDigits(tool), std::string(id), library->idList()}));
         continue;
       }
@@ -142,7 +143,7 @@ ReadResult<ToolTable> parseToolTable(std::string_view text, const std::string& f
       continue;
     }
     if (hasControlCharacters(name) || !hasImageExtension(name)) {
-      diags.push_back(makeDiagnostic(Severity::Error, "F122", tool, detail::columnOf(line, name),
+      diags.push_back(makeDiagnostic(Severity::Error, codes::kNotBitmapName, tool, detail::columnOf(line, name),
                                      utf8Length(name), {fileName, twoDigits(tool), std::string(name)}));
       continue;
     }
@@ -151,7 +152,7 @@ ReadResult<ToolTable> parseToolTable(std::string_view text, const std::string& f
   const int required = std::min(kSeedToolLines, stations);
   if (lines.size() < static_cast<std::size_t>(required)) {
     const int count = static_cast<int>(lines.size());
-    diags.push_back(makeDiagnostic(Severity::Error, "F120", std::max(count, 1), 1, 0,
+    diags.push_back(makeDiagnostic(Severity::Error, codes::kToolTableShort, std::max(count, 1), 1, 0,
                                    {fileName, std::to_string(count), twoDigits(count + 1)}));
   }
   warnAboutExtraLines(lines, static_cast<std::size_t>(stations), fileName, diags);
@@ -172,7 +173,7 @@ ReadResult<ToolTable> readToolTable(const std::string& path, int stations, const
     const std::string& name = result.value->bitmap[static_cast<std::size_t>(tool - 1)];
     // A folder where a bitmap should be is not "missing": say what it is.
     const bool folder = fs::is_directory(file, ec);
-    result.diagnostics.push_back(makeDiagnostic(Severity::Error, folder ? "F124" : "F121", tool, 1, utf8Length(name),
+    result.diagnostics.push_back(makeDiagnostic(Severity::Error, folder ? codes::kBitmapIsFolder : codes::kBitmapMissing, tool, 1, utf8Length(name),
                                                 {path, twoDigits(tool), name}));
   }
   std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(),
@@ -205,7 +206,7 @@ ReadResult<OffsetTable> parseOffsetTable(std::string_view text, const std::strin
     const std::vector<std::string_view> fields = detail::splitFields(line);
     const std::string label = twoDigits(number);
     if (fields.empty()) {
-      diags.push_back(makeDiagnostic(Severity::Error, "F131", number, 1, 0, {fileName, label}));
+      diags.push_back(makeDiagnostic(Severity::Error, codes::kOffsetEmpty, number, 1, 0, {fileName, label}));
       continue;
     }
     if (fields.size() != 4) {
@@ -213,7 +214,7 @@ ReadResult<OffsetTable> parseOffsetTable(std::string_view text, const std::strin
       const int column = fields.size() > 4 ? detail::columnOf(line, fields[4])
                                            : utf8Length(detail::trim(line)) +
                                                  detail::columnOf(line, fields[0]);
-      diags.push_back(makeDiagnostic(Severity::Error, "F132", number, column, 0,
+      diags.push_back(makeDiagnostic(Severity::Error, codes::kOffsetFieldCount, number, column, 0,
                                      {fileName, label, std::to_string(fields.size())}));
       continue;
     }
@@ -224,7 +225,7 @@ ReadResult<OffsetTable> parseOffsetTable(std::string_view text, const std::strin
       const std::optional<double> v = detail::parseNumber(fields[static_cast<std::size_t>(i)]);
       if (!v) {
         const std::string_view f = fields[static_cast<std::size_t>(i)];
-        diags.push_back(makeDiagnostic(Severity::Error, "F133", number, detail::columnOf(line, f),
+        diags.push_back(makeDiagnostic(Severity::Error, codes::kOffsetNotNumber, number, detail::columnOf(line, f),
                                        utf8Length(f), {fileName, label, std::string(f)}));
         rowOk = false;
       } else {
@@ -232,7 +233,7 @@ ReadResult<OffsetTable> parseOffsetTable(std::string_view text, const std::strin
       }
     }
     if (rowOk && offset.r < 0.0) {
-      diags.push_back(makeDiagnostic(Severity::Error, "F134", number, detail::columnOf(line, fields[2]),
+      diags.push_back(makeDiagnostic(Severity::Error, codes::kNegativeNoseRadius, number, detail::columnOf(line, fields[2]),
                                      utf8Length(fields[2]), {fileName, label, std::string(fields[2])}));
       rowOk = false;
     }
@@ -242,14 +243,14 @@ ReadResult<OffsetTable> parseOffsetTable(std::string_view text, const std::strin
       const double limit = i == 2 ? kMaxNoseRadiusMm : kMaxOffsetMm;
       if (std::abs(*numbers[i]) > limit) {
         const std::string_view f = fields[static_cast<std::size_t>(i)];
-        diags.push_back(makeDiagnostic(Severity::Error, "F136", number, detail::columnOf(line, f), utf8Length(f),
+        diags.push_back(makeDiagnostic(Severity::Error, codes::kOffsetBeyondLathe, number, detail::columnOf(line, f), utf8Length(f),
                                        {fileName, label, std::string(f), detail::formatNumber(limit)}));
         rowOk = false;
       }
     }
     const std::string_view tip = fields[3];
     if (tip.size() != 1 || tip[0] < '0' || tip[0] > '9') {
-      diags.push_back(makeDiagnostic(Severity::Error, "F135", number, detail::columnOf(line, tip),
+      diags.push_back(makeDiagnostic(Severity::Error, codes::kBadTipNumber, number, detail::columnOf(line, tip),
                                      utf8Length(tip), {fileName, label, std::string(tip)}));
       rowOk = false;
     } else {
@@ -260,7 +261,7 @@ ReadResult<OffsetTable> parseOffsetTable(std::string_view text, const std::strin
   }
   if (lines.size() < static_cast<std::size_t>(kSeedOffsetLines)) {
     const int count = static_cast<int>(lines.size());
-    diags.push_back(makeDiagnostic(Severity::Error, "F130", std::max(count, 1), 1, 0,
+    diags.push_back(makeDiagnostic(Severity::Error, codes::kOffsetTableShort, std::max(count, 1), 1, 0,
                                    {fileName, std::to_string(count), twoDigits(count + 1)}));
   }
   warnAboutExtraLines(lines, kOffsetCount, fileName, diags);
@@ -369,14 +370,14 @@ ReadResult<MachineConfig> parseMachineConfig(std::string_view text, const std::s
     if (content.empty()) continue;
     const std::size_t eq = content.find('=');
     if (eq == std::string_view::npos) {
-      diags.push_back(makeDiagnostic(Severity::Error, "F140", lineNumber, detail::columnOf(line, content),
+      diags.push_back(makeDiagnostic(Severity::Error, codes::kNotKeyValue, lineNumber, detail::columnOf(line, content),
                                      utf8Length(content), {fileName}));
       continue;
     }
     const std::string_view key = detail::trim(content.substr(0, eq));
     const std::string_view value = detail::trim(content.substr(eq + 1));
     if (key.empty()) {
-      diags.push_back(makeDiagnostic(Severity::Error, "F140", lineNumber, detail::columnOf(line, content),
+      diags.push_back(makeDiagnostic(Severity::Error, codes::kNotKeyValue, lineNumber, detail::columnOf(line, content),
                                      utf8Length(content), {fileName}));
       continue;
     }
@@ -384,7 +385,7 @@ ReadResult<MachineConfig> parseMachineConfig(std::string_view text, const std::s
     for (const MachineKey& k : kMachineKeys)
       if (key == k.name) entry = &k;
     if (!entry) {
-      diags.push_back(makeDiagnostic(Severity::Error, "F141", lineNumber, detail::columnOf(line, key),
+      diags.push_back(makeDiagnostic(Severity::Error, codes::kUnknownParameter, lineNumber, detail::columnOf(line, key),
                                      utf8Length(key), {fileName, std::string(key)}));
       continue;
     }
@@ -392,17 +393,17 @@ ReadResult<MachineConfig> parseMachineConfig(std::string_view text, const std::s
                                           : detail::columnOf(line, value);
     const std::optional<double> number = detail::parseNumber(value);
     if (!number) {
-      diags.push_back(makeDiagnostic(Severity::Error, "F142", lineNumber, valueColumn, utf8Length(value),
+      diags.push_back(makeDiagnostic(Severity::Error, codes::kParameterNotNumber, lineNumber, valueColumn, utf8Length(value),
                                      {fileName, std::string(key), std::string(value)}));
       continue;
     }
     if (entry->rule == Rule::Positive && *number <= 0.0) {
-      diags.push_back(makeDiagnostic(Severity::Error, "F143", lineNumber, valueColumn, utf8Length(value),
+      diags.push_back(makeDiagnostic(Severity::Error, codes::kParameterNotPositive, lineNumber, valueColumn, utf8Length(value),
                                      {fileName, std::string(key), std::string(value)}));
       continue;
     }
     if (entry->rule == Rule::NonNegative && *number < 0.0) {
-      diags.push_back(makeDiagnostic(Severity::Error, "F144", lineNumber, valueColumn, utf8Length(value),
+      diags.push_back(makeDiagnostic(Severity::Error, codes::kParameterNegative, lineNumber, valueColumn, utf8Length(value),
                                      {fileName, std::string(key), std::string(value)}));
       continue;
     }
@@ -410,7 +411,7 @@ ReadResult<MachineConfig> parseMachineConfig(std::string_view text, const std::s
     if ((stations || entry->rule == Rule::Count) &&
         (*number != std::floor(*number) || *number < (stations ? kMinTurretStations : 1) ||
          *number > (stations ? kMaxTurretStations : kMaxBlockLimit))) {
-      diags.push_back(makeDiagnostic(Severity::Error, "F147", lineNumber, valueColumn, utf8Length(value),
+      diags.push_back(makeDiagnostic(Severity::Error, codes::kParameterNotWhole, lineNumber, valueColumn, utf8Length(value),
                                      {fileName, std::string(key), std::string(value),
                                       std::to_string(stations ? kMinTurretStations : 1),
                                       std::to_string(stations ? kMaxTurretStations : kMaxBlockLimit)}));
@@ -419,14 +420,14 @@ ReadResult<MachineConfig> parseMachineConfig(std::string_view text, const std::s
     bool plausible = true;
     for (const Plausible& p : kPlausible)
       if (key == p.name && (*number < p.min || *number > p.max)) {
-        diags.push_back(makeDiagnostic(Severity::Error, "F148", lineNumber, valueColumn, utf8Length(value),
+        diags.push_back(makeDiagnostic(Severity::Error, codes::kParameterOutOfRange, lineNumber, valueColumn, utf8Length(value),
                                        {fileName, std::string(key), std::string(value), detail::formatNumber(p.min),
                                         detail::formatNumber(p.max)}));
         plausible = false;
       }
     if (!plausible) continue;
     if (lineOfKey.count(entry->name))
-      diags.push_back(makeDiagnostic(Severity::Warning, "F145", lineNumber, detail::columnOf(line, key),
+      diags.push_back(makeDiagnostic(Severity::Warning, codes::kParameterTwice, lineNumber, detail::columnOf(line, key),
                                      utf8Length(key), {fileName, std::string(key)}));
     lineOfKey[entry->name] = lineNumber;
     if (entry->field) config.*(entry->field) = *number;
@@ -435,14 +436,14 @@ ReadResult<MachineConfig> parseMachineConfig(std::string_view text, const std::s
 
   // An empty machine.cfg (or only comments) is not what anyone meant to write: say the defaults apply.
   if (lineOfKey.empty() && !hasErrors(diags))
-    diags.push_back(makeDiagnostic(Severity::Warning, "F137", 0, 0, 0, {fileName}));
+    diags.push_back(makeDiagnostic(Severity::Warning, codes::kNoMachineParameters, 0, 0, 0, {fileName}));
 
   const auto checkRange = [&](const char* minKey, double MachineConfig::*min, const char* maxKey,
                               double MachineConfig::*max) {
     if (config.*min < config.*max) return;
     const int line = std::max(lineOfKey.count(minKey) ? lineOfKey[minKey] : 0,
                               lineOfKey.count(maxKey) ? lineOfKey[maxKey] : 0);
-    diags.push_back(makeDiagnostic(Severity::Error, "F146", line, line ? 1 : 0, 0,
+    diags.push_back(makeDiagnostic(Severity::Error, codes::kTravelLimitsReversed, line, line ? 1 : 0, 0,
                                    {fileName, minKey, maxKey}));
     MachineConfig defaults;
     config.*min = defaults.*min;
@@ -455,7 +456,7 @@ ReadResult<MachineConfig> parseMachineConfig(std::string_view text, const std::s
   const auto inside = [&](const char* key, double MachineConfig::*v, double lo, double hi) {
     if (config.*v >= lo && config.*v <= hi) return;
     const int line = lineOfKey.count(key) ? lineOfKey[key] : 0;
-    diags.push_back(makeDiagnostic(Severity::Error, "F149", line, line ? 1 : 0, 0,
+    diags.push_back(makeDiagnostic(Severity::Error, codes::kStartOutsideTravel, line, line ? 1 : 0, 0,
                                    {fileName, key, detail::formatNumber(config.*v), detail::formatNumber(lo),
                                     detail::formatNumber(hi)}));
   };

@@ -12,6 +12,7 @@
 #include "io/text_util.h"
 #include "klueng/core/io/text_encoding.h"
 #include "klueng/core/io/tool_config.h"
+#include "klueng/core/diagnostic_codes.h"
 
 namespace klueng::core::io {
 
@@ -117,7 +118,7 @@ ReadResult<ToolLibrary> parseToolLibrary(std::string_view text, const std::strin
   ReadResult<ToolLibrary> result;
   auto& diags = result.diagnostics;
   if (const auto nul = detail::findNulByte(text)) {
-    diags.push_back(makeDiagnostic(Severity::Error, "F104", nul->line, nul->column, 1, {fileName}));
+    diags.push_back(makeDiagnostic(Severity::Error, codes::kBinaryFile, nul->line, nul->column, 1, {fileName}));
     return result;
   }
   const std::string decoded = detail::decodeText(text);
@@ -137,26 +138,26 @@ ReadResult<ToolLibrary> parseToolLibrary(std::string_view text, const std::strin
                                      std::move(args)));
     };
     if (f.size() != kFieldCount) {
-      error("F160", content, {std::to_string(f.size())});
+      error(codes::kLibraryLineFields, content, {std::to_string(f.size())});
       continue;
     }
     LibraryTool tool;
     bool ok = true;
     if (!isToolId(f[0])) {
-      error("F161", f[0], {std::string(f[0])});
+      error(codes::kBadToolId, f[0], {std::string(f[0])});
       ok = false;
     } else if (const auto it = lineOfId.find(std::string(f[0])); it != lineOfId.end()) {
-      error("F162", f[0], {std::string(f[0]), std::to_string(it->second)});
+      error(codes::kDuplicateToolId, f[0], {std::string(f[0]), std::to_string(it->second)});
       ok = false;
     }
     tool.id = std::string(f[0]);
     if (!parseToolKindId(f[1], tool.kind)) {
-      error("F163", f[1], {std::string(f[1]), kindList()});
+      error(codes::kBadToolKind, f[1], {std::string(f[1]), kindList()});
       ok = false;
     }
     const std::optional<double> ppm = detail::parseNumber(f[2]);
     if (!ppm || *ppm < 1.0 || *ppm > 100.0) {
-      error("F164", f[2], {std::string(f[2])});
+      error(codes::kBadPixelsPerMm, f[2], {std::string(f[2])});
       ok = false;
     } else {
       tool.pixelsPerMm = *ppm;
@@ -164,7 +165,7 @@ ReadResult<ToolLibrary> parseToolLibrary(std::string_view text, const std::strin
     const auto nonNegative = [&](std::string_view field, const char* what, double& out) {
       const std::optional<double> v = detail::parseNumber(field);
       if (!v || *v < 0.0) {
-        error("F165", field, {what, std::string(field)});
+        error(codes::kLibraryNumberNegative, field, {what, std::string(field)});
         ok = false;
       } else {
         out = *v;
@@ -172,7 +173,7 @@ ReadResult<ToolLibrary> parseToolLibrary(std::string_view text, const std::strin
     };
     nonNegative(f[3], "R", tool.noseRadius);
     if (f[4].size() != 1 || f[4][0] < '0' || f[4][0] > '9') {
-      error("F166", f[4], {std::string(f[4])});
+      error(codes::kLibraryBadTip, f[4], {std::string(f[4])});
       ok = false;
     } else {
       tool.tip = f[4][0] - '0';
@@ -180,12 +181,12 @@ ReadResult<ToolLibrary> parseToolLibrary(std::string_view text, const std::strin
     nonNegative(f[5], "size", tool.size);
     const std::string ext = f[6].size() > 4 ? lower(f[6].substr(f[6].size() - 4)) : std::string();
     if (ext != ".bmp" && ext != ".png") {
-      error("F167", f[6], {std::string(f[6])});
+      error(codes::kLibraryNotBitmapName, f[6], {std::string(f[6])});
       ok = false;
     }
     tool.bitmap = std::string(f[6]);
     if (f[7].empty() || f[8].empty()) {
-      error("F168", f[7].empty() ? f[7] : f[8], {});
+      error(codes::kToolNeedsNames, f[7].empty() ? f[7] : f[8], {});
       ok = false;
     }
     tool.nameEn = std::string(f[7]);
@@ -210,7 +211,7 @@ ReadResult<ToolLibrary> readToolLibrary(const std::string& path) {
     std::error_code ec;
     if (!fs::is_regular_file(result.value->bitmapPath(t), ec))
       result.diagnostics.push_back(
-          makeDiagnostic(Severity::Error, "F169", t.line, 1, utf8Length(t.id), {path, t.id, t.bitmap}));
+          makeDiagnostic(Severity::Error, codes::kLibraryBitmapMissing, t.line, 1, utf8Length(t.id), {path, t.id, t.bitmap}));
   }
   return result;
 }

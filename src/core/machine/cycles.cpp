@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "machine/cycles_internal.h"
+#include "klueng/core/diagnostic_codes.h"
 
 namespace klueng::core::machine::cycles {
 
@@ -72,7 +73,7 @@ Expansion expand(const gcode::CodeInfo& code, const CycleInput& in, CycleMemory&
         const char depthLetter = g == A::TurnRoughing ? 'U' : 'W';
         const Word* dw = b.find(depthLetter);
         if (!dw || dw->value <= 0.0)
-          e.alarm = alarmAt("A122", dw ? dw : in.gWord, b, {name, std::string(1, depthLetter)});
+          e.alarm = alarmAt(codes::kCycleNeedsPositive, dw ? dw : in.gWord, b, {name, std::string(1, depthLetter)});
         else if (g == A::TurnRoughing) memory.g71Depth = dw->value * u, memory.g71Retract = value('R', memory.g71Retract);
         else memory.g72Depth = dw->value * u, memory.g72Retract = value('R', memory.g72Retract);
         break;
@@ -95,7 +96,7 @@ Expansion expand(const gcode::CodeInfo& code, const CycleInput& in, CycleMemory&
         memory.g76Allowance = value('R', memory.g76Allowance);
         break;
       case A::Finishing:
-        e.alarm = alarmAt("A126", in.gWord, b, {name});
+        e.alarm = alarmAt(codes::kCycleNeedsPAndQ, in.gWord, b, {name});
         break;
       default: break;
     }
@@ -120,7 +121,7 @@ Expansion expand(const gcode::CodeInfo& code, const CycleInput& in, CycleMemory&
     case A::FaceRoughing: {
       const double depth = g == A::TurnRoughing ? memory.g71Depth : memory.g72Depth;
       if (depth <= 0.0) {
-        e.alarm = alarmAt("A122", in.gWord, b, {name, g == A::TurnRoughing ? "U" : "W"});
+        e.alarm = alarmAt(codes::kCycleNeedsPositive, in.gWord, b, {name, g == A::TurnRoughing ? "U" : "W"});
         return e;
       }
       Profile p;
@@ -139,11 +140,11 @@ Expansion expand(const gcode::CodeInfo& code, const CycleInput& in, CycleMemory&
     }
     case A::PatternRepeating: {
       if (memory.g73Count > kMaxPasses) {
-        e.alarm = alarmAt("A127", in.gWord, b, {name, std::to_string(memory.g73Count), "R"});
+        e.alarm = alarmAt(codes::kTooManyPasses, in.gWord, b, {name, std::to_string(memory.g73Count), "R"});
         return e;
       }
       if (memory.g73Count < 1) {
-        e.alarm = alarmAt("A122", in.gWord, b, {name, "R"});
+        e.alarm = alarmAt(codes::kCycleNeedsPositive, in.gWord, b, {name, "R"});
         return e;
       }
       Profile p;
@@ -154,7 +155,7 @@ Expansion expand(const gcode::CodeInfo& code, const CycleInput& in, CycleMemory&
       movesOnly(p);
       const double moves = static_cast<double>(memory.g73Count) * static_cast<double>(p.moves.size() + 1);
       if (moves > kMaxCycleMoves) {
-        e.alarm = alarmAt("A149", in.gWord, b, {name, fmt::format("{:.0f}", moves), fmt::format("{:.0f}", kMaxCycleMoves)});
+        e.alarm = alarmAt(codes::kTooManyCycleMoves, in.gWord, b, {name, fmt::format("{:.0f}", moves), fmt::format("{:.0f}", kMaxCycleMoves)});
         return e;
       }
       const Vec2 allowance(value('W', 0.0), value('U', 0.0) / 2.0);
@@ -192,14 +193,14 @@ Expansion expand(const gcode::CodeInfo& code, const CycleInput& in, CycleMemory&
       const double drill = std::abs(g == A::FacePecking ? zOf(target) - zOf(in.start) : xOf(target) - xOf(in.start));
       const double peck = g == A::FacePecking ? along : across;
       if (peck > kEps && drill / peck > kMaxPasses) {
-        e.alarm = alarmAt("A127", g == A::FacePecking ? qw : pw, b,
+        e.alarm = alarmAt(codes::kTooManyPasses, g == A::FacePecking ? qw : pw, b,
                           {name, fmt::format("{:.0f}", std::ceil(drill / peck)), num(peck)});
         return e;
       }
       const double width = std::abs(g == A::FacePecking ? xOf(target) - xOf(in.start) : zOf(target) - zOf(in.start));
       const double moves = peckCycleMoves(drill, peck, width, std::abs(g == A::FacePecking ? across : along));
       if (moves > kMaxCycleMoves) {
-        e.alarm = alarmAt("A149", in.gWord, b, {name, fmt::format("{:.0f}", moves), fmt::format("{:.0f}", kMaxCycleMoves)});
+        e.alarm = alarmAt(codes::kTooManyCycleMoves, in.gWord, b, {name, fmt::format("{:.0f}", moves), fmt::format("{:.0f}", kMaxCycleMoves)});
         return e;
       }
       if (g == A::FacePecking) {
@@ -217,11 +218,11 @@ Expansion expand(const gcode::CodeInfo& code, const CycleInput& in, CycleMemory&
       const double height = pw ? increment(*pw, u) : 0.0;
       const double first = qw ? increment(*qw, u) : 0.0;
       if (height <= 0.0) {
-        e.alarm = alarmAt("A122", pw ? pw : in.gWord, b, {name, "P"});
+        e.alarm = alarmAt(codes::kCycleNeedsPositive, pw ? pw : in.gWord, b, {name, "P"});
         return e;
       }
       if (first <= 0.0 && memory.g76MinDepth <= 0.0) {
-        e.alarm = alarmAt("A122", qw ? qw : in.gWord, b, {name, "Q"});
+        e.alarm = alarmAt(codes::kCycleNeedsPositive, qw ? qw : in.gWord, b, {name, "Q"});
         return e;
       }
       const double taper = value('R', 0.0);  // R(i): radius difference, start minus end

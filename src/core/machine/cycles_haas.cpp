@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "machine/cycles_internal.h"
+#include "klueng/core/diagnostic_codes.h"
 
 namespace klueng::core::machine::cycles {
 
@@ -50,7 +51,7 @@ Expansion roughing(const gcode::CodeInfo& code, const CycleInput& in, const Bloc
   const double depth = length(b, 'D', u, setting(s.roughDepthInch, s.roughDepthMm, u));
   if (depth <= 0.0) {
     const Word* d = b.find('D');
-    e.alarm = alarmAt("A122", d ? d : in.gWord, b, {name, "D"});
+    e.alarm = alarmAt(codes::kCycleNeedsPositive, d ? d : in.gWord, b, {name, "D"});
     return e;
   }
   Profile p;
@@ -84,14 +85,14 @@ Expansion grooving(const gcode::CodeInfo& code, const CycleInput& in, const Bloc
   const double drillDepth = std::abs(g == A::FacePecking ? zOf(target) - zOf(in.start) : xOf(target) - xOf(in.start));
   const double peck = g == A::FacePecking ? k : i;
   if (peck > kEps && drillDepth / peck > kMaxPasses) {
-    e.alarm = alarmAt("A127", g == A::FacePecking ? kw : iw, b,
+    e.alarm = alarmAt(codes::kTooManyPasses, g == A::FacePecking ? kw : iw, b,
                       {gName(in, code), fmt::format("{:.0f}", std::ceil(drillDepth / peck)), num(peck)});
     return e;
   }
   const double width = std::abs(g == A::FacePecking ? xOf(target) - xOf(in.start) : zOf(target) - zOf(in.start));
   const double moves = peckCycleMoves(drillDepth, peck, width, g == A::FacePecking ? i : k);
   if (moves > kMaxCycleMoves) {
-    e.alarm = alarmAt("A149", in.gWord, b,
+    e.alarm = alarmAt(codes::kTooManyCycleMoves, in.gWord, b,
                       {gName(in, code), fmt::format("{:.0f}", moves), fmt::format("{:.0f}", kMaxCycleMoves)});
     return e;
   }
@@ -114,12 +115,12 @@ Expansion threading(const gcode::CodeInfo& code, const CycleInput& in, const Blo
   const double first = length(b, 'D', u, 0.0);
   if (height <= 0.0) {
     const Word* k = b.find('K');
-    e.alarm = alarmAt("A122", k ? k : in.gWord, b, {name, "K"});
+    e.alarm = alarmAt(codes::kCycleNeedsPositive, k ? k : in.gWord, b, {name, "K"});
     return e;
   }
   if (first <= 0.0) {
     const Word* d = b.find('D');
-    e.alarm = alarmAt("A122", d ? d : in.gWord, b, {name, "D"});
+    e.alarm = alarmAt(codes::kCycleNeedsPositive, d ? d : in.gWord, b, {name, "D"});
     return e;
   }
   const int method = b.has('P') ? b.find('P')->code() : 1;  // P1..P4, default P1
@@ -130,7 +131,7 @@ Expansion threading(const gcode::CodeInfo& code, const CycleInput& in, const Blo
   const double minCut = setting(s.threadMinCutInch, s.threadMinCutMm, u);
   const double finish = setting(s.threadFinishInch, s.threadFinishMm, u);
   if (constantDepth && height / first > kMaxPasses) {
-    e.alarm = alarmAt("A127", b.find('D'), b, {name, fmt::format("{:.0f}", std::ceil(height / first)), num(first)});
+    e.alarm = alarmAt(codes::kTooManyPasses, b.find('D'), b, {name, fmt::format("{:.0f}", std::ceil(height / first)), num(first)});
     return e;
   }
   const double flank = doubleEdge ? 0.0 : std::tan(angle / 2.0 * std::numbers::pi / 180.0);
@@ -162,7 +163,7 @@ Expansion expandOneBlock(const gcode::CodeInfo& code, const CycleInput& in) {
       m.g73ReliefZ = length(b, 'K', in.unit, 0.0);
       if (m.g73Count < 1) {
         Expansion e;
-        e.alarm = alarmAt("A122", d ? d : in.gWord, b, {gName(in, code), "D"});
+        e.alarm = alarmAt(codes::kCycleNeedsPositive, d ? d : in.gWord, b, {gName(in, code), "D"});
         return e;
       }
       return expand(code, in, m);

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "machine/cycles_internal.h"
+#include "klueng/core/diagnostic_codes.h"
 
 namespace klueng::core::machine::cycles::detail {
 
@@ -31,7 +32,7 @@ std::optional<CycleAlarm> arcSegment(const Block& b, const Vec2& start, const Ve
       return std::nullopt;
     }
     const double half = chord / 2.0;
-    if (std::abs(r) < half - kArcTolerance) return alarmAt("A114", rw, b, {num(std::abs(r)), num(half)});
+    if (std::abs(r) < half - kArcTolerance) return alarmAt(codes::kArcRadiusTooSmall, rw, b, {num(std::abs(r)), num(half)});
     const double d = std::sqrt(std::max(0.0, r * r - half * half));
     const Vec2 dir = (end - start) / chord;
     const Vec2 left(-dir.y(), dir.x());
@@ -44,7 +45,7 @@ std::optional<CycleAlarm> arcSegment(const Block& b, const Vec2& start, const Ve
   const Vec2 centre = start + Vec2(kw ? kw->value * unit : 0.0, iw ? iw->value * unit : 0.0);
   const double r0 = (start - centre).norm(), r1 = (end - centre).norm();
   if (r0 < 1e-9 || std::abs(r0 - r1) > kArcTolerance)
-    return alarmAt("A113", iw ? iw : kw, b, {num(r0), num(r1)});
+    return alarmAt(codes::kArcEndsNotOnOneCircle, iw ? iw : kw, b, {num(r0), num(r1)});
   out = Segment::arc(start, end, centre, ccw);
   return std::nullopt;
 }
@@ -58,9 +59,9 @@ std::optional<CycleAlarm> readProfile(const CycleInput& in, const Block& cycle, 
   const Word* qw = cycle.find('Q');
   const std::string gText = in.gWord ? std::string(1, in.gWord->letter) + in.gWord->number : "G7x";
   const char* g = gText.c_str();
-  if (!pw || !qw) return alarmAt("A126", in.gWord, cycle, {g});
+  if (!pw || !qw) return alarmAt(codes::kCycleNeedsPAndQ, in.gWord, cycle, {g});
   out.ns = findSequence(*in.program, pw->code(), in.blockIndex + 1);
-  if (out.ns < 0) return alarmAt("A120", pw, cycle, {g, "P", pw->number});
+  if (out.ns < 0) return alarmAt(codes::kNoProfileBlock, pw, cycle, {g, "P", pw->number});
   out.nf = -1;
   for (int i = out.ns; i < static_cast<int>(in.program->blocks.size()); ++i) {
     const Word* w = in.program->blocks[static_cast<std::size_t>(i)].find('N');
@@ -69,7 +70,7 @@ std::optional<CycleAlarm> readProfile(const CycleInput& in, const Block& cycle, 
       break;
     }
   }
-  if (out.nf < 0) return alarmAt("A120", qw, cycle, {g, "Q", qw->number});
+  if (out.nf < 0) return alarmAt(codes::kNoProfileBlock, qw, cycle, {g, "Q", qw->number});
 
   MotionMode motion = in.motion;
   Vec2 pos = in.start;
@@ -82,7 +83,7 @@ std::optional<CycleAlarm> readProfile(const CycleInput& in, const Block& cycle, 
     if (b.blockSkip && in.blockSkip) continue;
     // The cycle reads its profile as written: a macro value there is not known to it.
     if (b.hasExpressions || b.statement.kind != gcode::StatementKind::None)
-      return alarmAt("A148", in.gWord, cycle, {g, std::to_string(b.line)});
+      return alarmAt(codes::kProfileHasMacro, in.gWord, cycle, {g, std::to_string(b.line)});
     const Word* motionWord = nullptr;
     for (const Word& w : b.words) {
       if (w.letter != 'G' || w.hasDecimalPoint) continue;
@@ -149,7 +150,7 @@ std::optional<CycleAlarm> readProfile(const CycleInput& in, const Block& cycle, 
   std::size_t moves = 0;
   for (const Step& s : out.moves)
     if (s.kind != StepKind::Compensation) ++moves;
-  if (moves < 2) return alarmAt("A125", pw, cycle, {g, pw->number, qw->number});
+  if (moves < 2) return alarmAt(codes::kProfileHasNoMoves, pw, cycle, {g, pw->number, qw->number});
   return std::nullopt;
 }
 
@@ -234,7 +235,7 @@ std::optional<CycleAlarm> stockRemoval(const CycleInput& in, Profile& profile, d
   const Step& first = moves.front();
   const Block& nsBlock = in.program->blocks[static_cast<std::size_t>(profile.blockOf.front())];
   if (!firstMayMoveAlong && std::abs(first.path.end.x() - first.path.start.x()) > kEps)
-    return alarmAt("A124", nsBlock.words.empty() ? nullptr : &nsBlock.words.front(), nsBlock,
+    return alarmAt(codes::kProfileFirstBlockAxis, nsBlock.words.empty() ? nullptr : &nsBlock.words.front(), nsBlock,
                    {g, swap ? "Z" : "X"});
   const Vec2 aPrime = first.path.end;
   std::vector<Step> contour(moves.begin() + 1, moves.end());
@@ -248,7 +249,7 @@ std::optional<CycleAlarm> stockRemoval(const CycleInput& in, Profile& profile, d
       ok = (pts[j].y() - pts[j - 1].y()) * sb >= -1e-4 && (pts[j].x() - pts[j - 1].x()) * sa >= -1e-4;
     if (!ok) {
       const Block& b = in.program->blocks[static_cast<std::size_t>(profile.blockOf[i + 1])];
-      return alarmAt("A121", b.words.empty() ? nullptr : &b.words.front(), b, {g, std::to_string(b.line)});
+      return alarmAt(codes::kProfileNotMonotonic, b.words.empty() ? nullptr : &b.words.front(), b, {g, std::to_string(b.line)});
     }
   }
   std::vector<Step> shifted, roughed;
@@ -263,7 +264,7 @@ std::optional<CycleAlarm> stockRemoval(const CycleInput& in, Profile& profile, d
   const Vec2 aRough = aPrime + roughShift;
   if (std::abs(start.y() - aShift.y()) / depth > kMaxPasses) {
     const std::string passes = fmt::format("{:.0f}", std::ceil(std::abs(start.y() - aShift.y()) / depth));
-    return CycleAlarm{"A127", in.gWord ? in.gWord->range : SourceRange{}, {g, passes, num(depth)}};
+    return CycleAlarm{codes::kTooManyPasses, in.gWord ? in.gWord->range : SourceRange{}, {g, passes, num(depth)}};
   }
   const bool infeedRapid = first.kind == StepKind::Rapid;
   std::vector<Step> steps;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "machine/cycles_internal.h"
+#include "klueng/core/diagnostic_codes.h"
 
 namespace klueng::core::machine::cycles {
 
@@ -32,7 +33,7 @@ std::optional<CycleAlarm> readDrillWords(const gcode::CodeInfo& code, const Cycl
     w.hole = in.start;
   }
   w.clearance = inch ? profile.cycles.peckClearInch * u : profile.cycles.peckClearMm;
-  if (!b.has('Z') && !b.has('W') && fresh) return alarmAt("A122", in.gWord, b, {name, "Z"});
+  if (!b.has('Z') && !b.has('W') && fresh) return alarmAt(codes::kCycleNeedsPositive, in.gWord, b, {name, "Z"});
   const bool plane = profile.cycles.drillR == gcode::DrillR::Plane;
   if (const Word* r = b.find('R')) {
     // Fanuc: the distance from the initial level to the R point; Haas: the R plane's Z.
@@ -59,7 +60,7 @@ std::optional<CycleAlarm> readDrillWords(const gcode::CodeInfo& code, const Cycl
     const double depth = std::abs(w.hole.x() - w.rPlane);
     if (depth / w.peck > kMaxPasses) {
       const Word* q = b.find('Q');
-      return alarmAt("A127", q ? q : in.gWord, b,
+      return alarmAt(codes::kTooManyPasses, q ? q : in.gWord, b,
                      {name, fmt::format("{:.0f}", std::ceil(depth / w.peck)), num(w.peck)});
     }
   }

@@ -10,6 +10,7 @@
 
 #include "machine/input_rounding.h"
 #include "machine/interpreter_impl.h"
+#include "klueng/core/diagnostic_codes.h"
 
 namespace klueng::core::machine {
 
@@ -36,9 +37,9 @@ bool Interpreter::withinTravel(const Vec2& work, const Word* where) {
   const Vec2 machine = work - mach_.workShift;
   const double xd = 2.0 * xOf(machine), z = zOf(machine);
   if (xd < m.travelXMin - kPositionTolerance || xd > m.travelXMax + kPositionTolerance)
-    return raise("A112", where, {"X", num(xd), num(m.travelXMin), num(m.travelXMax)});
+    return raise(codes::kBeyondTravelLimit, where, {"X", num(xd), num(m.travelXMin), num(m.travelXMax)});
   if (z < m.travelZMin - kPositionTolerance || z > m.travelZMax + kPositionTolerance)
-    return raise("A112", where, {"Z", num(z), num(m.travelZMin), num(m.travelZMax)});
+    return raise(codes::kBeyondTravelLimit, where, {"Z", num(z), num(m.travelZMin), num(m.travelZMax)});
   return true;
 }
 
@@ -86,7 +87,7 @@ bool Interpreter::executeBlock() {
     if (w.letter != 'G' && w.letter != 'M') continue;
     const CodeInfo* info = gcode::findCode(w.letter, w.code(), options_.dialect);
     if (w.letter == 'G') {
-      if (!info) return raise("A117", &w, {wordText(w)});
+      if (!info) return raise(codes::kNotSupportedYet, &w, {wordText(w)});
       if (gCount < gs.size()) gs[gCount++] = {&w, info};
     } else if (info && mCount < ms.size()) {  // unknown M codes: machine-specific, ignored (SPEC 13)
       ms[mCount++] = {&w, info};
@@ -161,7 +162,7 @@ bool Interpreter::executeBlock() {
       modal_.sWord = s->value * (modal_.units == Units::Inch ? kMetresPerFoot : 1.0);
     } else {
       if (s->value > setup_.machine.maxSpindleRpm + 1e-9)
-        return raise("A101", s, {num(s->value), num(setup_.machine.maxSpindleRpm)});
+        return raise(codes::kSpindleAboveMaximum, s, {num(s->value), num(setup_.machine.maxSpindleRpm)});
       modal_.sWord = s->value;
     }
   }
@@ -251,11 +252,11 @@ bool Interpreter::selectTool(const Word& t) {
   const int stations = profile_.maxToolStation > 0 ? std::min(profile_.maxToolStation, tableStations) : tableStations;
   const int offsets = std::min(profile_.maxOffset, static_cast<int>(offsets_.offsets.size()));
   // A T from a macro expression skips the checker: refuse what no turret has.
-  if (value < 0) return raise("A128", &t, {wordText(t), t.number, fmt::format("{:02d}", stations)});
+  if (value < 0) return raise(codes::kNoSuchStation, &t, {wordText(t), t.number, fmt::format("{:02d}", stations)});
   if (tool > stations)
-    return raise("A128", &t, {wordText(t), fmt::format("{:02d}", tool), fmt::format("{:02d}", stations)});
+    return raise(codes::kNoSuchStation, &t, {wordText(t), fmt::format("{:02d}", tool), fmt::format("{:02d}", stations)});
   if (offset > offsets)
-    return raise("A118", &t, {wordText(t), fmt::format("{:02d}", offset), fmt::format("{:02d}", offsets)});
+    return raise(codes::kNoSuchOffset, &t, {wordText(t), fmt::format("{:02d}", offset), fmt::format("{:02d}", offsets)});
   mach_.tool = tool;
   mach_.offset = offset;
   if (offset == 0) {
@@ -279,9 +280,9 @@ bool Interpreter::mCode(const CodeWord& c) {
         mach_.spindle = SpindleDir::Stopped;
       } else {
         const SpindleDir dir = a == CodeAction::SpindleCw ? SpindleDir::Cw : SpindleDir::Ccw;
-        if (mach_.brake) return raise("A106", c.word, {wordText(*c.word)});
+        if (mach_.brake) return raise(codes::kSpindleStartedWithBrakeOn, c.word, {wordText(*c.word)});
         if (mach_.spindle != SpindleDir::Stopped && mach_.spindle != dir)
-          return raise("A105", c.word, {wordText(*c.word)});
+          return raise(codes::kSpindleReversedWithoutStop, c.word, {wordText(*c.word)});
         mach_.spindle = dir;
       }
       updateRpm();
@@ -289,16 +290,16 @@ bool Interpreter::mCode(const CodeWord& c) {
     case ModalGroup::MCoolant: mach_.coolant = a == CodeAction::CoolantOn; return true;
     case ModalGroup::MBrake:
       if (a == CodeAction::SpindleClamp) {  // M86; Haas M14 (M15 releases, as M87)
-        if (mach_.spindle != SpindleDir::Stopped) return raise("A107", c.word, {});
+        if (mach_.spindle != SpindleDir::Stopped) return raise(codes::kBrakeWhileTurning, c.word, {});
         mach_.brake = true;
       } else {
-        if (mach_.cAxisMode) return raise("A111", c.word, {});
+        if (mach_.cAxisMode) return raise(codes::kBrakeReleasedInCAxisMode, c.word, {});
         mach_.brake = false;
       }
       return true;
     case ModalGroup::MCAxis:
       if (a == CodeAction::CAxisOn) {
-        if (!mach_.brake) return raise("A110", c.word, {});
+        if (!mach_.brake) return raise(codes::kCAxisModeWithoutBrake, c.word, {});
         mach_.cAxisMode = true;
       } else {
         mach_.cAxisMode = false;
@@ -333,10 +334,10 @@ bool Interpreter::mCode(const CodeWord& c) {
       pending_.target = gcode::callTarget(p ? p->value : 0.0, l ? std::optional<double>(l->value) : std::nullopt, packed);
       // A missing target stops the run on this block, before its snapshot.
       if (a == CodeAction::SubprogramCall && pending_.target.repeats > 0 && !index_.program(pending_.target.number))
-        return raise("A135", c.word, {pending_.text, std::to_string(pending_.target.number)});
+        return raise(codes::kNoSuchProgram, c.word, {pending_.text, std::to_string(pending_.target.number)});
       if (a == CodeAction::LocalCall && pending_.target.repeats > 0 &&
           index_.findSequence(index_.sectionOf(blockIndex_), pending_.target.number, -1) < 0)
-        return raise("A136", c.word, {pending_.text, std::to_string(pending_.target.number)});
+        return raise(codes::kNoSuchSequence, c.word, {pending_.text, std::to_string(pending_.target.number)});
       return true;
     }
     default: return true;
@@ -348,7 +349,7 @@ bool Interpreter::cAxisWords() {
   const Word* h = find('H');
   if (!c && !h) return true;
   const Word* w = c ? c : h;
-  if (!mach_.cAxisMode) return raise("A109", w, {wordText(*w)});
+  if (!mach_.cAxisMode) return raise(codes::kCAxisOutsideCAxisMode, w, {wordText(*w)});
   // A C-axis rotation is recorded as the spindle angle; it takes no time.
   mach_.cAngle = c ? c->value : mach_.cAngle + h->value;
   mach_.cAngle = std::fmod(mach_.cAngle, 360.0);
@@ -380,10 +381,10 @@ bool Interpreter::move(const Word* g) {
       return feedMoveAfterCorner(arc->isArc() ? MoveKind::Arc : MoveKind::Line, *arc, where);
     }
     case MotionMode::Thread: {
-      if (modal_.feed <= 0.0) return raise("A102", where, {"G32"});
-      if (modal_.spindleMode == SpindleMode::ConstantSurface) return raise("A108", where, {});
-      if (mach_.spindle == SpindleDir::Stopped) return raise("A116", where, {});
-      if (modal_.sWord <= 0.0) return raise("A119", where, {});
+      if (modal_.feed <= 0.0) return raise(codes::kNoFeed, where, {"G32"});
+      if (modal_.spindleMode == SpindleMode::ConstantSurface) return raise(codes::kThreadUnderConstantSurface, where, {});
+      if (mach_.spindle == SpindleDir::Stopped) return raise(codes::kThreadSpindleStopped, where, {});
+      if (modal_.sWord <= 0.0) return raise(codes::kThreadWithoutSpeed, where, {});
       MotionCall m;
       m.kind = MoveKind::Thread;
       m.path = Segment::line(pos_, target);
@@ -399,10 +400,10 @@ bool Interpreter::move(const Word* g) {
 }
 
 bool Interpreter::feedReady(const Word* where, const char* code) {
-  if (modal_.feed <= 0.0) return raise("A102", where, {code});
+  if (modal_.feed <= 0.0) return raise(codes::kNoFeed, where, {code});
   if (modal_.feedMode == FeedMode::PerRev) {
-    if (mach_.spindle == SpindleDir::Stopped) return raise("A104", where, {code});
-    if (modal_.sWord <= 0.0) return raise("A103", where, {code});
+    if (mach_.spindle == SpindleDir::Stopped) return raise(codes::kFeedPerRevSpindleStopped, where, {code});
+    if (modal_.sWord <= 0.0) return raise(codes::kFeedPerRevWithoutSpeed, where, {code});
   }
   return true;
 }
@@ -427,7 +428,7 @@ std::optional<Segment> Interpreter::arcTo(const Vec2& end, bool ccw, const Word*
     if (chord < 1e-9) return Segment::line(start, end);
     const double half = chord / 2.0;
     if (std::abs(r) < half - kArcTolerance) {
-      raise("A114", rw, {num(std::abs(r)), num(half)});
+      raise(codes::kArcRadiusTooSmall, rw, {num(std::abs(r)), num(half)});
       return std::nullopt;
     }
     const double d = std::sqrt(std::max(0.0, r * r - half * half));
@@ -444,7 +445,7 @@ std::optional<Segment> Interpreter::arcTo(const Vec2& end, bool ccw, const Word*
   const double r0 = (start - centre).norm(), r1 = (end - centre).norm();
   const Word* at = iw ? iw : kw ? kw : where;
   if (r0 < 1e-9 || std::abs(r0 - r1) > kArcTolerance) {
-    raise("A113", at, {num(r0), num(r1)});
+    raise(codes::kArcEndsNotOnOneCircle, at, {num(r0), num(r1)});
     return std::nullopt;
   }
   return Segment::arc(start, end, centre, ccw);

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "machine/interpreter_impl.h"
+#include "klueng/core/diagnostic_codes.h"
 
 namespace klueng::core::machine::detail {
 
@@ -75,7 +76,7 @@ bool Interpreter::holdCorner(const Segment& path, const Word* where) {
 
 bool Interpreter::cornerNeedsMove() {
   corner_.active = false;
-  sink_.alarm(Diagnostic{Severity::Alarm, "A144", corner_.where, {corner_.text}});
+  sink_.alarm(Diagnostic{Severity::Alarm, codes::kCornerNeedsNextMove, corner_.where, {corner_.text}});
   return false;
 }
 
@@ -104,7 +105,7 @@ bool Interpreter::cutHeldCorner(const Segment& path, Vec2& start, const Word* wh
     sink_.alarm(Diagnostic{Severity::Alarm, code, held.where, {held.text}});
     return false;
   };
-  const auto tooLong = [&]() { return alarm("A145"); };
+  const auto tooLong = [&]() { return alarm(codes::kCornerLongerThanMove); };
   Vec2 p1, p2;
   std::optional<Segment> round;
   if (held.kind == 'C') {
@@ -117,7 +118,7 @@ bool Interpreter::cutHeldCorner(const Segment& path, Vec2& start, const Word* wh
     // A tangent arc of radius r between two lines: its ends lie r * tan(theta/2)
     // from the corner, theta the turn between the two directions.
     // Corner R into an arc: the control rounds it too; the simulation needs the two lines.
-    if (path.isArc()) return alarm("A146");
+    if (path.isArc()) return alarm(codes::kAngleUnreachable);
     const double cross = d1.x() * d2.y() - d1.y() * d2.x();
     const double dot = std::clamp(d1.dot(d2), -1.0, 1.0);
     const double theta = std::acos(dot);
@@ -160,7 +161,7 @@ bool Interpreter::angleTarget(Vec2& target, const Word* where) {
   const double angle = a->value * std::numbers::pi / 180.0;
   const Vec2 dir(std::cos(angle), std::sin(angle));  // (z, x radius)
   const bool x = movesX(), z = movesZ();
-  const auto unreachable = [&]() { return raise("A146", a, {"," + a->text()}); };
+  const auto unreachable = [&]() { return raise(codes::kAngleUnreachable, a, {"," + a->text()}); };
   if (x && !z) {
     if (std::abs(dir.y()) < 1e-9) return unreachable();
     const double t = (xOf(target) - xOf(pos_)) / dir.y();

@@ -3,12 +3,13 @@
 // cycles.h expands them into simple moves; they go down the ordinary chain
 // with the ordinary checks, all carrying the cycle block's line.
 #include "machine/interpreter_impl.h"
+#include "klueng/core/diagnostic_codes.h"
 
 namespace klueng::core::machine::detail {
 
 bool Interpreter::compensationAllowed(const Word* g) {
   if (modal_.noseComp == NoseCompMode::Off) return true;
-  return raise("A123", g, {wordText(*g)});
+  return raise(codes::kCycleUnderNoseComp, g, {wordText(*g)});
 }
 
 bool Interpreter::singleCycle(const Word* where, bool fresh) {
@@ -96,16 +97,16 @@ bool Interpreter::cycleReady(const std::vector<cycles::Step>& steps, const Word*
     if (s.feed > 0.0) feed = s.feed;
     if (s.sWord && s.sWord->value > 0.0) sSet = true;
     if (s.kind == cycles::StepKind::Feed) {
-      if (feed <= 0.0) return raise("A102", where, {name});
+      if (feed <= 0.0) return raise(codes::kNoFeed, where, {name});
       if (modal_.feedMode == FeedMode::PerRev) {
-        if (mach_.spindle == SpindleDir::Stopped) return raise("A104", where, {name});
-        if (!sSet) return raise("A103", where, {name});
+        if (mach_.spindle == SpindleDir::Stopped) return raise(codes::kFeedPerRevSpindleStopped, where, {name});
+        if (!sSet) return raise(codes::kFeedPerRevWithoutSpeed, where, {name});
       }
     } else if (s.kind == cycles::StepKind::Thread) {
-      if (s.lead <= 0.0) return raise("A102", where, {name});
-      if (modal_.spindleMode == SpindleMode::ConstantSurface) return raise("A108", where, {});
-      if (mach_.spindle == SpindleDir::Stopped) return raise("A116", where, {});
-      if (!sSet) return raise("A119", where, {});
+      if (s.lead <= 0.0) return raise(codes::kNoFeed, where, {name});
+      if (modal_.spindleMode == SpindleMode::ConstantSurface) return raise(codes::kThreadUnderConstantSurface, where, {});
+      if (mach_.spindle == SpindleDir::Stopped) return raise(codes::kThreadSpindleStopped, where, {});
+      if (!sSet) return raise(codes::kThreadWithoutSpeed, where, {});
     }
   }
   return true;
@@ -128,7 +129,7 @@ bool Interpreter::emitCycle(const std::vector<cycles::Step>& steps, const Word* 
         modal_.sWord = s.sWord->value * (modal_.units == Units::Inch ? kMetresPerFoot : 1.0);
       } else {
         if (s.sWord->value > setup_.machine.maxSpindleRpm + 1e-9)
-          return raise("A101", s.sWord, {num(s.sWord->value), num(setup_.machine.maxSpindleRpm)});
+          return raise(codes::kSpindleAboveMaximum, s.sWord, {num(s.sWord->value), num(setup_.machine.maxSpindleRpm)});
         modal_.sWord = s.sWord->value;
       }
       updateRpm();
@@ -149,10 +150,10 @@ bool Interpreter::emitCycle(const std::vector<cycles::Step>& steps, const Word* 
         break;
       }
       case cycles::StepKind::Thread: {
-        if (s.lead <= 0.0) return raise("A102", where, {name});
-        if (modal_.spindleMode == SpindleMode::ConstantSurface) return raise("A108", where, {});
-        if (mach_.spindle == SpindleDir::Stopped) return raise("A116", where, {});
-        if (modal_.sWord <= 0.0) return raise("A119", where, {});
+        if (s.lead <= 0.0) return raise(codes::kNoFeed, where, {name});
+        if (modal_.spindleMode == SpindleMode::ConstantSurface) return raise(codes::kThreadUnderConstantSurface, where, {});
+        if (mach_.spindle == SpindleDir::Stopped) return raise(codes::kThreadSpindleStopped, where, {});
+        if (modal_.sWord <= 0.0) return raise(codes::kThreadWithoutSpeed, where, {});
         MotionCall m;
         m.kind = MoveKind::Thread;
         m.path = Segment::line(pos_, s.path.end);

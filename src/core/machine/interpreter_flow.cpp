@@ -8,6 +8,7 @@
 
 #include "klueng/core/gcode/word_format.h"
 #include "machine/interpreter_impl.h"
+#include "klueng/core/diagnostic_codes.h"
 
 namespace klueng::core::machine::detail {
 
@@ -181,14 +182,14 @@ bool Interpreter::loopLimits() {
   const auto& m = setup_.machine;
   if (visited_[static_cast<std::size_t>(blockIndex_)]) {
     if (++repeatedBlocks_ > m.maxBlocks)
-      return flowAlarm("A132", lastJumpAt_.line > 0 ? lastJumpAt_ : SourceRange{block_->line, 1, 0, block_->file},
+      return flowAlarm(codes::kEndlessLoopBlocks, lastJumpAt_.line > 0 ? lastJumpAt_ : SourceRange{block_->line, 1, 0, block_->file},
                        {lastJumpText_.empty() ? std::string("M99") : lastJumpText_, std::to_string(repeatedBlocks_ - 1),
                         std::to_string(m.maxBlocks)});
   } else {
     visited_[static_cast<std::size_t>(blockIndex_)] = 1;
   }
   if (m.maxRunTime > 0.0 && sink_.elapsed() > m.maxRunTime)
-    return flowAlarm("A133", lastJumpAt_.line > 0 ? lastJumpAt_ : SourceRange{block_->line, 1, 0, block_->file},
+    return flowAlarm(codes::kEndlessLoopTime, lastJumpAt_.line > 0 ? lastJumpAt_ : SourceRange{block_->line, 1, 0, block_->file},
                      {lastJumpText_.empty() ? std::string("M99") : lastJumpText_, num(sink_.elapsed()),
                       num(m.maxRunTime)});
   return true;
@@ -258,7 +259,7 @@ bool Interpreter::evaluateWords(const Block& b) {
     if (flow_)
       flow_->wordValues.push_back(WordValue{snapshots_, w.range.file, w.range.line, w.range.column, v.value, v.vacant});
     if (v.vacant) {  // any address, a code word too, is left out
-      notice(Severity::Warning, "W130", w.range, {w.text(), w.number.substr(w.number.find('#') + 1), std::string(1, w.letter)});
+      notice(Severity::Warning, codes::kVacantAddressOmitted, w.range, {w.text(), w.number.substr(w.number.find('#') + 1), std::string(1, w.letter)});
       continue;
     }
     Word e = w;
@@ -277,13 +278,13 @@ bool Interpreter::evaluateWords(const Block& b) {
       // Codes need whole values (G#1 with #1 = 1 runs G01).
       const double r = std::round(v.value);
       if (std::abs(r - v.value) > 1e-9 || std::abs(r) > 99999999.0)
-        return flowAlarm("A143", w.range, {w.text(), gcode::macroNumberText(v.value)});
+        return flowAlarm(codes::kValueIsNoCode, w.range, {w.text(), gcode::macroNumberText(v.value)});
       e.value = r;
       e.hasDecimalPoint = false;
       e.decimals = 0;
       e.number = std::to_string(static_cast<long long>(r));
       if ((w.letter == 'G' || w.letter == 'M') && !gcode::findCode(w.letter, static_cast<int>(r), options_.dialect))
-        return flowAlarm("A143", w.range, {w.text(), std::string(1, w.letter) + e.number});
+        return flowAlarm(codes::kValueIsNoCode, w.range, {w.text(), std::string(1, w.letter) + e.number});
     }
     scratch_.words.push_back(std::move(e));
   }
@@ -302,7 +303,7 @@ bool Interpreter::statement(const Block& b) {
     }
     case StatementKind::Goto: {
       if (!evaluate(st.value, st.range, v)) return false;
-      if (v.vacant) return flowAlarm("A140", st.range, {"GOTO", "GOTO"});
+      if (v.vacant) return flowAlarm(codes::kVacantValueNeeded, st.range, {"GOTO", "GOTO"});
       return jumpTo(gcode::variableNumber(v.value), st.range, "GOTO" + gcode::macroNumberText(v.value));
     }
     case StatementKind::If: {
@@ -315,13 +316,13 @@ bool Interpreter::statement(const Block& b) {
         return writeVariable(gcode::variableNumber(target.value), v, st.range);
       }
       if (!evaluate(st.value, st.range, v)) return false;
-      if (v.vacant) return flowAlarm("A140", st.range, {"IF ... GOTO", "GOTO"});
+      if (v.vacant) return flowAlarm(codes::kVacantValueNeeded, st.range, {"IF ... GOTO", "GOTO"});
       return jumpTo(gcode::variableNumber(v.value), st.range, "GOTO" + gcode::macroNumberText(v.value));
     }
     case StatementKind::While:
     case StatementKind::Do: {
       const int end = loopPartner_[static_cast<std::size_t>(blockIndex_)];
-      if (end < 0) return flowAlarm("A141", st.range, {statementText(b), "END" + std::to_string(st.loop)});
+      if (end < 0) return flowAlarm(codes::kUnmatchedLoopEnd, st.range, {statementText(b), "END" + std::to_string(st.loop)});
       bool enter = true;
       if (st.kind == StatementKind::While) {
         MacroValue c;
@@ -334,7 +335,7 @@ bool Interpreter::statement(const Block& b) {
     }
     case StatementKind::End: {
       const int start = loopPartner_[static_cast<std::size_t>(blockIndex_)];
-      if (start < 0) return flowAlarm("A141", st.range, {statementText(b), "DO" + std::to_string(st.loop)});
+      if (start < 0) return flowAlarm(codes::kUnmatchedLoopEnd, st.range, {statementText(b), "DO" + std::to_string(st.loop)});
       next_ = start;  // WHILE tests its condition again
       lastJumpAt_ = st.range;
       lastJumpText_ = statementText(b);
@@ -348,7 +349,7 @@ bool Interpreter::statement(const Block& b) {
 
 bool Interpreter::jumpTo(int n, const SourceRange& at, const std::string& text) {
   const int target = index_.findSequence(frames_.back().section, n, blockIndex_);
-  if (target < 0) return flowAlarm("A136", at, {text, std::to_string(n)});
+  if (target < 0) return flowAlarm(codes::kNoSuchSequence, at, {text, std::to_string(n)});
   if (target <= blockIndex_) {
     lastJumpAt_ = at;
     lastJumpText_ = text;
@@ -384,7 +385,7 @@ bool Interpreter::callProgram(CallFrame::Kind kind, int number, int repeats, con
     if (f.kind == CallFrame::Kind::Macro || f.kind == CallFrame::Kind::ModalMacro) ++macroLevels;
   }
   if (macro ? macroLevels >= profile_.flow.maxMacroNesting : subLevels >= profile_.flow.maxSubprogramNesting)
-    return flowAlarm("A134", at, {text, std::to_string(macro ? profile_.flow.maxMacroNesting
+    return flowAlarm(codes::kCallsTooDeep, at, {text, std::to_string(macro ? profile_.flow.maxMacroNesting
                                                              : profile_.flow.maxSubprogramNesting)});
   FlowFrame f;
   f.kind = kind;
@@ -398,10 +399,10 @@ bool Interpreter::callProgram(CallFrame::Kind kind, int number, int repeats, con
     f.section = frames_.back().section;
     f.program = frames_.back().program;
     f.entry = index_.findSequence(f.section, number, -1);
-    if (f.entry < 0) return flowAlarm("A136", at, {text, std::to_string(number)});
+    if (f.entry < 0) return flowAlarm(codes::kNoSuchSequence, at, {text, std::to_string(number)});
   } else {
     const gcode::ProgramSection* s = index_.program(number);
-    if (!s) return flowAlarm("A135", at, {text, std::to_string(number)});
+    if (!s) return flowAlarm(codes::kNoSuchProgram, at, {text, std::to_string(number)});
     f.section = static_cast<int>(s - index_.sections().data());
     f.program = number;
     f.entry = s->first;
@@ -438,7 +439,7 @@ bool Interpreter::returnFromCall(std::optional<int> sequence, const SourceRange&
       return true;
     }
     mainRepeated_ = true;
-    notice(Severity::Note, "I160", at, {});
+    notice(Severity::Note, codes::kMainProgramRepeats, at, {});
     if (sequence) return jumpTo(*sequence, at, text);
     lastJumpAt_ = at;
     lastJumpText_ = text;
@@ -465,7 +466,7 @@ bool Interpreter::returnFromCall(std::optional<int> sequence, const SourceRange&
   if (sequence) {
     // M99 P n: back to N n of the calling program instead of the block after the call.
     const int target = index_.findSequence(frames_.back().section, *sequence, done.callBlock);
-    if (target < 0) return flowAlarm("A142", at, {text, std::to_string(*sequence)});
+    if (target < 0) return flowAlarm(codes::kReturnTargetMissing, at, {text, std::to_string(*sequence)});
     if (target <= done.callBlock) {
       lastJumpAt_ = at;
       lastJumpText_ = text;
@@ -503,14 +504,14 @@ bool Interpreter::macroCall(const Block& b, const CodeWord& g) {
     for (const Word& w : b.words)
       if (w.letter == 'P') p = &w;
   }
-  if (!p) return flowAlarm("A135", at, {text, "?"});
+  if (!p) return flowAlarm(codes::kNoSuchProgram, at, {text, "?"});
   const Word* l = nullptr;
   for (const Word& w : b.words)
     if (w.letter == 'L') l = &w;
   const CallTarget t = gcode::callTarget(p->value, l ? std::optional<double>(l->value) : std::nullopt, false);
   if (g.info->action == CodeAction::MacroModalCall) {
     // G66: the macro runs after each move of the following blocks until G67.
-    if (!index_.program(t.number)) return flowAlarm("A135", at, {text, std::to_string(t.number)});
+    if (!index_.program(t.number)) return flowAlarm(codes::kNoSuchProgram, at, {text, std::to_string(t.number)});
     modalCall_.active = true;
     modalCall_.program = t.number;
     modalCall_.repeats = t.repeats;

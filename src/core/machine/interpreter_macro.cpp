@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "machine/interpreter_impl.h"
+#include "klueng/core/diagnostic_codes.h"
 
 namespace klueng::core::machine::detail {
 
@@ -46,7 +47,7 @@ double Interpreter::positionValue(int axis, bool machine) const {
 }
 
 bool Interpreter::read(int n, MacroValue& out, const char*& errorCode) {
-  errorCode = "A137";
+  errorCode = codes::kNoSuchVariable;
   out = MacroValue{};
   if (n == 0) return true;
   if (n >= 1 && n <= 33) {
@@ -116,10 +117,10 @@ bool Interpreter::writeVariable(int n, MacroValue v, const SourceRange& at) {
     if (flow_) flow_->writes.push_back(VariableWrite{snapshots_, n, -1, v.value, v.vacant});
     // The control shows it as alarm 3000 + n (Fanuc: n = 0..200).
     const int number = 3000 + static_cast<int>(std::clamp(std::round(v.value), 0.0, 999.0));
-    return flowAlarm("A130", at, {gcode::macroNumberText(v.value), block_->comment, std::to_string(number)});
+    return flowAlarm(codes::kProgramAlarm, at, {gcode::macroNumberText(v.value), block_->comment, std::to_string(number)});
   } else if (n == 3006) {
     // #3006 = n (MESSAGE): a stop with a message, as M00.
-    notice(Severity::Note, "A147", at, {block_->comment});
+    notice(Severity::Note, codes::kMacroStop, at, {block_->comment});
     stopped_ = true;
     stopEndsRun_ = options_.stopAtM00;
   } else if (n == 3001) {
@@ -136,12 +137,12 @@ bool Interpreter::writeVariable(int n, MacroValue v, const SourceRange& at) {
       case 0: o.x = value * unit(); break;
       case 1: o.z = value * unit(); break;
       case 2:
-        if (value < 0.0) return flowAlarm("A139", at, {name + " =", std::to_string(n)});
+        if (value < 0.0) return flowAlarm(codes::kReadOnlyVariable, at, {name + " =", std::to_string(n)});
         o.r = value * unit();
         break;
       default: {
         const double tip = std::round(value);
-        if (tip < 0.0 || tip > 9.0 || tip != value) return flowAlarm("A139", at, {name + " =", std::to_string(n)});
+        if (tip < 0.0 || tip > 9.0 || tip != value) return flowAlarm(codes::kReadOnlyVariable, at, {name + " =", std::to_string(n)});
         o.tip = static_cast<int>(tip);
         break;
       }
@@ -153,8 +154,8 @@ bool Interpreter::writeVariable(int n, MacroValue v, const SourceRange& at) {
   } else {
     MacroValue ignored;
     const char* code = nullptr;
-    if (n == 0 || read(n, ignored, code)) return flowAlarm("A139", at, {name + " =", std::to_string(n)});
-    return flowAlarm("A137", at, {std::to_string(n)});
+    if (n == 0 || read(n, ignored, code)) return flowAlarm(codes::kReadOnlyVariable, at, {name + " =", std::to_string(n)});
+    return flowAlarm(codes::kNoSuchVariable, at, {std::to_string(n)});
   }
   if (flow_) flow_->writes.push_back(VariableWrite{snapshots_, n, localFrame, v.value, v.vacant});
   return true;

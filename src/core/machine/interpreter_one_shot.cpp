@@ -2,6 +2,7 @@
 // G50 coordinate setting, G53 machine coordinates. G28/G30/G53 may share their
 // block with G00/G01 where the profile allows it (the motion G becomes modal).
 #include "machine/interpreter_impl.h"
+#include "klueng/core/diagnostic_codes.h"
 
 namespace klueng::core::machine::detail {
 
@@ -14,7 +15,7 @@ Vec2 Interpreter::referencePoint() const {
 // point, else ms), X or U in seconds.
 bool Interpreter::dwell(const Word* w) {
   if (modal_.feedMode == FeedMode::PerRev && mach_.spindle == SpindleDir::Stopped)
-    return raise("A104", w, {"G04"});
+    return raise(codes::kFeedPerRevSpindleStopped, w, {"G04"});
   double seconds = 0.0;
   if (const Word* p = find('P')) seconds = cycles::dwellSeconds(*p, profile_.dwellP);
   else if (const Word* x = find('X')) seconds = x->value;
@@ -61,9 +62,9 @@ bool Interpreter::oneShot(const CodeWord& c) {
       if (!rapidTo(axisTarget(), w)) return false;
       const Vec2 ref = referencePoint();
       if (movesX() && std::abs(xOf(pos_) - xOf(ref)) > kPositionTolerance)
-        return raise("A115", w, {"X", num(2.0 * xOf(pos_)), num(2.0 * xOf(ref))});
+        return raise(codes::kReferenceCheckFailed, w, {"X", num(2.0 * xOf(pos_)), num(2.0 * xOf(ref))});
       if (movesZ() && std::abs(zOf(pos_) - zOf(ref)) > kPositionTolerance)
-        return raise("A115", w, {"Z", num(zOf(pos_)), num(zOf(ref))});
+        return raise(codes::kReferenceCheckFailed, w, {"Z", num(zOf(pos_)), num(zOf(ref))});
       mach_.positionCheck = true;
       return true;
     }
@@ -102,7 +103,7 @@ bool Interpreter::oneShot(const CodeWord& c) {
       if (const Word* z = find('Z')) target.x() = z->value * u + zOf(zero);
       return rapidTo(target, w);
     }
-    default: return raise("A117", w, {wordText(*w)});
+    default: return raise(codes::kNotSupportedYet, w, {wordText(*w)});
   }
 }
 

@@ -7,6 +7,7 @@
 #include "klueng/core/gcode/checker.h"
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/machine/subprogram_files.h"
+#include "klueng/core/diagnostic_codes.h"
 
 namespace klueng::core::machine {
 
@@ -38,7 +39,7 @@ CompiledJob compileJob(const io::ProgramFile& file, const MachineSetup& setup, c
   // The run needs a bar: a header without a size is reported on its line (SPEC 2).
   if (file.header.diameter <= 0 || file.header.length <= 0) {
     Diagnostic d;
-    d.code = file.header.diameter <= 0 ? "F115" : "F116";
+    d.code = file.header.diameter <= 0 ? codes::kDiameterMissing : codes::kLengthMissing;
     d.range = SourceRange{file.header.diameter <= 0 ? 4 : 5, 1, 0};
     job.diagnostics.push_back(d);
   }

@@ -8,6 +8,7 @@
 #include "klueng/core/machine/job.h"
 #include "klueng/core/gcode/program_index.h"
 #include "klueng/core/machine/subprogram_files.h"
+#include "klueng/core/diagnostic_codes.h"
 
 namespace klueng::core::machine {
 
@@ -58,7 +59,7 @@ JobCheck checkJob(std::string_view gcode, int firstLine, gcode::CheckOptions opt
     reported.push_back(d.range.file);
     Diagnostic e;
     e.severity = Severity::Error;
-    e.code = "E412";
+    e.code = codes::kSubprogramFileHasErrors;
     e.range = callInto(program, d.range.file);
     const std::string& path = program.files[static_cast<std::size_t>(d.range.file)];
     e.args = {path.substr(path.find_last_of('/') + 1), std::to_string(d.range.line), std::to_string(d.range.column), d.code};

@@ -5,10 +5,11 @@
 #include <filesystem>
 
 #include "klueng/core/machine/job.h"
+#include "klueng/core/diagnostic_codes.h"
 
 namespace klueng::core::machine {
 
-bool isUnreadable(const Diagnostic& d) { return d.code == "F101" || d.code == "F102" || d.code == "F103"; }
+bool isUnreadable(const Diagnostic& d) { return d.code == codes::kNoSuchFile || d.code == codes::kCannotReadFile || d.code == codes::kFileTooLarge; }
 
 bool LoadedSetup::hasErrors() const {
   return std::any_of(diagnostics.begin(), diagnostics.end(),

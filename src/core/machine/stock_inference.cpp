@@ -8,6 +8,7 @@
 #include <string>
 
 #include "klueng/core/geometry.h"
+#include "klueng/core/diagnostic_codes.h"
 
 namespace klueng::core::machine {
 
@@ -206,26 +207,26 @@ std::vector<Diagnostic> stockNotes(const io::JobHeader& stock, const StockInfere
                                    std::string_view gcode, int firstLine) {
   const std::string size = io::stockSizeText(stock);
   switch (stock.stockSource) {
-    case io::StockSource::Header: return {note("I156", 0, {size})};
-    case io::StockSource::CommandLine: return {note("I150", 0, {size})};
-    case io::StockSource::JobDetails: return {note("I151", 0, {size})};
-    case io::StockSource::Default: return {note("I155", 0, {size})};
+    case io::StockSource::Header: return {note(codes::kStockFromHeader, 0, {size})};
+    case io::StockSource::CommandLine: return {note(codes::kStockFromCommandLine, 0, {size})};
+    case io::StockSource::JobDetails: return {note(codes::kStockFromJobDetails, 0, {size})};
+    case io::StockSource::Default: return {note(codes::kStockDefault, 0, {size})};
     case io::StockSource::Inferred: break;
   }
-  if (!inference || !inference->found) return {note("I155", 0, {size})};
+  if (!inference || !inference->found) return {note(codes::kStockDefault, 0, {size})};
   const StockInference& r = *inference;
   std::vector<Diagnostic> notes;
   if (r.outsideFromInside)
-    notes.push_back(note("I158", r.boreLine, {size, number(r.largestCutDiameter)}));
+    notes.push_back(note(codes::kStockInferredFromBore, r.boreLine, {size, number(r.largestCutDiameter)}));
   else
-    notes.push_back(note(r.cycleStart ? "I153" : "I152", r.diameterLine,
+    notes.push_back(note(r.cycleStart ? codes::kStockFromCycleStart : codes::kStockFromFirstApproach, r.diameterLine,
                          {size, lineText(gcode, firstLine, r.diameterLine)}));
   if (r.lengthLine > 0)
-    notes.push_back(note("I157", r.lengthLine,
+    notes.push_back(note(codes::kStockLengthFromDeepestCut, r.lengthLine,
                          {number(r.length), number(r.deepestZ), lineText(gcode, firstLine, r.lengthLine),
                           number(r.cutOffMargin), number(r.chuckGrip)}));
   if (r.bore > 0.0)
-    notes.push_back(note("I154", r.boreLine, {number(r.bore), lineText(gcode, firstLine, r.boreLine)}));
+    notes.push_back(note(codes::kBoreInferred, r.boreLine, {number(r.bore), lineText(gcode, firstLine, r.boreLine)}));
   return notes;
 }
 

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "machine/tool_words.h"
+#include "klueng/core/diagnostic_codes.h"
 
 namespace klueng::core::machine {
 
@@ -93,17 +94,17 @@ std::vector<std::string_view> splitLines(std::string_view text) {
 
 const char* noteCode(ToolReason r) {
   switch (r) {
-    case ToolReason::Comment: return "I401";
-    case ToolReason::Threading: return "I402";
-    case ToolReason::ThreadingInside: return "I403";
-    case ToolReason::Grooving: return "I404";
-    case ToolReason::Drilling: return "I405";
-    case ToolReason::Boring: return "I406";
-    case ToolReason::Parting: return "I407";
-    case ToolReason::Turning: return "I408";
-    case ToolReason::Override: return "I409";
+    case ToolReason::Comment: return codes::kToolFromComment;
+    case ToolReason::Threading: return codes::kToolForThreading;
+    case ToolReason::ThreadingInside: return codes::kToolForInsideThreading;
+    case ToolReason::Grooving: return codes::kToolForGrooving;
+    case ToolReason::Drilling: return codes::kToolForDrilling;
+    case ToolReason::Boring: return codes::kToolForBoring;
+    case ToolReason::Parting: return codes::kToolForParting;
+    case ToolReason::Turning: return codes::kToolForTurning;
+    case ToolReason::Override: return codes::kToolSetForJob;
   }
-  return "I408";
+  return codes::kToolForTurning;
 }
 
 // The library tool for a kind of work: the first of that kind, refined by the
@@ -407,7 +408,7 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
       o.tip = tool.tip;
       Diagnostic d;
       d.severity = Severity::Note;
-      d.code = "I410";
+      d.code = codes::kOffsetFromLibrary;
       d.range.line = line;
       d.args = {twoDigits(n), fmt::format("{:g}", tool.noseRadius), std::to_string(tool.tip), tool.id};
       out.offsetNotes.push_back(std::move(d));

@@ -1,0 +1,156 @@
+#pragma once
+// Every diagnostic code outside the gcode module (which has gcode/diagnostic_codes.h)
+// as a named constant: the catalog (src/core/base/messages_*.cpp) and the code that
+// reports it use the same name, so a code cannot drift from its text (issue 12).
+// The code strings themselves are stable: tests and users match on them.
+
+namespace klueng::core::codes {
+
+// File formats (io; texts in messages_io.cpp)
+inline constexpr const char* kStockSizeNotPositive = "E213";
+inline constexpr const char* kNoSuchFile = "F101";
+inline constexpr const char* kCannotReadFile = "F102";
+inline constexpr const char* kFileTooLarge = "F103";
+inline constexpr const char* kBinaryFile = "F104";
+inline constexpr const char* kEmptyFile = "F105";
+inline constexpr const char* kLineTooLong = "F106";
+inline constexpr const char* kLinesIgnored = "F107";
+inline constexpr const char* kCannotWriteFile = "F108";
+inline constexpr const char* kHeaderTooShort = "F110";
+inline constexpr const char* kDiameterUnitDigit = "F111";
+inline constexpr const char* kDiameterNotNumber = "F112";
+inline constexpr const char* kLengthUnitDigit = "F113";
+inline constexpr const char* kLengthNotNumber = "F114";
+inline constexpr const char* kDiameterMissing = "F115";
+inline constexpr const char* kLengthMissing = "F116";
+inline constexpr const char* kPlainGcodeFile = "F117";
+inline constexpr const char* kBadBore = "F118";
+inline constexpr const char* kToolTableShort = "F120";
+inline constexpr const char* kBitmapMissing = "F121";
+inline constexpr const char* kNotBitmapName = "F122";
+inline constexpr const char* kNotInToolLibrary = "F123";
+inline constexpr const char* kBitmapIsFolder = "F124";
+inline constexpr const char* kOffsetTableShort = "F130";
+inline constexpr const char* kOffsetEmpty = "F131";
+inline constexpr const char* kOffsetFieldCount = "F132";
+inline constexpr const char* kOffsetNotNumber = "F133";
+inline constexpr const char* kNegativeNoseRadius = "F134";
+inline constexpr const char* kBadTipNumber = "F135";
+inline constexpr const char* kOffsetBeyondLathe = "F136";
+inline constexpr const char* kNoMachineParameters = "F137";
+inline constexpr const char* kNotKeyValue = "F140";
+inline constexpr const char* kUnknownParameter = "F141";
+inline constexpr const char* kParameterNotNumber = "F142";
+inline constexpr const char* kParameterNotPositive = "F143";
+inline constexpr const char* kParameterNegative = "F144";
+inline constexpr const char* kParameterTwice = "F145";
+inline constexpr const char* kTravelLimitsReversed = "F146";
+inline constexpr const char* kParameterNotWhole = "F147";
+inline constexpr const char* kParameterOutOfRange = "F148";
+inline constexpr const char* kStartOutsideTravel = "F149";
+inline constexpr const char* kNotAnImage = "F150";
+inline constexpr const char* kImageTruncated = "F151";
+inline constexpr const char* kImageSizeRefused = "F152";
+inline constexpr const char* kUnsupportedBmp = "F153";
+inline constexpr const char* kBmpHeaderDamaged = "F154";
+inline constexpr const char* kPngDamaged = "F155";
+inline constexpr const char* kColourOutsidePalette = "F156";
+inline constexpr const char* kLibraryLineFields = "F160";
+inline constexpr const char* kBadToolId = "F161";
+inline constexpr const char* kDuplicateToolId = "F162";
+inline constexpr const char* kBadToolKind = "F163";
+inline constexpr const char* kBadPixelsPerMm = "F164";
+inline constexpr const char* kLibraryNumberNegative = "F165";
+inline constexpr const char* kLibraryBadTip = "F166";
+inline constexpr const char* kLibraryNotBitmapName = "F167";
+inline constexpr const char* kToolNeedsNames = "F168";
+inline constexpr const char* kLibraryBitmapMissing = "F169";
+inline constexpr const char* kNotVariableLine = "F170";
+inline constexpr const char* kVariableNotKept = "F171";
+inline constexpr const char* kStockFromCommandLine = "I150";
+inline constexpr const char* kStockFromJobDetails = "I151";
+inline constexpr const char* kStockFromFirstApproach = "I152";
+inline constexpr const char* kStockFromCycleStart = "I153";
+inline constexpr const char* kBoreInferred = "I154";
+inline constexpr const char* kStockDefault = "I155";
+inline constexpr const char* kStockFromHeader = "I156";
+inline constexpr const char* kStockLengthFromDeepestCut = "I157";
+inline constexpr const char* kStockInferredFromBore = "I158";
+inline constexpr const char* kToolFromComment = "I401";
+inline constexpr const char* kToolForThreading = "I402";
+inline constexpr const char* kToolForInsideThreading = "I403";
+inline constexpr const char* kToolForGrooving = "I404";
+inline constexpr const char* kToolForDrilling = "I405";
+inline constexpr const char* kToolForBoring = "I406";
+inline constexpr const char* kToolForParting = "I407";
+inline constexpr const char* kToolForTurning = "I408";
+inline constexpr const char* kToolSetForJob = "I409";
+inline constexpr const char* kOffsetFromLibrary = "I410";
+
+// Run-time alarms and notes of the interpreter (machine; texts in messages_machine.cpp)
+inline constexpr const char* kSpindleAboveMaximum = "A101";
+inline constexpr const char* kNoFeed = "A102";
+inline constexpr const char* kFeedPerRevWithoutSpeed = "A103";
+inline constexpr const char* kFeedPerRevSpindleStopped = "A104";
+inline constexpr const char* kSpindleReversedWithoutStop = "A105";
+inline constexpr const char* kSpindleStartedWithBrakeOn = "A106";
+inline constexpr const char* kBrakeWhileTurning = "A107";
+inline constexpr const char* kThreadUnderConstantSurface = "A108";
+inline constexpr const char* kCAxisOutsideCAxisMode = "A109";
+inline constexpr const char* kCAxisModeWithoutBrake = "A110";
+inline constexpr const char* kBrakeReleasedInCAxisMode = "A111";
+inline constexpr const char* kBeyondTravelLimit = "A112";
+inline constexpr const char* kArcEndsNotOnOneCircle = "A113";
+inline constexpr const char* kArcRadiusTooSmall = "A114";
+inline constexpr const char* kReferenceCheckFailed = "A115";
+inline constexpr const char* kThreadSpindleStopped = "A116";
+inline constexpr const char* kNotSupportedYet = "A117";
+inline constexpr const char* kNoSuchOffset = "A118";
+inline constexpr const char* kThreadWithoutSpeed = "A119";
+inline constexpr const char* kNoProfileBlock = "A120";
+inline constexpr const char* kProfileNotMonotonic = "A121";
+inline constexpr const char* kCycleNeedsPositive = "A122";
+inline constexpr const char* kCycleUnderNoseComp = "A123";
+inline constexpr const char* kProfileFirstBlockAxis = "A124";
+inline constexpr const char* kProfileHasNoMoves = "A125";
+inline constexpr const char* kCycleNeedsPAndQ = "A126";
+inline constexpr const char* kTooManyPasses = "A127";
+inline constexpr const char* kNoSuchStation = "A128";
+inline constexpr const char* kProgramAlarm = "A130";
+inline constexpr const char* kDivisionByZero = "A131";
+inline constexpr const char* kEndlessLoopBlocks = "A132";
+inline constexpr const char* kEndlessLoopTime = "A133";
+inline constexpr const char* kCallsTooDeep = "A134";
+inline constexpr const char* kNoSuchProgram = "A135";
+inline constexpr const char* kNoSuchSequence = "A136";
+inline constexpr const char* kNoSuchVariable = "A137";
+inline constexpr const char* kOutsideFunctionDomain = "A138";
+inline constexpr const char* kReadOnlyVariable = "A139";
+inline constexpr const char* kVacantValueNeeded = "A140";
+inline constexpr const char* kUnmatchedLoopEnd = "A141";
+inline constexpr const char* kReturnTargetMissing = "A142";
+inline constexpr const char* kValueIsNoCode = "A143";
+inline constexpr const char* kCornerNeedsNextMove = "A144";
+inline constexpr const char* kCornerLongerThanMove = "A145";
+inline constexpr const char* kAngleUnreachable = "A146";
+inline constexpr const char* kMacroStop = "A147";
+inline constexpr const char* kProfileHasMacro = "A148";
+inline constexpr const char* kTooManyCycleMoves = "A149";
+inline constexpr const char* kSubprogramFileHasErrors = "E412";
+inline constexpr const char* kMainProgramRepeats = "I160";
+inline constexpr const char* kVacantAddressOmitted = "W130";
+
+// Nose radius compensation (comp; texts in messages_comp.cpp)
+inline constexpr const char* kConcaveArcTooSmall = "A201";
+inline constexpr const char* kNoseDoesNotFit = "A202";
+inline constexpr const char* kCompStartOrCancelOnArc = "A203";
+
+// Material removal (cut; texts in messages_cut.cpp)
+inline constexpr const char* kRapidIntoStock = "A301";
+inline constexpr const char* kCutWithSpindleStopped = "A302";
+inline constexpr const char* kHolderHitsStock = "A303";
+inline constexpr const char* kToolHitsChuck = "A304";
+inline constexpr const char* kBitmapHasNoEdge = "A310";
+inline constexpr const char* kBitmapTooLarge = "A311";
+
+}  // namespace klueng::core::codes
