@@ -2,6 +2,7 @@
 
 #include <QFileInfo>
 
+#include "klueng/core/diagnostic_codes.h"
 #include "klueng/core/machine/job_check.h"
 #include "klueng/core/machine/stock_inference.h"
 
@@ -61,7 +62,7 @@ bool Document::reinferStock(const QString& gcode, const core::machine::MachineSe
 
 int Document::firstOmittedLine() const {
   for (const core::Diagnostic& d : fileDiagnostics_)
-    if (d.code == "F106") return d.range.line;
+    if (d.code == core::codes::kLineTooLong) return d.range.line;
   return 0;
 }
 
