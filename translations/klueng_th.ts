@@ -132,6 +132,26 @@
         <source>Diagnostics: %1 errors, %2 warnings</source>
         <translation>การตรวจสอบไวยากรณ์: ข้อผิดพลาด %1 รายการ, คำเตือน %2 รายการ</translation>
     </message>
+    <message>
+        <source>Diagnostics: %1, %2</source>
+        <translation>การตรวจสอบไวยากรณ์: %1, %2</translation>
+    </message>
+    <message>
+        <source>1 error</source>
+        <translation>ข้อผิดพลาด 1 รายการ</translation>
+    </message>
+    <message>
+        <source>%1 errors</source>
+        <translation>ข้อผิดพลาด %1 รายการ</translation>
+    </message>
+    <message>
+        <source>1 warning</source>
+        <translation>คำเตือน 1 รายการ</translation>
+    </message>
+    <message>
+        <source>%1 warnings</source>
+        <translation>คำเตือน %1 รายการ</translation>
+    </message>
 </context>
 <context>
     <name>klueng::gui::Document</name>

@@ -117,7 +117,12 @@ void DiagnosticsPanel::retranslateUi() {
   const int errors = errorCount();
   const int warnings = warningCount();
   if (errors == 0 && warnings == 0) setWindowTitle(tr("Diagnostics: no errors"));
-  else setWindowTitle(tr("Diagnostics: %1 errors, %2 warnings").arg(errors).arg(warnings));
+  else {
+    // "1 error", never "1 errors" (Thai has one form for both).
+    const QString e = errors == 1 ? tr("1 error") : tr("%1 errors").arg(errors);
+    const QString w = warnings == 1 ? tr("1 warning") : tr("%1 warnings").arg(warnings);
+    setWindowTitle(tr("Diagnostics: %1, %2").arg(e, w));
+  }
   model_->retranslate();
 }
 

@@ -176,6 +176,24 @@ class MainWindowTest : public QObject {
     QVERIFY(!hasWavyUnderlineAt(w.editor()->document()->findBlockByNumber(1), 9));
   }
 
+  // Issue 11: "1 error", never "1 errors"; Thai counts items the same way for one or many.
+  void theDiagnosticsTitleCountsInWords() {
+    MainWindow w;
+    w.show();
+    QVERIFY(waitIdle(w));
+    w.editor()->insertPlainText(QStringLiteral("G21 G99\nG01 X20. Q\n"));
+    QVERIFY(waitIdle(w));
+    QCOMPARE(w.diagnosticsPanel()->errorCount(), 1);
+    const int warnings = w.diagnosticsPanel()->warningCount();
+    QCOMPARE(w.diagnosticsPanel()->windowTitle(),
+             QStringLiteral("Diagnostics: 1 error, %1").arg(warnings == 1 ? QStringLiteral("1 warning")
+                                                                          : QStringLiteral("%1 warnings").arg(warnings)));
+    Language::instance()->setLanguage(QStringLiteral("th"));
+    QTRY_COMPARE(w.diagnosticsPanel()->windowTitle(),
+                 QStringLiteral("การตรวจสอบไวยากรณ์: ข้อผิดพลาด 1 รายการ, คำเตือน %1 รายการ").arg(warnings));
+    Language::instance()->setLanguage(QStringLiteral("en"));
+  }
+
   void oneEditIsParsedOnce() {
     // Issue 12: the window never parses G-code itself; one typing pause = one
     // parse (the check's), whatever the highlighter, tool tips or status do.
