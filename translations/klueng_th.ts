@@ -999,6 +999,18 @@
         <source>Exported %1</source>
         <translation>ส่งออก %1 แล้ว</translation>
     </message>
+    <message>
+        <source>The program ended. Cycle time: %1.</source>
+        <translation>จบโปรแกรมแล้ว เวลาทำงาน (cycle time): %1</translation>
+    </message>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 นาที %2 วินาที</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 วินาที</translation>
+    </message>
 </context>
 <context>
     <name>klueng::gui::DialectOfferBar</name>

@@ -421,6 +421,9 @@ void MainWindow::onRunStateChanged(RunState state) {
       showDiagnostics();
     }
   }
+  // Issue 11: the end of a run says so, with the cycle time the core computed.
+  if (state == RunState::Finished && runner_->timeline() && !runner_->timeline()->alarm)
+    showBanner(tr("The program ended. Cycle time: %1.").arg(formatDuration(runner_->timeline()->cycleTime())), false);
   // The run's notices (a vacant address left out, M99 in the main program, a
   // #3006 stop message) up to where it stands, for lines of this file.
   if ((state == RunState::Paused || state == RunState::Finished) && runner_->timeline()) {
@@ -439,6 +442,12 @@ void MainWindow::onRunStateChanged(RunState state) {
     }
     if (added) showDiagnostics();
   }
+}
+
+QString MainWindow::formatDuration(double seconds) {
+  const int minutes = static_cast<int>(seconds / 60.0);
+  const double rest = seconds - 60.0 * minutes;
+  return minutes > 0 ? tr("%1 min %2 s").arg(minutes).arg(rest, 0, 'f', 1) : tr("%1 s").arg(seconds, 0, 'f', 1);
 }
 
 void MainWindow::onAlarm(const core::Diagnostic& alarm) {

@@ -71,6 +71,8 @@ class MainWindow : public QMainWindow {
   QSplitter* splitter() const { return splitter_; }
   // The banner above the editor (alarms, "fix the errors first"); empty when hidden.
   QString bannerText() const;
+  // A cycle time as people say it: "3 min 12.4 s" / "3 นาที 12.4 วินาที".
+  static QString formatDuration(double seconds);
   // Where the open program's stock came from (header, Job details, inferred ...).
   QString stockSourceText() const;
   // Actions by object name ("actionGo", "actionSave", ...), for tests.

@@ -509,6 +509,24 @@ class MainWindowTest : public QObject {
     QVERIFY(std::any_of(listed.begin(), listed.end(), [&](const core::Diagnostic& d) { return d.code == alarm.code; }));
   }
 
+  // Issue 11: a run that reaches M30 says so, with the cycle time of the core's timeline.
+  void theEndOfARunGivesTheCycleTime() {
+    MainWindow w;
+    w.show();
+    QVERIFY(w.openFile(sample("01-step-shaft.txt")));
+    QVERIFY(waitIdle(w));
+    w.runController()->setSpeed(RunController::kAsFastAsPossible);
+    w.action(QStringLiteral("actionGo"))->trigger();
+    QTRY_COMPARE_WITH_TIMEOUT(w.runController()->state(), RunState::Finished, 20000);
+    const double seconds = w.runController()->timeline()->cycleTime();
+    QVERIFY(seconds > 10.0);
+    const int minutes = static_cast<int>(seconds / 60.0);
+    const QString expected = minutes > 0 ? QStringLiteral("%1 min %2 s").arg(minutes).arg(seconds - 60.0 * minutes, 0, 'f', 1)
+                                         : QStringLiteral("%1 s").arg(seconds, 0, 'f', 1);
+    QCOMPARE(w.bannerText(), QStringLiteral("The program ended. Cycle time: %1.").arg(expected));
+    QCOMPARE(MainWindow::formatDuration(192.44), QStringLiteral("3 min 12.4 s"));
+  }
+
   void stepHighlightsTheExecutingBlock() {
     MainWindow w;
     w.show();
