@@ -57,7 +57,7 @@ std::vector<Step> singleCycle(gcode::CodeAction g, const Vec2& start, const Vec2
 Expansion expand(const gcode::CodeInfo& code, const CycleInput& in, CycleMemory& memory) {
   const gcode::CodeAction g = code.action;
   Expansion e;
-  const Block& b = in.program->blocks[static_cast<std::size_t>(in.blockIndex)];
+  const Block& b = cycleBlock(in);
   const double u = in.unit;
   const std::string name = gName(in, code);
   const bool secondBlock = (g == A::Finishing || g == A::TurnRoughing || g == A::FaceRoughing || g == A::PatternRepeating) ? (b.has('P') || b.has('Q')) : hasAxis(b);

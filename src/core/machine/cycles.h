@@ -7,6 +7,7 @@
 //
 // All points are controlled-point positions in work coordinates (z, x radius),
 // tool offset applied, like the interpreter's.
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -56,9 +57,26 @@ struct CycleMemory {
   double g76Allowance = 0.0;     // d
 };
 
+// The profile N(P)..N(Q) of G70-G73 as moves from the cycle's start point.
+struct Profile {
+  std::vector<Step> moves;   // moves[0] starts at the cycle's start point
+  std::vector<int> blockOf;  // program block index of each move
+  int ns = -1, nf = -1;
+};
+
+// Reads N(P)..N(Q) for the cycle block `cycle` (its G word `g`). The interpreter supplies it: it
+// runs those blocks itself into a capturing sink, so a profile means exactly
+// what the same blocks mean anywhere else (modal G, U/W, ,C ,R corners, macro
+// values, G20). `withFeed`: F, S, T, G40-G42 and G04 inside apply (G70);
+// the roughing cycles ignore them.
+using ProfileReader = std::function<std::optional<CycleAlarm>(const gcode::Block& cycle, const gcode::Word* g,
+                                                             bool withFeed, Profile& out)>;
+
 struct CycleInput {
   const gcode::Program* program = nullptr;
   int blockIndex = 0;                     // the cycle block
+  const gcode::Block* block = nullptr;    // its words with macro values evaluated (the interpreter's)
+  const ProfileReader* readProfile = nullptr;  // G70-G73 (none: "no profile block" alarm)
   const gcode::Word* gWord = nullptr;     // the cycle's G word
   Vec2 start = Vec2::Zero();              // controlled point when the cycle starts
   Vec2 offset = Vec2::Zero();             // tool offset vector (z, x radius)

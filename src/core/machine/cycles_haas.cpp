@@ -144,7 +144,7 @@ Expansion threading(const gcode::CodeInfo& code, const CycleInput& in, const Blo
 }  // namespace
 
 Expansion expandOneBlock(const gcode::CodeInfo& code, const CycleInput& in) {
-  const Block& b = in.program->blocks[static_cast<std::size_t>(in.blockIndex)];
+  const Block& b = cycleBlock(in);
   switch (code.action) {
     case A::Finishing: {
       // G70 P Q is the same block in both forms.

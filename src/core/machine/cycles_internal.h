@@ -122,15 +122,7 @@ inline void swapAll(std::vector<Step>& steps) {
   for (Step& s : steps) s.path = swapped(s.path);
 }
 
-// The profile N(P)..N(Q) of G70-G73 as moves from the cycle's start point.
-struct Profile {
-  std::vector<Step> moves;   // moves[0] starts at the cycle's start point
-  std::vector<int> blockOf;  // program block index of each move
-  int ns = -1, nf = -1;
-};
-
-// Reads N(P)..N(Q) from the cycle's start point. `withFeed`: F, S, T, G40-G42
-// inside apply (G70); roughing cycles ignore them.
+// Reads N(P)..N(Q) through the interpreter (CycleInput::readProfile).
 std::optional<CycleAlarm> readProfile(const CycleInput& in, const Block& cycle, bool withFeed, Profile& out);
 // Keeps only the moves (roughing cycles ignore G40-G42 inside the profile).
 void movesOnly(Profile& p);
@@ -148,6 +140,11 @@ std::optional<CycleAlarm> stockRemoval(const CycleInput& in, Profile& profile, d
 // (G75: swap before and after): pecks of `peck` with `retract` back between
 // them, `shiftStep` between the rows, then back to the start.
 std::vector<Step> pecks(const Vec2& start, const Vec2& target, double peck, double shiftStep, double retract);
+
+// The cycle block as the interpreter runs it (macro values evaluated).
+inline const Block& cycleBlock(const CycleInput& in) {
+  return in.block ? *in.block : in.program->blocks[static_cast<std::size_t>(in.blockIndex)];
+}
 
 inline std::string gName(const CycleInput& in, const gcode::CodeInfo& code) {
   return in.gWord ? "G" + in.gWord->number : fmt::format("G{}", code.number);

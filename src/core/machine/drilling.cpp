@@ -19,7 +19,7 @@ double dwellSeconds(const gcode::Word& p, gcode::DwellPUnit rule) {
 
 std::optional<CycleAlarm> readDrillWords(const gcode::CodeInfo& code, const CycleInput& in, bool fresh, DrillWords& w) {
   const gcode::CodeAction g = code.action;
-  const Block& b = in.program->blocks[static_cast<std::size_t>(in.blockIndex)];
+  const Block& b = cycleBlock(in);
   const gcode::MachineProfile& profile = *in.profile;
   const double u = in.unit;
   const bool inch = u > 1.0;

@@ -22,7 +22,7 @@ using gcode::Phase;
 Interpreter::Interpreter(const gcode::Program& program, const MachineSetup& setup, const RunOptions& options,
                          MachineSink& sink, FlowLog* flow)
     : program_(program), setup_(setup), options_(options), profile_(gcode::machineProfile(options.dialect)),
-      sink_(sink), offsets_(setup.offsets), flow_(flow), index_(program) {
+      sink_(&sink), offsets_(setup.offsets), flow_(flow), index_(program) {
   const auto& m = setup_.machine;
   pos_ = Vec2(m.startZ, m.startX / 2.0);
   mach_.position = pos_;
@@ -30,9 +30,13 @@ Interpreter::Interpreter(const gcode::Program& program, const MachineSetup& setu
   // Power-on units: the run option (CLI --units, the GUI setting), else the profile's.
   const gcode::InputUnits units = options.powerOnUnits.value_or(profile_.powerOnUnits);
   modal_.units = units == gcode::InputUnits::Inch ? Units::Inch : Units::Mm;
+  profileReader_ = [this](const gcode::Block& cycle, const Word* g, bool withFeed, cycles::Profile& out) {
+    return readProfile(cycle, g, withFeed, out);
+  };
 }
 
 bool Interpreter::withinTravel(const Vec2& work, const Word* where) {
+  if (capture_) return true;  // a profile is a shape; the cycle's moves are checked
   const auto& m = setup_.machine;
   const Vec2 machine = work - mach_.workShift;
   const double xd = 2.0 * xOf(machine), z = zOf(machine);
@@ -67,7 +71,7 @@ bool Interpreter::rapidTo(const Vec2& target, const Word* where) {
   m.kind = MoveKind::Rapid;
   m.path = Segment::line(pos_, target);
   fillCall(m, where);
-  sink_.motion(m);
+  sink_->motion(m);
   moved(target);
   return true;
 }
@@ -106,7 +110,7 @@ bool Interpreter::executeBlock() {
     if (gs[i].info->group == ModalGroup::Units)
       modal_.units = gs[i].info->action == CodeAction::Inch ? Units::Inch : Units::Mm;
   if (const Word* t = find('T'))
-    if (!selectTool(*t)) return false;
+    if (capture_ ? !captureTool(*t) : !selectTool(*t)) return false;
   for (std::size_t i = 0; i < gCount; ++i) {
     const CodeWord& c = gs[i];
     const CodeAction a = c.info->action;
@@ -154,8 +158,13 @@ bool Interpreter::executeBlock() {
       default: break;  // G18 plane, G20/G21 done above
     }
   }
-  if (const Word* f = find('F')) modal_.feed = f->value * unit();
-  if (const Word* s = find('S')) {
+  if (const Word* f = find('F')) {
+    modal_.feed = f->value * unit();
+    if (capture_) captureFeed(modal_.feed);
+  }
+  if (const Word* s = find('S'); s && capture_) {
+    captureSpeed(*s);
+  } else if (s) {
     if (oneShotG && oneShotG->info->action == CodeAction::CoordinateSet) {
       modal_.rpmClamp = s->value;
     } else if (modal_.spindleMode == SpindleMode::ConstantSurface) {
@@ -166,7 +175,7 @@ bool Interpreter::executeBlock() {
       modal_.sWord = s->value;
     }
   }
-  if (compChanged) sink_.compensation(modal_.noseComp, mach_.noseRadius, mach_.tip);
+  if (compChanged) sink_->compensation(modal_.noseComp, mach_.noseRadius, mach_.tip);
   updateRpm();
 
   // 2. M codes before the motion, in code order: M03 M04 M08 M41 M86 M87 M91.
@@ -176,12 +185,18 @@ bool Interpreter::executeBlock() {
               return std::pair(a.info->phase, a.info->number) < std::pair(b.info->phase, b.info->number);
             });
   std::size_t mi = 0;
+  if (capture_) {  // a profile's M codes are not the cycle's business, a call is refused
+    for (std::size_t i = 0; i < mCount; ++i)
+      if (ms[i].info->group == ModalGroup::MSubprogram) return profileOnly(wordText(*ms[i].word).c_str(), ms[i].word);
+    mCount = 0;
+  }
   for (; mi < mCount && ms[mi].info->phase != Phase::AfterMotion; ++mi)
     if (!mCode(ms[mi])) return false;
 
   // 3. The motion or one-shot G of the block.
   if (motionG) modal_.motion = motionFor(motionG->info->action);
   if (!cAxisWords()) return false;
+  if (capture_ && !profileBlockAllowed(motionG, cycleG, oneShotG, singleCycleG)) return false;
   if (cycleG) {
     if (!cannedCycle(*cycleG)) return false;
   } else if (oneShotG) {
@@ -213,6 +228,7 @@ bool Interpreter::executeBlock() {
 }
 
 void Interpreter::emitSnapshot() {
+  if (capture_) return;  // a profile block is read, not run
   StateSnapshot snap;
   snap.line = block_->line;
   snap.blockIndex = blockIndex_;
@@ -226,7 +242,7 @@ void Interpreter::emitSnapshot() {
   snap.stopped = stopped_;
   snap.optionalStop = optionalStopBlock_;
   optionalStopBlock_ = false;
-  sink_.blockDone(snap);
+  sink_->blockDone(snap);
   ++snapshots_;
   if (stopped_ && stopEndsRun_) ended_ = true;
 }
@@ -391,7 +407,7 @@ bool Interpreter::move(const Word* g) {
       m.lead = modal_.feed;
       if (!pathWithinTravel(m.path, where)) return false;
       fillCall(m, where);
-      sink_.motion(m);
+      sink_->motion(m);
       moved(target);
       return true;
     }
@@ -400,6 +416,7 @@ bool Interpreter::move(const Word* g) {
 }
 
 bool Interpreter::feedReady(const Word* where, const char* code) {
+  if (capture_) return true;  // the cycle checks its own moves when it makes them
   if (modal_.feed <= 0.0) return raise(codes::kNoFeed, where, {code});
   if (modal_.feedMode == FeedMode::PerRev) {
     if (mach_.spindle == SpindleDir::Stopped) return raise(codes::kFeedPerRevSpindleStopped, where, {code});
@@ -414,7 +431,7 @@ bool Interpreter::feedMove(MoveKind kind, const Segment& path, const Word* where
   m.kind = kind;
   m.path = path;
   fillCall(m, where);
-  sink_.motion(m);
+  sink_->motion(m);
   moved(path.end);
   return true;
 }

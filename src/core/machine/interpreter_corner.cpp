@@ -76,7 +76,7 @@ bool Interpreter::holdCorner(const Segment& path, const Word* where) {
 
 bool Interpreter::cornerNeedsMove() {
   corner_.active = false;
-  sink_.alarm(Diagnostic{Severity::Alarm, codes::kCornerNeedsNextMove, corner_.where, {corner_.text}});
+  sink_->alarm(Diagnostic{Severity::Alarm, codes::kCornerNeedsNextMove, corner_.where, {corner_.text}});
   return false;
 }
 
@@ -102,7 +102,7 @@ bool Interpreter::cutHeldCorner(const Segment& path, Vec2& start, const Word* wh
   const Vec2 d1 = unitVector(first.end - first.start);
   const Vec2 d2 = startDirection(path);
   const auto alarm = [&](const char* code) {
-    sink_.alarm(Diagnostic{Severity::Alarm, code, held.where, {held.text}});
+    sink_->alarm(Diagnostic{Severity::Alarm, code, held.where, {held.text}});
     return false;
   };
   const auto tooLong = [&]() { return alarm(codes::kCornerLongerThanMove); };
@@ -141,14 +141,14 @@ bool Interpreter::cutHeldCorner(const Segment& path, Vec2& start, const Word* wh
   MotionCall m = held.first;
   if ((p1 - first.start).norm() > 1e-9) {
     m.path = Segment::line(first.start, p1);
-    sink_.motion(m);
+    sink_->motion(m);
   }
   // The corner piece belongs to the block that asked for it.
   MotionCall piece = held.first;
   piece.kind = round ? MoveKind::Arc : MoveKind::Line;
   piece.path = round ? *round : Segment::line(p1, p2);
   if (!pathWithinTravel(piece.path, where)) return false;
-  sink_.motion(piece);
+  sink_->motion(piece);
   moved(p2);
   start = p2;
   return true;

@@ -36,6 +36,8 @@ cycles::CycleInput Interpreter::cycleInput(const Word* g) const {
   cycles::CycleInput in;
   in.program = &program_;
   in.blockIndex = blockIndex_;
+  in.block = block_;
+  in.readProfile = &profileReader_;
   in.gWord = g;
   in.start = pos_;
   in.offset = offsetVector();
@@ -55,7 +57,7 @@ bool Interpreter::cycleAlarm(const cycles::CycleAlarm& a) {
   d.code = a.code;
   d.range = a.where;
   d.args = a.args;
-  sink_.alarm(d);
+  sink_->alarm(d);
   return false;
 }
 
@@ -115,7 +117,7 @@ bool Interpreter::cycleReady(const std::vector<cycles::Step>& steps, const Word*
 bool Interpreter::emitCycle(const std::vector<cycles::Step>& steps, const Word* g, const std::string& name) {
   if (!cycleReady(steps, g, name)) return false;
   for (const cycles::Step& s : steps) {
-    if (sink_.halted()) return false;
+    if (sink_->halted()) return false;
     Word at;  // a profile step points its alarms at its own block's word
     const Word* where = g;
     if (s.where.line != 0) {
@@ -137,7 +139,7 @@ bool Interpreter::emitCycle(const std::vector<cycles::Step>& steps, const Word* 
     switch (s.kind) {
       case cycles::StepKind::Compensation:
         modal_.noseComp = s.comp;
-        sink_.compensation(modal_.noseComp, mach_.noseRadius, mach_.tip);
+        sink_->compensation(modal_.noseComp, mach_.noseRadius, mach_.tip);
         break;
       case cycles::StepKind::Rapid:
         if (!rapidTo(s.path.end, where)) return false;
@@ -160,7 +162,7 @@ bool Interpreter::emitCycle(const std::vector<cycles::Step>& steps, const Word* 
         m.lead = s.lead;
         if (!pathWithinTravel(m.path, where)) return false;
         fillCall(m, where);
-        sink_.motion(m);
+        sink_->motion(m);
         moved(s.path.end);
         break;
       }
@@ -168,7 +170,7 @@ bool Interpreter::emitCycle(const std::vector<cycles::Step>& steps, const Word* 
         DwellCall d;
         d.seconds = s.seconds;
         fillDwell(d);
-        sink_.dwell(d);
+        sink_->dwell(d);
         break;
       }
     }

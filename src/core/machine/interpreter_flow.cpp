@@ -16,8 +16,6 @@ using gcode::Block;
 using gcode::MacroValue;
 using gcode::StatementKind;
 
-namespace {
-
 // A G65 / G66 / G67 block (the code table's macro call actions) runs as a call, not as motion.
 bool isMacroCallBlock(const Block& b, gcode::Dialect dialect, CodeWord& g) {
   for (const Word& w : b.words) {
@@ -31,6 +29,9 @@ bool isMacroCallBlock(const Block& b, gcode::Dialect dialect, CodeWord& g) {
   }
   return false;
 }
+
+
+namespace {
 
 std::string statementText(const Block& b) {
   switch (b.statement.kind) {
@@ -51,7 +52,7 @@ bool Interpreter::flowAlarm(const char* code, const SourceRange& at, std::vector
   d.code = code;
   d.range = at;
   d.args = std::move(args);
-  sink_.alarm(d);
+  sink_->alarm(d);
   return false;
 }
 
@@ -126,7 +127,7 @@ void Interpreter::noteStack() {
 }
 
 void Interpreter::run() {
-  sink_.setPosition(pos_);
+  sink_->setPosition(pos_);
   const int count = static_cast<int>(program_.blocks.size());
   visited_.assign(program_.blocks.size(), 0);
   matchLoops();
@@ -145,7 +146,7 @@ void Interpreter::run() {
   stackId_ = 0;
 
   int pc = 0;
-  while (pc >= 0 && pc < count && !ended_ && !sink_.halted()) {
+  while (pc >= 0 && pc < count && !ended_ && !sink_->halted()) {
     // Leaving the running program's blocks: the next O block (or the end of
     // its file) ends the main program and returns from a subprogram.
     const gcode::ProgramSection& section = index_.section(frames_.back().section);
@@ -166,7 +167,7 @@ void Interpreter::run() {
     pc = next_;
   }
   // A chamfer or corner still waiting for its move when the program ends.
-  if (corner_.active && !sink_.halted()) cornerNeedsMove();
+  if (corner_.active && !sink_->halted()) cornerNeedsMove();
   // The persistent variables go back to the caller (who keeps them in a file).
   if (options_.persistentVariables) {
     for (int n = 500; n <= 999; ++n) {
@@ -175,7 +176,7 @@ void Interpreter::run() {
       else (*options_.persistentVariables)[n] = v.value;
     }
   }
-  sink_.end();
+  sink_->end();
 }
 
 bool Interpreter::loopLimits() {
@@ -188,9 +189,9 @@ bool Interpreter::loopLimits() {
   } else {
     visited_[static_cast<std::size_t>(blockIndex_)] = 1;
   }
-  if (m.maxRunTime > 0.0 && sink_.elapsed() > m.maxRunTime)
+  if (m.maxRunTime > 0.0 && sink_->elapsed() > m.maxRunTime)
     return flowAlarm(codes::kEndlessLoopTime, lastJumpAt_.line > 0 ? lastJumpAt_ : SourceRange{block_->line, 1, 0, block_->file},
-                     {lastJumpText_.empty() ? std::string("M99") : lastJumpText_, num(sink_.elapsed()),
+                     {lastJumpText_.empty() ? std::string("M99") : lastJumpText_, num(sink_->elapsed()),
                       num(m.maxRunTime)});
   return true;
 }
@@ -205,7 +206,7 @@ bool Interpreter::runBlock(int index) {
     stopped_ = false;
     stopEndsRun_ = false;
     if (!statement(b)) return false;
-    if (!sink_.halted()) emitSnapshot();
+    if (!sink_->halted()) emitSnapshot();
     return true;
   }
   if (b.hasExpressions && !evaluateWords(b)) return false;

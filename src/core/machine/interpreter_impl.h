@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <deque>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -74,10 +75,17 @@ struct PendingCall {
   std::string text;
 };
 
+// A G65 / G66 / G67 block (the code table's macro call actions) runs as a call, not as motion.
+bool isMacroCallBlock(const gcode::Block& b, gcode::Dialect dialect, CodeWord& g);
+
+struct ProfileCapture;  // interpreter_profile.cpp
+
 class Interpreter final : public gcode::MacroVariables {
  public:
   Interpreter(const gcode::Program& program, const MachineSetup& setup, const RunOptions& options, MachineSink& sink,
               FlowLog* flow);
+  Interpreter(const Interpreter&) = delete;  // its profile reader points at itself
+  Interpreter& operator=(const Interpreter&) = delete;
   void run();
   bool read(int n, gcode::MacroValue& out, const char*& errorCode) override;
 
@@ -116,7 +124,7 @@ class Interpreter final : public gcode::MacroVariables {
     if (where) d.range = where->range;
     else d.range = SourceRange{block_->line, 1, 0};
     d.args = std::move(args);
-    sink_.alarm(d);
+    sink_->alarm(d);
     return false;
   }
 
@@ -237,11 +245,21 @@ class Interpreter final : public gcode::MacroVariables {
   bool cycleReady(const std::vector<cycles::Step>& steps, const Word* g, const std::string& name);
   bool emitCycle(const std::vector<cycles::Step>& steps, const Word* g, const std::string& name);
 
+  // ---- interpreter_profile.cpp (G70-G73 read N(P)..N(Q) by running them) ---------
+  std::optional<cycles::CycleAlarm> readProfile(const gcode::Block& cycle, const Word* g, bool withFeed,
+                                                cycles::Profile& out);
+  int findSequence(int n, int from) const;
+  bool profileOnly(const char* what, const Word* where);
+  bool profileBlockAllowed(const CodeWord* motion, const CodeWord* cycle, const CodeWord* oneShot, const CodeWord* single);
+  bool captureTool(const Word& t);
+  void captureFeed(double mm);
+  void captureSpeed(const Word& s);
+
   const gcode::Program& program_;
   const MachineSetup& setup_;
   const RunOptions& options_;
   const gcode::MachineProfile& profile_;
-  MachineSink& sink_;
+  MachineSink* sink_;  // a capturing sink while a cycle reads its profile
 
   ModalState modal_;
   MachineState mach_;
@@ -258,6 +276,9 @@ class Interpreter final : public gcode::MacroVariables {
   const CodeInfo* drillCycle_ = nullptr;   // G81, G82 or G83 while a drilling cycle is modal (G80 ends it)
   cycles::DrillWords drill_;           // its modal words
   cycles::CycleMemory cycleMemory_;
+  cycles::ProfileReader profileReader_;  // readProfile, for the cycle expansions
+  ProfileCapture* capture_ = nullptr;  // set while a G70-G73 runs its profile into a capturing sink
+  std::deque<gcode::Word> profileWords_;  // the S and T words a G70 profile hands to its steps
   bool stopped_ = false;
   bool stopEndsRun_ = false;
   bool optionalStopBlock_ = false;     // this block holds M01

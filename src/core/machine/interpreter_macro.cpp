@@ -79,8 +79,8 @@ bool Interpreter::read(int n, MacroValue& out, const char*& errorCode) {
   }
   switch (n) {
     case 3000: return true;  // vacant until written (the write raises the alarm)
-    case 3001: out = MacroValue::of(sink_.elapsed() * 1000.0 - timerBase_); return true;
-    case 3002: out = MacroValue::of(sink_.elapsed() / 3600.0 - hourBase_); return true;
+    case 3001: out = MacroValue::of(sink_->elapsed() * 1000.0 - timerBase_); return true;
+    case 3002: out = MacroValue::of(sink_->elapsed() / 3600.0 - hourBase_); return true;
     case 3901: out = MacroValue::of(partsMachined_); return true;
     case 3902: out = MacroValue::of(partsRequired_); return true;
     case 4109: out = MacroValue::of(modal_.feed / unit()); return true;
@@ -124,9 +124,9 @@ bool Interpreter::writeVariable(int n, MacroValue v, const SourceRange& at) {
     stopped_ = true;
     stopEndsRun_ = options_.stopAtM00;
   } else if (n == 3001) {
-    timerBase_ = sink_.elapsed() * 1000.0 - v.value;
+    timerBase_ = sink_->elapsed() * 1000.0 - v.value;
   } else if (n == 3002) {
-    hourBase_ = sink_.elapsed() / 3600.0 - v.value;
+    hourBase_ = sink_->elapsed() / 3600.0 - v.value;
   } else if (n >= 2001 && n <= 2400 && (n - 2001) % 100 < static_cast<int>(offsets_.offsets.size())) {
     // Offsets: #2001+ X (diameter), #2101+ Z, #2201+ nose radius, #2301+ tip. A program
     // that corrects its own wear writes them; the new value counts from the next T word.

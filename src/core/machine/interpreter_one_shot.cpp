@@ -23,7 +23,7 @@ bool Interpreter::dwell(const Word* w) {
   DwellCall d;
   d.seconds = std::max(0.0, seconds);
   fillDwell(d);
-  sink_.dwell(d);
+  sink_->dwell(d);
   return true;
 }
 
@@ -85,7 +85,7 @@ bool Interpreter::oneShot(const CodeWord& c) {
       const Vec2 declared = axisTarget();
       mach_.workShift += declared - pos_;
       pos_ = declared;
-      sink_.setPosition(pos_);
+      sink_->setPosition(pos_);
       return true;
     }
     case CodeAction::MachineCoordinates: {

@@ -304,13 +304,15 @@ TEST(FlowRun, CodesFromVariablesAreRefusedNotCrashedOn) {
 namespace klueng::core::machine {
 namespace {
 
-TEST(FlowRun, ACycleProfileWithAMacroValueIsAnAlarmNotAWrongPart) {
+// The profile runs through the interpreter (issue 12): a value such as X#1 is
+// read like any block's; a statement inside the profile is refused.
+TEST(FlowRun, ACycleProfileWithAMacroStatementIsAnAlarmNotAWrongPart) {
   const Timeline t = runText(
-      "G98 G97 S500 M03\nG00 X50. Z2.\n#1=30.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 F100.\nN10 G00 X#1\nG01 Z-20.\nN20 X50.\n");
+      "G98 G97 S500 M03\nG00 X50. Z2.\n#1=30.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 F100.\nN10 G00 X#1\n#2=-20.\nG01 Z#2\nN20 X50.\n");
   ASSERT_TRUE(t.alarm);
   EXPECT_EQ(t.alarm->code, "A148");
   EXPECT_EQ(t.alarm->range.line, 5);
-  EXPECT_EQ(t.alarm->args.at(1), "6");
+  EXPECT_EQ(t.alarm->args.at(1), "7");
 }
 
 }  // namespace
