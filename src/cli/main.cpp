@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "batch_memory.h"
 #include "commands.h"
 
 namespace {
@@ -26,6 +27,7 @@ void printUsage(std::FILE* out) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  klueng::cli::prepareBatchMemory();
   if (argc < 2) {
     printUsage(stderr);
     return 2;

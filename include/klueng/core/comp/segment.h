@@ -1,19 +1,22 @@
 #pragma once
 // A straight or circular piece of path in the (z, x_radius) plane.
+#include <cstdint>
+
 #include "klueng/core/geometry.h"
 
 namespace klueng::core {
 
 struct Segment {
-  enum class Kind { Line, Arc };
-  Kind kind = Kind::Line;
+  // (Points first, flags last: 64 bytes, not 80; a timeline holds one per move.)
+  enum class Kind : std::uint8_t { Line, Arc };
   Vec2 start = Vec2::Zero();
   Vec2 end = Vec2::Zero();
   Vec2 centre = Vec2::Zero();  // arcs only, absolute
+  Kind kind = Kind::Line;
   bool ccw = false;            // arcs: counter-clockwise in the X-up drawing (G03)
 
-  static Segment line(const Vec2& a, const Vec2& b) { return {Kind::Line, a, b, Vec2::Zero(), false}; }
-  static Segment arc(const Vec2& a, const Vec2& b, const Vec2& c, bool ccw) { return {Kind::Arc, a, b, c, ccw}; }
+  static Segment line(const Vec2& a, const Vec2& b) { return {a, b, Vec2::Zero(), Kind::Line, false}; }
+  static Segment arc(const Vec2& a, const Vec2& b, const Vec2& c, bool ccw) { return {a, b, c, Kind::Arc, ccw}; }
   bool isArc() const { return kind == Kind::Arc; }
   double radius() const { return (start - centre).norm(); }
   double length() const;                 // path length (arc length for arcs)

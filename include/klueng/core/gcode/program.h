@@ -11,18 +11,19 @@ namespace klueng::core::gcode {
 
 struct Word {
   // (Members ordered to avoid padding: a big program holds millions of words.)
+  // (64 bytes: the flags and the digit count share the first eight with expr.)
   char letter = 0;          // upper-case address letter, 'A'..'Z'
-  bool hasDecimalPoint = false;
-  bool colon = false;       // an ISO ':' program number (":0100"), stored as letter 'O'
-  bool comma = false;       // a Fanuc ',C' ',R' ',A' word (chamfer, corner radius, angle) on G01
-  int decimals = 0;         // digits after the decimal point
+  bool hasDecimalPoint : 1 = false;
+  bool colon : 1 = false;   // an ISO ':' program number (":0100"), stored as letter 'O'
+  bool comma : 1 = false;   // a Fanuc ',C' ',R' ',A' word (chamfer, corner radius, angle) on G01
+  std::int16_t decimals = 0;  // digits after the decimal point (a line is at most 4096 characters)
+  int expr = -1;            // macro B: index into Program::expressions when the value is an
+                            // expression (X#101, Z-[#1+2.]); value is 0 then and number holds
+                            // the expression as written ("#101", "-[#1+2.]")
   double value = 0.0;       // numeric value as written (mm or inch, diameters for X/U)
   std::string number;       // the number exactly as written ("01", "-.5", "25.")
                             // (an O word written ':0100' has colon set and number "0100")
   SourceRange range;        // covers letter and number
-  int expr = -1;            // macro B: index into Program::expressions when the value is an
-                            // expression (X#101, Z-[#1+2.]); value is 0 then and number holds
-                            // the expression as written ("#101", "-[#1+2.]")
 
   // Integer code of a G/M/T/N/O word ("G01" -> 1). Only meaningful when
   // !hasDecimalPoint; G-code numbers like "G1.5" are reported by the checker.
@@ -77,13 +78,13 @@ struct Expression {
 };
 
 struct Block {
-  int line = 0;                 // 1-based line in the file
-  bool blockSkip = false;       // started with '/'
   std::vector<Word> words;      // in source order
   std::string comment;          // text of ( ) and ; comments, joined by a space
   Statement statement;          // a macro statement (kind None for an NC block)
-  bool hasExpressions = false;  // some word's value is an expression (evaluated when the block runs)
+  int line = 0;                 // 1-based line in the file
   int file = 0;                 // Program::files index: 0 = the program itself, else a subprogram file
+  bool blockSkip = false;       // started with '/'
+  bool hasExpressions = false;  // some word's value is an expression (evaluated when the block runs)
 
   // The first word of a letter (comma words ',C' excluded: findComma).
   const Word* find(char letter) const;

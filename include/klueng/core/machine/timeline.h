@@ -1,4 +1,5 @@
 #pragma once
+#include <cstdint>
 // The result of interpreting a program: every move with exact times, and the
 // state after every block. Consumers: the cut simulator, trace/CSV writer,
 // cycle-time report, the GUI's animation (which maps time -> pose).
@@ -12,26 +13,27 @@
 
 namespace klueng::core::machine {
 
-enum class MoveKind { Rapid, Line, Arc, Thread, Dwell };
+enum class MoveKind : std::uint8_t { Rapid, Line, Arc, Thread, Dwell };
 
 struct Move {
-  MoveKind kind = MoveKind::Line;
+  // (Ordered to avoid padding: 160 bytes, not 192; a long program makes millions.)
+  Segment path;              // controlled point (imaginary tip), work coords, (z, x radius);
+                             // a rapid dog-leg is several Rapid moves, each a straight Segment
+  Vec2 noseCentre = Vec2::Zero();  // nose centre minus controlled point (constant while a tool is active)
+  double tStart = 0.0;       // seconds
+  double tEnd = 0.0;
+  double feed = 0.0;         // mm/min actually used (rapid rate for rapids; at the start for G96)
+  double rpm = 0.0;          // spindle rpm at the move's start
+  double rpmEnd = 0.0;       // spindle rpm at the move's end (differs under G96)
+  double lead = 0.0;         // G32 lead mm/rev
   int line = 0;              // source file line of the block
   int blockIndex = 0;
   int file = 0;              // Program::files index of the block
   int callLevel = 0;         // 0 = main program
   int program = 0;           // O number of the program the block belongs to
-  double tStart = 0.0;       // seconds
-  double tEnd = 0.0;
-  Segment path;              // controlled point (imaginary tip), work coords, (z, x radius);
-                             // a rapid dog-leg is several Rapid moves, each a straight Segment
-  Vec2 noseCentre = Vec2::Zero();  // nose centre minus controlled point (constant while a tool is active)
-  double feed = 0.0;         // mm/min actually used (rapid rate for rapids; at the start for G96)
-  double rpm = 0.0;          // spindle rpm at the move's start
-  double rpmEnd = 0.0;       // spindle rpm at the move's end (differs under G96)
-  double lead = 0.0;         // G32 lead mm/rev
   int tool = 0;
   int offset = 0;
+  MoveKind kind = MoveKind::Line;
   SpindleDir spindle = SpindleDir::Stopped;
   bool compensated = false;  // produced under G41/G42
 };
