@@ -26,6 +26,7 @@ Stock::Stock(double diameter, double length, double resolution, double bore)
     for (auto& c : columns_) c.clear();
   outer_.assign(static_cast<std::size_t>(n), r);
   blockMax_.assign(static_cast<std::size_t>((n + kBlock - 1) / kBlock), r);
+  superMax_.assign(static_cast<std::size_t>((n + kSuper - 1) / kSuper), r);
 }
 
 int Stock::columnAt(double z) const {
@@ -57,14 +58,18 @@ double Stock::innerRadius(int i) const {
 
 double Stock::maxOuterRadius(int first, int last) const {
   first = std::max(first, 0);
-  last = std::min(last, columnCount() - 1);
+  const int end = std::min(last, columnCount() - 1) + 1;
+  auto up = [](int v, int step) { return (v + step - 1) / step * step; };
+  auto down = [](int v, int step) { return v / step * step; };
   double m = 0.0;
   int i = first;
-  const int headEnd = std::min(last + 1, (first + kBlock - 1) / kBlock * kBlock);
-  for (; i < headEnd; ++i) m = std::max(m, outer_[static_cast<std::size_t>(i)]);
-  const int blocksEnd = (last + 1) / kBlock * kBlock;
-  for (; i < blocksEnd; i += kBlock) m = std::max(m, blockMax_[static_cast<std::size_t>(i / kBlock)]);
-  for (; i <= last; ++i) m = std::max(m, outer_[static_cast<std::size_t>(i)]);
+  // Columns up to a block, blocks up to a super-block, super-blocks, then back down.
+  for (const int to = std::min(end, up(first, kBlock)); i < to; ++i) m = std::max(m, outer_[static_cast<std::size_t>(i)]);
+  for (const int to = std::min(down(end, kBlock), up(i, kSuper)); i < to; i += kBlock)
+    m = std::max(m, blockMax_[static_cast<std::size_t>(i / kBlock)]);
+  for (; i + kSuper <= end; i += kSuper) m = std::max(m, superMax_[static_cast<std::size_t>(i / kSuper)]);
+  for (const int to = down(end, kBlock); i < to; i += kBlock) m = std::max(m, blockMax_[static_cast<std::size_t>(i / kBlock)]);
+  for (; i < end; ++i) m = std::max(m, outer_[static_cast<std::size_t>(i)]);
   return m;
 }
 
@@ -73,13 +78,20 @@ void Stock::updateOuter(int i) {
   const double old = outer_[static_cast<std::size_t>(i)];
   const double now = c.empty() ? 0.0 : c.back().hi;
   outer_[static_cast<std::size_t>(i)] = now;
-  double& bm = blockMax_[static_cast<std::size_t>(i / kBlock)];
-  if (now < old && old >= bm) {
-    const int b0 = (i / kBlock) * kBlock;
-    const int b1 = std::min(b0 + kBlock, columnCount());
-    bm = 0.0;
-    for (int k = b0; k < b1; ++k) bm = std::max(bm, outer_[static_cast<std::size_t>(k)]);
-  }
+  // Each level's maximum is recomputed from the level below only when it held the old value.
+  auto refresh = [&](double& top, int first, int count, int step, auto&& below) {
+    const double was = top;
+    if (now > top) top = now;
+    if (!(now < old && old >= was)) return;
+    top = 0.0;
+    for (int k = first; k < first + count; k += step) top = std::max(top, below(k));
+  };
+  const int b0 = i / kBlock * kBlock;
+  refresh(blockMax_[static_cast<std::size_t>(i / kBlock)], b0, std::min(kBlock, columnCount() - b0), 1,
+          [&](int k) { return outer_[static_cast<std::size_t>(k)]; });
+  const int s0 = i / kSuper * kSuper;
+  refresh(superMax_[static_cast<std::size_t>(i / kSuper)], s0, std::min(kSuper, columnCount() - s0), kBlock,
+          [&](int k) { return blockMax_[static_cast<std::size_t>(k / kBlock)]; });
 }
 
 double Stock::remove(int i, double lo, double hi) {

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 #include <numbers>
 
 namespace klueng::core::cut {
@@ -71,6 +73,28 @@ TEST(Stock, BlockMaximaFollowRemovals) {
   s.remove(517, 3.0, 30.0);
   EXPECT_DOUBLE_EQ(s.maxOuterRadius(517, 517), 3.0);
   EXPECT_DOUBLE_EQ(s.maxOuterRadius(500, 600), 10.0);
+}
+
+// The block and super-block maxima (1024 columns) answer exactly what a scan
+// of every column would, after thousands of removals of every size.
+TEST(Stock, RangeMaximaMatchAScanOfEveryColumn) {
+  Stock s(50.0, 100.0, 0.02);  // 5000 columns: five super-blocks and a part
+  ASSERT_EQ(s.columnCount(), 5000);
+  std::mt19937 random(12);
+  std::uniform_int_distribution<int> column(0, 4999);
+  std::uniform_real_distribution<double> radius(0.0, 26.0);
+  for (int round = 0; round < 3000; ++round) {
+    const int a = column(random);
+    const int width = round % 3 == 0 ? 1 : round % 3 == 1 ? 40 : 2000;
+    const double lo = radius(random);
+    for (int i = a; i < std::min(a + width, 5000); ++i) s.remove(i, lo, 30.0);
+    const int first = column(random);
+    const int last = std::min(4999, first + std::uniform_int_distribution<int>(0, 4000)(random));
+    double expected = 0.0;
+    for (int i = first; i <= last; ++i) expected = std::max(expected, s.outerRadius(i));
+    ASSERT_DOUBLE_EQ(s.maxOuterRadius(first, last), expected) << "round " << round << " [" << first << ", " << last << "]";
+  }
+  EXPECT_DOUBLE_EQ(s.maxOuterRadius(3000, 2999), 0.0);  // an empty range
 }
 
 }  // namespace

@@ -64,7 +64,9 @@ class Stock {
   std::vector<std::vector<Interval>> columns_;
   std::vector<double> outer_;
   std::vector<double> blockMax_;  // max outer radius per block of kBlock columns
+  std::vector<double> superMax_;  // and per super-block of kSuper columns (kBlock blocks)
   static constexpr int kBlock = 32;
+  static constexpr int kSuper = kBlock * 32;
 };
 
 // The chuck (SPEC 1 ext): jaws grip the stock's left `grip` mm; the body sits left of the bar.
