@@ -72,6 +72,8 @@ constexpr MessageText kMessages[] = {
      "{0}: โปรแกรมวนซ้ำไม่รู้จบ หยุดหลังจากทำงาน {1} บล็อก (machine.cfg max_blocks = {2})"},
     {codes::kEndlessLoopTime, "{0}: the program loops without end; stopped after {1} s of machining (machine.cfg max_run_time = {2} s)",
      "{0}: โปรแกรมวนซ้ำไม่รู้จบ หยุดหลังจากเวลาทำงาน {1} วินาที (machine.cfg max_run_time = {2} วินาที)"},
+    {codes::kEndlessLoopMoves, "{0}: the program loops without end; stopped after {1} moves made by repeated blocks (machine.cfg max_blocks = {2} allows {3})",
+     "{0}: โปรแกรมวนซ้ำไม่รู้จบ หยุดหลังจากบล็อกที่ทำซ้ำเคลื่อนที่ไป {1} ครั้ง (machine.cfg max_blocks = {2} ยอมให้ {3} ครั้ง)"},
     {codes::kCallsTooDeep, "{0}: subprogram and macro calls nest more than {1} levels deep",
      "{0}: การเรียกโปรแกรมย่อยและมาโครซ้อนกันลึกเกิน {1} ชั้น"},
     {codes::kNoSuchProgram, "{0}: no program O{1} in this file or its folder",

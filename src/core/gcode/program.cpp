@@ -14,13 +14,6 @@ const Word* Block::findComma(char letter) const {
   return nullptr;
 }
 
-std::vector<const Word*> Block::all(char letter) const {
-  std::vector<const Word*> out;
-  for (const Word& w : words)
-    if (w.letter == letter && !w.comma) out.push_back(&w);
-  return out;
-}
-
 int programNumberAt(const Program& program, int index) {
   if (index < 0 || index >= static_cast<int>(program.blocks.size())) return 0;
   const int file = program.blocks[static_cast<std::size_t>(index)].file;

@@ -181,6 +181,14 @@ void Interpreter::run() {
 
 bool Interpreter::loopLimits() {
   const auto& m = setup_.machine;
+  // Blocks run again may also each make many moves (a G75 of 200,000 pecks in a
+  // loop): what they make is bounded too, before it fills the memory.
+  const long long moveBudget = kMovesPerRepeatedBlock * static_cast<long long>(m.maxBlocks);
+  if (repeatedMoves_ > moveBudget)
+    return flowAlarm(codes::kEndlessLoopMoves, lastJumpAt_.line > 0 ? lastJumpAt_ : SourceRange{block_->line, 1, 0, block_->file},
+                     {lastJumpText_.empty() ? std::string("M99") : lastJumpText_, std::to_string(repeatedMoves_),
+                      std::to_string(m.maxBlocks), std::to_string(moveBudget)});
+  repeating_ = visited_[static_cast<std::size_t>(blockIndex_)] != 0;
   if (visited_[static_cast<std::size_t>(blockIndex_)]) {
     if (++repeatedBlocks_ > m.maxBlocks)
       return flowAlarm(codes::kEndlessLoopBlocks, lastJumpAt_.line > 0 ? lastJumpAt_ : SourceRange{block_->line, 1, 0, block_->file},

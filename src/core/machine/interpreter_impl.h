@@ -35,6 +35,8 @@ inline constexpr double kMmPerInch = 25.4;
 inline constexpr double kMetresPerFoot = 0.3048;   // G96 S is feet/min under G20
 inline constexpr double kArcTolerance = 0.01;      // mm (SPEC 5 ext)
 inline constexpr double kPositionTolerance = 0.001;
+// Moves the blocks run again may make, per block machine.cfg max_blocks allows.
+inline constexpr long long kMovesPerRepeatedBlock = 10;
 
 inline std::string num(double v) {
   if (std::abs(v) < 0.0005) v = 0.0;  // no "-0.000"
@@ -179,6 +181,7 @@ class Interpreter final : public gcode::MacroVariables {
 
   void moved(const Vec2& target) {
     movedThisBlock_ = true;
+    repeatedMoves_ += repeating_;
     if ((target - pos_).norm() > 1e-9) mach_.positionCheck = false;
     pos_ = target;
   }
@@ -294,6 +297,8 @@ class Interpreter final : public gcode::MacroVariables {
   std::vector<int> loopPartner_;      // WHILE/DO block -> its END, END -> its WHILE/DO (-1 none)
   std::vector<char> visited_;         // blocks run at least once (the endless-loop limit counts repeats)
   long long repeatedBlocks_ = 0;
+  long long repeatedMoves_ = 0;       // moves made by blocks run again (bounded with max_blocks)
+  bool repeating_ = false;            // the running block has run before
   SourceRange lastJumpAt_;            // the last backward jump (named by the endless-loop alarm)
   std::string lastJumpText_;
   int next_ = 0;                      // block index to run next

@@ -73,9 +73,11 @@ std::vector<Diagnostic> attachSubprogramFiles(gcode::Program& program, const std
   bool listed = false;
   std::set<std::string> attached;
   for (int round = 0; round < kMaxSubprogramFiles; ++round) {
+    const auto called = gcode::calledPrograms(program, dialect);
+    if (called.empty()) break;  // most programs call nothing: no index to build
     const gcode::ProgramIndex index(program);
     std::vector<int> missing;
-    for (int n : gcode::calledPrograms(program, dialect))
+    for (int n : called)
       if (!index.program(n)) missing.push_back(n);
     if (missing.empty()) break;
     if (!listed) {

@@ -304,6 +304,30 @@ TEST(FlowRun, CodesFromVariablesAreRefusedNotCrashedOn) {
 namespace klueng::core::machine {
 namespace {
 
+// Found by fuzz_macro (issue 13): an endless WHILE around a G75 of thousands
+// of pecks ran 15 s and filled gigabytes before the block limit came near.
+// Blocks run again may make 10 moves per max_blocks; here 10 x 1000.
+TEST(FlowRun, AnEndlessLoopAroundABigCycleStopsOnItsMoves) {
+  MachineSetup setup = testing::testSetup();
+  setup.machine.maxBlocks = 1000;
+  // G75 from X52 Z2 to X40 Z-60: 6 mm deep in 1 mm pecks (P1000), a position
+  // every 0.1 mm (Q100): 621 positions, each 6 feeds, 5 retracts between them,
+  // the way out and the step to the next (the last: back to the start) =
+  // 621 x 13 = 8073 moves a pass.
+  const Timeline t = runText(
+      "G21 G99 G97 S500 M03\nG00 X52. Z2.\n#1=0\nWHILE [#1 LT 3] DO1\nG75 R0.5\nG75 X40. Z-60. P1000 Q100 F0.05\nEND1\nM30\n",
+      RunOptions{}, setup);
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->code, "A151");
+  EXPECT_EQ(t.alarm->range.line, 7);  // END1, the jump that repeated
+  EXPECT_EQ(t.alarm->args.at(2), "1000");
+  EXPECT_EQ(t.alarm->args.at(3), "10000");
+  // The first pass is not repeated; the second counts 8073 and the third passes 10000.
+  EXPECT_EQ(t.alarm->args.at(1), std::to_string(2 * 8073));
+  EXPECT_LT(t.moves.size(), 4u * 8073u);
+  expectBilingual(*t.alarm);
+}
+
 // The profile runs through the interpreter (issue 12): a value such as X#1 is
 // read like any block's; a statement inside the profile is refused.
 TEST(FlowRun, ACycleProfileWithAMacroStatementIsAnAlarmNotAWrongPart) {

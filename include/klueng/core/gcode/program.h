@@ -90,8 +90,38 @@ struct Block {
   const Word* find(char letter) const;
   const Word* findComma(char letter) const;
   bool has(char letter) const { return find(letter) != nullptr; }
-  // Every G (or M) code word of the block, in source order.
-  std::vector<const Word*> all(char letter) const;
+  // Every G (or M) code word of the block, in source order, as pointers
+  // (a view: walking it allocates nothing; scans run it on every block).
+  class LetterWords {
+   public:
+    class iterator {
+     public:
+      iterator(const Word* at, const Word* end, char letter) : at_(at), end_(end), letter_(letter) { skip(); }
+      const Word* operator*() const { return at_; }
+      iterator& operator++() {
+        ++at_;
+        skip();
+        return *this;
+      }
+      bool operator==(const iterator& o) const { return at_ == o.at_; }
+
+     private:
+      void skip() {
+        while (at_ != end_ && (at_->letter != letter_ || at_->comma)) ++at_;
+      }
+      const Word* at_;
+      const Word* end_;
+      char letter_;
+    };
+    LetterWords(const std::vector<Word>& words, char letter) : words_(words), letter_(letter) {}
+    iterator begin() const { return {words_.data(), words_.data() + words_.size(), letter_}; }
+    iterator end() const { return {words_.data() + words_.size(), words_.data() + words_.size(), letter_}; }
+
+   private:
+    const std::vector<Word>& words_;
+    char letter_;
+  };
+  LetterWords all(char letter) const { return LetterWords(words, letter); }
 };
 
 struct Program {
