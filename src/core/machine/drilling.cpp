@@ -64,6 +64,18 @@ std::optional<CycleAlarm> readDrillWords(const gcode::CodeInfo& code, const Cycl
                      {name, fmt::format("{:.0f}", std::ceil(depth / w.peck)), num(w.peck)});
     }
   }
+  // The whole cycle is bounded (repeats x pecks, three moves a peck) before
+  // anything is allocated: K3500 over 4,800 pecks of 0.01 mm is 50 million moves.
+  const double depth = std::abs(w.hole.x() - w.rPlane);
+  double pecks = 1.0;
+  if (g == A::PeckDrilling && (w.peck > kEps || w.firstPeck > kEps)) {
+    const double least = w.firstPeck > kEps ? (w.reduce > 0.0 ? std::max(w.minPeck, kEps * 10) : w.firstPeck) : w.peck;
+    pecks = std::min(kMaxPasses, std::ceil(depth / least));
+  }
+  const double moves = static_cast<double>(w.repeats) * (3.0 * pecks + 3.0);
+  if (moves > kMaxCycleMoves)
+    return alarmAt(codes::kTooManyCycleMoves, repeat ? repeat : in.gWord, b,
+                   {name, fmt::format("{:.0f}", moves), fmt::format("{:.0f}", kMaxCycleMoves)});
   return std::nullopt;
 }
 

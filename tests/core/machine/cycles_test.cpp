@@ -570,6 +570,21 @@ TEST(Samples, CannedCycleSampleRoughsAndFinishesLikeSample01) {
   EXPECT_NEAR(zOf(threads.back()->path.end), -15.0, 1e-9);
 }
 
+// Found by fuzz_macro (issue 13): a G83 repeated thousands of times over
+// thousands of pecks asked for 2.4 GB of moves. Here the R point is the initial
+// level Z2 (Fanuc R0: no distance), so the hole is 50 mm deep: 5,000 pecks of
+// 0.01 mm (Q10, least increments); 3500 x (3 x 5000 + 3) = 52,510,500 moves:
+// A149 at K (column 23) before anything is allocated.
+TEST(PeckCycles, ADrillingCycleOfMillionsOfMovesIsRefusedAtItsRepeatCount) {
+  const CycleRun t("G98 G97 S500 M03\nG00 X0. Z2.\nG83 X0. Z-48. R0. Q10 K3500 F50.\n");
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->code, "A149");
+  EXPECT_EQ(t.alarm->range.line, 3);
+  EXPECT_EQ(t.alarm->range.column, 23);
+  EXPECT_EQ(t.alarm->args.at(1), "52510500");
+  EXPECT_TRUE(t.moves.size() < 10u);
+}
+
 // Found by fuzz_pipeline (issue 13): a negative T inside a G71 profile (the check
 // refuses it with E118; the interpreter runs what it is given) threw out of the
 // offset table's at(-2). It names no offset: the profile keeps the one in force.
