@@ -251,7 +251,6 @@ class Interpreter final : public gcode::MacroVariables {
   // ---- interpreter_profile.cpp (G70-G73 read N(P)..N(Q) by running them) ---------
   std::optional<cycles::CycleAlarm> readProfile(const gcode::Block& cycle, const Word* g, bool withFeed,
                                                 cycles::Profile& out);
-  int findSequence(int n, int from) const;
   bool profileOnly(const char* what, const Word* where);
   bool profileBlockAllowed(const CodeWord* motion, const CodeWord* cycle, const CodeWord* oneShot, const CodeWord* single);
   bool captureTool(const Word& t);

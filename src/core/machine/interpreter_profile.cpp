@@ -88,16 +88,6 @@ struct ProfileCapture final : MachineSink {
   int block = 0;
 };
 
-int Interpreter::findSequence(int n, int from) const {
-  const int count = static_cast<int>(program_.blocks.size());
-  for (int pass = 0; pass < 2; ++pass)
-    for (int i = pass == 0 ? from : 0; i < (pass == 0 ? count : from); ++i) {
-      const Word* w = program_.blocks[static_cast<std::size_t>(i)].find('N');
-      if (w && w->code() == n) return i;
-    }
-  return -1;
-}
-
 // A block the profile may not hold: `what` names it.
 bool Interpreter::profileOnly(const char* what, const Word* where) {
   return raise(codes::kProfileCommandNotAllowed, where, {what, std::to_string(block_->line)});
@@ -140,16 +130,13 @@ std::optional<cycles::CycleAlarm> Interpreter::readProfile(const Block& cycle, c
   const Word* pw = cycle.find('P');
   const Word* qw = cycle.find('Q');
   if (!pw || !qw) return alarmAt(codes::kCycleNeedsPAndQ, g, {name});
-  out.ns = findSequence(pw->code(), blockIndex_ + 1);
+  // The program's own sequence index: P the first N after the cycle (else the
+  // first in the program), Q the first at or after P.
+  const int section = index_.sectionOf(blockIndex_);
+  out.ns = index_.findSequence(section, pw->code(), blockIndex_);
   if (out.ns < 0) return alarmAt(codes::kNoProfileBlock, pw, {name, "P", pw->number});
-  out.nf = -1;
-  for (int i = out.ns; i < static_cast<int>(program_.blocks.size()); ++i) {
-    const Word* w = program_.blocks[static_cast<std::size_t>(i)].find('N');
-    if (w && w->code() == qw->code()) {
-      out.nf = i;
-      break;
-    }
-  }
+  out.nf = index_.findSequence(section, qw->code(), out.ns - 1);
+  if (out.nf < out.ns) out.nf = -1;
   if (out.nf < 0) return alarmAt(codes::kNoProfileBlock, qw, {name, "Q", qw->number});
   if (capture_) return alarmAt(codes::kProfileCommandNotAllowed, g, {name, std::to_string(cycle.line)});
 
