@@ -184,7 +184,7 @@ void OutputView::appendTrail(double time) {
     const auto& m = moves[static_cast<std::size_t>(trailMoves_)];
     if (time > m.tStart && m.tEnd > m.tStart) {
       partial = &m;
-      fraction = (time - m.tStart) / (m.tEnd - m.tStart);
+      fraction = m.fractionAt(time);
     }
   }
   trail_.back()->setPartial(partial, fraction);

@@ -237,8 +237,7 @@ void CutSimulator::advanceTo(double t) {
   while (!alarm_ && nextMove_ < moves.size()) {
     const Move& m = moves[nextMove_];
     if (t < m.tStart) break;
-    const double span = m.tEnd - m.tStart;
-    const double s = (t >= m.tEnd || span <= 0.0) ? 1.0 : std::clamp((t - m.tStart) / span, 0.0, 1.0);
+    const double s = t >= m.tEnd ? 1.0 : m.fractionAt(t);
     if (s > nextMoveDone_ || s >= 1.0) {
       cutMove(nextMove_, s);
     }
@@ -436,7 +435,7 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
   auto raise = [&](const char* code, double s) {
     alarm_ = makeAlarm(code, m, m.path.pointAt(s));
     alarmPosition_ = m.path.pointAt(s);
-    alarmTime_ = m.tStart + s * (m.tEnd - m.tStart);
+    alarmTime_ = m.timeAt(s);
   };
 
   // Quick rejection: the whole tool stays above every bit of material it passes

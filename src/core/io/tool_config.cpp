@@ -313,7 +313,8 @@ struct Plausible {
   double min, max;
 };
 constexpr Plausible kPlausible[] = {
-    {"rapid_x", 1.0, 200000.0},       {"rapid_z", 1.0, 200000.0},      {"max_spindle_rpm", 1.0, 100000.0},
+    {"rapid_x", 1.0, 200000.0},       {"rapid_z", 1.0, 200000.0},
+    {"accel_x", 0.0, 100000.0},       {"accel_z", 0.0, 100000.0},      {"max_spindle_rpm", 1.0, 100000.0},
     {"reference_x", -100000.0, 100000.0}, {"reference_z", -100000.0, 100000.0},
     {"start_x", -100000.0, 100000.0}, {"start_z", -100000.0, 100000.0},
     {"travel_x_min", -100000.0, 100000.0}, {"travel_x_max", -100000.0, 100000.0},
@@ -329,6 +330,9 @@ constexpr int kMaxBlockLimit = 100000000;
 constexpr MachineKey kMachineKeys[] = {
     {"rapid_x", &MachineConfig::rapidX, Rule::Positive, "X rapid rate, mm/min (radial)"},
     {"rapid_z", &MachineConfig::rapidZ, Rule::Positive, "Z rapid rate, mm/min"},
+    {"accel_x", &MachineConfig::accelX, Rule::NonNegative,
+     "X acceleration, mm/s^2 (radial); 0 = moves start and stop at once"},
+    {"accel_z", &MachineConfig::accelZ, Rule::NonNegative, "Z acceleration, mm/s^2; 0 = off"},
     {"max_spindle_rpm", &MachineConfig::maxSpindleRpm, Rule::Positive, "maximum spindle speed, rpm"},
     {"reference_x", &MachineConfig::referenceX, Rule::Any, "reference point X (diameter), G27/G28/G29"},
     {"reference_z", &MachineConfig::referenceZ, Rule::Any, "reference point Z"},

@@ -489,7 +489,7 @@ Timeline interpret(const gcode::Program& program, const MachineSetup& setup, con
   Timeline timeline;
   timeline.moves.reserve(program.blocks.size() + program.blocks.size() / 2);
   timeline.snapshots.reserve(program.blocks.size());
-  auto builder = makeTimelineBuilder(timeline, TimingConfig{setup.machine.rapidX, setup.machine.rapidZ});
+  auto builder = makeTimelineBuilder(timeline, TimingConfig{setup.machine.rapidX, setup.machine.rapidZ, setup.machine.accelX, setup.machine.accelZ});
   auto compensation = makeCompensationStage(*builder);
   run(program, setup, options, *compensation, timeline.flow);
   return timeline;

@@ -114,3 +114,60 @@ double rapidSeconds(const Segment& path, double rapidX, double rapidZ) {
 }
 
 }  // namespace klueng::core::machine
+
+namespace klueng::core::machine {
+
+Ramp rampMove(double length, double cruiseSeconds, double vStart, double vEnd, double accel) {
+  Ramp r{cruiseSeconds, 0.0, 0.0};
+  if (accel <= 0.0 || length <= 0.0 || !std::isfinite(cruiseSeconds)) return r;
+  const double up = vStart / accel, down = vEnd / accel;
+  const double rampDistance = (vStart * up + vEnd * down) / 2.0;
+  if (rampDistance <= length) {
+    // Trapezoid: each ramp covers its distance at half the speed, so it adds
+    // half its own time to the cruise time.
+    r.seconds = cruiseSeconds + (up + down) / 2.0;
+    r.up = up;
+    r.down = down;
+    return r;
+  }
+  // Triangle: up half the length and down again without reaching the speed.
+  r.seconds = 2.0 * std::sqrt(length / accel);
+  r.up = r.down = r.seconds / 2.0;
+  return r;
+}
+
+double pathAcceleration(const Segment& path, double accelX, double accelZ) {
+  const bool limitX = accelX > 0.0, limitZ = accelZ > 0.0;
+  if (!limitX && !limitZ) return 0.0;
+  if (path.isArc()) return limitX && limitZ ? std::min(accelX, accelZ) : (limitX ? accelX : accelZ);
+  const Vec2 d = path.end - path.start;
+  const double length = d.norm();
+  if (length <= 0.0) return limitX && limitZ ? std::min(accelX, accelZ) : (limitX ? accelX : accelZ);
+  double a = std::numeric_limits<double>::infinity();
+  const double shareZ = std::abs(zOf(d)) / length, shareX = std::abs(xOf(d)) / length;
+  if (limitZ && shareZ > 1e-12) a = std::min(a, accelZ / shareZ);
+  if (limitX && shareX > 1e-12) a = std::min(a, accelX / shareX);
+  return std::isfinite(a) ? a : 0.0;
+}
+
+double axisSeconds(double distance, double rate, double accel) {
+  if (distance <= 0.0) return 0.0;
+  if (accel <= 0.0) return distance / rate;
+  if (distance >= rate * rate / accel) return distance / rate + rate / accel;
+  return 2.0 * std::sqrt(distance / accel);
+}
+
+double axisDistanceAt(double t, double distance, double rate, double accel) {
+  const double total = axisSeconds(distance, rate, accel);
+  if (t <= 0.0) return 0.0;
+  if (t >= total) return distance;
+  if (accel <= 0.0) return rate * t;
+  const double peak = std::min(rate, accel * total / 2.0);  // the speed it reaches
+  const double ramp = peak / accel;
+  if (t < ramp) return accel * t * t / 2.0;
+  if (t <= total - ramp) return peak * ramp / 2.0 + peak * (t - ramp);
+  const double rest = total - t;
+  return distance - accel * rest * rest / 2.0;
+}
+
+}  // namespace klueng::core::machine

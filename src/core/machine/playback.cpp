@@ -61,9 +61,11 @@ double limitTravel(const Timeline& timeline, double from, double dt, double maxM
     const double span = m.tEnd - m.tStart;
     const double end = std::min(m.tEnd, from + dt);
     if (span > 0 && end > t && m.kind != MoveKind::Dwell) {
-      const double speed = m.path.length() / span;  // mm per machine second
-      const double distance = speed * (end - t);
-      if (distance > budget) return t + budget / speed - from;
+      // Along the move's own speed profile (slower while it accelerates).
+      const double length = m.path.length();
+      const double done = m.fractionAt(t);
+      const double distance = (m.fractionAt(end) - done) * length;
+      if (distance > budget && length > 0.0) return m.timeAt(done + budget / length) - from;
       budget -= distance;
     }
     t = std::max(t, end);
@@ -95,8 +97,7 @@ Pose poseAt(const Timeline& timeline, int done, double time) {
   const int m = timeline.moveAt(time);
   if (m >= 0 && time < timeline.moves[static_cast<std::size_t>(m)].tEnd - kPlaybackEps && time > doneTime + kPlaybackEps) {
     const Move& move = timeline.moves[static_cast<std::size_t>(m)];
-    const double span = move.tEnd - move.tStart;
-    const double f = span > 0 ? std::clamp((time - move.tStart) / span, 0.0, 1.0) : 1.0;
+    const double f = move.fractionAt(time);
     p.feedMmPerMin = move.feed;
     p.rpm = move.rpm + (move.rpmEnd - move.rpm) * f;
     p.machine.spindle = move.spindle;

@@ -1,8 +1,55 @@
 #include "klueng/core/machine/timeline.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace klueng::core::machine {
+
+namespace {
+
+// The ramps of a move, never longer together than the move itself.
+struct Profile {
+  double total, up, down, peak;  // peak: path fraction per second while cruising
+};
+
+Profile profileOf(const Move& m) {
+  Profile p{m.tEnd - m.tStart, std::max(0.0, double(m.rampUp)), std::max(0.0, double(m.rampDown)), 0.0};
+  if (p.up + p.down > p.total) {
+    const double scale = p.up + p.down > 0.0 ? p.total / (p.up + p.down) : 0.0;
+    p.up *= scale;
+    p.down *= scale;
+  }
+  p.peak = 1.0 / (p.total - (p.up + p.down) / 2.0);
+  return p;
+}
+
+}  // namespace
+
+double Move::fractionAt(double t) const {
+  const double tau = t - tStart;
+  if (tEnd <= tStart) return tau >= 0.0 ? 1.0 : 0.0;
+  if (tau <= 0.0) return 0.0;
+  if (tau >= tEnd - tStart) return 1.0;
+  if (rampUp <= 0.0f && rampDown <= 0.0f) return tau / (tEnd - tStart);
+  const Profile p = profileOf(*this);
+  if (tau < p.up) return p.peak * tau * tau / (2.0 * p.up);
+  if (tau <= p.total - p.down) return p.peak * (tau - p.up / 2.0);
+  const double rest = p.total - tau;
+  return std::clamp(1.0 - p.peak * rest * rest / (2.0 * p.down), 0.0, 1.0);
+}
+
+double Move::timeAt(double fraction) const {
+  const double s = std::clamp(fraction, 0.0, 1.0);
+  if (tEnd <= tStart) return tEnd;
+  if (rampUp <= 0.0f && rampDown <= 0.0f) return tStart + s * (tEnd - tStart);
+  const Profile p = profileOf(*this);
+  const double upPart = p.peak * p.up / 2.0, downPart = p.peak * p.down / 2.0;
+  double tau;
+  if (s <= upPart) tau = std::sqrt(2.0 * p.up * s / p.peak);
+  else if (s <= 1.0 - downPart) tau = s / p.peak + p.up / 2.0;
+  else tau = p.total - std::sqrt(2.0 * p.down * (1.0 - s) / p.peak);
+  return tStart + std::clamp(tau, 0.0, p.total);
+}
 
 int Timeline::moveAt(double t) const {
   if (moves.empty() || t < moves.front().tStart) return -1;
@@ -16,9 +63,7 @@ Vec2 Timeline::positionAt(double t) const {
   const int i = moveAt(t);
   if (i < 0) return moves.empty() ? Vec2(Vec2::Zero()) : moves.front().path.start;
   const Move& m = moves[static_cast<std::size_t>(i)];
-  const double span = m.tEnd - m.tStart;
-  const double s = span > 0 ? std::clamp((t - m.tStart) / span, 0.0, 1.0) : 1.0;
-  return m.path.pointAt(s);
+  return m.path.pointAt(m.fractionAt(t));
 }
 
 }  // namespace klueng::core::machine

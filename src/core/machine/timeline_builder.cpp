@@ -44,7 +44,13 @@ class TimelineBuilder final : public MachineSink {
         break;
     }
     if (m.kind == MoveKind::Rapid) feed = seconds > 0.0 ? m.path.length() / seconds * 60.0 : 0.0;
-    push(m, m.path, seconds, feed);
+    // Speeds at both ends (mm/s): under G96 with G99 the feed changes with the rpm.
+    double feedEnd = feed;
+    if (m.kind != MoveKind::Rapid && rpmStart > 0.0 && (m.kind == MoveKind::Thread || m.ctx.feedMode == FeedMode::PerRev))
+      feedEnd = feed * spindleRpm(m.ctx, xOf(m.path.end)) / rpmStart;
+    const Ramp ramp = rampMove(m.path.length(), seconds, feed / 60.0, feedEnd / 60.0,
+                               pathAcceleration(m.path, config_.accelX, config_.accelZ));
+    push(m, m.path, ramp.seconds, feed, ramp.up, ramp.down);
   }
 
   void dwell(const DwellCall& d) override {
@@ -87,7 +93,8 @@ class TimelineBuilder final : public MachineSink {
   double elapsed() const override { return time_; }
 
  private:
-  void push(const MotionCall& m, const Segment& path, double seconds, double feed) {
+  void push(const MotionCall& m, const Segment& path, double seconds, double feed, double up = 0.0,
+            double down = 0.0) {
     Move& mv = out_.moves.emplace_back();
     mv.kind = m.kind;
     mv.line = m.line;
@@ -107,30 +114,40 @@ class TimelineBuilder final : public MachineSink {
     mv.offset = m.ctx.offset;
     mv.spindle = m.ctx.spindle;
     mv.compensated = m.compensated;
+    mv.rampUp = static_cast<float>(up);
+    mv.rampDown = static_cast<float>(down);
     time_ = mv.tEnd;
     position_ = path.end;
   }
 
-  // G00: both axes start together, each at its own rapid rate; the one with
-  // less time to go arrives first, the other finishes alone (SPEC 7).
+  // G00: both axes start together, each at its own rapid rate (and with its
+  // own acceleration when set); the one with less time to go arrives first,
+  // the other finishes alone (SPEC 7).
   void rapidDogLeg(const MotionCall& m) {
     const Vec2 p0 = m.path.start, p1 = m.path.end;
     const double dz = zOf(p1) - zOf(p0), dx = xOf(p1) - xOf(p0);
-    const double tz = std::abs(dz) / config_.rapidZ, tx = std::abs(dx) / config_.rapidX;  // minutes
+    const double rateZ = config_.rapidZ / 60.0, rateX = config_.rapidX / 60.0;  // mm/s
+    const double tz = axisSeconds(std::abs(dz), rateZ, config_.accelZ);
+    const double tx = axisSeconds(std::abs(dx), rateX, config_.accelX);
+    // Each axis's ramp (seconds), shorter than half its move when it cannot reach its rate.
+    const double rampZ = config_.accelZ > 0.0 ? std::min(rateZ / config_.accelZ, tz / 2.0) : 0.0;
+    const double rampX = config_.accelX > 0.0 ? std::min(rateX / config_.accelX, tx / 2.0) : 0.0;
     const double tBoth = std::min(tz, tx);
     const double tRest = std::max(tz, tx) - tBoth;
     if (tBoth <= 0.0 || tRest <= 1e-12 * std::max(tz, tx)) {
-      const double seconds = std::max(tz, tx) * 60.0;
-      push(m, m.path, seconds, m.path.length() / (seconds / 60.0));
+      const double seconds = std::max(tz, tx);
+      const double ramp = tz >= tx ? rampZ : rampX;
+      push(m, m.path, seconds, m.path.length() / seconds * 60.0, ramp, ramp);
       return;
     }
-    // Where the faster-arriving axis is done: the other has moved rate * tBoth.
-    const Vec2 corner = tz < tx ? Vec2(zOf(p1), xOf(p0) + std::copysign(config_.rapidX * tBoth, dx))
-                                : Vec2(zOf(p0) + std::copysign(config_.rapidZ * tBoth, dz), xOf(p1));
+    // Where the faster-arriving axis is done: how far the other has come by then.
+    const Vec2 corner = tz < tx ? Vec2(zOf(p1), xOf(p0) + std::copysign(axisDistanceAt(tBoth, std::abs(dx), rateX, config_.accelX), dx))
+                                : Vec2(zOf(p0) + std::copysign(axisDistanceAt(tBoth, std::abs(dz), rateZ, config_.accelZ), dz), xOf(p1));
     const Segment first = Segment::line(p0, corner);
     const Segment second = Segment::line(corner, p1);
-    push(m, first, tBoth * 60.0, first.length() / tBoth);
-    push(m, second, tRest * 60.0, second.length() / tRest);
+    const double rampFast = tz < tx ? rampZ : rampX, rampSlow = tz < tx ? rampX : rampZ;
+    push(m, first, tBoth, first.length() / tBoth * 60.0, std::max(rampZ, rampX), rampFast);
+    push(m, second, tRest, second.length() / tRest * 60.0, 0.0, rampSlow);
   }
 
   Timeline& out_;

@@ -63,6 +63,11 @@ struct OffsetTable {
 struct MachineConfig {
   double rapidX = 4000.0;        // mm/min (radial axis; diameter values move at this rate in radius)
   double rapidZ = 8000.0;        // mm/min
+  // Axis accelerations, mm/s² (X radial): every move speeds up and slows down
+  // at these as the control plans it (issue 11). 0 = off: moves start and stop
+  // at once, the time is length / feed as the textbooks compute it.
+  double accelX = 0.0;
+  double accelZ = 0.0;
   double maxSpindleRpm = 3000.0;
   double referenceX = 0.0;       // diameter, work coordinates at start
   double referenceZ = 300.0;
@@ -106,7 +111,7 @@ ReadResult<OffsetTable> parseOffsetTable(std::string_view text, const std::strin
 std::string formatOffsetTable(const OffsetTable& t);
 
 // machine.cfg: `key = value` lines, '#' comments; unknown keys and bad values are errors.
-// Keys: rapid_x rapid_z max_spindle_rpm reference_x reference_z start_x start_z
+// Keys: rapid_x rapid_z accel_x accel_z max_spindle_rpm reference_x reference_z start_x start_z
 // travel_x_min travel_x_max travel_z_min travel_z_max chuck_grip chuck_jaw_height
 // spindle_bore turret_stations (a whole number 1..24, F147 otherwise).
 // Missing keys keep MachineConfig's defaults (SPEC 1).

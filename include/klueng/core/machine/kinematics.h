@@ -23,4 +23,27 @@ double feedMoveSeconds(const Segment& path, const MotionContext& ctx);
 // compensated rapid) run at the slower rate along their length.
 double rapidSeconds(const Segment& path, double rapidX, double rapidZ);
 
+// Acceleration (issue 11; machine.cfg accel_x / accel_z in mm/s², 0 = off).
+// A controller without look-ahead starts and stops every move: it speeds up at
+// the axis limit, cruises at the programmed speed and slows down again; a move
+// too short to reach its speed is a triangle of speed over time.
+struct Ramp {
+  double seconds = 0.0;  // the whole move
+  double up = 0.0;       // speeding up at the start
+  double down = 0.0;     // slowing down at the end
+};
+// A move of `length` mm that takes `cruiseSeconds` at its programmed speeds,
+// vStart at its start and vEnd at its end (mm/s), with path acceleration
+// `accel` (mm/s², <= 0: no ramps, the cruise time unchanged).
+Ramp rampMove(double length, double cruiseSeconds, double vStart, double vEnd, double accel);
+// The path acceleration a segment allows with these axis limits (mm/s², X
+// radial; <= 0 = that axis does not limit): a line is held by the axis whose
+// share of the motion reaches its limit first, an arc by the lower limit.
+// 0 when neither axis limits (acceleration off).
+double pathAcceleration(const Segment& path, double accelX, double accelZ);
+// One axis travelling `distance` mm at `rate` mm/s with `accel` mm/s².
+double axisSeconds(double distance, double rate, double accel);
+// ... and how far it is after `t` seconds.
+double axisDistanceAt(double t, double distance, double rate, double accel);
+
 }  // namespace klueng::core::machine

@@ -83,6 +83,8 @@ std::unique_ptr<MachineSink> makeCompensationStage(MachineSink& next);
 struct TimingConfig {
   double rapidX = 4000.0;   // mm/min, radial
   double rapidZ = 8000.0;   // mm/min
+  double accelX = 0.0;      // mm/s², radial; 0 = moves start and stop at once
+  double accelZ = 0.0;      // mm/s²
 };
 std::unique_ptr<MachineSink> makeTimelineBuilder(Timeline& out, const TimingConfig& config);
 

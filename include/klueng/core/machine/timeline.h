@@ -16,7 +16,7 @@ namespace klueng::core::machine {
 enum class MoveKind : std::uint8_t { Rapid, Line, Arc, Thread, Dwell };
 
 struct Move {
-  // (Ordered to avoid padding: 160 bytes, not 192; a long program makes millions.)
+  // (Ordered to avoid padding: 168 bytes, not 200; a long program makes millions.)
   Segment path;              // controlled point (imaginary tip), work coords, (z, x radius);
                              // a rapid dog-leg is several Rapid moves, each a straight Segment
   Vec2 noseCentre = Vec2::Zero();  // nose centre minus controlled point (constant while a tool is active)
@@ -26,6 +26,11 @@ struct Move {
   double rpm = 0.0;          // spindle rpm at the move's start
   double rpmEnd = 0.0;       // spindle rpm at the move's end (differs under G96)
   double lead = 0.0;         // G32 lead mm/rev
+  // Acceleration (machine.cfg accel_x/accel_z, 0 = off): seconds spent speeding
+  // up at the start and slowing down at the end of the move (a trapezoid of
+  // speed over time; a triangle when up + down is the whole move).
+  float rampUp = 0.0f;
+  float rampDown = 0.0f;
   int line = 0;              // source file line of the block
   int blockIndex = 0;
   int file = 0;              // Program::files index of the block
@@ -36,6 +41,12 @@ struct Move {
   MoveKind kind = MoveKind::Line;
   SpindleDir spindle = SpindleDir::Stopped;
   bool compensated = false;  // produced under G41/G42
+
+  // Fraction of the path done at time t (0 before, 1 after), following the
+  // speed profile: linear without acceleration.
+  double fractionAt(double t) const;
+  // The inverse: the time at which `fraction` of the path is done.
+  double timeAt(double fraction) const;
 };
 
 struct Timeline {
