@@ -263,6 +263,14 @@
         <translation>วันที่</translation>
     </message>
     <message>
+        <source>Time</source>
+        <translation>เวลา</translation>
+    </message>
+    <message>
+        <source>Machine time: elapsed / cycle time of the whole program (min:s)</source>
+        <translation>เวลาเครื่อง: เวลาที่ผ่านไป / เวลาทำงานของทั้งโปรแกรม (นาที:วินาที)</translation>
+    </message>
+    <message>
         <location filename="../src/gui/status_panel.cpp" line="83"/>
         <source>Tool position X (diameter, mm)</source>
         <translation>ตำแหน่งมีดตัด X (เส้นผ่านศูนย์กลาง, มม.)</translation>

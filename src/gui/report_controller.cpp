@@ -38,6 +38,9 @@ render::ReportData ReportController::reportData(const Source& source, bool withP
   data.program = source.program;
   data.fileName = source.displayName;
   data.date = QDate::currentDate();
+  QApplication::setOverrideCursor(Qt::WaitCursor);
+  render::addCycleTimes(data, source.setup, source.dialect);
+  QApplication::restoreOverrideCursor();
   if (withPart) {
     QApplication::setOverrideCursor(Qt::WaitCursor);
     data.part = render::finishedPart(data.program, source.setup, source.dialect, reportLanguage(), &data.partNote);

@@ -2,6 +2,8 @@
 
 #include "gui/language.h"
 
+#include <cmath>
+
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QLocale>
@@ -55,6 +57,13 @@ QString StatusFields::formatDate(const QDate& date, bool thai) {
   return QLocale(QLocale::English, QLocale::UnitedStates).toString(date, QStringLiteral("MMMM d, yyyy"));
 }
 
+QString StatusFields::formatClock(double seconds) {
+  const double tenths = std::round(std::max(0.0, seconds) * 10.0);
+  const auto minutes = static_cast<long long>(tenths / 600.0);
+  const double rest = (tenths - 600.0 * static_cast<double>(minutes)) / 10.0;
+  return QStringLiteral("%1:%2").arg(minutes).arg(rest, 4, 'f', 1, QLatin1Char('0'));
+}
+
 QString StatusFields::fieldText(Field f) const { return values_[static_cast<int>(f)]->text(); }
 
 void StatusFields::setStatus(const RunStatus& s) {
@@ -74,17 +83,19 @@ void StatusFields::setStatus(const RunStatus& s) {
   set(Field::Tip, QString::number(m.tip));
   set(Field::Tool, m.tool > 0 ? QStringLiteral("T%1%2").arg(m.tool, 2, 10, QLatin1Char('0')).arg(m.offset, 2, 10, QLatin1Char('0'))
                               : QStringLiteral("-"));
+  set(Field::Time, s.cycleTime > 0.0 ? QStringLiteral("%1 / %2").arg(formatClock(s.time), formatClock(s.cycleTime))
+                                     : QStringLiteral("-"));
   set(Field::Date, formatDate(QDate::currentDate(), uiIsThai()));
 }
 
 void StatusFields::retranslate() {
-  const QString names[kCount] = {tr("Tool X"),   tr("Tool Z"),   tr("Feed"),        tr("Spindle"), tr("X offset"),
-                                 tr("Z offset"), tr("Nose R"),   tr("Tip"),         tr("Tool"),    tr("Date")};
+  const QString names[kCount] = {tr("Tool X"),   tr("Tool Z"), tr("Feed"), tr("Spindle"), tr("X offset"),
+                                 tr("Z offset"), tr("Nose R"), tr("Tip"),  tr("Tool"),    tr("Time"), tr("Date")};
   const QString tips[kCount] = {tr("Tool position X (diameter, mm)"), tr("Tool position Z (mm)"), tr("Feed rate as programmed"),
                                 tr("Spindle speed (rpm)"), tr("X offset of the active tool offset (diameter, mm)"),
                                 tr("Z offset of the active tool offset (mm)"), tr("Nose radius of the active offset (mm)"),
                                 tr("Imaginary tool tip number of the active offset"), tr("Tool number and offset number"),
-                                tr("Today's date")};
+                                tr("Machine time: elapsed / cycle time of the whole program (min:s)"), tr("Today's date")};
   for (int i = 0; i < kCount; ++i) {
     names_[i]->setText(names[i]);
     names_[i]->setToolTip(tips[i]);

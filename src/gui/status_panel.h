@@ -3,7 +3,8 @@
 //
 // Public API (F1 adds both to the main window's status bar / a dock)
 //   StatusFields  tool X (diameter), tool Z, feed, spindle speed, X offset, Z offset,
-//                 nose radius, tip number, tool number, today's date (Buddhist era in Thai).
+//                 nose radius, tip number, tool number, machine time (elapsed / cycle time),
+//                 today's date (Buddhist era in Thai).
 //                 setStatus(RunStatus) — connect RunController::statusChanged.
 //                 fieldText(Field) for tests.
 //   StatusLamp    one small painted lamp with a label; setOn(bool), setColor(QColor).
@@ -23,11 +24,13 @@ namespace klueng::gui {
 class StatusFields : public QWidget {
   Q_OBJECT
  public:
-  enum class Field { ToolX, ToolZ, Feed, Spindle, OffsetX, OffsetZ, NoseRadius, Tip, Tool, Date, Count };
+  enum class Field { ToolX, ToolZ, Feed, Spindle, OffsetX, OffsetZ, NoseRadius, Tip, Tool, Time, Date, Count };
   explicit StatusFields(QWidget* parent = nullptr);
   QString fieldText(Field f) const;   // the value part, e.g. "45.000"
   // Today's date as shown ("22 พฤศจิกายน พ.ศ. 2569" / "November 22, 2026").
   static QString formatDate(const QDate& date, bool thai);
+  // A machine time as a clock: "0:07.5", "12:34.0" (minutes:seconds).
+  static QString formatClock(double seconds);
 
  public slots:
   void setStatus(const klueng::gui::RunStatus& status);

@@ -26,6 +26,7 @@ bool thai(ReportLanguage lang) { return lang == ReportLanguage::Thai; }
 struct Texts {
   QString programTitle, page, project, material, part, diameter, programmer, length;
   QString drawingTitle, date, fileName, version, scale, untitled;
+  QString cycleTime, toAlarm;
 };
 
 const Texts& texts(ReportLanguage lang) {
@@ -34,13 +35,14 @@ const Texts& texts(ReportLanguage lang) {
       QStringLiteral("Material"), QStringLiteral("Part"), QStringLiteral("Diameter (mm.)"),
       QStringLiteral("Programmer"), QStringLiteral("Length (mm.)"), QStringLiteral("Part Drawing"),
       QStringLiteral("Date"), QStringLiteral("Program"), QStringLiteral("Version"), QStringLiteral("Scale"),
-      QStringLiteral("Untitled")};
+      QStringLiteral("Untitled"), QStringLiteral("Cycle time"), QStringLiteral("up to the alarm")};
   static const Texts thaiTexts{
       QStringLiteral("ชุดรหัสสั่งการทำงาน"), QStringLiteral("หน้าที่ %1"), QStringLiteral("ชื่องาน"),
       QStringLiteral("วัสดุ"), QStringLiteral("ชิ้นงาน"), QStringLiteral("เส้นผ่าศก. (มม.)"),
       QStringLiteral("ผู้เขียน"), QStringLiteral("ความยาว (มม.)"), QStringLiteral("เอกสารแสดงภาพชิ้นงาน"),
       QStringLiteral("วันที่"), QStringLiteral("ไฟล์โปรแกรม"), QStringLiteral("รุ่นโปรแกรม"),
-      QStringLiteral("มาตราส่วน"), QStringLiteral("ไม่มีชื่อ")};
+      QStringLiteral("มาตราส่วน"), QStringLiteral("ไม่มีชื่อ"), QStringLiteral("เวลาทำงาน"),
+      QStringLiteral("ถึงจุดที่เกิดสัญญาณเตือน")};
   return thai(lang) ? thaiTexts : english;
 }
 
@@ -181,6 +183,42 @@ StockShape finishedPart(const core::io::ProgramFile& file, const core::machine::
   return stockShapeFromStock(cut.stock());
 }
 
+QString durationText(double seconds, ReportLanguage lang) {
+  const double tenths = std::round(std::max(0.0, seconds) * 10.0) / 10.0;
+  const int minutes = static_cast<int>(tenths / 60.0);
+  const double rest = tenths - 60.0 * minutes;
+  if (thai(lang))
+    return minutes > 0 ? QStringLiteral("%1 นาที %2 วินาที").arg(minutes).arg(rest, 0, 'f', 1)
+                       : QStringLiteral("%1 วินาที").arg(rest, 0, 'f', 1);
+  return minutes > 0 ? QStringLiteral("%1 min %2 s").arg(minutes).arg(rest, 0, 'f', 1)
+                     : QStringLiteral("%1 s").arg(rest, 0, 'f', 1);
+}
+
+void addCycleTimes(ReportData& data, const core::machine::MachineSetup& setup, core::gcode::Dialect dialect) {
+  core::machine::JobOptions job;
+  job.run.dialect = dialect;
+  const core::machine::CompiledJob compiled = core::machine::compileJob(data.program, setup, job);
+  if (!compiled.timeline) return;
+  data.cycleTime = compiled.timeline->cycleTime();
+  data.cycleTimeToAlarm = compiled.timeline->alarm.has_value();
+  data.toolTimes = compiled.timeline->timeByTool();
+}
+
+namespace {
+
+// "3 min 12.4 s (T01 2 min 10.0 s, T04 1 min 2.4 s)".
+QString cycleTimeText(const ReportData& data, ReportLanguage lang) {
+  QString text = durationText(data.cycleTime, lang);
+  QStringList parts;
+  for (const core::machine::ToolTime& t : data.toolTimes)
+    if (t.tool > 0) parts << QStringLiteral("T%1 %2").arg(t.tool, 2, 10, QLatin1Char('0')).arg(durationText(t.seconds, lang));
+  if (!parts.isEmpty()) text += QStringLiteral(" (") + parts.join(QStringLiteral(", ")) + QLatin1Char(')');
+  if (data.cycleTimeToAlarm) text += QStringLiteral(", ") + texts(lang).toAlarm;
+  return text;
+}
+
+}  // namespace
+
 // ------------------------------------------------------------------ program sheet
 
 int paintProgramSheet(QPainter& painter, QPagedPaintDevice& device, const ReportData& data, ReportLanguage lang) {
@@ -197,7 +235,9 @@ int paintProgramSheet(QPainter& painter, QPagedPaintDevice& device, const Report
   // Header block: title row, then a 3 x 2 grid of fields (SPEC 12 order, row by row).
   const double titleHeight = 12 * mm;
   const double fieldHeight = 8 * mm;
-  const QRectF grid(page.left(), page.top() + titleHeight, page.width(), 3 * fieldHeight);
+  const bool timed = data.cycleTime >= 0.0;
+  const int gridRows = timed ? 4 : 3;  // the cycle time takes a full-width fourth row
+  const QRectF grid(page.left(), page.top() + titleHeight, page.width(), gridRows * fieldHeight);
   const double listTop = grid.bottom() + 5 * mm;
   const double footerHeight = 6 * mm;
   const double listBottom = page.bottom() - footerHeight;
@@ -238,8 +278,8 @@ int paintProgramSheet(QPainter& painter, QPagedPaintDevice& device, const Report
     painter.setBrush(Qt::NoBrush);
     painter.drawRect(grid);
     const double half = grid.width() / 2;
-    painter.drawLine(QPointF(grid.left() + half, grid.top()), QPointF(grid.left() + half, grid.bottom()));
-    for (int r = 1; r < 3; ++r)
+    painter.drawLine(QPointF(grid.left() + half, grid.top()), QPointF(grid.left() + half, grid.top() + 3 * fieldHeight));
+    for (int r = 1; r < gridRows; ++r)
       painter.drawLine(QPointF(grid.left(), grid.top() + r * fieldHeight),
                        QPointF(grid.right(), grid.top() + r * fieldHeight));
     for (std::size_t i = 0; i < fields.size(); ++i) {
@@ -248,6 +288,9 @@ int paintProgramSheet(QPainter& painter, QPagedPaintDevice& device, const Report
       const QRectF cell(grid.left() + col * half, grid.top() + row * fieldHeight, half, fieldHeight);
       drawField(painter, cell, fields[i].first, fields[i].second, 32 * mm);
     }
+    if (timed)
+      drawField(painter, QRectF(grid.left(), grid.top() + 3 * fieldHeight, grid.width(), fieldHeight), t.cycleTime,
+                cycleTimeText(data, lang), 32 * mm);
     // Listing.
     painter.setFont(listFont);
     const std::size_t first = static_cast<std::size_t>(p) * static_cast<std::size_t>(rowsPerPage);

@@ -17,6 +17,8 @@
 //   drawingScale(partMm, areaMm)   the standard scale used (paper mm per part mm).
 //   The painter must be active on `device`; sheets after the first start with
 //   device.newPage() by the caller.
+#include <vector>
+
 #include <QDate>
 #include <QFont>
 #include <QPagedPaintDevice>
@@ -47,7 +49,16 @@ struct ReportData {
   QDate date = QDate::currentDate();
   StockShape part;                 // the finished part (see finishedPart)
   QString partNote;                // printed under the drawing when the part is not the finished one
+  // Cycle time (issue 11): total and per tool; total < 0 = not known (the program has errors).
+  double cycleTime = -1.0;
+  bool cycleTimeToAlarm = false;   // the run stops on an alarm: the time is up to it
+  std::vector<core::machine::ToolTime> toolTimes;
 };
+
+// Fills data.cycleTime and data.toolTimes by running the program (no cutting).
+void addCycleTimes(ReportData& data, const core::machine::MachineSetup& setup, core::gcode::Dialect dialect);
+// "3 min 12.4 s" / "3 นาที 12.4 วินาที".
+QString durationText(double seconds, ReportLanguage lang);
 
 // Runs the whole program with the core and returns the stock it leaves. If the
 // program has errors or stops on an alarm, `note` says so (in `lang`) and the

@@ -21,6 +21,7 @@
 #include <QToolBar>
 
 #include "fresh_user_folders.h"
+#include "klueng/core/machine/job.h"
 #include "gui/language.h"
 #include "gui/main_window.h"
 #include "gui/resources.h"
@@ -43,6 +44,7 @@ render::ReportData sampleData(ReportLanguage lang) {
   d.fileName = QStringLiteral("01-step-shaft.txt");
   d.date = QDate(1999, 10, 19);
   d.part = render::finishedPart(d.program, loadSetup(), core::gcode::Dialect::Fanuc, lang, &d.partNote);
+  render::addCycleTimes(d, loadSetup(), core::gcode::Dialect::Fanuc);
   return d;
 }
 
@@ -146,6 +148,25 @@ class ReportTest : public QObject {
     // Diameter and length from the header ("150" = mm, 50; "1100" = mm, 100).
     QVERIFY(text.contains(QRegularExpression(QStringLiteral("Diameter \\(mm\\.\\)\\s+50\\b"))));
     QVERIFY(text.contains(QRegularExpression(QStringLiteral("Length \\(mm\\.\\)\\s+100\\b"))));
+    // Cycle time of the whole program and of each tool, from the core's timeline.
+    const render::ReportData data = sampleData(ReportLanguage::English);
+    const auto timeline = core::machine::compileJob(data.program, loadSetup(), {}).timeline;
+    QVERIFY(timeline && !timeline->alarm);
+    QCOMPARE(data.cycleTime, timeline->cycleTime());
+    QVERIFY(data.cycleTime > 60.0);
+    const QString total = render::durationText(timeline->cycleTime(), ReportLanguage::English);
+    QVERIFY(total.contains(QStringLiteral(" min ")));
+    QVERIFY2(text.contains(QStringLiteral("Cycle time")), qPrintable(text));
+    QVERIFY2(text.contains(total), qPrintable(total));
+    for (const core::machine::ToolTime& t : timeline->timeByTool())
+      if (t.tool > 0) {
+        const QString tool = QStringLiteral("T%1 %2").arg(t.tool, 2, 10, QLatin1Char('0')).arg(
+            render::durationText(t.seconds, ReportLanguage::English));
+        QVERIFY2(text.contains(tool), qPrintable(tool));
+      }
+    QCOMPARE(render::durationText(192.44, ReportLanguage::English), QStringLiteral("3 min 12.4 s"));
+    QCOMPARE(render::durationText(192.44, ReportLanguage::Thai), QStringLiteral("3 นาที 12.4 วินาที"));
+    QCOMPARE(render::durationText(7.0, ReportLanguage::English), QStringLiteral("7.0 s"));
   }
 
   void thaiProgramSheetWithEmbeddedThaiFont() {
@@ -153,7 +174,8 @@ class ReportTest : public QObject {
     QCOMPARE(writePdf(pdf, sampleData(ReportLanguage::Thai), ReportLanguage::Thai, Sheet::Program), 1);
     const QString text = pdfText(pdf);
     for (const char* s : {"ชุดรหัสสั่งการทำงาน", "หน้าที่ 1", "ชื่องาน", "วัสดุ", "ชิ้นงาน", "เส้นผ่าศก. (มม.)", "ผู้เขียน",
-                          "ความยาว (มม.)", "19 ตุลาคม พ.ศ. 2542", "Step shaft exercise", "N100 G01 Z-59.8 F0.25"})
+                          "ความยาว (มม.)", "19 ตุลาคม พ.ศ. 2542", "Step shaft exercise", "N100 G01 Z-59.8 F0.25",
+                          "เวลาทำงาน", "นาที"})
       QVERIFY2(text.contains(QString::fromUtf8(s)), s);
     QVERIFY(!text.contains(QStringLiteral("CNC Program Sheet")));
     const QString fonts = run(QStringLiteral("pdffonts"), {pdf});

@@ -1,6 +1,8 @@
 // The run controller and the output screen against the core (offscreen QTest):
 // stepping, going to the end, pause / stop / step back / breakpoints, alarms,
 // a program with errors, the slow-motion one-pixel rule.
+#include <cmath>
+
 #include <QApplication>
 #include <QSignalSpy>
 #include <QTest>
@@ -89,6 +91,15 @@ class RunControllerTest : public QObject {
     QCOMPARE(rig.fields.fieldText(StatusFields::Field::Tool), QStringLiteral("T0101"));
     QCOMPARE(rig.fields.fieldText(StatusFields::Field::NoseRadius), QStringLiteral("0.800"));
     QCOMPARE(rig.fields.fieldText(StatusFields::Field::Tip), QStringLiteral("3"));
+    // Machine time: elapsed to this block / the whole program, as a clock.
+    QCOMPARE(rig.fields.fieldText(StatusFields::Field::Time),
+             StatusFields::formatClock(snap.time) + QStringLiteral(" / ") + StatusFields::formatClock(tl.cycleTime()));
+    QVERIFY(tl.cycleTime() > 60.0);
+    QVERIFY(rig.fields.fieldText(StatusFields::Field::Time).endsWith(
+        QStringLiteral("%1:%2").arg(static_cast<int>(tl.cycleTime() / 60)).arg(std::fmod(tl.cycleTime(), 60.0), 4, 'f', 1, QLatin1Char('0'))));
+    QCOMPARE(StatusFields::formatClock(7.46), QStringLiteral("0:07.5"));
+    QCOMPARE(StatusFields::formatClock(754.0), QStringLiteral("12:34.0"));
+    QCOMPARE(StatusFields::formatClock(59.96), QStringLiteral("1:00.0"));
     QVERIFY(qAbs(rig.view.toolItemPos().x() - core::zOf(p)) < 1e-9);
     QVERIFY(qAbs(rig.view.toolItemPos().y() + core::xOf(p)) < 1e-9);
     QCOMPARE(rig.controller.currentLine(), snap.line);

@@ -59,6 +59,18 @@ int Timeline::moveAt(double t) const {
   return static_cast<int>(it - moves.begin());
 }
 
+std::vector<ToolTime> Timeline::timeByTool() const {
+  std::vector<ToolTime> out;
+  for (const Move& m : moves) {
+    const double seconds = m.tEnd - m.tStart;
+    if (seconds <= 0.0) continue;
+    auto it = std::find_if(out.begin(), out.end(), [&m](const ToolTime& t) { return t.tool == m.tool; });
+    if (it == out.end()) out.push_back({m.tool, seconds});
+    else it->seconds += seconds;
+  }
+  return out;
+}
+
 Vec2 Timeline::positionAt(double t) const {
   const int i = moveAt(t);
   if (i < 0) return moves.empty() ? Vec2(Vec2::Zero()) : moves.front().path.start;

@@ -152,3 +152,24 @@ TEST(Acceleration, MachineCfgReadsTheLimitsAndRefusesNegativeOnes) {
 
 }  // namespace
 }  // namespace klueng::core::machine
+
+namespace klueng::core::machine {
+namespace {
+
+TEST(CycleTime, SplitsByToolInTheOrderTheToolsAreFirstUsed) {
+  // T01: rapid 298 mm in Z (2.235 s) and 10 mm at 100 mm/min (6 s); T04: 1 s dwell
+  // and 5 mm at 100 mm/min (3 s); back to T01 for a 5 mm move (3 s).
+  const Timeline t = testing::runText(
+      "G98 T0101\nG00 X20. Z2.\nG01 Z-8. F100.\nT0404\nG04 P1000\nG01 Z-13.\nT0101\nG01 Z-18.\nM30\n");
+  ASSERT_FALSE(t.alarm);
+  const std::vector<ToolTime> byTool = t.timeByTool();
+  ASSERT_EQ(byTool.size(), 2u);
+  EXPECT_EQ(byTool[0].tool, 1);
+  EXPECT_NEAR(byTool[0].seconds, 298.0 / (8000.0 / 60.0) + 6.0 + 3.0, 1e-9);
+  EXPECT_EQ(byTool[1].tool, 4);
+  EXPECT_NEAR(byTool[1].seconds, 1.0 + 3.0, 1e-9);
+  EXPECT_NEAR(byTool[0].seconds + byTool[1].seconds, t.cycleTime(), 1e-9);
+}
+
+}  // namespace
+}  // namespace klueng::core::machine

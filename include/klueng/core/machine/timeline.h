@@ -49,12 +49,20 @@ struct Move {
   double timeAt(double fraction) const;
 };
 
+// Machine time spent with one tool selected (issue 11: cycle time per tool).
+struct ToolTime {
+  int tool = 0;          // station; 0 = before the first tool call
+  double seconds = 0.0;  // moves and dwells made with it
+};
+
 struct Timeline {
   std::vector<Move> moves;
   std::vector<StateSnapshot> snapshots;   // one per executed block, in execution order
   std::optional<Diagnostic> alarm;        // the alarm that stopped the run, if any
   FlowLog flow;                           // call stacks and macro variables (flow.h)
   double cycleTime() const { return moves.empty() ? 0.0 : moves.back().tEnd; }
+  // The cycle time split by tool, in the order the tools are first used.
+  std::vector<ToolTime> timeByTool() const;
   // Position of the controlled point at time t (clamped to [0, cycleTime]).
   Vec2 positionAt(double t) const;
   // Index of the move active at time t (-1 before the first move).
