@@ -216,6 +216,11 @@ void MainWindow::connectDocuments() {
   connect(docs_, &DocumentManager::aboutToReplace, this, [this] {
     runner_->stop();
     hideBanner();
+    // Diagnostics belong to their file (issue 11): none of the old file's
+    // errors or alarms may underline a line of the new one.
+    runDiagnostics_.clear();
+    lastDiagnostics_.clear();
+    showDiagnostics();
   });
   connect(docs_, &DocumentManager::cleared, this, [this] {
     setupUndo_->clear();  // one undo history per document

@@ -160,7 +160,7 @@ RunStatus RunController::status() const {
   s.cycleTime = timeline_->cycleTime();
   const machine::Pose pose = machine::poseAt(*timeline_, snapshotIndex_, time_);
   if (!timeline_->moves.empty()) s.position = pose.position;
-  if (machine::shownSnapshot(*timeline_, snapshotIndex_, time_) >= 0) {
+  if (pose.hasState) {
     s.machine = pose.machine;
     s.programmedFeed = pose.programmedFeed;
     s.feedMode = pose.feedMode;

@@ -26,6 +26,7 @@
 #include "gui/help_contents.h"
 #include "gui/language.h"
 #include "gui/main_window.h"
+#include "gui/status_panel.h"
 #include "gui/resources.h"
 #include "gui/run_controller.h"
 #include "gui/settings.h"
@@ -507,6 +508,60 @@ class MainWindowTest : public QObject {
     // The alarm is also listed with the program's diagnostics.
     const auto& listed = w.diagnosticsPanel()->diagnostics();
     QVERIFY(std::any_of(listed.begin(), listed.end(), [&](const core::Diagnostic& d) { return d.code == alarm.code; }));
+  }
+
+  // Issue 11: opening another file drops the old file's alarm and errors.
+  void openingAnotherFileDropsThePreviousFilesDiagnostics() {
+    MainWindow w;
+    w.show();
+    QVERIFY(waitIdle(w));
+    w.editor()->setPlainText(QStringLiteral("G21 G99\nT0101 G00 X60. Z5.\nG01 X40. Z-10. F0.2\nG01 Y3.\nM30\n"));
+    QVERIFY(waitIdle(w));
+    QVERIFY(w.diagnosticsPanel()->errorCount() > 0);  // Y is no lathe word
+    w.editor()->setPlainText(QStringLiteral("G21 G99\nT0101 G00 X60. Z5.\nG01 X40. Z-10. F0.2\nM30\n"));
+    QVERIFY(waitIdle(w));
+    w.runController()->setSpeed(RunController::kAsFastAsPossible);
+    w.action(QStringLiteral("actionGo"))->trigger();
+    QTRY_COMPARE_WITH_TIMEOUT(w.runController()->state(), RunState::Alarm, 20000);
+    QVERIFY(!w.diagnosticsPanel()->diagnostics().empty());
+    answerNextMessageBox(QStringLiteral("discardButton"));
+    QSignalSpy loaded(&w, &MainWindow::fileLoaded);
+    QVERIFY(w.openFile(sample("01-step-shaft.txt")));
+    // As soon as the file is in, before its check has finished, and after it.
+    QTRY_COMPARE_WITH_TIMEOUT(loaded.count(), 1, 20000);
+    QVERIFY(w.diagnosticsPanel()->diagnostics().empty());
+    QVERIFY(w.bannerText().isEmpty());
+    QVERIFY(waitIdle(w));
+    // After its check: only what sample 01 itself gives (notes, no errors), no alarm.
+    QCOMPARE(w.diagnosticsPanel()->errorCount(), 0);
+    for (const core::Diagnostic& d : w.diagnosticsPanel()->diagnostics()) {
+      QVERIFY2(d.severity != core::Severity::Alarm && d.severity != core::Severity::Error, d.code.c_str());
+    }
+    MainWindow fresh;
+    QVERIFY(fresh.openFile(sample("01-step-shaft.txt")));
+    QVERIFY(waitIdle(fresh));
+    QCOMPARE(w.diagnosticsPanel()->diagnostics().size(), fresh.diagnosticsPanel()->diagnostics().size());
+  }
+
+  // Issue 11: after an alarm at the fastest speed the status bar shows the
+  // state at the alarm, not an empty one.
+  void theStatusBarIsRightAfterAnAlarmAtTheFastestSpeed() {
+    MainWindow w;
+    w.show();
+    QVERIFY(waitIdle(w));
+    w.editor()->setPlainText(QStringLiteral("G21 G99\nT0101 G00 X60. Z5.\nG01 X40. Z-10. F0.2\nM30\n"));
+    QVERIFY(waitIdle(w));
+    w.runController()->setSpeed(RunController::kAsFastAsPossible);
+    w.action(QStringLiteral("actionGo"))->trigger();
+    QTRY_COMPARE_WITH_TIMEOUT(w.runController()->state(), RunState::Alarm, 20000);
+    QCoreApplication::processEvents();
+    const StatusFields* f = w.statusFields();
+    QCOMPARE(f->fieldText(StatusFields::Field::Tool), QStringLiteral("T0101"));
+    QCOMPARE(f->fieldText(StatusFields::Field::NoseRadius), QStringLiteral("0.800"));
+    QCOMPARE(f->fieldText(StatusFields::Field::Tip), QStringLiteral("3"));
+    QCOMPARE(f->fieldText(StatusFields::Field::Feed), QStringLiteral("0.200 mm/rev"));
+    QCOMPARE(f->fieldText(StatusFields::Field::ToolX), QStringLiteral("60.000"));
+    QCOMPARE(f->fieldText(StatusFields::Field::ToolZ), QStringLiteral("5.000"));
   }
 
   // Issue 11: a run that reaches M30 says so, with the cycle time of the core's timeline.

@@ -229,6 +229,12 @@ bool Interpreter::executeBlock() {
 
 void Interpreter::emitSnapshot() {
   if (capture_) return;  // a profile block is read, not run
+  sink_->blockDone(snapshot());
+  ++snapshots_;
+  if (stopped_ && stopEndsRun_) ended_ = true;
+}
+
+StateSnapshot Interpreter::snapshot() {
   StateSnapshot snap;
   snap.line = block_->line;
   snap.blockIndex = blockIndex_;
@@ -242,9 +248,7 @@ void Interpreter::emitSnapshot() {
   snap.stopped = stopped_;
   snap.optionalStop = optionalStopBlock_;
   optionalStopBlock_ = false;
-  sink_->blockDone(snap);
-  ++snapshots_;
-  if (stopped_ && stopEndsRun_) ended_ = true;
+  return snap;
 }
 
 MotionMode Interpreter::motionFor(CodeAction action) {

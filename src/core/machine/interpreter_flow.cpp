@@ -168,6 +168,7 @@ void Interpreter::run() {
   }
   // A chamfer or corner still waiting for its move when the program ends.
   if (corner_.active && !sink_->halted()) cornerNeedsMove();
+  if (flow_ && sink_->halted() && block_ && !capture_) flow_->alarmState = snapshot();
   // The persistent variables go back to the caller (who keeps them in a file).
   if (options_.persistentVariables) {
     for (int n = 500; n <= 999; ++n) {

@@ -201,6 +201,7 @@ class Interpreter final : public gcode::MacroVariables {
   std::optional<Segment> arcTo(const Vec2& end, bool ccw, const Word* where);
 
   void emitSnapshot();
+  StateSnapshot snapshot();  // the state after the current block
 
   // ---- interpreter_flow.cpp (program flow: subprograms, macro statements) -------
   bool runBlock(int index);

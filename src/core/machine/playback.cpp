@@ -85,8 +85,12 @@ Pose poseAt(const Timeline& timeline, int done, double time) {
   Pose p;
   if (!timeline.moves.empty()) p.position = timeline.positionAt(time);
   const int k = shownSnapshot(timeline, done, time);
-  if (k >= 0 && k < static_cast<int>(timeline.snapshots.size())) {
-    const StateSnapshot& snap = at(timeline, k);
+  // Stopped by an alarm: the alarmed block's modal words are in force.
+  const bool atAlarm = timeline.alarm && timeline.flow.alarmState &&
+                       k + 1 >= static_cast<int>(timeline.snapshots.size()) && time >= timeline.cycleTime() - kPlaybackEps;
+  if (atAlarm || (k >= 0 && k < static_cast<int>(timeline.snapshots.size()))) {
+    const StateSnapshot& snap = atAlarm ? *timeline.flow.alarmState : at(timeline, k);
+    p.hasState = true;
     p.machine = snap.machine;
     p.programmedFeed = snap.modal.feed;
     p.feedMode = snap.modal.feedMode;

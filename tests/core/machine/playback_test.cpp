@@ -152,3 +152,33 @@ TEST_F(Playback, ASlowFrameNeverJumpsFurtherThanItsTravel) {
 
 }  // namespace
 }  // namespace klueng::core::machine
+
+namespace klueng::core::machine {
+namespace {
+
+// Issue 11: stopped by an alarm, the pose shows the alarmed block's modal words
+// (its F, the tool and offset in force), not the state before it.
+TEST(PlaybackAlarm, ThePoseAtAnAlarmHasTheAlarmedBlocksModalWords) {
+  const Timeline t = testing::runText("G21 G99\nT0101 G00 X60. Z5.\nG01 X40. Z-10. F0.2\nM30\n");
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->range.line, 3);
+  ASSERT_TRUE(t.flow.alarmState);
+  EXPECT_EQ(t.flow.alarmState->line, 3);
+  const int last = static_cast<int>(t.snapshots.size()) - 1;
+  const Pose p = poseAt(t, last, t.cycleTime());
+  EXPECT_TRUE(p.hasState);
+  EXPECT_DOUBLE_EQ(p.programmedFeed, 0.2);
+  EXPECT_EQ(p.feedMode, FeedMode::PerRev);
+  EXPECT_EQ(p.machine.tool, 1);
+  EXPECT_EQ(p.machine.offset, 1);
+  EXPECT_DOUBLE_EQ(p.machine.noseRadius, 0.8);
+  EXPECT_POINT(p.position, 60.0, 5.0);
+  // Before the end the pose is the one of the blocks that ran.
+  const Pose before = poseAt(t, 0, 0.0);
+  EXPECT_DOUBLE_EQ(before.programmedFeed, 0.0);
+  // A run without an alarm keeps no alarm state.
+  EXPECT_FALSE(testing::runText("G21 G99\nT0101 G00 X60. Z5.\nM30\n").flow.alarmState);
+}
+
+}  // namespace
+}  // namespace klueng::core::machine

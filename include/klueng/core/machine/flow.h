@@ -3,10 +3,12 @@
 // variables each block wrote and the values its expression words had. Kept
 // beside the Timeline so the GUI can show the call stack, a variable watch and
 // word values while stepping, and the trace can print the call level.
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "klueng/core/diagnostic.h"
+#include "klueng/core/machine/state.h"
 
 namespace klueng::core::machine {
 
@@ -50,6 +52,9 @@ struct FlowLog {
   std::vector<WordValue> wordValues;    // in execution order
   std::vector<int> localFrames{0};      // per local frame id: the stack level that owns it
   std::vector<Diagnostic> notices;      // run notices that did not stop the run (M99 loop, vacant address)
+  // The state when an alarm stopped the run: the alarmed block's modal words
+  // (its F, S, T) are in force though it never finished (the status bar shows it).
+  std::optional<StateSnapshot> alarmState;
 };
 
 }  // namespace klueng::core::machine

@@ -56,6 +56,7 @@ struct Pose {
   FeedMode feedMode = FeedMode::PerRev;
   double rpm = 0.0;
   double feedMmPerMin = 0.0;     // of the move under way; 0 between moves
+  bool hasState = false;         // machine/feed come from a block (none has run yet: false)
 };
 Pose poseAt(const Timeline& timeline, int done, double time);
 
