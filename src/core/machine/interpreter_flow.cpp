@@ -509,11 +509,11 @@ bool Interpreter::macroCall(const Block& b, const CodeWord& g) {
     modalCall_.active = false;
     return true;
   }
-  const Word* p = find('P');
-  if (!p) {
-    for (const Word& w : b.words)
-      if (w.letter == 'P') p = &w;
-  }
+  // From this block's words: the letter index still describes the block before
+  // (found by fuzz_macro: its pointers may be into a freed evaluation).
+  const Word* p = nullptr;
+  for (const Word& w : b.words)
+    if (w.letter == 'P' && !w.comma && !p) p = &w;
   if (!p) return flowAlarm(codes::kNoSuchProgram, at, {text, "?"});
   const Word* l = nullptr;
   for (const Word& w : b.words)

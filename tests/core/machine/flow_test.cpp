@@ -442,3 +442,21 @@ TEST(FlowRun, WritingAnOffsetCountsFromTheNextTWord) {
 
 }  // namespace
 }  // namespace klueng::core::machine
+
+namespace klueng::core::machine {
+namespace {
+
+// Found by fuzz_macro: a G65 block with expressions read its P through the
+// letter index of the block before, which pointed into that block's evaluated
+// words — here at this block's A, so it called O1000 instead of O9000.
+TEST(FlowRun, G65ReadsItsOwnPAfterABlockWithExpressions) {
+  const Timeline t = testing::runText("O0001\nG98\n#1=1000\nG04 P#1\nG65 A#1 P9000\nM30\nO9000\n#100=#1+1\nM99\n");
+  ASSERT_FALSE(t.alarm) << t.alarm->code;
+  bool called = false;
+  for (const VariableWrite& w : t.flow.writes)
+    if (w.number == 100) called = w.value == 1001.0;
+  EXPECT_TRUE(called);
+}
+
+}  // namespace
+}  // namespace klueng::core::machine
