@@ -336,6 +336,7 @@ CheckController::Request MainWindow::checkRequest() const {
   r.options.powerOnUnits = powerOnUnits_;
   r.options.toolsWithBitmap = toolsWithBitmap_;
   r.options.turretStations = setup_.tools.stations;
+  r.options.modalRules = true;  // issue 11: the alarms the modal state shows, while typing
   const int profileLimit = core::gcode::machineProfile(dialect_).maxToolStation;
   r.stations = profileLimit > 0 ? std::min(profileLimit, setup_.tools.stations) : setup_.tools.stations;
   r.setup = setup_;

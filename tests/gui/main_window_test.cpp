@@ -177,6 +177,28 @@ class MainWindowTest : public QObject {
     QVERIFY(!hasWavyUnderlineAt(w.editor()->document()->findBlockByNumber(1), 9));
   }
 
+  // Issue 11: a G01 with no feed is reported while typing, not only when the program runs.
+  void aFeedMoveWithNoFeedIsReportedWhileTyping() {
+    MainWindow w;
+    w.show();
+    QVERIFY(waitIdle(w));
+    w.editor()->insertPlainText(QStringLiteral("G21 G99\nG00 X20. Z2.\n"));
+    QTest::keyClicks(w.editor(), QStringLiteral("G01 Z-10."));
+    QVERIFY(waitIdle(w));
+    const auto& diags = w.diagnostics();
+    auto it = std::find_if(diags.begin(), diags.end(), [](const core::Diagnostic& d) { return d.code == "W104"; });
+    QVERIFY(it != diags.end());
+    QCOMPARE(it->range.line, w.editor()->firstFileLine() + 2);
+    QCOMPARE(it->range.column, 1);
+    QCOMPARE(it->severity, core::Severity::Warning);
+    QVERIFY(hasWavyUnderlineAt(w.editor()->document()->findBlockByNumber(2), 0));
+    // Giving the feed clears it.
+    QTest::keyClicks(w.editor(), QStringLiteral(" F0.2"));
+    QVERIFY(waitIdle(w));
+    QVERIFY(std::none_of(w.diagnostics().begin(), w.diagnostics().end(),
+                         [](const core::Diagnostic& d) { return d.code == "W104"; }));
+  }
+
   // Issue 11: "1 error", never "1 errors"; Thai counts items the same way for one or many.
   void theDiagnosticsTitleCountsInWords() {
     MainWindow w;

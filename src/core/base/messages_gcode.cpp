@@ -155,6 +155,12 @@ constexpr MessageText kMessages[] = {
      "G28 ที่ไม่มีคำสั่งแกนจะไม่เคลื่อนที่: เติม U0. W0. เพื่อกลับสู่จุดอ้างอิง"},
     {"W103", "{0} has more than {2} decimals: the control rounds it to {1}",
      "{0} มีทศนิยมเกิน {2} ตำแหน่ง: เครื่องจะปัดค่าเป็น {1}"},
+    {"W104", "{0} with no feed rate in force: no F has been given yet, so the run stops here with alarm A102; add F (e.g. F0.2 under G99)",
+     "{0} ไม่มีอัตราป้อน: ยังไม่ได้กำหนด F มาก่อน เมื่อรันจะหยุดที่บล็อกนี้ด้วยสัญญาณเตือน A102 ให้เติม F (เช่น F0.2 เมื่อใช้ G99)"},
+    {"W105", "G96 with no G50 S limit before it: near the centre the spindle speeds up to the machine's maximum; give a limit first (e.g. G50 S2000)",
+     "G96 โดยไม่มี G50 S จำกัดความเร็วรอบไว้ก่อน: เมื่อมีดเข้าใกล้ศูนย์กลาง เพลาจะหมุนเร็วขึ้นจนถึงความเร็วรอบสูงสุดของเครื่อง ให้กำหนดขีดจำกัดก่อน (เช่น G50 S2000)"},
+    {"W106", "{0} cannot join the arc's ends: the radius is smaller than half their distance ({1}), so the run stops here with alarm A114",
+     "{0} เชื่อมปลายทั้งสองของส่วนโค้งไม่ได้: รัศมีน้อยกว่าครึ่งหนึ่งของระยะระหว่างปลายทั้งสอง ({1}) เมื่อรันจะหยุดที่บล็อกนี้ด้วยสัญญาณเตือน A114"},
 
     // I1xx: notes
     {"I102", "blocks with errors that are {1} forms: {0}; choose the {1} dialect (--dialect {2})",

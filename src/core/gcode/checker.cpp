@@ -11,6 +11,7 @@
 #include "diagnostic_codes.h"
 #include "klueng/core/gcode/address_table.h"
 #include "flow_check.h"
+#include "modal_check.h"
 #include "klueng/core/gcode/word_format.h"
 
 namespace klueng::core::gcode {
@@ -471,6 +472,7 @@ std::vector<Diagnostic> check(const Program& program, const CheckOptions& option
     }
   }
   if (!checker.full()) checkFlow(program, options, out);
+  if (options.modalRules && !checker.full() && !options.stopAtFirstError) checkModalState(program, options, out);
   // Blocks come in line order, so this only reorders within a line.
   std::stable_sort(out.begin(), out.end(), [](const Diagnostic& a, const Diagnostic& b) {
     if (a.range.file != b.range.file) return a.range.file < b.range.file;

@@ -86,6 +86,10 @@ inline constexpr const char* kSubprogramFileErrors = "E412";  // {0}=file {1}=li
 inline constexpr const char* kMachineSpecificM = "W101";    // {0}=word
 inline constexpr const char* kG28NoMotion = "W102";
 inline constexpr const char* kRoundedToIncrement = "W103";  // {0}=word {1}=rounded word {2}=decimals
+// Modal rules (modal_check.cpp): a run-time alarm known while typing.
+inline constexpr const char* kFeedMoveWithoutFeed = "W104";          // {0}=G01/G02/G03/G32
+inline constexpr const char* kConstantSurfaceWithoutClamp = "W105";
+inline constexpr const char* kArcRadiusCannotJoin = "W106";          // {0}=R word {1}=half the chord
 
 // I1xx notes
 inline constexpr const char* kDialectFits = "I102";  // {0}=blocks {1}=dialect name {2}=dialect id
