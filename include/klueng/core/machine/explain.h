@@ -1,0 +1,30 @@
+#pragma once
+// Plain-language explanations of blocks (issue 11), in English and in Thai as a
+// lathe teacher says it (GLOSSARY.md): what each code does, built from the code
+// table, and what the block does here, built from the machine state after it —
+// "G01 X30. Z-20. F0.2: cut in a straight line to Ø30 at Z-20, 0.2 mm per
+// revolution; at 180 m/min (G96) the spindle turns 1910 rpm here".
+#include <string>
+#include <string_view>
+
+#include "klueng/core/gcode/code_table.h"
+#include "klueng/core/gcode/program.h"
+#include "klueng/core/machine/state.h"
+#include "klueng/core/messages.h"
+
+namespace klueng::core::machine {
+
+// What one code does ("cut in a straight line" / "กลึงเป็นเส้นตรง"); empty when
+// the dialect has no such code.
+std::string explainCode(char letter, int number, gcode::Dialect dialect, Lang lang);
+
+// The block as written, a colon, and what it does with the state `after` it
+// ran (the feed mode, G96 speed and rpm at its end point, the tool). A macro
+// statement keeps no words: `statementText` (its line) heads it then.
+std::string explainBlock(const gcode::Block& block, const StateSnapshot& after, gcode::Dialect dialect, Lang lang,
+                         std::string_view statementText = {});
+
+// The same without a run: what the words alone say (no rpm, feed mode unknown).
+std::string explainWords(const gcode::Block& block, gcode::Dialect dialect, Lang lang, std::string_view statementText = {});
+
+}  // namespace klueng::core::machine
