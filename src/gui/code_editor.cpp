@@ -302,7 +302,11 @@ bool CodeEditor::viewportEvent(QEvent* event) {
     const QRect r = cursorRect(c);
     int pos = c.position();
     if (help->pos().x() < r.x() && pos > c.block().position()) --pos;
-    const QString text = helpForPosition(pos);
+    QString text = helpForPosition(pos);
+    if (!text.isEmpty() && explainLine_) {
+      const QString what = explainLine_(fileLineFromBlock(c.block().blockNumber()));
+      if (!what.isEmpty()) text += QStringLiteral("<hr><i>%1</i>").arg(what.toHtmlEscaped());
+    }
     if (text.isEmpty()) QToolTip::hideText();
     else QToolTip::showText(help->globalPos(), text, viewport());
     return true;

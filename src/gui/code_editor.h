@@ -31,6 +31,9 @@ class CodeEditor : public QPlainTextEdit {
   int fileLineFromBlock(int blockNumber) const { return blockNumber + firstFileLine_; }
 
   void setDialect(core::gcode::Dialect d) { dialect_ = d; }
+  core::gcode::Dialect dialect() const { return dialect_; }
+  // What the block on a file line does, added to the hover help (issue 11: Explain).
+  void setLineExplainer(std::function<QString(int fileLine)> explain) { explainLine_ = std::move(explain); }
   // The value an expression word (X#101) had the last time its line ran: set by
   // the main window from the run (file line, 1-based column -> text, or empty).
   void setWordValueLookup(std::function<QString(int fileLine, int column)> lookup) { wordValue_ = std::move(lookup); }
@@ -84,6 +87,7 @@ class CodeEditor : public QPlainTextEdit {
   int breakpointCount_ = 0;
   core::gcode::Dialect dialect_ = core::gcode::Dialect::Fanuc;
   std::function<QString(int, int)> wordValue_;
+  std::function<QString(int)> explainLine_;
 };
 
 }  // namespace klueng::gui

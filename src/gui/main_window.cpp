@@ -26,6 +26,7 @@
 #include "gui/banner.h"
 #include "gui/code_editor.h"
 #include "gui/diagnostics_panel.h"
+#include "gui/explain_bar.h"
 #include "gui/dialect_offer_bar.h"
 #include "gui/document_manager.h"
 #include "gui/find_dialog.h"
@@ -106,6 +107,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   connect(dialectOffer_, &DialectOfferBar::switchRequested, this, &MainWindow::setDialect);
   editorLayout->addWidget(dialectOffer_);
   editorLayout->addWidget(editor_, 1);
+  explainBar_ = new ExplainBar(runner_, editor_, this);
+  editorLayout->addWidget(explainBar_);
+  editor_->setLineExplainer([this](int fileLine) { return explainBar_->explainLine(fileLine); });
 
   statusLamps_ = new StatusLamps(this);
   statusLamps_->setObjectName(QStringLiteral("statusLamps"));

@@ -67,6 +67,7 @@ class MainWindow : public QMainWindow {
   class FlowPanel* flowPanel() const { return flow_; }
   OutputView* outputView() const { return output_; }
   StatusFields* statusFields() const { return statusFields_; }
+  class ExplainBar* explainBar() const { return explainBar_; }
   StatusLamps* statusLamps() const { return statusLamps_; }
   QSplitter* splitter() const { return splitter_; }
   // The banner above the editor (alarms, "fix the errors first"); empty when hidden.
@@ -168,6 +169,7 @@ class MainWindow : public QMainWindow {
   StatusLamps* statusLamps_ = nullptr;
   QSplitter* splitter_ = nullptr;
   class Banner* banner_ = nullptr;
+  class ExplainBar* explainBar_ = nullptr;
   DialectOfferBar* dialectOffer_ = nullptr;
   class RecoveryBar* recoveryBar_ = nullptr;
   QLabel* stockLabel_ = nullptr;

@@ -27,6 +27,9 @@
 #include "gui/language.h"
 #include "gui/main_window.h"
 #include "gui/status_panel.h"
+#include "gui/explain_bar.h"
+#include "klueng/core/gcode/parser.h"
+#include "klueng/core/machine/explain.h"
 #include "gui/resources.h"
 #include "gui/run_controller.h"
 #include "gui/settings.h"
@@ -602,6 +605,46 @@ class MainWindowTest : public QObject {
                                          : QStringLiteral("%1 s").arg(seconds, 0, 'f', 1);
     QCOMPARE(w.bannerText(), QStringLiteral("The program ended. Cycle time: %1.").arg(expected));
     QCOMPARE(MainWindow::formatDuration(192.44), QStringLiteral("3 min 12.4 s"));
+  }
+
+  // Issue 11: while stepping, the bar under the editor explains the block at the arrow.
+  void stepExplainsTheBlockAtTheArrow() {
+    MainWindow w;
+    w.show();
+    QVERIFY(w.openFile(sample("01-step-shaft.txt")));
+    QVERIFY(waitIdle(w));
+    RunController* run = w.runController();
+    run->setSpeed(RunController::kAsFastAsPossible);
+    QVERIFY(!w.explainBar()->isVisible());
+    // O0001, N10 G21 G40 G97, N15 G99, N20 T0101 ..., N30 G50 S2500, N40 G96 S180 M03, N50 G00 X54. Z2. M08
+    for (int i = 0; i < 7; ++i) {
+      w.action(QStringLiteral("actionStep"))->trigger();
+      QTRY_COMPARE_WITH_TIMEOUT(run->state(), RunState::Paused, 20000);
+    }
+    QTRY_VERIFY(w.explainBar()->isVisible());
+    const int line = w.editor()->executingFileLine();
+    QCOMPARE(line, 13);
+    const core::machine::StateSnapshot& after = run->timeline()->snapshots[static_cast<std::size_t>(run->currentSnapshot())];
+    QCOMPARE(after.line, 13);
+    const core::gcode::Program one = core::gcode::parse("N50 G00 X54. Z2. M08", 13);
+    const QString expected = QString::fromStdString(
+        core::machine::explainBlock(one.blocks[0], after, core::gcode::Dialect::Fanuc, core::Lang::En, "N50 G00 X54. Z2. M08"));
+    QTRY_COMPARE(w.explainBar()->text(), expected);
+    QVERIFY(expected.startsWith(QStringLiteral("N50 G00 X54. Z2. M08: move at rapid speed")));
+    // N70 G01 F0.2, the face cut under G96, ends at the centre: the G50 limit holds the rpm.
+    for (int i = 0; i < 2; ++i) {
+      w.action(QStringLiteral("actionStep"))->trigger();
+      QTRY_COMPARE_WITH_TIMEOUT(run->state(), RunState::Paused, 20000);
+    }
+    QTRY_VERIFY(w.explainBar()->text().contains(QStringLiteral("(G96) the spindle turns 2500 rpm here")));
+    QVERIFY(w.explainBar()->text().startsWith(QStringLiteral("N70 G01 X-1.6 F0.2: cut in a straight line to \u00D8-1.6")));
+    QCOMPARE(w.explainBar()->explainLine(w.editor()->executingFileLine()), w.explainBar()->text());
+    // In Thai.
+    Language::instance()->setLanguage(QStringLiteral("th"));
+    QTRY_VERIFY(w.explainBar()->text().contains(QStringLiteral("เพลาหมุน")));
+    Language::instance()->setLanguage(QStringLiteral("en"));
+    w.action(QStringLiteral("actionStop"))->trigger();
+    QTRY_VERIFY(!w.explainBar()->isVisible());
   }
 
   void stepHighlightsTheExecutingBlock() {

@@ -1,0 +1,69 @@
+#include "gui/explain_bar.h"
+
+#include <QEvent>
+#include <QTextBlock>
+
+#include "gui/code_editor.h"
+#include "gui/language.h"
+#include "gui/run_controller.h"
+#include "klueng/core/gcode/parser.h"
+#include "klueng/core/machine/explain.h"
+
+namespace klueng::gui {
+
+ExplainBar::ExplainBar(RunController* runner, CodeEditor* editor, QWidget* parent)
+    : QLabel(parent), runner_(runner), editor_(editor) {
+  setObjectName(QStringLiteral("explainBar"));
+  setWordWrap(true);
+  setTextFormat(Qt::PlainText);
+  setTextInteractionFlags(Qt::TextSelectableByMouse);
+  setMargin(4);
+  setAutoFillBackground(true);
+  QPalette p = palette();
+  p.setColor(QPalette::Window, QColor(232, 244, 232));
+  p.setColor(QPalette::WindowText, QColor(20, 60, 20));
+  setPalette(p);
+  hide();
+  // Queued: the editor moves its arrow on the same signals first.
+  connect(runner_, &RunController::executingLineChanged, this, &ExplainBar::refresh, Qt::QueuedConnection);
+  connect(runner_, &RunController::stateChanged, this, &ExplainBar::refresh, Qt::QueuedConnection);
+}
+
+QString ExplainBar::explainLine(int fileLine) const {
+  const QTextBlock line = editor_->document()->findBlockByNumber(editor_->editorLineFromFileLine(fileLine));
+  if (!line.isValid()) return {};
+  const std::string text = line.text().toStdString();
+  const core::gcode::Program program = core::gcode::parse(text, fileLine);
+  if (program.blocks.empty()) return {};
+  const core::gcode::Block& block = program.blocks.front();
+  const core::Lang lang = Language::coreLang();
+  const core::gcode::Dialect dialect = editor_->dialect();
+  // The state it left the last time it ran (up to where the run stands).
+  if (const core::machine::Timeline* t = runner_->timeline()) {
+    for (int k = runner_->currentSnapshot(); k >= 0; --k) {
+      const core::machine::StateSnapshot& s = t->snapshots[static_cast<std::size_t>(k)];
+      if (s.file == 0 && s.line == fileLine)
+        return QString::fromStdString(core::machine::explainBlock(block, s, dialect, lang, text));
+    }
+  }
+  return QString::fromStdString(core::machine::explainWords(block, dialect, lang, text));
+}
+
+void ExplainBar::refresh() {
+  const RunState state = runner_->state();
+  const int line = editor_->executingFileLine();
+  if (state == RunState::Idle || state == RunState::Running || line <= 0) {
+    hide();
+    return;
+  }
+  const QString text = explainLine(line);
+  setText(text);
+  setVisible(!text.isEmpty());
+}
+
+void ExplainBar::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange && isVisible()) refresh();
+  QLabel::changeEvent(event);
+}
+
+}  // namespace klueng::gui
