@@ -230,7 +230,7 @@
     <message>
         <location filename="../src/gui/status_panel.cpp" line="81"/>
         <source>Spindle</source>
-        <translation>ความเร็วรอบ</translation>
+        <translation>รอบเพลา</translation>
     </message>
     <message>
         <location filename="../src/gui/status_panel.cpp" line="81"/>

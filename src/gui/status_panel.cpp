@@ -19,6 +19,9 @@ QString number(double v, int decimals = 3) { return QString::number(v, 'f', deci
 const char* const kThaiMonths[12] = {"มกราคม", "กุมภาพันธ์", "มีนาคม", "เมษายน", "พฤษภาคม", "มิถุนายน",
                                      "กรกฎาคม", "สิงหาคม", "กันยายน", "ตุลาคม", "พฤศจิกายน", "ธันวาคม"};
 
+const char* const kThaiShortMonths[12] = {"ม.ค.", "ก.พ.", "มี.ค.", "เม.ย.", "พ.ค.", "มิ.ย.",
+                                          "ก.ค.", "ส.ค.", "ก.ย.", "ต.ค.", "พ.ย.", "ธ.ค."};
+
 bool uiIsThai() { return Language::coreLang() == core::Lang::Th; }
 
 }  // namespace
@@ -28,7 +31,7 @@ bool uiIsThai() { return Language::coreLang() == core::Lang::Th; }
 StatusFields::StatusFields(QWidget* parent) : QWidget(parent) {
   auto* layout = new QHBoxLayout(this);
   layout->setContentsMargins(2, 0, 2, 0);
-  layout->setSpacing(4);
+  layout->setSpacing(3);
   for (int i = 0; i < kCount; ++i) {
     names_[i] = new QLabel(this);
     values_[i] = new QLabel(this);
@@ -38,13 +41,19 @@ StatusFields::StatusFields(QWidget* parent) : QWidget(parent) {
     values_[i]->setTextInteractionFlags(Qt::TextSelectableByMouse);
     layout->addWidget(names_[i]);
     layout->addWidget(values_[i]);
-    if (i + 1 < kCount) layout->addSpacing(6);
+    if (i + 1 < kCount) layout->addSpacing(4);
   }
   // Wide enough for "-9999.999" so the bar does not jump while the tool moves.
   const int wide = values_[0]->fontMetrics().horizontalAdvance(QStringLiteral("-9999.999")) + 8;
   for (Field f : {Field::ToolX, Field::ToolZ, Field::OffsetX, Field::OffsetZ}) values_[static_cast<int>(f)]->setMinimumWidth(wide);
   retranslate();
   setStatus(RunStatus{});
+}
+
+QString StatusFields::formatShortDate(const QDate& date, bool thai) {
+  if (thai)
+    return QStringLiteral("%1 %2 %3").arg(date.day()).arg(QString::fromUtf8(kThaiShortMonths[date.month() - 1])).arg(date.year() + 543);
+  return QLocale(QLocale::English, QLocale::UnitedStates).toString(date, QStringLiteral("MMM d, yyyy"));
 }
 
 QString StatusFields::formatDate(const QDate& date, bool thai) {
@@ -85,7 +94,9 @@ void StatusFields::setStatus(const RunStatus& s) {
                               : QStringLiteral("-"));
   set(Field::Time, s.cycleTime > 0.0 ? QStringLiteral("%1 / %2").arg(formatClock(s.time), formatClock(s.cycleTime))
                                      : QStringLiteral("-"));
-  set(Field::Date, formatDate(QDate::currentDate(), uiIsThai()));
+  // Short in the bar (a Thai status bar must fit 1366 pixels), in full on hover.
+  set(Field::Date, formatShortDate(QDate::currentDate(), uiIsThai()));
+  values_[static_cast<int>(Field::Date)]->setToolTip(formatDate(QDate::currentDate(), uiIsThai()));
 }
 
 void StatusFields::retranslate() {

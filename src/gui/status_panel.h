@@ -29,6 +29,8 @@ class StatusFields : public QWidget {
   QString fieldText(Field f) const;   // the value part, e.g. "45.000"
   // Today's date as shown ("22 พฤศจิกายน พ.ศ. 2569" / "November 22, 2026").
   static QString formatDate(const QDate& date, bool thai);
+  // The same, short, as the status bar shows it ("26 พ.ย. 2569" / "Nov 26, 2026").
+  static QString formatShortDate(const QDate& date, bool thai);
   // A machine time as a clock: "0:07.5", "12:34.0" (minutes:seconds).
   static QString formatClock(double seconds);
 

@@ -1,0 +1,39 @@
+// klueng_gui_step_shot PROGRAM STEPS OUT.png [en|th]: the real main window at
+// 1366 x 728 (a classroom screen less its taskbar), PROGRAM stepped STEPS blocks,
+// saved as a picture to look at (status bar, Explain bar, tool). Not a unit test.
+#include <QApplication>
+#include <QTest>
+#include <cstdio>
+#include <cstdlib>
+
+#include "gui/language.h"
+#include "gui/main_window.h"
+#include "gui/resources.h"
+#include "gui/run_controller.h"
+#include "gui/status_panel.h"
+
+using namespace klueng::gui;
+
+int main(int argc, char** argv) {
+  QApplication app(argc, argv);
+  initResources();
+  if (argc < 4) {
+    std::fprintf(stderr, "usage: %s PROGRAM STEPS OUT.png [en|th]\n", argv[0]);
+    return 2;
+  }
+  MainWindow w;
+  Language::instance()->setLanguage(QString::fromLatin1(argc > 4 ? argv[4] : "en"));
+  w.resize(1366, 728);
+  w.show();
+  (void)QTest::qWaitForWindowExposed(&w);
+  if (!w.openFile(QString::fromLocal8Bit(argv[1]))) return 1;
+  if (!QTest::qWaitFor([&w] { return !w.isBusy(); }, 60000)) return 1;
+  w.runController()->setSpeed(RunController::kAsFastAsPossible);
+  for (int i = 0; i < std::atoi(argv[2]); ++i) {
+    w.action(QStringLiteral("actionStep"))->trigger();
+    if (!QTest::qWaitFor([&w] { return w.runController()->state() == RunState::Paused || w.runController()->state() == RunState::Finished; }, 20000)) return 1;
+  }
+  QTest::qWait(300);
+  std::printf("status fields: %d px wanted, %d px shown\n", w.statusFields()->sizeHint().width(), w.statusFields()->width());
+  return w.grab().save(QString::fromLocal8Bit(argv[3])) ? 0 : 1;
+}
