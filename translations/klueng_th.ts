@@ -227,6 +227,26 @@
 <context>
     <name>klueng::gui::HelpContents</name>
     <message>
+        <source>Worked example</source>
+        <translation>ตัวอย่างโปรแกรม</translation>
+    </message>
+    <message>
+        <source>Worked examples</source>
+        <translation>ตัวอย่างโปรแกรมที่ใช้งานได้จริง</translation>
+    </message>
+    <message>
+        <source>Each program runs as it is on a bar of 50 x 100 mm with the shipped tools: copy it into the editor and press Go.</source>
+        <translation>ทุกโปรแกรมรันได้ทันทีกับชิ้นงานขนาด 50 x 100 มม. และมีดตัดที่ติดมากับโปรแกรม: คัดลอกไปวางในหน้าแก้ไขแล้วกด Go</translation>
+    </message>
+    <message>
+        <source>Search: G71, roughing, กลึงปอกหยาบ ...</source>
+        <translation>ค้นหา: G71, กลึงปอกหยาบ, roughing ...</translation>
+    </message>
+    <message>
+        <source>Nothing found</source>
+        <translation>ไม่พบรายการที่ค้นหา</translation>
+    </message>
+    <message>
         <location filename="../src/gui/help_contents.cpp" line="39" />
         <source>Klueng help: the G and M codes</source>
         <translation>ระบบช่วยเหลือของกลึง: รหัส G และรหัส M</translation>

@@ -294,6 +294,21 @@ QString CodeEditor::helpForPosition(int position) const {
   return QStringLiteral("<b>%1%2</b> — %3").arg(QString(letter), number.toHtmlEscaped(), what) + lastValue;
 }
 
+std::optional<std::pair<char, int>> CodeEditor::codeAtCursor() const {
+  const QTextCursor c = textCursor();
+  const QString text = c.block().text();
+  const int at = c.positionInBlock();
+  const std::u16string_view line(reinterpret_cast<const char16_t*>(text.utf16()), static_cast<std::size_t>(text.size()));
+  for (const core::gcode::DisplayToken& t : core::gcode::displayTokens(line)) {
+    if (t.kind != core::gcode::DisplayTokenKind::Address || (t.letter != 'G' && t.letter != 'M')) continue;
+    if (at < t.start || at > t.start + t.length) continue;
+    bool ok = false;
+    const int number = text.mid(t.start + 1, t.length - 1).toInt(&ok);
+    if (ok) return std::make_pair(t.letter, number);
+  }
+  return std::nullopt;
+}
+
 bool CodeEditor::viewportEvent(QEvent* event) {
   if (event->type() == QEvent::ToolTip) {
     auto* help = static_cast<QHelpEvent*>(event);

@@ -11,6 +11,8 @@
 #include <QList>
 #include <QPlainTextEdit>
 #include <functional>
+#include <optional>
+#include <utility>
 
 #include "klueng/core/diagnostic.h"
 #include "klueng/core/gcode/code_table.h"
@@ -56,6 +58,8 @@ class CodeEditor : public QPlainTextEdit {
 
   // Help text for the word at a position in the document (empty when none).
   QString helpForPosition(int position) const;
+  // The G or M code under (or just before) the text cursor: ('G', 71) on "G71".
+  std::optional<std::pair<char, int>> codeAtCursor() const;
 
   // Gutter helpers used by LineNumberArea.
   int gutterWidth() const;

@@ -2,11 +2,15 @@
 
 #include <QDialogButtonBox>
 #include <QEvent>
+#include <QSet>
+#include <QLineEdit>
+#include <QListWidget>
 #include <QPushButton>
 #include <QTextBrowser>
 #include <QVBoxLayout>
 
 #include "gui/language.h"
+#include "klueng/core/machine/help.h"
 
 namespace klueng::gui {
 
@@ -17,11 +21,26 @@ QString esc(std::string_view s) { return fromStd(s).toHtmlEscaped(); }
 
 HelpContents::HelpContents(QWidget* parent) : QDialog(parent) {
   setObjectName(QStringLiteral("helpContents"));
+  search_ = new QLineEdit(this);
+  search_->setObjectName(QStringLiteral("helpSearch"));
+  search_->setClearButtonEnabled(true);
+  hits_ = new QListWidget(this);
+  hits_->setObjectName(QStringLiteral("helpHits"));
+  hits_->setMaximumHeight(140);
+  hits_->hide();
+  connect(search_, &QLineEdit::textChanged, this, &HelpContents::search);
+  connect(search_, &QLineEdit::returnPressed, this, [this] {
+    if (hits_->count() > 0) showHit(hits_->item(0));
+  });
+  connect(hits_, &QListWidget::itemActivated, this, &HelpContents::showHit);
+  connect(hits_, &QListWidget::itemClicked, this, &HelpContents::showHit);
   browser_ = new QTextBrowser(this);
   browser_->setOpenLinks(true);
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
   connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::hide);
   auto* layout = new QVBoxLayout(this);
+  layout->addWidget(search_);
+  layout->addWidget(hits_);
   layout->addWidget(browser_);
   layout->addWidget(buttons);
   resize(820, 640);
@@ -31,6 +50,41 @@ HelpContents::HelpContents(QWidget* parent) : QDialog(parent) {
 void HelpContents::setDialect(core::gcode::Dialect dialect) {
   dialect_ = dialect;
   rebuild();
+}
+
+QString HelpContents::anchorOf(char letter, int number) {
+  return QStringLiteral("%1%2").arg(QLatin1Char(letter)).arg(number, 2, 10, QLatin1Char('0'));
+}
+
+void HelpContents::showCode(char letter, int number) {
+  show();
+  raise();
+  activateWindow();
+  if (number < 0) return;  // no code asked for: where the reader left off
+  browser_->scrollToAnchor(anchorOf(letter, number));
+  shownAnchor_ = anchorOf(letter, number);
+}
+
+void HelpContents::search(const QString& text) {
+  hits_->clear();
+  const std::vector<core::machine::HelpHit> hits = core::machine::searchHelp(text.toStdString(), dialect_);
+  const bool thai = Language::coreLang() == core::Lang::Th;
+  for (const core::machine::HelpHit& h : hits) {
+    const auto row = core::gcode::lookupCode(h.letter, h.number, dialect_);
+    if (!row) continue;
+    auto* item = new QListWidgetItem(QStringLiteral("%1 \u2014 %2").arg(anchorOf(h.letter, h.number), fromStd(thai ? row->nameTh : row->nameEn)));
+    item->setData(Qt::UserRole, anchorOf(h.letter, h.number));
+    hits_->addItem(item);
+  }
+  hits_->setVisible(!text.trimmed().isEmpty());
+  if (!text.trimmed().isEmpty() && hits.empty()) hits_->addItem(tr("Nothing found"));
+}
+
+void HelpContents::showHit(QListWidgetItem* item) {
+  const QString anchor = item ? item->data(Qt::UserRole).toString() : QString();
+  if (anchor.isEmpty()) return;
+  browser_->scrollToAnchor(anchor);
+  shownAnchor_ = anchor;
 }
 
 QString HelpContents::buildHtml(bool thai, core::gcode::Dialect dialect) {
@@ -49,6 +103,8 @@ QString HelpContents::buildHtml(bool thai, core::gcode::Dialect dialect) {
               .arg(tr("Dialect:"), dialect == core::gcode::Dialect::Fanuc ? tr("Fanuc 0i-TF")
                                   : dialect == core::gcode::Dialect::Haas ? tr("Haas ST (NGC)")
                                                                           : tr("Rook classic"));
+  QSet<QString> anchored;
+  QString examples;
   for (const char letter : {'G', 'M'}) {
     html += QStringLiteral("<h3><a name='%1'></a>%2</h3>")
                 .arg(QString(QLatin1Char(letter)), letter == 'G' ? tr("G codes (preparatory functions)")
@@ -66,10 +122,20 @@ QString HelpContents::buildHtml(bool thai, core::gcode::Dialect dialect) {
       const auto exOther = thai ? c.exampleEn : c.exampleTh;
       QString note;
       if (!known) note = QStringLiteral(" <i>(%1)</i>").arg(tr("not in this dialect"));
+      // The dialect's own row carries the anchor F1 and the search jump to, and its worked example.
+      QString anchor, exampleLink;
+      if (known && !anchored.contains(code)) {
+        anchored.insert(code);
+        anchor = QStringLiteral("<a name='%1'></a>").arg(code);
+        exampleLink = QStringLiteral("<br><a href='#ex-%1'>%2</a>").arg(code, tr("Worked example"));
+        examples += QStringLiteral("<h4><a name='ex-%1'></a>%1 \u2014 %2</h4><pre>%3</pre>")
+                        .arg(code, esc(name),
+                             QString::fromStdString(core::machine::workedExample(c.letter, c.number, dialect)).toHtmlEscaped());
+      }
       html += QStringLiteral(
-                  "<tr><td><b>%1</b></td><td>%2%3<br><span style='color:#666'>%4</span></td>"
-                  "<td><tt>%5</tt><br><span style='color:#666'>%6</span></td></tr>")
-                  .arg(code, esc(name), note, esc(other), esc(ex), esc(exOther));
+                  "<tr><td>%7<b>%1</b></td><td>%2%3<br><span style='color:#666'>%4</span></td>"
+                  "<td><tt>%5</tt><br><span style='color:#666'>%6</span>%8</td></tr>")
+                  .arg(code, esc(name), note, esc(other), esc(ex), esc(exOther), anchor, exampleLink);
     }
     html += QStringLiteral("</table>");
   }
@@ -79,13 +145,21 @@ QString HelpContents::buildHtml(bool thai, core::gcode::Dialect dialect) {
                       "step, Stop resets. F9 sets a breakpoint on the cursor's line; Run to cursor stops "
                       "at the cursor's block. Every error is underlined in the editor and listed below it; "
                       "click one to jump to it."));
+  html += QStringLiteral("<h3><a name='examples'></a>%1</h3><p>%2</p>")
+              .arg(tr("Worked examples"),
+                   tr("Each program runs as it is on a bar of 50 x 100 mm with the shipped tools: copy it into "
+                      "the editor and press Go."));
+  html += examples;
   html += QStringLiteral("</body></html>");
   return html;
 }
 
 void HelpContents::rebuild() {
   setWindowTitle(tr("Help Contents"));
+  search_->setPlaceholderText(tr("Search: G71, roughing, กลึงปอกหยาบ ..."));
   browser_->setHtml(buildHtml(Language::coreLang() == core::Lang::Th, dialect_));
+  if (!search_->text().isEmpty()) search(search_->text());
+  if (!shownAnchor_.isEmpty()) browser_->scrollToAnchor(shownAnchor_);
 }
 
 void HelpContents::changeEvent(QEvent* event) {

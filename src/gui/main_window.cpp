@@ -582,13 +582,10 @@ void MainWindow::pushSetupChange(const QString& text, const QString& dir, const 
 }
 
 void MainWindow::showHelpContents() {
-  if (!help_) {
-    help_ = new HelpContents(this);
-    help_->setDialect(dialect_);
-  }
-  help_->show();
-  help_->raise();
-  help_->activateWindow();
+  if (!help_) help_ = new HelpContents(this);
+  help_->setDialect(dialect_);
+  const std::optional<std::pair<char, int>> code = editor_->codeAtCursor();  // F1 on G71 opens G71
+  help_->showCode(code ? code->first : 'G', code ? code->second : -1);
 }
 
 void MainWindow::showAbout() {

@@ -14,6 +14,9 @@
 #include <QSplitter>
 #include <QTemporaryDir>
 #include <QTextBrowser>
+#include <QScrollBar>
+#include <QListWidget>
+#include <QLineEdit>
 #include <QTest>
 #include <QTextBlock>
 #include <QTimer>
@@ -438,6 +441,35 @@ class MainWindowTest : public QObject {
     QVERIFY(again.action(QStringLiteral("actionDialectClassic"))->isChecked());
     QVERIFY(again.action(QStringLiteral("actionOptionalStop"))->isChecked());
     QVERIFY(again.runController()->optionalStop());
+  }
+
+  // Issue 11: F1 on a code opens its entry; the search finds G71 in English and Thai words.
+  void helpOpensAtTheCodeUnderTheCursorAndSearches() {
+    MainWindow w;
+    w.show();
+    QVERIFY(waitIdle(w));
+    w.editor()->setPlainText(QStringLiteral("G00 X52. Z5.\nG76 P020060 Q50 R0.05\n"));
+    QTextCursor c(w.editor()->document()->findBlockByNumber(1));
+    c.setPosition(c.position() + 2);  // inside "G76"
+    w.editor()->setTextCursor(c);
+    w.editor()->setFocus();
+    QTest::keyClick(w.editor(), Qt::Key_F1);
+    auto* help = w.findChild<HelpContents*>();
+    QTRY_VERIFY(help && help->isVisible());
+    QCOMPARE(help->shownAnchor(), QStringLiteral("G76"));
+    QVERIFY(help->browser()->verticalScrollBar()->value() > 0);
+    // Its worked example is on the page, as a whole program.
+    QVERIFY(help->browser()->toPlainText().contains(QStringLiteral("G76 X46.16 Z-25. P920 Q300 F1.5")));
+    for (const QString& query : {QStringLiteral("roughing"), QStringLiteral("กลึงปอกหยาบ")}) {
+      help->searchField()->setText(query);
+      QVERIFY(help->hits()->isVisible());
+      bool found = false;
+      for (int i = 0; i < help->hits()->count(); ++i) found |= help->hits()->item(i)->data(Qt::UserRole).toString() == QStringLiteral("G71");
+      QVERIFY2(found, qPrintable(query));
+    }
+    help->searchField()->setText(QStringLiteral("g71"));
+    QTest::keyClick(help->searchField(), Qt::Key_Return);
+    QCOMPARE(help->shownAnchor(), QStringLiteral("G71"));
   }
 
   void helpContentsListsEveryCodeInBothLanguages() {
