@@ -6,7 +6,10 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "gui/help_contents.h"
 #include "gui/language.h"
+
+#include <QLineEdit>
 #include "gui/main_window.h"
 #include "gui/resources.h"
 #include "gui/run_controller.h"
@@ -28,6 +31,16 @@ int main(int argc, char** argv) {
   (void)QTest::qWaitForWindowExposed(&w);
   if (!w.openFile(QString::fromLocal8Bit(argv[1]))) return 1;
   if (!QTest::qWaitFor([&w] { return !w.isBusy(); }, 60000)) return 1;
+  // "help:roughing": the help window searched for a word instead.
+  if (QString::fromLocal8Bit(argv[2]).startsWith(QStringLiteral("help:"))) {
+    w.action(QStringLiteral("actionContents"))->trigger();
+    auto* help = w.findChild<HelpContents*>();
+    if (!help) return 1;
+    help->searchField()->setText(QString::fromLocal8Bit(argv[2]).mid(5));
+    QTest::keyClick(help->searchField(), Qt::Key_Return);
+    QTest::qWait(300);
+    return help->grab().save(QString::fromLocal8Bit(argv[3])) ? 0 : 1;
+  }
   w.runController()->setSpeed(RunController::kAsFastAsPossible);
   for (int i = 0; i < std::atoi(argv[2]); ++i) {
     w.action(QStringLiteral("actionStep"))->trigger();
