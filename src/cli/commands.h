@@ -9,5 +9,7 @@ namespace klueng::cli {
 int runCheck(const std::vector<std::string>& args);
 // klueng-cli simulate FILE [--trace out.csv] [--cycle-time] [--config DIR] [--lang en|th] ...
 int runSimulate(const std::vector<std::string>& args);
+// klueng-cli class DIR --reference REF.nc [--tolerance 0.05] [--csv OUT.csv] ...
+int runClass(const std::vector<std::string>& args);
 
 }  // namespace klueng::cli

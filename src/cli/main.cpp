@@ -15,6 +15,8 @@ void printUsage(std::FILE* out) {
       "       klueng-cli simulate FILE [--trace out.csv] [--cycle-time] [--config DIR]\n"
       "                               [--lang en|th] [--dialect fanuc|haas|classic]\n"
       "                               [--stock DxL[xBORE][in]] [--units mm|inch] [--tool N=ID]...\n"
+      "       klueng-cli class DIR --reference REF.nc [--tolerance 0.05] [--csv OUT.csv]\n"
+      "                               [--dialect fanuc|haas|classic] [--config DIR]\n"
       "  --dialect  fanuc (Fanuc 0i-TF, default), haas (Haas ST lathe), classic (1999 rules)\n"
       "  --stock  50x100 (mm), 2.1x4in, 118x80x90 (tube: bore 90); without it the file's\n"
       "           header, else the stock inferred from the program (a note says which)\n"
@@ -36,6 +38,7 @@ int main(int argc, char** argv) {
   const std::vector<std::string> args(argv + 2, argv + argc);
   if (command == "check") return klueng::cli::runCheck(args);
   if (command == "simulate") return klueng::cli::runSimulate(args);
+  if (command == "class") return klueng::cli::runClass(args);
   if (command == "--help" || command == "-h" || command == "help") {
     printUsage(stdout);
     return 0;

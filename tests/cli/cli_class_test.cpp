@@ -1,0 +1,115 @@
+// klueng-cli class (issue 11): a class of 30 variants of sample 01 graded
+// against sample 01 — exact copies, parts within and beyond the tolerance,
+// grammar errors, a run-time alarm, a binary and an empty file.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+int run(const std::string& args, std::string* err = nullptr) {
+  const std::string command = "env LC_ALL= LC_MESSAGES= LANG=C '" + std::string(KLUENG_CLI_PATH) + "' class " + args +
+                              " --config '" + KLUENG_SOURCE_DIR + "' 2>&1 >/dev/null";
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (!pipe) return -1;
+  char buf[4096];
+  std::string out;
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) out.append(buf, n);
+  if (err) *err = out;
+  const int status = ::pclose(pipe);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST(CliClass, ThirtyStudentsGetTheRightPassOrFail) {
+  const fs::path dir = fs::temp_directory_path() / "klueng_cli_class_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "class");
+  const std::string reference = slurp(fs::path(KLUENG_SAMPLES_DIR) / "01-step-shaft.txt");
+  ASSERT_FALSE(reference.empty());
+  std::map<std::string, std::string> expected;  // file -> pass / fail
+  auto student = [&](const std::string& name, const std::string& text, const char* result) {
+    std::ofstream(dir / "class" / name, std::ios::binary) << text;
+    expected[name] = result;
+  };
+  for (int i = 1; i <= 9; ++i) student("copy" + std::to_string(i) + ".txt", reference, "pass");
+  // Within 0.05 mm: a shoulder 0.02 further along Z, a finishing diameter 0.02 over.
+  for (int i = 1; i <= 3; ++i) student("close" + std::to_string(i) + ".nc", replaced(reference, "N420 Z-60.", "N420 Z-60.02"), "pass");
+  for (int i = 1; i <= 3; ++i) student("over" + std::to_string(i) + ".nc", replaced(reference, "N420 Z-60.", "N420 X46.02 Z-60."), "pass");
+  // Beyond it: Ø46 left 0.3 big, Ø40 cut 0.2 small, a shoulder 0.3 too deep.
+  for (int i = 1; i <= 3; ++i) student("big" + std::to_string(i) + ".nc", replaced(reference, "N410 X46. Z-41.\nN420 Z-60.", "N410 X46.3 Z-41.\nN420 Z-60."), "fail");
+  for (int i = 1; i <= 3; ++i) student("taper" + std::to_string(i) + ".nc", replaced(reference, "N390 G01 Z-40.", "N390 G01 X39.8 Z-40."), "fail");
+  student("deep.nc", replaced(reference, "N360 Z-20.", "N360 Z-20.3"), "fail");
+  student("deeper-a-bit.nc", replaced(reference, "N360 Z-20.", "N360 Z-20.1"), "fail");
+  student("deep-within.nc", replaced(reference, "N360 Z-20.", "N360 Z-20.02"), "pass");
+  // Programs that do not run to their end.
+  student("typo1.nc", replaced(reference, "N100 G01 Z-59.8", "N100 G01 Y-59.8"), "fail");
+  student("typo2.nc", replaced(reference, "N140 G01 Z-39.8", "N140 G01 Z-39.8 Z-39.8"), "fail");
+  student("unknown-code.nc", replaced(reference, "N15 G99", "N15 G99 G07"), "fail");
+  student("nospindle.nc", replaced(reference, "N40 G96 S180 M03", "N40 G96 S180"), "fail");
+  student("binary.nc", std::string("\x7f" "ELF\x02\x01\x01\x00\x00\x00", 10), "fail");
+  student("empty.nc", "", "fail");
+  ASSERT_EQ(expected.size(), 30u);
+
+  const fs::path csvPath = dir / "grades.csv";
+  std::string err;
+  ASSERT_EQ(run("'" + (dir / "class").string() + "' --reference '" + KLUENG_SAMPLES_DIR + "/01-step-shaft.txt' --tolerance 0.05 --csv '" +
+                    csvPath.string() + "'", &err), 0) << err;
+  EXPECT_NE(err.find("[30/30]"), std::string::npos) << err;
+  EXPECT_NE(err.find("30 programs: 16 pass, 14 fail"), std::string::npos) << err;
+
+  std::istringstream csv(slurp(csvPath));
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line, "file,result,errors,first_error,alarm,cycle_time_s,leftover_mm,leftover_z,gouge_mm,gouge_z");
+  int rows = 0;
+  while (std::getline(csv, line)) {
+    ++rows;
+    const std::string name = line.substr(0, line.find(','));
+    ASSERT_TRUE(expected.count(name)) << line;
+    const std::string result = line.substr(name.size() + 1, 4);
+    EXPECT_EQ(result, expected[name]) << line;
+    if (name == "nospindle.nc") {
+      EXPECT_NE(line.find("A104 line 15"), std::string::npos) << line;
+    }
+    if (name == "typo1.nc") {
+      EXPECT_NE(line.find(",1,E"), std::string::npos) << line;
+    }
+    if (name == "deep.nc") {
+      EXPECT_NE(line.find(",6.7"), std::string::npos) << line;  // the Ø30->Ø36 step, cut 0.3 deeper
+    }
+    if (name.starts_with("copy")) {
+      EXPECT_NE(line.find(",77.8,0.000,0.00,0.000,0.00"), std::string::npos) << line;
+    }
+  }
+  EXPECT_EQ(rows, 30);
+}
+
+TEST(CliClass, ABadReferenceOrBadOptionsExitTwo) {
+  EXPECT_EQ(run("/tmp --reference /no/such/file.nc"), 2);
+  EXPECT_EQ(run("--reference x.nc"), 2);
+  EXPECT_EQ(run("/tmp --reference x.nc --tolerance -1"), 2);
+}
+
+}  // namespace
