@@ -15,18 +15,13 @@
 
 #include "cli_common.h"
 #include "commands.h"
-#include "klueng/core/cut/cut_simulator.h"
-#include "klueng/core/cut/part_compare.h"
+#include "klueng/core/cut/class_grading.h"
 #include "klueng/core/io/program_file.h"
-#include "klueng/core/io/tool_library.h"
-#include "klueng/core/machine/interpreter.h"
-#include "klueng/core/machine/job_file.h"
 
 namespace klueng::cli {
 
 namespace {
 
-namespace fs = std::filesystem;
 using namespace klueng::core;
 
 constexpr const char* kClassUsage =
@@ -41,81 +36,6 @@ struct ClassOptions {
   gcode::Dialect dialect = gcode::Dialect::Fanuc;
   Lang lang = langFromLocale();
 };
-
-struct Graded {
-  std::optional<cut::Stock> part;  // the finished part (none when it did not run to the end)
-  int errors = 0;
-  std::string firstError;          // code, line
-  std::string alarm;               // code, line
-  double cycleTime = 0.0;
-};
-
-struct Row {
-  std::string file;
-  Graded graded;
-  cut::PartDeviation deviation;
-  bool cut = false;  // it ran to its end and was compared
-  bool pass = false;
-};
-
-std::string place(const Diagnostic& d) { return d.code + " line " + std::to_string(d.range.line); }
-
-Graded grade(const std::string& path, const LoadedConfig& config, const machine::JobFileRequest& request) {
-  Graded g;
-  const machine::JobFile job = machine::loadJobFile(path, config.setup, request, io::shippedToolLibrary());
-  for (const Diagnostic& d : job.diagnostics)
-    if (isError(d.severity)) {
-      if (g.errors++ == 0) g.firstError = place(d);
-    }
-  if (job.unreadable || !job.file || !job.program || job.hasErrors()) {
-    if (g.errors == 0) g.errors = 1, g.firstError = "unreadable";
-    return g;
-  }
-  const machine::Timeline timeline = machine::interpret(*job.program, job.setup, request.run);
-  g.cycleTime = timeline.cycleTime();
-  if (timeline.alarm) {
-    g.alarm = place(*timeline.alarm);
-    return g;
-  }
-  cut::CutOptions options;
-  options.checkpointBudgetBytes = 0;  // one run forward
-  cut::CutSimulator sim(timeline, cut::CutSetup::from(job.file->header, job.setup), options);
-  sim.runToEnd();
-  if (sim.alarm()) {
-    g.alarm = place(*sim.alarm());
-    return g;
-  }
-  g.part = sim.stock();
-  return g;
-}
-
-std::string csvField(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string out = "\"";
-  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
-
-std::string number(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
-}
-
-std::string csv(const std::vector<Row>& rows) {
-  std::string out = "file,result,errors,first_error,alarm,cycle_time_s,leftover_mm,leftover_z,gouge_mm,gouge_z\n";
-  for (const Row& r : rows) {
-    const bool cut = r.cut;
-    out += csvField(r.file) + "," + (r.pass ? "pass" : "fail") + "," + std::to_string(r.graded.errors) + "," +
-           csvField(r.graded.firstError) + "," + csvField(r.graded.alarm) + "," +
-           (r.graded.errors == 0 ? number(r.graded.cycleTime, 1) : "") + "," +
-           (cut ? number(r.deviation.leftover, 3) + "," + number(r.deviation.leftoverZ, 2) + "," +
-                      number(r.deviation.gouge, 3) + "," + number(r.deviation.gougeZ, 2)
-                : ",,,") +
-           "\n";
-  }
-  return out;
-}
 
 std::optional<ClassOptions> parse(const std::vector<std::string>& args) {
   ClassOptions o;
@@ -169,44 +89,22 @@ int runClass(const std::vector<std::string>& args) {
     std::fprintf(stderr, "klueng-cli class: %s\n", error.c_str());
     return 2;
   }
-  const Graded reference = grade(o.reference, config, *request);
+  const cut::GradedProgram reference = cut::gradeProgram(o.reference, config.setup, *request);
   if (!reference.part) {
     std::fprintf(stderr, "klueng-cli class: the reference %s does not run to its end (%s%s)\n", o.reference.c_str(),
                  reference.firstError.c_str(), reference.alarm.c_str());
     return 2;
   }
   std::error_code ec;
-  std::vector<fs::path> files;
-  for (const fs::directory_entry& e : fs::directory_iterator(o.dir, ec))
-    if (e.is_regular_file(ec) && !fs::equivalent(e.path(), o.reference, ec)) files.push_back(e.path());
-  if (ec && files.empty()) {
-    std::fprintf(stderr, "klueng-cli class: cannot read the folder %s: %s\n", o.dir.c_str(), ec.message().c_str());
+  if (!std::filesystem::is_directory(o.dir, ec)) {
+    std::fprintf(stderr, "klueng-cli class: %s is not a folder\n", o.dir.c_str());
     return 2;
   }
-  std::sort(files.begin(), files.end());
-  std::vector<Row> rows;
-  int passed = 0;
-  for (std::size_t i = 0; i < files.size(); ++i) {
-    Row row;
-    row.file = files[i].filename().string();
-    std::fprintf(stderr, "[%zu/%zu] %s\n", i + 1, files.size(), row.file.c_str());
-    try {
-      row.graded = grade(files[i].string(), config, *request);
-    } catch (const std::exception& ex) {  // one file must never end the batch
-      row.graded = Graded{};
-      row.graded.errors = 1;
-      row.graded.firstError = std::string("internal error: ") + ex.what();
-    }
-    if (row.graded.part) {
-      row.cut = true;
-      row.deviation = cut::compareParts(*row.graded.part, *reference.part, o.tolerance);
-      row.pass = row.deviation.leftover <= o.tolerance + 1e-9 && row.deviation.gouge <= o.tolerance + 1e-9;
-    }
-    passed += row.pass ? 1 : 0;
-    row.graded.part.reset();  // thirty parts need not stay in memory
-    rows.push_back(std::move(row));
-  }
-  const std::string table = csv(rows);
+  const std::vector<cut::ClassRow> rows = cut::gradeClass(
+      o.dir, o.reference, *reference.part, config.setup, *request, o.tolerance,
+      [](int i, int n, const std::string& name) { std::fprintf(stderr, "[%d/%d] %s\n", i + 1, n, name.c_str()); });
+  const int passed = static_cast<int>(std::count_if(rows.begin(), rows.end(), [](const cut::ClassRow& r) { return r.pass; }));
+  const std::string table = cut::classCsv(rows);
   if (o.csv.empty()) {
     std::fputs(table.c_str(), stdout);
   } else if (!io::writeTextFileAtomic(o.csv, table, &error)) {

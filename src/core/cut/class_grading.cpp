@@ -1,0 +1,111 @@
+#include "klueng/core/cut/class_grading.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+
+#include "klueng/core/cut/cut_simulator.h"
+#include "klueng/core/io/tool_library.h"
+#include "klueng/core/machine/interpreter.h"
+
+namespace klueng::core::cut {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string place(const Diagnostic& d) { return d.code + " line " + std::to_string(d.range.line); }
+
+std::string csvField(const std::string& s) {
+  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+  std::string out = "\"";
+  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+std::string number(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+}  // namespace
+
+GradedProgram gradeProgram(const std::string& path, const machine::MachineSetup& setup,
+                           const machine::JobFileRequest& request) {
+  GradedProgram g;
+  try {
+    const machine::JobFile job = machine::loadJobFile(path, setup, request, io::shippedToolLibrary());
+    for (const Diagnostic& d : job.diagnostics)
+      if (isError(d.severity) && g.errors++ == 0) g.firstError = place(d);
+    if (job.unreadable || !job.file || !job.program || job.hasErrors()) {
+      if (g.errors == 0) g.errors = 1, g.firstError = "unreadable";
+      return g;
+    }
+    const machine::Timeline timeline = machine::interpret(*job.program, job.setup, request.run);
+    g.cycleTime = timeline.cycleTime();
+    if (timeline.alarm) {
+      g.alarm = place(*timeline.alarm);
+      return g;
+    }
+    CutOptions options;
+    options.checkpointBudgetBytes = 0;  // one run forward
+    CutSimulator sim(timeline, CutSetup::from(job.file->header, job.setup), options);
+    sim.runToEnd();
+    if (sim.alarm()) {
+      g.alarm = place(*sim.alarm());
+      return g;
+    }
+    g.part = sim.stock();
+  } catch (const std::exception& ex) {  // one file must never end the batch
+    g = GradedProgram{};
+    g.errors = 1;
+    g.firstError = std::string("internal error: ") + ex.what();
+  }
+  return g;
+}
+
+std::vector<ClassRow> gradeClass(const std::string& folder, const std::string& referencePath, const Stock& reference,
+                                 const machine::MachineSetup& setup, const machine::JobFileRequest& request,
+                                 double tolerance, const std::function<void(int, int, const std::string&)>& progress) {
+  std::error_code ec;
+  std::vector<fs::path> files;
+  for (const fs::directory_entry& e : fs::directory_iterator(folder, ec)) {
+    std::error_code same;
+    if (e.is_regular_file(ec) && !fs::equivalent(e.path(), referencePath, same)) files.push_back(e.path());
+  }
+  std::sort(files.begin(), files.end());
+  std::vector<ClassRow> rows;
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    ClassRow row;
+    row.file = files[i].filename().string();
+    row.path = files[i].string();
+    if (progress) progress(static_cast<int>(i), static_cast<int>(files.size()), row.file);
+    row.graded = gradeProgram(row.path, setup, request);
+    if (row.graded.part) {
+      row.compared = true;
+      row.deviation = compareParts(*row.graded.part, reference, tolerance);
+      row.pass = row.deviation.leftover <= tolerance + 1e-9 && row.deviation.gouge <= tolerance + 1e-9;
+      row.graded.part.reset();  // thirty parts need not stay in memory
+    }
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+std::string classCsv(const std::vector<ClassRow>& rows) {
+  std::string out = "file,result,errors,first_error,alarm,cycle_time_s,leftover_mm,leftover_z,gouge_mm,gouge_z\n";
+  for (const ClassRow& r : rows) {
+    out += csvField(r.file) + "," + (r.pass ? "pass" : "fail") + "," + std::to_string(r.graded.errors) + "," +
+           csvField(r.graded.firstError) + "," + csvField(r.graded.alarm) + "," +
+           (r.graded.errors == 0 ? number(r.graded.cycleTime, 1) : "") + "," +
+           (r.compared ? number(r.deviation.leftover, 3) + "," + number(r.deviation.leftoverZ, 2) + "," +
+                             number(r.deviation.gouge, 3) + "," + number(r.deviation.gougeZ, 2)
+                       : ",,,") +
+           "\n";
+  }
+  return out;
+}
+
+}  // namespace klueng::core::cut
