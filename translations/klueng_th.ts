@@ -965,6 +965,14 @@
         <translation>ดูตัวอย่างเอกสารชุดรหัสสั่งการทำงานและเอกสารแสดงภาพชิ้นงาน</translation>
     </message>
     <message>
+        <source>&amp;Grade a class...</source>
+        <translation>ตรวจงานทั้งชั้นเรียน... (&amp;G)</translation>
+    </message>
+    <message>
+        <source>Grade every program in a folder against a reference program</source>
+        <translation>ตรวจทุกโปรแกรมในโฟลเดอร์เทียบกับโปรแกรมต้นแบบ</translation>
+    </message>
+    <message>
         <location filename="../src/gui/main_window.cpp" line="0" />
         <source>&amp;Export PDF...</source>
         <translation>ส่งออกเป็น PDF... (&amp;E)</translation>
@@ -1292,6 +1300,109 @@
     <message numerus="yes">
         <source>%n more after this one.</source>
         <translation><numerusform>ยังมีอีก %n รายการ</numerusform></translation>
+    </message>
+</context>
+<context>
+    <name>klueng::gui::ClassGradeDialog</name>
+    <message>
+        <source>Browse...</source>
+        <translation>เลือก...</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> มม.</translation>
+    </message>
+    <message>
+        <source>Grade</source>
+        <translation>ตรวจงาน</translation>
+    </message>
+    <message>
+        <source>Save CSV...</source>
+        <translation>บันทึก CSV...</translation>
+    </message>
+    <message>
+        <source>Students' programs (folder):</source>
+        <translation>โปรแกรมของนักเรียน (โฟลเดอร์):</translation>
+    </message>
+    <message>
+        <source>Reference program:</source>
+        <translation>โปรแกรมต้นแบบ:</translation>
+    </message>
+    <message>
+        <source>Tolerance on the diameter:</source>
+        <translation>พิกัดความเผื่อของเส้นผ่าศูนย์กลาง:</translation>
+    </message>
+    <message>
+        <source>Students' programs</source>
+        <translation>โปรแกรมของนักเรียน</translation>
+    </message>
+    <message>
+        <source>Reference program</source>
+        <translation>โปรแกรมต้นแบบ</translation>
+    </message>
+    <message>
+        <source>Save the grades</source>
+        <translation>บันทึกผลการตรวจ</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>ไฟล์ CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; could not be written.</source>
+        <translation>เขียนไฟล์ &quot;%1&quot; ไม่ได้</translation>
+    </message>
+    <message>
+        <source>Grade a class</source>
+        <translation>ตรวจงานทั้งชั้นเรียน</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>โปรแกรม</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>ผล</translation>
+    </message>
+    <message>
+        <source>Errors</source>
+        <translation>ข้อผิดพลาด</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>สัญญาณเตือน</translation>
+    </message>
+    <message>
+        <source>Cycle time (s)</source>
+        <translation>เวลาทำงาน (วินาที)</translation>
+    </message>
+    <message>
+        <source>Leftover (mm)</source>
+        <translation>เนื้อเหลือ (มม.)</translation>
+    </message>
+    <message>
+        <source>Gouge (mm)</source>
+        <translation>กินเนื้อเกิน (มม.)</translation>
+    </message>
+    <message>
+        <source>Grading...</source>
+        <translation>กำลังตรวจ...</translation>
+    </message>
+    <message>
+        <source>pass</source>
+        <translation>ผ่าน</translation>
+    </message>
+    <message>
+        <source>fail</source>
+        <translation>ไม่ผ่าน</translation>
+    </message>
+    <message>
+        <source>No programs graded: is the reference a program that runs to its end?</source>
+        <translation>ไม่มีโปรแกรมที่ตรวจได้: โปรแกรมต้นแบบรันได้จนจบหรือไม่?</translation>
+    </message>
+    <message>
+        <source>%1 programs: %2 pass, %3 fail</source>
+        <translation>%1 โปรแกรม: ผ่าน %2 ไม่ผ่าน %3</translation>
     </message>
 </context>
 </TS>

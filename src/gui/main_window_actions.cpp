@@ -8,7 +8,9 @@
 #include <QUndoStack>
 
 #include "gui/action_table.h"
+#include "gui/class_grade_dialog.h"
 #include "gui/code_editor.h"
+#include "gui/document.h"
 #include "gui/diagnostics_panel.h"
 #include "gui/document_manager.h"
 #include "gui/flow_panel.h"
@@ -70,6 +72,12 @@ void MainWindow::createActions() {
   on("actionPrintDrawing", [this] { printDrawing(); });
   on("actionPrintPreview", [this] { printPreview(); });
   on("actionExportPdf", [this] { exportPdf(); });
+  on("actionGradeClass", [this] {
+    auto* dialog = new ClassGradeDialog(setup_, dialect_, document_->filePath(), this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &ClassGradeDialog::openProgram, this, [this](const QString& path) { openFile(path); });
+    dialog->show();
+  });
   on("actionExit", [this] { close(); });
 
   // Edit: the editor's own commands; the editor enables them.

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "gui/class_grade_dialog.h"
 #include "gui/help_contents.h"
 #include "gui/language.h"
 
@@ -40,6 +41,17 @@ int main(int argc, char** argv) {
     QTest::keyClick(help->searchField(), Qt::Key_Return);
     QTest::qWait(300);
     return help->grab().save(QString::fromLocal8Bit(argv[3])) ? 0 : 1;
+  }
+  // "class:DIR": File > Grade a class on DIR against PROGRAM.
+  if (QString::fromLocal8Bit(argv[2]).startsWith(QStringLiteral("class:"))) {
+    w.action(QStringLiteral("actionGradeClass"))->trigger();
+    auto* dialog = w.findChild<ClassGradeDialog*>();
+    if (!dialog) return 1;
+    dialog->setFolder(QString::fromLocal8Bit(argv[2]).mid(6));
+    dialog->grade();
+    if (!QTest::qWaitFor([dialog] { return !dialog->isGrading(); }, 60000)) return 1;
+    QTest::qWait(300);
+    return dialog->grab().save(QString::fromLocal8Bit(argv[3])) ? 0 : 1;
   }
   w.runController()->setSpeed(RunController::kAsFastAsPossible);
   for (int i = 0; i < std::atoi(argv[2]); ++i) {

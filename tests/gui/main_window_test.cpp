@@ -30,6 +30,9 @@
 #include "gui/language.h"
 #include "gui/main_window.h"
 #include "gui/status_panel.h"
+#include "gui/class_grade_dialog.h"
+#include <QTableWidget>
+#include <QTemporaryDir>
 #include "gui/explain_bar.h"
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/machine/explain.h"
@@ -470,6 +473,51 @@ class MainWindowTest : public QObject {
     help->searchField()->setText(QStringLiteral("g71"));
     QTest::keyClick(help->searchField(), Qt::Key_Return);
     QCOMPARE(help->shownAnchor(), QStringLiteral("G71"));
+  }
+
+  // Issue 11: File > Grade a class grades a folder against a reference; a double-click opens a student's program.
+  void gradeAClassAndOpenAStudentsProgram() {
+    QTemporaryDir dir;
+    QFile ref(sample("01-step-shaft.txt"));
+    QVERIFY(ref.open(QIODevice::ReadOnly));
+    const QByteArray reference = ref.readAll();
+    QDir(dir.path()).mkdir(QStringLiteral("class"));
+    auto write = [&](const QString& name, const QByteArray& text) {
+      QFile f(dir.path() + QStringLiteral("/class/") + name);
+      QVERIFY(f.open(QIODevice::WriteOnly));
+      f.write(text);
+    };
+    write(QStringLiteral("anna.nc"), reference);
+    write(QStringLiteral("boon.nc"), QByteArray(reference).replace("N390 G01 Z-40.", "N390 G01 X39.8 Z-40."));
+    write(QStringLiteral("chai.nc"), QByteArray(reference).replace("N100 G01 Z-59.8", "N100 G01 Y-59.8"));
+    MainWindow w;
+    w.show();
+    QVERIFY(w.openFile(sample("01-step-shaft.txt")));
+    QVERIFY(waitIdle(w));
+    w.action(QStringLiteral("actionGradeClass"))->trigger();
+    auto* dialog = w.findChild<ClassGradeDialog*>();
+    QVERIFY(dialog && dialog->isVisible());
+    dialog->setFolder(dir.path() + QStringLiteral("/class"));
+    QSignalSpy done(dialog, &ClassGradeDialog::finished);
+    dialog->grade();
+    QTRY_COMPARE_WITH_TIMEOUT(done.count(), 1, 30000);
+    QTableWidget* table = dialog->table();
+    QCOMPARE(table->rowCount(), 3);
+    QCOMPARE(table->item(0, 0)->text(), QStringLiteral("anna.nc"));
+    QCOMPARE(table->item(0, 1)->text(), QStringLiteral("pass"));
+    QCOMPARE(table->item(1, 1)->text(), QStringLiteral("fail"));
+    QVERIFY(table->item(1, 6)->text().startsWith(QStringLiteral("0.191")));
+    QCOMPARE(table->item(2, 1)->text(), QStringLiteral("fail"));
+    QVERIFY(table->item(2, 2)->text().contains(QStringLiteral("E201")));
+    const QString csv = dir.path() + QStringLiteral("/grades.csv");
+    QVERIFY(dialog->saveCsv(csv));
+    QFile saved(csv);
+    QVERIFY(saved.open(QIODevice::ReadOnly));
+    QCOMPARE(saved.readAll().count('\n'), 4);
+    QSignalSpy loaded(&w, &MainWindow::fileLoaded);
+    emit table->cellDoubleClicked(1, 0);
+    QTRY_COMPARE_WITH_TIMEOUT(loaded.count(), 1, 20000);
+    QVERIFY(w.windowTitle().contains(QStringLiteral("boon.nc")));
   }
 
   void helpContentsListsEveryCodeInBothLanguages() {
