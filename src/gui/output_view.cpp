@@ -93,6 +93,9 @@ QRectF OutputView::contentRect() const {
 QRectF OutputView::fitRect() const {
   QRectF r = stock_->boundingRect().united(chuck_->boundingRect());
   if (!cutBounds_.isNull()) r = r.united(cutBounds_);
+  // The tool where it is parked before the run (issue 11: never out of sight at
+  // the start), with room for its holder above and right of the tip.
+  if (!toolStart_.isNull()) r = r.united(QRectF(toolStart_.x() - 5.0, toolStart_.y() - 45.0, 45.0, 50.0));
   const double room = std::clamp(0.35 * std::max(r.width(), r.height()), 20.0, 80.0);
   return r.adjusted(0, -room, room, room);
 }
@@ -130,6 +133,7 @@ void OutputView::rebuild() {
       }
   }
   lastToolPos_ = render::toScene(core::zx(machineCfg.startZ, machineCfg.startX / 2.0));
+  toolStart_ = lastToolPos_;
   tool_->setSprite(render::ToolSprite(), nullptr);
   const QRectF content = contentRect();
   scene()->setSceneRect(content.adjusted(-kSceneMargin, -kSceneMargin, kSceneMargin, kSceneMargin));
@@ -236,10 +240,10 @@ void OutputView::zoomBy(double factor, const QPoint& anchor) {
   const ViewportAnchor old = transformationAnchor();
   setTransformationAnchor(QGraphicsView::NoAnchor);
   scale(factor, factor);
-  // Keep the scene point under the anchor where it was.
-  const QPointF after = mapToScene(anchor);
-  translate(after.x() - before.x(), after.y() - before.y());
-  centerOn(mapToScene(viewport()->rect().center()) - (after - before));
+  // Keep the scene point under the anchor where it was: scroll by how far it moved.
+  const QPoint moved = mapFromScene(before) - anchor;
+  horizontalScrollBar()->setValue(horizontalScrollBar()->value() + moved.x());
+  verticalScrollBar()->setValue(verticalScrollBar()->value() + moved.y());
   setTransformationAnchor(old);
   if (controller_) controller_->setMaxStepMm(1.0 / pixelsPerMm());
   updateRulers();

@@ -42,6 +42,8 @@ class OutputView : public QGraphicsView {
   RunController* runController() const { return controller_; }
 
   QPointF toolItemPos() const;
+  // What the viewport shows, in scene coordinates (tests).
+  QRectF visibleSceneRect() const { return mapToScene(viewport()->rect()).boundingRect(); }
   bool toolVisible() const;
   double pixelsPerMm() const;
   QImage renderToImage(const QSize& size);
@@ -100,6 +102,7 @@ class OutputView : public QGraphicsView {
   QRectF pathBounds_;
   QRectF cutBounds_;  // feed moves only: what fit-to-view frames
   QPointF lastToolPos_;
+  QPointF toolStart_;  // where the tool is parked before the run (kept in the fitted view)
   bool showPath_ = true;
   bool fitPending_ = true;
   const void* fittedTimeline_ = nullptr;

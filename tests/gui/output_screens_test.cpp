@@ -4,6 +4,8 @@
 #include <QApplication>
 #include <QDir>
 #include <QTest>
+#include <QWheelEvent>
+#include <QLineF>
 
 #include "gui/about_dialog.h"
 #include "gui/job_details_dialog.h"
@@ -87,6 +89,37 @@ class OutputScreensTest : public QObject {
     QVERIFY(near(pixel(-30.0, -15.0), pal.stockFill));
     QVERIFY(!near(pixel(-10.0, 17.0), pal.stockFill));
     QVERIFY(near(pixel(-100.0 + 5.0, 28.0), pal.chuckFill));
+  }
+
+  // Issue 11: the tool is in sight before the run, and the wheel zooms at the pointer.
+  void theToolStartsInViewAndTheWheelZoomsAtThePointer() {
+    RunController controller;
+    controller.setMachineSetup(loadSetup());
+    controller.setProgram(*core::io::readProgramFile(KLUENG_SAMPLES_DIR "/01-step-shaft.txt").value);
+    OutputView view;
+    view.resize(800, 500);
+    view.setRunController(&controller);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    view.fitToView();
+    QApplication::processEvents();
+    const QRectF visible = view.visibleSceneRect();
+    const QPointF tool = view.toolItemPos();  // the start position, X0 Z300 of machine.cfg
+    QCOMPARE(tool.x(), 300.0);
+    QVERIFY2(visible.contains(tool) && visible.contains(tool + QPointF(30.0, -30.0)),
+             qPrintable(QStringLiteral("tool at %1,%2 outside %3,%4 %5x%6").arg(tool.x()).arg(tool.y()).arg(visible.x())
+                            .arg(visible.y()).arg(visible.width()).arg(visible.height())));
+    // Wheel up over the bar's end: that point stays under the pointer, the view zooms in.
+    const QPoint at = view.mapFromScene(render::toScene(0.0, 25.0));
+    const QPointF before = view.mapToScene(at);
+    const double zoomBefore = view.pixelsPerMm();
+    QWheelEvent wheel(QPointF(at), view.viewport()->mapToGlobal(QPointF(at)), QPoint(), QPoint(0, 240), Qt::NoButton,
+                      Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(view.viewport(), &wheel);
+    QVERIFY(view.pixelsPerMm() > zoomBefore * 1.3);
+    const QPointF after = view.mapToScene(at);
+    QVERIFY2(QLineF(before, after).length() * view.pixelsPerMm() < 1.5,
+             qPrintable(QStringLiteral("moved %1 px").arg(QLineF(before, after).length() * view.pixelsPerMm())));
   }
 
   void alarmPicture() {
