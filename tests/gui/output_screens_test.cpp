@@ -3,6 +3,8 @@
 // at (into $KLUENG_SHOT_DIR, default: the temp folder).
 #include <QApplication>
 #include <QDir>
+#include <QFileDialog>
+#include <QLabel>
 #include <QTest>
 #include <QWheelEvent>
 #include <QLineF>
@@ -120,6 +122,22 @@ class OutputScreensTest : public QObject {
     const QPointF after = view.mapToScene(at);
     QVERIFY2(QLineF(before, after).length() * view.pixelsPerMm() < 1.5,
              qPrintable(QStringLiteral("moved %1 px").arg(QLineF(before, after).length() * view.pixelsPerMm())));
+  }
+
+  // Issue 11: Qt's own file dialog speaks Thai in Thai mode (Debian has no qtbase_th.qm).
+  void qtsOwnFileDialogIsThaiInThaiMode() {
+    Language::instance()->setLanguage(QStringLiteral("th"));
+    QFileDialog d(nullptr, QStringLiteral("x"), QDir::tempPath());
+    d.setOption(QFileDialog::DontUseNativeDialog);
+    d.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&d));
+    auto* name = d.findChild<QLabel*>(QStringLiteral("fileNameLabel"));
+    auto* look = d.findChild<QLabel*>(QStringLiteral("lookInLabel"));
+    QVERIFY(name && look);
+    QCOMPARE(name->text(), QStringLiteral("ชื่อไฟล์ (&N):"));
+    QCOMPARE(look->text(), QStringLiteral("ค้นหาใน:"));
+    save(d, QStringLiteral("dialog-file-th.png"));
+    Language::instance()->setLanguage(QStringLiteral("en"));
   }
 
   void alarmPicture() {
