@@ -52,13 +52,26 @@ QString ExplainBar::explainLine(int fileLine) const {
 void ExplainBar::refresh() {
   const RunState state = runner_->state();
   const int line = editor_->executingFileLine();
-  if (state == RunState::Idle || state == RunState::Running || line <= 0) {
+  const core::machine::Timeline* t = runner_->timeline();
+  const int k = runner_->markedSnapshot();
+  if (state == RunState::Idle || state == RunState::Running || line <= 0 || !t || k < 0 ||
+      k >= static_cast<int>(t->snapshots.size()) || t->snapshots[static_cast<std::size_t>(k)].line != line) {
+    const QString text = state == RunState::Idle || state == RunState::Running || line <= 0 ? QString() : explainLine(line);
+    setText(text);
+    setVisible(!text.isEmpty());
+    return;
+  }
+  // The arrow's block, with the state it leaves (the whole run is known ahead).
+  const QTextBlock b = editor_->document()->findBlockByNumber(editor_->editorLineFromFileLine(line));
+  const std::string text = b.text().toStdString();
+  const core::gcode::Program program = core::gcode::parse(text, line);
+  if (program.blocks.empty()) {
     hide();
     return;
   }
-  const QString text = explainLine(line);
-  setText(text);
-  setVisible(!text.isEmpty());
+  setText(QString::fromStdString(core::machine::explainBlock(program.blocks.front(), t->snapshots[static_cast<std::size_t>(k)],
+                                                             editor_->dialect(), Language::coreLang(), text)));
+  show();
 }
 
 void ExplainBar::changeEvent(QEvent* event) {

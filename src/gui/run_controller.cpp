@@ -193,7 +193,6 @@ void RunController::pause() {
     return;
   }
   frameTimer_.stop();
-  pausedBeforeNext_ = false;
   setState(RunState::Paused);
   updateLine();
   emitStatus();
@@ -215,7 +214,6 @@ void RunController::stepBack() {
   const int target = back.snapshot;
   const double t = back.time;
   reportedAlarm_.reset();
-  pausedBeforeNext_ = false;
   targetSnapshot_ = target;
   targetTime_ = t;
   targetIsEnd_ = false;
@@ -350,7 +348,6 @@ void RunController::startRun(bool stepOnly) {
   targetTime_ = stop.time;
   targetIsEnd_ = stop.isEnd;
   targetBeforeNext_ = stop.beforeNext;
-  pausedBeforeNext_ = false;
   setState(stepOnly ? RunState::Stepping : RunState::Running);
   if (speed_ == kAsFastAsPossible) {
     runInBackground(targetTime_);
@@ -411,7 +408,6 @@ void RunController::finishStop() {
     }
     return;
   }
-  pausedBeforeNext_ = !targetIsEnd_ && targetBeforeNext_;
   setState(targetIsEnd_ ? RunState::Finished : RunState::Paused);
   updateLine();
   emitStatus();
@@ -448,12 +444,16 @@ void RunController::updateLine() {
   if (timeline_) {
     const auto& snaps = timeline_->snapshots;
     const int count = static_cast<int>(snaps.size());
+    // One meaning for the arrow (issue 11, SPEC 10 "the block being executed"):
+    // the block running, else the last block that ran — after a Step and at a
+    // breakpoint alike (a breakpoint stops before its block: the arrow is on the
+    // block before it, the breakpoint's dot on the one that runs next).
     const bool moving = state_ == RunState::Running || state_ == RunState::Stepping;
-    const bool beforeNext = state_ == RunState::Paused && pausedBeforeNext_;
-    int k = (moving || beforeNext) ? snapshotIndex_ + 1 : snapshotIndex_;
+    int k = moving ? snapshotIndex_ + 1 : snapshotIndex_;
     if (state_ == RunState::Paused && snapshotIndex_ >= 0 && time_ > snaps[static_cast<std::size_t>(snapshotIndex_)].time + kEps)
-      k = snapshotIndex_ + 1;   // paused in the middle of a block
+      k = snapshotIndex_ + 1;   // paused in the middle of a block: that block is running
     if (k >= count) k = count - 1;
+    markedSnapshot_ = k;
     if (k >= 0) {
       line = snaps[static_cast<std::size_t>(k)].line;
       file = snaps[static_cast<std::size_t>(k)].file;

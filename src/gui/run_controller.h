@@ -113,6 +113,8 @@ class RunController : public QObject {
   render::StockShape stockShape() const;
   // Index of the snapshot of the block being executed or last finished (-1 = none).
   int currentSnapshot() const { return snapshotIndex_; }
+  // The snapshot of the block the arrow marks: running, or next to run (-1 none).
+  int markedSnapshot() const { return markedSnapshot_; }
   // Frames drawn since the last reset (for the frame-rate probe).
   qint64 frameCount() const { return frames_; }
 
@@ -199,8 +201,8 @@ class RunController : public QObject {
   int targetSnapshot_ = -1;     // snapshots done when targetTime_ is reached
   bool targetIsEnd_ = false;
   bool targetBeforeNext_ = false;  // the target stops before a block (breakpoint, run to line)
-  bool pausedBeforeNext_ = false;  // paused there: the next block's line is highlighted
   int snapshotIndex_ = -1;      // last completed block's snapshot
+  int markedSnapshot_ = -1;     // the arrow's block (updateLine)
   int currentLine_ = 0;
   int currentFile_ = 0;
   qint64 frames_ = 0;

@@ -196,7 +196,10 @@ class RunControllerTest : public QObject {
     QCOMPARE(rig.controller.state(), RunState::Paused);
     const int k = rig.controller.currentSnapshot();
     QCOMPARE(tl.snapshots[static_cast<std::size_t>(k + 1)].line, n100);
-    QCOMPARE(rig.controller.currentLine(), n100);   // the block about to run is highlighted
+    // One meaning for the arrow (issue 11): the last block that ran, as after a Step;
+    // the breakpoint's own block has not run yet.
+    QCOMPARE(rig.controller.currentLine(), tl.snapshots[static_cast<std::size_t>(k)].line);
+    QCOMPARE(rig.controller.currentLine(), n100 - 1);
     QCOMPARE(rig.controller.currentTime(), tl.snapshots[static_cast<std::size_t>(k)].time);
     // N100 has not cut yet: the bar is still Ø54 faced... untouched at Z-30.
     QVERIFY(rig.view.stockItem()->stockShape().containsMaterial(-30.0, 24.9));
@@ -225,7 +228,9 @@ class RunControllerTest : public QObject {
     rig.controller.runToLine(n330);
     rig.waitIdle();
     QCOMPARE(rig.controller.state(), RunState::Paused);
-    QCOMPARE(rig.controller.currentLine(), n330);
+    // Stopped before N330: the arrow is on the last block that ran, N320.
+    QCOMPARE(rig.controller.currentLine(), fileLineOf("01-step-shaft.txt", "N320"));
+    QCOMPARE(rig.controller.currentLine(), n330 - 1);
   }
 
   void alarmStopsOnItsBlock() {
