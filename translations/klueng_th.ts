@@ -227,6 +227,18 @@
 <context>
     <name>klueng::gui::HelpContents</name>
     <message>
+        <source>Imaginary tool tip numbers 0-9</source>
+        <translation>หมายเลขปลายมีดสมมติ 0-9</translation>
+    </message>
+    <message>
+        <source>Offset define gives each tool nose its tip number T: where the imaginary tip lies from the nose centre. Nose radius compensation (G41/G42) needs it: an outside turning tool is 3, a boring bar 2.</source>
+        <translation>ในหน้ากำหนดออฟเซต จมูกมีดแต่ละตัวมีหมายเลขปลายมีด T บอกว่าปลายมีดสมมติอยู่ทางไหนของจุดศูนย์กลางจมูกมีด การชดเชยรัศมีจมูกมีด (G41/G42) ต้องใช้ค่านี้: มีดกลึงปอกด้านนอกเป็น 3 มีดคว้านเป็น 2</translation>
+    </message>
+    <message>
+        <source>Red: cutting moves; blue dashes: rapids; grey: the bar.</source>
+        <translation>เส้นแดง: การเคลื่อนที่ตัดเฉือน เส้นประสีน้ำเงิน: การเคลื่อนที่เร็ว สีเทา: ชิ้นงาน</translation>
+    </message>
+    <message>
         <source>Worked example</source>
         <translation>ตัวอย่างโปรแกรม</translation>
     </message>

@@ -2,6 +2,8 @@
 
 #include <QDialogButtonBox>
 #include <QEvent>
+#include <QTextDocument>
+#include <QUrl>
 #include <QSet>
 #include <QLineEdit>
 #include <QListWidget>
@@ -9,6 +11,7 @@
 #include <QTextBrowser>
 #include <QVBoxLayout>
 
+#include "gui/help_pictures.h"
 #include "gui/language.h"
 #include "klueng/core/machine/help.h"
 
@@ -131,6 +134,9 @@ QString HelpContents::buildHtml(bool thai, core::gcode::Dialect dialect) {
         examples += QStringLiteral("<h4><a name='ex-%1'></a>%1 \u2014 %2</h4><pre>%3</pre>")
                         .arg(code, esc(name),
                              QString::fromStdString(core::machine::workedExample(c.letter, c.number, dialect)).toHtmlEscaped());
+        if (pictured(c.letter, c.number))  // the path the example really makes (rebuild() draws it)
+          examples += QStringLiteral("<p><img src='help-path-%1.png'><br><i>%2</i></p>")
+                          .arg(code, tr("Red: cutting moves; blue dashes: rapids; grey: the bar."));
       }
       html += QStringLiteral(
                   "<tr><td>%7<b>%1</b></td><td>%2%3<br><span style='color:#666'>%4</span></td>"
@@ -145,6 +151,11 @@ QString HelpContents::buildHtml(bool thai, core::gcode::Dialect dialect) {
                       "step, Stop resets. F9 sets a breakpoint on the cursor's line; Run to cursor stops "
                       "at the cursor's block. Every error is underlined in the editor and listed below it; "
                       "click one to jump to it."));
+  html += QStringLiteral("<h3><a name='tips'></a>%1</h3><p>%2</p><p><img src='help-tips.png'></p>")
+              .arg(tr("Imaginary tool tip numbers 0-9"),
+                   tr("Offset define gives each tool nose its tip number T: where the imaginary tip lies from the "
+                      "nose centre. Nose radius compensation (G41/G42) needs it: an outside turning tool is 3, a "
+                      "boring bar 2."));
   html += QStringLiteral("<h3><a name='examples'></a>%1</h3><p>%2</p>")
               .arg(tr("Worked examples"),
                    tr("Each program runs as it is on a bar of 50 x 100 mm with the shipped tools: copy it into "
@@ -154,10 +165,21 @@ QString HelpContents::buildHtml(bool thai, core::gcode::Dialect dialect) {
   return html;
 }
 
+bool HelpContents::pictured(char letter, int number) {
+  return letter == 'G' && (number == 71 || number == 72 || number == 73 || number == 76);
+}
+
 void HelpContents::rebuild() {
   setWindowTitle(tr("Help Contents"));
+  const bool thai = Language::coreLang() == core::Lang::Th;
+  QTextDocument* doc = browser_->document();
+  doc->addResource(QTextDocument::ImageResource, QUrl(QStringLiteral("help-tips.png")), tipNumbersPicture(thai));
+  for (int number : {71, 72, 73, 76})
+    if (const std::string example = core::machine::workedExample('G', number, dialect_); !example.empty())
+      doc->addResource(QTextDocument::ImageResource, QUrl(QStringLiteral("help-path-G%1.png").arg(number)),
+                       examplePathPicture(example, dialect_));
   search_->setPlaceholderText(tr("Search: G71, roughing, กลึงปอกหยาบ ..."));
-  browser_->setHtml(buildHtml(Language::coreLang() == core::Lang::Th, dialect_));
+  browser_->setHtml(buildHtml(thai, dialect_));
   if (!search_->text().isEmpty()) search(search_->text());
   if (!shownAnchor_.isEmpty()) browser_->scrollToAnchor(shownAnchor_);
 }

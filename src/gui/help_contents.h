@@ -25,6 +25,8 @@ class HelpContents : public QDialog {
   // Open at a code's entry (F1 on a word in the editor).
   void showCode(char letter, int number);
   static QString anchorOf(char letter, int number);  // "G71", "M08"
+  // Codes whose worked example comes with a picture of its path (G71-G73, G76).
+  static bool pictured(char letter, int number);
   QTextBrowser* browser() const { return browser_; }
   QLineEdit* searchField() const { return search_; }
   QListWidget* hits() const { return hits_; }

@@ -11,6 +11,7 @@
 #include "gui/language.h"
 
 #include <QLineEdit>
+#include <QTextBrowser>
 #include "gui/main_window.h"
 #include "gui/resources.h"
 #include "gui/run_controller.h"
@@ -37,8 +38,13 @@ int main(int argc, char** argv) {
     w.action(QStringLiteral("actionContents"))->trigger();
     auto* help = w.findChild<HelpContents*>();
     if (!help) return 1;
-    help->searchField()->setText(QString::fromLocal8Bit(argv[2]).mid(5));
-    QTest::keyClick(help->searchField(), Qt::Key_Return);
+    const QString word = QString::fromLocal8Bit(argv[2]).mid(5);
+    if (word.startsWith(QLatin1Char('#'))) {
+      help->browser()->scrollToAnchor(word.mid(1));  // "help:#ex-G71": a place on the page
+    } else {
+      help->searchField()->setText(word);
+      QTest::keyClick(help->searchField(), Qt::Key_Return);
+    }
     QTest::qWait(300);
     return help->grab().save(QString::fromLocal8Bit(argv[3])) ? 0 : 1;
   }
