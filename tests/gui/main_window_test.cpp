@@ -18,6 +18,8 @@
 #include <QListWidget>
 #include <QLineEdit>
 #include <QTest>
+#include <QTextDocument>
+#include <QUrl>
 #include <QTextBlock>
 #include <QTimer>
 
@@ -461,8 +463,13 @@ class MainWindowTest : public QObject {
     QTRY_VERIFY(help && help->isVisible());
     QCOMPARE(help->shownAnchor(), QStringLiteral("G76"));
     QVERIFY(help->browser()->verticalScrollBar()->value() > 0);
-    // Its worked example is on the page, as a whole program.
+    // Its worked example is on the page, as a whole program, with a picture of its path; the tip numbers too.
     QVERIFY(help->browser()->toPlainText().contains(QStringLiteral("G76 X46.16 Z-25. P920 Q300 F1.5")));
+    for (const QString& picture : {QStringLiteral("help-path-G76.png"), QStringLiteral("help-tips.png")}) {
+      const QImage image = help->browser()->document()->resource(QTextDocument::ImageResource, QUrl(picture)).value<QImage>();
+      QVERIFY2(!image.isNull() && image.width() > 200, qPrintable(picture));
+      QVERIFY2(help->browser()->toHtml().contains(picture), qPrintable(picture));
+    }
     for (const QString& query : {QStringLiteral("roughing"), QStringLiteral("กลึงปอกหยาบ")}) {
       help->searchField()->setText(query);
       QVERIFY(help->hits()->isVisible());
