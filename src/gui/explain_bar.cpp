@@ -69,8 +69,15 @@ void ExplainBar::refresh() {
     hide();
     return;
   }
-  setText(QString::fromStdString(core::machine::explainBlock(program.blocks.front(), t->snapshots[static_cast<std::size_t>(k)],
-                                                             editor_->dialect(), Language::coreLang(), text)));
+  std::string what = core::machine::explainBlock(program.blocks.front(), t->snapshots[static_cast<std::size_t>(k)],
+                                                 editor_->dialect(), Language::coreLang(), text);
+  // Paused inside a cycle: which pass.
+  const int move = t->moveAt(runner_->currentTime());
+  const core::machine::StateSnapshot& snap = t->snapshots[static_cast<std::size_t>(k)];
+  if (move >= 0 && runner_->currentTime() < snap.time - 1e-9 &&
+      t->moves[static_cast<std::size_t>(move)].blockIndex == snap.blockIndex)
+    if (const std::string pass = core::machine::explainPass(*t, move, Language::coreLang()); !pass.empty()) what += "; " + pass;
+  setText(QString::fromStdString(what));
   show();
 }
 

@@ -288,6 +288,27 @@ std::string explainCode(char letter, int number, gcode::Dialect dialect, Lang la
   return name;
 }
 
+std::string explainPass(const Timeline& timeline, int moveIndex, Lang lang) {
+  const auto& moves = timeline.moves;
+  if (moveIndex < 0 || moveIndex >= static_cast<int>(moves.size())) return {};
+  const int block = moves[static_cast<std::size_t>(moveIndex)].blockIndex;
+  int first = moveIndex, last = moveIndex;
+  while (first > 0 && moves[static_cast<std::size_t>(first - 1)].blockIndex == block) --first;
+  while (last + 1 < static_cast<int>(moves.size()) && moves[static_cast<std::size_t>(last + 1)].blockIndex == block) ++last;
+  int passes = 0, current = 0;
+  bool inPass = false;
+  for (int i = first; i <= last; ++i) {
+    const MoveKind k = moves[static_cast<std::size_t>(i)].kind;
+    const bool feed = k == MoveKind::Line || k == MoveKind::Arc || k == MoveKind::Thread;
+    if (feed && !inPass) ++passes;
+    inPass = feed || (inPass && k == MoveKind::Dwell);
+    if (i == moveIndex) current = passes;
+  }
+  if (passes <= 1 || current == 0) return {};
+  return lang == Lang::Th ? "เที่ยวที่ " + std::to_string(current) + " จาก " + std::to_string(passes)
+                          : "pass " + std::to_string(current) + " of " + std::to_string(passes);
+}
+
 std::string explainBlock(const gcode::Block& block, const StateSnapshot& after, gcode::Dialect dialect, Lang lang,
                          std::string_view statementText) {
   return Explainer(block, &after, dialect, lang, statementText).run();

@@ -111,6 +111,30 @@ TEST(Explain, CyclesSayTheirProfileDepthAndAllowance) {
             "is blocks N10 to N20; finishing allowance U0.4 on the diameter; 0.25 mm per revolution");
 }
 
+TEST(Explain, InsideACycleThePassIsCounted) {
+  const Ran r = run(
+      "G21 G99\nG50 S2000\nT0101\nG96 S150 M03\nG00 X52. Z2.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\n"
+      "N10 G00 X30.\nG01 Z-20.\nN20 X52.\nG00 X100. Z100.\nM30\n");
+  // Roughing from Ø52 to Ø30.4 at 2 mm a side: passes at Ø48, 44, 40, 36, 32 and the last at 30.4 plus
+  // the pass along the profile.
+  std::vector<int> cuts;  // the G71 block's moves that cut
+  for (std::size_t i = 0; i < r.timeline.moves.size(); ++i)
+    if (r.timeline.moves[i].line == 7 && r.timeline.moves[i].kind == MoveKind::Line) cuts.push_back(static_cast<int>(i));
+  ASSERT_GT(cuts.size(), 3u);
+  const std::string first = explainPass(r.timeline, cuts.front(), Lang::En);
+  const std::string last = explainPass(r.timeline, cuts.back(), Lang::En);
+  ASSERT_EQ(first.rfind("pass 1 of ", 0), 0u) << first;
+  const std::string total = first.substr(std::string("pass 1 of ").size());
+  EXPECT_EQ(last, "pass " + total + " of " + total);
+  EXPECT_EQ(explainPass(r.timeline, cuts.front(), Lang::Th), "เที่ยวที่ 1 จาก " + total);
+  EXPECT_GE(std::stoi(total), 6);
+  // A plain G01 is one pass: nothing to count.
+  for (std::size_t i = 0; i < r.timeline.moves.size(); ++i)
+    if (r.timeline.moves[i].line == 5) {
+      EXPECT_EQ(explainPass(r.timeline, static_cast<int>(i), Lang::En), "");
+    }
+}
+
 TEST(Explain, ThreadsAndMacroStatements) {
   const Ran r = run("G21 G99\nT0303\nG97 S800 M03\nG00 X30. Z5.\nG32 Z-30. F1.5\n#1=2\nG00 X40.\nM30\n");
   EXPECT_EQ(r.explain(5, Lang::En), "G32 Z-30. F1.5: cut one pass of a thread, the feed locked to the spindle to Z-30, lead 1.5 mm");

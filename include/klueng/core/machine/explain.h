@@ -10,6 +10,7 @@
 #include "klueng/core/gcode/code_table.h"
 #include "klueng/core/gcode/program.h"
 #include "klueng/core/machine/state.h"
+#include "klueng/core/machine/timeline.h"
 #include "klueng/core/messages.h"
 
 namespace klueng::core::machine {
@@ -23,6 +24,11 @@ std::string explainCode(char letter, int number, gcode::Dialect dialect, Lang la
 // statement keeps no words: `statementText` (its line) heads it then.
 std::string explainBlock(const gcode::Block& block, const StateSnapshot& after, gcode::Dialect dialect, Lang lang,
                          std::string_view statementText = {});
+
+// Inside a block of many passes (a cycle): which pass move `moveIndex` is in,
+// "pass 3 of 12" / "เที่ยวที่ 3 จาก 12" — a pass is a run of feed moves between
+// rapids. Empty when the block makes one pass or less.
+std::string explainPass(const Timeline& timeline, int moveIndex, Lang lang);
 
 // The same without a run: what the words alone say (no rpm, feed mode unknown).
 std::string explainWords(const gcode::Block& block, gcode::Dialect dialect, Lang lang, std::string_view statementText = {});
