@@ -6,6 +6,7 @@
 #include <QCommandLineParser>
 #include <QFileInfo>
 #include <QIcon>
+#include <QScreen>
 #include <QTimer>
 #include <cstdio>
 
@@ -27,8 +28,12 @@ void scheduleScreenshot(klueng::gui::MainWindow* window, const QString& out, int
     QTimer::singleShot(300, window, [window, out, exitCode] {
       const QPixmap shot = window->grab();
       const bool ok = shot.save(out, "PNG");
-      std::printf("screenshot %s %dx%d window %dx%d\n", ok ? "saved" : "FAILED", shot.width(), shot.height(),
-                  window->width(), window->height());
+      // Where the window lies and the screen's free area, so tests can see it fits (issue 11).
+      const QRect frame = window->frameGeometry();
+      const QRect screen = window->screen() ? window->screen()->availableGeometry() : QRect();
+      std::printf("screenshot %s %dx%d window %dx%d frame %d,%d %dx%d screen %d,%d %dx%d\n", ok ? "saved" : "FAILED",
+                  shot.width(), shot.height(), window->width(), window->height(), frame.x(), frame.y(), frame.width(),
+                  frame.height(), screen.x(), screen.y(), screen.width(), screen.height());
       std::fflush(stdout);
       *exitCode = ok ? 0 : 1;
       QApplication::exit(*exitCode);

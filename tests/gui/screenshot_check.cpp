@@ -5,6 +5,8 @@
 #include <QProcess>
 #include <QRegularExpression>
 #include <QSet>
+#include <QTemporaryDir>
+#include <QRect>
 #include <QTest>
 
 class ScreenshotCheck : public QObject {
@@ -44,6 +46,37 @@ class ScreenshotCheck : public QObject {
     const int samples = ((img.width() + 1) / 2) * ((img.height() + 1) / 2);
     QVERIFY2(counts.size() > 100, qPrintable(QStringLiteral("only %1 colours").arg(counts.size())));
     QVERIFY2(dominant < samples * 0.8, "one colour covers more than 80% of the window");
+  }
+
+  // Issue 11: on a 1366 x 768 classroom screen, with fresh settings, the whole
+  // window (status bar included) lies on the screen, in English and in Thai.
+  void fitsAClassroomScreenInBothLanguages() {
+    for (const QString& lang : {QStringLiteral("en"), QStringLiteral("th")}) {
+      QTemporaryDir home;
+      const QString out = QStringLiteral(KLUENG_SHOT_DIR "/klueng-1366-%1.png").arg(lang);
+      QFile::remove(out);
+      QProcess p;
+      QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+      env.remove(QStringLiteral("QT_QPA_PLATFORM"));
+      env.insert(QStringLiteral("XDG_CONFIG_HOME"), home.filePath(QStringLiteral("config")));
+      env.insert(QStringLiteral("XDG_DATA_HOME"), home.filePath(QStringLiteral("data")));
+      p.setProcessEnvironment(env);
+      p.start(QStringLiteral(XVFB_RUN_PATH),
+              {QStringLiteral("-a"), QStringLiteral("-s"), QStringLiteral("-screen 0 1366x768x24"),
+               QStringLiteral(KLUENG_APP_PATH), QStringLiteral("--lang"), lang, QStringLiteral("--screenshot"), out,
+               QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt")});
+      QVERIFY2(p.waitForFinished(90000), "klueng did not finish under Xvfb");
+      const QString text = QString::fromLocal8Bit(p.readAllStandardOutput());
+      QCOMPARE(p.exitCode(), 0);
+      const QRegularExpression re(QStringLiteral("frame (-?\\d+),(-?\\d+) (\\d+)x(\\d+) screen (-?\\d+),(-?\\d+) (\\d+)x(\\d+)"));
+      const auto m = re.match(text);
+      QVERIFY2(m.hasMatch(), qPrintable(text));
+      const QRect frame(m.captured(1).toInt(), m.captured(2).toInt(), m.captured(3).toInt(), m.captured(4).toInt());
+      const QRect screen(m.captured(5).toInt(), m.captured(6).toInt(), m.captured(7).toInt(), m.captured(8).toInt());
+      QCOMPARE(screen.width(), 1366);
+      QVERIFY2(screen.contains(frame), qPrintable(lang + QStringLiteral(": ") + text));
+      QVERIFY(!QImage(out).isNull());
+    }
   }
 };
 
