@@ -59,23 +59,41 @@ class ModalWalk {
   bool block(const Block& b, bool firstOfFile) {
     if (b.file != 0 || b.statement.kind != StatementKind::None || b.hasExpressions) return false;
     if (!firstOfFile && !b.words.empty() && b.words.front().letter == 'O') return false;  // another program
+    // One pass over the words (the walk runs on every edit of a 100,000-block program).
     std::optional<CodeAction> motion;  // a group-01 code written in this block
-    const Word* motionWord = nullptr;
-    const Word* g96 = nullptr;
-    bool clampHere = false, cycle = false, position = true, axisWordsNotAMove = false;
-    for (const Word* g : b.all('G')) {
-      const CodeInfo* info = g->hasDecimalPoint ? nullptr : findCode('G', g->code(), options_.dialect);
+    const Word *motionWord = nullptr, *g96 = nullptr, *x = nullptr, *z = nullptr, *u = nullptr, *w = nullptr;
+    bool hasS = false, coordinateSet = false, cycle = false, position = true, axisWordsNotAMove = false;
+    bool ends = false;
+    for (const Word& word : b.words) {
+      if (word.comma) {
+        position = false;  // ,C ,R ,A: a corner moves the next move's start
+        continue;
+      }
+      switch (word.letter) {
+        case 'X': if (!x) x = &word; continue;
+        case 'Z': if (!z) z = &word; continue;
+        case 'U': if (!u) u = &word; continue;
+        case 'W': if (!w) w = &word; continue;
+        case 'F': feedSet_ = true; continue;
+        case 'S': hasS = true; continue;
+        case 'T': position = false; continue;
+        case 'G': case 'M': break;
+        default: continue;
+      }
+      const CodeInfo* info = word.hasDecimalPoint ? nullptr : findCode(word.letter, word.code(), options_.dialect);
       if (!info) continue;
       const CodeAction a = info->action;
       if (endsTheWalk(a)) return false;
+      if (a == CodeAction::ProgramEnd) ends = true;
+      if (word.letter == 'M') continue;
       if (losesPosition(a)) position = false;
       if (info->group == ModalGroup::Motion) {
         motion = a;
-        motionWord = g;
+        motionWord = &word;
       }
       switch (a) {
-        case CodeAction::ConstantSurface: g96 = g; break;
-        case CodeAction::CoordinateSet: clampHere = clampHere || b.find('S'); [[fallthrough]];
+        case CodeAction::ConstantSurface: g96 = &word; break;
+        case CodeAction::CoordinateSet: coordinateSet = true; [[fallthrough]];
         case CodeAction::Dwell: case CodeAction::ReferenceCheck: case CodeAction::ReferenceReturn:
         case CodeAction::ReturnFromReference: case CodeAction::MachineCoordinates:
           axisWordsNotAMove = true;  // X/Z/U/W here are a time, a point or a name, not a feed move
@@ -88,12 +106,7 @@ class ModalWalk {
       if (a >= CodeAction::Finishing && a <= CodeAction::PeckDrilling) cycle = true;
       if (a >= CodeAction::Drilling && a <= CodeAction::PeckDrilling) drilling_ = true;
     }
-    for (const Word* m : b.all('M')) {
-      const CodeInfo* info = m->hasDecimalPoint ? nullptr : findCode('M', m->code(), options_.dialect);
-      if (info && endsTheWalk(info->action)) return false;
-    }
-    if (b.find('F')) feedSet_ = true;
-    if (clampHere) clamped_ = true;
+    if (coordinateSet && hasS) clamped_ = true;
     if (g96 && !clamped_ && !b.blockSkip) report(codes::kConstantSurfaceWithoutClamp, *g96, {});
     if (motion) {
       motion_ = *motion;
@@ -102,18 +115,14 @@ class ModalWalk {
     const bool boxCycle = motion_ == CodeAction::BoxTurning || motion_ == CodeAction::BoxThreading ||
                           motion_ == CodeAction::BoxFacing;
     if (boxCycle || drilling_) cycle = true;
-    if (b.find('T') || b.findComma('C') || b.findComma('R') || b.findComma('A')) position = false;
 
-    const Word* x = b.find('X');
-    const Word* z = b.find('Z');
-    const Word* u = b.find('U');
-    const Word* w = b.find('W');
     const bool moves = (x || z || u || w) && !cycle && !axisWordsNotAMove;
     if (moves && isFeedMotion(motion_) && !feedSet_ && !b.blockSkip) {
       report(codes::kFeedMoveWithoutFeed, motionWord ? *motionWord : *(x ? x : z ? z : u ? u : w),
              {motionWord ? motionWord->text() : codeName(motion_)});
       feedSet_ = true;  // the run stops at the first: one warning, not one per block after it
     }
+    // A feed given in this block counts for its own move (F is read before the motion).
 
     // Where the block ends, in program coordinates (X as a diameter).
     const std::optional<double> toX = x ? std::optional<double>(x->value) : u ? (x_ ? std::optional<double>(*x_ + u->value) : std::nullopt) : x_;
@@ -124,11 +133,7 @@ class ModalWalk {
       z_ = toZ;
     }
     if (!position || cycle || axisWordsNotAMove || b.blockSkip) x_.reset(), z_.reset();
-    for (const Word* m : b.all('M')) {
-      const CodeInfo* info = m->hasDecimalPoint ? nullptr : findCode('M', m->code(), options_.dialect);
-      if (info && info->action == CodeAction::ProgramEnd) return false;
-    }
-    return true;
+    return !ends;
   }
 
   void setInch(bool inch) { inch_ = inch; }
