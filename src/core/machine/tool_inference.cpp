@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -81,6 +82,21 @@ std::string commentOf(std::string_view line) {
 std::vector<std::string_view> splitLines(std::string_view text) {
   std::vector<std::string_view> lines;
   lines.reserve(static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1);
+  if (std::memchr(text.data(), '\r', text.size()) == nullptr) {
+    // LF only (the usual case): memchr from line end to line end.
+    const char* p = text.data();
+    const char* const end = p + text.size();
+    while (p < end) {
+      const char* nl = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
+      if (!nl) {
+        lines.emplace_back(p, static_cast<std::size_t>(end - p));
+        break;
+      }
+      lines.emplace_back(p, static_cast<std::size_t>(nl - p));
+      p = nl + 1;
+    }
+    return lines;
+  }
   std::size_t start = 0;
   for (std::size_t i = 0; i < text.size(); ++i) {
     if (text[i] == '\n' || text[i] == '\r') {
@@ -174,6 +190,7 @@ class Scanner {
   std::vector<std::string_view> lines_;
   int firstLine_;
   std::map<int, StationUse> uses_;
+  StationUse* current_ = nullptr;  // uses_[station_] (a map's elements stay put)
   std::vector<int> order_;  // station of every T selection, in program order
   int station_ = 0;
   double unit_ = 1.0;
@@ -223,6 +240,7 @@ class Scanner {
     afterSelect_ = true;
     order_.push_back(station);
     StationUse& u = uses_[station];
+    current_ = &u;
     if (!u.firstLine) u.firstLine = b.line;
     if (offset > 0) u.offsets.insert(offset);
     if (u.comment) return;
@@ -253,7 +271,8 @@ class Scanner {
 
   void note(ToolKind kind, ToolReason reason, const std::string& detail, int line, bool strong = true,
             bool finishing = false) {
-    StationUse& u = uses_[station_];
+    StationUse& u = *current_;
+    if (strong ? u.cycle.has_value() : u.turning.has_value()) return;  // the first of each kind is kept
     Evidence e;
     e.kind = kind;
     e.reason = reason;
@@ -268,7 +287,7 @@ class Scanner {
   static std::string gText(int g) { return fmt::format("G{:02}", g); }
 
   void motion(const gcode::Block& b) {
-    StationUse& u = uses_[station_];
+    StationUse& u = *current_;
     int cycle = -1;
     for (const gcode::Word* g : b.all('G')) {
       if (g->hasDecimalPoint) continue;
@@ -337,7 +356,7 @@ class Scanner {
         e.line = b.line;
         e.strong = true;
         partings_[station_] = e;
-      } else {
+      } else if (!u.turning) {  // only the first turning move is kept: no text for the others
         note(ToolKind::Turning, ToolReason::Turning, gText(motion_), b.line, false);
       }
     }
