@@ -55,6 +55,18 @@ long long wholeNumber(const Word& w) {
   return static_cast<long long>(w.value);
 }
 
+// The station of a well-formed T word (T0101 -> 1), or -1 when the word itself
+// is wrong (its digits, station or offset out of range: E203/E204).
+int toolStation(const Word& w, const MachineProfile& profile, int turretStations) {
+  const auto digits = static_cast<int>(w.number.size());
+  const long long n = wholeNumber(w);
+  const bool shapeOk = n >= 0 && digits >= profile.minToolDigits && digits <= 4;
+  const int tool = static_cast<int>(n / 100);
+  const int offset = static_cast<int>(n % 100);
+  const int maxTool = profile.maxToolStation > 0 ? profile.maxToolStation : turretStations;
+  return !shapeOk || tool < 1 || tool > maxTool || offset > profile.maxOffset ? -1 : tool;
+}
+
 bool isRuleFourGroup(ModalGroup g) {
   return g == ModalGroup::MSpindle || g == ModalGroup::MCoolant || g == ModalGroup::MCAxis ||
          g == ModalGroup::MBrake || g == ModalGroup::MGear || g == ModalGroup::MSubprogram ||
@@ -409,13 +421,9 @@ class Checker {
   }
 
   void checkTool(const Word& w) {
-    const auto digits = static_cast<int>(w.number.size());
-    const long long n = wholeNumber(w);
-    const bool shapeOk = n >= 0 && digits >= profile_.minToolDigits && digits <= 4;
-    const int tool = static_cast<int>(n / 100);
-    const int offset = static_cast<int>(n % 100);
+    const int tool = toolStation(w, profile_, options_.turretStations);
     const int maxTool = profile_.maxToolStation > 0 ? profile_.maxToolStation : options_.turretStations;
-    if (!shapeOk || tool < 1 || tool > maxTool || offset > profile_.maxOffset) {
+    if (tool < 0) {
       if (profile_.minToolDigits < 4)
         emit(codes::kBadToolWordFanuc, w, {wordText(w), twoDigits(maxTool), twoDigits(profile_.maxOffset)});
       else
@@ -449,6 +457,30 @@ class Checker {
 };
 
 }  // namespace
+
+std::vector<Diagnostic> checkToolBitmaps(const Program& program, const CheckOptions& options) {
+  std::vector<Diagnostic> out;
+  if (!options.toolsWithBitmap) return out;
+  const MachineProfile& profile = machineProfile(options.dialect);
+  if (profile.letters.find('T') == std::string_view::npos) return out;
+  const std::vector<int>& tools = *options.toolsWithBitmap;
+  for (const Block& b : program.blocks) {
+    if (b.statement.kind != StatementKind::None) continue;
+    // As check(): a macro call's letters are its arguments, T too.
+    const bool macroCall = profile.flow.macroB && std::any_of(b.words.begin(), b.words.end(), [](const Word& w) {
+      return w.letter == 'G' && w.expr < 0 && !w.hasDecimalPoint && (w.value == 65.0 || w.value == 66.0);
+    });
+    if (macroCall) continue;
+    for (const Word& w : b.words) {
+      if (w.letter != 'T' || w.comma || w.expr >= 0) continue;
+      const int tool = toolStation(w, profile, options.turretStations);
+      if (tool > 0 && std::find(tools.begin(), tools.end(), tool) == tools.end())
+        out.push_back(Diagnostic{Severity::Error, codes::kToolWithoutBitmap, w.range, {w.text(), twoDigits(tool)}});
+      if (out.size() >= codes::kMaxDiagnostics) return out;
+    }
+  }
+  return out;
+}
 
 std::vector<Diagnostic> check(const Program& program, const CheckOptions& options) {
   std::vector<Diagnostic> out = program.lexicalDiagnostics;

@@ -1,6 +1,7 @@
 // One program's check for the GUI (see job_check.h).
 #include "klueng/core/machine/job_check.h"
 
+#include "check_with_tools.h"
 #include "klueng/core/gcode/dialect_fit.h"
 #include <algorithm>
 
@@ -42,10 +43,14 @@ JobCheck checkJob(std::string_view gcode, int firstLine, gcode::CheckOptions opt
   gcode::Program program = gcode::parse(gcode, firstLine);
   std::vector<Diagnostic> fileDiagnostics;
   if (!folder.empty()) fileDiagnostics = attachSubprogramFiles(program, folder, options.dialect);
-  result.inference = inferTools(program, gcode, firstLine, setup, library, overrides, stations);
-  // The program's tools decide which T words have a tool (one meaning: job.h).
+  // The program's tools decide which T words have a tool (one meaning: job.h);
+  // they are worked out while the rest of the check runs.
+  detail::CheckedWithTools checked = detail::checkWhileInferring(program, options, [&] {
+    return inferTools(program, gcode, firstLine, setup, library, overrides, stations);
+  });
+  result.inference = std::move(checked.inference);
   if (options.toolsWithBitmap) options.toolsWithBitmap = toolsWithBitmap(result.inference.setup);
-  result.diagnostics = gcode::check(program, options);
+  result.diagnostics = std::move(checked.diagnostics);
   result.diagnostics.insert(result.diagnostics.end(), fileDiagnostics.begin(), fileDiagnostics.end());
   // Errors in subprogram files: one E412 per file, on the call that reaches it.
   std::vector<Diagnostic> own;

@@ -1,6 +1,8 @@
 // One program file made ready to run (job_file.h).
 #include "klueng/core/machine/job_file.h"
 
+#include "check_with_tools.h"
+
 #include <algorithm>
 #include <filesystem>
 
@@ -61,15 +63,21 @@ JobFile loadJobFile(const std::string& path, const MachineSetup& setup, const Jo
   check.dialect = request.run.dialect;
   check.powerOnUnits = request.run.powerOnUnits;
   check.turretStations = setup.tools.stations;  // the turret the tool table was read for
+  std::vector<Diagnostic> found;
   if (request.toolTable) {
-    // Tools from the program: library choices for stations without a fitting tool.
-    ToolInference inferred = inferTools(program, file.gcode, file.gcodeFirstLine, setup, library,
-                                        request.overrides, request.stations);
-    job.setup = std::move(inferred.setup);
-    job.toolNotes = inferred.notes();
+    // Tools from the program: library choices for stations without a fitting tool,
+    // worked out while the rest of the check runs.
+    check.toolsWithBitmap = std::vector<int>{};
+    detail::CheckedWithTools checked = detail::checkWhileInferring(program, check, [&] {
+      return inferTools(program, file.gcode, file.gcodeFirstLine, setup, library, request.overrides, request.stations);
+    });
+    job.setup = std::move(checked.inference.setup);
+    job.toolNotes = checked.inference.notes();
     check.toolsWithBitmap = toolsWithBitmap(job.setup);
+    found = std::move(checked.diagnostics);
+  } else {
+    found = gcode::check(program, check);
   }
-  std::vector<Diagnostic> found = gcode::check(program, check);
   // Say once which dialect accepts a program this one refuses (I102).
   if (auto fit = gcode::suggestDialect(program, check, found)) found.push_back(fit->note);
   job.diagnostics.insert(job.diagnostics.end(), std::make_move_iterator(found.begin()),

@@ -34,4 +34,10 @@ struct CheckOptions {
 // Includes program.lexicalDiagnostics.
 std::vector<Diagnostic> check(const Program& program, const CheckOptions& options = {});
 
+// Only the tool rule of check(): E305 for each well-formed T word whose station
+// is not in options.toolsWithBitmap (nothing when that is unset). check() with
+// toolsWithBitmap unset plus this gives what check() with it gives, so the
+// tool table can be worked out while the rest of the check runs.
+std::vector<Diagnostic> checkToolBitmaps(const Program& program, const CheckOptions& options);
+
 }  // namespace klueng::core::gcode

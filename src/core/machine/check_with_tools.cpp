@@ -1,0 +1,33 @@
+#include "check_with_tools.h"
+
+#include <algorithm>
+#include <future>
+
+#include "klueng/core/machine/job.h"
+
+namespace klueng::core::machine::detail {
+
+CheckedWithTools checkWhileInferring(const gcode::Program& program, gcode::CheckOptions options,
+                                     const std::function<ToolInference()>& infer) {
+  CheckedWithTools out;
+  const bool toolRule = options.toolsWithBitmap.has_value();
+  gcode::CheckOptions grammar = options;
+  grammar.toolsWithBitmap.reset();
+  // Both only read the program; the inference's result is waited for below.
+  std::future<ToolInference> inferred = std::async(std::launch::async, infer);
+  out.diagnostics = gcode::check(program, grammar);
+  out.inference = inferred.get();
+  if (!toolRule) return out;
+  options.toolsWithBitmap = toolsWithBitmap(out.inference.setup);
+  std::vector<Diagnostic> tools = gcode::checkToolBitmaps(program, options);
+  if (tools.empty()) return out;
+  out.diagnostics.insert(out.diagnostics.end(), std::make_move_iterator(tools.begin()), std::make_move_iterator(tools.end()));
+  std::stable_sort(out.diagnostics.begin(), out.diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {
+    if (a.range.file != b.range.file) return a.range.file < b.range.file;
+    if (a.range.line != b.range.line) return a.range.line < b.range.line;
+    return a.range.column < b.range.column;
+  });
+  return out;
+}
+
+}  // namespace klueng::core::machine::detail
