@@ -6,7 +6,6 @@
 #include "gui/code_editor.h"
 #include "gui/language.h"
 #include "gui/run_controller.h"
-#include "klueng/core/gcode/parser.h"
 #include "klueng/core/machine/explain.h"
 
 namespace klueng::gui {
@@ -33,20 +32,15 @@ QString ExplainBar::explainLine(int fileLine) const {
   const QTextBlock line = editor_->document()->findBlockByNumber(editor_->editorLineFromFileLine(fileLine));
   if (!line.isValid()) return {};
   const std::string text = line.text().toStdString();
-  const core::gcode::Program program = core::gcode::parse(text, fileLine);
-  if (program.blocks.empty()) return {};
-  const core::gcode::Block& block = program.blocks.front();
-  const core::Lang lang = Language::coreLang();
-  const core::gcode::Dialect dialect = editor_->dialect();
   // The state it left the last time it ran (up to where the run stands).
+  const core::machine::StateSnapshot* after = nullptr;
   if (const core::machine::Timeline* t = runner_->timeline()) {
-    for (int k = runner_->currentSnapshot(); k >= 0; --k) {
+    for (int k = runner_->currentSnapshot(); k >= 0 && !after; --k) {
       const core::machine::StateSnapshot& s = t->snapshots[static_cast<std::size_t>(k)];
-      if (s.file == 0 && s.line == fileLine)
-        return QString::fromStdString(core::machine::explainBlock(block, s, dialect, lang, text));
+      if (s.file == 0 && s.line == fileLine) after = &s;
     }
   }
-  return QString::fromStdString(core::machine::explainWords(block, dialect, lang, text));
+  return QString::fromStdString(core::machine::explainLineText(text, fileLine, after, editor_->dialect(), Language::coreLang()));
 }
 
 void ExplainBar::refresh() {
@@ -63,14 +57,12 @@ void ExplainBar::refresh() {
   }
   // The arrow's block, with the state it leaves (the whole run is known ahead).
   const QTextBlock b = editor_->document()->findBlockByNumber(editor_->editorLineFromFileLine(line));
-  const std::string text = b.text().toStdString();
-  const core::gcode::Program program = core::gcode::parse(text, line);
-  if (program.blocks.empty()) {
+  std::string what = core::machine::explainLineText(b.text().toStdString(), line, &t->snapshots[static_cast<std::size_t>(k)],
+                                                    editor_->dialect(), Language::coreLang());
+  if (what.empty()) {
     hide();
     return;
   }
-  std::string what = core::machine::explainBlock(program.blocks.front(), t->snapshots[static_cast<std::size_t>(k)],
-                                                 editor_->dialect(), Language::coreLang(), text);
   // Paused inside a cycle: which pass.
   const int move = t->moveAt(runner_->currentTime());
   const core::machine::StateSnapshot& snap = t->snapshots[static_cast<std::size_t>(k)];

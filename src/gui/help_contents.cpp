@@ -175,9 +175,8 @@ void HelpContents::rebuild() {
   QTextDocument* doc = browser_->document();
   doc->addResource(QTextDocument::ImageResource, QUrl(QStringLiteral("help-tips.png")), tipNumbersPicture(thai));
   for (int number : {71, 72, 73, 76})
-    if (const std::string example = core::machine::workedExample('G', number, dialect_); !example.empty())
-      doc->addResource(QTextDocument::ImageResource, QUrl(QStringLiteral("help-path-G%1.png").arg(number)),
-                       examplePathPicture(example, dialect_));
+    doc->addResource(QTextDocument::ImageResource, QUrl(QStringLiteral("help-path-G%1.png").arg(number)),
+                     examplePathPicture('G', number, dialect_));
   search_->setPlaceholderText(tr("Search: G71, roughing, กลึงปอกหยาบ ..."));
   browser_->setHtml(buildHtml(thai, dialect_));
   if (!search_->text().isEmpty()) search(search_->text());

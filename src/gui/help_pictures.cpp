@@ -4,9 +4,8 @@
 #include <QPainterPath>
 #include <algorithm>
 
-#include "klueng/core/gcode/parser.h"
 #include "klueng/core/geometry.h"
-#include "klueng/core/machine/interpreter.h"
+#include "klueng/core/machine/help.h"
 
 namespace klueng::gui {
 
@@ -39,11 +38,9 @@ QImage tipNumbersPicture(bool thai) {
   return img;
 }
 
-QImage examplePathPicture(const std::string& gcode, core::gcode::Dialect dialect) {
-  const core::gcode::Program program = core::gcode::parse(gcode, 1);
-  core::machine::RunOptions options;
-  options.dialect = dialect;
-  const core::machine::Timeline t = core::machine::interpret(program, core::machine::MachineSetup{}, options);
+QImage examplePathPicture(char letter, int number, core::gcode::Dialect dialect) {
+  std::vector<bool> rapid;
+  const std::vector<core::Segment> path = core::machine::workedExamplePath(letter, number, dialect, &rapid);
   // The window: the bar's right half (Z -60..8, radius 0..30), 7 px per mm.
   const double zMin = -60.0, zMax = 8.0, rMax = 30.0, scale = 7.0;
   QImage img(static_cast<int>((zMax - zMin) * scale), static_cast<int>(rMax * scale) + 10, QImage::Format_RGB32);
@@ -56,13 +53,11 @@ QImage examplePathPicture(const std::string& gcode, core::gcode::Dialect dialect
   p.drawRect(QRectF(at(core::zx(-100.0, 25.0)), at(core::zx(0.0, 0.0))));  // the bar, Ø50
   p.setPen(QPen(QColor(120, 120, 120), 1, Qt::DashDotLine));
   p.drawLine(at(core::zx(zMin, 0.0)), at(core::zx(zMax, 0.0)));  // centre line
-  for (const core::machine::Move& m : t.moves) {
-    if (m.kind == core::machine::MoveKind::Dwell) continue;
-    const bool rapid = m.kind == core::machine::MoveKind::Rapid;
-    p.setPen(rapid ? QPen(QColor(40, 90, 200), 1, Qt::DashLine) : QPen(QColor(200, 0, 0), 1.6));
-    QPainterPath path(at(m.path.start));
-    for (int i = 1; i <= 16; ++i) path.lineTo(at(m.path.pointAt(i / 16.0)));
-    p.drawPath(path);
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    p.setPen(rapid[i] ? QPen(QColor(40, 90, 200), 1, Qt::DashLine) : QPen(QColor(200, 0, 0), 1.6));
+    QPainterPath line(at(path[i].start));
+    for (int k = 1; k <= 16; ++k) line.lineTo(at(path[i].pointAt(k / 16.0)));
+    p.drawPath(line);
   }
   return img;
 }

@@ -11,7 +11,7 @@
 namespace klueng::gui {
 
 QImage tipNumbersPicture(bool thai);
-// The moves of `gcode` (a worked example) over a Ø50 x 100 bar: cuts red, rapids dashed blue.
-QImage examplePathPicture(const std::string& gcode, core::gcode::Dialect dialect);
+// The moves of a code's worked example over a Ø50 x 100 bar: cuts red, rapids dashed blue.
+QImage examplePathPicture(char letter, int number, core::gcode::Dialect dialect);
 
 }  // namespace klueng::gui

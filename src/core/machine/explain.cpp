@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "klueng/core/gcode/parser.h"
 #include "klueng/core/gcode/word_format.h"
 
 namespace klueng::core::machine {
@@ -312,6 +313,13 @@ std::string explainPass(const Timeline& timeline, int moveIndex, Lang lang) {
 std::string explainBlock(const gcode::Block& block, const StateSnapshot& after, gcode::Dialect dialect, Lang lang,
                          std::string_view statementText) {
   return Explainer(block, &after, dialect, lang, statementText).run();
+}
+
+std::string explainLineText(std::string_view lineText, int fileLine, const StateSnapshot* after, gcode::Dialect dialect,
+                            Lang lang) {
+  const gcode::Program program = gcode::parse(lineText, fileLine);
+  if (program.blocks.empty()) return {};
+  return Explainer(program.blocks.front(), after, dialect, lang, lineText).run();
 }
 
 std::string explainWords(const gcode::Block& block, gcode::Dialect dialect, Lang lang, std::string_view statementText) {

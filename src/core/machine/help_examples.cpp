@@ -6,7 +6,9 @@
 #include <array>
 #include <string>
 
+#include "klueng/core/gcode/parser.h"
 #include "klueng/core/machine/help.h"
+#include "klueng/core/machine/interpreter.h"
 
 namespace klueng::core::machine {
 
@@ -144,6 +146,21 @@ std::vector<std::pair<std::string, std::string>> workedExampleFiles(char letter,
   if (letter == 'M' && (number == 98 || number == 99) && dialect == Dialect::Classic)
     return {{"O1234.nc", "O1234 (one pass)\nG01 X46. F0.2\nZ-10.\nG00 X52. Z2.\nM99\n"}};
   return {};
+}
+
+std::vector<Segment> workedExamplePath(char letter, int number, gcode::Dialect dialect, std::vector<bool>* rapid) {
+  std::vector<Segment> out;
+  const std::string text = workedExample(letter, number, dialect);
+  if (text.empty()) return out;
+  RunOptions options;
+  options.dialect = dialect;
+  const Timeline t = interpret(gcode::parse(text, 1), MachineSetup{}, options);
+  for (const Move& m : t.moves) {
+    if (m.kind == MoveKind::Dwell) continue;
+    out.push_back(m.path);
+    if (rapid) rapid->push_back(m.kind == MoveKind::Rapid);
+  }
+  return out;
 }
 
 std::string workedExample(char letter, int number, gcode::Dialect dialect) {

@@ -148,6 +148,15 @@ TEST(Explain, WithoutARunTheWordsAloneAreSaid) {
   EXPECT_EQ(explainWords(p.blocks[0], gcode::Dialect::Fanuc, Lang::En), "G01 X30. Z-20. F0.2: cut in a straight line to Ø30 at Z-20, feed F0.2");
 }
 
+TEST(Explain, ALineOfTextAsTheEditorHoldsIt) {
+  EXPECT_EQ(explainLineText("#1=2", 6, nullptr, gcode::Dialect::Fanuc, Lang::En), "#1=2: give a macro variable a value");
+  EXPECT_EQ(explainLineText("G01 X30. Z-20. F0.2 (finish)", 9, nullptr, gcode::Dialect::Fanuc, Lang::En),
+            "G01 X30. Z-20. F0.2: cut in a straight line to Ø30 at Z-20, feed F0.2");
+  EXPECT_EQ(explainLineText("(only a comment)", 3, nullptr, gcode::Dialect::Fanuc, Lang::En), "");
+  const Ran r = run(kTurning);
+  EXPECT_EQ(explainLineText("G01 X30. Z-20. F0.2", 6, &r.after(6), gcode::Dialect::Fanuc, Lang::En), r.explain(6, Lang::En));
+}
+
 TEST(Explain, EveryCodeOfTheTableHasASentenceInBothLanguages) {
   int rows = 0;
   for (const gcode::CodeInfo& row : gcode::codeTable())

@@ -70,6 +70,17 @@ TEST(Help, EveryCodeHasAWorkedExampleThatRunsClean) {
   EXPECT_TRUE(workedExample('G', 999, gcode::Dialect::Fanuc).empty());
 }
 
+TEST(Help, TheG71PictureIsTheExamplesRealPath) {
+  std::vector<bool> rapid;
+  const std::vector<Segment> path = workedExamplePath('G', 71, gcode::Dialect::Fanuc, &rapid);
+  ASSERT_EQ(path.size(), rapid.size());
+  // Roughing passes along Z at the profile's diameters: cuts that reach Z-45 at Ø40 (radius 20.2 with U0.4).
+  int cuts = 0;
+  for (std::size_t i = 0; i < path.size(); ++i) cuts += rapid[i] ? 0 : 1;
+  EXPECT_GT(cuts, 10);
+  EXPECT_TRUE(workedExamplePath('G', 999, gcode::Dialect::Fanuc).empty());
+}
+
 TEST(Help, SearchFindsRoughingInEnglishAndInThai) {
   for (std::string_view q : {"roughing", "กลึงปอกหยาบ", "rough turning"}) {
     const std::vector<HelpHit> hits = searchHelp(q, gcode::Dialect::Fanuc);

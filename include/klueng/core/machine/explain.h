@@ -30,6 +30,12 @@ std::string explainBlock(const gcode::Block& block, const StateSnapshot& after, 
 // rapids. Empty when the block makes one pass or less.
 std::string explainPass(const Timeline& timeline, int moveIndex, Lang lang);
 
+// One line of program text as the editor holds it: parsed here (the GUI parses
+// no G-code), explained with the state `after` it ran, or from its words alone
+// when `after` is null. Empty when the line holds no block.
+std::string explainLineText(std::string_view lineText, int fileLine, const StateSnapshot* after, gcode::Dialect dialect,
+                            Lang lang);
+
 // The same without a run: what the words alone say (no rpm, feed mode unknown).
 std::string explainWords(const gcode::Block& block, gcode::Dialect dialect, Lang lang, std::string_view statementText = {});
 

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "klueng/core/comp/segment.h"
 #include "klueng/core/gcode/code_table.h"
 
 namespace klueng::core::machine {
@@ -17,6 +18,10 @@ namespace klueng::core::machine {
 std::string workedExample(char letter, int number, gcode::Dialect dialect);
 // Subprogram files the example calls (name, text), to put beside it in its folder.
 std::vector<std::pair<std::string, std::string>> workedExampleFiles(char letter, int number, gcode::Dialect dialect);
+
+// The moves a code's worked example makes (for a picture of them): the example
+// run with the default machine; empty when the dialect has no such code.
+std::vector<Segment> workedExamplePath(char letter, int number, gcode::Dialect dialect, std::vector<bool>* rapid = nullptr);
 
 struct HelpHit {
   char letter = 'G';
