@@ -56,20 +56,10 @@ class TimelineBuilder final : public MachineSink {
   void dwell(const DwellCall& d) override {
     if (halted()) return;
     Move mv;
+    stamp(mv, d, d.seconds);
     mv.kind = MoveKind::Dwell;
-    mv.line = d.line;
-    mv.blockIndex = d.blockIndex;
-    mv.file = d.file;
-    mv.callLevel = d.callLevel;
-    mv.program = d.program;
-    mv.tStart = time_;
-    mv.tEnd = time_ + d.seconds;
     mv.path = Segment::line(position_, position_);
-    mv.noseCentre = -d.ctx.noseRadius * tipVector(d.ctx.tip);
     mv.rpm = mv.rpmEnd = spindleRpm(d.ctx, xOf(position_));
-    mv.tool = d.ctx.tool;
-    mv.offset = d.ctx.offset;
-    mv.spindle = d.ctx.spindle;
     time_ = mv.tEnd;
     out_.moves.push_back(mv);
   }
@@ -93,26 +83,32 @@ class TimelineBuilder final : public MachineSink {
   double elapsed() const override { return time_; }
 
  private:
+  // What every move takes from its call: the block, the time from now, the tool.
+  template <typename Call>
+  void stamp(Move& mv, const Call& c, double seconds) const {
+    mv.line = c.line;
+    mv.blockIndex = c.blockIndex;
+    mv.file = c.file;
+    mv.callLevel = c.callLevel;
+    mv.program = c.program;
+    mv.tStart = time_;
+    mv.tEnd = time_ + seconds;
+    mv.noseCentre = -c.ctx.noseRadius * tipVector(c.ctx.tip);
+    mv.tool = c.ctx.tool;
+    mv.offset = c.ctx.offset;
+    mv.spindle = c.ctx.spindle;
+  }
+
   void push(const MotionCall& m, const Segment& path, double seconds, double feed, double up = 0.0,
             double down = 0.0) {
     Move& mv = out_.moves.emplace_back();
+    stamp(mv, m, seconds);
     mv.kind = m.kind;
-    mv.line = m.line;
-    mv.blockIndex = m.blockIndex;
-    mv.file = m.file;
-    mv.callLevel = m.callLevel;
-    mv.program = m.program;
-    mv.tStart = time_;
-    mv.tEnd = time_ + seconds;
     mv.path = path;
-    mv.noseCentre = -m.ctx.noseRadius * tipVector(m.ctx.tip);
     mv.feed = feed;
     mv.rpm = spindleRpm(m.ctx, xOf(path.start));
     mv.rpmEnd = spindleRpm(m.ctx, xOf(path.end));
     mv.lead = m.lead;
-    mv.tool = m.ctx.tool;
-    mv.offset = m.ctx.offset;
-    mv.spindle = m.ctx.spindle;
     mv.compensated = m.compensated;
     mv.rampUp = static_cast<float>(up);
     mv.rampDown = static_cast<float>(down);
