@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "cli_common.h"
+#include "png_writer.h"
 #include "commands.h"
 #include "klueng/core/cut/class_grading.h"
 #include "klueng/core/io/program_file.h"
@@ -26,12 +27,16 @@ using namespace klueng::core;
 
 constexpr const char* kClassUsage =
     "usage: klueng-cli class DIR --reference REF.nc [--tolerance 0.05] [--csv OUT.csv]\n"
-    "                            [--dialect fanuc|haas|classic] [--config DIR] [--lang en|th]\n"
+    "                            [--pdf OUT.pdf [--sheets]] [--dialect fanuc|haas|classic]\n"
+    "                            [--config DIR] [--lang en|th]\n"
     "  every program in DIR against REF.nc: errors, alarm, cycle time, the largest leftover\n"
-    "  and gouge on the diameter (mm), pass when both are within --tolerance (mm)\n";
+    "  and gouge on the diameter (mm), pass when both are within --tolerance (mm);\n"
+    "  --pdf: the same table as a page (Thai with --lang th), --sheets: then every\n"
+    "  student's program sheet and drawing in the same PDF\n";
 
 struct ClassOptions {
-  std::string dir, reference, csv, configDir;
+  std::string dir, reference, csv, pdf, configDir;
+  bool sheets = false;
   double tolerance = 0.05;
   gcode::Dialect dialect = gcode::Dialect::Fanuc;
   Lang lang = langFromLocale();
@@ -44,6 +49,8 @@ std::optional<ClassOptions> parse(const std::vector<std::string>& args) {
     const bool hasValue = i + 1 < args.size();
     if (a == "--reference" && hasValue) o.reference = args[++i];
     else if (a == "--csv" && hasValue) o.csv = args[++i];
+    else if (a == "--pdf" && hasValue) o.pdf = args[++i];
+    else if (a == "--sheets") o.sheets = true;
     else if (a == "--config" && hasValue) o.configDir = args[++i];
     else if (a == "--tolerance" && hasValue) {
       char* end = nullptr;
@@ -65,6 +72,44 @@ std::optional<ClassOptions> parse(const std::vector<std::string>& args) {
   }
   if (o.dir.empty() || o.reference.empty()) return std::nullopt;
   return o;
+}
+
+std::string number(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+// The table as the picture module draws it (klueng-png.so, opened only for --pdf).
+bool writePdf(const ClassOptions& o, const std::vector<cut::ClassRow>& rows, const std::string& configDir,
+              std::string& error) {
+  std::vector<std::string> cells;
+  std::vector<std::string> paths;
+  for (const cut::ClassRow& r : rows) {
+    cells.push_back(r.file);
+    cells.push_back(r.pass ? "pass" : "fail");
+    cells.push_back(r.graded.errors > 0 ? std::to_string(r.graded.errors) + " (" + r.graded.firstError + ")" : "0");
+    cells.push_back(r.graded.alarm);
+    cells.push_back(r.graded.errors == 0 ? number(r.graded.cycleTime, 1) : "");
+    cells.push_back(r.compared ? number(r.deviation.leftover, 3) : "");
+    cells.push_back(r.compared ? number(r.deviation.gouge, 3) : "");
+    paths.push_back(r.path);
+  }
+  std::vector<const char*> cellPtrs, pathPtrs;
+  for (const std::string& c : cells) cellPtrs.push_back(c.c_str());
+  for (const std::string& p : paths) pathPtrs.push_back(p.c_str());
+  const std::string reference = std::filesystem::path(o.reference).filename().string();
+  KluengClassPdf in{};
+  in.thai = o.lang == Lang::Th ? 1 : 0;
+  in.reference = reference.c_str();
+  in.tolerance = o.tolerance;
+  in.rows = static_cast<int>(rows.size());
+  in.cells = cellPtrs.data();
+  in.sheets = o.sheets ? static_cast<int>(rows.size()) : 0;
+  in.sheetPaths = pathPtrs.data();
+  in.configDir = configDir.c_str();
+  in.dialect = static_cast<int>(o.dialect);
+  return writeClassPdf(in, o.pdf, &error);
 }
 
 }  // namespace
@@ -109,6 +154,10 @@ int runClass(const std::vector<std::string>& args) {
     std::fputs(table.c_str(), stdout);
   } else if (!io::writeTextFileAtomic(o.csv, table, &error)) {
     std::fprintf(stderr, "klueng-cli class: cannot write %s: %s\n", o.csv.c_str(), error.c_str());
+    return 1;
+  }
+  if (!o.pdf.empty() && !writePdf(o, rows, config.dir, error)) {
+    std::fprintf(stderr, "klueng-cli class: cannot write %s: %s\n", o.pdf.c_str(), error.c_str());
     return 1;
   }
   std::fprintf(stderr, "%zu programs: %d pass, %zu fail\n", rows.size(), passed, rows.size() - static_cast<std::size_t>(passed));

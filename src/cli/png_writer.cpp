@@ -16,10 +16,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The module's entry point, opened once per process; nullptr (and why) when it cannot be found.
-KluengSectionPngFn loadModule(std::string* why) {
+// The module, opened once per process; nullptr (and why) when it cannot be found.
+void* openModule(std::string* why) {
   static std::string failure;
-  static const KluengSectionPngFn fn = []() -> KluengSectionPngFn {
+  static void* const handle = []() -> void* {
     std::error_code ec;
     const fs::path self = fs::read_symlink("/proc/self/exe", ec);
     if (ec) {
@@ -29,20 +29,28 @@ KluengSectionPngFn loadModule(std::string* why) {
     for (const fs::path& candidate : {self.parent_path() / "klueng-png.so",
                                       self.parent_path() / KLUENG_LIBDIR_FROM_BIN / "klueng-png.so"}) {
       if (!fs::exists(candidate, ec)) continue;
-      void* handle = ::dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL);
-      if (!handle) {
-        failure = std::string("cannot open the picture module: ") + ::dlerror();
-        return nullptr;
-      }
-      if (auto* entry = reinterpret_cast<KluengSectionPngFn>(::dlsym(handle, "klueng_section_png"))) return entry;
-      failure = candidate.string() + " is not Klueng's picture module";
-      return nullptr;
+      void* h = ::dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL);
+      if (!h) failure = std::string("cannot open the picture module: ") + ::dlerror();
+      return h;
     }
     failure = "the picture module klueng-png.so is not installed beside " + self.string();
     return nullptr;
   }();
-  if (!fn && why) *why = failure;
-  return fn;
+  if (!handle && why) *why = failure;
+  return handle;
+}
+
+// One entry point of the module; nullptr (and why) when it is not there.
+void* moduleSymbol(const char* name, std::string* why) {
+  void* handle = openModule(why);
+  if (!handle) return nullptr;
+  void* symbol = ::dlsym(handle, name);
+  if (!symbol && why) *why = std::string("klueng-png.so has no ") + name + ": not Klueng's picture module";
+  return symbol;
+}
+
+KluengSectionPngFn loadModule(std::string* why) {
+  return reinterpret_cast<KluengSectionPngFn>(moduleSymbol("klueng_section_png", why));
 }
 
 }  // namespace
@@ -58,6 +66,29 @@ bool writeSectionPng(const render::SectionPicture& picture, const std::string& p
   }
   const std::unique_ptr<char, decltype(&std::free)> owned(bytes, &std::free);
   return core::io::writeTextFileAtomic(path, std::string_view(bytes, size), error);
+}
+
+}  // namespace klueng::cli
+
+namespace klueng::cli {
+
+bool writeClassPdf(KluengClassPdf input, const std::string& path, std::string* error) {
+  const auto draw = reinterpret_cast<KluengClassPdfFn>(moduleSymbol("klueng_class_pdf", error));
+  if (!draw) return false;
+  // Written beside, then renamed: a reader never sees half a report.
+  const std::string partial = path + ".partial";
+  input.path = partial.c_str();
+  char why[512] = {0};
+  if (!draw(&input, why, sizeof why)) {
+    if (error) *error = why;
+    std::error_code ec;
+    fs::remove(partial, ec);
+    return false;
+  }
+  std::error_code ec;
+  fs::rename(partial, path, ec);
+  if (ec && error) *error = ec.message();
+  return !ec;
 }
 
 }  // namespace klueng::cli

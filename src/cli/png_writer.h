@@ -4,10 +4,13 @@
 // installed, and writes the file atomically.
 #include <string>
 
+#include "render/class_pdf_input.h"
 #include "render/section_picture.h"
 
 namespace klueng::cli {
 
 bool writeSectionPng(const render::SectionPicture& picture, const std::string& path, std::string* error);
+// klueng-cli class --pdf: the grades (and with sheets, each student's sheets) as one PDF at `path`.
+bool writeClassPdf(KluengClassPdf input, const std::string& path, std::string* error);
 
 }  // namespace klueng::cli

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <algorithm>
 #include <map>
 #include <sstream>
 #include <string>
@@ -104,6 +105,41 @@ TEST(CliClass, ThirtyStudentsGetTheRightPassOrFail) {
     }
   }
   EXPECT_EQ(rows, 30);
+}
+
+std::string pdfText(const fs::path& pdf, const std::string& options = "") {
+  std::string text;
+  FILE* pipe = ::popen(("pdftotext " + options + " '" + pdf.string() + "' - 2>/dev/null").c_str(), "r");
+  if (!pipe) return text;
+  char buf[4096];
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) text.append(buf, n);
+  ::pclose(pipe);
+  return text;
+}
+
+TEST(CliClass, ThePdfHasTheTableAndWithSheetsEveryStudentsSheets) {
+  const fs::path dir = fs::temp_directory_path() / "klueng_cli_class_pdf_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "class");
+  const std::string reference = slurp(fs::path(KLUENG_SAMPLES_DIR) / "01-step-shaft.txt");
+  std::ofstream(dir / "class" / "anna.nc", std::ios::binary) << reference;
+  std::ofstream(dir / "class" / "boon.nc", std::ios::binary) << replaced(reference, "N390 G01 Z-40.", "N390 G01 X39.8 Z-40.");
+  const std::string ref = std::string(KLUENG_SAMPLES_DIR) + "/01-step-shaft.txt";
+  std::string err;
+  ASSERT_EQ(run("'" + (dir / "class").string() + "' --reference '" + ref + "' --csv '" + (dir / "g.csv").string() +
+                    "' --pdf '" + (dir / "grades.pdf").string() + "'", &err), 0) << err;
+  const std::string table = pdfText(dir / "grades.pdf");
+  for (const char* s : {"Class grades", "01-step-shaft.txt", "2 programs: 1 pass, 1 fail", "anna.nc", "boon.nc", "0.191"})
+    EXPECT_NE(table.find(s), std::string::npos) << s << "\n" << table;
+  EXPECT_FALSE(fs::exists(dir / "grades.pdf.partial"));
+  // In Thai, with each student's program sheet and drawing: 1 + 2 x 2 pages.
+  ASSERT_EQ(run("'" + (dir / "class").string() + "' --reference '" + ref + "' --csv '" + (dir / "g.csv").string() +
+                    "' --pdf '" + (dir / "sheets.pdf").string() + "' --sheets --lang th", &err), 0) << err;
+  const std::string all = pdfText(dir / "sheets.pdf");
+  // (pdftotext splits some Thai marks from their letters: words without them.)
+  for (const char* s : {"ผลการตรวจงาน", "ชุดรหัส", "เอกสารแสดงภาพชิ้นงาน", "N390 G01 X39.8 Z-40."})
+    EXPECT_NE(all.find(s), std::string::npos) << s;
+  EXPECT_EQ(std::count(all.begin(), all.end(), '\f'), 5);  // pdftotext ends each page with a form feed
 }
 
 TEST(CliClass, ABadReferenceOrBadOptionsExitTwo) {

@@ -1,0 +1,138 @@
+// The class grading report (issue 11): a summary table of every student, then,
+// with --sheets, each student's program sheet and drawing, in one PDF.
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QGuiApplication>
+#include <QPageLayout>
+#include <QPainter>
+#include <QPdfWriter>
+#include <QString>
+#include <algorithm>
+#include <cstring>
+
+#include "klueng/core/io/program_file.h"
+#include "klueng/core/machine/setup_files.h"
+#include "render/class_pdf_input.h"
+#include "render/report_sheets.h"
+
+namespace klueng::render {
+
+namespace {
+
+QString cell(const KluengClassPdf& in, int row, int column) {
+  return QString::fromUtf8(in.cells[static_cast<std::size_t>(row) * 7 + static_cast<std::size_t>(column)]);
+}
+
+// The summary table, as many pages as it needs. Returns false when nothing could be drawn.
+void paintSummary(QPainter& p, QPdfWriter& writer, const KluengClassPdf& in) {
+  const bool thai = in.thai != 0;
+  const ReportLanguage lang = thai ? ReportLanguage::Thai : ReportLanguage::English;
+  const double mm = writer.logicalDpiX() / 25.4;
+  const QRectF page(0, 0, writer.width(), writer.height());
+  const QStringList header = thai ? QStringList{QStringLiteral("โปรแกรม"), QStringLiteral("ผล"), QStringLiteral("ข้อผิดพลาด"),
+                                                QStringLiteral("สัญญาณเตือน"), QStringLiteral("เวลา (วินาที)"),
+                                                QStringLiteral("เนื้อเหลือ (มม.)"), QStringLiteral("กินเนื้อเกิน (มม.)")}
+                                  : QStringList{QStringLiteral("Program"), QStringLiteral("Result"), QStringLiteral("Errors"),
+                                                QStringLiteral("Alarm"), QStringLiteral("Cycle time (s)"),
+                                                QStringLiteral("Leftover (mm)"), QStringLiteral("Gouge (mm)")};
+  const double widths[7] = {0.19, 0.08, 0.17, 0.13, 0.13, 0.15, 0.15};
+  const double rowHeight = 6.5 * mm, top = 30 * mm;
+  const int perPage = std::max(1, static_cast<int>((page.height() - top - 10 * mm) / rowHeight) - 1);
+  int passed = 0;
+  for (int r = 0; r < in.rows; ++r) passed += cell(in, r, 1) == QStringLiteral("pass") ? 1 : 0;
+  const QFont titleFont(QString::fromLatin1(kReportFontFamily), 16, QFont::Bold);
+  const QFont textFont(QString::fromLatin1(kReportFontFamily), 9);
+  const QFont boldFont(QString::fromLatin1(kReportFontFamily), 9, QFont::Bold);
+  for (int first = 0, pageNo = 0; first < in.rows || pageNo == 0; first += perPage, ++pageNo) {
+    if (pageNo > 0) writer.newPage();
+    p.setPen(Qt::black);
+    p.setFont(titleFont);
+    p.drawText(QRectF(0, 0, page.width(), 10 * mm), Qt::AlignLeft | Qt::AlignVCenter,
+               thai ? QStringLiteral("ผลการตรวจงานทั้งชั้นเรียน") : QStringLiteral("Class grades"));
+    p.setFont(textFont);
+    const QString against = thai ? QStringLiteral("เทียบกับ %1 · พิกัดความเผื่อ %2 มม. บนเส้นผ่าศูนย์กลาง · %3")
+                                 : QStringLiteral("Against %1 · tolerance %2 mm on the diameter · %3");
+    const QString counts = thai ? QStringLiteral("%1 โปรแกรม: ผ่าน %2 ไม่ผ่าน %3") : QStringLiteral("%1 programs: %2 pass, %3 fail");
+    p.drawText(QRectF(0, 11 * mm, page.width(), 6 * mm), Qt::AlignLeft | Qt::AlignVCenter,
+               against.arg(QString::fromUtf8(in.reference)).arg(in.tolerance, 0, 'f', 3).arg(reportDate(QDate::currentDate(), lang)));
+    p.drawText(QRectF(0, 17 * mm, page.width(), 6 * mm), Qt::AlignLeft | Qt::AlignVCenter,
+               counts.arg(in.rows).arg(passed).arg(in.rows - passed));
+    double y = top;
+    auto row = [&](const QStringList& texts, bool head, int index) {
+      double x = 0;
+      if (!head && index % 2 == 1) p.fillRect(QRectF(0, y, page.width(), rowHeight), QColor(242, 242, 242));
+      for (int c = 0; c < 7; ++c) {
+        const double w = widths[c] * page.width();
+        p.setFont(head ? boldFont : textFont);
+        p.setPen(!head && c == 1 ? (texts[c] == QStringLiteral("pass") ? QColor(0, 120, 0) : QColor(190, 0, 0)) : QColor(Qt::black));
+        QString text = texts[c];
+        if (!head && c == 1 && thai) text = text == QStringLiteral("pass") ? QStringLiteral("ผ่าน") : QStringLiteral("ไม่ผ่าน");
+        p.drawText(QRectF(x + 1 * mm, y, w - 2 * mm, rowHeight), Qt::AlignLeft | Qt::AlignVCenter,
+                   p.fontMetrics().elidedText(text, Qt::ElideRight, static_cast<int>(w - 2 * mm)));
+        x += w;
+      }
+      y += rowHeight;
+    };
+    row(header, true, 0);
+    p.setPen(QPen(Qt::black, 0.3 * mm));
+    p.drawLine(QPointF(0, y), QPointF(page.width(), y));
+    for (int r = first; r < std::min(in.rows, first + perPage); ++r) {
+      QStringList texts;
+      for (int c = 0; c < 7; ++c) texts << cell(in, r, c);
+      row(texts, false, r);
+    }
+  }
+}
+
+}  // namespace
+
+}  // namespace klueng::render
+
+extern "C" __attribute__((visibility("default"))) int klueng_class_pdf(const KluengClassPdf* in, char* error,
+                                                                       std::size_t errorSize) {
+  using namespace klueng;
+  auto fail = [&](const QString& why) {
+    if (error && errorSize > 0) std::strncpy(error, why.toUtf8().constData(), errorSize - 1), error[errorSize - 1] = '\0';
+    return 0;
+  };
+  if (!in || !in->path) return fail(QStringLiteral("no output file"));
+  // Text needs Qt's font database, and that a GUI application object: an
+  // offscreen one, made once (the CLI has no window and no display).
+  if (!QCoreApplication::instance()) {
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+    static int argc = 1;
+    static char name[] = "klueng-cli";
+    static char* argv[] = {name, nullptr};
+    static QGuiApplication* app = new QGuiApplication(argc, argv);
+    (void)app;
+  }
+  QPdfWriter writer(QString::fromUtf8(in->path));
+  writer.setResolution(300);
+  writer.setPageSize(QPageSize(QPageSize::A4));
+  writer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
+  QPainter painter;
+  if (!painter.begin(&writer)) return fail(QStringLiteral("cannot write %1").arg(QString::fromUtf8(in->path)));
+  render::paintSummary(painter, writer, *in);
+  if (in->sheets > 0) {
+    const core::machine::LoadedSetup setup = core::machine::loadMachineSetup(in->configDir ? in->configDir : "");
+    const auto dialect = static_cast<core::gcode::Dialect>(in->dialect);
+    const render::ReportLanguage lang = in->thai ? render::ReportLanguage::Thai : render::ReportLanguage::English;
+    for (int i = 0; i < in->sheets; ++i) {
+      const auto file = core::io::readProgramFile(in->sheetPaths[i]);
+      if (!file.value) continue;  // unreadable: its row in the table says so
+      render::ReportData data;
+      data.program = *file.value;
+      data.fileName = QFileInfo(QString::fromUtf8(in->sheetPaths[i])).fileName();
+      data.part = render::finishedPart(data.program, setup.setup, dialect, lang, &data.partNote);
+      render::addCycleTimes(data, setup.setup, dialect);
+      writer.setPageOrientation(QPageLayout::Portrait);
+      writer.newPage();
+      render::paintProgramSheet(painter, writer, data, lang);
+      writer.setPageOrientation(QPageLayout::Landscape);
+      writer.newPage();
+      render::paintDrawingSheet(painter, writer, data, lang);
+    }
+  }
+  painter.end();
+  return 1;
+}
