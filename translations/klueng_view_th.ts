@@ -267,6 +267,10 @@
         <translation>เวลา</translation>
     </message>
     <message>
+        <source>T%1: %2</source>
+        <translation>T%1: %2</translation>
+    </message>
+    <message>
         <source>Machine time: elapsed / cycle time of the whole program (min:s)</source>
         <translation>เวลาเครื่อง: เวลาที่ผ่านไป / เวลาทำงานของทั้งโปรแกรม (นาที:วินาที)</translation>
     </message>

@@ -158,6 +158,7 @@ RunStatus RunController::status() const {
   s.position = core::zx(setup_.machine.startZ, setup_.machine.startX / 2.0);
   if (!timeline_) return s;
   s.cycleTime = timeline_->cycleTime();
+  s.toolTimes = toolTimes_;
   const machine::Pose pose = machine::poseAt(*timeline_, snapshotIndex_, time_);
   if (!timeline_->moves.empty()) s.position = pose.position;
   if (pose.hasState) {
@@ -297,6 +298,7 @@ void RunController::onPrepared() {
     return;
   }
   timeline_ = result->timeline;
+  toolTimes_ = timeline_ ? timeline_->timeByTool() : std::vector<core::machine::ToolTime>{};
   files_ = result->files;
   cut_ = std::make_unique<core::cut::CutSimulator>(*timeline_, core::cut::CutSetup::from(file_.header, setup_));
   stale_ = false;

@@ -69,6 +69,7 @@ struct RunStatus {
   core::machine::MachineState machine;        // tool, offset, lamps ...
   double time = 0.0;                          // machine seconds since the start
   double cycleTime = 0.0;
+  std::vector<core::machine::ToolTime> toolTimes;  // the cycle time per tool
   int line = 0;                               // file line of the block (0 = none)
 };
 
@@ -187,6 +188,7 @@ class RunController : public QObject {
   bool stale_ = true;
 
   std::shared_ptr<core::machine::Timeline> timeline_;
+  std::vector<core::machine::ToolTime> toolTimes_;  // of timeline_, worked out once
   std::unique_ptr<core::cut::CutSimulator> cut_;
   mutable render::StockShape stockShape_;
   mutable double stockShapeVolume_ = -1.0;

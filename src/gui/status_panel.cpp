@@ -9,6 +9,7 @@
 #include <QLocale>
 #include <QPainter>
 #include <QRadialGradient>
+#include <QStringList>
 
 namespace klueng::gui {
 
@@ -94,6 +95,11 @@ void StatusFields::setStatus(const RunStatus& s) {
                               : QStringLiteral("-"));
   set(Field::Time, s.cycleTime > 0.0 ? QStringLiteral("%1 / %2").arg(formatClock(s.time), formatClock(s.cycleTime))
                                      : QStringLiteral("-"));
+  // The cycle time per tool on hover.
+  QStringList perTool{tr("Machine time: elapsed / cycle time of the whole program (min:s)")};
+  for (const core::machine::ToolTime& t : s.toolTimes)
+    if (t.tool > 0) perTool << tr("T%1: %2").arg(t.tool, 2, 10, QLatin1Char('0')).arg(formatClock(t.seconds));
+  values_[static_cast<int>(Field::Time)]->setToolTip(perTool.join(QLatin1Char('\n')));
   // Short in the bar (a Thai status bar must fit 1366 pixels), in full on hover.
   set(Field::Date, formatShortDate(QDate::currentDate(), uiIsThai()));
   values_[static_cast<int>(Field::Date)]->setToolTip(formatDate(QDate::currentDate(), uiIsThai()));

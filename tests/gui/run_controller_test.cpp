@@ -3,6 +3,7 @@
 // a program with errors, the slow-motion one-pixel rule.
 #include <cmath>
 
+#include <QLabel>
 #include <QApplication>
 #include <QSignalSpy>
 #include <QTest>
@@ -97,6 +98,12 @@ class RunControllerTest : public QObject {
     QVERIFY(tl.cycleTime() > 60.0);
     QVERIFY(rig.fields.fieldText(StatusFields::Field::Time).endsWith(
         QStringLiteral("%1:%2").arg(static_cast<int>(tl.cycleTime() / 60)).arg(std::fmod(tl.cycleTime(), 60.0), 4, 'f', 1, QLatin1Char('0'))));
+    // Per tool on hover: sample 01 cuts with T01 only.
+    QVERIFY(rig.fields.findChildren<QLabel*>().size() > 0);
+    bool perTool = false;
+    for (QLabel* l : rig.fields.findChildren<QLabel*>())
+      perTool |= l->toolTip().contains(QStringLiteral("T01: ") + StatusFields::formatClock(tl.timeByTool().front().seconds));
+    QVERIFY(perTool);
     QCOMPARE(StatusFields::formatClock(7.46), QStringLiteral("0:07.5"));
     QCOMPARE(StatusFields::formatClock(754.0), QStringLiteral("12:34.0"));
     QCOMPARE(StatusFields::formatClock(59.96), QStringLiteral("1:00.0"));
