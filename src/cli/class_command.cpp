@@ -17,6 +17,7 @@
 #include "png_writer.h"
 #include "commands.h"
 #include "klueng/core/cut/class_grading.h"
+#include "klueng/core/gcode/word_format.h"
 #include "klueng/core/io/program_file.h"
 
 namespace klueng::cli {
@@ -74,12 +75,6 @@ std::optional<ClassOptions> parse(const std::vector<std::string>& args) {
   return o;
 }
 
-std::string number(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
-}
-
 // The table as the picture module draws it (klueng-png.so, opened only for --pdf).
 bool writePdf(const ClassOptions& o, const std::vector<cut::ClassRow>& rows, const std::string& configDir,
               std::string& error) {
@@ -90,9 +85,9 @@ bool writePdf(const ClassOptions& o, const std::vector<cut::ClassRow>& rows, con
     cells.push_back(r.pass ? "pass" : "fail");
     cells.push_back(r.graded.errors > 0 ? std::to_string(r.graded.errors) + " (" + r.graded.firstError + ")" : "0");
     cells.push_back(r.graded.alarm);
-    cells.push_back(r.graded.errors == 0 ? number(r.graded.cycleTime, 1) : "");
-    cells.push_back(r.compared ? number(r.deviation.leftover, 3) : "");
-    cells.push_back(r.compared ? number(r.deviation.gouge, 3) : "");
+    cells.push_back(r.graded.errors == 0 ? gcode::formatFixed(r.graded.cycleTime, 1) : "");
+    cells.push_back(r.compared ? gcode::formatFixed(r.deviation.leftover, 3) : "");
+    cells.push_back(r.compared ? gcode::formatFixed(r.deviation.gouge, 3) : "");
     paths.push_back(r.path);
   }
   std::vector<const char*> cellPtrs, pathPtrs;

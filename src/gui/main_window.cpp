@@ -27,6 +27,7 @@
 #include "gui/code_editor.h"
 #include "gui/diagnostics_panel.h"
 #include "gui/explain_bar.h"
+#include "render/report_sheets.h"
 #include "gui/dialect_offer_bar.h"
 #include "gui/document_manager.h"
 #include "gui/find_dialog.h"
@@ -455,9 +456,9 @@ void MainWindow::onRunStateChanged(RunState state) {
 }
 
 QString MainWindow::formatDuration(double seconds) {
-  const int minutes = static_cast<int>(seconds / 60.0);
-  const double rest = seconds - 60.0 * minutes;
-  return minutes > 0 ? tr("%1 min %2 s").arg(minutes).arg(rest, 0, 'f', 1) : tr("%1 s").arg(seconds, 0, 'f', 1);
+  // As the program sheet says it, in the UI language.
+  return render::durationText(seconds, Language::coreLang() == core::Lang::Th ? render::ReportLanguage::Thai
+                                                                               : render::ReportLanguage::English);
 }
 
 void MainWindow::onAlarm(const core::Diagnostic& alarm) {

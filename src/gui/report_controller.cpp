@@ -39,13 +39,8 @@ render::ReportData ReportController::reportData(const Source& source, bool withP
   data.fileName = source.displayName;
   data.date = QDate::currentDate();
   QApplication::setOverrideCursor(Qt::WaitCursor);
-  render::addCycleTimes(data, source.setup, source.dialect);
+  render::addRunResults(data, source.setup, source.dialect, reportLanguage(), withPart);  // one run for both
   QApplication::restoreOverrideCursor();
-  if (withPart) {
-    QApplication::setOverrideCursor(Qt::WaitCursor);
-    data.part = render::finishedPart(data.program, source.setup, source.dialect, reportLanguage(), &data.partNote);
-    QApplication::restoreOverrideCursor();
-  }
   return data;
 }
 

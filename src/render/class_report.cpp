@@ -123,8 +123,7 @@ extern "C" __attribute__((visibility("default"))) int klueng_class_pdf(const Klu
       render::ReportData data;
       data.program = *file.value;
       data.fileName = QFileInfo(QString::fromUtf8(in->sheetPaths[i])).fileName();
-      data.part = render::finishedPart(data.program, setup.setup, dialect, lang, &data.partNote);
-      render::addCycleTimes(data, setup.setup, dialect);
+      render::addRunResults(data, setup.setup, dialect, lang, true);
       writer.setPageOrientation(QPageLayout::Portrait);
       writer.newPage();
       render::paintProgramSheet(painter, writer, data, lang);

@@ -158,29 +158,52 @@ QString reportDate(const QDate& date, ReportLanguage lang) {
 
 QString kluengVersion() { return QStringLiteral("Klueng %1").arg(QString::fromLatin1(KLUENG_VERSION)); }
 
-StockShape finishedPart(const core::io::ProgramFile& file, const core::machine::MachineSetup& setup,
-                        core::gcode::Dialect dialect, ReportLanguage lang, QString* note) {
+namespace {
+
+// One run of the program for a report: its cycle times into `times` (when
+// given), then its finished part, cut only when `cutPart` (the drawing).
+StockShape runForReport(const core::io::ProgramFile& file, const core::machine::MachineSetup& setup,
+                        core::gcode::Dialect dialect, ReportLanguage lang, QString* note, ReportData* times,
+                        bool cutPart) {
   const StockShape blank = stockShapeFromBlank(file.header.diameterMm(), file.header.lengthMm(), file.header.boreMm());
+  core::machine::JobOptions job;
+  job.run.dialect = dialect;
+  const core::machine::CompiledJob compiled = core::machine::compileJob(file, setup, job);
+  if (times && compiled.timeline) {
+    times->cycleTime = compiled.timeline->cycleTime();
+    times->cycleTimeToAlarm = compiled.timeline->alarm.has_value();
+    times->toolTimes = compiled.timeline->timeByTool();
+  }
+  if (!cutPart) return blank;
   if (file.header.diameterMm() <= 0 || file.header.lengthMm() <= 0) {
     if (note) *note = thai(lang) ? QStringLiteral("ขนาดชิ้นงานไม่ถูกต้อง") : QStringLiteral("The stock size is not valid.");
     return blank;
   }
-  core::machine::JobOptions job;
-  job.run.dialect = dialect;
-  const core::machine::CompiledJob compiled = core::machine::compileJob(file, setup, job);
   if (!compiled.timeline) {
     if (note)
       *note = thai(lang) ? QStringLiteral("โปรแกรมมีข้อผิดพลาด: ภาพนี้แสดงชิ้นงานก่อนกลึง")
                          : QStringLiteral("The program has errors: the drawing shows the uncut bar.");
     return blank;
   }
-  const core::machine::Timeline& timeline = *compiled.timeline;
-  core::cut::CutSimulator cut(timeline, core::cut::CutSetup::from(file.header, setup));
+  core::cut::CutSimulator cut(*compiled.timeline, core::cut::CutSetup::from(file.header, setup));
   cut.runToEnd();
   if (cut.alarm() && note)
     *note = thai(lang) ? QStringLiteral("โปรแกรมหยุดด้วยสัญญาณเตือน: ภาพนี้แสดงชิ้นงานจนถึงจุดที่หยุด")
                        : QStringLiteral("The program stopped on an alarm: the drawing shows the part up to it.");
   return stockShapeFromStock(cut.stock());
+}
+
+}  // namespace
+
+StockShape finishedPart(const core::io::ProgramFile& file, const core::machine::MachineSetup& setup,
+                        core::gcode::Dialect dialect, ReportLanguage lang, QString* note) {
+  return runForReport(file, setup, dialect, lang, note, nullptr, true);
+}
+
+void addRunResults(ReportData& data, const core::machine::MachineSetup& setup, core::gcode::Dialect dialect,
+                   ReportLanguage lang, bool withPart) {
+  const StockShape part = runForReport(data.program, setup, dialect, lang, &data.partNote, &data, withPart);
+  if (withPart) data.part = part;
 }
 
 QString durationText(double seconds, ReportLanguage lang) {
@@ -195,13 +218,7 @@ QString durationText(double seconds, ReportLanguage lang) {
 }
 
 void addCycleTimes(ReportData& data, const core::machine::MachineSetup& setup, core::gcode::Dialect dialect) {
-  core::machine::JobOptions job;
-  job.run.dialect = dialect;
-  const core::machine::CompiledJob compiled = core::machine::compileJob(data.program, setup, job);
-  if (!compiled.timeline) return;
-  data.cycleTime = compiled.timeline->cycleTime();
-  data.cycleTimeToAlarm = compiled.timeline->alarm.has_value();
-  data.toolTimes = compiled.timeline->timeByTool();
+  addRunResults(data, setup, dialect, ReportLanguage::English, false);
 }
 
 namespace {

@@ -57,6 +57,10 @@ struct ReportData {
 
 // Fills data.cycleTime and data.toolTimes by running the program (no cutting).
 void addCycleTimes(ReportData& data, const core::machine::MachineSetup& setup, core::gcode::Dialect dialect);
+// The same and, with `withPart`, data.part and data.partNote as finishedPart
+// gives them — from one run of the program.
+void addRunResults(ReportData& data, const core::machine::MachineSetup& setup, core::gcode::Dialect dialect,
+                   ReportLanguage lang, bool withPart);
 // "3 min 12.4 s" / "3 นาที 12.4 วินาที".
 QString durationText(double seconds, ReportLanguage lang);
 

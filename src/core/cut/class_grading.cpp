@@ -1,4 +1,5 @@
 #include "klueng/core/cut/class_grading.h"
+#include "klueng/core/gcode/word_format.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -22,12 +23,6 @@ std::string csvField(const std::string& s) {
   std::string out = "\"";
   for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
   return out + "\"";
-}
-
-std::string number(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
 }
 
 }  // namespace
@@ -99,9 +94,9 @@ std::string classCsv(const std::vector<ClassRow>& rows) {
   for (const ClassRow& r : rows) {
     out += csvField(r.file) + "," + (r.pass ? "pass" : "fail") + "," + std::to_string(r.graded.errors) + "," +
            csvField(r.graded.firstError) + "," + csvField(r.graded.alarm) + "," +
-           (r.graded.errors == 0 ? number(r.graded.cycleTime, 1) : "") + "," +
-           (r.compared ? number(r.deviation.leftover, 3) + "," + number(r.deviation.leftoverZ, 2) + "," +
-                             number(r.deviation.gouge, 3) + "," + number(r.deviation.gougeZ, 2)
+           (r.graded.errors == 0 ? gcode::formatFixed(r.graded.cycleTime, 1) : "") + "," +
+           (r.compared ? gcode::formatFixed(r.deviation.leftover, 3) + "," + gcode::formatFixed(r.deviation.leftoverZ, 2) + "," +
+                             gcode::formatFixed(r.deviation.gouge, 3) + "," + gcode::formatFixed(r.deviation.gougeZ, 2)
                        : ",,,") +
            "\n";
   }
