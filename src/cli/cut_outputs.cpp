@@ -8,6 +8,7 @@
 
 #include "klueng/core/cut/cut_simulator.h"
 #include "klueng/core/cut/finished_part.h"
+#include "klueng/core/cut/part_features.h"
 #include "png_writer.h"
 #include "render/section_picture.h"
 #include "cli_common.h"
@@ -78,6 +79,11 @@ CutOutcome runCut(const std::string& file, const io::JobHeader& header, const ma
   if (!options.profilePath.empty()) outcome.written = writeText(options.profilePath, part.toCsv()) && outcome.written;
   if (!options.svgPath.empty()) outcome.written = writeText(options.svgPath, part.toSvg()) && outcome.written;
   if (!options.dxfPath.empty()) outcome.written = writeText(options.dxfPath, part.toDxf()) && outcome.written;
+  if (options.features) {
+    const cut::PartFeatures features = cut::partFeatures(sim.stock());
+    for (const auto* list : {&features.outside, &features.inside})
+      for (const cut::PartFeature& f : *list) std::printf("%s\n", cut::describeFeature(f, options.lang).c_str());
+  }
   if (!options.jsonPath.empty()) {
     std::string alarms;
     const std::optional<Diagnostic> stop = sim.stoppingAlarm();

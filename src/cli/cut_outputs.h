@@ -19,6 +19,8 @@ struct CutOutputOptions {
   std::string jsonPath;
   std::string svgPath;       // the finished part's profile, both halves
   std::string dxfPath;       // the same as DXF (R12 LINE entities)
+  bool features = false;     // --features: the finished part's features on stdout
+  core::Lang lang = core::Lang::En;
   double resolution = 0.05;  // mm
   bool enabled = true;       // false with --no-stock: the timeline alone
 };

@@ -86,6 +86,7 @@ const std::vector<OptionSpec>& optionSpecs() {
       {"--png", true, [](SimulateOptions& o, const std::string& v) { o.cut.pngPath = v; return true; }},
       {"--profile", true, [](SimulateOptions& o, const std::string& v) { o.cut.profilePath = v; return true; }},
       {"--json", true, [](SimulateOptions& o, const std::string& v) { o.cut.jsonPath = v; return true; }},
+      {"--features", false, [](SimulateOptions& o, const std::string&) { o.cut.features = true; return true; }},
       {"--svg", true, [](SimulateOptions& o, const std::string& v) { o.cut.svgPath = v; return true; }},
       {"--dxf", true, [](SimulateOptions& o, const std::string& v) { o.cut.dxfPath = v; return true; }},
       {"--no-stock", false, [](SimulateOptions& o, const std::string&) { o.cut.enabled = false; return true; }},
@@ -111,7 +112,7 @@ constexpr const char* kSimulateUsage =
     "                              [--lang en|th] [--dialect fanuc|haas|classic]\n"
     "                              [--optional-stop] [--block-skip] [--no-persist]\n"
     "                              [--png out.png] [--profile out.csv] [--json summary.json]\n"
-    "                              [--svg out.svg] [--dxf out.dxf] [--resolution MM] [--no-stock]\n"
+    "                              [--svg out.svg] [--dxf out.dxf] [--features] [--resolution MM] [--no-stock]\n"
     "                              [--stock DxL[xBORE][in]] [--units mm|inch] [--tool N=ID]...\n"
     "  --dialect  fanuc (Fanuc 0i-TF, default), haas (Haas ST lathe), classic (1999 rules)\n"
     "  --stock   stock before the file's header: 50x100 (mm), 2.1x4in, 118x80x90 (tube, bore 90)\n"
@@ -233,7 +234,9 @@ int runSimulate(const std::vector<std::string>& args) {
     }
   }
   // The stock: collisions stop the run on their block (SPEC 8), and the cut outputs.
-  const CutOutcome cut = o.cut.enabled ? runCut(o.file, programFile.header, setup, timeline, o.cut) : CutOutcome{};
+  CutOutputOptions cutOptions = o.cut;
+  cutOptions.lang = o.lang;
+  const CutOutcome cut = o.cut.enabled ? runCut(o.file, programFile.header, setup, timeline, cutOptions) : CutOutcome{};
   if (o.cycleTime) std::printf("%.4f\n", timeline.cycleTime());
   if (cut.alarm) {
     printDiagnostic(job.fileOf(*cut.alarm), *cut.alarm, o.lang);
