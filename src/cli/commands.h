@@ -11,5 +11,7 @@ int runCheck(const std::vector<std::string>& args);
 int runSimulate(const std::vector<std::string>& args);
 // klueng-cli class DIR --reference REF.nc [--tolerance 0.05] [--csv OUT.csv] ...
 int runClass(const std::vector<std::string>& args);
+// klueng-cli print FILE --pdf OUT.pdf [--sheet program|drawing|both] [--lang en|th] ...
+int runPrint(const std::vector<std::string>& args);
 
 }  // namespace klueng::cli

@@ -72,10 +72,14 @@ bool writeSectionPng(const render::SectionPicture& picture, const std::string& p
 
 namespace klueng::cli {
 
-bool writeClassPdf(KluengClassPdf input, const std::string& path, std::string* error) {
-  const auto draw = reinterpret_cast<KluengClassPdfFn>(moduleSymbol("klueng_class_pdf", error));
+namespace {
+
+// Runs a module entry that writes a PDF at `in.path`: written beside, then
+// renamed, so a reader never sees half a report.
+template <class Input, class Fn>
+bool writePdfAtomically(const char* symbol, Input input, const std::string& path, std::string* error) {
+  const auto draw = reinterpret_cast<Fn>(moduleSymbol(symbol, error));
   if (!draw) return false;
-  // Written beside, then renamed: a reader never sees half a report.
   const std::string partial = path + ".partial";
   input.path = partial.c_str();
   char why[512] = {0};
@@ -89,6 +93,16 @@ bool writeClassPdf(KluengClassPdf input, const std::string& path, std::string* e
   fs::rename(partial, path, ec);
   if (ec && error) *error = ec.message();
   return !ec;
+}
+
+}  // namespace
+
+bool writeClassPdf(KluengClassPdf input, const std::string& path, std::string* error) {
+  return writePdfAtomically<KluengClassPdf, KluengClassPdfFn>("klueng_class_pdf", input, path, error);
+}
+
+bool writePrintPdf(KluengPrintPdf input, const std::string& path, std::string* error) {
+  return writePdfAtomically<KluengPrintPdf, KluengPrintPdfFn>("klueng_print_pdf", input, path, error);
 }
 
 }  // namespace klueng::cli

@@ -13,6 +13,7 @@
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/machine/setup_files.h"
 #include "render/class_pdf_input.h"
+#include "render/offscreen_app.h"
 #include "render/report_sheets.h"
 
 namespace klueng::render {
@@ -96,16 +97,7 @@ extern "C" __attribute__((visibility("default"))) int klueng_class_pdf(const Klu
     return 0;
   };
   if (!in || !in->path) return fail(QStringLiteral("no output file"));
-  // Text needs Qt's font database, and that a GUI application object: an
-  // offscreen one, made once (the CLI has no window and no display).
-  if (!QCoreApplication::instance()) {
-    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
-    static int argc = 1;
-    static char name[] = "klueng-cli";
-    static char* argv[] = {name, nullptr};
-    static QGuiApplication* app = new QGuiApplication(argc, argv);
-    (void)app;
-  }
+  render::ensureGuiApplication();
   QPdfWriter writer(QString::fromUtf8(in->path));
   writer.setResolution(300);
   writer.setPageSize(QPageSize(QPageSize::A4));

@@ -163,11 +163,9 @@ namespace {
 // One run of the program for a report: its cycle times into `times` (when
 // given), then its finished part, cut only when `cutPart` (the drawing).
 StockShape runForReport(const core::io::ProgramFile& file, const core::machine::MachineSetup& setup,
-                        core::gcode::Dialect dialect, ReportLanguage lang, QString* note, ReportData* times,
-                        bool cutPart) {
+                        const core::machine::JobOptions& job, ReportLanguage lang, QString* note, ReportData* times,
+                        bool cutPart, core::cut::PartFeatures* features = nullptr) {
   const StockShape blank = stockShapeFromBlank(file.header.diameterMm(), file.header.lengthMm(), file.header.boreMm());
-  core::machine::JobOptions job;
-  job.run.dialect = dialect;
   const core::machine::CompiledJob compiled = core::machine::compileJob(file, setup, job);
   if (times && compiled.timeline) {
     times->cycleTime = compiled.timeline->cycleTime();
@@ -190,20 +188,32 @@ StockShape runForReport(const core::io::ProgramFile& file, const core::machine::
   if (cut.alarm() && note)
     *note = thai(lang) ? QStringLiteral("โปรแกรมหยุดด้วยสัญญาณเตือน: ภาพนี้แสดงชิ้นงานจนถึงจุดที่หยุด")
                        : QStringLiteral("The program stopped on an alarm: the drawing shows the part up to it.");
+  if (features) *features = core::cut::partFeatures(cut.stock());
   return stockShapeFromStock(cut.stock());
+}
+
+core::machine::JobOptions jobFor(core::gcode::Dialect dialect) {
+  core::machine::JobOptions job;
+  job.run.dialect = dialect;
+  return job;
 }
 
 }  // namespace
 
 StockShape finishedPart(const core::io::ProgramFile& file, const core::machine::MachineSetup& setup,
                         core::gcode::Dialect dialect, ReportLanguage lang, QString* note) {
-  return runForReport(file, setup, dialect, lang, note, nullptr, true);
+  return runForReport(file, setup, jobFor(dialect), lang, note, nullptr, true);
+}
+
+void addRunResults(ReportData& data, const core::machine::MachineSetup& setup, const core::machine::JobOptions& job,
+                   ReportLanguage lang, bool withPart) {
+  const StockShape part = runForReport(data.program, setup, job, lang, &data.partNote, &data, withPart, &data.features);
+  if (withPart) data.part = part;
 }
 
 void addRunResults(ReportData& data, const core::machine::MachineSetup& setup, core::gcode::Dialect dialect,
                    ReportLanguage lang, bool withPart) {
-  const StockShape part = runForReport(data.program, setup, dialect, lang, &data.partNote, &data, withPart);
-  if (withPart) data.part = part;
+  addRunResults(data, setup, jobFor(dialect), lang, withPart);
 }
 
 QString durationText(double seconds, ReportLanguage lang) {
@@ -369,14 +379,50 @@ DrawingLayout drawingLayout(const QPagedPaintDevice& device, const StockShape& p
   const double blockWidth = std::min(120 * mm, l.frame.width() * 0.6);
   const double blockHeight = kTitleRows * 7 * mm;
   l.titleBlock = QRectF(l.frame.right() - blockWidth, l.frame.bottom() - blockHeight, blockWidth, blockHeight);
-  // Room for the sheet title above and dimensions around the part.
-  l.drawingArea = QRectF(l.frame.left() + 15 * mm, l.frame.top() + 22 * mm, l.frame.width() - 30 * mm,
-                         l.titleBlock.top() - 12 * mm - (l.frame.top() + 22 * mm));
+  // The part goes above the title block across the sheet, or beside it down to
+  // the frame, whichever draws it larger; the sheet title is above both.
+  const double top = l.frame.top() + 16 * mm;
+  const QRectF above(l.frame.left() + 8 * mm, top, l.frame.width() - 16 * mm, l.titleBlock.top() - 4 * mm - top);
+  const QRectF beside(l.frame.left() + 8 * mm, top, l.titleBlock.left() - 4 * mm - (l.frame.left() + 8 * mm),
+                      l.frame.bottom() - 4 * mm - top);
+  // The part itself leaves room for diameters on its left, leaders above it and
+  // two rows of lengths and a note below it.
+  const auto partAreaOf = [&](const QRectF& area) { return area.adjusted(12 * mm, 22 * mm, -8 * mm, -24 * mm); };
   const QRectF scene = partSceneRect(part);
-  l.scale = drawingScale(scene.size(), l.drawingArea.size() / mm);
+  const double scaleAbove = drawingScale(scene.size(), partAreaOf(above).size() / mm);
+  const double scaleBeside = drawingScale(scene.size(), partAreaOf(beside).size() / mm);
+  l.drawingArea = scaleBeside > scaleAbove ? beside : above;
+  l.scale = std::max(scaleAbove, scaleBeside);
+  const QRectF partArea = partAreaOf(l.drawingArea);
   const QSizeF onPaper = scene.size() * l.scale * mm;
-  l.partRect = QRectF(l.drawingArea.center() - QPointF(onPaper.width() / 2, onPaper.height() / 2), onPaper);
+  l.partRect = QRectF(partArea.center() - QPointF(onPaper.width() / 2, onPaper.height() / 2), onPaper);
   return l;
+}
+
+namespace {
+
+DimensionFrame dimensionFrame(const QPagedPaintDevice& device, const ReportData& data, const DrawingLayout& l,
+                              ReportLanguage lang) {
+  DimensionFrame f;
+  const QPointF sceneCentre = partSceneRect(data.part).center();
+  const QPointF pageCentre = l.partRect.center();
+  const double k = l.scale * l.pixelsPerMm;
+  // Scene y is -X (radius): the upper half is drawn above the centre line.
+  f.toPage = [=](double z, double r) {
+    return QPointF(pageCentre.x() + (z - sceneCentre.x()) * k, pageCentre.y() + (-r - sceneCentre.y()) * k);
+  };
+  f.mm = l.pixelsPerMm;
+  f.font = reportFont(8);
+  f.device = &device;
+  f.thai = thai(lang);
+  return f;
+}
+
+}  // namespace
+
+std::vector<DimensionItem> drawingDimensions(const QPagedPaintDevice& device, const ReportData& data,
+                                             ReportLanguage lang) {
+  return layoutDimensions(data.features, dimensionFrame(device, data, drawingLayout(device, data.part), lang));
 }
 
 void paintDrawingSheet(QPainter& painter, QPagedPaintDevice& device, const ReportData& data, ReportLanguage lang) {
@@ -424,9 +470,14 @@ void paintDrawingSheet(QPainter& painter, QPagedPaintDevice& device, const Repor
   painter.drawLine(QPointF(scene.left() - 8 * mm / k, 0.0), QPointF(scene.right() + 8 * mm / k, 0.0));
   painter.restore();
 
-  // Overall dimensions: length below the part, diameter on its left (part millimetres).
+  // The part's features dimensioned; without them (no run) the overall size:
+  // length below the part, diameter on its left (part millimetres).
   const QRectF fillBox = data.part.fill.boundingRect();
-  if (!fillBox.isEmpty()) {
+  const DimensionFrame dimFrame = dimensionFrame(device, data, l, lang);
+  const std::vector<DimensionItem> dims = layoutDimensions(data.features, dimFrame);
+  if (!dims.empty()) {
+    paintDimensions(painter, dims, dimFrame);
+  } else if (!fillBox.isEmpty()) {
     painter.setPen(paperPen(device, 0.2));
     const auto arrow = [&](const QPointF& tip, const QPointF& towards) {
       const QPointF d = towards - tip;

@@ -27,9 +27,12 @@
 #include <QSizeF>
 #include <QString>
 
+#include "klueng/core/cut/part_features.h"
 #include "klueng/core/gcode/code_table.h"
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/machine/interpreter.h"
+#include "klueng/core/machine/job.h"
+#include "render/drawing_dimensions.h"
 #include "render/lathe_painters.h"
 
 namespace klueng::render {
@@ -49,6 +52,7 @@ struct ReportData {
   QDate date = QDate::currentDate();
   StockShape part;                 // the finished part (see finishedPart)
   QString partNote;                // printed under the drawing when the part is not the finished one
+  core::cut::PartFeatures features;  // the part's features, dimensioned on the drawing (empty: overall size only)
   // Cycle time (issue 11): total and per tool; total < 0 = not known (the program has errors).
   double cycleTime = -1.0;
   bool cycleTimeToAlarm = false;   // the run stops on an alarm: the time is up to it
@@ -57,8 +61,10 @@ struct ReportData {
 
 // Fills data.cycleTime and data.toolTimes by running the program (no cutting).
 void addCycleTimes(ReportData& data, const core::machine::MachineSetup& setup, core::gcode::Dialect dialect);
-// The same and, with `withPart`, data.part and data.partNote as finishedPart
-// gives them — from one run of the program.
+// The same and, with `withPart`, data.part, data.features and data.partNote as
+// finishedPart gives them — from one run of the program.
+void addRunResults(ReportData& data, const core::machine::MachineSetup& setup, const core::machine::JobOptions& job,
+                   ReportLanguage lang, bool withPart);  // power-on units, subprogram folder as the job says
 void addRunResults(ReportData& data, const core::machine::MachineSetup& setup, core::gcode::Dialect dialect,
                    ReportLanguage lang, bool withPart);
 // "3 min 12.4 s" / "3 นาที 12.4 วินาที".
@@ -82,10 +88,13 @@ struct DrawingLayout {
   QRectF frame;          // sheet border
   QRectF drawingArea;    // where the part may go
   QRectF titleBlock;
-  QRectF partRect;       // the part's both-halves bounding box on the page
+  QRectF partRect;       // the part's both-halves bounding box on the page (room left around it for dimensions)
   double scale = 1.0;    // paper mm per part mm
   double pixelsPerMm = 1.0;
 };
 DrawingLayout drawingLayout(const QPagedPaintDevice& device, const StockShape& part);
+// The dimensions paintDrawingSheet draws, where it draws them (tests check they stay in the frame).
+std::vector<DimensionItem> drawingDimensions(const QPagedPaintDevice& device, const ReportData& data,
+                                             ReportLanguage lang);
 
 }  // namespace klueng::render

@@ -43,8 +43,7 @@ render::ReportData sampleData(ReportLanguage lang) {
   d.program = *core::io::readProgramFile(KLUENG_SAMPLES_DIR "/01-step-shaft.txt").value;
   d.fileName = QStringLiteral("01-step-shaft.txt");
   d.date = QDate(1999, 10, 19);
-  d.part = render::finishedPart(d.program, loadSetup(), core::gcode::Dialect::Fanuc, lang, &d.partNote);
-  render::addCycleTimes(d, loadSetup(), core::gcode::Dialect::Fanuc);
+  render::addRunResults(d, loadSetup(), core::gcode::Dialect::Fanuc, lang, true);  // part, features, cycle time
   return d;
 }
 
@@ -253,6 +252,52 @@ class ReportTest : public QObject {
     QVERIFY(text.contains(QStringLiteral("Scale 1:1")));
   }
 
+  // Issue 10: the drawing dimensions the finished part from its features, in
+  // both languages, and every dimension stays inside the frame and off the
+  // title block on the landscape A4 that Print Preview and Print use.
+  void drawingDimensionsEveryFeature_data() {
+    QTest::addColumn<int>("language");
+    QTest::newRow("en") << static_cast<int>(ReportLanguage::English);
+    QTest::newRow("th") << static_cast<int>(ReportLanguage::Thai);
+  }
+  void drawingDimensionsEveryFeature() {
+    QFETCH(int, language);
+    const auto lang = static_cast<ReportLanguage>(language);
+    const render::ReportData d = sampleData(lang);
+    QVERIFY(!d.features.empty());
+    const QString pdf = out(QStringLiteral("dimensions-%1.pdf").arg(language));
+    writePdf(pdf, d, lang, Sheet::Drawing);
+    const QString text = pdfText(pdf);
+    for (const char* s : {"Ø30", "Ø40", "Ø46", "Ø50", "C3", "R2", "C1"})
+      QVERIFY2(text.contains(QString::fromUtf8(s)), qPrintable(QString::fromUtf8(s) + QStringLiteral("\n") + text));
+    // Chained steps from the right face (20, 20, 20, 40) and the overall 100.
+    QCOMPARE(text.count(QRegularExpression(QStringLiteral("(^|\\n)20\\n"))), 3);
+    QVERIFY(text.contains(QRegularExpression(QStringLiteral("(^|\\n)40\\n"))));
+    QVERIFY(text.contains(QRegularExpression(QStringLiteral("(^|\\n)100\\n"))));
+
+    QPrinter printer(QPrinter::HighResolution);
+    printer.setOutputFormat(QPrinter::PdfFormat);
+    printer.setPageSize(QPageSize(QPageSize::A4));
+    printer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
+    printer.setPageOrientation(QPageLayout::Landscape);
+    QCOMPARE(printer.pageLayout().pageSize().id(), QPageSize::A4);
+    QVERIFY(printer.width() > printer.height());
+    const render::DrawingLayout layout = render::drawingLayout(printer, d.part);
+    QCOMPARE(render::scaleText(layout.scale), QStringLiteral("1:1"));
+    QVERIFY(layout.frame.contains(layout.partRect));
+    const std::vector<render::DimensionItem> dims = render::drawingDimensions(printer, d, lang);
+    QVERIFY(dims.size() >= 12);   // 4 diameters, 4 steps + overall, 3 leaders, the nose note
+    for (const render::DimensionItem& item : dims) {
+      const QRectF box = render::dimensionBounds(item);
+      QVERIFY2(layout.frame.contains(box), qPrintable(item.text));
+      QVERIFY2(!layout.titleBlock.intersects(box), qPrintable(item.text));
+    }
+    // No two texts on top of each other.
+    for (std::size_t a = 0; a < dims.size(); ++a)
+      for (std::size_t b = a + 1; b < dims.size(); ++b)
+        QVERIFY2(!dims[a].textRect.intersects(dims[b].textRect), qPrintable(dims[a].text + QStringLiteral(" / ") + dims[b].text));
+  }
+
   void programWithErrorsDrawsTheBarAndSaysSo() {
     render::ReportData d;
     d.program = *core::io::readProgramFile(KLUENG_SAMPLES_DIR "/04-grammar-errors.txt").value;
@@ -290,6 +335,7 @@ class ReportTest : public QObject {
     // Sample 01's bar: Ø150 x 1100 is too long for 1:1 on A4 landscape; a short part is drawn 1:1.
     render::ReportData d = sampleData(ReportLanguage::English);
     d.part = render::stockShapeFromBlank(40.0, 120.0);
+    d.features = {};
     d.partNote.clear();
     const QString pdf = out(QStringLiteral("scale.pdf"));
     writePdf(pdf, d, ReportLanguage::English, Sheet::Drawing);

@@ -1,0 +1,150 @@
+// klueng-cli print FILE --pdf OUT.pdf [--sheet program|drawing|both] [--lang en|th]
+//                  [--dialect fanuc|haas|classic] [--stock DxL[xBORE][in]] [--units mm|inch]
+//                  [--config DIR] [--tool N=ID]...
+// The program sheet and the drawing sheet (issue 10, item 6) as the GUI's
+// Export PDF paints them, by the picture module. The program is loaded as
+// `simulate` loads it (stock, tools from the program); a program with errors
+// still prints (its drawing shows the uncut bar and says why), exit status 1.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli_common.h"
+#include "commands.h"
+#include "klueng/core/io/tool_library.h"
+#include "klueng/core/machine/job_file.h"
+#include "png_writer.h"
+
+namespace klueng::cli {
+
+using namespace klueng::core;
+
+namespace {
+
+constexpr const char* kPrintUsage =
+    "usage: klueng-cli print FILE --pdf OUT.pdf [--sheet program|drawing|both] [--lang en|th]\n"
+    "                             [--dialect fanuc|haas|classic] [--stock DxL[xBORE][in]] [--units mm|inch]\n"
+    "                             [--config DIR] [--tool N=ID]...\n"
+    "  --sheet  program (the listing, portrait), drawing (the dimensioned part, landscape) or both (default)\n";
+
+struct PrintOptions {
+  std::string file;
+  std::string pdf;
+  bool program = true;
+  bool drawing = true;
+  Lang lang = Lang::En;
+  gcode::Dialect dialect = gcode::Dialect::Fanuc;
+  std::optional<io::JobHeader> stock;
+  std::optional<gcode::InputUnits> powerOnUnits;
+  std::string configDir;
+  std::vector<std::string> tools;
+};
+
+std::optional<PrintOptions> parse(const std::vector<std::string>& args) {
+  PrintOptions o;
+  o.lang = langFromLocale();
+  const auto bad = [](const std::string& option, const std::string& value, const char* allowed) {
+    std::fprintf(stderr, "klueng-cli print: bad value '%s' for %s; allowed: %s\n", value.c_str(), option.c_str(),
+                 allowed);
+    return std::nullopt;
+  };
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a.rfind("--", 0) != 0) {
+      if (!o.file.empty()) {
+        std::fprintf(stderr, "klueng-cli print: only one FILE (got '%s' and '%s')\n", o.file.c_str(), a.c_str());
+        return std::nullopt;
+      }
+      o.file = a;
+      continue;
+    }
+    if (i + 1 >= args.size()) {
+      std::fprintf(stderr, "klueng-cli print: %s needs a value\n", a.c_str());
+      return std::nullopt;
+    }
+    const std::string v = args[++i];
+    if (a == "--pdf") {
+      o.pdf = v;
+    } else if (a == "--sheet") {
+      if (v != "program" && v != "drawing" && v != "both") return bad(a, v, "program, drawing or both");
+      o.program = v != "drawing";
+      o.drawing = v != "program";
+    } else if (a == "--lang") {
+      const auto lang = parseLang(v);
+      if (!lang) return bad(a, v, "en or th");
+      o.lang = *lang;
+    } else if (a == "--dialect") {
+      const auto dialect = parseDialect(v);
+      if (!dialect) return bad(a, v, "fanuc, haas or classic");
+      o.dialect = *dialect;
+    } else if (a == "--stock") {
+      o.stock = parseStock(v);
+      if (!o.stock) return bad(a, v, kStockAllowed);
+    } else if (a == "--units") {
+      o.powerOnUnits = parseUnits(v);
+      if (!o.powerOnUnits) return bad(a, v, kUnitsAllowed);
+    } else if (a == "--config") {
+      o.configDir = v;
+    } else if (a == "--tool") {
+      o.tools.push_back(v);
+    } else {
+      std::fprintf(stderr, "klueng-cli print: unknown option '%s'\n", a.c_str());
+      return std::nullopt;
+    }
+  }
+  if (o.file.empty() || o.pdf.empty()) return std::nullopt;
+  return o;
+}
+
+}  // namespace
+
+int runPrint(const std::vector<std::string>& args) {
+  if (std::find(args.begin(), args.end(), "--help") != args.end()) {
+    std::fputs(kPrintUsage, stdout);
+    return 0;
+  }
+  const std::optional<PrintOptions> parsed = parse(args);
+  if (!parsed) {
+    std::fputs(kPrintUsage, stderr);
+    return 2;
+  }
+  const PrintOptions& o = *parsed;
+  const LoadedConfig config = loadConfig(o.configDir);
+  for (const auto& fd : config.diagnostics) printDiagnostic(stderr, fd.file, fd.diagnostic, o.lang);
+  if (config.unreadable || config.hasErrors()) return 2;
+  std::string error;
+  const std::optional<machine::JobFileRequest> request =
+      jobRequest(config, o.dialect, o.powerOnUnits, o.stock, o.tools, error);
+  if (!request) {
+    std::fprintf(stderr, "klueng-cli print: %s\n", error.c_str());
+    return 2;
+  }
+  const machine::JobFile job = machine::loadJobFile(o.file, config.setup, *request, io::shippedToolLibrary());
+  for (const Diagnostic& n : job.toolNotes) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
+  for (const auto& d : job.diagnostics) printDiagnostic(stderr, job.fileOf(d), d, o.lang);
+  for (const Diagnostic& n : job.stockNotes) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
+  if (job.unreadable || !job.file) return 2;
+
+  machine::JobOptions jobOptions;
+  jobOptions.run = request->run;
+  jobOptions.folder = std::filesystem::path(o.file).parent_path().string();
+  const std::string name = std::filesystem::path(o.file).filename().string();
+  KluengPrintPdf in{};
+  in.thai = o.lang == Lang::Th ? 1 : 0;
+  in.programSheet = o.program ? 1 : 0;
+  in.drawingSheet = o.drawing ? 1 : 0;
+  in.fileName = name.c_str();
+  in.program = &*job.file;
+  in.setup = &job.setup;
+  in.job = &jobOptions;
+  if (!writePrintPdf(in, o.pdf, &error)) {
+    std::fprintf(stderr, "klueng-cli print: cannot write %s: %s\n", o.pdf.c_str(), error.c_str());
+    return 2;
+  }
+  return job.hasErrors() ? 1 : 0;
+}
+
+}  // namespace klueng::cli

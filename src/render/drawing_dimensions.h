@@ -1,0 +1,41 @@
+#pragma once
+// The drawing sheet's dimensions (issue 10, item 6), laid out from the core's
+// part features: every diameter across the part, the bores, chained step
+// lengths from the right face and the overall length below it, leaders for
+// chamfers, radii, tapers, grooves and threads above it, and a note for the
+// tool nose's radius in the inside corners. Page coordinates (device pixels).
+#include <functional>
+#include <vector>
+
+#include <QFont>
+#include <QLineF>
+#include <QPainter>
+#include <QRectF>
+#include <QString>
+
+#include "klueng/core/cut/part_features.h"
+
+namespace klueng::render {
+
+struct DimensionItem {
+  QString text;
+  QRectF textRect;       // where the text goes (before rotation: its box on the page)
+  bool vertical = false; // text turned 90° (read from the right), as diameters are written
+  std::vector<QLineF> lines;                  // dimension, extension and leader lines
+  std::vector<std::pair<QPointF, QPointF>> arrows;  // tip, and a point the arrow points away from
+};
+
+struct DimensionFrame {
+  std::function<QPointF(double z, double radius)> toPage;  // part mm -> page
+  double mm = 1.0;          // device pixels per paper millimetre
+  QFont font;               // dimension text
+  const QPaintDevice* device = nullptr;  // for measuring text
+  bool thai = false;
+};
+
+std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part, const DimensionFrame& frame);
+void paintDimensions(QPainter& painter, const std::vector<DimensionItem>& items, const DimensionFrame& frame);
+// The bounding box of everything an item draws.
+QRectF dimensionBounds(const DimensionItem& item);
+
+}  // namespace klueng::render

@@ -1,0 +1,53 @@
+// klueng-cli print (issue 10): the program sheet and/or the drawing sheet of one
+// program as a PDF, painted exactly as the GUI's Export PDF paints them.
+#include <QPageLayout>
+#include <QPageSize>
+#include <QPainter>
+#include <QPdfWriter>
+#include <QString>
+#include <cstring>
+
+#include "render/offscreen_app.h"
+#include "render/print_pdf_input.h"
+#include "render/report_sheets.h"
+
+extern "C" __attribute__((visibility("default"))) int klueng_print_pdf(const KluengPrintPdf* in, char* error,
+                                                                       std::size_t errorSize) {
+  using namespace klueng;
+  const auto fail = [&](const QString& why) {
+    if (error && errorSize > 0) {
+      std::strncpy(error, why.toUtf8().constData(), errorSize - 1);
+      error[errorSize - 1] = '\0';
+    }
+    return 0;
+  };
+  if (!in || !in->path || !in->program || !in->setup || !in->job) return fail(QStringLiteral("nothing to print"));
+  if (!in->programSheet && !in->drawingSheet) return fail(QStringLiteral("no sheet asked for"));
+  render::ensureGuiApplication();
+  const render::ReportLanguage lang = in->thai ? render::ReportLanguage::Thai : render::ReportLanguage::English;
+  render::ReportData data;
+  data.program = *in->program;
+  data.fileName = QString::fromUtf8(in->fileName ? in->fileName : "");
+  render::addRunResults(data, *in->setup, *in->job, lang, in->drawingSheet != 0);
+
+  QPdfWriter writer(QString::fromUtf8(in->path));
+  writer.setCreator(render::kluengVersion());
+  writer.setTitle(data.fileName);
+  writer.setResolution(300);
+  writer.setPageSize(QPageSize(QPageSize::A4));
+  writer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
+  // A shaft is long: the drawing is landscape, the listing portrait.
+  writer.setPageOrientation(in->programSheet ? QPageLayout::Portrait : QPageLayout::Landscape);
+  QPainter painter;
+  if (!painter.begin(&writer)) return fail(QStringLiteral("cannot write %1").arg(QString::fromUtf8(in->path)));
+  if (in->programSheet) render::paintProgramSheet(painter, writer, data, lang);
+  if (in->drawingSheet) {
+    if (in->programSheet) {
+      writer.setPageOrientation(QPageLayout::Landscape);
+      writer.newPage();
+    }
+    render::paintDrawingSheet(painter, writer, data, lang);
+  }
+  painter.end();
+  return 1;
+}

@@ -1,0 +1,103 @@
+// klueng-cli print (issue 10, item 6): the program sheet and the dimensioned
+// drawing of one program as a PDF, read back with pdftotext and pdfinfo.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string capture(const std::string& command, int* status = nullptr) {
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (!pipe) return {};
+  std::string out;
+  char buf[4096];
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) out.append(buf, n);
+  const int rc = ::pclose(pipe);
+  if (status) *status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+  return out;
+}
+
+int print(const std::string& args, std::string* err = nullptr) {
+  int status = -1;
+  const std::string out = capture("env LC_ALL= LC_MESSAGES= LANG=C '" + std::string(KLUENG_CLI_PATH) + "' print " +
+                                      args + " --config '" + KLUENG_SOURCE_DIR + "' 2>&1 >/dev/null",
+                                  &status);
+  if (err) *err = out;
+  return status;
+}
+
+std::string pdfText(const fs::path& pdf) { return capture("pdftotext -layout '" + pdf.string() + "' - 2>/dev/null"); }
+std::string pdfInfo(const fs::path& pdf) { return capture("pdfinfo -l 9 '" + pdf.string() + "' 2>/dev/null"); }
+
+fs::path scratch(const char* name) {
+  const fs::path dir = fs::temp_directory_path() / "klueng_cli_print_test";
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+const std::string kSample01 = std::string(KLUENG_SAMPLES_DIR) + "/01-step-shaft.txt";
+
+TEST(CliPrint, DrawingDimensionsSample01OnALandscapePage) {
+  const fs::path pdf = scratch("01-drawing.pdf");
+  std::string err;
+  ASSERT_EQ(print("'" + kSample01 + "' --sheet drawing --lang en --pdf '" + pdf.string() + "'", &err), 0) << err;
+  EXPECT_FALSE(fs::exists(pdf.string() + ".partial"));
+  const std::string text = pdfText(pdf);
+  // Every diameter, the chamfers and the corner radius, the chained steps and the overall length.
+  for (const char* s : {"Part Drawing", "Ø30", "Ø40", "Ø46", "Ø50", "C3", "C1", "R2", "100", "Scale 1:1",
+                        "Inside corners: tool nose R0.8"})
+    EXPECT_NE(text.find(s), std::string::npos) << s << "\n" << text;
+  const std::string info = pdfInfo(pdf);
+  EXPECT_NE(info.find("Pages:           1"), std::string::npos) << info;
+  EXPECT_NE(info.find("Page    1 size:  842 x 595 pts (A4)"), std::string::npos) << info;
+}
+
+TEST(CliPrint, BothSheetsInThaiAndTheThreadCallout) {
+  const fs::path pdf = scratch("02-both.pdf");
+  std::string err;
+  ASSERT_EQ(print("'" + std::string(KLUENG_SAMPLES_DIR) + "/02-thread.txt' --lang th --pdf '" + pdf.string() + "'",
+                  &err),
+            0)
+      << err;
+  const std::string text = pdfText(pdf);
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\f'), 2);  // the listing, then the drawing
+  for (const char* s : {"ชุดรหัส", "N130 G32 Z-30. F1.5", "เอกสารแสดงภาพชิ้นงาน", "M30×1.5", "Ø32"})
+    EXPECT_NE(text.find(s), std::string::npos) << s << "\n" << text;
+  const std::string info = pdfInfo(pdf);
+  EXPECT_NE(info.find("Page    1 size:  595 x 842 pts (A4)"), std::string::npos) << info;
+  EXPECT_NE(info.find("Page    2 size:  842 x 595 pts (A4)"), std::string::npos) << info;
+}
+
+TEST(CliPrint, StockOptionAndAProgramWithErrors) {
+  // --stock as simulate takes it: the bar left of the part is Ø60.
+  const fs::path pdf = scratch("01-stock.pdf");
+  std::string err;
+  ASSERT_EQ(print("'" + kSample01 + "' --sheet drawing --stock 60x120 --pdf '" + pdf.string() + "'", &err), 0) << err;
+  const std::string text = pdfText(pdf);
+  EXPECT_NE(text.find("Ø60"), std::string::npos) << text;
+  EXPECT_NE(text.find("120"), std::string::npos) << text;
+
+  // Errors are printed GCC-style; the sheets still come out, the drawing says why it shows the bar.
+  const fs::path bad = scratch("bad.nc");
+  std::ofstream(bad) << "O0001\nN10 G01 X20. Z-5 F\nN20 M30\n";
+  const fs::path badPdf = scratch("bad.pdf");
+  EXPECT_EQ(print("'" + bad.string() + "' --pdf '" + badPdf.string() + "'", &err), 1);
+  EXPECT_NE(err.find("bad.nc:2:"), std::string::npos) << err;
+  EXPECT_NE(pdfText(badPdf).find("The program has errors"), std::string::npos);
+}
+
+TEST(CliPrint, BadCommandLinesExitTwo) {
+  EXPECT_EQ(print("'" + kSample01 + "'"), 2);  // no --pdf
+  EXPECT_EQ(print("'" + kSample01 + "' --pdf /tmp/x.pdf --sheet poster"), 2);
+  EXPECT_EQ(print("/no/such/file.nc --pdf /tmp/klueng-none.pdf"), 2);
+  EXPECT_FALSE(fs::exists("/tmp/klueng-none.pdf"));
+}
+
+}  // namespace
