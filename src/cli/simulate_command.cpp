@@ -22,6 +22,7 @@
 #include "cli_common.h"
 #include "commands.h"
 #include "cut_outputs.h"
+#include "klueng/core/cut/part_check.h"
 #include "klueng/core/gcode/checker.h"
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/io/macro_variables.h"
@@ -43,6 +44,8 @@ struct SimulateOptions {
   std::string file;
   std::string tracePath;
   bool cycleTime = false;
+  bool partCheck = false;        // --part-check
+  double partTolerance = 0.01;   // --part-tolerance MM (leftover allowed, radial)
   std::string configDir;
   Lang lang = Lang::En;
   gcode::Dialect dialect = gcode::Dialect::Fanuc;
@@ -86,6 +89,12 @@ const std::vector<OptionSpec>& optionSpecs() {
       {"--png", true, [](SimulateOptions& o, const std::string& v) { o.cut.pngPath = v; return true; }},
       {"--profile", true, [](SimulateOptions& o, const std::string& v) { o.cut.profilePath = v; return true; }},
       {"--json", true, [](SimulateOptions& o, const std::string& v) { o.cut.jsonPath = v; return true; }},
+      {"--part-check", false, [](SimulateOptions& o, const std::string&) { o.partCheck = true; return true; }},
+      {"--part-tolerance", true,
+       [](SimulateOptions& o, const std::string& v) {
+         o.partCheck = true;
+         return parseResolution(v, o.partTolerance);
+       }},
       {"--features", false, [](SimulateOptions& o, const std::string&) { o.cut.features = true; return true; }},
       {"--svg", true, [](SimulateOptions& o, const std::string& v) { o.cut.svgPath = v; return true; }},
       {"--dxf", true, [](SimulateOptions& o, const std::string& v) { o.cut.dxfPath = v; return true; }},
@@ -113,6 +122,7 @@ constexpr const char* kSimulateUsage =
     "                              [--optional-stop] [--block-skip] [--no-persist]\n"
     "                              [--png out.png] [--profile out.csv] [--json summary.json]\n"
     "                              [--svg out.svg] [--dxf out.dxf] [--features] [--resolution MM] [--no-stock]\n"
+    "                              [--part-check] [--part-tolerance MM]\n"
     "                              [--stock DxL[xBORE][in]] [--units mm|inch] [--tool N=ID]...\n"
     "  --dialect  fanuc (Fanuc 0i-TF, default), haas (Haas ST lathe), classic (1999 rules)\n"
     "  --stock   stock before the file's header: 50x100 (mm), 2.1x4in, 118x80x90 (tube, bore 90)\n"
@@ -126,7 +136,7 @@ std::string allowedValues(const std::string& option) {
   if (option == "--units") return std::string("; allowed: ") + kUnitsAllowed;
   if (option == "--lang") return "; allowed: en or th";
   if (option == "--dialect") return "; allowed: fanuc, haas or classic";
-  if (option == "--resolution") return "; allowed: a number from 0.001 to 5 (mm)";
+  if (option == "--resolution" || option == "--part-tolerance") return "; allowed: a number from 0.001 to 5 (mm)";
   return {};
 }
 
@@ -238,6 +248,14 @@ int runSimulate(const std::vector<std::string>& args) {
   cutOptions.lang = o.lang;
   const CutOutcome cut = o.cut.enabled ? runCut(o.file, programFile.header, setup, timeline, cutOptions) : CutOutcome{};
   if (o.cycleTime) std::printf("%.4f\n", timeline.cycleTime());
+  if (o.partCheck && o.cut.enabled) {
+    // The described part against the real cut: gouges and leftovers as warnings on their blocks.
+    cut::PartCheckOptions check;
+    check.resolution = o.cut.resolution;
+    check.leftoverTolerance = o.partTolerance;
+    const cut::PartCheck result = cut::checkPart(timeline, cut::CutSetup::from(programFile.header, setup), check);
+    for (const Diagnostic& d : cut::partCheckDiagnostics(result)) printDiagnostic(job.fileOf(d), d, o.lang);
+  }
   if (cut.alarm) {
     printDiagnostic(job.fileOf(*cut.alarm), *cut.alarm, o.lang);
     return 1;

@@ -193,3 +193,35 @@ TEST(CliSimulateCut, Sample05StopsOnN40) {
 }
 
 }  // namespace
+
+namespace {
+
+// Issue 10: --part-check prints gouges and leftovers GCC-style on their block.
+// A pawn's neck down a 15° slope (N70, line 14): the 80° CNMG's trailing edge
+// (7°) cuts into it, the 35° VNMG's (52°) does not.
+TEST(CliPartCheck, ThePawnsNeckGougesWithThe80DegreeInsertOnly) {
+  const fs::path file = fs::temp_directory_path() / "klueng_cli_pawn_neck.nc";
+  std::ofstream(file) << "Pawn neck\nPawn P-1\nBrass\n124\n160\nKlueng tests\nO0100\nN10 G21 G40 G99\nN20 T0101\n"
+                         "N30 G97 S1200 M03\nN40 G00 X28. Z2.\nN50 G42 G01 X24. Z0. F0.1\nN60 G01 Z-10.\n"
+                         "N70 X22. Z-13.732\nN80 Z-20.\nN90 X24. Z-22.\nN100 Z-40.\nN110 X28.\n"
+                         "N120 G40 G00 X60. Z20.\nN130 M30\n";
+  const Result cnmg = simulate("'" + file.string() + "' --part-check --tool 1=cnmg-80-r08");
+  EXPECT_EQ(cnmg.exitCode, 0) << cnmg.err;  // a gouge is a warning: the program ran
+  EXPECT_THAT(cnmg.err, HasSubstr(file.string() + ":14:1: warning W320: Gouge 0.4"));
+  const Result vnmg = simulate("'" + file.string() + "' --part-check --tool 1=vnmg-35-r02");
+  EXPECT_EQ(vnmg.exitCode, 0) << vnmg.err;
+  EXPECT_EQ(vnmg.err.find("W320"), std::string::npos) << vnmg.err;
+  const Result thai = simulate("'" + file.string() + "' --part-check --tool 1=cnmg-80-r08 --lang th");
+  EXPECT_THAT(thai.err, HasSubstr("มีดตัดกินเนื้อชิ้นงานเกินแบบ"));
+}
+
+TEST(CliPartCheck, SamplesAreCleanAndAnAlarmedRunSaysWhatWasChecked) {
+  const Result clean = simulate("'" + kCutSamples + "/01-step-shaft.txt' --part-check");
+  EXPECT_EQ(clean.exitCode, 0);
+  EXPECT_EQ(clean.err.find("W32"), std::string::npos) << clean.err;
+  const Result alarmed = simulate("'" + kCutSamples + "/05-runtime-alarms.txt' --part-check");
+  EXPECT_EQ(alarmed.exitCode, 1);
+  EXPECT_THAT(alarmed.err, HasSubstr("note I324: The run stopped on alarm A104"));
+}
+
+}  // namespace

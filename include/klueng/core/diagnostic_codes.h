@@ -154,5 +154,12 @@ inline constexpr const char* kHolderHitsStock = "A303";
 inline constexpr const char* kToolHitsChuck = "A304";
 inline constexpr const char* kBitmapHasNoEdge = "A310";
 inline constexpr const char* kBitmapTooLarge = "A311";
+// Part check (issue 10): args {0} depth mm, {1} {2} Z from-to, {3} Z and {4} Ø where deepest.
+inline constexpr const char* kPartGouge = "W320";
+inline constexpr const char* kPartLeftover = "W321";
+inline constexpr const char* kBoreGouge = "W322";
+inline constexpr const char* kBoreLeftover = "W323";
+inline constexpr const char* kPartCheckStopped = "I324";     // {0} the alarm's code
+inline constexpr const char* kPartCheckNothingCut = "I325";
 
 }  // namespace klueng::core::codes
