@@ -22,6 +22,7 @@
 #include "cli_common.h"
 #include "commands.h"
 #include "cut_outputs.h"
+#include "klueng/core/cut/comp_compare.h"
 #include "klueng/core/cut/part_check.h"
 #include "klueng/core/gcode/checker.h"
 #include "klueng/core/gcode/parser.h"
@@ -45,6 +46,8 @@ struct SimulateOptions {
   std::string tracePath;
   bool cycleTime = false;
   bool partCheck = false;        // --part-check
+  bool compareCompensation = false;  // --compare-compensation [none|sharp]
+  bool compareSharp = false;
   double partTolerance = 0.01;   // --part-tolerance MM (leftover allowed, radial)
   std::string configDir;
   Lang lang = Lang::En;
@@ -95,6 +98,12 @@ const std::vector<OptionSpec>& optionSpecs() {
          o.partCheck = true;
          return parseResolution(v, o.partTolerance);
        }},
+      {"--compare-compensation", true,
+       [](SimulateOptions& o, const std::string& v) {
+         o.compareCompensation = true;
+         o.compareSharp = v == "sharp";
+         return v == "none" || v == "sharp";
+       }},
       {"--features", false, [](SimulateOptions& o, const std::string&) { o.cut.features = true; return true; }},
       {"--svg", true, [](SimulateOptions& o, const std::string& v) { o.cut.svgPath = v; return true; }},
       {"--dxf", true, [](SimulateOptions& o, const std::string& v) { o.cut.dxfPath = v; return true; }},
@@ -122,7 +131,7 @@ constexpr const char* kSimulateUsage =
     "                              [--optional-stop] [--block-skip] [--no-persist]\n"
     "                              [--png out.png] [--profile out.csv] [--json summary.json]\n"
     "                              [--svg out.svg] [--dxf out.dxf] [--features] [--resolution MM] [--no-stock]\n"
-    "                              [--part-check] [--part-tolerance MM]\n"
+    "                              [--part-check] [--part-tolerance MM] [--compare-compensation none|sharp]\n"
     "                              [--stock DxL[xBORE][in]] [--units mm|inch] [--tool N=ID]...\n"
     "  --dialect  fanuc (Fanuc 0i-TF, default), haas (Haas ST lathe), classic (1999 rules)\n"
     "  --stock   stock before the file's header: 50x100 (mm), 2.1x4in, 118x80x90 (tube, bore 90)\n"
@@ -255,6 +264,16 @@ int runSimulate(const std::vector<std::string>& args) {
     check.leftoverTolerance = o.partTolerance;
     const cut::PartCheck result = cut::checkPart(timeline, cut::CutSetup::from(programFile.header, setup), check);
     for (const Diagnostic& d : cut::partCheckDiagnostics(result)) printDiagnostic(job.fileOf(d), d, o.lang);
+  }
+  if (o.compareCompensation && o.cut.enabled) {
+    // What G41/G42 change: each difference as a note on the block that cut the surface.
+    const cut::CompareWith with = o.compareSharp ? cut::CompareWith::SharpNose : cut::CompareWith::NoCompensation;
+    const cut::CompComparison c =
+        cut::compareCompensation(program, setup, runOptions, cut::CutSetup::from(programFile.header, setup), with);
+    for (const cut::CompDifference& d : c.differences)
+      std::fprintf(stderr, "%s:%d:1: %s: %s\n", job.fileOf(Diagnostic{Severity::Note, "", {d.line, 1, 0, d.file}, {}}).c_str(),
+                   d.line, std::string(severityName(Severity::Note, o.lang)).c_str(),
+                   cut::describeDifference(d, program, with, o.lang).c_str());
   }
   if (cut.alarm) {
     printDiagnostic(job.fileOf(*cut.alarm), *cut.alarm, o.lang);

@@ -494,6 +494,10 @@ Timeline interpret(const gcode::Program& program, const MachineSetup& setup, con
   timeline.moves.reserve(program.blocks.size() + program.blocks.size() / 2);
   timeline.snapshots.reserve(program.blocks.size());
   auto builder = makeTimelineBuilder(timeline, TimingConfig{setup.machine.rapidX, setup.machine.rapidZ, setup.machine.accelX, setup.machine.accelZ});
+  if (!options.noseCompensation) {
+    run(program, setup, options, *builder, timeline.flow);
+    return timeline;
+  }
   auto compensation = makeCompensationStage(*builder);
   run(program, setup, options, *compensation, timeline.flow);
   return timeline;

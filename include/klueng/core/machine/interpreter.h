@@ -22,6 +22,9 @@ struct RunOptions {
   // keeps them in a file beside the program). The run reads them and writes
   // its assignments back; nullptr = they start vacant and are not kept.
   std::map<int, double>* persistentVariables = nullptr;
+  // false: G41/G42 are read, but the imaginary tip follows the programmed path as
+  // under G40 (issue 10: what nose compensation changes, side by side).
+  bool noseCompensation = true;
 };
 
 struct MachineSetup {
