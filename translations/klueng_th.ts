@@ -341,6 +341,10 @@
 <context>
     <name>klueng::gui::MainWindow</name>
     <message>
+        <source>Z %1   Ø %2</source>
+        <translation>Z %1   Ø %2</translation>
+    </message>
+    <message>
         <source>Autosave failed: %1</source>
         <translation>บันทึกอัตโนมัติไม่สำเร็จ: %1</translation>
     </message>

@@ -513,4 +513,81 @@
         <translation>(ไม่มี)</translation>
     </message>
 </context>
+<context>
+    <name>klueng::gui::PartPanel</name>
+    <message>
+        <source>Part</source>
+        <translation>ชิ้นงาน</translation>
+    </message>
+    <message>
+        <source>Check part</source>
+        <translation>ตรวจชิ้นงาน</translation>
+    </message>
+    <message>
+        <source>Cut the program and list the finished part&apos;s features, gouges and leftovers</source>
+        <translation>จำลองการตัดตามโปรแกรม แล้วแสดงรูปร่างของชิ้นงานสำเร็จ ส่วนที่มีดกินเกินแบบ และเนื้อที่เหลือเกินแบบ</translation>
+    </message>
+    <message>
+        <source>Measure</source>
+        <translation>วัดขนาด</translation>
+    </message>
+    <message>
+        <source>Click two points on the output screen: ΔZ, ΔØ, distance and angle</source>
+        <translation>คลิกสองจุดบนจอแสดงผล: ΔZ, ΔØ, ระยะห่าง และมุม</translation>
+    </message>
+    <message>
+        <source>No comparison</source>
+        <translation>ไม่เปรียบเทียบ</translation>
+    </message>
+    <message>
+        <source>Compare: without G41/G42</source>
+        <translation>เปรียบเทียบ: ไม่ชดเชยรัศมีจมูกมีด (ไม่มี G41/G42)</translation>
+    </message>
+    <message>
+        <source>Compare: sharp nose (R 0)</source>
+        <translation>เปรียบเทียบ: จมูกมีดแหลม (R 0)</translation>
+    </message>
+    <message>
+        <source>Feature / finding</source>
+        <translation>รูปร่าง / สิ่งที่พบ</translation>
+    </message>
+    <message>
+        <source>Where</source>
+        <translation>ตำแหน่ง</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>บรรทัด</translation>
+    </message>
+    <message>
+        <source>Features</source>
+        <translation>รูปร่างชิ้นงาน</translation>
+    </message>
+    <message>
+        <source>Part check</source>
+        <translation>การตรวจชิ้นงาน</translation>
+    </message>
+    <message>
+        <source>Compensation</source>
+        <translation>การชดเชยรัศมีจมูกมีด</translation>
+    </message>
+    <message>
+        <source>The program has errors: correct them, then check the part.</source>
+        <translation>โปรแกรมมีข้อผิดพลาด: แก้ไขก่อน แล้วจึงตรวจชิ้นงาน</translation>
+    </message>
+    <message>
+        <source>The cut part is the part the program describes: no gouge, no leftover.</source>
+        <translation>ชิ้นงานที่ตัดได้ตรงกับแบบที่โปรแกรมกำหนด: ไม่มีส่วนที่กินเกิน ไม่มีเนื้อเหลือ</translation>
+    </message>
+    <message>
+        <source>The program has no G41/G42 moves.</source>
+        <translation>โปรแกรมนี้ไม่มีการเคลื่อนที่แบบ G41/G42</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n finding(s): see Part check.</source>
+        <translation>
+            <numerusform>พบ %n รายการ: ดูที่การตรวจชิ้นงาน</numerusform>
+        </translation>
+    </message>
+</context>
 </TS>

@@ -65,6 +65,7 @@ class MainWindow : public QMainWindow {
   QUndoStack* setupUndoStack() const { return setupUndo_; }
   RunController* runController() const { return runner_; }
   class FlowPanel* flowPanel() const { return flow_; }
+  class PartPanel* partPanel() const { return part_; }
   OutputView* outputView() const { return output_; }
   StatusFields* statusFields() const { return statusFields_; }
   class ExplainBar* explainBar() const { return explainBar_; }
@@ -163,6 +164,7 @@ class MainWindow : public QMainWindow {
   CodeEditor* editor_ = nullptr;
   DiagnosticsPanel* diagnostics_ = nullptr;
   class FlowPanel* flow_ = nullptr;
+  class PartPanel* part_ = nullptr;
   RunController* runner_ = nullptr;
   OutputView* output_ = nullptr;
   StatusFields* statusFields_ = nullptr;

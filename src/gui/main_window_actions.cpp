@@ -17,6 +17,7 @@
 #include "gui/help_contents.h"
 #include "gui/language.h"
 #include "gui/main_window.h"
+#include "gui/part_panel.h"
 #include "gui/output_view.h"
 #include "gui/run_speed_control.h"
 #include "gui/settings.h"
@@ -208,6 +209,27 @@ void MainWindow::createDocks() {
   flow_->follow(runner_);
   connect(flow_, &FlowPanel::callerActivated, this, [this](int file, int line) {
     if (file == 0) editor_->goToFileLine(line, 1);
+  });
+  // Issue 10: the part's features, the part check and the compensation comparison.
+  part_ = new PartPanel(this, [this] {
+    PartPanel::Source source;
+    source.program = currentProgramFile();
+    source.setup = toolInference_.setup;
+    source.run.dialect = dialect_;
+    source.run.powerOnUnits = powerOnUnits_;
+    source.folder = programFolder().toStdString();
+    return source;
+  });
+  addDockWidget(Qt::BottomDockWidgetArea, part_);
+  tabifyDockWidget(flow_, part_);
+  diagnostics_->raise();
+  connect(part_, &PartPanel::overlayChanged, output_, &OutputView::setPartOverlay);
+  connect(part_, &PartPanel::lineActivated, this, [this](int line) { editor_->goToFileLine(line, 1); });
+  connect(part_, &PartPanel::measuringToggled, output_, &OutputView::setMeasuring);
+  connect(output_, &OutputView::measured, this, [this](const QString& reading) { statusBar()->showMessage(reading); });
+  connect(output_, &OutputView::cursorPositionChanged, this, [this](double xDiameter, double z) {
+    if (!output_->isMeasuring() || statusBar()->currentMessage().isEmpty())
+      statusBar()->showMessage(tr("Z %1   Ø %2").arg(z, 0, 'f', 3).arg(xDiameter, 0, 'f', 3), 3000);
   });
 }
 

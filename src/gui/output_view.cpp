@@ -52,6 +52,11 @@ OutputView::OutputView(QWidget* parent) : QGraphicsView(parent) {
   scene()->addItem(stock_);
   scene()->addItem(tool_);
   scene()->addItem(marker_);
+  overlay_ = new PartOverlayItem;
+  measure_ = new MeasureItem;
+  measure_->setVisible(false);
+  scene()->addItem(overlay_);
+  scene()->addItem(measure_);
   rebuild();
 }
 
@@ -279,8 +284,47 @@ void OutputView::updateRulers() {
 
 void OutputView::mouseMoveEvent(QMouseEvent* event) {
   QGraphicsView::mouseMoveEvent(event);
-  const core::Vec2 p = render::fromScene(mapToScene(event->position().toPoint()));
+  const core::Vec2 p = render::fromScene(snapped(mapToScene(event->position().toPoint())));
   emit cursorPositionChanged(core::diameterOf(p), core::zOf(p));
+}
+
+void OutputView::mousePressEvent(QMouseEvent* event) {
+  if (!measuring_ || event->button() != Qt::LeftButton) {
+    QGraphicsView::mousePressEvent(event);
+    return;
+  }
+  const QPointF p = snapped(mapToScene(event->position().toPoint()));
+  if (!measureA_ || measureB_) {
+    measureA_ = p;
+    measureB_.reset();
+  } else {
+    measureB_ = p;
+    emit measured(MeasureItem::reading(*measureA_, *measureB_));
+  }
+  measure_->setPoints(*measureA_, measureB_);
+  measure_->setVisible(true);
+  event->accept();
+}
+
+void OutputView::setMeasuring(bool on) {
+  measuring_ = on;
+  setDragMode(on ? QGraphicsView::NoDrag : QGraphicsView::ScrollHandDrag);
+  viewport()->setCursor(on ? Qt::CrossCursor : Qt::OpenHandCursor);
+  if (!on) {
+    measureA_.reset();
+    measureB_.reset();
+    measure_->setVisible(false);
+  }
+}
+
+void OutputView::setPartOverlay(const PartOverlay& overlay) { overlay_->setOverlay(overlay); }
+
+const PartOverlay& OutputView::partOverlay() const { return overlay_->overlay(); }
+
+QPointF OutputView::snapped(const QPointF& scenePos, double pixels) const {
+  const auto* sim = controller_ && !controller_->isBusy() ? controller_->cutSimulator() : nullptr;
+  if (!sim) return scenePos;
+  return snapToStock(sim->stock(), scenePos, pixels / std::max(1e-6, pixelsPerMm()));
 }
 
 void OutputView::mouseDoubleClickEvent(QMouseEvent* event) {

@@ -18,8 +18,10 @@
 #include <QGraphicsView>
 #include <QImage>
 #include <QPointer>
+#include <optional>
 #include <vector>
 
+#include "gui/part_overlay.h"
 #include "klueng/core/geometry.h"
 
 namespace klueng::gui {
@@ -48,6 +50,15 @@ class OutputView : public QGraphicsView {
   double pixelsPerMm() const;
   QImage renderToImage(const QSize& size);
   void setShowPath(bool show);
+  // The Part panel's marks over the section (issue 10), empty to clear.
+  void setPartOverlay(const PartOverlay& overlay);
+  const PartOverlay& partOverlay() const;
+  // Measure: each left click puts a point (snapped to the part's edges); two make
+  // a reading (measured()). Off clears the points.
+  void setMeasuring(bool on);
+  bool isMeasuring() const { return measuring_; }
+  // The point under a scene position, snapped to the stock's profile and faces within `pixels`.
+  QPointF snapped(const QPointF& scenePos, double pixels = 6.0) const;
   // The ruler thickness in pixels (the viewport margins).
   static constexpr int kRulerSize = 24;
 
@@ -62,12 +73,15 @@ class OutputView : public QGraphicsView {
   void zoomChanged(double pixelsPerMm);
   // Mouse position in work coordinates (X as diameter), for a coordinate readout.
   void cursorPositionChanged(double xDiameter, double z);
+  // The measure tool's reading: "ΔZ 20.000   ΔØ 10.000   d 22.361   ∠ 26.57°".
+  void measured(const QString& reading);
 
  protected:
   void wheelEvent(QWheelEvent* event) override;
   void resizeEvent(QResizeEvent* event) override;
   void scrollContentsBy(int dx, int dy) override;
   void mouseMoveEvent(QMouseEvent* event) override;
+  void mousePressEvent(QMouseEvent* event) override;
   void mouseDoubleClickEvent(QMouseEvent* event) override;
   void drawBackground(QPainter* painter, const QRectF& rect) override;
   void changeEvent(QEvent* event) override;
@@ -96,6 +110,10 @@ class OutputView : public QGraphicsView {
   ChuckItem* chuck_ = nullptr;
   ToolItem* tool_ = nullptr;
   MarkerItem* marker_ = nullptr;
+  PartOverlayItem* overlay_ = nullptr;
+  MeasureItem* measure_ = nullptr;
+  bool measuring_ = false;
+  std::optional<QPointF> measureA_, measureB_;
   std::vector<TrailItem*> trail_;   // completed chunks, then the live one
   int trailMoves_ = 0;              // timeline moves already in the trail
   double trailTime_ = 0.0;

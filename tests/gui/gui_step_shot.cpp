@@ -13,6 +13,8 @@
 #include <QLineEdit>
 #include <QTextBrowser>
 #include "gui/main_window.h"
+#include "gui/part_panel.h"
+#include <QTreeWidget>
 #include "gui/resources.h"
 #include "gui/run_controller.h"
 #include "gui/status_panel.h"
@@ -47,6 +49,18 @@ int main(int argc, char** argv) {
     }
     QTest::qWait(300);
     return help->grab().save(QString::fromLocal8Bit(argv[3])) ? 0 : 1;
+  }
+  // "part:N": the Part panel raised, the part checked with comparison N (0 none,
+  // 1 without G41/G42, 2 sharp nose) and its first finding selected.
+  if (QString::fromLocal8Bit(argv[2]).startsWith(QStringLiteral("part:"))) {
+    auto* part = w.partPanel();
+    part->setComparison(QString::fromLocal8Bit(argv[2]).mid(5).toInt());
+    part->raise();
+    part->analyse();
+    if (part->list()->topLevelItemCount() > 0 && part->list()->topLevelItem(0)->childCount() > 3)
+      part->list()->setCurrentItem(part->list()->topLevelItem(0)->child(3));
+    QTest::qWait(200);
+    return w.grab().save(QString::fromLocal8Bit(argv[3])) ? 0 : 1;
   }
   // "class:DIR": File > Grade a class on DIR against PROGRAM.
   if (QString::fromLocal8Bit(argv[2]).startsWith(QStringLiteral("class:"))) {

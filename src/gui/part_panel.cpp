@@ -1,0 +1,205 @@
+#include "gui/part_panel.h"
+
+#include <QApplication>
+#include <QComboBox>
+#include <QEvent>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+#include <cmath>
+
+#include "gui/language.h"
+#include "klueng/core/cut/comp_compare.h"
+#include "klueng/core/cut/part_check.h"
+#include "klueng/core/cut/part_features.h"
+#include "klueng/core/machine/job.h"
+#include "klueng/core/diagnostic_codes.h"
+#include "klueng/core/messages.h"
+#include "render/lathe_painters.h"
+
+namespace klueng::gui {
+
+namespace {
+
+using namespace klueng::core;
+
+enum Role { kLineRole = Qt::UserRole + 1, kZLeftRole, kZRightRole, kPathRole };
+
+QString qs(const std::string& s) { return QString::fromStdString(s); }
+
+// The feature's profile, upper half, in scene units (y = -radius).
+QPainterPath profileOf(const cut::PartFeature& f) {
+  QPainterPath path;
+  if (f.kind == cut::FeatureKind::Arc) {
+    const int steps = 24;
+    for (int k = 0; k <= steps; ++k) {
+      const double z = f.zLeft + (f.zRight - f.zLeft) * k / steps;
+      const double dz = std::clamp(z - f.centre.x(), -f.radius, f.radius);
+      const double h = std::sqrt(std::max(0.0, f.radius * f.radius - dz * dz));
+      const bool upper = (f.side == cut::FeatureSide::Outside) == f.convex;
+      const QPointF p(z, -(f.centre.y() + (upper ? h : -h)));
+      k == 0 ? path.moveTo(p) : path.lineTo(p);
+    }
+    return path;
+  }
+  const double r0 = f.kind == cut::FeatureKind::Groove ? f.diameter / 2.0 : f.diameterLeft / 2.0;
+  const double r1 = f.kind == cut::FeatureKind::Groove ? f.diameter / 2.0 : f.diameterRight / 2.0;
+  path.moveTo(f.zLeft, -r0);
+  path.lineTo(f.zRight, -r1);
+  return path;
+}
+
+QTreeWidgetItem* row(QTreeWidgetItem* parent, const QString& what, const QString& where, int line, double zLeft,
+                     double zRight) {
+  auto* item = new QTreeWidgetItem(parent, {what, where, line > 0 ? QString::number(line) : QString()});
+  item->setData(0, kLineRole, line);
+  item->setData(0, kZLeftRole, zLeft);
+  item->setData(0, kZRightRole, zRight);
+  return item;
+}
+
+}  // namespace
+
+PartPanel::PartPanel(QWidget* parent, std::function<Source()> source)
+    : QDockWidget(parent), source_(std::move(source)) {
+  setObjectName(QStringLiteral("partPanel"));
+  auto* body = new QWidget(this);
+  auto* layout = new QVBoxLayout(body);
+  layout->setContentsMargins(2, 2, 2, 2);
+  auto* bar = new QHBoxLayout;
+  check_ = new QPushButton(body);
+  check_->setObjectName(QStringLiteral("checkPart"));
+  compare_ = new QComboBox(body);
+  compare_->setObjectName(QStringLiteral("compareCompensation"));
+  compare_->addItems({QString(), QString(), QString()});
+  measure_ = new QPushButton(body);
+  measure_->setObjectName(QStringLiteral("measure"));
+  measure_->setCheckable(true);
+  summary_ = new QLabel(body);
+  summary_->setObjectName(QStringLiteral("partSummary"));
+  summary_->setWordWrap(true);
+  bar->addWidget(check_);
+  bar->addWidget(compare_);
+  bar->addWidget(measure_);
+  bar->addWidget(summary_, 1);
+  layout->addLayout(bar);
+  list_ = new QTreeWidget(body);
+  list_->setObjectName(QStringLiteral("partList"));
+  list_->setColumnCount(3);
+  list_->setAlternatingRowColors(true);
+  list_->header()->setSectionResizeMode(0, QHeaderView::Stretch);
+  list_->header()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
+  list_->header()->setSectionResizeMode(2, QHeaderView::ResizeToContents);
+  layout->addWidget(list_);
+  setWidget(body);
+  connect(check_, &QPushButton::clicked, this, &PartPanel::analyse);
+  connect(measure_, &QPushButton::toggled, this, &PartPanel::measuringToggled);
+  connect(compare_, &QComboBox::activated, this, [this] { analyse(); });
+  connect(list_, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem* item) { select(item); });
+  connect(list_, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem* item) {
+    const int line = item ? item->data(0, kLineRole).toInt() : 0;
+    if (line > 0) emit lineActivated(line);
+  });
+  retranslateUi();
+}
+
+void PartPanel::setComparison(int compare) { compare_->setCurrentIndex(std::clamp(compare, 0, 2)); }
+
+void PartPanel::retranslateUi() {
+  setWindowTitle(tr("Part"));
+  check_->setText(tr("Check part"));
+  check_->setToolTip(tr("Cut the program and list the finished part's features, gouges and leftovers"));
+  measure_->setText(tr("Measure"));
+  measure_->setToolTip(tr("Click two points on the output screen: ΔZ, ΔØ, distance and angle"));
+  compare_->setItemText(0, tr("No comparison"));
+  compare_->setItemText(1, tr("Compare: without G41/G42"));
+  compare_->setItemText(2, tr("Compare: sharp nose (R 0)"));
+  list_->setHeaderLabels({tr("Feature / finding"), tr("Where"), tr("Line")});
+  if (features_) features_->setText(0, tr("Features"));
+  if (defects_) defects_->setText(0, tr("Part check"));
+  if (differences_) differences_->setText(0, tr("Compensation"));
+}
+
+void PartPanel::changeEvent(QEvent* event) {
+  QDockWidget::changeEvent(event);
+  if (event->type() == QEvent::LanguageChange) retranslateUi();
+}
+
+void PartPanel::analyse() {
+  const Source src = source_();
+  const Lang lang = Language::coreLang();
+  QApplication::setOverrideCursor(Qt::WaitCursor);
+  list_->clear();
+  features_ = defects_ = differences_ = nullptr;
+  base_ = PartOverlay{};
+  machine::JobOptions job;
+  job.run = src.run;
+  job.run.persistentVariables = nullptr;  // a look at the part must not change #500-#999
+  job.folder = src.folder;
+  const machine::CompiledJob compiled = machine::compileJob(src.program, src.setup, job);
+  if (!compiled.timeline) {
+    summary_->setText(tr("The program has errors: correct them, then check the part."));
+    QApplication::restoreOverrideCursor();
+    emit overlayChanged(base_);
+    return;
+  }
+  const cut::CutSetup setup = cut::CutSetup::from(src.program.header, src.setup);
+  const cut::PartCheck check = cut::checkPart(*compiled.timeline, setup);
+  cut::CutOptions options;
+  options.checkpointBudgetBytes = 0;
+  cut::CutSimulator sim(*compiled.timeline, setup, options);
+  sim.runToEnd();
+  const cut::PartFeatures part = cut::partFeatures(sim.stock());
+
+  features_ = new QTreeWidgetItem(list_);
+  for (const auto* side : {&part.outside, &part.inside})
+    for (const cut::PartFeature& f : *side) {
+      QTreeWidgetItem* item = row(features_, qs(cut::describeFeature(f, lang)), qs(cut::featureLabel(f, lang)), 0,
+                                  f.zLeft, f.zRight);
+      item->setData(0, kPathRole, QVariant::fromValue(profileOf(f)));
+    }
+  defects_ = new QTreeWidgetItem(list_);
+  for (const Diagnostic& d : cut::partCheckDiagnostics(check)) {
+    QTreeWidgetItem* item = row(defects_, qs(formatMessage(d, lang)), QString(), d.range.line, 0.0, 0.0);
+    if (d.code == codes::kPartGouge || d.code == codes::kBoreGouge) item->setForeground(0, QColor(190, 0, 0));
+    if (d.code == codes::kPartLeftover || d.code == codes::kBoreLeftover) item->setForeground(0, QColor(150, 110, 0));
+  }
+  for (const cut::PartDefect& d : check.defects) {
+    const bool gouge = d.kind == cut::DefectKind::Gouge;
+    const double r = d.diameter / 2.0;
+    base_.bands.push_back({d.zLeft, d.zRight, gouge ? r - d.depth : r, gouge ? r : r + d.depth,
+                           gouge ? QColor(220, 0, 0) : QColor(240, 200, 0)});
+  }
+  QString summary = check.defects.empty() && !check.nothingCut
+                        ? tr("The cut part is the part the program describes: no gouge, no leftover.")
+                        : tr("%n finding(s): see Part check.", nullptr, static_cast<int>(check.defects.size()));
+  if (compare_->currentIndex() > 0) {
+    const auto with = compare_->currentIndex() == 1 ? cut::CompareWith::NoCompensation : cut::CompareWith::SharpNose;
+    const cut::CompComparison c = cut::compareCompensation(compiled.program, src.setup, job.run, setup, with);
+    differences_ = new QTreeWidgetItem(list_);
+    if (c.other) base_.otherOutline = render::stockShapeFromStock(*c.other).outline;
+    for (const cut::CompDifference& d : c.differences) {
+      row(differences_, qs(cut::describeDifference(d, compiled.program, with, lang)),
+          QStringLiteral("Z%1").arg(d.z, 0, 'f', 3), d.line, d.zLeft, d.zRight);
+      const double r = d.diameter / 2.0;
+      base_.bands.push_back({d.zLeft, d.zRight, r, r + d.radial, QColor(255, 140, 0)});
+    }
+    if (!c.usesCompensation) summary += QLatin1Char(' ') + tr("The program has no G41/G42 moves.");
+  }
+  summary_->setText(summary);
+  retranslateUi();
+  list_->expandAll();
+  QApplication::restoreOverrideCursor();
+  emit overlayChanged(base_);
+}
+
+void PartPanel::select(QTreeWidgetItem* item) {
+  PartOverlay overlay = base_;
+  if (item && item->data(0, kPathRole).isValid()) overlay.highlight = item->data(0, kPathRole).value<QPainterPath>();
+  emit overlayChanged(overlay);
+}
+
+}  // namespace klueng::gui

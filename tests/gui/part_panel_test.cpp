@@ -1,0 +1,123 @@
+// The Part dock and the measure tool (issue 10, items 2-4) in the real main
+// window: sample 01's features, its part check, the comparison without
+// G41/G42 drawn over the section and put on its blocks, a feature marked on
+// the output screen, and a measurement between two clicks.
+#include <QAction>
+#include <QApplication>
+#include <QComboBox>
+#include <QLabel>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTest>
+#include <QTreeWidget>
+
+#include "fresh_user_folders.h"
+#include "gui/code_editor.h"
+#include "gui/language.h"
+#include "gui/main_window.h"
+#include "gui/output_view.h"
+#include "gui/part_panel.h"
+#include "gui/resources.h"
+#include "gui/run_controller.h"
+
+using namespace klueng;
+
+namespace {
+
+QStringList texts(QTreeWidgetItem* parent) {
+  QStringList out;
+  for (int i = 0; parent && i < parent->childCount(); ++i) out << parent->child(i)->text(0);
+  return out;
+}
+
+QTreeWidgetItem* group(QTreeWidget* list, const QString& title) {
+  for (int i = 0; i < list->topLevelItemCount(); ++i)
+    if (list->topLevelItem(i)->text(0) == title) return list->topLevelItem(i);
+  return nullptr;
+}
+
+}  // namespace
+
+class PartPanelTest : public QObject {
+  Q_OBJECT
+ private slots:
+  void initTestCase() {
+    klueng::test::freshUserFolders();
+    gui::initResources();
+    gui::Language::instance()->setLanguage(QStringLiteral("en"));
+  }
+
+  void sample01FeaturesCheckAndComparison() {
+    gui::MainWindow w;
+    w.resize(1366, 728);
+    w.show();
+    QVERIFY(w.openFile(QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt")));
+    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    gui::PartPanel* part = w.partPanel();
+    QVERIFY(part);
+    auto* output = w.findChild<gui::OutputView*>();
+    QVERIFY(output);
+    part->setComparison(1);
+    part->analyse();
+
+    const QStringList features = texts(group(part->list(), QStringLiteral("Features")));
+    QVERIFY2(features.contains(QStringLiteral("Cylinder Ø30, Z-3 to Z-19.2, length 16.2")), qPrintable(features.join(u'\n')));
+    QVERIFY(features.contains(QStringLiteral("Chamfer C3 (3 × 45°), Ø24.469 to Ø30, Z-0.234 to Z-3")));
+    QVERIFY(features.contains(QStringLiteral("Arc R2 round, centre Z-22 X36, Z-20 to Z-22")));
+    QVERIFY(texts(group(part->list(), QStringLiteral("Part check"))).isEmpty());  // sample 01 is right
+    QVERIFY(part->summary()->text().contains(QStringLiteral("no gouge, no leftover")));
+
+    QTreeWidgetItem* comp = group(part->list(), QStringLiteral("Compensation"));
+    const QStringList differences = texts(comp);
+    QVERIFY2(differences.contains(QStringLiteral("chamfer C3 N350: 0.33 mm short without compensation")),
+             qPrintable(differences.join(u'\n')));
+    QVERIFY(differences.contains(QStringLiteral("arc R2 N380: 0.33 mm short without compensation")));
+    QVERIFY(!output->partOverlay().otherOutline.isEmpty());
+    QVERIFY(output->partOverlay().bands.size() >= 3);
+
+    // A difference goes to the block that cut that surface.
+    auto* editor = w.findChild<gui::CodeEditor*>();
+    QVERIFY(editor);
+    for (int i = 0; i < comp->childCount(); ++i)
+      if (comp->child(i)->text(0).startsWith(QStringLiteral("chamfer C3"))) emit part->list()->itemActivated(comp->child(i), 0);
+    QCOMPARE(editor->cursorFileLine(), 43);
+
+    // Selecting a feature marks its profile on the output screen.
+    QTreeWidgetItem* features_ = group(part->list(), QStringLiteral("Features"));
+    part->list()->setCurrentItem(features_->child(3));
+    QVERIFY(!output->partOverlay().highlight.isEmpty());
+    QVERIFY(output->partOverlay().highlight.boundingRect().width() > 10.0);  // the Ø30 cylinder, 16.2 mm
+
+    // Measure: two clicks on the Ø30 and Ø40 steps of the cut part read ΔZ and
+    // ΔØ, snapped to the profile.
+    auto* runner = w.findChild<gui::RunController*>();
+    QVERIFY(runner);
+    runner->setSpeed(gui::RunController::kAsFastAsPossible);
+    w.action(QStringLiteral("actionGo"))->trigger();
+    QVERIFY(QTest::qWaitFor([runner] { return runner->state() == gui::RunState::Finished; }, 30000));
+    runner->waitForIdle();
+    QVERIFY(runner->cutSimulator());
+    output->fitToView();
+    output->setMeasuring(true);
+    QSignalSpy reading(output, &gui::OutputView::measured);
+    const QPoint a = output->mapFromScene(QPointF(-10.0, -15.05));  // just off Ø30's edge, upper half
+    const QPoint b = output->mapFromScene(QPointF(-30.0, -20.05));  // just off Ø40's edge
+    QTest::mouseClick(output->viewport(), Qt::LeftButton, {}, a);
+    QTest::mouseClick(output->viewport(), Qt::LeftButton, {}, b);
+    QCOMPARE(reading.count(), 1);
+    const QString text = reading.first().first().toString();
+    QVERIFY2(text.contains(QStringLiteral("ΔØ 10.000")), qPrintable(text));  // Ø30 to Ø40, exactly
+    output->setMeasuring(false);
+  }
+
+  void thaiLabels() {
+    gui::Language::instance()->setLanguage(QStringLiteral("th"));
+    gui::MainWindow w;
+    QCOMPARE(w.partPanel()->windowTitle(), QStringLiteral("ชิ้นงาน"));
+    QCOMPARE(w.partPanel()->measureButton()->text(), QStringLiteral("วัดขนาด"));
+    gui::Language::instance()->setLanguage(QStringLiteral("en"));
+  }
+};
+
+QTEST_MAIN(PartPanelTest)
+#include "part_panel_test.moc"
