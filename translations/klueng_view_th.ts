@@ -590,4 +590,15 @@
         </translation>
     </message>
 </context>
+<context>
+    <name>klueng::gui::Part3DDock</name>
+    <message>
+        <source>3D view</source>
+        <translation>ภาพสามมิติ</translation>
+    </message>
+    <message>
+        <source>Drag to turn, right-drag to move, wheel to zoom, double-click for the first view</source>
+        <translation>ลากเพื่อหมุน ลากด้วยปุ่มขวาเพื่อเลื่อน หมุนล้อเมาส์เพื่อย่อขยาย ดับเบิลคลิกเพื่อกลับสู่มุมมองแรก</translation>
+    </message>
+</context>
 </TS>

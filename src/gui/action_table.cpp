@@ -154,7 +154,7 @@ const MenuSpec kMenus[] = {
     {"menuDialect", KLUENG_TR("G-code &dialect"),
      "actionDialectFanuc actionDialectHaas actionDialectClassic | actionUnitsMachine actionUnitsMm actionUnitsInch"},
     {"menuView", KLUENG_TR("&View"),
-     "fileToolBar editToolBar runToolBar helpToolBar actionShowStatusBar actionShowLamps diagnosticsDock flowDock | "
+     "fileToolBar editToolBar runToolBar helpToolBar actionShowStatusBar actionShowLamps diagnosticsDock flowDock partDock view3dDock | "
      "actionShowPath actionFitView actionZoomIn actionZoomOut"},
     {"menuHelp", KLUENG_TR("&Help"), "actionContents actionToggleLanguage | actionAbout"},
 };

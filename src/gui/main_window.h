@@ -66,6 +66,7 @@ class MainWindow : public QMainWindow {
   RunController* runController() const { return runner_; }
   class FlowPanel* flowPanel() const { return flow_; }
   class PartPanel* partPanel() const { return part_; }
+  class Part3DDock* view3dDock() const { return view3d_; }
   OutputView* outputView() const { return output_; }
   StatusFields* statusFields() const { return statusFields_; }
   class ExplainBar* explainBar() const { return explainBar_; }
@@ -165,6 +166,7 @@ class MainWindow : public QMainWindow {
   DiagnosticsPanel* diagnostics_ = nullptr;
   class FlowPanel* flow_ = nullptr;
   class PartPanel* part_ = nullptr;
+  class Part3DDock* view3d_ = nullptr;
   RunController* runner_ = nullptr;
   OutputView* output_ = nullptr;
   StatusFields* statusFields_ = nullptr;

@@ -17,6 +17,7 @@
 #include "gui/help_contents.h"
 #include "gui/language.h"
 #include "gui/main_window.h"
+#include "gui/part3d_view.h"
 #include "gui/part_panel.h"
 #include "gui/output_view.h"
 #include "gui/run_speed_control.h"
@@ -54,6 +55,8 @@ void MainWindow::createActions() {
   actions_ = new ActionTable(this, speedCount());
   actions_->add(QStringLiteral("diagnosticsDock"), diagnostics_->toggleViewAction());
   actions_->add(QStringLiteral("flowDock"), flow_->toggleViewAction());
+  actions_->add(QStringLiteral("partDock"), part_->toggleViewAction());
+  actions_->add(QStringLiteral("view3dDock"), view3d_->toggleViewAction());
   actions_->buildToolBars();
   actions_->buildMenus();
   connect(actions_->menu(QStringLiteral("menuRecent")), &QMenu::aboutToShow, this,
@@ -223,6 +226,11 @@ void MainWindow::createDocks() {
   addDockWidget(Qt::BottomDockWidgetArea, part_);
   tabifyDockWidget(flow_, part_);
   diagnostics_->raise();
+  // Issue 10: the 3D view, on the right beside the editor and the output screen; hidden at first.
+  view3d_ = new Part3DDock(this);
+  addDockWidget(Qt::RightDockWidgetArea, view3d_);
+  view3d_->view()->setRunController(runner_);
+  view3d_->hide();
   connect(part_, &PartPanel::overlayChanged, output_, &OutputView::setPartOverlay);
   connect(part_, &PartPanel::lineActivated, this, [this](int line) { editor_->goToFileLine(line, 1); });
   connect(part_, &PartPanel::measuringToggled, output_, &OutputView::setMeasuring);

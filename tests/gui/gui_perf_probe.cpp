@@ -12,6 +12,7 @@
 
 #include "../../bench/program_generator.h"
 #include "gui/output_view.h"
+#include "gui/part3d_view.h"
 #include "gui/run_controller.h"
 #include "klueng/core/cut/cut_simulator.h"
 #include "klueng/core/gcode/checker.h"
@@ -97,6 +98,40 @@ int main(int argc, char** argv) {
     std::printf("1x sample 01, 1280x800: %.1f frames/s drawn (%.1f animation steps/s), %.0f mm^3 cut in %.2f s, "
                 "longest stall %.1f ms\n",
                 (view.paintCount() - paints0) / seconds, (controller.frameCount() - frames0) / seconds, cut, seconds, stall);
+  }
+
+  // 1b. The same with the 3D view (issue 10) open beside the output screen, 640x600 each.
+  {
+    RunController controller;
+    controller.setMachineSetup(setup);
+    controller.setProgram(*core::io::readProgramFile(KLUENG_SAMPLES_DIR "/01-step-shaft.txt").value);
+    OutputView view;
+    view.resize(640, 600);
+    view.setRunController(&controller);
+    view.show();
+    Part3DWidget view3d;
+    view3d.resize(640, 600);
+    view3d.setRunController(&controller);
+    view3d.show();
+    (void)QTest::qWaitForWindowExposed(&view3d);
+    controller.setSpeed(RunController::kAsFastAsPossible);
+    controller.setBreakpoints({18});
+    controller.go();
+    controller.waitForIdle();
+    controller.setBreakpoints({});
+    controller.setSpeed(1.0);
+    const qint64 paints2d = view.paintCount(), paints3d = view3d.paintCount();
+    probe.start();
+    QElapsedTimer wall;
+    wall.start();
+    controller.go();
+    QTest::qWait(5000);
+    const double seconds = wall.nsecsElapsed() / 1e9;
+    const double stall = probe.stop();
+    controller.pause();
+    std::printf("1x sample 01 with the 3D view: 2-D %.1f frames/s, 3D %.1f frames/s (%d quads), longest stall %.1f ms\n",
+                (view.paintCount() - paints2d) / seconds, (view3d.paintCount() - paints3d) / seconds,
+                view3d.lastQuadCount(), stall);
   }
 
   // 2. As fast as possible on a long program vs the core alone.

@@ -13,6 +13,7 @@
 #include <QLineEdit>
 #include <QTextBrowser>
 #include "gui/main_window.h"
+#include "gui/part3d_view.h"
 #include "gui/part_panel.h"
 #include <QTreeWidget>
 #include "gui/resources.h"
@@ -74,11 +75,31 @@ int main(int argc, char** argv) {
     return dialog->grab().save(QString::fromLocal8Bit(argv[3])) ? 0 : 1;
   }
   w.runController()->setSpeed(RunController::kAsFastAsPossible);
-  for (int i = 0; i < std::atoi(argv[2]); ++i) {
+  // "3d:N": the 3D view shown beside the output screen, N blocks stepped (the window, then the 3D view alone
+  // as OUT-3d.png).
+  QString steps = QString::fromLocal8Bit(argv[2]);
+  const bool view3d = steps.startsWith(QStringLiteral("3d:"));
+  if (view3d) {
+    steps = steps.mid(3);
+    w.view3dDock()->show();
+    w.resizeDocks({w.view3dDock()}, {560}, Qt::Horizontal);
+  }
+  if (steps == QStringLiteral("end")) {  // run to the program's end
+    w.action(QStringLiteral("actionGo"))->trigger();
+    if (!QTest::qWaitFor([&w] { return w.runController()->state() == RunState::Finished; }, 60000)) return 1;
+    w.runController()->waitForIdle();
+  }
+  for (int i = 0; i < steps.toInt(); ++i) {
     w.action(QStringLiteral("actionStep"))->trigger();
     if (!QTest::qWaitFor([&w] { return w.runController()->state() == RunState::Paused || w.runController()->state() == RunState::Finished; }, 20000)) return 1;
   }
   QTest::qWait(300);
   std::printf("status fields: %d px wanted, %d px shown\n", w.statusFields()->sizeHint().width(), w.statusFields()->width());
+  if (view3d) {
+    QString out = QString::fromLocal8Bit(argv[3]);
+    out.insert(out.lastIndexOf(QLatin1Char('.')), QStringLiteral("-3d"));
+    if (!w.view3dDock()->view()->grab().save(out)) return 1;
+    std::printf("3d: %d quads\n", w.view3dDock()->view()->lastQuadCount());
+  }
   return w.grab().save(QString::fromLocal8Bit(argv[3])) ? 0 : 1;
 }

@@ -16,6 +16,7 @@
 #include "gui/language.h"
 #include "gui/main_window.h"
 #include "gui/output_view.h"
+#include "gui/part3d_view.h"
 #include "gui/part_panel.h"
 #include "gui/resources.h"
 #include "gui/run_controller.h"
@@ -110,11 +111,43 @@ class PartPanelTest : public QObject {
     output->setMeasuring(false);
   }
 
+  // The 3D view: shown from the View menu, draws the bar before a run and the
+  // cut part after it (thread teeth make many more faces), turns with a drag.
+  void view3dFollowsTheRun() {
+    gui::MainWindow w;
+    w.resize(1366, 728);
+    w.show();
+    QVERIFY(w.openFile(QStringLiteral(KLUENG_SAMPLES_DIR "/02-thread.txt")));
+    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    QAction* show = w.action(QStringLiteral("view3dDock"));
+    QVERIFY(show);
+    QVERIFY(!w.view3dDock()->isVisible());
+    show->trigger();
+    QVERIFY(w.view3dDock()->isVisible());
+    gui::Part3DWidget* view = w.view3dDock()->view();
+    view->repaint();
+    const int barQuads = view->lastQuadCount();
+    QVERIFY2(barQuads > 20, qPrintable(QString::number(barQuads)));
+    auto* runner = w.findChild<gui::RunController*>();
+    runner->setSpeed(gui::RunController::kAsFastAsPossible);
+    w.action(QStringLiteral("actionGo"))->trigger();
+    QVERIFY(QTest::qWaitFor([runner] { return runner->state() == gui::RunState::Finished; }, 30000));
+    runner->waitForIdle();
+    view->repaint();
+    QVERIFY2(view->lastQuadCount() > 10 * barQuads, qPrintable(QString::number(view->lastQuadCount())));
+    const double yaw = view->camera().yaw;
+    QTest::mousePress(view, Qt::LeftButton, {}, QPoint(100, 100));
+    QTest::mouseMove(view, QPoint(150, 100));
+    QTest::mouseRelease(view, Qt::LeftButton, {}, QPoint(150, 100));
+    QVERIFY(view->camera().yaw != yaw);
+  }
+
   void thaiLabels() {
     gui::Language::instance()->setLanguage(QStringLiteral("th"));
     gui::MainWindow w;
     QCOMPARE(w.partPanel()->windowTitle(), QStringLiteral("ชิ้นงาน"));
     QCOMPARE(w.partPanel()->measureButton()->text(), QStringLiteral("วัดขนาด"));
+    QCOMPARE(w.view3dDock()->windowTitle(), QStringLiteral("ภาพสามมิติ"));
     gui::Language::instance()->setLanguage(QStringLiteral("en"));
   }
 };
