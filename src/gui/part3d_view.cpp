@@ -120,4 +120,9 @@ void Part3DDock::changeEvent(QEvent* event) {
   if (event->type() == QEvent::LanguageChange) retranslateUi();
 }
 
+void Part3DDock::showEvent(QShowEvent* event) {
+  retranslateUi();  // a dock hidden when the language changed shows the new one
+  QDockWidget::showEvent(event);
+}
+
 }  // namespace klueng::gui

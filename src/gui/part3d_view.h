@@ -50,6 +50,7 @@ class Part3DDock : public QDockWidget {
 
  protected:
   void changeEvent(QEvent* event) override;
+  void showEvent(QShowEvent* event) override;
 
  private:
   Part3DWidget* view_ = nullptr;
