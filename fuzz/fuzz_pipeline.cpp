@@ -11,6 +11,7 @@
 
 #include "klueng/core/cut/cut_simulator.h"
 #include "klueng/core/cut/finished_part.h"
+#include "klueng/core/cut/part_features.h"
 #include "klueng/core/gcode/checker.h"
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/machine/interpreter.h"
@@ -83,6 +84,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (stock.volume() > stock.initialVolume() + 1e-6) std::abort();
   const cut::FinishedPart part(stock);
   if (!part.empty() && !(part.maxDiameter() <= 30.0 + 1e-9)) std::abort();
+  // The part's features (issue 10): on the part, finite, in order from the right face.
+  const cut::PartFeatures features = cut::partFeatures(stock);
+  for (const auto* list : {&features.outside, &features.inside})
+    for (const cut::PartFeature& f : *list) {
+      if (!std::isfinite(f.zLeft) || !std::isfinite(f.zRight) || f.zLeft > f.zRight + 1e-9) std::abort();
+      if (f.zLeft < -40.0 - 1e-6 || f.zRight > 1e-6) std::abort();
+      if (cut::describeFeature(f, Lang::Th).empty()) std::abort();
+    }
   // Going back restores the bar exactly as it was.
   sim.advanceTo(0.0);
   if (std::abs(sim.stock().volume() - stock.initialVolume()) > 1e-6 * stock.initialVolume()) std::abort();

@@ -59,6 +59,18 @@ class StallProbe : public QObject {
   qint64 longest_ = 0;
 };
 
+// Sample 01 fast to its roughing pass N100 (cutting starts there), then at 1x.
+void toRoughingPass(RunController& controller, const core::machine::MachineSetup& setup) {
+  controller.setMachineSetup(setup);
+  controller.setProgram(*core::io::readProgramFile(KLUENG_SAMPLES_DIR "/01-step-shaft.txt").value);
+  controller.setSpeed(RunController::kAsFastAsPossible);
+  controller.setBreakpoints({18});  // file line of N100 G01 Z-59.8
+  controller.go();
+  controller.waitForIdle();
+  controller.setBreakpoints({});
+  controller.setSpeed(1.0);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -69,20 +81,12 @@ int main(int argc, char** argv) {
   // 1. Frame rate at 1x while cutting sample 01.
   {
     RunController controller;
-    controller.setMachineSetup(setup);
-    controller.setProgram(*core::io::readProgramFile(KLUENG_SAMPLES_DIR "/01-step-shaft.txt").value);
     OutputView view;
     view.resize(1280, 800);
     view.setRunController(&controller);
     view.show();
     (void)QTest::qWaitForWindowExposed(&view);
-    // Fast to the roughing pass N100 (cutting starts there), then play at 1x.
-    controller.setSpeed(RunController::kAsFastAsPossible);
-    controller.setBreakpoints({18});   // file line of N100 G01 Z-59.8
-    controller.go();
-    controller.waitForIdle();
-    controller.setBreakpoints({});
-    controller.setSpeed(1.0);
+    toRoughingPass(controller, setup);
     const double volume0 = controller.cutSimulator()->removedVolume();
     const qint64 paints0 = view.paintCount();
     const qint64 frames0 = controller.frameCount();
@@ -103,8 +107,6 @@ int main(int argc, char** argv) {
   // 1b. The same with the 3D view (issue 10) open beside the output screen, 640x600 each.
   {
     RunController controller;
-    controller.setMachineSetup(setup);
-    controller.setProgram(*core::io::readProgramFile(KLUENG_SAMPLES_DIR "/01-step-shaft.txt").value);
     OutputView view;
     view.resize(640, 600);
     view.setRunController(&controller);
@@ -114,12 +116,7 @@ int main(int argc, char** argv) {
     view3d.setRunController(&controller);
     view3d.show();
     (void)QTest::qWaitForWindowExposed(&view3d);
-    controller.setSpeed(RunController::kAsFastAsPossible);
-    controller.setBreakpoints({18});
-    controller.go();
-    controller.waitForIdle();
-    controller.setBreakpoints({});
-    controller.setSpeed(1.0);
+    toRoughingPass(controller, setup);
     const qint64 paints2d = view.paintCount(), paints3d = view3d.paintCount();
     probe.start();
     QElapsedTimer wall;

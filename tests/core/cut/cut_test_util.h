@@ -1,6 +1,7 @@
 #pragma once
 // Helpers shared by the cut tests: hand-built moves and tools, and the whole
 // pipeline (file -> parse -> check -> interpret -> cut) on the shipped config.
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -104,6 +105,21 @@ inline Run runProgramText(const std::string& text) {
   run.checkDiagnostics = gcode::check(program);
   run.timeline = machine::interpret(program, run.setup);
   return run;
+}
+
+// The pipeline and the cut to the end (the simulator is kept: FinishedPart and
+// partFeatures read its stock by reference).
+struct CutRun {
+  Run run;
+  std::unique_ptr<CutSimulator> sim;
+};
+
+inline CutRun cutToEnd(const std::string& text) {
+  CutRun c;
+  c.run = runProgramText(text);
+  c.sim = std::make_unique<CutSimulator>(c.run.timeline, CutSetup::from(c.run.file.header, c.run.setup));
+  c.sim->runToEnd();
+  return c;
 }
 
 inline std::string readText(const std::string& path) {

@@ -159,17 +159,9 @@ TEST(PartFeatures, EmptyAndUncutStock) {
   EXPECT_DOUBLE_EQ(bar.overallLength(), 100.0);
 }
 
-struct Cut {
-  testing::Run run;
-  std::unique_ptr<CutSimulator> sim;
-};
-
-Cut cutText(const std::string& text) {
-  Cut c;
-  c.run = runProgramText(text);
+testing::CutRun cutText(const std::string& text) {
+  testing::CutRun c = testing::cutToEnd(text);
   EXPECT_FALSE(hasErrors(c.run.checkDiagnostics));
-  c.sim = std::make_unique<CutSimulator>(c.run.timeline, CutSetup::from(c.run.file.header, c.run.setup));
-  c.sim->runToEnd();
   EXPECT_FALSE(c.sim->stoppingAlarm().has_value());
   return c;
 }
@@ -177,7 +169,7 @@ Cut cutText(const std::string& text) {
 // Sample 01's drawing (its README): Ø30 Z0…-20 with a C3, Ø40 -22…-40 after an
 // R2 corner, a C1, Ø46 to -60; the nose's R0.8 stays in the inside corners.
 TEST(PartFeatures, Sample01HasTheDrawnFeatures) {
-  const Cut c = cutText(readText(samplesDir() + "/01-step-shaft.txt"));
+  const testing::CutRun c = cutText(readText(samplesDir() + "/01-step-shaft.txt"));
   const PartFeatures p = partFeatures(c.sim->stock());
   const PartFeature* c3 = find(p.outside, FeatureKind::Chamfer, -1.5);
   ASSERT_NE(c3, nullptr);
@@ -216,7 +208,7 @@ TEST(PartFeatures, Sample01HasTheDrawnFeatures) {
 }
 
 TEST(PartFeatures, Sample02ThreadIsFoundWithItsPitch) {
-  const Cut c = cutText(readText(samplesDir() + "/02-thread.txt"));
+  const testing::CutRun c = cutText(readText(samplesDir() + "/02-thread.txt"));
   const PartFeatures p = partFeatures(c.sim->stock());
   const PartFeature* t = find(p.outside, FeatureKind::Thread, -15.0);
   ASSERT_NE(t, nullptr);
@@ -236,7 +228,7 @@ TEST(PartFeatures, Sample02ThreadIsFoundWithItsPitch) {
 
 TEST(PartFeatures, GroovingToolCutsAGroove) {
   // T04: 3 mm grooving tool, R0.2, tip 3 (its left corner): a 3 mm groove to Ø24 at Z-15…-18.
-  const Cut c = cutText(
+  const testing::CutRun c = cutText(
       "Groove\nPart GR-1\nSteel\n132\n160\nKlueng tests\n"
       "N10 G21 G99 G97 S800 M03\n"
       "N20 T0404\n"

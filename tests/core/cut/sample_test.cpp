@@ -34,17 +34,11 @@ int lineOf(const std::string& text, const std::string& n) {
   return -1;
 }
 
-struct Cut {
-  Run run;
-  std::unique_ptr<CutSimulator> sim;
-};
+using Cut = testing::CutRun;
 
 Cut cutProgram(const std::string& text) {
-  Cut c;
-  c.run = runProgramText(text);
+  Cut c = testing::cutToEnd(text);
   EXPECT_FALSE(hasErrors(c.run.checkDiagnostics));
-  c.sim = std::make_unique<CutSimulator>(c.run.timeline, CutSetup::from(c.run.file.header, c.run.setup));
-  c.sim->runToEnd();
   EXPECT_TRUE(c.sim->toolDiagnostics().empty());
   return c;
 }
