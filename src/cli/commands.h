@@ -13,5 +13,7 @@ int runSimulate(const std::vector<std::string>& args);
 int runClass(const std::vector<std::string>& args);
 // klueng-cli print FILE --pdf OUT.pdf [--sheet program|drawing|both] [--lang en|th] ...
 int runPrint(const std::vector<std::string>& args);
+// klueng-cli generate PART.json -o OUT.nc [--dialect ...] [--material M] [--tool-material hss|carbide]
+int runGenerate(const std::vector<std::string>& args);
 
 }  // namespace klueng::cli

@@ -19,6 +19,7 @@ void printUsage(std::FILE* out) {
       "                               [--dialect fanuc|haas|classic] [--config DIR]\n"
       "       klueng-cli print FILE --pdf OUT.pdf [--sheet program|drawing|both] [--lang en|th]\n"
       "                               [--dialect ...] [--stock ...] [--units ...] [--config DIR]\n"
+      "       klueng-cli generate PART.json -o OUT.nc [--dialect ...] [--material M] [--tool-material hss|carbide]\n"
       "  --dialect  fanuc (Fanuc 0i-TF, default), haas (Haas ST lathe), classic (1999 rules)\n"
       "  --stock  50x100 (mm), 2.1x4in, 118x80x90 (tube: bore 90); without it the file's\n"
       "           header, else the stock inferred from the program (a note says which)\n"
@@ -42,6 +43,7 @@ int main(int argc, char** argv) {
   if (command == "simulate") return klueng::cli::runSimulate(args);
   if (command == "class") return klueng::cli::runClass(args);
   if (command == "print") return klueng::cli::runPrint(args);
+  if (command == "generate") return klueng::cli::runGenerate(args);
   if (command == "--help" || command == "-h" || command == "help") {
     printUsage(stdout);
     return 0;

@@ -101,3 +101,38 @@ TEST(CliPrint, BadCommandLinesExitTwo) {
 }
 
 }  // namespace
+
+namespace {
+
+// Issue 14 (first step): klueng-cli generate writes a program that checks clean;
+// a part that cannot be turned writes nothing and says why.
+TEST(CliGenerate, StepShaftInEveryDialectAndAnUndercut) {
+  for (const char* dialect : {"fanuc", "haas", "classic"}) {
+    const fs::path out = scratch((std::string("gen-") + dialect + ".nc").c_str());
+    int status = -1;
+    const std::string err = capture("'" + std::string(KLUENG_CLI_PATH) + "' generate '" + KLUENG_SOURCE_DIR +
+                                        "/resources/parts/step-shaft.json' --dialect " + dialect + " -o '" +
+                                        out.string() + "' --config '" + KLUENG_SOURCE_DIR + "' 2>&1",
+                                    &status);
+    ASSERT_EQ(status, 0) << err;
+    const std::string check = capture("'" + std::string(KLUENG_CLI_PATH) + "' check '" + out.string() +
+                                          "' --dialect " + dialect + " 2>&1",
+                                      &status);
+    EXPECT_EQ(status, 0) << dialect << "\n" << check;
+  }
+  const fs::path bad = scratch("undercut.json");
+  std::ofstream(bad) << "{\"stock\": {\"diameter\": 50, \"length\": 100}, \"material\": \"steel\",\n"
+                        " \"outside\": [{\"cylinder\": 30, \"length\": 10}, {\"cylinder\": 20, \"length\": 10}]}\n";
+  const fs::path out = scratch("undercut.nc");
+  fs::remove(out);
+  int status = -1;
+  const std::string err = capture("env LC_ALL= LANG=C '" + std::string(KLUENG_CLI_PATH) + "' generate '" +
+                                      bad.string() + "' -o '" + out.string() + "' --config '" + KLUENG_SOURCE_DIR +
+                                      "' 2>&1",
+                                  &status);
+  EXPECT_EQ(status, 1);
+  EXPECT_NE(err.find("error E501: Step 2 (Ø20.) is thinner"), std::string::npos) << err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+}  // namespace

@@ -43,6 +43,7 @@ struct Diagnostic {
 //   A3xx alarms that need the stock (collisions, cutting)   cut
 //   I1xx informational notes (e.g. G28 without axes)        any
 //   I4xx tools chosen from the program (notes)              io
+//   F18x part design files, E5xx parts the generator cannot turn   design
 
 bool hasErrors(const std::vector<Diagnostic>& diags);
 

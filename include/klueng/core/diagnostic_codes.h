@@ -67,6 +67,17 @@ inline constexpr const char* kToolNeedsNames = "F168";
 inline constexpr const char* kLibraryBitmapMissing = "F169";
 inline constexpr const char* kNotVariableLine = "F170";
 inline constexpr const char* kVariableNotKept = "F171";
+// Part designs and the cutting-speed table (design; texts in messages_design.cpp)
+inline constexpr const char* kPartFileNotJson = "F180";       // {0} file, {1} why
+inline constexpr const char* kPartFieldMissing = "F181";      // {0} file, {1} field
+inline constexpr const char* kPartFieldBad = "F182";          // {0} file, {1} field, {2} what it must be
+inline constexpr const char* kSpeedsLineBad = "F183";         // {0} file, {1} line text
+inline constexpr const char* kPartUndercut = "E501";          // {0} step, {1} Ø, {2} Ø before it
+inline constexpr const char* kPartEdgeTooLarge = "E502";      // {0} step, {1} size, {2} largest
+inline constexpr const char* kPartLongerThanBar = "E503";     // {0} part length, {1} bar length less the grip
+inline constexpr const char* kPartWiderThanBar = "E504";      // {0} step, {1} Ø, {2} bar Ø
+inline constexpr const char* kUnknownMaterial = "E505";       // {0} material, {1} the table's materials
+inline constexpr const char* kPartHasNoSteps = "E506";
 inline constexpr const char* kStockFromCommandLine = "I150";
 inline constexpr const char* kStockFromJobDetails = "I151";
 inline constexpr const char* kStockFromFirstApproach = "I152";

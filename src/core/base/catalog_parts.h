@@ -10,4 +10,5 @@ std::span<const MessageText> ioMessages();
 std::span<const MessageText> machineMessages();
 std::span<const MessageText> compMessages();
 std::span<const MessageText> cutMessages();
+std::span<const MessageText> designMessages();
 }  // namespace klueng::core::catalog

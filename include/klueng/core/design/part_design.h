@@ -1,0 +1,82 @@
+#pragma once
+// From drawing to program (issue 14): a turned part described as its outside
+// steps from the right face toward the chuck, read from a JSON file
+// (docs/parts.md), and the complete program that turns it, written in the
+// chosen dialect — Fanuc 0i-TF two-block G71/G70, Haas one-block G71/G70, or
+// plain G01 passes for the classic 1999 rules — with the spindle speed from a
+// material × tool-material cutting-speed table (S = 1000·Vc / (π·D)) and every
+// number explained in a comment.
+//
+//   const auto design = readPartDesign(text, "shaft.json");   // diagnostics name file, line, column
+//   const auto program = generateProgram(*design.value, options);  // nullopt + why when it cannot be turned
+//
+// First step: outside cylinders and tapers, each with a chamfer or a round at
+// its right-hand edge. Grooves, threads and bores are not generated yet.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "klueng/core/gcode/code_table.h"
+#include "klueng/core/io/result.h"
+#include "klueng/core/io/tool_config.h"
+#include "klueng/core/messages.h"
+
+namespace klueng::core::design {
+
+enum class StepKind { Cylinder, Taper };
+enum class EdgeBreak { None, Chamfer, Round };
+
+// One step of the outside, from its right end (nearer the face) leftward.
+struct OutsideStep {
+  StepKind kind = StepKind::Cylinder;
+  double diameter = 0.0;  // mm: the cylinder's, or the taper's at its left end
+  double length = 0.0;    // mm along Z
+  EdgeBreak edge = EdgeBreak::None;  // at the step's right-hand outer corner
+  double edgeSize = 0.0;  // chamfer C (45°) or round R, mm
+};
+
+struct PartDesign {
+  std::string name = "Part";
+  std::string material = "steel";        // a row of the cutting-speed table
+  std::string toolMaterial = "carbide";  // hss or carbide
+  double stockDiameter = 0.0;            // mm
+  double stockLength = 0.0;
+  std::vector<OutsideStep> outside;
+  double length() const;                 // of the turned part (the steps)
+};
+
+// JSON (docs/parts.md); F170-F179 diagnostics with the JSON's line and column.
+io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::string& fileName);
+
+// Cutting speed Vc, m/min, by material and tool material (the thesis's table).
+struct CuttingSpeed {
+  std::string material;
+  double hss = 0.0;
+  double carbide = 0.0;
+};
+// The shipped table (resources/parts/cutting_speeds.cfg), or `path`'s; "material | hss | carbide" lines.
+io::ReadResult<std::vector<CuttingSpeed>> readCuttingSpeeds(const std::string& path = {});
+// S = 1000 · Vc / (π · D), rpm.
+double spindleRpm(double cuttingSpeed, double diameter);
+
+struct GenerateOptions {
+  gcode::Dialect dialect = gcode::Dialect::Fanuc;
+  Lang lang = Lang::En;                      // the comments' language
+  io::MachineConfig machine;                 // its max_spindle_rpm clamps G50
+  std::vector<CuttingSpeed> speeds;          // empty: the shipped table
+};
+
+struct GeneratedProgram {
+  std::string text;                          // a Klueng program file: 6-line job header, then the G-code
+  double cuttingSpeed = 0.0;                 // Vc used, m/min
+  int spindleLimit = 0;                      // G50 S
+};
+
+// The program, or nullopt with the reasons (D-codes, English/Thai) when the part
+// cannot be turned this way: a step thinner than the one before it (an undercut
+// the turning tool cannot reach), an edge break larger than its step, a part
+// longer than the bar or wider than it, an unknown material.
+std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const GenerateOptions& options,
+                                                std::vector<Diagnostic>* why = nullptr);
+
+}  // namespace klueng::core::design

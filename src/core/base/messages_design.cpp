@@ -1,0 +1,33 @@
+// Catalog part for the design module (issue 14): part files and the generator.
+#include "catalog_parts.h"
+#include "klueng/core/diagnostic_codes.h"
+
+namespace klueng::core::catalog {
+
+namespace {
+constexpr MessageText kMessages[] = {
+    {codes::kPartUndercut,
+     "Step {0} (Ø{1}) is thinner than the step before it (Ø{2}): an undercut the turning tool cannot reach from the "
+     "right",
+     "ขั้นที่ {0} (Ø{1}) เล็กกว่าขั้นก่อนหน้า (Ø{2}): เป็นร่องคอดที่มีดกลึงปอกเข้าไปกลึงจากทางขวาไม่ถึง"},
+    {codes::kPartEdgeTooLarge, "The chamfer or round of step {0} ({1} mm) is larger than the step allows ({2} mm)",
+     "ขนาดลบมุมหรือมุมโค้งของขั้นที่ {0} ({1} มม.) ใหญ่เกินกว่าที่ขั้นนี้รับได้ ({2} มม.)"},
+    {codes::kPartLongerThanBar, "The part is {0} mm long: the bar leaves {1} mm outside the chuck jaws",
+     "ชิ้นงานยาว {0} มม. แต่ชิ้นงานดิบยื่นออกจากปากจับได้เพียง {1} มม."},
+    {codes::kPartWiderThanBar, "Step {0} (Ø{1}) is larger than the bar (Ø{2})",
+     "ขั้นที่ {0} (Ø{1}) ใหญ่กว่าชิ้นงานดิบ (Ø{2})"},
+    {codes::kUnknownMaterial, "No cutting speed for \"{0}\": the table has {1}",
+     "ไม่มีความเร็วตัดของวัสดุ \"{0}\": ในตารางมี {1}"},
+    {codes::kPartHasNoSteps, "The part has no outside steps to turn", "ชิ้นงานไม่มีขั้นด้านนอกให้กลึง"},
+
+    {codes::kPartFileNotJson, "{0} is not a part file: {1}", "{0} ไม่ใช่ไฟล์ชิ้นงาน: {1}"},
+    {codes::kPartFieldMissing, "{0}: \"{1}\" is missing", "{0}: ไม่มีค่า \"{1}\""},
+    {codes::kPartFieldBad, "{0}: \"{1}\" must be {2}", "{0}: ค่า \"{1}\" ต้องเป็น{2}"},
+    {codes::kSpeedsLineBad, "{0}: \"{1}\" is not \"material | HSS m/min | carbide m/min\"",
+     "{0}: \"{1}\" ไม่อยู่ในรูป \"วัสดุ | มีด HSS ม./นาที | มีดคาร์ไบด์ ม./นาที\""},
+};
+}  // namespace
+
+std::span<const MessageText> designMessages() { return kMessages; }
+
+}  // namespace klueng::core::catalog

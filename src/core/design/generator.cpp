@@ -1,0 +1,255 @@
+// The program generator (issue 14): the outside contour of a part design, then
+// a complete program in the dialect's habit around it.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "klueng/core/design/part_design.h"
+#include "klueng/core/diagnostic_codes.h"
+
+namespace klueng::core::design {
+
+namespace {
+
+constexpr double kRoughDepth = 2.0;     // mm a side per roughing pass
+constexpr double kAllowanceX = 0.4;     // mm on the diameter left for the finishing pass
+constexpr double kAllowanceZ = 0.1;     // mm along Z
+constexpr double kRoughFeed = 0.25;     // mm/rev
+constexpr double kFinishFeed = 0.1;
+constexpr double kFaceFeed = 0.2;
+constexpr double kClear = 2.0;          // mm in front of the face
+
+// One move of the finished contour, to (x diameter, z); arcs are G03 (convex rounds).
+struct ContourMove {
+  double x = 0.0, z = 0.0;
+  bool arc = false;
+  double radius = 0.0;
+  double centreZ = 0.0, centreR = 0.0;  // arc centre (z, radius)
+};
+
+// "30." for whole millimetres, "30.25" otherwise, as lathe programs are written.
+std::string num(double v) {
+  if (std::abs(v - std::round(v)) < 1e-9) return fmt::format("{}.", static_cast<long long>(std::llround(v)));
+  std::string s = fmt::format("{:.3f}", v);
+  while (s.back() == '0') s.pop_back();
+  return s;
+}
+
+Diagnostic problem(const char* code, std::vector<std::string> args) {
+  Diagnostic d;
+  d.severity = Severity::Error;
+  d.code = code;
+  d.args = std::move(args);
+  return d;
+}
+
+// The contour from the face (x0 at Z0) to the last step's left end; problems go to `why`.
+std::vector<ContourMove> contourOf(const PartDesign& part, double& x0, std::vector<Diagnostic>& why) {
+  std::vector<ContourMove> out;
+  double z = 0.0, before = 0.0;  // Ø at the right of the current step (0: the face)
+  for (std::size_t k = 0; k < part.outside.size(); ++k) {
+    const OutsideStep& s = part.outside[k];
+    const std::string n = std::to_string(k + 1);
+    if (s.diameter > part.stockDiameter + 1e-9)
+      why.push_back(problem(codes::kPartWiderThanBar, {n, num(s.diameter), num(part.stockDiameter)}));
+    const bool taper = s.kind == StepKind::Taper && k > 0;
+    if (s.diameter < before - 1e-9)
+      why.push_back(problem(codes::kPartUndercut, {n, num(s.diameter), num(before)}));
+    const double rise = (s.diameter - before) / 2.0;  // the face's height (the whole radius at the face)
+    const double room = std::min(s.length, taper ? 0.0 : rise);
+    if (s.edge != EdgeBreak::None && s.edgeSize > room + 1e-9)
+      why.push_back(problem(codes::kPartEdgeTooLarge, {n, num(s.edgeSize), num(room)}));
+    if (taper) {
+      z -= s.length;
+      out.push_back({s.diameter, z});
+      before = s.diameter;
+      continue;
+    }
+    const double e = s.edge == EdgeBreak::None ? 0.0 : s.edgeSize;
+    const double foot = s.diameter - 2.0 * e;  // where the face meets the edge break
+    if (k == 0) x0 = foot;
+    else if (foot > before + 1e-9) out.push_back({foot, z});
+    if (s.edge == EdgeBreak::Chamfer) out.push_back({s.diameter, z - e});
+    if (s.edge == EdgeBreak::Round) out.push_back({s.diameter, z - e, true, e, z - e, foot / 2.0});
+    z -= s.length;
+    out.push_back({s.diameter, z});
+    before = s.diameter;
+  }
+  return out;
+}
+
+// Z where the contour reaches diameter d (first, going left), or the contour's end.
+double zAtDiameter(const std::vector<ContourMove>& contour, double x0, double d) {
+  double px = x0, pz = 0.0;
+  for (const ContourMove& m : contour) {
+    if (m.x >= d - 1e-9 && px < d + 1e-9) {
+      if (m.arc) {
+        const double dr = d / 2.0 - m.centreR;
+        const double h = std::sqrt(std::max(0.0, m.radius * m.radius - dr * dr));
+        return m.centreZ + h;  // a convex round: the right side of its circle
+      }
+      if (std::abs(m.x - px) < 1e-12) return pz;
+      return pz + (m.z - pz) * (d - px) / (m.x - px);
+    }
+    px = m.x;
+    pz = m.z;
+  }
+  return pz;
+}
+
+struct Words {
+  bool thai;
+  const char* pick(const char* en, const char* th) const { return thai ? th : en; }
+};
+
+class Writer {
+ public:
+  explicit Writer(bool numbered) : numbered_(numbered) {}
+  void block(const std::string& words, const std::string& comment = {}) {
+    std::string line = numbered_ ? fmt::format("N{} {}", n_, words) : words;
+    n_ += 10;
+    if (!comment.empty()) line += " (" + comment + ")";
+    text_ += line + "\n";
+  }
+  void raw(const std::string& line) { text_ += line + "\n"; }
+  int next() const { return n_; }
+  const std::string& text() const { return text_; }
+
+ private:
+  bool numbered_;
+  int n_ = 10;
+  std::string text_;
+};
+
+void contourBlocks(Writer& w, const std::vector<ContourMove>& contour, double exitX, const Words& t) {
+  w.block(fmt::format("G01 Z0. F{}", num(kFinishFeed)), t.pick("finishing feed", "อัตราป้อนกลึงละเอียด"));
+  for (const ContourMove& m : contour) {
+    if (m.arc)
+      w.block(fmt::format("G03 X{} Z{} R{}", num(m.x), num(m.z), num(m.radius)));
+    else
+      w.block(fmt::format("G01 X{} Z{}", num(m.x), num(m.z)));
+  }
+  w.block(fmt::format("G01 X{}", num(exitX)));
+}
+
+}  // namespace
+
+std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const GenerateOptions& options,
+                                                std::vector<Diagnostic>* whyOut) {
+  std::vector<Diagnostic> why;
+  const Words t{options.lang == Lang::Th};
+  if (part.outside.empty()) why.push_back(problem(codes::kPartHasNoSteps, {}));
+  const double reach = part.stockLength - options.machine.chuckGrip;
+  if (part.length() > reach + 1e-9) why.push_back(problem(codes::kPartLongerThanBar, {num(part.length()), num(reach)}));
+  std::vector<CuttingSpeed> speeds = options.speeds;
+  if (speeds.empty()) speeds = readCuttingSpeeds().value.value_or(std::vector<CuttingSpeed>{});
+  const auto row = std::find_if(speeds.begin(), speeds.end(), [&](const CuttingSpeed& s) { return s.material == part.material; });
+  if (row == speeds.end()) {
+    std::string names;
+    for (const CuttingSpeed& s : speeds) names += (names.empty() ? "" : ", ") + s.material;
+    why.push_back(problem(codes::kUnknownMaterial, {part.material, names}));
+  }
+  double x0 = 0.0;
+  const std::vector<ContourMove> contour = contourOf(part, x0, why);
+  if (!why.empty()) {
+    if (whyOut) *whyOut = std::move(why);
+    return std::nullopt;
+  }
+
+  GeneratedProgram out;
+  out.cuttingSpeed = part.toolMaterial == "hss" ? row->hss : row->carbide;
+  out.spindleLimit = static_cast<int>(std::floor(options.machine.maxSpindleRpm));
+  const double stock = part.stockDiameter;
+  const double exitX = stock + 2.0;
+  const double rpmAtStock = spindleRpm(out.cuttingSpeed, stock);
+  const bool haas = options.dialect == gcode::Dialect::Haas;
+  const bool classic = options.dialect == gcode::Dialect::Classic;
+
+  // The job header (SPEC 2): the bar is the part's stock.
+  // Sizes in the header have no point: a unit digit (1 = mm), then the number ("150" = 50 mm).
+  const auto size = [](double v) {
+    std::string s = num(v);
+    if (s.back() == '.') s.pop_back();
+    return s;
+  };
+  std::string text = fmt::format("{}\n{}\n{}\n1{}\n1{}\nKlueng generator\n", part.name, part.name, part.material,
+                                 size(stock), size(part.stockLength));
+  Writer w(true);
+  if (!classic) w.raw("%");
+  w.raw(fmt::format("{} ({})", haas ? "O00100" : "O0100", part.name));
+  w.raw(fmt::format("({})", t.pick("Written by Klueng from the part design: check it, then simulate it",
+                                   "เขียนโดย Klueng จากแบบชิ้นงาน: ตรวจสอบแล้วจำลองการทำงานก่อนใช้")));
+  if (classic) {
+    w.block("G21 G40", t.pick("millimetres, no nose compensation", "หน่วยมิลลิเมตร ไม่ชดเชยรัศมีจมูกมีด"));
+    w.block("G99", t.pick("feed per revolution", "ป้อนเป็น มม./รอบ"));
+  } else {
+    w.block("G18 G21 G40 G99", t.pick("XZ plane, mm, no nose compensation, feed per revolution",
+                                      "ระนาบ XZ หน่วย มม. ไม่ชดเชยรัศมีจมูกมีด ป้อนเป็น มม./รอบ"));
+    w.block("G28 U0. W0.", t.pick("to the reference point", "กลับสู่จุดอ้างอิง"));
+  }
+  w.block("T0101", t.pick("outside turning tool, offset 01", "มีดกลึงปอกด้านนอก ออฟเซต 01"));
+  w.block(fmt::format("G50 S{}", out.spindleLimit),
+          fmt::format(fmt::runtime(t.pick("spindle limit: the machine's {} rpm", "จำกัดความเร็วรอบไว้ที่ {} รอบ/นาที ตามเครื่อง")),
+                      out.spindleLimit));
+  w.block(fmt::format("G96 S{} M03", num(out.cuttingSpeed)),
+          fmt::format(fmt::runtime(t.pick("Vc {} m/min for {} with a {} tool: S = 1000 x {} / 3.1416 / {} = {} rpm at D{}",
+                             "Vc {} ม./นาที สำหรับ {} มีด{}: S = 1000 x {} / 3.1416 / {} = {} รอบ/นาที ที่ D{}")),
+                      num(out.cuttingSpeed), part.material,
+                      part.toolMaterial == "hss" ? "HSS" : t.pick("carbide", "คาร์ไบด์"),
+                      num(out.cuttingSpeed), num(stock), static_cast<long long>(std::llround(rpmAtStock)), num(stock)));
+  w.block(fmt::format("G00 X{} Z{} M08", num(stock + 4.0), num(kClear)), t.pick("coolant on", "เปิดสารหล่อเย็น"));
+  w.block("G00 Z0.");
+  w.block(fmt::format("G01 X-1.6 F{}", num(kFaceFeed)), t.pick("face the end", "ปาดหน้า"));
+  w.block(fmt::format("G00 Z{}", num(kClear)));
+  w.block(fmt::format("G00 X{}", num(exitX)), t.pick("cycle start point", "จุดเริ่มวัฏจักร"));
+
+  if (classic) {
+    // Plain passes, kRoughDepth a side. A pass at Ø d may run left only while the
+    // contour stays at d - U or below (U left for finishing): it stops where the
+    // contour reaches d - U, W short of it.
+    double minX = x0;
+    for (const ContourMove& m : contour) minX = std::min(minX, m.x);
+    for (double d = stock - 2.0 * kRoughDepth; d > minX + kAllowanceX + 1e-9; d -= 2.0 * kRoughDepth) {
+      const double zEnd = zAtDiameter(contour, x0, d - kAllowanceX) + kAllowanceZ;
+      if (zEnd >= 0.0) continue;
+      w.block(fmt::format("G00 X{}", num(d)), fmt::format(fmt::runtime(t.pick("roughing pass to D{}", "กลึงหยาบลงถึง D{}")), num(d)));
+      w.block(fmt::format("G01 Z{} F{}", num(zEnd), num(kRoughFeed)));
+      w.block("G00 U1. W0.5");
+      w.block(fmt::format("G00 Z{}", num(kClear)));
+    }
+    w.block(fmt::format("G42 G00 X{} Z{}", num(x0), num(kClear)),
+            t.pick("finishing with nose radius compensation", "กลึงละเอียดพร้อมชดเชยรัศมีจมูกมีด"));
+    contourBlocks(w, contour, exitX, t);
+    w.block("G40 G00 X100. Z100.");
+  } else {
+    const int p = w.next() + (haas ? 10 : 20);
+    const int q = p + 10 * (static_cast<int>(contour.size()) + 2);
+    if (haas) {
+      w.block(fmt::format("G71 P{} Q{} U{} W{} D{} F{}", p, q, num(kAllowanceX), num(kAllowanceZ), num(kRoughDepth),
+                          num(kRoughFeed)),
+              t.pick("roughing 2 mm a side, 0.4 on the diameter and 0.1 on Z left for finishing",
+                     "กลึงหยาบครั้งละ 2 มม. เหลือเผื่อกลึงละเอียด 0.4 มม. ทางเส้นผ่านศูนย์กลาง และ 0.1 มม. ทาง Z"));
+    } else {
+      w.block(fmt::format("G71 U{} R0.5", num(kRoughDepth)),
+              t.pick("roughing 2 mm a side, 0.5 retract", "กลึงหยาบครั้งละ 2 มม. ถอยมีด 0.5 มม."));
+      w.block(fmt::format("G71 P{} Q{} U{} W{} F{}", p, q, num(kAllowanceX), num(kAllowanceZ), num(kRoughFeed)),
+              t.pick("0.4 on the diameter and 0.1 on Z left for finishing",
+                     "เหลือเผื่อกลึงละเอียด 0.4 มม. ทางเส้นผ่านศูนย์กลาง และ 0.1 มม. ทาง Z"));
+    }
+    w.block(fmt::format("G00 X{}", num(x0)), t.pick("the profile starts", "เริ่มรูปร่างชิ้นงาน"));
+    contourBlocks(w, contour, exitX, t);
+    w.block(fmt::format("G00 G42 X{} Z{}", num(exitX), num(kClear)),
+            t.pick("finishing with nose radius compensation", "กลึงละเอียดพร้อมชดเชยรัศมีจมูกมีด"));
+    w.block(fmt::format("G70 P{} Q{}", p, q));
+    w.block("G00 G40 X100. Z100.");
+  }
+  w.block("M09", t.pick("coolant off", "ปิดสารหล่อเย็น"));
+  w.block("M05");
+  w.block("M30");
+  if (!classic) w.raw("%");
+  out.text = text + w.text();
+  return out;
+}
+
+}  // namespace klueng::core::design

@@ -1,0 +1,177 @@
+// Reading part designs (JSON, with nlohmann::json) and the cutting-speed table.
+#include "klueng/core/design/part_design.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "klueng/core/diagnostic_codes.h"
+
+namespace klueng::core::design {
+
+namespace {
+
+Diagnostic fileDiagnostic(const char* code, int line, int column, std::vector<std::string> args) {
+  Diagnostic d;
+  d.severity = Severity::Error;
+  d.code = code;
+  d.range.line = line;
+  d.range.column = column;
+  d.args = std::move(args);
+  return d;
+}
+
+// Line and column (1-based) of a byte offset.
+std::pair<int, int> placeOf(const std::string& text, std::size_t byte) {
+  int line = 1, column = 1;
+  for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
+    if (text[i] == '\n') ++line, column = 1;
+    else if ((static_cast<unsigned char>(text[i]) & 0xC0) != 0x80) ++column;
+  }
+  return {line, column};
+}
+
+std::string trim(const std::string& s) {
+  const auto a = s.find_first_not_of(" \t\r");
+  const auto b = s.find_last_not_of(" \t\r");
+  return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
+}
+
+}  // namespace
+
+double PartDesign::length() const {
+  double total = 0.0;
+  for (const OutsideStep& s : outside) total += s.length;
+  return total;
+}
+
+io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::string& fileName) {
+  io::ReadResult<PartDesign> result;
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    const auto [line, column] = placeOf(text, e.byte > 0 ? e.byte - 1 : 0);
+    std::string why = e.what();
+    if (const auto at = why.find("]: "); at != std::string::npos) why = why.substr(at + 3);
+    result.diagnostics.push_back(fileDiagnostic(codes::kPartFileNotJson, line, column, {fileName, why}));
+    return result;
+  }
+  PartDesign part;
+  bool ok = true;
+  const auto missing = [&](const std::string& field) {
+    result.diagnostics.push_back(fileDiagnostic(codes::kPartFieldMissing, 0, 0, {fileName, field}));
+    ok = false;
+  };
+  const auto bad = [&](const std::string& field, const char* what) {
+    result.diagnostics.push_back(fileDiagnostic(codes::kPartFieldBad, 0, 0, {fileName, field, what}));
+    ok = false;
+  };
+  // A positive finite number, or the reason it is not.
+  const auto positive = [&](const nlohmann::json& o, const std::string& key, const std::string& field,
+                            double& out) {
+    if (!o.contains(key)) return missing(field);
+    if (!o[key].is_number() || !std::isfinite(o[key].get<double>()) || o[key].get<double>() <= 0.0 ||
+        o[key].get<double>() > 10000.0)
+      return bad(field, "a number of millimetres above 0 (at most 10000)");
+    out = o[key].get<double>();
+  };
+  if (!j.is_object()) {
+    bad("(the file)", "an object { ... }");
+    return result;
+  }
+  if (j.contains("name") && j["name"].is_string()) part.name = j["name"].get<std::string>();
+  if (j.contains("material") && j["material"].is_string()) part.material = j["material"].get<std::string>();
+  if (j.contains("tool_material")) {
+    if (!j["tool_material"].is_string() ||
+        (j["tool_material"].get<std::string>() != "hss" && j["tool_material"].get<std::string>() != "carbide"))
+      bad("tool_material", "\"hss\" or \"carbide\"");
+    else
+      part.toolMaterial = j["tool_material"].get<std::string>();
+  }
+  if (!j.contains("stock") || !j["stock"].is_object()) {
+    missing("stock");
+  } else {
+    positive(j["stock"], "diameter", "stock.diameter", part.stockDiameter);
+    positive(j["stock"], "length", "stock.length", part.stockLength);
+  }
+  if (!j.contains("outside") || !j["outside"].is_array()) {
+    missing("outside");
+  } else {
+    for (std::size_t k = 0; k < j["outside"].size(); ++k) {
+      const nlohmann::json& o = j["outside"][k];
+      const std::string at = "outside[" + std::to_string(k) + "]";
+      if (!o.is_object()) {
+        bad(at, "an object { \"cylinder\": ... }");
+        continue;
+      }
+      OutsideStep step;
+      if (o.contains("cylinder")) {
+        positive(o, "cylinder", at + ".cylinder", step.diameter);
+      } else if (o.contains("taper")) {
+        step.kind = StepKind::Taper;
+        positive(o, "taper", at + ".taper", step.diameter);
+      } else {
+        missing(at + ".cylinder");
+        continue;
+      }
+      positive(o, "length", at + ".length", step.length);
+      if (o.contains("chamfer")) {
+        step.edge = EdgeBreak::Chamfer;
+        positive(o, "chamfer", at + ".chamfer", step.edgeSize);
+      } else if (o.contains("round")) {
+        step.edge = EdgeBreak::Round;
+        positive(o, "round", at + ".round", step.edgeSize);
+      }
+      part.outside.push_back(step);
+    }
+  }
+  if (ok) result.value = std::move(part);
+  return result;
+}
+
+io::ReadResult<std::vector<CuttingSpeed>> readCuttingSpeeds(const std::string& path) {
+  io::ReadResult<std::vector<CuttingSpeed>> result;
+  const std::string file =
+      path.empty() ? (std::filesystem::path(io::shippedConfigDir()) / "resources" / "parts" / "cutting_speeds.cfg").string()
+                   : path;
+  std::ifstream in(file);
+  if (!in) {
+    result.diagnostics.push_back(fileDiagnostic(codes::kPartFileNotJson, 0, 0, {file, "it cannot be read"}));
+    return result;
+  }
+  std::vector<CuttingSpeed> rows;
+  std::string line;
+  for (int n = 1; std::getline(in, line); ++n) {
+    const std::string t = trim(line);
+    if (t.empty() || t[0] == '#') continue;
+    std::stringstream fields(t);
+    std::string name, hss, carbide;
+    std::getline(fields, name, '|');
+    std::getline(fields, hss, '|');
+    std::getline(fields, carbide, '|');
+    CuttingSpeed row{trim(name), 0.0, 0.0};
+    char* end = nullptr;
+    const std::string h = trim(hss), c = trim(carbide);
+    row.hss = std::strtod(h.c_str(), &end);
+    const bool hssOk = !h.empty() && *end == '\0' && row.hss > 0.0 && row.hss < 5000.0;
+    row.carbide = std::strtod(c.c_str(), &end);
+    const bool carbideOk = !c.empty() && *end == '\0' && row.carbide > 0.0 && row.carbide < 5000.0;
+    if (row.material.empty() || !hssOk || !carbideOk) {
+      result.diagnostics.push_back(fileDiagnostic(codes::kSpeedsLineBad, n, 1, {file, t}));
+      continue;
+    }
+    rows.push_back(row);
+  }
+  result.value = std::move(rows);
+  return result;
+}
+
+double spindleRpm(double cuttingSpeed, double diameter) {
+  return diameter > 0.0 ? 1000.0 * cuttingSpeed / (M_PI * diameter) : 0.0;
+}
+
+}  // namespace klueng::core::design

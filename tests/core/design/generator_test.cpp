@@ -1,0 +1,182 @@
+// From drawing to program (issue 14, first step): sample 01's part as a design
+// file, generated in all three dialects, checked, run, cut and part-checked.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "klueng/core/cut/cut_simulator.h"
+#include "klueng/core/cut/part_check.h"
+#include "klueng/core/cut/part_features.h"
+#include "klueng/core/design/part_design.h"
+#include "klueng/core/io/program_file.h"
+#include "klueng/core/machine/job.h"
+#include "klueng/core/machine/setup_files.h"
+
+namespace klueng::core::design {
+namespace {
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+PartDesign stepShaft() {
+  const auto d = readPartDesign(slurp(KLUENG_SOURCE_DIR "/resources/parts/step-shaft.json"), "step-shaft.json");
+  EXPECT_TRUE(d.ok());
+  return *d.value;
+}
+
+struct Turned {
+  machine::CompiledJob job;
+  std::unique_ptr<cut::CutSimulator> sim;
+};
+
+Turned turn(const std::string& text, gcode::Dialect dialect, const machine::MachineSetup& setup) {
+  Turned t;
+  const auto file = io::parseProgramFile(text);
+  EXPECT_TRUE(file.value.has_value());
+  machine::JobOptions options;
+  options.run.dialect = dialect;
+  t.job = machine::compileJob(*file.value, setup, options);
+  for (const Diagnostic& d : t.job.diagnostics)
+    EXPECT_NE(d.severity, Severity::Error) << d.code << " line " << d.range.line << "\n" << text;
+  if (!t.job.timeline) return t;
+  t.sim = std::make_unique<cut::CutSimulator>(*t.job.timeline, cut::CutSetup::from(file.value->header, setup));
+  t.sim->runToEnd();
+  return t;
+}
+
+const cut::PartFeature* find(const cut::PartFeatures& p, cut::FeatureKind kind, const std::string& label) {
+  for (const cut::PartFeature& f : p.outside)
+    if (f.kind == kind && cut::featureLabel(f, Lang::En) == label) return &f;
+  return nullptr;
+}
+
+class EveryDialect : public ::testing::TestWithParam<gcode::Dialect> {};
+
+TEST_P(EveryDialect, Sample01sPartIsTurnedToTheDrawing) {
+  const machine::MachineSetup setup = machine::loadMachineSetup(KLUENG_SOURCE_DIR).setup;
+  GenerateOptions options;
+  options.dialect = GetParam();
+  options.machine = setup.machine;
+  std::vector<Diagnostic> why;
+  const auto program = generateProgram(stepShaft(), options, &why);
+  ASSERT_TRUE(program) << (why.empty() ? "" : why[0].code);
+  const Turned t = turn(program->text, GetParam(), setup);
+  ASSERT_TRUE(t.sim);
+  EXPECT_FALSE(t.sim->stoppingAlarm().has_value()) << t.sim->stoppingAlarm()->code;
+  const cut::PartFeatures part = cut::partFeatures(t.sim->stock());
+  for (const char* label : {"Ø30", "Ø40", "Ø46"}) {
+    const cut::PartFeature* f = find(part, cut::FeatureKind::Cylinder, label);
+    ASSERT_NE(f, nullptr) << label;
+    EXPECT_NEAR(f->diameter, std::stod(std::string(label).substr(2)), 0.01) << label;
+  }
+  EXPECT_NE(find(part, cut::FeatureKind::Chamfer, "C3"), nullptr);
+  EXPECT_NE(find(part, cut::FeatureKind::Chamfer, "C1"), nullptr);
+  const cut::PartFeature* r2 = find(part, cut::FeatureKind::Arc, "R2");
+  ASSERT_NE(r2, nullptr);
+  EXPECT_NEAR(r2->centre.x(), -22.0, 0.01);
+  // Part check: no gouge, nothing left beyond 0.01 mm.
+  const cut::PartCheck check = cut::checkPart(*t.job.timeline, cut::CutSetup::from(io::parseProgramFile(program->text).value->header, setup));
+  EXPECT_TRUE(check.defects.empty()) << check.defects.size();
+}
+
+INSTANTIATE_TEST_SUITE_P(Generator, EveryDialect,
+                         ::testing::Values(gcode::Dialect::Fanuc, gcode::Dialect::Haas, gcode::Dialect::Classic));
+
+TEST(Generator, SpeedsComeFromTheTableAndTheSpindleIsClamped) {
+  const auto speeds = readCuttingSpeeds();
+  ASSERT_TRUE(speeds.ok());
+  const auto row = std::find_if(speeds.value->begin(), speeds.value->end(),
+                                [](const CuttingSpeed& s) { return s.material == "aluminium"; });
+  ASSERT_NE(row, speeds.value->end());
+  EXPECT_DOUBLE_EQ(row->carbide, 500.0);
+  EXPECT_DOUBLE_EQ(row->hss, 120.0);
+  // A Ø36 aluminium bar, carbide: G96 S500, G50 at the machine's maximum. The
+  // facing pass starts at Ø40 (4 mm over the bar).
+  PartDesign part;
+  part.material = "aluminium";
+  part.stockDiameter = 36.0;
+  part.stockLength = 80.0;
+  part.outside = {{StepKind::Cylinder, 30.0, 20.0, EdgeBreak::Chamfer, 1.0}};
+  const machine::MachineSetup setup = machine::loadMachineSetup(KLUENG_SOURCE_DIR).setup;
+  GenerateOptions options;
+  options.machine = setup.machine;
+  const auto program = generateProgram(part, options);
+  ASSERT_TRUE(program);
+  EXPECT_NE(program->text.find("G96 S500. M03"), std::string::npos);
+  EXPECT_NE(program->text.find("G50 S" + std::to_string(static_cast<int>(setup.machine.maxSpindleRpm))), std::string::npos);
+  // S = 1000·Vc/(π·D) at Ø40: 3979 rpm, more than the machine's maximum: the run holds it there.
+  const double atForty = 1000.0 * 500.0 / (M_PI * 40.0);
+  EXPECT_NEAR(spindleRpm(500.0, 40.0), atForty, 1e-9);
+  EXPECT_GT(atForty, setup.machine.maxSpindleRpm);
+  // The rpm where the tool starts facing at Ø40, as the run computes it.
+  const auto rpmAtForty = [&](const std::string& text) {
+    const Turned t = turn(text, gcode::Dialect::Fanuc, setup);
+    EXPECT_TRUE(t.job.timeline);
+    for (const machine::Move& m : t.job.timeline->moves)
+      if (m.kind == machine::MoveKind::Line && std::abs(2.0 * m.path.start.y() - 40.0) < 1e-6) return m.rpm;
+    return -1.0;
+  };
+  EXPECT_NEAR(rpmAtForty(program->text), setup.machine.maxSpindleRpm, 0.5);
+  // With HSS, 120 m/min: 955 rpm at Ø40, below the limit.
+  part.toolMaterial = "hss";
+  const auto slow = generateProgram(part, options);
+  ASSERT_TRUE(slow);
+  EXPECT_NE(slow->text.find("G96 S120. M03"), std::string::npos);
+  EXPECT_NEAR(rpmAtForty(slow->text), 1000.0 * 120.0 / (M_PI * 40.0), 0.5);
+}
+
+TEST(Generator, PartsThatCannotBeTurnedSayWhyAndWriteNothing) {
+  PartDesign part = stepShaft();
+  std::vector<Diagnostic> why;
+  part.outside[1].diameter = 26.0;  // Ø26 after Ø30: an undercut
+  EXPECT_FALSE(generateProgram(part, {}, &why));
+  ASSERT_FALSE(why.empty());
+  EXPECT_EQ(why[0].code, "E501");
+  EXPECT_EQ(formatMessage(why[0], Lang::En),
+            "Step 2 (Ø26.) is thinner than the step before it (Ø30.): an undercut the turning tool cannot reach from "
+            "the right");
+  part = stepShaft();
+  part.outside[2].edgeSize = 4.0;  // C4 on a 3 mm step (Ø40 to Ø46)
+  why.clear();
+  EXPECT_FALSE(generateProgram(part, {}, &why));
+  ASSERT_EQ(why.size(), 1u);
+  EXPECT_EQ(why[0].code, "E502");
+  part = stepShaft();
+  part.stockLength = 60.0;  // 60 mm of part, 45 outside the jaws
+  why.clear();
+  EXPECT_FALSE(generateProgram(part, {}, &why));
+  EXPECT_EQ(why.at(0).code, "E503");
+  part = stepShaft();
+  part.material = "unobtainium";
+  why.clear();
+  EXPECT_FALSE(generateProgram(part, {}, &why));
+  EXPECT_EQ(why.at(0).code, "E505");
+  EXPECT_NE(formatMessage(why[0], Lang::Th).find("aluminium, brass, cast-iron, steel"), std::string::npos);
+}
+
+TEST(Generator, BadPartFilesNameTheirPlace) {
+  const auto broken = readPartDesign("{\n  \"stock\": { \"diameter\": 50,\n  \"length\" 100 }\n}\n", "p.json");
+  EXPECT_FALSE(broken.ok());
+  ASSERT_EQ(broken.diagnostics.size(), 1u);
+  EXPECT_EQ(broken.diagnostics[0].code, "F180");
+  EXPECT_EQ(broken.diagnostics[0].range.line, 3);
+  const auto empty = readPartDesign("", "e.json");
+  EXPECT_EQ(empty.diagnostics.at(0).code, "F180");
+  const auto negative = readPartDesign(
+      "{\"stock\": {\"diameter\": 50, \"length\": 100}, \"outside\": [{\"cylinder\": -3, \"length\": 5}]}", "n.json");
+  EXPECT_FALSE(negative.ok());
+  EXPECT_EQ(negative.diagnostics.at(0).code, "F182");
+  EXPECT_EQ(negative.diagnostics.at(0).args.at(1), "outside[0].cylinder");
+  const auto binary = readPartDesign(std::string("\x89PNG\r\n\x1a\n\0\0", 10), "b.json");
+  EXPECT_EQ(binary.diagnostics.at(0).code, "F180");
+}
+
+}  // namespace
+}  // namespace klueng::core::design
