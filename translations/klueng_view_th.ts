@@ -601,4 +601,23 @@
         <translation>ลากเพื่อหมุน ลากด้วยปุ่มขวาเพื่อเลื่อน หมุนล้อเมาส์เพื่อย่อขยาย ดับเบิลคลิกเพื่อกลับสู่มุมมองแรก</translation>
     </message>
 </context>
+<context>
+    <name>klueng::gui::HeaderStrip</name>
+    <message>
+        <source>Lines 1–6: job header — %1, %2, %3 (click to edit)</source>
+        <translation>บรรทัด 1–6: ส่วนหัวของงาน — %1, %2, %3 (คลิกเพื่อแก้ไข)</translation>
+    </message>
+    <message>
+        <source>no project</source>
+        <translation>ไม่มีชื่องาน</translation>
+    </message>
+    <message>
+        <source>no part</source>
+        <translation>ไม่มีชื่อชิ้นงาน</translation>
+    </message>
+    <message>
+        <source>The file&apos;s first six lines hold the project, part, material, stock diameter, stock length and programmer; the program starts on line 7. File &gt; Job Details edits them.</source>
+        <translation>หกบรรทัดแรกของไฟล์เก็บชื่องาน ชิ้นงาน วัสดุ เส้นผ่าศก. ชิ้นงานดิบ ความยาวชิ้นงานดิบ และผู้เขียน ชุดรหัสสั่งการทำงานเริ่มที่บรรทัด 7 แก้ไขได้ที่ แฟ้ม &gt; รายละเอียดงาน</translation>
+    </message>
+</context>
 </TS>

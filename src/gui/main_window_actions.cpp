@@ -6,6 +6,7 @@
 #include <QStatusBar>
 #include <QToolBar>
 #include <QUndoStack>
+#include <QVBoxLayout>
 
 #include "gui/action_table.h"
 #include "gui/class_grade_dialog.h"
@@ -17,6 +18,7 @@
 #include "gui/help_contents.h"
 #include "gui/language.h"
 #include "gui/main_window.h"
+#include "gui/header_strip.h"
 #include "gui/part3d_view.h"
 #include "gui/part_panel.h"
 #include "gui/output_view.h"
@@ -226,6 +228,16 @@ void MainWindow::createDocks() {
   addDockWidget(Qt::BottomDockWidgetArea, part_);
   tabifyDockWidget(flow_, part_);
   diagnostics_->raise();
+  // Issue 11: what lines 1-6 are, above the editor (a click edits them).
+  auto* header = new HeaderStrip(editor_->parentWidget());
+  if (auto* pane = qobject_cast<QVBoxLayout*>(editor_->parentWidget()->layout()))
+    pane->insertWidget(pane->indexOf(editor_), header);
+  const auto showHeader = [this, header] { header->showHeader(document_->header(), document_->isPlainGcode()); };
+  connect(document_, &Document::headerChanged, header, showHeader);
+  connect(docs_, &DocumentManager::cleared, header, showHeader);
+  connect(docs_, &DocumentManager::loaded, header, showHeader);
+  connect(header, &HeaderStrip::activated, this, &MainWindow::showJobDetails);
+  showHeader();
   // Issue 10: the 3D view, on the right beside the editor and the output screen; hidden at first.
   view3d_ = new Part3DDock(this);
   addDockWidget(Qt::RightDockWidgetArea, view3d_);
