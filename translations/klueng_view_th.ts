@@ -516,6 +516,10 @@
 <context>
     <name>klueng::gui::PartPanel</name>
     <message>
+        <source>The program changed: check the part again.</source>
+        <translation>โปรแกรมถูกแก้ไขแล้ว: ตรวจชิ้นงานอีกครั้ง</translation>
+    </message>
+    <message>
         <source>Part</source>
         <translation>ชิ้นงาน</translation>
     </message>

@@ -5,6 +5,7 @@
 #include <QMenu>
 #include <QStatusBar>
 #include <QToolBar>
+#include <QTextDocument>
 #include <QUndoStack>
 #include <QVBoxLayout>
 
@@ -244,6 +245,11 @@ void MainWindow::createDocks() {
   view3d_->view()->setRunController(runner_);
   view3d_->hide();
   connect(part_, &PartPanel::overlayChanged, output_, &OutputView::setPartOverlay);
+  // Real edits only: re-colouring by the highlighter changes no characters.
+  connect(editor_->document(), &QTextDocument::contentsChange, part_, [this](int, int removed, int added) {
+    if (removed != 0 || added != 0) part_->invalidate();
+  });
+  connect(document_, &Document::headerChanged, part_, &PartPanel::invalidate);
   connect(part_, &PartPanel::lineActivated, this, [this](int line) { editor_->goToFileLine(line, 1); });
   connect(part_, &PartPanel::measuringToggled, output_, &OutputView::setMeasuring);
   connect(output_, &OutputView::measured, this, [this](const QString& reading) { statusBar()->showMessage(reading); });

@@ -106,6 +106,15 @@ PartPanel::PartPanel(QWidget* parent, std::function<Source()> source)
   retranslateUi();
 }
 
+void PartPanel::invalidate() {
+  if (list_->topLevelItemCount() == 0) return;
+  list_->clear();
+  features_ = defects_ = differences_ = nullptr;
+  base_ = PartOverlay{};
+  summary_->setText(tr("The program changed: check the part again."));
+  emit overlayChanged(base_);
+}
+
 void PartPanel::setComparison(int compare) { compare_->setCurrentIndex(std::clamp(compare, 0, 2)); }
 
 void PartPanel::retranslateUi() {

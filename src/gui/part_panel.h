@@ -37,6 +37,8 @@ class PartPanel : public QDockWidget {
   // 1 = without G41/G42, 2 = sharp nose (R 0).
   void analyse();
   void setComparison(int compare);
+  // The program or its setup changed: what is listed no longer holds (cleared, and the marks with it).
+  void invalidate();
   QTreeWidget* list() const { return list_; }
   QPushButton* measureButton() const { return measure_; }
   QLabel* summary() const { return summary_; }

@@ -109,6 +109,12 @@ class PartPanelTest : public QObject {
     const QString text = reading.first().first().toString();
     QVERIFY2(text.contains(QStringLiteral("ΔØ 10.000")), qPrintable(text));  // Ø30 to Ø40, exactly
     output->setMeasuring(false);
+
+    // An edit makes the list stale: it goes, and the marks on the output screen with it.
+    editor->textCursor().insertText(QStringLiteral(" "));
+    QCOMPARE(part->list()->topLevelItemCount(), 0);
+    QVERIFY(output->partOverlay().empty());
+    QVERIFY(part->summary()->text().contains(QStringLiteral("check the part again")));
   }
 
   // The 3D view: shown from the View menu, draws the bar before a run and the
