@@ -20,6 +20,12 @@ constexpr MessageText kMessages[] = {
      "ไม่มีความเร็วตัดของวัสดุ \"{0}\": ในตารางมี {1}"},
     {codes::kPartHasNoSteps, "The part has no outside steps to turn", "ชิ้นงานไม่มีขั้นด้านนอกให้กลึง"},
 
+    {codes::kGrooveNarrow, "Groove {0} is {1} mm wide: the grooving tool's blade is {2} mm",
+     "ร่องที่ {0} กว้าง {1} มม. แต่ใบมีดกลึงร่องกว้าง {2} มม."},
+    {codes::kGrooveOffCylinder, "Groove {0} (Z{1} to Z{2}) does not lie on one cylinder of the part",
+     "ร่องที่ {0} (Z{1} ถึง Z{2}) ไม่ได้อยู่บนทรงกระบอกเดียวของชิ้นงาน"},
+    {codes::kGrooveTooDeep, "Groove {0}'s bottom Ø{1} must be above 0 and below its cylinder's Ø{2}",
+     "ก้นร่องที่ {0} Ø{1} ต้องมากกว่า 0 และเล็กกว่าทรงกระบอก Ø{2}"},
     {codes::kPartFileNotJson, "{0} is not a part file: {1}", "{0} ไม่ใช่ไฟล์ชิ้นงาน: {1}"},
     {codes::kPartFieldMissing, "{0}: \"{1}\" is missing", "{0}: ไม่มีค่า \"{1}\""},
     {codes::kPartFieldBad, "{0}: \"{1}\" must be {2}", "{0}: ค่า \"{1}\" ต้องเป็น{2}"},

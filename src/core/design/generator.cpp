@@ -19,6 +19,8 @@ constexpr double kRoughFeed = 0.25;     // mm/rev
 constexpr double kFinishFeed = 0.1;
 constexpr double kFaceFeed = 0.2;
 constexpr double kClear = 2.0;          // mm in front of the face
+constexpr double kBlade = 3.0;          // mm: the grooving tool T04's blade (tip 3: its left corner leads)
+constexpr double kGrooveFeed = 0.05;
 
 // One move of the finished contour, to (x diameter, z); arcs are G03 (convex rounds).
 struct ContourMove {
@@ -152,6 +154,27 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
   }
   double x0 = 0.0;
   const std::vector<ContourMove> contour = contourOf(part, x0, why);
+  // Each groove on one cylinder, no narrower than the blade, not through the part.
+  std::vector<double> grooveTop(part.grooves.size(), 0.0);
+  for (std::size_t g = 0; g < part.grooves.size(); ++g) {
+    const Groove& gr = part.grooves[g];
+    const std::string n = std::to_string(g + 1);
+    if (gr.width < kBlade - 1e-9) why.push_back(problem(codes::kGrooveNarrow, {n, num(gr.width), num(kBlade)}));
+    double z = 0.0;
+    bool onOne = false;
+    for (const OutsideStep& s : part.outside) {
+      const double right = z, left = z - s.length;
+      z = left;
+      if (s.kind != StepKind::Cylinder || gr.z > right + 1e-9 || gr.z - gr.width < left - 1e-9) continue;
+      // Clear of the step's edge break at its right end.
+      if (s.edge != EdgeBreak::None && gr.z > right - s.edgeSize + 1e-9) continue;
+      onOne = true;
+      grooveTop[g] = s.diameter;
+      if (!(gr.diameter > 0.0 && gr.diameter < s.diameter))
+        why.push_back(problem(codes::kGrooveTooDeep, {n, num(gr.diameter), num(s.diameter)}));
+    }
+    if (!onOne) why.push_back(problem(codes::kGrooveOffCylinder, {n, num(gr.z), num(gr.z - gr.width)}));
+  }
   if (!why.empty()) {
     if (whyOut) *whyOut = std::move(why);
     return std::nullopt;
@@ -243,6 +266,32 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
             t.pick("finishing with nose radius compensation", "กลึงละเอียดพร้อมชดเชยรัศมีจมูกมีด"));
     w.block(fmt::format("G70 P{} Q{}", p, q));
     w.block("G00 G40 X100. Z100.");
+  }
+  if (!part.grooves.empty()) {
+    // The grooving tool: plunges a blade apart from the right wall to the left one, at constant rpm.
+    const double grooveRpm = std::min(options.machine.maxSpindleRpm, spindleRpm(out.cuttingSpeed / 2.0, stock));
+    w.block("T0404", t.pick("grooving tool, 3 mm blade, offset 04", "มีดกลึงร่อง ใบมีดกว้าง 3 มม. ออฟเซต 04"));
+    w.block(fmt::format("G97 S{} M03", static_cast<long long>(std::llround(grooveRpm))),
+            t.pick("half the turning speed for the blade", "ใช้ความเร็วครึ่งหนึ่งของการกลึงปอกสำหรับใบมีดร่อง"));
+    for (std::size_t g = 0; g < part.grooves.size(); ++g) {
+      const Groove& gr = part.grooves[g];
+      const double clear = grooveTop[g] + 2.0;
+      const double first = gr.z - kBlade, last = gr.z - gr.width;
+      std::vector<double> plunges{first};
+      for (double zc = first - 0.8 * kBlade; zc > last + 1e-9; zc -= 0.8 * kBlade) plunges.push_back(zc);
+      if (std::abs(plunges.back() - last) > 1e-9) plunges.push_back(last);
+      // In front of the face first, then along Z over diameters no larger than this cylinder's.
+      w.block(fmt::format("G00 X{} Z{}", num(clear), num(kClear)));
+      for (const double zc : plunges) {
+        w.block(fmt::format("G00 Z{}", num(zc)),
+                zc == first ? fmt::format(fmt::runtime(t.pick("groove {} x D{}", "ร่อง {} x D{}")), num(gr.width),
+                                          num(gr.diameter))
+                            : std::string());
+        w.block(fmt::format("G01 X{} F{}", num(gr.diameter), num(kGrooveFeed)));
+        w.block(fmt::format("G00 X{}", num(clear)));
+      }
+    }
+    w.block("G00 X100. Z100.");
   }
   w.block("M09", t.pick("coolant off", "ปิดสารหล่อเย็น"));
   w.block("M05");

@@ -129,6 +129,23 @@ io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::st
       part.outside.push_back(step);
     }
   }
+  if (j.contains("grooves")) {
+    if (!j["grooves"].is_array()) bad("grooves", "a list [ { \"z\": ..., \"width\": ..., \"diameter\": ... } ]");
+    for (std::size_t k = 0; j["grooves"].is_array() && k < j["grooves"].size(); ++k) {
+      const nlohmann::json& o = j["grooves"][k];
+      const std::string at = "grooves[" + std::to_string(k) + "]";
+      Groove g;
+      if (!o.is_object() || !o.contains("z") || !o["z"].is_number() || !std::isfinite(o["z"].get<double>()) ||
+          o["z"].get<double>() > 0.0) {
+        bad(at + ".z", "the Z of its right wall, 0 or below");
+        continue;
+      }
+      g.z = o["z"].get<double>();
+      positive(o, "width", at + ".width", g.width);
+      positive(o, "diameter", at + ".diameter", g.diameter);
+      part.grooves.push_back(g);
+    }
+  }
   if (ok) result.value = std::move(part);
   return result;
 }

@@ -89,6 +89,51 @@ TEST_P(EveryDialect, Sample01sPartIsTurnedToTheDrawing) {
 INSTANTIATE_TEST_SUITE_P(Generator, EveryDialect,
                          ::testing::Values(gcode::Dialect::Fanuc, gcode::Dialect::Haas, gcode::Dialect::Classic));
 
+TEST(Generator, GroovesArePlungedWithTheBladeToTheirWidthAndDiameter) {
+  const machine::MachineSetup setup = machine::loadMachineSetup(KLUENG_SOURCE_DIR).setup;
+  PartDesign part = stepShaft();
+  part.grooves = {{-26.0, 5.0, 34.0}, {-48.0, 3.0, 42.0}};  // on Ø40 (5 wide, two plunges) and on Ø46
+  GenerateOptions options;
+  options.machine = setup.machine;
+  for (const gcode::Dialect dialect : {gcode::Dialect::Fanuc, gcode::Dialect::Haas, gcode::Dialect::Classic}) {
+    options.dialect = dialect;
+    std::vector<Diagnostic> why;
+    const auto program = generateProgram(part, options, &why);
+    ASSERT_TRUE(program) << (why.empty() ? "" : why[0].code);
+    const Turned t = turn(program->text, dialect, setup);
+    ASSERT_TRUE(t.sim);
+    EXPECT_FALSE(t.sim->stoppingAlarm().has_value()) << program->text;
+    const cut::PartFeatures features = cut::partFeatures(t.sim->stock());
+    std::vector<const cut::PartFeature*> grooves;
+    for (const cut::PartFeature& f : features.outside)
+      if (f.kind == cut::FeatureKind::Groove) grooves.push_back(&f);
+    ASSERT_EQ(grooves.size(), 2u) << program->text;
+    // Right to left: the one on Ø46 is further left.
+    EXPECT_NEAR(grooves[0]->diameter, 34.0, 0.01);
+    EXPECT_NEAR(grooves[0]->width, 5.0, 0.06);
+    EXPECT_NEAR(grooves[0]->zRight, -26.0, 0.06);
+    EXPECT_NEAR(grooves[0]->depth, 3.0, 0.01);  // Ø40 to Ø34
+    EXPECT_NEAR(grooves[1]->diameter, 42.0, 0.01);
+    EXPECT_NEAR(grooves[1]->width, 3.0, 0.06);
+    const cut::PartCheck check =
+        cut::checkPart(*t.job.timeline, cut::CutSetup::from(io::parseProgramFile(program->text).value->header, setup));
+    EXPECT_TRUE(check.defects.empty()) << check.defects.size();
+  }
+  // Refused: narrower than the blade, over a shoulder, through the part.
+  std::vector<Diagnostic> why;
+  part.grooves = {{-26.0, 2.0, 34.0}};
+  EXPECT_FALSE(generateProgram(part, options, &why));
+  EXPECT_EQ(why.at(0).code, "E507");
+  why.clear();
+  part.grooves = {{-18.0, 4.0, 26.0}};  // Z-18 to Z-22 crosses the Ø30/Ø40 shoulder at Z-20
+  EXPECT_FALSE(generateProgram(part, options, &why));
+  EXPECT_EQ(why.at(0).code, "E508");
+  why.clear();
+  part.grooves = {{-26.0, 4.0, 44.0}};  // deeper than nothing: Ø44 on a Ø40 cylinder
+  EXPECT_FALSE(generateProgram(part, options, &why));
+  EXPECT_EQ(why.at(0).code, "E509");
+}
+
 TEST(Generator, SpeedsComeFromTheTableAndTheSpindleIsClamped) {
   const auto speeds = readCuttingSpeeds();
   ASSERT_TRUE(speeds.ok());

@@ -10,8 +10,9 @@
 //   const auto design = readPartDesign(text, "shaft.json");   // diagnostics name file, line, column
 //   const auto program = generateProgram(*design.value, options);  // nullopt + why when it cannot be turned
 //
-// First step: outside cylinders and tapers, each with a chamfer or a round at
-// its right-hand edge. Grooves, threads and bores are not generated yet.
+// Outside cylinders and tapers, each with a chamfer or a round at its
+// right-hand edge, and grooves in the cylinders. Threads and bores are not
+// generated yet.
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,6 +36,13 @@ struct OutsideStep {
   double edgeSize = 0.0;  // chamfer C (45°) or round R, mm
 };
 
+// A groove cut into a cylinder step with the grooving tool (T04, 3 mm blade).
+struct Groove {
+  double z = 0.0;         // its right wall (Z <= 0)
+  double width = 0.0;     // mm along Z, at least the blade's width
+  double diameter = 0.0;  // at its bottom
+};
+
 struct PartDesign {
   std::string name = "Part";
   std::string material = "steel";        // a row of the cutting-speed table
@@ -42,6 +50,7 @@ struct PartDesign {
   double stockDiameter = 0.0;            // mm
   double stockLength = 0.0;
   std::vector<OutsideStep> outside;
+  std::vector<Groove> grooves;
   double length() const;                 // of the turned part (the steps)
 };
 
@@ -75,7 +84,8 @@ struct GeneratedProgram {
 // The program, or nullopt with the reasons (D-codes, English/Thai) when the part
 // cannot be turned this way: a step thinner than the one before it (an undercut
 // the turning tool cannot reach), an edge break larger than its step, a part
-// longer than the bar or wider than it, an unknown material.
+// longer than the bar or wider than it, an unknown material, a groove narrower
+// than the blade, off its cylinder or deeper than the part.
 std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const GenerateOptions& options,
                                                 std::vector<Diagnostic>* why = nullptr);
 
