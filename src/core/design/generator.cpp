@@ -21,6 +21,8 @@ constexpr double kFaceFeed = 0.2;
 constexpr double kClear = 2.0;          // mm in front of the face
 constexpr double kBlade = 3.0;          // mm: the grooving tool T04's blade (tip 3: its left corner leads)
 constexpr double kGrooveFeed = 0.05;
+constexpr double kThreadHeight = 0.6134;  // ISO metric external thread: radial height per mm of pitch
+constexpr int kThreadPasses = 6;          // classic G32 passes, equal chip area
 
 // One move of the finished contour, to (x diameter, z); arcs are G03 (convex rounds).
 struct ContourMove {
@@ -154,6 +156,22 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
   }
   double x0 = 0.0;
   const std::vector<ContourMove> contour = contourOf(part, x0, why);
+  // Each thread on one cylinder (its major Ø), with a pitch that fits it.
+  std::vector<double> threadMajor(part.threads.size(), 0.0);
+  for (std::size_t k = 0; k < part.threads.size(); ++k) {
+    const Thread& th = part.threads[k];
+    const std::string n = std::to_string(k + 1);
+    if (th.pitch < 0.25 || th.pitch > 6.0 || th.pitch * 3.0 > th.length)
+      why.push_back(problem(codes::kThreadPitchBad, {n, num(th.pitch)}));
+    double z = 0.0;
+    for (const OutsideStep& s : part.outside) {
+      const double right = z, left = z - s.length;
+      z = left;
+      if (s.kind == StepKind::Cylinder && th.z <= right + 1e-9 && th.z - th.length >= left - 1e-9)
+        threadMajor[k] = s.diameter;
+    }
+    if (threadMajor[k] <= 0.0) why.push_back(problem(codes::kThreadOffCylinder, {n, num(th.z), num(th.z - th.length)}));
+  }
   // Each groove on one cylinder, no narrower than the blade, not through the part.
   std::vector<double> grooveTop(part.grooves.size(), 0.0);
   for (std::size_t g = 0; g < part.grooves.size(); ++g) {
@@ -289,6 +307,45 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
                             : std::string());
         w.block(fmt::format("G01 X{} F{}", num(gr.diameter), num(kGrooveFeed)));
         w.block(fmt::format("G00 X{}", num(clear)));
+      }
+    }
+    w.block("G00 X100. Z100.");
+  }
+  if (!part.threads.empty()) {
+    w.block("T0303", t.pick("60 degree threading tool, offset 03", "มีดกลึงเกลียว 60 องศา ออฟเซต 03"));
+    for (std::size_t k = 0; k < part.threads.size(); ++k) {
+      const Thread& th = part.threads[k];
+      const double major = threadMajor[k], h = kThreadHeight * th.pitch, minor = major - 2.0 * h;
+      const double rpm = std::min(options.machine.maxSpindleRpm, spindleRpm(out.cuttingSpeed / 2.0, major));
+      const double startZ = th.z + 3.0 * th.pitch, endZ = th.z - th.length, clear = major + 4.0;
+      const std::string what = fmt::format(
+          fmt::runtime(t.pick("M{}x{}: thread height 0.6134 x {} = {} mm, minor D{}",
+                              "M{}x{}: ความสูงเกลียว 0.6134 x {} = {} มม. Ø ใน D{}")),
+          num(major), num(th.pitch), num(th.pitch), num(std::round(h * 1000.0) / 1000.0), num(minor));
+      w.block(fmt::format("G97 S{} M03", static_cast<long long>(std::llround(rpm))), what);
+      w.block(fmt::format("G00 X{} Z{}", num(clear), num(startZ)),
+              t.pick("three pitches in front of the thread", "ห่างหน้าเกลียวสามระยะพิตช์"));
+      const double first = std::min(0.4, h / 2.0);
+      if (classic) {
+        for (int p = 1; p <= kThreadPasses; ++p) {
+          const double depth = std::round(h * std::sqrt(static_cast<double>(p) / kThreadPasses) * 1000.0) / 1000.0;
+          w.block(fmt::format("G00 X{}", num(major - 2.0 * depth)));
+          w.block(fmt::format("G32 Z{} F{}", num(endZ), num(th.pitch)));
+          w.block(fmt::format("G00 X{}", num(clear)));
+          w.block(fmt::format("G00 Z{}", num(startZ)));
+        }
+      } else if (haas) {
+        w.block(fmt::format("G76 X{} Z{} K{} D{} A60 F{}", num(minor), num(endZ), num(std::round(h * 1000.0) / 1000.0),
+                            num(first), num(th.pitch)),
+                t.pick("K thread height, D first pass depth", "K ความสูงเกลียว D ความลึกครั้งแรก"));
+      } else {
+        w.block("G76 P011060 Q50 R0.05",
+                t.pick("1 finishing pass, 1 pitch pull-out, 60 degrees, 0.05 least depth",
+                       "กลึงเก็บ 1 ครั้ง ถอนมีด 1 ระยะพิตช์ มุม 60 องศา ลึกอย่างน้อย 0.05 มม."));
+        w.block(fmt::format("G76 X{} Z{} P{} Q{} F{}", num(minor), num(endZ),
+                            static_cast<long long>(std::llround(h * 1000.0)),
+                            static_cast<long long>(std::llround(first * 1000.0)), num(th.pitch)),
+                t.pick("P thread height, Q first depth, in microns", "P ความสูงเกลียว Q ความลึกครั้งแรก หน่วยไมครอน"));
       }
     }
     w.block("G00 X100. Z100.");

@@ -146,6 +146,23 @@ io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::st
       part.grooves.push_back(g);
     }
   }
+  if (j.contains("threads")) {
+    if (!j["threads"].is_array()) bad("threads", "a list [ { \"z\": ..., \"length\": ..., \"pitch\": ... } ]");
+    for (std::size_t k = 0; j["threads"].is_array() && k < j["threads"].size(); ++k) {
+      const nlohmann::json& o = j["threads"][k];
+      const std::string at = "threads[" + std::to_string(k) + "]";
+      Thread t;
+      if (!o.is_object() || !o.contains("z") || !o["z"].is_number() || !std::isfinite(o["z"].get<double>()) ||
+          o["z"].get<double>() > 0.0) {
+        bad(at + ".z", "the Z of its right end, 0 or below");
+        continue;
+      }
+      t.z = o["z"].get<double>();
+      positive(o, "length", at + ".length", t.length);
+      positive(o, "pitch", at + ".pitch", t.pitch);
+      part.threads.push_back(t);
+    }
+  }
   if (ok) result.value = std::move(part);
   return result;
 }

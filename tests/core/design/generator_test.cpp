@@ -134,6 +134,48 @@ TEST(Generator, GroovesArePlungedWithTheBladeToTheirWidthAndDiameter) {
   EXPECT_EQ(why.at(0).code, "E509");
 }
 
+TEST(Generator, AnM30ThreadIsCutInEveryDialect) {
+  const machine::MachineSetup setup = machine::loadMachineSetup(KLUENG_SOURCE_DIR).setup;
+  PartDesign part;
+  part.name = "Bolt M30";
+  part.stockDiameter = 50.0;
+  part.stockLength = 100.0;
+  part.outside = {{StepKind::Cylinder, 30.0, 30.0, EdgeBreak::Chamfer, 1.5},
+                  {StepKind::Cylinder, 40.0, 20.0, EdgeBreak::Round, 2.0}};
+  part.threads = {{0.0, 22.0, 1.5}};
+  GenerateOptions options;
+  options.machine = setup.machine;
+  // ISO: thread height 0.6134 x 1.5 = 0.920 mm a side, minor Ø 30 - 1.840 = 28.16.
+  const double minor = 30.0 - 2.0 * 0.6134 * 1.5;
+  for (const gcode::Dialect dialect : {gcode::Dialect::Fanuc, gcode::Dialect::Haas, gcode::Dialect::Classic}) {
+    options.dialect = dialect;
+    const auto program = generateProgram(part, options);
+    ASSERT_TRUE(program);
+    const Turned t = turn(program->text, dialect, setup);
+    ASSERT_TRUE(t.sim);
+    EXPECT_FALSE(t.sim->stoppingAlarm().has_value()) << program->text;
+    const cut::PartFeatures features = cut::partFeatures(t.sim->stock());
+    const cut::PartFeature* thread = find(features, cut::FeatureKind::Thread, "M30×1.5");
+    ASSERT_NE(thread, nullptr) << program->text;
+    EXPECT_NEAR(thread->pitch, 1.5, 0.01);
+    EXPECT_NEAR(thread->minorDiameter, minor, 0.01);
+    EXPECT_DOUBLE_EQ(thread->zRight, 0.0);
+    EXPECT_LT(thread->zLeft, -21.0);
+    const cut::PartCheck check =
+        cut::checkPart(*t.job.timeline, cut::CutSetup::from(io::parseProgramFile(program->text).value->header, setup));
+    EXPECT_TRUE(check.defects.empty());
+  }
+  // Longer than its cylinder, or a pitch that does not fit: refused.
+  std::vector<Diagnostic> why;
+  part.threads = {{0.0, 35.0, 1.5}};
+  EXPECT_FALSE(generateProgram(part, options, &why));
+  EXPECT_EQ(why.at(0).code, "E510");
+  why.clear();
+  part.threads = {{0.0, 10.0, 8.0}};
+  EXPECT_FALSE(generateProgram(part, options, &why));
+  EXPECT_EQ(why.at(0).code, "E511");
+}
+
 TEST(Generator, SpeedsComeFromTheTableAndTheSpindleIsClamped) {
   const auto speeds = readCuttingSpeeds();
   ASSERT_TRUE(speeds.ok());

@@ -11,7 +11,7 @@
 //   const auto program = generateProgram(*design.value, options);  // nullopt + why when it cannot be turned
 //
 // Outside cylinders and tapers, each with a chamfer or a round at its
-// right-hand edge, and grooves in the cylinders. Threads and bores are not
+// right-hand edge, grooves and threads on the cylinders. Bores are not
 // generated yet.
 #include <optional>
 #include <string>
@@ -43,6 +43,14 @@ struct Groove {
   double diameter = 0.0;  // at its bottom
 };
 
+// An outside ISO metric thread on a cylinder (major Ø = the cylinder's), cut
+// with the 60° threading tool (T03): G76 on Fanuc and Haas, G32 passes classic.
+struct Thread {
+  double z = 0.0;       // its right end (Z <= 0)
+  double length = 0.0;  // mm along Z
+  double pitch = 0.0;   // mm
+};
+
 struct PartDesign {
   std::string name = "Part";
   std::string material = "steel";        // a row of the cutting-speed table
@@ -51,6 +59,7 @@ struct PartDesign {
   double stockLength = 0.0;
   std::vector<OutsideStep> outside;
   std::vector<Groove> grooves;
+  std::vector<Thread> threads;
   double length() const;                 // of the turned part (the steps)
 };
 
