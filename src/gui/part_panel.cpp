@@ -33,22 +33,12 @@ QString qs(const std::string& s) { return QString::fromStdString(s); }
 // The feature's profile, upper half, in scene units (y = -radius).
 QPainterPath profileOf(const cut::PartFeature& f) {
   QPainterPath path;
-  if (f.kind == cut::FeatureKind::Arc) {
-    const int steps = 24;
-    for (int k = 0; k <= steps; ++k) {
-      const double z = f.zLeft + (f.zRight - f.zLeft) * k / steps;
-      const double dz = std::clamp(z - f.centre.x(), -f.radius, f.radius);
-      const double h = std::sqrt(std::max(0.0, f.radius * f.radius - dz * dz));
-      const bool upper = (f.side == cut::FeatureSide::Outside) == f.convex;
-      const QPointF p(z, -(f.centre.y() + (upper ? h : -h)));
-      k == 0 ? path.moveTo(p) : path.lineTo(p);
-    }
-    return path;
+  const int steps = f.kind == cut::FeatureKind::Arc ? 24 : 1;
+  for (int k = 0; k <= steps; ++k) {
+    const double z = f.zLeft + (f.zRight - f.zLeft) * k / steps;
+    const QPointF p(z, -f.radiusAt(z));
+    k == 0 ? path.moveTo(p) : path.lineTo(p);
   }
-  const double r0 = f.kind == cut::FeatureKind::Groove ? f.diameter / 2.0 : f.diameterLeft / 2.0;
-  const double r1 = f.kind == cut::FeatureKind::Groove ? f.diameter / 2.0 : f.diameterRight / 2.0;
-  path.moveTo(f.zLeft, -r0);
-  path.lineTo(f.zRight, -r1);
   return path;
 }
 
@@ -157,11 +147,7 @@ void PartPanel::analyse() {
   }
   const cut::CutSetup setup = cut::CutSetup::from(src.program.header, src.setup);
   const cut::PartCheck check = cut::checkPart(*compiled.timeline, setup);
-  cut::CutOptions options;
-  options.checkpointBudgetBytes = 0;
-  cut::CutSimulator sim(*compiled.timeline, setup, options);
-  sim.runToEnd();
-  const cut::PartFeatures part = cut::partFeatures(sim.stock());
+  const cut::PartFeatures part = cut::partFeatures(check.cut);  // the part the check cut, not a second cut
 
   features_ = new QTreeWidgetItem(list_);
   for (const auto* side : {&part.outside, &part.inside})

@@ -13,8 +13,6 @@ using core::cut::FeatureKind;
 using core::cut::FeatureSide;
 using core::cut::PartFeature;
 
-constexpr double kNoseFilletRadius = 1.6;  // as the core: a concave arc this small is the nose's print
-
 QString num(double v) {
   QString s = QString::number(v, 'f', 2);
   while (s.endsWith(QLatin1Char('0'))) s.chop(1);
@@ -25,10 +23,6 @@ QString num(double v) {
 
 QString label(const PartFeature& f, bool thai) {
   return QString::fromStdString(core::cut::featureLabel(f, thai ? core::Lang::Th : core::Lang::En));
-}
-
-bool isNoseFillet(const PartFeature& f) {
-  return f.kind == FeatureKind::Arc && !f.convex && f.radius <= kNoseFilletRadius;
 }
 
 // The outside's largest radius at z (the faces' taller side there).
@@ -42,16 +36,7 @@ double outerRadiusAt(const core::cut::PartFeatures& part, double z) {
 // A point of the feature on its profile (upper half), for a leader.
 QPointF anchorOf(const PartFeature& f, const DimensionFrame& frame) {
   const double z = (f.zLeft + f.zRight) / 2.0;
-  double r = (f.diameterLeft + f.diameterRight) / 4.0;
-  if (f.kind == FeatureKind::Arc) {
-    const double dz = std::clamp(z - f.centre.x(), -f.radius, f.radius);
-    const double h = std::sqrt(std::max(0.0, f.radius * f.radius - dz * dz));
-    const bool upper = (f.side == FeatureSide::Outside) == f.convex;
-    r = f.centre.y() + (upper ? h : -h);
-  } else if (f.kind == FeatureKind::Groove) {
-    r = f.diameter / 2.0;
-  }
-  return frame.toPage(z, r);
+  return frame.toPage(z, f.radiusAt(z));
 }
 
 }  // namespace
@@ -125,7 +110,7 @@ std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part,
   double noseRadius = 0.0;
   for (const auto* list : {&part.outside, &part.inside}) {
     for (const PartFeature& f : *list) {
-      if (isNoseFillet(f)) {
+      if (f.isNoseFillet()) {
         noseRadius = std::max(noseRadius, f.radius);
         continue;
       }

@@ -173,6 +173,7 @@ PartCheck checkPart(const machine::Timeline& timeline, const CutSetup& setup, co
   CutSimulator ideal(idealTimeline, setup, idealTools, idealOptions);
   ideal.advanceTo(end);
 
+  out.cut = real.stock();
   const Stock& a = real.stock();
   const Stock& b = ideal.stock();
   out.nothingCut = b.removedVolume() <= 0.0 && a.removedVolume() <= 0.0;

@@ -157,14 +157,10 @@ PartFeature toFeature(const Item& it, FeatureSide side) {
   return f;
 }
 
-bool isNoseFillet(const PartFeature& f) {
-  return f.kind == FeatureKind::Arc && !f.convex && f.radius <= kNoseFilletRadius;
-}
-
 // The neighbour a chamfer's or groove's corner is measured to: the nose's fillets are passed over.
 long neighbour(const std::vector<PartFeature>& fs, long k, int dir) {
   long m = k + dir;
-  while (m >= 0 && m < static_cast<long>(fs.size()) && isNoseFillet(fs[static_cast<std::size_t>(m)])) m += dir;
+  while (m >= 0 && m < static_cast<long>(fs.size()) && fs[static_cast<std::size_t>(m)].isNoseFillet()) m += dir;
   return m >= 0 && m < static_cast<long>(fs.size()) ? m : -1;
 }
 
@@ -264,6 +260,23 @@ void readSide(const Side& s, int first, int last, FeatureSide side, const std::v
 
 bool PartFeature::isFortyFiveChamfer() const {
   return kind == FeatureKind::Chamfer && std::abs(angle - 45.0) <= 0.5;
+}
+
+bool PartFeature::isNoseFillet() const {
+  return kind == FeatureKind::Arc && !convex && radius <= kNoseFilletRadius;
+}
+
+double PartFeature::radiusAt(double z) const {
+  if (kind == FeatureKind::Groove) return diameter / 2.0;
+  if (kind == FeatureKind::Arc) {
+    const double dz = std::clamp(z - centre.x(), -radius, radius);
+    const double h = std::sqrt(std::max(0.0, radius * radius - dz * dz));
+    // Outside, material is below the profile; in a bore, above it.
+    const bool upper = (side == FeatureSide::Outside) == convex;
+    return centre.y() + (upper ? h : -h);
+  }
+  if (length() <= 0.0) return diameterLeft / 2.0;
+  return (diameterLeft + (diameterRight - diameterLeft) * (z - zLeft) / length()) / 2.0;
 }
 
 std::vector<double> PartFeatures::shoulderZ() const {

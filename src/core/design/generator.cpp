@@ -83,6 +83,20 @@ std::vector<ContourMove> contourOf(const PartDesign& part, double& x0, std::vect
   return out;
 }
 
+// The cylinder step holding all of Z [zLeft, zRight] (clear of its right edge
+// break when `clearOfEdge`), or nullptr.
+const OutsideStep* cylinderHolding(const PartDesign& part, double zRight, double zLeft, bool clearOfEdge) {
+  double z = 0.0;
+  for (const OutsideStep& s : part.outside) {
+    const double right = z, left = z - s.length;
+    z = left;
+    if (s.kind != StepKind::Cylinder || zRight > right + 1e-9 || zLeft < left - 1e-9) continue;
+    if (clearOfEdge && s.edge != EdgeBreak::None && zRight > right - s.edgeSize + 1e-9) continue;
+    return &s;
+  }
+  return nullptr;
+}
+
 // Z where the contour reaches diameter d (first, going left), or the contour's end.
 double zAtDiameter(const std::vector<ContourMove>& contour, double x0, double d) {
   double px = x0, pz = 0.0;
@@ -163,13 +177,7 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
     const std::string n = std::to_string(k + 1);
     if (th.pitch < 0.25 || th.pitch > 6.0 || th.pitch * 3.0 > th.length)
       why.push_back(problem(codes::kThreadPitchBad, {n, num(th.pitch)}));
-    double z = 0.0;
-    for (const OutsideStep& s : part.outside) {
-      const double right = z, left = z - s.length;
-      z = left;
-      if (s.kind == StepKind::Cylinder && th.z <= right + 1e-9 && th.z - th.length >= left - 1e-9)
-        threadMajor[k] = s.diameter;
-    }
+    if (const OutsideStep* s = cylinderHolding(part, th.z, th.z - th.length, false)) threadMajor[k] = s->diameter;
     if (threadMajor[k] <= 0.0) why.push_back(problem(codes::kThreadOffCylinder, {n, num(th.z), num(th.z - th.length)}));
   }
   // Each groove on one cylinder, no narrower than the blade, not through the part.
@@ -178,20 +186,13 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
     const Groove& gr = part.grooves[g];
     const std::string n = std::to_string(g + 1);
     if (gr.width < kBlade - 1e-9) why.push_back(problem(codes::kGrooveNarrow, {n, num(gr.width), num(kBlade)}));
-    double z = 0.0;
-    bool onOne = false;
-    for (const OutsideStep& s : part.outside) {
-      const double right = z, left = z - s.length;
-      z = left;
-      if (s.kind != StepKind::Cylinder || gr.z > right + 1e-9 || gr.z - gr.width < left - 1e-9) continue;
-      // Clear of the step's edge break at its right end.
-      if (s.edge != EdgeBreak::None && gr.z > right - s.edgeSize + 1e-9) continue;
-      onOne = true;
-      grooveTop[g] = s.diameter;
-      if (!(gr.diameter > 0.0 && gr.diameter < s.diameter))
-        why.push_back(problem(codes::kGrooveTooDeep, {n, num(gr.diameter), num(s.diameter)}));
+    const OutsideStep* s = cylinderHolding(part, gr.z, gr.z - gr.width, true);
+    if (s) {
+      grooveTop[g] = s->diameter;
+      if (!(gr.diameter > 0.0 && gr.diameter < s->diameter))
+        why.push_back(problem(codes::kGrooveTooDeep, {n, num(gr.diameter), num(s->diameter)}));
     }
-    if (!onOne) why.push_back(problem(codes::kGrooveOffCylinder, {n, num(gr.z), num(gr.z - gr.width)}));
+    if (!s) why.push_back(problem(codes::kGrooveOffCylinder, {n, num(gr.z), num(gr.z - gr.width)}));
   }
   if (!why.empty()) {
     if (whyOut) *whyOut = std::move(why);

@@ -44,6 +44,7 @@ struct PartCheck {
   std::vector<PartDefect> defects;          // sorted by Z, right to left
   std::optional<Diagnostic> stoppedBy;      // the alarm the run stopped on: what was cut up to it is checked
   bool nothingCut = false;                  // no move cut the stock (no moves, only rapids, empty stock)
+  Stock cut;                                // the real cut (up to the alarm): the finished part
   double largestGouge() const;              // mm, 0 when none
   double largestLeftover() const;
 };

@@ -48,6 +48,12 @@ struct PartFeature {
 
   double length() const { return zRight - zLeft; }
   bool isFortyFiveChamfer() const;  // a chamfer at 45° ± 0.5°: written "C<size>"
+  // A concave arc no larger than a nose radius (1.6 mm): the tool's print in an
+  // inside corner, not a radius the drawing gives.
+  bool isNoseFillet() const;
+  // The profile's radius at z within [zLeft, zRight] (arcs on their circle; a
+  // groove at its bottom).
+  double radiusAt(double z) const;
 };
 
 struct PartFeatures {
