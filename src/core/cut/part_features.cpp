@@ -14,7 +14,8 @@ constexpr double kNoseFilletRadius = 1.6;     // a concave arc this small is the
 constexpr double kMaxChamferLeg = 5.0;        // mm: a longer bevel is a taper
 constexpr double kMaxGrooveWidth = 10.0;      // mm
 constexpr double kMinGrooveDepth = 0.1;       // mm of radius
-constexpr double kCylinderRise = 0.002;       // mm of radius over the length
+constexpr double kCylinderRise = 0.002;
+constexpr double kSliverLength = 0.15;        // mm: a bevel's end rolled by the nose, fitted apart       // mm of radius over the length
 
 enum class ItemKind { Piece, Face, Thread };
 
@@ -182,7 +183,41 @@ Vec2 sharpCorner(const PartFeature& taper, const PartFeature* other, bool leftEn
   return own;
 }
 
+// A bevel's end where the nose rolled over the corner it makes with a face (or
+// a bore's mouth) is
+// fitted as its own short line at another angle: it belongs to the bevel, whose
+// line is carried on to it, so the chamfer is measured to its true sharp corner.
+void absorbSlivers(std::vector<PartFeature>& fs) {
+  for (std::size_t k = 0; k < fs.size(); ++k) {
+    const PartFeature& f = fs[k];
+    if (f.kind != FeatureKind::Taper || f.length() > kSliverLength) continue;
+    for (const int dir : {-1, +1}) {
+      const long o = static_cast<long>(k) + dir, face = static_cast<long>(k) - dir;
+      if (o < 0 || o >= static_cast<long>(fs.size())) continue;
+      // Beyond the sliver, a face (or the part's end: a bore's mouth face is listed with the outside).
+      const bool byFace = face < 0 || face >= static_cast<long>(fs.size()) ||
+                          fs[static_cast<std::size_t>(face)].kind == FeatureKind::Face;
+      PartFeature& bevel = fs[static_cast<std::size_t>(o)];
+      if (bevel.kind != FeatureKind::Taper || bevel.length() <= 4.0 * f.length() || !byFace) continue;
+      const double slope = (bevel.diameterRight - bevel.diameterLeft) / bevel.length();
+      if (dir > 0) {  // the bevel is to the sliver's right: carry its line left
+        bevel.diameterLeft = bevel.diameterRight - slope * (bevel.zRight - f.zLeft);
+        bevel.zLeft = f.zLeft;
+      } else {
+        bevel.diameterRight = bevel.diameterLeft + slope * (f.zRight - bevel.zLeft);
+        bevel.zRight = f.zRight;
+      }
+      bevel.axialLength = bevel.length();
+      bevel.radialHeight = std::abs(bevel.diameterRight - bevel.diameterLeft) / 2.0;
+      fs.erase(fs.begin() + static_cast<long>(k));
+      --k;
+      break;
+    }
+  }
+}
+
 void classify(std::vector<PartFeature>& fs) {
+  absorbSlivers(fs);
   const long n = static_cast<long>(fs.size());
   for (long k = 0; k < n; ++k) {
     PartFeature& f = fs[static_cast<std::size_t>(k)];

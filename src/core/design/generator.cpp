@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contour.h"
 #include "klueng/core/design/part_design.h"
 #include "klueng/core/diagnostic_codes.h"
 
@@ -12,76 +13,20 @@ namespace klueng::core::design {
 
 namespace {
 
+using namespace detail;
+
 constexpr double kRoughDepth = 2.0;     // mm a side per roughing pass
 constexpr double kAllowanceX = 0.4;     // mm on the diameter left for the finishing pass
 constexpr double kAllowanceZ = 0.1;     // mm along Z
 constexpr double kRoughFeed = 0.25;     // mm/rev
-constexpr double kFinishFeed = 0.1;
 constexpr double kFaceFeed = 0.2;
 constexpr double kClear = 2.0;          // mm in front of the face
 constexpr double kBlade = 3.0;          // mm: the grooving tool T04's blade (tip 3: its left corner leads)
 constexpr double kGrooveFeed = 0.05;
+constexpr double kBoreDepth = 1.0;      // mm a side per boring pass
+constexpr double kBoreFeed = 0.15;
 constexpr double kThreadHeight = 0.6134;  // ISO metric external thread: radial height per mm of pitch
 constexpr int kThreadPasses = 6;          // classic G32 passes, equal chip area
-
-// One move of the finished contour, to (x diameter, z); arcs are G03 (convex rounds).
-struct ContourMove {
-  double x = 0.0, z = 0.0;
-  bool arc = false;
-  double radius = 0.0;
-  double centreZ = 0.0, centreR = 0.0;  // arc centre (z, radius)
-};
-
-// "30." for whole millimetres, "30.25" otherwise, as lathe programs are written.
-std::string num(double v) {
-  if (std::abs(v - std::round(v)) < 1e-9) return fmt::format("{}.", static_cast<long long>(std::llround(v)));
-  std::string s = fmt::format("{:.3f}", v);
-  while (s.back() == '0') s.pop_back();
-  return s;
-}
-
-Diagnostic problem(const char* code, std::vector<std::string> args) {
-  Diagnostic d;
-  d.severity = Severity::Error;
-  d.code = code;
-  d.args = std::move(args);
-  return d;
-}
-
-// The contour from the face (x0 at Z0) to the last step's left end; problems go to `why`.
-std::vector<ContourMove> contourOf(const PartDesign& part, double& x0, std::vector<Diagnostic>& why) {
-  std::vector<ContourMove> out;
-  double z = 0.0, before = 0.0;  // Ø at the right of the current step (0: the face)
-  for (std::size_t k = 0; k < part.outside.size(); ++k) {
-    const OutsideStep& s = part.outside[k];
-    const std::string n = std::to_string(k + 1);
-    if (s.diameter > part.stockDiameter + 1e-9)
-      why.push_back(problem(codes::kPartWiderThanBar, {n, num(s.diameter), num(part.stockDiameter)}));
-    const bool taper = s.kind == StepKind::Taper && k > 0;
-    if (s.diameter < before - 1e-9)
-      why.push_back(problem(codes::kPartUndercut, {n, num(s.diameter), num(before)}));
-    const double rise = (s.diameter - before) / 2.0;  // the face's height (the whole radius at the face)
-    const double room = std::min(s.length, taper ? 0.0 : rise);
-    if (s.edge != EdgeBreak::None && s.edgeSize > room + 1e-9)
-      why.push_back(problem(codes::kPartEdgeTooLarge, {n, num(s.edgeSize), num(room)}));
-    if (taper) {
-      z -= s.length;
-      out.push_back({s.diameter, z});
-      before = s.diameter;
-      continue;
-    }
-    const double e = s.edge == EdgeBreak::None ? 0.0 : s.edgeSize;
-    const double foot = s.diameter - 2.0 * e;  // where the face meets the edge break
-    if (k == 0) x0 = foot;
-    else if (foot > before + 1e-9) out.push_back({foot, z});
-    if (s.edge == EdgeBreak::Chamfer) out.push_back({s.diameter, z - e});
-    if (s.edge == EdgeBreak::Round) out.push_back({s.diameter, z - e, true, e, z - e, foot / 2.0});
-    z -= s.length;
-    out.push_back({s.diameter, z});
-    before = s.diameter;
-  }
-  return out;
-}
 
 // The cylinder step holding all of Z [zLeft, zRight] (clear of its right edge
 // break when `clearOfEdge`), or nullptr.
@@ -97,58 +42,59 @@ const OutsideStep* cylinderHolding(const PartDesign& part, double zRight, double
   return nullptr;
 }
 
-// Z where the contour reaches diameter d (first, going left), or the contour's end.
-double zAtDiameter(const std::vector<ContourMove>& contour, double x0, double d) {
-  double px = x0, pz = 0.0;
-  for (const ContourMove& m : contour) {
-    if (m.x >= d - 1e-9 && px < d + 1e-9) {
-      if (m.arc) {
-        const double dr = d / 2.0 - m.centreR;
-        const double h = std::sqrt(std::max(0.0, m.radius * m.radius - dr * dr));
-        return m.centreZ + h;  // a convex round: the right side of its circle
-      }
-      if (std::abs(m.x - px) < 1e-12) return pz;
-      return pz + (m.z - pz) * (d - px) / (m.x - px);
+// Roughing then finishing of one contour: the outside (side +1, from above the
+// bar) or the bore (side -1, from inside the tube's hole, its allowance negative).
+struct TurningPass {
+  double side;
+  double from;         // Ø where the material starts: the bar's, or the tube's hole
+  double startX;       // the cycle's start point and where finishing ends
+  double depth;        // a side per roughing pass
+  double feed;
+  const char* comp;    // G42 outside, G41 in the bore
+  const char* what;    // "roughing 2 mm a side"
+};
+
+void writeTurning(Writer& w, const Contour& contour, const TurningPass& pass, gcode::Dialect dialect, const Words& t) {
+  const double u = pass.side * kAllowanceX;
+  const std::string finishing = t.pick("finishing with nose radius compensation", "กลึงละเอียดพร้อมชดเชยรัศมีจมูกมีด");
+  if (dialect == gcode::Dialect::Classic) {
+    // Plain passes `depth` a side. A pass at Ø d may run left only while the
+    // contour stays U beyond it (U left for finishing): it stops where the
+    // contour reaches d - U (outside; d + U in the bore), W short of it.
+    const double side = pass.side;
+    const double last = side > 0 ? contour.smallestX() : contour.largestX();
+    for (double d = pass.from - side * 2.0 * pass.depth; side * (d - last) > kAllowanceX + 1e-9;
+         d -= side * 2.0 * pass.depth) {
+      const double zEnd = zAtDiameter(contour, d - u) + kAllowanceZ;
+      if (zEnd >= 0.0) continue;
+      w.block(fmt::format("G00 X{}", num(d)), fmt::format(fmt::runtime(t.pick("roughing pass to D{}", "กลึงหยาบถึง D{}")), num(d)));
+      w.block(fmt::format("G01 Z{} F{}", num(zEnd), num(pass.feed)));
+      w.block(fmt::format("G00 U{} W0.5", num(side)));
+      w.block(fmt::format("G00 Z{}", num(kClear)));
     }
-    px = m.x;
-    pz = m.z;
+    w.block(fmt::format("{} G00 X{} Z{}", pass.comp, num(contour.x0), num(kClear)), finishing);
+    contourBlocks(w, contour, pass.startX, t);
+    return;
   }
-  return pz;
-}
-
-struct Words {
-  bool thai;
-  const char* pick(const char* en, const char* th) const { return thai ? th : en; }
-};
-
-class Writer {
- public:
-  explicit Writer(bool numbered) : numbered_(numbered) {}
-  void block(const std::string& words, const std::string& comment = {}) {
-    std::string line = numbered_ ? fmt::format("N{} {}", n_, words) : words;
-    n_ += 10;
-    if (!comment.empty()) line += " (" + comment + ")";
-    text_ += line + "\n";
+  const bool haas = dialect == gcode::Dialect::Haas;
+  const int p = w.next() + (haas ? 10 : 20);
+  const int q = p + 10 * (static_cast<int>(contour.moves.size()) + 2);
+  const std::string left = pass.side > 0 ? t.pick("0.4 on the diameter and 0.1 on Z left for finishing",
+                                                  "เหลือเผื่อกลึงละเอียด 0.4 มม. ทางเส้นผ่านศูนย์กลาง และ 0.1 มม. ทาง Z")
+                                         : t.pick("0.4 on the diameter, U negative in the bore, and 0.1 on Z left for finishing",
+                                                  "เหลือเผื่อกลึงละเอียด 0.4 มม. ทางเส้นผ่านศูนย์กลาง ค่า U ติดลบเพราะอยู่ในรู และ 0.1 มม. ทาง Z");
+  if (haas) {
+    w.block(fmt::format("G71 P{} Q{} U{} W{} D{} F{}", p, q, num(u), num(kAllowanceZ), num(pass.depth), num(pass.feed)),
+            std::string(pass.what) + ", " + left);
+  } else {
+    w.block(fmt::format("G71 U{} R0.5", num(pass.depth)),
+            std::string(pass.what) + t.pick(", 0.5 retract", " ถอยมีด 0.5 มม."));
+    w.block(fmt::format("G71 P{} Q{} U{} W{} F{}", p, q, num(u), num(kAllowanceZ), num(pass.feed)), left);
   }
-  void raw(const std::string& line) { text_ += line + "\n"; }
-  int next() const { return n_; }
-  const std::string& text() const { return text_; }
-
- private:
-  bool numbered_;
-  int n_ = 10;
-  std::string text_;
-};
-
-void contourBlocks(Writer& w, const std::vector<ContourMove>& contour, double exitX, const Words& t) {
-  w.block(fmt::format("G01 Z0. F{}", num(kFinishFeed)), t.pick("finishing feed", "อัตราป้อนกลึงละเอียด"));
-  for (const ContourMove& m : contour) {
-    if (m.arc)
-      w.block(fmt::format("G03 X{} Z{} R{}", num(m.x), num(m.z), num(m.radius)));
-    else
-      w.block(fmt::format("G01 X{} Z{}", num(m.x), num(m.z)));
-  }
-  w.block(fmt::format("G01 X{}", num(exitX)));
+  w.block(fmt::format("G00 X{}", num(contour.x0)), t.pick("the profile starts", "เริ่มรูปร่างชิ้นงาน"));
+  contourBlocks(w, contour, pass.startX, t);
+  w.block(fmt::format("G00 {} X{} Z{}", pass.comp, num(pass.startX), num(kClear)), finishing);
+  w.block(fmt::format("G70 P{} Q{}", p, q));
 }
 
 }  // namespace
@@ -168,8 +114,18 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
     for (const CuttingSpeed& s : speeds) names += (names.empty() ? "" : ", ") + s.material;
     why.push_back(problem(codes::kUnknownMaterial, {part.material, names}));
   }
-  double x0 = 0.0;
-  const std::vector<ContourMove> contour = contourOf(part, x0, why);
+  const Contour contour = outsideContour(part, why);
+  const Contour bore = boreContour(part, why);
+  if (!part.inside.empty()) {
+    double depth = 0.0;
+    for (const BoreStep& s : part.inside) depth += s.length;
+    if (part.stockBore <= 0.0) why.push_back(problem(codes::kBoreInSolidBar, {num(bore.smallestX())}));
+    for (std::size_t k = 0; k < part.inside.size() && part.stockBore > 0.0; ++k)
+      if (part.inside[k].diameter < part.stockBore - 1e-9)
+        why.push_back(problem(codes::kBoreBelowHole,
+                              {std::to_string(k + 1), num(part.inside[k].diameter), num(part.stockBore)}));
+    if (depth > part.length() + 1e-9) why.push_back(problem(codes::kBoreDeeperThanPart, {num(depth), num(part.length())}));
+  }
   // Each thread on one cylinder (its major Ø), with a pitch that fits it.
   std::vector<double> threadMajor(part.threads.size(), 0.0);
   for (std::size_t k = 0; k < part.threads.size(); ++k) {
@@ -215,8 +171,9 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
     if (s.back() == '.') s.pop_back();
     return s;
   };
-  std::string text = fmt::format("{}\n{}\n{}\n1{}\n1{}\nKlueng generator\n", part.name, part.name, part.material,
-                                 size(stock), size(part.stockLength));
+  const std::string hole = part.stockBore > 0.0 ? "x" + size(part.stockBore) : std::string();
+  std::string text = fmt::format("{}\n{}\n{}\n1{}{}\n1{}\nKlueng generator\n", part.name, part.name, part.material,
+                                 size(stock), hole, size(part.stockLength));
   Writer w(true);
   if (!classic) w.raw("%");
   w.raw(fmt::format("{} ({})", haas ? "O00100" : "O0100", part.name));
@@ -242,49 +199,26 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
                       num(out.cuttingSpeed), num(stock), static_cast<long long>(std::llround(rpmAtStock)), num(stock)));
   w.block(fmt::format("G00 X{} Z{} M08", num(stock + 4.0), num(kClear)), t.pick("coolant on", "เปิดสารหล่อเย็น"));
   w.block("G00 Z0.");
-  w.block(fmt::format("G01 X-1.6 F{}", num(kFaceFeed)), t.pick("face the end", "ปาดหน้า"));
+  w.block(fmt::format("G01 X{} F{}", num(part.stockBore > 0.0 ? part.stockBore - 2.0 : -1.6), num(kFaceFeed)),
+          t.pick("face the end", "ปาดหน้า"));
   w.block(fmt::format("G00 Z{}", num(kClear)));
   w.block(fmt::format("G00 X{}", num(exitX)), t.pick("cycle start point", "จุดเริ่มวัฏจักร"));
 
-  if (classic) {
-    // Plain passes, kRoughDepth a side. A pass at Ø d may run left only while the
-    // contour stays at d - U or below (U left for finishing): it stops where the
-    // contour reaches d - U, W short of it.
-    double minX = x0;
-    for (const ContourMove& m : contour) minX = std::min(minX, m.x);
-    for (double d = stock - 2.0 * kRoughDepth; d > minX + kAllowanceX + 1e-9; d -= 2.0 * kRoughDepth) {
-      const double zEnd = zAtDiameter(contour, x0, d - kAllowanceX) + kAllowanceZ;
-      if (zEnd >= 0.0) continue;
-      w.block(fmt::format("G00 X{}", num(d)), fmt::format(fmt::runtime(t.pick("roughing pass to D{}", "กลึงหยาบลงถึง D{}")), num(d)));
-      w.block(fmt::format("G01 Z{} F{}", num(zEnd), num(kRoughFeed)));
-      w.block("G00 U1. W0.5");
-      w.block(fmt::format("G00 Z{}", num(kClear)));
-    }
-    w.block(fmt::format("G42 G00 X{} Z{}", num(x0), num(kClear)),
-            t.pick("finishing with nose radius compensation", "กลึงละเอียดพร้อมชดเชยรัศมีจมูกมีด"));
-    contourBlocks(w, contour, exitX, t);
-    w.block("G40 G00 X100. Z100.");
-  } else {
-    const int p = w.next() + (haas ? 10 : 20);
-    const int q = p + 10 * (static_cast<int>(contour.size()) + 2);
-    if (haas) {
-      w.block(fmt::format("G71 P{} Q{} U{} W{} D{} F{}", p, q, num(kAllowanceX), num(kAllowanceZ), num(kRoughDepth),
-                          num(kRoughFeed)),
-              t.pick("roughing 2 mm a side, 0.4 on the diameter and 0.1 on Z left for finishing",
-                     "กลึงหยาบครั้งละ 2 มม. เหลือเผื่อกลึงละเอียด 0.4 มม. ทางเส้นผ่านศูนย์กลาง และ 0.1 มม. ทาง Z"));
-    } else {
-      w.block(fmt::format("G71 U{} R0.5", num(kRoughDepth)),
-              t.pick("roughing 2 mm a side, 0.5 retract", "กลึงหยาบครั้งละ 2 มม. ถอยมีด 0.5 มม."));
-      w.block(fmt::format("G71 P{} Q{} U{} W{} F{}", p, q, num(kAllowanceX), num(kAllowanceZ), num(kRoughFeed)),
-              t.pick("0.4 on the diameter and 0.1 on Z left for finishing",
-                     "เหลือเผื่อกลึงละเอียด 0.4 มม. ทางเส้นผ่านศูนย์กลาง และ 0.1 มม. ทาง Z"));
-    }
-    w.block(fmt::format("G00 X{}", num(x0)), t.pick("the profile starts", "เริ่มรูปร่างชิ้นงาน"));
-    contourBlocks(w, contour, exitX, t);
-    w.block(fmt::format("G00 G42 X{} Z{}", num(exitX), num(kClear)),
-            t.pick("finishing with nose radius compensation", "กลึงละเอียดพร้อมชดเชยรัศมีจมูกมีด"));
-    w.block(fmt::format("G70 P{} Q{}", p, q));
-    w.block("G00 G40 X100. Z100.");
+  const TurningPass outsidePass{1.0, stock, exitX, kRoughDepth, kRoughFeed, "G42",
+                                 t.pick("roughing 2 mm a side", "กลึงหยาบครั้งละ 2 มม.")};
+  writeTurning(w, contour, outsidePass, options.dialect, t);
+  w.block("G00 G40 X100. Z100.");
+  if (!bore.moves.empty()) {
+    // The boring bar from inside the tube's hole, out along Z before it leaves.
+    const double startX = part.stockBore - 1.0;
+    w.block("T0505", t.pick("boring bar, offset 05", "มีดคว้านรู ออฟเซต 05"));
+    w.block(fmt::format("G00 X{} Z{}", num(startX), num(kClear)),
+            t.pick("cycle start point, inside the tube's hole", "จุดเริ่มวัฏจักร ภายในรูของท่อ"));
+    const TurningPass borePass{-1.0, part.stockBore, startX, kBoreDepth, kBoreFeed, "G41",
+                               t.pick("boring 1 mm a side", "คว้านครั้งละ 1 มม.")};
+    writeTurning(w, bore, borePass, options.dialect, t);
+    w.block(fmt::format("G00 G40 Z{}", num(kClear)), t.pick("out of the bore", "ถอยออกจากรู"));
+    w.block("G00 X100. Z100.");
   }
   if (!part.grooves.empty()) {
     // The grooving tool: plunges a blade apart from the right wall to the left one, at constant rpm.

@@ -97,25 +97,38 @@ io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::st
   } else {
     positive(j["stock"], "diameter", "stock.diameter", part.stockDiameter);
     positive(j["stock"], "length", "stock.length", part.stockLength);
+    if (j["stock"].contains("bore")) {
+      positive(j["stock"], "bore", "stock.bore", part.stockBore);
+      if (part.stockBore >= part.stockDiameter && part.stockDiameter > 0.0)
+        bad("stock.bore", "smaller than the stock's diameter");
+    }
   }
-  if (!j.contains("outside") || !j["outside"].is_array()) {
-    missing("outside");
-  } else {
-    for (std::size_t k = 0; k < j["outside"].size(); ++k) {
-      const nlohmann::json& o = j["outside"][k];
-      const std::string at = "outside[" + std::to_string(k) + "]";
+  // A list of steps: outside cylinders, tapers and arcs; in the bore cylinders and tapers.
+  const auto readSteps = [&](const std::string& key, bool arcs, std::vector<OutsideStep>& into) {
+    const std::string word = key == "inside" ? "bore" : "cylinder";
+    for (std::size_t k = 0; k < j[key].size(); ++k) {
+      const nlohmann::json& o = j[key][k];
+      const std::string at = key + "[" + std::to_string(k) + "]";
       if (!o.is_object()) {
-        bad(at, "an object { \"cylinder\": ... }");
+        bad(at, key == "inside" ? "an object { \"bore\": ... }" : "an object { \"cylinder\": ... }");
         continue;
       }
       OutsideStep step;
-      if (o.contains("cylinder")) {
-        positive(o, "cylinder", at + ".cylinder", step.diameter);
+      if (o.contains(word)) {
+        positive(o, word, at + "." + word, step.diameter);
       } else if (o.contains("taper")) {
         step.kind = StepKind::Taper;
         positive(o, "taper", at + ".taper", step.diameter);
+      } else if (arcs && o.contains("arc")) {
+        step.kind = StepKind::Arc;
+        positive(o, "arc", at + ".arc", step.diameter);
+        positive(o, "radius", at + ".radius", step.radius);
+        if (o.contains("concave")) {
+          if (!o["concave"].is_boolean()) bad(at + ".concave", "true or false");
+          else step.concave = o["concave"].get<bool>();
+        }
       } else {
-        missing(at + ".cylinder");
+        missing(at + "." + word);
         continue;
       }
       positive(o, "length", at + ".length", step.length);
@@ -126,8 +139,14 @@ io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::st
         step.edge = EdgeBreak::Round;
         positive(o, "round", at + ".round", step.edgeSize);
       }
-      part.outside.push_back(step);
+      into.push_back(step);
     }
+  };
+  if (!j.contains("outside") || !j["outside"].is_array()) missing("outside");
+  else readSteps("outside", true, part.outside);
+  if (j.contains("inside")) {
+    if (!j["inside"].is_array()) bad("inside", "a list [ { \"bore\": ..., \"length\": ... } ]");
+    else readSteps("inside", false, part.inside);
   }
   if (j.contains("grooves")) {
     if (!j["grooves"].is_array()) bad("grooves", "a list [ { \"z\": ..., \"width\": ..., \"diameter\": ... } ]");

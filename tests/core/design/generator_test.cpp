@@ -14,48 +14,10 @@
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/machine/job.h"
 #include "klueng/core/machine/setup_files.h"
+#include "design_test_util.h"
 
 namespace klueng::core::design {
 namespace {
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-PartDesign stepShaft() {
-  const auto d = readPartDesign(slurp(KLUENG_SOURCE_DIR "/resources/parts/step-shaft.json"), "step-shaft.json");
-  EXPECT_TRUE(d.ok());
-  return *d.value;
-}
-
-struct Turned {
-  machine::CompiledJob job;
-  std::unique_ptr<cut::CutSimulator> sim;
-};
-
-Turned turn(const std::string& text, gcode::Dialect dialect, const machine::MachineSetup& setup) {
-  Turned t;
-  const auto file = io::parseProgramFile(text);
-  EXPECT_TRUE(file.value.has_value());
-  machine::JobOptions options;
-  options.run.dialect = dialect;
-  t.job = machine::compileJob(*file.value, setup, options);
-  for (const Diagnostic& d : t.job.diagnostics)
-    EXPECT_NE(d.severity, Severity::Error) << d.code << " line " << d.range.line << "\n" << text;
-  if (!t.job.timeline) return t;
-  t.sim = std::make_unique<cut::CutSimulator>(*t.job.timeline, cut::CutSetup::from(file.value->header, setup));
-  t.sim->runToEnd();
-  return t;
-}
-
-const cut::PartFeature* find(const cut::PartFeatures& p, cut::FeatureKind kind, const std::string& label) {
-  for (const cut::PartFeature& f : p.outside)
-    if (f.kind == kind && cut::featureLabel(f, Lang::En) == label) return &f;
-  return nullptr;
-}
 
 class EveryDialect : public ::testing::TestWithParam<gcode::Dialect> {};
 

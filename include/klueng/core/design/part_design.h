@@ -10,9 +10,9 @@
 //   const auto design = readPartDesign(text, "shaft.json");   // diagnostics name file, line, column
 //   const auto program = generateProgram(*design.value, options);  // nullopt + why when it cannot be turned
 //
-// Outside cylinders and tapers, each with a chamfer or a round at its
-// right-hand edge, grooves and threads on the cylinders. Bores are not
-// generated yet.
+// Outside cylinders, tapers and arcs, each with a chamfer or a round at its
+// right-hand edge, grooves and threads on the cylinders; bore steps inside a
+// tube, cut with the boring bar.
 #include <optional>
 #include <string>
 #include <vector>
@@ -24,17 +24,21 @@
 
 namespace klueng::core::design {
 
-enum class StepKind { Cylinder, Taper };
+enum class StepKind { Cylinder, Taper, Arc };
 enum class EdgeBreak { None, Chamfer, Round };
 
-// One step of the outside, from its right end (nearer the face) leftward.
+// One step of the outside (or of the bore), from its right end (nearer the
+// face) leftward.
 struct OutsideStep {
   StepKind kind = StepKind::Cylinder;
-  double diameter = 0.0;  // mm: the cylinder's, or the taper's at its left end
+  double diameter = 0.0;  // mm: the cylinder's, or the taper's or arc's at its left end
   double length = 0.0;    // mm along Z
-  EdgeBreak edge = EdgeBreak::None;  // at the step's right-hand outer corner
+  EdgeBreak edge = EdgeBreak::None;  // at the step's right-hand corner (the one away from the axis outside)
   double edgeSize = 0.0;  // chamfer C (45°) or round R, mm
+  double radius = 0.0;    // an arc's R
+  bool concave = false;   // an arc hollowed into the part (G02 outside) rather than bulging out of it
 };
+using BoreStep = OutsideStep;  // inside: cylinders and tapers, getting no wider toward the chuck
 
 // A groove cut into a cylinder step with the grooving tool (T04, 3 mm blade).
 struct Groove {
@@ -57,7 +61,9 @@ struct PartDesign {
   std::string toolMaterial = "carbide";  // hss or carbide
   double stockDiameter = 0.0;            // mm
   double stockLength = 0.0;
+  double stockBore = 0.0;                // mm; 0 = a solid bar, else a tube's hole
   std::vector<OutsideStep> outside;
+  std::vector<BoreStep> inside;          // bored from the right face inward
   std::vector<Groove> grooves;
   std::vector<Thread> threads;
   double length() const;                 // of the turned part (the steps)
@@ -94,7 +100,9 @@ struct GeneratedProgram {
 // cannot be turned this way: a step thinner than the one before it (an undercut
 // the turning tool cannot reach), an edge break larger than its step, a part
 // longer than the bar or wider than it, an unknown material, a groove narrower
-// than the blade, off its cylinder or deeper than the part.
+// than the blade, off its cylinder or deeper than the part, an arc whose ends
+// are further apart than its diameter, a bore the boring bar cannot reach or
+// in a solid bar.
 std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const GenerateOptions& options,
                                                 std::vector<Diagnostic>* why = nullptr);
 

@@ -1,0 +1,176 @@
+// A part design's outside and bore as contour moves. Both are built by one
+// routine in a mirrored frame where diameters grow toward the chuck (the bore's
+// are negated), so every rule — no undercut, edge breaks that fit, arcs that
+// meet their neighbours — is written once.
+#include "contour.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "klueng/core/diagnostic_codes.h"
+
+namespace klueng::core::design::detail {
+
+namespace {
+
+constexpr double kEps = 1e-9;
+
+struct SideCodes {
+  const char* undercut;
+  const char* edgeTooLarge;
+};
+
+// The arc of `s` from (z0, r0) to (z1, r1), radius coordinates in the mirrored
+// frame (outward = +r); false with the reason when it cannot be turned.
+bool arcMove(const OutsideStep& s, const std::string& n, double side, double z0, double r0, double z1, double r1,
+             ContourMove& out, std::vector<Diagnostic>& why) {
+  const double R = s.radius;
+  const double dz = z1 - z0, dr = r1 - r0, chord = std::hypot(dz, dr);
+  if (R <= 0.0 || chord > 2.0 * R + 1e-6) {
+    why.push_back(problem(codes::kArcCannotJoin, {n, num(R), num(side * 2.0 * r0), num(side * 2.0 * r1),
+                                                  num(std::round(chord * 1000.0) / 1000.0)}));
+    return false;
+  }
+  const double tz = dz / chord, tr = dr / chord;
+  const double outZ = tr, outR = -tz;  // the chord's normal away from the axis (going left, -tz > 0)
+  const double h = std::sqrt(std::max(0.0, R * R - chord * chord / 4.0));
+  const double mz = (z0 + z1) / 2.0, mr = (r0 + r1) / 2.0;
+  const double sign = s.concave ? 1.0 : -1.0;  // a bulging arc has its centre inside the part
+  out = {2.0 * r1, z1, true, s.concave, R, mz + sign * h * outZ, mr + sign * h * outR};
+  // Rising all the way toward the chuck: the circle's top (bulging) or bottom
+  // (hollow) may only be at the arc's end.
+  const double cz = out.centreZ;
+  const bool turns = s.concave ? (cz >= z1 - 1e-6 && cz < z0 - 1e-6) : (cz > z1 + 1e-6 && cz <= z0 + 1e-6);
+  if (turns) {
+    const double turnR = s.concave ? out.centreR - R : out.centreR + R;
+    why.push_back(problem(codes::kArcNeedsUndercut, {n, num(R), num(std::round(side * 2000.0 * turnR) / 1000.0)}));
+    return false;
+  }
+  return true;
+}
+
+Contour build(const std::vector<OutsideStep>& steps, double side, double before, bool slopedFromAxis,
+              const SideCodes& codes, std::vector<Diagnostic>& why) {
+  Contour c;
+  c.side = side;
+  double z = 0.0;  // `before`: the mirrored Ø at the current step's right (outside: 0, the axis at the face)
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    const OutsideStep& s = steps[k];
+    const std::string n = std::to_string(k + 1);
+    const double d = side * s.diameter;
+    const bool sloped = s.kind != StepKind::Cylinder && (k > 0 || slopedFromAxis);
+    if (d < before - kEps) why.push_back(problem(codes.undercut, {n, num(s.diameter), num(side * before)}));
+    const double rise = (d - before) / 2.0;  // the face's height
+    const double room = std::min(s.length, sloped ? 0.0 : rise);
+    if (s.edge != EdgeBreak::None && s.edgeSize > room + kEps)
+      why.push_back(problem(codes.edgeTooLarge, {n, num(s.edgeSize), num(room)}));
+    if (sloped) {
+      if (k == 0) c.x0 = before;
+      ContourMove m{d, z - s.length};
+      if (s.kind == StepKind::Arc && !arcMove(s, n, side, z, before / 2.0, z - s.length, d / 2.0, m, why)) m = {d, z - s.length};
+      c.moves.push_back(m);
+      z -= s.length;
+      before = d;
+      continue;
+    }
+    const double e = s.edge == EdgeBreak::None ? 0.0 : s.edgeSize;
+    const double foot = d - 2.0 * e;  // where the face meets the edge break
+    if (k == 0) c.x0 = foot;
+    else if (foot > before + kEps) c.moves.push_back({foot, z});
+    if (s.edge == EdgeBreak::Chamfer) c.moves.push_back({d, z - e});
+    if (s.edge == EdgeBreak::Round) c.moves.push_back({d, z - e, true, false, e, z - e, foot / 2.0});
+    z -= s.length;
+    c.moves.push_back({d, z});
+    before = d;
+  }
+  // Back from the mirrored frame.
+  c.x0 *= side;
+  for (ContourMove& m : c.moves) {
+    m.x *= side;
+    m.centreR *= side;
+    if (side < 0.0) m.clockwise = !m.clockwise;
+  }
+  return c;
+}
+
+}  // namespace
+
+double Contour::smallestX() const {
+  double v = x0;
+  for (const ContourMove& m : moves) v = std::min(v, m.x);
+  return v;
+}
+
+double Contour::largestX() const {
+  double v = x0;
+  for (const ContourMove& m : moves) v = std::max(v, m.x);
+  return v;
+}
+
+Contour outsideContour(const PartDesign& part, std::vector<Diagnostic>& why) {
+  return build(part.outside, 1.0, 0.0, true, {codes::kPartUndercut, codes::kPartEdgeTooLarge}, why);
+}
+
+Contour boreContour(const PartDesign& part, std::vector<Diagnostic>& why) {
+  return build(part.inside, -1.0, -part.stockDiameter, false, {codes::kBoreUndercut, codes::kBoreEdgeTooLarge}, why);
+}
+
+double zAtDiameter(const Contour& contour, double d) {
+  const double side = contour.side, target = side * d;
+  double px = side * contour.x0, pz = 0.0;
+  for (const ContourMove& m : contour.moves) {
+    const double mx = side * m.x;
+    if (mx >= target - kEps && px < target + kEps) {
+      if (m.arc) {
+        const double cr = side * m.centreR, dr = target / 2.0 - cr;
+        const double h = std::sqrt(std::max(0.0, m.radius * m.radius - dr * dr));
+        // The root on this arc's span, the one nearer its start.
+        for (const double zc : {m.centreZ + h, m.centreZ - h})
+          if (zc <= pz + 1e-6 && zc >= m.z - 1e-6) return zc;
+        return m.z;
+      }
+      if (std::abs(mx - px) < 1e-12) return pz;
+      return pz + (m.z - pz) * (target - px) / (mx - px);
+    }
+    px = mx;
+    pz = m.z;
+  }
+  return pz;
+}
+
+std::string num(double v) {
+  if (std::abs(v - std::round(v)) < 1e-9) return fmt::format("{}.", static_cast<long long>(std::llround(v)));
+  std::string s = fmt::format("{:.3f}", v);
+  while (s.back() == '0') s.pop_back();
+  return s;
+}
+
+Diagnostic problem(const char* code, std::vector<std::string> args) {
+  Diagnostic d;
+  d.severity = Severity::Error;
+  d.code = code;
+  d.args = std::move(args);
+  return d;
+}
+
+void Writer::block(const std::string& words, const std::string& comment) {
+  std::string line = numbered_ ? fmt::format("N{} {}", n_, words) : words;
+  n_ += 10;
+  if (!comment.empty()) line += " (" + comment + ")";
+  text_ += line + "\n";
+}
+
+void contourBlocks(Writer& w, const Contour& contour, double exitX, const Words& t) {
+  w.block(fmt::format("G01 Z0. F{}", num(kFinishFeed)), t.pick("finishing feed", "อัตราป้อนกลึงละเอียด"));
+  for (const ContourMove& m : contour.moves) {
+    if (m.arc)
+      w.block(fmt::format("{} X{} Z{} R{}", m.clockwise ? "G02" : "G03", num(m.x), num(m.z), num(m.radius)));
+    else
+      w.block(fmt::format("G01 X{} Z{}", num(m.x), num(m.z)));
+  }
+  w.block(fmt::format("G01 X{}", num(exitX)));
+}
+
+}  // namespace klueng::core::design::detail

@@ -1,0 +1,64 @@
+#pragma once
+// The generator's geometry and text helpers (internal to core/design): a part
+// design's outside or bore as the finished contour's moves, and the block writer.
+#include <string>
+#include <vector>
+
+#include "klueng/core/design/part_design.h"
+
+namespace klueng::core::design::detail {
+
+inline constexpr double kFinishFeed = 0.1;  // mm/rev, every finishing pass
+
+// One move of the finished contour, to (x diameter, z).
+struct ContourMove {
+  double x = 0.0, z = 0.0;
+  bool arc = false;
+  bool clockwise = false;               // G02 (seen with X up, Z right); else G03
+  double radius = 0.0;
+  double centreZ = 0.0, centreR = 0.0;  // arc centre (z, radius)
+};
+
+// The contour from the face (x0 at Z0) leftward; inside, from the bore's mouth.
+struct Contour {
+  double side = 1.0;  // +1 outside (diameters grow toward the chuck), -1 the bore (they shrink)
+  double x0 = 0.0;
+  std::vector<ContourMove> moves;
+  double smallestX() const;
+  double largestX() const;
+};
+
+Contour outsideContour(const PartDesign& part, std::vector<Diagnostic>& why);
+Contour boreContour(const PartDesign& part, std::vector<Diagnostic>& why);  // empty moves: no bore
+
+// Z where the contour first reaches Ø d going left (outside: grows to d; the
+// bore: shrinks to d), or the contour's end.
+double zAtDiameter(const Contour& contour, double d);
+
+// "30." for whole millimetres, "30.25" otherwise, as lathe programs are written.
+std::string num(double v);
+Diagnostic problem(const char* code, std::vector<std::string> args);
+
+struct Words {
+  bool thai;
+  const char* pick(const char* en, const char* th) const { return thai ? th : en; }
+};
+
+class Writer {
+ public:
+  explicit Writer(bool numbered) : numbered_(numbered) {}
+  void block(const std::string& words, const std::string& comment = {});
+  void raw(const std::string& line) { text_ += line + "\n"; }
+  int next() const { return n_; }
+  const std::string& text() const { return text_; }
+
+ private:
+  bool numbered_;
+  int n_ = 10;
+  std::string text_;
+};
+
+// The finishing contour's blocks: G01 Z0 at the finishing feed, the moves, out to exitX.
+void contourBlocks(Writer& w, const Contour& contour, double exitX, const Words& t);
+
+}  // namespace klueng::core::design::detail
