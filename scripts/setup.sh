@@ -7,7 +7,7 @@ packages=(
   build-essential cmake ccache pkg-config clang libclang-rt-14-dev
   qt6-base-dev qt6-base-dev-tools qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
   qt6-svg-dev libgl-dev
-  libeigen3-dev libfmt-dev libpng-dev nlohmann-json3-dev
+  libeigen3-dev libfmt-dev libpng-dev nlohmann-json3-dev libdxflib-dev
   libgtest-dev libgmock-dev googletest libbenchmark-dev
   fonts-thai-tlwg xvfb xauth x11-apps poppler-utils
   desktop-file-utils shared-mime-info dpkg-dev file

@@ -1,8 +1,10 @@
-// klueng-cli generate PART.json -o OUT.nc [--dialect fanuc|haas|classic] [--material M]
-//                   [--tool-material hss|carbide] [--lang en|th] [--config DIR]
-// Issue 14: a part design (docs/parts.md) to a complete program, written atomically.
+// klueng-cli generate PART.json|PART.dxf -o OUT.nc [--dialect fanuc|haas|classic] [--material M]
+//                   [--tool-material hss|carbide] [--layer NAME] [--stock DxL[xBORE]] [--lang en|th] [--config DIR]
+// Issue 14: a part design (docs/parts.md) or a DXF half section to a complete program, written atomically.
 // Exit 0 written, 1 the part cannot be turned (reasons on stderr), 2 bad use or files.
 #include <algorithm>
+#include <array>
+#include <cctype>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -10,6 +12,7 @@
 
 #include "cli_common.h"
 #include "commands.h"
+#include "klueng/core/design/dxf_import.h"
 #include "klueng/core/design/part_design.h"
 #include "klueng/core/io/program_file.h"
 
@@ -20,9 +23,26 @@ using namespace klueng::core;
 namespace {
 
 constexpr const char* kGenerateUsage =
-    "usage: klueng-cli generate PART.json -o OUT.nc [--dialect fanuc|haas|classic] [--material NAME]\n"
-    "                           [--tool-material hss|carbide] [--lang en|th] [--config DIR]\n"
-    "  the part file's format: docs/parts.md; cutting speeds: resources/parts/cutting_speeds.cfg\n";
+    "usage: klueng-cli generate PART.json|PART.dxf -o OUT.nc [--dialect fanuc|haas|classic] [--material NAME]\n"
+    "                           [--tool-material hss|carbide] [--layer NAME] [--stock DxL[xBORE]]\n"
+    "                           [--lang en|th] [--config DIR]\n"
+    "  the part file's format and DXF drawings: docs/parts.md; cutting speeds: resources/parts/cutting_speeds.cfg\n";
+
+bool isDxf(const std::string& path) {
+  std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : std::string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == ".dxf";
+}
+
+// "50x100" or "50x100x16" (mm): the bar, and a tube's hole.
+bool parseStock(const std::string& v, double& d, double& l, double& bore) {
+  char x1 = 0, x2 = 0, tail = 0;
+  bore = 0.0;
+  const int n = std::sscanf(v.c_str(), "%lf%c%lf%c%lf%c", &d, &x1, &l, &x2, &bore, &tail);
+  const bool sizes = d > 0.0 && l > 0.0 && d <= 10000.0 && l <= 10000.0 && (x1 == 'x' || x1 == 'X');
+  if (n == 3) return sizes;
+  return n == 5 && sizes && (x2 == 'x' || x2 == 'X') && bore > 0.0 && bore < d;
+}
 
 std::string slurp(const std::string& path, bool& ok) {
   std::string out;
@@ -45,6 +65,8 @@ int runGenerate(const std::vector<std::string>& args) {
   }
   std::string file, out, configDir;
   std::optional<std::string> material, toolMaterial;
+  std::optional<std::array<double, 3>> stock;
+  design::DxfImportOptions dxfOptions;
   design::GenerateOptions options;
   options.lang = langFromLocale();
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -63,6 +85,8 @@ int runGenerate(const std::vector<std::string>& args) {
     else if (a == "--material") material = v;
     else if (a == "--tool-material" && (v == "hss" || v == "carbide")) toolMaterial = v;
     else if (a == "--dialect" && parseDialect(v)) options.dialect = *parseDialect(v);
+    else if (a == "--layer") dxfOptions.layer = v;
+    else if (std::array<double, 3> s{}; a == "--stock" && parseStock(v, s[0], s[1], s[2])) stock = s;
     else if (a == "--lang" && parseLang(v)) options.lang = *parseLang(v);
     else {
       std::fprintf(stderr, "klueng-cli generate: bad option %s %s\n", a.c_str(), v.c_str());
@@ -84,11 +108,17 @@ int runGenerate(const std::vector<std::string>& args) {
     std::fprintf(stderr, "klueng-cli generate: cannot read %s\n", file.c_str());
     return 2;
   }
-  auto design = design::readPartDesign(text, file);
+  dxfOptions.chuckGrip = options.machine.chuckGrip;
+  auto design = isDxf(file) ? design::importDxf(text, file, dxfOptions) : design::readPartDesign(text, file);
   for (const Diagnostic& d : design.diagnostics) printDiagnostic(stderr, file, d, options.lang);
   if (!design.ok()) return 2;
   if (material) design.value->material = *material;
   if (toolMaterial) design.value->toolMaterial = *toolMaterial;
+  if (stock) {
+    design.value->stockDiameter = (*stock)[0];
+    design.value->stockLength = (*stock)[1];
+    design.value->stockBore = (*stock)[2];
+  }
   std::vector<Diagnostic> why;
   const auto program = design::generateProgram(*design.value, options, &why);
   for (const Diagnostic& d : why) printDiagnostic(stderr, file, d, options.lang);

@@ -1,6 +1,8 @@
 // klueng-cli print (issue 10, item 6): the program sheet and the dimensioned
 // drawing of one program as a PDF, read back with pdftotext and pdfinfo.
 #include <gtest/gtest.h>
+
+#include <array>
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -132,6 +134,53 @@ TEST(CliGenerate, StepShaftInEveryDialectAndAnUndercut) {
                                   &status);
   EXPECT_EQ(status, 1);
   EXPECT_NE(err.find("error E501: Step 2 (Ø20.) is thinner"), std::string::npos) << err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+// A DXF half section written as a CAD program writes the simplest one: LINE
+// entities (group codes 0/8/10/20/11/21) in an ENTITIES section.
+std::string dxfOfLines(const std::vector<std::array<double, 4>>& lines) {
+  std::string t = "0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n";
+  for (const auto& l : lines)
+    t += "0\nLINE\n8\nPART\n10\n" + std::to_string(l[0]) + "\n20\n" + std::to_string(l[1]) + "\n30\n0.0\n11\n" +
+         std::to_string(l[2]) + "\n21\n" + std::to_string(l[3]) + "\n31\n0.0\n";
+  return t + "0\nENDSEC\n0\nEOF\n";
+}
+
+TEST(CliGenerate, ADxfDrawingBecomesAProgramAndAnOpenOneWritesNothing) {
+  // A Ø40 pin with C2 on a Ø30 spigot 25 long, 55 long in all, drawn with its face at X0.
+  const std::vector<std::array<double, 4>> pin{{0, 0, 0, 13},    {0, 13, -2, 15},   {-2, 15, -25, 15},
+                                               {-25, 15, -25, 20}, {-25, 20, -55, 20}, {-55, 20, -55, 0}};
+  const fs::path dxf = scratch("pin.dxf");
+  std::ofstream(dxf) << dxfOfLines(pin);
+  const fs::path out = scratch("pin.nc");
+  fs::remove(out);
+  int status = -1;
+  const std::string cli = "env LC_ALL= LANG=C '" + std::string(KLUENG_CLI_PATH) + "' ";
+  std::string err = capture(cli + "generate '" + dxf.string() + "' --dialect haas --stock 45x90 -o '" + out.string() +
+                                "' --config '" + KLUENG_SOURCE_DIR + "' 2>&1",
+                            &status);
+  ASSERT_EQ(status, 0) << err;
+  std::ifstream in(out);
+  const std::string program((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(program.find("\n145\n190\n"), std::string::npos) << program;  // the bar from --stock
+  EXPECT_NE(program.find("G01 X30. Z-2."), std::string::npos) << program;   // the C2 chamfer
+  EXPECT_NE(program.find("G01 X40. Z-55."), std::string::npos);
+  std::string check = capture(cli + "check '" + out.string() + "' --dialect haas 2>&1", &status);
+  EXPECT_EQ(status, 0) << check;
+  // Without the spigot's line the outline is open: exit 2, the place named, nothing written.
+  std::vector<std::array<double, 4>> open = pin;
+  open.erase(open.begin() + 2);
+  std::ofstream(dxf) << dxfOfLines(open);
+  fs::remove(out);
+  err = capture(cli + "generate '" + dxf.string() + "' -o '" + out.string() + "' --config '" + KLUENG_SOURCE_DIR +
+                    "' 2>&1",
+                &status);
+  EXPECT_EQ(status, 2);
+  EXPECT_NE(err.find("error F189: " + dxf.string() + ": the outline is open at X-2.000 Y15.000: the nearest other "
+                     "end is 23.000 mm away"),
+            std::string::npos)
+      << err;
   EXPECT_FALSE(fs::exists(out));
 }
 

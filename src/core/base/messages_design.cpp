@@ -55,6 +55,38 @@ constexpr MessageText kMessages[] = {
     {codes::kPartFieldBad, "{0}: \"{1}\" must be {2}", "{0}: ค่า \"{1}\" ต้องเป็น{2}"},
     {codes::kSpeedsLineBad, "{0}: \"{1}\" is not \"material | HSS m/min | carbide m/min\"",
      "{0}: \"{1}\" ไม่อยู่ในรูป \"วัสดุ | มีด HSS ม./นาที | มีดคาร์ไบด์ ม./นาที\""},
+    {codes::kDxfEmpty, "{0} is empty: there is no drawing in it", "{0} ว่างเปล่า: ไม่มีแบบอยู่ในไฟล์"},
+    {codes::kDxfNotDxf, "{0} is not an ASCII DXF drawing: {1}", "{0} ไม่ใช่แบบ DXF แบบข้อความ (ASCII): {1}"},
+    {codes::kDxfNothingOnLayer, "{0}: there are no lines or arcs on layer \"{1}\" (layers with lines: {2})",
+     "{0}: ไม่มีเส้นหรือส่วนโค้งบนเลเยอร์ \"{1}\" (เลเยอร์ที่มีเส้น: {2})"},
+    {codes::kDxfPickLayer, "{0}: the drawing has lines on several layers ({1}): choose the layer of the part's outline",
+     "{0}: แบบมีเส้นอยู่หลายเลเยอร์ ({1}): เลือกเลเยอร์ที่เป็นรูปร่างของชิ้นงาน"},
+    {codes::kDxfUnsupportedEntity,
+     "{0}: a {1} on layer \"{2}\" near X{3} Y{4}: a turned profile is read from lines, arcs and polylines only; "
+     "convert it to lines and arcs",
+     "{0}: มี {1} บนเลเยอร์ \"{2}\" ใกล้ X{3} Y{4}: รูปร่างงานกลึงอ่านได้จากเส้นตรง ส่วนโค้ง และโพลีไลน์เท่านั้น "
+     "ให้แปลงเป็นเส้นตรงและส่วนโค้งก่อน"},
+    {codes::kDxfOpenContour, "{0}: the outline is open at X{1} Y{2}: the nearest other end is {3} mm away",
+     "{0}: รูปร่างไม่ปิดที่ X{1} Y{2}: ปลายเส้นอื่นที่ใกล้ที่สุดห่างออกไป {3} มม."},
+    {codes::kDxfArcApart,
+     "{0}: the arc R{1} ending at X{2} Y{3} does not meet its neighbours: the nearest line ends {4} mm away",
+     "{0}: ส่วนโค้ง R{1} ที่สิ้นสุดที่ X{2} Y{3} ไม่ต่อกับเส้นข้างเคียง: ปลายเส้นที่ใกล้ที่สุดห่างออกไป {4} มม."},
+    {codes::kDxfUnits, "{0}: the drawing's units ($INSUNITS {1}) are not a length Klueng can turn",
+     "{0}: หน่วยของแบบ ($INSUNITS {1}) ไม่ใช่หน่วยความยาวที่ Klueng ใช้กลึงได้"},
+    {codes::kDxfSize,
+     "{0}: in {3} the part would be Ø{1} mm and {2} mm long: the drawing's units look wrong (set $INSUNITS or scale "
+     "it)",
+     "{0}: ในหน่วย {3} ชิ้นงานจะมีขนาด Ø{1} มม. ยาว {2} มม.: หน่วยของแบบน่าจะผิด (ตั้งค่า $INSUNITS หรือย่อขยายแบบ)"},
+    {codes::kDxfBranch, "{0}: {3} lines meet at X{1} Y{2}: the part must be drawn as one outline",
+     "{0}: มีเส้น {3} เส้นมาบรรจบกันที่ X{1} Y{2}: ต้องเขียนชิ้นงานเป็นรูปร่างเดียว"},
+    {codes::kDxfTurnsBack,
+     "{0}: the outline runs back toward the right-hand face at X{1} Y{2}: a turned profile runs one way along the axis",
+     "{0}: รูปร่างย้อนกลับไปทางหน้าด้านขวาที่ X{1} Y{2}: รูปร่างงานกลึงต้องไปทางเดียวตามแนวแกน"},
+    {codes::kDxfSeveralOutlines,
+     "{0}: layer \"{2}\" holds {1} separate outlines: put only the part's half section on it",
+     "{0}: เลเยอร์ \"{2}\" มีรูปร่างแยกกัน {1} รูป: ให้มีเฉพาะรูปตัดครึ่งของชิ้นงานบนเลเยอร์นี้"},
+    {codes::kDxfInches, "{0}: the drawing is in {2}: sizes multiplied by {1} to millimetres",
+     "{0}: แบบใช้หน่วย {2}: คูณขนาดด้วย {1} เป็นมิลลิเมตร"},
 };
 }  // namespace
 

@@ -1,0 +1,175 @@
+// Reading a DXF drawing's lines, arcs and polylines with dxflib.
+#include "dxf_drawing.h"
+
+#include <dxflib/dl_creationadapter.h>
+#include <dxflib/dl_dxf.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+namespace klueng::core::design::detail {
+
+namespace {
+
+std::string upper(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+bool looksLikeCentreLine(const std::string& name) {
+  const std::string u = upper(name);
+  return u.find("CENTER") != std::string::npos || u.find("CENTRE") != std::string::npos ||
+         u.find("AXIS") != std::string::npos;
+}
+
+class Collector : public DL_CreationAdapter {
+ public:
+  DxfDrawing drawing;
+
+  void addLayer(const DL_LayerData& data) override { layerLinetype_[data.name] = attributes.getLinetype(); }
+  void addBlock(const DL_BlockData&) override { inBlock_ = true; }
+  void endBlock() override { inBlock_ = false; }
+  void setVariableInt(const std::string& key, int value, int) override {
+    if (key == "$INSUNITS") drawing.insunits = value;
+  }
+
+  void addLine(const DL_LineData& d) override {
+    flushPolyline();
+    if (inBlock_) return;
+    add(mirror(Vec2(d.x1, d.y1)), mirror(Vec2(d.x2, d.y2)));
+  }
+  void addArc(const DL_ArcData& d) override {
+    flushPolyline();
+    if (inBlock_) return;
+    const double a1 = d.angle1 * M_PI / 180.0, a2 = d.angle2 * M_PI / 180.0;
+    const Vec2 c(d.cx, d.cy);
+    DxfSegment s = segment(mirror(c + d.radius * Vec2(std::cos(a1), std::sin(a1))),
+                           mirror(c + d.radius * Vec2(std::cos(a2), std::sin(a2))));
+    s.arc = true;
+    s.centre = mirror(c);
+    s.radius = d.radius;
+    s.ccw = !mirrored();  // an arc seen from below (extrusion -Z) turns the other way
+    drawing.segments.push_back(s);
+  }
+  void addPolyline(const DL_PolylineData& d) override {
+    flushPolyline();
+    polylineOpen_ = !inBlock_;
+    polylineClosed_ = (d.flags & 1) != 0;
+    vertices_.clear();
+  }
+  void addVertex(const DL_VertexData& d) override {
+    if (polylineOpen_) vertices_.push_back({mirror(Vec2(d.x, d.y)), mirrored() ? -d.bulge : d.bulge});
+  }
+  void endSequence() override { flushPolyline(); }
+  void endEntity() override {
+    // LWPOLYLINE has no SEQEND: its vertices end with the entity.
+  }
+  void addSpline(const DL_SplineData&) override { odd("spline"); }
+  void addControlPoint(const DL_ControlPointData& d) override { oddAt(Vec2(d.x, d.y)); }
+  void addFitPoint(const DL_FitPointData& d) override { oddAt(Vec2(d.x, d.y)); }
+  void addEllipse(const DL_EllipseData& d) override { odd("ellipse", Vec2(d.cx, d.cy)); }
+  void addCircle(const DL_CircleData& d) override { odd("circle", Vec2(d.cx, d.cy)); }
+  void addInsert(const DL_InsertData& d) override { odd("block insert", Vec2(d.ipx, d.ipy)); }
+
+  void finish() { flushPolyline(); }
+
+ private:
+  struct Vertex {
+    Vec2 p;
+    double bulge;
+  };
+  std::map<std::string, std::string> layerLinetype_;
+  bool inBlock_ = false;
+  bool polylineOpen_ = false, polylineClosed_ = false;
+  std::vector<Vertex> vertices_;
+  bool oddPending_ = false;
+
+  bool mirrored() { return getExtrusion() && getExtrusion()->getDirection()[2] < 0.0; }
+  Vec2 mirror(const Vec2& p) { return mirrored() ? Vec2(-p.x(), p.y()) : p; }
+
+  DxfSegment segment(const Vec2& a, const Vec2& b) {
+    DxfSegment s;
+    s.a = a;
+    s.b = b;
+    s.layer = attributes.getLayer();
+    std::string linetype = attributes.getLinetype();
+    if (upper(linetype) == "BYLAYER" || linetype.empty()) linetype = layerLinetype_[s.layer];
+    s.centreLine = looksLikeCentreLine(linetype) || looksLikeCentreLine(s.layer);
+    return s;
+  }
+  void add(const Vec2& a, const Vec2& b) {
+    if ((a - b).norm() > 1e-9) drawing.segments.push_back(segment(a, b));
+  }
+  // A polyline's segments; a bulge b is tan(quarter of the arc's angle), positive counter-clockwise.
+  void flushPolyline() {
+    if (!polylineOpen_) return;
+    polylineOpen_ = false;
+    const std::size_t n = vertices_.size();
+    for (std::size_t k = 0; n > 1 && k < (polylineClosed_ ? n : n - 1); ++k) {
+      const Vertex& v = vertices_[k];
+      const Vec2 a = v.p, b = vertices_[(k + 1) % n].p;
+      const double chord = (b - a).norm();
+      if (chord < 1e-9) continue;
+      if (std::abs(v.bulge) < 1e-9) {
+        add(a, b);
+        continue;
+      }
+      DxfSegment s = segment(a, b);
+      s.arc = true;
+      s.ccw = v.bulge > 0.0;
+      s.radius = std::abs(chord * (1.0 + v.bulge * v.bulge) / (4.0 * v.bulge));
+      const Vec2 dir = (b - a) / chord, left(-dir.y(), dir.x());
+      s.centre = (a + b) / 2.0 + left * (chord / 2.0) * (1.0 - v.bulge * v.bulge) / (2.0 * v.bulge);
+      drawing.segments.push_back(s);
+    }
+    vertices_.clear();
+  }
+  void odd(const char* kind, const Vec2& at = Vec2(0.0, 0.0)) {
+    flushPolyline();
+    if (inBlock_) return;
+    drawing.odd.push_back({kind, attributes.getLayer(), at});
+    oddPending_ = at == Vec2(0.0, 0.0);
+  }
+  void oddAt(const Vec2& p) {
+    if (oddPending_ && !drawing.odd.empty()) drawing.odd.back().at = p;
+    oddPending_ = false;
+  }
+};
+
+}  // namespace
+
+DxfDrawing readDxfDrawing(const std::string& text) {
+  Collector c;
+  if (text.find('\0') != std::string::npos || text.rfind("AutoCAD Binary DXF", 0) == 0) {
+    c.drawing.why = "it is a binary file (save the drawing as ASCII DXF)";
+    return c.drawing;
+  }
+  // Every DXF has group code 0 SECTION lines; dxflib reads anything without complaint.
+  std::istringstream probe(text);
+  bool section = false;
+  for (std::string line; std::getline(probe, line);) {
+    line.erase(std::remove_if(line.begin(), line.end(), [](unsigned char ch) { return std::isspace(ch); }), line.end());
+    if (line == "SECTION") {
+      section = true;
+      break;
+    }
+  }
+  if (!section) {
+    c.drawing.why = "it has no SECTION (a DXF file has HEADER and ENTITIES sections)";
+    return c.drawing;
+  }
+  std::istringstream in(text);
+  DL_Dxf dxf;
+  if (!dxf.in(in, &c)) {
+    c.drawing.why = "dxflib could not read it";
+    return c.drawing;
+  }
+  c.finish();
+  c.drawing.parsed = true;
+  return c.drawing;
+}
+
+}  // namespace klueng::core::design::detail
