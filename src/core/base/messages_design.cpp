@@ -85,6 +85,8 @@ constexpr MessageText kMessages[] = {
     {codes::kDxfSeveralOutlines,
      "{0}: layer \"{2}\" holds {1} separate outlines: put only the part's half section on it",
      "{0}: เลเยอร์ \"{2}\" มีรูปร่างแยกกัน {1} รูป: ให้มีเฉพาะรูปตัดครึ่งของชิ้นงานบนเลเยอร์นี้"},
+    {codes::kNotAsDrawn, "The drawing's {0} (Z{1} to Z{2}) is not on the cut part within 0.01 mm: there it is {3}",
+     "{0} ตามแบบ (Z{1} ถึง Z{2}) ไม่มีบนชิ้นงานที่กลึงได้ภายใน 0.01 มม.: ตรงนั้นเป็น {3}"},
     {codes::kDxfInches, "{0}: the drawing is in {2}: sizes multiplied by {1} to millimetres",
      "{0}: แบบใช้หน่วย {2}: คูณขนาดด้วย {1} เป็นมิลลิเมตร"},
 };

@@ -16,6 +16,7 @@ namespace klueng::core::design::detail {
 namespace {
 
 constexpr double kEps = 1e-9;
+constexpr double kFaceLead = 1.0;  // mm a side the finishing pass starts below the first corner, on the face
 
 struct SideCodes {
   const char* undercut;
@@ -55,6 +56,7 @@ Contour build(const std::vector<OutsideStep>& steps, double side, double before,
               const SideCodes& codes, std::vector<Diagnostic>& why) {
   Contour c;
   c.side = side;
+  const double faceFrom = before;  // the face's far edge (the axis, or the bar's outside for a bore)
   double z = 0.0;  // `before`: the mirrored Ø at the current step's right (outside: 0, the axis at the face)
   for (std::size_t k = 0; k < steps.size(); ++k) {
     const OutsideStep& s = steps[k];
@@ -84,6 +86,13 @@ Contour build(const std::vector<OutsideStep>& steps, double side, double before,
     z -= s.length;
     c.moves.push_back({d, z});
     before = d;
+  }
+  // The finishing pass comes up the face to the first corner rather than along
+  // Z onto it: turning away from the nose there, it goes round the corner and
+  // leaves it sharp (turning toward the nose it would leave a sliver under it).
+  if (!steps.empty() && (steps[0].kind == StepKind::Cylinder || !slopedFromAxis) && c.x0 - faceFrom >= 2.0 * kFaceLead) {
+    c.moves.insert(c.moves.begin(), ContourMove{c.x0, 0.0});
+    c.x0 -= 2.0 * kFaceLead;
   }
   // Back from the mirrored frame.
   c.x0 *= side;

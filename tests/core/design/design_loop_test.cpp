@@ -1,0 +1,80 @@
+// Closing the loop (issue 14, item 4): the shipped designs generated, run, cut
+// and held against the drawing in every dialect; a drawing that differs from
+// the cut part by more than 0.01 mm is named feature by feature.
+#include <gtest/gtest.h>
+
+#include "design_test_util.h"
+#include "klueng/core/design/design_loop.h"
+
+namespace klueng::core::design {
+namespace {
+
+PartDesign shipped(const char* name) {
+  const auto d = readPartDesign(slurp(std::string(KLUENG_SOURCE_DIR "/resources/parts/") + name), name);
+  EXPECT_TRUE(d.ok()) << name;
+  return d.value.value_or(PartDesign{});
+}
+
+class LoopInEveryDialect : public ::testing::TestWithParam<gcode::Dialect> {};
+
+TEST_P(LoopInEveryDialect, TheShippedPartsMatchTheirDrawings) {
+  const machine::MachineSetup setup = machine::loadMachineSetup(KLUENG_SOURCE_DIR).setup;
+  GenerateOptions options;
+  options.dialect = GetParam();
+  options.machine = setup.machine;
+  for (const char* name : {"step-shaft.json", "threaded-bush.json"}) {
+    const DesignLoop loop = runDesignLoop(shipped(name), options, setup);
+    ASSERT_TRUE(loop.program) << name;
+    EXPECT_TRUE(loop.problems.empty()) << name << " " << (loop.problems.empty() ? "" : loop.problems[0].code);
+    for (const Diagnostic& d : loop.findings) ADD_FAILURE() << name << ": " << formatMessage(d, Lang::En);
+    EXPECT_TRUE(loop.matches()) << name;
+    ASSERT_TRUE(loop.cut);
+    EXPECT_FALSE(loop.features.outside.empty());
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Design, LoopInEveryDialect,
+                         ::testing::Values(gcode::Dialect::Fanuc, gcode::Dialect::Haas, gcode::Dialect::Classic));
+
+TEST(DesignLoop, ADrawingThatDiffersIsNamedFeatureByFeature) {
+  const machine::MachineSetup setup = machine::loadMachineSetup(KLUENG_SOURCE_DIR).setup;
+  GenerateOptions options;
+  options.machine = setup.machine;
+  const DesignLoop loop = runDesignLoop(shipped("step-shaft.json"), options, setup);
+  ASSERT_TRUE(loop.matches());
+  // The drawing changed after the part was cut: C2 instead of C3, Ø40.02 instead of Ø40, R2.5 instead of R2.
+  PartDesign drawing = shipped("step-shaft.json");
+  drawing.outside[0].edgeSize = 2.0;
+  drawing.outside[1].diameter = 40.02;
+  drawing.outside[1].edgeSize = 2.5;
+  const std::vector<Diagnostic> findings = compareToDrawing(drawing, loop.features);
+  std::vector<std::string> texts;
+  for (const Diagnostic& d : findings) texts.push_back(formatMessage(d, Lang::En));
+  ASSERT_EQ(texts.size(), 3u);
+  EXPECT_EQ(texts[0], "The drawing's C2 (Z0 to Z-2) is not on the cut part within 0.01 mm: there it is C3");
+  EXPECT_EQ(texts[1], "The drawing's Ø40.02 (Z-22.5 to Z-40) is not on the cut part within 0.01 mm: there it is Ø40");
+  EXPECT_EQ(texts[2], "The drawing's R2.5 (Z-20 to Z-22.5) is not on the cut part within 0.01 mm: there it is R2");
+  EXPECT_EQ(formatMessage(findings[0], Lang::Th),
+            "C2 ตามแบบ (Z0 ถึง Z-2) ไม่มีบนชิ้นงานที่กลึงได้ภายใน 0.01 มม.: ตรงนั้นเป็น C3");
+  // Ø40.005 is within 0.01 mm of the cut Ø40: no finding.
+  drawing = shipped("step-shaft.json");
+  drawing.outside[1].diameter = 40.005;
+  EXPECT_TRUE(compareToDrawing(drawing, loop.features).empty());
+}
+
+TEST(DesignLoop, APartThatCannotBeTurnedIsRefusedBeforeAnythingRuns) {
+  const machine::MachineSetup setup = machine::loadMachineSetup(KLUENG_SOURCE_DIR).setup;
+  PartDesign part = shipped("step-shaft.json");
+  part.outside[1].diameter = 26.0;
+  GenerateOptions options;
+  options.machine = setup.machine;
+  const DesignLoop loop = runDesignLoop(part, options, setup);
+  EXPECT_FALSE(loop.program);
+  ASSERT_FALSE(loop.refused.empty());
+  EXPECT_EQ(loop.refused[0].code, "E501");
+  EXPECT_FALSE(loop.cut);
+  EXPECT_FALSE(loop.matches());
+}
+
+}  // namespace
+}  // namespace klueng::core::design
