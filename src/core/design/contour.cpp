@@ -183,3 +183,52 @@ void contourBlocks(Writer& w, const Contour& contour, double exitX, const Words&
 }
 
 }  // namespace klueng::core::design::detail
+
+namespace klueng::core::design {
+
+namespace {
+
+// A contour's polyline, arcs in chords of at most 5°.
+std::vector<Vec2> polylineOf(const detail::Contour& c) {
+  std::vector<Vec2> out{Vec2(0.0, c.x0 / 2.0)};
+  for (const detail::ContourMove& m : c.moves) {
+    const Vec2 to(m.z, m.x / 2.0);
+    if (m.arc) {
+      const Vec2 centre(m.centreZ, m.centreR), from = out.back();
+      double a0 = std::atan2(from.y() - centre.y(), from.x() - centre.x());
+      double a1 = std::atan2(to.y() - centre.y(), to.x() - centre.x());
+      if (m.clockwise && a1 > a0) a1 -= 2.0 * M_PI;
+      if (!m.clockwise && a1 < a0) a1 += 2.0 * M_PI;
+      const int n = std::max(2, static_cast<int>(std::ceil(std::abs(a1 - a0) / (5.0 * M_PI / 180.0))));
+      for (int k = 1; k < n; ++k) {
+        const double a = a0 + (a1 - a0) * k / n;
+        out.push_back(centre + m.radius * Vec2(std::cos(a), std::sin(a)));
+      }
+    }
+    out.push_back(to);
+  }
+  return out;
+}
+
+}  // namespace
+
+PartOutline partOutline(const PartDesign& part) {
+  std::vector<Diagnostic> ignored;
+  PartOutline o;
+  o.outside = polylineOf(detail::outsideContour(part, ignored));
+  if (!part.inside.empty()) o.bore = polylineOf(detail::boreContour(part, ignored));
+  // Grooves: notches cut into the outside where they lie on a level stretch.
+  for (const Groove& g : part.grooves) {
+    const double zr = g.z, zl = g.z - g.width, r = g.diameter / 2.0;
+    for (std::size_t k = 1; k < o.outside.size(); ++k) {
+      const Vec2 a = o.outside[k - 1], b = o.outside[k];
+      if (std::abs(a.y() - b.y()) > 1e-9 || a.x() < zr - 1e-9 || b.x() > zl + 1e-9) continue;
+      o.outside.insert(o.outside.begin() + static_cast<long>(k),
+                       {Vec2(zr, a.y()), Vec2(zr, r), Vec2(zl, r), Vec2(zl, a.y())});
+      break;
+    }
+  }
+  return o;
+}
+
+}  // namespace klueng::core::design

@@ -3,6 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -221,6 +222,54 @@ io::ReadResult<std::vector<CuttingSpeed>> readCuttingSpeeds(const std::string& p
   }
   result.value = std::move(rows);
   return result;
+}
+
+std::string writePartDesign(const PartDesign& part) {
+  nlohmann::ordered_json j;
+  j["name"] = part.name;
+  j["material"] = part.material;
+  j["tool_material"] = part.toolMaterial;
+  j["stock"]["diameter"] = part.stockDiameter;
+  j["stock"]["length"] = part.stockLength;
+  if (part.stockBore > 0.0) j["stock"]["bore"] = part.stockBore;
+  const auto steps = [](const std::vector<OutsideStep>& from, const char* word) {
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const OutsideStep& s : from) {
+      nlohmann::ordered_json o;
+      if (s.kind == StepKind::Cylinder) o[word] = s.diameter;
+      if (s.kind == StepKind::Taper) o["taper"] = s.diameter;
+      if (s.kind == StepKind::Arc) o["arc"] = s.diameter;
+      o["length"] = s.length;
+      if (s.kind == StepKind::Arc) o["radius"] = s.radius;
+      if (s.kind == StepKind::Arc && s.concave) o["concave"] = true;
+      if (s.edge == EdgeBreak::Chamfer) o["chamfer"] = s.edgeSize;
+      if (s.edge == EdgeBreak::Round) o["round"] = s.edgeSize;
+      list.push_back(o);
+    }
+    return list;
+  };
+  j["outside"] = steps(part.outside, "cylinder");
+  if (!part.inside.empty()) j["inside"] = steps(part.inside, "bore");
+  for (const Groove& g : part.grooves) j["grooves"].push_back({{"z", g.z}, {"width", g.width}, {"diameter", g.diameter}});
+  for (const Thread& t : part.threads) j["threads"].push_back({{"z", t.z}, {"length", t.length}, {"pitch", t.pitch}});
+  return j.dump(2) + "\n";
+}
+
+std::string cuttingSpeedRow(const std::string& material, const std::vector<CuttingSpeed>& table) {
+  std::string lower = material;
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const CuttingSpeed& row : table)
+    if (!row.material.empty() && lower.find(row.material) != std::string::npos) return row.material;
+  // The words lathe teachers write in Thai (GLOSSARY), and common English ones.
+  static const std::pair<const char*, const char*> kAliases[] = {
+      {"เหล็กหล่อ", "cast-iron"}, {"cast iron", "cast-iron"}, {"อะลูมิเนียม", "aluminium"}, {"อลูมิเนียม", "aluminium"},
+      {"aluminum", "aluminium"},  {"ทองเหลือง", "brass"},       {"เหล็ก", "steel"},          {"s45c", "steel"},
+      {"mild steel", "steel"}};
+  for (const auto& [word, row] : kAliases)
+    if (lower.find(word) != std::string::npos)
+      for (const CuttingSpeed& r : table)
+        if (r.material == row) return row;
+  return {};
 }
 
 double spindleRpm(double cuttingSpeed, double diameter) {

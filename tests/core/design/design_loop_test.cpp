@@ -78,3 +78,68 @@ TEST(DesignLoop, APartThatCannotBeTurnedIsRefusedBeforeAnythingRuns) {
 
 }  // namespace
 }  // namespace klueng::core::design
+
+namespace klueng::core::design {
+namespace {
+
+TEST(PartDesignFile, WritesWhatItReads) {
+  for (const char* name : {"step-shaft.json", "threaded-bush.json"}) {
+    const PartDesign a = shipped(name);
+    const auto b = readPartDesign(writePartDesign(a), "again.json");
+    ASSERT_TRUE(b.ok()) << name;
+    EXPECT_EQ(writePartDesign(*b.value), writePartDesign(a));
+    EXPECT_EQ(b.value->outside.size(), a.outside.size());
+    EXPECT_EQ(b.value->inside.size(), a.inside.size());
+    EXPECT_DOUBLE_EQ(b.value->stockBore, a.stockBore);
+  }
+  PartDesign arc = shipped("step-shaft.json");
+  arc.outside[1] = {StepKind::Arc, 40.0, 20.0};
+  arc.outside[1].radius = 30.0;
+  arc.outside[1].concave = true;
+  const auto back = readPartDesign(writePartDesign(arc), "arc.json");
+  ASSERT_TRUE(back.ok());
+  EXPECT_EQ(back.value->outside[1].kind, StepKind::Arc);
+  EXPECT_TRUE(back.value->outside[1].concave);
+  EXPECT_DOUBLE_EQ(back.value->outside[1].radius, 30.0);
+}
+
+TEST(PartDesignFile, AJobsMaterialNamesItsCuttingSpeedRow) {
+  const auto table = readCuttingSpeeds();
+  ASSERT_TRUE(table.ok());
+  EXPECT_EQ(cuttingSpeedRow("Aluminium 6061-T6", *table.value), "aluminium");
+  EXPECT_EQ(cuttingSpeedRow("อะลูมิเนียม", *table.value), "aluminium");
+  EXPECT_EQ(cuttingSpeedRow("เหล็กหล่อ FC25", *table.value), "cast-iron");
+  EXPECT_EQ(cuttingSpeedRow("เหล็ก S45C", *table.value), "steel");
+  EXPECT_EQ(cuttingSpeedRow("Brass", *table.value), "brass");
+  EXPECT_EQ(cuttingSpeedRow("Nylon", *table.value), "");
+}
+
+TEST(PartDesignFile, TheOutlineFollowsTheDrawing) {
+  PartDesign part = shipped("step-shaft.json");
+  part.grooves = {{-26.0, 5.0, 34.0}};
+  const PartOutline o = partOutline(part);
+  ASSERT_GE(o.outside.size(), 10u);
+  EXPECT_TRUE(o.bore.empty());
+  const auto has = [&](double z, double r) {
+    return std::any_of(o.outside.begin(), o.outside.end(),
+                       [&](const Vec2& p) { return std::abs(p.x() - z) < 1e-9 && std::abs(p.y() - r) < 1e-9; });
+  };
+  EXPECT_TRUE(has(0.0, 12.0));    // C3 from Ø24 at the face
+  EXPECT_TRUE(has(-3.0, 15.0));   // to Ø30
+  EXPECT_TRUE(has(-22.0, 20.0));  // the R2 round's end on Ø40
+  EXPECT_TRUE(has(-26.0, 17.0));  // the groove's bottom, Ø34, 5 wide
+  EXPECT_TRUE(has(-31.0, 17.0));
+  EXPECT_TRUE(has(-60.0, 23.0));  // the left end of Ø46
+  // The round in chords: every point of it R2 from its centre (Z-22, radius 18).
+  int onRound = 0;
+  for (const Vec2& p : o.outside)
+    if (p.x() < -20.0 + 1e-9 && p.x() > -22.0 - 1e-9 && p.y() > 18.0 + 1e-9 && p.y() < 20.0 - 1e-9) {
+      ++onRound;
+      EXPECT_NEAR((p - Vec2(-22.0, 18.0)).norm(), 2.0, 1e-9);
+    }
+  EXPECT_GE(onRound, 10);
+  EXPECT_EQ(partOutline(shipped("threaded-bush.json")).bore.back(), Vec2(-50.0, 9.0));
+}
+
+}  // namespace
+}  // namespace klueng::core::design

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "klueng/core/gcode/code_table.h"
+#include "klueng/core/geometry.h"
 #include "klueng/core/io/result.h"
 #include "klueng/core/io/tool_config.h"
 #include "klueng/core/messages.h"
@@ -69,8 +70,20 @@ struct PartDesign {
   double length() const;                 // of the turned part (the steps)
 };
 
-// JSON (docs/parts.md); F170-F179 diagnostics with the JSON's line and column.
+// JSON (docs/parts.md); F180-F182 diagnostics with the JSON's line and column.
 io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::string& fileName);
+// The same JSON back (readPartDesign(writePartDesign(p)) == p).
+std::string writePartDesign(const PartDesign& part);
+
+// The drawing's outline as polylines (z, radius) from the face (Z0) leftward:
+// the outside with its grooves, and the bore (empty when solid); arcs in
+// short chords. For previews; a part that cannot be turned is drawn as far as
+// its steps go.
+struct PartOutline {
+  std::vector<Vec2> outside;
+  std::vector<Vec2> bore;
+};
+PartOutline partOutline(const PartDesign& part);
 
 // Cutting speed Vc, m/min, by material and tool material (the thesis's table).
 struct CuttingSpeed {
@@ -82,6 +95,9 @@ struct CuttingSpeed {
 io::ReadResult<std::vector<CuttingSpeed>> readCuttingSpeeds(const std::string& path = {});
 // S = 1000 · Vc / (π · D), rpm.
 double spindleRpm(double cuttingSpeed, double diameter);
+// The table's row a job's material text names ("Aluminium 6061", "เหล็ก S45C"),
+// English or Thai; empty when none does.
+std::string cuttingSpeedRow(const std::string& material, const std::vector<CuttingSpeed>& table);
 
 struct GenerateOptions {
   gcode::Dialect dialect = gcode::Dialect::Fanuc;
