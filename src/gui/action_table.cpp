@@ -57,6 +57,8 @@ const ActionSpec kActions[] = {
      KLUENG_TR("Save the program sheet and the drawing sheet as a PDF file")},
     {"actionGradeClass", "job", kNoKey, nullptr, KLUENG_TR("&Grade a class..."),
      KLUENG_TR("Grade every program in a folder against a reference program"), EnabledWhen::NotRunning},
+    {"actionPartDesigner", "job", kNoKey, "Ctrl+Shift+D", KLUENG_TR("Part &Designer..."),
+     KLUENG_TR("Draw a turned part and get its program, checked by cutting it"), EnabledWhen::NotRunning},
     {"actionExit", "exit", kNoKey, "Ctrl+Q", KLUENG_TR("E&xit"), nullptr},
     // Edit
     {"actionUndo", "undo", QKeySequence::Undo, nullptr, KLUENG_TR("&Undo"), nullptr, EnabledWhen::Always, false, true},
@@ -140,7 +142,7 @@ struct MenuSpec {
 const MenuSpec kMenus[] = {
     {"menuFile", KLUENG_TR("&File"),
      "actionNew actionOpen menuRecent actionSave actionSaveAs | actionJobDetails | actionPrintCode actionPrintDrawing "
-     "actionPrintPreview actionExportPdf | actionGradeClass | actionExit"},
+     "actionPrintPreview actionExportPdf | actionPartDesigner actionGradeClass | actionExit"},
     {"menuRecent", KLUENG_TR("&Recent Files"), ""},
     {"menuEdit", KLUENG_TR("&Edit"),
      "actionUndo actionRedo actionUndoSetup actionRedoSetup | actionCut actionCopy actionPaste actionDelete actionSelectAll | actionFind actionReplace "

@@ -14,6 +14,7 @@
 #include "gui/code_editor.h"
 #include "gui/language.h"
 #include "gui/settings.h"
+#include "klueng/core/io/program_file.h"
 #include "klueng/core/messages.h"
 
 namespace klueng::gui {
@@ -106,6 +107,11 @@ bool DocumentManager::maybeSave() {
 
 void DocumentManager::newFile() {
   if (!maybeSave()) return;
+  newFileUnchecked(settings_->lastJobHeader());
+  emit cleared();
+}
+
+void DocumentManager::newFileUnchecked(const core::io::JobHeader& header) {
   emit aboutToReplace();
   discardRecovery();
   if (!document_->filePath().isEmpty()) watcher_->removePath(document_->filePath());
@@ -115,11 +121,19 @@ void DocumentManager::newFile() {
   loadInFlight_ = loadWatcher_.isRunning();
   editor_->setUndoRedoEnabled(true);
   editor_->setReadOnly(false);
-  document_->reset(settings_->lastJobHeader());
+  document_->reset(header);
   editor_->setFirstFileLine(document_->gcodeFirstLine());
   editor_->clearBreakpoints();
   editor_->setPlainText(QString());
   editor_->document()->setModified(false);
+}
+
+void DocumentManager::newFromProgram(const QString& fileText) {
+  const auto file = core::io::parseProgramFile(fileText.toStdString());
+  if (!file.value || !maybeSave()) return;
+  newFileUnchecked(file.value->header);
+  editor_->setPlainText(QString::fromStdString(file.value->gcode));
+  editor_->document()->setModified(true);  // new and unsaved: Save asks for a name
   emit cleared();
 }
 

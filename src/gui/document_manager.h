@@ -46,6 +46,9 @@ class DocumentManager : public QObject {
   // Save / Discard / Cancel when there are unsaved changes; true = go on.
   bool maybeSave();
   void newFile();
+  // A new, unsaved program holding `fileText` (a Klueng file: its header
+  // becomes the job details), e.g. the part designer's generated program.
+  void newFromProgram(const QString& fileText);
   void open();
   bool openFile(const QString& path);  // false when the user cancelled
   bool save();
@@ -79,6 +82,8 @@ class DocumentManager : public QObject {
   void busyChanged();
 
  private:
+  // New's work once the old program may go: an empty program with `header`.
+  void newFileUnchecked(const core::io::JobHeader& header);
   void startLoad(const QString& path, const QString& detailsFor = {});
   void onLoadFinished();
   void appendNextChunk();

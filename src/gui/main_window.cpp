@@ -512,9 +512,12 @@ QString MainWindow::bannerText() const { return banner_->text(); }
 
 void MainWindow::showJobDetails() {
   JobDetailsDialog dlg(document_->header(), this);
-  if (dlg.exec() != QDialog::Accepted) return;
+  if (dlg.exec() == QDialog::Accepted) setJobDetails(dlg.header());
+}
+
+void MainWindow::setJobDetails(const core::io::JobHeader& header) {
   const Document::HeaderState before = document_->headerState();
-  applyJobDetails(dlg.header());
+  applyJobDetails(header);
   setupUndo_->push(new JobDetailsCommand(before, document_->headerState(), [this](const Document::HeaderState& state) {
     document_->restoreHeader(state);
     if (!document_->isPlainGcode()) settings_->setLastJobHeader(state.header);

@@ -38,6 +38,7 @@ class CodeEditor;
 class DiagnosticsPanel;
 class DialectOfferBar;
 class FindDialog;
+class PartDesignerDialog;
 class HelpContents;
 class RunSpeedControl;
 class OutputView;
@@ -97,6 +98,8 @@ class MainWindow : public QMainWindow {
   bool save();
   bool saveAs();
   void showJobDetails();
+  void setJobDetails(const core::io::JobHeader& header);  // as the dialog's OK does: undoable
+  void showPartDesigner();
   // Reports (SPEC 12): the program sheet and the drawing sheet, in the UI's language.
   void printCode();        // File > Print Code: printer dialog
   void printCodeNow();     // tool bar Print: the default printer, no dialog
@@ -179,6 +182,7 @@ class MainWindow : public QMainWindow {
   QLabel* stockLabel_ = nullptr;
   QProgressBar* busyBar_ = nullptr;
   QPointer<FindDialog> findDialog_;
+  QPointer<PartDesignerDialog> designer_;
   QPointer<HelpContents> help_;
   CheckController* checker_ = nullptr;
   QUndoStack* setupUndo_ = nullptr;  // job details, tools, offsets of this document

@@ -85,6 +85,7 @@ void MainWindow::createActions() {
     connect(dialog, &ClassGradeDialog::openProgram, this, [this](const QString& path) { openFile(path); });
     dialog->show();
   });
+  on("actionPartDesigner", [this] { showPartDesigner(); });
   on("actionExit", [this] { close(); });
 
   // Edit: the editor's own commands; the editor enables them.

@@ -49,13 +49,20 @@ void Part3DWidget::setRunController(RunController* controller) {
   connect(controller_, &RunController::programReset, this, qOverload<>(&QWidget::update));
 }
 
+void Part3DWidget::setStock(std::shared_ptr<const core::cut::Stock> stock) {
+  shown_ = std::move(stock);
+  update();
+}
+
 void Part3DWidget::paintEvent(QPaintEvent*) {
   ++paints_;
   QPainter p(this);
   p.fillRect(rect(), render::palette().background);
   render::Scene3D scene;
   const core::cut::CutSimulator* sim = controller_ && !controller_->isBusy() ? controller_->cutSimulator() : nullptr;
-  if (sim) {
+  if (shown_) {
+    scene.stock = shown_.get();
+  } else if (sim) {
     scene.stock = &sim->stock();
     scene.chuck = &sim->chuck();
     if (const core::cut::ToolShape* tool = sim->currentTool()) toolPolygons(*tool, sim->toolPosition(), scene);

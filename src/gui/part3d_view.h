@@ -19,6 +19,8 @@ class Part3DWidget : public QWidget {
  public:
   explicit Part3DWidget(QWidget* parent = nullptr);
   void setRunController(RunController* controller);
+  // Shows this part instead of a run's (the part designer's cut part).
+  void setStock(std::shared_ptr<const core::cut::Stock> stock);
   render::Camera3D& camera() { return camera_; }
   int lastQuadCount() const { return quads_; }
   qint64 paintCount() const { return paints_; }
@@ -37,6 +39,7 @@ class Part3DWidget : public QWidget {
   QPoint last_;
   int quads_ = 0;
   qint64 paints_ = 0;
+  std::shared_ptr<const core::cut::Stock> shown_;
   std::unique_ptr<core::cut::Stock> blank_;  // before the first run: the bar from the job header
   double blankKey_ = -1.0;
 };

@@ -14,7 +14,12 @@
 #include <QTextBrowser>
 #include "gui/main_window.h"
 #include "gui/part3d_view.h"
+#include "gui/part_designer.h"
 #include "gui/part_panel.h"
+#include <QPushButton>
+#include <QTabWidget>
+#include <QTableView>
+#include "gui/design_model.h"
 #include <QTreeWidget>
 #include "gui/resources.h"
 #include "gui/run_controller.h"
@@ -73,6 +78,26 @@ int main(int argc, char** argv) {
     if (!QTest::qWaitFor([dialog] { return !dialog->isGrading(); }, 60000)) return 1;
     QTest::qWait(300);
     return dialog->grab().save(QString::fromLocal8Bit(argv[3])) ? 0 : 1;
+  }
+  // "design:PART": File > Part designer with PART (JSON or DXF) opened, its first
+  // feature selected; OUT.png the dialog, OUT-3d.png with its 3D tab.
+  if (QString::fromLocal8Bit(argv[2]).startsWith(QStringLiteral("design:"))) {
+    w.action(QStringLiteral("actionPartDesigner"))->trigger();
+    auto* designer = w.findChild<PartDesignerDialog*>();
+    if (!designer || !designer->openFile(QString::fromLocal8Bit(argv[2]).mid(7))) return 1;
+    // The part's own bar (a tube for a bored part) into Job details, as the user's "Use this bar" does.
+    if (auto* use = designer->findChild<QPushButton*>(QStringLiteral("designUseFileBar")); use && !use->isHidden())
+      use->click();
+    designer->table()->setCurrentIndex(designer->model()->index(0, 1));
+    if (!QTest::qWaitFor([designer] { return !designer->isRunning() && designer->lastLoop(); }, 60000)) return 1;
+    QTest::qWait(300);
+    std::printf("%s\n", qPrintable(designer->verdict()));
+    if (!designer->grab().save(QString::fromLocal8Bit(argv[3]))) return 1;
+    designer->findChild<QTabWidget*>(QStringLiteral("designTabs"))->setCurrentIndex(1);
+    QTest::qWait(200);
+    QString out = QString::fromLocal8Bit(argv[3]);
+    out.insert(out.lastIndexOf(QLatin1Char('.')), QStringLiteral("-3d"));
+    return designer->grab().save(out) ? 0 : 1;
   }
   w.runController()->setSpeed(RunController::kAsFastAsPossible);
   // "3d:N": the 3D view shown beside the output screen, N blocks stepped (the window, then the 3D view alone

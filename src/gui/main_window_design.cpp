@@ -1,0 +1,46 @@
+// File > Part designer... (issue 14): the designer dialog wired to the window —
+// the bar and material from Job details (and back, when a part file brings its
+// own bar), the generated program into the editor as a new file.
+#include "gui/document_manager.h"
+#include "gui/main_window.h"
+#include "gui/part_designer.h"
+
+namespace klueng::gui {
+
+void MainWindow::showPartDesigner() {
+  if (designer_) {
+    designer_->show();
+    designer_->raise();
+    designer_->activateWindow();
+    return;
+  }
+  designer_ = new PartDesignerDialog(setup_, dialect_, document_->header(), this);
+  designer_->setAttribute(Qt::WA_DeleteOnClose);
+  connect(document_, &Document::headerChanged, designer_, [this] { designer_->setJobHeader(document_->header()); });
+  connect(designer_, &PartDesignerDialog::jobDetailsRequested, this, &MainWindow::showJobDetails);
+  connect(designer_, &PartDesignerDialog::useStock, this, [this](double diameter, double length, double bore) {
+    core::io::JobHeader h = document_->header();
+    h.diameter = diameter;
+    h.length = length;
+    h.bore = bore;
+    h.diameterUnit = h.lengthUnit = core::io::LengthUnit::Millimetre;
+    h.stockSource = core::io::StockSource::JobDetails;
+    setJobDetails(h);
+  });
+  connect(designer_, &PartDesignerDialog::programReady, this, [this](const QString& text) {
+    // The program keeps this job's project, programmer and material words.
+    const core::io::JobHeader job = document_->header();
+    docs_->newFromProgram(text);
+    core::io::JobHeader h = document_->header();
+    if (!job.project.empty()) h.project = job.project;
+    if (!job.programmer.empty()) h.programmer = job.programmer;
+    if (!job.material.empty()) h.material = job.material;
+    document_->setHeader(h);
+    setDialect(designer_->dialect());
+    raise();
+    activateWindow();
+  });
+  designer_->show();
+}
+
+}  // namespace klueng::gui

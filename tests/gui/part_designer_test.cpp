@@ -1,0 +1,183 @@
+// File > Part designer (issue 14) in the real main window: sample 01's part
+// opened from its shipped design matches the drawing within 0.01 mm; an edit
+// that makes an undercut says why and writes nothing, undo and redo walk it
+// back and forth; a groove added from the Add menu; a tube's design asks for
+// its own bar and gets it into Job details; Create program puts the program
+// in the editor; the texts in Thai.
+#include <QAction>
+#include <QApplication>
+#include <QComboBox>
+#include <QHeaderView>
+#include <QListWidget>
+#include <QMenu>
+#include <QPushButton>
+#include <QTableView>
+#include <QTest>
+#include <QToolButton>
+#include <QUndoStack>
+
+#include "fresh_user_folders.h"
+#include "gui/code_editor.h"
+#include "gui/design_model.h"
+#include "gui/document.h"
+#include "gui/language.h"
+#include "gui/main_window.h"
+#include "gui/part_designer.h"
+#include "gui/resources.h"
+
+using namespace klueng;
+
+namespace {
+
+bool waitLoop(gui::PartDesignerDialog* d) {
+  return QTest::qWaitFor([d] { return !d->isRunning() && d->lastLoop(); }, 30000) &&
+         QTest::qWaitFor([d] { return !d->isRunning(); }, 30000);
+}
+
+QStringList lines(QListWidget* list) {
+  QStringList out;
+  for (int i = 0; i < list->count(); ++i) out << list->item(i)->text();
+  return out;
+}
+
+}  // namespace
+
+class PartDesignerTest : public QObject {
+  Q_OBJECT
+ private slots:
+  void initTestCase() {
+    klueng::test::freshUserFolders();
+    gui::initResources();
+    gui::Language::instance()->setLanguage(QStringLiteral("en"));
+  }
+
+  void stepShaftMatchesEditsUndoAndCreateProgram() {
+    gui::MainWindow w;
+    w.resize(1366, 728);
+    w.show();
+    QVERIFY(w.openFile(QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt")));
+    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    w.action(QStringLiteral("actionPartDesigner"))->trigger();
+    auto* d = w.findChild<gui::PartDesignerDialog*>();
+    QVERIFY(d);
+    QVERIFY(d->isVisible());
+    // Sample 01's job: Ø50 x 100 aluminium, from Job details.
+    QCOMPARE(d->design().stockDiameter, 50.0);
+    QCOMPARE(d->findChild<QComboBox*>(QStringLiteral("designMaterial"))->currentData().toString(),
+             QStringLiteral("aluminium"));
+    QVERIFY(d->openFile(QStringLiteral(KLUENG_SOURCE_DIR "/resources/parts/step-shaft.json")));
+    QVERIFY(waitLoop(d));
+    QCOMPARE(d->model()->rowCount(), 3);
+    QCOMPARE(d->model()->index(0, gui::DesignTableModel::Edge).data().toString(), QStringLiteral("C3"));
+    QCOMPARE(d->model()->index(1, gui::DesignTableModel::Edge).data().toString(), QStringLiteral("R2"));
+    QCOMPARE(d->model()->index(1, gui::DesignTableModel::Z).data().toString(), QStringLiteral("-20 … -40"));
+    QCOMPARE(d->verdict(), QStringLiteral("The cut part matches the drawing within 0.01 mm."));
+    QCOMPARE(lines(d->findings()), QStringList{d->verdict()});
+    // The bar is the same as the job's: nothing to offer.
+    QVERIFY(d->findChild<QPushButton*>(QStringLiteral("designUseFileBar"))->isHidden());
+
+    // Ø26 after Ø30: an undercut. Typed into the table.
+    QVERIFY(d->model()->setData(d->model()->index(1, gui::DesignTableModel::Diameter), QStringLiteral("26"), Qt::EditRole));
+    QVERIFY(waitLoop(d));
+    QCOMPARE(d->design().outside[1].diameter, 26.0);
+    QCOMPARE(d->verdict(), QStringLiteral("This part cannot be turned this way:"));
+    QVERIFY2(lines(d->findings()).join(QLatin1Char('\n')).contains(QStringLiteral("E501  Step 2 (Ø26.) is thinner")),
+             qPrintable(lines(d->findings()).join(QLatin1Char('\n'))));
+    QVERIFY(!d->findChild<QPushButton*>(QStringLiteral("designCreateProgram"))->isEnabled());
+    // Nonsense is refused by the cell: no change, no undo step.
+    const int steps = d->undoStack()->count();
+    QVERIFY(!d->model()->setData(d->model()->index(0, gui::DesignTableModel::Edge), QStringLiteral("X3"), Qt::EditRole));
+    QVERIFY(!d->model()->setData(d->model()->index(0, gui::DesignTableModel::Length), QStringLiteral("-5"), Qt::EditRole));
+    QCOMPARE(d->undoStack()->count(), steps);
+    // Undo: Ø40 again and a match; redo: the undercut again.
+    d->undoStack()->undo();
+    QVERIFY(waitLoop(d));
+    QCOMPARE(d->design().outside[1].diameter, 40.0);
+    QVERIFY(d->lastLoop()->matches());
+    d->undoStack()->redo();
+    QVERIFY(waitLoop(d));
+    QVERIFY(!d->lastLoop()->program);
+    d->undoStack()->undo();
+    QVERIFY(waitLoop(d));
+
+    // A groove from the Add menu, then typed to 5 x Ø34 at Z-26 on Ø40.
+    auto* add = d->findChild<QToolButton*>(QStringLiteral("designAdd"));
+    QAction* groove = nullptr;
+    for (QAction* a : add->menu()->actions())
+      if (a->text() == QStringLiteral("Groove")) groove = a;
+    QVERIFY(groove);
+    groove->trigger();
+    QCOMPARE(d->model()->rowCount(), 4);
+    const int row = 3;
+    QCOMPARE(d->model()->index(row, gui::DesignTableModel::Feature).data().toString(), QStringLiteral("Groove"));
+    QVERIFY(d->model()->setData(d->model()->index(row, gui::DesignTableModel::Z), QStringLiteral("-26"), Qt::EditRole));
+    QVERIFY(d->model()->setData(d->model()->index(row, gui::DesignTableModel::Length), QStringLiteral("5"), Qt::EditRole));
+    QVERIFY(d->model()->setData(d->model()->index(row, gui::DesignTableModel::Diameter), QStringLiteral("34"), Qt::EditRole));
+    QVERIFY(waitLoop(d));
+    QVERIFY2(d->lastLoop()->matches(), qPrintable(lines(d->findings()).join(QLatin1Char('\n'))));
+    QCOMPARE(d->design().grooves.size(), std::size_t{1});
+
+    // Create program: a new, unsaved program in the editor, the job's words kept.
+    QPushButton* create = d->findChild<QPushButton*>(QStringLiteral("designCreateProgram"));
+    QVERIFY(create->isEnabled());
+    create->click();
+    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    const QString program = w.editor()->toPlainText();
+    QVERIFY2(program.contains(QStringLiteral("G71 P")), qPrintable(program.left(400)));
+    QVERIFY(program.contains(QStringLiteral("T0404")));  // the grooving tool
+    QVERIFY(w.document()->isUntitled());
+    QVERIFY(w.isWindowModified());
+    QCOMPARE(QString::fromStdString(w.document()->header().project), QStringLiteral("Step shaft exercise"));
+    QCOMPARE(w.document()->header().diameterMm(), 50.0);
+    w.editor()->document()->setModified(false);
+    w.document()->restoreHeader({w.document()->header(), {}, false});
+    d->close();
+  }
+
+  void aTubesDesignGetsItsBarAndTheTextsAreThai() {
+    gui::MainWindow w;
+    w.resize(1366, 728);
+    w.show();
+    QVERIFY(w.openFile(QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt")));
+    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    w.action(QStringLiteral("actionPartDesigner"))->trigger();
+    auto* d = w.findChild<gui::PartDesignerDialog*>();
+    QVERIFY(d);
+    QVERIFY(d->openFile(QStringLiteral(KLUENG_SOURCE_DIR "/resources/parts/threaded-bush.json")));
+    QVERIFY(waitLoop(d));
+    // The job's bar is solid: the bore cannot be cut.
+    QCOMPARE(d->lastLoop()->refused.at(0).code, std::string("E514"));
+    auto* use = d->findChild<QPushButton*>(QStringLiteral("designUseFileBar"));
+    QVERIFY(!use->isHidden());
+    use->click();  // into Job details (undoable there), and back into the designer
+    QVERIFY(waitLoop(d));
+    QCOMPARE(w.document()->header().boreMm(), 16.0);
+    QCOMPARE(w.document()->header().lengthMm(), 80.0);
+    QVERIFY2(d->lastLoop()->matches(), qPrintable(lines(d->findings()).join(QLatin1Char('\n'))));
+    // Thai.
+    gui::Language::instance()->setLanguage(QStringLiteral("th"));
+    QApplication::processEvents();  // the LanguageChange events are posted
+    QVERIFY(waitLoop(d));
+    QCOMPARE(d->windowTitle(), QStringLiteral("ออกแบบชิ้นงาน"));
+    QCOMPARE(d->model()->headerData(0, Qt::Horizontal, Qt::DisplayRole).toString(), QStringLiteral("รูปร่าง"));
+    QCOMPARE(d->model()->index(2, gui::DesignTableModel::Feature).data().toString(), QStringLiteral("รูคว้าน"));
+    QCOMPARE(lines(d->findings()).value(0), QStringLiteral("ชิ้นงานที่กลึงได้ตรงตามแบบภายใน 0.01 มม."));
+    gui::Language::instance()->setLanguage(QStringLiteral("en"));
+    // A broken part file: its reasons listed, the design kept.
+    const QString broken = QDir::temp().filePath(QStringLiteral("klueng-broken-part.json"));
+    QFile f(broken);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write("{ \"stock\": { \"diameter\": 50,\n \"length\" 80 } }");
+    f.close();
+    const std::size_t before = d->design().outside.size();
+    QVERIFY(!d->openFile(broken));
+    QVERIFY(lines(d->findings()).join(QLatin1Char('\n')).contains(QStringLiteral("F180")));
+    QCOMPARE(d->design().outside.size(), before);
+    QFile::remove(broken);
+    w.document()->restoreHeader({w.document()->header(), {}, false});
+    w.editor()->document()->setModified(false);
+  }
+};
+
+QTEST_MAIN(PartDesignerTest)
+#include "part_designer_test.moc"
