@@ -22,6 +22,7 @@ targets=(
   "fuzz_gcode gcode gcode.dict"
   "fuzz_config config -"
   "fuzz_bitmap bitmap bitmap.dict"
+  "fuzz_design design design.dict"
 )
 
 run() {

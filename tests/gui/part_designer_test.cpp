@@ -73,6 +73,13 @@ class PartDesignerTest : public QObject {
     QCOMPARE(d->model()->index(1, gui::DesignTableModel::Z).data().toString(), QStringLiteral("-20 … -40"));
     QCOMPARE(d->verdict(), QStringLiteral("The cut part matches the drawing within 0.01 mm."));
     QCOMPARE(lines(d->findings()), QStringList{d->verdict()});
+    // Haas and the classic rules too.
+    auto* dialect = d->findChild<QComboBox*>(QStringLiteral("designDialect"));
+    for (const int k : {1, 2, 0}) {
+      dialect->setCurrentIndex(k);
+      QVERIFY(waitLoop(d));
+      QVERIFY2(d->lastLoop()->matches(), qPrintable(dialect->currentText()));
+    }
     // The bar is the same as the job's: nothing to offer.
     QVERIFY(d->findChild<QPushButton*>(QStringLiteral("designUseFileBar"))->isHidden());
 
@@ -132,6 +139,40 @@ class PartDesignerTest : public QObject {
     w.editor()->document()->setModified(false);
     w.document()->restoreHeader({w.document()->header(), {}, false});
     d->close();
+  }
+
+  void aDxfDrawingOpensAsItsFeatures() {
+    gui::MainWindow w;
+    w.show();
+    QVERIFY(w.openFile(QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt")));
+    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    w.action(QStringLiteral("actionPartDesigner"))->trigger();
+    auto* d = w.findChild<gui::PartDesignerDialog*>();
+    QVERIFY(d);
+    // A pin: Ø30 C2 spigot 25 long on Ø40, 55 in all, as LINE entities with the face at X100.
+    QString dxf = QStringLiteral("0\nSECTION\n2\nENTITIES\n");
+    const double pin[][4] = {{100, 0, 100, 13}, {100, 13, 98, 15}, {98, 15, 75, 15},
+                               {75, 15, 75, 20},  {75, 20, 45, 20},  {45, 20, 45, 0}};
+    for (const auto& l : pin)
+      dxf += QStringLiteral("0\nLINE\n8\nPART\n10\n%1\n20\n%2\n11\n%3\n21\n%4\n").arg(l[0]).arg(l[1]).arg(l[2]).arg(l[3]);
+    dxf += QStringLiteral("0\nENDSEC\n0\nEOF\n");
+    const QString path = QDir::temp().filePath(QStringLiteral("klueng-pin.dxf"));
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(dxf.toUtf8());
+    f.close();
+    QVERIFY(d->openFile(path));
+    QVERIFY(waitLoop(d));
+    QCOMPARE(d->model()->rowCount(), 2);
+    QCOMPARE(d->model()->index(0, gui::DesignTableModel::Diameter).data().toString(), QStringLiteral("30"));
+    QCOMPARE(d->model()->index(0, gui::DesignTableModel::Length).data().toString(), QStringLiteral("25"));
+    QCOMPARE(d->model()->index(0, gui::DesignTableModel::Edge).data().toString(), QStringLiteral("C2"));
+    QCOMPARE(d->model()->index(1, gui::DesignTableModel::Diameter).data().toString(), QStringLiteral("40"));
+    QVERIFY2(d->lastLoop()->matches(), qPrintable(lines(d->findings()).join(QLatin1Char('\n'))));
+    // Its bar (Ø45 x 75) differs from the job's: offered, not taken.
+    QVERIFY(!d->findChild<QPushButton*>(QStringLiteral("designUseFileBar"))->isHidden());
+    QCOMPARE(w.document()->header().diameterMm(), 50.0);
+    QFile::remove(path);
   }
 
   void aTubesDesignGetsItsBarAndTheTextsAreThai() {

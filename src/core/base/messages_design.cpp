@@ -87,6 +87,10 @@ constexpr MessageText kMessages[] = {
      "{0}: เลเยอร์ \"{2}\" มีรูปร่างแยกกัน {1} รูป: ให้มีเฉพาะรูปตัดครึ่งของชิ้นงานบนเลเยอร์นี้"},
     {codes::kNotAsDrawn, "The drawing's {0} (Z{1} to Z{2}) is not on the cut part within 0.01 mm: there it is {3}",
      "{0} ตามแบบ (Z{1} ถึง Z{2}) ไม่มีบนชิ้นงานที่กลึงได้ภายใน 0.01 มม.: ตรงนั้นเป็น {3}"},
+    {codes::kDxfReachesAxis,
+     "{0}: the outline comes down to the axis at X{1} Y{2} before the part's left end: no step of a turned part is "
+     "Ø0",
+     "{0}: รูปร่างลงมาถึงแนวแกนที่ X{1} Y{2} ก่อนถึงปลายซ้ายของชิ้นงาน: ขั้นของงานกลึงต้องไม่มี Ø0"},
     {codes::kDxfInches, "{0}: the drawing is in {2}: sizes multiplied by {1} to millimetres",
      "{0}: แบบใช้หน่วย {2}: คูณขนาดด้วย {1} เป็นมิลลิเมตร"},
 };

@@ -278,6 +278,8 @@ class Importer {
         if (grooves && rise < -kJoin && i + 2 < run.size() && nextFlat && isFace(run[i + 2]) &&
             std::abs(run[i + 2].b.y() - w.a.y()) <= kJoin && !steps.empty() && steps.back().kind == StepKind::Cylinder) {
           const double width = w.a.x() - run[i + 1].b.x();
+          if (round3(2.0 * run[i + 1].a.y()) <= 0.0 || round3(width) <= 0.0)
+            return fail(codes::kDxfReachesAxis, {file_, X(run[i + 1].a), Y(run[i + 1].a)}), false;
           grooves->push_back({round3(w.a.x()), round3(width), round3(2.0 * run[i + 1].a.y())});
           steps.back().length = round3(steps.back().length + width);
           i += 2;
@@ -289,6 +291,9 @@ class Importer {
       }
       const bool convex = w.ccw == (side > 0);
       const double len = -dz, d = round3(2.0 * std::abs(w.b.y()));
+      if (round3(len) <= 0.0 && !isFace(w)) continue;  // a sliver drawn by the CAD's rounding
+      if (d <= 0.0 || (grooves && std::abs(w.b.y()) <= kJoin))
+        return fail(codes::kDxfReachesAxis, {file_, X(w.b), Y(w.b)}), false;
       if (isFlat(w)) {
         // The cylinder beyond a groove goes on as the same step.
         if (!afterFace && !steps.empty() && steps.back().kind == StepKind::Cylinder &&

@@ -254,6 +254,13 @@ TEST(DxfImport, BadDrawingsSayWhatAndWhere) {
     s.line(40, 18, 30, 10);
     EXPECT_EQ(firstProblem(s.text()).first, "F193");
   }
+  {  // Found by fuzz_design: a cone down to the axis is no step of a turned part (it was a Ø0 taper).
+    Sketch s;
+    s.line(100, 0, 100, 13).line(100, 13, 98, 15).line(98, 15, 0, 0);
+    EXPECT_EQ(firstProblem(s.text()).second,
+              "p.dxf: the outline comes down to the axis at X0.000 Y0.000 before the part's left end: no step of a "
+              "turned part is Ø0");
+  }
   {  // Running back toward the face: an undercut drawn as such.
     Sketch s;
     s.line(60, 0, 60, 15).line(60, 15, 40, 15).line(40, 15, 45, 20).line(45, 20, 0, 20).line(0, 20, 0, 0);
