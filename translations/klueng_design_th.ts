@@ -145,7 +145,7 @@
     </message>
     <message>
         <source>HSS</source>
-        <translation>เหล็กรอบสูง (HSS)</translation>
+        <translation>ไฮสปีด (HSS)</translation>
     </message>
     <message>
         <source>Job details...</source>
@@ -202,6 +202,14 @@
     <message>
         <source>Undo the last change to the part</source>
         <translation>เลิกทำการแก้ไขแบบชิ้นงานครั้งล่าสุด</translation>
+    </message>
+    <message>
+        <source>Part off</source>
+        <translation>ตัดขาด</translation>
+    </message>
+    <message>
+        <source>Cut the part off the bar at its left end with the parting tool (T07)</source>
+        <translation>ตัดชิ้นงานออกจากชิ้นงานดิบที่ปลายด้านซ้ายด้วยมีดตัดขาด (T07)</translation>
     </message>
     <message>
         <source>Use this bar</source>

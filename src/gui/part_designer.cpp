@@ -1,6 +1,8 @@
 #include "gui/part_designer.h"
 
+#include <QCheckBox>
 #include <QComboBox>
+#include <QSignalBlocker>
 #include <QDir>
 #include <QFile>
 #include <QEvent>
@@ -136,6 +138,10 @@ void PartDesignerDialog::apply(const PartDesign& design) {
   const int row = table_ && table_->currentIndex().isValid() ? table_->currentIndex().row() : -1;
   const int column = row >= 0 ? table_->currentIndex().column() : 0;
   model_->setDesign(design);
+  if (partOff_ && partOff_->isChecked() != design.partOff) {
+    const QSignalBlocker quiet(partOff_);
+    partOff_->setChecked(design.partOff);
+  }
   if (row >= 0 && model_->rowCount() > 0)
     table_->setCurrentIndex(model_->index(std::min(row, model_->rowCount() - 1), column));
   scheduleLoop();

@@ -15,6 +15,7 @@
 #include "klueng/core/design/design_loop.h"
 #include "klueng/core/io/program_file.h"
 
+class QCheckBox;
 class QComboBox;
 class QLabel;
 class QListWidget;
@@ -99,6 +100,7 @@ class PartDesignerDialog : public QDialog {
   QComboBox* dialect_ = nullptr;
   QComboBox* material_ = nullptr;
   QComboBox* toolMaterial_ = nullptr;
+  QCheckBox* partOff_ = nullptr;
   QLabel* dialectLabel_ = nullptr;
   QLabel* materialLabel_ = nullptr;
   QLabel* toolMaterialLabel_ = nullptr;

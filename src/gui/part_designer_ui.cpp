@@ -1,4 +1,5 @@
 // The part designer's widgets and their texts.
+#include <QCheckBox>
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -87,7 +88,16 @@ void PartDesignerDialog::buildUi() {
   toolMaterial_->addItem(QString(), QStringLiteral("hss"));
   for (QComboBox* c : {dialect_, material_, toolMaterial_})
     connect(c, &QComboBox::currentIndexChanged, this, [this] { scheduleLoop(); });
-  for (QWidget* w : std::initializer_list<QWidget*>{dialectLabel_, dialect_, materialLabel_, material_, toolMaterialLabel_, toolMaterial_})
+  partOff_ = new QCheckBox(this);
+  partOff_->setObjectName(QStringLiteral("designPartOff"));
+  connect(partOff_, &QCheckBox::toggled, this, [this](bool on) {
+    if (design().partOff == on) return;
+    core::design::PartDesign d = design();
+    d.partOff = on;
+    setDesign(d, partOff_->text().remove(QLatin1Char('&')));
+  });
+  for (QWidget* w : std::initializer_list<QWidget*>{dialectLabel_, dialect_, materialLabel_, material_, toolMaterialLabel_,
+                                                    toolMaterial_, partOff_})
     top->addWidget(w);
 
   auto* bar = new QHBoxLayout;
@@ -199,6 +209,8 @@ void PartDesignerDialog::retranslate() {
   toolMaterial_->setItemText(0, tr("Carbide"));
   toolMaterial_->setItemText(1, tr("HSS"));
   jobButton_->setText(tr("Job details..."));
+  partOff_->setText(tr("Part off"));
+  partOff_->setToolTip(tr("Cut the part off the bar at its left end with the parting tool (T07)"));
   useFileBar_->setText(tr("Use this bar"));
   tabs_->setTabText(0, tr("Drawing"));
   tabs_->setTabText(1, tr("3D"));

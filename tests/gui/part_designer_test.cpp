@@ -6,6 +6,7 @@
 // in the editor; the texts in Thai.
 #include <QAction>
 #include <QApplication>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QHeaderView>
 #include <QListWidget>
@@ -124,6 +125,16 @@ class PartDesignerTest : public QObject {
     QVERIFY2(d->lastLoop()->matches(), qPrintable(lines(d->findings()).join(QLatin1Char('\n'))));
     QCOMPARE(d->design().grooves.size(), std::size_t{1});
 
+    // Part off: one undoable step, and still as drawn.
+    auto* partOff = d->findChild<QCheckBox*>(QStringLiteral("designPartOff"));
+    partOff->setChecked(true);
+    QVERIFY(waitLoop(d));
+    QVERIFY(d->design().partOff);
+    QVERIFY(d->lastLoop()->matches());
+    QVERIFY(QString::fromStdString(d->lastLoop()->program->text).contains(QStringLiteral("T0707")));
+    d->undoStack()->undo();
+    QVERIFY(waitLoop(d));
+    QVERIFY(!partOff->isChecked());
     // Create program: a new, unsaved program in the editor, the job's words kept.
     QPushButton* create = d->findChild<QPushButton*>(QStringLiteral("designCreateProgram"));
     QVERIFY(create->isEnabled());

@@ -285,6 +285,28 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
     }
     w.block("G00 X100. Z100.");
   }
+  if (part.partOff) {
+    // The parting tool's blade (tip 3: its left corner leads) right edge on the part's left end.
+    const double zc = -part.length() - kBlade, to = part.stockBore > 0.0 ? part.stockBore - 1.0 : 0.0;
+    const double partRpm = std::min(options.machine.maxSpindleRpm, spindleRpm(out.cuttingSpeed / 2.0, stock));
+    w.block("T0707", t.pick("parting tool, 3 mm blade, offset 07", "มีดตัดขาด ใบมีดกว้าง 3 มม. ออฟเซต 07"));
+    w.block(fmt::format("G97 S{} M03", static_cast<long long>(std::llround(partRpm))),
+            t.pick("half the turning speed for the blade", "ใช้ความเร็วครึ่งหนึ่งของการกลึงปอกสำหรับใบมีด"));
+    w.block(fmt::format("G00 X{} Z{}", num(exitX), num(kClear)));
+    w.block(fmt::format("G00 Z{}", num(zc)),
+            fmt::format(fmt::runtime(t.pick("the blade's right side on the part's end, Z{}", "ด้านขวาของใบมีดอยู่ที่ปลายชิ้นงาน Z{}")),
+                        num(-part.length())));
+    w.block(fmt::format("G01 X{} F{}", num(to), num(kGrooveFeed)), t.pick("part off", "ตัดขาด"));
+    w.block(fmt::format("G00 X{}", num(exitX)));
+    w.block("G00 X100. Z100.");
+  }
+  // Home in the dialect's habit: Fanuc G28 through the current point, Haas G53 machine zero, X before Z.
+  if (haas) {
+    w.block("G53 G00 X0.", t.pick("X home", "X กลับจุดอ้างอิงเครื่อง"));
+    w.block("G53 G00 Z0.", t.pick("Z home", "Z กลับจุดอ้างอิงเครื่อง"));
+  } else if (!classic) {
+    w.block("G28 U0. W0.", t.pick("to the reference point", "กลับสู่จุดอ้างอิง"));
+  }
   w.block("M09", t.pick("coolant off", "ปิดสารหล่อเย็น"));
   w.block("M05");
   w.block("M30");

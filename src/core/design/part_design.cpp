@@ -149,6 +149,10 @@ io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::st
     if (!j["inside"].is_array()) bad("inside", "a list [ { \"bore\": ..., \"length\": ... } ]");
     else readSteps("inside", false, part.inside);
   }
+  if (j.contains("part_off")) {
+    if (!j["part_off"].is_boolean()) bad("part_off", "true or false");
+    else part.partOff = j["part_off"].get<bool>();
+  }
   if (j.contains("grooves")) {
     if (!j["grooves"].is_array()) bad("grooves", "a list [ { \"z\": ..., \"width\": ..., \"diameter\": ... } ]");
     for (std::size_t k = 0; j["grooves"].is_array() && k < j["grooves"].size(); ++k) {
@@ -252,6 +256,7 @@ std::string writePartDesign(const PartDesign& part) {
   if (!part.inside.empty()) j["inside"] = steps(part.inside, "bore");
   for (const Groove& g : part.grooves) j["grooves"].push_back({{"z", g.z}, {"width", g.width}, {"diameter", g.diameter}});
   for (const Thread& t : part.threads) j["threads"].push_back({{"z", t.z}, {"length", t.length}, {"pitch", t.pitch}});
+  if (part.partOff) j["part_off"] = true;
   return j.dump(2) + "\n";
 }
 

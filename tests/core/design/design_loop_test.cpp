@@ -6,6 +6,8 @@
 #include "design_test_util.h"
 #include "klueng/core/design/design_loop.h"
 
+#include <fmt/format.h>
+
 namespace klueng::core::design {
 namespace {
 
@@ -139,6 +141,52 @@ TEST(PartDesignFile, TheOutlineFollowsTheDrawing) {
     }
   EXPECT_GE(onRound, 10);
   EXPECT_EQ(partOutline(shipped("threaded-bush.json")).bore.back(), Vec2(-50.0, 9.0));
+}
+
+}  // namespace
+}  // namespace klueng::core::design
+
+namespace klueng::core::design {
+namespace {
+
+TEST(DesignLoop, PartedOffTheBarInEveryDialectAndHomeInTheDialectsHabit) {
+  const machine::MachineSetup setup = machine::loadMachineSetup(KLUENG_SOURCE_DIR).setup;
+  for (const char* name : {"step-shaft.json", "threaded-bush.json"}) {
+    PartDesign part = shipped(name);
+    part.partOff = true;
+    for (const gcode::Dialect dialect : {gcode::Dialect::Fanuc, gcode::Dialect::Haas, gcode::Dialect::Classic}) {
+      GenerateOptions options;
+      options.dialect = dialect;
+      options.machine = setup.machine;
+      const DesignLoop loop = runDesignLoop(part, options, setup);
+      ASSERT_TRUE(loop.program) << name;
+      for (const Diagnostic& d : loop.findings) ADD_FAILURE() << name << ": " << formatMessage(d, Lang::En);
+      EXPECT_TRUE(loop.matches()) << name;
+      // The blade's right side on the part's end: nothing at the part's end face's Z from the axis (or the hole) up.
+      const cut::Stock& cut = *loop.cut;
+      const double end = -part.length();
+      const int gap = cut.columnAt(end - 1.5);  // the middle of the 3 mm kerf
+      EXPECT_DOUBLE_EQ(cut.outerRadius(gap), 0.0) << name;
+      EXPECT_GT(cut.outerRadius(cut.columnAt(end + 0.5)), 0.0);
+      const std::string& text = loop.program->text;
+      EXPECT_NE(text.find("T0707"), std::string::npos);
+      EXPECT_NE(text.find(fmt::format("G00 Z{}.", static_cast<int>(end - 3.0))), std::string::npos) << text;
+      if (dialect == gcode::Dialect::Haas) {
+        EXPECT_NE(text.find("G53 G00 X0. (X home)\n"), std::string::npos);
+        EXPECT_LT(text.find("G53 G00 X0."), text.find("G53 G00 Z0."));
+      }
+      if (dialect == gcode::Dialect::Fanuc) {
+        EXPECT_NE(text.rfind("G28 U0. W0."), text.find("G28 U0. W0."));  // at the start and at the end
+      }
+    }
+  }
+  EXPECT_TRUE(readPartDesign(writePartDesign([] {
+                               PartDesign p = shipped("step-shaft.json");
+                               p.partOff = true;
+                               return p;
+                             }()),
+                             "p.json")
+                  .value->partOff);
 }
 
 }  // namespace

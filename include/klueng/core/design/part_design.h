@@ -67,6 +67,7 @@ struct PartDesign {
   std::vector<BoreStep> inside;          // bored from the right face inward
   std::vector<Groove> grooves;
   std::vector<Thread> threads;
+  bool partOff = false;                  // cut the part off the bar at its left end (parting tool T07)
   double length() const;                 // of the turned part (the steps)
 };
 
