@@ -534,33 +534,22 @@ Program parse(std::string_view text, int firstLine, int file) {
   const char* const begin = text.data();
   const char* const end = begin + text.size();
   if (text.empty()) return program;
-  std::size_t lines = 1;
-  const char* p = begin;
-  while ((p = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)))) != nullptr) {
-    ++lines;
-    ++p;
-  }
+  // (std::count runs over the text in wide strides; a memchr per line cost a call each.)
+  const std::size_t lines = 1 + static_cast<std::size_t>(std::count(begin, end, '\n'));
   program.blocks.reserve(std::min(lines, text.size() / 4 + 1));
 
   int lineNumber = firstLine;
   const char* pos = begin;
-  // The next LF at or after pos; kept between lines so that a file with CR-only
-  // line ends is not rescanned to its end for every line.
-  const char* lf = nullptr;
-  bool lfSearched = false;
   while (pos < end) {
-    // Line ends: LF, CRLF or CR (memchr keeps this fast on big files).
-    if (!lfSearched || (lf && lf < pos)) {
-      lf = static_cast<const char*>(std::memchr(pos, '\n', static_cast<std::size_t>(end - pos)));
-      lfSearched = true;
-    }
-    const char* lineEnd = lf ? lf : end;
-    const char* cr = static_cast<const char*>(std::memchr(pos, '\r', static_cast<std::size_t>(lineEnd - pos)));
-    const char* next = lf ? lf + 1 : end;
-    if (cr) {
-      lineEnd = cr;
-      // CRLF, and CR CR LF (a CRLF file converted once more), end one line.
-      next = cr + 1 == lf ? lf + 1 : (cr + 2 == lf && cr[1] == '\r') ? lf + 1 : cr + 1;
+    // Line ends: LF, CRLF or CR. Lines are short: one pass over a line's bytes
+    // finds its end (a memchr call or two per line cost more than the bytes).
+    const char* lineEnd = pos;
+    while (lineEnd < end && *lineEnd != '\n' && *lineEnd != '\r') ++lineEnd;
+    const char* next = lineEnd < end ? lineEnd + 1 : end;
+    // CRLF, and CR CR LF (a CRLF file converted once more), end one line.
+    if (lineEnd < end && *lineEnd == '\r') {
+      if (next < end && *next == '\n') ++next;
+      else if (next + 1 < end && next[0] == '\r' && next[1] == '\n') next += 2;
     }
     parser.parseLine(std::string_view(pos, static_cast<std::size_t>(lineEnd - pos)), lineNumber);
     ++program.lineCount;
