@@ -3,6 +3,8 @@
 #include <QLocale>
 #include <cmath>
 
+#include "render/number_text.h"
+
 namespace klueng::gui {
 
 namespace {
@@ -11,12 +13,7 @@ using core::design::EdgeBreak;
 using core::design::OutsideStep;
 using core::design::StepKind;
 
-QString mm(double v) {
-  QString s = QString::number(v, 'f', 3);
-  while (s.endsWith(QLatin1Char('0'))) s.chop(1);
-  if (s.endsWith(QLatin1Char('.'))) s.chop(1);
-  return s == QStringLiteral("-0") ? QStringLiteral("0") : s;
-}
+QString mm(double v) { return render::trimmedNumber(v, 3); }
 
 // A number typed in either locale's way ("12.5", "12,5").
 std::optional<double> number(const QVariant& value) {

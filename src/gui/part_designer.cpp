@@ -221,7 +221,6 @@ void PartDesignerDialog::addRow(int kind) {
   const auto k = static_cast<DesignRowKind>(kind);
   const double bar = d.stockDiameter;
   const double lastOutside = d.outside.empty() ? bar - 6.0 : d.outside.back().diameter;
-  const double zEnd = -d.length();
   int index = 0;
   switch (k) {
     case DesignRowKind::Cylinder:
@@ -256,7 +255,6 @@ void PartDesignerDialog::addRow(int kind) {
       index = static_cast<int>(d.threads.size()) - 1;
       break;
   }
-  (void)zEnd;
   setDesign(d, tr("Add %1").arg(DesignTableModel::kindName(k)));
   const int row = model_->rowOf(k, index);
   if (row >= 0) table_->setCurrentIndex(model_->index(row, DesignTableModel::Diameter));

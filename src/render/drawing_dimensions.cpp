@@ -1,4 +1,5 @@
 #include "render/drawing_dimensions.h"
+#include "render/number_text.h"
 
 #include <QFontMetricsF>
 
@@ -13,13 +14,7 @@ using core::cut::FeatureKind;
 using core::cut::FeatureSide;
 using core::cut::PartFeature;
 
-QString num(double v) {
-  QString s = QString::number(v, 'f', 2);
-  while (s.endsWith(QLatin1Char('0'))) s.chop(1);
-  if (s.endsWith(QLatin1Char('.'))) s.chop(1);
-  if (s == QStringLiteral("-0")) s = QStringLiteral("0");
-  return s;
-}
+QString num(double v) { return trimmedNumber(v, 2); }
 
 QString label(const PartFeature& f, bool thai) {
   return QString::fromStdString(core::cut::featureLabel(f, thai ? core::Lang::Th : core::Lang::En));

@@ -1,4 +1,5 @@
 #include "render/report_sheets.h"
+#include "render/number_text.h"
 
 #include <QFontMetricsF>
 #include <QPen>
@@ -46,12 +47,7 @@ const Texts& texts(ReportLanguage lang) {
   return thai(lang) ? thaiTexts : english;
 }
 
-QString number(double v) {
-  QString s = QString::number(v, 'f', 3);
-  while (s.endsWith(QLatin1Char('0'))) s.chop(1);
-  if (s.endsWith(QLatin1Char('.'))) s.chop(1);
-  return s;
-}
+QString number(double v) { return trimmedNumber(v, 3); }
 
 QString qs(const std::string& s) { return QString::fromStdString(s); }
 

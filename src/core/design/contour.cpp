@@ -156,6 +156,12 @@ std::string num(double v) {
   return s;
 }
 
+std::string plain(double v) {
+  std::string s = num(std::abs(v) < 5e-4 ? 0.0 : v);
+  if (s.back() == '.') s.pop_back();
+  return s;
+}
+
 Diagnostic problem(const char* code, std::vector<std::string> args) {
   Diagnostic d;
   d.severity = Severity::Error;

@@ -37,6 +37,8 @@ double zAtDiameter(const Contour& contour, double d);
 
 // "30." for whole millimetres, "30.25" otherwise, as lathe programs are written.
 std::string num(double v);
+// "30", "22.5", "0": as messages and labels write sizes.
+std::string plain(double v);
 Diagnostic problem(const char* code, std::vector<std::string> args);
 
 struct Words {

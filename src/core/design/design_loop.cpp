@@ -7,6 +7,7 @@
 #include <cmath>
 #include <functional>
 
+#include "contour.h"
 #include "klueng/core/cut/cut_simulator.h"
 #include "klueng/core/cut/part_check.h"
 #include "klueng/core/diagnostic_codes.h"
@@ -22,12 +23,7 @@ using cut::PartFeature;
 
 constexpr double kZSlack = 0.1;  // mm: two stock columns, where a feature's ends are read
 
-std::string num(double v) {
-  std::string s = fmt::format("{:.3f}", std::abs(v) < 5e-4 ? 0.0 : v);
-  while (s.back() == '0') s.pop_back();
-  if (s.back() == '.') s.pop_back();
-  return s;
-}
+std::string num(double v) { return detail::plain(v); }
 
 // A label with no words in it, so one argument reads in both languages.
 std::string neutralLabel(const PartFeature& f) {
