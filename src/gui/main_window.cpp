@@ -515,19 +515,6 @@ void MainWindow::showJobDetails() {
   if (dlg.exec() == QDialog::Accepted) setJobDetails(dlg.header());
 }
 
-void MainWindow::setJobDetails(const core::io::JobHeader& header) {
-  const Document::HeaderState before = document_->headerState();
-  applyJobDetails(header);
-  setupUndo_->push(new JobDetailsCommand(before, document_->headerState(), [this](const Document::HeaderState& state) {
-    document_->restoreHeader(state);
-    if (!document_->isPlainGcode()) settings_->setLastJobHeader(state.header);
-    else if (!document_->isUntitled() && state.header.stockSource == core::io::StockSource::JobDetails)
-      settings_->setJobDetailsFor(document_->filePath(), state.header);
-    else if (!document_->isUntitled()) settings_->removeJobDetailsFor(document_->filePath());
-    checkNow();
-  }));
-}
-
 void MainWindow::applyJobDetails(const core::io::JobHeader& header) {
   document_->setHeader(header);
   if (!document_->isPlainGcode()) settings_->setLastJobHeader(header);
