@@ -37,6 +37,7 @@
 #include "gui/language.h"
 #include "gui/offset_define_dialog.h"
 #include "gui/output_view.h"
+#include "gui/part_designer.h"
 #include "gui/recovery_bar.h"
 #include "gui/report_controller.h"
 #include "gui/run_speed_control.h"
@@ -393,6 +394,7 @@ void MainWindow::loadMachineSetup(const QString& dir) {
                       .arg(QString::fromStdString(core::formatMessage(d.diagnostic, Language::coreLang())));
   if (!problems.isEmpty()) showBanner(tr("The machine setup has errors:") + QLatin1Char('\n') + problems.join(QLatin1Char('\n')), false);
   runner_->setMachineSetup(setup_);
+  if (designer_) designer_->setMachineSetup(setup_);
   toolInference_ = {};  // the next check decides the job's tools from the new tables
   toolInference_.setup = setup_;
 }

@@ -110,6 +110,11 @@ void PartDesignerDialog::setDialect(core::gcode::Dialect dialect) {
   dialect_->setCurrentIndex(dialect_->findData(static_cast<int>(dialect)));
 }
 
+void PartDesignerDialog::setMachineSetup(const core::machine::MachineSetup& setup) {
+  setup_ = setup;
+  scheduleLoop();
+}
+
 void PartDesignerDialog::setJobHeader(const core::io::JobHeader& job) {
   job_ = job;
   const std::string row = core::design::cuttingSpeedRow(job.material, speeds_);

@@ -39,6 +39,8 @@ class PartDesignerDialog : public QDialog {
                      const core::io::JobHeader& job, QWidget* parent = nullptr);
   ~PartDesignerDialog() override;
 
+  // The tools, offsets and machine the program is cut with (the window's, when they change).
+  void setMachineSetup(const core::machine::MachineSetup& setup);
   // The bar and the material come from Job details.
   void setJobHeader(const core::io::JobHeader& job);
   // A new design through the undo stack (its bar is replaced by the job's).

@@ -125,6 +125,13 @@ class PartDesignerTest : public QObject {
     QVERIFY2(d->lastLoop()->matches(), qPrintable(lines(d->findings()).join(QLatin1Char('\n'))));
     QCOMPARE(d->design().grooves.size(), std::size_t{1});
 
+    // A machine with a slower spindle: the designer's next program clamps there.
+    core::machine::MachineSetup slow = core::machine::loadMachineSetup(KLUENG_SOURCE_DIR).setup;
+    slow.machine.maxSpindleRpm = 2000.0;
+    d->setMachineSetup(slow);
+    QVERIFY(waitLoop(d));
+    QVERIFY(QString::fromStdString(d->lastLoop()->program->text).contains(QStringLiteral("G50 S2000 ")));
+    QVERIFY(d->lastLoop()->matches());
     // Part off: one undoable step, and still as drawn.
     auto* partOff = d->findChild<QCheckBox*>(QStringLiteral("designPartOff"));
     partOff->setChecked(true);
