@@ -204,8 +204,9 @@ class PartDesignerTest : public QObject {
     QVERIFY(d);
     QVERIFY(d->openFile(QStringLiteral(KLUENG_SOURCE_DIR "/resources/parts/threaded-bush.json")));
     QVERIFY(waitLoop(d));
-    // The job's bar is solid: the bore cannot be cut.
-    QCOMPARE(d->lastLoop()->refused.at(0).code, std::string("E514"));
+    // The job's bar is solid: it is drilled Ø10 first, then bored, and matches too.
+    QVERIFY2(d->lastLoop()->matches(), qPrintable(lines(d->findings()).join(QLatin1Char('\n'))));
+    QVERIFY(QString::fromStdString(d->lastLoop()->program->text).contains(QStringLiteral("T0606")));
     auto* use = d->findChild<QPushButton*>(QStringLiteral("designUseFileBar"));
     QVERIFY(!use->isHidden());
     use->click();  // into Job details (undoable there), and back into the designer
@@ -213,6 +214,7 @@ class PartDesignerTest : public QObject {
     QCOMPARE(w.document()->header().boreMm(), 16.0);
     QCOMPARE(w.document()->header().lengthMm(), 80.0);
     QVERIFY2(d->lastLoop()->matches(), qPrintable(lines(d->findings()).join(QLatin1Char('\n'))));
+    QVERIFY(!QString::fromStdString(d->lastLoop()->program->text).contains(QStringLiteral("T0606")));  // a tube
     // Thai.
     gui::Language::instance()->setLanguage(QStringLiteral("th"));
     QApplication::processEvents();  // the LanguageChange events are posted

@@ -36,10 +36,10 @@ constexpr MessageText kMessages[] = {
     {codes::kBoreEdgeTooLarge, "The chamfer or round of bore step {0} ({1} mm) is larger than the step allows ({2} mm)",
      "ขนาดลบมุมหรือมุมโค้งของขั้นรูคว้านที่ {0} ({1} มม.) ใหญ่เกินกว่าที่ขั้นนี้รับได้ ({2} มม.)"},
     {codes::kBoreInSolidBar,
-     "The part has a bore (Ø{0}) but the bar is solid: give the stock a hole (\"bore\" under \"stock\", a tube) no "
-     "larger than the bore; the generator does not drill",
-     "ชิ้นงานมีรูคว้าน (Ø{0}) แต่ชิ้นงานดิบเป็นเพลาตัน: กำหนดรูของชิ้นงานดิบ (\"bore\" ใน \"stock\" เป็นท่อ) ไม่ใหญ่กว่ารูคว้าน "
-     "เครื่องสร้างโปรแกรมยังไม่เจาะรูให้"},
+     "The bore Ø{0} is too small to drill with the Ø{1} drill and bore out (at least Ø{2}) in a solid bar: give the "
+     "stock a hole (\"bore\" under \"stock\", a tube) no larger than the bore",
+     "รูคว้าน Ø{0} เล็กเกินกว่าจะเจาะด้วยดอกสว่าน Ø{1} แล้วคว้านได้ (ต้องอย่างน้อย Ø{2}) ในเพลาตัน: กำหนดรูของชิ้นงานดิบ "
+     "(\"bore\" ใน \"stock\" เป็นท่อ) ไม่ใหญ่กว่ารูคว้าน"},
     {codes::kBoreBelowHole, "Bore step {0} (Ø{1}) is smaller than the tube's hole (Ø{2})",
      "ขั้นรูคว้านที่ {0} (Ø{1}) เล็กกว่ารูของท่อชิ้นงานดิบ (Ø{2})"},
     {codes::kBoreDeeperThanPart, "The bore is {0} mm deep, deeper than the part is long ({1} mm)",

@@ -25,6 +25,9 @@ constexpr double kBlade = 3.0;          // mm: the grooving tool T04's blade (ti
 constexpr double kGrooveFeed = 0.05;
 constexpr double kBoreDepth = 1.0;      // mm a side per boring pass
 constexpr double kBoreFeed = 0.15;
+constexpr double kDrill = 10.0;         // mm: the drill T06 (tools.cfg 06-drill-10mm)
+constexpr double kDrillFeed = 0.1;      // mm/rev
+constexpr double kPeck = 5.0;           // mm a peck
 constexpr double kThreadHeight = 0.6134;  // ISO metric external thread: radial height per mm of pitch
 constexpr int kThreadPasses = 6;          // classic G32 passes, equal chip area
 
@@ -116,10 +119,14 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
   }
   const Contour contour = outsideContour(part, why);
   const Contour bore = boreContour(part, why);
+  double boreDepth = 0.0;
+  for (const BoreStep& s : part.inside) boreDepth += s.length;
+  // A bore in a solid bar is drilled with the Ø10 drill first, then bored out.
+  const double hole = part.stockBore > 0.0 ? part.stockBore : kDrill;
   if (!part.inside.empty()) {
-    double depth = 0.0;
-    for (const BoreStep& s : part.inside) depth += s.length;
-    if (part.stockBore <= 0.0) why.push_back(problem(codes::kBoreInSolidBar, {num(bore.smallestX())}));
+    const double depth = boreDepth;
+    if (part.stockBore <= 0.0 && bore.smallestX() < kDrill + 2.0 - 1e-9)
+      why.push_back(problem(codes::kBoreInSolidBar, {num(bore.smallestX()), num(kDrill), num(kDrill + 2.0)}));
     for (std::size_t k = 0; k < part.inside.size() && part.stockBore > 0.0; ++k)
       if (part.inside[k].diameter < part.stockBore - 1e-9)
         why.push_back(problem(codes::kBoreBelowHole,
@@ -171,9 +178,9 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
     if (s.back() == '.') s.pop_back();
     return s;
   };
-  const std::string hole = part.stockBore > 0.0 ? "x" + size(part.stockBore) : std::string();
+  const std::string tube = part.stockBore > 0.0 ? "x" + size(part.stockBore) : std::string();
   std::string text = fmt::format("{}\n{}\n{}\n1{}{}\n1{}\nKlueng generator\n", part.name, part.name, part.material,
-                                 size(stock), hole, size(part.stockLength));
+                                 size(stock), tube, size(part.stockLength));
   Writer w(true);
   if (!classic) w.raw("%");
   w.raw(fmt::format("{} ({})", haas ? "O00100" : "O0100", part.name));
@@ -208,13 +215,42 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
                                  t.pick("roughing 2 mm a side", "กลึงหยาบครั้งละ 2 มม.")};
   writeTurning(w, contour, outsidePass, options.dialect, t);
   w.block("G00 G40 X100. Z100.");
+  if (!bore.moves.empty() && part.stockBore <= 0.0) {
+    // Drill the solid bar on the axis: through the part (4 mm into the bar beyond), or 3 mm past a blind
+    // bore's bottom so the drill's 118° point stays in the hole the boring bar cleans out.
+    const double through = boreDepth >= part.length() - 1e-9;
+    const double zDrill = -(through ? part.length() + 4.0 : boreDepth + 3.0);
+    const double drillRpm = std::min(options.machine.maxSpindleRpm, spindleRpm(out.cuttingSpeed / 2.0, kDrill));
+    w.block("T0606", t.pick("drill D10, offset 06", "ดอกสว่าน D10 ออฟเซต 06"));
+    w.block(fmt::format("G97 S{} M03", static_cast<long long>(std::llround(drillRpm))),
+            t.pick("half the turning speed at the drill's diameter", "ใช้ความเร็วครึ่งหนึ่งของการกลึงปอกที่ขนาดดอกสว่าน"));
+    w.block(fmt::format("G00 X0. Z{}", num(kClear)), t.pick("on the axis", "ที่แนวแกน"));
+    if (classic) {
+      for (double z = -kPeck; z > zDrill - kPeck + 1e-9; z -= kPeck) {
+        const double to = std::max(z, zDrill);
+        w.block(fmt::format("G01 Z{} F{}", num(to), num(kDrillFeed)),
+                to == -kPeck ? t.pick("peck 5 mm, out to clear the chips", "เจาะทีละ 5 มม. ถอยออกเพื่อคายเศษ") : std::string());
+        w.block(fmt::format("G00 Z{}", num(kClear)));
+        if (to > zDrill + 1e-9) w.block(fmt::format("G00 Z{}", num(to + 0.5)));
+      }
+    } else if (haas) {
+      w.block(fmt::format("G74 Z{} K{} F{}", num(zDrill), num(kPeck), num(kDrillFeed)),
+              t.pick("peck drilling, K 5 mm a peck", "เจาะเป็นช่วง K ช่วงละ 5 มม."));
+    } else {
+      w.block("G74 R1.", t.pick("1 mm back after each peck", "ถอยกลับ 1 มม. หลังเจาะแต่ละช่วง"));
+      w.block(fmt::format("G74 Z{} Q{} F{}", num(zDrill), static_cast<long long>(std::llround(kPeck * 1000.0)), num(kDrillFeed)),
+              t.pick("Q 5 mm a peck, in microns", "Q ช่วงละ 5 มม. หน่วยไมครอน"));
+    }
+    w.block("G00 X100. Z100.");
+    w.block(fmt::format("G96 S{} M03", num(out.cuttingSpeed)), t.pick("back to constant cutting speed", "กลับสู่ความเร็วตัดคงที่"));
+  }
   if (!bore.moves.empty()) {
-    // The boring bar from inside the tube's hole, out along Z before it leaves.
-    const double startX = part.stockBore - 1.0;
+    // The boring bar from inside the hole, out along Z before it leaves.
+    const double startX = hole - 1.0;
     w.block("T0505", t.pick("boring bar, offset 05", "มีดคว้านรู ออฟเซต 05"));
     w.block(fmt::format("G00 X{} Z{}", num(startX), num(kClear)),
-            t.pick("cycle start point, inside the tube's hole", "จุดเริ่มวัฏจักร ภายในรูของท่อ"));
-    const TurningPass borePass{-1.0, part.stockBore, startX, kBoreDepth, kBoreFeed, "G41",
+            t.pick("cycle start point, inside the hole", "จุดเริ่มวัฏจักร ภายในรู"));
+    const TurningPass borePass{-1.0, hole, startX, kBoreDepth, kBoreFeed, "G41",
                                t.pick("boring 1 mm a side", "คว้านครั้งละ 1 มม.")};
     writeTurning(w, bore, borePass, options.dialect, t);
     w.block(fmt::format("G00 G40 Z{}", num(kClear)), t.pick("out of the bore", "ถอยออกจากรู"));
@@ -287,7 +323,7 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
   }
   if (part.partOff) {
     // The parting tool's blade (tip 3: its left corner leads) right edge on the part's left end.
-    const double zc = -part.length() - kBlade, to = part.stockBore > 0.0 ? part.stockBore - 1.0 : 0.0;
+    const double zc = -part.length() - kBlade, to = !part.inside.empty() || part.stockBore > 0.0 ? hole - 1.0 : 0.0;
     const double partRpm = std::min(options.machine.maxSpindleRpm, spindleRpm(out.cuttingSpeed / 2.0, stock));
     w.block("T0707", t.pick("parting tool, 3 mm blade, offset 07", "มีดตัดขาด ใบมีดกว้าง 3 มม. ออฟเซต 07"));
     w.block(fmt::format("G97 S{} M03", static_cast<long long>(std::llround(partRpm))),

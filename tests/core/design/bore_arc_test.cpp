@@ -78,9 +78,12 @@ TEST(Generator, BoresThatCannotBeCutSayWhy) {
     return why.empty() ? std::string() : why[0].code;
   };
   PartDesign part = threadedBush();
-  part.stockBore = 0.0;  // a solid bar: nothing drills it
+  part.stockBore = 0.0;  // a solid bar, and a bore too small to drill Ø10 and bore out
+  part.inside = {{StepKind::Cylinder, 11.0, 20.0}};
   EXPECT_EQ(firstCode(part), "E514");
-  EXPECT_EQ(formatMessage(why[0], Lang::En).rfind("The part has a bore (Ø18.) but the bar is solid", 0), 0u);
+  EXPECT_EQ(formatMessage(why[0], Lang::En),
+            "The bore Ø11. is too small to drill with the Ø10. drill and bore out (at least Ø12.) in a solid bar: give "
+            "the stock a hole (\"bore\" under \"stock\", a tube) no larger than the bore");
   part = threadedBush();
   part.inside[1].diameter = 14.0;  // below the tube's Ø16 hole
   EXPECT_EQ(firstCode(part), "E515");

@@ -191,3 +191,37 @@ TEST(DesignLoop, PartedOffTheBarInEveryDialectAndHomeInTheDialectsHabit) {
 
 }  // namespace
 }  // namespace klueng::core::design
+
+namespace klueng::core::design {
+namespace {
+
+TEST(DesignLoop, ASolidBarIsDrilledThenBoredInEveryDialect) {
+  const machine::MachineSetup setup = machine::loadMachineSetup(KLUENG_SOURCE_DIR).setup;
+  PartDesign part = shipped("threaded-bush.json");
+  part.stockBore = 0.0;  // Ø50 solid: drilled Ø10 through the 50 mm part and 4 mm on, then bored to Ø20 and Ø18
+  for (const gcode::Dialect dialect : {gcode::Dialect::Fanuc, gcode::Dialect::Haas, gcode::Dialect::Classic}) {
+    GenerateOptions options;
+    options.dialect = dialect;
+    options.machine = setup.machine;
+    const DesignLoop loop = runDesignLoop(part, options, setup);
+    ASSERT_TRUE(loop.program);
+    for (const Diagnostic& d : loop.problems) ADD_FAILURE() << d.code << " line " << d.range.line;
+    for (const Diagnostic& d : loop.findings) ADD_FAILURE() << formatMessage(d, Lang::En);
+    EXPECT_TRUE(loop.matches());
+    const std::string& text = loop.program->text;
+    EXPECT_NE(text.find("\n150\n180\n"), std::string::npos);  // the header's bar stays solid
+    EXPECT_NE(text.find("T0606"), std::string::npos);
+    const char* drilling = dialect == gcode::Dialect::Fanuc  ? "G74 Z-54. Q5000 F0.1"
+                           : dialect == gcode::Dialect::Haas ? "G74 Z-54. K5. F0.1"
+                                                             : "G01 Z-54. F0.1";
+    EXPECT_NE(text.find(drilling), std::string::npos) << text;
+    // The drilled Ø10 goes on past the part's end; its 118° point (tip at Z-54) stays in the bar.
+    const cut::Stock& cut = *loop.cut;
+    EXPECT_NEAR(cut.innerRadius(cut.columnAt(-50.5)), 5.0, 0.01);
+    EXPECT_LT(cut.innerRadius(cut.columnAt(-53.0)), 5.0);
+    EXPECT_NEAR(cut.innerRadius(cut.columnAt(-40.0)), 9.0, 0.01);  // bored Ø18
+  }
+}
+
+}  // namespace
+}  // namespace klueng::core::design
