@@ -41,6 +41,17 @@ QStringList lines(QListWidget* list) {
   return out;
 }
 
+// Sample 01 open in the window, File > Part designer opened on it.
+gui::PartDesignerDialog* openDesigner(gui::MainWindow& w) {
+  w.resize(1366, 728);
+  w.show();
+  if (!w.openFile(QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt")) ||
+      !QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000))
+    return nullptr;
+  w.action(QStringLiteral("actionPartDesigner"))->trigger();
+  return w.findChild<gui::PartDesignerDialog*>();
+}
+
 }  // namespace
 
 class PartDesignerTest : public QObject {
@@ -54,12 +65,7 @@ class PartDesignerTest : public QObject {
 
   void stepShaftMatchesEditsUndoAndCreateProgram() {
     gui::MainWindow w;
-    w.resize(1366, 728);
-    w.show();
-    QVERIFY(w.openFile(QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt")));
-    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
-    w.action(QStringLiteral("actionPartDesigner"))->trigger();
-    auto* d = w.findChild<gui::PartDesignerDialog*>();
+    auto* d = openDesigner(w);
     QVERIFY(d);
     QVERIFY(d->isVisible());
     // Sample 01's job: Ø50 x 100 aluminium, from Job details.
@@ -161,11 +167,7 @@ class PartDesignerTest : public QObject {
 
   void aDxfDrawingOpensAsItsFeatures() {
     gui::MainWindow w;
-    w.show();
-    QVERIFY(w.openFile(QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt")));
-    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
-    w.action(QStringLiteral("actionPartDesigner"))->trigger();
-    auto* d = w.findChild<gui::PartDesignerDialog*>();
+    auto* d = openDesigner(w);
     QVERIFY(d);
     // A pin: Ø30 C2 spigot 25 long on Ø40, 55 in all, as LINE entities with the face at X100.
     QString dxf = QStringLiteral("0\nSECTION\n2\nENTITIES\n");
@@ -195,12 +197,7 @@ class PartDesignerTest : public QObject {
 
   void aTubesDesignGetsItsBarAndTheTextsAreThai() {
     gui::MainWindow w;
-    w.resize(1366, 728);
-    w.show();
-    QVERIFY(w.openFile(QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt")));
-    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
-    w.action(QStringLiteral("actionPartDesigner"))->trigger();
-    auto* d = w.findChild<gui::PartDesignerDialog*>();
+    auto* d = openDesigner(w);
     QVERIFY(d);
     QVERIFY(d->openFile(QStringLiteral(KLUENG_SOURCE_DIR "/resources/parts/threaded-bush.json")));
     QVERIFY(waitLoop(d));

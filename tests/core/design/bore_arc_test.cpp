@@ -29,11 +29,8 @@ class BushInEveryDialect : public ::testing::TestWithParam<gcode::Dialect> {};
 
 TEST_P(BushInEveryDialect, GrooveThreadAndBoreAreCutToTheDrawing) {
   const machine::MachineSetup setup = machine::loadMachineSetup(KLUENG_SOURCE_DIR).setup;
-  GenerateOptions options;
-  options.dialect = GetParam();
-  options.machine = setup.machine;
   std::vector<Diagnostic> why;
-  const auto program = generateProgram(threadedBush(), options, &why);
+  const auto program = generateProgram(threadedBush(), optionsFor(GetParam(), setup), &why);
   ASSERT_TRUE(program) << (why.empty() ? "" : why[0].code);
   // The header names the tube: Ø50 with a Ø16 hole.
   EXPECT_NE(program->text.find("\n150x16\n180\n"), std::string::npos);

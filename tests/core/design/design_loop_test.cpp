@@ -78,11 +78,6 @@ TEST(DesignLoop, APartThatCannotBeTurnedIsRefusedBeforeAnythingRuns) {
   EXPECT_FALSE(loop.matches());
 }
 
-}  // namespace
-}  // namespace klueng::core::design
-
-namespace klueng::core::design {
-namespace {
 
 TEST(PartDesignFile, WritesWhatItReads) {
   for (const char* name : {"step-shaft.json", "threaded-bush.json"}) {
@@ -143,11 +138,6 @@ TEST(PartDesignFile, TheOutlineFollowsTheDrawing) {
   EXPECT_EQ(partOutline(shipped("threaded-bush.json")).bore.back(), Vec2(-50.0, 9.0));
 }
 
-}  // namespace
-}  // namespace klueng::core::design
-
-namespace klueng::core::design {
-namespace {
 
 TEST(DesignLoop, PartedOffTheBarInEveryDialectAndHomeInTheDialectsHabit) {
   const machine::MachineSetup setup = machine::loadMachineSetup(KLUENG_SOURCE_DIR).setup;
@@ -155,10 +145,7 @@ TEST(DesignLoop, PartedOffTheBarInEveryDialectAndHomeInTheDialectsHabit) {
     PartDesign part = shipped(name);
     part.partOff = true;
     for (const gcode::Dialect dialect : {gcode::Dialect::Fanuc, gcode::Dialect::Haas, gcode::Dialect::Classic}) {
-      GenerateOptions options;
-      options.dialect = dialect;
-      options.machine = setup.machine;
-      const DesignLoop loop = runDesignLoop(part, options, setup);
+      const DesignLoop loop = runDesignLoop(part, optionsFor(dialect, setup), setup);
       ASSERT_TRUE(loop.program) << name;
       for (const Diagnostic& d : loop.findings) ADD_FAILURE() << name << ": " << formatMessage(d, Lang::En);
       EXPECT_TRUE(loop.matches()) << name;
@@ -189,21 +176,13 @@ TEST(DesignLoop, PartedOffTheBarInEveryDialectAndHomeInTheDialectsHabit) {
                   .value->partOff);
 }
 
-}  // namespace
-}  // namespace klueng::core::design
-
-namespace klueng::core::design {
-namespace {
 
 TEST(DesignLoop, ASolidBarIsDrilledThenBoredInEveryDialect) {
   const machine::MachineSetup setup = machine::loadMachineSetup(KLUENG_SOURCE_DIR).setup;
   PartDesign part = shipped("threaded-bush.json");
   part.stockBore = 0.0;  // Ø50 solid: drilled Ø10 through the 50 mm part and 4 mm on, then bored to Ø20 and Ø18
   for (const gcode::Dialect dialect : {gcode::Dialect::Fanuc, gcode::Dialect::Haas, gcode::Dialect::Classic}) {
-    GenerateOptions options;
-    options.dialect = dialect;
-    options.machine = setup.machine;
-    const DesignLoop loop = runDesignLoop(part, options, setup);
+    const DesignLoop loop = runDesignLoop(part, optionsFor(dialect, setup), setup);
     ASSERT_TRUE(loop.program);
     for (const Diagnostic& d : loop.problems) ADD_FAILURE() << d.code << " line " << d.range.line;
     for (const Diagnostic& d : loop.findings) ADD_FAILURE() << formatMessage(d, Lang::En);

@@ -50,6 +50,14 @@ inline Turned turn(const std::string& text, gcode::Dialect dialect, const machin
   return t;
 }
 
+// The generator's options for a dialect on this machine.
+inline GenerateOptions optionsFor(gcode::Dialect dialect, const machine::MachineSetup& setup) {
+  GenerateOptions options;
+  options.dialect = dialect;
+  options.machine = setup.machine;
+  return options;
+}
+
 inline const cut::PartFeature* find(const cut::PartFeatures& p, cut::FeatureKind kind, const std::string& label,
                              bool inside = false) {
   for (const cut::PartFeature& f : inside ? p.inside : p.outside)
