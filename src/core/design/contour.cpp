@@ -72,6 +72,8 @@ Contour build(const std::vector<OutsideStep>& steps, double side, double before,
       if (k == 0) c.x0 = before;
       ContourMove m{d, z - s.length};
       if (s.kind == StepKind::Arc && !arcMove(s, n, side, z, before / 2.0, z - s.length, d / 2.0, m, why)) m = {d, z - s.length};
+      m.note = s.kind == StepKind::Arc ? MoveNote::Arc : MoveNote::Taper;
+      m.noteSize = s.radius;
       c.moves.push_back(m);
       z -= s.length;
       before = d;
@@ -80,18 +82,19 @@ Contour build(const std::vector<OutsideStep>& steps, double side, double before,
     const double e = s.edge == EdgeBreak::None ? 0.0 : s.edgeSize;
     const double foot = d - 2.0 * e;  // where the face meets the edge break
     if (k == 0) c.x0 = foot;
-    else if (foot > before + kEps) c.moves.push_back({foot, z});
-    if (s.edge == EdgeBreak::Chamfer) c.moves.push_back({d, z - e});
-    if (s.edge == EdgeBreak::Round) c.moves.push_back({d, z - e, true, false, e, z - e, foot / 2.0});
+    else if (foot > before + kEps) c.moves.push_back({foot, z, false, false, 0.0, 0.0, 0.0, MoveNote::Face});
+    if (s.edge == EdgeBreak::Chamfer) c.moves.push_back({d, z - e, false, false, 0.0, 0.0, 0.0, MoveNote::Chamfer, e});
+    if (s.edge == EdgeBreak::Round)
+      c.moves.push_back({d, z - e, true, false, e, z - e, foot / 2.0, MoveNote::Round, e});
     z -= s.length;
-    c.moves.push_back({d, z});
+    c.moves.push_back({d, z, false, false, 0.0, 0.0, 0.0, MoveNote::Cylinder, s.length});
     before = d;
   }
   // The finishing pass comes up the face to the first corner rather than along
   // Z onto it: turning away from the nose there, it goes round the corner and
   // leaves it sharp (turning toward the nose it would leave a sliver under it).
   if (!steps.empty() && (steps[0].kind == StepKind::Cylinder || !slopedFromAxis) && c.x0 - faceFrom >= 2.0 * kFaceLead) {
-    c.moves.insert(c.moves.begin(), ContourMove{c.x0, 0.0});
+    c.moves.insert(c.moves.begin(), ContourMove{c.x0, 0.0, false, false, 0.0, 0.0, 0.0, MoveNote::Face});
     c.x0 -= 2.0 * kFaceLead;
   }
   // Back from the mirrored frame.
@@ -177,15 +180,38 @@ void Writer::block(const std::string& words, const std::string& comment) {
   text_ += line + "\n";
 }
 
+namespace {
+
+// The drawing's words for a contour move: "chamfer C3", "D30, 20 long".
+std::string noteOf(const ContourMove& m, const Words& t) {
+  const auto say = [&](const char* en, const char* th, auto... args) {
+    return fmt::format(fmt::runtime(t.pick(en, th)), args...);
+  };
+  const std::string d = plain(std::abs(m.x));
+  switch (m.note) {
+    case MoveNote::Face: return say("face to D{}", "หน้าตัดถึง D{}", d);
+    case MoveNote::Chamfer: return say("chamfer C{}", "ลบมุม C{}", plain(m.noteSize));
+    case MoveNote::Round: return say("round R{}", "มุมโค้ง R{}", plain(m.noteSize));
+    case MoveNote::Cylinder: return say("D{}, {} long", "D{} ยาว {}", d, plain(m.noteSize));
+    case MoveNote::Taper: return say("taper to D{}", "เรียวถึง D{}", d);
+    case MoveNote::Arc: return say("arc R{} to D{}", "ส่วนโค้ง R{} ถึง D{}", plain(m.noteSize), d);
+    case MoveNote::None: break;
+  }
+  return {};
+}
+
+}  // namespace
+
 void contourBlocks(Writer& w, const Contour& contour, double exitX, const Words& t) {
   w.block(fmt::format("G01 Z0. F{}", num(kFinishFeed)), t.pick("finishing feed", "อัตราป้อนกลึงละเอียด"));
   for (const ContourMove& m : contour.moves) {
     if (m.arc)
-      w.block(fmt::format("{} X{} Z{} R{}", m.clockwise ? "G02" : "G03", num(m.x), num(m.z), num(m.radius)));
+      w.block(fmt::format("{} X{} Z{} R{}", m.clockwise ? "G02" : "G03", num(m.x), num(m.z), num(m.radius)), noteOf(m, t));
     else
-      w.block(fmt::format("G01 X{} Z{}", num(m.x), num(m.z)));
+      w.block(fmt::format("G01 X{} Z{}", num(m.x), num(m.z)), noteOf(m, t));
   }
-  w.block(fmt::format("G01 X{}", num(exitX)));
+  w.block(fmt::format("G01 X{}", num(exitX)), contour.side > 0 ? t.pick("out over the bar", "ถอยพ้นผิวชิ้นงานดิบ")
+                                                                : t.pick("down into the hole", "ลงมาในรู"));
 }
 
 }  // namespace klueng::core::design::detail

@@ -10,6 +10,9 @@ namespace klueng::core::design::detail {
 
 inline constexpr double kFinishFeed = 0.1;  // mm/rev, every finishing pass
 
+// What a contour move draws, for its comment in the program.
+enum class MoveNote { None, Face, Chamfer, Round, Cylinder, Taper, Arc };
+
 // One move of the finished contour, to (x diameter, z).
 struct ContourMove {
   double x = 0.0, z = 0.0;
@@ -17,6 +20,8 @@ struct ContourMove {
   bool clockwise = false;               // G02 (seen with X up, Z right); else G03
   double radius = 0.0;
   double centreZ = 0.0, centreR = 0.0;  // arc centre (z, radius)
+  MoveNote note = MoveNote::None;
+  double noteSize = 0.0;                // chamfer C, round R, a cylinder's length
 };
 
 // The contour from the face (x0 at Z0) leftward; inside, from the bore's mouth.

@@ -71,9 +71,16 @@ void writeTurning(Writer& w, const Contour& contour, const TurningPass& pass, gc
       const double zEnd = zAtDiameter(contour, d - u) + kAllowanceZ;
       if (zEnd >= 0.0) continue;
       w.block(fmt::format("G00 X{}", num(d)), fmt::format(fmt::runtime(t.pick("roughing pass to D{}", "กลึงหยาบถึง D{}")), num(d)));
-      w.block(fmt::format("G01 Z{} F{}", num(zEnd), num(pass.feed)));
-      w.block(fmt::format("G00 U{} W0.5", num(side)));
-      w.block(fmt::format("G00 Z{}", num(kClear)));
+      // The first pass says what every pass does.
+      const bool first = std::abs(d - (pass.from - side * 2.0 * pass.depth)) < 1e-9;
+      w.block(fmt::format("G01 Z{} F{}", num(zEnd), num(pass.feed)),
+              first ? fmt::format(fmt::runtime(t.pick("to 0.1 short of the contour at {} mm/rev",
+                                                      "ถึงก่อนรูปร่าง 0.1 มม. ป้อน {} มม./รอบ")),
+                                  num(pass.feed))
+                    : std::string());
+      w.block(fmt::format("G00 U{} W0.5", num(side)),
+              first ? t.pick("off the cut 0.5 a side and 0.5 back", "ถอยออกจากผิว 0.5 มม. และถอยหลัง 0.5 มม.") : "");
+      w.block(fmt::format("G00 Z{}", num(kClear)), first ? t.pick("back in front of the face", "กลับมาหน้างาน") : "");
     }
     w.block(fmt::format("{} G00 X{} Z{}", pass.comp, num(contour.x0), num(kClear)), finishing);
     contourBlocks(w, contour, pass.startX, t);
@@ -97,7 +104,7 @@ void writeTurning(Writer& w, const Contour& contour, const TurningPass& pass, gc
   w.block(fmt::format("G00 X{}", num(contour.x0)), t.pick("the profile starts", "เริ่มรูปร่างชิ้นงาน"));
   contourBlocks(w, contour, pass.startX, t);
   w.block(fmt::format("G00 {} X{} Z{}", pass.comp, num(pass.startX), num(kClear)), finishing);
-  w.block(fmt::format("G70 P{} Q{}", p, q));
+  w.block(fmt::format("G70 P{} Q{}", p, q), t.pick("finishing: the profile's blocks P to Q", "กลึงละเอียดตามบล็อก P ถึง Q"));
 }
 
 }  // namespace
@@ -204,17 +211,18 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
                       num(out.cuttingSpeed), part.material,
                       part.toolMaterial == "hss" ? "HSS" : t.pick("carbide", "คาร์ไบด์"),
                       num(out.cuttingSpeed), num(stock), static_cast<long long>(std::llround(rpmAtStock)), num(stock)));
-  w.block(fmt::format("G00 X{} Z{} M08", num(stock + 4.0), num(kClear)), t.pick("coolant on", "เปิดสารหล่อเย็น"));
-  w.block("G00 Z0.");
+  w.block(fmt::format("G00 X{} Z{} M08", num(stock + 4.0), num(kClear)),
+          t.pick("2 mm over the bar, 2 mm in front of it, coolant on", "เหนือผิวชิ้นงานดิบ 2 มม. ห่างหน้า 2 มม. เปิดสารหล่อเย็น"));
+  w.block("G00 Z0.", t.pick("to the face", "ไปที่หน้างาน"));
   w.block(fmt::format("G01 X{} F{}", num(part.stockBore > 0.0 ? part.stockBore - 2.0 : -1.6), num(kFaceFeed)),
-          t.pick("face the end", "ปาดหน้า"));
-  w.block(fmt::format("G00 Z{}", num(kClear)));
-  w.block(fmt::format("G00 X{}", num(exitX)), t.pick("cycle start point", "จุดเริ่มวัฏจักร"));
+          t.pick("face the end at 0.2 mm/rev, past the centre", "ปาดหน้า ป้อน 0.2 มม./รอบ เลยศูนย์กลาง"));
+  w.block(fmt::format("G00 Z{}", num(kClear)), t.pick("2 mm clear of the face", "ห่างหน้างาน 2 มม."));
+  w.block(fmt::format("G00 X{}", num(exitX)), t.pick("cycle start point, 1 mm over the bar", "จุดเริ่มวัฏจักร เหนือผิวชิ้นงานดิบ 1 มม."));
 
   const TurningPass outsidePass{1.0, stock, exitX, kRoughDepth, kRoughFeed, "G42",
                                  t.pick("roughing 2 mm a side", "กลึงหยาบครั้งละ 2 มม.")};
   writeTurning(w, contour, outsidePass, options.dialect, t);
-  w.block("G00 G40 X100. Z100.");
+  w.block("G00 G40 X100. Z100.", t.pick("compensation off, to the tool change point", "ยกเลิกชดเชย ไปจุดเปลี่ยนมีด"));
   if (!bore.moves.empty() && part.stockBore <= 0.0) {
     // Drill the solid bar on the axis: through the part (4 mm into the bar beyond), or 3 mm past a blind
     // bore's bottom so the drill's 118° point stays in the hole the boring bar cleans out.
@@ -230,8 +238,10 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
         const double to = std::max(z, zDrill);
         w.block(fmt::format("G01 Z{} F{}", num(to), num(kDrillFeed)),
                 to == -kPeck ? t.pick("peck 5 mm, out to clear the chips", "เจาะทีละ 5 มม. ถอยออกเพื่อคายเศษ") : std::string());
-        w.block(fmt::format("G00 Z{}", num(kClear)));
-        if (to > zDrill + 1e-9) w.block(fmt::format("G00 Z{}", num(to + 0.5)));
+        w.block(fmt::format("G00 Z{}", num(kClear)), to == -kPeck ? t.pick("out of the hole", "ถอยออกจากรู") : "");
+        if (to > zDrill + 1e-9)
+          w.block(fmt::format("G00 Z{}", num(to + 0.5)),
+                  to == -kPeck ? t.pick("back in, 0.5 short of the last depth", "กลับเข้าไปก่อนความลึกเดิม 0.5 มม.") : "");
       }
     } else if (haas) {
       w.block(fmt::format("G74 Z{} K{} F{}", num(zDrill), num(kPeck), num(kDrillFeed)),
@@ -241,7 +251,7 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
       w.block(fmt::format("G74 Z{} Q{} F{}", num(zDrill), static_cast<long long>(std::llround(kPeck * 1000.0)), num(kDrillFeed)),
               t.pick("Q 5 mm a peck, in microns", "Q ช่วงละ 5 มม. หน่วยไมครอน"));
     }
-    w.block("G00 X100. Z100.");
+    w.block("G00 X100. Z100.", t.pick("to the tool change point", "ไปจุดเปลี่ยนมีด"));
     w.block(fmt::format("G96 S{} M03", num(out.cuttingSpeed)), t.pick("back to constant cutting speed", "กลับสู่ความเร็วตัดคงที่"));
   }
   if (!bore.moves.empty()) {
@@ -254,7 +264,7 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
                                t.pick("boring 1 mm a side", "คว้านครั้งละ 1 มม.")};
     writeTurning(w, bore, borePass, options.dialect, t);
     w.block(fmt::format("G00 G40 Z{}", num(kClear)), t.pick("out of the bore", "ถอยออกจากรู"));
-    w.block("G00 X100. Z100.");
+    w.block("G00 X100. Z100.", t.pick("to the tool change point", "ไปจุดเปลี่ยนมีด"));
   }
   if (!part.grooves.empty()) {
     // The grooving tool: plunges a blade apart from the right wall to the left one, at constant rpm.
@@ -270,17 +280,19 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
       for (double zc = first - 0.8 * kBlade; zc > last + 1e-9; zc -= 0.8 * kBlade) plunges.push_back(zc);
       if (std::abs(plunges.back() - last) > 1e-9) plunges.push_back(last);
       // In front of the face first, then along Z over diameters no larger than this cylinder's.
-      w.block(fmt::format("G00 X{} Z{}", num(clear), num(kClear)));
+      w.block(fmt::format("G00 X{} Z{}", num(clear), num(kClear)),
+              t.pick("2 mm over the cylinder, in front of the face", "เหนือทรงกระบอก 2 มม. หน้างาน"));
       for (const double zc : plunges) {
         w.block(fmt::format("G00 Z{}", num(zc)),
                 zc == first ? fmt::format(fmt::runtime(t.pick("groove {} x D{}", "ร่อง {} x D{}")), num(gr.width),
                                           num(gr.diameter))
-                            : std::string());
-        w.block(fmt::format("G01 X{} F{}", num(gr.diameter), num(kGrooveFeed)));
-        w.block(fmt::format("G00 X{}", num(clear)));
+                            : t.pick("next plunge, 0.8 of the blade on", "กินลึกครั้งถัดไป เลื่อน 0.8 เท่าของใบมีด"));
+        w.block(fmt::format("G01 X{} F{}", num(gr.diameter), num(kGrooveFeed)),
+                t.pick("plunge to the bottom at 0.05 mm/rev", "กินลึกถึงก้นร่อง ป้อน 0.05 มม./รอบ"));
+        w.block(fmt::format("G00 X{}", num(clear)), t.pick("out", "ถอยออก"));
       }
     }
-    w.block("G00 X100. Z100.");
+    w.block("G00 X100. Z100.", t.pick("to the tool change point", "ไปจุดเปลี่ยนมีด"));
   }
   if (!part.threads.empty()) {
     w.block("T0303", t.pick("60 degree threading tool, offset 03", "มีดกลึงเกลียว 60 องศา ออฟเซต 03"));
@@ -300,10 +312,14 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
       if (classic) {
         for (int p = 1; p <= kThreadPasses; ++p) {
           const double depth = std::round(h * std::sqrt(static_cast<double>(p) / kThreadPasses) * 1000.0) / 1000.0;
-          w.block(fmt::format("G00 X{}", num(major - 2.0 * depth)));
-          w.block(fmt::format("G32 Z{} F{}", num(endZ), num(th.pitch)));
-          w.block(fmt::format("G00 X{}", num(clear)));
-          w.block(fmt::format("G00 Z{}", num(startZ)));
+          w.block(fmt::format("G00 X{}", num(major - 2.0 * depth)),
+                  fmt::format(fmt::runtime(t.pick("pass {} of {}: {} deep, the same chip area each pass",
+                                                  "ครั้งที่ {} จาก {}: ลึก {} มม. พื้นที่เศษเท่ากันทุกครั้ง")),
+                              p, kThreadPasses, num(depth)));
+          w.block(fmt::format("G32 Z{} F{}", num(endZ), num(th.pitch)),
+                  p == 1 ? t.pick("along the thread, F the pitch", "กลึงตามเกลียว F คือระยะพิตช์") : "");
+          w.block(fmt::format("G00 X{}", num(clear)), p == 1 ? t.pick("out", "ถอยออก") : "");
+          w.block(fmt::format("G00 Z{}", num(startZ)), p == 1 ? t.pick("back to the start", "กลับจุดเริ่ม") : "");
         }
       } else if (haas) {
         w.block(fmt::format("G76 X{} Z{} K{} D{} A60 F{}", num(minor), num(endZ), num(std::round(h * 1000.0) / 1000.0),
@@ -319,7 +335,7 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
                 t.pick("P thread height, Q first depth, in microns", "P ความสูงเกลียว Q ความลึกครั้งแรก หน่วยไมครอน"));
       }
     }
-    w.block("G00 X100. Z100.");
+    w.block("G00 X100. Z100.", t.pick("to the tool change point", "ไปจุดเปลี่ยนมีด"));
   }
   if (part.partOff) {
     // The parting tool's blade (tip 3: its left corner leads) right edge on the part's left end.
@@ -328,13 +344,13 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
     w.block("T0707", t.pick("parting tool, 3 mm blade, offset 07", "มีดตัดขาด ใบมีดกว้าง 3 มม. ออฟเซต 07"));
     w.block(fmt::format("G97 S{} M03", static_cast<long long>(std::llround(partRpm))),
             t.pick("half the turning speed for the blade", "ใช้ความเร็วครึ่งหนึ่งของการกลึงปอกสำหรับใบมีด"));
-    w.block(fmt::format("G00 X{} Z{}", num(exitX), num(kClear)));
+    w.block(fmt::format("G00 X{} Z{}", num(exitX), num(kClear)), t.pick("over the bar", "เหนือผิวชิ้นงานดิบ"));
     w.block(fmt::format("G00 Z{}", num(zc)),
             fmt::format(fmt::runtime(t.pick("the blade's right side on the part's end, Z{}", "ด้านขวาของใบมีดอยู่ที่ปลายชิ้นงาน Z{}")),
                         num(-part.length())));
-    w.block(fmt::format("G01 X{} F{}", num(to), num(kGrooveFeed)), t.pick("part off", "ตัดขาด"));
-    w.block(fmt::format("G00 X{}", num(exitX)));
-    w.block("G00 X100. Z100.");
+    w.block(fmt::format("G01 X{} F{}", num(to), num(kGrooveFeed)), t.pick("part off at 0.05 mm/rev", "ตัดขาด ป้อน 0.05 มม./รอบ"));
+    w.block(fmt::format("G00 X{}", num(exitX)), t.pick("out", "ถอยออก"));
+    w.block("G00 X100. Z100.", t.pick("to the tool change point", "ไปจุดเปลี่ยนมีด"));
   }
   // Home in the dialect's habit: Fanuc G28 through the current point, Haas G53 machine zero, X before Z.
   if (haas) {
@@ -344,8 +360,8 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
     w.block("G28 U0. W0.", t.pick("to the reference point", "กลับสู่จุดอ้างอิง"));
   }
   w.block("M09", t.pick("coolant off", "ปิดสารหล่อเย็น"));
-  w.block("M05");
-  w.block("M30");
+  w.block("M05", t.pick("spindle stop", "หยุดหัวจับ"));
+  w.block("M30", t.pick("end of program", "จบโปรแกรม"));
   if (!classic) w.raw("%");
   out.text = text + w.text();
   return out;

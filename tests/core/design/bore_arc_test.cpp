@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <sstream>
 
 #include "design_test_util.h"
 #include "klueng/core/cut/part_check.h"
@@ -176,6 +177,39 @@ TEST(Generator, PartFilesReadBoresAndArcs) {
   const auto holeTooBig = readPartDesign(
       R"({"stock": {"diameter": 50, "length": 90, "bore": 50}, "outside": [{"cylinder": 30, "length": 20}]})", "h.json");
   EXPECT_EQ(holeTooBig.diagnostics.at(0).code, "F182");
+}
+
+}  // namespace
+}  // namespace klueng::core::design
+
+namespace klueng::core::design {
+namespace {
+
+// Every block of a Fanuc or Haas program says what its numbers are, in the UI language; the classic
+// dialect's repeated passes say it on their first pass.
+TEST(Generator, EveryBlockIsExplainedInTheUiLanguage) {
+  const machine::MachineSetup setup = machine::loadMachineSetup(KLUENG_SOURCE_DIR).setup;
+  PartDesign part = threadedBush();
+  part.stockBore = 0.0;  // drilled too
+  part.partOff = true;
+  for (const gcode::Dialect dialect : {gcode::Dialect::Fanuc, gcode::Dialect::Haas}) {
+    for (const Lang lang : {Lang::En, Lang::Th}) {
+      GenerateOptions options = optionsFor(dialect, setup);
+      options.lang = lang;
+      const auto program = generateProgram(part, options);
+      ASSERT_TRUE(program);
+      std::istringstream lines(program->text);
+      int n = 0, thai = 0;
+      for (std::string line; std::getline(lines, line);) {
+        if (++n <= 6 || line == "%" || line.rfind("(", 0) == 0) continue;  // header, tape marks, comment lines
+        EXPECT_NE(line.find(" ("), std::string::npos) << "line " << n << ": " << line;
+        if (line.find("\xE0\xB8") != std::string::npos) ++thai;  // a Thai letter (U+0E00 block)
+      }
+      if (lang == Lang::Th) {
+        EXPECT_GT(thai, n / 2);
+      }
+    }
+  }
 }
 
 }  // namespace
