@@ -31,6 +31,16 @@ constexpr double kPeck = 5.0;           // mm a peck
 constexpr double kThreadHeight = 0.6134;  // ISO metric external thread: radial height per mm of pitch
 constexpr int kThreadPasses = 6;          // classic G32 passes, equal chip area
 
+// The table's material in the comments' language (the thesis's four; others as written).
+std::string materialName(const std::string& row, const Words& t) {
+  if (!t.thai) return row;
+  if (row == "aluminium") return "อะลูมิเนียม";
+  if (row == "brass") return "ทองเหลือง";
+  if (row == "cast-iron") return "เหล็กหล่อ";
+  if (row == "steel") return "เหล็ก";
+  return row;
+}
+
 // The cylinder step holding all of Z [zLeft, zRight] (clear of its right edge
 // break when `clearOfEdge`), or nullptr.
 const OutsideStep* cylinderHolding(const PartDesign& part, double zRight, double zLeft, bool clearOfEdge) {
@@ -208,7 +218,7 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
   w.block(fmt::format("G96 S{} M03", num(out.cuttingSpeed)),
           fmt::format(fmt::runtime(t.pick("Vc {} m/min for {} with a {} tool: S = 1000 x {} / 3.1416 / {} = {} rpm at D{}",
                              "Vc {} ม./นาที สำหรับ {} มีด{}: S = 1000 x {} / 3.1416 / {} = {} รอบ/นาที ที่ D{}")),
-                      num(out.cuttingSpeed), part.material,
+                      num(out.cuttingSpeed), materialName(part.material, t),
                       part.toolMaterial == "hss" ? "HSS" : t.pick("carbide", "คาร์ไบด์"),
                       num(out.cuttingSpeed), num(stock), static_cast<long long>(std::llround(rpmAtStock)), num(stock)));
   w.block(fmt::format("G00 X{} Z{} M08", num(stock + 4.0), num(kClear)),
@@ -360,7 +370,7 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
     w.block("G28 U0. W0.", t.pick("to the reference point", "กลับสู่จุดอ้างอิง"));
   }
   w.block("M09", t.pick("coolant off", "ปิดสารหล่อเย็น"));
-  w.block("M05", t.pick("spindle stop", "หยุดหัวจับ"));
+  w.block("M05", t.pick("spindle stop", "หยุดเพลาหมุน"));
   w.block("M30", t.pick("end of program", "จบโปรแกรม"));
   if (!classic) w.raw("%");
   out.text = text + w.text();
