@@ -142,13 +142,9 @@ QVariant DesignTableModel::data(const QModelIndex& index, int role) const {
   }
   const auto& t = design_.threads[static_cast<std::size_t>(row.index)];
   if (c == Diameter) {
-    // M size: the cylinder under the thread.
-    double z = 0.0;
-    for (const OutsideStep& s : design_.outside) {
-      if (s.kind == StepKind::Cylinder && t.z <= z + 1e-9 && t.z > z - s.length) return QStringLiteral("M") + mm(s.diameter);
-      z -= s.length;
-    }
-    return QStringLiteral("—");
+    // M size: the cylinder under the thread (none: longer than its cylinder, E510).
+    const OutsideStep* s = core::design::cylinderUnder(design_, t.z, t.z - t.length);
+    return s ? QStringLiteral("M") + mm(s->diameter) : QStringLiteral("—");
   }
   if (c == Length) return mm(t.length);
   if (c == Z) return mm(t.z);

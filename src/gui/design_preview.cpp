@@ -87,16 +87,10 @@ void DesignPreview::paintEvent(QPaintEvent*) {
   QPen thread(QColor(0, 90, 220), 1.0);
   thread.setCosmetic(true);
   p.setPen(thread);
-  for (const auto& t : design_.threads) {
-    double r = 0.0, z = 0.0;
-    for (const auto& s : design_.outside) {
-      if (t.z <= z + 1e-9 && t.z > z - s.length) r = s.diameter / 2.0;
-      z -= s.length;
-    }
-    const double h = 0.6134 * t.pitch;
-    for (double zz = t.z; zz > t.z - t.length + 1e-9 && t.pitch > 0.05; zz -= t.pitch)
-      for (const double sign : {1.0, -1.0}) p.drawLine(QPointF(zz, -sign * r), QPointF(zz - t.pitch / 2.0, -sign * (r - h)));
-  }
+  for (const core::design::ThreadMark& t : outline_.threads)
+    for (double z = t.zRight; z > t.zLeft + 1e-9 && t.pitch > 0.05; z -= t.pitch)
+      for (const double sign : {1.0, -1.0})
+        p.drawLine(QPointF(z, -sign * t.major), QPointF(z - t.pitch / 2.0, -sign * t.minor));
   p.restore();
   if (!message_.isEmpty()) {
     p.setPen(QColor(150, 30, 30));

@@ -71,6 +71,24 @@ void toRoughingPass(RunController& controller, const core::machine::MachineSetup
   controller.setSpeed(1.0);
 }
 
+struct Run {
+  double seconds;
+  double stall;  // ms
+};
+
+// Five seconds of Go at 1x, timed, with the longest UI stall.
+Run goFiveSeconds(RunController& controller, StallProbe& probe) {
+  probe.start();
+  QElapsedTimer wall;
+  wall.start();
+  controller.go();
+  QTest::qWait(5000);
+  const double seconds = wall.nsecsElapsed() / 1e9;
+  const double stall = probe.stop();
+  controller.pause();
+  return {seconds, stall};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -90,14 +108,7 @@ int main(int argc, char** argv) {
     const double volume0 = controller.cutSimulator()->removedVolume();
     const qint64 paints0 = view.paintCount();
     const qint64 frames0 = controller.frameCount();
-    probe.start();
-    QElapsedTimer wall;
-    wall.start();
-    controller.go();
-    QTest::qWait(5000);
-    const double seconds = wall.nsecsElapsed() / 1e9;
-    const double stall = probe.stop();
-    controller.pause();
+    const auto [seconds, stall] = goFiveSeconds(controller, probe);
     const double cut = controller.cutSimulator()->removedVolume() - volume0;
     std::printf("1x sample 01, 1280x800: %.1f frames/s drawn (%.1f animation steps/s), %.0f mm^3 cut in %.2f s, "
                 "longest stall %.1f ms\n",
@@ -118,14 +129,7 @@ int main(int argc, char** argv) {
     (void)QTest::qWaitForWindowExposed(&view3d);
     toRoughingPass(controller, setup);
     const qint64 paints2d = view.paintCount(), paints3d = view3d.paintCount();
-    probe.start();
-    QElapsedTimer wall;
-    wall.start();
-    controller.go();
-    QTest::qWait(5000);
-    const double seconds = wall.nsecsElapsed() / 1e9;
-    const double stall = probe.stop();
-    controller.pause();
+    const auto [seconds, stall] = goFiveSeconds(controller, probe);
     std::printf("1x sample 01 with the 3D view: 2-D %.1f frames/s, 3D %.1f frames/s (%d quads), longest stall %.1f ms\n",
                 (view.paintCount() - paints2d) / seconds, (view3d.paintCount() - paints3d) / seconds,
                 view3d.lastQuadCount(), stall);

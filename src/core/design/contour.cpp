@@ -260,6 +260,11 @@ PartOutline partOutline(const PartDesign& part) {
       break;
     }
   }
+  for (const Thread& t : part.threads)
+    if (const OutsideStep* s = cylinderUnder(part, t.z, t.z - t.length)) {
+      const double major = s->diameter / 2.0;
+      o.threads.push_back({t.z, t.z - t.length, major, major - kIsoThreadHeight * t.pitch, t.pitch});
+    }
   return o;
 }
 

@@ -28,7 +28,6 @@ constexpr double kBoreFeed = 0.15;
 constexpr double kDrill = 10.0;         // mm: the drill T06 (tools.cfg 06-drill-10mm)
 constexpr double kDrillFeed = 0.1;      // mm/rev
 constexpr double kPeck = 5.0;           // mm a peck
-constexpr double kThreadHeight = 0.6134;  // ISO metric external thread: radial height per mm of pitch
 constexpr int kThreadPasses = 6;          // classic G32 passes, equal chip area
 
 // The table's material in the comments' language (the thesis's four; others as written).
@@ -41,19 +40,6 @@ std::string materialName(const std::string& row, const Words& t) {
   return row;
 }
 
-// The cylinder step holding all of Z [zLeft, zRight] (clear of its right edge
-// break when `clearOfEdge`), or nullptr.
-const OutsideStep* cylinderHolding(const PartDesign& part, double zRight, double zLeft, bool clearOfEdge) {
-  double z = 0.0;
-  for (const OutsideStep& s : part.outside) {
-    const double right = z, left = z - s.length;
-    z = left;
-    if (s.kind != StepKind::Cylinder || zRight > right + 1e-9 || zLeft < left - 1e-9) continue;
-    if (clearOfEdge && s.edge != EdgeBreak::None && zRight > right - s.edgeSize + 1e-9) continue;
-    return &s;
-  }
-  return nullptr;
-}
 
 // Roughing then finishing of one contour: the outside (side +1, from above the
 // bar) or the bore (side -1, from inside the tube's hole, its allowance negative).
@@ -157,7 +143,7 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
     const std::string n = std::to_string(k + 1);
     if (th.pitch < 0.25 || th.pitch > 6.0 || th.pitch * 3.0 > th.length)
       why.push_back(problem(codes::kThreadPitchBad, {n, num(th.pitch)}));
-    if (const OutsideStep* s = cylinderHolding(part, th.z, th.z - th.length, false)) threadMajor[k] = s->diameter;
+    if (const OutsideStep* s = cylinderUnder(part, th.z, th.z - th.length, false)) threadMajor[k] = s->diameter;
     if (threadMajor[k] <= 0.0) why.push_back(problem(codes::kThreadOffCylinder, {n, num(th.z), num(th.z - th.length)}));
   }
   // Each groove on one cylinder, no narrower than the blade, not through the part.
@@ -166,7 +152,7 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
     const Groove& gr = part.grooves[g];
     const std::string n = std::to_string(g + 1);
     if (gr.width < kBlade - 1e-9) why.push_back(problem(codes::kGrooveNarrow, {n, num(gr.width), num(kBlade)}));
-    const OutsideStep* s = cylinderHolding(part, gr.z, gr.z - gr.width, true);
+    const OutsideStep* s = cylinderUnder(part, gr.z, gr.z - gr.width, true);
     if (s) {
       grooveTop[g] = s->diameter;
       if (!(gr.diameter > 0.0 && gr.diameter < s->diameter))
@@ -308,7 +294,7 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
     w.block("T0303", t.pick("60 degree threading tool, offset 03", "มีดกลึงเกลียว 60 องศา ออฟเซต 03"));
     for (std::size_t k = 0; k < part.threads.size(); ++k) {
       const Thread& th = part.threads[k];
-      const double major = threadMajor[k], h = kThreadHeight * th.pitch, minor = major - 2.0 * h;
+      const double major = threadMajor[k], h = kIsoThreadHeight * th.pitch, minor = major - 2.0 * h;
       const double rpm = std::min(options.machine.maxSpindleRpm, spindleRpm(out.cuttingSpeed / 2.0, major));
       const double startZ = th.z + 3.0 * th.pitch, endZ = th.z - th.length, clear = major + 4.0;
       const std::string what = fmt::format(

@@ -43,6 +43,18 @@ std::string trim(const std::string& s) {
 
 }  // namespace
 
+const OutsideStep* cylinderUnder(const PartDesign& part, double zRight, double zLeft, bool clearOfEdge) {
+  double z = 0.0;
+  for (const OutsideStep& s : part.outside) {
+    const double right = z, left = z - s.length;
+    z = left;
+    if (s.kind != StepKind::Cylinder || zRight > right + 1e-9 || zLeft < left - 1e-9) continue;
+    if (clearOfEdge && s.edge != EdgeBreak::None && zRight > right - s.edgeSize + 1e-9) continue;
+    return &s;
+  }
+  return nullptr;
+}
+
 double PartDesign::length() const {
   double total = 0.0;
   for (const OutsideStep& s : outside) total += s.length;

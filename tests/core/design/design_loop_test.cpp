@@ -135,7 +135,13 @@ TEST(PartDesignFile, TheOutlineFollowsTheDrawing) {
       EXPECT_NEAR((p - Vec2(-22.0, 18.0)).norm(), 2.0, 1e-9);
     }
   EXPECT_GE(onRound, 10);
-  EXPECT_EQ(partOutline(shipped("threaded-bush.json")).bore.back(), Vec2(-50.0, 9.0));
+  const PartOutline bush = partOutline(shipped("threaded-bush.json"));
+  EXPECT_EQ(bush.bore.back(), Vec2(-50.0, 9.0));
+  // M30x1.5 from Z0 over 22 mm on the Ø30: radius 15 down to 15 - 0.6134 x 1.5.
+  ASSERT_EQ(bush.threads.size(), 1u);
+  EXPECT_DOUBLE_EQ(bush.threads[0].zLeft, -22.0);
+  EXPECT_DOUBLE_EQ(bush.threads[0].major, 15.0);
+  EXPECT_NEAR(bush.threads[0].minor, 15.0 - 0.6134 * 1.5, 1e-12);
 }
 
 

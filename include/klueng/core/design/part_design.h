@@ -76,13 +76,26 @@ io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::st
 // The same JSON back (readPartDesign(writePartDesign(p)) == p).
 std::string writePartDesign(const PartDesign& part);
 
+// ISO metric external thread: radial height per mm of pitch.
+inline constexpr double kIsoThreadHeight = 0.6134;
+
+// The outside cylinder holding all of Z [zLeft, zRight] (clear of its right
+// edge break when `clearOfEdge`), or nullptr: where a groove or thread sits.
+const OutsideStep* cylinderUnder(const PartDesign& part, double zRight, double zLeft, bool clearOfEdge = false);
+
 // The drawing's outline as polylines (z, radius) from the face (Z0) leftward:
 // the outside with its grooves, and the bore (empty when solid); arcs in
 // short chords. For previews; a part that cannot be turned is drawn as far as
 // its steps go.
+struct ThreadMark {
+  double zRight = 0.0, zLeft = 0.0;
+  double major = 0.0, minor = 0.0;  // radii
+  double pitch = 0.0;
+};
 struct PartOutline {
   std::vector<Vec2> outside;
   std::vector<Vec2> bore;
+  std::vector<ThreadMark> threads;  // those on a cylinder
 };
 PartOutline partOutline(const PartDesign& part);
 
