@@ -37,6 +37,13 @@ run() {
   else
     echo "fuzz: $target FAILED (input in $artifacts/):"
     grep -h -A12 '^==[0-9]*==ERROR\|^SUMMARY\|ERROR: libFuzzer' "$scratch/$target.log" | head -40
+    # The input itself, so a failure seen only in CI can be replayed anywhere.
+    local unit
+    unit=$(ls -t "$artifacts/$target-"* 2>/dev/null | head -1 || true)
+    if [ -n "$unit" ]; then
+      echo "fuzz: $unit ($(stat -c %s "$unit") bytes) as base64:"
+      head -c 4096 "$unit" | base64 -w 100
+    fi
     return 1
   fi
 }

@@ -173,10 +173,20 @@ Diagnostic problem(const char* code, std::vector<std::string> args) {
   return d;
 }
 
+std::string commentText(const std::string& text) {
+  std::string out = text;
+  for (char& c : out) {
+    if (c == '(') c = '[';
+    else if (c == ')') c = ']';
+    else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
+  }
+  return out;
+}
+
 void Writer::block(const std::string& words, const std::string& comment) {
   std::string line = numbered_ ? fmt::format("N{} {}", n_, words) : words;
   n_ += 10;
-  if (!comment.empty()) line += " (" + comment + ")";
+  if (!comment.empty()) line += " (" + commentText(comment) + ")";
   text_ += line + "\n";
 }
 

@@ -42,6 +42,10 @@ double zAtDiameter(const Contour& contour, double d);
 
 // "30." for whole millimetres, "30.25" otherwise, as lathe programs are written.
 std::string num(double v);
+// Free text (a part's name, its material) made safe inside a program comment
+// and on one header line: parentheses become brackets, control characters spaces.
+std::string commentText(const std::string& text);
+
 // "30", "22.5", "0": as messages and labels write sizes.
 std::string plain(double v);
 Diagnostic problem(const char* code, std::vector<std::string> args);

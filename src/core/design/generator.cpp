@@ -182,11 +182,12 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
     return s;
   };
   const std::string tube = part.stockBore > 0.0 ? "x" + size(part.stockBore) : std::string();
-  std::string text = fmt::format("{}\n{}\n{}\n1{}{}\n1{}\nKlueng generator\n", part.name, part.name, part.material,
+  const std::string name = commentText(part.name);
+  std::string text = fmt::format("{}\n{}\n{}\n1{}{}\n1{}\nKlueng generator\n", name, name, commentText(part.material),
                                  size(stock), tube, size(part.stockLength));
   Writer w(true);
   if (!classic) w.raw("%");
-  w.raw(fmt::format("{} ({})", haas ? "O00100" : "O0100", part.name));
+  w.raw(fmt::format("{} ({})", haas ? "O00100" : "O0100", name));
   w.raw(fmt::format("({})", t.pick("Written by Klueng from the part design: check it, then simulate it",
                                    "เขียนโดย Klueng จากแบบชิ้นงาน: ตรวจสอบแล้วจำลองการทำงานก่อนใช้")));
   if (classic) {

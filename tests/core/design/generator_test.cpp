@@ -210,6 +210,23 @@ TEST(Generator, PartsThatCannotBeTurnedSayWhyAndWriteNothing) {
   EXPECT_NE(formatMessage(why[0], Lang::Th).find("aluminium, brass, cast-iron, steel"), std::string::npos);
 }
 
+// Found by fuzz_design: a name with ")" closed the O line's comment early (E102).
+TEST(Generator, APartsNameCannotBreakTheProgram) {
+  const machine::MachineSetup setup = machine::loadMachineSetup(KLUENG_SOURCE_DIR).setup;
+  PartDesign part = stepShaft();
+  part.name = "Bush (TB)-02\nsecond line";
+  for (const gcode::Dialect dialect : {gcode::Dialect::Fanuc, gcode::Dialect::Haas}) {
+    const auto program = generateProgram(part, optionsFor(dialect, setup), nullptr);
+    ASSERT_TRUE(program);
+    const auto file = io::parseProgramFile(program->text);
+    ASSERT_TRUE(file.value);
+    EXPECT_EQ(file.value->header.part, "Bush [TB]-02 second line");
+    EXPECT_NE(program->text.find("(Bush [TB]-02 second line)\n"), std::string::npos);
+    const Turned t = turn(program->text, dialect, setup);  // no error on any line
+    EXPECT_TRUE(t.sim);
+  }
+}
+
 TEST(Generator, BadPartFilesNameTheirPlace) {
   const auto broken = readPartDesign("{\n  \"stock\": { \"diameter\": 50,\n  \"length\" 100 }\n}\n", "p.json");
   EXPECT_FALSE(broken.ok());
