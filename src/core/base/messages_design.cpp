@@ -91,6 +91,11 @@ constexpr MessageText kMessages[] = {
      "{0}: the outline comes down to the axis at X{1} Y{2} before the part's left end: no step of a turned part is "
      "Ø0",
      "{0}: รูปร่างลงมาถึงแนวแกนที่ X{1} Y{2} ก่อนถึงปลายซ้ายของชิ้นงาน: ขั้นของงานกลึงต้องไม่มี Ø0"},
+    {codes::kDxfArcTooFlat,
+     "{0}: the arc R{1} ending at X{2} Y{3} is over 10000 mm, the largest radius a part design holds: draw it as "
+     "a line, or check the drawing's units",
+     "{0}: ส่วนโค้ง R{1} ที่สิ้นสุดที่ X{2} Y{3} มีรัศมีเกิน 10000 มม. ซึ่งเป็นรัศมีใหญ่สุดที่แบบชิ้นงานรับได้: "
+     "เขียนเป็นเส้นตรงแทน หรือตรวจหน่วยของแบบ"},
     {codes::kDxfInches, "{0}: the drawing is in {2}: sizes multiplied by {1} to millimetres",
      "{0}: แบบใช้หน่วย {2}: คูณขนาดด้วย {1} เป็นมิลลิเมตร"},
 };

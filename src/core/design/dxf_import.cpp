@@ -62,6 +62,15 @@ struct Walked {
   bool ccw = true;
 };
 
+// How far an arc bows out from its chord.
+double sagitta(const DxfSegment& s) {
+  const Vec2 u = s.a - s.centre, v = s.b - s.centre;
+  double sweep = std::atan2(u.x() * v.y() - u.y() * v.x(), u.dot(v));
+  if (!s.ccw) sweep = -sweep;
+  if (sweep < 0.0) sweep += 2.0 * M_PI;
+  return s.radius * (1.0 - std::cos(sweep / 2.0));
+}
+
 class Importer {
  public:
   Importer(const std::string& fileName, const DxfImportOptions& options, io::ReadResult<PartDesign>& out)
@@ -144,6 +153,8 @@ class Importer {
         continue;
       }
       if (s.layer != layer_) continue;
+      // An arc that bends less than the part's 0.001 mm rounding is the CAD's straight line.
+      if (s.arc && sagitta(s) < 0.0005) s.arc = false;
       lowest = std::min({lowest, s.a.y(), s.b.y()});
       segs_.push_back(s);
     }
@@ -294,6 +305,7 @@ class Importer {
       if (round3(len) <= 0.0 && !isFace(w)) continue;  // a sliver drawn by the CAD's rounding
       if (d <= 0.0 || (grooves && std::abs(w.b.y()) <= kJoin))
         return fail(codes::kDxfReachesAxis, {file_, X(w.b), Y(w.b)}), false;
+      if (w.arc && w.radius > 10000.0) return fail(codes::kDxfArcTooFlat, {file_, mm(w.radius / scale_), X(w.b), Y(w.b)}), false;
       if (isFlat(w)) {
         // The cylinder beyond a groove goes on as the same step.
         if (!afterFace && !steps.empty() && steps.back().kind == StepKind::Cylinder &&

@@ -8,6 +8,7 @@
 #include "contour.h"
 #include "klueng/core/design/part_design.h"
 #include "klueng/core/diagnostic_codes.h"
+#include "klueng/core/io/program_file.h"
 
 namespace klueng::core::design {
 
@@ -183,7 +184,8 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
   };
   const std::string tube = part.stockBore > 0.0 ? "x" + size(part.stockBore) : std::string();
   const std::string name = commentText(part.name);
-  std::string text = fmt::format("{}\n{}\n{}\n1{}{}\n1{}\nKlueng generator\n", name, name, commentText(part.material),
+  std::string text = fmt::format("{}\n{}\n{}\n1{}{}\n1{}\nKlueng generator\n", io::headerText(name), io::headerText(name),
+                                 io::headerText(commentText(part.material)),
                                  size(stock), tube, size(part.stockLength));
   Writer w(true);
   if (!classic) w.raw("%");

@@ -3,6 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
@@ -70,6 +71,18 @@ io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::st
     const auto [line, column] = placeOf(text, e.byte > 0 ? e.byte - 1 : 0);
     std::string why = e.what();
     if (const auto at = why.find("]: "); at != std::string::npos) why = why.substr(at + 3);
+    result.diagnostics.push_back(fileDiagnostic(codes::kPartFileNotJson, line, column, {fileName, why}));
+    return result;
+  } catch (const nlohmann::json::exception& e) {
+    // A number too big for a double ("number overflow parsing '2.5e553'"): no byte
+    // offset in the exception, so the place is where that number is written.
+    std::string why = e.what();
+    if (const auto at = why.find("] "); at != std::string::npos) why = why.substr(at + 2);
+    std::size_t byte = 0;
+    if (const auto q = why.find('\''); q != std::string::npos)
+      if (const auto q2 = why.find('\'', q + 1); q2 != std::string::npos)
+        byte = std::min(text.find(why.substr(q + 1, q2 - q - 1)), text.size());
+    const auto [line, column] = placeOf(text, byte);
     result.diagnostics.push_back(fileDiagnostic(codes::kPartFileNotJson, line, column, {fileName, why}));
     return result;
   }

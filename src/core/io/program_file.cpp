@@ -126,6 +126,10 @@ void parseDiameterLine(std::string_view line, const std::string& fileName, JobHe
   h.bore = bore;
 }
 
+// A no-break space in front of a header text that would read as G-code
+// ("M10 bolt", "G1 shaft", "%"), so the file stays a header file; the reader drops it.
+constexpr std::string_view kHeaderTextMark = "\xC2\xA0";
+
 std::string oneLine(std::string_view text) {
   std::string s(text);
   for (char& c : s)
@@ -235,10 +239,15 @@ ReadResult<ProgramFile> parseProgramFile(std::string_view bytes, const JobHeader
     const auto headerLine = [&](int n) -> std::string_view {
       return static_cast<std::size_t>(n) <= lines.size() ? lines[n - 1] : std::string_view();
     };
-    file.header.project = std::string(detail::trim(headerLine(1)));
-    file.header.part = std::string(detail::trim(headerLine(2)));
-    file.header.material = std::string(detail::trim(headerLine(3)));
-    file.header.programmer = std::string(detail::trim(headerLine(6)));
+    const auto text = [&](int n) {
+      std::string_view field = detail::trim(headerLine(n));
+      if (field.starts_with(kHeaderTextMark)) field.remove_prefix(kHeaderTextMark.size());
+      return std::string(field);
+    };
+    file.header.project = text(1);
+    file.header.part = text(2);
+    file.header.material = text(3);
+    file.header.programmer = text(6);
     if (lines.size() < static_cast<std::size_t>(kHeaderLines)) {
       const int last = static_cast<int>(lines.size());
       diags.push_back(makeDiagnostic(Severity::Error, codes::kHeaderTooShort, last, utf8Length(lines.back()) + 1, 0,
@@ -275,16 +284,21 @@ ReadResult<ProgramFile> readProgramFile(const std::string& path, const JobHeader
   return parseProgramFile(*bytes, defaultsForPlain, path);
 }
 
+std::string headerText(std::string_view text) {
+  const std::string line = oneLine(text);
+  return looksLikeGcode(line) ? std::string(kHeaderTextMark) + line : line;
+}
+
 std::string formatProgramFile(const ProgramFile& file) {
   if (file.plainGcode) return file.gcode;
   const JobHeader& h = file.header;
   std::string out;
   out.reserve(file.gcode.size() + 256);
   for (const std::string& line :
-       {oneLine(h.project), oneLine(h.part), oneLine(h.material),
+       {headerText(h.project), headerText(h.part), headerText(h.material),
         formatStockSize(h.diameter, h.diameterUnit) + (h.bore > 0.0 ? "x" + detail::formatNumber(h.bore) : ""),
         formatStockSize(h.length, h.lengthUnit),
-        oneLine(h.programmer)}) {
+        headerText(h.programmer)}) {
     out += line;
     out += '\n';
   }

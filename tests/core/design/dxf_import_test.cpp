@@ -3,6 +3,7 @@
 // polyline in inches, the threaded bush's section with its bore — and read
 // them back to the shipped designs; bad drawings name the place.
 #include <dxflib/dl_dxf.h>
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -267,6 +268,33 @@ TEST(DxfImport, BadDrawingsSayWhatAndWhere) {
     EXPECT_EQ(firstProblem(s.text()).second,
               "p.dxf: the outline runs back toward the right-hand face at X40.000 Y15.000: a turned profile runs one "
               "way along the axis");
+  }
+}
+
+// Found by fuzz_design: a polyline with a tiny bulge became an arc of R1.5 km,
+// which the part file then refused to read back.
+TEST(DxfImport, AnArcFlatterThanTheRoundingIsALineAndAHugeOneIsRefused) {
+  {  // Bulge 1e-5 over 30.07 mm: it bows 0.00015 mm, a taper from Ø20 to Ø24.
+    Sketch s;
+    s.polyline({{100, 0, 0}, {100, 10, 0}, {80, 10, 1e-5}, {50, 12, 0}, {50, 0, 0}}, false);
+    const auto read = importDxf(s.text(), "p.dxf");
+    ASSERT_TRUE(read.ok()) << (read.diagnostics.empty() ? "" : formatMessage(read.diagnostics[0], Lang::En));
+    ASSERT_EQ(read.value->outside.size(), 2u);
+    EXPECT_EQ(read.value->outside[1].kind, StepKind::Taper);
+    EXPECT_DOUBLE_EQ(read.value->outside[1].diameter, 24.0);
+    EXPECT_DOUBLE_EQ(read.value->outside[1].length, 30.0);
+    const auto again = readPartDesign(writePartDesign(*read.value), "again.json");
+    EXPECT_TRUE(again.ok());
+  }
+  {  // Bulge 4e-4: R = c(1 + b^2)/(4b) is over 10 km and it bows 0.006 mm: not a line, not a radius to hold.
+    Sketch s;
+    s.polyline({{100, 0, 0}, {100, 10, 0}, {80, 10, 4e-4}, {50, 12, 0}, {50, 0, 0}}, false);
+    const double c = std::hypot(30.0, 2.0), b = 4e-4;
+    const auto [code, text] = firstProblem(s.text());
+    EXPECT_EQ(code, "F197");
+    EXPECT_EQ(text, fmt::format("p.dxf: the arc R{:.3f} ending at X50.000 Y12.000 is over 10000 mm, the largest radius "
+                                "a part design holds: draw it as a line, or check the drawing's units",
+                                c * (1 + b * b) / (4 * b)));
   }
 }
 

@@ -240,6 +240,13 @@ TEST(Generator, BadPartFilesNameTheirPlace) {
   EXPECT_FALSE(negative.ok());
   EXPECT_EQ(negative.diagnostics.at(0).code, "F182");
   EXPECT_EQ(negative.diagnostics.at(0).args.at(1), "outside[0].cylinder");
+  // Found by fuzz_design: a number too big for a double threw past the reader.
+  const auto overflow = readPartDesign("{\"stock\": {\"diameter\": 50,\n \"length\": 2.5e553}}", "o.json");
+  ASSERT_EQ(overflow.diagnostics.size(), 1u);
+  EXPECT_EQ(overflow.diagnostics[0].code, "F180");
+  EXPECT_EQ(overflow.diagnostics[0].range.line, 2);
+  EXPECT_EQ(overflow.diagnostics[0].range.column, 12);
+  EXPECT_NE(formatMessage(overflow.diagnostics[0], Lang::En).find("number overflow parsing '2.5e553'"), std::string::npos);
   const auto binary = readPartDesign(std::string("\x89PNG\r\n\x1a\n\0\0", 10), "b.json");
   EXPECT_EQ(binary.diagnostics.at(0).code, "F180");
 }

@@ -335,6 +335,28 @@ TEST(ProgramFile, FormatKeepsAPlainFilePlain) {
   EXPECT_EQ(formatProgramFile(*r.value), text);
 }
 
+// A part named "M10 bolt" or a project "%1" used to be saved as a file that read back as plain G-code.
+TEST(ProgramFile, HeaderTextsThatLookLikeGcodeRoundTrip) {
+  ProgramFile f;
+  f.header.project = "%1 class";
+  f.header.part = "M10 bolt";
+  f.header.material = "(S45C)";
+  f.header.programmer = "T1 group";
+  f.gcode = "G00 X10.\n";
+  const std::string text = formatProgramFile(f);
+  EXPECT_EQ(text.substr(0, 16), "\xC2\xA0%1 class\n\xC2\xA0M10");
+  const auto r = parseProgramFile(text);
+  ASSERT_TRUE(r.ok()) << codes(r.diagnostics);
+  EXPECT_FALSE(r.value->plainGcode);
+  EXPECT_EQ(r.value->header.project, "%1 class");
+  EXPECT_EQ(r.value->header.part, "M10 bolt");
+  EXPECT_EQ(r.value->header.material, "(S45C)");
+  EXPECT_EQ(r.value->header.programmer, "T1 group");
+  EXPECT_EQ(r.value->gcode, "G00 X10.\n");
+  EXPECT_EQ(formatProgramFile(*r.value), text);
+  EXPECT_EQ(headerText("Gear shaft"), "Gear shaft");  // only what would read as G-code is marked
+}
+
 TEST(ProgramFile, FormatFlattensLineBreaksInHeaderFields) {
   ProgramFile f;
   f.header.project = "two\nlines";

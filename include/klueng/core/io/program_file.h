@@ -82,6 +82,10 @@ ReadResult<ProgramFile> readProgramFile(const std::string& path, const JobHeader
 // Sizes are written as unit digit + shortest number (50 mm -> "150"), a bore
 // after an `x` on line 4 ("1118x90"); a file without a bore is written as before.
 std::string formatProgramFile(const ProgramFile& file);
+// A text line of the header (project, part, material, programmer) as written:
+// on one line, and marked with a leading no-break space when it would read as
+// G-code ("M10 bolt"), which the reader drops again.
+std::string headerText(std::string_view text);
 // Atomic write (temporary file in the same folder + fsync + rename).
 // Returns false and fills error (English, for logs) on failure.
 bool writeTextFileAtomic(const std::string& path, std::string_view text, std::string* error = nullptr);
