@@ -87,6 +87,7 @@ inline constexpr const char* kDxfTurnsBack = "F194";          // {0} file, {1} X
 inline constexpr const char* kDxfSeveralOutlines = "F195";    // {0} file, {1} how many, {2} layer
 inline constexpr const char* kDxfReachesAxis = "F196";       // {0} file, {1} X, {2} Y
 inline constexpr const char* kDxfArcTooFlat = "F197";         // {0} file, {1} R, {2} X, {3} Y
+inline constexpr const char* kDxfArcInBore = "F198";          // {0} file, {1} R, {2} X, {3} Y
 inline constexpr const char* kDxfInches = "I180";
 inline constexpr const char* kNotAsDrawn = "W530";            // {0} drawing feature, {1} Z from, {2} Z to, {3} what the cut part has             // {0} file, {1} factor, {2} unit name
 inline constexpr const char* kPartUndercut = "E501";          // {0} step, {1} Ø, {2} Ø before it

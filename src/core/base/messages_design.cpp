@@ -96,6 +96,11 @@ constexpr MessageText kMessages[] = {
      "a line, or check the drawing's units",
      "{0}: ส่วนโค้ง R{1} ที่สิ้นสุดที่ X{2} Y{3} มีรัศมีเกิน 10000 มม. ซึ่งเป็นรัศมีใหญ่สุดที่แบบชิ้นงานรับได้: "
      "เขียนเป็นเส้นตรงแทน หรือตรวจหน่วยของแบบ"},
+    {codes::kDxfArcInBore,
+     "{0}: the bore has an arc R{1} ending at X{2} Y{3}: a part design bores cylinders and tapers (with a chamfer "
+     "or round at their mouth) only",
+     "{0}: รูคว้านมีส่วนโค้ง R{1} ที่สิ้นสุดที่ X{2} Y{3}: แบบชิ้นงานคว้านรูได้เฉพาะทรงกระบอกและเรียว "
+     "(ลบมุมหรือมนที่ปากรูได้)"},
     {codes::kDxfInches, "{0}: the drawing is in {2}: sizes multiplied by {1} to millimetres",
      "{0}: แบบใช้หน่วย {2}: คูณขนาดด้วย {1} เป็นมิลลิเมตร"},
 };

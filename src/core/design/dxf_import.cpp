@@ -326,6 +326,7 @@ class Importer {
         pending = EdgeBreak::Round;  // a quarter round between a face and a cylinder
         pendingSize = w.radius;
       } else {
+        if (w.arc && side < 0.0) return fail(codes::kDxfArcInBore, {file_, mm(w.radius / scale_), X(w.b), Y(w.b)}), false;
         OutsideStep s{w.arc ? StepKind::Arc : StepKind::Taper, d, round3(len)};
         if (w.arc) s.radius = round3(w.radius), s.concave = !convex;
         steps.push_back(s);

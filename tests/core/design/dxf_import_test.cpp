@@ -296,6 +296,15 @@ TEST(DxfImport, AnArcFlatterThanTheRoundingIsALineAndAHugeOneIsRefused) {
                                 "a part design holds: draw it as a line, or check the drawing's units",
                                 c * (1 + b * b) / (4 * b)));
   }
+  {  // Found by fuzz_design: an arc in a bore became an arc step the part file cannot hold.
+    Sketch s;
+    s.line(-5, 0, 45, 0, "CENTER");
+    s.polyline({{40, 8, 0}, {40, 20, 0}, {0, 20, 0}, {0, 8, 0.1}}, true);  // the bore dips 2 mm toward the axis
+    const auto [code, text] = firstProblem(s.text());
+    EXPECT_EQ(code, "F198");
+    EXPECT_EQ(text, "p.dxf: the bore has an arc R101.000 ending at X0.000 Y8.000: a part design bores cylinders and "
+                    "tapers (with a chamfer or round at their mouth) only");
+  }
 }
 
 }  // namespace
