@@ -4,6 +4,7 @@
 #include "klueng/core/gcode/parser.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cctype>
 #include <charconv>
 #include <cstdint>
@@ -13,7 +14,6 @@
 
 #include "diagnostic_codes.h"
 #include "klueng/core/gcode/macro.h"
-#include "parser_detail.h"
 
 namespace klueng::core::gcode {
 
@@ -516,7 +516,14 @@ class LineParser {
 
 }  // namespace
 
-Program parseLines(std::string_view text, int firstLine, int file, std::size_t reserveBlocks) {
+namespace {
+std::atomic<std::size_t> parses{0};
+}  // namespace
+
+std::size_t parseCount() { return parses.load(std::memory_order_relaxed); }
+
+Program parse(std::string_view text, int firstLine, int file) {
+  parses.fetch_add(1, std::memory_order_relaxed);
   Program program;
   program.firstLine = firstLine;
   std::size_t budget = codes::kMaxLexicalDiagnostics;
@@ -529,7 +536,7 @@ Program parseLines(std::string_view text, int firstLine, int file, std::size_t r
   if (text.empty()) return program;
   // (std::count runs over the text in wide strides; a memchr per line cost a call each.)
   const std::size_t lines = 1 + static_cast<std::size_t>(std::count(begin, end, '\n'));
-  program.blocks.reserve(std::max(reserveBlocks, std::min(lines, text.size() / 4 + 1)));
+  program.blocks.reserve(std::min(lines, text.size() / 4 + 1));
 
   int lineNumber = firstLine;
   const char* pos = begin;
