@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "batch_memory.h"
 #include "cli_common.h"
 #include "klueng/core/machine/job_file.h"
 #include "commands.h"
@@ -186,8 +187,9 @@ int runCheck(const std::vector<std::string>& args) {
   std::vector<FileSummary> summary;
   std::vector<FileDiagnostic> notes;  // each file's tool choices and where its stock comes from
 
-  for (const std::string& path : expandFolders(o.files)) {
-    const machine::JobFile job = machine::loadJobFile(path, config.setup, *request, io::shippedToolLibrary());
+  const std::vector<std::string> files = expandFolders(o.files);
+  for (const std::string& path : files) {
+    machine::JobFile job = machine::loadJobFile(path, config.setup, *request, io::shippedToolLibrary());
     for (const Diagnostic& n : job.toolNotes) notes.push_back({path, n});
     for (const Diagnostic& n : job.stockNotes) notes.push_back({path, n});
     FileSummary row{path};
@@ -200,6 +202,7 @@ int runCheck(const std::vector<std::string>& args) {
     anyUnreadable = anyUnreadable || job.unreadable;
     anyError = anyError || row.errors > 0;
     summary.push_back(row);
+    if (&path == &files.back()) keepUntilExit(std::move(job));
   }
 
   if (o.json) {

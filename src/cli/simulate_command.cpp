@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "batch_memory.h"
 #include "cli_common.h"
 #include "commands.h"
 #include "cut_outputs.h"
@@ -217,7 +218,8 @@ int runSimulate(const std::vector<std::string>& args) {
     return 2;
   }
   // Read and parse once: tools from the program (library choices, notes say which), the check, the stock.
-  const machine::JobFile job = machine::loadJobFile(o.file, config.setup, *request, io::shippedToolLibrary());
+  const machine::JobFile& job =
+      keepUntilExit(machine::loadJobFile(o.file, config.setup, *request, io::shippedToolLibrary()));
   for (const Diagnostic& n : job.toolNotes) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
   for (const auto& d : job.diagnostics) printDiagnostic(job.fileOf(d), d, o.lang);
   if (job.unreadable) return 2;
@@ -237,7 +239,7 @@ int runSimulate(const std::vector<std::string>& args) {
   io::MacroVariables variables = stored.value.value_or(io::MacroVariables{});
   const io::MacroVariables before = variables;
   runOptions.persistentVariables = &variables;
-  const machine::Timeline timeline = machine::interpret(program, setup, runOptions);
+  const machine::Timeline& timeline = keepUntilExit(machine::interpret(program, setup, runOptions));
   for (const Diagnostic& n : timeline.flow.notices) printDiagnostic(job.fileOf(n), n, o.lang);
   if (variables != before && o.persistVariables && stored.value) {
     std::string error;

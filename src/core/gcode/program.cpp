@@ -2,18 +2,6 @@
 
 namespace klueng::core::gcode {
 
-const Word* Block::find(char letter) const {
-  for (const Word& w : words)
-    if (w.letter == letter && !w.comma) return &w;
-  return nullptr;
-}
-
-const Word* Block::findComma(char letter) const {
-  for (const Word& w : words)
-    if (w.letter == letter && w.comma) return &w;
-  return nullptr;
-}
-
 int programNumberAt(const Program& program, int index) {
   if (index < 0 || index >= static_cast<int>(program.blocks.size())) return 0;
   const int file = program.blocks[static_cast<std::size_t>(index)].file;

@@ -87,8 +87,17 @@ struct Block {
   bool hasExpressions = false;  // some word's value is an expression (evaluated when the block runs)
 
   // The first word of a letter (comma words ',C' excluded: findComma).
-  const Word* find(char letter) const;
-  const Word* findComma(char letter) const;
+  // (Inline: the checker and the scans ask several letters of every block.)
+  const Word* find(char letter) const {
+    for (const Word& w : words)
+      if (w.letter == letter && !w.comma) return &w;
+    return nullptr;
+  }
+  const Word* findComma(char letter) const {
+    for (const Word& w : words)
+      if (w.letter == letter && w.comma) return &w;
+    return nullptr;
+  }
   bool has(char letter) const { return find(letter) != nullptr; }
   // Every G (or M) code word of the block, in source order, as pointers
   // (a view: walking it allocates nothing; scans run it on every block).
