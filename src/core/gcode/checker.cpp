@@ -465,7 +465,7 @@ std::vector<Diagnostic> checkToolBitmaps(const Program& program, const CheckOpti
   if (profile.letters.find('T') == std::string_view::npos) return out;
   const std::vector<int>& tools = *options.toolsWithBitmap;
   for (const Block& b : program.blocks) {
-    if (b.statement.kind != StatementKind::None) continue;
+    if (b.statement.kind != StatementKind::None || !b.has('T')) continue;  // (most blocks: one pass, no T)
     // As check(): a macro call's letters are its arguments, T too.
     const bool macroCall = profile.flow.macroB && std::any_of(b.words.begin(), b.words.end(), [](const Word& w) {
       return w.letter == 'G' && w.expr < 0 && !w.hasDecimalPoint && (w.value == 65.0 || w.value == 66.0);
