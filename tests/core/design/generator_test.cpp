@@ -225,6 +225,15 @@ TEST(Generator, APartsNameCannotBreakTheProgram) {
     const Turned t = turn(program->text, dialect, setup);  // no error on any line
     EXPECT_TRUE(t.sim);
   }
+  // Found by fuzz_design: a name the header would read as G-code made the file plain G-code.
+  part.name = "%M10 bolt";
+  const auto program = generateProgram(part, optionsFor(gcode::Dialect::Fanuc, setup), nullptr);
+  ASSERT_TRUE(program);
+  const auto file = io::parseProgramFile(program->text);
+  ASSERT_TRUE(file.value);
+  EXPECT_FALSE(file.value->plainGcode);
+  EXPECT_EQ(file.value->header.part, "%M10 bolt");
+  EXPECT_TRUE(turn(program->text, gcode::Dialect::Fanuc, setup).sim);
 }
 
 TEST(Generator, BadPartFilesNameTheirPlace) {
