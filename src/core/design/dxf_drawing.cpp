@@ -7,8 +7,11 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <sstream>
+#include <string_view>
+#include <vector>
 
 namespace klueng::core::design::detail {
 
@@ -139,6 +142,34 @@ class Collector : public DL_CreationAdapter {
   }
 };
 
+// dxflib allocates a polyline's vertices, a spline's knots and points and a
+// leader's vertices at the count the file states (groups 90, 72-74, 76), before
+// reading them: a corrupt count of 462 million asked for 14 GB. Each vertex
+// takes at least two groups (four lines), so no true count exceeds the lines.
+std::string countBeyondFile(const std::string& text) {
+  std::vector<std::string_view> lines;
+  for (std::size_t at = 0; at <= text.size();) {
+    std::size_t end = text.find('\n', at);
+    if (end == std::string::npos) end = text.size();
+    std::string_view line(text.data() + at, end - at);
+    while (!line.empty() && std::isspace(static_cast<unsigned char>(line.front()))) line.remove_prefix(1);
+    while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.remove_suffix(1);
+    lines.push_back(line);
+    at = end + 1;
+  }
+  const long limit = std::max<long>(1000, static_cast<long>(lines.size()));
+  for (std::size_t i = 0; i + 1 < lines.size(); i += 2) {
+    const std::string_view code = lines[i];
+    if (code != "90" && code != "72" && code != "73" && code != "74" && code != "76") continue;
+    const std::string value(lines[i + 1].substr(0, 32));
+    const long count = std::strtol(value.c_str(), nullptr, 10);  // as dxflib reads it (atoi's rules)
+    if (count > limit)
+      return "line " + std::to_string(i + 2) + " says " + value + " points (group " + std::string(code) +
+             "), more than the file holds: it is corrupt";
+  }
+  return {};
+}
+
 }  // namespace
 
 DxfDrawing readDxfDrawing(const std::string& text) {
@@ -159,6 +190,10 @@ DxfDrawing readDxfDrawing(const std::string& text) {
   }
   if (!section) {
     c.drawing.why = "it has no SECTION (a DXF file has HEADER and ENTITIES sections)";
+    return c.drawing;
+  }
+  if (std::string why = countBeyondFile(text); !why.empty()) {
+    c.drawing.why = std::move(why);
     return c.drawing;
   }
   std::istringstream in(text);

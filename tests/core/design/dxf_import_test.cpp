@@ -190,6 +190,11 @@ TEST(DxfImport, BadDrawingsSayWhatAndWhere) {
   EXPECT_EQ(firstProblem("hello, this is a letter\n").first, "F185");
   EXPECT_EQ(firstProblem(std::string("AutoCAD Binary DXF\r\n\x1a\0", 22)).second,
             "p.dxf is not an ASCII DXF drawing: it is a binary file (save the drawing as ASCII DXF)");
+  // Found by fuzz_design: a polyline's vertex count dxflib would allocate before reading (14 GB here).
+  EXPECT_EQ(firstProblem("0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\nPART\n90\n462000000\n10\n0\n20\n0\n0\nENDSEC\n"
+                         "0\nEOF\n").second,
+            "p.dxf is not an ASCII DXF drawing: line 10 says 462000000 points (group 90), more than the file holds: it "
+            "is corrupt");
   {  // Truncated in the middle of an entity: a corrupt file, no crash, no design.
     Sketch s;
     drawStepShaft(s, 60, 0);
