@@ -158,9 +158,14 @@ std::string countBeyondFile(const std::string& text) {
     at = end + 1;
   }
   const long limit = std::max<long>(1000, static_cast<long>(lines.size()));
+  std::string_view entity;
   for (std::size_t i = 0; i + 1 < lines.size(); i += 2) {
     const std::string_view code = lines[i];
-    if (code != "90" && code != "72" && code != "73" && code != "74" && code != "76") continue;
+    if (code == "0") entity = lines[i + 1];
+    // Only where dxflib allocates by them (an MLEADER's group 90 holds flags, not a count).
+    const bool counts = (entity == "LWPOLYLINE" && code == "90") || (entity == "LEADER" && code == "76") ||
+                       (entity == "SPLINE" && (code == "72" || code == "73" || code == "74"));
+    if (!counts) continue;
     const std::string value(lines[i + 1].substr(0, 32));
     const long count = std::strtol(value.c_str(), nullptr, 10);  // as dxflib reads it (atoi's rules)
     if (count > limit)
