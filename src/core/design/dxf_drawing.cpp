@@ -158,19 +158,18 @@ std::string countBeyondFile(const std::string& text) {
     at = end + 1;
   }
   const long limit = std::max<long>(1000, static_cast<long>(lines.size()));
+  // Codes and counts read as dxflib reads them: the leading number ("90?" is group 90).
+  const auto number = [](std::string_view line) { return std::strtol(std::string(line.substr(0, 32)).c_str(), nullptr, 10); };
   std::string_view entity;
   for (std::size_t i = 0; i + 1 < lines.size(); i += 2) {
-    const std::string_view code = lines[i];
-    if (code == "0") entity = lines[i + 1];
+    const long code = number(lines[i]);
+    if (code == 0) entity = lines[i + 1];
     // Only where dxflib allocates by them (an MLEADER's group 90 holds flags, not a count).
-    const bool counts = (entity == "LWPOLYLINE" && code == "90") || (entity == "LEADER" && code == "76") ||
-                       (entity == "SPLINE" && (code == "72" || code == "73" || code == "74"));
-    if (!counts) continue;
-    const std::string value(lines[i + 1].substr(0, 32));
-    const long count = std::strtol(value.c_str(), nullptr, 10);  // as dxflib reads it (atoi's rules)
-    if (count > limit)
-      return "line " + std::to_string(i + 2) + " says " + value + " points (group " + std::string(code) +
-             "), more than the file holds: it is corrupt";
+    const bool counts = (entity == "LWPOLYLINE" && code == 90) || (entity == "LEADER" && code == 76) ||
+                       (entity == "SPLINE" && code >= 72 && code <= 74);
+    if (counts && number(lines[i + 1]) > limit)
+      return "line " + std::to_string(i + 2) + " says " + std::string(lines[i + 1].substr(0, 32)) + " points (group " +
+             std::to_string(code) + "), more than the file holds: it is corrupt";
   }
   return {};
 }

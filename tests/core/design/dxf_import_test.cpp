@@ -195,6 +195,10 @@ TEST(DxfImport, BadDrawingsSayWhatAndWhere) {
                          "0\nEOF\n").second,
             "p.dxf is not an ASCII DXF drawing: line 10 says 462000000 points (group 90), more than the file holds: it "
             "is corrupt");
+  // The same with the code written "90?" (dxflib reads its leading number) and a count past a long.
+  EXPECT_EQ(firstProblem("0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\nPART\n90?\n622222222222222222222\n0\nENDSEC\n")
+                .first,
+            "F185");
   {  // Truncated in the middle of an entity: a corrupt file, no crash, no design.
     Sketch s;
     drawStepShaft(s, 60, 0);
