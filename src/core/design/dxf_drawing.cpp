@@ -142,11 +142,13 @@ class Collector : public DL_CreationAdapter {
   }
 };
 
-// dxflib allocates a polyline's vertices, a spline's knots and points and a
-// leader's vertices at the count the file states (groups 90, 72-74, 76), before
-// reading them: a corrupt count of 462 million asked for 14 GB. Each vertex
-// takes at least two groups (four lines), so no true count exceeds the lines.
-std::string countBeyondFile(const std::string& text) {
+// What dxflib cannot survive, found before it reads: an over-long line (it hangs),
+// and a count beyond the file. dxflib allocates a polyline's vertices, a spline's
+// knots and points and a leader's vertices at the count the file states (groups
+// 90, 72-74, 76), before reading them: a corrupt count of 462 million asked for
+// 14 GB. Each vertex takes at least two groups (four lines), so no true count
+// exceeds the lines.
+std::string corruptForDxflib(const std::string& text) {
   std::vector<std::string_view> lines;
   for (std::size_t at = 0; at <= text.size();) {
     std::size_t end = text.find('\n', at);
@@ -154,6 +156,11 @@ std::string countBeyondFile(const std::string& text) {
     std::string_view line(text.data() + at, end - at);
     while (!line.empty() && std::isspace(static_cast<unsigned char>(line.front()))) line.remove_prefix(1);
     while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.remove_suffix(1);
+    // dxflib reads a line into 1,024 bytes; a longer one leaves its stream failed
+    // but not at its end, and it reads on forever.
+    if (end - at >= 1023)
+      return "line " + std::to_string(lines.size() + 1) + " is " + std::to_string(end - at) +
+             " characters long (a DXF line holds one code or one value): it is corrupt";
     lines.push_back(line);
     at = end + 1;
   }
@@ -196,7 +203,7 @@ DxfDrawing readDxfDrawing(const std::string& text) {
     c.drawing.why = "it has no SECTION (a DXF file has HEADER and ENTITIES sections)";
     return c.drawing;
   }
-  if (std::string why = countBeyondFile(text); !why.empty()) {
+  if (std::string why = corruptForDxflib(text); !why.empty()) {
     c.drawing.why = std::move(why);
     return c.drawing;
   }

@@ -199,6 +199,12 @@ TEST(DxfImport, BadDrawingsSayWhatAndWhere) {
   EXPECT_EQ(firstProblem("0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\nPART\n90?\n622222222222222222222\n0\nENDSEC\n")
                 .first,
             "F185");
+  // A layer name of 3,000 characters: dxflib would read on forever (its lines hold 1,023).
+  EXPECT_EQ(firstProblem("0\nSECTION\n2\nENTITIES\n0\nLINE\n8\n" + std::string(3000, 'P') +
+                         "\n10\n0\n20\n0\n11\n10\n21\n0\n0\nENDSEC\n0\nEOF\n")
+                .second,
+            "p.dxf is not an ASCII DXF drawing: line 8 is 3000 characters long (a DXF line holds one code or one "
+            "value): it is corrupt");
   {  // Truncated in the middle of an entity: a corrupt file, no crash, no design.
     Sketch s;
     drawStepShaft(s, 60, 0);
