@@ -174,7 +174,9 @@ std::string corruptForDxflib(const std::string& text) {
     // Only where dxflib allocates by them (an MLEADER's group 90 holds flags, not a count).
     const bool counts = (entity == "LWPOLYLINE" && code == 90) || (entity == "LEADER" && code == 76) ||
                        (entity == "SPLINE" && code >= 72 && code <= 74);
-    if (counts && number(lines[i + 1]) > limit)
+    // (dxflib keeps strtol's long as an int: -3000000000 becomes 1294967296.)
+    const long count = counts ? number(lines[i + 1]) : 0;
+    if (count > limit || static_cast<int>(count) > limit)
       return "line " + std::to_string(i + 2) + " says " + std::string(lines[i + 1].substr(0, 32)) + " points (group " +
              std::to_string(code) + "), more than the file holds: it is corrupt";
   }

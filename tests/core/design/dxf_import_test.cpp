@@ -199,6 +199,8 @@ TEST(DxfImport, BadDrawingsSayWhatAndWhere) {
   EXPECT_EQ(firstProblem("0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\nPART\n90?\n622222222222222222222\n0\nENDSEC\n")
                 .first,
             "F185");
+  // A negative count that dxflib's int makes 1,294,967,296.
+  EXPECT_EQ(firstProblem("0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\nPART\n90\n-3000000000\n0\nENDSEC\n").first, "F185");
   // A layer name of 3,000 characters: dxflib would read on forever (its lines hold 1,023).
   EXPECT_EQ(firstProblem("0\nSECTION\n2\nENTITIES\n0\nLINE\n8\n" + std::string(3000, 'P') +
                          "\n10\n0\n20\n0\n11\n10\n21\n0\n0\nENDSEC\n0\nEOF\n")
