@@ -74,7 +74,7 @@ inline constexpr const char* kPartFieldBad = "F182";          // {0} file, {1} f
 inline constexpr const char* kSpeedsLineBad = "F183";         // {0} file, {1} line text
 // DXF drawings (design/dxf_import; texts in messages_design.cpp). Places are the drawing's own X Y.
 inline constexpr const char* kDxfEmpty = "F184";              // {0} file
-inline constexpr const char* kDxfNotDxf = "F185";             // {0} file, {1} why
+inline constexpr const char* kDxfNotDxf = "F185";            // {0} file, {1} why (English), {2} why (Thai)
 inline constexpr const char* kDxfNothingOnLayer = "F186";     // {0} file, {1} layer, {2} layers with lines
 inline constexpr const char* kDxfPickLayer = "F187";          // {0} file, {1} layers
 inline constexpr const char* kDxfUnsupportedEntity = "F188";  // {0} file, {1} entity, {2} layer, {3} X, {4} Y

@@ -56,7 +56,7 @@ constexpr MessageText kMessages[] = {
     {codes::kSpeedsLineBad, "{0}: \"{1}\" is not \"material | HSS m/min | carbide m/min\"",
      "{0}: \"{1}\" ไม่อยู่ในรูป \"วัสดุ | มีด HSS ม./นาที | มีดคาร์ไบด์ ม./นาที\""},
     {codes::kDxfEmpty, "{0} is empty: there is no drawing in it", "{0} ว่างเปล่า: ไม่มีแบบอยู่ในไฟล์"},
-    {codes::kDxfNotDxf, "{0} is not an ASCII DXF drawing: {1}", "{0} ไม่ใช่แบบ DXF แบบข้อความ (ASCII): {1}"},
+    {codes::kDxfNotDxf, "{0} is not an ASCII DXF drawing: {1}", "{0} ไม่ใช่แบบ DXF แบบข้อความ (ASCII): {2}"},
     {codes::kDxfNothingOnLayer, "{0}: there are no lines or arcs on layer \"{1}\" (layers with lines: {2})",
      "{0}: ไม่มีเส้นหรือส่วนโค้งบนเลเยอร์ \"{1}\" (เลเยอร์ที่มีเส้น: {2})"},
     {codes::kDxfPickLayer, "{0}: the drawing has lines on several layers ({1}): choose the layer of the part's outline",

@@ -11,6 +11,7 @@
 #include <map>
 #include <sstream>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace klueng::core::design::detail {
@@ -148,7 +149,8 @@ class Collector : public DL_CreationAdapter {
 // 90, 72-74, 76), before reading them: a corrupt count of 462 million asked for
 // 14 GB. Each vertex takes at least two groups (four lines), so no true count
 // exceeds the lines.
-std::string corruptForDxflib(const std::string& text) {
+// The reason in English and in Thai; empty when dxflib can read the text.
+std::pair<std::string, std::string> corruptForDxflib(const std::string& text) {
   std::vector<std::string_view> lines;
   for (std::size_t at = 0; at <= text.size();) {
     std::size_t end = text.find('\n', at);
@@ -158,9 +160,11 @@ std::string corruptForDxflib(const std::string& text) {
     while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.remove_suffix(1);
     // dxflib reads a line into 1,024 bytes; a longer one leaves its stream failed
     // but not at its end, and it reads on forever.
-    if (end - at >= 1023)
-      return "line " + std::to_string(lines.size() + 1) + " is " + std::to_string(end - at) +
-             " characters long (a DXF line holds one code or one value): it is corrupt";
+    if (end - at >= 1023) {
+      const std::string n = std::to_string(lines.size() + 1), length = std::to_string(end - at);
+      return {"line " + n + " is " + length + " characters long (a DXF line holds one code or one value): it is corrupt",
+              "บรรทัด " + n + " ยาว " + length + " ตัวอักษร (บรรทัดของ DXF มีรหัสหรือค่าเพียงหนึ่งอย่าง): ไฟล์เสียหาย"};
+    }
     lines.push_back(line);
     at = end + 1;
   }
@@ -176,9 +180,11 @@ std::string corruptForDxflib(const std::string& text) {
                        (entity == "SPLINE" && code >= 72 && code <= 74);
     // (dxflib keeps strtol's long as an int: -3000000000 becomes 1294967296.)
     const long count = counts ? number(lines[i + 1]) : 0;
-    if (count > limit || static_cast<int>(count) > limit)
-      return "line " + std::to_string(i + 2) + " says " + std::string(lines[i + 1].substr(0, 32)) + " points (group " +
-             std::to_string(code) + "), more than the file holds: it is corrupt";
+    if (count > limit || static_cast<int>(count) > limit) {
+      const std::string n = std::to_string(i + 2), value(lines[i + 1].substr(0, 32)), group = std::to_string(code);
+      return {"line " + n + " says " + value + " points (group " + group + "), more than the file holds: it is corrupt",
+              "บรรทัด " + n + " ระบุจำนวนจุด " + value + " (กลุ่ม " + group + ") มากกว่าที่ไฟล์มีอยู่: ไฟล์เสียหาย"};
+    }
   }
   return {};
 }
@@ -189,6 +195,7 @@ DxfDrawing readDxfDrawing(const std::string& text) {
   Collector c;
   if (text.find('\0') != std::string::npos || text.rfind("AutoCAD Binary DXF", 0) == 0) {
     c.drawing.why = "it is a binary file (save the drawing as ASCII DXF)";
+    c.drawing.whyThai = "เป็นไฟล์ไบนารี (บันทึกแบบเป็น DXF แบบ ASCII)";
     return c.drawing;
   }
   // Every DXF has group code 0 SECTION lines; dxflib reads anything without complaint.
@@ -203,16 +210,19 @@ DxfDrawing readDxfDrawing(const std::string& text) {
   }
   if (!section) {
     c.drawing.why = "it has no SECTION (a DXF file has HEADER and ENTITIES sections)";
+    c.drawing.whyThai = "ไม่มี SECTION (ไฟล์ DXF มีส่วน HEADER และ ENTITIES)";
     return c.drawing;
   }
-  if (std::string why = corruptForDxflib(text); !why.empty()) {
+  if (auto [why, whyThai] = corruptForDxflib(text); !why.empty()) {
     c.drawing.why = std::move(why);
+    c.drawing.whyThai = std::move(whyThai);
     return c.drawing;
   }
   std::istringstream in(text);
   DL_Dxf dxf;
   if (!dxf.in(in, &c)) {
     c.drawing.why = "dxflib could not read it";
+    c.drawing.whyThai = "dxflib อ่านไฟล์นี้ไม่ได้";
     return c.drawing;
   }
   c.finish();

@@ -79,7 +79,7 @@ class Importer {
   void run(const std::string& text) {
     if (text.find_first_not_of(" \t\r\n") == std::string::npos) return fail(codes::kDxfEmpty, {file_});
     const detail::DxfDrawing drawing = detail::readDxfDrawing(text);
-    if (!drawing.parsed) return fail(codes::kDxfNotDxf, {file_, drawing.why});
+    if (!drawing.parsed) return fail(codes::kDxfNotDxf, {file_, drawing.why, drawing.whyThai});
     if (!pickLayer(drawing)) return;
     for (const detail::DxfOddEntity& e : drawing.odd)
       if (e.layer == layer_)

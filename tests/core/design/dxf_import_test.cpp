@@ -207,6 +207,13 @@ TEST(DxfImport, BadDrawingsSayWhatAndWhere) {
                 .second,
             "p.dxf is not an ASCII DXF drawing: line 8 is 3000 characters long (a DXF line holds one code or one "
             "value): it is corrupt");
+  {  // In Thai the reason is Thai too.
+    const auto read = importDxf("0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\nPART\n90\n99999999\n0\nENDSEC\n", "p.dxf");
+    ASSERT_FALSE(read.diagnostics.empty());
+    EXPECT_EQ(formatMessage(read.diagnostics[0], Lang::Th),
+              "p.dxf ไม่ใช่แบบ DXF แบบข้อความ (ASCII): บรรทัด 10 ระบุจำนวนจุด 99999999 (กลุ่ม 90) มากกว่าที่ไฟล์มีอยู่: "
+              "ไฟล์เสียหาย");
+  }
   {  // Truncated in the middle of an entity: a corrupt file, no crash, no design.
     Sketch s;
     drawStepShaft(s, 60, 0);
