@@ -143,14 +143,18 @@ class Collector : public DL_CreationAdapter {
   }
 };
 
-// What dxflib cannot survive, found before it reads: an over-long line (it hangs),
-// and a count beyond the file. dxflib allocates a polyline's vertices, a spline's
-// knots and points and a leader's vertices at the count the file states (groups
-// 90, 72-74, 76), before reading them: a corrupt count of 462 million asked for
-// 14 GB. Each vertex takes at least two groups (four lines), so no true count
-// exceeds the lines.
-// The reason in English and in Thai; empty when dxflib can read the text.
-std::pair<std::string, std::string> corruptForDxflib(const std::string& text) {
+// Why dxflib cannot be given the text, in English and Thai; empty when it can.
+// dxflib reads anything without complaint, except what is checked here first: a
+// binary file; no SECTION (every DXF has one); a line of 1,024 bytes or more
+// (its line buffer's stream fails without reaching its end, and it reads on
+// forever); and a count beyond the file. It allocates a polyline's vertices, a
+// spline's knots and points and a leader's vertices at the count the file states
+// (groups 90, 72-74, 76) before reading them: a corrupt count of 462 million
+// asked for 14 GB. Each vertex takes at least two groups (four lines), so no
+// true count exceeds the lines.
+std::pair<std::string, std::string> unreadableByDxflib(const std::string& text) {
+  if (text.find('\0') != std::string::npos || text.rfind("AutoCAD Binary DXF", 0) == 0)
+    return {"it is a binary file (save the drawing as ASCII DXF)", "เป็นไฟล์ไบนารี (บันทึกแบบเป็น DXF แบบ ASCII)"};
   std::vector<std::string_view> lines;
   for (std::size_t at = 0; at <= text.size();) {
     std::size_t end = text.find('\n', at);
@@ -158,8 +162,6 @@ std::pair<std::string, std::string> corruptForDxflib(const std::string& text) {
     std::string_view line(text.data() + at, end - at);
     while (!line.empty() && std::isspace(static_cast<unsigned char>(line.front()))) line.remove_prefix(1);
     while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.remove_suffix(1);
-    // dxflib reads a line into 1,024 bytes; a longer one leaves its stream failed
-    // but not at its end, and it reads on forever.
     if (end - at >= 1023) {
       const std::string n = std::to_string(lines.size() + 1), length = std::to_string(end - at);
       return {"line " + n + " is " + length + " characters long (a DXF line holds one code or one value): it is corrupt",
@@ -168,6 +170,9 @@ std::pair<std::string, std::string> corruptForDxflib(const std::string& text) {
     lines.push_back(line);
     at = end + 1;
   }
+  if (std::find(lines.begin(), lines.end(), "SECTION") == lines.end())
+    return {"it has no SECTION (a DXF file has HEADER and ENTITIES sections)",
+            "ไม่มี SECTION (ไฟล์ DXF มีส่วน HEADER และ ENTITIES)"};
   const long limit = std::max<long>(1000, static_cast<long>(lines.size()));
   // Codes and counts read as dxflib reads them: the leading number ("90?" is group 90).
   const auto number = [](std::string_view line) { return std::strtol(std::string(line.substr(0, 32)).c_str(), nullptr, 10); };
@@ -193,27 +198,7 @@ std::pair<std::string, std::string> corruptForDxflib(const std::string& text) {
 
 DxfDrawing readDxfDrawing(const std::string& text) {
   Collector c;
-  if (text.find('\0') != std::string::npos || text.rfind("AutoCAD Binary DXF", 0) == 0) {
-    c.drawing.why = "it is a binary file (save the drawing as ASCII DXF)";
-    c.drawing.whyThai = "เป็นไฟล์ไบนารี (บันทึกแบบเป็น DXF แบบ ASCII)";
-    return c.drawing;
-  }
-  // Every DXF has group code 0 SECTION lines; dxflib reads anything without complaint.
-  std::istringstream probe(text);
-  bool section = false;
-  for (std::string line; std::getline(probe, line);) {
-    line.erase(std::remove_if(line.begin(), line.end(), [](unsigned char ch) { return std::isspace(ch); }), line.end());
-    if (line == "SECTION") {
-      section = true;
-      break;
-    }
-  }
-  if (!section) {
-    c.drawing.why = "it has no SECTION (a DXF file has HEADER and ENTITIES sections)";
-    c.drawing.whyThai = "ไม่มี SECTION (ไฟล์ DXF มีส่วน HEADER และ ENTITIES)";
-    return c.drawing;
-  }
-  if (auto [why, whyThai] = corruptForDxflib(text); !why.empty()) {
+  if (auto [why, whyThai] = unreadableByDxflib(text); !why.empty()) {
     c.drawing.why = std::move(why);
     c.drawing.whyThai = std::move(whyThai);
     return c.drawing;
