@@ -187,7 +187,7 @@ class LineParser {
         if (words_[k].letter != 'N' || k != 0)
           report(codes::kStatementNotAlone, words_[k].range.column, words_[k].range.length, {words_[k].text()});
       if (!words_.empty() && words_[0].letter == 'N') block.words.push_back(std::move(words_[0]));
-      for (const Word& w : block.words) block.hasExpressions |= w.expr >= 0;
+      noteWords(block);
       program_.blocks.push_back(std::move(block));
       return;
     }
@@ -199,7 +199,7 @@ class LineParser {
       return;
     }
     block.words.assign(std::make_move_iterator(words_.begin()), std::make_move_iterator(words_.end()));
-    for (const Word& w : block.words) block.hasExpressions |= w.expr >= 0;
+    noteWords(block);
     program_.blocks.push_back(std::move(block));
   }
 
@@ -211,6 +211,15 @@ class LineParser {
   int lineNumber_ = 0;
   // Words of the current line; reused so each block gets one exact allocation.
   std::vector<Word> words_;
+
+  // What the scans ask of a block without reading its words.
+  static void noteWords(Block& block) {
+    block.letters = 0;
+    for (const Word& w : block.words) {
+      block.letters |= Block::letterBit(w.letter);
+      block.hasExpressions |= w.expr >= 0;
+    }
+  }
 
   static void appendComment(Block& block, std::string_view text) {
     while (!text.empty() && isBlank(static_cast<unsigned char>(text.front()))) text.remove_prefix(1);

@@ -189,21 +189,24 @@ ReadResult<ProgramFile> parseProgramFile(std::string_view bytes, const JobHeader
   }
   // UTF-16 text (Notepad's "Unicode") is text, not binary: read it as UTF-8.
   std::string fromUtf16;
-  if (bytes.size() >= 2 && (detail::findNulByte(bytes) || static_cast<unsigned char>(bytes[0]) == 0xFF ||
+  std::optional<detail::BytePosition> nul = detail::findNulByte(bytes);
+  if (bytes.size() >= 2 && (nul || static_cast<unsigned char>(bytes[0]) == 0xFF ||
                             static_cast<unsigned char>(bytes[0]) == 0xFE)) {
     if (std::optional<std::string> utf8 = utf16ToUtf8(bytes)) {
       fromUtf16 = std::move(*utf8);
       bytes = fromUtf16;
+      nul = detail::findNulByte(bytes);
     }
   }
-  if (const auto nul = detail::findNulByte(bytes)) {
+  if (nul) {
     diags.push_back(makeDiagnostic(Severity::Error, codes::kBinaryFile, nul->line, nul->column, 1, {fileName}));
     return result;
   }
 
   ProgramFile file;
   file.header = defaultsForPlain;
-  const std::string text = detail::decodeText(bytes, &file.encoding);
+  std::string fromTis620;
+  const std::string_view text = detail::decodeTextView(bytes, fromTis620, &file.encoding);
   std::vector<std::string_view> lines = detail::splitLines(text);
 
   if (lines.empty()) {
@@ -265,7 +268,7 @@ ReadResult<ProgramFile> parseProgramFile(std::string_view bytes, const JobHeader
                        std::none_of(diags.begin(), diags.end(), [](const Diagnostic& d) { return d.code == codes::kLineTooLong; });
   if (plainLf) {
     if (firstCodeLine < lines.size())
-      code.assign(text, static_cast<std::size_t>(lines[firstCodeLine].data() - text.data()));
+      code.assign(text.substr(static_cast<std::size_t>(lines[firstCodeLine].data() - text.data())));
     result.value = std::move(file);
     return result;
   }

@@ -44,9 +44,15 @@ std::optional<std::string> readFileBytes(const std::string& path, std::vector<Di
     diags.push_back(makeDiagnostic(Severity::Error, codes::kFileTooLarge, 0, 0, 0, {path, std::to_string(size)}));
     return std::nullopt;
   }
-  if (!ec && size > 0) bytes.reserve(static_cast<std::size_t>(size));
+  // The size the file reports is read straight into the string (no copy
+  // through a buffer); whatever follows, if it grew, is read in chunks.
+  if (!ec && size > 0) {
+    bytes.resize(static_cast<std::size_t>(size));
+    in.read(bytes.data(), static_cast<std::streamsize>(size));
+    bytes.resize(static_cast<std::size_t>(in.gcount()));
+  }
   char buffer[65536];
-  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+  while (in && (in.read(buffer, sizeof buffer) || in.gcount() > 0)) {
     bytes.append(buffer, static_cast<std::size_t>(in.gcount()));
     if (bytes.size() > maxBytes) {
       diags.push_back(
@@ -77,13 +83,20 @@ std::optional<BytePosition> findNulByte(std::string_view bytes) {
 }
 
 std::string decodeText(std::string_view bytes, SourceEncoding* encoding) {
+  std::string converted;
+  const std::string_view text = decodeTextView(bytes, converted, encoding);
+  return converted.empty() ? std::string(text) : converted;
+}
+
+std::string_view decodeTextView(std::string_view bytes, std::string& converted, SourceEncoding* encoding) {
   if (bytes.substr(0, 3) == "\xEF\xBB\xBF") bytes.remove_prefix(3);
   if (isValidUtf8(bytes)) {
     if (encoding) *encoding = SourceEncoding::Utf8;
-    return std::string(bytes);
+    return bytes;
   }
   if (encoding) *encoding = SourceEncoding::Tis620;
-  return tis620ToUtf8(bytes);
+  converted = tis620ToUtf8(bytes);
+  return converted;
 }
 
 std::vector<std::string_view> splitLines(std::string_view text) {

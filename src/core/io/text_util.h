@@ -31,6 +31,9 @@ std::optional<BytePosition> findNulByte(std::string_view bytes);
 
 // UTF-8 text with the BOM removed; TIS-620 bytes converted when not valid UTF-8.
 std::string decodeText(std::string_view bytes, SourceEncoding* encoding = nullptr);
+// The same without a copy of UTF-8 text: a view into bytes, or into
+// `converted` when the bytes were TIS-620.
+std::string_view decodeTextView(std::string_view bytes, std::string& converted, SourceEncoding* encoding = nullptr);
 
 // Lines split at LF, CRLF or CR; a line end after the last line does not start a new line.
 std::vector<std::string_view> splitLines(std::string_view text);

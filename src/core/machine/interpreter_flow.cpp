@@ -258,6 +258,7 @@ bool Interpreter::evaluateWords(const Block& b) {
   scratch_.file = b.file;
   scratch_.statement = b.statement;
   scratch_.hasExpressions = false;
+  scratch_.letters = b.letters;  // its words are a subset of b's
   scratch_.words.clear();
   for (const Word& w : b.words) {
     if (w.expr < 0) {

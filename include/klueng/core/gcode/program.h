@@ -85,15 +85,27 @@ struct Block {
   int file = 0;                 // Program::files index: 0 = the program itself, else a subprogram file
   bool blockSkip = false;       // started with '/'
   bool hasExpressions = false;  // some word's value is an expression (evaluated when the block runs)
+  // The address letters of its words, one bit each ('A' = bit 0): a superset
+  // is always right, so a block built by hand keeps all bits set. parse()
+  // sets it exactly, and find() then answers "no such word" from the block
+  // alone, without touching its words (their own allocation: a cache miss).
+  std::uint32_t letters = ~std::uint32_t{0};
+
+  static constexpr std::uint32_t letterBit(char letter) {
+    return letter >= 'A' && letter <= 'Z' ? std::uint32_t{1} << (letter - 'A') : 0;
+  }
+  bool mayHave(char letter) const { return (letters & letterBit(letter)) != 0; }
 
   // The first word of a letter (comma words ',C' excluded: findComma).
   // (Inline: the checker and the scans ask several letters of every block.)
   const Word* find(char letter) const {
+    if (!mayHave(letter)) return nullptr;
     for (const Word& w : words)
       if (w.letter == letter && !w.comma) return &w;
     return nullptr;
   }
   const Word* findComma(char letter) const {
+    if (!mayHave(letter)) return nullptr;
     for (const Word& w : words)
       if (w.letter == letter && w.comma) return &w;
     return nullptr;
@@ -122,15 +134,20 @@ struct Block {
       const Word* end_;
       char letter_;
     };
-    LetterWords(const std::vector<Word>& words, char letter) : words_(words), letter_(letter) {}
-    iterator begin() const { return {words_.data(), words_.data() + words_.size(), letter_}; }
+    LetterWords(const std::vector<Word>& words, char letter, bool present)
+        : words_(words), letter_(letter), present_(present) {}
+    iterator begin() const {
+      const Word* end = words_.data() + words_.size();
+      return {present_ ? words_.data() : end, end, letter_};
+    }
     iterator end() const { return {words_.data() + words_.size(), words_.data() + words_.size(), letter_}; }
 
    private:
     const std::vector<Word>& words_;
     char letter_;
+    bool present_;
   };
-  LetterWords all(char letter) const { return LetterWords(words, letter); }
+  LetterWords all(char letter) const { return LetterWords(words, letter, mayHave(letter)); }
 };
 
 struct Program {
