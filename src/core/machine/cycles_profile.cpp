@@ -12,7 +12,7 @@ namespace klueng::core::machine::cycles::detail {
 std::optional<CycleAlarm> readProfile(const CycleInput& in, const Block& cycle, bool withFeed, Profile& out) {
   if (in.readProfile) return (*in.readProfile)(cycle, in.gWord, withFeed, out);
   const Word* pw = cycle.find('P');
-  return alarmAt(codes::kNoProfileBlock, pw, cycle, {in.gWord ? "G" + in.gWord->number : "G7x", "P", pw ? pw->number : ""});
+  return alarmAt(codes::kNoProfileBlock, pw, cycle, {in.gWord ? "G" + in.gWord->number : "G7x", "P", pw ? pw->number.str() : ""});
 }
 
 void movesOnly(Profile& p) {

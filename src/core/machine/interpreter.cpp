@@ -272,7 +272,7 @@ bool Interpreter::selectTool(const Word& t) {
   const int stations = profile_.maxToolStation > 0 ? std::min(profile_.maxToolStation, tableStations) : tableStations;
   const int offsets = std::min(profile_.maxOffset, static_cast<int>(offsets_.offsets.size()));
   // A T from a macro expression skips the checker: refuse what no turret has.
-  if (value < 0) return raise(codes::kNoSuchStation, &t, {wordText(t), t.number, fmt::format("{:02d}", stations)});
+  if (value < 0) return raise(codes::kNoSuchStation, &t, {wordText(t), t.number.str(), fmt::format("{:02d}", stations)});
   if (tool > stations)
     return raise(codes::kNoSuchStation, &t, {wordText(t), fmt::format("{:02d}", tool), fmt::format("{:02d}", stations)});
   if (offset > offsets)

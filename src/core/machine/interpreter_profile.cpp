@@ -134,10 +134,10 @@ std::optional<cycles::CycleAlarm> Interpreter::readProfile(const Block& cycle, c
   // first in the program), Q the first at or after P.
   const int section = index_.sectionOf(blockIndex_);
   out.ns = index_.findSequence(section, pw->code(), blockIndex_);
-  if (out.ns < 0) return alarmAt(codes::kNoProfileBlock, pw, {name, "P", pw->number});
+  if (out.ns < 0) return alarmAt(codes::kNoProfileBlock, pw, {name, "P", pw->number.str()});
   out.nf = index_.findSequence(section, qw->code(), out.ns - 1);
   if (out.nf < out.ns) out.nf = -1;
-  if (out.nf < 0) return alarmAt(codes::kNoProfileBlock, qw, {name, "Q", qw->number});
+  if (out.nf < 0) return alarmAt(codes::kNoProfileBlock, qw, {name, "Q", qw->number.str()});
   if (capture_) return alarmAt(codes::kProfileCommandNotAllowed, g, {name, std::to_string(cycle.line)});
 
   // Everything a block can change, put back when the profile has been read.
@@ -215,7 +215,7 @@ std::optional<cycles::CycleAlarm> Interpreter::readProfile(const Block& cycle, c
   const auto moves = std::count_if(out.moves.begin(), out.moves.end(), [](const cycles::Step& s) {
     return s.kind == cycles::StepKind::Rapid || s.kind == cycles::StepKind::Feed;
   });
-  if (moves < 2) return alarmAt(codes::kProfileHasNoMoves, pw, {name, pw->number, qw->number});
+  if (moves < 2) return alarmAt(codes::kProfileHasNoMoves, pw, {name, pw->number.str(), qw->number.str()});
   return std::nullopt;
 }
 

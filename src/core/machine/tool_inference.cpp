@@ -337,7 +337,7 @@ class Scanner {
     } else if (cycle >= 71 && cycle <= 73) {
       const gcode::Word* allowance = b.find('U');
       if (b.find('P') && allowance && allowance->value < 0.0)
-        note(ToolKind::Boring, ToolReason::Boring, fmt::format("{} U{}", gText(cycle), allowance->number), b.line);
+        note(ToolKind::Boring, ToolReason::Boring, fmt::format("{} U{}", gText(cycle), allowance->number.view()), b.line);
       else if (b.find('P'))
         note(ToolKind::Turning, ToolReason::Turning, gText(cycle), b.line, false);
     } else if (cycle == 70 || cycle == 90 || cycle == 94) {

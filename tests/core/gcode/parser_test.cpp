@@ -26,7 +26,7 @@ struct WordView {
 
 std::vector<WordView> wordsOf(const Block& b) {
   std::vector<WordView> out;
-  for (const Word& w : b.words) out.push_back({w.letter, w.number, w.range.column, w.range.length});
+  for (const Word& w : b.words) out.push_back({w.letter, w.number.str(), w.range.column, w.range.length});
   return out;
 }
 

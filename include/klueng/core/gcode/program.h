@@ -6,12 +6,13 @@
 #include <vector>
 
 #include "klueng/core/diagnostic.h"
+#include "klueng/core/gcode/word_number.h"
 
 namespace klueng::core::gcode {
 
 struct Word {
   // (Members ordered to avoid padding: a big program holds millions of words.)
-  // (64 bytes: the flags and the digit count share the first eight with expr.)
+  // (48 bytes: the flags and the digit count share the first eight with expr.)
   char letter = 0;          // upper-case address letter, 'A'..'Z'
   bool hasDecimalPoint : 1 = false;
   bool colon : 1 = false;   // an ISO ':' program number (":0100"), stored as letter 'O'
@@ -21,7 +22,7 @@ struct Word {
                             // expression (X#101, Z-[#1+2.]); value is 0 then and number holds
                             // the expression as written ("#101", "-[#1+2.]")
   double value = 0.0;       // numeric value as written (mm or inch, diameters for X/U)
-  std::string number;       // the number exactly as written ("01", "-.5", "25.")
+  WordNumber number;        // the number exactly as written ("01", "-.5", "25.")
                             // (an O word written ':0100' has colon set and number "0100")
   SourceRange range;        // covers letter and number
 
@@ -32,6 +33,7 @@ struct Word {
   // The word as written, for messages: "X25.4", ":0100".
   std::string text() const { return (colon ? ':' : letter) + number; }
 };
+static_assert(sizeof(Word) == 48, "a Word is 48 bytes: big programs hold millions");
 
 // Custom macro B statements (Fanuc 0i-TF manual, custom macro chapter; Haas
 // reads the same). A statement block holds only its statement (and an N word).
