@@ -85,6 +85,7 @@ class Checker {
         profile_(machineProfile(options.dialect)),
         out_(out),
         letters_(spaced(profile_.letters)),
+        allowedLetters_(letterMask(profile_.letters)),
         inch_(options.powerOnUnits.value_or(profile_.powerOnUnits) == InputUnits::Inch) {}
 
   bool full() const { return full_; }
@@ -335,11 +336,18 @@ class Checker {
   const MachineProfile& profile_;
   std::vector<Diagnostic>& out_;
   std::string letters_;  // the profile's letters, spaced, for E201
+  std::uint32_t allowedLetters_;  // the profile's letters, one bit each (Block::letterBit)
   bool inch_;            // inch in force: G20 seen last, or inch at power-on
   int motion_ = 0;      // group 01 code in force (G00 at start)
   bool full_ = false;
 
-  bool allowed(char l) const { return profile_.letters.find(l) != std::string_view::npos; }
+  // (A bit test: it is asked twice for every word of the program.)
+  bool allowed(char l) const { return (allowedLetters_ & Block::letterBit(l)) != 0; }
+  static std::uint32_t letterMask(std::string_view letters) {
+    std::uint32_t mask = 0;
+    for (char l : letters) mask |= Block::letterBit(l);
+    return mask;
+  }
 
   void emit(const char* code, const Word& w, std::vector<std::string> args, Severity severity = Severity::Error) {
     emit(code, w.range, std::move(args), severity);

@@ -24,6 +24,7 @@ std::optional<int> constantValue(const Program& program, int expr) {
 }
 
 const Word* codeWord(const Block& b, char letter, int number) {
+  if (!b.mayHave(letter)) return nullptr;
   for (const Word& w : b.words)
     if (w.letter == letter && w.expr < 0 && !w.hasDecimalPoint && !w.comma && w.code() == number) return &w;
   return nullptr;
@@ -131,20 +132,9 @@ class FlowChecker {
     const Word* p = constantWord(b, 'P');
     const Word* lw = constantWord(b, 'L');
     const std::optional<double> l = lw ? std::optional<double>(lw->value) : std::nullopt;
-    if (const Word* m98 = codeWord(b, 'M', 98); m98 && p) {
-      const CallTarget t = callTarget(p->value, l, profile_.flow.packedRepeats);
-      if (const ProgramSection* callee = index_.program(t.number))
-        calls_.push_back({section, static_cast<int>(callee - index_.sections().data()), m98, index});
-      else emit(codes::kProgramNotFound, p->range, {"M98 " + p->text(), std::to_string(t.number)});
-    }
-    if (const Word* m97 = codeWord(b, 'M', 97); m97 && p && findCode('M', 97, profile_.dialect)) {
-      const CallTarget t = callTarget(p->value, l, false);
-      if (index_.findSequence(section, t.number, index) < 0)
-        emit(codes::kLocalTargetMissing, p->range, {"M97 " + p->text(), std::to_string(t.number)});
-    }
-    if (const Word* m99 = codeWord(b, 'M', 99); m99 && p) hasConditions_[static_cast<std::size_t>(section)] = true;
+    if (p) checkSubprogramCalls(b, p, l, section, index);
     const Word* g65 = codeWord(b, 'G', 65);
-    const Word* g66 = codeWord(b, 'G', 66);
+    const Word* g66 = g65 ? nullptr : codeWord(b, 'G', 66);
     const Word* g = g65 ? g65 : g66;
     if (!g || !profile_.flow.macroB) return;
     for (const Word& w : b.words) {
@@ -160,6 +150,22 @@ class FlowChecker {
         calls_.push_back({section, static_cast<int>(callee - index_.sections().data()), g, index});
       else emit(codes::kProgramNotFound, p->range, {g->text() + " " + p->text(), std::to_string(t.number)});
     }
+  }
+
+  // M98 / M97 / M99 with a constant P (every M of the block is looked at only then).
+  void checkSubprogramCalls(const Block& b, const Word* p, std::optional<double> l, int section, int index) {
+    if (const Word* m98 = codeWord(b, 'M', 98)) {
+      const CallTarget t = callTarget(p->value, l, profile_.flow.packedRepeats);
+      if (const ProgramSection* callee = index_.program(t.number))
+        calls_.push_back({section, static_cast<int>(callee - index_.sections().data()), m98, index});
+      else emit(codes::kProgramNotFound, p->range, {"M98 " + p->text(), std::to_string(t.number)});
+    }
+    if (const Word* m97 = codeWord(b, 'M', 97); m97 && findCode('M', 97, profile_.dialect)) {
+      const CallTarget t = callTarget(p->value, l, false);
+      if (index_.findSequence(section, t.number, index) < 0)
+        emit(codes::kLocalTargetMissing, p->range, {"M97 " + p->text(), std::to_string(t.number)});
+    }
+    if (codeWord(b, 'M', 99)) hasConditions_[static_cast<std::size_t>(section)] = true;
   }
 
   // Call chains through constant calls: deeper than the control allows is an

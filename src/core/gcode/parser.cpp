@@ -39,12 +39,13 @@ std::size_t utf8SequenceLength(std::string_view s, std::size_t i) {
   return n;
 }
 
-// Value of "digits[.digits]" (no sign). Short numbers take the exact fast
-// path: an integer mantissa below 2^53 divided by an exact power of ten is
-// correctly rounded, i.e. the same double strtod gives.
+// Short numbers take the exact fast path: an integer mantissa below 2^53
+// divided by an exact power of ten is correctly rounded, i.e. the same double
+// strtod gives.
+constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+
+// Value of "digits[.digits]" (no sign).
 double parseUnsigned(std::string_view digits, std::size_t digitCount, std::size_t fracDigits) {
-  static constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8,
-                                      1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
   if (digitCount <= 15) {
     std::uint64_t mantissa = 0;
     for (char c : digits)
@@ -247,31 +248,34 @@ class LineParser {
     const std::size_t start = i;
     ++i;
     if (startsAddressExpression(i)) return lexAddressExpression(letter, i, col);
+    // number := [+-]? ( digits [. digits?] | . digits ), read in one pass
+    // with its value (the lexer's hottest loop: every word of the file).
     const std::size_t numberStart = i;
-    while (i < line_.size() && isNumberChar(static_cast<unsigned char>(line_[i]))) ++i;
+    const std::size_t n = line_.size();
+    std::size_t k = i;
+    if (k < n && (line_[k] == '+' || line_[k] == '-')) ++k;
+    const std::size_t intStart = k;
+    std::uint64_t mantissa = 0;  // exact while at most 15 digits (parseUnsigned beyond)
+    while (k < n && isDigit(static_cast<unsigned char>(line_[k]))) mantissa = mantissa * 10 + static_cast<std::uint64_t>(line_[k++] - '0');
+    const std::size_t intDigits = k - intStart;
+    bool point = false;
+    std::size_t fracDigits = 0;
+    if (k < n && line_[k] == '.') {
+      point = true;
+      const std::size_t fracStart = ++k;
+      while (k < n && isDigit(static_cast<unsigned char>(line_[k]))) mantissa = mantissa * 10 + static_cast<std::uint64_t>(line_[k++] - '0');
+      fracDigits = k - fracStart;
+    }
+    // The number as written runs on over every sign, digit and point ("1.2.3", "5-").
+    i = k;
+    while (i < n && isNumberChar(static_cast<unsigned char>(line_[i]))) ++i;
     const std::string_view number = line_.substr(numberStart, i - numberStart);
     const int length = static_cast<int>(i - start);
     if (number.empty()) {
       report(codes::kLoneLetter, col, 1, {std::string(1, letter)});
       return col + 1;
     }
-
-    // number := [+-]? ( digits [. digits?] | . digits )
-    std::size_t k = 0;
-    if (number[k] == '+' || number[k] == '-') ++k;
-    const std::size_t intStart = k;
-    while (k < number.size() && isDigit(static_cast<unsigned char>(number[k]))) ++k;
-    const std::size_t intDigits = k - intStart;
-    bool point = false;
-    std::size_t fracDigits = 0;
-    if (k < number.size() && number[k] == '.') {
-      point = true;
-      ++k;
-      const std::size_t fracStart = k;
-      while (k < number.size() && isDigit(static_cast<unsigned char>(number[k]))) ++k;
-      fracDigits = k - fracStart;
-    }
-    if (k != number.size() || intDigits + fracDigits == 0) {
+    if (i != k || intDigits + fracDigits == 0) {
       report(codes::kMalformedNumber, col, length, {std::string(line_.substr(start, i - start))});
       return col + length;
     }
@@ -281,10 +285,12 @@ class LineParser {
     w.colon = colon;
     w.number.assign(number);
     w.hasDecimalPoint = point;
-    w.decimals = static_cast<int>(fracDigits);
+    w.decimals = static_cast<std::int16_t>(fracDigits);
     w.range = SourceRange{lineNumber_, col, length, file_};
-    const double v = parseUnsigned(number.substr(intStart), intDigits + fracDigits, fracDigits);
-    w.value = number[0] == '-' ? -v : v;
+    const std::size_t digits = intDigits + fracDigits;
+    const double v = digits <= 15 ? static_cast<double>(mantissa) / kPow10[fracDigits]
+                                  : parseUnsigned(line_.substr(intStart, k - intStart), digits, fracDigits);
+    w.value = line_[numberStart] == '-' ? -v : v;
     return col + length;
   }
 
