@@ -56,21 +56,47 @@ double Stock::innerRadius(int i) const {
   return c.empty() ? 0.0 : c.front().lo;
 }
 
+namespace {
+// Largest of p[0..n) (radii, so never below 0). Four running maxima: one
+// would wait on each comparison before the next (this is a hot loop of the cut).
+double maxOf(const double* p, int n) {
+  double m0 = 0.0, m1 = 0.0, m2 = 0.0, m3 = 0.0;
+  int k = 0;
+  for (; k + 4 <= n; k += 4) {
+    m0 = std::max(m0, p[k]);
+    m1 = std::max(m1, p[k + 1]);
+    m2 = std::max(m2, p[k + 2]);
+    m3 = std::max(m3, p[k + 3]);
+  }
+  for (; k < n; ++k) m0 = std::max(m0, p[k]);
+  return std::max(std::max(m0, m1), std::max(m2, m3));
+}
+}  // namespace
+
 double Stock::maxOuterRadius(int first, int last) const {
   first = std::max(first, 0);
   const int end = std::min(last, columnCount() - 1) + 1;
+  if (first >= end) return 0.0;
   auto up = [](int v, int step) { return (v + step - 1) / step * step; };
   auto down = [](int v, int step) { return v / step * step; };
-  double m = 0.0;
-  int i = first;
-  // Columns up to a block, blocks up to a super-block, super-blocks, then back down.
-  for (const int to = std::min(end, up(first, kBlock)); i < to; ++i) m = std::max(m, outer_[static_cast<std::size_t>(i)]);
-  for (const int to = std::min(down(end, kBlock), up(i, kSuper)); i < to; i += kBlock)
-    m = std::max(m, blockMax_[static_cast<std::size_t>(i / kBlock)]);
-  for (; i + kSuper <= end; i += kSuper) m = std::max(m, superMax_[static_cast<std::size_t>(i / kSuper)]);
-  for (const int to = down(end, kBlock); i < to; i += kBlock) m = std::max(m, blockMax_[static_cast<std::size_t>(i / kBlock)]);
-  for (; i < end; ++i) m = std::max(m, outer_[static_cast<std::size_t>(i)]);
-  return m;
+  // Columns up to a block, blocks up to a super-block, super-blocks, then back
+  // down; each level's maxima of consecutive blocks lie side by side.
+  int i = std::min(end, up(first, kBlock));
+  double m = maxOf(outer_.data() + first, i - first);
+  if (const int to = std::min(down(end, kBlock), up(i, kSuper)); to > i) {
+    m = std::max(m, maxOf(blockMax_.data() + i / kBlock, (to - i) / kBlock));
+    i = to;
+  }
+  if (i % kSuper == 0 && end - i >= kSuper) {
+    const int supers = (end - i) / kSuper;
+    m = std::max(m, maxOf(superMax_.data() + i / kSuper, supers));
+    i += supers * kSuper;
+  }
+  if (const int to = down(end, kBlock); to > i) {
+    m = std::max(m, maxOf(blockMax_.data() + i / kBlock, (to - i) / kBlock));
+    i = to;
+  }
+  return std::max(m, maxOf(outer_.data() + i, end - i));
 }
 
 void Stock::updateOuter(int i) {
