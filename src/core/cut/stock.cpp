@@ -120,9 +120,7 @@ void Stock::updateOuter(int i) {
           [&](int k) { return blockMax_[static_cast<std::size_t>(k / kBlock)]; });
 }
 
-double Stock::remove(int i, double lo, double hi) {
-  if (i < 0 || i >= columnCount() || !(hi > lo)) return 0.0;
-  if (lo >= outer_[static_cast<std::size_t>(i)]) return 0.0;  // fast path: above the material
+double Stock::removeFromMaterial(int i, double lo, double hi) {
   auto& c = columns_[static_cast<std::size_t>(i)];
   if (c.size() == 1 && hi >= c[0].hi && lo > c[0].lo) {
     // The common case: turning the outside of a solid or bored column down.
@@ -154,8 +152,7 @@ double Stock::remove(int i, double lo, double hi) {
   return std::numbers::pi * removedArea * dz_;
 }
 
-double Stock::overlap(int i, double lo, double hi) const {
-  if (i < 0 || i >= columnCount() || lo >= outer_[static_cast<std::size_t>(i)]) return 0.0;
+double Stock::overlapWithMaterial(int i, double lo, double hi) const {
   double best = 0.0;
   for (const Interval& in : columns_[static_cast<std::size_t>(i)])
     best = std::max(best, std::min(in.hi, hi) - std::max(in.lo, lo));

@@ -44,9 +44,16 @@ class Stock {
   double maxOuterRadius(int first, int last) const;
 
   // Removes radius range [lo, hi] from column i; returns the removed volume in mm^3.
-  double remove(int i, double lo, double hi);
+  // (Inline: a sweep asks it of every column it passes, mostly above the material.)
+  double remove(int i, double lo, double hi) {
+    if (i < 0 || i >= columnCount() || !(hi > lo) || lo >= outer_[static_cast<std::size_t>(i)]) return 0.0;
+    return removeFromMaterial(i, lo, hi);
+  }
   // Longest overlap, in mm, of radius range [lo, hi] with the material of column i (0 = none).
-  double overlap(int i, double lo, double hi) const;
+  double overlap(int i, double lo, double hi) const {
+    if (i < 0 || i >= columnCount() || lo >= outer_[static_cast<std::size_t>(i)]) return 0.0;
+    return overlapWithMaterial(i, lo, hi);
+  }
 
   double volume() const;          // mm^3 of material left
   double initialVolume() const;   // mm^3 of the bar
@@ -54,6 +61,8 @@ class Stock {
 
  private:
   void updateOuter(int i);
+  double removeFromMaterial(int i, double lo, double hi);         // lo below the column's outer radius
+  double overlapWithMaterial(int i, double lo, double hi) const;  // the same
 
   double diameter_ = 0.0;
   double bore_ = 0.0;
