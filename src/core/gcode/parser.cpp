@@ -39,19 +39,13 @@ std::size_t utf8SequenceLength(std::string_view s, std::size_t i) {
   return n;
 }
 
-// Short numbers take the exact fast path: an integer mantissa below 2^53
-// divided by an exact power of ten is correctly rounded, i.e. the same double
-// strtod gives.
+// Short numbers (at most 15 digits) take the exact fast path in lexWord: an
+// integer mantissa below 2^53 divided by an exact power of ten is correctly
+// rounded, i.e. the same double strtod gives.
 constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
 
-// Value of "digits[.digits]" (no sign).
-double parseUnsigned(std::string_view digits, std::size_t digitCount, std::size_t fracDigits) {
-  if (digitCount <= 15) {
-    std::uint64_t mantissa = 0;
-    for (char c : digits)
-      if (c != '.') mantissa = mantissa * 10 + static_cast<std::uint64_t>(c - '0');
-    return static_cast<double>(mantissa) / kPow10[fracDigits];
-  }
+// Value of a longer "digits[.digits]" (no sign).
+double parseLongUnsigned(std::string_view digits) {
   double v = 0.0;
   const auto result = std::from_chars(digits.data(), digits.data() + digits.size(), v);
   if (result.ec == std::errc::result_out_of_range) v = 1e308;  // reported as out of range by the checker
@@ -255,7 +249,7 @@ class LineParser {
     std::size_t k = i;
     if (k < n && (line_[k] == '+' || line_[k] == '-')) ++k;
     const std::size_t intStart = k;
-    std::uint64_t mantissa = 0;  // exact while at most 15 digits (parseUnsigned beyond)
+    std::uint64_t mantissa = 0;  // exact while at most 15 digits (parseLongUnsigned beyond)
     while (k < n && isDigit(static_cast<unsigned char>(line_[k]))) mantissa = mantissa * 10 + static_cast<std::uint64_t>(line_[k++] - '0');
     const std::size_t intDigits = k - intStart;
     bool point = false;
@@ -289,7 +283,7 @@ class LineParser {
     w.range = SourceRange{lineNumber_, col, length, file_};
     const std::size_t digits = intDigits + fracDigits;
     const double v = digits <= 15 ? static_cast<double>(mantissa) / kPow10[fracDigits]
-                                  : parseUnsigned(line_.substr(intStart, k - intStart), digits, fracDigits);
+                                  : parseLongUnsigned(line_.substr(intStart, k - intStart));
     w.value = line_[numberStart] == '-' ? -v : v;
     return col + length;
   }
