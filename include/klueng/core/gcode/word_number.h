@@ -43,6 +43,12 @@ class WordNumber {
   ~WordNumber() { release(); }
 
   void assign(std::string_view text) {
+    if (!onHeap() && text.size() <= kInlineCapacity) {
+      // The lexer's case: stays inside (memmove: text may be this number's own).
+      if (!text.empty()) std::memmove(buf_, text.data(), text.size());
+      buf_[kTag] = static_cast<char>(text.size());
+      return;
+    }
     // (text may point into this number: build the new value before freeing the old.)
     WordNumber fresh(text);
     *this = std::move(fresh);
