@@ -124,9 +124,12 @@ class Collector : public DL_CreationAdapter {
       DxfSegment s = segment(a, b);
       s.arc = true;
       s.ccw = v.bulge > 0.0;
-      s.radius = std::abs(chord * (1.0 + v.bulge * v.bulge) / (4.0 * v.bulge));
+      // A bulge past a million is an arc of R over 10000 on any chord above 0.04 mm
+      // (refused later as too large): held there, b*b cannot overflow.
+      const double bulge = std::clamp(v.bulge, -1e6, 1e6);
+      s.radius = std::abs(chord * (1.0 + bulge * bulge) / (4.0 * bulge));
       const Vec2 dir = (b - a) / chord, left(-dir.y(), dir.x());
-      s.centre = (a + b) / 2.0 + left * (chord / 2.0) * (1.0 - v.bulge * v.bulge) / (2.0 * v.bulge);
+      s.centre = (a + b) / 2.0 + left * (chord / 2.0) * (1.0 - bulge * bulge) / (2.0 * bulge);
       drawing.segments.push_back(s);
     }
     vertices_.clear();
@@ -185,6 +188,17 @@ std::pair<std::string, std::string> unreadableByDxflib(const std::string& text) 
                        (entity == "SPLINE" && code >= 72 && code <= 74);
     // (dxflib keeps strtol's long as an int: -3000000000 becomes 1294967296.)
     const long count = counts ? number(lines[i + 1]) : 0;
+    // Reals (points 10-39, values 40-59): dxflib takes inf and nan as they come,
+    // and an infinite bulge or coordinate makes no arc or point of a part.
+    if (code >= 10 && code <= 59) {
+      std::string value(lines[i + 1].substr(0, 64));
+      std::replace(value.begin(), value.end(), ',', '.');  // as dxflib reads a decimal comma
+      if (!std::isfinite(std::strtod(value.c_str(), nullptr))) {
+        const std::string n = std::to_string(i + 2);
+        return {"line " + n + " holds " + value + ", which is not a finite number: it is corrupt",
+                "บรรทัด " + n + " มีค่า " + value + " ซึ่งไม่ใช่ตัวเลขที่มีค่าจำกัด (เป็นอนันต์หรือไม่ใช่ตัวเลข): ไฟล์เสียหาย"};
+      }
+    }
     if (count > limit || static_cast<int>(count) > limit) {
       const std::string n = std::to_string(i + 2), value(lines[i + 1].substr(0, 32)), group = std::to_string(code);
       return {"line " + n + " says " + value + " points (group " + group + "), more than the file holds: it is corrupt",

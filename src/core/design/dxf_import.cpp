@@ -305,7 +305,7 @@ class Importer {
       if (round3(len) <= 0.0 && !isFace(w)) continue;  // a sliver drawn by the CAD's rounding
       if (d <= 0.0 || (grooves && std::abs(w.b.y()) <= kJoin))
         return fail(codes::kDxfReachesAxis, {file_, X(w.b), Y(w.b)}), false;
-      if (w.arc && w.radius > 10000.0) return fail(codes::kDxfArcTooFlat, {file_, mm(w.radius / scale_), X(w.b), Y(w.b)}), false;
+      if (w.arc && !(w.radius <= 10000.0)) return fail(codes::kDxfArcTooFlat, {file_, mm(w.radius / scale_), X(w.b), Y(w.b)}), false;
       if (isFlat(w)) {
         // The cylinder beyond a groove goes on as the same step.
         if (!afterFace && !steps.empty() && steps.back().kind == StepKind::Cylinder &&

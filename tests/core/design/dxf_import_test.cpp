@@ -331,5 +331,51 @@ TEST(DxfImport, AnArcFlatterThanTheRoundingIsALineAndAHugeOneIsRefused) {
   }
 }
 
+// A taper polyline whose one bulge (group 42) is written as `bulge`, and the
+// file line that holds it. (Text, not a double: dxflib's writer prints a real
+// with %f into a fixed buffer, so it cannot write 1e300 itself.)
+std::pair<std::string, int> withBulge(const std::string& bulge) {
+  Sketch s;
+  s.polyline({{100, 0, 0}, {100, 10, 0}, {80, 10, 0.25}, {50, 12, 0}, {50, 0, 0}}, false);
+  std::string text = s.text();
+  std::size_t at = 0;
+  int line = 1;
+  for (std::size_t next; (next = text.find('\n', at)) != std::string::npos; at = next + 1, ++line) {
+    std::string_view code(text.data() + at, next - at);
+    while (!code.empty() && code.front() == ' ') code.remove_prefix(1);
+    if (line % 2 == 1 && code == "42") {
+      const std::size_t value = next + 1, valueEnd = text.find('\n', value);
+      text.replace(value, valueEnd - value, bulge);
+      return {text, line + 1};
+    }
+  }
+  ADD_FAILURE() << "the sketch has no bulge";
+  return {text, 0};
+}
+
+// Found by fuzz_design: a bulge too big for a double (dxflib reads -1e405 as
+// -1.8e308) made an arc of radius NaN, written to the part file as null.
+TEST(DxfImport, ABulgeOrCoordinateBeyondADoubleIsRefusedAtItsLine) {
+  const auto [text, line] = withBulge("-1e405");
+  const auto [id, message] = firstProblem(text);
+  EXPECT_EQ(id, "F185");
+  EXPECT_EQ(message, fmt::format("p.dxf is not an ASCII DXF drawing: line {} holds -1e405, which is not a finite "
+                                 "number: it is corrupt", line));
+  // A decimal comma is read as dxflib reads it: "1,5e999" is beyond a double too.
+  EXPECT_EQ(firstProblem(withBulge("1,5e999").first).first, "F185");
+  EXPECT_EQ(firstProblem(withBulge("nan").first).first, "F185");
+}
+
+TEST(DxfImport, AHugeFiniteBulgeIsAnArcTooLargeNotANumberlessOne) {
+  for (const char* bulge : {"1e300", "-1.7e308"}) {
+    const auto read = importDxf(withBulge(bulge).first, "p.dxf");
+    ASSERT_FALSE(read.ok()) << bulge;
+    const std::string message = formatMessage(read.diagnostics[0], Lang::En);
+    EXPECT_EQ(read.diagnostics[0].code, std::string("F197")) << message;
+    EXPECT_EQ(message.find("nan"), std::string::npos) << message;
+    EXPECT_EQ(message.find("inf"), std::string::npos) << message;
+  }
+}
+
 }  // namespace
 }  // namespace klueng::core::design
