@@ -178,7 +178,8 @@ std::pair<std::string, std::string> unreadableByDxflib(const std::string& text) 
             "ไม่มี SECTION (ไฟล์ DXF มีส่วน HEADER และ ENTITIES)"};
   const long limit = std::max<long>(1000, static_cast<long>(lines.size()));
   // Codes and counts read as dxflib reads them: the leading number ("90?" is group 90).
-  const auto number = [](std::string_view line) { return std::strtol(std::string(line.substr(0, 32)).c_str(), nullptr, 10); };
+  // (The whole line, as dxflib reads it: "0000…0244839779" is 244839779 whatever its length.)
+  const auto number = [](std::string_view line) { return std::strtol(std::string(line).c_str(), nullptr, 10); };
   std::string_view entity;
   for (std::size_t i = 0; i + 1 < lines.size(); i += 2) {
     const long code = number(lines[i]);
@@ -191,16 +192,17 @@ std::pair<std::string, std::string> unreadableByDxflib(const std::string& text) 
     // Reals (points 10-39, values 40-59): dxflib takes inf and nan as they come,
     // and an infinite bulge or coordinate makes no arc or point of a part.
     if (code >= 10 && code <= 59) {
-      std::string value(lines[i + 1].substr(0, 64));
+      std::string value(lines[i + 1]);
       std::replace(value.begin(), value.end(), ',', '.');  // as dxflib reads a decimal comma
       if (!std::isfinite(std::strtod(value.c_str(), nullptr))) {
         const std::string n = std::to_string(i + 2);
+        value.resize(std::min<std::size_t>(value.size(), 32));
         return {"line " + n + " holds " + value + ", which is not a finite number: it is corrupt",
                 "บรรทัด " + n + " มีค่า " + value + " ซึ่งไม่ใช่ตัวเลขที่มีค่าจำกัด (เป็นอนันต์หรือไม่ใช่ตัวเลข): ไฟล์เสียหาย"};
       }
     }
     if (count > limit || static_cast<int>(count) > limit) {
-      const std::string n = std::to_string(i + 2), value(lines[i + 1].substr(0, 32)), group = std::to_string(code);
+      const std::string n = std::to_string(i + 2), value = std::to_string(count), group = std::to_string(code);
       return {"line " + n + " says " + value + " points (group " + group + "), more than the file holds: it is corrupt",
               "บรรทัด " + n + " ระบุจำนวนจุด " + value + " (กลุ่ม " + group + ") มากกว่าที่ไฟล์มีอยู่: ไฟล์เสียหาย"};
     }

@@ -199,6 +199,12 @@ TEST(DxfImport, BadDrawingsSayWhatAndWhere) {
   EXPECT_EQ(firstProblem("0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\nPART\n90?\n622222222222222222222\n0\nENDSEC\n")
                 .first,
             "F185");
+  // Found by fuzz_design: a count behind 40 leading zeros (dxflib reads the whole line: 7.8 GB).
+  EXPECT_EQ(firstProblem("0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\nPART\n90\n" + std::string(40, '0') +
+                         "244839779\n0\nENDSEC\n")
+                .second,
+            "p.dxf is not an ASCII DXF drawing: line 10 says 244839779 points (group 90), more than the file "
+            "holds: it is corrupt");
   // A negative count that dxflib's int makes 1,294,967,296.
   EXPECT_EQ(firstProblem("0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\nPART\n90\n-3000000000\n0\nENDSEC\n").first, "F185");
   // A layer name of 3,000 characters: dxflib would read on forever (its lines hold 1,023).
