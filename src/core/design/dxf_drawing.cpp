@@ -150,7 +150,7 @@ class Collector : public DL_CreationAdapter {
 // dxflib reads anything without complaint, except what is checked here first: a
 // binary file; no SECTION (every DXF has one); a line of 1,024 bytes or more
 // (its line buffer's stream fails without reaching its end, and it reads on
-// forever); and a count beyond the file. It allocates a polyline's vertices, a
+// forever); a real that is no finite double; and a count beyond the file. It allocates a polyline's vertices, a
 // spline's knots and points and a leader's vertices at the count the file states
 // (groups 90, 72-74, 76) before reading them: a corrupt count of 462 million
 // asked for 14 GB. Each vertex takes at least two groups (four lines), so no
@@ -189,8 +189,9 @@ std::pair<std::string, std::string> unreadableByDxflib(const std::string& text) 
                        (entity == "SPLINE" && code >= 72 && code <= 74);
     // (dxflib keeps strtol's long as an int: -3000000000 becomes 1294967296.)
     const long count = counts ? number(lines[i + 1]) : 0;
-    // Reals (points 10-39, values 40-59): dxflib takes inf and nan as they come,
-    // and an infinite bulge or coordinate makes no arc or point of a part.
+    // Reals (points 10-39, values 40-59): dxflib reads them with istream >>, which
+    // turns a number past a double into +-1.8e308 and "nan" into 0 without a word;
+    // neither is a drawing's number, so both are refused here with their line.
     if (code >= 10 && code <= 59) {
       std::string value(lines[i + 1]);
       std::replace(value.begin(), value.end(), ',', '.');  // as dxflib reads a decimal comma
