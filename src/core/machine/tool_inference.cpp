@@ -216,13 +216,9 @@ class Scanner {
       std::size_t k = 0;
       while (k < text.size() && text[k] == ' ') ++k;
       if (k >= text.size() || (text[k] != 'T' && text[k] != 't')) continue;
-      std::size_t d = k + 1;
-      while (d < text.size() && d - k <= 4 && text[d] >= '0' && text[d] <= '9') ++d;
-      const std::size_t digits = d - k - 1;
-      if (digits == 0 || digits > 4 || (d < text.size() && text[d] >= '0' && text[d] <= '9')) continue;
-      const int value = std::stoi(text.substr(k + 1, digits));
-      const int station = digits <= 2 ? value : value / 100;
-      if (station >= 1 && station <= io::kMaxStations && !toolList_.count(station)) toolList_[station] = line;
+      // "(T1 OD TURN, T3 THREAD)" lists two stations.
+      for (const detail::CommentToolWord& w : detail::toolWordsIn(std::string_view(text).substr(k)))
+        if (w.station >= 1 && w.station <= io::kMaxStations && !toolList_.count(w.station)) toolList_[w.station] = line;
     }
   }
 
@@ -251,7 +247,8 @@ class Scanner {
     for (int l = b.line + 1; l <= b.line + 2 && !blockLine(l); ++l) candidates.push_back(l);
     if (auto listed = toolList_.find(station); listed != toolList_.end()) candidates.push_back(listed->second);
     for (int l : candidates) {
-      const std::string text = rawComment(l);
+      const std::string whole = rawComment(l);
+      const std::string text(detail::commentForStation(whole, station));  // its part of "(T1 OD, T3 THREAD)"
       if (text.empty()) continue;
       const detail::CommentTool c = detail::classifyComment(text);
       if (c.kind == ToolKind::Unknown) continue;

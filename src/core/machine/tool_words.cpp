@@ -1,5 +1,6 @@
 #include "machine/tool_words.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
 #include <initializer_list>
@@ -124,6 +125,39 @@ CommentTool classifyComment(std::string_view comment) {
     out.kind = ToolKind::Turning;
   }
   return out;
+}
+
+std::vector<CommentToolWord> toolWordsIn(std::string_view comment) {
+  const auto isDigit = [&](std::size_t i) { return i < comment.size() && comment[i] >= '0' && comment[i] <= '9'; };
+  std::vector<CommentToolWord> out;
+  std::vector<std::size_t> starts;
+  for (std::size_t i = 0; i < comment.size(); ++i) {
+    if (comment[i] != 'T' && comment[i] != 't') continue;
+    if (i > 0 && std::isalnum(static_cast<unsigned char>(comment[i - 1]))) continue;  // "OUT1", "PT2"
+    std::size_t d = i + 1;
+    while (isDigit(d) && d - i <= 4) ++d;
+    const std::size_t digits = d - i - 1;
+    if (digits == 0 || isDigit(d)) continue;
+    int value = 0;
+    for (std::size_t k = i + 1; k < d; ++k) value = value * 10 + (comment[k] - '0');
+    out.push_back({digits <= 2 ? value : value / 100, comment.substr(i)});
+    starts.push_back(i);
+  }
+  for (std::size_t n = 0; n + 1 < out.size(); ++n) {
+    std::string_view& t = out[n].text;
+    t = t.substr(0, starts[n + 1] - starts[n]);
+    while (!t.empty() && (t.back() == ' ' || t.back() == ',' || t.back() == ';' || t.back() == '/')) t.remove_suffix(1);
+  }
+  return out;
+}
+
+std::string_view commentForStation(std::string_view comment, int station) {
+  const std::vector<CommentToolWord> named = toolWordsIn(comment);
+  if (std::all_of(named.begin(), named.end(), [&](const CommentToolWord& w) { return w.station == station; }))
+    return comment;  // "(OD TURN T0101)": all of it is about this station
+  for (const CommentToolWord& w : named)
+    if (w.station == station) return w.text;
+  return {};
 }
 
 }  // namespace klueng::core::machine::detail

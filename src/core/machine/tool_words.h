@@ -3,6 +3,7 @@
 // (Haas and Fanuc shop habits) and Thai (GLOSSARY.md). Private to machine.
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "klueng/core/io/tool_library.h"
 
@@ -17,5 +18,19 @@ struct CommentTool {
 
 // Unknown kind when the comment names no tool.
 CommentTool classifyComment(std::string_view comment);
+
+// A T word written inside a comment ("T1", "T0303"): the station it names (1-2
+// digits as written, 3-4 digits = station and offset) and the part of the
+// comment that speaks of it: from the word up to the next T word.
+struct CommentToolWord {
+  int station = 0;
+  std::string_view text;
+};
+std::vector<CommentToolWord> toolWordsIn(std::string_view comment);
+
+// What a comment says of one station: all of it when it names no station,
+// "T1 OD TURN" of "T1 OD TURN, T3 THREAD" for station 1, nothing when it
+// names only other stations.
+std::string_view commentForStation(std::string_view comment, int station);
 
 }  // namespace klueng::core::machine::detail

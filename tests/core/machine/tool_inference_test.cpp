@@ -228,6 +228,31 @@ TEST(ToolInference, FinishAndInsertNamesPickTheInsert) {
   expectChoice(r, 3, "cnmg-80-r08", ToolReason::Comment, 8);
 }
 
+TEST(ToolInference, AToolListOnOneLineGivesEachStationItsOwnWords) {
+  MachineSetup empty = shippedSetup();
+  for (auto& b : empty.tools.bitmap) b.clear();
+  const std::string text =
+      "O01234 (BOLT)\n"                          // 1
+      "(T1 OD TURN, T3 THREAD, T12 CUT OFF)\n"   // 2
+      "G20 G99\n"                                // 3
+      "T101\n"                                   // 4
+      "G00 X1.1 Z0.1\n"                          // 5
+      "G01 Z-1. F0.01\n"                         // 6
+      "G00 X2. (ROUGH TO T3 SIZE)\n"             // 7
+      "T303\n"                                   // 8
+      "G00 X1.1 Z0.2\n"                          // 9
+      "T1212\n"                                  // 10
+      "G00 X1.1 Z-1.5\n"                         // 11
+      "M30\n";
+  const ToolInference r = infer(text, empty);
+  expectChoice(r, 1, "cnmg-80-r08", ToolReason::Comment, 2, "T1 OD TURN");
+  expectChoice(r, 3, "threading-60", ToolReason::Comment, 2, "T3 THREAD");
+  expectChoice(r, 12, "parting-3mm", ToolReason::Comment, 2, "T12 CUT OFF");
+  // A T block's own comment naming only its station is read whole.
+  const ToolInference own = infer("T0303 (THREAD OD T0303)\nG00 X30. Z2.\nM30\n", empty);
+  expectChoice(own, 3, "threading-60", ToolReason::Comment, 1, "THREAD OD T0303");
+}
+
 TEST(StationOverride, ParsesNEqualsId) {
   const io::ToolLibrary& lib = io::shippedToolLibrary();
   StationOverride o;
