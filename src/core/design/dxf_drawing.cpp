@@ -182,8 +182,10 @@ std::pair<std::string, std::string> unreadableByDxflib(const std::string& text) 
   const auto number = [](std::string_view line) { return std::strtol(std::string(line).c_str(), nullptr, 10); };
   std::string_view entity;
   for (std::size_t i = 0; i + 1 < lines.size(); i += 2) {
-    const long code = number(lines[i]);
-    if (code == 0) entity = lines[i + 1];
+    // dxflib keeps the code as an int (4294967296 is group 0), and starts a new
+    // entity at group 9 as at group 0 (a header variable's 9 names it).
+    const int code = static_cast<int>(number(lines[i]));
+    if (code == 0 || code == 9) entity = lines[i + 1];
     // Only where dxflib allocates by them (an MLEADER's group 90 holds flags, not a count).
     const bool counts = (entity == "LWPOLYLINE" && code == 90) || (entity == "LEADER" && code == 76) ||
                        (entity == "SPLINE" && code >= 72 && code <= 74);

@@ -205,6 +205,13 @@ TEST(DxfImport, BadDrawingsSayWhatAndWhere) {
                 .second,
             "p.dxf is not an ASCII DXF drawing: line 10 says 244839779 points (group 90), more than the file "
             "holds: it is corrupt");
+  // Found by fuzz_design: dxflib starts an entity at group 9 too ("9x0" is 9), and reads a code as an int
+  // (4294967296 is 0); a polyline so begun asked for 14.8 GB.
+  EXPECT_EQ(firstProblem("0\nSECTION\n2\nENTITIES\n9x0\nLWPOLYLINE\n8\nPART\n90\n555555555555552\n0\nENDSEC\n").second,
+            "p.dxf is not an ASCII DXF drawing: line 10 says 555555555555552 points (group 90), more than the file "
+            "holds: it is corrupt");
+  EXPECT_EQ(firstProblem("0\nSECTION\n2\nENTITIES\n4294967296\nLWPOLYLINE\n8\nPART\n90\n462000000\n0\nENDSEC\n").first,
+            "F185");
   // A negative count that dxflib's int makes 1,294,967,296.
   EXPECT_EQ(firstProblem("0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\nPART\n90\n-3000000000\n0\nENDSEC\n").first, "F185");
   // A layer name of 3,000 characters: dxflib would read on forever (its lines hold 1,023).
