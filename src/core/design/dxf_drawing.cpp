@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -224,7 +225,15 @@ DxfDrawing readDxfDrawing(const std::string& text) {
   }
   std::istringstream in(text);
   DL_Dxf dxf;
-  if (!dxf.in(in, &c)) {
+  bool read = false;
+  try {
+    read = dxf.in(in, &c);
+  } catch (const std::exception&) {
+    // dxflib throws on some malformed values (a "999" comment of just "dxflib"
+    // asks for its version at position 7).
+    read = false;
+  }
+  if (!read) {
     c.drawing.why = "dxflib could not read it";
     c.drawing.whyThai = "dxflib อ่านไฟล์นี้ไม่ได้";
     return c.drawing;

@@ -212,6 +212,9 @@ TEST(DxfImport, BadDrawingsSayWhatAndWhere) {
             "holds: it is corrupt");
   EXPECT_EQ(firstProblem("0\nSECTION\n2\nENTITIES\n4294967296\nLWPOLYLINE\n8\nPART\n90\n462000000\n0\nENDSEC\n").first,
             "F185");
+  // dxflib throws reading a "999" comment of just "dxflib" (it takes the version from position 7).
+  EXPECT_EQ(firstProblem("999\ndxflib\n0\nSECTION\n2\nENTITIES\n0\nENDSEC\n0\nEOF\n").second,
+            "p.dxf is not an ASCII DXF drawing: dxflib could not read it");
   // A negative count that dxflib's int makes 1,294,967,296.
   EXPECT_EQ(firstProblem("0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\nPART\n90\n-3000000000\n0\nENDSEC\n").first, "F185");
   // A layer name of 3,000 characters: dxflib would read on forever (its lines hold 1,023).
