@@ -575,6 +575,25 @@ TEST(RealStyleHaas, Spacer_Op2_SecondSetup_G83) {
   EXPECT_NEAR(p.rightFace(), 0.0, kIn);
 }
 
+// O20113: one-block G71 with a P block naming X and Z (the manual's type 2): the
+// profile dips into a Ø0.8 relief neck between two Ø1.0 lands, which a type 1
+// profile cannot; the 35 degree VNMG reaches it; G70 under G42.
+TEST(RealStyleHaas, NeckShaft_G71Type2_Pocket) {
+  const Job job{"haas-13-neck-type2.nc", "haas", "--units inch --stock 1.5x3in --tool 9=vnmg-35-r02", true};
+  RUN_CLEAN(job, r);
+  const Profile& p = r.part;
+  EXPECT_NEAR(p.d(-0.3), 1.0000, kIn);   // X1. from Z-0.05 to Z-0.6
+  EXPECT_NEAR(p.d(-0.95), 0.8000, kIn);  // the neck X0.8 from Z-0.8 to Z-1.1
+  EXPECT_NEAR(p.d(-1.4), 1.0000, kIn);   // X1. from Z-1.2 to Z-1.6
+  EXPECT_NEAR(p.d(-1.9), 1.4000, kIn);   // X1.4 to Z-2.2
+  EXPECT_NEAR(p.d(-2.5), 1.5000, kIn);   // the bar
+  // The neck's walls, half way down: X1. Z-0.6 -> X0.8 Z-0.8 reaches Ø0.9 at Z-0.7,
+  // X0.8 Z-1.1 -> X1. Z-1.2 at Z-1.15 (G42: exact).
+  EXPECT_NEAR(p.edge(-0.6, -0.8, 0.9), -0.7, kIn);
+  EXPECT_NEAR(p.edge(-1.1, -1.2, 0.9), -1.15, kIn);
+  EXPECT_NEAR(p.edge(-1.5, -1.7, 1.2), -1.6, kIn);  // the Ø1.4 shoulder
+}
+
 // ============================================================================
 // Fanuc 0T / 0i-TF programs, mm.
 // ============================================================================
@@ -710,6 +729,27 @@ TEST(RealStyleFanuc, NutM36x1_5_Tube_InternalG76) {
   EXPECT_NEAR(p.inner(-35.0), 30.0, kMm);    // the tube's bore past Z-30.
   EXPECT_NEAR(p.edge(-29.0, -31.0, 32.0, false), -30.0, kMm);
   EXPECT_NEAR(p.d(-20.0), 60.0, kMm);
+}
+
+// O0900 two-block G71 type II (the first profile block names X and W0): a
+// round-bottomed pocket G02 X24. Z-30. R15. between Ø24 lands, roughed level by
+// level and finished by G70 under G42 with the 35 degree VNMG.
+TEST(RealStyleFanuc, Handle_G71TypeII_ArcPocket) {
+  const Job job{"fanuc-09-handle-type2.nc", "fanuc", "--stock 40x90 --tool 9=vnmg-35-r02", false};
+  RUN_CLEAN(job, r);
+  const Profile& p = r.part;
+  EXPECT_NEAR(p.d(-1.0), 22.0, kMm);  // chamfer X20. Z0 -> X24. Z-2., half way
+  EXPECT_NEAR(p.d(-5.0), 24.0, kMm);  // X24. to Z-10.
+  // The arc: chord 20, R15, centre sqrt(225 - 100) = 11.180340 above its middle:
+  // Z-20. at radius 12 + 11.180340. At Z-20.: 2(23.180340 - 15) = 16.360680;
+  // at Z-15.: 2(23.180340 - sqrt(225 - 25)) = 2(23.180340 - 14.142136) = 18.076409.
+  EXPECT_NEAR(p.d(-20.0), 16.3607, kMm);
+  EXPECT_NEAR(p.d(-15.0), 18.0764, kMm);
+  EXPECT_NEAR(p.d(-25.0), 18.0764, kMm);
+  EXPECT_NEAR(p.d(-33.0), 24.0, kMm);  // X24. from Z-30. to Z-36.
+  EXPECT_NEAR(p.edge(-35.0, -37.0, 30.0), -36.0, kMm);
+  EXPECT_NEAR(p.d(-45.0), 36.0, kMm);  // X36. to Z-50.
+  EXPECT_NEAR(p.d(-70.0), 40.0, kMm);  // the bar
 }
 
 }  // namespace

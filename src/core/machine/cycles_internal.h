@@ -127,14 +127,27 @@ std::optional<CycleAlarm> readProfile(const CycleInput& in, const Block& cycle, 
 // Keeps only the moves (roughing cycles ignore G40-G42 inside the profile).
 void movesOnly(Profile& p);
 
-// G71 (swap = false) / G72 (swap = true) roughing of a type I profile: passes
+// G71 (swap = false) / G72 (swap = true) roughing: passes
 // `depth` apart down to the profile offset by `allowance` + `roughAllowance`,
 // each retracted by `retract` at 45 degrees, then one pass along the profile
-// offset by `allowance`. `firstMayMoveAlong`: the first profile block may
-// also move along the passes (Haas: a P block with X and Z).
+// offset by `allowance`. Type I: the profile moves one way in both axes. Type II
+// (X and Z both in the first profile block): one way along the passes, pockets
+// allowed (roughPockets). `firstMayMoveAlong`: the first block may move along
+// the passes without being type II.
 std::optional<CycleAlarm> stockRemoval(const CycleInput& in, Profile& profile, double depth, double retract,
                                        const Vec2& allowance, bool swap, std::vector<Step>& out,
                                        const Vec2& roughAllowance = Vec2::Zero(), bool firstMayMoveAlong = false);
+
+// Type II roughing (cycles_pockets.cpp), in stockRemoval's frame: the passes of a
+// profile `roughed` that moves one way along them but dips into pockets. Each
+// level cuts every stretch where the profile lies beyond it; a pocket is
+// entered over the ridge at the start's height and down its cleared column.
+// Appends to `steps` from `pos` and leaves `pos` where the tool ends.
+std::optional<CycleAlarm> roughPockets(const std::string& g, const SourceRange& where, const Vec2& start,
+                                       const std::vector<Step>& roughed, double depth, double retract, double sa,
+                                       double sb, bool infeedRapid, std::vector<Step>& steps, Vec2& pos);
+// The piece never moves back along the passes (direction sa).
+bool movesOneWayAlong(const Segment& s, double sa);
 
 // G74 peck cycle in the frame where pecks run along the first coordinate
 // (G75: swap before and after): pecks of `peck` with `retract` back between

@@ -93,21 +93,28 @@ std::optional<CycleAlarm> stockRemoval(const CycleInput& in, Profile& profile, d
     roughShift = swapped(roughShift);
   }
   // Type I: the first profile block moves only across the passes (X for G71).
+  // Type II: it names both axes (Fanuc 0i-TF: "W0" will do), and pockets are allowed.
   const Step& first = moves.front();
   const Block& nsBlock = in.program->blocks[static_cast<std::size_t>(profile.blockOf.front())];
-  if (!firstMayMoveAlong && std::abs(first.path.end.x() - first.path.start.x()) > kEps)
+  const bool typeII = (nsBlock.has('X') || nsBlock.has('U')) && (nsBlock.has('Z') || nsBlock.has('W'));
+  if (!firstMayMoveAlong && !typeII && std::abs(first.path.end.x() - first.path.start.x()) > kEps)
     return alarmAt(codes::kProfileFirstBlockAxis, nsBlock.words.empty() ? nullptr : &nsBlock.words.front(), nsBlock,
                    {g, swap ? "Z" : "X"});
   const Vec2 aPrime = first.path.end;
   std::vector<Step> contour(moves.begin() + 1, moves.end());
   const double sb = sign(start.y() - aPrime.y());           // towards the stock
   const double sa = sign(contour.back().path.end.x() - aPrime.x());  // along the passes
-  // The profile must move steadily away from A' in both axes.
+  // The profile must move steadily away from A' in both axes (type II: along the passes).
+  bool pockets = false;
   for (std::size_t i = 0; i < contour.size(); ++i) {
     const auto pts = samples(contour[i].path);
     bool ok = sa != 0.0 && sb != 0.0;
     for (std::size_t j = 1; ok && j < pts.size(); ++j)
       ok = (pts[j].y() - pts[j - 1].y()) * sb >= -1e-4 && (pts[j].x() - pts[j - 1].x()) * sa >= -1e-4;
+    if (!ok && typeII && sa != 0.0 && sb != 0.0 && movesOneWayAlong(contour[i].path, sa)) {
+      pockets = true;
+      continue;
+    }
     if (!ok) {
       const Block& b = in.program->blocks[static_cast<std::size_t>(profile.blockOf[i + 1])];
       return alarmAt(codes::kProfileNotMonotonic, b.words.empty() ? nullptr : &b.words.front(), b, {g, std::to_string(b.line)});
@@ -130,7 +137,18 @@ std::optional<CycleAlarm> stockRemoval(const CycleInput& in, Profile& profile, d
   const bool infeedRapid = first.kind == StepKind::Rapid;
   std::vector<Step> steps;
   Vec2 pos = start;
-  for (int k = 1;; ++k) {
+  if (pockets) {
+    if (auto a = roughPockets(g, in.gWord ? in.gWord->range : SourceRange{}, start, roughed, depth, retract, sa, sb,
+                              infeedRapid, steps, pos))
+      return a;
+    // The last pass starts as the profile does: from the start point.
+    for (const Vec2& p : {Vec2(pos.x(), start.y()), start}) {
+      if ((p - pos).norm() <= kEps) continue;
+      steps.push_back(rapid(pos, p));
+      pos = p;
+    }
+  }
+  for (int k = 1; !pockets; ++k) {
     const double level = start.y() - sb * k * depth;
     if ((level - aRough.y()) * sb <= kEps) break;
     const Vec2 in0(start.x(), level);

@@ -146,7 +146,7 @@ std::vector<CommentToolWord> toolWordsIn(std::string_view comment) {
   for (std::size_t n = 0; n + 1 < out.size(); ++n) {
     std::string_view& t = out[n].text;
     t = t.substr(0, starts[n + 1] - starts[n]);
-    while (!t.empty() && (t.back() == ' ' || t.back() == ',' || t.back() == ';' || t.back() == '/')) t.remove_suffix(1);
+    while (!t.empty() && (t.back() == ' ' || t.back() == ',' || t.back() == ';' || t.back() == '/' || t.back() == '-')) t.remove_suffix(1);
   }
   return out;
 }

@@ -91,8 +91,9 @@ INSTANTIATE_TEST_SUITE_P(
         AlarmCase{"CycleDepthZero", "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U0 R0.5\n", F, "A122", 3, 5, 2},
         AlarmCase{"CycleUnderNoseComp", "G98 G97 S500 M03 T0101\nG42 G00 X50. Z2.\nG71 U2. R0.5\n", F, "A123",
                   3, 1, 2},
-        AlarmCase{"CycleProfileTypeII", "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\n"
-                  "G71 P10 Q20 F100.\nN10 G00 X30. Z0.\nN20 G01 Z-20.\n", F,
+        // A first block that moves along Z without naming X is neither type I nor II.
+        AlarmCase{"CycleProfileFirstBlockAlongZ", "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\n"
+                  "G71 P10 Q20 F100.\nN10 G00 Z0.\nN20 G01 X30.\n", F,
                   "A124", 5, 1, 3},
         AlarmCase{"CycleProfileWithoutMoves", "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\n"
                   "G71 P10 Q20 F100.\nN10 G00 X30.\nN20 F0.2\n", F,

@@ -347,6 +347,84 @@ TEST(StockRemoval, G71ProfileThatTurnsBackRaisesA121OnItsBlock) {
   EXPECT_EQ(t.alarm->range.line, 9);
 }
 
+// ---- G71 type II (pockets) -------------------------------------------------------
+
+// Fanuc 0i-TF: a first profile block naming X and Z (here W0, the shop habit)
+// makes a type II profile: it must move one way in Z but may dip into pockets.
+// A = X50 Z2, U2 R0.5, no allowance. Profile X40 Z2 -> Z-10 -> X30 -> Z-20 ->
+// X40 -> Z-30 -> X50: a Ø30 pocket from Z-10 to Z-20. Deepest point Ø30, so the
+// levels are 46, 42, 38, 34. At 46 and 42 the whole profile lies below: one pass
+// from Z2 to the X50 face at Z-30 as in type I. At 38 and 34 only the pocket
+// does (the Ø40 lands are above): rapid up to X50, along to Z-10, down to the
+// previous level + U + R (38 + 4 + 1 = 43; 34 + 5 = 39), feed to the level and
+// along to Z-20, retract 0.5 at 45 degrees, up to X50 and back to Z2. Then the
+// last pass along the profile.
+TEST(StockRemoval, G71TypeIIRoughsAPocketLevelByLevel) {
+  const CycleRun t(
+      "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\nG71 P10 Q20 F100.\n"
+      "N10 G00 X40. W0.\nG01 Z-10.\nX30.\nZ-20.\nX40.\nZ-30.\nN20 X50.\n");
+  ASSERT_FALSE(t.alarm) << t.alarm->code;
+  expectPath(t, 4,
+             {{R, 46, 2}, {L, 46, -30}, {R, 47, -29.5}, {R, 47, 2},
+              {R, 42, 2}, {L, 42, -30}, {R, 43, -29.5}, {R, 43, 2},
+              {R, 50, 2}, {R, 50, -10}, {R, 43, -10}, {L, 38, -10}, {L, 38, -20}, {R, 39, -19.5}, {R, 50, -19.5},
+              {R, 50, 2},
+              {R, 50, -10}, {R, 39, -10}, {L, 34, -10}, {L, 34, -20}, {R, 35, -19.5}, {R, 50, -19.5}, {R, 50, 2},
+              {R, 40, 2}, {L, 40, -10}, {L, 30, -10}, {L, 30, -20}, {L, 40, -20}, {L, 40, -30}, {L, 50, -30},
+              {R, 50, 2}});
+  // The same profile as type I (X only in its first block) turns back in X: A121 at the X40 block.
+  const CycleRun typeI(
+      "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\nG71 P10 Q20 F100.\n"
+      "N10 G00 X40.\nG01 Z-10.\nX30.\nZ-20.\nX40.\nZ-30.\nN20 X50.\n");
+  ASSERT_TRUE(typeI.alarm);
+  EXPECT_EQ(typeI.alarm->code, "A121");
+  EXPECT_EQ(typeI.alarm->range.line, 7);
+  // Type II still needs Z one way: a profile that turns back in Z is A121.
+  const CycleRun back(
+      "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\nG71 P10 Q20 F100.\n"
+      "N10 G00 X40. Z2.\nG01 Z-10.\nX30. Z-5.\nN20 X50.\n");
+  ASSERT_TRUE(back.alarm);
+  EXPECT_EQ(back.alarm->code, "A121");
+  EXPECT_EQ(back.alarm->range.line, 7);
+}
+
+// A round-bottomed pocket: G02 X24 Z-30 R15 from X24 Z-10 dips to
+// 12 - (15 - sqrt(15^2 - 10^2)) = 8.1803 (radius). The cut part after G70 has
+// the pocket's bottom at Ø16.361 at Z-20 and Ø24 either side; nothing was removed
+// below the profile by the roughing (every pass ends on the arc).
+TEST(StockRemoval, G71TypeIIFollowsAnArcPocketAndG70FinishesIt) {
+  const CycleRun t(
+      "G98 G97 S500 M03\nG00 X42. Z2.\nG71 U1.5 R0.5\nG71 P10 Q20 U0.4 F100.\n"
+      "N10 G00 X24. Z2.\nG01 Z-10.\nG02 X24. Z-30. R15.\nG01 Z-40.\nN20 X42.\nG70 P10 Q20\n");
+  ASSERT_FALSE(t.alarm) << t.alarm->code;
+  const double bottom = 12.0 - (15.0 - std::sqrt(125.0));
+  // Every roughing pass (a Z line of line 4 below X42) ends on the arc moved up by 0.2,
+  // or on the Ø24.4 lands: never below the profile plus the allowance.
+  int pocketPasses = 0;
+  for (const MotionCall& m : t.calls) {
+    if (m.line != 4 || m.kind != L || std::abs(xOf(m.path.start) - xOf(m.path.end)) > 1e-9) continue;
+    const double r = xOf(m.path.end), z = zOf(m.path.end);
+    EXPECT_GE(r, bottom + 0.2 - 1e-6) << z;
+    if (z < -10.0 && z > -30.0) {
+      ++pocketPasses;
+      // Ends on the arc moved up by the allowance (U0.4: +0.2 in X, as the control shifts
+      // the profile): centre Z-20 X(12 + sqrt(125) + 0.2), radius 15.
+      const double dz = z + 20.0, dx = r - (12.0 + std::sqrt(125.0) + 0.2);
+      EXPECT_NEAR(std::hypot(dz, dx), 15.0, 1e-6) << z;
+    }
+  }
+  EXPECT_GE(pocketPasses, 2);
+  // G70 runs the arc itself: through the bottom at Z-20.
+  bool sawArc = false;
+  for (const MotionCall& m : t.calls)
+    if (m.line == 10 && m.kind == MoveKind::Arc) {
+      sawArc = true;
+      EXPECT_NEAR(m.path.radius(), 15.0, 1e-9);
+      EXPECT_NEAR(xOf(m.path.centre) - m.path.radius(), bottom, 1e-9);
+    }
+  EXPECT_TRUE(sawArc);
+}
+
 // ---- G72 -----------------------------------------------------------------------
 
 TEST(StockRemoval, G72RoughsAlongXThreePassesThenTheOffsetProfile) {
