@@ -136,7 +136,10 @@ const ToolShape* ToolLibrary::get(int tool, int offset) {
     std::optional<ToolShape> shape;
     const std::string path = tools_.bitmapPath(tool);
     if (!path.empty()) {
-      const io::Offset o = offset >= 1 && offset <= io::kOffsetCount ? offsets_.at(offset) : io::Offset{};
+      // Offset 00 (T0100) cancels the offset's shift, not the insert: the same
+      // tool is drawn with its station's own row, as after T0101.
+      const int row = offset >= 1 ? offset : tool;
+      const io::Offset o = row >= 1 && row <= io::kOffsetCount ? offsets_.at(row) : io::Offset{};
       io::ReadResult<ToolShape> r = loadToolShape(path, o.r, o.tip, tools_.pixelsPerMmOf(tool));
       // One report per bitmap file, not one per offset it is used with.
       bool known = false;

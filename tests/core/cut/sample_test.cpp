@@ -199,6 +199,21 @@ TEST(Crash, RapidIntoTheStockOnTheDogLegsSecondLeg) {
   EXPECT_EQ(d.args.at(1), "40.000");
 }
 
+// Textbook habit: the last rapid home cancels the offset with T0100. Offset 00
+// takes away the offset's shift, not the insert: the tool stays the T01 it was,
+// so leaving a shoulder 1 mm above the bar is no crash (it was A301 when the
+// tool was drawn about its nose centre for offset 00, 0.8 mm lower and further left).
+TEST(Crash, T0100OnTheWayHomeKeepsTheInsert) {
+  const std::string text = std::string(kHeader) +
+                           "N10 G21 G97 S800 M03\nN20 T0101\nN30 G00 X45. Z2.\nN40 G01 Z-30. F0.2\n"
+                           "N50 X52.\nN60 G00 X200. Z150. T0100\nN70 M30\n";
+  const Cut c = cutProgram(text);
+  ASSERT_FALSE(c.run.timeline.alarm.has_value());
+  EXPECT_FALSE(c.sim->alarm().has_value()) << c.sim->alarm()->code << " line " << c.sim->alarm()->range.line;
+  const FinishedPart part(c.sim->stock());
+  expectDiameter(part, -28.0, -1.0, 45.0);
+}
+
 TEST(Crash, RapidThroughTheStockOnTheFirstLeg) {
   const std::string text = std::string(kHeader) +
                            "N10 G21 G97 S800 M03\nN20 T0101\nN30 G00 X70. Z-10.\nN40 G00 X40. Z-60.\nN50 M30\n";
