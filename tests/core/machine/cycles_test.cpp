@@ -337,14 +337,19 @@ TEST(StockRemoval, G71WithoutDepthRaisesA122) {
   EXPECT_EQ(t.alarm->range.line, 3);
 }
 
+// The run of `text` stops with alarm `code` on `line`.
+void expectAlarm(std::string_view text, const char* code, int line) {
+  const CycleRun t(text);
+  ASSERT_TRUE(t.alarm) << text;
+  EXPECT_EQ(t.alarm->code, code) << text;
+  EXPECT_EQ(t.alarm->range.line, line) << text;
+}
+
 TEST(StockRemoval, G71ProfileThatTurnsBackRaisesA121OnItsBlock) {
   // X30 -> Z-20 -> X40 -> Z-30 -> X36: the last block goes back down in X.
-  const CycleRun t(
-      "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F100.\n"
-      "N10 G00 X30.\nG01 Z-20.\nX40.\nZ-30.\nN20 X36.\n");
-  ASSERT_TRUE(t.alarm);
-  EXPECT_EQ(t.alarm->code, "A121");
-  EXPECT_EQ(t.alarm->range.line, 9);
+  expectAlarm("G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F100.\n"
+              "N10 G00 X30.\nG01 Z-20.\nX40.\nZ-30.\nN20 X36.\n",
+              "A121", 9);
 }
 
 // ---- G71 type II (pockets) -------------------------------------------------------
@@ -373,19 +378,13 @@ TEST(StockRemoval, G71TypeIIRoughsAPocketLevelByLevel) {
               {R, 40, 2}, {L, 40, -10}, {L, 30, -10}, {L, 30, -20}, {L, 40, -20}, {L, 40, -30}, {L, 50, -30},
               {R, 50, 2}});
   // The same profile as type I (X only in its first block) turns back in X: A121 at the X40 block.
-  const CycleRun typeI(
-      "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\nG71 P10 Q20 F100.\n"
-      "N10 G00 X40.\nG01 Z-10.\nX30.\nZ-20.\nX40.\nZ-30.\nN20 X50.\n");
-  ASSERT_TRUE(typeI.alarm);
-  EXPECT_EQ(typeI.alarm->code, "A121");
-  EXPECT_EQ(typeI.alarm->range.line, 7);
+  expectAlarm("G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\nG71 P10 Q20 F100.\n"
+              "N10 G00 X40.\nG01 Z-10.\nX30.\nZ-20.\nX40.\nZ-30.\nN20 X50.\n",
+              "A121", 7);
   // Type II still needs Z one way: a profile that turns back in Z is A121.
-  const CycleRun back(
-      "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\nG71 P10 Q20 F100.\n"
-      "N10 G00 X40. Z2.\nG01 Z-10.\nX30. Z-5.\nN20 X50.\n");
-  ASSERT_TRUE(back.alarm);
-  EXPECT_EQ(back.alarm->code, "A121");
-  EXPECT_EQ(back.alarm->range.line, 7);
+  expectAlarm("G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\nG71 P10 Q20 F100.\n"
+              "N10 G00 X40. Z2.\nG01 Z-10.\nX30. Z-5.\nN20 X50.\n",
+              "A121", 7);
 }
 
 // A round-bottomed pocket: G02 X24 Z-30 R15 from X24 Z-10 dips to
