@@ -179,6 +179,7 @@ inline constexpr const char* kProfileHasMacro = "A148";
 inline constexpr const char* kTooManyCycleMoves = "A149";
 inline constexpr const char* kProfileCommandNotAllowed = "A150";
 inline constexpr const char* kEndlessLoopMoves = "A151";
+inline constexpr const char* kNoCAxisOnThisMachine = "A152";
 inline constexpr const char* kSubprogramFileHasErrors = "E412";
 inline constexpr const char* kMainProgramRepeats = "I160";
 inline constexpr const char* kVacantAddressOmitted = "W130";

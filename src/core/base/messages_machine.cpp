@@ -74,6 +74,8 @@ constexpr MessageText kMessages[] = {
      "{0}: โปรแกรมวนซ้ำไม่รู้จบ หยุดหลังจากเวลาทำงาน {1} วินาที (machine.cfg max_run_time = {2} วินาที)"},
     {codes::kEndlessLoopMoves, "{0}: the program loops without end; stopped after {1} moves made by repeated blocks (machine.cfg max_blocks = {2} allows {3})",
      "{0}: โปรแกรมวนซ้ำไม่รู้จบ หยุดหลังจากบล็อกที่ทำซ้ำเคลื่อนที่ไป {1} ครั้ง (machine.cfg max_blocks = {2} ยอมให้ {3} ครั้ง)"},
+    {codes::kNoCAxisOnThisMachine, "{0}: this machine has no C axis; a chamfer or a corner round is written with a comma (,C2. ,R3.)",
+     "{0}: เครื่องนี้ไม่มีแกน C การลบมุมหรือการมนมุมต้องเขียนโดยมีจุลภาคนำหน้า (,C2. ,R3.)"},
     {codes::kCallsTooDeep, "{0}: subprogram and macro calls nest more than {1} levels deep",
      "{0}: การเรียกโปรแกรมย่อยและมาโครซ้อนกันลึกเกิน {1} ชั้น"},
     {codes::kNoSuchProgram, "{0}: no program O{1} in this file or its folder",

@@ -369,7 +369,16 @@ bool Interpreter::cAxisWords() {
   const Word* h = find('H');
   if (!c && !h) return true;
   const Word* w = c ? c : h;
-  if (!mach_.cAxisMode) return raise(codes::kCAxisOutsideCAxisMode, w, {wordText(*w)});
+  if (!mach_.cAxisMode) {
+    // Only a profile with a C-axis mode code can rotate C at all; on the others
+    // a "C2." is a chamfer written the old way.
+    bool hasCAxisMode = false;
+    for (int m = 0; m < 200 && !hasCAxisMode; ++m) {
+      const gcode::CodeInfo* info = gcode::findCode('M', m, profile_.dialect);
+      hasCAxisMode = info && info->action == gcode::CodeAction::CAxisOn;
+    }
+    return raise(hasCAxisMode ? codes::kCAxisOutsideCAxisMode : codes::kNoCAxisOnThisMachine, w, {wordText(*w)});
+  }
   // A C-axis rotation is recorded as the spindle angle; it takes no time.
   mach_.cAngle = c ? c->value : mach_.cAngle + h->value;
   mach_.cAngle = std::fmod(mach_.cAngle, 360.0);

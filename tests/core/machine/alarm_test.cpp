@@ -70,6 +70,8 @@ INSTANTIATE_TEST_SUITE_P(
         AlarmCase{"ThreadUnderG96", "G96 S100 M03\nG32 Z-10. F1.\n", F, "A108", 2, 1, 1},
         AlarmCase{"COutsideCAxisMode", "G00 C90.\n", C, "A109", 1, 5, 0},
         AlarmCase{"HOutsideCAxisMode", "M86\nH10.\n", C, "A109", 2, 1, 1},
+        // Fanuc and Haas profiles have no C-axis mode: "X30. C2." is a chamfer written without the comma.
+        AlarmCase{"CWithoutCAxisIsAChamferWithoutItsComma", "G98 G01 X30. C2. F100\n", F, "A152", 1, 14, 0},
         AlarmCase{"CAxisWithoutBrake", "M41\n", C, "A110", 1, 1, 0},
         AlarmCase{"BrakeReleaseInCAxisMode", "M86\nM41\nM87\n", C, "A111", 3, 1, 2},
         AlarmCase{"TravelLimitZ", "G00 Z1200.\n", F, "A112", 1, 1, 0},
