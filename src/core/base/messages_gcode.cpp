@@ -159,6 +159,8 @@ constexpr MessageText kMessages[] = {
      "{0} ไม่มีอัตราป้อน: ยังไม่ได้กำหนด F มาก่อน เมื่อรันจะหยุดที่บล็อกนี้ด้วยสัญญาณเตือน A102 ให้เติม F (เช่น F0.2 เมื่อใช้ G99)"},
     {"W105", "G96 with no G50 S limit before it: near the centre the spindle speeds up to the machine's maximum; give a limit first (e.g. G50 S2000)",
      "G96 โดยไม่มี G50 S จำกัดความเร็วรอบไว้ก่อน: เมื่อมีดเข้าใกล้ศูนย์กลาง เพลาจะหมุนเร็วขึ้นจนถึงความเร็วรอบสูงสุดของเครื่อง ให้กำหนดขีดจำกัดก่อน (เช่น G50 S2000)"},
+    {"W107", "{0} on a G01 is not read: a chamfer or corner round is written with a comma ({1}), so the corner stays sharp",
+     "{0} ในบล็อก G01 ไม่ถูกอ่าน การลบมุมหรือการมนมุมต้องเขียนโดยมีจุลภาคนำหน้า ({1}) มุมจึงยังคงเป็นมุมแหลม"},
     {"W106", "{0} cannot join the arc's ends: the radius is smaller than half their distance ({1}), so the run stops here with alarm A114",
      "{0} เชื่อมปลายทั้งสองของส่วนโค้งไม่ได้: รัศมีน้อยกว่าครึ่งหนึ่งของระยะระหว่างปลายทั้งสอง ({1}) เมื่อรันจะหยุดที่บล็อกนี้ด้วยสัญญาณเตือน A114"},
 

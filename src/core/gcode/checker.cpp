@@ -316,6 +316,16 @@ class Checker {
       if (w.expr < 0) checkValue(w, nullptr);
     }
     if (chamfer && corner) emit(codes::kChamferAndCorner, *later(chamfer, corner), {"," + wordText(*chamfer), "," + wordText(*corner)});
+    // The old forms "X30. K-2." / "Z-20. R3." (a 90-degree chamfer or round without the
+    // comma) are not simulated: say so rather than leave the corner sharp without a word.
+    if (motion_ == 1 && !cannedCycle && !oneShotWord) {
+      for (const char letter : {'I', 'K', 'R'})
+        if (const Word* w = has(letter); w && !w->comma && w->expr < 0) {
+          std::string size(w->number.view());
+          if (!size.empty() && (size[0] == '-' || size[0] == '+')) size.erase(0, 1);
+          emit(codes::kCornerWordWithoutComma, *w, {wordText(*w), (letter == 'R' ? ",R" : ",C") + size}, Severity::Warning);
+        }
+    }
     const bool arc = motion_ == 2 || motion_ == 3;
     if (arc) {
       const std::string arcCode = motion_ == 2 ? "G02" : "G03";

@@ -90,6 +90,7 @@ inline constexpr const char* kRoundedToIncrement = "W103";  // {0}=word {1}=roun
 inline constexpr const char* kFeedMoveWithoutFeed = "W104";          // {0}=G01/G02/G03/G32
 inline constexpr const char* kConstantSurfaceWithoutClamp = "W105";
 inline constexpr const char* kArcRadiusCannotJoin = "W106";          // {0}=R word {1}=half the chord
+inline constexpr const char* kCornerWordWithoutComma = "W107";     // {0}=the word, {1}=",C" or ",R"
 
 // I1xx notes
 inline constexpr const char* kDialectFits = "I102";  // {0}=blocks {1}=dialect name {2}=dialect id
