@@ -320,7 +320,7 @@ class Checker {
     // comma) are not simulated: say so rather than leave the corner sharp without a word.
     if (motion_ == 1 && !cannedCycle && !oneShotWord) {
       for (const char letter : {'I', 'K', 'R'})
-        if (const Word* w = has(letter); w && !w->comma && w->expr < 0) {
+        if (const Word* w = has(letter); w && !w->comma && w->expr < 0 && (letter == 'R' || !profile_.flow.chamferWithIOrK)) {
           std::string size(w->number.view());
           if (!size.empty() && (size[0] == '-' || size[0] == '+')) size.erase(0, 1);
           emit(codes::kCornerWordWithoutComma, *w, {wordText(*w), (letter == 'R' ? ",R" : ",C") + size}, Severity::Warning);

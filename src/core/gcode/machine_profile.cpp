@@ -66,7 +66,7 @@ constexpr MachineProfile kProfiles[] = {
         .cycles = kFanucCycles,
         // Fanuc 0i-TF manual: subprograms nest 10 deep, macro calls 5; M98 P packs the repeats.
         .flow = {.macroB = true, .packedRepeats = true, .maxSubprogramNesting = 10, .maxMacroNesting = 5, .programsInOneFile = true,
-                  .dwellBeforeCornerMove = false},
+                  .dwellBeforeCornerMove = false, .chamferWithIOrK = false},
     },
     {
         .dialect = Dialect::Haas,
@@ -96,7 +96,7 @@ constexpr MachineProfile kProfiles[] = {
         .cycles = kHaasCycles,
         // Haas lathe manual: 5-digit O numbers, so P is the program and L the repeats.
         .flow = {.macroB = true, .packedRepeats = false, .maxSubprogramNesting = 10, .maxMacroNesting = 5, .programsInOneFile = true,
-                  .dwellBeforeCornerMove = true},
+                  .dwellBeforeCornerMove = true, .chamferWithIOrK = true},
     },
     {
         .dialect = Dialect::Classic,
@@ -126,7 +126,7 @@ constexpr MachineProfile kProfiles[] = {
         .cycles = kFanucCycles,
         // The 1999 rules: M98/M99 only, no macros.
         .flow = {.macroB = false, .packedRepeats = true, .maxSubprogramNesting = 10, .maxMacroNesting = 0, .programsInOneFile = false,
-                  .dwellBeforeCornerMove = false},
+                  .dwellBeforeCornerMove = false, .chamferWithIOrK = false},
     },
 };
 

@@ -398,7 +398,7 @@ bool Interpreter::move(const Word* g) {
       if (!feedReady(where, "G01")) return false;
       if (!angleTarget(target, where)) return false;
       const Segment path = Segment::line(pos_, target);
-      if (commaWord('C') || commaWord('R')) return holdCorner(path, where);
+      if (chamferWord() || commaWord('R')) return holdCorner(path, where);
       return feedMoveAfterCorner(MoveKind::Line, path, where);
     }
     case MotionMode::ArcCw:

@@ -56,7 +56,7 @@ bool Interpreter::holdCorner(const Segment& path, const Word* where) {
     if (!cutHeldCorner(path, start, where)) return false;
     first = Segment::line(start, path.end);
   }
-  const Word* c = commaWord('C');
+  const Word* c = chamferWord();
   const Word* r = commaWord('R');
   const Word* w = c ? c : r;
   if (!pathWithinTravel(first, where)) return false;
@@ -65,7 +65,7 @@ bool Interpreter::holdCorner(const Segment& path, const Word* where) {
   corner_.kind = c ? 'C' : 'R';
   corner_.size = std::abs(w->value) * unit();
   corner_.where = w->range;
-  corner_.text = "," + w->text();
+  corner_.text = w->comma ? "," + w->text() : w->text();
   corner_.blockIndex = blockIndex_;
   corner_.first.kind = MoveKind::Line;
   corner_.first.path = first;

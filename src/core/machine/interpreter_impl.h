@@ -227,6 +227,13 @@ class Interpreter final : public gcode::MacroVariables {
 
   // ---- interpreter_corner.cpp (,C ,R ,A on G01) ---------------------------------
   const Word* commaWord(char letter) const { return block_->findComma(letter); }
+  // ,C, or an I or K where the profile reads them as ,C (Haas, 90-degree corners).
+  const Word* chamferWord() const {
+    if (const Word* c = commaWord('C')) return c;
+    if (!profile_.flow.chamferWithIOrK) return nullptr;
+    const Word* i = block_->find('I');
+    return i ? i : block_->find('K');
+  }
   bool holdCorner(const Segment& first, const Word* where);
   bool feedMoveAfterCorner(MoveKind kind, const Segment& path, const Word* where);
   bool cutHeldCorner(const Segment& path, Vec2& start, const Word* where);

@@ -99,6 +99,32 @@ TEST(Corner, HaasLetsADwellComeBetweenTheTwoMoves) {
   EXPECT_EQ(t.alarm->code, "A144");
 }
 
+TEST(Corner, HaasReadsIOrKAsTheChamferOfA90DegreeCorner) {
+  // Haas: "an I or K value can be substituted where ,C is used" - the same chamfer as
+  // ChamferBetweenAFaceAndADiameter, from K on the face move and from I on a Z move.
+  RunOptions haas;
+  haas.dialect = gcode::Dialect::Haas;
+  for (const char* text : {"G21 G98 G00 X20. Z0.\nG01 X30. K-2. F100.\nZ-20.\n",
+                           "G21 G98 G00 X30. Z5.\nG01 Z0. I2. F100.\nX20.\n"}) {
+    const Timeline t = runText(text, haas);
+    ASSERT_FALSE(t.alarm) << t.alarm->code;
+    const auto c = cuts(t);
+    ASSERT_EQ(c.size(), 3u) << text;
+    EXPECT_EQ(c[1]->line, 2);
+  }
+  const auto c = cuts(runText("G21 G98 G00 X20. Z0.\nG01 X30. K-2. F100.\nZ-20.\n", haas));
+  EXPECT_POINT(c[0]->path.end, 26.0, 0.0);
+  EXPECT_POINT(c[1]->path.end, 30.0, -2.0);
+  // Along Z to the face with I2, then down the face: the Z move stops at Z2, the chamfer ends at X26 Z0.
+  const auto d = cuts(runText("G21 G98 G00 X30. Z5.\nG01 Z0. I2. F100.\nX20.\n", haas));
+  EXPECT_POINT(d[0]->path.end, 30.0, 2.0);
+  EXPECT_POINT(d[1]->path.end, 26.0, 0.0);
+  // Fanuc reads neither: the face runs to the corner, sharp (the checker's W107 says so).
+  const auto f = cuts(runText("G98 G00 X20. Z0.\nG01 X30. K-2. F100.\nZ-20.\n"));
+  ASSERT_EQ(f.size(), 2u);
+  EXPECT_POINT(f[0]->path.end, 30.0, 0.0);
+}
+
 TEST(Corner, ACornerLongerThanAMoveIsAnAlarm) {
   Timeline t = runText("G98 G00 X20. Z0.\nG01 X24. ,C3. F100.\nZ-20.\n");  // the face is 2 mm
   ASSERT_TRUE(t.alarm);

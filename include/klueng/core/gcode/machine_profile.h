@@ -72,6 +72,9 @@ struct FlowSettings {
   // ,C / ,R on G01: a G04 dwell may come between the corner's two moves (Haas
   // lathe manual, "Corner rounding and chamfering"); Fanuc wants the move next.
   bool dwellBeforeCornerMove;
+  // "For chamfering a 90 degree angle only, an I or K value can be substituted
+  // where ,C is used" (Haas lathe manual, "Corner rounding and chamfering").
+  bool chamferWithIOrK;
 };
 
 struct MachineProfile {
