@@ -106,12 +106,12 @@ std::optional<CycleAlarm> roughPockets(const std::string& g, const SourceRange& 
   if (levels > kMaxPasses)
     return CycleAlarm{codes::kTooManyPasses, where, {g, fmt::format("{:.0f}", levels), num(depth)}};
   // Every level looks at every piece: bound that work, then the moves themselves.
-  if (levels * static_cast<double>(roughed.size()) > 50.0 * kMaxCycleMoves)
+  if (levels * static_cast<double>(roughed.size()) > 20.0 * kMaxCycleMoves)
     return CycleAlarm{codes::kTooManyCycleMoves, where,
                       {g, fmt::format("{:.0f}", levels * static_cast<double>(roughed.size())), fmt::format("{:.0f}", kMaxCycleMoves)}};
   double moves = 0.0;
   for (int k = 1; k <= static_cast<int>(levels); ++k)
-    moves += 6.0 * static_cast<double>(spansAt(roughed, start.x(), start.y() - sb * k * depth, sb).size());
+    moves += 7.0 * static_cast<double>(spansAt(roughed, start.x(), start.y() - sb * k * depth, sb).size());
   if (moves > kMaxCycleMoves)
     return CycleAlarm{codes::kTooManyCycleMoves, where, {g, fmt::format("{:.0f}", moves), fmt::format("{:.0f}", kMaxCycleMoves)}};
 

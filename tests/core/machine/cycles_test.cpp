@@ -1,6 +1,7 @@
 // Fanuc 0i-TF canned cycles through the whole interpreter chain. Every
 // expected point is derived by hand in the comments (X as diameters, like the
 // program; no tool offset unless said, so the controlled point is the program point).
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -422,6 +423,22 @@ TEST(StockRemoval, G71TypeIIFollowsAnArcPocketAndG70FinishesIt) {
       EXPECT_NEAR(xOf(m.path.centre) - m.path.radius(), bottom, 1e-9);
     }
   EXPECT_TRUE(sawArc);
+}
+
+// Twenty 1 mm pockets 5 mm deep (radius) and U0.002: 2,499 levels, each cutting
+// most pockets - over 200,000 moves, refused with A149 before they are made.
+TEST(StockRemoval, G71TypeIIBoundsItsMovesNotOnlyItsPasses) {
+  std::string text = "G98 G97 S500 M03\nG00 X52. Z2.\nG71 U0.002 R0.5\nG71 P10 Q20 F100.\nN10 G00 X50. W0.\n";
+  for (int k = 0; k < 20; ++k) {
+    const double z = -2.0 * k;
+    text += fmt::format("G01 Z{:.1f}\nX40.\nZ{:.1f}\nX50.\n", z - 1.0, z - 2.0);
+  }
+  text += "N20 X52.\n";
+  const CycleRun t(text);
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->code, "A149");
+  EXPECT_EQ(t.alarm->range.line, 4);
+  EXPECT_TRUE(pathOf(t, 4).empty());
 }
 
 // ---- G72 -----------------------------------------------------------------------
