@@ -112,15 +112,18 @@ TEST(Corner, HaasReadsIOrKAsTheChamferOfA90DegreeCorner) {
     ASSERT_EQ(c.size(), 3u) << text;
     EXPECT_EQ(c[1]->line, 2);
   }
-  const auto c = cuts(runText("G21 G98 G00 X20. Z0.\nG01 X30. K-2. F100.\nZ-20.\n", haas));
+  const Timeline face = runText("G21 G98 G00 X20. Z0.\nG01 X30. K-2. F100.\nZ-20.\n", haas);
+  const auto c = cuts(face);  // (pointers into `face`: it must outlive them)
   EXPECT_POINT(c[0]->path.end, 26.0, 0.0);
   EXPECT_POINT(c[1]->path.end, 30.0, -2.0);
   // Along Z to the face with I2, then down the face: the Z move stops at Z2, the chamfer ends at X26 Z0.
-  const auto d = cuts(runText("G21 G98 G00 X30. Z5.\nG01 Z0. I2. F100.\nX20.\n", haas));
+  const Timeline along = runText("G21 G98 G00 X30. Z5.\nG01 Z0. I2. F100.\nX20.\n", haas);
+  const auto d = cuts(along);
   EXPECT_POINT(d[0]->path.end, 30.0, 2.0);
   EXPECT_POINT(d[1]->path.end, 26.0, 0.0);
   // Fanuc reads neither: the face runs to the corner, sharp (the checker's W107 says so).
-  const auto f = cuts(runText("G98 G00 X20. Z0.\nG01 X30. K-2. F100.\nZ-20.\n"));
+  const Timeline fanuc = runText("G98 G00 X20. Z0.\nG01 X30. K-2. F100.\nZ-20.\n");
+  const auto f = cuts(fanuc);
   ASSERT_EQ(f.size(), 2u);
   EXPECT_POINT(f[0]->path.end, 30.0, 0.0);
 }
