@@ -103,7 +103,7 @@ std::optional<CycleAlarm> roughPockets(const std::string& g, const SourceRange& 
   }
   // Levels strictly above the deepest point, as type I stops above A'.
   const double levels = std::max(0.0, std::ceil((start.y() * sb - deepest) / depth - 1e-9) - 1.0);
-  if (levels > kMaxPasses)
+  if (!(levels <= kMaxPasses))  // (NaN-safe: the int loops below must have a bound)
     return CycleAlarm{codes::kTooManyPasses, where, {g, fmt::format("{:.0f}", levels), num(depth)}};
   // Every level looks at every piece: bound that work, then the moves themselves.
   if (levels * static_cast<double>(roughed.size()) > 20.0 * kMaxCycleMoves)
