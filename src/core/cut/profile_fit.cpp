@@ -184,9 +184,11 @@ void resolveJoins(std::vector<Piece>& pieces, const std::vector<double>& z, doub
     Piece& B = pieces[k + 1];
     // The window reaches a few points into both: a line may have taken the
     // start of the arc beside it (it lies within the tolerance of the tangent).
-    const double lo = z[std::max(A.first, A.last - 10)];
-    const double hi = z[std::min(B.last, B.first + 10)];
-    const double at = joinZ(A, B, lo, hi);
+    // Joins go left to right: with pieces shorter than the window a join could
+    // land left of the one before it and leave a piece of negative length.
+    const double lo = std::max(z[std::max(A.first, A.last - 10)], A.zLeft);
+    const double hi = std::max(z[std::min(B.last, B.first + 10)], lo);
+    const double at = std::clamp(joinZ(A, B, lo, hi), A.zLeft, std::max(A.zLeft, zEnd));
     A.zRight = at;
     B.zLeft = at;
   }

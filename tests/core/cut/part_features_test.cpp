@@ -249,6 +249,28 @@ TEST(PartFeatures, GroovingToolCutsAGroove) {
   EXPECT_NEAR(g->depth, 4.0, 0.01);  // from Ø32
 }
 
+// Found by fuzz_pipeline: a Ø3 bore mouth on a Ø30 x 40 bar at 0.2 mm columns whose
+// short pieces (a few columns each) let one join land left of the join before it;
+// the arc between them came out with zLeft > zRight. Joins now go left to right.
+TEST(PartFeatures, ShortPiecesInABoreMouthKeepTheirOrder) {
+  Stock s(30.0, 40.0, 0.2);
+  // Bore radius per column from the right face (z -0.1, -0.3, ...), as the fuzzer's cut left it
+  // (the last one a rounding's 1.3e-15 above the axis: the bore's run reaches Z-2).
+  const double bore[] = {1.5, 1.482500000000001, 1.4125000000000001, 1.3425000000000014, 1.2725000000000004,
+                         1.2025000000000019, 1.0500000000000056, 0.64999999999999991, 0.25000000000000844,
+                         1.3322676295501878e-15};
+  const int n = s.columnCount();
+  for (int k = 0; k < 10; ++k) s.remove(n - 1 - k, 0.0, bore[k]);
+  const PartFeatures p = partFeatures(s);
+  ASSERT_FALSE(p.inside.empty());
+  double right = 0.0;
+  for (const PartFeature& f : p.inside) {
+    EXPECT_LE(f.zLeft, f.zRight + 1e-9) << describeFeature(f, Lang::En);
+    EXPECT_LE(f.zRight, right + 1e-9) << describeFeature(f, Lang::En);  // listed from the right face
+    right = std::min(right, f.zLeft);
+  }
+}
+
 TEST(PartFeatures, DescriptionsInBothLanguages) {
   const PartFeatures p = partFeatures(carved(handProfile));
   EXPECT_EQ(describeFeature(p.outside[2], Lang::En), "Cylinder Ø30, Z-2 to Z-15, length 13");
