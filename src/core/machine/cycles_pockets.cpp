@@ -109,9 +109,14 @@ std::optional<CycleAlarm> roughPockets(const std::string& g, const SourceRange& 
   if (levels * static_cast<double>(roughed.size()) > 20.0 * kMaxCycleMoves)
     return CycleAlarm{codes::kTooManyCycleMoves, where,
                       {g, fmt::format("{:.0f}", levels * static_cast<double>(roughed.size())), fmt::format("{:.0f}", kMaxCycleMoves)}};
+  // Each level's stretches, read once; kept only while the moves they make stay within the bound.
+  std::vector<std::vector<Span>> spansOf;
   double moves = 0.0;
-  for (int k = 1; k <= static_cast<int>(levels); ++k)
-    moves += 7.0 * static_cast<double>(spansAt(roughed, start.x(), start.y() - sb * k * depth, sb).size());
+  for (int k = 1; k <= static_cast<int>(levels); ++k) {
+    std::vector<Span> spans = spansAt(roughed, start.x(), start.y() - sb * k * depth, sb);
+    moves += 7.0 * static_cast<double>(spans.size());
+    if (moves <= kMaxCycleMoves) spansOf.push_back(std::move(spans));
+  }
   if (moves > kMaxCycleMoves)
     return CycleAlarm{codes::kTooManyCycleMoves, where, {g, fmt::format("{:.0f}", moves), fmt::format("{:.0f}", kMaxCycleMoves)}};
 
@@ -124,7 +129,7 @@ std::optional<CycleAlarm> roughPockets(const std::string& g, const SourceRange& 
     const double level = start.y() - sb * k * depth;
     // Above the previous level the pocket's column is already clear.
     const double clear = level + sb * (depth + retract);
-    for (const Span& span : spansAt(roughed, start.x(), level, sb)) {
+    for (const Span& span : spansOf[static_cast<std::size_t>(k - 1)]) {
       if ((span.to - span.from) * sa < -kEps) continue;
       if (span.fromStart) {
         to(Vec2(start.x(), level), !infeedRapid);
