@@ -57,6 +57,7 @@ CutOutcome runCut(const std::string& file, const io::JobHeader& header, const ma
   cut::CutSimulator sim(timeline, cut::CutSetup::from(header, setup), cutOptions);
   sim.runToEnd();
   outcome.alarm = sim.alarm();
+  outcome.warnings = sim.warnings();
   outcome.toolErrors = sim.toolDiagnostics();
   const cut::FinishedPart part(sim.stock());
 

@@ -31,6 +31,7 @@ bool parseResolution(const std::string& text, double& out);
 struct CutOutcome {
   std::optional<core::Diagnostic> alarm;     // the cut alarm (A3xx) that stopped the run
   std::vector<core::Diagnostic> toolErrors;  // bitmaps that could not be loaded
+  std::vector<core::Diagnostic> warnings;    // a guessed tool's holder touching (W324/W325)
   bool written = true;                       // false: an output file could not be written (message printed)
 };
 

@@ -258,6 +258,7 @@ int runSimulate(const std::vector<std::string>& args) {
   CutOutputOptions cutOptions = o.cut;
   cutOptions.lang = o.lang;
   const CutOutcome cut = o.cut.enabled ? runCut(o.file, programFile.header, setup, timeline, cutOptions) : CutOutcome{};
+  for (const Diagnostic& w : cut.warnings) printDiagnostic(job.fileOf(w), w, o.lang);
   if (o.cycleTime) std::printf("%.4f\n", timeline.cycleTime());
   if (o.partCheck && o.cut.enabled) {
     // The described part against the real cut: gouges and leftovers as warnings on their blocks.

@@ -127,6 +127,7 @@ inline constexpr const char* kToolForParting = "I407";
 inline constexpr const char* kToolForTurning = "I408";
 inline constexpr const char* kToolSetForJob = "I409";
 inline constexpr const char* kOffsetFromLibrary = "I410";
+inline constexpr const char* kOffsetReplacedByLibrary = "I411";  // a row set for the table's tool, in a plain program
 
 // Run-time alarms and notes of the interpreter (machine; texts in messages_machine.cpp)
 inline constexpr const char* kSpindleAboveMaximum = "A101";
@@ -183,6 +184,7 @@ inline constexpr const char* kNoCAxisOnThisMachine = "A152";
 inline constexpr const char* kSubprogramFileHasErrors = "E412";
 inline constexpr const char* kMainProgramRepeats = "I160";
 inline constexpr const char* kVacantAddressOmitted = "W130";
+inline constexpr const char* kThreadUnderCssWarning = "W131";  // Fanuc/Haas: threading under G96 runs
 
 // Nose radius compensation (comp; texts in messages_comp.cpp)
 inline constexpr const char* kConcaveArcTooSmall = "A201";
@@ -201,6 +203,8 @@ inline constexpr const char* kPartGouge = "W320";
 inline constexpr const char* kPartLeftover = "W321";
 inline constexpr const char* kBoreGouge = "W322";
 inline constexpr const char* kBoreLeftover = "W323";
+inline constexpr const char* kGuessHitsStock = "W324";  // {0} station, {1} tool, {2} Z, {3} X
+inline constexpr const char* kGuessHitsChuck = "W325";
 inline constexpr const char* kPartCheckStopped = "I324";     // {0} the alarm's code
 inline constexpr const char* kPartCheckNothingCut = "I325";
 

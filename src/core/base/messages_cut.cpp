@@ -15,6 +15,13 @@ constexpr MessageText kMessages[] = {
      "ด้ามจับมีดชนชิ้นงานที่ Z{0} X{1}"},
     {codes::kToolHitsChuck, "The tool hits the chuck at Z{0} X{1}",
      "มีดตัดชนหัวจับ (ชัค) ที่ Z{0} X{1}"},
+    // A tool Klueng guessed from the program (issue 26): the shop's real tool was another.
+    {codes::kGuessHitsStock,
+     "the holder of {1}, guessed for T{0}, touches the stock at Z{2} X{3}: the real tool reaches here; choose it in Tool Select",
+     "ด้ามของ {1} ที่เดาไว้สำหรับ T{0} แตะชิ้นงานที่ Z{2} X{3}: มีดจริงของโรงงานเข้าถึงตรงนี้ได้ ให้เลือกมีดจริงในหน้าเลือกมีด"},
+    {codes::kGuessHitsChuck,
+     "the body of {1}, guessed for T{0}, touches the chuck at Z{2} X{3}: the real tool reaches here; choose it in Tool Select",
+     "ตัวมีด {1} ที่เดาไว้สำหรับ T{0} แตะหัวจับที่ Z{2} X{3}: มีดจริงของโรงงานเข้าถึงตรงนี้ได้ ให้เลือกมีดจริงในหน้าเลือกมีด"},
     {codes::kBitmapHasNoEdge, "Tool bitmap {0} has no cutting-edge pixels (every colour other than black and white is cutting edge)",
      "ภาพมีดตัด {0} ไม่มีจุดภาพของคมตัด (สีอื่นที่ไม่ใช่สีดำและสีขาวคือคมตัด)"},
     {codes::kBitmapTooLarge, "Tool bitmap {0} is {1} x {2} pixels; a tool bitmap may be at most {3} x {3} pixels (2 pixels per mm)",

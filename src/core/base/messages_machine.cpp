@@ -114,6 +114,9 @@ constexpr MessageText kMessages[] = {
      "M99 ท้ายโปรแกรมหลัก: เครื่องจริงจะวนกลับไปทำงานใหม่ตั้งแต่ต้น แต่การจำลองจะหยุดหลังวนซ้ำหนึ่งรอบ"},
     {codes::kVacantAddressOmitted, "{0}: #{1} is vacant, so the control omits the address {2} from this block",
      "{0}: #{1} ว่าง เครื่องควบคุมจึงไม่ใช้ตำแหน่ง {2} ในบล็อกนี้"},
+    {codes::kThreadUnderCssWarning,
+     "threading under constant surface speed (G96): the rpm is set by the diameter of each pass; write G97 before threading",
+     "กลึงเกลียวขณะใช้ความเร็วผิวคงที่ (G96): ความเร็วรอบขึ้นกับขนาดโตของแต่ละรอบกลึง ควรสั่ง G97 ก่อนกลึงเกลียว"},
 };
 }  // namespace
 

@@ -171,6 +171,8 @@ CutSimulator::CutSimulator(const machine::Timeline& timeline, const CutSetup& se
 }
 
 void CutSimulator::reset() {
+  warnings_.clear();
+  warnedGuess_.fill(false);
   stock_ = Stock(setup_.stockDiameter, setup_.stockLength, options_.resolution, setup_.stockBore);
   chuck_ = Chuck{};
   chuck_.stockLength = setup_.stockLength;
@@ -398,6 +400,22 @@ bool hitsChuck(const SweepContext& c, const std::vector<std::pair<Vec2, Vec2>>& 
 
 }  // namespace
 
+bool CutSimulator::excuseGuess(const char* code, const Move& m, const Vec2& where) {
+  if (!setup_.tools.isGuess(m.tool)) return false;
+  bool& warned = warnedGuess_[static_cast<std::size_t>(m.tool - 1)];
+  if (!warned) {
+    Diagnostic d = makeAlarm(code == codes::kToolHitsChuck ? codes::kGuessHitsChuck : codes::kGuessHitsStock, m, where);
+    d.severity = Severity::Warning;
+    const std::string id = setup_.tools.libraryId(m.tool);
+    const std::string& line = setup_.tools.bitmap[static_cast<std::size_t>(m.tool - 1)];
+    d.args.insert(d.args.begin(), {fmt::format("{:02}", m.tool),
+                                   id.empty() ? line.substr(line.find_last_of('/') + 1) : id});
+    warnings_.push_back(std::move(d));
+    warned = true;
+  }
+  return true;
+}
+
 void CutSimulator::cutMove(std::size_t index, double sEnd) {
   const Move& m = timeline_->moves[index];
   if (m.kind == MoveKind::Dwell) return;
@@ -455,6 +473,19 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
   const auto nosePieces = nose(s0, sEnd);
   const auto boxPieces = boxes(s0, sEnd);
 
+  // A guessed tool's holder may touch the chuck (a warning); its edge may not.
+  std::optional<ToolShape> edgeOnly;
+  SweepContext edgeCtx = ctx;
+  if (nearChuck && setup_.tools.isGuess(m.tool)) {
+    edgeOnly = *tool;
+    edgeOnly->holder.clear();
+    edgeCtx.tool = &*edgeOnly;
+    if (hitsChuck(ctx, nosePieces, boxPieces) && !hitsChuck(edgeCtx, nosePieces, boxPieces)) {
+      const double s = earliest([&](double e) { return hitsChuck(ctx, nose(s0, e), boxes(s0, e)); });
+      excuseGuess(codes::kToolHitsChuck, m, m.path.pointAt(s));
+      ctx.tool = edgeCtx.tool;  // the rest of the move as its edge alone: no second word on the chuck
+    }
+  }
   if (nearChuck && hitsChuck(ctx, nosePieces, boxPieces)) {
     const double s = earliest([&](double e) { return hitsChuck(ctx, nose(s0, e), boxes(s0, e)); });
     // Cut what the tool removed on its way in, then stop at the crash.
@@ -487,6 +518,7 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
       const auto n = nose(s0, s);
       const auto b = boxes(s0, s);
       const bool edge = touches(n, b, false);
+      if (!edge && excuseGuess(codes::kHolderHitsStock, m, m.path.pointAt(s))) return;
       raise(m.kind == MoveKind::Rapid ? codes::kRapidIntoStock : (edge ? codes::kCutWithSpindleStopped : codes::kHolderHitsStock), s);
     }
     return;
@@ -495,6 +527,7 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
   forEachInterval(ctx, nosePieces, boxPieces, false, [&](int i, double lo, double hi) { stock_.remove(i, lo, hi); });
   if (options_.detectCollisions && !tool->holder.empty() && overlapsStock(ctx, nosePieces, boxPieces, true)) {
     const double s = earliest([&](double e) { return overlapsStock(ctx, nose(s0, e), boxes(s0, e), true); });
+    if (excuseGuess(codes::kHolderHitsStock, m, m.path.pointAt(s))) return;
     raise(codes::kHolderHitsStock, s);
   }
 }

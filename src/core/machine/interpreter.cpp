@@ -411,7 +411,7 @@ bool Interpreter::move(const Word* g) {
     }
     case MotionMode::Thread: {
       if (modal_.feed <= 0.0) return raise(codes::kNoFeed, where, {"G32"});
-      if (modal_.spindleMode == SpindleMode::ConstantSurface) return raise(codes::kThreadUnderConstantSurface, where, {});
+      if (!threadUnderCssAllowed(where)) return false;
       if (mach_.spindle == SpindleDir::Stopped) return raise(codes::kThreadSpindleStopped, where, {});
       if (modal_.sWord <= 0.0) return raise(codes::kThreadWithoutSpeed, where, {});
       MotionCall m;

@@ -106,7 +106,7 @@ bool Interpreter::cycleReady(const std::vector<cycles::Step>& steps, const Word*
       }
     } else if (s.kind == cycles::StepKind::Thread) {
       if (s.lead <= 0.0) return raise(codes::kNoFeed, where, {name});
-      if (modal_.spindleMode == SpindleMode::ConstantSurface) return raise(codes::kThreadUnderConstantSurface, where, {});
+      if (!threadUnderCssAllowed(where)) return false;
       if (mach_.spindle == SpindleDir::Stopped) return raise(codes::kThreadSpindleStopped, where, {});
       if (!sSet) return raise(codes::kThreadWithoutSpeed, where, {});
     }
@@ -153,7 +153,7 @@ bool Interpreter::emitCycle(const std::vector<cycles::Step>& steps, const Word* 
       }
       case cycles::StepKind::Thread: {
         if (s.lead <= 0.0) return raise(codes::kNoFeed, where, {name});
-        if (modal_.spindleMode == SpindleMode::ConstantSurface) return raise(codes::kThreadUnderConstantSurface, where, {});
+        if (!threadUnderCssAllowed(where)) return false;
         if (mach_.spindle == SpindleDir::Stopped) return raise(codes::kThreadSpindleStopped, where, {});
         if (modal_.sWord <= 0.0) return raise(codes::kThreadWithoutSpeed, where, {});
         MotionCall m;

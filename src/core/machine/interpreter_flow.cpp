@@ -62,6 +62,15 @@ void Interpreter::notice(Severity severity, const char* code, const SourceRange&
   flow_->notices.push_back(Diagnostic{severity, code, at, std::move(args)});
 }
 
+bool Interpreter::threadUnderCssAllowed(const Word* where) {
+  if (modal_.spindleMode != SpindleMode::ConstantSurface) return true;
+  if (profile_.threadUnderCssIsAlarm) return raise(codes::kThreadUnderConstantSurface, where, {});
+  if (!threadCssWarned_)
+    notice(Severity::Warning, codes::kThreadUnderCssWarning, where ? where->range : SourceRange{block_->line, 1, 0}, {});
+  threadCssWarned_ = true;
+  return true;
+}
+
 void Interpreter::matchLoops() {
   // DO m ... END m pairs within each program (the checker reports the unmatched ones).
   loopPartner_.assign(program_.blocks.size(), -1);

@@ -224,6 +224,9 @@ class Interpreter final : public gcode::MacroVariables {
   void matchLoops();
   bool flowAlarm(const char* code, const SourceRange& at, std::vector<std::string> args);
   void notice(Severity severity, const char* code, const SourceRange& at, std::vector<std::string> args);
+  // Threading under G96: the profile's alarm, or a warning (once a run) and true.
+  bool threadUnderCssAllowed(const Word* where);
+  bool threadCssWarned_ = false;
 
   // ---- interpreter_corner.cpp (,C ,R ,A on G01) ---------------------------------
   const Word* commaWord(char letter) const { return block_->findComma(letter); }

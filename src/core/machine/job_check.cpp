@@ -45,8 +45,13 @@ JobCheck checkJob(std::string_view gcode, int firstLine, gcode::CheckOptions opt
   if (!folder.empty()) fileDiagnostics = attachSubprogramFiles(program, folder, options.dialect);
   // The program's tools decide which T words have a tool (one meaning: job.h);
   // they are worked out while the rest of the check runs.
+  // G-code from the first line on: a plain program, without Klueng's job header.
+  InferenceContext context;
+  context.fromProgram = firstLine <= 1;
+  context.run.dialect = options.dialect;
+  context.run.powerOnUnits = options.powerOnUnits;
   detail::CheckedWithTools checked = detail::checkWhileInferring(program, options, [&] {
-    return inferTools(program, gcode, firstLine, setup, library, overrides, stations);
+    return inferTools(program, gcode, firstLine, setup, library, overrides, stations, context);
   });
   result.inference = std::move(checked.inference);
   if (options.toolsWithBitmap) options.toolsWithBitmap = toolsWithBitmap(result.inference.setup);

@@ -68,8 +68,12 @@ JobFile loadJobFile(const std::string& path, const MachineSetup& setup, const Jo
     // Tools from the program: library choices for stations without a fitting tool,
     // worked out while the rest of the check runs.
     check.toolsWithBitmap = std::vector<int>{};
+    InferenceContext context;
+    context.fromProgram = file.plainGcode;
+    context.run = request.run;
     detail::CheckedWithTools checked = detail::checkWhileInferring(program, check, [&] {
-      return inferTools(program, file.gcode, file.gcodeFirstLine, setup, library, request.overrides, request.stations);
+      return inferTools(program, file.gcode, file.gcodeFirstLine, setup, library, request.overrides, request.stations,
+                        context);
     });
     job.setup = std::move(checked.inference.setup);
     job.toolNotes = checked.inference.notes();

@@ -161,8 +161,8 @@ std::optional<ToolKind> currentKind(const io::ToolTable& tools, int station, con
 // Walks the blocks once, collecting per station what it does.
 class Scanner {
  public:
-  Scanner(const gcode::Program& program, std::string_view text, int firstLine)
-      : program_(program), lines_(splitLines(text)), firstLine_(firstLine) {}
+  Scanner(const gcode::Program& program, std::string_view text, int firstLine, double powerOnUnit)
+      : program_(program), lines_(splitLines(text)), firstLine_(firstLine), unit_(powerOnUnit) {}
 
   std::map<int, StationUse> scan() {
     // Lines that hold words other than N: a comment above such a line belongs to it.
@@ -193,7 +193,7 @@ class Scanner {
   StationUse* current_ = nullptr;  // uses_[station_] (a map's elements stay put)
   std::vector<int> order_;  // station of every T selection, in program order
   int station_ = 0;
-  double unit_ = 1.0;
+  double unit_ = 1.0;  // mm per program unit: the power-on units until G20/G21
   int motion_ = 0;
   std::optional<double> x_, z_;  // mm (x diameter)
   bool afterSelect_ = false;
@@ -372,6 +372,79 @@ class Scanner {
   }
 };
 
+
+// ---- Evidence of motion: one recorded run of the interpreter --------------------------------
+// What each tool really does after macros, subprograms, cycles and offsets.
+struct MotionUse {
+  double towardChuck = 0.0;  // mm fed along -Z (a right-hand tool's work)
+  double towardTail = 0.0;   // mm fed along +Z (a left-hand tool's)
+  double inside = 0.0;       // mm of Z feeds left by a retract inward (boring)
+  double outside = 0.0;      // mm of Z feeds left by a retract outward
+  double belowZero = 0.0;    // mm fed at X < 0 (a tool beyond the centre)
+  double aboveZero = 0.0;    // mm fed at X > 0
+  int insideLine = 0;        // the first Z feed left inward
+  int chuckLine = 0;         // the first feed along -Z
+  int tailLine = 0;          // the first feed along +Z
+};
+
+constexpr double kMinZRunMm = 0.5;  // a Z feed shorter than this says nothing about the side
+
+std::map<int, MotionUse> recordMotion(const Timeline& timeline) {
+  std::map<int, MotionUse> uses;
+  struct Pending {
+    int tool = 0;  // 0 = none
+    double length = 0.0;
+    int line = 0;
+  };
+  Pending zRun;  // the last feed along Z, until X moves
+  for (const Move& m : timeline.moves) {
+    if (m.tool < 1 || m.kind == MoveKind::Dwell) continue;
+    const Vec2 d = m.path.end - m.path.start;  // (z, x radius)
+    const double dz = d.x(), dx = d.y();
+    MotionUse& u = uses[m.tool];
+    if (zRun.tool != m.tool) zRun = {};
+    if (zRun.tool && std::abs(dx) > 1e-3) {
+      (dx < 0.0 ? u.inside : u.outside) += zRun.length;
+      if (dx < 0.0 && !u.insideLine) u.insideLine = zRun.line;
+      zRun = {};
+    }
+    if (m.kind == MoveKind::Rapid) continue;
+    const double length = d.norm();
+    const double xMid = (m.path.start.y() + m.path.end.y()) / 2.0;
+    if (xMid < -kOnCentreMm) u.belowZero += length;
+    else if (xMid > kOnCentreMm) u.aboveZero += length;
+    if (std::abs(dz) >= kMinZRunMm && std::abs(dz) >= 2.0 * std::abs(dx)) {
+      (dz < 0.0 ? u.towardChuck : u.towardTail) += std::abs(dz);
+      int& first = dz < 0.0 ? u.chuckLine : u.tailLine;
+      if (!first) first = m.line;
+      // A retract that ends the run in the same move (a taper out) is not a side.
+      zRun = Pending{m.tool, std::abs(dz), m.line};
+    }
+  }
+  return uses;
+}
+
+// The words of a file line, for a note ("G01 Z-51.4"), without its comment.
+std::string blockText(std::string_view text, int firstLine, int line) {
+  const std::vector<std::string_view> lines = splitLines(text);
+  const int i = line - firstLine;
+  if (i < 0 || i >= static_cast<int>(lines.size())) return {};
+  std::string words(lines[static_cast<std::size_t>(i)].substr(0, lines[static_cast<std::size_t>(i)].find_first_of("(;")));
+  while (!words.empty() && (words.back() == ' ' || words.back() == '\t' || words.back() == '\r')) words.pop_back();
+  return words.size() > 40 ? words.substr(0, 40) : words;
+}
+
+// Right-hand (feeds toward the chuck) or left-hand: by what the run shows.
+bool leftHandWork(const MotionUse& m) { return m.towardTail > 2.0 * m.towardChuck && m.towardTail >= 1.0; }
+bool insideWork(const MotionUse& m) { return m.inside > m.outside && m.inside >= 1.0; }
+
+// What a tools.cfg line names: "02-outside-left-hand.bmp" is a left-hand turning tool.
+bool namesLeftHand(std::string_view fileName) {
+  std::string name(fileName);
+  std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return name.find("left-hand") != std::string::npos || name.find("left_hand") != std::string::npos ||
+         name.find("lefthand") != std::string::npos;
+}
 }  // namespace
 
 Diagnostic ToolChoice::note() const {
@@ -398,14 +471,26 @@ const ToolChoice* ToolInference::choiceFor(int station) const {
 
 ToolInference inferTools(const gcode::Program& program, std::string_view gcodeText, int gcodeFirstLine,
                          const MachineSetup& setup, const io::ToolLibrary& library,
-                         const std::vector<StationOverride>& overrides, int stations) {
+                         const std::vector<StationOverride>& overrides, int stations,
+                         const InferenceContext& context) {
   ToolInference out;
   out.setup = setup;
-  Scanner scanner(program, gcodeText, gcodeFirstLine);
+  out.fromProgram = context.fromProgram;
+  const gcode::InputUnits powerOn =
+      context.run.powerOnUnits.value_or(gcode::machineProfile(context.run.dialect).powerOnUnits);
+  Scanner scanner(program, gcodeText, gcodeFirstLine, powerOn == gcode::InputUnits::Inch ? 25.4 : 1.0);
   std::map<int, StationUse> uses = scanner.scan();
   // Stations past the turret (or the dialect's T range) are the checker's business.
   const int lastStation = std::clamp(stations > 0 ? stations : setup.tools.stations, 1, io::kMaxStations);
   std::erase_if(uses, [&](const auto& entry) { return entry.first > lastStation; });
+
+  // A plain program: what each tool really does, from one recorded run.
+  std::map<int, MotionUse> motion;
+  if (context.fromProgram && !uses.empty()) {
+    RunOptions run = context.run;
+    run.persistentVariables = nullptr;  // the record changes nothing the user keeps
+    motion = recordMotion(interpret(program, setup, run));
+  }
 
   // Parting counts only for one of the last two tools the program selects.
   std::vector<int> last;
@@ -419,15 +504,20 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
     out.setup.tools.setLibraryTool(station, tool.id, library.bitmapPath(tool), tool.pixelsPerMm);
     out.choices.push_back({station, tool.id, reason, std::move(detail), line});
     for (int n : offsets) {
-      if (n < 1 || n > io::kOffsetCount || !offsetEmpty(out.setup.offsets.at(n))) continue;
+      if (n < 1 || n > io::kOffsetCount) continue;
       io::Offset& o = out.setup.offsets.at(n);
-      o.r = tool.noseRadius;
-      o.tip = tool.tip;
+      const bool empty = offsetEmpty(o);
+      // A guessed tool brings its own nose: a row set for the table's tool is another tool's.
+      if (!empty && !context.fromProgram) continue;
+      if (!empty && o.r == tool.noseRadius && o.tip == tool.tip) continue;
       Diagnostic d;
       d.severity = Severity::Note;
-      d.code = codes::kOffsetFromLibrary;
+      d.code = empty ? codes::kOffsetFromLibrary : codes::kOffsetReplacedByLibrary;
       d.range.line = line;
-      d.args = {twoDigits(n), fmt::format("{:g}", tool.noseRadius), std::to_string(tool.tip), tool.id};
+      d.args = {twoDigits(n), fmt::format("{:g}", tool.noseRadius), std::to_string(tool.tip), tool.id,
+                fmt::format("{:g}", o.r), std::to_string(o.tip)};
+      o.r = tool.noseRadius;
+      o.tip = tool.tip;
       out.offsetNotes.push_back(std::move(d));
     }
   };
@@ -460,13 +550,48 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
       if (refine) want = use.cycle;
     }
     if (!want) want = use.turning;
+    const auto moved = motion.find(station);
+    if (want && moved != motion.end() && insideWork(moved->second)) {
+      // The run retracts inward after its Z feeds: the tool works inside a bore.
+      const MotionUse& m = moved->second;
+      if (want->kind == ToolKind::Turning || want->kind == ToolKind::Unknown) {
+        const bool named = want->reason == ToolReason::Comment && want->kind == ToolKind::Turning;
+        if (!named || m.outside == 0.0) {
+          want->kind = ToolKind::Boring;
+          want->reason = ToolReason::Boring;
+          want->detail = blockText(gcodeText, gcodeFirstLine, m.insideLine);
+          want->line = m.insideLine;
+          want->strong = true;
+        }
+      } else if (want->kind == ToolKind::ThreadingOd && want->reason != ToolReason::Comment) {
+        want->kind = ToolKind::ThreadingId;
+        want->reason = ToolReason::ThreadingInside;
+      }
+    }
     if (!want || want->kind == ToolKind::Unknown) continue;
     const std::optional<ToolKind> have = currentKind(setup.tools, station, library);
-    if (have && (io::toolKindFits(*have, want->kind) || !want->strong)) continue;  // keeps its tool
+    if (context.fromProgram) {
+      // The shop's program decides; the table only breaks ties: a tool of the right
+      // kind (and hand, for turning) stays, anything else gives way to the evidence.
+      out.setup.tools.guessed[static_cast<std::size_t>(station - 1)] = true;
+      const bool left = moved != motion.end() && leftHandWork(moved->second);
+      const std::string& line = setup.tools.bitmap[static_cast<std::size_t>(station - 1)];
+      const bool haveLeft = namesLeftHand(line);
+      const bool known = have && *have != ToolKind::Unknown;
+      const bool handFits = want->kind != ToolKind::Turning || left == haveLeft;
+      if (known && io::toolKindFits(*have, want->kind) && handFits) continue;
+      if (want->kind == ToolKind::Turning && left) continue;  // the library has no left-hand tool: the table's stays
+    } else if (have && (io::toolKindFits(*have, want->kind) || !want->strong)) {
+      continue;  // keeps its tool
+    }
     const io::LibraryTool* tool = pick(library, *want);
     if (!tool) continue;
     assign(station, *tool, want->reason, want->detail, want->line, use.offsets);
   }
+  // A plain program's stations the evidence said nothing of are guesses too.
+  if (context.fromProgram)
+    for (const auto& [station, use] : uses)
+      if (!overridden.count(station)) out.setup.tools.guessed[static_cast<std::size_t>(station - 1)] = true;
   std::sort(out.choices.begin(), out.choices.end(),
             [](const ToolChoice& a, const ToolChoice& b) { return a.station < b.station; });
   return out;

@@ -26,6 +26,7 @@
 // run with that error (alarm(), Severity::Error, range.line = the move's block).
 // Moves without a tool (T00 or before the first T) cut nothing.
 #include <map>
+#include <array>
 #include <optional>
 #include <string>
 #include <utility>
@@ -126,9 +127,14 @@ class CutSimulator {
   const Chuck& chuck() const { return chuck_; }
   double removedVolume() const { return stock_.removedVolume(); }
   const std::vector<Diagnostic>& toolDiagnostics() const { return tools_.diagnostics(); }
+  // A guessed tool (io::ToolTable::guessed) whose holder or body touches the stock
+  // or the chuck: a warning, once a station, and the run goes on (issue 26).
+  const std::vector<Diagnostic>& warnings() const { return warnings_; }
 
  private:
   void cutMove(std::size_t index, double sEnd);
+  // True when the touch is a guessed tool's and is now a warning.
+  bool excuseGuess(const char* code, const machine::Move& m, const Vec2& where);
   void keepCheckpoint();
   // The latest checkpoint at or before t; nullptr when only the bar is.
   const CutCheckpoint* checkpointBefore(double t) const;
@@ -143,6 +149,8 @@ class CutSimulator {
   std::size_t nextMove_ = 0;     // first move not completely cut
   double nextMoveDone_ = 0.0;    // path parameter of nextMove_ already cut
   std::optional<Diagnostic> alarm_;
+  std::vector<Diagnostic> warnings_;
+  std::array<bool, io::kMaxStations> warnedGuess_{};
   double alarmTime_ = 0.0;
   Vec2 alarmPosition_ = Vec2::Zero();
   // The stock after every checkpointEvery_ moves (at a move boundary, no alarm yet).

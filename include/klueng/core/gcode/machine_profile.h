@@ -105,6 +105,10 @@ struct MachineProfile {
   int maxOffset;             // offset rows (16 classic, 64 others)
   DwellPUnit dwellP;
   BareG28 bareG28;
+  // Threading under G96: an alarm (SPEC 8, the classic trainer) or a warning. Fanuc 0i-TF
+  // operator's manual, "Constant surface speed control", notes: it stays effective during
+  // threading and G97 is recommended before face and taper threads; the control runs it.
+  bool threadUnderCssIsAlarm;
   // Group-00 codes that may share a block with G00/G01 (G28, G30, G53), as G numbers.
   std::span<const int> oneShotsWithMotion;
   CycleForm cycleForm;

@@ -35,6 +35,10 @@ struct ToolTable {
   std::string folder;  // folder of tools.cfg, to resolve relative names
   // Bitmaps that exist but do not decode (machine/setup_files.h sets them): no tool there.
   std::array<bool, kMaxStations> bitmapUnreadable{};
+  // Tools Klueng guessed from a program (machine/tool_inference.h), not chosen by
+  // the user: their holders touching the stock or chuck are warnings, not alarms.
+  std::array<bool, kMaxStations> guessed{};
+  bool isGuess(int tool) const { return tool >= 1 && tool <= kMaxStations && guessed[static_cast<std::size_t>(tool - 1)]; }
   std::string bitmapPath(int tool) const;  // resolved path, empty if none
   double pixelsPerMmOf(int tool) const;    // 2 for a plain bitmap
   std::string libraryId(int tool) const;   // the ID of a `library:ID` line, else empty

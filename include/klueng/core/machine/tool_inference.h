@@ -53,12 +53,21 @@ struct ToolChoice {
 };
 
 struct ToolInference {
-  MachineSetup setup;                 // the input setup, amended
+  MachineSetup setup;                 // the input setup, amended (setup.tools.guessed marks the guesses)
+  bool fromProgram = false;           // a plain program: its evidence decided every station
   std::vector<ToolChoice> choices;    // one per station that got a library tool, by station
   std::vector<Diagnostic> offsetNotes;  // I410 per offset row filled from a library tool
   // Every note, choices first: what the CLI prints and the GUI lists.
   std::vector<Diagnostic> notes() const;
   const ToolChoice* choiceFor(int station) const;
+};
+
+// How the program is read. A plain program (no job header: a file from the shop)
+// gets every station's tool from its own evidence, the shipped table only
+// breaking ties; the evidence of motion comes from one recorded run.
+struct InferenceContext {
+  bool fromProgram = false;
+  RunOptions run;  // dialect and power-on units of the recorded run
 };
 
 // gcodeText is the G-code part of the file (the text parse() read, its first
@@ -68,7 +77,8 @@ struct ToolInference {
 // left alone (the checker reports them).
 ToolInference inferTools(const gcode::Program& program, std::string_view gcodeText, int gcodeFirstLine,
                          const MachineSetup& setup, const io::ToolLibrary& library,
-                         const std::vector<StationOverride>& overrides = {}, int stations = 0);
+                         const std::vector<StationOverride>& overrides = {}, int stations = 0,
+                         const InferenceContext& context = {});
 
 // `N=ID` (the CLI's --tool value): station 1..stations and a library id.
 // Returns false and fills error with a message in English when it is not.
