@@ -75,8 +75,11 @@ TEST(Comments, BannerIsOneErrorPerUnclosedLineInClassic) {
   for (const Diagnostic& d : diags)
     if (d.range.line == 3 || d.range.line == 4) lexical.push_back(d.code + "@" + std::to_string(d.range.line));
   EXPECT_THAT(lexical, ElementsAre("E105@3", "E105@4"));
-  for (const Diagnostic& d : diags)
-    if (d.code == "E105") EXPECT_EQ(d.severity, Severity::Error);
+  for (const Diagnostic& d : diags) {
+    if (d.code == "E105") {
+      EXPECT_EQ(d.severity, Severity::Error);
+    }
+  }
 }
 
 TEST(Comments, AnUnclosedCommentAfterWordsKeepsTheWords) {
