@@ -55,7 +55,7 @@ struct SimulateOptions {
   gcode::Dialect dialect = gcode::Dialect::Fanuc;
   bool optionalStop = false;
   bool blockSkip = false;
-  bool persistVariables = true;  // write #500-#999 back to the folder's macro_variables.cfg
+  bool persistVariables = true;  // write #500-#999 back to macro_variables.cfg (config or user data folder)
   CutOutputOptions cut;  // --png --profile --json --resolution (cut_outputs.h)
   std::optional<io::JobHeader> stock;            // --stock
   std::optional<gcode::InputUnits> powerOnUnits;  // --units
@@ -138,7 +138,8 @@ constexpr const char* kSimulateUsage =
     "  --stock   stock before the file's header: 50x100 (mm), 2.1x4in, 118x80x90 (tube, bore 90)\n"
     "  --units   power-on units before any G20/G21: mm or inch\n"
     "  --tool N=ID   library tool ID at station N for this run, e.g. 12=parting-3mm\n"
-    "  --no-persist  do not write macro variables #500-#999 back to the folder's macro_variables.cfg\n";
+    "  --no-persist  do not write macro variables #500-#999 back to macro_variables.cfg (kept in the\n"
+    "                --config folder, else in the user's data folder)\n";
 
 // ": allowed: ..." for the options whose values are a closed set or a form.
 std::string allowedValues(const std::string& option) {
@@ -231,18 +232,22 @@ int runSimulate(const std::vector<std::string>& args) {
   machine::RunOptions runOptions = request->run;
   runOptions.optionalStop = o.optionalStop;
   runOptions.blockSkip = o.blockSkip;
-  // #500-#999 live in the folder's macro_variables.cfg between runs.
-  const std::string variablesPath =
-      io::macroVariablesPath(std::filesystem::path(o.file).parent_path().string());
-  const io::ReadResult<io::MacroVariables> stored = io::readMacroVariables(variablesPath);
+  // #500-#999 belong to the machine, not to the program's folder (issue 26 item 9): they live in
+  // macro_variables.cfg in the --config folder, else in the user's data folder, between runs.
+  const std::string variablesDir = !o.configDir.empty() ? o.configDir : io::userConfigDir();
+  const std::string variablesPath = variablesDir.empty() ? std::string() : io::macroVariablesPath(variablesDir);
+  const io::ReadResult<io::MacroVariables> stored =
+      variablesPath.empty() ? io::ReadResult<io::MacroVariables>{io::MacroVariables{}, {}} : io::readMacroVariables(variablesPath);
   for (const Diagnostic& d : stored.diagnostics) printDiagnostic(variablesPath, d, o.lang);
   io::MacroVariables variables = stored.value.value_or(io::MacroVariables{});
   const io::MacroVariables before = variables;
   runOptions.persistentVariables = &variables;
   const machine::Timeline& timeline = keepUntilExit(machine::interpret(program, setup, runOptions));
   for (const Diagnostic& n : timeline.flow.notices) printDiagnostic(job.fileOf(n), n, o.lang);
-  if (variables != before && o.persistVariables && stored.value) {
+  if (variables != before && o.persistVariables && stored.value && !variablesPath.empty()) {
     std::string error;
+    std::error_code ec;
+    std::filesystem::create_directories(variablesDir, ec);  // the user's data folder may not exist yet
     if (!io::writeTextFileAtomic(variablesPath, io::formatMacroVariables(variables), &error))
       std::fprintf(stderr, "klueng-cli simulate: cannot write %s: %s\n", variablesPath.c_str(), error.c_str());
   }

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -47,6 +48,8 @@ class CliFlow : public ::testing::Test {
             ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
+    // The user's data folder, where #500-#999 are kept when no --config is given.
+    ::setenv("XDG_DATA_HOME", (dir_ / "data").c_str(), 1);
   }
   void TearDown() override { fs::remove_all(dir_); }
   std::string write(const std::string& name, const std::string& text) {
@@ -142,22 +145,49 @@ TEST_F(CliFlow, PersistentVariablesAreKeptBetweenRuns) {
                                  "N10 #500 = #500 + 1\n"
                                  "#501 = #500 * 2.5\n"
                                  "M30\n");
+  const std::string kept = "data/klueng/macro_variables.cfg";
   ASSERT_EQ(runCli("simulate " + main + " --no-stock").exitCode, 0);
-  EXPECT_EQ(read("macro_variables.cfg"),
+  EXPECT_EQ(read(kept),
             "; Klueng macro variables #500-#999 (kept between runs, as a control keeps them)\n#500 = 1\n#501 = 2.5\n");
   ASSERT_EQ(runCli("simulate " + main + " --no-stock").exitCode, 0);
-  EXPECT_THAT(read("macro_variables.cfg"), HasSubstr("#500 = 2\n#501 = 5\n"));
+  EXPECT_THAT(read(kept), HasSubstr("#500 = 2\n#501 = 5\n"));
   // --no-persist leaves the file as it was.
   ASSERT_EQ(runCli("simulate " + main + " --no-stock --no-persist").exitCode, 0);
-  EXPECT_THAT(read("macro_variables.cfg"), HasSubstr("#500 = 2\n"));
+  EXPECT_THAT(read(kept), HasSubstr("#500 = 2\n"));
+  // The machine's variables are not the program's: nothing is written beside it.
+  EXPECT_FALSE(fs::exists(dir_ / "macro_variables.cfg"));
+}
+
+// Issue 26 item 9: `check` writes nothing; `simulate --config DIR` keeps #500-#999 in DIR.
+TEST_F(CliFlow, VariablesLiveInTheConfigFolderAndCheckWritesNothing) {
+  const std::string main = write("count.nc", "O0021\nG21 G99\n#500 = #500 + 1\nM30\n");
+  const fs::path config = dir_ / "config";
+  fs::create_directories(config);
+  for (const char* f : {"tools.cfg", "offset.cfg", "machine.cfg"})
+    fs::copy_file(fs::path(KLUENG_SOURCE_DIR) / f, config / f);
+  fs::create_directory_symlink(fs::path(KLUENG_SOURCE_DIR) / "resources", config / "resources");  // the tool bitmaps
+  ASSERT_EQ(runCli("check " + main + " --config " + config.string()).exitCode, 0);
+  ASSERT_EQ(runCli("check " + main).exitCode, 0);
+  EXPECT_FALSE(fs::exists(dir_ / "macro_variables.cfg"));
+  EXPECT_FALSE(fs::exists(config / "macro_variables.cfg"));
+  EXPECT_FALSE(fs::exists(dir_ / "data"));
+  const CliRun run = runCli("simulate " + main + " --no-stock --config " + config.string());
+  ASSERT_EQ(run.exitCode, 0) << run.out;
+  std::ifstream in(config / "macro_variables.cfg");
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_THAT(text.str(), HasSubstr("#500 = 1\n"));
+  EXPECT_FALSE(fs::exists(dir_ / "macro_variables.cfg"));
+  EXPECT_FALSE(fs::exists(dir_ / "data"));
 }
 
 TEST_F(CliFlow, ABadLineInTheVariablesFileIsReportedWithItsLine) {
   const std::string main = write("p.nc", "G21\n#100 = #500 + 1\nM30\n");
-  write("macro_variables.cfg", "#500 = 3\n#50 = 1\nrubbish\n");
+  fs::create_directories(dir_ / "data" / "klueng");
+  write("data/klueng/macro_variables.cfg", "#500 = 3\n#50 = 1\nrubbish\n");
   const CliRun run = runCli("simulate " + main + " --no-stock");
   EXPECT_EQ(run.exitCode, 0) << run.out;
-  const std::string cfg = (dir_ / "macro_variables.cfg").string();
+  const std::string cfg = (dir_ / "data" / "klueng" / "macro_variables.cfg").string();
   EXPECT_THAT(run.out, HasSubstr(cfg + ":2:1: warning F171: " + cfg + ": #50 is not kept between runs"));
   EXPECT_THAT(run.out, HasSubstr(cfg + ":3:1: warning F170:"));
 }

@@ -75,6 +75,14 @@ constexpr MessageText kMessages[] = {
      "{0}{1}: ตัวเลขในจีโค้ดเขียนแบบยกกำลัง (E) ไม่ได้: ให้เขียนค่าของ {0}{1} เป็นตัวเลขพร้อมจุดทศนิยม"},
     {"E133", "{0} and {1} in one block: a corner is either a chamfer or a radius",
      "{0} และ {1} อยู่ในบล็อกเดียวกัน: มุมหนึ่งเป็นได้เพียงการลบมุมหรือการมนมุมอย่างใดอย่างหนึ่ง"},
+    {"E135", "{0} is written with blanks inside: the classic dialect (1999 rules) needs the number right after the letter: write {0}",
+     "{0} เขียนโดยมีช่องว่างอยู่ภายใน: รูปแบบคำสั่งแบบคลาสสิก (กฎปี 2542) ต้องเขียนตัวเลขต่อท้ายอักขระทันที ให้เขียนเป็น {0}"},
+    {"E136", "{0}: the letter O is not the digit 0; did you mean {1}?",
+     "{0}: ตัวอักษร O ไม่ใช่ตัวเลขศูนย์ (0) หมายถึง {1} ใช่หรือไม่"},
+    {"E137", "{0}: a comma is not a decimal point; did you mean {1}?",
+     "{0}: เครื่องหมายจุลภาค (,) ไม่ใช่จุดทศนิยม หมายถึง {1} ใช่หรือไม่"},
+    {"E138", "this line looks like text (\"{0}\"): the control stops here; put the text inside ( ) to make it a comment",
+     "บรรทัดนี้ดูเหมือนเป็นข้อความ (\"{0}\") เครื่องจะหยุดทำงานที่บรรทัดนี้: ให้เขียนข้อความไว้ใน ( ) เพื่อให้เป็นหมายเหตุ"},
     {"E199", "more than {0} errors; the rest of the program is not checked",
      "พบข้อผิดพลาดมากกว่า {0} รายการ จึงไม่ตรวจสอบส่วนที่เหลือของโปรแกรม"},
 
@@ -163,6 +171,10 @@ constexpr MessageText kMessages[] = {
      "{0} ในบล็อก G01 ไม่ถูกอ่าน การลบมุมหรือการมนมุมต้องเขียนโดยมีจุลภาคนำหน้า ({1}) มุมจึงยังคงเป็นมุมแหลม"},
     {"W106", "{0} cannot join the arc's ends: the radius is smaller than half their distance ({1}), so the run stops here with alarm A114",
      "{0} เชื่อมปลายทั้งสองของส่วนโค้งไม่ได้: รัศมีน้อยกว่าครึ่งหนึ่งของระยะระหว่างปลายทั้งสอง ({1}) เมื่อรันจะหยุดที่บล็อกนี้ด้วยสัญญาณเตือน A114"},
+    {"W108", "comment opened with ( is not closed on this line: the control reads the rest of the line as the comment; add ) to close it",
+     "หมายเหตุที่เปิดด้วย ( ไม่ได้ปิดในบรรทัดนี้: เครื่องจะถือว่าข้อความที่เหลือทั้งบรรทัดเป็นหมายเหตุ ให้เติม ) เพื่อปิด"},
+    {"W109", "{0} is read as {1}: the control skips blanks inside a number; if the digits after the blank are another word, put its letter before them",
+     "{0} ถูกอ่านเป็น {1}: เครื่องจะข้ามช่องว่างที่อยู่ในตัวเลข หากตัวเลขหลังช่องว่างเป็นคำสั่งอื่น ให้ใส่อักขระของคำสั่งนั้นไว้ข้างหน้า"},
 
     // I1xx: notes
     {"I102", "blocks with errors that are {1} forms: {0}; choose the {1} dialect (--dialect {2})",

@@ -207,7 +207,7 @@ class Checker {
           const CodeInfo* row = n >= 0 && n <= 99 ? findCode(l, static_cast<int>(n), options_.dialect) : nullptr;
           if (!row) {
             if (l == 'G') emit(codes::kUnknownGCode, w, {wordText(w)});
-            else if (profile_.unknownMIsWarning)
+            else if (n > 99 ? profile_.highMIsWarning : profile_.unknownMIsWarning)
               emit(codes::kMachineSpecificM, w, {wordText(w)}, Severity::Warning);
             else emit(codes::kUnknownMCode, w, {wordText(w)});
             break;
@@ -502,6 +502,19 @@ std::vector<Diagnostic> checkToolBitmaps(const Program& program, const CheckOpti
 
 std::vector<Diagnostic> check(const Program& program, const CheckOptions& options) {
   std::vector<Diagnostic> out = program.lexicalDiagnostics;
+  const MachineProfile& profile = machineProfile(options.dialect);
+  if (!profile.commentToLineEnd || !profile.blanksInWords) {
+    // The profile's strict reading of comments and blanks (the 1999 rules).
+    for (Diagnostic& d : out)
+      if (d.code == codes::kCommentToLineEnd && !profile.commentToLineEnd) {
+        d.code = codes::kUnclosedComment;
+        d.severity = Severity::Error;
+      }
+    for (const Block& block : program.blocks)
+      for (const Word& w : block.words)
+        if (w.blanks && !profile.blanksInWords)
+          out.push_back(Diagnostic{Severity::Error, codes::kBlanksInWord, w.range, {w.text()}});
+  }
   Checker checker(options, out);
   if (options.stopAtFirstError && hasErrors(out)) return out;
   std::size_t seen = out.size();  // diagnostics already looked at for stopAtFirstError

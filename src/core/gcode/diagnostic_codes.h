@@ -41,6 +41,10 @@ inline constexpr const char* kExpectedAssignment = "E131";    // {0}=text
 inline constexpr const char* kCornerNotOnG01 = "E132";        // {0}=word
 inline constexpr const char* kChamferAndCorner = "E133";      // {0}=first {1}=second
 inline constexpr const char* kExponentNumber = "E134";        // {0}=the word before {1}=the E word
+inline constexpr const char* kBlanksInWord = "E135";          // {0}=the word without blanks (classic)
+inline constexpr const char* kLetterOForZero = "E136";        // {0}=word as written {1}=the word meant
+inline constexpr const char* kCommaForPoint = "E137";         // {0}=word as written {1}=the word meant
+inline constexpr const char* kTextLine = "E138";              // {0}=the text (at most 20 characters)
 inline constexpr const char* kTooManyDiagnostics = "E199";  // {0}=limit
 
 // E2nn block rule nn of SPEC 5 (E213, stock size, belongs to the io module)
@@ -91,6 +95,10 @@ inline constexpr const char* kFeedMoveWithoutFeed = "W104";          // {0}=G01/
 inline constexpr const char* kConstantSurfaceWithoutClamp = "W105";
 inline constexpr const char* kArcRadiusCannotJoin = "W106";          // {0}=R word {1}=half the chord
 inline constexpr const char* kCornerWordWithoutComma = "W107";     // {0}=the word, {1}=",C" or ",R"
+// Comments and blanks as people write them (issue 26), from the parser.
+inline constexpr const char* kCommentToLineEnd = "W108";   // '(' not closed: the comment runs to the line end
+                                                           // (E105 in a profile where that is an error)
+inline constexpr const char* kBlanksInNumber = "W109";     // {0}=word as written {1}=as read ("X20 30" = X2030)
 
 // I1xx notes
 inline constexpr const char* kDialectFits = "I102";  // {0}=blocks {1}=dialect name {2}=dialect id
@@ -120,6 +128,10 @@ inline constexpr const char* kAll[] = {
     kCornerNotOnG01,
     kChamferAndCorner,
     kExponentNumber,
+    kBlanksInWord,
+    kLetterOForZero,
+    kCommaForPoint,
+    kTextLine,
     kDoWithoutEnd,
     kEndWithoutDo,
     kGotoNowhere,
@@ -168,6 +180,8 @@ inline constexpr const char* kAll[] = {
     kMachineSpecificM,
     kG28NoMotion,
     kRoundedToIncrement,
+    kCommentToLineEnd,
+    kBlanksInNumber,
     kDialectFits,
 };
 

@@ -64,6 +64,9 @@ constexpr MachineProfile kProfiles[] = {
         .oneShotsWithMotion = kG28G30G53,
         .cycleForm = CycleForm::TwoBlock,
         .unknownMIsWarning = true,
+        .highMIsWarning = true,
+        .blanksInWords = true,
+        .commentToLineEnd = true,
         .cycles = kFanucCycles,
         // Fanuc 0i-TF manual: subprograms nest 10 deep, macro calls 5; M98 P packs the repeats.
         .flow = {.macroB = true, .packedRepeats = true, .maxSubprogramNesting = 10, .maxMacroNesting = 5, .programsInOneFile = true,
@@ -94,7 +97,10 @@ constexpr MachineProfile kProfiles[] = {
         .threadUnderCssIsAlarm = false,
         .oneShotsWithMotion = kG28G30G53,
         .cycleForm = CycleForm::OneBlock,
-        .unknownMIsWarning = true,
+        .unknownMIsWarning = false,
+        .highMIsWarning = true,
+        .blanksInWords = true,
+        .commentToLineEnd = true,
         .cycles = kHaasCycles,
         // Haas lathe manual: 5-digit O numbers, so P is the program and L the repeats.
         .flow = {.macroB = true, .packedRepeats = false, .maxSubprogramNesting = 10, .maxMacroNesting = 5, .programsInOneFile = true,
@@ -126,6 +132,9 @@ constexpr MachineProfile kProfiles[] = {
         .oneShotsWithMotion = kNoOneShots,
         .cycleForm = CycleForm::TwoBlock,
         .unknownMIsWarning = false,
+        .highMIsWarning = false,
+        .blanksInWords = false,
+        .commentToLineEnd = false,
         .cycles = kFanucCycles,
         // The 1999 rules: M98/M99 only, no macros.
         .flow = {.macroB = false, .packedRepeats = true, .maxSubprogramNesting = 10, .maxMacroNesting = 0, .programsInOneFile = false,

@@ -75,17 +75,21 @@ class LineParser {
         ++i;
         ++col;
       } else if (c == '(') {
+        // A comment ends where its parentheses balance ("(n = Vc*1000/(pi*D))"
+        // is one comment) or at the end of the line (issue 26; docs/program-file.md).
         const int startCol = col;
         std::size_t j = i + 1;
         int endCol = col + 1;
-        while (j < line.size() && line[j] != ')') {
-          const std::size_t n = utf8SequenceLength(line, j);
-          j += n;
+        int depth = 1;
+        while (j < line.size()) {
+          if (line[j] == '(') ++depth;
+          else if (line[j] == ')' && --depth == 0) break;
+          j += utf8SequenceLength(line, j);
           ++endCol;
         }
         appendComment(block, line.substr(i + 1, j - i - 1));
         if (j >= line.size()) {
-          report(codes::kUnclosedComment, startCol, endCol - startCol, {});
+          report(codes::kCommentToLineEnd, startCol, endCol - startCol, {}, Severity::Warning);
           i = j;
           col = endCol;
         } else {
@@ -118,6 +122,32 @@ class LineParser {
           w.range.column -= 1;
           w.range.length += 1;
         }
+        sawWordOrSkip = true;
+      } else if (isLetter(c) && oForZeroEnd(i) > i) {
+        // "GO1": the letter O typed for the digit 0. One error that names the word meant.
+        const std::size_t e = oForZeroEnd(i);
+        std::string written(line.substr(i, e - i)), meant = written;
+        for (std::size_t k = 1; k < meant.size(); ++k)
+          if (meant[k] == 'O' || meant[k] == 'o') meant[k] = '0';
+        for (std::string* t : {&written, &meant}) t->front() = static_cast<char>(std::toupper(static_cast<unsigned char>(t->front())));
+        report(codes::kLetterOForZero, col, static_cast<int>(e - i), {written, meant});
+        col += static_cast<int>(e - i);
+        i = e;
+        sawWordOrSkip = true;
+      } else if ((isLetter(c) && looksLikeText(i)) || utf8SequenceLength(line, i) > 1) {
+        // "roughing pass", "กลึงหยาบ": words the author meant as a comment. One error for the line.
+        std::size_t e = i;
+        while (e < line.size() && line[e] != '(' && line[e] != ';') ++e;
+        std::size_t last = e;
+        while (last > i && isBlank(static_cast<unsigned char>(line[last - 1]))) --last;
+        int length = 0;
+        std::size_t shown = i;  // the first 20 code points, for the message
+        for (std::size_t k = i; k < last; k += utf8SequenceLength(line, k))
+          if (++length <= 20) shown = k + utf8SequenceLength(line, k);
+        report(codes::kTextLine, col, length, {std::string(line.substr(i, shown - i))});
+        for (std::size_t k = last; k < e; ++k) ++length;
+        col += length;
+        i = e;
         sawWordOrSkip = true;
       } else if (isLetter(c)) {
         if (words_.size() == codes::kMaxWordsPerBlock) {
@@ -206,6 +236,7 @@ class LineParser {
   int lineNumber_ = 0;
   // Words of the current line; reused so each block gets one exact allocation.
   std::vector<Word> words_;
+  std::string scratch_;  // a number written with blanks inside, gathered without them
 
   // What the scans ask of a block without reading its words.
   static void noteWords(Block& block) {
@@ -224,7 +255,8 @@ class LineParser {
     block.comment.append(text);
   }
 
-  void report(const char* code, int column, int length, std::vector<std::string> args) {
+  void report(const char* code, int column, int length, std::vector<std::string> args,
+              Severity severity = Severity::Error) {
     if (budget_ == 0) return;
     if (--budget_ == 0) {
       program_.lexicalDiagnostics.push_back(
@@ -232,7 +264,83 @@ class LineParser {
       return;
     }
     program_.lexicalDiagnostics.push_back(
-        Diagnostic{Severity::Error, code, {lineNumber_, column, length, file_}, std::move(args)});
+        Diagnostic{severity, code, {lineNumber_, column, length, file_}, std::move(args)});
+  }
+
+  // "GO1", "MO3", "G0O": a letter, then digits and at least one letter O, and
+  // at least one digit. Returns the end of such a token, else i.
+  std::size_t oForZeroEnd(std::size_t i) const {
+    std::size_t e = i + 1;
+    bool o = false, digit = false;
+    while (e < line_.size()) {
+      const auto d = static_cast<unsigned char>(line_[e]);
+      if (d == 'O' || d == 'o') o = true;
+      else if (isDigit(d)) digit = true;
+      else if (d != '.') break;
+      ++e;
+    }
+    if (!o || !digit) return i;
+    if (e < line_.size() && isLetter(static_cast<unsigned char>(line_[e]))) return i;
+    return e;
+  }
+
+  // A run of letters that no address reads: three or more ("roughing"), or two
+  // not followed by a value ("to", "OD"). Macro statements are read before this.
+  bool looksLikeText(std::size_t i) const {
+    std::size_t e = i;
+    while (e < line_.size() && isLetter(static_cast<unsigned char>(line_[e]))) ++e;
+    if (e - i >= 3) return true;
+    if (e - i < 2) return false;
+    if (e >= line_.size()) return true;
+    const auto d = static_cast<unsigned char>(line_[e]);
+    return !(isNumberChar(d) || d == '#' || d == '[' || d == ',');
+  }
+
+  // The number after an address letter. A Fanuc skips blanks inside a word
+  // ("X 38" = X38, "X- 5." = X-5.), so the number is gathered here without
+  // them: number is a view of line_ when it has no blanks, else of scratch_.
+  struct NumberText {
+    std::string_view number;
+    std::size_t end = 0;        // in line_, after the number
+    bool blanks = false;        // blanks between the letter and the number, or after a sign
+    bool splitDigits = false;   // blanks between two groups of digits ("X20 30")
+  };
+  NumberText gatherNumber(std::size_t i) {
+    NumberText t;
+    const std::size_t n = line_.size();
+    std::size_t k = i;
+    while (k < n && isBlank(static_cast<unsigned char>(line_[k]))) ++k;
+    if (k > i && k < n && isNumberChar(static_cast<unsigned char>(line_[k]))) t.blanks = true;
+    else k = i;  // a lone letter: the blanks are not part of it
+    const std::size_t start = k;
+    std::size_t e = k;
+    while (e < n && isNumberChar(static_cast<unsigned char>(line_[e]))) ++e;
+    // Fast path: the number stands in one piece.
+    auto continues = [&](std::size_t at, bool afterSignOnly) {
+      std::size_t b = at;
+      while (b < n && isBlank(static_cast<unsigned char>(line_[b]))) ++b;
+      if (b == at || b >= n) return std::size_t{0};
+      const auto d = static_cast<unsigned char>(line_[b]);
+      if (afterSignOnly ? isNumberChar(d) && d != '+' && d != '-' : isDigit(d) || d == '.') return b;
+      return std::size_t{0};
+    };
+    const bool signOnly = e == start + 1 && (line_[start] == '+' || line_[start] == '-');
+    if (!t.blanks && !continues(e, signOnly)) {
+      t.number = line_.substr(start, e - start);
+      t.end = e;
+      return t;
+    }
+    scratch_.assign(line_.substr(start, e - start));
+    std::size_t b;
+    while ((b = continues(e, scratch_.size() == 1 && (scratch_[0] == '+' || scratch_[0] == '-'))) != 0) {
+      if (scratch_.size() == 1 && (scratch_[0] == '+' || scratch_[0] == '-')) t.blanks = true;
+      else t.splitDigits = true;
+      e = b;
+      while (e < n && isNumberChar(static_cast<unsigned char>(line_[e]))) scratch_ += line_[e++];
+    }
+    t.number = scratch_;
+    t.end = e;
+    return t;
   }
 
   // Reads letter + number at line_[i]; returns the column after the word.
@@ -244,47 +352,62 @@ class LineParser {
     if (startsAddressExpression(i)) return lexAddressExpression(letter, i, col);
     // number := [+-]? ( digits [. digits?] | . digits ), read in one pass
     // with its value (the lexer's hottest loop: every word of the file).
-    const std::size_t numberStart = i;
-    const std::size_t n = line_.size();
-    std::size_t k = i;
-    if (k < n && (line_[k] == '+' || line_[k] == '-')) ++k;
+    const NumberText text = gatherNumber(i);
+    const std::string_view number = text.number;
+    const std::size_t n = number.size();
+    std::size_t k = 0;
+    if (k < n && (number[k] == '+' || number[k] == '-')) ++k;
     const std::size_t intStart = k;
     std::uint64_t mantissa = 0;  // exact while at most 15 digits (parseLongUnsigned beyond)
-    while (k < n && isDigit(static_cast<unsigned char>(line_[k]))) mantissa = mantissa * 10 + static_cast<std::uint64_t>(line_[k++] - '0');
+    while (k < n && isDigit(static_cast<unsigned char>(number[k]))) mantissa = mantissa * 10 + static_cast<std::uint64_t>(number[k++] - '0');
     const std::size_t intDigits = k - intStart;
     bool point = false;
     std::size_t fracDigits = 0;
-    if (k < n && line_[k] == '.') {
+    if (k < n && number[k] == '.') {
       point = true;
       const std::size_t fracStart = ++k;
-      while (k < n && isDigit(static_cast<unsigned char>(line_[k]))) mantissa = mantissa * 10 + static_cast<std::uint64_t>(line_[k++] - '0');
+      while (k < n && isDigit(static_cast<unsigned char>(number[k]))) mantissa = mantissa * 10 + static_cast<std::uint64_t>(number[k++] - '0');
       fracDigits = k - fracStart;
     }
+    i = text.end;
+    // "Z,15" / "X2,5": a comma typed for the decimal point.
+    if (i + 1 < line_.size() && line_[i] == ',' && isDigit(static_cast<unsigned char>(line_[i + 1])) && k == n) {
+      std::size_t e = i + 1;
+      while (e < line_.size() && isDigit(static_cast<unsigned char>(line_[e]))) ++e;
+      std::string written(line_.substr(start, e - start));
+      written.front() = letter;
+      const std::string meant = std::string(1, letter) + std::string(number) + "." + std::string(line_.substr(i + 1, e - i - 1));
+      report(codes::kCommaForPoint, col, static_cast<int>(e - start), {written, meant});
+      i = e;
+      return col + static_cast<int>(e - start);
+    }
     // The number as written runs on over every sign, digit and point ("1.2.3", "5-").
-    i = k;
-    while (i < n && isNumberChar(static_cast<unsigned char>(line_[i]))) ++i;
-    const std::string_view number = line_.substr(numberStart, i - numberStart);
     const int length = static_cast<int>(i - start);
-    if (number.empty()) {
+    if (n == 0) {
       report(codes::kLoneLetter, col, 1, {std::string(1, letter)});
+      i = start + 1;
       return col + 1;
     }
-    if (i != k || intDigits + fracDigits == 0) {
+    if (k != n || intDigits + fracDigits == 0) {
       report(codes::kMalformedNumber, col, length, {std::string(line_.substr(start, i - start))});
       return col + length;
     }
+    if (text.splitDigits)
+      report(codes::kBlanksInNumber, col, length,
+             {std::string(line_.substr(start, i - start)), std::string(1, letter) + std::string(number)}, Severity::Warning);
 
     Word& w = words_.emplace_back();
     w.letter = letter;
     w.colon = colon;
     w.number.assign(number);
     w.hasDecimalPoint = point;
+    w.blanks = text.blanks || text.splitDigits;
     w.decimals = static_cast<std::int16_t>(fracDigits);
     w.range = SourceRange{lineNumber_, col, length, file_};
     const std::size_t digits = intDigits + fracDigits;
     const double v = digits <= 15 ? static_cast<double>(mantissa) / kPow10[fracDigits]
-                                  : parseLongUnsigned(line_.substr(intStart, k - intStart));
-    w.value = line_[numberStart] == '-' ? -v : v;
+                                  : parseLongUnsigned(number.substr(intStart, k - intStart));
+    w.value = number[0] == '-' ? -v : v;
     return col + length;
   }
 

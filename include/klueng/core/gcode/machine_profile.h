@@ -112,7 +112,10 @@ struct MachineProfile {
   // Group-00 codes that may share a block with G00/G01 (G28, G30, G53), as G numbers.
   std::span<const int> oneShotsWithMotion;
   CycleForm cycleForm;
-  bool unknownMIsWarning;    // an M code outside the table: W101 (true) or E115 (false)
+  bool unknownMIsWarning;    // an M code 0-99 outside the table: W101 (true) or E115 (false)
+  bool highMIsWarning;       // an M code from 100 up (machine options: live tooling...): W101 or E115
+  bool blanksInWords;        // "X 38" reads as X38 (true, as a Fanuc), or E135 (false)
+  bool commentToLineEnd;     // an unclosed '(' runs to the line end: W108 (true) or E105 (false)
   CycleSettings cycles;      // defaults of the cycles (one-block forms, drilling)
   FlowSettings flow;
 };

@@ -17,6 +17,7 @@ struct Word {
   bool hasDecimalPoint : 1 = false;
   bool colon : 1 = false;   // an ISO ':' program number (":0100"), stored as letter 'O'
   bool comma : 1 = false;   // a Fanuc ',C' ',R' ',A' word (chamfer, corner radius, angle) on G01
+  bool blanks : 1 = false;  // written with blanks inside ("X 38"): a Fanuc skips them, classic refuses
   std::int16_t decimals = 0;  // digits after the decimal point (a line is at most 4096 characters)
   int expr = -1;            // macro B: index into Program::expressions when the value is an
                             // expression (X#101, Z-[#1+2.]); value is 0 then and number holds
