@@ -288,7 +288,7 @@ RPM30 = 1000 * 100 / (math.pi * 30)
 case("alarm_a108_thread_under_g96", "G96 S100 M03\nG00 X30. Z5.\nG32 Z-10. F1.\n", [
     row("RAPID", 2, 0, 0.225, 0, 300, 30, 270, feed=BOTH, rpm=3000),  # X0: clamped to the maximum
     row("RAPID", 2, 0.225, 2.2125, 30, 270, 30, 5, feed=8000, rpm=RPM30),
-], alarm="program.nc:3:1: alarm A108")
+], alarm="program.nc:3:1: alarm A108", args="--dialect classic")  # Fanuc/Haas: W131, the thread runs
 case("alarm_a109_c_outside_c_axis_mode", "G00 C90.\n", [], alarm="program.nc:1:5: alarm A109",
      args="--dialect classic")
 case("alarm_a110_c_axis_without_brake", "M41\n", [], alarm="program.nc:1:1: alarm A110",

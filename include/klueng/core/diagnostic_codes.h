@@ -127,7 +127,8 @@ inline constexpr const char* kToolForParting = "I407";
 inline constexpr const char* kToolForTurning = "I408";
 inline constexpr const char* kToolSetForJob = "I409";
 inline constexpr const char* kOffsetFromLibrary = "I410";
-inline constexpr const char* kOffsetReplacedByLibrary = "I411";  // a row set for the table's tool, in a plain program
+inline constexpr const char* kOffsetReplacedByLibrary = "I411";
+inline constexpr const char* kToolsBeyondCentre = "I412";  // {0} line of the first cut at X < 0  // a row set for the table's tool, in a plain program
 
 // Run-time alarms and notes of the interpreter (machine; texts in messages_machine.cpp)
 inline constexpr const char* kSpindleAboveMaximum = "A101";

@@ -169,6 +169,9 @@ constexpr MessageText kMessages[] = {
     {codes::kToolSetForJob, "T{0} = {1} (set for this job)", "T{0} = {1} (กำหนดไว้สำหรับงานนี้)"},
     {codes::kOffsetFromLibrary, "offset {0} was 0 0 0 0: nose radius {1} and tip {2} of {3} are used",
      "ออฟเซต {0} เป็น 0 0 0 0: ใช้รัศมีจมูกมีด {1} และหมายเลขปลายมีด {2} ของ {3}"},
+    {codes::kToolsBeyondCentre,
+     "the program cuts at X < 0 (from line {0}): its tools work beyond the centre line, as on a rear tool post, and are mirrored there",
+     "โปรแกรมกลึงที่ X < 0 (ตั้งแต่บรรทัดที่ {0}): มีดทำงานอีกฝั่งของแนวศูนย์กลาง เหมือนป้อมมีดด้านหลัง จึงกลับด้านมีดไปฝั่งนั้น"},
     // {4} {5}: the row's own radius and tip, set for the tool the table had at that station.
     {codes::kOffsetReplacedByLibrary,
      "offset {0} held R{4} tip {5} for the table's tool: nose radius {1} and tip {2} of {3} are used",

@@ -416,8 +416,22 @@ bool CutSimulator::excuseGuess(const char* code, const Move& m, const Vec2& wher
   return true;
 }
 
+namespace {
+// A move beyond the centre line seen from the front: the bar is round, so the
+// cut is the same (X negated, arcs turn the other way).
+Move mirroredAcrossCentre(const Move& in) {
+  Move m = in;
+  for (Vec2* p : {&m.path.start, &m.path.end, &m.path.centre, &m.noseCentre}) p->y() = -p->y();
+  m.path.ccw = !m.path.ccw;
+  return m;
+}
+}  // namespace
+
 void CutSimulator::cutMove(std::size_t index, double sEnd) {
-  const Move& m = timeline_->moves[index];
+  Move mirrored;
+  const bool beyond = setup_.machine.toolsBeyondCentre;
+  if (beyond) mirrored = mirroredAcrossCentre(timeline_->moves[index]);
+  const Move& m = beyond ? mirrored : timeline_->moves[index];
   if (m.kind == MoveKind::Dwell) return;
   const Segment& path = m.path;
   if (!path.start.allFinite() || !path.end.allFinite() || (path.isArc() && !path.centre.allFinite())) return;
@@ -454,8 +468,9 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
     return hi;
   };
   auto raise = [&](const char* code, double s) {
-    alarm_ = makeAlarm(code, m, m.path.pointAt(s));
-    alarmPosition_ = m.path.pointAt(s);
+    const Vec2 at = timeline_->moves[index].path.pointAt(s);  // as programmed (beyond the centre too)
+    alarm_ = makeAlarm(code, m, at);
+    alarmPosition_ = at;
     alarmTime_ = m.timeAt(s);
   };
 
@@ -482,7 +497,7 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
     edgeCtx.tool = &*edgeOnly;
     if (hitsChuck(ctx, nosePieces, boxPieces) && !hitsChuck(edgeCtx, nosePieces, boxPieces)) {
       const double s = earliest([&](double e) { return hitsChuck(ctx, nose(s0, e), boxes(s0, e)); });
-      excuseGuess(codes::kToolHitsChuck, m, m.path.pointAt(s));
+      excuseGuess(codes::kToolHitsChuck, m, timeline_->moves[index].path.pointAt(s));
       ctx.tool = edgeCtx.tool;  // the rest of the move as its edge alone: no second word on the chuck
     }
   }
@@ -518,7 +533,7 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
       const auto n = nose(s0, s);
       const auto b = boxes(s0, s);
       const bool edge = touches(n, b, false);
-      if (!edge && excuseGuess(codes::kHolderHitsStock, m, m.path.pointAt(s))) return;
+      if (!edge && excuseGuess(codes::kHolderHitsStock, m, timeline_->moves[index].path.pointAt(s))) return;
       raise(m.kind == MoveKind::Rapid ? codes::kRapidIntoStock : (edge ? codes::kCutWithSpindleStopped : codes::kHolderHitsStock), s);
     }
     return;
@@ -527,7 +542,7 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
   forEachInterval(ctx, nosePieces, boxPieces, false, [&](int i, double lo, double hi) { stock_.remove(i, lo, hi); });
   if (options_.detectCollisions && !tool->holder.empty() && overlapsStock(ctx, nosePieces, boxPieces, true)) {
     const double s = earliest([&](double e) { return overlapsStock(ctx, nose(s0, e), boxes(s0, e), true); });
-    if (excuseGuess(codes::kHolderHitsStock, m, m.path.pointAt(s))) return;
+    if (excuseGuess(codes::kHolderHitsStock, m, timeline_->moves[index].path.pointAt(s))) return;
     raise(codes::kHolderHitsStock, s);
   }
 }

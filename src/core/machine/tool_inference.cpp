@@ -383,6 +383,7 @@ struct MotionUse {
   double belowZero = 0.0;    // mm fed at X < 0 (a tool beyond the centre)
   double aboveZero = 0.0;    // mm fed at X > 0
   int insideLine = 0;        // the first Z feed left inward
+  int belowLine = 0;         // the first feed at X < 0
   int chuckLine = 0;         // the first feed along -Z
   int tailLine = 0;          // the first feed along +Z
 };
@@ -411,7 +412,10 @@ std::map<int, MotionUse> recordMotion(const Timeline& timeline) {
     if (m.kind == MoveKind::Rapid) continue;
     const double length = d.norm();
     const double xMid = (m.path.start.y() + m.path.end.y()) / 2.0;
-    if (xMid < -kOnCentreMm) u.belowZero += length;
+    if (xMid < -kOnCentreMm) {
+      u.belowZero += length;
+      if (!u.belowLine) u.belowLine = m.line;
+    }
     else if (xMid > kOnCentreMm) u.aboveZero += length;
     if (std::abs(dz) >= kMinZRunMm && std::abs(dz) >= 2.0 * std::abs(dx)) {
       (dz < 0.0 ? u.towardChuck : u.towardTail) += std::abs(dz);
@@ -587,6 +591,25 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
     const io::LibraryTool* tool = pick(library, *want);
     if (!tool) continue;
     assign(station, *tool, want->reason, want->detail, want->line, use.offsets);
+  }
+  // A plain program that works beyond the centre line (X < 0): its tools are there.
+  if (context.fromProgram) {
+    double below = 0.0, above = 0.0;
+    int line = 0;
+    for (const auto& [station, m] : motion) {
+      below += m.belowZero;
+      above += m.aboveZero;
+      if (m.belowZero > 0.0 && (!line || m.belowLine < line)) line = m.belowLine;
+    }
+    if (below > above && below >= 1.0) {
+      out.setup.machine.toolsBeyondCentre = true;
+      Diagnostic d;
+      d.severity = Severity::Note;
+      d.code = codes::kToolsBeyondCentre;
+      d.range.line = line;
+      d.args = {std::to_string(line)};
+      out.offsetNotes.push_back(std::move(d));
+    }
   }
   // A plain program's stations the evidence said nothing of are guesses too.
   if (context.fromProgram)

@@ -67,7 +67,7 @@ INSTANTIATE_TEST_SUITE_P(
         AlarmCase{"ReversalWithoutM05", "S500 M03\nM04\n", F, "A105", 2, 1, 1},
         AlarmCase{"StartWithBrakeOn", "M86\nS100 M03\n", F, "A106", 2, 6, 1},
         AlarmCase{"BrakeWhileTurning", "S100 M03\nM86\n", F, "A107", 2, 1, 1},
-        AlarmCase{"ThreadUnderG96", "G96 S100 M03\nG32 Z-10. F1.\n", F, "A108", 2, 1, 1},
+        AlarmCase{"ThreadUnderG96", "G96 S100 M03\nG32 Z-10. F1.\n", C, "A108", 2, 1, 1},
         AlarmCase{"COutsideCAxisMode", "G00 C90.\n", C, "A109", 1, 5, 0},
         AlarmCase{"HOutsideCAxisMode", "M86\nH10.\n", C, "A109", 2, 1, 1},
         // Fanuc and Haas profiles have no C-axis mode: "X30. C2." is a chamfer written without the comma.

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -560,11 +561,26 @@ TEST(Threading, G76ChamferPullsOutAt45DegreesOverRTenthsOfALead) {
   EXPECT_NEAR(p[4].x, 35.0, 1e-9);
 }
 
-TEST(Threading, G76UnderG96RaisesA108) {
-  const CycleRun t("G96 S100 M03\nG00 X35. Z5.\nG76 P010060 Q50 R0.05\nG76 X28.16 Z-20. P920 Q300 F1.5\n");
+// Fanuc 0i-TF operator's manual, constant surface speed control: it stays effective
+// during threading (G97 is recommended); the control runs the thread. One warning.
+TEST(Threading, G76UnderG96WarnsOnceAndThreads) {
+  const Timeline t = interpret(gcode::parse("G96 S100 M03\nG00 X35. Z5.\nG76 P010060 Q50 R0.05\n"
+                                            "G76 X28.16 Z-20. P920 Q300 F1.5\nG76 X28.16 Z-20. P920 Q300 F1.5\n", 1),
+                               testing::testSetup(), RunOptions{});
+  EXPECT_FALSE(t.alarm);
+  ASSERT_EQ(t.flow.notices.size(), 1u);
+  EXPECT_EQ(t.flow.notices[0].code, "W131");
+  EXPECT_EQ(t.flow.notices[0].range.line, 4);
+  EXPECT_TRUE(std::any_of(t.moves.begin(), t.moves.end(), [](const Move& m) { return m.kind == MoveKind::Thread; }));
+}
+
+TEST(Threading, G76UnderG96RaisesA108OnTheClassicTrainer) {
+  RunOptions classic;
+  classic.dialect = gcode::Dialect::Classic;
+  const Timeline t = interpret(gcode::parse("G96 S100 M03\nG00 X35. Z5.\nG32 Z-10. F1.5\n", 1), testing::testSetup(), classic);
   ASSERT_TRUE(t.alarm);
   EXPECT_EQ(t.alarm->code, "A108");
-  EXPECT_EQ(t.alarm->range.line, 4);
+  EXPECT_EQ(t.alarm->range.line, 3);
 }
 
 // ---- the sample ----------------------------------------------------------------

@@ -88,6 +88,10 @@ struct MachineConfig {
   // the through-hole of a 160 mm three-jaw chuck on a school lathe; 0 = none.
   double spindleBore = 40.0;
   int turretStations = 12;       // tool stations on the turret, 1..24
+  // The tools work beyond the centre line (programmed in negative X: rear tool
+  // posts, many hobby and Russian lathes): the cut mirrors them onto the front,
+  // where the same bar is cut the same way (a plain program's run decides it).
+  bool toolsBeyondCentre = false;
   // A program that loops without end stops with an alarm (issue 9): after this
   // many blocks run again by a loop, a jump or a call (max_blocks), or after
   // this much simulated machining time in seconds (max_run_time).
