@@ -752,4 +752,77 @@ TEST(RealStyleFanuc, Handle_G71TypeII_ArcPocket) {
   EXPECT_NEAR(p.d(-70.0), 40.0, kMm);  // the bar
 }
 
+// ============================================================================
+// Issue 26: the shop's tools, not the classroom turret. These files have no job
+// header, so every station's tool comes from the program's evidence and the
+// shipped tools.cfg only breaks ties; no --tool is given.
+// ============================================================================
+
+// O30414: T202 with no comment, a Haas G75 groove. The shipped station 2 is the
+// left-hand turning tool; the G75 makes it the library's 3 mm grooving blade
+// (I404) with its own R0 and tip 3 (I411, not row 02's R0.8 tip 4).
+TEST(RealStyleShopTools, Haas_T202Groove_G75) {
+  const Job job{"haas-14-pin-grooves-t202.nc", "haas", "--stock 1x3in", true};
+  RUN_CLEAN(job, r);
+  EXPECT_NE(r.check.text.find(":20:1: note I404: T02 = grooving-3mm (grooving cycle G75 on line 20)"), std::string::npos)
+      << r.check.text;
+  EXPECT_NE(r.check.text.find("note I411: offset 02 held R0.8 tip 4"), std::string::npos) << r.check.text;
+  const Profile& p = r.part;
+  EXPECT_NEAR(p.d(-0.2), 0.875, kIn);  // G71 U0 W0: the profile X0.875 to Z-1.5
+  EXPECT_NEAR(p.d(-1.0), 0.875, kIn);
+  EXPECT_NEAR(p.d(-2.0), 1.000, kIn);  // the bar
+  // The blade's left corner goes from Z-0.5 to Z-0.6 (K0.08 shifts, then the
+  // last at Z-0.6), 3 mm = 0.11811 in wide: the groove is Ø0.7 over
+  // [-0.6, -0.5 + 0.11811 = -0.38189].
+  EXPECT_NEAR(p.d(-0.55), 0.700, kIn);
+  EXPECT_NEAR(p.d(-0.39), 0.700, kIn);
+  EXPECT_NEAR(p.edge(-0.3, -0.45, 0.8), -0.3819, kIn);
+  EXPECT_NEAR(p.edge(-0.7, -0.55, 0.8), -0.6, kIn);
+}
+
+// O30415: T2 finishes a long pin along -Z to 0.6 in from the jaws. The shipped
+// left-hand tool's body would reach into the chuck (A304); a G70 toward the
+// chuck wants a right-hand finishing tool: cnmg-80-r04 (I408).
+TEST(RealStyleShopTools, Haas_T2FinishesTowardTheChuck) {
+  const Job job{"haas-15-long-pin-t2-finish.nc", "haas", "--stock 1.25x6in", true};
+  RUN_CLEAN(job, r);
+  EXPECT_NE(r.check.text.find(":18:1: note I408: T02 = cnmg-80-r04 (outside turning, G70 on line 18)"), std::string::npos)
+      << r.check.text;
+  const Profile& p = r.part;
+  EXPECT_NEAR(p.d(-0.5), 0.900, kIn);  // G70 with G40: the imaginary tip on X0.9 from Z0 to Z-5.
+  EXPECT_NEAR(p.d(-4.9), 0.900, kIn);
+  EXPECT_NEAR(p.edge(-4.8, -5.2, 1.0), -5.0, kIn);
+  EXPECT_NEAR(p.d(-5.5), 1.250, kIn);  // the bar up to the jaws
+}
+
+// O2010: a ring bored with hand-written G01 passes by T0202, each pass left by
+// a small move inward (X43. after Z-20. at X44.): a boring bar (I406).
+TEST(RealStyleShopTools, Fanuc_T0202BoresByHand) {
+  const Job job{"fanuc-10-ring-hand-bored.nc", "fanuc", "--stock 80x50x40", false};
+  RUN_CLEAN(job, r);
+  EXPECT_NE(r.check.text.find(":8:1: note I406: T02 = boring-bar-16 (cutting inside a bore, N6 G01 Z-20. F0.15 on line 8)"),
+            std::string::npos)
+      << r.check.text;
+  const Profile& p = r.part;
+  EXPECT_NEAR(p.inner(-10.0), 50.0, kMm);  // last pass X50. to Z-20. (tip 2 with G40: exact)
+  EXPECT_NEAR(p.inner(-19.0), 50.0, kMm);
+  EXPECT_NEAR(p.inner(-20.5), 40.0, kMm);  // nothing cut past the passes' Z-20.
+  EXPECT_NEAR(p.inner(-30.0), 40.0, kMm);  // the tube's own bore
+  EXPECT_NEAR(p.d(-10.0), 80.0, kMm);
+}
+
+// A hobby-lathe file: lowercase words, no % or O, the tool beyond the centre
+// (x-30.5), facing twice toward X0 at G98 60 mm/min. The tools work at X < 0
+// (I412) and are mirrored there, so the holder never crosses the part.
+TEST(RealStyleShopTools, Fanuc_FacingBeyondTheCentre) {
+  const Job job{"fanuc-11-face-beyond-centre.nc", "fanuc", "--stock 30x50", false};
+  RUN_CLEAN(job, r);
+  EXPECT_NE(r.check.text.find(":4:1: note I412: the program cuts at X < 0 (from line 4)"), std::string::npos)
+      << r.check.text;
+  EXPECT_EQ(r.simulate.text.find("W324"), std::string::npos) << r.simulate.text;
+  const Profile& p = r.part;
+  EXPECT_NEAR(p.edge(-1.5, -2.5, 20.0), -2.0, kMm);  // faced at z-2 (tip 3, G40: the face is the programmed Z)
+  EXPECT_NEAR(p.d(-10.0), 30.0, kMm);
+}
+
 }  // namespace

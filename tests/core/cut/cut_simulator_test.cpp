@@ -217,6 +217,72 @@ TEST(CutSimulator, ToolIntoTheChuckIsAnAlarm) {
   EXPECT_EQ(sim.alarm()->args.at(1), "60.000");
 }
 
+// Issue 26: a tool Klueng guessed from a plain program (ToolTable::guessed) whose
+// holder touches the bar: a warning naming the station, once, and the run goes on.
+TEST(CutSimulator, GuessedToolsHolderIsAWarningOnceAndTheRunGoesOn) {
+  io::RgbImage img = blankImage(16, 30);
+  paint(img, 0, 20, 9, 29, 0xE0A000);
+  paint(img, 0, 0, 15, 19, 0x000000);
+  const ToolShape tool = *makeToolShape(img, "wide-holder.bmp", 0.4, 3).value;
+  const machine::Timeline tl = timelineOf({
+      move(MoveKind::Rapid, Segment::line(zx(-10, 40), zx(-10, 26)), 0, 1, 60),
+      move(MoveKind::Line, Segment::line(zx(-10, 26), zx(-10, 15)), 0, 1, 70),
+      move(MoveKind::Rapid, Segment::line(zx(-10, 15), zx(-10, 40)), 0, 1, 80),
+      move(MoveKind::Rapid, Segment::line(zx(-10, 40), zx(-20, 40)), 0, 1, 90),
+      move(MoveKind::Line, Segment::line(zx(-20, 40), zx(-20, 15)), 0, 1, 100),
+  });
+  CutSetup setup = barSetup(50, 100);
+  setup.tools.guessed[0] = true;
+  CutSimulator sim(tl, setup, libraryWith(tool));
+  sim.runToEnd();
+  EXPECT_FALSE(sim.alarm().has_value());
+  ASSERT_EQ(sim.warnings().size(), 1u);
+  EXPECT_EQ(sim.warnings()[0].code, "W324");
+  EXPECT_EQ(sim.warnings()[0].severity, Severity::Warning);
+  EXPECT_EQ(sim.warnings()[0].range.line, 70);
+  EXPECT_EQ(sim.warnings()[0].args.at(0), "01");
+  EXPECT_EQ(sim.warnings()[0].args.at(2), "-10.000");
+  EXPECT_NEAR(std::stod(sim.warnings()[0].args.at(3)), 40.0, 0.003);
+  // Both plunges cut to Ø30: the run did not stop at the first.
+  EXPECT_NEAR(sim.stock().outerRadius(sim.stock().columnAt(-17.5)), 15.0, 0.03);
+}
+
+// A guessed tool's cutting edge in a rapid is still the program's fault (A301).
+TEST(CutSimulator, GuessedToolsEdgeInARapidIsStillAnAlarm) {
+  const machine::Timeline tl = timelineOf({
+      move(MoveKind::Rapid, Segment::line(zx(-10, 40), zx(-10, 20)), 0, 1, 60),
+  });
+  CutSetup setup = barSetup(50, 100);
+  setup.tools.guessed[0] = true;
+  CutSimulator sim(tl, setup, libraryWith(squareTool(0.8, 3)));
+  sim.runToEnd();
+  ASSERT_TRUE(sim.alarm().has_value());
+  EXPECT_EQ(sim.alarm()->code, "A301");
+  EXPECT_TRUE(sim.warnings().empty());
+}
+
+// The body of a guessed tool reaching the chuck: W325, and the run goes on.
+TEST(CutSimulator, GuessedToolsBodyAtTheChuckIsAWarning) {
+  CutSetup setup = barSetup(50, 100);
+  setup.machine.chuckGrip = 15.0;
+  setup.tools.guessed[0] = true;
+  const machine::Timeline tl = timelineOf({
+      move(MoveKind::Rapid, Segment::line(zx(5, 30), zx(-50, 30)), 0, 1, 80),
+      move(MoveKind::Rapid, Segment::line(zx(-50, 30), zx(-85, 30)), 0, 1, 90),
+  });
+  // Holder 20 mm to the left of the insert: the insert stops 5 mm short of the jaws.
+  io::RgbImage img = blankImage(50, 30);
+  paint(img, 40, 20, 49, 29, 0xE0A000);
+  paint(img, 0, 0, 49, 19, 0x000000);
+  const ToolShape tool = *makeToolShape(img, "long-body.bmp", 0.0, 3).value;
+  CutSimulator sim(tl, setup, libraryWith(tool));
+  sim.runToEnd();
+  EXPECT_FALSE(sim.alarm().has_value()) << sim.alarm()->code;
+  ASSERT_EQ(sim.warnings().size(), 1u);
+  EXPECT_EQ(sim.warnings()[0].code, "W325");
+  EXPECT_EQ(sim.warnings()[0].range.line, 90);
+}
+
 TEST(CutSimulator, ThreadingStampsTheToolOncePerLead) {
   // A V insert 4.5 mm wide, 0.5 mm narrower per row downwards, tip 8 (bottom middle).
   io::RgbImage img = blankImage(9, 30);
