@@ -392,6 +392,7 @@ class Checker {
     if (!kind) kind = defaultKind(w.letter);
     if (kind == 'd')  // a dwell time: the profile says how P is read
       kind = profile_.dwellP == DwellPUnit::SecondsWithPointElseMs && w.hasDecimalPoint ? 's' : '#';
+    if (kind == 'i') kind = w.hasDecimalPoint ? '+' : '#';  // Q5. is 5 mm, Q5000 is 5000 increments
     switch (kind) {
       case '.': checkReal(w, false); break;
       case '+': {

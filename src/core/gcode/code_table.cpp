@@ -155,7 +155,8 @@ constexpr CodeInfo kRows[] = {
     {'G', 80, G::CannedCycle, P::State, kFH, false, "Canned cycle cancel", "ยกเลิกวัฏจักร",
      "G80 - cancel a canned cycle (no effect on this lathe)",
      "G80 - ยกเลิกวัฏจักร (ไม่มีผลกับเครื่องกลึงนี้)"},
-    // Drilling on centre. Fanuc 0i-TF: G83 Q in least increments, P in ms;
+    // Drilling on centre. Fanuc 0i-TF: G83 Q in least increments (or a length with its
+    // decimal point, decimal point programming), P in ms;
     // Haas: Q a length with a decimal point, P a dwell as G04 reads it.
     {'G', 81, G::CannedCycle, P::Motion, kFH, false, "Drilling cycle", "วัฏจักรเจาะรู",
      "G81 Z-20. R2. F0.1 - drill on centre to Z-20 from 2 above the face, then rapid out",
@@ -165,7 +166,7 @@ constexpr CodeInfo kRows[] = {
      "G82 Z-0.1 R0.1 P0.3 F0.005 - เจาะนำศูนย์ถึง Z-0.1 แล้วหยุดรอ 0.3 วินาทีที่ก้นรู", "PdR.F+"},
     {'G', 83, G::CannedCycle, P::Motion, kF, false, "Peck drilling cycle", "วัฏจักรเจาะรูแบบถอยเป็นช่วง",
      "G83 Z-30. R-48. Q5000 F0.1 - peck 5 mm (Q in 0.001 mm) to Z-30, R from the start point",
-     "G83 Z-30. R-48. Q5000 F0.1 - เจาะทีละ 5 มม. (Q หน่วย 0.001 มม.) ถึง Z-30 R วัดจากจุดเริ่ม", "Q#PdR.K#F+"},
+     "G83 Z-30. R-48. Q5000 F0.1 - เจาะทีละ 5 มม. (Q หน่วย 0.001 มม.) ถึง Z-30 R วัดจากจุดเริ่ม", "QiPdR.K#F+"},
     {'G', 83, G::CannedCycle, P::Motion, kH, false, "Peck drilling cycle", "วัฏจักรเจาะรูแบบถอยเป็นช่วง",
      "G83 Z-1.5 R0.1 Q0.25 F0.005 - peck 0.25 at a time to Z-1.5, out to R0.1 after each peck",
      "G83 Z-1.5 R0.1 Q0.25 F0.005 - เจาะทีละ 0.25 ถึง Z-1.5 ถอยออกถึง R0.1 ทุกครั้ง", "Q+I+J+K+PdR.F+"},

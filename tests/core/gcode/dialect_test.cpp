@@ -109,7 +109,11 @@ INSTANTIATE_TEST_SUITE_P(
         // 8. drilling on centre
         Row{"G81 Z-20. R2. F0.1", {}, {}, {"E114@1:1"}},
         Row{"G83 Z-30. R-48. Q5000 F0.1", {}, {"E110@1:17"}, {"E114@1:1"}},
-        Row{"G83 Z-1.5 R0.1 Q0.25 F0.005", {"E119@1:16"}, {}, {"E114@1:1", "E119@1:16"}},
+        // Fanuc G83 Q: least increments, or a length with its decimal point (decimal point programming)
+        Row{"G83 Z-1.5 R0.1 Q0.25 F0.005", {}, {}, {"E114@1:1", "E119@1:16"}},
+        Row{"G83 Z-54. Q4. R2. F0.18", {}, {}, {"E114@1:1", "E119@1:11"}},
+        Row{"G83 Z-54. Q-4. R2. F0.18", {"E112@1:11"}, {"E112@1:11"}, {"E114@1:1", "E119@1:11"}},
+        Row{"G83 Z-54. Q-4000 R2. F0.18", {"E119@1:11"}, {"E112@1:11"}, {"E114@1:1", "E119@1:11"}},
         Row{"G82 Z-0.1 R0.1 P0.3 F0.005", {"E114@1:1", "E119@1:16"}, {}, {"E114@1:1", "E119@1:16"}},
         Row{"G80", {}, {}, {"E114@1:1"}},
         // 9. Haas machine M codes
@@ -243,7 +247,7 @@ TEST(Dialects, HaasMessagesNameItsLettersAndInchRanges) {
 
 TEST(CodeTable, CodesCarryTheirWordKinds) {
   EXPECT_EQ(wordKind(*findCode('G', 83, Dialect::Haas), 'Q'), '+');
-  EXPECT_EQ(wordKind(*findCode('G', 83, Dialect::Fanuc), 'Q'), '#');
+  EXPECT_EQ(wordKind(*findCode('G', 83, Dialect::Fanuc), 'Q'), 'i');
   EXPECT_EQ(wordKind(*findCode('G', 76, Dialect::Haas), 'K'), '+');
   EXPECT_EQ(wordKind(*findCode('G', 73, Dialect::Haas), 'D'), '#');
   EXPECT_EQ(wordKind(*findCode('G', 4, Dialect::Classic), 'P'), 'd');

@@ -87,7 +87,9 @@ struct CodeInfo {
   // The words the code takes whose value kind differs from the default, as
   // letter + kind pairs ("P#Q#D+"): '.' signed length, '+' positive real
   // (F-like range), '#' whole number (block number, count, least increments),
-  // 'd' dwell time read as the profile's dwellP says. Letters not listed keep
+  // 'd' dwell time read as the profile's dwellP says, 'i' a positive increment:
+  // a length with a decimal point, else whole least input increments (Fanuc
+  // G83 Q5000 = Q5. = 5 mm, as decimal point programming reads any length). Letters not listed keep
   // SPEC 4's kind. Read by the checker (and the help pages).
   std::string_view words = {};
   CodeAction action = CodeAction::None;  // from the table's action list (code_table.cpp)
