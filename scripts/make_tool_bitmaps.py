@@ -351,6 +351,15 @@ LIBRARY = [
     ("drill-10mm.png", lambda: lib_drill(10.0)),
     ("drill-16mm.png", lambda: lib_drill(16.0)),
     ("drill-20mm.png", lambda: lib_drill(20.0)),
+    # Sizes shops name in comments (issue 26): metric, and 1/2" and 1" drills.
+    ("drill-8mm.png", lambda: lib_drill(8.0)),
+    ("drill-12mm.png", lambda: lib_drill(12.0)),
+    ("drill-12.7mm.png", lambda: lib_drill(12.7)),
+    ("drill-14mm.png", lambda: lib_drill(14.0)),
+    ("drill-18mm.png", lambda: lib_drill(18.0)),
+    ("drill-22mm.png", lambda: lib_drill(22.0)),
+    ("drill-25mm.png", lambda: lib_drill(25.0)),
+    ("drill-25.4mm.png", lambda: lib_drill(25.4)),
     ("boring-bar-16.png", lib_boring_bar),
 ]
 

@@ -250,7 +250,7 @@ class Scanner {
       const std::string whole = rawComment(l);
       const std::string text(detail::commentForStation(whole, station));  // its part of "(T1 OD, T3 THREAD)"
       if (text.empty()) continue;
-      const detail::CommentTool c = detail::classifyComment(text);
+      const detail::CommentTool c = detail::classifyComment(text, unit_);
       if (c.kind == ToolKind::Unknown) continue;
       Evidence e;
       e.kind = c.kind;

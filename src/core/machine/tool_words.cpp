@@ -64,36 +64,52 @@ bool followedBy(const std::vector<std::string>& ws, std::string_view first, std:
   return false;
 }
 
-// A size in mm written with the tool: "16MM", "16 MM", "Ø16", "DIA 16", "D16", "16 มม".
-double sizeMm(const std::string& up) {
-  const auto number = [&](std::size_t at, std::size_t& end) -> double {
-    std::size_t i = at;
-    while (i < up.size() && (std::isdigit(static_cast<unsigned char>(up[i])) || up[i] == '.')) ++i;
-    end = i;
-    if (i == at) return 0.0;
-    return std::strtod(up.substr(at, i - at).c_str(), nullptr);
+// A drill's size written with the tool, in mm: "16MM", "16 MM", "Ø16", "DIA 16",
+// "PHI22", "16 มม"; inches as shops write them: `1"`, `1/2 DRILL`, `1/2"`; a bare
+// "DIA .5" or ".5 DIA" is in the program's units (`unitMm` mm each).
+double sizeMm(const std::string& up, double unitMm) {
+  const auto isNum = [&](std::size_t i) {
+    return i < up.size() && (std::isdigit(static_cast<unsigned char>(up[i])) || up[i] == '.');
+  };
+  const auto skipSpaces = [&](std::size_t j) {
+    while (j < up.size() && up[j] == ' ') ++j;
+    return j;
   };
   for (std::size_t i = 0; i < up.size(); ++i) {
-    if (!std::isdigit(static_cast<unsigned char>(up[i])) || (i > 0 && (std::isdigit(static_cast<unsigned char>(up[i - 1])) || up[i - 1] == '.')))
-      continue;
-    std::size_t end = 0;
-    const double v = number(i, end);
-    std::size_t j = end;
-    while (j < up.size() && up[j] == ' ') ++j;
-    if (up.compare(j, 2, "MM") == 0 || up.compare(j, 6, "มม") == 0) return v;
-    // Ø (C3 98) or "DIA" just before the number.
+    if (!isNum(i) || (i > 0 && (isNum(i - 1) || up[i - 1] == '/'))) continue;
+    std::size_t end = i;
+    while (isNum(end)) ++end;
+    double v = std::strtod(up.substr(i, end - i).c_str(), nullptr);
+    if (!(v > 0.0)) continue;
+    // A fraction: 1/2, 3/8.
+    bool fraction = false;
+    if (end + 1 < up.size() && up[end] == '/' && std::isdigit(static_cast<unsigned char>(up[end + 1]))) {
+      std::size_t d = end + 1;
+      while (d < up.size() && std::isdigit(static_cast<unsigned char>(up[d]))) ++d;
+      const double below = std::strtod(up.substr(end + 1, d - end - 1).c_str(), nullptr);
+      if (below > 0.0) v /= below;
+      end = d;
+      fraction = true;
+    }
+    const std::size_t j = skipSpaces(end);
+    if (!fraction && (up.compare(j, 2, "MM") == 0 || up.compare(j, 6, "มม") == 0)) return v;
+    if (j < up.size() && (up[j] == '"' || up.compare(j, 4, "INCH") == 0 || up.compare(j, 2, "IN") == 0)) return v * 25.4;
+    if (fraction && (up.compare(j, 5, "DRILL") == 0 || up.compare(j, 3, "DIA") == 0)) return v * 25.4;
+    if (up.compare(j, 3, "DIA") == 0) return v * unitMm;  // ".5 DIA"
+    // Ø (C3 98), ⌀ (E2 8C 80), Φ (CE A6), "PHI" or "DIA" just before the number.
     std::size_t k = i;
     while (k > 0 && up[k - 1] == ' ') --k;
-    if ((k >= 2 && static_cast<unsigned char>(up[k - 2]) == 0xC3 && static_cast<unsigned char>(up[k - 1]) == 0x98) ||
-        (k >= 3 && up.compare(k - 3, 3, "DIA") == 0))
-      return v;
+    const auto before = [&](std::string_view w) { return k >= w.size() && up.compare(k - w.size(), w.size(), w) == 0; };
+    if (before("\xC3\x98") || before("\xE2\x8C\x80") || before("\xCE\xA6") || before("PHI")) return fraction ? v * 25.4 : v;
+    const bool dWord = k == i && k >= 1 && up[k - 1] == 'D' && (k < 2 || !std::isalpha(static_cast<unsigned char>(up[k - 2])));
+    if (before("DIA") || dWord) return fraction ? v * 25.4 : v * unitMm;
   }
   return 0.0;
 }
 
 }  // namespace
 
-CommentTool classifyComment(std::string_view comment) {
+CommentTool classifyComment(std::string_view comment, double unitMm) {
   CommentTool out;
   const std::string up = upper(comment);
   const std::vector<std::string> ws = words(up);
@@ -104,7 +120,7 @@ CommentTool classifyComment(std::string_view comment) {
   else if (hasWord(ws, {"CNMG", "CCMT"})) out.insert = "cnmg";
   out.finishing = hasPrefix(ws, {"FINISH", "FIN"}) || hasText(up, {"กลึงละเอียด", "ละเอียด"});
 
-  if (followedBy(ws, "CENTER", "DRILL") || followedBy(ws, "CENTRE", "DRILL") || hasWord(ws, {"SPOT", "CENTERDRILL"}) ||
+  if (followedBy(ws, "CENTER", "DRILL") || followedBy(ws, "CENTRE", "DRILL") || hasWord(ws, {"SPOT", "CENTERDRILL", "CENTRER", "CENTRAGE", "ZENTRIER"}) ||
       hasText(up, {"นำศูนย์", "รูศูนย์"})) {
     out.kind = ToolKind::CentreDrill;
   } else if (hasPrefix(ws, {"THREAD", "THD", "THRD"}) || hasText(up, {"เกลียว"})) {
@@ -114,9 +130,10 @@ CommentTool classifyComment(std::string_view comment) {
     out.kind = ToolKind::Parting;
   } else if (hasPrefix(ws, {"GROOV"}) || hasText(up, {"ร่อง"})) {
     out.kind = ToolKind::Grooving;
-  } else if (hasPrefix(ws, {"DRILL"}) || hasText(up, {"ดอกสว่าน", "เจาะ"})) {
+  } else if (hasPrefix(ws, {"DRILL", "PERCAGE", "PERCER", "FORET", "BOHR", "TALADR", "BROCA"}) ||
+             hasText(up, {"ดอกสว่าน", "เจาะ"})) {
     out.kind = ToolKind::Drill;
-    out.drillMm = sizeMm(up);
+    out.drillMm = sizeMm(up, unitMm);
   } else if (hasPrefix(ws, {"BORE", "BORING"}) || hasText(up, {"คว้าน"}) || inside) {
     out.kind = ToolKind::Boring;
   } else if (!out.insert.empty() || out.finishing ||

@@ -17,7 +17,8 @@ struct CommentTool {
 };
 
 // Unknown kind when the comment names no tool.
-CommentTool classifyComment(std::string_view comment);
+// unitMm: mm per program unit where the comment is (a bare ".5 DIA" in an inch program).
+CommentTool classifyComment(std::string_view comment, double unitMm = 1.0);
 
 // A T word written inside a comment ("T1", "T0303"): the station it names (1-2
 // digits as written, 3-4 digits = station and offset) and the part of the

@@ -253,6 +253,59 @@ TEST(ToolInference, AToolListOnOneLineGivesEachStationItsOwnWords) {
   expectChoice(own, 3, "threading-60", ToolReason::Comment, 1, "THREAD OD T0303");
 }
 
+// Drill sizes as shops write them (issue 26 item 3): inch fractions and inch
+// marks, "PHI", a bare ".5 DIA" in an inch program's own units.
+TEST(ToolInference, DrillSizesInInchesFractionsAndPhi) {
+  const std::string inch =
+      "%\nO1230 (PLUG)\nG20 G99\nT0909 (1/2 DRILL)\nG97 S800 M03\nG00 X0. Z0.1\nG83 Z-1. R0.1 Q0.2 F0.004\nG80\n"
+      "T1010 (1\" INSERT DRILL)\nG00 X0. Z0.1\nG01 Z-1.2 F0.003\nG00 Z1.\n"
+      "T1111 (DRILL .5 DIA)\nG00 X0. Z0.1\nG01 Z-0.8 F0.003\nG00 Z1.\nM30\n%\n";
+  const ToolInference r = infer(inch);
+  expectChoice(r, 9, "drill-12.7mm", ToolReason::Comment, 4, "1/2 DRILL");
+  expectChoice(r, 10, "drill-25.4mm", ToolReason::Comment, 9, "1\" INSERT DRILL");
+  expectChoice(r, 11, "drill-12.7mm", ToolReason::Comment, 13, "DRILL .5 DIA");
+  const std::string metric = "%\nO0050\n(PHASE 50 : PERCAGE PHI22)\nT0909\nG97 S434 M03\nG00 X0. Z2.\n"
+                             "G83 Z-54. Q4. R2. F0.18\nG80\nM30\n%\n";
+  expectChoice(infer(metric), 9, "drill-22mm", ToolReason::Comment, 3, "PHASE 50 : PERCAGE PHI22");
+}
+
+// A plain program (no job header): every station from the program's evidence,
+// the shipped table only breaking ties (issue 26 item 1), with the motion of
+// one recorded run: feeding toward the tailstock keeps the table's left-hand
+// tool; T2 feeding toward the chuck gets a right-hand one; a tool that leaves
+// its Z feeds inward is a boring bar.
+ToolInference inferPlain(const std::string& text) {
+  const gcode::Program program = gcode::parse(text, 1);
+  InferenceContext context;
+  context.fromProgram = true;
+  return inferTools(program, text, 1, shippedSetup(), io::shippedToolLibrary(), {}, 0, context);
+}
+
+TEST(ToolInference, APlainProgramsMotionDecidesTheHand) {
+  const std::string toChuck = "G21 G99\nT0202\nG97 S800 M03\nG00 X42. Z2.\nG01 Z-40. F0.2\nX46.\nG00 Z2.\nM30\n";
+  const ToolInference r = inferPlain(toChuck);
+  expectChoice(r, 2, "cnmg-80-r08", ToolReason::Turning, 5, "G01");
+  EXPECT_TRUE(r.setup.tools.isGuess(2));
+  EXPECT_EQ(r.setup.offsets.at(2).tip, 3);  // the library tool's tip, not row 02's tip 4
+  EXPECT_DOUBLE_EQ(r.setup.offsets.at(2).r, 0.8);
+  // Toward the tailstock: the table's left-hand tool fits and stays (no library tool is left-handed).
+  const std::string toTail = "G21 G99\nT0202\nG97 S800 M03\nG00 X42. Z-40.\nG01 Z2. F0.2\nX46.\nM30\n";
+  const ToolInference l = inferPlain(toTail);
+  EXPECT_EQ(l.choiceFor(2), nullptr) << summary(l);
+  EXPECT_EQ(l.setup.tools.bitmap[1], shippedSetup().tools.bitmap[1]);
+  EXPECT_EQ(l.setup.offsets.at(2).tip, 4);
+  // Without the plain-program context (a file with Klueng's header) nothing changes.
+  EXPECT_EQ(infer(toChuck).choiceFor(2), nullptr);
+}
+
+TEST(ToolInference, APlainProgramsInwardRetractsAreBoring) {
+  const std::string text = "G21 G99\nT0101\nG96 S150 M03\nG00 X44. Z2.\nG01 Z-20. F0.15\nX43.\nG00 Z2.\n"
+                           "X48.\nG01 Z-20.\nX47.\nG00 Z50.\nM30\n";
+  const ToolInference r = inferPlain(text);
+  expectChoice(r, 1, "boring-bar-16", ToolReason::Boring, 5, "G01 Z-20. F0.15");
+  EXPECT_EQ(r.setup.offsets.at(1).tip, 2);
+}
+
 TEST(StationOverride, ParsesNEqualsId) {
   const io::ToolLibrary& lib = io::shippedToolLibrary();
   StationOverride o;
