@@ -22,14 +22,15 @@ namespace {
 // from the program, else the defaults. Returns the notes that say which.
 std::vector<Diagnostic> resolveStock(io::ProgramFile& file, const gcode::Program& program,
                                      const std::optional<io::JobHeader>& stock, const MachineSetup& setup,
-                                     const RunOptions& run) {
+                                     const RunOptions& run, const Timeline* recorded) {
   io::JobHeader& h = file.header;
   if (stock) h.takeStockFrom(*stock);
   if (h.stockSource == io::StockSource::Header) return {};
   if (file.gcode.find_first_not_of(" \t\r\n") == std::string::npos) return {};  // nothing to cut
   if (h.stockSource == io::StockSource::CommandLine || h.stockSource == io::StockSource::JobDetails)
     return stockNotes(h, nullptr, file.gcode, file.gcodeFirstLine);
-  const StockInference inferred = inferStock(program, setup, run);
+  // The run the tools were read from, when there was one: one recording for both.
+  const StockInference inferred = recorded ? inferStock(program, *recorded, setup) : inferStock(program, setup, run);
   if (inferred.found) inferred.applyTo(h);
   else h.takeStockFrom(io::JobHeader{});
   return stockNotes(h, &inferred, file.gcode, file.gcodeFirstLine);
@@ -59,6 +60,7 @@ JobFile loadJobFile(const std::string& path, const MachineSetup& setup, const Jo
   job.unreadable = std::any_of(job.diagnostics.begin(), job.diagnostics.end(),
                                [](const Diagnostic& d) { return d.range.file == 0 && isUnreadable(d); });
 
+  std::shared_ptr<const Timeline> recorded;
   gcode::CheckOptions check;
   check.dialect = request.run.dialect;
   check.powerOnUnits = request.run.powerOnUnits;
@@ -77,6 +79,7 @@ JobFile loadJobFile(const std::string& path, const MachineSetup& setup, const Jo
     });
     job.setup = std::move(checked.inference.setup);
     job.toolNotes = checked.inference.notes();
+    recorded = checked.inference.record;
     check.toolsWithBitmap = toolsWithBitmap(job.setup);
     found = std::move(checked.diagnostics);
   } else {
@@ -90,7 +93,7 @@ JobFile loadJobFile(const std::string& path, const MachineSetup& setup, const Jo
     if (a.range.file != b.range.file) return a.range.file < b.range.file;
     return a.range.line != b.range.line ? a.range.line < b.range.line : a.range.column < b.range.column;
   });
-  job.stockNotes = resolveStock(file, program, request.stock, job.setup, request.run);
+  job.stockNotes = resolveStock(file, program, request.stock, job.setup, request.run, recorded.get());
   job.file = std::move(read.value);
   job.program = std::move(program);
   return job;

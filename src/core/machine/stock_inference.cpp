@@ -116,8 +116,12 @@ void StockInference::applyTo(io::JobHeader& h) const {
 
 StockInference inferStock(const gcode::Program& program, const MachineSetup& setup, const RunOptions& options,
                           const InferenceOptions& inference) {
+  return inferStock(program, interpret(program, setup, options), setup, inference);
+}
+
+StockInference inferStock(const gcode::Program& program, const Timeline& tl, const MachineSetup& setup,
+                          const InferenceOptions& inference) {
   StockInference r;
-  const Timeline tl = interpret(program, setup, options);
   const std::vector<Move>& moves = tl.moves;
   std::map<int, Units> unitsOfBlock;
   for (const StateSnapshot& s : tl.snapshots) unitsOfBlock[s.blockIndex] = s.modal.units;

@@ -179,6 +179,13 @@ class Scanner {
         if (!g->hasDecimalPoint && (g->code() == 20 || g->code() == 21)) unit_ = g->code() == 20 ? 25.4 : 1.0;
       if (const gcode::Word* t = b.find('T'); t && !t->hasDecimalPoint && t->expr < 0) select(b, *t);
       if (station_ > 0) motion(b);
+      // Past the main program's end (M02/M30) or into another program (O...): the
+      // blocks are subprograms, whose tool is whoever calls them (the recorded run knows).
+      const bool ends = std::any_of(b.words.begin(), b.words.end(), [](const gcode::Word& w) {
+        return (w.letter == 'M' && !w.hasDecimalPoint && (w.code() == 2 || w.code() == 30 || w.code() == 99)) ||
+               w.letter == 'O';
+      });
+      if (ends) station_ = 0;
     }
     return std::move(uses_);
   }
@@ -386,6 +393,9 @@ struct MotionUse {
   int belowLine = 0;         // the first feed at X < 0
   int chuckLine = 0;         // the first feed along -Z
   int tailLine = 0;          // the first feed along +Z
+  int threadLine = 0;        // the first thread pass (G32/G76/G92 after macros and calls)
+  double drillDepth = 0.0;   // deepest feed along -Z on the centre line (mm, Z < 0)
+  int drillLine = 0;
 };
 
 constexpr double kMinZRunMm = 0.5;  // a Z feed shorter than this says nothing about the side
@@ -410,6 +420,12 @@ std::map<int, MotionUse> recordMotion(const Timeline& timeline) {
       zRun = {};
     }
     if (m.kind == MoveKind::Rapid) continue;
+    if (m.kind == MoveKind::Thread && !u.threadLine) u.threadLine = m.line;
+    if (std::abs(m.path.start.y()) <= kOnCentreMm && std::abs(m.path.end.y()) <= kOnCentreMm && dz < 0.0 &&
+        m.path.end.x() < u.drillDepth) {
+      u.drillDepth = m.path.end.x();
+      if (!u.drillLine) u.drillLine = m.line;
+    }
     const double length = d.norm();
     const double xMid = (m.path.start.y() + m.path.end.y()) / 2.0;
     if (xMid < -kOnCentreMm) {
@@ -490,10 +506,11 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
 
   // A plain program: what each tool really does, from one recorded run.
   std::map<int, MotionUse> motion;
-  if (context.fromProgram && !uses.empty()) {
+  if (context.fromProgram) {
     RunOptions run = context.run;
     run.persistentVariables = nullptr;  // the record changes nothing the user keeps
-    motion = recordMotion(interpret(program, setup, run));
+    out.record = std::make_shared<const Timeline>(interpret(program, setup, run));
+    motion = recordMotion(*out.record);
   }
 
   // Parting counts only for one of the last two tools the program selects.
@@ -537,6 +554,25 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
 
   for (auto& [station, use] : uses) {
     if (overridden.count(station)) continue;
+    const auto moved = motion.find(station);
+    if (moved != motion.end() && !use.cycle && !use.drillLine) {
+      // What the scan of the text could not see (macros, subprograms, X#100): the run's own moves.
+      const MotionUse& m = moved->second;
+      Evidence e;
+      e.strong = true;
+      if (m.threadLine) {
+        const bool inside = insideWork(m);
+        e.kind = inside ? ToolKind::ThreadingId : ToolKind::ThreadingOd;
+        e.reason = inside ? ToolReason::ThreadingInside : ToolReason::Threading;
+        e.line = m.threadLine;
+        e.detail = blockText(gcodeText, gcodeFirstLine, m.threadLine);
+        use.cycle = e;
+      } else if (m.drillLine && m.aboveZero + m.belowZero < 1.0) {  // it only ever feeds on the centre line
+        use.drillLine = m.drillLine;
+        use.drillDepthMm = m.drillDepth;
+        use.drillCode = blockText(gcodeText, gcodeFirstLine, m.drillLine);
+      }
+    }
     // Drilling on centre: a centre drill when shallow, else a drill.
     if (use.drillLine && !use.cycle) {
       Evidence e;
@@ -554,7 +590,6 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
       if (refine) want = use.cycle;
     }
     if (!want) want = use.turning;
-    const auto moved = motion.find(station);
     if (want && moved != motion.end() && insideWork(moved->second)) {
       // The run retracts inward after its Z feeds: the tool works inside a bore.
       const MotionUse& m = moved->second;

@@ -306,6 +306,19 @@ TEST(ToolInference, APlainProgramsInwardRetractsAreBoring) {
   EXPECT_EQ(r.setup.offsets.at(1).tip, 2);
 }
 
+// The run sees what a scan of the text cannot: positions from macro variables
+// and a subprogram. T05 threads through #101 in O2000; T09 (no tool in the
+// table) drills on X#102 = 0.
+TEST(ToolInference, APlainProgramsRunSeesThroughMacrosAndSubprograms) {
+  const std::string text = "O1000\nG21 G99\n#101 = 28.2\n#102 = 0\n"
+                           "T0505\nG97 S600 M03\nG00 X35. Z5.\nM98 P2000\n"
+                           "T0909\nG97 S800 M03\nG00 X#102 Z2.\nG01 Z-25. F0.1\nG00 Z5.\nM30\n"
+                           "O2000\nG00 X#101\nG32 Z-20. F1.5\nG00 X35.\nZ5.\nM99\n";
+  const ToolInference r = inferPlain(text);
+  expectChoice(r, 5, "threading-60", ToolReason::Threading, 17, "G32 Z-20. F1.5");
+  expectChoice(r, 9, "drill-6mm", ToolReason::Drilling, 12, "G01 Z-25. F0.1");
+}
+
 TEST(StationOverride, ParsesNEqualsId) {
   const io::ToolLibrary& lib = io::shippedToolLibrary();
   StationOverride o;

@@ -68,6 +68,9 @@ struct StockInference {
 // infers the stock. An alarm that stops the run leaves what ran before it.
 StockInference inferStock(const gcode::Program& program, const MachineSetup& setup,
                           const RunOptions& options = {}, const InferenceOptions& inference = {});
+// The same from a run already recorded (the one the tools were read from: issue 26).
+StockInference inferStock(const gcode::Program& program, const Timeline& recorded, const MachineSetup& setup,
+                          const InferenceOptions& inference = {});
 
 // Largest bar of the series not above d (smallest above d when `above`).
 double metricBarSize(double diameterMm, bool above = false);

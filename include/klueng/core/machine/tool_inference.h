@@ -13,6 +13,7 @@
 //   - the offset rows such a station uses that are 0 0 0 0 get the library
 //     tool's nose radius and tip.
 // No Qt; pure function of its inputs.
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -55,6 +56,9 @@ struct ToolChoice {
 struct ToolInference {
   MachineSetup setup;                 // the input setup, amended (setup.tools.guessed marks the guesses)
   bool fromProgram = false;           // a plain program: its evidence decided every station
+  // The recorded run the evidence of motion came from (plain programs; null
+  // otherwise): the stock is read from the same run.
+  std::shared_ptr<const Timeline> record;
   std::vector<ToolChoice> choices;    // one per station that got a library tool, by station
   std::vector<Diagnostic> offsetNotes;  // I410 per offset row filled from a library tool
   // Every note, choices first: what the CLI prints and the GUI lists.
