@@ -103,6 +103,19 @@ std::optional<CycleAlarm> stockRemoval(const CycleInput& in, Profile& profile, d
   const Vec2 aPrime = first.path.end;
   std::vector<Step> contour(moves.begin() + 1, moves.end());
   const double sb = sign(start.y() - aPrime.y());           // towards the stock
+  // Haas shops end the profile with a retract above the bar (`X1.6` = the start's
+  // X, then `N20 G00 G40 Z0.1`): pieces after the profile has reached the start's
+  // depth level that stay at or beyond it cut nothing; the passes ignore them and
+  // the finishing pass travels them as written.
+  std::size_t cutting = contour.size();
+  while (cutting > 1) {
+    const Segment& p = contour[cutting - 1].path;
+    const auto beyond = [&](const Vec2& v) { return (v.y() - start.y()) * sb >= -kEps; };
+    if (!(beyond(p.start) && beyond(p.end) && (!p.isArc() || beyond(p.pointAt(0.5))))) break;
+    --cutting;
+  }
+  const std::vector<Step> trailing(contour.begin() + static_cast<std::ptrdiff_t>(cutting), contour.end());
+  contour.resize(cutting);
   const double sa = sign(contour.back().path.end.x() - aPrime.x());  // along the passes
   // The profile must move steadily away from A' in both axes (type II: along the passes).
   bool pockets = false;
@@ -169,7 +182,15 @@ std::optional<CycleAlarm> stockRemoval(const CycleInput& in, Profile& profile, d
   // The last pass follows the profile offset by the finishing allowance.
   steps.push_back(infeedRapid ? rapid(pos, aShift) : feedLine(pos, aShift));
   for (const Step& s : shifted) steps.push_back(s);
-  steps.push_back(rapid(shifted.back().path.end, start));
+  Vec2 end = shifted.back().path.end;
+  for (const Step& s : trailing) {  // the retract above the bar, as written (shifted like the rest)
+    Step t = s;
+    t.path = s.path.translated(shift);
+    t.path.start = end;
+    steps.push_back(t);
+    end = t.path.end;
+  }
+  steps.push_back(rapid(end, start));
   for (Step& s : steps) s.feed = 0.0, s.where = {};
   if (swap) swapAll(steps);
   out = std::move(steps);
