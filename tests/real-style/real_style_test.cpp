@@ -825,4 +825,23 @@ TEST(RealStyleShopTools, Fanuc_FacingBeyondTheCentre) {
   EXPECT_NEAR(p.d(-10.0), 30.0, kMm);
 }
 
+// O30416: the Haas habit of ending a G71 profile with a retract above the bar
+// (X1.35 = the start's X, then N20 G00 G40 Z0.1): it cuts nothing and the
+// control runs it (no A121). T02's "(FINISHING)" line says finishing, the tool
+// list says "35*": the 35 degree VNMG (I401).
+TEST(RealStyleShopTools, Haas_G71ProfileEndsWithARetract) {
+  const Job job{"haas-16-pin-g71-retract.nc", "haas", "--stock 1.25x3in", true};
+  RUN_CLEAN(job, r);
+  EXPECT_NE(r.check.text.find(":24:1: note I401: T02 = vnmg-35-r02 (comment \"FINISHING\" on line 24)"), std::string::npos)
+      << r.check.text;
+  const Profile& p = r.part;
+  // G70 under G42: every element as programmed.
+  EXPECT_NEAR(p.d(-0.25), 0.600, kIn);
+  EXPECT_NEAR(p.d(-0.575), 0.750, kIn);  // chamfer X0.6 Z-0.5 -> X0.9 Z-0.65, half way
+  EXPECT_NEAR(p.d(-1.0), 0.900, kIn);
+  EXPECT_NEAR(p.edge(-1.1, -1.3, 1.1), -1.2, kIn);
+  EXPECT_NEAR(p.d(-2.0), 1.250, kIn);  // the bar
+  EXPECT_NEAR(p.rightFace(), 0.0, kIn);
+}
+
 }  // namespace

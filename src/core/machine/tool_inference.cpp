@@ -268,6 +268,17 @@ class Scanner {
       e.finishing = c.finishing;
       e.insert = c.insert;
       e.drillMm = c.drillMm;
+      // "(FINISHING)" above T0202 and "(T02 = 35* FINISH TURNING TOOL ...)" in the tool
+      // list: the insert comes from whichever comment of this station names it.
+      if (e.insert.empty() && e.kind == ToolKind::Turning)
+        for (int other : candidates) {
+          const std::string more(detail::commentForStation(rawComment(other), station));
+          const detail::CommentTool named = detail::classifyComment(more, unit_);
+          if (!named.insert.empty() && (named.kind == ToolKind::Turning || named.kind == ToolKind::Unknown)) {
+            e.insert = named.insert;
+            break;
+          }
+        }
       u.comment = e;
       return;
     }

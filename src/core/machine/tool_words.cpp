@@ -115,9 +115,18 @@ CommentTool classifyComment(std::string_view comment, double unitMm) {
   const std::vector<std::string> ws = words(up);
   const bool inside = hasWord(ws, {"ID", "INTERNAL", "INSIDE", "INNER"}) || hasText(up, {"เกลียวใน", "ภายใน"});
 
-  if (hasWord(ws, {"VNMG", "VBMT", "VCMT"})) out.insert = "vnmg";
-  else if (hasWord(ws, {"DNMG", "DCMT", "DCGT"})) out.insert = "dnmg";
-  else if (hasWord(ws, {"CNMG", "CCMT"})) out.insert = "cnmg";
+  // The insert by its name or its angle as shops write it ("35* FINISH", "55 DEG", "80°").
+  const auto angle = [&](std::string_view deg) {
+    for (const char* mark : {"*", "°", " DEG", "DEG", "-DEG"}) {
+      const std::string text = std::string(deg) + mark;
+      for (std::size_t at = up.find(text); at != std::string::npos; at = up.find(text, at + 1))
+        if (at == 0 || !std::isdigit(static_cast<unsigned char>(up[at - 1]))) return true;  // not "135*"
+    }
+    return false;
+  };
+  if (hasWord(ws, {"VNMG", "VBMT", "VCMT"}) || angle("35")) out.insert = "vnmg";
+  else if (hasWord(ws, {"DNMG", "DCMT", "DCGT"}) || angle("55")) out.insert = "dnmg";
+  else if (hasWord(ws, {"CNMG", "CCMT"}) || angle("80")) out.insert = "cnmg";
   out.finishing = hasPrefix(ws, {"FINISH", "FIN"}) || hasText(up, {"กลึงละเอียด", "ละเอียด"});
 
   if (followedBy(ws, "CENTER", "DRILL") || followedBy(ws, "CENTRE", "DRILL") || hasWord(ws, {"SPOT", "CENTERDRILL", "CENTRER", "CENTRAGE", "ZENTRIER"}) ||
