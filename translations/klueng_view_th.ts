@@ -643,8 +643,8 @@
         <translation>ไม่มีมีดตัด</translation>
     </message>
     <message>
-        <source>T%1  %2 — the tool table&apos;s tool; the program says nothing of it</source>
-        <translation>T%1  %2 — มีดตัดจากตารางมีด ชุดรหัสสั่งการทำงานไม่ได้บอกถึงมีดนี้</translation>
+        <source>T%1  %2 — kept from the tool table (tools.cfg): nothing in the program asks for another tool</source>
+        <translation>T%1  %2 — ใช้มีดตัดเดิมจากตารางมีด (tools.cfg): ชุดรหัสสั่งการทำงานไม่ได้ต้องการมีดตัดอื่น</translation>
     </message>
     <message>
         <source>Tools beyond the centre line, drawn mirrored: %1</source>

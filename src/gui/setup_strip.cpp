@@ -188,7 +188,7 @@ void SetupStrip::retranslateUi() {
                          : entry.startsWith(prefix) ? libraryName(entry.mid(prefix.size()).trimmed().toStdString())
                                                     : QFileInfo(entry).fileName();
     items.push_back({station,
-                     tr("T%1  %2 — the tool table's tool; the program says nothing of it")
+                     tr("T%1  %2 — kept from the tool table (tools.cfg): nothing in the program asks for another tool")
                          .arg(station, 2, 10, QLatin1Char('0'))
                          .arg(name),
                      tr("Click to choose another tool for this station (Tool Select).")});
