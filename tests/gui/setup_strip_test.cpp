@@ -128,6 +128,20 @@ class SetupStripTest : public QObject {
     Language::instance()->setLanguage(QStringLiteral("en"));
   }
 
+  // A program that faces at X < 0: its tools are beyond the centre line (I412), said in the strip.
+  void toolSideBeyondTheCentre() {
+    MainWindow w;
+    w.show();
+    QVERIFY(openAndWait(w, QStringLiteral(KLUENG_SOURCE_DIR "/tests/real-style/programs/fanuc-11-face-beyond-centre.nc")));
+    SetupStrip* strip = w.setupStrip();
+    QTRY_VERIFY(!strip->sideText().isEmpty());
+    QVERIFY2(strip->sideText().startsWith(QStringLiteral("Tools beyond the centre line, drawn mirrored: ")),
+             qPrintable(strip->sideText()));
+    QVERIFY2(strip->sideText().contains(QStringLiteral("X < 0")), qPrintable(strip->sideText()));
+    QVERIFY(strip->titleText().contains(QStringLiteral("guessed from the program")));
+    QVERIFY(strip->stations().contains(1));
+  }
+
   void aStationSetForThisProgramIsRemembered() {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("O30414.nc"));
