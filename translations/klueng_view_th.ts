@@ -624,4 +624,39 @@
         <translation>หกบรรทัดแรกของไฟล์เก็บชื่องาน ชิ้นงาน วัสดุ เส้นผ่าศก. ชิ้นงานดิบ ความยาวชิ้นงานดิบ และผู้เขียน ชุดรหัสสั่งการทำงานเริ่มที่บรรทัด 7 แก้ไขได้ที่ แฟ้ม &gt; รายละเอียดงาน</translation>
     </message>
 </context>
+<context>
+    <name>klueng::gui::SetupStrip</name>
+    <message>
+        <source>Click to change the stock (Job details).</source>
+        <translation>คลิกเพื่อเปลี่ยนชิ้นงานดิบ (รายละเอียดงาน)</translation>
+    </message>
+    <message>
+        <source>T%1  %2 — %3</source>
+        <translation>T%1  %2 — %3</translation>
+    </message>
+    <message>
+        <source>Click to choose another tool for this station (Tool Select).</source>
+        <translation>คลิกเพื่อเลือกมีดตัดอื่นให้ตำแหน่งมีดนี้ (เลือกมีดตัด)</translation>
+    </message>
+    <message>
+        <source>no tool</source>
+        <translation>ไม่มีมีดตัด</translation>
+    </message>
+    <message>
+        <source>T%1  %2 — kept from the tool table (tools.cfg): nothing in the program asks for another tool</source>
+        <translation>T%1  %2 — ใช้มีดตัดเดิมจากตารางมีด (tools.cfg): ชุดรหัสสั่งการทำงานไม่ได้ต้องการมีดตัดอื่น</translation>
+    </message>
+    <message>
+        <source>Tools beyond the centre line, drawn mirrored: %1</source>
+        <translation>มีดตัดอยู่เลยแนวศูนย์กลาง วาดกลับด้าน: %1</translation>
+    </message>
+    <message>
+        <source>Setup guessed from the program — check it before you run; click a line to change it</source>
+        <translation>การตั้งเครื่องที่เดาจากชุดรหัสสั่งการทำงาน — ตรวจสอบก่อนเริ่มทำงาน คลิกที่บรรทัดเพื่อเปลี่ยน</translation>
+    </message>
+    <message>
+        <source>Setup for this program — click a line to change it</source>
+        <translation>การตั้งเครื่องสำหรับชุดรหัสสั่งการทำงานนี้ — คลิกที่บรรทัดเพื่อเปลี่ยน</translation>
+    </message>
+</context>
 </TS>

@@ -41,6 +41,7 @@
 #include "gui/recovery_bar.h"
 #include "gui/report_controller.h"
 #include "gui/run_speed_control.h"
+#include "gui/setup_strip.h"
 #include "gui/settings.h"
 #include "gui/setup_commands.h"
 #include "gui/status_panel.h"
@@ -120,13 +121,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   auto* outputLayout = new QVBoxLayout(outputPane);
   outputLayout->setContentsMargins(0, 0, 0, 0);
   outputLayout->setSpacing(2);
-  // SPEC 2 (ext): the user is always told where the stock came from.
-  stockLabel_ = new QLabel(outputPane);
-  stockLabel_->setObjectName(QStringLiteral("stockSource"));
-  stockLabel_->setWordWrap(true);
-  stockLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-  stockLabel_->setContentsMargins(6, 2, 6, 2);
-  outputLayout->addWidget(stockLabel_);
+  // SPEC 2 (ext), issue 26: where the stock came from and, for a plain file, the
+  // tools guessed from the program, before a run; a click changes one.
+  setupStrip_ = new SetupStrip(outputPane);
+  connect(setupStrip_, &SetupStrip::stockActivated, this, &MainWindow::showJobDetails);
+  connect(setupStrip_, &SetupStrip::stationActivated, this, &MainWindow::showToolSelectFor);
+  outputLayout->addWidget(setupStrip_);
   outputLayout->addWidget(output_, 1);
   outputLayout->addWidget(statusLamps_);
 
@@ -360,6 +360,7 @@ void MainWindow::onCheckFinished(const JobToolsResult& result) {
   const bool toolsChanged = !sameTools(result.inference.setup, toolInference_.setup);
   toolInference_ = result.inference;
   if (toolsChanged) runner_->setMachineSetup(toolInference_.setup);
+  updateStockLabel();  // the setup strip lists the tools just decided
   std::stable_sort(lastDiagnostics_.begin(), lastDiagnostics_.end(), [](const auto& a, const auto& b) {
     return a.range.line != b.range.line ? a.range.line < b.range.line : a.range.column < b.range.column;
   });
@@ -495,18 +496,14 @@ void MainWindow::showBanner(const QString& text, bool error) { banner_->showMess
 void MainWindow::hideBanner() { banner_->dismiss(); }
 
 void MainWindow::updateStockLabel() {
-  if (!stockLabel_ || !document_) return;
-  QStringList notes;
-  for (const core::Diagnostic& d : document_->stockNotes())
-    notes << QString::fromStdString(core::formatMessage(d, Language::coreLang()));
-  QString first = notes.isEmpty() ? QString() : notes.front();
-  if (!first.isEmpty()) first[0] = first[0].toUpper();  // "Stock Ø50 x 80 mm inferred from ..."
-  stockLabel_->setText(first);
-  stockLabel_->setToolTip(notes.join(QLatin1Char('\n')));
-  stockLabel_->setVisible(!notes.isEmpty());
+  if (!setupStrip_ || !document_) return;
+  const core::io::StockSource source = document_->header().stockSource;
+  setupStrip_->showSetup(document_->stockNotes(),
+                         source == core::io::StockSource::Inferred || source == core::io::StockSource::Default,
+                         document_->isPlainGcode(), toolInference_);
 }
 
-QString MainWindow::stockSourceText() const { return stockLabel_ ? stockLabel_->text() : QString(); }
+QString MainWindow::stockSourceText() const { return setupStrip_ ? setupStrip_->stockText() : QString(); }
 
 QString MainWindow::bannerText() const { return banner_->text(); }
 
@@ -542,9 +539,12 @@ void MainWindow::goToLine() {
   if (ok) editor_->goToFileLine(line);
 }
 
-void MainWindow::showToolSelect() {
+void MainWindow::showToolSelect() { showToolSelectFor(0); }
+
+void MainWindow::showToolSelectFor(int station) {
   ToolSelectDialog dlg(configDir_, this);
   dlg.setProgramTools(toolInference_, toolOverrides_);
+  if (station > 0) dlg.setCurrentTool(station);
   const SetupSnapshot before = SetupSnapshot::read(configDir_, toolOverrides_);
   if (dlg.exec() != QDialog::Accepted) return;
   const QString dir = dlg.savedConfigDir();

@@ -79,6 +79,8 @@ class MainWindow : public QMainWindow {
   static QString formatDuration(double seconds);
   // Where the open program's stock came from (header, Job details, inferred ...).
   QString stockSourceText() const;
+  // Stock and tools above the output screen (issue 26).
+  class SetupStrip* setupStrip() const { return setupStrip_; }
   // Actions by object name ("actionGo", "actionSave", ...), for tests.
   QAction* action(const QString& objectName) const;
 
@@ -111,6 +113,7 @@ class MainWindow : public QMainWindow {
   void toggleBreakpoint();
   void runToCursor();
   void showToolSelect();
+  void showToolSelectFor(int station);  // Tool Select on that station (0: as it opens)
   void showOffsetDefine();
   void showHelpContents();
   void showAbout();
@@ -179,7 +182,7 @@ class MainWindow : public QMainWindow {
   class ExplainBar* explainBar_ = nullptr;
   DialectOfferBar* dialectOffer_ = nullptr;
   class RecoveryBar* recoveryBar_ = nullptr;
-  QLabel* stockLabel_ = nullptr;
+  class SetupStrip* setupStrip_ = nullptr;  // stock and tools above the output screen
   QProgressBar* busyBar_ = nullptr;
   QPointer<FindDialog> findDialog_;
   QPointer<PartDesignerDialog> designer_;

@@ -1,0 +1,178 @@
+// Issue 26 (GUI): a plain program's setup is shown above the output screen
+// before a run - each station's tool guessed from the program with its reason,
+// the bar and why - and one click on a station opens Tool Select there.
+#include <QApplication>
+#include <QFile>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+
+#include "fresh_user_folders.h"
+#include "gui/job_details_dialog.h"
+#include "gui/language.h"
+#include "gui/main_window.h"
+#include "gui/resources.h"
+#include "gui/setup_strip.h"
+#include "gui/tool_select_dialog.h"
+
+using namespace klueng;
+using namespace klueng::gui;
+
+namespace {
+
+// A Haas-style shop program: no job header, inches, T101 turning, T202 a G75 groove.
+const char* kHaas =
+    "%\n"
+    "O30414 (PIN)\n"
+    "G18 G40 G54 G80 G99\n"
+    "T101 (TOOL 1)\n"
+    "G96 S600 M03\n"
+    "G00 X1.2 Z0.1\n"
+    "G71 P40 Q55 U0 W0 D0.03 F0.008\n"
+    "N40 G00 X0.875\n"
+    "G01 Z0.\n"
+    "Z-1.5\n"
+    "N55 X1.0\n"
+    "G00 X1.5 Z2.\n"
+    "T202\n"
+    "G97 S800 M03\n"
+    "G00 X1.0\n"
+    "Z-0.5\n"
+    "G75 X0.7 Z-0.6 I0.05 K0.08 F0.002\n"
+    "G00 X1.5\n"
+    "M30\n"
+    "%\n";
+
+bool openAndWait(MainWindow& w, const QString& path) {
+  QSignalSpy loaded(&w, &MainWindow::fileLoaded);
+  if (!w.openFile(path)) return false;
+  return QTest::qWaitFor([&] { return loaded.count() > 0; }, 30000) &&
+         QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000);
+}
+
+}  // namespace
+
+class SetupStripTest : public QObject {
+  Q_OBJECT
+ private slots:
+  void initTestCase() {
+    klueng::test::freshUserFolders();
+    initResources();
+  }
+  void init() {
+    QSettings(QStringLiteral("Klueng"), QStringLiteral("klueng")).clear();
+    Language::instance()->setLanguage(QStringLiteral("en"));
+  }
+
+  void plainProgramShowsItsGuessedTools() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("O30414.nc"));
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(kHaas);
+    f.close();
+
+    MainWindow w;
+    w.resize(1366, 740);
+    w.show();
+    QVERIFY(openAndWait(w, path));
+    w.setDialect(core::gcode::Dialect::Haas);  // its D word (G71 D0.03) is Haas; the bar is inferred there
+    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    SetupStrip* strip = w.setupStrip();
+    QVERIFY(strip);
+    QTRY_VERIFY(strip->stations().contains(2));
+    QVERIFY(strip->isVisible());
+    QCOMPARE(strip->stations(), (QList<int>{1, 2}));
+    QVERIFY2(strip->titleText().contains(QStringLiteral("guessed from the program")), qPrintable(strip->titleText()));
+    // T02: the library's grooving tool, because of the G75 on line 17.
+    const QString t2 = strip->stationText(2);
+    QVERIFY2(t2.startsWith(QStringLiteral("T02  Grooving tool, 3 mm — ")), qPrintable(t2));
+    QVERIFY2(t2.contains(QStringLiteral("grooving cycle G75 on line 17")), qPrintable(t2));
+    QVERIFY(strip->stationLine(2)->toolTip().contains(QStringLiteral("T02 = grooving-3mm")));
+    QVERIFY2(strip->stationText(1).startsWith(QStringLiteral("T01  ")), qPrintable(strip->stationText(1)));
+    // The bar and why: the stock's note, clickable to Job details.
+    QVERIFY2(w.stockSourceText().startsWith(QStringLiteral("Stock Ø")), qPrintable(w.stockSourceText()));
+    QVERIFY2(w.stockSourceText().contains(QStringLiteral("inferred from")), qPrintable(w.stockSourceText()));
+    QVERIFY(strip->sideText().isEmpty());  // the program stays at X > 0
+
+    // One click on T02 opens Tool Select on station 2.
+    int shownTool = 0;
+    QTimer::singleShot(0, this, [&] {
+      (void)QTest::qWaitFor([] { return qobject_cast<ToolSelectDialog*>(QApplication::activeModalWidget()) != nullptr; }, 10000);
+      if (auto* dlg = qobject_cast<ToolSelectDialog*>(QApplication::activeModalWidget())) {
+        shownTool = dlg->currentTool();
+        dlg->reject();
+      }
+    });
+    QTest::mouseClick(strip->stationLine(2), Qt::LeftButton, {}, QPoint(10, 5));
+    QCOMPARE(shownTool, 2);
+
+    // One click on the bar opens Job details.
+    bool jobDetails = false;
+    QTimer::singleShot(0, this, [&] {
+      (void)QTest::qWaitFor([] { return qobject_cast<JobDetailsDialog*>(QApplication::activeModalWidget()) != nullptr; }, 10000);
+      if (auto* dlg = qobject_cast<JobDetailsDialog*>(QApplication::activeModalWidget())) {
+        jobDetails = true;
+        dlg->reject();
+      }
+    });
+    QTest::mouseClick(strip->findChild<SetupLine*>(QStringLiteral("stockSource")), Qt::LeftButton, {}, QPoint(10, 5));
+    QVERIFY(jobDetails);
+
+    // In Thai: the library tool's Thai name and the core's Thai note.
+    Language::instance()->setLanguage(QStringLiteral("th"));
+    QTRY_VERIFY(strip->stationText(2).contains(QStringLiteral("มีดกลึงร่อง 3 มม.")));
+    QVERIFY2(strip->stationText(2).contains(QStringLiteral("G75")), qPrintable(strip->stationText(2)));
+    QVERIFY2(strip->titleText().contains(QStringLiteral("เดาจาก")), qPrintable(strip->titleText()));
+    Language::instance()->setLanguage(QStringLiteral("en"));
+  }
+
+  // A program that faces at X < 0: its tools are beyond the centre line (I412), said in the strip.
+  void toolSideBeyondTheCentre() {
+    MainWindow w;
+    w.show();
+    QVERIFY(openAndWait(w, QStringLiteral(KLUENG_SOURCE_DIR "/tests/real-style/programs/fanuc-11-face-beyond-centre.nc")));
+    SetupStrip* strip = w.setupStrip();
+    QTRY_VERIFY(!strip->sideText().isEmpty());
+    QVERIFY2(strip->sideText().startsWith(QStringLiteral("Tools beyond the centre line, drawn mirrored: ")),
+             qPrintable(strip->sideText()));
+    QVERIFY2(strip->sideText().contains(QStringLiteral("X < 0")), qPrintable(strip->sideText()));
+    QVERIFY(strip->titleText().contains(QStringLiteral("guessed from the program")));
+    QVERIFY(strip->stations().contains(1));
+  }
+
+  void aStationSetForThisProgramIsRemembered() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("O30414.nc"));
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(kHaas);
+    f.close();
+    {
+      MainWindow w;
+      w.show();
+      QVERIFY(openAndWait(w, path));
+      QTRY_VERIFY(w.setupStrip()->stations().contains(2));
+      QTimer::singleShot(0, this, [&] {
+        (void)QTest::qWaitFor([] { return qobject_cast<ToolSelectDialog*>(QApplication::activeModalWidget()) != nullptr; }, 10000);
+        if (auto* dlg = qobject_cast<ToolSelectDialog*>(QApplication::activeModalWidget())) {
+          dlg->setLibraryTool(2, QStringLiteral("parting-3mm"), true);  // "Only for this program"
+          dlg->accept();
+        }
+      });
+      QTest::mouseClick(w.setupStrip()->stationLine(2), Qt::LeftButton, {}, QPoint(10, 5));
+      QTRY_VERIFY(w.setupStrip()->stationText(2).startsWith(QStringLiteral("T02  Parting (cut-off) tool, 3 mm — ")));
+    }
+    MainWindow again;
+    again.show();
+    QVERIFY(openAndWait(again, path));
+    QTRY_VERIFY(again.setupStrip()->stations().contains(2));
+    const QString t2 = again.setupStrip()->stationText(2);
+    QVERIFY2(t2.startsWith(QStringLiteral("T02  Parting (cut-off) tool, 3 mm — ")), qPrintable(t2));
+    QVERIFY2(t2.contains(QStringLiteral("set for this job")), qPrintable(t2));
+  }
+};
+
+QTEST_MAIN(SetupStripTest)
+#include "setup_strip_test.moc"
