@@ -334,7 +334,11 @@ class Scanner {
 
     if (cycle == 76 || cycle == 92 || motion_ == 32) {
       if (cycle == 76 && !xw && !zw && !uw && !ww) return;  // the first G76 block of the two
-      const bool inside = u.approachX && x && *x > *u.approachX + kOnCentreMm;
+      // Inside when it cuts outward from its approach, or when the thread's own comment says
+      // so ("G76 X36.2 Z-22. ... (ID THREAD)", "(INTERNAL)").
+      const detail::CommentTool said = detail::classifyComment(rawComment(b.line), unit_);
+      const bool inside = (u.approachX && x && *x > *u.approachX + kOnCentreMm) || said.kind == ToolKind::ThreadingId ||
+                          said.kind == ToolKind::Boring;
       const int code = cycle >= 0 ? cycle : 32;
       note(inside ? ToolKind::ThreadingId : ToolKind::ThreadingOd,
            inside ? ToolReason::ThreadingInside : ToolReason::Threading, gText(code), b.line);

@@ -319,6 +319,14 @@ TEST(ToolInference, APlainProgramsRunSeesThroughMacrosAndSubprograms) {
   expectChoice(r, 9, "drill-6mm", ToolReason::Drilling, 12, "G01 Z-25. F0.1");
 }
 
+// "ID" in the comment of the thread itself (issue 26 item 3): an inside tool,
+// even when the approach does not show it (the tool comes in at the thread's X).
+TEST(ToolInference, IdInTheThreadsOwnCommentIsAnInsideTool) {
+  const std::string text = "%\nO0123\nG21 G99\nT1010\nG97 S500 M03\nG00 X36. Z5.\n"
+                           "G76 P010060 Q50 R0.05\nG76 X36. Z-20. P1000 Q300 F2. (M36X2 ID THREAD)\nG00 Z50.\nM30\n%\n";
+  expectChoice(infer(text), 10, "threading-60-id", ToolReason::ThreadingInside, 8, "G76");
+}
+
 TEST(StationOverride, ParsesNEqualsId) {
   const io::ToolLibrary& lib = io::shippedToolLibrary();
   StationOverride o;
