@@ -444,7 +444,11 @@ void MainWindow::onRunStateChanged(RunState state) {
     const core::machine::Timeline& t = *runner_->timeline();
     const int upTo = runner_->currentSnapshot() < 0 ? -1 : t.snapshots[static_cast<std::size_t>(runner_->currentSnapshot())].line;
     bool added = false;
-    for (const core::Diagnostic& n : t.flow.notices) {
+    std::vector<core::Diagnostic> found = t.flow.notices;
+    // A guessed tool's holder touching the stock or chuck (W324/W325): the run went on, the list says so.
+    if (const core::cut::CutSimulator* cut = runner_->isBusy() ? nullptr : runner_->cutSimulator())
+      found.insert(found.end(), cut->warnings().begin(), cut->warnings().end());
+    for (const core::Diagnostic& n : found) {
       if (n.range.file != 0 || (state == RunState::Paused && n.range.line > upTo)) continue;
       const bool seen = std::any_of(runDiagnostics_.begin(), runDiagnostics_.end(), [&n](const core::Diagnostic& d) {
         return d.code == n.code && d.range == n.range;

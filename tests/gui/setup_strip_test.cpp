@@ -1,6 +1,8 @@
 // Issue 26 (GUI): a plain program's setup is shown above the output screen
 // before a run - each station's tool guessed from the program with its reason,
 // the bar and why - and one click on a station opens Tool Select there.
+#include <algorithm>
+
 #include <QApplication>
 #include <QFile>
 #include <QSignalSpy>
@@ -9,7 +11,9 @@
 #include <QTimer>
 
 #include "fresh_user_folders.h"
+#include "gui/diagnostics_panel.h"
 #include "gui/job_details_dialog.h"
+#include "gui/run_controller.h"
 #include "gui/language.h"
 #include "gui/main_window.h"
 #include "gui/resources.h"
@@ -171,6 +175,29 @@ class SetupStripTest : public QObject {
     const QString t2 = again.setupStrip()->stationText(2);
     QVERIFY2(t2.startsWith(QStringLiteral("T02  Parting (cut-off) tool, 3 mm — ")), qPrintable(t2));
     QVERIFY2(t2.contains(QStringLiteral("set for this job")), qPrintable(t2));
+  }
+
+  // A guessed tool's holder touching the bar (a groove 10 mm deep with the 3 mm
+  // blade guessed for T09): the run ends, and the list says W324 on its line.
+  void guessedToolsHolderIsAWarningInTheList() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("deep.nc"));
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write("%\nO0042 (DEEP GROOVE)\nG21 G40 G99\nT0909\nG97 S600 M03\nG00 X52. Z-20.\nG75 R0.5\n"
+            "G75 X30. Z-20. P2000 F0.05\nG00 X60.\nM30\n%\n");
+    f.close();
+    MainWindow w;
+    w.show();
+    QVERIFY(openAndWait(w, path));
+    w.runController()->setSpeed(RunController::kAsFastAsPossible);
+    w.action(QStringLiteral("actionGo"))->trigger();
+    QTRY_COMPARE_WITH_TIMEOUT(w.runController()->state(), RunState::Finished, 20000);
+    const auto& list = w.diagnosticsPanel()->diagnostics();
+    const auto it = std::find_if(list.begin(), list.end(), [](const core::Diagnostic& d) { return d.code == "W324"; });
+    QVERIFY(it != list.end());
+    QCOMPARE(it->range.line, 8);
+    QCOMPARE(it->severity, core::Severity::Warning);
   }
 };
 
