@@ -103,10 +103,26 @@ std::optional<CycleAlarm> stockRemoval(const CycleInput& in, Profile& profile, d
   const Vec2 aPrime = first.path.end;
   std::vector<Step> contour(moves.begin() + 1, moves.end());
   const double sb = sign(start.y() - aPrime.y());           // towards the stock
-  const double sa = sign(contour.back().path.end.x() - aPrime.x());  // along the passes
+  // Pieces at the end of the profile that lie wholly at or beyond the start
+  // point's level (`X1.6` back to the start's X, then a retract along Z) are
+  // outside the stock: the passes run along the profile before them. Where the
+  // machine allows such a tail (Haas) the roughing leaves it out and the last
+  // pass travels it as written; elsewhere (Fanuc) it must be monotonic too.
+  std::size_t cut = contour.size();
+  if (sb != 0.0) {
+    const auto outside = [&](const Step& s) {
+      for (const Vec2& p : samples(s.path))
+        if ((p.y() - start.y()) * sb < -1e-4) return false;
+      return true;
+    };
+    while (cut > 1 && outside(contour[cut - 1])) --cut;
+  }
+  double sa = sign(contour[cut - 1].path.end.x() - aPrime.x());  // along the passes
+  if (sa == 0.0) sa = sign(contour.back().path.end.x() - aPrime.x());
+  if (!in.profile || !in.profile->cycles.profileTailBeyondStart) cut = contour.size();
   // The profile must move steadily away from A' in both axes (type II: along the passes).
   bool pockets = false;
-  for (std::size_t i = 0; i < contour.size(); ++i) {
+  for (std::size_t i = 0; i < cut; ++i) {
     const auto pts = samples(contour[i].path);
     bool ok = sa != 0.0 && sb != 0.0;
     for (std::size_t j = 1; ok && j < pts.size(); ++j)
@@ -121,11 +137,12 @@ std::optional<CycleAlarm> stockRemoval(const CycleInput& in, Profile& profile, d
     }
   }
   std::vector<Step> shifted, roughed;
-  for (const Step& s : contour) {
-    Step t = s;
-    t.path = s.path.translated(shift);
+  for (std::size_t i = 0; i < contour.size(); ++i) {
+    Step t = contour[i];
+    t.path = contour[i].path.translated(shift);
     shifted.push_back(t);
-    t.path = s.path.translated(roughShift);
+    if (i >= cut) continue;
+    t.path = contour[i].path.translated(roughShift);
     roughed.push_back(t);
   }
   const Vec2 aShift = aPrime + shift;
