@@ -594,6 +594,43 @@ TEST(RealStyleHaas, NeckShaft_G71Type2_Pocket) {
   EXPECT_NEAR(p.edge(-1.5, -1.7, 1.2), -1.6, kIn);  // the Ø1.4 shoulder
 }
 
+// O20114: the shop habit of ending the G71 profile where it reached the start's
+// X (X1.3) and retracting along Z over the bar with the G40 block
+// (`N20 G00 G40 Z0.1`); the P block `G00 G42 X-0.0625 Z0.1` names X and Z. The
+// retract lies at the start's level, outside the stock: the control runs it.
+TEST(RealStyleHaas, LocatingPin_G71ProfileEndsWithARetract) {
+  const Job job{"haas-17-pin-g71-retract.nc", "haas", "--units inch --stock 1.25x3in", true};
+  RUN_CLEAN(job, r);
+  const Profile& p = r.part;
+  // G70 under G42 (T01 R0.8 tip 3): the nose follows the contour exactly.
+  EXPECT_NEAR(p.d(-0.01875), 0.5875, kIn);  // chamfer X0.55 Z0 -> X0.625 Z-0.0375, half way
+  EXPECT_NEAR(p.d(-0.5), 0.6250, kIn);      // X0.625 to Z-0.9
+  EXPECT_NEAR(p.d(-1.05), 0.7875, kIn);     // taper X0.625 Z-0.9 -> X0.95 Z-1.2, half way
+  EXPECT_NEAR(p.d(-1.5), 0.9500, kIn);      // X0.95 from Z-1.2 to Z-1.75
+  EXPECT_NEAR(p.d(-2.0), 1.2500, kIn);      // the bar, left of the Z-1.75 face
+  // The face X0.95 -> X1.3 at Z-1.75: the compensated face is exact below the
+  // cancel (N20 G40 leaves the offset perpendicular to the face, along Z).
+  EXPECT_NEAR(p.edge(-1.6, -1.9, 1.1), -1.75, kIn);
+  EXPECT_NEAR(p.rightFace(), 0.0, kIn);  // G01 Z0. then across the centre (X-0.0625)
+}
+
+// O20115: the same habit in a metric Haas program (G21), with a concave R4
+// fillet in the profile; the retract `N200 G00 G40 Z2.` is at the start's X42.
+TEST(RealStyleHaas, MetricSpigot_G71ProfileEndsWithARetract) {
+  const Job job{"haas-18-metric-g71-retract.nc", "haas", "--stock 40x80", false};
+  RUN_CLEAN(job, r);
+  const Profile& p = r.part;
+  EXPECT_NEAR(p.d(-1.0), 22.000, kMm);   // chamfer X20. Z0 -> X24. Z-2., half way
+  EXPECT_NEAR(p.d(-10.0), 24.000, kMm);  // X24. to Z-25.
+  // G02 X32. Z-29. R4. from X24. Z-25.: a concave fillet, centre Z-25. at
+  // radius 16; at Z-27.: r = 16 - sqrt(4^2 - 2^2) = 12.535898 -> Ø25.0718.
+  EXPECT_NEAR(p.d(-27.0), 25.0718, kMm);
+  EXPECT_NEAR(p.d(-35.0), 36.000, kMm);  // X36. from Z-29. to Z-45.
+  EXPECT_NEAR(p.d(-50.0), 40.000, kMm);  // the bar, left of Z-45.
+  EXPECT_NEAR(p.edge(-40.0, -50.0, 38.0), -45.0, kMm);  // the Z-45. face
+  EXPECT_NEAR(p.rightFace(), 0.0, kMm);
+}
+
 // ============================================================================
 // Fanuc 0T / 0i-TF programs, mm.
 // ============================================================================

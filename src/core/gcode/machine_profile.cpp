@@ -24,6 +24,7 @@ constexpr CycleSettings kHaasCycles{
     .threadFinishInch = 0.0, .threadFinishMm = 0.0,
     .threadChamferLeads = 1.0,
     .drillR = DrillR::Plane,
+    .profileTailBeyondStart = true,
 };
 // Fanuc 0i-TF: the two-block cycles carry their own values; only the G83
 // clearance d (parameter 5115, set by the machine builder) is used: 1 mm / .04 in.
@@ -35,6 +36,7 @@ constexpr CycleSettings kFanucCycles{
     .threadFinishInch = 0.0, .threadFinishMm = 0.0,
     .threadChamferLeads = 0.0,
     .drillR = DrillR::FromInitialLevel,
+    .profileTailBeyondStart = false,
 };
 
 constexpr MachineProfile kProfiles[] = {

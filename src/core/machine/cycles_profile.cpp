@@ -103,23 +103,26 @@ std::optional<CycleAlarm> stockRemoval(const CycleInput& in, Profile& profile, d
   const Vec2 aPrime = first.path.end;
   std::vector<Step> contour(moves.begin() + 1, moves.end());
   const double sb = sign(start.y() - aPrime.y());           // towards the stock
-  // Haas shops end the profile with a retract above the bar (`X1.6` = the start's
-  // X, then `N20 G00 G40 Z0.1`): pieces after the profile has reached the start's
-  // depth level that stay at or beyond it cut nothing; the passes ignore them and
-  // the finishing pass travels them as written.
-  std::size_t cutting = contour.size();
-  while (cutting > 1) {
-    const Segment& p = contour[cutting - 1].path;
-    const auto beyond = [&](const Vec2& v) { return (v.y() - start.y()) * sb >= -kEps; };
-    if (!(beyond(p.start) && beyond(p.end) && (!p.isArc() || beyond(p.pointAt(0.5))))) break;
-    --cutting;
+  // Pieces at the end of the profile that lie wholly at or beyond the start
+  // point's level (`X1.6` back to the start's X, then a retract along Z) are
+  // outside the stock: the passes run along the profile before them. Where the
+  // machine allows such a tail (Haas) the roughing leaves it out and the last
+  // pass travels it as written; elsewhere (Fanuc) it must be monotonic too.
+  std::size_t cut = contour.size();
+  if (sb != 0.0) {
+    const auto outside = [&](const Step& s) {
+      for (const Vec2& p : samples(s.path))
+        if ((p.y() - start.y()) * sb < -1e-4) return false;
+      return true;
+    };
+    while (cut > 1 && outside(contour[cut - 1])) --cut;
   }
-  const std::vector<Step> trailing(contour.begin() + static_cast<std::ptrdiff_t>(cutting), contour.end());
-  contour.resize(cutting);
-  const double sa = sign(contour.back().path.end.x() - aPrime.x());  // along the passes
+  double sa = sign(contour[cut - 1].path.end.x() - aPrime.x());  // along the passes
+  if (sa == 0.0) sa = sign(contour.back().path.end.x() - aPrime.x());
+  if (!in.profile || !in.profile->cycles.profileTailBeyondStart) cut = contour.size();
   // The profile must move steadily away from A' in both axes (type II: along the passes).
   bool pockets = false;
-  for (std::size_t i = 0; i < contour.size(); ++i) {
+  for (std::size_t i = 0; i < cut; ++i) {
     const auto pts = samples(contour[i].path);
     bool ok = sa != 0.0 && sb != 0.0;
     for (std::size_t j = 1; ok && j < pts.size(); ++j)
@@ -134,11 +137,12 @@ std::optional<CycleAlarm> stockRemoval(const CycleInput& in, Profile& profile, d
     }
   }
   std::vector<Step> shifted, roughed;
-  for (const Step& s : contour) {
-    Step t = s;
-    t.path = s.path.translated(shift);
+  for (std::size_t i = 0; i < contour.size(); ++i) {
+    Step t = contour[i];
+    t.path = contour[i].path.translated(shift);
     shifted.push_back(t);
-    t.path = s.path.translated(roughShift);
+    if (i >= cut) continue;
+    t.path = contour[i].path.translated(roughShift);
     roughed.push_back(t);
   }
   const Vec2 aShift = aPrime + shift;
@@ -182,15 +186,7 @@ std::optional<CycleAlarm> stockRemoval(const CycleInput& in, Profile& profile, d
   // The last pass follows the profile offset by the finishing allowance.
   steps.push_back(infeedRapid ? rapid(pos, aShift) : feedLine(pos, aShift));
   for (const Step& s : shifted) steps.push_back(s);
-  Vec2 end = shifted.back().path.end;
-  for (const Step& s : trailing) {  // the retract above the bar, as written (shifted like the rest)
-    Step t = s;
-    t.path = s.path.translated(shift);
-    t.path.start = end;
-    steps.push_back(t);
-    end = t.path.end;
-  }
-  steps.push_back(rapid(end, start));
+  steps.push_back(rapid(shifted.back().path.end, start));
   for (Step& s : steps) s.feed = 0.0, s.where = {};
   if (swap) swapAll(steps);
   out = std::move(steps);

@@ -159,6 +159,60 @@ TEST(HaasG71, APBlockWithXAndZIsAccepted) {
   expectPath(r, 3, kInch, {{R, 1.5, 0.05}, {L, 1.5, -1.0}, {L, 2.0, -1.0}, {R, 2.0, 0.1}});
 }
 
+// Haas shops end the profile where it reached the start point's X and retract
+// along Z over the bar (`X2.` then `N20 G00 Z0.1`): the retract lies wholly at
+// the start level, outside the stock, so it cuts nothing. The roughing is that
+// of kHaasG71 (levels X1.9 .. X1.6, direction -Z); the last pass follows the
+// profile at the allowance and travels the retract too, at X2.02 back to
+// Z0.105, then goes to the start. G70 runs the profile as written.
+constexpr const char* kHaasG71Retract =
+    "G98 G97 S500 M03\n"                     // 1
+    "G00 X2. Z0.1\n"                         // 2
+    "G71 P10 Q20 U0.02 W0.005 D0.05 F10.\n"  // 3
+    "N10 G00 X1.5 Z0.1\n"                    // 4
+    "G01 Z-1.\n"                             // 5
+    "X1.8\n"                                 // 6
+    "Z-2.\n"                                 // 7
+    "X2.\n"                                  // 8
+    "N20 G00 Z0.1\n"                         // 9
+    "G70 P10 Q20\n";                         // 10
+
+TEST(HaasG71, ARetractAtTheStartLevelEndingTheProfileIsTravelledNotChecked) {
+  const CycleRun r(kHaasG71Retract, Dialect::Haas);
+  ASSERT_FALSE(r.timeline.alarm) << r.timeline.alarm->code;
+  expectPath(r, 3, kInch,
+             {{R, 1.9, 0.1}, {L, 1.9, -1.995}, {R, 2.0, -1.945}, {R, 2.0, 0.1},
+              {R, 1.8, 0.1}, {L, 1.8, -0.995}, {R, 1.9, -0.945}, {R, 1.9, 0.1},
+              {R, 1.7, 0.1}, {L, 1.7, -0.995}, {R, 1.8, -0.945}, {R, 1.8, 0.1},
+              {R, 1.6, 0.1}, {L, 1.6, -0.995}, {R, 1.7, -0.945}, {R, 1.7, 0.1},
+              {R, 1.52, 0.105}, {L, 1.52, -0.995}, {L, 1.82, -0.995}, {L, 1.82, -1.995}, {L, 2.02, -1.995},
+              {R, 2.02, 0.105}, {R, 2.0, 0.1}});
+  expectPath(r, 10, kInch, {{R, 1.5, 0.1}, {L, 1.5, -1.0}, {L, 1.8, -1.0}, {L, 1.8, -2.0}, {L, 2.0, -2.0},
+                            {R, 2.0, 0.1}, {R, 2.0, 0.1}});
+}
+
+TEST(HaasG71, APieceBelowTheStartLevelAfterTheRetractStillCounts) {
+  // Only the end of the profile may lie outside: X1.9 after the retract comes
+  // back below the start's X2.0 and turns back in X (A121 on its block).
+  const CycleRun r("G98 G97 S500 M03\nG00 X2. Z0.1\nG71 P10 Q20 D0.05 F10.\n"
+                   "N10 G00 X1.5\nG01 Z-1.\nX2.\nZ-0.5\nN20 X1.9\n",
+                   Dialect::Haas);
+  ASSERT_TRUE(r.timeline.alarm);
+  EXPECT_EQ(r.timeline.alarm->code, "A121");
+  EXPECT_EQ(r.timeline.alarm->range.line, 7);
+}
+
+TEST(FanucG71, ARetractEndingTheProfileIsNotMonotonic) {
+  // Fanuc 0i-TF wants the whole shape A'..B monotonic (docs/haas-cycles.md):
+  // the same profile in the two-block form stops with A121 on the retract.
+  const CycleRun r("G98 G97 S500 M03\nG00 X2. Z0.1\nG71 U0.05 R0.05\nG71 P10 Q20 U0.02 W0.005 F10.\n"
+                   "N10 G00 X1.5 Z0.1\nG01 Z-1.\nX1.8\nZ-2.\nX2.\nN20 G00 Z0.1\n",
+                   Dialect::Fanuc);
+  ASSERT_TRUE(r.timeline.alarm);
+  EXPECT_EQ(r.timeline.alarm->code, "A121");
+  EXPECT_EQ(r.timeline.alarm->range.line, 10);
+}
+
 TEST(FanucG71, OneBlockFormIsNotReadInFanuc) {
   // In Fanuc the same block is the second block of the two-block form and
   // needs the first block's depth: A122.
@@ -183,6 +237,21 @@ TEST(HaasG72, FacingPassesDAlongZ) {
               {R, 2.2, -0.1}, {L, 1.0, -0.1}, {R, 1.1, -0.05}, {R, 2.2, -0.05},
               {R, 2.2, -0.2}, {L, 1.0, -0.2}, {R, 1.1, -0.15}, {R, 2.2, -0.15},
               {R, 2.2, -0.3}, {L, 1.0, -0.3}, {L, 1.0, 0.1}, {R, 2.2, 0.1}});
+}
+
+TEST(HaasG72, ARetractAlongXAtTheStartLevelEndsTheProfile) {
+  // The profile of FacingPassesDAlongZ, ending at the start's Z0.1, then
+  // `N20 G00 X2.2` back over the face: outside the stock, so the passes are
+  // the same; the last pass travels the retract (X2.2 Z0.1 is the start).
+  const CycleRun r("G98 G97 S500 M03\nG00 X2.2 Z0.1\nG72 P10 Q20 D0.1 F10.\n"
+                   "N10 G00 Z-0.3\nG01 X1.0\nZ0.1\nN20 G00 X2.2\n",
+                   Dialect::Haas);
+  ASSERT_FALSE(r.timeline.alarm) << r.timeline.alarm->code;
+  expectPath(r, 3, kInch,
+             {{R, 2.2, 0.0}, {L, 1.0, 0.0}, {R, 1.1, 0.05}, {R, 2.2, 0.05},
+              {R, 2.2, -0.1}, {L, 1.0, -0.1}, {R, 1.1, -0.05}, {R, 2.2, -0.05},
+              {R, 2.2, -0.2}, {L, 1.0, -0.2}, {R, 1.1, -0.15}, {R, 2.2, -0.15},
+              {R, 2.2, -0.3}, {L, 1.0, -0.3}, {L, 1.0, 0.1}, {R, 2.2, 0.1}, {R, 2.2, 0.1}});
 }
 
 // ---- G73 one-block ------------------------------------------------------------------

@@ -60,6 +60,12 @@ struct CycleSettings {
   double threadFinishInch, threadFinishMm;    // G76 one-block: depth of the last pass (Haas setting 86)
   double threadChamferLeads;                  // G76 one-block: pull-out length in leads (Haas setting 95)
   DrillR drillR;
+  // G71/G72: profile pieces after the last cut that lie wholly at or beyond the
+  // start point's depth level (outside the stock: `X1.6` back to the start's X,
+  // then `N20 G00 G40 Z0.1`) are left out of the monotony check and the roughing
+  // and travelled by the finishing pass (Haas); false: the whole shape must
+  // move one way (Fanuc 0i-TF, alarm A121). docs/haas-cycles.md.
+  bool profileTailBeyondStart;
 };
 
 // Program flow (issue 9): subprograms and custom macro B.
