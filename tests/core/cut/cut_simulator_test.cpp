@@ -181,12 +181,16 @@ TEST(CutSimulator, CuttingWithTheSpindleStoppedIsAnAlarm) {
   EXPECT_EQ(sim.removedVolume(), 0.0);
 }
 
-TEST(CutSimulator, HolderIntoTheStockIsAnAlarm) {
-  // Insert 5 x 5 mm; the holder above it is 3 mm wider to the right.
+// Insert 5 x 5 mm; the holder above it is 3 mm wider to the right.
+ToolShape wideHolderTool() {
   io::RgbImage img = blankImage(16, 30);
   paint(img, 0, 20, 9, 29, 0xE0A000);
   paint(img, 0, 0, 15, 19, 0x000000);
-  const ToolShape tool = *makeToolShape(img, "wide-holder.bmp", 0.4, 3).value;
+  return *makeToolShape(img, "wide-holder.bmp", 0.4, 3).value;
+}
+
+TEST(CutSimulator, HolderIntoTheStockIsAnAlarm) {
+  const ToolShape tool = wideHolderTool();
   const machine::Timeline tl = timelineOf({
       move(MoveKind::Rapid, Segment::line(zx(-10, 40), zx(-10, 26)), 0, 1, 60),
       move(MoveKind::Line, Segment::line(zx(-10, 26), zx(-10, 15)), 0, 1, 70),
@@ -220,10 +224,7 @@ TEST(CutSimulator, ToolIntoTheChuckIsAnAlarm) {
 // Issue 26: a tool Klueng guessed from a plain program (ToolTable::guessed) whose
 // holder touches the bar: a warning naming the station, once, and the run goes on.
 TEST(CutSimulator, GuessedToolsHolderIsAWarningOnceAndTheRunGoesOn) {
-  io::RgbImage img = blankImage(16, 30);
-  paint(img, 0, 20, 9, 29, 0xE0A000);
-  paint(img, 0, 0, 15, 19, 0x000000);
-  const ToolShape tool = *makeToolShape(img, "wide-holder.bmp", 0.4, 3).value;
+  const ToolShape tool = wideHolderTool();
   const machine::Timeline tl = timelineOf({
       move(MoveKind::Rapid, Segment::line(zx(-10, 40), zx(-10, 26)), 0, 1, 60),
       move(MoveKind::Line, Segment::line(zx(-10, 26), zx(-10, 15)), 0, 1, 70),
