@@ -255,8 +255,17 @@ void ToolSelectDialog::updatePreview() {
           : nullptr;
   io::Offset off = inference_.setup.offsets.at(offsetSpin_->value());
   const io::Offset& own = offsets_.at(offsetSpin_->value());
-  if (own.x != 0.0 || own.z != 0.0 || own.r != 0.0 || own.tip != 0) off = own;
-  else if (libraryTool) off = io::Offset{0.0, 0.0, libraryTool->noseRadius, libraryTool->tip};
+  // A tool guessed from a plain program brings its own nose (the core's I411): show that, not
+  // the offset.cfg row meant for the table's tool.
+  const bool guessedHere = inference_.fromProgram && inference_.choiceFor(row + 1) &&
+                           name == QString::fromStdString(inference_.setup.tools.bitmap[static_cast<std::size_t>(row)]);
+  if (guessedHere) {
+    // off is already the run's row
+  } else if (own.x != 0.0 || own.z != 0.0 || own.r != 0.0 || own.tip != 0) {
+    off = own;
+  } else if (libraryTool) {
+    off = io::Offset{0.0, 0.0, libraryTool->noseRadius, libraryTool->tip};
+  }
   tipInfo_->setText(tr("tip %1, nose radius %2 mm").arg(off.tip).arg(off.r, 0, 'f', 3));
   if (name.isEmpty()) {
     preview_->setSprite(render::ToolSprite(), tr("Tool %1 has no bitmap.").arg(row + 1, 2, 10, QLatin1Char('0')));
