@@ -182,6 +182,7 @@ inline constexpr const char* kTooManyCycleMoves = "A149";
 inline constexpr const char* kProfileCommandNotAllowed = "A150";
 inline constexpr const char* kEndlessLoopMoves = "A151";
 inline constexpr const char* kNoCAxisOnThisMachine = "A152";
+inline constexpr const char* kProfileStartsWithoutMotion = "A153";  // {0} cycle, {1} N number
 inline constexpr const char* kSubprogramFileHasErrors = "E412";
 inline constexpr const char* kMainProgramRepeats = "I160";
 inline constexpr const char* kVacantAddressOmitted = "W130";

@@ -78,6 +78,8 @@ constexpr MessageText kMessages[] = {
      "{0}: เครื่องนี้ไม่มีแกน C การลบมุมหรือการมนมุมต้องเขียนโดยมีจุลภาคนำหน้า (,C2. ,R3.)"},
     {codes::kCallsTooDeep, "{0}: subprogram and macro calls nest more than {1} levels deep",
      "{0}: การเรียกโปรแกรมย่อยและมาโครซ้อนกันลึกเกิน {1} ชั้น"},
+    {codes::kProfileStartsWithoutMotion, "{0}: the first block of the profile, N{1}, holds neither G00 nor G01 (Fanuc alarm PS0065): write the first move in it (N{1} G00 X.. Z..)",
+     "{0}: บล็อกแรกของรูปร่างชิ้นงาน N{1} ไม่มี G00 หรือ G01 (สัญญาณเตือน PS0065 ของ Fanuc) ให้เขียนการเคลื่อนที่แรกไว้ในบล็อกนั้น (N{1} G00 X.. Z..)"},
     {codes::kNoSuchProgram, "{0}: no program O{1} in this file or its folder",
      "{0}: ไม่พบโปรแกรม O{1} ในไฟล์นี้หรือในโฟลเดอร์เดียวกัน"},
     {codes::kNoSuchSequence, "{0}: no block N{1} to jump to",

@@ -85,6 +85,8 @@ inline constexpr const char* kLoopsCross = "E409";            // {0}=END word {1
 inline constexpr const char* kReadOnlyVariable = "E410";      // {0}=variable
 inline constexpr const char* kCallsTooDeep = "E411";          // {0}=word {1}=limit
 inline constexpr const char* kSubprogramFileErrors = "E412";  // {0}=file {1}=line {2}=column {3}=code
+inline constexpr const char* kProfileBlockMissing = "E413";   // {0}=cycle and word {1}=N number
+inline constexpr const char* kProfileStartsWithoutMotion = "E414";  // {0}=cycle and P word {1}=N number
 
 // W1xx warnings
 inline constexpr const char* kMachineSpecificM = "W101";    // {0}=word
@@ -144,6 +146,8 @@ inline constexpr const char* kAll[] = {
     kReadOnlyVariable,
     kCallsTooDeep,
     kSubprogramFileErrors,
+    kProfileBlockMissing,
+    kProfileStartsWithoutMotion,
     kOutOfRange,
     kTooManyDecimals,
     kNotPositive,

@@ -8,6 +8,7 @@
 #include <functional>
 #include <map>
 #include <optional>
+#include <set>
 
 #include "diagnostic_codes.h"
 #include "klueng/core/gcode/program_index.h"
@@ -58,7 +59,8 @@ class FlowChecker {
   std::vector<Diagnostic>& out_;
   ProgramIndex index_;
   std::vector<Call> calls_;
-  std::vector<bool> hasConditions_;  // per section: IF/WHILE/GOTO/M99 P may end a recursion
+  std::vector<bool> hasConditions_;
+  std::set<int> profileStarts_;  // first profile blocks already looked at  // per section: IF/WHILE/GOTO/M99 P may end a recursion
 
   void emit(const char* code, SourceRange range, std::vector<std::string> args) {
     if (out_.size() >= 10000) return;
@@ -120,7 +122,10 @@ class FlowChecker {
         }
         default: break;
       }
-      if (st.kind == StatementKind::None) checkCalls(b, section, i);
+      if (st.kind == StatementKind::None) {
+        checkCalls(b, section, i);
+        checkProfile(b, section, i);
+      }
     }
     for (const Open& o : open) {
       const Block& b = program_.blocks[static_cast<std::size_t>(o.block)];
@@ -150,6 +155,38 @@ class FlowChecker {
         calls_.push_back({section, static_cast<int>(callee - index_.sections().data()), g, index});
       else emit(codes::kProgramNotFound, p->range, {g->text() + " " + p->text(), std::to_string(t.number)});
     }
+  }
+
+  // G70-G73 P Q with constant P and Q: both blocks exist (the run looks for
+  // them as the interpreter does: P first after the cycle, else from the
+  // program's start; Q at or after P), and where the machine wants it the
+  // first block of the profile holds G00 or G01 (Fanuc 0i-TF PS0065).
+  void checkProfile(const Block& b, int section, int index) {
+    const Word* g = nullptr;
+    for (const Word& w : b.words) {
+      if (w.letter != 'G' || w.expr >= 0 || w.hasDecimalPoint || w.comma) continue;
+      const CodeInfo* info = findCode('G', w.code(), profile_.dialect);
+      if (info && (info->action == CodeAction::Finishing || info->action == CodeAction::TurnRoughing ||
+                   info->action == CodeAction::FaceRoughing || info->action == CodeAction::PatternRepeating))
+        g = &w;
+    }
+    const Word* p = g ? constantWord(b, 'P') : nullptr;
+    const Word* q = g ? constantWord(b, 'Q') : nullptr;
+    if (!p || !q) return;  // Fanuc's first block (G71 U R), or values known at run time
+    const int ns = index_.findSequence(section, p->code(), index);
+    if (ns < 0) {
+      emit(codes::kProfileBlockMissing, p->range, {g->text() + " " + p->text(), std::to_string(p->code())});
+      return;
+    }
+    const int nf = index_.findSequence(section, q->code(), ns - 1);
+    if (nf < ns) emit(codes::kProfileBlockMissing, q->range, {g->text() + " " + q->text(), std::to_string(q->code())});
+    if (!profile_.cycles.profileFirstBlockNeedsG00G01 || !profileStarts_.insert(ns).second) return;
+    const Block& first = program_.blocks[static_cast<std::size_t>(ns)];
+    if (first.statement.kind != StatementKind::None || codeWord(first, 'G', 0) || codeWord(first, 'G', 1)) return;
+    for (const Word& w : first.words)
+      if (w.letter == 'G' && w.expr >= 0) return;  // a G code from a macro value: known at run time
+    const SourceRange at = first.words.empty() ? SourceRange{first.line, 1, 0} : first.words.front().range;
+    emit(codes::kProfileStartsWithoutMotion, at, {g->text() + " " + p->text(), std::to_string(p->code())});
   }
 
   // M98 / M97 / M99 with a constant P (every M of the block is looked at only then).

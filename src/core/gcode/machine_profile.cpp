@@ -25,6 +25,7 @@ constexpr CycleSettings kHaasCycles{
     .threadChamferLeads = 1.0,
     .drillR = DrillR::Plane,
     .profileTailBeyondStart = true,
+    .profileFirstBlockNeedsG00G01 = false,
 };
 // Fanuc 0i-TF: the two-block cycles carry their own values; only the G83
 // clearance d (parameter 5115, set by the machine builder) is used: 1 mm / .04 in.
@@ -37,6 +38,7 @@ constexpr CycleSettings kFanucCycles{
     .threadChamferLeads = 0.0,
     .drillR = DrillR::FromInitialLevel,
     .profileTailBeyondStart = false,
+    .profileFirstBlockNeedsG00G01 = true,
 };
 
 constexpr MachineProfile kProfiles[] = {

@@ -135,6 +135,17 @@ std::optional<cycles::CycleAlarm> Interpreter::readProfile(const Block& cycle, c
   const int section = index_.sectionOf(blockIndex_);
   out.ns = index_.findSequence(section, pw->code(), blockIndex_);
   if (out.ns < 0) return alarmAt(codes::kNoProfileBlock, pw, {name, "P", pw->number.str()});
+  // Fanuc 0i-TF (PS0065): the profile's first block must hold G00 or G01.
+  if (profile_.cycles.profileFirstBlockNeedsG00G01) {
+    const Block& first = program_.blocks[static_cast<std::size_t>(out.ns)];
+    bool motion = first.statement.kind != gcode::StatementKind::None;  // refused below (A148)
+    for (const Word& w : first.words)
+      motion = motion || (w.letter == 'G' && (w.expr >= 0 || (!w.hasDecimalPoint && (w.code() == 0 || w.code() == 1))));
+    if (!motion)
+      return cycles::CycleAlarm{codes::kProfileStartsWithoutMotion,
+                                first.words.empty() ? SourceRange{first.line, 1, 0} : first.words.front().range,
+                                {name + " " + wordText(*pw), std::to_string(pw->code())}};
+  }
   out.nf = index_.findSequence(section, qw->code(), out.ns - 1);
   if (out.nf < out.ns) out.nf = -1;
   if (out.nf < 0) return alarmAt(codes::kNoProfileBlock, qw, {name, "Q", qw->number.str()});

@@ -104,7 +104,7 @@ INSTANTIATE_TEST_SUITE_P(
         CleanCase{"G20\nX1.2345 Z-0.0001", In::Both}, CleanCase{"G20\nG21\nX1.234", In::Both},
         CleanCase{"N1\nN9999 G00", In::Both}, CleanCase{"T0316", In::Both}, CleanCase{"T0100", In::Both},
         CleanCase{"T101", In::Fanuc}, CleanCase{"G1 X1.\ng01 x2.", In::Both}, CleanCase{"M3 S100", In::Both},
-        CleanCase{"G76 P020060 Q50 R0.05", In::Both}, CleanCase{"G71 P100 Q200 U0.5 W0.1 F0.25", In::Both},
+        CleanCase{"G76 P020060 Q50 R0.05", In::Both}, CleanCase{"G71 P100 Q200 U0.5 W0.1 F0.25\nN100 G00 X30.\nN200 G01 Z-20.", In::Both},
         CleanCase{"M98 P1234\nM30\nO1234\nM99", In::Fanuc}, CleanCase{"M42", In::Fanuc}, CleanCase{"G54\nG53 X0. Z0.", In::Fanuc},
         // ext arc rules
         CleanCase{"G02 X20. Z-5. I2. K0.", In::Both}, CleanCase{"G03 U4. W-2. R2.", In::Both},

@@ -90,6 +90,11 @@ INSTANTIATE_TEST_SUITE_P(
                   "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\n"
                   "G71 P10 Q20 F100.\nN10 G00 X30.\nG01 Z-20.\nX40.\nZ-30.\nN20 X36.\n", F,
                   "A121", 9, 1, 3},
+        // Fanuc PS0065: the profile's first block (N10 alone) holds no G00/G01.
+        AlarmCase{"CycleProfileFirstBlockWithoutG00G01",
+                  "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\n"
+                  "G71 P10 Q20 F100.\nN10\nG00 X30.\nN20 G01 Z-20.\n", F,
+                  "A153", 5, 1, 3},
         AlarmCase{"CycleDepthZero", "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U0 R0.5\n", F, "A122", 3, 5, 2},
         AlarmCase{"CycleUnderNoseComp", "G98 G97 S500 M03 T0101\nG42 G00 X50. Z2.\nG71 U2. R0.5\n", F, "A123",
                   3, 1, 2},

@@ -66,6 +66,9 @@ struct CycleSettings {
   // and travelled by the finishing pass (Haas); false: the whole shape must
   // move one way (Fanuc 0i-TF, alarm A121). docs/haas-cycles.md.
   bool profileTailBeyondStart;
+  // G70-G73: the first block of the shape (N of P) must hold G00 or G01
+  // (Fanuc 0i-TF alarm PS0065); false: a block without it is read as any other.
+  bool profileFirstBlockNeedsG00G01;
 };
 
 // Program flow (issue 9): subprograms and custom macro B.
