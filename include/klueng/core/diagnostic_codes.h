@@ -207,6 +207,7 @@ inline constexpr const char* kBoreGouge = "W322";
 inline constexpr const char* kBoreLeftover = "W323";
 inline constexpr const char* kGuessHitsStock = "W324";  // {0} station, {1} tool, {2} Z, {3} X
 inline constexpr const char* kGuessHitsChuck = "W325";
+inline constexpr const char* kGuessEdgeBrushesStock = "W326";  // a guessed tool's edge, < 0.2 mm, in a rapid
 inline constexpr const char* kPartCheckStopped = "I324";     // {0} the alarm's code
 inline constexpr const char* kPartCheckNothingCut = "I325";
 

@@ -400,11 +400,17 @@ bool hitsChuck(const SweepContext& c, const std::vector<std::pair<Vec2, Vec2>>& 
 
 }  // namespace
 
+// How deep a guessed tool's edge may brush the stock in a rapid before it is the program's fault.
+constexpr double kGuessGrazeMm = 0.2;
+
 bool CutSimulator::excuseGuess(const char* code, const Move& m, const Vec2& where) {
   if (!setup_.tools.isGuess(m.tool)) return false;
   bool& warned = warnedGuess_[static_cast<std::size_t>(m.tool - 1)];
   if (!warned) {
-    Diagnostic d = makeAlarm(code == codes::kToolHitsChuck ? codes::kGuessHitsChuck : codes::kGuessHitsStock, m, where);
+    const char* warning = code == codes::kToolHitsChuck          ? codes::kGuessHitsChuck
+                          : code == codes::kGuessEdgeBrushesStock ? codes::kGuessEdgeBrushesStock
+                                                                  : codes::kGuessHitsStock;
+    Diagnostic d = makeAlarm(warning, m, where);
     d.severity = Severity::Warning;
     const std::string id = setup_.tools.libraryId(m.tool);
     const std::string& line = setup_.tools.bitmap[static_cast<std::size_t>(m.tool - 1)];
@@ -534,6 +540,15 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
       const auto b = boxes(s0, s);
       const bool edge = touches(n, b, false);
       if (!edge && excuseGuess(codes::kHolderHitsStock, m, timeline_->moves[index].path.pointAt(s))) return;
+      // A guessed tool's edge brushing the stock by a sliver (its flank beside a shoulder, the
+      // shape of the shop's real insert unknown): a warning; a rapid that goes in deeper is the program's.
+      if (edge && m.kind == MoveKind::Rapid && setup_.tools.isGuess(m.tool)) {
+        SweepContext loose = ctx;
+        loose.tolerance = std::max(ctx.tolerance, kGuessGrazeMm);
+        if (!overlapsStock(loose, nosePieces, boxPieces, false, zMin, zMax) &&
+            excuseGuess(codes::kGuessEdgeBrushesStock, m, timeline_->moves[index].path.pointAt(s)))
+          return;
+      }
       raise(m.kind == MoveKind::Rapid ? codes::kRapidIntoStock : (edge ? codes::kCutWithSpindleStopped : codes::kHolderHitsStock), s);
     }
     return;

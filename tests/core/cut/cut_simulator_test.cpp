@@ -262,6 +262,30 @@ TEST(CutSimulator, GuessedToolsEdgeInARapidIsStillAnAlarm) {
   EXPECT_TRUE(sim.warnings().empty());
 }
 
+// A guessed tool's edge brushing the bar by 0.1 mm in a rapid (its flank beside a
+// shoulder; the shop's insert is shaped otherwise): W326 and the run goes on; by
+// 0.3 mm it is the program's rapid into the stock (A301).
+TEST(CutSimulator, GuessedToolsEdgeBrushingInARapidIsAWarningUpTo0_2mm) {
+  for (const double depth : {0.1, 0.3}) {
+    const machine::Timeline tl = timelineOf({
+        move(MoveKind::Rapid, Segment::line(zx(5, 25.0 - depth), zx(-30, 25.0 - depth)), 0, 1, 60),
+    });
+    CutSetup setup = barSetup(50, 100);
+    setup.tools.guessed[0] = true;
+    CutSimulator sim(tl, setup, libraryWith(squareTool(0.0, 3)));
+    sim.runToEnd();
+    if (depth < 0.2) {
+      EXPECT_FALSE(sim.alarm().has_value()) << depth;
+      ASSERT_EQ(sim.warnings().size(), 1u) << depth;
+      EXPECT_EQ(sim.warnings()[0].code, "W326");
+      EXPECT_EQ(sim.warnings()[0].range.line, 60);
+    } else {
+      ASSERT_TRUE(sim.alarm().has_value()) << depth;
+      EXPECT_EQ(sim.alarm()->code, "A301");
+    }
+  }
+}
+
 // The body of a guessed tool reaching the chuck: W325, and the run goes on.
 TEST(CutSimulator, GuessedToolsBodyAtTheChuckIsAWarning) {
   CutSetup setup = barSetup(50, 100);
