@@ -403,13 +403,10 @@ bool hitsChuck(const SweepContext& c, const std::vector<std::pair<Vec2, Vec2>>& 
 // How deep a guessed tool's edge may brush the stock in a rapid before it is the program's fault.
 constexpr double kGuessGrazeMm = 0.2;
 
-bool CutSimulator::excuseGuess(const char* code, const Move& m, const Vec2& where) {
+bool CutSimulator::excuseGuess(const char* warning, const Move& m, const Vec2& where) {
   if (!setup_.tools.isGuess(m.tool)) return false;
   bool& warned = warnedGuess_[static_cast<std::size_t>(m.tool - 1)];
   if (!warned) {
-    const char* warning = code == codes::kToolHitsChuck          ? codes::kGuessHitsChuck
-                          : code == codes::kGuessEdgeBrushesStock ? codes::kGuessEdgeBrushesStock
-                                                                  : codes::kGuessHitsStock;
     Diagnostic d = makeAlarm(warning, m, where);
     d.severity = Severity::Warning;
     const std::string id = setup_.tools.libraryId(m.tool);
@@ -503,7 +500,7 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
     edgeCtx.tool = &*edgeOnly;
     if (hitsChuck(ctx, nosePieces, boxPieces) && !hitsChuck(edgeCtx, nosePieces, boxPieces)) {
       const double s = earliest([&](double e) { return hitsChuck(ctx, nose(s0, e), boxes(s0, e)); });
-      excuseGuess(codes::kToolHitsChuck, m, timeline_->moves[index].path.pointAt(s));
+      excuseGuess(codes::kGuessHitsChuck, m, timeline_->moves[index].path.pointAt(s));
       ctx.tool = edgeCtx.tool;  // the rest of the move as its edge alone: no second word on the chuck
     }
   }
@@ -539,7 +536,7 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
       const auto n = nose(s0, s);
       const auto b = boxes(s0, s);
       const bool edge = touches(n, b, false);
-      if (!edge && excuseGuess(codes::kHolderHitsStock, m, timeline_->moves[index].path.pointAt(s))) return;
+      if (!edge && excuseGuess(codes::kGuessHitsStock, m, timeline_->moves[index].path.pointAt(s))) return;
       // A guessed tool's edge brushing the stock by a sliver (its flank beside a shoulder, the
       // shape of the shop's real insert unknown): a warning; a rapid that goes in deeper is the program's.
       if (edge && m.kind == MoveKind::Rapid && setup_.tools.isGuess(m.tool)) {
@@ -557,7 +554,7 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
   forEachInterval(ctx, nosePieces, boxPieces, false, [&](int i, double lo, double hi) { stock_.remove(i, lo, hi); });
   if (options_.detectCollisions && !tool->holder.empty() && overlapsStock(ctx, nosePieces, boxPieces, true)) {
     const double s = earliest([&](double e) { return overlapsStock(ctx, nose(s0, e), boxes(s0, e), true); });
-    if (excuseGuess(codes::kHolderHitsStock, m, timeline_->moves[index].path.pointAt(s))) return;
+    if (excuseGuess(codes::kGuessHitsStock, m, timeline_->moves[index].path.pointAt(s))) return;
     raise(codes::kHolderHitsStock, s);
   }
 }

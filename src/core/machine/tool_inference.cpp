@@ -190,6 +190,16 @@ class Scanner {
     return std::move(uses_);
   }
   const std::vector<int>& order() const { return order_; }
+  // The words of a file line, for a note ("G01 Z-51.4"), without its comment.
+  std::string blockText(int fileLine) const {
+    const int i = fileLine - firstLine_;
+    if (i < 0 || i >= static_cast<int>(lines_.size())) return {};
+    const std::string_view line = lines_[static_cast<std::size_t>(i)];
+    std::string words(line.substr(0, line.find_first_of("(;")));
+    while (!words.empty() && (words.back() == ' ' || words.back() == '\t' || words.back() == '\r')) words.pop_back();
+    return words.size() > 40 ? words.substr(0, 40) : words;
+  }
+
   std::map<int, Evidence> partings_;  // station -> its plunge to X0 (kept when among the last tools)
 
  private:
@@ -406,8 +416,6 @@ struct MotionUse {
   double aboveZero = 0.0;    // mm fed at X > 0
   int insideLine = 0;        // the first Z feed left inward
   int belowLine = 0;         // the first feed at X < 0
-  int chuckLine = 0;         // the first feed along -Z
-  int tailLine = 0;          // the first feed along +Z
   int threadLine = 0;        // the first thread pass (G32/G76/G92 after macros and calls)
   double drillDepth = 0.0;   // deepest feed along -Z on the centre line (mm, Z < 0)
   int drillLine = 0;
@@ -450,23 +458,10 @@ std::map<int, MotionUse> recordMotion(const Timeline& timeline) {
     else if (xMid > kOnCentreMm) u.aboveZero += length;
     if (std::abs(dz) >= kMinZRunMm && std::abs(dz) >= 2.0 * std::abs(dx)) {
       (dz < 0.0 ? u.towardChuck : u.towardTail) += std::abs(dz);
-      int& first = dz < 0.0 ? u.chuckLine : u.tailLine;
-      if (!first) first = m.line;
-      // A retract that ends the run in the same move (a taper out) is not a side.
       zRun = Pending{m.tool, std::abs(dz), m.line};
     }
   }
   return uses;
-}
-
-// The words of a file line, for a note ("G01 Z-51.4"), without its comment.
-std::string blockText(std::string_view text, int firstLine, int line) {
-  const std::vector<std::string_view> lines = splitLines(text);
-  const int i = line - firstLine;
-  if (i < 0 || i >= static_cast<int>(lines.size())) return {};
-  std::string words(lines[static_cast<std::size_t>(i)].substr(0, lines[static_cast<std::size_t>(i)].find_first_of("(;")));
-  while (!words.empty() && (words.back() == ' ' || words.back() == '\t' || words.back() == '\r')) words.pop_back();
-  return words.size() > 40 ? words.substr(0, 40) : words;
 }
 
 // Right-hand (feeds toward the chuck) or left-hand: by what the run shows.
@@ -580,12 +575,12 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
         e.kind = inside ? ToolKind::ThreadingId : ToolKind::ThreadingOd;
         e.reason = inside ? ToolReason::ThreadingInside : ToolReason::Threading;
         e.line = m.threadLine;
-        e.detail = blockText(gcodeText, gcodeFirstLine, m.threadLine);
+        e.detail = scanner.blockText(m.threadLine);
         use.cycle = e;
       } else if (m.drillLine && m.aboveZero + m.belowZero < 1.0) {  // it only ever feeds on the centre line
         use.drillLine = m.drillLine;
         use.drillDepthMm = m.drillDepth;
-        use.drillCode = blockText(gcodeText, gcodeFirstLine, m.drillLine);
+        use.drillCode = scanner.blockText(m.drillLine);
       }
     }
     // Drilling on centre: a centre drill when shallow, else a drill.
@@ -613,7 +608,7 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
         if (!named || m.outside == 0.0) {
           want->kind = ToolKind::Boring;
           want->reason = ToolReason::Boring;
-          want->detail = blockText(gcodeText, gcodeFirstLine, m.insideLine);
+          want->detail = scanner.blockText(m.insideLine);
           want->line = m.insideLine;
           want->strong = true;
         }
@@ -627,7 +622,6 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
     if (context.fromProgram) {
       // The shop's program decides; the table only breaks ties: a tool of the right
       // kind (and hand, for turning) stays, anything else gives way to the evidence.
-      out.setup.tools.guessed[static_cast<std::size_t>(station - 1)] = true;
       const bool left = moved != motion.end() && leftHandWork(moved->second);
       const std::string& line = setup.tools.bitmap[static_cast<std::size_t>(station - 1)];
       const bool haveLeft = namesLeftHand(line);
@@ -661,7 +655,7 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
       out.offsetNotes.push_back(std::move(d));
     }
   }
-  // A plain program's stations the evidence said nothing of are guesses too.
+  // Every station of a plain program the user did not set is a guess.
   if (context.fromProgram)
     for (const auto& [station, use] : uses)
       if (!overridden.count(station)) out.setup.tools.guessed[static_cast<std::size_t>(station - 1)] = true;

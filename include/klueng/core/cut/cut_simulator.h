@@ -133,8 +133,8 @@ class CutSimulator {
 
  private:
   void cutMove(std::size_t index, double sEnd);
-  // True when the touch is a guessed tool's and is now a warning.
-  bool excuseGuess(const char* code, const machine::Move& m, const Vec2& where);
+  // True when the touch is a guessed tool's: `warning` (W324-W326) is kept, once a station.
+  bool excuseGuess(const char* warning, const machine::Move& m, const Vec2& where);
   void keepCheckpoint();
   // The latest checkpoint at or before t; nullptr when only the bar is.
   const CutCheckpoint* checkpointBefore(double t) const;
