@@ -38,6 +38,8 @@ constexpr const char* kUsage =
     "  --dialect     machine profile: fanuc (Fanuc 0i-TF, default), haas (Haas ST lathe), classic (1999 rules)\n"
     "  --stock       stock for every FILE, before its header: 50x100 (mm), 2.1x4in, 118x80x90 (tube, bore 90)\n"
     "  --units       power-on units before any G20/G21: mm or inch\n"
+    "  --decimal-point whole|increments  a length without a decimal point: X30 = 30 mm (whole) or 0.030 mm\n"
+    "                (increments, a standard Fanuc/Haas); default: the program's numbers, else machine.cfg\n"
     "  --tool N=ID   use library tool ID at station N for this run (repeatable), e.g. --tool 12=parting-3mm\n";
 
 struct CheckOptions {
@@ -49,6 +51,7 @@ struct CheckOptions {
   std::string configDir;
   std::optional<io::JobHeader> stock;            // --stock
   std::optional<gcode::InputUnits> powerOnUnits;  // --units
+  std::optional<bool> calculatorInput;            // --decimal-point
   std::vector<std::string> tools;                 // --tool N=ID, checked once the turret size is known
 };
 
@@ -91,7 +94,7 @@ std::optional<int> parseArgs(const std::vector<std::string>& args, CheckOptions&
       hasValue = true;
     }
     if (arg != "--lang" && arg != "--dialect" && arg != "--config" && arg != "--stock" && arg != "--units" &&
-        arg != "--tool")
+        arg != "--tool" && arg != "--decimal-point")
       return usageError("unknown option '" + arg + "'");
     if (!hasValue) {
       if (i + 1 >= args.size()) return usageError(arg + " needs a value");
@@ -111,6 +114,10 @@ std::optional<int> parseArgs(const std::vector<std::string>& args, CheckOptions&
     } else if (arg == "--units") {
       o.powerOnUnits = parseUnits(value);
       if (!o.powerOnUnits) return usageError(std::string("--units must be ") + kUnitsAllowed + ", not '" + value + "'");
+    } else if (arg == "--decimal-point") {
+      o.calculatorInput = parseDecimalPoint(value);
+      if (!o.calculatorInput)
+        return usageError(std::string("--decimal-point must be ") + kDecimalPointAllowed + ", not '" + value + "'");
     } else if (arg == "--tool") {
       o.tools.push_back(value);
     } else {
@@ -176,9 +183,10 @@ int runCheck(const std::vector<std::string>& args) {
 
   const LoadedConfig config = loadConfig(o.configDir);
   std::string error;
-  const std::optional<machine::JobFileRequest> request =
+  std::optional<machine::JobFileRequest> request =
       jobRequest(config, o.dialect, o.powerOnUnits, o.stock, o.tools, error);
   if (!request) return usageError(error);
+  request->calculatorInput = o.calculatorInput;
 
   std::vector<FileDiagnostic> all = config.diagnostics;
   bool anyError = false;

@@ -82,6 +82,12 @@ std::optional<io::JobHeader> parseStock(std::string_view text) {
   return h;
 }
 
+std::optional<bool> parseDecimalPoint(std::string_view text) {
+  if (text == "whole" || text == "calculator") return true;
+  if (text == "increments") return false;
+  return std::nullopt;
+}
+
 std::optional<gcode::InputUnits> parseUnits(std::string_view text) {
   if (text == "mm") return gcode::InputUnits::Millimetre;
   if (text == "inch") return gcode::InputUnits::Inch;

@@ -33,10 +33,14 @@ std::optional<core::gcode::Dialect> parseDialect(std::string_view text);     // 
 std::optional<core::io::JobHeader> parseStock(std::string_view text);
 // --units mm|inch: the power-on units (before any G20/G21).
 std::optional<core::gcode::InputUnits> parseUnits(std::string_view text);
+// --decimal-point whole|increments: how lengths without a decimal point are
+// read (true = whole units, calculator-type input; false = least increments).
+std::optional<bool> parseDecimalPoint(std::string_view text);
 // What the options accept, for the exit-2 messages.
 inline constexpr const char* kStockAllowed =
     "DxL[xBORE][in] with D, L > 0 and 0 < BORE < D, e.g. 50x100, 2.1x4in, 118x80x90";
 inline constexpr const char* kUnitsAllowed = "mm or inch";
+inline constexpr const char* kDecimalPointAllowed = "whole or increments";
 
 // `FILE:LINE:COL: note I152: message` (`FILE: note ...` without a line), no newline; Thai "หมายเหตุ".
 std::string formatNote(const std::string& file, const core::Diagnostic& d, core::Lang lang);

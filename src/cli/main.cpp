@@ -25,6 +25,8 @@ void printUsage(std::FILE* out) {
       "  --stock  50x100 (mm), 2.1x4in, 118x80x90 (tube: bore 90); without it the file's\n"
       "           header, else the stock inferred from the program (a note says which)\n"
       "  --units  power-on units before any G20/G21: mm or inch\n"
+      "  --decimal-point whole|increments  (check, simulate, print) a length without a decimal point:\n"
+      "           X30 = 30 mm, or 0.030 mm as a standard Fanuc/Haas; default: the program's numbers\n"
       "  --tool N=ID   library tool ID at turret station N for this run (e.g. --tool 12=parting-3mm);\n"
       "                see resources/tools/library/library.cfg and docs/tools.md for the IDs\n",
       out);

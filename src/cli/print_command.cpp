@@ -27,7 +27,7 @@ namespace {
 constexpr const char* kPrintUsage =
     "usage: klueng-cli print FILE --pdf OUT.pdf [--sheet program|drawing|both] [--lang en|th]\n"
     "                             [--dialect fanuc|haas|classic] [--stock DxL[xBORE][in]] [--units mm|inch]\n"
-    "                             [--config DIR] [--tool N=ID]...\n"
+    "                             [--config DIR] [--tool N=ID]... [--decimal-point whole|increments]\n"
     "  --sheet  program (the listing, portrait), drawing (the dimensioned part, landscape) or both (default)\n";
 
 struct PrintOptions {
@@ -39,6 +39,7 @@ struct PrintOptions {
   gcode::Dialect dialect = gcode::Dialect::Fanuc;
   std::optional<io::JobHeader> stock;
   std::optional<gcode::InputUnits> powerOnUnits;
+  std::optional<bool> calculatorInput;
   std::string configDir;
   std::vector<std::string> tools;
 };
@@ -86,6 +87,9 @@ std::optional<PrintOptions> parse(const std::vector<std::string>& args) {
     } else if (a == "--units") {
       o.powerOnUnits = parseUnits(v);
       if (!o.powerOnUnits) return bad(a, v, kUnitsAllowed);
+    } else if (a == "--decimal-point") {
+      o.calculatorInput = parseDecimalPoint(v);
+      if (!o.calculatorInput) return bad(a, v, kDecimalPointAllowed);
     } else if (a == "--config") {
       o.configDir = v;
     } else if (a == "--tool") {
@@ -116,12 +120,13 @@ int runPrint(const std::vector<std::string>& args) {
   for (const auto& fd : config.diagnostics) printDiagnostic(stderr, fd.file, fd.diagnostic, o.lang);
   if (config.unreadable || config.hasErrors()) return 2;
   std::string error;
-  const std::optional<machine::JobFileRequest> request =
+  std::optional<machine::JobFileRequest> request =
       jobRequest(config, o.dialect, o.powerOnUnits, o.stock, o.tools, error);
   if (!request) {
     std::fprintf(stderr, "klueng-cli print: %s\n", error.c_str());
     return 2;
   }
+  request->calculatorInput = o.calculatorInput;
   const machine::JobFile job = machine::loadJobFile(o.file, config.setup, *request, io::shippedToolLibrary());
   for (const Diagnostic& n : job.toolNotes) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
   for (const auto& d : job.diagnostics) printDiagnostic(stderr, job.fileOf(d), d, o.lang);

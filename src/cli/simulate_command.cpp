@@ -59,6 +59,7 @@ struct SimulateOptions {
   CutOutputOptions cut;  // --png --profile --json --resolution (cut_outputs.h)
   std::optional<io::JobHeader> stock;            // --stock
   std::optional<gcode::InputUnits> powerOnUnits;  // --units
+  std::optional<bool> calculatorInput;            // --decimal-point
   std::vector<std::string> tools;  // --tool N=ID, checked once the turret size is known
 };
 
@@ -119,6 +120,11 @@ const std::vector<OptionSpec>& optionSpecs() {
          o.powerOnUnits = parseUnits(v);
          return o.powerOnUnits.has_value();
        }},
+      {"--decimal-point", true,
+       [](SimulateOptions& o, const std::string& v) {
+         o.calculatorInput = parseDecimalPoint(v);
+         return o.calculatorInput.has_value();
+       }},
       {"--tool", true, [](SimulateOptions& o, const std::string& v) { o.tools.push_back(v); return true; }},
       {"--resolution", true,
        [](SimulateOptions& o, const std::string& v) { return parseResolution(v, o.cut.resolution); }},
@@ -134,9 +140,12 @@ constexpr const char* kSimulateUsage =
     "                              [--svg out.svg] [--dxf out.dxf] [--features] [--resolution MM] [--no-stock]\n"
     "                              [--part-check] [--part-tolerance MM] [--compare-compensation none|sharp]\n"
     "                              [--stock DxL[xBORE][in]] [--units mm|inch] [--tool N=ID]...\n"
+    "                              [--decimal-point whole|increments]\n"
     "  --dialect  fanuc (Fanuc 0i-TF, default), haas (Haas ST lathe), classic (1999 rules)\n"
     "  --stock   stock before the file's header: 50x100 (mm), 2.1x4in, 118x80x90 (tube, bore 90)\n"
     "  --units   power-on units before any G20/G21: mm or inch\n"
+    "  --decimal-point  a length without a decimal point: X30 = 30 mm (whole) or 0.030 mm (increments,\n"
+    "                   a standard Fanuc/Haas); default: the program's numbers, else machine.cfg\n"
     "  --tool N=ID   library tool ID at station N for this run, e.g. 12=parting-3mm\n"
     "  --no-persist  do not write macro variables #500-#999 back to macro_variables.cfg (kept in the\n"
     "                --config folder, else in the user's data folder)\n";
@@ -145,6 +154,7 @@ constexpr const char* kSimulateUsage =
 std::string allowedValues(const std::string& option) {
   if (option == "--stock") return std::string("; allowed: ") + kStockAllowed;
   if (option == "--units") return std::string("; allowed: ") + kUnitsAllowed;
+  if (option == "--decimal-point") return std::string("; allowed: ") + kDecimalPointAllowed;
   if (option == "--lang") return "; allowed: en or th";
   if (option == "--dialect") return "; allowed: fanuc, haas or classic";
   if (option == "--resolution" || option == "--part-tolerance") return "; allowed: a number from 0.001 to 5 (mm)";
@@ -212,12 +222,13 @@ int runSimulate(const std::vector<std::string>& args) {
   for (const auto& fd : config.diagnostics) printDiagnostic(fd.file, fd.diagnostic, o.lang);
   if (config.unreadable || config.hasErrors()) return 2;  // the setup, not the program, is wrong
   std::string error;
-  const std::optional<machine::JobFileRequest> request =
+  std::optional<machine::JobFileRequest> request =
       jobRequest(config, o.dialect, o.powerOnUnits, o.stock, o.tools, error);
   if (!request) {
     std::fprintf(stderr, "klueng-cli simulate: %s\n", error.c_str());
     return 2;
   }
+  request->calculatorInput = o.calculatorInput;
   // Read and parse once: tools from the program (library choices, notes say which), the check, the stock.
   const machine::JobFile& job =
       keepUntilExit(machine::loadJobFile(o.file, config.setup, *request, io::shippedToolLibrary()));

@@ -7,6 +7,7 @@
 #include <QObject>
 #include <QString>
 #include <functional>
+#include <optional>
 
 #include "gui/job_tools.h"
 
@@ -25,6 +26,7 @@ class CheckController : public QObject {
     std::vector<core::machine::StationOverride> overrides;
     int stations = 0;  // the highest T station (the dialect's limit, else the turret)
     QString folder;    // subprogram files; empty for an untitled program
+    std::optional<bool> calculatorInput;  // the file's reading of lengths without a point (Job details)
   };
 
   CheckController(QObject* parent, std::function<QString()> text, std::function<Request()> request);

@@ -30,7 +30,7 @@ LoadedProgram Document::load(const QString& path, const core::io::JobHeader& def
     core::io::ProgramFile& f = out.file;
     std::optional<core::machine::StockInference> inferred;
     if (f.plainGcode && !jobDetails) {
-      inferred = core::machine::inferStockFromText(f.gcode, f.gcodeFirstLine, setup, run);
+      inferred = core::machine::inferStockFromText(f.gcode, f.gcodeFirstLine, setup, run, f.header.calculatorInput);
       if (inferred->found) inferred->applyTo(f.header);
     }
     out.stockNotes = core::machine::stockNotes(f.header, inferred ? &*inferred : nullptr, f.gcode, f.gcodeFirstLine);
@@ -49,7 +49,7 @@ bool Document::reinferStock(const QString& gcode, const core::machine::MachineSe
   core::io::JobHeader header = file_.header;
   takeStock(header, core::io::JobHeader{});
   const core::machine::StockInference inferred =
-      core::machine::inferStockFromText(text, file_.gcodeFirstLine, setup, run);
+      core::machine::inferStockFromText(text, file_.gcodeFirstLine, setup, run, file_.header.calculatorInput);
   if (inferred.found) inferred.applyTo(header);
   else header.stockSource = core::io::StockSource::Default;
   stockNotes_ = core::machine::stockNotes(header, &inferred, text, file_.gcodeFirstLine);

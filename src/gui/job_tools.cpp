@@ -14,10 +14,10 @@ namespace machine = core::machine;
 
 JobToolsResult checkWithTools(const QString& text, int firstLine, core::gcode::CheckOptions options,
                               const machine::MachineSetup& setup, const std::vector<machine::StationOverride>& overrides,
-                              int stations, const QString& folder) {
+                              int stations, const QString& folder, std::optional<bool> calculatorInput) {
   core::machine::JobCheck job = machine::checkJob(text.toStdString(), firstLine, std::move(options), setup,
                                                   core::io::shippedToolLibrary(), overrides, stations,
-                                                  folder.toStdString());
+                                                  folder.toStdString(), calculatorInput);
   JobToolsResult result;
   result.diagnostics = std::move(job.diagnostics);
   result.inference = std::move(job.inference);
@@ -60,6 +60,10 @@ void saveToolOverrides(const QString& filePath, const std::vector<machine::Stati
 
 bool sameTools(const machine::MachineSetup& a, const machine::MachineSetup& b) {
   if (a.tools.bitmap != b.tools.bitmap || a.tools.libraryPath != b.tools.libraryPath) return false;
+  // How the program is read and where its tools sit change the run as much as a tool does.
+  if (a.machine.calculatorInput != b.machine.calculatorInput ||
+      a.machine.toolsBeyondCentre != b.machine.toolsBeyondCentre)
+    return false;
   for (std::size_t i = 0; i < a.offsets.offsets.size(); ++i) {
     const auto& x = a.offsets.offsets[i];
     const auto& y = b.offsets.offsets[i];

@@ -8,7 +8,8 @@
 //        parse + inferTools + check (T words against the amended table); runs off the GUI thread
 //   loadToolOverrides(path) / saveToolOverrides(path, list)
 //        the stations the user set for one program file (QSettings "Klueng"/"klueng", per file)
-//   sameTools(a, b)    whether two setups have the same tool table and offsets
+//   sameTools(a, b)    whether two setups have the same tool table, offsets, tool side and
+//                      reading of lengths without a decimal point
 #include <QString>
 #include <optional>
 #include <vector>
@@ -30,7 +31,7 @@ struct JobToolsResult {
 JobToolsResult checkWithTools(const QString& text, int firstLine, core::gcode::CheckOptions options,
                               const core::machine::MachineSetup& setup,
                               const std::vector<core::machine::StationOverride>& overrides, int stations,
-                              const QString& folder = {});
+                              const QString& folder = {}, std::optional<bool> calculatorInput = std::nullopt);
 
 std::vector<core::machine::StationOverride> loadToolOverrides(const QString& filePath);
 void saveToolOverrides(const QString& filePath, const std::vector<core::machine::StationOverride>& overrides);

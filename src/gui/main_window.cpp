@@ -348,6 +348,7 @@ CheckController::Request MainWindow::checkRequest() const {
   r.setup = setup_;
   r.overrides = toolOverrides_;
   r.folder = programFolder();
+  r.calculatorInput = document_->header().calculatorInput;
   return r;
 }
 

@@ -122,6 +122,10 @@ std::optional<core::io::JobHeader> Settings::jobDetailsFor(const QString& path) 
   if (settings_.contains(key("diameter"))) {
     h = readJob(settings_, {});
     h->stockSource = core::io::StockSource::JobDetails;
+    // Lengths without a decimal point, when chosen for this file (never for other files).
+    const QString reading = settings_.value(key("decimalPoint")).toString();
+    if (reading == QStringLiteral("whole")) h->calculatorInput = true;
+    if (reading == QStringLiteral("increments")) h->calculatorInput = false;
   }
   settings_.endGroup();
   return h;
@@ -131,6 +135,10 @@ void Settings::setJobDetailsFor(const QString& path, const core::io::JobHeader& 
   settings_.beginGroup(jobKey(path));
   settings_.setValue(key("path"), QFileInfo(path).absoluteFilePath());
   writeJob(settings_, h);
+  if (h.calculatorInput)
+    settings_.setValue(key("decimalPoint"), *h.calculatorInput ? QStringLiteral("whole") : QStringLiteral("increments"));
+  else
+    settings_.remove(key("decimalPoint"));
   settings_.endGroup();
 }
 

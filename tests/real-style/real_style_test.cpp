@@ -882,3 +882,77 @@ TEST(RealStyleShopTools, Haas_G71ProfileEndsWithARetract) {
 }
 
 }  // namespace
+
+namespace {
+
+// Issue 26 item 6, decimal point input. A production habit: the cycle words
+// without a decimal point (G71 U1250 R50, G76 P021060 Q40 R10 / P0427 Q120),
+// every position with one. Read whole, U1250 is a 1250 in depth of cut; a
+// standard Fanuc reads it in least input increments: 0.1250 in depth, 0.0050
+// in retract, 0.0010 in thread finishing allowance (Fanuc 0i-TF parameter
+// 3401#0 DPI = 0). The program's numbers decide it (note I103).
+TEST(RealStyleDecimalPoint, Fanuc_InchCycleWordsInIncrements) {
+  const Job job{"fanuc-12-inch-bushing-pointless.nc", "fanuc", "--stock 1.75x3.5in", true};
+  RUN_CLEAN(job, r);
+  EXPECT_NE(r.check.text.find(":11:5: note I103: lengths without a decimal point are read in least input increments "
+                              "(0.001 mm, 0.0001 in), as a standard Fanuc or Haas reads them: U1250 on line 11 is "
+                              "0.1250 in"),
+            std::string::npos)
+      << r.check.text;
+  EXPECT_EQ(r.check.text.find("W11"), std::string::npos) << r.check.text;
+  const Profile& p = r.part;
+  // The thread: G76 X1.1647 with the 60 degree tool's apex controlled, so the root is X1.1647,
+  // from Z.25 to Z-1.25 less the R10 pull-out (1.0 lead = 0.0769 in).
+  EXPECT_NEAR(p.minD(-0.9, -0.3), 1.1647, kIn);
+  EXPECT_NEAR(p.d(-1.4), 1.250, kIn);   // Z-1.25 to Z-1.5: G70's Ø1.25, past the thread
+  EXPECT_NEAR(p.d(-2.0), 1.600, kIn);   // X1.6 to Z-2.25
+  EXPECT_NEAR(p.d(-2.5), 1.750, kIn);   // the bar
+  EXPECT_NEAR(p.edge(-2.0, -2.5, 1.7), -2.25, kIn);
+}
+
+// The same file read whole (--decimal-point whole, a calculator-type control):
+// the depth of cut is 1250 in, out of the Fanuc range (E110 at the word), and
+// each word the other reading explains gets W111 with that reading.
+TEST(RealStyleDecimalPoint, Fanuc_ReadWholeTheCycleWordsAreRefused) {
+  const Output out = runCli("check " + quote(kPrograms + "/fanuc-12-inch-bushing-pointless.nc") +
+                            " --dialect fanuc --decimal-point whole --config " + quote(kShipped));
+  EXPECT_EQ(out.exitCode, 1) << out.text;
+  EXPECT_NE(out.text.find(":11:5: error E110: U1250 is out of range"), std::string::npos) << out.text;
+  EXPECT_NE(out.text.find(":11:11: warning W111: R50 has no decimal point and is read as 50 in (calculator-type "
+                          "input); a control with standard decimal point input reads it as 0.0050 in: if that is "
+                          "meant, write R0.0050"),
+            std::string::npos)
+      << out.text;
+  EXPECT_NE(out.text.find(":25:17: warning W111: R10 "), std::string::npos) << out.text;
+  EXPECT_EQ(out.text.find("I103"), std::string::npos) << out.text;
+  const Output bad = runCli("check " + quote(kPrograms + "/fanuc-12-inch-bushing-pointless.nc") +
+                            " --decimal-point 3401 --config " + quote(kShipped));
+  EXPECT_EQ(bad.exitCode, 2) << bad.text;
+  EXPECT_NE(bad.text.find("--decimal-point must be whole or increments, not '3401'"), std::string::npos) << bad.text;
+}
+
+// A Haas CAM post that writes the G71 allowances without a point (U400 W100 =
+// 0.4 and 0.1 mm, Haas setting 162 off) and a hand-edited retract `X60` meant
+// as 60 mm: read in increments it is X0.060, so W110 says to write X60.; the
+// rapid to X0.06 Z5. stays in front of the face and the part is as programmed.
+TEST(RealStyleDecimalPoint, Haas_MetricAllowancesInIncrementsAndAStrayWholeWord) {
+  const Job job{"haas-19-metric-pointless-allowance.nc", "haas", "--stock 36x70", false};
+  RUN_CLEAN(job, r);
+  EXPECT_NE(r.check.text.find(":12:15: note I103: "), std::string::npos) << r.check.text;
+  EXPECT_NE(r.check.text.find("U400 on line 12 is 0.400 mm"), std::string::npos) << r.check.text;
+  EXPECT_NE(r.check.text.find(":24:5: warning W110: X60 has no decimal point: this machine reads a length without "
+                              "one in least input increments, so it is 0.060 mm; write X60. for 60 mm"),
+            std::string::npos)
+      << r.check.text;
+  const Profile& p = r.part;
+  // G70 under G42: every element as programmed; a 0.4 mm allowance read whole
+  // would have been 400 mm and left the bar uncut.
+  EXPECT_NEAR(p.d(-10.0), 20.0, kMm);
+  EXPECT_NEAR(p.d(-27.0), 30.0, kMm);
+  EXPECT_NEAR(p.d(-50.0), 36.0, kMm);
+  EXPECT_NEAR(p.d(-1.0), 18.0, kMm);  // chamfer X16. Z0 -> X20. Z-2., half way
+  EXPECT_NEAR(p.edge(-25.0, -36.0, 33.0), -35.0, kMm);
+  EXPECT_NEAR(p.rightFace(), 0.0, kMm);
+}
+
+}  // namespace

@@ -128,6 +128,10 @@ inline constexpr const char* kToolForTurning = "I408";
 inline constexpr const char* kToolSetForJob = "I409";
 inline constexpr const char* kOffsetFromLibrary = "I410";
 inline constexpr const char* kOffsetReplacedByLibrary = "I411";
+// Which reading of lengths without a decimal point a job got (machine/point_reading.h;
+// texts in messages_gcode.cpp beside W110/W111): {0} the deciding word, {1} its line, {2} its length.
+inline constexpr const char* kLengthsInIncrements = "I103";
+inline constexpr const char* kLengthsWhole = "I104";
 inline constexpr const char* kToolsBeyondCentre = "I412";  // {0} line of the first cut at X < 0  // a row set for the table's tool, in a plain program
 
 // Run-time alarms and notes of the interpreter (machine; texts in messages_machine.cpp)

@@ -180,7 +180,16 @@ constexpr MessageText kMessages[] = {
     {"W109", "{0} is read as {1}: the control skips blanks inside a number; if the digits after the blank are another word, put its letter before them",
      "{0} ถูกอ่านเป็น {1}: เครื่องจะข้ามช่องว่างที่อยู่ในตัวเลข หากตัวเลขหลังช่องว่างเป็นคำสั่งอื่น ให้ใส่อักขระของคำสั่งนั้นไว้ข้างหน้า"},
 
+    {"W110", "{0} has no decimal point: this machine reads a length without one in least input increments, so it is {1}; write {2} for {3}",
+     "{0} ไม่มีจุดทศนิยม: เครื่องนี้อ่านความยาวที่ไม่มีจุดทศนิยมเป็นหน่วยป้อนค่าที่เล็กที่สุด จึงได้ {1} ถ้าต้องการ {3} ให้เขียน {2}"},
+    {"W111", "{0} has no decimal point and is read as {1} (calculator-type input); a control with standard decimal point input reads it as {2}: if that is meant, write {3} or choose that reading in Job details (--decimal-point increments)",
+     "{0} ไม่มีจุดทศนิยมจึงถูกอ่านเป็น {1} (การป้อนค่าแบบเครื่องคิดเลข) เครื่องที่ตั้งการป้อนจุดทศนิยมแบบมาตรฐานจะอ่านเป็น {2} ถ้าต้องการค่านั้น ให้เขียน {3} หรือเลือกการอ่านแบบนั้นในรายละเอียดงาน (--decimal-point increments)"},
+
     // I1xx: notes
+    {"I103", "lengths without a decimal point are read in least input increments (0.001 mm, 0.0001 in), as a standard Fanuc or Haas reads them: {0} on line {1} is {2}; change it in Job details (--decimal-point)",
+     "ความยาวที่ไม่มีจุดทศนิยมอ่านเป็นหน่วยป้อนค่าที่เล็กที่สุด (0.001 มม., 0.0001 นิ้ว) แบบที่เครื่อง Fanuc หรือ Haas ทั่วไปอ่าน: {0} ในบรรทัดที่ {1} คือ {2} เปลี่ยนได้ที่รายละเอียดงาน (--decimal-point)"},
+    {"I104", "lengths without a decimal point are read in whole millimetres or inches (calculator-type input), as the program's numbers show: {0} on line {1} is {2}; change it in Job details (--decimal-point)",
+     "ความยาวที่ไม่มีจุดทศนิยมอ่านเป็นมิลลิเมตรหรือนิ้วเต็มหน่วย (การป้อนค่าแบบเครื่องคิดเลข) ตามที่ตัวเลขในโปรแกรมบอก: {0} ในบรรทัดที่ {1} คือ {2} เปลี่ยนได้ที่รายละเอียดงาน (--decimal-point)"},
     {"I102", "blocks with errors that are {1} forms: {0}; choose the {1} dialect (--dialect {2})",
      "บล็อกที่ผิดพลาด {0} บล็อกเป็นรูปแบบของ {1}: เลือกรูปแบบคำสั่ง {1} (--dialect {2})"},
 };

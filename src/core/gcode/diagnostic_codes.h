@@ -101,6 +101,9 @@ inline constexpr const char* kCornerWordWithoutComma = "W107";     // {0}=the wo
 inline constexpr const char* kCommentToLineEnd = "W108";   // '(' not closed: the comment runs to the line end
                                                            // (E105 in a profile where that is an error)
 inline constexpr const char* kBlanksInNumber = "W109";     // {0}=word as written {1}=as read ("X20 30" = X2030)
+// Decimal point input (decimal_point.h): a word whose other reading is clearly meant.
+inline constexpr const char* kPointlessLengthInIncrements = "W110";  // {0}=word {1}=as read {2}=word with a point {3}=whole
+inline constexpr const char* kPointlessLengthWhole = "W111";  // {0}=word {1}=as read {2}=in increments {3}=that word
 
 // I1xx notes
 inline constexpr const char* kDialectFits = "I102";  // {0}=blocks {1}=dialect name {2}=dialect id
@@ -187,6 +190,8 @@ inline constexpr const char* kAll[] = {
     kCommentToLineEnd,
     kBlanksInNumber,
     kDialectFits,
+    kPointlessLengthInIncrements,
+    kPointlessLengthWhole,
 };
 
 // Beyond these, a hostile input only repeats itself; the report ends with

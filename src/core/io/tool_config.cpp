@@ -297,7 +297,7 @@ std::string formatOffsetTable(const OffsetTable& t) {
 
 namespace {
 
-enum class Rule { Any, Positive, NonNegative, Stations, Count };
+enum class Rule { Any, Positive, NonNegative, Stations, Count, Flag };
 
 struct MachineKey {
   const char* name;
@@ -305,6 +305,7 @@ struct MachineKey {
   Rule rule;
   const char* comment;
   int MachineConfig::*count = nullptr;
+  bool MachineConfig::*flag = nullptr;  // Rule::Flag: 0 or 1
 };
 
 // Values no lathe has (rapid_x = 1e-300, max_spindle_rpm = 1e308 once passed): F148.
@@ -353,6 +354,11 @@ constexpr MachineKey kMachineKeys[] = {
      &MachineConfig::maxBlocks},
     {"max_run_time", &MachineConfig::maxRunTime, Rule::Positive,
      "... or after this much simulated machining time, seconds"},
+    {"calculator_input", nullptr, Rule::Flag,
+     "a length without a decimal point: 1 = whole mm or inches (X30 = 30 mm, calculator-type input);\n"
+     "# 0 = least input increments (X30 = 0.030 mm, 0.0030 in), as a standard Fanuc (parameter 3401#0)\n"
+     "# or Haas (setting 162 off); a program without Klueng's header is read as its own numbers show",
+     nullptr, &MachineConfig::calculatorInput},
 };
 
 }  // namespace
@@ -411,6 +417,11 @@ ReadResult<MachineConfig> parseMachineConfig(std::string_view text, const std::s
                                      {fileName, std::string(key), std::string(value)}));
       continue;
     }
+    if (entry->rule == Rule::Flag && *number != 0.0 && *number != 1.0) {
+      diags.push_back(makeDiagnostic(Severity::Error, codes::kParameterNotWhole, lineNumber, valueColumn, utf8Length(value),
+                                     {fileName, std::string(key), std::string(value), "0", "1"}));
+      continue;
+    }
     const bool stations = entry->rule == Rule::Stations;
     if ((stations || entry->rule == Rule::Count) &&
         (*number != std::floor(*number) || *number < (stations ? kMinTurretStations : 1) ||
@@ -435,6 +446,7 @@ ReadResult<MachineConfig> parseMachineConfig(std::string_view text, const std::s
                                      utf8Length(key), {fileName, std::string(key)}));
     lineOfKey[entry->name] = lineNumber;
     if (entry->field) config.*(entry->field) = *number;
+    else if (entry->flag) config.*(entry->flag) = *number != 0.0;
     else config.*(entry->count) = static_cast<int>(*number);
   }
 
@@ -485,7 +497,9 @@ std::string formatMachineConfig(const MachineConfig& m) {
   for (const MachineKey& k : kMachineKeys) {
     if (k.comment) out += fmt::format("\n# {}\n", k.comment);
     out += fmt::format("{} = {}\n", k.name,
-                       k.field ? detail::formatNumber(m.*(k.field)) : std::to_string(m.*(k.count)));
+                       k.field  ? detail::formatNumber(m.*(k.field))
+                       : k.flag ? std::string(m.*(k.flag) ? "1" : "0")
+                                : std::to_string(m.*(k.count)));
   }
   return out;
 }

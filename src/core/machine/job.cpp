@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "klueng/core/gcode/checker.h"
+#include "klueng/core/gcode/decimal_point.h"
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/machine/subprogram_files.h"
 #include "klueng/core/diagnostic_codes.h"
@@ -28,6 +29,10 @@ CompiledJob compileJob(const io::ProgramFile& file, const MachineSetup& setup, c
   job.program = gcode::parse(file.gcode, file.gcodeFirstLine);
   if (!options.folder.empty())
     job.diagnostics = attachSubprogramFiles(job.program, options.folder, options.run.dialect);
+  // Lengths without a decimal point as the setup reads them (decided by the check: point_reading.h).
+  if (!setup.machine.calculatorInput)
+    gcode::readLengthsInIncrements(
+        job.program, options.run.powerOnUnits.value_or(gcode::machineProfile(options.run.dialect).powerOnUnits));
   gcode::CheckOptions check;
   check.dialect = options.run.dialect;
   check.powerOnUnits = options.run.powerOnUnits;

@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "klueng/core/gcode/parser.h"
+#include "klueng/core/machine/point_reading.h"
 #include "klueng/core/machine/job.h"
 #include "klueng/core/gcode/program_index.h"
 #include "klueng/core/machine/subprogram_files.h"
@@ -38,25 +39,32 @@ SourceRange callInto(const gcode::Program& program, int file) {
 
 JobCheck checkJob(std::string_view gcode, int firstLine, gcode::CheckOptions options, const MachineSetup& setup,
                   const io::ToolLibrary& library, const std::vector<StationOverride>& overrides, int stations,
-                  const std::string& folder) {
+                  const std::string& folder, std::optional<bool> chosenCalculatorInput) {
   JobCheck result;
   gcode::Program program = gcode::parse(gcode, firstLine);
   std::vector<Diagnostic> fileDiagnostics;
   if (!folder.empty()) fileDiagnostics = attachSubprogramFiles(program, folder, options.dialect);
+  // G-code from the first line on: a plain program, without Klueng's job header.
+  const bool plain = firstLine <= 1;
+  PointReading reading =
+      readDecimalPoints(program, plain, chosenCalculatorInput, setup.machine.calculatorInput,
+                        options.powerOnUnits.value_or(gcode::machineProfile(options.dialect).powerOnUnits));
+  MachineSetup readSetup = setup;
+  readSetup.machine.calculatorInput = reading.calculatorInput;
   // The program's tools decide which T words have a tool (one meaning: job.h);
   // they are worked out while the rest of the check runs.
-  // G-code from the first line on: a plain program, without Klueng's job header.
   InferenceContext context;
-  context.fromProgram = firstLine <= 1;
+  context.fromProgram = plain;
   context.run.dialect = options.dialect;
   context.run.powerOnUnits = options.powerOnUnits;
   detail::CheckedWithTools checked = detail::checkWhileInferring(program, options, [&] {
-    return inferTools(program, gcode, firstLine, setup, library, overrides, stations, context);
+    return inferTools(program, gcode, firstLine, readSetup, library, overrides, stations, context);
   });
   result.inference = std::move(checked.inference);
   if (options.toolsWithBitmap) options.toolsWithBitmap = toolsWithBitmap(result.inference.setup);
   result.diagnostics = std::move(checked.diagnostics);
   result.diagnostics.insert(result.diagnostics.end(), fileDiagnostics.begin(), fileDiagnostics.end());
+  result.diagnostics.insert(result.diagnostics.end(), reading.diagnostics.begin(), reading.diagnostics.end());
   // Errors in subprogram files: one E412 per file, on the call that reaches it.
   std::vector<Diagnostic> own;
   std::vector<int> reported;
@@ -86,8 +94,15 @@ JobCheck checkJob(std::string_view gcode, int firstLine, gcode::CheckOptions opt
 }
 
 StockInference inferStockFromText(std::string_view gcode, int firstLine, const MachineSetup& setup,
-                                  const RunOptions& options) {
-  return inferStock(gcode::parse(gcode, firstLine), setup, options);
+                                  const RunOptions& options, std::optional<bool> chosenCalculatorInput) {
+  gcode::Program program = gcode::parse(gcode, firstLine);
+  const PointReading reading =
+      readDecimalPoints(program, firstLine <= 1, chosenCalculatorInput, setup.machine.calculatorInput,
+                        options.powerOnUnits.value_or(gcode::machineProfile(options.dialect).powerOnUnits));
+  if (reading.calculatorInput == setup.machine.calculatorInput) return inferStock(program, setup, options);
+  MachineSetup readSetup = setup;
+  readSetup.machine.calculatorInput = reading.calculatorInput;
+  return inferStock(program, readSetup, options);
 }
 
 }  // namespace klueng::core::machine

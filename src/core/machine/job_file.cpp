@@ -10,6 +10,7 @@
 #include "klueng/core/gcode/dialect_fit.h"
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/machine/job.h"
+#include "klueng/core/machine/point_reading.h"
 #include "klueng/core/machine/setup_files.h"
 #include "klueng/core/machine/stock_inference.h"
 #include "klueng/core/machine/subprogram_files.h"
@@ -60,6 +61,15 @@ JobFile loadJobFile(const std::string& path, const MachineSetup& setup, const Jo
   job.unreadable = std::any_of(job.diagnostics.begin(), job.diagnostics.end(),
                                [](const Diagnostic& d) { return d.range.file == 0 && isUnreadable(d); });
 
+  // Lengths without a decimal point, read as the user, the program or the machine says.
+  MachineSetup readSetup = setup;
+  PointReading reading = readDecimalPoints(
+      program, file.plainGcode, request.calculatorInput ? request.calculatorInput : file.header.calculatorInput,
+      setup.machine.calculatorInput,
+      request.run.powerOnUnits.value_or(gcode::machineProfile(request.run.dialect).powerOnUnits));
+  readSetup.machine.calculatorInput = reading.calculatorInput;
+  job.setup = readSetup;
+
   std::shared_ptr<const Timeline> recorded;
   gcode::CheckOptions check;
   check.dialect = request.run.dialect;
@@ -74,8 +84,8 @@ JobFile loadJobFile(const std::string& path, const MachineSetup& setup, const Jo
     context.fromProgram = file.plainGcode;
     context.run = request.run;
     detail::CheckedWithTools checked = detail::checkWhileInferring(program, check, [&] {
-      return inferTools(program, file.gcode, file.gcodeFirstLine, setup, library, request.overrides, request.stations,
-                        context);
+      return inferTools(program, file.gcode, file.gcodeFirstLine, readSetup, library, request.overrides,
+                        request.stations, context);
     });
     job.setup = std::move(checked.inference.setup);
     job.toolNotes = checked.inference.notes();
@@ -85,6 +95,7 @@ JobFile loadJobFile(const std::string& path, const MachineSetup& setup, const Jo
   } else {
     found = gcode::check(program, check);
   }
+  found.insert(found.end(), reading.diagnostics.begin(), reading.diagnostics.end());
   // Say once which dialect accepts a program this one refuses (I102).
   if (auto fit = gcode::suggestDialect(program, check, found)) found.push_back(fit->note);
   job.diagnostics.insert(job.diagnostics.end(), std::make_move_iterator(found.begin()),

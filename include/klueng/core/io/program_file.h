@@ -1,5 +1,6 @@
 #pragma once
 // The program file (SPEC 2): six header lines then G-code, or a plain G-code file.
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -31,6 +32,11 @@ struct JobHeader {
   // line 4 after the diameter: `1118x90` = 118 mm tube with a 90 mm bore.
   double bore = 0.0;
   StockSource stockSource = StockSource::Default;
+  // How this file's lengths without a decimal point are read, when the user
+  // chose it for the file (Job details; true = whole units, false = least
+  // input increments); unset: the program's numbers or the machine decide
+  // (machine/point_reading.h). Not part of the 6-line header.
+  std::optional<bool> calculatorInput;
   double diameterMm() const { return diameterUnit == LengthUnit::Inch ? diameter * 25.4 : diameter; }
   double lengthMm() const { return lengthUnit == LengthUnit::Inch ? length * 25.4 : length; }
   double boreMm() const { return diameterUnit == LengthUnit::Inch ? bore * 25.4 : bore; }

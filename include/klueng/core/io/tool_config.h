@@ -92,6 +92,12 @@ struct MachineConfig {
   // posts, many hobby and Russian lathes): the cut mirrors them onto the front,
   // where the same bar is cut the same way (a plain program's run decides it).
   bool toolsBeyondCentre = false;
+  // A length written without a decimal point (X30, G71 U1250): true = whole mm
+  // or inches (calculator-type input, Fanuc parameter 3401#0 DPI = 1); false =
+  // least input increments (X30 = 0.030 mm), as a standard Fanuc or Haas reads
+  // it (gcode/decimal_point.h). A plain program's numbers decide it for that
+  // program (machine/job_file.h); this setting breaks ties.
+  bool calculatorInput = true;
   // A program that loops without end stops with an alarm (issue 9): after this
   // many blocks run again by a loop, a jump or a call (max_blocks), or after
   // this much simulated machining time in seconds (max_run_time).

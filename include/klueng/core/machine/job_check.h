@@ -29,12 +29,17 @@ struct JobCheck {
 // (machine/subprogram_files.h; empty = none). The editor shows one file, so an
 // error inside a subprogram file is reported once, as E412 on the call that
 // reaches that file.
+// `chosenCalculatorInput`: the user's reading of lengths without a decimal
+// point for this file (io::JobHeader::calculatorInput); the inference's setup
+// carries the reading used (machine.calculatorInput; machine/point_reading.h).
 JobCheck checkJob(std::string_view gcode, int firstLine, gcode::CheckOptions options, const MachineSetup& setup,
                   const io::ToolLibrary& library, const std::vector<StationOverride>& overrides, int stations,
-                  const std::string& folder = {});
+                  const std::string& folder = {}, std::optional<bool> chosenCalculatorInput = std::nullopt);
 
-// inferStock on G-code text (parsed here).
+// inferStock on G-code text, parsed here and read as checkJob reads it
+// (lengths without a decimal point: point_reading.h, `chosenCalculatorInput`
+// being the file's own choice).
 StockInference inferStockFromText(std::string_view gcode, int firstLine, const MachineSetup& setup,
-                                  const RunOptions& options);
+                                  const RunOptions& options, std::optional<bool> chosenCalculatorInput = std::nullopt);
 
 }  // namespace klueng::core::machine

@@ -23,6 +23,9 @@ struct JobFileRequest {
   io::JobHeader defaultsForPlain;          // text fields of a file without a header
   std::optional<io::JobHeader> stock;      // a stock given for this run (--stock): wins over the file's
   std::vector<StationOverride> overrides;  // stations set by the user (--tool)
+  // Lengths without a decimal point (--decimal-point): wins over the file's
+  // own choice, its numbers and the machine (machine/point_reading.h).
+  std::optional<bool> calculatorInput;
   int stations = 0;                        // highest T station (the dialect's limit, else the turret)
   // False when no tool table was read: no library choices, and T words are not checked.
   bool toolTable = true;
@@ -32,7 +35,8 @@ struct JobFile {
   std::string path;
   std::optional<io::ProgramFile> file;    // the header holds the resolved stock
   std::optional<gcode::Program> program;  // subprogram files appended (Program::files)
-  MachineSetup setup;                     // the setup with the program's tools
+  MachineSetup setup;                     // the setup with the program's tools and its
+                                          // reading of lengths without a point (machine.calculatorInput)
   std::vector<Diagnostic> diagnostics;    // file, subprogram files and checker; sorted by file, line, column
   std::vector<Diagnostic> toolNotes;      // I401-I410: which library tool each station got
   std::vector<Diagnostic> stockNotes;     // I150-I157: where the stock came from
