@@ -40,7 +40,9 @@ QString ExplainBar::explainLine(int fileLine) const {
       if (s.file == 0 && s.line == fileLine) after = &s;
     }
   }
-  return QString::fromStdString(core::machine::explainLineText(text, fileLine, after, editor_->dialect(), Language::coreLang()));
+  return QString::fromStdString(core::machine::explainLineText(text, fileLine, after, editor_->dialect(),
+                                                               Language::coreLang(),
+                                                               !runner_->machineSetup().machine.calculatorInput));
 }
 
 void ExplainBar::refresh() {
@@ -58,7 +60,8 @@ void ExplainBar::refresh() {
   // The arrow's block, with the state it leaves (the whole run is known ahead).
   const QTextBlock b = editor_->document()->findBlockByNumber(editor_->editorLineFromFileLine(line));
   std::string what = core::machine::explainLineText(b.text().toStdString(), line, &t->snapshots[static_cast<std::size_t>(k)],
-                                                    editor_->dialect(), Language::coreLang());
+                                                    editor_->dialect(), Language::coreLang(),
+                                                    !runner_->machineSetup().machine.calculatorInput);
   if (what.empty()) {
     hide();
     return;

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "klueng/core/gcode/decimal_point.h"
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/gcode/word_format.h"
 
@@ -316,9 +317,14 @@ std::string explainBlock(const gcode::Block& block, const StateSnapshot& after, 
 }
 
 std::string explainLineText(std::string_view lineText, int fileLine, const StateSnapshot* after, gcode::Dialect dialect,
-                            Lang lang) {
-  const gcode::Program program = gcode::parse(lineText, fileLine);
+                            Lang lang, bool lengthsInIncrements) {
+  gcode::Program program = gcode::parse(lineText, fileLine);
   if (program.blocks.empty()) return {};
+  // The units in force where it ran; unknown without a run: the dialect's power-on units.
+  const gcode::InputUnits units = after ? (after->modal.units == Units::Inch ? gcode::InputUnits::Inch
+                                                                             : gcode::InputUnits::Millimetre)
+                                        : gcode::machineProfile(dialect).powerOnUnits;
+  if (lengthsInIncrements) gcode::readLengthsInIncrements(program, units);
   return Explainer(program.blocks.front(), after, dialect, lang, lineText).run();
 }
 

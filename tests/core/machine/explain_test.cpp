@@ -157,6 +157,18 @@ TEST(Explain, ALineOfTextAsTheEditorHoldsIt) {
   EXPECT_EQ(explainLineText("G01 X30. Z-20. F0.2", 6, &r.after(6), gcode::Dialect::Fanuc, Lang::En), r.explain(6, Lang::En));
 }
 
+// Issue 26 item 6: a job that reads lengths without a point in least input
+// increments says the lengths it will cut, not the digits as written.
+TEST(Explain, LengthsInIncrementsAreSaidAsTheyAreRead) {
+  const std::string whole = explainLineText("G71 U1500 R500", 12, nullptr, gcode::Dialect::Fanuc, Lang::En);
+  EXPECT_NE(whole.find("depth of cut 1500 mm per pass, retract 500 mm"), std::string::npos) << whole;
+  const std::string increments =
+      explainLineText("G71 U1500 R500", 12, nullptr, gcode::Dialect::Fanuc, Lang::En, true);
+  EXPECT_NE(increments.find("depth of cut 1.5 mm per pass, retract 0.5 mm"), std::string::npos) << increments;
+  EXPECT_EQ(explainLineText("G01 X30000 Z-20. F0.2", 9, nullptr, gcode::Dialect::Fanuc, Lang::En, true),
+            "G01 X30000 Z-20. F0.2: cut in a straight line to Ø30 at Z-20, feed F0.2");
+}
+
 TEST(Explain, EveryCodeOfTheTableHasASentenceInBothLanguages) {
   int rows = 0;
   for (const gcode::CodeInfo& row : gcode::codeTable())

@@ -32,9 +32,11 @@ std::string explainPass(const Timeline& timeline, int moveIndex, Lang lang);
 
 // One line of program text as the editor holds it: parsed here (the GUI parses
 // no G-code), explained with the state `after` it ran, or from its words alone
-// when `after` is null. Empty when the line holds no block.
+// when `after` is null. Empty when the line holds no block. `lengthsInIncrements`:
+// the job reads lengths without a decimal point in least input increments
+// (machine.calculatorInput false; point_reading.h), so `G71 U1250` is said as 1.25.
 std::string explainLineText(std::string_view lineText, int fileLine, const StateSnapshot* after, gcode::Dialect dialect,
-                            Lang lang);
+                            Lang lang, bool lengthsInIncrements = false);
 
 // The same without a run: what the words alone say (no rpm, feed mode unknown).
 std::string explainWords(const gcode::Block& block, gcode::Dialect dialect, Lang lang, std::string_view statementText = {});
