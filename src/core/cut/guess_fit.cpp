@@ -144,10 +144,22 @@ GuessFit fitGuessedTools(const machine::Timeline& timeline, const io::JobHeader&
                          const CutOptions& options) {
   GuessFit out;
   out.setup = setup;
-  const auto run = [&](const machine::MachineSetup& s) {
+  // A whole cut; with giveUpOn, a trial that stops as soon as that station warns (when a
+  // warning is no better than what the station already has, the rest of the run cannot help).
+  const auto run = [&](const machine::MachineSetup& s, int giveUpOn = 0) {
     auto sim = std::make_unique<CutSimulator>(timeline, CutSetup::from(header, s), options);
-    sim->runToEnd();
     ++out.runs;
+    if (giveUpOn > 0) {
+      const std::string station = fmt::format("{:02}", giveUpOn);
+      std::size_t seen = 0;
+      for (const machine::Move& m : timeline.moves) {
+        sim->advanceTo(m.tEnd);
+        if (sim->alarm()) return sim;
+        for (; seen < sim->warnings().size(); ++seen)
+          if (!sim->warnings()[seen].args.empty() && sim->warnings()[seen].args[0] == station) return sim;
+      }
+    }
+    sim->runToEnd();
     return sim;
   };
   out.cut = run(out.setup);
@@ -169,7 +181,7 @@ GuessFit fitGuessedTools(const machine::Timeline& timeline, const io::JobHeader&
       machine::MachineSetup trial = out.setup;
       trial.tools.setLibraryTool(touch.station, candidate->id, library.bitmapPath(*candidate), candidate->pixelsPerMm);
       trial.tools.guessed[static_cast<std::size_t>(touch.station - 1)] = true;  // still Klueng's guess
-      std::unique_ptr<CutSimulator> sim = run(trial);
+      std::unique_ptr<CutSimulator> sim = run(trial, bestSeverity <= 1 ? touch.station : 0);
       const int severity = severityFor(touchesOf(*sim, timeline, trial.tools), touch.station);
       if (severity >= bestSeverity) continue;  // no better than what the station has
       bestSeverity = severity;
