@@ -327,13 +327,20 @@ def lib_grooving():
     return width, height, [(BLACK, shank), (BLACK, blade), (BLACK, gusset), (GOLD, insert)]
 
 
-def lib_boring_bar():
-    """16 mm bar, 80-degree insert with the corner top-left (tip 2), 95-degree approach."""
-    width, height = 120.0, 22.0
+def lib_boring_bar(bar_mm=16.0):
+    """Boring bar of bar_mm, 80-degree insert with the corner top-left (tip 2), 95-degree
+    approach. The 16 mm bar is the drawing; a slimmer bar is the same drawing scaled about
+    the insert's corner (a smaller insert on a smaller head), its bar as long."""
+    k = bar_mm / 16.0
     tip = (2.0, 2.0)
-    insert = rhombus(tip, -85.0, -5.0, 9.6)
-    bar = rect(8.0, 5.0, 120.0, 21.0)
-    head = [(3.6, 12.0), (3.6, 5.0), (14.0, 5.0), (14.0, 21.0), (8.0, 21.0), (3.6, 14.0)]
+
+    def s(p):
+        return (tip[0] + (p[0] - tip[0]) * k, tip[1] + (p[1] - tip[1]) * k)
+
+    width, height = 120.0, math.ceil(2.0 + 20.0 * k)
+    insert = rhombus(tip, -85.0, -5.0, 9.6 * k)
+    bar = rect(s((8.0, 5.0))[0], s((8.0, 5.0))[1], 120.0, s((8.0, 21.0))[1])
+    head = [s(p) for p in [(3.6, 12.0), (3.6, 5.0), (14.0, 5.0), (14.0, 21.0), (8.0, 21.0), (3.6, 14.0)]]
     return width, height, [(BLACK, bar), (BLACK, head), (GOLD, insert)]
 
 
@@ -361,6 +368,8 @@ LIBRARY = [
     ("drill-25mm.png", lambda: lib_drill(25.0)),
     ("drill-25.4mm.png", lambda: lib_drill(25.4)),
     ("boring-bar-16.png", lib_boring_bar),
+    # A slimmer bar for small bores (issue 26: a guessed bar that touches is tried slimmer).
+    ("boring-bar-10.png", lambda: lib_boring_bar(10.0)),
 ]
 
 

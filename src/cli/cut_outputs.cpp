@@ -8,6 +8,7 @@
 
 #include "klueng/core/cut/cut_simulator.h"
 #include "klueng/core/cut/finished_part.h"
+#include "klueng/core/cut/guess_fit.h"
 #include "klueng/core/cut/part_features.h"
 #include "png_writer.h"
 #include "render/section_picture.h"
@@ -54,8 +55,11 @@ CutOutcome runCut(const std::string& file, const io::JobHeader& header, const ma
   cut::CutOptions cutOptions;
   cutOptions.resolution = options.resolution;
   cutOptions.checkpointBudgetBytes = 0;  // one run forward: no way back to keep stock copies for
-  cut::CutSimulator sim(timeline, cut::CutSetup::from(header, setup), cutOptions);
-  sim.runToEnd();
+  // A guessed tool that touches gives way to another of its kind that fits (issue 26).
+  cut::GuessFit fit = cut::fitGuessedTools(timeline, header, setup, io::shippedToolLibrary(), cutOptions);
+  cut::CutSimulator& sim = *fit.cut;
+  outcome.setup = fit.setup;
+  outcome.guessNotes = fit.notes;
   outcome.alarm = sim.alarm();
   outcome.warnings = sim.warnings();
   outcome.toolErrors = sim.toolDiagnostics();

@@ -32,6 +32,8 @@ struct CutOutcome {
   std::optional<core::Diagnostic> alarm;     // the cut alarm (A3xx) that stopped the run
   std::vector<core::Diagnostic> toolErrors;  // bitmaps that could not be loaded
   std::vector<core::Diagnostic> warnings;    // a guessed tool's holder touching (W324/W325)
+  std::vector<core::Diagnostic> guessNotes;  // a guessed tool replaced by another that fits (I413/I414)
+  std::optional<core::machine::MachineSetup> setup;  // the tools the cut used (set when it ran)
   bool written = true;                       // false: an output file could not be written (message printed)
 };
 

@@ -274,21 +274,24 @@ int runSimulate(const std::vector<std::string>& args) {
   CutOutputOptions cutOptions = o.cut;
   cutOptions.lang = o.lang;
   const CutOutcome cut = o.cut.enabled ? runCut(o.file, programFile.header, setup, timeline, cutOptions) : CutOutcome{};
+  for (const Diagnostic& n : cut.guessNotes) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
   for (const Diagnostic& w : cut.warnings) printDiagnostic(job.fileOf(w), w, o.lang);
+  // The part check and the comparison cut with the tools the run used.
+  const machine::MachineSetup& cutSetup = cut.setup ? *cut.setup : setup;
   if (o.cycleTime) std::printf("%.4f\n", timeline.cycleTime());
   if (o.partCheck && o.cut.enabled) {
     // The described part against the real cut: gouges and leftovers as warnings on their blocks.
     cut::PartCheckOptions check;
     check.resolution = o.cut.resolution;
     check.leftoverTolerance = o.partTolerance;
-    const cut::PartCheck result = cut::checkPart(timeline, cut::CutSetup::from(programFile.header, setup), check);
+    const cut::PartCheck result = cut::checkPart(timeline, cut::CutSetup::from(programFile.header, cutSetup), check);
     for (const Diagnostic& d : cut::partCheckDiagnostics(result)) printDiagnostic(job.fileOf(d), d, o.lang);
   }
   if (o.compareCompensation && o.cut.enabled) {
     // What G41/G42 change: each difference as a note on the block that cut the surface.
     const cut::CompareWith with = o.compareSharp ? cut::CompareWith::SharpNose : cut::CompareWith::NoCompensation;
     const cut::CompComparison c =
-        cut::compareCompensation(program, setup, runOptions, cut::CutSetup::from(programFile.header, setup), with);
+        cut::compareCompensation(program, cutSetup, runOptions, cut::CutSetup::from(programFile.header, cutSetup), with);
     for (const cut::CompDifference& d : c.differences)
       std::fprintf(stderr, "%s:%d:1: %s: %s\n", job.fileOf(Diagnostic{Severity::Note, "", {d.line, 1, 0, d.file}, {}}).c_str(),
                    d.line, std::string(severityName(Severity::Note, o.lang)).c_str(),

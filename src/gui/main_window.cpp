@@ -447,8 +447,11 @@ void MainWindow::onRunStateChanged(RunState state) {
     bool added = false;
     std::vector<core::Diagnostic> found = t.flow.notices;
     // A guessed tool's holder touching the stock or chuck (W324/W325): the run went on, the list says so.
-    if (const core::cut::CutSimulator* cut = runner_->isBusy() ? nullptr : runner_->cutSimulator())
+    // A guess replaced by another of its kind that fits (I413/I414), on the block where the first touched.
+    if (const core::cut::CutSimulator* cut = runner_->isBusy() ? nullptr : runner_->cutSimulator()) {
+      found.insert(found.end(), runner_->guessNotes().begin(), runner_->guessNotes().end());
       found.insert(found.end(), cut->warnings().begin(), cut->warnings().end());
+    }
     for (const core::Diagnostic& n : found) {
       if (n.range.file != 0 || (state == RunState::Paused && n.range.line > upTo)) continue;
       const bool seen = std::any_of(runDiagnostics_.begin(), runDiagnostics_.end(), [&n](const core::Diagnostic& d) {

@@ -8,8 +8,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "klueng/core/cut/guess_fit.h"
 #include "klueng/core/gcode/checker.h"
 #include "klueng/core/gcode/parser.h"
+#include "klueng/core/io/tool_library.h"
 #include "klueng/core/machine/flow_view.h"
 #include "klueng/core/machine/job.h"
 #include "klueng/core/machine/subprogram_files.h"
@@ -67,6 +69,8 @@ void RunController::setProgramFolder(const QString& folder) {
 
 void RunController::setMachineSetup(const machine::MachineSetup& setup) {
   setup_ = setup;
+  cutSetup_ = setup;  // until the next run fits its guesses
+  guessNotes_.clear();
   invalidate();
 }
 
@@ -279,6 +283,16 @@ void RunController::prepareAndThen(Pending what) {
       return result;
     }
     result->timeline = std::make_shared<machine::Timeline>(std::move(*compiled.timeline));
+    // A guessed tool that touches gives way to another of its kind that fits: one whole cut
+    // here (more only when a guess touched), so the run draws the tool that fits.
+    if (std::any_of(setup.tools.guessed.begin(), setup.tools.guessed.end(), [](bool g) { return g; })) {
+      core::cut::CutOptions cutOptions;
+      cutOptions.checkpointBudgetBytes = 0;  // only its verdict is kept
+      core::cut::GuessFit fit = core::cut::fitGuessedTools(*result->timeline, file.header, setup,
+                                                           core::io::shippedToolLibrary(), cutOptions);
+      if (!fit.notes.empty()) result->fitted = std::move(fit.setup);
+      result->guessNotes = std::move(fit.notes);
+    }
     return result;
   }));
 }
@@ -300,7 +314,9 @@ void RunController::onPrepared() {
   timeline_ = result->timeline;
   toolTimes_ = timeline_ ? timeline_->timeByTool() : std::vector<core::machine::ToolTime>{};
   files_ = result->files;
-  cut_ = std::make_unique<core::cut::CutSimulator>(*timeline_, core::cut::CutSetup::from(file_.header, setup_));
+  cutSetup_ = result->fitted ? *result->fitted : setup_;
+  guessNotes_ = result->guessNotes;
+  cut_ = std::make_unique<core::cut::CutSimulator>(*timeline_, core::cut::CutSetup::from(file_.header, cutSetup_));
   stale_ = false;
   resetPlayback();
   startPending(what);

@@ -90,6 +90,10 @@ class RunController : public QObject {
   int currentFile() const { return currentFile_; }
   void setMachineSetup(const core::machine::MachineSetup& setup);
   const core::machine::MachineSetup& machineSetup() const { return setup_; }
+  // The tools the run cuts with: machineSetup() with a guessed tool that touched replaced
+  // by another of its kind that fits, and the notes saying which (cut/guess_fit.h).
+  const core::machine::MachineSetup& cutSetup() const { return cutSetup_; }
+  const std::vector<core::Diagnostic>& guessNotes() const { return guessNotes_; }
   void setDialect(core::gcode::Dialect dialect);
   // Units before any G20/G21; nullopt = the dialect's (Haas: inch).
   void setPowerOnUnits(std::optional<core::gcode::InputUnits> units);
@@ -157,6 +161,9 @@ class RunController : public QObject {
     std::shared_ptr<core::machine::Timeline> timeline;
     std::vector<std::string> files;        // Program::files
     QList<core::Diagnostic> errors;
+    // Guessed tools that touched, replaced by others of their kind that fit (issue 26).
+    std::optional<core::machine::MachineSetup> fitted;
+    std::vector<core::Diagnostic> guessNotes;  // I413/I414
   };
 
   void prepareAndThen(Pending what);
@@ -181,6 +188,8 @@ class RunController : public QObject {
   std::vector<std::string> files_;   // Program::files of the prepared run
   Pending stepKind_ = Pending::Step;
   core::machine::MachineSetup setup_;
+  core::machine::MachineSetup cutSetup_;          // setup_ with the replaced guesses: what the cut uses
+  std::vector<core::Diagnostic> guessNotes_;      // which guesses were replaced (I413/I414)
   core::machine::RunOptions options_;
   QSet<int> breakpoints_;
   double speed_ = 1.0;

@@ -178,7 +178,8 @@ class SetupStripTest : public QObject {
   }
 
   // A guessed tool's holder touching the bar (a groove 10 mm deep with the 3 mm
-  // blade guessed for T09): the run ends, and the list says W324 on its line.
+  // grooving blade guessed for T09): the parting blade, as wide and longer, is
+  // cut with instead, and the list says so (I413) on its line (issue 26 item 4).
   void guessedToolsHolderIsAWarningInTheList() {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("deep.nc"));
@@ -194,10 +195,11 @@ class SetupStripTest : public QObject {
     w.action(QStringLiteral("actionGo"))->trigger();
     QTRY_COMPARE_WITH_TIMEOUT(w.runController()->state(), RunState::Finished, 20000);
     const auto& list = w.diagnosticsPanel()->diagnostics();
-    const auto it = std::find_if(list.begin(), list.end(), [](const core::Diagnostic& d) { return d.code == "W324"; });
+    const auto it = std::find_if(list.begin(), list.end(), [](const core::Diagnostic& d) { return d.code == "I413"; });
     QVERIFY(it != list.end());
     QCOMPARE(it->range.line, 8);
-    QCOMPARE(it->severity, core::Severity::Warning);
+    QCOMPARE(it->severity, core::Severity::Note);
+    QCOMPARE(w.runController()->cutSetup().tools.libraryId(9), std::string("parting-3mm"));
   }
 };
 

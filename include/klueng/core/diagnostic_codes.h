@@ -133,6 +133,10 @@ inline constexpr const char* kOffsetReplacedByLibrary = "I411";
 inline constexpr const char* kLengthsInIncrements = "I103";
 inline constexpr const char* kLengthsWhole = "I104";
 inline constexpr const char* kToolsBeyondCentre = "I412";  // {0} line of the first cut at X < 0  // a row set for the table's tool, in a plain program
+// A guessed tool that touched, replaced by another library tool of its kind that runs clean
+// (cut/guess_fit.h): {0} station, {1} the replacement, {2} the first guess, {3} line of the touch.
+inline constexpr const char* kGuessReplacedStock = "I413";
+inline constexpr const char* kGuessReplacedChuck = "I414";
 
 // Run-time alarms and notes of the interpreter (machine; texts in messages_machine.cpp)
 inline constexpr const char* kSpindleAboveMaximum = "A101";
@@ -209,7 +213,7 @@ inline constexpr const char* kPartGouge = "W320";
 inline constexpr const char* kPartLeftover = "W321";
 inline constexpr const char* kBoreGouge = "W322";
 inline constexpr const char* kBoreLeftover = "W323";
-inline constexpr const char* kGuessHitsStock = "W324";  // {0} station, {1} tool, {2} Z, {3} X
+inline constexpr const char* kGuessHitsStock = "W324";  // {0} station, {1} tool, {2} Z, {3} X, {4} mm deep
 inline constexpr const char* kGuessHitsChuck = "W325";
 inline constexpr const char* kGuessEdgeBrushesStock = "W326";  // a guessed tool's edge, < 0.2 mm, in a rapid
 inline constexpr const char* kPartCheckStopped = "I324";     // {0} the alarm's code

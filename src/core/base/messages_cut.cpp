@@ -17,14 +17,18 @@ constexpr MessageText kMessages[] = {
      "มีดตัดชนหัวจับ (ชัค) ที่ Z{0} X{1}"},
     // A tool Klueng guessed from the program (issue 26): the shop's real tool was another.
     {codes::kGuessHitsStock,
-     "the holder of {1}, guessed for T{0}, touches the stock at Z{2} X{3}: the real tool reaches here; choose it in Tool Select",
-     "ด้ามของ {1} ที่เดาไว้สำหรับ T{0} แตะชิ้นงานที่ Z{2} X{3}: มีดจริงของโรงงานเข้าถึงตรงนี้ได้ ให้เลือกมีดจริงในหน้าเลือกมีด"},
+     "the holder of {1}, guessed for T{0}, touches the stock at Z{2} X{3}, {4} mm deep: the real tool needs {4} mm more "
+     "reach here (a longer blade, a slimmer bar) than any of the library's; choose it in Tool Select",
+     "ด้ามของ {1} ที่เดาไว้สำหรับ T{0} แตะชิ้นงานที่ Z{2} X{3} ลึก {4} มม.: มีดจริงต้องยื่นได้ลึกกว่านี้อีก {4} มม. "
+     "(ใบมีดที่ยาวกว่า หรือด้ามคว้านที่เล็กกว่า) ซึ่งไม่มีในคลังมีด ให้เลือกมีดจริงในหน้าเลือกมีด"},
     {codes::kGuessEdgeBrushesStock,
      "the edge of {1}, guessed for T{0}, brushes the stock by less than 0.2 mm in a rapid at Z{2} X{3}: the shop's real insert is shaped otherwise; choose it in Tool Select",
      "คมของ {1} ที่เดาไว้สำหรับ T{0} เฉี่ยวชิ้นงานไม่ถึง 0.2 มม. ขณะเคลื่อนเร็วที่ Z{2} X{3}: เม็ดมีดจริงของโรงงานมีรูปร่างต่างออกไป ให้เลือกมีดจริงในหน้าเลือกมีด"},
     {codes::kGuessHitsChuck,
-     "the body of {1}, guessed for T{0}, touches the chuck at Z{2} X{3}: the real tool reaches here; choose it in Tool Select",
-     "ตัวมีด {1} ที่เดาไว้สำหรับ T{0} แตะหัวจับที่ Z{2} X{3}: มีดจริงของโรงงานเข้าถึงตรงนี้ได้ ให้เลือกมีดจริงในหน้าเลือกมีด"},
+     "the body of {1}, guessed for T{0}, touches the chuck at Z{2} X{3}: the real tool is shorter or slimmer there than "
+     "any of the library's; choose it in Tool Select",
+     "ตัวมีด {1} ที่เดาไว้สำหรับ T{0} แตะหัวจับที่ Z{2} X{3}: มีดจริงของโรงงานสั้นกว่าหรือเล็กกว่ามีดในคลังตรงนี้ "
+     "ให้เลือกมีดจริงในหน้าเลือกมีด"},
     {codes::kBitmapHasNoEdge, "Tool bitmap {0} has no cutting-edge pixels (every colour other than black and white is cutting edge)",
      "ภาพมีดตัด {0} ไม่มีจุดภาพของคมตัด (สีอื่นที่ไม่ใช่สีดำและสีขาวคือคมตัด)"},
     {codes::kBitmapTooLarge, "Tool bitmap {0} is {1} x {2} pixels; a tool bitmap may be at most {3} x {3} pixels (2 pixels per mm)",

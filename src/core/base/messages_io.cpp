@@ -172,6 +172,12 @@ constexpr MessageText kMessages[] = {
     {codes::kToolsBeyondCentre,
      "the program cuts at X < 0 (from line {0}): its tools work beyond the centre line, as on a rear tool post, and are mirrored there",
      "โปรแกรมกลึงที่ X < 0 (ตั้งแต่บรรทัดที่ {0}): มีดทำงานอีกฝั่งของแนวศูนย์กลาง เหมือนป้อมมีดด้านหลัง จึงกลับด้านมีดไปฝั่งนั้น"},
+    {codes::kGuessReplacedStock,
+     "T{0}: {1} instead of {2}: the first guess touched the stock at line {3}",
+     "T{0}: ใช้ {1} แทน {2}: มีดที่เดาไว้ตอนแรกแตะชิ้นงานที่บรรทัดที่ {3}"},
+    {codes::kGuessReplacedChuck,
+     "T{0}: {1} instead of {2}: the first guess touched the chuck at line {3}",
+     "T{0}: ใช้ {1} แทน {2}: มีดที่เดาไว้ตอนแรกแตะหัวจับที่บรรทัดที่ {3}"},
     // {4} {5}: the row's own radius and tip, set for the tool the table had at that station.
     {codes::kOffsetReplacedByLibrary,
      "offset {0} held R{4} tip {5} for the table's tool: nose radius {1} and tip {2} of {3} are used",

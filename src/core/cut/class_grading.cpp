@@ -1,4 +1,5 @@
 #include "klueng/core/cut/class_grading.h"
+
 #include "klueng/core/gcode/word_format.h"
 
 #include <algorithm>
@@ -7,6 +8,7 @@
 #include <filesystem>
 
 #include "klueng/core/cut/cut_simulator.h"
+#include "klueng/core/cut/guess_fit.h"
 #include "klueng/core/io/tool_library.h"
 #include "klueng/core/machine/interpreter.h"
 
@@ -46,8 +48,9 @@ GradedProgram gradeProgram(const std::string& path, const machine::MachineSetup&
     }
     CutOptions options;
     options.checkpointBudgetBytes = 0;  // one run forward
-    CutSimulator sim(timeline, CutSetup::from(job.file->header, job.setup), options);
-    sim.runToEnd();
+    // A guessed tool that touches gives way to another of its kind that fits (issue 26).
+    const GuessFit fit = fitGuessedTools(timeline, job.file->header, job.setup, io::shippedToolLibrary(), options);
+    const CutSimulator& sim = *fit.cut;
     if (sim.alarm()) {
       g.alarm = place(*sim.alarm());
       return g;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 #include <fmt/format.h>
@@ -366,6 +367,18 @@ bool overlapsStock(const SweepContext& c, const std::vector<std::pair<Vec2, Vec2
   return hit;
 }
 
+// How far the holder swept along the pieces reaches into the stock (mm, radial): what a
+// guessed tool's edge would need to reach further.
+double holderDepth(const SweepContext& c, const std::vector<std::pair<Vec2, Vec2>>& nosePieces,
+                   const std::vector<std::pair<Vec2, Vec2>>& boxPieces, double zMin, double zMax) {
+  double deepest = 0.0;
+  forEachInterval(c, nosePieces, boxPieces, true, [&](int i, double lo, double hi) {
+    const double z = c.stock->zCentre(i);
+    if (z > zMin && z < zMax) deepest = std::max(deepest, c.stock->overlap(i, lo, hi));
+  });
+  return deepest;
+}
+
 bool hitsChuck(const SweepContext& c, const std::vector<std::pair<Vec2, Vec2>>& nosePieces,
                const std::vector<std::pair<Vec2, Vec2>>& boxPieces) {
   const Chuck& k = *c.chuck;
@@ -403,7 +416,8 @@ bool hitsChuck(const SweepContext& c, const std::vector<std::pair<Vec2, Vec2>>& 
 // How deep a guessed tool's edge may brush the stock in a rapid before it is the program's fault.
 constexpr double kGuessGrazeMm = 0.2;
 
-bool CutSimulator::excuseGuess(const char* warning, const Move& m, const Vec2& where) {
+bool CutSimulator::excuseGuess(const char* warning, const Move& m, const Vec2& where,
+                               const std::function<double()>& depth) {
   if (!setup_.tools.isGuess(m.tool)) return false;
   bool& warned = warnedGuess_[static_cast<std::size_t>(m.tool - 1)];
   if (!warned) {
@@ -413,6 +427,7 @@ bool CutSimulator::excuseGuess(const char* warning, const Move& m, const Vec2& w
     const std::string& line = setup_.tools.bitmap[static_cast<std::size_t>(m.tool - 1)];
     d.args.insert(d.args.begin(), {fmt::format("{:02}", m.tool),
                                    id.empty() ? line.substr(line.find_last_of('/') + 1) : id});
+    if (depth) d.args.push_back(fmt::format("{:.3f}", depth()));
     warnings_.push_back(std::move(d));
     warned = true;
   }
@@ -536,7 +551,9 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
       const auto n = nose(s0, s);
       const auto b = boxes(s0, s);
       const bool edge = touches(n, b, false);
-      if (!edge && excuseGuess(codes::kGuessHitsStock, m, timeline_->moves[index].path.pointAt(s))) return;
+      if (!edge && excuseGuess(codes::kGuessHitsStock, m, timeline_->moves[index].path.pointAt(s),
+                               [&] { return holderDepth(ctx, nosePieces, boxPieces, zMin, zMax); }))
+        return;
       // A guessed tool's edge brushing the stock by a sliver (its flank beside a shoulder, the
       // shape of the shop's real insert unknown): a warning; a rapid that goes in deeper is the program's.
       if (edge && m.kind == MoveKind::Rapid && setup_.tools.isGuess(m.tool)) {
@@ -554,7 +571,10 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
   forEachInterval(ctx, nosePieces, boxPieces, false, [&](int i, double lo, double hi) { stock_.remove(i, lo, hi); });
   if (options_.detectCollisions && !tool->holder.empty() && overlapsStock(ctx, nosePieces, boxPieces, true)) {
     const double s = earliest([&](double e) { return overlapsStock(ctx, nose(s0, e), boxes(s0, e), true); });
-    if (excuseGuess(codes::kGuessHitsStock, m, timeline_->moves[index].path.pointAt(s))) return;
+    const double everywhere = std::numeric_limits<double>::infinity();
+    if (excuseGuess(codes::kGuessHitsStock, m, timeline_->moves[index].path.pointAt(s),
+                    [&] { return holderDepth(ctx, nosePieces, boxPieces, -everywhere, everywhere); }))
+      return;
     raise(codes::kHolderHitsStock, s);
   }
 }

@@ -25,6 +25,7 @@
 // toolDiagnostics(); the first move of a tool whose bitmap is refused stops the
 // run with that error (alarm(), Severity::Error, range.line = the move's block).
 // Moves without a tool (T00 or before the first T) cut nothing.
+#include <functional>
 #include <map>
 #include <array>
 #include <optional>
@@ -133,8 +134,10 @@ class CutSimulator {
 
  private:
   void cutMove(std::size_t index, double sEnd);
-  // True when the touch is a guessed tool's: `warning` (W324-W326) is kept, once a station.
-  bool excuseGuess(const char* warning, const machine::Move& m, const Vec2& where);
+  // True when the touch is a guessed tool's: `warning` (W324-W326) is kept, once a station;
+  // `depth` (asked only then) gives W324 how deep the holder went.
+  bool excuseGuess(const char* warning, const machine::Move& m, const Vec2& where,
+                   const std::function<double()>& depth = {});
   void keepCheckpoint();
   // The latest checkpoint at or before t; nullptr when only the bar is.
   const CutCheckpoint* checkpointBefore(double t) const;
