@@ -81,6 +81,26 @@
         <source>Tube stock: the diameter of the hole through it. 0 = a solid bar.</source>
         <translation>ชิ้นงานท่อ: เส้นผ่านศูนย์กลางของรูที่ทะลุตลอดชิ้นงาน 0 = เพลาตัน</translation>
     </message>
+    <message>
+        <source>Lengths without a decimal point:</source>
+        <translation>ความยาวที่ไม่มีจุดทศนิยม:</translation>
+    </message>
+    <message>
+        <source>As the program&apos;s numbers show</source>
+        <translation>ตามตัวเลขในชุดรหัสสั่งการทำงาน</translation>
+    </message>
+    <message>
+        <source>Whole (X30 = 30 mm)</source>
+        <translation>เต็มหน่วย (X30 = 30 มม.)</translation>
+    </message>
+    <message>
+        <source>Least input increments (X30 = 0.030 mm)</source>
+        <translation>หน่วยป้อนค่าที่เล็กที่สุด (X30 = 0.030 มม.)</translation>
+    </message>
+    <message>
+        <source>How X30 or G71 U1250 is read. Whole: X30 = 30 mm (calculator-type input). Least input increments: X30 = 0.030 mm, 0.0030 in under G20, as a standard Fanuc or Haas reads it. As the program&apos;s numbers show: a plain program&apos;s own numbers decide (G71 U1250 only makes sense in increments), else the machine setting (machine.cfg calculator_input).</source>
+        <translation>วิธีอ่าน X30 หรือ G71 U1250 เต็มหน่วย: X30 = 30 มม. (การป้อนค่าแบบเครื่องคิดเลข) หน่วยป้อนค่าที่เล็กที่สุด: X30 = 0.030 มม. (0.0030 นิ้วเมื่อใช้ G20) แบบที่เครื่อง Fanuc หรือ Haas ทั่วไปอ่าน ตามตัวเลขในชุดรหัสสั่งการทำงาน: ตัวเลขในชุดรหัสสั่งการทำงานที่ไม่มีส่วนหัวเป็นตัวตัดสิน (G71 U1250 มีความหมายเฉพาะเมื่ออ่านเป็นหน่วยป้อนค่าที่เล็กที่สุด) ถ้าตัดสินไม่ได้ใช้ค่าที่ตั้งไว้ที่เครื่อง (machine.cfg calculator_input)</translation>
+    </message>
 </context>
 <context>
     <name>klueng::gui::OffsetDefineDialog</name>
@@ -657,6 +677,34 @@
     <message>
         <source>Setup for this program — click a line to change it</source>
         <translation>การตั้งเครื่องสำหรับชุดรหัสสั่งการทำงานนี้ — คลิกที่บรรทัดเพื่อเปลี่ยน</translation>
+    </message>
+    <message>
+        <source>Lengths without a decimal point: whole millimetres/inches — %1 on line %2 = %3 (calculator-type input)</source>
+        <translation>ความยาวที่ไม่มีจุดทศนิยม: อ่านเป็นมิลลิเมตร/นิ้วเต็มหน่วย — %1 ในบรรทัดที่ %2 = %3 (การป้อนค่าแบบเครื่องคิดเลข)</translation>
+    </message>
+    <message>
+        <source>Lengths without a decimal point: least input increments — %1 on line %2 = %3 (as a standard Fanuc/Haas)</source>
+        <translation>ความยาวที่ไม่มีจุดทศนิยม: อ่านเป็นหน่วยป้อนค่าที่เล็กที่สุด — %1 ในบรรทัดที่ %2 = %3 (แบบเครื่อง Fanuc/Haas ทั่วไป)</translation>
+    </message>
+    <message>
+        <source>Lengths without a decimal point: whole millimetres/inches, as chosen in Job details (X30 = 30 mm)</source>
+        <translation>ความยาวที่ไม่มีจุดทศนิยม: อ่านเป็นมิลลิเมตร/นิ้วเต็มหน่วย ตามที่เลือกในรายละเอียดงาน (X30 = 30 มม.)</translation>
+    </message>
+    <message>
+        <source>Lengths without a decimal point: least input increments, as chosen in Job details (X30 = 0.030 mm)</source>
+        <translation>ความยาวที่ไม่มีจุดทศนิยม: อ่านเป็นหน่วยป้อนค่าที่เล็กที่สุด ตามที่เลือกในรายละเอียดงาน (X30 = 0.030 มม.)</translation>
+    </message>
+    <message>
+        <source>Lengths without a decimal point: least input increments, as the machine is set (machine.cfg; X30 = 0.030 mm)</source>
+        <translation>ความยาวที่ไม่มีจุดทศนิยม: อ่านเป็นหน่วยป้อนค่าที่เล็กที่สุด ตามที่ตั้งไว้ที่เครื่อง (machine.cfg; X30 = 0.030 มม.)</translation>
+    </message>
+    <message>
+        <source>A length written without a decimal point is read whole (X30 = 30 mm, calculator-type input) or in least input increments (X30 = 0.030 mm, 0.0030 in under G20), as a standard Fanuc or Haas reads it.</source>
+        <translation>ความยาวที่เขียนโดยไม่มีจุดทศนิยมอ่านได้สองแบบ: เต็มหน่วย (X30 = 30 มม. การป้อนค่าแบบเครื่องคิดเลข) หรือเป็นหน่วยป้อนค่าที่เล็กที่สุด (X30 = 0.030 มม., 0.0030 นิ้วเมื่อใช้ G20) แบบที่เครื่อง Fanuc หรือ Haas ทั่วไปอ่าน</translation>
+    </message>
+    <message>
+        <source>Click to change it for this file (Job details).</source>
+        <translation>คลิกเพื่อเปลี่ยนการอ่านสำหรับไฟล์นี้ (รายละเอียดงาน)</translation>
     </message>
 </context>
 </TS>

@@ -61,6 +61,13 @@ JobDetailsDialog::JobDetailsDialog(const io::JobHeader& h, QWidget* parent) : QD
   problem_->setStyleSheet(QStringLiteral("color: #b00020;"));
   programmer_ = new QLineEdit(QString::fromStdString(h.programmer), this);
   for (QLineEdit* e : {project_, part_, material_, programmer_}) e->setMinimumWidth(280);
+  // Item data: -1 unset (the program's numbers, else the machine), 1 whole, 0 increments.
+  decimalPoint_ = new QComboBox(this);
+  decimalPoint_->setObjectName(QStringLiteral("decimalPoint"));
+  decimalPoint_->addItem(QString(), -1);
+  decimalPoint_->addItem(QString(), 1);
+  decimalPoint_->addItem(QString(), 0);
+  decimalPoint_->setCurrentIndex(!h.calculatorInput ? 0 : *h.calculatorInput ? 1 : 2);
   form_ = new QFormLayout;
   form_->addRow(new QLabel(this), project_);
   form_->addRow(new QLabel(this), part_);
@@ -69,6 +76,7 @@ JobDetailsDialog::JobDetailsDialog(const io::JobHeader& h, QWidget* parent) : QD
   form_->addRow(new QLabel(this), pair(this, length_, lengthUnit_));
   form_->addRow(new QLabel(this), pair(this, bore_, boreUnit_));
   form_->addRow(new QLabel(this), programmer_);
+  form_->addRow(new QLabel(this), decimalPoint_);
   buttons_ = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(form_);
@@ -95,6 +103,7 @@ io::JobHeader JobDetailsDialog::header() const {
   h.length = length_->value();
   h.lengthUnit = static_cast<io::LengthUnit>(lengthUnit_->currentData().toInt());
   h.bore = bore_->value() < h.diameter ? bore_->value() : 0.0;
+  if (const int reading = decimalPoint_->currentData().toInt(); reading >= 0) h.calculatorInput = reading == 1;
   return h;
 }
 
@@ -113,8 +122,8 @@ void JobDetailsDialog::retranslate() {
   const QString labels[] = {tr("Project:"),      tr("Part:"),
                             tr("Material:"),     tr("Stock diameter:"),
                             tr("Stock length:"), tr("Bore diameter (tube; 0 = solid bar):"),
-                            tr("Programmer:")};
-  for (int i = 0; i < 7; ++i)
+                            tr("Programmer:"),   tr("Lengths without a decimal point:")};
+  for (int i = 0; i < 8; ++i)
     if (auto* label = qobject_cast<QLabel*>(form_->itemAt(i, QFormLayout::LabelRole)->widget())) label->setText(labels[i]);
   for (QComboBox* unit : {diameterUnit_, lengthUnit_}) {
     unit->setItemText(0, tr("mm"));
@@ -122,6 +131,14 @@ void JobDetailsDialog::retranslate() {
   }
   boreUnit_->setText(diameterUnit_->currentText());  // the bore is in the diameter's unit
   bore_->setToolTip(tr("Tube stock: the diameter of the hole through it. 0 = a solid bar."));
+  decimalPoint_->setItemText(0, tr("As the program's numbers show"));
+  decimalPoint_->setItemText(1, tr("Whole (X30 = 30 mm)"));
+  decimalPoint_->setItemText(2, tr("Least input increments (X30 = 0.030 mm)"));
+  decimalPoint_->setToolTip(
+      tr("How X30 or G71 U1250 is read. Whole: X30 = 30 mm (calculator-type input). Least input increments: "
+         "X30 = 0.030 mm, 0.0030 in under G20, as a standard Fanuc or Haas reads it. As the program's numbers "
+         "show: a plain program's own numbers decide (G71 U1250 only makes sense in increments), else the "
+         "machine setting (machine.cfg calculator_input)."));
   validate();
 }
 

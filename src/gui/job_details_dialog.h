@@ -1,8 +1,10 @@
 #pragma once
 // Job details (SPEC 2): project, part, material, stock diameter and length
 // (each with mm/inch), bore (tube stock, in the diameter's unit; 0 = solid bar),
-// programmer. Diameter and length must be > 0 and the bore less than the
-// diameter: OK stays disabled and a line under the form says why.
+// programmer, and how the program's lengths without a decimal point are read
+// (as its numbers show / whole / least input increments: JobHeader::calculatorInput).
+// Diameter and length must be > 0 and the bore less than the diameter: OK
+// stays disabled and a line under the form says why.
 //
 // Public API
 //   JobDetailsDialog dlg(header, parent);  if (dlg.exec()) header = dlg.header();
@@ -44,6 +46,7 @@ class JobDetailsDialog : public QDialog {
   QLabel* boreUnit_ = nullptr;
   QLabel* problem_ = nullptr;
   QLineEdit* programmer_ = nullptr;
+  QComboBox* decimalPoint_ = nullptr;  // objectName "decimalPoint": unset / whole / increments
   QDialogButtonBox* buttons_ = nullptr;
 };
 

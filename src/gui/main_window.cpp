@@ -46,6 +46,7 @@
 #include "gui/setup_commands.h"
 #include "gui/status_panel.h"
 #include "gui/tool_select_dialog.h"
+#include "klueng/core/diagnostic_codes.h"
 #include "klueng/core/gcode/checker.h"
 #include "klueng/core/gcode/machine_profile.h"
 #include "klueng/core/gcode/macro.h"
@@ -126,6 +127,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   setupStrip_ = new SetupStrip(outputPane);
   connect(setupStrip_, &SetupStrip::stockActivated, this, &MainWindow::showJobDetails);
   connect(setupStrip_, &SetupStrip::stationActivated, this, &MainWindow::showToolSelectFor);
+  connect(setupStrip_, &SetupStrip::pointReadingActivated, this, &MainWindow::showJobDetails);
   outputLayout->addWidget(setupStrip_);
   outputLayout->addWidget(output_, 1);
   outputLayout->addWidget(statusLamps_);
@@ -360,6 +362,10 @@ void MainWindow::onCheckFinished(const JobToolsResult& result) {
   // The job's tools: library choices for the stations the program uses (a note per choice in Tool Select).
   const bool toolsChanged = !sameTools(result.inference.setup, toolInference_.setup);
   toolInference_ = result.inference;
+  // Which word decided how lengths without a decimal point are read (point_reading.h), for the strip.
+  pointNote_.reset();
+  for (const core::Diagnostic& d : result.diagnostics)
+    if (d.code == core::codes::kLengthsInIncrements || d.code == core::codes::kLengthsWhole) pointNote_ = d;
   if (toolsChanged) runner_->setMachineSetup(toolInference_.setup);
   updateStockLabel();  // the setup strip lists the tools just decided
   std::stable_sort(lastDiagnostics_.begin(), lastDiagnostics_.end(), [](const auto& a, const auto& b) {
@@ -508,7 +514,7 @@ void MainWindow::updateStockLabel() {
   const core::io::StockSource source = document_->header().stockSource;
   setupStrip_->showSetup(document_->stockNotes(),
                          source == core::io::StockSource::Inferred || source == core::io::StockSource::Default,
-                         document_->isPlainGcode(), toolInference_);
+                         document_->isPlainGcode(), toolInference_, {document_->header().calculatorInput, pointNote_});
 }
 
 QString MainWindow::stockSourceText() const { return setupStrip_ ? setupStrip_->stockText() : QString(); }

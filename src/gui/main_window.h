@@ -206,6 +206,7 @@ class MainWindow : public QMainWindow {
   // the last inference (its setup is what the run uses).
   std::vector<core::machine::StationOverride> toolOverrides_;
   core::machine::ToolInference toolInference_;
+  std::optional<core::Diagnostic> pointNote_;  // the last check's I103/I104, for the setup strip
   bool runnerStale_ = true;
 };
 

@@ -108,6 +108,11 @@ SetupStrip::SetupStrip(QWidget* parent) : QFrame(parent) {
   side_ = new SetupLine(this);
   side_->setObjectName(QStringLiteral("setupToolSide"));
   layout->addWidget(side_);
+  point_ = new SetupLine(this);
+  point_->setObjectName(QStringLiteral("setupDecimalPoint"));
+  point_->setClickable(true);
+  connect(point_, &SetupLine::clicked, this, &SetupStrip::pointReadingActivated);
+  layout->addWidget(point_);
   setStyleSheet(QStringLiteral(
       "klueng--gui--SetupStrip[guessed=\"true\"] { background: #fff5d6; border-bottom: 1px solid #e2cf8f; }"
       "QLabel#setupTitle { color: #7a5a00; }"
@@ -117,11 +122,12 @@ SetupStrip::SetupStrip(QWidget* parent) : QFrame(parent) {
 }
 
 void SetupStrip::showSetup(const std::vector<core::Diagnostic>& stockNotes, bool stockGuessed, bool plainGcode,
-                           const machine::ToolInference& inference) {
+                           const machine::ToolInference& inference, const PointReadingShown& points) {
   stockNotes_ = stockNotes;
   stockGuessed_ = stockGuessed;
   plain_ = plainGcode;
   inference_ = inference;
+  points_ = points;
   retranslateUi();
 }
 
@@ -147,6 +153,43 @@ QString SetupStrip::stationText(int station) const {
 QString SetupStrip::titleText() const { return title_->isHidden() ? QString() : title_->text(); }
 
 QString SetupStrip::sideText() const { return side_->isHidden() ? QString() : side_->fullText(); }
+
+QString SetupStrip::pointText() const { return point_->isHidden() ? QString() : point_->fullText(); }
+
+QString SetupStrip::pointReadingText(QString* tip) const {
+  // The user's choice wins over a check still running with the old one.
+  const bool whole = points_.chosen.value_or(inference_.setup.machine.calculatorInput);
+  const core::Diagnostic* decided = nullptr;
+  if (!points_.chosen && points_.note && points_.note->args.size() >= 3) decided = &*points_.note;
+  QString text;
+  if (decided) {
+    const auto arg = [decided](std::size_t i) { return QString::fromStdString(decided->args[i]); };
+    text = whole ? tr("Lengths without a decimal point: whole millimetres/inches — %1 on line %2 = %3 "
+                      "(calculator-type input)")
+                       .arg(arg(0), arg(1), arg(2))
+                 : tr("Lengths without a decimal point: least input increments — %1 on line %2 = %3 "
+                      "(as a standard Fanuc/Haas)")
+                       .arg(arg(0), arg(1), arg(2));
+  } else if (points_.chosen) {
+    text = whole ? tr("Lengths without a decimal point: whole millimetres/inches, as chosen in Job details "
+                      "(X30 = 30 mm)")
+                 : tr("Lengths without a decimal point: least input increments, as chosen in Job details "
+                      "(X30 = 0.030 mm)");
+  } else if (!whole) {
+    // Whole units are the usual school setting: only the other one is worth a line.
+    text = tr("Lengths without a decimal point: least input increments, as the machine is set (machine.cfg; "
+              "X30 = 0.030 mm)");
+  }
+  if (tip) {
+    QString first = decided ? note(*decided) : QString();
+    if (!first.isEmpty()) first[0] = first[0].toUpper();
+    *tip = (first.isEmpty() ? QString() : first + QLatin1Char('\n')) +
+           tr("A length written without a decimal point is read whole (X30 = 30 mm, calculator-type input) or in "
+              "least input increments (X30 = 0.030 mm, 0.0030 in under G20), as a standard Fanuc or Haas reads it.") +
+           QLatin1Char('\n') + tr("Click to change it for this file (Job details).");
+  }
+  return text;
+}
 
 void SetupStrip::retranslateUi() {
   // The stock: its first note in short, every note in the tooltip.
@@ -232,7 +275,15 @@ void SetupStrip::retranslateUi() {
   side_->setFullText(side);
   side_->setVisible(!side.isEmpty());
 
-  const bool guessed = plain_ && (stockGuessed_ || toolGuessed || !side.isEmpty());
+  // Lengths without a decimal point: said when the program's numbers decided it or the reading is not the usual.
+  QString pointTip;
+  const QString point = pointReadingText(&pointTip);
+  point_->setFullText(point);
+  point_->setToolTip(pointTip);
+  point_->setVisible(!point.isEmpty());
+  const bool pointGuessed = !point.isEmpty() && !points_.chosen && points_.note.has_value();
+
+  const bool guessed = plain_ && (stockGuessed_ || toolGuessed || !side.isEmpty() || pointGuessed);
   if (plain_ && (guessed || !rows_.empty()))
     title_->setText(guessed ? tr("Setup guessed from the program — check it before you run; click a line to change it")
                             : tr("Setup for this program — click a line to change it"));
@@ -240,7 +291,7 @@ void SetupStrip::retranslateUi() {
   setProperty("guessed", guessed);
   style()->unpolish(this);
   style()->polish(this);
-  setVisible(!notes.isEmpty() || !rows_.empty() || !side.isEmpty());
+  setVisible(!notes.isEmpty() || !rows_.empty() || !side.isEmpty() || !point.isEmpty());
 }
 
 void SetupStrip::changeEvent(QEvent* event) {

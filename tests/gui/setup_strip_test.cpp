@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include <QApplication>
+#include <QComboBox>
 #include <QFile>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -17,6 +18,7 @@
 #include "gui/language.h"
 #include "gui/main_window.h"
 #include "gui/resources.h"
+#include "gui/settings.h"
 #include "gui/setup_strip.h"
 #include "gui/tool_select_dialog.h"
 
@@ -47,6 +49,37 @@ const char* kHaas =
     "G00 X1.5\n"
     "M30\n"
     "%\n";
+
+// A Fanuc inch program in shop habit: positions with points, the G71 depth and
+// retract without (U1250 = 0.1250 in, R50 = 0.0050 in on a standard control).
+const char* kFanucInch =
+    "%\n"
+    "O1234 (SLEEVE - 1.500 BAR)\n"
+    "(T1 OD ROUGH 80DEG)\n"
+    "G20 G40 G99\n"
+    "G28 U0. W0.\n"
+    "T0101\n"
+    "G50 S2000\n"
+    "G96 S500 M03\n"
+    "G00 X1.6 Z.1 M08\n"
+    "G71 U1250 R50\n"
+    "G71 P100 Q200 U.02 W.005 F.010\n"
+    "N100 G00 X.75\n"
+    "G01 Z0. F.005\n"
+    "X1. Z-.125\n"
+    "Z-1.\n"
+    "X1.3\n"
+    "Z-1.75\n"
+    "N200 X1.6\n"
+    "G70 P100 Q200\n"
+    "G28 U0. W0. M09\n"
+    "M30\n"
+    "%\n";
+
+const core::Diagnostic* findCode(const std::vector<core::Diagnostic>& list, const char* code) {
+  const auto it = std::find_if(list.begin(), list.end(), [code](const core::Diagnostic& d) { return d.code == code; });
+  return it == list.end() ? nullptr : &*it;
+}
 
 bool openAndWait(MainWindow& w, const QString& path) {
   QSignalSpy loaded(&w, &MainWindow::fileLoaded);
@@ -175,6 +208,76 @@ class SetupStripTest : public QObject {
     const QString t2 = again.setupStrip()->stationText(2);
     QVERIFY2(t2.startsWith(QStringLiteral("T02  Parting (cut-off) tool, 3 mm — ")), qPrintable(t2));
     QVERIFY2(t2.contains(QStringLiteral("set for this job")), qPrintable(t2));
+  }
+
+  // Issue 26 item 6: the strip says how lengths without a decimal point are
+  // read and which word decided; Job details changes it for this file, the
+  // check follows, and the choice comes back when the file is opened again.
+  void decimalPointReadingShownAndChosen() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("O1234.nc"));
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(kFanucInch);
+    f.close();
+    const QString whole =
+        QStringLiteral("Lengths without a decimal point: whole millimetres/inches, as chosen in Job details (X30 = 30 mm)");
+    {
+      MainWindow w;
+      w.resize(1366, 740);
+      w.show();
+      QVERIFY(openAndWait(w, path));
+      SetupStrip* strip = w.setupStrip();
+      QTRY_VERIFY(!strip->pointText().isEmpty());
+      QCOMPARE(strip->pointText(), QStringLiteral("Lengths without a decimal point: least input increments — U1250 on "
+                                                  "line 10 = 0.1250 in (as a standard Fanuc/Haas)"));
+      auto* line = strip->findChild<SetupLine*>(QStringLiteral("setupDecimalPoint"));
+      QVERIFY(line && line->isVisible());
+      QVERIFY2(line->toolTip().startsWith(QStringLiteral("Lengths without a decimal point are read in least input increments")),
+               qPrintable(line->toolTip()));
+      QVERIFY(strip->titleText().contains(QStringLiteral("guessed from the program")));
+      QVERIFY(!findCode(w.diagnosticsPanel()->diagnostics(), "E110"));  // 0.1250 in is a fine depth
+      QVERIFY(findCode(w.diagnosticsPanel()->diagnostics(), "I103"));
+
+      // One click on the line opens Job details; choose whole there.
+      int shownChoice = -2;
+      QTimer::singleShot(0, this, [&] {
+        (void)QTest::qWaitFor([] { return qobject_cast<JobDetailsDialog*>(QApplication::activeModalWidget()) != nullptr; }, 10000);
+        if (auto* dlg = qobject_cast<JobDetailsDialog*>(QApplication::activeModalWidget())) {
+          auto* combo = dlg->findChild<QComboBox*>(QStringLiteral("decimalPoint"));
+          if (!combo) return dlg->reject();
+          shownChoice = combo->currentIndex();
+          combo->setCurrentIndex(1);
+          dlg->accept();
+        }
+      });
+      QTest::mouseClick(line, Qt::LeftButton, {}, QPoint(10, 5));
+      QCOMPARE(shownChoice, 0);  // "As the program's numbers show"
+
+      // Read whole, the depth of cut is 1250 in: E110 on U1250, line 10.
+      QTRY_VERIFY_WITH_TIMEOUT(findCode(w.diagnosticsPanel()->diagnostics(), "E110"), 20000);
+      const core::Diagnostic* e110 = findCode(w.diagnosticsPanel()->diagnostics(), "E110");
+      QCOMPARE(e110->range.line, 10);
+      QCOMPARE(e110->range.column, 5);
+      QVERIFY(!findCode(w.diagnosticsPanel()->diagnostics(), "I103"));
+      QCOMPARE(strip->pointText(), whole);
+      const std::optional<core::io::JobHeader> saved = Settings().jobDetailsFor(path);
+      QVERIFY(saved && saved->calculatorInput);
+      QCOMPARE(*saved->calculatorInput, true);
+
+      // In Thai: the line is translated, the word and its line kept.
+      Language::instance()->setLanguage(QStringLiteral("th"));
+      QTRY_VERIFY(strip->pointText().contains(QStringLiteral("จุดทศนิยม")));
+      Language::instance()->setLanguage(QStringLiteral("en"));
+    }
+    // Opened again: read whole from the start, the dialog shows the choice.
+    MainWindow again;
+    again.show();
+    QVERIFY(openAndWait(again, path));
+    QTRY_VERIFY_WITH_TIMEOUT(findCode(again.diagnosticsPanel()->diagnostics(), "E110"), 20000);
+    QCOMPARE(findCode(again.diagnosticsPanel()->diagnostics(), "E110")->range.line, 10);
+    QCOMPARE(again.setupStrip()->pointText(), whole);
+    QVERIFY(again.document()->header().calculatorInput.value_or(false));
   }
 
   // A guessed tool's holder touching the bar (a groove 10 mm deep with the 3 mm
