@@ -419,9 +419,15 @@ struct MotionUse {
   int threadLine = 0;        // the first thread pass (G32/G76/G92 after macros and calls)
   double drillDepth = 0.0;   // deepest feed along -Z on the centre line (mm, Z < 0)
   int drillLine = 0;
+  double plunge = 0.0;       // deepest straight radial feed toward the centre off it (mm, on the diameter)
+  double plungeEndX = 0.0;   // the X it ended at (diameter, mm)
+  double plungeZ = 0.0;      // and its Z
+  int plungeLine = 0;
 };
 
 constexpr double kMinZRunMm = 0.5;  // a Z feed shorter than this says nothing about the side
+constexpr double kMinPlungeMm = 2.0;       // a radial feed this deep (on the diameter) is a plunge
+constexpr double kGroovingReachMm = 6.0;   // deeper (radius) than a grooving blade reaches: a parting blade
 
 std::map<int, MotionUse> recordMotion(const Timeline& timeline) {
   std::map<int, MotionUse> uses;
@@ -430,7 +436,11 @@ std::map<int, MotionUse> recordMotion(const Timeline& timeline) {
     double length = 0.0;
     int line = 0;
   };
-  Pending zRun;  // the last feed along Z, until X moves
+  // The last feed along Z toward the chuck, until X moves: a tool feeds into its
+  // work toward the chuck and leaves it across X, outward from a diameter,
+  // inward from a bore. (A feed toward the tailstock ends a face profile or a
+  // back cut, and what follows it says nothing about the side.)
+  Pending zRun;
   for (const Move& m : timeline.moves) {
     if (m.tool < 1 || m.kind == MoveKind::Dwell) continue;
     const Vec2 d = m.path.end - m.path.start;  // (z, x radius)
@@ -458,7 +468,15 @@ std::map<int, MotionUse> recordMotion(const Timeline& timeline) {
     else if (xMid > kOnCentreMm) u.aboveZero += length;
     if (std::abs(dz) >= kMinZRunMm && std::abs(dz) >= 2.0 * std::abs(dx)) {
       (dz < 0.0 ? u.towardChuck : u.towardTail) += std::abs(dz);
-      zRun = Pending{m.tool, std::abs(dz), m.line};
+      zRun = dz < 0.0 ? Pending{m.tool, std::abs(dz), m.line} : Pending{};
+    }
+    // A plunge: a straight feed toward the centre with no Z travel, ending off the centre line.
+    if (m.kind == MoveKind::Line && std::abs(dz) < 1e-3 && dx < 0.0 && m.path.end.y() > kOnCentreMm &&
+        -2.0 * dx > u.plunge) {
+      u.plunge = -2.0 * dx;
+      u.plungeEndX = 2.0 * m.path.end.y();
+      u.plungeZ = m.path.end.x();
+      u.plungeLine = m.line;
     }
   }
   return uses;
@@ -581,6 +599,16 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
         use.drillLine = m.drillLine;
         use.drillDepthMm = m.drillDepth;
         use.drillCode = scanner.blockText(m.drillLine);
+      } else if (m.plunge >= kMinPlungeMm && m.towardChuck + m.towardTail < kMinZRunMm &&
+                 m.plungeZ < -kPartingBeyondMm) {
+        // It only plunges straight in, behind the face: a blade's work (a groove, or a cut-off
+        // into a bore); deep plunges need the parting blade's reach.
+        const bool deep = m.plunge / 2.0 > kGroovingReachMm;
+        e.kind = deep ? ToolKind::Parting : ToolKind::Grooving;
+        e.reason = deep ? ToolReason::Parting : ToolReason::Grooving;
+        e.line = m.plungeLine;
+        e.detail = scanner.blockText(m.plungeLine);
+        use.cycle = e;
       }
     }
     // Drilling on centre: a centre drill when shallow, else a drill.
@@ -622,7 +650,10 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
     if (context.fromProgram) {
       // The shop's program decides; the table only breaks ties: a tool of the right
       // kind (and hand, for turning) stays, anything else gives way to the evidence.
-      const bool left = moved != motion.end() && leftHandWork(moved->second);
+      // A comment naming the insert (VBMT, CNMG 120408) names a standard right-hand holder:
+      // its feeds toward the tailstock are a profile's (a G72 shape's hub), not a left-hand tool's.
+      const bool namedInsert = want->reason == ToolReason::Comment && !want->insert.empty();
+      const bool left = moved != motion.end() && leftHandWork(moved->second) && !namedInsert;
       const std::string& line = setup.tools.bitmap[static_cast<std::size_t>(station - 1)];
       const bool haveLeft = namesLeftHand(line);
       const bool known = have && *have != ToolKind::Unknown;

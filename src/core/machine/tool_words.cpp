@@ -101,6 +101,8 @@ double sizeMm(const std::string& up, double unitMm) {
     while (k > 0 && up[k - 1] == ' ') --k;
     const auto before = [&](std::string_view w) { return k >= w.size() && up.compare(k - w.size(), w.size(), w) == 0; };
     if (before("\xC3\x98") || before("\xE2\x8C\x80") || before("\xCE\xA6") || before("PHI")) return fraction ? v * 25.4 : v;
+    // "FI16", "FI 8": Ø as Polish and Russian shops spell it (a word of its own).
+    if (before("FI") && (k < 3 || !std::isalpha(static_cast<unsigned char>(up[k - 3])))) return fraction ? v * 25.4 : v;
     const bool dWord = k == i && k >= 1 && up[k - 1] == 'D' && (k < 2 || !std::isalpha(static_cast<unsigned char>(up[k - 2])));
     if (before("DIA") || dWord) return fraction ? v * 25.4 : v * unitMm;
   }
@@ -113,7 +115,12 @@ CommentTool classifyComment(std::string_view comment, double unitMm) {
   CommentTool out;
   const std::string up = upper(comment);
   const std::vector<std::string> ws = words(up);
-  const bool inside = hasWord(ws, {"ID", "INTERNAL", "INSIDE", "INNER"}) || hasText(up, {"เกลียวใน", "ภายใน"});
+  // The words shops write in English, Thai and the other languages lathe programs
+  // come in (French, Spanish/Portuguese, German, Italian, Polish): a tool's kind is
+  // said the same way in a shop's own language.
+  const bool inside = hasWord(ws, {"ID", "INTERNAL", "INSIDE", "INNER", "INT"}) ||
+                      hasPrefix(ws, {"INTERIEUR", "INTERIOR", "INTERNO", "INNEN", "WEWN"}) ||
+                      hasText(up, {"เกลียวใน", "ภายใน"});
 
   // The insert by its name or its angle as shops write it ("35* FINISH", "55 DEG", "80°").
   const auto angle = [&](std::string_view deg) {
@@ -127,26 +134,32 @@ CommentTool classifyComment(std::string_view comment, double unitMm) {
   if (hasWord(ws, {"VNMG", "VBMT", "VCMT"}) || angle("35")) out.insert = "vnmg";
   else if (hasWord(ws, {"DNMG", "DCMT", "DCGT"}) || angle("55")) out.insert = "dnmg";
   else if (hasWord(ws, {"CNMG", "CCMT"}) || angle("80")) out.insert = "cnmg";
-  out.finishing = hasPrefix(ws, {"FINISH", "FIN"}) || hasText(up, {"กลึงละเอียด", "ละเอียด"});
+  out.finishing = hasPrefix(ws, {"FINISH", "FIN", "ACAB", "SCHLICHT", "WYKANCZ"}) ||
+                  hasText(up, {"กลึงละเอียด", "ละเอียด"});
 
   if (followedBy(ws, "CENTER", "DRILL") || followedBy(ws, "CENTRE", "DRILL") || hasWord(ws, {"SPOT", "CENTERDRILL", "CENTRER", "CENTRAGE", "ZENTRIER"}) ||
       hasText(up, {"นำศูนย์", "รูศูนย์"})) {
     out.kind = ToolKind::CentreDrill;
-  } else if (hasPrefix(ws, {"THREAD", "THD", "THRD"}) || hasText(up, {"เกลียว"})) {
+  } else if (hasPrefix(ws, {"THREAD", "THD", "THRD", "FILET", "ROSCA", "ROSCADO", "GEWINDE", "GWINT"}) ||
+             hasText(up, {"เกลียว"})) {
     out.kind = inside ? ToolKind::ThreadingId : ToolKind::ThreadingOd;
-  } else if (followedBy(ws, "CUT", "OFF") || followedBy(ws, "PART", "OFF") || hasPrefix(ws, {"CUTOFF", "PARTING", "PARTOFF"}) ||
+  } else if (followedBy(ws, "CUT", "OFF") || followedBy(ws, "PART", "OFF") ||
+             hasPrefix(ws, {"CUTOFF", "PARTING", "PARTOFF", "TRONC", "TRONZ", "SANGR", "BEDAME", "ABSTECH", "ODCIN",
+                            "ODCIEC"}) ||
              hasText(up, {"ตัดขาด", "ตัดชิ้นงาน"})) {
     out.kind = ToolKind::Parting;
-  } else if (hasPrefix(ws, {"GROOV"}) || hasText(up, {"ร่อง"})) {
+  } else if (hasPrefix(ws, {"GROOV", "GORGE", "RANUR", "EINSTECH", "ROWK", "ROWEK"}) || hasText(up, {"ร่อง"})) {
     out.kind = ToolKind::Grooving;
-  } else if (hasPrefix(ws, {"DRILL", "PERCAGE", "PERCER", "FORET", "BOHR", "TALADR", "BROCA"}) ||
+  } else if (hasPrefix(ws, {"DRILL", "PERCAGE", "PERCER", "FORET", "BOHR", "TALADR", "BROCA", "WIERT"}) ||
              hasText(up, {"ดอกสว่าน", "เจาะ"})) {
     out.kind = ToolKind::Drill;
     out.drillMm = sizeMm(up, unitMm);
-  } else if (hasPrefix(ws, {"BORE", "BORING"}) || hasText(up, {"คว้าน"}) || inside) {
+  } else if (hasPrefix(ws, {"BORE", "BORING", "ALESAGE", "MANDRIN", "WYTACZ"}) || hasText(up, {"คว้าน"}) || inside) {
     out.kind = ToolKind::Boring;
   } else if (!out.insert.empty() || out.finishing ||
              hasWord(ws, {"OD", "ROUGH", "ROUGHING", "TURN", "TURNING", "FACE", "FACING", "PROFILE", "CONTOUR"}) ||
+             hasPrefix(ws, {"EBAUCH", "DRESSAGE", "CHARIOT", "DESBAST", "REFRENT", "CILINDR", "FACEAR", "SCHRUPP",
+                            "TOCZ", "PLANOW", "ZEWN"}) ||
              hasText(up, {"กลึงปอก", "กลึงหยาบ", "ปาดหน้า", "กลึงผิว", "กลึงขึ้นรูป"})) {
     out.kind = ToolKind::Turning;
   }

@@ -327,6 +327,73 @@ TEST(ToolInference, IdInTheThreadsOwnCommentIsAnInsideTool) {
   expectChoice(infer(text), 10, "threading-60-id", ToolReason::ThreadingInside, 8, "G76");
 }
 
+// Tools named in the shop's own language (issue 26: programs come from shops in
+// many countries). A Spanish tool list and a Polish one: parting (TRONZADO,
+// ODCINANIA), grooving (RANURADO, ROWKOW), threading (ROSCA, GWINT), drills
+// with Ø written "FI" (WIERTLO FI12), boring bars (MANDRINADO, WYTACZAK) and an
+// inside thread (ROSCA INTERIOR, WEWN.).
+TEST(ToolInference, ToolsNamedInTheShopsOwnLanguage) {
+  const std::string spanish =
+      "%\nO0410 (CASQUILLO)\nG21 G99\n"
+      "T0303 (HERRAMIENTA DE RANURADO 3MM)\nG00 X44. Z-20.\nG75 R0.5\nG75 X34. Z-22. P1000 Q2000 F0.05\n"
+      "T0404 (ROSCA EXTERIOR 60 GRADOS)\nG00 X42. Z5.\nG76 P010060 Q50 R0.05\nG76 X37.4 Z-15. P1300 Q300 F2.\n"
+      "T0505 (BROCA 18MM)\nG00 X0. Z2.\nG74 R0.5\nG74 Z-30. Q5000 F0.1\n"
+      "T0606 (BARRA DE MANDRINADO)\nG00 X16. Z2.\nG01 Z-20. F0.1\nX15.\nG00 Z5.\n"
+      "T0707 (ROSCA INTERIOR M24X1.5)\nG00 X20. Z5.\nG76 P010060 Q50 R0.05\nG76 X24. Z-12. P812 Q250 F1.5\n"
+      "T1212 (TRONZADO 3MM)\nG00 X44. Z-45.\nG01 X-0.5 F0.04\nM30\n%\n";
+  const ToolInference es = infer(spanish);
+  expectChoice(es, 3, "grooving-3mm", ToolReason::Comment, 4, "HERRAMIENTA DE RANURADO 3MM");
+  expectChoice(es, 5, "drill-18mm", ToolReason::Comment, 12, "BROCA 18MM");
+  expectChoice(es, 6, "boring-bar-16", ToolReason::Comment, 16, "BARRA DE MANDRINADO");
+  expectChoice(es, 7, "threading-60-id", ToolReason::Comment, 21, "ROSCA INTERIOR M24X1.5");
+  expectChoice(es, 12, "parting-3mm", ToolReason::Comment, 25, "TRONZADO 3MM");
+  expectChoice(es, 4, "threading-60", ToolReason::Comment, 8, "ROSCA EXTERIOR 60 GRADOS");  // the table's T04 grooves
+
+  const std::string polish =
+      "O2210 (TULEJA)\nG21 G99\n"
+      "T0909 (WIERTLO FI12)\nG00 X0. Z2.\nG74 R0.5\nG74 Z-25. Q4000 F0.1\n"
+      "T1010 (NOZ DO ROWKOW 2MM)\nG00 X36. Z-10.\nG75 R0.5\nG75 X30. Z-10. P1000 F0.05\n"
+      "T1111 (NOZ DO GWINTOW WEWN. 60ST)\nG00 X14. Z5.\nG76 P010060 Q50 R0.05\nG76 X16. Z-10. P812 Q250 F1.5\n"
+      "T1212 (NOZ DO ODCINANIA 3MM)\nG00 X36. Z-30.\nG01 X10. F0.04\nM30\n";
+  const ToolInference pl = infer(polish);
+  expectChoice(pl, 9, "drill-12mm", ToolReason::Comment, 3, "WIERTLO FI12");
+  expectChoice(pl, 10, "grooving-3mm", ToolReason::Comment, 7, "NOZ DO ROWKOW 2MM");
+  expectChoice(pl, 11, "threading-60-id", ToolReason::Comment, 11, "NOZ DO GWINTOW WEWN. 60ST");
+  expectChoice(pl, 12, "parting-3mm", ToolReason::Comment, 15, "NOZ DO ODCINANIA 3MM");
+}
+
+// A plain program's station that only plunges straight in behind the face, with
+// no word on what it is, is a blade (issue 26 item 1: "a plunge no wider than a
+// blade is grooving or parting"): shallow, a grooving blade; a cut-off into a
+// bore, a parting blade. Facing to the centre at the face is not a plunge.
+TEST(ToolInference, APlainProgramsStraightPlungesAreABlade) {
+  const std::string text = "G21 G99\nT0909\nG97 S600 M03\nG00 X42. Z-12.\nG01 X36. F0.05\nG00 X42.\n"
+                           "T1010\nG00 X42. Z-33.\nG01 X18. F0.04\nG00 X44.\n"
+                           "T1111\nG00 X44. Z0.\nG01 X-1.6 F0.15\nG00 Z2.\nM30\n";
+  const ToolInference r = inferPlain(text);
+  expectChoice(r, 9, "grooving-3mm", ToolReason::Grooving, 5, "G01 X36. F0.05");
+  expectChoice(r, 10, "parting-3mm", ToolReason::Parting, 9, "G01 X18. F0.04");
+  EXPECT_NE(r.choiceFor(11), nullptr);
+  EXPECT_EQ(r.choiceFor(11)->reason, ToolReason::Turning) << summary(r);
+}
+
+// A G72 face profile finished by a tool the comment names by its insert: the
+// finishing pass runs up the hub toward the tailstock, which is the profile's
+// way, not a left-hand tool's; the named VBMT is taken (a right-hand holder).
+TEST(ToolInference, ANamedInsertIsNotTakenForALeftHandTool) {
+  const std::string text = "G21 G99\nT0101 (OD CNMG 120408)\nG96 S180 M03\nG00 X64. Z2.\n"
+                           "G72 W2. R0.5\nG72 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 Z-15.\nG01 X30. F0.1\nZ-1.\n"
+                           "N20 X28. Z0.\nG28 U0. W0.\nT0202 (FINISH VBMT 160404)\nG96 S220 M03\nG00 X64. Z2.\n"
+                           "G70 P10 Q20\nG28 U0. W0.\nM30\n";
+  const ToolInference r = inferPlain(text);
+  expectChoice(r, 2, "vnmg-35-r02", ToolReason::Comment, 12, "FINISH VBMT 160404");
+  // T01's G72 passes and its own finishing run up the hub too: still an outside tool, never a bar.
+  const ToolChoice* t1 = r.choiceFor(1);
+  if (t1) {
+    EXPECT_NE(t1->libraryId.find("cnmg"), std::string::npos) << summary(r);
+  }
+}
+
 TEST(StationOverride, ParsesNEqualsId) {
   const io::ToolLibrary& lib = io::shippedToolLibrary();
   StationOverride o;
