@@ -64,7 +64,9 @@ int toolStation(const Word& w, const MachineProfile& profile, int turretStations
   const int tool = static_cast<int>(n / 100);
   const int offset = static_cast<int>(n % 100);
   const int maxTool = profile.maxToolStation > 0 ? profile.maxToolStation : turretStations;
-  return !shapeOk || tool < 1 || tool > maxTool || offset > profile.maxOffset ? -1 : tool;
+  // T0000: the turret stays and the offset is cancelled (an offset for tool 00, T0017, is refused).
+  const bool keepTurret = profile.toolZeroKeepsTurret && tool == 0 && offset == 0;
+  return !shapeOk || (tool < 1 && !keepTurret) || tool > maxTool || offset > profile.maxOffset ? -1 : tool;
 }
 
 bool isRuleFourGroup(ModalGroup g) {
@@ -449,7 +451,7 @@ class Checker {
         emit(codes::kBadToolWord, w, {wordText(w)});
       return;
     }
-    if (options_.toolsWithBitmap) {
+    if (options_.toolsWithBitmap && tool > 0) {
       const auto& tools = *options_.toolsWithBitmap;
       if (std::find(tools.begin(), tools.end(), tool) == tools.end())
         emit(codes::kToolWithoutBitmap, w, {wordText(w), twoDigits(tool)});

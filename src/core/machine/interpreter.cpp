@@ -277,7 +277,8 @@ bool Interpreter::selectTool(const Word& t) {
     return raise(codes::kNoSuchStation, &t, {wordText(t), fmt::format("{:02d}", tool), fmt::format("{:02d}", stations)});
   if (offset > offsets)
     return raise(codes::kNoSuchOffset, &t, {wordText(t), fmt::format("{:02d}", offset), fmt::format("{:02d}", offsets)});
-  mach_.tool = tool;
+  // Tool 00 indexes nothing (T0000 cancels the offset of the tool in place).
+  if (tool > 0 || offset > 0 || !profile_.toolZeroKeepsTurret) mach_.tool = tool;
   mach_.offset = offset;
   if (offset == 0) {
     mach_.offsetX = mach_.offsetZ = mach_.noseRadius = 0.0;

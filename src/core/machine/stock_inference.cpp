@@ -126,16 +126,20 @@ StockInference inferStock(const gcode::Program& program, const Timeline& tl, con
   std::map<int, Units> unitsOfBlock;
   for (const StateSnapshot& s : tl.snapshots) unitsOfBlock[s.blockIndex] = s.modal.units;
 
-  // Ø: the first feeding block off the centre that is not inside work.
+  // Ø: the first feeding block off the centre that is not inside work. An
+  // approach comes from in front of the face (not a drill, not a retract inside
+  // the part); a program that only works behind the face (a cut-off on its own,
+  // a groove) has the bar below where its first cut starts.
   std::size_t decider = moves.size();
+  for (int pass = 0; pass < 2 && decider == moves.size(); ++pass)
   for (std::size_t i = 0; i < moves.size() && decider == moves.size(); ++i) {
     const Move& m = moves[i];
     if (!isFeed(m) || isInsidePass(moves, i)) continue;
     std::size_t first = i;  // the block's first move starts where the block started
     while (first > 0 && moves[first - 1].blockIndex == m.blockIndex) --first;
-    // An approach comes from in front of the face, off the centre (not a drill,
-    // not a retract inside the part).
-    if (diameterOf(moves[first].path.start) < kOnCentre || zOf(moves[first].path.start) < -1e-6) continue;
+    if (diameterOf(moves[first].path.start) < kOnCentre) continue;
+    if (pass == 0 && zOf(moves[first].path.start) < -1e-6) continue;
+    if (pass == 1 && diameterOf(m.path.end) >= diameterOf(moves[first].path.start)) continue;  // a plunge inward only
     decider = i;
     // Quote the block that brought the tool there (N30 G00 X52. Z2.), not the cut.
     r.diameterLine = first > 0 ? moves[first - 1].line : m.line;

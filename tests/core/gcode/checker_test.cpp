@@ -103,7 +103,7 @@ INSTANTIATE_TEST_SUITE_P(
         CleanCase{"X9999.999 Z-9999.999\nU-.5 W.001", In::Both}, CleanCase{"F0.001 S9999.999", In::Both},
         CleanCase{"G20\nX1.2345 Z-0.0001", In::Both}, CleanCase{"G20\nG21\nX1.234", In::Both},
         CleanCase{"N1\nN9999 G00", In::Both}, CleanCase{"T0316", In::Both}, CleanCase{"T0100", In::Both},
-        CleanCase{"T101", In::Fanuc}, CleanCase{"G1 X1.\ng01 x2.", In::Both}, CleanCase{"M3 S100", In::Both},
+        CleanCase{"T101", In::Fanuc}, CleanCase{"T0101\nT0000", In::Fanuc}, CleanCase{"G1 X1.\ng01 x2.", In::Both}, CleanCase{"M3 S100", In::Both},
         CleanCase{"G76 P020060 Q50 R0.05", In::Both}, CleanCase{"G71 P100 Q200 U0.5 W0.1 F0.25\nN100 G00 X30.\nN200 G01 Z-20.", In::Both},
         CleanCase{"M98 P1234\nM30\nO1234\nM99", In::Fanuc}, CleanCase{"M42", In::Fanuc}, CleanCase{"G54\nG53 X0. Z0.", In::Fanuc},
         // ext arc rules
@@ -229,6 +229,7 @@ INSTANTIATE_TEST_SUITE_P(
         FailCase{"N1.5", In::Both, "E116", 1, 1, 4},
         FailCase{"O0", In::Both, "E116", 1, 1, 2},
         FailCase{"T0917", In::Classic, "E117", 1, 1, 5},
+        FailCase{"T0000", In::Classic, "E117", 1, 1, 5},  // Fanuc/Haas: the turret stays, the offset is cancelled
         FailCase{"T1317", In::Fanuc, "E118", 1, 1, 5},
         FailCase{"T0900", In::Classic, "E117", 1, 1, 5},
         FailCase{"T0017", In::Fanuc, "E118", 1, 1, 5},

@@ -70,6 +70,22 @@ TEST(Interpreter, ModalStateIsKeptAndSnapshottedPerBlock) {
   EXPECT_EQ(t.snapshots[5].moveEnd, static_cast<int>(t.moves.size()));
 }
 
+// T0000 on a Fanuc or Haas turret (a student's habit at the top of a program
+// and before a tool change): tool 00 indexes nothing, offset 00 cancels the
+// offset; the turret keeps the tool it has.
+TEST(Interpreter, ToolZeroKeepsTheTurretAndCancelsTheOffset) {
+  const Timeline t = runText("T0101\nG00 X40. Z10.\nT0000\nG00 X40. Z20.\n");
+  ASSERT_FALSE(t.alarm);
+  ASSERT_EQ(t.snapshots.size(), 4u);
+  EXPECT_EQ(t.snapshots[0].machine.tool, 1);
+  EXPECT_EQ(t.snapshots[0].machine.offset, 1);
+  EXPECT_EQ(t.snapshots[2].machine.tool, 1);
+  EXPECT_EQ(t.snapshots[2].machine.offset, 0);
+  EXPECT_DOUBLE_EQ(t.snapshots[2].machine.offsetX, 0.0);
+  EXPECT_DOUBLE_EQ(t.snapshots[2].machine.offsetZ, 0.0);
+  EXPECT_EQ(t.moves.back().tool, 1);
+}
+
 TEST(Interpreter, InBlockOrderSpindleStartBeforeAndStopAfterTheMotion) {
   // M03 acts before the cut (no "spindle stopped" alarm), M05 after it.
   const Timeline t = runText(

@@ -57,6 +57,23 @@ TEST(StockInference, FacingApproachGivesTheBarBelowIt) {
             "ชิ้นงาน Ø50 x 85 mm ประมาณจาก N30 G00 X52. Z0. (ตำแหน่งเข้าหาชิ้นงานครั้งแรก)");
 }
 
+// A program that only works behind the face (the cut-off of a part turned by
+// another program): no approach from in front of the face, so the bar lies
+// below where the first cut starts (G00 X1.5 then Z-2.1: a Ø1.5 bar), never the
+// Ø50 mm default a rapid along the bar would run into.
+TEST(StockInference, OnlyBehindTheFaceTheFirstCutsStartGivesTheBar) {
+  const std::string text =
+      "%\nO2008 (CUT OFF ONLY)\nG20 G99\nT1212 (CUT OFF)\nG97 S1500 M03\nG00 X1.5 Z0.1\nZ-2.1\n"
+      "G01 X1.4 F0.004\nX0. F0.002\nG00 X1.6\nM30\n%\n";
+  const StockInference r = infer(text);
+  ASSERT_TRUE(r.found);
+  EXPECT_TRUE(r.inch);
+  EXPECT_DOUBLE_EQ(r.approachDiameter, 1.5);
+  EXPECT_DOUBLE_EQ(r.diameter, 1.5);
+  EXPECT_EQ(r.diameterLine, 7);
+  EXPECT_DOUBLE_EQ(r.deepestZ, -2.1);
+}
+
 TEST(StockInference, CycleStartPoint) {
   const std::string text =
       "N10 G21 G99 G97 S800 M03\n"

@@ -112,6 +112,9 @@ struct MachineProfile {
   int minToolDigits;
   int maxToolStation;        // 0 = the machine's turret size (machine.cfg turret_stations)
   int maxOffset;             // offset rows (16 classic, 64 others)
+  // T0000 (tool 00, offset 00): the turret stays where it is and the offset is
+  // cancelled, as a Fanuc or Haas turret reads T__00 (true); classic: E117.
+  bool toolZeroKeepsTurret;
   DwellPUnit dwellP;
   BareG28 bareG28;
   // Threading under G96: an alarm (SPEC 8, the classic trainer) or a warning. Fanuc 0i-TF
