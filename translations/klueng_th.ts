@@ -1187,6 +1187,22 @@
         <translation>บรรทัดที่ %1 ของ "%2" ยาวเกินกว่าจะแก้ไขได้ จึงไม่ได้แสดงในหน้าต่างแก้ไข การบันทึกทับไฟล์จะทำให้บรรทัดนั้นหายไป ให้ใช้ "บันทึกเป็น" เพื่อบันทึกเป็นไฟล์ใหม่</translation>
     </message>
     <message>
+        <source>Read-only file</source>
+        <translation>ไฟล์แบบอ่านอย่างเดียว</translation>
+    </message>
+    <message>
+        <source>"%1" is read-only, so Klueng will not write over it.</source>
+        <translation>"%1" เป็นไฟล์แบบอ่านอย่างเดียว Klueng จึงจะไม่บันทึกทับไฟล์นี้</translation>
+    </message>
+    <message>
+        <source>Save your program under another name?</source>
+        <translation>ต้องการบันทึกชุดรหัสสั่งการทำงานเป็นชื่ออื่นหรือไม่?</translation>
+    </message>
+    <message>
+        <source>Save &amp;As...</source>
+        <translation>บันทึกเป็น... (&amp;A)</translation>
+    </message>
+    <message>
         <source>Cannot save the program</source>
         <translation>บันทึกชุดรหัสสั่งการทำงานไม่ได้</translation>
     </message>

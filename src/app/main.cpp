@@ -3,6 +3,7 @@
 //   klueng --lang th|en                UI language for this and later starts
 //   klueng --screenshot OUT.png FILE   open, check, save a picture of the window, exit
 #include <QApplication>
+#include <QBuffer>
 #include <QCommandLineParser>
 #include <QFileInfo>
 #include <QIcon>
@@ -10,6 +11,7 @@
 #include <QTimer>
 #include <cstdio>
 
+#include "gui/file_save.h"
 #include "gui/language.h"
 #include "gui/main_window.h"
 #include "gui/resources.h"
@@ -27,7 +29,15 @@ void scheduleScreenshot(klueng::gui::MainWindow* window, const QString& out, int
     // One more pass so the last repaint (underlines, fit to view) is done.
     QTimer::singleShot(300, window, [window, out, exitCode] {
       const QPixmap shot = window->grab();
-      const bool ok = shot.save(out, "PNG");
+      // Encoded in memory, written by the checked writer: a failed write keeps an old picture (issue 29).
+      QBuffer png;
+      png.open(QIODevice::WriteOnly);
+      const bool encoded = shot.save(&png, "PNG");
+      const QString why = encoded ? klueng::gui::writeFileChecked(
+                                        out, std::string_view(png.data().constData(), static_cast<std::size_t>(png.data().size())))
+                                  : QString();
+      if (!why.isEmpty()) std::fprintf(stderr, "%s\n", qPrintable(why));
+      const bool ok = encoded && why.isEmpty();
       // Where the window lies and the screen's free area, so tests can see it fits (issue 11).
       const QRect frame = window->frameGeometry();
       const QRect screen = window->screen() ? window->screen()->availableGeometry() : QRect();

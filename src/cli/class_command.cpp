@@ -76,8 +76,7 @@ std::optional<ClassOptions> parse(const std::vector<std::string>& args) {
 }
 
 // The table as the picture module draws it (klueng-png.so, opened only for --pdf).
-bool writePdf(const ClassOptions& o, const std::vector<cut::ClassRow>& rows, const std::string& configDir,
-              std::string& error) {
+bool writePdf(const ClassOptions& o, const std::vector<cut::ClassRow>& rows, const std::string& configDir) {
   std::vector<std::string> cells;
   std::vector<std::string> paths;
   for (const cut::ClassRow& r : rows) {
@@ -104,7 +103,7 @@ bool writePdf(const ClassOptions& o, const std::vector<cut::ClassRow>& rows, con
   in.sheetPaths = pathPtrs.data();
   in.configDir = configDir.c_str();
   in.dialect = static_cast<int>(o.dialect);
-  return writeClassPdf(in, o.pdf, &error);
+  return reportWrite(o.pdf, writeClassPdf(in, o.pdf), o.lang);
 }
 
 }  // namespace
@@ -140,6 +139,12 @@ int runClass(const std::vector<std::string>& args) {
     std::fprintf(stderr, "klueng-cli class: %s is not a folder\n", o.dir.c_str());
     return 2;
   }
+  // Every file in the folder is graded, so every one is an input the outputs must not replace.
+  std::vector<std::string> inputs = setupFiles(config);
+  inputs.push_back(o.reference);
+  for (const std::filesystem::directory_entry& e : std::filesystem::directory_iterator(o.dir, ec))
+    if (e.is_regular_file(ec)) inputs.push_back(e.path().string());
+  if (!outputsAllowed({o.csv, o.pdf}, inputs, o.lang)) return 2;
   const std::vector<cut::ClassRow> rows = cut::gradeClass(
       o.dir, o.reference, *reference.part, config.setup, *request, o.tolerance,
       [](int i, int n, const std::string& name) { std::fprintf(stderr, "[%d/%d] %s\n", i + 1, n, name.c_str()); });
@@ -147,14 +152,10 @@ int runClass(const std::vector<std::string>& args) {
   const std::string table = cut::classCsv(rows);
   if (o.csv.empty()) {
     std::fputs(table.c_str(), stdout);
-  } else if (!io::writeTextFileAtomic(o.csv, table, &error)) {
-    std::fprintf(stderr, "klueng-cli class: cannot write %s: %s\n", o.csv.c_str(), error.c_str());
-    return 1;
+  } else if (!writeOutput(o.csv, table, o.lang)) {
+    return 2;  // the old file keeps its bytes; the message says why (issue 29)
   }
-  if (!o.pdf.empty() && !writePdf(o, rows, config.dir, error)) {
-    std::fprintf(stderr, "klueng-cli class: cannot write %s: %s\n", o.pdf.c_str(), error.c_str());
-    return 1;
-  }
+  if (!o.pdf.empty() && !writePdf(o, rows, config.dir)) return 2;
   std::fprintf(stderr, "%zu programs: %d pass, %zu fail\n", rows.size(), passed, rows.size() - static_cast<std::size_t>(passed));
   return 0;
 }

@@ -13,6 +13,9 @@
 #include "klueng/core/gcode/dialect_fit.h"
 #include "klueng/core/gcode/machine_profile.h"
 #include "klueng/core/gcode/parser.h"
+#include "klueng/core/diagnostic_codes.h"
+#include "klueng/core/io/file_write.h"
+#include "klueng/core/io/macro_variables.h"
 #include "klueng/core/io/tool_library.h"
 #include "klueng/core/io/text_encoding.h"
 #include "klueng/core/machine/stock_inference.h"
@@ -153,6 +156,44 @@ std::string joinPath(const std::string& dir, std::string_view name) {
 }
 
 LoadedConfig loadConfig(const std::string& explicitDir) { return machine::loadMachineSetup(explicitDir, true); }
+
+bool outputsAllowed(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs, Lang lang) {
+  bool allowed = true;
+  for (const std::string& output : outputs) {
+    if (output.empty()) continue;
+    if (const auto clash = io::outputOverwritesInput(output, inputs)) {
+      printDiagnostic(stderr, output, *clash, lang);
+      allowed = false;
+    } else if (io::isReadOnlyFile(output)) {
+      printDiagnostic(stderr, output, Diagnostic{Severity::Error, codes::kFileReadOnly, {}, {output}}, lang);
+      allowed = false;
+    }
+  }
+  return allowed;
+}
+
+std::vector<std::string> setupFiles(const LoadedConfig& config) {
+  if (config.dir.empty()) return {};
+  return {joinPath(config.dir, "tools.cfg"), joinPath(config.dir, "offset.cfg"), joinPath(config.dir, "machine.cfg"),
+          io::macroVariablesPath(config.dir)};
+}
+
+std::vector<std::string> programInputs(const std::string& file, const machine::JobFile& job, const LoadedConfig& config) {
+  std::vector<std::string> inputs{file};
+  if (job.program)
+    for (const std::string& sub : job.program->files) inputs.push_back(sub);  // files[0] is "": the program
+  for (std::string& setup : setupFiles(config)) inputs.push_back(std::move(setup));
+  return inputs;
+}
+
+bool reportWrite(const std::string& path, const std::optional<Diagnostic>& failure, Lang lang) {
+  if (failure) printDiagnostic(stderr, path, *failure, lang);
+  return !failure;
+}
+
+bool writeOutput(const std::string& path, std::string_view bytes, Lang lang) {
+  return reportWrite(path, io::writeFileAtomic(path, bytes), lang);
+}
 
 int stationLimit(const LoadedConfig& config, gcode::Dialect dialect) {
   const int profileLimit = gcode::machineProfile(dialect).maxToolStation;

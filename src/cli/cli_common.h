@@ -70,6 +70,23 @@ using core::machine::isUnreadable;
 using LoadedConfig = core::machine::LoadedSetup;
 LoadedConfig loadConfig(const std::string& explicitDir = {});
 
+// Issue 29, checked before any work: an output option naming an input (the
+// program, a subprogram file, the reference, a graded file, the part file, a
+// setup file) would destroy it (F126); a read-only output is refused (F119).
+// Prints each; true when there is none. Empty names are skipped.
+bool outputsAllowed(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs,
+                        core::Lang lang);
+// The setup files of `config` (tools.cfg, offset.cfg, machine.cfg, macro_variables.cfg in its folder): inputs too.
+std::vector<std::string> setupFiles(const LoadedConfig& config);
+// What a run of `file` read: the program, its subprogram files and the setup files.
+std::vector<std::string> programInputs(const std::string& file, const core::machine::JobFile& job,
+                                       const LoadedConfig& config);
+// Writes with core/io/file_write.h; on failure prints the diagnostic (F1xx,
+// path and reason, in `lang`) and returns false. The old file keeps its bytes.
+bool writeOutput(const std::string& path, std::string_view bytes, core::Lang lang);
+// Prints a write failure (nullopt: nothing) as writeOutput does; true when there was none.
+bool reportWrite(const std::string& path, const std::optional<core::Diagnostic>& failure, core::Lang lang);
+
 // The highest station a T word may name: the dialect's limit, else the turret.
 int stationLimit(const LoadedConfig& config, core::gcode::Dialect dialect);
 

@@ -102,6 +102,10 @@ int runGenerate(const std::vector<std::string>& args) {
   for (const auto& fd : config.diagnostics) printDiagnostic(stderr, fd.file, fd.diagnostic, options.lang);
   if (config.unreadable || config.hasErrors()) return 2;
   options.machine = config.setup.machine;
+  // Refused before any work, as a compiler refuses `-o` naming its source.
+  std::vector<std::string> inputs = setupFiles(config);
+  inputs.push_back(file);
+  if (!outputsAllowed({out}, inputs, options.lang)) return 2;
   bool readable = false;
   const std::string text = slurp(file, readable);
   if (!readable) {
@@ -123,12 +127,8 @@ int runGenerate(const std::vector<std::string>& args) {
   const auto program = design::generateProgram(*design.value, options, &why);
   for (const Diagnostic& d : why) printDiagnostic(stderr, file, d, options.lang);
   if (!program) return 1;
-  std::string error;
-  if (!io::writeTextFileAtomic(out, program->text, &error)) {
-    std::fprintf(stderr, "klueng-cli generate: cannot write %s: %s\n", out.c_str(), error.c_str());
-    return 2;
-  }
-  return 0;
+  // A read-only OUT.nc is refused, a failed write keeps the old one: exit 2 (issue 29).
+  return writeOutput(out, program->text, options.lang) ? 0 : 2;
 }
 
 }  // namespace klueng::cli

@@ -8,6 +8,8 @@
 #include <string_view>
 #include <system_error>
 
+#include "klueng/core/diagnostic_codes.h"
+#include "klueng/core/io/file_write.h"
 #include "klueng/core/io/program_file.h"
 
 namespace klueng::cli {
@@ -74,35 +76,32 @@ namespace klueng::cli {
 
 namespace {
 
-// Runs a module entry that writes a PDF at `in.path`: written beside, then
-// renamed, so a reader never sees half a report.
+// Runs a module entry that draws a PDF into memory, then writes it with the
+// checked writer: a failed write keeps the old file and is reported (issue 29).
 template <class Input, class Fn>
-bool writePdfAtomically(const char* symbol, Input input, const std::string& path, std::string* error) {
-  const auto draw = reinterpret_cast<Fn>(moduleSymbol(symbol, error));
-  if (!draw) return false;
-  const std::string partial = path + ".partial";
-  input.path = partial.c_str();
-  char why[512] = {0};
-  if (!draw(&input, why, sizeof why)) {
-    if (error) *error = why;
-    std::error_code ec;
-    fs::remove(partial, ec);
-    return false;
-  }
-  std::error_code ec;
-  fs::rename(partial, path, ec);
-  if (ec && error) *error = ec.message();
-  return !ec;
+std::optional<core::Diagnostic> writePdf(const char* symbol, const Input& input, const std::string& path) {
+  const auto failed = [&](const std::string& why) {
+    return core::Diagnostic{core::Severity::Error, core::codes::kCannotWriteFile, {}, {path, why}};
+  };
+  std::string why;
+  const auto draw = reinterpret_cast<Fn>(moduleSymbol(symbol, &why));
+  if (!draw) return failed(why);
+  char* bytes = nullptr;
+  std::size_t size = 0;
+  char reason[512] = {0};
+  if (!draw(&input, &bytes, &size, reason, sizeof reason)) return failed(reason);
+  const std::unique_ptr<char, decltype(&std::free)> owned(bytes, &std::free);
+  return core::io::writeFileAtomic(path, std::string_view(bytes, size));
 }
 
 }  // namespace
 
-bool writeClassPdf(KluengClassPdf input, const std::string& path, std::string* error) {
-  return writePdfAtomically<KluengClassPdf, KluengClassPdfFn>("klueng_class_pdf", input, path, error);
+std::optional<core::Diagnostic> writeClassPdf(const KluengClassPdf& input, const std::string& path) {
+  return writePdf<KluengClassPdf, KluengClassPdfFn>("klueng_class_pdf", input, path);
 }
 
-bool writePrintPdf(KluengPrintPdf input, const std::string& path, std::string* error) {
-  return writePdfAtomically<KluengPrintPdf, KluengPrintPdfFn>("klueng_print_pdf", input, path, error);
+std::optional<core::Diagnostic> writePrintPdf(const KluengPrintPdf& input, const std::string& path) {
+  return writePdf<KluengPrintPdf, KluengPrintPdfFn>("klueng_print_pdf", input, path);
 }
 
 }  // namespace klueng::cli

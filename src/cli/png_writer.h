@@ -1,8 +1,12 @@
 #pragma once
 // klueng-cli --png: draws the section with the screen's painters by opening the
 // picture module (klueng-png.so) beside the program, or in ../lib/klueng when
-// installed, and writes the file atomically.
+// installed, and writes the file with core/io/file_write.h (checked, atomic,
+// read-only files refused).
+#include <optional>
 #include <string>
+
+#include "klueng/core/diagnostic.h"
 
 #include "render/class_pdf_input.h"
 #include "render/print_pdf_input.h"
@@ -12,8 +16,9 @@ namespace klueng::cli {
 
 bool writeSectionPng(const render::SectionPicture& picture, const std::string& path, std::string* error);
 // klueng-cli class --pdf: the grades (and with sheets, each student's sheets) as one PDF at `path`.
-bool writeClassPdf(KluengClassPdf input, const std::string& path, std::string* error);
-// klueng-cli print: the program's sheets as one PDF at `path`.
-bool writePrintPdf(KluengPrintPdf input, const std::string& path, std::string* error);
+// nullopt when written; else why (F1xx, io/file_write.h), the old file unchanged.
+std::optional<core::Diagnostic> writeClassPdf(const KluengClassPdf& input, const std::string& path);
+// klueng-cli print: the program's sheets as one PDF at `path`; as writeClassPdf.
+std::optional<core::Diagnostic> writePrintPdf(const KluengPrintPdf& input, const std::string& path);
 
 }  // namespace klueng::cli

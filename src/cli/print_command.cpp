@@ -132,6 +132,8 @@ int runPrint(const std::vector<std::string>& args) {
   for (const auto& d : job.diagnostics) printDiagnostic(stderr, job.fileOf(d), d, o.lang);
   for (const Diagnostic& n : job.stockNotes) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
   if (job.unreadable || !job.file) return 2;
+  // Refused before anything is drawn, as a compiler refuses `-o` naming its source.
+  if (!outputsAllowed({o.pdf}, programInputs(o.file, job, config), o.lang)) return 2;
 
   machine::JobOptions jobOptions;
   jobOptions.run = request->run;
@@ -145,10 +147,8 @@ int runPrint(const std::vector<std::string>& args) {
   in.program = &*job.file;
   in.setup = &job.setup;
   in.job = &jobOptions;
-  if (!writePrintPdf(in, o.pdf, &error)) {
-    std::fprintf(stderr, "klueng-cli print: cannot write %s: %s\n", o.pdf.c_str(), error.c_str());
-    return 2;
-  }
+  // A failed write keeps the old PDF and exits 2 (issue 29).
+  if (!reportWrite(o.pdf, writePrintPdf(in, o.pdf), o.lang)) return 2;
   return job.hasErrors() ? 1 : 0;
 }
 

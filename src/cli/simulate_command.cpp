@@ -235,6 +235,11 @@ int runSimulate(const std::vector<std::string>& args) {
   for (const Diagnostic& n : job.toolNotes) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
   for (const auto& d : job.diagnostics) printDiagnostic(job.fileOf(d), d, o.lang);
   if (job.unreadable) return 2;
+  // An output naming the program, a subprogram file or a setup file would destroy it: refused
+  // before the run, as a compiler refuses `-o` naming its source (issue 29).
+  if (!outputsAllowed({o.tracePath, o.cut.pngPath, o.cut.profilePath, o.cut.jsonPath, o.cut.svgPath, o.cut.dxfPath},
+                          programInputs(o.file, job, config), o.lang))
+    return 2;
   if (!job.file || !job.program || job.hasErrors()) return 1;
   for (const Diagnostic& n : job.stockNotes) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
   const machine::MachineSetup& setup = job.setup;
@@ -256,20 +261,13 @@ int runSimulate(const std::vector<std::string>& args) {
   const machine::Timeline& timeline = keepUntilExit(machine::interpret(program, setup, runOptions));
   for (const Diagnostic& n : timeline.flow.notices) printDiagnostic(job.fileOf(n), n, o.lang);
   if (variables != before && o.persistVariables && stored.value && !variablesPath.empty()) {
-    std::string error;
     std::error_code ec;
     std::filesystem::create_directories(variablesDir, ec);  // the user's data folder may not exist yet
-    if (!io::writeTextFileAtomic(variablesPath, io::formatMacroVariables(variables), &error))
-      std::fprintf(stderr, "klueng-cli simulate: cannot write %s: %s\n", variablesPath.c_str(), error.c_str());
+    // The run's own result does not depend on it: said, and the run goes on.
+    writeOutput(variablesPath, io::formatMacroVariables(variables), o.lang);
   }
 
-  if (!o.tracePath.empty()) {
-    std::string error;
-    if (!io::writeTextFileAtomic(o.tracePath, machine::formatTraceCsv(timeline), &error)) {
-      std::fprintf(stderr, "klueng-cli simulate: cannot write %s: %s\n", o.tracePath.c_str(), error.c_str());
-      return 1;
-    }
-  }
+  if (!o.tracePath.empty() && !writeOutput(o.tracePath, machine::formatTraceCsv(timeline), o.lang)) return 2;
   // The stock: collisions stop the run on their block (SPEC 8), and the cut outputs.
   CutOutputOptions cutOptions = o.cut;
   cutOptions.lang = o.lang;
@@ -297,16 +295,10 @@ int runSimulate(const std::vector<std::string>& args) {
                    d.line, std::string(severityName(Severity::Note, o.lang)).c_str(),
                    cut::describeDifference(d, program, with, o.lang).c_str());
   }
-  if (cut.alarm) {
-    printDiagnostic(job.fileOf(*cut.alarm), *cut.alarm, o.lang);
-    return 1;
-  }
-  if (!cut.written) return 1;
-  if (timeline.alarm) {
-    printDiagnostic(job.fileOf(*timeline.alarm), *timeline.alarm, o.lang);
-    return 1;
-  }
-  return 0;
+  const std::optional<Diagnostic>& alarm = cut.alarm ? cut.alarm : timeline.alarm;
+  if (alarm) printDiagnostic(job.fileOf(*alarm), *alarm, o.lang);
+  if (!cut.written) return 2;  // an output could not be written (said on stderr); the old file is kept
+  return alarm ? 1 : 0;
 }
 
 }  // namespace klueng::cli

@@ -14,6 +14,7 @@
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include "gui/file_save.h"
 #include "klueng/core/io/program_file.h"
 
 namespace klueng::gui {
@@ -75,7 +76,9 @@ ClassGradeDialog::ClassGradeDialog(const core::machine::MachineSetup& setup, cor
   connect(saveButton_, &QPushButton::clicked, this, [this] {
     const QString path = QFileDialog::getSaveFileName(this, tr("Save the grades"), folder_->text() + QStringLiteral("/grades.csv"),
                                                       tr("CSV files (*.csv)"));
-    if (!path.isEmpty() && !saveCsv(path)) QMessageBox::warning(this, windowTitle(), tr("\"%1\" could not be written.").arg(path));
+    QString why;
+    if (!path.isEmpty() && !saveCsv(path, &why))
+      QMessageBox::warning(this, windowTitle(), tr("\"%1\" could not be written.").arg(path) + QStringLiteral("\n\n") + why);
   });
   connect(table_, &QTableWidget::cellDoubleClicked, this, [this](int row, int) {
     if (row >= 0 && row < static_cast<int>(rows_.size())) emit openProgram(QString::fromStdString(rows_[static_cast<std::size_t>(row)].path));
@@ -148,9 +151,14 @@ void ClassGradeDialog::showRows() {
                                   : tr("%1 programs: %2 pass, %3 fail").arg(rows_.size()).arg(passed).arg(static_cast<int>(rows_.size()) - passed));
 }
 
-bool ClassGradeDialog::saveCsv(const QString& path) {
-  std::string error;
-  return core::io::writeTextFileAtomic(path.toStdString(), core::cut::classCsv(rows_), &error);
+bool ClassGradeDialog::saveCsv(const QString& path, QString* why) {
+  // A graded program or the reference is never the CSV's name (issue 29).
+  QString refused = outputIsInput(path, reference_->text());
+  for (const core::cut::ClassRow& row : rows_)
+    if (refused.isEmpty()) refused = outputIsInput(path, QString::fromStdString(row.path));
+  if (refused.isEmpty()) refused = writeFileChecked(path, core::cut::classCsv(rows_));
+  if (why) *why = refused;
+  return refused.isEmpty();
 }
 
 }  // namespace klueng::gui

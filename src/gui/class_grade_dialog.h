@@ -32,7 +32,8 @@ class ClassGradeDialog : public QDialog {
   bool isGrading() const { return watcher_.isRunning(); }
   QTableWidget* table() const { return table_; }
   const std::vector<core::cut::ClassRow>& rows() const { return rows_; }
-  bool saveCsv(const QString& path);
+  // The table as CSV; false with `why` (UI language) when refused or not written, the old file kept.
+  bool saveCsv(const QString& path, QString* why = nullptr);
 
  signals:
   void openProgram(const QString& path);

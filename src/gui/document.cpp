@@ -2,6 +2,7 @@
 
 #include <QFileInfo>
 
+#include "gui/file_save.h"
 #include "klueng/core/diagnostic_codes.h"
 #include "klueng/core/machine/job_check.h"
 #include "klueng/core/machine/stock_inference.h"
@@ -97,9 +98,9 @@ std::string Document::formatted(const QString& gcode) const {
 }
 
 bool Document::save(const QString& path, const QString& gcode, QString* error) {
-  std::string err;
-  if (!core::io::writeTextFileAtomic(path.toStdString(), formatted(gcode), &err)) {
-    if (error) *error = QString::fromStdString(err);
+  // Checked and atomic; a read-only file is refused (DocumentManager asks before).
+  if (const QString why = writeFileChecked(path, formatted(gcode)); !why.isEmpty()) {
+    if (error) *error = why;
     return false;
   }
   headerModified_ = false;

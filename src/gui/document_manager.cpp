@@ -14,6 +14,7 @@
 #include "gui/code_editor.h"
 #include "gui/language.h"
 #include "gui/settings.h"
+#include "klueng/core/io/file_write.h"
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/messages.h"
 
@@ -283,6 +284,22 @@ bool DocumentManager::saveFile(const QString& path) {
                              .arg(omitted)
                              .arg(document_->displayName()));
     return false;
+  }
+  // A read-only file is the owner's "keep this": never written over (not even by root),
+  // never made writable behind the user's back; offer another name instead, as editors do.
+  if (core::io::isReadOnlyFile(path.toStdString())) {
+    QMessageBox box(window_);
+    box.setObjectName(QStringLiteral("readOnlyBox"));
+    box.setIcon(QMessageBox::Warning);
+    box.setWindowTitle(tr("Read-only file"));
+    box.setText(tr("\"%1\" is read-only, so Klueng will not write over it.").arg(QDir::toNativeSeparators(path)));
+    box.setInformativeText(tr("Save your program under another name?"));
+    QPushButton* saveAsButton = box.addButton(tr("Save &As..."), QMessageBox::AcceptRole);
+    saveAsButton->setObjectName(QStringLiteral("saveAsButton"));
+    box.addButton(tr("Cancel"), QMessageBox::RejectRole)->setObjectName(QStringLiteral("cancelButton"));
+    box.setDefaultButton(saveAsButton);
+    box.exec();
+    return box.clickedButton() == saveAsButton && saveAs();
   }
   // A file still going into the editor is saved whole: put the rest in first.
   if (fillingEditor_) {

@@ -12,6 +12,7 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include "gui/file_save.h"
 #include "gui/language.h"
 #include "gui/tool_select_dialog.h"
 #include "klueng/core/io/program_file.h"
@@ -165,10 +166,10 @@ void OffsetDefineDialog::accept() {
   }
   QString error;
   const QString target = writableConfigDir(configDir_, &error);
-  std::string writeError;
-  if (target.isEmpty() || !io::writeTextFileAtomic(target.toStdString() + "/offset.cfg", text, &writeError)) {
-    QMessageBox::warning(this, windowTitle(),
-                         tr("Cannot save the offset table: %1").arg(target.isEmpty() ? error : QString::fromStdString(writeError)));
+  // Checked and atomic (issue 29); the reason in the UI language.
+  const QString writeError = target.isEmpty() ? error : writeFileChecked(target + QStringLiteral("/offset.cfg"), text);
+  if (!writeError.isEmpty()) {
+    QMessageBox::warning(this, windowTitle(), tr("Cannot save the offset table: %1").arg(writeError));
     return;
   }
   savedDir_ = target;

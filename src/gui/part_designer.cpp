@@ -16,7 +16,6 @@
 #include <QMenu>
 #include <QMessageBox>
 #include <QPushButton>
-#include <QSaveFile>
 #include <QSplitter>
 #include <QTabWidget>
 #include <QTableView>
@@ -28,6 +27,7 @@
 
 #include "gui/design_model.h"
 #include "gui/design_preview.h"
+#include "gui/file_save.h"
 #include "gui/language.h"
 #include "gui/part3d_view.h"
 #include "klueng/core/design/dxf_import.h"
@@ -360,11 +360,9 @@ bool PartDesignerDialog::saveFile(const QString& path) {
   PartDesign d = design();
   d.material = material_->currentData().toString().toStdString();
   d.toolMaterial = toolMaterial_->currentData().toString().toStdString();
-  QSaveFile f(path);
-  const std::string text = core::design::writePartDesign(d);
-  if (!f.open(QIODevice::WriteOnly) || f.write(text.data(), static_cast<qint64>(text.size())) < 0 || !f.commit()) {
-    QMessageBox::warning(this, tr("Part designer"),
-                         tr("Cannot save %1: %2").arg(QDir::toNativeSeparators(path), f.errorString()));
+  // The same checked writer as programs: a read-only part file is refused, root too (issue 29).
+  if (const QString why = writeFileChecked(path, core::design::writePartDesign(d)); !why.isEmpty()) {
+    QMessageBox::warning(this, tr("Part designer"), tr("Cannot save %1: %2").arg(QDir::toNativeSeparators(path), why));
     return false;
   }
   undo_->setClean();

@@ -11,6 +11,7 @@
 #include <cerrno>
 #include <unistd.h>
 
+#include "gui/file_save.h"
 #include "klueng/core/io/program_file.h"
 
 namespace klueng::gui {
@@ -48,9 +49,8 @@ bool Recovery::write(const QString& id, const std::string& contents, const QStri
     if (error) *error = folder_;
     return false;
   }
-  std::string why;
-  if (!core::io::writeTextFileAtomic(copyOf(folder_, id).toStdString(), contents, &why)) {
-    if (error) *error = QString::fromStdString(why);
+  if (const QString why = writeFileChecked(copyOf(folder_, id), contents); !why.isEmpty()) {
+    if (error) *error = why;
     return false;
   }
   QSettings note(noteOf(folder_, id), QSettings::IniFormat);

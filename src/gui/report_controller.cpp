@@ -1,6 +1,7 @@
 #include "gui/report_controller.h"
 
 #include <QApplication>
+#include <QBuffer>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -13,6 +14,7 @@
 #include <QPrinter>
 #include <QPrinterInfo>
 
+#include "gui/file_save.h"
 #include "gui/language.h"
 
 namespace klueng::gui {
@@ -125,20 +127,34 @@ bool ReportController::exportPdf(const QString& path) {
                                           tr("PDF files (*.pdf)"));
     if (target.isEmpty()) return false;
   }
+  // Refused with the path, and why when there is more to say than that.
+  const auto fail = [&](const QString& why) {
+    QString text = tr("Cannot write %1").arg(QDir::toNativeSeparators(target));
+    if (!why.isEmpty()) text += QStringLiteral("\n\n") + why;
+    QMessageBox::warning(window_, tr("Export PDF"), text);
+    return false;
+  };
+  // The program itself is never the PDF's name (issue 29).
+  if (const QString why = outputIsInput(target, source.filePath); !why.isEmpty()) return fail(why);
   const render::ReportData data = reportData(source, true);
-  QPdfWriter writer(target);
+  // Into memory, then the checked writer: QPdfWriter says nothing when its file write fails
+  // (a full disk gave a 0-byte PDF and "Exported"); the old file is kept on failure.
+  QBuffer pdf;
+  pdf.open(QIODevice::WriteOnly);
+  QPdfWriter writer(&pdf);
   writer.setTitle(source.displayName);
   writer.setCreator(render::kluengVersion());
   writer.setResolution(600);
   writer.setPageSize(QPageSize(QPageSize::A4));
   writer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
   QPainter painter;
-  if (!painter.begin(&writer)) {
-    QMessageBox::warning(window_, tr("Export PDF"), tr("Cannot write %1").arg(QDir::toNativeSeparators(target)));
-    return false;
-  }
+  if (!painter.begin(&writer)) return fail({});
   paint(painter, writer, data, true, true);
-  painter.end();
+  if (!painter.end()) return fail({});
+  const QByteArray& bytes = pdf.data();
+  if (const QString why = writeFileChecked(target, std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+      !why.isEmpty())
+    return fail(why);
   emit message(tr("Exported %1").arg(QDir::toNativeSeparators(target)), 3000);
   return true;
 }

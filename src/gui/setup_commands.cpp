@@ -4,6 +4,7 @@
 #include <QDir>
 #include <QFile>
 
+#include "gui/file_save.h"
 #include "klueng/core/io/program_file.h"
 
 namespace klueng::gui {
@@ -49,11 +50,11 @@ void SetupFilesCommand::restore(const SetupSnapshot& snapshot) {
   QString error;
   for (const auto& [name, contents] : snapshot.files) {
     const QString path = QDir(dir_).filePath(name);
-    std::string why;
     if (!contents) {
       if (QFile::exists(path) && !QFile::remove(path)) error = path;
-    } else if (!core::io::writeTextFileAtomic(path.toStdString(), std::string_view(contents->constData(), static_cast<std::size_t>(contents->size())), &why)) {
-      error = QStringLiteral("%1: %2").arg(path, QString::fromStdString(why));
+    } else if (const QString why = writeFileChecked(path, std::string_view(contents->constData(), static_cast<std::size_t>(contents->size())));
+               !why.isEmpty()) {
+      error = why;  // names the path, in the UI language
     }
   }
   reload_(dir_, snapshot.overrides, error);

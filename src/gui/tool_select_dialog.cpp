@@ -19,6 +19,7 @@
 #include <QSpinBox>
 #include <QVBoxLayout>
 
+#include "gui/file_save.h"
 #include "gui/language.h"
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/io/tool_library.h"
@@ -431,9 +432,9 @@ void ToolSelectDialog::accept() {
                          QString::fromStdString(core::formatMessage(check.diagnostics.front(), Language::coreLang())));
     return;
   }
-  std::string writeError;
-  if (!io::writeTextFileAtomic(target.toStdString() + "/tools.cfg", text, &writeError)) {
-    QMessageBox::warning(this, windowTitle(), tr("Cannot save the tool table: %1").arg(QString::fromStdString(writeError)));
+  // Checked and atomic (issue 29); the reason in the UI language.
+  if (const QString writeError = writeFileChecked(target + QStringLiteral("/tools.cfg"), text); !writeError.isEmpty()) {
+    QMessageBox::warning(this, windowTitle(), tr("Cannot save the tool table: %1").arg(writeError));
     return;
   }
   tools_ = out;

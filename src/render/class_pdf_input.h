@@ -1,11 +1,12 @@
 #pragma once
 // What klueng-cli class --pdf hands the picture module (klueng-png.so): plain C
-// data, no Qt, so the CLI loads Qt only when a PDF is asked for.
+// data, no Qt, so the CLI loads Qt only when a PDF is asked for. The module
+// returns the PDF's bytes; the CLI writes them (io/file_write.h), so a full
+// disk is seen and the old file kept.
 #include <cstddef>
 
 extern "C" {
 struct KluengClassPdf {
-  const char* path;               // the PDF to write
   int thai;                       // 1: Thai texts and dates
   const char* reference;          // the reference program's name
   double tolerance;               // mm on the diameter
@@ -17,4 +18,6 @@ struct KluengClassPdf {
   int dialect;                    // core::gcode::Dialect
 };
 }
-using KluengClassPdfFn = int (*)(const KluengClassPdf*, char* error, std::size_t errorSize);
+// 1 with *bytes (malloc'd, the caller frees) and *size; 0 with `error` filled.
+using KluengClassPdfFn = int (*)(const KluengClassPdf*, char** bytes, std::size_t* size, char* error,
+                                 std::size_t errorSize);

@@ -1,5 +1,6 @@
 // The class grading report (issue 11): a summary table of every student, then,
 // with --sheets, each student's program sheet and drawing, in one PDF.
+#include <QBuffer>
 #include <QCoreApplication>
 #include <QFileInfo>
 #include <QGuiApplication>
@@ -13,6 +14,7 @@
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/machine/setup_files.h"
 #include "render/class_pdf_input.h"
+#include "render/module_bytes.h"
 #include "render/offscreen_app.h"
 #include "render/report_sheets.h"
 
@@ -89,21 +91,25 @@ void paintSummary(QPainter& p, QPdfWriter& writer, const KluengClassPdf& in) {
 
 }  // namespace klueng::render
 
-extern "C" __attribute__((visibility("default"))) int klueng_class_pdf(const KluengClassPdf* in, char* error,
+extern "C" __attribute__((visibility("default"))) int klueng_class_pdf(const KluengClassPdf* in, char** bytes,
+                                                                       std::size_t* size, char* error,
                                                                        std::size_t errorSize) {
   using namespace klueng;
   auto fail = [&](const QString& why) {
     if (error && errorSize > 0) std::strncpy(error, why.toUtf8().constData(), errorSize - 1), error[errorSize - 1] = '\0';
     return 0;
   };
-  if (!in || !in->path) return fail(QStringLiteral("no output file"));
+  if (!in || !bytes || !size) return fail(QStringLiteral("nothing to write to"));
   render::ensureGuiApplication();
-  QPdfWriter writer(QString::fromUtf8(in->path));
+  // Into memory: QPdfWriter does not report a failed file write (issue 29), the CLI's writer does.
+  QBuffer pdf;
+  pdf.open(QIODevice::WriteOnly);
+  QPdfWriter writer(&pdf);
   writer.setResolution(300);
   writer.setPageSize(QPageSize(QPageSize::A4));
   writer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
   QPainter painter;
-  if (!painter.begin(&writer)) return fail(QStringLiteral("cannot write %1").arg(QString::fromUtf8(in->path)));
+  if (!painter.begin(&writer)) return fail(QStringLiteral("the PDF could not be started"));
   render::paintSummary(painter, writer, *in);
   if (in->sheets > 0) {
     const core::machine::LoadedSetup setup = core::machine::loadMachineSetup(in->configDir ? in->configDir : "");
@@ -124,6 +130,7 @@ extern "C" __attribute__((visibility("default"))) int klueng_class_pdf(const Klu
       render::paintDrawingSheet(painter, writer, data, lang);
     }
   }
-  painter.end();
+  if (!painter.end()) return fail(QStringLiteral("the PDF could not be finished"));
+  if (!render::handBytes(pdf.data(), bytes, size)) return fail(QStringLiteral("the PDF is empty"));
   return 1;
 }

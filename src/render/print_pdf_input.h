@@ -1,14 +1,14 @@
 #pragma once
 // What klueng-cli print hands the picture module (klueng-png.so): the program
 // as the CLI loaded it (stock resolved, tools chosen), so the sheets show the
-// same run as `simulate`.
+// same run as `simulate`. The module returns the PDF's bytes; the CLI writes
+// them (io/file_write.h), so a full disk is seen and the old file kept.
 #include <cstddef>
 
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/machine/job.h"
 
 struct KluengPrintPdf {
-  const char* path;                                 // the PDF to write
   int thai;                                         // 1: Thai texts and dates
   int programSheet;                                 // 1: the program sheet (portrait)
   int drawingSheet;                                 // 1: the drawing sheet (landscape)
@@ -17,4 +17,6 @@ struct KluengPrintPdf {
   const klueng::core::machine::MachineSetup* setup; // tools and offsets of the run
   const klueng::core::machine::JobOptions* job;     // dialect, power-on units, subprogram folder
 };
-using KluengPrintPdfFn = int (*)(const KluengPrintPdf*, char* error, std::size_t errorSize);
+// 1 with *bytes (malloc'd, the caller frees) and *size; 0 with `error` filled.
+using KluengPrintPdfFn = int (*)(const KluengPrintPdf*, char** bytes, std::size_t* size, char* error,
+                                 std::size_t errorSize);

@@ -1,5 +1,6 @@
 // klueng-cli print (issue 10): the program sheet and/or the drawing sheet of one
 // program as a PDF, painted exactly as the GUI's Export PDF paints them.
+#include <QBuffer>
 #include <QPageLayout>
 #include <QPageSize>
 #include <QPainter>
@@ -7,11 +8,13 @@
 #include <QString>
 #include <cstring>
 
+#include "render/module_bytes.h"
 #include "render/offscreen_app.h"
 #include "render/print_pdf_input.h"
 #include "render/report_sheets.h"
 
-extern "C" __attribute__((visibility("default"))) int klueng_print_pdf(const KluengPrintPdf* in, char* error,
+extern "C" __attribute__((visibility("default"))) int klueng_print_pdf(const KluengPrintPdf* in, char** bytes,
+                                                                       std::size_t* size, char* error,
                                                                        std::size_t errorSize) {
   using namespace klueng;
   const auto fail = [&](const QString& why) {
@@ -21,7 +24,7 @@ extern "C" __attribute__((visibility("default"))) int klueng_print_pdf(const Klu
     }
     return 0;
   };
-  if (!in || !in->path || !in->program || !in->setup || !in->job) return fail(QStringLiteral("nothing to print"));
+  if (!in || !bytes || !size || !in->program || !in->setup || !in->job) return fail(QStringLiteral("nothing to print"));
   if (!in->programSheet && !in->drawingSheet) return fail(QStringLiteral("no sheet asked for"));
   render::ensureGuiApplication();
   const render::ReportLanguage lang = in->thai ? render::ReportLanguage::Thai : render::ReportLanguage::English;
@@ -30,7 +33,10 @@ extern "C" __attribute__((visibility("default"))) int klueng_print_pdf(const Klu
   data.fileName = QString::fromUtf8(in->fileName ? in->fileName : "");
   render::addRunResults(data, *in->setup, *in->job, lang, in->drawingSheet != 0);
 
-  QPdfWriter writer(QString::fromUtf8(in->path));
+  // Into memory: QPdfWriter does not report a failed file write (issue 29), the CLI's writer does.
+  QBuffer pdf;
+  pdf.open(QIODevice::WriteOnly);
+  QPdfWriter writer(&pdf);
   writer.setCreator(render::kluengVersion());
   writer.setTitle(data.fileName);
   writer.setResolution(300);
@@ -39,7 +45,7 @@ extern "C" __attribute__((visibility("default"))) int klueng_print_pdf(const Klu
   // A shaft is long: the drawing is landscape, the listing portrait.
   writer.setPageOrientation(in->programSheet ? QPageLayout::Portrait : QPageLayout::Landscape);
   QPainter painter;
-  if (!painter.begin(&writer)) return fail(QStringLiteral("cannot write %1").arg(QString::fromUtf8(in->path)));
+  if (!painter.begin(&writer)) return fail(QStringLiteral("the PDF could not be started"));
   if (in->programSheet) render::paintProgramSheet(painter, writer, data, lang);
   if (in->drawingSheet) {
     if (in->programSheet) {
@@ -48,6 +54,7 @@ extern "C" __attribute__((visibility("default"))) int klueng_print_pdf(const Klu
     }
     render::paintDrawingSheet(painter, writer, data, lang);
   }
-  painter.end();
+  if (!painter.end()) return fail(QStringLiteral("the PDF could not be finished"));
+  if (!klueng::render::handBytes(pdf.data(), bytes, size)) return fail(QStringLiteral("the PDF is empty"));
   return 1;
 }

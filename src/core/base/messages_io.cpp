@@ -25,7 +25,14 @@ constexpr MessageText kMessages[] = {
      "{0}: บรรทัดยาวเกินไป ({1} ตัวอักษร ยาวได้ไม่เกิน {2}) จึงไม่นำบรรทัดนี้มาใช้"},
     {codes::kLinesIgnored, "{0}: lines after line {1} are ignored",
      "{0}: บรรทัดที่อยู่หลังบรรทัดที่ {1} จะไม่ถูกนำมาใช้"},
-    {codes::kCannotWriteFile, "{0}: cannot write the file ({1})", "{0}: บันทึกไฟล์ไม่ได้ ({1})"},
+    // Writing (io/file_write.h): an existing file of that name always keeps its bytes.
+    {codes::kCannotWriteFile, "{0}: cannot write the file ({1}); an existing file of that name is left unchanged",
+     "{0}: บันทึกไฟล์ไม่ได้ ({1}) ถ้ามีไฟล์ชื่อนี้อยู่แล้ว ไฟล์นั้นยังคงเดิม"},
+    {codes::kNoSpaceToWrite,
+     "{0}: cannot write the file: there is no space for it (the disk is full, or the file is over the size "
+     "allowed); an existing file of that name is left unchanged",
+     "{0}: บันทึกไฟล์ไม่ได้ เพราะไม่มีที่ว่างพอ (ดิสก์เต็ม หรือไฟล์ใหญ่เกินขนาดที่อนุญาต) "
+     "ถ้ามีไฟล์ชื่อนี้อยู่แล้ว ไฟล์นั้นยังคงเดิม"},
 
     // Program header (SPEC 2).
     {codes::kHeaderTooShort,
@@ -51,6 +58,8 @@ constexpr MessageText kMessages[] = {
      "(หลักหน่วย 0 = นิ้ว หรือ 1 = มม. ตามด้วยขนาด เช่น 150 = 50 มม.)"},
     {codes::kBadBore, "stock bore: '{1}' must be a number greater than 0 and less than the diameter {2}",
      "รูในของชิ้นงานท่อ: '{1}' ต้องเป็นตัวเลขที่มากกว่า 0 และน้อยกว่าเส้นผ่านศูนย์กลาง {2}"},
+    {codes::kFileReadOnly, "{0}: the file is read-only, so it was not replaced; write to another file, or make it writable first",
+     "{0}: ไฟล์นี้เป็นแบบอ่านอย่างเดียว จึงไม่ได้เขียนทับ ให้บันทึกเป็นไฟล์อื่น หรือเปลี่ยนให้เขียนได้ก่อน"},
 
     // tools.cfg (SPEC 11).
     {codes::kToolTableShort, "{0}: the tool table needs 8 lines (bitmaps of tools 01 to 08) but has {1}; tools {2} to 08 have no bitmap",
@@ -63,6 +72,13 @@ constexpr MessageText kMessages[] = {
      "{0}: มีดตัด {1}: ไม่มีมีดตัด '{2}' ในคลังมีดตัด (ที่มี: {3})"},
     {codes::kBitmapIsFolder, "{0}: tool {1}: '{2}' is a folder, not a bitmap file",
      "{0}: มีดตัด {1}: '{2}' เป็นโฟลเดอร์ ไม่ใช่ไฟล์ภาพ"},
+
+    // Writing files (io/file_write.h).
+    {codes::kFolderNotWritable, "{0}: cannot create the file: the folder {1} does not exist or cannot be written to",
+     "{0}: สร้างไฟล์ไม่ได้ เพราะไม่มีโฟลเดอร์ {1} หรือไม่มีสิทธิ์เขียนลงในโฟลเดอร์นี้"},
+    {codes::kOutputIsInput, "{0}: this output is the input file {1}; writing it would destroy that file, so choose another name",
+     "{0}: ไฟล์ผลลัพธ์นี้คือไฟล์ขาเข้า {1} ถ้าเขียนลงไปไฟล์นั้นจะหายไป จึงให้ตั้งชื่อไฟล์อื่น"},
+    {codes::kOutputIsFolder, "{0}: this is a folder, not a file", "{0}: นี่คือโฟลเดอร์ ไม่ใช่ไฟล์"},
 
     // offset.cfg (SPEC 11).
     {codes::kOffsetTableShort, "{0}: the offset table needs 16 lines (X Z R T of offsets 01 to 16) but has {1}; offsets {2} to 16 are set to 0 0 0 0",

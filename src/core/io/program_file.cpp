@@ -8,14 +8,10 @@
 #include <fstream>
 
 #include "io/text_util.h"
-#include "klueng/core/io/text_encoding.h"
-
-#ifndef _WIN32
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 #include "klueng/core/diagnostic_codes.h"
-#endif
+#include "klueng/core/io/file_write.h"
+#include "klueng/core/io/text_encoding.h"
+#include "klueng/core/messages.h"
 
 namespace klueng::core::io {
 
@@ -309,83 +305,10 @@ std::string formatProgramFile(const ProgramFile& file) {
   return out;
 }
 
-namespace {
-
-// Writes all of text to fd; on failure returns errno's text.
-std::string writeAll(int fd, std::string_view text) {
-  std::size_t written = 0;
-  while (written < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return std::strerror(errno);
-    }
-    written += static_cast<std::size_t>(n);
-  }
-  return {};
-}
-
-}  // namespace
-
 bool writeTextFileAtomic(const std::string& path, std::string_view text, std::string* error) {
-  namespace fs = std::filesystem;
-  const auto fail = [&](const std::string& what) {
-    if (error) *error = what;
-    return false;
-  };
-#ifndef _WIN32
-  std::error_code ec;
-  fs::path target(path);
-  // A link is followed: the file it names gets the new text, the link stays a link.
-  if (fs::is_symlink(fs::symlink_status(target, ec))) target = fs::weakly_canonical(target, ec);
-  const fs::file_status status = fs::status(target, ec);
-  if (fs::is_directory(status)) return fail(path + ": this is a folder, not a file");
-  if (fs::exists(status) && !fs::is_regular_file(status)) {
-    // A device or a pipe cannot be replaced by renaming over it: write into it.
-    const int fd = ::open(target.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
-    if (fd < 0) return fail(path + ": cannot open: " + std::strerror(errno));
-    std::string reason = writeAll(fd, text);
-    if (::close(fd) != 0 && reason.empty()) reason = std::strerror(errno);
-    return reason.empty() ? true : fail(path + ": write failed: " + reason);
-  }
-  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  std::string pattern = (folder / ("." + target.filename().string() + ".tmp-XXXXXX")).string();
-  const int fd = ::mkstemp(pattern.data());
-  if (fd < 0) return fail(path + ": cannot create a temporary file: " + std::strerror(errno));
-  // Keep the mode of the file we replace; new files get rw-r--r--.
-  struct stat old {};
-  ::fchmod(fd, ::stat(target.c_str(), &old) == 0 ? (old.st_mode & 07777) : 0644);
-  std::string reason = writeAll(fd, text);
-  if (reason.empty() && ::fsync(fd) != 0) reason = std::strerror(errno);
-  if (::close(fd) != 0 && reason.empty()) reason = std::strerror(errno);
-  if (!reason.empty()) {
-    ::unlink(pattern.c_str());
-    return fail(path + ": write failed: " + reason);
-  }
-  if (::rename(pattern.c_str(), target.c_str()) != 0) {
-    reason = std::strerror(errno);
-    ::unlink(pattern.c_str());
-    return fail(path + ": cannot replace the file: " + reason);
-  }
-  // Make the rename itself durable; failure here does not undo a complete write.
-  if (const int dirFd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY); dirFd >= 0) {
-    ::fsync(dirFd);
-    ::close(dirFd);
-  }
-  return true;
-#else
-  const std::string temp = path + ".tmp";
-  {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    if (!out) return fail(path + ": cannot create a temporary file");
-    out.write(text.data(), static_cast<std::streamsize>(text.size()));
-    if (!out.flush()) return fail(path + ": write failed");
-  }
-  std::error_code ec;
-  fs::rename(temp, path, ec);
-  if (ec) return fail(path + ": cannot replace the file: " + ec.message());
-  return true;
-#endif
+  const std::optional<Diagnostic> failed = writeFileAtomic(path, text);
+  if (failed && error) *error = formatMessage(*failed, Lang::En);
+  return !failed;
 }
 
 }  // namespace klueng::core::io

@@ -420,7 +420,7 @@ TEST(ProgramFile, AtomicWriteToAFullDeviceFailsAndLeavesIt) {
   ASSERT_TRUE(std::filesystem::is_character_file("/dev/full"));
   std::string error;
   EXPECT_FALSE(writeTextFileAtomic("/dev/full", "G21\n", &error));
-  EXPECT_NE(error.find(std::strerror(ENOSPC)), std::string::npos) << error;
+  EXPECT_NE(error.find("the disk is full"), std::string::npos) << error;
   EXPECT_TRUE(std::filesystem::is_character_file("/dev/full"));
 }
 

@@ -92,8 +92,8 @@ std::string formatProgramFile(const ProgramFile& file);
 // on one line, and marked with a leading no-break space when it would read as
 // G-code ("M10 bolt"), which the reader drops again.
 std::string headerText(std::string_view text);
-// Atomic write (temporary file in the same folder + fsync + rename).
-// Returns false and fills error (English, for logs) on failure.
+// writeFileAtomic (io/file_write.h) for callers that only log: false and
+// `error` (the diagnostic's English text) on failure. Read-only files are refused.
 bool writeTextFileAtomic(const std::string& path, std::string_view text, std::string* error = nullptr);
 
 }  // namespace klueng::core::io
