@@ -32,12 +32,6 @@ std::string jsonDiagnostic(const Diagnostic& d) {
       args, jsonString(formatMessage(d, Lang::En)), jsonString(formatMessage(d, Lang::Th)));
 }
 
-bool writeText(const std::string& path, const std::string& text) {
-  std::string error;
-  if (io::writeTextFileAtomic(path, text, &error)) return true;
-  std::fprintf(stderr, "klueng-cli simulate: cannot write %s: %s\n", path.c_str(), error.c_str());
-  return false;
-}
 
 }  // namespace
 
@@ -81,9 +75,12 @@ CutOutcome runCut(const std::string& file, const io::JobHeader& header, const ma
     }
   }
 
-  if (!options.profilePath.empty()) outcome.written = writeText(options.profilePath, part.toCsv()) && outcome.written;
-  if (!options.svgPath.empty()) outcome.written = writeText(options.svgPath, part.toSvg()) && outcome.written;
-  if (!options.dxfPath.empty()) outcome.written = writeText(options.dxfPath, part.toDxf()) && outcome.written;
+  if (!options.profilePath.empty()) outcome.written =
+      writeOutput(options.profilePath, part.toCsv(), options.lang) && outcome.written;
+  if (!options.svgPath.empty()) outcome.written =
+      writeOutput(options.svgPath, part.toSvg(), options.lang) && outcome.written;
+  if (!options.dxfPath.empty()) outcome.written =
+      writeOutput(options.dxfPath, part.toDxf(), options.lang) && outcome.written;
   if (options.features) {
     const cut::PartFeatures features = cut::partFeatures(sim.stock());
     for (const auto* list : {&features.outside, &features.inside})
@@ -114,7 +111,7 @@ CutOutcome runCut(const std::string& file, const io::JobHeader& header, const ma
         sim.stock().length(), sim.stock().bore(), sim.stock().initialVolume(), sim.removedVolume(), part.volume(), part.maxDiameter(),
         part.length(), part.leftFaceZ(), part.rightFaceZ(), sim.stock().resolution(), tool.x() + 0.0,
         2.0 * tool.y() + 0.0);
-    outcome.written = writeText(options.jsonPath, json) && outcome.written;
+    outcome.written = writeOutput(options.jsonPath, json, options.lang) && outcome.written;
   }
   return outcome;
 }
