@@ -35,8 +35,21 @@ CliRun runCli(const std::string& args, const std::string& lang = "LANG=C") {
   return run;
 }
 
+// This process's folder of test files, removed when the tests end (one folder per run otherwise piles up in /tmp).
+const fs::path& testFolder() {
+  struct Folder {
+    fs::path path = fs::temp_directory_path() / ("klueng-cli-stock-" + std::to_string(::getpid()));
+    ~Folder() {
+      std::error_code ec;
+      fs::remove_all(path, ec);
+    }
+  };
+  static const Folder folder;
+  return folder.path;
+}
+
 std::string writeFile(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / ("klueng-cli-stock-" + std::to_string(::getpid()));
+  const fs::path& dir = testFolder();
   fs::create_directories(dir);
   const std::string path = (dir / name).string();
   std::ofstream(path, std::ios::binary) << text;

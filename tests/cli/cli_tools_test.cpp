@@ -33,8 +33,22 @@ CliResult run(const std::string& args, const std::string& lang = "C") {
   return r;
 }
 
+// This process's folder of test programs, removed when the tests end.
+const std::filesystem::path& testFolder() {
+  struct Folder {
+    std::filesystem::path path =
+        std::filesystem::temp_directory_path() / ("klueng-cli-tools-" + std::to_string(::getpid()));
+    ~Folder() {
+      std::error_code ec;
+      std::filesystem::remove_all(path, ec);
+    }
+  };
+  static const Folder folder;
+  return folder.path;
+}
+
 std::string writeProgram(const std::string& name, const std::string& text) {
-  const auto dir = std::filesystem::temp_directory_path() / ("klueng-cli-tools-" + std::to_string(::getpid()));
+  const auto& dir = testFolder();
   std::filesystem::create_directories(dir);
   const std::string path = (dir / name).string();
   std::ofstream(path, std::ios::binary) << text;
