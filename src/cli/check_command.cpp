@@ -139,13 +139,9 @@ std::vector<std::string> expandFolders(const std::vector<std::string>& args) {
       continue;
     }
     std::vector<std::string> inFolder;
-    for (const auto& entry : fs::directory_iterator(arg, ec)) {
-      std::string ext = entry.path().extension().string();
-      std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-      if (entry.is_regular_file(ec) &&
-          (ext == ".txt" || ext == ".nc" || ext == ".cnc" || ext == ".tap" || ext == ".ngc" || ext == ".gcode"))
+    for (const auto& entry : fs::directory_iterator(arg, ec))
+      if (entry.is_regular_file(ec) && io::isProgramFileName(entry.path().string()))
         inFolder.push_back(entry.path().string());
-    }
     std::sort(inFolder.begin(), inFolder.end());
     if (inFolder.empty()) files.push_back(arg);  // reported as unreadable (a folder)
     files.insert(files.end(), inFolder.begin(), inFolder.end());

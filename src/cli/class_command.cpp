@@ -139,11 +139,12 @@ int runClass(const std::vector<std::string>& args) {
     std::fprintf(stderr, "klueng-cli class: %s is not a folder\n", o.dir.c_str());
     return 2;
   }
-  // Every file in the folder is graded, so every one is an input the outputs must not replace.
+  // Every program file in the folder is graded, so every one is an input the outputs must not
+  // replace (the grades' own CSV or PDF beside them is not a program: a second run writes it again).
   std::vector<std::string> inputs = setupFiles(config);
   inputs.push_back(o.reference);
   for (const std::filesystem::directory_entry& e : std::filesystem::directory_iterator(o.dir, ec))
-    if (e.is_regular_file(ec)) inputs.push_back(e.path().string());
+    if (e.is_regular_file(ec) && io::isProgramFileName(e.path().string())) inputs.push_back(e.path().string());
   if (!outputsAllowed({o.csv, o.pdf}, inputs, o.lang)) return 2;
   const std::vector<cut::ClassRow> rows = cut::gradeClass(
       o.dir, o.reference, *reference.part, config.setup, *request, o.tolerance,

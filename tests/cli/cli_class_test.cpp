@@ -107,6 +107,39 @@ TEST(CliClass, ThirtyStudentsGetTheRightPassOrFail) {
   EXPECT_EQ(rows, 30);
 }
 
+// Issue 29 item 7: a class folder as a teacher keeps it — the grades' own CSV
+// from the last run, a PDF, a picture, and a subprogram file the students'
+// programs call (O2000.nc, M98 P2000). Only the students' programs get a row,
+// the subprogram counts as theirs, and the CSV can be written again beside them.
+TEST(CliClass, OnlyTheStudentsProgramsAreGradedAndTheGradesCanBeWrittenAgain) {
+  const fs::path dir = fs::temp_directory_path() / "klueng_cli_class_folder_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string reference = slurp(fs::path(KLUENG_SAMPLES_DIR) / "01-step-shaft.txt");
+  ASSERT_FALSE(reference.empty());
+  std::ofstream(dir / "anan.txt", std::ios::binary) << reference;
+  // The same part, its finishing pass moved into a subprogram file.
+  std::ofstream(dir / "O2000.nc", std::ios::binary) << "O2000\nG00 X0. Z2.\nM99\n";
+  std::ofstream(dir / "boon.txt", std::ios::binary) << replaced(reference, "N15 G99", "N15 G99\nM98 P2000");
+  std::ofstream(dir / "notes.pdf", std::ios::binary) << "%PDF-1.4\n";
+  std::ofstream(dir / "lathe.png", std::ios::binary) << "\x89PNG";
+  const fs::path csvPath = dir / "grades.csv";
+  const std::string args = "'" + dir.string() + "' --reference '" + KLUENG_SAMPLES_DIR +
+                           "/01-step-shaft.txt' --tolerance 0.05 --csv '" + csvPath.string() + "'";
+  for (int runs = 0; runs < 2; ++runs) {  // the second run finds last run's grades.csv in the folder
+    std::string err;
+    ASSERT_EQ(run(args, &err), 0) << "run " << runs + 1 << ":\n" << err;
+    EXPECT_NE(err.find("2 programs: 2 pass, 0 fail"), std::string::npos) << err;
+    const std::string csv = slurp(csvPath);
+    EXPECT_NE(csv.find("\nanan.txt,pass,"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("\nboon.txt,pass,"), std::string::npos) << csv;
+    EXPECT_EQ(csv.find("O2000.nc"), std::string::npos) << csv;
+    EXPECT_EQ(csv.find("grades.csv"), std::string::npos) << csv;
+    EXPECT_EQ(csv.find("notes.pdf"), std::string::npos) << csv;
+  }
+  fs::remove_all(dir);
+}
+
 std::string pdfText(const fs::path& pdf, const std::string& options = "") {
   std::string text;
   FILE* pipe = ::popen(("pdftotext " + options + " '" + pdf.string() + "' - 2>/dev/null").c_str(), "r");

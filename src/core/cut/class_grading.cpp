@@ -34,6 +34,9 @@ GradedProgram gradeProgram(const std::string& path, const machine::MachineSetup&
   GradedProgram g;
   try {
     const machine::JobFile job = machine::loadJobFile(path, setup, request, io::shippedToolLibrary());
+    if (job.program)
+      g.subprogramFiles.assign(job.program->files.begin() + std::min<std::ptrdiff_t>(1, std::ssize(job.program->files)),
+                               job.program->files.end());
     for (const Diagnostic& d : job.diagnostics)
       if (isError(d.severity) && g.errors++ == 0) g.firstError = place(d);
     if (job.unreadable || !job.file || !job.program || job.hasErrors()) {
@@ -71,7 +74,9 @@ std::vector<ClassRow> gradeClass(const std::string& folder, const std::string& r
   std::vector<fs::path> files;
   for (const fs::directory_entry& e : fs::directory_iterator(folder, ec)) {
     std::error_code same;
-    if (e.is_regular_file(ec) && !fs::equivalent(e.path(), referencePath, same)) files.push_back(e.path());
+    if (e.is_regular_file(ec) && io::isProgramFileName(e.path().string()) &&
+        !fs::equivalent(e.path(), referencePath, same))
+      files.push_back(e.path());
   }
   std::sort(files.begin(), files.end());
   std::vector<ClassRow> rows;
@@ -89,6 +94,16 @@ std::vector<ClassRow> gradeClass(const std::string& folder, const std::string& r
     }
     rows.push_back(std::move(row));
   }
+  // A subprogram file the others call (M98 P2000 reading O2000.nc) is part of their programs, not a student's.
+  std::vector<fs::path> called;
+  for (const ClassRow& r : rows)
+    for (const std::string& f : r.graded.subprogramFiles) called.emplace_back(f);
+  std::erase_if(rows, [&](const ClassRow& r) {
+    return std::any_of(called.begin(), called.end(), [&](const fs::path& c) {
+      std::error_code same;
+      return fs::equivalent(c, r.path, same);
+    });
+  });
   return rows;
 }
 

@@ -311,4 +311,10 @@ bool writeTextFileAtomic(const std::string& path, std::string_view text, std::st
   return !failed;
 }
 
+bool isProgramFileName(std::string_view path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == ".txt" || ext == ".nc" || ext == ".cnc" || ext == ".tap" || ext == ".ngc" || ext == ".gcode";
+}
+
 }  // namespace klueng::core::io

@@ -21,6 +21,7 @@ struct GradedProgram {
   std::string firstError;     // "E201 line 18", "unreadable"
   std::string alarm;          // "A104 line 15"
   double cycleTime = 0.0;     // seconds (up to the alarm)
+  std::vector<std::string> subprogramFiles;  // files of the folder its calls read (the program's own)
 };
 
 // Loads, checks, runs and cuts one program. Never throws for a bad file.
@@ -36,8 +37,10 @@ struct ClassRow {
   bool pass = false;
 };
 
-// Every regular file of `folder` (sorted by name; the reference itself left
-// out) against `reference`'s part; `progress(i, n, name)` before each.
+// Every program file of `folder` (io::isProgramFileName, as `check DIR` takes
+// them; sorted by name; the reference itself left out) against `reference`'s
+// part; `progress(i, n, name)` before each. A file the others call as a
+// subprogram belongs to them and gets no row of its own.
 std::vector<ClassRow> gradeClass(const std::string& folder, const std::string& referencePath, const Stock& reference,
                                  const machine::MachineSetup& setup, const machine::JobFileRequest& request,
                                  double tolerance, const std::function<void(int, int, const std::string&)>& progress = {});

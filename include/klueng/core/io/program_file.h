@@ -84,6 +84,10 @@ ReadResult<ProgramFile> parseProgramFile(std::string_view bytes, const JobHeader
                                          const std::string& fileName = {});
 ReadResult<ProgramFile> readProgramFile(const std::string& path, const JobHeader& defaultsForPlain = {});
 
+// A file a folder of programs holds as a program (`check DIR`, `class DIR`):
+// .txt .nc .cnc .tap .ngc .gcode, any case; never a CSV, PDF or PNG beside them.
+bool isProgramFileName(std::string_view path);
+
 // Text in Klueng's format (UTF-8, LF). A plain file is written back plain.
 // Sizes are written as unit digit + shortest number (50 mm -> "150"), a bore
 // after an `x` on line 4 ("1118x90"); a file without a bore is written as before.
