@@ -270,8 +270,8 @@
     </message>
     <message>
         <location filename="../src/gui/help_contents.cpp" line="45" />
-        <source>A word is a letter followed at once by a number: &lt;tt&gt;X25.4&lt;/tt&gt;, &lt;tt&gt;G1&lt;/tt&gt;, &lt;tt&gt;Z-3&lt;/tt&gt;. X is a diameter. Comments are written in ( ) or after ;. A / at the start of a block skips it when the Block Skip switch is on. Numbers without a decimal point are millimetres.</source>
-        <translation>คำสั่งหนึ่งคำคืออักขระตามด้วยตัวเลขทันที: &lt;tt&gt;X25.4&lt;/tt&gt;, &lt;tt&gt;G1&lt;/tt&gt;, &lt;tt&gt;Z-3&lt;/tt&gt; ค่า X เป็นเส้นผ่านศูนย์กลาง หมายเหตุเขียนไว้ใน ( ) หรือหลังเครื่องหมาย ; เครื่องหมาย / หน้าบล็อกจะข้ามบล็อกนั้นเมื่อเปิดสวิตช์ข้ามบล็อก ตัวเลขที่ไม่มีจุดทศนิยมมีหน่วยเป็นมิลลิเมตร</translation>
+        <source>A word is a letter followed at once by a number: &lt;tt&gt;X25.4&lt;/tt&gt;, &lt;tt&gt;G1&lt;/tt&gt;, &lt;tt&gt;Z-3&lt;/tt&gt;. X is a diameter. Comments are written in ( ) or after ;. A / at the start of a block skips it when the Block Skip switch is on. A length without a decimal point is whole millimetres (&lt;tt&gt;X30&lt;/tt&gt; = 30 mm) in Klueng's own programs; a program from the shop may be read in least input increments (&lt;tt&gt;X30&lt;/tt&gt; = 0.030 mm) as a standard Fanuc or Haas reads it: the setup strip says which, and Job details changes it.</source>
+        <translation>คำสั่งหนึ่งคำคืออักขระตามด้วยตัวเลขทันที: &lt;tt&gt;X25.4&lt;/tt&gt;, &lt;tt&gt;G1&lt;/tt&gt;, &lt;tt&gt;Z-3&lt;/tt&gt; ค่า X เป็นเส้นผ่านศูนย์กลาง หมายเหตุเขียนไว้ใน ( ) หรือหลังเครื่องหมาย ; เครื่องหมาย / หน้าบล็อกจะข้ามบล็อกนั้นเมื่อเปิดสวิตช์ข้ามบล็อก ความยาวที่ไม่มีจุดทศนิยมในโปรแกรมของ Klueng เองมีหน่วยเป็นมิลลิเมตรเต็มหน่วย (&lt;tt&gt;X30&lt;/tt&gt; = 30 มม.) ส่วนโปรแกรมที่นำมาจากโรงงานอาจอ่านเป็นหน่วยป้อนค่าที่เล็กที่สุด (&lt;tt&gt;X30&lt;/tt&gt; = 0.030 มม.) แบบที่เครื่อง Fanuc หรือ Haas ทั่วไปอ่าน แถบการตั้งเครื่องบอกว่าอ่านแบบใด และเปลี่ยนได้ที่รายละเอียดงาน</translation>
     </message>
     <message>
         <location filename="../src/gui/help_contents.cpp" line="49" />

@@ -101,7 +101,10 @@ QString HelpContents::buildHtml(bool thai, core::gcode::Dialect dialect) {
   html += QStringLiteral("<p>%1</p>").arg(
       tr("A word is a letter followed at once by a number: <tt>X25.4</tt>, <tt>G1</tt>, <tt>Z-3</tt>. "
          "X is a diameter. Comments are written in ( ) or after ;. A / at the start of a block skips it "
-         "when the Block Skip switch is on. Numbers without a decimal point are millimetres."));
+         "when the Block Skip switch is on. A length without a decimal point is whole millimetres "
+         "(<tt>X30</tt> = 30 mm) in Klueng's own programs; a program from the shop may be read in least "
+         "input increments (<tt>X30</tt> = 0.030 mm) as a standard Fanuc or Haas reads it: the setup strip "
+         "says which, and Job details changes it."));
   html += QStringLiteral("<p>%1 <b>%2</b></p>")
               .arg(tr("Dialect:"), dialect == core::gcode::Dialect::Fanuc ? tr("Fanuc 0i-TF")
                                   : dialect == core::gcode::Dialect::Haas ? tr("Haas ST (NGC)")
