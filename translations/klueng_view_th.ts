@@ -101,6 +101,26 @@
         <source>How X30 or G71 U1250 is read. Whole: X30 = 30 mm (calculator-type input). Least input increments: X30 = 0.030 mm, 0.0030 in under G20, as a standard Fanuc or Haas reads it. As the program&apos;s numbers show: a plain program&apos;s own numbers decide (G71 U1250 only makes sense in increments), else the machine setting (machine.cfg calculator_input).</source>
         <translation>วิธีอ่าน X30 หรือ G71 U1250 เต็มหน่วย: X30 = 30 มม. (การป้อนค่าแบบเครื่องคิดเลข) หน่วยป้อนค่าที่เล็กที่สุด: X30 = 0.030 มม. (0.0030 นิ้วเมื่อใช้ G20) แบบที่เครื่อง Fanuc หรือ Haas ทั่วไปอ่าน ตามตัวเลขในชุดรหัสสั่งการทำงาน: ตัวเลขในชุดรหัสสั่งการทำงานที่ไม่มีส่วนหัวเป็นตัวตัดสิน (G71 U1250 มีความหมายเฉพาะเมื่ออ่านเป็นหน่วยป้อนค่าที่เล็กที่สุด) ถ้าตัดสินไม่ได้ใช้ค่าที่ตั้งไว้ที่เครื่อง (machine.cfg calculator_input)</translation>
     </message>
+    <message>
+        <source>Tool side:</source>
+        <translation>ด้านของมีดตัด:</translation>
+    </message>
+    <message>
+        <source>As the program&apos;s moves show</source>
+        <translation>ตามการเคลื่อนที่ในชุดรหัสสั่งการทำงาน</translation>
+    </message>
+    <message>
+        <source>In front of the centre line</source>
+        <translation>ด้านหน้าแนวศูนย์กลาง</translation>
+    </message>
+    <message>
+        <source>Beyond the centre line (rear tool post, X &lt; 0)</source>
+        <translation>เลยแนวศูนย์กลาง (ป้อมมีดด้านหลัง X &lt; 0)</translation>
+    </message>
+    <message>
+        <source>Where the tools work. Beyond the centre line: a rear tool post or a lathe programmed in negative X; the tools are drawn and cut mirrored onto the front. As the program&apos;s moves show: a plain program that cuts at X &lt; 0 has its tools there, else the machine setting (machine.cfg tools_beyond_centre).</source>
+        <translation>ตำแหน่งที่มีดตัดทำงาน เลยแนวศูนย์กลาง: ป้อมมีดด้านหลังหรือเครื่องกลึงที่เขียนโปรแกรมด้วยค่า X ติดลบ มีดตัดจะถูกวาดและกลึงแบบกลับด้านมาด้านหน้า ตามการเคลื่อนที่ในชุดรหัสสั่งการทำงาน: ชุดรหัสสั่งการทำงานที่ไม่มีส่วนหัวซึ่งกลึงที่ X &lt; 0 มีมีดตัดอยู่ด้านนั้น ถ้าไม่เช่นนั้นใช้ค่าที่ตั้งไว้ที่เครื่อง (machine.cfg tools_beyond_centre)</translation>
+    </message>
 </context>
 <context>
     <name>klueng::gui::OffsetDefineDialog</name>
@@ -705,6 +725,22 @@
     <message>
         <source>Click to change it for this file (Job details).</source>
         <translation>คลิกเพื่อเปลี่ยนการอ่านสำหรับไฟล์นี้ (รายละเอียดงาน)</translation>
+    </message>
+    <message>
+        <source>Tools beyond the centre line (a rear tool post), drawn mirrored, as chosen in Job details</source>
+        <translation>มีดตัดอยู่เลยแนวศูนย์กลาง (ป้อมมีดด้านหลัง) วาดกลับด้าน ตามที่เลือกไว้ในรายละเอียดงาน</translation>
+    </message>
+    <message>
+        <source>Tools in front of the centre line, as chosen in Job details</source>
+        <translation>มีดตัดอยู่ด้านหน้าแนวศูนย์กลาง ตามที่เลือกไว้ในรายละเอียดงาน</translation>
+    </message>
+    <message>
+        <source>Tools beyond the centre line (a rear tool post), drawn mirrored, as the machine is set (machine.cfg)</source>
+        <translation>มีดตัดอยู่เลยแนวศูนย์กลาง (ป้อมมีดด้านหลัง) วาดกลับด้าน ตามที่ตั้งไว้ที่เครื่อง (machine.cfg)</translation>
+    </message>
+    <message>
+        <source>Click to change the tool side for this file (Job details).</source>
+        <translation>คลิกเพื่อเปลี่ยนด้านของมีดตัดสำหรับไฟล์นี้ (รายละเอียดงาน)</translation>
     </message>
 </context>
 </TS>

@@ -36,7 +36,7 @@ void CheckController::checkText(const QString& text) {
   inFlight_ = true;
   const Request r = request_();
   watcher_.setFuture(QtConcurrent::run(checkWithTools, text, r.firstLine, r.options, r.setup, r.overrides, r.stations,
-                                       r.folder, r.calculatorInput));
+                                       r.folder, r.calculatorInput, r.toolsBeyondCentre));
   emit started();
 }
 

@@ -27,6 +27,7 @@ class CheckController : public QObject {
     int stations = 0;  // the highest T station (the dialect's limit, else the turret)
     QString folder;    // subprogram files; empty for an untitled program
     std::optional<bool> calculatorInput;  // the file's reading of lengths without a point (Job details)
+    std::optional<bool> toolsBeyondCentre;  // the file's tool side (Job details)
   };
 
   CheckController(QObject* parent, std::function<QString()> text, std::function<Request()> request);

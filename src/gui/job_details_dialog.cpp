@@ -68,6 +68,13 @@ JobDetailsDialog::JobDetailsDialog(const io::JobHeader& h, QWidget* parent) : QD
   decimalPoint_->addItem(QString(), 1);
   decimalPoint_->addItem(QString(), 0);
   decimalPoint_->setCurrentIndex(!h.calculatorInput ? 0 : *h.calculatorInput ? 1 : 2);
+  // Item data: -1 unset (what the program's moves show, else the machine), 0 in front, 1 beyond.
+  toolSide_ = new QComboBox(this);
+  toolSide_->setObjectName(QStringLiteral("toolSide"));
+  toolSide_->addItem(QString(), -1);
+  toolSide_->addItem(QString(), 0);
+  toolSide_->addItem(QString(), 1);
+  toolSide_->setCurrentIndex(!h.toolsBeyondCentre ? 0 : *h.toolsBeyondCentre ? 2 : 1);
   form_ = new QFormLayout;
   form_->addRow(new QLabel(this), project_);
   form_->addRow(new QLabel(this), part_);
@@ -77,6 +84,7 @@ JobDetailsDialog::JobDetailsDialog(const io::JobHeader& h, QWidget* parent) : QD
   form_->addRow(new QLabel(this), pair(this, bore_, boreUnit_));
   form_->addRow(new QLabel(this), programmer_);
   form_->addRow(new QLabel(this), decimalPoint_);
+  form_->addRow(new QLabel(this), toolSide_);
   buttons_ = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(form_);
@@ -104,6 +112,7 @@ io::JobHeader JobDetailsDialog::header() const {
   h.lengthUnit = static_cast<io::LengthUnit>(lengthUnit_->currentData().toInt());
   h.bore = bore_->value() < h.diameter ? bore_->value() : 0.0;
   if (const int reading = decimalPoint_->currentData().toInt(); reading >= 0) h.calculatorInput = reading == 1;
+  if (const int side = toolSide_->currentData().toInt(); side >= 0) h.toolsBeyondCentre = side == 1;
   return h;
 }
 
@@ -122,8 +131,8 @@ void JobDetailsDialog::retranslate() {
   const QString labels[] = {tr("Project:"),      tr("Part:"),
                             tr("Material:"),     tr("Stock diameter:"),
                             tr("Stock length:"), tr("Bore diameter (tube; 0 = solid bar):"),
-                            tr("Programmer:"),   tr("Lengths without a decimal point:")};
-  for (int i = 0; i < 8; ++i)
+                            tr("Programmer:"),   tr("Lengths without a decimal point:"), tr("Tool side:")};
+  for (int i = 0; i < 9; ++i)
     if (auto* label = qobject_cast<QLabel*>(form_->itemAt(i, QFormLayout::LabelRole)->widget())) label->setText(labels[i]);
   for (QComboBox* unit : {diameterUnit_, lengthUnit_}) {
     unit->setItemText(0, tr("mm"));
@@ -139,6 +148,13 @@ void JobDetailsDialog::retranslate() {
          "X30 = 0.030 mm, 0.0030 in under G20, as a standard Fanuc or Haas reads it. As the program's numbers "
          "show: a plain program's own numbers decide (G71 U1250 only makes sense in increments), else the "
          "machine setting (machine.cfg calculator_input)."));
+  toolSide_->setItemText(0, tr("As the program's moves show"));
+  toolSide_->setItemText(1, tr("In front of the centre line"));
+  toolSide_->setItemText(2, tr("Beyond the centre line (rear tool post, X < 0)"));
+  toolSide_->setToolTip(
+      tr("Where the tools work. Beyond the centre line: a rear tool post or a lathe programmed in negative X; the "
+         "tools are drawn and cut mirrored onto the front. As the program's moves show: a plain program that cuts "
+         "at X < 0 has its tools there, else the machine setting (machine.cfg tools_beyond_centre)."));
   validate();
 }
 

@@ -47,6 +47,7 @@ class JobDetailsDialog : public QDialog {
   QLabel* problem_ = nullptr;
   QLineEdit* programmer_ = nullptr;
   QComboBox* decimalPoint_ = nullptr;  // objectName "decimalPoint": unset / whole / increments
+  QComboBox* toolSide_ = nullptr;      // objectName "toolSide": unset / in front / beyond the centre line
   QDialogButtonBox* buttons_ = nullptr;
 };
 

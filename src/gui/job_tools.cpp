@@ -14,10 +14,11 @@ namespace machine = core::machine;
 
 JobToolsResult checkWithTools(const QString& text, int firstLine, core::gcode::CheckOptions options,
                               const machine::MachineSetup& setup, const std::vector<machine::StationOverride>& overrides,
-                              int stations, const QString& folder, std::optional<bool> calculatorInput) {
+                              int stations, const QString& folder, std::optional<bool> calculatorInput,
+                              std::optional<bool> toolsBeyondCentre) {
   core::machine::JobCheck job = machine::checkJob(text.toStdString(), firstLine, std::move(options), setup,
                                                   core::io::shippedToolLibrary(), overrides, stations,
-                                                  folder.toStdString(), calculatorInput);
+                                                  folder.toStdString(), calculatorInput, toolsBeyondCentre);
   JobToolsResult result;
   result.diagnostics = std::move(job.diagnostics);
   result.inference = std::move(job.inference);

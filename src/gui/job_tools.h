@@ -31,7 +31,8 @@ struct JobToolsResult {
 JobToolsResult checkWithTools(const QString& text, int firstLine, core::gcode::CheckOptions options,
                               const core::machine::MachineSetup& setup,
                               const std::vector<core::machine::StationOverride>& overrides, int stations,
-                              const QString& folder = {}, std::optional<bool> calculatorInput = std::nullopt);
+                              const QString& folder = {}, std::optional<bool> calculatorInput = std::nullopt,
+                              std::optional<bool> toolsBeyondCentre = std::nullopt);
 
 std::vector<core::machine::StationOverride> loadToolOverrides(const QString& filePath);
 void saveToolOverrides(const QString& filePath, const std::vector<core::machine::StationOverride>& overrides);

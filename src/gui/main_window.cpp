@@ -128,6 +128,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   connect(setupStrip_, &SetupStrip::stockActivated, this, &MainWindow::showJobDetails);
   connect(setupStrip_, &SetupStrip::stationActivated, this, &MainWindow::showToolSelectFor);
   connect(setupStrip_, &SetupStrip::pointReadingActivated, this, &MainWindow::showJobDetails);
+  connect(setupStrip_, &SetupStrip::toolSideActivated, this, &MainWindow::showJobDetails);
   outputLayout->addWidget(setupStrip_);
   outputLayout->addWidget(output_, 1);
   outputLayout->addWidget(statusLamps_);
@@ -351,6 +352,7 @@ CheckController::Request MainWindow::checkRequest() const {
   r.overrides = toolOverrides_;
   r.folder = programFolder();
   r.calculatorInput = document_->header().calculatorInput;
+  r.toolsBeyondCentre = document_->header().toolsBeyondCentre;
   return r;
 }
 
@@ -514,7 +516,7 @@ void MainWindow::updateStockLabel() {
   const core::io::StockSource source = document_->header().stockSource;
   setupStrip_->showSetup(document_->stockNotes(),
                          source == core::io::StockSource::Inferred || source == core::io::StockSource::Default,
-                         document_->isPlainGcode(), toolInference_, {document_->header().calculatorInput, pointNote_});
+                         document_->isPlainGcode(), toolInference_, {document_->header().calculatorInput, pointNote_, document_->header().toolsBeyondCentre});
 }
 
 QString MainWindow::stockSourceText() const { return setupStrip_ ? setupStrip_->stockText() : QString(); }

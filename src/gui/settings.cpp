@@ -126,6 +126,9 @@ std::optional<core::io::JobHeader> Settings::jobDetailsFor(const QString& path) 
     const QString reading = settings_.value(key("decimalPoint")).toString();
     if (reading == QStringLiteral("whole")) h->calculatorInput = true;
     if (reading == QStringLiteral("increments")) h->calculatorInput = false;
+    const QString side = settings_.value(key("toolSide")).toString();
+    if (side == QStringLiteral("front")) h->toolsBeyondCentre = false;
+    if (side == QStringLiteral("beyond")) h->toolsBeyondCentre = true;
   }
   settings_.endGroup();
   return h;
@@ -139,6 +142,10 @@ void Settings::setJobDetailsFor(const QString& path, const core::io::JobHeader& 
     settings_.setValue(key("decimalPoint"), *h.calculatorInput ? QStringLiteral("whole") : QStringLiteral("increments"));
   else
     settings_.remove(key("decimalPoint"));
+  if (h.toolsBeyondCentre)
+    settings_.setValue(key("toolSide"), *h.toolsBeyondCentre ? QStringLiteral("beyond") : QStringLiteral("front"));
+  else
+    settings_.remove(key("toolSide"));
   settings_.endGroup();
 }
 

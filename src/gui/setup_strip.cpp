@@ -107,6 +107,8 @@ SetupStrip::SetupStrip(QWidget* parent) : QFrame(parent) {
   layout->addLayout(grid_);
   side_ = new SetupLine(this);
   side_->setObjectName(QStringLiteral("setupToolSide"));
+  side_->setClickable(true);
+  connect(side_, &SetupLine::clicked, this, &SetupStrip::toolSideActivated);
   layout->addWidget(side_);
   point_ = new SetupLine(this);
   point_->setObjectName(QStringLiteral("setupDecimalPoint"));
@@ -266,13 +268,22 @@ void SetupStrip::retranslateUi() {
     rows_[i].line->setToolTip(items[i].tip);
   }
 
-  // The tool side: a program that cuts beyond the centre line has its tools there (I412).
+  // The tool side: a program that cuts beyond the centre line has its tools there (I412),
+  // unless the user said where they are for this file; in front, the usual side, needs no line.
   QString side;
-  if (inference_.setup.machine.toolsBeyondCentre)
+  const bool beyond = points_.sideChosen.value_or(inference_.setup.machine.toolsBeyondCentre);
+  if (points_.sideChosen) {
+    side = beyond ? tr("Tools beyond the centre line (a rear tool post), drawn mirrored, as chosen in Job details")
+                  : tr("Tools in front of the centre line, as chosen in Job details");
+  } else if (beyond) {
+    side = tr("Tools beyond the centre line (a rear tool post), drawn mirrored, as the machine is set (machine.cfg)");
     for (const core::Diagnostic& d : inference_.offsetNotes)
       if (d.code == core::codes::kToolsBeyondCentre)
         side = tr("Tools beyond the centre line, drawn mirrored: %1").arg(note(d));
+  }
   side_->setFullText(side);
+  side_->setToolTip(side.isEmpty() ? QString() : side + QLatin1Char('\n') +
+                                                     tr("Click to change the tool side for this file (Job details)."));
   side_->setVisible(!side.isEmpty());
 
   // Lengths without a decimal point: said when the program's numbers decided it or the reading is not the usual.

@@ -19,7 +19,7 @@
 //   sideText()           the beyond-the-centre line ("" when hidden)
 //   pointText()          the decimal-point reading line ("" when hidden)
 //   stationLine(n)       the clickable line of station n (tests)
-// Signals: stockActivated(), stationActivated(station), pointReadingActivated()
+// Signals: stockActivated(), stationActivated(station), pointReadingActivated(), toolSideActivated()
 #include <QFrame>
 #include <QLabel>
 #include <QList>
@@ -62,6 +62,7 @@ class SetupLine : public QLabel {
 struct PointReadingShown {
   std::optional<bool> chosen;            // the file's Job details choice (JobHeader::calculatorInput)
   std::optional<core::Diagnostic> note;  // the check's I103/I104: the word that decided
+  std::optional<bool> sideChosen;        // the file's tool side from Job details (JobHeader::toolsBeyondCentre)
 };
 
 class SetupStrip : public QFrame {
@@ -83,6 +84,7 @@ class SetupStrip : public QFrame {
   void stockActivated();
   void stationActivated(int station);
   void pointReadingActivated();
+  void toolSideActivated();
 
  protected:
   void changeEvent(QEvent* event) override;

@@ -434,17 +434,6 @@ bool CutSimulator::excuseGuess(const char* warning, const Move& m, const Vec2& w
   return true;
 }
 
-namespace {
-// A move beyond the centre line seen from the front: the bar is round, so the
-// cut is the same (X negated, arcs turn the other way).
-Move mirroredAcrossCentre(const Move& in) {
-  Move m = in;
-  for (Vec2* p : {&m.path.start, &m.path.end, &m.path.centre, &m.noseCentre}) p->y() = -p->y();
-  m.path.ccw = !m.path.ccw;
-  return m;
-}
-}  // namespace
-
 void CutSimulator::cutMove(std::size_t index, double sEnd) {
   Move mirrored;
   const bool beyond = setup_.machine.toolsBeyondCentre;

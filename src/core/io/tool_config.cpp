@@ -354,6 +354,10 @@ constexpr MachineKey kMachineKeys[] = {
      &MachineConfig::maxBlocks},
     {"max_run_time", &MachineConfig::maxRunTime, Rule::Positive,
      "... or after this much simulated machining time, seconds"},
+    {"tools_beyond_centre", nullptr, Rule::Flag,
+     "1 = the tools work beyond the centre line (a rear tool post, programmed in X < 0): drawn and cut\n"
+     "# mirrored onto the front; a program without Klueng's header is read as its own moves show",
+     nullptr, &MachineConfig::toolsBeyondCentre},
     {"calculator_input", nullptr, Rule::Flag,
      "a length without a decimal point: 1 = whole mm or inches (X30 = 30 mm, calculator-type input);\n"
      "# 0 = least input increments (X30 = 0.030 mm, 0.0030 in), as a standard Fanuc (parameter 3401#0)\n"

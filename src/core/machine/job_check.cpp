@@ -39,7 +39,8 @@ SourceRange callInto(const gcode::Program& program, int file) {
 
 JobCheck checkJob(std::string_view gcode, int firstLine, gcode::CheckOptions options, const MachineSetup& setup,
                   const io::ToolLibrary& library, const std::vector<StationOverride>& overrides, int stations,
-                  const std::string& folder, std::optional<bool> chosenCalculatorInput) {
+                  const std::string& folder, std::optional<bool> chosenCalculatorInput,
+                  std::optional<bool> chosenToolsBeyondCentre) {
   JobCheck result;
   gcode::Program program = gcode::parse(gcode, firstLine);
   std::vector<Diagnostic> fileDiagnostics;
@@ -55,6 +56,7 @@ JobCheck checkJob(std::string_view gcode, int firstLine, gcode::CheckOptions opt
   // they are worked out while the rest of the check runs.
   InferenceContext context;
   context.fromProgram = plain;
+  context.toolsBeyondCentre = chosenToolsBeyondCentre;
   context.run.dialect = options.dialect;
   context.run.powerOnUnits = options.powerOnUnits;
   detail::CheckedWithTools checked = detail::checkWhileInferring(program, options, [&] {

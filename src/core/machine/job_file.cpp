@@ -83,6 +83,7 @@ JobFile loadJobFile(const std::string& path, const MachineSetup& setup, const Jo
     InferenceContext context;
     context.fromProgram = file.plainGcode;
     context.run = request.run;
+    context.toolsBeyondCentre = file.header.toolsBeyondCentre;
     detail::CheckedWithTools checked = detail::checkWhileInferring(program, check, [&] {
       return inferTools(program, file.gcode, file.gcodeFirstLine, readSetup, library, request.overrides,
                         request.stations, context);

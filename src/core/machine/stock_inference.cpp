@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <map>
 #include <string>
 
@@ -28,13 +29,17 @@ bool isZPass(const Move& m) {
 }
 
 // A -Z pass inside the part whose next change in X goes toward the centre:
-// the tool leaves an inside wall (boring), not an outside one (turning).
+// the tool leaves an inside wall (boring), not an outside one (turning). A
+// feed that then runs across to the centre line is a face cut (a step in Z,
+// then facing down to X0), not a bore.
 bool isInsidePass(const std::vector<Move>& moves, std::size_t i) {
   const Move& m = moves[i];
   if (!isZPass(m) || zOf(m.path.end) >= 0.0 || diameterOf(m.path.start) < kOnCentre) return false;
   for (std::size_t k = i + 1; k < moves.size(); ++k) {
     const double dx = xOf(moves[k].path.end) - xOf(moves[k].path.start);
-    if (std::abs(dx) > 1e-6) return dx < 0.0;
+    if (std::abs(dx) <= 1e-6) continue;
+    const bool facesToCentre = isFeed(moves[k]) && diameterOf(moves[k].path.end) < kOnCentre;
+    return dx < 0.0 && !facesToCentre;
   }
   return false;
 }
@@ -119,8 +124,15 @@ StockInference inferStock(const gcode::Program& program, const MachineSetup& set
   return inferStock(program, interpret(program, setup, options), setup, inference);
 }
 
-StockInference inferStock(const gcode::Program& program, const Timeline& tl, const MachineSetup& setup,
+StockInference inferStock(const gcode::Program& program, const Timeline& run, const MachineSetup& setup,
                           const InferenceOptions& inference) {
+  // Tools beyond the centre line (X < 0) measure the same round bar: read the run as from the front.
+  std::optional<Timeline> mirrored;
+  if (setup.machine.toolsBeyondCentre || cutsBeyondCentre(run)) {
+    mirrored = run;
+    for (Move& m : mirrored->moves) m = mirroredAcrossCentre(m);
+  }
+  const Timeline& tl = mirrored ? *mirrored : run;
   StockInference r;
   const std::vector<Move>& moves = tl.moves;
   std::map<int, Units> unitsOfBlock;

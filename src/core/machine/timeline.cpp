@@ -78,4 +78,23 @@ Vec2 Timeline::positionAt(double t) const {
   return m.path.pointAt(m.fractionAt(t));
 }
 
+Move mirroredAcrossCentre(const Move& in) {
+  Move m = in;
+  for (Vec2* p : {&m.path.start, &m.path.end, &m.path.centre, &m.noseCentre}) p->y() = -p->y();
+  m.path.ccw = !m.path.ccw;
+  return m;
+}
+
+bool cutsBeyondCentre(const Timeline& timeline) {
+  constexpr double kOffCentre = 0.005;  // radius, mm
+  double below = 0.0, above = 0.0;
+  for (const Move& m : timeline.moves) {
+    if (m.kind != MoveKind::Line && m.kind != MoveKind::Arc && m.kind != MoveKind::Thread) continue;
+    const double mid = (m.path.start.y() + m.path.end.y()) / 2.0;
+    if (mid < -kOffCentre) below += m.path.length();
+    else if (mid > kOffCentre) above += m.path.length();
+  }
+  return below > above && below >= 1.0;
+}
+
 }  // namespace klueng::core::machine

@@ -667,8 +667,11 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
     if (!tool) continue;
     assign(station, *tool, want->reason, want->detail, want->line, use.offsets);
   }
-  // A plain program that works beyond the centre line (X < 0): its tools are there.
-  if (context.fromProgram) {
+  // A plain program that works beyond the centre line (X < 0): its tools are there
+  // (unless the user said where they are for this file).
+  if (context.toolsBeyondCentre) {
+    out.setup.machine.toolsBeyondCentre = *context.toolsBeyondCentre;
+  } else if (context.fromProgram) {
     double below = 0.0, above = 0.0;
     int line = 0;
     for (const auto& [station, m] : motion) {
@@ -684,6 +687,8 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
       d.range.line = line;
       d.args = {std::to_string(line)};
       out.offsetNotes.push_back(std::move(d));
+    } else if (above > below && above >= 1.0) {
+      out.setup.machine.toolsBeyondCentre = false;  // in front, whatever the machine's setting says
     }
   }
   // Every station of a plain program the user did not set is a guess.

@@ -74,6 +74,26 @@ TEST(StockInference, OnlyBehindTheFaceTheFirstCutsStartGivesTheBar) {
   EXPECT_DOUBLE_EQ(r.deepestZ, -2.1);
 }
 
+// A program that works beyond the centre line (a rear tool post: X < 0) reads
+// the same round bar: G00 Z0., a 1 mm step in Z and a face across to
+// the centre give a bar a size above Ø30.5 — no tube: a step in Z followed by
+// facing down to the centre line is a face cut, not a bore.
+TEST(StockInference, BeyondTheCentreTheSameBarAndAFaceStepIsNoBore) {
+  const std::string text = "G21 G98\nT0101\nG97 S600 M03\nG00 X-30.5 Z0.\nG01 Z-1. F60\nX0.\nG00 Z3.\n"
+                           "X-30.5\nG01 Z-2.\nX0.\nG00 Z3.\nM30\n";
+  const StockInference r = infer(text);
+  ASSERT_TRUE(r.found);
+  EXPECT_DOUBLE_EQ(r.approachDiameter, 30.5);
+  EXPECT_DOUBLE_EQ(r.diameter, 32.0);
+  EXPECT_DOUBLE_EQ(r.bore, 0.0);
+  EXPECT_EQ(r.diameterLine, 4);
+  // The same in front of the centre line: the same bar.
+  const StockInference f = infer("G21 G98\nT0101\nG97 S600 M03\nG00 X30.5 Z0.\nG01 Z-1. F60\nX0.\nG00 Z3.\nM30\n");
+  ASSERT_TRUE(f.found);
+  EXPECT_DOUBLE_EQ(f.diameter, 32.0);
+  EXPECT_DOUBLE_EQ(f.bore, 0.0);
+}
+
 TEST(StockInference, CycleStartPoint) {
   const std::string text =
       "N10 G21 G99 G97 S800 M03\n"

@@ -394,6 +394,39 @@ TEST(ToolInference, ANamedInsertIsNotTakenForALeftHandTool) {
   }
 }
 
+// The tool side (issue 26 item 5): a plain program that faces and turns at
+// X < 0 has its tools beyond the centre line (I412); the user's choice for the
+// file (Job details) wins either way, and a file with a header follows it too.
+TEST(ToolInference, TheToolSideIsTheRunsUnlessTheUserChoseIt) {
+  const std::string text = "G21 G99\nT0101\nG97 S800 M03\nG00 X-32. Z0.\nG01 X1.6 F0.15\nG00 Z2.\n"
+                           "X-28.\nG01 Z-30. F0.2\nX-32.\nG00 Z2.\nM30\n";
+  const gcode::Program program = gcode::parse(text, 1);
+  InferenceContext context;
+  context.fromProgram = true;
+  const ToolInference seen = inferTools(program, text, 1, shippedSetup(), io::shippedToolLibrary(), {}, 0, context);
+  EXPECT_TRUE(seen.setup.machine.toolsBeyondCentre);
+  EXPECT_NE(summary(seen).find("the program cuts at X < 0 (from line 5)"), std::string::npos) << summary(seen);
+
+  context.toolsBeyondCentre = false;
+  const ToolInference front = inferTools(program, text, 1, shippedSetup(), io::shippedToolLibrary(), {}, 0, context);
+  EXPECT_FALSE(front.setup.machine.toolsBeyondCentre);
+  EXPECT_EQ(summary(front).find("X < 0"), std::string::npos) << summary(front);
+
+  InferenceContext header;  // a file with Klueng's header: no run, the choice still holds
+  header.toolsBeyondCentre = true;
+  EXPECT_TRUE(inferTools(program, text, 1, shippedSetup(), io::shippedToolLibrary(), {}, 0, header)
+                  .setup.machine.toolsBeyondCentre);
+  // A machine set to rear tools (machine.cfg tools_beyond_centre = 1) and a program that works in front:
+  // the plain program's moves decide.
+  MachineSetup rear = shippedSetup();
+  rear.machine.toolsBeyondCentre = true;
+  const std::string inFront = "G21 G99\nT0101\nG97 S800 M03\nG00 X42. Z2.\nG01 Z-30. F0.2\nX46.\nG00 Z2.\nM30\n";
+  const gcode::Program p2 = gcode::parse(inFront, 1);
+  InferenceContext plain;
+  plain.fromProgram = true;
+  EXPECT_FALSE(inferTools(p2, inFront, 1, rear, io::shippedToolLibrary(), {}, 0, plain).setup.machine.toolsBeyondCentre);
+}
+
 TEST(StationOverride, ParsesNEqualsId) {
   const io::ToolLibrary& lib = io::shippedToolLibrary();
   StationOverride o;

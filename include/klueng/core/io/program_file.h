@@ -37,6 +37,10 @@ struct JobHeader {
   // input increments); unset: the program's numbers or the machine decide
   // (machine/point_reading.h). Not part of the 6-line header.
   std::optional<bool> calculatorInput;
+  // Where this file's tools work, when the user chose it (Job details): true =
+  // beyond the centre line (a rear tool post, X < 0), false = in front; unset:
+  // what a plain program's run shows, else the machine (machine.cfg).
+  std::optional<bool> toolsBeyondCentre;
   double diameterMm() const { return diameterUnit == LengthUnit::Inch ? diameter * 25.4 : diameter; }
   double lengthMm() const { return lengthUnit == LengthUnit::Inch ? length * 25.4 : length; }
   double boreMm() const { return diameterUnit == LengthUnit::Inch ? bore * 25.4 : bore; }

@@ -32,9 +32,11 @@ struct JobCheck {
 // `chosenCalculatorInput`: the user's reading of lengths without a decimal
 // point for this file (io::JobHeader::calculatorInput); the inference's setup
 // carries the reading used (machine.calculatorInput; machine/point_reading.h).
+// `chosenToolsBeyondCentre`: the tool side chosen for this file (JobHeader::toolsBeyondCentre).
 JobCheck checkJob(std::string_view gcode, int firstLine, gcode::CheckOptions options, const MachineSetup& setup,
                   const io::ToolLibrary& library, const std::vector<StationOverride>& overrides, int stations,
-                  const std::string& folder = {}, std::optional<bool> chosenCalculatorInput = std::nullopt);
+                  const std::string& folder = {}, std::optional<bool> chosenCalculatorInput = std::nullopt,
+                  std::optional<bool> chosenToolsBeyondCentre = std::nullopt);
 
 // inferStock on G-code text, parsed here and read as checkJob reads it
 // (lengths without a decimal point: point_reading.h, `chosenCalculatorInput`

@@ -69,4 +69,11 @@ struct Timeline {
   int moveAt(double t) const;
 };
 
+// A move beyond the centre line (X < 0) seen from the front: the bar is round,
+// so the cut is the same (X negated, arcs turn the other way).
+Move mirroredAcrossCentre(const Move& in);
+// The run cuts mostly beyond the centre line: more feed length at X < 0 than at
+// X > 0, at least 1 mm of it (a rear tool post; issue 26 item 5).
+bool cutsBeyondCentre(const Timeline& timeline);
+
 }  // namespace klueng::core::machine

@@ -14,6 +14,7 @@
 //     tool's nose radius and tip.
 // No Qt; pure function of its inputs.
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -72,6 +73,9 @@ struct ToolInference {
 struct InferenceContext {
   bool fromProgram = false;
   RunOptions run;  // dialect and power-on units of the recorded run
+  // The tool side the user chose for this file (io::JobHeader::toolsBeyondCentre):
+  // it wins over what the run shows (no I412 note then).
+  std::optional<bool> toolsBeyondCentre;
 };
 
 // gcodeText is the G-code part of the file (the text parse() read, its first
