@@ -11,6 +11,8 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
+#include <optional>
+
 namespace klueng::gui {
 
 namespace io = core::io;
@@ -22,6 +24,21 @@ QDoubleSpinBox* makeSize(QWidget* parent, double value) {
   box->setRange(0.001, 9999.999);   // SPEC 2: diameter and length must be > 0
   box->setValue(value);
   return box;
+}
+// A choice the file may leave to the program and the machine: item data -1
+// (unset), then `first` and `second`, the texts set by retranslate().
+QComboBox* makeChoice(QWidget* parent, const char* objectName, const std::optional<bool>& chosen, bool first) {
+  auto* box = new QComboBox(parent);
+  box->setObjectName(QLatin1String(objectName));
+  box->addItem(QString(), -1);
+  box->addItem(QString(), first ? 1 : 0);
+  box->addItem(QString(), first ? 0 : 1);
+  box->setCurrentIndex(!chosen ? 0 : *chosen == first ? 1 : 2);
+  return box;
+}
+std::optional<bool> choiceOf(const QComboBox* box) {
+  const int value = box->currentData().toInt();
+  return value < 0 ? std::nullopt : std::optional<bool>(value == 1);
 }
 QComboBox* makeUnit(QWidget* parent, io::LengthUnit unit) {
   auto* box = new QComboBox(parent);
@@ -61,20 +78,10 @@ JobDetailsDialog::JobDetailsDialog(const io::JobHeader& h, QWidget* parent) : QD
   problem_->setStyleSheet(QStringLiteral("color: #b00020;"));
   programmer_ = new QLineEdit(QString::fromStdString(h.programmer), this);
   for (QLineEdit* e : {project_, part_, material_, programmer_}) e->setMinimumWidth(280);
-  // Item data: -1 unset (the program's numbers, else the machine), 1 whole, 0 increments.
-  decimalPoint_ = new QComboBox(this);
-  decimalPoint_->setObjectName(QStringLiteral("decimalPoint"));
-  decimalPoint_->addItem(QString(), -1);
-  decimalPoint_->addItem(QString(), 1);
-  decimalPoint_->addItem(QString(), 0);
-  decimalPoint_->setCurrentIndex(!h.calculatorInput ? 0 : *h.calculatorInput ? 1 : 2);
-  // Item data: -1 unset (what the program's moves show, else the machine), 0 in front, 1 beyond.
-  toolSide_ = new QComboBox(this);
-  toolSide_->setObjectName(QStringLiteral("toolSide"));
-  toolSide_->addItem(QString(), -1);
-  toolSide_->addItem(QString(), 0);
-  toolSide_->addItem(QString(), 1);
-  toolSide_->setCurrentIndex(!h.toolsBeyondCentre ? 0 : *h.toolsBeyondCentre ? 2 : 1);
+  // Unset (the program's numbers, else the machine), whole, increments.
+  decimalPoint_ = makeChoice(this, "decimalPoint", h.calculatorInput, true);
+  // Unset (what the program's moves show, else the machine), in front, beyond.
+  toolSide_ = makeChoice(this, "toolSide", h.toolsBeyondCentre, false);
   form_ = new QFormLayout;
   form_->addRow(new QLabel(this), project_);
   form_->addRow(new QLabel(this), part_);
@@ -111,8 +118,8 @@ io::JobHeader JobDetailsDialog::header() const {
   h.length = length_->value();
   h.lengthUnit = static_cast<io::LengthUnit>(lengthUnit_->currentData().toInt());
   h.bore = bore_->value() < h.diameter ? bore_->value() : 0.0;
-  if (const int reading = decimalPoint_->currentData().toInt(); reading >= 0) h.calculatorInput = reading == 1;
-  if (const int side = toolSide_->currentData().toInt(); side >= 0) h.toolsBeyondCentre = side == 1;
+  h.calculatorInput = choiceOf(decimalPoint_);
+  h.toolsBeyondCentre = choiceOf(toolSide_);
   return h;
 }
 
