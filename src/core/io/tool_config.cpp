@@ -353,7 +353,8 @@ constexpr MachineKey kMachineKeys[] = {
      "a program that loops without end stops after this many blocks run again by a loop, jump or call",
      &MachineConfig::maxBlocks},
     {"max_run_time", &MachineConfig::maxRunTime, Rule::Positive,
-     "... or after this much simulated machining time, seconds"},
+     "... or, once blocks run again, after this much simulated machining time, seconds\n"
+     "# (a program that runs no block twice ends by itself and is never stopped by the clock)"},
     {"tools_beyond_centre", nullptr, Rule::Flag,
      "1 = the tools work beyond the centre line (a rear tool post, programmed in X < 0): drawn and cut\n"
      "# mirrored onto the front; a program without Klueng's header is read as its own moves show",

@@ -207,7 +207,10 @@ bool Interpreter::loopLimits() {
   } else {
     visited_[static_cast<std::size_t>(blockIndex_)] = 1;
   }
-  if (m.maxRunTime > 0.0 && sink_->elapsed() > m.maxRunTime)
+  // A time limit is no loop detector (issue 29 item 5): a program that has run no
+  // block twice ends within its own length, however long it takes; only a run
+  // that repeats blocks (through M99, GOTO, WHILE) is stopped by the clock.
+  if (m.maxRunTime > 0.0 && repeatedBlocks_ > 0 && sink_->elapsed() > m.maxRunTime)
     return flowAlarm(codes::kEndlessLoopTime, lastJumpAt_.line > 0 ? lastJumpAt_ : SourceRange{block_->line, 1, 0, block_->file},
                      {lastJumpText_.empty() ? std::string("M99") : lastJumpText_, num(sink_->elapsed()),
                       num(m.maxRunTime)});

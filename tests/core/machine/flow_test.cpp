@@ -142,6 +142,15 @@ TEST(FlowRun, EndlessLoopsStopByBlocksOrByTime) {
   EXPECT_EQ(t.alarm->range, (SourceRange{4, 1, 4}));
   EXPECT_GE(t.cycleTime(), 60.0);
   EXPECT_LT(t.cycleTime(), 67.0);
+  // A straight program longer than the limit is no loop (issue 29 item 5): it runs to its
+  // M30 (ten 10 mm passes at 100 mm/min = 60 s of feed and more, against a 30 s limit).
+  setup.machine.maxRunTime = 30.0;
+  std::string straight = "G98 G00 X20. Z0.\n";
+  for (int i = 0; i < 10; ++i) straight += "G01 W-10. F100.\nG00 W10.\n";
+  straight += "M30\n";
+  t = runText(straight, {}, setup);
+  EXPECT_FALSE(t.alarm) << t.alarm->code;
+  EXPECT_GT(t.cycleTime(), 60.0);
 }
 
 TEST(FlowRun, ModalMacroRunsAfterEachMoveUntilG67) {
