@@ -76,6 +76,9 @@ std::optional<io::JobHeader> parseStock(std::string_view text) {
     text.remove_prefix(x + 1);
   }
   if (parts.size() < 2 || parts.size() > 3) return std::nullopt;
+  constexpr double kLargestStock = 9999.999;  // as Job details and the header's size lines hold it
+  for (const double p : parts)
+    if (p > kLargestStock) return std::nullopt;
   h.diameter = parts[0];
   h.length = parts[1];
   h.bore = parts.size() == 3 ? parts[2] : 0.0;

@@ -29,7 +29,9 @@ std::optional<core::Lang> parseLang(std::string_view text);                  // 
 std::optional<core::gcode::Dialect> parseDialect(std::string_view text);     // "fanuc" | "classic"
 
 // --stock DxL[xBORE][in]: "50x100", "2.1x4in", "118x80x90" (Ø118 tube, 80 long,
-// Ø90 bore). D, L > 0, 0 < BORE < D; mm unless "in". stockSource = CommandLine.
+// Ø90 bore). 0 < D, L <= 9999.999 (what a header line and Job details hold: a
+// 1e308 bar would take minutes to draw and measure), 0 < BORE < D; mm unless
+// "in". stockSource = CommandLine.
 std::optional<core::io::JobHeader> parseStock(std::string_view text);
 // --units mm|inch: the power-on units (before any G20/G21).
 std::optional<core::gcode::InputUnits> parseUnits(std::string_view text);
@@ -38,7 +40,7 @@ std::optional<core::gcode::InputUnits> parseUnits(std::string_view text);
 std::optional<bool> parseDecimalPoint(std::string_view text);
 // What the options accept, for the exit-2 messages.
 inline constexpr const char* kStockAllowed =
-    "DxL[xBORE][in] with D, L > 0 and 0 < BORE < D, e.g. 50x100, 2.1x4in, 118x80x90";
+    "DxL[xBORE][in] with 0 < D, L <= 9999.999 and 0 < BORE < D, e.g. 50x100, 2.1x4in, 118x80x90";
 inline constexpr const char* kUnitsAllowed = "mm or inch";
 inline constexpr const char* kDecimalPointAllowed = "whole or increments";
 

@@ -101,7 +101,9 @@ TEST(CliStock, SimulateCutsTheStockOptionsTube) {
 
 TEST(CliStock, BadValuesExitTwoAndSayWhatIsAllowed) {
   const std::string file = writeFile("bad.nc", kPlain);
-  for (const char* bad : {"50", "0x10", "50x0", "50x100x60", "ax10", "50x100in5", "-50x10"}) {
+  // Bars no lathe holds (issue 29 item 9: 50x1e308 took minutes to draw, 1e308x1e308 gave "Taper nan°").
+  for (const char* bad : {"50", "0x10", "50x0", "50x100x60", "ax10", "50x100in5", "-50x10", "50x1e308", "1e308x1e308",
+                          "10000x50"}) {
     for (const char* command : {"check", "simulate"}) {
       const CliRun run = runCli(std::string(command) + " " + file + " --stock " + bad);
       EXPECT_EQ(run.exitCode, 2) << command << " " << bad;
@@ -143,6 +145,8 @@ TEST(CliStockParse, Forms) {
   EXPECT_FALSE(parseStock("118x80x118"));
   EXPECT_FALSE(parseStock(""));
   EXPECT_FALSE(parseStock("50x"));
+  EXPECT_TRUE(parseStock("9999.999x9999.999"));
+  EXPECT_FALSE(parseStock("9999.999x10000"));
   EXPECT_TRUE(klueng::cli::parseUnits("inch"));
   EXPECT_FALSE(klueng::cli::parseUnits("in"));
 }
