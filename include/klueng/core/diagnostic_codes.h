@@ -36,6 +36,7 @@ inline constexpr const char* kBitmapIsFolder = "F124";
 inline constexpr const char* kFolderNotWritable = "F125";
 inline constexpr const char* kOutputIsInput = "F126";
 inline constexpr const char* kOutputIsFolder = "F127";
+inline constexpr const char* kStockSizeTooLarge = "F128";  // {0} file {1} size as written {2} the largest
 inline constexpr const char* kOffsetTableShort = "F130";
 inline constexpr const char* kOffsetEmpty = "F131";
 inline constexpr const char* kOffsetFieldCount = "F132";

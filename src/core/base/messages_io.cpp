@@ -9,6 +9,8 @@ namespace klueng::core::catalog {
 namespace {
 constexpr MessageText kMessages[] = {
     // SPEC 5 rule 13 lives here because the stock size comes from the program header.
+    {codes::kStockSizeTooLarge, "{0}: stock size {1} is larger than any lathe holds; write at most {2}",
+     "{0}: ขนาดชิ้นงาน {1} ใหญ่เกินกว่าที่เครื่องกลึงใดจะจับได้ ให้เขียนไม่เกิน {2}"},
     {codes::kStockSizeNotPositive, "stock diameter and length must be greater than 0, not {1} (written '{2}': unit digit, then the size)",
      "เส้นผ่านศูนย์กลางและความยาวของชิ้นงานต้องมากกว่า 0 ไม่ใช่ {1} (เขียนไว้ว่า '{2}': หลักหน่วยตามด้วยขนาด)"},
 

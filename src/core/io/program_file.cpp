@@ -95,6 +95,13 @@ void parseStockSize(std::string_view line, int lineNumber, const SizeCodes& code
                                    {fileName, std::string(number), std::string(field)}));
     return;
   }
+  // A bar no lathe holds (1e308 took minutes to draw and measured "nan"): as Job details and --stock bound it.
+  constexpr double kLargestStock = 9999.999;
+  if (*parsed > kLargestStock) {
+    diags.push_back(makeDiagnostic(Severity::Error, codes::kStockSizeTooLarge, lineNumber, fieldColumn + 1,
+                                   utf8Length(number), {fileName, std::string(number), "9999.999"}));
+    return;
+  }
   unit = field.front() == '0' ? LengthUnit::Inch : LengthUnit::Millimetre;
   value = *parsed;
 }

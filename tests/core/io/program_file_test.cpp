@@ -194,6 +194,21 @@ TEST(ProgramFile, BoreMustBeInsideTheDiameter) {
             "stock bore: '60' must be a number greater than 0 and less than the diameter 50");
 }
 
+// Issue 29 item 9: a bar no lathe holds is refused at its line, as --stock and Job details bound it.
+TEST(ProgramFile, StockSizeLargerThanAnyLatheHoldsIsRefused) {
+  const auto r = parseProgramFile("P\nQ\nSteel\n1100000\n0250.5\nMe\nG00 X10.\n", {}, "big.txt");
+  ASSERT_EQ(r.diagnostics.size(), 1u) << codes(r.diagnostics);
+  EXPECT_EQ(r.diagnostics[0].code, "F128");
+  EXPECT_EQ(r.diagnostics[0].range, (SourceRange{4, 2, 6}));
+  EXPECT_EQ(formatMessage(r.diagnostics[0], Lang::En),
+            "big.txt: stock size 100000 is larger than any lathe holds; write at most 9999.999");
+  EXPECT_NE(formatMessage(r.diagnostics[0], Lang::Th).find("ไม่เกิน 9999.999"), std::string::npos);
+  EXPECT_FALSE(r.ok());
+  ASSERT_TRUE(r.value);
+  EXPECT_DOUBLE_EQ(r.value->header.length, 250.5);  // inch: the length line is fine
+  EXPECT_EQ(r.value->header.lengthUnit, LengthUnit::Inch);
+}
+
 TEST(ProgramFile, StockSizeMustBePositiveRule13) {
   const auto r = parseProgramFile("P\nQ\nSteel\n1-50\n10\nMe\nG00 X10.\n", {}, "neg.txt");
   ASSERT_EQ(r.diagnostics.size(), 2u) << codes(r.diagnostics);
