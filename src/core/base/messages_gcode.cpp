@@ -159,6 +159,8 @@ constexpr MessageText kMessages[] = {
      "{0} มีข้อผิดพลาด: ข้อแรกคือ {3} ที่บรรทัด {1} คอลัมน์ {2} ของไฟล์นั้น (เปิดไฟล์นั้นเพื่อดูทั้งหมด)"},
     {"E413", "{0}: there is no block N{1} in this program for the profile (P names its first block, Q its last, at or after P)",
      "{0}: ไม่มีบล็อก N{1} ในโปรแกรมนี้สำหรับรูปร่างชิ้นงาน (P คือบล็อกแรกของรูปร่าง Q คือบล็อกสุดท้าย ซึ่งอยู่ที่หรือถัดจาก P)"},
+    {"E415", "{0}: block N{1} lies before N{2}, where the profile starts: Q names the profile's last block, after P's",
+     "{0}: บล็อก N{1} อยู่ก่อน N{2} ซึ่งเป็นจุดเริ่มของรูปร่างชิ้นงาน: Q คือบล็อกสุดท้ายของรูปร่าง ซึ่งต้องอยู่ถัดจากบล็อกของ P"},
     {"E414", "{0}: the first block of the profile, N{1}, holds neither G00 nor G01; the control stops there (Fanuc alarm PS0065): write the first move in it (N{1} G00 X.. Z..)",
      "{0}: บล็อกแรกของรูปร่างชิ้นงาน N{1} ไม่มี G00 หรือ G01 เครื่องจะหยุดที่บล็อกนี้ (สัญญาณเตือน PS0065 ของ Fanuc) ให้เขียนการเคลื่อนที่แรกไว้ในบล็อกนั้น (N{1} G00 X.. Z..)"},
     {"W101", "{0} is not a standard M code: machine-specific, ignored",

@@ -86,6 +86,7 @@ inline constexpr const char* kReadOnlyVariable = "E410";      // {0}=variable
 inline constexpr const char* kCallsTooDeep = "E411";          // {0}=word {1}=limit
 inline constexpr const char* kSubprogramFileErrors = "E412";  // {0}=file {1}=line {2}=column {3}=code
 inline constexpr const char* kProfileBlockMissing = "E413";   // {0}=cycle and word {1}=N number
+inline constexpr const char* kProfileEndsBeforeStart = "E415";  // {0}=cycle and Q word {1}=N of Q {2}=N of P
 inline constexpr const char* kProfileStartsWithoutMotion = "E414";  // {0}=cycle and P word {1}=N number
 
 // W1xx warnings
@@ -150,6 +151,7 @@ inline constexpr const char* kAll[] = {
     kCallsTooDeep,
     kSubprogramFileErrors,
     kProfileBlockMissing,
+    kProfileEndsBeforeStart,
     kProfileStartsWithoutMotion,
     kOutOfRange,
     kTooManyDecimals,

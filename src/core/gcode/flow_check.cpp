@@ -179,7 +179,12 @@ class FlowChecker {
       return;
     }
     const int nf = index_.findSequence(section, q->code(), ns - 1);
-    if (nf < ns) emit(codes::kProfileBlockMissing, q->range, {g->text() + " " + q->text(), std::to_string(q->code())});
+    // N of Q found only above P: it exists, but the profile cannot end before it starts.
+    if (nf >= 0 && nf < ns)
+      emit(codes::kProfileEndsBeforeStart, q->range,
+           {g->text() + " " + q->text(), std::to_string(q->code()), std::to_string(p->code())});
+    else if (nf < ns)
+      emit(codes::kProfileBlockMissing, q->range, {g->text() + " " + q->text(), std::to_string(q->code())});
     if (!profile_.cycles.profileFirstBlockNeedsG00G01 || !profileStarts_.insert(ns).second) return;
     const Block& first = program_.blocks[static_cast<std::size_t>(ns)];
     if (first.statement.kind != StatementKind::None || codeWord(first, 'G', 0) || codeWord(first, 'G', 1)) return;

@@ -140,8 +140,9 @@ INSTANTIATE_TEST_SUITE_P(
             {"E414@3:1"}, {}, {"E414@3:1"}},
         Row{"G70 P100 Q200\nN100 X1.2\nN200 G01 Z-1.", {"E414@2:1"}, {}, {"E414@2:1"}},
         Row{"G70 P100 Q200\nN100 G0 X1.2\nN200 G01 Z-1.", {}, {}, {}},
-        // Q before P in the program: the profile would run backwards.
-        Row{"G70 P200 Q100\nN100 G01 X1.\nN200 G01 Z-1.", {"E413@1:10"}, {"E413@1:10"}, {"E413@1:10"}},
+        // Q before P in the program: the profile would run backwards; the message says the block is
+        // there, before P's (issue 29 item 10), not that it is missing.
+        Row{"G70 P200 Q100\nN100 G01 X1.\nN200 G01 Z-1.", {"E415@1:10"}, {"E415@1:10"}, {"E415@1:10"}},
         // 10. lowercase, packed words
         Row{"n1g0x380.z300.t0101m16", {"W101@1:20"}, {"E115@1:20"}, {"E115@1:20"}},
         Row{"N1G0X38.Z3.T0101M3S500", {}, {}, {}}));
