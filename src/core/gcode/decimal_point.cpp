@@ -69,12 +69,14 @@ void forEachPointlessLength(const Block& b, const BlockKind& kind, F&& f) {
 double incrementOf(InputUnits units) { return units == InputUnits::Inch ? 0.0001 : 0.001; }
 double mmPer(InputUnits units) { return units == InputUnits::Inch ? 25.4 : 1.0; }
 
-std::string lengthText(double value, bool inch, bool increments) {
-  if (increments) return fmt::format("{:.{}f} {}", value, inch ? 4 : 3, inch ? "in" : "mm");
-  return fmt::format("{:g} {}", value, inch ? "in" : "mm");
-}
-
 }  // namespace
+
+std::string clueLengthText(const PointClue& clue, bool increments) {
+  const char* unit = clue.inch ? "in" : "mm";
+  const double perUnit = clue.inch ? 25.4 : 1.0;
+  if (increments) return fmt::format("{:.{}f} {}", clue.incrementMm / perUnit, clue.inch ? 4 : 3, unit);
+  return fmt::format("{:g} {}", clue.wholeMm / perUnit, unit);
+}
 
 PointEvidence weighDecimalPoints(const Program& program, InputUnits powerOnUnits) {
   PointEvidence out;
@@ -121,8 +123,8 @@ std::vector<Diagnostic> decimalPointWarnings(const PointEvidence& evidence, bool
     d.severity = Severity::Warning;
     d.range = c.range;
     const double unit = c.inch ? 25.4 : 1.0;
-    const std::string asIncrements = lengthText(c.incrementMm / unit, c.inch, true);
-    const std::string asWhole = lengthText(c.wholeMm / unit, c.inch, false);
+    const std::string asIncrements = clueLengthText(c, true);
+    const std::string asWhole = clueLengthText(c, false);
     if (inIncrements) {
       d.code = codes::kPointlessLengthInIncrements;
       d.args = {c.word, asIncrements, c.word + ".", asWhole};

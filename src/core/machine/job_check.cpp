@@ -49,7 +49,7 @@ JobCheck checkJob(std::string_view gcode, int firstLine, gcode::CheckOptions opt
   const bool plain = firstLine <= 1;
   PointReading reading =
       readDecimalPoints(program, plain, chosenCalculatorInput, setup.machine.calculatorInput,
-                        options.powerOnUnits.value_or(gcode::machineProfile(options.dialect).powerOnUnits));
+                        gcode::powerOnUnitsOf(options.dialect, options.powerOnUnits));
   MachineSetup readSetup = setup;
   readSetup.machine.calculatorInput = reading.calculatorInput;
   // The program's tools decide which T words have a tool (one meaning: job.h);
@@ -100,7 +100,7 @@ StockInference inferStockFromText(std::string_view gcode, int firstLine, const M
   gcode::Program program = gcode::parse(gcode, firstLine);
   const PointReading reading =
       readDecimalPoints(program, firstLine <= 1, chosenCalculatorInput, setup.machine.calculatorInput,
-                        options.powerOnUnits.value_or(gcode::machineProfile(options.dialect).powerOnUnits));
+                        gcode::powerOnUnitsOf(options.dialect, options.powerOnUnits));
   if (reading.calculatorInput == setup.machine.calculatorInput) return inferStock(program, setup, options);
   MachineSetup readSetup = setup;
   readSetup.machine.calculatorInput = reading.calculatorInput;

@@ -3,8 +3,6 @@
 
 #include <string>
 
-#include <fmt/format.h>
-
 #include "klueng/core/diagnostic_codes.h"
 #include "klueng/core/gcode/decimal_point.h"
 
@@ -17,11 +15,7 @@ Diagnostic readingNote(const gcode::PointClue& clue, bool increments) {
   d.severity = Severity::Note;
   d.code = increments ? codes::kLengthsInIncrements : codes::kLengthsWhole;
   d.range = clue.range;
-  const double unit = clue.inch ? 25.4 : 1.0;
-  const std::string length =
-      increments ? fmt::format("{:.{}f} {}", clue.incrementMm / unit, clue.inch ? 4 : 3, clue.inch ? "in" : "mm")
-                 : fmt::format("{:g} {}", clue.wholeMm / unit, clue.inch ? "in" : "mm");
-  d.args = {clue.word, std::to_string(clue.range.line), length};
+  d.args = {clue.word, std::to_string(clue.range.line), gcode::clueLengthText(clue, increments)};
   return d;
 }
 

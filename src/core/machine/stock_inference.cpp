@@ -128,7 +128,7 @@ StockInference inferStock(const gcode::Program& program, const Timeline& run, co
                           const InferenceOptions& inference) {
   // Tools beyond the centre line (X < 0) measure the same round bar: read the run as from the front.
   std::optional<Timeline> mirrored;
-  if (setup.machine.toolsBeyondCentre || cutsBeyondCentre(run)) {
+  if (setup.machine.toolsBeyondCentre || sideOfCuts(run) == CutSide::Beyond) {
     mirrored = run;
     for (Move& m : mirrored->moves) m = mirroredAcrossCentre(m);
   }

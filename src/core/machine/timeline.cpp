@@ -85,7 +85,7 @@ Move mirroredAcrossCentre(const Move& in) {
   return m;
 }
 
-bool cutsBeyondCentre(const Timeline& timeline) {
+CutSide sideOfCuts(const Timeline& timeline) {
   constexpr double kOffCentre = 0.005;  // radius, mm
   double below = 0.0, above = 0.0;
   for (const Move& m : timeline.moves) {
@@ -94,7 +94,8 @@ bool cutsBeyondCentre(const Timeline& timeline) {
     if (mid < -kOffCentre) below += m.path.length();
     else if (mid > kOffCentre) above += m.path.length();
   }
-  return below > above && below >= 1.0;
+  if (below > above && below >= 1.0) return CutSide::Beyond;
+  return above > below && above >= 1.0 ? CutSide::Front : CutSide::None;
 }
 
 }  // namespace klueng::core::machine

@@ -525,7 +525,7 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
   out.setup = setup;
   out.fromProgram = context.fromProgram;
   const gcode::InputUnits powerOn =
-      context.run.powerOnUnits.value_or(gcode::machineProfile(context.run.dialect).powerOnUnits);
+      gcode::powerOnUnitsOf(context.run.dialect, context.run.powerOnUnits);
   Scanner scanner(program, gcodeText, gcodeFirstLine, powerOn == gcode::InputUnits::Inch ? 25.4 : 1.0);
   std::map<int, StationUse> uses = scanner.scan();
   // Stations past the turret (or the dialect's T range) are the checker's business.
@@ -671,15 +671,12 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
   // (unless the user said where they are for this file).
   if (context.toolsBeyondCentre) {
     out.setup.machine.toolsBeyondCentre = *context.toolsBeyondCentre;
-  } else if (context.fromProgram) {
-    double below = 0.0, above = 0.0;
-    int line = 0;
-    for (const auto& [station, m] : motion) {
-      below += m.belowZero;
-      above += m.aboveZero;
-      if (m.belowZero > 0.0 && (!line || m.belowLine < line)) line = m.belowLine;
-    }
-    if (below > above && below >= 1.0) {
+  } else if (context.fromProgram && out.record) {
+    const CutSide side = sideOfCuts(*out.record);
+    if (side == CutSide::Beyond) {
+      int line = 0;  // the first feed beyond the centre, for the note
+      for (const auto& [station, m] : motion)
+        if (m.belowZero > 0.0 && (!line || m.belowLine < line)) line = m.belowLine;
       out.setup.machine.toolsBeyondCentre = true;
       Diagnostic d;
       d.severity = Severity::Note;
@@ -687,7 +684,7 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
       d.range.line = line;
       d.args = {std::to_string(line)};
       out.offsetNotes.push_back(std::move(d));
-    } else if (above > below && above >= 1.0) {
+    } else if (side == CutSide::Front) {
       out.setup.machine.toolsBeyondCentre = false;  // in front, whatever the machine's setting says
     }
   }

@@ -40,6 +40,10 @@ struct PointEvidence {
   std::vector<PointClue> forWholeUnits;
 };
 
+// The clue's length in its own unit as one reading gives it: "0.1250 in" in
+// increments, "1250 in" whole (for notes and warnings).
+std::string clueLengthText(const PointClue& clue, bool increments);
+
 // Reads the program in file order, G20/G21 from `powerOnUnits` on.
 PointEvidence weighDecimalPoints(const Program& program, InputUnits powerOnUnits);
 

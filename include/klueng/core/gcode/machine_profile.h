@@ -6,6 +6,7 @@
 // read by the checker, the interpreter and the cycles; they never branch on
 // the dialect itself. Sources of each Fanuc/Haas value: docs/dialects.md.
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string_view>
 
@@ -138,5 +139,9 @@ const MachineProfile& machineProfile(Dialect dialect);
 std::span<const MachineProfile> machineProfiles();
 // "fanuc" / "haas" / "classic" -> dialect; nullopt-like false when unknown.
 bool parseDialectId(std::string_view id, Dialect& out);
+// The units before any G20/G21: the ones chosen (--units, the GUI setting), else the dialect's.
+inline InputUnits powerOnUnitsOf(Dialect dialect, const std::optional<InputUnits>& chosen) {
+  return chosen.value_or(machineProfile(dialect).powerOnUnits);
+}
 
 }  // namespace klueng::core::gcode

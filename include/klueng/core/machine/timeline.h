@@ -72,8 +72,9 @@ struct Timeline {
 // A move beyond the centre line (X < 0) seen from the front: the bar is round,
 // so the cut is the same (X negated, arcs turn the other way).
 Move mirroredAcrossCentre(const Move& in);
-// The run cuts mostly beyond the centre line: more feed length at X < 0 than at
-// X > 0, at least 1 mm of it (a rear tool post; issue 26 item 5).
-bool cutsBeyondCentre(const Timeline& timeline);
+// Which side of the centre line the run cuts on: the side with more feed length,
+// at least 1 mm of it (Beyond = X < 0, a rear tool post; issue 26 item 5).
+enum class CutSide { None, Front, Beyond };
+CutSide sideOfCuts(const Timeline& timeline);
 
 }  // namespace klueng::core::machine
