@@ -411,10 +411,10 @@ bool Interpreter::move(const Word* g) {
       return feedMoveAfterCorner(arc->isArc() ? MoveKind::Arc : MoveKind::Line, *arc, where);
     }
     case MotionMode::Thread: {
-      if (modal_.feed <= 0.0) return raise(codes::kNoFeed, where, {"G32"});
+      if (modal_.feed <= 0.0 && !cuttingCondition(codes::kNoFeed, where, {"G32"})) return false;
       if (!threadUnderCssAllowed(where)) return false;
-      if (mach_.spindle == SpindleDir::Stopped) return raise(codes::kThreadSpindleStopped, where, {});
-      if (modal_.sWord <= 0.0) return raise(codes::kThreadWithoutSpeed, where, {});
+      if (mach_.spindle == SpindleDir::Stopped && !cuttingCondition(codes::kThreadSpindleStopped, where, {})) return false;
+      if (modal_.sWord <= 0.0 && !cuttingCondition(codes::kThreadWithoutSpeed, where, {})) return false;
       MotionCall m;
       m.kind = MoveKind::Thread;
       m.path = Segment::line(pos_, target);
@@ -431,10 +431,10 @@ bool Interpreter::move(const Word* g) {
 
 bool Interpreter::feedReady(const Word* where, const char* code) {
   if (capture_) return true;  // the cycle checks its own moves when it makes them
-  if (modal_.feed <= 0.0) return raise(codes::kNoFeed, where, {code});
+  if (modal_.feed <= 0.0 && !cuttingCondition(codes::kNoFeed, where, {code})) return false;
   if (modal_.feedMode == FeedMode::PerRev) {
-    if (mach_.spindle == SpindleDir::Stopped) return raise(codes::kFeedPerRevSpindleStopped, where, {code});
-    if (modal_.sWord <= 0.0) return raise(codes::kFeedPerRevWithoutSpeed, where, {code});
+    if (mach_.spindle == SpindleDir::Stopped && !cuttingCondition(codes::kFeedPerRevSpindleStopped, where, {code})) return false;
+    if (modal_.sWord <= 0.0 && !cuttingCondition(codes::kFeedPerRevWithoutSpeed, where, {code})) return false;
   }
   return true;
 }
@@ -499,18 +499,71 @@ void run(const gcode::Program& program, const MachineSetup& setup, const RunOpti
   detail::Interpreter(rounded ? *rounded : program, setup, options, sink, &flow).run();
 }
 
+namespace {
+
+constexpr double kRecordRpm = 500.0;    // rpm and mm/min of a cut made without them in a record
+constexpr double kRecordFeed = 100.0;
+
+// RunOptions::throughAlarms: keeps the first alarm and lets the run go on.
+class ThroughAlarms final : public MachineSink {
+ public:
+  explicit ThroughAlarms(MachineSink& next) : next_(next) {}
+  void motion(const MotionCall& m) override {
+    // A cut made without its feed, spindle or speed (noted as an alarm) still
+    // takes a finite time: a record's times are not its point.
+    const bool stalled = m.kind != MoveKind::Rapid && (m.ctx.feed <= 0.0 || m.ctx.spindle == SpindleDir::Stopped ||
+                                                      m.ctx.sWord <= 0.0 || (m.kind == MoveKind::Thread && m.lead <= 0.0));
+    if (!stalled) return next_.motion(m);
+    MotionCall running = m;
+    running.ctx.spindle = SpindleDir::Cw;
+    running.ctx.spindleMode = SpindleMode::ConstantRpm;
+    running.ctx.sWord = kRecordRpm;
+    running.ctx.feedMode = FeedMode::PerMinute;
+    running.ctx.feed = kRecordFeed;
+    if (running.lead <= 0.0) running.lead = 1.0;
+    next_.motion(running);
+  }
+  void dwell(const DwellCall& d) override { next_.dwell(d); }
+  void setPosition(const Vec2& p) override { next_.setPosition(p); }
+  void compensation(NoseCompMode mode, double radius, int tip) override { next_.compensation(mode, radius, tip); }
+  void blockDone(const StateSnapshot& s) override { next_.blockDone(s); }
+  void alarm(const Diagnostic& d) override {
+    if (!first) first = d;
+  }
+  void end() override { next_.end(); }
+  bool halted() const override { return next_.halted(); }
+  double elapsed() const override { return next_.elapsed(); }
+  std::optional<Diagnostic> first;
+
+ private:
+  MachineSink& next_;
+};
+
+}  // namespace
+
 Timeline interpret(const gcode::Program& program, const MachineSetup& setup, const RunOptions& options) {
   Timeline timeline;
   timeline.moves.reserve(program.blocks.size() + program.blocks.size() / 2);
   timeline.snapshots.reserve(program.blocks.size());
   auto builder = makeTimelineBuilder(timeline, TimingConfig{setup.machine.rapidX, setup.machine.rapidZ, setup.machine.accelX, setup.machine.accelZ});
-  if (!options.noseCompensation) {
-    run(program, setup, options, *builder, timeline.flow);
+  std::unique_ptr<MachineSink> compensation;
+  if (options.noseCompensation) compensation = makeCompensationStage(*builder);
+  MachineSink& chain = compensation ? *compensation : *builder;
+  if (!options.throughAlarms) {
+    run(program, setup, options, chain, timeline.flow);
     return timeline;
   }
-  auto compensation = makeCompensationStage(*builder);
-  run(program, setup, options, *compensation, timeline.flow);
+  ThroughAlarms through(chain);
+  run(program, setup, options, through, timeline.flow);
+  if (!timeline.alarm) timeline.alarm = through.first;
   return timeline;
+}
+
+Timeline recordRun(const gcode::Program& program, const MachineSetup& setup, RunOptions options) {
+  options.persistentVariables = nullptr;
+  options.noseCompensation = false;
+  options.throughAlarms = true;
+  return interpret(program, setup, options);
 }
 
 }  // namespace klueng::core::machine

@@ -99,16 +99,16 @@ bool Interpreter::cycleReady(const std::vector<cycles::Step>& steps, const Word*
     if (s.feed > 0.0) feed = s.feed;
     if (s.sWord && s.sWord->value > 0.0) sSet = true;
     if (s.kind == cycles::StepKind::Feed) {
-      if (feed <= 0.0) return raise(codes::kNoFeed, where, {name});
+      if (feed <= 0.0 && !cuttingCondition(codes::kNoFeed, where, {name})) return false;
       if (modal_.feedMode == FeedMode::PerRev) {
-        if (mach_.spindle == SpindleDir::Stopped) return raise(codes::kFeedPerRevSpindleStopped, where, {name});
-        if (!sSet) return raise(codes::kFeedPerRevWithoutSpeed, where, {name});
+        if (mach_.spindle == SpindleDir::Stopped && !cuttingCondition(codes::kFeedPerRevSpindleStopped, where, {name})) return false;
+        if (!sSet && !cuttingCondition(codes::kFeedPerRevWithoutSpeed, where, {name})) return false;
       }
     } else if (s.kind == cycles::StepKind::Thread) {
-      if (s.lead <= 0.0) return raise(codes::kNoFeed, where, {name});
+      if (s.lead <= 0.0 && !cuttingCondition(codes::kNoFeed, where, {name})) return false;
       if (!threadUnderCssAllowed(where)) return false;
-      if (mach_.spindle == SpindleDir::Stopped) return raise(codes::kThreadSpindleStopped, where, {});
-      if (!sSet) return raise(codes::kThreadWithoutSpeed, where, {});
+      if (mach_.spindle == SpindleDir::Stopped && !cuttingCondition(codes::kThreadSpindleStopped, where, {})) return false;
+      if (!sSet && !cuttingCondition(codes::kThreadWithoutSpeed, where, {})) return false;
     }
   }
   return true;
@@ -152,10 +152,10 @@ bool Interpreter::emitCycle(const std::vector<cycles::Step>& steps, const Word* 
         break;
       }
       case cycles::StepKind::Thread: {
-        if (s.lead <= 0.0) return raise(codes::kNoFeed, where, {name});
+        if (s.lead <= 0.0 && !cuttingCondition(codes::kNoFeed, where, {name})) return false;
         if (!threadUnderCssAllowed(where)) return false;
-        if (mach_.spindle == SpindleDir::Stopped) return raise(codes::kThreadSpindleStopped, where, {});
-        if (modal_.sWord <= 0.0) return raise(codes::kThreadWithoutSpeed, where, {});
+        if (mach_.spindle == SpindleDir::Stopped && !cuttingCondition(codes::kThreadSpindleStopped, where, {})) return false;
+        if (modal_.sWord <= 0.0 && !cuttingCondition(codes::kThreadWithoutSpeed, where, {})) return false;
         MotionCall m;
         m.kind = MoveKind::Thread;
         m.path = Segment::line(pos_, s.path.end);

@@ -172,7 +172,11 @@ void Interpreter::run() {
       ++pc;
       continue;
     }
-    if (!runBlock(pc)) break;
+    if (!runBlock(pc)) {
+      if (!options_.throughAlarms || loopStopped_) break;
+      pc = blockIndex_ + 1;  // a record for evidence: on with the next block
+      continue;
+    }
     pc = next_;
   }
   // A chamfer or corner still waiting for its move when the program ends.
@@ -222,7 +226,10 @@ bool Interpreter::runBlock(int index) {
   block_ = &b;
   blockIndex_ = index;
   next_ = index + 1;
-  if (!loopLimits()) return false;
+  if (!loopLimits()) {
+    loopStopped_ = true;
+    return false;
+  }
   if (b.statement.kind != StatementKind::None) {
     stopped_ = false;
     stopEndsRun_ = false;

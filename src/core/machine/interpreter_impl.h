@@ -130,6 +130,13 @@ class Interpreter final : public gcode::MacroVariables {
     return false;
   }
 
+  // Feed, spindle or speed missing for a cut: the run stops there, but a record
+  // for evidence (RunOptions::throughAlarms) notes it and makes the move.
+  bool cuttingCondition(const char* code, const Word* where, std::vector<std::string> args) {
+    raise(code, where, std::move(args));
+    return options_.throughAlarms;
+  }
+
   // The block's first word of a letter (indexed once per block).
   const Word* find(char letter) const {
     return letter >= 'A' && letter <= 'Z' ? byLetter_[static_cast<std::size_t>(letter - 'A')] : nullptr;
@@ -218,6 +225,7 @@ class Interpreter final : public gcode::MacroVariables {
   double positionValue(int axis, bool machine) const;
   bool returnFromCall(std::optional<int> sequence, const SourceRange& at, const std::string& text);
   bool loopLimits();
+  bool loopStopped_ = false;  // a loop limit ended the run (even a run through alarms)
   void noteStack();
   void setArguments(const gcode::Block& b, std::array<gcode::MacroValue, 33>& locals) const;
   int modalCode(int group) const;

@@ -121,7 +121,7 @@ void StockInference::applyTo(io::JobHeader& h) const {
 
 StockInference inferStock(const gcode::Program& program, const MachineSetup& setup, const RunOptions& options,
                           const InferenceOptions& inference) {
-  return inferStock(program, interpret(program, setup, options), setup, inference);
+  return inferStock(program, recordRun(program, setup, options), setup, inference);
 }
 
 StockInference inferStock(const gcode::Program& program, const Timeline& run, const MachineSetup& setup,

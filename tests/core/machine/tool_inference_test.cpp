@@ -33,6 +33,15 @@ ToolInference infer(const std::string& text, const MachineSetup& setup = shipped
   return inferTools(program, text, 1, setup, io::shippedToolLibrary(), overrides);
 }
 
+// The evidence is the program's run on its own control: a Haas program runs as Haas
+// (its one-block G71/G76 with D words are not Fanuc's).
+ToolInference inferHaas(const std::string& text) {
+  const gcode::Program program = gcode::parse(text, 1);
+  InferenceContext context;
+  context.run.dialect = gcode::Dialect::Haas;
+  return inferTools(program, text, 1, shippedSetup(), io::shippedToolLibrary(), {}, 0, context);
+}
+
 std::string summary(const ToolInference& r) {
   std::string s;
   for (const Diagnostic& d : r.notes()) s += formatMessage(d, Lang::En) + "\n";
@@ -89,7 +98,7 @@ const char* kHaasShaft =
     "%\n";
 
 TEST(ToolInference, HaasShaftNamesItsToolsInNLineComments) {
-  const ToolInference r = infer(kHaasShaft);
+  const ToolInference r = inferHaas(kHaasShaft);
   // T1 has the seed's outside turning tool: it fits "OD ROUGH" and stays.
   EXPECT_EQ(r.choiceFor(1), nullptr) << summary(r);
   EXPECT_EQ(r.setup.tools.bitmap[0], "resources/tools/01-outside-turning.bmp");
@@ -111,7 +120,7 @@ TEST(ToolInference, HaasShaftNamesItsToolsInNLineComments) {
 TEST(ToolInference, WithoutCommentsTheCyclesTell) {
   std::string text = kHaasShaft;
   for (const char* c : {"N3 (THREAD 3/4-12)\n", "N12 (CUT OFF)\n"}) text.replace(text.find(c), std::string(c).size(), "\n");
-  const ToolInference r = infer(text);
+  const ToolInference r = inferHaas(text);
   expectChoice(r, 9, "threading-60", ToolReason::Threading, 21, "G76");
   expectChoice(r, 12, "parting-3mm", ToolReason::Parting, 28, "X-0.02");
 }
@@ -315,8 +324,8 @@ TEST(ToolInference, APlainProgramsRunSeesThroughMacrosAndSubprograms) {
                            "T0909\nG97 S800 M03\nG00 X#102 Z2.\nG01 Z-25. F0.1\nG00 Z5.\nM30\n"
                            "O2000\nG00 X#101\nG32 Z-20. F1.5\nG00 X35.\nZ5.\nM99\n";
   const ToolInference r = inferPlain(text);
-  expectChoice(r, 5, "threading-60", ToolReason::Threading, 17, "G32 Z-20. F1.5");
-  expectChoice(r, 9, "drill-6mm", ToolReason::Drilling, 12, "G01 Z-25. F0.1");
+  expectChoice(r, 5, "threading-60", ToolReason::Threading, 17, "G32");
+  expectChoice(r, 9, "drill-6mm", ToolReason::Drilling, 12, "G01 X0");
 }
 
 // "ID" in the comment of the thread itself (issue 26 item 3): an inside tool,
@@ -425,6 +434,96 @@ TEST(ToolInference, TheToolSideIsTheRunsUnlessTheUserChoseIt) {
   InferenceContext plain;
   plain.fromProgram = true;
   EXPECT_FALSE(inferTools(p2, inFront, 1, rear, io::shippedToolLibrary(), {}, 0, plain).setup.machine.toolsBeyondCentre);
+}
+
+// One recorded run is the evidence (issue 26 item 2): a station chosen by a macro
+// variable (T#1, which no reading of the text can resolve) and a tool selected in a
+// subprogram get their tools from the cycles they really run, in a plain program
+// and in a file with Klueng's header alike.
+TEST(ToolInference, TheRunSeesToolsChosenByVariablesAndInSubprograms) {
+  const std::string text =
+      "O1000 (BUSHING)\n"                      // 1
+      "G21 G99\n"                              // 2
+      "#1 = 909\n"                             // 3
+      "T#1\n"                                  // 4
+      "G97 S600 M03\n"                         // 5
+      "G00 X30. Z5.\n"                         // 6
+      "G76 P010060 Q50 R0.05\n"                // 7
+      "G76 X27.4 Z-20. P1300 Q400 F2.\n"       // 8
+      "G00 X60. Z50.\n"                        // 9
+      "M98 P3000\n"                            // 10
+      "M30\n"                                  // 11
+      "O3000\n"                                // 12
+      "T1010\n"                                // 13
+      "G97 S500 M03\n"                         // 14
+      "G00 X52. Z-15.\n"                       // 15
+      "G75 R0.5\n"                             // 16
+      "G75 X40. Z-18. P1000 Q2500 F0.05\n"     // 17
+      "G00 X60.\n"                             // 18
+      "M99\n";                                 // 19
+  for (const bool plain : {true, false}) {
+    const gcode::Program program = gcode::parse(text, 1);
+    InferenceContext context;
+    context.fromProgram = plain;
+    const ToolInference r = inferTools(program, text, 1, shippedSetup(), io::shippedToolLibrary(), {}, 0, context);
+    expectChoice(r, 9, "threading-60", ToolReason::Threading, 8, "G76");
+    expectChoice(r, 10, "grooving-3mm", ToolReason::Grooving, 17, "G75");
+    ASSERT_NE(r.record, nullptr);
+    EXPECT_FALSE(r.record->alarm.has_value());
+  }
+}
+
+// An alarm does not hide the tools after it: the record goes on past a cut made
+// before the spindle runs (A104, the run's own alarm, kept first), so T10's drilling
+// and T09's G92 thread are still seen from their moves.
+TEST(ToolInference, AnAlarmInTheRecordDoesNotHideTheToolsAfterIt) {
+  const std::string text =
+      "G21 G99\n"                       // 1
+      "T0101\n"                         // 2
+      "G00 X42. Z2.\n"                  // 3
+      "G01 Z-30. F0.2\n"                // 4  (no M03 yet: A104)
+      "G00 X50. Z50.\n"                 // 5
+      "T1010\n"                         // 6
+      "G97 S900 M03\n"                  // 7
+      "G00 X0 Z3.\n"                    // 8
+      "G74 R1.\n"                       // 9
+      "G74 Z-30. Q4000 F0.1\n"          // 10
+      "G00 Z50.\n"                      // 11
+      "T0909\n"                         // 12
+      "G00 X45. Z5.\n"                  // 13
+      "G92 X41.2 Z-18. F1.5\n"          // 14
+      "X40.4\n"                         // 15
+      "G00 X50. Z50.\n"                 // 16
+      "M30\n";
+  const ToolInference r = inferPlain(text);
+  expectChoice(r, 10, "drill-6mm", ToolReason::Drilling, 10, "G74");
+  expectChoice(r, 9, "threading-60", ToolReason::Threading, 14, "G92");
+  ASSERT_NE(r.record, nullptr);
+  ASSERT_TRUE(r.record->alarm.has_value());
+  EXPECT_EQ(r.record->alarm->code, "A104");
+  EXPECT_EQ(r.record->alarm->range.line, 4);
+}
+
+// Facing in steps (a short feed along -Z, then across to the centre line) is
+// not a bore's wall: the tool stays a turning tool, in front of the centre or
+// beyond it.
+TEST(ToolInference, FacingInStepsToTheCentreIsNotBoring) {
+  for (const char* side : {"", "-"}) {
+    const std::string x = std::string(side) + "30.5";
+    const std::string text = "G21 G98\nT0101\nG97 S600 M03\nG00 X" + x + " Z0\nG01 Z-1. F60\nX0\nG00 Z3.\nX" + x +
+                             "\nG01 Z-2.\nX0\nG00 Z3.\nM30\n";
+    const ToolInference r = inferPlain(text);
+    EXPECT_EQ(r.choiceFor(1), nullptr) << side << "\n" << summary(r);
+  }
+}
+
+// A Haas program in inch by power-on (no G20 anywhere): the drill size its comment
+// writes, ".5 DIA", is read in the run's units, half an inch.
+TEST(ToolInference, ADrillSizeIsReadInThePowerOnUnits) {
+  const std::string text = "O2001\nT0505 (.5 DIA DRILL)\nG97 S1000 M03\nG00 X0 Z0.1\nG01 Z-1. F0.004\n"
+                           "G00 Z1.\nM30\n";
+  const ToolInference r = inferHaas(text);
+  expectChoice(r, 5, "drill-12.7mm", ToolReason::Comment, 2, ".5 DIA DRILL");
 }
 
 TEST(StationOverride, ParsesNEqualsId) {

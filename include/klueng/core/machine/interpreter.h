@@ -25,6 +25,11 @@ struct RunOptions {
   // false: G41/G42 are read, but the imaginary tip follows the programmed path as
   // under G40 (issue 10: what nose compensation changes, side by side).
   bool noseCompensation = true;
+  // A record for evidence (tool and stock inference): an alarm skips the rest of
+  // its block and the run goes on with the next one, so what the program does
+  // after it is still seen; Timeline::alarm keeps the first. The loop limits
+  // still end the run.
+  bool throughAlarms = false;
 };
 
 struct MachineSetup {
@@ -44,6 +49,11 @@ struct MachineSetup {
 //
 // The full chain: interpreter -> compensation stage -> timeline builder.
 Timeline interpret(const gcode::Program& program, const MachineSetup& setup, const RunOptions& options = {});
+
+// The run the inference reads (tools, stock, tool side; issue 26 item 2): the
+// programmed path (no nose compensation: the nose belongs to a tool the evidence
+// may replace), through alarms, with #500-#999 vacant and kept nowhere.
+Timeline recordRun(const gcode::Program& program, const MachineSetup& setup, RunOptions options);
 
 // The interpreter alone, emitting canonical calls to `sink` (for custom chains).
 void run(const gcode::Program& program, const MachineSetup& setup, const RunOptions& options, MachineSink& sink);

@@ -57,8 +57,8 @@ struct ToolChoice {
 struct ToolInference {
   MachineSetup setup;                 // the input setup, amended (setup.tools.guessed marks the guesses)
   bool fromProgram = false;           // a plain program: its evidence decided every station
-  // The recorded run the evidence of motion came from (plain programs; null
-  // otherwise): the stock is read from the same run.
+  // The recorded run (machine::recordRun) all evidence but the comments came
+  // from; the stock is read from the same run.
   std::shared_ptr<const Timeline> record;
   std::vector<ToolChoice> choices;    // one per station that got a library tool, by station
   std::vector<Diagnostic> offsetNotes;  // I410 per offset row filled from a library tool
