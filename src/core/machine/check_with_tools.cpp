@@ -4,6 +4,7 @@
 #include <future>
 
 #include "klueng/core/machine/job.h"
+#include "run_warnings.h"
 
 namespace klueng::core::machine::detail {
 
@@ -17,11 +18,16 @@ CheckedWithTools checkWhileInferring(const gcode::Program& program, gcode::Check
   std::future<ToolInference> inferred = std::async(std::launch::async, infer);
   out.diagnostics = gcode::check(program, grammar);
   out.inference = inferred.get();
-  if (!toolRule) return out;
-  options.toolsWithBitmap = toolsWithBitmap(out.inference.setup);
-  std::vector<Diagnostic> tools = gcode::checkToolBitmaps(program, options);
-  if (tools.empty()) return out;
-  out.diagnostics.insert(out.diagnostics.end(), std::make_move_iterator(tools.begin()), std::make_move_iterator(tools.end()));
+  // Where the editor's modal walk could not follow the program, the run did.
+  std::vector<Diagnostic> more;
+  if (options.modalRules && out.inference.record) more = modalWarningsFromRun(program, *out.inference.record, out.diagnostics);
+  if (toolRule) {
+    options.toolsWithBitmap = toolsWithBitmap(out.inference.setup);
+    std::vector<Diagnostic> tools = gcode::checkToolBitmaps(program, options);
+    more.insert(more.end(), std::make_move_iterator(tools.begin()), std::make_move_iterator(tools.end()));
+  }
+  if (more.empty()) return out;
+  out.diagnostics.insert(out.diagnostics.end(), std::make_move_iterator(more.begin()), std::make_move_iterator(more.end()));
   std::stable_sort(out.diagnostics.begin(), out.diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {
     if (a.range.file != b.range.file) return a.range.file < b.range.file;
     if (a.range.line != b.range.line) return a.range.line < b.range.line;

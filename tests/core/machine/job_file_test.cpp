@@ -1,6 +1,7 @@
 // One program file made ready to run (job_file.h): what klueng-cli check and
 // simulate see, read and parsed once.
 #include "klueng/core/machine/job_file.h"
+#include "klueng/core/machine/job_check.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -126,6 +127,37 @@ TEST(LoadJobFile, WithoutAToolTableTWordsAreNotChecked) {
   const JobFile job = loadJobFile(KLUENG_SAMPLES_DIR "/01-step-shaft.txt", bare, r, io::shippedToolLibrary());
   EXPECT_FALSE(job.hasErrors());
   EXPECT_TRUE(job.toolNotes.empty());
+}
+
+// Where the editor's modal walk stops (the macro statement on line 3), the
+// recorded run goes on (issue 26 item 2): it meets G96 with no spindle limit
+// (W105 on line 5), then an arc whose R cannot join its ends (W106, the run's
+// A114 on line 8), each once, at the word, as the walk would have said it.
+std::vector<std::string> modalWarnings(const std::string& text) {
+  gcode::CheckOptions options;
+  options.modalRules = true;  // as the editor asks
+  options.toolsWithBitmap = std::vector<int>{};
+  const JobCheck job = checkJob(text, 1, options, shipped().setup, io::shippedToolLibrary(), {},
+                                shipped().setup.tools.stations);
+  std::vector<std::string> seen;
+  for (const Diagnostic& d : job.diagnostics)
+    if (d.severity == Severity::Warning)
+      seen.push_back(d.code + " " + std::to_string(d.range.line) + ":" + std::to_string(d.range.column) + " " +
+                     (d.args.empty() ? "" : d.args.front()) + (d.args.size() > 1 ? " " + d.args[1] : ""));
+  return seen;
+}
+
+TEST(JobCheck, TheRunWarnsWhereTheModalWalkCannotFollow) {
+  EXPECT_EQ(modalWarnings("O0001\nG21 G99\n#1 = 40.\nT0101\nG96 S180 M03\nG00 X#1 Z2.\n"
+                          "G01 Z-20. F0.2\nG02 X50. Z-25. R2.\nM30\n"),
+            (std::vector<std::string>{"W105 5:1 ", "W106 8:16 R2. 3.536"}));
+  // A feed move with no F after a statement: W104 on the G01 the run stops at.
+  EXPECT_EQ(modalWarnings("O0002\nG21 G99\n#1 = 40.\nT0101\nG50 S2500\nG97 S800 M03\nG00 X[#1+2] Z2.\n"
+                          "G01 Z-20.\nX50.\nM30\n"),
+            (std::vector<std::string>{"W104 8:1 G01"}));
+  // Before the statement the walk itself warns, and the run adds nothing twice.
+  EXPECT_EQ(modalWarnings("O0003\nG21 G99\nT0101\nG96 S180 M03\n#1 = 40.\nG00 X#1 Z2.\nG01 Z-20. F0.2\nM30\n"),
+            (std::vector<std::string>{"W105 4:1 "}));
 }
 
 }  // namespace
