@@ -183,9 +183,17 @@ std::optional<CycleAlarm> stockRemoval(const CycleInput& in, Profile& profile, d
     steps.push_back(rapid(away, Vec2(start.x(), away.y())));
     pos = Vec2(start.x(), away.y());
   }
-  // The last pass follows the profile offset by the finishing allowance.
+  // The last pass follows the profile offset by the finishing allowance, cutting:
+  // a G00 inside the shape (a step down to the bottom of a bore, `N210 G00 X22.`)
+  // is cut at the feed as the rest of A'->B is (Fanuc's pre-finishing cut); only
+  // the approach to A' keeps the first block's G00/G01, and a tail past the shape
+  // (a Haas retract above the bar) stays as written.
   steps.push_back(infeedRapid ? rapid(pos, aShift) : feedLine(pos, aShift));
-  for (const Step& s : shifted) steps.push_back(s);
+  for (std::size_t i = 0; i < shifted.size(); ++i) {
+    Step s = shifted[i];
+    if (i < cut && s.kind == StepKind::Rapid) s.kind = StepKind::Feed;
+    steps.push_back(s);
+  }
   steps.push_back(rapid(shifted.back().path.end, start));
   for (Step& s : steps) s.feed = 0.0, s.where = {};
   if (swap) swapAll(steps);

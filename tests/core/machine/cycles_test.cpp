@@ -220,6 +220,33 @@ TEST(StockRemoval, G71RoughsFourPassesThenTheOffsetProfile) {
   EXPECT_EQ(feedPasses, 4);
 }
 
+// A bore roughed with G71 whose shape ends with a G00 step down to the bore's
+// bottom (`G00 X22.` at Z-20, a French school's habit): the last pass cuts the
+// whole shape A'->B at the feed, the G00 step included (Fanuc's pre-finishing
+// cut); only the approach to A' keeps the first block's G00. Start X22 Z2,
+// depth 1 per side, allowance U-0.4 (inside): levels X24, X26; offset A' X27.6.
+TEST(StockRemoval, G71ShapeStepWrittenG00IsCutInTheLastPass) {
+  const CycleRun t(
+      "G98 G97 S500 M03\n"              // 1
+      "G00 X22. Z2.\n"                  // 2
+      "G71 U1. R0.3\n"                  // 3
+      "G71 P10 Q20 U-0.4 W0. F100.\n"   // 4
+      "N10 G00 X28.\n"                  // 5
+      "G01 Z-20.\n"                     // 6
+      "N20 G00 X22.\n"                  // 7
+      "G00 Z100.\n");                   // 8
+  ASSERT_FALSE(t.alarm) << t.alarm->code;
+  const std::vector<Corner> last = {{R, 27.6, 2}, {L, 27.6, -20}, {L, 21.6, -20}, {R, 22, 2}};
+  const auto got = pathOf(t, 4);
+  ASSERT_GE(got.size(), last.size());
+  for (std::size_t i = 0; i < last.size(); ++i) {
+    const Corner& c = got[got.size() - last.size() + i];
+    EXPECT_EQ(kindName(c.kind), std::string(kindName(last[i].kind))) << "corner " << i;
+    EXPECT_NEAR(c.x, last[i].x, 1e-6) << "X of corner " << i;
+    EXPECT_NEAR(c.z, last[i].z, 1e-6) << "Z of corner " << i;
+  }
+}
+
 TEST(StockRemoval, G71PassesEndWhereTheyMeetAnArcOfTheProfile) {
   // Profile X20 -> Z-10 -> G02 to X40 Z-20 R10 -> X50, no allowance. The arc
   // is centred at Z-10 X40 (on the right of travel, cw), so on it
