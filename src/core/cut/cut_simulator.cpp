@@ -315,41 +315,73 @@ Box sweptBounds(const std::vector<std::pair<Vec2, Vec2>>& pieces, const Box& loc
 }
 
 // Runs f(i, lo, hi) over every column interval of the cutting edge (or of the
-// holder) swept along the pieces, skipping primitives that stay above all material.
-template <typename F>
-void forEachInterval(const SweepContext& c, const std::vector<std::pair<Vec2, Vec2>>& nosePieces,
-                     const std::vector<std::pair<Vec2, Vec2>>& boxPieces, bool holder, F&& f) {
+// holder) swept along the pieces, skipping primitives that stay above all material
+// and, with MaterialCull, columns whose material the primitive stays above.
+template <typename F, typename Cull>
+void sweepIntervals(const SweepContext& c, const std::vector<std::pair<Vec2, Vec2>>& nosePieces,
+                    const std::vector<std::pair<Vec2, Vec2>>& boxPieces, bool holder, F&& f, const Cull& cull) {
   const ToolShape& t = *c.tool;
-  auto above = [&](const Box& swept) {
-    int first, last;
-    c.stock->columnRange(swept.z0, swept.z1, first, last);
-    return first > last || swept.x0 >= c.stock->maxOuterRadius(first, last);
-  };
-  if (!holder && t.noseRadius > 0.0) {
-    const double r = t.noseRadius;
-    for (const auto& [a, b] : nosePieces) {
-      const Vec2 ca = a + t.noseCentre, cb = b + t.noseCentre;
-      const Box swept{std::min(ca.x(), cb.x()) - r, std::max(ca.x(), cb.x()) + r,
-                      std::min(ca.y(), cb.y()) - r, std::max(ca.y(), cb.y()) + r};
-      if (above(swept)) continue;
-      detail::sweepDiscLine(c.grid, ca, cb, r, f);
-    }
-  }
+  const bool nose = !holder && t.noseRadius > 0.0;
+  constexpr double inf = std::numeric_limits<double>::infinity();
   auto sweptBox = [](const Vec2& a, const Vec2& b, const Box& box) {
     return Box{std::min(a.x(), b.x()) + box.z0, std::max(a.x(), b.x()) + box.z1, std::min(a.y(), b.y()) + box.x0,
                std::max(a.y(), b.y()) + box.x1};
   };
+  auto materialUnder = [&](const Box& swept) {
+    int first, last;
+    c.stock->columnRange(swept.z0, swept.z1, first, last);
+    return first > last ? -inf : c.stock->maxOuterRadius(first, last);
+  };
+  // One look at the material under the whole swept part (edge or holder): a
+  // primitive starting at or above it is skipped without a look of its own.
+  auto grow = [](Box& into, const Box& b) {
+    into = Box{std::min(into.z0, b.z0), std::max(into.z1, b.z1), std::min(into.x0, b.x0), std::max(into.x1, b.x1)};
+  };
+  Box part{inf, -inf, inf, -inf};  // the boxes or trapezoids, in the tool's own coordinates
+  if (holder) {
+    for (const Box& box : t.holder) grow(part, box);
+  } else {
+    for (const Trapezoid& edge : t.cutting) grow(part, edge.bounds());
+  }
+  Box all{inf, -inf, inf, -inf};
+  if (part.z0 <= part.z1)
+    for (const auto& [a, b] : boxPieces) grow(all, sweptBox(a, b, part));
+  if (nose) {
+    const double r = t.noseRadius;
+    for (const auto& [a, b] : nosePieces) grow(all, sweptBox(a + t.noseCentre, b + t.noseCentre, Box{-r, r, -r, r}));
+  }
+  if (!(all.z0 <= all.z1)) return;
+  const double highest = materialUnder(all);
+  auto above = [&](const Box& swept) { return swept.x0 >= highest || swept.x0 >= materialUnder(swept); };
+  if (nose) {
+    const double r = t.noseRadius;
+    for (const auto& [a, b] : nosePieces) {
+      const Vec2 ca = a + t.noseCentre, cb = b + t.noseCentre;
+      if (above(sweptBox(ca, cb, Box{-r, r, -r, r}))) continue;
+      detail::sweepDiscLine(c.grid, ca, cb, r, f, cull);
+    }
+  }
   if (holder) {
     for (const Box& box : t.holder)
       for (const auto& [a, b] : boxPieces)
-        if (!above(sweptBox(a, b, box))) detail::sweepBoxLine(c.grid, a, b, box, f);
+        if (!above(sweptBox(a, b, box))) detail::sweepBoxLine(c.grid, a, b, box, f, cull);
     return;
   }
   for (const Trapezoid& edge : t.cutting) {
     const Box box = edge.bounds();
     for (const auto& [a, b] : boxPieces)
-      if (!above(sweptBox(a, b, box))) detail::sweepTrapezoidLine(c.grid, a, b, edge, f);
+      if (!above(sweptBox(a, b, box))) detail::sweepTrapezoidLine(c.grid, a, b, edge, f, cull);
   }
+}
+
+// f must do nothing where lo is at or above the column's outer radius (Stock::remove,
+// Stock::overlap > a tolerance >= 0), unless allColumns: then every column comes.
+template <typename F>
+void forEachInterval(const SweepContext& c, const std::vector<std::pair<Vec2, Vec2>>& nosePieces,
+                     const std::vector<std::pair<Vec2, Vec2>>& boxPieces, bool holder, F&& f,
+                     bool allColumns = false) {
+  if (allColumns) sweepIntervals(c, nosePieces, boxPieces, holder, f, detail::NoCull{});
+  else sweepIntervals(c, nosePieces, boxPieces, holder, f, detail::MaterialCull{c.stock});
 }
 
 // Columns whose centres lie outside (zMin, zMax) are not counted: a rapid
@@ -359,11 +391,15 @@ bool overlapsStock(const SweepContext& c, const std::vector<std::pair<Vec2, Vec2
                    double zMin = -std::numeric_limits<double>::infinity(),
                    double zMax = std::numeric_limits<double>::infinity()) {
   bool hit = false;
-  forEachInterval(c, nosePieces, boxPieces, holder, [&](int i, double lo, double hi) {
-    if (hit) return;
-    const double z = c.stock->zCentre(i);
-    if (z > zMin && z < zMax && c.stock->overlap(i, lo, hi) > c.tolerance) hit = true;
-  });
+  // (A tolerance below 0 would call an overlap of nothing a hit: every column then.)
+  forEachInterval(
+      c, nosePieces, boxPieces, holder,
+      [&](int i, double lo, double hi) {
+        if (hit) return;
+        const double z = c.stock->zCentre(i);
+        if (z > zMin && z < zMax && c.stock->overlap(i, lo, hi) > c.tolerance) hit = true;
+      },
+      !(c.tolerance >= 0.0));
   return hit;
 }
 
