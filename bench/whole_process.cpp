@@ -14,7 +14,8 @@
 // (reading and interpreting without the cut). With --rs274 /usr/bin/rs274
 // (LinuxCNC, installed by hand: a reference, not a dependency) LinuxCNC's
 // interpreter runs the same blocks in its dialect, turn about with ours, and
-// each roughing row says its ratio to it.
+// each roughing row says its ratio to it, of wall time and of CPU time (user +
+// system, from the child's rusage: what other work on the machine changes least).
 #include <spawn.h>
 #include <sys/resource.h>
 #include <fcntl.h>
@@ -47,6 +48,7 @@ using Clock = std::chrono::steady_clock;
 
 struct Sample {
   double ms = 0.0;
+  double cpuMs = 0.0;  // user + system: what a busy machine changes least
   long rssKb = 0;
   int exitCode = -1;
 };
@@ -68,6 +70,8 @@ Sample runProcess(const std::vector<std::string>& args) {
   wait4(pid, &status, 0, &usage);
   s.ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   s.rssKb = usage.ru_maxrss;
+  auto msOf = [](const timeval& t) { return t.tv_sec * 1000.0 + t.tv_usec / 1000.0; };
+  s.cpuMs = msOf(usage.ru_utime) + msOf(usage.ru_stime);
   s.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   posix_spawn_file_actions_destroy(&actions);
   return s;
@@ -168,7 +172,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> args;
     bool cut = false;      // in-process: interpret and cut (simulate), interpret only (--no-stock), or load (check)
     bool inProcess = true;  // rs274 has none
-    std::vector<double> process, inProcessMs;
+    std::vector<double> process, processCpu, inProcessMs;
     long rssKb = 0;
     int exitCode = 0;
   };
@@ -199,6 +203,7 @@ int main(int argc, char** argv) {
     for (Row& row : rows) {
       const Sample sample = runProcess(row.args);
       row.process.push_back(sample.ms);
+      row.processCpu.push_back(sample.cpuMs);
       row.rssKb = std::max(row.rssKb, sample.rssKb);
       row.exitCode = std::max(row.exitCode, sample.exitCode);
     }
@@ -223,19 +228,23 @@ int main(int argc, char** argv) {
       }));
     }
 
-  std::printf("%-9s %-9s %-10s %10s %10s %7s %9s %12s\n", "program", "blocks", "command", "process", "in-proc",
-              "ratio", "peak RSS", "process/1k");
-  double rs274Ms = 0.0;
+  std::printf("%-9s %-9s %-10s %10s %10s %10s %7s %9s %12s\n", "program", "blocks", "command", "process",
+              "CPU", "in-proc", "ratio", "peak RSS", "process/1k");
+  double rs274Ms = 0.0, rs274Cpu = 0.0;
   for (const Row& row : rows)
-    if (!row.inProcess) rs274Ms = median(row.process);
+    if (!row.inProcess) {
+      rs274Ms = median(row.process);
+      rs274Cpu = median(row.processCpu);
+    }
   for (const Row& row : rows) {
     const Program& program = programs[row.program];
-    const double p = median(row.process), q = median(row.inProcessMs);
-    std::printf("%-9s %-9d %-10s %8.1f ms ", program.name.c_str(), program.blocks, row.label.c_str(), p);
+    const double p = median(row.process), c = median(row.processCpu), q = median(row.inProcessMs);
+    std::printf("%-9s %-9d %-10s %8.1f ms %7.1f ms ", program.name.c_str(), program.blocks, row.label.c_str(), p, c);
     if (row.inProcess) std::printf("%7.1f ms %6.2fx", q, p / q);
     else std::printf("%10s %7s", "-", "-");
     std::printf(" %6ld MB %9.3f ms", row.rssKb / 1024, p / (program.blocks / 1000.0));
-    if (program.name == "roughing" && rs274Ms > 0.0) std::printf("  %.2f x rs274", p / rs274Ms);
+    if (program.name == "roughing" && rs274Ms > 0.0)
+      std::printf("  %.2f x rs274 (CPU %.2f x)", p / rs274Ms, c / rs274Cpu);
     std::printf("%s\n", row.exitCode ? "  (exit status not 0!)" : "");
   }
   fs::remove_all(scratch);

@@ -276,13 +276,40 @@ const ToolShape* CutSimulator::currentTool() const {
 
 namespace {
 
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Bounds of the holder boxes or of the cutting trapezoids in the tool's own
+// coordinates (z0 > z1 when there are none).
+Box partBounds(const ToolShape& t, bool holder) {
+  double z0 = kInf, z1 = -kInf, x0 = kInf, x1 = -kInf;
+  auto grow = [&](const Box& b) {
+    z0 = std::min(z0, b.z0);
+    z1 = std::max(z1, b.z1);
+    x0 = std::min(x0, b.x0);
+    x1 = std::max(x1, b.x1);
+  };
+  if (holder) {
+    for (const Box& box : t.holder) grow(box);
+  } else {
+    for (const Trapezoid& edge : t.cutting) grow(edge.bounds());
+  }
+  return Box{z0, z1, x0, x1};
+}
+
 // What one move's sweep does to the stock and chuck.
 struct SweepContext {
   Stock* stock;
   const Chuck* chuck;
-  const ToolShape* tool;
+  const ToolShape* tool = nullptr;
   double tolerance;
   detail::Grid grid;
+  Box edgeBounds, holderBounds;  // partBounds of the tool, once a move
+
+  void use(const ToolShape* t) {
+    tool = t;
+    edgeBounds = partBounds(*t, false);
+    holderBounds = partBounds(*t, true);
+  }
 };
 
 // True if any swept primitive overlaps the box (z0..z1, x0..x1) by more than tolerance.
@@ -334,22 +361,22 @@ void sweepIntervals(const SweepContext& c, const std::vector<std::pair<Vec2, Vec
   };
   // One look at the material under the whole swept part (edge or holder): a
   // primitive starting at or above it is skipped without a look of its own.
-  auto grow = [](Box& into, const Box& b) {
-    into = Box{std::min(into.z0, b.z0), std::max(into.z1, b.z1), std::min(into.x0, b.x0), std::max(into.x1, b.x1)};
-  };
-  Box part{inf, -inf, inf, -inf};  // the boxes or trapezoids, in the tool's own coordinates
-  if (holder) {
-    for (const Box& box : t.holder) grow(part, box);
-  } else {
-    for (const Trapezoid& edge : t.cutting) grow(part, edge.bounds());
-  }
-  Box all{inf, -inf, inf, -inf};
+  const Box part = holder ? c.holderBounds : c.edgeBounds;
+  double z0 = inf, z1 = -inf;
   if (part.z0 <= part.z1)
-    for (const auto& [a, b] : boxPieces) grow(all, sweptBox(a, b, part));
+    for (const auto& [a, b] : boxPieces) {
+      z0 = std::min(z0, std::min(a.x(), b.x()) + part.z0);
+      z1 = std::max(z1, std::max(a.x(), b.x()) + part.z1);
+    }
   if (nose) {
     const double r = t.noseRadius;
-    for (const auto& [a, b] : nosePieces) grow(all, sweptBox(a + t.noseCentre, b + t.noseCentre, Box{-r, r, -r, r}));
+    for (const auto& [a, b] : nosePieces) {
+      const Vec2 ca = a + t.noseCentre, cb = b + t.noseCentre;
+      z0 = std::min(z0, std::min(ca.x(), cb.x()) + -r);
+      z1 = std::max(z1, std::max(ca.x(), cb.x()) + r);
+    }
   }
+  const Box all{z0, z1, 0.0, 0.0};
   if (!(all.z0 <= all.z1)) return;
   const double highest = materialUnder(all);
   auto above = [&](const Box& swept) { return swept.x0 >= highest || swept.x0 >= materialUnder(swept); };
@@ -493,8 +520,8 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
     return;
   }
   const double s0 = nextMoveDone_;
-  SweepContext ctx{&stock_, &chuck_, tool, options_.collisionTolerance,
-                   detail::Grid{-stock_.length(), stock_.resolution(), stock_.columnCount()}};
+  SweepContext ctx{&stock_, &chuck_, nullptr, options_.collisionTolerance,
+                   detail::Grid{-stock_.length(), stock_.resolution(), stock_.columnCount()}, Box{}, Box{}};
 
   const double dz = stock_.resolution();
   auto nose = [&](double a, double b) { return piecesOf(m, a, b, kNoseChordTolerance, dz); };
@@ -527,6 +554,7 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
   const Box body{chuck_.bodyZMin(), chuck_.bodyZMax(), chuck_.bodyXMin(), chuck_.bodyXMax()};
   const bool nearChuck = options_.detectCollisions && (boxesOverlap(swept, jaws) || boxesOverlap(swept, body));
   if (!nearStock && !nearChuck) return;
+  ctx.use(tool);
 
   const auto nosePieces = nose(s0, sEnd);
   const auto boxPieces = boxes(s0, sEnd);
@@ -537,11 +565,11 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
   if (nearChuck && setup_.tools.isGuess(m.tool)) {
     edgeOnly = *tool;
     edgeOnly->holder.clear();
-    edgeCtx.tool = &*edgeOnly;
+    edgeCtx.use(&*edgeOnly);
     if (hitsChuck(ctx, nosePieces, boxPieces) && !hitsChuck(edgeCtx, nosePieces, boxPieces)) {
       const double s = earliest([&](double e) { return hitsChuck(ctx, nose(s0, e), boxes(s0, e)); });
       excuseGuess(codes::kGuessHitsChuck, m, timeline_->moves[index].path.pointAt(s));
-      ctx.tool = edgeCtx.tool;  // the rest of the move as its edge alone: no second word on the chuck
+      ctx.use(edgeCtx.tool);  // the rest of the move as its edge alone: no second word on the chuck
     }
   }
   if (nearChuck && hitsChuck(ctx, nosePieces, boxPieces)) {
