@@ -10,7 +10,7 @@ namespace klueng::core::codes {
 inline constexpr const char* kStockSizeNotPositive = "E213";
 inline constexpr const char* kNoSuchFile = "F101";
 inline constexpr const char* kCannotReadFile = "F102";
-inline constexpr const char* kFileTooLarge = "F103";
+inline constexpr const char* kFileTooLarge = "F103";  // {0} file, {1} bytes read, {2} the limit ("64 MB")
 inline constexpr const char* kBinaryFile = "F104";
 inline constexpr const char* kEmptyFile = "F105";
 inline constexpr const char* kLineTooLong = "F106";

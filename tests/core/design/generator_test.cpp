@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
+#include <iterator>
+#include <map>
 #include <sstream>
 #include <string>
 
@@ -11,6 +14,8 @@
 #include "klueng/core/cut/part_check.h"
 #include "klueng/core/cut/part_features.h"
 #include "klueng/core/design/part_design.h"
+#include "klueng/core/gcode/checker.h"
+#include "klueng/core/gcode/parser.h"
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/machine/job.h"
 #include "klueng/core/machine/setup_files.h"
@@ -258,6 +263,20 @@ TEST(Generator, BadPartFilesNameTheirPlace) {
   EXPECT_NE(formatMessage(overflow.diagnostics[0], Lang::En).find("number overflow parsing '2.5e553'"), std::string::npos);
   const auto binary = readPartDesign(std::string("\x89PNG\r\n\x1a\n\0\0", 10), "b.json");
   EXPECT_EQ(binary.diagnostics.at(0).code, "F180");
+}
+
+// A part design or drawing is read with a limit, as program files are (issue 29 item 6).
+TEST(Generator, PartFilesAreReadWithALimit) {
+  const auto shipped = readPartFile(KLUENG_SOURCE_DIR "/resources/parts/step-shaft.json");
+  ASSERT_TRUE(shipped.ok());
+  EXPECT_TRUE(readPartDesign(*shipped.value, "step-shaft.json").ok());
+  const auto device = readPartFile("/dev/zero");
+  EXPECT_FALSE(device.ok());
+  ASSERT_EQ(device.diagnostics.size(), 1u);
+  EXPECT_EQ(device.diagnostics[0].code, "F103");
+  EXPECT_EQ(device.diagnostics[0].args.at(2), "16 MB");
+  EXPECT_EQ(readPartFile("/no/such/part.dxf").diagnostics.at(0).code, "F101");
+  EXPECT_EQ(readPartFile(KLUENG_SOURCE_DIR "/resources/parts").diagnostics.at(0).code, "F102");
 }
 
 }  // namespace
