@@ -4,13 +4,17 @@
 //
 //   klueng_bench_cut                           Google Benchmark, all sizes
 //   klueng_bench_cut --cut-file=PROGRAM.txt    one run of a program file with
-//                                              stage times and peak RSS
+//                                              stage times, peak RSS and a digest
+//                                              of the stock left (same digest =
+//                                              the same cut, to the bit)
 #include <benchmark/benchmark.h>
 
 #include <sys/resource.h>
 
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <string>
 #include <string_view>
 
@@ -40,7 +44,28 @@ struct Outcome {
   double removed = 0.0;
   bool alarm = false;
   std::size_t moves = 0;
+  std::uint64_t digest = 0;
 };
+
+// FNV-1a over the bits of every interval left and of the removed volume: a
+// faster cut must leave exactly this stock.
+std::uint64_t stockDigest(const cut::Stock& stock) {
+  std::uint64_t h = 14695981039346656037ull;
+  auto mix = [&h](double v) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &v, sizeof bits);
+    for (int k = 0; k < 8; ++k) h = (h ^ ((bits >> (8 * k)) & 0xFF)) * 1099511628211ull;
+  };
+  for (int i = 0; i < stock.columnCount(); ++i) {
+    for (const cut::Interval& in : stock.column(i)) {
+      mix(in.lo);
+      mix(in.hi);
+    }
+    mix(-1.0);  // column boundary
+  }
+  mix(stock.removedVolume());
+  return h;
+}
 
 using Clock = std::chrono::steady_clock;
 struct StageTimes {
@@ -65,7 +90,7 @@ Outcome checkInterpretCut(const io::ProgramFile& file, const machine::MachineSet
     times->cut = std::chrono::duration<double, std::milli>(t3 - t2).count();
   }
   return {sim.removedVolume(), hasErrors(diags) || timeline.alarm.has_value() || sim.alarm().has_value(),
-          timeline.moves.size()};
+          timeline.moves.size(), stockDigest(sim.stock())};
 }
 
 void BM_CheckInterpretCut(benchmark::State& state) {
@@ -97,6 +122,31 @@ void BM_CutOnly(benchmark::State& state) {
     const double removed = sim.removedVolume();
     benchmark::DoNotOptimize(&removed);
   }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
+// The cut alone on the heavy roughing program (issue 29 item 14): nearly every
+// feed touches the stock, most of them over a surface already cut.
+void BM_CutOnlyRoughing(benchmark::State& state) {
+  const std::string text = klueng::bench::RoughingGenerator::generate(static_cast<int>(state.range(0)));
+  const io::ProgramFile file = *io::parseProgramFile(text).value;
+  const machine::MachineSetup setup = shippedSetup();
+  const gcode::Program program = gcode::parse(file.gcode, file.gcodeFirstLine);
+  const machine::Timeline timeline = machine::interpret(program, setup);
+  cut::CutOptions options;
+  options.checkpointBudgetBytes = 0;  // as the CLI cuts
+  double removed = 0.0;
+  bool alarm = false;
+  for (auto _ : state) {
+    cut::CutSimulator sim(timeline, cut::CutSetup::from(file.header, setup), options);
+    sim.runToEnd();
+    removed = sim.removedVolume();
+    alarm = sim.alarm().has_value() || timeline.alarm.has_value();
+    benchmark::ClobberMemory();
+  }
+  if (alarm) state.SkipWithError("the roughing program stopped on an alarm");
+  state.counters["moves"] = static_cast<double>(timeline.moves.size());
+  state.counters["removed_cm3"] = benchmark::Counter(removed / 1000.0);
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 
@@ -152,6 +202,7 @@ BENCHMARK(BM_StepBack)->Args({100'000, 0})->Iterations(20)->Unit(benchmark::kMil
 BENCHMARK(BM_Scrub)->Arg(100'000)->Iterations(500)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CheckInterpretCut)->Arg(10'000)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CutOnly)->Arg(10'000)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CutOnlyRoughing)->Arg(100'000)->Unit(benchmark::kMillisecond);
 
 int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
@@ -167,9 +218,10 @@ int main(int argc, char** argv) {
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     std::printf("moves %zu, parse+check %.1f ms, interpret %.1f ms, cut %.1f ms, total %.1f ms, removed %.0f mm3, "
-                "%s, peak RSS %.1f MB\n",
+                "%s, peak RSS %.1f MB, stock digest %016llx\n",
                 o.moves, times.parseCheck, times.interpret, times.cut, times.parseCheck + times.interpret + times.cut,
-                o.removed, o.alarm ? "STOPPED" : "ran to the end", static_cast<double>(usage.ru_maxrss) / 1024.0);
+                o.removed, o.alarm ? "STOPPED" : "ran to the end", static_cast<double>(usage.ru_maxrss) / 1024.0,
+                static_cast<unsigned long long>(o.digest));
     return o.alarm ? 1 : 0;
   }
   benchmark::Initialize(&argc, argv);

@@ -1,37 +1,51 @@
-// klueng-gen-program BLOCKS OUT.txt
+// klueng-gen-program [--roughing [--linuxcnc]] BLOCKS OUT.txt
 // Writes a Klueng program file (6-line header, O0001, then exactly BLOCKS
 // N-numbered blocks) of a realistic lathe job, for benchmarks and tests.
+// --roughing: the heavy roughing job (RoughingGenerator) instead; --linuxcnc:
+// its blocks in LinuxCNC's rs274ngc dialect, for timing `rs274` on them.
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <string>
 
 #include "program_generator.h"
 
 int main(int argc, char** argv) {
-  if (argc != 3) {
-    std::fprintf(stderr, "usage: %s BLOCKS OUT.txt\n  BLOCKS: number of body blocks (>= %d)\n", argv[0],
-                 klueng::bench::ProgramGenerator::kMinimumBlocks);
+  bool roughing = false, linuxcnc = false;
+  int arg = 1;
+  for (; arg < argc && argv[arg][0] == '-' && argv[arg][1] == '-'; ++arg) {
+    if (std::strcmp(argv[arg], "--roughing") == 0) roughing = true;
+    else if (std::strcmp(argv[arg], "--linuxcnc") == 0) linuxcnc = true;
+    else break;
+  }
+  const int minimum =
+      roughing ? klueng::bench::RoughingGenerator::kMinimumBlocks : klueng::bench::ProgramGenerator::kMinimumBlocks;
+  if (argc - arg != 2 || (linuxcnc && !roughing)) {
+    std::fprintf(stderr,
+                 "usage: %s [--roughing [--linuxcnc]] BLOCKS OUT.txt\n  BLOCKS: number of body blocks (>= %d)\n",
+                 argv[0], minimum);
     return 2;
   }
   char* end = nullptr;
   errno = 0;
-  const long blocks = std::strtol(argv[1], &end, 10);
-  if (errno != 0 || end == argv[1] || *end != '\0' || blocks < klueng::bench::ProgramGenerator::kMinimumBlocks ||
-      blocks > 50'000'000) {
-    std::fprintf(stderr, "%s: BLOCKS must be an integer from %d to 50000000, not '%s'\n", argv[0],
-                 klueng::bench::ProgramGenerator::kMinimumBlocks, argv[1]);
+  const long blocks = std::strtol(argv[arg], &end, 10);
+  if (errno != 0 || end == argv[arg] || *end != '\0' || blocks < minimum || blocks > 50'000'000) {
+    std::fprintf(stderr, "%s: BLOCKS must be an integer from %d to 50000000, not '%s'\n", argv[0], minimum,
+                 argv[arg]);
     return 2;
   }
-  const std::string text = klueng::bench::ProgramGenerator::generate(static_cast<int>(blocks));
-  std::FILE* out = std::fopen(argv[2], "wb");
+  const std::string text = roughing ? klueng::bench::RoughingGenerator::generate(static_cast<int>(blocks), linuxcnc)
+                                    : klueng::bench::ProgramGenerator::generate(static_cast<int>(blocks));
+  const char* path = argv[arg + 1];
+  std::FILE* out = std::fopen(path, "wb");
   if (!out) {
-    std::fprintf(stderr, "%s: cannot write '%s': %s\n", argv[0], argv[2], std::strerror(errno));
+    std::fprintf(stderr, "%s: cannot write '%s': %s\n", argv[0], path, std::strerror(errno));
     return 1;
   }
   const bool ok = std::fwrite(text.data(), 1, text.size(), out) == text.size();
   if (std::fclose(out) != 0 || !ok) {
-    std::fprintf(stderr, "%s: error writing '%s'\n", argv[0], argv[2]);
+    std::fprintf(stderr, "%s: error writing '%s'\n", argv[0], path);
     return 1;
   }
   return 0;

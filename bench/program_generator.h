@@ -149,4 +149,78 @@ class ProgramGenerator {
   }
 };
 
+// The heavy roughing job of issue 29 item 14: a Ø60 x 120 mm bar (the chuck
+// grips Z -105..-120) turned down level by level, 1 mm on diameter a level
+// from Ø59 to Ø21, each pass along the whole Z 0..-100 at 0.05 mm columns.
+// Each level has many passes: the first takes the level, the others run over
+// the cut surface and retract at the uncut shoulder (spring passes, as a
+// student's program repeats them). Unlike ProgramGenerator's job, nearly every
+// feed touches the stock, so this program weighs on the cut, not on reading.
+// With linuxcnc = true the same blocks come in LinuxCNC's rs274ngc dialect, to
+// time its `rs274` interpreter on the same work (a reference, never a dependency).
+class RoughingGenerator {
+ public:
+  static constexpr int kLevels = 39;                            // Ø59 .. Ø21
+  static constexpr int kMinimumBlocks = 5 + kLevels * 5 + 3;   // preamble, a pass a level, ending
+
+  static std::string generate(int bodyBlocks, bool linuxcnc = false) {
+    RoughingGenerator g;
+    g.linuxcnc_ = linuxcnc;
+    g.build(bodyBlocks < kMinimumBlocks ? kMinimumBlocks : bodyBlocks);
+    return g.text_;
+  }
+
+ private:
+  std::string text_;
+  int emitted_ = 0;
+  bool linuxcnc_ = false;
+
+  void block(const std::string& words) {
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "N%d ", emitted_ % 9999 + 1);  // N within 1..9999 (SPEC 4)
+    text_ += buf;
+    text_ += words;
+    text_ += '\n';
+    ++emitted_;
+  }
+  static std::string x(const char* word, int diameter) {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, word, diameter);
+    return buf;
+  }
+
+  void build(int bodyBlocks) {
+    text_.reserve(static_cast<std::size_t>(bodyBlocks) * 20 + 64);
+    if (linuxcnc_) {
+      text_ += "%\n";
+    } else {
+      text_ += "Generated roughing job\nHeavy roughing shaft\nMild steel\n160\n1120\nklueng-gen-program\n";
+      text_ += "O0001\n";
+    }
+    // rs274ngc: feed per revolution is G95, the speed clamp is G96's D word, a tool change is M6.
+    block("G21 G40 G97");
+    block(linuxcnc_ ? "G95" : "G99");
+    block(linuxcnc_ ? "T1 M6" : "T0101");
+    block(linuxcnc_ ? "G18" : "G50 S2500");
+    block(linuxcnc_ ? "G96 D2500 S180 M03" : "G96 S180 M03");
+    const int passes = (bodyBlocks - 5 - 3) / 5;
+    for (int level = 0; level < kLevels; ++level) {
+      const int d = 59 - level;
+      const int count = passes / kLevels + (level < passes % kLevels ? 1 : 0);
+      for (int p = 0; p < count; ++p) {
+        block(x("G00 X%d. Z2.", d + 2));
+        block(x("G01 X%d. F0.25", d));
+        block("G01 Z-100.");
+        block(x("G01 X%d.", d + 1));
+        block("G00 Z2.");
+      }
+    }
+    while (emitted_ < bodyBlocks - 3) block("G00 X62. Z2.");
+    block("G00 X100. Z100.");
+    block("M05");
+    block("M30");
+    if (linuxcnc_) text_ += "%\n";
+  }
+};
+
 }  // namespace klueng::bench

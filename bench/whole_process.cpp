@@ -1,4 +1,5 @@
 // klueng-bench-whole-process [--cli PATH] [--runs N] [--sizes 10000,100000,1000000]
+//                            [--roughing BLOCKS] [--rs274 PATH]
 //
 // What a user waits for (issue 13): `klueng-cli check` and `klueng-cli simulate`
 // timed as whole processes (exec, page faults, reading, output, exit) on the
@@ -7,6 +8,14 @@
 // makes, timed here), and the ratio. The machine's max_run_time is raised to its
 // limit so every block of the long programs really runs (the shipped 10 h stops
 // the 100k program at block ~25,500).
+//
+// The roughing program (issue 29 item 14, RoughingGenerator: 100,000 blocks by
+// default, 0 = none) weighs on the cut; its `--no-stock` row is the floor
+// (reading and interpreting without the cut). With --rs274 /usr/bin/rs274
+// (LinuxCNC, installed by hand: a reference, not a dependency) LinuxCNC's
+// interpreter runs the same blocks in its dialect, turn about with ours, and
+// each roughing row says its ratio to it, of wall time and of CPU time (user +
+// system, from the child's rusage: what other work on the machine changes least).
 #include <spawn.h>
 #include <sys/resource.h>
 #include <fcntl.h>
@@ -39,6 +48,7 @@ using Clock = std::chrono::steady_clock;
 
 struct Sample {
   double ms = 0.0;
+  double cpuMs = 0.0;  // user + system: what a busy machine changes least
   long rssKb = 0;
   int exitCode = -1;
 };
@@ -60,6 +70,8 @@ Sample runProcess(const std::vector<std::string>& args) {
   wait4(pid, &status, 0, &usage);
   s.ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   s.rssKb = usage.ru_maxrss;
+  auto msOf = [](const timeval& t) { return t.tv_sec * 1000.0 + t.tv_usec / 1000.0; };
+  s.cpuMs = msOf(usage.ru_utime) + msOf(usage.ru_stime);
   s.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   posix_spawn_file_actions_destroy(&actions);
   return s;
@@ -96,17 +108,21 @@ fs::path makeConfig(const fs::path& scratch) {
 
 int main(int argc, char** argv) {
   std::string cli = KLUENG_CLI_PATH;
+  std::string rs274;  // LinuxCNC's interpreter, a reference when given (never needed)
   int runs = 5;
+  int roughing = 100'000;
   std::vector<int> sizes = {10'000, 100'000, 1'000'000};
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i];
     if (key == "--cli") cli = argv[i + 1];
+    else if (key == "--rs274") rs274 = argv[i + 1];
     else if (key == "--runs") runs = std::max(1, std::atoi(argv[i + 1]));
+    else if (key == "--roughing") roughing = std::max(0, std::atoi(argv[i + 1]));
     else if (key == "--sizes") {
       sizes.clear();
       for (std::string rest = argv[i + 1]; !rest.empty();) {
         const std::size_t comma = rest.find(',');
-        sizes.push_back(std::atoi(rest.substr(0, comma).c_str()));
+        if (const int n = std::atoi(rest.substr(0, comma).c_str()); n > 0) sizes.push_back(n);
         rest = comma == std::string::npos ? "" : rest.substr(comma + 1);
       }
     }
@@ -115,64 +131,122 @@ int main(int argc, char** argv) {
   fs::create_directories(scratch);
   const fs::path config = makeConfig(scratch);
 
-  // 1. The programs, written before anything is timed.
-  std::vector<fs::path> programs;
-  for (int blocks : sizes) {
-    programs.push_back(scratch / ("p" + std::to_string(blocks) + ".txt"));
-    // By klueng-gen-program: this process stays small (see 2.).
-    if (runProcess({KLUENG_GEN_PROGRAM_PATH, std::to_string(blocks), programs.back().string()}).exitCode != 0) {
-      std::fprintf(stderr, "cannot generate %s\n", programs.back().c_str());
-      return 1;
+  // 1. The programs, written before anything is timed, by klueng-gen-program
+  // (this process stays small, see 2.).
+  struct Program {
+    std::string name;
+    int blocks = 0;
+    fs::path path;
+  };
+  std::vector<Program> programs;
+  auto generate = [&](const std::string& name, int blocks, std::vector<std::string> flags, const char* ext) {
+    const fs::path path = scratch / (name + std::to_string(blocks) + ext);
+    std::vector<std::string> args = {KLUENG_GEN_PROGRAM_PATH};
+    args.insert(args.end(), flags.begin(), flags.end());
+    args.push_back(std::to_string(blocks));
+    args.push_back(path.string());
+    if (runProcess(args).exitCode != 0) {
+      std::fprintf(stderr, "cannot generate %s\n", path.c_str());
+      std::exit(1);
+    }
+    return path;
+  };
+  for (int blocks : sizes) programs.push_back({"generated", blocks, generate("p", blocks, {}, ".txt")});
+  fs::path roughingNgc;
+  if (roughing > 0) {
+    programs.push_back({"roughing", roughing, generate("r", roughing, {"--roughing"}, ".txt")});
+    if (!rs274.empty()) {
+      roughingNgc = generate("r", roughing, {"--roughing", "--linuxcnc"}, ".ngc");
+      std::ofstream(scratch / "tool.tbl") << "T1 P1 Z0 D0.8 ;turning\n";
     }
   }
+
   // 2. The processes, while this one is still small: a spawned child starts with its
   // parent's peak RSS as its own (the kernel keeps the larger at exec), so every
-  // in-process run comes after them.
+  // in-process run comes after them. The rows take turns run by run, so a busy
+  // moment of the machine falls on all of them alike.
   ::malloc_trim(0);
-  const std::vector<std::string> commands = {"check", "simulate"};
   struct Row {
-    std::vector<double> process, inProcess;
+    std::string label;
+    std::size_t program = 0;
+    std::vector<std::string> args;
+    bool cut = false;      // in-process: interpret and cut (simulate), interpret only (--no-stock), or load (check)
+    bool inProcess = true;  // rs274 has none
+    std::vector<double> process, processCpu, inProcessMs;
     long rssKb = 0;
     int exitCode = 0;
   };
-  std::vector<Row> rows(sizes.size() * commands.size());
-  for (std::size_t s = 0; s < sizes.size(); ++s)
-    for (std::size_t c = 0; c < commands.size(); ++c)
-      for (int r = 0; r < runs; ++r) {
-        Row& row = rows[s * commands.size() + c];
-        const Sample sample = runProcess({cli, commands[c], programs[s].string(), "--config", config.string()});
-        row.process.push_back(sample.ms);
-        row.rssKb = std::max(row.rssKb, sample.rssKb);
-        row.exitCode = std::max(row.exitCode, sample.exitCode);
-      }
+  std::vector<Row> rows;
+  auto add = [&rows](std::string label, std::size_t program, std::vector<std::string> args, bool cut,
+                     bool inProcess = true) {
+    Row row;
+    row.label = std::move(label);
+    row.program = program;
+    row.args = std::move(args);
+    row.cut = cut;
+    row.inProcess = inProcess;
+    rows.push_back(std::move(row));
+  };
+  for (std::size_t p = 0; p < programs.size(); ++p) {
+    const std::string& path = programs[p].path.string();
+    add("check", p, {cli, "check", path, "--config", config.string()}, false);
+    add("simulate", p, {cli, "simulate", path, "--config", config.string()}, true);
+    if (programs[p].name == "roughing") {
+      // The floor: everything but the cut.
+      add("--no-stock", p, {cli, "simulate", path, "--config", config.string(), "--no-stock"}, false);
+      if (!roughingNgc.empty())
+        add("rs274", p, {rs274, "-g", "-t", (scratch / "tool.tbl").string(), roughingNgc.string(), "/dev/null"}, false,
+            false);
+    }
+  }
+  for (int r = 0; r < runs; ++r)
+    for (Row& row : rows) {
+      const Sample sample = runProcess(row.args);
+      row.process.push_back(sample.ms);
+      row.processCpu.push_back(sample.cpuMs);
+      row.rssKb = std::max(row.rssKb, sample.rssKb);
+      row.exitCode = std::max(row.exitCode, sample.exitCode);
+    }
   // 3. The same calls in-process, as the CLI makes them (a one-way cut keeps no checkpoints).
   const machine::LoadedSetup loaded = machine::loadMachineSetup(config.string());
-  for (std::size_t s = 0; s < sizes.size(); ++s)
-    for (std::size_t c = 0; c < commands.size(); ++c)
-      for (int r = 0; r < runs; ++r)
-        rows[s * commands.size() + c].inProcess.push_back(timeIt([&] {
-          machine::JobFileRequest request;
-          request.stations = loaded.setup.tools.stations;
-          const machine::JobFile job =
-              machine::loadJobFile(programs[s].string(), loaded.setup, request, io::shippedToolLibrary());
-          if (commands[c] == "simulate" && job.program && job.file && !job.hasErrors()) {
-            const machine::Timeline timeline = machine::interpret(*job.program, job.setup, request.run);
-            cut::CutOptions options;
-            options.checkpointBudgetBytes = 0;
-            cut::CutSimulator sim(timeline, cut::CutSetup::from(job.file->header, job.setup), options);
-            sim.runToEnd();
-          }
-        }));
-
-  std::printf("%-9s %-8s %10s %10s %7s %9s %12s\n", "blocks", "command", "process", "in-proc", "ratio", "peak RSS",
-              "process/1k");
-  for (std::size_t s = 0; s < sizes.size(); ++s)
-    for (std::size_t c = 0; c < commands.size(); ++c) {
-      const Row& row = rows[s * commands.size() + c];
-      const double p = median(row.process), q = median(row.inProcess);
-      std::printf("%-9d %-8s %8.1f ms %7.1f ms %6.2fx %6ld MB %9.3f ms%s\n", sizes[s], commands[c].c_str(), p, q,
-                  p / q, row.rssKb / 1024, p / (sizes[s] / 1000.0), row.exitCode ? "  (exit status not 0!)" : "");
+  for (int r = 0; r < runs; ++r)
+    for (Row& row : rows) {
+      if (!row.inProcess) continue;
+      const bool interpret = row.label != "check";
+      row.inProcessMs.push_back(timeIt([&] {
+        machine::JobFileRequest request;
+        request.stations = loaded.setup.tools.stations;
+        const machine::JobFile job = machine::loadJobFile(programs[row.program].path.string(), loaded.setup, request,
+                                                          io::shippedToolLibrary());
+        if (!interpret || !job.program || !job.file || job.hasErrors()) return;
+        const machine::Timeline timeline = machine::interpret(*job.program, job.setup, request.run);
+        if (!row.cut) return;
+        cut::CutOptions options;
+        options.checkpointBudgetBytes = 0;
+        cut::CutSimulator sim(timeline, cut::CutSetup::from(job.file->header, job.setup), options);
+        sim.runToEnd();
+      }));
     }
+
+  std::printf("%-9s %-9s %-10s %10s %10s %10s %7s %9s %12s\n", "program", "blocks", "command", "process",
+              "CPU", "in-proc", "ratio", "peak RSS", "process/1k");
+  double rs274Ms = 0.0, rs274Cpu = 0.0;
+  for (const Row& row : rows)
+    if (!row.inProcess) {
+      rs274Ms = median(row.process);
+      rs274Cpu = median(row.processCpu);
+    }
+  for (const Row& row : rows) {
+    const Program& program = programs[row.program];
+    const double p = median(row.process), c = median(row.processCpu), q = median(row.inProcessMs);
+    std::printf("%-9s %-9d %-10s %8.1f ms %7.1f ms ", program.name.c_str(), program.blocks, row.label.c_str(), p, c);
+    if (row.inProcess) std::printf("%7.1f ms %6.2fx", q, p / q);
+    else std::printf("%10s %7s", "-", "-");
+    std::printf(" %6ld MB %9.3f ms", row.rssKb / 1024, p / (program.blocks / 1000.0));
+    if (program.name == "roughing" && rs274Ms > 0.0)
+      std::printf("  %.2f x rs274 (CPU %.2f x)", p / rs274Ms, c / rs274Cpu);
+    std::printf("%s\n", row.exitCode ? "  (exit status not 0!)" : "");
+  }
   fs::remove_all(scratch);
   return 0;
 }

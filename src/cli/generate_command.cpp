@@ -44,18 +44,6 @@ bool parseStock(const std::string& v, double& d, double& l, double& bore) {
   return n == 5 && sizes && (x2 == 'x' || x2 == 'X') && bore > 0.0 && bore < d;
 }
 
-std::string slurp(const std::string& path, bool& ok) {
-  std::string out;
-  ok = false;
-  if (std::FILE* f = std::fopen(path.c_str(), "rb")) {
-    char buf[4096];
-    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) out.append(buf, n);
-    ok = !std::ferror(f);
-    std::fclose(f);
-  }
-  return out;
-}
-
 }  // namespace
 
 int runGenerate(const std::vector<std::string>& args) {
@@ -106,12 +94,11 @@ int runGenerate(const std::vector<std::string>& args) {
   std::vector<std::string> inputs = setupFiles(config);
   inputs.push_back(file);
   if (!outputsAllowed({out}, inputs, options.lang)) return 2;
-  bool readable = false;
-  const std::string text = slurp(file, readable);
-  if (!readable) {
-    std::fprintf(stderr, "klueng-cli generate: cannot read %s\n", file.c_str());
-    return 2;
-  }
+  // Bounded as program files are: /dev/zero or a 90 MB drawing is refused, not read to the end (issue 29).
+  const io::ReadResult<std::string> read = design::readPartFile(file);
+  for (const Diagnostic& d : read.diagnostics) printDiagnostic(stderr, file, d, options.lang);
+  if (!read.ok()) return 2;
+  const std::string& text = *read.value;
   dxfOptions.chuckGrip = options.machine.chuckGrip;
   auto design = isDxf(file) ? design::importDxf(text, file, dxfOptions) : design::readPartDesign(text, file);
   for (const Diagnostic& d : design.diagnostics) printDiagnostic(stderr, file, d, options.lang);

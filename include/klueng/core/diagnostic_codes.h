@@ -10,7 +10,7 @@ namespace klueng::core::codes {
 inline constexpr const char* kStockSizeNotPositive = "E213";
 inline constexpr const char* kNoSuchFile = "F101";
 inline constexpr const char* kCannotReadFile = "F102";
-inline constexpr const char* kFileTooLarge = "F103";
+inline constexpr const char* kFileTooLarge = "F103";  // {0} file, {1} bytes read, {2} the limit ("64 MB")
 inline constexpr const char* kBinaryFile = "F104";
 inline constexpr const char* kEmptyFile = "F105";
 inline constexpr const char* kLineTooLong = "F106";
@@ -115,6 +115,7 @@ inline constexpr const char* kBoreBelowHole = "E515";       // {0} bore step, {1
 inline constexpr const char* kBoreDeeperThanPart = "E516";  // {0} bore depth, {1} part length
 inline constexpr const char* kArcCannotJoin = "E517";       // {0} step, {1} R, {2} Ø from, {3} Ø to, {4} chord
 inline constexpr const char* kArcNeedsUndercut = "E518";    // {0} step, {1} R, {2} Ø where it turns back
+inline constexpr const char* kProgramTooLong = "E519";      // {0} blocks, {1} largest N, {2} dialect (English), {3} (Thai)
 inline constexpr const char* kStockFromCommandLine = "I150";
 inline constexpr const char* kStockFromJobDetails = "I151";
 inline constexpr const char* kStockFromFirstApproach = "I152";

@@ -50,6 +50,10 @@ constexpr MessageText kMessages[] = {
     {codes::kArcNeedsUndercut,
      "Step {0}'s arc R{1} turns back toward the axis at Ø{2}: an undercut the turning tool cannot reach from the right",
      "ส่วนโค้ง R{1} ของขั้นที่ {0} วกกลับเข้าหาแกนที่ Ø{2}: เป็นร่องคอดที่มีดกลึงปอกเข้าไปกลึงจากทางขวาไม่ถึง"},
+    {codes::kProgramTooLong,
+     "The program would have {0} blocks, but {2} numbers blocks only from N1 to N{1}: it is not written; turn the "
+     "part in fewer steps",
+     "โปรแกรมจะมี {0} บล็อก แต่ {3} ใช้หมายเลขบล็อกได้เพียง N1 ถึง N{1}: จึงไม่เขียนโปรแกรม ให้ลดจำนวนขั้นของชิ้นงาน"},
     {codes::kPartFileNotJson, "{0} is not a part file: {1}", "{0} ไม่ใช่ไฟล์ชิ้นงาน: {1}"},
     {codes::kPartFieldMissing, "{0}: \"{1}\" is missing", "{0}: ไม่มีค่า \"{1}\""},
     {codes::kPartFieldBad, "{0}: \"{1}\" must be {2}", "{0}: ค่า \"{1}\" ต้องเป็น{2}"},

@@ -276,13 +276,40 @@ const ToolShape* CutSimulator::currentTool() const {
 
 namespace {
 
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Bounds of the holder boxes or of the cutting trapezoids in the tool's own
+// coordinates (z0 > z1 when there are none).
+Box partBounds(const ToolShape& t, bool holder) {
+  double z0 = kInf, z1 = -kInf, x0 = kInf, x1 = -kInf;
+  auto grow = [&](const Box& b) {
+    z0 = std::min(z0, b.z0);
+    z1 = std::max(z1, b.z1);
+    x0 = std::min(x0, b.x0);
+    x1 = std::max(x1, b.x1);
+  };
+  if (holder) {
+    for (const Box& box : t.holder) grow(box);
+  } else {
+    for (const Trapezoid& edge : t.cutting) grow(edge.bounds());
+  }
+  return Box{z0, z1, x0, x1};
+}
+
 // What one move's sweep does to the stock and chuck.
 struct SweepContext {
   Stock* stock;
   const Chuck* chuck;
-  const ToolShape* tool;
+  const ToolShape* tool = nullptr;
   double tolerance;
   detail::Grid grid;
+  Box edgeBounds, holderBounds;  // partBounds of the tool, once a move
+
+  void use(const ToolShape* t) {
+    tool = t;
+    edgeBounds = partBounds(*t, false);
+    holderBounds = partBounds(*t, true);
+  }
 };
 
 // True if any swept primitive overlaps the box (z0..z1, x0..x1) by more than tolerance.
@@ -315,41 +342,73 @@ Box sweptBounds(const std::vector<std::pair<Vec2, Vec2>>& pieces, const Box& loc
 }
 
 // Runs f(i, lo, hi) over every column interval of the cutting edge (or of the
-// holder) swept along the pieces, skipping primitives that stay above all material.
-template <typename F>
-void forEachInterval(const SweepContext& c, const std::vector<std::pair<Vec2, Vec2>>& nosePieces,
-                     const std::vector<std::pair<Vec2, Vec2>>& boxPieces, bool holder, F&& f) {
+// holder) swept along the pieces, skipping primitives that stay above all material
+// and, with MaterialCull, columns whose material the primitive stays above.
+template <typename F, typename Cull>
+void sweepIntervals(const SweepContext& c, const std::vector<std::pair<Vec2, Vec2>>& nosePieces,
+                    const std::vector<std::pair<Vec2, Vec2>>& boxPieces, bool holder, F&& f, const Cull& cull) {
   const ToolShape& t = *c.tool;
-  auto above = [&](const Box& swept) {
-    int first, last;
-    c.stock->columnRange(swept.z0, swept.z1, first, last);
-    return first > last || swept.x0 >= c.stock->maxOuterRadius(first, last);
-  };
-  if (!holder && t.noseRadius > 0.0) {
-    const double r = t.noseRadius;
-    for (const auto& [a, b] : nosePieces) {
-      const Vec2 ca = a + t.noseCentre, cb = b + t.noseCentre;
-      const Box swept{std::min(ca.x(), cb.x()) - r, std::max(ca.x(), cb.x()) + r,
-                      std::min(ca.y(), cb.y()) - r, std::max(ca.y(), cb.y()) + r};
-      if (above(swept)) continue;
-      detail::sweepDiscLine(c.grid, ca, cb, r, f);
-    }
-  }
+  const bool nose = !holder && t.noseRadius > 0.0;
+  constexpr double inf = std::numeric_limits<double>::infinity();
   auto sweptBox = [](const Vec2& a, const Vec2& b, const Box& box) {
     return Box{std::min(a.x(), b.x()) + box.z0, std::max(a.x(), b.x()) + box.z1, std::min(a.y(), b.y()) + box.x0,
                std::max(a.y(), b.y()) + box.x1};
   };
+  auto materialUnder = [&](const Box& swept) {
+    int first, last;
+    c.stock->columnRange(swept.z0, swept.z1, first, last);
+    return first > last ? -inf : c.stock->maxOuterRadius(first, last);
+  };
+  // One look at the material under the whole swept part (edge or holder): a
+  // primitive starting at or above it is skipped without a look of its own.
+  const Box part = holder ? c.holderBounds : c.edgeBounds;
+  double z0 = inf, z1 = -inf;
+  if (part.z0 <= part.z1)
+    for (const auto& [a, b] : boxPieces) {
+      z0 = std::min(z0, std::min(a.x(), b.x()) + part.z0);
+      z1 = std::max(z1, std::max(a.x(), b.x()) + part.z1);
+    }
+  if (nose) {
+    const double r = t.noseRadius;
+    for (const auto& [a, b] : nosePieces) {
+      const Vec2 ca = a + t.noseCentre, cb = b + t.noseCentre;
+      z0 = std::min(z0, std::min(ca.x(), cb.x()) + -r);
+      z1 = std::max(z1, std::max(ca.x(), cb.x()) + r);
+    }
+  }
+  const Box all{z0, z1, 0.0, 0.0};
+  if (!(all.z0 <= all.z1)) return;
+  const double highest = materialUnder(all);
+  auto above = [&](const Box& swept) { return swept.x0 >= highest || swept.x0 >= materialUnder(swept); };
+  if (nose) {
+    const double r = t.noseRadius;
+    for (const auto& [a, b] : nosePieces) {
+      const Vec2 ca = a + t.noseCentre, cb = b + t.noseCentre;
+      if (above(sweptBox(ca, cb, Box{-r, r, -r, r}))) continue;
+      detail::sweepDiscLine(c.grid, ca, cb, r, f, cull);
+    }
+  }
   if (holder) {
     for (const Box& box : t.holder)
       for (const auto& [a, b] : boxPieces)
-        if (!above(sweptBox(a, b, box))) detail::sweepBoxLine(c.grid, a, b, box, f);
+        if (!above(sweptBox(a, b, box))) detail::sweepBoxLine(c.grid, a, b, box, f, cull);
     return;
   }
   for (const Trapezoid& edge : t.cutting) {
     const Box box = edge.bounds();
     for (const auto& [a, b] : boxPieces)
-      if (!above(sweptBox(a, b, box))) detail::sweepTrapezoidLine(c.grid, a, b, edge, f);
+      if (!above(sweptBox(a, b, box))) detail::sweepTrapezoidLine(c.grid, a, b, edge, f, cull);
   }
+}
+
+// f must do nothing where lo is at or above the column's outer radius (Stock::remove,
+// Stock::overlap > a tolerance >= 0), unless allColumns: then every column comes.
+template <typename F>
+void forEachInterval(const SweepContext& c, const std::vector<std::pair<Vec2, Vec2>>& nosePieces,
+                     const std::vector<std::pair<Vec2, Vec2>>& boxPieces, bool holder, F&& f,
+                     bool allColumns = false) {
+  if (allColumns) sweepIntervals(c, nosePieces, boxPieces, holder, f, detail::NoCull{});
+  else sweepIntervals(c, nosePieces, boxPieces, holder, f, detail::MaterialCull{c.stock});
 }
 
 // Columns whose centres lie outside (zMin, zMax) are not counted: a rapid
@@ -359,11 +418,15 @@ bool overlapsStock(const SweepContext& c, const std::vector<std::pair<Vec2, Vec2
                    double zMin = -std::numeric_limits<double>::infinity(),
                    double zMax = std::numeric_limits<double>::infinity()) {
   bool hit = false;
-  forEachInterval(c, nosePieces, boxPieces, holder, [&](int i, double lo, double hi) {
-    if (hit) return;
-    const double z = c.stock->zCentre(i);
-    if (z > zMin && z < zMax && c.stock->overlap(i, lo, hi) > c.tolerance) hit = true;
-  });
+  // (A tolerance below 0 would call an overlap of nothing a hit: every column then.)
+  forEachInterval(
+      c, nosePieces, boxPieces, holder,
+      [&](int i, double lo, double hi) {
+        if (hit) return;
+        const double z = c.stock->zCentre(i);
+        if (z > zMin && z < zMax && c.stock->overlap(i, lo, hi) > c.tolerance) hit = true;
+      },
+      !(c.tolerance >= 0.0));
   return hit;
 }
 
@@ -457,8 +520,8 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
     return;
   }
   const double s0 = nextMoveDone_;
-  SweepContext ctx{&stock_, &chuck_, tool, options_.collisionTolerance,
-                   detail::Grid{-stock_.length(), stock_.resolution(), stock_.columnCount()}};
+  SweepContext ctx{&stock_, &chuck_, nullptr, options_.collisionTolerance,
+                   detail::Grid{-stock_.length(), stock_.resolution(), stock_.columnCount()}, Box{}, Box{}};
 
   const double dz = stock_.resolution();
   auto nose = [&](double a, double b) { return piecesOf(m, a, b, kNoseChordTolerance, dz); };
@@ -491,6 +554,7 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
   const Box body{chuck_.bodyZMin(), chuck_.bodyZMax(), chuck_.bodyXMin(), chuck_.bodyXMax()};
   const bool nearChuck = options_.detectCollisions && (boxesOverlap(swept, jaws) || boxesOverlap(swept, body));
   if (!nearStock && !nearChuck) return;
+  ctx.use(tool);
 
   const auto nosePieces = nose(s0, sEnd);
   const auto boxPieces = boxes(s0, sEnd);
@@ -501,11 +565,11 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
   if (nearChuck && setup_.tools.isGuess(m.tool)) {
     edgeOnly = *tool;
     edgeOnly->holder.clear();
-    edgeCtx.tool = &*edgeOnly;
+    edgeCtx.use(&*edgeOnly);
     if (hitsChuck(ctx, nosePieces, boxPieces) && !hitsChuck(edgeCtx, nosePieces, boxPieces)) {
       const double s = earliest([&](double e) { return hitsChuck(ctx, nose(s0, e), boxes(s0, e)); });
       excuseGuess(codes::kGuessHitsChuck, m, timeline_->moves[index].path.pointAt(s));
-      ctx.tool = edgeCtx.tool;  // the rest of the move as its edge alone: no second word on the chuck
+      ctx.use(edgeCtx.tool);  // the rest of the move as its edge alone: no second word on the chuck
     }
   }
   if (nearChuck && hitsChuck(ctx, nosePieces, boxPieces)) {

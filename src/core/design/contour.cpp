@@ -185,7 +185,7 @@ std::string commentText(const std::string& text) {
 
 void Writer::block(const std::string& words, const std::string& comment) {
   std::string line = numbered_ ? fmt::format("N{} {}", n_, words) : words;
-  n_ += 10;
+  n_ += step_;
   if (!comment.empty()) line += " (" + commentText(comment) + ")";
   text_ += line + "\n";
 }

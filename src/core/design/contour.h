@@ -57,15 +57,20 @@ struct Words {
 
 class Writer {
  public:
-  explicit Writer(bool numbered) : numbered_(numbered) {}
+  // Blocks numbered N{step}, N{2 step}, ... (10 as programs are written by hand).
+  explicit Writer(bool numbered, int step = 10) : numbered_(numbered), step_(step), n_(step) {}
   void block(const std::string& words, const std::string& comment = {});
   void raw(const std::string& line) { text_ += line + "\n"; }
-  int next() const { return n_; }
+  long long next() const { return n_; }
+  int step() const { return step_; }
+  // The last block's number (0 before the first).
+  long long last() const { return n_ - step_; }
   const std::string& text() const { return text_; }
 
  private:
   bool numbered_;
-  int n_ = 10;
+  int step_;
+  long long n_;
   std::string text_;
 };
 

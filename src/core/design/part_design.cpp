@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "klueng/core/diagnostic_codes.h"
+#include "klueng/core/io/file_read.h"
 
 namespace klueng::core::design {
 
@@ -61,6 +62,8 @@ double PartDesign::length() const {
   for (const OutsideStep& s : outside) total += s.length;
   return total;
 }
+
+io::ReadResult<std::string> readPartFile(const std::string& path) { return io::readFileLimited(path, kMaxPartFileBytes); }
 
 io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::string& fileName) {
   io::ReadResult<PartDesign> result;

@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "io/text_util.h"
+#include "klueng/core/io/file_read.h"
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/diagnostic_codes.h"
 
@@ -251,7 +252,8 @@ ReadResult<RgbImage> decodePng(std::string_view bytes, const std::string& fileNa
 ReadResult<RgbImage> decodeImage(std::string_view bytes, const std::string& fileName) {
   if (bytes.size() > detail::kMaxFileBytes) {
     ReadResult<RgbImage> result;
-    result.diagnostics.push_back(fileError(codes::kFileTooLarge, fileName, {std::to_string(bytes.size())}));
+    result.diagnostics.push_back(fileError(codes::kFileTooLarge, fileName,
+                                                   {std::to_string(bytes.size()), sizeLimitText(detail::kMaxFileBytes)}));
     return result;
   }
   if (bytes.size() >= 2 && bytes[0] == 'B' && bytes[1] == 'M') return decodeBmp(bytes, fileName);

@@ -9,6 +9,7 @@
 
 #include "io/text_util.h"
 #include "klueng/core/diagnostic_codes.h"
+#include "klueng/core/io/file_read.h"
 #include "klueng/core/io/file_write.h"
 #include "klueng/core/io/text_encoding.h"
 #include "klueng/core/messages.h"
@@ -187,7 +188,7 @@ ReadResult<ProgramFile> parseProgramFile(std::string_view bytes, const JobHeader
   auto& diags = result.diagnostics;
   if (bytes.size() > detail::kMaxFileBytes) {
     diags.push_back(makeDiagnostic(Severity::Error, codes::kFileTooLarge, 0, 0, 0,
-                                   {fileName, std::to_string(bytes.size())}));
+                                   {fileName, std::to_string(bytes.size()), sizeLimitText(detail::kMaxFileBytes)}));
     return result;
   }
   // UTF-16 text (Notepad's "Unicode") is text, not binary: read it as UTF-8.

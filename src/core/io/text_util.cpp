@@ -8,6 +8,7 @@
 #include <fstream>
 #include <system_error>
 
+#include "klueng/core/io/file_read.h"
 #include "klueng/core/io/text_encoding.h"
 #include "klueng/core/diagnostic_codes.h"
 
@@ -41,7 +42,8 @@ std::optional<std::string> readFileBytes(const std::string& path, std::vector<Di
   std::string bytes;
   const std::uintmax_t size = fs::is_regular_file(status) ? fs::file_size(path, ec) : 0;
   if (!ec && size > maxBytes) {
-    diags.push_back(makeDiagnostic(Severity::Error, codes::kFileTooLarge, 0, 0, 0, {path, std::to_string(size)}));
+    diags.push_back(makeDiagnostic(Severity::Error, codes::kFileTooLarge, 0, 0, 0,
+                                   {path, std::to_string(size), sizeLimitText(maxBytes)}));
     return std::nullopt;
   }
   // The size the file reports is read straight into the string (no copy
@@ -56,7 +58,8 @@ std::optional<std::string> readFileBytes(const std::string& path, std::vector<Di
     bytes.append(buffer, static_cast<std::size_t>(in.gcount()));
     if (bytes.size() > maxBytes) {
       diags.push_back(
-          makeDiagnostic(Severity::Error, codes::kFileTooLarge, 0, 0, 0, {path, std::to_string(bytes.size())}));
+          makeDiagnostic(Severity::Error, codes::kFileTooLarge, 0, 0, 0,
+                         {path, std::to_string(bytes.size()), sizeLimitText(maxBytes)}));
       return std::nullopt;
     }
   }

@@ -4,11 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "cut_test_util.h"
 #include "klueng/core/cut/cut_simulator.h"
 #include "klueng/core/cut/finished_part.h"
+#include "../../../bench/program_generator.h"
 
 namespace klueng::core::cut {
 namespace {
@@ -294,6 +296,22 @@ TEST(Crash, RapidRetractIntoTheShoulderIsStillACrash) {
   ASSERT_TRUE(c.sim->alarm().has_value());
   EXPECT_EQ(c.sim->alarm()->code, "A301");
   EXPECT_EQ(c.sim->alarm()->range.line, lineOf(text, "N60 "));
+}
+
+// The benchmark's heavy roughing job (issue 29 item 14) on a short budget: every
+// level is taken, the spring passes over it change nothing, the shoulder stands.
+TEST(RoughingBench, TurnsTheBarDownToTheLastLevelAndLeavesTheShoulder) {
+  const Cut c = cutProgram(klueng::bench::RoughingGenerator::generate(3000));
+  ASSERT_FALSE(c.run.timeline.alarm.has_value());
+  ASSERT_FALSE(c.sim->alarm().has_value()) << c.sim->alarm()->code << " line " << c.sim->alarm()->range.line;
+  const FinishedPart part(c.sim->stock());
+  expectDiameter(part, -98.0, -0.05, 21.0, 1e-9);
+  expectDiameter(part, -119.95, -101.0, 60.0, 1e-9);
+  // Ø60 -> Ø21 over 100 mm, but for the nose's fillet in the corner (R0.8: at most 0.15 cm3).
+  const double turned = std::numbers::pi / 4 * (60.0 * 60.0 - 21.0 * 21.0) * 100.0;
+  EXPECT_LT(c.sim->removedVolume(), turned);
+  EXPECT_GT(c.sim->removedVolume(), turned - 150.0);
+  EXPECT_NEAR(c.sim->removedVolume(), c.sim->stock().initialVolume() - c.sim->stock().volume(), 1e-6 * turned);
 }
 
 }  // namespace

@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
+#include <iterator>
+#include <map>
 #include <sstream>
 #include <string>
 
@@ -11,6 +14,8 @@
 #include "klueng/core/cut/part_check.h"
 #include "klueng/core/cut/part_features.h"
 #include "klueng/core/design/part_design.h"
+#include "klueng/core/gcode/checker.h"
+#include "klueng/core/gcode/parser.h"
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/machine/job.h"
 #include "klueng/core/machine/setup_files.h"
@@ -258,6 +263,105 @@ TEST(Generator, BadPartFilesNameTheirPlace) {
   EXPECT_NE(formatMessage(overflow.diagnostics[0], Lang::En).find("number overflow parsing '2.5e553'"), std::string::npos);
   const auto binary = readPartDesign(std::string("\x89PNG\r\n\x1a\n\0\0", 10), "b.json");
   EXPECT_EQ(binary.diagnostics.at(0).code, "F180");
+}
+
+// Issue 29 item 6: block numbers stay within what the dialect reads (Fanuc and
+// Haas N1-N99999, classic N1-N9999): N10 steps as by hand while they fit, closer
+// steps when they do not, and a refusal (E519) when not even N1, N2, ... fit.
+PartDesign manySteps(int steps) {
+  PartDesign part;
+  part.name = "Many steps";
+  part.material = "aluminium";
+  part.stockDiameter = 60.0;
+  part.stockLength = 130.0;
+  for (int k = 0; k < steps; ++k) {
+    OutsideStep s;
+    s.diameter = 10.0 + k * 0.004;
+    s.length = 0.01;
+    part.outside.push_back(s);
+  }
+  return part;
+}
+
+// The program's blocks checked in `dialect`; its N numbers, each block's words by N.
+std::map<long, std::string> checkedBlocks(const std::string& text, gcode::Dialect dialect) {
+  const auto file = io::parseProgramFile(text);
+  EXPECT_TRUE(file.value.has_value());
+  if (!file.value) return {};
+  gcode::CheckOptions options;
+  options.dialect = dialect;
+  for (const Diagnostic& d : gcode::check(gcode::parse(file.value->gcode, file.value->gcodeFirstLine), options))
+    EXPECT_NE(d.severity, Severity::Error) << d.code << " line " << d.range.line << ": " << formatMessage(d, Lang::En);
+  std::map<long, std::string> blocks;
+  std::istringstream in(file.value->gcode);
+  long previous = 0;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] != 'N') continue;
+    const long n = std::stol(line.substr(1));
+    EXPECT_GT(n, previous) << line;
+    previous = n;
+    blocks[n] = line.substr(line.find(' ') + 1);
+  }
+  return blocks;
+}
+
+TEST(Generator, ALongProgramIsNumberedCloserNeverPastTheLargestN) {
+  // An ordinary part keeps N10, N20, ...
+  std::map<long, std::string> blocks = checkedBlocks(generateProgram(stepShaft(), {})->text, gcode::Dialect::Fanuc);
+  ASSERT_FALSE(blocks.empty());
+  EXPECT_EQ(blocks.begin()->first, 10);
+  EXPECT_EQ(std::next(blocks.begin())->first, 20);
+
+  // 10,500 steps: 21,000 blocks, N210000 at N10 steps (the issue saw N100000 refused by the checker).
+  GenerateOptions options;
+  const auto fanuc = generateProgram(manySteps(10'500), options);
+  ASSERT_TRUE(fanuc);
+  blocks = checkedBlocks(fanuc->text, gcode::Dialect::Fanuc);
+  ASSERT_GT(blocks.size(), 21'000u);
+  EXPECT_LE(blocks.rbegin()->first, 99'999);
+  EXPECT_EQ(blocks.begin()->first, 2);  // the widest step that fits
+  // G71's P and Q still name the profile's first and last blocks.
+  const auto g71 = fanuc->text.find("G71 P");
+  ASSERT_NE(g71, std::string::npos);
+  long p = 0, q = 0;
+  ASSERT_EQ(std::sscanf(fanuc->text.c_str() + g71, "G71 P%ld Q%ld", &p, &q), 2);
+  EXPECT_EQ(blocks.at(p).rfind("G00 X", 0), 0u) << blocks.at(p);
+  EXPECT_EQ(blocks.at(q).rfind("G01 X", 0), 0u) << blocks.at(q);
+  ASSERT_NE(blocks.upper_bound(q), blocks.end());
+  EXPECT_EQ(blocks.upper_bound(q)->second.rfind("G00 G42", 0), 0u) << blocks.upper_bound(q)->second;
+
+  // Classic reads N1-N9999: 1,200 steps already pass it at N10 steps.
+  options.dialect = gcode::Dialect::Classic;
+  const auto classic = generateProgram(manySteps(1'200), options);
+  ASSERT_TRUE(classic);
+  blocks = checkedBlocks(classic->text, gcode::Dialect::Classic);
+  EXPECT_LE(blocks.rbegin()->first, 9'999);
+
+  // Not even N1, N2, ... fit: refused, in both languages.
+  std::vector<Diagnostic> why;
+  EXPECT_FALSE(generateProgram(manySteps(10'500), options, &why));
+  ASSERT_EQ(why.size(), 1u);
+  EXPECT_EQ(why[0].code, "E519");
+  EXPECT_EQ(formatMessage(why[0], Lang::En),
+            "The program would have 21065 blocks, but Rook classic (1999 rules) numbers blocks only from N1 to N9999: "
+            "it is not written; turn the part in fewer steps");
+  EXPECT_EQ(formatMessage(why[0], Lang::Th),
+            "โปรแกรมจะมี 21065 บล็อก แต่ รุก คลาสสิก (กฎปี 2542) ใช้หมายเลขบล็อกได้เพียง N1 ถึง N9999: "
+            "จึงไม่เขียนโปรแกรม ให้ลดจำนวนขั้นของชิ้นงาน");
+}
+
+// A part design or drawing is read with a limit, as program files are (issue 29 item 6).
+TEST(Generator, PartFilesAreReadWithALimit) {
+  const auto shipped = readPartFile(KLUENG_SOURCE_DIR "/resources/parts/step-shaft.json");
+  ASSERT_TRUE(shipped.ok());
+  EXPECT_TRUE(readPartDesign(*shipped.value, "step-shaft.json").ok());
+  const auto device = readPartFile("/dev/zero");
+  EXPECT_FALSE(device.ok());
+  ASSERT_EQ(device.diagnostics.size(), 1u);
+  EXPECT_EQ(device.diagnostics[0].code, "F103");
+  EXPECT_EQ(device.diagnostics[0].args.at(2), "16 MB");
+  EXPECT_EQ(readPartFile("/no/such/part.dxf").diagnostics.at(0).code, "F101");
+  EXPECT_EQ(readPartFile(KLUENG_SOURCE_DIR "/resources/parts").diagnostics.at(0).code, "F102");
 }
 
 }  // namespace

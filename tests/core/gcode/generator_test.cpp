@@ -1,6 +1,7 @@
 // The benchmark's program generator must produce clean programs in both dialects.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <sstream>
 #include <string>
 
@@ -82,6 +83,51 @@ TEST(GeneratedProgramShape, HeaderStockAndSafeLimits) {
   EXPECT_TRUE(sawG42 && sawArcR && sawArcIK && sawDwell);
   EXPECT_EQ(program.blocks.back().words.back().letter, 'M');
   EXPECT_EQ(program.blocks.back().words.back().code(), 30);
+}
+
+TEST_P(GeneratedProgram, RoughingProgramIsCleanAndExact) {
+  for (int blocks : {klueng::bench::RoughingGenerator::kMinimumBlocks, 1000, 1003, 20000}) {
+    const std::string file = klueng::bench::RoughingGenerator::generate(blocks);
+    const Program program = parse(afterHeader(file, 6), 7);
+    ASSERT_EQ(program.blocks.size(), static_cast<std::size_t>(blocks) + 1) << blocks;
+    CheckOptions options;
+    options.dialect = GetParam();
+    options.toolsWithBitmap = std::vector<int>{1};
+    const auto diags = check(program, options);
+    EXPECT_TRUE(diags.empty()) << blocks << " blocks:\n" << describe(diags);
+  }
+}
+
+TEST(GeneratedProgramShape, RoughingGoesDownAllLevelsClearOfTheChuck) {
+  const std::string file = klueng::bench::RoughingGenerator::generate(20000);
+  EXPECT_EQ(file.rfind("Generated roughing job\nHeavy roughing shaft\nMild steel\n160\n1120\n", 0), 0u);
+  const Program program = parse(afterHeader(file, 6), 7);
+  double lowestX = 1e9, lowestZ = 0.0;
+  int feedsAtLowest = 0;
+  for (const Block& b : program.blocks)
+    for (const Word& w : b.words) {
+      if (w.letter == 'Z') lowestZ = std::min(lowestZ, w.value);
+      if (w.letter == 'X' && w.value < lowestX) {
+        lowestX = w.value;
+        feedsAtLowest = 0;
+      }
+      if (w.letter == 'X' && w.value == lowestX) ++feedsAtLowest;
+    }
+  EXPECT_EQ(lowestX, 21.0);   // the last level
+  EXPECT_EQ(lowestZ, -100.0);  // the chuck grips Z -105..-120
+  EXPECT_GT(feedsAtLowest, 50);  // many passes a level
+}
+
+TEST(GeneratedProgramShape, RoughingInLinuxCncDialectHasTheSameBlocks) {
+  const std::string ours = klueng::bench::RoughingGenerator::generate(1000);
+  const std::string theirs = klueng::bench::RoughingGenerator::generate(1000, true);
+  EXPECT_EQ(theirs.rfind("%\nN1 G21 G40 G97\nN2 G95\nN3 T1 M6\n", 0), 0u);
+  EXPECT_EQ(theirs.substr(theirs.size() - 2), "%\n");
+  EXPECT_EQ(std::count(theirs.begin(), theirs.end(), '\n'), 1000 + 2);
+  EXPECT_EQ(std::count(ours.begin(), ours.end(), '\n'), 1000 + 7);
+  EXPECT_EQ(theirs.find("O0001"), std::string::npos);
+  // The passes are the same text.
+  EXPECT_EQ(theirs.substr(theirs.find("N6 ")), afterHeader(ours, 7).substr(afterHeader(ours, 7).find("N6 ")) + "%\n");
 }
 
 INSTANTIATE_TEST_SUITE_P(BothDialects, GeneratedProgram, ::testing::Values(Dialect::Fanuc, Dialect::Classic));

@@ -42,6 +42,12 @@ class Stock {
   double innerRadius(int i) const;                       // start of the lowest interval (0 = solid)
   // Largest outer radius over columns [first, last] (fast: block maxima).
   double maxOuterRadius(int first, int last) const;
+  // Never below the outer radius of any column of aligned block b (columns
+  // [b * kBlock, (b + 1) * kBlock)) or super-block s: what a sweep may skip.
+  static constexpr int kBlock = 32;
+  static constexpr int kSuper = kBlock * 32;
+  double blockMaxOuter(int b) const { return blockMax_[static_cast<std::size_t>(b)]; }
+  double superMaxOuter(int s) const { return superMax_[static_cast<std::size_t>(s)]; }
 
   // Removes radius range [lo, hi] from column i; returns the removed volume in mm^3.
   // (Inline: a sweep asks it of every column it passes, mostly above the material.)
@@ -74,8 +80,6 @@ class Stock {
   std::vector<double> outer_;
   std::vector<double> blockMax_;  // max outer radius per block of kBlock columns
   std::vector<double> superMax_;  // and per super-block of kSuper columns (kBlock blocks)
-  static constexpr int kBlock = 32;
-  static constexpr int kSuper = kBlock * 32;
 };
 
 // The chuck (SPEC 1 ext): jaws grip the stock's left `grip` mm; the body sits left of the bar.

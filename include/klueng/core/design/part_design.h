@@ -13,6 +13,7 @@
 // Outside cylinders, tapers and arcs, each with a chamfer or a round at its
 // right-hand edge, grooves and threads on the cylinders; bore steps inside a
 // tube, cut with the boring bar.
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -70,6 +71,13 @@ struct PartDesign {
   bool partOff = false;                  // cut the part off the bar at its left end (parting tool T07)
   double length() const;                 // of the turned part (the steps)
 };
+
+// The largest part design (JSON) or drawing (DXF) read: a lathe part's half
+// section is kilobytes; a 90 MB drawing took 16 s and 1.1 GB to refuse (issue 29).
+inline constexpr std::size_t kMaxPartFileBytes = 16u * 1024u * 1024u;
+// A part design's or drawing's bytes: F101 no such file, F102 a folder or
+// unreadable, F103 over kMaxPartFileBytes (a device such as /dev/zero stops there).
+io::ReadResult<std::string> readPartFile(const std::string& path);
 
 // JSON (docs/parts.md); F180-F182 diagnostics with the JSON's line and column.
 io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::string& fileName);
