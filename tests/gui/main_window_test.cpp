@@ -694,6 +694,78 @@ class MainWindowTest : public QObject {
     QCOMPARE(MainWindow::formatDuration(192.44), QStringLiteral("3 min 12.4 s"));
   }
 
+  // Issue 28 item 6: the alarm banner and the alarm in the list belong to the
+  // text that ran; fixing the line takes them away.
+  void fixingTheAlarmsLineTakesTheBannerAway() {
+    MainWindow w;
+    w.show();
+    QVERIFY(waitIdle(w));
+    w.editor()->setPlainText(QStringLiteral("G21 G99\nT0101 G00 X60. Z5.\nG01 X40. Z-10. F0.2\nM30\n"));
+    QVERIFY(waitIdle(w));
+    w.runController()->setSpeed(RunController::kAsFastAsPossible);
+    w.action(QStringLiteral("actionGo"))->trigger();
+    QTRY_COMPARE_WITH_TIMEOUT(w.runController()->state(), RunState::Alarm, 20000);
+    QVERIFY(w.bannerText().startsWith(QStringLiteral("Alarm ")));
+    // The spindle was not started: the student adds S800 M03 to the tool block.
+    QTextCursor c(w.editor()->document()->findBlockByNumber(1));
+    c.movePosition(QTextCursor::EndOfBlock);
+    c.insertText(QStringLiteral(" S800 M03"));
+    QCOMPARE(w.bannerText(), QString());
+    QVERIFY(waitIdle(w));
+    for (const core::Diagnostic& d : w.diagnosticsPanel()->diagnostics())
+      QVERIFY2(d.severity != core::Severity::Alarm, d.code.c_str());
+    QCOMPARE(w.bannerText(), QString());
+  }
+
+  // Issue 28 item 6: "fix the errors first" goes when the errors are fixed.
+  void theRefusedRunsBannerGoesWhenTheErrorsAreFixed() {
+    MainWindow w;
+    w.show();
+    QVERIFY(waitIdle(w));
+    w.editor()->setPlainText(QStringLiteral("G21 G99 S800 M03\nT0101 G00 X60. Z5.\nG01 Y3.\nM30\n"));
+    QVERIFY(waitIdle(w));
+    w.action(QStringLiteral("actionGo"))->trigger();
+    QTRY_VERIFY_WITH_TIMEOUT(w.bannerText().startsWith(QStringLiteral("The program has 1 error")), 20000);
+    w.editor()->setPlainText(QStringLiteral("G21 G99 S800 M03\nT0101 G00 X60. Z5.\nG01 X40. F0.2\nM30\n"));
+    QVERIFY(waitIdle(w));
+    QCOMPARE(w.diagnosticsPanel()->errorCount(), 0);
+    QCOMPARE(w.bannerText(), QString());
+  }
+
+  // Issue 28 item 6: a language switch says the banner again in the new language.
+  void theBannerFollowsTheLanguage() {
+    MainWindow w;
+    w.show();
+    QVERIFY(w.openFile(sample("01-step-shaft.txt")));
+    QVERIFY(waitIdle(w));
+    w.runController()->setSpeed(RunController::kAsFastAsPossible);
+    w.action(QStringLiteral("actionGo"))->trigger();
+    QTRY_COMPARE_WITH_TIMEOUT(w.runController()->state(), RunState::Finished, 20000);
+    QVERIFY(w.bannerText().startsWith(QStringLiteral("The program ended. Cycle time: ")));
+    const double seconds = w.runController()->timeline()->cycleTime();
+    Language::instance()->setLanguage(QStringLiteral("th"));
+    QCoreApplication::processEvents();
+    QCOMPARE(w.bannerText(), QStringLiteral("จบโปรแกรมแล้ว เวลาทำงาน (cycle time): %1").arg(MainWindow::formatDuration(seconds)));
+    QVERIFY(MainWindow::formatDuration(seconds).contains(QStringLiteral("วินาที")));
+    Language::instance()->setLanguage(QStringLiteral("en"));
+    QCoreApplication::processEvents();
+    QVERIFY(w.bannerText().startsWith(QStringLiteral("The program ended. Cycle time: ")));
+  }
+
+  // Issue 28 item 6: an empty program runs nothing and says so, never "ended, 0.0 s".
+  void anEmptyProgramRunsNothing() {
+    MainWindow w;
+    w.show();
+    QVERIFY(waitIdle(w));
+    w.editor()->setPlainText(QStringLiteral("%\n(nothing yet)\n%\n"));
+    QVERIFY(waitIdle(w));
+    w.runController()->setSpeed(RunController::kAsFastAsPossible);
+    w.action(QStringLiteral("actionGo"))->trigger();
+    QTRY_COMPARE_WITH_TIMEOUT(w.runController()->state(), RunState::Finished, 20000);
+    QCOMPARE(w.bannerText(), QStringLiteral("There is nothing to run: the program has no blocks. Type the program in "
+                                            "the editor or open a file."));
+  }
+
   // Issue 11: while stepping, the bar under the editor explains the block at the arrow.
   void stepExplainsTheBlockAtTheArrow() {
     MainWindow w;
