@@ -418,7 +418,7 @@ void MainWindow::loadMachineSetup(const QString& dir) {
           lines << QStringLiteral("%1:%2: %3")
                        .arg(QDir::toNativeSeparators(QString::fromStdString(d.file)))
                        .arg(d.diagnostic.range.line)
-                       .arg(QString::fromStdString(core::formatMessage(d.diagnostic, Language::coreLang())));
+                       .arg(QString::fromStdString(core::formatMessage(d.diagnostic, Language::coreLang(), core::Surface::Gui)));
       return lines.join(QLatin1Char('\n'));
     }, false);
   runner_->setMachineSetup(setup_);
@@ -518,7 +518,7 @@ void MainWindow::onAlarm(const core::Diagnostic& alarm) {
     return tr("Alarm %1 on line %2: %3")
         .arg(QString::fromStdString(alarm.code))
         .arg(alarm.range.line)
-        .arg(QString::fromStdString(core::formatMessage(alarm, Language::coreLang())));
+        .arg(QString::fromStdString(core::formatMessage(alarm, Language::coreLang(), core::Surface::Gui)));
   }, true);
 }
 

@@ -165,7 +165,7 @@ void PartPanel::analyse() {
     }
   defects_ = new QTreeWidgetItem(list_);
   for (const Diagnostic& d : cut::partCheckDiagnostics(check)) {
-    QTreeWidgetItem* item = row(defects_, qs(formatMessage(d, lang)), QString(), d.range.line, 0.0, 0.0);
+    QTreeWidgetItem* item = row(defects_, qs(formatMessage(d, lang, core::Surface::Gui)), QString(), d.range.line, 0.0, 0.0);
     if (d.code == codes::kPartGouge || d.code == codes::kBoreGouge) item->setForeground(0, QColor(190, 0, 0));
     if (d.code == codes::kPartLeftover || d.code == codes::kBoreLeftover) item->setForeground(0, QColor(150, 110, 0));
   }
