@@ -10,6 +10,7 @@
 #include <QInputDialog>
 #include <QLabel>
 #include <QMenu>
+#include <QMenuBar>
 #include <QProgressBar>
 #include <QScreen>
 #include <QSplitter>
@@ -145,11 +146,16 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   statusFields_ = new StatusFields(this);
   statusFields_->setObjectName(QStringLiteral("statusFields"));
   statusBar()->addWidget(statusFields_, 1);
+  // The busy bar sits at the right end of the menu bar, which has room in
+  // both languages: in the status bar it took 140 px the fields need at 1366 px.
   busyBar_ = new QProgressBar(this);
+  busyBar_->setObjectName(QStringLiteral("busyBar"));
   busyBar_->setRange(0, 0);
-  busyBar_->setMaximumWidth(140);
+  busyBar_->setFixedWidth(120);
+  busyBar_->setMaximumHeight(menuBar()->fontMetrics().height());
+  busyBar_->setTextVisible(false);
   busyBar_->hide();
-  statusBar()->addPermanentWidget(busyBar_);
+  menuBar()->setCornerWidget(busyBar_, Qt::TopRightCorner);
 
   checker_ = new CheckController(this, [this] { return editor_->toPlainText(); }, [this] { return checkRequest(); });
   connect(checker_, &CheckController::started, this, [this] { QTimer::singleShot(300, this, &MainWindow::showBusyIndicator); });

@@ -22,6 +22,9 @@
 #include <QUrl>
 #include <QTextBlock>
 #include <QTimer>
+#include <QLabel>
+#include <QProgressBar>
+#include <QStatusBar>
 
 #include "fresh_user_folders.h"
 #include "gui/code_editor.h"
@@ -764,6 +767,48 @@ class MainWindowTest : public QObject {
     QTRY_COMPARE_WITH_TIMEOUT(w.runController()->state(), RunState::Finished, 20000);
     QCOMPARE(w.bannerText(), QStringLiteral("There is nothing to run: the program has no blocks. Type the program in "
                                             "the editor or open a file."));
+  }
+
+  // Issue 28 item 7: every status bar field is whole at 1366 px in both
+  // languages, with wide values (a 10-minute program, a 2-digit day) and the
+  // busy bar showing.
+  void theStatusBarFieldsAreWholeAt1366() {
+    for (const QString& lang : {QStringLiteral("en"), QStringLiteral("th")}) {
+      MainWindow w;  // reads the language from the settings: set it after
+      Language::instance()->setLanguage(lang);
+      w.resize(1366, 740);
+      w.show();
+      QVERIFY(waitIdle(w));
+      RunStatus s;
+      s.position = core::zx(-123.456, 27.5);
+      s.programmedFeed = 0.25;
+      s.rpm = 2500;
+      s.machine.tool = 1;
+      s.machine.offset = 1;
+      s.machine.offsetX = -12.345;
+      s.machine.offsetZ = -123.456;
+      s.machine.noseRadius = 0.8;
+      s.machine.tip = 3;
+      s.time = 610.1;
+      s.cycleTime = 733.4;
+      w.statusFields()->setStatus(s);
+      auto* busy = w.findChild<QProgressBar*>(QStringLiteral("busyBar"));
+      QVERIFY(busy);
+      busy->show();  // as while a long program is checked
+      w.statusBar()->clearMessage();
+      QCoreApplication::processEvents();
+      QVERIFY(QTest::qWaitForWindowExposed(&w));
+      const QList<QLabel*> labels = w.statusFields()->findChildren<QLabel*>();
+      QVERIFY(labels.size() >= 22);
+      for (QLabel* l : labels) {
+        QVERIFY2(l->isVisible(), qPrintable(l->text()));
+        QVERIFY2(l->width() >= l->sizeHint().width(),
+                 qPrintable(QStringLiteral("%1: %2 px of %3 (%4)").arg(l->text()).arg(l->width()).arg(l->sizeHint().width()).arg(lang)));
+        QVERIFY2(l->geometry().right() <= w.statusFields()->width(), qPrintable(l->text()));
+      }
+      QVERIFY(w.statusFields()->geometry().right() <= w.width());
+    }
+    Language::instance()->setLanguage(QStringLiteral("en"));
   }
 
   // Issue 11: while stepping, the bar under the editor explains the block at the arrow.
