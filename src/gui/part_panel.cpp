@@ -65,6 +65,7 @@ PartPanel::PartPanel(QWidget* parent, std::function<Source()> source)
   compare_ = new QComboBox(body);
   compare_->setObjectName(QStringLiteral("compareCompensation"));
   compare_->addItems({QString(), QString(), QString()});
+  compare_->setSizeAdjustPolicy(QComboBox::AdjustToContents);  // the Thai choices are longer: never cut
   measure_ = new QPushButton(body);
   measure_->setObjectName(QStringLiteral("measure"));
   measure_->setCheckable(true);

@@ -153,6 +153,11 @@ class PartPanelTest : public QObject {
     QVERIFY2(thai.contains(QStringLiteral("ทรงกระบอก Ø30 Z-3 ถึง Z-19.2 ยาว 16.2")), qPrintable(thai.join(u'\n')));
     QVERIFY(!thai.join(u'\n').contains(QStringLiteral("Cylinder")));
     QVERIFY2(!part->summary()->text().contains(QStringLiteral("no gouge")), qPrintable(part->summary()->text()));
+    // The comparison's choice is whole in Thai too ("เปรียบเทียบ: ไม่ชดเชยรัศมีจมูกมีด").
+    auto* compare = part->findChild<QComboBox*>(QStringLiteral("compareCompensation"));
+    QCoreApplication::processEvents();
+    QVERIFY2(compare->width() >= compare->fontMetrics().horizontalAdvance(compare->currentText()) + 24,
+             qPrintable(QStringLiteral("%1: %2 px").arg(compare->currentText()).arg(compare->width())));
     gui::Language::instance()->setLanguage(QStringLiteral("en"));
     QCoreApplication::processEvents();
     QVERIFY(texts(group(part->list(), QStringLiteral("Features"))).contains(cylinder));
