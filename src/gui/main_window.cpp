@@ -239,6 +239,7 @@ void MainWindow::connectDocuments() {
     runner_->stop();
     hideBanner();
     output_->clearMeasurement();  // measured on the old file's part
+    statusBar()->clearMessage();  // and its reading
     // Diagnostics belong to their file (issue 11): none of the old file's
     // errors or alarms may underline a line of the new one.
     runDiagnostics_.clear();

@@ -8,6 +8,7 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QStatusBar>
 #include <QTest>
 #include <QTreeWidget>
 
@@ -155,7 +156,9 @@ class PartPanelTest : public QObject {
     QVERIFY2(!part->summary()->text().contains(QStringLiteral("no gouge")), qPrintable(part->summary()->text()));
     // The comparison's choice is whole in Thai too ("เปรียบเทียบ: ไม่ชดเชยรัศมีจมูกมีด").
     auto* compare = part->findChild<QComboBox*>(QStringLiteral("compareCompensation"));
-    QCoreApplication::processEvents();
+    part->raise();  // the dock's tab in front, laid out
+    QTRY_VERIFY(compare->isVisible());
+    QTest::qWait(50);
     QVERIFY2(compare->width() >= compare->fontMetrics().horizontalAdvance(compare->currentText()) + 24,
              qPrintable(QStringLiteral("%1: %2 px").arg(compare->currentText()).arg(compare->width())));
     gui::Language::instance()->setLanguage(QStringLiteral("en"));
@@ -168,9 +171,11 @@ class PartPanelTest : public QObject {
     QTest::mouseClick(output->viewport(), Qt::LeftButton, {}, output->mapFromScene(QPointF(-10.0, -15.05)));
     QTest::mouseClick(output->viewport(), Qt::LeftButton, {}, output->mapFromScene(QPointF(-30.0, -20.05)));
     QVERIFY(output->hasMeasurement());
+    QVERIFY(w.statusBar()->currentMessage().contains(QStringLiteral("ΔØ 10.000")));
     QVERIFY(w.openFile(QStringLiteral(KLUENG_SAMPLES_DIR "/02-thread.txt")));
     QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
     QVERIFY(!output->hasMeasurement());
+    QCOMPARE(w.statusBar()->currentMessage(), QString());  // nor its reading
     QVERIFY(output->partOverlay().empty());
     output->setMeasuring(false);
   }
