@@ -714,6 +714,9 @@ class MainWindowTest : public QObject {
     c.movePosition(QTextCursor::EndOfBlock);
     c.insertText(QStringLiteral(" S800 M03"));
     QCOMPARE(w.bannerText(), QString());
+    // Nor does the run stay at the alarm's block of the old text.
+    QCOMPARE(w.runController()->state(), RunState::Idle);
+    QCOMPARE(w.editor()->executingFileLine(), 0);
     QVERIFY(waitIdle(w));
     for (const core::Diagnostic& d : w.diagnosticsPanel()->diagnostics())
       QVERIFY2(d.severity != core::Severity::Alarm, d.code.c_str());
