@@ -62,7 +62,9 @@ bool leavesThroughTheHole(const std::vector<Move>& moves, std::size_t i) {
     if (zOf(n.path.end) >= -1e-9) {  // leaves in front of the face
       const Vec2 d = n.path.end - n.path.start;
       const bool alongZ = std::abs(d.x()) > 5.0 * std::abs(d.y());
-      return alongZ && diameterOf(n.path.start) < wall && diameterOf(n.path.end) >= kOnCentre;
+      // Out below the pass: from below it, or from the wall slanting inward (G01 X94. Z2.).
+      const bool below = diameterOf(n.path.start) < wall || (d.y() < 0.0 && diameterOf(n.path.end) < wall);
+      return alongZ && below && diameterOf(n.path.end) >= kOnCentre;
     }
     if (diameterOf(n.path.end) >= wall - 1e-9) return false;              // back up to the wall: outside
     if (isFeed(n) && diameterOf(n.path.end) < kOnCentre) return false;   // faced to the centre

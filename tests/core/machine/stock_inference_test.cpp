@@ -355,6 +355,13 @@ TEST(StockInference, BoringRetractBelowThePassIsATube) {
   EXPECT_DOUBLE_EQ(r.bore, 85.0);
   EXPECT_DOUBLE_EQ(r.diameter, 120.0);
   EXPECT_EQ(noteText(text, r, 0), "stock Ø120/Ø85 x 50 mm inferred from G00 X120. Z0. (first approach)");
+  // Leaving the bore in one slanting move from the wall (G01 X85.6 Z2.) is the same evidence.
+  const StockInference slant = infer(
+      "G21 G99\nT0404 (BORING BAR)\nG97 S600 M03\nG00 X120. Z0.\nG01 X80. F0.2\nG00 Z2.\n"
+      "X86.\nG01 Z-30. F0.15\nG01 X85.6 Z2.\nG00 X100. Z100.\nM30\n");
+  ASSERT_TRUE(slant.found);
+  EXPECT_DOUBLE_EQ(slant.insidePassDiameter, 86.0);
+  EXPECT_DOUBLE_EQ(slant.bore, 85.0);
 }
 
 TEST(StockInference, DrilledFirstIsASolidBar) {
