@@ -173,8 +173,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
     // What the last run said (its alarm, its end, its notices) was about the old text.
     if (!banner_->text().isEmpty() && (bannerKind_ == BannerKind::Alarm || bannerKind_ == BannerKind::RunEnded))
       hideBanner();
-    // A run stopped by an alarm points at a block of the old text: back to the start.
-    if (runner_->state() == RunState::Alarm) runner_->stop();
+    // A run stopped by an alarm points at a block of the old text: the runner
+    // takes the new text, which leaves nothing of that run (arrow, cut, time).
+    if (runner_->state() == RunState::Alarm) syncRunner();
     if (!runDiagnostics_.empty()) {
       runDiagnostics_.clear();
       showDiagnostics();

@@ -717,6 +717,7 @@ class MainWindowTest : public QObject {
     // Nor does the run stay at the alarm's block of the old text.
     QCOMPARE(w.runController()->state(), RunState::Idle);
     QCOMPARE(w.editor()->executingFileLine(), 0);
+    QCOMPARE(w.statusFields()->fieldText(StatusFields::Field::Time), QStringLiteral("-"));
     QVERIFY(waitIdle(w));
     for (const core::Diagnostic& d : w.diagnosticsPanel()->diagnostics())
       QVERIFY2(d.severity != core::Severity::Alarm, d.code.c_str());
