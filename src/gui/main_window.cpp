@@ -421,7 +421,7 @@ void MainWindow::loadMachineSetup(const QString& dir) {
   const bool problems = std::any_of(loaded.diagnostics.begin(), loaded.diagnostics.end(),
                                     [](const core::machine::SetupDiagnostic& d) { return core::isError(d.diagnostic.severity); });
   if (problems)
-    showBanner(BannerKind::Setup, [this, diagnostics = loaded.diagnostics] {
+    showBanner(BannerKind::Setup, [diagnostics = loaded.diagnostics] {
       QStringList lines{tr("The machine setup has errors:")};
       for (const core::machine::SetupDiagnostic& d : diagnostics)
         if (core::isError(d.diagnostic.severity))
@@ -483,7 +483,7 @@ void MainWindow::onRunStateChanged(RunState state) {
         return tr("There is nothing to run: the program has no blocks. Type the program in the editor or open a file.");
       }, false);
     else
-      showBanner(BannerKind::RunEnded, [this, seconds = runner_->timeline()->cycleTime()] {
+      showBanner(BannerKind::RunEnded, [seconds = runner_->timeline()->cycleTime()] {
         return tr("The program ended. Cycle time: %1.").arg(formatDuration(seconds));
       }, false);
   }
