@@ -1048,6 +1048,10 @@
         <translation>จบโปรแกรมแล้ว เวลาทำงาน (cycle time): %1</translation>
     </message>
     <message>
+        <source>There is nothing to run: the program has no blocks. Type the program in the editor or open a file.</source>
+        <translation>ไม่มีอะไรให้ทำงาน: โปรแกรมไม่มีบล็อกคำสั่ง พิมพ์โปรแกรมในช่องแก้ไข หรือเปิดไฟล์</translation>
+    </message>
+    <message>
         <source>%1 min %2 s</source>
         <translation>%1 นาที %2 วินาที</translation>
     </message>

@@ -40,7 +40,7 @@ QVariant DiagnosticsModel::data(const QModelIndex& index, int role) const {
       case CodeColumn: return QString::fromStdString(d.code);
       case LineColumn: return d.range.line;
       case ColumnColumn: return d.range.column;
-      case MessageColumn: return QString::fromStdString(core::formatMessage(d, lang));
+      case MessageColumn: return QString::fromStdString(core::formatMessage(d, lang, core::Surface::Gui));
       default: return {};
     }
   }
@@ -49,7 +49,7 @@ QVariant DiagnosticsModel::data(const QModelIndex& index, int role) const {
                                            : d.severity == core::Severity::Note ? QStringLiteral(":/icons/note.svg")
                                                                                 : QStringLiteral(":/icons/warning.svg"));
   if (role == Qt::ToolTipRole && index.column() == MessageColumn)
-    return QString::fromStdString(core::formatMessage(d, lang));
+    return QString::fromStdString(core::formatMessage(d, lang, core::Surface::Gui));
   if (role == Qt::TextAlignmentRole && (index.column() == LineColumn || index.column() == ColumnColumn))
     return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
   return {};

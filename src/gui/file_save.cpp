@@ -9,7 +9,7 @@ namespace klueng::gui {
 namespace {
 
 QString text(const std::optional<core::Diagnostic>& d) {
-  return d ? QString::fromStdString(core::formatMessage(*d, Language::coreLang())) : QString();
+  return d ? QString::fromStdString(core::formatMessage(*d, Language::coreLang(), core::Surface::Gui)) : QString();
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <QInputDialog>
 #include <QLabel>
 #include <QMenu>
+#include <QMenuBar>
 #include <QProgressBar>
 #include <QScreen>
 #include <QSplitter>
@@ -145,11 +146,16 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   statusFields_ = new StatusFields(this);
   statusFields_->setObjectName(QStringLiteral("statusFields"));
   statusBar()->addWidget(statusFields_, 1);
+  // The busy bar sits at the right end of the menu bar, which has room in
+  // both languages: in the status bar it took 140 px the fields need at 1366 px.
   busyBar_ = new QProgressBar(this);
+  busyBar_->setObjectName(QStringLiteral("busyBar"));
   busyBar_->setRange(0, 0);
-  busyBar_->setMaximumWidth(140);
+  busyBar_->setFixedWidth(120);
+  busyBar_->setMaximumHeight(menuBar()->fontMetrics().height());
+  busyBar_->setTextVisible(false);
   busyBar_->hide();
-  statusBar()->addPermanentWidget(busyBar_);
+  menuBar()->setCornerWidget(busyBar_, Qt::TopRightCorner);
 
   checker_ = new CheckController(this, [this] { return editor_->toPlainText(); }, [this] { return checkRequest(); });
   connect(checker_, &CheckController::started, this, [this] { QTimer::singleShot(300, this, &MainWindow::showBusyIndicator); });
@@ -164,6 +170,16 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   connect(editor_->document(), &QTextDocument::contentsChange, this, [this](int, int removed, int added) {
     if ((removed == 0 && added == 0) || docs_->isFillingEditor()) return;
     runnerStale_ = true;
+    // What the last run said (its alarm, its end, its notices) was about the old text.
+    if (!banner_->text().isEmpty() && (bannerKind_ == BannerKind::Alarm || bannerKind_ == BannerKind::RunEnded))
+      hideBanner();
+    // A run stopped by an alarm points at a block of the old text: the runner
+    // takes the new text, which leaves nothing of that run (arrow, cut, time).
+    if (runner_->state() == RunState::Alarm) syncRunner();
+    if (!runDiagnostics_.empty()) {
+      runDiagnostics_.clear();
+      showDiagnostics();
+    }
     checker_->schedule();
   });
   connect(document_, &Document::headerChanged, this, [this] {
@@ -225,6 +241,8 @@ void MainWindow::connectDocuments() {
   connect(docs_, &DocumentManager::aboutToReplace, this, [this] {
     runner_->stop();
     hideBanner();
+    output_->clearMeasurement();  // measured on the old file's part
+    statusBar()->clearMessage();  // and its reading
     // Diagnostics belong to their file (issue 11): none of the old file's
     // errors or alarms may underline a line of the new one.
     runDiagnostics_.clear();
@@ -374,6 +392,11 @@ void MainWindow::onCheckFinished(const JobToolsResult& result) {
     return a.range.line != b.range.line ? a.range.line < b.range.line : a.range.column < b.range.column;
   });
   showDiagnostics();
+  // "Fix the errors first" goes when the errors are fixed.
+  if (bannerKind_ == BannerKind::Refused && !banner_->text().isEmpty() &&
+      std::none_of(lastDiagnostics_.begin(), lastDiagnostics_.end(),
+                   [](const core::Diagnostic& d) { return core::isError(d.severity); }))
+    hideBanner();
   if (!isBusy() && !runner_->isBusy()) busyBar_->hide();
   emit checkFinished();
 }
@@ -395,14 +418,19 @@ void MainWindow::loadMachineSetup(const QString& dir) {
   setup_ = loaded.setup;
   toolsWithBitmap_ = loaded.toolsWithBitmap();
   // A setup file the reader refused is said at once, file and line, above the editor.
-  QStringList problems;
-  for (const core::machine::SetupDiagnostic& d : loaded.diagnostics)
-    if (core::isError(d.diagnostic.severity))
-      problems << QStringLiteral("%1:%2: %3")
-                      .arg(QDir::toNativeSeparators(QString::fromStdString(d.file)))
-                      .arg(d.diagnostic.range.line)
-                      .arg(QString::fromStdString(core::formatMessage(d.diagnostic, Language::coreLang())));
-  if (!problems.isEmpty()) showBanner(tr("The machine setup has errors:") + QLatin1Char('\n') + problems.join(QLatin1Char('\n')), false);
+  const bool problems = std::any_of(loaded.diagnostics.begin(), loaded.diagnostics.end(),
+                                    [](const core::machine::SetupDiagnostic& d) { return core::isError(d.diagnostic.severity); });
+  if (problems)
+    showBanner(BannerKind::Setup, [diagnostics = loaded.diagnostics] {
+      QStringList lines{tr("The machine setup has errors:")};
+      for (const core::machine::SetupDiagnostic& d : diagnostics)
+        if (core::isError(d.diagnostic.severity))
+          lines << QStringLiteral("%1:%2: %3")
+                       .arg(QDir::toNativeSeparators(QString::fromStdString(d.file)))
+                       .arg(d.diagnostic.range.line)
+                       .arg(QString::fromStdString(core::formatMessage(d.diagnostic, Language::coreLang(), core::Surface::Gui)));
+      return lines.join(QLatin1Char('\n'));
+    }, false);
   runner_->setMachineSetup(setup_);
   if (designer_) designer_->setMachineSetup(setup_);
   toolInference_ = {};  // the next check decides the job's tools from the new tables
@@ -438,6 +466,9 @@ void MainWindow::onRunStateChanged(RunState state) {
   // The text being run must not change under the animation.
   editor_->setReadOnly(running);
   if (state == RunState::Idle) editor_->setExecutingLine(0);
+  // The Part marks (the comparison's outline, gouges) fit the finished part,
+  // not a bar being cut again: hidden while a run is under way.
+  output_->setPartOverlayHidden(state != RunState::Idle && state != RunState::Finished);
   if (state == RunState::Running || state == RunState::Stepping || state == RunState::Preparing) {
     if (!runDiagnostics_.empty()) {
       runDiagnostics_.clear();
@@ -445,8 +476,17 @@ void MainWindow::onRunStateChanged(RunState state) {
     }
   }
   // Issue 11: the end of a run says so, with the cycle time the core computed.
-  if (state == RunState::Finished && runner_->timeline() && !runner_->timeline()->alarm)
-    showBanner(tr("The program ended. Cycle time: %1.").arg(formatDuration(runner_->timeline()->cycleTime())), false);
+  // A program with no block to run (an empty editor, only comments) ran nothing.
+  if (state == RunState::Finished && runner_->timeline() && !runner_->timeline()->alarm) {
+    if (runner_->timeline()->snapshots.empty())
+      showBanner(BannerKind::RunEnded, [] {
+        return tr("There is nothing to run: the program has no blocks. Type the program in the editor or open a file.");
+      }, false);
+    else
+      showBanner(BannerKind::RunEnded, [seconds = runner_->timeline()->cycleTime()] {
+        return tr("The program ended. Cycle time: %1.").arg(formatDuration(seconds));
+      }, false);
+  }
   // The run's notices (a vacant address left out, M99 in the main program, a
   // #3006 stop message) up to where it stands, for lines of this file.
   if ((state == RunState::Paused || state == RunState::Finished) && runner_->timeline()) {
@@ -484,19 +524,21 @@ void MainWindow::onAlarm(const core::Diagnostic& alarm) {
   runDiagnostics_ = {alarm};
   showDiagnostics();
   editor_->setExecutingLine(alarm.range.line);
-  showBanner(tr("Alarm %1 on line %2: %3")
-                 .arg(QString::fromStdString(alarm.code))
-                 .arg(alarm.range.line)
-                 .arg(QString::fromStdString(core::formatMessage(alarm, Language::coreLang()))),
-             true);
+  showBanner(BannerKind::Alarm, [alarm] {
+    return tr("Alarm %1 on line %2: %3")
+        .arg(QString::fromStdString(alarm.code))
+        .arg(alarm.range.line)
+        .arg(QString::fromStdString(core::formatMessage(alarm, Language::coreLang(), core::Surface::Gui)));
+  }, true);
 }
 
 void MainWindow::onCheckFailed(const QList<core::Diagnostic>& diags) {
   int errors = 0;
   for (const auto& d : diags) errors += core::isError(d.severity);
-  showBanner(tr("The program has %n error(s); fix them before running. Click an error below to go to it.", nullptr,
-                errors),
-             true);
+  showBanner(BannerKind::Refused, [errors] {
+    return tr("The program has %n error(s); fix them before running. Click an error below to go to it.", nullptr,
+              errors);
+  }, true);
   diagnostics_->show();
   diagnostics_->raise();
   // Go to the first error in the editor's own file (a subprogram file's are E412 on its call).
@@ -507,9 +549,17 @@ void MainWindow::onCheckFailed(const QList<core::Diagnostic>& diags) {
     }
 }
 
-void MainWindow::showBanner(const QString& text, bool error) { banner_->showMessage(text, error); }
+void MainWindow::showBanner(BannerKind kind, std::function<QString()> text, bool error) {
+  bannerKind_ = kind;
+  bannerMaker_ = std::move(text);
+  bannerError_ = error;
+  banner_->showMessage(bannerMaker_(), error);
+}
 
-void MainWindow::hideBanner() { banner_->dismiss(); }
+void MainWindow::hideBanner() {
+  bannerMaker_ = nullptr;
+  banner_->dismiss();
+}
 
 void MainWindow::updateStockLabel() {
   if (!setupStrip_ || !document_) return;
@@ -582,7 +632,8 @@ void MainWindow::pushSetupChange(const QString& text, const QString& dir, const 
     toolOverrides_ = overrides;
     saveToolOverrides(document_->filePath(), toolOverrides_);
     loadMachineSetup(folder);
-    if (!error.isEmpty()) showBanner(tr("The machine setup could not be written back: %1").arg(error), true);
+    if (!error.isEmpty())
+      showBanner(BannerKind::Setup, [error] { return tr("The machine setup could not be written back: %1").arg(error); }, true);
     runnerStale_ = true;
     checkNow();  // empty offset rows may take a library tool's nose radius and tip
   };

@@ -158,7 +158,10 @@ class MainWindow : public QMainWindow {
   void onRunStateChanged(RunState state);
   void onAlarm(const core::Diagnostic& alarm);
   void onCheckFailed(const QList<core::Diagnostic>& diags);
-  void showBanner(const QString& text, bool error);
+  // What the banner says, made again in the current language on a language
+  // switch; an edit of the program takes away what a run said about the old text.
+  enum class BannerKind { Setup, RunEnded, Alarm, Refused };
+  void showBanner(BannerKind kind, std::function<QString()> text, bool error);
   void hideBanner();
   void updateStockLabel();
   void setSpeedIndex(int index);
@@ -179,6 +182,9 @@ class MainWindow : public QMainWindow {
   StatusLamps* statusLamps_ = nullptr;
   QSplitter* splitter_ = nullptr;
   class Banner* banner_ = nullptr;
+  BannerKind bannerKind_ = BannerKind::Setup;
+  std::function<QString()> bannerMaker_;  // the banner's text in the current language
+  bool bannerError_ = false;
   class ExplainBar* explainBar_ = nullptr;
   DialectOfferBar* dialectOffer_ = nullptr;
   class RecoveryBar* recoveryBar_ = nullptr;

@@ -9,6 +9,7 @@
 #include <QUndoStack>
 #include <QVBoxLayout>
 
+#include "gui/banner.h"
 #include "gui/action_table.h"
 #include "gui/class_grade_dialog.h"
 #include "gui/code_editor.h"
@@ -265,14 +266,13 @@ void MainWindow::retranslateUi() {
   updateSetupUndo_();  // its tips name the step in the new language
   updateTitle();
   updateStockLabel();
+  // The banner says what it said, in the new language.
+  if (bannerMaker_ && !banner_->text().isEmpty()) banner_->showMessage(bannerMaker_(), bannerError_);
 }
 
 void MainWindow::changeEvent(QEvent* event) {
   QMainWindow::changeEvent(event);
-  if (event->type() == QEvent::LanguageChange && actions_) {
-    retranslateUi();
-    if (!runDiagnostics_.empty()) onAlarm(runDiagnostics_.front());
-  }
+  if (event->type() == QEvent::LanguageChange && actions_) retranslateUi();
 }
 
 void MainWindow::toggleLanguage() {

@@ -70,7 +70,7 @@ OffsetDefineDialog::OffsetDefineDialog(const QString& configDir, QWidget* parent
   }
   filling_ = false;
   QStringList loadProblems;
-  for (const auto& d : read.diagnostics) loadProblems << QString::fromStdString(core::formatMessage(d, Language::coreLang()));
+  for (const auto& d : read.diagnostics) loadProblems << QString::fromStdString(core::formatMessage(d, Language::coreLang(), core::Surface::Gui));
   if (!loadProblems.isEmpty()) intro_->setToolTip(loadProblems.join(QLatin1Char('\n')));
 
   connect(table_, &QTableWidget::itemChanged, this, [this] {
@@ -161,7 +161,7 @@ void OffsetDefineDialog::accept() {
   // Never write a file the loader would refuse.
   const auto check = io::parseOffsetTable(text, "offset.cfg");
   if (!check.ok()) {
-    QMessageBox::warning(this, windowTitle(), QString::fromStdString(core::formatMessage(check.diagnostics.front(), Language::coreLang())));
+    QMessageBox::warning(this, windowTitle(), QString::fromStdString(core::formatMessage(check.diagnostics.front(), Language::coreLang(), core::Surface::Gui)));
     return;
   }
   QString error;

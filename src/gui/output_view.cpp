@@ -145,7 +145,10 @@ void OutputView::rebuild() {
   updateFrame();
   // A new program (timeline) is fitted once; after that zoom and pan are the user's.
   const void* timeline = controller_ ? controller_->timeline() : nullptr;
-  if (timeline != fittedTimeline_) fitPending_ = true;
+  if (timeline != fittedTimeline_) {
+    fitPending_ = true;
+    clearMeasurement();  // points measured on another program's part do not belong to this one
+  }
   fittedTimeline_ = timeline;
   if (fitPending_ || !timeline) fitToView();
   scene()->update();
@@ -318,6 +321,18 @@ void OutputView::setMeasuring(bool on) {
 }
 
 void OutputView::setPartOverlay(const PartOverlay& overlay) { overlay_->setOverlay(overlay); }
+
+bool OutputView::hasMeasurement() const { return measure_->isVisible(); }
+
+void OutputView::clearMeasurement() {
+  measureA_.reset();
+  measureB_.reset();
+  measure_->setVisible(false);
+}
+
+void OutputView::setPartOverlayHidden(bool hidden) { overlay_->setVisible(!hidden); }
+
+bool OutputView::isPartOverlayShown() const { return overlay_->isVisible() && !overlay_->overlay().empty(); }
 
 const PartOverlay& OutputView::partOverlay() const { return overlay_->overlay(); }
 

@@ -57,6 +57,12 @@ class OutputView : public QGraphicsView {
   // a reading (measured()). Off clears the points.
   void setMeasuring(bool on);
   bool isMeasuring() const { return measuring_; }
+  // A measurement (one or two points) is drawn; a new program takes it away.
+  bool hasMeasurement() const;
+  void clearMeasurement();
+  // While a run cuts the stock again the Part marks do not fit it: hidden, kept.
+  void setPartOverlayHidden(bool hidden);
+  bool isPartOverlayShown() const;
   // The point under a scene position, snapped to the stock's profile and faces within `pixels`.
   QPointF snapped(const QPointF& scenePos, double pixels = 6.0) const;
   // The ruler thickness in pixels (the viewport margins).

@@ -51,7 +51,7 @@ class DesignCommand : public QUndoCommand {
   std::function<void(const PartDesign&)> apply_;
 };
 
-QString message(const core::Diagnostic& d) { return QString::fromStdString(core::formatMessage(d, Language::coreLang())); }
+QString message(const core::Diagnostic& d) { return QString::fromStdString(core::formatMessage(d, Language::coreLang(), core::Surface::Gui)); }
 
 
 // What a new part looks like before anything is drawn: a plain bar turned down 5 mm over half its length.

@@ -65,6 +65,7 @@ PartPanel::PartPanel(QWidget* parent, std::function<Source()> source)
   compare_ = new QComboBox(body);
   compare_->setObjectName(QStringLiteral("compareCompensation"));
   compare_->addItems({QString(), QString(), QString()});
+  compare_->setSizeAdjustPolicy(QComboBox::AdjustToContents);  // the Thai choices are longer: never cut
   measure_ = new QPushButton(body);
   measure_->setObjectName(QStringLiteral("measure"));
   measure_->setCheckable(true);
@@ -101,7 +102,8 @@ void PartPanel::invalidate() {
   list_->clear();
   features_ = defects_ = differences_ = nullptr;
   base_ = PartOverlay{};
-  summary_->setText(tr("The program changed: check the part again."));
+  summaryMaker_ = [] { return tr("The program changed: check the part again."); };
+  summary_->setText(summaryMaker_());
   emit overlayChanged(base_);
 }
 
@@ -124,7 +126,12 @@ void PartPanel::retranslateUi() {
 
 void PartPanel::changeEvent(QEvent* event) {
   QDockWidget::changeEvent(event);
-  if (event->type() == QEvent::LanguageChange) retranslateUi();
+  if (event->type() != QEvent::LanguageChange) return;
+  retranslateUi();
+  // The list and the summary are the core's sentences in the language of the
+  // last check: say them again in the new one (the same program, cut again).
+  if (features_) analyse();
+  else if (summaryMaker_) summary_->setText(summaryMaker_());
 }
 
 void PartPanel::analyse() {
@@ -140,7 +147,8 @@ void PartPanel::analyse() {
   job.folder = src.folder;
   const machine::CompiledJob compiled = machine::compileJob(src.program, src.setup, job);
   if (!compiled.timeline) {
-    summary_->setText(tr("The program has errors: correct them, then check the part."));
+    summaryMaker_ = [] { return tr("The program has errors: correct them, then check the part."); };
+    summary_->setText(summaryMaker_());
     QApplication::restoreOverrideCursor();
     emit overlayChanged(base_);
     return;
@@ -158,7 +166,7 @@ void PartPanel::analyse() {
     }
   defects_ = new QTreeWidgetItem(list_);
   for (const Diagnostic& d : cut::partCheckDiagnostics(check)) {
-    QTreeWidgetItem* item = row(defects_, qs(formatMessage(d, lang)), QString(), d.range.line, 0.0, 0.0);
+    QTreeWidgetItem* item = row(defects_, qs(formatMessage(d, lang, core::Surface::Gui)), QString(), d.range.line, 0.0, 0.0);
     if (d.code == codes::kPartGouge || d.code == codes::kBoreGouge) item->setForeground(0, QColor(190, 0, 0));
     if (d.code == codes::kPartLeftover || d.code == codes::kBoreLeftover) item->setForeground(0, QColor(150, 110, 0));
   }
@@ -184,6 +192,7 @@ void PartPanel::analyse() {
     }
     if (!c.usesCompensation) summary += QLatin1Char(' ') + tr("The program has no G41/G42 moves.");
   }
+  summaryMaker_ = nullptr;
   summary_->setText(summary);
   retranslateUi();
   list_->expandAll();

@@ -65,6 +65,7 @@ class PartPanel : public QDockWidget {
   QTreeWidgetItem* defects_ = nullptr;
   QTreeWidgetItem* differences_ = nullptr;
   PartOverlay base_;  // defects and the comparison's outline; a selection adds its highlight
+  std::function<QString()> summaryMaker_;  // the summary line in the current language
 };
 
 }  // namespace klueng::gui

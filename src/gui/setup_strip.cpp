@@ -59,7 +59,7 @@ void SetupLine::elide() {
 
 namespace {
 
-QString note(const core::Diagnostic& d) { return QString::fromStdString(core::formatMessage(d, Language::coreLang())); }
+QString note(const core::Diagnostic& d) { return QString::fromStdString(core::formatMessage(d, Language::coreLang(), core::Surface::Gui)); }
 
 // A library tool's name in the UI language; the id when the library has no such tool.
 QString libraryName(const std::string& id) {

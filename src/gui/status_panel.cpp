@@ -42,10 +42,12 @@ StatusFields::StatusFields(QWidget* parent) : QWidget(parent) {
     values_[i]->setTextInteractionFlags(Qt::TextSelectableByMouse);
     layout->addWidget(names_[i]);
     layout->addWidget(values_[i]);
-    if (i + 1 < kCount) layout->addSpacing(4);
+    if (i + 1 < kCount) layout->addSpacing(2);
   }
-  // Wide enough for "-9999.999" so the bar does not jump while the tool moves.
-  const int wide = values_[0]->fontMetrics().horizontalAdvance(QStringLiteral("-9999.999")) + 8;
+  // Wide enough for "-999.999" so the bar does not jump while the tool moves
+  // on a lathe's travel (a larger number widens its field; at 1366 px the Thai
+  // bar has no room for four fields of "-9999.999").
+  const int wide = values_[0]->fontMetrics().horizontalAdvance(QStringLiteral("-999.999")) + 8;
   for (Field f : {Field::ToolX, Field::ToolZ, Field::OffsetX, Field::OffsetZ}) values_[static_cast<int>(f)]->setMinimumWidth(wide);
   retranslate();
   setStatus(RunStatus{});

@@ -22,6 +22,9 @@
 #include <QUrl>
 #include <QTextBlock>
 #include <QTimer>
+#include <QLabel>
+#include <QProgressBar>
+#include <QStatusBar>
 
 #include "fresh_user_folders.h"
 #include "gui/code_editor.h"
@@ -692,6 +695,124 @@ class MainWindowTest : public QObject {
                                          : QStringLiteral("%1 s").arg(seconds, 0, 'f', 1);
     QCOMPARE(w.bannerText(), QStringLiteral("The program ended. Cycle time: %1.").arg(expected));
     QCOMPARE(MainWindow::formatDuration(192.44), QStringLiteral("3 min 12.4 s"));
+  }
+
+  // Issue 28 item 6: the alarm banner and the alarm in the list belong to the
+  // text that ran; fixing the line takes them away.
+  void fixingTheAlarmsLineTakesTheBannerAway() {
+    MainWindow w;
+    w.show();
+    QVERIFY(waitIdle(w));
+    w.editor()->setPlainText(QStringLiteral("G21 G99\nT0101 G00 X60. Z5.\nG01 X40. Z-10. F0.2\nM30\n"));
+    QVERIFY(waitIdle(w));
+    w.runController()->setSpeed(RunController::kAsFastAsPossible);
+    w.action(QStringLiteral("actionGo"))->trigger();
+    QTRY_COMPARE_WITH_TIMEOUT(w.runController()->state(), RunState::Alarm, 20000);
+    QVERIFY(w.bannerText().startsWith(QStringLiteral("Alarm ")));
+    // The spindle was not started: the student adds S800 M03 to the tool block.
+    QTextCursor c(w.editor()->document()->findBlockByNumber(1));
+    c.movePosition(QTextCursor::EndOfBlock);
+    c.insertText(QStringLiteral(" S800 M03"));
+    QCOMPARE(w.bannerText(), QString());
+    // Nor does the run stay at the alarm's block of the old text.
+    QCOMPARE(w.runController()->state(), RunState::Idle);
+    QCOMPARE(w.editor()->executingFileLine(), 0);
+    QCOMPARE(w.statusFields()->fieldText(StatusFields::Field::Time), QStringLiteral("-"));
+    QVERIFY(waitIdle(w));
+    for (const core::Diagnostic& d : w.diagnosticsPanel()->diagnostics())
+      QVERIFY2(d.severity != core::Severity::Alarm, d.code.c_str());
+    QCOMPARE(w.bannerText(), QString());
+  }
+
+  // Issue 28 item 6: "fix the errors first" goes when the errors are fixed.
+  void theRefusedRunsBannerGoesWhenTheErrorsAreFixed() {
+    MainWindow w;
+    w.show();
+    QVERIFY(waitIdle(w));
+    w.editor()->setPlainText(QStringLiteral("G21 G99 S800 M03\nT0101 G00 X60. Z5.\nG01 Y3.\nM30\n"));
+    QVERIFY(waitIdle(w));
+    w.action(QStringLiteral("actionGo"))->trigger();
+    QTRY_VERIFY_WITH_TIMEOUT(w.bannerText().startsWith(QStringLiteral("The program has 1 error")), 20000);
+    w.editor()->setPlainText(QStringLiteral("G21 G99 S800 M03\nT0101 G00 X60. Z5.\nG01 X40. F0.2\nM30\n"));
+    QVERIFY(waitIdle(w));
+    QCOMPARE(w.diagnosticsPanel()->errorCount(), 0);
+    QCOMPARE(w.bannerText(), QString());
+  }
+
+  // Issue 28 item 6: a language switch says the banner again in the new language.
+  void theBannerFollowsTheLanguage() {
+    MainWindow w;
+    w.show();
+    QVERIFY(w.openFile(sample("01-step-shaft.txt")));
+    QVERIFY(waitIdle(w));
+    w.runController()->setSpeed(RunController::kAsFastAsPossible);
+    w.action(QStringLiteral("actionGo"))->trigger();
+    QTRY_COMPARE_WITH_TIMEOUT(w.runController()->state(), RunState::Finished, 20000);
+    QVERIFY(w.bannerText().startsWith(QStringLiteral("The program ended. Cycle time: ")));
+    const double seconds = w.runController()->timeline()->cycleTime();
+    Language::instance()->setLanguage(QStringLiteral("th"));
+    QCoreApplication::processEvents();
+    QCOMPARE(w.bannerText(), QStringLiteral("จบโปรแกรมแล้ว เวลาทำงาน (cycle time): %1").arg(MainWindow::formatDuration(seconds)));
+    QVERIFY(MainWindow::formatDuration(seconds).contains(QStringLiteral("วินาที")));
+    Language::instance()->setLanguage(QStringLiteral("en"));
+    QCoreApplication::processEvents();
+    QVERIFY(w.bannerText().startsWith(QStringLiteral("The program ended. Cycle time: ")));
+  }
+
+  // Issue 28 item 6: an empty program runs nothing and says so, never "ended, 0.0 s".
+  void anEmptyProgramRunsNothing() {
+    MainWindow w;
+    w.show();
+    QVERIFY(waitIdle(w));
+    w.editor()->setPlainText(QStringLiteral("%\n(nothing yet)\n%\n"));
+    QVERIFY(waitIdle(w));
+    w.runController()->setSpeed(RunController::kAsFastAsPossible);
+    w.action(QStringLiteral("actionGo"))->trigger();
+    QTRY_COMPARE_WITH_TIMEOUT(w.runController()->state(), RunState::Finished, 20000);
+    QCOMPARE(w.bannerText(), QStringLiteral("There is nothing to run: the program has no blocks. Type the program in "
+                                            "the editor or open a file."));
+  }
+
+  // Issue 28 item 7: every status bar field is whole at 1366 px in both
+  // languages, with wide values (a 10-minute program, a 2-digit day) and the
+  // busy bar showing.
+  void theStatusBarFieldsAreWholeAt1366() {
+    for (const QString& lang : {QStringLiteral("en"), QStringLiteral("th")}) {
+      MainWindow w;  // reads the language from the settings: set it after
+      Language::instance()->setLanguage(lang);
+      w.resize(1366, 740);
+      w.show();
+      QVERIFY(waitIdle(w));
+      RunStatus s;
+      s.position = core::zx(-123.456, 27.5);
+      s.programmedFeed = 0.25;
+      s.rpm = 2500;
+      s.machine.tool = 1;
+      s.machine.offset = 1;
+      s.machine.offsetX = -12.345;
+      s.machine.offsetZ = -123.456;
+      s.machine.noseRadius = 0.8;
+      s.machine.tip = 3;
+      s.time = 610.1;
+      s.cycleTime = 733.4;
+      w.statusFields()->setStatus(s);
+      auto* busy = w.findChild<QProgressBar*>(QStringLiteral("busyBar"));
+      QVERIFY(busy);
+      busy->show();  // as while a long program is checked
+      w.statusBar()->clearMessage();
+      QCoreApplication::processEvents();
+      QVERIFY(QTest::qWaitForWindowExposed(&w));
+      const QList<QLabel*> labels = w.statusFields()->findChildren<QLabel*>();
+      QVERIFY(labels.size() >= 22);
+      for (QLabel* l : labels) {
+        QVERIFY2(l->isVisible(), qPrintable(l->text()));
+        QVERIFY2(l->width() >= l->sizeHint().width(),
+                 qPrintable(QStringLiteral("%1: %2 px of %3 (%4)").arg(l->text()).arg(l->width()).arg(l->sizeHint().width()).arg(lang)));
+        QVERIFY2(l->geometry().right() <= w.statusFields()->width(), qPrintable(l->text()));
+      }
+      QVERIFY(w.statusFields()->geometry().right() <= w.width());
+    }
+    Language::instance()->setLanguage(QStringLiteral("en"));
   }
 
   // Issue 11: while stepping, the bar under the editor explains the block at the arrow.

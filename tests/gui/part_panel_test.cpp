@@ -8,6 +8,7 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QStatusBar>
 #include <QTest>
 #include <QTreeWidget>
 
@@ -115,6 +116,68 @@ class PartPanelTest : public QObject {
     QCOMPARE(part->list()->topLevelItemCount(), 0);
     QVERIFY(output->partOverlay().empty());
     QVERIFY(part->summary()->text().contains(QStringLiteral("check the part again")));
+  }
+
+  // Issue 28 item 6: each view shows the current file and language, or nothing.
+  // A measurement goes with its file; the comparison's outline is hidden while
+  // a run cuts the bar again; a language switch says the Part list again.
+  void noStaleMarks() {
+    gui::MainWindow w;
+    w.resize(1366, 728);
+    w.show();
+    QVERIFY(w.openFile(QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt")));
+    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    gui::PartPanel* part = w.partPanel();
+    auto* output = w.findChild<gui::OutputView*>();
+    auto* runner = w.findChild<gui::RunController*>();
+    part->setComparison(1);
+    part->analyse();
+    QVERIFY(output->isPartOverlayShown());
+    QVERIFY(!output->partOverlay().otherOutline.isEmpty());
+
+    // A re-run: the outline is not drawn over the bar being cut; back at the end.
+    runner->setSpeed(1.0);
+    w.action(QStringLiteral("actionGo"))->trigger();
+    QVERIFY(QTest::qWaitFor([runner] { return runner->state() == gui::RunState::Running; }, 30000));
+    QVERIFY(!output->isPartOverlayShown());
+    runner->setSpeed(gui::RunController::kAsFastAsPossible);
+    QVERIFY(QTest::qWaitFor([runner] { return runner->state() == gui::RunState::Finished; }, 60000));
+    runner->waitForIdle();
+    QVERIFY(output->isPartOverlayShown());
+
+    // The Part list in Thai after the switch, and back.
+    const QString cylinder = QStringLiteral("Cylinder Ø30, Z-3 to Z-19.2, length 16.2");
+    QVERIFY(texts(group(part->list(), QStringLiteral("Features"))).contains(cylinder));
+    gui::Language::instance()->setLanguage(QStringLiteral("th"));
+    QCoreApplication::processEvents();
+    const QStringList thai = texts(group(part->list(), QStringLiteral("รูปร่างชิ้นงาน")));
+    QVERIFY2(thai.contains(QStringLiteral("ทรงกระบอก Ø30 Z-3 ถึง Z-19.2 ยาว 16.2")), qPrintable(thai.join(u'\n')));
+    QVERIFY(!thai.join(u'\n').contains(QStringLiteral("Cylinder")));
+    QVERIFY2(!part->summary()->text().contains(QStringLiteral("no gouge")), qPrintable(part->summary()->text()));
+    // The comparison's choice is whole in Thai too ("เปรียบเทียบ: ไม่ชดเชยรัศมีจมูกมีด").
+    auto* compare = part->findChild<QComboBox*>(QStringLiteral("compareCompensation"));
+    part->raise();  // the dock's tab in front, laid out
+    QTRY_VERIFY(compare->isVisible());
+    QTest::qWait(50);
+    QVERIFY2(compare->width() >= compare->fontMetrics().horizontalAdvance(compare->currentText()) + 24,
+             qPrintable(QStringLiteral("%1: %2 px").arg(compare->currentText()).arg(compare->width())));
+    gui::Language::instance()->setLanguage(QStringLiteral("en"));
+    QCoreApplication::processEvents();
+    QVERIFY(texts(group(part->list(), QStringLiteral("Features"))).contains(cylinder));
+
+    // Measure on sample 01's part, then open sample 02: no point of it is left.
+    output->fitToView();
+    output->setMeasuring(true);
+    QTest::mouseClick(output->viewport(), Qt::LeftButton, {}, output->mapFromScene(QPointF(-10.0, -15.05)));
+    QTest::mouseClick(output->viewport(), Qt::LeftButton, {}, output->mapFromScene(QPointF(-30.0, -20.05)));
+    QVERIFY(output->hasMeasurement());
+    QVERIFY(w.statusBar()->currentMessage().contains(QStringLiteral("ΔØ 10.000")));
+    QVERIFY(w.openFile(QStringLiteral(KLUENG_SAMPLES_DIR "/02-thread.txt")));
+    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    QVERIFY(!output->hasMeasurement());
+    QCOMPARE(w.statusBar()->currentMessage(), QString());  // nor its reading
+    QVERIFY(output->partOverlay().empty());
+    output->setMeasuring(false);
   }
 
   // The 3D view: shown from the View menu, draws the bar before a run and the

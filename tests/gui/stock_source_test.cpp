@@ -6,6 +6,8 @@
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QLabel>
+#include <QMenu>
+#include <QRegularExpression>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -104,6 +106,48 @@ class StockSourceTest : public QObject {
     // Thai at once.
     Language::instance()->setLanguage(QStringLiteral("th"));
     QTRY_VERIFY(w.stockSourceText().contains(QStringLiteral("ประมาณจาก N30 G00 X34. Z0.")));
+  }
+
+  // Issue 28 item 7: the GUI names its own place for the stock, never --stock,
+  // in the words of its menus, English and Thai.
+  void theDefaultStockNamesTheMenuNotTheFlag() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("nothing.nc"));
+    {
+      QFile f(path);
+      QVERIFY(f.open(QIODevice::WriteOnly));
+      f.write("%\nO0009\nG21 G99\nM30\n%\n");
+    }
+    MainWindow w;
+    w.show();
+    QVERIFY(openAndWait(w, path));
+    const auto plain = [](const QString& menuText) {
+      QString t = menuText;
+      t.remove(QRegularExpression(QStringLiteral(" ?\\(&.\\)$")));
+      t.remove(QLatin1Char('&'));
+      t.remove(QStringLiteral("..."));
+      return t.trimmed();
+    };
+    const auto title = [&](const char* menu) {
+      QMenu* m = w.findChild<QMenu*>(QString::fromLatin1(menu));
+      return m ? plain(m->title()) : QString();
+    };
+    const auto menuPath = [&] {
+      return title("menuFile") + QStringLiteral(" ▸ ") + plain(w.action(QStringLiteral("actionJobDetails"))->text());
+    };
+    // The dialect's place, as the I102 note names it (messages_test.cpp).
+    const auto dialectPath = [&] { return title("menuToolSetting") + QStringLiteral(" ▸ ") + title("menuDialect"); };
+    QCOMPARE(dialectPath(), QStringLiteral("Tool setting ▸ G-code dialect"));
+    QCOMPARE(menuPath(), QStringLiteral("File ▸ Job details"));
+    QCOMPARE(w.stockSourceText(), QStringLiteral("Stock Ø50 x 100 mm is the default: the program has no approach to infer "
+                                                 "it from; set it in File ▸ Job details"));
+    Language::instance()->setLanguage(QStringLiteral("th"));
+    QCoreApplication::processEvents();
+    QCOMPARE(menuPath(), QStringLiteral("แฟ้ม ▸ รายละเอียดงาน"));
+    QCOMPARE(dialectPath(), QStringLiteral("ตั้งค่ามีดตัด ▸ ภาษาจีโค้ด"));
+    QTRY_VERIFY(w.stockSourceText().endsWith(QStringLiteral("ตั้งค่าได้ที่ แฟ้ม ▸ รายละเอียดงาน")));
+    QVERIFY(!w.stockSourceText().contains(QStringLiteral("--")));
+    Language::instance()->setLanguage(QStringLiteral("en"));
   }
 
   void jobDetailsAreRememberedPerFile() {

@@ -125,6 +125,7 @@ inline constexpr const char* kStockDefault = "I155";
 inline constexpr const char* kStockFromHeader = "I156";
 inline constexpr const char* kStockLengthFromDeepestCut = "I157";
 inline constexpr const char* kStockInferredFromBore = "I158";
+inline constexpr const char* kStockFromLargestTurned = "I159";
 inline constexpr const char* kToolFromComment = "I401";
 inline constexpr const char* kToolForThreading = "I402";
 inline constexpr const char* kToolForInsideThreading = "I403";

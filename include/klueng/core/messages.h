@@ -25,6 +25,15 @@ std::span<const MessageText> allMessages();
 const MessageText* findMessage(std::string_view code);
 // Text of the diagnostic in the language; an unknown code gives the code and args.
 std::string formatMessage(const Diagnostic& d, Lang lang);
+
+// Where a message is read. The CLI's texts name its flags (--stock,
+// --dialect haas, --decimal-point); the GUI's name the menu items that do the
+// same (File ▸ Job details, Tool setting ▸ G-code dialect), in the words of the
+// GUI's own menus. Codes without such a place read the same on both.
+enum class Surface { Cli, Gui };
+std::string formatMessage(const Diagnostic& d, Lang lang, Surface surface);
+// The GUI's own text of a code, nullptr when it reads as the CLI's.
+const MessageText* findGuiMessage(std::string_view code);
 // GCC style, as the CLI prints it and the GUI shows it:
 // "file:line:column: error F104: text" (no line:column when the diagnostic has none).
 std::string formatWithPlace(std::string_view file, const Diagnostic& d, Lang lang);

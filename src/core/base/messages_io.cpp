@@ -145,6 +145,8 @@ constexpr MessageText kMessages[] = {
     {codes::kStockFromHeader, "stock {0} from the file's job header", "ชิ้นงาน {0} จากส่วนหัวของงานในไฟล์"},
     {codes::kStockInferredFromBore, "stock {0} inferred: the program works only inside a bore, so the bar is a size above its largest cut Ø{1} with a wall around it",
      "ชิ้นงาน {0} ประมาณจากงานกลึงด้านในเท่านั้น: ใช้ขนาดเหล็กเพลาที่โตกว่าเส้นผ่าศก. ใหญ่สุดที่ตัด Ø{1} โดยเผื่อความหนาผนัง"},
+    {codes::kStockFromLargestTurned, "stock {0} inferred from {1} (the largest diameter it turns)",
+     "ชิ้นงาน {0} ประมาณจาก {1} (เส้นผ่านศูนย์กลางใหญ่สุดที่กลึงด้านนอก)"},
     {codes::kStockLengthFromDeepestCut, "stock length {0}: the deepest cut Z{1} ({2}) + {3} for the cut-off + {4} held in the chuck",
      "ความยาวชิ้นงาน {0}: ตัดลึกสุดที่ Z{1} ({2}) + {3} สำหรับการตัดขาด + {4} ส่วนที่หัวจับยึด"},
     // The tool library, library.cfg (docs/tools.md).

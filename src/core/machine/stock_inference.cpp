@@ -17,6 +17,7 @@ namespace {
 
 constexpr double kMmPerInch = 25.4;
 constexpr double kOnCentre = 0.5;  // mm of diameter: a feed at X0 (drill, face to centre)
+constexpr double kBelowWall = 0.005;  // mm of diameter: a retract this far below a pass leaves its wall
 
 bool isFeed(const Move& m) {
   return m.kind == MoveKind::Line || m.kind == MoveKind::Arc || m.kind == MoveKind::Thread;
@@ -28,28 +29,75 @@ bool isZPass(const Move& m) {
   return isFeed(m) && d.x() < -1e-6 && std::abs(d.x()) > 5.0 * std::abs(d.y());
 }
 
-// A -Z pass inside the part whose next change in X goes toward the centre:
-// the tool leaves an inside wall (boring), not an outside one (turning). A
-// feed that then runs across to the centre line is a face cut (a step in Z,
-// then facing down to X0), not a bore.
-bool isInsidePass(const std::vector<Move>& moves, std::size_t i) {
-  const Move& m = moves[i];
-  if (!isZPass(m) || zOf(m.path.end) >= 0.0 || diameterOf(m.path.start) < kOnCentre) return false;
-  for (std::size_t k = i + 1; k < moves.size(); ++k) {
-    const double dx = xOf(moves[k].path.end) - xOf(moves[k].path.start);
-    if (std::abs(dx) <= 1e-6) continue;
-    const bool facesToCentre = isFeed(moves[k]) && diameterOf(moves[k].path.end) < kOnCentre;
-    return dx < 0.0 && !facesToCentre;
-  }
-  return false;
-}
-
 bool isCycleBlock(const gcode::Block& b) {
   for (const gcode::Word* g : b.all('G')) {
     const int c = g->code();
     if (!g->hasDecimalPoint && ((c >= 70 && c <= 76) || c == 90 || c == 92 || c == 94)) return true;
   }
   return false;
+}
+
+const gcode::Block* blockOf(const gcode::Program& program, const Move& m) {
+  return m.blockIndex >= 0 && static_cast<std::size_t>(m.blockIndex) < program.blocks.size()
+             ? &program.blocks[static_cast<std::size_t>(m.blockIndex)]
+             : nullptr;
+}
+
+// A -Z pass inside the part that the tool leaves through a hole: after it the
+// tool moves toward the centre while still behind the face (the boring
+// retract), never comes back up to the pass's diameter, never feeds to the
+// centre line (a step in Z, then facing down to X0, is a face cut), and then
+// leaves the part in front of the face, along Z, below the pass's diameter
+// (G01 Z-20. at X96., X94., G00 Z2.). Turning outside cannot do that without
+// running through the part: a neck, a groove or a taper after an outside pass
+// (X44 Z-10, X40 Z-15, X44 Z-20, Z-30) comes back up to the pass's diameter
+// before the tool leaves, and a return home across the part (G28 to X0) does
+// not start below it. Everything else — however it moves in X — is outside work.
+bool leavesThroughTheHole(const std::vector<Move>& moves, std::size_t i) {
+  const Move& m = moves[i];
+  if (!isZPass(m) || zOf(m.path.end) >= 0.0 || diameterOf(m.path.start) < kOnCentre) return false;
+  const double wall = diameterOf(m.path.end) - kBelowWall;
+  for (std::size_t k = i + 1; k < moves.size(); ++k) {
+    const Move& n = moves[k];
+    if (zOf(n.path.end) >= -1e-9) {  // leaves in front of the face
+      const Vec2 d = n.path.end - n.path.start;
+      const bool alongZ = std::abs(d.x()) > 5.0 * std::abs(d.y());
+      // Out below the pass: from below it, or from the wall slanting inward (G01 X94. Z2.).
+      const bool below = diameterOf(n.path.start) < wall || (d.y() < 0.0 && diameterOf(n.path.end) < wall);
+      return alongZ && below && diameterOf(n.path.end) >= kOnCentre;
+    }
+    if (diameterOf(n.path.end) >= wall - 1e-9) return false;              // back up to the wall: outside
+    if (isFeed(n) && diameterOf(n.path.end) < kOnCentre) return false;   // faced to the centre
+  }
+  return false;
+}
+
+// Which moves are inside passes. A canned cycle's pass counts only when the
+// cycle works outward from its start point (G71 U-0.4 from X86 roughing out
+// to Ø100: boring); one that cuts down below its start is outside work, even
+// where its retract returns below a pass (a Haas G76 started at X0.9414 under
+// the thread's first passes).
+std::vector<char> insidePasses(const gcode::Program& program, const std::vector<Move>& moves) {
+  std::vector<char> inside(moves.size(), 0);
+  for (std::size_t first = 0; first < moves.size();) {
+    std::size_t last = first;
+    while (last + 1 < moves.size() && moves[last + 1].blockIndex == moves[first].blockIndex) ++last;
+    const gcode::Block* block = blockOf(program, moves[first]);
+    bool outward = true;
+    if (block && isCycleBlock(*block)) {
+      const double start = diameterOf(moves[first].path.start);
+      double lowest = start, highest = start;
+      for (std::size_t k = first; k <= last; ++k) {
+        if (!isFeed(moves[k])) continue;
+        lowest = std::min({lowest, diameterOf(moves[k].path.start), diameterOf(moves[k].path.end)});
+        highest = std::max({highest, diameterOf(moves[k].path.start), diameterOf(moves[k].path.end)});
+      }
+      outward = highest - start > start - lowest;
+    }
+    for (std::size_t k = first; k <= last; ++k) inside[k] = outward && leavesThroughTheHole(moves, k);
+    first = last + 1;
+  }
+  return inside;
 }
 
 double roundUp(double value, double step) { return std::ceil(value / step - 1e-9) * step; }
@@ -135,6 +183,7 @@ StockInference inferStock(const gcode::Program& program, const Timeline& run, co
   const Timeline& tl = mirrored ? *mirrored : run;
   StockInference r;
   const std::vector<Move>& moves = tl.moves;
+  const std::vector<char> inside = insidePasses(program, moves);
   std::map<int, Units> unitsOfBlock;
   for (const StateSnapshot& s : tl.snapshots) unitsOfBlock[s.blockIndex] = s.modal.units;
 
@@ -146,7 +195,7 @@ StockInference inferStock(const gcode::Program& program, const Timeline& run, co
   for (int pass = 0; pass < 2 && decider == moves.size(); ++pass)
   for (std::size_t i = 0; i < moves.size() && decider == moves.size(); ++i) {
     const Move& m = moves[i];
-    if (!isFeed(m) || isInsidePass(moves, i)) continue;
+    if (!isFeed(m) || inside[i]) continue;
     std::size_t first = i;  // the block's first move starts where the block started
     while (first > 0 && moves[first - 1].blockIndex == m.blockIndex) --first;
     if (diameterOf(moves[first].path.start) < kOnCentre) continue;
@@ -155,9 +204,7 @@ StockInference inferStock(const gcode::Program& program, const Timeline& run, co
     decider = i;
     // Quote the block that brought the tool there (N30 G00 X52. Z2.), not the cut.
     r.diameterLine = first > 0 ? moves[first - 1].line : m.line;
-    const gcode::Block* block = m.blockIndex >= 0 && static_cast<std::size_t>(m.blockIndex) < program.blocks.size()
-                                    ? &program.blocks[static_cast<std::size_t>(m.blockIndex)]
-                                    : nullptr;
+    const gcode::Block* block = blockOf(program, m);
     r.cycleStart = block && isCycleBlock(*block);
     r.inch = unitsOfBlock.count(m.blockIndex) && unitsOfBlock[m.blockIndex] == Units::Inch;
     const double unit = r.inch ? kMmPerInch : 1.0;
@@ -169,6 +216,31 @@ StockInference inferStock(const gcode::Program& program, const Timeline& run, co
   if (decider == moves.size()) return r;
   r.found = true;
   const double unit = r.inch ? kMmPerInch : 1.0;
+
+  // The bar holds what the program turns outside: a plain pass along -Z behind
+  // the face (not inside work, not a canned cycle's) was cut from the bar, so
+  // the bar is no smaller than it, whatever the approach looked like (a CAM
+  // lead-in from X44.8 to X43.6 Z1. reads as a Ø40 bar for a part turned to Ø44).
+  double largestTurned = 0.0;
+  int largestTurnedLine = 0;
+  for (std::size_t i = 0; i < moves.size(); ++i) {
+    const Move& m = moves[i];
+    if (!isZPass(m) || zOf(m.path.end) >= 0.0 || diameterOf(m.path.start) < kOnCentre || inside[i])
+      continue;
+    const gcode::Block* block = blockOf(program, m);
+    if (block && isCycleBlock(*block)) continue;
+    const double d = std::max(diameterOf(m.path.start), diameterOf(m.path.end)) / unit;
+    if (d > largestTurned + 1e-9) {
+      largestTurned = d;
+      largestTurnedLine = m.line;
+    }
+  }
+  if (largestTurned > r.diameter + 1e-6) {
+    r.diameter = r.inch ? inchBarSize(largestTurned, true) : metricBarSize(largestTurned, true);
+    r.largestTurnedDiameter = largestTurned;
+    r.diameterLine = largestTurnedLine;
+    r.cycleStart = false;
+  }
 
   // Length: the deepest Z while feeding, the cut-off margin and the chuck grip.
   double deepest = 0.0;
@@ -189,7 +261,7 @@ StockInference inferStock(const gcode::Program& program, const Timeline& run, co
   for (std::size_t i = 0; i < moves.size(); ++i) {
     const Move& m = moves[i];
     if (isZPass(m) && diameterOf(m.path.start) < kOnCentre && zOf(m.path.end) < 0.0) break;  // drilled
-    if (!isInsidePass(moves, i)) continue;
+    if (!inside[i]) continue;
     const double d = diameterOf(m.path.start) / unit;
     if (r.insidePassDiameter == 0.0 || d < r.insidePassDiameter) {
       r.insidePassDiameter = d;
@@ -204,7 +276,7 @@ StockInference inferStock(const gcode::Program& program, const Timeline& run, co
       const Move& m = moves[i];
       if (!isFeed(m)) continue;
       largest = std::max({largest, diameterOf(m.path.start), diameterOf(m.path.end)});
-      if (isInsidePass(moves, i)) largestInside = std::max(largestInside, diameterOf(m.path.start));
+      if (inside[i]) largestInside = std::max(largestInside, diameterOf(m.path.start));
     }
     largest /= unit;
     if (r.diameter <= largestInside / unit + 1e-6) {
@@ -238,6 +310,8 @@ std::vector<Diagnostic> stockNotes(const io::JobHeader& stock, const StockInfere
   std::vector<Diagnostic> notes;
   if (r.outsideFromInside)
     notes.push_back(note(codes::kStockInferredFromBore, r.boreLine, {size, number(r.largestCutDiameter)}));
+  else if (r.largestTurnedDiameter > 0.0)
+    notes.push_back(note(codes::kStockFromLargestTurned, r.diameterLine, {size, lineText(gcode, firstLine, r.diameterLine)}));
   else
     notes.push_back(note(r.cycleStart ? codes::kStockFromCycleStart : codes::kStockFromFirstApproach, r.diameterLine,
                          {size, lineText(gcode, firstLine, r.diameterLine)}));

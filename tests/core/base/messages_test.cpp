@@ -24,6 +24,40 @@ TEST(Messages, UnknownCodeFallsBackToCodeAndArgs) {
   EXPECT_EQ(formatMessage(d, Lang::En), "Z999 X 5");
 }
 
+// Issue 28 item 7: what the GUI shows names GUI places, never a CLI flag; the
+// CLI keeps its flags. Every catalog text that names a flag has a GUI text
+// with the same placeholders, in both languages.
+TEST(Messages, TheGuiNamesItsOwnPlacesNotFlags) {
+  for (const auto& m : allMessages()) {
+    const bool namesAFlag = m.en.find("--") != std::string_view::npos || m.th.find("--") != std::string_view::npos;
+    if (!namesAFlag || m.code == "I150") continue;  // I150: the stock came from --stock, the CLI only
+    const MessageText* gui = findGuiMessage(m.code);
+    ASSERT_NE(gui, nullptr) << m.code << " names a flag and has no GUI text";
+    EXPECT_EQ(gui->en.find("--"), std::string_view::npos) << m.code;
+    EXPECT_EQ(gui->th.find("--"), std::string_view::npos) << m.code;
+    EXPECT_NE(gui->en, gui->th) << m.code;
+    for (int i = 0; i < 6; ++i) {
+      const std::string slot = "{" + std::to_string(i) + "}";
+      if (m.code == "I102" && i == 2) continue;  // the dialect's CLI name (haas), only for --dialect
+      EXPECT_EQ(m.en.find(slot) != std::string_view::npos, gui->en.find(slot) != std::string_view::npos) << m.code << slot;
+      EXPECT_EQ(m.th.find(slot) != std::string_view::npos, gui->th.find(slot) != std::string_view::npos) << m.code << slot;
+    }
+  }
+  Diagnostic stock{Severity::Note, "I155", {}, {"Ø50 x 100 mm"}};
+  EXPECT_EQ(formatMessage(stock, Lang::En, Surface::Gui),
+            "stock Ø50 x 100 mm is the default: the program has no approach to infer it from; set it in File ▸ Job details");
+  EXPECT_EQ(formatMessage(stock, Lang::Th, Surface::Gui),
+            "ชิ้นงาน Ø50 x 100 mm เป็นค่าเริ่มต้น: โปรแกรมไม่มีตำแหน่งเข้าหาชิ้นงานให้ประมาณได้ ตั้งค่าได้ที่ แฟ้ม ▸ รายละเอียดงาน");
+  EXPECT_EQ(formatMessage(stock, Lang::En, Surface::Cli), formatMessage(stock, Lang::En));
+  EXPECT_NE(formatMessage(stock, Lang::En).find("--stock"), std::string::npos);
+  Diagnostic dialect{Severity::Note, "I102", {}, {"3", "Haas", "haas"}};
+  EXPECT_EQ(formatMessage(dialect, Lang::En, Surface::Gui),
+            "blocks with errors that are Haas forms: 3; choose Haas in Tool setting ▸ G-code dialect");
+  EXPECT_EQ(formatMessage(dialect, Lang::Th, Surface::Gui),
+            "บล็อกที่ผิดพลาด 3 บล็อกเป็นรูปแบบของ Haas: เลือก Haas ที่ ตั้งค่ามีดตัด ▸ ภาษาจีโค้ด");
+  EXPECT_EQ(formatMessage(dialect, Lang::En), "blocks with errors that are Haas forms: 3; choose the Haas dialect (--dialect haas)");
+}
+
 TEST(Geometry, TipVectorsFollowTheSpecGrid) {
   EXPECT_EQ(tipVector(3), Vec2(-1, -1));  // outside turning tool
   EXPECT_EQ(tipVector(2), Vec2(-1, 1));   // boring bar

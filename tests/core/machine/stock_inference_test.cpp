@@ -209,6 +209,161 @@ TEST(StockInference, BoringOnlyProgramGetsABarAroundItsLargestCut) {
             "its largest cut Ø100 with a wall around it");
 }
 
+// Issue 28 item 5: a bore needs inside evidence — the tool leaves the part
+// through the hole (toward the centre behind the face, then out along Z below
+// the pass). A neck on the outside (X44 Z-10, X40 Z-15, X44 Z-20, Z-30) comes
+// back up to Ø44 before the tool leaves: a solid bar, in mm and inch, Fanuc and Haas.
+StockInference inferIn(const std::string& text, gcode::Dialect dialect) {
+  RunOptions options;
+  options.dialect = dialect;
+  return inferStock(gcode::parse(text, 1), testSetup(), options);
+}
+
+const std::string kVNeck =
+    "G21 G99\n"                     // 1
+    "T0101\n"                       // 2
+    "G97 S800 M03\n"                // 3
+    "G00 X52. Z2.\n"                // 4
+    "G01 X44. Z0. F0.2\n"           // 5
+    "Z-10.\n"                       // 6
+    "X40. Z-15.\n"                  // 7
+    "X44. Z-20.\n"                  // 8
+    "Z-30.\n"                       // 9
+    "G00 X60.\n"                    // 10
+    "Z100.\n"                       // 11
+    "M30\n";                        // 12
+
+TEST(StockInference, AnOutsideNeckIsNoBore) {
+  for (const gcode::Dialect dialect : {gcode::Dialect::Fanuc, gcode::Dialect::Haas}) {
+    const StockInference r = inferIn(kVNeck, dialect);
+    ASSERT_TRUE(r.found);
+    EXPECT_DOUBLE_EQ(r.insidePassDiameter, 0.0);
+    EXPECT_DOUBLE_EQ(r.bore, 0.0);
+    EXPECT_FALSE(r.outsideFromInside);
+    EXPECT_DOUBLE_EQ(r.diameter, 50.0);  // X52. before a diagonal first cut: the bar below it
+    EXPECT_EQ(r.diameterLine, 4);
+    EXPECT_DOUBLE_EQ(r.length, 50.0);    // 30 + 5 + 15
+    EXPECT_EQ(noteText(kVNeck, r, 0), "stock Ø50 x 50 mm inferred from G00 X52. Z2. (first approach)");
+    io::JobHeader h;
+    r.applyTo(h);
+    EXPECT_EQ(stockNotes(h, &r, kVNeck, 1).size(), 2u);  // Ø and length, no I154
+  }
+  const std::string inch =
+      "G20 G99\nT0101\nG97 S800 M03\nG00 X2.05 Z0.1\nG01 X1.75 Z0. F0.008\nZ-0.4\nX1.55 Z-0.6\nX1.75 Z-0.8\n"
+      "Z-1.2\nG00 X2.5\nZ4.\nM30\n";
+  for (const gcode::Dialect dialect : {gcode::Dialect::Fanuc, gcode::Dialect::Haas}) {
+    const StockInference r = inferIn(inch, dialect);
+    ASSERT_TRUE(r.found);
+    EXPECT_TRUE(r.inch);
+    EXPECT_DOUBLE_EQ(r.bore, 0.0);
+    EXPECT_DOUBLE_EQ(r.insidePassDiameter, 0.0);
+    EXPECT_DOUBLE_EQ(r.diameter, 2.0);
+    EXPECT_EQ(noteText(inch, r, 0), "stock Ø2 x 2 in inferred from G00 X2.05 Z0.1 (first approach)");
+  }
+}
+
+// Passes that retract along the cut (G00 Z2. at the pass's own X) and step
+// down for the next: outside roughing, not a bore (main read Ø50/Ø47).
+TEST(StockInference, RetractAlongTheCutIsNoBore) {
+  const std::string text = "G21 G99\nT0101\nG97 S800 M03\nG00 X48. Z2.\nG01 Z-30. F0.2\nG00 Z2.\nX46.\n"
+                           "G01 Z-30.\nG00 Z2.\nX100. Z100.\nM30\n";
+  const StockInference r = infer(text);
+  ASSERT_TRUE(r.found);
+  EXPECT_DOUBLE_EQ(r.bore, 0.0);
+  EXPECT_DOUBLE_EQ(r.diameter, 50.0);  // the first pass at Ø48 sits inside the bar
+  EXPECT_EQ(noteText(text, r, 0), "stock Ø50 x 50 mm inferred from G00 X48. Z2. (first approach)");
+}
+
+// A CAM post's outside profile: rapid to just above the part, a lead-in feed,
+// passes that follow the neck, a lead-out at 45°. The lead-in from X44.8 reads
+// as a Ø40 bar, but the program turns Ø44 along -Z: the bar is the next size
+// above that, solid (main read "Ø60/Ø42 ... works only inside a bore").
+const std::string kCamOutside =
+    "%\n"                                   // 1
+    "O2001 (OUTSIDE PROFILE)\n"             // 2
+    "(T1 OD 55DEG R0.8)\n"                  // 3
+    "N10 G21 G99 G40\n"                     // 4
+    "N20 G28 U0.\n"                         // 5
+    "N30 T0101\n"                           // 6
+    "N40 G50 S2500\n"                       // 7
+    "N50 G96 S180 M03\n"                    // 8
+    "N60 G00 X44.8 Z3.\n"                   // 9
+    "N70 G01 X43.6 Z1. F0.3\n"              // 10
+    "N80 Z-10.\n"                           // 11
+    "N90 X39.6 Z-15.\n"                     // 12
+    "N100 X43.6 Z-20.\n"                    // 13
+    "N110 Z-30.\n"                          // 14
+    "N120 X47.6 Z-28.\n"                    // 15
+    "N130 G00 Z3.\n"                        // 16
+    "N140 X45.\n"                           // 17
+    "N150 G01 X41. Z1.\n"                   // 18
+    "N160 X44. Z-0.5 F0.15\n"               // 19
+    "N170 Z-10.\n"                          // 20
+    "N180 X40. Z-15.\n"                     // 21
+    "N190 X44. Z-20.\n"                     // 22
+    "N200 Z-30.\n"                          // 23
+    "N210 X47. Z-31.5\n"                    // 24
+    "N220 G00 X100. Z100.\n"                // 25
+    "N230 M30\n"                            // 26
+    "%\n";                                  // 27
+
+TEST(StockInference, CamOutsideProfileIsASolidBarAboveWhatItTurns) {
+  for (const gcode::Dialect dialect : {gcode::Dialect::Fanuc, gcode::Dialect::Haas}) {
+    const StockInference r = inferIn(kCamOutside, dialect);
+    ASSERT_TRUE(r.found);
+    EXPECT_FALSE(r.outsideFromInside);
+    EXPECT_DOUBLE_EQ(r.insidePassDiameter, 0.0);
+    EXPECT_DOUBLE_EQ(r.bore, 0.0);
+    EXPECT_DOUBLE_EQ(r.largestTurnedDiameter, 44.0);
+    EXPECT_DOUBLE_EQ(r.diameter, 45.0);
+    EXPECT_EQ(r.diameterLine, 20);
+    EXPECT_DOUBLE_EQ(r.length, 55.0);  // 31.5 + 5 + 15 = 51.5, up to 55
+    EXPECT_EQ(noteText(kCamOutside, r, 0),
+              "stock Ø45 x 55 mm inferred from N170 Z-10. (the largest diameter it turns)");
+    EXPECT_EQ(noteText(kCamOutside, r, 0, Lang::Th),
+              "ชิ้นงาน Ø45 x 55 mm ประมาณจาก N170 Z-10. (เส้นผ่านศูนย์กลางใหญ่สุดที่กลึงด้านนอก)");
+  }
+}
+
+// A Haas G76 started below the thread's first passes (X0.94 under a Ø0.99
+// major): each pass returns to X0.94 and goes back along Z under it, but the
+// cycle cuts down from its start — an outside thread, not a bore (M24: no
+// pull-out at the thread's end, so the tool never rises above a pass).
+TEST(StockInference, AThreadCycleCuttingDownIsNoBore) {
+  const std::string text =
+      "G20 G99\nT0101\nG97 S1000 M03\nG00 X1.1 Z0.\nG01 X-0.03 F0.004\nG00 Z0.1\nX0.99\nG01 Z-1. F0.006\n"
+      "G00 X1.1\nT0505 (THREAD)\nG00 X0.94 Z0.2\nM24\nG76 X0.849 Z-0.9 K0.0707 D0.0177 F0.125\nG00 Z0.1\nM30\n";
+  const StockInference r = inferIn(text, gcode::Dialect::Haas);
+  ASSERT_TRUE(r.found);
+  EXPECT_TRUE(r.inch);
+  EXPECT_DOUBLE_EQ(r.insidePassDiameter, 0.0);
+  EXPECT_DOUBLE_EQ(r.bore, 0.0);
+  EXPECT_DOUBLE_EQ(r.diameter, 1.0);
+  EXPECT_DOUBLE_EQ(r.length, 2.0);  // 1 + 0.2 + 0.59 = 1.79, up to 1/4 in
+}
+
+// The same profile bored: the tool goes in through the hole, follows the
+// wall outward and comes back out along Z below each pass — inside evidence.
+TEST(StockInference, BoringRetractBelowThePassIsATube) {
+  const std::string text =
+      "G21 G99\nT0404 (BORING BAR)\nG97 S600 M03\nG00 X120. Z0.\nG01 X80. F0.2\nG00 Z2.\n"
+      "X86.\nG01 Z-30. F0.15\nX85.6\nG00 Z2.\nX88.\nG01 Z-12.\nX87.6\nG00 Z2.\nX100. Z100.\nM30\n";
+  const StockInference r = infer(text);
+  ASSERT_TRUE(r.found);
+  EXPECT_DOUBLE_EQ(r.insidePassDiameter, 86.0);
+  EXPECT_EQ(r.boreLine, 8);
+  EXPECT_DOUBLE_EQ(r.bore, 85.0);
+  EXPECT_DOUBLE_EQ(r.diameter, 120.0);
+  EXPECT_EQ(noteText(text, r, 0), "stock Ø120/Ø85 x 50 mm inferred from G00 X120. Z0. (first approach)");
+  // Leaving the bore in one slanting move from the wall (G01 X85.6 Z2.) is the same evidence.
+  const StockInference slant = infer(
+      "G21 G99\nT0404 (BORING BAR)\nG97 S600 M03\nG00 X120. Z0.\nG01 X80. F0.2\nG00 Z2.\n"
+      "X86.\nG01 Z-30. F0.15\nG01 X85.6 Z2.\nG00 X100. Z100.\nM30\n");
+  ASSERT_TRUE(slant.found);
+  EXPECT_DOUBLE_EQ(slant.insidePassDiameter, 86.0);
+  EXPECT_DOUBLE_EQ(slant.bore, 85.0);
+}
+
 TEST(StockInference, DrilledFirstIsASolidBar) {
   const std::string text =
       "G21 G99 G97 S800 M03\nT0303 (DRILL)\nG00 X0. Z2.\nG01 Z-30. F0.1\nG00 Z2.\n"

@@ -9,12 +9,17 @@
 //          just above the bar: the largest standard bar not above it; a first
 //          cut that turns along -Z sits inside the bar: the smallest bar above it).
 //          Bar sizes: metric programs the mm series of kMetricBarSizes, inch
-//          programs (G20 at that block) steps of 1/8 in.
+//          programs (G20 at that block) steps of 1/8 in. The bar is never
+//          smaller than a plain outside pass along -Z behind the face: the
+//          smallest bar above the largest such pass (I159) when it is.
 //   length the deepest Z reached while feeding + cutOffMargin + the chuck grip
 //          (machine.cfg chuck_grip), so the cut never reaches the jaws; rounded
 //          up to 5 mm (1/4 in).
-//   bore   a pass along -Z inside the part that retracts toward the centre
-//          (inside work) before any drilling on centre: tube stock, bore =
+//   bore   a pass along -Z inside the part that the tool leaves through the
+//          hole — toward the centre behind the face, never back up to the
+//          pass, then out along Z in front of the face below it (inside work;
+//          a neck or taper on the outside is not) — before any drilling on
+//          centre: tube stock, bore =
 //          the smallest such pass diameter less 1 mm (1/16 in), rounded down to
 //          a whole mm (1/16 in).
 //
@@ -47,6 +52,9 @@ struct StockInference {
   double length = 0.0;
   double bore = 0.0;           // 0 = solid bar
   double approachDiameter = 0.0;  // the diameter that decided Ø, in the unit above
+  // A plain outside pass larger than the approach's bar (a CAM lead-in): Ø is
+  // the smallest bar above it and diameterLine its block; 0 = the approach decided.
+  double largestTurnedDiameter = 0.0;
   int diameterLine = 0;        // file line of the approach block (the one before the first cut)
   bool cycleStart = false;     // that block is a canned cycle (G70-G76, G90, G92, G94)
   double deepestZ = 0.0;       // deepest Z reached while feeding, in the unit above
@@ -77,7 +85,7 @@ double metricBarSize(double diameterMm, bool above = false);
 double inchBarSize(double diameterInch, bool above = false);
 
 // The notes that tell the user where `stock` came from (stock.stockSource):
-// I150 command line, I151 Job details, I152/I153 (+ I157 length, I154 bore)
+// I150 command line, I151 Job details, I152/I153/I158/I159 (+ I157 length, I154 bore)
 // inferred — the deciding block quoted from `gcode` (the program's G-code,
 // file line `firstLine` first) —, I155 default, I156 header. Severity Warning,
 // range.line = the deciding block's line (0 when none); the CLI prints them
