@@ -21,6 +21,7 @@
 
 #include "gui/file_save.h"
 #include "gui/language.h"
+#include "klueng/core/diagnostic_codes.h"
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/io/tool_library.h"
 #include "klueng/core/messages.h"
@@ -428,10 +429,25 @@ void ToolSelectDialog::accept() {
       continue;
     }
     const auto image = io::readImage(path.toStdString());
-    if (!image.value)
+    if (!image.value) {
       problems << tr("Tool %1: %2").arg(t, 2, 10, QLatin1Char('0'))
                       .arg(image.diagnostics.empty() ? name
                                                      : QString::fromStdString(core::formatMessage(image.diagnostics.front(), Language::coreLang())));
+      continue;
+    }
+    // Larger than a tool can be: the setup would refuse it (F139), so the dialog does now.
+    const auto i = static_cast<std::size_t>(t - 1);
+    const double ppm = tools_.bitmap[i].rfind(io::kLibraryPrefix, 0) == 0 ? tools_.pixelsPerMm[i] : io::kSeedPixelsPerMm;
+    const int most = io::maxToolBitmapPixels(ppm);
+    if (image.value->width > most || image.value->height > most) {
+      const core::Diagnostic tooLarge{core::Severity::Error, core::codes::kToolBitmapTooLarge, {},
+                                      {QDir(configDir_).filePath(QStringLiteral("tools.cfg")).toStdString(),
+                                       QStringLiteral("%1").arg(t, 2, 10, QLatin1Char('0')).toStdString(),
+                                       name.toStdString(), std::to_string(image.value->width),
+                                       std::to_string(image.value->height), std::to_string(most),
+                                       QString::number(ppm).toStdString()}};
+      problems << QString::fromStdString(core::formatMessage(tooLarge, Language::coreLang()));
+    }
   }
   if (!problems.isEmpty()) {
     QMessageBox::warning(this, windowTitle(), problems.join(QLatin1Char('\n')));

@@ -17,6 +17,8 @@
 #include <variant>
 #include <vector>
 
+#include "klueng/core/io/image.h"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -41,6 +43,20 @@ struct CliRun {
 // Runs `klueng-cli <args>` under a neutral English locale unless `env` says otherwise.
 CliRun runCli(const std::string& args, const std::string& env = "LC_ALL= LC_MESSAGES= LANG=C") {
   const std::string command = "env " + env + " " + quote(kCli) + " " + args + " 2>/dev/null";
+  CliRun run;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (!pipe) return run;
+  char buffer[65536];
+  std::size_t n;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) run.out.append(buffer, n);
+  const int status = ::pclose(pipe);
+  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return run;
+}
+
+// As runCli, with what the program writes to stderr in `out` too.
+CliRun runCliWithErrors(const std::string& args, const std::string& env = "LC_ALL= LC_MESSAGES= LANG=C") {
+  const std::string command = "env " + env + " " + quote(kCli) + " " + args + " 2>&1";
   CliRun run;
   FILE* pipe = ::popen(command.c_str(), "r");
   if (!pipe) return run;
@@ -640,6 +656,30 @@ TEST(CliConfig, BinaryConfigFileDoesNotCrash) {
   const CliRun run = runCli("check --config " + quote(config) + " " + quote(kSamples + "/01-step-shaft.txt"));
   EXPECT_EQ(run.exitCode, 2);  // the setup has errors (issue 13: exit 2, not 1)
   EXPECT_THAT(run.out, HasSubstr("error F104"));
+}
+
+// Issue 29 item 10: a 4096 x 4096 tool bitmap was accepted by check and stopped the
+// run with alarm A311 when the tool cut; it is a setup error at its tools.cfg line
+// for check and simulate alike (exit 2), before any run.
+TEST(CliConfig, ABitmapLargerThanAToolIsASetupErrorBeforeTheRun) {
+  TempDir dir;
+  const int side = 4096;
+  klueng::core::io::RgbImage image{side, side, std::vector<std::uint32_t>(static_cast<std::size_t>(side) * side, 0xFFFFFF)};
+  for (int y = side - 20; y < side; ++y)
+    for (int x = 0; x < 20; ++x) image.pixels[static_cast<std::size_t>(y) * side + x] = 0xFF0000;
+  const std::string config = dir.config({{"resources/tools/01-outside-turning.bmp", klueng::core::io::encodeBmp(image)}});
+  const std::string expected =
+      config + "/tools.cfg:1:1: error F139: " + config +
+      "/tools.cfg: tool 01: the bitmap 'resources/tools/01-outside-turning.bmp' is 4096 x 4096 pixels; a tool "
+      "bitmap may be at most 1000 x 1000 pixels (500 mm each way at 2 pixels per mm)\n";
+  const CliRun check = runCli("check --config " + quote(config) + " " + quote(kSamples + "/01-step-shaft.txt"));
+  EXPECT_EQ(check.exitCode, 2);
+  EXPECT_THAT(check.out, HasSubstr(expected));
+  const CliRun simulate =
+      runCliWithErrors("simulate --config " + quote(config) + " " + quote(kSamples + "/01-step-shaft.txt"));
+  EXPECT_EQ(simulate.exitCode, 2);
+  EXPECT_THAT(simulate.out, HasSubstr(expected));
+  EXPECT_THAT(simulate.out, Not(HasSubstr("A311")));
 }
 
 }  // namespace

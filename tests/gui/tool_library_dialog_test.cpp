@@ -7,11 +7,15 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QTemporaryDir>
+#include <QApplication>
+#include <QMessageBox>
 #include <QTest>
+#include <QTimer>
 
 #include "gui/offset_define_dialog.h"
 #include "gui/tool_select_dialog.h"
 #include "klueng/core/gcode/parser.h"
+#include "klueng/core/io/image.h"
 #include "klueng/core/io/tool_config.h"
 #include "klueng/core/io/tool_library.h"
 
@@ -183,6 +187,35 @@ class ToolLibraryDialogTest : public QObject {
     QCOMPARE(d.result(), int(QDialog::Accepted));
     QCOMPARE(readAll(cfg), original);
     QCOMPARE(d.jobOverrides().size(), std::size_t(1));
+  }
+
+  // Issue 29 item 10: a bitmap larger than a tool can be is refused here, as the setup refuses it (F139).
+  void aBitmapLargerThanAToolIsRefused() {
+    QTemporaryDir dir;
+    QVERIFY(makeConfigCopy(dir.path()));
+    const QByteArray original = readAll(dir.filePath(QStringLiteral("tools.cfg")));
+    core::io::RgbImage image{1001, 40, std::vector<std::uint32_t>(1001 * 40, 0xFFFFFF)};
+    image.pixels[0] = 0xFF0000;
+    {
+      QFile f(dir.filePath(QStringLiteral("wide.bmp")));
+      QVERIFY(f.open(QIODevice::WriteOnly));
+      const std::string bytes = core::io::encodeBmp(image);
+      f.write(bytes.data(), static_cast<qint64>(bytes.size()));
+    }
+    ToolSelectDialog d(dir.path());
+    d.setBitmapName(2, QStringLiteral("wide.bmp"));
+    QString message;
+    QTimer::singleShot(0, [&message] {
+      if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+        message = box->text();
+        box->accept();
+      }
+    });
+    d.accept();
+    QVERIFY(d.result() != QDialog::Accepted);
+    QCOMPARE(message, dir.filePath(QStringLiteral("tools.cfg")) + QStringLiteral(": tool 02: the bitmap 'wide.bmp' is 1001 x 40 pixels; a tool bitmap may be "
+                                     "at most 1000 x 1000 pixels (500 mm each way at 2 pixels per mm)"));
+    QCOMPARE(readAll(dir.filePath(QStringLiteral("tools.cfg"))), original);
   }
 
   void offsetDefineEditsSixtyFourRows() {

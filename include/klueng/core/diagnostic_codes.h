@@ -4,7 +4,14 @@
 // reports it use the same name, so a code cannot drift from its text (issue 12).
 // The code strings themselves are stable: tests and users match on them.
 
+#include <cstddef>
+
 namespace klueng::core::codes {
+
+// A setup file (machine.cfg, tools.cfg, offset.cfg, macro_variables.cfg, a
+// tool library) reports at most this many problems, then F129: a hostile file
+// only repeats itself, as a program's diagnostics end with E199.
+inline constexpr std::size_t kMaxConfigDiagnostics = 100;
 
 // File formats (io; texts in messages_io.cpp)
 inline constexpr const char* kStockSizeNotPositive = "E213";
@@ -32,11 +39,17 @@ inline constexpr const char* kBitmapMissing = "F121";
 inline constexpr const char* kNotBitmapName = "F122";
 inline constexpr const char* kNotInToolLibrary = "F123";
 inline constexpr const char* kBitmapIsFolder = "F124";
+// A tool bitmap that is a loop of links, a device, a pipe or a socket.
+inline constexpr const char* kBitmapNotAFile = "F138";  // {0} file, {1} tool, {2} name, {3} what (en), {4} what (th)
+// A tool bitmap larger than a tool can be (500 mm each way at its resolution).
+inline constexpr const char* kToolBitmapTooLarge = "F139";  // {0} file, {1} tool, {2} name, {3} w, {4} h, {5} limit, {6} px/mm
 // Writing files (io/file_write.h), codes left free between the readers'.
 inline constexpr const char* kFolderNotWritable = "F125";
 inline constexpr const char* kOutputIsInput = "F126";
 inline constexpr const char* kOutputIsFolder = "F127";
 inline constexpr const char* kStockSizeTooLarge = "F128";  // {0} file {1} size as written {2} the largest
+// A setup file with more problems than kMaxConfigDiagnostics: the rest is not read.
+inline constexpr const char* kTooManyConfigProblems = "F129";  // {0} file, {1} the limit
 inline constexpr const char* kOffsetTableShort = "F130";
 inline constexpr const char* kOffsetEmpty = "F131";
 inline constexpr const char* kOffsetFieldCount = "F132";
