@@ -57,17 +57,18 @@ KluengSectionPngFn loadModule(std::string* why) {
 
 }  // namespace
 
-bool writeSectionPng(const render::SectionPicture& picture, const std::string& path, std::string* error) {
-  const KluengSectionPngFn draw = loadModule(error);
-  if (!draw) return false;
+std::optional<core::Diagnostic> writeSectionPng(const render::SectionPicture& picture, const std::string& path) {
+  const auto failed = [&](const std::string& why) {
+    return core::Diagnostic{core::Severity::Error, core::codes::kCannotWriteFile, {}, {path, why}};
+  };
+  std::string why;
+  const KluengSectionPngFn draw = loadModule(&why);
+  if (!draw) return failed(why);
   char* bytes = nullptr;
   std::size_t size = 0;
-  if (!draw(&picture, &bytes, &size)) {
-    if (error) *error = "the picture could not be drawn";
-    return false;
-  }
+  if (!draw(&picture, &bytes, &size)) return failed("the picture could not be drawn");
   const std::unique_ptr<char, decltype(&std::free)> owned(bytes, &std::free);
-  return core::io::writeTextFileAtomic(path, std::string_view(bytes, size), error);
+  return core::io::writeFileAtomic(path, std::string_view(bytes, size));
 }
 
 }  // namespace klueng::cli

@@ -682,4 +682,75 @@ TEST(CliConfig, ABitmapLargerThanAToolIsASetupErrorBeforeTheRun) {
   EXPECT_THAT(simulate.out, Not(HasSubstr("A311")));
 }
 
+// ------------------------------------------------------------------ the command line in Thai
+
+// Issue 29 item 10: under --lang th the usage, the command-line mistakes, the
+// class and generate errors and the write failures were English.
+TEST(CliLanguage, CommandLineMistakesAndTheUsageAreThaiUnderLangTh) {
+  // A mistake before --lang is said in the language that follows it.
+  const CliRun bogus = runCliWithErrors("check --bogus --lang th x.nc");
+  EXPECT_EQ(bogus.exitCode, 2);
+  EXPECT_EQ(bogus.out.substr(0, bogus.out.find('\n')), "klueng-cli check: ไม่รู้จักตัวเลือก '--bogus'");
+  EXPECT_THAT(bogus.out, HasSubstr("\nวิธีใช้: klueng-cli check FILE|FOLDER..."));
+  EXPECT_THAT(bogus.out, HasSubstr("หน่วยเมื่อเปิดเครื่อง ก่อน G20/G21 ใด ๆ: mm หรือ inch"));
+  EXPECT_THAT(bogus.out, Not(HasSubstr("usage:")));
+  // The same in English, word for word as before.
+  const CliRun english = runCliWithErrors("check --bogus x.nc");
+  EXPECT_EQ(english.out.substr(0, english.out.find('\n')), "klueng-cli check: unknown option '--bogus'");
+  EXPECT_THAT(english.out, HasSubstr("\nusage: klueng-cli check FILE|FOLDER..."));
+
+  const CliRun command = runCliWithErrors("--lang th");
+  EXPECT_EQ(command.exitCode, 2);
+  EXPECT_EQ(command.out.substr(0, command.out.find('\n')), "klueng-cli: ไม่รู้จักคำสั่ง '--lang'");
+  EXPECT_THAT(command.out, HasSubstr("\nวิธีใช้: klueng-cli check FILE..."));
+
+  const CliRun stock = runCliWithErrors("simulate " + quote(kSamples + "/01-step-shaft.txt") + " --stock abc --lang=th");
+  EXPECT_EQ(stock.exitCode, 2);
+  EXPECT_THAT(stock.out, HasSubstr("klueng-cli simulate: ค่า 'abc' ใช้กับ --stock ไม่ได้ ค่าที่ใช้ได้: DxL[xBORE][in] "
+                                   "โดย 0 < D, L <= 9999.999 และ 0 < BORE < D เช่น 50x100, 2.1x4in, 118x80x90\n"));
+  const CliRun units = runCliWithErrors("check --units feet --lang th x.nc");
+  EXPECT_THAT(units.out, HasSubstr("klueng-cli check: --units ต้องเป็น mm หรือ inch ไม่ใช่ 'feet'\n"));
+  const CliRun sheet = runCliWithErrors("print x.nc --pdf x.pdf --sheet poster --lang th");
+  EXPECT_EQ(sheet.exitCode, 2);
+  EXPECT_THAT(sheet.out, HasSubstr("klueng-cli print: ค่า 'poster' ใช้กับ --sheet ไม่ได้ ค่าที่ใช้ได้: program, drawing หรือ both\n"));
+  EXPECT_THAT(sheet.out, HasSubstr("วิธีใช้: klueng-cli print FILE --pdf OUT.pdf"));
+  // A Thai locale without --lang.
+  const CliRun locale = runCliWithErrors("simulate", "LC_ALL= LC_MESSAGES= LANG=th_TH.UTF-8");
+  EXPECT_EQ(locale.exitCode, 2);
+  EXPECT_THAT(locale.out, HasSubstr("วิธีใช้: klueng-cli simulate FILE"));
+}
+
+TEST(CliLanguage, ClassAndGenerateErrorsAreThaiUnderLangTh) {
+  TempDir dir;
+  const std::string missing = dir.file("no-such-folder");
+  const CliRun classRun = runCliWithErrors("class " + quote(missing) + " --reference " +
+                                           quote(kSamples + "/01-step-shaft.txt") + " --lang th");
+  EXPECT_EQ(classRun.exitCode, 2);
+  EXPECT_THAT(classRun.out, HasSubstr("klueng-cli class: " + missing + " ไม่ใช่โฟลเดอร์\n"));
+  const CliRun classUse = runCliWithErrors("class --lang th");
+  EXPECT_EQ(classUse.exitCode, 2);
+  EXPECT_THAT(classUse.out, HasSubstr("klueng-cli class: ต้องระบุโฟลเดอร์ DIR และ --reference REF.nc\nวิธีใช้: klueng-cli class DIR"));
+  const CliRun tolerance = runCliWithErrors("class x --reference y --tolerance lots");
+  EXPECT_THAT(tolerance.out, HasSubstr("klueng-cli class: bad value 'lots' for --tolerance\n"));
+
+  const std::string part = dir.file("none.json");
+  const CliRun generate = runCliWithErrors("generate " + quote(part) + " -o " + quote(dir.file("out.nc")) + " --lang th");
+  EXPECT_EQ(generate.exitCode, 2);
+  EXPECT_THAT(generate.out, HasSubstr("klueng-cli generate: อ่าน " + part + " ไม่ได้\n"));
+  const CliRun option = runCliWithErrors("generate " + quote(part) + " -o x.nc --tool-material wood --lang th");
+  EXPECT_THAT(option.out, HasSubstr("klueng-cli generate: ตัวเลือก --tool-material wood ใช้ไม่ได้\n"));
+}
+
+// A picture that cannot be written is said in the run's language, as every other output.
+TEST(CliLanguage, APictureThatCannotBeWrittenIsSaidInThai) {
+  TempDir dir;
+  const std::string png = dir.file("no-folder/part.png");
+  const CliRun run = runCliWithErrors("simulate " + quote(kSamples + "/01-step-shaft.txt") + " --png " + quote(png) +
+                                      " --lang th");
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_THAT(run.out, HasSubstr(png + ": ข้อผิดพลาด F125: " + png + ": สร้างไฟล์ไม่ได้ เพราะไม่มีโฟลเดอร์ " +
+                                 dir.file("no-folder") + " หรือไม่มีสิทธิ์เขียนลงในโฟลเดอร์นี้\n"));
+  EXPECT_THAT(run.out, Not(HasSubstr("cannot write")));
+}
+
 }  // namespace

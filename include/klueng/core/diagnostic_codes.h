@@ -239,4 +239,36 @@ inline constexpr const char* kGuessEdgeBrushesStock = "W326";  // a guessed tool
 inline constexpr const char* kPartCheckStopped = "I324";     // {0} the alarm's code
 inline constexpr const char* kPartCheckNothingCut = "I325";
 
+// klueng-cli's own texts (messages_cli.cpp): never diagnostics of a file, so
+// the code is not printed; the catalog only gives them their two languages.
+inline constexpr const char* kCliUsage = "C001";
+inline constexpr const char* kCliCheckUsage = "C002";
+inline constexpr const char* kCliSimulateUsage = "C003";
+inline constexpr const char* kCliClassUsage = "C004";
+inline constexpr const char* kCliPrintUsage = "C005";
+inline constexpr const char* kCliGenerateUsage = "C006";
+inline constexpr const char* kCliUnknownCommand = "C101";    // {0} command
+inline constexpr const char* kCliUnknownOption = "C102";     // {0} option
+inline constexpr const char* kCliNeedsValue = "C103";        // {0} option
+inline constexpr const char* kCliMustBe = "C104";            // {0} option {1} allowed {2} value
+inline constexpr const char* kCliBadValue = "C105";          // {0} value {1} option {2} allowed
+inline constexpr const char* kCliBadValueAnyOf = "C106";     // {0} value {1} option
+inline constexpr const char* kCliNoFile = "C107";
+inline constexpr const char* kCliOneFile = "C108";           // {0} first {1} second
+inline constexpr const char* kCliBadOption = "C109";         // {0} option {1} value
+inline constexpr const char* kCliCannotRead = "C110";        // {0} file
+inline constexpr const char* kCliNotAFolder = "C112";        // {0} path
+inline constexpr const char* kCliReferenceFails = "C113";    // {0} file {1} its first error or alarm
+inline constexpr const char* kCliClassNeeds = "C114";
+inline constexpr const char* kCliClassTotals = "C115";       // {0} programs {1} pass {2} fail
+inline constexpr const char* kCliPrintNeeds = "C116";
+inline constexpr const char* kCliGenerateNeeds = "C117";
+inline constexpr const char* kCliAllowedLang = "C201";
+inline constexpr const char* kCliAllowedDialect = "C202";
+inline constexpr const char* kCliAllowedStock = "C203";
+inline constexpr const char* kCliAllowedUnits = "C204";
+inline constexpr const char* kCliAllowedDecimalPoint = "C205";
+inline constexpr const char* kCliAllowedSheet = "C206";
+inline constexpr const char* kCliAllowedMillimetres = "C207";
+
 }  // namespace klueng::core::codes
