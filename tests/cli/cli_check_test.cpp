@@ -753,4 +753,21 @@ TEST(CliLanguage, APictureThatCannotBeWrittenIsSaidInThai) {
   EXPECT_THAT(run.out, Not(HasSubstr("cannot write")));
 }
 
+// The system's reason for a failed write is Thai too (F108): here a file name longer
+// than any folder allows (255 bytes), which fails for root as for anyone.
+TEST(CliLanguage, AWriteFailureGivesItsReasonInThai) {
+  TempDir dir;
+  const std::string trace = dir.file(std::string(300, 'a') + ".csv");
+  const std::string sample = quote(kSamples + "/01-step-shaft.txt");
+  const CliRun thai = runCliWithErrors("simulate " + sample + " --trace " + quote(trace) + " --lang th");
+  EXPECT_EQ(thai.exitCode, 2);
+  EXPECT_THAT(thai.out, HasSubstr(trace + ": ข้อผิดพลาด F108: " + trace +
+                                  ": บันทึกไฟล์ไม่ได้ (ชื่อไฟล์ยาวเกินไป) ถ้ามีไฟล์ชื่อนี้อยู่แล้ว ไฟล์นั้นยังคงเดิม\n"));
+  const CliRun english = runCliWithErrors("simulate " + sample + " --trace " + quote(trace));
+  EXPECT_EQ(english.exitCode, 2);
+  EXPECT_THAT(english.out, HasSubstr(trace + ": error F108: " + trace +
+                                     ": cannot write the file (File name too long); an existing file of that name is "
+                                     "left unchanged\n"));
+}
+
 }  // namespace

@@ -29,7 +29,7 @@ constexpr MessageText kMessages[] = {
      "{0}: บรรทัดที่อยู่หลังบรรทัดที่ {1} จะไม่ถูกนำมาใช้"},
     // Writing (io/file_write.h): an existing file of that name always keeps its bytes.
     {codes::kCannotWriteFile, "{0}: cannot write the file ({1}); an existing file of that name is left unchanged",
-     "{0}: บันทึกไฟล์ไม่ได้ ({1}) ถ้ามีไฟล์ชื่อนี้อยู่แล้ว ไฟล์นั้นยังคงเดิม"},
+     "{0}: บันทึกไฟล์ไม่ได้ ({2}) ถ้ามีไฟล์ชื่อนี้อยู่แล้ว ไฟล์นั้นยังคงเดิม"},
     {codes::kNoSpaceToWrite,
      "{0}: cannot write the file: there is no space for it (the disk is full, or the file is over the size "
      "allowed); an existing file of that name is left unchanged",
