@@ -1292,6 +1292,37 @@
     </message>
 </context>
 <context>
+    <name>klueng::gui::Recovery</name>
+    <message>
+        <source>permission denied</source>
+        <translation>ไม่มีสิทธิ์เขียน</translation>
+    </message>
+    <message>
+        <source>the disk is read-only</source>
+        <translation>ดิสก์เป็นแบบอ่านอย่างเดียว</translation>
+    </message>
+    <message>
+        <source>the disk is full</source>
+        <translation>ดิสก์เต็ม</translation>
+    </message>
+    <message>
+        <source>%1 is a file, not a folder</source>
+        <translation>%1 เป็นไฟล์ ไม่ใช่โฟลเดอร์</translation>
+    </message>
+    <message>
+        <source>cannot create the recovery folder %1: %2</source>
+        <translation>สร้างโฟลเดอร์กู้คืน %1 ไม่ได้: %2</translation>
+    </message>
+    <message>
+        <source>cannot lock %1: %2</source>
+        <translation>ล็อกไฟล์ %1 ไม่ได้: %2</translation>
+    </message>
+    <message>
+        <source>cannot write %1: the folder cannot be written to, or the disk is full</source>
+        <translation>บันทึก %1 ไม่ได้: เขียนลงในโฟลเดอร์ไม่ได้ หรือดิสก์เต็ม</translation>
+    </message>
+</context>
+<context>
     <name>klueng::gui::RecoveryBar</name>
     <message>
         <source>Rest&amp;ore</source>

@@ -22,6 +22,7 @@
 
 #include "batch_memory.h"
 #include "cli_common.h"
+#include "klueng/core/diagnostic_codes.h"
 #include "klueng/core/machine/job_file.h"
 #include "commands.h"
 
@@ -30,17 +31,6 @@ namespace klueng::cli {
 namespace {
 
 using namespace klueng::core;
-
-constexpr const char* kUsage =
-    "usage: klueng-cli check FILE|FOLDER... [--lang en|th] [--dialect fanuc|haas|classic] [--json]\n"
-    "                                       [--config DIR] [--summary]\n"
-    "                                       [--stock DxL[xBORE][in]] [--units mm|inch] [--tool N=ID]...\n"
-    "  --dialect     machine profile: fanuc (Fanuc 0i-TF, default), haas (Haas ST lathe), classic (1999 rules)\n"
-    "  --stock       stock for every FILE, before its header: 50x100 (mm), 2.1x4in, 118x80x90 (tube, bore 90)\n"
-    "  --units       power-on units before any G20/G21: mm or inch\n"
-    "  --decimal-point whole|increments  a length without a decimal point: X30 = 30 mm (whole) or 0.030 mm\n"
-    "                (increments, a standard Fanuc/Haas); default: the program's numbers, else machine.cfg\n"
-    "  --tool N=ID   use library tool ID at station N for this run (repeatable), e.g. --tool 12=parting-3mm\n";
 
 struct CheckOptions {
   std::vector<std::string> files;
@@ -55,14 +45,27 @@ struct CheckOptions {
   std::vector<std::string> tools;                 // --tool N=ID, checked once the turret size is known
 };
 
-int usageError(const std::string& message) {
-  std::fprintf(stderr, "klueng-cli check: %s\n%s", message.c_str(), kUsage);
+// The message (a kCli* code and its args, or a text already in `lang`), then the usage.
+int usageError(Lang lang, const char* code, std::vector<std::string> args = {}) {
+  printCliError("check", code, lang, std::move(args));
+  std::fputs(cliText(codes::kCliCheckUsage, lang).c_str(), stderr);
   return 2;
+}
+
+int usageError(Lang lang, const std::string& text) {
+  std::fprintf(stderr, "klueng-cli check: %s\n%s", text.c_str(), cliText(codes::kCliCheckUsage, lang).c_str());
+  return 2;
+}
+
+// "--stock must be DxL..., not 'x'".
+int mustBe(Lang lang, const std::string& option, const char* allowed, const std::string& value) {
+  return usageError(lang, codes::kCliMustBe, {option, cliText(allowed, lang), value});
 }
 
 // Accepts "--opt value" and "--opt=value". Returns an exit code on error.
 std::optional<int> parseArgs(const std::vector<std::string>& args, CheckOptions& o) {
-  o.lang = langFromLocale();
+  o.lang = langOfArgs(args);
+  const Lang lang = o.lang;
   bool onlyFiles = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
     std::string arg = args[i];
@@ -75,7 +78,7 @@ std::optional<int> parseArgs(const std::vector<std::string>& args, CheckOptions&
       continue;
     }
     if (arg == "--help") {
-      std::fputs(kUsage, stdout);
+      std::fputs(cliText(codes::kCliCheckUsage, lang).c_str(), stdout);
       return 0;
     }
     if (arg == "--json") {
@@ -95,36 +98,36 @@ std::optional<int> parseArgs(const std::vector<std::string>& args, CheckOptions&
     }
     if (arg != "--lang" && arg != "--dialect" && arg != "--config" && arg != "--stock" && arg != "--units" &&
         arg != "--tool" && arg != "--decimal-point")
-      return usageError("unknown option '" + arg + "'");
+      return usageError(lang, codes::kCliUnknownOption, {arg});
     if (!hasValue) {
-      if (i + 1 >= args.size()) return usageError(arg + " needs a value");
+      if (i + 1 >= args.size()) return usageError(lang, codes::kCliNeedsValue, {arg});
       value = args[++i];
     }
     if (arg == "--lang") {
       const auto lang = parseLang(value);
-      if (!lang) return usageError("--lang must be en or th, not '" + value + "'");
+      if (!lang) return mustBe(o.lang, arg, codes::kCliAllowedLang, value);
       o.lang = *lang;
     } else if (arg == "--dialect") {
       const auto dialect = parseDialect(value);
-      if (!dialect) return usageError("--dialect must be fanuc, haas or classic, not '" + value + "'");
+      if (!dialect) return mustBe(lang, arg, codes::kCliAllowedDialect, value);
       o.dialect = *dialect;
     } else if (arg == "--stock") {
       o.stock = parseStock(value);
-      if (!o.stock) return usageError(std::string("--stock must be ") + kStockAllowed + ", not '" + value + "'");
+      if (!o.stock) return mustBe(lang, arg, codes::kCliAllowedStock, value);
     } else if (arg == "--units") {
       o.powerOnUnits = parseUnits(value);
-      if (!o.powerOnUnits) return usageError(std::string("--units must be ") + kUnitsAllowed + ", not '" + value + "'");
+      if (!o.powerOnUnits) return mustBe(lang, arg, codes::kCliAllowedUnits, value);
     } else if (arg == "--decimal-point") {
       o.calculatorInput = parseDecimalPoint(value);
       if (!o.calculatorInput)
-        return usageError(std::string("--decimal-point must be ") + kDecimalPointAllowed + ", not '" + value + "'");
+        return mustBe(lang, arg, codes::kCliAllowedDecimalPoint, value);
     } else if (arg == "--tool") {
       o.tools.push_back(value);
     } else {
       o.configDir = value;
     }
   }
-  if (o.files.empty()) return usageError("no FILE given");
+  if (o.files.empty()) return usageError(lang, codes::kCliNoFile);
   return std::nullopt;
 }
 
@@ -181,7 +184,7 @@ int runCheck(const std::vector<std::string>& args) {
   std::string error;
   std::optional<machine::JobFileRequest> request =
       jobRequest(config, o.dialect, o.powerOnUnits, o.stock, o.tools, error);
-  if (!request) return usageError(error);
+  if (!request) return usageError(o.lang, error);
   request->calculatorInput = o.calculatorInput;
 
   std::vector<FileDiagnostic> all = config.diagnostics;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "cli_common.h"
+#include "klueng/core/diagnostic_codes.h"
 #include "png_writer.h"
 #include "commands.h"
 #include "klueng/core/cut/class_grading.h"
@@ -26,15 +27,6 @@ namespace {
 
 using namespace klueng::core;
 
-constexpr const char* kClassUsage =
-    "usage: klueng-cli class DIR --reference REF.nc [--tolerance 0.05] [--csv OUT.csv]\n"
-    "                            [--pdf OUT.pdf [--sheets]] [--dialect fanuc|haas|classic]\n"
-    "                            [--config DIR] [--lang en|th]\n"
-    "  every program in DIR against REF.nc: errors, alarm, cycle time, the largest leftover\n"
-    "  and gouge on the diameter (mm), pass when both are within --tolerance (mm);\n"
-    "  --pdf: the same table as a page (Thai with --lang th), --sheets: then every\n"
-    "  student's program sheet and drawing in the same PDF\n";
-
 struct ClassOptions {
   std::string dir, reference, csv, pdf, configDir;
   bool sheets = false;
@@ -43,35 +35,56 @@ struct ClassOptions {
   Lang lang = langFromLocale();
 };
 
+// The options, or nullopt after saying what is wrong (in the command's language).
 std::optional<ClassOptions> parse(const std::vector<std::string>& args) {
   ClassOptions o;
+  o.lang = langOfArgs(args);
+  const Lang lang = o.lang;
+  const auto bad = [lang](const std::string& option, const std::string& value, const char* allowed) {
+    if (allowed) printCliError("class", codes::kCliBadValue, lang, {value, option, cliText(allowed, lang)});
+    else printCliError("class", codes::kCliBadValueAnyOf, lang, {value, option});
+    return std::nullopt;
+  };
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    const bool hasValue = i + 1 < args.size();
-    if (a == "--reference" && hasValue) o.reference = args[++i];
-    else if (a == "--csv" && hasValue) o.csv = args[++i];
-    else if (a == "--pdf" && hasValue) o.pdf = args[++i];
+    const bool takesValue = a == "--reference" || a == "--csv" || a == "--pdf" || a == "--config" ||
+                            a == "--tolerance" || a == "--dialect" || a == "--lang";
+    if (takesValue && i + 1 >= args.size()) {
+      printCliError("class", codes::kCliNeedsValue, lang, {a});
+      return std::nullopt;
+    }
+    if (a == "--reference") o.reference = args[++i];
+    else if (a == "--csv") o.csv = args[++i];
+    else if (a == "--pdf") o.pdf = args[++i];
     else if (a == "--sheets") o.sheets = true;
-    else if (a == "--config" && hasValue) o.configDir = args[++i];
-    else if (a == "--tolerance" && hasValue) {
+    else if (a == "--config") o.configDir = args[++i];
+    else if (a == "--tolerance") {
+      const std::string& v = args[++i];
       char* end = nullptr;
-      o.tolerance = std::strtod(args[++i].c_str(), &end);
-      if (!end || *end != '\0' || !(o.tolerance >= 0.0) || o.tolerance > 100.0) return std::nullopt;
-    } else if (a == "--dialect" && hasValue) {
+      o.tolerance = std::strtod(v.c_str(), &end);
+      if (!end || *end != '\0' || v.empty() || !(o.tolerance >= 0.0) || o.tolerance > 100.0) return bad(a, v, nullptr);
+    } else if (a == "--dialect") {
       const auto d = parseDialect(args[++i]);
-      if (!d) return std::nullopt;
+      if (!d) return bad(a, args[i], codes::kCliAllowedDialect);
       o.dialect = *d;
-    } else if (a == "--lang" && hasValue) {
+    } else if (a == "--lang") {
       const auto l = parseLang(args[++i]);
-      if (!l) return std::nullopt;
+      if (!l) return bad(a, args[i], codes::kCliAllowedLang);
       o.lang = *l;
-    } else if (!a.starts_with("--") && o.dir.empty()) {
+    } else if (a.starts_with("--")) {
+      printCliError("class", codes::kCliUnknownOption, lang, {a});
+      return std::nullopt;
+    } else if (o.dir.empty()) {
       o.dir = a;
     } else {
+      printCliError("class", codes::kCliOneFile, lang, {o.dir, a});
       return std::nullopt;
     }
   }
-  if (o.dir.empty() || o.reference.empty()) return std::nullopt;
+  if (o.dir.empty() || o.reference.empty()) {
+    printCliError("class", codes::kCliClassNeeds, lang);
+    return std::nullopt;
+  }
   return o;
 }
 
@@ -110,12 +123,12 @@ bool writePdf(const ClassOptions& o, const std::vector<cut::ClassRow>& rows, con
 
 int runClass(const std::vector<std::string>& args) {
   if (std::find(args.begin(), args.end(), "--help") != args.end()) {
-    std::fputs(kClassUsage, stdout);
+    std::fputs(cliText(codes::kCliClassUsage, langOfArgs(args)).c_str(), stdout);
     return 0;
   }
   const std::optional<ClassOptions> parsed = parse(args);
   if (!parsed) {
-    std::fputs(kClassUsage, stderr);
+    std::fputs(cliText(codes::kCliClassUsage, langOfArgs(args)).c_str(), stderr);
     return 2;
   }
   const ClassOptions& o = *parsed;
@@ -130,13 +143,12 @@ int runClass(const std::vector<std::string>& args) {
   }
   const cut::GradedProgram reference = cut::gradeProgram(o.reference, config.setup, *request);
   if (!reference.part) {
-    std::fprintf(stderr, "klueng-cli class: the reference %s does not run to its end (%s%s)\n", o.reference.c_str(),
-                 reference.firstError.c_str(), reference.alarm.c_str());
+    printCliError("class", codes::kCliReferenceFails, o.lang, {o.reference, reference.firstError + reference.alarm});
     return 2;
   }
   std::error_code ec;
   if (!std::filesystem::is_directory(o.dir, ec)) {
-    std::fprintf(stderr, "klueng-cli class: %s is not a folder\n", o.dir.c_str());
+    printCliError("class", codes::kCliNotAFolder, o.lang, {o.dir});
     return 2;
   }
   // Every program file in the folder is graded, so every one is an input the outputs must not
@@ -157,7 +169,10 @@ int runClass(const std::vector<std::string>& args) {
     return 2;  // the old file keeps its bytes; the message says why (issue 29)
   }
   if (!o.pdf.empty() && !writePdf(o, rows, config.dir)) return 2;
-  std::fprintf(stderr, "%zu programs: %d pass, %zu fail\n", rows.size(), passed, rows.size() - static_cast<std::size_t>(passed));
+  const std::string totals = cliText(codes::kCliClassTotals, o.lang,
+                                     {std::to_string(rows.size()), std::to_string(passed),
+                                      std::to_string(rows.size() - static_cast<std::size_t>(passed))});
+  std::fprintf(stderr, "%s\n", totals.c_str());
   return 0;
 }
 

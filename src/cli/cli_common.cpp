@@ -34,6 +34,25 @@ Lang langFromLocale() {
   return Lang::En;
 }
 
+Lang langOfArgs(const std::vector<std::string>& args) {
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    std::optional<Lang> lang;
+    if (args[i] == "--lang" && i + 1 < args.size()) lang = parseLang(args[i + 1]);
+    else if (args[i].rfind("--lang=", 0) == 0) lang = parseLang(std::string_view(args[i]).substr(7));
+    if (lang) return *lang;
+  }
+  return langFromLocale();
+}
+
+std::string cliText(const char* code, Lang lang, std::vector<std::string> args) {
+  return formatMessage(Diagnostic{Severity::Error, code, {}, std::move(args)}, lang);
+}
+
+void printCliError(const char* command, const char* code, Lang lang, std::vector<std::string> args) {
+  const std::string line = fmt::format("klueng-cli{}{}: {}\n", *command ? " " : "", command, cliText(code, lang, std::move(args)));
+  std::fwrite(line.data(), 1, line.size(), stderr);
+}
+
 std::optional<Lang> parseLang(std::string_view text) {
   if (text == "en") return Lang::En;
   if (text == "th") return Lang::Th;

@@ -25,6 +25,14 @@ namespace klueng::cli {
 
 // Thai when the first set of LC_ALL, LC_MESSAGES, LANG starts with "th", else English.
 core::Lang langFromLocale();
+// The language of a command's own texts: its `--lang en|th` (`--lang=th`) wherever
+// it stands on the command line, so that a mistake before it is already said in
+// that language; else langFromLocale().
+core::Lang langOfArgs(const std::vector<std::string>& args);
+// klueng-cli's own text `code` (messages_cli.cpp, codes::kCli*) in `lang`.
+std::string cliText(const char* code, core::Lang lang, std::vector<std::string> args = {});
+// "klueng-cli COMMAND: <text>\n" on stderr.
+void printCliError(const char* command, const char* code, core::Lang lang, std::vector<std::string> args = {});
 std::optional<core::Lang> parseLang(std::string_view text);                  // "en" | "th"
 std::optional<core::gcode::Dialect> parseDialect(std::string_view text);     // "fanuc" | "classic"
 
@@ -38,11 +46,7 @@ std::optional<core::gcode::InputUnits> parseUnits(std::string_view text);
 // --decimal-point whole|increments: how lengths without a decimal point are
 // read (true = whole units, calculator-type input; false = least increments).
 std::optional<bool> parseDecimalPoint(std::string_view text);
-// What the options accept, for the exit-2 messages.
-inline constexpr const char* kStockAllowed =
-    "DxL[xBORE][in] with 0 < D, L <= 9999.999 and 0 < BORE < D, e.g. 50x100, 2.1x4in, 118x80x90";
-inline constexpr const char* kUnitsAllowed = "mm or inch";
-inline constexpr const char* kDecimalPointAllowed = "whole or increments";
+// What the options accept, for the exit-2 messages: cliText(kCliAllowed*, lang).
 
 // `FILE:LINE:COL: note I152: message` (`FILE: note ...` without a line), no newline; Thai "หมายเหตุ".
 std::string formatNote(const std::string& file, const core::Diagnostic& d, core::Lang lang);

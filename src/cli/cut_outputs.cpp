@@ -68,11 +68,8 @@ CutOutcome runCut(const std::string& file, const io::JobHeader& header, const ma
     picture.toolPosition = sim.toolPosition();
     picture.path = &timeline;
     picture.pathUntil = sim.endTime();
-    std::string error;
-    if (!writeSectionPng(picture, options.pngPath, &error)) {
-      std::fprintf(stderr, "klueng-cli simulate: cannot write %s: %s\n", options.pngPath.c_str(), error.c_str());
-      outcome.written = false;
-    }
+    // A failed write is said as every output's is (F1xx, in the run's language), the old file kept.
+    if (!reportWrite(options.pngPath, writeSectionPng(picture, options.pngPath), options.lang)) outcome.written = false;
   }
 
   if (!options.profilePath.empty()) outcome.written =

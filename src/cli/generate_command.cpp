@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cli_common.h"
+#include "klueng/core/diagnostic_codes.h"
 #include "commands.h"
 #include "klueng/core/design/dxf_import.h"
 #include "klueng/core/design/part_design.h"
@@ -21,12 +22,6 @@ namespace klueng::cli {
 using namespace klueng::core;
 
 namespace {
-
-constexpr const char* kGenerateUsage =
-    "usage: klueng-cli generate PART.json|PART.dxf -o OUT.nc [--dialect fanuc|haas|classic] [--material NAME]\n"
-    "                           [--tool-material hss|carbide] [--layer NAME] [--stock DxL[xBORE]]\n"
-    "                           [--lang en|th] [--config DIR]\n"
-    "  the part file's format and DXF drawings: docs/parts.md; cutting speeds: resources/parts/cutting_speeds.cfg\n";
 
 bool isDxf(const std::string& path) {
   std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : std::string();
@@ -47,8 +42,10 @@ bool parseStock(const std::string& v, double& d, double& l, double& bore) {
 }  // namespace
 
 int runGenerate(const std::vector<std::string>& args) {
+  const Lang lang = langOfArgs(args);
+  const std::string usage = cliText(codes::kCliGenerateUsage, lang);
   if (std::find(args.begin(), args.end(), "--help") != args.end()) {
-    std::fputs(kGenerateUsage, stdout);
+    std::fputs(usage.c_str(), stdout);
     return 0;
   }
   std::string file, out, configDir;
@@ -56,7 +53,7 @@ int runGenerate(const std::vector<std::string>& args) {
   std::optional<std::array<double, 3>> stock;
   design::DxfImportOptions dxfOptions;
   design::GenerateOptions options;
-  options.lang = langFromLocale();
+  options.lang = lang;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a.rfind("-", 0) != 0) {
@@ -64,7 +61,8 @@ int runGenerate(const std::vector<std::string>& args) {
       continue;
     }
     if (i + 1 >= args.size()) {
-      std::fputs(kGenerateUsage, stderr);
+      printCliError("generate", codes::kCliNeedsValue, lang, {a});
+      std::fputs(usage.c_str(), stderr);
       return 2;
     }
     const std::string v = args[++i];
@@ -77,13 +75,14 @@ int runGenerate(const std::vector<std::string>& args) {
     else if (std::array<double, 3> s{}; a == "--stock" && parseStock(v, s[0], s[1], s[2])) stock = s;
     else if (a == "--lang" && parseLang(v)) options.lang = *parseLang(v);
     else {
-      std::fprintf(stderr, "klueng-cli generate: bad option %s %s\n", a.c_str(), v.c_str());
-      std::fputs(kGenerateUsage, stderr);
+      printCliError("generate", codes::kCliBadOption, lang, {a, v});
+      std::fputs(usage.c_str(), stderr);
       return 2;
     }
   }
   if (file.empty() || out.empty()) {
-    std::fputs(kGenerateUsage, stderr);
+    printCliError("generate", codes::kCliGenerateNeeds, lang);
+    std::fputs(usage.c_str(), stderr);
     return 2;
   }
   const LoadedConfig config = loadConfig(configDir);

@@ -57,17 +57,18 @@ KluengSectionPngFn loadModule(std::string* why) {
 
 }  // namespace
 
-bool writeSectionPng(const render::SectionPicture& picture, const std::string& path, std::string* error) {
-  const KluengSectionPngFn draw = loadModule(error);
-  if (!draw) return false;
+std::optional<core::Diagnostic> writeSectionPng(const render::SectionPicture& picture, const std::string& path) {
+  const auto failed = [&](const std::string& why, const std::string& thai) {
+    return core::Diagnostic{core::Severity::Error, core::codes::kCannotWriteFile, {}, {path, why, thai}};
+  };
+  std::string why;
+  const KluengSectionPngFn draw = loadModule(&why);
+  if (!draw) return failed(why, "ใช้โมดูลวาดภาพ klueng-png.so ไม่ได้: " + why);
   char* bytes = nullptr;
   std::size_t size = 0;
-  if (!draw(&picture, &bytes, &size)) {
-    if (error) *error = "the picture could not be drawn";
-    return false;
-  }
+  if (!draw(&picture, &bytes, &size)) return failed("the picture could not be drawn", "วาดภาพไม่ได้");
   const std::unique_ptr<char, decltype(&std::free)> owned(bytes, &std::free);
-  return core::io::writeTextFileAtomic(path, std::string_view(bytes, size), error);
+  return core::io::writeFileAtomic(path, std::string_view(bytes, size));
 }
 
 }  // namespace klueng::cli
@@ -80,16 +81,16 @@ namespace {
 // checked writer: a failed write keeps the old file and is reported (issue 29).
 template <class Input, class Fn>
 std::optional<core::Diagnostic> writePdf(const char* symbol, const Input& input, const std::string& path) {
-  const auto failed = [&](const std::string& why) {
-    return core::Diagnostic{core::Severity::Error, core::codes::kCannotWriteFile, {}, {path, why}};
+  const auto failed = [&](const std::string& why, const std::string& thai) {
+    return core::Diagnostic{core::Severity::Error, core::codes::kCannotWriteFile, {}, {path, why, thai}};
   };
   std::string why;
   const auto draw = reinterpret_cast<Fn>(moduleSymbol(symbol, &why));
-  if (!draw) return failed(why);
+  if (!draw) return failed(why, "ใช้โมดูลวาดภาพ klueng-png.so ไม่ได้: " + why);
   char* bytes = nullptr;
   std::size_t size = 0;
   char reason[512] = {0};
-  if (!draw(&input, &bytes, &size, reason, sizeof reason)) return failed(reason);
+  if (!draw(&input, &bytes, &size, reason, sizeof reason)) return failed(reason, std::string("สร้าง PDF ไม่ได้: ") + reason);
   const std::unique_ptr<char, decltype(&std::free)> owned(bytes, &std::free);
   return core::io::writeFileAtomic(path, std::string_view(bytes, size));
 }

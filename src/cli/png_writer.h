@@ -14,7 +14,8 @@
 
 namespace klueng::cli {
 
-bool writeSectionPng(const render::SectionPicture& picture, const std::string& path, std::string* error);
+// klueng-cli simulate --png: nullopt when written; else why (F1xx, in both languages), the old file unchanged.
+std::optional<core::Diagnostic> writeSectionPng(const render::SectionPicture& picture, const std::string& path);
 // klueng-cli class --pdf: the grades (and with sheets, each student's sheets) as one PDF at `path`.
 // nullopt when written; else why (F1xx, io/file_write.h), the old file unchanged.
 std::optional<core::Diagnostic> writeClassPdf(const KluengClassPdf& input, const std::string& path);

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cli_common.h"
+#include "klueng/core/diagnostic_codes.h"
 #include "commands.h"
 #include "klueng/core/io/tool_library.h"
 #include "klueng/core/machine/job_file.h"
@@ -23,12 +24,6 @@ namespace klueng::cli {
 using namespace klueng::core;
 
 namespace {
-
-constexpr const char* kPrintUsage =
-    "usage: klueng-cli print FILE --pdf OUT.pdf [--sheet program|drawing|both] [--lang en|th]\n"
-    "                             [--dialect fanuc|haas|classic] [--stock DxL[xBORE][in]] [--units mm|inch]\n"
-    "                             [--config DIR] [--tool N=ID]... [--decimal-point whole|increments]\n"
-    "  --sheet  program (the listing, portrait), drawing (the dimensioned part, landscape) or both (default)\n";
 
 struct PrintOptions {
   std::string file;
@@ -46,60 +41,63 @@ struct PrintOptions {
 
 std::optional<PrintOptions> parse(const std::vector<std::string>& args) {
   PrintOptions o;
-  o.lang = langFromLocale();
-  const auto bad = [](const std::string& option, const std::string& value, const char* allowed) {
-    std::fprintf(stderr, "klueng-cli print: bad value '%s' for %s; allowed: %s\n", value.c_str(), option.c_str(),
-                 allowed);
+  o.lang = langOfArgs(args);
+  const Lang lang = o.lang;
+  const auto bad = [lang](const std::string& option, const std::string& value, const char* allowed) {
+    printCliError("print", codes::kCliBadValue, lang, {value, option, cliText(allowed, lang)});
     return std::nullopt;
   };
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a.rfind("--", 0) != 0) {
       if (!o.file.empty()) {
-        std::fprintf(stderr, "klueng-cli print: only one FILE (got '%s' and '%s')\n", o.file.c_str(), a.c_str());
+        printCliError("print", codes::kCliOneFile, lang, {o.file, a});
         return std::nullopt;
       }
       o.file = a;
       continue;
     }
     if (i + 1 >= args.size()) {
-      std::fprintf(stderr, "klueng-cli print: %s needs a value\n", a.c_str());
+      printCliError("print", codes::kCliNeedsValue, lang, {a});
       return std::nullopt;
     }
     const std::string v = args[++i];
     if (a == "--pdf") {
       o.pdf = v;
     } else if (a == "--sheet") {
-      if (v != "program" && v != "drawing" && v != "both") return bad(a, v, "program, drawing or both");
+      if (v != "program" && v != "drawing" && v != "both") return bad(a, v, codes::kCliAllowedSheet);
       o.program = v != "drawing";
       o.drawing = v != "program";
     } else if (a == "--lang") {
       const auto lang = parseLang(v);
-      if (!lang) return bad(a, v, "en or th");
+      if (!lang) return bad(a, v, codes::kCliAllowedLang);
       o.lang = *lang;
     } else if (a == "--dialect") {
       const auto dialect = parseDialect(v);
-      if (!dialect) return bad(a, v, "fanuc, haas or classic");
+      if (!dialect) return bad(a, v, codes::kCliAllowedDialect);
       o.dialect = *dialect;
     } else if (a == "--stock") {
       o.stock = parseStock(v);
-      if (!o.stock) return bad(a, v, kStockAllowed);
+      if (!o.stock) return bad(a, v, codes::kCliAllowedStock);
     } else if (a == "--units") {
       o.powerOnUnits = parseUnits(v);
-      if (!o.powerOnUnits) return bad(a, v, kUnitsAllowed);
+      if (!o.powerOnUnits) return bad(a, v, codes::kCliAllowedUnits);
     } else if (a == "--decimal-point") {
       o.calculatorInput = parseDecimalPoint(v);
-      if (!o.calculatorInput) return bad(a, v, kDecimalPointAllowed);
+      if (!o.calculatorInput) return bad(a, v, codes::kCliAllowedDecimalPoint);
     } else if (a == "--config") {
       o.configDir = v;
     } else if (a == "--tool") {
       o.tools.push_back(v);
     } else {
-      std::fprintf(stderr, "klueng-cli print: unknown option '%s'\n", a.c_str());
+      printCliError("print", codes::kCliUnknownOption, lang, {a});
       return std::nullopt;
     }
   }
-  if (o.file.empty() || o.pdf.empty()) return std::nullopt;
+  if (o.file.empty() || o.pdf.empty()) {
+    printCliError("print", codes::kCliPrintNeeds, lang);
+    return std::nullopt;
+  }
   return o;
 }
 
@@ -107,12 +105,12 @@ std::optional<PrintOptions> parse(const std::vector<std::string>& args) {
 
 int runPrint(const std::vector<std::string>& args) {
   if (std::find(args.begin(), args.end(), "--help") != args.end()) {
-    std::fputs(kPrintUsage, stdout);
+    std::fputs(cliText(codes::kCliPrintUsage, langOfArgs(args)).c_str(), stdout);
     return 0;
   }
   const std::optional<PrintOptions> parsed = parse(args);
   if (!parsed) {
-    std::fputs(kPrintUsage, stderr);
+    std::fputs(cliText(codes::kCliPrintUsage, langOfArgs(args)).c_str(), stderr);
     return 2;
   }
   const PrintOptions& o = *parsed;

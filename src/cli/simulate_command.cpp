@@ -21,6 +21,7 @@
 
 #include "batch_memory.h"
 #include "cli_common.h"
+#include "klueng/core/diagnostic_codes.h"
 #include "commands.h"
 #include "cut_outputs.h"
 #include "klueng/core/cut/comp_compare.h"
@@ -132,43 +133,26 @@ const std::vector<OptionSpec>& optionSpecs() {
   return specs;
 }
 
-constexpr const char* kSimulateUsage =
-    "usage: klueng-cli simulate FILE [--trace out.csv] [--cycle-time] [--config DIR]\n"
-    "                              [--lang en|th] [--dialect fanuc|haas|classic]\n"
-    "                              [--optional-stop] [--block-skip] [--no-persist]\n"
-    "                              [--png out.png] [--profile out.csv] [--json summary.json]\n"
-    "                              [--svg out.svg] [--dxf out.dxf] [--features] [--resolution MM] [--no-stock]\n"
-    "                              [--part-check] [--part-tolerance MM] [--compare-compensation none|sharp]\n"
-    "                              [--stock DxL[xBORE][in]] [--units mm|inch] [--tool N=ID]...\n"
-    "                              [--decimal-point whole|increments]\n"
-    "  --dialect  fanuc (Fanuc 0i-TF, default), haas (Haas ST lathe), classic (1999 rules)\n"
-    "  --stock   stock before the file's header: 50x100 (mm), 2.1x4in, 118x80x90 (tube, bore 90)\n"
-    "  --units   power-on units before any G20/G21: mm or inch\n"
-    "  --decimal-point  a length without a decimal point: X30 = 30 mm (whole) or 0.030 mm (increments,\n"
-    "                   a standard Fanuc/Haas); default: the program's numbers, else machine.cfg\n"
-    "  --tool N=ID   library tool ID at station N for this run, e.g. 12=parting-3mm\n"
-    "  --no-persist  do not write macro variables #500-#999 back to macro_variables.cfg (kept in the\n"
-    "                --config folder, else in the user's data folder)\n";
-
-// ": allowed: ..." for the options whose values are a closed set or a form.
-std::string allowedValues(const std::string& option) {
-  if (option == "--stock") return std::string("; allowed: ") + kStockAllowed;
-  if (option == "--units") return std::string("; allowed: ") + kUnitsAllowed;
-  if (option == "--decimal-point") return std::string("; allowed: ") + kDecimalPointAllowed;
-  if (option == "--lang") return "; allowed: en or th";
-  if (option == "--dialect") return "; allowed: fanuc, haas or classic";
-  if (option == "--resolution" || option == "--part-tolerance") return "; allowed: a number from 0.001 to 5 (mm)";
-  return {};
+// What an option allows (a kCliAllowed* code), for the options whose values are a closed set or a form.
+const char* allowedValues(const std::string& option) {
+  if (option == "--stock") return codes::kCliAllowedStock;
+  if (option == "--units") return codes::kCliAllowedUnits;
+  if (option == "--decimal-point") return codes::kCliAllowedDecimalPoint;
+  if (option == "--lang") return codes::kCliAllowedLang;
+  if (option == "--dialect") return codes::kCliAllowedDialect;
+  if (option == "--resolution" || option == "--part-tolerance") return codes::kCliAllowedMillimetres;
+  return nullptr;
 }
 
 std::optional<SimulateOptions> parseOptions(const std::vector<std::string>& args) {
   SimulateOptions o;
-  o.lang = langFromLocale();
+  o.lang = langOfArgs(args);
+  const Lang lang = o.lang;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a.rfind("--", 0) != 0) {
       if (!o.file.empty()) {
-        std::fprintf(stderr, "klueng-cli simulate: only one FILE (got '%s' and '%s')\n", o.file.c_str(), a.c_str());
+        printCliError("simulate", codes::kCliOneFile, lang, {o.file, a});
         return std::nullopt;
       }
       o.file = a;
@@ -178,25 +162,27 @@ std::optional<SimulateOptions> parseOptions(const std::vector<std::string>& args
     for (const auto& s : optionSpecs())
       if (a == s.name) spec = &s;
     if (!spec) {
-      std::fprintf(stderr, "klueng-cli simulate: unknown option '%s'\n", a.c_str());
+      printCliError("simulate", codes::kCliUnknownOption, lang, {a});
       return std::nullopt;
     }
     std::string value;
     if (spec->takesValue) {
       if (i + 1 >= args.size()) {
-        std::fprintf(stderr, "klueng-cli simulate: %s needs a value\n", a.c_str());
+        printCliError("simulate", codes::kCliNeedsValue, lang, {a});
         return std::nullopt;
       }
       value = args[++i];
     }
     if (!spec->apply(o, value)) {
-      std::fprintf(stderr, "klueng-cli simulate: bad value '%s' for %s%s\n", value.c_str(), a.c_str(),
-                   allowedValues(a).c_str());
+      if (const char* allowed = allowedValues(a))
+        printCliError("simulate", codes::kCliBadValue, lang, {value, a, cliText(allowed, lang)});
+      else
+        printCliError("simulate", codes::kCliBadValueAnyOf, lang, {value, a});
       return std::nullopt;
     }
   }
   if (o.file.empty()) {
-    std::fputs(kSimulateUsage, stderr);
+    std::fputs(cliText(codes::kCliSimulateUsage, lang).c_str(), stderr);
     return std::nullopt;
   }
   return o;
@@ -210,7 +196,7 @@ void printDiagnostic(const std::string& file, const Diagnostic& d, Lang lang) {
 
 int runSimulate(const std::vector<std::string>& args) {
   if (std::find(args.begin(), args.end(), "--help") != args.end()) {
-    std::fputs(kSimulateUsage, stdout);
+    std::fputs(cliText(codes::kCliSimulateUsage, langOfArgs(args)).c_str(), stdout);
     return 0;
   }
   const std::optional<SimulateOptions> parsed = parseOptions(args);

@@ -5,8 +5,16 @@
 // a note of where it belongs. Saving, discarding or opening another file
 // removes the copy; a copy whose Klueng is no longer running (a crash, a kill,
 // a power cut) is offered at the next start (RecoveryBar).
+//
+// "Still running" is a lock, not a process id: the window holds an flock() on
+// <id>.lock from its first autosave until the copy is removed. The kernel drops
+// it when the process ends (a zombie holds none) and no lock outlives a reboot,
+// so neither a dead editor's zombie nor a process id reused after a reboot
+// hides a copy. Copies written before the lock (no .lock file) fall back to the
+// process id, a zombie counting as gone.
 #include <QDateTime>
 #include <QString>
+#include <QStringList>
 #include <QVector>
 #include <string>
 
@@ -21,12 +29,28 @@ struct RecoveryCopy {
   qint64 pid = 0;        // the Klueng process that wrote it
 };
 
+// One run of lines that differ between the file on disk and the copy (a line
+// diff): `fileCount` lines of the file from `fileStart` are `copyCount` lines of
+// the copy from `copyStart` (0-based; a count of 0 is a pure insertion/deletion).
+struct RecoveryHunk {
+  int fileStart = 0, fileCount = 0;
+  int copyStart = 0, copyCount = 0;
+};
+
 // What differs between a copy and the file on disk, for the offer.
 struct RecoveryDifference {
-  int linesDiffering = 0;   // lines of the copy that the file does not have at the same place
-  int firstLine = 0;        // file line of the first difference (0 = none)
+  // Lines that differ: per hunk the larger of the lines removed and the lines
+  // added, so one inserted, deleted or changed line is 1.
+  int linesDiffering = 0;
+  int firstLine = 0;        // line (1-based, header included) of the first difference (0 = none)
   bool fileMissing = false; // the original is gone (or the program was untitled)
+  QVector<RecoveryHunk> hunks;
+  QStringList fileLines, copyLines;  // the texts compared, one entry per line
 };
+
+// The shortest edit (Myers' O(ND) line diff) that turns `from` into `to`. Past
+// `maxEdits` changed lines the middle that differs is one hunk.
+QVector<RecoveryHunk> diffLines(const QStringList& from, const QStringList& to, int maxEdits = 2000);
 
 class Recovery {
  public:
@@ -37,9 +61,11 @@ class Recovery {
   // A new session id for one window.
   static QString newId();
 
-  // Writes (atomically) the copy of window `id`; false with `error` on failure.
+  // Writes (atomically) the copy of window `id`, holding its lock from the first
+  // write on; false with `error` (what failed and why, in the UI language) on failure.
   bool write(const QString& id, const std::string& contents, const QString& originalPath,
              const QString& displayName, QString* error = nullptr) const;
+  // Removes the copy, its note and its lock (this window's or a dead one's).
   void remove(const QString& id) const;
   // Copies whose Klueng is not running any more, newest first.
   QVector<RecoveryCopy> orphans() const;

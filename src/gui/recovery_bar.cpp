@@ -8,7 +8,6 @@
 #include <QMessageBox>
 #include <QPushButton>
 
-#include "klueng/core/io/program_file.h"
 
 namespace klueng::gui {
 
@@ -71,30 +70,33 @@ void RecoveryBar::next() {
   setVisible(!copies_.isEmpty());
 }
 
+QString RecoveryBar::comparison() const {
+  if (copies_.isEmpty()) return {};
+  // The hunks of the line diff: the file's lines (-) and the copy's (+), at most 400 lines shown.
+  const RecoveryDifference d = Recovery::difference(copies_.front());
+  QStringList lines;
+  if (d.fileMissing) {
+    for (const QString& line : d.copyLines) lines << QStringLiteral("  + %1").arg(line);
+  }
+  for (const RecoveryHunk& h : d.hunks) {
+    lines << tr("line %1").arg(h.copyStart + 1);
+    for (int i = 0; i < h.fileCount; ++i) lines << QStringLiteral("  - %1").arg(d.fileLines[h.fileStart + i]);
+    for (int i = 0; i < h.copyCount; ++i) lines << QStringLiteral("  + %1").arg(d.copyLines[h.copyStart + i]);
+    if (lines.size() >= 400) break;
+  }
+  if (lines.size() > 400) lines.resize(400);
+  return lines.join(QLatin1Char('\n'));
+}
+
 void RecoveryBar::compareFirst() {
   if (copies_.isEmpty()) return;
-  const RecoveryCopy& c = copies_.front();
-  // The recovered lines beside the file's, where they differ (at most 200 shown).
-  const auto mine = core::io::readProgramFile(c.copyPath.toStdString());
-  const auto theirs = core::io::readProgramFile(c.originalPath.toStdString());
-  const QStringList a = mine.value ? QString::fromStdString(mine.value->gcode).split(QLatin1Char('\n')) : QStringList();
-  const QStringList b = theirs.value ? QString::fromStdString(theirs.value->gcode).split(QLatin1Char('\n')) : QStringList();
-  const int first = mine.value ? mine.value->gcodeFirstLine : 1;
-  QStringList lines;
-  for (qsizetype i = 0; i < std::max(a.size(), b.size()) && lines.size() < 400; ++i) {
-    const QString x = i < a.size() ? a[i] : QString();
-    const QString y = i < b.size() ? b[i] : QString();
-    if (x == y) continue;
-    lines << tr("line %1").arg(first + i);
-    lines << QStringLiteral("  - %1").arg(y) << QStringLiteral("  + %1").arg(x);
-  }
   QMessageBox box(this);
   box.setObjectName(QStringLiteral("recoveryCompareBox"));
   box.setIcon(QMessageBox::Information);
   box.setWindowTitle(tr("Unsaved work"));
   box.setText(label_->text());
   box.setInformativeText(tr("Lines marked - are in the file; lines marked + are in the unsaved copy."));
-  box.setDetailedText(lines.join(QLatin1Char('\n')));
+  box.setDetailedText(comparison());
   box.exec();
 }
 

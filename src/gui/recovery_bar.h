@@ -24,6 +24,9 @@ class RecoveryBar : public QWidget {
   // The buttons' work, for the window and tests: the first pending copy.
   void restoreFirst();
   void discardFirst();
+  // What Compare shows for the first pending copy: per differing run of lines
+  // "line N", then the file's lines "  - ..." and the copy's "  + ...".
+  QString comparison() const;
 
  signals:
   void restoreRequested(const RecoveryCopy& copy);

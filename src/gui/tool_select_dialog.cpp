@@ -21,6 +21,7 @@
 
 #include "gui/file_save.h"
 #include "gui/language.h"
+#include "klueng/core/diagnostic_codes.h"
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/io/tool_library.h"
 #include "klueng/core/messages.h"
@@ -122,6 +123,7 @@ ToolSelectDialog::ToolSelectDialog(const QString& configDir, QWidget* parent)
   auto tools = io::readToolTable(dir + "/tools.cfg");
   tools_ = tools.value.value_or(io::ToolTable{});
   tools_.folder = dir;
+  loaded_ = tools_;
   auto offsets = io::readOffsetTable(dir + "/offset.cfg");
   offsets_ = offsets.value.value_or(io::OffsetTable{});
   for (auto& d : tools.diagnostics) loadDiagnostics_.push_back(d);
@@ -136,12 +138,15 @@ ToolSelectDialog::ToolSelectDialog(const QString& configDir, QWidget* parent)
   libraryCombo_->addItem(QString(), QString());
   for (const io::LibraryTool& t : io::shippedToolLibrary().tools)
     libraryCombo_->addItem(QString(), QString::fromStdString(t.id));
+  libraryCombo_->setObjectName(QStringLiteral("toolLibrary"));
   jobOnly_ = new QCheckBox(this);
+  jobOnly_->setObjectName(QStringLiteral("toolJobOnly"));
   choice_ = new QLabel(this);
   choice_->setWordWrap(true);
   choice_->setStyleSheet(QStringLiteral("color: #0050a0"));
   nameLabel_ = new QLabel(this);
   nameEdit_ = new QLineEdit(this);
+  nameEdit_->setObjectName(QStringLiteral("toolBitmapName"));
   browseButton_ = new QPushButton(this);
   offsetLabel_ = new QLabel(this);
   offsetSpin_ = new QSpinBox(this);
@@ -231,6 +236,7 @@ void ToolSelectDialog::onNameEdited(const QString& text) {
   const int row = list_->currentRow();
   if (row < 0) return;
   tools_.bitmap[static_cast<std::size_t>(row)] = text.trimmed().toStdString();
+  beforeLibrary_[static_cast<std::size_t>(row)].reset();  // the typed name is the line now
   setOverride(row + 1, {});  // typing a file name sets the station in tools.cfg
   retranslate();
 }
@@ -370,7 +376,13 @@ void ToolSelectDialog::onLibraryChosen(int index) {
     setOverride(row + 1, {});
     if (!id.isEmpty()) {
       const io::LibraryTool* t = io::shippedToolLibrary().find(id.toStdString());
-      if (t) tools_.setLibraryTool(row + 1, t->id, io::shippedToolLibrary().bitmapPath(*t), t->pixelsPerMm);
+      if (t) {
+        const auto i = static_cast<std::size_t>(row);
+        if (!beforeLibrary_[i])
+          beforeLibrary_[i] = StationLine{tools_.bitmap[i], tools_.libraryPath[i], tools_.pixelsPerMm[i],
+                                          tools_.bitmapUnreadable[i]};
+        tools_.setLibraryTool(row + 1, t->id, io::shippedToolLibrary().bitmapPath(*t), t->pixelsPerMm);
+      }
     }
   }
   retranslate();
@@ -382,6 +394,25 @@ void ToolSelectDialog::onJobOnlyToggled(bool on) {
   if (row < 0) return;
   const QString id = libraryCombo_->currentData().toString();
   jobOnlyPending_ = on && id.isEmpty() ? row + 1 : 0;
+  const auto i = static_cast<std::size_t>(row);
+  if (on && !id.isEmpty() && beforeLibrary_[i]) {
+    // The tool was put in tools.cfg's line a moment ago: it is this program's now, and
+    // the line is what it was (the promise on the box).
+    tools_.bitmap[i] = beforeLibrary_[i]->bitmap;
+    tools_.libraryPath[i] = beforeLibrary_[i]->libraryPath;
+    tools_.pixelsPerMm[i] = beforeLibrary_[i]->pixelsPerMm;
+    tools_.bitmapUnreadable[i] = beforeLibrary_[i]->unreadable;
+    beforeLibrary_[i].reset();
+  } else if (!on && !id.isEmpty() && !overrideOf(row + 1).isEmpty()) {
+    // Unticked: the chosen tool goes to tools.cfg after all.
+    const io::LibraryTool* t = io::shippedToolLibrary().find(id.toStdString());
+    if (t) {
+      if (!beforeLibrary_[i])
+        beforeLibrary_[i] = StationLine{tools_.bitmap[i], tools_.libraryPath[i], tools_.pixelsPerMm[i],
+                                        tools_.bitmapUnreadable[i]};
+      tools_.setLibraryTool(row + 1, t->id, io::shippedToolLibrary().bitmapPath(*t), t->pixelsPerMm);
+    }
+  }
   setOverride(row + 1, on ? id : QString());
   retranslate();
 }
@@ -398,13 +429,35 @@ void ToolSelectDialog::accept() {
       continue;
     }
     const auto image = io::readImage(path.toStdString());
-    if (!image.value)
+    if (!image.value) {
       problems << tr("Tool %1: %2").arg(t, 2, 10, QLatin1Char('0'))
                       .arg(image.diagnostics.empty() ? name
                                                      : QString::fromStdString(core::formatMessage(image.diagnostics.front(), Language::coreLang())));
+      continue;
+    }
+    // Larger than a tool can be: the setup would refuse it (F139), so the dialog does now.
+    const auto i = static_cast<std::size_t>(t - 1);
+    const double ppm = tools_.bitmap[i].rfind(io::kLibraryPrefix, 0) == 0 ? tools_.pixelsPerMm[i] : io::kSeedPixelsPerMm;
+    const int most = io::maxToolBitmapPixels(ppm);
+    if (image.value->width > most || image.value->height > most) {
+      const core::Diagnostic tooLarge{core::Severity::Error, core::codes::kToolBitmapTooLarge, {},
+                                      {QDir(configDir_).filePath(QStringLiteral("tools.cfg")).toStdString(),
+                                       QStringLiteral("%1").arg(t, 2, 10, QLatin1Char('0')).toStdString(),
+                                       name.toStdString(), std::to_string(image.value->width),
+                                       std::to_string(image.value->height), std::to_string(most),
+                                       QString::number(ppm).toStdString()}};
+      problems << QString::fromStdString(core::formatMessage(tooLarge, Language::coreLang()));
+    }
   }
   if (!problems.isEmpty()) {
     QMessageBox::warning(this, windowTitle(), problems.join(QLatin1Char('\n')));
+    return;
+  }
+  // Nothing of tools.cfg changed (only stations for this program, or nothing): the file
+  // stays as it is, byte for byte, and is not copied anywhere.
+  if (tools_.bitmap == loaded_.bitmap) {
+    savedDir_ = configDir_;
+    QDialog::accept();
     return;
   }
   QString error;

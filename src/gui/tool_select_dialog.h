@@ -7,7 +7,9 @@
 //
 // Public API
 //   ToolSelectDialog dlg(configDir, parent);   reads configDir/tools.cfg and offset.cfg
-//   dlg.exec() == Accepted  -> the dialog has written tools.cfg (see savedConfigDir())
+//   dlg.exec() == Accepted  -> the dialog has written tools.cfg (see savedConfigDir()) if one
+//                          of its lines changed; stations set "only for this program" never
+//                          touch it (they are jobOverrides())
 //   toolTable()            the edited table (names as written, folder = savedConfigDir())
 //   savedConfigDir()       where tools.cfg went: configDir, or the per-user copy
 //                          (userConfigDir()) when configDir is read-only
@@ -24,6 +26,9 @@
 //   writableConfigDir(dir, &error)   dir when tools.cfg/offset.cfg there can be written,
 //                          else the per-user copy (core::io::ensureUserConfigDir())
 #include <QDialog>
+#include <array>
+#include <optional>
+#include <string>
 #include <QList>
 #include <QString>
 
@@ -90,6 +95,15 @@ class ToolSelectDialog : public QDialog {
   QString configDir_;
   QString savedDir_;
   core::io::ToolTable tools_;
+  core::io::ToolTable loaded_;  // tools.cfg as read: OK writes it only when a line changed
+  // A station's tools.cfg line from before a library tool was chosen into it, so ticking
+  // "only for this program" afterwards gives tools.cfg its own line back.
+  struct StationLine {
+    std::string bitmap, libraryPath;
+    double pixelsPerMm = core::io::kSeedPixelsPerMm;
+    bool unreadable = false;
+  };
+  std::array<std::optional<StationLine>, core::io::kMaxStations> beforeLibrary_;
   core::io::OffsetTable offsets_;
   QList<core::Diagnostic> loadDiagnostics_;
   core::machine::ToolInference inference_;

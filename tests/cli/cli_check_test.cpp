@@ -17,6 +17,8 @@
 #include <variant>
 #include <vector>
 
+#include "klueng/core/io/image.h"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -41,6 +43,20 @@ struct CliRun {
 // Runs `klueng-cli <args>` under a neutral English locale unless `env` says otherwise.
 CliRun runCli(const std::string& args, const std::string& env = "LC_ALL= LC_MESSAGES= LANG=C") {
   const std::string command = "env " + env + " " + quote(kCli) + " " + args + " 2>/dev/null";
+  CliRun run;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (!pipe) return run;
+  char buffer[65536];
+  std::size_t n;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) run.out.append(buffer, n);
+  const int status = ::pclose(pipe);
+  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return run;
+}
+
+// As runCli, with what the program writes to stderr in `out` too.
+CliRun runCliWithErrors(const std::string& args, const std::string& env = "LC_ALL= LC_MESSAGES= LANG=C") {
+  const std::string command = "env " + env + " " + quote(kCli) + " " + args + " 2>&1";
   CliRun run;
   FILE* pipe = ::popen(command.c_str(), "r");
   if (!pipe) return run;
@@ -640,6 +656,118 @@ TEST(CliConfig, BinaryConfigFileDoesNotCrash) {
   const CliRun run = runCli("check --config " + quote(config) + " " + quote(kSamples + "/01-step-shaft.txt"));
   EXPECT_EQ(run.exitCode, 2);  // the setup has errors (issue 13: exit 2, not 1)
   EXPECT_THAT(run.out, HasSubstr("error F104"));
+}
+
+// Issue 29 item 10: a 4096 x 4096 tool bitmap was accepted by check and stopped the
+// run with alarm A311 when the tool cut; it is a setup error at its tools.cfg line
+// for check and simulate alike (exit 2), before any run.
+TEST(CliConfig, ABitmapLargerThanAToolIsASetupErrorBeforeTheRun) {
+  TempDir dir;
+  const int side = 4096;
+  klueng::core::io::RgbImage image{side, side, std::vector<std::uint32_t>(static_cast<std::size_t>(side) * side, 0xFFFFFF)};
+  for (int y = side - 20; y < side; ++y)
+    for (int x = 0; x < 20; ++x) image.pixels[static_cast<std::size_t>(y) * side + x] = 0xFF0000;
+  const std::string config = dir.config({{"resources/tools/01-outside-turning.bmp", klueng::core::io::encodeBmp(image)}});
+  const std::string expected =
+      config + "/tools.cfg:1:1: error F139: " + config +
+      "/tools.cfg: tool 01: the bitmap 'resources/tools/01-outside-turning.bmp' is 4096 x 4096 pixels; a tool "
+      "bitmap may be at most 1000 x 1000 pixels (500 mm each way at 2 pixels per mm)\n";
+  const CliRun check = runCli("check --config " + quote(config) + " " + quote(kSamples + "/01-step-shaft.txt"));
+  EXPECT_EQ(check.exitCode, 2);
+  EXPECT_THAT(check.out, HasSubstr(expected));
+  const CliRun simulate =
+      runCliWithErrors("simulate --config " + quote(config) + " " + quote(kSamples + "/01-step-shaft.txt"));
+  EXPECT_EQ(simulate.exitCode, 2);
+  EXPECT_THAT(simulate.out, HasSubstr(expected));
+  EXPECT_THAT(simulate.out, Not(HasSubstr("A311")));
+}
+
+// ------------------------------------------------------------------ the command line in Thai
+
+// Issue 29 item 10: under --lang th the usage, the command-line mistakes, the
+// class and generate errors and the write failures were English.
+TEST(CliLanguage, CommandLineMistakesAndTheUsageAreThaiUnderLangTh) {
+  // A mistake before --lang is said in the language that follows it.
+  const CliRun bogus = runCliWithErrors("check --bogus --lang th x.nc");
+  EXPECT_EQ(bogus.exitCode, 2);
+  EXPECT_EQ(bogus.out.substr(0, bogus.out.find('\n')), "klueng-cli check: ไม่รู้จักตัวเลือก '--bogus'");
+  EXPECT_THAT(bogus.out, HasSubstr("\nวิธีใช้: klueng-cli check FILE|FOLDER..."));
+  EXPECT_THAT(bogus.out, HasSubstr("หน่วยเมื่อเปิดเครื่อง ก่อน G20/G21 ใด ๆ: mm หรือ inch"));
+  EXPECT_THAT(bogus.out, Not(HasSubstr("usage:")));
+  // The same in English, word for word as before.
+  const CliRun english = runCliWithErrors("check --bogus x.nc");
+  EXPECT_EQ(english.out.substr(0, english.out.find('\n')), "klueng-cli check: unknown option '--bogus'");
+  EXPECT_THAT(english.out, HasSubstr("\nusage: klueng-cli check FILE|FOLDER..."));
+
+  const CliRun command = runCliWithErrors("--lang th");
+  EXPECT_EQ(command.exitCode, 2);
+  EXPECT_EQ(command.out.substr(0, command.out.find('\n')), "klueng-cli: ไม่รู้จักคำสั่ง '--lang'");
+  EXPECT_THAT(command.out, HasSubstr("\nวิธีใช้: klueng-cli check FILE..."));
+
+  const CliRun stock = runCliWithErrors("simulate " + quote(kSamples + "/01-step-shaft.txt") + " --stock abc --lang=th");
+  EXPECT_EQ(stock.exitCode, 2);
+  EXPECT_THAT(stock.out, HasSubstr("klueng-cli simulate: ค่า 'abc' ใช้กับ --stock ไม่ได้ ค่าที่ใช้ได้: DxL[xBORE][in] "
+                                   "โดย 0 < D, L <= 9999.999 และ 0 < BORE < D เช่น 50x100, 2.1x4in, 118x80x90\n"));
+  const CliRun units = runCliWithErrors("check --units feet --lang th x.nc");
+  EXPECT_THAT(units.out, HasSubstr("klueng-cli check: --units ต้องเป็น mm หรือ inch ไม่ใช่ 'feet'\n"));
+  const CliRun sheet = runCliWithErrors("print x.nc --pdf x.pdf --sheet poster --lang th");
+  EXPECT_EQ(sheet.exitCode, 2);
+  EXPECT_THAT(sheet.out, HasSubstr("klueng-cli print: ค่า 'poster' ใช้กับ --sheet ไม่ได้ ค่าที่ใช้ได้: program, drawing หรือ both\n"));
+  EXPECT_THAT(sheet.out, HasSubstr("วิธีใช้: klueng-cli print FILE --pdf OUT.pdf"));
+  // A Thai locale without --lang.
+  const CliRun locale = runCliWithErrors("simulate", "LC_ALL= LC_MESSAGES= LANG=th_TH.UTF-8");
+  EXPECT_EQ(locale.exitCode, 2);
+  EXPECT_THAT(locale.out, HasSubstr("วิธีใช้: klueng-cli simulate FILE"));
+}
+
+TEST(CliLanguage, ClassAndGenerateErrorsAreThaiUnderLangTh) {
+  TempDir dir;
+  const std::string missing = dir.file("no-such-folder");
+  const CliRun classRun = runCliWithErrors("class " + quote(missing) + " --reference " +
+                                           quote(kSamples + "/01-step-shaft.txt") + " --lang th");
+  EXPECT_EQ(classRun.exitCode, 2);
+  EXPECT_THAT(classRun.out, HasSubstr("klueng-cli class: " + missing + " ไม่ใช่โฟลเดอร์\n"));
+  const CliRun classUse = runCliWithErrors("class --lang th");
+  EXPECT_EQ(classUse.exitCode, 2);
+  EXPECT_THAT(classUse.out, HasSubstr("klueng-cli class: ต้องระบุโฟลเดอร์ DIR และ --reference REF.nc\nวิธีใช้: klueng-cli class DIR"));
+  const CliRun tolerance = runCliWithErrors("class x --reference y --tolerance lots");
+  EXPECT_THAT(tolerance.out, HasSubstr("klueng-cli class: bad value 'lots' for --tolerance\n"));
+
+  const std::string part = dir.file("none.json");
+  const CliRun generate = runCliWithErrors("generate " + quote(part) + " -o " + quote(dir.file("out.nc")) + " --lang th");
+  EXPECT_EQ(generate.exitCode, 2);
+  EXPECT_THAT(generate.out, HasSubstr("klueng-cli generate: อ่าน " + part + " ไม่ได้\n"));
+  const CliRun option = runCliWithErrors("generate " + quote(part) + " -o x.nc --tool-material wood --lang th");
+  EXPECT_THAT(option.out, HasSubstr("klueng-cli generate: ตัวเลือก --tool-material wood ใช้ไม่ได้\n"));
+}
+
+// A picture that cannot be written is said in the run's language, as every other output.
+TEST(CliLanguage, APictureThatCannotBeWrittenIsSaidInThai) {
+  TempDir dir;
+  const std::string png = dir.file("no-folder/part.png");
+  const CliRun run = runCliWithErrors("simulate " + quote(kSamples + "/01-step-shaft.txt") + " --png " + quote(png) +
+                                      " --lang th");
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_THAT(run.out, HasSubstr(png + ": ข้อผิดพลาด F125: " + png + ": สร้างไฟล์ไม่ได้ เพราะไม่มีโฟลเดอร์ " +
+                                 dir.file("no-folder") + " หรือไม่มีสิทธิ์เขียนลงในโฟลเดอร์นี้\n"));
+  EXPECT_THAT(run.out, Not(HasSubstr("cannot write")));
+}
+
+// The system's reason for a failed write is Thai too (F108): here a file name longer
+// than any folder allows (255 bytes), which fails for root as for anyone.
+TEST(CliLanguage, AWriteFailureGivesItsReasonInThai) {
+  TempDir dir;
+  const std::string trace = dir.file(std::string(300, 'a') + ".csv");
+  const std::string sample = quote(kSamples + "/01-step-shaft.txt");
+  const CliRun thai = runCliWithErrors("simulate " + sample + " --trace " + quote(trace) + " --lang th");
+  EXPECT_EQ(thai.exitCode, 2);
+  EXPECT_THAT(thai.out, HasSubstr(trace + ": ข้อผิดพลาด F108: " + trace +
+                                  ": บันทึกไฟล์ไม่ได้ (ชื่อไฟล์ยาวเกินไป) ถ้ามีไฟล์ชื่อนี้อยู่แล้ว ไฟล์นั้นยังคงเดิม\n"));
+  const CliRun english = runCliWithErrors("simulate " + sample + " --trace " + quote(trace));
+  EXPECT_EQ(english.exitCode, 2);
+  EXPECT_THAT(english.out, HasSubstr(trace + ": error F108: " + trace +
+                                     ": cannot write the file (File name too long); an existing file of that name is "
+                                     "left unchanged\n"));
 }
 
 }  // namespace

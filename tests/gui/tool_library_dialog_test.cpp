@@ -1,14 +1,21 @@
 // Tool Select with the turret (12 stations), the tool library and the tools
 // the program got from the library.
+#include <QCheckBox>
+#include <QComboBox>
 #include <QDir>
 #include <QFile>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QTemporaryDir>
+#include <QApplication>
+#include <QMessageBox>
 #include <QTest>
+#include <QTimer>
 
 #include "gui/offset_define_dialog.h"
 #include "gui/tool_select_dialog.h"
 #include "klueng/core/gcode/parser.h"
+#include "klueng/core/io/image.h"
 #include "klueng/core/io/tool_config.h"
 #include "klueng/core/io/tool_library.h"
 
@@ -28,6 +35,11 @@ bool makeConfigCopy(const QString& to) {
   for (const char* name : {"tools.cfg", "offset.cfg"})
     QFile(dst.filePath(QString::fromLatin1(name))).setPermissions(QFileDevice::ReadOwner | QFileDevice::WriteOwner);
   return true;
+}
+
+QByteArray readAll(const QString& path) {
+  QFile f(path);
+  return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray("(cannot read)");
 }
 
 core::machine::ToolInference inferFor(const std::string& text, const QString& configDir) {
@@ -94,6 +106,116 @@ class ToolLibraryDialogTest : public QObject {
     QCOMPARE(saved.value->libraryId(10), std::string("drill-16mm"));
     QCOMPARE(saved.value->bitmap[2], std::string("resources/tools/03-threading-60.bmp"));
     QVERIFY(original.startsWith(QByteArray("resources/tools/01-outside-turning.bmp")));
+  }
+
+  // Issue 29 item 4: the user's order - a library tool chosen in the box first, then
+  // "Only for this program" ticked - keeps tools.cfg byte for byte; the station is
+  // this program's, and tools.cfg's own line is shown again.
+  void tickingOnlyForThisProgramAfterChoosingKeepsToolsCfg() {
+    QTemporaryDir dir;
+    QVERIFY(makeConfigCopy(dir.path()));
+    const QString cfg = dir.filePath(QStringLiteral("tools.cfg"));
+    const QByteArray original = readAll(cfg);
+    ToolSelectDialog d(dir.path());
+    auto* combo = d.findChild<QComboBox*>(QStringLiteral("toolLibrary"));
+    auto* jobOnly = d.findChild<QCheckBox*>(QStringLiteral("toolJobOnly"));
+    auto* name = d.findChild<QLineEdit*>(QStringLiteral("toolBitmapName"));
+    QVERIFY(combo && jobOnly && name);
+    d.setCurrentTool(1);
+    QVERIFY(!jobOnly->isChecked());
+    const int index = combo->findData(QStringLiteral("cnmg-80-r04"));
+    QVERIFY(index > 0);
+    combo->setCurrentIndex(index);
+    emit combo->activated(index);  // as a choice in the drop-down list
+    QCOMPARE(name->text(), QStringLiteral("library:cnmg-80-r04"));  // going to tools.cfg, as shown
+    jobOnly->click();
+    QVERIFY(jobOnly->isChecked());
+    QCOMPARE(name->text(), QStringLiteral("resources/tools/01-outside-turning.bmp"));
+    QCOMPARE(combo->currentData().toString(), QStringLiteral("cnmg-80-r04"));
+    QVERIFY2(d.choiceText().contains(QStringLiteral("tools.cfg has: resources/tools/01-outside-turning.bmp")),
+             qPrintable(d.choiceText()));
+    d.accept();
+    QCOMPARE(d.result(), int(QDialog::Accepted));
+    QCOMPARE(d.savedConfigDir(), dir.path());
+    QCOMPARE(readAll(cfg), original);
+    QCOMPARE(d.jobOverrides().size(), std::size_t(1));
+    QCOMPARE(d.jobOverrides()[0].station, 1);
+    QCOMPARE(d.jobOverrides()[0].libraryId, std::string("cnmg-80-r04"));
+  }
+
+  // Unticked again, the chosen tool goes to tools.cfg after all.
+  void untickingSendsTheLibraryToolToToolsCfg() {
+    QTemporaryDir dir;
+    QVERIFY(makeConfigCopy(dir.path()));
+    ToolSelectDialog d(dir.path());
+    auto* combo = d.findChild<QComboBox*>(QStringLiteral("toolLibrary"));
+    auto* jobOnly = d.findChild<QCheckBox*>(QStringLiteral("toolJobOnly"));
+    QVERIFY(combo && jobOnly);
+    d.setCurrentTool(4);
+    const int index = combo->findData(QStringLiteral("cnmg-80-r04"));
+    combo->setCurrentIndex(index);
+    emit combo->activated(index);
+    jobOnly->click();
+    jobOnly->click();
+    QVERIFY(!jobOnly->isChecked());
+    d.accept();
+    QCOMPARE(d.result(), int(QDialog::Accepted));
+    QVERIFY(d.jobOverrides().empty());
+    const auto saved = core::io::readToolTable(dir.filePath(QStringLiteral("tools.cfg")).toStdString());
+    QVERIFY(saved.ok());
+    QCOMPARE(saved.value->libraryId(4), std::string("cnmg-80-r04"));
+    QCOMPARE(saved.value->bitmap[0], std::string("resources/tools/01-outside-turning.bmp"));
+  }
+
+  // OK with only a station for this program: tools.cfg is not rewritten at all (its
+  // bytes stay as the user wrote them, Windows line ends included).
+  void okWithOnlyThisProgramsStationsDoesNotRewriteToolsCfg() {
+    QTemporaryDir dir;
+    QVERIFY(makeConfigCopy(dir.path()));
+    const QString cfg = dir.filePath(QStringLiteral("tools.cfg"));
+    {
+      QByteArray text = readAll(cfg);
+      text.replace("\n", "\r\n");  // as saved by a Windows editor; the formatter writes \n
+      QFile f(cfg);
+      QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+      QCOMPARE(f.write(text), text.size());
+    }
+    const QByteArray original = readAll(cfg);
+    ToolSelectDialog d(dir.path());
+    d.setLibraryTool(2, QStringLiteral("parting-3mm"), true);
+    d.accept();
+    QCOMPARE(d.result(), int(QDialog::Accepted));
+    QCOMPARE(readAll(cfg), original);
+    QCOMPARE(d.jobOverrides().size(), std::size_t(1));
+  }
+
+  // Issue 29 item 10: a bitmap larger than a tool can be is refused here, as the setup refuses it (F139).
+  void aBitmapLargerThanAToolIsRefused() {
+    QTemporaryDir dir;
+    QVERIFY(makeConfigCopy(dir.path()));
+    const QByteArray original = readAll(dir.filePath(QStringLiteral("tools.cfg")));
+    core::io::RgbImage image{1001, 40, std::vector<std::uint32_t>(1001 * 40, 0xFFFFFF)};
+    image.pixels[0] = 0xFF0000;
+    {
+      QFile f(dir.filePath(QStringLiteral("wide.bmp")));
+      QVERIFY(f.open(QIODevice::WriteOnly));
+      const std::string bytes = core::io::encodeBmp(image);
+      f.write(bytes.data(), static_cast<qint64>(bytes.size()));
+    }
+    ToolSelectDialog d(dir.path());
+    d.setBitmapName(2, QStringLiteral("wide.bmp"));
+    QString message;
+    QTimer::singleShot(0, [&message] {
+      if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+        message = box->text();
+        box->accept();
+      }
+    });
+    d.accept();
+    QVERIFY(d.result() != QDialog::Accepted);
+    QCOMPARE(message, dir.filePath(QStringLiteral("tools.cfg")) + QStringLiteral(": tool 02: the bitmap 'wide.bmp' is 1001 x 40 pixels; a tool bitmap may be "
+                                     "at most 1000 x 1000 pixels (500 mm each way at 2 pixels per mm)"));
+    QCOMPARE(readAll(dir.filePath(QStringLiteral("tools.cfg"))), original);
   }
 
   void offsetDefineEditsSixtyFourRows() {

@@ -184,37 +184,22 @@ class Profile {
   double unit_ = 1.0;
 };
 
+// A known disagreement between Klueng and the real control, written down as a
+// decision: the job's test checks that the output still shows it (`needle`) and
+// is then skipped with `reason`; once Klueng changes and the needle is gone the
+// test fails, saying to remove the limit from the job so that it runs.
+struct KnownLimit {
+  std::string needle;
+  std::string reason;
+};
+
 struct Job {
   std::string file;     // under tests/real-style/programs
   std::string dialect;  // haas | fanuc
   std::string options;  // --stock ... [--units inch] [--tool N=ID]
   bool inch = false;
-  // A known disagreement between Klueng and the real control: when the output
-  // holds `knownNeedle`, the test is skipped with `knownReason` (see the report
-  // in README.md); once Klueng is fixed the needle disappears and the test runs.
-  std::string knownNeedle = {};
-  std::string knownReason = {};
+  std::optional<KnownLimit> known = {};
 };
-
-// Options of issue 8 that may not be on main yet: the test waits for them.
-struct Missing {
-  const char* needle;
-  const char* reason;
-};
-constexpr Missing kMissing[] = {
-    {"unknown option '--stock'", "klueng-cli has no --stock yet (issue 8 scope 6)"},
-    {"unknown option '--units'", "klueng-cli has no --units yet (issue 8 scope 6)"},
-    {"unknown option '--tool'", "klueng-cli has no --tool yet (tool library, issue 8 scope 8)"},
-};
-
-// Why the run cannot be judged yet, or "" when it can.
-std::string skipReason(const Job& job, const std::string& output) {
-  for (const Missing& m : kMissing)
-    if (output.find(m.needle) != std::string::npos) return m.reason;
-  if (!job.knownNeedle.empty() && output.find(job.knownNeedle) != std::string::npos)
-    return "known disagreement with the real control: " + job.knownReason;
-  return "";
-}
 
 struct Result {
   Output check, simulate;
@@ -239,29 +224,20 @@ Result cut(const Job& job) {
 
 // Both commands must succeed without an error (warnings, such as rounded CAM
 // decimals or a machine-specific M code, are allowed), and a part must exist.
+// A job with a known limit instead checks that the limit is still there.
 #define RUN_CLEAN(job, r)                                                                           \
   const Result r = cut(job);                                                                        \
-  if (const std::string why = skipReason(job, r.check.text + r.simulate.text); !why.empty())       \
-    GTEST_SKIP() << (job).file << ": " << why;                                                      \
+  if ((job).known) {                                                                                \
+    ASSERT_NE((r.check.text + r.simulate.text).find((job).known->needle), std::string::npos)        \
+        << (job).file << ": the known limit is lifted (\"" << (job).known->needle                   \
+        << "\" is gone): remove it from the job so that the test runs\n"                             \
+        << r.check.text << r.simulate.text;                                                         \
+    GTEST_SKIP() << (job).file << ": known disagreement with the real control: " << (job).known->reason; \
+  }                                                                                                 \
   ASSERT_EQ(r.check.exitCode, 0) << "check " << (job).file << ":\n" << r.check.text;               \
   ASSERT_EQ(errorLines(r.check.text), "") << r.check.text;                                          \
   ASSERT_EQ(r.simulate.exitCode, 0) << "simulate " << (job).file << ":\n" << r.simulate.text;       \
   ASSERT_EQ(errorLines(r.simulate.text), "") << r.simulate.text;                                    \
-  ASSERT_FALSE(r.part.empty())
-
-// As RUN_CLEAN, but the run may stop on the job's known disagreement (an alarm
-// after the part is finished): the part is measured as it was when it stopped.
-#define RUN_UNTIL_KNOWN(job, r)                                                                     \
-  const Result r = cut(job);                                                                        \
-  for (const Missing& m : kMissing)                                                                 \
-    if ((r.check.text + r.simulate.text).find(m.needle) != std::string::npos) GTEST_SKIP() << m.reason; \
-  ASSERT_EQ(r.check.exitCode, 0) << "check " << (job).file << ":\n" << r.check.text;               \
-  ASSERT_EQ(errorLines(r.check.text), "") << r.check.text;                                          \
-  if (r.simulate.exitCode != 0) {                                                                   \
-    ASSERT_NE(r.simulate.text.find((job).knownNeedle), std::string::npos) << r.simulate.text;       \
-    ASSERT_EQ(errorLines(r.simulate.text).find('\n'), errorLines(r.simulate.text).size() - 1)       \
-        << "only the known alarm:\n" << r.simulate.text;                                           \
-  }                                                                                                 \
   ASSERT_FALSE(r.part.empty())
 
 // ============================================================================
@@ -451,11 +427,9 @@ TEST(RealStyleHaas, TaperPin_CamDecimals_CutOff) {
 
 // O20108: an old shop program without nose compensation (G40 throughout) and
 // the Haas park `G00 G53 X0 Z-2.` at the end.
-const Job kGuidePin{"haas-08-no-comp-chamfer.nc", "haas", "--units inch --stock 1.5x3in", true,
-                "haas-08-no-comp-chamfer.nc:24:1: alarm A301",
-                "G53 is read as work coordinates, so the park `G00 G53 X0 Z-2.` (Haas: X home, Z 2 in "
-                "from home) rapids through the part (Haas lathe manual, G53 Machine Coordinate "
-                "Selection: machine zero is the home position)"};
+// The park rapided through the part (A301) while G53 was read as work
+// coordinates; fixed on main in 2268fb4 (README.md, "What the programs found").
+const Job kGuidePin{"haas-08-no-comp-chamfer.nc", "haas", "--units inch --stock 1.5x3in", true};
 
 // The whole program, park included.
 TEST(RealStyleHaas, GuidePin_ParkG53G00) {
@@ -464,11 +438,10 @@ TEST(RealStyleHaas, GuidePin_ParkG53G00) {
   EXPECT_NEAR(r.part.d(-0.5), 1.0000, kIn);
 }
 
-// The part: it is finished before the park, so it is measured even if the
-// park stops the run (the disagreement above, fixed on main in 2268fb4).
+// The part, finished before the park.
 TEST(RealStyleHaas, GuidePin_NoNoseComp) {
   const Job& job = kGuidePin;
-  RUN_UNTIL_KNOWN(job, r);
+  RUN_CLEAN(job, r);
   const Profile& p = r.part;
   // Tip 3, R = 0.8 mm = 0.0314961 in, G40: the imaginary tip follows the path.
   // Cylinders and faces are touched by the imaginary tip's two tangents: exact.
@@ -490,11 +463,9 @@ TEST(RealStyleHaas, GuidePin_NoNoseComp) {
 
 // O20109: G76 to a shoulder with M23 (thread chamfer out), a wide G75 groove
 // stepped by K, G53 safe lines.
-const Job kPumpShaft{"haas-09-thread-1-8-chamfer.nc", "haas", "--units inch --stock 1.25x3in", true,
-                    "haas-09-thread-1-8-chamfer.nc:41:1: alarm A301",
-                    "G53 is read as work coordinates: `G53 G00 X0` / `G53 G00 Z0` (Haas: X and Z home) "
-                    "park the tool on the centre of the face, and the thread tool called there starts "
-                    "inside the stock (Haas lathe manual, G53 Machine Coordinate Selection)"};
+// The thread tool parked by `G53 G00 Z0` started inside the stock (A301) while G53
+// was read as work coordinates; fixed on main in 2268fb4.
+const Job kPumpShaft{"haas-09-thread-1-8-chamfer.nc", "haas", "--units inch --stock 1.25x3in", true};
 
 // The whole program: the thread is cut after the second G53 park.
 TEST(RealStyleHaas, PumpShaft_1_8_M23_Thread) {
@@ -504,11 +475,10 @@ TEST(RealStyleHaas, PumpShaft_1_8_M23_Thread) {
   EXPECT_NEAR(r.part.minD(-0.8, -0.2), 0.8416, kIn);
 }
 
-// The OD and the groove, finished before the park (measured even if the park
-// stops the run, as it did before 2268fb4).
+// The OD and the groove, finished before the park.
 TEST(RealStyleHaas, PumpShaft_WideGroove) {
   const Job& job = kPumpShaft;
-  RUN_UNTIL_KNOWN(job, r);
+  RUN_CLEAN(job, r);
   const Profile& p = r.part;
   EXPECT_NEAR(p.d(-1.4), 1.2000, kIn);  // X1.2 from Z-1.2 to Z-2.3, right of the groove
   // G75 X0.9 Z-2. from Z-1.718, K0.1: plunges at -1.718, -1.818, -1.918, -2.0;

@@ -4,7 +4,14 @@
 // reports it use the same name, so a code cannot drift from its text (issue 12).
 // The code strings themselves are stable: tests and users match on them.
 
+#include <cstddef>
+
 namespace klueng::core::codes {
+
+// A setup file (machine.cfg, tools.cfg, offset.cfg, macro_variables.cfg, a
+// tool library) reports at most this many problems, then F129: a hostile file
+// only repeats itself, as a program's diagnostics end with E199.
+inline constexpr std::size_t kMaxConfigDiagnostics = 100;
 
 // File formats (io; texts in messages_io.cpp)
 inline constexpr const char* kStockSizeNotPositive = "E213";
@@ -15,7 +22,7 @@ inline constexpr const char* kBinaryFile = "F104";
 inline constexpr const char* kEmptyFile = "F105";
 inline constexpr const char* kLineTooLong = "F106";
 inline constexpr const char* kLinesIgnored = "F107";
-inline constexpr const char* kCannotWriteFile = "F108";
+inline constexpr const char* kCannotWriteFile = "F108";  // {0} file, {1} why (English), {2} why (Thai)
 inline constexpr const char* kNoSpaceToWrite = "F109";
 inline constexpr const char* kHeaderTooShort = "F110";
 inline constexpr const char* kDiameterUnitDigit = "F111";
@@ -32,11 +39,17 @@ inline constexpr const char* kBitmapMissing = "F121";
 inline constexpr const char* kNotBitmapName = "F122";
 inline constexpr const char* kNotInToolLibrary = "F123";
 inline constexpr const char* kBitmapIsFolder = "F124";
+// A tool bitmap that is a loop of links, a device, a pipe or a socket.
+inline constexpr const char* kBitmapNotAFile = "F138";  // {0} file, {1} tool, {2} name, {3} what (en), {4} what (th)
+// A tool bitmap larger than a tool can be (500 mm each way at its resolution).
+inline constexpr const char* kToolBitmapTooLarge = "F139";  // {0} file, {1} tool, {2} name, {3} w, {4} h, {5} limit, {6} px/mm
 // Writing files (io/file_write.h), codes left free between the readers'.
 inline constexpr const char* kFolderNotWritable = "F125";
 inline constexpr const char* kOutputIsInput = "F126";
 inline constexpr const char* kOutputIsFolder = "F127";
 inline constexpr const char* kStockSizeTooLarge = "F128";  // {0} file {1} size as written {2} the largest
+// A setup file with more problems than kMaxConfigDiagnostics: the rest is not read.
+inline constexpr const char* kTooManyConfigProblems = "F129";  // {0} file, {1} the limit
 inline constexpr const char* kOffsetTableShort = "F130";
 inline constexpr const char* kOffsetEmpty = "F131";
 inline constexpr const char* kOffsetFieldCount = "F132";
@@ -227,5 +240,37 @@ inline constexpr const char* kGuessHitsChuck = "W325";
 inline constexpr const char* kGuessEdgeBrushesStock = "W326";  // a guessed tool's edge, < 0.2 mm, in a rapid
 inline constexpr const char* kPartCheckStopped = "I324";     // {0} the alarm's code
 inline constexpr const char* kPartCheckNothingCut = "I325";
+
+// klueng-cli's own texts (messages_cli.cpp): never diagnostics of a file, so
+// the code is not printed; the catalog only gives them their two languages.
+inline constexpr const char* kCliUsage = "C001";
+inline constexpr const char* kCliCheckUsage = "C002";
+inline constexpr const char* kCliSimulateUsage = "C003";
+inline constexpr const char* kCliClassUsage = "C004";
+inline constexpr const char* kCliPrintUsage = "C005";
+inline constexpr const char* kCliGenerateUsage = "C006";
+inline constexpr const char* kCliUnknownCommand = "C101";    // {0} command
+inline constexpr const char* kCliUnknownOption = "C102";     // {0} option
+inline constexpr const char* kCliNeedsValue = "C103";        // {0} option
+inline constexpr const char* kCliMustBe = "C104";            // {0} option {1} allowed {2} value
+inline constexpr const char* kCliBadValue = "C105";          // {0} value {1} option {2} allowed
+inline constexpr const char* kCliBadValueAnyOf = "C106";     // {0} value {1} option
+inline constexpr const char* kCliNoFile = "C107";
+inline constexpr const char* kCliOneFile = "C108";           // {0} first {1} second
+inline constexpr const char* kCliBadOption = "C109";         // {0} option {1} value
+inline constexpr const char* kCliCannotRead = "C110";        // {0} file
+inline constexpr const char* kCliNotAFolder = "C112";        // {0} path
+inline constexpr const char* kCliReferenceFails = "C113";    // {0} file {1} its first error or alarm
+inline constexpr const char* kCliClassNeeds = "C114";
+inline constexpr const char* kCliClassTotals = "C115";       // {0} programs {1} pass {2} fail
+inline constexpr const char* kCliPrintNeeds = "C116";
+inline constexpr const char* kCliGenerateNeeds = "C117";
+inline constexpr const char* kCliAllowedLang = "C201";
+inline constexpr const char* kCliAllowedDialect = "C202";
+inline constexpr const char* kCliAllowedStock = "C203";
+inline constexpr const char* kCliAllowedUnits = "C204";
+inline constexpr const char* kCliAllowedDecimalPoint = "C205";
+inline constexpr const char* kCliAllowedSheet = "C206";
+inline constexpr const char* kCliAllowedMillimetres = "C207";
 
 }  // namespace klueng::core::codes

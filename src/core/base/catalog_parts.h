@@ -11,4 +11,5 @@ std::span<const MessageText> machineMessages();
 std::span<const MessageText> compMessages();
 std::span<const MessageText> cutMessages();
 std::span<const MessageText> designMessages();
+std::span<const MessageText> cliMessages();
 }  // namespace klueng::core::catalog

@@ -15,7 +15,7 @@ std::span<const MessageText> allMessages() {
   static const std::vector<MessageText> all = [] {
     std::vector<MessageText> v;
     for (auto part : {catalog::gcodeMessages(), catalog::ioMessages(), catalog::machineMessages(),
-                      catalog::compMessages(), catalog::cutMessages(), catalog::designMessages()})
+                      catalog::compMessages(), catalog::cutMessages(), catalog::designMessages(), catalog::cliMessages()})
       v.insert(v.end(), part.begin(), part.end());
     return v;
   }();

@@ -29,7 +29,7 @@ constexpr MessageText kMessages[] = {
      "{0}: บรรทัดที่อยู่หลังบรรทัดที่ {1} จะไม่ถูกนำมาใช้"},
     // Writing (io/file_write.h): an existing file of that name always keeps its bytes.
     {codes::kCannotWriteFile, "{0}: cannot write the file ({1}); an existing file of that name is left unchanged",
-     "{0}: บันทึกไฟล์ไม่ได้ ({1}) ถ้ามีไฟล์ชื่อนี้อยู่แล้ว ไฟล์นั้นยังคงเดิม"},
+     "{0}: บันทึกไฟล์ไม่ได้ ({2}) ถ้ามีไฟล์ชื่อนี้อยู่แล้ว ไฟล์นั้นยังคงเดิม"},
     {codes::kNoSpaceToWrite,
      "{0}: cannot write the file: there is no space for it (the disk is full, or the file is over the size "
      "allowed); an existing file of that name is left unchanged",
@@ -74,6 +74,15 @@ constexpr MessageText kMessages[] = {
      "{0}: มีดตัด {1}: ไม่มีมีดตัด '{2}' ในคลังมีดตัด (ที่มี: {3})"},
     {codes::kBitmapIsFolder, "{0}: tool {1}: '{2}' is a folder, not a bitmap file",
      "{0}: มีดตัด {1}: '{2}' เป็นโฟลเดอร์ ไม่ใช่ไฟล์ภาพ"},
+    {codes::kBitmapNotAFile, "{0}: tool {1}: '{2}' is {3}, not a bitmap file",
+     "{0}: มีดตัด {1}: '{2}' เป็น{4} ไม่ใช่ไฟล์ภาพ"},
+    {codes::kToolBitmapTooLarge,
+     "{0}: tool {1}: the bitmap '{2}' is {3} x {4} pixels; a tool bitmap may be at most {5} x {5} pixels "
+     "(500 mm each way at {6} pixels per mm)",
+     "{0}: มีดตัด {1}: ภาพ '{2}' มีขนาด {3} x {4} พิกเซล ภาพมีดตัดต้องไม่เกิน {5} x {5} พิกเซล "
+     "(ด้านละ 500 มม. ที่ {6} พิกเซลต่อมม.)"},
+    {codes::kTooManyConfigProblems, "{0}: more than {1} problems; the rest of the file is not read",
+     "{0}: พบปัญหามากกว่า {1} รายการ จึงไม่อ่านส่วนที่เหลือของไฟล์"},
 
     // Writing files (io/file_write.h).
     {codes::kFolderNotWritable, "{0}: cannot create the file: the folder {1} does not exist or cannot be written to",

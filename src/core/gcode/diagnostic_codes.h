@@ -41,6 +41,7 @@ inline constexpr const char* kExpectedAssignment = "E131";    // {0}=text
 inline constexpr const char* kCornerNotOnG01 = "E132";        // {0}=word
 inline constexpr const char* kChamferAndCorner = "E133";      // {0}=first {1}=second
 inline constexpr const char* kExponentNumber = "E134";        // {0}=the word before {1}=the E word
+inline constexpr const char* kExponentInMacro = "E139";       // {0}=the number as written (1e300)
 inline constexpr const char* kBlanksInWord = "E135";          // {0}=the word without blanks (classic)
 inline constexpr const char* kLetterOForZero = "E136";        // {0}=word as written {1}=the word meant
 inline constexpr const char* kCommaForPoint = "E137";         // {0}=word as written {1}=the word meant
@@ -88,6 +89,8 @@ inline constexpr const char* kSubprogramFileErrors = "E412";  // {0}=file {1}=li
 inline constexpr const char* kProfileBlockMissing = "E413";   // {0}=cycle and word {1}=N number
 inline constexpr const char* kProfileEndsBeforeStart = "E415";  // {0}=cycle and Q word {1}=N of Q {2}=N of P
 inline constexpr const char* kProfileStartsWithoutMotion = "E414";  // {0}=cycle and P word {1}=N number
+// The called program's file name is in the folder, but as a folder (or a pipe, a device): Program::notProgramFiles.
+inline constexpr const char* kProgramFileNotAFile = "E416";  // {0}=word {1}=O number {2}=name {3}=what (en) {4}=what (th)
 
 // W1xx warnings
 inline constexpr const char* kMachineSpecificM = "W101";    // {0}=word
@@ -134,6 +137,7 @@ inline constexpr const char* kAll[] = {
     kCornerNotOnG01,
     kChamferAndCorner,
     kExponentNumber,
+    kExponentInMacro,
     kBlanksInWord,
     kLetterOForZero,
     kCommaForPoint,
@@ -153,6 +157,7 @@ inline constexpr const char* kAll[] = {
     kProfileBlockMissing,
     kProfileEndsBeforeStart,
     kProfileStartsWithoutMotion,
+    kProgramFileNotAFile,
     kOutOfRange,
     kTooManyDecimals,
     kNotPositive,

@@ -153,7 +153,7 @@ class FlowChecker {
       const CallTarget t = callTarget(p->value, l, false);
       if (const ProgramSection* callee = index_.program(t.number))
         calls_.push_back({section, static_cast<int>(callee - index_.sections().data()), g, index});
-      else emit(codes::kProgramNotFound, p->range, {g->text() + " " + p->text(), std::to_string(t.number)});
+      else programNotFound(p->range, g->text() + " " + p->text(), t.number);
     }
   }
 
@@ -194,13 +194,25 @@ class FlowChecker {
     emit(codes::kProfileStartsWithoutMotion, at, {g->text() + " " + p->text(), std::to_string(p->code())});
   }
 
+  // E404, or E416 when the folder has the program's file name as no file (a folder...).
+  void programNotFound(const SourceRange& range, const std::string& call, int number) {
+    for (const Program::NotAFile& n : program_.notProgramFiles) {
+      if (n.number != number) continue;
+      emit(codes::kProgramFileNotAFile, range,
+           {call, std::to_string(number), n.name, n.folder ? "a folder" : "a pipe or a device",
+            n.folder ? "โฟลเดอร์" : "ไปป์หรืออุปกรณ์"});
+      return;
+    }
+    emit(codes::kProgramNotFound, range, {call, std::to_string(number)});
+  }
+
   // M98 / M97 / M99 with a constant P (every M of the block is looked at only then).
   void checkSubprogramCalls(const Block& b, const Word* p, std::optional<double> l, int section, int index) {
     if (const Word* m98 = codeWord(b, 'M', 98)) {
       const CallTarget t = callTarget(p->value, l, profile_.flow.packedRepeats);
       if (const ProgramSection* callee = index_.program(t.number))
         calls_.push_back({section, static_cast<int>(callee - index_.sections().data()), m98, index});
-      else emit(codes::kProgramNotFound, p->range, {"M98 " + p->text(), std::to_string(t.number)});
+      else programNotFound(p->range, "M98 " + p->text(), t.number);
     }
     if (const Word* m97 = codeWord(b, 'M', 97); m97 && findCode('M', 97, profile_.dialect)) {
       const CallTarget t = callTarget(p->value, l, false);

@@ -194,6 +194,15 @@ class Reader {
       while (i_ < s_.size() && std::isdigit(static_cast<unsigned char>(s_[i_]))) { ++i_; digits = true; }
     }
     if (!digits) return fail(codes::kMacroExpectedValue, {std::string(s_.substr(start, 1))}, start);
+    // 1e300, 2.5E-3: no control reads an exponent (the E would be read as a word of its own).
+    if (i_ < s_.size() && (s_[i_] == 'e' || s_[i_] == 'E')) {
+      std::size_t k = i_ + 1;
+      if (k < s_.size() && (s_[k] == '+' || s_[k] == '-')) ++k;
+      if (k < s_.size() && std::isdigit(static_cast<unsigned char>(s_[k]))) {
+        while (k < s_.size() && std::isdigit(static_cast<unsigned char>(s_[k]))) ++k;
+        return fail(codes::kExponentInMacro, {std::string(s_.substr(start, k - start))}, start);
+      }
+    }
     double v = 0.0;
     const auto r = std::from_chars(s_.data() + start, s_.data() + i_, v);
     if (r.ec != std::errc()) v = 1e308;

@@ -27,6 +27,22 @@ Diagnostic writeError(const char* code, std::vector<std::string> args) {
   return makeDiagnostic(Severity::Error, code, 0, 0, 0, std::move(args));
 }
 
+// The system's reason in Thai for the errors a write commonly meets; others keep
+// the system's own (English) words.
+std::string thaiReason(int err) {
+  switch (err) {
+    case EACCES:
+    case EPERM: return "ไม่มีสิทธิ์เขียน";
+    case EROFS: return "ดิสก์เป็นแบบอ่านอย่างเดียว";
+    case ENAMETOOLONG: return "ชื่อไฟล์ยาวเกินไป";
+    case EIO: return "อุปกรณ์จัดเก็บข้อมูลขัดข้อง (I/O error)";
+    case EBUSY:
+    case ETXTBSY: return "ไฟล์กำลังถูกใช้งานอยู่";
+    case EISDIR: return "เป็นโฟลเดอร์";
+    default: return std::strerror(err);
+  }
+}
+
 // The diagnostic for a failed write of `path` with errno `err`.
 Diagnostic failure(const std::string& path, int err) {
   switch (err) {
@@ -37,7 +53,7 @@ Diagnostic failure(const std::string& path, int err) {
 #endif
       return writeError(codes::kNoSpaceToWrite, {path});
     default:
-      return writeError(codes::kCannotWriteFile, {path, std::strerror(err)});
+      return writeError(codes::kCannotWriteFile, {path, std::strerror(err), thaiReason(err)});
   }
 }
 
@@ -131,13 +147,13 @@ std::optional<Diagnostic> writeFileAtomic(const std::string& path, std::string_v
     out.close();
     if (!out) {
       fs::remove(temp, ec);
-      return writeError(codes::kCannotWriteFile, {path, "write failed"});
+      return writeError(codes::kCannotWriteFile, {path, "write failed", "เขียนไม่สำเร็จ"});
     }
   }
   fs::rename(temp, target, ec);
   if (ec) {
     fs::remove(temp, ec);
-    return writeError(codes::kCannotWriteFile, {path, ec.message()});
+    return writeError(codes::kCannotWriteFile, {path, ec.message(), ec.message()});
   }
   return std::nullopt;
 #endif

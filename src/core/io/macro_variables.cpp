@@ -33,6 +33,7 @@ ReadResult<MacroVariables> parseMacroVariables(std::string_view text, const std:
     std::string_view line = text.substr(pos, nl == std::string_view::npos ? std::string_view::npos : nl - pos);
     pos = nl == std::string_view::npos ? text.size() + 1 : nl + 1;
     ++lineNumber;
+    if (detail::configProblemsFull(result.diagnostics, fileName, lineNumber)) break;
     if (const std::size_t c = line.find(';'); c != std::string_view::npos) line = line.substr(0, c);
     const std::string_view body = trim(line);
     if (body.empty()) continue;

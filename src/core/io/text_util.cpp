@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -17,6 +18,14 @@ namespace klueng::core::io::detail {
 Diagnostic makeDiagnostic(Severity severity, std::string code, int line, int column, int length,
                           std::vector<std::string> args) {
   return Diagnostic{severity, std::move(code), SourceRange{line, column, length}, std::move(args)};
+}
+
+bool configProblemsFull(std::vector<Diagnostic>& diags, const std::string& fileName, int line) {
+  if (diags.size() < codes::kMaxConfigDiagnostics) return false;
+  const bool errors = std::any_of(diags.begin(), diags.end(), [](const Diagnostic& d) { return isError(d.severity); });
+  diags.push_back(makeDiagnostic(errors ? Severity::Error : Severity::Warning, codes::kTooManyConfigProblems, line,
+                                 line > 0 ? 1 : 0, 0, {fileName, std::to_string(codes::kMaxConfigDiagnostics)}));
+  return true;
 }
 
 std::optional<std::string> readFileBytes(const std::string& path, std::vector<Diagnostic>& diags,

@@ -49,6 +49,11 @@ std::optional<double> parseNumber(std::string_view text);
 // Shortest text that parseNumber reads back as the same double.
 std::string formatNumber(double value);
 
+// A setup file's readers stop at codes::kMaxConfigDiagnostics problems: true
+// (and F129 at `line`, an error when any problem so far is one) once `diags`
+// holds that many; the caller stops reading.
+bool configProblemsFull(std::vector<Diagnostic>& diags, const std::string& fileName, int line);
+
 // Whitespace-separated fields of a line.
 std::vector<std::string_view> splitFields(std::string_view line);
 

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <system_error>
 
 #include "io/text_util.h"
 #include "klueng/core/io/text_encoding.h"
@@ -169,12 +170,35 @@ ReadResult<ToolTable> readToolTable(const std::string& path, int stations, const
   for (int tool = 1; tool <= kMaxStations; ++tool) {
     const std::string file = result.value->bitmapPath(tool);
     std::error_code ec;
-    if (file.empty() || fs::is_regular_file(file, ec)) continue;
+    if (file.empty()) continue;
+    const fs::file_status status = fs::status(file, ec);
+    if (fs::is_regular_file(status)) continue;
     const std::string& name = result.value->bitmap[static_cast<std::size_t>(tool - 1)];
-    // A folder where a bitmap should be is not "missing": say what it is.
-    const bool folder = fs::is_directory(file, ec);
-    result.diagnostics.push_back(makeDiagnostic(Severity::Error, folder ? codes::kBitmapIsFolder : codes::kBitmapMissing, tool, 1, utf8Length(name),
-                                                {path, twoDigits(tool), name}));
+    const int length = utf8Length(name);
+    // Only what is not there is "missing": anything else says what it is.
+    const auto notAFile = [&](const std::string& en, const std::string& th) {
+      result.diagnostics.push_back(makeDiagnostic(Severity::Error, codes::kBitmapNotAFile, tool, 1, length,
+                                                  {path, twoDigits(tool), name, en, th}));
+    };
+    if (fs::is_directory(status))
+      result.diagnostics.push_back(
+          makeDiagnostic(Severity::Error, codes::kBitmapIsFolder, tool, 1, length, {path, twoDigits(tool), name}));
+    else if (ec == std::errc::too_many_symbolic_link_levels)
+      notAFile("a link that leads back to itself (a loop of links)", "ลิงก์ที่วนกลับมาหาตัวเอง (ลิงก์วนซ้ำ)");
+    else if (fs::is_character_file(status) || fs::is_block_file(status))
+      notAFile("a device", "อุปกรณ์ (device)");
+    else if (fs::is_fifo(status))
+      notAFile("a pipe (FIFO)", "ไปป์ (FIFO)");
+    else if (fs::is_socket(status))
+      notAFile("a socket", "ซ็อกเก็ต (socket)");
+    else if (std::error_code lec; fs::is_symlink(fs::symlink_status(file, lec))) {
+      const std::string target = fs::read_symlink(file, lec).string();
+      notAFile(fmt::format("a link to '{}', which does not exist", target),
+               fmt::format("ลิงก์ไปยัง '{}' ซึ่งไม่มีอยู่", target));
+    }
+    else
+      result.diagnostics.push_back(
+          makeDiagnostic(Severity::Error, codes::kBitmapMissing, tool, 1, length, {path, twoDigits(tool), name}));
   }
   std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(),
                    [](const Diagnostic& a, const Diagnostic& b) { return a.range.line < b.range.line; });
@@ -379,6 +403,7 @@ ReadResult<MachineConfig> parseMachineConfig(std::string_view text, const std::s
   std::map<std::string, int> lineOfKey;
   for (std::size_t i = 0; i < lines.size(); ++i) {
     const int lineNumber = static_cast<int>(i) + 1;
+    if (detail::configProblemsFull(diags, fileName, lineNumber)) break;
     const std::string_view line = lines[i];
     std::string_view content = line.substr(0, std::min(line.find('#'), line.size()));
     content = detail::trim(content);

@@ -128,6 +128,7 @@ ReadResult<ToolLibrary> parseToolLibrary(std::string_view text, const std::strin
   std::map<std::string, int> lineOfId;
   for (std::size_t i = 0; i < lines.size(); ++i) {
     const int lineNo = static_cast<int>(i) + 1;
+    if (detail::configProblemsFull(diags, fileName, lineNo)) break;
     const std::string_view line = lines[i];
     const std::string_view content = detail::trim(line);
     if (content.empty() || content.front() == '#') continue;

@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <filesystem>
 
+#include <fmt/format.h>
+
+#include "klueng/core/io/text_encoding.h"
 #include "klueng/core/machine/job.h"
 #include "klueng/core/diagnostic_codes.h"
 
@@ -58,6 +61,17 @@ LoadedSetup loadMachineSetup(const std::string& explicitDir, bool readBitmaps) {
     auto image = io::readImage(path);
     for (const Diagnostic& d : image.diagnostics) loaded.diagnostics.push_back({path, d});
     const auto i = static_cast<std::size_t>(t - 1);
+    // Larger than a tool can be: a setup error now, at its tools.cfg line, not an alarm when the tool cuts.
+    const double ppm = loaded.setup.tools.pixelsPerMmOf(t);
+    const int most = io::maxToolBitmapPixels(ppm);
+    if (image.ok() && (image.value->width > most || image.value->height > most)) {
+      const std::string& name = loaded.setup.tools.bitmap[i];
+      loaded.diagnostics.push_back(
+          {toolsPath, Diagnostic{Severity::Error, codes::kToolBitmapTooLarge, {t, 1, io::utf8Length(name)},
+                                 {toolsPath, fmt::format("{:02}", t), name, std::to_string(image.value->width),
+                                  std::to_string(image.value->height), std::to_string(most), fmt::format("{:g}", ppm)}}});
+      image.value.reset();
+    }
     loaded.setup.tools.bitmapUnreadable[i] = !image.ok();
     if (image.ok() && readBitmaps) loaded.bitmaps[i] = std::move(*image.value);
   }

@@ -40,18 +40,27 @@ std::vector<std::string> candidateNames(int number) {
   return names;
 }
 
-// The folder's regular files by lower-case name (so O1000.NC and o1000.nc both match).
-std::vector<std::pair<std::string, std::string>> folderFiles(const std::string& folder) {
-  std::vector<std::pair<std::string, std::string>> files;
+struct FolderEntry {
+  std::string lowerName;
+  std::string path;
+  bool regular = false;  // a file that can be read as a program (else a folder, a pipe, a device...)
+  bool folder = false;
+};
+
+// The folder's entries by lower-case name (so O1000.NC and o1000.nc both match).
+std::vector<FolderEntry> folderFiles(const std::string& folder) {
+  std::vector<FolderEntry> files;
   std::error_code ec;
   fs::directory_iterator it(folder.empty() ? fs::path(".") : fs::path(folder), ec);
   for (; !ec && it != fs::directory_iterator(); it.increment(ec)) {
     std::error_code fec;
-    if (!it->is_regular_file(fec)) continue;
-    files.emplace_back(lower(it->path().filename().string()), it->path().string());
+    const bool regular = it->is_regular_file(fec);
+    files.push_back({lower(it->path().filename().string()), it->path().string(), regular,
+                     !regular && it->is_directory(fec)});
     if (files.size() > 100000) break;
   }
-  std::sort(files.begin(), files.end());
+  std::sort(files.begin(), files.end(),
+            [](const FolderEntry& a, const FolderEntry& b) { return a.lowerName < b.lowerName; });
   return files;
 }
 
@@ -69,7 +78,7 @@ void shiftExpressions(gcode::Block& b, int offset) {
 std::vector<Diagnostic> attachSubprogramFiles(gcode::Program& program, const std::string& folder,
                                               gcode::Dialect dialect) {
   std::vector<Diagnostic> diagnostics;
-  std::vector<std::pair<std::string, std::string>> files;  // read once, when a call needs it
+  std::vector<FolderEntry> files;  // read once, when a call needs it
   bool listed = false;
   std::set<std::string> attached;
   for (int round = 0; round < kMaxSubprogramFiles; ++round) {
@@ -88,13 +97,22 @@ std::vector<Diagnostic> attachSubprogramFiles(gcode::Program& program, const std
     for (int number : missing) {
       if (static_cast<int>(program.files.size()) > kMaxSubprogramFiles) break;
       std::string path;
+      const FolderEntry* notAFile = nullptr;
       for (const std::string& name : candidateNames(number)) {
-        const auto it = std::lower_bound(files.begin(), files.end(), std::make_pair(name, std::string()));
-        if (it != files.end() && it->first == name) {
-          path = it->second;
+        const auto it = std::lower_bound(files.begin(), files.end(), name,
+                                         [](const FolderEntry& e, const std::string& n) { return e.lowerName < n; });
+        if (it == files.end() || it->lowerName != name) continue;
+        if (it->regular) {
+          path = it->path;
           break;
         }
+        if (!notAFile) notAFile = &*it;  // said only if no name of it is a file
       }
+      if (path.empty() && notAFile &&
+          std::none_of(program.notProgramFiles.begin(), program.notProgramFiles.end(),
+                       [number](const gcode::Program::NotAFile& n) { return n.number == number; }))
+        program.notProgramFiles.push_back(
+            {number, fs::path(notAFile->path).filename().string(), notAFile->folder});
       if (path.empty() || attached.count(path)) continue;
       attached.insert(path);
       const int fileIndex = static_cast<int>(program.files.size());

@@ -306,6 +306,25 @@ TEST(Checker, ANumberWithAnExponentIsNamedAsOne) {
   EXPECT_EQ(lone[0].code, "E201");
 }
 
+// Issue 29 item 10: #1=1e300 said "E300 cannot share a block with a macro statement".
+TEST(Checker, ANumberWithAnExponentInAMacroExpressionIsNamedAsOne) {
+  const auto diags = checkText("#1=1e300\n#2=[2.5E-3*2]\nG00 X[1E+3] Z2.\n#3=2.5\n", Dialect::Fanuc);
+  ASSERT_EQ(diags.size(), 3u) << listing(diags);
+  EXPECT_EQ(diags[0].code, "E139");
+  EXPECT_EQ(diags[0].range.line, 1);
+  EXPECT_EQ(diags[0].range.column, 4);
+  EXPECT_EQ(formatMessage(diags[0], Lang::En),
+            "1e300: a number in a macro expression has no exponent (E): write the value of 1e300 in digits with a "
+            "decimal point");
+  EXPECT_EQ(formatMessage(diags[0], Lang::Th),
+            "1e300: ตัวเลขในนิพจน์มาโครเขียนแบบยกกำลัง (E) ไม่ได้: ให้เขียนค่าของ 1e300 เป็นตัวเลขพร้อมจุดทศนิยม");
+  EXPECT_EQ(diags[1].code, "E139");
+  EXPECT_EQ(diags[1].args, std::vector<std::string>{"2.5E-3"});
+  EXPECT_EQ(diags[2].code, "E139");
+  EXPECT_EQ(diags[2].range.line, 3);
+  EXPECT_EQ(diags[2].args, std::vector<std::string>{"1E+3"});
+}
+
 TEST(Checker, MessagesNameTheWordAndSayHowToFixIt) {
   const auto diags = checkText("G01 X30. U2.", Dialect::Fanuc);
   ASSERT_EQ(diags.size(), 1u);

@@ -1,7 +1,9 @@
 // machine.cfg keys added for issue 8: spindle_bore and turret_stations.
 #include <gtest/gtest.h>
 
+#include "klueng/core/io/macro_variables.h"
 #include "klueng/core/io/tool_config.h"
+#include "klueng/core/io/tool_library.h"
 #include "klueng/core/messages.h"
 
 namespace klueng::core::io {
@@ -116,6 +118,43 @@ TEST(MachineConfigRanges, ImplausibleValuesAreRefused) {
   EXPECT_EQ(s.diagnostics[0].range.line, 3);
   EXPECT_EQ(formatMessage(s.diagnostics[0], Lang::En),
             "machine.cfg: the tool start start_z = 300 is outside the travel limits -200 to 250");
+}
+
+// Issue 29 item 10: a setup file's problems are capped as a program's are (E199):
+// 100 of them, then F129 at the line where reading stopped.
+TEST(ConfigProblemCap, AHostileMachineCfgReportsAHundredProblemsThenStops) {
+  std::string text;
+  for (int i = 0; i < 100000; ++i) text += "bogus_" + std::to_string(i) + " = 1\n";
+  const auto r = parseMachineConfig(text, "machine.cfg");
+  ASSERT_EQ(r.diagnostics.size(), 101u);
+  EXPECT_EQ(r.diagnostics[99].code, "F141");
+  EXPECT_EQ(r.diagnostics[99].range.line, 100);
+  const Diagnostic& last = r.diagnostics.back();
+  EXPECT_EQ(last.code, "F129");
+  EXPECT_EQ(last.severity, Severity::Error);
+  EXPECT_EQ(last.range.line, 101);
+  EXPECT_EQ(formatMessage(last, Lang::En), "machine.cfg: more than 100 problems; the rest of the file is not read");
+  EXPECT_EQ(formatMessage(last, Lang::Th), "machine.cfg: พบปัญหามากกว่า 100 รายการ จึงไม่อ่านส่วนที่เหลือของไฟล์");
+  // A file with 100 problems is reported in full.
+  text.clear();
+  for (int i = 0; i < 100; ++i) text += "bogus_" + std::to_string(i) + " = 1\n";
+  const auto hundred = parseMachineConfig(text, "machine.cfg");
+  EXPECT_EQ(hundred.diagnostics.size(), 100u);
+  EXPECT_EQ(hundred.diagnostics.back().code, "F141");
+}
+
+TEST(ConfigProblemCap, MacroVariablesAndTheToolLibraryStopToo) {
+  std::string junk;
+  for (int i = 0; i < 50000; ++i) junk += "junk " + std::to_string(i) + "\n";
+  const auto vars = parseMacroVariables(junk, "macro_variables.cfg");
+  ASSERT_EQ(vars.diagnostics.size(), 101u);
+  EXPECT_EQ(vars.diagnostics.back().code, "F129");
+  EXPECT_EQ(vars.diagnostics.back().severity, Severity::Warning);  // the lines are warnings: so is the cap
+  EXPECT_EQ(vars.diagnostics.back().range.line, 101);
+  const auto library = parseToolLibrary(junk, "/lib", "library.cfg");
+  ASSERT_EQ(library.diagnostics.size(), 101u);
+  EXPECT_EQ(library.diagnostics.back().code, "F129");
+  EXPECT_EQ(library.diagnostics.back().severity, Severity::Error);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "klueng/core/io/tool_config.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 #include <fstream>
 
@@ -432,6 +433,36 @@ TEST(ToolTable, ABitmapPathThatIsAFolderSaysSo) {
   ASSERT_EQ(r.diagnostics.size(), 1u);
   EXPECT_EQ(r.diagnostics[0].code, "F124");
   EXPECT_EQ(r.diagnostics[0].range.line, 1);
+}
+
+// Issue 29 item 10: a link loop, a device, a pipe and a link to nothing were all
+// "does not exist"; each says what it is.
+TEST(ToolTable, ABitmapThatIsNoFileSaysWhatItIs) {
+  namespace fs = std::filesystem;
+  TempDir dir;
+  fs::create_symlink("loop.bmp", dir.path() / "loop.bmp");
+  fs::create_symlink("/dev/null", dir.path() / "device.bmp");
+  ASSERT_EQ(::mkfifo(dir.file("pipe.bmp").c_str(), 0644), 0);
+  fs::create_symlink("gone.bmp", dir.path() / "dangling.bmp");
+  writeFile(dir.file("tools.cfg"), "loop.bmp\ndevice.bmp\npipe.bmp\ndangling.bmp\nmissing.bmp\n\n\n\n");
+  const std::string cfg = dir.file("tools.cfg");
+  const auto r = readToolTable(cfg);
+  ASSERT_EQ(r.diagnostics.size(), 5u);
+  const std::vector<std::pair<std::string, std::string>> expected = {
+      {"F138", cfg + ": tool 01: 'loop.bmp' is a link that leads back to itself (a loop of links), not a bitmap file"},
+      {"F138", cfg + ": tool 02: 'device.bmp' is a device, not a bitmap file"},
+      {"F138", cfg + ": tool 03: 'pipe.bmp' is a pipe (FIFO), not a bitmap file"},
+      {"F138", cfg + ": tool 04: 'dangling.bmp' is a link to 'gone.bmp', which does not exist, not a bitmap file"},
+      {"F121", cfg + ": tool 05: the bitmap 'missing.bmp' does not exist"},
+  };
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(r.diagnostics[i].code, expected[i].first) << i;
+    EXPECT_EQ(r.diagnostics[i].range.line, static_cast<int>(i) + 1);
+    EXPECT_EQ(formatMessage(r.diagnostics[i], Lang::En), expected[i].second);
+  }
+  EXPECT_EQ(formatMessage(r.diagnostics[0], Lang::Th),
+            cfg + ": มีดตัด 01: 'loop.bmp' เป็นลิงก์ที่วนกลับมาหาตัวเอง (ลิงก์วนซ้ำ) ไม่ใช่ไฟล์ภาพ");
+  EXPECT_EQ(formatMessage(r.diagnostics[2], Lang::Th), cfg + ": มีดตัด 03: 'pipe.bmp' เป็นไปป์ (FIFO) ไม่ใช่ไฟล์ภาพ");
 }
 
 }  // namespace

@@ -306,10 +306,12 @@ TEST(HaasG76, SingleEdgeInfeedMovesAlongTheFlankByDepthTimesTanHalfA) {
 }
 
 TEST(HaasG76, M24TurnsTheChamferOff) {
-  // Only if the code table knows M24 (Haas machine M codes); then the last pass
-  // threads straight to Z-1. and rapids out.
+  // M24 is a Haas code (thread chamfer off, the M23/M24 group): the last pass
+  // threads straight to Z-1. and rapids out. The table must know it: a code
+  // missing from it is a failure here, never a skip.
   const gcode::CodeInfo* m24 = gcode::findCode('M', 24, Dialect::Haas);
-  if (!m24) GTEST_SKIP() << "M24 is not in the Haas code table (yet)";
+  ASSERT_NE(m24, nullptr) << "M24 is missing from the Haas code table";
+  EXPECT_EQ(m24->group, gcode::ModalGroup::MThreadChamfer);
   const CycleRun r("G97 S500 M03 M24\nG00 X1.1 Z0.2\nG76 X0.9 Z-1. K0.05 D0.02 F0.1\n", Dialect::Haas);
   ASSERT_FALSE(r.timeline.alarm);
   const auto p = r.path(3, kInch);

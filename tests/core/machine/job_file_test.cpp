@@ -2,6 +2,7 @@
 // simulate see, read and parsed once.
 #include "klueng/core/machine/job_file.h"
 #include "klueng/core/machine/job_check.h"
+#include "klueng/core/messages.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -103,6 +104,31 @@ TEST(LoadJobFile, APlainProgramWithASubprogramFileIsParsedOnceEach) {
   // A boring bar for the empty station 9, from its comment.
   ASSERT_FALSE(job.toolNotes.empty());
   EXPECT_NE(job.setup.tools.libraryId(9).find("bor"), std::string::npos) << job.setup.tools.libraryId(9);
+}
+
+// Issue 29 item 10: the called program's file name is a folder beside the program:
+// the call says so (E416), not "neither in this file nor in its folder" (E404); a
+// real file under another of its names is still taken.
+TEST(LoadJobFile, ASubprogramFileThatIsAFolderIsSaidToBeOne) {
+  Folder folder;
+  const std::string main = folder.write("MAIN.nc", "O0100\nG21\nM98 P1000\nM98 P2000\nM30\n");
+  fs::create_directory(fs::path(main).parent_path() / "O1000.nc");
+  fs::create_directory(fs::path(main).parent_path() / "O2000.nc");
+  folder.write("2000.nc", "O2000\nG00 X10.\nM99\n");
+  const JobFile job = loadJobFile(main, shipped().setup, request(), io::shippedToolLibrary());
+  ASSERT_TRUE(job.program);
+  std::vector<const Diagnostic*> errors;
+  for (const Diagnostic& d : job.diagnostics)
+    if (isError(d.severity)) errors.push_back(&d);
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0]->code, "E416");
+  EXPECT_EQ(errors[0]->range.line, 3);
+  EXPECT_EQ(errors[0]->range.column, 5);
+  EXPECT_EQ(formatMessage(*errors[0], Lang::En),
+            "M98 P1000: program O1000 is not in this file, and 'O1000.nc' in its folder is a folder, not a program file");
+  EXPECT_EQ(formatMessage(*errors[0], Lang::Th),
+            "M98 P1000: ไม่มีโปรแกรม O1000 ในไฟล์นี้ และ 'O1000.nc' ในโฟลเดอร์เดียวกันเป็นโฟลเดอร์ ไม่ใช่ไฟล์โปรแกรม");
+  EXPECT_EQ(job.program->files.size(), 2u);  // 2000.nc
 }
 
 TEST(LoadJobFile, TheStockGivenForTheRunWinsOverTheHeader) {

@@ -9,7 +9,9 @@
 #include <filesystem>
 #include <fstream>
 
+#include "klueng/core/io/image.h"
 #include "klueng/core/machine/job.h"
+#include "klueng/core/messages.h"
 
 namespace klueng::core::machine {
 namespace {
@@ -97,6 +99,44 @@ TEST(LoadMachineSetup, MachineCfgComesFirstAndBoundsTheTurret) {
   const LoadedSetup loaded = loadMachineSetup(folder.dir());
   EXPECT_EQ(loaded.setup.machine.turretStations, 12);
   EXPECT_EQ(loaded.setup.tools.stations, 12);
+}
+
+// A white bitmap with a red cutting edge in its lower left corner.
+std::string toolBmp(int width, int height) {
+  io::RgbImage image{width, height, std::vector<std::uint32_t>(static_cast<std::size_t>(width) * height, 0xFFFFFF)};
+  for (int y = height - 8; y < height; ++y)
+    for (int x = 0; x < 8; ++x) image.pixels[static_cast<std::size_t>(y) * width + x] = 0xFF0000;
+  return io::encodeBmp(image);
+}
+
+// Issue 29 item 10: a bitmap larger than a tool can be (500 mm at 2 px/mm = 1000
+// pixels) is a setup error at its tools.cfg line when the setup is read, not an
+// alarm when the tool first cuts.
+TEST(LoadMachineSetup, ABitmapLargerThanAToolIsASetupErrorAtItsLine) {
+  SetupFolder folder;
+  folder.write("tools.cfg", "wide.bmp\nedge.bmp\n\n\n\n\n\n\n");
+  folder.copyShipped("offset.cfg");
+  folder.write("wide.bmp", toolBmp(1001, 40));
+  folder.write("edge.bmp", toolBmp(1000, 40));  // the largest a tool may be
+  const LoadedSetup loaded = loadMachineSetup(folder.dir(), true);
+  ASSERT_EQ(loaded.diagnostics.size(), 1u);
+  const SetupDiagnostic& d = loaded.diagnostics.front();
+  const std::string tools = (fs::path(folder.dir()) / "tools.cfg").string();
+  EXPECT_EQ(d.file, tools);
+  EXPECT_EQ(d.diagnostic.code, "F139");
+  EXPECT_EQ(d.diagnostic.range.line, 1);
+  EXPECT_EQ(d.diagnostic.range.column, 1);
+  EXPECT_EQ(formatMessage(d.diagnostic, Lang::En),
+            tools + ": tool 01: the bitmap 'wide.bmp' is 1001 x 40 pixels; a tool bitmap may be at most 1000 x 1000 "
+                    "pixels (500 mm each way at 2 pixels per mm)");
+  EXPECT_EQ(formatMessage(d.diagnostic, Lang::Th),
+            tools + ": มีดตัด 01: ภาพ 'wide.bmp' มีขนาด 1001 x 40 พิกเซล ภาพมีดตัดต้องไม่เกิน 1000 x 1000 พิกเซล "
+                    "(ด้านละ 500 มม. ที่ 2 พิกเซลต่อมม.)");
+  EXPECT_TRUE(loaded.hasErrors());
+  EXPECT_TRUE(loaded.setup.tools.bitmapUnreadable[0]);
+  EXPECT_FALSE(loaded.bitmaps[0]);
+  EXPECT_FALSE(loaded.setup.tools.bitmapUnreadable[1]);
+  EXPECT_EQ(loaded.toolsWithBitmap(), (std::optional<std::vector<int>>{{2}}));
 }
 
 }  // namespace

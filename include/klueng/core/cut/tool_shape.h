@@ -20,15 +20,14 @@
 #include "klueng/core/geometry.h"
 #include "klueng/core/io/image.h"
 #include "klueng/core/io/result.h"
+#include "klueng/core/io/tool_config.h"
 
 namespace klueng::core::cut {
 
-constexpr double kPixelsPerMm = 2.0;   // the seed's resolution (SPEC 11)
-constexpr int kMaxToolPixels = 1000;  // a tool bitmap is at most 500 mm each way (at 2 px/mm)
+constexpr double kPixelsPerMm = io::kSeedPixelsPerMm;  // the seed's resolution (SPEC 11)
+constexpr int kMaxToolPixels = io::kMaxToolBitmapPixels;  // a tool bitmap is at most 500 mm each way (at 2 px/mm)
 // The pixel limit at a bitmap's own resolution: 500 mm each way.
-constexpr int maxToolPixels(double pixelsPerMm) {
-  return static_cast<int>(kMaxToolPixels * pixelsPerMm / kPixelsPerMm);
-}
+constexpr int maxToolPixels(double pixelsPerMm) { return io::maxToolBitmapPixels(pixelsPerMm); }
 
 struct Box {
   double z0 = 0.0, z1 = 0.0;  // z0 <= z1

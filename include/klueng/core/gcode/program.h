@@ -162,6 +162,15 @@ struct Program {
   // Subprogram files appended after the program's own blocks (io/subprogram_files.h):
   // files[0] is the program itself (empty name); files[i] the path of file i.
   std::vector<std::string> files{std::string()};
+  // Called programs whose only file of that name in the folder is no file (a
+  // folder, a pipe, a device), so that the call says so (E416) instead of "not
+  // in its folder" (E404).
+  struct NotAFile {
+    int number = 0;     // the O number called
+    std::string name;   // the entry's name in the folder
+    bool folder = false;
+  };
+  std::vector<NotAFile> notProgramFiles;
 };
 
 // The O number whose program contains block `index` (the nearest O word at or

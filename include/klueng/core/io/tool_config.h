@@ -22,6 +22,13 @@ constexpr int kOffsetCount = 64;
 constexpr int kSeedOffsetLines = 16;
 constexpr double kSeedPixelsPerMm = 2.0;  // SPEC 11: a plain bitmap is drawn at 2 px/mm
 constexpr std::string_view kLibraryPrefix = "library:";
+// A tool is at most 500 mm each way: 1000 pixels at the seed's 2 px/mm, and in
+// proportion at a library bitmap's own resolution. A larger bitmap is a setup
+// error (F139, machine/setup_files.h), not a tool.
+constexpr int kMaxToolBitmapPixels = 1000;
+constexpr int maxToolBitmapPixels(double pixelsPerMm) {
+  return static_cast<int>(kMaxToolBitmapPixels * pixelsPerMm / kSeedPixelsPerMm);
+}
 
 struct ToolTable {
   // Line n of tools.cfg for station n ([0] = station 01), as written: a bitmap
