@@ -736,7 +736,7 @@ TEST(CliLanguage, ClassAndGenerateErrorsAreThaiUnderLangTh) {
   const std::string part = dir.file("none.json");
   const CliRun generate = runCliWithErrors("generate " + quote(part) + " -o " + quote(dir.file("out.nc")) + " --lang th");
   EXPECT_EQ(generate.exitCode, 2);
-  EXPECT_THAT(generate.out, HasSubstr("klueng-cli generate: อ่าน " + part + " ไม่ได้\n"));
+  EXPECT_THAT(generate.out, HasSubstr("F101: " + part + ": ไม่พบไฟล์\n"));  // read with the part-file limit
   const CliRun option = runCliWithErrors("generate " + quote(part) + " -o x.nc --tool-material wood --lang th");
   EXPECT_THAT(option.out, HasSubstr("klueng-cli generate: ตัวเลือก --tool-material wood ใช้ไม่ได้\n"));
 }

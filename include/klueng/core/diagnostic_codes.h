@@ -258,7 +258,6 @@ inline constexpr const char* kCliBadValueAnyOf = "C106";     // {0} value {1} op
 inline constexpr const char* kCliNoFile = "C107";
 inline constexpr const char* kCliOneFile = "C108";           // {0} first {1} second
 inline constexpr const char* kCliBadOption = "C109";         // {0} option {1} value
-inline constexpr const char* kCliCannotRead = "C110";        // {0} file
 inline constexpr const char* kCliNotAFolder = "C112";        // {0} path
 inline constexpr const char* kCliReferenceFails = "C113";    // {0} file {1} its first error or alarm
 inline constexpr const char* kCliClassNeeds = "C114";

@@ -145,7 +145,6 @@ constexpr MessageText kMessages[] = {
     {codes::kCliNoFile, "no FILE given", "ไม่ได้ระบุ FILE"},
     {codes::kCliOneFile, "only one FILE (got '{0}' and '{1}')", "ระบุ FILE ได้ไฟล์เดียว (ได้รับ '{0}' และ '{1}')"},
     {codes::kCliBadOption, "bad option {0} {1}", "ตัวเลือก {0} {1} ใช้ไม่ได้"},
-    {codes::kCliCannotRead, "cannot read {0}", "อ่าน {0} ไม่ได้"},
     {codes::kCliNotAFolder, "{0} is not a folder", "{0} ไม่ใช่โฟลเดอร์"},
     {codes::kCliReferenceFails, "the reference {0} does not run to its end ({1})",
      "โปรแกรมต้นแบบ {0} ทำงานไม่ถึงจุดจบ ({1})"},
