@@ -183,7 +183,7 @@ int runCheck(const std::vector<std::string>& args) {
   const LoadedConfig config = loadConfig(o.configDir);
   std::string error;
   std::optional<machine::JobFileRequest> request =
-      jobRequest(config, o.dialect, o.powerOnUnits, o.stock, o.tools, error);
+      jobRequest(config, o.dialect, o.powerOnUnits, o.stock, o.tools, error, o.lang);
   if (!request) return usageError(o.lang, error);
   request->calculatorInput = o.calculatorInput;
 

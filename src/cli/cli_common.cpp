@@ -225,7 +225,8 @@ int stationLimit(const LoadedConfig& config, gcode::Dialect dialect) {
 std::optional<machine::JobFileRequest> jobRequest(const LoadedConfig& config, gcode::Dialect dialect,
                                                   std::optional<gcode::InputUnits> powerOnUnits,
                                                   const std::optional<io::JobHeader>& stock,
-                                                  const std::vector<std::string>& tools, std::string& error) {
+                                                  const std::vector<std::string>& tools, std::string& error,
+                                                  Lang lang) {
   machine::JobFileRequest request;
   request.run.dialect = dialect;
   request.run.powerOnUnits = powerOnUnits;
@@ -235,7 +236,7 @@ std::optional<machine::JobFileRequest> jobRequest(const LoadedConfig& config, gc
   request.toolTable = !config.unreadable;
   for (const std::string& t : tools) {
     machine::StationOverride o;
-    if (!machine::parseStationOverride(t, request.stations, io::shippedToolLibrary(), o, error)) return std::nullopt;
+    if (!machine::parseStationOverride(t, request.stations, io::shippedToolLibrary(), o, error, lang)) return std::nullopt;
     request.overrides.push_back(o);
   }
   return request;

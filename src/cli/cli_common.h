@@ -102,7 +102,8 @@ int stationLimit(const LoadedConfig& config, core::gcode::Dialect dialect);
 std::optional<core::machine::JobFileRequest> jobRequest(const LoadedConfig& config, core::gcode::Dialect dialect,
                                                         std::optional<core::gcode::InputUnits> powerOnUnits,
                                                         const std::optional<core::io::JobHeader>& stock,
-                                                        const std::vector<std::string>& tools, std::string& error);
+                                                        const std::vector<std::string>& tools, std::string& error,
+                                                        core::Lang lang = core::Lang::En);
 
 
 }  // namespace klueng::cli

@@ -119,7 +119,7 @@ int runPrint(const std::vector<std::string>& args) {
   if (config.unreadable || config.hasErrors()) return 2;
   std::string error;
   std::optional<machine::JobFileRequest> request =
-      jobRequest(config, o.dialect, o.powerOnUnits, o.stock, o.tools, error);
+      jobRequest(config, o.dialect, o.powerOnUnits, o.stock, o.tools, error, o.lang);
   if (!request) {
     std::fprintf(stderr, "klueng-cli print: %s\n", error.c_str());
     return 2;

@@ -209,7 +209,7 @@ int runSimulate(const std::vector<std::string>& args) {
   if (config.unreadable || config.hasErrors()) return 2;  // the setup, not the program, is wrong
   std::string error;
   std::optional<machine::JobFileRequest> request =
-      jobRequest(config, o.dialect, o.powerOnUnits, o.stock, o.tools, error);
+      jobRequest(config, o.dialect, o.powerOnUnits, o.stock, o.tools, error, o.lang);
   if (!request) {
     std::fprintf(stderr, "klueng-cli simulate: %s\n", error.c_str());
     return 2;

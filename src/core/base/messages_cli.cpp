@@ -153,6 +153,13 @@ constexpr MessageText kMessages[] = {
     {codes::kCliPrintNeeds, "needs a FILE and --pdf OUT.pdf", "ต้องระบุ FILE และ --pdf OUT.pdf"},
     {codes::kCliGenerateNeeds, "needs a PART.json or PART.dxf and -o OUT.nc",
      "ต้องระบุ PART.json หรือ PART.dxf และ -o OUT.nc"},
+    {codes::kCliToolForm,
+     "--tool wants N=ID (a station and a library tool, e.g. 3=threading-60), not '{0}'; library tools: {1}",
+     "--tool ต้องเป็น N=ID (หมายเลขป้อมมีดและมีดในคลังมีด เช่น 3=threading-60) ไม่ใช่ '{0}' มีดในคลังมีด: {1}"},
+    {codes::kCliToolStation, "--tool {0}: station {1} is not on the turret (1 to {2})",
+     "--tool {0}: ป้อมมีดไม่มีตำแหน่ง {1} (มี 1 ถึง {2})"},
+    {codes::kCliToolUnknown, "--tool {0}: no library tool '{1}'; library tools: {2}",
+     "--tool {0}: ไม่มีมีด '{1}' ในคลังมีด มีดในคลังมีด: {2}"},
 
     // What the options allow, for the texts above.
     {codes::kCliAllowedLang, "en or th", "en หรือ th"},

@@ -11,6 +11,7 @@
 
 #include "machine/tool_evidence.h"
 #include "klueng/core/diagnostic_codes.h"
+#include "klueng/core/messages.h"
 
 namespace klueng::core::machine {
 
@@ -296,7 +297,7 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
 }
 
 bool parseStationOverride(std::string_view text, int stations, const io::ToolLibrary& library, StationOverride& out,
-                          std::string& error) {
+                          std::string& error, Lang lang) {
   const std::size_t eq = text.find('=');
   const std::string_view number = eq == std::string_view::npos ? std::string_view() : text.substr(0, eq);
   const std::string_view id = eq == std::string_view::npos ? std::string_view() : text.substr(eq + 1);
@@ -306,19 +307,15 @@ bool parseStationOverride(std::string_view text, int stations, const io::ToolLib
     if (c < '0' || c > '9') digits = false;
     else station = station * 10 + (c - '0');
   }
-  if (eq == std::string_view::npos || !digits || id.empty()) {
-    error = fmt::format("--tool wants N=ID (a station and a library tool, e.g. 3=threading-60), not '{}'; "
-                        "library tools: {}", text, library.idList());
+  const auto say = [&](const char* code, std::vector<std::string> args) {
+    error = formatMessage(Diagnostic{Severity::Error, code, {}, std::move(args)}, lang);
     return false;
-  }
-  if (station < 1 || station > stations) {
-    error = fmt::format("--tool {}: station {} is not on the turret (1 to {})", text, station, stations);
-    return false;
-  }
-  if (!library.find(id)) {
-    error = fmt::format("--tool {}: no library tool '{}'; library tools: {}", text, id, library.idList());
-    return false;
-  }
+  };
+  if (eq == std::string_view::npos || !digits || id.empty())
+    return say(codes::kCliToolForm, {std::string(text), library.idList()});
+  if (station < 1 || station > stations)
+    return say(codes::kCliToolStation, {std::string(text), std::to_string(station), std::to_string(stations)});
+  if (!library.find(id)) return say(codes::kCliToolUnknown, {std::string(text), std::string(id), library.idList()});
   out.station = station;
   out.libraryId = std::string(id);
   return true;

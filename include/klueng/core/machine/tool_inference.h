@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "klueng/core/diagnostic.h"
+#include "klueng/core/messages.h"
 #include "klueng/core/gcode/program.h"
 #include "klueng/core/io/tool_library.h"
 #include "klueng/core/machine/interpreter.h"
@@ -89,8 +90,8 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
                          const InferenceContext& context = {});
 
 // `N=ID` (the CLI's --tool value): station 1..stations and a library id.
-// Returns false and fills error with a message in English when it is not.
+// Returns false and fills error with a message in `lang` when it is not.
 bool parseStationOverride(std::string_view text, int stations, const io::ToolLibrary& library,
-                          StationOverride& out, std::string& error);
+                          StationOverride& out, std::string& error, Lang lang = Lang::En);
 
 }  // namespace klueng::core::machine
