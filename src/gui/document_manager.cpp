@@ -17,6 +17,7 @@
 #include "klueng/core/io/file_read.h"
 #include "klueng/core/io/file_write.h"
 #include "klueng/core/io/program_file.h"
+#include "klueng/core/io/tool_config.h"
 #include "klueng/core/messages.h"
 
 namespace klueng::gui {
@@ -142,7 +143,10 @@ void DocumentManager::newFromProgram(const QString& fileText) {
 
 void DocumentManager::open() {
   if (!maybeSave()) return;
+  // The folder last used; the first time (or when it is gone) the samples, so a
+  // new user finds something to open (issue 28 item 8).
   QString dir = settings_->lastDirectory();
+  if (dir.isEmpty() || !QFileInfo(dir).isDir()) dir = QString::fromStdString(core::io::samplesDir());
   if (dir.isEmpty()) dir = QDir::homePath();
   const QString path = QFileDialog::getOpenFileName(
       window_, tr("Open program"), dir, tr("Lathe programs (*.txt *.nc *.tap *.cnc *.gc);;All files (*)"));
