@@ -185,6 +185,7 @@ class MainWindow : public QMainWindow {
   BannerKind bannerKind_ = BannerKind::Setup;
   std::function<QString()> bannerMaker_;  // the banner's text in the current language
   bool bannerError_ = false;
+  bool partDockGrown_ = false;  // the Part dock made tall enough for its list once this session
   class ExplainBar* explainBar_ = nullptr;
   DialectOfferBar* dialectOffer_ = nullptr;
   class RecoveryBar* recoveryBar_ = nullptr;
