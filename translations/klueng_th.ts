@@ -1061,6 +1061,24 @@
     </message>
 </context>
 <context>
+    <name>klueng::gui::FirstStepsBar</name>
+    <message>
+        <location filename="../src/gui/first_steps_bar.cpp" line="67" />
+        <source>&lt;b&gt;What to do first:&lt;/b&gt; 1. open a sample program (sample 01 turns a step shaft); 2. press &lt;b&gt;Go&lt;/b&gt; (F5) and watch the tool cut the bar; 3. click a line of the program to read what it does.</source>
+        <translation>&lt;b&gt;เริ่มต้นอย่างไร:&lt;/b&gt; 1. เปิดโปรแกรมตัวอย่าง (ตัวอย่าง 01 กลึงเพลาขั้นบันได) 2. กด &lt;b&gt;เริ่มทำงาน&lt;/b&gt; (F5) แล้วดูมีดกลึงชิ้นงาน 3. คลิกบรรทัดของโปรแกรมเพื่ออ่านว่าบรรทัดนั้นทำอะไร</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/first_steps_bar.cpp" line="70" />
+        <source>Open sample 01</source>
+        <translation>เปิดตัวอย่าง 01</translation>
+    </message>
+    <message>
+        <location filename="../src/gui/first_steps_bar.cpp" line="71" />
+        <source>All samples…</source>
+        <translation>ตัวอย่างทั้งหมด…</translation>
+    </message>
+</context>
+<context>
     <name>klueng::gui::DialectOfferBar</name>
     <message>
         <location filename="../src/gui/dialect_offer_bar.cpp" line="85" />

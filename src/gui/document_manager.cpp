@@ -14,8 +14,10 @@
 #include "gui/code_editor.h"
 #include "gui/language.h"
 #include "gui/settings.h"
+#include "klueng/core/io/file_read.h"
 #include "klueng/core/io/file_write.h"
 #include "klueng/core/io/program_file.h"
+#include "klueng/core/io/tool_config.h"
 #include "klueng/core/messages.h"
 
 namespace klueng::gui {
@@ -48,7 +50,8 @@ DocumentManager::DocumentManager(QWidget* window, CodeEditor* editor, Settings* 
 }
 
 DocumentManager::~DocumentManager() {
-  loadWatcher_.waitForFinished();
+  // Never wait on a load here: one that is still reading works on its own
+  // copies and its result goes nowhere. Quitting is never held up by a file.
   discardRecovery();  // an orderly end (a crash never gets here): nothing to recover
 }
 
@@ -140,7 +143,10 @@ void DocumentManager::newFromProgram(const QString& fileText) {
 
 void DocumentManager::open() {
   if (!maybeSave()) return;
+  // The folder last used; the first time (or when it is gone) the samples, so a
+  // new user finds something to open (issue 28 item 8).
   QString dir = settings_->lastDirectory();
+  if (dir.isEmpty() || !QFileInfo(dir).isDir()) dir = QString::fromStdString(core::io::samplesDir());
   if (dir.isEmpty()) dir = QDir::homePath();
   const QString path = QFileDialog::getOpenFileName(
       window_, tr("Open program"), dir, tr("Lathe programs (*.txt *.nc *.tap *.cnc *.gc);;All files (*)"));
@@ -154,7 +160,18 @@ bool DocumentManager::openFile(const QString& path) {
 }
 
 void DocumentManager::startLoad(const QString& path, const QString& detailsFor) {
-  if (loadWatcher_.isRunning()) loadWatcher_.waitForFinished();
+  // A pipe, a device or a socket is refused before anything opens it: opening
+  // a pipe waits for a writer for ever (issue 29 item 8). stat() never waits.
+  if (auto refused = core::io::notAnOrdinaryFile(QFile::encodeName(path).toStdString())) {
+    LoadedProgram failed;
+    failed.path = QFileInfo(path).absoluteFilePath();
+    failed.diagnostics.push_back(std::move(*refused));
+    loadInFlight_ = false;
+    showLoadFailure(failed);
+    return;
+  }
+  // A load still running is left to finish on its own: its result is dropped
+  // when the watcher follows the new one. The window never waits on a file.
   loadInFlight_ = true;
   // A plain file's stock: its own Job details, else inferred; never the last file's.
   const core::io::JobHeader defaults = settings_->lastJobHeader();
@@ -167,21 +184,25 @@ void DocumentManager::startLoad(const QString& path, const QString& detailsFor) 
   emit busyChanged();
 }
 
+void DocumentManager::showLoadFailure(const LoadedProgram& loaded) {
+  restoring_.reset();
+  emit busyChanged();
+  QStringList lines;
+  for (const auto& d : loaded.diagnostics)
+    lines << QString::fromStdString(
+        core::formatWithPlace(QFileInfo(loaded.path).fileName().toStdString(), d, Language::coreLang()));
+  QMessageBox::warning(window_, tr("Cannot open the program"),
+                       tr("\"%1\" could not be read.").arg(QDir::toNativeSeparators(loaded.path)) +
+                           (lines.isEmpty() ? QString() : QStringLiteral("\n\n") + lines.join(QLatin1Char('\n'))));
+  settings_->removeRecentFile(loaded.path);
+  emit loadFailed(loaded.path);
+}
+
 void DocumentManager::onLoadFinished() {
   LoadedProgram loaded = loadWatcher_.result();
   loadInFlight_ = false;
   if (!loaded.ok) {
-    restoring_.reset();
-    emit busyChanged();
-    QStringList lines;
-    for (const auto& d : loaded.diagnostics)
-      lines << QString::fromStdString(
-          core::formatWithPlace(QFileInfo(loaded.path).fileName().toStdString(), d, Language::coreLang()));
-    QMessageBox::warning(window_, tr("Cannot open the program"),
-                         tr("\"%1\" could not be read.").arg(QDir::toNativeSeparators(loaded.path)) +
-                             (lines.isEmpty() ? QString() : QStringLiteral("\n\n") + lines.join(QLatin1Char('\n'))));
-    settings_->removeRecentFile(loaded.path);
-    emit loadFailed(loaded.path);
+    showLoadFailure(loaded);
     return;
   }
   // A recovery copy becomes the program it belongs to (untitled when it had no file).

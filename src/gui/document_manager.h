@@ -86,6 +86,7 @@ class DocumentManager : public QObject {
   void newFileUnchecked(const core::io::JobHeader& header);
   void startLoad(const QString& path, const QString& detailsFor = {});
   void onLoadFinished();
+  void showLoadFailure(const LoadedProgram& loaded);
   void appendNextChunk();
   void finishLoad();
   void watchFile(const QString& path);

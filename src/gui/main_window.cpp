@@ -30,6 +30,8 @@
 #include "gui/explain_bar.h"
 #include "render/report_sheets.h"
 #include "gui/dialect_offer_bar.h"
+#include "gui/first_steps_bar.h"
+#include "klueng/core/io/tool_config.h"
 #include "gui/document_manager.h"
 #include "gui/find_dialog.h"
 #include "gui/flow_panel.h"
@@ -106,6 +108,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   editorLayout->setContentsMargins(0, 0, 0, 0);
   editorLayout->setSpacing(0);
   editorLayout->addWidget(banner_);
+  firstSteps_ = new FirstStepsBar(this);
+  editorLayout->addWidget(firstSteps_);
   recoveryBar_ = new RecoveryBar(this);
   editorLayout->addWidget(recoveryBar_);
   dialectOffer_ = new DialectOfferBar(this);
@@ -227,6 +231,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   onRunStateChanged(RunState::Idle);
   // Unsaved work a crash, a kill or a power cut left behind (issue 13).
   recoveryBar_->offer(docs_->recovery().orphans());
+  // A first start (no file ever opened): what to do first, the samples one
+  // click away (issue 28 item 8). Gone once a program is in the editor.
+  connect(firstSteps_, &FirstStepsBar::openRequested, this, [this](const QString& path) { openFile(path); });
+  connect(firstSteps_, &FirstStepsBar::browseRequested, docs_, &DocumentManager::open);
+  connect(docs_, &DocumentManager::loaded, firstSteps_, &QWidget::hide);
+  if (settings_->recentFiles().isEmpty() && recoveryBar_->pending().isEmpty())
+    firstSteps_->offer(QString::fromStdString(core::io::samplesDir()));
 }
 
 MainWindow::~MainWindow() {

@@ -63,6 +63,7 @@ class MainWindow : public QMainWindow {
   Document* document() const { return document_; }
   class DocumentManager* documentManager() const { return docs_; }
   class RecoveryBar* recoveryBar() const { return recoveryBar_; }
+  class FirstStepsBar* firstSteps() const { return firstSteps_; }
   QUndoStack* setupUndoStack() const { return setupUndo_; }
   RunController* runController() const { return runner_; }
   class FlowPanel* flowPanel() const { return flow_; }
@@ -185,9 +186,11 @@ class MainWindow : public QMainWindow {
   BannerKind bannerKind_ = BannerKind::Setup;
   std::function<QString()> bannerMaker_;  // the banner's text in the current language
   bool bannerError_ = false;
+  bool partDockGrown_ = false;  // the Part dock made tall enough for its list once this session
   class ExplainBar* explainBar_ = nullptr;
   DialectOfferBar* dialectOffer_ = nullptr;
   class RecoveryBar* recoveryBar_ = nullptr;
+  class FirstStepsBar* firstSteps_ = nullptr;
   class SetupStrip* setupStrip_ = nullptr;  // stock and tools above the output screen
   QProgressBar* busyBar_ = nullptr;
   QPointer<FindDialog> findDialog_;

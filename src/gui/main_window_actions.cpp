@@ -6,6 +6,8 @@
 #include <QStatusBar>
 #include <QToolBar>
 #include <QTextDocument>
+#include <QTimer>
+#include <QTreeWidget>
 #include <QUndoStack>
 #include <QVBoxLayout>
 
@@ -231,6 +233,20 @@ void MainWindow::createDocks() {
   addDockWidget(Qt::BottomDockWidgetArea, part_);
   tabifyDockWidget(flow_, part_);
   diagnostics_->raise();
+  // Issue 28 item 8: the bottom docks share one height, enough for the
+  // diagnostics but 3 rows of the Part list at 768 px. When the Part tab first
+  // shows in a session, the docks grow to show 6 rows of it; a height the user
+  // sets after that stays.
+  connect(part_, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+    if (!visible || partDockGrown_ || part_->isFloating()) return;
+    partDockGrown_ = true;
+    QTimer::singleShot(0, this, [this] {
+      QTreeWidget* list = part_->list();
+      const int row = std::max(list->fontMetrics().height() + 6, list->topLevelItemCount() > 0 ? list->sizeHintForRow(0) : 0);
+      const int need = part_->height() - list->viewport()->height() + 6 * row;
+      if (part_->height() < need) resizeDocks({part_}, {need}, Qt::Vertical);
+    });
+  });
   // Issue 11: what lines 1-6 are, above the editor (a click edits them).
   auto* header = new HeaderStrip(editor_->parentWidget());
   if (auto* pane = qobject_cast<QVBoxLayout*>(editor_->parentWidget()->layout()))

@@ -96,13 +96,25 @@ QRectF OutputView::contentRect() const {
 // the tool above and to the right, not the whole travel from the start point
 // (which would shrink the part to a few pixels).
 QRectF OutputView::fitRect() const {
-  QRectF r = stock_->boundingRect().united(chuck_->boundingRect());
+  // The stock, the jaws that hold it with a little of the chuck's body behind
+  // them, and every cut: the part fills the view (issue 28 item 8).
+  const QRectF stock = stock_->boundingRect();
+  QRectF chuck = chuck_->boundingRect();
+  chuck.setLeft(std::max(chuck.left(), stock.left() - 10.0));
+  QRectF r = stock.united(chuck);
   if (!cutBounds_.isNull()) r = r.united(cutBounds_);
-  // The tool where it is parked before the run (issue 11: never out of sight at
-  // the start), with room for its holder above and right of the tip.
-  if (!toolStart_.isNull()) r = r.united(QRectF(toolStart_.x() - 5.0, toolStart_.y() - 45.0, 45.0, 50.0));
-  const double room = std::clamp(0.35 * std::max(r.width(), r.height()), 20.0, 80.0);
-  return r.adjusted(0, -room, room, room);
+  // The tool where it is parked before the run, with room for its holder above
+  // and right of the tip, only when it is parked near the part: a start or home
+  // far off (Z300) would shrink the part to a sliver (issue 28 item 8). Fit
+  // frames the stock and the part; the wheel and the scroll bars reach the rest.
+  if (!toolStart_.isNull()) {
+    const QRectF tool(toolStart_.x() - 5.0, toolStart_.y() - 45.0, 45.0, 50.0);
+    const double near = std::max(0.5 * std::max(r.width(), r.height()), 30.0);
+    if (r.adjusted(-near, -near, near, near).contains(tool)) r = r.united(tool);
+  }
+  // A little room right of the face for the tool coming in, and above and below.
+  const double side = std::clamp(0.2 * r.width(), 10.0, 40.0), room = std::clamp(0.08 * r.height(), 3.0, 15.0);
+  return r.adjusted(0, -room, side, room);
 }
 
 void OutputView::clearTrail() {
@@ -229,8 +241,8 @@ void OutputView::updateFrame() {
 void OutputView::fitToView() {
   const QRectF content = fitRect();
   if (content.isEmpty() || viewport()->width() < 10) return;
-  fitInView(content.adjusted(-content.width() * 0.04, -content.height() * 0.08, content.width() * 0.04,
-                             content.height() * 0.08),
+  fitInView(content.adjusted(-content.width() * 0.03, -content.height() * 0.04, content.width() * 0.03,
+                             content.height() * 0.04),
             Qt::KeepAspectRatio);
   fitPending_ = false;
   if (controller_) controller_->setMaxStepMm(1.0 / pixelsPerMm());

@@ -1,7 +1,9 @@
 // Issue 13, hostile input in the GUI: a 200 MB file, a binary file, one 10 MB line
 // and a UTF-16 program each get a clear answer within 2 s and no memory blow-up;
 // saving where the program cannot be written says so and keeps the edits.
+#include <fcntl.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <QApplication>
@@ -9,6 +11,7 @@
 #include <QFileInfo>
 #include <QFile>
 #include <QMessageBox>
+#include <QScopeGuard>
 #include <QStringConverter>
 #include <QTemporaryDir>
 #include <QTest>
@@ -94,6 +97,31 @@ class BadInputTest : public QObject {
     // Line 2, column 9: the NUL byte right after "G00 X40.".
     QVERIFY2(messages[0].contains(QStringLiteral("F104")) && messages[0].contains(QStringLiteral(":2:9")),
              qPrintable(messages[0]));
+  }
+
+  // Issue 29 item 8: opening a pipe (FIFO) waited for a writer for ever, and
+  // quitting waited on that load. It is refused at once, in both languages.
+  void aPipeIsRefusedAtOnceAndNothingWaitsOnIt() {
+    QTemporaryDir tmp;
+    const QString path = tmp.filePath(QStringLiteral("pipe.nc"));
+    QCOMPARE(::mkfifo(QFile::encodeName(path).constData(), 0644), 0);
+    // Should a load open the pipe after all, this writer lets it go when the test ends.
+    const auto release = qScopeGuard([&] {
+      const int fd = ::open(QFile::encodeName(path).constData(), O_WRONLY | O_NONBLOCK);
+      if (fd >= 0) ::close(fd);
+    });
+    for (const QString& lang : {QStringLiteral("en"), QStringLiteral("th")}) {
+      MainWindow w;  // takes the saved language: the test's comes after it
+      Language::instance()->setLanguage(lang);
+      const QStringList messages = openAndWait(path, &w);
+      QCOMPARE(messages.size(), 1);
+      QVERIFY2(messages[0].contains(QStringLiteral("pipe.nc")), qPrintable(messages[0]));
+      QVERIFY2(messages[0].contains(lang == QStringLiteral("en")
+                                        ? QStringLiteral("this is a pipe (FIFO), not an ordinary file, so it is not opened")
+                                        : QStringLiteral("นี่คือไปป์ (FIFO) ไม่ใช่ไฟล์ธรรมดา จึงไม่เปิด")),
+               qPrintable(messages[0]));
+    }
+    Language::instance()->setLanguage(QStringLiteral("en"));
   }
 
   void aTenMegabyteLineIsLeftOutAndNamed() {

@@ -211,6 +211,27 @@ class PartPanelTest : public QObject {
     QVERIFY(view->camera().yaw != yaw);
   }
 
+  // Issue 28 item 8: at 1366 x 768 the Part list showed 3 rows; it shows 6.
+  void thePartListShowsMoreThanThreeRowsAt768() {
+    gui::MainWindow w;
+    w.resize(1366, 768);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.openFile(QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt")));
+    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    gui::PartPanel* part = w.partPanel();
+    part->show();
+    part->raise();
+    part->analyse();
+    QTreeWidget* list = part->list();
+    list->expandAll();
+    const int row = list->sizeHintForRow(0);
+    QVERIFY(row > 0);
+    QTRY_VERIFY2(list->viewport()->height() >= 6 * row,
+                 qPrintable(QStringLiteral("%1 px for rows of %2 px").arg(list->viewport()->height()).arg(row)));
+    QVERIFY(w.editor()->height() > 150);  // the editor keeps its room
+  }
+
   void thaiLabels() {
     gui::Language::instance()->setLanguage(QStringLiteral("th"));
     gui::MainWindow w;

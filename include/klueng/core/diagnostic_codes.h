@@ -75,6 +75,8 @@ inline constexpr const char* kUnsupportedBmp = "F153";
 inline constexpr const char* kBmpHeaderDamaged = "F154";
 inline constexpr const char* kPngDamaged = "F155";
 inline constexpr const char* kColourOutsidePalette = "F156";
+// A path that is there but is no ordinary file (a pipe, a device, a socket): reading it can wait for ever.
+inline constexpr const char* kNotAnOrdinaryFile = "F157";  // {0} file, {1} what (en), {2} what (th)
 inline constexpr const char* kLibraryLineFields = "F160";
 inline constexpr const char* kBadToolId = "F161";
 inline constexpr const char* kDuplicateToolId = "F162";

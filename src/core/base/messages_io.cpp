@@ -16,6 +16,8 @@ constexpr MessageText kMessages[] = {
 
     // Whole files.
     {codes::kNoSuchFile, "{0}: no such file", "{0}: ไม่พบไฟล์"},
+    {codes::kNotAnOrdinaryFile, "{0}: this is {1}, not an ordinary file, so it is not opened",
+     "{0}: นี่คือ{2} ไม่ใช่ไฟล์ธรรมดา จึงไม่เปิด"},
     {codes::kCannotReadFile, "{0}: cannot read the file (it is a folder, or access is denied)",
      "{0}: อ่านไฟล์ไม่ได้ (เป็นโฟลเดอร์ หรือไม่มีสิทธิ์เข้าถึง)"},
     {codes::kFileTooLarge, "{0}: the file is {1} bytes; files over {2} are refused",

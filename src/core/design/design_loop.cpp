@@ -43,6 +43,45 @@ bool overlaps(const PartFeature& f, double zRight, double zLeft) {
   return f.zLeft < zRight - kZSlack && f.zRight > zLeft + kZSlack;
 }
 
+std::string num3(double v) {
+  std::string s = fmt::format("{:.3f}", std::abs(v) < 5e-4 ? 0.0 : v);
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  return s;
+}
+
+// The feature's sizes to the micron, for when the short label reads as the drawing's.
+std::string preciseLabel(const PartFeature& f) {
+  switch (f.kind) {
+    case FeatureKind::Cylinder:
+      return "Ø" + num3(f.diameter);
+    case FeatureKind::Chamfer:
+      if (std::abs(f.radialHeight - f.axialLength) < 5e-4) return "C" + num3(f.radialHeight);
+      return num3(f.axialLength) + " × " + num3(f.radialHeight);
+    case FeatureKind::Arc:
+      return "R" + num3(f.radius);
+    case FeatureKind::Groove:
+      return num3(f.width) + " × Ø" + num3(f.diameter);
+    case FeatureKind::Thread:
+      return "M" + num3(f.diameter) + "×" + num3(f.pitch);
+    default:
+      return neutralLabel(f);
+  }
+}
+
+// What the cut part has where the drawing's feature should be, never in the
+// same words as the drawing's: if the label reads the same, the sizes to the
+// micron; if those agree too, it is the place that differs, so say where it is.
+std::string whatIsThere(const PartFeature& f, const std::string& drawn) {
+  std::string there = neutralLabel(f);
+  if (there != drawn) return there;
+  there = preciseLabel(f);
+  if (there != drawn) return there;
+  if (f.kind == FeatureKind::Arc)
+    return fmt::format("{} Z{} X{}", there, num3(f.centre.x()), num3(2.0 * f.centre.y()));
+  return fmt::format("{} Z{}–Z{}", there, num3(f.zRight), num3(f.zLeft));
+}
+
 bool near(double a, double b, double tol = kDrawingTolerance) { return std::abs(a - b) <= tol + 1e-9; }
 
 void expectSteps(const std::vector<OutsideStep>& steps, bool inside, std::vector<Expected>& out) {
@@ -111,7 +150,7 @@ std::vector<Diagnostic> compareToDrawing(const PartDesign& part, const cut::Part
     const double mid = (e.zRight + e.zLeft) / 2.0;
     std::string there = "-";
     for (const PartFeature& f : side)
-      if (f.kind != FeatureKind::Face && f.zLeft <= mid && f.zRight >= mid) there = neutralLabel(f);
+      if (f.kind != FeatureKind::Face && f.zLeft <= mid && f.zRight >= mid) there = whatIsThere(f, e.label);
     Diagnostic d;
     d.severity = Severity::Warning;
     d.code = codes::kNotAsDrawn;

@@ -68,13 +68,13 @@ void writeTurning(Writer& w, const Contour& contour, const TurningPass& pass, gc
          d -= side * 2.0 * pass.depth) {
       const double zEnd = zAtDiameter(contour, d - u) + kAllowanceZ;
       if (zEnd >= 0.0) continue;
-      w.block(fmt::format("G00 X{}", num(d)), fmt::format(fmt::runtime(t.pick("roughing pass to D{}", "กลึงหยาบถึง D{}")), num(d)));
+      w.block(fmt::format("G00 X{}", num(d)), fmt::format(fmt::runtime(t.pick("roughing pass to D{}", "กลึงหยาบถึง D{}")), plain(d)));
       // The first pass says what every pass does.
       const bool first = std::abs(d - (pass.from - side * 2.0 * pass.depth)) < 1e-9;
       w.block(fmt::format("G01 Z{} F{}", num(zEnd), num(pass.feed)),
               first ? fmt::format(fmt::runtime(t.pick("to 0.1 short of the contour at {} mm/rev",
                                                       "ถึงก่อนรูปร่าง 0.1 มม. ป้อน {} มม./รอบ")),
-                                  num(pass.feed))
+                                  plain(pass.feed))
                     : std::string());
       w.block(fmt::format("G00 U{} W0.5", num(side)),
               first ? t.pick("off the cut 0.5 a side and 0.5 back", "ถอยออกจากผิว 0.5 มม. และถอยหลัง 0.5 มม.") : "");
@@ -211,9 +211,9 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
     w.block(fmt::format("G96 S{} M03", num(out.cuttingSpeed)),
             fmt::format(fmt::runtime(t.pick("Vc {} m/min for {} with a {} tool: S = 1000 x {} / 3.1416 / {} = {} rpm at D{}",
                                "Vc {} ม./นาที สำหรับ {} มีด{}: S = 1000 x {} / 3.1416 / {} = {} รอบ/นาที ที่ D{}")),
-                        num(out.cuttingSpeed), materialName(part.material, t),
+                        plain(out.cuttingSpeed), materialName(part.material, t),
                         part.toolMaterial == "hss" ? "HSS" : t.pick("carbide", "คาร์ไบด์"),
-                        num(out.cuttingSpeed), num(stock), static_cast<long long>(std::llround(rpmAtStock)), num(stock)));
+                        plain(out.cuttingSpeed), plain(stock), static_cast<long long>(std::llround(rpmAtStock)), plain(stock)));
     w.block(fmt::format("G00 X{} Z{} M08", num(stock + 4.0), num(kClear)),
             t.pick("2 mm over the bar, 2 mm in front of it, coolant on", "เหนือผิวชิ้นงานดิบ 2 มม. ห่างหน้า 2 มม. เปิดสารหล่อเย็น"));
     w.block("G00 Z0.", t.pick("to the face", "ไปที่หน้างาน"));
@@ -287,8 +287,8 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
                 t.pick("2 mm over the cylinder, in front of the face", "เหนือทรงกระบอก 2 มม. หน้างาน"));
         for (const double zc : plunges) {
           w.block(fmt::format("G00 Z{}", num(zc)),
-                  zc == first ? fmt::format(fmt::runtime(t.pick("groove {} x D{}", "ร่อง {} x D{}")), num(gr.width),
-                                            num(gr.diameter))
+                  zc == first ? fmt::format(fmt::runtime(t.pick("groove {} x D{}", "ร่อง {} x D{}")), plain(gr.width),
+                                            plain(gr.diameter))
                               : t.pick("next plunge, 0.8 of the blade on", "กินลึกครั้งถัดไป เลื่อน 0.8 เท่าของใบมีด"));
           w.block(fmt::format("G01 X{} F{}", num(gr.diameter), num(kGrooveFeed)),
                   t.pick("plunge to the bottom at 0.05 mm/rev", "กินลึกถึงก้นร่อง ป้อน 0.05 มม./รอบ"));
@@ -307,7 +307,7 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
         const std::string what = fmt::format(
             fmt::runtime(t.pick("M{}x{}: thread height 0.6134 x {} = {} mm, minor D{}",
                                 "M{}x{}: ความสูงเกลียว 0.6134 x {} = {} มม. Ø ใน D{}")),
-            num(major), num(th.pitch), num(th.pitch), num(std::round(h * 1000.0) / 1000.0), num(minor));
+            plain(major), plain(th.pitch), plain(th.pitch), plain(std::round(h * 1000.0) / 1000.0), plain(minor));
         w.block(fmt::format("G97 S{} M03", static_cast<long long>(std::llround(rpm))), what);
         w.block(fmt::format("G00 X{} Z{}", num(clear), num(startZ)),
                 t.pick("three pitches in front of the thread", "ห่างหน้าเกลียวสามระยะพิตช์"));
@@ -318,7 +318,7 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
             w.block(fmt::format("G00 X{}", num(major - 2.0 * depth)),
                     fmt::format(fmt::runtime(t.pick("pass {} of {}: {} deep, the same chip area each pass",
                                                     "ครั้งที่ {} จาก {}: ลึก {} มม. พื้นที่เศษเท่ากันทุกครั้ง")),
-                                p, kThreadPasses, num(depth)));
+                                p, kThreadPasses, plain(depth)));
             w.block(fmt::format("G32 Z{} F{}", num(endZ), num(th.pitch)),
                     p == 1 ? t.pick("along the thread, F the pitch", "กลึงตามเกลียว F คือระยะพิตช์") : "");
             w.block(fmt::format("G00 X{}", num(clear)), p == 1 ? t.pick("out", "ถอยออก") : "");
@@ -350,7 +350,7 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
       w.block(fmt::format("G00 X{} Z{}", num(exitX), num(kClear)), t.pick("over the bar", "เหนือผิวชิ้นงานดิบ"));
       w.block(fmt::format("G00 Z{}", num(zc)),
               fmt::format(fmt::runtime(t.pick("the blade's right side on the part's end, Z{}", "ด้านขวาของใบมีดอยู่ที่ปลายชิ้นงาน Z{}")),
-                          num(-part.length())));
+                          plain(-part.length())));
       w.block(fmt::format("G01 X{} F{}", num(to), num(kGrooveFeed)), t.pick("part off at 0.05 mm/rev", "ตัดขาด ป้อน 0.05 มม./รอบ"));
       w.block(fmt::format("G00 X{}", num(exitX)), t.pick("out", "ถอยออก"));
       w.block("G00 X100. Z100.", t.pick("to the tool change point", "ไปจุดเปลี่ยนมีด"));

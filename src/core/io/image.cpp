@@ -266,6 +266,11 @@ ReadResult<RgbImage> decodeImage(std::string_view bytes, const std::string& file
 
 ReadResult<RgbImage> readImage(const std::string& path) {
   ReadResult<RgbImage> result;
+  // A bitmap is always a file: a pipe would wait for a writer for ever.
+  if (auto refused = notAnOrdinaryFile(path)) {
+    result.diagnostics.push_back(std::move(*refused));
+    return result;
+  }
   const std::optional<std::string> bytes = detail::readFileBytes(path, result.diagnostics);
   if (!bytes) return result;
   return decodeImage(*bytes, path);

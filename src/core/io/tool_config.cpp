@@ -556,6 +556,14 @@ std::string shippedConfigDir() {
   return dir;
 }
 
+std::string samplesDir(const std::string& shippedDir) {
+  if (shippedDir.empty()) return {};
+  std::error_code ec;
+  for (const fs::path& dir : {fs::path(shippedDir) / "samples", fs::path(shippedDir) / "resources" / "samples"})
+    if (fs::is_directory(dir, ec)) return dir.string();
+  return {};
+}
+
 std::string userConfigDir() {
   if (const char* xdg = std::getenv("XDG_DATA_HOME"); xdg && *xdg && fs::path(xdg).is_absolute())
     return (fs::path(xdg) / "klueng").string();

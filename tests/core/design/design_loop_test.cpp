@@ -64,6 +64,45 @@ TEST(DesignLoop, ADrawingThatDiffersIsNamedFeatureByFeature) {
   EXPECT_TRUE(compareToDrawing(drawing, loop.features).empty());
 }
 
+// Issue 28 item 8: "not Ø20 ... there it is Ø20" told the reader nothing and
+// contradicted itself. A finding never names the drawing's feature as what is there.
+TEST(DesignLoop, AFindingNeverSaysTheCutPartHasWhatItLacks) {
+  const machine::MachineSetup setup = machine::loadMachineSetup(KLUENG_SOURCE_DIR).setup;
+  GenerateOptions options;
+  options.machine = setup.machine;
+  const DesignLoop loop = runDesignLoop(shipped("step-shaft.json"), options, setup);
+  ASSERT_TRUE(loop.matches());
+  const auto texts = [](const std::vector<Diagnostic>& findings) {
+    std::vector<std::string> out;
+    for (const Diagnostic& d : findings) {
+      EXPECT_NE(d.args.at(0), d.args.at(3)) << formatMessage(d, Lang::En);
+      out.push_back(formatMessage(d, Lang::En));
+    }
+    return out;
+  };
+  // A chamfer 3.02 long and 3 high reads "C3" like the drawing's: the sizes to the micron say what differs.
+  const PartDesign drawing = shipped("step-shaft.json");
+  cut::PartFeatures cut = loop.features;
+  cut::PartFeature* chamfer = nullptr;
+  for (cut::PartFeature& f : cut.outside)
+    if (f.kind == cut::FeatureKind::Chamfer && f.zRight > -0.5) chamfer = &f;
+  ASSERT_NE(chamfer, nullptr);
+  chamfer->axialLength += 0.02;
+  chamfer->zLeft -= 0.02;
+  EXPECT_EQ(texts(compareToDrawing(drawing, cut)),
+            std::vector<std::string>{"The drawing's C3 (Z0 to Z-3) is not on the cut part within 0.01 mm: there it "
+                                     "is 3.02 × 3"});
+  // The same C3 half a millimetre along: the place is what differs.
+  chamfer->axialLength -= 0.02;
+  chamfer->zLeft = -3.5;
+  chamfer->zRight = -0.5;
+  const std::vector<Diagnostic> moved = compareToDrawing(drawing, cut);
+  EXPECT_EQ(texts(moved), std::vector<std::string>{"The drawing's C3 (Z0 to Z-3) is not on the cut part within 0.01 "
+                                                   "mm: there it is C3 Z-0.5–Z-3.5"});
+  EXPECT_EQ(formatMessage(moved.at(0), Lang::Th),
+            "C3 ตามแบบ (Z0 ถึง Z-3) ไม่มีบนชิ้นงานที่กลึงได้ภายใน 0.01 มม.: ตรงนั้นเป็น C3 Z-0.5–Z-3.5");
+}
+
 TEST(DesignLoop, APartThatCannotBeTurnedIsRefusedBeforeAnythingRuns) {
   const machine::MachineSetup setup = machine::loadMachineSetup(KLUENG_SOURCE_DIR).setup;
   PartDesign part = shipped("step-shaft.json");

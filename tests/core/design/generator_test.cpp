@@ -2,6 +2,7 @@
 // file, generated in all three dialects, checked, run, cut and part-checked.
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -131,6 +132,19 @@ TEST(Generator, AnM30ThreadIsCutInEveryDialect) {
     const cut::PartCheck check =
         cut::checkPart(*t.job.timeline, cut::CutSetup::from(io::parseProgramFile(program->text).value->header, setup));
     EXPECT_TRUE(check.defects.empty());
+    // Comments are read by people: sizes as a drawing writes them, never with G-code's trailing point.
+    EXPECT_NE(program->text.find("(M30x1.5: thread height 0.6134 x 1.5 = 0.92 mm, minor D28.16)"), std::string::npos)
+        << program->text;
+    EXPECT_EQ(program->text.find("M30.x"), std::string::npos);
+    for (std::size_t open = program->text.find('('); open != std::string::npos;
+         open = program->text.find('(', open + 1)) {
+      const std::string comment = program->text.substr(open, program->text.find(')', open) - open + 1);
+      for (std::size_t k = 1; k + 1 < comment.size(); ++k) {
+        if (comment[k] == '.' && std::isdigit(static_cast<unsigned char>(comment[k - 1]))) {
+          EXPECT_TRUE(std::isdigit(static_cast<unsigned char>(comment[k + 1]))) << comment;
+        }
+      }
+    }
   }
   // Longer than its cylinder, or a pitch that does not fit: refused.
   std::vector<Diagnostic> why;

@@ -3,8 +3,11 @@
 #include <gtest/gtest.h>
 #include <png.h>
 
+#include <sys/stat.h>
+
 #include <cstring>
 
+#include "klueng/core/io/file_read.h"
 #include "klueng/core/io/tool_config.h"
 #include "klueng/core/messages.h"
 #include "test_util.h"
@@ -202,6 +205,32 @@ TEST(Bmp, WriteThenReadRoundTrips) {
   EXPECT_EQ(r.value->height, 3);
   EXPECT_EQ(r.value->pixels, image.pixels);
   EXPECT_EQ(testing::readFile(dir.file("rt.bmp")).size(), 54u + 16u * 3u);
+}
+
+// Issue 29 item 8: a bitmap that is a pipe made Tool Select's preview wait for
+// a writer for ever. It is refused from stat() alone, before anything opens it.
+TEST(Bmp, APipeOrADeviceIsRefusedWithoutOpeningIt) {
+  TempDir dir;
+  const std::string pipe = dir.file("pipe.bmp");
+  ASSERT_EQ(::mkfifo(pipe.c_str(), 0644), 0);
+  const auto r = readImage(pipe);  // before the fix: open() blocks here, no writer ever comes
+  EXPECT_FALSE(r.ok());
+  ASSERT_EQ(r.diagnostics.size(), 1u);
+  EXPECT_EQ(r.diagnostics[0].code, "F157");
+  EXPECT_EQ(formatMessage(r.diagnostics[0], Lang::En), pipe + ": this is a pipe (FIFO), not an ordinary file, so it is not opened");
+  EXPECT_EQ(formatMessage(r.diagnostics[0], Lang::Th), pipe + ": นี่คือไปป์ (FIFO) ไม่ใช่ไฟล์ธรรมดา จึงไม่เปิด");
+  const auto device = notAnOrdinaryFile("/dev/null");
+  ASSERT_TRUE(device);
+  EXPECT_EQ(formatMessage(*device, Lang::En), "/dev/null: this is a device, not an ordinary file, so it is not opened");
+  // Ordinary files, folders and missing paths are left to the readers (F101, F102).
+  std::string error;
+  RgbImage one;
+  one.width = one.height = 1;
+  one.pixels = {0};
+  ASSERT_TRUE(writeBmp(dir.file("one.bmp"), one, &error)) << error;
+  EXPECT_FALSE(notAnOrdinaryFile(dir.file("one.bmp")));
+  EXPECT_FALSE(notAnOrdinaryFile(dir.path().string()));
+  EXPECT_FALSE(notAnOrdinaryFile(dir.file("missing.bmp")));
 }
 
 TEST(Bmp, WriteRefusesAnImageWithoutPixels) {

@@ -389,6 +389,13 @@ TEST(ConfigDir, AnInstalledProgramFindsShareKluengBesideItsBin) {
   writeFile(dir.file("usr/share/klueng/tools.cfg"), "\n");
   EXPECT_TRUE(std::filesystem::equivalent(installedDataDir(exe), dir.file("usr/share/klueng")));
   EXPECT_EQ(installedDataDir(""), "");
+  // File ▸ Open starts in the samples (issue 28 item 8): share/klueng/samples installed,
+  // resources/samples in the repository.
+  EXPECT_EQ(samplesDir(dir.file("usr/share/klueng")), "");
+  std::filesystem::create_directories(dir.file("usr/share/klueng/samples"));
+  EXPECT_EQ(samplesDir(dir.file("usr/share/klueng")), dir.file("usr/share/klueng/samples"));
+  EXPECT_TRUE(std::filesystem::equivalent(samplesDir(KLUENG_SOURCE_DIR), KLUENG_SAMPLES_DIR));
+  EXPECT_EQ(samplesDir(""), "");
 }
 
 TEST(ConfigDir, UserConfigFallsBackToHome) {

@@ -150,6 +150,9 @@ std::string userConfigDir();
 // The folder of the shipped defaults: <prefix>/share/klueng beside the running
 // program's bin/ when installed, the repository top in a build tree.
 std::string shippedConfigDir();
+// The sample programs shipped with Klueng: samples/ in the shipped folder when
+// installed, resources/samples in a build tree; empty when neither is there.
+std::string samplesDir(const std::string& shippedDir = shippedConfigDir());
 // <prefix>/share/klueng for a program at <prefix>/bin/NAME, when it holds a
 // tools.cfg; empty otherwise.
 std::string installedDataDir(const std::string& executable);
