@@ -1,5 +1,7 @@
 #include "gui/dialect_offer_bar.h"
 
+#include "gui/note_bar.h"
+
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QIcon>
@@ -27,22 +29,9 @@ DialectOfferBar::DialectOfferBar(QWidget* parent) : QWidget(parent) {
   label_->setWordWrap(true);
   switchButton_ = new QPushButton(this);
   switchButton_->setObjectName(QStringLiteral("dialectOfferSwitch"));
-  auto* close = new QToolButton(this);
-  close->setIcon(QIcon(QStringLiteral(":/icons/close.svg")));
-  close->setAutoRaise(true);
-  auto* layout = new QHBoxLayout(this);
-  layout->setContentsMargins(8, 3, 4, 3);
-  auto* icon = new QLabel(this);
-  icon->setPixmap(QIcon(QStringLiteral(":/icons/note.svg")).pixmap(18, 18));
-  layout->addWidget(icon, 0, Qt::AlignTop);
-  layout->addWidget(label_, 1);
-  layout->addWidget(switchButton_, 0);
-  layout->addWidget(close, 0, Qt::AlignTop);
-  QPalette p = palette();
-  p.setColor(QPalette::Window, QColor(0xe3, 0xf0, 0xfd));
-  p.setColor(QPalette::WindowText, QColor(0x0d, 0x3a, 0x6e));
-  setPalette(p);
-  setAutoFillBackground(true);
+  auto* buttons = new QHBoxLayout;
+  buttons->addWidget(switchButton_);
+  QToolButton* close = layOutNoteBar(this, label_, buttons, 3);
   connect(switchButton_, &QPushButton::clicked, this, [this] {
     hide();
     emit switchRequested(dialect_);

@@ -1,5 +1,7 @@
 #include "gui/first_steps_bar.h"
 
+#include "gui/note_bar.h"
+
 #include <QDir>
 #include <QEvent>
 #include <QFileInfo>
@@ -19,26 +21,11 @@ FirstStepsBar::FirstStepsBar(QWidget* parent) : QWidget(parent) {
   openSample_->setObjectName(QStringLiteral("firstStepsOpenSample"));
   browse_ = new QPushButton(this);
   browse_->setObjectName(QStringLiteral("firstStepsBrowse"));
-  auto* close = new QToolButton(this);
-  close->setIcon(QIcon(QStringLiteral(":/icons/close.svg")));
-  close->setAutoRaise(true);
   auto* buttons = new QVBoxLayout;
   buttons->addWidget(openSample_);
   buttons->addWidget(browse_);
   buttons->addStretch(1);
-  auto* layout = new QHBoxLayout(this);
-  layout->setContentsMargins(8, 4, 4, 4);
-  auto* icon = new QLabel(this);
-  icon->setPixmap(QIcon(QStringLiteral(":/icons/note.svg")).pixmap(18, 18));
-  layout->addWidget(icon, 0, Qt::AlignTop);
-  layout->addWidget(label_, 1);
-  layout->addLayout(buttons, 0);
-  layout->addWidget(close, 0, Qt::AlignTop);
-  QPalette p = palette();
-  p.setColor(QPalette::Window, QColor(0xe3, 0xf0, 0xfd));
-  p.setColor(QPalette::WindowText, QColor(0x0d, 0x3a, 0x6e));
-  setPalette(p);
-  setAutoFillBackground(true);
+  QToolButton* close = layOutNoteBar(this, label_, buttons, 4);
   connect(openSample_, &QPushButton::clicked, this, [this] {
     hide();
     emit openRequested(sample_);
