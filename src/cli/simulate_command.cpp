@@ -268,7 +268,9 @@ int runSimulate(const std::vector<std::string>& args) {
     cut::PartCheckOptions check;
     check.resolution = o.cut.resolution;
     check.leftoverTolerance = o.partTolerance;
-    const cut::PartCheck result = cut::checkPart(timeline, cut::CutSetup::from(programFile.header, cutSetup), check);
+    const machine::Timeline programmed = cut::programmedPath(program, cutSetup, runOptions, timeline);
+    const cut::PartCheck result =
+        cut::checkPart(timeline, programmed, cut::CutSetup::from(programFile.header, cutSetup), check);
     for (const Diagnostic& d : cut::partCheckDiagnostics(result)) printDiagnostic(job.fileOf(d), d, o.lang);
   }
   if (o.compareCompensation && o.cut.enabled) {

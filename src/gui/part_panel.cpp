@@ -154,7 +154,8 @@ void PartPanel::analyse() {
     return;
   }
   const cut::CutSetup setup = cut::CutSetup::from(src.program.header, src.setup);
-  const cut::PartCheck check = cut::checkPart(*compiled.timeline, setup);
+  const machine::Timeline programmed = cut::programmedPath(compiled.program, src.setup, job.run, *compiled.timeline);
+  const cut::PartCheck check = cut::checkPart(*compiled.timeline, programmed, setup);
   const cut::PartFeatures part = cut::partFeatures(check.cut);  // the part the check cut, not a second cut
 
   features_ = new QTreeWidgetItem(list_);

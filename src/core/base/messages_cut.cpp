@@ -36,7 +36,7 @@ constexpr MessageText kMessages[] = {
     {codes::kPartGouge,
      "Gouge {0} mm deep from Z{1} to Z{2} (deepest at Z{3}, Ø{4}): the tool's edge cut into the part the program "
      "describes",
-     "มีดตัดกินเนื้อชิ้นงานเกินแบบ ลึก {0} มม. จาก Z{1} ถึง Z{2} (ลึกที่สุดที่ Z{3} Ø{4}): คมตัดด้านหลังของมีดตัดเข้าไปในรูปชิ้นงานที่โปรแกรมกำหนด"},
+     "มีดตัดกินเนื้อชิ้นงานเกินแบบ ลึก {0} มม. จาก Z{1} ถึง Z{2} (ลึกที่สุดที่ Z{3} Ø{4}): คมตัดของมีดตัดเข้าไปในรูปชิ้นงานที่โปรแกรมกำหนด"},
     {codes::kPartLeftover,
      "Material left {0} mm from Z{1} to Z{2} (most at Z{3}, Ø{4}): this block's path should have removed it",
      "เนื้อชิ้นงานเหลือเกินแบบ {0} มม. จาก Z{1} ถึง Z{2} (มากที่สุดที่ Z{3} Ø{4}): เส้นทางของบล็อกนี้ควรตัดออก"},

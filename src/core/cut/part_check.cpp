@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <set>
 
 #include <fmt/format.h>
@@ -68,6 +70,7 @@ bool keepsWholeTool(const machine::Move& m) {
   return std::abs(m.path.start.y()) < 1e-6 && std::abs(m.path.end.y()) < 1e-6;
 }
 
+
 struct Finding {
   DefectKind kind;
   FeatureSide side;
@@ -75,7 +78,158 @@ struct Finding {
   double depth;
   double described;  // radius of the described surface
   int cause = -1;    // move index
+  int pathMove = -1; // a gouge below the programmed path: the programmed move that lies there
 };
+
+// The programmed path over one column: the lowest (outside) or highest (inside)
+// radius a feed move's path has at the column's centre.
+struct ProgrammedColumn {
+  double radius = 0.0;
+  int move = -1;            // into the programmed timeline; -1: no path over the column
+  double nose = 0.0;        // that move's nose radius
+  bool contour = false;     // a contour, not a tool's form (threading passes are the form)
+  // A face or a retreat the path makes in the column: the contour's wall, up to
+  // its top (outside) or down to its bottom (inside); NaN when none.
+  double wall = std::numeric_limits<double>::quiet_NaN();
+};
+
+// The radius a path has at z, if it runs over z: the lower (outside) or upper
+// (inside) of an arc's two points there.
+std::optional<double> radiusAt(const Segment& s, double z, bool outside) {
+  const double z0 = std::min(s.start.x(), s.end.x()), z1 = std::max(s.start.x(), s.end.x());
+  if (!s.isArc()) {
+    if (!(z > z0 && z < z1)) return std::nullopt;
+    return s.start.y() + (z - s.start.x()) / (s.end.x() - s.start.x()) * (s.end.y() - s.start.y());
+  }
+  const double r = s.radius(), dz = z - s.centre.x();
+  if (std::abs(dz) >= r) return std::nullopt;
+  const double h = std::sqrt(r * r - dz * dz);
+  std::optional<double> best;
+  for (const double x : {s.centre.y() - h, s.centre.y() + h}) {
+    if (distanceTo(s, Vec2(z, x)) > 1e-6) continue;
+    if (!best || (outside ? x < *best : x > *best)) best = x;
+  }
+  return best;
+}
+
+bool onAxis(const machine::Move& m) { return std::abs(m.path.start.y()) < 1e-6 && std::abs(m.path.end.y()) < 1e-6; }
+
+// Below the centre line (a face past the centre, a tool working beyond it) the
+// path's radius is not the part's.
+bool beyondCentre(const machine::Move& m) { return m.path.start.y() < 0.0 || m.path.end.y() < 0.0; }
+
+// The programmed path over each column of `part` (the real cut) on one side: a
+// feed move belongs to the outside when it ends nearer the part's outside than
+// its bore. Drilling on the axis is the drill's form, not a contour.
+std::vector<ProgrammedColumn> programmedColumns(const machine::Timeline& programmed, const Stock& part,
+                                                ToolLibrary& shapes, double end, bool outside) {
+  std::vector<ProgrammedColumn> out(static_cast<std::size_t>(part.columnCount()));
+  const double dz = part.columnWidth();
+  for (std::size_t k = 0; k < programmed.moves.size(); ++k) {
+    const machine::Move& m = programmed.moves[k];
+    if (m.tStart >= end) break;  // `end`: where an alarm stopped the real run (its times are near the real ones)
+    if (m.tool <= 0 || onAxis(m) || beyondCentre(m)) continue;
+    if (m.kind != machine::MoveKind::Line && m.kind != machine::MoveKind::Arc && m.kind != machine::MoveKind::Thread)
+      continue;
+    const Vec2 mid = m.path.pointAt(0.5);
+    const int c = part.columnAt(mid.x());
+    if (c < 0 || c >= part.columnCount()) continue;
+    // The side: the tip's (3, 4, 8 cut outside; 1, 2, 6 in a bore), else where the move ends up.
+    const ToolShape* shape = shapes.get(m.tool, m.offset);
+    const double tipX = shape ? tipVector(shape->tip).y() : 0.0;
+    const double outer = part.outerRadius(c);
+    const bool outsideMove =
+        tipX != 0.0 ? tipX < 0.0 : outer <= 0.0 || mid.y() >= (outer + part.innerRadius(c)) / 2.0;
+    if (outsideMove != outside) continue;
+    const double z0 = std::min(m.path.start.x(), m.path.end.x()), z1 = std::max(m.path.start.x(), m.path.end.x());
+    if (z1 - z0 < dz) {  // a face or a retreat: a wall of the contour, over no column's width
+      const int i = part.columnAt(mid.x());
+      ProgrammedColumn& p = out[static_cast<std::size_t>(i)];
+      const double extreme = outside ? std::max(m.path.start.y(), m.path.end.y())
+                                     : std::min(m.path.start.y(), m.path.end.y());
+      if (m.kind != machine::MoveKind::Thread && (std::isnan(p.wall) || (outside ? extreme > p.wall : extreme < p.wall)))
+        p.wall = extreme;
+      continue;
+    }
+    int first = 0, last = -1;
+    part.columnRange(z0, z1, first, last);
+    for (int i = first; i <= last; ++i) {
+      const std::optional<double> r = radiusAt(m.path, part.zCentre(i), outside);
+      if (!r) continue;
+      ProgrammedColumn& p = out[static_cast<std::size_t>(i)];
+      if (p.move >= 0 && (outside ? *r >= p.radius : *r <= p.radius)) continue;
+      p = {*r, static_cast<int>(k), shape ? shape->noseRadius : 0.0, m.kind != machine::MoveKind::Thread};
+    }
+  }
+  return out;
+}
+
+// What a round nose can reach: the described surface where the programmed
+// path is a contour is that path (or the ideal cut where that is lower), less
+// what no nose of the tool's radius reaches — the fillet in a concave corner.
+// Computed as the opening of the air by a disk: a column's surface is the
+// lowest point of any disk of radius r that fits in the air over it (outside;
+// mirrored for a bore). Columns are taken whole: a disk clears a column's
+// nearest edge, and reaches a column at its nearest edge.
+struct Reach {
+  std::vector<double> described;  // NaN: no contour over the column
+  double at(std::size_t k, double ideal) const { return std::isnan(described[k]) ? ideal : described[k]; }
+};
+
+std::vector<double> opening(const std::vector<double>& surface, double dz, double r) {
+  const int n = static_cast<int>(surface.size());
+  if (r <= 0.0 || n == 0) return surface;
+  const int reach = static_cast<int>(std::ceil(r / dz)) + 1;
+  const auto rise = [&](int di) {
+    const double d = std::max(0.0, std::abs(di) * dz - dz / 2.0);
+    return d >= r ? -1.0 : std::sqrt(r * r - d * d);
+  };
+  std::vector<double> centre(static_cast<std::size_t>(n), -std::numeric_limits<double>::infinity());
+  for (int c = 0; c < n; ++c)
+    for (int j = std::max(0, c - reach); j <= std::min(n - 1, c + reach); ++j) {
+      const double h = rise(j - c);
+      if (h >= 0.0) centre[static_cast<std::size_t>(c)] = std::max(centre[static_cast<std::size_t>(c)], surface[static_cast<std::size_t>(j)] + h);
+    }
+  std::vector<double> out(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
+  for (int i = 0; i < n; ++i)
+    for (int c = std::max(0, i - reach); c <= std::min(n - 1, i + reach); ++c) {
+      const double h = rise(i - c);
+      if (h >= 0.0) out[static_cast<std::size_t>(i)] = std::min(out[static_cast<std::size_t>(i)], centre[static_cast<std::size_t>(c)] - h);
+    }
+  for (int i = 0; i < n; ++i) out[static_cast<std::size_t>(i)] = std::max(out[static_cast<std::size_t>(i)], surface[static_cast<std::size_t>(i)]);
+  return out;
+}
+
+Reach noseReach(const std::vector<double>& ideal, const std::vector<ProgrammedColumn>& path, double dz, bool outside) {
+  const std::size_t n = ideal.size();
+  Reach out{std::vector<double>(n, std::numeric_limits<double>::quiet_NaN())};
+  // Outside the air is above the surface; a bore's air is below it: mirror it.
+  const double sign = outside ? 1.0 : -1.0;
+  std::vector<double> surface(n);
+  std::set<double> noses;
+  for (std::size_t k = 0; k < n; ++k) {
+    surface[k] = sign * ideal[k];
+    if (path[k].move >= 0 && path[k].contour) {
+      surface[k] = std::min(surface[k], sign * path[k].radius);
+      noses.insert(path[k].nose);
+    }
+    // The contour's own walls stand where a later cut took them away (a parting
+    // cut beside a shoulder's fillet): the nose met them when it cut there.
+    if (!std::isnan(path[k].wall)) surface[k] = std::max(surface[k], sign * path[k].wall);
+  }
+  for (const double r : noses) {
+    const std::vector<double> open = opening(surface, dz, r);
+    for (std::size_t k = 0; k < n; ++k)
+      if (path[k].move >= 0 && path[k].contour && path[k].nose == r) out.described[k] = sign * open[k];
+  }
+  return out;
+}
+
+// Whether a real move's path runs over z (not a plunge beside it).
+bool runsOver(const machine::Move& m, double z) {
+  const double z0 = std::min(m.path.start.x(), m.path.end.x()), z1 = std::max(m.path.start.x(), m.path.end.x());
+  return z > z0 && z < z1;
+}
 
 }  // namespace
 
@@ -141,12 +295,23 @@ double PartCheck::largestLeftover() const {
   return m;
 }
 
-PartCheck checkPart(const machine::Timeline& timeline, const CutSetup& setup, const PartCheckOptions& options) {
-  return checkPart(timeline, setup, ToolLibrary(setup.tools, setup.offsets), options);
+machine::Timeline programmedPath(const gcode::Program& program, const machine::MachineSetup& setup,
+                                 machine::RunOptions options, const machine::Timeline& run) {
+  const bool compensated =
+      std::any_of(run.moves.begin(), run.moves.end(), [](const machine::Move& m) { return m.compensated; });
+  if (!compensated) return run;
+  options.noseCompensation = false;
+  options.persistentVariables = nullptr;  // one program run must not write #500-#999 twice
+  return machine::interpret(program, setup, options);
 }
 
-PartCheck checkPart(const machine::Timeline& timeline, const CutSetup& setup, const ToolLibrary& tools,
+PartCheck checkPart(const machine::Timeline& run, const machine::Timeline& programmed, const CutSetup& setup,
                     const PartCheckOptions& options) {
+  return checkPart(run, programmed, setup, ToolLibrary(setup.tools, setup.offsets), options);
+}
+
+PartCheck checkPart(const machine::Timeline& timeline, const machine::Timeline& programmed, const CutSetup& setup,
+                    const ToolLibrary& tools, const PartCheckOptions& options) {
   PartCheck out;
   CutOptions cutOptions;
   cutOptions.resolution = options.resolution;
@@ -177,26 +342,65 @@ PartCheck checkPart(const machine::Timeline& timeline, const CutSetup& setup, co
   const Stock& a = real.stock();
   const Stock& b = ideal.stock();
   out.nothingCut = b.removedVolume() <= 0.0 && a.removedVolume() <= 0.0;
+
+  // The programmed path (where the run got to) per column, outside and inside.
+  ToolLibrary shapes = tools;
+  const double pathEnd = out.stoppedBy ? end : std::numeric_limits<double>::infinity();
+  std::vector<ProgrammedColumn> pathOut = programmedColumns(programmed, a, shapes, pathEnd, true);
+  std::vector<ProgrammedColumn> pathIn = programmedColumns(programmed, a, shapes, pathEnd, false);
+
   std::vector<Finding> findings;
-  for (int i = 0; i < a.columnCount(); ++i) {
+  const int n = a.columnCount();
+  // The programmed path judges a column the real cut left as one ring or bar (or
+  // nothing): an island left inside (a drill's cone beside a bore's end) is no surface of it.
+  for (int i = 0; i < n; ++i)
+    if (a.column(i).size() > 1) {
+      pathOut[static_cast<std::size_t>(i)] = ProgrammedColumn{};
+      pathIn[static_cast<std::size_t>(i)] = ProgrammedColumn{};
+    }
+  std::vector<double> idealOut(static_cast<std::size_t>(n)), idealIn(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    idealOut[static_cast<std::size_t>(i)] = b.outerRadius(i);
+    idealIn[static_cast<std::size_t>(i)] = b.outerRadius(i) > 0.0 ? b.innerRadius(i) : 0.0;
+  }
+  const Reach reachOut = noseReach(idealOut, pathOut, a.columnWidth(), true);
+  const Reach reachIn = noseReach(idealIn, pathIn, a.columnWidth(), false);
+  for (int i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
     const double ro = a.outerRadius(i), io = b.outerRadius(i);
     if (io - ro > options.gougeTolerance) findings.push_back({DefectKind::Gouge, FeatureSide::Outside, i, io - ro, io});
-    if (ro - io > options.leftoverTolerance)
-      findings.push_back({DefectKind::Leftover, FeatureSide::Outside, i, ro - io, io});
+    else if (pathOut[k].move >= 0 && pathOut[k].radius - ro > options.gougeTolerance)
+      findings.push_back({DefectKind::Gouge, FeatureSide::Outside, i, pathOut[k].radius - ro, pathOut[k].radius,
+                          -1, pathOut[k].move});
+    const double describedOut = reachOut.at(k, io);
+    if (ro - describedOut > options.leftoverTolerance)
+      findings.push_back({DefectKind::Leftover, FeatureSide::Outside, i, ro - describedOut, describedOut, -1,
+                          std::isnan(reachOut.described[k]) ? -1 : pathOut[k].move});
     if (ro <= 0.0 || io <= 0.0) continue;  // no bore where nothing is left
     const double ri = a.innerRadius(i), ii = b.innerRadius(i);
     if (ri - ii > options.gougeTolerance) findings.push_back({DefectKind::Gouge, FeatureSide::Inside, i, ri - ii, ii});
-    if (ii - ri > options.leftoverTolerance)
-      findings.push_back({DefectKind::Leftover, FeatureSide::Inside, i, ii - ri, ii});
+    else if (pathIn[k].move >= 0 && ri - pathIn[k].radius > options.gougeTolerance)
+      findings.push_back({DefectKind::Gouge, FeatureSide::Inside, i, ri - pathIn[k].radius, pathIn[k].radius, -1,
+                          pathIn[k].move});
+    const double describedIn = reachIn.at(k, ii);
+    if (describedIn - ri > options.leftoverTolerance)
+      findings.push_back({DefectKind::Leftover, FeatureSide::Inside, i, describedIn - ri, describedIn, -1,
+                          std::isnan(reachIn.described[k]) ? -1 : pathIn[k].move});
   }
   if (findings.empty()) return out;
 
-  // Which block did it: replay both runs move by move; a gouge belongs to the
-  // real move after which the column first went below the described part, a
-  // leftover to the ideal move after which the described part went below what stayed.
+  // Which block did it: replay the runs move by move. A gouge belongs to the
+  // real move after which the column first went below the described part; one
+  // below the programmed path counts only when that move's own programmed path
+  // runs over the column (a grooving blade's width beside its plunge is the
+  // tool's, not a gouge). A leftover belongs to the ideal move after which the
+  // described part went below what stayed.
   CutSimulator realReplay(timeline, setup, tools, cutOptions);
   CutSimulator idealReplay(idealTimeline, setup, idealTools, idealOptions);
+  // A leftover against the programmed path belongs to the block whose path lies there.
+  const auto fromPath = [](const Finding& f) { return f.kind == DefectKind::Leftover && f.pathMove >= 0; };
   std::size_t pending = findings.size();
+  for (const Finding& f : findings) pending -= fromPath(f) ? 1 : 0;
   for (std::size_t k = 0; k < timeline.moves.size() && pending > 0; ++k) {
     const machine::Move& m = timeline.moves[k];
     if (m.tStart >= end) break;
@@ -205,12 +409,16 @@ PartCheck checkPart(const machine::Timeline& timeline, const CutSetup& setup, co
     idealReplay.advanceTo(t);
     if (m.kind == machine::MoveKind::Dwell) continue;
     for (Finding& f : findings) {
-      if (f.cause >= 0) continue;
-      const Stock& s = f.kind == DefectKind::Gouge ? realReplay.stock() : idealReplay.stock();
-      const Stock& other = f.kind == DefectKind::Gouge ? b : a;  // the final described / real surface
+      if (f.cause >= 0 || fromPath(f)) continue;
       const bool outside = f.side == FeatureSide::Outside;
+      const Stock& s = f.kind == DefectKind::Gouge ? realReplay.stock() : idealReplay.stock();
       const double now = outside ? s.outerRadius(f.column) : s.innerRadius(f.column);
-      const double mark = outside ? other.outerRadius(f.column) : other.innerRadius(f.column);
+      double mark = 0.0;
+      if (f.kind == DefectKind::Gouge) {
+        mark = f.described;
+      } else {
+        mark = outside ? a.outerRadius(f.column) : a.innerRadius(f.column);
+      }
       const double tol = f.kind == DefectKind::Gouge ? options.gougeTolerance : options.leftoverTolerance;
       if (outside ? now < mark - tol : now > mark + tol) {
         f.cause = static_cast<int>(k);
@@ -218,6 +426,15 @@ PartCheck checkPart(const machine::Timeline& timeline, const CutSetup& setup, co
       }
     }
   }
+  // A gouge below the programmed path that its own move did not make over the
+  // column is the tool's form (a blade's width, a parting cut): not a defect.
+  std::erase_if(findings, [&](const Finding& f) {
+    if (f.pathMove < 0 || f.kind != DefectKind::Gouge) return false;
+    if (f.cause < 0) return true;
+    const machine::Move& cause = timeline.moves[static_cast<std::size_t>(f.cause)];
+    return !runsOver(cause, a.zCentre(f.column));
+  });
+  if (findings.empty()) return out;
 
   // Runs of neighbouring columns with the same kind, side and cause are one defect.
   std::sort(findings.begin(), findings.end(), [](const Finding& x, const Finding& y) {
@@ -229,7 +446,8 @@ PartCheck checkPart(const machine::Timeline& timeline, const CutSetup& setup, co
     std::size_t e = k;
     while (e + 1 < findings.size() && findings[e + 1].kind == findings[k].kind &&
            findings[e + 1].side == findings[k].side && findings[e + 1].column == findings[e].column + 1 &&
-           findings[e + 1].cause == findings[k].cause)
+           findings[e + 1].cause == findings[k].cause && fromPath(findings[e + 1]) == fromPath(findings[k]) &&
+           (!fromPath(findings[k]) || findings[e + 1].pathMove == findings[k].pathMove))
       ++e;
     PartDefect d;
     d.kind = findings[k].kind;
@@ -242,7 +460,10 @@ PartCheck checkPart(const machine::Timeline& timeline, const CutSetup& setup, co
       d.z = a.zCentre(findings[m].column);
       d.diameter = 2.0 * findings[m].described;
     }
-    if (findings[k].cause >= 0) {
+    if (fromPath(findings[k])) {
+      d.line = programmed.moves[static_cast<std::size_t>(findings[k].pathMove)].line;
+      d.file = programmed.moves[static_cast<std::size_t>(findings[k].pathMove)].file;
+    } else if (findings[k].cause >= 0) {
       d.line = timeline.moves[static_cast<std::size_t>(findings[k].cause)].line;
       d.file = timeline.moves[static_cast<std::size_t>(findings[k].cause)].file;
     }

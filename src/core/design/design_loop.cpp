@@ -22,6 +22,7 @@ using cut::FeatureKind;
 using cut::PartFeature;
 
 constexpr double kZSlack = 0.1;  // mm: two stock columns, where a feature's ends are read
+constexpr double kThreadDepthSlack = 0.05;  // mm on the minor Ø: the thread read from the cut columns
 
 std::string num(double v) { return detail::plain(v); }
 
@@ -136,9 +137,12 @@ std::vector<Diagnostic> compareToDrawing(const PartDesign& part, const cut::Part
                           return f.kind == FeatureKind::Groove && near(f.diameter, g.diameter) &&
                                  near(f.zRight, g.z, kZSlack) && near(f.width, g.width, kZSlack);
                         }});
-  for (const Thread& t : part.threads)
-    expected.push_back({"×" + num(t.pitch), t.z, t.z - t.length, false, [=](const PartFeature& f) {
-                          return f.kind == FeatureKind::Thread && near(f.pitch, t.pitch) && overlaps(f, t.z, t.z - t.length);
+  // A thread is its pitch on the designed major Ø down to the designed minor Ø
+  // (a thread cut deeper or shallower than drawn is not the drawn thread).
+  for (const ThreadMark& t : partOutline(part).threads)
+    expected.push_back({"M" + num(2.0 * t.major) + "×" + num(t.pitch), t.zRight, t.zLeft, false, [=](const PartFeature& f) {
+                          return f.kind == FeatureKind::Thread && near(f.pitch, t.pitch) && overlaps(f, t.zRight, t.zLeft) &&
+                                 near(f.diameter, 2.0 * t.major) && near(f.minorDiameter, 2.0 * t.minor, kThreadDepthSlack);
                         }});
   std::vector<Diagnostic> out;
   for (const Expected& e : expected) {
@@ -176,7 +180,8 @@ DesignLoop runDesignLoop(const PartDesign& part, const GenerateOptions& options,
     if (d.severity == Severity::Error || d.severity == Severity::Alarm) loop.problems.push_back(d);
   if (!job.timeline || !loop.problems.empty()) return loop;
   const cut::CutSetup cutSetup = cut::CutSetup::from(file.value->header, setup);
-  cut::PartCheck check = cut::checkPart(*job.timeline, cutSetup);
+  const machine::Timeline programmed = cut::programmedPath(job.program, setup, jobOptions.run, *job.timeline);
+  cut::PartCheck check = cut::checkPart(*job.timeline, programmed, cutSetup);
   if (check.stoppedBy) loop.problems.push_back(*check.stoppedBy);
   loop.cut = std::make_unique<cut::Stock>(check.cut);
   loop.features = cut::partFeatures(*loop.cut);

@@ -92,6 +92,7 @@ struct Run {
   std::vector<Diagnostic> checkDiagnostics;
   machine::MachineSetup setup;
   machine::Timeline timeline;
+  machine::Timeline programmed;  // G41/G42 read, not applied (the part check's programmed path)
 };
 
 inline Run runProgramText(const std::string& text) {
@@ -104,6 +105,9 @@ inline Run runProgramText(const std::string& text) {
   const gcode::Program program = gcode::parse(run.file.gcode, run.file.gcodeFirstLine);
   run.checkDiagnostics = gcode::check(program);
   run.timeline = machine::interpret(program, run.setup);
+  machine::RunOptions plain;
+  plain.noseCompensation = false;
+  run.programmed = machine::interpret(program, run.setup, plain);
   return run;
 }
 

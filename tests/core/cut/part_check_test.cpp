@@ -2,6 +2,7 @@
 // circle and front edges) against the real cut, on a pawn's neck.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -59,7 +60,7 @@ PartCheck checkWith(const std::string& program, double trailingDeg) {
   const CutSetup setup = CutSetup::from(run.file.header, run.setup);
   ToolLibrary tools(setup.tools, setup.offsets);
   tools.set(1, 1, insert(trailingDeg));
-  return checkPart(run.timeline, setup, tools);
+  return checkPart(run.timeline, run.programmed, setup, tools);
 }
 
 TEST(PartCheck, An80DegreeInsertGougesThePawnsNeckByItsTrailingEdge) {
@@ -103,10 +104,127 @@ TEST(PartCheck, A35DegreeInsertFollowsTheSameNeck) {
   EXPECT_TRUE(checkWith(kPawnNeck, 52.0).defects.empty());
 }
 
+// The samples with one thing changed, run as runProgramText runs them.
+testing::Run runWith(const std::string& text, int row, io::Offset offset) {
+  testing::Run run = testing::runProgramText(text);
+  run.setup.offsets.at(row) = offset;
+  const gcode::Program program = gcode::parse(run.file.gcode, run.file.gcodeFirstLine);
+  run.timeline = machine::interpret(program, run.setup);
+  machine::RunOptions plain;
+  plain.noseCompensation = false;
+  run.programmed = machine::interpret(program, run.setup, plain);
+  return run;
+}
+
+TEST(PartCheck, AWrongTipNumberOnTheThreadingToolIsAGougeOnTheFirstPass) {
+  // Row 03 says tip 7 (the left middle of the tool) for the 60° threading tool,
+  // whose point is its bottom middle (tip 8): the point runs half the tool's
+  // height below every programmed pass. The programmed passes end at X28.16.
+  const std::string sample = readText(samplesDir() + "/02-thread.txt");
+  const testing::Run run = runWith(sample, 3, io::Offset{0.0, 0.0, 0.0, 7});
+  const CutSetup setup = CutSetup::from(run.file.header, run.setup);
+  const PartCheck check = checkPart(run.timeline, run.programmed, setup);
+  ASSERT_FALSE(check.defects.empty());
+  const PartDefect& g = check.defects.front();
+  EXPECT_EQ(g.kind, DefectKind::Gouge);
+  EXPECT_EQ(g.side, FeatureSide::Outside);
+  EXPECT_EQ(g.line, 21);  // N130, the first G32 pass
+  // How far the point lies below the controlled point: half the cutting edge's height.
+  ToolLibrary tools(setup.tools, setup.offsets);
+  const ToolShape* shape = tools.get(3, 3);
+  ASSERT_NE(shape, nullptr);
+  double lowest = 0.0, highest = 0.0;
+  for (const Trapezoid& t : shape->cutting) {
+    lowest = std::min({lowest, t.bottom0, t.bottom1});
+    highest = std::max({highest, t.top0, t.top1});
+  }
+  const double below = -lowest;
+  EXPECT_NEAR(below, highest, 0.26);  // the middle, to the half pixel
+  EXPECT_GT(below, 5.0);
+  // Each pass's point at its X minus that; the last (X28.16) is the deepest.
+  EXPECT_NEAR(g.depth, below, 0.01);
+  EXPECT_NEAR(g.diameter, 28.16, 0.001);
+  EXPECT_NEAR(g.zRight, 0.0, 1e-9);
+  const std::vector<Diagnostic> ds = partCheckDiagnostics(check);
+  EXPECT_EQ(ds.front().code, "W320");
+  // With the row's own tip 8 the same thread is clean.
+  const testing::Run right = runWith(sample, 3, io::Offset{0.0, 0.0, 0.0, 8});
+  EXPECT_TRUE(checkPart(right.timeline, right.programmed, CutSetup::from(right.file.header, right.setup)).defects.empty());
+}
+
+TEST(PartCheck, WithoutNoseCompensationTheChamfersAndTheRoundAreLeftFat) {
+  // Sample 01 finished without its G42: the imaginary tip follows the drawn
+  // contour and the R0.8 nose leaves, square to a 45° chamfer, 0.8(√2-1); on the
+  // radius that is 0.8(√2-1)√2 = 0.8(2-√2). The cylinders and the shoulders'
+  // inside corners (the nose's own fillet) are not defects.
+  std::string program = readText(samplesDir() + "/01-step-shaft.txt");
+  program.replace(program.find("G42 "), 4, "");
+  const testing::Run run = runProgramText(program);
+  const PartCheck check = checkPart(run.timeline, run.programmed, CutSetup::from(run.file.header, run.setup));
+  ASSERT_EQ(check.defects.size(), 3u);
+  const double radial = 0.8 * (2.0 - std::sqrt(2.0));
+  const PartDefect& c3 = check.defects[0];  // right to left
+  EXPECT_EQ(c3.kind, DefectKind::Leftover);
+  EXPECT_EQ(c3.line, 43);  // N350 X30. Z-3.
+  EXPECT_NEAR(c3.depth, radial, 0.002);
+  EXPECT_NEAR(c3.zRight, 0.0, 1e-9);
+  EXPECT_NEAR(c3.zLeft, -3.0, 0.06);
+  EXPECT_EQ(check.defects[1].line, 46);  // N380 G03 X40. Z-22. R2.
+  EXPECT_EQ(check.defects[1].kind, DefectKind::Leftover);
+  const PartDefect& c1 = check.defects[2];
+  EXPECT_EQ(c1.line, 49);  // N410 X46. Z-41.
+  EXPECT_NEAR(c1.depth, radial, 0.002);
+  EXPECT_NEAR(c1.zRight, -40.0, 0.06);
+  EXPECT_NEAR(c1.zLeft, -41.0, 0.06);
+  for (const Diagnostic& d : partCheckDiagnostics(check)) EXPECT_EQ(d.code, "W321");
+}
+
+// An inch pin in an old shop's habits: G20, no G41/G42, a .05 chamfer and a
+// 10° taper finished by G70 with the R0.8 (1/32") insert of row 01.
+const std::string kInchPin =
+    "Guide pin\nGP-2\nCRS\n138\n180\nKlueng tests\n"
+    "O2010 (GUIDE PIN - NO TNC)\n"
+    "G20\n"
+    "G00 G18 G40 G99\n"
+    "T0101\n"
+    "G50 S3000\n"
+    "G96 S500 M03\n"
+    "G00 X1.6 Z.1 M08\n"
+    "G71 U.05 R.02\n"
+    "G71 P10 Q20 U.02 W.005 F.01\n"
+    "N10 G00 X.9\n"
+    "G01 Z0. F.005\n"
+    "X1. Z-.05\n"
+    "Z-.75\n"
+    "X1.2 Z-1.317\n"
+    "Z-1.6\n"
+    "N20 X1.6\n"
+    "G70 P10 Q20\n"
+    "G00 X3. Z2. M09\n"
+    "M30\n";
+
+TEST(PartCheck, AnInchChamferWithoutCompensationComesOutSmallerThanDrawn) {
+  const testing::Run run = runProgramText(kInchPin);
+  EXPECT_FALSE(hasErrors(run.checkDiagnostics));
+  const PartCheck check = checkPart(run.timeline, run.programmed, CutSetup::from(run.file.header, run.setup));
+  ASSERT_GE(check.defects.size(), 2u);
+  // The .05" chamfer (Z0 to Z-1.27): 0.8(2-√2) mm left on the radius.
+  const PartDefect& chamfer = check.defects[0];
+  EXPECT_EQ(chamfer.kind, DefectKind::Leftover);
+  EXPECT_EQ(chamfer.line, 23);  // the G70 block: its moves are the profile's
+  EXPECT_NEAR(chamfer.depth, 0.8 * (2.0 - std::sqrt(2.0)), 0.002);
+  EXPECT_NEAR(chamfer.zLeft, -1.27, 0.06);
+  // The 10° taper (Z-19.05 to Z-33.45) is left fat too.
+  bool taper = false;
+  for (const PartDefect& d : check.defects)
+    taper = taper || (d.kind == DefectKind::Leftover && d.zLeft < -30.0 && d.zRight > -21.0);
+  EXPECT_TRUE(taper);
+}
+
 TEST(PartCheck, TheSamplesAsTheyAreHaveNoDefects) {
   for (const char* name : {"/01-step-shaft.txt", "/02-thread.txt"}) {
     const testing::Run run = runProgramText(readText(samplesDir() + name));
-    const PartCheck check = checkPart(run.timeline, CutSetup::from(run.file.header, run.setup));
+    const PartCheck check = checkPart(run.timeline, run.programmed, CutSetup::from(run.file.header, run.setup));
     EXPECT_TRUE(check.defects.empty()) << name << ": " << check.defects.size() << " first at line "
                                        << (check.defects.empty() ? 0 : check.defects[0].line);
     EXPECT_FALSE(check.nothingCut);
@@ -133,14 +251,14 @@ TEST(PartCheck, NothingCutSaysSo) {
   const std::string rapidsOnly =
       "Rapids\nR-1\nSteel\n150\n1100\nKlueng tests\nO0001\nN10 G21 G99\nN20 T0101\nN30 G00 X60. Z5.\nN40 X80. Z50.\nN50 M30\n";
   const testing::Run run = runProgramText(rapidsOnly);
-  const PartCheck check = checkPart(run.timeline, CutSetup::from(run.file.header, run.setup));
+  const PartCheck check = checkPart(run.timeline, run.programmed, CutSetup::from(run.file.header, run.setup));
   EXPECT_TRUE(check.nothingCut);
   EXPECT_TRUE(check.defects.empty());
   const std::vector<Diagnostic> ds = partCheckDiagnostics(check);
   ASSERT_EQ(ds.size(), 1u);
   EXPECT_EQ(ds[0].code, "I325");
   // No moves at all, and an empty timeline: no crash.
-  EXPECT_TRUE(checkPart(machine::Timeline{}, CutSetup{}).nothingCut);
+  EXPECT_TRUE(checkPart(machine::Timeline{}, machine::Timeline{}, CutSetup{}).nothingCut);
 }
 
 }  // namespace

@@ -23,7 +23,8 @@ std::size_t defectsOf(const std::string& text, const machine::MachineSetup& setu
   options.run.dialect = dialect;
   const auto file = io::parseProgramFile(text);
   const machine::CompiledJob job = machine::compileJob(*file.value, setup, options);
-  return cut::checkPart(*job.timeline, cut::CutSetup::from(file.value->header, setup)).defects.size();
+  const machine::Timeline programmed = cut::programmedPath(job.program, setup, options.run, *job.timeline);
+  return cut::checkPart(*job.timeline, programmed, cut::CutSetup::from(file.value->header, setup)).defects.size();
 }
 
 class BushInEveryDialect : public ::testing::TestWithParam<gcode::Dialect> {};

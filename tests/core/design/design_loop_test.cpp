@@ -5,6 +5,7 @@
 
 #include "design_test_util.h"
 #include "klueng/core/design/design_loop.h"
+#include "klueng/core/diagnostic_codes.h"
 
 #include <fmt/format.h>
 
@@ -245,6 +246,27 @@ TEST(DesignLoop, ASolidBarIsDrilledThenBoredInEveryDialect) {
     EXPECT_LT(cut.innerRadius(cut.columnAt(-53.0)), 5.0);
     EXPECT_NEAR(cut.innerRadius(cut.columnAt(-40.0)), 9.0, 0.01);  // bored Ø18
   }
+}
+
+TEST(DesignLoop, AWrongTipOnTheThreadingToolsRowFailsTheLoop) {
+  // Offset row 03 set to tip 7 for the 60° threading tool (its point is tip 8):
+  // the point runs half the tool's height under every pass. The loop compares
+  // the cut with the design, so the thread is not the drawn M30x1.5 and the
+  // part check finds the gouge on the threading block.
+  machine::MachineSetup setup = machine::loadMachineSetup(KLUENG_SOURCE_DIR).setup;
+  const PartDesign part = shipped("threaded-bush.json");
+  EXPECT_TRUE(runDesignLoop(part, optionsFor(gcode::Dialect::Fanuc, setup), setup).matches());
+  setup.offsets.at(3).tip = 7;
+  const DesignLoop loop = runDesignLoop(part, optionsFor(gcode::Dialect::Fanuc, setup), setup);
+  ASSERT_TRUE(loop.program);
+  EXPECT_FALSE(loop.matches());
+  bool notAsDrawn = false, gouge = false;
+  for (const Diagnostic& d : loop.findings) {
+    notAsDrawn = notAsDrawn || (d.code == codes::kNotAsDrawn && !d.args.empty() && d.args[0] == "M30×1.5");
+    gouge = gouge || d.code == codes::kPartGouge;
+  }
+  EXPECT_TRUE(notAsDrawn);
+  EXPECT_TRUE(gouge);
 }
 
 }  // namespace

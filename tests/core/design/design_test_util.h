@@ -12,6 +12,7 @@
 #include "klueng/core/cut/part_features.h"
 #include "klueng/core/design/part_design.h"
 #include "klueng/core/io/program_file.h"
+#include "klueng/core/cut/part_check.h"
 #include "klueng/core/machine/job.h"
 #include "klueng/core/machine/setup_files.h"
 
@@ -32,6 +33,7 @@ inline PartDesign stepShaft() {
 
 struct Turned {
   machine::CompiledJob job;
+  machine::Timeline programmed;  // the part check's programmed path
   std::unique_ptr<cut::CutSimulator> sim;
 };
 
@@ -45,6 +47,7 @@ inline Turned turn(const std::string& text, gcode::Dialect dialect, const machin
   for (const Diagnostic& d : t.job.diagnostics)
     EXPECT_NE(d.severity, Severity::Error) << d.code << " line " << d.range.line << "\n" << text;
   if (!t.job.timeline) return t;
+  t.programmed = cut::programmedPath(t.job.program, setup, options.run, *t.job.timeline);
   t.sim = std::make_unique<cut::CutSimulator>(*t.job.timeline, cut::CutSetup::from(file.value->header, setup));
   t.sim->runToEnd();
   return t;

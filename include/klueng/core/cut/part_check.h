@@ -1,15 +1,24 @@
 #pragma once
-// Part check (issue 10, item 2): the part the program describes is what the
-// ideal tool cuts — the nose circle on the controlled path (G41/G42 applied),
-// with the tool's front edges (a grooving blade's width, a boring bar's end)
-// but none of its trailing edges; threading passes and drilling on the axis
-// keep the whole tool, their form is the tool's. Compared with the real cut by
-// the tool shapes: material the real tool removed inside the described part is
-// a GOUGE (an 80° insert's trailing edge running down into a neck), material
-// it left outside beyond a tolerance is a LEFTOVER. Each is reported with its
-// depth, extent and the block that caused it.
+// Part check (issue 10 item 2, issue 28 item 1): the real cut against the part
+// the program describes, two ways:
+// - the ideal tool on the controlled path — the nose circle with the tool's
+//   front edges (a grooving blade's width, a boring bar's end) but none of its
+//   trailing edges; threading passes and drilling on the axis keep the whole
+//   tool — finds what the tool's own shape does (an 80° insert's trailing edge
+//   running down into a neck);
+// - the PROGRAMMED path (G41/G42 read but not applied: the contour where
+//   compensation is on, the imaginary tip's path where it is off) finds what
+//   the offset row and the compensation do: a real cut below the path of the
+//   very move that made it (a wrong tip number puts the tool's edge elsewhere:
+//   a thread 7 mm too deep) is a gouge; material left above the programmed
+//   contour is a leftover (a chamfer cut without G41/G42 by a R0.8 nose), except
+//   what no round nose of the tool's radius can reach (the fillet in a concave
+//   corner is the tool's, as on every real part).
+// Material removed inside the described part is a GOUGE, material left outside
+// it beyond a tolerance a LEFTOVER, each with its depth, extent and block.
 //
-//   const PartCheck check = checkPart(timeline, CutSetup::from(header, setup));
+//   const Timeline programmed = programmedPath(program, setup, options, run);
+//   const PartCheck check = checkPart(run, programmed, CutSetup::from(header, setup));
 //   for (const Diagnostic& d : partCheckDiagnostics(check)) ...   // W320 / W321 / I322 / I323
 #include <optional>
 #include <vector>
@@ -17,6 +26,8 @@
 #include "klueng/core/cut/cut_simulator.h"
 #include "klueng/core/cut/part_features.h"
 #include "klueng/core/diagnostic.h"
+#include "klueng/core/gcode/program.h"
+#include "klueng/core/machine/interpreter.h"
 
 namespace klueng::core::cut {
 
@@ -49,11 +60,19 @@ struct PartCheck {
   double largestLeftover() const;
 };
 
-PartCheck checkPart(const machine::Timeline& timeline, const CutSetup& setup, const PartCheckOptions& options = {});
+// The programmed path of `run`: the same program run with G41/G42 read but not
+// applied (#500-#999 neither read from nor written to a file); `run` itself
+// when none of its moves was compensated.
+machine::Timeline programmedPath(const gcode::Program& program, const machine::MachineSetup& setup,
+                                 machine::RunOptions options, const machine::Timeline& run);
+
+// `run`: the program as the machine runs it; `programmed`: programmedPath() of it.
+PartCheck checkPart(const machine::Timeline& run, const machine::Timeline& programmed, const CutSetup& setup,
+                    const PartCheckOptions& options = {});
 
 // The same with ready tool shapes (tests): `tools` must give every (tool, offset) the timeline uses.
-PartCheck checkPart(const machine::Timeline& timeline, const CutSetup& setup, const ToolLibrary& tools,
-                    const PartCheckOptions& options = {});
+PartCheck checkPart(const machine::Timeline& run, const machine::Timeline& programmed, const CutSetup& setup,
+                    const ToolLibrary& tools, const PartCheckOptions& options = {});
 
 // W320 per gouge and W321 per leftover at their block's line; I322 when the run
 // stopped on an alarm, I323 when nothing was cut.

@@ -28,6 +28,7 @@ class Stock {
   double length() const { return length_; }
   double resolution() const { return dz_; }
   int columnCount() const { return static_cast<int>(columns_.size()); }
+  double columnWidth() const { return dz_; }
   double zLeft(int i) const { return -length_ + i * dz_; }
   double zRight(int i) const { return i + 1 == columnCount() ? 0.0 : -length_ + (i + 1) * dz_; }
   double zCentre(int i) const { return -length_ + (i + 0.5) * dz_; }
