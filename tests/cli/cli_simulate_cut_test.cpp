@@ -27,9 +27,9 @@ struct Result {
 };
 
 // Runs klueng-cli with stderr captured (stdout discarded).
-Result simulate(const std::string& args) {
+Result simulate(const std::string& args, const std::string& config = kCutShipped) {
   const std::string command = "env LC_ALL= LC_MESSAGES= LANG=C '" + kCut + "' simulate " + args + " --config '" +
-                              kCutShipped + "' 2>&1 >/dev/null";
+                              config + "' 2>&1 >/dev/null";
   Result r;
   FILE* pipe = ::popen(command.c_str(), "r");
   if (!pipe) return r;
@@ -213,6 +213,35 @@ TEST(CliPartCheck, ThePawnsNeckGougesWithThe80DegreeInsertOnly) {
   EXPECT_EQ(vnmg.err.find("W320"), std::string::npos) << vnmg.err;
   const Result thai = simulate("'" + file.string() + "' --part-check --tool 1=cnmg-80-r08 --lang th");
   EXPECT_THAT(thai.err, HasSubstr("มีดตัดกินเนื้อชิ้นงานเกินแบบ"));
+}
+
+// Issue 28 item 1: the part check holds the cut to the programmed path, so a
+// wrong offset row and a missing G41/G42 show — given with --config's own rows.
+TEST(CliPartCheck, AWrongTipRowAndAMissingCompensationShowOnTheirBlocks) {
+  const fs::path config = fs::temp_directory_path() / "klueng_cli_wrong_tip";
+  fs::remove_all(config);
+  fs::create_directories(config);
+  for (const char* f : {"tools.cfg", "machine.cfg"}) fs::copy_file(fs::path(KLUENG_SOURCE_DIR) / f, config / f);
+  {
+    std::ifstream in(fs::path(KLUENG_SOURCE_DIR) / "offset.cfg");
+    std::ofstream out(config / "offset.cfg");
+    std::string line;
+    for (int row = 1; std::getline(in, line); ++row) out << (row == 3 ? "0 0 0 7" : line) << "\n";
+  }
+  fs::create_directory_symlink(fs::path(KLUENG_SOURCE_DIR) / "resources", config / "resources");
+  const Result thread = simulate("'" + kCutSamples + "/02-thread.txt' --part-check", config.string());
+  EXPECT_EQ(thread.exitCode, 0) << thread.err;
+  EXPECT_THAT(thread.err, HasSubstr("02-thread.txt:21:1: warning W320: Gouge 7.750 mm deep from Z0.000"));
+
+  const fs::path file = fs::temp_directory_path() / "klueng_cli_no_g42.txt";
+  std::ifstream in(kCutSamples + "/01-step-shaft.txt");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  text.replace(text.find("G42 "), 4, "");
+  std::ofstream(file) << text;
+  const Result fat = simulate("'" + file.string() + "' --part-check");
+  EXPECT_EQ(fat.exitCode, 0) << fat.err;
+  EXPECT_THAT(fat.err, HasSubstr(file.string() + ":43:1: warning W321: Material left 0.469 mm from Z0.000 to Z-3.000"));
+  EXPECT_THAT(fat.err, HasSubstr(file.string() + ":49:1: warning W321: Material left 0.469 mm from Z-40.000 to Z-41.000"));
 }
 
 TEST(CliPartCheck, SamplesAreCleanAndAnAlarmedRunSaysWhatWasChecked) {

@@ -119,8 +119,9 @@ bool onAxis(const machine::Move& m) { return std::abs(m.path.start.y()) < 1e-6 &
 bool beyondCentre(const machine::Move& m) { return m.path.start.y() < 0.0 || m.path.end.y() < 0.0; }
 
 // The programmed path over each column of `part` (the real cut) on one side: a
-// feed move belongs to the outside when it ends nearer the part's outside than
-// its bore. Drilling on the axis is the drill's form, not a contour.
+// feed move's side is its tool's (by the tip), else the outside when the move's
+// middle lies nearer the part's outside than its bore. Drilling on the axis is
+// the drill's form, not a contour.
 std::vector<ProgrammedColumn> programmedColumns(const machine::Timeline& programmed, const Stock& part,
                                                 ToolLibrary& shapes, double end, bool outside) {
   std::vector<ProgrammedColumn> out(static_cast<std::size_t>(part.columnCount()));
@@ -143,8 +144,7 @@ std::vector<ProgrammedColumn> programmedColumns(const machine::Timeline& program
     if (outsideMove != outside) continue;
     const double z0 = std::min(m.path.start.x(), m.path.end.x()), z1 = std::max(m.path.start.x(), m.path.end.x());
     if (z1 - z0 < dz) {  // a face or a retreat: a wall of the contour, over no column's width
-      const int i = part.columnAt(mid.x());
-      ProgrammedColumn& p = out[static_cast<std::size_t>(i)];
+      ProgrammedColumn& p = out[static_cast<std::size_t>(c)];
       const double extreme = outside ? std::max(m.path.start.y(), m.path.end.y())
                                      : std::min(m.path.start.y(), m.path.end.y());
       if (m.kind != machine::MoveKind::Thread && (std::isnan(p.wall) || (outside ? extreme > p.wall : extreme < p.wall)))
@@ -184,19 +184,18 @@ std::vector<double> opening(const std::vector<double>& surface, double dz, doubl
     const double d = std::max(0.0, std::abs(di) * dz - dz / 2.0);
     return d >= r ? -1.0 : std::sqrt(r * r - d * d);
   };
+  const auto at = [](auto& v, int i) -> auto& { return v[static_cast<std::size_t>(i)]; };
+  // The lowest centre of a disk over column c that clears every column it spans ...
   std::vector<double> centre(static_cast<std::size_t>(n), -std::numeric_limits<double>::infinity());
   for (int c = 0; c < n; ++c)
-    for (int j = std::max(0, c - reach); j <= std::min(n - 1, c + reach); ++j) {
-      const double h = rise(j - c);
-      if (h >= 0.0) centre[static_cast<std::size_t>(c)] = std::max(centre[static_cast<std::size_t>(c)], surface[static_cast<std::size_t>(j)] + h);
-    }
+    for (int j = std::max(0, c - reach); j <= std::min(n - 1, c + reach); ++j)
+      if (const double h = rise(j - c); h >= 0.0) at(centre, c) = std::max(at(centre, c), at(surface, j) + h);
+  // ... and the lowest point of any such disk over column i.
   std::vector<double> out(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
   for (int i = 0; i < n; ++i)
-    for (int c = std::max(0, i - reach); c <= std::min(n - 1, i + reach); ++c) {
-      const double h = rise(i - c);
-      if (h >= 0.0) out[static_cast<std::size_t>(i)] = std::min(out[static_cast<std::size_t>(i)], centre[static_cast<std::size_t>(c)] - h);
-    }
-  for (int i = 0; i < n; ++i) out[static_cast<std::size_t>(i)] = std::max(out[static_cast<std::size_t>(i)], surface[static_cast<std::size_t>(i)]);
+    for (int c = std::max(0, i - reach); c <= std::min(n - 1, i + reach); ++c)
+      if (const double h = rise(i - c); h >= 0.0) at(out, i) = std::min(at(out, i), at(centre, c) - h);
+  for (int i = 0; i < n; ++i) at(out, i) = std::max(at(out, i), at(surface, i));
   return out;
 }
 
