@@ -27,7 +27,7 @@ void HeaderStrip::retranslateUi() {
   if (plain_) return;
   const QString project = QString::fromStdString(header_.project);
   const QString part = QString::fromStdString(header_.part);
-  const QString size = QStringLiteral("Ø%1 × %2 mm").arg(header_.diameterMm()).arg(header_.lengthMm());
+  const QString size = tr("Ø%1 × %2 mm").arg(header_.diameterMm()).arg(header_.lengthMm());  // "มม." in Thai
   setText(tr("Lines 1–6: job header — %1, %2, %3 (click to edit)")
               .arg(project.isEmpty() ? tr("no project") : project, part.isEmpty() ? tr("no part") : part, size));
   setToolTip(tr("The file's first six lines hold the project, part, material, stock diameter, stock length and "
