@@ -168,6 +168,16 @@ std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part,
               return rect;
           }
         }
+        // Beyond the line's upper end, the line carried on to it (a thread's teeth
+        // leave no clear place across the part).
+        if (!inside) {
+          const QRectF above(top.x() - 0.6 * mm - textH, top.y() - 2.0 * mm - w, textH, w);
+          if (!touchesAny(above, frame.partLines) &&
+              std::none_of(texts.begin(), texts.end(), [&](const QRectF& t) { return t.intersects(above); })) {
+            d.lines.emplace_back(top, QPointF(top.x(), above.top()));
+            return above;
+          }
+        }
         return first;  // nowhere clear (a part too small on paper): the usual place
       };
       const QRectF best = place();
@@ -201,7 +211,7 @@ std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part,
 
   // Leaders above the part: chamfers, radii, tapers, grooves; staggered so labels
   // never overlap, turned to the anchor's left where the frame ends on its right.
-  std::vector<QRectF> placed;
+  std::vector<QRectF> placed = texts;  // the diameters' texts too: a leader's label keeps off them
   double noseRadius = 0.0;
   for (const auto* list : {&part.outside, &part.inside}) {
     for (const PartFeature& f : *list) {
