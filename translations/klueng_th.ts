@@ -290,7 +290,7 @@
     </message>
     <message>
         <source>Haas ST (NGC)</source>
-        <translation>Haas ST (NGC) เครื่องกลึงฮาส</translation>
+        <translation>เครื่องกลึง Haas ST (NGC)</translation>
     </message>
     <message>
         <location filename="../src/gui/help_contents.cpp" line="52" />
@@ -1089,6 +1089,18 @@
         <location filename="../src/gui/dialect_offer_bar.cpp" line="89" />
         <source>Switch to %1</source>
         <translation>เปลี่ยนเป็น %1</translation>
+    </message>
+    <message>
+        <source>Haas ST (NGC)</source>
+        <translation>Haas ST (NGC)</translation>
+    </message>
+    <message>
+        <source>Rook classic (1999 rules)</source>
+        <translation>Rook แบบดั้งเดิม (กฎปี 1999)</translation>
+    </message>
+    <message>
+        <source>Fanuc 0i-TF</source>
+        <translation>Fanuc 0i-TF</translation>
     </message>
 </context>
 <context>

@@ -13,15 +13,6 @@
 
 namespace klueng::gui {
 
-namespace {
-
-QString profileName(core::gcode::Dialect d, bool thai) {
-  const auto& p = core::gcode::machineProfile(d);
-  const std::string_view name = thai ? p.nameTh : p.nameEn;
-  return QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
-}
-
-}  // namespace
 
 DialectOfferBar::DialectOfferBar(QWidget* parent) : QWidget(parent) {
   setObjectName(QStringLiteral("dialectOffer"));
@@ -65,8 +56,11 @@ void DialectOfferBar::changeEvent(QEvent* event) {
 }
 
 void DialectOfferBar::retranslate() {
-  const bool thai = Language::instance()->language() == QStringLiteral("th");
-  const QString name = profileName(dialect_, thai);
+  // The dialect as the Tool setting menu names it, in both languages (issue 28 item 8):
+  // brand names stay in Latin letters ("Haas", never "ฮาส").
+  const QString name = dialect_ == core::gcode::Dialect::Haas      ? tr("Haas ST (NGC)")
+                       : dialect_ == core::gcode::Dialect::Classic ? tr("Rook classic (1999 rules)")
+                                                                   : tr("Fanuc 0i-TF");
   label_->setText(tr("Blocks in %1 form that the current dialect refuses: %2. The %1 dialect accepts the "
                      "whole program.")
                       .arg(name)

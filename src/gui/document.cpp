@@ -20,8 +20,9 @@ LoadedProgram Document::load(const QString& path, const core::io::JobHeader& def
                              const core::machine::MachineSetup& setup, const core::machine::RunOptions& run) {
   LoadedProgram out;
   out.path = QFileInfo(path).absoluteFilePath();
-  core::io::JobHeader defaults = defaultsForPlain;
-  takeStock(defaults, core::io::JobHeader{});  // never another file's stock
+  // Never another file's stock, project, part or material (issue 28 item 3).
+  core::io::JobHeader defaults = newProgramHeader(defaultsForPlain);
+  takeStock(defaults, core::io::JobHeader{});
   if (jobDetails) defaults = *jobDetails;
   auto result = core::io::readProgramFile(path.toStdString(), defaults);
   out.diagnostics = std::move(result.diagnostics);
@@ -65,6 +66,16 @@ int Document::firstOmittedLine() const {
   for (const core::Diagnostic& d : fileDiagnostics_)
     if (d.code == core::codes::kLineTooLong) return d.range.line;
   return 0;
+}
+
+core::io::JobHeader Document::newProgramHeader(const core::io::JobHeader& remembered) {
+  core::io::JobHeader h = remembered;
+  h.project.clear();
+  h.part.clear();
+  h.material.clear();
+  h.calculatorInput.reset();
+  h.toolsBeyondCentre.reset();
+  return h;
 }
 
 void Document::reset(const core::io::JobHeader& header) {

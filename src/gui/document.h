@@ -58,6 +58,10 @@ class Document : public QObject {
 
   // Start an untitled program with the given job details.
   void reset(const core::io::JobHeader& header);
+  // What a new or plain program starts with from the remembered Job details:
+  // the programmer and the stock size; never another job's project, part or
+  // material, which would print on this program's sheets (issue 28 item 3).
+  static core::io::JobHeader newProgramHeader(const core::io::JobHeader& remembered);
   // Take over a successfully loaded program.
   void adopt(const LoadedProgram& loaded);
 

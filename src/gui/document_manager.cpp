@@ -111,7 +111,7 @@ bool DocumentManager::maybeSave() {
 
 void DocumentManager::newFile() {
   if (!maybeSave()) return;
-  newFileUnchecked(settings_->lastJobHeader());
+  newFileUnchecked(Document::newProgramHeader(settings_->lastJobHeader()));
   emit cleared();
 }
 
@@ -274,7 +274,8 @@ void DocumentManager::rememberFile() {
   const QString path = document_->filePath();
   settings_->addRecentFile(path);
   settings_->setLastDirectory(QFileInfo(path).absolutePath());
-  if (!document_->isPlainGcode()) settings_->setLastJobHeader(document_->header());
+  // Opening a file never makes its job header the next program's (issue 28 item 3):
+  // only what the user types in Job details is remembered.
   watchFile(path);
 }
 

@@ -9,9 +9,10 @@ HeaderStrip::HeaderStrip(QWidget* parent) : QLabel(parent) {
   setObjectName(QStringLiteral("headerStrip"));
   setContentsMargins(6, 2, 6, 2);
   setCursor(Qt::PointingHandCursor);
-  // A long project name is cut at the pane's edge (the tooltip and Job Details have it all);
-  // it never widens the editor pane.
+  // A long line (Thai at 1366 px, a long project name) wraps in the pane rather than
+  // losing "(click to edit)" at its edge; it never widens the editor pane.
   setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+  setWordWrap(true);
   setStyleSheet(QStringLiteral("QLabel { background: #f0f0ea; color: #606060; border-bottom: 1px solid #d8d8d0; }"));
   setVisible(false);
 }
@@ -27,7 +28,7 @@ void HeaderStrip::retranslateUi() {
   if (plain_) return;
   const QString project = QString::fromStdString(header_.project);
   const QString part = QString::fromStdString(header_.part);
-  const QString size = QStringLiteral("Ø%1 × %2 mm").arg(header_.diameterMm()).arg(header_.lengthMm());
+  const QString size = tr("Ø%1 × %2 mm").arg(header_.diameterMm()).arg(header_.lengthMm());  // "มม." in Thai
   setText(tr("Lines 1–6: job header — %1, %2, %3 (click to edit)")
               .arg(project.isEmpty() ? tr("no project") : project, part.isEmpty() ? tr("no part") : part, size));
   setToolTip(tr("The file's first six lines hold the project, part, material, stock diameter, stock length and "

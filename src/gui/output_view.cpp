@@ -245,6 +245,7 @@ void OutputView::fitToView() {
                              content.height() * 0.04),
             Qt::KeepAspectRatio);
   fitPending_ = false;
+  fitKept_ = true;
   if (controller_) controller_->setMaxStepMm(1.0 / pixelsPerMm());
   updateRulers();
   emit zoomChanged(pixelsPerMm());
@@ -254,6 +255,7 @@ void OutputView::zoomIn() { zoomBy(1.25, viewport()->rect().center()); }
 void OutputView::zoomOut() { zoomBy(0.8, viewport()->rect().center()); }
 
 void OutputView::zoomBy(double factor, const QPoint& anchor) {
+  fitKept_ = false;  // the user's zoom from now on
   const double now = pixelsPerMm();
   factor = std::clamp(now * factor, kMinPixelsPerMm, kMaxPixelsPerMm) / now;
   const QPointF before = mapToScene(anchor);
@@ -283,7 +285,7 @@ void OutputView::resizeEvent(QResizeEvent* event) {
   zRuler_->setGeometry(vp.left(), vp.top() - kRulerSize, vp.width(), kRulerSize);
   xRuler_->setGeometry(vp.left() - kRulerSize, vp.top(), kRulerSize, vp.height());
   corner_->setGeometry(vp.left() - kRulerSize, vp.top() - kRulerSize, kRulerSize, kRulerSize);
-  if (fitPending_) fitToView();
+  if (fitPending_ || fitKept_) fitToView();
   updateRulers();
 }
 
@@ -298,6 +300,7 @@ void OutputView::updateRulers() {
 }
 
 void OutputView::mouseMoveEvent(QMouseEvent* event) {
+  if (event->buttons() & Qt::LeftButton && dragMode() == QGraphicsView::ScrollHandDrag) fitKept_ = false;  // panned
   QGraphicsView::mouseMoveEvent(event);
   const core::Vec2 p = render::fromScene(snapped(mapToScene(event->position().toPoint())));
   emit cursorPositionChanged(core::diameterOf(p), core::zOf(p));

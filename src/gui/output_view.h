@@ -129,6 +129,9 @@ class OutputView : public QGraphicsView {
   QPointF toolStart_;  // where the tool is parked before the run (kept in the fitted view)
   bool showPath_ = true;
   bool fitPending_ = true;
+  // The view is as Fit left it (no zoom or pan since): a resize fits again, so a
+  // window laid out after its first fit never keeps a tiny viewport's wide view.
+  bool fitKept_ = false;
   const void* fittedTimeline_ = nullptr;
   qint64 paints_ = 0;
 };

@@ -1,9 +1,12 @@
 #include "render/drawing_dimensions.h"
 #include "render/number_text.h"
 
+#include "klueng/core/cut/part_span.h"
+
 #include <QFontMetricsF>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace klueng::render {
@@ -36,6 +39,70 @@ QPointF anchorOf(const PartFeature& f, const DimensionFrame& frame) {
 
 }  // namespace
 
+bool isMachiningTrace(const PartFeature& f, const core::cut::PartFeatures& part) {
+  constexpr double kSliver = 0.1;  // mm
+  switch (f.kind) {
+    case FeatureKind::Chamfer:
+    case FeatureKind::Taper:
+      if (std::max(f.length(), std::abs(f.diameterRight - f.diameterLeft) / 2.0) < kSliver) return true;
+      break;
+    case FeatureKind::Arc:
+      if (f.radius < kSliver) return true;
+      break;
+    default:
+      return false;
+  }
+  if (f.kind == FeatureKind::Arc) return false;
+  // A drill's point: a bevel in the bore that runs down to the axis.
+  const double smaller = std::min(f.diameterLeft, f.diameterRight);
+  if (f.side == FeatureSide::Inside && smaller <= 2.0 * core::cut::kPipRadius + 0.1) return true;
+  // A thread's run-out: a bevel within the thread's depth at its far end (the
+  // lead-in chamfer at the start, which goes deeper than the root, is kept).
+  const auto& list = f.side == FeatureSide::Inside ? part.inside : part.outside;
+  for (const PartFeature& t : list) {
+    if (t.kind != FeatureKind::Thread) continue;
+    const double lo = std::min(t.diameter, t.minorDiameter) - 0.05, hi = std::max(t.diameter, t.minorDiameter) + 0.05;
+    const bool withinDepth = smaller >= lo && std::max(f.diameterLeft, f.diameterRight) <= hi;
+    const bool atFarEnd = f.zRight <= t.zLeft + t.pitch + 1e-6 && f.zRight >= t.zLeft - 3.0 * t.pitch;
+    if (withinDepth && atFarEnd) return true;
+  }
+  return false;
+}
+
+namespace {
+
+bool segmentTouches(const QRectF& r, const QLineF& l) {
+  if (r.contains(l.p1()) || r.contains(l.p2())) return true;
+  const QRectF box = QRectF(l.p1(), l.p2()).normalized();
+  if (!box.adjusted(-0.5, -0.5, 0.5, 0.5).intersects(r)) return false;
+  const std::array<QLineF, 4> edges = {QLineF(r.topLeft(), r.topRight()), QLineF(r.topRight(), r.bottomRight()),
+                                       QLineF(r.bottomRight(), r.bottomLeft()), QLineF(r.bottomLeft(), r.topLeft())};
+  return std::any_of(edges.begin(), edges.end(),
+                     [&](const QLineF& e) { return l.intersects(e, nullptr) == QLineF::BoundedIntersection; });
+}
+
+// The surface-finish mark (ISO 21920-1: material removal required) standing on
+// the profile at `foot`, its text over the long leg's bar.
+DimensionItem finishMark(const QString& text, const QPointF& foot, double h, const QFontMetricsF& fm) {
+  DimensionItem d;
+  const QPointF shortTop = foot + QPointF(-h * 0.577, -h);
+  const QPointF longTop = foot + QPointF(2.0 * h * 0.577, -2.0 * h);
+  const double w = fm.horizontalAdvance(text);
+  d.lines.emplace_back(foot, shortTop);
+  d.lines.emplace_back(foot, longTop);
+  d.lines.emplace_back(shortTop, foot + QPointF(h * 0.577, -h));  // the bar closing the V: machined
+  d.lines.emplace_back(longTop, longTop + QPointF(w + 0.4 * h, 0.0));
+  d.text = text;
+  d.textRect = QRectF(longTop.x() + 0.2 * h, longTop.y() - fm.height(), w, fm.height());
+  return d;
+}
+
+}  // namespace
+
+bool touchesAny(const QRectF& rect, const std::vector<QLineF>& lines) {
+  return std::any_of(lines.begin(), lines.end(), [&](const QLineF& l) { return segmentTouches(rect, l); });
+}
+
 QRectF dimensionBounds(const DimensionItem& item) {
   QRectF box = item.textRect;
   for (const QLineF& l : item.lines) box = box.united(QRectF(l.p1(), l.p2()).normalized().adjusted(-1, -1, 1, 1));
@@ -48,32 +115,74 @@ std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part,
   const QFontMetricsF fm(frame.font, frame.device);
   const double mm = frame.mm;
   const double textH = fm.height();
+  const QRectF bounds = frame.bounds.isEmpty() ? QRectF(-1e9, -1e9, 2e9, 2e9) : frame.bounds;
   double maxR = 0.0;
   for (const PartFeature& f : part.outside) maxR = std::max({maxR, f.diameterLeft / 2.0, f.diameterRight / 2.0});
   const double topY = frame.toPage(part.zRight, maxR).y();
   const double bottomY = frame.toPage(part.zRight, -maxR).y();
   const auto pageX = [&](double z) { return frame.toPage(z, 0.0).x(); };
+  const auto mark = [&](const std::function<QString(const PartFeature&)>& fn, const PartFeature& f) {
+    return fn ? fn(f) : QString();
+  };
 
-  // Diameters across the part: outside on the line's left, bores on its right.
+  // Diameters across the part: outside on the line's left, bores on its right;
+  // each line where no other is near, each text off the part's lines and the other texts.
+  std::vector<double> lineXs;
+  std::vector<QRectF> texts;
   for (const auto* list : {&part.outside, &part.inside}) {
     for (const PartFeature& f : *list) {
       if (f.kind != FeatureKind::Cylinder && f.kind != FeatureKind::Thread) continue;
       if (std::abs(pageX(f.zRight) - pageX(f.zLeft)) < 2.5 * mm) continue;  // too short on paper to take a line
-      const double zc = (f.zLeft + f.zRight) / 2.0, r = f.diameter / 2.0;
+      const double r = f.diameter / 2.0;
       const bool inside = f.side == FeatureSide::Inside;
       // A thread in a bore: the line spans the bore's material, its minor Ø.
       const double rLine = f.kind == FeatureKind::Thread && inside ? f.minorDiameter / 2.0 : r;
       DimensionItem d;
       d.text = f.kind == FeatureKind::Thread ? label(f, frame.thai) : QStringLiteral("Ø") + num(f.diameter);
+      if (const QString tol = mark(frame.marks.tolerance, f); !tol.isEmpty()) d.text += QLatin1Char(' ') + tol;
+      const double w = fm.horizontalAdvance(d.text);
+      double zc = (f.zLeft + f.zRight) / 2.0;
+      for (const double at : {0.5, 0.3, 0.7, 0.15, 0.85}) {
+        const double z = f.zLeft + at * f.length();
+        if (std::none_of(lineXs.begin(), lineXs.end(), [&](double x) { return std::abs(x - pageX(z)) < 2.5 * mm; })) {
+          zc = z;
+          break;
+        }
+      }
       const QPointF top = frame.toPage(zc, rLine), bottom = frame.toPage(zc, -rLine);
+      lineXs.push_back(top.x());
       d.lines.emplace_back(top, bottom);
       d.arrows.emplace_back(top, bottom);
       d.arrows.emplace_back(bottom, top);
       d.vertical = true;
-      const double w = fm.horizontalAdvance(d.text);
-      const double centreY = frame.toPage(zc, rLine / 2.0).y();
-      const double x = inside ? top.x() + 0.6 * mm : top.x() - 0.6 * mm - textH;
-      d.textRect = QRectF(x, centreY - w / 2.0, textH, w);
+      const double span = bottom.y() - top.y();
+      const auto place = [&] {
+        QRectF first;
+        for (const bool left : {!inside, inside}) {
+          for (const double at : {0.25, 0.5, 0.75, 0.12, 0.88, 0.38, 0.62}) {
+            const double x = left ? top.x() - 0.6 * mm - textH : top.x() + 0.6 * mm;
+            const QRectF rect(x, top.y() + at * span - w / 2.0, textH, w);
+            if (first.isNull()) first = rect;
+            if (!touchesAny(rect, frame.partLines) &&
+                std::none_of(texts.begin(), texts.end(), [&](const QRectF& t) { return t.intersects(rect); }))
+              return rect;
+          }
+        }
+        // Beyond the line's upper end, the line carried on to it (a thread's teeth
+        // leave no clear place across the part).
+        if (!inside) {
+          const QRectF above(top.x() - 0.6 * mm - textH, top.y() - 2.0 * mm - w, textH, w);
+          if (!touchesAny(above, frame.partLines) &&
+              std::none_of(texts.begin(), texts.end(), [&](const QRectF& t) { return t.intersects(above); })) {
+            d.lines.emplace_back(top, QPointF(top.x(), above.top()));
+            return above;
+          }
+        }
+        return first;  // nowhere clear (a part too small on paper): the usual place
+      };
+      const QRectF best = place();
+      d.textRect = best;
+      texts.push_back(best);
       out.push_back(d);
     }
   }
@@ -100,8 +209,9 @@ std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part,
     out.push_back(lengthItem(shoulders[k], shoulders[k + 1], row1));
   out.push_back(lengthItem(part.zRight, part.zLeft, shoulders.size() > 2 ? row2 : row1));
 
-  // Leaders above the part: chamfers, radii, tapers, grooves; staggered so labels never overlap.
-  std::vector<QRectF> placed;
+  // Leaders above the part: chamfers, radii, tapers, grooves; staggered so labels
+  // never overlap, turned to the anchor's left where the frame ends on its right.
+  std::vector<QRectF> placed = texts;  // the diameters' texts too: a leader's label keeps off them
   double noseRadius = 0.0;
   for (const auto* list : {&part.outside, &part.inside}) {
     for (const PartFeature& f : *list) {
@@ -112,26 +222,45 @@ std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part,
       if (f.kind != FeatureKind::Chamfer && f.kind != FeatureKind::Arc && f.kind != FeatureKind::Taper &&
           f.kind != FeatureKind::Groove)
         continue;
+      if (isMachiningTrace(f, part)) continue;
       DimensionItem d;
       d.text = label(f, frame.thai);
       if (f.side == FeatureSide::Inside) d.text += frame.thai ? QStringLiteral(" (ใน)") : QStringLiteral(" (inside)");
       const QPointF anchor = anchorOf(f, frame);
       const double w = fm.horizontalAdvance(d.text);
+      const bool toLeft = anchor.x() + 3.0 * mm + w > bounds.right();
       QRectF box;
       for (int level = 0; level < 12; ++level) {
         const double y = topY - 6.0 * mm - level * (textH + 1.0 * mm);
-        box = QRectF(anchor.x() + 3.0 * mm, y - textH, w, textH);
+        box = QRectF(toLeft ? anchor.x() - 3.0 * mm - w : anchor.x() + 3.0 * mm, y - textH, w, textH);
+        if (box.top() < bounds.top()) {  // no room higher up: the lowest level, beside the others
+          box.moveTop(topY - 6.0 * mm - textH);
+          break;
+        }
         if (std::none_of(placed.begin(), placed.end(),
-                         [&](const QRectF& p) { return p.adjusted(-1 * mm, 0, 1 * mm, 0).intersects(box); }))
+                         [&](const QRectF& p) { return p.adjusted(-3 * mm, 0, 3 * mm, 0).intersects(box); }))
           break;
       }
+      box.moveLeft(std::clamp(box.left(), bounds.left(), std::max(bounds.left(), bounds.right() - w)));
       placed.push_back(box);
       d.textRect = box;
-      const QPointF knee(box.left() - 0.5 * mm, box.bottom() + 0.4 * mm);
+      const QPointF knee(toLeft ? box.right() + 0.5 * mm : box.left() - 0.5 * mm, box.bottom() + 0.4 * mm);
       d.lines.emplace_back(anchor, knee);
-      d.lines.emplace_back(knee, QPointF(box.right(), knee.y()));
+      d.lines.emplace_back(knee, QPointF(toLeft ? box.left() : box.right(), knee.y()));
       d.arrows.emplace_back(anchor, knee);
       out.push_back(d);
+    }
+  }
+  // Surface finish where the design gives one: on the upper profile of the feature.
+  if (frame.marks.surfaceFinish) {
+    for (const auto* list : {&part.outside, &part.inside}) {
+      for (const PartFeature& f : *list) {
+        const QString ra = frame.marks.surfaceFinish(f);
+        if (ra.isEmpty()) continue;
+        const double z = f.zLeft + 0.3 * f.length();
+        const double r = f.side == FeatureSide::Inside ? -f.radiusAt(z) : f.radiusAt(z);
+        out.push_back(finishMark(ra, frame.toPage(z, r), 2.5 * mm, fm));
+      }
     }
   }
   if (noseRadius > 0.0) {

@@ -25,13 +25,31 @@ struct DimensionItem {
   std::vector<std::pair<QPointF, QPointF>> arrows;  // tip, and a point the arrow points away from
 };
 
+// What the part's design says beyond its shape (issue 28 item 3): a tolerance
+// written after a size ("h7", "±0.05") and a surface finish ("Ra 1.6") per
+// feature. Empty functions or texts: nothing drawn. The drawing of a program
+// has none; a design with tolerance fields fills these.
+struct DesignMarks {
+  std::function<QString(const core::cut::PartFeature&)> tolerance;
+  std::function<QString(const core::cut::PartFeature&)> surfaceFinish;
+};
+
 struct DimensionFrame {
   std::function<QPointF(double z, double radius)> toPage;  // part mm -> page
   double mm = 1.0;          // device pixels per paper millimetre
   QFont font;               // dimension text
   const QPaintDevice* device = nullptr;  // for measuring text
   bool thai = false;
+  QRectF bounds;                 // everything stays inside (empty: anywhere)
+  std::vector<QLineF> partLines; // the part's drawn lines on the page: labels keep off them
+  DesignMarks marks;
 };
+
+// A feature the drawing gives no callout: a thread's run-out, a drill's point,
+// a sliver below 0.1 mm (the machine's leftovers, not the designer's sizes).
+bool isMachiningTrace(const core::cut::PartFeature& f, const core::cut::PartFeatures& part);
+// Does the rectangle touch any of the lines?
+bool touchesAny(const QRectF& rect, const std::vector<QLineF>& lines);
 
 std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part, const DimensionFrame& frame);
 void paintDimensions(QPainter& painter, const std::vector<DimensionItem>& items, const DimensionFrame& frame);

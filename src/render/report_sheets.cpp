@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "klueng/core/cut/cut_simulator.h"
+#include "klueng/core/cut/part_span.h"
 #include "klueng/core/machine/job.h"
 #include "klueng/core/gcode/checker.h"
 
@@ -125,6 +126,27 @@ void drawFitted(QPainter& painter, const QRectF& rect, const QString& text, QFon
   painter.drawText(rect, flags | Qt::TextSingleLine, shown);
 }
 
+// ISO 5456-2 first-angle symbol: the truncated cone's front view (small end on
+// the left) and, on its right, its view from the left (two circles), centred in
+// `cell`. Klueng's drawings are first angle (ISO E), as Thai and ISO practice is.
+void paintFirstAngleSymbol(QPainter& painter, const QRectF& cell, double mm) {
+  const double d = std::min(cell.height() - 1.6 * mm, cell.width() / 3.2);  // the large end's diameter
+  const double len = 1.2 * d, gap = 0.5 * d;
+  const double left = cell.center().x() - (len + gap + d) / 2.0, cy = cell.center().y();
+  painter.save();
+  painter.setPen(paperPen(*painter.device(), 0.25));
+  painter.setBrush(Qt::NoBrush);
+  painter.drawPolygon(QPolygonF({QPointF(left, cy - d / 4.0), QPointF(left + len, cy - d / 2.0),
+                                 QPointF(left + len, cy + d / 2.0), QPointF(left, cy + d / 4.0)}));
+  const QPointF centre(left + len + gap + d / 2.0, cy);
+  painter.drawEllipse(centre, d / 2.0, d / 2.0);
+  painter.drawEllipse(centre, d / 4.0, d / 4.0);
+  painter.setPen(paperPen(*painter.device(), 0.13, Qt::black, Qt::DashDotLine));
+  painter.drawLine(QPointF(left - 0.8 * mm, cy), QPointF(centre.x() + d / 2.0 + 0.8 * mm, cy));
+  painter.drawLine(QPointF(centre.x(), cy - d / 2.0 - 0.8 * mm), QPointF(centre.x(), cy + d / 2.0 + 0.8 * mm));
+  painter.restore();
+}
+
 // A label/value cell: small label on the left, value after it.
 void drawField(QPainter& painter, const QRectF& cell, const QString& label, const QString& value, double labelWidth) {
   const double pad = pixelsPerMm(*painter.device()) * 1.5;
@@ -184,8 +206,15 @@ StockShape runForReport(const core::io::ProgramFile& file, const core::machine::
   if (cut.alarm() && note)
     *note = thai(lang) ? QStringLiteral("โปรแกรมหยุดด้วยสัญญาณเตือน: ภาพนี้แสดงชิ้นงานจนถึงจุดที่หยุด")
                        : QStringLiteral("The program stopped on an alarm: the drawing shows the part up to it.");
-  if (features) *features = core::cut::partFeatures(cut.stock());
-  return stockShapeFromStock(cut.stock());
+  // The finished part only: no parting gap, no bar left in the chuck (issue 28 item 3).
+  const core::cut::Stock part = core::cut::cropToSpan(cut.stock(), core::cut::finishedPartSpan(cut.stock()));
+  if (features) {
+    *features = core::cut::partFeatures(part);
+    core::cut::addThreadLeadChamfers(part, *features);  // the chamfer before a thread is the designer's
+  }
+  StockShape shape = stockShapeFromStock(part);
+  shape.blank = QRectF();  // a drawing shows the part, not the bar it came from
+  return shape;
 }
 
 core::machine::JobOptions jobFor(core::gcode::Dialect dialect) {
@@ -411,10 +440,27 @@ DimensionFrame dimensionFrame(const QPagedPaintDevice& device, const ReportData&
   f.font = reportFont(8);
   f.device = &device;
   f.thai = thai(lang);
+  f.bounds = l.drawingArea;
+  f.marks = data.marks;
+  // The part's outline, both halves, on the page: no label is written over it.
+  const QPainterPath& outline = data.part.outline;
+  QPointF from;
+  for (int i = 0; i < outline.elementCount(); ++i) {
+    const QPainterPath::Element e = outline.elementAt(i);
+    const QPointF to(e.x, e.y);
+    if (e.isLineTo())
+      for (const double side : {1.0, -1.0})
+        f.partLines.emplace_back(f.toPage(from.x(), -side * from.y()), f.toPage(to.x(), -side * to.y()));
+    from = to;
+  }
   return f;
 }
 
 }  // namespace
+
+DimensionFrame drawingDimensionFrame(const QPagedPaintDevice& device, const ReportData& data, ReportLanguage lang) {
+  return dimensionFrame(device, data, drawingLayout(device, data.part), lang);
+}
 
 std::vector<DimensionItem> drawingDimensions(const QPagedPaintDevice& device, const ReportData& data,
                                              ReportLanguage lang) {
@@ -446,7 +492,7 @@ void paintDrawingSheet(QPainter& painter, QPagedPaintDevice& device, const Repor
   painter.translate(l.partRect.center());
   painter.scale(k, k);
   painter.translate(-scene.center());
-  paintStock(painter, data.part, true);
+  paintStock(painter, data.part, false);
   // Print-weight lines over the screen's hairlines.
   painter.setBrush(Qt::NoBrush);
   QPen outline(palette().stockEdge, 0.35 * mm / k);
@@ -548,7 +594,16 @@ void paintDrawingSheet(QPainter& painter, QPagedPaintDevice& device, const Repor
       painter.setPen(paperPen(device, 0.2));
       painter.drawLine(cell.topLeft(), cell.topRight());
     }
-    drawField(painter, cell, rows[static_cast<std::size_t>(r)].first, rows[static_cast<std::size_t>(r)].second,
+    QRectF fieldCell = cell;
+    if (r == kTitleRows - 1) {
+      // The projection method beside the scale (ISO 7200 title block).
+      const QRectF symbolCell(cell.right() - 24 * mm, cell.top(), 24 * mm, cell.height());
+      painter.setPen(paperPen(device, 0.2));
+      painter.drawLine(symbolCell.topLeft(), symbolCell.bottomLeft());
+      paintFirstAngleSymbol(painter, symbolCell, mm);
+      fieldCell.setRight(symbolCell.left());
+    }
+    drawField(painter, fieldCell, rows[static_cast<std::size_t>(r)].first, rows[static_cast<std::size_t>(r)].second,
               labelWidth + 1.5 * mm);
   }
   painter.restore();

@@ -53,6 +53,7 @@ struct ReportData {
   StockShape part;                 // the finished part (see finishedPart)
   QString partNote;                // printed under the drawing when the part is not the finished one
   core::cut::PartFeatures features;  // the part's features, dimensioned on the drawing (empty: overall size only)
+  DesignMarks marks;               // tolerances and surface finish from a part design (none for a plain program)
   // Cycle time (issue 11): total and per tool; total < 0 = not known (the program has errors).
   double cycleTime = -1.0;
   bool cycleTimeToAlarm = false;   // the run stops on an alarm: the time is up to it
@@ -94,6 +95,8 @@ struct DrawingLayout {
 };
 DrawingLayout drawingLayout(const QPagedPaintDevice& device, const StockShape& part);
 // The dimensions paintDrawingSheet draws, where it draws them (tests check they stay in the frame).
+// Where the part is on the page, the frame the labels stay in and the part's lines they keep off.
+DimensionFrame drawingDimensionFrame(const QPagedPaintDevice& device, const ReportData& data, ReportLanguage lang);
 std::vector<DimensionItem> drawingDimensions(const QPagedPaintDevice& device, const ReportData& data,
                                              ReportLanguage lang);
 

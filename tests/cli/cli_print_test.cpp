@@ -53,9 +53,12 @@ TEST(CliPrint, DrawingDimensionsSample01OnALandscapePage) {
   EXPECT_FALSE(fs::exists(pdf.string() + ".partial"));
   const std::string text = pdfText(pdf);
   // Every diameter, the chamfers and the corner radius, the chained steps and the overall length.
-  for (const char* s : {"Part Drawing", "Ø30", "Ø40", "Ø46", "Ø50", "C3", "C1", "R2", "100", "Scale 1:1",
+  for (const char* s : {"Part Drawing", "Ø30", "Ø40", "Ø46", "C3", "C1", "R2", "60", "Scale 1:1",
                         "Inside corners: tool nose R0.8"})
     EXPECT_NE(text.find(s), std::string::npos) << s << "\n" << text;
+  // The finished part only (issue 28 item 3): the Ø50 bar left in the chuck (Z-60 to Z-100) is
+  // neither drawn nor dimensioned, and the overall length is the part's 60, not the bar's 100.
+  for (const char* s : {"Ø50", "100"}) EXPECT_EQ(text.find(s), std::string::npos) << s << "\n" << text;
   const std::string info = pdfInfo(pdf);
   EXPECT_NE(info.find("Pages:           1"), std::string::npos) << info;
   EXPECT_NE(info.find("Page    1 size:  842 x 595 pts (A4)"), std::string::npos) << info;
@@ -70,21 +73,27 @@ TEST(CliPrint, BothSheetsInThaiAndTheThreadCallout) {
       << err;
   const std::string text = pdfText(pdf);
   EXPECT_EQ(std::count(text.begin(), text.end(), '\f'), 2);  // the listing, then the drawing
-  for (const char* s : {"ชุดรหัส", "N130 G32 Z-30. F1.5", "เอกสารแสดงภาพชิ้นงาน", "M30×1.5", "Ø32"})
+  for (const char* s : {"ชุดรหัส", "N130 G32 Z-30. F1.5", "เอกสารแสดงภาพชิ้นงาน", "M30×1.5", "Ø30"})
     EXPECT_NE(text.find(s), std::string::npos) << s << "\n" << text;
+  // The Ø32 bar the program never touched (Z-40 to Z-80) is not the bolt.
+  EXPECT_EQ(text.substr(text.find('\f')).find("Ø32"), std::string::npos) << text;
   const std::string info = pdfInfo(pdf);
   EXPECT_NE(info.find("Page    1 size:  595 x 842 pts (A4)"), std::string::npos) << info;
   EXPECT_NE(info.find("Page    2 size:  842 x 595 pts (A4)"), std::string::npos) << info;
 }
 
 TEST(CliPrint, StockOptionAndAProgramWithErrors) {
-  // --stock as simulate takes it: the bar left of the part is Ø60.
+  // --stock as simulate takes it: the sheet's stock is Ø60 × 120; the drawing is still the
+  // part alone, 60 long, without the Ø60 bar it was turned from.
   const fs::path pdf = scratch("01-stock.pdf");
   std::string err;
-  ASSERT_EQ(print("'" + kSample01 + "' --sheet drawing --stock 60x120 --pdf '" + pdf.string() + "'", &err), 0) << err;
+  ASSERT_EQ(print("'" + kSample01 + "' --stock 60x120 --pdf '" + pdf.string() + "'", &err), 0) << err;
   const std::string text = pdfText(pdf);
-  EXPECT_NE(text.find("Ø60"), std::string::npos) << text;
+  const std::string drawing = text.substr(text.find('\f'));
   EXPECT_NE(text.find("120"), std::string::npos) << text;
+  EXPECT_EQ(drawing.find("Ø60"), std::string::npos) << drawing;
+  EXPECT_EQ(drawing.find("120"), std::string::npos) << drawing;
+  EXPECT_NE(drawing.find("Ø46"), std::string::npos) << drawing;
 
   // Errors are printed GCC-style; the sheets still come out, the drawing says why it shows the bar.
   const fs::path bad = scratch("bad.nc");

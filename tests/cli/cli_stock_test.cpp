@@ -69,7 +69,7 @@ TEST(CliStock, PlainFileTellsTheInferredStock) {
                          file + ":9:1: note I157: stock length 80: the deepest cut Z-60 (N70 G01 Z-60.) + 5 for the cut-off"
                                 " + 15 held in the chuck\n");
   const CliRun th = runCli("check --lang th " + file);
-  EXPECT_THAT(th.out, HasSubstr(": หมายเหตุ I152: ชิ้นงาน Ø50 x 80 mm ประมาณจาก N30 G00 X52. Z0."));
+  EXPECT_THAT(th.out, HasSubstr(": หมายเหตุ I152: ชิ้นงาน Ø50 x 80 มม. ประมาณจาก N30 G00 X52. Z0."));
 }
 
 TEST(CliStock, HeaderFileHasNoNoteAndStockOptionWins) {

@@ -64,6 +64,12 @@ class DialectOfferTest : public QObject {
                                          "The Haas ST (NGC) dialect accepts the whole program."));
     Language::instance()->setLanguage(QStringLiteral("th"));
     QTRY_VERIFY(bar->text().contains(QStringLiteral("รับได้ทั้งโปรแกรม")));
+    // Named as the Tool setting menu names it in Thai: "Haas", never "ฮาส" (issue 28 item 8).
+    QVERIFY2(bar->text().contains(QStringLiteral("Haas ST (NGC)")) && !bar->text().contains(QStringLiteral("ฮาส")),
+             qPrintable(bar->text()));
+    QCOMPARE(bar->findChild<QPushButton*>(QStringLiteral("dialectOfferSwitch"))->text(),
+             QStringLiteral("เปลี่ยนเป็น Haas ST (NGC)"));
+    QVERIFY(w.action(QStringLiteral("actionDialectHaas"))->text().contains(QStringLiteral("Haas ST (NGC)")));
     Language::instance()->setLanguage(QStringLiteral("en"));
 
     QSignalSpy checked(&w, &MainWindow::checkFinished);

@@ -36,6 +36,9 @@ class HeaderStripTest : public QObject {
     QVERIFY(strip->text().contains(QStringLiteral("Step shaft exercise, Shaft SS-01, Ø50 × 100 mm")));
     gui::Language::instance()->setLanguage(QStringLiteral("th"));
     QTRY_VERIFY2(strip->text().startsWith(QStringLiteral("บรรทัด 1–6: ส่วนหัวของงาน")), qPrintable(strip->text()));
+    // The stock's unit in Thai words too (issue 28 item 8).
+    QVERIFY2(strip->text().contains(QStringLiteral("Ø50 × 100 มม.")) && !strip->text().contains(QStringLiteral("mm")),
+             qPrintable(strip->text()));
     gui::Language::instance()->setLanguage(QStringLiteral("en"));
 
     // A plain G-code file has no header: no strip, its first line is 1.

@@ -34,6 +34,8 @@
 #include "gui/help_contents.h"
 #include "gui/language.h"
 #include "gui/main_window.h"
+#include "gui/output_view.h"
+#include "render/lathe_painters.h"
 #include "gui/status_panel.h"
 #include "gui/class_grade_dialog.h"
 #include <QTableWidget>
@@ -771,6 +773,40 @@ class MainWindowTest : public QObject {
     QTRY_COMPARE_WITH_TIMEOUT(w.runController()->state(), RunState::Finished, 20000);
     QCOMPARE(w.bannerText(), QStringLiteral("There is nothing to run: the program has no blocks. Type the program in "
                                             "the editor or open a file."));
+  }
+
+  // Issue 28 item 8: an untitled, empty window frames the stock (Ø50 x 100), not the
+  // tool's start at Z300, also after the window is laid out and resized; once the user
+  // zooms, a resize leaves the zoom alone.
+  void anEmptyWindowFramesTheStock() {
+    MainWindow w;
+    w.resize(640, 400);
+    w.show();
+    QVERIFY(waitIdle(w));
+    w.resize(1366, 768);
+    QApplication::processEvents();
+    OutputView* view = w.outputView();
+    const auto check = [view]() -> QString {
+      const QRectF visible = view->visibleSceneRect();
+      if (visible.contains(render::toScene(300.0, 0.0))) return QStringLiteral("Z300 is in sight");
+      if (!visible.contains(render::toScene(0.0, 25.0)) || !visible.contains(render::toScene(-100.0, -25.0)))
+        return QStringLiteral("the bar is not whole in sight");
+      const int bar = view->mapFromScene(render::toScene(0.0, 25.0)).x() - view->mapFromScene(render::toScene(-100.0, 25.0)).x();
+      if (bar < 0.4 * view->viewport()->width())
+        return QStringLiteral("the bar is %1 px of %2").arg(bar).arg(view->viewport()->width());
+      return {};
+    };
+    QCOMPARE(check(), QString());
+    w.resize(1100, 700);
+    QApplication::processEvents();
+    QCOMPARE(check(), QString());
+    view->zoomOut();
+    const double zoomed = view->pixelsPerMm();
+    w.resize(1366, 768);
+    QApplication::processEvents();
+    QCOMPARE(view->pixelsPerMm(), zoomed);
+    w.action(QStringLiteral("actionFitView"))->trigger();
+    QCOMPARE(check(), QString());
   }
 
   // Issue 28 item 7: every status bar field is whole at 1366 px in both

@@ -13,6 +13,7 @@
 #include <QMenu>
 #include <QPushButton>
 #include <QTableView>
+#include <QPointer>
 #include <QTest>
 #include <QToolButton>
 #include <QUndoStack>
@@ -163,6 +164,30 @@ class PartDesignerTest : public QObject {
     w.editor()->document()->setModified(false);
     w.document()->restoreHeader({w.document()->header(), {}, false});
     d->close();
+  }
+
+  // Issue 28 item 8: closed and opened again in the same session, the designer still
+  // holds the design as it was left (it used to start over from the job's bar).
+  void reopenedItKeepsTheDesign() {
+    gui::MainWindow w;
+    auto* d = openDesigner(w);
+    QVERIFY(d);
+    core::design::PartDesign edited = d->design();
+    QVERIFY(!edited.outside.empty());
+    edited.outside.front().diameter -= 4.0;
+    edited.name = "Reopen check";
+    d->setDesign(edited, QStringLiteral("narrower"));
+    QPointer<gui::PartDesignerDialog> closed(d);
+    d->close();
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);  // a dialog deleted on close is gone now
+    QVERIFY(closed && !closed->isVisible());
+    w.action(QStringLiteral("actionPartDesigner"))->trigger();
+    auto* again = w.findChild<gui::PartDesignerDialog*>();
+    QVERIFY(again && again->isVisible());
+    QCOMPARE(again->design().outside.size(), edited.outside.size());
+    QCOMPARE(again->design().outside.front().diameter, edited.outside.front().diameter);
+    QCOMPARE(again->design().name, std::string("Reopen check"));
+    again->close();
   }
 
   void aDxfDrawingOpensAsItsFeatures() {

@@ -22,6 +22,7 @@
 
 #include "fresh_user_folders.h"
 #include "klueng/core/machine/job.h"
+#include "gui/code_editor.h"
 #include "gui/language.h"
 #include "gui/main_window.h"
 #include "gui/resources.h"
@@ -238,17 +239,23 @@ class ReportTest : public QObject {
 
   void drawingShowsTheFinishedPartWithItsSize() {
     const render::ReportData d = sampleData(ReportLanguage::English);
-    // Sample 01 finishes Ø30 from Z-3 to Z-20, Ø40 to Z-40 and Ø46 to Z-60 (bar Ø50 x 100).
+    // Sample 01 finishes Ø30 from Z-3 to Z-20, Ø40 to Z-40 and Ø46 to Z-60 (bar Ø50 x 100);
+    // the bar left in the chuck beyond Z-60 is not the part (issue 28 item 3).
     QVERIFY(d.part.containsMaterial(-10.0, 14.8));
     QVERIFY(!d.part.containsMaterial(-10.0, 15.3));
     QVERIFY(d.part.containsMaterial(-30.0, 19.8));
     QVERIFY(!d.part.containsMaterial(-30.0, 20.3));
-    QVERIFY(d.part.containsMaterial(-80.0, 24.9));
+    QVERIFY(d.part.containsMaterial(-59.9, 22.9));
+    QVERIFY(!d.part.containsMaterial(-59.9, 23.3));   // no nose fillet up the bar's face
+    QVERIFY(!d.part.containsMaterial(-80.0, 10.0));
+    QVERIFY(d.part.blank.isEmpty());                   // nor the bar's outline
+    QCOMPARE(d.features.overallLength(), 60.0);
     const QString pdf = out(QStringLiteral("drawing-size.pdf"));
     writePdf(pdf, d, ReportLanguage::English, Sheet::Drawing);
     const QString text = pdfText(pdf);
-    QVERIFY2(text.contains(QStringLiteral("Ø50")), qPrintable(text));   // largest diameter left
-    QVERIFY(text.contains(QRegularExpression(QStringLiteral("(^|\\n)100\\n"))));   // overall length
+    QVERIFY2(text.contains(QStringLiteral("Ø46")) && !text.contains(QStringLiteral("Ø50")), qPrintable(text));
+    QVERIFY(text.contains(QRegularExpression(QStringLiteral("(^|\\n)60\\n"))));   // overall length: the part's
+    QVERIFY(!text.contains(QStringLiteral("100")));
     QVERIFY(text.contains(QStringLiteral("Scale 1:1")));
   }
 
@@ -268,12 +275,11 @@ class ReportTest : public QObject {
     const QString pdf = out(QStringLiteral("dimensions-%1.pdf").arg(language));
     writePdf(pdf, d, lang, Sheet::Drawing);
     const QString text = pdfText(pdf);
-    for (const char* s : {"Ø30", "Ø40", "Ø46", "Ø50", "C3", "R2", "C1"})
+    for (const char* s : {"Ø30", "Ø40", "Ø46", "C3", "R2", "C1"})
       QVERIFY2(text.contains(QString::fromUtf8(s)), qPrintable(QString::fromUtf8(s) + QStringLiteral("\n") + text));
-    // Chained steps from the right face (20, 20, 20, 40) and the overall 100.
+    // Chained steps from the right face (20, 20, 20) and the part's overall 60.
     QCOMPARE(text.count(QRegularExpression(QStringLiteral("(^|\\n)20\\n"))), 3);
-    QVERIFY(text.contains(QRegularExpression(QStringLiteral("(^|\\n)40\\n"))));
-    QVERIFY(text.contains(QRegularExpression(QStringLiteral("(^|\\n)100\\n"))));
+    QVERIFY(text.contains(QRegularExpression(QStringLiteral("(^|\\n)60\\n"))));
 
     QPrinter printer(QPrinter::HighResolution);
     printer.setOutputFormat(QPrinter::PdfFormat);
@@ -286,11 +292,15 @@ class ReportTest : public QObject {
     QCOMPARE(render::scaleText(layout.scale), QStringLiteral("1:1"));
     QVERIFY(layout.frame.contains(layout.partRect));
     const std::vector<render::DimensionItem> dims = render::drawingDimensions(printer, d, lang);
-    QVERIFY(dims.size() >= 12);   // 4 diameters, 4 steps + overall, 3 leaders, the nose note
+    QVERIFY(dims.size() >= 11);   // 3 diameters, 3 steps + overall, 3 leaders, the nose note
+    const std::vector<QLineF> partLines = render::drawingDimensionFrame(printer, d, lang).partLines;
+    QVERIFY(partLines.size() >= 16);   // both halves' outline
     for (const render::DimensionItem& item : dims) {
       const QRectF box = render::dimensionBounds(item);
       QVERIFY2(layout.frame.contains(box), qPrintable(item.text));
       QVERIFY2(!layout.titleBlock.intersects(box), qPrintable(item.text));
+      // Every label off the part's drawn lines (issue 28 item 3).
+      QVERIFY2(!render::touchesAny(item.textRect, partLines), qPrintable(item.text));
     }
     // No two texts on top of each other.
     for (std::size_t a = 0; a < dims.size(); ++a)
@@ -377,6 +387,72 @@ class ReportTest : public QObject {
     QCOMPARE(qRound(layout.partRect.width() / layout.pixelsPerMm), 220);
   }
 
+  // Issue 28 item 3: a drawing gives no callout for what the machine leaves on its
+  // own — a thread's run-out, a drill's point, a sliver — and keeps the designer's
+  // chamfers, the one before the thread included.
+  void machiningTracesGetNoCallout() {
+    using core::cut::FeatureKind;
+    using core::cut::FeatureSide;
+    core::cut::PartFeatures part;
+    part.zRight = 0.0;
+    part.zLeft = -40.0;
+    const auto feature = [](FeatureKind kind, FeatureSide side, double zLeft, double zRight, double dLeft, double dRight) {
+      core::cut::PartFeature f;
+      f.kind = kind;
+      f.side = side;
+      f.zLeft = zLeft;
+      f.zRight = zRight;
+      f.diameterLeft = dLeft;
+      f.diameterRight = dRight;
+      f.axialLength = zRight - zLeft;
+      f.radialHeight = std::abs(dRight - dLeft) / 2.0;
+      return f;
+    };
+    core::cut::PartFeature thread = feature(FeatureKind::Thread, FeatureSide::Outside, -22.0, 0.0, 30.0, 30.0);
+    thread.diameter = 30.0;
+    thread.minorDiameter = 28.16;
+    thread.pitch = 1.5;
+    const auto lead = feature(FeatureKind::Chamfer, FeatureSide::Outside, -1.5, 0.0, 30.0, 27.0);
+    const auto runOut = feature(FeatureKind::Taper, FeatureSide::Outside, -23.0, -22.0, 29.9, 28.3);
+    const auto shoulder = feature(FeatureKind::Chamfer, FeatureSide::Outside, -31.0, -30.0, 40.0, 38.0);
+    const auto sliver = feature(FeatureKind::Chamfer, FeatureSide::Outside, -30.02, -30.0, 38.0, 37.96);
+    const auto drillPoint = feature(FeatureKind::Taper, FeatureSide::Inside, -36.0, -30.0, 0.0, 20.0);
+    const auto boreMouth = feature(FeatureKind::Chamfer, FeatureSide::Inside, -1.0, 0.0, 20.0, 22.0);
+    part.outside = {lead, thread, runOut, shoulder, sliver};
+    part.inside = {boreMouth, drillPoint};
+    QVERIFY(!render::isMachiningTrace(lead, part));
+    QVERIFY(!render::isMachiningTrace(shoulder, part));
+    QVERIFY(!render::isMachiningTrace(boreMouth, part));
+    QVERIFY(render::isMachiningTrace(runOut, part));
+    QVERIFY(render::isMachiningTrace(sliver, part));
+    QVERIFY(render::isMachiningTrace(drillPoint, part));
+  }
+
+  // Issue 28 item 3: tolerances and surface finish where the design gives them, drawn
+  // after the size and as the ISO mark on the surface; none without a design.
+  void designMarksPrintTolerancesAndFinish() {
+    render::ReportData d = sampleData(ReportLanguage::English);
+    const QString plainPdf = out(QStringLiteral("marks-none.pdf"));
+    writePdf(plainPdf, d, ReportLanguage::English, Sheet::Drawing);
+    const QString plain = pdfText(plainPdf);
+    QVERIFY(!plain.contains(QStringLiteral("h7")) && !plain.contains(QStringLiteral("Ra ")));
+    d.marks.tolerance = [](const core::cut::PartFeature& f) {
+      return f.kind == core::cut::FeatureKind::Cylinder && std::abs(f.diameter - 30.0) < 0.01 ? QStringLiteral("h7")
+                                                                                               : QString();
+    };
+    d.marks.surfaceFinish = [](const core::cut::PartFeature& f) {
+      return f.kind == core::cut::FeatureKind::Cylinder && std::abs(f.diameter - 40.0) < 0.01 ? QStringLiteral("Ra 1.6")
+                                                                                               : QString();
+    };
+    const QString pdf = out(QStringLiteral("marks.pdf"));
+    writePdf(pdf, d, ReportLanguage::English, Sheet::Drawing);
+    const QString text = pdfText(pdf);
+    // Written after the size on its line (pdftotext reads turned text one word a line).
+    QVERIFY2(text.contains(QRegularExpression(QStringLiteral("Ø30\\s+h7"))), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("Ra 1.6")), qPrintable(text));
+    QCOMPARE(text.count(QStringLiteral("h7")), 1);
+  }
+
   // File > Export PDF of the main window: program sheet then the drawing (landscape),
   // in the UI's language; the actions are in the File menu and Print on the tool bar.
   void mainWindowExportsBothSheetsInTheUiLanguage() {
@@ -419,6 +495,51 @@ class ReportTest : public QObject {
     QVERIFY(pageText(th, 1).contains(QStringLiteral("ชุดรหัสสั่งการทำงาน")));
     QVERIFY(pageText(th, 2).contains(render::reportDate(QDate::currentDate(), ReportLanguage::Thai)));
     gui::Language::instance()->setLanguage(QStringLiteral("en"));
+  }
+
+  // Issue 28 item 3: every printout's title block is the file's own job header. After
+  // sample 01 was open, a new program and a plain G-code file print without sample 01's
+  // project, part and material (they used to carry them on every later sheet).
+  void titleBlockIsTheFilesOwnAfterSample01() {
+    klueng::test::freshUserFolders();
+    gui::initResources();
+    gui::Language::instance()->setLanguage(QStringLiteral("en"));
+    gui::MainWindow w;
+    w.show();
+    QVERIFY(w.openFile(QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt")));
+    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    const QString first = out(QStringLiteral("stale-01.pdf"));
+    QVERIFY(w.exportPdf(first));
+    QVERIFY(pageText(first, 2).contains(QStringLiteral("Shaft SS-01")));   // the sample's own header
+
+    const QStringList sample01 = {QStringLiteral("Step shaft exercise"), QStringLiteral("Shaft SS-01"),
+                                  QStringLiteral("Aluminium 6061")};
+    const auto carriesNothingOf01 = [&](const QString& pdf) {
+      for (int page : {1, 2})
+        for (const QString& s : sample01)
+          if (pageText(pdf, page).contains(s)) return s + QStringLiteral(" on page ") + QString::number(page);
+      return QString();
+    };
+    w.newFile();
+    w.editor()->setPlainText(QStringLiteral("G00 X20. Z2.\nG01 Z-10. F0.2\nM30\n"));
+    const QString untitled = out(QStringLiteral("stale-new.pdf"));
+    QVERIFY(w.exportPdf(untitled));
+    QCOMPARE(carriesNothingOf01(untitled), QString());
+    QVERIFY(pageText(untitled, 2).contains(QStringLiteral("untitled.txt")));
+
+    QTemporaryDir dir;
+    const QString plain = dir.filePath(QStringLiteral("pin.nc"));
+    QFile f(plain);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write("O0007\nG21 G99\nT0101\nG97 S800 M03\nG00 X32. Z2.\nG01 X20. F0.2\nZ-15.\nX32.\nG00 X100. Z100.\nM30\n");
+    f.close();
+    w.editor()->document()->setModified(false);  // the typed program may go without asking
+    QVERIFY(w.openFile(plain));
+    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    const QString other = out(QStringLiteral("stale-plain.pdf"));
+    QVERIFY(w.exportPdf(other));
+    QCOMPARE(carriesNothingOf01(other), QString());
+    QVERIFY(pageText(other, 2).contains(QStringLiteral("pin.nc")));
   }
 
   // File > Print Preview lays out both sheets: the program sheet, then the drawing.

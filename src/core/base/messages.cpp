@@ -56,6 +56,19 @@ constexpr MessageText kGuiWording[] = {
      "ชิ้นงาน {0} เป็นค่าเริ่มต้น: โปรแกรมไม่มีตำแหน่งเข้าหาชิ้นงานให้ประมาณได้ ตั้งค่าได้ที่ แฟ้ม ▸ รายละเอียดงาน"},
 };
 
+// A size argument in Thai words (issue 28 item 8): "Ø50 x 100 mm" -> "Ø50 x 100 มม.",
+// "Ø2 x 4 in" -> "Ø2 x 4 นิ้ว". Only sizes: text starting with Ø or a digit.
+std::string localSize(const std::string& a, Lang lang) {
+  if (lang != Lang::Th || a.empty()) return a;
+  const bool size = a.rfind("\xC3\x98", 0) == 0 || (a[0] >= '0' && a[0] <= '9');
+  const auto endsWith = [&](std::string_view tail) {
+    return a.size() > tail.size() && a.compare(a.size() - tail.size(), tail.size(), tail) == 0;
+  };
+  if (size && endsWith(" mm")) return a.substr(0, a.size() - 3) + " มม.";
+  if (size && endsWith(" in")) return a.substr(0, a.size() - 3) + " นิ้ว";
+  return a;
+}
+
 std::string formatText(const MessageText* t, const Diagnostic& d, Lang lang) {
   if (!t) {
     std::string s = d.code;
@@ -63,7 +76,7 @@ std::string formatText(const MessageText* t, const Diagnostic& d, Lang lang) {
     return s;
   }
   fmt::dynamic_format_arg_store<fmt::format_context> store;
-  for (const auto& a : d.args) store.push_back(a);
+  for (const auto& a : d.args) store.push_back(localSize(a, lang));
   // Missing args are a bug in the caller; show the template rather than throw.
   for (std::size_t i = d.args.size(); i < 8; ++i) store.push_back(std::string("?"));
   const std::string_view text = lang == Lang::Th ? t->th : t->en;

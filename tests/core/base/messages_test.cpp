@@ -4,6 +4,7 @@
 
 #include <set>
 
+#include "klueng/core/diagnostic_codes.h"
 #include "klueng/core/geometry.h"
 
 namespace klueng::core {
@@ -17,6 +18,18 @@ TEST(Messages, EveryCodeIsUniqueAndHasBothLanguages) {
     EXPECT_FALSE(m.th.empty()) << m.code;
     EXPECT_NE(m.en, m.th) << m.code << " has no real Thai text";
   }
+}
+
+// Issue 28 item 8: the stock's size reads in Thai units in Thai ("มม.", "นิ้ว"), as is, in English.
+TEST(Messages, StockSizesSpeakThaiUnits) {
+  const Diagnostic mm{Severity::Note, codes::kStockFromHeader, {}, {"\xC3\x98" "50 x 100 mm"}};
+  EXPECT_EQ(formatMessage(mm, Lang::Th), "ชิ้นงาน Ø50 x 100 มม. จากส่วนหัวของงานในไฟล์");
+  EXPECT_EQ(formatMessage(mm, Lang::En), "stock Ø50 x 100 mm from the file's job header");
+  const Diagnostic inch{Severity::Note, codes::kStockFromHeader, {}, {"\xC3\x98" "2 x 4 in"}};
+  EXPECT_EQ(formatMessage(inch, Lang::Th), "ชิ้นงาน Ø2 x 4 นิ้ว จากส่วนหัวของงานในไฟล์");
+  // Not a size: left alone.
+  const Diagnostic word{Severity::Note, codes::kStockFromFirstApproach, {}, {"\xC3\x98" "3 x 25 mm", "N10 G00 X1.5 (come in)"}};
+  EXPECT_EQ(formatMessage(word, Lang::Th), "ชิ้นงาน Ø3 x 25 มม. ประมาณจาก N10 G00 X1.5 (come in) (ตำแหน่งเข้าหาชิ้นงานครั้งแรก)");
 }
 
 TEST(Messages, UnknownCodeFallsBackToCodeAndArgs) {
@@ -48,7 +61,7 @@ TEST(Messages, TheGuiNamesItsOwnPlacesNotFlags) {
   EXPECT_EQ(formatMessage(stock, Lang::En, Surface::Gui),
             "stock Ø50 x 100 mm is the default: the program has no approach to infer it from; set it in File ▸ Job details");
   EXPECT_EQ(formatMessage(stock, Lang::Th, Surface::Gui),
-            "ชิ้นงาน Ø50 x 100 mm เป็นค่าเริ่มต้น: โปรแกรมไม่มีตำแหน่งเข้าหาชิ้นงานให้ประมาณได้ ตั้งค่าได้ที่ แฟ้ม ▸ รายละเอียดงาน");
+            "ชิ้นงาน Ø50 x 100 มม. เป็นค่าเริ่มต้น: โปรแกรมไม่มีตำแหน่งเข้าหาชิ้นงานให้ประมาณได้ ตั้งค่าได้ที่ แฟ้ม ▸ รายละเอียดงาน");
   EXPECT_EQ(formatMessage(stock, Lang::En, Surface::Cli), formatMessage(stock, Lang::En));
   EXPECT_NE(formatMessage(stock, Lang::En).find("--stock"), std::string::npos);
   Diagnostic dialect{Severity::Note, "I102", {}, {"3", "Haas", "haas"}};

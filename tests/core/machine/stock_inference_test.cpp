@@ -54,7 +54,7 @@ TEST(StockInference, FacingApproachGivesTheBarBelowIt) {
   EXPECT_EQ(noteText(kFacingFirst, r, 1),
             "stock length 85: the deepest cut Z-63 (N110 G01 X0. F0.05) + 5 for the cut-off + 15 held in the chuck");
   EXPECT_EQ(noteText(kFacingFirst, r, 0, Lang::Th),
-            "ชิ้นงาน Ø50 x 85 mm ประมาณจาก N30 G00 X52. Z0. (ตำแหน่งเข้าหาชิ้นงานครั้งแรก)");
+            "ชิ้นงาน Ø50 x 85 มม. ประมาณจาก N30 G00 X52. Z0. (ตำแหน่งเข้าหาชิ้นงานครั้งแรก)");
 }
 
 // A program that only works behind the face (the cut-off of a part turned by
@@ -321,7 +321,7 @@ TEST(StockInference, CamOutsideProfileIsASolidBarAboveWhatItTurns) {
     EXPECT_EQ(noteText(kCamOutside, r, 0),
               "stock Ø45 x 55 mm inferred from N170 Z-10. (the largest diameter it turns)");
     EXPECT_EQ(noteText(kCamOutside, r, 0, Lang::Th),
-              "ชิ้นงาน Ø45 x 55 mm ประมาณจาก N170 Z-10. (เส้นผ่านศูนย์กลางใหญ่สุดที่กลึงด้านนอก)");
+              "ชิ้นงาน Ø45 x 55 มม. ประมาณจาก N170 Z-10. (เส้นผ่านศูนย์กลางใหญ่สุดที่กลึงด้านนอก)");
   }
 }
 
@@ -415,7 +415,7 @@ TEST(StockNotes, EachSourceSaysWhereTheStockCameFrom) {
     const auto notes = stockNotes(h, nullptr, "", 1);
     ASSERT_EQ(notes.size(), 1u);
     EXPECT_EQ(formatMessage(notes[0], Lang::En), text);
-    EXPECT_NE(formatMessage(notes[0], Lang::Th).find("ชิ้นงาน Ø118/Ø90 x 80 mm"), std::string::npos);
+    EXPECT_NE(formatMessage(notes[0], Lang::Th).find("ชิ้นงาน Ø118/Ø90 x 80 มม."), std::string::npos);
   }
 }
 
