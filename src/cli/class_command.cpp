@@ -103,7 +103,7 @@ std::optional<ClassOptions> parse(const std::vector<std::string>& args) {
 
 // The table as the picture module draws it (klueng-png.so, opened only for --pdf).
 bool writePdf(const ClassOptions& o, const std::vector<cut::ClassRow>& rows, const std::string& configDir) {
-  const render::ClassPdfCells cells(rows, o.lang);
+  const render::ClassPdfCells cells(rows, o.lang, !o.reference.empty());
   const std::string reference = std::filesystem::path(o.reference).filename().string();
   const std::string drawing = std::filesystem::path(o.drawing).filename().string();
   KluengClassPdf in{};

@@ -219,6 +219,9 @@ void ClassGradeDialog::retranslate() {
   table_->setHorizontalHeaderLabels({tr("Program"), tr("Result"), tr("Errors"), tr("Alarm"), tr("Cycle time (s)"),
                                      tr("Leftover (mm)"), tr("Gouge (mm)"), tr("Drawing")});
   details_->setHorizontalHeaderLabels({tr("Dimension"), tr("Tolerance"), tr("Limits (mm)"), tr("Measured (mm)"), tr("Result")});
+  // Every header whole in both languages ("เวลาทำงาน (วินาที)" is wider than a default column).
+  table_->resizeColumnsToContents();
+  details_->resizeColumnsToContents();
   if (!rows_.empty() && !noteShown_) showRows();  // the verdicts and the summary in the new language
 }
 
@@ -352,7 +355,7 @@ bool ClassGradeDialog::savePdf(const QString& path, QString* why) {
     if (refused.isEmpty()) refused = outputIsInput(path, QString::fromStdString(row.path));
   if (refused.isEmpty()) {
     const core::Lang lang = Language::coreLang();
-    const render::ClassPdfCells cells(rows_, lang);
+    const render::ClassPdfCells cells(rows_, lang, !gradedReference_.isEmpty());
     const std::string reference = QFileInfo(gradedReference_).fileName().toStdString();
     const std::string drawing = QFileInfo(gradedDrawing_).fileName().toStdString();
     KluengClassPdf in{};

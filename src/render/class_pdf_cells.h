@@ -12,8 +12,8 @@ namespace klueng::render {
 
 class ClassPdfCells {
  public:
-  // `lang`: the features' and verdicts' words.
-  ClassPdfCells(const std::vector<core::cut::ClassRow>& rows, core::Lang lang) {
+  // `lang`: the features' and verdicts' words; `reference`: graded against a reference program.
+  ClassPdfCells(const std::vector<core::cut::ClassRow>& rows, core::Lang lang, bool reference) {
     for (const core::cut::ClassRow& r : rows) {
       cells_.push_back(r.file);
       cells_.push_back(r.pass ? "pass" : "fail");
@@ -24,8 +24,8 @@ class ClassPdfCells {
       for (const core::cut::InspectedDimension& d : r.inspection) in += d.in() ? 1 : 0;
       // Against a drawing only: the dimensions in tolerance where the reference's leftover would be.
       cells_.push_back(r.compared ? core::gcode::formatFixed(r.deviation.leftover, 3)
-                       : r.inspection.empty() ? std::string()
-                                              : std::to_string(in) + "/" + std::to_string(r.inspection.size()));
+                       : reference || r.inspection.empty() ? std::string()
+                                                           : std::to_string(in) + "/" + std::to_string(r.inspection.size()));
       cells_.push_back(r.compared ? core::gcode::formatFixed(r.deviation.gouge, 3) : "");
       paths_.push_back(r.path);
       dimensions_ = static_cast<int>(r.inspection.size());

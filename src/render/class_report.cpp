@@ -44,7 +44,7 @@ void paintSummary(QPainter& p, QPdfWriter& writer, const KluengClassPdf& in) {
     header[6] = QString();
   }
   const double widths[7] = {0.19, 0.08, 0.17, 0.13, 0.13, 0.15, 0.15};
-  const double rowHeight = 6.5 * mm, top = 30 * mm;
+  const double rowHeight = 6.5 * mm, top = (in.drawing && in.hasReference ? 36 : 30) * mm;
   const int perPage = std::max(1, static_cast<int>((page.height() - top - 10 * mm) / rowHeight) - 1);
   int passed = 0;
   for (int r = 0; r < in.rows; ++r) passed += cell(in, r, 1) == QStringLiteral("pass") ? 1 : 0;
@@ -58,27 +58,34 @@ void paintSummary(QPainter& p, QPdfWriter& writer, const KluengClassPdf& in) {
     p.drawText(QRectF(0, 0, page.width(), 10 * mm), Qt::AlignLeft | Qt::AlignVCenter,
                thai ? QStringLiteral("ผลการตรวจงานทั้งชั้นเรียน") : QStringLiteral("Class grades"));
     p.setFont(textFont);
-    QString against = thai ? QStringLiteral("เทียบกับ %1 · พิกัดความเผื่อ %2 มม. บนเส้นผ่าศูนย์กลาง · %3")
-                           : QStringLiteral("Against %1 · tolerance %2 mm on the diameter · %3");
-    if (in.drawing && in.hasReference)
-      against = (thai ? QStringLiteral("เทียบกับแบบงาน %1 (%2 ขนาดที่มีพิกัดความเผื่อ) และ ")
-                      : QStringLiteral("Against the drawing %1 (%2 toleranced dimensions) and "))
-                    .arg(QString::fromUtf8(in.drawing))
-                    .arg(in.dimensions) +
-                against;
-    else if (in.drawing)
-      against = (thai ? QStringLiteral("เทียบกับแบบงาน %1 (%2 ขนาดที่มีพิกัดความเผื่อ) · %3")
-                      : QStringLiteral("Against the drawing %1 (%2 toleranced dimensions) · %3"))
-                    .arg(QString::fromUtf8(in.drawing))
-                    .arg(in.dimensions);
-    const QString counts = thai ? QStringLiteral("%1 โปรแกรม: ผ่าน %2 ไม่ผ่าน %3") : QStringLiteral("%1 programs: %2 pass, %3 fail");
+    // What they were graded against: the reference, the drawing, or both on two lines.
+    QStringList lines;
     const QString date = reportDate(QDate::currentDate(), lang);
-    p.drawText(QRectF(0, 11 * mm, page.width(), 6 * mm), Qt::AlignLeft | Qt::AlignVCenter,
-               in.drawing && !in.hasReference
-                   ? against.arg(date)
-                   : against.arg(QString::fromUtf8(in.reference ? in.reference : "")).arg(in.tolerance, 0, 'f', 3).arg(date));
-    p.drawText(QRectF(0, 17 * mm, page.width(), 6 * mm), Qt::AlignLeft | Qt::AlignVCenter,
-               counts.arg(in.rows).arg(passed).arg(in.rows - passed));
+    const QString drawing = in.drawing ? QString::fromUtf8(in.drawing) : QString();
+    if (in.hasReference || !in.drawing)
+      lines << (thai ? QStringLiteral("เทียบกับ %1 · พิกัดความเผื่อ %2 มม. บนเส้นผ่าศูนย์กลาง · %3")
+                     : QStringLiteral("Against %1 · tolerance %2 mm on the diameter · %3"))
+                   .arg(QString::fromUtf8(in.reference ? in.reference : ""))
+                   .arg(in.tolerance, 0, 'f', 3)
+                   .arg(date);
+    if (in.drawing && in.hasReference)
+      lines << (thai ? QStringLiteral("และเทียบกับแบบงาน %1 (%2 ขนาดที่มีพิกัดความเผื่อ)")
+                     : QStringLiteral("and against the drawing %1 (%2 toleranced dimensions)"))
+                   .arg(drawing)
+                   .arg(in.dimensions);
+    else if (in.drawing)
+      lines << (thai ? QStringLiteral("เทียบกับแบบงาน %1 (%2 ขนาดที่มีพิกัดความเผื่อ) · %3")
+                     : QStringLiteral("Against the drawing %1 (%2 toleranced dimensions) · %3"))
+                   .arg(drawing)
+                   .arg(in.dimensions)
+                   .arg(date);
+    lines << (thai ? QStringLiteral("%1 โปรแกรม: ผ่าน %2 ไม่ผ่าน %3") : QStringLiteral("%1 programs: %2 pass, %3 fail"))
+                 .arg(in.rows)
+                 .arg(passed)
+                 .arg(in.rows - passed);
+    for (int i = 0; i < lines.size(); ++i)
+      p.drawText(QRectF(0, (11 + 6 * i) * mm, page.width(), 6 * mm), Qt::AlignLeft | Qt::AlignVCenter,
+                 p.fontMetrics().elidedText(lines[i], Qt::ElideRight, static_cast<int>(page.width())));
     double y = top;
     auto row = [&](const QStringList& texts, bool head, int index) {
       double x = 0;
