@@ -1589,5 +1589,9 @@
         <source>The drawing %1 has no toleranced dimension. Give tolerances in a part file (JSON; a DXF drawing's dimension texts are not read) or choose a general tolerance.</source>
         <translation>แบบงาน %1 ไม่มีขนาดที่กำหนดพิกัดความเผื่อ ให้กำหนดพิกัดความเผื่อในไฟล์ชิ้นงาน (JSON; ข้อความบอกขนาดในแบบ DXF ไม่ถูกอ่าน) หรือเลือกพิกัดความเผื่อทั่วไป</translation>
     </message>
+    <message>
+        <source>The layer of the part's outline:</source>
+        <translation>เลเยอร์ของเส้นรอบรูปชิ้นงาน:</translation>
+    </message>
 </context>
 </TS>

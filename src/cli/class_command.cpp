@@ -36,7 +36,7 @@ namespace {
 using namespace klueng::core;
 
 struct ClassOptions {
-  std::string dir, reference, drawing, generalTolerance, csv, pdf, configDir;
+  std::string dir, reference, drawing, layer, generalTolerance, csv, pdf, configDir;
   bool sheets = false;
   double tolerance = 0.05;
   gcode::Dialect dialect = gcode::Dialect::Fanuc;
@@ -55,7 +55,7 @@ std::optional<ClassOptions> parse(const std::vector<std::string>& args) {
   };
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    const bool takesValue = a == "--reference" || a == "--drawing" || a == "--general-tolerance" || a == "--csv" || a == "--pdf" || a == "--config" ||
+    const bool takesValue = a == "--reference" || a == "--drawing" || a == "--layer" || a == "--general-tolerance" || a == "--csv" || a == "--pdf" || a == "--config" ||
                             a == "--tolerance" || a == "--dialect" || a == "--lang";
     if (takesValue && i + 1 >= args.size()) {
       printCliError("class", codes::kCliNeedsValue, lang, {a});
@@ -63,6 +63,7 @@ std::optional<ClassOptions> parse(const std::vector<std::string>& args) {
     }
     if (a == "--reference") o.reference = args[++i];
     else if (a == "--drawing") o.drawing = args[++i];
+    else if (a == "--layer") o.layer = args[++i];
     else if (a == "--general-tolerance") {
       o.generalTolerance = args[++i];
       if (!design::generalTolerance(o.generalTolerance, 10.0)) return bad(a, o.generalTolerance, codes::kCliAllowedGeneralTolerance);
@@ -128,6 +129,7 @@ std::optional<std::vector<cut::DrawnDimension>> readDrawing(const ClassOptions& 
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   design::DxfImportOptions dxf;
   dxf.chuckGrip = chuckGrip;
+  dxf.layer = o.layer;
   const auto part = ext == ".dxf" ? design::importDxf(*read.value, o.drawing, dxf) : design::readPartDesign(*read.value, o.drawing);
   for (const Diagnostic& d : part.diagnostics) printDiagnostic(stderr, o.drawing, d, o.lang);
   if (!part.ok()) return std::nullopt;

@@ -9,6 +9,7 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QInputDialog>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
@@ -40,7 +41,7 @@ enum Column { kProgram, kResult, kErrors, kAlarm, kCycleTime, kLeftover, kGouge,
 
 // The drawing's toleranced dimensions, or nullopt with the reasons in the UI language.
 std::optional<std::vector<core::cut::DrawnDimension>> readDrawing(const QString& path, const std::string& general,
-                                                                  double chuckGrip, QString* why) {
+                                                                  double chuckGrip, const QString& layer, QString* why) {
   const std::string file = path.toStdString();
   const core::Lang lang = Language::coreLang();
   const auto fail = [&](const std::vector<core::Diagnostic>& diagnostics) {
@@ -54,6 +55,7 @@ std::optional<std::vector<core::cut::DrawnDimension>> readDrawing(const QString&
   if (!read.ok()) return fail(read.diagnostics);
   core::design::DxfImportOptions dxf;
   dxf.chuckGrip = chuckGrip;
+  dxf.layer = layer.toStdString();
   const auto part = path.endsWith(QStringLiteral(".dxf"), Qt::CaseInsensitive)
                         ? core::design::importDxf(*read.value, file, dxf)
                         : core::design::readPartDesign(*read.value, file);
@@ -239,8 +241,23 @@ void ClassGradeDialog::grade() {
     return;
   }
   if (!drawing.isEmpty()) {
+    // A DXF with lines on several layers: ask which holds the outline, as the Part Designer does.
+    if (drawing.endsWith(QStringLiteral(".dxf"), Qt::CaseInsensitive) && drawing != layerOf_ && isVisible()) {
+      layer_.clear();
+      const auto text = core::design::readPartFile(drawing.toStdString());
+      const std::vector<std::string> layers = text.ok() ? core::design::dxfOutlineLayers(*text.value) : std::vector<std::string>{};
+      if (layers.size() > 1) {
+        QStringList names;
+        for (const std::string& l : layers) names << QString::fromStdString(l);
+        bool ok = false;
+        layer_ = QInputDialog::getItem(this, windowTitle(), tr("The layer of the part's outline:"), names, 0, false, &ok);
+        if (!ok) return;
+        layerOf_ = drawing;
+      }
+    }
     QString why;
-    auto dims = readDrawing(drawing, general_->currentData().toString().toStdString(), setup_.machine.chuckGrip, &why);
+    auto dims = readDrawing(drawing, general_->currentData().toString().toStdString(), setup_.machine.chuckGrip,
+                            drawing == layerOf_ ? layer_ : QString(), &why);
     if (!dims) {
       noteShown_ = true;
       summary_->setText(why);

@@ -77,6 +77,7 @@ class ClassGradeDialog : public QDialog {
   std::vector<core::cut::ClassRow> rows_;
   // What the rows were graded against (for the PDF and the columns shown).
   QString gradedReference_, gradedDrawing_;
+  QString layer_, layerOf_;  // the DXF layer picked, and for which drawing
   double gradedTolerance_ = 0.05;
   bool noteShown_ = false;  // the summary holds a message, not counts
   QFutureWatcher<std::vector<core::cut::ClassRow>> watcher_;

@@ -235,6 +235,14 @@ TEST(CliClass, GradedAgainstTheDrawingFeatureByFeature) {
   EXPECT_NE(err.find("has no toleranced dimension"), std::string::npos) << err;
   EXPECT_EQ(run(folder + " --drawing '" + drawing.string() + "' --general-tolerance x", &err), 2);
   EXPECT_NE(err.find("f, m, c or v"), std::string::npos) << err;
+  // A DXF drawing: its layer named when it has several.
+  const std::string pin = std::string(KLUENG_SOURCE_DIR) + "/fuzz/corpus/design/pin.dxf";
+  EXPECT_EQ(run(folder + " --drawing '" + pin + "' --general-tolerance m", &err), 2);
+  EXPECT_NE(err.find("F187"), std::string::npos) << err;
+  // With the layer named it is read on that layer (this corpus pin's outline is open there: F189, located).
+  EXPECT_EQ(run(folder + " --drawing '" + pin + "' --layer PART --general-tolerance m", &err), 2);
+  EXPECT_NE(err.find("F189"), std::string::npos) << err;
+  EXPECT_NE(err.find("X45.000 Y17.000"), std::string::npos) << err;
   ASSERT_EQ(run(folder + " --drawing '" + drawing.string() + "' --general-tolerance m --csv '" + csvPath.string() + "'", &err), 0) << err;
   EXPECT_NE(slurp(csvPath).find("\nanna.nc,pass,0,,,77.8,,,,,Ø30,30.000,ISO 2768-m (±0.2),29.800,30.200,30.000,in\n"),
             std::string::npos) << slurp(csvPath);

@@ -103,7 +103,7 @@ constexpr MessageText kMessages[] = {
      "                ของ --config หรือในโฟลเดอร์ข้อมูลของผู้ใช้)\n"},
     {codes::kCliClassUsage,
      "usage: klueng-cli class DIR --reference REF.nc [--tolerance 0.05] [--csv OUT.csv]\n"
-     "                            [--drawing PART.json|PART.dxf [--general-tolerance f|m|c|v]]\n"
+     "                            [--drawing PART.json|PART.dxf [--layer NAME] [--general-tolerance f|m|c|v]]\n"
      "                            [--pdf OUT.pdf [--sheets]] [--dialect fanuc|haas|classic]\n"
      "                            [--config DIR] [--lang en|th]\n"
      "  every program in DIR against REF.nc: errors, alarm, cycle time, the largest leftover\n"
@@ -114,7 +114,7 @@ constexpr MessageText kMessages[] = {
      "  --pdf: the same table as a page (Thai with --lang th), --sheets: then every\n"
      "  student's program sheet and drawing in the same PDF\n",
      "วิธีใช้: klueng-cli class DIR --reference REF.nc [--tolerance 0.05] [--csv OUT.csv]\n"
-     "                            [--drawing PART.json|PART.dxf [--general-tolerance f|m|c|v]]\n"
+     "                            [--drawing PART.json|PART.dxf [--layer NAME] [--general-tolerance f|m|c|v]]\n"
      "                            [--pdf OUT.pdf [--sheets]] [--dialect fanuc|haas|classic]\n"
      "                            [--config DIR] [--lang en|th]\n"
      "  ตรวจทุกโปรแกรมใน DIR เทียบกับ REF.nc: ข้อผิดพลาด สัญญาณเตือน เวลาทำงาน เนื้อที่เหลือมากที่สุด\n"
