@@ -1501,5 +1501,109 @@
         <source>%1 programs: %2 pass, %3 fail</source>
         <translation>%1 โปรแกรม: ผ่าน %2 ไม่ผ่าน %3</translation>
     </message>
+    <message>
+        <source>Reference program (optional):</source>
+        <translation>โปรแกรมต้นแบบ (ไม่บังคับ):</translation>
+    </message>
+    <message>
+        <source>Drawing with tolerances (JSON/DXF, optional):</source>
+        <translation>แบบงานที่มีพิกัดความเผื่อ (JSON/DXF, ไม่บังคับ):</translation>
+    </message>
+    <message>
+        <source>General tolerance (ISO 2768-1):</source>
+        <translation>พิกัดความเผื่อทั่วไป (ISO 2768-1):</translation>
+    </message>
+    <message>
+        <source>none: only the drawing's own tolerances</source>
+        <translation>ไม่มี: ใช้เฉพาะพิกัดความเผื่อที่กำหนดในแบบ</translation>
+    </message>
+    <message>
+        <source>f (fine)</source>
+        <translation>f (ละเอียด)</translation>
+    </message>
+    <message>
+        <source>m (medium)</source>
+        <translation>m (ปานกลาง)</translation>
+    </message>
+    <message>
+        <source>c (coarse)</source>
+        <translation>c (หยาบ)</translation>
+    </message>
+    <message>
+        <source>v (very coarse)</source>
+        <translation>v (หยาบมาก)</translation>
+    </message>
+    <message>
+        <source>The teacher's drawing</source>
+        <translation>แบบงานของครู</translation>
+    </message>
+    <message>
+        <source>Parts and drawings (*.json *.dxf);;All files (*)</source>
+        <translation>ชิ้นงานและแบบงาน (*.json *.dxf);;ทุกไฟล์ (*)</translation>
+    </message>
+    <message>
+        <source>Save the grades as PDF</source>
+        <translation>บันทึกผลการตรวจเป็น PDF</translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
+        <translation>ไฟล์ PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Save PDF...</source>
+        <translation>บันทึก PDF...</translation>
+    </message>
+    <message>
+        <source>Drawing</source>
+        <translation>แบบงาน</translation>
+    </message>
+    <message>
+        <source>Dimension</source>
+        <translation>ขนาด</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>พิกัดความเผื่อ</translation>
+    </message>
+    <message>
+        <source>Limits (mm)</source>
+        <translation>ขอบเขต (มม.)</translation>
+    </message>
+    <message>
+        <source>Measured (mm)</source>
+        <translation>วัดได้ (มม.)</translation>
+    </message>
+    <message>
+        <source>Choose a reference program or a drawing with tolerances to grade against.</source>
+        <translation>เลือกโปรแกรมต้นแบบหรือแบบงานที่มีพิกัดความเผื่อเพื่อใช้ตรวจเทียบ</translation>
+    </message>
+    <message>
+        <source>No programs graded: the folder has no program files.</source>
+        <translation>ไม่มีโปรแกรมที่ตรวจได้: ในโฟลเดอร์ไม่มีไฟล์โปรแกรม</translation>
+    </message>
+    <message>
+        <source>%1 of %2 in tolerance</source>
+        <translation>อยู่ในพิกัด %1 จาก %2</translation>
+    </message>
+    <message>
+        <source>in tolerance</source>
+        <translation>อยู่ในพิกัด</translation>
+    </message>
+    <message>
+        <source>out of tolerance</source>
+        <translation>นอกพิกัด</translation>
+    </message>
+    <message>
+        <source>not on the part</source>
+        <translation>ไม่มีบนชิ้นงาน</translation>
+    </message>
+    <message>
+        <source>The drawing %1 has no toleranced dimension. Give tolerances in a part file (JSON; a DXF drawing's dimension texts are not read) or choose a general tolerance.</source>
+        <translation>แบบงาน %1 ไม่มีขนาดที่กำหนดพิกัดความเผื่อ ให้กำหนดพิกัดความเผื่อในไฟล์ชิ้นงาน (JSON; ข้อความบอกขนาดในแบบ DXF ไม่ถูกอ่าน) หรือเลือกพิกัดความเผื่อทั่วไป</translation>
+    </message>
+    <message>
+        <source>The layer of the part's outline:</source>
+        <translation>เลเยอร์ของเส้นรอบรูปชิ้นงาน:</translation>
+    </message>
 </context>
 </TS>

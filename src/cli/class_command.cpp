@@ -1,10 +1,14 @@
-// klueng-cli class DIR --reference REF.nc: grade a class (issue 11). Every
-// program in DIR is checked, run and cut like `simulate`, and its finished part
-// compared with the reference's on the diameter: the largest material left on
-// (leftover) and cut away (gouge), pass when both are within the tolerance and
-// the program ran to its end. One row per program (CSV); one bad file is one
-// failed row, never the end of the batch.
+// klueng-cli class DIR --reference REF.nc | --drawing PART.json: grade a class
+// (issues 11 and 28). Every program in DIR is checked, run and cut like
+// `simulate`, and its finished part compared with the reference's on the
+// diameter (the largest material left on and cut away, both within the
+// tolerance) and/or measured against each toleranced dimension of the
+// teacher's drawing (a part file or DXF; ISO 286 fits, ±, ISO 2768 general
+// tolerances), pass when everything is within and the program ran to its end.
+// One row per program (CSV; with a drawing one per program and dimension); one
+// bad file is one failed row, never the end of the batch.
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <cstdio>
 #include <exception>
@@ -18,6 +22,10 @@
 #include "png_writer.h"
 #include "commands.h"
 #include "klueng/core/cut/class_grading.h"
+#include "klueng/core/design/dxf_import.h"
+#include "klueng/core/design/iso_fits.h"
+#include "klueng/core/design/part_design.h"
+#include "render/class_pdf_cells.h"
 #include "klueng/core/gcode/word_format.h"
 #include "klueng/core/io/program_file.h"
 
@@ -28,7 +36,7 @@ namespace {
 using namespace klueng::core;
 
 struct ClassOptions {
-  std::string dir, reference, csv, pdf, configDir;
+  std::string dir, reference, drawing, layer, generalTolerance, csv, pdf, configDir;
   bool sheets = false;
   double tolerance = 0.05;
   gcode::Dialect dialect = gcode::Dialect::Fanuc;
@@ -47,13 +55,19 @@ std::optional<ClassOptions> parse(const std::vector<std::string>& args) {
   };
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    const bool takesValue = a == "--reference" || a == "--csv" || a == "--pdf" || a == "--config" ||
+    const bool takesValue = a == "--reference" || a == "--drawing" || a == "--layer" || a == "--general-tolerance" || a == "--csv" || a == "--pdf" || a == "--config" ||
                             a == "--tolerance" || a == "--dialect" || a == "--lang";
     if (takesValue && i + 1 >= args.size()) {
       printCliError("class", codes::kCliNeedsValue, lang, {a});
       return std::nullopt;
     }
     if (a == "--reference") o.reference = args[++i];
+    else if (a == "--drawing") o.drawing = args[++i];
+    else if (a == "--layer") o.layer = args[++i];
+    else if (a == "--general-tolerance") {
+      o.generalTolerance = args[++i];
+      if (!design::generalTolerance(o.generalTolerance, 10.0)) return bad(a, o.generalTolerance, codes::kCliAllowedGeneralTolerance);
+    }
     else if (a == "--csv") o.csv = args[++i];
     else if (a == "--pdf") o.pdf = args[++i];
     else if (a == "--sheets") o.sheets = true;
@@ -81,7 +95,7 @@ std::optional<ClassOptions> parse(const std::vector<std::string>& args) {
       return std::nullopt;
     }
   }
-  if (o.dir.empty() || o.reference.empty()) {
+  if (o.dir.empty() || (o.reference.empty() && o.drawing.empty())) {
     printCliError("class", codes::kCliClassNeeds, lang);
     return std::nullopt;
   }
@@ -90,33 +104,41 @@ std::optional<ClassOptions> parse(const std::vector<std::string>& args) {
 
 // The table as the picture module draws it (klueng-png.so, opened only for --pdf).
 bool writePdf(const ClassOptions& o, const std::vector<cut::ClassRow>& rows, const std::string& configDir) {
-  std::vector<std::string> cells;
-  std::vector<std::string> paths;
-  for (const cut::ClassRow& r : rows) {
-    cells.push_back(r.file);
-    cells.push_back(r.pass ? "pass" : "fail");
-    cells.push_back(r.graded.errors > 0 ? std::to_string(r.graded.errors) + " (" + r.graded.firstError + ")" : "0");
-    cells.push_back(r.graded.alarm);
-    cells.push_back(r.graded.errors == 0 ? gcode::formatFixed(r.graded.cycleTime, 1) : "");
-    cells.push_back(r.compared ? gcode::formatFixed(r.deviation.leftover, 3) : "");
-    cells.push_back(r.compared ? gcode::formatFixed(r.deviation.gouge, 3) : "");
-    paths.push_back(r.path);
-  }
-  std::vector<const char*> cellPtrs, pathPtrs;
-  for (const std::string& c : cells) cellPtrs.push_back(c.c_str());
-  for (const std::string& p : paths) pathPtrs.push_back(p.c_str());
+  const render::ClassPdfCells cells(rows, o.lang, !o.reference.empty());
   const std::string reference = std::filesystem::path(o.reference).filename().string();
+  const std::string drawing = std::filesystem::path(o.drawing).filename().string();
   KluengClassPdf in{};
   in.thai = o.lang == Lang::Th ? 1 : 0;
   in.reference = reference.c_str();
   in.tolerance = o.tolerance;
-  in.rows = static_cast<int>(rows.size());
-  in.cells = cellPtrs.data();
+  cells.into(in);
   in.sheets = o.sheets ? static_cast<int>(rows.size()) : 0;
-  in.sheetPaths = pathPtrs.data();
   in.configDir = configDir.c_str();
   in.dialect = static_cast<int>(o.dialect);
+  in.drawing = o.drawing.empty() ? nullptr : drawing.c_str();
+  in.hasReference = o.reference.empty() ? 0 : 1;
   return reportWrite(o.pdf, writeClassPdf(in, o.pdf), o.lang);
+}
+
+// The drawing's toleranced dimensions, or nullopt after saying why (its file's messages).
+std::optional<std::vector<cut::DrawnDimension>> readDrawing(const ClassOptions& o, double chuckGrip) {
+  const io::ReadResult<std::string> read = design::readPartFile(o.drawing);
+  for (const Diagnostic& d : read.diagnostics) printDiagnostic(stderr, o.drawing, d, o.lang);
+  if (!read.ok()) return std::nullopt;
+  std::string ext = std::filesystem::path(o.drawing).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  design::DxfImportOptions dxf;
+  dxf.chuckGrip = chuckGrip;
+  dxf.layer = o.layer;
+  const auto part = ext == ".dxf" ? design::importDxf(*read.value, o.drawing, dxf) : design::readPartDesign(*read.value, o.drawing);
+  for (const Diagnostic& d : part.diagnostics) printDiagnostic(stderr, o.drawing, d, o.lang);
+  if (!part.ok()) return std::nullopt;
+  std::vector<cut::DrawnDimension> dims = design::drawnDimensions(*part.value, o.generalTolerance);
+  if (dims.empty()) {
+    printCliError("class", codes::kCliDrawingNoTolerances, o.lang, {o.drawing});
+    return std::nullopt;
+  }
+  return dims;
 }
 
 }  // namespace
@@ -141,10 +163,24 @@ int runClass(const std::vector<std::string>& args) {
     std::fprintf(stderr, "klueng-cli class: %s\n", error.c_str());
     return 2;
   }
-  const cut::GradedProgram reference = cut::gradeProgram(o.reference, config.setup, *request);
-  if (!reference.part) {
-    printCliError("class", codes::kCliReferenceFails, o.lang, {o.reference, reference.firstError + reference.alarm});
-    return 2;
+  cut::GradeAgainst against;
+  against.tolerance = o.tolerance;
+  cut::GradedProgram reference;
+  if (!o.reference.empty()) {
+    reference = cut::gradeProgram(o.reference, config.setup, *request);
+    if (!reference.part) {
+      printCliError("class", codes::kCliReferenceFails, o.lang, {o.reference, reference.firstError + reference.alarm});
+      return 2;
+    }
+    against.referencePath = o.reference;
+    against.reference = &*reference.part;
+  }
+  if (!o.drawing.empty()) {
+    auto dims = readDrawing(o, config.setup.machine.chuckGrip);
+    if (!dims) return 2;
+    against.drawingPath = o.drawing;
+    against.drawing = std::move(*dims);
+    against.hasDrawing = true;
   }
   std::error_code ec;
   if (!std::filesystem::is_directory(o.dir, ec)) {
@@ -154,15 +190,16 @@ int runClass(const std::vector<std::string>& args) {
   // Every program file in the folder is graded, so every one is an input the outputs must not
   // replace (the grades' own CSV or PDF beside them is not a program: a second run writes it again).
   std::vector<std::string> inputs = setupFiles(config);
-  inputs.push_back(o.reference);
+  if (!o.reference.empty()) inputs.push_back(o.reference);
+  if (!o.drawing.empty()) inputs.push_back(o.drawing);
   for (const std::filesystem::directory_entry& e : std::filesystem::directory_iterator(o.dir, ec))
     if (e.is_regular_file(ec) && io::isProgramFileName(e.path().string())) inputs.push_back(e.path().string());
   if (!outputsAllowed({o.csv, o.pdf}, inputs, o.lang)) return 2;
   const std::vector<cut::ClassRow> rows = cut::gradeClass(
-      o.dir, o.reference, *reference.part, config.setup, *request, o.tolerance,
+      o.dir, against, config.setup, *request,
       [](int i, int n, const std::string& name) { std::fprintf(stderr, "[%d/%d] %s\n", i + 1, n, name.c_str()); });
   const int passed = static_cast<int>(std::count_if(rows.begin(), rows.end(), [](const cut::ClassRow& r) { return r.pass; }));
-  const std::string table = cut::classCsv(rows);
+  const std::string table = cut::classCsv(rows, against.hasDrawing);
   if (o.csv.empty()) {
     std::fputs(table.c_str(), stdout);
   } else if (!writeOutput(o.csv, table, o.lang)) {

@@ -16,6 +16,12 @@ struct KluengClassPdf {
   const char* const* sheetPaths;  // sheets paths, in row order
   const char* configDir;          // the setup for the drawings
   int dialect;                    // core::gcode::Dialect
+  // Against the teacher's drawing (issue 28): null when graded against a reference only.
+  const char* drawing;                // the drawing's file name
+  int hasReference;                   // 0: graded against the drawing only
+  int dimensions;                     // toleranced dimensions per student
+  const char* const* dimensionCells;  // rows x dimensions x 5 (feature, tolerance, limits, measured, verdict), UTF-8
+  const int* verdicts;                // rows x dimensions: 0 in, 1 out, 2 missing
 };
 }
 // 1 with *bytes (malloc'd, the caller frees) and *size; 0 with `error` filled.

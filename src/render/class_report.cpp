@@ -1,5 +1,6 @@
 // The class grading report (issue 11): a summary table of every student, then,
-// with --sheets, each student's program sheet and drawing, in one PDF.
+// against a drawing (issue 28), each student's toleranced dimensions measured,
+// then, with --sheets, each student's program sheet and drawing, in one PDF.
 #include <QBuffer>
 #include <QCoreApplication>
 #include <QFileInfo>
@@ -32,14 +33,18 @@ void paintSummary(QPainter& p, QPdfWriter& writer, const KluengClassPdf& in) {
   const ReportLanguage lang = thai ? ReportLanguage::Thai : ReportLanguage::English;
   const double mm = writer.logicalDpiX() / 25.4;
   const QRectF page(0, 0, writer.width(), writer.height());
-  const QStringList header = thai ? QStringList{QStringLiteral("โปรแกรม"), QStringLiteral("ผล"), QStringLiteral("ข้อผิดพลาด"),
+  QStringList header = thai ? QStringList{QStringLiteral("โปรแกรม"), QStringLiteral("ผล"), QStringLiteral("ข้อผิดพลาด"),
                                                 QStringLiteral("สัญญาณเตือน"), QStringLiteral("เวลา (วินาที)"),
                                                 QStringLiteral("เนื้อเหลือ (มม.)"), QStringLiteral("กินเนื้อเกิน (มม.)")}
                                   : QStringList{QStringLiteral("Program"), QStringLiteral("Result"), QStringLiteral("Errors"),
                                                 QStringLiteral("Alarm"), QStringLiteral("Cycle time (s)"),
                                                 QStringLiteral("Leftover (mm)"), QStringLiteral("Gouge (mm)")};
+  if (in.drawing && !in.hasReference) {  // the drawing's dimensions in tolerance, no leftover or gouge
+    header[5] = thai ? QStringLiteral("ขนาดในพิกัด") : QStringLiteral("In tolerance");
+    header[6] = QString();
+  }
   const double widths[7] = {0.19, 0.08, 0.17, 0.13, 0.13, 0.15, 0.15};
-  const double rowHeight = 6.5 * mm, top = 30 * mm;
+  const double rowHeight = 6.5 * mm, top = (in.drawing && in.hasReference ? 36 : 30) * mm;
   const int perPage = std::max(1, static_cast<int>((page.height() - top - 10 * mm) / rowHeight) - 1);
   int passed = 0;
   for (int r = 0; r < in.rows; ++r) passed += cell(in, r, 1) == QStringLiteral("pass") ? 1 : 0;
@@ -53,13 +58,34 @@ void paintSummary(QPainter& p, QPdfWriter& writer, const KluengClassPdf& in) {
     p.drawText(QRectF(0, 0, page.width(), 10 * mm), Qt::AlignLeft | Qt::AlignVCenter,
                thai ? QStringLiteral("ผลการตรวจงานทั้งชั้นเรียน") : QStringLiteral("Class grades"));
     p.setFont(textFont);
-    const QString against = thai ? QStringLiteral("เทียบกับ %1 · พิกัดความเผื่อ %2 มม. บนเส้นผ่าศูนย์กลาง · %3")
-                                 : QStringLiteral("Against %1 · tolerance %2 mm on the diameter · %3");
-    const QString counts = thai ? QStringLiteral("%1 โปรแกรม: ผ่าน %2 ไม่ผ่าน %3") : QStringLiteral("%1 programs: %2 pass, %3 fail");
-    p.drawText(QRectF(0, 11 * mm, page.width(), 6 * mm), Qt::AlignLeft | Qt::AlignVCenter,
-               against.arg(QString::fromUtf8(in.reference)).arg(in.tolerance, 0, 'f', 3).arg(reportDate(QDate::currentDate(), lang)));
-    p.drawText(QRectF(0, 17 * mm, page.width(), 6 * mm), Qt::AlignLeft | Qt::AlignVCenter,
-               counts.arg(in.rows).arg(passed).arg(in.rows - passed));
+    // What they were graded against: the reference, the drawing, or both on two lines.
+    QStringList lines;
+    const QString date = reportDate(QDate::currentDate(), lang);
+    const QString drawing = in.drawing ? QString::fromUtf8(in.drawing) : QString();
+    if (in.hasReference || !in.drawing)
+      lines << (thai ? QStringLiteral("เทียบกับ %1 · พิกัดความเผื่อ %2 มม. บนเส้นผ่าศูนย์กลาง · %3")
+                     : QStringLiteral("Against %1 · tolerance %2 mm on the diameter · %3"))
+                   .arg(QString::fromUtf8(in.reference ? in.reference : ""))
+                   .arg(in.tolerance, 0, 'f', 3)
+                   .arg(date);
+    if (in.drawing && in.hasReference)
+      lines << (thai ? QStringLiteral("และเทียบกับแบบงาน %1 (%2 ขนาดที่มีพิกัดความเผื่อ)")
+                     : QStringLiteral("and against the drawing %1 (%2 toleranced dimensions)"))
+                   .arg(drawing)
+                   .arg(in.dimensions);
+    else if (in.drawing)
+      lines << (thai ? QStringLiteral("เทียบกับแบบงาน %1 (%2 ขนาดที่มีพิกัดความเผื่อ) · %3")
+                     : QStringLiteral("Against the drawing %1 (%2 toleranced dimensions) · %3"))
+                   .arg(drawing)
+                   .arg(in.dimensions)
+                   .arg(date);
+    lines << (thai ? QStringLiteral("%1 โปรแกรม: ผ่าน %2 ไม่ผ่าน %3") : QStringLiteral("%1 programs: %2 pass, %3 fail"))
+                 .arg(in.rows)
+                 .arg(passed)
+                 .arg(in.rows - passed);
+    for (int i = 0; i < lines.size(); ++i)
+      p.drawText(QRectF(0, (11 + 6 * i) * mm, page.width(), 6 * mm), Qt::AlignLeft | Qt::AlignVCenter,
+                 p.fontMetrics().elidedText(lines[i], Qt::ElideRight, static_cast<int>(page.width())));
     double y = top;
     auto row = [&](const QStringList& texts, bool head, int index) {
       double x = 0;
@@ -83,6 +109,78 @@ void paintSummary(QPainter& p, QPdfWriter& writer, const KluengClassPdf& in) {
       QStringList texts;
       for (int c = 0; c < 7; ++c) texts << cell(in, r, c);
       row(texts, false, r);
+    }
+  }
+}
+
+// Against a drawing: each student's toleranced dimensions, measured, in or out,
+// a block per student kept on one page when it fits.
+void paintInspection(QPainter& p, QPdfWriter& writer, const KluengClassPdf& in) {
+  const bool thai = in.thai != 0;
+  const double mm = writer.logicalDpiX() / 25.4;
+  const QRectF page(0, 0, writer.width(), writer.height());
+  const QStringList header = thai ? QStringList{QStringLiteral("ขนาด"), QStringLiteral("พิกัดความเผื่อ"),
+                                                QStringLiteral("ขอบเขต (มม.)"), QStringLiteral("วัดได้ (มม.)"),
+                                                QStringLiteral("ผล")}
+                                  : QStringList{QStringLiteral("Dimension"), QStringLiteral("Tolerance"),
+                                                QStringLiteral("Limits (mm)"), QStringLiteral("Measured (mm)"),
+                                                QStringLiteral("Result")};
+  const double widths[5] = {0.24, 0.22, 0.20, 0.16, 0.18};
+  const double rowHeight = 6.5 * mm, top = 24 * mm, bottom = page.height() - 5 * mm;
+  const QFont titleFont(QString::fromLatin1(kReportFontFamily), 16, QFont::Bold);
+  const QFont textFont(QString::fromLatin1(kReportFontFamily), 9);
+  const QFont boldFont(QString::fromLatin1(kReportFontFamily), 9, QFont::Bold);
+  const auto dimCell = [&](int row, int dim, int column) {
+    const std::size_t at = (static_cast<std::size_t>(row) * static_cast<std::size_t>(in.dimensions) +
+                            static_cast<std::size_t>(dim)) * 5 + static_cast<std::size_t>(column);
+    return QString::fromUtf8(in.dimensionCells[at]);
+  };
+  double y = 0;
+  const auto drawRow = [&](const QStringList& texts, const QFont& font, const QColor& resultColour) {
+    double x = 0;
+    for (int c = 0; c < 5; ++c) {
+      const double w = widths[c] * page.width();
+      p.setFont(font);
+      p.setPen(c == 4 ? resultColour : QColor(Qt::black));
+      p.drawText(QRectF(x + 1 * mm, y, w - 2 * mm, rowHeight), Qt::AlignLeft | Qt::AlignVCenter,
+                 p.fontMetrics().elidedText(texts[c], Qt::ElideRight, static_cast<int>(w - 2 * mm)));
+      x += w;
+    }
+    y += rowHeight;
+  };
+  const auto newPage = [&] {
+    writer.newPage();
+    p.setPen(Qt::black);
+    p.setFont(titleFont);
+    p.drawText(QRectF(0, 0, page.width(), 10 * mm), Qt::AlignLeft | Qt::AlignVCenter,
+               thai ? QStringLiteral("ตรวจวัดเทียบกับแบบงาน %1").arg(QString::fromUtf8(in.drawing))
+                    : QStringLiteral("Inspection against %1").arg(QString::fromUtf8(in.drawing)));
+    p.setFont(textFont);
+    p.drawText(QRectF(0, 11 * mm, page.width(), 6 * mm), Qt::AlignLeft | Qt::AlignVCenter,
+               thai ? QStringLiteral("วัดละเอียด 0.001 มม. ค่าที่เท่ากับขอบเขตพอดีถือว่าอยู่ในพิกัด ขนาดที่ไม่มีบนชิ้นงานถือว่าไม่ผ่าน")
+                    : QStringLiteral("Measured to 0.001 mm; a value exactly at a limit is in; a dimension not on the part is out."));
+    y = top;
+    drawRow(header, boldFont, Qt::black);
+    p.setPen(QPen(Qt::black, 0.3 * mm));
+    p.drawLine(QPointF(0, y), QPointF(page.width(), y));
+  };
+  newPage();
+  for (int r = 0; r < in.rows; ++r) {
+    const double block = rowHeight * (1 + in.dimensions);
+    if (y + block > bottom && y > top + rowHeight) newPage();
+    const bool pass = cell(in, r, 1) == QStringLiteral("pass");
+    int inCount = 0;
+    for (int d = 0; d < in.dimensions; ++d) inCount += in.verdicts[static_cast<std::size_t>(r * in.dimensions + d)] == 0;
+    p.fillRect(QRectF(0, y, page.width(), rowHeight), QColor(230, 230, 230));
+    const QString verdict = thai ? (pass ? QStringLiteral("ผ่าน") : QStringLiteral("ไม่ผ่าน")) : (pass ? QStringLiteral("pass") : QStringLiteral("fail"));
+    const QString count = thai ? QStringLiteral("อยู่ในพิกัด %1 จาก %2").arg(inCount).arg(in.dimensions)
+                               : QStringLiteral("%1 of %2 in").arg(inCount).arg(in.dimensions);
+    drawRow({cell(in, r, 0), count, QString(), QString(), verdict}, boldFont, pass ? QColor(0, 120, 0) : QColor(190, 0, 0));
+    for (int d = 0; d < in.dimensions; ++d) {
+      if (y + rowHeight > bottom) newPage();
+      const int v = in.verdicts[static_cast<std::size_t>(r * in.dimensions + d)];
+      drawRow({dimCell(r, d, 0), dimCell(r, d, 1), dimCell(r, d, 2), dimCell(r, d, 3), dimCell(r, d, 4)}, textFont,
+              v == 0 ? QColor(0, 120, 0) : QColor(190, 0, 0));
     }
   }
 }
@@ -111,6 +209,7 @@ extern "C" __attribute__((visibility("default"))) int klueng_class_pdf(const Klu
   QPainter painter;
   if (!painter.begin(&writer)) return fail(QStringLiteral("the PDF could not be started"));
   render::paintSummary(painter, writer, *in);
+  if (in->drawing && in->dimensions > 0 && in->rows > 0) render::paintInspection(painter, writer, *in);
   if (in->sheets > 0) {
     const core::machine::LoadedSetup setup = core::machine::loadMachineSetup(in->configDir ? in->configDir : "");
     const auto dialect = static_cast<core::gcode::Dialect>(in->dialect);

@@ -729,7 +729,7 @@ TEST(CliLanguage, ClassAndGenerateErrorsAreThaiUnderLangTh) {
   EXPECT_THAT(classRun.out, HasSubstr("klueng-cli class: " + missing + " ไม่ใช่โฟลเดอร์\n"));
   const CliRun classUse = runCliWithErrors("class --lang th");
   EXPECT_EQ(classUse.exitCode, 2);
-  EXPECT_THAT(classUse.out, HasSubstr("klueng-cli class: ต้องระบุโฟลเดอร์ DIR และ --reference REF.nc\nวิธีใช้: klueng-cli class DIR"));
+  EXPECT_THAT(classUse.out, HasSubstr("klueng-cli class: ต้องระบุโฟลเดอร์ DIR และ --reference REF.nc หรือ --drawing PART.json\nวิธีใช้: klueng-cli class DIR"));
   const CliRun tolerance = runCliWithErrors("class x --reference y --tolerance lots");
   EXPECT_THAT(tolerance.out, HasSubstr("klueng-cli class: bad value 'lots' for --tolerance\n"));
 

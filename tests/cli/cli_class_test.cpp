@@ -175,6 +175,80 @@ TEST(CliClass, ThePdfHasTheTableAndWithSheetsEveryStudentsSheets) {
   EXPECT_EQ(std::count(all.begin(), all.end(), '\f'), 5);  // pdftotext ends each page with a form feed
 }
 
+// Issue 28 item 2: graded against the teacher's drawing with tolerances instead
+// of a reference program — one in, one out, one exactly at a limit.
+TEST(CliClass, GradedAgainstTheDrawingFeatureByFeature) {
+  const fs::path dir = fs::temp_directory_path() / "klueng_cli_class_drawing_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "class");
+  const std::string sample = slurp(fs::path(KLUENG_SAMPLES_DIR) / "01-step-shaft.txt");
+  std::ofstream(dir / "class" / "anna.nc", std::ios::binary) << sample;
+  std::ofstream(dir / "class" / "boon.nc", std::ios::binary)
+      << replaced(sample, "N380 G03 X40. Z-22.", "N380 G03 X39.98 Z-22.");  // Ø40 0.02 small: out of js6
+  std::ofstream(dir / "class" / "chai.nc", std::ios::binary)
+      << replaced(sample, "N410 X46. Z-41.\nN420 Z-60.", "N410 X45.95 Z-41.\nN420 Z-60.");  // at the lower limit: in
+  const fs::path drawing = dir / "shaft.json";
+  std::ofstream(drawing, std::ios::binary) << R"({
+    "stock": { "diameter": 50, "length": 100 },
+    "outside": [
+      { "cylinder": 30, "length": 20, "chamfer": 3, "tolerance": "h7", "length_tolerance": 0.1 },
+      { "cylinder": 40, "length": 20, "round": 2, "tolerance": "js6" },
+      { "cylinder": 46, "length": 20, "chamfer": 1, "tolerance": [0, -0.05] }
+    ]
+  })";
+  const std::string folder = "'" + (dir / "class").string() + "'";
+  const fs::path csvPath = dir / "grades.csv";
+  std::string err;
+  ASSERT_EQ(run(folder + " --drawing '" + drawing.string() + "' --csv '" + csvPath.string() + "'", &err), 0) << err;
+  EXPECT_NE(err.find("3 programs: 2 pass, 1 fail"), std::string::npos) << err;
+  const std::string csv = slurp(csvPath);
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "file,result,errors,first_error,alarm,cycle_time_s,leftover_mm,leftover_z,gouge_mm,gouge_z,"
+            "feature,nominal_mm,tolerance,lower_mm,upper_mm,measured_mm,verdict");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 3 * 4) << csv;
+  EXPECT_NE(csv.find("\nanna.nc,pass,0,,,77.8,,,,,Ø30,30.000,h7 (0/-0.021),29.979,30.000,30.000,in\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\nboon.nc,fail,0,,,77.8,,,,,Ø40,40.000,js6 (±0.008),39.992,40.008,39.980,out\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\nchai.nc,pass,0,,,77.8,,,,,Ø46,46.000,0/-0.05,45.950,46.000,45.950,in\n"), std::string::npos) << csv;
+
+  // Besides the reference, and as a PDF in Thai: the drawing's page lists every student's dimensions.
+  const std::string ref = std::string(KLUENG_SAMPLES_DIR) + "/01-step-shaft.txt";
+  ASSERT_EQ(run(folder + " --drawing '" + drawing.string() + "' --reference '" + ref + "' --csv '" + csvPath.string() +
+                    "' --pdf '" + (dir / "grades.pdf").string() + "' --lang th", &err), 0) << err;
+  EXPECT_NE(slurp(csvPath).find("\nboon.nc,fail,0,,,77.8,0.000,0.00,0.020,"), std::string::npos) << slurp(csvPath);
+  const std::string th = pdfText(dir / "grades.pdf");
+  for (const char* s : {"shaft.json", "01-step-shaft.txt", "anna.nc", "boon.nc", "chai.nc", "h7 (0/-0.021)", "js6 (±0.008)",
+                        "39.992 – 40.008", "39.980", "45.950", "0.001"})
+    EXPECT_NE(th.find(s), std::string::npos) << s << "\n" << th;
+  EXPECT_EQ(std::count(th.begin(), th.end(), '\f'), 2) << th;  // the table, then the inspection
+  // In English, the same PDF says it in English words.
+  ASSERT_EQ(run(folder + " --drawing '" + drawing.string() + "' --csv '" + csvPath.string() + "' --pdf '" +
+                    (dir / "en.pdf").string() + "'", &err), 0) << err;
+  const std::string en = pdfText(dir / "en.pdf", "-layout");
+  for (const char* s : {"Against the drawing shaft.json (4 toleranced dimensions)", "Inspection against shaft.json",
+                        "a value exactly at a limit is in", "3 of 4 in", "out", "Measured (mm)"})
+    EXPECT_NE(en.find(s), std::string::npos) << s << "\n" << en;
+
+  // A drawing without tolerances grades nothing: said, exit 2; with a general tolerance it grades.
+  std::ofstream(drawing, std::ios::binary) << R"({ "stock": { "diameter": 50, "length": 100 },
+    "outside": [ { "cylinder": 30, "length": 20, "chamfer": 3 } ] })";
+  EXPECT_EQ(run(folder + " --drawing '" + drawing.string() + "'", &err), 2);
+  EXPECT_NE(err.find("has no toleranced dimension"), std::string::npos) << err;
+  EXPECT_EQ(run(folder + " --drawing '" + drawing.string() + "' --general-tolerance x", &err), 2);
+  EXPECT_NE(err.find("f, m, c or v"), std::string::npos) << err;
+  // A DXF drawing: its layer named when it has several.
+  const std::string pin = std::string(KLUENG_SOURCE_DIR) + "/fuzz/corpus/design/pin.dxf";
+  EXPECT_EQ(run(folder + " --drawing '" + pin + "' --general-tolerance m", &err), 2);
+  EXPECT_NE(err.find("F187"), std::string::npos) << err;
+  // With the layer named it is read on that layer (this corpus pin's outline is open there: F189, located).
+  EXPECT_EQ(run(folder + " --drawing '" + pin + "' --layer PART --general-tolerance m", &err), 2);
+  EXPECT_NE(err.find("F189"), std::string::npos) << err;
+  EXPECT_NE(err.find("X45.000 Y17.000"), std::string::npos) << err;
+  ASSERT_EQ(run(folder + " --drawing '" + drawing.string() + "' --general-tolerance m --csv '" + csvPath.string() + "'", &err), 0) << err;
+  EXPECT_NE(slurp(csvPath).find("\nanna.nc,pass,0,,,77.8,,,,,Ø30,30.000,ISO 2768-m (±0.2),29.800,30.200,30.000,in\n"),
+            std::string::npos) << slurp(csvPath);
+  fs::remove_all(dir);
+}
+
 TEST(CliClass, ABadReferenceOrBadOptionsExitTwo) {
   EXPECT_EQ(run("/tmp --reference /no/such/file.nc"), 2);
   EXPECT_EQ(run("--reference x.nc"), 2);

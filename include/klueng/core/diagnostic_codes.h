@@ -269,6 +269,7 @@ inline constexpr const char* kCliGenerateNeeds = "C117";
 inline constexpr const char* kCliToolForm = "C118";          // {0} value {1} library ids
 inline constexpr const char* kCliToolStation = "C119";       // {0} value {1} station {2} last station
 inline constexpr const char* kCliToolUnknown = "C120";       // {0} value {1} id {2} library ids
+inline constexpr const char* kCliDrawingNoTolerances = "C121";  // {0} drawing
 inline constexpr const char* kCliAllowedLang = "C201";
 inline constexpr const char* kCliAllowedDialect = "C202";
 inline constexpr const char* kCliAllowedStock = "C203";
@@ -276,5 +277,6 @@ inline constexpr const char* kCliAllowedUnits = "C204";
 inline constexpr const char* kCliAllowedDecimalPoint = "C205";
 inline constexpr const char* kCliAllowedSheet = "C206";
 inline constexpr const char* kCliAllowedMillimetres = "C207";
+inline constexpr const char* kCliAllowedGeneralTolerance = "C210";
 
 }  // namespace klueng::core::codes

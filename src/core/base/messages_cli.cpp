@@ -103,17 +103,25 @@ constexpr MessageText kMessages[] = {
      "                ของ --config หรือในโฟลเดอร์ข้อมูลของผู้ใช้)\n"},
     {codes::kCliClassUsage,
      "usage: klueng-cli class DIR --reference REF.nc [--tolerance 0.05] [--csv OUT.csv]\n"
+     "                            [--drawing PART.json|PART.dxf [--layer NAME] [--general-tolerance f|m|c|v]]\n"
      "                            [--pdf OUT.pdf [--sheets]] [--dialect fanuc|haas|classic]\n"
      "                            [--config DIR] [--lang en|th]\n"
      "  every program in DIR against REF.nc: errors, alarm, cycle time, the largest leftover\n"
      "  and gouge on the diameter (mm), pass when both are within --tolerance (mm);\n"
+     "  --drawing: (instead of or besides --reference) each toleranced diameter and length of the\n"
+     "  teacher's drawing measured to 0.001 mm, in or out (a value at a limit is in, one not on the\n"
+     "  part is out); --general-tolerance: ISO 2768-1 for the sizes without their own\n"
      "  --pdf: the same table as a page (Thai with --lang th), --sheets: then every\n"
      "  student's program sheet and drawing in the same PDF\n",
      "วิธีใช้: klueng-cli class DIR --reference REF.nc [--tolerance 0.05] [--csv OUT.csv]\n"
+     "                            [--drawing PART.json|PART.dxf [--layer NAME] [--general-tolerance f|m|c|v]]\n"
      "                            [--pdf OUT.pdf [--sheets]] [--dialect fanuc|haas|classic]\n"
      "                            [--config DIR] [--lang en|th]\n"
      "  ตรวจทุกโปรแกรมใน DIR เทียบกับ REF.nc: ข้อผิดพลาด สัญญาณเตือน เวลาทำงาน เนื้อที่เหลือมากที่สุด\n"
      "  และที่กินเกินมากที่สุดบนเส้นผ่านศูนย์กลาง (มม.) ผ่านเมื่อทั้งสองค่าไม่เกิน --tolerance (มม.)\n"
+     "  --drawing: (แทนหรือร่วมกับ --reference) วัดทุกเส้นผ่านศูนย์กลางและความยาวที่มีพิกัดความเผื่อในแบบงาน\n"
+     "  ของครู ละเอียด 0.001 มม. ว่าอยู่ในพิกัดหรือไม่ (ค่าที่เท่ากับขอบเขตพอดีถือว่าอยู่ในพิกัด ขนาดที่ไม่มี\n"
+     "  บนชิ้นงานถือว่าไม่ผ่าน); --general-tolerance: ISO 2768-1 สำหรับขนาดที่ไม่ได้กำหนดพิกัดเอง\n"
      "  --pdf: ตารางเดียวกันเป็นหน้ากระดาษ (ภาษาไทยเมื่อใช้ --lang th), --sheets: ต่อด้วยใบโปรแกรม\n"
      "  และแบบงานของนักเรียนทุกคนใน PDF เดียวกัน\n"},
     {codes::kCliPrintUsage,
@@ -148,7 +156,13 @@ constexpr MessageText kMessages[] = {
     {codes::kCliNotAFolder, "{0} is not a folder", "{0} ไม่ใช่โฟลเดอร์"},
     {codes::kCliReferenceFails, "the reference {0} does not run to its end ({1})",
      "โปรแกรมต้นแบบ {0} ทำงานไม่ถึงจุดจบ ({1})"},
-    {codes::kCliClassNeeds, "needs a folder DIR and --reference REF.nc", "ต้องระบุโฟลเดอร์ DIR และ --reference REF.nc"},
+    {codes::kCliClassNeeds, "needs a folder DIR and --reference REF.nc or --drawing PART.json",
+     "ต้องระบุโฟลเดอร์ DIR และ --reference REF.nc หรือ --drawing PART.json"},
+    {codes::kCliDrawingNoTolerances,
+     "the drawing {0} has no toleranced dimension: give tolerances in a part file (JSON; a DXF drawing's "
+     "dimension texts are not read) or a general tolerance with --general-tolerance f|m|c|v (ISO 2768-1)",
+     "แบบงาน {0} ไม่มีขนาดที่กำหนดพิกัดความเผื่อ: ให้กำหนดพิกัดความเผื่อในไฟล์ชิ้นงาน (JSON; ข้อความบอกขนาดในแบบ DXF "
+     "ไม่ถูกอ่าน) หรือกำหนดพิกัดความเผื่อทั่วไปด้วย --general-tolerance f|m|c|v (ISO 2768-1)"},
     {codes::kCliClassTotals, "{0} programs: {1} pass, {2} fail", "{0} โปรแกรม: ผ่าน {1} ไม่ผ่าน {2}"},
     {codes::kCliPrintNeeds, "needs a FILE and --pdf OUT.pdf", "ต้องระบุ FILE และ --pdf OUT.pdf"},
     {codes::kCliGenerateNeeds, "needs a PART.json or PART.dxf and -o OUT.nc",
@@ -171,6 +185,8 @@ constexpr MessageText kMessages[] = {
     {codes::kCliAllowedDecimalPoint, "whole or increments", "whole หรือ increments"},
     {codes::kCliAllowedSheet, "program, drawing or both", "program, drawing หรือ both"},
     {codes::kCliAllowedMillimetres, "a number from 0.001 to 5 (mm)", "ตัวเลขตั้งแต่ 0.001 ถึง 5 (มม.)"},
+    {codes::kCliAllowedGeneralTolerance, "f, m, c or v (ISO 2768-1: fine, medium, coarse, very coarse)",
+     "f, m, c หรือ v (ISO 2768-1: ละเอียด ปานกลาง หยาบ หยาบมาก)"},
 };
 }  // namespace
 

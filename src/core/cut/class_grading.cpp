@@ -9,6 +9,7 @@
 
 #include "klueng/core/cut/cut_simulator.h"
 #include "klueng/core/cut/guess_fit.h"
+#include "klueng/core/cut/part_features.h"
 #include "klueng/core/io/tool_library.h"
 #include "klueng/core/machine/interpreter.h"
 
@@ -70,12 +71,23 @@ GradedProgram gradeProgram(const std::string& path, const machine::MachineSetup&
 std::vector<ClassRow> gradeClass(const std::string& folder, const std::string& referencePath, const Stock& reference,
                                  const machine::MachineSetup& setup, const machine::JobFileRequest& request,
                                  double tolerance, const std::function<void(int, int, const std::string&)>& progress) {
+  GradeAgainst against;
+  against.referencePath = referencePath;
+  against.reference = &reference;
+  against.tolerance = tolerance;
+  return gradeClass(folder, against, setup, request, progress);
+}
+
+std::vector<ClassRow> gradeClass(const std::string& folder, const GradeAgainst& against,
+                                 const machine::MachineSetup& setup, const machine::JobFileRequest& request,
+                                 const std::function<void(int, int, const std::string&)>& progress) {
+  const double tolerance = against.tolerance;
   std::error_code ec;
   std::vector<fs::path> files;
   for (const fs::directory_entry& e : fs::directory_iterator(folder, ec)) {
     std::error_code same;
     if (e.is_regular_file(ec) && io::isProgramFileName(e.path().string()) &&
-        !fs::equivalent(e.path(), referencePath, same))
+        (against.referencePath.empty() || !fs::equivalent(e.path(), against.referencePath, same)))
       files.push_back(e.path());
   }
   std::sort(files.begin(), files.end());
@@ -87,11 +99,20 @@ std::vector<ClassRow> gradeClass(const std::string& folder, const std::string& r
     if (progress) progress(static_cast<int>(i), static_cast<int>(files.size()), row.file);
     row.graded = gradeProgram(row.path, setup, request);
     if (row.graded.part) {
-      row.compared = true;
-      row.deviation = compareParts(*row.graded.part, reference, tolerance);
-      row.pass = row.deviation.leftover <= tolerance + 1e-9 && row.deviation.gouge <= tolerance + 1e-9;
-      row.graded.part.reset();  // thirty parts need not stay in memory
+      row.pass = true;
+      if (against.reference) {
+        row.compared = true;
+        row.deviation = compareParts(*row.graded.part, *against.reference, tolerance);
+        row.pass = row.deviation.leftover <= tolerance + 1e-9 && row.deviation.gouge <= tolerance + 1e-9;
+      }
     }
+    if (against.hasDrawing) {
+      // A program that did not run to its end has none of the drawing's dimensions.
+      row.inspection = inspectPart(row.graded.part ? partFeatures(*row.graded.part) : PartFeatures{}, against.drawing);
+      row.pass = row.pass && std::all_of(row.inspection.begin(), row.inspection.end(),
+                                         [](const InspectedDimension& d) { return d.in(); });
+    }
+    row.graded.part.reset();  // thirty parts need not stay in memory
     rows.push_back(std::move(row));
   }
   // A subprogram file the others call (M98 P2000 reading O2000.nc) is part of their programs, not a student's.
@@ -107,16 +128,26 @@ std::vector<ClassRow> gradeClass(const std::string& folder, const std::string& r
   return rows;
 }
 
-std::string classCsv(const std::vector<ClassRow>& rows) {
-  std::string out = "file,result,errors,first_error,alarm,cycle_time_s,leftover_mm,leftover_z,gouge_mm,gouge_z\n";
+std::string classCsv(const std::vector<ClassRow>& rows, bool drawing) {
+  std::string out = "file,result,errors,first_error,alarm,cycle_time_s,leftover_mm,leftover_z,gouge_mm,gouge_z";
+  out += drawing ? ",feature,nominal_mm,tolerance,lower_mm,upper_mm,measured_mm,verdict\n" : "\n";
   for (const ClassRow& r : rows) {
-    out += csvField(r.file) + "," + (r.pass ? "pass" : "fail") + "," + std::to_string(r.graded.errors) + "," +
+    std::string line = csvField(r.file) + "," + (r.pass ? "pass" : "fail") + "," + std::to_string(r.graded.errors) + "," +
            csvField(r.graded.firstError) + "," + csvField(r.graded.alarm) + "," +
            (r.graded.errors == 0 ? gcode::formatFixed(r.graded.cycleTime, 1) : "") + "," +
            (r.compared ? gcode::formatFixed(r.deviation.leftover, 3) + "," + gcode::formatFixed(r.deviation.leftoverZ, 2) + "," +
                              gcode::formatFixed(r.deviation.gouge, 3) + "," + gcode::formatFixed(r.deviation.gougeZ, 2)
-                       : ",,,") +
-           "\n";
+                       : ",,,");
+    if (!drawing) {
+      out += line + "\n";
+      continue;
+    }
+    for (const InspectedDimension& d : r.inspection)
+      out += line + "," + csvField(dimensionLabel(d.drawn, Lang::En)) + "," + gcode::formatFixed(d.drawn.nominal, 3) + "," +
+             csvField(toleranceLabel(d.drawn.tolerance)) + "," + gcode::formatFixed(d.lowerLimit(), 3) + "," +
+             gcode::formatFixed(d.upperLimit(), 3) + "," + (d.measured ? gcode::formatFixed(*d.measured, 3) : "") + "," +
+             verdictName(d.verdict, Lang::En) + "\n";
+    if (r.inspection.empty()) out += line + ",,,,,,,\n";
   }
   return out;
 }

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "klueng/core/design/iso_fits.h"
 #include "klueng/core/diagnostic_codes.h"
 #include "klueng/core/io/file_read.h"
 
@@ -132,6 +133,27 @@ io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::st
         bad("stock.bore", "smaller than the stock's diameter");
     }
   }
+  // A tolerance: a number (±), [upper, lower] in mm, or (on a Ø) an ISO 286 class such as "h7".
+  const auto readTolerance = [&](const nlohmann::json& v, const std::string& field, double size, bool fits,
+                                 cut::Tolerance& out) {
+    const auto finite = [](const nlohmann::json& n) {
+      return n.is_number() && std::isfinite(n.get<double>()) && std::abs(n.get<double>()) <= 100.0;
+    };
+    if (finite(v) && v.get<double>() > 0.0) {
+      out = {v.get<double>(), -v.get<double>(), ""};
+    } else if (v.is_array() && v.size() == 2 && finite(v[0]) && finite(v[1]) && v[0].get<double>() >= v[1].get<double>()) {
+      out = {v[0].get<double>(), v[1].get<double>(), ""};
+    } else if (fits && v.is_string()) {
+      const auto fit = isoFit(v.get<std::string>(), size);
+      if (!fit) return bad(field, (std::string("an ISO 286 class of ") + kIsoFitsKnown).c_str());
+      out = *fit;
+      return;
+    } else {
+      return bad(field, fits ? "± mm (0.05), [upper, lower] mm ([0.02, -0.01]) or an ISO 286 class (\"h7\")"
+                             : "± mm (0.1) or [upper, lower] mm ([0.1, -0.2])");
+    }
+    out.text = cut::toleranceLabel(out);
+  };
   // A list of steps: outside cylinders, tapers and arcs; in the bore cylinders and tapers.
   const auto readSteps = [&](const std::string& key, bool arcs, std::vector<OutsideStep>& into) {
     const std::string word = key == "inside" ? "bore" : "cylinder";
@@ -168,6 +190,12 @@ io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::st
         step.edge = EdgeBreak::Round;
         positive(o, "round", at + ".round", step.edgeSize);
       }
+      if (o.contains("tolerance")) {
+        if (step.kind != StepKind::Cylinder) bad(at + ".tolerance", "on a cylinder's or bore's Ø only");
+        else readTolerance(o["tolerance"], at + ".tolerance", step.diameter, true, step.tolerance);
+      }
+      if (o.contains("length_tolerance"))
+        readTolerance(o["length_tolerance"], at + ".length_tolerance", step.length, false, step.lengthTolerance);
       into.push_back(step);
     }
   };
@@ -176,6 +204,11 @@ io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::st
   if (j.contains("inside")) {
     if (!j["inside"].is_array()) bad("inside", "a list [ { \"bore\": ..., \"length\": ... } ]");
     else readSteps("inside", false, part.inside);
+  }
+  if (j.contains("general_tolerance")) {
+    const auto& g = j["general_tolerance"];
+    if (!g.is_string() || !generalTolerance(g.get<std::string>(), 10.0)) bad("general_tolerance", "\"f\", \"m\", \"c\" or \"v\" (ISO 2768-1)");
+    else part.generalTolerance = g.get<std::string>();
   }
   if (j.contains("part_off")) {
     if (!j["part_off"].is_boolean()) bad("part_off", "true or false");
@@ -276,6 +309,14 @@ std::string writePartDesign(const PartDesign& part) {
       if (s.kind == StepKind::Arc && s.concave) o["concave"] = true;
       if (s.edge == EdgeBreak::Chamfer) o["chamfer"] = s.edgeSize;
       if (s.edge == EdgeBreak::Round) o["round"] = s.edgeSize;
+      // A tolerance as it was written: an ISO class by name, ± as one number, else [upper, lower].
+      const auto tolerance = [](const cut::Tolerance& t) -> nlohmann::ordered_json {
+        if (!t.text.empty() && std::isalpha(static_cast<unsigned char>(t.text[0]))) return t.text;
+        if (t.upper == -t.lower) return t.upper;
+        return nlohmann::ordered_json::array({t.upper, t.lower});
+      };
+      if (s.tolerance.given()) o["tolerance"] = tolerance(s.tolerance);
+      if (s.lengthTolerance.given()) o["length_tolerance"] = tolerance(s.lengthTolerance);
       list.push_back(o);
     }
     return list;
@@ -285,6 +326,7 @@ std::string writePartDesign(const PartDesign& part) {
   for (const Groove& g : part.grooves) j["grooves"].push_back({{"z", g.z}, {"width", g.width}, {"diameter", g.diameter}});
   for (const Thread& t : part.threads) j["threads"].push_back({{"z", t.z}, {"length", t.length}, {"pitch", t.pitch}});
   if (part.partOff) j["part_off"] = true;
+  if (!part.generalTolerance.empty()) j["general_tolerance"] = part.generalTolerance;
   return j.dump(2) + "\n";
 }
 
@@ -303,6 +345,32 @@ std::string cuttingSpeedRow(const std::string& material, const std::vector<Cutti
       for (const CuttingSpeed& r : table)
         if (r.material == row) return row;
   return {};
+}
+
+std::vector<cut::DrawnDimension> drawnDimensions(const PartDesign& part, const std::string& general) {
+  const std::string generalClass = general.empty() ? part.generalTolerance : general;
+  std::vector<cut::DrawnDimension> out;
+  const auto add = [&](cut::DimensionKind kind, cut::FeatureSide side, double nominal, cut::Tolerance t, double zRight,
+                       double zLeft) {
+    if (!t.given() && !generalClass.empty())
+      if (const auto g = generalTolerance(generalClass, nominal)) t = *g;
+    if (t.given()) out.push_back({kind, side, nominal, t, zRight, zLeft});
+  };
+  const auto steps = [&](const std::vector<OutsideStep>& list, cut::FeatureSide side) {
+    double z = 0.0;
+    for (const OutsideStep& s : list) {
+      const double zr = z, zl = z - s.length;
+      z = zl;
+      // The Ø where the cylinder is, clear of its edge break.
+      if (s.kind == StepKind::Cylinder)
+        add(cut::DimensionKind::Diameter, side, s.diameter, s.tolerance,
+            zr - (s.edge == EdgeBreak::None ? 0.0 : s.edgeSize), zl);
+      add(cut::DimensionKind::Length, side, s.length, s.lengthTolerance, zr, zl);
+    }
+  };
+  steps(part.outside, cut::FeatureSide::Outside);
+  steps(part.inside, cut::FeatureSide::Inside);
+  return out;
 }
 
 double spindleRpm(double cuttingSpeed, double diameter) {

@@ -1,13 +1,16 @@
 #pragma once
-// Grading a class against a reference part (issue 11): each student's program
-// is loaded, checked, run and cut as `simulate` does it, and its finished part
-// compared with the reference's (part_compare.h). The CLI's `class` command and
-// the GUI's File > Grade a class both use it.
+// Grading a class against a reference part (issue 11) and/or the teacher's
+// drawing with tolerances (issue 28): each student's program is loaded,
+// checked, run and cut as `simulate` does it, and its finished part compared
+// with the reference's (part_compare.h) and measured against each toleranced
+// dimension of the drawing (inspection.h). The CLI's `class` command and the
+// GUI's File > Grade a class both use it.
 #include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "klueng/core/cut/inspection.h"
 #include "klueng/core/cut/part_compare.h"
 #include "klueng/core/cut/stock.h"
 #include "klueng/core/machine/job_file.h"
@@ -33,8 +36,21 @@ struct ClassRow {
   std::string path;
   GradedProgram graded;       // (its part is dropped once compared)
   PartDeviation deviation;
-  bool compared = false;      // it ran to its end and was compared
-  bool pass = false;
+  bool compared = false;      // it ran to its end and was compared with the reference
+  // Against a drawing: every drawn dimension, measured (all missing when it did not run to its end).
+  std::vector<InspectedDimension> inspection;
+  bool pass = false;          // ran to its end, within the reference's tolerance and every drawn dimension in
+};
+
+// What a class is graded against: a reference program's part, a drawing's
+// toleranced dimensions, or both.
+struct GradeAgainst {
+  std::string referencePath;         // left out of the folder's programs
+  const Stock* reference = nullptr;  // none: no reference
+  double tolerance = 0.05;           // mm on the diameter, against the reference
+  std::string drawingPath;           // (a part file is not a program; named for the record)
+  std::vector<DrawnDimension> drawing;
+  bool hasDrawing = false;           // graded against the drawing
 };
 
 // Every program file of `folder` (io::isProgramFileName, as `check DIR` takes
@@ -44,8 +60,13 @@ struct ClassRow {
 std::vector<ClassRow> gradeClass(const std::string& folder, const std::string& referencePath, const Stock& reference,
                                  const machine::MachineSetup& setup, const machine::JobFileRequest& request,
                                  double tolerance, const std::function<void(int, int, const std::string&)>& progress = {});
+std::vector<ClassRow> gradeClass(const std::string& folder, const GradeAgainst& against,
+                                 const machine::MachineSetup& setup, const machine::JobFileRequest& request,
+                                 const std::function<void(int, int, const std::string&)>& progress = {});
 
-// file,result,errors,first_error,alarm,cycle_time_s,leftover_mm,leftover_z,gouge_mm,gouge_z
-std::string classCsv(const std::vector<ClassRow>& rows);
+// file,result,errors,first_error,alarm,cycle_time_s,leftover_mm,leftover_z,gouge_mm,gouge_z; with a
+// drawing (`drawing`), one line per student and drawn dimension, followed by
+// feature,nominal_mm,tolerance,lower_mm,upper_mm,measured_mm,verdict (in, out or missing).
+std::string classCsv(const std::vector<ClassRow>& rows, bool drawing = false);
 
 }  // namespace klueng::core::cut

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "klueng/core/cut/inspection.h"
 #include "klueng/core/gcode/code_table.h"
 #include "klueng/core/geometry.h"
 #include "klueng/core/io/result.h"
@@ -39,6 +40,10 @@ struct OutsideStep {
   double edgeSize = 0.0;  // chamfer C (45°) or round R, mm
   double radius = 0.0;    // an arc's R
   bool concave = false;   // an arc hollowed into the part (G02 outside) rather than bulging out of it
+  // The drawing's tolerances (issue 28): on a cylinder's or bore's Ø (± or an
+  // ISO 286 class such as h7, H7), and on the step's length (±); none when empty.
+  cut::Tolerance tolerance = {};
+  cut::Tolerance lengthTolerance = {};
 };
 using BoreStep = OutsideStep;  // inside: cylinders and tapers, getting no wider toward the chuck
 
@@ -69,6 +74,7 @@ struct PartDesign {
   std::vector<Groove> grooves;
   std::vector<Thread> threads;
   bool partOff = false;                  // cut the part off the bar at its left end (parting tool T07)
+  std::string generalTolerance;          // ISO 2768-1 class (f, m, c, v) for the sizes without their own; empty: none
   double length() const;                 // of the turned part (the steps)
 };
 
@@ -83,6 +89,12 @@ io::ReadResult<std::string> readPartFile(const std::string& path);
 io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::string& fileName);
 // The same JSON back (readPartDesign(writePartDesign(p)) == p).
 std::string writePartDesign(const PartDesign& part);
+
+// The drawing's toleranced dimensions for inspection (cut/inspection.h): each
+// cylinder's and bore's Ø with its tolerance, each step's length with its own;
+// the ones without take the general tolerance (`general`, or the design's
+// general_tolerance when empty) when there is one, else are left out.
+std::vector<cut::DrawnDimension> drawnDimensions(const PartDesign& part, const std::string& general = {});
 
 // ISO metric external thread: radial height per mm of pitch.
 inline constexpr double kIsoThreadHeight = 0.6134;
