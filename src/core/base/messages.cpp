@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "catalog_parts.h"
+#include "klueng/core/units.h"
 
 namespace klueng::core {
 
@@ -63,7 +64,8 @@ std::string formatText(const MessageText* t, const Diagnostic& d, Lang lang) {
     return s;
   }
   fmt::dynamic_format_arg_store<fmt::format_context> store;
-  for (const auto& a : d.args) store.push_back(a);
+  // A unit argument (units.h) reads as the unit's name in the message's language.
+  for (const auto& a : d.args) store.push_back(std::string(unitArgText(a, lang) ? unitArgText(a, lang) : a));
   // Missing args are a bug in the caller; show the template rather than throw.
   for (std::size_t i = d.args.size(); i < 8; ++i) store.push_back(std::string("?"));
   const std::string_view text = lang == Lang::Th ? t->th : t->en;
