@@ -14,10 +14,13 @@ using core::cut::FeatureKind;
 using core::cut::FeatureSide;
 using core::cut::PartFeature;
 
-QString num(double v) { return trimmedNumber(v, 2); }
+// A size in the frame's unit: "30", "28.16" in mm; "1.750″" in inches (core/units.h).
+QString num(double v, const core::UnitFormat& units) {
+  return QString::fromStdString(units.size(v) + units.sizeMark());
+}
 
-QString label(const PartFeature& f, bool thai) {
-  return QString::fromStdString(core::cut::featureLabel(f, thai ? core::Lang::Th : core::Lang::En));
+QString label(const PartFeature& f, const DimensionFrame& frame) {
+  return QString::fromStdString(core::cut::featureLabel(f, frame.thai ? core::Lang::Th : core::Lang::En, frame.units));
 }
 
 // The outside's largest radius at z (the faces' taller side there).
@@ -64,7 +67,7 @@ std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part,
       // A thread in a bore: the line spans the bore's material, its minor Ø.
       const double rLine = f.kind == FeatureKind::Thread && inside ? f.minorDiameter / 2.0 : r;
       DimensionItem d;
-      d.text = f.kind == FeatureKind::Thread ? label(f, frame.thai) : QStringLiteral("Ø") + num(f.diameter);
+      d.text = f.kind == FeatureKind::Thread ? label(f, frame) : QStringLiteral("Ø") + num(f.diameter, frame.units);
       const QPointF top = frame.toPage(zc, rLine), bottom = frame.toPage(zc, -rLine);
       d.lines.emplace_back(top, bottom);
       d.arrows.emplace_back(top, bottom);
@@ -91,7 +94,7 @@ std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part,
     d.lines.emplace_back(QPointF(xa, rowY), QPointF(xb, rowY));
     d.arrows.emplace_back(QPointF(xa, rowY), QPointF(xb, rowY));
     d.arrows.emplace_back(QPointF(xb, rowY), QPointF(xa, rowY));
-    d.text = num(za - zb);
+    d.text = num(za - zb, frame.units);
     const double w = fm.horizontalAdvance(d.text);
     d.textRect = QRectF((xa + xb) / 2.0 - w / 2.0, rowY - 0.3 * mm - textH, w, textH);
     return d;
@@ -113,7 +116,7 @@ std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part,
           f.kind != FeatureKind::Groove)
         continue;
       DimensionItem d;
-      d.text = label(f, frame.thai);
+      d.text = label(f, frame);
       if (f.side == FeatureSide::Inside) d.text += frame.thai ? QStringLiteral(" (ใน)") : QStringLiteral(" (inside)");
       const QPointF anchor = anchorOf(f, frame);
       const double w = fm.horizontalAdvance(d.text);
@@ -137,7 +140,7 @@ std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part,
   if (noseRadius > 0.0) {
     DimensionItem d;
     d.text = (frame.thai ? QStringLiteral("มุมด้านในเป็นรัศมีจมูกมีด R") : QStringLiteral("Inside corners: tool nose R")) +
-             num(noseRadius);
+             num(noseRadius, frame.units);
     const double w = fm.horizontalAdvance(d.text);
     d.textRect = QRectF(pageX(part.zLeft), (shoulders.size() > 2 ? row2 : row1) + 3.0 * mm, w, textH);
     out.push_back(d);

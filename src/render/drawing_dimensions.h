@@ -14,6 +14,7 @@
 #include <QString>
 
 #include "klueng/core/cut/part_features.h"
+#include "klueng/core/units.h"
 
 namespace klueng::render {
 
@@ -31,6 +32,7 @@ struct DimensionFrame {
   QFont font;               // dimension text
   const QPaintDevice* device = nullptr;  // for measuring text
   bool thai = false;
+  core::UnitFormat units;   // the dimensions' unit (the part stays in mm)
 };
 
 std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part, const DimensionFrame& frame);

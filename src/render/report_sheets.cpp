@@ -411,6 +411,7 @@ DimensionFrame dimensionFrame(const QPagedPaintDevice& device, const ReportData&
   f.font = reportFont(8);
   f.device = &device;
   f.thai = thai(lang);
+  f.units = data.units;
   return f;
 }
 
