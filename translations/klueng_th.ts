@@ -341,10 +341,6 @@
 <context>
     <name>klueng::gui::MainWindow</name>
     <message>
-        <source>Z %1   Ø %2</source>
-        <translation>Z %1   Ø %2</translation>
-    </message>
-    <message>
         <source>Autosave failed: %1</source>
         <translation>บันทึกอัตโนมัติไม่สำเร็จ: %1</translation>
     </message>
@@ -1058,6 +1054,38 @@
     <message>
         <source>%1 s</source>
         <translation>%1 วินาที</translation>
+    </message>
+    <message>
+        <source>Z %1   Ø %2   %3</source>
+        <translation>Z %1   Ø %2   %3</translation>
+    </message>
+    <message>
+        <source>in</source>
+        <translation>นิ้ว</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>มม.</translation>
+    </message>
+    <message>
+        <source>&amp;Auto: the program's units (G20 inch, G21 mm)</source>
+        <translation>อัตโนมัติ: ตามหน่วยของโปรแกรม (G20 นิ้ว, G21 มม.) (&amp;A)</translation>
+    </message>
+    <message>
+        <source>Positions, feeds, rulers, features and the drawing in the units the program is written in</source>
+        <translation>แสดงตำแหน่ง อัตราป้อน ไม้บรรทัด ลักษณะชิ้นงาน และแบบงาน ในหน่วยที่โปรแกรมใช้เขียน</translation>
+    </message>
+    <message>
+        <source>&amp;Millimetres</source>
+        <translation>มิลลิเมตร (&amp;M)</translation>
+    </message>
+    <message>
+        <source>&amp;Inches</source>
+        <translation>นิ้ว (&amp;I)</translation>
+    </message>
+    <message>
+        <source>&amp;Units Shown</source>
+        <translation>หน่วยที่แสดง (&amp;U)</translation>
     </message>
 </context>
 <context>

@@ -364,6 +364,34 @@
         <source>Today&apos;s date</source>
         <translation>วันที่วันนี้</translation>
     </message>
+    <message>
+        <source>%1 in/rev</source>
+        <translation>%1 นิ้ว/รอบ</translation>
+    </message>
+    <message>
+        <source>%1 in/min</source>
+        <translation>%1 นิ้ว/นาที</translation>
+    </message>
+    <message>
+        <source>Tool position X (diameter, inches)</source>
+        <translation>ตำแหน่งมีดตัด X (เส้นผ่านศูนย์กลาง, นิ้ว)</translation>
+    </message>
+    <message>
+        <source>Tool position Z (inches)</source>
+        <translation>ตำแหน่งมีดตัด Z (นิ้ว)</translation>
+    </message>
+    <message>
+        <source>X offset of the active tool offset (diameter, inches)</source>
+        <translation>ค่าออฟเซต X ของมีดตัดที่ใช้อยู่ (เส้นผ่านศูนย์กลาง, นิ้ว)</translation>
+    </message>
+    <message>
+        <source>Z offset of the active tool offset (inches)</source>
+        <translation>ค่าออฟเซต Z ของมีดตัดที่ใช้อยู่ (นิ้ว)</translation>
+    </message>
+    <message>
+        <source>Nose radius of the active offset (inches)</source>
+        <translation>รัศมีจมูกมีดของออฟเซตที่ใช้อยู่ (นิ้ว)</translation>
+    </message>
 </context>
 <context>
     <name>klueng::gui::StatusLamps</name>

@@ -81,7 +81,7 @@ CutOutcome runCut(const std::string& file, const io::JobHeader& header, const ma
   if (options.features) {
     const cut::PartFeatures features = cut::partFeatures(sim.stock());
     for (const auto* list : {&features.outside, &features.inside})
-      for (const cut::PartFeature& f : *list) std::printf("%s\n", cut::describeFeature(f, options.lang).c_str());
+      for (const cut::PartFeature& f : *list) std::printf("%s\n", cut::describeFeature(f, options.lang, options.units).c_str());
   }
   if (!options.jsonPath.empty()) {
     std::string alarms;

@@ -10,6 +10,7 @@
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/machine/interpreter.h"
 #include "klueng/core/messages.h"
+#include "klueng/core/units.h"
 
 namespace klueng::cli {
 
@@ -20,6 +21,7 @@ struct CutOutputOptions {
   std::string svgPath;       // the finished part's profile, both halves
   std::string dxfPath;       // the same as DXF (R12 LINE entities)
   bool features = false;     // --features: the finished part's features on stdout
+  core::UnitFormat units;    // the unit the features are written in
   core::Lang lang = core::Lang::En;
   double resolution = 0.05;  // mm
   bool enabled = true;       // false with --no-stock: the timeline alone

@@ -16,6 +16,7 @@
 #include "klueng/core/diagnostic_codes.h"
 #include "commands.h"
 #include "klueng/core/io/tool_library.h"
+#include "klueng/core/gcode/decimal_point.h"
 #include "klueng/core/machine/job_file.h"
 #include "png_writer.h"
 
@@ -145,6 +146,12 @@ int runPrint(const std::vector<std::string>& args) {
   in.program = &*job.file;
   in.setup = &job.setup;
   in.job = &jobOptions;
+  // The drawing speaks the program's units (its G20/G21, else the power-on units; issue 28 item 4).
+  in.inch = job.program && gcode::programInputUnits(*job.program, gcode::powerOnUnitsOf(request->run.dialect,
+                                                                                         request->run.powerOnUnits)) ==
+                               gcode::InputUnits::Inch
+                ? 1
+                : 0;
   // A failed write keeps the old PDF and exits 2 (issue 29).
   if (!reportWrite(o.pdf, writePrintPdf(in, o.pdf), o.lang)) return 2;
   return job.hasErrors() ? 1 : 0;

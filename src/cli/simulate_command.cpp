@@ -3,7 +3,7 @@
 //                          [--optional-stop] [--block-skip] [--no-persist]
 //                          [--png out.png] [--profile out.csv] [--json summary.json] [--resolution MM]
 //                          [--svg out.svg] [--dxf out.dxf] [--no-stock]   (--no-stock: interpret only, no stock collisions)
-//                          [--stock DxL[xBORE][in]] [--units mm|inch]
+//                          [--stock DxL[xBORE][in]] [--units mm|inch] [--show-units auto|mm|inch]
 // The stock: --stock, else the file's header, else inferred from the program
 // (a note on stderr says which, SPEC 2 ext).
 //                          [--tool N=ID]...   (library tool ID at station N for this run)
@@ -34,6 +34,7 @@
 #include "klueng/core/machine/job_file.h"
 #include "klueng/core/io/tool_library.h"
 #include "klueng/core/machine/interpreter.h"
+#include "klueng/core/machine/program_units.h"
 #include "klueng/core/machine/trace.h"
 #include "klueng/core/messages.h"
 
@@ -61,6 +62,7 @@ struct SimulateOptions {
   std::optional<io::JobHeader> stock;            // --stock
   std::optional<gcode::InputUnits> powerOnUnits;  // --units
   std::optional<bool> calculatorInput;            // --decimal-point
+  std::optional<DisplayUnits> showUnits;          // --show-units (nullopt: auto, the program's)
   std::vector<std::string> tools;  // --tool N=ID, checked once the turret size is known
 };
 
@@ -120,6 +122,13 @@ const std::vector<OptionSpec>& optionSpecs() {
        [](SimulateOptions& o, const std::string& v) {
          o.powerOnUnits = parseUnits(v);
          return o.powerOnUnits.has_value();
+       }},
+      {"--show-units", true,
+       [](SimulateOptions& o, const std::string& v) {
+         if (v == "mm") o.showUnits = DisplayUnits::Mm;
+         else if (v == "inch") o.showUnits = DisplayUnits::Inch;
+         else if (v != "auto") return false;
+         return true;
        }},
       {"--decimal-point", true,
        [](SimulateOptions& o, const std::string& v) {
@@ -257,6 +266,10 @@ int runSimulate(const std::vector<std::string>& args) {
   // The stock: collisions stop the run on their block (SPEC 8), and the cut outputs.
   CutOutputOptions cutOptions = o.cut;
   cutOptions.lang = o.lang;
+  // Lengths on stdout/stderr in the program's units unless --show-units says otherwise (issue 28 item 4).
+  const UnitFormat units(o.showUnits.value_or(
+      machine::programUnits(timeline, gcode::powerOnUnitsOf(runOptions.dialect, runOptions.powerOnUnits))));
+  cutOptions.units = units;
   const CutOutcome cut = o.cut.enabled ? runCut(o.file, programFile.header, setup, timeline, cutOptions) : CutOutcome{};
   for (const Diagnostic& n : cut.guessNotes) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
   for (const Diagnostic& w : cut.warnings) printDiagnostic(job.fileOf(w), w, o.lang);
@@ -271,7 +284,7 @@ int runSimulate(const std::vector<std::string>& args) {
     const machine::Timeline programmed = cut::programmedPath(program, cutSetup, runOptions, timeline);
     const cut::PartCheck result =
         cut::checkPart(timeline, programmed, cut::CutSetup::from(programFile.header, cutSetup), check);
-    for (const Diagnostic& d : cut::partCheckDiagnostics(result)) printDiagnostic(job.fileOf(d), d, o.lang);
+    for (const Diagnostic& d : cut::partCheckDiagnostics(result, units)) printDiagnostic(job.fileOf(d), d, o.lang);
   }
   if (o.compareCompensation && o.cut.enabled) {
     // What G41/G42 change: each difference as a note on the block that cut the surface.

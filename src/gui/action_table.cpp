@@ -123,6 +123,11 @@ const ActionSpec kActions[] = {
     {"actionShowPath", nullptr, kNoKey, nullptr, KLUENG_TR("Show Tool &Path"), nullptr, EnabledWhen::Always, true},
     {"actionShowStatusBar", nullptr, kNoKey, nullptr, KLUENG_TR("&Status Bar"), nullptr, EnabledWhen::Always, true},
     {"actionShowLamps", nullptr, kNoKey, nullptr, KLUENG_TR("Status &Lamps"), nullptr, EnabledWhen::Always, true},
+    {"actionShowUnitsAuto", nullptr, kNoKey, nullptr, KLUENG_TR("&Auto: the program's units (G20 inch, G21 mm)"),
+     KLUENG_TR("Positions, feeds, rulers, features and the drawing in the units the program is written in"),
+     EnabledWhen::Always, true},
+    {"actionShowUnitsMm", nullptr, kNoKey, nullptr, KLUENG_TR("&Millimetres"), nullptr, EnabledWhen::Always, true},
+    {"actionShowUnitsInch", nullptr, kNoKey, nullptr, KLUENG_TR("&Inches"), nullptr, EnabledWhen::Always, true},
     // Help
     {"actionContents", "contents", QKeySequence::HelpContents, nullptr, KLUENG_TR("&Contents"),
      KLUENG_TR("Help for self-learners: every G and M code with an example")},
@@ -157,7 +162,8 @@ const MenuSpec kMenus[] = {
      "actionDialectFanuc actionDialectHaas actionDialectClassic | actionUnitsMachine actionUnitsMm actionUnitsInch"},
     {"menuView", KLUENG_TR("&View"),
      "fileToolBar editToolBar runToolBar helpToolBar actionShowStatusBar actionShowLamps diagnosticsDock flowDock partDock view3dDock | "
-     "actionShowPath actionFitView actionZoomIn actionZoomOut"},
+     "actionShowPath actionFitView actionZoomIn actionZoomOut | menuShowUnits"},
+    {"menuShowUnits", KLUENG_TR("&Units Shown"), "actionShowUnitsAuto actionShowUnitsMm actionShowUnitsInch"},
     {"menuHelp", KLUENG_TR("&Help"), "actionContents actionToggleLanguage | actionAbout"},
 };
 // Only these are on the menu bar; the others are submenus.
@@ -207,8 +213,8 @@ ActionTable::ActionTable(QMainWindow* window, int speedCount) : QObject(window),
     speeds->addAction(a);
     actions_.insert(a->objectName(), a);
   }
-  // Exclusive choices: one dialect, one power-on unit.
-  for (const char* group : {"actionDialect", "actionUnits"}) {
+  // Exclusive choices: one dialect, one power-on unit, one unit shown.
+  for (const char* group : {"actionDialect", "actionUnits", "actionShowUnits"}) {
     auto* g = new QActionGroup(this);
     for (const ActionSpec& spec : kActions)
       if (QString::fromLatin1(spec.name).startsWith(QLatin1String(group))) g->addAction(action(QString::fromLatin1(spec.name)));

@@ -24,6 +24,7 @@ JobToolsResult checkWithTools(const QString& text, int firstLine, core::gcode::C
   result.inference = std::move(job.inference);
   result.fit = job.fit;
   result.fitBlocks = job.fitBlocks;
+  result.units = job.units;
   return result;
 }
 

@@ -17,6 +17,7 @@
 #include "klueng/core/diagnostic.h"
 #include "klueng/core/gcode/checker.h"
 #include "klueng/core/machine/tool_inference.h"
+#include "klueng/core/units.h"
 
 namespace klueng::gui {
 
@@ -26,6 +27,7 @@ struct JobToolsResult {
   // Another dialect that accepts the whole program (the current one refuses it).
   std::optional<core::gcode::Dialect> fit;
   int fitBlocks = 0;
+  core::DisplayUnits units = core::DisplayUnits::Mm;  // the program's (its G20/G21, else the power-on units)
 };
 
 JobToolsResult checkWithTools(const QString& text, int firstLine, core::gcode::CheckOptions options,

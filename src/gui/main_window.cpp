@@ -47,6 +47,7 @@
 #include "gui/setup_strip.h"
 #include "gui/settings.h"
 #include "gui/setup_commands.h"
+#include "gui/part_panel.h"
 #include "gui/status_panel.h"
 #include "gui/tool_select_dialog.h"
 #include "klueng/core/diagnostic_codes.h"
@@ -65,6 +66,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   setWindowIcon(QIcon(QStringLiteral(":/icons/klueng.svg")));
   dialect_ = settings_->dialect();
   powerOnUnits_ = settings_->powerOnUnits();
+  shownUnits_ = settings_->shownUnits();
+  programUnits_ = core::gcode::powerOnUnitsOf(dialect_, powerOnUnits_) == core::gcode::InputUnits::Inch
+                      ? core::DisplayUnits::Inch
+                      : core::DisplayUnits::Mm;  // until the first check says the program's
 
   editor_ = new CodeEditor(this);
   editor_->setObjectName(QStringLiteral("codeEditor"));
@@ -92,6 +97,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
     source.filePath = document_->filePath();
     source.setup = toolInference_.setup;
     source.dialect = dialect_;
+    source.units = displayUnits();
     return source;
   });
   connect(reports_, &ReportController::message, statusBar(), &QStatusBar::showMessage);
@@ -399,6 +405,8 @@ void MainWindow::onCheckFinished(const JobToolsResult& result) {
     if (d.code == core::codes::kLengthsInIncrements || d.code == core::codes::kLengthsWhole) pointNote_ = d;
   if (toolsChanged) runner_->setMachineSetup(toolInference_.setup);
   updateStockLabel();  // the setup strip lists the tools just decided
+  programUnits_ = result.units;  // a G20 program speaks inches on View ▸ Units shown ▸ Auto
+  applyDisplayUnits();
   std::stable_sort(lastDiagnostics_.begin(), lastDiagnostics_.end(), [](const auto& a, const auto& b) {
     return a.range.line != b.range.line ? a.range.line < b.range.line : a.range.column < b.range.column;
   });
@@ -410,6 +418,13 @@ void MainWindow::onCheckFinished(const JobToolsResult& result) {
     hideBanner();
   if (!isBusy() && !runner_->isBusy()) busyBar_->hide();
   emit checkFinished();
+}
+
+void MainWindow::applyDisplayUnits() {
+  const core::UnitFormat units = displayUnits();
+  statusFields_->setUnits(units);
+  output_->setUnits(units);
+  part_->setUnits(units);
 }
 
 void MainWindow::showDiagnostics() {

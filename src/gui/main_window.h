@@ -18,6 +18,7 @@
 #include "gui/run_controller.h"
 #include "klueng/core/gcode/code_table.h"
 #include "klueng/core/machine/interpreter.h"
+#include "klueng/core/units.h"
 
 class QAction;
 class QActionGroup;
@@ -93,6 +94,10 @@ class MainWindow : public QMainWindow {
   void setDialect(core::gcode::Dialect d);
   // Units before any G20/G21 (Dialect menu; remembered): nullopt = the dialect's.
   void setPowerOnUnits(std::optional<core::gcode::InputUnits> units);
+  // The unit lengths are shown in (View ▸ Units shown; remembered): nullopt = Auto,
+  // the program's own (its G20/G21, else the power-on units). Issue 28 item 4.
+  void setShownUnits(std::optional<core::DisplayUnits> units);
+  core::UnitFormat displayUnits() const { return core::UnitFormat(shownUnits_.value_or(programUnits_)); }
   QString configDir() const { return configDir_; }
 
  public slots:
@@ -207,6 +212,9 @@ class MainWindow : public QMainWindow {
 
   core::gcode::Dialect dialect_ = core::gcode::Dialect::Fanuc;
   std::optional<core::gcode::InputUnits> powerOnUnits_;  // nullopt: as the dialect's machine
+  std::optional<core::DisplayUnits> shownUnits_;         // View ▸ Units shown; nullopt: Auto
+  core::DisplayUnits programUnits_ = core::DisplayUnits::Mm;  // the last check's: what Auto shows
+  void applyDisplayUnits();
   QString configDir_;
   QString configDirOverride_;  // where the dialogs last saved the .cfg files
   core::machine::MachineSetup setup_;   // tools.cfg / offset.cfg / machine.cfg as read

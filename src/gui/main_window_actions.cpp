@@ -194,6 +194,17 @@ void MainWindow::createActions() {
     connect(a, &QAction::triggered, this, [this, u] { setPowerOnUnits(u); });
   }
 
+  const std::pair<const char*, std::optional<core::DisplayUnits>> shownChoices[] = {
+      {"actionShowUnitsAuto", std::nullopt},
+      {"actionShowUnitsMm", core::DisplayUnits::Mm},
+      {"actionShowUnitsInch", core::DisplayUnits::Inch}};
+  for (const auto& [name, units] : shownChoices) {
+    QAction* a = action(QString::fromLatin1(name));
+    a->setChecked(units == shownUnits_);
+    const auto u = units;
+    connect(a, &QAction::triggered, this, [this, u] { setShownUnits(u); });
+  }
+
   // View
   on("actionFitView", [this] { output_->fitToView(); });
   on("actionZoomIn", [this] { output_->zoomIn(); });
@@ -273,7 +284,11 @@ void MainWindow::createDocks() {
   connect(output_, &OutputView::measured, this, [this](const QString& reading) { statusBar()->showMessage(reading); });
   connect(output_, &OutputView::cursorPositionChanged, this, [this](double xDiameter, double z) {
     if (!output_->isMeasuring() || statusBar()->currentMessage().isEmpty())
-      statusBar()->showMessage(tr("Z %1   Ø %2").arg(z, 0, 'f', 3).arg(xDiameter, 0, 'f', 3), 3000);
+      statusBar()->showMessage(tr("Z %1   Ø %2   %3")
+                                   .arg(QString::fromStdString(displayUnits().position(z)),
+                                        QString::fromStdString(displayUnits().position(xDiameter)),
+                                        displayUnits().inch() ? tr("in") : tr("mm")),
+                               3000);
   });
 }
 
@@ -310,6 +325,16 @@ void MainWindow::setDialect(core::gcode::Dialect d) {
   document_->reinferStock(editor_->toPlainText(), runner_->machineSetup(), run);
   runnerStale_ = true;
   checkNow();
+}
+
+void MainWindow::setShownUnits(std::optional<core::DisplayUnits> units) {
+  shownUnits_ = units;
+  settings_->setShownUnits(units);
+  action(!units                                 ? QStringLiteral("actionShowUnitsAuto")
+         : *units == core::DisplayUnits::Inch ? QStringLiteral("actionShowUnitsInch")
+                                              : QStringLiteral("actionShowUnitsMm"))
+      ->setChecked(true);
+  applyDisplayUnits();
 }
 
 void MainWindow::setPowerOnUnits(std::optional<core::gcode::InputUnits> units) {

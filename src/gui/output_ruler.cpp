@@ -21,23 +21,32 @@ double OutputRuler::tickStep(double pixelsPerMm, double minPixels) {
   return 10.0 * decade;
 }
 
+void OutputRuler::setUnits(const core::UnitFormat& units) {
+  if (units_ == units) return;
+  units_ = units;
+  update();
+}
+
 std::vector<OutputRuler::Tick> OutputRuler::ticks() const {
   std::vector<Tick> out;
   const QTransform t = view_->viewportTransform();
   const double scale = axis_ == Axis::Z ? std::abs(t.m11()) : std::abs(t.m22());
   if (scale <= 0) return out;
-  // X is shown as a diameter: one scene mm of radius is 2 mm of X.
-  const double unitPixels = axis_ == Axis::Z ? scale : scale / 2.0;
+  // X is shown as a diameter: one scene mm of radius is 2 mm of X. In inches a
+  // unit is 25.4 scene mm: ticks fall on round inches, not on converted mm.
+  const double mmPerUnit = units_.toMm(1.0);
+  const double unitPixels = (axis_ == Axis::Z ? scale : scale / 2.0) * mmPerUnit;
   const double major = tickStep(unitPixels, axis_ == Axis::Z ? 70.0 : 40.0);
   const double minor = major / (std::fmod(major / std::pow(10.0, std::floor(std::log10(major))), 2.0) == 0 ? 4.0 : 5.0);
   const int length = axis_ == Axis::Z ? width() : height();
   // Ruler pixel p -> value: Z = scene x; X diameter = -2 * scene y.
   auto valueAt = [&](double p) {
     const QPointF scene = t.inverted().map(axis_ == Axis::Z ? QPointF(p, 0) : QPointF(0, p));
-    return axis_ == Axis::Z ? scene.x() : -2.0 * scene.y();
+    return (axis_ == Axis::Z ? scene.x() : -2.0 * scene.y()) / mmPerUnit;
   };
   auto pixelOf = [&](double v) {
-    const QPointF vp = t.map(axis_ == Axis::Z ? QPointF(v, 0) : QPointF(0, -v / 2.0));
+    const double mm = v * mmPerUnit;
+    const QPointF vp = t.map(axis_ == Axis::Z ? QPointF(mm, 0) : QPointF(0, -mm / 2.0));
     return axis_ == Axis::Z ? vp.x() : vp.y();
   };
   double a = valueAt(0), b = valueAt(length);

@@ -1,7 +1,9 @@
 #pragma once
-// A ruler along the output view's top (Z, mm) or left edge (X, diameter mm),
-// following the view's zoom and pan.
+// A ruler along the output view's top (Z) or left edge (X, diameter), in mm or
+// inches (View ▸ Units shown), following the view's zoom and pan.
 #include <QWidget>
+
+#include "klueng/core/units.h"
 
 class QGraphicsView;
 
@@ -16,6 +18,8 @@ class OutputRuler : public QWidget {
   static double tickStep(double pixelsPerMm, double minPixels);
   // Tick labels currently drawn (tests: the rulers follow zoom and pan).
   QStringList visibleLabels() const;
+  // Ticks at round numbers of this unit (the scene stays in mm).
+  void setUnits(const core::UnitFormat& units);
 
  protected:
   void paintEvent(QPaintEvent* event) override;
@@ -23,11 +27,12 @@ class OutputRuler : public QWidget {
  private:
   struct Tick {
     double pos;   // pixels along the ruler
-    double value; // mm (Z) or diameter (X)
+    double value; // Z or diameter X, in units_
     bool major;
   };
   std::vector<Tick> ticks() const;
   Axis axis_;
+  core::UnitFormat units_;
   QGraphicsView* view_;
 };
 

@@ -294,6 +294,16 @@ void OutputView::scrollContentsBy(int dx, int dy) {
   updateRulers();
 }
 
+void OutputView::setUnits(const core::UnitFormat& units) {
+  units_ = units;
+  zRuler_->setUnits(units);
+  xRuler_->setUnits(units);
+  // A reading on screen is said again in the new unit.
+  if (measureA_ && measureB_) emit measured(MeasureItem::reading(*measureA_, *measureB_, units_));
+}
+
+QStringList OutputView::rulerLabels(bool zAxis) const { return (zAxis ? zRuler_ : xRuler_)->visibleLabels(); }
+
 void OutputView::updateRulers() {
   zRuler_->update();
   xRuler_->update();
@@ -317,7 +327,7 @@ void OutputView::mousePressEvent(QMouseEvent* event) {
     measureB_.reset();
   } else {
     measureB_ = p;
-    emit measured(MeasureItem::reading(*measureA_, *measureB_));
+    emit measured(MeasureItem::reading(*measureA_, *measureB_, units_));
   }
   measure_->setPoints(*measureA_, measureB_);
   measure_->setVisible(true);

@@ -23,6 +23,7 @@
 
 #include "gui/part_overlay.h"
 #include "klueng/core/geometry.h"
+#include "klueng/core/units.h"
 
 namespace klueng::gui {
 
@@ -65,6 +66,11 @@ class OutputView : public QGraphicsView {
   bool isPartOverlayShown() const;
   // The point under a scene position, snapped to the stock's profile and faces within `pixels`.
   QPointF snapped(const QPointF& scenePos, double pixels = 6.0) const;
+  // The unit of the rulers and the measure reading (View ▸ Units shown); the scene stays in mm.
+  void setUnits(const core::UnitFormat& units);
+  const core::UnitFormat& units() const { return units_; }
+  // The rulers' tick labels (tests).
+  QStringList rulerLabels(bool zAxis) const;
   // The ruler thickness in pixels (the viewport margins).
   static constexpr int kRulerSize = 24;
 
@@ -119,6 +125,7 @@ class OutputView : public QGraphicsView {
   PartOverlayItem* overlay_ = nullptr;
   MeasureItem* measure_ = nullptr;
   bool measuring_ = false;
+  core::UnitFormat units_;
   std::optional<QPointF> measureA_, measureB_;
   std::vector<TrailItem*> trail_;   // completed chunks, then the live one
   int trailMoves_ = 0;              // timeline moves already in the trail

@@ -73,14 +73,13 @@ void MeasureItem::setPoints(const QPointF& a, const std::optional<QPointF>& b) {
   update();
 }
 
-QString MeasureItem::reading(const QPointF& a, const QPointF& b) {
+QString MeasureItem::reading(const QPointF& a, const QPointF& b, const core::UnitFormat& units) {
   // Scene y is -radius: ΔØ is twice the radial difference.
   const double dz = b.x() - a.x(), dr = -(b.y() - a.y());
   const double angle = std::atan2(dr, dz) * 180.0 / M_PI;
+  const auto length = [&units](double mm) { return QString::fromStdString(units.position(mm)); };
   return QStringLiteral("ΔZ %1   ΔØ %2   d %3   ∠ %4°")
-      .arg(dz, 0, 'f', 3)
-      .arg(2.0 * dr, 0, 'f', 3)
-      .arg(std::hypot(dz, dr), 0, 'f', 3)
+      .arg(length(dz), length(2.0 * dr), length(std::hypot(dz, dr)))
       .arg(angle, 0, 'f', 2);
 }
 

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "klueng/core/cut/stock.h"
+#include "klueng/core/units.h"
 
 namespace klueng::gui {
 
@@ -47,7 +48,8 @@ class MeasureItem : public QGraphicsItem {
   MeasureItem();
   void setPoints(const QPointF& a, const std::optional<QPointF>& b);
   // "ΔZ 20.000  ΔØ 10.000  d 22.361  ∠ 26.57°" (empty before the second point).
-  static QString reading(const QPointF& a, const QPointF& b);
+  // In the unit shown (View ▸ Units shown): 3 decimals in mm, 4 in inches.
+  static QString reading(const QPointF& a, const QPointF& b, const core::UnitFormat& units = core::UnitFormat{});
   QRectF boundingRect() const override;
   void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
 

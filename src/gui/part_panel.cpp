@@ -107,6 +107,12 @@ void PartPanel::invalidate() {
   emit overlayChanged(base_);
 }
 
+void PartPanel::setUnits(const core::UnitFormat& units) {
+  if (units_ == units) return;
+  units_ = units;
+  if (features_) analyse();  // the same part, said in the new unit
+}
+
 void PartPanel::setComparison(int compare) { compare_->setCurrentIndex(std::clamp(compare, 0, 2)); }
 
 void PartPanel::retranslateUi() {
@@ -161,12 +167,12 @@ void PartPanel::analyse() {
   features_ = new QTreeWidgetItem(list_);
   for (const auto* side : {&part.outside, &part.inside})
     for (const cut::PartFeature& f : *side) {
-      QTreeWidgetItem* item = row(features_, qs(cut::describeFeature(f, lang)), qs(cut::featureLabel(f, lang)), 0,
+      QTreeWidgetItem* item = row(features_, qs(cut::describeFeature(f, lang, units_)), qs(cut::featureLabel(f, lang, units_)), 0,
                                   f.zLeft, f.zRight);
       item->setData(0, kPathRole, QVariant::fromValue(profileOf(f)));
     }
   defects_ = new QTreeWidgetItem(list_);
-  for (const Diagnostic& d : cut::partCheckDiagnostics(check)) {
+  for (const Diagnostic& d : cut::partCheckDiagnostics(check, units_)) {
     QTreeWidgetItem* item = row(defects_, qs(formatMessage(d, lang, core::Surface::Gui)), QString(), d.range.line, 0.0, 0.0);
     if (d.code == codes::kPartGouge || d.code == codes::kBoreGouge) item->setForeground(0, QColor(190, 0, 0));
     if (d.code == codes::kPartLeftover || d.code == codes::kBoreLeftover) item->setForeground(0, QColor(150, 110, 0));
@@ -187,7 +193,7 @@ void PartPanel::analyse() {
     if (c.other) base_.otherOutline = render::stockShapeFromStock(*c.other).outline;
     for (const cut::CompDifference& d : c.differences) {
       row(differences_, qs(cut::describeDifference(d, compiled.program, with, lang)),
-          QStringLiteral("Z%1").arg(d.z, 0, 'f', 3), d.line, d.zLeft, d.zRight);
+          QStringLiteral("Z%1").arg(qs(units_.position(d.z))), d.line, d.zLeft, d.zRight);
       const double r = d.diameter / 2.0;
       base_.bands.push_back({d.zLeft, d.zRight, r, r + d.radial, QColor(255, 140, 0)});
     }

@@ -13,6 +13,7 @@
 #include "gui/part_overlay.h"
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/machine/interpreter.h"
+#include "klueng/core/units.h"
 
 class QComboBox;
 class QLabel;
@@ -37,6 +38,9 @@ class PartPanel : public QDockWidget {
   // 1 = without G41/G42, 2 = sharp nose (R 0).
   void analyse();
   void setComparison(int compare);
+  // The unit features and findings are written in (View ▸ Units shown): a list on
+  // screen is said again in the new unit.
+  void setUnits(const core::UnitFormat& units);
   // The program or its setup changed: what is listed no longer holds (cleared, and the marks with it).
   void invalidate();
   QTreeWidget* list() const { return list_; }
@@ -66,6 +70,7 @@ class PartPanel : public QDockWidget {
   QTreeWidgetItem* differences_ = nullptr;
   PartOverlay base_;  // defects and the comparison's outline; a selection adds its highlight
   std::function<QString()> summaryMaker_;  // the summary line in the current language
+  core::UnitFormat units_;
 };
 
 }  // namespace klueng::gui

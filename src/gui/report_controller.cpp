@@ -40,6 +40,7 @@ render::ReportData ReportController::reportData(const Source& source, bool withP
   data.program = source.program;
   data.fileName = source.displayName;
   data.date = QDate::currentDate();
+  data.units = source.units;
   QApplication::setOverrideCursor(Qt::WaitCursor);
   render::addRunResults(data, source.setup, source.dialect, reportLanguage(), withPart);  // one run for both
   QApplication::restoreOverrideCursor();

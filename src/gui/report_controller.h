@@ -9,6 +9,7 @@
 #include "klueng/core/gcode/code_table.h"
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/machine/interpreter.h"
+#include "klueng/core/units.h"
 #include "render/report_sheets.h"
 
 class QPagedPaintDevice;
@@ -27,6 +28,7 @@ class ReportController : public QObject {
     QString filePath;      // empty when untitled
     core::machine::MachineSetup setup;  // the job's tools, as a run uses them
     core::gcode::Dialect dialect = core::gcode::Dialect::Fanuc;
+    core::UnitFormat units;  // the drawing's dimensions (View ▸ Units shown)
   };
 
   ReportController(QWidget* window, std::function<Source()> source);

@@ -79,6 +79,18 @@ void Settings::setPowerOnUnits(std::optional<core::gcode::InputUnits> units) {
                                                                                    : QStringLiteral("mm"));
 }
 
+std::optional<core::DisplayUnits> Settings::shownUnits() const {
+  const QString v = settings_.value(key("view/units")).toString();
+  if (v == QStringLiteral("mm")) return core::DisplayUnits::Mm;
+  if (v == QStringLiteral("inch")) return core::DisplayUnits::Inch;
+  return std::nullopt;
+}
+void Settings::setShownUnits(std::optional<core::DisplayUnits> units) {
+  settings_.setValue(key("view/units"), !units                                 ? QStringLiteral("auto")
+                                        : *units == core::DisplayUnits::Inch ? QStringLiteral("inch")
+                                                                             : QStringLiteral("mm"));
+}
+
 QStringList Settings::recentFiles() const { return settings_.value(key("files/recent")).toStringList(); }
 
 void Settings::addRecentFile(const QString& path) {

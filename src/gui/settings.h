@@ -10,6 +10,7 @@
 
 #include "klueng/core/gcode/code_table.h"
 #include "klueng/core/io/program_file.h"
+#include "klueng/core/units.h"
 
 namespace klueng::gui {
 
@@ -27,6 +28,9 @@ class Settings {
   // Power-on units: nullopt = as the dialect's machine powers on.
   std::optional<core::gcode::InputUnits> powerOnUnits() const;
   void setPowerOnUnits(std::optional<core::gcode::InputUnits> units);
+  // The unit lengths are shown in (View ▸ Units shown): nullopt = Auto, the program's.
+  std::optional<core::DisplayUnits> shownUnits() const;
+  void setShownUnits(std::optional<core::DisplayUnits> units);
 
   QStringList recentFiles() const;
   // Puts path first, removes duplicates, keeps at most kMaxRecentFiles.

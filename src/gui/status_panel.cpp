@@ -44,9 +44,9 @@ StatusFields::StatusFields(QWidget* parent) : QWidget(parent) {
     layout->addWidget(values_[i]);
     if (i + 1 < kCount) layout->addSpacing(2);
   }
-  // Wide enough for "-999.999" so the bar does not jump while the tool moves
-  // on a lathe's travel (a larger number widens its field; at 1366 px the Thai
-  // bar has no room for four fields of "-9999.999").
+  // Wide enough for "-999.999" (inches: "-99.9999", as wide) so the bar does not
+  // jump while the tool moves on a lathe's travel (a larger number widens its
+  // field; at 1366 px the Thai bar has no room for four fields of "-9999.999").
   const int wide = values_[0]->fontMetrics().horizontalAdvance(QStringLiteral("-999.999")) + 8;
   for (Field f : {Field::ToolX, Field::ToolZ, Field::OffsetX, Field::OffsetZ}) values_[static_cast<int>(f)]->setMinimumWidth(wide);
   retranslate();
@@ -82,16 +82,20 @@ void StatusFields::setStatus(const RunStatus& s) {
   status_ = s;
   const auto& m = s.machine;
   auto set = [this](Field f, const QString& text) { values_[static_cast<int>(f)]->setText(text); };
-  set(Field::ToolX, number(core::diameterOf(s.position)));
-  set(Field::ToolZ, number(core::zOf(s.position)));
+  // Lengths through the one display conversion (core/units.h): 3 decimals in mm, 4 in inches.
+  const core::UnitFormat& u = units_;
+  const auto length = [&u](double mm) { return QString::fromStdString(u.position(mm)); };
+  set(Field::ToolX, length(core::diameterOf(s.position)));
+  set(Field::ToolZ, length(core::zOf(s.position)));
   const bool perRev = s.feedMode == core::machine::FeedMode::PerRev;
-  set(Field::Feed, s.programmedFeed > 0
-                       ? (perRev ? tr("%1 mm/rev").arg(number(s.programmedFeed)) : tr("%1 mm/min").arg(number(s.programmedFeed, 1)))
-                       : QStringLiteral("-"));
+  const QString feed = QString::fromStdString(u.feed(s.programmedFeed, perRev));
+  set(Field::Feed, s.programmedFeed <= 0 ? QStringLiteral("-")
+                   : u.inch()           ? (perRev ? tr("%1 in/rev").arg(feed) : tr("%1 in/min").arg(feed))
+                                        : (perRev ? tr("%1 mm/rev").arg(feed) : tr("%1 mm/min").arg(feed)));
   set(Field::Spindle, tr("%1 rpm").arg(number(s.rpm, 0)));
-  set(Field::OffsetX, number(m.offsetX));
-  set(Field::OffsetZ, number(m.offsetZ));
-  set(Field::NoseRadius, number(m.noseRadius));
+  set(Field::OffsetX, length(m.offsetX));
+  set(Field::OffsetZ, length(m.offsetZ));
+  set(Field::NoseRadius, length(m.noseRadius));
   set(Field::Tip, QString::number(m.tip));
   set(Field::Tool, m.tool > 0 ? QStringLiteral("T%1%2").arg(m.tool, 2, 10, QLatin1Char('0')).arg(m.offset, 2, 10, QLatin1Char('0'))
                               : QStringLiteral("-"));
@@ -107,12 +111,23 @@ void StatusFields::setStatus(const RunStatus& s) {
   values_[static_cast<int>(Field::Date)]->setToolTip(formatDate(QDate::currentDate(), uiIsThai()));
 }
 
+void StatusFields::setUnits(const core::UnitFormat& units) {
+  if (units_ == units) return;
+  units_ = units;
+  retranslate();  // the tips name the unit; the values are shown again in it
+}
+
 void StatusFields::retranslate() {
   const QString names[kCount] = {tr("Tool X"),   tr("Tool Z"), tr("Feed"), tr("Spindle"), tr("X offset"),
                                  tr("Z offset"), tr("Nose R"), tr("Tip"),  tr("Tool"),    tr("Time"), tr("Date")};
-  const QString tips[kCount] = {tr("Tool position X (diameter, mm)"), tr("Tool position Z (mm)"), tr("Feed rate as programmed"),
-                                tr("Spindle speed (rpm)"), tr("X offset of the active tool offset (diameter, mm)"),
-                                tr("Z offset of the active tool offset (mm)"), tr("Nose radius of the active offset (mm)"),
+  const bool in = units_.inch();
+  const QString tips[kCount] = {in ? tr("Tool position X (diameter, inches)") : tr("Tool position X (diameter, mm)"),
+                                in ? tr("Tool position Z (inches)") : tr("Tool position Z (mm)"), tr("Feed rate as programmed"),
+                                tr("Spindle speed (rpm)"),
+                                in ? tr("X offset of the active tool offset (diameter, inches)")
+                                   : tr("X offset of the active tool offset (diameter, mm)"),
+                                in ? tr("Z offset of the active tool offset (inches)") : tr("Z offset of the active tool offset (mm)"),
+                                in ? tr("Nose radius of the active offset (inches)") : tr("Nose radius of the active offset (mm)"),
                                 tr("Imaginary tool tip number of the active offset"), tr("Tool number and offset number"),
                                 tr("Machine time: elapsed / cycle time of the whole program (min:s)"), tr("Today's date")};
   for (int i = 0; i < kCount; ++i) {

@@ -18,6 +18,7 @@
 #include <array>
 
 #include "gui/run_controller.h"
+#include "klueng/core/units.h"
 
 namespace klueng::gui {
 
@@ -33,6 +34,9 @@ class StatusFields : public QWidget {
   static QString formatShortDate(const QDate& date, bool thai);
   // A machine time as a clock: "0:07.5", "12:34.0" (minutes:seconds).
   static QString formatClock(double seconds);
+  // The unit positions, offsets and the feed are shown in (View ▸ Units shown; issue 28 item 4).
+  void setUnits(const core::UnitFormat& units);
+  const core::UnitFormat& units() const { return units_; }
 
  public slots:
   void setStatus(const klueng::gui::RunStatus& status);
@@ -46,6 +50,7 @@ class StatusFields : public QWidget {
   std::array<QLabel*, kCount> names_{};
   std::array<QLabel*, kCount> values_{};
   RunStatus status_;
+  core::UnitFormat units_;
 };
 
 class StatusLamp : public QWidget {

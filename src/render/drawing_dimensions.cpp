@@ -17,10 +17,13 @@ using core::cut::FeatureKind;
 using core::cut::FeatureSide;
 using core::cut::PartFeature;
 
-QString num(double v) { return trimmedNumber(v, 2); }
+// A size in the frame's unit: "30", "28.16" in mm; "1.750″" in inches (core/units.h).
+QString num(double v, const core::UnitFormat& units) {
+  return QString::fromStdString(units.size(v) + units.sizeMark());
+}
 
-QString label(const PartFeature& f, bool thai) {
-  return QString::fromStdString(core::cut::featureLabel(f, thai ? core::Lang::Th : core::Lang::En));
+QString label(const PartFeature& f, const DimensionFrame& frame) {
+  return QString::fromStdString(core::cut::featureLabel(f, frame.thai ? core::Lang::Th : core::Lang::En, frame.units));
 }
 
 // The outside's largest radius at z (the faces' taller side there).
@@ -138,7 +141,7 @@ std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part,
       // A thread in a bore: the line spans the bore's material, its minor Ø.
       const double rLine = f.kind == FeatureKind::Thread && inside ? f.minorDiameter / 2.0 : r;
       DimensionItem d;
-      d.text = f.kind == FeatureKind::Thread ? label(f, frame.thai) : QStringLiteral("Ø") + num(f.diameter);
+      d.text = f.kind == FeatureKind::Thread ? label(f, frame) : QStringLiteral("Ø") + num(f.diameter, frame.units);
       if (const QString tol = mark(frame.marks.tolerance, f); !tol.isEmpty()) d.text += QLatin1Char(' ') + tol;
       const double w = fm.horizontalAdvance(d.text);
       double zc = (f.zLeft + f.zRight) / 2.0;
@@ -200,7 +203,7 @@ std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part,
     d.lines.emplace_back(QPointF(xa, rowY), QPointF(xb, rowY));
     d.arrows.emplace_back(QPointF(xa, rowY), QPointF(xb, rowY));
     d.arrows.emplace_back(QPointF(xb, rowY), QPointF(xa, rowY));
-    d.text = num(za - zb);
+    d.text = num(za - zb, frame.units);
     const double w = fm.horizontalAdvance(d.text);
     d.textRect = QRectF((xa + xb) / 2.0 - w / 2.0, rowY - 0.3 * mm - textH, w, textH);
     return d;
@@ -224,7 +227,7 @@ std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part,
         continue;
       if (isMachiningTrace(f, part)) continue;
       DimensionItem d;
-      d.text = label(f, frame.thai);
+      d.text = label(f, frame);
       if (f.side == FeatureSide::Inside) d.text += frame.thai ? QStringLiteral(" (ใน)") : QStringLiteral(" (inside)");
       const QPointF anchor = anchorOf(f, frame);
       const double w = fm.horizontalAdvance(d.text);
@@ -266,7 +269,7 @@ std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part,
   if (noseRadius > 0.0) {
     DimensionItem d;
     d.text = (frame.thai ? QStringLiteral("มุมด้านในเป็นรัศมีจมูกมีด R") : QStringLiteral("Inside corners: tool nose R")) +
-             num(noseRadius);
+             num(noseRadius, frame.units);
     const double w = fm.horizontalAdvance(d.text);
     d.textRect = QRectF(pageX(part.zLeft), (shoulders.size() > 2 ? row2 : row1) + 3.0 * mm, w, textH);
     out.push_back(d);

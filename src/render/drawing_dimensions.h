@@ -14,6 +14,7 @@
 #include <QString>
 
 #include "klueng/core/cut/part_features.h"
+#include "klueng/core/units.h"
 
 namespace klueng::render {
 
@@ -43,6 +44,7 @@ struct DimensionFrame {
   QRectF bounds;                 // everything stays inside (empty: anywhere)
   std::vector<QLineF> partLines; // the part's drawn lines on the page: labels keep off them
   DesignMarks marks;
+  core::UnitFormat units;   // the dimensions' unit (the part stays in mm)
 };
 
 // A feature the drawing gives no callout: a thread's run-out, a drill's point,

@@ -16,6 +16,7 @@ struct KluengPrintPdf {
   const klueng::core::io::ProgramFile* program;     // header (with the run's stock) + G-code
   const klueng::core::machine::MachineSetup* setup; // tools and offsets of the run
   const klueng::core::machine::JobOptions* job;     // dialect, power-on units, subprogram folder
+  int inch;                                         // 1: the drawing's dimensions in inches (a G20 program)
 };
 // 1 with *bytes (malloc'd, the caller frees) and *size; 0 with `error` filled.
 using KluengPrintPdfFn = int (*)(const KluengPrintPdf*, char** bytes, std::size_t* size, char* error,

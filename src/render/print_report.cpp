@@ -31,6 +31,7 @@ extern "C" __attribute__((visibility("default"))) int klueng_print_pdf(const Klu
   render::ReportData data;
   data.program = *in->program;
   data.fileName = QString::fromUtf8(in->fileName ? in->fileName : "");
+  data.units = core::UnitFormat(in->inch ? core::DisplayUnits::Inch : core::DisplayUnits::Mm);
   render::addRunResults(data, *in->setup, *in->job, lang, in->drawingSheet != 0);
 
   // Into memory: QPdfWriter does not report a failed file write (issue 29), the CLI's writer does.

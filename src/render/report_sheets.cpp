@@ -453,6 +453,7 @@ DimensionFrame dimensionFrame(const QPagedPaintDevice& device, const ReportData&
         f.partLines.emplace_back(f.toPage(from.x(), -side * from.y()), f.toPage(to.x(), -side * to.y()));
     from = to;
   }
+  f.units = data.units;
   return f;
 }
 

@@ -32,6 +32,7 @@
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/machine/interpreter.h"
 #include "klueng/core/machine/job.h"
+#include "klueng/core/units.h"
 #include "render/drawing_dimensions.h"
 #include "render/lathe_painters.h"
 
@@ -54,6 +55,7 @@ struct ReportData {
   QString partNote;                // printed under the drawing when the part is not the finished one
   core::cut::PartFeatures features;  // the part's features, dimensioned on the drawing (empty: overall size only)
   DesignMarks marks;               // tolerances and surface finish from a part design (none for a plain program)
+  core::UnitFormat units;          // the unit the drawing's dimensions are written in (issue 28 item 4)
   // Cycle time (issue 11): total and per tool; total < 0 = not known (the program has errors).
   double cycleTime = -1.0;
   bool cycleTimeToAlarm = false;   // the run stops on an alarm: the time is up to it

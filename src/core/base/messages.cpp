@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "catalog_parts.h"
+#include "klueng/core/units.h"
 
 namespace klueng::core {
 
@@ -76,7 +77,12 @@ std::string formatText(const MessageText* t, const Diagnostic& d, Lang lang) {
     return s;
   }
   fmt::dynamic_format_arg_store<fmt::format_context> store;
-  for (const auto& a : d.args) store.push_back(localSize(a, lang));
+  // A unit argument (units.h) reads as the unit's name in the message's language;
+  // a size with its unit ("Ø50 mm") speaks Thai units under Thai.
+  for (const auto& a : d.args) {
+    const char* unit = unitArgText(a, lang);
+    store.push_back(unit ? std::string(unit) : localSize(a, lang));
+  }
   // Missing args are a bug in the caller; show the template rather than throw.
   for (std::size_t i = d.args.size(); i < 8; ++i) store.push_back(std::string("?"));
   const std::string_view text = lang == Lang::Th ? t->th : t->en;

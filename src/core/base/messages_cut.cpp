@@ -1,5 +1,6 @@
 // Catalog part for the cut module: code, English, Thai. Keep codes sorted.
 // Alarm args: {0} = Z, {1} = X (diameter) of the controlled point where it happened.
+// Part check (W320-W323): {0}-{4} in the display unit, {5} its name (units.h: kUnitArgMm/kUnitArgInch).
 #include "catalog_parts.h"
 #include "klueng/core/diagnostic_codes.h"
 
@@ -34,20 +35,20 @@ constexpr MessageText kMessages[] = {
     {codes::kBitmapTooLarge, "Tool bitmap {0} is {1} x {2} pixels; a tool bitmap may be at most {3} x {3} pixels (2 pixels per mm)",
      "ภาพมีดตัด {0} มีขนาด {1} x {2} จุดภาพ ซึ่งใหญ่เกินไป ภาพมีดตัดต้องไม่เกิน {3} x {3} จุดภาพ (2 จุดภาพต่อ มม.)"},
     {codes::kPartGouge,
-     "Gouge {0} mm deep from Z{1} to Z{2} (deepest at Z{3}, Ø{4}): the tool's edge cut into the part the program "
+     "Gouge {0} {5} deep from Z{1} to Z{2} (deepest at Z{3}, Ø{4}): the tool's edge cut into the part the program "
      "describes",
-     "มีดตัดกินเนื้อชิ้นงานเกินแบบ ลึก {0} มม. จาก Z{1} ถึง Z{2} (ลึกที่สุดที่ Z{3} Ø{4}): คมตัดของมีดตัดเข้าไปในรูปชิ้นงานที่โปรแกรมกำหนด"},
+     "มีดตัดกินเนื้อชิ้นงานเกินแบบ ลึก {0} {5} จาก Z{1} ถึง Z{2} (ลึกที่สุดที่ Z{3} Ø{4}): คมตัดของมีดตัดเข้าไปในรูปชิ้นงานที่โปรแกรมกำหนด"},
     {codes::kPartLeftover,
-     "Material left {0} mm from Z{1} to Z{2} (most at Z{3}, Ø{4}): this block's path should have removed it",
-     "เนื้อชิ้นงานเหลือเกินแบบ {0} มม. จาก Z{1} ถึง Z{2} (มากที่สุดที่ Z{3} Ø{4}): เส้นทางของบล็อกนี้ควรตัดออก"},
+     "Material left {0} {5} from Z{1} to Z{2} (most at Z{3}, Ø{4}): this block's path should have removed it",
+     "เนื้อชิ้นงานเหลือเกินแบบ {0} {5} จาก Z{1} ถึง Z{2} (มากที่สุดที่ Z{3} Ø{4}): เส้นทางของบล็อกนี้ควรตัดออก"},
     {codes::kBoreGouge,
-     "Gouge in the bore {0} mm deep from Z{1} to Z{2} (deepest at Z{3}, Ø{4}): the tool's edge cut into the part "
+     "Gouge in the bore {0} {5} deep from Z{1} to Z{2} (deepest at Z{3}, Ø{4}): the tool's edge cut into the part "
      "the program describes",
-     "มีดตัดกินเนื้อผิวรูเกินแบบ ลึก {0} มม. จาก Z{1} ถึง Z{2} (ลึกที่สุดที่ Z{3} Ø{4}): คมตัดของมีดตัดเข้าไปในรูปชิ้นงานที่โปรแกรมกำหนด"},
+     "มีดตัดกินเนื้อผิวรูเกินแบบ ลึก {0} {5} จาก Z{1} ถึง Z{2} (ลึกที่สุดที่ Z{3} Ø{4}): คมตัดของมีดตัดเข้าไปในรูปชิ้นงานที่โปรแกรมกำหนด"},
     {codes::kBoreLeftover,
-     "Material left in the bore {0} mm from Z{1} to Z{2} (most at Z{3}, Ø{4}): this block's path should have "
+     "Material left in the bore {0} {5} from Z{1} to Z{2} (most at Z{3}, Ø{4}): this block's path should have "
      "removed it",
-     "เนื้อชิ้นงานในรูเหลือเกินแบบ {0} มม. จาก Z{1} ถึง Z{2} (มากที่สุดที่ Z{3} Ø{4}): เส้นทางของบล็อกนี้ควรตัดออก"},
+     "เนื้อชิ้นงานในรูเหลือเกินแบบ {0} {5} จาก Z{1} ถึง Z{2} (มากที่สุดที่ Z{3} Ø{4}): เส้นทางของบล็อกนี้ควรตัดออก"},
     {codes::kPartCheckStopped,
      "The run stopped on alarm {0} here: the part check compares what was cut up to it",
      "การทำงานหยุดด้วยสัญญาณเตือน {0} ที่บรรทัดนี้: การตรวจชิ้นงานเปรียบเทียบเฉพาะส่วนที่ตัดไปแล้วจนถึงจุดนั้น"},

@@ -474,9 +474,9 @@ PartCheck checkPart(const machine::Timeline& timeline, const machine::Timeline& 
   return out;
 }
 
-std::vector<Diagnostic> partCheckDiagnostics(const PartCheck& check) {
+std::vector<Diagnostic> partCheckDiagnostics(const PartCheck& check, const UnitFormat& units) {
   std::vector<Diagnostic> out;
-  const auto f3 = [](double v) { return fmt::format("{:.3f}", v + 0.0); };
+  const auto f3 = [&](double v) { return units.position(v); };
   for (const PartDefect& d : check.defects) {
     Diagnostic g;
     g.severity = Severity::Warning;
@@ -486,7 +486,7 @@ std::vector<Diagnostic> partCheckDiagnostics(const PartCheck& check) {
     g.range.line = d.line;
     g.range.column = d.line > 0 ? 1 : 0;
     g.range.file = d.file;
-    g.args = {f3(d.depth), f3(d.zRight), f3(d.zLeft), f3(d.z), f3(d.diameter)};
+    g.args = {f3(d.depth), f3(d.zRight), f3(d.zLeft), f3(d.z), f3(d.diameter), units.unitArg()};
     out.push_back(g);
   }
   if (check.stoppedBy) {

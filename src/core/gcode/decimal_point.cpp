@@ -78,6 +78,14 @@ std::string clueLengthText(const PointClue& clue, bool increments) {
   return fmt::format("{:g} {}", clue.wholeMm / perUnit, unit);
 }
 
+InputUnits programInputUnits(const Program& program, InputUnits powerOnUnits) {
+  InputUnits units = powerOnUnits;
+  for (const Block& b : program.blocks)
+    if (b.file == 0 && b.mayHave('G'))
+      if (const auto u = unitsOf(b)) units = *u;
+  return units;
+}
+
 PointEvidence weighDecimalPoints(const Program& program, InputUnits powerOnUnits) {
   PointEvidence out;
   InputUnits units = powerOnUnits;

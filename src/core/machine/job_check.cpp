@@ -1,6 +1,8 @@
 // One program's check for the GUI (see job_check.h).
 #include "klueng/core/machine/job_check.h"
 
+#include "klueng/core/gcode/decimal_point.h"
+
 #include "check_with_tools.h"
 #include "klueng/core/gcode/dialect_fit.h"
 #include <algorithm>
@@ -86,6 +88,11 @@ JobCheck checkJob(std::string_view gcode, int firstLine, gcode::CheckOptions opt
     own.push_back(std::move(e));
   }
   result.diagnostics = std::move(own);
+  // The units the program speaks, before any run (issue 28 item 4: View ▸ Units shown ▸ Auto).
+  result.units = gcode::programInputUnits(program, gcode::powerOnUnitsOf(options.dialect, options.powerOnUnits)) ==
+                         gcode::InputUnits::Inch
+                     ? DisplayUnits::Inch
+                     : DisplayUnits::Mm;
   // The dialect that accepts a program this one refuses (I102), for the offer bar.
   if (auto fit = gcode::suggestDialect(program, options, result.diagnostics)) {
     result.fit = fit->dialect;

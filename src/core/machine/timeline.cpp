@@ -1,4 +1,5 @@
 #include "klueng/core/machine/timeline.h"
+#include "klueng/core/machine/program_units.h"
 
 #include <algorithm>
 #include <cmath>
@@ -96,6 +97,11 @@ CutSide sideOfCuts(const Timeline& timeline) {
   }
   if (below > above && below >= 1.0) return CutSide::Beyond;
   return above > below && above >= 1.0 ? CutSide::Front : CutSide::None;
+}
+
+DisplayUnits programUnits(const Timeline& timeline, gcode::InputUnits powerOn) {
+  if (timeline.snapshots.empty()) return powerOn == gcode::InputUnits::Inch ? DisplayUnits::Inch : DisplayUnits::Mm;
+  return timeline.snapshots.back().modal.units == Units::Inch ? DisplayUnits::Inch : DisplayUnits::Mm;
 }
 
 }  // namespace klueng::core::machine

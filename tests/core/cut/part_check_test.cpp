@@ -1,5 +1,6 @@
 // Part check (issue 10, item 2): the described part (the ideal tool: nose
 // circle and front edges) against the real cut, on a pawn's neck.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -97,6 +98,15 @@ TEST(PartCheck, An80DegreeInsertGougesThePawnsNeckByItsTrailingEdge) {
   EXPECT_EQ(ds[0].range.line, 14);
   EXPECT_NE(formatMessage(ds[0], Lang::En).find("Gouge 0.53"), std::string::npos) << formatMessage(ds[0], Lang::En);
   EXPECT_NE(formatMessage(ds[0], Lang::Th).find("ลึก 0.53"), std::string::npos);
+  EXPECT_NE(formatMessage(ds[0], Lang::En).find(fmt::format("Gouge {:.3f} mm deep", g.depth)), std::string::npos);
+  // Issue 28 item 4: the same finding in inches, its unit named in each language.
+  const std::vector<Diagnostic> in = partCheckDiagnostics(check, UnitFormat(DisplayUnits::Inch));
+  ASSERT_EQ(in.size(), 1u);
+  EXPECT_EQ(in[0].range.line, 14);
+  const std::string en = formatMessage(in[0], Lang::En);
+  EXPECT_NE(en.find(fmt::format("Gouge {:.4f} in deep", g.depth / 25.4)), std::string::npos) << en;
+  EXPECT_NE(en.find(fmt::format("(deepest at Z{:.4f}, Ø{:.4f})", g.z / 25.4, g.diameter / 25.4)), std::string::npos) << en;
+  EXPECT_NE(formatMessage(in[0], Lang::Th).find(fmt::format("ลึก {:.4f} นิ้ว", g.depth / 25.4)), std::string::npos);
 }
 
 TEST(PartCheck, A35DegreeInsertFollowsTheSameNeck) {

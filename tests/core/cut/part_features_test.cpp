@@ -278,5 +278,33 @@ TEST(PartFeatures, DescriptionsInBothLanguages) {
   EXPECT_EQ(featureKindName(FeatureKind::Thread, Lang::Th), "เกลียว");
 }
 
+// Issue 28 item 4: the same features said in inches (the part stays in mm).
+TEST(PartFeatures, InchTextsHaveTheInchMarkAndAControlsDecimals) {
+  const PartFeatures p = partFeatures(carved(handProfile));
+  const UnitFormat in(DisplayUnits::Inch);
+  EXPECT_EQ(describeFeature(p.outside[2], Lang::En, in), "Cylinder Ø1.1811″, Z-0.0787 to Z-0.5906, length 0.5118″");
+  EXPECT_EQ(describeFeature(p.outside[2], Lang::Th, in), "ทรงกระบอก Ø1.1811″ Z-0.0787 ถึง Z-0.5906 ยาว 0.5118″");
+  EXPECT_EQ(featureLabel(p.outside[2], Lang::En, in), "Ø1.181″");
+  const PartFeature* chamfer = find(p.outside, FeatureKind::Chamfer, -1.0);
+  ASSERT_NE(chamfer, nullptr);
+  EXPECT_EQ(featureLabel(*chamfer, Lang::En, in), "0.079″ × 45°");  // C2 = 0.0787″
+  const PartFeature* groove = find(p.outside, FeatureKind::Groove, -16.5);
+  ASSERT_NE(groove, nullptr);
+  EXPECT_EQ(featureLabel(*groove, Lang::Th, in), "ร่อง 0.118″ × Ø0.945″");
+  // The default is the millimetre text, unchanged.
+  EXPECT_EQ(featureLabel(p.outside[2], Lang::En, UnitFormat{}), "Ø30");
+}
+
+TEST(PartFeatures, AnInchThreadIsNamedByItsThreadsPerInch) {
+  PartFeature t;
+  t.kind = FeatureKind::Thread;
+  t.diameter = 0.75 * kMmPerInch;
+  t.pitch = kMmPerInch / 16.0;
+  t.minorDiameter = 0.6688 * kMmPerInch;
+  EXPECT_EQ(featureLabel(t, Lang::En, UnitFormat(DisplayUnits::Inch)), "0.750″-16 TPI");
+  t.pitch = 1.5;  // a metric pitch on an inch drawing: no whole number of threads per inch
+  EXPECT_EQ(featureLabel(t, Lang::En, UnitFormat(DisplayUnits::Inch)), "Ø0.750″ × P0.059″");
+}
+
 }  // namespace
 }  // namespace klueng::core::cut

@@ -28,6 +28,7 @@
 #include "klueng/core/diagnostic.h"
 #include "klueng/core/gcode/program.h"
 #include "klueng/core/machine/interpreter.h"
+#include "klueng/core/units.h"
 
 namespace klueng::core::cut {
 
@@ -75,8 +76,9 @@ PartCheck checkPart(const machine::Timeline& run, const machine::Timeline& progr
                     const ToolLibrary& tools, const PartCheckOptions& options = {});
 
 // W320 per gouge and W321 per leftover at their block's line; I322 when the run
-// stopped on an alarm, I323 when nothing was cut.
-std::vector<Diagnostic> partCheckDiagnostics(const PartCheck& check);
+// stopped on an alarm, I323 when nothing was cut. Depths, Z and Ø in `units`
+// (a G20 program's check speaks inches: issue 28 item 4).
+std::vector<Diagnostic> partCheckDiagnostics(const PartCheck& check, const UnitFormat& units = UnitFormat{});
 
 // The tool the described part is cut with (see above): the nose circle, a body
 // of the nose's width behind it (away from the part: a real insert removes all

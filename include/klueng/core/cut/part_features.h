@@ -14,6 +14,7 @@
 #include "klueng/core/cut/stock.h"
 #include "klueng/core/geometry.h"
 #include "klueng/core/messages.h"
+#include "klueng/core/units.h"
 
 namespace klueng::core::cut {
 
@@ -74,9 +75,13 @@ PartFeatures partFeatures(const Stock& stock);
 // "cylinder", "ทรงกระบอก", ...
 std::string featureKindName(FeatureKind kind, Lang lang);
 // A draughtsman's label of the feature: "Ø30", "C3", "R2", "M30×1.5",
-// "15°", "groove 3 × Ø26" (Thai in Thai).
+// "15°", "groove 3 × Ø26" (Thai in Thai). In inches (issue 28 item 4):
+// "Ø1.750″", "0.050″ × 45°", "R0.125″", "0.750″-16 TPI".
 std::string featureLabel(const PartFeature& f, Lang lang);
-// One line with the place: "Cylinder Ø30.00, Z-3.00 to Z-20.00, length 17.00".
+std::string featureLabel(const PartFeature& f, Lang lang, const UnitFormat& units);
+// One line with the place: "Cylinder Ø30, Z-3 to Z-20, length 17";
+// in inches "Cylinder Ø1.7500″, Z-0.1000 to Z-1.0000, length 0.9000″".
 std::string describeFeature(const PartFeature& f, Lang lang);
+std::string describeFeature(const PartFeature& f, Lang lang, const UnitFormat& units);
 
 }  // namespace klueng::core::cut

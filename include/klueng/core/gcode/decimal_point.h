@@ -44,6 +44,10 @@ struct PointEvidence {
 // increments, "1250 in" whole (for notes and warnings).
 std::string clueLengthText(const PointClue& clue, bool increments);
 
+// The units in force after the program's last G20/G21 in file order (the
+// program itself, file 0), `powerOnUnits` when it has none.
+InputUnits programInputUnits(const Program& program, InputUnits powerOnUnits);
+
 // Reads the program in file order, G20/G21 from `powerOnUnits` on.
 PointEvidence weighDecimalPoints(const Program& program, InputUnits powerOnUnits);
 

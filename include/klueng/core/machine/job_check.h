@@ -13,6 +13,7 @@
 #include "klueng/core/io/tool_library.h"
 #include "klueng/core/machine/stock_inference.h"
 #include "klueng/core/machine/tool_inference.h"
+#include "klueng/core/units.h"
 
 namespace klueng::core::machine {
 
@@ -21,6 +22,7 @@ struct JobCheck {
   ToolInference inference;              // the job's tools (setup amended by library choices)
   std::optional<gcode::Dialect> fit;    // another dialect that accepts the whole program
   int fitBlocks = 0;
+  DisplayUnits units = DisplayUnits::Mm;  // the program's: its last G20/G21, else the power-on units
 };
 
 // options.toolsWithBitmap, when set, is replaced by the stations that have a
