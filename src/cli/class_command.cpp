@@ -128,12 +128,12 @@ int runClass(const std::vector<std::string>& args) {
     std::fputs(cliText(codes::kCliClassUsage, langOfArgs(args)).c_str(), stdout);
     return 0;
   }
-  const std::optional<ClassOptions> parsed = parse(args);
+  std::optional<ClassOptions> parsed = parse(args);
   if (!parsed) {
     std::fputs(cliText(codes::kCliClassUsage, langOfArgs(args)).c_str(), stderr);
     return 2;
   }
-  const ClassOptions& o = *parsed;
+  ClassOptions& o = *parsed;
   LoadedConfig config = loadConfig(o.configDir);
   if (!chooseMachine(o.machine, config, o.dialect, o.lang)) return 2;
   for (const auto& fd : config.diagnostics) printDiagnostic(stderr, fd.file, fd.diagnostic, o.lang);

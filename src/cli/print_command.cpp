@@ -111,12 +111,12 @@ int runPrint(const std::vector<std::string>& args) {
     std::fputs(cliText(codes::kCliPrintUsage, langOfArgs(args)).c_str(), stdout);
     return 0;
   }
-  const std::optional<PrintOptions> parsed = parse(args);
+  std::optional<PrintOptions> parsed = parse(args);
   if (!parsed) {
     std::fputs(cliText(codes::kCliPrintUsage, langOfArgs(args)).c_str(), stderr);
     return 2;
   }
-  const PrintOptions& o = *parsed;
+  PrintOptions& o = *parsed;
   LoadedConfig config = loadConfig(o.configDir);
   if (!chooseMachine(o.machine, config, o.dialect, o.lang)) return 2;
   for (const auto& fd : config.diagnostics) printDiagnostic(stderr, fd.file, fd.diagnostic, o.lang);

@@ -201,9 +201,9 @@ int runSimulate(const std::vector<std::string>& args) {
     std::fputs(cliText(codes::kCliSimulateUsage, langOfArgs(args)).c_str(), stdout);
     return 0;
   }
-  const std::optional<SimulateOptions> parsed = parseOptions(args);
+  std::optional<SimulateOptions> parsed = parseOptions(args);
   if (!parsed) return 2;
-  const SimulateOptions& o = *parsed;
+  SimulateOptions& o = *parsed;
 
   // The machine files first: the checker needs to know which tools have a bitmap.
   LoadedConfig config = loadConfig(o.configDir);
