@@ -36,6 +36,7 @@ struct CheckOptions {
   std::vector<std::string> files;
   Lang lang = Lang::En;
   gcode::Dialect dialect = gcode::Dialect::Fanuc;
+  std::string machine;  // --machine NAME|FILE, resolved once the machines folders are read
   bool json = false;
   bool summary = false;
   std::string configDir;
@@ -96,7 +97,7 @@ std::optional<int> parseArgs(const std::vector<std::string>& args, CheckOptions&
       arg.resize(eq);
       hasValue = true;
     }
-    if (arg != "--lang" && arg != "--dialect" && arg != "--config" && arg != "--stock" && arg != "--units" &&
+    if (arg != "--lang" && arg != "--dialect" && arg != "--machine" && arg != "--config" && arg != "--stock" && arg != "--units" &&
         arg != "--tool" && arg != "--decimal-point")
       return usageError(lang, codes::kCliUnknownOption, {arg});
     if (!hasValue) {
@@ -111,6 +112,8 @@ std::optional<int> parseArgs(const std::vector<std::string>& args, CheckOptions&
       const auto dialect = parseDialect(value);
       if (!dialect) return mustBe(lang, arg, codes::kCliAllowedDialect, value);
       o.dialect = *dialect;
+    } else if (arg == "--machine") {
+      o.machine = value;
     } else if (arg == "--stock") {
       o.stock = parseStock(value);
       if (!o.stock) return mustBe(lang, arg, codes::kCliAllowedStock, value);
@@ -180,7 +183,8 @@ int runCheck(const std::vector<std::string>& args) {
   CheckOptions o;
   if (const auto exit = parseArgs(args, o)) return *exit;
 
-  const LoadedConfig config = loadConfig(o.configDir);
+  LoadedConfig config = loadConfig(o.configDir);
+  if (!chooseMachine(o.machine, config, o.dialect, o.lang)) return 2;
   std::string error;
   std::optional<machine::JobFileRequest> request =
       jobRequest(config, o.dialect, o.powerOnUnits, o.stock, o.tools, error, o.lang);

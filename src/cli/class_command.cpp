@@ -40,6 +40,7 @@ struct ClassOptions {
   bool sheets = false;
   double tolerance = 0.05;
   gcode::Dialect dialect = gcode::Dialect::Fanuc;
+  std::string machine;  // --machine NAME|FILE
   Lang lang = langFromLocale();
 };
 
@@ -55,8 +56,9 @@ std::optional<ClassOptions> parse(const std::vector<std::string>& args) {
   };
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    const bool takesValue = a == "--reference" || a == "--drawing" || a == "--layer" || a == "--general-tolerance" || a == "--csv" || a == "--pdf" || a == "--config" ||
-                            a == "--tolerance" || a == "--dialect" || a == "--lang";
+    const bool takesValue = a == "--reference" || a == "--drawing" || a == "--layer" || a == "--general-tolerance" ||
+                            a == "--csv" || a == "--pdf" || a == "--config" || a == "--tolerance" ||
+                            a == "--dialect" || a == "--machine" || a == "--lang";
     if (takesValue && i + 1 >= args.size()) {
       printCliError("class", codes::kCliNeedsValue, lang, {a});
       return std::nullopt;
@@ -72,6 +74,7 @@ std::optional<ClassOptions> parse(const std::vector<std::string>& args) {
     else if (a == "--pdf") o.pdf = args[++i];
     else if (a == "--sheets") o.sheets = true;
     else if (a == "--config") o.configDir = args[++i];
+    else if (a == "--machine") o.machine = args[++i];
     else if (a == "--tolerance") {
       const std::string& v = args[++i];
       char* end = nullptr;
@@ -148,13 +151,14 @@ int runClass(const std::vector<std::string>& args) {
     std::fputs(cliText(codes::kCliClassUsage, langOfArgs(args)).c_str(), stdout);
     return 0;
   }
-  const std::optional<ClassOptions> parsed = parse(args);
+  std::optional<ClassOptions> parsed = parse(args);
   if (!parsed) {
     std::fputs(cliText(codes::kCliClassUsage, langOfArgs(args)).c_str(), stderr);
     return 2;
   }
-  const ClassOptions& o = *parsed;
-  const LoadedConfig config = loadConfig(o.configDir);
+  ClassOptions& o = *parsed;
+  LoadedConfig config = loadConfig(o.configDir);
+  if (!chooseMachine(o.machine, config, o.dialect, o.lang)) return 2;
   for (const auto& fd : config.diagnostics) printDiagnostic(stderr, fd.file, fd.diagnostic, o.lang);
   if (config.unreadable || config.hasErrors()) return 2;
   std::string error;

@@ -11,6 +11,7 @@
 #include <filesystem>
 
 #include "klueng/core/gcode/dialect_fit.h"
+#include "klueng/core/machine/machine_files.h"
 #include "klueng/core/gcode/machine_profile.h"
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/diagnostic_codes.h"
@@ -63,6 +64,18 @@ std::optional<gcode::Dialect> parseDialect(std::string_view text) {
   gcode::Dialect d{};
   if (gcode::parseDialectId(text, d)) return d;
   return std::nullopt;
+}
+
+bool chooseMachine(const std::string& machine, machine::LoadedSetup& config, gcode::Dialect& dialect, Lang lang) {
+  if (!machine.empty()) {
+    std::vector<FileDiagnostic> why;
+    const auto chosen = machine::resolveMachine(machine, why);
+    for (const FileDiagnostic& d : why) printDiagnostic(stderr, d.file, d.diagnostic, lang);
+    if (!chosen) return false;
+    dialect = *chosen;
+  }
+  config.setup.machine = machine::withMachineKeys(config.setup.machine, gcode::machineProfile(dialect));
+  return true;
 }
 
 namespace {

@@ -35,6 +35,12 @@ std::string cliText(const char* code, core::Lang lang, std::vector<std::string> 
 void printCliError(const char* command, const char* code, core::Lang lang, std::vector<std::string> args = {});
 std::optional<core::Lang> parseLang(std::string_view text);                  // "en" | "th"
 std::optional<core::gcode::Dialect> parseDialect(std::string_view text);     // "fanuc" | "classic"
+// --machine NAME|FILE (issue 27), once the setup (and with it the machines
+// folders) is read: the machine into `dialect` and its machine.cfg keys into the
+// setup. Empty `machine`: the dialect stays, only its keys apply. false after
+// printing the located reasons (the caller exits 2).
+bool chooseMachine(const std::string& machine, core::machine::LoadedSetup& config, core::gcode::Dialect& dialect,
+                   core::Lang lang);
 
 // --stock DxL[xBORE][in]: "50x100", "2.1x4in", "118x80x90" (Ø118 tube, 80 long,
 // Ø90 bore). 0 < D, L <= 9999.999 (what a header line and Job details hold: a

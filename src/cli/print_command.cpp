@@ -33,6 +33,7 @@ struct PrintOptions {
   bool drawing = true;
   Lang lang = Lang::En;
   gcode::Dialect dialect = gcode::Dialect::Fanuc;
+  std::string machine;  // --machine NAME|FILE
   std::optional<io::JobHeader> stock;
   std::optional<gcode::InputUnits> powerOnUnits;
   std::optional<bool> calculatorInput;
@@ -77,6 +78,8 @@ std::optional<PrintOptions> parse(const std::vector<std::string>& args) {
       const auto dialect = parseDialect(v);
       if (!dialect) return bad(a, v, codes::kCliAllowedDialect);
       o.dialect = *dialect;
+    } else if (a == "--machine") {
+      o.machine = v;
     } else if (a == "--stock") {
       o.stock = parseStock(v);
       if (!o.stock) return bad(a, v, codes::kCliAllowedStock);
@@ -109,13 +112,14 @@ int runPrint(const std::vector<std::string>& args) {
     std::fputs(cliText(codes::kCliPrintUsage, langOfArgs(args)).c_str(), stdout);
     return 0;
   }
-  const std::optional<PrintOptions> parsed = parse(args);
+  std::optional<PrintOptions> parsed = parse(args);
   if (!parsed) {
     std::fputs(cliText(codes::kCliPrintUsage, langOfArgs(args)).c_str(), stderr);
     return 2;
   }
-  const PrintOptions& o = *parsed;
-  const LoadedConfig config = loadConfig(o.configDir);
+  PrintOptions& o = *parsed;
+  LoadedConfig config = loadConfig(o.configDir);
+  if (!chooseMachine(o.machine, config, o.dialect, o.lang)) return 2;
   for (const auto& fd : config.diagnostics) printDiagnostic(stderr, fd.file, fd.diagnostic, o.lang);
   if (config.unreadable || config.hasErrors()) return 2;
   std::string error;

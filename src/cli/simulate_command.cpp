@@ -55,6 +55,7 @@ struct SimulateOptions {
   std::string configDir;
   Lang lang = Lang::En;
   gcode::Dialect dialect = gcode::Dialect::Fanuc;
+  std::string machine;  // --machine NAME|FILE
   bool optionalStop = false;
   bool blockSkip = false;
   bool persistVariables = true;  // write #500-#999 back to macro_variables.cfg (config or user data folder)
@@ -91,6 +92,7 @@ const std::vector<OptionSpec>& optionSpecs() {
          if (dialect) o.dialect = *dialect;
          return dialect.has_value();
        }},
+      {"--machine", true, [](SimulateOptions& o, const std::string& v) { o.machine = v; return true; }},
       {"--optional-stop", false, [](SimulateOptions& o, const std::string&) { o.optionalStop = true; return true; }},
       {"--block-skip", false, [](SimulateOptions& o, const std::string&) { o.blockSkip = true; return true; }},
       {"--no-persist", false, [](SimulateOptions& o, const std::string&) { o.persistVariables = false; return true; }},
@@ -208,12 +210,13 @@ int runSimulate(const std::vector<std::string>& args) {
     std::fputs(cliText(codes::kCliSimulateUsage, langOfArgs(args)).c_str(), stdout);
     return 0;
   }
-  const std::optional<SimulateOptions> parsed = parseOptions(args);
+  std::optional<SimulateOptions> parsed = parseOptions(args);
   if (!parsed) return 2;
-  const SimulateOptions& o = *parsed;
+  SimulateOptions& o = *parsed;
 
   // The machine files first: the checker needs to know which tools have a bitmap.
-  const LoadedConfig config = loadConfig(o.configDir);
+  LoadedConfig config = loadConfig(o.configDir);
+  if (!chooseMachine(o.machine, config, o.dialect, o.lang)) return 2;
   for (const auto& fd : config.diagnostics) printDiagnostic(fd.file, fd.diagnostic, o.lang);
   if (config.unreadable || config.hasErrors()) return 2;  // the setup, not the program, is wrong
   std::string error;

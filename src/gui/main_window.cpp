@@ -55,6 +55,7 @@
 #include "klueng/core/gcode/machine_profile.h"
 #include "klueng/core/gcode/macro.h"
 #include "klueng/core/machine/flow_view.h"
+#include "klueng/core/machine/machine_files.h"
 #include "klueng/core/machine/setup_files.h"
 #include "klueng/core/messages.h"
 
@@ -457,6 +458,10 @@ void MainWindow::loadMachineSetup(const QString& dir) {
                        .arg(QString::fromStdString(core::formatMessage(d.diagnostic, Language::coreLang(), core::Surface::Gui)));
       return lines.join(QLatin1Char('\n'));
     }, false);
+  // The machines folders may name the remembered machine only now; its machine.cfg keys join the setup.
+  updateMachineMenu();
+  if (const core::gcode::Dialect remembered = settings_->dialect(); remembered != dialect_) setDialect(remembered);
+  setup_.machine = core::machine::withMachineKeys(setup_.machine, core::gcode::machineProfile(dialect_));
   runner_->setMachineSetup(setup_);
   if (designer_) designer_->setMachineSetup(setup_);
   toolInference_ = {};  // the next check decides the job's tools from the new tables

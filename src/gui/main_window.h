@@ -152,6 +152,9 @@ class MainWindow : public QMainWindow {
   void showDiagnostics();
 
   void loadMachineSetup(const QString& dir = {});
+  // The machines past the three shipped dialects (romi-gl240m, the user's own
+  // machines folders) in the dialect menu, named in the UI language (issue 27).
+  void updateMachineMenu();
   void applyJobDetails(const core::io::JobHeader& header);
   // Takes in what a setup dialog wrote and makes it one undoable step.
   void pushSetupChange(const QString& text, const QString& dir, const struct SetupSnapshot& before,

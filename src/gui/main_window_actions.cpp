@@ -1,6 +1,7 @@
 // The main window's commands (issue 12): the action table's actions wired to
 // their slots, the docks, retranslation, and the choices the menus make
 // (dialect, power-on units, animation speed).
+#include <QActionGroup>
 #include <QAction>
 #include <QMenu>
 #include <QStatusBar>
@@ -35,14 +36,15 @@ namespace klueng::gui {
 
 namespace {
 
-// The Dialect menu's action of a machine profile ("actionDialectHaas").
+// The Dialect menu's action of a machine ("actionDialectHaas", "actionMachine_romi-gl240m").
 QString dialectActionName(core::gcode::Dialect d) {
   switch (d) {
     case core::gcode::Dialect::Fanuc: return QStringLiteral("actionDialectFanuc");
     case core::gcode::Dialect::Haas: return QStringLiteral("actionDialectHaas");
     case core::gcode::Dialect::Classic: return QStringLiteral("actionDialectClassic");
   }
-  return QStringLiteral("actionDialectFanuc");
+  const std::string_view id = core::gcode::machineProfile(d).id;
+  return QStringLiteral("actionMachine_") + QString::fromUtf8(id.data(), static_cast<qsizetype>(id.size()));
 }
 
 // Animation speeds: machine seconds per wall second; 0 = as fast as possible.
@@ -177,8 +179,8 @@ void MainWindow::createActions() {
   // Tool setting
   on("actionToolSelect", [this] { showToolSelect(); });
   on("actionOffsetDefine", [this] { showOffsetDefine(); });
-  for (const core::gcode::MachineProfile& profile : core::gcode::machineProfiles()) {
-    const core::gcode::Dialect d = profile.dialect;
+  for (const core::gcode::Dialect d :
+       {core::gcode::Dialect::Fanuc, core::gcode::Dialect::Haas, core::gcode::Dialect::Classic}) {
     QAction* a = action(dialectActionName(d));
     a->setChecked(d == dialect_);
     connect(a, &QAction::triggered, this, [this, d] { setDialect(d); });
@@ -292,8 +294,39 @@ void MainWindow::createDocks() {
   });
 }
 
+void MainWindow::updateMachineMenu() {
+  QMenu* menu = actions_->menu(QStringLiteral("menuDialect"));
+  QAction* fanuc = action(QStringLiteral("actionDialectFanuc"));
+  if (!menu || !fanuc) return;
+  // After the shipped three, before the separator of the power-on units.
+  QAction* before = action(QStringLiteral("actionUnitsMachine"));
+  const QList<QAction*> items = menu->actions();
+  const qsizetype at = items.indexOf(before);
+  if (at > 0 && items[at - 1]->isSeparator()) before = items[at - 1];
+  const bool thai = Language::coreLang() == core::Lang::Th;
+  for (const core::gcode::MachineProfile* p : core::gcode::machineProfiles()) {
+    if (static_cast<int>(p->dialect) < 3) continue;
+    const QString name = dialectActionName(p->dialect);
+    QAction* a = action(name);
+    if (!a) {
+      a = new QAction(this);
+      a->setObjectName(name);
+      a->setCheckable(true);
+      if (fanuc->actionGroup()) fanuc->actionGroup()->addAction(a);
+      menu->insertAction(before, a);
+      actions_->add(name, a);
+      const core::gcode::Dialect d = p->dialect;
+      connect(a, &QAction::triggered, this, [this, d] { setDialect(d); });
+    }
+    const std::string_view text = thai ? p->nameTh : p->nameEn;
+    a->setText(QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size())));
+    a->setChecked(p->dialect == dialect_);
+  }
+}
+
 void MainWindow::retranslateUi() {
   actions_->retranslate();
+  updateMachineMenu();
   updateSetupUndo_();  // its tips name the step in the new language
   updateTitle();
   updateStockLabel();
@@ -312,8 +345,11 @@ void MainWindow::toggleLanguage() {
 }
 
 void MainWindow::setDialect(core::gcode::Dialect d) {
+  const bool machineKeys = !core::gcode::machineProfile(d).file.empty() || !core::gcode::machineProfile(dialect_).file.empty();
   dialect_ = d;
   settings_->setDialect(d);
+  // A machine file's machine.cfg keys (rapids, travel ...) are part of the setup: read it again with them.
+  if (machineKeys && !configDir_.isEmpty()) loadMachineSetup();
   editor_->setDialect(d);
   runner_->setDialect(d);
   action(dialectActionName(d))->setChecked(true);

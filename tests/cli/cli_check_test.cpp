@@ -770,4 +770,34 @@ TEST(CliLanguage, AWriteFailureGivesItsReasonInThai) {
                                      "left unchanged\n"));
 }
 
+// Issue 27: a machine from the --config folder's machines/ runs a system-B
+// program clean; --machine FILE with a broken file names file, line and key
+// (English and Thai) and exits 2; an unknown name lists the machines.
+TEST(CliMachines, ConfigFolderMachineAndBrokenMachineFile) {
+  TempDir dir;
+  const std::string config = dir.config({});
+  dir.write("config/machines/school.machine",
+            "base = fanuc\nid = school\nname_en = School lathe\nname_th = \xE0\xB9\x82\xE0\xB8\xA3\xE0\xB8\x87\xE0\xB9\x80\xE0\xB8\xA3\xE0\xB8\xB5\xE0\xB8\xA2\xE0\xB8\x99\ngcode_system = B\n");
+  const std::string program = dir.write("b.nc",
+                                        "O0001;\nG90 G95 G21;\nG92 S3000;\nT0101;\nG97 S800 M03;\nG00 X24. Z5.;\n"
+                                        "G78 X19.4 Z-13. F1.5;\nX18.9;\nG00 X100. Z100.;\nM30;\n");
+  const CliRun ok = runCliWithErrors("check --config " + quote(config) + " --machine school " + quote(program));
+  EXPECT_EQ(ok.exitCode, 0) << ok.out;
+  EXPECT_THAT(ok.out, Not(HasSubstr("error")));
+  const CliRun asA = runCliWithErrors("check --config " + quote(config) + " " + quote(program));
+  EXPECT_EQ(asA.exitCode, 1);
+  EXPECT_THAT(asA.out, HasSubstr(":2:5: error E114: G95 is not a G code of this lathe"));
+
+  const std::string bad = dir.write("bad.machine", "base = fanuc\nid = bad\n\nfamily = fanuk\n");
+  const CliRun broken = runCliWithErrors("check --machine " + quote(bad) + " " + quote(program));
+  EXPECT_EQ(broken.exitCode, 2);
+  EXPECT_THAT(broken.out, HasSubstr(bad + ":4:10: error F200: " + bad + ": family = 'fanuk': must be one of: fanuc haas classic"));
+  const CliRun thai = runCliWithErrors("check --lang th --machine " + quote(bad) + " " + quote(program));
+  EXPECT_EQ(thai.exitCode, 2);
+  EXPECT_THAT(thai.out, HasSubstr(":4:10: ข้อผิดพลาด F200: " + bad + ": family = 'fanuk': ต้องเป็นค่าใดค่าหนึ่งต่อไปนี้: fanuc haas classic"));
+  const CliRun unknown = runCliWithErrors("simulate --machine no-such-lathe " + quote(program));
+  EXPECT_EQ(unknown.exitCode, 2);
+  EXPECT_THAT(unknown.out, HasSubstr("no-such-lathe: error F203: no-such-lathe: no such machine or machine file; the machines are: fanuc, haas, classic, romi-gl240m"));
+}
+
 }  // namespace

@@ -68,6 +68,12 @@ inline constexpr const char* kTravelLimitsReversed = "F146";
 inline constexpr const char* kParameterNotWhole = "F147";
 inline constexpr const char* kParameterOutOfRange = "F148";
 inline constexpr const char* kStartOutsideTravel = "F149";
+// Machine files (gcode/machine_file.h, machine/machine_files.h; texts in messages_io.cpp).
+inline constexpr const char* kMachineValueBad = "F200";     // {0} file, {1} key, {2} value, {3} what it must be (en), {4} (th)
+inline constexpr const char* kMachineKeyMissing = "F201";   // {0} file, {1} key
+inline constexpr const char* kMachineUnknownBase = "F202";  // {0} file, {1} base, {2} the machines
+inline constexpr const char* kUnknownMachine = "F203";      // {0} name or file, {1} the machines
+inline constexpr const char* kNotAMachineFile = "F204";     // {0} file
 inline constexpr const char* kNotAnImage = "F150";
 inline constexpr const char* kImageTruncated = "F151";
 inline constexpr const char* kImageSizeRefused = "F152";

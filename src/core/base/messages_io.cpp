@@ -183,6 +183,16 @@ constexpr MessageText kMessages[] = {
     {codes::kVariableNotKept, "{0}: #{1} is not kept between runs; only #500 to #999 are",
      "{0}: #{1} ไม่ถูกเก็บไว้ระหว่างการทำงานแต่ละครั้ง เก็บได้เฉพาะ #500 ถึง #999"},
 
+    // Machine files (resources/machines/*.machine, docs/dialects.md "Machine files").
+    {codes::kMachineValueBad, "{0}: {1} = '{2}': must be {3}", "{0}: {1} = '{2}': ต้องเป็น{4}"},
+    {codes::kMachineKeyMissing, "{0}: '{1}' is missing; write it, or start the file with base = fanuc (or another machine) and write only what differs",
+     "{0}: ไม่มี '{1}' ให้เขียนเพิ่ม หรือขึ้นต้นไฟล์ด้วย base = fanuc (หรือเครื่องอื่น) แล้วเขียนเฉพาะค่าที่ต่างกัน"},
+    {codes::kMachineUnknownBase, "{0}: base '{1}' is no machine; the machines are: {2}",
+     "{0}: base '{1}' ไม่ใช่เครื่องที่มีอยู่ เครื่องที่มี: {2}"},
+    {codes::kUnknownMachine, "{0}: no such machine or machine file; the machines are: {1}",
+     "{0}: ไม่มีเครื่องหรือไฟล์เครื่องนี้ เครื่องที่มี: {1}"},
+    {codes::kNotAMachineFile, "{0}: a machine file's name ends in .machine", "{0}: ชื่อไฟล์เครื่องต้องลงท้ายด้วย .machine"},
+
     // Tools chosen from the program (core/machine/tool_inference.h): notes, never errors.
     // {0} station (2 digits), {1} library id, {2} what was seen, {3} file line.
     {codes::kToolFromComment, "T{0} = {1} (comment \"{2}\" on line {3})", "T{0} = {1} (หมายเหตุ \"{2}\" ในบรรทัดที่ {3})"},

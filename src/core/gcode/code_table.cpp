@@ -1,8 +1,12 @@
 // The code table (SPEC 4, 6, 7, 13): one row per G/M code and dialect meaning.
 #include "klueng/core/gcode/code_table.h"
 
+#include <algorithm>
+
 #include <array>
 #include <cstdint>
+
+#include "code_index.h"
 
 namespace klueng::core::gcode {
 
@@ -348,27 +352,94 @@ constexpr auto withActions() {
 }
 constexpr auto kTable = withActions();
 
-// Direct index [dialect][G/M][number] -> row, built once.
-struct Index {
-  static constexpr std::size_t kDialects = 3;
-  std::array<std::array<std::array<const CodeInfo*, 100>, 2>, kDialects> rows{};
-  Index() {
-    for (const CodeInfo& row : kTable) {
-      const int kind = row.letter == 'G' ? 0 : 1;
-      for (std::size_t d = 0; d < kDialects; ++d)
-        if (row.dialects & (1u << d)) rows[d][kind][row.number] = &row;
-    }
-  }
+// G-code systems B and C (docs/dialects.md, "G-code systems"): the same
+// functions under other numbers. FANUC Series 0i-TF Operator's Manual
+// B-64604EN, Part II "Programming", G code list (table of systems A, B, C).
+constexpr SystemRename kRenames[] = {
+    // System B: G90/G91 are absolute/incremental, the feed modes G94/G95, G92 the
+    // coordinate setting and speed clamp, G33 threading, G77-G79 the single cycles.
+    {GcodeSystem::B, 33, 32}, {GcodeSystem::B, 92, 50}, {GcodeSystem::B, 77, 90}, {GcodeSystem::B, 78, 92},
+    {GcodeSystem::B, 79, 94}, {GcodeSystem::B, 94, 98}, {GcodeSystem::B, 95, 99},
+    {GcodeSystem::B, 90, -1}, {GcodeSystem::B, 91, -1},
+    // System C: as B, and the units become G70/G71, so G70-G76 move up by two and
+    // the single cycles become G20, G21, G24.
+    {GcodeSystem::C, 70, 20}, {GcodeSystem::C, 71, 21}, {GcodeSystem::C, 72, 70}, {GcodeSystem::C, 73, 71},
+    {GcodeSystem::C, 74, 72}, {GcodeSystem::C, 75, 73}, {GcodeSystem::C, 76, 74}, {GcodeSystem::C, 77, 75},
+    {GcodeSystem::C, 78, 76}, {GcodeSystem::C, 33, 32}, {GcodeSystem::C, 92, 50}, {GcodeSystem::C, 20, 90},
+    {GcodeSystem::C, 21, 92}, {GcodeSystem::C, 24, 94}, {GcodeSystem::C, 94, 98}, {GcodeSystem::C, 95, 99},
+    {GcodeSystem::C, 90, -1}, {GcodeSystem::C, 91, -1},
 };
 
-const Index& index() {
-  static const Index instance;
-  return instance;
+// Rows system A has not (the family mask says which controls have them).
+constexpr CodeInfo kSystemOnly[] = {
+    {'G', 90, G::Distance, P::State, kF, false, "Absolute programming", "กำหนดตำแหน่งแบบสัมบูรณ์",
+     "G90 - X and Z are positions from the work zero (U and W stay distances)",
+     "G90 - ค่า X และ Z เป็นตำแหน่งวัดจากศูนย์งาน (U และ W ยังเป็นระยะสัมพัทธ์)", {}, CodeAction::Absolute},
+    {'G', 91, G::Distance, P::State, kF, false, "Incremental programming", "กำหนดตำแหน่งแบบสัมพัทธ์",
+     "G91 - X and Z are distances from where the tool is (X on the diameter)",
+     "G91 - ค่า X และ Z เป็นระยะจากตำแหน่งปัจจุบันของมีด (X เป็นค่าเส้นผ่านศูนย์กลาง)", {}, CodeAction::Incremental},
+};
+
+const CodeInfo* baseRow(char letter, int number, Dialect family) {
+  for (const CodeInfo& row : kTable)
+    if (row.letter == letter && row.number == number && (row.dialects & dialectBit(family))) return &row;
+  return nullptr;
 }
 
 }  // namespace
 
+namespace detail {
+
+void buildCodeIndex(const MachineProfile& profile, CodeIndex& out) {
+  out = CodeIndex{};
+  const std::uint8_t bit = dialectBit(profile.family);
+  for (const CodeInfo& row : kTable) {
+    if (!(row.dialects & bit)) continue;
+    if (row.letter == 'M' && !profile.mCodes.empty() &&
+        std::find(profile.mCodes.begin(), profile.mCodes.end(), row.number) == profile.mCodes.end())
+      continue;
+    out.rows[row.letter == 'G' ? 0 : 1][static_cast<std::size_t>(row.number)] = &row;
+  }
+  if (profile.system == GcodeSystem::A) return;
+  auto& g = out.rows[0];
+  // A number renamed away leaves its old place, unless the system gives the place a code.
+  for (const SystemRename& r : kRenames)
+    if (r.system == profile.system && r.numberInA >= 0) g[static_cast<std::size_t>(r.numberInA)] = nullptr;
+  for (const SystemRename& r : kRenames) {
+    if (r.system != profile.system) continue;
+    const CodeInfo* from = nullptr;
+    if (r.numberInA >= 0) {
+      from = baseRow('G', r.numberInA, profile.family);
+    } else {
+      for (const CodeInfo& row : kSystemOnly)
+        if (row.number == r.number && (row.dialects & bit)) from = &row;
+    }
+    if (!from) continue;
+    CodeInfo& copy = out.renamed.emplace_back(*from);
+    copy.number = r.number;
+    g[static_cast<std::size_t>(r.number)] = &copy;
+  }
+}
+
+}  // namespace detail
+
 std::span<const CodeInfo> codeTable() { return kTable; }
+std::span<const SystemRename> gcodeSystemRenames() { return kRenames; }
+std::span<const CodeInfo> systemOnlyRows() { return kSystemOnly; }
+
+bool CodeInfo::in(Dialect d) const { return (dialects & dialectBit(machineProfile(d).family)) != 0; }
+
+int numberInSystem(char letter, int numberInA, Dialect dialect) {
+  const MachineProfile& p = machineProfile(dialect);
+  if (letter != 'G' || p.system == GcodeSystem::A) return numberInA;
+  bool movedAway = false;
+  for (const SystemRename& r : kRenames) {
+    if (r.system != p.system) continue;
+    if (r.numberInA == numberInA) return r.number;
+    if (r.number == numberInA) movedAway = true;  // the number means another code there
+  }
+  return movedAway ? -1 : numberInA;
+}
 
 char wordKind(const CodeInfo& row, char letter) {
   for (std::size_t i = 0; i + 1 < row.words.size(); i += 2)
@@ -378,7 +449,7 @@ char wordKind(const CodeInfo& row, char letter) {
 
 const CodeInfo* findCode(char letter, int number, Dialect dialect) {
   if ((letter != 'G' && letter != 'M') || number < 0 || number > 99) return nullptr;
-  return index().rows[static_cast<std::size_t>(dialect)][letter == 'G' ? 0 : 1][number];
+  return detail::codeIndexOf(dialect).rows[letter == 'G' ? 0 : 1][static_cast<std::size_t>(number)];
 }
 
 std::optional<CodeInfo> lookupCode(char letter, int number, Dialect dialect) {
@@ -397,6 +468,7 @@ std::string_view modalGroupNumber(ModalGroup group) {
     case ModalGroup::NoseComp: return "07";
     case ModalGroup::CannedCycle: return "10";
     case ModalGroup::MacroModal: return "12";
+    case ModalGroup::Distance: return "03";
     case ModalGroup::WorkOffset: return "14";
     case ModalGroup::Plane: return "16";
     case ModalGroup::MSpindle: return "M03/M04/M05";

@@ -25,7 +25,8 @@ std::optional<DialectFit> suggestDialect(const Program& program, const CheckOpti
   // Lexical errors are the same in every dialect: no profile can fix them.
   if (hasErrors(program.lexicalDiagnostics)) return std::nullopt;
   const std::set<int> current = linesWithErrors(diagnostics);
-  for (const MachineProfile& profile : machineProfiles()) {
+  for (const MachineProfile* machine : machineProfiles()) {
+    const MachineProfile& profile = *machine;
     if (profile.dialect == options.dialect) continue;
     CheckOptions other = options;
     other.dialect = profile.dialect;

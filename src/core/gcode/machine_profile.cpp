@@ -1,171 +1,141 @@
-// The machine profile table (SPEC 13): one row per dialect. Sources of the
-// Fanuc and Haas values are in docs/dialects.md.
-#include "klueng/core/gcode/machine_profile.h"
-
+// The registry of machines (SPEC 13, issue 27): every profile comes from a
+// machine file. The shipped files are built into the program
+// (shipped_machines.cpp is generated from resources/machines/*.machine) and
+// read on first use; user files are added with registerMachine.
+#include <algorithm>
 #include <array>
+#include <atomic>
+#include <memory>
+#include <mutex>
+
+#include "code_index.h"
+#include "klueng/core/gcode/machine_file.h"
 
 namespace klueng::core::gcode {
 
 namespace {
 
-constexpr std::array<int, 0> kNoOneShots{};
-constexpr std::array<int, 3> kG28G30G53{28, 30, 53};
-
-// Haas NGC lathe settings at their factory values (Haas lathe operator's
-// manual, Settings: 22 Can Cycle Delta Z .050 in, 72 Canned Cycle Cut Depth
-// .100 in, 73 Canned Cycle Retraction .050 in, 86 Thread Finish Allowance 0,
-// 95 Thread Chamfer Size 1 thread, 99 Thread Minimum Cut .001 in); the mm
-// values are the same lengths as the control shows them in metric.
-constexpr CycleSettings kHaasCycles{
-    .roughDepthInch = 0.1, .roughDepthMm = 2.54,
-    .roughRetractInch = 0.05, .roughRetractMm = 1.27,
-    .peckClearInch = 0.05, .peckClearMm = 1.27,
-    .threadMinCutInch = 0.001, .threadMinCutMm = 0.0254,
-    .threadFinishInch = 0.0, .threadFinishMm = 0.0,
-    .threadChamferLeads = 1.0,
-    .drillR = DrillR::Plane,
-    .profileTailBeyondStart = true,
-    .profileFirstBlockNeedsG00G01 = false,
-};
-// Fanuc 0i-TF: the two-block cycles carry their own values; only the G83
-// clearance d (parameter 5115, set by the machine builder) is used: 1 mm / .04 in.
-constexpr CycleSettings kFanucCycles{
-    .roughDepthInch = 0.1, .roughDepthMm = 2.54,
-    .roughRetractInch = 0.05, .roughRetractMm = 1.27,
-    .peckClearInch = 0.04, .peckClearMm = 1.0,
-    .threadMinCutInch = 0.001, .threadMinCutMm = 0.0254,
-    .threadFinishInch = 0.0, .threadFinishMm = 0.0,
-    .threadChamferLeads = 0.0,
-    .drillR = DrillR::FromInitialLevel,
-    .profileTailBeyondStart = false,
-    .profileFirstBlockNeedsG00G01 = true,
+struct Entry {
+  MachineDefinition def;
+  detail::CodeIndex codes;
 };
 
-constexpr MachineProfile kProfiles[] = {
-    {
-        .dialect = Dialect::Fanuc,
-        .id = "fanuc",
-        .nameEn = "Fanuc 0i-TF",
-        .nameTh = "ฟานัค 0i-TF",
-        .letters = "CFGHIKLMNOPQRSTUWXZ",
-        .programNumberMax = 99999999,
-        .colonProgramNumber = true,
-        .sequenceNumberMax = 99999,
-        .decimalsMm = 3,
-        .decimalsInch = 4,
-        .maxAbsMm = 9999.999,
-        .maxAbsInch = 999.9999,
-        .minPositiveMm = 0.001,
-        .minPositiveInch = 0.0001,
-        .extraDecimals = ExtraDecimals::RoundWithWarning,
-        .powerOnUnits = InputUnits::Millimetre,
-        .minToolDigits = 3,
-        .maxToolStation = 0,
-        .maxOffset = 64,
-        .toolZeroKeepsTurret = true,
-        .dwellP = DwellPUnit::Milliseconds,
-        .bareG28 = BareG28::NoMotion,
-        .threadUnderCssIsAlarm = false,
-        .oneShotsWithMotion = kG28G30G53,
-        .cycleForm = CycleForm::TwoBlock,
-        .unknownMIsWarning = true,
-        .highMIsWarning = true,
-        .blanksInWords = true,
-        .commentToLineEnd = true,
-        .cycles = kFanucCycles,
-        // Fanuc 0i-TF manual: subprograms nest 10 deep, macro calls 5; M98 P packs the repeats.
-        .flow = {.macroB = true, .packedRepeats = true, .maxSubprogramNesting = 10, .maxMacroNesting = 5, .programsInOneFile = true,
-                  .dwellBeforeCornerMove = false, .chamferWithIOrK = false},
-    },
-    {
-        .dialect = Dialect::Haas,
-        .id = "haas",
-        .nameEn = "Haas ST (NGC)",
-        .nameTh = "ฮาส ST (NGC)",
-        .letters = "ACDEFGHIJKLMNOPQRSTUWXZ",
-        .programNumberMax = 99999,
-        .colonProgramNumber = false,
-        .sequenceNumberMax = 99999,
-        .decimalsMm = 3,
-        .decimalsInch = 4,
-        .maxAbsMm = 9999.999,
-        .maxAbsInch = 999.9999,
-        .minPositiveMm = 0.001,
-        .minPositiveInch = 0.0001,
-        .extraDecimals = ExtraDecimals::RoundWithWarning,
-        .powerOnUnits = InputUnits::Inch,
-        .minToolDigits = 3,
-        .maxToolStation = 0,
-        .maxOffset = 64,
-        .toolZeroKeepsTurret = true,
-        .dwellP = DwellPUnit::SecondsWithPointElseMs,
-        .bareG28 = BareG28::HomeAllAxes,
-        .threadUnderCssIsAlarm = false,
-        .oneShotsWithMotion = kG28G30G53,
-        .cycleForm = CycleForm::OneBlock,
-        .unknownMIsWarning = false,
-        .highMIsWarning = true,
-        .blanksInWords = true,
-        .commentToLineEnd = true,
-        .cycles = kHaasCycles,
-        // Haas lathe manual: 5-digit O numbers, so P is the program and L the repeats.
-        .flow = {.macroB = true, .packedRepeats = false, .maxSubprogramNesting = 10, .maxMacroNesting = 5, .programsInOneFile = true,
-                  .dwellBeforeCornerMove = true, .chamferWithIOrK = true},
-    },
-    {
-        .dialect = Dialect::Classic,
-        .id = "classic",
-        .nameEn = "Rook classic (1999 rules)",
-        .nameTh = "รุก คลาสสิก (กฎปี 2542)",
-        .letters = "CFGHIKMNOPQRSTUWXZ",
-        .programNumberMax = 9999,
-        .colonProgramNumber = false,
-        .sequenceNumberMax = 9999,
-        .decimalsMm = 3,
-        .decimalsInch = 4,
-        .maxAbsMm = 9999.999,
-        .maxAbsInch = 9999.999,  // the seed keeps the mm range after G20
-        .minPositiveMm = 0.001,
-        .minPositiveInch = 0.001,
-        .extraDecimals = ExtraDecimals::Error,
-        .powerOnUnits = InputUnits::Millimetre,
-        .minToolDigits = 4,
-        .maxToolStation = 8,
-        .maxOffset = 16,
-        .toolZeroKeepsTurret = false,
-        .dwellP = DwellPUnit::Milliseconds,
-        .bareG28 = BareG28::Error,
-        .threadUnderCssIsAlarm = true,
-        .oneShotsWithMotion = kNoOneShots,
-        .cycleForm = CycleForm::TwoBlock,
-        .unknownMIsWarning = false,
-        .highMIsWarning = false,
-        .blanksInWords = false,
-        .commentToLineEnd = false,
-        .cycles = kFanucCycles,
-        // The 1999 rules: M98/M99 only, no macros.
-        .flow = {.macroB = false, .packedRepeats = true, .maxSubprogramNesting = 10, .maxMacroNesting = 0, .programsInOneFile = false,
-                  .dwellBeforeCornerMove = false, .chamferWithIOrK = false},
-    },
+constexpr std::size_t kMaxMachines = 200;
+
+struct Registry {
+  // Entries are never freed: a replaced machine's profile may still be read by a
+  // worker thread that copied the reference (a check in flight).
+  std::array<std::atomic<const Entry*>, kMaxMachines> slots{};
+  std::atomic<int> count{0};
+  std::mutex writing;
 };
+
+Registry& registryNoInit() {
+  static Registry r;
+  return r;
+}
+
+// Fixes the profile's views onto the entry's own strings.
+void bind(Entry& e) {
+  MachineProfile& p = e.def.profile;
+  p.id = e.def.id;
+  p.nameEn = e.def.nameEn;
+  p.nameTh = e.def.nameTh;
+  p.letters = e.def.letters;
+  p.file = e.def.file;
+  p.text = e.def.text;
+  p.oneShotsWithMotion = e.def.oneShots;
+  p.mCodes = e.def.mCodes;
+}
+
+Dialect add(Registry& r, MachineDefinition def) {
+  auto* entry = new Entry{std::move(def), {}};
+  bind(*entry);
+  const std::lock_guard lock(r.writing);
+  const int n = r.count.load();
+  int slot = n;
+  for (int i = 0; i < n; ++i)
+    if (r.slots[static_cast<std::size_t>(i)].load()->def.id == entry->def.id) slot = i;
+  if (slot >= static_cast<int>(kMaxMachines)) slot = n - 1;  // full: the last place is reused
+  entry->def.profile.dialect = static_cast<Dialect>(slot);
+  detail::buildCodeIndex(entry->def.profile, entry->codes);
+  r.slots[static_cast<std::size_t>(slot)].store(entry);
+  if (slot == n) r.count.store(n + 1);
+  return entry->def.profile.dialect;
+}
+
+thread_local bool loadingShipped = false;
+
+Registry& registry() {
+  static const bool shipped = [] {
+    Registry& r = registryNoInit();
+    loadingShipped = true;
+    // Families first (Dialect::Fanuc, Haas, Classic are their places); a `base =`
+    // names a machine read before it.
+    for (const ShippedMachineFile& f : shippedMachineFiles()) {
+      MachineFileRead read = parseMachineFile(f.text, std::string(f.name));
+      if (!read.machine) continue;  // tests/core/gcode/machine_file_test.cpp reads each one clean
+      read.machine->file.clear();
+      add(r, std::move(*read.machine));
+    }
+    loadingShipped = false;
+    return true;
+  }();
+  (void)shipped;
+  return registryNoInit();
+}
+
+const Entry& entryOf(Dialect dialect) {
+  Registry& r = registry();
+  const auto i = static_cast<std::size_t>(dialect);
+  const Entry* e = i < static_cast<std::size_t>(r.count.load()) ? r.slots[i].load() : nullptr;
+  return e ? *e : *r.slots[0].load();
+}
 
 }  // namespace
 
-const MachineProfile& machineProfile(Dialect dialect) {
-  for (const MachineProfile& p : kProfiles)
-    if (p.dialect == dialect) return p;
-  return kProfiles[0];
+Dialect registerMachine(MachineDefinition machine) { return add(registry(), std::move(machine)); }
+
+const MachineProfile& machineProfile(Dialect dialect) { return entryOf(dialect).def.profile; }
+
+int machineCount() { return registry().count.load(); }
+
+std::vector<const MachineProfile*> machineProfiles() {
+  Registry& r = registry();
+  std::vector<const MachineProfile*> out;
+  const int n = r.count.load();
+  for (int i = 0; i < n; ++i) out.push_back(&r.slots[static_cast<std::size_t>(i)].load()->def.profile);
+  return out;
 }
 
-std::span<const MachineProfile> machineProfiles() { return kProfiles; }
-
 bool parseDialectId(std::string_view id, Dialect& out) {
-  for (const MachineProfile& p : kProfiles)
-    if (p.id == id) {
-      out = p.dialect;
+  for (const MachineProfile* p : machineProfiles())
+    if (p->id == id) {
+      out = p->dialect;
       return true;
     }
   return false;
 }
+
+namespace detail {
+const CodeIndex& codeIndexOf(Dialect dialect) { return entryOf(dialect).codes; }
+
+const MachineProfile* loadedMachine(std::string_view id) {
+  // While the shipped files are read, a `base =` finds the ones read before it.
+  Registry& r = loadingShipped ? registryNoInit() : registry();
+  const int n = r.count.load();
+  for (int i = 0; i < n; ++i)
+    if (const Entry* e = r.slots[static_cast<std::size_t>(i)].load(); e->def.id == id) return &e->def.profile;
+  return nullptr;
+}
+
+std::string loadedMachineIds() {
+  Registry& r = loadingShipped ? registryNoInit() : registry();
+  std::string ids;
+  const int n = r.count.load();
+  for (int i = 0; i < n; ++i) ids += (ids.empty() ? "" : ", ") + r.slots[static_cast<std::size_t>(i)].load()->def.id;
+  return ids;
+}
+}  // namespace detail
 
 }  // namespace klueng::core::gcode

@@ -33,6 +33,32 @@ Interpreter::Interpreter(const gcode::Program& program, const MachineSetup& setu
   profileReader_ = [this](const gcode::Block& cycle, const Word* g, bool withFeed, cycles::Profile& out) {
     return readProfile(cycle, g, withFeed, out);
   };
+  for (int n = 0; n < 100 && !distanceModes_; ++n)
+    if (const CodeInfo* row = gcode::findCode('G', n, options.dialect)) distanceModes_ = row->group == ModalGroup::Distance;
+}
+
+// G90/G91 of G-code systems B and C (group 03): the block's own code first, then
+// under G91 its X and Z are distances, read as the U and W every other part of
+// the interpreter and the cycles already knows. G92 X Z (coordinate setting)
+// and G53 name positions in any mode.
+void Interpreter::readDistanceMode() {
+  bool positions = false;
+  for (const Word& w : block_->words) {
+    if (w.letter != 'G' || w.comma) continue;
+    const CodeInfo* row = gcode::findCode('G', w.code(), options_.dialect);
+    if (!row) continue;
+    if (row->group == ModalGroup::Distance) modal_.incremental = row->action == CodeAction::Incremental;
+    positions = positions || row->action == CodeAction::CoordinateSet || row->action == CodeAction::MachineCoordinates;
+  }
+  if (!modal_.incremental || positions || !(block_->mayHave('X') || block_->mayHave('Z'))) return;
+  incrementalBlock_ = *block_;
+  for (Word& w : incrementalBlock_.words) {
+    if (w.comma) continue;
+    if (w.letter == 'X') w.letter = 'U';
+    else if (w.letter == 'Z') w.letter = 'W';
+  }
+  incrementalBlock_.letters |= gcode::Block::letterBit('U') | gcode::Block::letterBit('W');
+  block_ = &incrementalBlock_;
 }
 
 bool Interpreter::withinTravel(const Vec2& work, const Word* where) {
@@ -82,6 +108,7 @@ bool Interpreter::executeBlock() {
   std::array<CodeWord, 16> gs{};
   std::array<CodeWord, 16> ms{};
   std::size_t gCount = 0, mCount = 0;
+  if (distanceModes_) readDistanceMode();
   byLetter_.fill(nullptr);
   movedThisBlock_ = false;
   for (const Word& w : block_->words) {
@@ -151,6 +178,7 @@ bool Interpreter::executeBlock() {
         modal_.feedMode = a == CodeAction::FeedPerMinute ? FeedMode::PerMinute : FeedMode::PerRev;
         break;
       case ModalGroup::WorkOffset: modal_.workCoordinate = c.info->number; break;  // G54..: all zero
+      case ModalGroup::Distance: break;  // readDistanceMode
       case ModalGroup::CannedCycle:
         if (a == CodeAction::CycleCancel) drillCycle_ = nullptr;  // G80: drilling cycle cancel
         else cycleG = &c;              // G70-G76, G81-G83

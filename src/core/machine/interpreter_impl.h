@@ -198,6 +198,7 @@ class Interpreter final : public gcode::MacroVariables {
   bool pathWithinTravel(const Segment& s, const Word* where);
   bool rapidTo(const Vec2& target, const Word* where);
   bool executeBlock();
+  void readDistanceMode();
   static MotionMode motionFor(gcode::CodeAction action);
   bool selectTool(const Word& t);
   bool mCode(const CodeWord& c);
@@ -288,6 +289,8 @@ class Interpreter final : public gcode::MacroVariables {
   Vec2 pos_ = Vec2::Zero();            // controlled point without compensation, work coordinates
   std::optional<double> g28X_, g28Z_;  // G28/G30 intermediate point (work coordinates)
   const gcode::Block* block_ = nullptr;
+  gcode::Block incrementalBlock_;      // a block read under G91 (systems B, C): X Z as U W
+  bool distanceModes_ = false;         // the machine's G-code system has G90/G91 absolute/incremental
   std::array<const Word*, 26> byLetter_{};
   int blockIndex_ = 0;
   int resumeAfter_ = -1;               // block index the run continues after (G71-G73 profile)

@@ -8,6 +8,7 @@
 
 #include "klueng/core/io/text_encoding.h"
 #include "klueng/core/machine/job.h"
+#include "klueng/core/machine/machine_files.h"
 #include "klueng/core/diagnostic_codes.h"
 
 namespace klueng::core::machine {
@@ -52,6 +53,9 @@ LoadedSetup loadMachineSetup(const std::string& explicitDir, bool readBitmaps) {
   auto offsets = io::readOffsetTable(offsetsPath);
   collect(offsetsPath, offsets.diagnostics);
   if (offsets.value) loaded.setup.offsets = *offsets.value;
+
+  // The machines folders (issue 27): the user's and this setup's, adding or overriding machines.
+  for (SetupDiagnostic& d : loadMachineFolders(machineFolders(loaded.dir))) loaded.diagnostics.push_back(std::move(d));
 
   // Every bitmap is decoded once here: one that does not decode is no tool,
   // for the editor, a run and the CLI alike.

@@ -24,6 +24,7 @@ enum class ModalGroup {
   WorkOffset,    // 14: G54..G59 (Fanuc)
   CannedCycle,   // 10/00: G70..G76, G80, G81..G83 drilling
   MacroModal,    // 12: G66 G67 (custom macro modal call; G65 is group 00)
+  Distance,      // 03: G90 G91 absolute / incremental (G-code systems B and C)
   // M code groups, for rule 4 and the interpreter
   MSpindle,      // M03 M04 M05
   MCoolant,      // M08 M09
@@ -63,6 +64,8 @@ enum class CodeAction : std::uint8_t {
   // one block only
   Dwell, ReferenceCheck, ReferenceReturn, ReturnFromReference, CoordinateSet, MachineCoordinates, MacroCall,
   MacroModalCall, MacroModalCancel,
+  // group 03 (G-code systems B and C): X and Z absolute or incremental (as U and W)
+  Absolute, Incremental,
   // canned cycles
   CycleCancel, Finishing, TurnRoughing, FaceRoughing, PatternRepeating, FacePecking, Grooving, ThreadCutting,
   Drilling, SpotDrilling, PeckDrilling,
@@ -73,7 +76,8 @@ enum class CodeAction : std::uint8_t {
 };
 
 struct CodeInfo {
-  bool in(Dialect d) const { return (dialects & dialectBit(d)) != 0; }
+  // The machine's control family has the row (whatever number its G-code system gives it).
+  bool in(Dialect d) const;
   char letter;            // 'G' or 'M'
   int number;             // 0..99
   ModalGroup group;
@@ -98,9 +102,24 @@ struct CodeInfo {
 // The kind of `letter` in `row`'s word list; 0 when not listed.
 char wordKind(const CodeInfo& row, char letter);
 
-// Every row of every dialect. A code whose meaning differs between the
-// dialects (M41, G98/G99 standing alone) has one row per meaning.
+// Every row of every control family, numbered as G-code system A. A code whose
+// meaning differs between the families (M41, G98/G99 standing alone) has one
+// row per meaning. Systems B and C: their renamings (gcodeSystemRenames) and
+// the rows only they have (G90/G91 absolute/incremental, systemOnlyRows).
 std::span<const CodeInfo> codeTable();
+
+// One G number of a G-code system: the system-A code it is (same row, same
+// action), or, for a code system A has not, a row of systemOnlyRows().
+struct SystemRename {
+  GcodeSystem system;
+  int number;      // in that system
+  int numberInA;   // -1: a code system A has not (systemOnlyRows, same number)
+};
+std::span<const SystemRename> gcodeSystemRenames();
+std::span<const CodeInfo> systemOnlyRows();
+// The number a code has in a machine's G-code system (G32 -> G33 in system B); the number itself when
+// unchanged, -1 when the system has no such code.
+int numberInSystem(char letter, int numberInA, Dialect dialect);
 // The row for a code in a dialect; nullopt when the dialect does not know it.
 std::optional<CodeInfo> lookupCode(char letter, int number, Dialect dialect);
 // Same, without a copy (constant time): nullptr when unknown.

@@ -1,20 +1,32 @@
 #pragma once
-// Machine profiles (SPEC 13): what differs between the dialects, as data.
-// A dialect is the code table (which G/M codes exist, with what meaning) plus
-// one row of this table (word formats, program numbers, T words, cycle forms,
-// power-on units ...). A rule that differs between dialects is one field here,
-// read by the checker, the interpreter and the cycles; they never branch on
-// the dialect itself. Sources of each Fanuc/Haas value: docs/dialects.md.
+// Machine profiles (SPEC 13, issue 27): what differs between the machines, as data.
+// A machine is a file (resources/machines/*.machine, docs/dialects.md): its
+// control family picks a column of the code table (which G/M codes exist, with
+// what meaning), its G-code system renames the G numbers (A, B, C), and its
+// other keys fill one MachineProfile (word formats, program numbers, T words,
+// cycle forms, power-on units ...). A rule that differs between machines is one
+// field here, read by the checker, the interpreter and the cycles; they never
+// branch on the machine itself. Sources of each value: the .machine files.
 #include <cstdint>
 #include <optional>
 #include <span>
 #include <string_view>
+#include <vector>
 
 namespace klueng::core::gcode {
 
+// A machine, by its place in the registry of loaded machine files. The three
+// named ones are the shipped fanuc.machine, haas.machine and classic.machine,
+// always in these places; other shipped and user machines follow (any value
+// below machineCount()). As a control family (MachineProfile::family) only the
+// three named values occur: the code table's columns.
 enum class Dialect : std::uint8_t { Fanuc, Haas, Classic };
 
-// Bit of a dialect in a code-table row's mask.
+// The G-code system of a Fanuc lathe control (parameter 3401 GSB/GSC): the
+// same functions under other G numbers (docs/dialects.md, "G-code systems").
+enum class GcodeSystem : std::uint8_t { A, B, C };
+
+// Bit of a control family in a code-table row's mask.
 constexpr std::uint8_t dialectBit(Dialect d) { return static_cast<std::uint8_t>(1u << static_cast<unsigned>(d)); }
 
 enum class InputUnits : std::uint8_t { Millimetre, Inch };
@@ -88,10 +100,14 @@ struct FlowSettings {
 };
 
 struct MachineProfile {
-  Dialect dialect;
-  std::string_view id;       // "fanuc", "haas", "classic" (CLI, settings)
+  Dialect dialect;           // its place in the registry
+  Dialect family;            // the code table's column: Fanuc, Haas or Classic
+  GcodeSystem system;        // the G numbers: system A, B or C
+  std::string_view id;       // "fanuc", "haas", "classic", "romi-gl240m" (CLI, settings, job header)
   std::string_view nameEn;   // "Fanuc 0i-TF"
   std::string_view nameTh;
+  std::string_view file;     // the file it was read from; "" for a shipped one built in
+  std::string_view text;     // the file's text (its machine.cfg keys are read by machine/machine_files.h)
   // Address letters a block may hold (SPEC 5 rule 1 and its extensions).
   std::string_view letters;
   // Program numbers: O (or ':' where colonProgramNumber) with 1..programNumberMax.
@@ -131,13 +147,17 @@ struct MachineProfile {
   bool commentToLineEnd;     // an unclosed '(' runs to the line end: W108 (true) or E105 (false)
   CycleSettings cycles;      // defaults of the cycles (one-block forms, drilling)
   FlowSettings flow;
+  // The M codes the machine accepts, from its family's rows; empty = all of them.
+  std::span<const int> mCodes;
 };
 
-// The row of a dialect.
+// The profile of a machine (the first one for a value not below machineCount()).
 const MachineProfile& machineProfile(Dialect dialect);
-// Every profile, in menu order (Fanuc, Haas, classic).
-std::span<const MachineProfile> machineProfiles();
-// "fanuc" / "haas" / "classic" -> dialect; nullopt-like false when unknown.
+// How many machines are loaded (3 shipped families first, then the others).
+int machineCount();
+// Every machine, in menu order (Fanuc, Haas, classic, then the others as loaded).
+std::vector<const MachineProfile*> machineProfiles();
+// A machine's id -> its place; false when no machine has that id.
 bool parseDialectId(std::string_view id, Dialect& out);
 // The units before any G20/G21: the ones chosen (--units, the GUI setting), else the dialect's.
 inline InputUnits powerOnUnitsOf(Dialect dialect, const std::optional<InputUnits>& chosen) {

@@ -24,6 +24,7 @@ struct ModalState {
   double sWord = 0.0;         // last S (rpm under G97, m/min under G96), 0 = not set
   double rpmClamp = 0.0;      // G50 S, 0 = none
   int workCoordinate = 54;    // G54..G59 (Fanuc; all work offsets are zero)
+  bool incremental = false;   // G91 of G-code systems B and C: X and Z are read as U and W
 };
 
 struct MachineState {

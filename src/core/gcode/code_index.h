@@ -1,0 +1,25 @@
+#pragma once
+// Internal: a machine's code lookup, built once when the machine is registered
+// from its family's column of the code table, its G-code system's renamings and
+// its M-code list (machine_profile.cpp keeps one per machine).
+#include <array>
+#include <deque>
+#include <string>
+
+#include "klueng/core/gcode/code_table.h"
+
+namespace klueng::core::gcode::detail {
+
+struct CodeIndex {
+  std::array<std::array<const CodeInfo*, 100>, 2> rows{};  // [G, M][number]
+  std::deque<CodeInfo> renamed;  // rows of the system under their own numbers (stable addresses)
+};
+
+void buildCodeIndex(const MachineProfile& profile, CodeIndex& out);
+const CodeIndex& codeIndexOf(Dialect dialect);
+// A registered machine by id (for `base =`), nullptr when none.
+const MachineProfile* loadedMachine(std::string_view id);
+// "fanuc, haas, classic, ...": the ids of the registered machines.
+std::string loadedMachineIds();
+
+}  // namespace klueng::core::gcode::detail
