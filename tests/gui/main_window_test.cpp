@@ -26,6 +26,7 @@
 #include <QProgressBar>
 #include <QStatusBar>
 
+#include "gui_test_runner.h"
 #include "fresh_user_folders.h"
 #include "gui/code_editor.h"
 #include "gui/diagnostics_panel.h"
@@ -876,5 +877,5 @@ class MainWindowTest : public QObject {
   }
 };
 
-QTEST_MAIN(MainWindowTest)
+KLUENG_GUI_TEST(MainWindowTest)
 #include "main_window_test.moc"

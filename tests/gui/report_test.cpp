@@ -20,6 +20,7 @@
 #include <QTimer>
 #include <QToolBar>
 
+#include "gui_test_runner.h"
 #include "fresh_user_folders.h"
 #include "klueng/core/machine/job.h"
 #include "gui/language.h"
@@ -455,5 +456,5 @@ class ReportTest : public QObject {
   QTemporaryDir dir_;
 };
 
-QTEST_MAIN(ReportTest)
+KLUENG_GUI_TEST(ReportTest)
 #include "report_test.moc"
