@@ -7,6 +7,7 @@
 #include <QTest>
 #include <QToolBar>
 
+#include "gui_test_runner.h"
 #include "gui/action_table.h"
 #include "gui/code_editor.h"
 #include "gui/resources.h"
@@ -80,5 +81,5 @@ class ActionTableTest : public QObject {
   }
 };
 
-QTEST_MAIN(ActionTableTest)
+KLUENG_GUI_TEST(ActionTableTest)
 #include "action_table_test.moc"

@@ -17,6 +17,7 @@
 #include <QTest>
 #include <QTimer>
 
+#include "gui_test_runner.h"
 #include "fresh_user_folders.h"
 #include "gui/code_editor.h"
 #include "gui/diagnostics_panel.h"
@@ -226,5 +227,5 @@ class BadInputTest : public QObject {
   }
 };
 
-QTEST_MAIN(BadInputTest)
+KLUENG_GUI_TEST(BadInputTest)
 #include "bad_input_test.moc"

@@ -8,6 +8,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "gui_test_runner.h"
 #include "fresh_user_folders.h"
 #include "gui/dialect_offer_bar.h"
 #include "gui/document.h"
@@ -126,5 +127,5 @@ class DialectOfferTest : public QObject {
   }
 };
 
-QTEST_MAIN(DialectOfferTest)
+KLUENG_GUI_TEST(DialectOfferTest)
 #include "dialect_offer_test.moc"

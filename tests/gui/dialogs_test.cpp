@@ -11,6 +11,7 @@
 #include <QTimer>
 #include <unistd.h>
 
+#include "gui_test_runner.h"
 #include "gui/job_details_dialog.h"
 #include "gui/offset_define_dialog.h"
 #include "gui/tool_select_dialog.h"
@@ -226,5 +227,5 @@ class DialogsTest : public QObject {
   }
 };
 
-QTEST_MAIN(DialogsTest)
+KLUENG_GUI_TEST(DialogsTest)
 #include "dialogs_test.moc"

@@ -7,6 +7,7 @@
 #include <QTest>
 #include <QTimer>
 
+#include "gui_test_runner.h"
 #include "fresh_user_folders.h"
 #include "gui/code_editor.h"
 #include "gui/first_steps_bar.h"
@@ -69,5 +70,5 @@ class FirstStepsTest : public QObject {
   }
 };
 
-QTEST_MAIN(FirstStepsTest)
+KLUENG_GUI_TEST(FirstStepsTest)
 #include "first_steps_test.moc"

@@ -13,6 +13,7 @@
 #include <QTextBlock>
 #include <QTreeWidget>
 
+#include "gui_test_runner.h"
 #include "fresh_user_folders.h"
 #include "gui/code_editor.h"
 #include "gui/diagnostics_panel.h"
@@ -201,5 +202,5 @@ class FlowPanelTest : public QObject {
   }
 };
 
-QTEST_MAIN(FlowPanelTest)
+KLUENG_GUI_TEST(FlowPanelTest)
 #include "flow_panel_test.moc"

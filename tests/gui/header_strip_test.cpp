@@ -6,6 +6,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "gui_test_runner.h"
 #include "fresh_user_folders.h"
 #include "gui/code_editor.h"
 #include "gui/language.h"
@@ -55,5 +56,5 @@ class HeaderStripTest : public QObject {
   }
 };
 
-QTEST_MAIN(HeaderStripTest)
+KLUENG_GUI_TEST(HeaderStripTest)
 #include "header_strip_test.moc"

@@ -11,6 +11,7 @@
 #include <QTextBlock>
 #include <QTimer>
 
+#include "gui_test_runner.h"
 #include "fresh_user_folders.h"
 #include "../../bench/program_generator.h"
 #include "gui/code_editor.h"
@@ -148,5 +149,5 @@ class LargeProgramTest : public QObject {
   }
 };
 
-QTEST_MAIN(LargeProgramTest)
+KLUENG_GUI_TEST(LargeProgramTest)
 #include "large_program_test.moc"

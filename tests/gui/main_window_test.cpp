@@ -26,6 +26,7 @@
 #include <QProgressBar>
 #include <QStatusBar>
 
+#include "gui_test_runner.h"
 #include "fresh_user_folders.h"
 #include "gui/code_editor.h"
 #include "gui/diagnostics_panel.h"
@@ -912,5 +913,5 @@ class MainWindowTest : public QObject {
   }
 };
 
-QTEST_MAIN(MainWindowTest)
+KLUENG_GUI_TEST(MainWindowTest)
 #include "main_window_test.moc"

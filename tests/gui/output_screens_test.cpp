@@ -9,6 +9,7 @@
 #include <QWheelEvent>
 #include <QLineF>
 
+#include "gui_test_runner.h"
 #include "gui/about_dialog.h"
 #include "gui/job_details_dialog.h"
 #include "gui/language.h"
@@ -229,5 +230,5 @@ class OutputScreensTest : public QObject {
   }
 };
 
-QTEST_MAIN(OutputScreensTest)
+KLUENG_GUI_TEST(OutputScreensTest)
 #include "output_screens_test.moc"

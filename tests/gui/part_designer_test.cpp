@@ -18,6 +18,7 @@
 #include <QToolButton>
 #include <QUndoStack>
 
+#include "gui_test_runner.h"
 #include "fresh_user_folders.h"
 #include "gui/code_editor.h"
 #include "gui/design_model.h"
@@ -262,5 +263,5 @@ class PartDesignerTest : public QObject {
   }
 };
 
-QTEST_MAIN(PartDesignerTest)
+KLUENG_GUI_TEST(PartDesignerTest)
 #include "part_designer_test.moc"

@@ -12,6 +12,7 @@
 #include <QTest>
 #include <QTreeWidget>
 
+#include "gui_test_runner.h"
 #include "fresh_user_folders.h"
 #include "gui/code_editor.h"
 #include "gui/language.h"
@@ -242,5 +243,5 @@ class PartPanelTest : public QObject {
   }
 };
 
-QTEST_MAIN(PartPanelTest)
+KLUENG_GUI_TEST(PartPanelTest)
 #include "part_panel_test.moc"

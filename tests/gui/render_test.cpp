@@ -3,6 +3,7 @@
 // tool is, arcs of the trail follow the core's segments.
 #include <QTest>
 
+#include "gui_test_runner.h"
 #include "klueng/core/cut/stock.h"
 #include "klueng/core/cut/tool_shape.h"
 #include "klueng/core/geometry.h"
@@ -105,5 +106,5 @@ class RenderTest : public QObject {
   }
 };
 
-QTEST_MAIN(RenderTest)
+KLUENG_GUI_TEST(RenderTest)
 #include "render_test.moc"

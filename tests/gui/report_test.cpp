@@ -20,6 +20,7 @@
 #include <QTimer>
 #include <QToolBar>
 
+#include "gui_test_runner.h"
 #include "fresh_user_folders.h"
 #include "klueng/core/machine/job.h"
 #include "gui/code_editor.h"
@@ -576,5 +577,5 @@ class ReportTest : public QObject {
   QTemporaryDir dir_;
 };
 
-QTEST_MAIN(ReportTest)
+KLUENG_GUI_TEST(ReportTest)
 #include "report_test.moc"

@@ -8,6 +8,7 @@
 #include <QSignalSpy>
 #include <QTest>
 
+#include "gui_test_runner.h"
 #include "gui/output_items.h"
 #include "gui/output_ruler.h"
 #include "gui/output_view.h"
@@ -329,5 +330,5 @@ class RunControllerTest : public QObject {
   }
 };
 
-QTEST_MAIN(RunControllerTest)
+KLUENG_GUI_TEST(RunControllerTest)
 #include "run_controller_test.moc"

@@ -14,6 +14,7 @@
 #include <csignal>
 #include <sys/resource.h>
 
+#include "gui_test_runner.h"
 #include "fresh_user_folders.h"
 #include "gui/code_editor.h"
 #include "gui/language.h"
@@ -209,5 +210,5 @@ class SafeSaveTest : public QObject {
   }
 };
 
-QTEST_MAIN(SafeSaveTest)
+KLUENG_GUI_TEST(SafeSaveTest)
 #include "safe_save_test.moc"

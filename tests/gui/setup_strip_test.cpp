@@ -11,6 +11,7 @@
 #include <QTest>
 #include <QTimer>
 
+#include "gui_test_runner.h"
 #include "fresh_user_folders.h"
 #include "gui/diagnostics_panel.h"
 #include "gui/job_details_dialog.h"
@@ -306,5 +307,5 @@ class SetupStripTest : public QObject {
   }
 };
 
-QTEST_MAIN(SetupStripTest)
+KLUENG_GUI_TEST(SetupStripTest)
 #include "setup_strip_test.moc"

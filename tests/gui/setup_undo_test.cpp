@@ -10,6 +10,7 @@
 #include <QTimer>
 #include <QUndoStack>
 
+#include "gui_test_runner.h"
 #include "gui/code_editor.h"
 #include "gui/document.h"
 #include "gui/job_details_dialog.h"
@@ -135,5 +136,5 @@ class SetupUndoTest : public QObject {
   QTemporaryDir work_;
 };
 
-QTEST_MAIN(SetupUndoTest)
+KLUENG_GUI_TEST(SetupUndoTest)
 #include "setup_undo_test.moc"

@@ -14,6 +14,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "gui_test_runner.h"
 #include "fresh_user_folders.h"
 #include "gui/document.h"
 #include "gui/job_details_dialog.h"
@@ -174,5 +175,5 @@ class StockSourceTest : public QObject {
   }
 };
 
-QTEST_MAIN(StockSourceTest)
+KLUENG_GUI_TEST(StockSourceTest)
 #include "stock_source_test.moc"

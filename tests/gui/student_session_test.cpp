@@ -10,6 +10,7 @@
 #include <QTest>
 #include <QTextBlock>
 
+#include "gui_test_runner.h"
 #include "fresh_user_folders.h"
 #include "gui/code_editor.h"
 #include "gui/diagnostics_panel.h"
@@ -145,5 +146,5 @@ class StudentSessionTest : public QObject {
   }
 };
 
-QTEST_MAIN(StudentSessionTest)
+KLUENG_GUI_TEST(StudentSessionTest)
 #include "student_session_test.moc"

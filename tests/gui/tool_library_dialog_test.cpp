@@ -12,6 +12,7 @@
 #include <QTest>
 #include <QTimer>
 
+#include "gui_test_runner.h"
 #include "gui/offset_define_dialog.h"
 #include "gui/tool_select_dialog.h"
 #include "klueng/core/gcode/parser.h"
@@ -234,5 +235,5 @@ class ToolLibraryDialogTest : public QObject {
   }
 };
 
-QTEST_MAIN(ToolLibraryDialogTest)
+KLUENG_GUI_TEST(ToolLibraryDialogTest)
 #include "tool_library_dialog_test.moc"

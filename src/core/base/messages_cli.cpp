@@ -8,7 +8,7 @@
 namespace klueng::core::catalog {
 
 namespace {
-constexpr MessageText kMessages[] = {
+constexpr MessageText kCliMessages[] = {
     // Usage texts (printed whole, they end with a newline).
     {codes::kCliUsage,
      "usage: klueng-cli check FILE... [--lang en|th] [--dialect fanuc|haas|classic] [--json]\n"
@@ -194,6 +194,6 @@ constexpr MessageText kMessages[] = {
 };
 }  // namespace
 
-std::span<const MessageText> cliMessages() { return kMessages; }
+std::span<const MessageText> cliMessages() { return kCliMessages; }
 
 }  // namespace klueng::core::catalog

@@ -5,7 +5,7 @@
 namespace klueng::core::catalog {
 
 namespace {
-constexpr MessageText kMessages[] = {
+constexpr MessageText kCompMessages[] = {
     {codes::kConcaveArcTooSmall,
      "Nose radius compensation interference: the concave arc's radius {0} mm is smaller than the tool nose "
      "radius {1} mm, so the nose cannot follow it",
@@ -23,6 +23,6 @@ constexpr MessageText kMessages[] = {
 };
 }  // namespace
 
-std::span<const MessageText> compMessages() { return kMessages; }
+std::span<const MessageText> compMessages() { return kCompMessages; }
 
 }  // namespace klueng::core::catalog

@@ -7,7 +7,7 @@
 namespace klueng::core::catalog {
 
 namespace {
-constexpr MessageText kMessages[] = {
+constexpr MessageText kCutMessages[] = {
     {codes::kRapidIntoStock, "Rapid move runs into the stock at Z{0} X{1}: a rapid move may not remove material",
      "การเคลื่อนที่เร็วชนชิ้นงานที่ Z{0} X{1}: การเคลื่อนที่เร็วต้องไม่ตัดเนื้อชิ้นงาน"},
     {codes::kCutWithSpindleStopped, "Cutting while the spindle is not turning, at Z{0} X{1}",
@@ -57,6 +57,6 @@ constexpr MessageText kMessages[] = {
 };
 }  // namespace
 
-std::span<const MessageText> cutMessages() { return kMessages; }
+std::span<const MessageText> cutMessages() { return kCutMessages; }
 
 }  // namespace klueng::core::catalog

@@ -5,7 +5,7 @@
 namespace klueng::core::catalog {
 
 namespace {
-constexpr MessageText kMessages[] = {
+constexpr MessageText kDesignMessages[] = {
     {codes::kPartUndercut,
      "Step {0} (Ø{1}) is thinner than the step before it (Ø{2}): an undercut the turning tool cannot reach from the "
      "right",
@@ -110,6 +110,6 @@ constexpr MessageText kMessages[] = {
 };
 }  // namespace
 
-std::span<const MessageText> designMessages() { return kMessages; }
+std::span<const MessageText> designMessages() { return kDesignMessages; }
 
 }  // namespace klueng::core::catalog

@@ -5,7 +5,7 @@
 namespace klueng::core::catalog {
 
 namespace {
-constexpr MessageText kMessages[] = {
+constexpr MessageText kGcodeMessages[] = {
     // E1xx: lexical errors and word formats (SPEC 3-4)
     {"E101", "letter {0} has no value: write the number right after it, e.g. {0}20.",
      "อักขระ {0} ไม่มีค่าตัวเลข: เขียนตัวเลขต่อท้ายทันที เช่น {0}20."},
@@ -201,6 +201,6 @@ constexpr MessageText kMessages[] = {
 };
 }  // namespace
 
-std::span<const MessageText> gcodeMessages() { return kMessages; }
+std::span<const MessageText> gcodeMessages() { return kGcodeMessages; }
 
 }  // namespace klueng::core::catalog

@@ -7,7 +7,7 @@
 namespace klueng::core::catalog {
 
 namespace {
-constexpr MessageText kMessages[] = {
+constexpr MessageText kIoMessages[] = {
     // SPEC 5 rule 13 lives here because the stock size comes from the program header.
     {codes::kStockSizeTooLarge, "{0}: stock size {1} is larger than any lathe holds; write at most {2}",
      "{0}: ขนาดชิ้นงาน {1} ใหญ่เกินกว่าที่เครื่องกลึงใดจะจับได้ ให้เขียนไม่เกิน {2}"},
@@ -226,6 +226,6 @@ constexpr MessageText kMessages[] = {
 };
 }  // namespace
 
-std::span<const MessageText> ioMessages() { return kMessages; }
+std::span<const MessageText> ioMessages() { return kIoMessages; }
 
 }  // namespace klueng::core::catalog

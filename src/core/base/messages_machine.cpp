@@ -7,7 +7,7 @@
 namespace klueng::core::catalog {
 
 namespace {
-constexpr MessageText kMessages[] = {
+constexpr MessageText kMachineMessages[] = {
     {codes::kSpindleAboveMaximum, "spindle speed S{0} rpm is above the machine maximum of {1} rpm",
      "ความเร็วรอบ S{0} รอบ/นาที สูงกว่าความเร็วรอบสูงสุดของเครื่อง {1} รอบ/นาที"},
     {codes::kNoFeed, "{0} needs a feed rate, but no F has been given",
@@ -122,6 +122,6 @@ constexpr MessageText kMessages[] = {
 };
 }  // namespace
 
-std::span<const MessageText> machineMessages() { return kMessages; }
+std::span<const MessageText> machineMessages() { return kMachineMessages; }
 
 }  // namespace klueng::core::catalog

@@ -20,7 +20,7 @@ constexpr double kReversal = 1e-6;     // a trimmed piece shorter than minus thi
 constexpr double kArcAsLine = 1e-7;    // arcs shorter than this are emitted as straight lines (mm)
 
 Vec2 leftNormal(const Vec2& d) { return Vec2(-d.y(), d.x()); }
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+double crossZ(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 // Signed path length along the carrier of `s` from `from` to `x` (both on it),
 // positive in the direction of travel; arcs in (-pi r, pi r].
@@ -28,7 +28,7 @@ double along(const Segment& s, const Vec2& from, const Vec2& x) {
   if (!s.isArc()) return (x - from).dot(s.startTangent());
   const Vec2 a = from - s.centre;
   const Vec2 b = x - s.centre;
-  double ang = std::atan2(cross(a, b), a.dot(b));
+  double ang = std::atan2(crossZ(a, b), a.dot(b));
   if (!s.ccw) ang = -ang;
   return ang * s.radius();
 }
@@ -146,7 +146,7 @@ bool Compensator::corner(Work& a, Work& b) {
   }
   const Vec2 t1 = in_.moves[a.source].endTangent();
   const Vec2 t2 = in_.moves[b.source].startTangent();
-  const double turnSin = cross(t1, t2);  // > 0: the path turns left
+  const double turnSin = crossZ(t1, t2);  // > 0: the path turns left
   const double turnCos = t1.dot(t2);
   if (std::abs(turnSin) < kTangentSin && turnCos > 0) {
     b.start = a.end;  // tangent continuation: the offsets already meet

@@ -24,11 +24,11 @@ using cut::PartFeature;
 constexpr double kZSlack = 0.1;  // mm: two stock columns, where a feature's ends are read
 constexpr double kThreadDepthSlack = 0.05;  // mm on the minor Ø: the thread read from the cut columns
 
-std::string num(double v) { return detail::plain(v); }
+std::string plainNum(double v) { return detail::plain(v); }
 
 // A label with no words in it, so one argument reads in both languages.
 std::string neutralLabel(const PartFeature& f) {
-  if (f.kind == FeatureKind::Groove) return num(f.width) + " × Ø" + num(f.diameter);
+  if (f.kind == FeatureKind::Groove) return plainNum(f.width) + " × Ø" + plainNum(f.diameter);
   return cut::featureLabel(f, Lang::En);
 }
 
@@ -95,31 +95,31 @@ void expectSteps(const std::vector<OutsideStep>& steps, bool inside, std::vector
     before = s.diameter;
     const bool sloped = s.kind != StepKind::Cylinder && (k > 0 || !inside);
     if (!sloped) {
-      out.push_back({"Ø" + num(s.diameter), zr - e, zl, inside, [=](const PartFeature& f) {
+      out.push_back({"Ø" + plainNum(s.diameter), zr - e, zl, inside, [=](const PartFeature& f) {
                        return (f.kind == FeatureKind::Cylinder || f.kind == FeatureKind::Thread ||
                                f.kind == FeatureKind::Groove) &&
                               overlaps(f, zr - e, zl) && near(f.kind == FeatureKind::Groove ? -1.0 : f.diameter, s.diameter);
                      }});
       if (s.edge == EdgeBreak::Chamfer)
-        out.push_back({"C" + num(e), zr, zr - e, inside, [=](const PartFeature& f) {
+        out.push_back({"C" + plainNum(e), zr, zr - e, inside, [=](const PartFeature& f) {
                          return (f.kind == FeatureKind::Chamfer && near(f.radialHeight, e) && near(f.axialLength, e) &&
                                  near(f.zRight, zr, kZSlack)) ||
                                 f.kind == FeatureKind::Thread;  // threaded over: the thread's run-in
                        }});
       if (s.edge == EdgeBreak::Round)
-        out.push_back({"R" + num(e), zr, zr - e, inside, [=](const PartFeature& f) {
+        out.push_back({"R" + plainNum(e), zr, zr - e, inside, [=](const PartFeature& f) {
                          return f.kind == FeatureKind::Arc && f.convex && near(f.radius, e) &&
                                 near(f.centre.x(), zr - e, kZSlack);
                        }});
       continue;
     }
     if (s.kind == StepKind::Taper)
-      out.push_back({"Ø" + num(from) + "–Ø" + num(s.diameter), zr, zl, inside, [=](const PartFeature& f) {
+      out.push_back({"Ø" + plainNum(from) + "–Ø" + plainNum(s.diameter), zr, zl, inside, [=](const PartFeature& f) {
                        return (f.kind == FeatureKind::Taper || f.kind == FeatureKind::Chamfer) &&
                               near(f.diameterLeft, s.diameter) && near(f.zLeft, zl, kZSlack);
                      }});
     else
-      out.push_back({"R" + num(s.radius), zr, zl, inside, [=](const PartFeature& f) {
+      out.push_back({"R" + plainNum(s.radius), zr, zl, inside, [=](const PartFeature& f) {
                        return f.kind == FeatureKind::Arc && f.convex != s.concave && near(f.radius, s.radius) &&
                               overlaps(f, zr, zl);
                      }});
@@ -133,14 +133,14 @@ std::vector<Diagnostic> compareToDrawing(const PartDesign& part, const cut::Part
   expectSteps(part.outside, false, expected);
   expectSteps(part.inside, true, expected);
   for (const Groove& g : part.grooves)
-    expected.push_back({num(g.width) + " × Ø" + num(g.diameter), g.z, g.z - g.width, false, [=](const PartFeature& f) {
+    expected.push_back({plainNum(g.width) + " × Ø" + plainNum(g.diameter), g.z, g.z - g.width, false, [=](const PartFeature& f) {
                           return f.kind == FeatureKind::Groove && near(f.diameter, g.diameter) &&
                                  near(f.zRight, g.z, kZSlack) && near(f.width, g.width, kZSlack);
                         }});
   // A thread is its pitch on the designed major Ø down to the designed minor Ø
   // (a thread cut deeper or shallower than drawn is not the drawn thread).
   for (const ThreadMark& t : partOutline(part).threads)
-    expected.push_back({"M" + num(2.0 * t.major) + "×" + num(t.pitch), t.zRight, t.zLeft, false, [=](const PartFeature& f) {
+    expected.push_back({"M" + plainNum(2.0 * t.major) + "×" + plainNum(t.pitch), t.zRight, t.zLeft, false, [=](const PartFeature& f) {
                           return f.kind == FeatureKind::Thread && near(f.pitch, t.pitch) && overlaps(f, t.zRight, t.zLeft) &&
                                  near(f.diameter, 2.0 * t.major) && near(f.minorDiameter, 2.0 * t.minor, kThreadDepthSlack);
                         }});
@@ -158,7 +158,7 @@ std::vector<Diagnostic> compareToDrawing(const PartDesign& part, const cut::Part
     Diagnostic d;
     d.severity = Severity::Warning;
     d.code = codes::kNotAsDrawn;
-    d.args = {e.label, num(e.zRight), num(e.zLeft), there};
+    d.args = {e.label, plainNum(e.zRight), plainNum(e.zLeft), there};
     out.push_back(std::move(d));
   }
   return out;

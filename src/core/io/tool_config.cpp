@@ -64,7 +64,7 @@ bool hasControlCharacters(std::string_view s) {
   });
 }
 
-std::string oneLine(std::string_view text) {
+std::string oneConfigLine(std::string_view text) {
   std::string s(text);
   std::replace_if(s.begin(), s.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
   return s;
@@ -210,7 +210,7 @@ std::string formatToolTable(const ToolTable& t) {
   for (int i = 0; i < kMaxStations; ++i)
     if (!t.bitmap[static_cast<std::size_t>(i)].empty()) last = std::max(last, i + 1);
   std::string out;
-  for (int i = 0; i < last; ++i) out += oneLine(t.bitmap[static_cast<std::size_t>(i)]) + '\n';
+  for (int i = 0; i < last; ++i) out += oneConfigLine(t.bitmap[static_cast<std::size_t>(i)]) + '\n';
   return out;
 }
 
