@@ -13,6 +13,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "gui_test_runner.h"
+
 #include "gui/class_grade_dialog.h"
 #include "gui/language.h"
 #include "klueng/core/machine/setup_files.h"
@@ -153,5 +155,5 @@ class ClassGradeTest : public QObject {
   }
 };
 
-QTEST_MAIN(ClassGradeTest)
+KLUENG_GUI_TEST(ClassGradeTest)
 #include "class_grade_test.moc"

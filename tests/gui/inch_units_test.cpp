@@ -5,6 +5,8 @@
 #include <QFile>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include "gui_test_runner.h"
 #include <QTreeWidget>
 
 #include <algorithm>
@@ -148,5 +150,5 @@ class InchUnitsTest : public QObject {
   }
 };
 
-QTEST_MAIN(InchUnitsTest)
+KLUENG_GUI_TEST(InchUnitsTest)
 #include "inch_units_test.moc"

@@ -214,7 +214,7 @@ std::optional<Value> readValue(const Key& k, std::string_view text) {
   return std::nullopt;
 }
 
-Diagnostic at(Severity s, const char* code, int line, int column, int length, std::vector<std::string> args) {
+Diagnostic machineFileDiagnostic(Severity s, const char* code, int line, int column, int length, std::vector<std::string> args) {
   return Diagnostic{s, code, {line, column, length, 0}, std::move(args)};
 }
 
@@ -244,7 +244,7 @@ MachineFileRead parseMachineFile(std::string_view text, const std::string& fileN
     const std::size_t eq = content.find('=');
     const std::string_view key = eq == std::string_view::npos ? std::string_view() : trim(content.substr(0, eq));
     if (key.empty()) {
-      diags.push_back(at(Severity::Error, codes::kNotKeyValue, lineNumber, columnOf(line, content), lengthOf(content), {fileName}));
+      diags.push_back(machineFileDiagnostic(Severity::Error, core::codes::kNotKeyValue, lineNumber, columnOf(line, content), lengthOf(content), {fileName}));
     } else {
       lines.push_back({lineNumber, line, key, trim(content.substr(eq + 1))});
     }
@@ -260,7 +260,7 @@ MachineFileRead parseMachineFile(std::string_view text, const std::string& fileN
     const MachineProfile* base = detail::loadedMachine(l.value);
     if (!base) {
       const std::string known = detail::loadedMachineIds();
-      diags.push_back(at(Severity::Error, codes::kMachineUnknownBase, l.number, columnOf(l.line, l.value),
+      diags.push_back(machineFileDiagnostic(Severity::Error, core::codes::kMachineUnknownBase, l.number, columnOf(l.line, l.value),
                          std::max(1, lengthOf(l.value)), {fileName, std::string(l.value), known}));
       continue;
     }
@@ -287,12 +287,12 @@ MachineFileRead parseMachineFile(std::string_view text, const std::string& fileN
     const auto value = readValue(*key, l.value);
     if (!value) {
       const auto [en, th] = expected(*key);
-      diags.push_back(at(Severity::Error, codes::kMachineValueBad, l.number, valueColumn, std::max(1, lengthOf(l.value)),
+      diags.push_back(machineFileDiagnostic(Severity::Error, core::codes::kMachineValueBad, l.number, valueColumn, std::max(1, lengthOf(l.value)),
                          {fileName, std::string(l.key), std::string(l.value), en, th}));
       continue;
     }
     if (lineOfKey.count(key->name))
-      diags.push_back(at(Severity::Warning, codes::kParameterTwice, l.number, columnOf(l.line, l.key), lengthOf(l.key),
+      diags.push_back(machineFileDiagnostic(Severity::Warning, core::codes::kParameterTwice, l.number, columnOf(l.line, l.key), lengthOf(l.key),
                          {fileName, std::string(l.key)}));
     lineOfKey[key->name] = l.number;
     key->set(m, *value);
@@ -300,9 +300,9 @@ MachineFileRead parseMachineFile(std::string_view text, const std::string& fileN
   if (!hasBase)
     for (const Key& k : kKeys)
       if (!lineOfKey.count(k.name) && !optionalKey(k.name))
-        diags.push_back(at(Severity::Error, codes::kMachineKeyMissing, 0, 0, 0, {fileName, std::string(k.name)}));
+        diags.push_back(machineFileDiagnostic(Severity::Error, core::codes::kMachineKeyMissing, 0, 0, 0, {fileName, std::string(k.name)}));
   if (hasBase && !lineOfKey.count("id"))
-    diags.push_back(at(Severity::Error, codes::kMachineKeyMissing, 0, 0, 0, {fileName, "id"}));
+    diags.push_back(machineFileDiagnostic(Severity::Error, core::codes::kMachineKeyMissing, 0, 0, 0, {fileName, "id"}));
 
   if (std::any_of(diags.begin(), diags.end(), [](const Diagnostic& d) { return d.severity == Severity::Error; }))
     return out;
