@@ -692,6 +692,10 @@
         <translation>Ø%1 × %2 มม.</translation>
     </message>
     <message>
+        <source>Ø%1 × %2 in</source>
+        <translation>Ø%1 × %2 นิ้ว</translation>
+    </message>
+    <message>
         <source>The file&apos;s first six lines hold the project, part, material, stock diameter, stock length and programmer; the program starts on line 7. File &gt; Job Details edits them.</source>
         <translation>หกบรรทัดแรกของไฟล์เก็บชื่องาน ชิ้นงาน วัสดุ เส้นผ่าศก. ชิ้นงานดิบ ความยาวชิ้นงานดิบ และผู้เขียน ชุดรหัสสั่งการทำงานเริ่มที่บรรทัด 7 แก้ไขได้ที่ แฟ้ม &gt; รายละเอียดงาน</translation>
     </message>

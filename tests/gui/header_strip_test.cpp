@@ -53,6 +53,19 @@ class HeaderStripTest : public QObject {
     QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
     QVERIFY(!strip->isVisible());
     QCOMPARE(w.findChild<gui::CodeEditor*>()->firstFileLine(), 1);
+
+    // An inch header ("0" before the sizes) is shown as written, in inches (issue 28 item 4).
+    const QString pin = dir.filePath(QStringLiteral("pin.txt"));
+    QFile g(pin);
+    QVERIFY(g.open(QIODevice::WriteOnly));
+    g.write("Guide pin\nGP-2\nCRS\n01.75\n03\nShop\nO2010\nG20 G99\nM30\n");
+    g.close();
+    QVERIFY(w.openFile(pin));
+    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    QVERIFY2(strip->text().contains(QStringLiteral("Guide pin, GP-2, Ø1.75 × 3 in")), qPrintable(strip->text()));
+    gui::Language::instance()->setLanguage(QStringLiteral("th"));
+    QTRY_VERIFY2(strip->text().contains(QStringLiteral("Ø1.75 × 3 นิ้ว")), qPrintable(strip->text()));
+    gui::Language::instance()->setLanguage(QStringLiteral("en"));
   }
 };
 
