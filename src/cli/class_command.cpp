@@ -125,18 +125,10 @@ bool writePdf(const ClassOptions& o, const std::vector<cut::ClassRow>& rows, con
 
 // The drawing's toleranced dimensions, or nullopt after saying why (its file's messages).
 std::optional<std::vector<cut::DrawnDimension>> readDrawing(const ClassOptions& o, double chuckGrip) {
-  const io::ReadResult<std::string> read = design::readPartFile(o.drawing);
-  for (const Diagnostic& d : read.diagnostics) printDiagnostic(stderr, o.drawing, d, o.lang);
-  if (!read.ok()) return std::nullopt;
-  std::string ext = std::filesystem::path(o.drawing).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  design::DxfImportOptions dxf;
-  dxf.chuckGrip = chuckGrip;
-  dxf.layer = o.layer;
-  const auto part = ext == ".dxf" ? design::importDxf(*read.value, o.drawing, dxf) : design::readPartDesign(*read.value, o.drawing);
-  for (const Diagnostic& d : part.diagnostics) printDiagnostic(stderr, o.drawing, d, o.lang);
-  if (!part.ok()) return std::nullopt;
-  std::vector<cut::DrawnDimension> dims = design::drawnDimensions(*part.value, o.generalTolerance);
+  std::optional<std::vector<cut::DrawnDimension>> read =
+      readDrawnDimensions(o.drawing, o.layer, o.generalTolerance, chuckGrip, o.lang);
+  if (!read) return std::nullopt;
+  std::vector<cut::DrawnDimension> dims = std::move(*read);
   if (dims.empty()) {
     printCliError("class", codes::kCliDrawingNoTolerances, o.lang, {o.drawing});
     return std::nullopt;

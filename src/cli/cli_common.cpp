@@ -6,10 +6,13 @@
 #include "klueng/core/machine/subprogram_files.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 
+#include "klueng/core/design/dxf_import.h"
+#include "klueng/core/design/part_design.h"
 #include "klueng/core/gcode/dialect_fit.h"
 #include "klueng/core/machine/machine_files.h"
 #include "klueng/core/gcode/machine_profile.h"
@@ -253,6 +256,24 @@ std::optional<machine::JobFileRequest> jobRequest(const LoadedConfig& config, gc
     request.overrides.push_back(o);
   }
   return request;
+}
+
+std::optional<std::vector<core::cut::DrawnDimension>> readDrawnDimensions(const std::string& path, const std::string& layer,
+                                                                          const std::string& general, double chuckGrip,
+                                                                          core::Lang lang) {
+  const core::io::ReadResult<std::string> read = core::design::readPartFile(path);
+  for (const core::Diagnostic& d : read.diagnostics) printDiagnostic(stderr, path, d, lang);
+  if (!read.ok()) return std::nullopt;
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  core::design::DxfImportOptions dxf;
+  dxf.chuckGrip = chuckGrip;
+  dxf.layer = layer;
+  const auto part = ext == ".dxf" ? core::design::importDxf(*read.value, path, dxf)
+                                  : core::design::readPartDesign(*read.value, path);
+  for (const core::Diagnostic& d : part.diagnostics) printDiagnostic(stderr, path, d, lang);
+  if (!part.ok()) return std::nullopt;
+  return core::design::drawnDimensions(*part.value, general);
 }
 
 }  // namespace klueng::cli

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "klueng/core/cut/inspection.h"
 #include "klueng/core/diagnostic.h"
 #include "klueng/core/gcode/checker.h"
 #include "klueng/core/gcode/code_table.h"
@@ -33,6 +34,13 @@ core::Lang langOfArgs(const std::vector<std::string>& args);
 std::string cliText(const char* code, core::Lang lang, std::vector<std::string> args = {});
 // "klueng-cli COMMAND: <text>\n" on stderr.
 void printCliError(const char* command, const char* code, core::Lang lang, std::vector<std::string> args = {});
+
+// A part design (JSON, or a DXF's outline on `layer`) read as its drawn
+// dimensions with their tolerances (`general`: an ISO 2768 class for the ones
+// without); nullopt after printing why (the file's own located messages).
+std::optional<std::vector<core::cut::DrawnDimension>> readDrawnDimensions(const std::string& path, const std::string& layer,
+                                                                          const std::string& general, double chuckGrip,
+                                                                          core::Lang lang);
 std::optional<core::Lang> parseLang(std::string_view text);                  // "en" | "th"
 std::optional<core::gcode::Dialect> parseDialect(std::string_view text);     // "fanuc" | "classic"
 // --machine NAME|FILE (issue 27), once the setup (and with it the machines

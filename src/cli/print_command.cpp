@@ -39,6 +39,7 @@ struct PrintOptions {
   std::optional<bool> calculatorInput;
   std::string configDir;
   std::vector<std::string> tools;
+  std::string design;  // --design PART.json|PART.dxf: its tolerances on the drawing
 };
 
 std::optional<PrintOptions> parse(const std::vector<std::string>& args) {
@@ -80,6 +81,8 @@ std::optional<PrintOptions> parse(const std::vector<std::string>& args) {
       o.dialect = *dialect;
     } else if (a == "--machine") {
       o.machine = v;
+    } else if (a == "--design") {
+      o.design = v;
     } else if (a == "--stock") {
       o.stock = parseStock(v);
       if (!o.stock) return bad(a, v, codes::kCliAllowedStock);
@@ -136,7 +139,9 @@ int runPrint(const std::vector<std::string>& args) {
   for (const Diagnostic& n : job.stockNotes) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
   if (job.unreadable || !job.file) return 2;
   // Refused before anything is drawn, as a compiler refuses `-o` naming its source.
-  if (!outputsAllowed({o.pdf}, programInputs(o.file, job, config), o.lang)) return 2;
+  std::vector<std::string> inputs = programInputs(o.file, job, config);
+  if (!o.design.empty()) inputs.push_back(o.design);
+  if (!outputsAllowed({o.pdf}, inputs, o.lang)) return 2;
 
   machine::JobOptions jobOptions;
   jobOptions.run = request->run;
@@ -156,6 +161,12 @@ int runPrint(const std::vector<std::string>& args) {
                                gcode::InputUnits::Inch
                 ? 1
                 : 0;
+  std::optional<std::vector<cut::DrawnDimension>> drawn;
+  if (!o.design.empty()) {
+    drawn = readDrawnDimensions(o.design, {}, {}, config.setup.machine.chuckGrip, o.lang);
+    if (!drawn) return 2;
+    in.drawn = &*drawn;
+  }
   // A failed write keeps the old PDF and exits 2 (issue 29).
   if (!reportWrite(o.pdf, writePrintPdf(in, o.pdf), o.lang)) return 2;
   return job.hasErrors() ? 1 : 0;

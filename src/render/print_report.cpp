@@ -6,6 +6,8 @@
 #include <QPainter>
 #include <QPdfWriter>
 #include <QString>
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include "render/module_bytes.h"
@@ -33,6 +35,22 @@ extern "C" __attribute__((visibility("default"))) int klueng_print_pdf(const Klu
   data.fileName = QString::fromUtf8(in->fileName ? in->fileName : "");
   data.units = core::UnitFormat(in->inch ? core::DisplayUnits::Inch : core::DisplayUnits::Mm);
   render::addRunResults(data, *in->setup, *in->job, lang, in->drawingSheet != 0);
+  if (in->drawn) {
+    // A design's own tolerance after the Ø it belongs to (a general ISO 2768
+    // class is the title block's, not each size's).
+    const std::vector<core::cut::DrawnDimension> drawn = *in->drawn;
+    data.marks.tolerance = [drawn](const core::cut::PartFeature& f) {
+      if (f.kind != core::cut::FeatureKind::Cylinder) return QString();
+      for (const core::cut::DrawnDimension& d : drawn) {
+        if (d.kind != core::cut::DimensionKind::Diameter || d.side != f.side || !d.tolerance.given() ||
+            d.tolerance.text.rfind("ISO 2768", 0) == 0)
+          continue;
+        const bool overlaps = std::min(d.zRight, f.zRight) > std::max(d.zLeft, f.zLeft);
+        if (overlaps && std::abs(d.nominal - f.diameter) <= 0.02) return QString::fromStdString(d.tolerance.text);
+      }
+      return QString();
+    };
+  }
 
   // Into memory: QPdfWriter does not report a failed file write (issue 29), the CLI's writer does.
   QBuffer pdf;

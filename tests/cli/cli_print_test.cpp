@@ -64,6 +64,33 @@ TEST(CliPrint, DrawingDimensionsSample01OnALandscapePage) {
   EXPECT_NE(info.find("Page    1 size:  842 x 595 pts (A4)"), std::string::npos) << info;
 }
 
+// Issue 28 item 3: a program printed with the part design it came from carries
+// the design's tolerances after its diameters (an ISO fit, ±, upper/lower).
+TEST(CliPrint, TheDesignsTolerancesAreWrittenAfterItsDiameters) {
+  const fs::path design = scratch("shaft-tolerances.json");
+  std::ofstream(design) << R"({"name": "Step shaft", "material": "aluminium", "stock": {"diameter": 50, "length": 100},
+    "outside": [{"cylinder": 30, "length": 20, "chamfer": 3, "tolerance": "h7"},
+                {"cylinder": 40, "length": 20, "round": 2, "tolerance": 0.05},
+                {"cylinder": 46, "length": 20, "chamfer": 1}]})";
+  const fs::path pdf = scratch("shaft-tolerances.pdf");
+  std::string err;
+  ASSERT_EQ(print("'" + kSample01 + "' --sheet drawing --design '" + design.string() + "' --pdf '" + pdf.string() + "'",
+                  &err),
+            0)
+      << err;
+  const std::string text = pdfText(pdf);
+  EXPECT_NE(text.find("Ø30 h7"), std::string::npos) << text;
+  EXPECT_NE(text.find("Ø40 ±0.05"), std::string::npos) << text;
+  EXPECT_NE(text.find("Ø46"), std::string::npos) << text;
+  EXPECT_EQ(text.find("Ø46 "), std::string::npos) << text;  // no tolerance where the design has none
+  // A design that cannot be read names its field, and the command exits 2.
+  const fs::path bad = scratch("shaft-bad.json");
+  std::ofstream(bad) << "{\"outside\": [{\"cylinder\": 30, \"length\": 20, \"tolerance\": \"zz9\"}]}";
+  EXPECT_EQ(print("'" + kSample01 + "' --design '" + bad.string() + "' --pdf '" + pdf.string() + "'", &err), 2);
+  EXPECT_NE(err.find("shaft-bad.json: error F182"), std::string::npos) << err;
+  EXPECT_NE(err.find("outside[0].tolerance"), std::string::npos) << err;
+}
+
 TEST(CliPrint, BothSheetsInThaiAndTheThreadCallout) {
   const fs::path pdf = scratch("02-both.pdf");
   std::string err;

@@ -132,11 +132,15 @@ constexpr MessageText kCliMessages[] = {
      "usage: klueng-cli print FILE --pdf OUT.pdf [--sheet program|drawing|both] [--lang en|th]\n"
      "                             [--dialect fanuc|haas|classic] [--stock DxL[xBORE][in]] [--units mm|inch]\n"
      "                             [--config DIR] [--tool N=ID]... [--decimal-point whole|increments]\n"
-     "  --sheet  program (the listing, portrait), drawing (the dimensioned part, landscape) or both (default)\n",
+     "  --sheet  program (the listing, portrait), drawing (the dimensioned part, landscape) or both (default)\n"
+     "  --design PART.json|PART.dxf  the part design the program was made from: its tolerances (h7, ±0.05)\n"
+     "           are written after the drawing's diameters\n",
      "วิธีใช้: klueng-cli print FILE --pdf OUT.pdf [--sheet program|drawing|both] [--lang en|th]\n"
      "                             [--dialect fanuc|haas|classic] [--stock DxL[xBORE][in]] [--units mm|inch]\n"
      "                             [--config DIR] [--tool N=ID]... [--decimal-point whole|increments]\n"
-     "  --sheet  program (รายการโปรแกรม แนวตั้ง), drawing (แบบชิ้นงานพร้อมขนาด แนวนอน) หรือ both (ค่าเริ่มต้น)\n"},
+     "  --sheet  program (รายการโปรแกรม แนวตั้ง), drawing (แบบชิ้นงานพร้อมขนาด แนวนอน) หรือ both (ค่าเริ่มต้น)\n"
+     "  --design PART.json|PART.dxf  แบบชิ้นงานที่ใช้สร้างโปรแกรมนี้: เขียนพิกัดความเผื่อ (h7, ±0.05)\n"
+     "           ต่อท้ายขนาดเส้นผ่าศูนย์กลางในแบบงาน\n"},
     {codes::kCliGenerateUsage,
      "usage: klueng-cli generate PART.json|PART.dxf -o OUT.nc [--dialect fanuc|haas|classic] [--material NAME]\n"
      "                           [--tool-material hss|carbide] [--layer NAME] [--stock DxL[xBORE]]\n"
