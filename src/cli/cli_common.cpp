@@ -258,9 +258,8 @@ std::optional<machine::JobFileRequest> jobRequest(const LoadedConfig& config, gc
   return request;
 }
 
-std::optional<std::vector<core::cut::DrawnDimension>> readDrawnDimensions(const std::string& path, const std::string& layer,
-                                                                          const std::string& general, double chuckGrip,
-                                                                          core::Lang lang) {
+std::optional<core::design::PartDesign> readPartDrawing(const std::string& path, const std::string& layer,
+                                                       double chuckGrip, core::Lang lang) {
   const core::io::ReadResult<std::string> read = core::design::readPartFile(path);
   for (const core::Diagnostic& d : read.diagnostics) printDiagnostic(stderr, path, d, lang);
   if (!read.ok()) return std::nullopt;
@@ -273,7 +272,15 @@ std::optional<std::vector<core::cut::DrawnDimension>> readDrawnDimensions(const 
                                   : core::design::readPartDesign(*read.value, path);
   for (const core::Diagnostic& d : part.diagnostics) printDiagnostic(stderr, path, d, lang);
   if (!part.ok()) return std::nullopt;
-  return core::design::drawnDimensions(*part.value, general);
+  return *part.value;
+}
+
+std::optional<std::vector<core::cut::DrawnDimension>> readDrawnDimensions(const std::string& path, const std::string& layer,
+                                                                          const std::string& general, double chuckGrip,
+                                                                          core::Lang lang) {
+  const std::optional<core::design::PartDesign> part = readPartDrawing(path, layer, chuckGrip, lang);
+  if (!part) return std::nullopt;
+  return core::design::drawnDimensions(*part, general);
 }
 
 }  // namespace klueng::cli

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "klueng/core/cut/inspection.h"
+#include "klueng/core/design/part_design.h"
 #include "klueng/core/diagnostic.h"
 #include "klueng/core/gcode/checker.h"
 #include "klueng/core/gcode/code_table.h"
@@ -38,6 +39,8 @@ void printCliError(const char* command, const char* code, core::Lang lang, std::
 // A part design (JSON, or a DXF's outline on `layer`) read as its drawn
 // dimensions with their tolerances (`general`: an ISO 2768 class for the ones
 // without); nullopt after printing why (the file's own located messages).
+std::optional<core::design::PartDesign> readPartDrawing(const std::string& path, const std::string& layer,
+                                                       double chuckGrip, core::Lang lang);
 std::optional<std::vector<core::cut::DrawnDimension>> readDrawnDimensions(const std::string& path, const std::string& layer,
                                                                           const std::string& general, double chuckGrip,
                                                                           core::Lang lang);

@@ -161,11 +161,11 @@ int runPrint(const std::vector<std::string>& args) {
                                gcode::InputUnits::Inch
                 ? 1
                 : 0;
-  std::optional<std::vector<cut::DrawnDimension>> drawn;
+  std::optional<design::PartDesign> part;
   if (!o.design.empty()) {
-    drawn = readDrawnDimensions(o.design, {}, {}, config.setup.machine.chuckGrip, o.lang);
-    if (!drawn) return 2;
-    in.drawn = &*drawn;
+    part = readPartDrawing(o.design, {}, config.setup.machine.chuckGrip, o.lang);
+    if (!part) return 2;
+    in.design = &*part;
   }
   // A failed write keeps the old PDF and exits 2 (issue 29).
   if (!reportWrite(o.pdf, writePrintPdf(in, o.pdf), o.lang)) return 2;

@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "klueng/core/cut/inspection.h"
+#include "klueng/core/design/part_design.h"
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/machine/job.h"
 
@@ -19,9 +19,9 @@ struct KluengPrintPdf {
   const klueng::core::machine::MachineSetup* setup; // tools and offsets of the run
   const klueng::core::machine::JobOptions* job;     // dialect, power-on units, subprogram folder
   int inch;                                         // 1: the drawing's dimensions in inches (a G20 program)
-  // The part design's toleranced dimensions (print --design), written after the
-  // sizes they belong to on the drawing; nullptr: none.
-  const std::vector<klueng::core::cut::DrawnDimension>* drawn;
+  // The part design the program was made from (print --design): its tolerances
+  // and roughness marks go on the drawing; nullptr: none.
+  const klueng::core::design::PartDesign* design;
 };
 // 1 with *bytes (malloc'd, the caller frees) and *size; 0 with `error` filled.
 using KluengPrintPdfFn = int (*)(const KluengPrintPdf*, char** bytes, std::size_t* size, char* error,

@@ -65,11 +65,11 @@ TEST(CliPrint, DrawingDimensionsSample01OnALandscapePage) {
 }
 
 // Issue 28 item 3: a program printed with the part design it came from carries
-// the design's tolerances after its diameters (an ISO fit, ±, upper/lower).
+// the design's tolerances after its diameters (an ISO fit, ±) and its roughness marks.
 TEST(CliPrint, TheDesignsTolerancesAreWrittenAfterItsDiameters) {
   const fs::path design = scratch("shaft-tolerances.json");
   std::ofstream(design) << R"({"name": "Step shaft", "material": "aluminium", "stock": {"diameter": 50, "length": 100},
-    "outside": [{"cylinder": 30, "length": 20, "chamfer": 3, "tolerance": "h7"},
+    "outside": [{"cylinder": 30, "length": 20, "chamfer": 3, "tolerance": "h7", "roughness": 1.6},
                 {"cylinder": 40, "length": 20, "round": 2, "tolerance": 0.05},
                 {"cylinder": 46, "length": 20, "chamfer": 1}]})";
   const fs::path pdf = scratch("shaft-tolerances.pdf");
@@ -83,6 +83,8 @@ TEST(CliPrint, TheDesignsTolerancesAreWrittenAfterItsDiameters) {
   EXPECT_NE(text.find("Ø40 ±0.05"), std::string::npos) << text;
   EXPECT_NE(text.find("Ø46"), std::string::npos) << text;
   EXPECT_EQ(text.find("Ø46 "), std::string::npos) << text;  // no tolerance where the design has none
+  EXPECT_NE(text.find("Ra 1.6"), std::string::npos) << text;  // the Ø30's surface finish mark
+  EXPECT_EQ(text.find("Ra ", text.find("Ra 1.6") + 1), std::string::npos) << text;  // and only there
   // A design that cannot be read names its field, and the command exits 2.
   const fs::path bad = scratch("shaft-bad.json");
   std::ofstream(bad) << "{\"outside\": [{\"cylinder\": 30, \"length\": 20, \"tolerance\": \"zz9\"}]}";

@@ -196,6 +196,7 @@ io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::st
       }
       if (o.contains("length_tolerance"))
         readTolerance(o["length_tolerance"], at + ".length_tolerance", step.length, false, step.lengthTolerance);
+      if (o.contains("roughness")) positive(o, "roughness", at + ".roughness", step.roughness);
       into.push_back(step);
     }
   };
@@ -317,6 +318,7 @@ std::string writePartDesign(const PartDesign& part) {
       };
       if (s.tolerance.given()) o["tolerance"] = tolerance(s.tolerance);
       if (s.lengthTolerance.given()) o["length_tolerance"] = tolerance(s.lengthTolerance);
+      if (s.roughness > 0.0) o["roughness"] = s.roughness;
       list.push_back(o);
     }
     return list;

@@ -83,7 +83,7 @@ TEST(PartTolerances, ReadFromJsonAndWrittenBack) {
     "stock": { "diameter": 50, "length": 100 },
     "general_tolerance": "m",
     "outside": [
-      { "cylinder": 30, "length": 20, "chamfer": 3, "tolerance": "h7", "length_tolerance": 0.1 },
+      { "cylinder": 30, "length": 20, "chamfer": 3, "tolerance": "h7", "length_tolerance": 0.1, "roughness": 1.6 },
       { "cylinder": 40, "length": 20, "tolerance": [0.02, -0.01], "length_tolerance": [0, -0.2] },
       { "cylinder": 46, "length": 20, "tolerance": 0.05 }
     ],
@@ -103,6 +103,9 @@ TEST(PartTolerances, ReadFromJsonAndWrittenBack) {
   ASSERT_TRUE(again.ok());
   EXPECT_EQ(writePartDesign(*again.value), writePartDesign(p));
   EXPECT_EQ(again.value->outside[1].tolerance, p.outside[1].tolerance);
+  EXPECT_DOUBLE_EQ(p.outside[0].roughness, 1.6);  // the finish mark's Ra, kept on the way back
+  EXPECT_DOUBLE_EQ(again.value->outside[0].roughness, 1.6);
+  EXPECT_DOUBLE_EQ(again.value->outside[1].roughness, 0.0);
 
   // Every Ø and length, the untoleranced ones (Ø46's length, the bore's) by ISO 2768-m.
   const auto dims = drawnDimensions(p);

@@ -44,6 +44,7 @@ struct OutsideStep {
   // ISO 286 class such as h7, H7), and on the step's length (±); none when empty.
   cut::Tolerance tolerance = {};
   cut::Tolerance lengthTolerance = {};
+  double roughness = 0.0;  // Ra µm on the step's surface: the drawing's finish mark; 0 when none
 };
 using BoreStep = OutsideStep;  // inside: cylinders and tapers, getting no wider toward the chuck
 
