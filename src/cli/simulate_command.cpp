@@ -297,7 +297,7 @@ int runSimulate(const std::vector<std::string>& args) {
     for (const cut::CompDifference& d : c.differences)
       std::fprintf(stderr, "%s:%d:1: %s: %s\n", job.fileOf(Diagnostic{Severity::Note, "", {d.line, 1, 0, d.file}, {}}).c_str(),
                    d.line, std::string(severityName(Severity::Note, o.lang)).c_str(),
-                   cut::describeDifference(d, program, with, o.lang).c_str());
+                   cut::describeDifference(d, program, with, o.lang, units).c_str());
   }
   const std::optional<Diagnostic>& alarm = cut.alarm ? cut.alarm : timeline.alarm;
   if (alarm) printDiagnostic(job.fileOf(*alarm), *alarm, o.lang);

@@ -192,7 +192,7 @@ void PartPanel::analyse() {
     differences_ = new QTreeWidgetItem(list_);
     if (c.other) base_.otherOutline = render::stockShapeFromStock(*c.other).outline;
     for (const cut::CompDifference& d : c.differences) {
-      row(differences_, qs(cut::describeDifference(d, compiled.program, with, lang)),
+      row(differences_, qs(cut::describeDifference(d, compiled.program, with, lang, units_)),
           QStringLiteral("Z%1").arg(qs(units_.position(d.z))), d.line, d.zLeft, d.zRight);
       const double r = d.diameter / 2.0;
       base_.bands.push_back({d.zLeft, d.zRight, r, r + d.radial, QColor(255, 140, 0)});

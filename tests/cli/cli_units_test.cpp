@@ -118,6 +118,11 @@ TEST(CliUnits, AG20ProgramsPartCheckIsInInches) {
   const Output mm = cli("simulate '" + file.string() + "' --part-check --tool 1=cnmg-80-r08 --show-units mm");
   EXPECT_THAT(mm.out, HasSubstr(":14:1: warning W320: Gouge 0.463 mm deep from Z-6.200 to Z-13.550 "
                                 "(deepest at Z-10.275, Ø25.338): "));
+  // What G41/G42 change, in the program's units: the 45° rise keeps 0.8(√2-1) = 0.33 mm = 0.0130″.
+  const Output compare = cli("simulate '" + file.string() + "' --compare-compensation none");
+  EXPECT_THAT(compare.out, HasSubstr(":16:1: note: taper 44.98° line 16: 0.0130 in short without compensation"));
+  const Output compareMm = cli("simulate '" + file.string() + "' --compare-compensation none --show-units mm");
+  EXPECT_THAT(compareMm.out, HasSubstr(":16:1: note: taper 44.98° line 16: 0.33 mm short without compensation"));
   const Output bad = cli("simulate '" + file.string() + "' --show-units feet");
   EXPECT_EQ(bad.exitCode, 2);
   EXPECT_THAT(bad.out, HasSubstr("--show-units"));

@@ -129,7 +129,8 @@ CompComparison compareCompensation(const gcode::Program& program, const machine:
   return out;
 }
 
-std::string describeDifference(const CompDifference& d, const gcode::Program& program, CompareWith with, Lang lang) {
+std::string describeDifference(const CompDifference& d, const gcode::Program& program, CompareWith with, Lang lang,
+                               const UnitFormat& units) {
   const bool th = lang == Lang::Th;
   std::string block = (th ? "บรรทัด " : "line ") + std::to_string(d.line);
   if (d.blockIndex >= 0 && static_cast<std::size_t>(d.blockIndex) < program.blocks.size()) {
@@ -141,11 +142,14 @@ std::string describeDifference(const CompDifference& d, const gcode::Program& pr
   const std::string how = with == CompareWith::NoCompensation
                               ? (th ? "เมื่อไม่ชดเชยรัศมีจมูกมีด" : "without compensation")
                               : (th ? "เมื่อจมูกมีดแหลม (R 0)" : "with a sharp nose (R 0)");
-  const std::string amount = fmt::format("{:.2f}", std::abs(d.normal));
+  const std::string amount = units.inch() ? fmt::format("{:.4f}", units.value(std::abs(d.normal)))
+                                           : fmt::format("{:.2f}", std::abs(d.normal));
+  const std::string unit = units.unitName(lang);
   if (th)
-    return fmt::format("{} {} {}: {} {} มม. {}", what, d.label, block, d.normal > 0.0 ? "เนื้อเหลือเกิน" : "กินลึกเกิน",
-                       amount, how);
-  return fmt::format("{} {} {}: {} mm {} {}", what, d.label, block, amount, d.normal > 0.0 ? "short" : "too deep", how);
+    return fmt::format("{} {} {}: {} {} {} {}", what, d.label, block, d.normal > 0.0 ? "เนื้อเหลือเกิน" : "กินลึกเกิน",
+                       amount, unit, how);
+  return fmt::format("{} {} {}: {} {} {} {}", what, d.label, block, amount, unit, d.normal > 0.0 ? "short" : "too deep",
+                     how);
 }
 
 }  // namespace klueng::core::cut

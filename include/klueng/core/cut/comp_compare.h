@@ -13,6 +13,7 @@
 #include "klueng/core/cut/part_features.h"
 #include "klueng/core/gcode/program.h"
 #include "klueng/core/machine/interpreter.h"
+#include "klueng/core/units.h"
 
 namespace klueng::core::cut {
 
@@ -50,6 +51,8 @@ CompComparison compareCompensation(const gcode::Program& program, const machine:
 
 // "chamfer N350: 0.33 mm short without compensation" / in Thai; `program`
 // gives the block's N number (else "line 41").
-std::string describeDifference(const CompDifference& d, const gcode::Program& program, CompareWith with, Lang lang);
+// `units`: the amount in mm (0.33 mm) or, for an inch program, in inches (0.0130 in).
+std::string describeDifference(const CompDifference& d, const gcode::Program& program, CompareWith with, Lang lang,
+                               const UnitFormat& units = {});
 
 }  // namespace klueng::core::cut
