@@ -166,7 +166,8 @@ std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part,
             const double x = left ? top.x() - 0.6 * mm - textH : top.x() + 0.6 * mm;
             const QRectF rect(x, top.y() + at * span - w / 2.0, textH, w);
             if (first.isNull()) first = rect;
-            if (!touchesAny(rect, frame.partLines) &&
+            // Half a millimetre clear of the part's lines: a thread's teeth are close-set.
+            if (!touchesAny(rect.adjusted(-0.5 * mm, -0.5 * mm, 0.5 * mm, 0.5 * mm), frame.partLines) &&
                 std::none_of(texts.begin(), texts.end(), [&](const QRectF& t) { return t.intersects(rect); }))
               return rect;
           }
