@@ -13,32 +13,12 @@
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/io/tool_library.h"
 #include "klueng/core/machine/setup_files.h"
+#include "test_support.h"
 
 namespace klueng::core::machine {
 namespace {
 
 namespace fs = std::filesystem;
-
-class Folder {
- public:
-  Folder() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::temp_directory_path() / ("klueng-jobfile-" + std::string(info->name()) + "-" + std::to_string(::getpid()));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~Folder() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  std::string write(const std::string& name, const std::string& text) const {
-    std::ofstream(path_ / name, std::ios::binary) << text;
-    return (path_ / name).string();
-  }
-
- private:
-  fs::path path_;
-};
 
 const LoadedSetup& shipped() {
   static const LoadedSetup setup = loadMachineSetup(KLUENG_SOURCE_DIR);
@@ -74,7 +54,7 @@ TEST(LoadJobFile, AFileThatCannotBeReadIsUnreadable) {
 }
 
 TEST(LoadJobFile, APlainProgramWithASubprogramFileIsParsedOnceEach) {
-  Folder folder;
+  const testing::ScratchFolder folder{"jobfile"};
   // A plain file as a shop writes it: no header, the stock only in the approach.
   const std::string main = folder.write("MAIN.nc",
                                         "O0100\n"
@@ -110,7 +90,7 @@ TEST(LoadJobFile, APlainProgramWithASubprogramFileIsParsedOnceEach) {
 // the call says so (E416), not "neither in this file nor in its folder" (E404); a
 // real file under another of its names is still taken.
 TEST(LoadJobFile, ASubprogramFileThatIsAFolderIsSaidToBeOne) {
-  Folder folder;
+  const testing::ScratchFolder folder{"jobfile"};
   const std::string main = folder.write("MAIN.nc", "O0100\nG21\nM98 P1000\nM98 P2000\nM30\n");
   fs::create_directory(fs::path(main).parent_path() / "O1000.nc");
   fs::create_directory(fs::path(main).parent_path() / "O2000.nc");

@@ -21,28 +21,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class Folder {
- public:
-  Folder() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::temp_directory_path() / ("klueng-machines-" + std::string(info->name()) + "-" + std::to_string(::getpid()));
-    fs::remove_all(path_);
-    fs::create_directories(path_ / "machines");
-  }
-  ~Folder() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  std::string write(const std::string& name, const std::string& text) const {
-    std::ofstream(path_ / name, std::ios::binary) << text;
-    return (path_ / name).string();
-  }
-  std::string path() const { return path_.string(); }
-
- private:
-  fs::path path_;
-};
-
 // A system-B program in the habits of Brazilian course programs (issue 27):
 // G90 G95 G21 on one line, G92 S, G75 used for facing, two-block G71/G70 with an
 // indented profile, G78 with X-only repeat lines, G33 passes (one of them under
@@ -152,7 +130,7 @@ std::string traceOf(const std::string& text, gcode::Dialect dialect, const Machi
 }
 
 TEST(MachineFiles, UserFolderMachineRunsAProgram) {
-  Folder folder;
+  const testing::ScratchFolder folder{"machines", "machines"};
   folder.write("machines/school-lathe.machine",
                "# our lathe\n"
                "base = fanuc\n"
@@ -189,7 +167,7 @@ TEST(MachineFiles, UserFolderMachineRunsAProgram) {
 }
 
 TEST(MachineFiles, BrokenMachineCfgKeyIsLocated) {
-  Folder folder;
+  const testing::ScratchFolder folder{"machines", "machines"};
   const std::string file = folder.write("bad.machine",
                                         "base = fanuc\n"
                                         "id = bad\n"

@@ -3,12 +3,44 @@
 // a known machine setup.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
 #include <string_view>
 
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/machine/interpreter.h"
 
 namespace klueng::core::machine::testing {
+
+// A scratch folder of its own per test (and process), removed afterwards:
+// `prefix` names the suite, `sub` a folder made inside it.
+class ScratchFolder {
+ public:
+  explicit ScratchFolder(const std::string& prefix, const std::string& sub = {}) {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    path_ = std::filesystem::temp_directory_path() /
+            ("klueng-" + prefix + "-" + std::string(info->name()) + "-" + std::to_string(::getpid()));
+    std::filesystem::remove_all(path_);
+    std::filesystem::create_directories(sub.empty() ? path_ : path_ / sub);
+  }
+  ~ScratchFolder() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  ScratchFolder(const ScratchFolder&) = delete;
+  ScratchFolder& operator=(const ScratchFolder&) = delete;
+  std::string write(const std::string& name, const std::string& text) const {
+    std::ofstream(path_ / name, std::ios::binary) << text;
+    return (path_ / name).string();
+  }
+  std::string path() const { return path_.string(); }
+
+ private:
+  std::filesystem::path path_;
+};
 
 // The shipped defaults: rapids X 4000 / Z 8000 mm/min, max 3000 rpm, tool at
 // X0 Z300 = reference point. Offset 01: R0.8 tip 3 (outside turning tool),
