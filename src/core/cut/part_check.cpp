@@ -65,10 +65,9 @@ bool hasArea(const Trapezoid& t) {
 }
 
 // Moves whose form is the tool's own: threading passes, drilling on the axis.
-bool keepsWholeTool(const machine::Move& m) {
-  if (m.kind == machine::MoveKind::Thread) return true;
-  return std::abs(m.path.start.y()) < 1e-6 && std::abs(m.path.end.y()) < 1e-6;
-}
+bool onAxis(const machine::Move& m) { return std::abs(m.path.start.y()) < 1e-6 && std::abs(m.path.end.y()) < 1e-6; }
+
+bool keepsWholeTool(const machine::Move& m) { return m.kind == machine::MoveKind::Thread || onAxis(m); }
 
 
 struct Finding {
@@ -111,8 +110,6 @@ std::optional<double> radiusAt(const Segment& s, double z, bool outside) {
   }
   return best;
 }
-
-bool onAxis(const machine::Move& m) { return std::abs(m.path.start.y()) < 1e-6 && std::abs(m.path.end.y()) < 1e-6; }
 
 // Below the centre line (a face past the centre, a tool working beyond it) the
 // path's radius is not the part's.
