@@ -87,6 +87,7 @@ void Document::reset(const core::io::JobHeader& header) {
   file_.gcodeFirstLine = 7;
   fileDiagnostics_.clear();
   headerModified_ = false;
+  design_.reset();
   path_.clear();
   emit pathChanged(path_);
   emit headerChanged();
@@ -97,6 +98,7 @@ void Document::adopt(const LoadedProgram& loaded) {
   fileDiagnostics_ = loaded.diagnostics;
   stockNotes_ = loaded.stockNotes;
   headerModified_ = false;
+  design_.reset();
   path_ = loaded.path;
   emit pathChanged(path_);
   emit headerChanged();

@@ -9,6 +9,7 @@
 #include <optional>
 #include <vector>
 
+#include "klueng/core/design/part_design.h"
 #include "klueng/core/diagnostic.h"
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/machine/interpreter.h"
@@ -93,6 +94,11 @@ class Document : public QObject {
 
   bool isHeaderModified() const { return headerModified_; }
 
+  // The Part Designer's design this program was created from, for the drawing's
+  // tolerances and finish marks (issue 28 item 3); none for a program opened or typed.
+  const std::optional<core::design::PartDesign>& design() const { return design_; }
+  void setDesign(const core::design::PartDesign& design) { design_ = design; }
+
  signals:
   void headerChanged();
   void pathChanged(const QString& path);
@@ -103,6 +109,7 @@ class Document : public QObject {
   std::vector<core::Diagnostic> fileDiagnostics_;
   std::vector<core::Diagnostic> stockNotes_;
   bool headerModified_ = false;
+  std::optional<core::design::PartDesign> design_;
 };
 
 }  // namespace klueng::gui

@@ -99,6 +99,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
     source.setup = toolInference_.setup;
     source.dialect = dialect_;
     source.units = displayUnits();
+    source.design = document_->design();
     return source;
   });
   connect(reports_, &ReportController::message, statusBar(), &QStatusBar::showMessage);

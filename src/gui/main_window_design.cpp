@@ -52,6 +52,7 @@ void MainWindow::showPartDesigner() {
     if (!job.programmer.empty()) h.programmer = job.programmer;
     if (!job.material.empty()) h.material = job.material;
     document_->setHeader(h);
+    document_->setDesign(designer_->design());
     setDialect(designer_->dialect());
     raise();
     activateWindow();

@@ -16,6 +16,7 @@
 
 #include "gui/file_save.h"
 #include "gui/language.h"
+#include "render/drawing_dimensions.h"
 
 namespace klueng::gui {
 
@@ -41,6 +42,7 @@ render::ReportData ReportController::reportData(const Source& source, bool withP
   data.fileName = source.displayName;
   data.date = QDate::currentDate();
   data.units = source.units;
+  if (source.design) data.marks = render::designMarks(*source.design);
   QApplication::setOverrideCursor(Qt::WaitCursor);
   render::addRunResults(data, source.setup, source.dialect, reportLanguage(), withPart);  // one run for both
   QApplication::restoreOverrideCursor();

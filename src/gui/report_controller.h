@@ -5,7 +5,9 @@
 #include <QObject>
 #include <QString>
 #include <functional>
+#include <optional>
 
+#include "klueng/core/design/part_design.h"
 #include "klueng/core/gcode/code_table.h"
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/machine/interpreter.h"
@@ -29,6 +31,7 @@ class ReportController : public QObject {
     core::machine::MachineSetup setup;  // the job's tools, as a run uses them
     core::gcode::Dialect dialect = core::gcode::Dialect::Fanuc;
     core::UnitFormat units;  // the drawing's dimensions (View ▸ Units shown)
+    std::optional<core::design::PartDesign> design;  // the Part Designer's, when the program came from it
   };
 
   ReportController(QWidget* window, std::function<Source()> source);

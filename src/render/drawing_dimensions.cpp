@@ -314,4 +314,42 @@ void paintDimensions(QPainter& painter, const std::vector<DimensionItem>& items,
   painter.restore();
 }
 
+DesignMarks designMarks(const core::design::PartDesign& design) {
+  const std::vector<core::cut::DrawnDimension> drawn = core::design::drawnDimensions(design);
+  struct Finish {
+    core::cut::FeatureSide side;
+    double diameter, zRight, zLeft, ra;
+  };
+  std::vector<Finish> finishes;
+  for (const auto side : {core::cut::FeatureSide::Outside, core::cut::FeatureSide::Inside}) {
+    double z = 0.0;
+    for (const core::design::OutsideStep& s : side == core::cut::FeatureSide::Outside ? design.outside : design.inside) {
+      if (s.kind == core::design::StepKind::Cylinder && s.roughness > 0.0)
+        finishes.push_back({side, s.diameter, z, z - s.length, s.roughness});
+      z -= s.length;
+    }
+  }
+  DesignMarks marks;
+  marks.surfaceFinish = [finishes](const core::cut::PartFeature& f) {
+    if (f.kind != core::cut::FeatureKind::Cylinder) return QString();
+    for (const Finish& s : finishes)
+      if (s.side == f.side && std::abs(s.diameter - f.diameter) <= 0.02 &&
+          std::min(s.zRight, f.zRight) > std::max(s.zLeft, f.zLeft))
+        return QStringLiteral("Ra %1").arg(s.ra);
+    return QString();
+  };
+  marks.tolerance = [drawn](const core::cut::PartFeature& f) {
+    if (f.kind != core::cut::FeatureKind::Cylinder) return QString();
+    for (const core::cut::DrawnDimension& d : drawn) {
+      if (d.kind != core::cut::DimensionKind::Diameter || d.side != f.side || !d.tolerance.given() ||
+          d.tolerance.text.rfind("ISO 2768", 0) == 0)
+        continue;
+      const bool overlaps = std::min(d.zRight, f.zRight) > std::max(d.zLeft, f.zLeft);
+      if (overlaps && std::abs(d.nominal - f.diameter) <= 0.02) return QString::fromStdString(d.tolerance.text);
+    }
+    return QString();
+  };
+  return marks;
+}
+
 }  // namespace klueng::render

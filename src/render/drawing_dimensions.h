@@ -14,6 +14,7 @@
 #include <QString>
 
 #include "klueng/core/cut/part_features.h"
+#include "klueng/core/design/part_design.h"
 #include "klueng/core/units.h"
 
 namespace klueng::render {
@@ -34,6 +35,11 @@ struct DesignMarks {
   std::function<QString(const core::cut::PartFeature&)> tolerance;
   std::function<QString(const core::cut::PartFeature&)> surfaceFinish;
 };
+// The marks a part design gives its drawing: its own tolerance after the Ø it
+// belongs to (a general ISO 2768 class is the title block's, not each size's),
+// and its roughness on the surface. `print --design` and the window's Export PDF
+// of a program made in the Part Designer both use it.
+DesignMarks designMarks(const core::design::PartDesign& design);
 
 struct DimensionFrame {
   std::function<QPointF(double z, double radius)> toPage;  // part mm -> page

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "render/drawing_dimensions.h"
 #include "render/module_bytes.h"
 #include "render/offscreen_app.h"
 #include "render/print_pdf_input.h"
@@ -35,44 +36,7 @@ extern "C" __attribute__((visibility("default"))) int klueng_print_pdf(const Klu
   data.fileName = QString::fromUtf8(in->fileName ? in->fileName : "");
   data.units = core::UnitFormat(in->inch ? core::DisplayUnits::Inch : core::DisplayUnits::Mm);
   render::addRunResults(data, *in->setup, *in->job, lang, in->drawingSheet != 0);
-  if (in->design) {
-    // A design's own tolerance after the Ø it belongs to (a general ISO 2768
-    // class is the title block's, not each size's), and its roughness on the surface.
-    const std::vector<core::cut::DrawnDimension> drawn = core::design::drawnDimensions(*in->design);
-    struct Finish {
-      core::cut::FeatureSide side;
-      double diameter, zRight, zLeft, ra;
-    };
-    std::vector<Finish> finishes;
-    for (const auto side : {core::cut::FeatureSide::Outside, core::cut::FeatureSide::Inside}) {
-      double z = 0.0;
-      for (const core::design::OutsideStep& s :
-           side == core::cut::FeatureSide::Outside ? in->design->outside : in->design->inside) {
-        if (s.kind == core::design::StepKind::Cylinder && s.roughness > 0.0)
-          finishes.push_back({side, s.diameter, z, z - s.length, s.roughness});
-        z -= s.length;
-      }
-    }
-    data.marks.surfaceFinish = [finishes](const core::cut::PartFeature& f) {
-      if (f.kind != core::cut::FeatureKind::Cylinder) return QString();
-      for (const Finish& s : finishes)
-        if (s.side == f.side && std::abs(s.diameter - f.diameter) <= 0.02 &&
-            std::min(s.zRight, f.zRight) > std::max(s.zLeft, f.zLeft))
-          return QStringLiteral("Ra %1").arg(s.ra);
-      return QString();
-    };
-    data.marks.tolerance = [drawn](const core::cut::PartFeature& f) {
-      if (f.kind != core::cut::FeatureKind::Cylinder) return QString();
-      for (const core::cut::DrawnDimension& d : drawn) {
-        if (d.kind != core::cut::DimensionKind::Diameter || d.side != f.side || !d.tolerance.given() ||
-            d.tolerance.text.rfind("ISO 2768", 0) == 0)
-          continue;
-        const bool overlaps = std::min(d.zRight, f.zRight) > std::max(d.zLeft, f.zLeft);
-        if (overlaps && std::abs(d.nominal - f.diameter) <= 0.02) return QString::fromStdString(d.tolerance.text);
-      }
-      return QString();
-    };
-  }
+  if (in->design) data.marks = render::designMarks(*in->design);
 
   // Into memory: QPdfWriter does not report a failed file write (issue 29), the CLI's writer does.
   QBuffer pdf;

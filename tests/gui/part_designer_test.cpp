@@ -14,6 +14,9 @@
 #include <QPushButton>
 #include <QTableView>
 #include <QPointer>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QToolButton>
 #include <QUndoStack>
@@ -35,6 +38,15 @@ namespace {
 bool waitLoop(gui::PartDesignerDialog* d) {
   return QTest::qWaitFor([d] { return !d->isRunning() && d->lastLoop(); }, 30000) &&
          QTest::qWaitFor([d] { return !d->isRunning(); }, 30000);
+}
+
+// One page of a PDF as text (poppler's pdftotext, as the report tests read them).
+QString pdfPage(const QString& pdf, int page) {
+  QProcess p;
+  p.start(QStringLiteral("pdftotext"), {QStringLiteral("-f"), QString::number(page), QStringLiteral("-l"),
+                                        QString::number(page), QStringLiteral("-raw"), pdf, QStringLiteral("-")});
+  p.waitForFinished(30000);
+  return QString::fromUtf8(p.readAllStandardOutput());
 }
 
 QStringList lines(QListWidget* list) {
@@ -260,6 +272,40 @@ class PartDesignerTest : public QObject {
     QFile::remove(broken);
     w.document()->restoreHeader({w.document()->header(), {}, false});
     w.editor()->document()->setModified(false);
+  }
+
+  // Issue 28 item 3: a program made with Create program prints its drawing with the
+  // design's own tolerance and finish mark (as `print --design` does); another
+  // program opened afterwards prints none of them.
+  void theCreatedProgramsDrawingCarriesTheDesignsMarks() {
+    gui::MainWindow w;
+    auto* d = openDesigner(w);
+    QVERIFY(d);
+    QVERIFY(d->openFile(QStringLiteral(KLUENG_SOURCE_DIR "/resources/parts/step-shaft.json")));
+    QVERIFY(waitLoop(d));
+    core::design::PartDesign marked = d->design();
+    marked.outside.at(1).tolerance = {0.0, -0.025, "h7"};  // the Ø40 seat
+    marked.outside.at(0).roughness = 1.6;                  // the Ø30 spigot
+    d->setDesign(marked, QStringLiteral("marks"));
+    QVERIFY(waitLoop(d));
+    d->findChild<QPushButton*>(QStringLiteral("designCreateProgram"))->click();
+    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    QTemporaryDir dir;
+    const QString pdf = dir.filePath(QStringLiteral("designed.pdf"));
+    QVERIFY(w.exportPdf(pdf));
+    const QString drawing = pdfPage(pdf, 2);
+    QVERIFY2(drawing.contains(QRegularExpression(QStringLiteral("Ø40\\s+h7"))), qPrintable(drawing));
+    QVERIFY2(drawing.contains(QStringLiteral("Ra 1.6")), qPrintable(drawing));
+
+    w.editor()->document()->setModified(false);
+    w.document()->restoreHeader({w.document()->header(), {}, false});
+    QVERIFY(w.openFile(QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt")));
+    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    const QString plain = dir.filePath(QStringLiteral("plain.pdf"));
+    QVERIFY(w.exportPdf(plain));
+    const QString again = pdfPage(plain, 2);
+    QVERIFY2(!again.contains(QStringLiteral("h7")) && !again.contains(QStringLiteral("Ra 1.6")), qPrintable(again));
+    d->close();
   }
 };
 
