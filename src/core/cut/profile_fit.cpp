@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <vector>
 
 namespace klueng::core::cut::fit {
 
@@ -194,6 +196,43 @@ void resolveJoins(std::vector<Piece>& pieces, const std::vector<double>& z, doub
   }
 }
 
+// The mean spacing of the teeth of a chain of valleys (extremes v, v+2, …, w),
+// read where each flank crosses the half-depth radius, interpolated between
+// columns, so the pitch is not rounded to whole columns. Falling and rising
+// flanks are measured apart (a column's sampling shifts each kind alike) and
+// averaged by their count. 0 when fewer than two flanks of a kind are found.
+template <class ExtremeAt>
+double flankPitch(const std::vector<double>& z, const std::vector<double>& r, std::size_t v, std::size_t w,
+                  std::size_t count, ExtremeAt extremeAt) {
+  const double root = r[extremeAt(v).from];
+  double crest = std::numeric_limits<double>::infinity();
+  for (std::size_t e = v + 1; e < w; e += 2) crest = std::min(crest, r[extremeAt(e).from]);
+  if (!std::isfinite(crest) || crest - root < 0.05) return 0.0;
+  const double mid = (root + crest) / 2.0;
+  // Where r crosses `mid` between columns a and b (a < b), interpolated.
+  const auto crossing = [&](int a, int b) -> std::optional<double> {
+    for (int k = a; k < b; ++k)
+      if ((r[k] - mid) * (r[k + 1] - mid) <= 0.0 && r[k] != r[k + 1])
+        return z[k] + (mid - r[k]) / (r[k + 1] - r[k]) * (z[k + 1] - z[k]);
+    return std::nullopt;
+  };
+  std::vector<double> falling, rising;
+  for (std::size_t e = v; e <= w; e += 2) {
+    if (e > 0)
+      if (const auto at = crossing(extremeAt(e - 1).to, extremeAt(e).from)) falling.push_back(*at);
+    if (e + 1 < count)
+      if (const auto at = crossing(extremeAt(e).to, extremeAt(e + 1).from)) rising.push_back(*at);
+  }
+  double sum = 0.0;
+  std::size_t gaps = 0;
+  for (const std::vector<double>* flanks : {&falling, &rising})
+    if (flanks->size() >= 2) {
+      sum += flanks->back() - flanks->front();
+      gaps += flanks->size() - 1;
+    }
+  return gaps > 0 ? sum / static_cast<double>(gaps) : 0.0;
+}
+
 std::vector<ThreadRun> findThreads(const std::vector<double>& z, const std::vector<double>& r, int first, int last,
                                    double columnWidth) {
   constexpr double kHysteresis = 0.05;  // mm of radius a flank must fall or rise to count
@@ -288,8 +327,10 @@ std::vector<ThreadRun> findThreads(const std::vector<double>& z, const std::vect
       if (k > t.first && std::abs(r[k] - r[k - 1]) > 3.0 * columnWidth) sloping = false;
     }
     if (sloping && t.crest - t.root >= 0.1) {
-      // The pitch over every tooth, not just the first two.
-      t.pitch = (centreZ(ext[w]) - centreZ(ext[v])) / static_cast<double>((w - v) / 2);
+      // The pitch over every tooth, not just the first two: from where the flanks
+      // cross mid-height, read between columns, so it is not rounded to whole columns.
+      t.pitch = flankPitch(z, r, v, w, ext.size(), [&](std::size_t e) { return ext[e]; });
+      if (t.pitch <= 0.0) t.pitch = (centreZ(ext[w]) - centreZ(ext[v])) / static_cast<double>((w - v) / 2);
       out.push_back(t);
       v = w0 + 2;
     } else {

@@ -1,5 +1,6 @@
 // The finished part's features (issue 10, item 1): profiles carved by hand
 // into a stock, then the real samples through the whole pipeline.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -205,6 +206,26 @@ TEST(PartFeatures, Sample01HasTheDrawnFeatures) {
   const std::vector<double> expected{0.0, -20.0, -40.0, -60.0, -100.0};
   ASSERT_EQ(shoulders.size(), expected.size());
   for (std::size_t k = 0; k < expected.size(); ++k) EXPECT_NEAR(shoulders[k], expected[k], 1e-9);
+}
+
+// Issue 28: the pitch is read between the 0.05 mm columns, so a G76 thread's
+// label says the pitch it was cut with (sample 06 read "M30×1.49" when the teeth
+// were placed by whole columns).
+TEST(PartFeatures, AThreadsPitchIsReadBetweenColumns) {
+  for (const double pitch : {1.0, 1.25, 1.5, 1.75, 2.0, 25.4 / 16.0, 25.4 / 11.5}) {
+    const double height = 0.6134 * pitch;  // ISO 68 external thread, on the radius
+    const double minor = 30.0 - 2.0 * height;
+    const std::string text = fmt::format(
+        "O0100\nN10 G21 G40 G97 G99\nN20 T0101\nN30 S1200 M03\nN40 G00 X32. Z2.\nN50 G01 X30. F0.2\n"
+        "N60 Z-30.\nN70 X32.\nN80 G00 X100. Z100.\nN90 T0303\nN100 S800 M03\nN110 G00 X32. Z5.\n"
+        "N120 G76 P010060 Q50 R0.05\nN130 G76 X{:.3f} Z-20. P{:.0f} Q250 F{:.4f}\nN140 G00 X100. Z100.\nN150 M30\n",
+        minor, height * 1000.0, pitch);
+    const testing::CutRun c = cutText(text);
+    const PartFeatures p = partFeatures(c.sim->stock());
+    const PartFeature* t = find(p.outside, FeatureKind::Thread, -10.0);
+    ASSERT_NE(t, nullptr) << pitch;
+    EXPECT_NEAR(t->pitch, pitch, 0.002) << text;
+  }
 }
 
 TEST(PartFeatures, Sample02ThreadIsFoundWithItsPitch) {
