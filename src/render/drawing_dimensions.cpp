@@ -6,6 +6,7 @@
 #include <QFontMetricsF>
 
 #include <algorithm>
+#include <functional>
 #include <array>
 #include <cmath>
 
@@ -192,7 +193,18 @@ std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part,
   }
 
   // Step lengths chained from the right face, and the overall length under them.
-  const std::vector<double> shoulders = part.shoulderZ();
+  // A taper's ends are stations too: a cylinder running into a taper has no face,
+  // and without them the drawing would not say where the taper starts.
+  std::vector<double> shoulders = part.shoulderZ();
+  for (const auto* list : {&part.outside, &part.inside})
+    for (const PartFeature& f : *list)
+      if (f.kind == FeatureKind::Taper && !isMachiningTrace(f, part)) {
+        shoulders.push_back(f.zRight);
+        shoulders.push_back(f.zLeft);
+      }
+  std::sort(shoulders.begin(), shoulders.end(), std::greater<>());
+  shoulders.erase(std::unique(shoulders.begin(), shoulders.end(), [](double a, double b) { return a - b < 0.01; }),
+                  shoulders.end());
   const double row1 = bottomY + 7.0 * mm, row2 = bottomY + 15.0 * mm;
   const auto lengthItem = [&](double za, double zb, double rowY) {
     DimensionItem d;

@@ -93,6 +93,27 @@ TEST(CliPrint, TheDesignsTolerancesAreWrittenAfterItsDiameters) {
   EXPECT_NE(err.find("outside[0].tolerance"), std::string::npos) << err;
 }
 
+// A cylinder running into a taper has no face between them: the chained lengths
+// still say where the taper starts and ends (20, 20, 10 and 50 overall), and no
+// radius callout comes from the compensated corners.
+TEST(CliPrint, ATapersEndsAreDimensionedAlongTheAxis) {
+  const fs::path prog = scratch("taper-pin.nc");
+  std::ofstream(prog) << "%\nO2001 (TAPER PIN 1:5)\nG21 G40 G99\nT0101\nG50 S2500\nG96 S200 M03\n"
+                         "G00 X34. Z2. M08\nG01 Z0. F0.15\nX-1.6\nG00 X34. Z2.\nG42 G00 X20. Z2.\n"
+                         "G01 Z-20. F0.15\nX28. Z-40.\nZ-50.\nX34.\nG40 G00 X100. Z100.\nM30\n%\n";
+  const fs::path pdf = scratch("taper-pin.pdf");
+  std::string err;
+  ASSERT_EQ(print("'" + prog.string() + "' --sheet drawing --stock 32x80 --lang en --pdf '" + pdf.string() + "'", &err),
+            0)
+      << err;
+  const std::string text = pdfText(pdf);
+  const std::string lengths = text.substr(0, text.find("Project"));
+  for (const char* s : {"Ø20", "Ø28", "11.31°", " 10 ", " 20 "})
+    EXPECT_NE(lengths.find(s), std::string::npos) << s << "\n" << text;
+  EXPECT_NE(text.find(" 50\n"), std::string::npos) << text;  // the overall length on its own row
+  EXPECT_EQ(std::count(lengths.begin(), lengths.end(), 'R'), 0) << text;
+}
+
 TEST(CliPrint, BothSheetsInThaiAndTheThreadCallout) {
   const fs::path pdf = scratch("02-both.pdf");
   std::string err;

@@ -216,8 +216,48 @@ void absorbSlivers(std::vector<PartFeature>& fs) {
   }
 }
 
+// Where the nose rolled over a shallow corner (a cylinder running into a 10°
+// taper) it leaves an arc only a few columns long, whose fitted radius is noise
+// (R7 for an R0.8 nose). A draughtsman draws the corner the program made: the
+// two lines meet there, and the arc is dropped.
+void absorbShallowFillets(std::vector<PartFeature>& fs) {
+  constexpr double kShallowCorner = 35.0 * M_PI / 180.0;
+  constexpr double kChordSlack = 0.15;  // mm: three columns either end
+  const auto isLine = [](const PartFeature& f) {
+    return (f.kind == FeatureKind::Cylinder || f.kind == FeatureKind::Taper) && f.length() > 0.0;
+  };
+  const auto slope = [](const PartFeature& f) { return (f.diameterRight - f.diameterLeft) / 2.0 / f.length(); };
+  for (std::size_t k = 1; k + 1 < fs.size(); ++k) {
+    const PartFeature& arc = fs[k];
+    if (arc.kind != FeatureKind::Arc || arc.convex) continue;
+    PartFeature& left = fs[k - 1];
+    PartFeature& right = fs[k + 1];
+    if (!isLine(left) || !isLine(right)) continue;
+    const double bl = slope(left), br = slope(right);
+    const double turn = std::abs(std::atan(bl) - std::atan(br));
+    if (turn >= kShallowCorner || std::abs(bl - br) < 1e-9) continue;
+    const double chord = std::hypot(arc.zRight - arc.zLeft, (arc.diameterRight - arc.diameterLeft) / 2.0);
+    if (chord > 2.0 * kNoseFilletRadius * std::sin(turn / 2.0) + kChordSlack) continue;
+    const double al = left.diameterLeft / 2.0 - bl * left.zLeft, ar = right.diameterLeft / 2.0 - br * right.zLeft;
+    const double z = (ar - al) / (bl - br);
+    if (z < arc.zLeft - kChordSlack || z > arc.zRight + kChordSlack || z <= left.zLeft || z >= right.zRight) continue;
+    left.zRight = z;
+    left.diameterRight = 2.0 * (al + bl * z);
+    right.zLeft = z;
+    right.diameterLeft = 2.0 * (ar + br * z);
+    for (PartFeature* line : {&left, &right})
+      if (line->kind == FeatureKind::Taper) {
+        line->axialLength = line->length();
+        line->radialHeight = std::abs(line->diameterRight - line->diameterLeft) / 2.0;
+      }
+    fs.erase(fs.begin() + static_cast<long>(k));
+    --k;
+  }
+}
+
 void classify(std::vector<PartFeature>& fs) {
   absorbSlivers(fs);
+  absorbShallowFillets(fs);
   const long n = static_cast<long>(fs.size());
   for (long k = 0; k < n; ++k) {
     PartFeature& f = fs[static_cast<std::size_t>(k)];

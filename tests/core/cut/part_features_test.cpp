@@ -208,6 +208,36 @@ TEST(PartFeatures, Sample01HasTheDrawnFeatures) {
   for (std::size_t k = 0; k < expected.size(); ++k) EXPECT_NEAR(shoulders[k], expected[k], 1e-9);
 }
 
+// A cylinder running into a 1:5 taper, cut without G41/G42: the R0.8 nose rolls
+// over the shallow corner and leaves a few columns of arc whose fitted radius
+// was noise (an "R7" callout). The corner is drawn as the two lines meeting,
+// where the uncompensated nose put them: the taper's surface runs parallel to
+// the programmed one, r(1 + b - sqrt(1 + b²))/b further right along Z (b = 0.2).
+TEST(PartFeatures, AShallowCornerIsTheTwoLinesMeetingNotAnArc) {
+  const testing::CutRun c = cutText(
+      "Taper pin\nPin TP-1\nSteel S45C\n132\n180\nKlueng tests\nO2001 (1:5 TAPER PIN)\nG21 G40 G99\nT0101\nG96 S200 M03\nG50 S2500\nG00 X34. Z2. M08\n"
+      "G01 Z0. F0.15\nX-1.6\nG00 X20. Z2.\nG01 Z-20.\nX28. Z-40.\nZ-50.\nX34.\nG00 X100. Z100.\nM30\n");
+  const PartFeatures p = partFeatures(c.sim->stock());
+  const double r = 0.8, b = 0.2;
+  const double shift = r * (1.0 + b - std::sqrt(1.0 + b * b)) / b;
+  const PartFeature* pin = find(p.outside, FeatureKind::Cylinder, -10.0);
+  const PartFeature* taper = find(p.outside, FeatureKind::Taper, -30.0);
+  ASSERT_NE(pin, nullptr);
+  ASSERT_NE(taper, nullptr);
+  EXPECT_NEAR(pin->diameter, 20.0, 0.005);
+  EXPECT_DOUBLE_EQ(pin->zLeft, taper->zRight);  // nothing between them
+  EXPECT_NEAR(taper->zRight, -20.0 + shift, 0.01);
+  EXPECT_NEAR(taper->zLeft, -40.0 + shift, 0.01);
+  EXPECT_NEAR(taper->diameterRight, 20.0, 0.01);
+  EXPECT_NEAR(taper->diameterLeft, 28.0, 0.01);
+  EXPECT_NEAR(taper->angle, std::atan(b) * 180.0 / M_PI, 0.01);
+  for (const PartFeature& f : p.outside) {
+    if (f.kind == FeatureKind::Arc) {
+      EXPECT_LT(f.zRight, -45.0) << describeFeature(f, Lang::En);  // only the Ø28 shoulder's
+    }
+  }
+}
+
 // Issue 28: the pitch is read between the 0.05 mm columns, so a G76 thread's
 // label says the pitch it was cut with (sample 06 read "M30×1.49" when the teeth
 // were placed by whole columns).
