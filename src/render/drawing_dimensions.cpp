@@ -9,6 +9,7 @@
 #include <functional>
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace klueng::render {
 
@@ -57,9 +58,26 @@ bool isMachiningTrace(const PartFeature& f, const core::cut::PartFeatures& part)
       return false;
   }
   if (f.kind == FeatureKind::Arc) return false;
-  // A drill's point: a bevel in the bore that runs down to the axis.
+  // A drill's point: a bevel in the bore that runs down to the axis, or one of
+  // the bevels a point is fitted as, narrowing deeper down to the axis or to
+  // the part's left end (a point left in the bar the part is cut from). A bevel
+  // at the part's right face is the bore's mouth.
   const double smaller = std::min(f.diameterLeft, f.diameterRight);
   if (f.side == FeatureSide::Inside && smaller <= 2.0 * core::cut::kPipRadius + 0.1) return true;
+  if (f.side == FeatureSide::Inside && f.diameterLeft < f.diameterRight && f.zRight < part.zRight - 0.01) {
+    const auto at = std::find_if(part.inside.begin(), part.inside.end(), [&](const PartFeature& g) {
+      return g.kind == f.kind && g.zLeft == f.zLeft && g.zRight == f.zRight;
+    });
+    for (auto g = at; g != part.inside.end(); ++g) {
+      const bool narrowing = (g->kind == FeatureKind::Taper || g->kind == FeatureKind::Chamfer) &&
+                             g->diameterLeft < g->diameterRight;
+      const bool step = g->kind == FeatureKind::Cylinder && g->length() < kSliver;
+      if (!narrowing && !step) break;
+      if (std::min(g->diameterLeft, g->diameterRight) <= 2.0 * core::cut::kPipRadius + 0.1 ||
+          g->zLeft <= part.zLeft + 0.01)
+        return true;
+    }
+  }
   // A thread's run-out: a bevel within the thread's depth at its far end (the
   // lead-in chamfer at the start, which goes deeper than the root, is kept).
   const auto& list = f.side == FeatureSide::Inside ? part.inside : part.outside;
@@ -136,7 +154,15 @@ std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part,
   for (const auto* list : {&part.outside, &part.inside}) {
     for (const PartFeature& f : *list) {
       if (f.kind != FeatureKind::Cylinder && f.kind != FeatureKind::Thread) continue;
-      if (std::abs(pageX(f.zRight) - pageX(f.zLeft)) < 2.5 * mm) continue;  // too short on paper to take a line
+      // A step short on paper (a flange's 4 mm spigot at 1:5) still gets its Ø, on
+      // its middle, unless another Ø line is drawn right there; a fin under 1 mm
+      // (a ring of the bar a roughing pass stopped short of) gets none.
+      const bool shortOnPaper = std::abs(pageX(f.zRight) - pageX(f.zLeft)) < 2.5 * mm;
+      if (shortOnPaper && f.length() < 1.0) continue;
+      if (shortOnPaper && std::any_of(lineXs.begin(), lineXs.end(), [&](double x) {
+            return std::abs(x - pageX((f.zLeft + f.zRight) / 2.0)) < 1.0 * mm;
+          }))
+        continue;
       const double r = f.diameter / 2.0;
       const bool inside = f.side == FeatureSide::Inside;
       // A thread in a bore: the line spans the bore's material, its minor Ø.
@@ -147,6 +173,7 @@ std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part,
       const double w = fm.horizontalAdvance(d.text);
       double zc = (f.zLeft + f.zRight) / 2.0;
       for (const double at : {0.5, 0.3, 0.7, 0.15, 0.85}) {
+        if (shortOnPaper) break;
         const double z = f.zLeft + at * f.length();
         if (std::none_of(lineXs.begin(), lineXs.end(), [&](double x) { return std::abs(x - pageX(z)) < 2.5 * mm; })) {
           zc = z;
@@ -202,9 +229,17 @@ std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part,
         shoulders.push_back(f.zRight);
         shoulders.push_back(f.zLeft);
       }
+  // Stations closer than a sliver are one (a face two columns from the part's end
+  // is its end); the part's own ends are kept as they are.
+  constexpr double kOneStation = 0.15;  // mm
+  std::erase_if(shoulders, [&](double z) { return z > part.zRight - kOneStation || z < part.zLeft + kOneStation; });
+  shoulders.push_back(part.zRight);
+  shoulders.push_back(part.zLeft);
   std::sort(shoulders.begin(), shoulders.end(), std::greater<>());
-  shoulders.erase(std::unique(shoulders.begin(), shoulders.end(), [](double a, double b) { return a - b < 0.01; }),
-                  shoulders.end());
+  shoulders.erase(
+      std::unique(shoulders.begin(), shoulders.end(), [](double a, double b) { return a - b < kOneStation; }),
+      shoulders.end());
+  if (shoulders.back() != part.zLeft) shoulders.back() = part.zLeft;
   const double row1 = bottomY + 7.0 * mm, row2 = bottomY + 15.0 * mm;
   const auto lengthItem = [&](double za, double zb, double rowY) {
     DimensionItem d;
@@ -221,8 +256,35 @@ std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part,
     d.textRect = QRectF((xa + xb) / 2.0 - w / 2.0, rowY - 0.3 * mm - textH, w, textH);
     return d;
   };
+  // A step too short for its text gets the text beside it, left of its extension
+  // lines where that is free, else under its dimension line; never on a neighbour's.
+  std::vector<DimensionItem> chain;
   for (std::size_t k = 0; k + 1 < shoulders.size() && shoulders.size() > 2; ++k)
-    out.push_back(lengthItem(shoulders[k], shoulders[k + 1], row1));
+    chain.push_back(lengthItem(shoulders[k], shoulders[k + 1], row1));
+  std::reverse(chain.begin(), chain.end());  // left to right on the page
+  const double gap = 0.8 * mm;
+  std::vector<QRectF> taken;
+  const auto isFree = [&](const QRectF& r) {
+    return std::none_of(taken.begin(), taken.end(), [&](const QRectF& t) { return t.adjusted(-gap, 0, gap, 0).intersects(r); });
+  };
+  for (std::size_t k = 0; k < chain.size(); ++k) {
+    const double left = chain[k].lines[1].x1(), right = chain[k].lines[0].x1();  // zb is left of za
+    if (chain[k].textRect.width() + 2.0 * gap > right - left) continue;  // placed in the second pass
+    taken.push_back(chain[k].textRect);
+  }
+  for (std::size_t k = 0; k < chain.size(); ++k) {
+    QRectF& box = chain[k].textRect;
+    const double left = chain[k].lines[1].x1(), right = chain[k].lines[0].x1();
+    if (box.width() + 2.0 * gap <= right - left) continue;
+    QRectF beside = box;
+    beside.moveRight(left - gap);
+    QRectF under = box;
+    under.moveTop(row1 + 0.5 * mm);
+    while (!isFree(under)) under.translate(box.width() + gap, 0.0);
+    box = isFree(beside) ? beside : under;
+    taken.push_back(box);
+  }
+  for (const DimensionItem& d : chain) out.push_back(d);
   out.push_back(lengthItem(part.zRight, part.zLeft, shoulders.size() > 2 ? row2 : row1));
 
   // Leaders above the part: chamfers, radii, tapers, grooves; staggered so labels

@@ -114,6 +114,22 @@ TEST(CliPrint, ATapersEndsAreDimensionedAlongTheAxis) {
   EXPECT_EQ(std::count(lengths.begin(), lengths.end(), 'R'), 0) << text;
 }
 
+// A flange's 4 mm spigot is 2 mm on paper at 1:2: too short for a Ø line beside
+// another, yet the drawing still gives its Ø (a drawing without it cannot be made).
+TEST(CliPrint, AShortSpigotOnABigFlangeKeepsItsDiameter) {
+  const fs::path prog = scratch("flange.nc");
+  std::ofstream(prog) << "%\nO3001 (FLANGE)\nG21 G40 G99\nT0101\nG50 S1500\nG96 S180 M03\nG00 X214. Z2. M08\n"
+                         "G01 Z0. F0.2\nX-1.6\nG00 X214. Z2.\nG42 G00 X150. Z2.\nG01 Z-4. F0.15\nX200.\nZ-20.\n"
+                         "X214.\nG40 G00 X300. Z100.\nM30\n%\n";
+  const fs::path pdf = scratch("flange.pdf");
+  std::string err;
+  ASSERT_EQ(print("'" + prog.string() + "' --sheet drawing --stock 210x40 --lang en --pdf '" + pdf.string() + "'", &err),
+            0)
+      << err;
+  const std::string text = pdfText(pdf);
+  for (const char* s : {"Scale 1:2", "Ø150", "Ø200"}) EXPECT_NE(text.find(s), std::string::npos) << s << "\n" << text;
+}
+
 TEST(CliPrint, BothSheetsInThaiAndTheThreadCallout) {
   const fs::path pdf = scratch("02-both.pdf");
   std::string err;
