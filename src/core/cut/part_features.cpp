@@ -255,9 +255,31 @@ void absorbShallowFillets(std::vector<PartFeature>& fs) {
   }
 }
 
+// Cylinders side by side whose Ø differ by a scratch (a thread pass that only
+// grazed the surface, the next roughing level's step of a hundredth) are one
+// cylinder on a drawing: no draughtsman gives Ø0.849 and Ø0.850 in turn.
+void mergeScratchedCylinders(std::vector<PartFeature>& fs) {
+  constexpr double kScratch = 0.03;  // mm on the Ø
+  for (std::size_t k = 0; k + 1 < fs.size();) {
+    PartFeature& a = fs[k];
+    const PartFeature& b = fs[k + 1];
+    if (a.kind != FeatureKind::Cylinder || b.kind != FeatureKind::Cylinder || std::abs(a.diameter - b.diameter) > kScratch) {
+      ++k;
+      continue;
+    }
+    const double length = a.length() + b.length();
+    a.diameter = length > 0.0 ? (a.diameter * a.length() + b.diameter * b.length()) / length : a.diameter;
+    a.zLeft = std::min(a.zLeft, b.zLeft);
+    a.zRight = std::max(a.zRight, b.zRight);
+    a.diameterLeft = a.diameterRight = a.diameter;
+    fs.erase(fs.begin() + static_cast<long>(k) + 1);
+  }
+}
+
 void classify(std::vector<PartFeature>& fs) {
   absorbSlivers(fs);
   absorbShallowFillets(fs);
+  mergeScratchedCylinders(fs);
   const long n = static_cast<long>(fs.size());
   for (long k = 0; k < n; ++k) {
     PartFeature& f = fs[static_cast<std::size_t>(k)];

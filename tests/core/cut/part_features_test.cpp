@@ -238,6 +238,25 @@ TEST(PartFeatures, AShallowCornerIsTheTwoLinesMeetingNotAnArc) {
   }
 }
 
+// A threading pass that only grazes the Ø30 (0.01 mm deep on the radius, as when
+// a second operation's thread lands on the wrong end) leaves one cylinder, not
+// Ø29.98 and Ø30 in turn at every pitch.
+TEST(PartFeatures, AGrazingPassLeavesOneCylinder) {
+  const testing::CutRun c = cutText(
+      "Grazed pin\nPin GP-1\nSteel S45C\n132\n180\nKlueng tests\nO2002\nG21 G40 G99\nT0101\nG97 S1000 M03\n"
+      "G00 X34. Z2.\nG01 Z0. F0.15\nX-1.6\nG00 X30. Z2.\nG01 Z-30.\nX34.\nG00 X100. Z100.\n"
+      "T0303\nG97 S600 M03\nG00 X29.98 Z5.\nG32 Z-20. F1.5\nG00 X34.\nX100. Z100.\nM30\n");
+  const PartFeatures p = partFeatures(c.sim->stock());
+  int cylinders = 0;
+  for (const PartFeature& f : p.outside)
+    if (f.kind == FeatureKind::Cylinder && f.zLeft > -30.5) ++cylinders;  // the Ø30, not the bar
+  EXPECT_EQ(cylinders, 1);
+  const PartFeature* pin = find(p.outside, FeatureKind::Cylinder, -10.0);
+  ASSERT_NE(pin, nullptr);
+  EXPECT_NEAR(pin->diameter, 30.0, 0.02);
+  EXPECT_LT(pin->zLeft, -25.0);
+}
+
 // Issue 28: the pitch is read between the 0.05 mm columns, so a G76 thread's
 // label says the pitch it was cut with (sample 06 read "M30×1.49" when the teeth
 // were placed by whole columns).
