@@ -230,9 +230,17 @@ std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part,
         shoulders.push_back(f.zLeft);
       }
   // Stations closer than a sliver are one (a face two columns from the part's end
-  // is its end); the part's own ends are kept as they are.
+  // is its end); the part's own ends are kept as they are. A groove is placed by
+  // its near wall; its width is in its callout, so its far wall is no station.
   constexpr double kOneStation = 0.15;  // mm
-  std::erase_if(shoulders, [&](double z) { return z > part.zRight - kOneStation || z < part.zLeft + kOneStation; });
+  std::vector<double> farWalls;
+  for (const auto* list : {&part.outside, &part.inside})
+    for (const PartFeature& f : *list)
+      if (f.kind == FeatureKind::Groove) farWalls.push_back(f.zLeft);
+  std::erase_if(shoulders, [&](double z) {
+    return z > part.zRight - kOneStation || z < part.zLeft + kOneStation ||
+           std::any_of(farWalls.begin(), farWalls.end(), [&](double w) { return std::abs(w - z) < kOneStation; });
+  });
   shoulders.push_back(part.zRight);
   shoulders.push_back(part.zLeft);
   std::sort(shoulders.begin(), shoulders.end(), std::greater<>());
@@ -278,10 +286,23 @@ std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part,
     if (box.width() + 2.0 * gap <= right - left) continue;
     QRectF beside = box;
     beside.moveRight(left - gap);
-    QRectF under = box;
+    QRectF besideRight = box;
+    besideRight.moveLeft(right + gap);
+    QRectF under = box, underLower = box;
     under.moveTop(row1 + 0.5 * mm);
-    while (!isFree(under)) under.translate(box.width() + gap, 0.0);
-    box = isFree(beside) ? beside : under;
+    underLower.moveTop(under.bottom() + 0.3 * mm);
+    if (isFree(beside))
+      box = beside;
+    else if (isFree(under))
+      box = under;
+    else if (isFree(underLower) && underLower.bottom() < row2 - 0.5 * mm)
+      box = underLower;
+    else if (isFree(besideRight))
+      box = besideRight;
+    else {
+      while (!isFree(under)) under.translate(box.width() + gap, 0.0);
+      box = under;
+    }
     taken.push_back(box);
   }
   for (const DimensionItem& d : chain) out.push_back(d);

@@ -10,6 +10,9 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <cctype>
+#include <vector>
+#include <sstream>
 
 namespace {
 
@@ -128,6 +131,31 @@ TEST(CliPrint, AShortSpigotOnABigFlangeKeepsItsDiameter) {
       << err;
   const std::string text = pdfText(pdf);
   for (const char* s : {"Scale 1:2", "Ø150", "Ø200"}) EXPECT_NE(text.find(s), std::string::npos) << s << "\n" << text;
+}
+
+// A groove is placed by its near wall and its width is in its callout: the chain
+// reads 10, 10, 20 (to each groove's right wall, then the end), not 10, 3, 7, 3, 17.
+TEST(CliPrint, AGrooveIsPlacedByItsNearWall) {
+  const fs::path prog = scratch("grooves.nc");
+  std::ofstream(prog) << "%\nO4001 (TWO GROOVES)\nG21 G40 G99\nT0101\nG96 S180 M03\nG50 S2500\nG00 X34. Z2. M08\n"
+                         "G01 Z0. F0.15\nX-1.6\nG00 X30. Z2.\nG01 Z-40.\nX34.\nG00 X100. Z100.\nT0404\n"
+                         "G97 S600 M03\nG00 X32. Z-13.\nG01 X24. F0.05\nG00 X32.\nZ-23.\nG01 X24.\nG00 X32.\n"
+                         "X100. Z100.\nM30\n%\n";
+  const fs::path pdf = scratch("grooves.pdf");
+  std::string err;
+  ASSERT_EQ(print("'" + prog.string() + "' --sheet drawing --stock 32x80 --lang en --pdf '" + pdf.string() + "'", &err),
+            0)
+      << err;
+  std::istringstream words(pdfText(pdf));
+  std::vector<std::string> numbers;
+  for (std::string w; words >> w;)
+    if (!w.empty() && std::all_of(w.begin(), w.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
+      numbers.push_back(w);
+  EXPECT_EQ(std::count(numbers.begin(), numbers.end(), "10"), 2);
+  EXPECT_EQ(std::count(numbers.begin(), numbers.end(), "20"), 1);
+  EXPECT_EQ(std::count(numbers.begin(), numbers.end(), "40"), 1);  // overall
+  for (const char* gone : {"7", "17"}) EXPECT_EQ(std::count(numbers.begin(), numbers.end(), gone), 0) << gone;
+  EXPECT_EQ(std::count(numbers.begin(), numbers.end(), "3"), 2);  // only the callouts' "groove 3 × Ø24"
 }
 
 TEST(CliPrint, BothSheetsInThaiAndTheThreadCallout) {
