@@ -11,6 +11,9 @@
 #include <fstream>
 #include <string>
 
+// Its own namespace: the tests are unity-built and sibling files have helpers of the same names.
+namespace cli_print_test {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -223,3 +226,5 @@ TEST(CliGenerate, ADxfDrawingBecomesAProgramAndAnOpenOneWritesNothing) {
 }
 
 }  // namespace
+
+}  // namespace cli_print_test
