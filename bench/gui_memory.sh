@@ -1,8 +1,9 @@
 #!/bin/sh
 # The window's peak memory against the CLI's on one big program (issue 29 item 8:
 # the GUI within 3x klueng-cli's peak).
-#   bench/gui_memory.sh [BUILD_DIR] [BLOCKS]     (defaults: build/default 2000000)
-# Writes a straight roughing program of BLOCKS blocks (klueng-gen-program --roughing),
+#   bench/gui_memory.sh [BUILD_DIR] [BLOCKS] [roughing|mixed]   (defaults: build/default 2000000 roughing)
+# Writes a straight roughing program of BLOCKS blocks (klueng-gen-program --roughing;
+# mixed: its realistic job of cycles, arcs and tool changes instead),
 # then measures with /usr/bin/time -v:
 #   cli  klueng-cli simulate FILE
 #   gui  klueng-bench-gui-memory FILE  (the real MainWindow, offscreen: open, check,
@@ -10,10 +11,15 @@
 set -eu
 build=${1:-build/default}
 blocks=${2:-2000000}
+shape=${3:-roughing}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 prog="$work/roughing.nc"
-"$build/bench/klueng-gen-program" --roughing "$blocks" "$prog"
+if [ "$shape" = roughing ]; then
+  "$build/bench/klueng-gen-program" --roughing "$blocks" "$prog"
+else
+  "$build/bench/klueng-gen-program" "$blocks" "$prog"
+fi
 echo "program: $blocks blocks, $(wc -l <"$prog") lines, $(du -m "$prog" | cut -f1) MB"
 
 peak() {  # label, command...: wall time and max RSS of one process
