@@ -45,9 +45,11 @@ void CheckController::onFinished() {
   if (pending_ || timer_->isActive()) {
     // The text changed while checking: this result is out of date.
     if (pending_) checkNow();
+    else releaseFreedMemory();
     return;
   }
   emit finished(watcher_.result());
+  releaseFreedMemory();  // the check's parse and recorded run are gone now
 }
 
 }  // namespace klueng::gui

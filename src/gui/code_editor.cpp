@@ -89,6 +89,18 @@ void CodeEditor::updateGutter(const QRect& rect, int dy) {
   if (rect.contains(viewport()->rect())) updateGutterWidth();
 }
 
+void CodeEditor::paintEvent(QPaintEvent* e) {
+  // A long program is coloured where it is drawn (gcode_highlighter.h): the lines
+  // about to be painted get their colours first.
+  const qreal bottom = viewport()->rect().bottom();
+  const QPointF offset = contentOffset();
+  for (QTextBlock b = firstVisibleBlock(); b.isValid(); b = b.next()) {
+    if (blockBoundingGeometry(b).translated(offset).top() > bottom) break;
+    highlighter_->colourBlock(b);
+  }
+  QPlainTextEdit::paintEvent(e);
+}
+
 void CodeEditor::resizeEvent(QResizeEvent* e) {
   QPlainTextEdit::resizeEvent(e);
   const QRect cr = contentsRect();

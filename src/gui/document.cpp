@@ -95,6 +95,8 @@ void Document::reset(const core::io::JobHeader& header) {
 
 void Document::adopt(const LoadedProgram& loaded) {
   file_ = loaded.file;
+  // The editor holds the G-code from now on; a second copy here would only cost memory (issue 29 item 8).
+  std::string().swap(file_.gcode);
   fileDiagnostics_ = loaded.diagnostics;
   stockNotes_ = loaded.stockNotes;
   headerModified_ = false;
@@ -105,7 +107,11 @@ void Document::adopt(const LoadedProgram& loaded) {
 }
 
 std::string Document::formatted(const QString& gcode) const {
-  core::io::ProgramFile f = file_;
+  core::io::ProgramFile f;
+  f.header = file_.header;
+  f.plainGcode = file_.plainGcode;
+  f.gcodeFirstLine = file_.gcodeFirstLine;
+  f.encoding = file_.encoding;
   f.gcode = gcode.toStdString();
   return core::io::formatProgramFile(f);
 }

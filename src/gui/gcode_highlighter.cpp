@@ -9,11 +9,17 @@
 
 #include <QColor>
 #include <QSet>
+#include <QTextBlock>
 #include <QTextDocument>
 
 namespace klueng::gui {
 
-GcodeHighlighter::GcodeHighlighter(QTextDocument* document) : QSyntaxHighlighter(document) {
+namespace {
+// QTextBlock::userState of a block whose colours are up to date (new and edited blocks are not).
+constexpr int kColouredState = 1;
+}  // namespace
+
+GcodeHighlighter::GcodeHighlighter(QTextDocument* document) : QObject(document), doc_(document) {
   auto set = [this](Kind k, const QColor& c, bool bold = false, bool italic = false) {
     QTextCharFormat f;
     f.setForeground(c);
@@ -32,6 +38,27 @@ GcodeHighlighter::GcodeHighlighter(QTextDocument* document) : QSyntaxHighlighter
   set(Kind::Skip, QColor(0xd0, 0x60, 0x00), true);
   set(Kind::Macro, QColor(0x00, 0x5f, 0x73), true);     // macro B keywords and functions
   set(Kind::Variable, QColor(0x9a, 0x5b, 0x00));        // #101
+  if (doc_) connect(doc_, &QTextDocument::contentsChange, this, &GcodeHighlighter::onContentsChange);
+}
+
+bool GcodeHighlighter::isColoured(const QTextBlock& block) { return block.userState() == kColouredState; }
+
+void GcodeHighlighter::colourBlock(const QTextBlock& block) {
+  if (block.isValid() && !isColoured(block)) colour(block);
+}
+
+void GcodeHighlighter::onContentsChange(int from, int removed, int added) {
+  Q_UNUSED(removed);
+  if (!doc_) return;
+  const bool eager = doc_->blockCount() <= kEagerBlocks;
+  const QTextBlock last = doc_->findBlock(std::max(from, from + added));
+  for (QTextBlock b = doc_->findBlock(from); b.isValid(); b = b.next()) {
+    // A line already coloured (shown, or a short document) is coloured again now;
+    // another one waits until it is drawn.
+    if (eager || isColoured(b)) colour(b);
+    else b.setUserState(-1);
+    if (b == last) break;
+  }
 }
 
 GcodeHighlighter::Kind GcodeHighlighter::kindOf(QChar letter) {
@@ -69,16 +96,22 @@ void GcodeHighlighter::setUnderlines(QHash<int, QVector<Underline>> byLine) {
   for (auto it = byLine.cbegin(); it != byLine.cend(); ++it)
     if (!underlines_.contains(it.key())) changed.insert(it.key());
   underlines_ = std::move(byLine);
-  QTextDocument* doc = document();
-  if (!doc) return;
+  if (!doc_) return;
+  const bool eager = doc_->blockCount() <= kEagerBlocks;
   for (int line : changed) {
-    const QTextBlock block = doc->findBlockByNumber(line);
-    if (block.isValid()) rehighlightBlock(block);
+    QTextBlock block = doc_->findBlockByNumber(line);
+    if (!block.isValid()) continue;
+    if (eager || isColoured(block)) colour(block);
+    else block.setUserState(-1);
   }
 }
 
-void GcodeHighlighter::highlightBlock(const QString& text) {
+QList<QTextLayout::FormatRange> GcodeHighlighter::rangesFor(const QString& text, int blockNumber) const {
   const int n = static_cast<int>(text.size());
+  QVector<QTextCharFormat> chars(n);  // one format a character, merged into ranges below
+  const auto setFormat = [&chars, n](int start, int count, const QTextCharFormat& f) {
+    for (int i = std::max(0, start); i < std::min(n, start + count); ++i) chars[i] = f;
+  };
   // The core cuts the line into tokens; this only picks their colours.
   const std::u16string_view line(reinterpret_cast<const char16_t*>(text.utf16()), static_cast<std::size_t>(n));
   for (const core::gcode::DisplayToken& t : core::gcode::displayTokens(line)) {
@@ -92,22 +125,54 @@ void GcodeHighlighter::highlightBlock(const QString& text) {
     }
     if (kind != Kind::Other) setFormat(t.start, t.length, format(kind));
   }
-  const auto it = underlines_.constFind(currentBlock().blockNumber());
-  if (it == underlines_.cend()) return;
-  for (const Underline& u : *it) {
-    const int start = std::clamp(u.start, 0, std::max(0, n - 1));
-    const int len = u.length > 0 ? std::min(u.length, n - start) : n - start;
-    const QColor colour = core::isError(u.severity)                ? QColor(0xd0, 0x10, 0x10)
-                         : u.severity == core::Severity::Note ? QColor(0x20, 0x60, 0xc0)
-                                                              : QColor(0xe0, 0x8a, 0x00);
-    for (int k = start; k < start + std::max(len, 1) && k <= n; ++k) {
-      // Keep the syntax colour; add the underline on top of it.
-      QTextCharFormat f = QSyntaxHighlighter::format(std::min(k, std::max(0, n - 1)));
-      f.setUnderlineStyle(QTextCharFormat::WaveUnderline);
-      f.setUnderlineColor(colour);
-      setFormat(k, 1, f);
+  const auto it = underlines_.constFind(blockNumber);
+  if (it != underlines_.cend() && n > 0) {
+    for (const Underline& u : *it) {
+      const int start = std::clamp(u.start, 0, n - 1);
+      const int len = u.length > 0 ? std::min(u.length, n - start) : n - start;
+      const QColor colour = core::isError(u.severity)                ? QColor(0xd0, 0x10, 0x10)
+                           : u.severity == core::Severity::Note ? QColor(0x20, 0x60, 0xc0)
+                                                                : QColor(0xe0, 0x8a, 0x00);
+      for (int k = start; k < std::min(n, start + std::max(len, 1)); ++k) {
+        // Keep the syntax colour; add the underline on top of it.
+        chars[k].setUnderlineStyle(QTextCharFormat::WaveUnderline);
+        chars[k].setUnderlineColor(colour);
+      }
     }
   }
+  QList<QTextLayout::FormatRange> ranges;
+  const QTextCharFormat empty;
+  for (int i = 0; i < n;) {
+    if (chars[i] == empty) {
+      ++i;
+      continue;
+    }
+    QTextLayout::FormatRange r;
+    r.start = i;
+    r.format = chars[i];
+    while (i < n && chars[i] == r.format) ++i;
+    r.length = i - r.start;
+    ranges << r;
+  }
+  return ranges;
+}
+
+void GcodeHighlighter::colour(const QTextBlock& block) {
+  QList<QTextLayout::FormatRange> ranges = rangesFor(block.text(), block.blockNumber());
+  QTextBlock b = block;
+  b.setUserState(kColouredState);
+  QTextLayout* layout = b.layout();
+  // Text being composed by an input method (Thai) sits inside the layout's text.
+  const int preeditStart = layout->preeditAreaPosition();
+  const int preeditLength = static_cast<int>(layout->preeditAreaText().size());
+  if (preeditLength > 0)
+    for (QTextLayout::FormatRange& r : ranges) {
+      if (r.start >= preeditStart) r.start += preeditLength;
+      else if (r.start + r.length >= preeditStart) r.length += preeditLength;
+    }
+  if (layout->formats() == ranges) return;
+  layout->setFormats(ranges);
+  doc_->markContentsDirty(block.position(), block.length());
 }
 
 }  // namespace klueng::gui

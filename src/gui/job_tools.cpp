@@ -3,6 +3,11 @@
 #include <QDir>
 #include <QFileInfo>
 #include <QSettings>
+#include <QThreadPool>
+
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 #include <QStringList>
 
 #include "klueng/core/machine/job_check.h"
@@ -22,6 +27,9 @@ JobToolsResult checkWithTools(const QString& text, int firstLine, core::gcode::C
   JobToolsResult result;
   result.diagnostics = std::move(job.diagnostics);
   result.inference = std::move(job.inference);
+  // The recorded run was the check's evidence; the window never reads it, and
+  // keeping it would hold a second whole timeline beside the run's (issue 29 item 8).
+  result.inference.record.reset();
   result.fit = job.fit;
   result.fitBlocks = job.fitBlocks;
   result.units = job.units;
@@ -72,6 +80,12 @@ bool sameTools(const machine::MachineSetup& a, const machine::MachineSetup& b) {
     if (x.x != y.x || x.z != y.z || x.r != y.r || x.tip != y.tip) return false;
   }
   return true;
+}
+
+void releaseFreedMemory() {
+#if defined(__GLIBC__)
+  QThreadPool::globalInstance()->start([] { malloc_trim(0); });
+#endif
 }
 
 }  // namespace klueng::gui

@@ -1,5 +1,7 @@
 #include "gui/run_controller.h"
 
+#include "gui/job_tools.h"
+
 #include <set>
 
 #include "klueng/core/machine/playback.h"
@@ -303,6 +305,7 @@ void RunController::onPrepared() {
   preparing_ = false;
   std::shared_ptr<Prepared> result = prepareWatcher_.result();
   prepareWatcher_.setFuture(QFuture<std::shared_ptr<Prepared>>());
+  releaseFreedMemory();  // the compiled program (its words) is gone; the timeline stays
   setBusy(false);
   const Pending what = pending_;
   pending_ = Pending::None;

@@ -19,6 +19,9 @@
 
 #include "klueng/core/io/image.h"
 
+// Its own namespace: the tests are unity-built and sibling files have helpers of the same names.
+namespace cli_check_test {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -801,3 +804,5 @@ TEST(CliMachines, ConfigFolderMachineAndBrokenMachineFile) {
 }
 
 }  // namespace
+
+}  // namespace cli_check_test

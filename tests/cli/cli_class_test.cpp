@@ -12,6 +12,9 @@
 #include <sstream>
 #include <string>
 
+// Its own namespace: the tests are unity-built and sibling files have helpers of the same names.
+namespace cli_class_test {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -256,3 +259,5 @@ TEST(CliClass, ABadReferenceOrBadOptionsExitTwo) {
 }
 
 }  // namespace
+
+}  // namespace cli_class_test

@@ -14,6 +14,9 @@
 #include <string>
 #include <vector>
 
+// Its own namespace: the tests are unity-built and sibling files have helpers of the same names.
+namespace cli_flow_test {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -216,3 +219,5 @@ TEST_F(CliFlow, EndlessLoopStopsWithAnAlarmNamingTheLoop) {
 }
 
 }  // namespace
+
+}  // namespace cli_flow_test

@@ -13,6 +13,8 @@
 #include <sstream>
 #include <string>
 
+// Its own namespace: the tests are unity-built and sibling files have helpers of the same names.
+namespace cli_generate_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -111,3 +113,4 @@ TEST_F(CliGenerateLimits, ALongDesignIsNumberedWithinTheDialectsBlockNumbers) {
 }
 
 }  // namespace
+}  // namespace cli_generate_test

@@ -14,6 +14,9 @@
 #include <vector>
 #include <sstream>
 
+// Its own namespace: the tests are unity-built and sibling files have helpers of the same names.
+namespace cli_print_test {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -288,3 +291,5 @@ TEST(CliGenerate, ADxfDrawingBecomesAProgramAndAnOpenOneWritesNothing) {
 }
 
 }  // namespace
+
+}  // namespace cli_print_test

@@ -12,6 +12,9 @@
 
 #include "klueng/core/io/image.h"
 
+// Its own namespace: the tests are unity-built and sibling files have helpers of the same names.
+namespace cli_simulate_cut_test {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -254,3 +257,5 @@ TEST(CliPartCheck, SamplesAreCleanAndAnAlarmedRunSaysWhatWasChecked) {
 }
 
 }  // namespace
+
+}  // namespace cli_simulate_cut_test

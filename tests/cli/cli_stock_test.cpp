@@ -11,6 +11,9 @@
 
 #include "cli_common.h"
 
+// Its own namespace: the tests are unity-built and sibling files have helpers of the same names.
+namespace cli_stock_test {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -152,3 +155,5 @@ TEST(CliStockParse, Forms) {
 }
 
 }  // namespace
+
+}  // namespace cli_stock_test

@@ -8,6 +8,9 @@
 #include <fstream>
 #include <string>
 
+// Its own namespace: the tests are unity-built and sibling files have helpers of the same names.
+namespace cli_tools_test {
+
 namespace {
 
 using ::testing::HasSubstr;
@@ -144,3 +147,5 @@ TEST(CliTools, HelpShowsTheToolOption) {
 }
 
 }  // namespace
+
+}  // namespace cli_tools_test

@@ -9,6 +9,9 @@
 #include <fstream>
 #include <string>
 
+// Its own namespace: the tests are unity-built and sibling files have helpers of the same names.
+namespace cli_units_test {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -129,3 +132,5 @@ TEST(CliUnits, AG20ProgramsPartCheckIsInInches) {
 }
 
 }  // namespace
+
+}  // namespace cli_units_test

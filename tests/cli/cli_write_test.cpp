@@ -14,6 +14,9 @@
 #include <sstream>
 #include <string>
 
+// Its own namespace: the tests are unity-built and sibling files have helpers of the same names.
+namespace cli_write_test {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -244,3 +247,5 @@ TEST_F(CliWrite, OrdinaryOutputsStillReplaceOldOnes) {
 }
 
 }  // namespace
+
+}  // namespace cli_write_test

@@ -16,6 +16,7 @@
 #include "../../bench/program_generator.h"
 #include "gui/code_editor.h"
 #include "gui/diagnostics_panel.h"
+#include "gui/gcode_highlighter.h"
 #include "gui/main_window.h"
 #include "gui/resources.h"
 
@@ -146,6 +147,70 @@ class LargeProgramTest : public QObject {
     heartbeat.stop();
     QVERIFY(w.diagnosticsPanel()->errorCount() >= 1);
     qInfo("100k-line re-check after typing: longest event-loop stall %lld ms", longest);
+  }
+
+  // Issue 29 item 8: a line's colours live in its own QTextLayout (hundreds of bytes);
+  // colouring all of a 2,000,000-line program at load held 0.7 GB. A long program is
+  // coloured where the editor draws it: lines scrolled to, edited or underlined there.
+  void aLongProgramIsColouredWhereItIsShown() {
+    using K = GcodeHighlighter::Kind;
+    CodeEditor editor;
+    editor.resize(600, 400);
+    QStringList lines;
+    for (int i = 0; i < 60000; ++i) lines << QStringLiteral("N%1 G01 X%2. Z-5. F0.2").arg(i % 9999 + 1).arg(20 + i % 30);
+    editor.setPlainText(lines.join(QLatin1Char('\n')));
+    editor.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&editor));
+    editor.viewport()->repaint();
+    const QTextDocument* doc = editor.document();
+    const GcodeHighlighter* h = editor.highlighter();
+    const auto colourAt = [](const QTextBlock& b, int pos) {
+      for (const QTextLayout::FormatRange& r : b.layout()->formats())
+        if (pos >= r.start && pos < r.start + r.length) return r.format.foreground().color();
+      return QColor();
+    };
+    const auto underlinedAt = [](const QTextBlock& b, int pos) {
+      for (const QTextLayout::FormatRange& r : b.layout()->formats())
+        if (pos >= r.start && pos < r.start + r.length) return r.format.underlineStyle() == QTextCharFormat::WaveUnderline;
+      return false;
+    };
+    const QTextBlock first = doc->firstBlock();
+    QCOMPARE(colourAt(first, static_cast<int>(first.text().indexOf(u'G'))), h->format(K::GCode).foreground().color());
+    int coloured = 0;
+    for (QTextBlock b = doc->begin(); b.isValid(); b = b.next()) coloured += GcodeHighlighter::isColoured(b) ? 1 : 0;
+    QVERIFY2(coloured >= 10 && coloured <= 200, qPrintable(QString::number(coloured)));
+
+    QTextBlock far = doc->findBlockByNumber(50000);
+    QVERIFY(!GcodeHighlighter::isColoured(far));
+    QVERIFY(far.layout()->formats().isEmpty());
+    editor.goToFileLine(50001);
+    editor.viewport()->repaint();
+    QVERIFY(GcodeHighlighter::isColoured(far));
+    const int x = static_cast<int>(far.text().indexOf(u'X'));
+    QCOMPARE(colourAt(far, x), h->format(K::Axis).foreground().color());
+
+    // An underline on a line on screen shows at once, one off screen once it is drawn.
+    klueng::core::Diagnostic shown;
+    shown.code = "E201";
+    shown.range.line = 50001;
+    shown.range.column = x + 1;
+    shown.range.length = 3;
+    klueng::core::Diagnostic hidden = shown;
+    hidden.range.line = 20001;
+    editor.setDiagnostics({shown, hidden});
+    QVERIFY(underlinedAt(far, x));
+    QVERIFY(!underlinedAt(far, x + 3));
+    const QTextBlock other = doc->findBlockByNumber(20000);
+    QVERIFY(!GcodeHighlighter::isColoured(other));
+    editor.goToFileLine(20001);
+    editor.viewport()->repaint();
+    QVERIFY(underlinedAt(other, static_cast<int>(other.text().indexOf(u'X'))));
+
+    // Typing on a line on screen colours it again where its words now are.
+    QTextCursor c(other);
+    c.insertText(QStringLiteral("M03 "));
+    QCOMPARE(colourAt(other, 0), h->format(K::MCode).foreground().color());
+    QCOMPARE(colourAt(other, static_cast<int>(other.text().indexOf(u'G'))), h->format(K::GCode).foreground().color());
   }
 };
 

@@ -19,7 +19,8 @@
 #include "comp_test_support.h"
 #include "klueng/core/comp/nose_comp.h"
 
-namespace klueng::core::comp {
+// Its own namespace: the tests are unity-built and sibling files have helpers of the same names.
+namespace klueng::core::comp::nose_comp_profile_test {
 namespace {
 
 using testing::distanceToPath;
@@ -206,4 +207,4 @@ TEST(ProfileShape, HasTapersArcsStepsAndFaces) {
 }
 
 }  // namespace
-}  // namespace klueng::core::comp
+}  // namespace klueng::core::comp::nose_comp_profile_test

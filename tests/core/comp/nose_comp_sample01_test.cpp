@@ -8,7 +8,8 @@
 #include "comp_test_support.h"
 #include "klueng/core/comp/nose_comp.h"
 
-namespace klueng::core::comp {
+// Its own namespace: the tests are unity-built and sibling files have helpers of the same names.
+namespace klueng::core::comp::nose_comp_sample01_test {
 namespace {
 
 using testing::PathBuilder;
@@ -113,4 +114,4 @@ TEST(Sample01, FinishedContourMatchesTheDrawing) {
 }
 
 }  // namespace
-}  // namespace klueng::core::comp
+}  // namespace klueng::core::comp::nose_comp_sample01_test

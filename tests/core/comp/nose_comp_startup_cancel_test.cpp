@@ -7,7 +7,8 @@
 #include "comp_test_support.h"
 #include "klueng/core/comp/nose_comp.h"
 
-namespace klueng::core::comp {
+// Its own namespace: the tests are unity-built and sibling files have helpers of the same names.
+namespace klueng::core::comp::nose_comp_startup_cancel_test {
 namespace {
 
 using testing::expectWellFormed;
@@ -176,4 +177,4 @@ TEST(StartUp, EmptyInputGivesNothing) {
 }
 
 }  // namespace
-}  // namespace klueng::core::comp
+}  // namespace klueng::core::comp::nose_comp_startup_cancel_test

@@ -10,7 +10,8 @@
 #include "comp_test_support.h"
 #include "klueng/core/comp/nose_comp.h"
 
-namespace klueng::core::comp {
+// Its own namespace: the tests are unity-built and sibling files have helpers of the same names.
+namespace klueng::core::comp::nose_comp_uncompensated_test {
 namespace {
 
 using testing::kDeg;
@@ -108,4 +109,4 @@ TEST(Uncompensated, CentreAndControlledPointAreInverse) {
 }
 
 }  // namespace
-}  // namespace klueng::core::comp
+}  // namespace klueng::core::comp::nose_comp_uncompensated_test

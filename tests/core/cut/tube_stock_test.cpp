@@ -9,7 +9,8 @@
 #include "klueng/core/cut/cut_simulator.h"
 #include "klueng/core/cut/finished_part.h"
 
-namespace klueng::core::cut {
+// Its own namespace: the tests are unity-built and sibling files have helpers of the same names.
+namespace klueng::core::cut::tube_stock_test {
 namespace {
 
 using testing::Run;
@@ -108,4 +109,4 @@ TEST(SpindleBore, ToolIntoAJawIsStillACrash) {
 }
 
 }  // namespace
-}  // namespace klueng::core::cut
+}  // namespace klueng::core::cut::tube_stock_test

@@ -73,7 +73,7 @@ TEST(MachineFile, BadValueIsLocatedInBothLanguages) {
   EXPECT_FALSE(read.machine.has_value());
   ASSERT_EQ(read.diagnostics.size(), 2u);
   const Diagnostic& d = read.diagnostics[0];
-  EXPECT_EQ(d.code, codes::kMachineValueBad);
+  EXPECT_EQ(d.code, core::codes::kMachineValueBad);
   EXPECT_EQ(d.range.line, 4);
   EXPECT_EQ(d.range.column, 17);
   EXPECT_EQ(formatMessage(d, Lang::En), "teacher.machine: gcode_system = 'D': must be one of: A B C");
@@ -87,18 +87,18 @@ TEST(MachineFile, MissingKeysWithoutBaseAndUnknownBase) {
   const MachineFileRead bare = parseMachineFile("id = x\nname_en = X\n", "x.machine");
   EXPECT_FALSE(bare.machine.has_value());
   ASSERT_FALSE(bare.diagnostics.empty());
-  EXPECT_EQ(bare.diagnostics[0].code, codes::kMachineKeyMissing);
+  EXPECT_EQ(bare.diagnostics[0].code, core::codes::kMachineKeyMissing);
   EXPECT_EQ(bare.diagnostics[0].args[1], "name_th");
 
   const MachineFileRead base = parseMachineFile("id = x\nbase = fanucc\n", "x.machine");
   ASSERT_EQ(base.diagnostics.size(), 1u);
-  EXPECT_EQ(base.diagnostics[0].code, codes::kMachineUnknownBase);
+  EXPECT_EQ(base.diagnostics[0].code, core::codes::kMachineUnknownBase);
   EXPECT_EQ(base.diagnostics[0].range.line, 2);
   EXPECT_EQ(formatMessage(base.diagnostics[0], Lang::En).substr(0, 50), "x.machine: base 'fanucc' is no machine; the machin");
 
   const MachineFileRead noEquals = parseMachineFile("base = fanuc\nid = x\nrapid_x 4000\n", "x.machine");
   ASSERT_EQ(noEquals.diagnostics.size(), 1u);
-  EXPECT_EQ(noEquals.diagnostics[0].code, codes::kNotKeyValue);
+  EXPECT_EQ(noEquals.diagnostics[0].code, core::codes::kNotKeyValue);
   EXPECT_EQ(noEquals.diagnostics[0].range.line, 3);
 }
 

@@ -12,7 +12,8 @@
 #include "klueng/core/messages.h"
 #include "test_util.h"
 
-namespace klueng::core::io {
+// Its own namespace: the tests are unity-built and sibling files have helpers of the same names.
+namespace klueng::core::io::tool_config_test {
 namespace {
 
 using testing::TempDir;
@@ -422,9 +423,9 @@ TEST(ConfigDir, EnsureUserCopyCopiesShippedFilesAndBitmapsOnce) {
 }
 
 }  // namespace
-}  // namespace klueng::core::io
+}  // namespace klueng::core::io::tool_config_test
 
-namespace klueng::core::io {
+namespace klueng::core::io::tool_config_test {
 namespace {
 
 // Issue 13: a bitmap path that is a folder was called "does not exist".
@@ -473,4 +474,4 @@ TEST(ToolTable, ABitmapThatIsNoFileSaysWhatItIs) {
 }
 
 }  // namespace
-}  // namespace klueng::core::io
+}  // namespace klueng::core::io::tool_config_test

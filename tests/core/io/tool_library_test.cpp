@@ -9,7 +9,8 @@
 #include "klueng/core/io/tool_config.h"
 #include "klueng/core/messages.h"
 
-namespace klueng::core::io {
+// Its own namespace: the tests are unity-built and sibling files have helpers of the same names.
+namespace klueng::core::io::tool_library_test {
 namespace {
 
 std::string codes(const std::vector<Diagnostic>& diags) {
@@ -242,4 +243,4 @@ TEST(Library, KindsOfTheSeedsBitmaps) {
 }
 
 }  // namespace
-}  // namespace klueng::core::io
+}  // namespace klueng::core::io::tool_library_test

@@ -14,7 +14,8 @@
 #include "klueng/core/machine/interpreter.h"
 #include "test_support.h"
 
-namespace klueng::core::machine {
+// Its own namespace: the tests are unity-built and sibling files have helpers of the same names.
+namespace klueng::core::machine::haas_cycles_test {
 namespace {
 
 using gcode::Dialect;
@@ -451,4 +452,4 @@ TEST(Drilling, ClassicDoesNotKnowG83) {
 }
 
 }  // namespace
-}  // namespace klueng::core::machine
+}  // namespace klueng::core::machine::haas_cycles_test

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <unistd.h>
 
 #include "klueng/core/cut/cut_simulator.h"
 #include "klueng/core/io/tool_library.h"
@@ -31,7 +32,8 @@ std::string codeName(char letter, int number) {
 // Runs one worked example as a student would: the file, the check, the run, the cut.
 std::string problems(const std::string& gcode, gcode::Dialect dialect,
                      const std::vector<std::pair<std::string, std::string>>& files) {
-  const fs::path dir = fs::temp_directory_path() / "klueng-help-examples";
+  // One folder per process: test runs of other builds on the same machine write theirs at once.
+  const fs::path dir = fs::temp_directory_path() / ("klueng-help-examples-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   for (const auto& [name, text] : files) std::ofstream(dir / name, std::ios::binary) << text;

@@ -13,7 +13,8 @@
 #include "klueng/core/io/tool_config.h"
 #include "klueng/core/messages.h"
 
-namespace klueng::core::machine {
+// Its own namespace: the tests are unity-built and sibling files have helpers of the same names.
+namespace klueng::core::machine::tool_inference_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -566,4 +567,4 @@ TEST(ToolInference, ShippedSamplesAndGoldenProgramsAreUnchanged) {
 }
 
 }  // namespace
-}  // namespace klueng::core::machine
+}  // namespace klueng::core::machine::tool_inference_test
