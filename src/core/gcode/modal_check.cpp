@@ -39,7 +39,7 @@ bool endsTheWalk(CodeAction a) {
 bool losesPosition(CodeAction a) {
   switch (a) {
     case CodeAction::BoxTurning: case CodeAction::BoxThreading: case CodeAction::BoxFacing:
-    case CodeAction::ReferenceCheck: case CodeAction::ReferenceReturn: case CodeAction::ReturnFromReference:
+    case CodeAction::ReferenceCheck: case CodeAction::ReferenceReturn: case CodeAction::SecondReferenceReturn: case CodeAction::ReturnFromReference:
     case CodeAction::CoordinateSet: case CodeAction::MachineCoordinates: case CodeAction::WorkOffset:
     case CodeAction::Finishing: case CodeAction::TurnRoughing: case CodeAction::FaceRoughing:
     case CodeAction::PatternRepeating: case CodeAction::FacePecking: case CodeAction::Grooving:

@@ -293,7 +293,7 @@ MotionMode Interpreter::motionFor(CodeAction action) {
 // The limits come from the profile and the tables, whatever their sizes.
 bool Interpreter::selectTool(const Word& t) {
   const int value = t.code();
-  const int tool = value / 100, offset = value % 100;
+  const auto [tool, offset] = gcode::splitToolNumber(value);
   // Stations: the profile's turret, else the tool table's (machine.cfg turret size).
   // TODO: read the turret size from io::MachineConfig once it has one.
   const int tableStations = static_cast<int>(setup_.tools.bitmap.size());

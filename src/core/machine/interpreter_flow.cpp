@@ -18,16 +18,10 @@ using gcode::StatementKind;
 
 // A G65 / G66 / G67 block (the code table's macro call actions) runs as a call, not as motion.
 bool isMacroCallBlock(const Block& b, gcode::Dialect dialect, CodeWord& g) {
-  for (const Word& w : b.words) {
-    if (w.letter != 'G' || w.expr >= 0 || w.hasDecimalPoint) continue;
-    const CodeInfo* info = gcode::findCode('G', w.code(), dialect);
-    if (info && (info->action == CodeAction::MacroCall || info->action == CodeAction::MacroModalCall ||
-                 info->action == CodeAction::MacroModalCancel)) {
-      g = {&w, info};
-      return true;
-    }
-  }
-  return false;
+  const CodeInfo* info = nullptr;
+  const Word* w = gcode::macroCallWord(b, dialect, &info);
+  if (w) g = {w, info};
+  return w != nullptr;
 }
 
 

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "klueng/core/gcode/address_table.h"
 #include "klueng/core/gcode/code_table.h"
 #include "klueng/core/gcode/machine_profile.h"
 #include "klueng/core/gcode/macro.h"
