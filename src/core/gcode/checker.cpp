@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <string>
 
+#include "code_index.h"
 #include "diagnostic_codes.h"
 #include "klueng/core/gcode/address_table.h"
 #include "flow_check.h"
@@ -90,6 +91,7 @@ class Checker {
   Checker(const CheckOptions& options, std::vector<Diagnostic>& out)
       : options_(options),
         profile_(machineProfile(options.dialect)),
+        codes_(detail::codeIndexOf(options.dialect)),
         out_(out),
         letters_(spaced(profile_.letters)),
         allowedLetters_(letterMask(profile_.letters)),
@@ -106,7 +108,7 @@ class Checker {
       return;
     }
     // A macro call's block: its letters are arguments (A -> #1 ...), not addresses.
-    const bool macroCall = profile_.flow.macroB && isMacroCallBlock(block, options_.dialect);
+    const bool macroCall = profile_.flow.macroB && isMacroCall(block);
     noteUnits(block);
     BlockCodes seen;
     readWords(block, firstBlock, macroCall, seen);
@@ -165,15 +167,34 @@ class Checker {
     if (!profile_.flow.macroB) emit(codes::kMacroNotInDialect, block.statement.range, {"#"});
   }
 
+  // The row of a G or M code number in this machine's code index (as findCode, without
+  // asking the registry for every word of a 100,000-block program).
+  const CodeInfo* row(char letter, long long n) const {
+    return n >= 0 && n <= 99 ? codes_.rows[letter == 'G' ? 0 : 1][static_cast<std::size_t>(n)] : nullptr;
+  }
+
+  // G65 / G66 (as gcode::macroCallWord; G67 takes no arguments).
+  bool isMacroCall(const Block& block) const {
+    if (!block.mayHave('G')) return false;
+    for (const Word& w : block.words) {
+      if (w.letter != 'G' || w.expr >= 0 || w.hasDecimalPoint) continue;
+      const CodeInfo* r = row('G', w.code());
+      if (r && (r->action == CodeAction::MacroCall || r->action == CodeAction::MacroModalCall ||
+                r->action == CodeAction::MacroModalCancel))
+        return r->action != CodeAction::MacroModalCancel;
+    }
+    return false;
+  }
+
   // Units apply to the whole block they appear in, then stay modal.
   void noteUnits(const Block& block) {
+    if (!block.mayHave('G')) return;
     for (const Word& w : block.words) {
       if (w.letter != 'G') continue;
-      const long long n = wholeNumber(w);
-      const CodeInfo* row = n >= 0 && n <= 99 ? findCode('G', static_cast<int>(n), options_.dialect) : nullptr;
-      if (!row) continue;
-      if (row->action == CodeAction::Inch) inch_ = true;
-      else if (row->action == CodeAction::Metric) inch_ = false;
+      const CodeInfo* r = row('G', wholeNumber(w));
+      if (!r) continue;
+      if (r->action == CodeAction::Inch) inch_ = true;
+      else if (r->action == CodeAction::Metric) inch_ = false;
     }
   }
 
@@ -264,17 +285,17 @@ class Checker {
       return;
     }
     const long long n = wholeNumber(w);
-    const CodeInfo* row = n >= 0 && n <= 99 ? findCode(w.letter, static_cast<int>(n), options_.dialect) : nullptr;
-    if (!row) {
+    const CodeInfo* found = row(w.letter, n);
+    if (!found) {
       if (w.letter == 'G') emit(codes::kUnknownGCode, w, {wordText(w)});
       else if (n > 99 ? profile_.highMIsWarning : profile_.unknownMIsWarning)
         emit(codes::kMachineSpecificM, w, {wordText(w)}, Severity::Warning);
       else emit(codes::kUnknownMCode, w, {wordText(w)});
       return;
     }
-    if (row->mustStandAlone && seen.standAloneCount < 4) seen.standAlone[seen.standAloneCount++] = &w;
-    if (w.letter == 'G') readGCode(w, *row, seen);
-    else readMCode(w, *row, seen);
+    if (found->mustStandAlone && seen.standAloneCount < 4) seen.standAlone[seen.standAloneCount++] = &w;
+    if (w.letter == 'G') readGCode(w, *found, seen);
+    else readMCode(w, *found, seen);
   }
 
   void readGCode(const Word& w, const CodeInfo& row, BlockCodes& seen) {
@@ -400,6 +421,7 @@ class Checker {
   }
   const CheckOptions& options_;
   const MachineProfile& profile_;
+  const detail::CodeIndex& codes_;
   std::vector<Diagnostic>& out_;
   std::string letters_;  // the profile's letters, spaced, for E201
   std::uint32_t allowedLetters_;  // the profile's letters, one bit each (Block::letterBit)
