@@ -227,6 +227,10 @@
 <context>
     <name>klueng::gui::HelpContents</name>
     <message>
+        <source>+X up, +Z right; red dot = imaginary tip</source>
+        <translation>+X ขึ้น, +Z ขวา; จุดแดง = ปลายมีดสมมติ</translation>
+    </message>
+    <message>
         <source>Imaginary tool tip numbers 0-9</source>
         <translation>หมายเลขปลายมีดสมมติ 0-9</translation>
     </message>

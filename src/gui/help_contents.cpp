@@ -176,7 +176,7 @@ void HelpContents::rebuild() {
   setWindowTitle(tr("Help Contents"));
   const bool thai = Language::coreLang() == core::Lang::Th;
   QTextDocument* doc = browser_->document();
-  doc->addResource(QTextDocument::ImageResource, QUrl(QStringLiteral("help-tips.png")), tipNumbersPicture(thai));
+  doc->addResource(QTextDocument::ImageResource, QUrl(QStringLiteral("help-tips.png")), tipNumbersPicture());
   for (int number : {71, 72, 73, 76})
     doc->addResource(QTextDocument::ImageResource, QUrl(QStringLiteral("help-path-G%1.png").arg(number)),
                      examplePathPicture('G', number, dialect_));

@@ -1,15 +1,17 @@
 #include "gui/help_pictures.h"
 
+#include <QCoreApplication>
 #include <QPainter>
 #include <QPainterPath>
 #include <algorithm>
 
+#include "klueng/core/comp/nose_comp.h"
 #include "klueng/core/geometry.h"
 #include "klueng/core/machine/help.h"
 
 namespace klueng::gui {
 
-QImage tipNumbersPicture(bool thai) {
+QImage tipNumbersPicture() {
   const int cell = 90, size = 3 * cell;
   QImage img(size + 20, size + 44, QImage::Format_RGB32);
   img.fill(Qt::white);
@@ -17,7 +19,7 @@ QImage tipNumbersPicture(bool thai) {
   p.setRenderHint(QPainter::Antialiasing);
   const double r = 18.0;
   for (int tip = 0; tip <= 8; ++tip) {
-    const core::Vec2 v = core::tipVector(tip);  // (dz, dx): +Z right, +X up
+    const core::Vec2 v = core::comp::tipVector(tip);  // (dz, dx): +Z right, +X up
     const QPointF centre(10 + cell * (1.5 + v.x()), 10 + cell * (1.5 - v.y()));
     p.setPen(QPen(QColor(90, 90, 90), 1.5));
     p.setBrush(QColor(235, 235, 235));
@@ -34,7 +36,7 @@ QImage tipNumbersPicture(bool thai) {
   }
   p.setFont(QFont(QStringLiteral("Loma"), 10));
   p.drawText(QRectF(10, size + 14, size, 24), Qt::AlignLeft | Qt::AlignVCenter,
-             thai ? QStringLiteral("+X ขึ้น, +Z ขวา; จุดแดง = ปลายมีดสมมติ") : QStringLiteral("+X up, +Z right; red dot = imaginary tip"));
+             QCoreApplication::translate("klueng::gui::HelpContents", "+X up, +Z right; red dot = imaginary tip"));
   return img;
 }
 

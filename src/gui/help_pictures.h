@@ -10,7 +10,8 @@
 
 namespace klueng::gui {
 
-QImage tipNumbersPicture(bool thai);
+// The SPEC 9 grid of tip numbers 0-9; its legend in the UI language (tr).
+QImage tipNumbersPicture();
 // The moves of a code's worked example over a Ø50 x 100 bar: cuts red, rapids dashed blue.
 QImage examplePathPicture(char letter, int number, core::gcode::Dialect dialect);
 

@@ -1,6 +1,7 @@
 #include "gui/status_panel.h"
 
 #include "gui/language.h"
+#include "render/report_sheets.h"
 
 #include <cmath>
 
@@ -16,12 +17,6 @@ namespace klueng::gui {
 namespace {
 
 QString number(double v, int decimals = 3) { return QString::number(v, 'f', decimals); }
-
-const char* const kThaiMonths[12] = {"มกราคม", "กุมภาพันธ์", "มีนาคม", "เมษายน", "พฤษภาคม", "มิถุนายน",
-                                     "กรกฎาคม", "สิงหาคม", "กันยายน", "ตุลาคม", "พฤศจิกายน", "ธันวาคม"};
-
-const char* const kThaiShortMonths[12] = {"ม.ค.", "ก.พ.", "มี.ค.", "เม.ย.", "พ.ค.", "มิ.ย.",
-                                          "ก.ค.", "ส.ค.", "ก.ย.", "ต.ค.", "พ.ย.", "ธ.ค."};
 
 bool uiIsThai() { return Language::coreLang() == core::Lang::Th; }
 
@@ -54,20 +49,14 @@ StatusFields::StatusFields(QWidget* parent) : QWidget(parent) {
 }
 
 QString StatusFields::formatShortDate(const QDate& date, bool thai) {
-  if (thai)
-    return QStringLiteral("%1 %2 %3").arg(date.day()).arg(QString::fromUtf8(kThaiShortMonths[date.month() - 1])).arg(date.year() + 543);
-  return QLocale(QLocale::English, QLocale::UnitedStates).toString(date, QStringLiteral("MMM d, yyyy"));
+  return render::reportDate(date, thai ? render::ReportLanguage::Thai : render::ReportLanguage::English,
+                            render::DateLength::Short);
 }
 
 QString StatusFields::formatDate(const QDate& date, bool thai) {
-  if (thai) {
-    return QStringLiteral("%1 %2 พ.ศ. %3")
-        .arg(date.day())
-        .arg(QString::fromUtf8(kThaiMonths[date.month() - 1]))
-        .arg(date.year() + 543);
-  }
-  return QLocale(QLocale::English, QLocale::UnitedStates).toString(date, QStringLiteral("MMMM d, yyyy"));
+  return render::reportDate(date, thai ? render::ReportLanguage::Thai : render::ReportLanguage::English);
 }
+
 
 QString StatusFields::formatClock(double seconds) {
   const double tenths = std::round(std::max(0.0, seconds) * 10.0);

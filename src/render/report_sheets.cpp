@@ -2,6 +2,7 @@
 #include "render/number_text.h"
 
 #include <QFontMetricsF>
+#include <QLocale>
 #include <QPen>
 #include <QStringList>
 #include <QTextLayout>
@@ -160,18 +161,20 @@ void drawField(QPainter& painter, const QRectF& cell, const QString& label, cons
 
 }  // namespace
 
-QString reportDate(const QDate& date, ReportLanguage lang) {
-  static const std::array<const char*, 12> english = {"January", "February", "March",     "April",
-                                                      "May",     "June",     "July",      "August",
-                                                      "September", "October", "November", "December"};
-  static const std::array<const char*, 12> thaiMonths = {
-      "มกราคม", "กุมภาพันธ์", "มีนาคม", "เมษายน", "พฤษภาคม", "มิถุนายน",
-      "กรกฎาคม", "สิงหาคม", "กันยายน", "ตุลาคม", "พฤศจิกายน", "ธันวาคม"};
+QString reportDate(const QDate& date, ReportLanguage lang, DateLength length) {
   if (!date.isValid()) return {};
-  const auto m = static_cast<std::size_t>(date.month() - 1);
-  if (thai(lang))
-    return QStringLiteral("%1 %2 พ.ศ. %3").arg(date.day()).arg(QString::fromUtf8(thaiMonths[m])).arg(date.year() + 543);
-  return QStringLiteral("%1 %2, %3").arg(QString::fromLatin1(english[m])).arg(date.day()).arg(date.year());
+  const bool isLong = length == DateLength::Long;
+  if (!thai(lang))
+    return QLocale(QLocale::English, QLocale::UnitedStates)
+        .toString(date, isLong ? QStringLiteral("MMMM d, yyyy") : QStringLiteral("MMM d, yyyy"));
+  // Thai dates count years in the Buddhist era (2569 = 2026), which Qt's
+  // calendars do not have; the month names are the Thai locale's.
+  const QString month =
+      QLocale(QLocale::Thai, QLocale::Thailand).monthName(date.month(), isLong ? QLocale::LongFormat : QLocale::ShortFormat);
+  return (isLong ? QStringLiteral("%1 %2 พ.ศ. %3") : QStringLiteral("%1 %2 %3"))
+      .arg(date.day())
+      .arg(month)
+      .arg(date.year() + 543);
 }
 
 QString kluengVersion() { return QStringLiteral("Klueng %1").arg(QString::fromLatin1(KLUENG_VERSION)); }

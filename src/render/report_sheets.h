@@ -44,7 +44,9 @@ enum class ReportLanguage { English, Thai };
 inline constexpr const char* kReportFontFamily = "Loma";
 inline constexpr const char* kReportMonoFamily = "Tlwg Mono";
 
-QString reportDate(const QDate& date, ReportLanguage lang);
+// Long: "October 19, 1999" / "19 ตุลาคม พ.ศ. 2542"; short: "Oct 19, 1999" / "19 ต.ค. 2542".
+enum class DateLength { Long, Short };
+QString reportDate(const QDate& date, ReportLanguage lang, DateLength length = DateLength::Long);
 QString kluengVersion();
 
 struct ReportData {

@@ -4,6 +4,7 @@
 #include <QPen>
 #include <cmath>
 
+#include "klueng/core/comp/nose_comp.h"
 #include "klueng/core/geometry.h"
 #include "render/lathe_painters.h"
 
@@ -16,7 +17,7 @@ constexpr std::uint32_t kEmpty = 0xFFFFFF;
 
 QPointF controlledPointForTip(const QRect& box, int tip) {
   if (box.isEmpty()) return {};
-  const core::Vec2 dir = core::tipVector(tip);   // (dz, dx), +X up
+  const core::Vec2 dir = core::comp::tipVector(tip);  // (dz, dx), +X up
   // Pixel edges: left() .. right()+1 across, top() .. bottom()+1 down (image y grows downward).
   const double left = box.left();
   const double right = box.right() + 1.0;
@@ -88,7 +89,7 @@ QImage tipPicture(int tip, int sizePx) {
   p.setPen(QPen(QColor(40, 40, 40), 1.2));
   p.setBrush(QColor(200, 210, 225));
   p.drawEllipse(QPointF(c, c), r, r);
-  const core::Vec2 dir = core::tipVector(tip);
+  const core::Vec2 dir = core::comp::tipVector(tip);
   const QPointF tipPt(c + dir.x() * r, c - dir.y() * r);
   p.setPen(QPen(palette().controlledPoint, 1.6));
   if (dir.norm() > 0) p.drawLine(QPointF(c, c), tipPt);

@@ -122,6 +122,17 @@ class ReportTest : public QObject {
     QCOMPARE(render::reportDate(QDate(1999, 10, 19), ReportLanguage::English), QStringLiteral("October 19, 1999"));
     QCOMPARE(render::reportDate(QDate(2026, 1, 2), ReportLanguage::Thai), QStringLiteral("2 มกราคม พ.ศ. 2569"));
     QCOMPARE(render::reportDate(QDate(2024, 2, 29), ReportLanguage::English), QStringLiteral("February 29, 2024"));
+    // The status bar's short form: every Thai month's abbreviation, the year in the Buddhist era.
+    const QStringList thaiShort = {QStringLiteral("ม.ค."),  QStringLiteral("ก.พ."),  QStringLiteral("มี.ค."),
+                                   QStringLiteral("เม.ย."), QStringLiteral("พ.ค."),  QStringLiteral("มิ.ย."),
+                                   QStringLiteral("ก.ค."),  QStringLiteral("ส.ค."),  QStringLiteral("ก.ย."),
+                                   QStringLiteral("ต.ค."),  QStringLiteral("พ.ย."),  QStringLiteral("ธ.ค.")};
+    for (int m = 1; m <= 12; ++m)
+      QCOMPARE(render::reportDate(QDate(2026, m, 26), ReportLanguage::Thai, render::DateLength::Short),
+               QStringLiteral("26 %1 2569").arg(thaiShort[m - 1]));
+    QCOMPARE(render::reportDate(QDate(2026, 11, 26), ReportLanguage::English, render::DateLength::Short),
+             QStringLiteral("Nov 26, 2026"));
+    QCOMPARE(render::reportDate(QDate(2026, 7, 1), ReportLanguage::Thai), QStringLiteral("1 กรกฎาคม พ.ศ. 2569"));
   }
 
   void scalesAreStandardAndFit() {

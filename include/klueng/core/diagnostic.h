@@ -47,4 +47,8 @@ struct Diagnostic {
 
 bool hasErrors(const std::vector<Diagnostic>& diags);
 
+// The order every list of diagnostics is shown in: by file, line and column;
+// those at one place keep the order they were found in.
+void sortByPlace(std::vector<Diagnostic>& diags);
+
 }  // namespace klueng::core

@@ -12,9 +12,4 @@ inline double zOf(const Vec2& p) { return p.x(); }
 inline double xOf(const Vec2& p) { return p.y(); }  // radius
 inline double diameterOf(const Vec2& p) { return 2.0 * p.y(); }
 
-// Direction from the nose centre to the imaginary tool tip for tip 0..9
-// (SPEC 9 grid, +X up, +Z right). Components are -1, 0 or +1 (not normalised:
-// the tip is the corner of the square around the nose). Tips 0 and 9 give (0,0).
-Vec2 tipVector(int tip);
-
 }  // namespace klueng::core

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "klueng/core/comp/nose_comp.h"
 #include "klueng/core/diagnostic_codes.h"
 
 namespace klueng::core::cut {
@@ -134,7 +135,7 @@ std::vector<ProgrammedColumn> programmedColumns(const machine::Timeline& program
     if (c < 0 || c >= part.columnCount()) continue;
     // The side: the tip's (3, 4, 8 cut outside; 1, 2, 6 in a bore), else where the move ends up.
     const ToolShape* shape = shapes.get(m.tool, m.offset);
-    const double tipX = shape ? tipVector(shape->tip).y() : 0.0;
+    const double tipX = shape ? comp::tipVector(shape->tip).y() : 0.0;
     const double outer = part.outerRadius(c);
     const bool outsideMove =
         tipX != 0.0 ? tipX < 0.0 : outer <= 0.0 || mid.y() >= (outer + part.innerRadius(c)) / 2.0;
@@ -243,7 +244,7 @@ ToolShape idealToolShape(const ToolShape& real, double strip) {
     edge.x0 = std::min(edge.x0, b.x0);
     edge.x1 = std::max(edge.x1, b.x1);
   }
-  const Vec2 tip = tipVector(real.tip);
+  const Vec2 tip = comp::tipVector(real.tip);
   // The body behind the nose (away from the part): the real tool's edge above
   // the nose's centre within the nose's width, and all of it beyond the nose's
   // top — a roughing pass never leaves a shell above its path in the described

@@ -5,6 +5,7 @@
 #include <string>
 
 #include <fmt/format.h>
+#include "klueng/core/comp/nose_comp.h"
 #include "klueng/core/diagnostic_codes.h"
 
 namespace klueng::core::cut {
@@ -193,7 +194,7 @@ io::ReadResult<ToolShape> makeToolShape(const io::RgbImage& image, const std::st
   const double px = 1.0 / ppm;
   const double zMin = c0 * px, zMax = (c1 + 1) * px;
   const double xMin = (image.height - r1 - 1) * px, xMax = (image.height - r0) * px;
-  const Vec2 t = tipVector(tip);
+  const Vec2 t = comp::tipVector(tip);
   const double pz = t.x() < 0 ? zMin : t.x() > 0 ? zMax : (zMin + zMax) / 2;
   const double pxr = t.y() < 0 ? xMin : t.y() > 0 ? xMax : (xMin + xMax) / 2;
 

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <string>
 
+#include "code_index.h"
 #include "diagnostic_codes.h"
 #include "klueng/core/gcode/address_table.h"
 #include "flow_check.h"
@@ -61,12 +62,17 @@ int toolStation(const Word& w, const MachineProfile& profile, int turretStations
   const auto digits = static_cast<int>(w.number.size());
   const long long n = wholeNumber(w);
   const bool shapeOk = n >= 0 && digits >= profile.minToolDigits && digits <= 4;
-  const int tool = static_cast<int>(n / 100);
-  const int offset = static_cast<int>(n % 100);
+  const auto [tool, offset] = splitToolNumber(n);
   const int maxTool = profile.maxToolStation > 0 ? profile.maxToolStation : turretStations;
   // T0000: the turret stays and the offset is cancelled (an offset for tool 00, T0017, is refused).
   const bool keepTurret = profile.toolZeroKeepsTurret && tool == 0 && offset == 0;
   return !shapeOk || (tool < 1 && !keepTurret) || tool > maxTool || offset > profile.maxOffset ? -1 : tool;
+}
+
+// G65 / G66: the block's letters are the macro's arguments (G67 takes none).
+bool isMacroCallBlock(const Block& block, Dialect dialect) {
+  const CodeInfo* row = nullptr;
+  return macroCallWord(block, dialect, &row) && row->action != CodeAction::MacroModalCancel;
 }
 
 bool isRuleFourGroup(ModalGroup g) {
@@ -85,6 +91,7 @@ class Checker {
   Checker(const CheckOptions& options, std::vector<Diagnostic>& out)
       : options_(options),
         profile_(machineProfile(options.dialect)),
+        codes_(detail::codeIndexOf(options.dialect)),
         out_(out),
         letters_(spaced(profile_.letters)),
         allowedLetters_(letterMask(profile_.letters)),
@@ -92,56 +99,112 @@ class Checker {
 
   bool full() const { return full_; }
 
+  // One block, rule group by rule group (as rs274ngc's check_g_codes,
+  // check_m_codes and check_other_codes): the words one by one, then their
+  // values, then the rules that need the whole block.
   void checkBlock(const Block& block, bool firstBlock) {
     if (block.statement.kind != StatementKind::None) {
-      // A macro statement: its N word and the dialect (expressions are checked by the reader).
-      for (const Word& w : block.words)
-        if (w.letter == 'N' && w.expr < 0) {
-          const long long n = wholeNumber(w);
-          if (n < 1 || n > profile_.sequenceNumberMax)
-            emit(codes::kBadSequenceNumber, w, {wordText(w), "N", std::to_string(profile_.sequenceNumberMax)});
-        }
-      if (!profile_.flow.macroB) emit(codes::kMacroNotInDialect, block.statement.range, {"#"});
+      checkStatement(block);
       return;
     }
     // A macro call's block: its letters are arguments (A -> #1 ...), not addresses.
-    bool macroCall = false;
-    for (const Word& w : block.words)
-      if (w.letter == 'G' && w.expr < 0 && !w.hasDecimalPoint && (w.value == 65.0 || w.value == 66.0))
-        macroCall = profile_.flow.macroB;
-    // Units apply to the whole block they appear in, then stay modal.
-    for (const Word& w : block.words)
-      if (w.letter == 'G') {
-        const long long n = wholeNumber(w);
-        if (n == 20) inch_ = true;
-        else if (n == 21) inch_ = false;
-      }
+    const bool macroCall = profile_.flow.macroB && isMacroCall(block);
+    noteUnits(block);
+    BlockCodes seen;
+    readWords(block, firstBlock, macroCall, seen);
+    if (full_) return;
+    // Values, once the block's codes are known: a word's kind may depend on
+    // its code (Haas G83 Q0.1 is a length, Fanuc G83 Q5000 least increments).
+    if (macroCall) return;  // the arguments are the macro's to judge
+    for (const Word& w : block.words) {
+      if (full_) return;
+      if (allowed(w.letter) && w.expr < 0 && !w.comma) checkValue(w, seen.wordRow);
+    }
+    checkCodeRules(seen);
+    checkOtherRules(block, seen);
+    // The motion group is modal, so "X20 Z-5 R2" after a G02 is an arc too.
+    if (seen.motion) motion_ = seen.motion->action;
+    checkCornerWords(block, seen);
+    checkArc(seen);
+  }
 
-    // Slots are valid only where the mask bit is set: no per-block clearing
-    // of the arrays (this runs for every block of a 100,000-block program).
+ private:
+  // What the first pass over a block's words found. Slots are valid only where
+  // the mask bit is set: no per-block clearing of the arrays (this runs for
+  // every block of a 100,000-block program).
+  struct BlockCodes {
     std::uint32_t letterMask = 0, groupMask = 0, mGroupMask = 0;
     std::array<const Word*, 26> firstOfLetter;
     std::array<const Word*, kGroupCount> firstOfGroup;
     std::array<const Word*, kGroupCount> firstMOfGroup;
     const Word* standAlone[4] = {};
     int standAloneCount = 0;
-    const Word* motionWord = nullptr;  // last valid group-01 G word
-    int motionCode = -1;
-    const Word* oneShotWord = nullptr;
-    int oneShotCode = -1;
+    const Word* motionWord = nullptr;   // last valid group-01 G word
+    const CodeInfo* motion = nullptr;   // its row
+    const Word* oneShotWord = nullptr;  // first group-00 G word
+    const CodeInfo* oneShot = nullptr;
     const CodeInfo* wordRow = nullptr;  // the code whose word list sets the kinds of this block's words
-    const Word* g04 = nullptr;
-    const Word* g28 = nullptr;
-    const Word* compWord = nullptr;
-    int compCode = -1;
+    const Word* dwell = nullptr;        // G04
+    const Word* reference = nullptr;    // G28
+    const Word* compWord = nullptr;     // G40 G41 G42
+    const CodeInfo* comp = nullptr;
     bool cannedCycle = false;
     int nonNWords = 0;
 
+    const Word* has(char l) const {
+      const auto index = static_cast<std::size_t>(l - 'A');
+      return (letterMask >> index) & 1u ? firstOfLetter[index] : nullptr;
+    }
+    bool axisWords() const { return has('X') || has('Z') || has('U') || has('W'); }
+  };
+
+  static const Word* later(const Word* a, const Word* b) { return a->range.column > b->range.column ? a : b; }
+
+  // A macro statement: its N word and the dialect (expressions are checked by the reader).
+  void checkStatement(const Block& block) {
+    for (const Word& w : block.words)
+      if (w.letter == 'N' && w.expr < 0) checkSequenceNumber(w);
+    if (!profile_.flow.macroB) emit(codes::kMacroNotInDialect, block.statement.range, {"#"});
+  }
+
+  // The row of a G or M code number in this machine's code index (as findCode, without
+  // asking the registry for every word of a 100,000-block program).
+  const CodeInfo* row(char letter, long long n) const {
+    return n >= 0 && n <= 99 ? codes_.rows[letter == 'G' ? 0 : 1][static_cast<std::size_t>(n)] : nullptr;
+  }
+
+  // G65 / G66 (as gcode::macroCallWord; G67 takes no arguments).
+  bool isMacroCall(const Block& block) const {
+    if (!block.mayHave('G')) return false;
+    for (const Word& w : block.words) {
+      if (w.letter != 'G' || w.expr >= 0 || w.hasDecimalPoint) continue;
+      const CodeInfo* r = row('G', w.code());
+      if (r && (r->action == CodeAction::MacroCall || r->action == CodeAction::MacroModalCall ||
+                r->action == CodeAction::MacroModalCancel))
+        return r->action != CodeAction::MacroModalCancel;
+    }
+    return false;
+  }
+
+  // Units apply to the whole block they appear in, then stay modal.
+  void noteUnits(const Block& block) {
+    if (!block.mayHave('G')) return;
+    for (const Word& w : block.words) {
+      if (w.letter != 'G') continue;
+      const CodeInfo* r = row('G', wholeNumber(w));
+      if (!r) continue;
+      if (r->action == CodeAction::Inch) inch_ = true;
+      else if (r->action == CodeAction::Metric) inch_ = false;
+    }
+  }
+
+  // The first pass: letters (rules 1, 2, 9), N and O words, and the G and M codes.
+  void readWords(const Block& block, bool firstBlock, bool macroCall, BlockCodes& seen) {
     const int wordCount = static_cast<int>(block.words.size());
     for (int i = 0; i < wordCount && !full_; ++i) {
       const Word& w = block.words[static_cast<std::size_t>(i)];
       const char l = w.letter;
-      if (l != 'N') ++nonNWords;
+      if (l != 'N') ++seen.nonNWords;
       if (w.comma) continue;  // ,C ,R ,A: checked with the corner rules
       if (w.expr >= 0) {
         // X#1: the value is known when the block runs; only the letter is checked here.
@@ -151,165 +214,168 @@ class Checker {
         continue;
       }
       if (macroCall && l != 'G' && l != 'N' && l != 'O') {
-        if (letterMask & (1u << static_cast<std::size_t>(l - 'A'))) emit(codes::kLetterTwice, w, {std::string(1, l)});
-        letterMask |= 1u << static_cast<std::size_t>(l - 'A');
+        if (seen.letterMask & (1u << static_cast<std::size_t>(l - 'A')))
+          emit(codes::kLetterTwice, w, {std::string(1, l)});
+        seen.letterMask |= 1u << static_cast<std::size_t>(l - 'A');
         continue;  // an argument: any value
       }
       if (!allowed(l)) {
-        // X1e9, Z2.5E-3: a number written with an exponent reads as two words; say so.
-        const Word* before = i > 0 ? &block.words[static_cast<std::size_t>(i - 1)] : nullptr;
-        if (l == 'E' && before && before->expr < 0 && !before->comma && before->range.line == w.range.line &&
-            before->range.column + before->range.length == w.range.column && !before->number.empty() &&
-            (std::isdigit(static_cast<unsigned char>(before->number.back())) != 0 || before->number.back() == '.')) {
-          SourceRange both = before->range;
-          both.length = before->range.length + w.range.length;
-          emit(codes::kExponentNumber, both, {wordText(*before), wordText(w)});
-          continue;
-        }
-        emit(codes::kLetterNotAllowed, w, {wordText(w), std::string(1, l), letters_});
+        checkUnknownLetter(block, i);
         continue;
       }
       const auto letterIndex = static_cast<std::size_t>(l - 'A');
       const std::uint32_t letterBit = 1u << letterIndex;
-      if (letterMask & letterBit) {
+      if (seen.letterMask & letterBit) {
         // A second N is reported once, by rule 9 (N only first).
         if (onceOnly(l) && l != 'N') emit(codes::kLetterTwice, w, {std::string(1, l)});
       } else {
-        letterMask |= letterBit;
-        firstOfLetter[letterIndex] = &w;
+        seen.letterMask |= letterBit;
+        seen.firstOfLetter[letterIndex] = &w;
       }
-
       switch (l) {
-        case 'N': {
-          const long long n = wholeNumber(w);
-          if (n < 1 || n > profile_.sequenceNumberMax)
-            emit(codes::kBadSequenceNumber, w, {wordText(w), "N", std::to_string(profile_.sequenceNumberMax)});
+        case 'N':
+          checkSequenceNumber(w);
           if (i != 0) emit(codes::kNNotFirst, w, {wordText(w)});
           break;
-        }
-        case 'O': {
-          if (w.colon && !profile_.colonProgramNumber) {
-            // ':' is not an address of this control: the seed's E104, naming ':'.
-            emit(codes::kUnknownCharacter, SourceRange{w.range.line, w.range.column, 1}, {":"});
-            break;
-          }
-          const long long n = wholeNumber(w);
-          if (n < 1 || n > profile_.programNumberMax)
-            emit(codes::kBadSequenceNumber, w, {wordText(w), "O", std::to_string(profile_.programNumberMax)});
-          const bool alone = i == 0 && wordCount == 1;
-          if (!(alone && (firstBlock || profile_.flow.programsInOneFile))) emit(codes::kMisplacedO, w, {wordText(w)});
-          break;
-        }
-        case 'G': case 'M': {
-          if (w.hasDecimalPoint) {
-            emit(codes::kCodeNotInteger, w, {wordText(w)});
-            break;
-          }
-          const long long n = wholeNumber(w);
-          const CodeInfo* row = n >= 0 && n <= 99 ? findCode(l, static_cast<int>(n), options_.dialect) : nullptr;
-          if (!row) {
-            if (l == 'G') emit(codes::kUnknownGCode, w, {wordText(w)});
-            else if (n > 99 ? profile_.highMIsWarning : profile_.unknownMIsWarning)
-              emit(codes::kMachineSpecificM, w, {wordText(w)}, Severity::Warning);
-            else emit(codes::kUnknownMCode, w, {wordText(w)});
-            break;
-          }
-          const auto group = static_cast<std::size_t>(row->group);
-          if (row->mustStandAlone && standAloneCount < 4) standAlone[standAloneCount++] = &w;
-          const std::uint32_t groupBit = 1u << group;
-          if (l == 'G') {
-            if (groupMask & groupBit) {
-              emit(codes::kSameModalGroup, w,
-                   {wordText(*firstOfGroup[group]), wordText(w), std::string(modalGroupNumber(row->group))});
-            } else {
-              groupMask |= groupBit;
-              firstOfGroup[group] = &w;
-            }
-            if (row->group == ModalGroup::Motion) {
-              motionWord = &w;
-              motionCode = row->number;
-            } else if (row->group == ModalGroup::NonModal && !oneShotWord) {
-              oneShotWord = &w;
-              oneShotCode = row->number;
-            } else if (row->group == ModalGroup::NoseComp) {
-              compWord = &w;
-              compCode = row->number;
-            } else if (row->group == ModalGroup::CannedCycle) {
-              cannedCycle = true;
-            }
-            if (!row->words.empty() && !wordRow) wordRow = row;
-            if (row->number == 4) g04 = &w;
-            if (row->number == 28) g28 = &w;
-          } else if (isRuleFourGroup(row->group)) {
-            if (mGroupMask & groupBit) {
-              emit(codes::kConflictingMCodes, w, {wordText(*firstMOfGroup[group]), wordText(w)});
-            } else {
-              mGroupMask |= groupBit;
-              firstMOfGroup[group] = &w;
-            }
-          }
-          break;
-        }
-        default:
-          break;
+        case 'O': checkProgramNumber(w, i == 0 && wordCount == 1, firstBlock); break;
+        case 'G': case 'M': readCode(w, seen); break;
+        default: break;
       }
     }
-    if (full_) return;
+  }
 
-    // Values, once the block's codes are known: a word's kind may depend on
-    // its code (Haas G83 Q0.1 is a length, Fanuc G83 Q5000 least increments).
-    if (macroCall) return;  // the arguments are the macro's to judge
-    for (const Word& w : block.words) {
-      if (full_) return;
-      if (allowed(w.letter) && w.expr < 0 && !w.comma) checkValue(w, wordRow);
+  // A letter the profile has not. X1e9, Z2.5E-3: a number written with an
+  // exponent reads as two words; say so.
+  void checkUnknownLetter(const Block& block, int i) {
+    const Word& w = block.words[static_cast<std::size_t>(i)];
+    const Word* before = i > 0 ? &block.words[static_cast<std::size_t>(i - 1)] : nullptr;
+    if (w.letter == 'E' && before && before->expr < 0 && !before->comma && before->range.line == w.range.line &&
+        before->range.column + before->range.length == w.range.column && !before->number.empty() &&
+        (std::isdigit(static_cast<unsigned char>(before->number.back())) != 0 || before->number.back() == '.')) {
+      SourceRange both = before->range;
+      both.length = before->range.length + w.range.length;
+      emit(codes::kExponentNumber, both, {wordText(*before), wordText(w)});
+      return;
     }
+    emit(codes::kLetterNotAllowed, w, {wordText(w), std::string(1, w.letter), letters_});
+  }
 
-    const auto has = [&](char l) -> const Word* {
-      const auto index = static_cast<std::size_t>(l - 'A');
-      return (letterMask >> index) & 1u ? firstOfLetter[index] : nullptr;
-    };
-    const auto later = [](const Word* a, const Word* b) { return a->range.column > b->range.column ? a : b; };
+  void checkSequenceNumber(const Word& w) {
+    const long long n = wholeNumber(w);
+    if (n < 1 || n > profile_.sequenceNumberMax)
+      emit(codes::kBadSequenceNumber, w, {wordText(w), "N", std::to_string(profile_.sequenceNumberMax)});
+  }
 
-    // Rules 3 and 7: stand-alone codes (N may come before them).
-    for (int k = 0; k < standAloneCount; ++k)
-      if (nonNWords > 1)
-        emit(standAlone[k]->letter == 'G' ? codes::kFeedModeNotAlone : codes::kMustStandAlone, *standAlone[k],
-             {wordText(*standAlone[k])});
+  void checkProgramNumber(const Word& w, bool alone, bool firstBlock) {
+    if (w.colon && !profile_.colonProgramNumber) {
+      // ':' is not an address of this control: the seed's E104, naming ':'.
+      emit(codes::kUnknownCharacter, SourceRange{w.range.line, w.range.column, 1}, {":"});
+      return;
+    }
+    const long long n = wholeNumber(w);
+    if (n < 1 || n > profile_.programNumberMax)
+      emit(codes::kBadSequenceNumber, w, {wordText(w), "O", std::to_string(profile_.programNumberMax)});
+    if (!(alone && (firstBlock || profile_.flow.programsInOneFile))) emit(codes::kMisplacedO, w, {wordText(w)});
+  }
 
-    // Rule 6: a one-shot G with a motion G.
+  // A G or M word: known to the dialect, and one per modal group (rules 4 and 5).
+  void readCode(const Word& w, BlockCodes& seen) {
+    if (w.hasDecimalPoint) {
+      emit(codes::kCodeNotInteger, w, {wordText(w)});
+      return;
+    }
+    const long long n = wholeNumber(w);
+    const CodeInfo* found = row(w.letter, n);
+    if (!found) {
+      if (w.letter == 'G') emit(codes::kUnknownGCode, w, {wordText(w)});
+      else if (n > 99 ? profile_.highMIsWarning : profile_.unknownMIsWarning)
+        emit(codes::kMachineSpecificM, w, {wordText(w)}, Severity::Warning);
+      else emit(codes::kUnknownMCode, w, {wordText(w)});
+      return;
+    }
+    if (found->mustStandAlone && seen.standAloneCount < 4) seen.standAlone[seen.standAloneCount++] = &w;
+    if (w.letter == 'G') readGCode(w, *found, seen);
+    else readMCode(w, *found, seen);
+  }
+
+  void readGCode(const Word& w, const CodeInfo& row, BlockCodes& seen) {
+    const auto group = static_cast<std::size_t>(row.group);
+    const std::uint32_t groupBit = 1u << group;
+    if (seen.groupMask & groupBit) {
+      emit(codes::kSameModalGroup, w,
+           {wordText(*seen.firstOfGroup[group]), wordText(w), std::string(modalGroupNumber(row.group))});
+    } else {
+      seen.groupMask |= groupBit;
+      seen.firstOfGroup[group] = &w;
+    }
+    if (row.group == ModalGroup::Motion) {
+      seen.motionWord = &w;
+      seen.motion = &row;
+    } else if (row.group == ModalGroup::NonModal && !seen.oneShotWord) {
+      seen.oneShotWord = &w;
+      seen.oneShot = &row;
+    } else if (row.group == ModalGroup::NoseComp) {
+      seen.compWord = &w;
+      seen.comp = &row;
+    } else if (row.group == ModalGroup::CannedCycle) {
+      seen.cannedCycle = true;
+    }
+    if (!row.words.empty() && !seen.wordRow) seen.wordRow = &row;
+    if (row.action == CodeAction::Dwell) seen.dwell = &w;
+    if (row.action == CodeAction::ReferenceReturn) seen.reference = &w;
+  }
+
+  void readMCode(const Word& w, const CodeInfo& row, BlockCodes& seen) {
+    if (!isRuleFourGroup(row.group)) return;
+    const auto group = static_cast<std::size_t>(row.group);
+    const std::uint32_t groupBit = 1u << group;
+    if (seen.mGroupMask & groupBit) {
+      emit(codes::kConflictingMCodes, w, {wordText(*seen.firstMOfGroup[group]), wordText(w)});
+    } else {
+      seen.mGroupMask |= groupBit;
+      seen.firstMOfGroup[group] = &w;
+    }
+  }
+
+  // Rules 3 and 7 (stand-alone codes; N may come before them) and rule 6 (a
+  // one-shot G with a motion G).
+  void checkCodeRules(const BlockCodes& seen) {
+    for (int k = 0; k < seen.standAloneCount; ++k)
+      if (seen.nonNWords > 1)
+        emit(seen.standAlone[k]->letter == 'G' ? codes::kFeedModeNotAlone : codes::kMustStandAlone,
+             *seen.standAlone[k], {wordText(*seen.standAlone[k])});
     const auto& withMotion = profile_.oneShotsWithMotion;
-    if (oneShotWord && motionWord &&
-        std::find(withMotion.begin(), withMotion.end(), oneShotCode) == withMotion.end()) {
-      const Word* second = later(oneShotWord, motionWord);
-      emit(codes::kOneShotWithMotion, *second, {wordText(*oneShotWord), wordText(*motionWord)});
+    if (seen.oneShotWord && seen.motionWord &&
+        std::find(withMotion.begin(), withMotion.end(), seen.oneShot->number) == withMotion.end()) {
+      const Word* second = later(seen.oneShotWord, seen.motionWord);
+      emit(codes::kOneShotWithMotion, *second, {wordText(*seen.oneShotWord), wordText(*seen.motionWord)});
     }
+  }
 
-    // Rule 10: absolute and incremental words of one axis.
+  // Rule 10 (absolute and incremental words of one axis), rule 11 with the
+  // dwell's own rules, and a G28 without axis words (it moves nothing).
+  void checkOtherRules(const Block& block, const BlockCodes& seen) {
     static constexpr std::array<std::pair<char, char>, 3> kPairs{{{'X', 'U'}, {'Z', 'W'}, {'C', 'H'}}};
     for (const auto& [abs, inc] : kPairs)
-      if (has(abs) && has(inc))
-        emit(codes::kAbsoluteAndIncremental, *later(has(abs), has(inc)), {std::string(1, abs), std::string(1, inc)});
-
-    // Rule 11 and the dwell's own rules.
-    if (g04) checkDwell(block, *g04, has('U') ? has('U') : has('X'), has('P'));
-
-    // G28 without axis words moves nothing.
-    const bool axisWords = has('X') || has('Z') || has('U') || has('W');
-    if (g28 && !axisWords) {
-      if (profile_.bareG28 == BareG28::NoMotion) emit(codes::kG28NoMotion, *g28, {}, Severity::Warning);
-      else if (profile_.bareG28 == BareG28::Error) emit(codes::kG28WithoutAxes, *g28, {});
+      if (seen.has(abs) && seen.has(inc))
+        emit(codes::kAbsoluteAndIncremental, *later(seen.has(abs), seen.has(inc)),
+             {std::string(1, abs), std::string(1, inc)});
+    if (seen.dwell) checkDwell(block, *seen.dwell, seen.has('U') ? seen.has('U') : seen.has('X'), seen.has('P'));
+    if (seen.reference && !seen.axisWords()) {
+      if (profile_.bareG28 == BareG28::NoMotion) emit(codes::kG28NoMotion, *seen.reference, {}, Severity::Warning);
+      else if (profile_.bareG28 == BareG28::Error) emit(codes::kG28WithoutAxes, *seen.reference, {});
     }
+  }
 
-    // Arc rules: the motion group is modal, so "X20 Z-5 R2" after a G02 is an arc too.
-    if (motionCode >= 0) motion_ = motionCode;
-
-    // Chamfer and corner words (Fanuc 0i-TF ",C" ",R" ",A"): on a G01 only, one corner kind.
+  // Chamfer and corner words (Fanuc 0i-TF ",C" ",R" ",A"): on a G01 only, one corner kind.
+  void checkCornerWords(const Block& block, const BlockCodes& seen) {
+    const bool onLine = motion_ == CodeAction::Line && !seen.cannedCycle && !seen.oneShotWord;
     const Word* chamfer = nullptr;
     const Word* corner = nullptr;
     for (const Word& w : block.words) {
       if (!w.comma) continue;
       const bool known = w.letter == 'C' || w.letter == 'R' || w.letter == 'A';
-      if (!known || motion_ != 1 || cannedCycle || oneShotWord) {
+      if (!known || !onLine) {
         emit(codes::kCornerNotOnG01, w, {"," + wordText(w)});
         continue;
       }
@@ -317,40 +383,50 @@ class Checker {
       if (w.letter == 'R') corner = &w;
       if (w.expr < 0) checkValue(w, nullptr);
     }
-    if (chamfer && corner) emit(codes::kChamferAndCorner, *later(chamfer, corner), {"," + wordText(*chamfer), "," + wordText(*corner)});
+    if (chamfer && corner)
+      emit(codes::kChamferAndCorner, *later(chamfer, corner), {"," + wordText(*chamfer), "," + wordText(*corner)});
     // The old forms "X30. K-2." / "Z-20. R3." (a 90-degree chamfer or round without the
     // comma) are not simulated: say so rather than leave the corner sharp without a word.
-    if (motion_ == 1 && !cannedCycle && !oneShotWord) {
-      for (const char letter : {'I', 'K', 'R'})
-        if (const Word* w = has(letter); w && !w->comma && w->expr < 0 && (letter == 'R' || !profile_.flow.chamferWithIOrK)) {
-          std::string size(w->number.view());
-          if (!size.empty() && (size[0] == '-' || size[0] == '+')) size.erase(0, 1);
-          emit(codes::kCornerWordWithoutComma, *w, {wordText(*w), (letter == 'R' ? ",R" : ",C") + size}, Severity::Warning);
-        }
-    }
-    const bool arc = motion_ == 2 || motion_ == 3;
-    if (arc) {
-      const std::string arcCode = motion_ == 2 ? "G02" : "G03";
-      if (motionWord && !axisWords) emit(codes::kArcWithoutEndPoint, *motionWord, {wordText(*motionWord)});
-      if (!cannedCycle && has('R') && (has('I') || has('K'))) emit(codes::kArcRadiusAndCentre, *has('R'), {arcCode});
-      // No R, I or K: "not on one circle (radius 0)" at run time said nothing useful.
-      if (!cannedCycle && axisWords && !has('R') && !has('I') && !has('K'))
-        emit(codes::kArcWithoutRadius, motionWord ? *motionWord : *(has('X') ? has('X') : has('Z') ? has('Z') : has('U') ? has('U') : has('W')), {arcCode});
-      if (compWord && (motionWord || axisWords)) {
-        if (compCode == 40) emit(codes::kCompEndOnArc, *compWord, {arcCode});
-        else emit(codes::kCompStartOnArc, *compWord, {wordText(*compWord), arcCode});
+    if (!onLine) return;
+    for (const char letter : {'I', 'K', 'R'})
+      if (const Word* w = seen.has(letter);
+          w && !w->comma && w->expr < 0 && (letter == 'R' || !profile_.flow.chamferWithIOrK)) {
+        std::string size(w->number.view());
+        if (!size.empty() && (size[0] == '-' || size[0] == '+')) size.erase(0, 1);
+        emit(codes::kCornerWordWithoutComma, *w, {wordText(*w), (letter == 'R' ? ",R" : ",C") + size},
+             Severity::Warning);
       }
-    }
   }
 
- private:
+  // Arcs: an end point, a radius or a centre (not both), and no compensation
+  // starting or ending on one.
+  void checkArc(const BlockCodes& seen) {
+    if (motion_ != CodeAction::ArcCw && motion_ != CodeAction::ArcCcw) return;
+    const std::string arcCode = motion_ == CodeAction::ArcCw ? "G02" : "G03";
+    const bool axisWords = seen.axisWords();
+    if (seen.motionWord && !axisWords) emit(codes::kArcWithoutEndPoint, *seen.motionWord, {wordText(*seen.motionWord)});
+    if (!seen.cannedCycle && seen.has('R') && (seen.has('I') || seen.has('K')))
+      emit(codes::kArcRadiusAndCentre, *seen.has('R'), {arcCode});
+    // No R, I or K: "not on one circle (radius 0)" at run time said nothing useful.
+    if (!seen.cannedCycle && axisWords && !seen.has('R') && !seen.has('I') && !seen.has('K')) {
+      const Word* at = seen.motionWord;
+      for (const char axis : {'X', 'Z', 'U', 'W'})
+        if (!at) at = seen.has(axis);
+      emit(codes::kArcWithoutRadius, *at, {arcCode});
+    }
+    if (seen.compWord && (seen.motionWord || axisWords)) {
+      if (seen.comp->action == CodeAction::CompOff) emit(codes::kCompEndOnArc, *seen.compWord, {arcCode});
+      else emit(codes::kCompStartOnArc, *seen.compWord, {wordText(*seen.compWord), arcCode});
+    }
+  }
   const CheckOptions& options_;
   const MachineProfile& profile_;
+  const detail::CodeIndex& codes_;
   std::vector<Diagnostic>& out_;
   std::string letters_;  // the profile's letters, spaced, for E201
   std::uint32_t allowedLetters_;  // the profile's letters, one bit each (Block::letterBit)
   bool inch_;            // inch in force: G20 seen last, or inch at power-on
-  int motion_ = 0;      // group 01 code in force (G00 at start)
+  CodeAction motion_ = CodeAction::Rapid;  // group 01 code in force (G00 at start)
   bool full_ = false;
 
   // (A bit test: it is asked twice for every word of the program.)
@@ -488,10 +564,7 @@ std::vector<Diagnostic> checkToolBitmaps(const Program& program, const CheckOpti
   for (const Block& b : program.blocks) {
     if (b.statement.kind != StatementKind::None || !b.has('T')) continue;  // (most blocks: one pass, no T)
     // As check(): a macro call's letters are its arguments, T too.
-    const bool macroCall = profile.flow.macroB && std::any_of(b.words.begin(), b.words.end(), [](const Word& w) {
-      return w.letter == 'G' && w.expr < 0 && !w.hasDecimalPoint && (w.value == 65.0 || w.value == 66.0);
-    });
-    if (macroCall) continue;
+    if (profile.flow.macroB && isMacroCallBlock(b, options.dialect)) continue;
     for (const Word& w : b.words) {
       if (w.letter != 'T' || w.comma || w.expr >= 0) continue;
       const int tool = toolStation(w, profile, options.turretStations);
@@ -540,11 +613,7 @@ std::vector<Diagnostic> check(const Program& program, const CheckOptions& option
   if (!checker.full()) checkFlow(program, options, out);
   if (options.modalRules && !checker.full() && !options.stopAtFirstError) checkModalState(program, options, out);
   // Blocks come in line order, so this only reorders within a line.
-  std::stable_sort(out.begin(), out.end(), [](const Diagnostic& a, const Diagnostic& b) {
-    if (a.range.file != b.range.file) return a.range.file < b.range.file;
-    if (a.range.line != b.range.line) return a.range.line < b.range.line;
-    return a.range.column < b.range.column;
-  });
+  sortByPlace(out);
   return out;
 }
 

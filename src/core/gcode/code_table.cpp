@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "code_index.h"
+#include "klueng/core/gcode/program.h"
 
 namespace klueng::core::gcode {
 
@@ -318,7 +319,7 @@ constexpr ActionRow kActions[] = {
     {'G', 57, G::WorkOffset, A::WorkOffset}, {'G', 58, G::WorkOffset, A::WorkOffset},
     {'G', 59, G::WorkOffset, A::WorkOffset}, {'G', 4, G::NonModal, A::Dwell},
     {'G', 27, G::NonModal, A::ReferenceCheck}, {'G', 28, G::NonModal, A::ReferenceReturn},
-    {'G', 30, G::NonModal, A::ReferenceReturn}, {'G', 29, G::NonModal, A::ReturnFromReference},
+    {'G', 30, G::NonModal, A::SecondReferenceReturn}, {'G', 29, G::NonModal, A::ReturnFromReference},
     {'G', 50, G::NonModal, A::CoordinateSet}, {'G', 53, G::NonModal, A::MachineCoordinates},
     {'G', 65, G::NonModal, A::MacroCall},    {'G', 66, G::MacroModal, A::MacroModalCall},
     {'G', 67, G::MacroModal, A::MacroModalCancel}, {'G', 80, G::CannedCycle, A::CycleCancel},
@@ -450,6 +451,19 @@ char wordKind(const CodeInfo& row, char letter) {
 const CodeInfo* findCode(char letter, int number, Dialect dialect) {
   if ((letter != 'G' && letter != 'M') || number < 0 || number > 99) return nullptr;
   return detail::codeIndexOf(dialect).rows[letter == 'G' ? 0 : 1][static_cast<std::size_t>(number)];
+}
+
+const Word* macroCallWord(const Block& block, Dialect dialect, const CodeInfo** row) {
+  for (const Word& w : block.words) {
+    if (w.letter != 'G' || w.expr >= 0 || w.hasDecimalPoint) continue;
+    const CodeInfo* info = findCode('G', w.code(), dialect);
+    if (info && (info->action == CodeAction::MacroCall || info->action == CodeAction::MacroModalCall ||
+                 info->action == CodeAction::MacroModalCancel)) {
+      if (row) *row = info;
+      return &w;
+    }
+  }
+  return nullptr;
 }
 
 std::optional<CodeInfo> lookupCode(char letter, int number, Dialect dialect) {

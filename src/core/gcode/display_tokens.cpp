@@ -3,6 +3,8 @@
 
 #include <string>
 
+#include "klueng/core/gcode/comment.h"
+
 namespace klueng::core::gcode {
 
 namespace {
@@ -23,7 +25,7 @@ std::vector<DisplayToken> displayTokens(std::u16string_view line) {
   while (i < n) {
     const char16_t c = line[static_cast<std::size_t>(i)];
     if (c == u'(') {
-      const std::size_t close = line.find(u')', static_cast<std::size_t>(i));
+      const std::size_t close = commentClose(line, static_cast<std::size_t>(i));
       const int end = close == std::u16string_view::npos ? n : static_cast<int>(close) + 1;
       add(i, end, DisplayTokenKind::Comment);
       i = end;

@@ -24,10 +24,15 @@ std::optional<int> constantValue(const Program& program, int expr) {
   return static_cast<int>(e.code[0].value);
 }
 
-const Word* codeWord(const Block& b, char letter, int number) {
+// The block's first G or M word whose code does `action` in `dialect` (the code
+// table says which number that is: M97 is Haas only, G33 threads in system B).
+const Word* actionWord(const Block& b, char letter, CodeAction action, Dialect dialect) {
   if (!b.mayHave(letter)) return nullptr;
-  for (const Word& w : b.words)
-    if (w.letter == letter && w.expr < 0 && !w.hasDecimalPoint && !w.comma && w.code() == number) return &w;
+  for (const Word& w : b.words) {
+    if (w.letter != letter || w.expr >= 0 || w.hasDecimalPoint || w.comma) continue;
+    const CodeInfo* row = findCode(letter, w.code(), dialect);
+    if (row && row->action == action) return &w;
+  }
   return nullptr;
 }
 
@@ -138,8 +143,8 @@ class FlowChecker {
     const Word* lw = constantWord(b, 'L');
     const std::optional<double> l = lw ? std::optional<double>(lw->value) : std::nullopt;
     if (p) checkSubprogramCalls(b, p, l, section, index);
-    const Word* g65 = codeWord(b, 'G', 65);
-    const Word* g66 = g65 ? nullptr : codeWord(b, 'G', 66);
+    const Word* g65 = actionWord(b, 'G', CodeAction::MacroCall, profile_.dialect);
+    const Word* g66 = g65 ? nullptr : actionWord(b, 'G', CodeAction::MacroModalCall, profile_.dialect);
     const Word* g = g65 ? g65 : g66;
     if (!g || !profile_.flow.macroB) return;
     for (const Word& w : b.words) {
@@ -187,7 +192,9 @@ class FlowChecker {
       emit(codes::kProfileBlockMissing, q->range, {g->text() + " " + q->text(), std::to_string(q->code())});
     if (!profile_.cycles.profileFirstBlockNeedsG00G01 || !profileStarts_.insert(ns).second) return;
     const Block& first = program_.blocks[static_cast<std::size_t>(ns)];
-    if (first.statement.kind != StatementKind::None || codeWord(first, 'G', 0) || codeWord(first, 'G', 1)) return;
+    if (first.statement.kind != StatementKind::None || actionWord(first, 'G', CodeAction::Rapid, profile_.dialect) ||
+        actionWord(first, 'G', CodeAction::Line, profile_.dialect))
+      return;
     for (const Word& w : first.words)
       if (w.letter == 'G' && w.expr >= 0) return;  // a G code from a macro value: known at run time
     const SourceRange at = first.words.empty() ? SourceRange{first.line, 1, 0} : first.words.front().range;
@@ -208,18 +215,18 @@ class FlowChecker {
 
   // M98 / M97 / M99 with a constant P (every M of the block is looked at only then).
   void checkSubprogramCalls(const Block& b, const Word* p, std::optional<double> l, int section, int index) {
-    if (const Word* m98 = codeWord(b, 'M', 98)) {
+    if (const Word* m98 = actionWord(b, 'M', CodeAction::SubprogramCall, profile_.dialect)) {
       const CallTarget t = callTarget(p->value, l, profile_.flow.packedRepeats);
       if (const ProgramSection* callee = index_.program(t.number))
         calls_.push_back({section, static_cast<int>(callee - index_.sections().data()), m98, index});
       else programNotFound(p->range, "M98 " + p->text(), t.number);
     }
-    if (const Word* m97 = codeWord(b, 'M', 97); m97 && findCode('M', 97, profile_.dialect)) {
+    if (actionWord(b, 'M', CodeAction::LocalCall, profile_.dialect)) {
       const CallTarget t = callTarget(p->value, l, false);
       if (index_.findSequence(section, t.number, index) < 0)
         emit(codes::kLocalTargetMissing, p->range, {"M97 " + p->text(), std::to_string(t.number)});
     }
-    if (codeWord(b, 'M', 99)) hasConditions_[static_cast<std::size_t>(section)] = true;
+    if (actionWord(b, 'M', CodeAction::SubprogramReturn, profile_.dialect)) hasConditions_[static_cast<std::size_t>(section)] = true;
   }
 
   // Call chains through constant calls: deeper than the control allows is an

@@ -39,7 +39,8 @@ bool endsTheWalk(CodeAction a) {
 bool losesPosition(CodeAction a) {
   switch (a) {
     case CodeAction::BoxTurning: case CodeAction::BoxThreading: case CodeAction::BoxFacing:
-    case CodeAction::ReferenceCheck: case CodeAction::ReferenceReturn: case CodeAction::ReturnFromReference:
+    case CodeAction::ReferenceCheck: case CodeAction::ReferenceReturn: case CodeAction::SecondReferenceReturn:
+    case CodeAction::ReturnFromReference:
     case CodeAction::CoordinateSet: case CodeAction::MachineCoordinates: case CodeAction::WorkOffset:
     case CodeAction::Finishing: case CodeAction::TurnRoughing: case CodeAction::FaceRoughing:
     case CodeAction::PatternRepeating: case CodeAction::FacePecking: case CodeAction::Grooving:
@@ -95,7 +96,7 @@ class ModalWalk {
         case CodeAction::ConstantSurface: g96 = &word; break;
         case CodeAction::CoordinateSet: coordinateSet = true; [[fallthrough]];
         case CodeAction::Dwell: case CodeAction::ReferenceCheck: case CodeAction::ReferenceReturn:
-        case CodeAction::ReturnFromReference: case CodeAction::MachineCoordinates:
+        case CodeAction::SecondReferenceReturn: case CodeAction::ReturnFromReference: case CodeAction::MachineCoordinates:
           axisWordsNotAMove = true;  // X/Z/U/W here are a time, a point or a name, not a feed move
           break;
         case CodeAction::Inch: inch_ = true; break;

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "diagnostic_codes.h"
+#include "klueng/core/gcode/comment.h"
 #include "klueng/core/gcode/macro.h"
 
 namespace klueng::core::gcode {
@@ -78,15 +79,10 @@ class LineParser {
         // A comment ends where its parentheses balance ("(n = Vc*1000/(pi*D))"
         // is one comment) or at the end of the line (issue 26; docs/program-file.md).
         const int startCol = col;
-        std::size_t j = i + 1;
+        const std::size_t close = commentClose(line, i);
+        const std::size_t j = close == std::string_view::npos ? line.size() : close;
         int endCol = col + 1;
-        int depth = 1;
-        while (j < line.size()) {
-          if (line[j] == '(') ++depth;
-          else if (line[j] == ')' && --depth == 0) break;
-          j += utf8SequenceLength(line, j);
-          ++endCol;
-        }
+        for (std::size_t k = i + 1; k < j; k += utf8SequenceLength(line, k)) ++endCol;
         appendComment(block, line.substr(i + 1, j - i - 1));
         if (j >= line.size()) {
           report(codes::kCommentToLineEnd, startCol, endCol - startCol, {}, Severity::Warning);

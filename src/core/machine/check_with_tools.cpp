@@ -28,11 +28,7 @@ CheckedWithTools checkWhileInferring(const gcode::Program& program, gcode::Check
   }
   if (more.empty()) return out;
   out.diagnostics.insert(out.diagnostics.end(), std::make_move_iterator(more.begin()), std::make_move_iterator(more.end()));
-  std::stable_sort(out.diagnostics.begin(), out.diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {
-    if (a.range.file != b.range.file) return a.range.file < b.range.file;
-    if (a.range.line != b.range.line) return a.range.line < b.range.line;
-    return a.range.column < b.range.column;
-  });
+  sortByPlace(out.diagnostics);
   return out;
 }
 

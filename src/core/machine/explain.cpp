@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "klueng/core/gcode/address_table.h"
 #include "klueng/core/gcode/decimal_point.h"
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/gcode/word_format.h"
@@ -46,7 +47,8 @@ std::optional<Phrase> actionPhrase(CodeAction a) {
     case CodeAction::WorkOffset: return Phrase{"use this work coordinate system", "ใช้ระบบพิกัดงานนี้"};
     case CodeAction::Dwell: return Phrase{"wait with the tool standing still", "หยุดรอโดยมีดอยู่กับที่"};
     case CodeAction::ReferenceCheck: return Phrase{"rapid to the point and check it is the reference point", "เคลื่อนที่เร็วไปยังจุดนั้นแล้วตรวจว่าเป็นจุดอ้างอิง"};
-    case CodeAction::ReferenceReturn: return Phrase{"return to the reference point through the given point", "กลับสู่จุดอ้างอิงโดยผ่านจุดที่กำหนด"};
+    case CodeAction::ReferenceReturn:
+    case CodeAction::SecondReferenceReturn: return Phrase{"return to the reference point through the given point", "กลับสู่จุดอ้างอิงโดยผ่านจุดที่กำหนด"};
     case CodeAction::ReturnFromReference: return Phrase{"come back from the reference point through the G28 point", "กลับจากจุดอ้างอิงผ่านจุดกลางทางของ G28"};
     case CodeAction::CoordinateSet: return Phrase{"set the coordinates, or limit the spindle speed with S", "ตั้งระบบพิกัด หรือจำกัดความเร็วรอบด้วย S"};
     case CodeAction::MachineCoordinates: return Phrase{"move in machine coordinates", "เคลื่อนที่ในระบบพิกัดเครื่อง"};
@@ -190,7 +192,8 @@ class Explainer {
     const Word* t = b_.find('T');
     if (!t || t->expr >= 0) return;
     const int code = t->code();
-    const int station = code >= 100 ? code / 100 : code, offset = code >= 100 ? code % 100 : 0;
+    // T1 .. T99 name a station alone; T0101 a station and its offset.
+    const auto [station, offset] = code >= 100 ? gcode::splitToolNumber(code) : gcode::ToolNumber{code, 0};
     const std::string s = gcode::formatFixed(station, 0), o = gcode::formatFixed(offset, 0);
     const std::string two = (station < 10 ? "0" : "") + s, twoOffset = (offset < 10 ? "0" : "") + o;
     if (offset == 0) add(th_ ? "เปลี่ยนมีดตัดหมายเลข " + two + " ยกเลิกออฟเซต" : "turn to tool " + two + ", no offset");

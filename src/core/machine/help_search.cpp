@@ -36,7 +36,8 @@ std::string_view keywords(CodeAction a) {
     case CodeAction::FeedPerMinute: case CodeAction::FeedPerRev: return "feed rate อัตราป้อน";
     case CodeAction::Inch: case CodeAction::Metric: return "units inch metric millimetre หน่วย นิ้ว มิลลิเมตร";
     case CodeAction::Dwell: return "dwell wait pause delay หยุดรอ หน่วงเวลา";
-    case CodeAction::ReferenceCheck: case CodeAction::ReferenceReturn: case CodeAction::ReturnFromReference:
+    case CodeAction::ReferenceCheck: case CodeAction::ReferenceReturn: case CodeAction::SecondReferenceReturn:
+    case CodeAction::ReturnFromReference:
       return "reference point home return จุดอ้างอิง";
     case CodeAction::CoordinateSet: return "spindle limit clamp max rpm coordinate จำกัดความเร็วรอบ ตั้งพิกัด";
     case CodeAction::SpindleCw: case CodeAction::SpindleCcw: case CodeAction::SpindleStop:

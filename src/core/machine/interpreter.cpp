@@ -248,9 +248,10 @@ bool Interpreter::executeBlock() {
     const bool dwellOnly = oneShotG && oneShotG->info->action == CodeAction::Dwell && !motionG && mCount == 0;
     if (!(dwellOnly && profile_.flow.dwellBeforeCornerMove)) return cornerNeedsMove();
   }
-  if (const Word* t = find('T')) lastT_ = t->code();
-  if (const Word* n = find('N')) lastN_ = n->code();
-  if (mCount > 0) lastM_ = ms[mCount - 1].info->number;
+  const Word* t = find('T');
+  const Word* n = find('N');
+  macros_.noteBlock(t ? std::optional<int>(t->code()) : std::nullopt, n ? std::optional<int>(n->code()) : std::nullopt,
+                    mCount > 0 ? std::optional<int>(ms[mCount - 1].info->number) : std::nullopt);
   emitSnapshot();
   return true;
 }
@@ -293,7 +294,7 @@ MotionMode Interpreter::motionFor(CodeAction action) {
 // The limits come from the profile and the tables, whatever their sizes.
 bool Interpreter::selectTool(const Word& t) {
   const int value = t.code();
-  const int tool = value / 100, offset = value % 100;
+  const auto [tool, offset] = gcode::splitToolNumber(value);
   // Stations: the profile's turret, else the tool table's (machine.cfg turret size).
   // TODO: read the turret size from io::MachineConfig once it has one.
   const int tableStations = static_cast<int>(setup_.tools.bitmap.size());
@@ -365,7 +366,7 @@ bool Interpreter::mCode(const CodeWord& c) {
       if (a == CodeAction::OptionalStop && !options_.optionalStop) return true;
       stopped_ = true;
       stopEndsRun_ = a == CodeAction::ProgramEnd || options_.stopAtM00;
-      if (a == CodeAction::ProgramEnd) partsMachined_ += 1.0;  // #3901 counts finished parts
+      if (a == CodeAction::ProgramEnd) macros_.partFinished();
       return true;
     case ModalGroup::MSubprogram: {
       // Performed after the block (interpreter_flow.cpp): M98 P L, M97 P L, M99 [P].

@@ -18,16 +18,10 @@ using gcode::StatementKind;
 
 // A G65 / G66 / G67 block (the code table's macro call actions) runs as a call, not as motion.
 bool isMacroCallBlock(const Block& b, gcode::Dialect dialect, CodeWord& g) {
-  for (const Word& w : b.words) {
-    if (w.letter != 'G' || w.expr >= 0 || w.hasDecimalPoint) continue;
-    const CodeInfo* info = gcode::findCode('G', w.code(), dialect);
-    if (info && (info->action == CodeAction::MacroCall || info->action == CodeAction::MacroModalCall ||
-                 info->action == CodeAction::MacroModalCancel)) {
-      g = {&w, info};
-      return true;
-    }
-  }
-  return false;
+  const CodeInfo* info = nullptr;
+  const Word* w = gcode::macroCallWord(b, dialect, &info);
+  if (w) g = {w, info};
+  return w != nullptr;
 }
 
 
@@ -140,10 +134,7 @@ void Interpreter::run() {
   const int count = static_cast<int>(program_.blocks.size());
   visited_.assign(program_.blocks.size(), 0);
   matchLoops();
-  locals_.assign(1, {});
-  if (options_.persistentVariables)
-    for (const auto& [n, v] : *options_.persistentVariables)
-      if (n >= 500 && n <= 999) persistent_[static_cast<std::size_t>(n - 500)] = MacroValue::of(v);
+  if (options_.persistentVariables) macros_.loadPersistent(*options_.persistentVariables);
   FlowFrame main;
   main.section = count > 0 ? index_.sectionOf(0) : 0;
   main.program = count > 0 ? index_.section(main.section).number : 0;
@@ -183,13 +174,7 @@ void Interpreter::run() {
   if (corner_.active && !sink_->halted()) cornerNeedsMove();
   if (flow_ && sink_->halted() && block_ && !capture_) flow_->alarmState = snapshot();
   // The persistent variables go back to the caller (who keeps them in a file).
-  if (options_.persistentVariables) {
-    for (int n = 500; n <= 999; ++n) {
-      const MacroValue& v = persistent_[static_cast<std::size_t>(n - 500)];
-      if (v.vacant) options_.persistentVariables->erase(n);
-      else (*options_.persistentVariables)[n] = v.value;
-    }
-  }
+  if (options_.persistentVariables) macros_.savePersistent(*options_.persistentVariables);
   sink_->end();
 }
 
@@ -441,14 +426,13 @@ bool Interpreter::callProgram(CallFrame::Kind kind, int number, int repeats, con
   f.localId = frames_.back().localId;
   if (macro) {
     if (arguments) setArguments(*arguments, f.arguments);
-    locals_.push_back(f.arguments);
-    f.localLevel = static_cast<int>(locals_.size()) - 1;
+    f.localLevel = macros_.pushLevel(f.arguments);
     f.localId = nextLocalId_++;
     if (flow_) {
       flow_->localFrames.push_back(static_cast<int>(frames_.size()));
       // The arguments, as writes of the calling block into the new frame.
       for (int n = 1; n <= 33; ++n) {
-        const MacroValue& v = locals_.back()[static_cast<std::size_t>(n - 1)];
+        const MacroValue& v = f.arguments[static_cast<std::size_t>(n - 1)];
         if (!v.vacant) flow_->writes.push_back(VariableWrite{snapshots_, n, f.localId, v.value, false});
       }
     }
@@ -481,7 +465,7 @@ bool Interpreter::returnFromCall(std::optional<int> sequence, const SourceRange&
     ++f.repeat;
     if (f.kind == CallFrame::Kind::Macro || f.kind == CallFrame::Kind::ModalMacro) {
       // Each pass of G65 ... L starts with the call's arguments again.
-      locals_.back() = f.arguments;
+      macros_.locals(f.localLevel) = f.arguments;
     }
     noteStack();
     next_ = f.entry;
@@ -491,7 +475,7 @@ bool Interpreter::returnFromCall(std::optional<int> sequence, const SourceRange&
   }
   const FlowFrame done = f;
   frames_.pop_back();
-  if (done.localLevel != frames_.back().localLevel && !locals_.empty()) locals_.pop_back();
+  if (done.localLevel != frames_.back().localLevel) macros_.popLevel();
   noteStack();
   if (sequence) {
     // M99 P n: back to N n of the calling program instead of the block after the call.

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "klueng/core/gcode/address_table.h"
 #include "klueng/core/gcode/code_table.h"
 #include "klueng/core/gcode/machine_profile.h"
 #include "klueng/core/gcode/macro.h"
@@ -23,6 +24,7 @@
 #include "klueng/core/machine/interpreter.h"
 #include "klueng/core/machine/kinematics.h"
 #include "machine/cycles.h"
+#include "machine/macro_store.h"
 
 namespace klueng::core::machine::detail {
 
@@ -312,9 +314,7 @@ class Interpreter final : public gcode::MacroVariables {
   FlowLog* flow_ = nullptr;
   gcode::ProgramIndex index_;
   std::vector<FlowFrame> frames_;
-  std::vector<std::array<gcode::MacroValue, 33>> locals_;   // one per G65/G66 level (and the main's)
-  std::array<gcode::MacroValue, 100> common_{};             // #100-#199
-  std::array<gcode::MacroValue, 500> persistent_{};         // #500-#999
+  MacroStore macros_;                 // #1-#999 and the system variables a run keeps
   std::vector<int> loopPartner_;      // WHILE/DO block -> its END, END -> its WHILE/DO (-1 none)
   std::vector<char> visited_;         // blocks run at least once (the endless-loop limit counts repeats)
   long long repeatedBlocks_ = 0;
@@ -347,10 +347,6 @@ class Interpreter final : public gcode::MacroVariables {
     int blockIndex = -1;
   } corner_;
   gcode::Block scratch_;              // the running block with its expressions evaluated
-  double timerBase_ = 0.0;            // #3001 counts from here (ms); #3002 (hours)
-  double hourBase_ = 0.0;
-  double partsMachined_ = 0.0, partsRequired_ = 0.0;  // #3901 #3902
-  int lastT_ = 0, lastM_ = 0, lastN_ = 0;             // #4120 #4113 #4114
 };
 
 }  // namespace klueng::core::machine::detail

@@ -1,8 +1,8 @@
 // Custom macro B variables (Fanuc 0i-TF manual, "Types of variables" and
-// "System variables"): #0 vacant, locals #1-#33 per macro level, common
-// #100-#199 and #500-#999 (kept between runs by the caller), and the system
-// variables a simulation can honour. Reads and writes are recorded in the
-// FlowLog for the variable watch.
+// "System variables"): #0 vacant; what the run keeps (#1-#999, timers,
+// counters) is the MacroStore's (macro_store.h); here the system variables
+// that show the machine's state (offsets, modal codes, positions). Writes are
+// recorded in the FlowLog for the variable watch.
 #include <algorithm>
 #include <cmath>
 
@@ -50,18 +50,7 @@ bool Interpreter::read(int n, MacroValue& out, const char*& errorCode) {
   errorCode = codes::kNoSuchVariable;
   out = MacroValue{};
   if (n == 0) return true;
-  if (n >= 1 && n <= 33) {
-    out = locals_.empty() ? MacroValue{} : locals_[static_cast<std::size_t>(frames_.back().localLevel)][static_cast<std::size_t>(n - 1)];
-    return true;
-  }
-  if (n >= 100 && n <= 199) {
-    out = common_[static_cast<std::size_t>(n - 100)];
-    return true;
-  }
-  if (n >= 500 && n <= 999) {
-    out = persistent_[static_cast<std::size_t>(n - 500)];
-    return true;
-  }
+  if (macros_.read(n, frames_.empty() ? 0 : frames_.back().localLevel, *sink_, out)) return true;
   const int offsets = static_cast<int>(offsets_.offsets.size());
   // Tool offsets: #2001+ X, #2101+ Z, #2201+ nose radius, #2301+ tip (per offset number).
   if (n >= 2001 && n <= 2400) {
@@ -79,16 +68,9 @@ bool Interpreter::read(int n, MacroValue& out, const char*& errorCode) {
   }
   switch (n) {
     case 3000: return true;  // vacant until written (the write raises the alarm)
-    case 3001: out = MacroValue::of(sink_->elapsed() * 1000.0 - timerBase_); return true;
-    case 3002: out = MacroValue::of(sink_->elapsed() / 3600.0 - hourBase_); return true;
-    case 3901: out = MacroValue::of(partsMachined_); return true;
-    case 3902: out = MacroValue::of(partsRequired_); return true;
     case 4109: out = MacroValue::of(modal_.feed / unit()); return true;
-    case 4113: out = MacroValue::of(lastM_); return true;
-    case 4114: out = MacroValue::of(lastN_); return true;
     case 4115: out = MacroValue::of(frames_.back().program); return true;
     case 4119: out = MacroValue::of(modal_.sWord); return true;
-    case 4120: out = MacroValue::of(lastT_); return true;
     case 5001: case 5041: out = MacroValue::of(positionValue(1, false)); return true;
     case 5002: case 5042: out = MacroValue::of(positionValue(2, false)); return true;
     case 5021: out = MacroValue::of(positionValue(1, true)); return true;
@@ -104,14 +86,9 @@ bool Interpreter::read(int n, MacroValue& out, const char*& errorCode) {
 
 bool Interpreter::writeVariable(int n, MacroValue v, const SourceRange& at) {
   const std::string name = "#" + std::to_string(n);
-  int localFrame = -1;
-  if (n >= 1 && n <= 33) {
-    locals_[static_cast<std::size_t>(frames_.back().localLevel)][static_cast<std::size_t>(n - 1)] = v;
-    localFrame = frames_.back().localId;
-  } else if (n >= 100 && n <= 199) {
-    common_[static_cast<std::size_t>(n - 100)] = v;
-  } else if (n >= 500 && n <= 999) {
-    persistent_[static_cast<std::size_t>(n - 500)] = v;
+  const int localFrame = n >= 1 && n <= 33 ? frames_.back().localId : -1;
+  if (macros_.write(n, frames_.back().localLevel, *sink_, v)) {
+    // kept by the store
   } else if (n == 3000) {
     // #3000 = n (MESSAGE): a program alarm with the block's comment as its text.
     if (flow_) flow_->writes.push_back(VariableWrite{snapshots_, n, -1, v.value, v.vacant});
@@ -123,10 +100,6 @@ bool Interpreter::writeVariable(int n, MacroValue v, const SourceRange& at) {
     notice(Severity::Note, codes::kMacroStop, at, {block_->comment});
     stopped_ = true;
     stopEndsRun_ = options_.stopAtM00;
-  } else if (n == 3001) {
-    timerBase_ = sink_->elapsed() * 1000.0 - v.value;
-  } else if (n == 3002) {
-    hourBase_ = sink_->elapsed() / 3600.0 - v.value;
   } else if (n >= 2001 && n <= 2400 && (n - 2001) % 100 < static_cast<int>(offsets_.offsets.size())) {
     // Offsets: #2001+ X (diameter), #2101+ Z, #2201+ nose radius, #2301+ tip. A program
     // that corrects its own wear writes them; the new value counts from the next T word.
@@ -147,10 +120,6 @@ bool Interpreter::writeVariable(int n, MacroValue v, const SourceRange& at) {
         break;
       }
     }
-  } else if (n == 3901) {
-    partsMachined_ = v.value;
-  } else if (n == 3902) {
-    partsRequired_ = v.value;
   } else {
     MacroValue ignored;
     const char* code = nullptr;

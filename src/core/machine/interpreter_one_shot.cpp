@@ -68,7 +68,8 @@ bool Interpreter::oneShot(const CodeWord& c) {
       mach_.positionCheck = true;
       return true;
     }
-    case CodeAction::ReferenceReturn: return referenceReturn(w);  // G30 P2..P4 would pick among several points; there is one
+    case CodeAction::ReferenceReturn:
+    case CodeAction::SecondReferenceReturn: return referenceReturn(w);  // G30 P2..P4 would pick among several points; there is one
     case CodeAction::ReturnFromReference: {
       // From the reference point via the G28 intermediate point to the target.
       if (!hasAxisWords()) return true;

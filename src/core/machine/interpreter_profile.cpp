@@ -107,7 +107,7 @@ bool Interpreter::profileBlockAllowed(const CodeWord* motion, const CodeWord* cy
 bool Interpreter::captureTool(const Word& t) {
   if (!capture_->withFeed) return true;
   capture_->tool(t);
-  const int number = t.code() % 100;
+  const int number = gcode::splitToolNumber(t.code()).offset;
   if (number == 0) {
     mach_.offsetX = mach_.offsetZ = 0.0;
   } else if (number > 0 && number <= io::kOffsetCount) {  // a negative T (a typing slip the check reports) names none

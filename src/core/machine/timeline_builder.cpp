@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "klueng/core/comp/nose_comp.h"
 #include "klueng/core/geometry.h"
 #include "klueng/core/machine/kinematics.h"
 #include "klueng/core/machine/sink.h"
@@ -93,7 +94,7 @@ class TimelineBuilder final : public MachineSink {
     mv.program = c.program;
     mv.tStart = time_;
     mv.tEnd = time_ + seconds;
-    mv.noseCentre = -c.ctx.noseRadius * tipVector(c.ctx.tip);
+    mv.noseCentre = -c.ctx.noseRadius * comp::tipVector(c.ctx.tip);
     mv.tool = c.ctx.tool;
     mv.offset = c.ctx.offset;
     mv.spindle = c.ctx.spindle;

@@ -9,6 +9,7 @@
 
 #include "machine/tool_words.h"
 #include "klueng/core/gcode/code_table.h"
+#include "klueng/core/gcode/comment.h"
 
 namespace klueng::core::machine::detail {
 
@@ -23,28 +24,21 @@ constexpr double kMinZRunMm = 0.5;        // a Z feed shorter than this says not
 // The text of ( ) and ; comments on one raw line.
 std::string commentOf(std::string_view line) {
   std::string out;
-  int depth = 0;
-  std::string cur;
+  const auto append = [&out](std::string_view text) {
+    if (!out.empty()) out += ' ';
+    out += text;
+  };
   for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (depth == 0 && c == ';') {
-      if (!out.empty()) out += ' ';
-      out += std::string(line.substr(i + 1));
+    if (line[i] == ';') {
+      append(line.substr(i + 1));
       break;
     }
-    if (c == '(') {
-      if (depth++ == 0) continue;
-    } else if (c == ')' && depth > 0) {
-      if (--depth == 0) {
-        if (!out.empty()) out += ' ';
-        out += cur;
-        cur.clear();
-        continue;
-      }
-    }
-    if (depth > 0) cur += c;
+    if (line[i] != '(') continue;
+    const std::size_t close = gcode::commentClose(line, i);
+    append(line.substr(i + 1, close == std::string_view::npos ? std::string_view::npos : close - i - 1));
+    if (close == std::string_view::npos) break;
+    i = close;
   }
-  if (depth > 0) out += (out.empty() ? "" : " ") + cur;
   const auto b = out.find_first_not_of(" \t");
   const auto e = out.find_last_not_of(" \t\r");
   return b == std::string::npos ? std::string() : out.substr(b, e - b + 1);

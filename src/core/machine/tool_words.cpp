@@ -6,6 +6,8 @@
 #include <initializer_list>
 #include <vector>
 
+#include "klueng/core/gcode/address_table.h"
+
 namespace klueng::core::machine::detail {
 
 namespace {
@@ -179,7 +181,7 @@ std::vector<CommentToolWord> toolWordsIn(std::string_view comment) {
     if (digits == 0 || isDigit(d)) continue;
     int value = 0;
     for (std::size_t k = i + 1; k < d; ++k) value = value * 10 + (comment[k] - '0');
-    out.push_back({digits <= 2 ? value : value / 100, comment.substr(i)});
+    out.push_back({digits <= 2 ? value : gcode::splitToolNumber(value).station, comment.substr(i)});
     starts.push_back(i);
   }
   for (std::size_t n = 0; n + 1 < out.size(); ++n) {

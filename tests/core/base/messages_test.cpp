@@ -5,7 +5,6 @@
 #include <set>
 
 #include "klueng/core/diagnostic_codes.h"
-#include "klueng/core/geometry.h"
 
 namespace klueng::core {
 namespace {
@@ -70,15 +69,6 @@ TEST(Messages, TheGuiNamesItsOwnPlacesNotFlags) {
   EXPECT_EQ(formatMessage(dialect, Lang::Th, Surface::Gui),
             "บล็อกที่ผิดพลาด 3 บล็อกเป็นรูปแบบของ Haas: เลือก Haas ที่ ตั้งค่ามีดตัด ▸ ภาษาจีโค้ด");
   EXPECT_EQ(formatMessage(dialect, Lang::En), "blocks with errors that are Haas forms: 3; choose the Haas dialect (--dialect haas)");
-}
-
-TEST(Geometry, TipVectorsFollowTheSpecGrid) {
-  EXPECT_EQ(tipVector(3), Vec2(-1, -1));  // outside turning tool
-  EXPECT_EQ(tipVector(2), Vec2(-1, 1));   // boring bar
-  EXPECT_EQ(tipVector(8), Vec2(0, -1));
-  EXPECT_EQ(tipVector(0), Vec2(0, 0));
-  EXPECT_EQ(tipVector(9), Vec2(0, 0));
-  EXPECT_EQ(tipVector(5), Vec2(1, 0));
 }
 
 }  // namespace

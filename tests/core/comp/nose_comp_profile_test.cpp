@@ -206,5 +206,14 @@ TEST(ProfileShape, HasTapersArcsStepsAndFaces) {
   }
 }
 
+TEST(TipVector, FollowsTheSpecGrid) {
+  EXPECT_EQ(tipVector(3), Vec2(-1, -1));  // outside turning tool
+  EXPECT_EQ(tipVector(2), Vec2(-1, 1));   // boring bar
+  EXPECT_EQ(tipVector(8), Vec2(0, -1));
+  EXPECT_EQ(tipVector(0), Vec2(0, 0));
+  EXPECT_EQ(tipVector(9), Vec2(0, 0));
+  EXPECT_EQ(tipVector(5), Vec2(1, 0));
+}
+
 }  // namespace
 }  // namespace klueng::core::comp::nose_comp_profile_test

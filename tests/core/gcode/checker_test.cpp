@@ -355,6 +355,15 @@ TEST(Checker, FanucStartLineIsCleanButClassicSaysG99MustStandAlone) {
   })) << listing(classic);
 }
 
+TEST(Checker, OnlyG28WithoutAxesIsToldItMovesNothing) {
+  // G30 is a reference return too (its own action): a bare one is not G28's W102.
+  EXPECT_TRUE(checkText("G30", Dialect::Fanuc).empty()) << listing(checkText("G30", Dialect::Fanuc));
+  const auto diags = checkText("G30\nG28", Dialect::Fanuc);
+  ASSERT_EQ(diags.size(), 1u) << listing(diags);
+  EXPECT_EQ(diags[0].code, "W102");
+  EXPECT_EQ(diags[0].range.line, 2);
+}
+
 TEST(Checker, UnitsAreTrackedLeftToRightAcrossBlocks) {
   // G20 in force: 4 decimals are fine; after G21 they are not.
   const auto diags = checkText("G20\nX1.2345\nG21\nX1.2345\nG20 X1.2345", Dialect::Classic);

@@ -156,7 +156,7 @@ TEST(CodeTable, EveryCodeTheInterpreterRunsHasItsAction) {
   EXPECT_EQ(findCode('M', 41, Dialect::Classic)->action, CodeAction::CAxisOn);
   EXPECT_EQ(findCode('M', 41, Dialect::Fanuc)->action, CodeAction::GearRange);
   EXPECT_EQ(findCode('M', 14, Dialect::Haas)->action, CodeAction::SpindleClamp);
-  EXPECT_EQ(findCode('G', 30, Dialect::Fanuc)->action, CodeAction::ReferenceReturn);
+  EXPECT_EQ(findCode('G', 30, Dialect::Fanuc)->action, CodeAction::SecondReferenceReturn);
   EXPECT_EQ(findCode('G', 71, Dialect::Haas)->action, CodeAction::TurnRoughing);
 }
 

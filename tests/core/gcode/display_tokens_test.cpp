@@ -36,6 +36,11 @@ TEST(DisplayTokens, AnUnclosedCommentRunsToTheEnd) {
   EXPECT_EQ(describe(u"G01 (no close"), "addr@0+3:G comment@4+9 ");
 }
 
+TEST(DisplayTokens, ACommentEndsWhereItsParenthesesBalanceAsTheParserReadsIt) {
+  // "(n = Vc*1000/(pi*D))" is one comment (issue 26); the F word after it is a word.
+  EXPECT_EQ(describe(u"G97 (n = Vc*1000/(pi*D)) F.2"), "addr@0+3:G comment@4+20 addr@25+3:F ");
+}
+
 TEST(DisplayTokens, MacroKeywordsAreTheReadersOwn) {
   for (const char* w : {"IF", "THEN", "WHILE", "DO", "END", "GOTO", "EQ", "MOD", "XOR", "SIN", "ATAN", "ROUND", "FUP",
                         "BCD", "POPEN", "DPRNT"})

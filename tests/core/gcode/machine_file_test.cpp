@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include "klueng/core/diagnostic_codes.h"
+#include "klueng/core/gcode/checker.h"
 #include "klueng/core/gcode/code_table.h"
 #include "klueng/core/gcode/machine_file.h"
+#include "klueng/core/gcode/parser.h"
 #include "klueng/core/messages.h"
 
 namespace klueng::core::gcode {
@@ -168,6 +170,21 @@ TEST(GcodeSystems, SystemCMovesTheCyclesUpByTwo) {
   EXPECT_EQ(action(90), CodeAction::Absolute);
   EXPECT_EQ(findCode('G', 79, c), nullptr);
   EXPECT_EQ(numberInSystem('G', 76, c), 78);
+}
+
+TEST(GcodeSystems, TheCheckerReadsUnitsByTheCodesAction) {
+  // System C: G70 is inch input (4 decimals), G71 metric (3); G20 is a single cycle there.
+  const MachineFileRead read = parseMachineFile("base = fanuc\nid = system-c-units\ngcode_system = C\n", "c.machine");
+  ASSERT_TRUE(read.machine.has_value());
+  const Dialect c = registerMachine(*read.machine);
+  CheckOptions options;
+  options.dialect = c;
+  EXPECT_TRUE(check(parse("G70\nG00 X1.2345 Z0.1"), options).empty());
+  const std::vector<Diagnostic> metric = check(parse("G71\nG00 X1.2345 Z0.1"), options);
+  ASSERT_EQ(metric.size(), 1u);
+  EXPECT_EQ(metric[0].range.line, 2);
+  EXPECT_EQ(metric[0].range.column, 5);
+  EXPECT_EQ(metric[0].args[0], "X1.2345");
 }
 
 }  // namespace

@@ -42,6 +42,13 @@ TEST(ModalCheck, AFeedMoveWithNoFInForceIsWarnedAtItsGWordOnce) {
             "G01 ไม่มีอัตราป้อน: ยังไม่ได้กำหนด F มาก่อน เมื่อรันจะหยุดที่บล็อกนี้ด้วยสัญญาณเตือน A102 ให้เติม F (เช่น F0.2 เมื่อใช้ G99)");
 }
 
+TEST(ModalCheck, AReferenceReturnsAxisWordsAreAPointNotAFeedMove) {
+  // G28 and G30 (each its own action) under G01 with no F: their U W name the
+  // intermediate point; only the G01 after them is a feed move without F.
+  const auto d = modal("G21 G99\nG00 X20. Z2.\nG01\nG28 U0. W0.\nG30 U0. W0.\nZ-10.\nM30\n");
+  EXPECT_EQ(places(d), std::vector<std::string>{"W104@6:1+5"});
+}
+
 TEST(ModalCheck, AModalFeedMoveWithoutItsGIsWarnedAtItsFirstAxisWord) {
   EXPECT_EQ(places(modal("G21 G98\nG01\nG00 X20. Z2.\nG01 F100. Z0.\nG00 X30.\nG01\nZ-5.\n")), std::vector<std::string>{});
   EXPECT_EQ(places(modal("G21 G98\nG00 X20. Z2.\nG01\nU-2. W-1.\n")), std::vector<std::string>{"W104@4:1+4"});

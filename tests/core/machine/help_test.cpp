@@ -96,6 +96,10 @@ TEST(Help, SearchFindsRoughingInEnglishAndInThai) {
     EXPECT_EQ(hits.front().letter, 'G');
     EXPECT_EQ(hits.front().number, 71);
   }
+  // G28 and G30 are found by the words teachers use for both (each has its own action).
+  const std::vector<HelpHit> home = searchHelp("home", gcode::Dialect::Fanuc);
+  for (int code : {28, 30})
+    EXPECT_TRUE(std::any_of(home.begin(), home.end(), [code](const HelpHit& h) { return h.letter == 'G' && h.number == code; })) << code;
   const std::vector<HelpHit> thread = searchHelp("เกลียว", gcode::Dialect::Fanuc);
   for (int code : {32, 76, 92})
     EXPECT_TRUE(std::any_of(thread.begin(), thread.end(), [code](const HelpHit& h) { return h.letter == 'G' && h.number == code; })) << code;

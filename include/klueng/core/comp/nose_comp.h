@@ -77,6 +77,11 @@ CompOutput compensate(const CompInput& in);
 std::string_view interferenceCode(Interference::Kind kind);
 std::vector<std::string> interferenceArgs(const Interference& i, const CompInput& in);
 
+// Direction from the nose centre to the imaginary tool tip for tip 0..9
+// (SPEC 9 grid, +X up, +Z right). Components are -1, 0 or +1 (not normalised:
+// the tip is the corner of the square around the nose). Tips 0 and 9 give (0,0).
+Vec2 tipVector(int tip);
+
 // Without compensation (G40) the imaginary tip follows the program: the nose
 // centre is programmed - R * tipVector(tip).
 Vec2 uncompensatedCentre(const Vec2& programmed, double radius, int tip);

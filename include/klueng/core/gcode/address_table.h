@@ -32,4 +32,14 @@ std::span<const AddressInfo> addressTable();
 // The entry of an upper-case letter; nullptr for a letter that is no lathe address (B, V, Y).
 const AddressInfo* addressInfo(char letter);
 
+// What a T word's number selects: the turret station (all but the last two
+// digits) and the offset (the last two): T0303 -> 3 and 3, T0100 -> 1 and 0.
+struct ToolNumber {
+  int station = 0;
+  int offset = 0;
+};
+constexpr ToolNumber splitToolNumber(long long number) {
+  return {static_cast<int>(number / 100), static_cast<int>(number % 100)};
+}
+
 }  // namespace klueng::core::gcode

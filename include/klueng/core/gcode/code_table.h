@@ -62,7 +62,7 @@ enum class CodeAction : std::uint8_t {
   Inch, Metric, CompOff, CompLeft, CompRight, ConstantSurface, ConstantRpm, FeedPerMinute, FeedPerRev,
   WorkOffset,
   // one block only
-  Dwell, ReferenceCheck, ReferenceReturn, ReturnFromReference, CoordinateSet, MachineCoordinates, MacroCall,
+  Dwell, ReferenceCheck, ReferenceReturn, SecondReferenceReturn, ReturnFromReference, CoordinateSet, MachineCoordinates, MacroCall,
   MacroModalCall, MacroModalCancel,
   // group 03 (G-code systems B and C): X and Z absolute or incremental (as U and W)
   Absolute, Incremental,
@@ -124,6 +124,12 @@ int numberInSystem(char letter, int numberInA, Dialect dialect);
 std::optional<CodeInfo> lookupCode(char letter, int number, Dialect dialect);
 // Same, without a copy (constant time): nullptr when unknown.
 const CodeInfo* findCode(char letter, int number, Dialect dialect);
+
+struct Block;
+struct Word;
+// The block's first G word whose row calls a macro (G65, G66, G67: the code
+// table's macro call actions) and, in `row`, that row; nullptr when none.
+const Word* macroCallWord(const Block& block, Dialect dialect, const CodeInfo** row = nullptr);
 
 // Fanuc's number of a modal group, as printed in messages ("01" for Motion).
 std::string_view modalGroupNumber(ModalGroup group);
