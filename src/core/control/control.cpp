@@ -520,6 +520,29 @@ double Control::micrometer(double z) const {
   return round3(2.0 * s.outerRadius(c));
 }
 
+AxisValues Control::touchOffError(int station) const {
+  const OffsetRow& r = row(station);
+  const AxisValues t = trueTip(station);
+  return {round3((r.geometry.x + shift_.x) + t.x), round3((r.geometry.z + shift_.z) + t.z)};
+}
+
+std::optional<Diagnostic> Control::compareTouchOff(const std::vector<int>& stations) const {
+  int worst = 0;
+  double worstSize = -1.0;
+  for (int s : stations) {
+    if (s < 1 || s > io::kMaxStations) continue;
+    const AxisValues e = touchOffError(s);
+    const double size = std::max(std::abs(e.x), std::abs(e.z));
+    if (size > worstSize) {
+      worstSize = size;
+      worst = s;
+    }
+  }
+  if (worst == 0) return std::nullopt;
+  const AxisValues e = touchOffError(worst);
+  return diag(Severity::Note, kc::kOffsetsCompared, {fmt::format("{:02d}", worst), mm3(e.x), mm3(e.z)});
+}
+
 machine::MachineSetup Control::runSetup() const {
   machine::MachineSetup out = setup_;
   for (int n = 1; n <= io::kMaxStations; ++n) {

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <cmath>
 
 #include "klueng/core/cut/part_check.h"
@@ -183,6 +185,14 @@ TEST(Control, AHandwheelTouchOffGivesTheToolsGeometryToOneClick) {
   EXPECT_EQ(run.r, shippedSetup().offsets.at(1).r);
   EXPECT_FALSE(c.cycleStartRefusal({1}));
   EXPECT_EQ(c.cycleStartRefusal({1, 2})->args[0], "T02");
+  // The exercise's comparison: tool 1 right to the click, tool 2 never touched off (geometry 0).
+  EXPECT_EQ(c.touchOffError(1), (AxisValues{0.0, -0.001}));
+  const auto compared = c.compareTouchOff({1, 2});
+  ASSERT_TRUE(compared);
+  EXPECT_EQ(compared->code, kc::kOffsetsCompared);
+  EXPECT_EQ(compared->args, (std::vector<std::string>{"02", fmt::format("{:.3f}", c.trueTip(2).x),
+                                                      fmt::format("{:.3f}", c.trueTip(2).z)}));
+  EXPECT_EQ(c.compareTouchOff({1})->args, (std::vector<std::string>{"01", "0.000", "-0.001"}));
 }
 
 machine::CompiledJob compile(const std::string& gcode, const machine::MachineSetup& setup) {

@@ -101,6 +101,12 @@ class Control {
   AxisValues trueGeometry(int station) const;
   // The exercise (issue 31 item 5): every geometry row 0, nothing measured.
   void forgetGeometry();
+  bool exercise() const { return exercise_; }
+  // What the touch-off got wrong for a station: geometry + work shift against the
+  // true tool (X diameter), the wear left out. {0, 0} for a perfect touch-off.
+  AxisValues touchOffError(int station) const;
+  // I611 for the station of `stations` with the largest error (X Ø or Z), nullopt when none is given.
+  std::optional<Diagnostic> compareTouchOff(const std::vector<int>& stations) const;
 
   // --- modes and switches ---
   Mode mode() const { return mode_; }
