@@ -187,5 +187,9 @@
         <source>Every geometry offset starts at 0: each tool the program uses must be touched off before cycle start, and cycle start then says how far the entries are from the true tools</source>
         <translation>ค่าออฟเซตรูปทรงทุกแถวเริ่มที่ 0: ต้องตั้งศูนย์มีดทุกตัวที่โปรแกรมใช้ก่อนกด CYCLE START แล้วเครื่องจะบอกว่าค่าที่ป้อนคลาดจากมีดจริงเท่าใด</translation>
     </message>
+    <message>
+        <source>CHIPS</source>
+        <translation>มีเศษตัด</translation>
+    </message>
 </context>
 </TS>

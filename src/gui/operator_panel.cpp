@@ -15,6 +15,7 @@
 #include <QPainter>
 #include <QPlainTextEdit>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QShortcut>
 #include <QSignalBlocker>
 #include <QSpinBox>
@@ -71,7 +72,7 @@ class TouchView : public QWidget {
  public:
   explicit TouchView(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("operatorTouchView"));
-    setMinimumHeight(120);
+    setMinimumHeight(90);
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
   }
   void setControl(const ctl::Control* c) {
@@ -80,8 +81,8 @@ class TouchView : public QWidget {
     movesSeen_ = static_cast<std::size_t>(-1);
     update();
   }
-  bool closeUp = false;
-  QSize sizeHint() const override { return {320, 150}; }
+  int zoom = 0;  // 0 = the bar and the tool, 1 = 40 mm around the tip, 2 = 8 mm (a handwheel click shows)
+  QSize sizeHint() const override { return {320, 110}; }
 
  protected:
   void paintEvent(QPaintEvent*) override {
@@ -92,8 +93,9 @@ class TouchView : public QWidget {
     const QPointF tipScene = render::toScene(tip.z, tip.x / 2.0);
     const core::cut::Chuck& chuck = control_->chuck();
     QRectF world;
-    if (closeUp) {
-      world = QRectF(tipScene - QPointF(4.0, 2.5), QSizeF(8.0, 5.0));
+    if (zoom > 0) {
+      const double w = zoom == 1 ? 40.0 : 8.0;
+      world = QRectF(tipScene - QPointF(w / 2, w / 4), QSizeF(w, w / 2));
     } else {
       world = QRectF(QPointF(chuck.bodyZMin(), -(chuck.bodyXMax() + 5.0)), QPointF(15.0, 5.0));
       world = world.united(QRectF(tipScene - QPointF(15.0, 15.0), QSizeF(30.0, 30.0)));
@@ -121,10 +123,14 @@ class TouchView : public QWidget {
     p.resetTransform();
     p.setPen(palette().color(QPalette::WindowText));
     // A scale bar: how far a click goes.
-    const double barMm = closeUp ? 1.0 : 10.0;
+    const double barMm = zoom == 2 ? 1.0 : 10.0;
     const double barPx = barMm * s;
     p.drawLine(QPointF(8, height() - 8), QPointF(8 + barPx, height() - 8));
-    p.drawText(QPointF(12 + barPx, height() - 4), QStringLiteral("%1 mm").arg(barMm));
+    const QString label = QStringLiteral("%1 mm").arg(barMm);
+    const QRectF box(10 + barPx, height() - 4 - fontMetrics().ascent(), fontMetrics().horizontalAdvance(label) + 4,
+                     fontMetrics().height());
+    p.fillRect(box, QColor(255, 255, 255, 200));
+    p.drawText(QPointF(12 + barPx, height() - 4), label);
   }
 
  private:
@@ -157,7 +163,7 @@ void OperatorPanel::build() {
   title_->setFont(bold);
   powerOn_ = panelKey(QStringLiteral("operatorPowerOn"));
   powerOn_->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Fixed);
-  zoom_ = panelKey(QStringLiteral("operatorZoom"), true);
+  zoom_ = panelKey(QStringLiteral("operatorZoom"));
   zoom_->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Fixed);
   top->addWidget(title_, 1);
   top->addWidget(zoom_);
@@ -217,7 +223,7 @@ void OperatorPanel::build() {
   for (int i = 0; i < 6; ++i) {
     QToolButton* b = panelKey(QString::fromLatin1(modeNames[i]), true);
     modes_->addButton(b, i);
-    g->addWidget(b, 0 + i / 3, (i % 3) * 2, 1, 2);
+    g->addWidget(b, i / 3, (i % 3) * 2, 1, 2);
   }
   int row = 2;
   const char* jogNames[4] = {"operatorJogMinusX", "operatorJogPlusX", "operatorJogMinusZ", "operatorJogPlusZ"};
@@ -256,8 +262,11 @@ void OperatorPanel::build() {
   dial_->setWrapping(true);
   dial_->setRange(0, 99);
   dial_->setNotchesVisible(true);
-  dial_->setFixedSize(44, 44);
-  g->addWidget(dial_, row - 1, 6, 2, 1);
+  dial_->setFixedSize(40, 40);
+  g->addWidget(dial_, row - 1, 5, 2, 1, Qt::AlignCenter);
+  // RAPID shares its row with the dial's upper half: one column for it.
+  g->removeWidget(rapid_);
+  g->addWidget(rapid_, row - 1, 4);
   connect(dial_, &QDial::valueChanged, this, [this](int value) {
     int d = value - dialValue_;
     if (d > 50) d -= 100;
@@ -276,7 +285,7 @@ void OperatorPanel::build() {
   const char* spindleNames[3] = {"operatorSpindleCw", "operatorSpindleStop", "operatorSpindleCcw"};
   for (int i = 0; i < 3; ++i) {
     spindleKeys_[i] = panelKey(QString::fromLatin1(spindleNames[i]));
-    g->addWidget(spindleKeys_[i], row, i);
+    g->addWidget(spindleKeys_[i], row, i * 2, 1, 2);
     const core::machine::SpindleDir dir = i == 0   ? core::machine::SpindleDir::Cw
                                           : i == 1 ? core::machine::SpindleDir::Stopped
                                                    : core::machine::SpindleDir::Ccw;
@@ -286,12 +295,13 @@ void OperatorPanel::build() {
       refresh();
     });
   }
+  ++row;
   sWord_ = new QSpinBox;
   sWord_->setObjectName(QStringLiteral("operatorSpindleSpeed"));
   sWord_->setRange(0, 10000);
   sWord_->setSingleStep(50);
   sWord_->setPrefix(QStringLiteral("S"));
-  g->addWidget(sWord_, row, 3, 1, 2);
+  g->addWidget(sWord_, row, 0, 1, 2);
   connect(sWord_, &QSpinBox::valueChanged, this, [this](int v) {
     if (control_ && control_->spindleSpeed() != v) {
       control_->setSpindleSpeed(v);
@@ -299,7 +309,7 @@ void OperatorPanel::build() {
     }
   });
   coolant_ = panelKey(QStringLiteral("operatorCoolant"), true);
-  g->addWidget(coolant_, row, 5, 1, 2);
+  g->addWidget(coolant_, row, 2, 1, 2);
   connect(coolant_, &QToolButton::toggled, this, [this](bool on) {
     if (control_) control_->coolant = on;
     refresh();
@@ -316,7 +326,7 @@ void OperatorPanel::build() {
   for (int p = 50; p <= 120; p += 10) spindleOv_->addItem(QStringLiteral("S %1%").arg(p), p);
   g->addWidget(feedOv_, row, 0, 1, 2);
   g->addWidget(rapidOv_, row, 2, 1, 2);
-  g->addWidget(spindleOv_, row, 4, 1, 3);
+  g->addWidget(spindleOv_, row, 4, 1, 2);
   for (QComboBox* box : {feedOv_, rapidOv_, spindleOv_})
     connect(box, &QComboBox::currentIndexChanged, this, [this] {
       if (!control_) return;
@@ -330,7 +340,7 @@ void OperatorPanel::build() {
   const char* switchNames[4] = {"operatorSingleBlock", "operatorOptStop", "operatorBlockDelete", "operatorDryRun"};
   for (int i = 0; i < 4; ++i) {
     switches_[i] = panelKey(QString::fromLatin1(switchNames[i]), true);
-    g->addWidget(switches_[i], row + i / 2, (i % 2) * 3, 1, i % 2 ? 4 : 3);
+    g->addWidget(switches_[i], row + i / 2, (i % 2) * 3, 1, 3);
     connect(switches_[i], &QToolButton::toggled, this, [this, i](bool on) {
       if (!control_) return;
       bool* flags[4] = {&control_->singleBlock, &control_->optionalStop, &control_->blockDelete, &control_->dryRun};
@@ -344,21 +354,25 @@ void OperatorPanel::build() {
   cycleStart_->setStyleSheet(QStringLiteral("QToolButton { background: #2e8b3e; color: white; font-weight: bold; }"));
   feedHold_ = panelKey(QStringLiteral("operatorFeedHold"));
   reset_ = panelKey(QStringLiteral("operatorReset"));
-  g->addWidget(cycleStart_, row, 0, 1, 3);
-  g->addWidget(feedHold_, row, 3, 1, 2);
-  g->addWidget(reset_, row, 5, 1, 2);
-  ++row;
+  // Always in sight, above the pages (the keys page may scroll on a small screen).
+  auto* cycle = new QHBoxLayout;
+  cycle->setSpacing(2);
+  cycle->addWidget(cycleStart_, 2);
+  cycle->addWidget(feedHold_, 1);
+  cycle->addWidget(reset_, 1);
+  v->insertLayout(v->indexOf(tabs_), cycle);
   cycleTime_ = new QLabel;
   cycleTime_->setObjectName(QStringLiteral("operatorCycleTime"));
   cycleTime_->setWordWrap(true);
-  g->addWidget(cycleTime_, row, 0, 1, 7);
+  g->addWidget(cycleTime_, row, 0, 1, 6);
   connect(modes_, &QButtonGroup::idClicked, this, [this](int id) { pressMode(static_cast<ctl::Mode>(id)); });
   connect(cycleStart_, &QToolButton::clicked, this, &OperatorPanel::pressCycleStart);
   connect(reset_, &QToolButton::clicked, this, &OperatorPanel::pressReset);
   connect(feedHold_, &QToolButton::clicked, this, [this] { feedOv_->setCurrentIndex(0); });
   connect(powerOn_, &QToolButton::clicked, this, &OperatorPanel::powerOn);
-  connect(zoom_, &QToolButton::toggled, this, [this](bool on) {
-    view_->closeUp = on;
+  connect(zoom_, &QToolButton::clicked, this, [this] {
+    view_->zoom = (view_->zoom + 1) % 3;
+    zoom_->setText(view_->zoom == 0 ? QStringLiteral("ALL") : view_->zoom == 1 ? QStringLiteral("40 mm") : QStringLiteral("8 mm"));
     view_->update();
   });
   tabs_->addTab(keys, QString());
@@ -368,7 +382,7 @@ void OperatorPanel::build() {
   auto* ov = new QVBoxLayout(page);
   ov->setContentsMargins(2, 2, 2, 2);
   ov->setSpacing(2);
-  offsets_ = new QTableWidget(0, 6);
+  offsets_ = new QTableWidget(0, 4);
   offsets_->setObjectName(QStringLiteral("operatorOffsets"));
   offsets_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   offsets_->setSelectionBehavior(QAbstractItemView::SelectRows);
@@ -376,6 +390,7 @@ void OperatorPanel::build() {
   offsets_->verticalHeader()->setDefaultSectionSize(offsets_->fontMetrics().height() + 4);
   offsets_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
   offsets_->setFont(mono);
+  offsets_->setMinimumHeight(4 * offsets_->verticalHeader()->defaultSectionSize() + offsets_->horizontalHeader()->sizeHint().height());
   ov->addWidget(offsets_, 1);
   auto* in = new QHBoxLayout;
   input_ = new QLineEdit;
@@ -425,9 +440,6 @@ void OperatorPanel::build() {
       powerOn();
     }
   });
-  offsetHint_ = new QLabel;
-  offsetHint_->setWordWrap(true);
-  ov->addWidget(offsetHint_);
   connect(measure_, &QToolButton::clicked, this, &OperatorPanel::pressMeasure);
   connect(input_, &QLineEdit::returnPressed, this, &OperatorPanel::pressMeasure);
   connect(inputWear_, &QToolButton::clicked, this, [this] {
@@ -470,10 +482,13 @@ void OperatorPanel::build() {
   mdi_->setObjectName(QStringLiteral("operatorMdi"));
   mdi_->setFont(mono);
   mdi_->setPlaceholderText(QStringLiteral("G00 X60 Z5"));
+  // A few lines, as the control's MDI screen: the explanation stays in sight below.
+  mdi_->setMaximumHeight(5 * mdi_->fontMetrics().lineSpacing() + 12);
   mdiHint_ = new QLabel;
   mdiHint_->setWordWrap(true);
-  mv->addWidget(mdi_, 1);
-  mv->addWidget(mdiHint_);
+  mdiHint_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+  mv->addWidget(mdi_);
+  mv->addWidget(mdiHint_, 1);
   tabs_->addTab(mdiPage, QString());
 
   // Keyboard: while the panel has the focus (the editor keeps its own keys).
@@ -499,6 +514,8 @@ void OperatorPanel::build() {
   scroll->setFrameShape(QFrame::NoFrame);
   scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   setWidget(scroll);
+  // Never narrower than its keys: a clipped panel hides the MACHINE column and the keys' ends.
+  scroll->setMinimumWidth(body->minimumSizeHint().width() + scroll->verticalScrollBar()->sizeHint().width());
 }
 
 void OperatorPanel::applyLayoutLabels() {
@@ -527,7 +544,7 @@ void OperatorPanel::applyLayoutLabels() {
   feedHold_->setText(QStringLiteral("FEED HOLD"));
   reset_->setText(QStringLiteral("RESET"));
   powerOn_->setText(QStringLiteral("POWER ON"));
-  zoom_->setText(QStringLiteral("1:1"));
+  zoom_->setText(view_->zoom == 0 ? QStringLiteral("ALL") : view_->zoom == 1 ? QStringLiteral("40 mm") : QStringLiteral("8 mm"));
   measure_->setText(haas ? QStringLiteral("MESUR") : QStringLiteral("MEASURE"));
   inputWear_->setText(QStringLiteral("+INPUT"));
   measureShift_->setText(haas ? QStringLiteral("G54 Z MESUR") : QStringLiteral("SHIFT MEASURE"));
@@ -535,8 +552,7 @@ void OperatorPanel::applyLayoutLabels() {
   offsets_->setHorizontalHeaderLabels({haas ? QStringLiteral("X GEOM") : QStringLiteral("GEOM X"),
                                        haas ? QStringLiteral("Z GEOM") : QStringLiteral("GEOM Z"),
                                        haas ? QStringLiteral("X WEAR") : QStringLiteral("WEAR X"),
-                                       haas ? QStringLiteral("Z WEAR") : QStringLiteral("WEAR Z"), QStringLiteral("R"),
-                                       QStringLiteral("T")});
+                                       haas ? QStringLiteral("Z WEAR") : QStringLiteral("WEAR Z")});
 }
 
 void OperatorPanel::retranslateUi() {
@@ -573,7 +589,7 @@ void OperatorPanel::retranslateUi() {
   feedHold_->setToolTip(tr("Feed hold: the feed override goes to 0 %"));
   reset_->setToolTip(tr("Reset (Alt+Backspace): clears the alarm"));
   powerOn_->setToolTip(tr("Power on again: a new bar, the turret short of the reference point, the offsets as the job has them"));
-  zoom_->setToolTip(tr("Close-up of the tool tip: 8 mm across, to see each handwheel click"));
+  zoom_->setToolTip(tr("Zoom: the bar and the tool, 40 mm around the tool tip, or 8 mm to see each handwheel click"));
   measure_->setToolTip(tr("Type Z0 with the tool on the face, or X and the measured diameter after a cut, then MEASURE: "
                           "the geometry offset of the selected row is computed from the machine position"));
   inputWear_->setToolTip(tr("Type X or Z and a correction (X-0.04), then +INPUT: it is added to the wear of the selected row"));
@@ -583,11 +599,20 @@ void OperatorPanel::retranslateUi() {
   exercise_->setText(tr("Exercise: the offsets are unknown"));
   exercise_->setToolTip(tr("Every geometry offset starts at 0: each tool the program uses must be touched off "
                            "before cycle start, and cycle start then says how far the entries are from the true tools"));
-  offsetHint_->setText(tr("Touch off: spindle on, touch the face, type Z0, MEASURE; skim a diameter, back off in Z only, "
+  offsets_->setToolTip(tr("Geometry and wear offsets, X as a diameter; the selected row takes MEASURE and +INPUT") +
+                        QStringLiteral("\n\n") + tr("Touch off: spindle on, touch the face, type Z0, MEASURE; skim a diameter, back off in Z only, "
                           "stop the spindle, measure it, type X and the diameter, MEASURE. Row = the station (T0101)."));
+  tabs_->setTabToolTip(1, offsets_->toolTip());
   mdiHint_->setText(tr("MDI mode: type one or more blocks, then CYCLE START. They run with the same check, "
                        "interpreter and cut as a program; the modal state carries on to the next blocks."));
-  offsets_->setToolTip(tr("Geometry and wear offsets, X as a diameter; the selected row takes MEASURE and +INPUT"));
+  // Long tips wrap (rich text) instead of running off the screen.
+  for (QWidget* w : findChildren<QWidget*>()) {
+    const QString t = w->toolTip();
+    if (!t.isEmpty() && !t.startsWith(QLatin1Char('<')))
+      w->setToolTip(QStringLiteral("<p>") + t.toHtmlEscaped().replace(QLatin1Char('\n'), QStringLiteral("<br>")) +
+                    QStringLiteral("</p>"));
+  }
+  tabs_->setTabToolTip(1, offsets_->toolTip());
   applyLayoutLabels();
   refresh();
 }
@@ -647,6 +672,7 @@ void OperatorPanel::setOffsetRow(int row) {
 void OperatorPanel::pressMode(ctl::Mode mode) {
   if (!control_) return;
   control_->setMode(mode);
+  chips_ = false;
   modes_->button(static_cast<int>(mode))->setChecked(true);
   if (mode == ctl::Mode::Mdi) tabs_->setCurrentIndex(2);
   refresh();
@@ -673,6 +699,7 @@ void OperatorPanel::turnHandle(int clicks) {
 }
 
 void OperatorPanel::afterMotion(const ctl::MotionResult& r) {
+  chips_ = r.cut;
   showMessage(r.stop);
   view_->update();
   refresh();
@@ -695,7 +722,9 @@ void OperatorPanel::pressCycleStart() {
   if (!control_) return;
   switch (control_->mode()) {
     case ctl::Mode::Mdi: {
+      const double removed = control_->stock().removedVolume();
       const std::vector<core::Diagnostic> ds = control_->runMdi(mdi_->toPlainText().toStdString());
+      chips_ = control_->stock().removedVolume() > removed;
       showAll(ds);
       if (!core::hasErrors(ds)) mdi_->clear();
       view_->update();
@@ -799,14 +828,15 @@ void OperatorPanel::refresh() {
                       .arg(QString::fromLatin1(dir))
                       .arg(c.alarm() ? QStringLiteral("ALM ") : QString())
                       .arg(c.coolant ? QStringLiteral("COOL") : QString()));
-  state_->setStyleSheet(c.alarm() ? QStringLiteral("color: #b00000; font-weight: bold;") : QString());
+  // Chips: the last key took material off, the sign a touch-off waits for.
+  if (chips_) state_->setText(state_->text() + QStringLiteral("  ") + tr("CHIPS"));
+  state_->setStyleSheet(c.alarm() ? QStringLiteral("color: #b00000; font-weight: bold;")
+                                  : chips_ ? QStringLiteral("color: #a05000; font-weight: bold;") : QString());
   if (shown_) showMessage(shown_);  // its words in the language now shown
   for (int n = 1; n <= offsets_->rowCount(); ++n) {
     const ctl::OffsetRow& r = c.row(n);
-    const core::io::Offset& o = c.setup().offsets.at(n);
-    const QString cells[6] = {panelMm(r.geometry.x), panelMm(r.geometry.z), panelMm(r.wear.x), panelMm(r.wear.z), QString::number(o.r, 'f', 1),
-                              QString::number(o.tip)};
-    for (int k = 0; k < 6; ++k) {
+    const QString cells[4] = {panelMm(r.geometry.x), panelMm(r.geometry.z), panelMm(r.wear.x), panelMm(r.wear.z)};
+    for (int k = 0; k < 4; ++k) {
       QTableWidgetItem* item = offsets_->item(n - 1, k);
       if (!item) {
         item = new QTableWidgetItem;

@@ -89,6 +89,7 @@ class OperatorPanel : public QDockWidget {
   core::io::OffsetTable fileOffsets_;   // offset.cfg as first read: the wear at power-on
   core::io::OffsetTable lastEmitted_;
   bool emitted_ = false;
+  bool chips_ = false;  // the last motion key cut the bar
   std::optional<core::Diagnostic> shown_;
   std::pair<int, int> mdiPlace_{0, 0};  // line, column in the MDI text of the message shown
 
@@ -130,7 +131,6 @@ class OperatorPanel : public QDockWidget {
   QLabel* micReading_ = nullptr;
   QPlainTextEdit* mdi_ = nullptr;
   QLabel* mdiHint_ = nullptr;
-  QLabel* offsetHint_ = nullptr;
   QCheckBox* exercise_ = nullptr;
   QLabel* labels_[8] = {};
 };

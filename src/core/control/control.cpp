@@ -143,7 +143,8 @@ Control::Control(machine::MachineSetup setup, io::JobHeader stock, gcode::Dialec
   for (int n = 1; n <= io::kOffsetCount; ++n) {
     OffsetRow& r = row(n);
     r.wear = {setup_.offsets.at(n).x, setup_.offsets.at(n).z};
-    if (n <= io::kMaxStations) r.geometry = trueGeometry(n);
+    // A station with a tool has its true geometry, as a machine set up the day before.
+    if (n <= io::kMaxStations && !setup_.tools.bitmapPath(n).empty()) r.geometry = trueGeometry(n);
   }
   // Power on: the turret stands where it was switched off, short of the reference point.
   machine_ = {std::min(0.0, m.startX - m.referenceX), std::min(-50.0, m.startZ - m.referenceZ - 50.0)};
