@@ -369,6 +369,7 @@ void MainWindow::setDialect(core::gcode::Dialect d) {
   runner_->setDialect(d);
   action(dialectActionName(d))->setChecked(true);
   if (help_) help_->setDialect(d);
+  if (operatorPanel_ && operatorPanel_->control()) operatorPanel_->powerOn();  // another machine, its own control
   // The same plain text may approach the part elsewhere in another dialect (units, cycle forms).
   core::machine::RunOptions run;
   run.dialect = d;

@@ -820,9 +820,9 @@ void OperatorPanel::refresh() {
   const char* dir = c.spindle() == core::machine::SpindleDir::Cw    ? "CW"
                     : c.spindle() == core::machine::SpindleDir::Ccw ? "CCW"
                                                                     : "STOP";
-  const char* modes[6] = {"EDIT", "MEM", "MDI", "JOG", "HANDLE", "ZRN"};
+  // The mode as its key says it (Fanuc JOG, Haas HAND JOG).
   state_->setText(QStringLiteral("%1  T%2  S%3 %4  %5%6")
-                      .arg(QString::fromLatin1(modes[static_cast<int>(c.mode())]))
+                      .arg(modes_->button(static_cast<int>(c.mode()))->text())
                       .arg(c.station(), 2, 10, QLatin1Char('0'))
                       .arg(c.actualRpm(), 0, 'f', 0)
                       .arg(QString::fromLatin1(dir))

@@ -185,6 +185,12 @@ class OperatorPanelTest : public QObject {
     panel->pressCycleStart();
     QVERIFY2(panel->messageLabel()->text().startsWith(QStringLiteral("A601 ZERO RETURN REQUIRED")),
              qPrintable(panel->messageLabel()->text()));
+    QCOMPARE(panel->findChild<QLabel*>(QStringLiteral("operatorState"))->text().left(8), QStringLiteral("MEM  T01"));
+    // Another machine: the panel powers on as its control.
+    w.action(QStringLiteral("actionDialectFanuc"))->trigger();
+    QCOMPARE(panel->control()->layout(), ctl::Layout::Fanuc);
+    QCOMPARE(panel->findChild<QLabel*>(QStringLiteral("operatorTitle"))->text(), QStringLiteral("FANUC Series 0i-TF"));
+    QCOMPARE(panel->findChild<QToolButton*>(QStringLiteral("operatorModeZrn"))->text(), QStringLiteral("ZRN"));
   }
 };
 
