@@ -68,7 +68,12 @@ void MainWindow::createActions() {
   actions_->add(QStringLiteral("view3dDock"), view3d_->toggleViewAction());
   actions_->add(QStringLiteral("operatorPanelDock"), operatorPanel_->toggleViewAction());
   operatorPanel_->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_M));
-  connect(operatorPanel_, &OperatorPanel::cycleStartRequested, action(QStringLiteral("actionGo")), &QAction::trigger);
+  connect(operatorPanel_, &OperatorPanel::cycleStartRequested, this,
+          [this](bool singleBlock) { action(singleBlock ? QStringLiteral("actionStep") : QStringLiteral("actionGo"))->trigger(); });
+  connect(operatorPanel_, &OperatorPanel::switchesChanged, this, [this](bool optionalStop, bool blockSkip) {
+    action(QStringLiteral("actionOptionalStop"))->setChecked(optionalStop);
+    action(QStringLiteral("actionBlockSkip"))->setChecked(blockSkip);
+  });
   actions_->buildToolBars();
   actions_->buildMenus();
   connect(actions_->menu(QStringLiteral("menuRecent")), &QMenu::aboutToShow, this,

@@ -348,6 +348,10 @@ void OperatorPanel::build() {
       refresh();
       updateCycleTime();
     });
+    // Pressed by the user (not set at power-on): the Run menu's switches follow.
+    if (i == 1 || i == 2)
+      connect(switches_[i], &QToolButton::clicked, this,
+              [this] { emit switchesChanged(switches_[1]->isChecked(), switches_[2]->isChecked()); });
   }
   row += 2;
   cycleStart_ = panelKey(QStringLiteral("operatorCycleStart"));
@@ -743,7 +747,7 @@ void OperatorPanel::pressCycleStart() {
       const auto refusal = control_->cycleStartRefusal(used);
       // The exercise: how far the entered offsets are from the true ones.
       showMessage(refusal ? refusal : control_->exercise() ? control_->compareTouchOff(used) : std::nullopt);
-      if (!refusal) emit cycleStartRequested();
+      if (!refusal) emit cycleStartRequested(control_->singleBlock);
       return;
     }
     default:

@@ -65,8 +65,10 @@ class OperatorPanel : public QDockWidget {
  signals:
   // The offset rows a run should use (geometry + wear + work shift against the true tools).
   void offsetsChanged(const klueng::core::io::OffsetTable& offsets);
-  // MEM + CYCLE START with nothing refusing it: run the job's program.
-  void cycleStartRequested();
+  // MEM + CYCLE START with nothing refusing it: run the job's program (one block under single block).
+  void cycleStartRequested(bool singleBlock);
+  // The OPT STOP and BLOCK SKIP keys pressed: the run's own switches follow them.
+  void switchesChanged(bool optionalStop, bool blockSkip);
 
  protected:
   void changeEvent(QEvent* event) override;

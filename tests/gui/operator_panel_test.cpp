@@ -160,7 +160,19 @@ class OperatorPanelTest : public QObject {
     panel->pressMode(ctl::Mode::Memory);
     panel->pressCycleStart();
     QCOMPARE(started.count(), 1);
+    QCOMPARE(started.last().first().toBool(), false);
     QVERIFY(QTest::qWaitFor([runner] { return runner->state() == gui::RunState::Finished; }, 30000));
+    // OPT STOP and BLOCK SKIP are the run's switches; SINGLE BLOCK makes cycle start one block.
+    QVERIFY(!w.action(QStringLiteral("actionOptionalStop"))->isChecked());
+    QTest::mouseClick(panel->findChild<QToolButton*>(QStringLiteral("operatorOptStop")), Qt::LeftButton);
+    QVERIFY(w.action(QStringLiteral("actionOptionalStop"))->isChecked());
+    QVERIFY(c->optionalStop);
+    QTest::mouseClick(panel->findChild<QToolButton*>(QStringLiteral("operatorOptStop")), Qt::LeftButton);
+    QVERIFY(!w.action(QStringLiteral("actionOptionalStop"))->isChecked());
+    QTest::mouseClick(panel->findChild<QToolButton*>(QStringLiteral("operatorSingleBlock")), Qt::LeftButton);
+    panel->pressCycleStart();
+    QCOMPARE(started.count(), 2);
+    QCOMPARE(started.last().first().toBool(), true);
 
     // Thai: the dock's words and the tips follow the language; the keys stay the control's.
     gui::Language::instance()->setLanguage(QStringLiteral("th"));
