@@ -286,7 +286,8 @@ void MainWindow::createDocks() {
   view3d_->hide();
   // Issue 31: the operator panel beside the output screen; its touch-off gives the run its offset rows.
   operatorPanel_ = new OperatorPanel(this, [this] {
-    return OperatorPanel::Source{toolInference_.setup, document_->header(), dialect_, runner_->timeline()};
+    return OperatorPanel::Source{toolInference_.setup, document_->header(), dialect_, runner_->timeline(),
+                                 currentProgramFile()};
   });
   addDockWidget(Qt::RightDockWidgetArea, operatorPanel_);
   operatorPanel_->hide();

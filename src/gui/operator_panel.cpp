@@ -29,6 +29,7 @@
 
 #include "gui/language.h"
 #include "klueng/core/diagnostic_codes.h"
+#include "klueng/core/machine/job.h"
 #include "klueng/core/messages.h"
 #include "render/lathe_painters.h"
 #include "render/tool_sprite.h"
@@ -206,6 +207,9 @@ void OperatorPanel::build() {
   message_->setObjectName(QStringLiteral("operatorMessage"));
   message_->setWordWrap(true);
   message_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  // Room for a two-line message kept: the keys below do not jump under the mouse when one appears.
+  message_->setMinimumHeight(2 * message_->fontMetrics().lineSpacing());
+  message_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
   v->addWidget(message_);
 
   tabs_ = new QTabWidget;
@@ -737,11 +741,16 @@ void OperatorPanel::pressCycleStart() {
     }
     case ctl::Mode::Memory: {
       std::vector<int> used;
-      const Source s = source_();
-      if (s.program) {
+      if (control_->exercise()) {
+        // The tools of the program as it is now (the last run may be of older text, or none yet).
+        const Source s = source_();
+        core::machine::JobOptions options;
+        options.run.dialect = s.dialect;
+        const core::machine::CompiledJob job = core::machine::compileJob(s.programFile, control_->runSetup(), options);
         std::set<int> tools;
-        for (const core::machine::Move& m : s.program->moves)
-          if (m.tool > 0) tools.insert(m.tool);
+        if (job.timeline)
+          for (const core::machine::Move& m : job.timeline->moves)
+            if (m.tool > 0) tools.insert(m.tool);
         used.assign(tools.begin(), tools.end());
       }
       const auto refusal = control_->cycleStartRefusal(used);

@@ -37,7 +37,8 @@ class OperatorPanel : public QDockWidget {
     core::machine::MachineSetup setup;
     core::io::JobHeader stock;
     core::gcode::Dialect dialect = core::gcode::Dialect::Fanuc;
-    const core::machine::Timeline* program = nullptr;  // the job's last run, if any: its tools and cycle time
+    const core::machine::Timeline* program = nullptr;  // the job's last run, if any: its cycle time
+    core::io::ProgramFile programFile;                 // the program as it is now: the tools the exercise asks for
   };
   OperatorPanel(QWidget* parent, std::function<Source()> source);
   ~OperatorPanel() override;

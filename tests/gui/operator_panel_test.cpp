@@ -3,6 +3,7 @@
 // handwheel touch-off typed into the offset page that reaches the run's setup,
 // an MDI block, and the cycle time the overrides give.
 #include <QAction>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
@@ -198,6 +199,22 @@ class OperatorPanelTest : public QObject {
     QVERIFY2(panel->messageLabel()->text().startsWith(QStringLiteral("A601 ZERO RETURN REQUIRED")),
              qPrintable(panel->messageLabel()->text()));
     QCOMPARE(panel->findChild<QLabel*>(QStringLiteral("operatorState"))->text().left(8), QStringLiteral("MEM  T01"));
+    // The exercise: sample 01's T0101 must be touched off before cycle start.
+    QVERIFY(w.openFile(QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt")));
+    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    panel->powerOn();
+    panel->findChild<QCheckBox*>(QStringLiteral("operatorExercise"))->setChecked(true);
+    QVERIFY(panel->control()->exercise());
+    QCOMPARE(panel->offsetTable()->item(0, 1)->text(), QStringLiteral("0.000"));
+    panel->pressMode(ctl::Mode::ZeroReturn);
+    panel->pressJog(ctl::Axis::X, 1);
+    panel->pressJog(ctl::Axis::Z, 1);
+    QSignalSpy started(panel, &gui::OperatorPanel::cycleStartRequested);
+    panel->pressMode(ctl::Mode::Memory);
+    panel->pressCycleStart();
+    QVERIFY2(panel->messageLabel()->text().startsWith(QStringLiteral("A609")), qPrintable(panel->messageLabel()->text()));
+    QVERIFY(panel->messageLabel()->text().contains(QStringLiteral("T01 (X and Z)")));
+    QCOMPARE(started.count(), 0);
     // Another machine: the panel powers on as its control.
     w.action(QStringLiteral("actionDialectFanuc"))->trigger();
     QCOMPARE(panel->control()->layout(), ctl::Layout::Fanuc);
