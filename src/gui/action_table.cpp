@@ -161,7 +161,7 @@ const MenuSpec kMenus[] = {
     {"menuDialect", KLUENG_TR("G-code &dialect"),
      "actionDialectFanuc actionDialectHaas actionDialectClassic | actionUnitsMachine actionUnitsMm actionUnitsInch"},
     {"menuView", KLUENG_TR("&View"),
-     "fileToolBar editToolBar runToolBar helpToolBar actionShowStatusBar actionShowLamps diagnosticsDock flowDock partDock view3dDock | "
+     "fileToolBar editToolBar runToolBar helpToolBar actionShowStatusBar actionShowLamps diagnosticsDock flowDock partDock view3dDock operatorPanelDock | "
      "actionShowPath actionFitView actionZoomIn actionZoomOut | menuShowUnits"},
     {"menuShowUnits", KLUENG_TR("&Units Shown"), "actionShowUnitsAuto actionShowUnitsMm actionShowUnitsInch"},
     {"menuHelp", KLUENG_TR("&Help"), "actionContents actionToggleLanguage | actionAbout"},

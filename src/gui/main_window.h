@@ -69,6 +69,7 @@ class MainWindow : public QMainWindow {
   RunController* runController() const { return runner_; }
   class FlowPanel* flowPanel() const { return flow_; }
   class PartPanel* partPanel() const { return part_; }
+  class OperatorPanel* operatorPanel() const { return operatorPanel_; }
   class Part3DDock* view3dDock() const { return view3d_; }
   OutputView* outputView() const { return output_; }
   StatusFields* statusFields() const { return statusFields_; }
@@ -185,6 +186,7 @@ class MainWindow : public QMainWindow {
   class FlowPanel* flow_ = nullptr;
   class PartPanel* part_ = nullptr;
   class Part3DDock* view3d_ = nullptr;
+  class OperatorPanel* operatorPanel_ = nullptr;  // issue 31: the machine's control, hidden at first
   RunController* runner_ = nullptr;
   OutputView* output_ = nullptr;
   StatusFields* statusFields_ = nullptr;

@@ -25,6 +25,7 @@
 #include "gui/main_window.h"
 #include "gui/header_strip.h"
 #include "gui/part3d_view.h"
+#include "gui/operator_panel.h"
 #include "gui/part_panel.h"
 #include "gui/output_view.h"
 #include "gui/run_speed_control.h"
@@ -65,6 +66,14 @@ void MainWindow::createActions() {
   actions_->add(QStringLiteral("flowDock"), flow_->toggleViewAction());
   actions_->add(QStringLiteral("partDock"), part_->toggleViewAction());
   actions_->add(QStringLiteral("view3dDock"), view3d_->toggleViewAction());
+  actions_->add(QStringLiteral("operatorPanelDock"), operatorPanel_->toggleViewAction());
+  operatorPanel_->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_M));
+  connect(operatorPanel_, &OperatorPanel::cycleStartRequested, this,
+          [this](bool singleBlock) { action(singleBlock ? QStringLiteral("actionStep") : QStringLiteral("actionGo"))->trigger(); });
+  connect(operatorPanel_, &OperatorPanel::switchesChanged, this, [this](bool optionalStop, bool blockSkip) {
+    action(QStringLiteral("actionOptionalStop"))->setChecked(optionalStop);
+    action(QStringLiteral("actionBlockSkip"))->setChecked(blockSkip);
+  });
   actions_->buildToolBars();
   actions_->buildMenus();
   connect(actions_->menu(QStringLiteral("menuRecent")), &QMenu::aboutToShow, this,
@@ -275,6 +284,18 @@ void MainWindow::createDocks() {
   addDockWidget(Qt::RightDockWidgetArea, view3d_);
   view3d_->view()->setRunController(runner_);
   view3d_->hide();
+  // Issue 31: the operator panel beside the output screen; its touch-off gives the run its offset rows.
+  operatorPanel_ = new OperatorPanel(this, [this] {
+    return OperatorPanel::Source{toolInference_.setup, document_->header(), dialect_, runner_->timeline(),
+                                 currentProgramFile()};
+  });
+  addDockWidget(Qt::RightDockWidgetArea, operatorPanel_);
+  operatorPanel_->hide();
+  connect(operatorPanel_, &OperatorPanel::offsetsChanged, this, [this](const core::io::OffsetTable& offsets) {
+    setup_.offsets = toolInference_.setup.offsets = offsets;
+    runner_->setMachineSetup(toolInference_.setup);
+    runnerStale_ = true;
+  });
   connect(part_, &PartPanel::overlayChanged, output_, &OutputView::setPartOverlay);
   // Real edits only: re-colouring by the highlighter changes no characters.
   connect(editor_->document(), &QTextDocument::contentsChange, part_, [this](int, int removed, int added) {
@@ -354,6 +375,7 @@ void MainWindow::setDialect(core::gcode::Dialect d) {
   runner_->setDialect(d);
   action(dialectActionName(d))->setChecked(true);
   if (help_) help_->setDialect(d);
+  if (operatorPanel_ && operatorPanel_->control()) operatorPanel_->powerOn();  // another machine, its own control
   // The same plain text may approach the part elsewhere in another dialect (units, cycle forms).
   core::machine::RunOptions run;
   run.dialect = d;

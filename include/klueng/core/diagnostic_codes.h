@@ -249,6 +249,19 @@ inline constexpr const char* kGuessEdgeBrushesStock = "W326";  // a guessed tool
 inline constexpr const char* kPartCheckStopped = "I324";     // {0} the alarm's code
 inline constexpr const char* kPartCheckNothingCut = "I325";
 
+// The operator panel (issue 31; control; texts in messages_control.cpp).
+inline constexpr const char* kNotReferenced = "A601";        // {0} the control's alarm, {1} axes not referenced
+inline constexpr const char* kOvertravel = "A602";           // {0} the control's alarm, {1} axis, {2} limit (machine)
+inline constexpr const char* kTouchedSpindleStopped = "W603";  // {0} station, {1} Z, {2} X Ø (bar frame)
+inline constexpr const char* kMeasuredAfterStoppedTouch = "W604";  // {0} offset row
+inline constexpr const char* kMeasureWithoutTool = "E605";   // {0} station
+inline constexpr const char* kKeyNotInMode = "I606";         // {0} key, {1} the mode it needs
+inline constexpr const char* kResetFirst = "A607";           // {0} the alarm's code
+inline constexpr const char* kNotMeasureInput = "E608";      // {0} the text typed
+inline constexpr const char* kToolsNotTouchedOff = "A609";   // {0} stations ("T01 T03")
+inline constexpr const char* kFeedOverrideZero = "I610";
+inline constexpr const char* kOffsetsCompared = "I611";      // {0} worst row, {1} X error Ø, {2} Z error (mm)
+
 // klueng-cli's own texts (messages_cli.cpp): never diagnostics of a file, so
 // the code is not printed; the catalog only gives them their two languages.
 inline constexpr const char* kCliUsage = "C001";

@@ -12,4 +12,5 @@ std::span<const MessageText> compMessages();
 std::span<const MessageText> cutMessages();
 std::span<const MessageText> designMessages();
 std::span<const MessageText> cliMessages();
+std::span<const MessageText> controlMessages();
 }  // namespace klueng::core::catalog

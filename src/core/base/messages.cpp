@@ -16,7 +16,8 @@ std::span<const MessageText> allMessages() {
   static const std::vector<MessageText> all = [] {
     std::vector<MessageText> v;
     for (auto part : {catalog::gcodeMessages(), catalog::ioMessages(), catalog::machineMessages(),
-                      catalog::compMessages(), catalog::cutMessages(), catalog::designMessages(), catalog::cliMessages()})
+                      catalog::compMessages(), catalog::cutMessages(), catalog::designMessages(), catalog::cliMessages(),
+                      catalog::controlMessages()})
       v.insert(v.end(), part.begin(), part.end());
     return v;
   }();
