@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "klueng/core/comp/nose_comp.h"
 #include "klueng/core/diagnostic_codes.h"
 #include "klueng/core/gcode/code_table.h"
 #include "klueng/core/geometry.h"
@@ -348,7 +349,7 @@ MotionResult Control::moveTo(const AxisValues& wanted, bool rapid, double feed) 
   m.kind = rapid ? MoveKind::Rapid : MoveKind::Line;
   m.tool = station_;
   m.offset = station_ <= io::kOffsetCount ? station_ : 0;
-  if (m.offset > 0) m.noseCentre = -setup_.offsets.at(m.offset).r * tipVector(setup_.offsets.at(m.offset).tip);
+  if (m.offset > 0) m.noseCentre = -setup_.offsets.at(m.offset).r * comp::tipVector(setup_.offsets.at(m.offset).tip);
   m.spindle = spindle_;
   m.rpm = m.rpmEnd = actualRpm();
   const io::MachineConfig& mc = setup_.machine;
