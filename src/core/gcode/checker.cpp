@@ -132,6 +132,7 @@ class Checker {
     const CodeInfo* wordRow = nullptr;  // the code whose word list sets the kinds of this block's words
     const Word* g04 = nullptr;
     const Word* g28 = nullptr;
+    const Word* singleCycle = nullptr;  // G90/G92/G94 (system A), G77/G78/G79 (B)
     const Word* compWord = nullptr;
     int compCode = -1;
     bool cannedCycle = false;
@@ -239,6 +240,9 @@ class Checker {
             }
             if (!row->words.empty() && !wordRow) wordRow = row;
             if (row->number == 4) g04 = &w;
+            if (row->action == CodeAction::BoxTurning || row->action == CodeAction::BoxThreading ||
+                row->action == CodeAction::BoxFacing)
+              singleCycle = &w;
             if (row->number == 28) g28 = &w;
           } else if (isRuleFourGroup(row->group)) {
             if (mGroupMask & groupBit) {
@@ -295,6 +299,9 @@ class Checker {
 
     // G28 without axis words moves nothing.
     const bool axisWords = has('X') || has('Z') || has('U') || has('W');
+    // A single cycle block names its end point: `G92 S3000` (system B's clamp, read in
+    // system A) would select the threading cycle and set 3000 rpm.
+    if (singleCycle && !axisWords) emit(codes::kSingleCycleWithoutEnd, *singleCycle, {wordText(*singleCycle)});
     if (g28 && !axisWords) {
       if (profile_.bareG28 == BareG28::NoMotion) emit(codes::kG28NoMotion, *g28, {}, Severity::Warning);
       else if (profile_.bareG28 == BareG28::Error) emit(codes::kG28WithoutAxes, *g28, {});
