@@ -106,6 +106,18 @@
         <translation>ด้านของมีดตัด:</translation>
     </message>
     <message>
+        <source>Machine:</source>
+        <translation>เครื่อง:</translation>
+    </message>
+    <message>
+        <source>Not named (the window&apos;s machine)</source>
+        <translation>ไม่ระบุ (ใช้เครื่องที่เลือกในหน้าต่าง)</translation>
+    </message>
+    <message>
+        <source>The machine this program is written for. The program names it in a comment at its head, (MACHINE: romi-gl240m): opening the file selects that machine, and klueng-cli checks it on that machine unless --machine or --dialect is given.</source>
+        <translation>เครื่องที่เขียนชุดรหัสสั่งการทำงานนี้ไว้ใช้ ชุดรหัสสั่งการทำงานระบุชื่อเครื่องไว้ในหมายเหตุที่ส่วนต้น (MACHINE: romi-gl240m): เมื่อเปิดไฟล์จะเลือกเครื่องนั้นให้ และ klueng-cli จะตรวจกับเครื่องนั้น เว้นแต่จะกำหนด --machine หรือ --dialect</translation>
+    </message>
+    <message>
         <source>As the program&apos;s moves show</source>
         <translation>ตามการเคลื่อนที่ในชุดรหัสสั่งการทำงาน</translation>
     </message>

@@ -22,6 +22,7 @@
 
 #include "batch_memory.h"
 #include "cli_common.h"
+#include "klueng/core/machine/machine_files.h"
 #include "klueng/core/diagnostic_codes.h"
 #include "klueng/core/machine/job_file.h"
 #include "commands.h"
@@ -37,6 +38,7 @@ struct CheckOptions {
   Lang lang = Lang::En;
   gcode::Dialect dialect = gcode::Dialect::Fanuc;
   std::string machine;  // --machine NAME|FILE, resolved once the machines folders are read
+  bool dialectGiven = false;  // --dialect or --machine: wins over the machine a program names
   bool json = false;
   bool summary = false;
   std::string configDir;
@@ -112,8 +114,10 @@ std::optional<int> parseArgs(const std::vector<std::string>& args, CheckOptions&
       const auto dialect = parseDialect(value);
       if (!dialect) return mustBe(lang, arg, codes::kCliAllowedDialect, value);
       o.dialect = *dialect;
+      o.dialectGiven = true;
     } else if (arg == "--machine") {
       o.machine = value;
+      o.dialectGiven = true;
     } else if (arg == "--stock") {
       o.stock = parseStock(value);
       if (!o.stock) return mustBe(lang, arg, codes::kCliAllowedStock, value);
@@ -200,7 +204,20 @@ int runCheck(const std::vector<std::string>& args) {
 
   const std::vector<std::string> files = expandFolders(o.files);
   for (const std::string& path : files) {
-    machine::JobFile job = machine::loadJobFile(path, config.setup, *request, io::shippedToolLibrary());
+    // A program that names its machine is checked on it (the setup with that machine's keys).
+    std::vector<Diagnostic> machineWarnings;
+    const gcode::Dialect own = programMachine(path, o.dialectGiven, o.dialect, machineWarnings);
+    machine::JobFileRequest fileRequest = *request;
+    std::optional<machine::MachineSetup> ownSetup;
+    if (own != o.dialect) {
+      fileRequest.run.dialect = own;
+      fileRequest.stations = stationLimit(config, own);
+      ownSetup = config.setup;
+      ownSetup->machine = machine::withMachineKeys(config.setup.machine, gcode::machineProfile(own));
+    }
+    machine::JobFile job =
+        machine::loadJobFile(path, ownSetup ? *ownSetup : config.setup, fileRequest, io::shippedToolLibrary());
+    job.diagnostics.insert(job.diagnostics.begin(), machineWarnings.begin(), machineWarnings.end());
     for (const Diagnostic& n : job.toolNotes) notes.push_back({path, n});
     for (const Diagnostic& n : job.stockNotes) notes.push_back({path, n});
     FileSummary row{path};

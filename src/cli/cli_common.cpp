@@ -81,6 +81,14 @@ bool chooseMachine(const std::string& machine, machine::LoadedSetup& config, gco
   return true;
 }
 
+gcode::Dialect programMachine(const std::string& file, bool chosen, gcode::Dialect dialect,
+                              std::vector<Diagnostic>& warnings) {
+  if (chosen) return dialect;
+  const io::ReadResult<io::ProgramFile> read = io::readProgramFile(file);
+  if (!read.value) return dialect;  // the job's own reading reports why
+  return machine::machineOfProgram(*read.value, warnings).value_or(dialect);
+}
+
 namespace {
 std::optional<double> positiveNumber(std::string_view s) {
   if (s.empty() || s.size() > 32) return std::nullopt;

@@ -52,6 +52,11 @@ std::optional<core::gcode::Dialect> parseDialect(std::string_view text);     // 
 // printing the located reasons (the caller exits 2).
 bool chooseMachine(const std::string& machine, core::machine::LoadedSetup& config, core::gcode::Dialect& dialect,
                    core::Lang lang);
+// The machine a program names at its head, `(MACHINE: romi-gl240m)` (Job details
+// writes it), runs it unless --machine or --dialect chose one (`chosen`); else
+// `dialect`. A machine that is not loaded: `dialect`, and warning F205 in `warnings`.
+core::gcode::Dialect programMachine(const std::string& file, bool chosen, core::gcode::Dialect dialect,
+                                   std::vector<core::Diagnostic>& warnings);
 
 // --stock DxL[xBORE][in]: "50x100", "2.1x4in", "118x80x90" (Ø118 tube, 80 long,
 // Ø90 bore). 0 < D, L <= 9999.999 (what a header line and Job details hold: a

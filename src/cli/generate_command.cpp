@@ -1,4 +1,4 @@
-// klueng-cli generate PART.json|PART.dxf -o OUT.nc [--dialect fanuc|haas|classic] [--material M]
+// klueng-cli generate PART.json|PART.dxf -o OUT.nc [--dialect fanuc|haas|classic] [--machine NAME|FILE] [--material M]
 //                   [--tool-material hss|carbide] [--layer NAME] [--stock DxL[xBORE]] [--lang en|th] [--config DIR]
 // Issue 14: a part design (docs/parts.md) or a DXF half section to a complete program, written atomically.
 // Exit 0 written, 1 the part cannot be turned (reasons on stderr), 2 bad use or files.
@@ -49,6 +49,7 @@ int runGenerate(const std::vector<std::string>& args) {
     return 0;
   }
   std::string file, out, configDir;
+  std::string machine;  // --machine NAME|FILE
   std::optional<std::string> material, toolMaterial;
   std::optional<std::array<double, 3>> stock;
   design::DxfImportOptions dxfOptions;
@@ -71,6 +72,7 @@ int runGenerate(const std::vector<std::string>& args) {
     else if (a == "--material") material = v;
     else if (a == "--tool-material" && (v == "hss" || v == "carbide")) toolMaterial = v;
     else if (a == "--dialect" && parseDialect(v)) options.dialect = *parseDialect(v);
+    else if (a == "--machine") machine = v;
     else if (a == "--layer") dxfOptions.layer = v;
     else if (std::array<double, 3> s{}; a == "--stock" && parseStock(v, s[0], s[1], s[2])) stock = s;
     else if (a == "--lang" && parseLang(v)) options.lang = *parseLang(v);
@@ -85,7 +87,9 @@ int runGenerate(const std::vector<std::string>& args) {
     std::fputs(usage.c_str(), stderr);
     return 2;
   }
-  const LoadedConfig config = loadConfig(configDir);
+  LoadedConfig config = loadConfig(configDir);
+  // --machine NAME|FILE: the program in that machine's G-code system, with its machine.cfg keys.
+  if (!chooseMachine(machine, config, options.dialect, options.lang)) return 2;
   for (const auto& fd : config.diagnostics) printDiagnostic(stderr, fd.file, fd.diagnostic, options.lang);
   if (config.unreadable || config.hasErrors()) return 2;
   options.machine = config.setup.machine;

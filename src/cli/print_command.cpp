@@ -33,6 +33,7 @@ struct PrintOptions {
   bool drawing = true;
   Lang lang = Lang::En;
   gcode::Dialect dialect = gcode::Dialect::Fanuc;
+  bool dialectGiven = false;  // --dialect or --machine: wins over the machine a program names
   std::string machine;  // --machine NAME|FILE
   std::optional<io::JobHeader> stock;
   std::optional<gcode::InputUnits> powerOnUnits;
@@ -79,8 +80,10 @@ std::optional<PrintOptions> parse(const std::vector<std::string>& args) {
       const auto dialect = parseDialect(v);
       if (!dialect) return bad(a, v, codes::kCliAllowedDialect);
       o.dialect = *dialect;
+      o.dialectGiven = true;
     } else if (a == "--machine") {
       o.machine = v;
+      o.dialectGiven = true;
     } else if (a == "--design") {
       o.design = v;
     } else if (a == "--stock") {
@@ -122,8 +125,12 @@ int runPrint(const std::vector<std::string>& args) {
   }
   PrintOptions& o = *parsed;
   LoadedConfig config = loadConfig(o.configDir);
+  // The machine the program names at its head, unless --machine or --dialect chose one.
+  std::vector<Diagnostic> machineWarnings;
+  o.dialect = programMachine(o.file, o.dialectGiven, o.dialect, machineWarnings);
   if (!chooseMachine(o.machine, config, o.dialect, o.lang)) return 2;
   for (const auto& fd : config.diagnostics) printDiagnostic(stderr, fd.file, fd.diagnostic, o.lang);
+  for (const Diagnostic& d : machineWarnings) printDiagnostic(stderr, o.file, d, o.lang);
   if (config.unreadable || config.hasErrors()) return 2;
   std::string error;
   std::optional<machine::JobFileRequest> request =
@@ -156,8 +163,9 @@ int runPrint(const std::vector<std::string>& args) {
   in.setup = &job.setup;
   in.job = &jobOptions;
   // The drawing speaks the program's units (its G20/G21, else the power-on units; issue 28 item 4).
-  in.inch = job.program && gcode::programInputUnits(*job.program, gcode::powerOnUnitsOf(request->run.dialect,
-                                                                                         request->run.powerOnUnits)) ==
+  in.inch = job.program && gcode::programInputUnits(*job.program,
+                                                    gcode::powerOnUnitsOf(request->run.dialect, request->run.powerOnUnits),
+                                                    request->run.dialect) ==
                                gcode::InputUnits::Inch
                 ? 1
                 : 0;

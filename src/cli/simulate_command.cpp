@@ -55,6 +55,7 @@ struct SimulateOptions {
   std::string configDir;
   Lang lang = Lang::En;
   gcode::Dialect dialect = gcode::Dialect::Fanuc;
+  bool dialectGiven = false;  // --dialect or --machine: wins over the machine a program names
   std::string machine;  // --machine NAME|FILE
   bool optionalStop = false;
   bool blockSkip = false;
@@ -90,9 +91,15 @@ const std::vector<OptionSpec>& optionSpecs() {
        [](SimulateOptions& o, const std::string& v) {
          const auto dialect = parseDialect(v);
          if (dialect) o.dialect = *dialect;
+         o.dialectGiven = true;
          return dialect.has_value();
        }},
-      {"--machine", true, [](SimulateOptions& o, const std::string& v) { o.machine = v; return true; }},
+      {"--machine", true,
+       [](SimulateOptions& o, const std::string& v) {
+         o.machine = v;
+         o.dialectGiven = true;
+         return true;
+       }},
       {"--optional-stop", false, [](SimulateOptions& o, const std::string&) { o.optionalStop = true; return true; }},
       {"--block-skip", false, [](SimulateOptions& o, const std::string&) { o.blockSkip = true; return true; }},
       {"--no-persist", false, [](SimulateOptions& o, const std::string&) { o.persistVariables = false; return true; }},
@@ -216,8 +223,12 @@ int runSimulate(const std::vector<std::string>& args) {
 
   // The machine files first: the checker needs to know which tools have a bitmap.
   LoadedConfig config = loadConfig(o.configDir);
+  // The machine the program names at its head, unless --machine or --dialect chose one.
+  std::vector<Diagnostic> machineWarnings;
+  o.dialect = programMachine(o.file, o.dialectGiven, o.dialect, machineWarnings);
   if (!chooseMachine(o.machine, config, o.dialect, o.lang)) return 2;
   for (const auto& fd : config.diagnostics) printDiagnostic(fd.file, fd.diagnostic, o.lang);
+  for (const Diagnostic& d : machineWarnings) printDiagnostic(o.file, d, o.lang);
   if (config.unreadable || config.hasErrors()) return 2;  // the setup, not the program, is wrong
   std::string error;
   std::optional<machine::JobFileRequest> request =

@@ -105,10 +105,13 @@ QString HelpContents::buildHtml(bool thai, core::gcode::Dialect dialect) {
          "(<tt>X30</tt> = 30 mm) in Klueng's own programs; a program from the shop may be read in least "
          "input increments (<tt>X30</tt> = 0.030 mm) as a standard Fanuc or Haas reads it: the setup strip "
          "says which, and Job details changes it."));
+  const core::gcode::MachineProfile& machine = core::gcode::machineProfile(dialect);
   html += QStringLiteral("<p>%1 <b>%2</b></p>")
               .arg(tr("Dialect:"), dialect == core::gcode::Dialect::Fanuc ? tr("Fanuc 0i-TF")
                                   : dialect == core::gcode::Dialect::Haas ? tr("Haas ST (NGC)")
-                                                                          : tr("Rook classic"));
+                                  : dialect == core::gcode::Dialect::Classic
+                                      ? tr("Rook classic")
+                                      : fromStd(thai ? machine.nameTh : machine.nameEn));
   QSet<QString> anchored;
   QString examples;
   for (const char letter : {'G', 'M'}) {
@@ -118,9 +121,21 @@ QString HelpContents::buildHtml(bool thai, core::gcode::Dialect dialect) {
     html += QStringLiteral("<table border='1' cellspacing='0' cellpadding='4' width='100%'>");
     html += QStringLiteral("<tr style='background:#e8eef6'><th>%1</th><th>%2</th><th>%3</th></tr>")
                 .arg(tr("Code"), tr("Meaning"), tr("Example"));
-    for (const auto& c : core::gcode::codeTable()) {
-      if (c.letter != letter) continue;
-      const bool known = c.in(dialect);
+    // The table's rows, then the rows only G-code systems B and C have (G90/G91 absolute/incremental).
+    std::vector<std::pair<const core::gcode::CodeInfo*, bool>> rows;  // the row, a system-only row
+    for (const auto& a : core::gcode::codeTable()) rows.emplace_back(&a, false);
+    for (const auto& a : core::gcode::systemOnlyRows())
+      if (machine.system != core::gcode::GcodeSystem::A) rows.emplace_back(&a, true);
+    for (const auto& [row, systemOnly] : rows) {
+      const core::gcode::CodeInfo& a = *row;
+      if (a.letter != letter) continue;
+      // The machine's own row, under its G-code system's number (G33 for G32 in system B).
+      const core::gcode::CodeInfo* own =
+          !a.in(dialect) ? nullptr
+          : systemOnly   ? core::gcode::findCode(a.letter, a.number, dialect)
+                         : core::gcode::findCode(a.letter, core::gcode::numberInSystem(a.letter, a.number, dialect), dialect);
+      const bool known = own && own->action == a.action;
+      const auto& c = known ? *own : a;
       const QString code = QStringLiteral("%1%2").arg(QLatin1Char(c.letter)).arg(c.number, 2, 10, QLatin1Char('0'));
       const auto name = thai ? c.nameTh : c.nameEn;
       const auto other = thai ? c.nameEn : c.nameTh;

@@ -13,6 +13,9 @@
 
 #include <optional>
 
+#include "gui/language.h"
+#include "klueng/core/gcode/machine_profile.h"
+
 namespace klueng::gui {
 
 namespace io = core::io;
@@ -82,6 +85,14 @@ JobDetailsDialog::JobDetailsDialog(const io::JobHeader& h, QWidget* parent) : QD
   decimalPoint_ = makeChoice(this, "decimalPoint", h.calculatorInput, true);
   // Unset (what the program's moves show, else the machine), in front, beyond.
   toolSide_ = makeChoice(this, "toolSide", h.toolsBeyondCentre, false);
+  // Not named, then every loaded machine (names in the UI language: retranslate).
+  machine_ = new QComboBox(this);
+  machine_->setObjectName(QStringLiteral("machine"));
+  machine_->addItem(QString(), QString());
+  for (const core::gcode::MachineProfile* p : core::gcode::machineProfiles())
+    machine_->addItem(QString(), QString::fromUtf8(p->id.data(), static_cast<qsizetype>(p->id.size())));
+  const int named = machine_->findData(QString::fromStdString(h.machine));
+  machine_->setCurrentIndex(named > 0 ? named : 0);
   form_ = new QFormLayout;
   form_->addRow(new QLabel(this), project_);
   form_->addRow(new QLabel(this), part_);
@@ -92,6 +103,7 @@ JobDetailsDialog::JobDetailsDialog(const io::JobHeader& h, QWidget* parent) : QD
   form_->addRow(new QLabel(this), programmer_);
   form_->addRow(new QLabel(this), decimalPoint_);
   form_->addRow(new QLabel(this), toolSide_);
+  form_->addRow(new QLabel(this), machine_);
   buttons_ = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(form_);
@@ -120,6 +132,7 @@ io::JobHeader JobDetailsDialog::header() const {
   h.bore = bore_->value() < h.diameter ? bore_->value() : 0.0;
   h.calculatorInput = choiceOf(decimalPoint_);
   h.toolsBeyondCentre = choiceOf(toolSide_);
+  h.machine = machine_->currentData().toString().toStdString();
   return h;
 }
 
@@ -138,8 +151,9 @@ void JobDetailsDialog::retranslate() {
   const QString labels[] = {tr("Project:"),      tr("Part:"),
                             tr("Material:"),     tr("Stock diameter:"),
                             tr("Stock length:"), tr("Bore diameter (tube; 0 = solid bar):"),
-                            tr("Programmer:"),   tr("Lengths without a decimal point:"), tr("Tool side:")};
-  for (int i = 0; i < 9; ++i)
+                            tr("Programmer:"),   tr("Lengths without a decimal point:"), tr("Tool side:"),
+                            tr("Machine:")};
+  for (int i = 0; i < 10; ++i)
     if (auto* label = qobject_cast<QLabel*>(form_->itemAt(i, QFormLayout::LabelRole)->widget())) label->setText(labels[i]);
   for (QComboBox* unit : {diameterUnit_, lengthUnit_}) {
     unit->setItemText(0, tr("mm"));
@@ -162,6 +176,19 @@ void JobDetailsDialog::retranslate() {
       tr("Where the tools work. Beyond the centre line: a rear tool post or a lathe programmed in negative X; the "
          "tools are drawn and cut mirrored onto the front. As the program's moves show: a plain program that cuts "
          "at X < 0 has its tools there, else the machine setting (machine.cfg tools_beyond_centre)."));
+  const bool thai = Language::coreLang() == core::Lang::Th;
+  machine_->setItemText(0, tr("Not named (the window's machine)"));
+  for (int i = 1; i < machine_->count(); ++i) {
+    core::gcode::Dialect d{};
+    if (!core::gcode::parseDialectId(machine_->itemData(i).toString().toStdString(), d)) continue;
+    const core::gcode::MachineProfile& p = core::gcode::machineProfile(d);
+    const std::string_view name = thai ? p.nameTh : p.nameEn;
+    machine_->setItemText(i, QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size())));
+  }
+  machine_->setToolTip(
+      tr("The machine this program is written for. The program names it in a comment at its head, "
+         "(MACHINE: romi-gl240m): opening the file selects that machine, and klueng-cli checks it on that "
+         "machine unless --machine or --dialect is given."));
   validate();
 }
 

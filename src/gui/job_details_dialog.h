@@ -2,7 +2,9 @@
 // Job details (SPEC 2): project, part, material, stock diameter and length
 // (each with mm/inch), bore (tube stock, in the diameter's unit; 0 = solid bar),
 // programmer, and how the program's lengths without a decimal point are read
-// (as its numbers show / whole / least input increments: JobHeader::calculatorInput).
+// (as its numbers show / whole / least input increments: JobHeader::calculatorInput),
+// and the machine the program is written for (JobHeader::machine: the program
+// names it at its head, `(MACHINE: romi-gl240m)`; none = the window's machine).
 // Diameter and length must be > 0 and the bore less than the diameter: OK
 // stays disabled and a line under the form says why.
 //
@@ -48,6 +50,7 @@ class JobDetailsDialog : public QDialog {
   QLineEdit* programmer_ = nullptr;
   QComboBox* decimalPoint_ = nullptr;  // objectName "decimalPoint": unset / whole / increments
   QComboBox* toolSide_ = nullptr;      // objectName "toolSide": unset / in front / beyond the centre line
+  QComboBox* machine_ = nullptr;       // objectName "machine": none named / each loaded machine (its id as data)
   QDialogButtonBox* buttons_ = nullptr;
 };
 

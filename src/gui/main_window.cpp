@@ -14,6 +14,7 @@
 #include <QProgressBar>
 #include <QScreen>
 #include <QSplitter>
+#include <QTextCursor>
 #include <QStatusBar>
 #include <QTimer>
 #include <QToolBar>
@@ -284,6 +285,9 @@ void MainWindow::connectDocuments() {
     toolOverrides_ = loadToolOverrides(path);
     runnerStale_ = true;
     updateTitle();
+    // A program that names its machine at its head ((MACHINE: id), issue 27) selects it.
+    core::gcode::Dialect named{};
+    if (core::gcode::parseDialectId(document_->header().machine, named) && named != dialect_) setDialect(named);
     checker_->checkText(text);  // the text just loaded: no need to read it back from the editor
     emit fileLoaded(path);
   });
@@ -608,8 +612,34 @@ QString MainWindow::bannerText() const { return banner_->text(); }
 // ---------------------------------------------------------------- dialogs
 
 void MainWindow::showJobDetails() {
-  JobDetailsDialog dlg(document_->header(), this);
-  if (dlg.exec() == QDialog::Accepted) setJobDetails(dlg.header());
+  // The machine is the one the program names now, in the editor (issue 27).
+  const std::string text = editor_->toPlainText().toStdString();
+  const std::optional<core::io::NamedMachine> named = core::io::machineNamedIn(text);
+  core::io::JobHeader h = document_->header();
+  h.machine = named ? named->id : std::string();
+  JobDetailsDialog dlg(h, this);
+  if (dlg.exec() != QDialog::Accepted) return;
+  const core::io::JobHeader chosen = dlg.header();
+  setJobDetails(chosen);
+  // A name no loaded machine has shows as "not named": kept unless another machine is picked.
+  core::gcode::Dialect d{};
+  const std::string shown = core::gcode::parseDialectId(h.machine, d) ? h.machine : std::string();
+  if (chosen.machine != shown) {
+    // One edit of the changed lines only (undone with Ctrl+Z): the program's head names the machine.
+    const QString before = editor_->toPlainText();
+    const QString after = QString::fromStdString(core::io::withMachineNamed(text, chosen.machine));
+    qsizetype head = 0;
+    while (head < before.size() && head < after.size() && before[head] == after[head]) ++head;
+    qsizetype tail = 0;
+    while (tail < before.size() - head && tail < after.size() - head &&
+           before[before.size() - 1 - tail] == after[after.size() - 1 - tail])
+      ++tail;
+    QTextCursor edit(editor_->document());
+    edit.setPosition(static_cast<int>(head));
+    edit.setPosition(static_cast<int>(before.size() - tail), QTextCursor::KeepAnchor);
+    edit.insertText(after.mid(head, after.size() - head - tail));
+  }
+  if (core::gcode::parseDialectId(chosen.machine, d) && d != dialect_) setDialect(d);
 }
 
 void MainWindow::applyJobDetails(const core::io::JobHeader& header) {

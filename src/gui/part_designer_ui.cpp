@@ -15,6 +15,8 @@
 #include <QVBoxLayout>
 
 #include "gui/design_model.h"
+#include "gui/language.h"
+#include "klueng/core/gcode/machine_profile.h"
 #include "gui/design_preview.h"
 #include "gui/part3d_view.h"
 #include "gui/part_designer.h"
@@ -77,6 +79,10 @@ void PartDesignerDialog::buildUi() {
   dialect_->addItem(QStringLiteral("Fanuc 0i-TF"), static_cast<int>(core::gcode::Dialect::Fanuc));
   dialect_->addItem(QStringLiteral("Haas ST"), static_cast<int>(core::gcode::Dialect::Haas));
   dialect_->addItem(QString(), static_cast<int>(core::gcode::Dialect::Classic));
+  // The machines past the shipped three (romi-gl240m, the user's): the program in their G-code system.
+  for (const core::gcode::MachineProfile* p : core::gcode::machineProfiles())
+    if (static_cast<int>(p->dialect) > static_cast<int>(core::gcode::Dialect::Classic))
+      dialect_->addItem(QString(), static_cast<int>(p->dialect));
   materialLabel_ = new QLabel(this);
   material_ = new QComboBox(this);
   material_->setObjectName(QStringLiteral("designMaterial"));
@@ -196,6 +202,13 @@ void PartDesignerDialog::retranslate() {
   saveButton_->setToolTip(tr("Save the part as a part file (JSON)"));
   dialectLabel_->setText(tr("Dialect:"));
   dialect_->setItemText(2, tr("Classic (1999)"));
+  const bool thai = Language::coreLang() == core::Lang::Th;
+  for (int k = 3; k < dialect_->count(); ++k) {
+    const core::gcode::MachineProfile& p =
+        core::gcode::machineProfile(static_cast<core::gcode::Dialect>(dialect_->itemData(k).toInt()));
+    const std::string_view name = thai ? p.nameTh : p.nameEn;
+    dialect_->setItemText(k, QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size())));
+  }
   materialLabel_->setText(tr("Material:"));
   for (int k = 0; k < material_->count(); ++k) {
     const QString row = material_->itemData(k).toString();

@@ -800,7 +800,36 @@ TEST(CliMachines, ConfigFolderMachineAndBrokenMachineFile) {
   EXPECT_THAT(thai.out, HasSubstr(":4:10: ข้อผิดพลาด F200: " + bad + ": family = 'fanuk': ต้องเป็นค่าใดค่าหนึ่งต่อไปนี้: fanuc haas classic"));
   const CliRun unknown = runCliWithErrors("simulate --machine no-such-lathe " + quote(program));
   EXPECT_EQ(unknown.exitCode, 2);
-  EXPECT_THAT(unknown.out, HasSubstr("no-such-lathe: error F203: no-such-lathe: no such machine or machine file; the machines are: fanuc, haas, classic, romi-gl240m"));
+  EXPECT_THAT(unknown.out, HasSubstr("no-such-lathe: error F203: no-such-lathe: no such machine or machine file; the machines are: fanuc, haas, classic, romi-gl240m, thai-vocational"));
+}
+
+// Issue 27 item 2: a program that names its machine at its head, as Job details
+// writes it, is checked and simulated on that machine; --dialect or --machine
+// still wins; a machine that is not loaded is a located warning.
+TEST(CliMachines, ProgramNamesItsMachine) {
+  TempDir dir;
+  const std::string body = "G90 G95 G21;\nG92 S3000;\nT0101;\nG97 S800 M03;\nG00 X24. Z5.;\n"
+                           "G78 X19.4 Z-13. F1.5;\nX18.9;\nG00 X100. Z100.;\nM30;\n";
+  const std::string named = dir.write("named.nc", "%\nO0001\n(MACHINE: romi-gl240m)\n" + body + "%\n");
+  const CliRun ok = runCliWithErrors("check " + quote(named));
+  EXPECT_EQ(ok.exitCode, 0) << ok.out;
+  EXPECT_THAT(ok.out, Not(HasSubstr("error")));
+  const CliRun sim = runCliWithErrors("simulate --cycle-time " + quote(named));
+  EXPECT_EQ(sim.exitCode, 0) << sim.out;
+  // --dialect chooses for it: system A refuses G95 on line 4.
+  const CliRun asA = runCliWithErrors("check --dialect fanuc " + quote(named));
+  EXPECT_EQ(asA.exitCode, 1);
+  EXPECT_THAT(asA.out, HasSubstr(":4:5: error E114: G95 is not a G code of this lathe"));
+
+  const std::string unknown = dir.write("unknown.nc", "O0002\n(MACHINE: okuma-lb15)\n" + body);
+  const CliRun warned = runCliWithErrors("check " + quote(unknown));
+  EXPECT_EQ(warned.exitCode, 1);  // checked on the default Fanuc: G95 is an error there
+  EXPECT_THAT(warned.out, HasSubstr(unknown + ":2:11: warning F205: the program names the machine 'okuma-lb15', "
+                                              "which is not loaded: it is checked on the chosen machine; the machines are: "
+                                              "fanuc, haas, classic, romi-gl240m, thai-vocational"));
+  const CliRun thai = runCliWithErrors("check --lang th " + quote(unknown));
+  EXPECT_THAT(thai.out, HasSubstr(":2:11: "));
+  EXPECT_THAT(thai.out, HasSubstr("F205: โปรแกรมระบุเครื่อง 'okuma-lb15' ซึ่งไม่มีอยู่"));
 }
 
 }  // namespace

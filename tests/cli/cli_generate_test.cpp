@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 
@@ -110,6 +111,23 @@ TEST_F(CliGenerateLimits, ALongDesignIsNumberedWithinTheDialectsBlockNumbers) {
             std::string::npos)
       << r.err;
   EXPECT_FALSE(fs::exists(dir_ / "classic.nc"));
+}
+
+// Issue 27: --machine writes the program in the machine's G-code system and names
+// the machine at its head; check then runs it on that machine without being told.
+TEST_F(CliGenerateLimits, AMachineGetsItsOwnNumbers) {
+  const CliRun r = cli(dir_, "generate '" + std::string(KLUENG_SOURCE_DIR) +
+                                 "/resources/parts/step-shaft.json' -o out.nc --machine romi-gl240m");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  std::ifstream in(dir_ / "out.nc");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("(MACHINE: romi-gl240m)"), std::string::npos) << text;
+  EXPECT_NE(text.find(" G92 S"), std::string::npos) << text;
+  EXPECT_NE(text.find(" G95"), std::string::npos) << text;
+  EXPECT_EQ(text.find("G50"), std::string::npos) << text;
+  EXPECT_EQ(cli(dir_, "check out.nc").exitCode, 0);
+  EXPECT_EQ(cli(dir_, "check --dialect fanuc out.nc").exitCode, 1);  // G95 is no system-A code
+  EXPECT_EQ(cli(dir_, "generate x.json -o y.nc --machine no-such-lathe").exitCode, 2);
 }
 
 }  // namespace

@@ -1,21 +1,27 @@
 // "Say which dialect fits" in the GUI (issue 8 item 5): a Haas program opened
 // in the Fanuc dialect gets a bar offering the Haas dialect; one click
 // switches, the errors go and the choice is remembered.
+#include <QApplication>
+#include <QComboBox>
 #include <QFile>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
+#include <QTimer>
 #include <QTest>
 
 #include "gui_test_runner.h"
 #include "fresh_user_folders.h"
+#include "gui/code_editor.h"
 #include "gui/dialect_offer_bar.h"
 #include "gui/document.h"
+#include "gui/job_details_dialog.h"
 #include "gui/language.h"
 #include "gui/main_window.h"
 #include "gui/resources.h"
 #include "gui/settings.h"
+#include "klueng/core/gcode/machine_profile.h"
 
 using namespace klueng;
 using namespace klueng::gui;
@@ -116,6 +122,72 @@ class DialectOfferTest : public QObject {
     QVERIFY(w.stockSourceText().startsWith(QStringLiteral("Stock Ø2 x ")));
     QVERIFY(w.stockSourceText().contains(QStringLiteral(" in ")));
     Settings().setPowerOnUnits(std::nullopt);
+  }
+
+  // Issue 27 item 2: a program that names its machine at its head selects it on
+  // opening; Job details picks the machine and writes the head's comment.
+  void programNamingItsMachineSelectsIt() {
+    Settings().setDialect(core::gcode::Dialect::Fanuc);
+    Language::instance()->setLanguage(QStringLiteral("en"));
+    core::gcode::Dialect romi{};
+    QVERIFY(core::gcode::parseDialectId("romi-gl240m", romi));
+    const QByteArray body = "G90 G95 G21;\nG92 S3000;\nT0101;\nG97 S800 M03;\nG00 X24. Z5.;\n"
+                            "G78 X19.4 Z-13. F1.5;\nX18.9;\nG00 X100. Z100.;\nM30;\n";
+    QTemporaryDir dir;
+    const QString named = dir.filePath(QStringLiteral("named.nc"));
+    QFile f(named);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write("%\nO0027\n(MACHINE: romi-gl240m)\n" + body + "%\n");
+    f.close();
+    {
+      MainWindow w;
+      w.show();
+      QVERIFY(openAndWait(w, named));
+      QCOMPARE(w.dialect(), romi);
+      QVERIFY(w.action(QStringLiteral("actionMachine_romi-gl240m"))->isChecked());
+      QTRY_VERIFY(!w.isBusy());
+      for (const auto& d : w.diagnostics()) QVERIFY2(!core::isError(d.severity), d.code.c_str());
+    }
+
+    // A plain program without the comment, in the Fanuc (system A) machine: Job details picks ROMI.
+    Settings().setDialect(core::gcode::Dialect::Fanuc);
+    const QString plain = dir.filePath(QStringLiteral("plain.nc"));
+    QFile g(plain);
+    QVERIFY(g.open(QIODevice::WriteOnly));
+    g.write("%\nO0028\n" + body + "%\n");
+    g.close();
+    MainWindow w;
+    w.show();
+    QVERIFY(openAndWait(w, plain));
+    QCOMPARE(w.dialect(), core::gcode::Dialect::Fanuc);
+    QTimer::singleShot(0, [] {
+      QVERIFY(QTest::qWaitFor([] { return qobject_cast<JobDetailsDialog*>(QApplication::activeModalWidget()); }, 5000));
+      auto* d = qobject_cast<JobDetailsDialog*>(QApplication::activeModalWidget());
+      auto* machine = d->findChild<QComboBox*>(QStringLiteral("machine"));
+      QVERIFY(machine);
+      QCOMPARE(machine->currentIndex(), 0);
+      QCOMPARE(machine->itemText(0), QStringLiteral("Not named (the window's machine)"));
+      const int romiAt = machine->findData(QStringLiteral("romi-gl240m"));
+      QVERIFY(romiAt > 0);
+      QCOMPARE(machine->itemText(romiAt), QStringLiteral("ROMI GL 240M (system B)"));
+      machine->setCurrentIndex(romiAt);
+      d->accept();
+    });
+    QSignalSpy checked(&w, &MainWindow::checkFinished);
+    w.action(QStringLiteral("actionJobDetails"))->trigger();
+    QCOMPARE(w.dialect(), romi);
+    QVERIFY2(w.editor()->toPlainText().startsWith(QStringLiteral("%\nO0028\n(MACHINE: romi-gl240m)\nG90 G95 G21;\n")),
+             qPrintable(w.editor()->toPlainText()));
+    QTRY_VERIFY(checked.count() > 0);
+    QTRY_VERIFY(!w.isBusy());
+    for (const auto& d : w.diagnostics()) QVERIFY2(!core::isError(d.severity), d.code.c_str());
+    // Saved and opened again, the file brings its machine.
+    QVERIFY(w.saveFile(plain));
+    Settings().setDialect(core::gcode::Dialect::Fanuc);
+    MainWindow again;
+    QVERIFY(openAndWait(again, plain));
+    QCOMPARE(again.dialect(), romi);
+    Settings().setDialect(core::gcode::Dialect::Fanuc);
   }
 
   void cleanProgramGetsNoOffer() {

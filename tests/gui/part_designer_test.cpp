@@ -94,9 +94,10 @@ class PartDesignerTest : public QObject {
     QCOMPARE(d->model()->index(1, gui::DesignTableModel::Z).data().toString(), QStringLiteral("-20 … -40"));
     QCOMPARE(d->verdict(), QStringLiteral("The cut part matches the drawing within 0.01 mm."));
     QCOMPARE(lines(d->findings()), QStringList{d->verdict()});
-    // Haas and the classic rules too.
+    // Haas, the classic rules and the ROMI in G-code system B (issue 27) too.
     auto* dialect = d->findChild<QComboBox*>(QStringLiteral("designDialect"));
-    for (const int k : {1, 2, 0}) {
+    QCOMPARE(dialect->itemText(3), QStringLiteral("ROMI GL 240M (system B)"));
+    for (const int k : {1, 2, 3, 0}) {
       dialect->setCurrentIndex(k);
       QVERIFY(waitLoop(d));
       QVERIFY2(d->lastLoop()->matches(), qPrintable(dialect->currentText()));

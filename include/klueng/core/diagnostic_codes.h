@@ -74,6 +74,7 @@ inline constexpr const char* kMachineKeyMissing = "F201";   // {0} file, {1} key
 inline constexpr const char* kMachineUnknownBase = "F202";  // {0} file, {1} base, {2} the machines
 inline constexpr const char* kUnknownMachine = "F203";      // {0} name or file, {1} the machines
 inline constexpr const char* kNotAMachineFile = "F204";     // {0} file
+inline constexpr const char* kProgramMachineUnknown = "F205";  // {0} the machine the program names, {1} the machines
 inline constexpr const char* kNotAnImage = "F150";
 inline constexpr const char* kImageTruncated = "F151";
 inline constexpr const char* kImageSizeRefused = "F152";

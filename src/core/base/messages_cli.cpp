@@ -144,11 +144,11 @@ constexpr MessageText kCliMessages[] = {
     {codes::kCliGenerateUsage,
      "usage: klueng-cli generate PART.json|PART.dxf -o OUT.nc [--dialect fanuc|haas|classic] [--material NAME]\n"
      "                           [--tool-material hss|carbide] [--layer NAME] [--stock DxL[xBORE]]\n"
-     "                           [--lang en|th] [--config DIR]\n"
+     "                           [--machine NAME|FILE] [--lang en|th] [--config DIR]\n"
      "  the part file's format and DXF drawings: docs/parts.md; cutting speeds: resources/parts/cutting_speeds.cfg\n",
      "วิธีใช้: klueng-cli generate PART.json|PART.dxf -o OUT.nc [--dialect fanuc|haas|classic] [--material NAME]\n"
      "                           [--tool-material hss|carbide] [--layer NAME] [--stock DxL[xBORE]]\n"
-     "                           [--lang en|th] [--config DIR]\n"
+     "                           [--machine NAME|FILE] [--lang en|th] [--config DIR]\n"
      "  รูปแบบไฟล์ชิ้นงานและแบบ DXF: docs/parts.md ความเร็วตัด: resources/parts/cutting_speeds.cfg\n"},
 
     // What a command says about its command line and its run ({0}... as each says).

@@ -73,6 +73,8 @@ constexpr MessageText kGcodeMessages[] = {
      "{0}: การลบมุม ,C การมนมุม ,R และมุม ,A ใช้ได้เฉพาะในบล็อก G01"},
     {"E134", "{0}{1}: a G-code number has no exponent (E): write the value of {0}{1} in digits with a decimal point",
      "{0}{1}: ตัวเลขในจีโค้ดเขียนแบบยกกำลัง (E) ไม่ได้: ให้เขียนค่าของ {0}{1} เป็นตัวเลขพร้อมจุดทศนิยม"},
+    {"E140", "{0} is a single cycle: its block needs the cycle's end point, X (U) and Z (W)",
+     "{0} เป็นวัฏจักรทำงานครั้งเดียว: บล็อกต้องมีจุดสิ้นสุดของวัฏจักร X (U) และ Z (W)"},
     {"E139", "{0}: a number in a macro expression has no exponent (E): write the value of {0} in digits with a decimal point",
      "{0}: ตัวเลขในนิพจน์มาโครเขียนแบบยกกำลัง (E) ไม่ได้: ให้เขียนค่าของ {0} เป็นตัวเลขพร้อมจุดทศนิยม"},
     {"E133", "{0} and {1} in one block: a corner is either a chamfer or a radius",

@@ -192,6 +192,9 @@ constexpr MessageText kIoMessages[] = {
     {codes::kUnknownMachine, "{0}: no such machine or machine file; the machines are: {1}",
      "{0}: ไม่มีเครื่องหรือไฟล์เครื่องนี้ เครื่องที่มี: {1}"},
     {codes::kNotAMachineFile, "{0}: a machine file's name ends in .machine", "{0}: ชื่อไฟล์เครื่องต้องลงท้ายด้วย .machine"},
+    {codes::kProgramMachineUnknown,
+     "the program names the machine '{0}', which is not loaded: it is checked on the chosen machine; the machines are: {1}",
+     "โปรแกรมระบุเครื่อง '{0}' ซึ่งไม่มีอยู่: จึงตรวจกับเครื่องที่เลือกไว้ เครื่องที่มี: {1}"},
 
     // Tools chosen from the program (core/machine/tool_inference.h): notes, never errors.
     // {0} station (2 digits), {1} library id, {2} what was seen, {3} file line.

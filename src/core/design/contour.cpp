@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "klueng/core/diagnostic_codes.h"
+#include "klueng/core/gcode/code_table.h"
 
 namespace klueng::core::design::detail {
 
@@ -184,7 +185,22 @@ std::string commentText(const std::string& text) {
 }
 
 void Writer::block(const std::string& words, const std::string& comment) {
-  std::string line = numbered_ ? fmt::format("N{} {}", n_, words) : words;
+  // Each blank-separated G word, renumbered for the machine's G-code system.
+  std::string renumbered;
+  for (std::size_t at = 0; at < words.size();) {
+    std::size_t end = words.find(' ', at);
+    if (end == std::string::npos) end = words.size();
+    const std::string_view word(words.data() + at, end - at);
+    const bool gCode = word.size() > 1 && word.front() == 'G' &&
+                       word.find_first_not_of("0123456789", 1) == std::string_view::npos;
+    const int inA = gCode ? std::stoi(std::string(word.substr(1))) : -1;
+    const int inSystem = gCode ? gcode::numberInSystem('G', inA, machine_) : -1;
+    if (gCode && inSystem >= 0 && inSystem != inA) renumbered += fmt::format("G{:02}", inSystem);
+    else renumbered += word;
+    if (end < words.size()) renumbered += ' ';
+    at = end + 1;
+  }
+  std::string line = numbered_ ? fmt::format("N{} {}", n_, renumbered) : renumbered;
   n_ += step_;
   if (!comment.empty()) line += " (" + commentText(comment) + ")";
   text_ += line + "\n";

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "klueng/core/design/part_design.h"
+#include "klueng/core/gcode/machine_profile.h"
 
 namespace klueng::core::design::detail {
 
@@ -58,7 +59,11 @@ struct Words {
 class Writer {
  public:
   // Blocks numbered N{step}, N{2 step}, ... (10 as programs are written by hand).
-  explicit Writer(bool numbered, int step = 10) : numbered_(numbered), step_(step), n_(step) {}
+  // G words are written as system A numbers them and come out as `machine`'s
+  // G-code system numbers them (G50 -> G92, G32 -> G33 in system B), through the
+  // code table's renamed rows.
+  explicit Writer(bool numbered, int step = 10, gcode::Dialect machine = gcode::Dialect::Fanuc)
+      : numbered_(numbered), step_(step), n_(step), machine_(machine) {}
   void block(const std::string& words, const std::string& comment = {});
   void raw(const std::string& line) { text_ += line + "\n"; }
   long long next() const { return n_; }
@@ -71,6 +76,7 @@ class Writer {
   bool numbered_;
   int step_;
   long long n_;
+  gcode::Dialect machine_;
   std::string text_;
 };
 

@@ -58,7 +58,8 @@ struct TurningPass {
 void writeTurning(Writer& w, const Contour& contour, const TurningPass& pass, gcode::Dialect dialect, const Words& t) {
   const double u = pass.side * kAllowanceX;
   const std::string finishing = t.pick("finishing with nose radius compensation", "กลึงละเอียดพร้อมชดเชยรัศมีจมูกมีด");
-  if (dialect == gcode::Dialect::Classic) {
+  const gcode::Dialect family = gcode::machineProfile(dialect).family;
+  if (family == gcode::Dialect::Classic) {
     // Plain passes `depth` a side. A pass at Ø d may run left only while the
     // contour stays U beyond it (U left for finishing): it stops where the
     // contour reaches d - U (outside; d + U in the bore), W short of it.
@@ -84,7 +85,7 @@ void writeTurning(Writer& w, const Contour& contour, const TurningPass& pass, gc
     contourBlocks(w, contour, pass.startX, t);
     return;
   }
-  const bool haas = dialect == gcode::Dialect::Haas;
+  const bool haas = family == gcode::Dialect::Haas;
   const long long p = w.next() + w.step() * (haas ? 1 : 2);
   const long long q = p + w.step() * (static_cast<long long>(contour.moves.size()) + 2);
   const std::string left = pass.side > 0 ? t.pick("0.4 on the diameter and 0.1 on Z left for finishing",
@@ -173,8 +174,10 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
   const double stock = part.stockDiameter;
   const double exitX = stock + 2.0;
   const double rpmAtStock = spindleRpm(out.cuttingSpeed, stock);
-  const bool haas = options.dialect == gcode::Dialect::Haas;
-  const bool classic = options.dialect == gcode::Dialect::Classic;
+  // The habits of the machine's control family (a user's Haas-based machine writes as a Haas).
+  const gcode::Dialect family = gcode::machineProfile(options.dialect).family;
+  const bool haas = family == gcode::Dialect::Haas;
+  const bool classic = family == gcode::Dialect::Classic;
 
   // The job header (SPEC 2): the bar is the part's stock.
   // Sizes in the header have no point: a unit digit (1 = mm), then the number ("150" = 50 mm).
@@ -191,9 +194,13 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
   // The blocks, numbered N10, N20, ... as by hand; a program too long for that
   // is numbered more closely rather than past the dialect's largest N (issue 29).
   const auto write = [&](int step) {
-    Writer w(true, step);
+    Writer w(true, step, options.dialect);
     if (!classic) w.raw("%");
     w.raw(fmt::format("{} ({})", haas ? "O00100" : "O0100", name));
+    // A machine past the three dialects is named at the program's head (docs/program-file.md §8):
+    // the file opens on it and klueng-cli checks it there.
+    if (static_cast<int>(options.dialect) > static_cast<int>(gcode::Dialect::Classic))
+      w.raw(fmt::format("(MACHINE: {})", gcode::machineProfile(options.dialect).id));
     w.raw(fmt::format("({})", t.pick("Written by Klueng from the part design: check it, then simulate it",
                                      "เขียนโดย Klueng จากแบบชิ้นงาน: ตรวจสอบแล้วจำลองการทำงานก่อนใช้")));
     if (classic) {

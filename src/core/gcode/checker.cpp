@@ -146,6 +146,7 @@ class Checker {
     const CodeInfo* wordRow = nullptr;  // the code whose word list sets the kinds of this block's words
     const Word* dwell = nullptr;        // G04
     const Word* reference = nullptr;    // G28
+    const Word* singleCycle = nullptr;  // G90/G92/G94 (system A), G77/G78/G79 (B)
     const Word* compWord = nullptr;     // G40 G41 G42
     const CodeInfo* comp = nullptr;
     bool cannedCycle = false;
@@ -323,6 +324,9 @@ class Checker {
     if (!row.words.empty() && !seen.wordRow) seen.wordRow = &row;
     if (row.action == CodeAction::Dwell) seen.dwell = &w;
     if (row.action == CodeAction::ReferenceReturn) seen.reference = &w;
+    if (row.action == CodeAction::BoxTurning || row.action == CodeAction::BoxThreading ||
+        row.action == CodeAction::BoxFacing)
+      seen.singleCycle = &w;
   }
 
   void readMCode(const Word& w, const CodeInfo& row, BlockCodes& seen) {
@@ -361,6 +365,10 @@ class Checker {
         emit(codes::kAbsoluteAndIncremental, *later(seen.has(abs), seen.has(inc)),
              {std::string(1, abs), std::string(1, inc)});
     if (seen.dwell) checkDwell(block, *seen.dwell, seen.has('U') ? seen.has('U') : seen.has('X'), seen.has('P'));
+    // A single cycle block names its end point: `G92 S3000` (system B's clamp, read in
+    // system A) would select the threading cycle and set 3000 rpm.
+    if (seen.singleCycle && !seen.axisWords())
+      emit(codes::kSingleCycleWithoutEnd, *seen.singleCycle, {wordText(*seen.singleCycle)});
     if (seen.reference && !seen.axisWords()) {
       if (profile_.bareG28 == BareG28::NoMotion) emit(codes::kG28NoMotion, *seen.reference, {}, Severity::Warning);
       else if (profile_.bareG28 == BareG28::Error) emit(codes::kG28WithoutAxes, *seen.reference, {});

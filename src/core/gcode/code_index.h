@@ -13,9 +13,13 @@ namespace klueng::core::gcode::detail {
 struct CodeIndex {
   std::array<std::array<const CodeInfo*, 100>, 2> rows{};  // [G, M][number]
   std::deque<CodeInfo> renamed;  // rows of the system under their own numbers (stable addresses)
+  std::deque<std::string> texts;  // their names and examples with the system's G numbers
 };
 
 void buildCodeIndex(const MachineProfile& profile, CodeIndex& out);
+// numberInSystem and inSystemNumbers for a system (usable while a machine is registered).
+int numberInSystemOf(int numberInA, GcodeSystem system);
+std::string inSystemNumbers(std::string_view text, GcodeSystem system);
 const CodeIndex& codeIndexOf(Dialect dialect);
 // A registered machine by id (for `base =`), nullptr when none.
 const MachineProfile* loadedMachine(std::string_view id);

@@ -9,6 +9,10 @@
 #include "code_index.h"
 #include "klueng/core/gcode/program.h"
 
+#include <fmt/format.h>
+
+#include <string>
+
 namespace klueng::core::gcode {
 
 namespace {
@@ -361,14 +365,14 @@ constexpr SystemRename kRenames[] = {
     // coordinate setting and speed clamp, G33 threading, G77-G79 the single cycles.
     {GcodeSystem::B, 33, 32}, {GcodeSystem::B, 92, 50}, {GcodeSystem::B, 77, 90}, {GcodeSystem::B, 78, 92},
     {GcodeSystem::B, 79, 94}, {GcodeSystem::B, 94, 98}, {GcodeSystem::B, 95, 99},
-    {GcodeSystem::B, 90, -1}, {GcodeSystem::B, 91, -1},
+    {GcodeSystem::B, 90, -1}, {GcodeSystem::B, 91, -1}, {GcodeSystem::B, 98, -1}, {GcodeSystem::B, 99, -1},
     // System C: as B, and the units become G70/G71, so G70-G76 move up by two and
     // the single cycles become G20, G21, G24.
     {GcodeSystem::C, 70, 20}, {GcodeSystem::C, 71, 21}, {GcodeSystem::C, 72, 70}, {GcodeSystem::C, 73, 71},
     {GcodeSystem::C, 74, 72}, {GcodeSystem::C, 75, 73}, {GcodeSystem::C, 76, 74}, {GcodeSystem::C, 77, 75},
     {GcodeSystem::C, 78, 76}, {GcodeSystem::C, 33, 32}, {GcodeSystem::C, 92, 50}, {GcodeSystem::C, 20, 90},
     {GcodeSystem::C, 21, 92}, {GcodeSystem::C, 24, 94}, {GcodeSystem::C, 94, 98}, {GcodeSystem::C, 95, 99},
-    {GcodeSystem::C, 90, -1}, {GcodeSystem::C, 91, -1},
+    {GcodeSystem::C, 90, -1}, {GcodeSystem::C, 91, -1}, {GcodeSystem::C, 98, -1}, {GcodeSystem::C, 99, -1},
 };
 
 // Rows system A has not (the family mask says which controls have them).
@@ -379,6 +383,13 @@ constexpr CodeInfo kSystemOnly[] = {
     {'G', 91, G::Distance, P::State, kF, false, "Incremental programming", "กำหนดตำแหน่งแบบสัมพัทธ์",
      "G91 - X and Z are distances from where the tool is (X on the diameter)",
      "G91 - ค่า X และ Z เป็นระยะจากตำแหน่งปัจจุบันของมีด (X เป็นค่าเส้นผ่านศูนย์กลาง)", {}, CodeAction::Incremental},
+    // Systems B and C: G94/G95 are the feed modes, G98/G99 where G83-G85 return (system A: always the initial level).
+    {'G', 98, G::ReturnLevel, P::State, kF, false, "Drilling: return to the initial level", "เจาะรู: ถอยกลับถึงระดับเริ่มต้น",
+     "G98 - a drilling cycle ends where it started, at the initial level",
+     "G98 - วัฏจักรเจาะรูถอยกลับไปจบที่ระดับเริ่มต้น", {}, CodeAction::ReturnToInitialLevel},
+    {'G', 99, G::ReturnLevel, P::State, kF, false, "Drilling: return to the R point", "เจาะรู: ถอยกลับถึงจุด R",
+     "G99 - a drilling cycle ends at its R point, ready for the next hole",
+     "G99 - วัฏจักรเจาะรูถอยกลับไปจบที่จุด R พร้อมเจาะรูถัดไป", {}, CodeAction::ReturnToRPoint},
 };
 
 const CodeInfo* baseRow(char letter, int number, Dialect family) {
@@ -390,6 +401,17 @@ const CodeInfo* baseRow(char letter, int number, Dialect family) {
 }  // namespace
 
 namespace detail {
+
+int numberInSystemOf(int numberInA, GcodeSystem system) {
+  if (system == GcodeSystem::A) return numberInA;
+  bool movedAway = false;
+  for (const SystemRename& r : kRenames) {
+    if (r.system != system) continue;
+    if (r.numberInA == numberInA) return r.number;
+    if (r.number == numberInA) movedAway = true;  // the number means another code there
+  }
+  return movedAway ? -1 : numberInA;
+}
 
 void buildCodeIndex(const MachineProfile& profile, CodeIndex& out) {
   out = CodeIndex{};
@@ -420,6 +442,33 @@ void buildCodeIndex(const MachineProfile& profile, CodeIndex& out) {
     copy.number = r.number;
     g[static_cast<std::size_t>(r.number)] = &copy;
   }
+  // Names and examples speak the system's numbers ("G33 Z-25. F1.5"): every row
+  // whose texts name a renamed code gets a copy. Rows only B and C have are
+  // written in their own numbers already.
+  const auto own = [](const CodeInfo* row) {
+    for (const CodeInfo& s : kSystemOnly)
+      if (s.number == row->number && s.action == row->action) return true;
+    return false;
+  };
+  for (auto& letterRows : out.rows) {
+    for (const CodeInfo*& row : letterRows) {
+      if (!row || own(row)) continue;
+      std::string_view* fields[4] = {};
+      CodeInfo copy = *row;
+      fields[0] = &copy.nameEn;
+      fields[1] = &copy.nameTh;
+      fields[2] = &copy.exampleEn;
+      fields[3] = &copy.exampleTh;
+      bool changed = false;
+      for (std::string_view* f : fields) {
+        std::string text = inSystemNumbers(*f, profile.system);
+        if (text == *f) continue;
+        *f = out.texts.emplace_back(std::move(text));
+        changed = true;
+      }
+      if (changed) row = &out.renamed.emplace_back(copy);
+    }
+  }
 }
 
 }  // namespace detail
@@ -431,15 +480,46 @@ std::span<const CodeInfo> systemOnlyRows() { return kSystemOnly; }
 bool CodeInfo::in(Dialect d) const { return (dialects & dialectBit(machineProfile(d).family)) != 0; }
 
 int numberInSystem(char letter, int numberInA, Dialect dialect) {
-  const MachineProfile& p = machineProfile(dialect);
-  if (letter != 'G' || p.system == GcodeSystem::A) return numberInA;
-  bool movedAway = false;
-  for (const SystemRename& r : kRenames) {
-    if (r.system != p.system) continue;
-    if (r.numberInA == numberInA) return r.number;
-    if (r.number == numberInA) movedAway = true;  // the number means another code there
+  if (letter != 'G') return numberInA;
+  return detail::numberInSystemOf(numberInA, machineProfile(dialect).system);
+}
+
+std::string inSystemNumbers(std::string_view text, Dialect dialect) {
+  return detail::inSystemNumbers(text, machineProfile(dialect).system);
+}
+
+namespace detail {
+
+std::string inSystemNumbers(std::string_view text, GcodeSystem system) {
+  std::string out;
+  out.reserve(text.size());
+  const auto isDigit = [](char c) { return c >= '0' && c <= '9'; };
+  const auto isLetter = [](char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); };
+  for (std::size_t i = 0; i < text.size();) {
+    std::size_t end = i + 1;
+    while (end < text.size() && isDigit(text[end])) ++end;
+    const bool word = text[i] == 'G' && end > i + 1 && end - i <= 3 && (i == 0 || (!isLetter(text[i - 1]) && !isDigit(text[i - 1]))) &&
+                      (end == text.size() || text[end] != '.');
+    if (!word) {
+      out += text[i++];
+      continue;
+    }
+    const int inA = std::stoi(std::string(text.substr(i + 1, end - i - 1)));
+    const int inSystem = numberInSystemOf(inA, system);
+    out += inSystem >= 0 && inSystem != inA ? fmt::format("G{:02}", inSystem) : std::string(text.substr(i, end - i));
+    i = end;
   }
-  return movedAway ? -1 : numberInA;
+  return out;
+}
+
+}  // namespace detail
+
+int numberInA(char letter, int number, Dialect dialect) {
+  const MachineProfile& p = machineProfile(dialect);
+  if (letter != 'G' || p.system == GcodeSystem::A) return number;
+  for (const SystemRename& r : kRenames)
+    if (r.system == p.system && r.number == number) return r.numberInA;
+  return number;
 }
 
 char wordKind(const CodeInfo& row, char letter) {
@@ -483,6 +563,7 @@ std::string_view modalGroupNumber(ModalGroup group) {
     case ModalGroup::CannedCycle: return "10";
     case ModalGroup::MacroModal: return "12";
     case ModalGroup::Distance: return "03";
+    case ModalGroup::ReturnLevel: return "11";
     case ModalGroup::WorkOffset: return "14";
     case ModalGroup::Plane: return "16";
     case ModalGroup::MSpindle: return "M03/M04/M05";

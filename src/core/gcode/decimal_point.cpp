@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "diagnostic_codes.h"
+#include "klueng/core/gcode/code_table.h"
 
 namespace klueng::core::gcode {
 
@@ -25,11 +26,18 @@ constexpr double kSmallestCycleSettingMm = 0.01;
 
 bool isCode(const Word& w, char letter) { return w.letter == letter && w.expr < 0 && !w.hasDecimalPoint; }
 
-std::optional<InputUnits> unitsOf(const Block& b) {
+// The row of a G word without a macro value or a decimal point, if the dialect has one.
+const CodeInfo* gRow(const Word& w, Dialect dialect) {
+  return isCode(w, 'G') ? findCode('G', w.code(), dialect) : nullptr;
+}
+
+std::optional<InputUnits> unitsOf(const Block& b, Dialect dialect) {
   std::optional<InputUnits> units;
   for (const Word* w : b.all('G'))
-    if (isCode(*w, 'G') && (w->code() == 20 || w->code() == 21))
-      units = w->code() == 20 ? InputUnits::Inch : InputUnits::Millimetre;
+    if (const CodeInfo* row = gRow(*w, dialect)) {
+      if (row->action == CodeAction::Inch) units = InputUnits::Inch;
+      if (row->action == CodeAction::Metric) units = InputUnits::Millimetre;
+    }
   return units;
 }
 
@@ -41,15 +49,27 @@ struct BlockKind {
   bool rIsCount = false;         // G73's first block: R is the number of passes
 };
 
-BlockKind kindOf(const Block& b) {
+BlockKind kindOf(const Block& b, Dialect dialect) {
   BlockKind k;
   for (const Word* w : b.all('G')) {
-    if (!isCode(*w, 'G')) continue;
-    const int c = w->code();
-    if (c == 65 || c == 66) k.passedAsWritten = true;
-    if (c == 4) k.dwell = true;
-    if (c >= 70 && c <= 76) k.cycle = true;
-    if (c == 73 && !b.has('P')) k.rIsCount = true;
+    const CodeInfo* row = gRow(*w, dialect);
+    if (!row) continue;
+    switch (row->action) {
+      case CodeAction::MacroCall:
+      case CodeAction::MacroModalCall: k.passedAsWritten = true; break;
+      case CodeAction::Dwell: k.dwell = true; break;
+      case CodeAction::PatternRepeating:
+        k.cycle = true;
+        if (!b.has('P')) k.rIsCount = true;
+        break;
+      case CodeAction::Finishing:
+      case CodeAction::TurnRoughing:
+      case CodeAction::FaceRoughing:
+      case CodeAction::FacePecking:
+      case CodeAction::Grooving:
+      case CodeAction::ThreadCutting: k.cycle = true; break;
+      default: break;
+    }
   }
   return k;
 }
@@ -78,20 +98,20 @@ std::string clueLengthText(const PointClue& clue, bool increments) {
   return fmt::format("{:g} {}", clue.wholeMm / perUnit, unit);
 }
 
-InputUnits programInputUnits(const Program& program, InputUnits powerOnUnits) {
+InputUnits programInputUnits(const Program& program, InputUnits powerOnUnits, Dialect dialect) {
   InputUnits units = powerOnUnits;
   for (const Block& b : program.blocks)
     if (b.file == 0 && b.mayHave('G'))
-      if (const auto u = unitsOf(b)) units = *u;
+      if (const auto u = unitsOf(b, dialect)) units = *u;
   return units;
 }
 
-PointEvidence weighDecimalPoints(const Program& program, InputUnits powerOnUnits) {
+PointEvidence weighDecimalPoints(const Program& program, InputUnits powerOnUnits, Dialect dialect) {
   PointEvidence out;
   InputUnits units = powerOnUnits;
   for (const Block& b : program.blocks) {
-    if (auto u = unitsOf(b)) units = *u;
-    const BlockKind kind = kindOf(b);
+    if (auto u = unitsOf(b, dialect)) units = *u;
+    const BlockKind kind = kindOf(b, dialect);
     if (kind.dwell) continue;
     forEachPointlessLength(b, kind, [&](std::size_t, const Word& w) {
       if (w.value == 0.0) return;  // zero reads the same both ways
@@ -110,11 +130,11 @@ PointEvidence weighDecimalPoints(const Program& program, InputUnits powerOnUnits
   return out;
 }
 
-void readLengthsInIncrements(Program& program, InputUnits powerOnUnits) {
+void readLengthsInIncrements(Program& program, InputUnits powerOnUnits, Dialect dialect) {
   InputUnits units = powerOnUnits;
   for (Block& b : program.blocks) {
-    if (auto u = unitsOf(b)) units = *u;
-    const BlockKind kind = kindOf(b);
+    if (auto u = unitsOf(b, dialect)) units = *u;
+    const BlockKind kind = kindOf(b, dialect);
     std::vector<std::size_t> pointless;
     forEachPointlessLength(b, kind, [&](std::size_t i, const Word&) { pointless.push_back(i); });
     // A dwell's X (or U) is a time: 0.001 s in mm and inch alike (Fanuc 0i-TF, G04 dwell: IS-B).

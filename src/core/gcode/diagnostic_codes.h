@@ -46,6 +46,7 @@ inline constexpr const char* kBlanksInWord = "E135";          // {0}=the word wi
 inline constexpr const char* kLetterOForZero = "E136";        // {0}=word as written {1}=the word meant
 inline constexpr const char* kCommaForPoint = "E137";         // {0}=word as written {1}=the word meant
 inline constexpr const char* kTextLine = "E138";              // {0}=the text (at most 20 characters)
+inline constexpr const char* kSingleCycleWithoutEnd = "E140";  // {0}=the cycle's G word
 inline constexpr const char* kTooManyDiagnostics = "E199";  // {0}=limit
 
 // E2nn block rule nn of SPEC 5 (E213, stock size, belongs to the io module)

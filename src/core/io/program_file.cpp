@@ -168,6 +168,140 @@ void hintBrokenHeader(const std::vector<std::string_view>& lines, const std::str
   }
 }
 
+
+// ---- the machine a program names (issue 27) ----
+
+// One comment of a head line: its byte range in the line and its text.
+struct HeadComment {
+  std::size_t begin = 0, end = 0;  // [begin, end) in the line, the brackets or ';' included
+  std::string_view text;
+};
+
+char upperAscii(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
+
+// A line of a program's head: blank, '%', a comment alone, or an O (or ':')
+// program number with an optional comment. Its comment, if any.
+bool headLine(std::string_view line, std::optional<HeadComment>& comment, bool& programStart) {
+  comment.reset();
+  const std::string_view s = detail::trim(line);
+  programStart = false;
+  if (s.empty()) return true;
+  const std::size_t at = static_cast<std::size_t>(s.data() - line.data());
+  std::size_t rest = 0;  // where a comment may start, in s
+  if (s.front() == '%') {
+    programStart = true;
+    rest = 1;
+  } else if ((upperAscii(s.front()) == 'O' || s.front() == ':') && s.size() > 1 && isAsciiDigit(s[1])) {
+    programStart = true;
+    rest = 1;
+    while (rest < s.size() && isAsciiDigit(s[rest])) ++rest;
+  }
+  while (rest < s.size() && (s[rest] == ' ' || s[rest] == '\t')) ++rest;
+  if (rest == s.size()) return true;
+  if (s[rest] == ';') {
+    comment = HeadComment{at + rest, line.size(), s.substr(rest + 1)};
+    return true;
+  }
+  if (s[rest] != '(') return false;
+  const std::size_t close = s.rfind(')');
+  if (close == std::string_view::npos || close < rest || close + 1 != s.size()) return false;
+  comment = HeadComment{at + rest, at + close + 1, s.substr(rest + 1, close - rest - 1)};
+  return true;
+}
+
+// "MACHINE: romi-gl240m" -> the id and its offset in `text`; nullopt for any other comment.
+std::optional<std::pair<std::string_view, std::size_t>> machineComment(std::string_view text) {
+  const std::string_view t = detail::trim(text);
+  constexpr std::string_view kWord = "MACHINE";
+  if (t.size() <= kWord.size()) return std::nullopt;
+  for (std::size_t i = 0; i < kWord.size(); ++i)
+    if (upperAscii(t[i]) != kWord[i]) return std::nullopt;
+  std::size_t i = kWord.size();
+  if (t[i] != ':' && t[i] != '=' && t[i] != ' ' && t[i] != '\t') return std::nullopt;
+  while (i < t.size() && (t[i] == ':' || t[i] == '=' || t[i] == ' ' || t[i] == '\t')) ++i;
+  std::size_t end = i;
+  while (end < t.size() && t[end] != ' ' && t[end] != '\t') ++end;
+  if (end == i) return std::nullopt;
+  return std::pair{t.substr(i, end - i), static_cast<std::size_t>(t.data() - text.data()) + i};
+}
+
+struct MachineLineAt {
+  NamedMachine named;
+  std::size_t lineIndex = 0;
+  HeadComment comment;
+};
+
+std::optional<MachineLineAt> findMachineLine(const std::vector<std::string_view>& lines) {
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    std::optional<HeadComment> comment;
+    bool programStart = false;
+    if (!headLine(lines[i], comment, programStart)) break;
+    if (!comment) continue;
+    const auto id = machineComment(comment->text);
+    if (!id) continue;
+    const std::size_t offset = static_cast<std::size_t>(comment->text.data() - lines[i].data()) + id->second;
+    MachineLineAt at;
+    at.named = NamedMachine{std::string(id->first), static_cast<int>(i) + 1,
+                            utf8Length(lines[i].substr(0, offset)) + 1};
+    at.lineIndex = i;
+    at.comment = *comment;
+    return at;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<NamedMachine> machineNamedIn(std::string_view gcode) {
+  const std::optional<MachineLineAt> at = findMachineLine(detail::splitLines(gcode));
+  if (!at) return std::nullopt;
+  return at->named;
+}
+
+std::string withMachineNamed(std::string_view gcode, std::string_view id) {
+  const std::vector<std::string_view> lines = detail::splitLines(gcode);
+  const std::string comment = id.empty() ? std::string() : "(MACHINE: " + std::string(id) + ")";
+  const auto offsetOf = [&](std::size_t i) {
+    return i < lines.size() ? static_cast<std::size_t>(lines[i].data() - gcode.data()) : gcode.size();
+  };
+  if (const std::optional<MachineLineAt> at = findMachineLine(lines)) {
+    const std::size_t lineAt = offsetOf(at->lineIndex);
+    std::string line(lines[at->lineIndex]);
+    line.replace(at->comment.begin, at->comment.end - at->comment.begin, comment);
+    std::string out(gcode.substr(0, lineAt));
+    if (!detail::trim(line).empty()) {
+      // An O line keeps its number; a line of its own becomes the comment alone.
+      out += line;
+    } else {
+      // Taken out: the line and its line end go.
+      std::size_t next = lineAt + lines[at->lineIndex].size();
+      if (next < gcode.size() && gcode[next] == '\r') ++next;
+      if (next < gcode.size() && gcode[next] == '\n') ++next;
+      out += gcode.substr(next);
+      return out;
+    }
+    out += gcode.substr(lineAt + lines[at->lineIndex].size());
+    return out;
+  }
+  if (id.empty()) return std::string(gcode);
+  // After the head's '%' and O line: the program number stays the first block.
+  std::size_t insertAt = 0;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    std::optional<HeadComment> c;
+    bool programStart = false;
+    if (!headLine(lines[i], c, programStart)) break;
+    if (programStart) insertAt = i + 1;
+  }
+  const std::size_t at = offsetOf(insertAt);
+  std::string out(gcode.substr(0, at));
+  if (!out.empty() && out.back() != '\n') out += '\n';
+  out += comment;
+  out += '\n';
+  out += gcode.substr(at);
+  return out;
+}
+
+namespace {
 }  // namespace
 
 std::string stockSizeText(const JobHeader& h) {
@@ -270,9 +404,19 @@ ReadResult<ProgramFile> parseProgramFile(std::string_view bytes, const JobHeader
   std::string& code = file.gcode;
   const bool plainLf = text.find('\r') == std::string::npos &&
                        std::none_of(diags.begin(), diags.end(), [](const Diagnostic& d) { return d.code == codes::kLineTooLong; });
+  const auto nameMachine = [&file] {
+    // The machine is the program's own: never a default's.
+    file.header.machine.clear();
+    file.header.machineLine = 0;
+    if (const std::optional<NamedMachine> named = machineNamedIn(file.gcode)) {
+      file.header.machine = named->id;
+      file.header.machineLine = file.gcodeFirstLine + named->line - 1;
+    }
+  };
   if (plainLf) {
     if (firstCodeLine < lines.size())
       code.assign(text.substr(static_cast<std::size_t>(lines[firstCodeLine].data() - text.data())));
+    nameMachine();
     result.value = std::move(file);
     return result;
   }
@@ -280,6 +424,7 @@ ReadResult<ProgramFile> parseProgramFile(std::string_view bytes, const JobHeader
     code.append(lines[i]);
     if (i + 1 < lines.size() || detail::endsWithLineBreak(text)) code.push_back('\n');
   }
+  nameMachine();
   result.value = std::move(file);
   return result;
 }

@@ -87,6 +87,7 @@ struct CycleInput {
   bool blockSkip = false;                 // '/' blocks of the profile skipped
   const gcode::MachineProfile* profile = nullptr;  // one-block forms, drilling: settings, G04 P rule
   bool threadChamfer = true;              // Haas M23/M24 state (G76 one-block pull-out)
+  bool returnToRPoint = false;            // G99 (return level) of G-code systems B and C
 };
 
 struct Expansion {
@@ -116,6 +117,8 @@ struct DrillWords {
   double dwell = 0.0;         // P: seconds at the bottom
   double clearance = 0.0;     // G83: rapid down to this much above the last peck
   int repeats = 1;            // Fanuc K, Haas L
+  bool returnToRPoint = false;  // G99 of G-code systems B and C; else back to the initial level
+  double initialLevel = 0.0;    // Z where the cycle was first given (G98 returns there)
 };
 
 // Reads a drilling block into `words` (words not in the block keep their

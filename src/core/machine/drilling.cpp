@@ -31,7 +31,9 @@ std::optional<CycleAlarm> readDrillWords(const gcode::CodeInfo& code, const Cycl
     w.peck = w.firstPeck = w.reduce = w.minPeck = w.dwell = 0.0;
     w.repeats = 1;
     w.hole = in.start;
+    w.initialLevel = in.start.x();
   }
+  w.returnToRPoint = in.returnToRPoint;  // the return level in force at each hole
   w.clearance = inch ? profile.cycles.peckClearInch * u : profile.cycles.peckClearMm;
   if (!b.has('Z') && !b.has('W') && fresh) return alarmAt(codes::kCycleNeedsPositive, in.gWord, b, {name, "Z"});
   const bool plane = profile.cycles.drillR == gcode::DrillR::Plane;
@@ -98,14 +100,17 @@ std::vector<Step> drill(const DrillWords& w, const Vec2& start) {
     levels.push_back(depth);
   }
   Vec2 pos = start;
+  // Over the hole at the level the tool is at: the initial level, or the R point
+  // after a hole under G99 (systems B and C).
   const Vec2 overHole(start.x(), w.hole.y());
+  const Vec2 initial(w.initialLevel, w.hole.y());
   const Vec2 rPoint(w.rPlane, w.hole.y());
   auto rapidTo = [&](const Vec2& p) {
     if ((p - pos).norm() > kEps) steps.push_back(rapid(pos, p));
     pos = p;
   };
   for (int n = 0; n < w.repeats; ++n) {
-    rapidTo(overHole);
+    if (n == 0) rapidTo(overHole);  // a repeat starts where the last one returned
     rapidTo(rPoint);
     double reached = 0.0;
     for (std::size_t i = 0; i < levels.size(); ++i) {
@@ -127,7 +132,9 @@ std::vector<Step> drill(const DrillWords& w, const Vec2& start) {
       d.seconds = w.dwell;
       steps.push_back(d);
     }
-    rapidTo(overHole);  // G-code system A (Fanuc) and Haas: back to the initial level
+    // Back to the initial level (G-code system A, Haas, G98 of systems B and C), or
+    // only to the R point under G99 of systems B and C: the next hole starts from there.
+    rapidTo(w.returnToRPoint ? rPoint : initial);
   }
   return steps;
 }

@@ -65,6 +65,8 @@ std::optional<Phrase> actionPhrase(CodeAction a) {
     case CodeAction::ThreadCutting: return Phrase{"multi-pass threading cycle: the thread in passes of less and less depth", "วัฏจักรกลึงเกลียวหลายเที่ยว: ป้อนลึกลดลงทุกเที่ยว"};
     case CodeAction::Drilling: return Phrase{"drilling cycle: drill to the depth and rapid out", "วัฏจักรเจาะรู: เจาะถึงความลึกแล้วถอยออกเร็ว"};
     case CodeAction::SpotDrilling: return Phrase{"drilling cycle with a dwell at the bottom", "วัฏจักรเจาะรูและหยุดรอที่ก้นรู"};
+    case CodeAction::ReturnToInitialLevel: return Phrase{"drilling cycles return to the initial level", "วัฏจักรเจาะรูถอยกลับถึงระดับเริ่มต้น"};
+    case CodeAction::ReturnToRPoint: return Phrase{"drilling cycles return to the R point", "วัฏจักรเจาะรูถอยกลับถึงจุด R"};
     case CodeAction::PeckDrilling: return Phrase{"peck drilling cycle: drill in pecks, back out to clear the chips", "วัฏจักรเจาะจิก: เจาะทีละช่วงแล้วถอยออกเพื่อคายเศษ"};
     case CodeAction::SpindleCw: return Phrase{"start the spindle clockwise", "เปิดเพลาหมุนตามเข็มนาฬิกา"};
     case CodeAction::SpindleCcw: return Phrase{"start the spindle counter-clockwise", "เปิดเพลาหมุนทวนเข็มนาฬิกา"};
@@ -327,7 +329,7 @@ std::string explainLineText(std::string_view lineText, int fileLine, const State
   const gcode::InputUnits units = after ? (after->modal.units == Units::Inch ? gcode::InputUnits::Inch
                                                                              : gcode::InputUnits::Millimetre)
                                         : gcode::machineProfile(dialect).powerOnUnits;
-  if (lengthsInIncrements) gcode::readLengthsInIncrements(program, units);
+  if (lengthsInIncrements) gcode::readLengthsInIncrements(program, units, dialect);
   return Explainer(program.blocks.front(), after, dialect, lang, lineText).run();
 }
 

@@ -166,16 +166,21 @@ std::vector<Segment> workedExamplePath(char letter, int number, gcode::Dialect d
 std::string workedExample(char letter, int number, gcode::Dialect dialect) {
   const gcode::CodeInfo* row = gcode::findCode(letter, number, dialect);
   if (!row) return {};
+  // The examples are written in system A's numbers for the machine's control
+  // family; a machine in system B or C reads them in its own (G32 -> G33).
+  const Dialect family = gcode::machineProfile(dialect).family;
+  const auto own = [dialect](std::string_view text) { return gcode::inSystemNumbers(text, dialect); };
   std::string text;
-  if (const Example* e = handWritten(letter, number, dialect)) {
-    if (e->body.starts_with("O")) return std::string(e->body);
-    return std::string(kStart) + std::string(e->body) + std::string(kEnd);
+  const int inA = gcode::numberInA(letter, number, dialect);
+  if (const Example* e = inA >= 0 ? handWritten(letter, inA, family) : nullptr) {
+    if (e->body.starts_with("O")) return own(e->body);
+    return own(kStart) + own(e->body) + own(kEnd);
   }
-  const std::string line = exampleLine(*row);
-  text = std::string(kStart);
+  const std::string line = exampleLine(*row);  // the row's own example: the machine's numbers already
+  text = own(kStart);
   switch (slotOf(*row)) {
     case Slot::Running:
-      text += line + "\n" + std::string(kEnd);
+      text += line + "\n" + own(kEnd);
       break;
     case Slot::Stopped:
       text += "G00 X100. Z100. M09\nM05\n" + line + "\nM30\n";

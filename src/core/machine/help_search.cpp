@@ -26,6 +26,10 @@ std::string_view keywords(CodeAction a) {
     case CodeAction::TurnRoughing: return "roughing rough turning stock removal od id กลึงปอกหยาบ กลึงหยาบ";
     case CodeAction::Finishing: return "finishing finish pass contour กลึงละเอียด กลึงเก็บผิว";
     case CodeAction::PatternRepeating: return "pattern repeating casting forging profile กลึงตามแบบ งานหล่อ";
+    case CodeAction::ReturnToInitialLevel: case CodeAction::ReturnToRPoint:
+      return "drilling return level initial r point เจาะ ระดับถอยกลับ จุด R";
+    case CodeAction::Absolute: case CodeAction::Incremental:
+      return "absolute incremental distance mode สัมบูรณ์ สัมพัทธ์";
     case CodeAction::FacePecking: case CodeAction::Drilling: case CodeAction::SpotDrilling: case CodeAction::PeckDrilling:
       return "drilling drill hole peck centre เจาะ เจาะรู เจาะจิก";
     case CodeAction::Grooving: return "grooving groove parting off undercut กลึงร่อง ร่อง ตัดขาด";
@@ -80,8 +84,19 @@ std::vector<HelpHit> searchHelp(std::string_view query, gcode::Dialect dialect) 
   }
   std::vector<HelpHit> hits;
   if (terms.empty()) return hits;
-  for (const gcode::CodeInfo& row : gcode::codeTable()) {
-    if (!row.in(dialect)) continue;
+  // The machine's own rows, under its G-code system's numbers (G33 in system B).
+  std::vector<const gcode::CodeInfo*> rows;
+  for (const gcode::CodeInfo& a : gcode::codeTable()) {
+    if (!a.in(dialect)) continue;
+    if (const gcode::CodeInfo* own = gcode::findCode(a.letter, gcode::numberInSystem(a.letter, a.number, dialect), dialect);
+        own && own->action == a.action)
+      rows.push_back(own);
+  }
+  for (const gcode::CodeInfo& s : gcode::systemOnlyRows())
+    if (const gcode::CodeInfo* own = gcode::findCode(s.letter, s.number, dialect); own && own->action == s.action)
+      rows.push_back(own);
+  for (const gcode::CodeInfo* ownRow : rows) {
+    const gcode::CodeInfo& row = *ownRow;
     const std::string code = folded(codeName(row));
     const std::string names = folded(std::string(row.nameEn) + " " + std::string(row.nameTh));
     const std::string rest = folded(std::string(row.exampleEn) + " " + std::string(row.exampleTh) + " " +

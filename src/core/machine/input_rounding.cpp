@@ -4,18 +4,23 @@
 #include <cmath>
 #include <string_view>
 
+#include "klueng/core/gcode/code_table.h"
+
 namespace klueng::core::machine {
 
 namespace {
 
 constexpr std::string_view kRoundedLetters = "XZUWIKR";
 
-// G20/G21 of a block, if it has one.
-std::optional<gcode::InputUnits> unitsOf(const gcode::Block& b) {
+// The inch/metric code of a block, if it has one, by its action (G70/G71 in G-code system C).
+std::optional<gcode::InputUnits> roundingUnitsOf(const gcode::Block& b, gcode::Dialect dialect) {
   std::optional<gcode::InputUnits> units;
-  for (const gcode::Word& w : b.words)
-    if (w.letter == 'G' && !w.hasDecimalPoint && (w.code() == 20 || w.code() == 21))
-      units = w.code() == 20 ? gcode::InputUnits::Inch : gcode::InputUnits::Millimetre;
+  for (const gcode::Word& w : b.words) {
+    if (w.letter != 'G' || w.hasDecimalPoint || w.expr >= 0) continue;
+    const gcode::CodeInfo* row = gcode::findCode('G', w.code(), dialect);
+    if (row && row->action == gcode::CodeAction::Inch) units = gcode::InputUnits::Inch;
+    if (row && row->action == gcode::CodeAction::Metric) units = gcode::InputUnits::Millimetre;
+  }
   return units;
 }
 
@@ -33,7 +38,7 @@ std::optional<gcode::Program> roundToIncrements(const gcode::Program& program, c
   gcode::InputUnits units = powerOnUnits;
   for (std::size_t i = 0; i < program.blocks.size(); ++i) {
     const gcode::Block& b = program.blocks[i];
-    if (auto u = unitsOf(b)) units = *u;  // units apply to their whole block
+    if (auto u = roundingUnitsOf(b, profile.dialect)) units = *u;  // units apply to their whole block
     const int decimals = units == gcode::InputUnits::Inch ? profile.decimalsInch : profile.decimalsMm;
     for (std::size_t j = 0; j < b.words.size(); ++j) {
       const gcode::Word& w = b.words[j];

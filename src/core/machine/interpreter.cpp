@@ -179,6 +179,7 @@ bool Interpreter::executeBlock() {
         break;
       case ModalGroup::WorkOffset: modal_.workCoordinate = c.info->number; break;  // G54..: all zero
       case ModalGroup::Distance: break;  // readDistanceMode
+      case ModalGroup::ReturnLevel: modal_.returnToRPoint = a == CodeAction::ReturnToRPoint; break;
       case ModalGroup::CannedCycle:
         if (a == CodeAction::CycleCancel) drillCycle_ = nullptr;  // G80: drilling cycle cancel
         else cycleG = &c;              // G70-G76, G81-G83

@@ -48,6 +48,7 @@ cycles::CycleInput Interpreter::cycleInput(const Word* g) const {
   in.blockSkip = options_.blockSkip;
   in.profile = &profile_;
   in.threadChamfer = mach_.threadChamfer;
+  in.returnToRPoint = modal_.returnToRPoint;
   return in;
 }
 

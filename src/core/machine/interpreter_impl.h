@@ -232,6 +232,7 @@ class Interpreter final : public gcode::MacroVariables {
   void noteStack();
   void setArguments(const gcode::Block& b, std::array<gcode::MacroValue, 33>& locals) const;
   int modalCode(int group) const;
+  int modalCodeInA(int group) const;  // as system A numbers it
   void matchLoops();
   bool flowAlarm(const char* code, const SourceRange& at, std::vector<std::string> args);
   void notice(Severity severity, const char* code, const SourceRange& at, std::vector<std::string> args);

@@ -13,8 +13,18 @@ namespace klueng::core::machine::detail {
 
 using gcode::MacroValue;
 
-// The modal G code of a Fanuc group number (#4001-#4022).
+// The modal G code of a Fanuc group number (#4001-#4022), numbered as the
+// machine's G-code system numbers it (G33, G95 in system B).
 int Interpreter::modalCode(int group) const {
+  // A cycle's row already carries its number in the machine's system.
+  if (group == 1 && singleCycle_) return singleCycle_->number;
+  if (group == 10 && drillCycle_) return drillCycle_->number;
+  const int code = modalCodeInA(group);
+  const int inSystem = code > 0 ? gcode::numberInSystem('G', code, profile_.dialect) : code;
+  return inSystem >= 0 ? inSystem : code;
+}
+
+int Interpreter::modalCodeInA(int group) const {
   switch (group) {
     case 1:
       if (singleCycle_) return singleCycle_->number;

@@ -32,7 +32,7 @@ CompiledJob compileJob(const io::ProgramFile& file, const MachineSetup& setup, c
   // Lengths without a decimal point as the setup reads them (decided by the check: point_reading.h).
   if (!setup.machine.calculatorInput)
     gcode::readLengthsInIncrements(
-        job.program, gcode::powerOnUnitsOf(options.run.dialect, options.run.powerOnUnits));
+        job.program, gcode::powerOnUnitsOf(options.run.dialect, options.run.powerOnUnits), options.run.dialect);
   gcode::CheckOptions check;
   check.dialect = options.run.dialect;
   check.powerOnUnits = options.run.powerOnUnits;

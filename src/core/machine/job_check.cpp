@@ -51,7 +51,7 @@ JobCheck checkJob(std::string_view gcode, int firstLine, gcode::CheckOptions opt
   const bool plain = firstLine <= 1;
   PointReading reading =
       readDecimalPoints(program, plain, chosenCalculatorInput, setup.machine.calculatorInput,
-                        gcode::powerOnUnitsOf(options.dialect, options.powerOnUnits));
+                        gcode::powerOnUnitsOf(options.dialect, options.powerOnUnits), options.dialect);
   MachineSetup readSetup = setup;
   readSetup.machine.calculatorInput = reading.calculatorInput;
   // The program's tools decide which T words have a tool (one meaning: job.h);
@@ -89,7 +89,7 @@ JobCheck checkJob(std::string_view gcode, int firstLine, gcode::CheckOptions opt
   }
   result.diagnostics = std::move(own);
   // The units the program speaks, before any run (issue 28 item 4: View ▸ Units shown ▸ Auto).
-  result.units = gcode::programInputUnits(program, gcode::powerOnUnitsOf(options.dialect, options.powerOnUnits)) ==
+  result.units = gcode::programInputUnits(program, gcode::powerOnUnitsOf(options.dialect, options.powerOnUnits), options.dialect) ==
                          gcode::InputUnits::Inch
                      ? DisplayUnits::Inch
                      : DisplayUnits::Mm;
@@ -107,7 +107,7 @@ StockInference inferStockFromText(std::string_view gcode, int firstLine, const M
   gcode::Program program = gcode::parse(gcode, firstLine);
   const PointReading reading =
       readDecimalPoints(program, firstLine <= 1, chosenCalculatorInput, setup.machine.calculatorInput,
-                        gcode::powerOnUnitsOf(options.dialect, options.powerOnUnits));
+                        gcode::powerOnUnitsOf(options.dialect, options.powerOnUnits), options.dialect);
   if (reading.calculatorInput == setup.machine.calculatorInput) return inferStock(program, setup, options);
   MachineSetup readSetup = setup;
   readSetup.machine.calculatorInput = reading.calculatorInput;

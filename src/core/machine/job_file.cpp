@@ -66,7 +66,7 @@ JobFile loadJobFile(const std::string& path, const MachineSetup& setup, const Jo
   PointReading reading = readDecimalPoints(
       program, file.plainGcode, request.calculatorInput ? request.calculatorInput : file.header.calculatorInput,
       setup.machine.calculatorInput,
-      gcode::powerOnUnitsOf(request.run.dialect, request.run.powerOnUnits));
+      gcode::powerOnUnitsOf(request.run.dialect, request.run.powerOnUnits), request.run.dialect);
   readSetup.machine.calculatorInput = reading.calculatorInput;
   job.setup = readSetup;
 

@@ -6,6 +6,7 @@
 
 #include "klueng/core/diagnostic_codes.h"
 #include "klueng/core/io/file_read.h"
+#include "klueng/core/io/text_encoding.h"
 
 namespace klueng::core::machine {
 
@@ -115,6 +116,21 @@ std::optional<gcode::Dialect> resolveMachine(const std::string& nameOrFile, std:
   for (Diagnostic& diag : r.diagnostics) diagnostics.push_back({nameOrFile, std::move(diag)});
   if (!r.machine) return std::nullopt;
   return gcode::registerMachine(std::move(*r.machine));
+}
+
+std::optional<gcode::Dialect> machineOfProgram(const io::ProgramFile& file, std::vector<Diagnostic>& warnings) {
+  const std::optional<io::NamedMachine> named = io::machineNamedIn(file.gcode);
+  if (!named) return std::nullopt;
+  gcode::Dialect d{};
+  if (gcode::parseDialectId(named->id, d)) return d;
+  std::string ids;
+  for (const gcode::MachineProfile* p : gcode::machineProfiles()) ids += (ids.empty() ? "" : ", ") + std::string(p->id);
+  Diagnostic w{Severity::Warning, codes::kProgramMachineUnknown, {}, {named->id, ids}};
+  w.range.line = file.gcodeFirstLine + named->line - 1;
+  w.range.column = named->column;
+  w.range.length = io::utf8Length(named->id);
+  warnings.push_back(std::move(w));
+  return std::nullopt;
 }
 
 io::MachineConfig withMachineKeys(const io::MachineConfig& setup, const gcode::MachineProfile& machine) {

@@ -22,9 +22,9 @@ Diagnostic readingNote(const gcode::PointClue& clue, bool increments) {
 }  // namespace
 
 PointReading readDecimalPoints(gcode::Program& program, bool plainProgram, std::optional<bool> chosen,
-                               bool machineCalculatorInput, gcode::InputUnits powerOnUnits) {
+                               bool machineCalculatorInput, gcode::InputUnits powerOnUnits, gcode::Dialect dialect) {
   PointReading out;
-  const gcode::PointEvidence evidence = gcode::weighDecimalPoints(program, powerOnUnits);
+  const gcode::PointEvidence evidence = gcode::weighDecimalPoints(program, powerOnUnits, dialect);
   out.calculatorInput = chosen.value_or(machineCalculatorInput);
   if (!chosen && plainProgram) {
     const std::size_t increments = evidence.forIncrements.size();
@@ -39,7 +39,7 @@ PointReading readDecimalPoints(gcode::Program& program, bool plainProgram, std::
                                             whole < increments));
     }
   }
-  if (!out.calculatorInput) gcode::readLengthsInIncrements(program, powerOnUnits);
+  if (!out.calculatorInput) gcode::readLengthsInIncrements(program, powerOnUnits, dialect);
   for (Diagnostic& d : gcode::decimalPointWarnings(evidence, !out.calculatorInput))
     out.diagnostics.push_back(std::move(d));
   return out;

@@ -16,6 +16,7 @@
 #include "klueng/core/cut/part_features.h"
 #include "klueng/core/design/part_design.h"
 #include "klueng/core/gcode/checker.h"
+#include "klueng/core/gcode/machine_profile.h"
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/machine/job.h"
@@ -155,6 +156,52 @@ TEST(Generator, AnM30ThreadIsCutInEveryDialect) {
   part.threads = {{0.0, 10.0, 8.0}};
   EXPECT_FALSE(generateProgram(part, options, &why));
   EXPECT_EQ(why.at(0).code, "E511");
+}
+
+// Issue 27: a machine in G-code system B gets its own numbers through the code
+// table's renamed rows (G92 S for the clamp, G95 for feed per revolution), checks
+// clean on that machine and cuts the same part as the system-A program, to 0.01 mm.
+TEST(Generator, ASystemBMachineGetsItsOwnNumbersAndTheSamePart) {
+  const machine::MachineSetup setup = machine::loadMachineSetup(KLUENG_SOURCE_DIR).setup;
+  gcode::Dialect romi{};
+  ASSERT_TRUE(gcode::parseDialectId("romi-gl240m", romi));
+  PartDesign part = stepShaft();
+  part.threads = {{0.0, 12.0, 1.5}};
+  part.grooves = {{-26.0, 5.0, 34.0}};
+  const auto a = generateProgram(part, optionsFor(gcode::Dialect::Fanuc, setup));
+  const auto b = generateProgram(part, optionsFor(romi, setup));
+  ASSERT_TRUE(a && b);
+  EXPECT_NE(a->text.find(" G50 S"), std::string::npos);
+  EXPECT_NE(b->text.find(" G92 S"), std::string::npos) << b->text;
+  EXPECT_EQ(b->text.find("G50"), std::string::npos) << b->text;
+  EXPECT_NE(b->text.find(" G95"), std::string::npos) << b->text;
+  EXPECT_EQ(b->text.find("G99"), std::string::npos) << b->text;
+  EXPECT_NE(b->text.find(" G76 "), std::string::npos);  // G70-G76 keep their numbers in system B
+  // The program names its machine at its head.
+  EXPECT_EQ(io::parseProgramFile(b->text).value->header.machine, "romi-gl240m");
+  EXPECT_EQ(io::parseProgramFile(a->text).value->header.machine, "");
+  // Read as system A, the system-B program is refused (G95 is no system-A code).
+  gcode::CheckOptions asA;
+  asA.dialect = gcode::Dialect::Fanuc;
+  const auto asAProgram = io::parseProgramFile(b->text);
+  EXPECT_TRUE(hasErrors(gcode::check(gcode::parse(asAProgram.value->gcode, asAProgram.value->gcodeFirstLine), asA)));
+
+  const Turned ta = turn(a->text, gcode::Dialect::Fanuc, setup);
+  const Turned tb = turn(b->text, romi, setup);
+  ASSERT_TRUE(ta.sim && tb.sim);
+  EXPECT_FALSE(tb.sim->stoppingAlarm().has_value()) << b->text;
+  const cut::PartFeatures fa = cut::partFeatures(ta.sim->stock());
+  const cut::PartFeatures fb = cut::partFeatures(tb.sim->stock());
+  ASSERT_EQ(fa.outside.size(), fb.outside.size());
+  ASSERT_GE(fa.outside.size(), 6u);
+  for (std::size_t i = 0; i < fa.outside.size(); ++i) {
+    EXPECT_EQ(cut::featureLabel(fa.outside[i], Lang::En), cut::featureLabel(fb.outside[i], Lang::En));
+    EXPECT_NEAR(fa.outside[i].diameter, fb.outside[i].diameter, 0.01) << i;
+    EXPECT_NEAR(fa.outside[i].zLeft, fb.outside[i].zLeft, 0.01) << i;
+    EXPECT_NEAR(fa.outside[i].zRight, fb.outside[i].zRight, 0.01) << i;
+  }
+  EXPECT_NE(find(fb, cut::FeatureKind::Thread, "M30×1.5"), nullptr);
+  EXPECT_DOUBLE_EQ(ta.job.timeline->cycleTime(), tb.job.timeline->cycleTime());
 }
 
 TEST(Generator, SpeedsComeFromTheTableAndTheSpindleIsClamped) {

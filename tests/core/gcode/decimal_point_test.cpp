@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "klueng/core/gcode/machine_file.h"
 #include "klueng/core/gcode/parser.h"
 
 namespace klueng::core::gcode {
@@ -22,7 +23,7 @@ TEST(DecimalPoint, IncrementsFollowTheUnitsInForceAtEachBlock) {
       "G02 X40. Z-5 R5000\n"
       "G20 G01 X1250 Z-.5 I25 K-5\n"
       "G04 X1500\n");
-  readLengthsInIncrements(p, InputUnits::Millimetre);
+  readLengthsInIncrements(p, InputUnits::Millimetre, Dialect::Fanuc);
   EXPECT_DOUBLE_EQ(wordAt(p, 0, 'X').value, 30.0);
   EXPECT_DOUBLE_EQ(wordAt(p, 0, 'Z').value, 2.0);
   EXPECT_DOUBLE_EQ(wordAt(p, 0, 'U').value, -0.5);
@@ -46,7 +47,7 @@ TEST(DecimalPoint, CodesCountsFeedsExpressionsAndMacroArgumentsKeepTheirValues) 
       "#1 = 30\n"
       "G01 X#1 Z-[#1] F2\n"
       "S1200 M03 T0101\n");
-  readLengthsInIncrements(p, InputUnits::Millimetre);
+  readLengthsInIncrements(p, InputUnits::Millimetre, Dialect::Fanuc);
   EXPECT_DOUBLE_EQ(wordAt(p, 0, 'U').value, 3.0);
   EXPECT_DOUBLE_EQ(wordAt(p, 0, 'R').value, 3.0);    // G73's first block: R is the number of passes
   EXPECT_DOUBLE_EQ(wordAt(p, 1, 'P').value, 10.0);
@@ -71,7 +72,7 @@ TEST(DecimalPoint, EvidenceNamesTheWordsOnlyOneReadingMakesSenseOf) {
       "G71 P10 Q20 U.02 W.005 F.012\n"
       "N10 G00 X1.0\n"
       "N20 X1.85\n");
-  const PointEvidence e = weighDecimalPoints(shop, InputUnits::Millimetre);
+  const PointEvidence e = weighDecimalPoints(shop, InputUnits::Millimetre, Dialect::Fanuc);
   ASSERT_EQ(e.forIncrements.size(), 2u);
   EXPECT_EQ(e.forIncrements[0].word, "U1250");
   EXPECT_EQ(e.forIncrements[0].range, (SourceRange{3, 5, 5}));
@@ -88,7 +89,7 @@ TEST(DecimalPoint, EvidenceNamesTheWordsOnlyOneReadingMakesSenseOf) {
       "N10 G00 X0\n"
       "G01 Z0 X300\n"
       "N20 X200 Z-150\n");
-  const PointEvidence s = weighDecimalPoints(student, InputUnits::Millimetre);
+  const PointEvidence s = weighDecimalPoints(student, InputUnits::Millimetre, Dialect::Fanuc);
   EXPECT_TRUE(s.forIncrements.empty());
   ASSERT_EQ(s.forWholeUnits.size(), 4u);
   EXPECT_EQ(s.forWholeUnits[0].word, "X52");
@@ -99,7 +100,7 @@ TEST(DecimalPoint, EvidenceNamesTheWordsOnlyOneReadingMakesSenseOf) {
 
 TEST(DecimalPoint, WarningsGiveTheOtherReadingAndTheWordToWrite) {
   const Program p = parse("G21 G00 X60 Z5.\nG71 U2000 R500\n");
-  const PointEvidence e = weighDecimalPoints(p, InputUnits::Millimetre);
+  const PointEvidence e = weighDecimalPoints(p, InputUnits::Millimetre, Dialect::Fanuc);
   const std::vector<Diagnostic> inc = decimalPointWarnings(e, true);
   ASSERT_EQ(inc.size(), 1u);
   EXPECT_EQ(inc[0].code, "W110");
@@ -111,6 +112,36 @@ TEST(DecimalPoint, WarningsGiveTheOtherReadingAndTheWordToWrite) {
   EXPECT_EQ(whole[0].code, "W111");
   EXPECT_EQ(whole[0].args, (std::vector<std::string>{"U2000", "2000 mm", "2.000 mm", "U2.000"}));
   EXPECT_EQ(whole[1].args, (std::vector<std::string>{"R500", "500 mm", "0.500 mm", "R0.500"}));
+}
+
+// Issue 27: in G-code system C the units are G70/G71 and the cycles G72-G78, so the
+// same program reads its pointless lengths as system A reads G20/G21 and G70-G76.
+TEST(DecimalPoint, SystemCFindsUnitsAndCyclesByTheirActions) {
+  const MachineFileRead read =
+      parseMachineFile("base = fanuc\nid = decimal-point-system-c\ngcode_system = C\n", "c.machine");
+  ASSERT_TRUE(read.machine.has_value());
+  const Dialect c = registerMachine(*read.machine);
+  Program p = parse(
+      "G70 G00 X1250 Z500\n"      // inch in system C: 0.0001 in
+      "G71 G00 X30000\n"          // metric: 0.001 mm
+      "G75 U3000 W1000 R3\n"      // system C's G73 pattern repeating: R the passes
+      "G73 U1500 R500\n");        // system C's G71 stock removal, first block
+  readLengthsInIncrements(p, InputUnits::Millimetre, c);
+  EXPECT_DOUBLE_EQ(wordAt(p, 0, 'X').value, 0.125);
+  EXPECT_DOUBLE_EQ(wordAt(p, 0, 'Z').value, 0.05);
+  EXPECT_DOUBLE_EQ(wordAt(p, 1, 'X').value, 30.0);
+  EXPECT_DOUBLE_EQ(wordAt(p, 2, 'U').value, 3.0);
+  EXPECT_DOUBLE_EQ(wordAt(p, 2, 'R').value, 3.0);
+  EXPECT_DOUBLE_EQ(wordAt(p, 3, 'U').value, 1.5);
+  EXPECT_DOUBLE_EQ(wordAt(p, 3, 'R').value, 0.5);
+  EXPECT_EQ(programInputUnits(parse("G70\nG00 X1.\n"), InputUnits::Millimetre, c), InputUnits::Inch);
+  // System A reads the same G70 as the finishing cycle: no units change.
+  EXPECT_EQ(programInputUnits(parse("G70\nG00 X1.\n"), InputUnits::Millimetre, Dialect::Fanuc),
+            InputUnits::Millimetre);
+  // A cycle's setting says "whole" in system C too: U1 is 0.001 mm in increments.
+  const PointEvidence e = weighDecimalPoints(parse("G71\nG73 U1 R1\n"), InputUnits::Millimetre, c);
+  ASSERT_EQ(e.forWholeUnits.size(), 2u);
+  EXPECT_EQ(e.forWholeUnits[0].word, "U1");
 }
 
 }  // namespace

@@ -141,7 +141,13 @@ TEST(GcodeSystems, SystemBRenamesRowsOntoTheSameActions) {
   EXPECT_EQ(action(71), CodeAction::TurnRoughing);
   EXPECT_EQ(findCode('G', 32, b), nullptr);
   EXPECT_EQ(findCode('G', 50, b), nullptr);
-  EXPECT_EQ(findCode('G', 98, b), nullptr);
+  // G98/G99 are the drilling cycles' return level in system B (issue 27), no longer the feed modes.
+  EXPECT_EQ(action(98), CodeAction::ReturnToInitialLevel);
+  EXPECT_EQ(action(99), CodeAction::ReturnToRPoint);
+  EXPECT_EQ(findCode('G', 98, b)->group, ModalGroup::ReturnLevel);
+  EXPECT_EQ(numberInA('G', 33, b), 32);
+  EXPECT_EQ(numberInA('G', 98, b), -1);
+  EXPECT_EQ(inSystemNumbers("G50 S2500 (G32 passes) G99 G90 X46. G32.5", b), "G92 S2500 (G33 passes) G95 G77 X46. G32.5");
   EXPECT_EQ(findCode('G', 33, b)->number, 33);  // messages say the number as written
   EXPECT_EQ(findCode('G', 90, b)->group, ModalGroup::Distance);
   EXPECT_EQ(numberInSystem('G', 32, b), 33);

@@ -503,5 +503,56 @@ TEST(ProgramFile, CrCrLfEndsOneLine) {
   EXPECT_EQ(p.blocks[1].line, 8);
 }
 
+// Issue 27: the machine a program names at its head, written by Job details.
+TEST(ProgramFile, MachineNamedAtTheHeadRoundTrips) {
+  const auto r = parseProgramFile(kHeader + "%\nO0027 (BUCHA)\n(machine: romi-gl240m)\nG90 G95 G21;\n%\n");
+  ASSERT_TRUE(r.ok()) << codes(r.diagnostics);
+  EXPECT_EQ(r.value->header.machine, "romi-gl240m");
+  EXPECT_EQ(r.value->header.machineLine, 9);  // 6 header lines, %, O0027, then the comment
+  const auto named = machineNamedIn(r.value->gcode);
+  ASSERT_TRUE(named.has_value());
+  EXPECT_EQ(named->line, 3);
+  EXPECT_EQ(named->column, 11);
+
+  // Job details picks another machine: the comment is rewritten in place, nothing else moves.
+  ProgramFile f = *r.value;
+  f.gcode = withMachineNamed(f.gcode, "fanuc");
+  EXPECT_EQ(f.gcode, "%\nO0027 (BUCHA)\n(MACHINE: fanuc)\nG90 G95 G21;\n%\n");
+  const auto again = parseProgramFile(formatProgramFile(f));
+  ASSERT_TRUE(again.ok());
+  EXPECT_EQ(again.value->header.machine, "fanuc");
+  EXPECT_EQ(again.value->header.project, "Step shaft");
+  EXPECT_DOUBLE_EQ(again.value->header.diameter, 50.0);
+
+  // And none: the line goes.
+  EXPECT_EQ(withMachineNamed(f.gcode, ""), "%\nO0027 (BUCHA)\nG90 G95 G21;\n%\n");
+}
+
+TEST(ProgramFile, MachineLineGoesAfterTheProgramNumber) {
+  EXPECT_EQ(withMachineNamed("%\nO0001\nG21 G99\nM30\n", "romi-gl240m"),
+            "%\nO0001\n(MACHINE: romi-gl240m)\nG21 G99\nM30\n");
+  EXPECT_EQ(withMachineNamed("G21 G99\nM30\n", "haas"), "(MACHINE: haas)\nG21 G99\nM30\n");
+  // On the O line's own comment it stays on that line.
+  EXPECT_EQ(withMachineNamed("O0001 (MACHINE: fanuc)\nG21\n", "haas"), "O0001 (MACHINE: haas)\nG21\n");
+  EXPECT_EQ(withMachineNamed("O0001 (MACHINE: fanuc)\nG21\n", ""), "O0001 \nG21\n");
+}
+
+TEST(ProgramFile, OnlyTheHeadNamesTheMachine) {
+  // A plain file: a comment after the first block is the program's business, not its machine.
+  const auto r = parseProgramFile("G21 G99\n(MACHINE: haas)\nM30\n");
+  ASSERT_TRUE(r.ok());
+  EXPECT_TRUE(r.value->plainGcode);
+  EXPECT_EQ(r.value->header.machine, "");
+  EXPECT_FALSE(machineNamedIn("(MACHINING TIME 3 MIN)\nG21\n").has_value());
+  const auto semi = machineNamedIn("%\n; Machine = haas\nG20\n");
+  ASSERT_TRUE(semi.has_value());
+  EXPECT_EQ(semi->id, "haas");
+  EXPECT_EQ(semi->line, 2);
+  // A default header never lends its machine to a file that names none.
+  JobHeader defaults;
+  defaults.machine = "haas";
+  EXPECT_EQ(parseProgramFile("G21\nM30\n", defaults).value->header.machine, "");
+}
+
 }  // namespace
 }  // namespace klueng::core::io

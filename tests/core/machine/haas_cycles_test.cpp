@@ -382,6 +382,30 @@ TEST(FanucG83, StaysModalForTheNextHoleUntilG80) {
   expectPath(r, 6, 1.0, {{R, 0, 8}});
 }
 
+// G-code system B (issue 27; Fanuc 0i-TF operator's manual, G code list): G95 is
+// the feed per revolution, G98/G99 the drilling cycles' return level. Under G99
+// the cycle ends at the R point and the next hole starts from there; G98 goes
+// back to the initial level as system A always does.
+TEST(SystemBG83, G99EndsAtTheRPointAndG98AtTheInitialLevel) {
+  Dialect romi{};
+  ASSERT_TRUE(gcode::parseDialectId("romi-gl240m", romi));
+  const CycleRun r("G95 G97 S500 M03\nG00 X0 Z5.\nG99 G83 Z-10. R-3. F0.1\nZ-12.\nG98 Z-14.\nG80\n", romi);
+  ASSERT_FALSE(r.timeline.alarm) << r.timeline.alarm->code;
+  expectPath(r, 3, 1.0, {{R, 0, 2}, {L, 0, -10}, {R, 0, 2}});
+  // The next hole from the R point: no rapid up to Z5 first.
+  expectPath(r, 4, 1.0, {{L, 0, -12}, {R, 0, 2}});
+  expectPath(r, 5, 1.0, {{L, 0, -14}, {R, 0, 5}});
+  // F0.1 under G95 is per revolution: 12 mm (R point Z2 to Z-10) at 0.1 mm x 500 rpm = 14.4 s.
+  double feedTime = 0.0;
+  for (const Move& m : r.timeline.moves)
+    if (m.line == 3 && m.kind == L) feedTime += m.tEnd - m.tStart;
+  EXPECT_NEAR(feedTime, 14.4, 1e-9);
+  // In system A, G99 is the feed per revolution and the cycle returns to the initial level.
+  const CycleRun a("G99 G97 S500 M03\nG00 X0 Z5.\nG83 Z-10. R-3. F0.1\n", Dialect::Fanuc);
+  ASSERT_FALSE(a.timeline.alarm);
+  expectPath(a, 3, 1.0, {{R, 0, 2}, {L, 0, -10}, {R, 0, 5}});
+}
+
 TEST(HaasG82, DwellsPSecondsAtTheBottom) {
   // Haas: R is the R plane's Z (Z2.), P0.5 with a point = 0.5 s; back to the initial Z5.
   const CycleRun r("G21 G98 G97 S500 M03\nG00 X0 Z5.\nG82 Z-4. R2. P0.5 F100.\n", Dialect::Haas);

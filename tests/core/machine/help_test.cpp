@@ -4,12 +4,14 @@
 #include "klueng/core/machine/help.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 #include "klueng/core/cut/cut_simulator.h"
+#include "klueng/core/gcode/machine_file.h"
+#include "klueng/core/machine/explain.h"
 #include "klueng/core/io/tool_library.h"
 #include "klueng/core/machine/job_file.h"
 #include "klueng/core/machine/setup_files.h"
@@ -106,6 +108,52 @@ TEST(Help, SearchFindsRoughingInEnglishAndInThai) {
   EXPECT_TRUE(searchHelp("coolant", gcode::Dialect::Fanuc).front().letter == 'M');
   EXPECT_TRUE(searchHelp("xyzzy", gcode::Dialect::Fanuc).empty());
   EXPECT_TRUE(searchHelp("  ", gcode::Dialect::Fanuc).empty());
+}
+
+// Issue 27: help and worked examples speak the machine's G-code system. On the
+// ROMI (system B) the thread is G33, the clamp G92 S, the feed G95; every code
+// the machine has gets a worked example in its numbers that runs clean.
+TEST(Help, ASystemBMachineSpeaksItsOwnNumbers) {
+  gcode::Dialect romi{};
+  ASSERT_TRUE(gcode::parseDialectId("romi-gl240m", romi));
+  const gcode::CodeInfo* g33 = gcode::findCode('G', 33, romi);
+  ASSERT_NE(g33, nullptr);
+  EXPECT_EQ(g33->exampleEn.substr(0, 4), "G33 ");
+  EXPECT_EQ(g33->exampleEn.find("G32"), std::string_view::npos);
+  const gcode::CodeInfo* g92 = gcode::findCode('G', 92, romi);
+  ASSERT_NE(g92, nullptr);
+  EXPECT_EQ(g92->action, gcode::CodeAction::CoordinateSet);
+  EXPECT_EQ(g92->exampleEn.substr(0, 4), "G92 ");
+  // System A keeps its own texts.
+  EXPECT_EQ(gcode::findCode('G', 32, gcode::Dialect::Fanuc)->exampleEn.substr(0, 4), "G32 ");
+
+  const std::string thread = workedExample('G', 33, romi);
+  EXPECT_NE(thread.find("G33 Z-25. F1.5"), std::string::npos) << thread;
+  EXPECT_NE(thread.find("G92 S2500"), std::string::npos) << thread;
+  EXPECT_NE(thread.find("G95\n"), std::string::npos) << thread;
+  for (const char* a : {"G32", "G50", "G99"}) EXPECT_EQ(thread.find(a), std::string::npos) << a << "\n" << thread;
+  EXPECT_NE(workedExample('G', 78, romi).find("G78 X47.2 Z-25. F1.5"), std::string::npos);
+  EXPECT_TRUE(workedExample('G', 32, romi).empty());  // no G32 in system B
+
+  int examples = 0;
+  for (const char letter : {'G', 'M'})
+    for (int n = 0; n < 100; ++n) {
+      if (!gcode::findCode(letter, n, romi)) continue;
+      const std::string text = workedExample(letter, n, romi);
+      const std::string name = codeName(letter, n);
+      ASSERT_FALSE(text.empty()) << name;
+      EXPECT_NE(text.find(name), std::string::npos) << name << " is not in its own example:\n" << text;
+      EXPECT_EQ(problems(text, romi, workedExampleFiles(letter, n, romi)), "") << name << ":\n" << text;
+      ++examples;
+    }
+  EXPECT_GT(examples, 60);
+
+  // The search and the explain bar find the system's numbers.
+  const std::vector<HelpHit> hits = searchHelp("thread", romi);
+  EXPECT_TRUE(std::any_of(hits.begin(), hits.end(), [](const HelpHit& h) { return h.letter == 'G' && h.number == 33; }));
+  EXPECT_TRUE(std::none_of(hits.begin(), hits.end(), [](const HelpHit& h) { return h.letter == 'G' && h.number == 32; }));
+  EXPECT_EQ(searchHelp("G78", romi).front().number, 78);
+  EXPECT_EQ(explainCode('G', 99, romi, Lang::En), "drilling cycles return to the R point");
 }
 
 }  // namespace

@@ -6,12 +6,19 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 
 #include "klueng/core/diagnostic_codes.h"
+#include "klueng/core/cut/cut_simulator.h"
+#include "klueng/core/cut/part_features.h"
 #include "klueng/core/gcode/checker.h"
+#include "klueng/core/gcode/dialect_fit.h"
 #include "klueng/core/gcode/parser.h"
+#include "klueng/core/machine/setup_files.h"
 #include "klueng/core/machine/trace.h"
 #include "klueng/core/messages.h"
 #include "test_support.h"
@@ -212,6 +219,67 @@ TEST(MachineFiles, SystemBProgramRunsAsItsSystemATwin) {
   EXPECT_EQ(b, a);
   // Read as system A, the program has errors and another machine accepts it.
   EXPECT_FALSE(errorsOf(kSystemB, gcode::Dialect::Fanuc).empty());
+}
+
+// Issue 27 acceptance: the course program cuts its part (Ø30 to 0.01 mm, the
+// M20x1.5 thread) and, read as system A, is offered the system-B machine at its
+// first G95 (line 3); a program whose first system-B form is G92 S gets the offer there.
+TEST(MachineFiles, SystemBProgramCutsItsPartAndIsOfferedTheRomi) {
+  gcode::Dialect romi{};
+  ASSERT_TRUE(gcode::parseDialectId("romi-gl240m", romi));
+  RunOptions options;
+  options.dialect = romi;
+  // The shipped setup: its tools have their bitmaps, which the cut draws.
+  const MachineSetup setup = loadMachineSetup(KLUENG_SOURCE_DIR).setup;
+  const Timeline t = testing::runText(kSystemB, options, setup);
+  ASSERT_FALSE(t.alarm.has_value());
+  cut::CutSimulator sim(t, cut::CutSetup::from(io::JobHeader{}, setup));
+  sim.runToEnd();
+  EXPECT_FALSE(sim.stoppingAlarm().has_value()) << formatMessage(*sim.stoppingAlarm(), Lang::En) << " line "
+                                                << sim.stoppingAlarm()->range.line;
+  const cut::PartFeatures part = cut::partFeatures(sim.stock());
+  bool d30 = false;
+  std::vector<double> roots;  // the thread's roots: Ø18 (the G91 G33 pass at 24 - 6), right to left
+  for (const cut::PartFeature& f : part.outside) {
+    if (f.kind != cut::FeatureKind::Cylinder) continue;
+    if (std::abs(f.diameter - 30.0) < 0.01) {
+      // Z-40 to Z-25 less what the 0.8 mm nose leaves in the corners (the program has no G42).
+      d30 = true;
+      EXPECT_GT(f.zLeft, -40.01);
+      EXPECT_LT(f.zRight, -24.0);
+    }
+    if (std::abs(f.diameter - 18.0) < 0.01) roots.push_back(f.zLeft);  // the first is cut short by the face at Z-1
+  }
+  EXPECT_TRUE(d30);
+  // The thread M20x1.5 to Z-13: a root every 1.5 mm (the pitch), to 0.01 mm.
+  ASSERT_GE(roots.size(), 8u);
+  std::sort(roots.begin(), roots.end(), std::greater<>());
+  for (std::size_t k = 1; k < roots.size(); ++k) EXPECT_NEAR(roots[k - 1] - roots[k], 1.5, 0.01) << k;
+
+  const auto offer = [](const std::string& text) {
+    gcode::CheckOptions asA;
+    asA.dialect = gcode::Dialect::Fanuc;
+    const gcode::Program p = gcode::parse(text, 1);
+    return gcode::suggestDialect(p, asA, gcode::check(p, asA));
+  };
+  const auto fromG95 = offer(kSystemB);
+  ASSERT_TRUE(fromG95.has_value());
+  EXPECT_EQ(fromG95->dialect, romi);
+  EXPECT_EQ(fromG95->note.range.line, 3);  // G90 G95 G21;
+  const std::string g92Program = "O0001;\nG21;\nG92 S2500;\nT0101;\nG96 S200 M03;\nG00 X52. Z2.;\nG01 X48. F0.2;\n"
+                                 "Z-20.;\nG00 X100. Z100.;\nM30;\n";
+  const auto fromG92 = offer(g92Program);
+  EXPECT_TRUE(errorsOf(g92Program, romi).empty());
+  // In system A, G92 is the threading cycle: without its end point it is E140 at the G92.
+  const auto asA = errorsOf(g92Program, gcode::Dialect::Fanuc);
+  ASSERT_EQ(asA.size(), 1u);
+  EXPECT_EQ(asA[0].code, "E140");
+  EXPECT_EQ(asA[0].range.line, 3);
+  EXPECT_EQ(asA[0].range.column, 1);
+  EXPECT_EQ(formatMessage(asA[0], Lang::En), "G92 is a single cycle: its block needs the cycle's end point, X (U) and Z (W)");
+  ASSERT_TRUE(fromG92.has_value());
+  EXPECT_EQ(fromG92->dialect, romi);
+  EXPECT_EQ(fromG92->note.range.line, 3);  // G92 S2500;
 }
 
 }  // namespace

@@ -25,6 +25,7 @@ enum class ModalGroup {
   CannedCycle,   // 10/00: G70..G76, G80, G81..G83 drilling
   MacroModal,    // 12: G66 G67 (custom macro modal call; G65 is group 00)
   Distance,      // 03: G90 G91 absolute / incremental (G-code systems B and C)
+  ReturnLevel,   // 11: G98 G99 drilling cycles' return level (G-code systems B and C)
   // M code groups, for rule 4 and the interpreter
   MSpindle,      // M03 M04 M05
   MCoolant,      // M08 M09
@@ -66,6 +67,8 @@ enum class CodeAction : std::uint8_t {
   MacroModalCall, MacroModalCancel,
   // group 03 (G-code systems B and C): X and Z absolute or incremental (as U and W)
   Absolute, Incremental,
+  // group 11 (G-code systems B and C): where a drilling cycle returns, initial level or R point
+  ReturnToInitialLevel, ReturnToRPoint,
   // canned cycles
   CycleCancel, Finishing, TurnRoughing, FaceRoughing, PatternRepeating, FacePecking, Grooving, ThreadCutting,
   Drilling, SpotDrilling, PeckDrilling,
@@ -120,6 +123,14 @@ std::span<const CodeInfo> systemOnlyRows();
 // The number a code has in a machine's G-code system (G32 -> G33 in system B); the number itself when
 // unchanged, -1 when the system has no such code.
 int numberInSystem(char letter, int numberInA, Dialect dialect);
+// `text` written with system-A G numbers ("G50 S2500", "(G32 passes)"), as
+// `dialect`'s G-code system numbers them ("G92 S2500", "(G33 passes)" in system
+// B); the text itself in system A. A G word is a G not after a letter or digit,
+// then its digits (not followed by a point).
+std::string inSystemNumbers(std::string_view text, Dialect dialect);
+// The system-A number of a code of `dialect`'s system (G33 -> 32 in system B);
+// -1 for a code system A has not (G90 absolute).
+int numberInA(char letter, int number, Dialect dialect);
 // The row for a code in a dialect; nullopt when the dialect does not know it.
 std::optional<CodeInfo> lookupCode(char letter, int number, Dialect dialect);
 // Same, without a copy (constant time): nullptr when unknown.

@@ -44,16 +44,20 @@ struct PointEvidence {
 // increments, "1250 in" whole (for notes and warnings).
 std::string clueLengthText(const PointClue& clue, bool increments);
 
-// The units in force after the program's last G20/G21 in file order (the
-// program itself, file 0), `powerOnUnits` when it has none.
-InputUnits programInputUnits(const Program& program, InputUnits powerOnUnits);
+// Codes are found by their action in `dialect`'s code table (issue 27): inch and
+// metric input are G20/G21 in G-code systems A and B, G70/G71 in system C, and
+// the multiple repetitive cycles G70-G76 (A, B) are G72-G78 in C.
 
-// Reads the program in file order, G20/G21 from `powerOnUnits` on.
-PointEvidence weighDecimalPoints(const Program& program, InputUnits powerOnUnits);
+// The units in force after the program's last inch/metric code in file order (the
+// program itself, file 0), `powerOnUnits` when it has none.
+InputUnits programInputUnits(const Program& program, InputUnits powerOnUnits, Dialect dialect);
+
+// Reads the program in file order, the units from `powerOnUnits` on.
+PointEvidence weighDecimalPoints(const Program& program, InputUnits powerOnUnits, Dialect dialect);
 
 // Rescales every length word without a decimal point to least input
-// increments (0.001 mm, 0.0001 in as G20/G21 say at its block).
-void readLengthsInIncrements(Program& program, InputUnits powerOnUnits);
+// increments (0.001 mm, 0.0001 in as the units code says at its block).
+void readLengthsInIncrements(Program& program, InputUnits powerOnUnits, Dialect dialect);
 
 // The words whose other reading is clearly what the author meant: W110 for a
 // word read in increments that only makes sense whole ("write X30. for 30

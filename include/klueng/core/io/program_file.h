@@ -41,6 +41,11 @@ struct JobHeader {
   // beyond the centre line (a rear tool post, X < 0), false = in front; unset:
   // what a plain program's run shows, else the machine (machine.cfg).
   std::optional<bool> toolsBeyondCentre;
+  // The machine this program is written for (issue 27): the id a comment at the
+  // program's head names, `(MACHINE: romi-gl240m)` (machineNamedIn); empty: none.
+  // File line of that comment, 0 when none. Job details writes it (withMachineNamed).
+  std::string machine;
+  int machineLine = 0;
   double diameterMm() const { return diameterUnit == LengthUnit::Inch ? diameter * 25.4 : diameter; }
   double lengthMm() const { return lengthUnit == LengthUnit::Inch ? length * 25.4 : length; }
   double boreMm() const { return diameterUnit == LengthUnit::Inch ? bore * 25.4 : bore; }
@@ -91,6 +96,22 @@ ReadResult<ProgramFile> readProgramFile(const std::string& path, const JobHeader
 // A file a folder of programs holds as a program (`check DIR`, `class DIR`):
 // .txt .nc .cnc .tap .ngc .gcode, any case; never a CSV, PDF or PNG beside them.
 bool isProgramFileName(std::string_view path);
+
+// The machine a program names for itself (issue 27, docs/program-file.md §8):
+// a comment `(MACHINE: id)` (also `(MACHINE id)`, `;MACHINE: id`, any case) on one
+// of the lines of the program's head (blank lines, `%`, comment lines and an O
+// line); a comment further down is the program's own business. `line` counts
+// from 1 at the first line of `gcode`, `column` is the id's (1-based, in characters).
+struct NamedMachine {
+  std::string id;
+  int line = 0;
+  int column = 0;
+};
+std::optional<NamedMachine> machineNamedIn(std::string_view gcode);
+// `gcode` naming machine `id`: the head's `(MACHINE: ...)` line rewritten, or a
+// new one put after the head's `%` and O line (before the first other line);
+// empty `id` takes the line out. Every other line stays as it was.
+std::string withMachineNamed(std::string_view gcode, std::string_view id);
 
 // Text in Klueng's format (UTF-8, LF). A plain file is written back plain.
 // Sizes are written as unit digit + shortest number (50 mm -> "150"), a bore

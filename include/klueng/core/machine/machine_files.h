@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "klueng/core/gcode/machine_file.h"
+#include "klueng/core/io/program_file.h"
 #include "klueng/core/io/tool_config.h"
 #include "klueng/core/machine/setup_files.h"
 
@@ -34,6 +35,11 @@ std::vector<SetupDiagnostic> loadMachineFolders(const std::vector<std::string>& 
 // `--machine NAME|FILE`: a loaded machine's id, or a .machine file (read,
 // checked and registered). nullopt with the diagnostics that say why.
 std::optional<gcode::Dialect> resolveMachine(const std::string& nameOrFile, std::vector<SetupDiagnostic>& diagnostics);
+
+// The machine a program names at its head, `(MACHINE: romi-gl240m)`
+// (io::machineNamedIn; Job details writes it): a loaded machine. nullopt when it
+// names none, or one that is not loaded; then `warnings` gets F205 at the id.
+std::optional<gcode::Dialect> machineOfProgram(const io::ProgramFile& file, std::vector<Diagnostic>& warnings);
 
 // The machine.cfg keys a machine file holds override the setup's (its rapids,
 // travel, chuck ...); keys it leaves out keep the setup's values.

@@ -26,6 +26,6 @@ struct PointReading {
 // Decides, and rescales `program`'s pointless lengths in place when they are
 // least input increments.
 PointReading readDecimalPoints(gcode::Program& program, bool plainProgram, std::optional<bool> chosen,
-                               bool machineCalculatorInput, gcode::InputUnits powerOnUnits);
+                               bool machineCalculatorInput, gcode::InputUnits powerOnUnits, gcode::Dialect dialect);
 
 }  // namespace klueng::core::machine

@@ -25,6 +25,7 @@ struct ModalState {
   double rpmClamp = 0.0;      // G50 S, 0 = none
   int workCoordinate = 54;    // G54..G59 (Fanuc; all work offsets are zero)
   bool incremental = false;   // G91 of G-code systems B and C: X and Z are read as U and W
+  bool returnToRPoint = false;  // G99 of systems B and C: drilling cycles end at the R point (G98: initial level)
 };
 
 struct MachineState {
