@@ -23,7 +23,7 @@
 #include "batch_memory.h"
 #include "cli_common.h"
 #include "klueng/core/diagnostic_codes.h"
-#include "klueng/core/machine/job_file.h"
+#include "klueng/core/job/job.h"
 #include "commands.h"
 
 namespace klueng::cli {
@@ -186,7 +186,7 @@ int runCheck(const std::vector<std::string>& args) {
   LoadedConfig config = loadConfig(o.configDir);
   if (!chooseMachine(o.machine, config, o.dialect, o.lang)) return 2;
   std::string error;
-  std::optional<machine::JobFileRequest> request =
+  std::optional<core::job::JobInput> request =
       jobRequest(config, o.dialect, o.powerOnUnits, o.stock, o.tools, error, o.lang);
   if (!request) return usageError(o.lang, error);
   request->calculatorInput = o.calculatorInput;
@@ -200,17 +200,18 @@ int runCheck(const std::vector<std::string>& args) {
 
   const std::vector<std::string> files = expandFolders(o.files);
   for (const std::string& path : files) {
-    machine::JobFile job = machine::loadJobFile(path, config.setup, *request, io::shippedToolLibrary());
-    for (const Diagnostic& n : job.toolNotes) notes.push_back({path, n});
-    for (const Diagnostic& n : job.stockNotes) notes.push_back({path, n});
+    request->path = path;
+    std::shared_ptr<const core::job::Job> job = core::job::makeJob(*request);
+    for (const Diagnostic& n : job->toolNotes()) notes.push_back({path, n});
+    for (const Diagnostic& n : job->stockNotes()) notes.push_back({path, n});
     FileSummary row{path};
-    for (const Diagnostic& d : job.diagnostics) {
+    for (const Diagnostic& d : job->diagnostics()) {
       if (isError(d.severity)) ++row.errors;
       else if (d.severity == Severity::Warning) ++row.warnings;
-      all.push_back({job.fileOf(d), d});
+      all.push_back({job->fileOf(d), d});
     }
-    row.unreadable = job.unreadable;
-    anyUnreadable = anyUnreadable || job.unreadable;
+    row.unreadable = job->unreadable();
+    anyUnreadable = anyUnreadable || job->unreadable();
     anyError = anyError || row.errors > 0;
     summary.push_back(row);
     if (&path == &files.back()) keepUntilExit(std::move(job));

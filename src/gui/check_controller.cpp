@@ -34,9 +34,12 @@ void CheckController::checkText(const QString& text) {
   }
   pending_ = false;
   inFlight_ = true;
-  const Request r = request_();
-  watcher_.setFuture(QtConcurrent::run(checkWithTools, text, r.firstLine, r.options, r.setup, r.overrides, r.stations,
-                                       r.folder, r.calculatorInput, r.toolsBeyondCentre));
+  Request r = request_();
+  watcher_.setFuture(QtConcurrent::run([r = std::move(r), text]() mutable {
+    if (!r.file) r.file.emplace();
+    r.file->gcode = text.toStdString();
+    return core::job::makeJob(std::move(r));
+  }));
   emit started();
 }
 

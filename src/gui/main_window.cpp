@@ -376,37 +376,49 @@ core::io::ProgramFile MainWindow::currentProgramFile() const {
 
 CheckController::Request MainWindow::checkRequest() const {
   CheckController::Request r;
-  r.firstLine = document_->gcodeFirstLine();
-  r.options.dialect = dialect_;
-  r.options.powerOnUnits = powerOnUnits_;
-  r.options.toolsWithBitmap = toolsWithBitmap_;
-  r.options.turretStations = setup_.tools.stations;
-  r.options.modalRules = true;  // issue 11: the alarms the modal state shows, while typing
+  core::io::ProgramFile file;  // the text goes in off the GUI thread
+  file.header = document_->header();
+  file.plainGcode = document_->isPlainGcode();
+  file.gcodeFirstLine = document_->gcodeFirstLine();
+  r.file = std::move(file);
+  r.run.dialect = dialect_;
+  r.run.powerOnUnits = powerOnUnits_;
+  r.toolTable = toolsWithBitmap_.has_value();  // no tool table read: T words are not checked
+  r.modalRules = true;  // issue 11: the alarms the modal state shows, while typing
   const int profileLimit = core::gcode::machineProfile(dialect_).maxToolStation;
   r.stations = profileLimit > 0 ? std::min(profileLimit, setup_.tools.stations) : setup_.tools.stations;
   r.setup = setup_;
   r.overrides = toolOverrides_;
-  r.folder = programFolder();
-  r.calculatorInput = document_->header().calculatorInput;
-  r.toolsBeyondCentre = document_->header().toolsBeyondCentre;
+  r.folder = programFolder().toStdString();
   return r;
 }
 
-void MainWindow::onCheckFinished(const JobToolsResult& result) {
+void MainWindow::onCheckFinished(const CheckController::JobPtr& job) {
+  const std::vector<core::Diagnostic> found = job->programFileDiagnostics();
   lastDiagnostics_ = document_->fileDiagnostics();
-  lastDiagnostics_.insert(lastDiagnostics_.end(), result.diagnostics.begin(), result.diagnostics.end());
-  if (result.fit) dialectOffer_->offer(*result.fit, result.fitBlocks);
+  // A header size the file reading already reported is said once.
+  for (const core::Diagnostic& d : found)
+    if (std::none_of(lastDiagnostics_.begin(), lastDiagnostics_.end(), [&](const core::Diagnostic& f) {
+          return f.code == d.code && f.range.line == d.range.line && f.range.file == d.range.file;
+        }))
+      lastDiagnostics_.push_back(d);
+  if (job->fit()) dialectOffer_->offer(*job->fit(), job->fitBlocks());
   else dialectOffer_->clear();
   // The job's tools: library choices for the stations the program uses (a note per choice in Tool Select).
-  const bool toolsChanged = !sameTools(result.inference.setup, toolInference_.setup);
-  toolInference_ = result.inference;
+  const bool toolsChanged = !sameTools(job->tools().setup, toolInference_.setup);
+  toolInference_ = job->tools();
   // Which word decided how lengths without a decimal point are read (point_reading.h), for the strip.
   pointNote_.reset();
-  for (const core::Diagnostic& d : result.diagnostics)
+  for (const core::Diagnostic& d : found)
     if (d.code == core::codes::kLengthsInIncrements || d.code == core::codes::kLengthsWhole) pointNote_ = d;
   if (toolsChanged) runner_->setMachineSetup(toolInference_.setup);
+  // After a dialect or units change, a plain file's inferred bar is the one this Job resolved.
+  if (restockOnNextCheck_ && job->file()) {
+    restockOnNextCheck_ = false;
+    document_->takeInferredStock(job->file()->header, job->stockNotes());
+  }
   updateStockLabel();  // the setup strip lists the tools just decided
-  programUnits_ = result.units;  // a G20 program speaks inches on View ▸ Units shown ▸ Auto
+  programUnits_ = job->units();  // a G20 program speaks inches on View ▸ Units shown ▸ Auto
   applyDisplayUnits();
   std::stable_sort(lastDiagnostics_.begin(), lastDiagnostics_.end(), [](const auto& a, const auto& b) {
     return a.range.line != b.range.line ? a.range.line < b.range.line : a.range.column < b.range.column;

@@ -148,7 +148,7 @@ class MainWindow : public QMainWindow {
   void showBusyIndicator();
 
   CheckController::Request checkRequest() const;
-  void onCheckFinished(const JobToolsResult& result);
+  void onCheckFinished(const CheckController::JobPtr& job);
   void showDiagnostics();
 
   void loadMachineSetup(const QString& dir = {});
@@ -226,6 +226,7 @@ class MainWindow : public QMainWindow {
   // the last inference (its setup is what the run uses).
   std::vector<core::machine::StationOverride> toolOverrides_;
   core::machine::ToolInference toolInference_;
+  bool restockOnNextCheck_ = false;  // the dialect or units changed: the next Job says the bar
   std::optional<core::Diagnostic> pointNote_;  // the last check's I103/I104, for the setup strip
   bool runnerStale_ = true;
 };

@@ -354,11 +354,9 @@ void MainWindow::setDialect(core::gcode::Dialect d) {
   runner_->setDialect(d);
   action(dialectActionName(d))->setChecked(true);
   if (help_) help_->setDialect(d);
-  // The same plain text may approach the part elsewhere in another dialect (units, cycle forms).
-  core::machine::RunOptions run;
-  run.dialect = d;
-  run.powerOnUnits = powerOnUnits_;
-  document_->reinferStock(editor_->toPlainText(), runner_->machineSetup(), run);
+  // The same plain text may approach the part elsewhere in another dialect (units, cycle forms):
+  // the next check's Job says where (off the GUI thread).
+  restockOnNextCheck_ = true;
   runnerStale_ = true;
   checkNow();
 }
@@ -381,10 +379,7 @@ void MainWindow::setPowerOnUnits(std::optional<core::gcode::InputUnits> units) {
          : *units == core::gcode::InputUnits::Inch ? QStringLiteral("actionUnitsInch")
                                                    : QStringLiteral("actionUnitsMm"))
       ->setChecked(true);  // the group unchecks the others
-  core::machine::RunOptions run;
-  run.dialect = dialect_;
-  run.powerOnUnits = units;
-  document_->reinferStock(editor_->toPlainText(), runner_->machineSetup(), run);
+  restockOnNextCheck_ = true;  // inch or mm changes the approach: the next check's Job says the bar
   runnerStale_ = true;
   checkNow();
 }

@@ -13,7 +13,7 @@
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/io/tool_library.h"
 #include "klueng/core/machine/flow_view.h"
-#include "klueng/core/machine/job.h"
+#include "klueng/core/job/job.h"
 #include "klueng/core/machine/subprogram_files.h"
 
 namespace klueng::gui {
@@ -273,16 +273,20 @@ void RunController::prepareAndThen(Pending what) {
   options.optionalStop = true;   // record every M01; the switch decides while playing
   prepareWatcher_.setFuture(QtConcurrent::run([file, setup, options, folder]() {
     auto result = std::make_shared<Prepared>();
-    machine::JobOptions job;
-    job.run = options;
-    job.folder = folder;
-    machine::CompiledJob compiled = machine::compileJob(file, setup, job);
-    result->files = compiled.program.files;
-    if (compiled.hasErrors()) {
-      for (auto& d : compiled.diagnostics) result->errors.push_back(d);
+    core::job::JobInput input;
+    input.file = file;
+    input.setup = setup;  // the job's tools, as the last check decided them
+    input.inferTools = false;
+    input.run = options;
+    input.folder = folder;
+    const std::shared_ptr<const core::job::Job> job = core::job::makeJob(std::move(input));
+    if (job->program()) result->files = job->program()->files;
+    if (job->hasErrors() || !job->timeline()) {
+      for (const auto& d : job->diagnostics()) result->errors.push_back(d);
       return result;
     }
-    result->timeline = std::make_shared<machine::Timeline>(std::move(*compiled.timeline));
+    // The job's timeline, not a copy: the pointer keeps the job alive.
+    result->timeline = std::shared_ptr<const machine::Timeline>(job, job->timeline());
     // A guessed tool that touches gives way to another of its kind that fits: one whole cut
     // here (more only when a guess touched), so the run draws the tool that fits.
     if (std::any_of(setup.tools.guessed.begin(), setup.tools.guessed.end(), [](bool g) { return g; })) {
