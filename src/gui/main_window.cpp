@@ -65,20 +65,20 @@ namespace klueng::gui {
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::make_unique<Settings>()) {
   setObjectName(QStringLiteral("mainWindow"));
   setWindowIcon(QIcon(QStringLiteral(":/icons/klueng.svg")));
-  dialect_ = settings_->dialect();
-  powerOnUnits_ = settings_->powerOnUnits();
+  jobDoc_.setDialect(settings_->dialect());
+  jobDoc_.setPowerOnUnits(settings_->powerOnUnits());
   shownUnits_ = settings_->shownUnits();
-  programUnits_ = core::gcode::powerOnUnitsOf(dialect_, powerOnUnits_) == core::gcode::InputUnits::Inch
+  programUnits_ = core::gcode::powerOnUnitsOf(jobDoc_.dialect(), jobDoc_.powerOnUnits()) == core::gcode::InputUnits::Inch
                       ? core::DisplayUnits::Inch
                       : core::DisplayUnits::Mm;  // until the first check says the program's
 
   editor_ = new CodeEditor(this);
   editor_->setObjectName(QStringLiteral("codeEditor"));
-  editor_->setDialect(dialect_);
+  editor_->setDialect(jobDoc_.dialect());
 
   runner_ = new RunController(this);
-  runner_->setDialect(dialect_);
-  runner_->setPowerOnUnits(powerOnUnits_);
+  runner_->setDialect(jobDoc_.dialect());
+  runner_->setPowerOnUnits(jobDoc_.powerOnUnits());
   runner_->setOptionalStop(settings_->optionalStop());
   runner_->setBlockSkip(settings_->blockSkip());
 
@@ -86,8 +86,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   docs_ = new DocumentManager(this, editor_, settings_.get(), [this] {
     DocumentManager::LoadContext context;
     context.setup = runner_->machineSetup();
-    context.run.dialect = dialect_;
-    context.run.powerOnUnits = powerOnUnits_;
+    context.run.dialect = jobDoc_.dialect();
+    context.run.powerOnUnits = jobDoc_.powerOnUnits();
     return context;
   });
   document_ = docs_->document();
@@ -96,8 +96,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
     source.program = currentProgramFile();
     source.displayName = document_->displayName();
     source.filePath = document_->filePath();
-    source.setup = toolInference_.setup;
-    source.dialect = dialect_;
+    source.setup = jobDoc_.tools().setup;
+    source.dialect = jobDoc_.dialect();
     source.units = displayUnits();
     return source;
   });
@@ -280,7 +280,7 @@ void MainWindow::connectDocuments() {
   connect(docs_, &DocumentManager::loadFailed, this, &MainWindow::loadFailed);
   connect(docs_, &DocumentManager::loaded, this, [this](const QString& path, const QString& text) {
     setupUndo_->clear();
-    toolOverrides_ = loadToolOverrides(path);
+    jobDoc_.setOverrides(loadToolOverrides(path));
     runnerStale_ = true;
     updateTitle();
     checker_->checkText(text);  // the text just loaded: no need to read it back from the editor
@@ -375,22 +375,11 @@ core::io::ProgramFile MainWindow::currentProgramFile() const {
 }
 
 CheckController::Request MainWindow::checkRequest() const {
-  CheckController::Request r;
-  core::io::ProgramFile file;  // the text goes in off the GUI thread
+  core::io::ProgramFile file;  // the header and line numbering; the text goes in off the GUI thread
   file.header = document_->header();
   file.plainGcode = document_->isPlainGcode();
   file.gcodeFirstLine = document_->gcodeFirstLine();
-  r.file = std::move(file);
-  r.run.dialect = dialect_;
-  r.run.powerOnUnits = powerOnUnits_;
-  r.toolTable = toolsWithBitmap_.has_value();  // no tool table read: T words are not checked
-  r.modalRules = true;  // issue 11: the alarms the modal state shows, while typing
-  const int profileLimit = core::gcode::machineProfile(dialect_).maxToolStation;
-  r.stations = profileLimit > 0 ? std::min(profileLimit, setup_.tools.stations) : setup_.tools.stations;
-  r.setup = setup_;
-  r.overrides = toolOverrides_;
-  r.folder = programFolder().toStdString();
-  return r;
+  return jobDoc_.checkInput(std::move(file), programFolder().toStdString());
 }
 
 void MainWindow::onCheckFinished(const CheckController::JobPtr& job) {
@@ -405,13 +394,13 @@ void MainWindow::onCheckFinished(const CheckController::JobPtr& job) {
   if (job->fit()) dialectOffer_->offer(*job->fit(), job->fitBlocks());
   else dialectOffer_->clear();
   // The job's tools: library choices for the stations the program uses (a note per choice in Tool Select).
-  const bool toolsChanged = !sameTools(job->tools().setup, toolInference_.setup);
-  toolInference_ = job->tools();
+  const bool toolsChanged = !sameTools(job->tools().setup, jobDoc_.tools().setup);
+  jobDoc_.setJob(job);
   // Which word decided how lengths without a decimal point are read (point_reading.h), for the strip.
   pointNote_.reset();
   for (const core::Diagnostic& d : found)
     if (d.code == core::codes::kLengthsInIncrements || d.code == core::codes::kLengthsWhole) pointNote_ = d;
-  if (toolsChanged) runner_->setMachineSetup(toolInference_.setup);
+  if (toolsChanged) runner_->setMachineSetup(jobDoc_.tools().setup);
   // After a dialect or units change, a plain file's inferred bar is the one this Job resolved.
   if (restockOnNextCheck_ && job->file()) {
     restockOnNextCheck_ = false;
@@ -454,8 +443,7 @@ void MainWindow::loadMachineSetup(const QString& dir) {
   if (!dir.isEmpty()) configDirOverride_ = dir;
   const core::machine::LoadedSetup loaded = core::machine::loadMachineSetup(configDirOverride_.toStdString());
   configDir_ = QString::fromStdString(loaded.dir);
-  setup_ = loaded.setup;
-  toolsWithBitmap_ = loaded.toolsWithBitmap();
+  jobDoc_.setSetup(loaded.setup, loaded.toolsWithBitmap());  // the next check decides the job's tools
   // A setup file the reader refused is said at once, file and line, above the editor.
   const bool problems = std::any_of(loaded.diagnostics.begin(), loaded.diagnostics.end(),
                                     [](const core::machine::SetupDiagnostic& d) { return core::isError(d.diagnostic.severity); });
@@ -472,12 +460,10 @@ void MainWindow::loadMachineSetup(const QString& dir) {
     }, false);
   // The machines folders may name the remembered machine only now; its machine.cfg keys join the setup.
   updateMachineMenu();
-  if (const core::gcode::Dialect remembered = settings_->dialect(); remembered != dialect_) setDialect(remembered);
-  setup_.machine = core::machine::withMachineKeys(setup_.machine, core::gcode::machineProfile(dialect_));
-  runner_->setMachineSetup(setup_);
-  if (designer_) designer_->setMachineSetup(setup_);
-  toolInference_ = {};  // the next check decides the job's tools from the new tables
-  toolInference_.setup = setup_;
+  if (const core::gcode::Dialect remembered = settings_->dialect(); remembered != jobDoc_.dialect()) setDialect(remembered);
+  jobDoc_.setMachine(core::machine::withMachineKeys(jobDoc_.setup().machine, core::gcode::machineProfile(jobDoc_.dialect())));
+  runner_->setMachineSetup(jobDoc_.setup());
+  if (designer_) designer_->setMachineSetup(jobDoc_.setup());
 }
 
 QString MainWindow::programFolder() const {
@@ -609,7 +595,7 @@ void MainWindow::updateStockLabel() {
   const core::io::StockSource source = document_->header().stockSource;
   setupStrip_->showSetup(document_->stockNotes(),
                          source == core::io::StockSource::Inferred || source == core::io::StockSource::Default,
-                         document_->isPlainGcode(), toolInference_, {document_->header().calculatorInput, pointNote_, document_->header().toolsBeyondCentre});
+                         document_->isPlainGcode(), jobDoc_.tools(), {document_->header().calculatorInput, pointNote_, document_->header().toolsBeyondCentre});
 }
 
 QString MainWindow::stockSourceText() const { return setupStrip_ ? setupStrip_->stockText() : QString(); }
@@ -652,9 +638,9 @@ void MainWindow::showToolSelect() { showToolSelectFor(0); }
 
 void MainWindow::showToolSelectFor(int station) {
   ToolSelectDialog dlg(configDir_, this);
-  dlg.setProgramTools(toolInference_, toolOverrides_);
+  dlg.setProgramTools(jobDoc_.tools(), jobDoc_.overrides());
   if (station > 0) dlg.setCurrentTool(station);
-  const SetupSnapshot before = SetupSnapshot::read(configDir_, toolOverrides_);
+  const SetupSnapshot before = SetupSnapshot::read(configDir_, jobDoc_.overrides());
   if (dlg.exec() != QDialog::Accepted) return;
   const QString dir = dlg.savedConfigDir();
   pushSetupChange(tr("Tool Select"), dir, before, SetupSnapshot::read(dir, dlg.jobOverrides()));
@@ -662,18 +648,18 @@ void MainWindow::showToolSelectFor(int station) {
 
 void MainWindow::showOffsetDefine() {
   OffsetDefineDialog dlg(configDir_, this);
-  const SetupSnapshot before = SetupSnapshot::read(configDir_, toolOverrides_);
+  const SetupSnapshot before = SetupSnapshot::read(configDir_, jobDoc_.overrides());
   if (dlg.exec() != QDialog::Accepted) return;
   const QString dir = dlg.savedConfigDir();
-  pushSetupChange(tr("Offset Define"), dir, before, SetupSnapshot::read(dir, toolOverrides_));
+  pushSetupChange(tr("Offset Define"), dir, before, SetupSnapshot::read(dir, jobDoc_.overrides()));
 }
 
 void MainWindow::pushSetupChange(const QString& text, const QString& dir, const SetupSnapshot& before,
                                  const SetupSnapshot& after) {
   const auto reload = [this](const QString& folder, const std::vector<core::machine::StationOverride>& overrides,
                              const QString& error) {
-    toolOverrides_ = overrides;
-    saveToolOverrides(document_->filePath(), toolOverrides_);
+    jobDoc_.setOverrides(overrides);
+    saveToolOverrides(document_->filePath(), jobDoc_.overrides());
     loadMachineSetup(folder);
     if (!error.isEmpty())
       showBanner(BannerKind::Setup, [error] { return tr("The machine setup could not be written back: %1").arg(error); }, true);
@@ -686,7 +672,7 @@ void MainWindow::pushSetupChange(const QString& text, const QString& dir, const 
 
 void MainWindow::showHelpContents() {
   if (!help_) help_ = new HelpContents(this);
-  help_->setDialect(dialect_);
+  help_->setDialect(jobDoc_.dialect());
   const std::optional<std::pair<char, int>> code = editor_->codeAtCursor();  // F1 on G71 opens G71
   help_->showCode(code ? code->first : 'G', code ? code->second : -1);
 }

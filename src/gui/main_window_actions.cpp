@@ -85,7 +85,7 @@ void MainWindow::createActions() {
   on("actionPrintPreview", [this] { printPreview(); });
   on("actionExportPdf", [this] { exportPdf(); });
   on("actionGradeClass", [this] {
-    auto* dialog = new ClassGradeDialog(setup_, dialect_, document_->filePath(), this);
+    auto* dialog = new ClassGradeDialog(jobDoc_.setup(), jobDoc_.dialect(), document_->filePath(), this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     connect(dialog, &ClassGradeDialog::openProgram, this, [this](const QString& path) { openFile(path); });
     dialog->show();
@@ -182,7 +182,7 @@ void MainWindow::createActions() {
   for (const core::gcode::Dialect d :
        {core::gcode::Dialect::Fanuc, core::gcode::Dialect::Haas, core::gcode::Dialect::Classic}) {
     QAction* a = action(dialectActionName(d));
-    a->setChecked(d == dialect_);
+    a->setChecked(d == jobDoc_.dialect());
     connect(a, &QAction::triggered, this, [this, d] { setDialect(d); });
   }
   const std::pair<const char*, std::optional<core::gcode::InputUnits>> unitChoices[] = {
@@ -191,7 +191,7 @@ void MainWindow::createActions() {
       {"actionUnitsInch", core::gcode::InputUnits::Inch}};
   for (const auto& [name, units] : unitChoices) {
     QAction* a = action(QString::fromLatin1(name));
-    a->setChecked(units == powerOnUnits_);
+    a->setChecked(units == jobDoc_.powerOnUnits());
     const auto u = units;
     connect(a, &QAction::triggered, this, [this, u] { setPowerOnUnits(u); });
   }
@@ -237,9 +237,9 @@ void MainWindow::createDocks() {
   part_ = new PartPanel(this, [this] {
     PartPanel::Source source;
     source.program = currentProgramFile();
-    source.setup = toolInference_.setup;
-    source.run.dialect = dialect_;
-    source.run.powerOnUnits = powerOnUnits_;
+    source.setup = jobDoc_.tools().setup;
+    source.run.dialect = jobDoc_.dialect();
+    source.run.powerOnUnits = jobDoc_.powerOnUnits();
     source.folder = programFolder().toStdString();
     return source;
   });
@@ -320,7 +320,7 @@ void MainWindow::updateMachineMenu() {
     }
     const std::string_view text = thai ? p->nameTh : p->nameEn;
     a->setText(QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size())));
-    a->setChecked(p->dialect == dialect_);
+    a->setChecked(p->dialect == jobDoc_.dialect());
   }
 }
 
@@ -345,8 +345,8 @@ void MainWindow::toggleLanguage() {
 }
 
 void MainWindow::setDialect(core::gcode::Dialect d) {
-  const bool machineKeys = !core::gcode::machineProfile(d).file.empty() || !core::gcode::machineProfile(dialect_).file.empty();
-  dialect_ = d;
+  const bool machineKeys = !core::gcode::machineProfile(d).file.empty() || !core::gcode::machineProfile(jobDoc_.dialect()).file.empty();
+  jobDoc_.setDialect(d);
   settings_->setDialect(d);
   // A machine file's machine.cfg keys (rapids, travel ...) are part of the setup: read it again with them.
   if (machineKeys && !configDir_.isEmpty()) loadMachineSetup();
@@ -372,7 +372,7 @@ void MainWindow::setShownUnits(std::optional<core::DisplayUnits> units) {
 }
 
 void MainWindow::setPowerOnUnits(std::optional<core::gcode::InputUnits> units) {
-  powerOnUnits_ = units;
+  jobDoc_.setPowerOnUnits(units);
   settings_->setPowerOnUnits(units);
   runner_->setPowerOnUnits(units);
   action(!units                                      ? QStringLiteral("actionUnitsMachine")
