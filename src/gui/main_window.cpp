@@ -180,7 +180,6 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   // Only real edits re-check; the highlighter's re-colouring changes no characters.
   connect(editor_->document(), &QTextDocument::contentsChange, this, [this](int, int removed, int added) {
     if ((removed == 0 && added == 0) || docs_->isFillingEditor()) return;
-    runnerStale_ = true;
     // What the last run said (its alarm, its end, its notices) was about the old text.
     if (!banner_->text().isEmpty() && (bannerKind_ == BannerKind::Alarm || bannerKind_ == BannerKind::RunEnded))
       hideBanner();
@@ -194,7 +193,6 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
     checker_->schedule();
   });
   connect(document_, &Document::headerChanged, this, [this] {
-    runnerStale_ = true;
     updateStockLabel();
     // Draw the new stock at once; the runner re-reads the whole program before a run.
     if (runner_->state() == RunState::Idle && !runner_->isBusy()) {
@@ -269,7 +267,6 @@ void MainWindow::connectDocuments() {
   });
   connect(docs_, &DocumentManager::cleared, this, [this] {
     setupUndo_->clear();  // one undo history per document
-    runnerStale_ = true;
     updateTitle();
     checkNow();
   });
@@ -281,7 +278,6 @@ void MainWindow::connectDocuments() {
   connect(docs_, &DocumentManager::loaded, this, [this](const QString& path, const QString& text) {
     setupUndo_->clear();
     jobDoc_.setOverrides(loadToolOverrides(path));
-    runnerStale_ = true;
     updateTitle();
     checker_->checkText(text);  // the text just loaded: no need to read it back from the editor
     emit fileLoaded(path);
@@ -472,13 +468,12 @@ QString MainWindow::programFolder() const {
 
 void MainWindow::syncRunner() {
   if (checker_->isScheduled()) checkNow();
-  if (!runnerStale_) return;
+  // The runner compares: an unchanged program keeps its run, a changed one makes a new Job.
   const QList<int> lines = editor_->breakpointFileLines();
   runner_->setBreakpoints(QSet<int>(lines.begin(), lines.end()));
   runner_->setProgram(currentProgramFile(), document_->displayName());
   // The program's folder is the control's memory: subprogram files (O1000.nc) come from there.
   runner_->setProgramFolder(programFolder());
-  runnerStale_ = false;
 }
 
 void MainWindow::runToCursor() {
@@ -663,7 +658,6 @@ void MainWindow::pushSetupChange(const QString& text, const QString& dir, const 
     loadMachineSetup(folder);
     if (!error.isEmpty())
       showBanner(BannerKind::Setup, [error] { return tr("The machine setup could not be written back: %1").arg(error); }, true);
-    runnerStale_ = true;
     checkNow();  // empty offset rows may take a library tool's nose radius and tip
   };
   reload(dir, after.overrides, {});  // the dialog wrote the files; this takes them in

@@ -223,7 +223,6 @@ class MainWindow : public QMainWindow {
   JobDocument jobDoc_;
   bool restockOnNextCheck_ = false;  // the dialect or units changed: the next Job says the bar
   std::optional<core::Diagnostic> pointNote_;  // the last check's I103/I104, for the setup strip
-  bool runnerStale_ = true;
 };
 
 }  // namespace klueng::gui

@@ -357,7 +357,6 @@ void MainWindow::setDialect(core::gcode::Dialect d) {
   // The same plain text may approach the part elsewhere in another dialect (units, cycle forms):
   // the next check's Job says where (off the GUI thread).
   restockOnNextCheck_ = true;
-  runnerStale_ = true;
   checkNow();
 }
 
@@ -380,7 +379,6 @@ void MainWindow::setPowerOnUnits(std::optional<core::gcode::InputUnits> units) {
                                                    : QStringLiteral("actionUnitsMm"))
       ->setChecked(true);  // the group unchecks the others
   restockOnNextCheck_ = true;  // inch or mm changes the approach: the next check's Job says the bar
-  runnerStale_ = true;
   checkNow();
 }
 

@@ -55,7 +55,22 @@ RunController::~RunController() { waitForIdle(); }
 
 // ---------------------------------------------------------------- inputs
 
+namespace {
+// What a run of the file reads: its text and line numbers, the bar, and the
+// file's choices of decimal point reading and tool side (not its title fields).
+bool runControllerSameProgram(const core::io::ProgramFile& a, const core::io::ProgramFile& b) {
+  const core::io::JobHeader& x = a.header;
+  const core::io::JobHeader& y = b.header;
+  return a.gcodeFirstLine == b.gcodeFirstLine && a.plainGcode == b.plainGcode && x.diameter == y.diameter &&
+         x.diameterUnit == y.diameterUnit && x.length == y.length && x.lengthUnit == y.lengthUnit &&
+         x.bore == y.bore && x.calculatorInput == y.calculatorInput && x.toolsBeyondCentre == y.toolsBeyondCentre &&
+         a.gcode == b.gcode;
+}
+}  // namespace
+
 void RunController::setProgram(const core::io::ProgramFile& file, const QString& displayName) {
+  // The same program again changes nothing: a paused or finished run stays as it is.
+  if (displayName == displayName_ && runControllerSameProgram(file, file_)) return;
   file_ = file;
   displayName_ = displayName;
   invalidate();

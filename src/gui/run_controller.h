@@ -5,8 +5,8 @@
 // to machine time and stops where the user asked.
 //
 // Public API (F1 wires these into the main window)
-//   setProgram(file, displayName)   the document's current text (call on every change;
-//                                   cheap: the timeline is rebuilt lazily on the next run)
+//   setProgram(file, displayName)   the document's current text (call before each run; the same
+//                                   program again keeps the run; a new one is made lazily on the next run)
 //   setMachineSetup(setup)          tools.cfg / offset.cfg / machine.cfg (after the dialogs)
 //   setDialect(d), setOptionalStop(on), setBlockSkip(on)   switches (SPEC 10)
 //   setBreakpoints(QSet<int> fileLines)                      editor margin breakpoints

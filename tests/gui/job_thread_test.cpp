@@ -80,6 +80,45 @@ class JobThreadTest : public QObject {
 
     QCOMPARE(printed.onWatchedThread, start.onWatchedThread);  // none of it on the GUI thread
   }
+
+  // Go again on the same program runs the same Job's timeline; an edit makes a new Job.
+  void anUnchangedProgramKeepsItsRunAnEditMakesANewJob() {
+    gui::MainWindow w;
+    w.resize(1366, 728);
+    w.show();
+    QVERIFY(w.openFile(QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt")));
+    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    gui::RunController* runner = w.runController();
+    runner->setSpeed(gui::RunController::kAsFastAsPossible);
+    w.action(QStringLiteral("actionGo"))->trigger();
+    QTRY_COMPARE_WITH_TIMEOUT(runner->state(), gui::RunState::Finished, 30000);
+    const core::machine::Timeline* first = runner->timeline();
+    QVERIFY(first);
+    const core::job::ComputeLog ran = core::job::computeLog();
+    QVERIFY(!first->snapshots.empty());
+    const int firstLine = first->snapshots.front().line;
+    const double cycleTime = first->cycleTime();
+
+    w.action(QStringLiteral("actionGo"))->trigger();
+    QTRY_COMPARE_WITH_TIMEOUT(runner->state(), gui::RunState::Finished, 30000);
+    QCOMPARE(runner->timeline(), first);
+    QCOMPARE(core::job::computeLog().timelines, ran.timelines);
+
+    // A comment line more: the same moves, but a new Job and its own timeline, one line further down.
+    gui::CodeEditor* editor = w.findChild<gui::CodeEditor*>();
+    QVERIFY(editor);
+    QTextCursor c(editor->document());
+    c.insertText(QStringLiteral("(ONE MORE LINE)\n"));
+    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    w.action(QStringLiteral("actionGo"))->trigger();
+    QTRY_COMPARE_WITH_TIMEOUT(runner->state(), gui::RunState::Finished, 30000);
+    const core::machine::Timeline* second = runner->timeline();
+    QVERIFY(second);
+    QCOMPARE(core::job::computeLog().timelines, ran.timelines + 1);
+    QVERIFY(!second->snapshots.empty());
+    QCOMPARE(second->snapshots.front().line, firstLine + 1);
+    QCOMPARE(second->cycleTime(), cycleTime);  // a comment moves nothing
+  }
 };
 
 KLUENG_GUI_TEST(JobThreadTest)
