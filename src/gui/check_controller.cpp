@@ -50,6 +50,8 @@ void CheckController::onFinished() {
     if (pending_) checkNow();
     return;
   }
+  // The window keeps the Job (JobDocument frees a replaced one off the GUI thread); the
+  // watcher's reference goes when the next check starts, while the window still holds it.
   emit finished(watcher_.result());
 }
 

@@ -1,6 +1,8 @@
 #include "gui/job_document.h"
 
+#include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
+#include <utility>
 
 #include "klueng/core/gcode/machine_profile.h"
 
@@ -9,9 +11,14 @@ namespace klueng::gui {
 void JobDocument::setSetup(const core::machine::MachineSetup& setup, std::optional<std::vector<int>> toolsWithBitmap) {
   setup_ = setup;
   toolsWithBitmap_ = std::move(toolsWithBitmap);
-  job_.reset();
+  setJob(nullptr);
   setupOnly_ = {};
   setupOnly_.setup = setup_;
+}
+
+void JobDocument::setJob(std::shared_ptr<const core::job::Job> job) {
+  std::shared_ptr<const core::job::Job> old = std::exchange(job_, std::move(job));
+  if (old) (void)QtConcurrent::run([old = std::move(old)]() mutable { old.reset(); });
 }
 
 void JobDocument::setMachine(const core::io::MachineConfig& machine) {

@@ -33,7 +33,9 @@ class JobDocument {
 
   // The last check's Job; its tools are what a run, the Part panel and the reports use.
   const std::shared_ptr<const core::job::Job>& job() const { return job_; }
-  void setJob(std::shared_ptr<const core::job::Job> job) { job_ = std::move(job); }
+  // The Job it replaces is let go on a worker thread: a 100,000-block program's words take
+  // tens of milliseconds to free, which the GUI thread must not spend.
+  void setJob(std::shared_ptr<const core::job::Job> job);
   // The job's tools: the last Job's, else the setup as read.
   const core::machine::ToolInference& tools() const { return job_ ? job_->tools() : setupOnly_; }
 
