@@ -169,6 +169,9 @@ std::shared_ptr<const Job> makeJob(JobInput input) {
   }
   j.diagnostics_.insert(j.diagnostics_.end(), std::make_move_iterator(found.begin()), std::make_move_iterator(found.end()));
   j.stockNotes_ = resolveJobStock(file, program, input.stock, j.tools_.setup, readRun, j.tools_.record.get());
+  // The recorded run has told the tools and the stock all it knows: freed now, so a later
+  // timeline() does not hold two runs of a long program at once (peak memory of `simulate`).
+  j.tools_.record.reset();
   // The run needs a bar: a header without a size is reported on its line (SPEC 2).
   const io::JobHeader& h = file.header;
   if (h.diameter <= 0 || h.length <= 0) {
