@@ -4,6 +4,7 @@
 
 #include "klueng/core/machine/playback.h"
 
+#include <QThread>
 #include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
 #include <cmath>
@@ -254,15 +255,24 @@ void RunController::stepBack() {
   emit frameAdvanced();
 }
 
+namespace {
+// QFuture::waitForFinished runs a pool task that has not started on the waiting
+// thread itself: the Job, its run and the cut would then be made on the GUI thread.
+// This waits for the worker instead.
+void runControllerAwaitWorker(const QFutureWatcherBase& watcher) {
+  while (!watcher.isFinished()) QThread::msleep(1);
+}
+}  // namespace
+
 void RunController::waitForIdle() {
   // Preparing may chain into a background cut ("as fast as possible"): wait for both.
   while (preparing_ || cutting_) {
     if (preparing_) {
-      prepareWatcher_.waitForFinished();
+      runControllerAwaitWorker(prepareWatcher_);
       onPrepared();
     }
     if (cutting_) {
-      backgroundWatcher_.waitForFinished();
+      runControllerAwaitWorker(backgroundWatcher_);
       onBackgroundDone();
     }
   }
