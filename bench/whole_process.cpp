@@ -35,7 +35,7 @@
 
 #include "klueng/core/cut/cut_simulator.h"
 #include "klueng/core/io/tool_library.h"
-#include "klueng/core/machine/job_file.h"
+#include "klueng/core/job/job.h"
 #include "klueng/core/machine/setup_files.h"
 
 extern char** environ;
@@ -214,17 +214,14 @@ int main(int argc, char** argv) {
       if (!row.inProcess) continue;
       const bool interpret = row.label != "check";
       row.inProcessMs.push_back(timeIt([&] {
-        machine::JobFileRequest request;
+        job::JobInput request;
+        request.path = programs[row.program].path.string();
+        request.setup = loaded.setup;
         request.stations = loaded.setup.tools.stations;
-        const machine::JobFile job = machine::loadJobFile(programs[row.program].path.string(), loaded.setup, request,
-                                                          io::shippedToolLibrary());
-        if (!interpret || !job.program || !job.file || job.hasErrors()) return;
-        const machine::Timeline timeline = machine::interpret(*job.program, job.setup, request.run);
-        if (!row.cut) return;
-        cut::CutOptions options;
-        options.checkpointBudgetBytes = 0;
-        cut::CutSimulator sim(timeline, cut::CutSetup::from(job.file->header, job.setup), options);
-        sim.runToEnd();
+        const std::shared_ptr<const job::Job> job = job::makeJob(request);
+        if (!interpret || !job->program() || !job->file() || job->hasErrors()) return;
+        if (!row.cut) (void)job->timeline();
+        else (void)job->cut();
       }));
     }
 

@@ -12,7 +12,7 @@
 #include "klueng/core/design/dxf_import.h"
 #include "klueng/core/design/part_design.h"
 #include "klueng/core/io/program_file.h"
-#include "klueng/core/machine/job.h"
+#include "klueng/core/job/job.h"
 #include "klueng/core/messages.h"
 
 using namespace klueng::core;
@@ -41,8 +41,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (!file.value) std::abort();
   machine::MachineSetup setup;
   setup.machine = options.machine;
-  const machine::CompiledJob job = machine::compileJob(*file.value, setup, {});
-  for (const Diagnostic& d : job.diagnostics)
+  job::JobInput input;
+  input.file = std::move(*file.value);
+  input.setup = setup;
+  input.inferTools = false;  // the generated program's own setup
+  const std::shared_ptr<const job::Job> job = job::makeJob(std::move(input));
+  (void)job->timeline();
+  for (const Diagnostic& d : job->diagnostics())
     if (d.severity == Severity::Error) std::abort();
   return 0;
 }

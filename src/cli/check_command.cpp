@@ -24,7 +24,7 @@
 #include "cli_common.h"
 #include "klueng/core/machine/machine_files.h"
 #include "klueng/core/diagnostic_codes.h"
-#include "klueng/core/machine/job_file.h"
+#include "klueng/core/job/job.h"
 #include "commands.h"
 
 namespace klueng::cli {
@@ -190,7 +190,7 @@ int runCheck(const std::vector<std::string>& args) {
   LoadedConfig config = loadConfig(o.configDir);
   if (!chooseMachine(o.machine, config, o.dialect, o.lang)) return 2;
   std::string error;
-  std::optional<machine::JobFileRequest> request =
+  std::optional<core::job::JobInput> request =
       jobRequest(config, o.dialect, o.powerOnUnits, o.stock, o.tools, error, o.lang);
   if (!request) return usageError(o.lang, error);
   request->calculatorInput = o.calculatorInput;
@@ -207,27 +207,28 @@ int runCheck(const std::vector<std::string>& args) {
     // A program that names its machine is checked on it (the setup with that machine's keys).
     std::vector<Diagnostic> machineWarnings;
     const gcode::Dialect own = programMachine(path, o.dialectGiven, o.dialect, machineWarnings);
-    machine::JobFileRequest fileRequest = *request;
-    std::optional<machine::MachineSetup> ownSetup;
+    core::job::JobInput input = *request;
+    input.path = path;
     if (own != o.dialect) {
-      fileRequest.run.dialect = own;
-      fileRequest.stations = stationLimit(config, own);
-      ownSetup = config.setup;
-      ownSetup->machine = machine::withMachineKeys(config.setup.machine, gcode::machineProfile(own));
+      input.run.dialect = own;
+      input.stations = stationLimit(config, own);
+      input.setup.machine = machine::withMachineKeys(config.setup.machine, gcode::machineProfile(own));
     }
-    machine::JobFile job =
-        machine::loadJobFile(path, ownSetup ? *ownSetup : config.setup, fileRequest, io::shippedToolLibrary());
-    job.diagnostics.insert(job.diagnostics.begin(), machineWarnings.begin(), machineWarnings.end());
-    for (const Diagnostic& n : job.toolNotes) notes.push_back({path, n});
-    for (const Diagnostic& n : job.stockNotes) notes.push_back({path, n});
+    std::shared_ptr<const core::job::Job> job = core::job::makeJob(std::move(input));
+    for (const Diagnostic& n : job->toolNotes()) notes.push_back({path, n});
+    for (const Diagnostic& n : job->stockNotes()) notes.push_back({path, n});
     FileSummary row{path};
-    for (const Diagnostic& d : job.diagnostics) {
+    for (const Diagnostic& d : machineWarnings) {
+      ++row.warnings;
+      all.push_back({path, d});
+    }
+    for (const Diagnostic& d : job->diagnostics()) {
       if (isError(d.severity)) ++row.errors;
       else if (d.severity == Severity::Warning) ++row.warnings;
-      all.push_back({job.fileOf(d), d});
+      all.push_back({job->fileOf(d), d});
     }
-    row.unreadable = job.unreadable;
-    anyUnreadable = anyUnreadable || job.unreadable;
+    row.unreadable = job->unreadable();
+    anyUnreadable = anyUnreadable || job->unreadable();
     anyError = anyError || row.errors > 0;
     summary.push_back(row);
     if (&path == &files.back()) keepUntilExit(std::move(job));

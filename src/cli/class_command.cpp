@@ -21,7 +21,7 @@
 #include "klueng/core/diagnostic_codes.h"
 #include "png_writer.h"
 #include "commands.h"
-#include "klueng/core/cut/class_grading.h"
+#include "klueng/core/job/class_grading.h"
 #include "klueng/core/design/dxf_import.h"
 #include "klueng/core/design/iso_fits.h"
 #include "klueng/core/design/part_design.h"
@@ -106,7 +106,7 @@ std::optional<ClassOptions> parse(const std::vector<std::string>& args) {
 }
 
 // The table as the picture module draws it (klueng-png.so, opened only for --pdf).
-bool writePdf(const ClassOptions& o, const std::vector<cut::ClassRow>& rows, const std::string& configDir) {
+bool writePdf(const ClassOptions& o, const std::vector<core::job::ClassRow>& rows, const std::string& configDir) {
   const render::ClassPdfCells cells(rows, o.lang, !o.reference.empty());
   const std::string reference = std::filesystem::path(o.reference).filename().string();
   const std::string drawing = std::filesystem::path(o.drawing).filename().string();
@@ -154,16 +154,16 @@ int runClass(const std::vector<std::string>& args) {
   for (const auto& fd : config.diagnostics) printDiagnostic(stderr, fd.file, fd.diagnostic, o.lang);
   if (config.unreadable || config.hasErrors()) return 2;
   std::string error;
-  const std::optional<machine::JobFileRequest> request = jobRequest(config, o.dialect, std::nullopt, std::nullopt, {}, error);
+  const std::optional<core::job::JobInput> request = jobRequest(config, o.dialect, std::nullopt, std::nullopt, {}, error);
   if (!request) {
     std::fprintf(stderr, "klueng-cli class: %s\n", error.c_str());
     return 2;
   }
-  cut::GradeAgainst against;
+  core::job::GradeAgainst against;
   against.tolerance = o.tolerance;
-  cut::GradedProgram reference;
+  core::job::GradedProgram reference;
   if (!o.reference.empty()) {
-    reference = cut::gradeProgram(o.reference, config.setup, *request);
+    reference = core::job::gradeProgram(o.reference, *request);
     if (!reference.part) {
       printCliError("class", codes::kCliReferenceFails, o.lang, {o.reference, reference.firstError + reference.alarm});
       return 2;
@@ -191,11 +191,11 @@ int runClass(const std::vector<std::string>& args) {
   for (const std::filesystem::directory_entry& e : std::filesystem::directory_iterator(o.dir, ec))
     if (e.is_regular_file(ec) && io::isProgramFileName(e.path().string())) inputs.push_back(e.path().string());
   if (!outputsAllowed({o.csv, o.pdf}, inputs, o.lang)) return 2;
-  const std::vector<cut::ClassRow> rows = cut::gradeClass(
-      o.dir, against, config.setup, *request,
+  const std::vector<core::job::ClassRow> rows = core::job::gradeClass(
+      o.dir, against, *request,
       [](int i, int n, const std::string& name) { std::fprintf(stderr, "[%d/%d] %s\n", i + 1, n, name.c_str()); });
-  const int passed = static_cast<int>(std::count_if(rows.begin(), rows.end(), [](const cut::ClassRow& r) { return r.pass; }));
-  const std::string table = cut::classCsv(rows, against.hasDrawing);
+  const int passed = static_cast<int>(std::count_if(rows.begin(), rows.end(), [](const core::job::ClassRow& r) { return r.pass; }));
+  const std::string table = core::job::classCsv(rows, against.hasDrawing);
   if (o.csv.empty()) {
     std::fputs(table.c_str(), stdout);
   } else if (!writeOutput(o.csv, table, o.lang)) {

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "klueng/core/machine/job.h"
+#include "klueng/core/machine/setup_files.h"
 #include "klueng/core/machine/subprogram_files.h"
 
 #include <algorithm>
@@ -224,10 +224,10 @@ std::vector<std::string> setupFiles(const LoadedConfig& config) {
           io::macroVariablesPath(config.dir)};
 }
 
-std::vector<std::string> programInputs(const std::string& file, const machine::JobFile& job, const LoadedConfig& config) {
+std::vector<std::string> programInputs(const std::string& file, const core::job::Job& job, const LoadedConfig& config) {
   std::vector<std::string> inputs{file};
-  if (job.program)
-    for (const std::string& sub : job.program->files) inputs.push_back(sub);  // files[0] is "": the program
+  if (job.program())
+    for (const std::string& sub : job.program()->files) inputs.push_back(sub);  // files[0] is "": the program
   for (std::string& setup : setupFiles(config)) inputs.push_back(std::move(setup));
   return inputs;
 }
@@ -246,12 +246,13 @@ int stationLimit(const LoadedConfig& config, gcode::Dialect dialect) {
   return profileLimit > 0 ? std::min(profileLimit, config.setup.tools.stations) : config.setup.tools.stations;
 }
 
-std::optional<machine::JobFileRequest> jobRequest(const LoadedConfig& config, gcode::Dialect dialect,
+std::optional<core::job::JobInput> jobRequest(const LoadedConfig& config, gcode::Dialect dialect,
                                                   std::optional<gcode::InputUnits> powerOnUnits,
                                                   const std::optional<io::JobHeader>& stock,
                                                   const std::vector<std::string>& tools, std::string& error,
                                                   Lang lang) {
-  machine::JobFileRequest request;
+  core::job::JobInput request;
+  request.setup = config.setup;
   request.run.dialect = dialect;
   request.run.powerOnUnits = powerOnUnits;
   request.stock = stock;

@@ -18,7 +18,7 @@
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/io/tool_config.h"
 #include "klueng/core/machine/interpreter.h"
-#include "klueng/core/machine/job_file.h"
+#include "klueng/core/job/job.h"
 #include "klueng/core/machine/setup_files.h"
 #include "klueng/core/machine/tool_inference.h"
 #include "klueng/core/messages.h"
@@ -107,7 +107,7 @@ bool outputsAllowed(const std::vector<std::string>& outputs, const std::vector<s
 // The setup files of `config` (tools.cfg, offset.cfg, machine.cfg, macro_variables.cfg in its folder): inputs too.
 std::vector<std::string> setupFiles(const LoadedConfig& config);
 // What a run of `file` read: the program, its subprogram files and the setup files.
-std::vector<std::string> programInputs(const std::string& file, const core::machine::JobFile& job,
+std::vector<std::string> programInputs(const std::string& file, const core::job::Job& job,
                                        const LoadedConfig& config);
 // Writes with core/io/file_write.h; on failure prints the diagnostic (F1xx,
 // path and reason, in `lang`) and returns false. The old file keeps its bytes.
@@ -118,10 +118,11 @@ bool reportWrite(const std::string& path, const std::optional<core::Diagnostic>&
 // The highest station a T word may name: the dialect's limit, else the turret.
 int stationLimit(const LoadedConfig& config, core::gcode::Dialect dialect);
 
-// What check and simulate ask of machine::loadJobFile: the run's dialect and
-// units, --stock, and the --tool N=ID choices (checked against the turret).
+// What check, simulate, print and class ask of job::makeJob (the path left to
+// set): the setup, the run's dialect and units, --stock, and the --tool N=ID
+// choices (checked against the turret).
 // nullopt with `error` set when a --tool choice is refused (exit 2).
-std::optional<core::machine::JobFileRequest> jobRequest(const LoadedConfig& config, core::gcode::Dialect dialect,
+std::optional<core::job::JobInput> jobRequest(const LoadedConfig& config, core::gcode::Dialect dialect,
                                                         std::optional<core::gcode::InputUnits> powerOnUnits,
                                                         const std::optional<core::io::JobHeader>& stock,
                                                         const std::vector<std::string>& tools, std::string& error,

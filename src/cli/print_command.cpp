@@ -17,7 +17,7 @@
 #include "commands.h"
 #include "klueng/core/io/tool_library.h"
 #include "klueng/core/gcode/decimal_point.h"
-#include "klueng/core/machine/job_file.h"
+#include "klueng/core/job/job.h"
 #include "png_writer.h"
 
 namespace klueng::cli {
@@ -133,42 +133,34 @@ int runPrint(const std::vector<std::string>& args) {
   for (const Diagnostic& d : machineWarnings) printDiagnostic(stderr, o.file, d, o.lang);
   if (config.unreadable || config.hasErrors()) return 2;
   std::string error;
-  std::optional<machine::JobFileRequest> request =
+  std::optional<core::job::JobInput> request =
       jobRequest(config, o.dialect, o.powerOnUnits, o.stock, o.tools, error, o.lang);
   if (!request) {
     std::fprintf(stderr, "klueng-cli print: %s\n", error.c_str());
     return 2;
   }
   request->calculatorInput = o.calculatorInput;
-  const machine::JobFile job = machine::loadJobFile(o.file, config.setup, *request, io::shippedToolLibrary());
-  for (const Diagnostic& n : job.toolNotes) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
-  for (const auto& d : job.diagnostics) printDiagnostic(stderr, job.fileOf(d), d, o.lang);
-  for (const Diagnostic& n : job.stockNotes) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
-  if (job.unreadable || !job.file) return 2;
+  request->path = o.file;
+  const std::shared_ptr<const core::job::Job> made = core::job::makeJob(*request);
+  const core::job::Job& job = *made;
+  for (const Diagnostic& n : job.toolNotes()) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
+  for (const auto& d : job.diagnostics()) printDiagnostic(stderr, job.fileOf(d), d, o.lang);
+  for (const Diagnostic& n : job.stockNotes()) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
+  if (job.unreadable() || !job.file()) return 2;
   // Refused before anything is drawn, as a compiler refuses `-o` naming its source.
   std::vector<std::string> inputs = programInputs(o.file, job, config);
   if (!o.design.empty()) inputs.push_back(o.design);
   if (!outputsAllowed({o.pdf}, inputs, o.lang)) return 2;
 
-  machine::JobOptions jobOptions;
-  jobOptions.run = request->run;
-  jobOptions.folder = std::filesystem::path(o.file).parent_path().string();
   const std::string name = std::filesystem::path(o.file).filename().string();
   KluengPrintPdf in{};
   in.thai = o.lang == Lang::Th ? 1 : 0;
   in.programSheet = o.program ? 1 : 0;
   in.drawingSheet = o.drawing ? 1 : 0;
   in.fileName = name.c_str();
-  in.program = &*job.file;
-  in.setup = &job.setup;
-  in.job = &jobOptions;
+  in.job = &job;
   // The drawing speaks the program's units (its G20/G21, else the power-on units; issue 28 item 4).
-  in.inch = job.program && gcode::programInputUnits(*job.program,
-                                                    gcode::powerOnUnitsOf(request->run.dialect, request->run.powerOnUnits),
-                                                    request->run.dialect) ==
-                               gcode::InputUnits::Inch
-                ? 1
-                : 0;
+  in.inch = job.units() == DisplayUnits::Inch ? 1 : 0;
   std::optional<design::PartDesign> part;
   if (!o.design.empty()) {
     part = readPartDrawing(o.design, {}, config.setup.machine.chuckGrip, o.lang);

@@ -31,7 +31,7 @@
 #include "klueng/core/io/macro_variables.h"
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/io/tool_config.h"
-#include "klueng/core/machine/job_file.h"
+#include "klueng/core/job/job.h"
 #include "klueng/core/io/tool_library.h"
 #include "klueng/core/machine/interpreter.h"
 #include "klueng/core/machine/program_units.h"
@@ -231,43 +231,44 @@ int runSimulate(const std::vector<std::string>& args) {
   for (const Diagnostic& d : machineWarnings) printDiagnostic(o.file, d, o.lang);
   if (config.unreadable || config.hasErrors()) return 2;  // the setup, not the program, is wrong
   std::string error;
-  std::optional<machine::JobFileRequest> request =
+  std::optional<core::job::JobInput> request =
       jobRequest(config, o.dialect, o.powerOnUnits, o.stock, o.tools, error, o.lang);
   if (!request) {
     std::fprintf(stderr, "klueng-cli simulate: %s\n", error.c_str());
     return 2;
   }
   request->calculatorInput = o.calculatorInput;
+  request->path = o.file;
+  request->run.optionalStop = o.optionalStop;
+  request->run.blockSkip = o.blockSkip;
+  // #500-#999 belong to the machine, not to the program's folder (issue 26 item 9): they live in
+  // macro_variables.cfg in the --config folder, else in the user's data folder, between runs.
+  const std::string variablesDir = !o.configDir.empty() ? o.configDir : io::userConfigDir();
+  const std::string variablesPath = variablesDir.empty() ? std::string() : io::macroVariablesPath(variablesDir);
+  io::MacroVariables variables;
+  request->run.persistentVariables = &variables;  // read below, before the run asks for them
   // Read and parse once: tools from the program (library choices, notes say which), the check, the stock.
-  const machine::JobFile& job =
-      keepUntilExit(machine::loadJobFile(o.file, config.setup, *request, io::shippedToolLibrary()));
-  for (const Diagnostic& n : job.toolNotes) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
-  for (const auto& d : job.diagnostics) printDiagnostic(job.fileOf(d), d, o.lang);
-  if (job.unreadable) return 2;
+  const core::job::Job& job = *keepUntilExit(core::job::makeJob(*request));
+  for (const Diagnostic& n : job.toolNotes()) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
+  for (const auto& d : job.diagnostics()) printDiagnostic(job.fileOf(d), d, o.lang);
+  if (job.unreadable()) return 2;
   // An output naming the program, a subprogram file or a setup file would destroy it: refused
   // before the run, as a compiler refuses `-o` naming its source (issue 29).
   if (!outputsAllowed({o.tracePath, o.cut.pngPath, o.cut.profilePath, o.cut.jsonPath, o.cut.svgPath, o.cut.dxfPath},
                           programInputs(o.file, job, config), o.lang))
     return 2;
-  if (!job.file || !job.program || job.hasErrors()) return 1;
-  for (const Diagnostic& n : job.stockNotes) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
-  const machine::MachineSetup& setup = job.setup;
-  const io::ProgramFile& programFile = *job.file;
-  const gcode::Program& program = *job.program;
+  if (!job.file() || !job.program() || job.hasErrors()) return 1;
+  for (const Diagnostic& n : job.stockNotes()) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
+  const machine::MachineSetup& setup = job.setup();
+  const io::ProgramFile& programFile = *job.file();
+  const gcode::Program& program = *job.program();
   machine::RunOptions runOptions = request->run;
-  runOptions.optionalStop = o.optionalStop;
-  runOptions.blockSkip = o.blockSkip;
-  // #500-#999 belong to the machine, not to the program's folder (issue 26 item 9): they live in
-  // macro_variables.cfg in the --config folder, else in the user's data folder, between runs.
-  const std::string variablesDir = !o.configDir.empty() ? o.configDir : io::userConfigDir();
-  const std::string variablesPath = variablesDir.empty() ? std::string() : io::macroVariablesPath(variablesDir);
   const io::ReadResult<io::MacroVariables> stored =
       variablesPath.empty() ? io::ReadResult<io::MacroVariables>{io::MacroVariables{}, {}} : io::readMacroVariables(variablesPath);
   for (const Diagnostic& d : stored.diagnostics) printDiagnostic(variablesPath, d, o.lang);
-  io::MacroVariables variables = stored.value.value_or(io::MacroVariables{});
+  variables = stored.value.value_or(io::MacroVariables{});
   const io::MacroVariables before = variables;
-  runOptions.persistentVariables = &variables;
-  const machine::Timeline& timeline = keepUntilExit(machine::interpret(program, setup, runOptions));
+  const machine::Timeline& timeline = *job.timeline();  // the run, with the stored #500-#999
   for (const Diagnostic& n : timeline.flow.notices) printDiagnostic(job.fileOf(n), n, o.lang);
   if (variables != before && o.persistVariables && stored.value && !variablesPath.empty()) {
     std::error_code ec;

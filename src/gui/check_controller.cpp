@@ -1,4 +1,5 @@
 #include "gui/check_controller.h"
+#include "gui/job_tools.h"
 
 #include <QTimer>
 #include <QtConcurrent/QtConcurrentRun>
@@ -34,9 +35,12 @@ void CheckController::checkText(const QString& text) {
   }
   pending_ = false;
   inFlight_ = true;
-  const Request r = request_();
-  watcher_.setFuture(QtConcurrent::run(checkWithTools, text, r.firstLine, r.options, r.setup, r.overrides, r.stations,
-                                       r.folder, r.calculatorInput, r.toolsBeyondCentre));
+  Request r = request_();
+  watcher_.setFuture(QtConcurrent::run([r = std::move(r), text]() mutable {
+    if (!r.file) r.file.emplace();
+    r.file->gcode = text.toStdString();
+    return core::job::makeJob(std::move(r));
+  }));
   emit started();
 }
 
@@ -48,6 +52,8 @@ void CheckController::onFinished() {
     else releaseFreedMemory();
     return;
   }
+  // The window keeps the Job (JobDocument frees a replaced one off the GUI thread); the
+  // watcher's reference goes when the next check starts, while the window still holds it.
   emit finished(watcher_.result());
   releaseFreedMemory();  // the check's parse and recorded run are gone now
 }

@@ -2,14 +2,14 @@
 // The editor's check while typing (SPEC 12, issue 12): debounced, one check
 // at a time off the GUI thread, the newest text next; a result that is out of
 // date when it arrives is dropped. The window says what to check (Request)
-// and shows what comes back.
+// and shows what comes back: one core::job::Job, made on a worker thread.
 #include <QFutureWatcher>
 #include <QObject>
 #include <QString>
 #include <functional>
-#include <optional>
+#include <memory>
 
-#include "gui/job_tools.h"
+#include "klueng/core/job/job.h"
 
 class QTimer;
 
@@ -18,17 +18,10 @@ namespace klueng::gui {
 class CheckController : public QObject {
   Q_OBJECT
  public:
-  // Everything a check needs besides the text, taken when it starts.
-  struct Request {
-    int firstLine = 1;
-    core::gcode::CheckOptions options;
-    core::machine::MachineSetup setup;
-    std::vector<core::machine::StationOverride> overrides;
-    int stations = 0;  // the highest T station (the dialect's limit, else the turret)
-    QString folder;    // subprogram files; empty for an untitled program
-    std::optional<bool> calculatorInput;  // the file's reading of lengths without a point (Job details)
-    std::optional<bool> toolsBeyondCentre;  // the file's tool side (Job details)
-  };
+  // Everything a check needs besides the text, taken when it starts: the
+  // job's inputs, its `file` holding the header (the text goes in off the GUI thread).
+  using Request = core::job::JobInput;
+  using JobPtr = std::shared_ptr<const core::job::Job>;
 
   CheckController(QObject* parent, std::function<QString()> text, std::function<Request()> request);
   ~CheckController() override;
@@ -41,7 +34,7 @@ class CheckController : public QObject {
 
  signals:
   void started();
-  void finished(const JobToolsResult& result);
+  void finished(const klueng::gui::CheckController::JobPtr& job);
 
  private:
   void onFinished();
@@ -49,7 +42,7 @@ class CheckController : public QObject {
   std::function<QString()> text_;
   std::function<Request()> request_;
   QTimer* timer_;
-  QFutureWatcher<JobToolsResult> watcher_;
+  QFutureWatcher<JobPtr> watcher_;
   bool pending_ = false;   // the text changed while checking
   bool inFlight_ = false;  // covers the gap between the future finishing and its slot
 };

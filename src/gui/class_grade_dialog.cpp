@@ -174,7 +174,7 @@ ClassGradeDialog::ClassGradeDialog(const core::machine::MachineSetup& setup, cor
     if (row >= 0 && row < static_cast<int>(rows_.size())) emit openProgram(QString::fromStdString(rows_[static_cast<std::size_t>(row)].path));
   });
   connect(table_, &QTableWidget::currentCellChanged, this, [this](int row) { showDetails(row); });
-  connect(&watcher_, &QFutureWatcher<std::vector<core::cut::ClassRow>>::finished, this, [this] {
+  connect(&watcher_, &QFutureWatcher<std::vector<core::job::ClassRow>>::finished, this, [this] {
     rows_ = watcher_.result();
     noteShown_ = false;
     showRows();
@@ -232,7 +232,7 @@ void ClassGradeDialog::grade() {
   const std::string folder = folder_->text().toStdString();
   const std::string reference = reference_->text().trimmed().toStdString();
   const double tolerance = tolerance_->value();
-  core::cut::GradeAgainst against;
+  core::job::GradeAgainst against;
   against.tolerance = tolerance;
   const QString drawing = drawing_->text().trimmed();
   if (reference.empty() && drawing.isEmpty()) {
@@ -270,22 +270,22 @@ void ClassGradeDialog::grade() {
   gradedReference_ = QString::fromStdString(reference);
   gradedDrawing_ = drawing;
   gradedTolerance_ = tolerance;
-  core::machine::JobFileRequest request;
+  core::job::JobInput request;  // each student's path is set by the grading
   request.run.dialect = dialect_;
   request.stations = setup_.tools.stations;
-  const core::machine::MachineSetup setup = setup_;
+  request.setup = setup_;
   gradeButton_->setEnabled(false);
   setCursor(Qt::BusyCursor);
   summary_->setText(tr("Grading..."));
-  watcher_.setFuture(QtConcurrent::run([folder, reference, against, request, setup]() mutable -> std::vector<core::cut::ClassRow> {
-    core::cut::GradedProgram ref;
+  watcher_.setFuture(QtConcurrent::run([folder, reference, against, request]() mutable -> std::vector<core::job::ClassRow> {
+    core::job::GradedProgram ref;
     if (!reference.empty()) {
-      ref = core::cut::gradeProgram(reference, setup, request);
+      ref = core::job::gradeProgram(reference, request);
       if (!ref.part) return {};
       against.referencePath = reference;
       against.reference = &*ref.part;
     }
-    return core::cut::gradeClass(folder, against, setup, request);
+    return core::job::gradeClass(folder, against, request);
   }));
 }
 
@@ -298,7 +298,7 @@ void ClassGradeDialog::showRows() {
   table_->setRowCount(static_cast<int>(rows_.size()));
   int passed = 0;
   for (std::size_t i = 0; i < rows_.size(); ++i) {
-    const core::cut::ClassRow& r = rows_[i];
+    const core::job::ClassRow& r = rows_[i];
     const int row = static_cast<int>(i);
     passed += r.pass ? 1 : 0;
     auto set = [this, row](int column, const QString& text) { table_->setItem(row, column, new QTableWidgetItem(text)); };
@@ -358,9 +358,9 @@ bool ClassGradeDialog::saveCsv(const QString& path, QString* why) {
   // A graded program, the reference or the drawing is never the CSV's name (issue 29).
   QString refused = outputIsInput(path, reference_->text());
   if (refused.isEmpty() && !gradedDrawing_.isEmpty()) refused = outputIsInput(path, gradedDrawing_);
-  for (const core::cut::ClassRow& row : rows_)
+  for (const core::job::ClassRow& row : rows_)
     if (refused.isEmpty()) refused = outputIsInput(path, QString::fromStdString(row.path));
-  if (refused.isEmpty()) refused = writeFileChecked(path, core::cut::classCsv(rows_, !gradedDrawing_.isEmpty()));
+  if (refused.isEmpty()) refused = writeFileChecked(path, core::job::classCsv(rows_, !gradedDrawing_.isEmpty()));
   if (why) *why = refused;
   return refused.isEmpty();
 }
@@ -368,7 +368,7 @@ bool ClassGradeDialog::saveCsv(const QString& path, QString* why) {
 bool ClassGradeDialog::savePdf(const QString& path, QString* why) {
   QString refused = outputIsInput(path, reference_->text());
   if (refused.isEmpty() && !gradedDrawing_.isEmpty()) refused = outputIsInput(path, gradedDrawing_);
-  for (const core::cut::ClassRow& row : rows_)
+  for (const core::job::ClassRow& row : rows_)
     if (refused.isEmpty()) refused = outputIsInput(path, QString::fromStdString(row.path));
   if (refused.isEmpty()) {
     const core::Lang lang = Language::coreLang();

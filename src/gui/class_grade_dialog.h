@@ -1,7 +1,7 @@
 #pragma once
 // File > Grade a class... (issues 11 and 28): every program in a folder against
 // a reference program and/or the teacher's drawing with tolerances (a part file
-// or DXF), as `klueng-cli class` grades them (core::cut::gradeClass): one row per
+// or DXF), as `klueng-cli class` grades them (core::job::gradeClass): one row per
 // student with pass/fail, errors, alarm, cycle time, the largest leftover and
 // gouge on the diameter, and how many of the drawing's dimensions are in
 // tolerance; the selected student's dimensions (tolerance, limits, measured,
@@ -11,7 +11,7 @@
 #include <QFutureWatcher>
 #include <vector>
 
-#include "klueng/core/cut/class_grading.h"
+#include "klueng/core/job/class_grading.h"
 #include "klueng/core/machine/interpreter.h"
 
 class QComboBox;
@@ -40,7 +40,7 @@ class ClassGradeDialog : public QDialog {
   QTableWidget* table() const { return table_; }
   QTableWidget* details() const { return details_; }  // the selected student's dimensions
   QLabel* summary() const { return summary_; }
-  const std::vector<core::cut::ClassRow>& rows() const { return rows_; }
+  const std::vector<core::job::ClassRow>& rows() const { return rows_; }
   // The table as CSV; false with `why` (UI language) when refused or not written, the old file kept.
   bool saveCsv(const QString& path, QString* why = nullptr);
   // The grades as the CLI's --pdf draws them, in the UI language; false with `why` as saveCsv.
@@ -74,13 +74,13 @@ class ClassGradeDialog : public QDialog {
   QLabel* summary_;
   QTableWidget* table_;
   QTableWidget* details_;
-  std::vector<core::cut::ClassRow> rows_;
+  std::vector<core::job::ClassRow> rows_;
   // What the rows were graded against (for the PDF and the columns shown).
   QString gradedReference_, gradedDrawing_;
   QString layer_, layerOf_;  // the DXF layer picked, and for which drawing
   double gradedTolerance_ = 0.05;
   bool noteShown_ = false;  // the summary holds a message, not counts
-  QFutureWatcher<std::vector<core::cut::ClassRow>> watcher_;
+  QFutureWatcher<std::vector<core::job::ClassRow>> watcher_;
 };
 
 }  // namespace klueng::gui

@@ -4,7 +4,7 @@
 
 #include "gui/file_save.h"
 #include "klueng/core/diagnostic_codes.h"
-#include "klueng/core/machine/job_check.h"
+#include "klueng/core/machine/stock_inference.h"
 #include "klueng/core/machine/stock_inference.h"
 
 namespace klueng::gui {
@@ -42,19 +42,13 @@ LoadedProgram Document::load(const QString& path, const core::io::JobHeader& def
   return out;
 }
 
-bool Document::reinferStock(const QString& gcode, const core::machine::MachineSetup& setup,
-                            const core::machine::RunOptions& run) {
+bool Document::takeInferredStock(const core::io::JobHeader& resolved, std::vector<core::Diagnostic> notes) {
   const auto source = file_.header.stockSource;
   if (!file_.plainGcode || (source != core::io::StockSource::Inferred && source != core::io::StockSource::Default))
     return false;
-  const std::string text = gcode.toStdString();
   core::io::JobHeader header = file_.header;
-  takeStock(header, core::io::JobHeader{});
-  const core::machine::StockInference inferred =
-      core::machine::inferStockFromText(text, file_.gcodeFirstLine, setup, run, file_.header.calculatorInput);
-  if (inferred.found) inferred.applyTo(header);
-  else header.stockSource = core::io::StockSource::Default;
-  stockNotes_ = core::machine::stockNotes(header, &inferred, text, file_.gcodeFirstLine);
+  takeStock(header, resolved);
+  stockNotes_ = std::move(notes);
   const bool changed = header.diameter != file_.header.diameter || header.length != file_.header.length ||
                        header.bore != file_.header.bore || header.diameterUnit != file_.header.diameterUnit;
   file_.header = header;

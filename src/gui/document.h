@@ -50,12 +50,11 @@ class Document : public QObject {
                             const core::machine::MachineSetup& setup = {},
                             const core::machine::RunOptions& run = {});
 
-  // A plain file whose stock was inferred (or defaulted) infers it again from
-  // `gcode` — after the dialect or the units changed, the same text may mean
-  // another approach. Job details and headers are left alone. Returns true
-  // when the stock changed.
-  bool reinferStock(const QString& gcode, const core::machine::MachineSetup& setup,
-                    const core::machine::RunOptions& run);
+  // A plain file whose stock was inferred (or defaulted) takes the stock a
+  // Job resolved (`resolved`, with its notes) — after the dialect or the units
+  // changed, the same text may mean another approach. Job details and headers
+  // are left alone. Returns true when the stock changed.
+  bool takeInferredStock(const core::io::JobHeader& resolved, std::vector<core::Diagnostic> notes);
 
   // Start an untitled program with the given job details.
   void reset(const core::io::JobHeader& header);

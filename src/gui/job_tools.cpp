@@ -10,31 +10,11 @@
 #endif
 #include <QStringList>
 
-#include "klueng/core/machine/job_check.h"
 #include "klueng/core/io/tool_library.h"
 
 namespace klueng::gui {
 
 namespace machine = core::machine;
-
-JobToolsResult checkWithTools(const QString& text, int firstLine, core::gcode::CheckOptions options,
-                              const machine::MachineSetup& setup, const std::vector<machine::StationOverride>& overrides,
-                              int stations, const QString& folder, std::optional<bool> calculatorInput,
-                              std::optional<bool> toolsBeyondCentre) {
-  core::machine::JobCheck job = machine::checkJob(text.toStdString(), firstLine, std::move(options), setup,
-                                                  core::io::shippedToolLibrary(), overrides, stations,
-                                                  folder.toStdString(), calculatorInput, toolsBeyondCentre);
-  JobToolsResult result;
-  result.diagnostics = std::move(job.diagnostics);
-  result.inference = std::move(job.inference);
-  // The recorded run was the check's evidence; the window never reads it, and
-  // keeping it would hold a second whole timeline beside the run's (issue 29 item 8).
-  result.inference.record.reset();
-  result.fit = job.fit;
-  result.fitBlocks = job.fitBlocks;
-  result.units = job.units;
-  return result;
-}
 
 namespace {
 QString overridesKey(const QString& filePath) {

@@ -66,20 +66,20 @@ namespace klueng::gui {
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::make_unique<Settings>()) {
   setObjectName(QStringLiteral("mainWindow"));
   setWindowIcon(QIcon(QStringLiteral(":/icons/klueng.svg")));
-  dialect_ = settings_->dialect();
-  powerOnUnits_ = settings_->powerOnUnits();
+  jobDoc_.setDialect(settings_->dialect());
+  jobDoc_.setPowerOnUnits(settings_->powerOnUnits());
   shownUnits_ = settings_->shownUnits();
-  programUnits_ = core::gcode::powerOnUnitsOf(dialect_, powerOnUnits_) == core::gcode::InputUnits::Inch
+  programUnits_ = core::gcode::powerOnUnitsOf(jobDoc_.dialect(), jobDoc_.powerOnUnits()) == core::gcode::InputUnits::Inch
                       ? core::DisplayUnits::Inch
                       : core::DisplayUnits::Mm;  // until the first check says the program's
 
   editor_ = new CodeEditor(this);
   editor_->setObjectName(QStringLiteral("codeEditor"));
-  editor_->setDialect(dialect_);
+  editor_->setDialect(jobDoc_.dialect());
 
   runner_ = new RunController(this);
-  runner_->setDialect(dialect_);
-  runner_->setPowerOnUnits(powerOnUnits_);
+  runner_->setDialect(jobDoc_.dialect());
+  runner_->setPowerOnUnits(jobDoc_.powerOnUnits());
   runner_->setOptionalStop(settings_->optionalStop());
   runner_->setBlockSkip(settings_->blockSkip());
 
@@ -87,8 +87,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   docs_ = new DocumentManager(this, editor_, settings_.get(), [this] {
     DocumentManager::LoadContext context;
     context.setup = runner_->machineSetup();
-    context.run.dialect = dialect_;
-    context.run.powerOnUnits = powerOnUnits_;
+    context.run.dialect = jobDoc_.dialect();
+    context.run.powerOnUnits = jobDoc_.powerOnUnits();
     return context;
   });
   document_ = docs_->document();
@@ -97,8 +97,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
     source.program = currentProgramFile();
     source.displayName = document_->displayName();
     source.filePath = document_->filePath();
-    source.setup = toolInference_.setup;
-    source.dialect = dialect_;
+    source.setup = jobDoc_.tools().setup;
+    source.dialect = jobDoc_.dialect();
     source.units = displayUnits();
     source.design = document_->design();
     return source;
@@ -182,7 +182,6 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   // Only real edits re-check; the highlighter's re-colouring changes no characters.
   connect(editor_->document(), &QTextDocument::contentsChange, this, [this](int, int removed, int added) {
     if ((removed == 0 && added == 0) || docs_->isFillingEditor()) return;
-    runnerStale_ = true;
     // What the last run said (its alarm, its end, its notices) was about the old text.
     if (!banner_->text().isEmpty() && (bannerKind_ == BannerKind::Alarm || bannerKind_ == BannerKind::RunEnded))
       hideBanner();
@@ -196,7 +195,6 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
     checker_->schedule();
   });
   connect(document_, &Document::headerChanged, this, [this] {
-    runnerStale_ = true;
     updateStockLabel();
     // Draw the new stock at once; the runner re-reads the whole program before a run.
     if (runner_->state() == RunState::Idle && !runner_->isBusy()) {
@@ -271,7 +269,6 @@ void MainWindow::connectDocuments() {
   });
   connect(docs_, &DocumentManager::cleared, this, [this] {
     setupUndo_->clear();  // one undo history per document
-    runnerStale_ = true;
     updateTitle();
     checkNow();
   });
@@ -282,12 +279,11 @@ void MainWindow::connectDocuments() {
   connect(docs_, &DocumentManager::loadFailed, this, &MainWindow::loadFailed);
   connect(docs_, &DocumentManager::loaded, this, [this](const QString& path, const QString& text) {
     setupUndo_->clear();
-    toolOverrides_ = loadToolOverrides(path);
-    runnerStale_ = true;
+    jobDoc_.setOverrides(loadToolOverrides(path));
     updateTitle();
     // A program that names its machine at its head ((MACHINE: id), issue 27) selects it.
     core::gcode::Dialect named{};
-    if (core::gcode::parseDialectId(document_->header().machine, named) && named != dialect_) setDialect(named);
+    if (core::gcode::parseDialectId(document_->header().machine, named) && named != jobDoc_.dialect()) setDialect(named);
     checker_->checkText(text);  // the text just loaded: no need to read it back from the editor
     emit fileLoaded(path);
   });
@@ -380,38 +376,39 @@ core::io::ProgramFile MainWindow::currentProgramFile() const {
 }
 
 CheckController::Request MainWindow::checkRequest() const {
-  CheckController::Request r;
-  r.firstLine = document_->gcodeFirstLine();
-  r.options.dialect = dialect_;
-  r.options.powerOnUnits = powerOnUnits_;
-  r.options.toolsWithBitmap = toolsWithBitmap_;
-  r.options.turretStations = setup_.tools.stations;
-  r.options.modalRules = true;  // issue 11: the alarms the modal state shows, while typing
-  const int profileLimit = core::gcode::machineProfile(dialect_).maxToolStation;
-  r.stations = profileLimit > 0 ? std::min(profileLimit, setup_.tools.stations) : setup_.tools.stations;
-  r.setup = setup_;
-  r.overrides = toolOverrides_;
-  r.folder = programFolder();
-  r.calculatorInput = document_->header().calculatorInput;
-  r.toolsBeyondCentre = document_->header().toolsBeyondCentre;
-  return r;
+  core::io::ProgramFile file;  // the header and line numbering; the text goes in off the GUI thread
+  file.header = document_->header();
+  file.plainGcode = document_->isPlainGcode();
+  file.gcodeFirstLine = document_->gcodeFirstLine();
+  return jobDoc_.checkInput(std::move(file), programFolder().toStdString());
 }
 
-void MainWindow::onCheckFinished(const JobToolsResult& result) {
+void MainWindow::onCheckFinished(const CheckController::JobPtr& job) {
+  const std::vector<core::Diagnostic> found = job->programFileDiagnostics();
   lastDiagnostics_ = document_->fileDiagnostics();
-  lastDiagnostics_.insert(lastDiagnostics_.end(), result.diagnostics.begin(), result.diagnostics.end());
-  if (result.fit) dialectOffer_->offer(*result.fit, result.fitBlocks);
+  // A header size the file reading already reported is said once.
+  for (const core::Diagnostic& d : found)
+    if (std::none_of(lastDiagnostics_.begin(), lastDiagnostics_.end(), [&](const core::Diagnostic& f) {
+          return f.code == d.code && f.range.line == d.range.line && f.range.file == d.range.file;
+        }))
+      lastDiagnostics_.push_back(d);
+  if (job->fit()) dialectOffer_->offer(*job->fit(), job->fitBlocks());
   else dialectOffer_->clear();
   // The job's tools: library choices for the stations the program uses (a note per choice in Tool Select).
-  const bool toolsChanged = !sameTools(result.inference.setup, toolInference_.setup);
-  toolInference_ = result.inference;
+  const bool toolsChanged = !sameTools(job->tools().setup, jobDoc_.tools().setup);
+  jobDoc_.setJob(job);
   // Which word decided how lengths without a decimal point are read (point_reading.h), for the strip.
   pointNote_.reset();
-  for (const core::Diagnostic& d : result.diagnostics)
+  for (const core::Diagnostic& d : found)
     if (d.code == core::codes::kLengthsInIncrements || d.code == core::codes::kLengthsWhole) pointNote_ = d;
-  if (toolsChanged) runner_->setMachineSetup(toolInference_.setup);
+  if (toolsChanged) runner_->setMachineSetup(jobDoc_.tools().setup);
+  // After a dialect or units change, a plain file's inferred bar is the one this Job resolved.
+  if (restockOnNextCheck_ && job->file()) {
+    restockOnNextCheck_ = false;
+    document_->takeInferredStock(job->file()->header, job->stockNotes());
+  }
   updateStockLabel();  // the setup strip lists the tools just decided
-  programUnits_ = result.units;  // a G20 program speaks inches on View ▸ Units shown ▸ Auto
+  programUnits_ = job->units();  // a G20 program speaks inches on View ▸ Units shown ▸ Auto
   applyDisplayUnits();
   std::stable_sort(lastDiagnostics_.begin(), lastDiagnostics_.end(), [](const auto& a, const auto& b) {
     return a.range.line != b.range.line ? a.range.line < b.range.line : a.range.column < b.range.column;
@@ -447,8 +444,7 @@ void MainWindow::loadMachineSetup(const QString& dir) {
   if (!dir.isEmpty()) configDirOverride_ = dir;
   const core::machine::LoadedSetup loaded = core::machine::loadMachineSetup(configDirOverride_.toStdString());
   configDir_ = QString::fromStdString(loaded.dir);
-  setup_ = loaded.setup;
-  toolsWithBitmap_ = loaded.toolsWithBitmap();
+  jobDoc_.setSetup(loaded.setup, loaded.toolsWithBitmap());  // the next check decides the job's tools
   // A setup file the reader refused is said at once, file and line, above the editor.
   const bool problems = std::any_of(loaded.diagnostics.begin(), loaded.diagnostics.end(),
                                     [](const core::machine::SetupDiagnostic& d) { return core::isError(d.diagnostic.severity); });
@@ -465,12 +461,10 @@ void MainWindow::loadMachineSetup(const QString& dir) {
     }, false);
   // The machines folders may name the remembered machine only now; its machine.cfg keys join the setup.
   updateMachineMenu();
-  if (const core::gcode::Dialect remembered = settings_->dialect(); remembered != dialect_) setDialect(remembered);
-  setup_.machine = core::machine::withMachineKeys(setup_.machine, core::gcode::machineProfile(dialect_));
-  runner_->setMachineSetup(setup_);
-  if (designer_) designer_->setMachineSetup(setup_);
-  toolInference_ = {};  // the next check decides the job's tools from the new tables
-  toolInference_.setup = setup_;
+  if (const core::gcode::Dialect remembered = settings_->dialect(); remembered != jobDoc_.dialect()) setDialect(remembered);
+  jobDoc_.setMachine(core::machine::withMachineKeys(jobDoc_.setup().machine, core::gcode::machineProfile(jobDoc_.dialect())));
+  runner_->setMachineSetup(jobDoc_.setup());
+  if (designer_) designer_->setMachineSetup(jobDoc_.setup());
 }
 
 QString MainWindow::programFolder() const {
@@ -479,13 +473,12 @@ QString MainWindow::programFolder() const {
 
 void MainWindow::syncRunner() {
   if (checker_->isScheduled()) checkNow();
-  if (!runnerStale_) return;
+  // The runner compares: an unchanged program keeps its run, a changed one makes a new Job.
   const QList<int> lines = editor_->breakpointFileLines();
   runner_->setBreakpoints(QSet<int>(lines.begin(), lines.end()));
   runner_->setProgram(currentProgramFile(), document_->displayName());
   // The program's folder is the control's memory: subprogram files (O1000.nc) come from there.
   runner_->setProgramFolder(programFolder());
-  runnerStale_ = false;
 }
 
 void MainWindow::runToCursor() {
@@ -602,7 +595,7 @@ void MainWindow::updateStockLabel() {
   const core::io::StockSource source = document_->header().stockSource;
   setupStrip_->showSetup(document_->stockNotes(),
                          source == core::io::StockSource::Inferred || source == core::io::StockSource::Default,
-                         document_->isPlainGcode(), toolInference_, {document_->header().calculatorInput, pointNote_, document_->header().toolsBeyondCentre});
+                         document_->isPlainGcode(), jobDoc_.tools(), {document_->header().calculatorInput, pointNote_, document_->header().toolsBeyondCentre});
 }
 
 QString MainWindow::stockSourceText() const { return setupStrip_ ? setupStrip_->stockText() : QString(); }
@@ -639,7 +632,7 @@ void MainWindow::showJobDetails() {
     edit.setPosition(static_cast<int>(before.size() - tail), QTextCursor::KeepAnchor);
     edit.insertText(after.mid(head, after.size() - head - tail));
   }
-  if (core::gcode::parseDialectId(chosen.machine, d) && d != dialect_) setDialect(d);
+  if (core::gcode::parseDialectId(chosen.machine, d) && d != jobDoc_.dialect()) setDialect(d);
 }
 
 void MainWindow::applyJobDetails(const core::io::JobHeader& header) {
@@ -671,9 +664,9 @@ void MainWindow::showToolSelect() { showToolSelectFor(0); }
 
 void MainWindow::showToolSelectFor(int station) {
   ToolSelectDialog dlg(configDir_, this);
-  dlg.setProgramTools(toolInference_, toolOverrides_);
+  dlg.setProgramTools(jobDoc_.tools(), jobDoc_.overrides());
   if (station > 0) dlg.setCurrentTool(station);
-  const SetupSnapshot before = SetupSnapshot::read(configDir_, toolOverrides_);
+  const SetupSnapshot before = SetupSnapshot::read(configDir_, jobDoc_.overrides());
   if (dlg.exec() != QDialog::Accepted) return;
   const QString dir = dlg.savedConfigDir();
   pushSetupChange(tr("Tool Select"), dir, before, SetupSnapshot::read(dir, dlg.jobOverrides()));
@@ -681,22 +674,21 @@ void MainWindow::showToolSelectFor(int station) {
 
 void MainWindow::showOffsetDefine() {
   OffsetDefineDialog dlg(configDir_, this);
-  const SetupSnapshot before = SetupSnapshot::read(configDir_, toolOverrides_);
+  const SetupSnapshot before = SetupSnapshot::read(configDir_, jobDoc_.overrides());
   if (dlg.exec() != QDialog::Accepted) return;
   const QString dir = dlg.savedConfigDir();
-  pushSetupChange(tr("Offset Define"), dir, before, SetupSnapshot::read(dir, toolOverrides_));
+  pushSetupChange(tr("Offset Define"), dir, before, SetupSnapshot::read(dir, jobDoc_.overrides()));
 }
 
 void MainWindow::pushSetupChange(const QString& text, const QString& dir, const SetupSnapshot& before,
                                  const SetupSnapshot& after) {
   const auto reload = [this](const QString& folder, const std::vector<core::machine::StationOverride>& overrides,
                              const QString& error) {
-    toolOverrides_ = overrides;
-    saveToolOverrides(document_->filePath(), toolOverrides_);
+    jobDoc_.setOverrides(overrides);
+    saveToolOverrides(document_->filePath(), jobDoc_.overrides());
     loadMachineSetup(folder);
     if (!error.isEmpty())
       showBanner(BannerKind::Setup, [error] { return tr("The machine setup could not be written back: %1").arg(error); }, true);
-    runnerStale_ = true;
     checkNow();  // empty offset rows may take a library tool's nose radius and tip
   };
   reload(dir, after.overrides, {});  // the dialog wrote the files; this takes them in
@@ -705,7 +697,7 @@ void MainWindow::pushSetupChange(const QString& text, const QString& dir, const 
 
 void MainWindow::showHelpContents() {
   if (!help_) help_ = new HelpContents(this);
-  help_->setDialect(dialect_);
+  help_->setDialect(jobDoc_.dialect());
   const std::optional<std::pair<char, int>> code = editor_->codeAtCursor();  // F1 on G71 opens G71
   help_->showCode(code ? code->first : 'G', code ? code->second : -1);
 }

@@ -13,6 +13,7 @@
 #include <optional>
 
 #include "gui/check_controller.h"
+#include "gui/job_document.h"
 #include "gui/job_tools.h"
 #include "gui/document.h"
 #include "gui/run_controller.h"
@@ -91,7 +92,7 @@ class MainWindow : public QMainWindow {
   bool isBusy() const;
   // Diagnostics of the last finished check (checker + file header).
   const std::vector<core::Diagnostic>& diagnostics() const { return lastDiagnostics_; }
-  core::gcode::Dialect dialect() const { return dialect_; }
+  core::gcode::Dialect dialect() const { return jobDoc_.dialect(); }
   void setDialect(core::gcode::Dialect d);
   // Units before any G20/G21 (Dialect menu; remembered): nullopt = the dialect's.
   void setPowerOnUnits(std::optional<core::gcode::InputUnits> units);
@@ -149,7 +150,7 @@ class MainWindow : public QMainWindow {
   void showBusyIndicator();
 
   CheckController::Request checkRequest() const;
-  void onCheckFinished(const JobToolsResult& result);
+  void onCheckFinished(const CheckController::JobPtr& job);
   void showDiagnostics();
 
   void loadMachineSetup(const QString& dir = {});
@@ -215,21 +216,15 @@ class MainWindow : public QMainWindow {
   std::vector<core::Diagnostic> lastDiagnostics_;
   std::vector<core::Diagnostic> runDiagnostics_;  // the last alarm / refused run
 
-  core::gcode::Dialect dialect_ = core::gcode::Dialect::Fanuc;
-  std::optional<core::gcode::InputUnits> powerOnUnits_;  // nullopt: as the dialect's machine
   std::optional<core::DisplayUnits> shownUnits_;         // View ▸ Units shown; nullopt: Auto
   core::DisplayUnits programUnits_ = core::DisplayUnits::Mm;  // the last check's: what Auto shows
   void applyDisplayUnits();
   QString configDir_;
   QString configDirOverride_;  // where the dialogs last saved the .cfg files
-  core::machine::MachineSetup setup_;   // tools.cfg / offset.cfg / machine.cfg as read
-  std::optional<std::vector<int>> toolsWithBitmap_;
-  // Tools from the program (job_tools.h): the stations set for this file, and
-  // the last inference (its setup is what the run uses).
-  std::vector<core::machine::StationOverride> toolOverrides_;
-  core::machine::ToolInference toolInference_;
+  // The job's inputs (setup, dialect, units, the stations set for this file) and its last Job.
+  JobDocument jobDoc_;
+  bool restockOnNextCheck_ = false;  // the dialect or units changed: the next Job says the bar
   std::optional<core::Diagnostic> pointNote_;  // the last check's I103/I104, for the setup strip
-  bool runnerStale_ = true;
 };
 
 }  // namespace klueng::gui

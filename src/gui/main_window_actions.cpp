@@ -94,7 +94,7 @@ void MainWindow::createActions() {
   on("actionPrintPreview", [this] { printPreview(); });
   on("actionExportPdf", [this] { exportPdf(); });
   on("actionGradeClass", [this] {
-    auto* dialog = new ClassGradeDialog(setup_, dialect_, document_->filePath(), this);
+    auto* dialog = new ClassGradeDialog(jobDoc_.setup(), jobDoc_.dialect(), document_->filePath(), this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     connect(dialog, &ClassGradeDialog::openProgram, this, [this](const QString& path) { openFile(path); });
     dialog->show();
@@ -191,7 +191,7 @@ void MainWindow::createActions() {
   for (const core::gcode::Dialect d :
        {core::gcode::Dialect::Fanuc, core::gcode::Dialect::Haas, core::gcode::Dialect::Classic}) {
     QAction* a = action(dialectActionName(d));
-    a->setChecked(d == dialect_);
+    a->setChecked(d == jobDoc_.dialect());
     connect(a, &QAction::triggered, this, [this, d] { setDialect(d); });
   }
   const std::pair<const char*, std::optional<core::gcode::InputUnits>> unitChoices[] = {
@@ -200,7 +200,7 @@ void MainWindow::createActions() {
       {"actionUnitsInch", core::gcode::InputUnits::Inch}};
   for (const auto& [name, units] : unitChoices) {
     QAction* a = action(QString::fromLatin1(name));
-    a->setChecked(units == powerOnUnits_);
+    a->setChecked(units == jobDoc_.powerOnUnits());
     const auto u = units;
     connect(a, &QAction::triggered, this, [this, u] { setPowerOnUnits(u); });
   }
@@ -246,9 +246,9 @@ void MainWindow::createDocks() {
   part_ = new PartPanel(this, [this] {
     PartPanel::Source source;
     source.program = currentProgramFile();
-    source.setup = toolInference_.setup;
-    source.run.dialect = dialect_;
-    source.run.powerOnUnits = powerOnUnits_;
+    source.setup = jobDoc_.tools().setup;
+    source.run.dialect = jobDoc_.dialect();
+    source.run.powerOnUnits = jobDoc_.powerOnUnits();
     source.folder = programFolder().toStdString();
     return source;
   });
@@ -286,15 +286,18 @@ void MainWindow::createDocks() {
   view3d_->hide();
   // Issue 31: the operator panel beside the output screen; its touch-off gives the run its offset rows.
   operatorPanel_ = new OperatorPanel(this, [this] {
-    return OperatorPanel::Source{toolInference_.setup, document_->header(), dialect_, runner_->timeline(),
+    return OperatorPanel::Source{jobDoc_.tools().setup, document_->header(), jobDoc_.dialect(), runner_->timeline(),
                                  currentProgramFile()};
   });
   addDockWidget(Qt::RightDockWidgetArea, operatorPanel_);
   operatorPanel_->hide();
   connect(operatorPanel_, &OperatorPanel::offsetsChanged, this, [this](const core::io::OffsetTable& offsets) {
-    setup_.offsets = toolInference_.setup.offsets = offsets;
-    runner_->setMachineSetup(toolInference_.setup);
-    runnerStale_ = true;
+    // The run takes them at once; the next check's Job holds them too.
+    core::machine::MachineSetup run = jobDoc_.tools().setup;
+    run.offsets = offsets;
+    jobDoc_.setOffsets(offsets);
+    runner_->setMachineSetup(run);
+    checkNow();
   });
   connect(part_, &PartPanel::overlayChanged, output_, &OutputView::setPartOverlay);
   // Real edits only: re-colouring by the highlighter changes no characters.
@@ -341,7 +344,7 @@ void MainWindow::updateMachineMenu() {
     }
     const std::string_view text = thai ? p->nameTh : p->nameEn;
     a->setText(QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size())));
-    a->setChecked(p->dialect == dialect_);
+    a->setChecked(p->dialect == jobDoc_.dialect());
   }
 }
 
@@ -366,8 +369,8 @@ void MainWindow::toggleLanguage() {
 }
 
 void MainWindow::setDialect(core::gcode::Dialect d) {
-  const bool machineKeys = !core::gcode::machineProfile(d).file.empty() || !core::gcode::machineProfile(dialect_).file.empty();
-  dialect_ = d;
+  const bool machineKeys = !core::gcode::machineProfile(d).file.empty() || !core::gcode::machineProfile(jobDoc_.dialect()).file.empty();
+  jobDoc_.setDialect(d);
   settings_->setDialect(d);
   // A machine file's machine.cfg keys (rapids, travel ...) are part of the setup: read it again with them.
   if (machineKeys && !configDir_.isEmpty()) loadMachineSetup();
@@ -376,12 +379,9 @@ void MainWindow::setDialect(core::gcode::Dialect d) {
   action(dialectActionName(d))->setChecked(true);
   if (help_) help_->setDialect(d);
   if (operatorPanel_ && operatorPanel_->control()) operatorPanel_->powerOn();  // another machine, its own control
-  // The same plain text may approach the part elsewhere in another dialect (units, cycle forms).
-  core::machine::RunOptions run;
-  run.dialect = d;
-  run.powerOnUnits = powerOnUnits_;
-  document_->reinferStock(editor_->toPlainText(), runner_->machineSetup(), run);
-  runnerStale_ = true;
+  // The same plain text may approach the part elsewhere in another dialect (units, cycle forms):
+  // the next check's Job says where (off the GUI thread).
+  restockOnNextCheck_ = true;
   checkNow();
 }
 
@@ -396,18 +396,14 @@ void MainWindow::setShownUnits(std::optional<core::DisplayUnits> units) {
 }
 
 void MainWindow::setPowerOnUnits(std::optional<core::gcode::InputUnits> units) {
-  powerOnUnits_ = units;
+  jobDoc_.setPowerOnUnits(units);
   settings_->setPowerOnUnits(units);
   runner_->setPowerOnUnits(units);
   action(!units                                      ? QStringLiteral("actionUnitsMachine")
          : *units == core::gcode::InputUnits::Inch ? QStringLiteral("actionUnitsInch")
                                                    : QStringLiteral("actionUnitsMm"))
       ->setChecked(true);  // the group unchecks the others
-  core::machine::RunOptions run;
-  run.dialect = dialect_;
-  run.powerOnUnits = units;
-  document_->reinferStock(editor_->toPlainText(), runner_->machineSetup(), run);
-  runnerStale_ = true;
+  restockOnNextCheck_ = true;  // inch or mm changes the approach: the next check's Job says the bar
   checkNow();
 }
 

@@ -31,7 +31,7 @@ void MainWindow::showPartDesigner() {
     return;
   }
   // Closing only hides it: reopened in the same session it still holds the design (issue 28 item 8).
-  designer_ = new PartDesignerDialog(setup_, dialect_, document_->header(), this);
+  designer_ = new PartDesignerDialog(jobDoc_.setup(), jobDoc_.dialect(), document_->header(), this);
   connect(document_, &Document::headerChanged, designer_, [this] { designer_->setJobHeader(document_->header()); });
   connect(designer_, &PartDesignerDialog::jobDetailsRequested, this, &MainWindow::showJobDetails);
   connect(designer_, &PartDesignerDialog::useStock, this, [this](double diameter, double length, double bore) {

@@ -29,7 +29,7 @@
 
 #include "gui/language.h"
 #include "klueng/core/diagnostic_codes.h"
-#include "klueng/core/machine/job.h"
+#include "klueng/core/job/job.h"
 #include "klueng/core/messages.h"
 #include "render/lathe_painters.h"
 #include "render/tool_sprite.h"
@@ -744,12 +744,16 @@ void OperatorPanel::pressCycleStart() {
       if (control_->exercise()) {
         // The tools of the program as it is now (the last run may be of older text, or none yet).
         const Source s = source_();
-        core::machine::JobOptions options;
-        options.run.dialect = s.dialect;
-        const core::machine::CompiledJob job = core::machine::compileJob(s.programFile, control_->runSetup(), options);
+        core::job::JobInput input;
+        input.file = s.programFile;
+        input.setup = control_->runSetup();
+        input.inferTools = false;
+        input.folder = std::string();
+        input.run.dialect = s.dialect;
+        const std::shared_ptr<const core::job::Job> job = core::job::makeJob(std::move(input));
         std::set<int> tools;
-        if (job.timeline)
-          for (const core::machine::Move& m : job.timeline->moves)
+        if (const core::machine::Timeline* t = job->timeline())
+          for (const core::machine::Move& m : t->moves)
             if (m.tool > 0) tools.insert(m.tool);
         used.assign(tools.begin(), tools.end());
       }

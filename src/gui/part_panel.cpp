@@ -15,7 +15,8 @@
 #include "klueng/core/cut/comp_compare.h"
 #include "klueng/core/cut/part_check.h"
 #include "klueng/core/cut/part_features.h"
-#include "klueng/core/machine/job.h"
+#include "gui/off_gui_thread.h"
+#include "klueng/core/job/job.h"
 #include "klueng/core/diagnostic_codes.h"
 #include "klueng/core/messages.h"
 #include "render/lathe_painters.h"
@@ -147,22 +148,46 @@ void PartPanel::analyse() {
   list_->clear();
   features_ = defects_ = differences_ = nullptr;
   base_ = PartOverlay{};
-  machine::JobOptions job;
-  job.run = src.run;
-  job.run.persistentVariables = nullptr;  // a look at the part must not change #500-#999
-  job.folder = src.folder;
-  const machine::CompiledJob compiled = machine::compileJob(src.program, src.setup, job);
-  if (!compiled.timeline) {
+  core::job::JobInput input;
+  input.file = src.program;
+  input.setup = src.setup;  // the job's tools, as the last check decided them
+  input.inferTools = false;
+  input.run = src.run;
+  input.run.persistentVariables = nullptr;  // a look at the part must not change #500-#999
+  input.folder = src.folder;
+  const int comparison = compare_->currentIndex();
+  // The job, its run, the part check and the comparison: on a worker thread (issue 30).
+  struct Analysis {
+    std::shared_ptr<const core::job::Job> job;
+    cut::PartCheck check;
+    cut::PartFeatures part;
+    std::optional<cut::CompComparison> comparison;
+  };
+  const auto done = offGuiThread([input = std::move(input), comparison]() {
+    auto a = std::make_shared<Analysis>();
+    a->job = core::job::makeJob(input);
+    const machine::Timeline* timeline = a->job->timeline();
+    if (!timeline) return a;
+    const core::job::Job& job = *a->job;
+    const cut::CutSetup setup = cut::CutSetup::from(job.file()->header, job.setup());
+    const machine::Timeline programmed = cut::programmedPath(*job.program(), job.setup(), job.input().run, *timeline);
+    a->check = cut::checkPart(*timeline, programmed, setup);
+    a->part = cut::partFeatures(a->check.cut);  // the part the check cut, not a second cut
+    if (comparison > 0) {
+      const auto with = comparison == 1 ? cut::CompareWith::NoCompensation : cut::CompareWith::SharpNose;
+      a->comparison = cut::compareCompensation(*job.program(), job.setup(), job.input().run, setup, with);
+    }
+    return a;
+  });
+  if (!done->job->timeline()) {
     summaryMaker_ = [] { return tr("The program has errors: correct them, then check the part."); };
     summary_->setText(summaryMaker_());
     QApplication::restoreOverrideCursor();
     emit overlayChanged(base_);
     return;
   }
-  const cut::CutSetup setup = cut::CutSetup::from(src.program.header, src.setup);
-  const machine::Timeline programmed = cut::programmedPath(compiled.program, src.setup, job.run, *compiled.timeline);
-  const cut::PartCheck check = cut::checkPart(*compiled.timeline, programmed, setup);
-  const cut::PartFeatures part = cut::partFeatures(check.cut);  // the part the check cut, not a second cut
+  const cut::PartCheck& check = done->check;
+  const cut::PartFeatures& part = done->part;
 
   features_ = new QTreeWidgetItem(list_);
   for (const auto* side : {&part.outside, &part.inside})
@@ -186,13 +211,13 @@ void PartPanel::analyse() {
   QString summary = check.defects.empty() && !check.nothingCut
                         ? tr("The cut part is the part the program describes: no gouge, no leftover.")
                         : tr("%n finding(s): see Part check.", nullptr, static_cast<int>(check.defects.size()));
-  if (compare_->currentIndex() > 0) {
-    const auto with = compare_->currentIndex() == 1 ? cut::CompareWith::NoCompensation : cut::CompareWith::SharpNose;
-    const cut::CompComparison c = cut::compareCompensation(compiled.program, src.setup, job.run, setup, with);
+  if (done->comparison) {
+    const auto with = comparison == 1 ? cut::CompareWith::NoCompensation : cut::CompareWith::SharpNose;
+    const cut::CompComparison& c = *done->comparison;
     differences_ = new QTreeWidgetItem(list_);
     if (c.other) base_.otherOutline = render::stockShapeFromStock(*c.other).outline;
     for (const cut::CompDifference& d : c.differences) {
-      row(differences_, qs(cut::describeDifference(d, compiled.program, with, lang, units_)),
+      row(differences_, qs(cut::describeDifference(d, *done->job->program(), with, lang, units_)),
           QStringLiteral("Z%1").arg(qs(units_.position(d.z))), d.line, d.zLeft, d.zRight);
       const double r = d.diameter / 2.0;
       base_.bands.push_back({d.zLeft, d.zRight, r, r + d.radial, QColor(255, 140, 0)});

@@ -15,6 +15,8 @@
 #include <QPrinterInfo>
 
 #include "gui/file_save.h"
+#include "gui/off_gui_thread.h"
+#include "klueng/core/job/job.h"
 #include "gui/language.h"
 #include "render/drawing_dimensions.h"
 
@@ -43,8 +45,18 @@ render::ReportData ReportController::reportData(const Source& source, bool withP
   data.date = QDate::currentDate();
   data.units = source.units;
   if (source.design) data.marks = render::designMarks(*source.design);
+  core::job::JobInput input;
+  input.file = source.program;
+  input.setup = source.setup;  // the job's tools, as a run uses them
+  input.inferTools = false;
+  input.run.dialect = source.dialect;
+  input.folder = std::string();
   QApplication::setOverrideCursor(Qt::WaitCursor);
-  render::addRunResults(data, source.setup, source.dialect, reportLanguage(), withPart);  // one run for both
+  // The job, its run and its cut on a worker thread (issue 30); one run for both sheets.
+  data = offGuiThread([data, input = std::move(input), lang = reportLanguage(), withPart]() mutable {
+    render::addRunResults(data, *core::job::makeJob(std::move(input)), lang, withPart);
+    return data;
+  });
   QApplication::restoreOverrideCursor();
   return data;
 }

@@ -6,6 +6,7 @@
 
 #include "klueng/core/machine/playback.h"
 
+#include <QThread>
 #include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
 #include <cmath>
@@ -15,7 +16,7 @@
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/io/tool_library.h"
 #include "klueng/core/machine/flow_view.h"
-#include "klueng/core/machine/job.h"
+#include "klueng/core/job/job.h"
 #include "klueng/core/machine/subprogram_files.h"
 
 namespace klueng::gui {
@@ -57,7 +58,22 @@ RunController::~RunController() { waitForIdle(); }
 
 // ---------------------------------------------------------------- inputs
 
+namespace {
+// What a run of the file reads: its text and line numbers, the bar, and the
+// file's choices of decimal point reading and tool side (not its title fields).
+bool runControllerSameProgram(const core::io::ProgramFile& a, const core::io::ProgramFile& b) {
+  const core::io::JobHeader& x = a.header;
+  const core::io::JobHeader& y = b.header;
+  return a.gcodeFirstLine == b.gcodeFirstLine && a.plainGcode == b.plainGcode && x.diameter == y.diameter &&
+         x.diameterUnit == y.diameterUnit && x.length == y.length && x.lengthUnit == y.lengthUnit &&
+         x.bore == y.bore && x.calculatorInput == y.calculatorInput && x.toolsBeyondCentre == y.toolsBeyondCentre &&
+         a.gcode == b.gcode;
+}
+}  // namespace
+
 void RunController::setProgram(const core::io::ProgramFile& file, const QString& displayName) {
+  // The same program again changes nothing: a paused or finished run stays as it is.
+  if (displayName == displayName_ && runControllerSameProgram(file, file_)) return;
   file_ = file;
   displayName_ = displayName;
   invalidate();
@@ -241,15 +257,24 @@ void RunController::stepBack() {
   emit frameAdvanced();
 }
 
+namespace {
+// QFuture::waitForFinished runs a pool task that has not started on the waiting
+// thread itself: the Job, its run and the cut would then be made on the GUI thread.
+// This waits for the worker instead.
+void runControllerAwaitWorker(const QFutureWatcherBase& watcher) {
+  while (!watcher.isFinished()) QThread::msleep(1);
+}
+}  // namespace
+
 void RunController::waitForIdle() {
   // Preparing may chain into a background cut ("as fast as possible"): wait for both.
   while (preparing_ || cutting_) {
     if (preparing_) {
-      prepareWatcher_.waitForFinished();
+      runControllerAwaitWorker(prepareWatcher_);
       onPrepared();
     }
     if (cutting_) {
-      backgroundWatcher_.waitForFinished();
+      runControllerAwaitWorker(backgroundWatcher_);
       onBackgroundDone();
     }
   }
@@ -275,16 +300,20 @@ void RunController::prepareAndThen(Pending what) {
   options.optionalStop = true;   // record every M01; the switch decides while playing
   prepareWatcher_.setFuture(QtConcurrent::run([file, setup, options, folder]() {
     auto result = std::make_shared<Prepared>();
-    machine::JobOptions job;
-    job.run = options;
-    job.folder = folder;
-    machine::CompiledJob compiled = machine::compileJob(file, setup, job);
-    result->files = compiled.program.files;
-    if (compiled.hasErrors()) {
-      for (auto& d : compiled.diagnostics) result->errors.push_back(d);
+    core::job::JobInput input;
+    input.file = file;
+    input.setup = setup;  // the job's tools, as the last check decided them
+    input.inferTools = false;
+    input.run = options;
+    input.folder = folder;
+    const std::shared_ptr<const core::job::Job> job = core::job::makeJob(std::move(input));
+    if (job->program()) result->files = job->program()->files;
+    if (job->hasErrors() || !job->timeline()) {
+      for (const auto& d : job->diagnostics()) result->errors.push_back(d);
       return result;
     }
-    result->timeline = std::make_shared<machine::Timeline>(std::move(*compiled.timeline));
+    // The job's timeline, not a copy: the pointer keeps the job alive.
+    result->timeline = std::shared_ptr<const machine::Timeline>(job, job->timeline());
     // A guessed tool that touches gives way to another of its kind that fits: one whole cut
     // here (more only when a guess touched), so the run draws the tool that fits.
     if (std::any_of(setup.tools.guessed.begin(), setup.tools.guessed.end(), [](bool g) { return g; })) {

@@ -5,8 +5,8 @@
 // to machine time and stops where the user asked.
 //
 // Public API (F1 wires these into the main window)
-//   setProgram(file, displayName)   the document's current text (call on every change;
-//                                   cheap: the timeline is rebuilt lazily on the next run)
+//   setProgram(file, displayName)   the document's current text (call before each run; the same
+//                                   program again keeps the run; a new one is made lazily on the next run)
 //   setMachineSetup(setup)          tools.cfg / offset.cfg / machine.cfg (after the dialogs)
 //   setDialect(d), setOptionalStop(on), setBlockSkip(on)   switches (SPEC 10)
 //   setBreakpoints(QSet<int> fileLines)                      editor margin breakpoints
@@ -158,7 +158,7 @@ class RunController : public QObject {
  private:
   enum class Pending { None, Go, Step, StepOver, StepOut, RunToLine };
   struct Prepared {
-    std::shared_ptr<core::machine::Timeline> timeline;
+    std::shared_ptr<const core::machine::Timeline> timeline;  // the job's own (it keeps the job alive)
     std::vector<std::string> files;        // Program::files
     QList<core::Diagnostic> errors;
     // Guessed tools that touched, replaced by others of their kind that fit (issue 26).
@@ -196,7 +196,7 @@ class RunController : public QObject {
   double maxStepMm_ = 0.0;
   bool stale_ = true;
 
-  std::shared_ptr<core::machine::Timeline> timeline_;
+  std::shared_ptr<const core::machine::Timeline> timeline_;
   std::vector<core::machine::ToolTime> toolTimes_;  // of timeline_, worked out once
   std::unique_ptr<core::cut::CutSimulator> cut_;
   mutable render::StockShape stockShape_;

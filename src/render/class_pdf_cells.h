@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "klueng/core/cut/class_grading.h"
+#include "klueng/core/job/class_grading.h"
 #include "klueng/core/gcode/word_format.h"
 #include "render/class_pdf_input.h"
 
@@ -13,8 +13,8 @@ namespace klueng::render {
 class ClassPdfCells {
  public:
   // `lang`: the features' and verdicts' words; `reference`: graded against a reference program.
-  ClassPdfCells(const std::vector<core::cut::ClassRow>& rows, core::Lang lang, bool reference) {
-    for (const core::cut::ClassRow& r : rows) {
+  ClassPdfCells(const std::vector<core::job::ClassRow>& rows, core::Lang lang, bool reference) {
+    for (const core::job::ClassRow& r : rows) {
       cells_.push_back(r.file);
       cells_.push_back(r.pass ? "pass" : "fail");
       cells_.push_back(r.graded.errors > 0 ? std::to_string(r.graded.errors) + " (" + r.graded.firstError + ")" : "0");

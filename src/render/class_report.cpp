@@ -215,12 +215,17 @@ extern "C" __attribute__((visibility("default"))) int klueng_class_pdf(const Klu
     const auto dialect = static_cast<core::gcode::Dialect>(in->dialect);
     const render::ReportLanguage lang = in->thai ? render::ReportLanguage::Thai : render::ReportLanguage::English;
     for (int i = 0; i < in->sheets; ++i) {
-      const auto file = core::io::readProgramFile(in->sheetPaths[i]);
-      if (!file.value) continue;  // unreadable: its row in the table says so
+      // The job as the grading read it: its folder's subprograms, its tools, its stock.
+      core::job::JobInput input;
+      input.path = in->sheetPaths[i];
+      input.setup = setup.setup;
+      input.run.dialect = dialect;
+      const std::shared_ptr<const core::job::Job> job = core::job::makeJob(std::move(input));
+      if (!job->file()) continue;  // unreadable: its row in the table says so
       render::ReportData data;
-      data.program = *file.value;
+      data.program = *job->file();
       data.fileName = QFileInfo(QString::fromUtf8(in->sheetPaths[i])).fileName();
-      render::addRunResults(data, setup.setup, dialect, lang, true);
+      render::addRunResults(data, *job, lang, true);
       writer.setPageOrientation(QPageLayout::Portrait);
       writer.newPage();
       render::paintProgramSheet(painter, writer, data, lang);

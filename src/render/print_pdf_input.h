@@ -8,16 +8,14 @@
 
 #include "klueng/core/design/part_design.h"
 #include "klueng/core/io/program_file.h"
-#include "klueng/core/machine/job.h"
+#include "klueng/core/job/job.h"
 
 struct KluengPrintPdf {
   int thai;                                         // 1: Thai texts and dates
   int programSheet;                                 // 1: the program sheet (portrait)
   int drawingSheet;                                 // 1: the drawing sheet (landscape)
   const char* fileName;                             // shown on the sheets
-  const klueng::core::io::ProgramFile* program;     // header (with the run's stock) + G-code
-  const klueng::core::machine::MachineSetup* setup; // tools and offsets of the run
-  const klueng::core::machine::JobOptions* job;     // dialect, power-on units, subprogram folder
+  const klueng::core::job::Job* job;               // the program (stock resolved), its tools and its run
   int inch;                                         // 1: the drawing's dimensions in inches (a G20 program)
   // The part design the program was made from (print --design): its tolerances
   // and roughness marks go on the drawing; nullptr: none.

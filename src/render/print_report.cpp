@@ -27,15 +27,15 @@ extern "C" __attribute__((visibility("default"))) int klueng_print_pdf(const Klu
     }
     return 0;
   };
-  if (!in || !bytes || !size || !in->program || !in->setup || !in->job) return fail(QStringLiteral("nothing to print"));
+  if (!in || !bytes || !size || !in->job || !in->job->file()) return fail(QStringLiteral("nothing to print"));
   if (!in->programSheet && !in->drawingSheet) return fail(QStringLiteral("no sheet asked for"));
   render::ensureGuiApplication();
   const render::ReportLanguage lang = in->thai ? render::ReportLanguage::Thai : render::ReportLanguage::English;
   render::ReportData data;
-  data.program = *in->program;
+  data.program = *in->job->file();
   data.fileName = QString::fromUtf8(in->fileName ? in->fileName : "");
   data.units = core::UnitFormat(in->inch ? core::DisplayUnits::Inch : core::DisplayUnits::Mm);
-  render::addRunResults(data, *in->setup, *in->job, lang, in->drawingSheet != 0);
+  render::addRunResults(data, *in->job, lang, in->drawingSheet != 0);
   if (in->design) data.marks = render::designMarks(*in->design);
 
   // Into memory: QPdfWriter does not report a failed file write (issue 29), the CLI's writer does.

@@ -13,7 +13,7 @@
 
 #include "klueng/core/cut/cut_simulator.h"
 #include "klueng/core/cut/part_span.h"
-#include "klueng/core/machine/job.h"
+#include "klueng/core/job/job.h"
 #include "klueng/core/gcode/checker.h"
 
 #ifndef KLUENG_VERSION
@@ -183,29 +183,30 @@ namespace {
 
 // One run of the program for a report: its cycle times into `times` (when
 // given), then its finished part, cut only when `cutPart` (the drawing).
-StockShape runForReport(const core::io::ProgramFile& file, const core::machine::MachineSetup& setup,
-                        const core::machine::JobOptions& job, ReportLanguage lang, QString* note, ReportData* times,
+// The job's timeline and cut are computed here when nobody asked before: call on a worker thread.
+StockShape runForReport(const core::job::Job& job, ReportLanguage lang, QString* note, ReportData* times,
                         bool cutPart, core::cut::PartFeatures* features = nullptr) {
+  if (!job.file()) return StockShape{};
+  const core::io::ProgramFile& file = *job.file();
   const StockShape blank = stockShapeFromBlank(file.header.diameterMm(), file.header.lengthMm(), file.header.boreMm());
-  const core::machine::CompiledJob compiled = core::machine::compileJob(file, setup, job);
-  if (times && compiled.timeline) {
-    times->cycleTime = compiled.timeline->cycleTime();
-    times->cycleTimeToAlarm = compiled.timeline->alarm.has_value();
-    times->toolTimes = compiled.timeline->timeByTool();
+  const core::machine::Timeline* timeline = job.timeline();
+  if (times && timeline) {
+    times->cycleTime = timeline->cycleTime();
+    times->cycleTimeToAlarm = timeline->alarm.has_value();
+    times->toolTimes = timeline->timeByTool();
   }
   if (!cutPart) return blank;
   if (file.header.diameterMm() <= 0 || file.header.lengthMm() <= 0) {
     if (note) *note = thai(lang) ? QStringLiteral("ขนาดชิ้นงานไม่ถูกต้อง") : QStringLiteral("The stock size is not valid.");
     return blank;
   }
-  if (!compiled.timeline) {
+  if (!timeline) {
     if (note)
       *note = thai(lang) ? QStringLiteral("โปรแกรมมีข้อผิดพลาด: ภาพนี้แสดงชิ้นงานก่อนกลึง")
                          : QStringLiteral("The program has errors: the drawing shows the uncut bar.");
     return blank;
   }
-  core::cut::CutSimulator cut(*compiled.timeline, core::cut::CutSetup::from(file.header, setup));
-  cut.runToEnd();
+  const core::cut::CutSimulator& cut = *job.cut();
   if (cut.alarm() && note)
     *note = thai(lang) ? QStringLiteral("โปรแกรมหยุดด้วยสัญญาณเตือน: ภาพนี้แสดงชิ้นงานจนถึงจุดที่หยุด")
                        : QStringLiteral("The program stopped on an alarm: the drawing shows the part up to it.");
@@ -220,28 +221,15 @@ StockShape runForReport(const core::io::ProgramFile& file, const core::machine::
   return shape;
 }
 
-core::machine::JobOptions jobFor(core::gcode::Dialect dialect) {
-  core::machine::JobOptions job;
-  job.run.dialect = dialect;
-  return job;
-}
-
 }  // namespace
 
-StockShape finishedPart(const core::io::ProgramFile& file, const core::machine::MachineSetup& setup,
-                        core::gcode::Dialect dialect, ReportLanguage lang, QString* note) {
-  return runForReport(file, setup, jobFor(dialect), lang, note, nullptr, true);
+StockShape finishedPart(const core::job::Job& job, ReportLanguage lang, QString* note) {
+  return runForReport(job, lang, note, nullptr, true);
 }
 
-void addRunResults(ReportData& data, const core::machine::MachineSetup& setup, const core::machine::JobOptions& job,
-                   ReportLanguage lang, bool withPart) {
-  const StockShape part = runForReport(data.program, setup, job, lang, &data.partNote, &data, withPart, &data.features);
+void addRunResults(ReportData& data, const core::job::Job& job, ReportLanguage lang, bool withPart) {
+  const StockShape part = runForReport(job, lang, &data.partNote, &data, withPart, &data.features);
   if (withPart) data.part = part;
-}
-
-void addRunResults(ReportData& data, const core::machine::MachineSetup& setup, core::gcode::Dialect dialect,
-                   ReportLanguage lang, bool withPart) {
-  addRunResults(data, setup, jobFor(dialect), lang, withPart);
 }
 
 QString durationText(double seconds, ReportLanguage lang) {
@@ -255,8 +243,8 @@ QString durationText(double seconds, ReportLanguage lang) {
                      : QStringLiteral("%1 s").arg(rest, 0, 'f', 1);
 }
 
-void addCycleTimes(ReportData& data, const core::machine::MachineSetup& setup, core::gcode::Dialect dialect) {
-  addRunResults(data, setup, dialect, ReportLanguage::English, false);
+void addCycleTimes(ReportData& data, const core::job::Job& job) {
+  addRunResults(data, job, ReportLanguage::English, false);
 }
 
 namespace {

@@ -8,7 +8,7 @@
 //   reportDate(date, lang)         "October 19, 1999" / "19 ตุลาคม พ.ศ. 2542" (Buddhist era).
 //   ReportData                     what both sheets print: the program file (header + G-code),
 //                                  its file name, the date, the finished part.
-//   finishedPart(file, setup, dialect, &note)   checks, interprets and cuts the program to its
+//   finishedPart(job, lang, &note)   the job's finished cut (interpreted and cut on first ask)
 //                                  end with the core; the uncut bar (and a note) if it cannot run.
 //   paintProgramSheet(painter, device, data, lang)   header block on every page, numbered
 //                                  listing (file line numbers), "Page n"; returns the page count.
@@ -31,7 +31,7 @@
 #include "klueng/core/gcode/code_table.h"
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/machine/interpreter.h"
-#include "klueng/core/machine/job.h"
+#include "klueng/core/job/job.h"
 #include "klueng/core/units.h"
 #include "render/drawing_dimensions.h"
 #include "render/lathe_painters.h"
@@ -64,22 +64,19 @@ struct ReportData {
   std::vector<core::machine::ToolTime> toolTimes;
 };
 
-// Fills data.cycleTime and data.toolTimes by running the program (no cutting).
-void addCycleTimes(ReportData& data, const core::machine::MachineSetup& setup, core::gcode::Dialect dialect);
+// Fills data.cycleTime and data.toolTimes from the job's run (no cutting).
+// These ask the Job for its timeline (and cut): call them on a worker thread.
+void addCycleTimes(ReportData& data, const core::job::Job& job);
 // The same and, with `withPart`, data.part, data.features and data.partNote as
-// finishedPart gives them — from one run of the program.
-void addRunResults(ReportData& data, const core::machine::MachineSetup& setup, const core::machine::JobOptions& job,
-                   ReportLanguage lang, bool withPart);  // power-on units, subprogram folder as the job says
-void addRunResults(ReportData& data, const core::machine::MachineSetup& setup, core::gcode::Dialect dialect,
-                   ReportLanguage lang, bool withPart);
+// finishedPart gives them — from the job's one run.
+void addRunResults(ReportData& data, const core::job::Job& job, ReportLanguage lang, bool withPart);
 // "3 min 12.4 s" / "3 นาที 12.4 วินาที".
 QString durationText(double seconds, ReportLanguage lang);
 
 // Runs the whole program with the core and returns the stock it leaves. If the
 // program has errors or stops on an alarm, `note` says so (in `lang`) and the
 // shape is the uncut bar or the part up to the alarm.
-StockShape finishedPart(const core::io::ProgramFile& file, const core::machine::MachineSetup& setup,
-                        core::gcode::Dialect dialect, ReportLanguage lang, QString* note);
+StockShape finishedPart(const core::job::Job& job, ReportLanguage lang, QString* note);
 
 int paintProgramSheet(QPainter& painter, QPagedPaintDevice& device, const ReportData& data, ReportLanguage lang);
 void paintDrawingSheet(QPainter& painter, QPagedPaintDevice& device, const ReportData& data, ReportLanguage lang);

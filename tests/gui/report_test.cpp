@@ -22,7 +22,7 @@
 
 #include "gui_test_runner.h"
 #include "fresh_user_folders.h"
-#include "klueng/core/machine/job.h"
+#include "klueng/core/job/job.h"
 #include "gui/code_editor.h"
 #include "gui/language.h"
 #include "gui/main_window.h"
@@ -40,12 +40,22 @@ namespace {
 
 using gui_test::loadSetup;
 
+// The job a report prints: the program as given, the setup's own tools.
+std::shared_ptr<const core::job::Job> jobOf(const core::io::ProgramFile& program, core::gcode::Dialect dialect) {
+  core::job::JobInput input;
+  input.file = program;
+  input.setup = loadSetup();
+  input.run.dialect = dialect;
+  input.inferTools = false;
+  return core::job::makeJob(std::move(input));
+}
+
 render::ReportData sampleData(ReportLanguage lang) {
   render::ReportData d;
   d.program = *core::io::readProgramFile(KLUENG_SAMPLES_DIR "/01-step-shaft.txt").value;
   d.fileName = QStringLiteral("01-step-shaft.txt");
   d.date = QDate(1999, 10, 19);
-  render::addRunResults(d, loadSetup(), core::gcode::Dialect::Fanuc, lang, true);  // part, features, cycle time
+  render::addRunResults(d, *jobOf(d.program, core::gcode::Dialect::Fanuc), lang, true);  // part, features, cycle time
   return d;
 }
 
@@ -162,7 +172,8 @@ class ReportTest : public QObject {
     QVERIFY(text.contains(QRegularExpression(QStringLiteral("Length \\(mm\\.\\)\\s+100\\b"))));
     // Cycle time of the whole program and of each tool, from the core's timeline.
     const render::ReportData data = sampleData(ReportLanguage::English);
-    const auto timeline = core::machine::compileJob(data.program, loadSetup(), {}).timeline;
+    const auto job = jobOf(data.program, core::gcode::Dialect::Fanuc);  // a second job: its own run
+    const core::machine::Timeline* timeline = job->timeline();
     QVERIFY(timeline && !timeline->alarm);
     QCOMPARE(data.cycleTime, timeline->cycleTime());
     QVERIFY(data.cycleTime > 60.0);
@@ -324,15 +335,15 @@ class ReportTest : public QObject {
     render::ReportData d;
     d.program = *core::io::readProgramFile(KLUENG_SAMPLES_DIR "/04-grammar-errors.txt").value;
     d.date = QDate(1999, 10, 19);
-    d.part = render::finishedPart(d.program, loadSetup(), core::gcode::Dialect::Classic, ReportLanguage::English,
-                                  &d.partNote);
+    const auto job = jobOf(d.program, core::gcode::Dialect::Classic);
+    d.part = render::finishedPart(*job, ReportLanguage::English, &d.partNote);
     QCOMPARE(d.partNote, QStringLiteral("The program has errors: the drawing shows the uncut bar."));
     QCOMPARE(d.part.blank, d.part.fill.boundingRect());   // nothing cut
     const QString pdf = out(QStringLiteral("drawing-errors.pdf"));
     writePdf(pdf, d, ReportLanguage::English, Sheet::Drawing);
     QVERIFY(pdfText(pdf).contains(QStringLiteral("The program has errors")));
     QString thaiNote;
-    render::finishedPart(d.program, loadSetup(), core::gcode::Dialect::Classic, ReportLanguage::Thai, &thaiNote);
+    render::finishedPart(*job, ReportLanguage::Thai, &thaiNote);
     QVERIFY(thaiNote.contains(QStringLiteral("ข้อผิดพลาด")));
   }
 

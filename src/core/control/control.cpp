@@ -11,7 +11,7 @@
 #include "klueng/core/diagnostic_codes.h"
 #include "klueng/core/gcode/code_table.h"
 #include "klueng/core/geometry.h"
-#include "klueng/core/machine/job.h"
+#include "klueng/core/job/job.h"
 #include "klueng/core/machine/kinematics.h"
 
 namespace klueng::core::control {
@@ -437,14 +437,18 @@ std::vector<Diagnostic> Control::runMdi(std::string_view text) {
   const AxisValues now = tip();
   setup.machine.startX = now.x;
   setup.machine.startZ = now.z;
-  machine::JobOptions options;
-  options.run.dialect = dialect_;
-  options.run.optionalStop = optionalStop;
-  options.run.blockSkip = blockDelete;
-  const machine::CompiledJob job = machine::compileJob(file, setup, options);
-  std::vector<Diagnostic> out = job.diagnostics;
-  if (job.hasErrors() || !job.timeline) return out;
-  const machine::Timeline run = withOverrides(*job.timeline, overrides_, setup_.machine, dryRun, jogFeed);
+  job::JobInput input;
+  input.file = file;
+  input.setup = setup;
+  input.inferTools = false;  // the turret as it stands at the panel
+  input.folder = std::string();
+  input.run.dialect = dialect_;
+  input.run.optionalStop = optionalStop;
+  input.run.blockSkip = blockDelete;
+  const std::shared_ptr<const job::Job> job = job::makeJob(std::move(input));
+  std::vector<Diagnostic> out = job->diagnostics();
+  if (job->hasErrors() || !job->timeline()) return out;
+  const machine::Timeline run = withOverrides(*job->timeline(), overrides_, setup_.machine, dryRun, jogFeed);
   if (!run.moves.empty()) {
     const Move& last = run.moves.back();
     const int tool = last.tool >= 1 && last.tool <= io::kMaxStations ? last.tool : station_;

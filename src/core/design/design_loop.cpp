@@ -12,7 +12,7 @@
 #include "klueng/core/cut/part_check.h"
 #include "klueng/core/diagnostic_codes.h"
 #include "klueng/core/io/program_file.h"
-#include "klueng/core/machine/job.h"
+#include "klueng/core/job/job.h"
 
 namespace klueng::core::design {
 
@@ -173,15 +173,20 @@ DesignLoop runDesignLoop(const PartDesign& part, const GenerateOptions& options,
     loop.problems = file.diagnostics;
     return loop;
   }
-  machine::JobOptions jobOptions;
-  jobOptions.run.dialect = options.dialect;
-  const machine::CompiledJob job = machine::compileJob(*file.value, setup, jobOptions);
-  for (const Diagnostic& d : job.diagnostics)
+  // The generated program is made for this setup: its tools are checked as they are, not inferred.
+  job::JobInput input;
+  input.file = std::move(*file.value);
+  input.folder = std::string();
+  input.setup = setup;
+  input.run.dialect = options.dialect;
+  input.inferTools = false;
+  const std::shared_ptr<const job::Job> job = job::makeJob(std::move(input));
+  for (const Diagnostic& d : job->diagnostics())
     if (d.severity == Severity::Error || d.severity == Severity::Alarm) loop.problems.push_back(d);
-  if (!job.timeline || !loop.problems.empty()) return loop;
-  const cut::CutSetup cutSetup = cut::CutSetup::from(file.value->header, setup);
-  const machine::Timeline programmed = cut::programmedPath(job.program, setup, jobOptions.run, *job.timeline);
-  cut::PartCheck check = cut::checkPart(*job.timeline, programmed, cutSetup);
+  if (!job->timeline() || !loop.problems.empty()) return loop;
+  const cut::CutSetup cutSetup = cut::CutSetup::from(job->file()->header, setup);
+  const machine::Timeline programmed = cut::programmedPath(*job->program(), setup, job->input().run, *job->timeline());
+  cut::PartCheck check = cut::checkPart(*job->timeline(), programmed, cutSetup);
   if (check.stoppedBy) loop.problems.push_back(*check.stoppedBy);
   loop.cut = std::make_unique<cut::Stock>(check.cut);
   loop.features = cut::partFeatures(*loop.cut);

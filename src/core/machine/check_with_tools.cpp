@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <future>
 
-#include "klueng/core/machine/job.h"
+#include "klueng/core/machine/setup_files.h"
 #include "run_warnings.h"
 
 namespace klueng::core::machine::detail {

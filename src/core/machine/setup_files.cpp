@@ -7,7 +7,6 @@
 #include <fmt/format.h>
 
 #include "klueng/core/io/text_encoding.h"
-#include "klueng/core/machine/job.h"
 #include "klueng/core/machine/machine_files.h"
 #include "klueng/core/diagnostic_codes.h"
 
@@ -80,6 +79,18 @@ LoadedSetup loadMachineSetup(const std::string& explicitDir, bool readBitmaps) {
     if (image.ok() && readBitmaps) loaded.bitmaps[i] = std::move(*image.value);
   }
   return loaded;
+}
+
+std::vector<int> toolsWithBitmap(const MachineSetup& setup) {
+  std::vector<int> out;
+  std::error_code ec;
+  const int stations = static_cast<int>(setup.tools.bitmap.size());
+  for (int t = 1; t <= stations; ++t) {
+    const std::string path = setup.tools.bitmapPath(t);
+    if (setup.tools.bitmapUnreadable[static_cast<std::size_t>(t - 1)]) continue;
+    if (!path.empty() && std::filesystem::is_regular_file(path, ec)) out.push_back(t);
+  }
+  return out;
 }
 
 }  // namespace klueng::core::machine

@@ -10,6 +10,8 @@
 
 #include "klueng/core/geometry.h"
 #include "klueng/core/diagnostic_codes.h"
+#include "klueng/core/gcode/parser.h"
+#include "klueng/core/machine/point_reading.h"
 
 namespace klueng::core::machine {
 
@@ -322,6 +324,18 @@ std::vector<Diagnostic> stockNotes(const io::JobHeader& stock, const StockInfere
   if (r.bore > 0.0)
     notes.push_back(note(codes::kBoreInferred, r.boreLine, {number(r.bore), lineText(gcode, firstLine, r.boreLine)}));
   return notes;
+}
+
+StockInference inferStockFromText(std::string_view gcode, int firstLine, const MachineSetup& setup,
+                                  const RunOptions& options, std::optional<bool> chosenCalculatorInput) {
+  gcode::Program program = gcode::parse(gcode, firstLine);
+  const PointReading reading =
+      readDecimalPoints(program, firstLine <= 1, chosenCalculatorInput, setup.machine.calculatorInput,
+                        gcode::powerOnUnitsOf(options.dialect, options.powerOnUnits), options.dialect);
+  if (reading.calculatorInput == setup.machine.calculatorInput) return inferStock(program, setup, options);
+  MachineSetup readSetup = setup;
+  readSetup.machine.calculatorInput = reading.calculatorInput;
+  return inferStock(program, readSetup, options);
 }
 
 }  // namespace klueng::core::machine

@@ -10,7 +10,7 @@
 
 #include "klueng/core/cut/part_check.h"
 #include "klueng/core/diagnostic_codes.h"
-#include "klueng/core/machine/job.h"
+#include "klueng/core/job/job.h"
 #include "klueng/core/machine/kinematics.h"
 #include "klueng/core/machine/setup_files.h"
 #include "klueng/core/messages.h"
@@ -195,14 +195,18 @@ TEST(Control, AHandwheelTouchOffGivesTheToolsGeometryToOneClick) {
   EXPECT_EQ(c.compareTouchOff({1})->args, (std::vector<std::string>{"01", "0.000", "-0.001"}));
 }
 
-machine::CompiledJob compile(const std::string& gcode, const machine::MachineSetup& setup) {
+std::shared_ptr<const job::Job> compile(const std::string& gcode, const machine::MachineSetup& setup) {
   io::ProgramFile f;
   f.header = bar50x100();
   f.plainGcode = true;
   f.gcodeFirstLine = 1;
   f.gcode = gcode;
-  machine::JobOptions o;
-  return machine::compileJob(f, setup, o);
+  job::JobInput input;
+  input.file = f;
+  input.setup = setup;
+  input.inferTools = false;
+  input.folder = std::string();
+  return job::makeJob(std::move(input));
 }
 
 constexpr const char* kTurnTo40 =
@@ -222,11 +226,11 @@ TEST(Control, AMisreadDiameterShowsInThePartCheckAsAnOversizeDiameter) {
   c.measure(1, Axis::X, measured - 0.2);
   EXPECT_NEAR(c.runSetup().offsets.at(1).x, 0.2, 1e-9);
 
-  const machine::CompiledJob ideal = compile(kTurnTo40, shippedSetup());
-  const machine::CompiledJob student = compile(kTurnTo40, c.runSetup());
-  ASSERT_TRUE(ideal.timeline && student.timeline);
+  const auto ideal = compile(kTurnTo40, shippedSetup());
+  const auto student = compile(kTurnTo40, c.runSetup());
+  ASSERT_TRUE(ideal->timeline() && student->timeline());
   const cut::CutSetup cs = cut::CutSetup::from(bar50x100(), c.runSetup());
-  const cut::PartCheck wrong = cut::checkPart(*student.timeline, *ideal.timeline, cs);
+  const cut::PartCheck wrong = cut::checkPart(*student->timeline(), *ideal->timeline(), cs);
   ASSERT_FALSE(wrong.defects.empty());
   const cut::PartDefect& d = wrong.defects.front();
   EXPECT_EQ(d.kind, cut::DefectKind::Leftover);
@@ -236,8 +240,8 @@ TEST(Control, AMisreadDiameterShowsInThePartCheckAsAnOversizeDiameter) {
 
   // The right reading: the same check finds nothing.
   c.measure(1, Axis::X, measured);
-  const machine::CompiledJob right = compile(kTurnTo40, c.runSetup());
-  EXPECT_TRUE(cut::checkPart(*right.timeline, *ideal.timeline, cut::CutSetup::from(bar50x100(), c.runSetup())).defects.empty());
+  const auto right = compile(kTurnTo40, c.runSetup());
+  EXPECT_TRUE(cut::checkPart(*right->timeline(), *ideal->timeline(), cut::CutSetup::from(bar50x100(), c.runSetup())).defects.empty());
 }
 
 TEST(Control, TheWrongStationAndATouchWithTheSpindleStoppedAreTheStudentsErrors) {
@@ -319,9 +323,9 @@ TEST(Control, OverridesChangeTheCycleTimeAsTheControlWould) {
   const char* program =
       "G21 G99\nT0101\nG97 S800 M03\nG00 X40 Z2\nG01 Z-30 F0.2\nG98 G01 X50 F100\nG04 X1.0\nG00 X60 Z5\n"
       "G99 G00 X30 Z5\nG32 Z-20 F1.5\nG00 X60\nM30\n";
-  const machine::CompiledJob job = compile(program, shippedSetup());
-  ASSERT_TRUE(job.timeline) << (job.diagnostics.empty() ? "" : formatMessage(job.diagnostics.front(), Lang::En));
-  const machine::Timeline& t = *job.timeline;
+  const auto job = compile(program, shippedSetup());
+  ASSERT_TRUE(job->timeline()) << (job->diagnostics().empty() ? "" : formatMessage(job->diagnostics().front(), Lang::En));
+  const machine::Timeline& t = *job->timeline();
   double rapid = 0, perRev = 0, perMin = 0, dwell = 0, thread = 0;
   for (const machine::Move& m : t.moves) {
     const double d = m.tEnd - m.tStart;

@@ -11,7 +11,7 @@
 
 #include "klueng/core/cut/finished_part.h"
 #include "klueng/core/io/tool_library.h"
-#include "klueng/core/machine/job_file.h"
+#include "klueng/core/job/job.h"
 #include "klueng/core/machine/setup_files.h"
 #include "klueng/core/messages.h"
 
@@ -36,7 +36,7 @@ int lineOf(const std::string& text, const std::string& start) {
 
 // One plain program, loaded, interpreted and cut with its guessed tools fitted.
 struct Run {
-  machine::JobFile job;
+  std::shared_ptr<const job::Job> job;
   machine::Timeline timeline;
   GuessFit fit;
 };
@@ -47,21 +47,23 @@ std::unique_ptr<Run> run(const std::string& name, const std::string& text, gcode
   fs::create_directories(folder);
   const fs::path path = folder / name;
   std::ofstream(path, std::ios::binary) << text;
-  machine::JobFileRequest request;
+  job::JobInput request;
+  request.path = path.string();
+  request.setup = shipped().setup;
   request.run.dialect = dialect;
   request.stations = shipped().setup.tools.stations;
   request.stock = stock;
   request.overrides = overrides;
   auto r = std::make_unique<Run>();
-  r->job = machine::loadJobFile(path.string(), shipped().setup, request, io::shippedToolLibrary());
+  r->job = job::makeJob(request);
   fs::remove_all(folder);
-  EXPECT_TRUE(r->job.program && r->job.file && !r->job.hasErrors());
-  if (!r->job.program || !r->job.file) return r;
-  r->timeline = machine::interpret(*r->job.program, r->job.setup, request.run);
+  EXPECT_TRUE(r->job->program() && r->job->file() && !r->job->hasErrors());
+  if (!r->job->program() || !r->job->file()) return r;
+  r->timeline = *r->job->timeline();
   EXPECT_FALSE(r->timeline.alarm.has_value());
   CutOptions options;
   options.checkpointBudgetBytes = 0;
-  r->fit = fitGuessedTools(r->timeline, r->job.file->header, r->job.setup, io::shippedToolLibrary(), options);
+  r->fit = fitGuessedTools(r->timeline, r->job->file()->header, r->job->setup(), io::shippedToolLibrary(), options);
   return r;
 }
 
@@ -118,7 +120,7 @@ const std::string kSpool =
 TEST(GuessFit, AGuessedBladeWhoseHolderTouchesGivesWayToALongerBladeOfTheSameWidth) {
   const auto r = run("spool.nc", kSpool, gcode::Dialect::Fanuc, bar(50, 80));
   ASSERT_TRUE(r->fit.cut);
-  const io::ToolTable& first = r->job.setup.tools;
+  const io::ToolTable& first = r->job->setup().tools;
   ASSERT_EQ(first.libraryId(2), "grooving-3mm");
   ASSERT_TRUE(first.isGuess(2));
   const int grooveLine = lineOf(kSpool, "G75 X28.");
@@ -126,7 +128,7 @@ TEST(GuessFit, AGuessedBladeWhoseHolderTouchesGivesWayToALongerBladeOfTheSameWid
   // The first guess alone touches: the holder of the grooving blade, on the G75 block.
   CutOptions options;
   options.checkpointBudgetBytes = 0;
-  CutSimulator alone(r->timeline, CutSetup::from(r->job.file->header, r->job.setup), options);
+  CutSimulator alone(r->timeline, CutSetup::from(r->job->file()->header, r->job->setup()), options);
   alone.runToEnd();
   ASSERT_EQ(alone.warnings().size(), 1u);
   EXPECT_EQ(alone.warnings()[0].code, "W324");
@@ -202,8 +204,8 @@ const std::string kPulley =
 TEST(GuessFit, WhenNoBladeReachesTheRunFinishesWithTheWarningAndWhatTheToolNeeds) {
   const auto r = run("pulley.nc", kPulley, gcode::Dialect::Haas, bar(4, 4, io::LengthUnit::Inch));
   ASSERT_TRUE(r->fit.cut);
-  ASSERT_TRUE(r->job.setup.tools.isGuess(2));
-  const std::string guess = r->job.setup.tools.libraryId(2);
+  ASSERT_TRUE(r->job->setup().tools.isGuess(2));
+  const std::string guess = r->job->setup().tools.libraryId(2);
   ASSERT_TRUE(guess == "grooving-3mm" || guess == "parting-3mm") << guess;
   EXPECT_EQ(r->fit.setup.tools.libraryId(2), guess);  // the first guess stays
   EXPECT_TRUE(r->fit.notes.empty());

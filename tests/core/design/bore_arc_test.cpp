@@ -19,12 +19,15 @@ PartDesign threadedBush() {
 }
 
 std::size_t defectsOf(const std::string& text, const machine::MachineSetup& setup, gcode::Dialect dialect) {
-  machine::JobOptions options;
-  options.run.dialect = dialect;
   const auto file = io::parseProgramFile(text);
-  const machine::CompiledJob job = machine::compileJob(*file.value, setup, options);
-  const machine::Timeline programmed = cut::programmedPath(job.program, setup, options.run, *job.timeline);
-  return cut::checkPart(*job.timeline, programmed, cut::CutSetup::from(file.value->header, setup)).defects.size();
+  job::JobInput input;
+  input.file = *file.value;
+  input.setup = setup;
+  input.run.dialect = dialect;
+  input.inferTools = false;  // the generated program's own setup
+  const std::shared_ptr<const job::Job> job = job::makeJob(input);
+  const machine::Timeline programmed = cut::programmedPath(*job->program(), setup, input.run, *job->timeline());
+  return cut::checkPart(*job->timeline(), programmed, cut::CutSetup::from(file.value->header, setup)).defects.size();
 }
 
 class BushInEveryDialect : public ::testing::TestWithParam<gcode::Dialect> {};

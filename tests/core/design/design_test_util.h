@@ -13,7 +13,7 @@
 #include "klueng/core/design/part_design.h"
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/cut/part_check.h"
-#include "klueng/core/machine/job.h"
+#include "klueng/core/job/job.h"
 #include "klueng/core/machine/setup_files.h"
 
 namespace klueng::core::design {
@@ -32,7 +32,7 @@ inline PartDesign stepShaft() {
 }
 
 struct Turned {
-  machine::CompiledJob job;
+  std::shared_ptr<const job::Job> job;
   machine::Timeline programmed;  // the part check's programmed path
   std::unique_ptr<cut::CutSimulator> sim;
 };
@@ -41,14 +41,17 @@ inline Turned turn(const std::string& text, gcode::Dialect dialect, const machin
   Turned t;
   const auto file = io::parseProgramFile(text);
   EXPECT_TRUE(file.value.has_value());
-  machine::JobOptions options;
-  options.run.dialect = dialect;
-  t.job = machine::compileJob(*file.value, setup, options);
-  for (const Diagnostic& d : t.job.diagnostics)
+  job::JobInput input;
+  input.file = *file.value;
+  input.setup = setup;
+  input.run.dialect = dialect;
+  input.inferTools = false;  // the generated program's own setup
+  t.job = job::makeJob(input);
+  for (const Diagnostic& d : t.job->diagnostics())
     EXPECT_NE(d.severity, Severity::Error) << d.code << " line " << d.range.line << "\n" << text;
-  if (!t.job.timeline) return t;
-  t.programmed = cut::programmedPath(t.job.program, setup, options.run, *t.job.timeline);
-  t.sim = std::make_unique<cut::CutSimulator>(*t.job.timeline, cut::CutSetup::from(file.value->header, setup));
+  if (!t.job->timeline()) return t;
+  t.programmed = cut::programmedPath(*t.job->program(), setup, input.run, *t.job->timeline());
+  t.sim = std::make_unique<cut::CutSimulator>(*t.job->timeline(), cut::CutSetup::from(file.value->header, setup));
   t.sim->runToEnd();
   return t;
 }

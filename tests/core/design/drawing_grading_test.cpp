@@ -8,7 +8,7 @@
 #include <map>
 
 #include "design_test_util.h"
-#include "klueng/core/cut/class_grading.h"
+#include "klueng/core/job/class_grading.h"
 #include "klueng/core/cut/part_features.h"
 #include "klueng/core/io/tool_library.h"
 
@@ -50,21 +50,22 @@ class DrawingGrading : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
   void student(const std::string& name, const std::string& text) { std::ofstream(dir_ / name, std::ios::binary) << text; }
-  std::map<std::string, cut::ClassRow> grade() {
+  std::map<std::string, job::ClassRow> grade() {
     const machine::MachineSetup setup = machine::loadMachineSetup(KLUENG_SOURCE_DIR).setup;
-    machine::JobFileRequest request;
+    job::JobInput request;
+    request.setup = setup;
     request.stations = setup.tools.stations;
-    std::map<std::string, cut::ClassRow> rows;
-    for (cut::ClassRow& r : cut::gradeClass(dir_.string(), against_, setup, request)) rows[r.file] = std::move(r);
+    std::map<std::string, job::ClassRow> rows;
+    for (job::ClassRow& r : job::gradeClass(dir_.string(), against_, request)) rows[r.file] = std::move(r);
     return rows;
   }
   fs::path dir_;
   std::string sample_;
-  cut::GradeAgainst against_;
+  job::GradeAgainst against_;
 };
 
 // measured value and verdict of dimension k
-void expectMeasured(const cut::ClassRow& r, std::size_t k, double mm, cut::Verdict v) {
+void expectMeasured(const job::ClassRow& r, std::size_t k, double mm, cut::Verdict v) {
   ASSERT_LT(k, r.inspection.size()) << r.file;
   const cut::InspectedDimension& d = r.inspection[k];
   ASSERT_TRUE(d.measured) << r.file << " " << cut::dimensionLabel(d.drawn, Lang::En);
@@ -87,7 +88,7 @@ TEST_F(DrawingGrading, OneInOneOutOneAtTheLimit) {
   const auto rows = grade();
   ASSERT_EQ(rows.size(), 6u);
 
-  const cut::ClassRow& in = rows.at("in.nc");
+  const job::ClassRow& in = rows.at("in.nc");
   EXPECT_TRUE(in.pass);
   expectMeasured(in, 0, 30.0, cut::Verdict::In);  // h7's upper limit is the nominal: in
   expectMeasured(in, 1, 20.0, cut::Verdict::In);
@@ -97,37 +98,37 @@ TEST_F(DrawingGrading, OneInOneOutOneAtTheLimit) {
   EXPECT_DOUBLE_EQ(in.inspection[0].lowerLimit(), 29.979);
   EXPECT_DOUBLE_EQ(in.inspection[0].upperLimit(), 30.0);
 
-  const cut::ClassRow& out = rows.at("out.nc");
+  const job::ClassRow& out = rows.at("out.nc");
   EXPECT_FALSE(out.pass);
   expectMeasured(out, 0, 30.0, cut::Verdict::In);
   expectMeasured(out, 1, 20.3, cut::Verdict::Out);
   expectMeasured(out, 2, 39.98, cut::Verdict::Out);
   expectMeasured(out, 3, 46.0, cut::Verdict::In);
 
-  const cut::ClassRow& limit = rows.at("limit.nc");
+  const job::ClassRow& limit = rows.at("limit.nc");
   EXPECT_TRUE(limit.pass);
   expectMeasured(limit, 2, 39.992, cut::Verdict::In);
   expectMeasured(limit, 3, 45.95, cut::Verdict::In);
   EXPECT_DOUBLE_EQ(limit.inspection[3].lowerLimit(), 45.95);
 
-  const cut::ClassRow& micron = rows.at("micron.nc");
+  const job::ClassRow& micron = rows.at("micron.nc");
   EXPECT_FALSE(micron.pass);
   expectMeasured(micron, 3, 45.949, cut::Verdict::Out);
 
-  const cut::ClassRow& taper = rows.at("taper.nc");
+  const job::ClassRow& taper = rows.at("taper.nc");
   EXPECT_FALSE(taper.pass);
   EXPECT_EQ(taper.inspection[2].verdict, cut::Verdict::Missing);
   EXPECT_EQ(taper.inspection[3].verdict, cut::Verdict::In);
 
   // A program that does not run has none of the drawing's dimensions.
-  const cut::ClassRow& typo = rows.at("typo.nc");
+  const job::ClassRow& typo = rows.at("typo.nc");
   EXPECT_FALSE(typo.pass);
   ASSERT_EQ(typo.inspection.size(), 5u);
   for (const auto& d : typo.inspection) EXPECT_EQ(d.verdict, cut::Verdict::Missing);
 
-  std::vector<cut::ClassRow> list;
+  std::vector<job::ClassRow> list;
   for (const auto& [name, row] : rows) list.push_back(row);
-  const std::string csv = cut::classCsv(list, true);
+  const std::string csv = job::classCsv(list, true);
   EXPECT_NE(csv.find("feature,nominal_mm,tolerance,lower_mm,upper_mm,measured_mm,verdict\n"), std::string::npos);
   EXPECT_NE(csv.find("\nlimit.nc,pass,0,,,"), std::string::npos) << csv;
   EXPECT_NE(csv.find(",Ø46,46.000,0/-0.05,45.950,46.000,45.950,in\n"), std::string::npos) << csv;
@@ -142,7 +143,7 @@ TEST_F(DrawingGrading, AMissingFeatureIsOut) {
   against_.drawing.push_back({cut::DimensionKind::Diameter, cut::FeatureSide::Inside, 20.0, {0.021, 0.0, "H7"}, 0.0, -10.0});
   student("in.nc", sample_);
   const auto rows = grade();
-  const cut::ClassRow& r = rows.at("in.nc");
+  const job::ClassRow& r = rows.at("in.nc");
   EXPECT_FALSE(r.pass);
   ASSERT_EQ(r.inspection.size(), 6u);
   EXPECT_EQ(r.inspection[5].verdict, cut::Verdict::Missing);

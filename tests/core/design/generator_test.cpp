@@ -19,7 +19,7 @@
 #include "klueng/core/gcode/machine_profile.h"
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/io/program_file.h"
-#include "klueng/core/machine/job.h"
+#include "klueng/core/job/job.h"
 #include "klueng/core/machine/setup_files.h"
 #include "design_test_util.h"
 
@@ -51,7 +51,7 @@ TEST_P(EveryDialect, Sample01sPartIsTurnedToTheDrawing) {
   ASSERT_NE(r2, nullptr);
   EXPECT_NEAR(r2->centre.x(), -22.0, 0.01);
   // Part check: no gouge, nothing left beyond 0.01 mm.
-  const cut::PartCheck check = cut::checkPart(*t.job.timeline, t.programmed, cut::CutSetup::from(io::parseProgramFile(program->text).value->header, setup));
+  const cut::PartCheck check = cut::checkPart(*t.job->timeline(), t.programmed, cut::CutSetup::from(io::parseProgramFile(program->text).value->header, setup));
   EXPECT_TRUE(check.defects.empty()) << check.defects.size();
 }
 
@@ -85,7 +85,7 @@ TEST(Generator, GroovesArePlungedWithTheBladeToTheirWidthAndDiameter) {
     EXPECT_NEAR(grooves[1]->diameter, 42.0, 0.01);
     EXPECT_NEAR(grooves[1]->width, 3.0, 0.06);
     const cut::PartCheck check =
-        cut::checkPart(*t.job.timeline, t.programmed, cut::CutSetup::from(io::parseProgramFile(program->text).value->header, setup));
+        cut::checkPart(*t.job->timeline(), t.programmed, cut::CutSetup::from(io::parseProgramFile(program->text).value->header, setup));
     EXPECT_TRUE(check.defects.empty()) << check.defects.size();
   }
   // Refused: narrower than the blade, over a shoulder, through the part.
@@ -131,7 +131,7 @@ TEST(Generator, AnM30ThreadIsCutInEveryDialect) {
     EXPECT_DOUBLE_EQ(thread->zRight, 0.0);
     EXPECT_LT(thread->zLeft, -21.0);
     const cut::PartCheck check =
-        cut::checkPart(*t.job.timeline, t.programmed, cut::CutSetup::from(io::parseProgramFile(program->text).value->header, setup));
+        cut::checkPart(*t.job->timeline(), t.programmed, cut::CutSetup::from(io::parseProgramFile(program->text).value->header, setup));
     EXPECT_TRUE(check.defects.empty());
     // Comments are read by people: sizes as a drawing writes them, never with G-code's trailing point.
     EXPECT_NE(program->text.find("(M30x1.5: thread height 0.6134 x 1.5 = 0.92 mm, minor D28.16)"), std::string::npos)
@@ -201,7 +201,7 @@ TEST(Generator, ASystemBMachineGetsItsOwnNumbersAndTheSamePart) {
     EXPECT_NEAR(fa.outside[i].zRight, fb.outside[i].zRight, 0.01) << i;
   }
   EXPECT_NE(find(fb, cut::FeatureKind::Thread, "M30×1.5"), nullptr);
-  EXPECT_DOUBLE_EQ(ta.job.timeline->cycleTime(), tb.job.timeline->cycleTime());
+  EXPECT_DOUBLE_EQ(ta.job->timeline()->cycleTime(), tb.job->timeline()->cycleTime());
 }
 
 TEST(Generator, SpeedsComeFromTheTableAndTheSpindleIsClamped) {
@@ -233,8 +233,8 @@ TEST(Generator, SpeedsComeFromTheTableAndTheSpindleIsClamped) {
   // The rpm where the tool starts facing at Ø40, as the run computes it.
   const auto rpmAtForty = [&](const std::string& text) {
     const Turned t = turn(text, gcode::Dialect::Fanuc, setup);
-    EXPECT_TRUE(t.job.timeline);
-    for (const machine::Move& m : t.job.timeline->moves)
+    EXPECT_TRUE(t.job->timeline());
+    for (const machine::Move& m : t.job->timeline()->moves)
       if (m.kind == machine::MoveKind::Line && std::abs(2.0 * m.path.start.y() - 40.0) < 1e-6) return m.rpm;
     return -1.0;
   };

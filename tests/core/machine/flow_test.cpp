@@ -351,40 +351,6 @@ TEST(FlowRun, ACycleProfileWithAMacroStatementIsAnAlarmNotAWrongPart) {
 }  // namespace
 }  // namespace klueng::core::machine
 
-#include "klueng/core/machine/job.h"
-
-namespace klueng::core::machine {
-namespace {
-
-TEST(CompiledJob, CheckThenRunInOneCall) {
-  io::ProgramFile file;
-  file.header.diameter = 40;
-  file.header.length = 100;
-  file.gcodeFirstLine = 7;
-  file.gcode = "G98 G00 X20. Z2.\nM01\nG01 Z-5. F100.\n";
-  JobOptions options;
-  CompiledJob job = compileJob(file, testing::testSetup(), options);
-  ASSERT_FALSE(job.hasErrors());
-  ASSERT_TRUE(job.timeline);
-  ASSERT_EQ(job.timeline->snapshots.size(), 3u);
-  EXPECT_FALSE(job.timeline->snapshots[0].optionalStop);
-  EXPECT_TRUE(job.timeline->snapshots[1].optionalStop);  // M01 on line 8, whatever the switch
-  EXPECT_EQ(job.timeline->snapshots[1].line, 8);
-  // Errors: no timeline, the diagnostics sorted, the missing stock size on header line 4.
-  file.gcode = "G01 X20. Y1.\n";
-  file.header.diameter = 0;
-  job = compileJob(file, testing::testSetup(), options);
-  EXPECT_FALSE(job.timeline);
-  ASSERT_EQ(job.diagnostics.size(), 2u);
-  EXPECT_EQ(job.diagnostics[0].code, "F115");
-  EXPECT_EQ(job.diagnostics[0].range.line, 4);
-  EXPECT_EQ(job.diagnostics[1].code, "E201");
-  EXPECT_EQ(job.diagnostics[1].range.line, 7);
-}
-
-}  // namespace
-}  // namespace klueng::core::machine
-
 namespace klueng::core::machine {
 namespace {
 

@@ -13,7 +13,7 @@
 #include "klueng/core/gcode/machine_file.h"
 #include "klueng/core/machine/explain.h"
 #include "klueng/core/io/tool_library.h"
-#include "klueng/core/machine/job_file.h"
+#include "klueng/core/job/job.h"
 #include "klueng/core/machine/setup_files.h"
 #include "klueng/core/messages.h"
 
@@ -41,17 +41,20 @@ std::string problems(const std::string& gcode, gcode::Dialect dialect,
   for (const auto& [name, text] : files) std::ofstream(dir / name, std::ios::binary) << text;
   const fs::path path = dir / "example.nc";
   std::ofstream(path, std::ios::binary) << "Worked example\nHelp\nAluminium\n150\n1100\nKlueng help\n" << gcode;
-  JobFileRequest request;
+  job::JobInput request;
+  request.path = path.string();
+  request.setup = shipped().setup;
   request.run.dialect = dialect;
   request.stations = shipped().setup.tools.stations;
-  const JobFile job = loadJobFile(path.string(), shipped().setup, request, io::shippedToolLibrary());
+  const std::shared_ptr<const job::Job> made = job::makeJob(request);
+  const job::Job& job = *made;
   std::string out;
-  for (const Diagnostic& d : job.diagnostics)
+  for (const Diagnostic& d : job.diagnostics())
     if (isError(d.severity) || d.severity == Severity::Warning) out += "check " + formatWithPlace("example", d, Lang::En) + "\n";
-  if (!job.file || !job.program || job.hasErrors()) return out + "does not load\n";
-  const Timeline t = interpret(*job.program, job.setup, request.run);
+  if (!job.file() || !job.program() || job.hasErrors()) return out + "does not load\n";
+  const Timeline& t = *job.timeline();
   if (t.alarm) return out + "run " + formatWithPlace("example", *t.alarm, Lang::En) + "\n";
-  cut::CutSimulator sim(t, cut::CutSetup::from(job.file->header, job.setup));
+  cut::CutSimulator sim(t, cut::CutSetup::from(job.file()->header, job.setup()));
   sim.runToEnd();
   if (sim.alarm()) out += "cut " + formatWithPlace("example", *sim.alarm(), Lang::En) + "\n";
   if (t.cycleTime() <= 0.0) out += "nothing moves\n";

@@ -10,7 +10,7 @@
 #include <fstream>
 
 #include "klueng/core/io/image.h"
-#include "klueng/core/machine/job.h"
+#include "klueng/core/machine/setup_files.h"
 #include "klueng/core/messages.h"
 
 namespace klueng::core::machine {

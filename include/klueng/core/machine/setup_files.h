@@ -42,4 +42,9 @@ bool isUnreadable(const Diagnostic& d);
 // (one that does not decode is no tool); `readBitmaps` keeps the images.
 LoadedSetup loadMachineSetup(const std::string& explicitDir = {}, bool readBitmaps = false);
 
+// The stations whose bitmap (tools.cfg line or library tool) names an existing
+// file: the T words the check accepts (E305). The one meaning for the editor,
+// a run, the CLI and the reports.
+std::vector<int> toolsWithBitmap(const MachineSetup& setup);
+
 }  // namespace klueng::core::machine

@@ -25,6 +25,7 @@
 //
 // Pure core, no Qt. Every number comes with the file line of the block that
 // decided it, and stockNotes() turns that into notes (I150-I157) for the user.
+#include <optional>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -92,5 +93,11 @@ double inchBarSize(double diameterInch, bool above = false);
 // as "note:", the GUI in its status bar.
 std::vector<Diagnostic> stockNotes(const io::JobHeader& stock, const StockInference* inference,
                                    std::string_view gcode, int firstLine);
+
+// inferStock on G-code text, parsed here and read as a Job reads it (lengths
+// without a decimal point: point_reading.h, `chosenCalculatorInput` being the
+// file's own choice). The editor's stock of a plain file as it is loaded.
+StockInference inferStockFromText(std::string_view gcode, int firstLine, const MachineSetup& setup,
+                                  const RunOptions& options, std::optional<bool> chosenCalculatorInput = std::nullopt);
 
 }  // namespace klueng::core::machine

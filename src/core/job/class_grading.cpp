@@ -1,4 +1,4 @@
-#include "klueng/core/cut/class_grading.h"
+#include "klueng/core/job/class_grading.h"
 
 #include "klueng/core/gcode/word_format.h"
 
@@ -13,7 +13,9 @@
 #include "klueng/core/io/tool_library.h"
 #include "klueng/core/machine/interpreter.h"
 
-namespace klueng::core::cut {
+namespace klueng::core::job {
+
+using namespace cut;
 
 namespace {
 
@@ -30,21 +32,25 @@ std::string csvField(const std::string& s) {
 
 }  // namespace
 
-GradedProgram gradeProgram(const std::string& path, const machine::MachineSetup& setup,
-                           const machine::JobFileRequest& request) {
+GradedProgram gradeProgram(const std::string& path, const JobInput& base) {
   GradedProgram g;
   try {
-    const machine::JobFile job = machine::loadJobFile(path, setup, request, io::shippedToolLibrary());
-    if (job.program)
-      g.subprogramFiles.assign(job.program->files.begin() + std::min<std::ptrdiff_t>(1, std::ssize(job.program->files)),
-                               job.program->files.end());
-    for (const Diagnostic& d : job.diagnostics)
+    JobInput input = base;
+    input.path = path;
+    input.file.reset();
+    input.folder.reset();  // the student's own folder
+    const std::shared_ptr<const Job> job = makeJob(std::move(input));
+    const std::optional<gcode::Program>& program = job->program();
+    if (program)
+      g.subprogramFiles.assign(program->files.begin() + std::min<std::ptrdiff_t>(1, std::ssize(program->files)),
+                               program->files.end());
+    for (const Diagnostic& d : job->diagnostics())
       if (isError(d.severity) && g.errors++ == 0) g.firstError = place(d);
-    if (job.unreadable || !job.file || !job.program || job.hasErrors()) {
+    if (job->unreadable() || !job->file() || !program || job->hasErrors() || !job->timeline()) {
       if (g.errors == 0) g.errors = 1, g.firstError = "unreadable";
       return g;
     }
-    const machine::Timeline timeline = machine::interpret(*job.program, job.setup, request.run);
+    const machine::Timeline& timeline = *job->timeline();
     g.cycleTime = timeline.cycleTime();
     if (timeline.alarm) {
       g.alarm = place(*timeline.alarm);
@@ -53,7 +59,7 @@ GradedProgram gradeProgram(const std::string& path, const machine::MachineSetup&
     CutOptions options;
     options.checkpointBudgetBytes = 0;  // one run forward
     // A guessed tool that touches gives way to another of its kind that fits (issue 26).
-    const GuessFit fit = fitGuessedTools(timeline, job.file->header, job.setup, io::shippedToolLibrary(), options);
+    const GuessFit fit = fitGuessedTools(timeline, job->file()->header, job->setup(), io::shippedToolLibrary(), options);
     const CutSimulator& sim = *fit.cut;
     if (sim.alarm()) {
       g.alarm = place(*sim.alarm());
@@ -69,18 +75,16 @@ GradedProgram gradeProgram(const std::string& path, const machine::MachineSetup&
 }
 
 std::vector<ClassRow> gradeClass(const std::string& folder, const std::string& referencePath, const Stock& reference,
-                                 const machine::MachineSetup& setup, const machine::JobFileRequest& request,
-                                 double tolerance, const std::function<void(int, int, const std::string&)>& progress) {
+                                 const JobInput& base, double tolerance, const std::function<void(int, int, const std::string&)>& progress) {
   GradeAgainst against;
   against.referencePath = referencePath;
   against.reference = &reference;
   against.tolerance = tolerance;
-  return gradeClass(folder, against, setup, request, progress);
+  return gradeClass(folder, against, base, progress);
 }
 
 std::vector<ClassRow> gradeClass(const std::string& folder, const GradeAgainst& against,
-                                 const machine::MachineSetup& setup, const machine::JobFileRequest& request,
-                                 const std::function<void(int, int, const std::string&)>& progress) {
+                                 const JobInput& base, const std::function<void(int, int, const std::string&)>& progress) {
   const double tolerance = against.tolerance;
   std::error_code ec;
   std::vector<fs::path> files;
@@ -97,7 +101,7 @@ std::vector<ClassRow> gradeClass(const std::string& folder, const GradeAgainst& 
     row.file = files[i].filename().string();
     row.path = files[i].string();
     if (progress) progress(static_cast<int>(i), static_cast<int>(files.size()), row.file);
-    row.graded = gradeProgram(row.path, setup, request);
+    row.graded = gradeProgram(row.path, base);
     if (row.graded.part) {
       row.pass = true;
       if (against.reference) {
@@ -152,4 +156,4 @@ std::string classCsv(const std::vector<ClassRow>& rows, bool drawing) {
   return out;
 }
 
-}  // namespace klueng::core::cut
+}  // namespace klueng::core::job

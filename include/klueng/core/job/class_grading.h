@@ -13,10 +13,14 @@
 #include "klueng/core/cut/inspection.h"
 #include "klueng/core/cut/part_compare.h"
 #include "klueng/core/cut/stock.h"
-#include "klueng/core/machine/job_file.h"
-#include "klueng/core/machine/setup_files.h"
+#include "klueng/core/job/job.h"
 
-namespace klueng::core::cut {
+namespace klueng::core::job {
+
+using cut::DrawnDimension;
+using cut::InspectedDimension;
+using cut::PartDeviation;
+using cut::Stock;
 
 struct GradedProgram {
   std::optional<Stock> part;  // the finished part; none when it did not run to its end
@@ -27,9 +31,9 @@ struct GradedProgram {
   std::vector<std::string> subprogramFiles;  // files of the folder its calls read (the program's own)
 };
 
-// Loads, checks, runs and cuts one program. Never throws for a bad file.
-GradedProgram gradeProgram(const std::string& path, const machine::MachineSetup& setup,
-                           const machine::JobFileRequest& request);
+// Loads, checks, runs and cuts one program (makeJob with `base`, its path set
+// to `path`). Never throws for a bad file.
+GradedProgram gradeProgram(const std::string& path, const JobInput& base);
 
 struct ClassRow {
   std::string file;           // the name in the folder
@@ -58,10 +62,9 @@ struct GradeAgainst {
 // part; `progress(i, n, name)` before each. A file the others call as a
 // subprogram belongs to them and gets no row of its own.
 std::vector<ClassRow> gradeClass(const std::string& folder, const std::string& referencePath, const Stock& reference,
-                                 const machine::MachineSetup& setup, const machine::JobFileRequest& request,
-                                 double tolerance, const std::function<void(int, int, const std::string&)>& progress = {});
+                                 const JobInput& base, double tolerance, const std::function<void(int, int, const std::string&)>& progress = {});
 std::vector<ClassRow> gradeClass(const std::string& folder, const GradeAgainst& against,
-                                 const machine::MachineSetup& setup, const machine::JobFileRequest& request,
+                                 const JobInput& base,
                                  const std::function<void(int, int, const std::string&)>& progress = {});
 
 // file,result,errors,first_error,alarm,cycle_time_s,leftover_mm,leftover_z,gouge_mm,gouge_z; with a
@@ -69,4 +72,4 @@ std::vector<ClassRow> gradeClass(const std::string& folder, const GradeAgainst& 
 // feature,nominal_mm,tolerance,lower_mm,upper_mm,measured_mm,verdict (in, out or missing).
 std::string classCsv(const std::vector<ClassRow>& rows, bool drawing = false);
 
-}  // namespace klueng::core::cut
+}  // namespace klueng::core::job

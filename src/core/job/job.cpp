@@ -1,0 +1,241 @@
+// One job (job.h): the one chain from a program to its check, tools, stock and run.
+#include "klueng/core/job/job.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <functional>
+#include <thread>
+
+#include "klueng/core/diagnostic_codes.h"
+#include "klueng/core/gcode/dialect_fit.h"
+#include "klueng/core/gcode/parser.h"
+#include "klueng/core/gcode/program_index.h"
+#include "klueng/core/io/tool_library.h"
+#include "klueng/core/machine/point_reading.h"
+#include "klueng/core/gcode/decimal_point.h"
+#include "klueng/core/machine/setup_files.h"
+#include "klueng/core/machine/stock_inference.h"
+#include "klueng/core/machine/subprogram_files.h"
+#include "machine/check_with_tools.h"  // the check and the tool inference side by side (machine's own)
+
+namespace klueng::core::job {
+
+namespace {
+
+std::atomic<long long> jobsMade{0};
+std::atomic<long long> jobTimelines{0};
+std::atomic<long long> jobCuts{0};
+std::atomic<long long> jobOnWatched{0};
+std::mutex watchedMutex;
+std::thread::id watched;
+
+void logCompute(std::atomic<long long>& counter) {
+  ++counter;
+  const std::lock_guard lock(watchedMutex);
+  if (watched != std::thread::id() && std::this_thread::get_id() == watched) ++jobOnWatched;
+}
+
+// SPEC 2 (ext): the stock given for the run, else the header, else inferred
+// from the program, else the defaults. Returns the notes that say which.
+std::vector<Diagnostic> resolveJobStock(io::ProgramFile& file, const gcode::Program& program,
+                                        const std::optional<io::JobHeader>& stock, const machine::MachineSetup& setup,
+                                        const machine::RunOptions& run, const machine::Timeline* recorded) {
+  io::JobHeader& h = file.header;
+  if (stock) h.takeStockFrom(*stock);
+  if (h.stockSource == io::StockSource::Header) return {};
+  if (file.gcode.find_first_not_of(" \t\r\n") == std::string::npos) return {};  // nothing to cut
+  if (h.stockSource == io::StockSource::CommandLine || h.stockSource == io::StockSource::JobDetails)
+    return machine::stockNotes(h, nullptr, file.gcode, file.gcodeFirstLine);
+  // The run the tools were read from, when there was one: one recording for both.
+  const machine::StockInference inferred =
+      recorded ? machine::inferStock(program, *recorded, setup) : machine::inferStock(program, setup, run);
+  if (inferred.found) inferred.applyTo(h);
+  else h.takeStockFrom(io::JobHeader{});
+  return machine::stockNotes(h, &inferred, file.gcode, file.gcodeFirstLine);
+}
+
+// The call in the program itself (file 0) that reaches subprogram file `file`.
+SourceRange callInto(const gcode::Program& program, int file) {
+  const gcode::ProgramIndex index(program);
+  for (const gcode::Block& b : program.blocks) {
+    if (b.file != 0) break;
+    const gcode::Word* p = b.find('P');
+    if (!p || p->expr >= 0) continue;
+    for (const gcode::Word& w : b.words)
+      if ((w.letter == 'M' && w.code() == 98) || (w.letter == 'G' && (w.code() == 65 || w.code() == 66))) {
+        const gcode::CallTarget t = gcode::callTarget(p->value, std::nullopt, w.letter == 'M');
+        const gcode::ProgramSection* s = index.program(t.number);
+        if (!s) s = index.program(static_cast<int>(p->value));
+        if (s && s->file == file) return p->range;
+      }
+  }
+  return SourceRange{program.blocks.empty() ? program.firstLine : program.blocks.front().line, 1, 0, 0};
+}
+
+bool byPlace(const Diagnostic& a, const Diagnostic& b) {
+  if (a.range.file != b.range.file) return a.range.file < b.range.file;
+  return a.range.line != b.range.line ? a.range.line < b.range.line : a.range.column < b.range.column;
+}
+
+}  // namespace
+
+ComputeLog computeLog() { return ComputeLog{jobsMade.load(), jobTimelines.load(), jobCuts.load(), jobOnWatched.load()}; }
+
+void watchThread(std::thread::id id) {
+  const std::lock_guard lock(watchedMutex);
+  watched = id;
+}
+
+std::shared_ptr<const Job> makeJob(JobInput input) {
+  logCompute(jobsMade);
+  std::shared_ptr<Job> job(new Job());
+  Job& j = *job;
+  j.tools_.setup = input.setup;
+  if (input.file) {
+    j.file_ = std::move(input.file);
+    input.file.reset();
+  } else {
+    auto read = io::readProgramFile(input.path, input.defaultsForPlain);
+    j.diagnostics_ = std::move(read.diagnostics);
+    j.file_ = std::move(read.value);
+  }
+  j.unreadable_ = std::any_of(j.diagnostics_.begin(), j.diagnostics_.end(), machine::isUnreadable);
+  if (!j.file_) {
+    j.input_ = std::move(input);
+    return job;
+  }
+  io::ProgramFile& file = *j.file_;
+  const machine::RunOptions& run = input.run;
+  // The check and the inference read the program as a run in this dialect and these units would;
+  // they never touch #500-#999.
+  machine::RunOptions readRun;
+  readRun.dialect = run.dialect;
+  readRun.powerOnUnits = run.powerOnUnits;
+  const gcode::InputUnits powerOn = gcode::powerOnUnitsOf(run.dialect, run.powerOnUnits);
+
+  gcode::Program program = gcode::parse(file.gcode, file.gcodeFirstLine);
+  // The program's folder is the control's memory: subprograms it calls come from there.
+  // A file's own folder may be "" (a relative name: the current folder); an empty folder given means none.
+  const bool ownFolder = !input.folder && !input.path.empty();
+  const std::string folder =
+      ownFolder ? std::filesystem::path(input.path).parent_path().string() : input.folder.value_or(std::string());
+  if (ownFolder || !folder.empty())
+    for (Diagnostic& d : machine::attachSubprogramFiles(program, folder, run.dialect)) j.diagnostics_.push_back(std::move(d));
+  j.unreadable_ = std::any_of(j.diagnostics_.begin(), j.diagnostics_.end(),
+                              [](const Diagnostic& d) { return d.range.file == 0 && machine::isUnreadable(d); });
+
+  // Lengths without a decimal point, read as the user, the program or the machine says.
+  machine::MachineSetup readSetup = input.setup;
+  machine::PointReading reading = machine::readDecimalPoints(
+      program, file.plainGcode, input.calculatorInput ? input.calculatorInput : file.header.calculatorInput,
+      input.setup.machine.calculatorInput, powerOn, run.dialect);
+  readSetup.machine.calculatorInput = reading.calculatorInput;
+
+  gcode::CheckOptions check;
+  check.dialect = run.dialect;
+  check.powerOnUnits = run.powerOnUnits;
+  check.turretStations = input.setup.tools.stations;  // the turret the tool table was read for
+  check.modalRules = input.modalRules;
+  std::vector<Diagnostic> found;
+  if (input.toolTable && input.inferTools) {
+    // Tools from the program: library choices for stations without a fitting tool,
+    // worked out while the rest of the check runs.
+    check.toolsWithBitmap = std::vector<int>{};
+    machine::InferenceContext context;
+    context.fromProgram = file.plainGcode;
+    context.run = readRun;
+    context.toolsBeyondCentre = file.header.toolsBeyondCentre;
+    machine::detail::CheckedWithTools checked = machine::detail::checkWhileInferring(program, check, [&] {
+      return machine::inferTools(program, file.gcode, file.gcodeFirstLine, readSetup, io::shippedToolLibrary(),
+                                 input.overrides, input.stations, context);
+    });
+    j.tools_ = std::move(checked.inference);
+    check.toolsWithBitmap = machine::toolsWithBitmap(j.tools_.setup);
+    found = std::move(checked.diagnostics);
+  } else {
+    j.tools_.setup = readSetup;
+    // The setup as given: T words against its bitmaps, when it has any.
+    if (input.toolTable)
+      if (std::vector<int> tools = machine::toolsWithBitmap(readSetup); !tools.empty())
+        check.toolsWithBitmap = std::move(tools);
+    found = gcode::check(program, check);
+  }
+  found.insert(found.end(), reading.diagnostics.begin(), reading.diagnostics.end());
+  // Say once which dialect accepts a program this one refuses (I102).
+  if (auto fit = gcode::suggestDialect(program, check, found)) {
+    j.fit_ = fit->dialect;
+    j.fitBlocks_ = fit->blocks;
+    found.push_back(fit->note);
+  }
+  j.diagnostics_.insert(j.diagnostics_.end(), std::make_move_iterator(found.begin()), std::make_move_iterator(found.end()));
+  j.stockNotes_ = resolveJobStock(file, program, input.stock, j.tools_.setup, readRun, j.tools_.record.get());
+  // The recorded run has told the tools and the stock all it knows: freed now, so a later
+  // timeline() does not hold two runs of a long program at once (peak memory of `simulate`).
+  j.tools_.record.reset();
+  // The run needs a bar: a header without a size is reported on its line (SPEC 2).
+  const io::JobHeader& h = file.header;
+  if (h.diameter <= 0 || h.length <= 0) {
+    const char* code = h.diameter <= 0 ? codes::kDiameterMissing : codes::kLengthMissing;
+    if (std::none_of(j.diagnostics_.begin(), j.diagnostics_.end(), [&](const Diagnostic& d) { return d.code == code; }))
+      j.diagnostics_.push_back(Diagnostic{Severity::Error, code, SourceRange{h.diameter <= 0 ? 4 : 5, 1, 0}, {}});
+  }
+  std::stable_sort(j.diagnostics_.begin(), j.diagnostics_.end(), byPlace);
+  // The units the program speaks, before any run (issue 28 item 4: View ▸ Units shown ▸ Auto).
+  j.units_ = gcode::programInputUnits(program, powerOn, run.dialect) == gcode::InputUnits::Inch ? DisplayUnits::Inch : DisplayUnits::Mm;
+  j.program_ = std::move(program);
+  j.input_ = std::move(input);
+  return job;
+}
+
+std::vector<Diagnostic> Job::programFileDiagnostics() const {
+  std::vector<Diagnostic> own;
+  std::vector<int> reported;
+  for (const Diagnostic& d : diagnostics_) {
+    if (d.range.file == 0) {
+      own.push_back(d);
+      continue;
+    }
+    if (!isError(d.severity) || !program_ ||
+        std::find(reported.begin(), reported.end(), d.range.file) != reported.end())
+      continue;
+    reported.push_back(d.range.file);
+    Diagnostic e;
+    e.severity = Severity::Error;
+    e.code = codes::kSubprogramFileHasErrors;
+    e.range = callInto(*program_, d.range.file);
+    const std::string& path = program_->files[static_cast<std::size_t>(d.range.file)];
+    e.args = {path.substr(path.find_last_of('/') + 1), std::to_string(d.range.line), std::to_string(d.range.column),
+              d.code};
+    own.push_back(std::move(e));
+  }
+  std::stable_sort(own.begin(), own.end(), byPlace);
+  return own;
+}
+
+std::string Job::fileOf(const Diagnostic& d) const {
+  return program_ ? machine::diagnosticFile(*program_, d, input_.path) : input_.path;
+}
+
+const machine::Timeline* Job::timeline() const {
+  std::call_once(timelineOnce_, [this] {
+    if (!program_ || hasErrors()) return;
+    logCompute(jobTimelines);
+    timeline_ = machine::interpret(*program_, tools_.setup, input_.run);
+  });
+  return timeline_ ? &*timeline_ : nullptr;
+}
+
+const cut::CutSimulator* Job::cut() const {
+  std::call_once(cutOnce_, [this] {
+    const machine::Timeline* t = timeline();
+    if (!t || !file_) return;
+    logCompute(jobCuts);
+    cut::CutOptions options;
+    options.checkpointBudgetBytes = 0;  // the finished cut only: nobody steps this one back
+    cut_ = std::make_unique<cut::CutSimulator>(*t, cut::CutSetup::from(file_->header, tools_.setup), options);
+    cut_->runToEnd();
+  });
+  return cut_.get();
+}
+
+}  // namespace klueng::core::job
