@@ -17,6 +17,7 @@
 #include "gui/resources.h"
 #include "gui/run_controller.h"
 #include "gui_test_runner.h"
+#include "window_test_support.h"
 #include "klueng/core/job/job.h"
 
 using namespace klueng;
@@ -25,9 +26,7 @@ class JobThreadTest : public QObject {
   Q_OBJECT
  private slots:
   void initTestCase() {
-    klueng::test::freshUserFolders();
-    gui::initResources();
-    gui::Language::instance()->setLanguage(QStringLiteral("en"));
+    klueng::test::startInEnglish();
     core::job::watchThread(std::this_thread::get_id());
   }
   void cleanupTestCase() { core::job::watchThread(std::thread::id()); }
@@ -84,10 +83,7 @@ class JobThreadTest : public QObject {
   // Go again on the same program runs the same Job's timeline; an edit makes a new Job.
   void anUnchangedProgramKeepsItsRunAnEditMakesANewJob() {
     gui::MainWindow w;
-    w.resize(1366, 728);
-    w.show();
-    QVERIFY(w.openFile(QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt")));
-    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    QVERIFY(klueng::test::showSample(w));
     gui::RunController* runner = w.runController();
     runner->setSpeed(gui::RunController::kAsFastAsPossible);
     w.action(QStringLiteral("actionGo"))->trigger();

@@ -22,6 +22,7 @@
 #include "gui/resources.h"
 #include "gui/run_controller.h"
 #include "gui_test_runner.h"
+#include "window_test_support.h"
 #include "klueng/core/control/control.h"
 
 using namespace klueng;
@@ -40,17 +41,12 @@ class OperatorPanelTest : public QObject {
   Q_OBJECT
  private slots:
   void initTestCase() {
-    klueng::test::freshUserFolders();
-    gui::initResources();
-    gui::Language::instance()->setLanguage(QStringLiteral("en"));
+    klueng::test::startInEnglish();
   }
 
   void touchOffMdiAndOverridesFromThePanel() {
     gui::MainWindow w;
-    w.resize(1366, 728);
-    w.show();
-    QVERIFY(w.openFile(QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt")));
-    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    QVERIFY(klueng::test::showSample(w));
     auto* runner = w.findChild<gui::RunController*>();
     runner->setSpeed(gui::RunController::kAsFastAsPossible);
     w.action(QStringLiteral("actionGo"))->trigger();

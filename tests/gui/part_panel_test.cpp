@@ -13,6 +13,7 @@
 #include <QTreeWidget>
 
 #include "gui_test_runner.h"
+#include "window_test_support.h"
 #include "fresh_user_folders.h"
 #include "gui/code_editor.h"
 #include "gui/language.h"
@@ -45,17 +46,12 @@ class PartPanelTest : public QObject {
   Q_OBJECT
  private slots:
   void initTestCase() {
-    klueng::test::freshUserFolders();
-    gui::initResources();
-    gui::Language::instance()->setLanguage(QStringLiteral("en"));
+    klueng::test::startInEnglish();
   }
 
   void sample01FeaturesCheckAndComparison() {
     gui::MainWindow w;
-    w.resize(1366, 728);
-    w.show();
-    QVERIFY(w.openFile(QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt")));
-    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    QVERIFY(klueng::test::showSample(w));
     gui::PartPanel* part = w.partPanel();
     QVERIFY(part);
     auto* output = w.findChild<gui::OutputView*>();
@@ -124,10 +120,7 @@ class PartPanelTest : public QObject {
   // a run cuts the bar again; a language switch says the Part list again.
   void noStaleMarks() {
     gui::MainWindow w;
-    w.resize(1366, 728);
-    w.show();
-    QVERIFY(w.openFile(QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt")));
-    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    QVERIFY(klueng::test::showSample(w));
     gui::PartPanel* part = w.partPanel();
     auto* output = w.findChild<gui::OutputView*>();
     auto* runner = w.findChild<gui::RunController*>();
