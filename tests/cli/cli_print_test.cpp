@@ -52,6 +52,18 @@ fs::path scratch(const char* name) {
 
 const std::string kSample01 = std::string(KLUENG_SAMPLES_DIR) + "/01-step-shaft.txt";
 
+// The drawing sheet of a program we write, on the bar `stock` (--stock), as text;
+// empty (with the CLI's messages in `err`) when print failed.
+std::string drawingOf(const char* name, const std::string& program, const std::string& stock, std::string& err) {
+  const fs::path prog = scratch((std::string(name) + ".nc").c_str());
+  std::ofstream(prog) << program;
+  const fs::path pdf = scratch((std::string(name) + ".pdf").c_str());
+  if (print("'" + prog.string() + "' --sheet drawing --stock " + stock + " --lang en --pdf '" + pdf.string() + "'",
+            &err) != 0)
+    return {};
+  return pdfText(pdf);
+}
+
 TEST(CliPrint, DrawingDimensionsSample01OnALandscapePage) {
   const fs::path pdf = scratch("01-drawing.pdf");
   std::string err;
@@ -103,16 +115,13 @@ TEST(CliPrint, TheDesignsTolerancesAreWrittenAfterItsDiameters) {
 // still say where the taper starts and ends (20, 20, 10 and 50 overall), and no
 // radius callout comes from the compensated corners.
 TEST(CliPrint, ATapersEndsAreDimensionedAlongTheAxis) {
-  const fs::path prog = scratch("taper-pin.nc");
-  std::ofstream(prog) << "%\nO2001 (TAPER PIN 1:5)\nG21 G40 G99\nT0101\nG50 S2500\nG96 S200 M03\n"
-                         "G00 X34. Z2. M08\nG01 Z0. F0.15\nX-1.6\nG00 X34. Z2.\nG42 G00 X20. Z2.\n"
-                         "G01 Z-20. F0.15\nX28. Z-40.\nZ-50.\nX34.\nG40 G00 X100. Z100.\nM30\n%\n";
-  const fs::path pdf = scratch("taper-pin.pdf");
   std::string err;
-  ASSERT_EQ(print("'" + prog.string() + "' --sheet drawing --stock 32x80 --lang en --pdf '" + pdf.string() + "'", &err),
-            0)
-      << err;
-  const std::string text = pdfText(pdf);
+  const std::string text = drawingOf("taper-pin",
+                                     "%\nO2001 (TAPER PIN 1:5)\nG21 G40 G99\nT0101\nG50 S2500\nG96 S200 M03\n"
+                                     "G00 X34. Z2. M08\nG01 Z0. F0.15\nX-1.6\nG00 X34. Z2.\nG42 G00 X20. Z2.\n"
+                                     "G01 Z-20. F0.15\nX28. Z-40.\nZ-50.\nX34.\nG40 G00 X100. Z100.\nM30\n%\n",
+                                     "32x80", err);
+  ASSERT_FALSE(text.empty()) << err;
   const std::string lengths = text.substr(0, text.find("Project"));
   for (const char* s : {"Ø20", "Ø28", "11.31°", " 10 ", " 20 "})
     EXPECT_NE(lengths.find(s), std::string::npos) << s << "\n" << text;
@@ -123,36 +132,34 @@ TEST(CliPrint, ATapersEndsAreDimensionedAlongTheAxis) {
 // A flange's 4 mm spigot is 2 mm on paper at 1:2: too short for a Ø line beside
 // another, yet the drawing still gives its Ø (a drawing without it cannot be made).
 TEST(CliPrint, AShortSpigotOnABigFlangeKeepsItsDiameter) {
-  const fs::path prog = scratch("flange.nc");
-  std::ofstream(prog) << "%\nO3001 (FLANGE)\nG21 G40 G99\nT0101\nG50 S1500\nG96 S180 M03\nG00 X214. Z2. M08\n"
-                         "G01 Z0. F0.2\nX-1.6\nG00 X214. Z2.\nG42 G00 X150. Z2.\nG01 Z-4. F0.15\nX200.\nZ-20.\n"
-                         "X214.\nG40 G00 X300. Z100.\nM30\n%\n";
-  const fs::path pdf = scratch("flange.pdf");
   std::string err;
-  ASSERT_EQ(print("'" + prog.string() + "' --sheet drawing --stock 210x40 --lang en --pdf '" + pdf.string() + "'", &err),
-            0)
-      << err;
-  const std::string text = pdfText(pdf);
+  const std::string text =
+      drawingOf("flange",
+                "%\nO3001 (FLANGE)\nG21 G40 G99\nT0101\nG50 S1500\nG96 S180 M03\nG00 X214. Z2. M08\n"
+                "G01 Z0. F0.2\nX-1.6\nG00 X214. Z2.\nG42 G00 X150. Z2.\nG01 Z-4. F0.15\nX200.\nZ-20.\n"
+                "X214.\nG40 G00 X300. Z100.\nM30\n%\n",
+                "210x40", err);
+  ASSERT_FALSE(text.empty()) << err;
   for (const char* s : {"Scale 1:2", "Ø150", "Ø200"}) EXPECT_NE(text.find(s), std::string::npos) << s << "\n" << text;
 }
 
 // A groove is placed by its near wall and its width is in its callout: the chain
 // reads 10, 10, 20 (to each groove's right wall, then the end), not 10, 3, 7, 3, 17.
 TEST(CliPrint, AGrooveIsPlacedByItsNearWall) {
-  const fs::path prog = scratch("grooves.nc");
-  std::ofstream(prog) << "%\nO4001 (TWO GROOVES)\nG21 G40 G99\nT0101\nG96 S180 M03\nG50 S2500\nG00 X34. Z2. M08\n"
-                         "G01 Z0. F0.15\nX-1.6\nG00 X30. Z2.\nG01 Z-40.\nX34.\nG00 X100. Z100.\nT0404\n"
-                         "G97 S600 M03\nG00 X32. Z-13.\nG01 X24. F0.05\nG00 X32.\nZ-23.\nG01 X24.\nG00 X32.\n"
-                         "X100. Z100.\nM30\n%\n";
-  const fs::path pdf = scratch("grooves.pdf");
   std::string err;
-  ASSERT_EQ(print("'" + prog.string() + "' --sheet drawing --stock 32x80 --lang en --pdf '" + pdf.string() + "'", &err),
-            0)
-      << err;
-  std::istringstream words(pdfText(pdf));
+  const std::string text =
+      drawingOf("grooves",
+                "%\nO4001 (TWO GROOVES)\nG21 G40 G99\nT0101\nG96 S180 M03\nG50 S2500\nG00 X34. Z2. M08\n"
+                "G01 Z0. F0.15\nX-1.6\nG00 X30. Z2.\nG01 Z-40.\nX34.\nG00 X100. Z100.\nT0404\n"
+                "G97 S600 M03\nG00 X32. Z-13.\nG01 X24. F0.05\nG00 X32.\nZ-23.\nG01 X24.\nG00 X32.\n"
+                "X100. Z100.\nM30\n%\n",
+                "32x80", err);
+  ASSERT_FALSE(text.empty()) << err;
+  std::istringstream words(text);
   std::vector<std::string> numbers;
   for (std::string w; words >> w;)
-    if (!w.empty() && std::all_of(w.begin(), w.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
+    if (!w.empty() &&
+        std::all_of(w.begin(), w.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
       numbers.push_back(w);
   EXPECT_EQ(std::count(numbers.begin(), numbers.end(), "10"), 2);
   EXPECT_EQ(std::count(numbers.begin(), numbers.end(), "20"), 1);
