@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <string_view>
 
+#include "klueng/core/comp/nose_comp.h"
 #include "klueng/core/cut/tool_shape.h"
 #include "klueng/core/geometry.h"
 #include "klueng/core/io/image.h"
@@ -56,6 +57,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const cut::Box& b : s.holder)
     if (!inside(b, s.bounds)) std::abort();
   // The nose circle is R from the controlled point, against the tip's direction.
-  if ((s.noseCentre + noseRadius * tipVector(tip)).norm() > 1e-9) std::abort();
+  if ((s.noseCentre + noseRadius * comp::tipVector(tip)).norm() > 1e-9) std::abort();
   return 0;
 }
