@@ -41,6 +41,7 @@ struct ClassOptions {
   double tolerance = 0.05;
   gcode::Dialect dialect = gcode::Dialect::Fanuc;
   std::string machine;  // --machine NAME|FILE
+  bool dialectGiven = false;  // --dialect or --machine: wins over the machine a program names
   Lang lang = langFromLocale();
 };
 
@@ -74,7 +75,10 @@ std::optional<ClassOptions> parse(const std::vector<std::string>& args) {
     else if (a == "--pdf") o.pdf = args[++i];
     else if (a == "--sheets") o.sheets = true;
     else if (a == "--config") o.configDir = args[++i];
-    else if (a == "--machine") o.machine = args[++i];
+    else if (a == "--machine") {
+      o.machine = args[++i];
+      o.dialectGiven = true;
+    }
     else if (a == "--tolerance") {
       const std::string& v = args[++i];
       char* end = nullptr;
@@ -84,6 +88,7 @@ std::optional<ClassOptions> parse(const std::vector<std::string>& args) {
       const auto d = parseDialect(args[++i]);
       if (!d) return bad(a, args[i], codes::kCliAllowedDialect);
       o.dialect = *d;
+      o.dialectGiven = true;
     } else if (a == "--lang") {
       const auto l = parseLang(args[++i]);
       if (!l) return bad(a, args[i], codes::kCliAllowedLang);
@@ -154,7 +159,9 @@ int runClass(const std::vector<std::string>& args) {
   for (const auto& fd : config.diagnostics) printDiagnostic(stderr, fd.file, fd.diagnostic, o.lang);
   if (config.unreadable || config.hasErrors()) return 2;
   std::string error;
-  const std::optional<core::job::JobInput> request = jobRequest(config, o.dialect, std::nullopt, std::nullopt, {}, error);
+  std::optional<core::job::JobInput> request = jobRequest(config, o.dialect, std::nullopt, std::nullopt, {}, error);
+  // Each student's program on the machine it names, unless --machine or --dialect chose one.
+  if (request) request->programMachine = !o.dialectGiven;
   if (!request) {
     std::fprintf(stderr, "klueng-cli class: %s\n", error.c_str());
     return 2;

@@ -274,6 +274,7 @@ void ClassGradeDialog::grade() {
   request.run.dialect = dialect_;
   request.stations = setup_.tools.stations;
   request.setup = setup_;
+  request.programMachine = true;  // a program that names its machine is graded on it (issue 27)
   gradeButton_->setEnabled(false);
   setCursor(Qt::BusyCursor);
   summary_->setText(tr("Grading..."));

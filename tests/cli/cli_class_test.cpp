@@ -3,6 +3,7 @@
 // grammar errors, a run-time alarm, a binary and an empty file.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -140,6 +141,28 @@ TEST(CliClass, OnlyTheStudentsProgramsAreGradedAndTheGradesCanBeWrittenAgain) {
     EXPECT_EQ(csv.find("grades.csv"), std::string::npos) << csv;
     EXPECT_EQ(csv.find("notes.pdf"), std::string::npos) << csv;
   }
+  fs::remove_all(dir);
+}
+
+// Issue 27: a student's program that names its machine at its head is graded on
+// it: sample 01 written for a ROMI in system B (G95, G92 S) passes against the
+// system-A reference; with --dialect fanuc forced it is read as system A and fails.
+TEST(CliClass, EachProgramIsGradedOnTheMachineItNames) {
+  const fs::path dir = fs::temp_directory_path() / ("klueng_cli_class_machine_test_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string reference = slurp(fs::path(KLUENG_SAMPLES_DIR) / "01-step-shaft.txt");
+  std::string romi = replaced(reference, "O0001\n", "O0001\n(MACHINE: romi-gl240m)\n");
+  romi = replaced(romi, "N15 G99", "N15 G95");
+  romi = replaced(romi, "N30 G50 S2500", "N30 G92 S2500");
+  std::ofstream(dir / "romi.txt", std::ios::binary) << romi;
+  const std::string args = "'" + dir.string() + "' --reference '" + KLUENG_SAMPLES_DIR + "/01-step-shaft.txt'";
+  const fs::path named = dir / "named.csv", forced = dir / "forced.csv";
+  std::string err;
+  ASSERT_EQ(run(args + " --csv '" + named.string() + "'", &err), 0) << err;
+  EXPECT_NE(slurp(named).find("\nromi.txt,pass,0,"), std::string::npos) << slurp(named);
+  ASSERT_EQ(run(args + " --dialect fanuc --csv '" + forced.string() + "'", &err), 0) << err;
+  EXPECT_NE(slurp(forced).find("\nromi.txt,fail,"), std::string::npos) << slurp(forced);
   fs::remove_all(dir);
 }
 

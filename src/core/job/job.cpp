@@ -1,5 +1,6 @@
 // One job (job.h): the one chain from a program to its check, tools, stock and run.
 #include "klueng/core/job/job.h"
+#include "klueng/core/machine/machine_files.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -105,6 +106,21 @@ std::shared_ptr<const Job> makeJob(JobInput input) {
     return job;
   }
   io::ProgramFile& file = *j.file_;
+  // A program that names its machine at its head ((MACHINE: id), issue 27) runs on it:
+  // its dialect, its machine.cfg keys, its turret's stations.
+  if (input.programMachine) {
+    std::vector<Diagnostic> warnings;
+    if (const std::optional<gcode::Dialect> own = machine::machineOfProgram(file, warnings);
+        own && *own != input.run.dialect) {
+      const gcode::MachineProfile& profile = gcode::machineProfile(*own);
+      input.run.dialect = *own;
+      input.setup.machine = machine::withMachineKeys(input.setup.machine, profile);
+      if (profile.maxToolStation > 0)
+        input.stations = std::min(profile.maxToolStation, input.setup.tools.stations);
+      j.tools_.setup = input.setup;
+    }
+    j.diagnostics_.insert(j.diagnostics_.end(), warnings.begin(), warnings.end());
+  }
   const machine::RunOptions& run = input.run;
   // The check and the inference read the program as a run in this dialect and these units would;
   // they never touch #500-#999.

@@ -54,6 +54,10 @@ struct JobInput {
   bool inferTools = true;
   // The editor's check while typing also follows the modal state (W104-W106).
   bool modalRules = false;
+  // The machine the program names at its head, `(MACHINE: id)`, wins over run.dialect
+  // (its keys join the setup's machine.cfg); a name not loaded is F205 and changes nothing.
+  // Set where no machine was chosen for this very program (class grading a folder).
+  bool programMachine = false;
 };
 
 class Job {
