@@ -5,6 +5,8 @@
 #include <QTextDocument>
 #include <QUrl>
 #include <QSet>
+
+#include <algorithm>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QPushButton>
@@ -126,6 +128,17 @@ QString HelpContents::buildHtml(bool thai, core::gcode::Dialect dialect) {
     for (const auto& a : core::gcode::codeTable()) rows.emplace_back(&a, false);
     for (const auto& a : core::gcode::systemOnlyRows())
       if (machine.system != core::gcode::GcodeSystem::A) rows.emplace_back(&a, true);
+    // In the order of the numbers this machine uses (system B's G33 among the G3x, its
+    // G98/G99 return levels beside each other), as a control's manual lists them.
+    const auto shownNumber = [&](const std::pair<const core::gcode::CodeInfo*, bool>& r) {
+      const core::gcode::CodeInfo& a = *r.first;
+      if (!a.in(dialect) || r.second) return a.number;
+      const int n = core::gcode::numberInSystem(a.letter, a.number, dialect);
+      const core::gcode::CodeInfo* own = core::gcode::findCode(a.letter, n, dialect);
+      return own && own->action == a.action ? n : a.number;
+    };
+    std::stable_sort(rows.begin(), rows.end(),
+                     [&](const auto& x, const auto& y) { return shownNumber(x) < shownNumber(y); });
     for (const auto& [row, systemOnly] : rows) {
       const core::gcode::CodeInfo& a = *row;
       if (a.letter != letter) continue;

@@ -2,6 +2,7 @@
 // listed, jump to them, save, switch language, answer the unsaved-changes
 // prompt, run a program that raises an alarm. Offscreen platform (QTest).
 #include <QAction>
+#include <QRegularExpression>
 #include <QApplication>
 #include <QFile>
 #include <QMenu>
@@ -550,6 +551,32 @@ class MainWindowTest : public QObject {
     }
     QVERIFY(codes > 30);
     QVERIFY(page.contains(QStringLiteral("G codes")));
+    // On a system-B machine the codes come in its own numbers' order (issue 27): G33
+    // (system A's G32) before G40, G98 before G99, all before the M codes.
+    core::gcode::Dialect romi{};
+    QVERIFY(core::gcode::parseDialectId("romi-gl240m", romi));
+    help->setDialect(romi);
+    const QString b = help->browser()->toPlainText();
+    const qsizetype gTable = b.indexOf(QStringLiteral("G codes ("));
+    const qsizetype mTable = b.indexOf(QStringLiteral("M codes ("));
+    QVERIFY(gTable > 0 && mTable > gTable);
+    const auto at = [&b, gTable](const char* code) { return b.indexOf(QLatin1String(code), gTable); };
+    QVERIFY2(at("G33") >= 0 && at("G33") < at("G40") && at("G40") < mTable, qPrintable(b.mid(gTable, 3000)));
+    QVERIFY(at("G98") >= 0 && at("G98") < at("G99") && at("G99") < mTable);
+    // Every row's code (a line of its own) in ascending order: the rows only system B has
+    // (G90/G91 absolute/incremental, G98/G99 return levels) used to trail the table.
+    const QStringList tableLines = b.mid(gTable, mTable - gTable).split(QLatin1Char('\n'));
+    int last = -1, rowsSeen = 0;
+    static const QRegularExpression codeLine(QStringLiteral("^G(\\d\\d)$"));
+    for (const QString& line : tableLines)
+      if (const QRegularExpressionMatch m = codeLine.match(line.trimmed()); m.hasMatch()) {
+        const int n = m.captured(1).toInt();
+        QVERIFY2(n >= last, qPrintable(QStringLiteral("G%1 after G%2").arg(n).arg(last)));
+        last = n;
+        ++rowsSeen;
+      }
+    QVERIFY(rowsSeen > 20);
+    help->setDialect(core::gcode::Dialect::Fanuc);
     w.action(QStringLiteral("actionToggleLanguage"))->trigger();
     QTRY_VERIFY(help->browser()->toPlainText().contains(QStringLiteral("รหัส G")));
   }
