@@ -59,8 +59,8 @@ void BM_CheckJob(benchmark::State& state) {
     input.file = std::move(file);
     const auto made = job::makeJob(std::move(input));
     const std::vector<Diagnostic> diagnostics = made->programFileDiagnostics();
-    errors = static_cast<std::size_t>(std::count_if(diagnostics.begin(), diagnostics.end(),
-                                                    [](const Diagnostic& d) { return isError(d.severity); }));
+    errors = static_cast<std::size_t>(
+        std::count_if(diagnostics.begin(), diagnostics.end(), [](const Diagnostic& d) { return isError(d.severity); }));
   }
   state.counters["errors"] = static_cast<double>(errors);
 }
@@ -72,14 +72,20 @@ void BM_Stage(benchmark::State& state) {
   const std::vector<Diagnostic> found = gcode::check(program, options(loaded));
   for (auto _ : state) {
     switch (state.range(0)) {
-      case 0: benchmark::DoNotOptimize(gcode::parse(text, 7).blocks.data()); break;
-      case 1: benchmark::DoNotOptimize(gcode::check(program, options(loaded)).data()); break;
+      case 0:
+        benchmark::DoNotOptimize(gcode::parse(text, 7).blocks.data());
+        break;
+      case 1:
+        benchmark::DoNotOptimize(gcode::check(program, options(loaded)).data());
+        break;
       case 2:
         benchmark::DoNotOptimize(machine::inferTools(program, text, 7, loaded.setup, io::shippedToolLibrary(), {},
                                                      loaded.setup.tools.stations)
                                      .choices.data());
         break;
-      case 3: benchmark::DoNotOptimize(gcode::suggestDialect(program, options(loaded), found).has_value()); break;
+      case 3:
+        benchmark::DoNotOptimize(gcode::suggestDialect(program, options(loaded), found).has_value());
+        break;
     }
   }
   static const char* const names[] = {"parse", "check", "inferTools", "suggestDialect"};

@@ -80,31 +80,34 @@ int main(int argc, char** argv) {
     exitCode = 1;
     QApplication::exit(1);
   });
-  when(&window, [&] { return loaded && !window.isBusy(); }, [&] {
-    report("checked", clock);
-    const auto& steps = klueng::gui::RunSpeedControl::steps();
-    for (std::size_t i = 0; i < steps.size(); ++i)
-      if (steps[i] == klueng::gui::RunController::kAsFastAsPossible)
-        window.action(QStringLiteral("actionSpeed%1").arg(i))->trigger();
-    window.action(QStringLiteral("actionGo"))->trigger();
-    when(&window,
-         [&] {
-           const RunState s = runner->state();
-           return !runner->isBusy() && (s == RunState::Finished || s == RunState::Alarm || s == RunState::Idle);
-         },
-         [&] {
-           if (runner->state() != RunState::Finished) {
-             std::fprintf(stderr, "the run did not finish (state %s)\n",
-                          qPrintable(klueng::gui::runStateName(runner->state())));
-             exitCode = 1;
-           }
-           // Let the window take in the finished run (path, part panel, repaints).
-           QTimer::singleShot(1000, &window, [&] {
-             report("ran", clock);
-             QApplication::exit(exitCode);
-           });
-         });
-  });
+  when(
+      &window, [&] { return loaded && !window.isBusy(); },
+      [&] {
+        report("checked", clock);
+        const auto& steps = klueng::gui::RunSpeedControl::steps();
+        for (std::size_t i = 0; i < steps.size(); ++i)
+          if (steps[i] == klueng::gui::RunController::kAsFastAsPossible)
+            window.action(QStringLiteral("actionSpeed%1").arg(i))->trigger();
+        window.action(QStringLiteral("actionGo"))->trigger();
+        when(
+            &window,
+            [&] {
+              const RunState s = runner->state();
+              return !runner->isBusy() && (s == RunState::Finished || s == RunState::Alarm || s == RunState::Idle);
+            },
+            [&] {
+              if (runner->state() != RunState::Finished) {
+                std::fprintf(stderr, "the run did not finish (state %s)\n",
+                             qPrintable(klueng::gui::runStateName(runner->state())));
+                exitCode = 1;
+              }
+              // Let the window take in the finished run (path, part panel, repaints).
+              QTimer::singleShot(1000, &window, [&] {
+                report("ran", clock);
+                QApplication::exit(exitCode);
+              });
+            });
+      });
   QApplication::exec();
   report("end", clock);
   return exitCode;

@@ -114,10 +114,14 @@ int main(int argc, char** argv) {
   std::vector<int> sizes = {10'000, 100'000, 1'000'000};
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i];
-    if (key == "--cli") cli = argv[i + 1];
-    else if (key == "--rs274") rs274 = argv[i + 1];
-    else if (key == "--runs") runs = std::max(1, std::atoi(argv[i + 1]));
-    else if (key == "--roughing") roughing = std::max(0, std::atoi(argv[i + 1]));
+    if (key == "--cli")
+      cli = argv[i + 1];
+    else if (key == "--rs274")
+      rs274 = argv[i + 1];
+    else if (key == "--runs")
+      runs = std::max(1, std::atoi(argv[i + 1]));
+    else if (key == "--roughing")
+      roughing = std::max(0, std::atoi(argv[i + 1]));
     else if (key == "--sizes") {
       sizes.clear();
       for (std::string rest = argv[i + 1]; !rest.empty();) {
@@ -170,7 +174,7 @@ int main(int argc, char** argv) {
     std::string label;
     std::size_t program = 0;
     std::vector<std::string> args;
-    bool cut = false;      // in-process: interpret and cut (simulate), interpret only (--no-stock), or load (check)
+    bool cut = false;       // in-process: interpret and cut (simulate), interpret only (--no-stock), or load (check)
     bool inProcess = true;  // rs274 has none
     std::vector<double> process, processCpu, inProcessMs;
     long rssKb = 0;
@@ -220,13 +224,15 @@ int main(int argc, char** argv) {
         request.stations = loaded.setup.tools.stations;
         const std::shared_ptr<const job::Job> job = job::makeJob(request);
         if (!interpret || !job->program() || !job->file() || job->hasErrors()) return;
-        if (!row.cut) (void)job->timeline();
-        else (void)job->cut();
+        if (!row.cut)
+          (void)job->timeline();
+        else
+          (void)job->cut();
       }));
     }
 
-  std::printf("%-9s %-9s %-10s %10s %10s %10s %7s %9s %12s\n", "program", "blocks", "command", "process",
-              "CPU", "in-proc", "ratio", "peak RSS", "process/1k");
+  std::printf("%-9s %-9s %-10s %10s %10s %10s %7s %9s %12s\n", "program", "blocks", "command", "process", "CPU",
+              "in-proc", "ratio", "peak RSS", "process/1k");
   double rs274Ms = 0.0, rs274Cpu = 0.0;
   for (const Row& row : rows)
     if (!row.inProcess) {
@@ -237,8 +243,10 @@ int main(int argc, char** argv) {
     const Program& program = programs[row.program];
     const double p = median(row.process), c = median(row.processCpu), q = median(row.inProcessMs);
     std::printf("%-9s %-9d %-10s %8.1f ms %7.1f ms ", program.name.c_str(), program.blocks, row.label.c_str(), p, c);
-    if (row.inProcess) std::printf("%7.1f ms %6.2fx", q, p / q);
-    else std::printf("%10s %7s", "-", "-");
+    if (row.inProcess)
+      std::printf("%7.1f ms %6.2fx", q, p / q);
+    else
+      std::printf("%10s %7s", "-", "-");
     std::printf(" %6ld MB %9.3f ms", row.rssKb / 1024, p / (program.blocks / 1000.0));
     if (program.name == "roughing" && rs274Ms > 0.0)
       std::printf("  %.2f x rs274 (CPU %.2f x)", p / rs274Ms, c / rs274Cpu);

@@ -27,8 +27,8 @@ void requireMessages(const io::ReadResult<T>& r) {
 
 bool inside(const cut::Box& b, const cut::Box& outer) {
   constexpr double e = 1e-9;
-  return b.z0 >= outer.z0 - e && b.z1 <= outer.z1 + e && b.x0 >= outer.x0 - e && b.x1 <= outer.x1 + e &&
-         b.z0 <= b.z1 && b.x0 <= b.x1;
+  return b.z0 >= outer.z0 - e && b.z1 <= outer.z1 + e && b.x0 >= outer.x0 - e && b.x1 <= outer.x1 + e && b.z0 <= b.z1 &&
+         b.x0 <= b.x1;
 }
 
 }  // namespace

@@ -21,7 +21,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (size > 200000) return 0;
   const std::string text(reinterpret_cast<const char*>(data), size);
   const bool json = !text.empty() && text[0] == '{';
-  const io::ReadResult<design::PartDesign> read = json ? design::readPartDesign(text, "f.json") : design::importDxf(text, "f.dxf");
+  const io::ReadResult<design::PartDesign> read =
+      json ? design::readPartDesign(text, "f.json") : design::importDxf(text, "f.dxf");
   for (const Diagnostic& d : read.diagnostics) (void)formatMessage(d, Lang::Th);
   if (!read.value) return 0;
   const design::PartDesign& part = *read.value;

@@ -37,12 +37,12 @@ struct CheckOptions {
   std::vector<std::string> files;
   Lang lang = Lang::En;
   gcode::Dialect dialect = gcode::Dialect::Fanuc;
-  std::string machine;  // --machine NAME|FILE, resolved once the machines folders are read
+  std::string machine;        // --machine NAME|FILE, resolved once the machines folders are read
   bool dialectGiven = false;  // --dialect or --machine: wins over the machine a program names
   bool json = false;
   bool summary = false;
   std::string configDir;
-  std::optional<io::JobHeader> stock;            // --stock
+  std::optional<io::JobHeader> stock;             // --stock
   std::optional<gcode::InputUnits> powerOnUnits;  // --units
   std::optional<bool> calculatorInput;            // --decimal-point
   std::vector<std::string> tools;                 // --tool N=ID, checked once the turret size is known
@@ -99,8 +99,8 @@ std::optional<int> parseArgs(const std::vector<std::string>& args, CheckOptions&
       arg.resize(eq);
       hasValue = true;
     }
-    if (arg != "--lang" && arg != "--dialect" && arg != "--machine" && arg != "--config" && arg != "--stock" && arg != "--units" &&
-        arg != "--tool" && arg != "--decimal-point")
+    if (arg != "--lang" && arg != "--dialect" && arg != "--machine" && arg != "--config" && arg != "--stock" &&
+        arg != "--units" && arg != "--tool" && arg != "--decimal-point")
       return usageError(lang, codes::kCliUnknownOption, {arg});
     if (!hasValue) {
       if (i + 1 >= args.size()) return usageError(lang, codes::kCliNeedsValue, {arg});
@@ -126,8 +126,7 @@ std::optional<int> parseArgs(const std::vector<std::string>& args, CheckOptions&
       if (!o.powerOnUnits) return mustBe(lang, arg, codes::kCliAllowedUnits, value);
     } else if (arg == "--decimal-point") {
       o.calculatorInput = parseDecimalPoint(value);
-      if (!o.calculatorInput)
-        return mustBe(lang, arg, codes::kCliAllowedDecimalPoint, value);
+      if (!o.calculatorInput) return mustBe(lang, arg, codes::kCliAllowedDecimalPoint, value);
     } else if (arg == "--tool") {
       o.tools.push_back(value);
     } else {
@@ -170,8 +169,8 @@ void printSummary(const std::vector<FileSummary>& rows, Lang lang) {
   const bool th = lang == Lang::Th;
   std::size_t width = 4;
   for (const auto& r : rows) width = std::max(width, r.file.size());
-  std::string out = fmt::format("\n{:<{}}  {:>6}  {:>8}  {}\n", th ? "ไฟล์" : "file", width,
-                                th ? "ข้อผิดพลาด" : "errors", th ? "คำเตือน" : "warnings", th ? "ผล" : "result");
+  std::string out = fmt::format("\n{:<{}}  {:>6}  {:>8}  {}\n", th ? "ไฟล์" : "file", width, th ? "ข้อผิดพลาด" : "errors",
+                                th ? "คำเตือน" : "warnings", th ? "ผล" : "result");
   for (const auto& r : rows) {
     const char* result = r.unreadable ? (th ? "อ่านไม่ได้" : "unreadable")
                          : r.errors   ? (th ? "ไม่ผ่าน" : "FAIL")
@@ -223,8 +222,10 @@ int runCheck(const std::vector<std::string>& args) {
       all.push_back({path, d});
     }
     for (const Diagnostic& d : job->diagnostics()) {
-      if (isError(d.severity)) ++row.errors;
-      else if (d.severity == Severity::Warning) ++row.warnings;
+      if (isError(d.severity))
+        ++row.errors;
+      else if (d.severity == Severity::Warning)
+        ++row.warnings;
       all.push_back({job->fileOf(d), d});
     }
     row.unreadable = job->unreadable();

@@ -40,7 +40,7 @@ struct ClassOptions {
   bool sheets = false;
   double tolerance = 0.05;
   gcode::Dialect dialect = gcode::Dialect::Fanuc;
-  std::string machine;  // --machine NAME|FILE
+  std::string machine;        // --machine NAME|FILE
   bool dialectGiven = false;  // --dialect or --machine: wins over the machine a program names
   Lang lang = langFromLocale();
 };
@@ -51,35 +51,43 @@ std::optional<ClassOptions> parse(const std::vector<std::string>& args) {
   o.lang = langOfArgs(args);
   const Lang lang = o.lang;
   const auto bad = [lang](const std::string& option, const std::string& value, const char* allowed) {
-    if (allowed) printCliError("class", codes::kCliBadValue, lang, {value, option, cliText(allowed, lang)});
-    else printCliError("class", codes::kCliBadValueAnyOf, lang, {value, option});
+    if (allowed)
+      printCliError("class", codes::kCliBadValue, lang, {value, option, cliText(allowed, lang)});
+    else
+      printCliError("class", codes::kCliBadValueAnyOf, lang, {value, option});
     return std::nullopt;
   };
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     const bool takesValue = a == "--reference" || a == "--drawing" || a == "--layer" || a == "--general-tolerance" ||
-                            a == "--csv" || a == "--pdf" || a == "--config" || a == "--tolerance" ||
-                            a == "--dialect" || a == "--machine" || a == "--lang";
+                            a == "--csv" || a == "--pdf" || a == "--config" || a == "--tolerance" || a == "--dialect" ||
+                            a == "--machine" || a == "--lang";
     if (takesValue && i + 1 >= args.size()) {
       printCliError("class", codes::kCliNeedsValue, lang, {a});
       return std::nullopt;
     }
-    if (a == "--reference") o.reference = args[++i];
-    else if (a == "--drawing") o.drawing = args[++i];
-    else if (a == "--layer") o.layer = args[++i];
+    if (a == "--reference")
+      o.reference = args[++i];
+    else if (a == "--drawing")
+      o.drawing = args[++i];
+    else if (a == "--layer")
+      o.layer = args[++i];
     else if (a == "--general-tolerance") {
       o.generalTolerance = args[++i];
-      if (!design::generalTolerance(o.generalTolerance, 10.0)) return bad(a, o.generalTolerance, codes::kCliAllowedGeneralTolerance);
-    }
-    else if (a == "--csv") o.csv = args[++i];
-    else if (a == "--pdf") o.pdf = args[++i];
-    else if (a == "--sheets") o.sheets = true;
-    else if (a == "--config") o.configDir = args[++i];
+      if (!design::generalTolerance(o.generalTolerance, 10.0))
+        return bad(a, o.generalTolerance, codes::kCliAllowedGeneralTolerance);
+    } else if (a == "--csv")
+      o.csv = args[++i];
+    else if (a == "--pdf")
+      o.pdf = args[++i];
+    else if (a == "--sheets")
+      o.sheets = true;
+    else if (a == "--config")
+      o.configDir = args[++i];
     else if (a == "--machine") {
       o.machine = args[++i];
       o.dialectGiven = true;
-    }
-    else if (a == "--tolerance") {
+    } else if (a == "--tolerance") {
       const std::string& v = args[++i];
       char* end = nullptr;
       o.tolerance = std::strtod(v.c_str(), &end);
@@ -201,7 +209,8 @@ int runClass(const std::vector<std::string>& args) {
   const std::vector<core::job::ClassRow> rows = core::job::gradeClass(
       o.dir, against, *request,
       [](int i, int n, const std::string& name) { std::fprintf(stderr, "[%d/%d] %s\n", i + 1, n, name.c_str()); });
-  const int passed = static_cast<int>(std::count_if(rows.begin(), rows.end(), [](const core::job::ClassRow& r) { return r.pass; }));
+  const int passed =
+      static_cast<int>(std::count_if(rows.begin(), rows.end(), [](const core::job::ClassRow& r) { return r.pass; }));
   const std::string table = core::job::classCsv(rows, against.hasDrawing);
   if (o.csv.empty()) {
     std::fputs(table.c_str(), stdout);

@@ -41,8 +41,10 @@ Lang langFromLocale() {
 Lang langOfArgs(const std::vector<std::string>& args) {
   for (std::size_t i = 0; i < args.size(); ++i) {
     std::optional<Lang> lang;
-    if (args[i] == "--lang" && i + 1 < args.size()) lang = parseLang(args[i + 1]);
-    else if (args[i].rfind("--lang=", 0) == 0) lang = parseLang(std::string_view(args[i]).substr(7));
+    if (args[i] == "--lang" && i + 1 < args.size())
+      lang = parseLang(args[i + 1]);
+    else if (args[i].rfind("--lang=", 0) == 0)
+      lang = parseLang(std::string_view(args[i]).substr(7));
     if (lang) return *lang;
   }
   return langFromLocale();
@@ -53,7 +55,8 @@ std::string cliText(const char* code, Lang lang, std::vector<std::string> args) 
 }
 
 void printCliError(const char* command, const char* code, Lang lang, std::vector<std::string> args) {
-  const std::string line = fmt::format("klueng-cli{}{}: {}\n", *command ? " " : "", command, cliText(code, lang, std::move(args)));
+  const std::string line =
+      fmt::format("klueng-cli{}{}: {}\n", *command ? " " : "", command, cliText(code, lang, std::move(args)));
   std::fwrite(line.data(), 1, line.size(), stderr);
 }
 
@@ -163,16 +166,32 @@ std::string jsonEscape(std::string_view text) {
     const auto c = static_cast<unsigned char>(text[i]);
     if (c < 0x80) {
       switch (c) {
-        case '"': out += "\\\""; break;
-        case '\\': out += "\\\\"; break;
-        case '\n': out += "\\n"; break;
-        case '\r': out += "\\r"; break;
-        case '\t': out += "\\t"; break;
-        case '\b': out += "\\b"; break;
-        case '\f': out += "\\f"; break;
+        case '"':
+          out += "\\\"";
+          break;
+        case '\\':
+          out += "\\\\";
+          break;
+        case '\n':
+          out += "\\n";
+          break;
+        case '\r':
+          out += "\\r";
+          break;
+        case '\t':
+          out += "\\t";
+          break;
+        case '\b':
+          out += "\\b";
+          break;
+        case '\f':
+          out += "\\f";
+          break;
         default:
-          if (c < 0x20 || c == 0x7F) out += fmt::format("\\u{:04x}", c);
-          else out += static_cast<char>(c);
+          if (c < 0x20 || c == 0x7F)
+            out += fmt::format("\\u{:04x}", c);
+          else
+            out += static_cast<char>(c);
       }
       ++i;
       continue;
@@ -247,10 +266,9 @@ int stationLimit(const LoadedConfig& config, gcode::Dialect dialect) {
 }
 
 std::optional<core::job::JobInput> jobRequest(const LoadedConfig& config, gcode::Dialect dialect,
-                                                  std::optional<gcode::InputUnits> powerOnUnits,
-                                                  const std::optional<io::JobHeader>& stock,
-                                                  const std::vector<std::string>& tools, std::string& error,
-                                                  Lang lang) {
+                                              std::optional<gcode::InputUnits> powerOnUnits,
+                                              const std::optional<io::JobHeader>& stock,
+                                              const std::vector<std::string>& tools, std::string& error, Lang lang) {
   core::job::JobInput request;
   request.setup = config.setup;
   request.run.dialect = dialect;
@@ -261,14 +279,15 @@ std::optional<core::job::JobInput> jobRequest(const LoadedConfig& config, gcode:
   request.toolTable = !config.unreadable;
   for (const std::string& t : tools) {
     machine::StationOverride o;
-    if (!machine::parseStationOverride(t, request.stations, io::shippedToolLibrary(), o, error, lang)) return std::nullopt;
+    if (!machine::parseStationOverride(t, request.stations, io::shippedToolLibrary(), o, error, lang))
+      return std::nullopt;
     request.overrides.push_back(o);
   }
   return request;
 }
 
 std::optional<core::design::PartDesign> readPartDrawing(const std::string& path, const std::string& layer,
-                                                       double chuckGrip, core::Lang lang) {
+                                                        double chuckGrip, core::Lang lang) {
   const core::io::ReadResult<std::string> read = core::design::readPartFile(path);
   for (const core::Diagnostic& d : read.diagnostics) printDiagnostic(stderr, path, d, lang);
   if (!read.ok()) return std::nullopt;
@@ -277,14 +296,15 @@ std::optional<core::design::PartDesign> readPartDrawing(const std::string& path,
   core::design::DxfImportOptions dxf;
   dxf.chuckGrip = chuckGrip;
   dxf.layer = layer;
-  const auto part = ext == ".dxf" ? core::design::importDxf(*read.value, path, dxf)
-                                  : core::design::readPartDesign(*read.value, path);
+  const auto part =
+      ext == ".dxf" ? core::design::importDxf(*read.value, path, dxf) : core::design::readPartDesign(*read.value, path);
   for (const core::Diagnostic& d : part.diagnostics) printDiagnostic(stderr, path, d, lang);
   if (!part.ok()) return std::nullopt;
   return *part.value;
 }
 
-std::optional<std::vector<core::cut::DrawnDimension>> readDrawnDimensions(const std::string& path, const std::string& layer,
+std::optional<std::vector<core::cut::DrawnDimension>> readDrawnDimensions(const std::string& path,
+                                                                          const std::string& layer,
                                                                           const std::string& general, double chuckGrip,
                                                                           core::Lang lang) {
   const std::optional<core::design::PartDesign> part = readPartDrawing(path, layer, chuckGrip, lang);

@@ -40,12 +40,13 @@ void printCliError(const char* command, const char* code, core::Lang lang, std::
 // dimensions with their tolerances (`general`: an ISO 2768 class for the ones
 // without); nullopt after printing why (the file's own located messages).
 std::optional<core::design::PartDesign> readPartDrawing(const std::string& path, const std::string& layer,
-                                                       double chuckGrip, core::Lang lang);
-std::optional<std::vector<core::cut::DrawnDimension>> readDrawnDimensions(const std::string& path, const std::string& layer,
+                                                        double chuckGrip, core::Lang lang);
+std::optional<std::vector<core::cut::DrawnDimension>> readDrawnDimensions(const std::string& path,
+                                                                          const std::string& layer,
                                                                           const std::string& general, double chuckGrip,
                                                                           core::Lang lang);
-std::optional<core::Lang> parseLang(std::string_view text);                  // "en" | "th"
-std::optional<core::gcode::Dialect> parseDialect(std::string_view text);     // "fanuc" | "classic"
+std::optional<core::Lang> parseLang(std::string_view text);               // "en" | "th"
+std::optional<core::gcode::Dialect> parseDialect(std::string_view text);  // "fanuc" | "classic"
 // --machine NAME|FILE (issue 27), once the setup (and with it the machines
 // folders) is read: the machine into `dialect` and its machine.cfg keys into the
 // setup. Empty `machine`: the dialect stays, only its keys apply. false after
@@ -56,7 +57,7 @@ bool chooseMachine(const std::string& machine, core::machine::LoadedSetup& confi
 // writes it), runs it unless --machine or --dialect chose one (`chosen`); else
 // `dialect`. A machine that is not loaded: `dialect`, and warning F205 in `warnings`.
 core::gcode::Dialect programMachine(const std::string& file, bool chosen, core::gcode::Dialect dialect,
-                                   std::vector<core::Diagnostic>& warnings);
+                                    std::vector<core::Diagnostic>& warnings);
 
 // --stock DxL[xBORE][in]: "50x100", "2.1x4in", "118x80x90" (Ø118 tube, 80 long,
 // Ø90 bore). 0 < D, L <= 9999.999 (what a header line and Job details hold: a
@@ -102,13 +103,11 @@ LoadedConfig loadConfig(const std::string& explicitDir = {});
 // program, a subprogram file, the reference, a graded file, the part file, a
 // setup file) would destroy it (F126); a read-only output is refused (F119).
 // Prints each; true when there is none. Empty names are skipped.
-bool outputsAllowed(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs,
-                        core::Lang lang);
+bool outputsAllowed(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs, core::Lang lang);
 // The setup files of `config` (tools.cfg, offset.cfg, machine.cfg, macro_variables.cfg in its folder): inputs too.
 std::vector<std::string> setupFiles(const LoadedConfig& config);
 // What a run of `file` read: the program, its subprogram files and the setup files.
-std::vector<std::string> programInputs(const std::string& file, const core::job::Job& job,
-                                       const LoadedConfig& config);
+std::vector<std::string> programInputs(const std::string& file, const core::job::Job& job, const LoadedConfig& config);
 // Writes with core/io/file_write.h; on failure prints the diagnostic (F1xx,
 // path and reason, in `lang`) and returns false. The old file keeps its bytes.
 bool writeOutput(const std::string& path, std::string_view bytes, core::Lang lang);
@@ -123,10 +122,9 @@ int stationLimit(const LoadedConfig& config, core::gcode::Dialect dialect);
 // choices (checked against the turret).
 // nullopt with `error` set when a --tool choice is refused (exit 2).
 std::optional<core::job::JobInput> jobRequest(const LoadedConfig& config, core::gcode::Dialect dialect,
-                                                        std::optional<core::gcode::InputUnits> powerOnUnits,
-                                                        const std::optional<core::io::JobHeader>& stock,
-                                                        const std::vector<std::string>& tools, std::string& error,
-                                                        core::Lang lang = core::Lang::En);
-
+                                              std::optional<core::gcode::InputUnits> powerOnUnits,
+                                              const std::optional<core::io::JobHeader>& stock,
+                                              const std::vector<std::string>& tools, std::string& error,
+                                              core::Lang lang = core::Lang::En);
 
 }  // namespace klueng::cli

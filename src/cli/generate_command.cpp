@@ -25,7 +25,8 @@ namespace {
 
 bool isDxf(const std::string& path) {
   std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : std::string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return ext == ".dxf";
 }
 
@@ -67,15 +68,24 @@ int runGenerate(const std::vector<std::string>& args) {
       return 2;
     }
     const std::string v = args[++i];
-    if (a == "-o" || a == "--output") out = v;
-    else if (a == "--config") configDir = v;
-    else if (a == "--material") material = v;
-    else if (a == "--tool-material" && (v == "hss" || v == "carbide")) toolMaterial = v;
-    else if (a == "--dialect" && parseDialect(v)) options.dialect = *parseDialect(v);
-    else if (a == "--machine") machine = v;
-    else if (a == "--layer") dxfOptions.layer = v;
-    else if (std::array<double, 3> s{}; a == "--stock" && parseStock(v, s[0], s[1], s[2])) stock = s;
-    else if (a == "--lang" && parseLang(v)) options.lang = *parseLang(v);
+    if (a == "-o" || a == "--output")
+      out = v;
+    else if (a == "--config")
+      configDir = v;
+    else if (a == "--material")
+      material = v;
+    else if (a == "--tool-material" && (v == "hss" || v == "carbide"))
+      toolMaterial = v;
+    else if (a == "--dialect" && parseDialect(v))
+      options.dialect = *parseDialect(v);
+    else if (a == "--machine")
+      machine = v;
+    else if (a == "--layer")
+      dxfOptions.layer = v;
+    else if (std::array<double, 3> s{}; a == "--stock" && parseStock(v, s[0], s[1], s[2]))
+      stock = s;
+    else if (a == "--lang" && parseLang(v))
+      options.lang = *parseLang(v);
     else {
       printCliError("generate", codes::kCliBadOption, lang, {a, v});
       std::fputs(usage.c_str(), stderr);

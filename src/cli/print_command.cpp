@@ -34,7 +34,7 @@ struct PrintOptions {
   Lang lang = Lang::En;
   gcode::Dialect dialect = gcode::Dialect::Fanuc;
   bool dialectGiven = false;  // --dialect or --machine: wins over the machine a program names
-  std::string machine;  // --machine NAME|FILE
+  std::string machine;        // --machine NAME|FILE
   std::optional<io::JobHeader> stock;
   std::optional<gcode::InputUnits> powerOnUnits;
   std::optional<bool> calculatorInput;

@@ -2,7 +2,8 @@
 //                          [--lang en|th] [--dialect fanuc|haas|classic]
 //                          [--optional-stop] [--block-skip] [--no-persist]
 //                          [--png out.png] [--profile out.csv] [--json summary.json] [--resolution MM]
-//                          [--svg out.svg] [--dxf out.dxf] [--no-stock]   (--no-stock: interpret only, no stock collisions)
+//                          [--svg out.svg] [--dxf out.dxf] [--no-stock]   (--no-stock: interpret only, no stock
+//                          collisions)
 //                          [--stock DxL[xBORE][in]] [--units mm|inch] [--show-units auto|mm|inch]
 // The stock: --stock, else the file's header, else inferred from the program
 // (a note on stderr says which, SPEC 2 ext).
@@ -48,24 +49,24 @@ struct SimulateOptions {
   std::string file;
   std::string tracePath;
   bool cycleTime = false;
-  bool partCheck = false;        // --part-check
+  bool partCheck = false;            // --part-check
   bool compareCompensation = false;  // --compare-compensation [none|sharp]
   bool compareSharp = false;
-  double partTolerance = 0.01;   // --part-tolerance MM (leftover allowed, radial)
+  double partTolerance = 0.01;  // --part-tolerance MM (leftover allowed, radial)
   std::string configDir;
   Lang lang = Lang::En;
   gcode::Dialect dialect = gcode::Dialect::Fanuc;
   bool dialectGiven = false;  // --dialect or --machine: wins over the machine a program names
-  std::string machine;  // --machine NAME|FILE
+  std::string machine;        // --machine NAME|FILE
   bool optionalStop = false;
   bool blockSkip = false;
-  bool persistVariables = true;  // write #500-#999 back to macro_variables.cfg (config or user data folder)
-  CutOutputOptions cut;  // --png --profile --json --resolution (cut_outputs.h)
-  std::optional<io::JobHeader> stock;            // --stock
+  bool persistVariables = true;        // write #500-#999 back to macro_variables.cfg (config or user data folder)
+  CutOutputOptions cut;                // --png --profile --json --resolution (cut_outputs.h)
+  std::optional<io::JobHeader> stock;  // --stock
   std::optional<gcode::InputUnits> powerOnUnits;  // --units
   std::optional<bool> calculatorInput;            // --decimal-point
   std::optional<DisplayUnits> showUnits;          // --show-units (nullopt: auto, the program's)
-  std::vector<std::string> tools;  // --tool N=ID, checked once the turret size is known
+  std::vector<std::string> tools;                 // --tool N=ID, checked once the turret size is known
 };
 
 // One row per option: name, whether it takes a value, what it does. New
@@ -78,9 +79,21 @@ struct OptionSpec {
 
 const std::vector<OptionSpec>& optionSpecs() {
   static const std::vector<OptionSpec> specs = {
-      {"--trace", true, [](SimulateOptions& o, const std::string& v) { o.tracePath = v; return true; }},
-      {"--cycle-time", false, [](SimulateOptions& o, const std::string&) { o.cycleTime = true; return true; }},
-      {"--config", true, [](SimulateOptions& o, const std::string& v) { o.configDir = v; return true; }},
+      {"--trace", true,
+       [](SimulateOptions& o, const std::string& v) {
+         o.tracePath = v;
+         return true;
+       }},
+      {"--cycle-time", false,
+       [](SimulateOptions& o, const std::string&) {
+         o.cycleTime = true;
+         return true;
+       }},
+      {"--config", true,
+       [](SimulateOptions& o, const std::string& v) {
+         o.configDir = v;
+         return true;
+       }},
       {"--lang", true,
        [](SimulateOptions& o, const std::string& v) {
          const auto lang = parseLang(v);
@@ -100,13 +113,41 @@ const std::vector<OptionSpec>& optionSpecs() {
          o.dialectGiven = true;
          return true;
        }},
-      {"--optional-stop", false, [](SimulateOptions& o, const std::string&) { o.optionalStop = true; return true; }},
-      {"--block-skip", false, [](SimulateOptions& o, const std::string&) { o.blockSkip = true; return true; }},
-      {"--no-persist", false, [](SimulateOptions& o, const std::string&) { o.persistVariables = false; return true; }},
-      {"--png", true, [](SimulateOptions& o, const std::string& v) { o.cut.pngPath = v; return true; }},
-      {"--profile", true, [](SimulateOptions& o, const std::string& v) { o.cut.profilePath = v; return true; }},
-      {"--json", true, [](SimulateOptions& o, const std::string& v) { o.cut.jsonPath = v; return true; }},
-      {"--part-check", false, [](SimulateOptions& o, const std::string&) { o.partCheck = true; return true; }},
+      {"--optional-stop", false,
+       [](SimulateOptions& o, const std::string&) {
+         o.optionalStop = true;
+         return true;
+       }},
+      {"--block-skip", false,
+       [](SimulateOptions& o, const std::string&) {
+         o.blockSkip = true;
+         return true;
+       }},
+      {"--no-persist", false,
+       [](SimulateOptions& o, const std::string&) {
+         o.persistVariables = false;
+         return true;
+       }},
+      {"--png", true,
+       [](SimulateOptions& o, const std::string& v) {
+         o.cut.pngPath = v;
+         return true;
+       }},
+      {"--profile", true,
+       [](SimulateOptions& o, const std::string& v) {
+         o.cut.profilePath = v;
+         return true;
+       }},
+      {"--json", true,
+       [](SimulateOptions& o, const std::string& v) {
+         o.cut.jsonPath = v;
+         return true;
+       }},
+      {"--part-check", false,
+       [](SimulateOptions& o, const std::string&) {
+         o.partCheck = true;
+         return true;
+       }},
       {"--part-tolerance", true,
        [](SimulateOptions& o, const std::string& v) {
          o.partCheck = true;
@@ -118,10 +159,26 @@ const std::vector<OptionSpec>& optionSpecs() {
          o.compareSharp = v == "sharp";
          return v == "none" || v == "sharp";
        }},
-      {"--features", false, [](SimulateOptions& o, const std::string&) { o.cut.features = true; return true; }},
-      {"--svg", true, [](SimulateOptions& o, const std::string& v) { o.cut.svgPath = v; return true; }},
-      {"--dxf", true, [](SimulateOptions& o, const std::string& v) { o.cut.dxfPath = v; return true; }},
-      {"--no-stock", false, [](SimulateOptions& o, const std::string&) { o.cut.enabled = false; return true; }},
+      {"--features", false,
+       [](SimulateOptions& o, const std::string&) {
+         o.cut.features = true;
+         return true;
+       }},
+      {"--svg", true,
+       [](SimulateOptions& o, const std::string& v) {
+         o.cut.svgPath = v;
+         return true;
+       }},
+      {"--dxf", true,
+       [](SimulateOptions& o, const std::string& v) {
+         o.cut.dxfPath = v;
+         return true;
+       }},
+      {"--no-stock", false,
+       [](SimulateOptions& o, const std::string&) {
+         o.cut.enabled = false;
+         return true;
+       }},
       {"--stock", true,
        [](SimulateOptions& o, const std::string& v) {
          o.stock = parseStock(v);
@@ -134,9 +191,12 @@ const std::vector<OptionSpec>& optionSpecs() {
        }},
       {"--show-units", true,
        [](SimulateOptions& o, const std::string& v) {
-         if (v == "mm") o.showUnits = DisplayUnits::Mm;
-         else if (v == "inch") o.showUnits = DisplayUnits::Inch;
-         else if (v != "auto") return false;
+         if (v == "mm")
+           o.showUnits = DisplayUnits::Mm;
+         else if (v == "inch")
+           o.showUnits = DisplayUnits::Inch;
+         else if (v != "auto")
+           return false;
          return true;
        }},
       {"--decimal-point", true,
@@ -144,7 +204,11 @@ const std::vector<OptionSpec>& optionSpecs() {
          o.calculatorInput = parseDecimalPoint(v);
          return o.calculatorInput.has_value();
        }},
-      {"--tool", true, [](SimulateOptions& o, const std::string& v) { o.tools.push_back(v); return true; }},
+      {"--tool", true,
+       [](SimulateOptions& o, const std::string& v) {
+         o.tools.push_back(v);
+         return true;
+       }},
       {"--resolution", true,
        [](SimulateOptions& o, const std::string& v) { return parseResolution(v, o.cut.resolution); }},
   };
@@ -255,7 +319,7 @@ int runSimulate(const std::vector<std::string>& args) {
   // An output naming the program, a subprogram file or a setup file would destroy it: refused
   // before the run, as a compiler refuses `-o` naming its source (issue 29).
   if (!outputsAllowed({o.tracePath, o.cut.pngPath, o.cut.profilePath, o.cut.jsonPath, o.cut.svgPath, o.cut.dxfPath},
-                          programInputs(o.file, job, config), o.lang))
+                      programInputs(o.file, job, config), o.lang))
     return 2;
   if (!job.file() || !job.program() || job.hasErrors()) return 1;
   for (const Diagnostic& n : job.stockNotes()) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
@@ -263,8 +327,9 @@ int runSimulate(const std::vector<std::string>& args) {
   const io::ProgramFile& programFile = *job.file();
   const gcode::Program& program = *job.program();
   machine::RunOptions runOptions = request->run;
-  const io::ReadResult<io::MacroVariables> stored =
-      variablesPath.empty() ? io::ReadResult<io::MacroVariables>{io::MacroVariables{}, {}} : io::readMacroVariables(variablesPath);
+  const io::ReadResult<io::MacroVariables> stored = variablesPath.empty()
+                                                        ? io::ReadResult<io::MacroVariables>{io::MacroVariables{}, {}}
+                                                        : io::readMacroVariables(variablesPath);
   for (const Diagnostic& d : stored.diagnostics) printDiagnostic(variablesPath, d, o.lang);
   variables = stored.value.value_or(io::MacroVariables{});
   const io::MacroVariables before = variables;
@@ -304,11 +369,12 @@ int runSimulate(const std::vector<std::string>& args) {
   if (o.compareCompensation && o.cut.enabled) {
     // What G41/G42 change: each difference as a note on the block that cut the surface.
     const cut::CompareWith with = o.compareSharp ? cut::CompareWith::SharpNose : cut::CompareWith::NoCompensation;
-    const cut::CompComparison c =
-        cut::compareCompensation(program, cutSetup, runOptions, cut::CutSetup::from(programFile.header, cutSetup), with);
+    const cut::CompComparison c = cut::compareCompensation(program, cutSetup, runOptions,
+                                                           cut::CutSetup::from(programFile.header, cutSetup), with);
     for (const cut::CompDifference& d : c.differences)
-      std::fprintf(stderr, "%s:%d:1: %s: %s\n", job.fileOf(Diagnostic{Severity::Note, "", {d.line, 1, 0, d.file}, {}}).c_str(),
-                   d.line, std::string(severityName(Severity::Note, o.lang)).c_str(),
+      std::fprintf(stderr, "%s:%d:1: %s: %s\n",
+                   job.fileOf(Diagnostic{Severity::Note, "", {d.line, 1, 0, d.file}, {}}).c_str(), d.line,
+                   std::string(severityName(Severity::Note, o.lang)).c_str(),
                    cut::describeDifference(d, program, with, o.lang, units).c_str());
   }
   const std::optional<Diagnostic>& alarm = cut.alarm ? cut.alarm : timeline.alarm;

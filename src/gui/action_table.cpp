@@ -22,14 +22,14 @@ QString translated(const char* text) { return text ? QCoreApplication::translate
 
 struct ActionSpec {
   const char* name;
-  const char* icon;            // :/icons/<icon>.svg, or none
+  const char* icon;  // :/icons/<icon>.svg, or none
   QKeySequence::StandardKey standardKey;
-  const char* keys;            // portable text when there is no standard key
+  const char* keys;  // portable text when there is no standard key
   const char* text;
-  const char* tip;             // status and tool tip; the text without '&' when none
+  const char* tip;  // status and tool tip; the text without '&' when none
   EnabledWhen enabledWhen = EnabledWhen::Always;
   bool checkable = false;
-  bool editorLocal = false;    // the editor's own key handles it while it has the focus
+  bool editorLocal = false;  // the editor's own key handles it while it has the focus
 };
 
 constexpr auto kNoKey = QKeySequence::UnknownKey;
@@ -86,8 +86,8 @@ const ActionSpec kActions[] = {
      KLUENG_TR("Run one block, into a subprogram or macro it calls"), EnabledWhen::CanStep},
     {"actionStepOut", "step", kNoKey, "Shift+F11", KLUENG_TR("Step O&ut"),
      KLUENG_TR("Run to the end of this subprogram or macro"), EnabledWhen::CanStep},
-    {"actionPause", "pause", kNoKey, "F6", KLUENG_TR("&Pause"), KLUENG_TR("Stop after the current step; Go or Step resumes"),
-     EnabledWhen::Running},
+    {"actionPause", "pause", kNoKey, "F6", KLUENG_TR("&Pause"),
+     KLUENG_TR("Stop after the current step; Go or Step resumes"), EnabledWhen::Running},
     {"actionStop", "stop", kNoKey, "Shift+F5", KLUENG_TR("S&top"), KLUENG_TR("Abort the run and reset"),
      EnabledWhen::Started},
     {"actionStepBack", "step-back", kNoKey, "Shift+F10", KLUENG_TR("Step &Back"), KLUENG_TR("Go back one block"),
@@ -112,8 +112,8 @@ const ActionSpec kActions[] = {
      EnabledWhen::Always, true},
     {"actionUnitsMachine", nullptr, kNoKey, nullptr, KLUENG_TR("Power-on units as the &machine (Haas: inch)"), nullptr,
      EnabledWhen::Always, true},
-    {"actionUnitsMm", nullptr, kNoKey, nullptr, KLUENG_TR("&Power-on units: millimetres"), nullptr,
-     EnabledWhen::Always, true},
+    {"actionUnitsMm", nullptr, kNoKey, nullptr, KLUENG_TR("&Power-on units: millimetres"), nullptr, EnabledWhen::Always,
+     true},
     {"actionUnitsInch", nullptr, kNoKey, nullptr, KLUENG_TR("Power-on units: &inches"), nullptr, EnabledWhen::Always,
      true},
     // View
@@ -150,7 +150,8 @@ const MenuSpec kMenus[] = {
      "actionPrintPreview actionExportPdf | actionPartDesigner actionGradeClass | actionExit"},
     {"menuRecent", KLUENG_TR("&Recent Files"), ""},
     {"menuEdit", KLUENG_TR("&Edit"),
-     "actionUndo actionRedo actionUndoSetup actionRedoSetup | actionCut actionCopy actionPaste actionDelete actionSelectAll | actionFind actionReplace "
+     "actionUndo actionRedo actionUndoSetup actionRedoSetup | actionCut actionCopy actionPaste actionDelete "
+     "actionSelectAll | actionFind actionReplace "
      "actionGoToLine"},
     {"menuRun", KLUENG_TR("&Run"),
      "actionGo actionStep actionStepInto actionStepOut actionPause actionStop | actionStepBack actionRunToCursor "
@@ -161,7 +162,8 @@ const MenuSpec kMenus[] = {
     {"menuDialect", KLUENG_TR("G-code &dialect"),
      "actionDialectFanuc actionDialectHaas actionDialectClassic | actionUnitsMachine actionUnitsMm actionUnitsInch"},
     {"menuView", KLUENG_TR("&View"),
-     "fileToolBar editToolBar runToolBar helpToolBar actionShowStatusBar actionShowLamps diagnosticsDock flowDock partDock view3dDock operatorPanelDock | "
+     "fileToolBar editToolBar runToolBar helpToolBar actionShowStatusBar actionShowLamps diagnosticsDock flowDock "
+     "partDock view3dDock operatorPanelDock | "
      "actionShowPath actionFitView actionZoomIn actionZoomOut | menuShowUnits"},
     {"menuShowUnits", KLUENG_TR("&Units Shown"), "actionShowUnitsAuto actionShowUnitsMm actionShowUnitsInch"},
     {"menuHelp", KLUENG_TR("&Help"), "actionContents actionToggleLanguage | actionAbout"},
@@ -196,8 +198,10 @@ ActionTable::ActionTable(QMainWindow* window, int speedCount) : QObject(window),
     auto* a = new QAction(window);
     a->setObjectName(QString::fromLatin1(spec.name));
     if (spec.icon) a->setIcon(QIcon(QStringLiteral(":/icons/%1.svg").arg(QString::fromLatin1(spec.icon))));
-    if (spec.standardKey != kNoKey) a->setShortcut(QKeySequence(spec.standardKey));
-    else if (spec.keys) a->setShortcut(QKeySequence(QString::fromLatin1(spec.keys)));
+    if (spec.standardKey != kNoKey)
+      a->setShortcut(QKeySequence(spec.standardKey));
+    else if (spec.keys)
+      a->setShortcut(QKeySequence(QString::fromLatin1(spec.keys)));
     a->setCheckable(spec.checkable);
     if (spec.editorLocal) a->setShortcutContext(Qt::WidgetShortcut);
     actions_.insert(a->objectName(), a);
@@ -217,7 +221,8 @@ ActionTable::ActionTable(QMainWindow* window, int speedCount) : QObject(window),
   for (const char* group : {"actionDialect", "actionUnits", "actionShowUnits"}) {
     auto* g = new QActionGroup(this);
     for (const ActionSpec& spec : kActions)
-      if (QString::fromLatin1(spec.name).startsWith(QLatin1String(group))) g->addAction(action(QString::fromLatin1(spec.name)));
+      if (QString::fromLatin1(spec.name).startsWith(QLatin1String(group)))
+        g->addAction(action(QString::fromLatin1(spec.name)));
   }
 }
 
@@ -243,11 +248,14 @@ void ActionTable::buildMenus() {
   for (const MenuSpec& spec : kMenus) {
     QMenu* m = menu(QString::fromLatin1(spec.name));
     for (const QString& item : itemsOf(spec.items)) {
-      if (item == QLatin1String("|")) m->addSeparator();
-      else if (QMenu* sub = menu(item)) m->addMenu(sub);
+      if (item == QLatin1String("|"))
+        m->addSeparator();
+      else if (QMenu* sub = menu(item))
+        m->addMenu(sub);
       else if (item.endsWith(QLatin1Char('*'))) {
         for (int i = 0; QAction* a = action(item.chopped(1) + QString::number(i)); ++i) m->addAction(a);
-      } else if (QAction* a = action(item)) m->addAction(a);
+      } else if (QAction* a = action(item))
+        m->addAction(a);
     }
   }
   for (const char* name : kMenuBar) window_->menuBar()->addMenu(menu(QString::fromLatin1(name)));
@@ -260,8 +268,9 @@ void ActionTable::retranslate() {
     const QString tip = spec.tip ? translated(spec.tip) : QString(text).remove(QLatin1Char('&'));
     a->setText(text);
     a->setStatusTip(tip);
-    a->setToolTip(a->shortcut().isEmpty() ? tip
-                                          : QStringLiteral("%1 (%2)").arg(tip, a->shortcut().toString(QKeySequence::NativeText)));
+    a->setToolTip(a->shortcut().isEmpty()
+                      ? tip
+                      : QStringLiteral("%1 (%2)").arg(tip, a->shortcut().toString(QKeySequence::NativeText)));
   }
   const std::vector<double>& steps = RunSpeedControl::steps();
   for (std::size_t i = 0; i < steps.size(); ++i)
@@ -275,13 +284,20 @@ void ActionTable::retranslate() {
 bool ActionTable::enabledIn(EnabledWhen when, RunState state) {
   const bool running = state == RunState::Running || state == RunState::Stepping || state == RunState::Preparing;
   switch (when) {
-    case EnabledWhen::Always: return true;
-    case EnabledWhen::NotRunning: return !running;
-    case EnabledWhen::CanGo: return !running || state == RunState::Stepping;
-    case EnabledWhen::CanStep: return !running || state == RunState::Running;
-    case EnabledWhen::Running: return running;
-    case EnabledWhen::Started: return state != RunState::Idle;
-    case EnabledWhen::StoppedMidRun: return !running && state != RunState::Idle;
+    case EnabledWhen::Always:
+      return true;
+    case EnabledWhen::NotRunning:
+      return !running;
+    case EnabledWhen::CanGo:
+      return !running || state == RunState::Stepping;
+    case EnabledWhen::CanStep:
+      return !running || state == RunState::Running;
+    case EnabledWhen::Running:
+      return running;
+    case EnabledWhen::Started:
+      return state != RunState::Idle;
+    case EnabledWhen::StoppedMidRun:
+      return !running && state != RunState::Idle;
   }
   return true;
 }

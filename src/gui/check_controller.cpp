@@ -48,8 +48,10 @@ void CheckController::onFinished() {
   inFlight_ = false;
   if (pending_ || timer_->isActive()) {
     // The text changed while checking: this result is out of date.
-    if (pending_) checkNow();
-    else releaseFreedMemory();
+    if (pending_)
+      checkNow();
+    else
+      releaseFreedMemory();
     return;
   }
   // The window keeps the Job (JobDocument frees a replaced one off the GUI thread); the

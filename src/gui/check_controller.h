@@ -26,10 +26,10 @@ class CheckController : public QObject {
   CheckController(QObject* parent, std::function<QString()> text, std::function<Request()> request);
   ~CheckController() override;
 
-  void schedule();                   // after typing pauses (300 ms)
-  void checkNow();                   // the current text, at once (still off the GUI thread)
+  void schedule();                      // after typing pauses (300 ms)
+  void checkNow();                      // the current text, at once (still off the GUI thread)
   void checkText(const QString& text);  // this text (just loaded), at once
-  bool isBusy() const;               // a check scheduled, running or waiting to run
+  bool isBusy() const;                  // a check scheduled, running or waiting to run
   bool isScheduled() const;
 
  signals:

@@ -41,7 +41,8 @@ enum Column { kProgram, kResult, kErrors, kAlarm, kCycleTime, kLeftover, kGouge,
 
 // The drawing's toleranced dimensions, or nullopt with the reasons in the UI language.
 std::optional<std::vector<core::cut::DrawnDimension>> readDrawing(const QString& path, const std::string& general,
-                                                                  double chuckGrip, const QString& layer, QString* why) {
+                                                                  double chuckGrip, const QString& layer,
+                                                                  QString* why) {
   const std::string file = path.toStdString();
   const core::Lang lang = Language::coreLang();
   const auto fail = [&](const std::vector<core::Diagnostic>& diagnostics) {
@@ -62,8 +63,9 @@ std::optional<std::vector<core::cut::DrawnDimension>> readDrawing(const QString&
   if (!part.ok()) return fail(part.diagnostics);
   auto dims = core::design::drawnDimensions(*part.value, general);
   if (dims.empty()) {
-    *why = ClassGradeDialog::tr("The drawing %1 has no toleranced dimension. Give tolerances in a part file (JSON; a "
-                                "DXF drawing's dimension texts are not read) or choose a general tolerance.")
+    *why = ClassGradeDialog::tr(
+               "The drawing %1 has no toleranced dimension. Give tolerances in a part file (JSON; a "
+               "DXF drawing's dimension texts are not read) or choose a general tolerance.")
                .arg(QFileInfo(path).fileName());
     return std::nullopt;
   }
@@ -157,21 +159,24 @@ ClassGradeDialog::ClassGradeDialog(const core::machine::MachineSetup& setup, cor
     if (!file.isEmpty()) drawing_->setText(file);
   });
   connect(saveButton_, &QPushButton::clicked, this, [this] {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save the grades"), folder_->text() + QStringLiteral("/grades.csv"),
-                                                      tr("CSV files (*.csv)"));
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Save the grades"), folder_->text() + QStringLiteral("/grades.csv"), tr("CSV files (*.csv)"));
     QString why;
     if (!path.isEmpty() && !saveCsv(path, &why))
-      QMessageBox::warning(this, windowTitle(), tr("\"%1\" could not be written.").arg(path) + QStringLiteral("\n\n") + why);
+      QMessageBox::warning(this, windowTitle(),
+                           tr("\"%1\" could not be written.").arg(path) + QStringLiteral("\n\n") + why);
   });
   connect(pdfButton_, &QPushButton::clicked, this, [this] {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save the grades as PDF"),
-                                                      folder_->text() + QStringLiteral("/grades.pdf"), tr("PDF files (*.pdf)"));
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Save the grades as PDF"), folder_->text() + QStringLiteral("/grades.pdf"), tr("PDF files (*.pdf)"));
     QString why;
     if (!path.isEmpty() && !savePdf(path, &why))
-      QMessageBox::warning(this, windowTitle(), tr("\"%1\" could not be written.").arg(path) + QStringLiteral("\n\n") + why);
+      QMessageBox::warning(this, windowTitle(),
+                           tr("\"%1\" could not be written.").arg(path) + QStringLiteral("\n\n") + why);
   });
   connect(table_, &QTableWidget::cellDoubleClicked, this, [this](int row, int) {
-    if (row >= 0 && row < static_cast<int>(rows_.size())) emit openProgram(QString::fromStdString(rows_[static_cast<std::size_t>(row)].path));
+    if (row >= 0 && row < static_cast<int>(rows_.size()))
+      emit openProgram(QString::fromStdString(rows_[static_cast<std::size_t>(row)].path));
   });
   connect(table_, &QTableWidget::currentCellChanged, this, [this](int row) { showDetails(row); });
   connect(&watcher_, &QFutureWatcher<std::vector<core::job::ClassRow>>::finished, this, [this] {
@@ -220,7 +225,8 @@ void ClassGradeDialog::retranslate() {
   pdfButton_->setText(tr("Save PDF..."));
   table_->setHorizontalHeaderLabels({tr("Program"), tr("Result"), tr("Errors"), tr("Alarm"), tr("Cycle time (s)"),
                                      tr("Leftover (mm)"), tr("Gouge (mm)"), tr("Drawing")});
-  details_->setHorizontalHeaderLabels({tr("Dimension"), tr("Tolerance"), tr("Limits (mm)"), tr("Measured (mm)"), tr("Result")});
+  details_->setHorizontalHeaderLabels(
+      {tr("Dimension"), tr("Tolerance"), tr("Limits (mm)"), tr("Measured (mm)"), tr("Result")});
   // Every header whole in both languages ("เวลาทำงาน (วินาที)" is wider than a default column).
   table_->resizeColumnsToContents();
   details_->resizeColumnsToContents();
@@ -245,12 +251,14 @@ void ClassGradeDialog::grade() {
     if (drawing.endsWith(QStringLiteral(".dxf"), Qt::CaseInsensitive) && drawing != layerOf_ && isVisible()) {
       layer_.clear();
       const auto text = core::design::readPartFile(drawing.toStdString());
-      const std::vector<std::string> layers = text.ok() ? core::design::dxfOutlineLayers(*text.value) : std::vector<std::string>{};
+      const std::vector<std::string> layers =
+          text.ok() ? core::design::dxfOutlineLayers(*text.value) : std::vector<std::string>{};
       if (layers.size() > 1) {
         QStringList names;
         for (const std::string& l : layers) names << QString::fromStdString(l);
         bool ok = false;
-        layer_ = QInputDialog::getItem(this, windowTitle(), tr("The layer of the part's outline:"), names, 0, false, &ok);
+        layer_ =
+            QInputDialog::getItem(this, windowTitle(), tr("The layer of the part's outline:"), names, 0, false, &ok);
         if (!ok) return;
         layerOf_ = drawing;
       }
@@ -278,16 +286,17 @@ void ClassGradeDialog::grade() {
   gradeButton_->setEnabled(false);
   setCursor(Qt::BusyCursor);
   summary_->setText(tr("Grading..."));
-  watcher_.setFuture(QtConcurrent::run([folder, reference, against, request]() mutable -> std::vector<core::job::ClassRow> {
-    core::job::GradedProgram ref;
-    if (!reference.empty()) {
-      ref = core::job::gradeProgram(reference, request);
-      if (!ref.part) return {};
-      against.referencePath = reference;
-      against.reference = &*ref.part;
-    }
-    return core::job::gradeClass(folder, against, request);
-  }));
+  watcher_.setFuture(
+      QtConcurrent::run([folder, reference, against, request]() mutable -> std::vector<core::job::ClassRow> {
+        core::job::GradedProgram ref;
+        if (!reference.empty()) {
+          ref = core::job::gradeProgram(reference, request);
+          if (!ref.part) return {};
+          against.referencePath = reference;
+          against.reference = &*ref.part;
+        }
+        return core::job::gradeClass(folder, against, request);
+      }));
 }
 
 void ClassGradeDialog::showRows() {
@@ -302,12 +311,15 @@ void ClassGradeDialog::showRows() {
     const core::job::ClassRow& r = rows_[i];
     const int row = static_cast<int>(i);
     passed += r.pass ? 1 : 0;
-    auto set = [this, row](int column, const QString& text) { table_->setItem(row, column, new QTableWidgetItem(text)); };
+    auto set = [this, row](int column, const QString& text) {
+      table_->setItem(row, column, new QTableWidgetItem(text));
+    };
     set(kProgram, QString::fromStdString(r.file));
     set(kResult, r.pass ? tr("pass") : tr("fail"));
     table_->item(row, kResult)->setForeground(r.pass ? QColor(0, 120, 0) : QColor(190, 0, 0));
-    set(kErrors, r.graded.errors > 0 ? QStringLiteral("%1 (%2)").arg(r.graded.errors).arg(QString::fromStdString(r.graded.firstError))
-                                     : QStringLiteral("0"));
+    set(kErrors, r.graded.errors > 0
+                     ? QStringLiteral("%1 (%2)").arg(r.graded.errors).arg(QString::fromStdString(r.graded.firstError))
+                     : QStringLiteral("0"));
     set(kAlarm, QString::fromStdString(r.graded.alarm));
     set(kCycleTime, r.graded.errors == 0 ? QString::number(r.graded.cycleTime, 'f', 1) : QString());
     // The size, and where when there is any.
@@ -323,12 +335,18 @@ void ClassGradeDialog::showRows() {
   table_->resizeColumnsToContents();
   saveButton_->setEnabled(!rows_.empty());
   pdfButton_->setEnabled(!rows_.empty());
-  summary_->setText(rows_.empty() ? (reference ? tr("No programs graded: is the reference a program that runs to its end?")
-                                               : tr("No programs graded: the folder has no program files."))
-                                  : tr("%1 programs: %2 pass, %3 fail").arg(rows_.size()).arg(passed).arg(static_cast<int>(rows_.size()) - passed));
+  summary_->setText(rows_.empty()
+                        ? (reference ? tr("No programs graded: is the reference a program that runs to its end?")
+                                     : tr("No programs graded: the folder has no program files."))
+                        : tr("%1 programs: %2 pass, %3 fail")
+                              .arg(rows_.size())
+                              .arg(passed)
+                              .arg(static_cast<int>(rows_.size()) - passed));
   const int current = table_->currentRow();
-  if (drawing && !rows_.empty() && current < 0) table_->selectRow(0);
-  else showDetails(current);
+  if (drawing && !rows_.empty() && current < 0)
+    table_->selectRow(0);
+  else
+    showDetails(current);
 }
 
 void ClassGradeDialog::showDetails(int row) {
@@ -342,7 +360,9 @@ void ClassGradeDialog::showDetails(int row) {
   for (std::size_t i = 0; i < inspection.size(); ++i) {
     const core::cut::InspectedDimension& d = inspection[i];
     const int at = static_cast<int>(i);
-    auto set = [this, at](int column, const QString& text) { details_->setItem(at, column, new QTableWidgetItem(text)); };
+    auto set = [this, at](int column, const QString& text) {
+      details_->setItem(at, column, new QTableWidgetItem(text));
+    };
     set(0, QString::fromStdString(core::cut::dimensionLabel(d.drawn, lang)));
     set(1, QString::fromStdString(core::cut::toleranceLabel(d.drawn.tolerance)));
     set(2, QStringLiteral("%1 – %2").arg(d.lowerLimit(), 0, 'f', 3).arg(d.upperLimit(), 0, 'f', 3));

@@ -35,7 +35,7 @@ class ClassGradeDialog : public QDialog {
   void setDrawing(const QString& path);
   void setGeneralTolerance(const QString& isoClass);  // "", "f", "m", "c", "v"
   void setTolerance(double mm);
-  void grade();        // in the background; finished() when the table is full
+  void grade();  // in the background; finished() when the table is full
   bool isGrading() const { return watcher_.isRunning(); }
   QTableWidget* table() const { return table_; }
   QTableWidget* details() const { return details_; }  // the selected student's dimensions

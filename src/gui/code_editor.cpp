@@ -18,9 +18,7 @@ namespace klueng::gui {
 
 class LineNumberArea : public QWidget {
  public:
-  explicit LineNumberArea(CodeEditor* editor) : QWidget(editor), editor_(editor) {
-    setCursor(Qt::PointingHandCursor);
-  }
+  explicit LineNumberArea(CodeEditor* editor) : QWidget(editor), editor_(editor) { setCursor(Qt::PointingHandCursor); }
   QSize sizeHint() const override { return {editor_->gutterWidth(), 0}; }
 
  protected:
@@ -84,8 +82,10 @@ int CodeEditor::gutterWidth() const {
 void CodeEditor::updateGutterWidth() { setViewportMargins(gutterWidth(), 0, 0, 0); }
 
 void CodeEditor::updateGutter(const QRect& rect, int dy) {
-  if (dy) gutter_->scroll(0, dy);
-  else gutter_->update(0, rect.y(), gutter_->width(), rect.height());
+  if (dy)
+    gutter_->scroll(0, dy);
+  else
+    gutter_->update(0, rect.y(), gutter_->width(), rect.height());
   if (rect.contains(viewport()->rect())) updateGutterWidth();
 }
 
@@ -256,7 +256,8 @@ void CodeEditor::goToFileLine(int fileLine, int column) {
   const int blockNo = std::clamp(editorLineFromFileLine(fileLine), 0, std::max(0, blockCount() - 1));
   const QTextBlock b = document()->findBlockByNumber(blockNo);
   QTextCursor c(b);
-  if (column > 1) c.setPosition(b.position() + std::min(utf16Index(b.text(), column), static_cast<int>(b.length()) - 1));
+  if (column > 1)
+    c.setPosition(b.position() + std::min(utf16Index(b.text(), column), static_cast<int>(b.length()) - 1));
   setTextCursor(c);
   centerCursor();
   setFocus();
@@ -269,7 +270,8 @@ QString CodeEditor::helpForPosition(int position) const {
   int i = position - b.position();
   if (i < 0 || i >= text.size()) return {};
   // The word under the cursor, as the core cuts the line; a comment explains nothing.
-  const std::u16string_view line(reinterpret_cast<const char16_t*>(text.utf16()), static_cast<std::size_t>(text.size()));
+  const std::u16string_view line(reinterpret_cast<const char16_t*>(text.utf16()),
+                                 static_cast<std::size_t>(text.size()));
   const core::gcode::DisplayToken* word = nullptr;
   const std::vector<core::gcode::DisplayToken> tokens = core::gcode::displayTokens(line);
   for (const core::gcode::DisplayToken& t : tokens)
@@ -282,7 +284,8 @@ QString CodeEditor::helpForPosition(int position) const {
   QString lastValue;
   if (end < text.size() && (text[end] == u'#' || text[end] == u'[') && wordValue_) {
     const QString v = wordValue_(firstFileLine() + b.blockNumber(), i + 1);
-    if (!v.isEmpty()) lastValue = QStringLiteral("<br>= %1 ").arg(v.toHtmlEscaped()) + tr("(the last time this line ran)");
+    if (!v.isEmpty())
+      lastValue = QStringLiteral("<br>= %1 ").arg(v.toHtmlEscaped()) + tr("(the last time this line ran)");
   }
   const QString number = text.mid(i + 1, end - i - 1);
   const bool thai = Language::coreLang() == core::Lang::Th;
@@ -310,7 +313,8 @@ std::optional<std::pair<char, int>> CodeEditor::codeAtCursor() const {
   const QTextCursor c = textCursor();
   const QString text = c.block().text();
   const int at = c.positionInBlock();
-  const std::u16string_view line(reinterpret_cast<const char16_t*>(text.utf16()), static_cast<std::size_t>(text.size()));
+  const std::u16string_view line(reinterpret_cast<const char16_t*>(text.utf16()),
+                                 static_cast<std::size_t>(text.size()));
   for (const core::gcode::DisplayToken& t : core::gcode::displayTokens(line)) {
     if (t.kind != core::gcode::DisplayTokenKind::Address || (t.letter != 'G' && t.letter != 'M')) continue;
     if (at < t.start || at > t.start + t.length) continue;
@@ -334,8 +338,10 @@ bool CodeEditor::viewportEvent(QEvent* event) {
       const QString what = explainLine_(fileLineFromBlock(c.block().blockNumber()));
       if (!what.isEmpty()) text += QStringLiteral("<hr><i>%1</i>").arg(what.toHtmlEscaped());
     }
-    if (text.isEmpty()) QToolTip::hideText();
-    else QToolTip::showText(help->globalPos(), text, viewport());
+    if (text.isEmpty())
+      QToolTip::hideText();
+    else
+      QToolTip::showText(help->globalPos(), text, viewport());
     return true;
   }
   return QPlainTextEdit::viewportEvent(event);

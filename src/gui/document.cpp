@@ -125,9 +125,7 @@ bool Document::save(const QString& path, const QString& gcode, QString* error) {
   return true;
 }
 
-QString Document::displayName() const {
-  return path_.isEmpty() ? tr("untitled.txt") : QFileInfo(path_).fileName();
-}
+QString Document::displayName() const { return path_.isEmpty() ? tr("untitled.txt") : QFileInfo(path_).fileName(); }
 
 void Document::setHeader(const core::io::JobHeader& header) {
   file_.header = header;

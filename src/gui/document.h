@@ -19,9 +19,9 @@ namespace klueng::gui {
 // What a background load returns (plain value, safe to build off the GUI thread).
 struct LoadedProgram {
   QString path;
-  bool ok = false;                 // a usable program was read
+  bool ok = false;  // a usable program was read
   core::io::ProgramFile file;
-  QString gcode;                   // file.gcode as QString, converted off the GUI thread
+  QString gcode;                              // file.gcode as QString, converted off the GUI thread
   std::vector<core::Diagnostic> diagnostics;  // header / file diagnostics (F1xx)
   std::vector<core::Diagnostic> stockNotes;   // where the stock came from (I15x)
 };
@@ -47,8 +47,7 @@ class Document : public QObject {
   // never `defaultsForPlain`'s stock, whose text fields (project ...) it keeps.
   static LoadedProgram load(const QString& path, const core::io::JobHeader& defaultsForPlain,
                             const std::optional<core::io::JobHeader>& jobDetails = std::nullopt,
-                            const core::machine::MachineSetup& setup = {},
-                            const core::machine::RunOptions& run = {});
+                            const core::machine::MachineSetup& setup = {}, const core::machine::RunOptions& run = {});
 
   // A plain file whose stock was inferred (or defaulted) takes the stock a
   // Job resolved (`resolved`, with its notes) — after the dialect or the units

@@ -36,8 +36,8 @@ GcodeHighlighter::GcodeHighlighter(QTextDocument* document) : QObject(document),
   set(Kind::Program, QColor(0x8b, 0x00, 0x00), true);  // dark red
   set(Kind::Comment, QColor(0x6a, 0x73, 0x7d), false, true);
   set(Kind::Skip, QColor(0xd0, 0x60, 0x00), true);
-  set(Kind::Macro, QColor(0x00, 0x5f, 0x73), true);     // macro B keywords and functions
-  set(Kind::Variable, QColor(0x9a, 0x5b, 0x00));        // #101
+  set(Kind::Macro, QColor(0x00, 0x5f, 0x73), true);  // macro B keywords and functions
+  set(Kind::Variable, QColor(0x9a, 0x5b, 0x00));     // #101
   if (doc_) connect(doc_, &QTextDocument::contentsChange, this, &GcodeHighlighter::onContentsChange);
 }
 
@@ -55,8 +55,10 @@ void GcodeHighlighter::onContentsChange(int from, int removed, int added) {
   for (QTextBlock b = doc_->findBlock(from); b.isValid(); b = b.next()) {
     // A line already coloured (shown, or a short document) is coloured again now;
     // another one waits until it is drawn.
-    if (eager || isColoured(b)) colour(b);
-    else b.setUserState(-1);
+    if (eager || isColoured(b))
+      colour(b);
+    else
+      b.setUserState(-1);
     if (b == last) break;
   }
 }
@@ -68,14 +70,21 @@ GcodeHighlighter::Kind GcodeHighlighter::kindOf(QChar letter) {
   const core::gcode::AddressInfo* a = core::gcode::addressInfo(static_cast<char>(upper.unicode()));
   if (!a) return Kind::Other;
   switch (a->kind) {
-    case core::gcode::AddressKind::GCode: return Kind::GCode;
-    case core::gcode::AddressKind::MCode: return Kind::MCode;
-    case core::gcode::AddressKind::Tool: return Kind::Tool;
-    case core::gcode::AddressKind::Axis: return Kind::Axis;
+    case core::gcode::AddressKind::GCode:
+      return Kind::GCode;
+    case core::gcode::AddressKind::MCode:
+      return Kind::MCode;
+    case core::gcode::AddressKind::Tool:
+      return Kind::Tool;
+    case core::gcode::AddressKind::Axis:
+      return Kind::Axis;
     case core::gcode::AddressKind::FeedSpeed:
-    case core::gcode::AddressKind::Parameter: return Kind::FeedSpeed;
-    case core::gcode::AddressKind::Sequence: return Kind::Sequence;
-    case core::gcode::AddressKind::Program: return Kind::Program;
+    case core::gcode::AddressKind::Parameter:
+      return Kind::FeedSpeed;
+    case core::gcode::AddressKind::Sequence:
+      return Kind::Sequence;
+    case core::gcode::AddressKind::Program:
+      return Kind::Program;
   }
   return Kind::Other;
 }
@@ -86,7 +95,8 @@ void GcodeHighlighter::setUnderlines(QHash<int, QVector<Underline>> byLine) {
   QSet<int> changed;
   for (auto it = underlines_.cbegin(); it != underlines_.cend(); ++it) {
     auto other = byLine.constFind(it.key());
-    if (other == byLine.cend() || other->size() != it->size()) changed.insert(it.key());
+    if (other == byLine.cend() || other->size() != it->size())
+      changed.insert(it.key());
     else
       for (int i = 0; i < it->size(); ++i)
         if ((*it)[i].start != (*other)[i].start || (*it)[i].length != (*other)[i].length ||
@@ -101,8 +111,10 @@ void GcodeHighlighter::setUnderlines(QHash<int, QVector<Underline>> byLine) {
   for (int line : changed) {
     QTextBlock block = doc_->findBlockByNumber(line);
     if (!block.isValid()) continue;
-    if (eager || isColoured(block)) colour(block);
-    else block.setUserState(-1);
+    if (eager || isColoured(block))
+      colour(block);
+    else
+      block.setUserState(-1);
   }
 }
 
@@ -117,11 +129,21 @@ QList<QTextLayout::FormatRange> GcodeHighlighter::rangesFor(const QString& text,
   for (const core::gcode::DisplayToken& t : core::gcode::displayTokens(line)) {
     Kind kind = Kind::Other;
     switch (t.kind) {
-      case core::gcode::DisplayTokenKind::Comment: kind = Kind::Comment; break;
-      case core::gcode::DisplayTokenKind::Skip: kind = Kind::Skip; break;
-      case core::gcode::DisplayTokenKind::Variable: kind = Kind::Variable; break;
-      case core::gcode::DisplayTokenKind::MacroWord: kind = Kind::Macro; break;
-      case core::gcode::DisplayTokenKind::Address: kind = kindOf(QChar::fromLatin1(t.letter)); break;
+      case core::gcode::DisplayTokenKind::Comment:
+        kind = Kind::Comment;
+        break;
+      case core::gcode::DisplayTokenKind::Skip:
+        kind = Kind::Skip;
+        break;
+      case core::gcode::DisplayTokenKind::Variable:
+        kind = Kind::Variable;
+        break;
+      case core::gcode::DisplayTokenKind::MacroWord:
+        kind = Kind::Macro;
+        break;
+      case core::gcode::DisplayTokenKind::Address:
+        kind = kindOf(QChar::fromLatin1(t.letter));
+        break;
     }
     if (kind != Kind::Other) setFormat(t.start, t.length, format(kind));
   }
@@ -130,9 +152,9 @@ QList<QTextLayout::FormatRange> GcodeHighlighter::rangesFor(const QString& text,
     for (const Underline& u : *it) {
       const int start = std::clamp(u.start, 0, n - 1);
       const int len = u.length > 0 ? std::min(u.length, n - start) : n - start;
-      const QColor colour = core::isError(u.severity)                ? QColor(0xd0, 0x10, 0x10)
-                           : u.severity == core::Severity::Note ? QColor(0x20, 0x60, 0xc0)
-                                                                : QColor(0xe0, 0x8a, 0x00);
+      const QColor colour = core::isError(u.severity)            ? QColor(0xd0, 0x10, 0x10)
+                            : u.severity == core::Severity::Note ? QColor(0x20, 0x60, 0xc0)
+                                                                 : QColor(0xe0, 0x8a, 0x00);
       for (int k = start; k < std::min(n, start + std::max(len, 1)); ++k) {
         // Keep the syntax colour; add the underline on top of it.
         chars[k].setUnderlineStyle(QTextCharFormat::WaveUnderline);
@@ -167,8 +189,10 @@ void GcodeHighlighter::colour(const QTextBlock& block) {
   const int preeditLength = static_cast<int>(layout->preeditAreaText().size());
   if (preeditLength > 0)
     for (QTextLayout::FormatRange& r : ranges) {
-      if (r.start >= preeditStart) r.start += preeditLength;
-      else if (r.start + r.length >= preeditStart) r.length += preeditLength;
+      if (r.start >= preeditStart)
+        r.start += preeditLength;
+      else if (r.start + r.length >= preeditStart)
+        r.length += preeditLength;
     }
   if (layout->formats() == ranges) return;
   layout->setFormats(ranges);

@@ -24,8 +24,8 @@ class QTextDocument;
 namespace klueng::gui {
 
 struct Underline {
-  int start = 0;    // UTF-16 index in the line
-  int length = 0;   // UTF-16 units; 0 = to the end of the line
+  int start = 0;   // UTF-16 index in the line
+  int length = 0;  // UTF-16 units; 0 = to the end of the line
   core::Severity severity = core::Severity::Error;
 };
 

@@ -29,13 +29,15 @@ void HeaderStrip::retranslateUi() {
   const QString project = QString::fromStdString(header_.project);
   const QString part = QString::fromStdString(header_.part);
   // The bar as the header writes it: an inch header (1.75, 3.0 in) stays in inches.
-  const bool inch = header_.diameterUnit == core::io::LengthUnit::Inch && header_.lengthUnit == core::io::LengthUnit::Inch;
+  const bool inch =
+      header_.diameterUnit == core::io::LengthUnit::Inch && header_.lengthUnit == core::io::LengthUnit::Inch;
   const QString size = inch ? tr("Ø%1 × %2 in").arg(header_.diameter).arg(header_.length)  // "นิ้ว" in Thai
                             : tr("Ø%1 × %2 mm").arg(header_.diameterMm()).arg(header_.lengthMm());  // "มม." in Thai
   setText(tr("Lines 1–6: job header — %1, %2, %3 (click to edit)")
               .arg(project.isEmpty() ? tr("no project") : project, part.isEmpty() ? tr("no part") : part, size));
-  setToolTip(tr("The file's first six lines hold the project, part, material, stock diameter, stock length and "
-                "programmer; the program starts on line 7. File > Job Details edits them."));
+  setToolTip(
+      tr("The file's first six lines hold the project, part, material, stock diameter, stock length and "
+         "programmer; the program starts on line 7. File > Job Details edits them."));
 }
 
 void HeaderStrip::mousePressEvent(QMouseEvent* event) {

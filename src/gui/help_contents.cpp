@@ -77,7 +77,8 @@ void HelpContents::search(const QString& text) {
   for (const core::machine::HelpHit& h : hits) {
     const auto row = core::gcode::lookupCode(h.letter, h.number, dialect_);
     if (!row) continue;
-    auto* item = new QListWidgetItem(QStringLiteral("%1 \u2014 %2").arg(anchorOf(h.letter, h.number), fromStd(thai ? row->nameTh : row->nameEn)));
+    auto* item = new QListWidgetItem(
+        QStringLiteral("%1 \u2014 %2").arg(anchorOf(h.letter, h.number), fromStd(thai ? row->nameTh : row->nameEn)));
     item->setData(Qt::UserRole, anchorOf(h.letter, h.number));
     hits_->addItem(item);
   }
@@ -96,30 +97,31 @@ QString HelpContents::buildHtml(bool thai, core::gcode::Dialect dialect) {
   QString html;
   html += QStringLiteral("<html><body style='font-size:11pt'>");
   html += QStringLiteral("<h2>%1</h2>").arg(tr("Klueng help: the G and M codes"));
-  html += QStringLiteral("<p>%1</p>").arg(
-      tr("A program file starts with six lines: project name, part name, material, stock diameter, "
-         "stock length and programmer. Diameter and length begin with a unit digit (0 = inch, 1 = mm): "
-         "<tt>150</tt> is 50 mm. From line 7 on comes the G-code, one block per line."));
-  html += QStringLiteral("<p>%1</p>").arg(
-      tr("A word is a letter followed at once by a number: <tt>X25.4</tt>, <tt>G1</tt>, <tt>Z-3</tt>. "
-         "X is a diameter. Comments are written in ( ) or after ;. A / at the start of a block skips it "
-         "when the Block Skip switch is on. A length without a decimal point is whole millimetres "
-         "(<tt>X30</tt> = 30 mm) in Klueng's own programs; a program from the shop may be read in least "
-         "input increments (<tt>X30</tt> = 0.030 mm) as a standard Fanuc or Haas reads it: the setup strip "
-         "says which, and Job details changes it."));
+  html += QStringLiteral("<p>%1</p>")
+              .arg(tr("A program file starts with six lines: project name, part name, material, stock diameter, "
+                      "stock length and programmer. Diameter and length begin with a unit digit (0 = inch, 1 = mm): "
+                      "<tt>150</tt> is 50 mm. From line 7 on comes the G-code, one block per line."));
+  html +=
+      QStringLiteral("<p>%1</p>")
+          .arg(tr("A word is a letter followed at once by a number: <tt>X25.4</tt>, <tt>G1</tt>, <tt>Z-3</tt>. "
+                  "X is a diameter. Comments are written in ( ) or after ;. A / at the start of a block skips it "
+                  "when the Block Skip switch is on. A length without a decimal point is whole millimetres "
+                  "(<tt>X30</tt> = 30 mm) in Klueng's own programs; a program from the shop may be read in least "
+                  "input increments (<tt>X30</tt> = 0.030 mm) as a standard Fanuc or Haas reads it: the setup strip "
+                  "says which, and Job details changes it."));
   const core::gcode::MachineProfile& machine = core::gcode::machineProfile(dialect);
   html += QStringLiteral("<p>%1 <b>%2</b></p>")
-              .arg(tr("Dialect:"), dialect == core::gcode::Dialect::Fanuc ? tr("Fanuc 0i-TF")
-                                  : dialect == core::gcode::Dialect::Haas ? tr("Haas ST (NGC)")
-                                  : dialect == core::gcode::Dialect::Classic
-                                      ? tr("Rook classic")
-                                      : fromStd(thai ? machine.nameTh : machine.nameEn));
+              .arg(tr("Dialect:"), dialect == core::gcode::Dialect::Fanuc  ? tr("Fanuc 0i-TF")
+                                   : dialect == core::gcode::Dialect::Haas ? tr("Haas ST (NGC)")
+                                   : dialect == core::gcode::Dialect::Classic
+                                       ? tr("Rook classic")
+                                       : fromStd(thai ? machine.nameTh : machine.nameEn));
   QSet<QString> anchored;
   QString examples;
   for (const char letter : {'G', 'M'}) {
     html += QStringLiteral("<h3><a name='%1'></a>%2</h3>")
-                .arg(QString(QLatin1Char(letter)), letter == 'G' ? tr("G codes (preparatory functions)")
-                                                        : tr("M codes (miscellaneous functions)"));
+                .arg(QString(QLatin1Char(letter)),
+                     letter == 'G' ? tr("G codes (preparatory functions)") : tr("M codes (miscellaneous functions)"));
     html += QStringLiteral("<table border='1' cellspacing='0' cellpadding='4' width='100%'>");
     html += QStringLiteral("<tr style='background:#e8eef6'><th>%1</th><th>%2</th><th>%3</th></tr>")
                 .arg(tr("Code"), tr("Meaning"), tr("Example"));
@@ -145,8 +147,9 @@ QString HelpContents::buildHtml(bool thai, core::gcode::Dialect dialect) {
       // The machine's own row, under its G-code system's number (G33 for G32 in system B).
       const core::gcode::CodeInfo* own =
           !a.in(dialect) ? nullptr
-          : systemOnly   ? core::gcode::findCode(a.letter, a.number, dialect)
-                         : core::gcode::findCode(a.letter, core::gcode::numberInSystem(a.letter, a.number, dialect), dialect);
+          : systemOnly
+              ? core::gcode::findCode(a.letter, a.number, dialect)
+              : core::gcode::findCode(a.letter, core::gcode::numberInSystem(a.letter, a.number, dialect), dialect);
       const bool known = own && own->action == a.action;
       const auto& c = known ? *own : a;
       const QString code = QStringLiteral("%1%2").arg(QLatin1Char(c.letter)).arg(c.number, 2, 10, QLatin1Char('0'));
@@ -162,9 +165,10 @@ QString HelpContents::buildHtml(bool thai, core::gcode::Dialect dialect) {
         anchored.insert(code);
         anchor = QStringLiteral("<a name='%1'></a>").arg(code);
         exampleLink = QStringLiteral("<br><a href='#ex-%1'>%2</a>").arg(code, tr("Worked example"));
-        examples += QStringLiteral("<h4><a name='ex-%1'></a>%1 \u2014 %2</h4><pre>%3</pre>")
-                        .arg(code, esc(name),
-                             QString::fromStdString(core::machine::workedExample(c.letter, c.number, dialect)).toHtmlEscaped());
+        examples +=
+            QStringLiteral("<h4><a name='ex-%1'></a>%1 \u2014 %2</h4><pre>%3</pre>")
+                .arg(code, esc(name),
+                     QString::fromStdString(core::machine::workedExample(c.letter, c.number, dialect)).toHtmlEscaped());
         if (pictured(c.letter, c.number))  // the path the example really makes (rebuild() draws it)
           examples += QStringLiteral("<p><img src='help-path-%1.png'><br><i>%2</i></p>")
                           .arg(code, tr("Red: cutting moves; blue dashes: rapids; grey: the bar."));

@@ -49,7 +49,9 @@ QImage examplePathPicture(char letter, int number, core::gcode::Dialect dialect)
   img.fill(Qt::white);
   QPainter p(&img);
   p.setRenderHint(QPainter::Antialiasing);
-  auto at = [&](const core::Vec2& v) { return QPointF((core::zOf(v) - zMin) * scale, (rMax - core::xOf(v)) * scale + 5); };
+  auto at = [&](const core::Vec2& v) {
+    return QPointF((core::zOf(v) - zMin) * scale, (rMax - core::xOf(v)) * scale + 5);
+  };
   p.setPen(Qt::NoPen);
   p.setBrush(QColor(215, 222, 232));
   p.drawRect(QRectF(at(core::zx(-100.0, 25.0)), at(core::zx(0.0, 0.0))));  // the bar, Ø50

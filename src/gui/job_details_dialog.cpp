@@ -24,7 +24,7 @@ namespace {
 QDoubleSpinBox* makeSize(QWidget* parent, double value) {
   auto* box = new QDoubleSpinBox(parent);
   box->setDecimals(3);
-  box->setRange(0.001, 9999.999);   // SPEC 2: diameter and length must be > 0
+  box->setRange(0.001, 9999.999);  // SPEC 2: diameter and length must be > 0
   box->setValue(value);
   return box;
 }
@@ -151,10 +151,11 @@ void JobDetailsDialog::retranslate() {
   const QString labels[] = {tr("Project:"),      tr("Part:"),
                             tr("Material:"),     tr("Stock diameter:"),
                             tr("Stock length:"), tr("Bore diameter (tube; 0 = solid bar):"),
-                            tr("Programmer:"),   tr("Lengths without a decimal point:"), tr("Tool side:"),
-                            tr("Machine:")};
+                            tr("Programmer:"),   tr("Lengths without a decimal point:"),
+                            tr("Tool side:"),    tr("Machine:")};
   for (int i = 0; i < 10; ++i)
-    if (auto* label = qobject_cast<QLabel*>(form_->itemAt(i, QFormLayout::LabelRole)->widget())) label->setText(labels[i]);
+    if (auto* label = qobject_cast<QLabel*>(form_->itemAt(i, QFormLayout::LabelRole)->widget()))
+      label->setText(labels[i]);
   for (QComboBox* unit : {diameterUnit_, lengthUnit_}) {
     unit->setItemText(0, tr("mm"));
     unit->setItemText(1, tr("inch"));

@@ -38,7 +38,7 @@ core::job::JobInput JobDocument::checkInput(core::io::ProgramFile file, const st
   r.run.dialect = dialect_;
   r.run.powerOnUnits = powerOnUnits_;
   r.toolTable = toolsWithBitmap_.has_value();  // no tool table read: T words are not checked
-  r.modalRules = true;  // issue 11: the alarms the modal state shows, while typing
+  r.modalRules = true;                         // issue 11: the alarms the modal state shows, while typing
   const int profileLimit = core::gcode::machineProfile(dialect_).maxToolStation;
   r.stations = profileLimit > 0 ? std::min(profileLimit, setup_.tools.stations) : setup_.tools.stations;
   r.setup = setup_;

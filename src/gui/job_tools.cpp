@@ -44,8 +44,10 @@ void saveToolOverrides(const QString& filePath, const std::vector<machine::Stati
   QStringList items;
   for (const auto& o : overrides)
     items << QStringLiteral("%1=%2").arg(o.station).arg(QString::fromStdString(o.libraryId));
-  if (items.isEmpty()) settings.remove(overridesKey(filePath));
-  else settings.setValue(overridesKey(filePath), items);
+  if (items.isEmpty())
+    settings.remove(overridesKey(filePath));
+  else
+    settings.setValue(overridesKey(filePath), items);
 }
 
 bool sameTools(const machine::MachineSetup& a, const machine::MachineSetup& b) {

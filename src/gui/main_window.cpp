@@ -62,16 +62,16 @@
 
 namespace klueng::gui {
 
-
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::make_unique<Settings>()) {
   setObjectName(QStringLiteral("mainWindow"));
   setWindowIcon(QIcon(QStringLiteral(":/icons/klueng.svg")));
   jobDoc_.setDialect(settings_->dialect());
   jobDoc_.setPowerOnUnits(settings_->powerOnUnits());
   shownUnits_ = settings_->shownUnits();
-  programUnits_ = core::gcode::powerOnUnitsOf(jobDoc_.dialect(), jobDoc_.powerOnUnits()) == core::gcode::InputUnits::Inch
-                      ? core::DisplayUnits::Inch
-                      : core::DisplayUnits::Mm;  // until the first check says the program's
+  programUnits_ =
+      core::gcode::powerOnUnitsOf(jobDoc_.dialect(), jobDoc_.powerOnUnits()) == core::gcode::InputUnits::Inch
+          ? core::DisplayUnits::Inch
+          : core::DisplayUnits::Mm;  // until the first check says the program's
 
   editor_ = new CodeEditor(this);
   editor_->setObjectName(QStringLiteral("codeEditor"));
@@ -170,8 +170,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   busyBar_->hide();
   menuBar()->setCornerWidget(busyBar_, Qt::TopRightCorner);
 
-  checker_ = new CheckController(this, [this] { return editor_->toPlainText(); }, [this] { return checkRequest(); });
-  connect(checker_, &CheckController::started, this, [this] { QTimer::singleShot(300, this, &MainWindow::showBusyIndicator); });
+  checker_ = new CheckController(
+      this, [this] { return editor_->toPlainText(); }, [this] { return checkRequest(); });
+  connect(checker_, &CheckController::started, this,
+          [this] { QTimer::singleShot(300, this, &MainWindow::showBusyIndicator); });
   connect(checker_, &CheckController::finished, this, &MainWindow::onCheckFinished);
 
   setupUndo_ = new QUndoStack(this);
@@ -208,8 +210,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
     runner_->setBreakpoints(QSet<int>(lines.begin(), lines.end()));
   });
   connect(diagnostics_, &DiagnosticsPanel::diagnosticActivated, this, [this](int line, int column) {
-    if (line >= editor_->firstFileLine()) editor_->goToFileLine(line, column);
-    else if (line >= 1 && !document_->isPlainGcode()) showJobDetails();  // a header line
+    if (line >= editor_->firstFileLine())
+      editor_->goToFileLine(line, column);
+    else if (line >= 1 && !document_->isPlainGcode())
+      showJobDetails();  // a header line
   });
 
   connect(runner_, &RunController::executingLineChanged, editor_, &CodeEditor::setExecutingLine);
@@ -218,7 +222,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
     if (!t || runner_->currentSnapshot() < 0) return {};
     const auto v = core::machine::wordValueAt(*t, runner_->currentSnapshot(), 0, fileLine, column);
     if (!v) return {};
-    return v->vacant ? tr("vacant (the address was left out)") : QString::fromStdString(core::gcode::macroNumberText(v->value));
+    return v->vacant ? tr("vacant (the address was left out)")
+                     : QString::fromStdString(core::gcode::macroNumberText(v->value));
   });
   connect(runner_, &RunController::statusChanged, statusFields_, &StatusFields::setStatus);
   connect(runner_, &RunController::statusChanged, statusLamps_, &StatusLamps::setStatus);
@@ -226,8 +231,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   connect(runner_, &RunController::alarmRaised, this, &MainWindow::onAlarm);
   connect(runner_, &RunController::checkFailed, this, &MainWindow::onCheckFailed);
   connect(runner_, &RunController::busyChanged, this, [this](bool busy) {
-    if (busy) QTimer::singleShot(300, this, &MainWindow::showBusyIndicator);
-    else if (!isBusy()) busyBar_->hide();
+    if (busy)
+      QTimer::singleShot(300, this, &MainWindow::showBusyIndicator);
+    else if (!isBusy())
+      busyBar_->hide();
   });
 
   loadMachineSetup();
@@ -273,8 +280,10 @@ void MainWindow::connectDocuments() {
     checkNow();
   });
   connect(docs_, &DocumentManager::busyChanged, this, [this] {
-    if (docs_->isLoading()) QTimer::singleShot(300, this, &MainWindow::showBusyIndicator);
-    else if (!isBusy() && !runner_->isBusy()) busyBar_->hide();
+    if (docs_->isLoading())
+      QTimer::singleShot(300, this, &MainWindow::showBusyIndicator);
+    else if (!isBusy() && !runner_->isBusy())
+      busyBar_->hide();
   });
   connect(docs_, &DocumentManager::loadFailed, this, &MainWindow::loadFailed);
   connect(docs_, &DocumentManager::loaded, this, [this](const QString& path, const QString& text) {
@@ -283,16 +292,16 @@ void MainWindow::connectDocuments() {
     updateTitle();
     // A program that names its machine at its head ((MACHINE: id), issue 27) selects it.
     core::gcode::Dialect named{};
-    if (core::gcode::parseDialectId(document_->header().machine, named) && named != jobDoc_.dialect()) setDialect(named);
+    if (core::gcode::parseDialectId(document_->header().machine, named) && named != jobDoc_.dialect())
+      setDialect(named);
     checker_->checkText(text);  // the text just loaded: no need to read it back from the editor
     emit fileLoaded(path);
   });
   connect(recoveryBar_, &RecoveryBar::restoreRequested, docs_, &DocumentManager::restoreRecovery);
   connect(recoveryBar_, &RecoveryBar::discardRequested, this,
           [this](const RecoveryCopy& copy) { docs_->recovery().remove(copy.id); });
-  connect(docs_, &DocumentManager::autosaveFailed, this, [this](const QString& error) {
-    statusBar()->showMessage(tr("Autosave failed: %1").arg(error), 5000);
-  });
+  connect(docs_, &DocumentManager::autosaveFailed, this,
+          [this](const QString& error) { statusBar()->showMessage(tr("Autosave failed: %1").arg(error), 5000); });
   // Losing the focus (another program, a locked screen) writes the copy at once.
   connect(qApp, &QGuiApplication::applicationStateChanged, this, [this](Qt::ApplicationState state) {
     if (state != Qt::ApplicationActive) docs_->autosave();
@@ -392,8 +401,10 @@ void MainWindow::onCheckFinished(const CheckController::JobPtr& job) {
           return f.code == d.code && f.range.line == d.range.line && f.range.file == d.range.file;
         }))
       lastDiagnostics_.push_back(d);
-  if (job->fit()) dialectOffer_->offer(*job->fit(), job->fitBlocks());
-  else dialectOffer_->clear();
+  if (job->fit())
+    dialectOffer_->offer(*job->fit(), job->fitBlocks());
+  else
+    dialectOffer_->clear();
   // The job's tools: library choices for the stations the program uses (a note per choice in Tool Select).
   const bool toolsChanged = !sameTools(job->tools().setup, jobDoc_.tools().setup);
   jobDoc_.setJob(job);
@@ -407,7 +418,7 @@ void MainWindow::onCheckFinished(const CheckController::JobPtr& job) {
     restockOnNextCheck_ = false;
     document_->takeInferredStock(job->file()->header, job->stockNotes());
   }
-  updateStockLabel();  // the setup strip lists the tools just decided
+  updateStockLabel();            // the setup strip lists the tools just decided
   programUnits_ = job->units();  // a G20 program speaks inches on View ▸ Units shown ▸ Auto
   applyDisplayUnits();
   std::stable_sort(lastDiagnostics_.begin(), lastDiagnostics_.end(), [](const auto& a, const auto& b) {
@@ -446,23 +457,30 @@ void MainWindow::loadMachineSetup(const QString& dir) {
   configDir_ = QString::fromStdString(loaded.dir);
   jobDoc_.setSetup(loaded.setup, loaded.toolsWithBitmap());  // the next check decides the job's tools
   // A setup file the reader refused is said at once, file and line, above the editor.
-  const bool problems = std::any_of(loaded.diagnostics.begin(), loaded.diagnostics.end(),
-                                    [](const core::machine::SetupDiagnostic& d) { return core::isError(d.diagnostic.severity); });
+  const bool problems =
+      std::any_of(loaded.diagnostics.begin(), loaded.diagnostics.end(),
+                  [](const core::machine::SetupDiagnostic& d) { return core::isError(d.diagnostic.severity); });
   if (problems)
-    showBanner(BannerKind::Setup, [diagnostics = loaded.diagnostics] {
-      QStringList lines{tr("The machine setup has errors:")};
-      for (const core::machine::SetupDiagnostic& d : diagnostics)
-        if (core::isError(d.diagnostic.severity))
-          lines << QStringLiteral("%1:%2: %3")
-                       .arg(QDir::toNativeSeparators(QString::fromStdString(d.file)))
-                       .arg(d.diagnostic.range.line)
-                       .arg(QString::fromStdString(core::formatMessage(d.diagnostic, Language::coreLang(), core::Surface::Gui)));
-      return lines.join(QLatin1Char('\n'));
-    }, false);
+    showBanner(
+        BannerKind::Setup,
+        [diagnostics = loaded.diagnostics] {
+          QStringList lines{tr("The machine setup has errors:")};
+          for (const core::machine::SetupDiagnostic& d : diagnostics)
+            if (core::isError(d.diagnostic.severity))
+              lines << QStringLiteral("%1:%2: %3")
+                           .arg(QDir::toNativeSeparators(QString::fromStdString(d.file)))
+                           .arg(d.diagnostic.range.line)
+                           .arg(QString::fromStdString(
+                               core::formatMessage(d.diagnostic, Language::coreLang(), core::Surface::Gui)));
+          return lines.join(QLatin1Char('\n'));
+        },
+        false);
   // The machines folders may name the remembered machine only now; its machine.cfg keys join the setup.
   updateMachineMenu();
-  if (const core::gcode::Dialect remembered = settings_->dialect(); remembered != jobDoc_.dialect()) setDialect(remembered);
-  jobDoc_.setMachine(core::machine::withMachineKeys(jobDoc_.setup().machine, core::gcode::machineProfile(jobDoc_.dialect())));
+  if (const core::gcode::Dialect remembered = settings_->dialect(); remembered != jobDoc_.dialect())
+    setDialect(remembered);
+  jobDoc_.setMachine(
+      core::machine::withMachineKeys(jobDoc_.setup().machine, core::gcode::machineProfile(jobDoc_.dialect())));
   runner_->setMachineSetup(jobDoc_.setup());
   if (designer_) designer_->setMachineSetup(jobDoc_.setup());
 }
@@ -508,19 +526,27 @@ void MainWindow::onRunStateChanged(RunState state) {
   // A program with no block to run (an empty editor, only comments) ran nothing.
   if (state == RunState::Finished && runner_->timeline() && !runner_->timeline()->alarm) {
     if (runner_->timeline()->snapshots.empty())
-      showBanner(BannerKind::RunEnded, [] {
-        return tr("There is nothing to run: the program has no blocks. Type the program in the editor or open a file.");
-      }, false);
+      showBanner(
+          BannerKind::RunEnded,
+          [] {
+            return tr(
+                "There is nothing to run: the program has no blocks. Type the program in the editor or open a file.");
+          },
+          false);
     else
-      showBanner(BannerKind::RunEnded, [seconds = runner_->timeline()->cycleTime()] {
-        return tr("The program ended. Cycle time: %1.").arg(formatDuration(seconds));
-      }, false);
+      showBanner(
+          BannerKind::RunEnded,
+          [seconds = runner_->timeline()->cycleTime()] {
+            return tr("The program ended. Cycle time: %1.").arg(formatDuration(seconds));
+          },
+          false);
   }
   // The run's notices (a vacant address left out, M99 in the main program, a
   // #3006 stop message) up to where it stands, for lines of this file.
   if ((state == RunState::Paused || state == RunState::Finished) && runner_->timeline()) {
     const core::machine::Timeline& t = *runner_->timeline();
-    const int upTo = runner_->currentSnapshot() < 0 ? -1 : t.snapshots[static_cast<std::size_t>(runner_->currentSnapshot())].line;
+    const int upTo =
+        runner_->currentSnapshot() < 0 ? -1 : t.snapshots[static_cast<std::size_t>(runner_->currentSnapshot())].line;
     bool added = false;
     std::vector<core::Diagnostic> found = t.flow.notices;
     // A guessed tool's holder touching the stock or chuck (W324/W325): the run went on, the list says so.
@@ -531,9 +557,8 @@ void MainWindow::onRunStateChanged(RunState state) {
     }
     for (const core::Diagnostic& n : found) {
       if (n.range.file != 0 || (state == RunState::Paused && n.range.line > upTo)) continue;
-      const bool seen = std::any_of(runDiagnostics_.begin(), runDiagnostics_.end(), [&n](const core::Diagnostic& d) {
-        return d.code == n.code && d.range == n.range;
-      });
+      const bool seen = std::any_of(runDiagnostics_.begin(), runDiagnostics_.end(),
+                                    [&n](const core::Diagnostic& d) { return d.code == n.code && d.range == n.range; });
       if (!seen) {
         runDiagnostics_.push_back(n);
         added = true;
@@ -545,29 +570,35 @@ void MainWindow::onRunStateChanged(RunState state) {
 
 QString MainWindow::formatDuration(double seconds) {
   // As the program sheet says it, in the UI language.
-  return render::durationText(seconds, Language::coreLang() == core::Lang::Th ? render::ReportLanguage::Thai
-                                                                               : render::ReportLanguage::English);
+  return render::durationText(
+      seconds, Language::coreLang() == core::Lang::Th ? render::ReportLanguage::Thai : render::ReportLanguage::English);
 }
 
 void MainWindow::onAlarm(const core::Diagnostic& alarm) {
   runDiagnostics_ = {alarm};
   showDiagnostics();
   editor_->setExecutingLine(alarm.range.line);
-  showBanner(BannerKind::Alarm, [alarm] {
-    return tr("Alarm %1 on line %2: %3")
-        .arg(QString::fromStdString(alarm.code))
-        .arg(alarm.range.line)
-        .arg(QString::fromStdString(core::formatMessage(alarm, Language::coreLang(), core::Surface::Gui)));
-  }, true);
+  showBanner(
+      BannerKind::Alarm,
+      [alarm] {
+        return tr("Alarm %1 on line %2: %3")
+            .arg(QString::fromStdString(alarm.code))
+            .arg(alarm.range.line)
+            .arg(QString::fromStdString(core::formatMessage(alarm, Language::coreLang(), core::Surface::Gui)));
+      },
+      true);
 }
 
 void MainWindow::onCheckFailed(const QList<core::Diagnostic>& diags) {
   int errors = 0;
   for (const auto& d : diags) errors += core::isError(d.severity);
-  showBanner(BannerKind::Refused, [errors] {
-    return tr("The program has %n error(s); fix them before running. Click an error below to go to it.", nullptr,
-              errors);
-  }, true);
+  showBanner(
+      BannerKind::Refused,
+      [errors] {
+        return tr("The program has %n error(s); fix them before running. Click an error below to go to it.", nullptr,
+                  errors);
+      },
+      true);
   diagnostics_->show();
   diagnostics_->raise();
   // Go to the first error in the editor's own file (a subprogram file's are E412 on its call).
@@ -595,7 +626,8 @@ void MainWindow::updateStockLabel() {
   const core::io::StockSource source = document_->header().stockSource;
   setupStrip_->showSetup(document_->stockNotes(),
                          source == core::io::StockSource::Inferred || source == core::io::StockSource::Default,
-                         document_->isPlainGcode(), jobDoc_.tools(), {document_->header().calculatorInput, pointNote_, document_->header().toolsBeyondCentre});
+                         document_->isPlainGcode(), jobDoc_.tools(),
+                         {document_->header().calculatorInput, pointNote_, document_->header().toolsBeyondCentre});
 }
 
 QString MainWindow::stockSourceText() const { return setupStrip_ ? setupStrip_->stockText() : QString(); }
@@ -637,8 +669,10 @@ void MainWindow::showJobDetails() {
 
 void MainWindow::applyJobDetails(const core::io::JobHeader& header) {
   document_->setHeader(header);
-  if (!document_->isPlainGcode()) settings_->setLastJobHeader(header);
-  else if (!document_->isUntitled()) settings_->setJobDetailsFor(document_->filePath(), header);
+  if (!document_->isPlainGcode())
+    settings_->setLastJobHeader(header);
+  else if (!document_->isUntitled())
+    settings_->setJobDetailsFor(document_->filePath(), header);
   checkNow();
 }
 
@@ -688,7 +722,9 @@ void MainWindow::pushSetupChange(const QString& text, const QString& dir, const 
     saveToolOverrides(document_->filePath(), jobDoc_.overrides());
     loadMachineSetup(folder);
     if (!error.isEmpty())
-      showBanner(BannerKind::Setup, [error] { return tr("The machine setup could not be written back: %1").arg(error); }, true);
+      showBanner(
+          BannerKind::Setup, [error] { return tr("The machine setup could not be written back: %1").arg(error); },
+          true);
     checkNow();  // empty offset rows may take a library tool's nose radius and tip
   };
   reload(dir, after.overrides, {});  // the dialog wrote the files; this takes them in

@@ -63,18 +63,34 @@ class MainWindow : public QMainWindow {
   CodeEditor* editor() const { return editor_; }
   DiagnosticsPanel* diagnosticsPanel() const { return diagnostics_; }
   Document* document() const { return document_; }
-  class DocumentManager* documentManager() const { return docs_; }
-  class RecoveryBar* recoveryBar() const { return recoveryBar_; }
-  class FirstStepsBar* firstSteps() const { return firstSteps_; }
+  class DocumentManager* documentManager() const {
+    return docs_;
+  }
+  class RecoveryBar* recoveryBar() const {
+    return recoveryBar_;
+  }
+  class FirstStepsBar* firstSteps() const {
+    return firstSteps_;
+  }
   QUndoStack* setupUndoStack() const { return setupUndo_; }
   RunController* runController() const { return runner_; }
-  class FlowPanel* flowPanel() const { return flow_; }
-  class PartPanel* partPanel() const { return part_; }
-  class OperatorPanel* operatorPanel() const { return operatorPanel_; }
-  class Part3DDock* view3dDock() const { return view3d_; }
+  class FlowPanel* flowPanel() const {
+    return flow_;
+  }
+  class PartPanel* partPanel() const {
+    return part_;
+  }
+  class OperatorPanel* operatorPanel() const {
+    return operatorPanel_;
+  }
+  class Part3DDock* view3dDock() const {
+    return view3d_;
+  }
   OutputView* outputView() const { return output_; }
   StatusFields* statusFields() const { return statusFields_; }
-  class ExplainBar* explainBar() const { return explainBar_; }
+  class ExplainBar* explainBar() const {
+    return explainBar_;
+  }
   StatusLamps* statusLamps() const { return statusLamps_; }
   QSplitter* splitter() const { return splitter_; }
   // The banner above the editor (alarms, "fix the errors first"); empty when hidden.
@@ -84,7 +100,9 @@ class MainWindow : public QMainWindow {
   // Where the open program's stock came from (header, Job details, inferred ...).
   QString stockSourceText() const;
   // Stock and tools above the output screen (issue 26).
-  class SetupStrip* setupStrip() const { return setupStrip_; }
+  class SetupStrip* setupStrip() const {
+    return setupStrip_;
+  }
   // Actions by object name ("actionGo", "actionSave", ...), for tests.
   QAction* action(const QString& objectName) const;
 
@@ -111,11 +129,11 @@ class MainWindow : public QMainWindow {
   void setJobDetails(const core::io::JobHeader& header);  // as the dialog's OK does: undoable
   void showPartDesigner();
   // Reports (SPEC 12): the program sheet and the drawing sheet, in the UI's language.
-  void printCode();        // File > Print Code: printer dialog
-  void printCodeNow();     // tool bar Print: the default printer, no dialog
+  void printCode();     // File > Print Code: printer dialog
+  void printCodeNow();  // tool bar Print: the default printer, no dialog
   void printDrawing();
-  void printPreview();     // both sheets
-  bool exportPdf(const QString& path = {});   // both sheets; asks for a path when empty
+  void printPreview();                       // both sheets
+  bool exportPdf(const QString& path = {});  // both sheets; asks for a path when empty
   void showFind();
   void goToLine();
   void toggleBreakpoint();
@@ -208,7 +226,7 @@ class MainWindow : public QMainWindow {
   QPointer<PartDesignerDialog> designer_;
   QPointer<HelpContents> help_;
   CheckController* checker_ = nullptr;
-  QUndoStack* setupUndo_ = nullptr;  // job details, tools, offsets of this document
+  QUndoStack* setupUndo_ = nullptr;        // job details, tools, offsets of this document
   std::function<void()> updateSetupUndo_;  // enables and names Undo/Redo Setup Change
 
   RunSpeedControl* speedControl_ = nullptr;
@@ -216,14 +234,14 @@ class MainWindow : public QMainWindow {
   std::vector<core::Diagnostic> lastDiagnostics_;
   std::vector<core::Diagnostic> runDiagnostics_;  // the last alarm / refused run
 
-  std::optional<core::DisplayUnits> shownUnits_;         // View ▸ Units shown; nullopt: Auto
+  std::optional<core::DisplayUnits> shownUnits_;              // View ▸ Units shown; nullopt: Auto
   core::DisplayUnits programUnits_ = core::DisplayUnits::Mm;  // the last check's: what Auto shows
   void applyDisplayUnits();
   QString configDir_;
   QString configDirOverride_;  // where the dialogs last saved the .cfg files
   // The job's inputs (setup, dialect, units, the stations set for this file) and its last Job.
   JobDocument jobDoc_;
-  bool restockOnNextCheck_ = false;  // the dialect or units changed: the next Job says the bar
+  bool restockOnNextCheck_ = false;            // the dialect or units changed: the next Job says the bar
   std::optional<core::Diagnostic> pointNote_;  // the last check's I103/I104, for the setup strip
 };
 

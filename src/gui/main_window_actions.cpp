@@ -40,9 +40,12 @@ namespace {
 // The Dialect menu's action of a machine ("actionDialectHaas", "actionMachine_romi-gl240m").
 QString dialectActionName(core::gcode::Dialect d) {
   switch (d) {
-    case core::gcode::Dialect::Fanuc: return QStringLiteral("actionDialectFanuc");
-    case core::gcode::Dialect::Haas: return QStringLiteral("actionDialectHaas");
-    case core::gcode::Dialect::Classic: return QStringLiteral("actionDialectClassic");
+    case core::gcode::Dialect::Fanuc:
+      return QStringLiteral("actionDialectFanuc");
+    case core::gcode::Dialect::Haas:
+      return QStringLiteral("actionDialectHaas");
+    case core::gcode::Dialect::Classic:
+      return QStringLiteral("actionDialectClassic");
   }
   const std::string_view id = core::gcode::machineProfile(d).id;
   return QStringLiteral("actionMachine_") + QString::fromUtf8(id.data(), static_cast<qsizetype>(id.size()));
@@ -68,8 +71,9 @@ void MainWindow::createActions() {
   actions_->add(QStringLiteral("view3dDock"), view3d_->toggleViewAction());
   actions_->add(QStringLiteral("operatorPanelDock"), operatorPanel_->toggleViewAction());
   operatorPanel_->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_M));
-  connect(operatorPanel_, &OperatorPanel::cycleStartRequested, this,
-          [this](bool singleBlock) { action(singleBlock ? QStringLiteral("actionStep") : QStringLiteral("actionGo"))->trigger(); });
+  connect(operatorPanel_, &OperatorPanel::cycleStartRequested, this, [this](bool singleBlock) {
+    action(singleBlock ? QStringLiteral("actionStep") : QStringLiteral("actionGo"))->trigger();
+  });
   connect(operatorPanel_, &OperatorPanel::switchesChanged, this, [this](bool optionalStop, bool blockSkip) {
     action(QStringLiteral("actionOptionalStop"))->setChecked(optionalStop);
     action(QStringLiteral("actionBlockSkip"))->setChecked(blockSkip);
@@ -146,9 +150,9 @@ void MainWindow::createActions() {
     };
   };
   on("actionGo", run(&RunController::go));
-  on("actionStep", run(&RunController::stepOver));      // F10: one block of this level
-  on("actionStepInto", run(&RunController::step));      // F11: into calls
-  on("actionStepOut", run(&RunController::stepOut));    // Shift+F11: out of one
+  on("actionStep", run(&RunController::stepOver));    // F10: one block of this level
+  on("actionStepInto", run(&RunController::step));    // F11: into calls
+  on("actionStepOut", run(&RunController::stepOut));  // Shift+F11: out of one
   on("actionPause", [this] { runner_->pause(); });
   on("actionStop", [this] {
     runner_->stop();
@@ -178,7 +182,8 @@ void MainWindow::createActions() {
   // The slider and the Run > Speed menu show the same choice.
   connect(speedControl_, &RunSpeedControl::speedChanged, this, [this](double factor) {
     for (int i = 0; i < speedCount(); ++i)
-      if (speeds()[static_cast<std::size_t>(i)] == factor) action(QStringLiteral("actionSpeed%1").arg(i))->setChecked(true);
+      if (speeds()[static_cast<std::size_t>(i)] == factor)
+        action(QStringLiteral("actionSpeed%1").arg(i))->setChecked(true);
   });
   QToolBar* runBar = actions_->toolBar(QStringLiteral("runToolBar"));
   runBar->addSeparator();
@@ -220,7 +225,8 @@ void MainWindow::createActions() {
   on("actionFitView", [this] { output_->fitToView(); });
   on("actionZoomIn", [this] { output_->zoomIn(); });
   on("actionZoomOut", [this] { output_->zoomOut(); });
-  for (const char* n : {"actionShowPath", "actionShowStatusBar", "actionShowLamps"}) action(QString::fromLatin1(n))->setChecked(true);
+  for (const char* n : {"actionShowPath", "actionShowStatusBar", "actionShowLamps"})
+    action(QString::fromLatin1(n))->setChecked(true);
   connect(action(QStringLiteral("actionShowPath")), &QAction::toggled, output_, &OutputView::setShowPath);
   connect(action(QStringLiteral("actionShowStatusBar")), &QAction::toggled, statusBar(), &QWidget::setVisible);
   connect(action(QStringLiteral("actionShowLamps")), &QAction::toggled, statusLamps_, &QWidget::setVisible);
@@ -264,7 +270,8 @@ void MainWindow::createDocks() {
     partDockGrown_ = true;
     QTimer::singleShot(0, this, [this] {
       QTreeWidget* list = part_->list();
-      const int row = std::max(list->fontMetrics().height() + 6, list->topLevelItemCount() > 0 ? list->sizeHintForRow(0) : 0);
+      const int row =
+          std::max(list->fontMetrics().height() + 6, list->topLevelItemCount() > 0 ? list->sizeHintForRow(0) : 0);
       const int need = part_->height() - list->viewport()->height() + 6 * row;
       if (part_->height() < need) resizeDocks({part_}, {need}, Qt::Vertical);
     });
@@ -369,7 +376,8 @@ void MainWindow::toggleLanguage() {
 }
 
 void MainWindow::setDialect(core::gcode::Dialect d) {
-  const bool machineKeys = !core::gcode::machineProfile(d).file.empty() || !core::gcode::machineProfile(jobDoc_.dialect()).file.empty();
+  const bool machineKeys =
+      !core::gcode::machineProfile(d).file.empty() || !core::gcode::machineProfile(jobDoc_.dialect()).file.empty();
   jobDoc_.setDialect(d);
   settings_->setDialect(d);
   // A machine file's machine.cfg keys (rapids, travel ...) are part of the setup: read it again with them.
@@ -388,7 +396,7 @@ void MainWindow::setDialect(core::gcode::Dialect d) {
 void MainWindow::setShownUnits(std::optional<core::DisplayUnits> units) {
   shownUnits_ = units;
   settings_->setShownUnits(units);
-  action(!units                                 ? QStringLiteral("actionShowUnitsAuto")
+  action(!units                               ? QStringLiteral("actionShowUnitsAuto")
          : *units == core::DisplayUnits::Inch ? QStringLiteral("actionShowUnitsInch")
                                               : QStringLiteral("actionShowUnitsMm"))
       ->setChecked(true);
@@ -399,10 +407,10 @@ void MainWindow::setPowerOnUnits(std::optional<core::gcode::InputUnits> units) {
   jobDoc_.setPowerOnUnits(units);
   settings_->setPowerOnUnits(units);
   runner_->setPowerOnUnits(units);
-  action(!units                                      ? QStringLiteral("actionUnitsMachine")
+  action(!units                                    ? QStringLiteral("actionUnitsMachine")
          : *units == core::gcode::InputUnits::Inch ? QStringLiteral("actionUnitsInch")
                                                    : QStringLiteral("actionUnitsMm"))
-      ->setChecked(true);  // the group unchecks the others
+      ->setChecked(true);      // the group unchecks the others
   restockOnNextCheck_ = true;  // inch or mm changes the approach: the next check's Job says the bar
   checkNow();
 }

@@ -15,10 +15,12 @@ void MainWindow::setJobDetails(const core::io::JobHeader& header) {
   applyJobDetails(header);
   setupUndo_->push(new JobDetailsCommand(before, document_->headerState(), [this](const Document::HeaderState& state) {
     document_->restoreHeader(state);
-    if (!document_->isPlainGcode()) settings_->setLastJobHeader(state.header);
+    if (!document_->isPlainGcode())
+      settings_->setLastJobHeader(state.header);
     else if (!document_->isUntitled() && state.header.stockSource == core::io::StockSource::JobDetails)
       settings_->setJobDetailsFor(document_->filePath(), state.header);
-    else if (!document_->isUntitled()) settings_->removeJobDetailsFor(document_->filePath());
+    else if (!document_->isUntitled())
+      settings_->removeJobDetailsFor(document_->filePath());
     checkNow();
   }));
 }

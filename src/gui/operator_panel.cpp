@@ -222,8 +222,8 @@ void OperatorPanel::build() {
   g->setContentsMargins(2, 2, 2, 2);
   g->setSpacing(2);
   modes_ = new QButtonGroup(this);
-  const char* modeNames[6] = {"operatorModeEdit", "operatorModeMem", "operatorModeMdi",
-                              "operatorModeJog", "operatorModeHandle", "operatorModeZrn"};
+  const char* modeNames[6] = {"operatorModeEdit", "operatorModeMem",    "operatorModeMdi",
+                              "operatorModeJog",  "operatorModeHandle", "operatorModeZrn"};
   for (int i = 0; i < 6; ++i) {
     QToolButton* b = panelKey(QString::fromLatin1(modeNames[i]), true);
     modes_->addButton(b, i);
@@ -380,7 +380,9 @@ void OperatorPanel::build() {
   connect(powerOn_, &QToolButton::clicked, this, &OperatorPanel::powerOn);
   connect(zoom_, &QToolButton::clicked, this, [this] {
     view_->zoom = (view_->zoom + 1) % 3;
-    zoom_->setText(view_->zoom == 0 ? QStringLiteral("ALL") : view_->zoom == 1 ? QStringLiteral("40 mm") : QStringLiteral("8 mm"));
+    zoom_->setText(view_->zoom == 0   ? QStringLiteral("ALL")
+                   : view_->zoom == 1 ? QStringLiteral("40 mm")
+                                      : QStringLiteral("8 mm"));
     view_->update();
   });
   tabs_->addTab(keys, QString());
@@ -398,7 +400,8 @@ void OperatorPanel::build() {
   offsets_->verticalHeader()->setDefaultSectionSize(offsets_->fontMetrics().height() + 4);
   offsets_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
   offsets_->setFont(mono);
-  offsets_->setMinimumHeight(4 * offsets_->verticalHeader()->defaultSectionSize() + offsets_->horizontalHeader()->sizeHint().height());
+  offsets_->setMinimumHeight(4 * offsets_->verticalHeader()->defaultSectionSize() +
+                             offsets_->horizontalHeader()->sizeHint().height());
   ov->addWidget(offsets_, 1);
   auto* in = new QHBoxLayout;
   input_ = new QLineEdit;
@@ -454,7 +457,8 @@ void OperatorPanel::build() {
     if (!control_) return;
     const auto parsed = ctl::parseMeasureInput(input_->text().toStdString());
     if (!parsed) {
-      showMessage(core::Diagnostic{core::Severity::Error, core::codes::kNotMeasureInput, {}, {input_->text().toStdString()}});
+      showMessage(
+          core::Diagnostic{core::Severity::Error, core::codes::kNotMeasureInput, {}, {input_->text().toStdString()}});
       return;
     }
     ctl::OffsetRow& r = control_->row(offsetRow());
@@ -468,7 +472,8 @@ void OperatorPanel::build() {
     if (!control_) return;
     const auto parsed = ctl::parseMeasureInput(input_->text().toStdString());
     if (!parsed || parsed->axis != ctl::Axis::Z) {
-      showMessage(core::Diagnostic{core::Severity::Error, core::codes::kNotMeasureInput, {}, {input_->text().toStdString()}});
+      showMessage(
+          core::Diagnostic{core::Severity::Error, core::codes::kNotMeasureInput, {}, {input_->text().toStdString()}});
       return;
     }
     showMessage(control_->measureWorkShift(parsed->value));
@@ -506,7 +511,8 @@ void OperatorPanel::build() {
     connect(s, &QShortcut::activated, this, std::forward<decltype(slot)>(slot));
   };
   for (int i = 0; i < 6; ++i)
-    shortcut(QKeySequence(Qt::ALT | static_cast<Qt::Key>(Qt::Key_1 + i)), [this, i] { pressMode(static_cast<ctl::Mode>(i)); });
+    shortcut(QKeySequence(Qt::ALT | static_cast<Qt::Key>(Qt::Key_1 + i)),
+             [this, i] { pressMode(static_cast<ctl::Mode>(i)); });
   shortcut(QKeySequence(Qt::ALT | Qt::Key_Left), [this] { pressJog(ctl::Axis::Z, -1); });
   shortcut(QKeySequence(Qt::ALT | Qt::Key_Right), [this] { pressJog(ctl::Axis::Z, 1); });
   shortcut(QKeySequence(Qt::ALT | Qt::Key_Up), [this] { pressJog(ctl::Axis::X, 1); });
@@ -552,7 +558,9 @@ void OperatorPanel::applyLayoutLabels() {
   feedHold_->setText(QStringLiteral("FEED HOLD"));
   reset_->setText(QStringLiteral("RESET"));
   powerOn_->setText(QStringLiteral("POWER ON"));
-  zoom_->setText(view_->zoom == 0 ? QStringLiteral("ALL") : view_->zoom == 1 ? QStringLiteral("40 mm") : QStringLiteral("8 mm"));
+  zoom_->setText(view_->zoom == 0   ? QStringLiteral("ALL")
+                 : view_->zoom == 1 ? QStringLiteral("40 mm")
+                                    : QStringLiteral("8 mm"));
   measure_->setText(haas ? QStringLiteral("MESUR") : QStringLiteral("MEASURE"));
   inputWear_->setText(QStringLiteral("+INPUT"));
   measureShift_->setText(haas ? QStringLiteral("G54 Z MESUR") : QStringLiteral("SHIFT MEASURE"));
@@ -568,14 +576,16 @@ void OperatorPanel::retranslateUi() {
   tabs_->setTabText(0, tr("Keys"));
   tabs_->setTabText(1, tr("Offsets"));
   tabs_->setTabText(2, QStringLiteral("MDI"));
-  const QString modeTips[6] = {tr("EDIT: the program is edited in the editor"),
-                               tr("MEMORY: cycle start runs the job's program"),
-                               tr("MDI: type blocks on the MDI page and press cycle start (Alt+Enter)"),
-                               tr("JOG: hold -X +X -Z +Z (Alt+arrows) to move at the jog feed, with RAPID at the rapid rate"),
-                               tr("HANDLE: the handwheel moves the chosen axis one step a click (Alt+Page Up/Down)"),
-                               tr("ZERO RETURN: +X and +Z bring each axis to the reference point; until then cycle start is refused")};
+  const QString modeTips[6] = {
+      tr("EDIT: the program is edited in the editor"),
+      tr("MEMORY: cycle start runs the job's program"),
+      tr("MDI: type blocks on the MDI page and press cycle start (Alt+Enter)"),
+      tr("JOG: hold -X +X -Z +Z (Alt+arrows) to move at the jog feed, with RAPID at the rapid rate"),
+      tr("HANDLE: the handwheel moves the chosen axis one step a click (Alt+Page Up/Down)"),
+      tr("ZERO RETURN: +X and +Z bring each axis to the reference point; until then cycle start is refused")};
   for (int i = 0; i < 6; ++i) modes_->button(i)->setToolTip(modeTips[i] + QStringLiteral(" (Alt+%1)").arg(i + 1));
-  for (int i = 0; i < 4; ++i) jogKeys_[i]->setToolTip(tr("Jog the turret; in ZERO RETURN mode +X / +Z return the axis"));
+  for (int i = 0; i < 4; ++i)
+    jogKeys_[i]->setToolTip(tr("Jog the turret; in ZERO RETURN mode +X / +Z return the axis"));
   rapid_->setToolTip(tr("Jog at the rapid rate (times the rapid override): a rapid into the bar is a crash"));
   handleStep_->button(0)->setToolTip(tr("0.001 mm a click (X in diameter)"));
   handleStep_->button(1)->setToolTip(tr("0.01 mm a click (X in diameter)"));
@@ -596,23 +606,31 @@ void OperatorPanel::retranslateUi() {
   cycleStart_->setToolTip(tr("Cycle start (Alt+Enter): MDI runs the typed blocks, MEMORY runs the program"));
   feedHold_->setToolTip(tr("Feed hold: the feed override goes to 0 %"));
   reset_->setToolTip(tr("Reset (Alt+Backspace): clears the alarm"));
-  powerOn_->setToolTip(tr("Power on again: a new bar, the turret short of the reference point, the offsets as the job has them"));
+  powerOn_->setToolTip(
+      tr("Power on again: a new bar, the turret short of the reference point, the offsets as the job has them"));
   zoom_->setToolTip(tr("Zoom: the bar and the tool, 40 mm around the tool tip, or 8 mm to see each handwheel click"));
-  measure_->setToolTip(tr("Type Z0 with the tool on the face, or X and the measured diameter after a cut, then MEASURE: "
-                          "the geometry offset of the selected row is computed from the machine position"));
-  inputWear_->setToolTip(tr("Type X or Z and a correction (X-0.04), then +INPUT: it is added to the wear of the selected row"));
-  measureShift_->setToolTip(tr("Type Z0 with the tool on the face: the work shift Z is set from the selected tool's geometry"));
+  measure_->setToolTip(
+      tr("Type Z0 with the tool on the face, or X and the measured diameter after a cut, then MEASURE: "
+         "the geometry offset of the selected row is computed from the machine position"));
+  inputWear_->setToolTip(
+      tr("Type X or Z and a correction (X-0.04), then +INPUT: it is added to the wear of the selected row"));
+  measureShift_->setToolTip(
+      tr("Type Z0 with the tool on the face: the work shift Z is set from the selected tool's geometry"));
   micButton_->setToolTip(tr("Measure the bar's diameter at this Z with the micrometer"));
   labels_[0]->setText(tr("Micrometer"));
   exercise_->setText(tr("Exercise: the offsets are unknown"));
-  exercise_->setToolTip(tr("Every geometry offset starts at 0: each tool the program uses must be touched off "
-                           "before cycle start, and cycle start then says how far the entries are from the true tools"));
-  offsets_->setToolTip(tr("Geometry and wear offsets, X as a diameter; the selected row takes MEASURE and +INPUT") +
-                        QStringLiteral("\n\n") + tr("Touch off: spindle on, touch the face, type Z0, MEASURE; skim a diameter, back off in Z only, "
-                          "stop the spindle, measure it, type X and the diameter, MEASURE. Row = the station (T0101)."));
+  exercise_->setToolTip(
+      tr("Every geometry offset starts at 0: each tool the program uses must be touched off "
+         "before cycle start, and cycle start then says how far the entries are from the true tools"));
+  offsets_->setToolTip(
+      tr("Geometry and wear offsets, X as a diameter; the selected row takes MEASURE and +INPUT") +
+      QStringLiteral("\n\n") +
+      tr("Touch off: spindle on, touch the face, type Z0, MEASURE; skim a diameter, back off in Z only, "
+         "stop the spindle, measure it, type X and the diameter, MEASURE. Row = the station (T0101)."));
   tabs_->setTabToolTip(1, offsets_->toolTip());
-  mdiHint_->setText(tr("MDI mode: type one or more blocks, then CYCLE START. They run with the same check, "
-                       "interpreter and cut as a program; the modal state carries on to the next blocks."));
+  mdiHint_->setText(
+      tr("MDI mode: type one or more blocks, then CYCLE START. They run with the same check, "
+         "interpreter and cut as a program; the modal state carries on to the next blocks."));
   // Long tips wrap (rich text) instead of running off the screen.
   for (QWidget* w : findChildren<QWidget*>()) {
     const QString t = w->toolTip();
@@ -632,15 +650,19 @@ void OperatorPanel::changeEvent(QEvent* event) {
 
 void OperatorPanel::showEvent(QShowEvent* event) {
   QDockWidget::showEvent(event);
-  if (!control_) powerOn();
-  else updateCycleTime();
+  if (!control_)
+    powerOn();
+  else
+    updateCycleTime();
 }
 
 void OperatorPanel::powerOn() {
   Source s = source_();
   // The offsets the panel gave the run are not offset.cfg: power on starts from the file's again.
-  if (emitted_ && panelSameOffsets(s.setup.offsets, lastEmitted_)) s.setup.offsets = fileOffsets_;
-  else fileOffsets_ = s.setup.offsets;
+  if (emitted_ && panelSameOffsets(s.setup.offsets, lastEmitted_))
+    s.setup.offsets = fileOffsets_;
+  else
+    fileOffsets_ = s.setup.offsets;
   control_ = std::make_unique<ctl::Control>(s.setup, s.stock, s.dialect);
   view_->setControl(control_.get());
   const int stations = std::min(s.setup.machine.turretStations, core::io::kMaxStations);
@@ -696,8 +718,9 @@ void OperatorPanel::pressJog(ctl::Axis axis, int direction) {
   const core::io::MachineConfig& m = control_->setup().machine;
   const bool rapid = rapid_->isChecked();
   const int ro = control_->overrides().rapid;
-  const double rate = rapid ? (ro <= 0 ? ctl::kRapidF0Rate : (axis == ctl::Axis::X ? 2.0 * m.rapidX : m.rapidZ) * ro / 100.0)
-                            : control_->jogFeed * control_->overrides().feed / 100.0 * (axis == ctl::Axis::X ? 2.0 : 1.0);
+  const double rate =
+      rapid ? (ro <= 0 ? ctl::kRapidF0Rate : (axis == ctl::Axis::X ? 2.0 * m.rapidX : m.rapidZ) * ro / 100.0)
+            : control_->jogFeed * control_->overrides().feed / 100.0 * (axis == ctl::Axis::X ? 2.0 : 1.0);
   afterMotion(control_->jog(axis, direction * rate / 600.0, rapid));
 }
 
@@ -717,7 +740,8 @@ void OperatorPanel::pressMeasure() {
   if (!control_) return;
   const auto parsed = ctl::parseMeasureInput(input_->text().toStdString());
   if (!parsed) {
-    showMessage(core::Diagnostic{core::Severity::Error, core::codes::kNotMeasureInput, {}, {input_->text().toStdString()}});
+    showMessage(
+        core::Diagnostic{core::Severity::Error, core::codes::kNotMeasureInput, {}, {input_->text().toStdString()}});
     return;
   }
   showMessage(control_->measure(offsetRow(), parsed->axis, parsed->value));
@@ -788,8 +812,9 @@ void OperatorPanel::showMessage(const std::optional<core::Diagnostic>& d) {
   }
   const bool bad = core::isError(d->severity);
   const bool warn = d->severity == core::Severity::Warning;
-  message_->setStyleSheet(bad ? QStringLiteral("color: #b00000; font-weight: bold;")
-                              : warn ? QStringLiteral("color: #8a5a00;") : QString());
+  message_->setStyleSheet(bad    ? QStringLiteral("color: #b00000; font-weight: bold;")
+                          : warn ? QStringLiteral("color: #8a5a00;")
+                                 : QString());
   QString line = QString::fromStdString(d->code) + QStringLiteral(" ") + text(*d);
   if (mdiPlace_.first > 0) line += tr(" (MDI line %1, column %2)").arg(mdiPlace_.first).arg(mdiPlace_.second);
   message_->setText(line);
@@ -848,7 +873,8 @@ void OperatorPanel::refresh() {
   // Chips: the last key took material off, the sign a touch-off waits for.
   if (chips_) state_->setText(state_->text() + QStringLiteral("  ") + tr("CHIPS"));
   state_->setStyleSheet(c.alarm() ? QStringLiteral("color: #b00000; font-weight: bold;")
-                                  : chips_ ? QStringLiteral("color: #a05000; font-weight: bold;") : QString());
+                        : chips_  ? QStringLiteral("color: #a05000; font-weight: bold;")
+                                  : QString());
   if (shown_) showMessage(shown_);  // its words in the language now shown
   for (int n = 1; n <= offsets_->rowCount(); ++n) {
     const ctl::OffsetRow& r = c.row(n);
@@ -873,8 +899,10 @@ void OperatorPanel::updateCycleTime() {
   const Source s = source_();
   if (s.program && !s.program->moves.empty()) {
     const double base = s.program->cycleTime();
-    const double now = ctl::withOverrides(*s.program, c.overrides(), c.setup().machine, c.dryRun, c.jogFeed).cycleTime();
-    cycleTime_->setText(tr("Cycle time at these overrides: %1 (at 100 %: %2)").arg(panelMinSec(now), panelMinSec(base)));
+    const double now =
+        ctl::withOverrides(*s.program, c.overrides(), c.setup().machine, c.dryRun, c.jogFeed).cycleTime();
+    cycleTime_->setText(
+        tr("Cycle time at these overrides: %1 (at 100 %: %2)").arg(panelMinSec(now), panelMinSec(base)));
   } else {
     cycleTime_->setText(tr("Run the program once to see its cycle time at these overrides."));
   }

@@ -53,7 +53,7 @@ class OperatorPanel : public QDockWidget {
   void pressMode(core::control::Mode mode);
   void pressJog(core::control::Axis axis, int direction);  // one jog tick (a held key repeats it)
   void turnHandle(int clicks);
-  void pressMeasure();                                      // the offset page's input + MEASURE
+  void pressMeasure();  // the offset page's input + MEASURE
   void pressCycleStart();
   void pressReset();
   QLineEdit* offsetInput() const { return input_; }
@@ -78,8 +78,8 @@ class OperatorPanel : public QDockWidget {
  private:
   void build();
   void applyLayoutLabels();
-  void refresh();              // every page from the model
-  void updateCycleTime();      // the job's cycle time at the overrides (the program may be long: not on every key)
+  void refresh();          // every page from the model
+  void updateCycleTime();  // the job's cycle time at the overrides (the program may be long: not on every key)
   void showMessage(const std::optional<core::Diagnostic>& d);
   void showAll(const std::vector<core::Diagnostic>& ds);
   void afterMotion(const core::control::MotionResult& r);
@@ -89,7 +89,7 @@ class OperatorPanel : public QDockWidget {
   std::function<Source()> source_;
   std::unique_ptr<core::control::Control> control_;
   const core::machine::Timeline* program_ = nullptr;
-  core::io::OffsetTable fileOffsets_;   // offset.cfg as first read: the wear at power-on
+  core::io::OffsetTable fileOffsets_;  // offset.cfg as first read: the wear at power-on
   core::io::OffsetTable lastEmitted_;
   bool emitted_ = false;
   bool chips_ = false;  // the last motion key cut the bar

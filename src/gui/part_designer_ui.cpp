@@ -70,7 +70,8 @@ void PartDesignerDialog::buildUi() {
   redoButton_->setShortcut(QKeySequence::Redo);
   connect(openButton_, &QToolButton::clicked, this, &PartDesignerDialog::openDialog);
   connect(saveButton_, &QToolButton::clicked, this, &PartDesignerDialog::saveDialog);
-  for (QToolButton* b : {addButton_, removeButton_, upButton_, downButton_, undoButton_, redoButton_, openButton_, saveButton_})
+  for (QToolButton* b :
+       {addButton_, removeButton_, upButton_, downButton_, undoButton_, redoButton_, openButton_, saveButton_})
     top->addWidget(b);
   top->addStretch(1);
   dialectLabel_ = new QLabel(this);
@@ -102,8 +103,8 @@ void PartDesignerDialog::buildUi() {
     d.partOff = on;
     setDesign(d, partOff_->text().remove(QLatin1Char('&')));
   });
-  for (QWidget* w : std::initializer_list<QWidget*>{dialectLabel_, dialect_, materialLabel_, material_, toolMaterialLabel_,
-                                                    toolMaterial_, partOff_})
+  for (QWidget* w : std::initializer_list<QWidget*>{dialectLabel_, dialect_, materialLabel_, material_,
+                                                    toolMaterialLabel_, toolMaterial_, partOff_})
     top->addWidget(w);
 
   auto* bar = new QHBoxLayout;

@@ -137,8 +137,10 @@ void PartPanel::changeEvent(QEvent* event) {
   retranslateUi();
   // The list and the summary are the core's sentences in the language of the
   // last check: say them again in the new one (the same program, cut again).
-  if (features_) analyse();
-  else if (summaryMaker_) summary_->setText(summaryMaker_());
+  if (features_)
+    analyse();
+  else if (summaryMaker_)
+    summary_->setText(summaryMaker_());
 }
 
 void PartPanel::analyse() {
@@ -192,13 +194,14 @@ void PartPanel::analyse() {
   features_ = new QTreeWidgetItem(list_);
   for (const auto* side : {&part.outside, &part.inside})
     for (const cut::PartFeature& f : *side) {
-      QTreeWidgetItem* item = row(features_, qs(cut::describeFeature(f, lang, units_)), qs(cut::featureLabel(f, lang, units_)), 0,
-                                  f.zLeft, f.zRight);
+      QTreeWidgetItem* item = row(features_, qs(cut::describeFeature(f, lang, units_)),
+                                  qs(cut::featureLabel(f, lang, units_)), 0, f.zLeft, f.zRight);
       item->setData(0, kPathRole, QVariant::fromValue(profileOf(f)));
     }
   defects_ = new QTreeWidgetItem(list_);
   for (const Diagnostic& d : cut::partCheckDiagnostics(check, units_)) {
-    QTreeWidgetItem* item = row(defects_, qs(formatMessage(d, lang, core::Surface::Gui)), QString(), d.range.line, 0.0, 0.0);
+    QTreeWidgetItem* item =
+        row(defects_, qs(formatMessage(d, lang, core::Surface::Gui)), QString(), d.range.line, 0.0, 0.0);
     if (d.code == codes::kPartGouge || d.code == codes::kBoreGouge) item->setForeground(0, QColor(190, 0, 0));
     if (d.code == codes::kPartLeftover || d.code == codes::kBoreLeftover) item->setForeground(0, QColor(150, 110, 0));
   }

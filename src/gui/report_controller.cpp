@@ -167,7 +167,8 @@ bool ReportController::exportPdf(const QString& path) {
   paint(painter, writer, data, true, true);
   if (!painter.end()) return fail({});
   const QByteArray& bytes = pdf.data();
-  if (const QString why = writeFileChecked(target, std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+  if (const QString why =
+          writeFileChecked(target, std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
       !why.isEmpty())
     return fail(why);
   emit message(tr("Exported %1").arg(QDir::toNativeSeparators(target)), 3000);

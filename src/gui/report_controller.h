@@ -26,20 +26,20 @@ class ReportController : public QObject {
   // The open program as it is now (the editor's text, not the file on disk).
   struct Source {
     core::io::ProgramFile program;
-    QString displayName;   // "untitled.txt" or the file's name
-    QString filePath;      // empty when untitled
+    QString displayName;                // "untitled.txt" or the file's name
+    QString filePath;                   // empty when untitled
     core::machine::MachineSetup setup;  // the job's tools, as a run uses them
     core::gcode::Dialect dialect = core::gcode::Dialect::Fanuc;
-    core::UnitFormat units;  // the drawing's dimensions (View ▸ Units shown)
+    core::UnitFormat units;                          // the drawing's dimensions (View ▸ Units shown)
     std::optional<core::design::PartDesign> design;  // the Part Designer's, when the program came from it
   };
 
   ReportController(QWidget* window, std::function<Source()> source);
 
-  void printCode();      // printer dialog, the program sheet
-  void printCodeNow();   // the default printer, no dialog
-  void printDrawing();   // printer dialog, the drawing sheet (landscape)
-  void printPreview();   // both sheets
+  void printCode();                          // printer dialog, the program sheet
+  void printCodeNow();                       // the default printer, no dialog
+  void printDrawing();                       // printer dialog, the drawing sheet (landscape)
+  void printPreview();                       // both sheets
   bool exportPdf(const QString& path = {});  // both sheets; asks for a path when empty
 
  signals:

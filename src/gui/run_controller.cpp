@@ -26,18 +26,25 @@ namespace machine = core::machine;
 namespace {
 constexpr double kEps = 1e-9;
 constexpr int kFrameIntervalMs = 15;
-constexpr double kMaxFrameSeconds = 0.1;   // a stalled frame never jumps further than this
+constexpr double kMaxFrameSeconds = 0.1;  // a stalled frame never jumps further than this
 }  // namespace
 
 QString runStateName(RunState s) {
   switch (s) {
-    case RunState::Idle: return QStringLiteral("Idle");
-    case RunState::Preparing: return QStringLiteral("Preparing");
-    case RunState::Running: return QStringLiteral("Running");
-    case RunState::Stepping: return QStringLiteral("Stepping");
-    case RunState::Paused: return QStringLiteral("Paused");
-    case RunState::Finished: return QStringLiteral("Finished");
-    case RunState::Alarm: return QStringLiteral("Alarm");
+    case RunState::Idle:
+      return QStringLiteral("Idle");
+    case RunState::Preparing:
+      return QStringLiteral("Preparing");
+    case RunState::Running:
+      return QStringLiteral("Running");
+    case RunState::Stepping:
+      return QStringLiteral("Stepping");
+    case RunState::Paused:
+      return QStringLiteral("Paused");
+    case RunState::Finished:
+      return QStringLiteral("Finished");
+    case RunState::Alarm:
+      return QStringLiteral("Alarm");
   }
   return {};
 }
@@ -65,9 +72,8 @@ bool runControllerSameProgram(const core::io::ProgramFile& a, const core::io::Pr
   const core::io::JobHeader& x = a.header;
   const core::io::JobHeader& y = b.header;
   return a.gcodeFirstLine == b.gcodeFirstLine && a.plainGcode == b.plainGcode && x.diameter == y.diameter &&
-         x.diameterUnit == y.diameterUnit && x.length == y.length && x.lengthUnit == y.lengthUnit &&
-         x.bore == y.bore && x.calculatorInput == y.calculatorInput && x.toolsBeyondCentre == y.toolsBeyondCentre &&
-         a.gcode == b.gcode;
+         x.diameterUnit == y.diameterUnit && x.length == y.length && x.lengthUnit == y.lengthUnit && x.bore == y.bore &&
+         x.calculatorInput == y.calculatorInput && x.toolsBeyondCentre == y.toolsBeyondCentre && a.gcode == b.gcode;
 }
 }  // namespace
 
@@ -163,7 +169,7 @@ render::StockShape RunController::stockShape() const {
   if (!cut_) {
     return render::stockShapeFromBlank(file_.header.diameterMm(), file_.header.lengthMm(), file_.header.boreMm());
   }
-  if (busy_) return stockShape_;   // the worker owns the simulator: show the last shape
+  if (busy_) return stockShape_;  // the worker owns the simulator: show the last shape
   const double volume = cut_->stock().volume();
   if (volume != stockShapeVolume_) {
     stockShape_ = render::stockShapeFromStock(cut_->stock());
@@ -211,7 +217,7 @@ void RunController::runToLine(int fileLine) {
 void RunController::pause() {
   if (state_ != RunState::Running && state_ != RunState::Stepping) return;
   if (busy_) {
-    pending_ = Pending::None;   // the background cut cannot be interrupted; it pauses when done
+    pending_ = Pending::None;  // the background cut cannot be interrupted; it pauses when done
     targetIsEnd_ = false;
     return;
   }
@@ -297,7 +303,7 @@ void RunController::prepareAndThen(Pending what) {
   auto setup = setup_;
   auto options = options_;
   const std::string folder = folder_.toStdString();
-  options.optionalStop = true;   // record every M01; the switch decides while playing
+  options.optionalStop = true;  // record every M01; the switch decides while playing
   prepareWatcher_.setFuture(QtConcurrent::run([file, setup, options, folder]() {
     auto result = std::make_shared<Prepared>();
     core::job::JobInput input;
@@ -319,8 +325,8 @@ void RunController::prepareAndThen(Pending what) {
     if (std::any_of(setup.tools.guessed.begin(), setup.tools.guessed.end(), [](bool g) { return g; })) {
       core::cut::CutOptions cutOptions;
       cutOptions.checkpointBudgetBytes = 0;  // only its verdict is kept
-      core::cut::GuessFit fit = core::cut::fitGuessedTools(*result->timeline, file.header, setup,
-                                                           core::io::shippedToolLibrary(), cutOptions);
+      core::cut::GuessFit fit =
+          core::cut::fitGuessedTools(*result->timeline, file.header, setup, core::io::shippedToolLibrary(), cutOptions);
       if (!fit.notes.empty()) result->fitted = std::move(fit.setup);
       result->guessNotes = std::move(fit.notes);
     }
@@ -383,7 +389,7 @@ void RunController::startPending(Pending what) {
 
 void RunController::startRun(bool stepOnly) {
   machine::StopRequest request;
-  request.command = !stepOnly                          ? machine::RunCommand::Go
+  request.command = !stepOnly                        ? machine::RunCommand::Go
                     : stepKind_ == Pending::StepOver ? machine::RunCommand::StepOver
                     : stepKind_ == Pending::StepOut  ? machine::RunCommand::StepOut
                                                      : machine::RunCommand::Step;
@@ -426,7 +432,8 @@ void RunController::advanceTo(double t) {
   cut_->advanceTo(t);
   time_ = cut_->time();
   const auto& snaps = timeline_->snapshots;
-  while (snapshotIndex_ + 1 <= targetSnapshot_ && snaps[static_cast<std::size_t>(snapshotIndex_ + 1)].time <= time_ + kEps &&
+  while (snapshotIndex_ + 1 <= targetSnapshot_ &&
+         snaps[static_cast<std::size_t>(snapshotIndex_ + 1)].time <= time_ + kEps &&
          !(cut_->alarm() && snaps[static_cast<std::size_t>(snapshotIndex_ + 1)].line >= cut_->alarm()->range.line))
     ++snapshotIndex_;
   updateLine();
@@ -477,7 +484,7 @@ void RunController::onBackgroundDone() {
   cutting_ = false;
   backgroundWatcher_.setFuture(QFuture<void>());
   setBusy(false);
-  if (state_ == RunState::Paused && !cut_->alarm()) {   // a step back's re-cut
+  if (state_ == RunState::Paused && !cut_->alarm()) {  // a step back's re-cut
     time_ = cut_->time();
     updateLine();
     emitStatus();
@@ -500,8 +507,9 @@ void RunController::updateLine() {
     // block before it, the breakpoint's dot on the one that runs next).
     const bool moving = state_ == RunState::Running || state_ == RunState::Stepping;
     int k = moving ? snapshotIndex_ + 1 : snapshotIndex_;
-    if (state_ == RunState::Paused && snapshotIndex_ >= 0 && time_ > snaps[static_cast<std::size_t>(snapshotIndex_)].time + kEps)
-      k = snapshotIndex_ + 1;   // paused in the middle of a block: that block is running
+    if (state_ == RunState::Paused && snapshotIndex_ >= 0 &&
+        time_ > snaps[static_cast<std::size_t>(snapshotIndex_)].time + kEps)
+      k = snapshotIndex_ + 1;  // paused in the middle of a block: that block is running
     if (k >= count) k = count - 1;
     markedSnapshot_ = k;
     if (k >= 0) {

@@ -48,7 +48,6 @@
 
 namespace klueng::gui {
 
-
 enum class RunState {
   Idle,       // nothing run yet, or stopped (reset)
   Preparing,  // checking + interpreting in the background
@@ -61,16 +60,16 @@ enum class RunState {
 
 // Everything the status bar and the lamps show (SPEC 12).
 struct RunStatus {
-  core::Vec2 position = core::Vec2::Zero();   // controlled point, work coords (z, radius)
-  double feedMmPerMin = 0.0;                  // actual feed of the active move (0 when idle)
-  double programmedFeed = 0.0;                // F as programmed
+  core::Vec2 position = core::Vec2::Zero();  // controlled point, work coords (z, radius)
+  double feedMmPerMin = 0.0;                 // actual feed of the active move (0 when idle)
+  double programmedFeed = 0.0;               // F as programmed
   core::machine::FeedMode feedMode = core::machine::FeedMode::PerRev;
   double rpm = 0.0;
-  core::machine::MachineState machine;        // tool, offset, lamps ...
-  double time = 0.0;                          // machine seconds since the start
+  core::machine::MachineState machine;  // tool, offset, lamps ...
+  double time = 0.0;                    // machine seconds since the start
   double cycleTime = 0.0;
   std::vector<core::machine::ToolTime> toolTimes;  // the cycle time per tool
-  int line = 0;                               // file line of the block (0 = none)
+  int line = 0;                                    // file line of the block (0 = none)
 };
 
 class RunController : public QObject {
@@ -125,9 +124,9 @@ class RunController : public QObject {
 
  public slots:
   void go();
-  void step();       // one block (Step Into: also into a subprogram or macro)
-  void stepOver();   // one block of this call level: a call runs whole
-  void stepOut();    // on to the block after the call of this level
+  void step();      // one block (Step Into: also into a subprogram or macro)
+  void stepOver();  // one block of this call level: a call runs whole
+  void stepOut();   // on to the block after the call of this level
   void pause();
   void stop();
   void stepBack();
@@ -139,7 +138,7 @@ class RunController : public QObject {
   void stateChanged(klueng::gui::RunState state);
   void checkFailed(const QList<klueng::core::Diagnostic>& diagnostics);
   void alarmRaised(const klueng::core::Diagnostic& alarm);
-  void executingLineChanged(int fileLine);          // a line of the program in the editor (0 = elsewhere)
+  void executingLineChanged(int fileLine);            // a line of the program in the editor (0 = elsewhere)
   void executingFileLineChanged(int file, int line);  // any file of the program (programFiles())
   void statusChanged(const klueng::gui::RunStatus& status);
   void frameAdvanced();
@@ -159,7 +158,7 @@ class RunController : public QObject {
   enum class Pending { None, Go, Step, StepOver, StepOut, RunToLine };
   struct Prepared {
     std::shared_ptr<const core::machine::Timeline> timeline;  // the job's own (it keeps the job alive)
-    std::vector<std::string> files;        // Program::files
+    std::vector<std::string> files;                           // Program::files
     QList<core::Diagnostic> errors;
     // Guessed tools that touched, replaced by others of their kind that fit (issue 26).
     std::optional<core::machine::MachineSetup> fitted;
@@ -184,12 +183,12 @@ class RunController : public QObject {
 
   core::io::ProgramFile file_;
   QString displayName_;
-  QString folder_;                   // subprogram files come from here
-  std::vector<std::string> files_;   // Program::files of the prepared run
+  QString folder_;                  // subprogram files come from here
+  std::vector<std::string> files_;  // Program::files of the prepared run
   Pending stepKind_ = Pending::Step;
   core::machine::MachineSetup setup_;
-  core::machine::MachineSetup cutSetup_;          // setup_ with the replaced guesses: what the cut uses
-  std::vector<core::Diagnostic> guessNotes_;      // which guesses were replaced (I413/I414)
+  core::machine::MachineSetup cutSetup_;      // setup_ with the replaced guesses: what the cut uses
+  std::vector<core::Diagnostic> guessNotes_;  // which guesses were replaced (I413/I414)
   core::machine::RunOptions options_;
   QSet<int> breakpoints_;
   double speed_ = 1.0;
@@ -203,17 +202,17 @@ class RunController : public QObject {
   mutable double stockShapeVolume_ = -1.0;
   RunState state_ = RunState::Idle;
   bool busy_ = false;
-  bool preparing_ = false;       // prepareWatcher_ has a job not handled yet
-  bool cutting_ = false;         // backgroundWatcher_ has a job not handled yet
+  bool preparing_ = false;  // prepareWatcher_ has a job not handled yet
+  bool cutting_ = false;    // backgroundWatcher_ has a job not handled yet
   Pending pending_ = Pending::None;
   int runToLine_ = 0;
   double time_ = 0.0;
-  double targetTime_ = 0.0;     // where the current Go/Step pauses
-  int targetSnapshot_ = -1;     // snapshots done when targetTime_ is reached
+  double targetTime_ = 0.0;  // where the current Go/Step pauses
+  int targetSnapshot_ = -1;  // snapshots done when targetTime_ is reached
   bool targetIsEnd_ = false;
   bool targetBeforeNext_ = false;  // the target stops before a block (breakpoint, run to line)
-  int snapshotIndex_ = -1;      // last completed block's snapshot
-  int markedSnapshot_ = -1;     // the arrow's block (updateLine)
+  int snapshotIndex_ = -1;         // last completed block's snapshot
+  int markedSnapshot_ = -1;        // the arrow's block (updateLine)
   int currentLine_ = 0;
   int currentFile_ = 0;
   qint64 frames_ = 0;

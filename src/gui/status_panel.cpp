@@ -43,7 +43,8 @@ StatusFields::StatusFields(QWidget* parent) : QWidget(parent) {
   // jump while the tool moves on a lathe's travel (a larger number widens its
   // field; at 1366 px the Thai bar has no room for four fields of "-9999.999").
   const int wide = values_[0]->fontMetrics().horizontalAdvance(QStringLiteral("-999.999")) + 8;
-  for (Field f : {Field::ToolX, Field::ToolZ, Field::OffsetX, Field::OffsetZ}) values_[static_cast<int>(f)]->setMinimumWidth(wide);
+  for (Field f : {Field::ToolX, Field::ToolZ, Field::OffsetX, Field::OffsetZ})
+    values_[static_cast<int>(f)]->setMinimumWidth(wide);
   retranslate();
   setStatus(RunStatus{});
 }
@@ -56,7 +57,6 @@ QString StatusFields::formatShortDate(const QDate& date, bool thai) {
 QString StatusFields::formatDate(const QDate& date, bool thai) {
   return render::reportDate(date, thai ? render::ReportLanguage::Thai : render::ReportLanguage::English);
 }
-
 
 QString StatusFields::formatClock(double seconds) {
   const double tenths = std::round(std::max(0.0, seconds) * 10.0);
@@ -79,15 +79,16 @@ void StatusFields::setStatus(const RunStatus& s) {
   const bool perRev = s.feedMode == core::machine::FeedMode::PerRev;
   const QString feed = QString::fromStdString(u.feed(s.programmedFeed, perRev));
   set(Field::Feed, s.programmedFeed <= 0 ? QStringLiteral("-")
-                   : u.inch()           ? (perRev ? tr("%1 in/rev").arg(feed) : tr("%1 in/min").arg(feed))
-                                        : (perRev ? tr("%1 mm/rev").arg(feed) : tr("%1 mm/min").arg(feed)));
+                   : u.inch()            ? (perRev ? tr("%1 in/rev").arg(feed) : tr("%1 in/min").arg(feed))
+                                         : (perRev ? tr("%1 mm/rev").arg(feed) : tr("%1 mm/min").arg(feed)));
   set(Field::Spindle, tr("%1 rpm").arg(number(s.rpm, 0)));
   set(Field::OffsetX, length(m.offsetX));
   set(Field::OffsetZ, length(m.offsetZ));
   set(Field::NoseRadius, length(m.noseRadius));
   set(Field::Tip, QString::number(m.tip));
-  set(Field::Tool, m.tool > 0 ? QStringLiteral("T%1%2").arg(m.tool, 2, 10, QLatin1Char('0')).arg(m.offset, 2, 10, QLatin1Char('0'))
-                              : QStringLiteral("-"));
+  set(Field::Tool,
+      m.tool > 0 ? QStringLiteral("T%1%2").arg(m.tool, 2, 10, QLatin1Char('0')).arg(m.offset, 2, 10, QLatin1Char('0'))
+                 : QStringLiteral("-"));
   set(Field::Time, s.cycleTime > 0.0 ? QStringLiteral("%1 / %2").arg(formatClock(s.time), formatClock(s.cycleTime))
                                      : QStringLiteral("-"));
   // The cycle time per tool on hover.
@@ -107,18 +108,22 @@ void StatusFields::setUnits(const core::UnitFormat& units) {
 }
 
 void StatusFields::retranslate() {
-  const QString names[kCount] = {tr("Tool X"),   tr("Tool Z"), tr("Feed"), tr("Spindle"), tr("X offset"),
-                                 tr("Z offset"), tr("Nose R"), tr("Tip"),  tr("Tool"),    tr("Time"), tr("Date")};
+  const QString names[kCount] = {tr("Tool X"), tr("Tool Z"), tr("Feed"), tr("Spindle"), tr("X offset"), tr("Z offset"),
+                                 tr("Nose R"), tr("Tip"),    tr("Tool"), tr("Time"),    tr("Date")};
   const bool in = units_.inch();
-  const QString tips[kCount] = {in ? tr("Tool position X (diameter, inches)") : tr("Tool position X (diameter, mm)"),
-                                in ? tr("Tool position Z (inches)") : tr("Tool position Z (mm)"), tr("Feed rate as programmed"),
-                                tr("Spindle speed (rpm)"),
-                                in ? tr("X offset of the active tool offset (diameter, inches)")
-                                   : tr("X offset of the active tool offset (diameter, mm)"),
-                                in ? tr("Z offset of the active tool offset (inches)") : tr("Z offset of the active tool offset (mm)"),
-                                in ? tr("Nose radius of the active offset (inches)") : tr("Nose radius of the active offset (mm)"),
-                                tr("Imaginary tool tip number of the active offset"), tr("Tool number and offset number"),
-                                tr("Machine time: elapsed / cycle time of the whole program (min:s)"), tr("Today's date")};
+  const QString tips[kCount] = {
+      in ? tr("Tool position X (diameter, inches)") : tr("Tool position X (diameter, mm)"),
+      in ? tr("Tool position Z (inches)") : tr("Tool position Z (mm)"),
+      tr("Feed rate as programmed"),
+      tr("Spindle speed (rpm)"),
+      in ? tr("X offset of the active tool offset (diameter, inches)")
+         : tr("X offset of the active tool offset (diameter, mm)"),
+      in ? tr("Z offset of the active tool offset (inches)") : tr("Z offset of the active tool offset (mm)"),
+      in ? tr("Nose radius of the active offset (inches)") : tr("Nose radius of the active offset (mm)"),
+      tr("Imaginary tool tip number of the active offset"),
+      tr("Tool number and offset number"),
+      tr("Machine time: elapsed / cycle time of the whole program (min:s)"),
+      tr("Today's date")};
   for (int i = 0; i < kCount; ++i) {
     names_[i]->setText(names[i]);
     names_[i]->setToolTip(tips[i]);
@@ -134,9 +139,7 @@ void StatusFields::changeEvent(QEvent* event) {
 
 // ---------------------------------------------------------------- StatusLamp
 
-StatusLamp::StatusLamp(QWidget* parent) : QWidget(parent) {
-  setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);
-}
+StatusLamp::StatusLamp(QWidget* parent) : QWidget(parent) { setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed); }
 
 void StatusLamp::setOn(bool on) {
   if (on_ == on) return;
@@ -203,7 +206,8 @@ void StatusLamps::setStatus(const RunStatus& s) {
     retranslate();
   }
   lamp(Lamp::Spindle)->setOn(m.spindle != core::machine::SpindleDir::Stopped);
-  lamp(Lamp::Spindle)->setColor(m.spindle == core::machine::SpindleDir::Ccw ? QColor(240, 140, 0) : QColor(40, 200, 60));
+  lamp(Lamp::Spindle)
+      ->setColor(m.spindle == core::machine::SpindleDir::Ccw ? QColor(240, 140, 0) : QColor(40, 200, 60));
   lamp(Lamp::OptionalStop)->setOn(m.optionalStopSwitch);
   lamp(Lamp::Coolant)->setOn(m.coolant);
   lamp(Lamp::PositionCheck)->setOn(m.positionCheck);
@@ -214,10 +218,12 @@ void StatusLamps::setOptionalStopSwitch(bool on) { lamp(Lamp::OptionalStop)->set
 
 void StatusLamps::retranslate() {
   using core::machine::SpindleDir;
-  lamp(Lamp::Spindle)->setText(spindle_ == SpindleDir::Cw    ? tr("Spindle CW")
-                               : spindle_ == SpindleDir::Ccw ? tr("Spindle CCW")
-                                                             : tr("Spindle stop"));
-  lamp(Lamp::Spindle)->setToolTip(tr("Spindle direction: green clockwise (M03), amber counter-clockwise (M04), grey stopped (M05)"));
+  lamp(Lamp::Spindle)
+      ->setText(spindle_ == SpindleDir::Cw    ? tr("Spindle CW")
+                : spindle_ == SpindleDir::Ccw ? tr("Spindle CCW")
+                                              : tr("Spindle stop"));
+  lamp(Lamp::Spindle)
+      ->setToolTip(tr("Spindle direction: green clockwise (M03), amber counter-clockwise (M04), grey stopped (M05)"));
   lamp(Lamp::OptionalStop)->setText(tr("Optional stop"));
   lamp(Lamp::OptionalStop)->setToolTip(tr("Optional Stop switch: M01 stops the program when lit"));
   lamp(Lamp::Coolant)->setText(tr("Coolant"));

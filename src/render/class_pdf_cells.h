@@ -24,8 +24,9 @@ class ClassPdfCells {
       for (const core::cut::InspectedDimension& d : r.inspection) in += d.in() ? 1 : 0;
       // Against a drawing only: the dimensions in tolerance where the reference's leftover would be.
       cells_.push_back(r.compared ? core::gcode::formatFixed(r.deviation.leftover, 3)
-                       : reference || r.inspection.empty() ? std::string()
-                                                           : std::to_string(in) + "/" + std::to_string(r.inspection.size()));
+                       : reference || r.inspection.empty()
+                           ? std::string()
+                           : std::to_string(in) + "/" + std::to_string(r.inspection.size()));
       cells_.push_back(r.compared ? core::gcode::formatFixed(r.deviation.gouge, 3) : "");
       paths_.push_back(r.path);
       dimensions_ = static_cast<int>(r.inspection.size());

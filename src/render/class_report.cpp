@@ -33,12 +33,14 @@ void paintSummary(QPainter& p, QPdfWriter& writer, const KluengClassPdf& in) {
   const ReportLanguage lang = thai ? ReportLanguage::Thai : ReportLanguage::English;
   const double mm = writer.logicalDpiX() / 25.4;
   const QRectF page(0, 0, writer.width(), writer.height());
-  QStringList header = thai ? QStringList{QStringLiteral("โปรแกรม"), QStringLiteral("ผล"), QStringLiteral("ข้อผิดพลาด"),
-                                                QStringLiteral("สัญญาณเตือน"), QStringLiteral("เวลา (วินาที)"),
-                                                QStringLiteral("เนื้อเหลือ (มม.)"), QStringLiteral("กินเนื้อเกิน (มม.)")}
-                                  : QStringList{QStringLiteral("Program"), QStringLiteral("Result"), QStringLiteral("Errors"),
-                                                QStringLiteral("Alarm"), QStringLiteral("Cycle time (s)"),
-                                                QStringLiteral("Leftover (mm)"), QStringLiteral("Gouge (mm)")};
+  QStringList header =
+      thai
+          ? QStringList{QStringLiteral("โปรแกรม"),       QStringLiteral("ผล"),          QStringLiteral("ข้อผิดพลาด"),
+                        QStringLiteral("สัญญาณเตือน"),     QStringLiteral("เวลา (วินาที)"), QStringLiteral("เนื้อเหลือ (มม.)"),
+                        QStringLiteral("กินเนื้อเกิน (มม.)")}
+          : QStringList{QStringLiteral("Program"),   QStringLiteral("Result"),         QStringLiteral("Errors"),
+                        QStringLiteral("Alarm"),     QStringLiteral("Cycle time (s)"), QStringLiteral("Leftover (mm)"),
+                        QStringLiteral("Gouge (mm)")};
   if (in.drawing && !in.hasReference) {  // the drawing's dimensions in tolerance, no leftover or gouge
     header[5] = thai ? QStringLiteral("ขนาดในพิกัด") : QStringLiteral("In tolerance");
     header[6] = QString();
@@ -93,9 +95,11 @@ void paintSummary(QPainter& p, QPdfWriter& writer, const KluengClassPdf& in) {
       for (int c = 0; c < 7; ++c) {
         const double w = widths[c] * page.width();
         p.setFont(head ? boldFont : textFont);
-        p.setPen(!head && c == 1 ? (texts[c] == QStringLiteral("pass") ? QColor(0, 120, 0) : QColor(190, 0, 0)) : QColor(Qt::black));
+        p.setPen(!head && c == 1 ? (texts[c] == QStringLiteral("pass") ? QColor(0, 120, 0) : QColor(190, 0, 0))
+                                 : QColor(Qt::black));
         QString text = texts[c];
-        if (!head && c == 1 && thai) text = text == QStringLiteral("pass") ? QStringLiteral("ผ่าน") : QStringLiteral("ไม่ผ่าน");
+        if (!head && c == 1 && thai)
+          text = text == QStringLiteral("pass") ? QStringLiteral("ผ่าน") : QStringLiteral("ไม่ผ่าน");
         p.drawText(QRectF(x + 1 * mm, y, w - 2 * mm, rowHeight), Qt::AlignLeft | Qt::AlignVCenter,
                    p.fontMetrics().elidedText(text, Qt::ElideRight, static_cast<int>(w - 2 * mm)));
         x += w;
@@ -119,20 +123,20 @@ void paintInspection(QPainter& p, QPdfWriter& writer, const KluengClassPdf& in) 
   const bool thai = in.thai != 0;
   const double mm = writer.logicalDpiX() / 25.4;
   const QRectF page(0, 0, writer.width(), writer.height());
-  const QStringList header = thai ? QStringList{QStringLiteral("ขนาด"), QStringLiteral("พิกัดความเผื่อ"),
-                                                QStringLiteral("ขอบเขต (มม.)"), QStringLiteral("วัดได้ (มม.)"),
-                                                QStringLiteral("ผล")}
-                                  : QStringList{QStringLiteral("Dimension"), QStringLiteral("Tolerance"),
-                                                QStringLiteral("Limits (mm)"), QStringLiteral("Measured (mm)"),
-                                                QStringLiteral("Result")};
+  const QStringList header =
+      thai ? QStringList{QStringLiteral("ขนาด"), QStringLiteral("พิกัดความเผื่อ"), QStringLiteral("ขอบเขต (มม.)"),
+                         QStringLiteral("วัดได้ (มม.)"), QStringLiteral("ผล")}
+           : QStringList{QStringLiteral("Dimension"), QStringLiteral("Tolerance"), QStringLiteral("Limits (mm)"),
+                         QStringLiteral("Measured (mm)"), QStringLiteral("Result")};
   const double widths[5] = {0.24, 0.22, 0.20, 0.16, 0.18};
   const double rowHeight = 6.5 * mm, top = 24 * mm, bottom = page.height() - 5 * mm;
   const QFont titleFont(QString::fromLatin1(kReportFontFamily), 16, QFont::Bold);
   const QFont textFont(QString::fromLatin1(kReportFontFamily), 9);
   const QFont boldFont(QString::fromLatin1(kReportFontFamily), 9, QFont::Bold);
   const auto dimCell = [&](int row, int dim, int column) {
-    const std::size_t at = (static_cast<std::size_t>(row) * static_cast<std::size_t>(in.dimensions) +
-                            static_cast<std::size_t>(dim)) * 5 + static_cast<std::size_t>(column);
+    const std::size_t at =
+        (static_cast<std::size_t>(row) * static_cast<std::size_t>(in.dimensions) + static_cast<std::size_t>(dim)) * 5 +
+        static_cast<std::size_t>(column);
     return QString::fromUtf8(in.dimensionCells[at]);
   };
   double y = 0;
@@ -156,9 +160,11 @@ void paintInspection(QPainter& p, QPdfWriter& writer, const KluengClassPdf& in) 
                thai ? QStringLiteral("ตรวจวัดเทียบกับแบบงาน %1").arg(QString::fromUtf8(in.drawing))
                     : QStringLiteral("Inspection against %1").arg(QString::fromUtf8(in.drawing)));
     p.setFont(textFont);
-    p.drawText(QRectF(0, 11 * mm, page.width(), 6 * mm), Qt::AlignLeft | Qt::AlignVCenter,
-               thai ? QStringLiteral("วัดละเอียด 0.001 มม. ค่าที่เท่ากับขอบเขตพอดีถือว่าอยู่ในพิกัด ขนาดที่ไม่มีบนชิ้นงานถือว่าไม่ผ่าน")
-                    : QStringLiteral("Measured to 0.001 mm; a value exactly at a limit is in; a dimension not on the part is out."));
+    p.drawText(
+        QRectF(0, 11 * mm, page.width(), 6 * mm), Qt::AlignLeft | Qt::AlignVCenter,
+        thai ? QStringLiteral("วัดละเอียด 0.001 มม. ค่าที่เท่ากับขอบเขตพอดีถือว่าอยู่ในพิกัด ขนาดที่ไม่มีบนชิ้นงานถือว่าไม่ผ่าน")
+             : QStringLiteral(
+                   "Measured to 0.001 mm; a value exactly at a limit is in; a dimension not on the part is out."));
     y = top;
     drawRow(header, boldFont, Qt::black);
     p.setPen(QPen(Qt::black, 0.3 * mm));
@@ -170,12 +176,15 @@ void paintInspection(QPainter& p, QPdfWriter& writer, const KluengClassPdf& in) 
     if (y + block > bottom && y > top + rowHeight) newPage();
     const bool pass = cell(in, r, 1) == QStringLiteral("pass");
     int inCount = 0;
-    for (int d = 0; d < in.dimensions; ++d) inCount += in.verdicts[static_cast<std::size_t>(r * in.dimensions + d)] == 0;
+    for (int d = 0; d < in.dimensions; ++d)
+      inCount += in.verdicts[static_cast<std::size_t>(r * in.dimensions + d)] == 0;
     p.fillRect(QRectF(0, y, page.width(), rowHeight), QColor(230, 230, 230));
-    const QString verdict = thai ? (pass ? QStringLiteral("ผ่าน") : QStringLiteral("ไม่ผ่าน")) : (pass ? QStringLiteral("pass") : QStringLiteral("fail"));
+    const QString verdict = thai ? (pass ? QStringLiteral("ผ่าน") : QStringLiteral("ไม่ผ่าน"))
+                                 : (pass ? QStringLiteral("pass") : QStringLiteral("fail"));
     const QString count = thai ? QStringLiteral("อยู่ในพิกัด %1 จาก %2").arg(inCount).arg(in.dimensions)
                                : QStringLiteral("%1 of %2 in").arg(inCount).arg(in.dimensions);
-    drawRow({cell(in, r, 0), count, QString(), QString(), verdict}, boldFont, pass ? QColor(0, 120, 0) : QColor(190, 0, 0));
+    drawRow({cell(in, r, 0), count, QString(), QString(), verdict}, boldFont,
+            pass ? QColor(0, 120, 0) : QColor(190, 0, 0));
     for (int d = 0; d < in.dimensions; ++d) {
       if (y + rowHeight > bottom) newPage();
       const int v = in.verdicts[static_cast<std::size_t>(r * in.dimensions + d)];
@@ -194,7 +203,8 @@ extern "C" __attribute__((visibility("default"))) int klueng_class_pdf(const Klu
                                                                        std::size_t errorSize) {
   using namespace klueng;
   auto fail = [&](const QString& why) {
-    if (error && errorSize > 0) std::strncpy(error, why.toUtf8().constData(), errorSize - 1), error[errorSize - 1] = '\0';
+    if (error && errorSize > 0)
+      std::strncpy(error, why.toUtf8().constData(), errorSize - 1), error[errorSize - 1] = '\0';
     return 0;
   };
   if (!in || !bytes || !size) return fail(QStringLiteral("nothing to write to"));

@@ -69,8 +69,8 @@ bool isMachiningTrace(const PartFeature& f, const core::cut::PartFeatures& part)
       return g.kind == f.kind && g.zLeft == f.zLeft && g.zRight == f.zRight;
     });
     for (auto g = at; g != part.inside.end(); ++g) {
-      const bool narrowing = (g->kind == FeatureKind::Taper || g->kind == FeatureKind::Chamfer) &&
-                             g->diameterLeft < g->diameterRight;
+      const bool narrowing =
+          (g->kind == FeatureKind::Taper || g->kind == FeatureKind::Chamfer) && g->diameterLeft < g->diameterRight;
       const bool step = g->kind == FeatureKind::Cylinder && g->length() < kSliver;
       if (!narrowing && !step) break;
       if (std::min(g->diameterLeft, g->diameterRight) <= 2.0 * core::cut::kPipRadius + 0.1 ||
@@ -273,11 +273,12 @@ std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part,
   const double gap = 0.8 * mm;
   std::vector<QRectF> taken;
   const auto isFree = [&](const QRectF& r) {
-    return std::none_of(taken.begin(), taken.end(), [&](const QRectF& t) { return t.adjusted(-gap, 0, gap, 0).intersects(r); });
+    return std::none_of(taken.begin(), taken.end(),
+                        [&](const QRectF& t) { return t.adjusted(-gap, 0, gap, 0).intersects(r); });
   };
   for (std::size_t k = 0; k < chain.size(); ++k) {
     const double left = chain[k].lines[1].x1(), right = chain[k].lines[0].x1();  // zb is left of za
-    if (chain[k].textRect.width() + 2.0 * gap > right - left) continue;  // placed in the second pass
+    if (chain[k].textRect.width() + 2.0 * gap > right - left) continue;          // placed in the second pass
     taken.push_back(chain[k].textRect);
   }
   for (std::size_t k = 0; k < chain.size(); ++k) {
@@ -398,9 +399,9 @@ void paintDimensions(QPainter& painter, const std::vector<DimensionItem>& items,
       painter.save();
       painter.translate(d.textRect.center());
       painter.rotate(-90);
-      painter.drawText(QRectF(-d.textRect.height() / 2.0, -d.textRect.width() / 2.0, d.textRect.height(),
-                              d.textRect.width()),
-                       Qt::AlignCenter, d.text);
+      painter.drawText(
+          QRectF(-d.textRect.height() / 2.0, -d.textRect.width() / 2.0, d.textRect.height(), d.textRect.width()),
+          Qt::AlignCenter, d.text);
       painter.restore();
     } else {
       painter.drawText(d.textRect, Qt::AlignCenter, d.text);
@@ -418,7 +419,8 @@ DesignMarks designMarks(const core::design::PartDesign& design) {
   std::vector<Finish> finishes;
   for (const auto side : {core::cut::FeatureSide::Outside, core::cut::FeatureSide::Inside}) {
     double z = 0.0;
-    for (const core::design::OutsideStep& s : side == core::cut::FeatureSide::Outside ? design.outside : design.inside) {
+    for (const core::design::OutsideStep& s :
+         side == core::cut::FeatureSide::Outside ? design.outside : design.inside) {
       if (s.kind == core::design::StepKind::Cylinder && s.roughness > 0.0)
         finishes.push_back({side, s.diameter, z, z - s.length, s.roughness});
       z -= s.length;

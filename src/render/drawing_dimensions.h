@@ -21,9 +21,9 @@ namespace klueng::render {
 
 struct DimensionItem {
   QString text;
-  QRectF textRect;       // where the text goes (before rotation: its box on the page)
-  bool vertical = false; // text turned 90° (read from the right), as diameters are written
-  std::vector<QLineF> lines;                  // dimension, extension and leader lines
+  QRectF textRect;                                  // where the text goes (before rotation: its box on the page)
+  bool vertical = false;                            // text turned 90° (read from the right), as diameters are written
+  std::vector<QLineF> lines;                        // dimension, extension and leader lines
   std::vector<std::pair<QPointF, QPointF>> arrows;  // tip, and a point the arrow points away from
 };
 
@@ -43,14 +43,14 @@ DesignMarks designMarks(const core::design::PartDesign& design);
 
 struct DimensionFrame {
   std::function<QPointF(double z, double radius)> toPage;  // part mm -> page
-  double mm = 1.0;          // device pixels per paper millimetre
-  QFont font;               // dimension text
-  const QPaintDevice* device = nullptr;  // for measuring text
+  double mm = 1.0;                                         // device pixels per paper millimetre
+  QFont font;                                              // dimension text
+  const QPaintDevice* device = nullptr;                    // for measuring text
   bool thai = false;
-  QRectF bounds;                 // everything stays inside (empty: anywhere)
-  std::vector<QLineF> partLines; // the part's drawn lines on the page: labels keep off them
+  QRectF bounds;                  // everything stays inside (empty: anywhere)
+  std::vector<QLineF> partLines;  // the part's drawn lines on the page: labels keep off them
   DesignMarks marks;
-  core::UnitFormat units;   // the dimensions' unit (the part stays in mm)
+  core::UnitFormat units;  // the dimensions' unit (the part stays in mm)
 };
 
 // A feature the drawing gives no callout: a thread's run-out, a drill's point,

@@ -11,12 +11,12 @@
 #include "klueng/core/job/job.h"
 
 struct KluengPrintPdf {
-  int thai;                                         // 1: Thai texts and dates
-  int programSheet;                                 // 1: the program sheet (portrait)
-  int drawingSheet;                                 // 1: the drawing sheet (landscape)
-  const char* fileName;                             // shown on the sheets
-  const klueng::core::job::Job* job;               // the program (stock resolved), its tools and its run
-  int inch;                                         // 1: the drawing's dimensions in inches (a G20 program)
+  int thai;                           // 1: Thai texts and dates
+  int programSheet;                   // 1: the program sheet (portrait)
+  int drawingSheet;                   // 1: the drawing sheet (landscape)
+  const char* fileName;               // shown on the sheets
+  const klueng::core::job::Job* job;  // the program (stock resolved), its tools and its run
+  int inch;                           // 1: the drawing's dimensions in inches (a G20 program)
   // The part design the program was made from (print --design): its tolerances
   // and roughness marks go on the drawing; nullptr: none.
   const klueng::core::design::PartDesign* design;

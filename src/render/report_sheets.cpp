@@ -33,19 +33,38 @@ struct Texts {
 };
 
 const Texts& texts(ReportLanguage lang) {
-  static const Texts english{
-      QStringLiteral("CNC Program Sheet"), QStringLiteral("Page %1"), QStringLiteral("Project"),
-      QStringLiteral("Material"), QStringLiteral("Part"), QStringLiteral("Diameter (mm.)"),
-      QStringLiteral("Programmer"), QStringLiteral("Length (mm.)"), QStringLiteral("Part Drawing"),
-      QStringLiteral("Date"), QStringLiteral("Program"), QStringLiteral("Version"), QStringLiteral("Scale"),
-      QStringLiteral("Untitled"), QStringLiteral("Cycle time"), QStringLiteral("up to the alarm")};
-  static const Texts thaiTexts{
-      QStringLiteral("ชุดรหัสสั่งการทำงาน"), QStringLiteral("หน้าที่ %1"), QStringLiteral("ชื่องาน"),
-      QStringLiteral("วัสดุ"), QStringLiteral("ชิ้นงาน"), QStringLiteral("เส้นผ่าศก. (มม.)"),
-      QStringLiteral("ผู้เขียน"), QStringLiteral("ความยาว (มม.)"), QStringLiteral("เอกสารแสดงภาพชิ้นงาน"),
-      QStringLiteral("วันที่"), QStringLiteral("ไฟล์โปรแกรม"), QStringLiteral("รุ่นโปรแกรม"),
-      QStringLiteral("มาตราส่วน"), QStringLiteral("ไม่มีชื่อ"), QStringLiteral("เวลาทำงาน"),
-      QStringLiteral("ถึงจุดที่เกิดสัญญาณเตือน")};
+  static const Texts english{QStringLiteral("CNC Program Sheet"),
+                             QStringLiteral("Page %1"),
+                             QStringLiteral("Project"),
+                             QStringLiteral("Material"),
+                             QStringLiteral("Part"),
+                             QStringLiteral("Diameter (mm.)"),
+                             QStringLiteral("Programmer"),
+                             QStringLiteral("Length (mm.)"),
+                             QStringLiteral("Part Drawing"),
+                             QStringLiteral("Date"),
+                             QStringLiteral("Program"),
+                             QStringLiteral("Version"),
+                             QStringLiteral("Scale"),
+                             QStringLiteral("Untitled"),
+                             QStringLiteral("Cycle time"),
+                             QStringLiteral("up to the alarm")};
+  static const Texts thaiTexts{QStringLiteral("ชุดรหัสสั่งการทำงาน"),
+                               QStringLiteral("หน้าที่ %1"),
+                               QStringLiteral("ชื่องาน"),
+                               QStringLiteral("วัสดุ"),
+                               QStringLiteral("ชิ้นงาน"),
+                               QStringLiteral("เส้นผ่าศก. (มม.)"),
+                               QStringLiteral("ผู้เขียน"),
+                               QStringLiteral("ความยาว (มม.)"),
+                               QStringLiteral("เอกสารแสดงภาพชิ้นงาน"),
+                               QStringLiteral("วันที่"),
+                               QStringLiteral("ไฟล์โปรแกรม"),
+                               QStringLiteral("รุ่นโปรแกรม"),
+                               QStringLiteral("มาตราส่วน"),
+                               QStringLiteral("ไม่มีชื่อ"),
+                               QStringLiteral("เวลาทำงาน"),
+                               QStringLiteral("ถึงจุดที่เกิดสัญญาณเตือน")};
   return thai(lang) ? thaiTexts : english;
 }
 
@@ -80,7 +99,7 @@ QPen paperPen(const QPaintDevice& device, double mm, const QColor& colour = Qt::
 
 // One printed row of the listing: a file line, or the continuation of a long one.
 struct ListingRow {
-  int fileLine = 0;   // 0 for a continuation row
+  int fileLine = 0;  // 0 for a continuation row
   QString text;
 };
 
@@ -169,8 +188,8 @@ QString reportDate(const QDate& date, ReportLanguage lang, DateLength length) {
         .toString(date, isLong ? QStringLiteral("MMMM d, yyyy") : QStringLiteral("MMM d, yyyy"));
   // Thai dates count years in the Buddhist era (2569 = 2026), which Qt's
   // calendars do not have; the month names are the Thai locale's.
-  const QString month =
-      QLocale(QLocale::Thai, QLocale::Thailand).monthName(date.month(), isLong ? QLocale::LongFormat : QLocale::ShortFormat);
+  const QString month = QLocale(QLocale::Thai, QLocale::Thailand)
+                            .monthName(date.month(), isLong ? QLocale::LongFormat : QLocale::ShortFormat);
   return (isLong ? QStringLiteral("%1 %2 พ.ศ. %3") : QStringLiteral("%1 %2 %3"))
       .arg(date.day())
       .arg(month)
@@ -184,8 +203,8 @@ namespace {
 // One run of the program for a report: its cycle times into `times` (when
 // given), then its finished part, cut only when `cutPart` (the drawing).
 // The job's timeline and cut are computed here when nobody asked before: call on a worker thread.
-StockShape runForReport(const core::job::Job& job, ReportLanguage lang, QString* note, ReportData* times,
-                        bool cutPart, core::cut::PartFeatures* features = nullptr) {
+StockShape runForReport(const core::job::Job& job, ReportLanguage lang, QString* note, ReportData* times, bool cutPart,
+                        core::cut::PartFeatures* features = nullptr) {
   if (!job.file()) return StockShape{};
   const core::io::ProgramFile& file = *job.file();
   const StockShape blank = stockShapeFromBlank(file.header.diameterMm(), file.header.lengthMm(), file.header.boreMm());
@@ -254,7 +273,8 @@ QString cycleTimeText(const ReportData& data, ReportLanguage lang) {
   QString text = durationText(data.cycleTime, lang);
   QStringList parts;
   for (const core::machine::ToolTime& t : data.toolTimes)
-    if (t.tool > 0) parts << QStringLiteral("T%1 %2").arg(t.tool, 2, 10, QLatin1Char('0')).arg(durationText(t.seconds, lang));
+    if (t.tool > 0)
+      parts << QStringLiteral("T%1 %2").arg(t.tool, 2, 10, QLatin1Char('0')).arg(durationText(t.seconds, lang));
   if (!parts.isEmpty()) text += QStringLiteral(" (") + parts.join(QStringLiteral(", ")) + QLatin1Char(')');
   if (data.cycleTimeToAlarm) text += QStringLiteral(", ") + texts(lang).toAlarm;
   return text;
@@ -321,7 +341,8 @@ int paintProgramSheet(QPainter& painter, QPagedPaintDevice& device, const Report
     painter.setBrush(Qt::NoBrush);
     painter.drawRect(grid);
     const double half = grid.width() / 2;
-    painter.drawLine(QPointF(grid.left() + half, grid.top()), QPointF(grid.left() + half, grid.top() + 3 * fieldHeight));
+    painter.drawLine(QPointF(grid.left() + half, grid.top()),
+                     QPointF(grid.left() + half, grid.top() + 3 * fieldHeight));
     for (int r = 1; r < gridRows; ++r)
       painter.drawLine(QPointF(grid.left(), grid.top() + r * fieldHeight),
                        QPointF(grid.right(), grid.top() + r * fieldHeight));
@@ -356,7 +377,8 @@ int paintProgramSheet(QPainter& painter, QPagedPaintDevice& device, const Report
     const QRectF footer(page.left(), listBottom + 1 * mm, page.width(), footerHeight - 1 * mm);
     drawFitted(painter, QRectF(footer.left(), footer.top(), footer.width() * 0.6, footer.height()), fileName,
                reportFont(8), Qt::AlignLeft | Qt::AlignVCenter);
-    drawFitted(painter, QRectF(footer.left() + footer.width() * 0.6, footer.top(), footer.width() * 0.4, footer.height()),
+    drawFitted(painter,
+               QRectF(footer.left() + footer.width() * 0.6, footer.top(), footer.width() * 0.4, footer.height()),
                reportDate(data.date, lang), reportFont(8), Qt::AlignRight | Qt::AlignVCenter);
     painter.restore();
   }
@@ -475,7 +497,8 @@ void paintDrawingSheet(QPainter& painter, QPagedPaintDevice& device, const Repor
   drawFitted(painter, QRectF(l.frame.left() + 5 * mm, l.frame.top() + 3 * mm, l.frame.width() * 0.6, 12 * mm),
              t.drawingTitle, reportFont(16, true), Qt::AlignLeft | Qt::AlignVCenter);
   drawFitted(painter, QRectF(l.frame.right() - 65 * mm, l.frame.top() + 3 * mm, 60 * mm, 12 * mm),
-             QStringLiteral("%1 %2").arg(t.scale, scaleText(l.scale)), reportFont(12), Qt::AlignRight | Qt::AlignVCenter);
+             QStringLiteral("%1 %2").arg(t.scale, scaleText(l.scale)), reportFont(12),
+             Qt::AlignRight | Qt::AlignVCenter);
 
   // The part, to scale: scene millimetres -> paper millimetres * scale.
   const QRectF scene = partSceneRect(data.part);
@@ -495,7 +518,8 @@ void paintDrawingSheet(QPainter& painter, QPagedPaintDevice& device, const Repor
   for (double side : {1.0, -1.0}) {
     painter.save();
     painter.scale(1.0, side);
-    painter.setClipRect(QRectF(scene.left() - 1.0, scene.top() - 1.0, scene.width() + 2.0, -scene.top() + 1.0 - halfPen));
+    painter.setClipRect(
+        QRectF(scene.left() - 1.0, scene.top() - 1.0, scene.width() + 2.0, -scene.top() + 1.0 - halfPen));
     painter.drawPath(data.part.outline);
     painter.restore();
   }

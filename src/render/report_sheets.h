@@ -50,17 +50,17 @@ QString reportDate(const QDate& date, ReportLanguage lang, DateLength length = D
 QString kluengVersion();
 
 struct ReportData {
-  core::io::ProgramFile program;   // header + G-code; gcodeFirstLine numbers the listing
-  QString fileName;                // shown on the sheets ("Untitled" when empty)
+  core::io::ProgramFile program;  // header + G-code; gcodeFirstLine numbers the listing
+  QString fileName;               // shown on the sheets ("Untitled" when empty)
   QDate date = QDate::currentDate();
-  StockShape part;                 // the finished part (see finishedPart)
-  QString partNote;                // printed under the drawing when the part is not the finished one
+  StockShape part;                   // the finished part (see finishedPart)
+  QString partNote;                  // printed under the drawing when the part is not the finished one
   core::cut::PartFeatures features;  // the part's features, dimensioned on the drawing (empty: overall size only)
-  DesignMarks marks;               // tolerances and surface finish from a part design (none for a plain program)
-  core::UnitFormat units;          // the unit the drawing's dimensions are written in (issue 28 item 4)
+  DesignMarks marks;                 // tolerances and surface finish from a part design (none for a plain program)
+  core::UnitFormat units;            // the unit the drawing's dimensions are written in (issue 28 item 4)
   // Cycle time (issue 11): total and per tool; total < 0 = not known (the program has errors).
   double cycleTime = -1.0;
-  bool cycleTimeToAlarm = false;   // the run stops on an alarm: the time is up to it
+  bool cycleTimeToAlarm = false;  // the run stops on an alarm: the time is up to it
   std::vector<core::machine::ToolTime> toolTimes;
 };
 
@@ -83,15 +83,15 @@ void paintDrawingSheet(QPainter& painter, QPagedPaintDevice& device, const Repor
 
 // Largest standard scale (5:1, 2:1, 1:1, 1:2, 1:5, 1:10, ...) at which partMm fits in areaMm.
 double drawingScale(const QSizeF& partMm, const QSizeF& areaMm);
-QString scaleText(double scale);   // "1:1", "1:2", "2:1"
+QString scaleText(double scale);  // "1:1", "1:2", "2:1"
 
 // Where paintDrawingSheet put things, in device pixels (for tests and previews).
 struct DrawingLayout {
-  QRectF frame;          // sheet border
-  QRectF drawingArea;    // where the part may go
+  QRectF frame;        // sheet border
+  QRectF drawingArea;  // where the part may go
   QRectF titleBlock;
-  QRectF partRect;       // the part's both-halves bounding box on the page (room left around it for dimensions)
-  double scale = 1.0;    // paper mm per part mm
+  QRectF partRect;     // the part's both-halves bounding box on the page (room left around it for dimensions)
+  double scale = 1.0;  // paper mm per part mm
   double pixelsPerMm = 1.0;
 };
 DrawingLayout drawingLayout(const QPagedPaintDevice& device, const StockShape& part);

@@ -98,8 +98,7 @@ class TempDir {
  public:
   TempDir() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::temp_directory_path() /
-            ("klueng-cli-" + std::string(info->name()) + "-" + std::to_string(::getpid()));
+    path_ = fs::temp_directory_path() / ("klueng-cli-" + std::string(info->name()) + "-" + std::to_string(::getpid()));
     fs::remove_all(path_);
     fs::create_directories(path_);
   }
@@ -124,8 +123,10 @@ class TempDir {
     fs::copy(kShipped + "/resources/tools", dir + "/resources/tools",
              fs::copy_options::recursive | fs::copy_options::overwrite_existing);
     for (const auto& [name, text] : replaced) {
-      if (text == "<delete>") fs::remove(dir + "/" + name);
-      else std::ofstream(dir + "/" + name, std::ios::binary) << text;
+      if (text == "<delete>")
+        fs::remove(dir + "/" + name);
+      else
+        std::ofstream(dir + "/" + name, std::ios::binary) << text;
     }
     return dir;
   }
@@ -157,9 +158,7 @@ class JsonReader {
   }
 
  private:
-  [[noreturn]] void fail(const std::string& what) {
-    throw std::runtime_error(what + " at byte " + std::to_string(i_));
-  }
+  [[noreturn]] void fail(const std::string& what) { throw std::runtime_error(what + " at byte " + std::to_string(i_)); }
   void space() {
     while (i_ < s_.size() && (s_[i_] == ' ' || s_[i_] == '\n' || s_[i_] == '\r' || s_[i_] == '\t')) ++i_;
   }
@@ -195,7 +194,10 @@ class JsonReader {
       expect(':');
       o[key] = value();
       space();
-      if (s_[i_] == ',') { ++i_; continue; }
+      if (s_[i_] == ',') {
+        ++i_;
+        continue;
+      }
       expect('}');
       return Json{o};
     }
@@ -208,7 +210,10 @@ class JsonReader {
     for (;;) {
       a.push_back(value());
       space();
-      if (s_[i_] == ',') { ++i_; continue; }
+      if (s_[i_] == ',') {
+        ++i_;
+        continue;
+      }
       expect(']');
       return Json{a};
     }
@@ -220,28 +225,51 @@ class JsonReader {
     while (i_ < s_.size() && s_[i_] != '"') {
       const auto c = static_cast<unsigned char>(s_[i_]);
       if (c < 0x20) fail("raw control character in string");
-      if (c != '\\') { out += s_[i_++]; continue; }
+      if (c != '\\') {
+        out += s_[i_++];
+        continue;
+      }
       const char e = s_.at(++i_);
       ++i_;
       switch (e) {
-        case '"': out += '"'; break;
-        case '\\': out += '\\'; break;
-        case '/': out += '/'; break;
-        case 'n': out += '\n'; break;
-        case 't': out += '\t'; break;
-        case 'r': out += '\r'; break;
-        case 'b': out += '\b'; break;
-        case 'f': out += '\f'; break;
+        case '"':
+          out += '"';
+          break;
+        case '\\':
+          out += '\\';
+          break;
+        case '/':
+          out += '/';
+          break;
+        case 'n':
+          out += '\n';
+          break;
+        case 't':
+          out += '\t';
+          break;
+        case 'r':
+          out += '\r';
+          break;
+        case 'b':
+          out += '\b';
+          break;
+        case 'f':
+          out += '\f';
+          break;
         case 'u': {
           const unsigned cp = static_cast<unsigned>(std::stoul(s_.substr(i_, 4), nullptr, 16));
           i_ += 4;
-          if (cp < 0x80) out += static_cast<char>(cp);
-          else if (cp < 0x800) out += static_cast<char>(0xC0 | (cp >> 6)), out += static_cast<char>(0x80 | (cp & 0x3F));
-          else out += static_cast<char>(0xE0 | (cp >> 12)), out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F)),
-               out += static_cast<char>(0x80 | (cp & 0x3F));
+          if (cp < 0x80)
+            out += static_cast<char>(cp);
+          else if (cp < 0x800)
+            out += static_cast<char>(0xC0 | (cp >> 6)), out += static_cast<char>(0x80 | (cp & 0x3F));
+          else
+            out += static_cast<char>(0xE0 | (cp >> 12)), out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F)),
+                out += static_cast<char>(0x80 | (cp & 0x3F));
           break;
         }
-        default: fail("bad escape");
+        default:
+          fail("bad escape");
       }
     }
     if (i_ >= s_.size()) fail("unterminated string");
@@ -309,8 +337,8 @@ INSTANTIATE_TEST_SUITE_P(Samples, CleanSample,
                                                               "05-runtime-alarms.txt"),
                                             ::testing::Values("fanuc", "classic")),
                          [](const auto& info) {
-                           std::string n = std::string(std::get<0>(info.param)).substr(0, 2) + "_" +
-                                           std::get<1>(info.param);
+                           std::string n =
+                               std::string(std::get<0>(info.param)).substr(0, 2) + "_" + std::get<1>(info.param);
                            return "sample" + n;
                          });
 
@@ -397,7 +425,7 @@ TEST(CliCheck, LanguageFollowsTheLocale) {
 
 TEST(CliCheck, JsonIsOneArrayOfDiagnosticsForAllFiles) {
   const CliRun run = runCli("check --json --dialect classic " + quote(kSamples + "/04-grammar-errors.txt") + " " +
-                         quote(kSamples + "/01-step-shaft.txt") + " /no/such.txt");
+                            quote(kSamples + "/01-step-shaft.txt") + " /no/such.txt");
   EXPECT_EQ(run.exitCode, 2);
   Json doc;
   ASSERT_NO_THROW(doc = JsonReader(run.out).document()) << run.out;
@@ -457,13 +485,16 @@ TEST(CliBadInput, EmptyFile) {
 
 TEST(CliBadInput, BinaryFile) {
   TempDir dir;
-  std::string bytes = "\x7f" "ELF\x02\x01\x01";
+  std::string bytes =
+      "\x7f"
+      "ELF\x02\x01\x01";
   bytes += std::string(64, '\0');
   for (int i = 0; i < 4096; ++i) bytes += static_cast<char>((i * 7919) & 0xFF);
   const std::string file = dir.write("program.exe", bytes);
   const CliRun run = runCli("check " + quote(file));
   EXPECT_EQ(run.exitCode, 1);
-  EXPECT_EQ(run.out, file + ":1:8: error F104: " + file + ": this is a binary file (it contains a NUL byte), not text\n");
+  EXPECT_EQ(run.out,
+            file + ":1:8: error F104: " + file + ": this is a binary file (it contains a NUL byte), not text\n");
 }
 
 TEST(CliBadInput, TenMegabyteSingleLine) {
@@ -527,8 +558,9 @@ TEST(CliBadInput, HeaderWithBadUnitDigitIsReadAsPlainGcode) {
   const std::string file = dir.write("unit.txt", "Job\nPart\nSteel\n250\n1100\nMe\nG00 X10.\n");
   const CliRun run = runCli("check " + quote(file));
   EXPECT_EQ(run.exitCode, 1);  // "Job" is not G-code
-  EXPECT_THAT(run.out, HasSubstr(file + ":4:1: warning F117: " + file +
-                                 ": read as a plain G-code file without a job header: line 4 ('250') is not a stock size"));
+  EXPECT_THAT(run.out,
+              HasSubstr(file + ":4:1: warning F117: " + file +
+                        ": read as a plain G-code file without a job header: line 4 ('250') is not a stock size"));
   const CliRun th = runCli("check --lang th " + quote(file));
   EXPECT_THAT(th.out, HasSubstr("ไม่มีส่วนหัวของงาน"));
 }
@@ -538,8 +570,9 @@ TEST(CliBadInput, NegativeStockSizeIsRule13) {
   const std::string file = dir.write("neg.txt", "Job\nPart\nSteel\n150\n1-20\nMe\nG00 X10.\n");
   const CliRun run = runCli("check " + quote(file));
   EXPECT_EQ(run.exitCode, 1);
-  EXPECT_EQ(run.out, file + ":5:1: error E213: stock diameter and length must be greater than 0, not -20 "
-                     "(written '1-20': unit digit, then the size)\n");
+  EXPECT_EQ(run.out, file +
+                         ":5:1: error E213: stock diameter and length must be greater than 0, not -20 "
+                         "(written '1-20': unit digit, then the size)\n");
 }
 
 TEST(CliBadInput, MissingHeaderLines) {
@@ -571,7 +604,7 @@ TEST(CliConfig, ToolsCfgWithMissingLinesLeavesToolsWithoutBitmap) {
   EXPECT_THAT(run.out, HasSubstr(config + "/tools.cfg:3:1: error F120: "));
   EXPECT_THAT(run.out, HasSubstr("tools 04 to 08 have no bitmap"));
   EXPECT_THAT(run.out, HasSubstr(program + ":3:1: error E305: "));  // T0404: no bitmap
-  EXPECT_THAT(run.out, Not(HasSubstr(program + ":2:")));           // T0101 is fine
+  EXPECT_THAT(run.out, Not(HasSubstr(program + ":2:")));            // T0101 is fine
 }
 
 TEST(CliConfig, ToolsCfgGarbageLineAndMissingBitmap) {
@@ -667,10 +700,12 @@ TEST(CliConfig, BinaryConfigFileDoesNotCrash) {
 TEST(CliConfig, ABitmapLargerThanAToolIsASetupErrorBeforeTheRun) {
   TempDir dir;
   const int side = 4096;
-  klueng::core::io::RgbImage image{side, side, std::vector<std::uint32_t>(static_cast<std::size_t>(side) * side, 0xFFFFFF)};
+  klueng::core::io::RgbImage image{side, side,
+                                   std::vector<std::uint32_t>(static_cast<std::size_t>(side) * side, 0xFFFFFF)};
   for (int y = side - 20; y < side; ++y)
     for (int x = 0; x < 20; ++x) image.pixels[static_cast<std::size_t>(y) * side + x] = 0xFF0000;
-  const std::string config = dir.config({{"resources/tools/01-outside-turning.bmp", klueng::core::io::encodeBmp(image)}});
+  const std::string config =
+      dir.config({{"resources/tools/01-outside-turning.bmp", klueng::core::io::encodeBmp(image)}});
   const std::string expected =
       config + "/tools.cfg:1:1: error F139: " + config +
       "/tools.cfg: tool 01: the bitmap 'resources/tools/01-outside-turning.bmp' is 4096 x 4096 pixels; a tool "
@@ -707,7 +742,8 @@ TEST(CliLanguage, CommandLineMistakesAndTheUsageAreThaiUnderLangTh) {
   EXPECT_EQ(command.out.substr(0, command.out.find('\n')), "klueng-cli: ไม่รู้จักคำสั่ง '--lang'");
   EXPECT_THAT(command.out, HasSubstr("\nวิธีใช้: klueng-cli check FILE..."));
 
-  const CliRun stock = runCliWithErrors("simulate " + quote(kSamples + "/01-step-shaft.txt") + " --stock abc --lang=th");
+  const CliRun stock =
+      runCliWithErrors("simulate " + quote(kSamples + "/01-step-shaft.txt") + " --stock abc --lang=th");
   EXPECT_EQ(stock.exitCode, 2);
   EXPECT_THAT(stock.out, HasSubstr("klueng-cli simulate: ค่า 'abc' ใช้กับ --stock ไม่ได้ ค่าที่ใช้ได้: DxL[xBORE][in] "
                                    "โดย 0 < D, L <= 9999.999 และ 0 < BORE < D เช่น 50x100, 2.1x4in, 118x80x90\n"));
@@ -715,7 +751,8 @@ TEST(CliLanguage, CommandLineMistakesAndTheUsageAreThaiUnderLangTh) {
   EXPECT_THAT(units.out, HasSubstr("klueng-cli check: --units ต้องเป็น mm หรือ inch ไม่ใช่ 'feet'\n"));
   const CliRun sheet = runCliWithErrors("print x.nc --pdf x.pdf --sheet poster --lang th");
   EXPECT_EQ(sheet.exitCode, 2);
-  EXPECT_THAT(sheet.out, HasSubstr("klueng-cli print: ค่า 'poster' ใช้กับ --sheet ไม่ได้ ค่าที่ใช้ได้: program, drawing หรือ both\n"));
+  EXPECT_THAT(sheet.out,
+              HasSubstr("klueng-cli print: ค่า 'poster' ใช้กับ --sheet ไม่ได้ ค่าที่ใช้ได้: program, drawing หรือ both\n"));
   EXPECT_THAT(sheet.out, HasSubstr("วิธีใช้: klueng-cli print FILE --pdf OUT.pdf"));
   // A Thai locale without --lang.
   const CliRun locale = runCliWithErrors("simulate", "LC_ALL= LC_MESSAGES= LANG=th_TH.UTF-8");
@@ -732,12 +769,14 @@ TEST(CliLanguage, ClassAndGenerateErrorsAreThaiUnderLangTh) {
   EXPECT_THAT(classRun.out, HasSubstr("klueng-cli class: " + missing + " ไม่ใช่โฟลเดอร์\n"));
   const CliRun classUse = runCliWithErrors("class --lang th");
   EXPECT_EQ(classUse.exitCode, 2);
-  EXPECT_THAT(classUse.out, HasSubstr("klueng-cli class: ต้องระบุโฟลเดอร์ DIR และ --reference REF.nc หรือ --drawing PART.json\nวิธีใช้: klueng-cli class DIR"));
+  EXPECT_THAT(classUse.out, HasSubstr("klueng-cli class: ต้องระบุโฟลเดอร์ DIR และ --reference REF.nc หรือ --drawing "
+                                      "PART.json\nวิธีใช้: klueng-cli class DIR"));
   const CliRun tolerance = runCliWithErrors("class x --reference y --tolerance lots");
   EXPECT_THAT(tolerance.out, HasSubstr("klueng-cli class: bad value 'lots' for --tolerance\n"));
 
   const std::string part = dir.file("none.json");
-  const CliRun generate = runCliWithErrors("generate " + quote(part) + " -o " + quote(dir.file("out.nc")) + " --lang th");
+  const CliRun generate =
+      runCliWithErrors("generate " + quote(part) + " -o " + quote(dir.file("out.nc")) + " --lang th");
   EXPECT_EQ(generate.exitCode, 2);
   EXPECT_THAT(generate.out, HasSubstr("F101: " + part + ": ไม่พบไฟล์\n"));  // read with the part-file limit
   const CliRun option = runCliWithErrors("generate " + quote(part) + " -o x.nc --tool-material wood --lang th");
@@ -748,8 +787,8 @@ TEST(CliLanguage, ClassAndGenerateErrorsAreThaiUnderLangTh) {
 TEST(CliLanguage, APictureThatCannotBeWrittenIsSaidInThai) {
   TempDir dir;
   const std::string png = dir.file("no-folder/part.png");
-  const CliRun run = runCliWithErrors("simulate " + quote(kSamples + "/01-step-shaft.txt") + " --png " + quote(png) +
-                                      " --lang th");
+  const CliRun run =
+      runCliWithErrors("simulate " + quote(kSamples + "/01-step-shaft.txt") + " --png " + quote(png) + " --lang th");
   EXPECT_EQ(run.exitCode, 2);
   EXPECT_THAT(run.out, HasSubstr(png + ": ข้อผิดพลาด F125: " + png + ": สร้างไฟล์ไม่ได้ เพราะไม่มีโฟลเดอร์ " +
                                  dir.file("no-folder") + " หรือไม่มีสิทธิ์เขียนลงในโฟลเดอร์นี้\n"));
@@ -780,7 +819,9 @@ TEST(CliMachines, ConfigFolderMachineAndBrokenMachineFile) {
   TempDir dir;
   const std::string config = dir.config({});
   dir.write("config/machines/school.machine",
-            "base = fanuc\nid = school\nname_en = School lathe\nname_th = \xE0\xB9\x82\xE0\xB8\xA3\xE0\xB8\x87\xE0\xB9\x80\xE0\xB8\xA3\xE0\xB8\xB5\xE0\xB8\xA2\xE0\xB8\x99\ngcode_system = B\n");
+            "base = fanuc\nid = school\nname_en = School lathe\nname_th = "
+            "\xE0\xB9\x82\xE0\xB8\xA3\xE0\xB8\x87\xE0\xB9\x80\xE0\xB8\xA3\xE0\xB8\xB5\xE0\xB8\xA2\xE0\xB8\x99\ngcode_"
+            "system = B\n");
   const std::string program = dir.write("b.nc",
                                         "O0001;\nG90 G95 G21;\nG92 S3000;\nT0101;\nG97 S800 M03;\nG00 X24. Z5.;\n"
                                         "G78 X19.4 Z-13. F1.5;\nX18.9;\nG00 X100. Z100.;\nM30;\n");
@@ -794,13 +835,16 @@ TEST(CliMachines, ConfigFolderMachineAndBrokenMachineFile) {
   const std::string bad = dir.write("bad.machine", "base = fanuc\nid = bad\n\nfamily = fanuk\n");
   const CliRun broken = runCliWithErrors("check --machine " + quote(bad) + " " + quote(program));
   EXPECT_EQ(broken.exitCode, 2);
-  EXPECT_THAT(broken.out, HasSubstr(bad + ":4:10: error F200: " + bad + ": family = 'fanuk': must be one of: fanuc haas classic"));
+  EXPECT_THAT(broken.out,
+              HasSubstr(bad + ":4:10: error F200: " + bad + ": family = 'fanuk': must be one of: fanuc haas classic"));
   const CliRun thai = runCliWithErrors("check --lang th --machine " + quote(bad) + " " + quote(program));
   EXPECT_EQ(thai.exitCode, 2);
-  EXPECT_THAT(thai.out, HasSubstr(":4:10: ข้อผิดพลาด F200: " + bad + ": family = 'fanuk': ต้องเป็นค่าใดค่าหนึ่งต่อไปนี้: fanuc haas classic"));
+  EXPECT_THAT(thai.out, HasSubstr(":4:10: ข้อผิดพลาด F200: " + bad +
+                                  ": family = 'fanuk': ต้องเป็นค่าใดค่าหนึ่งต่อไปนี้: fanuc haas classic"));
   const CliRun unknown = runCliWithErrors("simulate --machine no-such-lathe " + quote(program));
   EXPECT_EQ(unknown.exitCode, 2);
-  EXPECT_THAT(unknown.out, HasSubstr("no-such-lathe: error F203: no-such-lathe: no such machine or machine file; the machines are: fanuc, haas, classic, romi-gl240m, thai-vocational"));
+  EXPECT_THAT(unknown.out, HasSubstr("no-such-lathe: error F203: no-such-lathe: no such machine or machine file; the "
+                                     "machines are: fanuc, haas, classic, romi-gl240m, thai-vocational"));
 }
 
 // Issue 27 item 2: a program that names its machine at its head, as Job details
@@ -808,8 +852,9 @@ TEST(CliMachines, ConfigFolderMachineAndBrokenMachineFile) {
 // still wins; a machine that is not loaded is a located warning.
 TEST(CliMachines, ProgramNamesItsMachine) {
   TempDir dir;
-  const std::string body = "G90 G95 G21;\nG92 S3000;\nT0101;\nG97 S800 M03;\nG00 X24. Z5.;\n"
-                           "G78 X19.4 Z-13. F1.5;\nX18.9;\nG00 X100. Z100.;\nM30;\n";
+  const std::string body =
+      "G90 G95 G21;\nG92 S3000;\nT0101;\nG97 S800 M03;\nG00 X24. Z5.;\n"
+      "G78 X19.4 Z-13. F1.5;\nX18.9;\nG00 X100. Z100.;\nM30;\n";
   const std::string named = dir.write("named.nc", "%\nO0001\n(MACHINE: romi-gl240m)\n" + body + "%\n");
   const CliRun ok = runCliWithErrors("check " + quote(named));
   EXPECT_EQ(ok.exitCode, 0) << ok.out;
@@ -824,9 +869,10 @@ TEST(CliMachines, ProgramNamesItsMachine) {
   const std::string unknown = dir.write("unknown.nc", "O0002\n(MACHINE: okuma-lb15)\n" + body);
   const CliRun warned = runCliWithErrors("check " + quote(unknown));
   EXPECT_EQ(warned.exitCode, 1);  // checked on the default Fanuc: G95 is an error there
-  EXPECT_THAT(warned.out, HasSubstr(unknown + ":2:11: warning F205: the program names the machine 'okuma-lb15', "
-                                              "which is not loaded: it is checked on the chosen machine; the machines are: "
-                                              "fanuc, haas, classic, romi-gl240m, thai-vocational"));
+  EXPECT_THAT(warned.out,
+              HasSubstr(unknown + ":2:11: warning F205: the program names the machine 'okuma-lb15', "
+                                  "which is not loaded: it is checked on the chosen machine; the machines are: "
+                                  "fanuc, haas, classic, romi-gl240m, thai-vocational"));
   const CliRun thai = runCliWithErrors("check --lang th " + quote(unknown));
   EXPECT_THAT(thai.out, HasSubstr(":2:11: "));
   EXPECT_THAT(thai.out, HasSubstr("F205: โปรแกรมระบุเครื่อง 'okuma-lb15' ซึ่งไม่มีอยู่"));

@@ -60,11 +60,16 @@ TEST(CliClass, ThirtyStudentsGetTheRightPassOrFail) {
   };
   for (int i = 1; i <= 9; ++i) student("copy" + std::to_string(i) + ".txt", reference, "pass");
   // Within 0.05 mm: a shoulder 0.02 further along Z, a finishing diameter 0.02 over.
-  for (int i = 1; i <= 3; ++i) student("close" + std::to_string(i) + ".nc", replaced(reference, "N420 Z-60.", "N420 Z-60.02"), "pass");
-  for (int i = 1; i <= 3; ++i) student("over" + std::to_string(i) + ".nc", replaced(reference, "N420 Z-60.", "N420 X46.02 Z-60."), "pass");
+  for (int i = 1; i <= 3; ++i)
+    student("close" + std::to_string(i) + ".nc", replaced(reference, "N420 Z-60.", "N420 Z-60.02"), "pass");
+  for (int i = 1; i <= 3; ++i)
+    student("over" + std::to_string(i) + ".nc", replaced(reference, "N420 Z-60.", "N420 X46.02 Z-60."), "pass");
   // Beyond it: Ø46 left 0.3 big, Ø40 cut 0.2 small, a shoulder 0.3 too deep.
-  for (int i = 1; i <= 3; ++i) student("big" + std::to_string(i) + ".nc", replaced(reference, "N410 X46. Z-41.\nN420 Z-60.", "N410 X46.3 Z-41.\nN420 Z-60."), "fail");
-  for (int i = 1; i <= 3; ++i) student("taper" + std::to_string(i) + ".nc", replaced(reference, "N390 G01 Z-40.", "N390 G01 X39.8 Z-40."), "fail");
+  for (int i = 1; i <= 3; ++i)
+    student("big" + std::to_string(i) + ".nc",
+            replaced(reference, "N410 X46. Z-41.\nN420 Z-60.", "N410 X46.3 Z-41.\nN420 Z-60."), "fail");
+  for (int i = 1; i <= 3; ++i)
+    student("taper" + std::to_string(i) + ".nc", replaced(reference, "N390 G01 Z-40.", "N390 G01 X39.8 Z-40."), "fail");
   student("deep.nc", replaced(reference, "N360 Z-20.", "N360 Z-20.3"), "fail");
   student("deeper-a-bit.nc", replaced(reference, "N360 Z-20.", "N360 Z-20.1"), "fail");
   student("deep-within.nc", replaced(reference, "N360 Z-20.", "N360 Z-20.02"), "pass");
@@ -73,14 +78,21 @@ TEST(CliClass, ThirtyStudentsGetTheRightPassOrFail) {
   student("typo2.nc", replaced(reference, "N140 G01 Z-39.8", "N140 G01 Z-39.8 Z-39.8"), "fail");
   student("unknown-code.nc", replaced(reference, "N15 G99", "N15 G99 G07"), "fail");
   student("nospindle.nc", replaced(reference, "N40 G96 S180 M03", "N40 G96 S180"), "fail");
-  student("binary.nc", std::string("\x7f" "ELF\x02\x01\x01\x00\x00\x00", 10), "fail");
+  student("binary.nc",
+          std::string("\x7f"
+                      "ELF\x02\x01\x01\x00\x00\x00",
+                      10),
+          "fail");
   student("empty.nc", "", "fail");
   ASSERT_EQ(expected.size(), 30u);
 
   const fs::path csvPath = dir / "grades.csv";
   std::string err;
-  ASSERT_EQ(run("'" + (dir / "class").string() + "' --reference '" + KLUENG_SAMPLES_DIR + "/01-step-shaft.txt' --tolerance 0.05 --csv '" +
-                    csvPath.string() + "'", &err), 0) << err;
+  ASSERT_EQ(run("'" + (dir / "class").string() + "' --reference '" + KLUENG_SAMPLES_DIR +
+                    "/01-step-shaft.txt' --tolerance 0.05 --csv '" + csvPath.string() + "'",
+                &err),
+            0)
+      << err;
   EXPECT_NE(err.find("[30/30]"), std::string::npos) << err;
   EXPECT_NE(err.find("30 programs: 16 pass, 14 fail"), std::string::npos) << err;
 
@@ -182,18 +194,26 @@ TEST(CliClass, ThePdfHasTheTableAndWithSheetsEveryStudentsSheets) {
   fs::create_directories(dir / "class");
   const std::string reference = slurp(fs::path(KLUENG_SAMPLES_DIR) / "01-step-shaft.txt");
   std::ofstream(dir / "class" / "anna.nc", std::ios::binary) << reference;
-  std::ofstream(dir / "class" / "boon.nc", std::ios::binary) << replaced(reference, "N390 G01 Z-40.", "N390 G01 X39.8 Z-40.");
+  std::ofstream(dir / "class" / "boon.nc", std::ios::binary)
+      << replaced(reference, "N390 G01 Z-40.", "N390 G01 X39.8 Z-40.");
   const std::string ref = std::string(KLUENG_SAMPLES_DIR) + "/01-step-shaft.txt";
   std::string err;
   ASSERT_EQ(run("'" + (dir / "class").string() + "' --reference '" + ref + "' --csv '" + (dir / "g.csv").string() +
-                    "' --pdf '" + (dir / "grades.pdf").string() + "'", &err), 0) << err;
+                    "' --pdf '" + (dir / "grades.pdf").string() + "'",
+                &err),
+            0)
+      << err;
   const std::string table = pdfText(dir / "grades.pdf");
-  for (const char* s : {"Class grades", "01-step-shaft.txt", "2 programs: 1 pass, 1 fail", "anna.nc", "boon.nc", "0.191"})
+  for (const char* s :
+       {"Class grades", "01-step-shaft.txt", "2 programs: 1 pass, 1 fail", "anna.nc", "boon.nc", "0.191"})
     EXPECT_NE(table.find(s), std::string::npos) << s << "\n" << table;
   EXPECT_FALSE(fs::exists(dir / "grades.pdf.partial"));
   // In Thai, with each student's program sheet and drawing: 1 + 2 x 2 pages.
   ASSERT_EQ(run("'" + (dir / "class").string() + "' --reference '" + ref + "' --csv '" + (dir / "g.csv").string() +
-                    "' --pdf '" + (dir / "sheets.pdf").string() + "' --sheets --lang th", &err), 0) << err;
+                    "' --pdf '" + (dir / "sheets.pdf").string() + "' --sheets --lang th",
+                &err),
+            0)
+      << err;
   const std::string all = pdfText(dir / "sheets.pdf");
   // (pdftotext splits some Thai marks from their letters: words without them.)
   for (const char* s : {"ผลการตรวจงาน", "ชุดรหัส", "เอกสารแสดงภาพชิ้นงาน", "N390 G01 X39.8 Z-40."})
@@ -232,23 +252,34 @@ TEST(CliClass, GradedAgainstTheDrawingFeatureByFeature) {
             "file,result,errors,first_error,alarm,cycle_time_s,leftover_mm,leftover_z,gouge_mm,gouge_z,"
             "feature,nominal_mm,tolerance,lower_mm,upper_mm,measured_mm,verdict");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 3 * 4) << csv;
-  EXPECT_NE(csv.find("\nanna.nc,pass,0,,,77.8,,,,,Ø30,30.000,h7 (0/-0.021),29.979,30.000,30.000,in\n"), std::string::npos) << csv;
-  EXPECT_NE(csv.find("\nboon.nc,fail,0,,,77.8,,,,,Ø40,40.000,js6 (±0.008),39.992,40.008,39.980,out\n"), std::string::npos) << csv;
-  EXPECT_NE(csv.find("\nchai.nc,pass,0,,,77.8,,,,,Ø46,46.000,0/-0.05,45.950,46.000,45.950,in\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\nanna.nc,pass,0,,,77.8,,,,,Ø30,30.000,h7 (0/-0.021),29.979,30.000,30.000,in\n"),
+            std::string::npos)
+      << csv;
+  EXPECT_NE(csv.find("\nboon.nc,fail,0,,,77.8,,,,,Ø40,40.000,js6 (±0.008),39.992,40.008,39.980,out\n"),
+            std::string::npos)
+      << csv;
+  EXPECT_NE(csv.find("\nchai.nc,pass,0,,,77.8,,,,,Ø46,46.000,0/-0.05,45.950,46.000,45.950,in\n"), std::string::npos)
+      << csv;
 
   // Besides the reference, and as a PDF in Thai: the drawing's page lists every student's dimensions.
   const std::string ref = std::string(KLUENG_SAMPLES_DIR) + "/01-step-shaft.txt";
   ASSERT_EQ(run(folder + " --drawing '" + drawing.string() + "' --reference '" + ref + "' --csv '" + csvPath.string() +
-                    "' --pdf '" + (dir / "grades.pdf").string() + "' --lang th", &err), 0) << err;
+                    "' --pdf '" + (dir / "grades.pdf").string() + "' --lang th",
+                &err),
+            0)
+      << err;
   EXPECT_NE(slurp(csvPath).find("\nboon.nc,fail,0,,,77.8,0.000,0.00,0.020,"), std::string::npos) << slurp(csvPath);
   const std::string th = pdfText(dir / "grades.pdf");
-  for (const char* s : {"shaft.json", "01-step-shaft.txt", "anna.nc", "boon.nc", "chai.nc", "h7 (0/-0.021)", "js6 (±0.008)",
-                        "39.992 – 40.008", "39.980", "45.950", "0.001"})
+  for (const char* s : {"shaft.json", "01-step-shaft.txt", "anna.nc", "boon.nc", "chai.nc", "h7 (0/-0.021)",
+                        "js6 (±0.008)", "39.992 – 40.008", "39.980", "45.950", "0.001"})
     EXPECT_NE(th.find(s), std::string::npos) << s << "\n" << th;
   EXPECT_EQ(std::count(th.begin(), th.end(), '\f'), 2) << th;  // the table, then the inspection
   // In English, the same PDF says it in English words.
   ASSERT_EQ(run(folder + " --drawing '" + drawing.string() + "' --csv '" + csvPath.string() + "' --pdf '" +
-                    (dir / "en.pdf").string() + "'", &err), 0) << err;
+                    (dir / "en.pdf").string() + "'",
+                &err),
+            0)
+      << err;
   const std::string en = pdfText(dir / "en.pdf", "-layout");
   for (const char* s : {"Against the drawing shaft.json (4 toleranced dimensions)", "Inspection against shaft.json",
                         "a value exactly at a limit is in", "3 of 4 in", "out", "Measured (mm)"})
@@ -269,9 +300,13 @@ TEST(CliClass, GradedAgainstTheDrawingFeatureByFeature) {
   EXPECT_EQ(run(folder + " --drawing '" + pin + "' --layer PART --general-tolerance m", &err), 2);
   EXPECT_NE(err.find("F189"), std::string::npos) << err;
   EXPECT_NE(err.find("X45.000 Y17.000"), std::string::npos) << err;
-  ASSERT_EQ(run(folder + " --drawing '" + drawing.string() + "' --general-tolerance m --csv '" + csvPath.string() + "'", &err), 0) << err;
+  ASSERT_EQ(run(folder + " --drawing '" + drawing.string() + "' --general-tolerance m --csv '" + csvPath.string() + "'",
+                &err),
+            0)
+      << err;
   EXPECT_NE(slurp(csvPath).find("\nanna.nc,pass,0,,,77.8,,,,,Ø30,30.000,ISO 2768-m (±0.2),29.800,30.200,30.000,in\n"),
-            std::string::npos) << slurp(csvPath);
+            std::string::npos)
+      << slurp(csvPath);
   fs::remove_all(dir);
 }
 

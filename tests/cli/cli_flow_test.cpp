@@ -46,9 +46,8 @@ CliRun runCli(const std::string& args) {
 class CliFlow : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("klueng-cli-flow-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = fs::temp_directory_path() / ("klueng-cli-flow-" + std::to_string(::getpid()) + "-" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     // The user's data folder, where #500-#999 are kept when no --config is given.
@@ -126,7 +125,8 @@ TEST_F(CliFlow, AMissingSubprogramIsAnErrorAtItsCall) {
   const std::string main = write("main.nc", kMain);
   const CliRun run = runCli("check " + main);
   EXPECT_EQ(run.exitCode, 1);
-  EXPECT_THAT(run.out, HasSubstr(main + ":6:5: error E404: M98 P1000: program O1000 is neither in this file nor in its folder"));
+  EXPECT_THAT(run.out,
+              HasSubstr(main + ":6:5: error E404: M98 P1000: program O1000 is neither in this file nor in its folder"));
 }
 
 TEST_F(CliFlow, AnErrorInASubprogramFileNamesThatFile) {

@@ -44,7 +44,8 @@ CliRun cli(const fs::path& dir, const std::string& args) {
 std::string manySteps(int steps) {
   std::ostringstream s;
   s << R"({"name": "Many steps", "material": "aluminium", "stock": {"diameter": 60, "length": 130}, "outside": [)";
-  for (int k = 0; k < steps; ++k) s << (k ? ", " : "") << R"({"cylinder": )" << 10.0 + k * 0.004 << R"(, "length": 0.01})";
+  for (int k = 0; k < steps; ++k)
+    s << (k ? ", " : "") << R"({"cylinder": )" << 10.0 + k * 0.004 << R"(, "length": 0.01})";
   s << "]}\n";
   return s.str();
 }

@@ -71,8 +71,8 @@ TEST(CliPrint, DrawingDimensionsSample01OnALandscapePage) {
   EXPECT_FALSE(fs::exists(pdf.string() + ".partial"));
   const std::string text = pdfText(pdf);
   // Every diameter, the chamfers and the corner radius, the chained steps and the overall length.
-  for (const char* s : {"Part Drawing", "Ø30", "Ø40", "Ø46", "C3", "C1", "R2", "60", "Scale 1:1",
-                        "Inside corners: tool nose R0.8"})
+  for (const char* s :
+       {"Part Drawing", "Ø30", "Ø40", "Ø46", "C3", "C1", "R2", "60", "Scale 1:1", "Inside corners: tool nose R0.8"})
     EXPECT_NE(text.find(s), std::string::npos) << s << "\n" << text;
   // The finished part only (issue 28 item 3): the Ø50 bar left in the chuck (Z-60 to Z-100) is
   // neither drawn nor dimensioned, and the overall length is the part's 60, not the bar's 100.
@@ -100,7 +100,7 @@ TEST(CliPrint, TheDesignsTolerancesAreWrittenAfterItsDiameters) {
   EXPECT_NE(text.find("Ø30 h7"), std::string::npos) << text;
   EXPECT_NE(text.find("Ø40 ±0.05"), std::string::npos) << text;
   EXPECT_NE(text.find("Ø46"), std::string::npos) << text;
-  EXPECT_EQ(text.find("Ø46 "), std::string::npos) << text;  // no tolerance where the design has none
+  EXPECT_EQ(text.find("Ø46 "), std::string::npos) << text;    // no tolerance where the design has none
   EXPECT_NE(text.find("Ra 1.6"), std::string::npos) << text;  // the Ø30's surface finish mark
   EXPECT_EQ(text.find("Ra ", text.find("Ra 1.6") + 1), std::string::npos) << text;  // and only there
   // A design that cannot be read names its field, and the command exits 2.
@@ -171,9 +171,8 @@ TEST(CliPrint, AGrooveIsPlacedByItsNearWall) {
 TEST(CliPrint, BothSheetsInThaiAndTheThreadCallout) {
   const fs::path pdf = scratch("02-both.pdf");
   std::string err;
-  ASSERT_EQ(print("'" + std::string(KLUENG_SAMPLES_DIR) + "/02-thread.txt' --lang th --pdf '" + pdf.string() + "'",
-                  &err),
-            0)
+  ASSERT_EQ(
+      print("'" + std::string(KLUENG_SAMPLES_DIR) + "/02-thread.txt' --lang th --pdf '" + pdf.string() + "'", &err), 0)
       << err;
   const std::string text = pdfText(pdf);
   EXPECT_EQ(std::count(text.begin(), text.end(), '\f'), 2);  // the listing, then the drawing
@@ -230,9 +229,8 @@ TEST(CliGenerate, StepShaftInEveryDialectAndAnUndercut) {
                                         out.string() + "' --config '" + KLUENG_SOURCE_DIR + "' 2>&1",
                                     &status);
     ASSERT_EQ(status, 0) << err;
-    const std::string check = capture("'" + std::string(KLUENG_CLI_PATH) + "' check '" + out.string() +
-                                          "' --dialect " + dialect + " 2>&1",
-                                      &status);
+    const std::string check = capture(
+        "'" + std::string(KLUENG_CLI_PATH) + "' check '" + out.string() + "' --dialect " + dialect + " 2>&1", &status);
     EXPECT_EQ(status, 0) << dialect << "\n" << check;
   }
   const fs::path bad = scratch("undercut.json");
@@ -241,10 +239,10 @@ TEST(CliGenerate, StepShaftInEveryDialectAndAnUndercut) {
   const fs::path out = scratch("undercut.nc");
   fs::remove(out);
   int status = -1;
-  const std::string err = capture("env LC_ALL= LANG=C '" + std::string(KLUENG_CLI_PATH) + "' generate '" +
-                                      bad.string() + "' -o '" + out.string() + "' --config '" + KLUENG_SOURCE_DIR +
-                                      "' 2>&1",
-                                  &status);
+  const std::string err =
+      capture("env LC_ALL= LANG=C '" + std::string(KLUENG_CLI_PATH) + "' generate '" + bad.string() + "' -o '" +
+                  out.string() + "' --config '" + KLUENG_SOURCE_DIR + "' 2>&1",
+              &status);
   EXPECT_EQ(status, 1);
   EXPECT_NE(err.find("error E501: Step 2 (Ø20.) is thinner"), std::string::npos) << err;
   EXPECT_FALSE(fs::exists(out));
@@ -262,7 +260,7 @@ std::string dxfOfLines(const std::vector<std::array<double, 4>>& lines) {
 
 TEST(CliGenerate, ADxfDrawingBecomesAProgramAndAnOpenOneWritesNothing) {
   // A Ø40 pin with C2 on a Ø30 spigot 25 long, 55 long in all, drawn with its face at X0.
-  const std::vector<std::array<double, 4>> pin{{0, 0, 0, 13},    {0, 13, -2, 15},   {-2, 15, -25, 15},
+  const std::vector<std::array<double, 4>> pin{{0, 0, 0, 13},      {0, 13, -2, 15},    {-2, 15, -25, 15},
                                                {-25, 15, -25, 20}, {-25, 20, -55, 20}, {-55, 20, -55, 0}};
   const fs::path dxf = scratch("pin.dxf");
   std::ofstream(dxf) << dxfOfLines(pin);
@@ -276,8 +274,8 @@ TEST(CliGenerate, ADxfDrawingBecomesAProgramAndAnOpenOneWritesNothing) {
   ASSERT_EQ(status, 0) << err;
   std::ifstream in(out);
   const std::string program((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  EXPECT_NE(program.find("\n145\n190\n"), std::string::npos) << program;  // the bar from --stock
-  EXPECT_NE(program.find("G01 X30. Z-2."), std::string::npos) << program;   // the C2 chamfer
+  EXPECT_NE(program.find("\n145\n190\n"), std::string::npos) << program;   // the bar from --stock
+  EXPECT_NE(program.find("G01 X30. Z-2."), std::string::npos) << program;  // the C2 chamfer
   EXPECT_NE(program.find("G01 X40. Z-55."), std::string::npos);
   std::string check = capture(cli + "check '" + out.string() + "' --dialect haas 2>&1", &status);
   EXPECT_EQ(status, 0) << check;
@@ -286,11 +284,12 @@ TEST(CliGenerate, ADxfDrawingBecomesAProgramAndAnOpenOneWritesNothing) {
   open.erase(open.begin() + 2);
   std::ofstream(dxf) << dxfOfLines(open);
   fs::remove(out);
-  err = capture(cli + "generate '" + dxf.string() + "' -o '" + out.string() + "' --config '" + KLUENG_SOURCE_DIR +
-                    "' 2>&1",
-                &status);
+  err = capture(
+      cli + "generate '" + dxf.string() + "' -o '" + out.string() + "' --config '" + KLUENG_SOURCE_DIR + "' 2>&1",
+      &status);
   EXPECT_EQ(status, 2);
-  EXPECT_NE(err.find("error F189: " + dxf.string() + ": the outline is open at X-2.000 Y15.000: the nearest other "
+  EXPECT_NE(err.find("error F189: " + dxf.string() +
+                     ": the outline is open at X-2.000 Y15.000: the nearest other "
                      "end is 23.000 mm away"),
             std::string::npos)
       << err;

@@ -31,8 +31,8 @@ struct Result {
 
 // Runs klueng-cli with stderr captured (stdout discarded).
 Result simulate(const std::string& args, const std::string& config = kCutShipped) {
-  const std::string command = "env LC_ALL= LC_MESSAGES= LANG=C '" + kCut + "' simulate " + args + " --config '" +
-                              config + "' 2>&1 >/dev/null";
+  const std::string command =
+      "env LC_ALL= LC_MESSAGES= LANG=C '" + kCut + "' simulate " + args + " --config '" + config + "' 2>&1 >/dev/null";
   Result r;
   FILE* pipe = ::popen(command.c_str(), "r");
   if (!pipe) return r;
@@ -76,9 +76,9 @@ double diameterAt(const std::string& csv, double z) {
 TEST(CliSimulateCut, Sample01WritesEveryOutput) {
   const fs::path png = scratch("01.png"), csv = scratch("01.csv"), json = scratch("01.json"), svg = scratch("01.svg"),
                  dxf = scratch("01.dxf");
-  const Result r = simulate("'" + kCutSamples + "/01-step-shaft.txt' --png '" + png.string() + "' --profile '" +
-                            csv.string() + "' --json '" + json.string() + "' --svg '" + svg.string() + "' --dxf '" +
-                            dxf.string() + "'");
+  const Result r =
+      simulate("'" + kCutSamples + "/01-step-shaft.txt' --png '" + png.string() + "' --profile '" + csv.string() +
+               "' --json '" + json.string() + "' --svg '" + svg.string() + "' --dxf '" + dxf.string() + "'");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const std::string image = slurp(png);
   ASSERT_GT(image.size(), 24u);
@@ -165,8 +165,9 @@ TEST(CliSimulateCut, ThePngIsTheScreensSection) {
 
 TEST(CliSimulateCut, ResolutionSetsTheColumnWidth) {
   const fs::path csv = scratch("01-coarse.csv");
-  ASSERT_EQ(simulate("'" + kCutSamples + "/01-step-shaft.txt' --resolution 0.5 --profile '" + csv.string() + "'").exitCode,
-            0);
+  ASSERT_EQ(
+      simulate("'" + kCutSamples + "/01-step-shaft.txt' --resolution 0.5 --profile '" + csv.string() + "'").exitCode,
+      0);
   const std::string profile = slurp(csv);
   const long rows = std::count(profile.begin(), profile.end(), '\n');
   EXPECT_EQ(rows, 1 + 200 + 2);  // header, 100 mm / 0.5, both faces
@@ -244,7 +245,8 @@ TEST(CliPartCheck, AWrongTipRowAndAMissingCompensationShowOnTheirBlocks) {
   const Result fat = simulate("'" + file.string() + "' --part-check");
   EXPECT_EQ(fat.exitCode, 0) << fat.err;
   EXPECT_THAT(fat.err, HasSubstr(file.string() + ":43:1: warning W321: Material left 0.469 mm from Z0.000 to Z-3.000"));
-  EXPECT_THAT(fat.err, HasSubstr(file.string() + ":49:1: warning W321: Material left 0.469 mm from Z-40.000 to Z-41.000"));
+  EXPECT_THAT(fat.err,
+              HasSubstr(file.string() + ":49:1: warning W321: Material left 0.469 mm from Z-40.000 to Z-41.000"));
 }
 
 TEST(CliPartCheck, SamplesAreCleanAndAnAlarmedRunSaysWhatWasChecked) {

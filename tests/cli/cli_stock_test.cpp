@@ -26,7 +26,8 @@ struct CliRun {
 };
 
 CliRun runCli(const std::string& args, const std::string& lang = "LANG=C") {
-  const std::string command = "env LC_ALL= LC_MESSAGES= " + lang + " '" + std::string(KLUENG_CLI_PATH) + "' " + args + " 2>&1";
+  const std::string command =
+      "env LC_ALL= LC_MESSAGES= " + lang + " '" + std::string(KLUENG_CLI_PATH) + "' " + args + " 2>&1";
   CliRun run;
   FILE* pipe = ::popen(command.c_str(), "r");
   if (!pipe) return run;
@@ -69,8 +70,9 @@ TEST(CliStock, PlainFileTellsTheInferredStock) {
   const CliRun run = runCli("check " + file);
   EXPECT_EQ(run.exitCode, 0) << run.out;
   EXPECT_EQ(run.out, file + ":5:1: note I152: stock Ø50 x 80 mm inferred from N30 G00 X52. Z0. (first approach)\n" +
-                         file + ":9:1: note I157: stock length 80: the deepest cut Z-60 (N70 G01 Z-60.) + 5 for the cut-off"
-                                " + 15 held in the chuck\n");
+                         file +
+                         ":9:1: note I157: stock length 80: the deepest cut Z-60 (N70 G01 Z-60.) + 5 for the cut-off"
+                         " + 15 held in the chuck\n");
   const CliRun th = runCli("check --lang th " + file);
   EXPECT_THAT(th.out, HasSubstr(": หมายเหตุ I152: ชิ้นงาน Ø50 x 80 มม. ประมาณจาก N30 G00 X52. Z0."));
 }
@@ -105,8 +107,8 @@ TEST(CliStock, SimulateCutsTheStockOptionsTube) {
 TEST(CliStock, BadValuesExitTwoAndSayWhatIsAllowed) {
   const std::string file = writeFile("bad.nc", kPlain);
   // Bars no lathe holds (issue 29 item 9: 50x1e308 took minutes to draw, 1e308x1e308 gave "Taper nan°").
-  for (const char* bad : {"50", "0x10", "50x0", "50x100x60", "ax10", "50x100in5", "-50x10", "50x1e308", "1e308x1e308",
-                          "10000x50"}) {
+  for (const char* bad :
+       {"50", "0x10", "50x0", "50x100x60", "ax10", "50x100in5", "-50x10", "50x1e308", "1e308x1e308", "10000x50"}) {
     for (const char* command : {"check", "simulate"}) {
       const CliRun run = runCli(std::string(command) + " " + file + " --stock " + bad);
       EXPECT_EQ(run.exitCode, 2) << command << " " << bad;

@@ -60,28 +60,29 @@ std::string writeProgram(const std::string& name, const std::string& text) {
 
 // A Fanuc program with a cut-off tool at station 10, which the shipped tools.cfg leaves empty.
 const char* kProgram =
-    "O0010\n"                       // 1
-    "G21 G40 G99\n"                 // 2
-    "T0101 (OD ROUGH)\n"            // 3
-    "G97 S800 M03\n"                // 4
-    "G00 X52. Z2.\n"                // 5
-    "G01 Z-30. F0.2\n"              // 6
-    "G00 X60. Z2.\n"                // 7
-    "(CUT OFF)\n"                   // 8
-    "T1010\n"                       // 9
-    "G97 S500 M03\n"                // 10
-    "G00 X55. Z-43.\n"              // 11
-    "G01 X-1. F0.05\n"              // 12
-    "G00 X60.\n"                    // 13
-    "M05\n"                         // 14
-    "M30\n";                        // 15
+    "O0010\n"             // 1
+    "G21 G40 G99\n"       // 2
+    "T0101 (OD ROUGH)\n"  // 3
+    "G97 S800 M03\n"      // 4
+    "G00 X52. Z2.\n"      // 5
+    "G01 Z-30. F0.2\n"    // 6
+    "G00 X60. Z2.\n"      // 7
+    "(CUT OFF)\n"         // 8
+    "T1010\n"             // 9
+    "G97 S500 M03\n"      // 10
+    "G00 X55. Z-43.\n"    // 11
+    "G01 X-1. F0.05\n"    // 12
+    "G00 X60.\n"          // 13
+    "M05\n"               // 14
+    "M30\n";              // 15
 
 TEST(CliTools, CheckPrintsTheChoiceAsANoteAndAcceptsTheStation) {
   const std::string file = writeProgram("cutoff.nc", kProgram);
   const CliResult r = run("check '" + file + "'");
   EXPECT_EQ(r.exitCode, 0) << r.out;
   EXPECT_THAT(r.out, HasSubstr(file + ":8:1: note I401: T10 = parting-3mm (comment \"CUT OFF\" on line 8)"));
-  EXPECT_THAT(r.out, HasSubstr(file + ":8:1: note I410: offset 10 was 0 0 0 0: nose radius 0 and tip 3 of parting-3mm"));
+  EXPECT_THAT(r.out,
+              HasSubstr(file + ":8:1: note I410: offset 10 was 0 0 0 0: nose radius 0 and tip 3 of parting-3mm"));
   EXPECT_THAT(r.out, Not(HasSubstr("E305")));
   const CliResult th = run("check '" + file + "' --lang th");
   EXPECT_THAT(th.out, HasSubstr(file + ":8:1: หมายเหตุ I401: T10 = parting-3mm (หมายเหตุ \"CUT OFF\" ในบรรทัดที่ 8)"));

@@ -24,8 +24,8 @@ struct Output {
 };
 
 Output cli(const std::string& args) {
-  const std::string command = "env LC_ALL= LC_MESSAGES= LANG=C '" KLUENG_CLI_PATH "' " + args +
-                              " --config '" KLUENG_SOURCE_DIR "' 2>&1";
+  const std::string command =
+      "env LC_ALL= LC_MESSAGES= LANG=C '" KLUENG_CLI_PATH "' " + args + " --config '" KLUENG_SOURCE_DIR "' 2>&1";
   Output r;
   FILE* pipe = ::popen(command.c_str(), "r");
   if (!pipe) return r;
@@ -85,9 +85,11 @@ TEST(CliUnits, AG20ProgramsFeaturesAreInInches) {
   EXPECT_THAT(mm.out, HasSubstr("Cylinder Ø44.45, Z-25.4 to Z-76.2, length 50.8\n"));
   EXPECT_THAT(mm.out, HasSubstr("Chamfer C0.8 (0.801 × 45°)"));
   // An mm program says mm with no option, an inch override says inches.
-  const fs::path metric = write("metric-shaft.txt", "Metric shaft\nShaft MS-01\nSteel\n150\n1100\nKlueng tests\nG21 G99\nT0101\n"
-                                                    "G97 S1000 M03\nG00 X52. Z0.\nG01 X-1.6 F0.2\nG00 X60. Z5.\nM30\n");
-  EXPECT_THAT(cli("simulate '" + metric.string() + "' --features").out, HasSubstr("Cylinder Ø50, Z0 to Z-100, length 100\n"));
+  const fs::path metric = write("metric-shaft.txt",
+                                "Metric shaft\nShaft MS-01\nSteel\n150\n1100\nKlueng tests\nG21 G99\nT0101\n"
+                                "G97 S1000 M03\nG00 X52. Z0.\nG01 X-1.6 F0.2\nG00 X60. Z5.\nM30\n");
+  EXPECT_THAT(cli("simulate '" + metric.string() + "' --features").out,
+              HasSubstr("Cylinder Ø50, Z0 to Z-100, length 100\n"));
   EXPECT_THAT(cli("simulate '" + metric.string() + "' --features --show-units inch").out,
               HasSubstr("Cylinder Ø1.9685″, Z0.0000 to Z-3.9370, length 3.9370″\n"));
 }

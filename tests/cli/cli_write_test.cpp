@@ -158,8 +158,7 @@ TEST_F(CliWrite, SimulateAndGenerateOnAFullDiskKeepTheOldFiles) {
 
 const std::string kReadOnlyEn =
     ": the file is read-only, so it was not replaced; write to another file, or make it writable first\n";
-const std::string kReadOnlyTh =
-    ": ไฟล์นี้เป็นแบบอ่านอย่างเดียว จึงไม่ได้เขียนทับ ให้บันทึกเป็นไฟล์อื่น หรือเปลี่ยนให้เขียนได้ก่อน\n";
+const std::string kReadOnlyTh = ": ไฟล์นี้เป็นแบบอ่านอย่างเดียว จึงไม่ได้เขียนทับ ให้บันทึกเป็นไฟล์อื่น หรือเปลี่ยนให้เขียนได้ก่อน\n";
 
 // Item 2: a read-only output (0444) is refused, root included, and keeps its bytes.
 TEST_F(CliWrite, AReadOnlyOutputIsRefused) {

@@ -64,7 +64,8 @@ class ClassGradeTest : public QObject {
     QVERIFY(!sample.isEmpty());
     QDir(dir.path()).mkdir(QStringLiteral("class"));
     write(dir.filePath(QStringLiteral("class/anna.nc")), sample);
-    write(dir.filePath(QStringLiteral("class/boon.nc")), QByteArray(sample).replace("N380 G03 X40. Z-22.", "N380 G03 X39.98 Z-22."));
+    write(dir.filePath(QStringLiteral("class/boon.nc")),
+          QByteArray(sample).replace("N380 G03 X40. Z-22.", "N380 G03 X39.98 Z-22."));
     write(dir.filePath(QStringLiteral("class/chai.nc")),
           QByteArray(sample).replace("N410 X46. Z-41.\nN420 Z-60.", "N410 X45.95 Z-41.\nN420 Z-60."));
     write(dir.filePath(QStringLiteral("shaft.json")), kDrawing);
@@ -83,7 +84,7 @@ class ClassGradeTest : public QObject {
     QCOMPARE(table->item(0, 1)->text(), QStringLiteral("pass"));
     QCOMPARE(table->item(1, 1)->text(), QStringLiteral("fail"));
     QCOMPARE(table->item(1, 7)->text(), QStringLiteral("3 of 4 in tolerance"));
-    QCOMPARE(table->item(2, 1)->text(), QStringLiteral("pass"));  // Ø46 exactly at its lower limit
+    QCOMPARE(table->item(2, 1)->text(), QStringLiteral("pass"));    // Ø46 exactly at its lower limit
     QVERIFY(table->isColumnHidden(5) && table->isColumnHidden(6));  // no reference: no leftover, no gouge
     QCOMPARE(dialog.summary()->text(), QStringLiteral("3 programs: 2 pass, 1 fail"));
     // The selected student's dimensions.
@@ -122,7 +123,8 @@ class ClassGradeTest : public QObject {
     QCOMPARE(details->item(2, 4)->text(), QStringLiteral("นอกพิกัด"));
     QVERIFY2(dialog.savePdf(dir.filePath(QStringLiteral("th.pdf")), &why), qPrintable(why));
     const QString th = pdfText(dir.filePath(QStringLiteral("th.pdf")));
-    QVERIFY2(th.contains(QStringLiteral("shaft.json")) && th.contains(QStringLiteral("39.992 – 40.008")), qPrintable(th));
+    QVERIFY2(th.contains(QStringLiteral("shaft.json")) && th.contains(QStringLiteral("39.992 – 40.008")),
+             qPrintable(th));
     QVERIFY2(th.contains(QStringLiteral("แบบงาน")), qPrintable(th));
     Language::instance()->setLanguage(QStringLiteral("en"));
   }
@@ -130,7 +132,8 @@ class ClassGradeTest : public QObject {
   void aDrawingWithoutTolerancesSaysWhatToDo() {
     QTemporaryDir dir;
     QDir(dir.path()).mkdir(QStringLiteral("class"));
-    write(dir.filePath(QStringLiteral("class/anna.nc")), readAll(QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt")));
+    write(dir.filePath(QStringLiteral("class/anna.nc")),
+          readAll(QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt")));
     write(dir.filePath(QStringLiteral("plain.json")),
           R"({ "stock": { "diameter": 50, "length": 100 }, "outside": [ { "cylinder": 30, "length": 20 } ] })");
     write(dir.filePath(QStringLiteral("broken.json")), "{ \"stock\": ");
@@ -140,7 +143,8 @@ class ClassGradeTest : public QObject {
     dialog.setDrawing(dir.filePath(QStringLiteral("plain.json")));
     dialog.grade();
     QVERIFY(!dialog.isGrading());
-    QVERIFY2(dialog.summary()->text().contains(QStringLiteral("has no toleranced dimension")), qPrintable(dialog.summary()->text()));
+    QVERIFY2(dialog.summary()->text().contains(QStringLiteral("has no toleranced dimension")),
+             qPrintable(dialog.summary()->text()));
     // A general tolerance (ISO 2768-m) gives the drawing's sizes their tolerances.
     dialog.setGeneralTolerance(QStringLiteral("m"));
     QSignalSpy done(&dialog, &ClassGradeDialog::finished);
@@ -150,7 +154,8 @@ class ClassGradeTest : public QObject {
     // A file that is not JSON: its line and column.
     dialog.setDrawing(dir.filePath(QStringLiteral("broken.json")));
     dialog.grade();
-    QVERIFY2(dialog.summary()->text().contains(QStringLiteral("F180")) || dialog.summary()->text().contains(QStringLiteral("line 1")),
+    QVERIFY2(dialog.summary()->text().contains(QStringLiteral("F180")) ||
+                 dialog.summary()->text().contains(QStringLiteral("line 1")),
              qPrintable(dialog.summary()->text()));
   }
 };

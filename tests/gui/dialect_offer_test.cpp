@@ -131,8 +131,9 @@ class DialectOfferTest : public QObject {
     Language::instance()->setLanguage(QStringLiteral("en"));
     core::gcode::Dialect romi{};
     QVERIFY(core::gcode::parseDialectId("romi-gl240m", romi));
-    const QByteArray body = "G90 G95 G21;\nG92 S3000;\nT0101;\nG97 S800 M03;\nG00 X24. Z5.;\n"
-                            "G78 X19.4 Z-13. F1.5;\nX18.9;\nG00 X100. Z100.;\nM30;\n";
+    const QByteArray body =
+        "G90 G95 G21;\nG92 S3000;\nT0101;\nG97 S800 M03;\nG00 X24. Z5.;\n"
+        "G78 X19.4 Z-13. F1.5;\nX18.9;\nG00 X100. Z100.;\nM30;\n";
     QTemporaryDir dir;
     const QString named = dir.filePath(QStringLiteral("named.nc"));
     QFile f(named);

@@ -48,7 +48,9 @@ const char* const kInchShaft =
     "M05\n"
     "M30\n";
 
-bool waitIdle(MainWindow& w) { return QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000); }
+bool waitIdle(MainWindow& w) {
+  return QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000);
+}
 
 QStringList listChildren(QTreeWidget* list, const QString& title) {
   QStringList out;
@@ -111,7 +113,8 @@ class InchUnitsTest : public QObject {
     output->fitToView();
     QCoreApplication::processEvents();
     const QStringList inchZ = output->rulerLabels(true);
-    QVERIFY2(inchZ.contains(QStringLiteral("-1")) || inchZ.contains(QStringLiteral("-2")), qPrintable(inchZ.join(u' ')));
+    QVERIFY2(inchZ.contains(QStringLiteral("-1")) || inchZ.contains(QStringLiteral("-2")),
+             qPrintable(inchZ.join(u' ')));
 
     PartPanel* part = w.partPanel();
     part->analyse();

@@ -131,7 +131,7 @@ class LargeProgramTest : public QObject {
     QCOMPARE(w.editor()->firstFileLine(), 7);  // the generator writes the 6-line header
     QVERIFY(w.editor()->document()->findBlockByNumber(1).text().startsWith(QStringLiteral("N1 ")));
     QCOMPARE(w.diagnosticsPanel()->errorCount(), 0);  // the generator writes a valid program
-    QVERIFY(beats > 10);  // the event loop kept running while loading and checking
+    QVERIFY(beats > 10);                              // the event loop kept running while loading and checking
     qInfo("100k-line open + check: %lld ms total, %d heartbeats, longest event-loop stall %lld ms", total, beats,
           longest);
 
@@ -157,7 +157,8 @@ class LargeProgramTest : public QObject {
     CodeEditor editor;
     editor.resize(600, 400);
     QStringList lines;
-    for (int i = 0; i < 60000; ++i) lines << QStringLiteral("N%1 G01 X%2. Z-5. F0.2").arg(i % 9999 + 1).arg(20 + i % 30);
+    for (int i = 0; i < 60000; ++i)
+      lines << QStringLiteral("N%1 G01 X%2. Z-5. F0.2").arg(i % 9999 + 1).arg(20 + i % 30);
     editor.setPlainText(lines.join(QLatin1Char('\n')));
     editor.show();
     QVERIFY(QTest::qWaitForWindowExposed(&editor));
@@ -171,7 +172,8 @@ class LargeProgramTest : public QObject {
     };
     const auto underlinedAt = [](const QTextBlock& b, int pos) {
       for (const QTextLayout::FormatRange& r : b.layout()->formats())
-        if (pos >= r.start && pos < r.start + r.length) return r.format.underlineStyle() == QTextCharFormat::WaveUnderline;
+        if (pos >= r.start && pos < r.start + r.length)
+          return r.format.underlineStyle() == QTextCharFormat::WaveUnderline;
       return false;
     };
     const QTextBlock first = doc->firstBlock();

@@ -93,8 +93,7 @@ void answerNextMessageBox(const QString& buttonName, QString* seenBoxName = null
 // The underline colour formats the highlighter put on block `block` at UTF-16 index `pos`.
 bool hasWavyUnderlineAt(const QTextBlock& block, int pos) {
   for (const QTextLayout::FormatRange& r : block.layout()->formats())
-    if (pos >= r.start && pos < r.start + r.length &&
-        r.format.underlineStyle() == QTextCharFormat::WaveUnderline)
+    if (pos >= r.start && pos < r.start + r.length && r.format.underlineStyle() == QTextCharFormat::WaveUnderline)
       return true;
   return false;
 }
@@ -143,9 +142,8 @@ class MainWindowTest : public QObject {
     QVERIFY(panel->errorCount() >= 15);
     // "N30 G01 X30. Y5. F0.2" is file line 11; Y (column 14) is not a lathe word.
     const auto& diags = panel->diagnostics();
-    auto y = std::find_if(diags.begin(), diags.end(), [](const core::Diagnostic& d) {
-      return d.range.line == 11 && d.range.column == 14;
-    });
+    auto y = std::find_if(diags.begin(), diags.end(),
+                          [](const core::Diagnostic& d) { return d.range.line == 11 && d.range.column == 14; });
     QVERIFY(y != diags.end());
     QCOMPARE(y->severity, core::Severity::Error);
     const QTextBlock block = w.editor()->document()->findBlockByNumber(11 - 7);
@@ -166,8 +164,10 @@ class MainWindowTest : public QObject {
     for (const auto& d : diags) {
       if (d.range.line < 7 || d.range.column < 1) continue;
       const QTextBlock b = w.editor()->document()->findBlockByNumber(d.range.line - 7);
-      QVERIFY2(hasWavyUnderlineAt(b, std::min<int>(d.range.column - 1, b.length() - 2)),
-               qPrintable(QStringLiteral("%1 at %2:%3").arg(QString::fromStdString(d.code)).arg(d.range.line).arg(d.range.column)));
+      QVERIFY2(
+          hasWavyUnderlineAt(b, std::min<int>(d.range.column - 1, b.length() - 2)),
+          qPrintable(
+              QStringLiteral("%1 at %2:%3").arg(QString::fromStdString(d.code)).arg(d.range.line).arg(d.range.column)));
     }
   }
 
@@ -227,8 +227,8 @@ class MainWindowTest : public QObject {
     QCOMPARE(w.diagnosticsPanel()->errorCount(), 1);
     const int warnings = w.diagnosticsPanel()->warningCount();
     QCOMPARE(w.diagnosticsPanel()->windowTitle(),
-             QStringLiteral("Diagnostics: 1 error, %1").arg(warnings == 1 ? QStringLiteral("1 warning")
-                                                                          : QStringLiteral("%1 warnings").arg(warnings)));
+             QStringLiteral("Diagnostics: 1 error, %1")
+                 .arg(warnings == 1 ? QStringLiteral("1 warning") : QStringLiteral("%1 warnings").arg(warnings)));
     Language::instance()->setLanguage(QStringLiteral("th"));
     QTRY_COMPARE(w.diagnosticsPanel()->windowTitle(),
                  QStringLiteral("การตรวจสอบไวยากรณ์: ข้อผิดพลาด 1 รายการ, คำเตือน %1 รายการ").arg(warnings));
@@ -362,7 +362,8 @@ class MainWindowTest : public QObject {
     const QList<QAction*> actions = w.findChildren<QAction*>();
     int checked = 0;
     for (QAction* a : actions) {
-      if (a->parent() != &w || a->objectName().isEmpty() || a->text().isEmpty() || a->objectName().startsWith(QStringLiteral("actionSpeed")))
+      if (a->parent() != &w || a->objectName().isEmpty() || a->text().isEmpty() ||
+          a->objectName().startsWith(QStringLiteral("actionSpeed")))
         continue;
       if (a->objectName() == QStringLiteral("actionDialectFanuc")) continue;  // a product name
       bool thai = false;
@@ -425,7 +426,7 @@ class MainWindowTest : public QObject {
     QVERIFY(w.editor()->helpForPosition(15).contains(
         QString::fromUtf8(m03->nameEn.data(), static_cast<qsizetype>(m03->nameEn.size()))));
     QVERIFY(w.editor()->helpForPosition(9).contains(QStringLiteral("diameter")));  // X20.
-    QVERIFY(w.editor()->helpForPosition(19).isEmpty());  // G02 inside a comment
+    QVERIFY(w.editor()->helpForPosition(19).isEmpty());                            // G02 inside a comment
     Language::instance()->setLanguage(QStringLiteral("th"));
     QVERIFY(w.editor()->helpForPosition(5).contains(
         QString::fromUtf8(g01->nameTh.data(), static_cast<qsizetype>(g01->nameTh.size()))));
@@ -473,7 +474,8 @@ class MainWindowTest : public QObject {
     // Its worked example is on the page, as a whole program, with a picture of its path; the tip numbers too.
     QVERIFY(help->browser()->toPlainText().contains(QStringLiteral("G76 X46.16 Z-25. P920 Q300 F1.5")));
     for (const QString& picture : {QStringLiteral("help-path-G76.png"), QStringLiteral("help-tips.png")}) {
-      const QImage image = help->browser()->document()->resource(QTextDocument::ImageResource, QUrl(picture)).value<QImage>();
+      const QImage image =
+          help->browser()->document()->resource(QTextDocument::ImageResource, QUrl(picture)).value<QImage>();
       QVERIFY2(!image.isNull() && image.width() > 200, qPrintable(picture));
       QVERIFY2(help->browser()->toHtml().contains(picture), qPrintable(picture));
     }
@@ -481,7 +483,8 @@ class MainWindowTest : public QObject {
       help->searchField()->setText(query);
       QVERIFY(help->hits()->isVisible());
       bool found = false;
-      for (int i = 0; i < help->hits()->count(); ++i) found |= help->hits()->item(i)->data(Qt::UserRole).toString() == QStringLiteral("G71");
+      for (int i = 0; i < help->hits()->count(); ++i)
+        found |= help->hits()->item(i)->data(Qt::UserRole).toString() == QStringLiteral("G71");
       QVERIFY2(found, qPrintable(query));
     }
     help->searchField()->setText(QStringLiteral("g71"));
@@ -611,10 +614,10 @@ class MainWindowTest : public QObject {
         if (pos >= r.start && pos < r.start + r.length) return r.format.foreground().color();
       return QColor();
     };
-    QCOMPARE(colourIn(m, 0), h->format(K::Macro).foreground().color());    // WHILE
-    QCOMPARE(colourIn(m, 7), h->format(K::Variable).foreground().color()); // #101
-    QCOMPARE(colourIn(m, 12), h->format(K::Macro).foreground().color());   // GT
-    QCOMPARE(colourIn(m, 20), h->format(K::Macro).foreground().color());   // DO
+    QCOMPARE(colourIn(m, 0), h->format(K::Macro).foreground().color());     // WHILE
+    QCOMPARE(colourIn(m, 7), h->format(K::Variable).foreground().color());  // #101
+    QCOMPARE(colourIn(m, 12), h->format(K::Macro).foreground().color());    // GT
+    QCOMPARE(colourIn(m, 20), h->format(K::Macro).foreground().color());    // DO
     QCOMPARE(colourIn(m.next(), 4), h->format(K::Axis).foreground().color());
     QCOMPARE(colourIn(m.next(), 5), h->format(K::Variable).foreground().color());
   }
@@ -721,8 +724,9 @@ class MainWindowTest : public QObject {
     const double seconds = w.runController()->timeline()->cycleTime();
     QVERIFY(seconds > 10.0);
     const int minutes = static_cast<int>(seconds / 60.0);
-    const QString expected = minutes > 0 ? QStringLiteral("%1 min %2 s").arg(minutes).arg(seconds - 60.0 * minutes, 0, 'f', 1)
-                                         : QStringLiteral("%1 s").arg(seconds, 0, 'f', 1);
+    const QString expected = minutes > 0
+                                 ? QStringLiteral("%1 min %2 s").arg(minutes).arg(seconds - 60.0 * minutes, 0, 'f', 1)
+                                 : QStringLiteral("%1 s").arg(seconds, 0, 'f', 1);
     QCOMPARE(w.bannerText(), QStringLiteral("The program ended. Cycle time: %1.").arg(expected));
     QCOMPARE(MainWindow::formatDuration(192.44), QStringLiteral("3 min 12.4 s"));
   }
@@ -782,7 +786,8 @@ class MainWindowTest : public QObject {
     const double seconds = w.runController()->timeline()->cycleTime();
     Language::instance()->setLanguage(QStringLiteral("th"));
     QCoreApplication::processEvents();
-    QCOMPARE(w.bannerText(), QStringLiteral("จบโปรแกรมแล้ว เวลาทำงาน (cycle time): %1").arg(MainWindow::formatDuration(seconds)));
+    QCOMPARE(w.bannerText(),
+             QStringLiteral("จบโปรแกรมแล้ว เวลาทำงาน (cycle time): %1").arg(MainWindow::formatDuration(seconds)));
     QVERIFY(MainWindow::formatDuration(seconds).contains(QStringLiteral("วินาที")));
     Language::instance()->setLanguage(QStringLiteral("en"));
     QCoreApplication::processEvents();
@@ -819,7 +824,8 @@ class MainWindowTest : public QObject {
       if (visible.contains(render::toScene(300.0, 0.0))) return QStringLiteral("Z300 is in sight");
       if (!visible.contains(render::toScene(0.0, 25.0)) || !visible.contains(render::toScene(-100.0, -25.0)))
         return QStringLiteral("the bar is not whole in sight");
-      const int bar = view->mapFromScene(render::toScene(0.0, 25.0)).x() - view->mapFromScene(render::toScene(-100.0, 25.0)).x();
+      const int bar =
+          view->mapFromScene(render::toScene(0.0, 25.0)).x() - view->mapFromScene(render::toScene(-100.0, 25.0)).x();
       if (bar < 0.4 * view->viewport()->width())
         return QStringLiteral("the bar is %1 px of %2").arg(bar).arg(view->viewport()->width());
       return {};
@@ -870,8 +876,11 @@ class MainWindowTest : public QObject {
       QVERIFY(labels.size() >= 22);
       for (QLabel* l : labels) {
         QVERIFY2(l->isVisible(), qPrintable(l->text()));
-        QVERIFY2(l->width() >= l->sizeHint().width(),
-                 qPrintable(QStringLiteral("%1: %2 px of %3 (%4)").arg(l->text()).arg(l->width()).arg(l->sizeHint().width()).arg(lang)));
+        QVERIFY2(l->width() >= l->sizeHint().width(), qPrintable(QStringLiteral("%1: %2 px of %3 (%4)")
+                                                                     .arg(l->text())
+                                                                     .arg(l->width())
+                                                                     .arg(l->sizeHint().width())
+                                                                     .arg(lang)));
         QVERIFY2(l->geometry().right() <= w.statusFields()->width(), qPrintable(l->text()));
       }
       QVERIFY(w.statusFields()->geometry().right() <= w.width());
@@ -896,11 +905,12 @@ class MainWindowTest : public QObject {
     QTRY_VERIFY(w.explainBar()->isVisible());
     const int line = w.editor()->executingFileLine();
     QCOMPARE(line, 13);
-    const core::machine::StateSnapshot& after = run->timeline()->snapshots[static_cast<std::size_t>(run->currentSnapshot())];
+    const core::machine::StateSnapshot& after =
+        run->timeline()->snapshots[static_cast<std::size_t>(run->currentSnapshot())];
     QCOMPARE(after.line, 13);
     const core::gcode::Program one = core::gcode::parse("N50 G00 X54. Z2. M08", 13);
-    const QString expected = QString::fromStdString(
-        core::machine::explainBlock(one.blocks[0], after, core::gcode::Dialect::Fanuc, core::Lang::En, "N50 G00 X54. Z2. M08"));
+    const QString expected = QString::fromStdString(core::machine::explainBlock(
+        one.blocks[0], after, core::gcode::Dialect::Fanuc, core::Lang::En, "N50 G00 X54. Z2. M08"));
     QTRY_COMPARE(w.explainBar()->text(), expected);
     QVERIFY(expected.startsWith(QStringLiteral("N50 G00 X54. Z2. M08: move at rapid speed")));
     // N70 G01 F0.2, the face cut under G96, ends at the centre: the G50 limit holds the rpm.
@@ -909,7 +919,8 @@ class MainWindowTest : public QObject {
       QTRY_COMPARE_WITH_TIMEOUT(run->state(), RunState::Paused, 20000);
     }
     QTRY_VERIFY(w.explainBar()->text().contains(QStringLiteral("(G96) the spindle turns 2500 rpm here")));
-    QVERIFY(w.explainBar()->text().startsWith(QStringLiteral("N70 G01 X-1.6 F0.2: cut in a straight line to \u00D8-1.6")));
+    QVERIFY(
+        w.explainBar()->text().startsWith(QStringLiteral("N70 G01 X-1.6 F0.2: cut in a straight line to \u00D8-1.6")));
     QCOMPARE(w.explainBar()->explainLine(w.editor()->executingFileLine()), w.explainBar()->text());
     // In Thai.
     Language::instance()->setLanguage(QStringLiteral("th"));

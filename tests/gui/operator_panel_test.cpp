@@ -40,9 +40,7 @@ QString minSec(double s) {
 class OperatorPanelTest : public QObject {
   Q_OBJECT
  private slots:
-  void initTestCase() {
-    klueng::test::startInEnglish();
-  }
+  void initTestCase() { klueng::test::startInEnglish(); }
 
   void touchOffMdiAndOverridesFromThePanel() {
     gui::MainWindow w;
@@ -128,7 +126,8 @@ class OperatorPanelTest : public QObject {
     QVERIFY(panel->mdiText()->toPlainText().isEmpty());
     panel->mdiText()->setPlainText(QStringLiteral("G01 X40 Q"));
     panel->pressCycleStart();
-    QVERIFY2(panel->messageLabel()->text().contains(QStringLiteral("MDI line 1")), qPrintable(panel->messageLabel()->text()));
+    QVERIFY2(panel->messageLabel()->text().contains(QStringLiteral("MDI line 1")),
+             qPrintable(panel->messageLabel()->text()));
 
     // New offsets drop the last run (it was made with the old ones): run again with the touch-off's.
     QVERIFY(!runner->timeline());
@@ -149,8 +148,9 @@ class OperatorPanelTest : public QObject {
     o.spindle = 120;
     const double slow = ctl::withOverrides(t, o, c->setup().machine).cycleTime();
     QVERIFY(slow > t.cycleTime() * 1.5);
-    QCOMPARE(panel->cycleTimeLabel()->text(),
-             QStringLiteral("Cycle time at these overrides: %1 (at 100 %: %2)").arg(minSec(slow), minSec(t.cycleTime())));
+    QCOMPARE(
+        panel->cycleTimeLabel()->text(),
+        QStringLiteral("Cycle time at these overrides: %1 (at 100 %: %2)").arg(minSec(slow), minSec(t.cycleTime())));
 
     // Referenced and no alarm: MEM + CYCLE START runs the job's program.
     panel->pressReset();
@@ -174,7 +174,8 @@ class OperatorPanelTest : public QObject {
     // Thai: the dock's words and the tips follow the language; the keys stay the control's.
     gui::Language::instance()->setLanguage(QStringLiteral("th"));
     QTRY_COMPARE(panel->windowTitle(), QStringLiteral("แผงควบคุมเครื่อง"));
-    QCOMPARE(panel->findChild<QToolButton*>(QStringLiteral("operatorCycleStart"))->text(), QStringLiteral("CYCLE START"));
+    QCOMPARE(panel->findChild<QToolButton*>(QStringLiteral("operatorCycleStart"))->text(),
+             QStringLiteral("CYCLE START"));
     gui::Language::instance()->setLanguage(QStringLiteral("en"));
   }
 
@@ -208,7 +209,8 @@ class OperatorPanelTest : public QObject {
     QSignalSpy started(panel, &gui::OperatorPanel::cycleStartRequested);
     panel->pressMode(ctl::Mode::Memory);
     panel->pressCycleStart();
-    QVERIFY2(panel->messageLabel()->text().startsWith(QStringLiteral("A609")), qPrintable(panel->messageLabel()->text()));
+    QVERIFY2(panel->messageLabel()->text().startsWith(QStringLiteral("A609")),
+             qPrintable(panel->messageLabel()->text()));
     QVERIFY(panel->messageLabel()->text().contains(QStringLiteral("T01 (X and Z)")));
     QCOMPARE(started.count(), 0);
     // Another machine: the panel powers on as its control.

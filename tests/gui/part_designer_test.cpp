@@ -106,7 +106,8 @@ class PartDesignerTest : public QObject {
     QVERIFY(d->findChild<QPushButton*>(QStringLiteral("designUseFileBar"))->isHidden());
 
     // Ø26 after Ø30: an undercut. Typed into the table.
-    QVERIFY(d->model()->setData(d->model()->index(1, gui::DesignTableModel::Diameter), QStringLiteral("26"), Qt::EditRole));
+    QVERIFY(
+        d->model()->setData(d->model()->index(1, gui::DesignTableModel::Diameter), QStringLiteral("26"), Qt::EditRole));
     QVERIFY(waitLoop(d));
     QCOMPARE(d->design().outside[1].diameter, 26.0);
     QCOMPARE(d->verdict(), QStringLiteral("This part cannot be turned this way:"));
@@ -115,8 +116,10 @@ class PartDesignerTest : public QObject {
     QVERIFY(!d->findChild<QPushButton*>(QStringLiteral("designCreateProgram"))->isEnabled());
     // Nonsense is refused by the cell: no change, no undo step.
     const int steps = d->undoStack()->count();
-    QVERIFY(!d->model()->setData(d->model()->index(0, gui::DesignTableModel::Edge), QStringLiteral("X3"), Qt::EditRole));
-    QVERIFY(!d->model()->setData(d->model()->index(0, gui::DesignTableModel::Length), QStringLiteral("-5"), Qt::EditRole));
+    QVERIFY(
+        !d->model()->setData(d->model()->index(0, gui::DesignTableModel::Edge), QStringLiteral("X3"), Qt::EditRole));
+    QVERIFY(
+        !d->model()->setData(d->model()->index(0, gui::DesignTableModel::Length), QStringLiteral("-5"), Qt::EditRole));
     QCOMPARE(d->undoStack()->count(), steps);
     // Undo: Ø40 again and a match; redo: the undercut again.
     d->undoStack()->undo();
@@ -140,8 +143,10 @@ class PartDesignerTest : public QObject {
     const int row = 3;
     QCOMPARE(d->model()->index(row, gui::DesignTableModel::Feature).data().toString(), QStringLiteral("Groove"));
     QVERIFY(d->model()->setData(d->model()->index(row, gui::DesignTableModel::Z), QStringLiteral("-26"), Qt::EditRole));
-    QVERIFY(d->model()->setData(d->model()->index(row, gui::DesignTableModel::Length), QStringLiteral("5"), Qt::EditRole));
-    QVERIFY(d->model()->setData(d->model()->index(row, gui::DesignTableModel::Diameter), QStringLiteral("34"), Qt::EditRole));
+    QVERIFY(
+        d->model()->setData(d->model()->index(row, gui::DesignTableModel::Length), QStringLiteral("5"), Qt::EditRole));
+    QVERIFY(d->model()->setData(d->model()->index(row, gui::DesignTableModel::Diameter), QStringLiteral("34"),
+                                Qt::EditRole));
     QVERIFY(waitLoop(d));
     QVERIFY2(d->lastLoop()->matches(), qPrintable(lines(d->findings()).join(QLatin1Char('\n'))));
     QCOMPARE(d->design().grooves.size(), std::size_t{1});
@@ -211,9 +216,10 @@ class PartDesignerTest : public QObject {
     // A pin: Ø30 C2 spigot 25 long on Ø40, 55 in all, as LINE entities with the face at X100.
     QString dxf = QStringLiteral("0\nSECTION\n2\nENTITIES\n");
     const double pin[][4] = {{100, 0, 100, 13}, {100, 13, 98, 15}, {98, 15, 75, 15},
-                               {75, 15, 75, 20},  {75, 20, 45, 20},  {45, 20, 45, 0}};
+                             {75, 15, 75, 20},  {75, 20, 45, 20},  {45, 20, 45, 0}};
     for (const auto& l : pin)
-      dxf += QStringLiteral("0\nLINE\n8\nPART\n10\n%1\n20\n%2\n11\n%3\n21\n%4\n").arg(l[0]).arg(l[1]).arg(l[2]).arg(l[3]);
+      dxf +=
+          QStringLiteral("0\nLINE\n8\nPART\n10\n%1\n20\n%2\n11\n%3\n21\n%4\n").arg(l[0]).arg(l[1]).arg(l[2]).arg(l[3]);
     dxf += QStringLiteral("0\nENDSEC\n0\nEOF\n");
     const QString path = QDir::temp().filePath(QStringLiteral("klueng-pin.dxf"));
     QFile f(path);

@@ -45,9 +45,7 @@ QTreeWidgetItem* group(QTreeWidget* list, const QString& title) {
 class PartPanelTest : public QObject {
   Q_OBJECT
  private slots:
-  void initTestCase() {
-    klueng::test::startInEnglish();
-  }
+  void initTestCase() { klueng::test::startInEnglish(); }
 
   void sample01FeaturesCheckAndComparison() {
     gui::MainWindow w;
@@ -60,7 +58,8 @@ class PartPanelTest : public QObject {
     part->analyse();
 
     const QStringList features = texts(group(part->list(), QStringLiteral("Features")));
-    QVERIFY2(features.contains(QStringLiteral("Cylinder Ø30, Z-3 to Z-19.2, length 16.2")), qPrintable(features.join(u'\n')));
+    QVERIFY2(features.contains(QStringLiteral("Cylinder Ø30, Z-3 to Z-19.2, length 16.2")),
+             qPrintable(features.join(u'\n')));
     QVERIFY(features.contains(QStringLiteral("Chamfer C3 (3 × 45°), Ø24.469 to Ø30, Z-0.234 to Z-3")));
     QVERIFY(features.contains(QStringLiteral("Arc R2 round, centre Z-22 X36, Z-20 to Z-22")));
     QVERIFY(texts(group(part->list(), QStringLiteral("Part check"))).isEmpty());  // sample 01 is right
@@ -78,7 +77,8 @@ class PartPanelTest : public QObject {
     auto* editor = w.findChild<gui::CodeEditor*>();
     QVERIFY(editor);
     for (int i = 0; i < comp->childCount(); ++i)
-      if (comp->child(i)->text(0).startsWith(QStringLiteral("chamfer C3"))) emit part->list()->itemActivated(comp->child(i), 0);
+      if (comp->child(i)->text(0).startsWith(QStringLiteral("chamfer C3")))
+        emit part->list()->itemActivated(comp->child(i), 0);
     QCOMPARE(editor->cursorFileLine(), 43);
 
     // Selecting a feature marks its profile on the output screen.

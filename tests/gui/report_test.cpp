@@ -87,8 +87,8 @@ QString run(const QString& program, const QStringList& args) {
 
 // The TLWG Thai fonts reach their repositioned tone marks and vowels (drawn lower or
 // further left over some consonants) through the legacy Thai code points U+F700-U+F71A
-// of their cmap, draw a tone mark before the vowel it sits on, and shape SARA AM as NIKHAHIT + SARA AA; the PDF's text layer
-// therefore reads back with those. Map them to the Unicode letters they stand for.
+// of their cmap, draw a tone mark before the vowel it sits on, and shape SARA AM as NIKHAHIT + SARA AA; the PDF's text
+// layer therefore reads back with those. Map them to the Unicode letters they stand for.
 QString normaliseThai(QString text) {
   static const char16_t legacy[] = {0x0E10, 0x0E34, 0x0E35, 0x0E36, 0x0E37, 0x0E48, 0x0E49, 0x0E4A, 0x0E4B,
                                     0x0E4C, 0x0E48, 0x0E49, 0x0E4A, 0x0E4B, 0x0E4C, 0x0E0D, 0x0E31, 0x0E4D,
@@ -110,8 +110,8 @@ QString pdfText(const QString& pdf) {
 }
 QString pageText(const QString& pdf, int page) {
   const QString n = QString::number(page);
-  return normaliseThai(run(QStringLiteral("pdftotext"),
-                           {QStringLiteral("-raw"), QStringLiteral("-f"), n, QStringLiteral("-l"), n, pdf, QStringLiteral("-")}));
+  return normaliseThai(run(QStringLiteral("pdftotext"), {QStringLiteral("-raw"), QStringLiteral("-f"), n,
+                                                         QStringLiteral("-l"), n, pdf, QStringLiteral("-")}));
 }
 
 bool havePoppler() { return !QStandardPaths::findExecutable(QStringLiteral("pdftotext")).isEmpty(); }
@@ -133,10 +133,10 @@ class ReportTest : public QObject {
     QCOMPARE(render::reportDate(QDate(2026, 1, 2), ReportLanguage::Thai), QStringLiteral("2 มกราคม พ.ศ. 2569"));
     QCOMPARE(render::reportDate(QDate(2024, 2, 29), ReportLanguage::English), QStringLiteral("February 29, 2024"));
     // The status bar's short form: every Thai month's abbreviation, the year in the Buddhist era.
-    const QStringList thaiShort = {QStringLiteral("ม.ค."),  QStringLiteral("ก.พ."),  QStringLiteral("มี.ค."),
-                                   QStringLiteral("เม.ย."), QStringLiteral("พ.ค."),  QStringLiteral("มิ.ย."),
-                                   QStringLiteral("ก.ค."),  QStringLiteral("ส.ค."),  QStringLiteral("ก.ย."),
-                                   QStringLiteral("ต.ค."),  QStringLiteral("พ.ย."),  QStringLiteral("ธ.ค.")};
+    const QStringList thaiShort = {QStringLiteral("ม.ค."),  QStringLiteral("ก.พ."), QStringLiteral("มี.ค."),
+                                   QStringLiteral("เม.ย."), QStringLiteral("พ.ค."), QStringLiteral("มิ.ย."),
+                                   QStringLiteral("ก.ค."),  QStringLiteral("ส.ค."), QStringLiteral("ก.ย."),
+                                   QStringLiteral("ต.ค."),  QStringLiteral("พ.ย."), QStringLiteral("ธ.ค.")};
     for (int m = 1; m <= 12; ++m)
       QCOMPARE(render::reportDate(QDate(2026, m, 26), ReportLanguage::Thai, render::DateLength::Short),
                QStringLiteral("26 %1 2569").arg(thaiShort[m - 1]));
@@ -183,8 +183,9 @@ class ReportTest : public QObject {
     QVERIFY2(text.contains(total), qPrintable(total));
     for (const core::machine::ToolTime& t : timeline->timeByTool())
       if (t.tool > 0) {
-        const QString tool = QStringLiteral("T%1 %2").arg(t.tool, 2, 10, QLatin1Char('0')).arg(
-            render::durationText(t.seconds, ReportLanguage::English));
+        const QString tool = QStringLiteral("T%1 %2")
+                                 .arg(t.tool, 2, 10, QLatin1Char('0'))
+                                 .arg(render::durationText(t.seconds, ReportLanguage::English));
         QVERIFY2(text.contains(tool), qPrintable(tool));
       }
     QCOMPARE(render::durationText(192.44, ReportLanguage::English), QStringLiteral("3 min 12.4 s"));
@@ -196,9 +197,9 @@ class ReportTest : public QObject {
     const QString pdf = out(QStringLiteral("sheet-th.pdf"));
     QCOMPARE(writePdf(pdf, sampleData(ReportLanguage::Thai), ReportLanguage::Thai, Sheet::Program), 1);
     const QString text = pdfText(pdf);
-    for (const char* s : {"ชุดรหัสสั่งการทำงาน", "หน้าที่ 1", "ชื่องาน", "วัสดุ", "ชิ้นงาน", "เส้นผ่าศก. (มม.)", "ผู้เขียน",
-                          "ความยาว (มม.)", "19 ตุลาคม พ.ศ. 2542", "Step shaft exercise", "N100 G01 Z-59.8 F0.25",
-                          "เวลาทำงาน", "นาที"})
+    for (const char* s :
+         {"ชุดรหัสสั่งการทำงาน", "หน้าที่ 1", "ชื่องาน", "วัสดุ", "ชิ้นงาน", "เส้นผ่าศก. (มม.)", "ผู้เขียน", "ความยาว (มม.)",
+          "19 ตุลาคม พ.ศ. 2542", "Step shaft exercise", "N100 G01 Z-59.8 F0.25", "เวลาทำงาน", "นาที"})
       QVERIFY2(text.contains(QString::fromUtf8(s)), s);
     QVERIFY(!text.contains(QStringLiteral("CNC Program Sheet")));
     const QString fonts = run(QStringLiteral("pdffonts"), {pdf});
@@ -216,7 +217,9 @@ class ReportTest : public QObject {
     const QString pdf = out(QStringLiteral("long.pdf"));
     const int pages = writePdf(pdf, d, ReportLanguage::English, Sheet::Program);
     QVERIFY2(pages >= 3, qPrintable(QString::number(pages)));
-    QCOMPARE(run(QStringLiteral("pdfinfo"), {pdf}).contains(QRegularExpression(QStringLiteral("Pages:\\s+%1\\b").arg(pages))), true);
+    QCOMPARE(run(QStringLiteral("pdfinfo"), {pdf})
+                 .contains(QRegularExpression(QStringLiteral("Pages:\\s+%1\\b").arg(pages))),
+             true);
     int seen = 0;
     for (int p = 1; p <= pages; ++p) {
       const QString text = pageText(pdf, p);
@@ -247,14 +250,20 @@ class ReportTest : public QObject {
     writePdf(pdf, d, l, Sheet::Drawing);
     const QString text = pdfText(pdf);
     const QStringList expected =
-        lang ? QStringList{QStringLiteral("เอกสารแสดงภาพชิ้นงาน"), QStringLiteral("ชื่องาน"), QStringLiteral("ชิ้นงาน"),
-                           QStringLiteral("ผู้เขียน"), QStringLiteral("วัสดุ"), QStringLiteral("วันที่"),
-                           QStringLiteral("19 ตุลาคม พ.ศ. 2542"), QStringLiteral("มาตราส่วน")}
-             : QStringList{QStringLiteral("Part Drawing"), QStringLiteral("Project"), QStringLiteral("Part"),
-                           QStringLiteral("Programmer"), QStringLiteral("Material"), QStringLiteral("Date"),
+        lang ? QStringList{QStringLiteral("เอกสารแสดงภาพชิ้นงาน"),
+                           QStringLiteral("ชื่องาน"),
+                           QStringLiteral("ชิ้นงาน"),
+                           QStringLiteral("ผู้เขียน"),
+                           QStringLiteral("วัสดุ"),
+                           QStringLiteral("วันที่"),
+                           QStringLiteral("19 ตุลาคม พ.ศ. 2542"),
+                           QStringLiteral("มาตราส่วน")}
+             : QStringList{QStringLiteral("Part Drawing"),     QStringLiteral("Project"),  QStringLiteral("Part"),
+                           QStringLiteral("Programmer"),       QStringLiteral("Material"), QStringLiteral("Date"),
                            QStringLiteral("October 19, 1999"), QStringLiteral("Scale")};
     for (const QString& s : expected) QVERIFY2(text.contains(s), qPrintable(s + QStringLiteral("\n") + text));
-    for (const char* s : {"Step shaft exercise", "Shaft SS-01", "Klueng samples", "Aluminium 6061", "01-step-shaft.txt"})
+    for (const char* s :
+         {"Step shaft exercise", "Shaft SS-01", "Klueng samples", "Aluminium 6061", "01-step-shaft.txt"})
       QVERIFY2(text.contains(QString::fromUtf8(s)), s);
     QVERIFY(text.contains(render::kluengVersion()));
     QVERIFY(text.contains(QStringLiteral("Klueng 0.")));
@@ -269,15 +278,15 @@ class ReportTest : public QObject {
     QVERIFY(d.part.containsMaterial(-30.0, 19.8));
     QVERIFY(!d.part.containsMaterial(-30.0, 20.3));
     QVERIFY(d.part.containsMaterial(-59.9, 22.9));
-    QVERIFY(!d.part.containsMaterial(-59.9, 23.3));   // no nose fillet up the bar's face
+    QVERIFY(!d.part.containsMaterial(-59.9, 23.3));  // no nose fillet up the bar's face
     QVERIFY(!d.part.containsMaterial(-80.0, 10.0));
-    QVERIFY(d.part.blank.isEmpty());                   // nor the bar's outline
+    QVERIFY(d.part.blank.isEmpty());  // nor the bar's outline
     QCOMPARE(d.features.overallLength(), 60.0);
     const QString pdf = out(QStringLiteral("drawing-size.pdf"));
     writePdf(pdf, d, ReportLanguage::English, Sheet::Drawing);
     const QString text = pdfText(pdf);
     QVERIFY2(text.contains(QStringLiteral("Ø46")) && !text.contains(QStringLiteral("Ø50")), qPrintable(text));
-    QVERIFY(text.contains(QRegularExpression(QStringLiteral("(^|\\n)60\\n"))));   // overall length: the part's
+    QVERIFY(text.contains(QRegularExpression(QStringLiteral("(^|\\n)60\\n"))));  // overall length: the part's
     QVERIFY(!text.contains(QStringLiteral("100")));
     QVERIFY(text.contains(QStringLiteral("Scale 1:1")));
   }
@@ -315,9 +324,9 @@ class ReportTest : public QObject {
     QCOMPARE(render::scaleText(layout.scale), QStringLiteral("1:1"));
     QVERIFY(layout.frame.contains(layout.partRect));
     const std::vector<render::DimensionItem> dims = render::drawingDimensions(printer, d, lang);
-    QVERIFY(dims.size() >= 11);   // 3 diameters, 3 steps + overall, 3 leaders, the nose note
+    QVERIFY(dims.size() >= 11);  // 3 diameters, 3 steps + overall, 3 leaders, the nose note
     const std::vector<QLineF> partLines = render::drawingDimensionFrame(printer, d, lang).partLines;
-    QVERIFY(partLines.size() >= 16);   // both halves' outline
+    QVERIFY(partLines.size() >= 16);  // both halves' outline
     for (const render::DimensionItem& item : dims) {
       const QRectF box = render::dimensionBounds(item);
       QVERIFY2(layout.frame.contains(box), qPrintable(item.text));
@@ -328,7 +337,8 @@ class ReportTest : public QObject {
     // No two texts on top of each other.
     for (std::size_t a = 0; a < dims.size(); ++a)
       for (std::size_t b = a + 1; b < dims.size(); ++b)
-        QVERIFY2(!dims[a].textRect.intersects(dims[b].textRect), qPrintable(dims[a].text + QStringLiteral(" / ") + dims[b].text));
+        QVERIFY2(!dims[a].textRect.intersects(dims[b].textRect),
+                 qPrintable(dims[a].text + QStringLiteral(" / ") + dims[b].text));
   }
 
   void programWithErrorsDrawsTheBarAndSaysSo() {
@@ -338,7 +348,7 @@ class ReportTest : public QObject {
     const auto job = jobOf(d.program, core::gcode::Dialect::Classic);
     d.part = render::finishedPart(*job, ReportLanguage::English, &d.partNote);
     QCOMPARE(d.partNote, QStringLiteral("The program has errors: the drawing shows the uncut bar."));
-    QCOMPARE(d.part.blank, d.part.fill.boundingRect());   // nothing cut
+    QCOMPARE(d.part.blank, d.part.fill.boundingRect());  // nothing cut
     const QString pdf = out(QStringLiteral("drawing-errors.pdf"));
     writePdf(pdf, d, ReportLanguage::English, Sheet::Drawing);
     QVERIFY(pdfText(pdf).contains(QStringLiteral("The program has errors")));
@@ -356,7 +366,9 @@ class ReportTest : public QObject {
     const QString pdf = out(QStringLiteral("wrap.pdf"));
     QCOMPARE(writePdf(pdf, d, ReportLanguage::English, Sheet::Program), 1);
     const QString text = pdfText(pdf);
-    for (int i = 0; i < 40; ++i) QVERIFY2(text.contains(QStringLiteral("word%1 ").arg(i)) || text.contains(QStringLiteral("word%1\n").arg(i)), qPrintable(QString::number(i)));
+    for (int i = 0; i < 40; ++i)
+      QVERIFY2(text.contains(QStringLiteral("word%1 ").arg(i)) || text.contains(QStringLiteral("word%1\n").arg(i)),
+               qPrintable(QString::number(i)));
     QVERIFY(text.contains(QStringLiteral("end)")));
     // Two file lines, the first wrapped: line numbers 7 and 8 only.
     QVERIFY(text.contains(QRegularExpression(QStringLiteral("(^|\\n)7 N10 G01"))));
@@ -375,8 +387,8 @@ class ReportTest : public QObject {
     QVERIFY(pdfText(pdf).contains(QStringLiteral("Scale 1:1")));
     // Rasterise at 254 dpi (10 px per mm) and measure the stock fill: 120 x 40 mm on paper.
     const QString png = out(QStringLiteral("scale"));
-    run(QStringLiteral("pdftoppm"), {QStringLiteral("-png"), QStringLiteral("-r"), QStringLiteral("254"),
-                                     QStringLiteral("-singlefile"), pdf, png});
+    run(QStringLiteral("pdftoppm"),
+        {QStringLiteral("-png"), QStringLiteral("-r"), QStringLiteral("254"), QStringLiteral("-singlefile"), pdf, png});
     const QImage image(png + QStringLiteral(".png"));
     QVERIFY(!image.isNull());
     const QColor fill = render::palette().stockFill;
@@ -419,7 +431,8 @@ class ReportTest : public QObject {
     core::cut::PartFeatures part;
     part.zRight = 0.0;
     part.zLeft = -40.0;
-    const auto feature = [](FeatureKind kind, FeatureSide side, double zLeft, double zRight, double dLeft, double dRight) {
+    const auto feature = [](FeatureKind kind, FeatureSide side, double zLeft, double zRight, double dLeft,
+                            double dRight) {
       core::cut::PartFeature f;
       f.kind = kind;
       f.side = side;
@@ -483,11 +496,11 @@ class ReportTest : public QObject {
     QVERIFY(!plain.contains(QStringLiteral("h7")) && !plain.contains(QStringLiteral("Ra ")));
     d.marks.tolerance = [](const core::cut::PartFeature& f) {
       return f.kind == core::cut::FeatureKind::Cylinder && std::abs(f.diameter - 30.0) < 0.01 ? QStringLiteral("h7")
-                                                                                               : QString();
+                                                                                              : QString();
     };
     d.marks.surfaceFinish = [](const core::cut::PartFeature& f) {
       return f.kind == core::cut::FeatureKind::Cylinder && std::abs(f.diameter - 40.0) < 0.01 ? QStringLiteral("Ra 1.6")
-                                                                                               : QString();
+                                                                                              : QString();
     };
     const QString pdf = out(QStringLiteral("marks.pdf"));
     writePdf(pdf, d, ReportLanguage::English, Sheet::Drawing);
@@ -508,7 +521,8 @@ class ReportTest : public QObject {
     w.show();
     QVERIFY(w.openFile(QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt")));
     QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
-    for (const char* name : {"actionPrintCode", "actionPrintDrawing", "actionPrintPreview", "actionExportPdf", "actionPrint"}) {
+    for (const char* name :
+         {"actionPrintCode", "actionPrintDrawing", "actionPrintPreview", "actionExportPdf", "actionPrint"}) {
       QAction* a = w.action(QString::fromLatin1(name));
       QVERIFY2(a && !a->icon().isNull() && !a->text().isEmpty(), name);
     }
@@ -518,11 +532,13 @@ class ReportTest : public QObject {
 
     const QString en = out(QStringLiteral("window-en.pdf"));
     QVERIFY(w.exportPdf(en));
-    const QString info = run(QStringLiteral("pdfinfo"), {QStringLiteral("-f"), QStringLiteral("1"), QStringLiteral("-l"),
-                                                         QStringLiteral("2"), en});
+    const QString info = run(QStringLiteral("pdfinfo"), {QStringLiteral("-f"), QStringLiteral("1"),
+                                                         QStringLiteral("-l"), QStringLiteral("2"), en});
     QVERIFY2(info.contains(QRegularExpression(QStringLiteral("Pages:\\s+2\\b"))), qPrintable(info));
-    QVERIFY2(info.contains(QRegularExpression(QStringLiteral("Page\\s+1 size:\\s+595(\\.\\d+)? x 84[12]"))), qPrintable(info));
-    QVERIFY2(info.contains(QRegularExpression(QStringLiteral("Page\\s+2 size:\\s+84[12](\\.\\d+)? x 595"))), qPrintable(info));
+    QVERIFY2(info.contains(QRegularExpression(QStringLiteral("Page\\s+1 size:\\s+595(\\.\\d+)? x 84[12]"))),
+             qPrintable(info));
+    QVERIFY2(info.contains(QRegularExpression(QStringLiteral("Page\\s+2 size:\\s+84[12](\\.\\d+)? x 595"))),
+             qPrintable(info));
     const QString sheet = pageText(en, 1);
     QVERIFY(sheet.contains(QStringLiteral("CNC Program Sheet")));
     QVERIFY(sheet.contains(QStringLiteral("N100 G01 Z-59.8 F0.25")));
@@ -530,10 +546,13 @@ class ReportTest : public QObject {
     QVERIFY(drawing.contains(QStringLiteral("Part Drawing")));
     QVERIFY(drawing.contains(QStringLiteral("01-step-shaft.txt")));
     QVERIFY(drawing.contains(render::reportDate(QDate::currentDate(), ReportLanguage::English)));
-    QVERIFY2(!drawing.contains(QStringLiteral("errors")) && !drawing.contains(QStringLiteral("alarm")), qPrintable(drawing));
+    QVERIFY2(!drawing.contains(QStringLiteral("errors")) && !drawing.contains(QStringLiteral("alarm")),
+             qPrintable(drawing));
 
     gui::Language::instance()->setLanguage(QStringLiteral("th"));
-    QTRY_VERIFY(w.action(QStringLiteral("actionExportPdf"))->text().contains(QStringLiteral("ส่งออก")));   // LanguageChange is posted
+    QTRY_VERIFY(w.action(QStringLiteral("actionExportPdf"))
+                    ->text()
+                    .contains(QStringLiteral("ส่งออก")));  // LanguageChange is posted
     QVERIFY(w.action(QStringLiteral("actionPrintCode"))->text().contains(QStringLiteral("พิมพ์")));
     const QString th = out(QStringLiteral("window-th.pdf"));
     QVERIFY(w.exportPdf(th));
@@ -555,7 +574,7 @@ class ReportTest : public QObject {
     QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
     const QString first = out(QStringLiteral("stale-01.pdf"));
     QVERIFY(w.exportPdf(first));
-    QVERIFY(pageText(first, 2).contains(QStringLiteral("Shaft SS-01")));   // the sample's own header
+    QVERIFY(pageText(first, 2).contains(QStringLiteral("Shaft SS-01")));  // the sample's own header
 
     const QStringList sample01 = {QStringLiteral("Step shaft exercise"), QStringLiteral("Shaft SS-01"),
                                   QStringLiteral("Aluminium 6061")};
@@ -598,13 +617,15 @@ class ReportTest : public QObject {
     int pages = -1;
     bool orientationRestored = false;
     QTimer::singleShot(0, this, [&] {
-      QVERIFY(QTest::qWaitFor([] { return qobject_cast<QPrintPreviewDialog*>(QApplication::activeModalWidget()); }, 10000));
+      QVERIFY(
+          QTest::qWaitFor([] { return qobject_cast<QPrintPreviewDialog*>(QApplication::activeModalWidget()); }, 10000));
       auto* dialog = qobject_cast<QPrintPreviewDialog*>(QApplication::activeModalWidget());
       auto* preview = dialog->findChild<QPrintPreviewWidget*>();
       QVERIFY(preview);
       QVERIFY(QTest::qWaitFor([preview] { return preview->pageCount() > 0; }, 10000));
       pages = preview->pageCount();
-      orientationRestored = dialog->printer()->pageLayout().orientation() == QPageLayout::Portrait;   // after the landscape drawing
+      orientationRestored =
+          dialog->printer()->pageLayout().orientation() == QPageLayout::Portrait;  // after the landscape drawing
       dialog->reject();
     });
     w.printPreview();

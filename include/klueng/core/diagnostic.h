@@ -26,7 +26,7 @@ struct SourceRange {
 
 struct Diagnostic {
   Severity severity = Severity::Error;
-  std::string code;               // stable, e.g. "E104", "A203", "F012"
+  std::string code;  // stable, e.g. "E104", "A203", "F012"
   SourceRange range;
   std::vector<std::string> args;  // fill the {0} {1} ... of the catalog's text
 };

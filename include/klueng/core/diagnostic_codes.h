@@ -42,7 +42,8 @@ inline constexpr const char* kBitmapIsFolder = "F124";
 // A tool bitmap that is a loop of links, a device, a pipe or a socket.
 inline constexpr const char* kBitmapNotAFile = "F138";  // {0} file, {1} tool, {2} name, {3} what (en), {4} what (th)
 // A tool bitmap larger than a tool can be (500 mm each way at its resolution).
-inline constexpr const char* kToolBitmapTooLarge = "F139";  // {0} file, {1} tool, {2} name, {3} w, {4} h, {5} limit, {6} px/mm
+inline constexpr const char* kToolBitmapTooLarge =
+    "F139";  // {0} file, {1} tool, {2} name, {3} w, {4} h, {5} limit, {6} px/mm
 // Writing files (io/file_write.h), codes left free between the readers'.
 inline constexpr const char* kFolderNotWritable = "F125";
 inline constexpr const char* kOutputIsInput = "F126";
@@ -69,11 +70,12 @@ inline constexpr const char* kParameterNotWhole = "F147";
 inline constexpr const char* kParameterOutOfRange = "F148";
 inline constexpr const char* kStartOutsideTravel = "F149";
 // Machine files (gcode/machine_file.h, machine/machine_files.h; texts in messages_io.cpp).
-inline constexpr const char* kMachineValueBad = "F200";     // {0} file, {1} key, {2} value, {3} what it must be (en), {4} (th)
-inline constexpr const char* kMachineKeyMissing = "F201";   // {0} file, {1} key
-inline constexpr const char* kMachineUnknownBase = "F202";  // {0} file, {1} base, {2} the machines
-inline constexpr const char* kUnknownMachine = "F203";      // {0} name or file, {1} the machines
-inline constexpr const char* kNotAMachineFile = "F204";     // {0} file
+inline constexpr const char* kMachineValueBad =
+    "F200";  // {0} file, {1} key, {2} value, {3} what it must be (en), {4} (th)
+inline constexpr const char* kMachineKeyMissing = "F201";      // {0} file, {1} key
+inline constexpr const char* kMachineUnknownBase = "F202";     // {0} file, {1} base, {2} the machines
+inline constexpr const char* kUnknownMachine = "F203";         // {0} name or file, {1} the machines
+inline constexpr const char* kNotAMachineFile = "F204";        // {0} file
 inline constexpr const char* kProgramMachineUnknown = "F205";  // {0} the machine the program names, {1} the machines
 inline constexpr const char* kNotAnImage = "F150";
 inline constexpr const char* kImageTruncated = "F151";
@@ -97,13 +99,13 @@ inline constexpr const char* kLibraryBitmapMissing = "F169";
 inline constexpr const char* kNotVariableLine = "F170";
 inline constexpr const char* kVariableNotKept = "F171";
 // Part designs and the cutting-speed table (design; texts in messages_design.cpp)
-inline constexpr const char* kPartFileNotJson = "F180";       // {0} file, {1} why
-inline constexpr const char* kPartFieldMissing = "F181";      // {0} file, {1} field
-inline constexpr const char* kPartFieldBad = "F182";          // {0} file, {1} field, {2} what it must be
-inline constexpr const char* kSpeedsLineBad = "F183";         // {0} file, {1} line text
+inline constexpr const char* kPartFileNotJson = "F180";   // {0} file, {1} why
+inline constexpr const char* kPartFieldMissing = "F181";  // {0} file, {1} field
+inline constexpr const char* kPartFieldBad = "F182";      // {0} file, {1} field, {2} what it must be
+inline constexpr const char* kSpeedsLineBad = "F183";     // {0} file, {1} line text
 // DXF drawings (design/dxf_import; texts in messages_design.cpp). Places are the drawing's own X Y.
 inline constexpr const char* kDxfEmpty = "F184";              // {0} file
-inline constexpr const char* kDxfNotDxf = "F185";            // {0} file, {1} why (English), {2} why (Thai)
+inline constexpr const char* kDxfNotDxf = "F185";             // {0} file, {1} why (English), {2} why (Thai)
 inline constexpr const char* kDxfNothingOnLayer = "F186";     // {0} file, {1} layer, {2} layers with lines
 inline constexpr const char* kDxfPickLayer = "F187";          // {0} file, {1} layers
 inline constexpr const char* kDxfUnsupportedEntity = "F188";  // {0} file, {1} entity, {2} layer, {3} X, {4} Y
@@ -114,16 +116,17 @@ inline constexpr const char* kDxfSize = "F192";               // {0} file, {1} �
 inline constexpr const char* kDxfBranch = "F193";             // {0} file, {1} X, {2} Y, {3} how many
 inline constexpr const char* kDxfTurnsBack = "F194";          // {0} file, {1} X, {2} Y
 inline constexpr const char* kDxfSeveralOutlines = "F195";    // {0} file, {1} how many, {2} layer
-inline constexpr const char* kDxfReachesAxis = "F196";       // {0} file, {1} X, {2} Y
+inline constexpr const char* kDxfReachesAxis = "F196";        // {0} file, {1} X, {2} Y
 inline constexpr const char* kDxfArcTooFlat = "F197";         // {0} file, {1} R, {2} X, {3} Y
 inline constexpr const char* kDxfArcInBore = "F198";          // {0} file, {1} R, {2} X, {3} Y
 inline constexpr const char* kDxfInches = "I180";
-inline constexpr const char* kNotAsDrawn = "W530";            // {0} drawing feature, {1} Z from, {2} Z to, {3} what the cut part has             // {0} file, {1} factor, {2} unit name
-inline constexpr const char* kPartUndercut = "E501";          // {0} step, {1} Ø, {2} Ø before it
-inline constexpr const char* kPartEdgeTooLarge = "E502";      // {0} step, {1} size, {2} largest
-inline constexpr const char* kPartLongerThanBar = "E503";     // {0} part length, {1} bar length less the grip
-inline constexpr const char* kPartWiderThanBar = "E504";      // {0} step, {1} Ø, {2} bar Ø
-inline constexpr const char* kUnknownMaterial = "E505";       // {0} material, {1} the table's materials
+inline constexpr const char* kNotAsDrawn = "W530";  // {0} drawing feature, {1} Z from, {2} Z to, {3} what the cut part
+                                                    // has             // {0} file, {1} factor, {2} unit name
+inline constexpr const char* kPartUndercut = "E501";       // {0} step, {1} Ø, {2} Ø before it
+inline constexpr const char* kPartEdgeTooLarge = "E502";   // {0} step, {1} size, {2} largest
+inline constexpr const char* kPartLongerThanBar = "E503";  // {0} part length, {1} bar length less the grip
+inline constexpr const char* kPartWiderThanBar = "E504";   // {0} step, {1} Ø, {2} bar Ø
+inline constexpr const char* kUnknownMaterial = "E505";    // {0} material, {1} the table's materials
 inline constexpr const char* kPartHasNoSteps = "E506";
 inline constexpr const char* kGrooveNarrow = "E507";        // {0} groove, {1} width, {2} blade width
 inline constexpr const char* kGrooveOffCylinder = "E508";   // {0} groove, {1} Z from, {2} Z to
@@ -137,7 +140,7 @@ inline constexpr const char* kBoreBelowHole = "E515";       // {0} bore step, {1
 inline constexpr const char* kBoreDeeperThanPart = "E516";  // {0} bore depth, {1} part length
 inline constexpr const char* kArcCannotJoin = "E517";       // {0} step, {1} R, {2} Ø from, {3} Ø to, {4} chord
 inline constexpr const char* kArcNeedsUndercut = "E518";    // {0} step, {1} R, {2} Ø where it turns back
-inline constexpr const char* kProgramTooLong = "E519";      // {0} blocks, {1} largest N, {2} dialect (English), {3} (Thai)
+inline constexpr const char* kProgramTooLong = "E519";  // {0} blocks, {1} largest N, {2} dialect (English), {3} (Thai)
 inline constexpr const char* kStockFromCommandLine = "I150";
 inline constexpr const char* kStockFromJobDetails = "I151";
 inline constexpr const char* kStockFromFirstApproach = "I152";
@@ -163,7 +166,8 @@ inline constexpr const char* kOffsetReplacedByLibrary = "I411";
 // texts in messages_gcode.cpp beside W110/W111): {0} the deciding word, {1} its line, {2} its length.
 inline constexpr const char* kLengthsInIncrements = "I103";
 inline constexpr const char* kLengthsWhole = "I104";
-inline constexpr const char* kToolsBeyondCentre = "I412";  // {0} line of the first cut at X < 0  // a row set for the table's tool, in a plain program
+inline constexpr const char* kToolsBeyondCentre =
+    "I412";  // {0} line of the first cut at X < 0  // a row set for the table's tool, in a plain program
 // A guessed tool that touched, replaced by another library tool of its kind that runs clean
 // (cut/guess_fit.h): {0} station, {1} the replacement, {2} the first guess, {3} line of the touch.
 inline constexpr const char* kGuessReplacedStock = "I413";
@@ -247,21 +251,21 @@ inline constexpr const char* kBoreLeftover = "W323";
 inline constexpr const char* kGuessHitsStock = "W324";  // {0} station, {1} tool, {2} Z, {3} X, {4} mm deep
 inline constexpr const char* kGuessHitsChuck = "W325";
 inline constexpr const char* kGuessEdgeBrushesStock = "W326";  // a guessed tool's edge, < 0.2 mm, in a rapid
-inline constexpr const char* kPartCheckStopped = "I324";     // {0} the alarm's code
+inline constexpr const char* kPartCheckStopped = "I324";       // {0} the alarm's code
 inline constexpr const char* kPartCheckNothingCut = "I325";
 
 // The operator panel (issue 31; control; texts in messages_control.cpp).
-inline constexpr const char* kNotReferenced = "A601";        // {0} the control's alarm, {1} axes not referenced
-inline constexpr const char* kOvertravel = "A602";           // {0} the control's alarm, {1} axis, {2} limit (machine)
+inline constexpr const char* kNotReferenced = "A601";          // {0} the control's alarm, {1} axes not referenced
+inline constexpr const char* kOvertravel = "A602";             // {0} the control's alarm, {1} axis, {2} limit (machine)
 inline constexpr const char* kTouchedSpindleStopped = "W603";  // {0} station, {1} Z, {2} X Ø (bar frame)
 inline constexpr const char* kMeasuredAfterStoppedTouch = "W604";  // {0} offset row
-inline constexpr const char* kMeasureWithoutTool = "E605";   // {0} station
-inline constexpr const char* kKeyNotInMode = "I606";         // {0} key, {1} the mode it needs
-inline constexpr const char* kResetFirst = "A607";           // {0} the alarm's code
-inline constexpr const char* kNotMeasureInput = "E608";      // {0} the text typed
-inline constexpr const char* kToolsNotTouchedOff = "A609";   // {0} stations ("T01 T03")
+inline constexpr const char* kMeasureWithoutTool = "E605";         // {0} station
+inline constexpr const char* kKeyNotInMode = "I606";               // {0} key, {1} the mode it needs
+inline constexpr const char* kResetFirst = "A607";                 // {0} the alarm's code
+inline constexpr const char* kNotMeasureInput = "E608";            // {0} the text typed
+inline constexpr const char* kToolsNotTouchedOff = "A609";         // {0} stations ("T01 T03")
 inline constexpr const char* kFeedOverrideZero = "I610";
-inline constexpr const char* kOffsetsCompared = "I611";      // {0} worst row, {1} X error Ø, {2} Z error (mm)
+inline constexpr const char* kOffsetsCompared = "I611";  // {0} worst row, {1} X error Ø, {2} Z error (mm)
 
 // klueng-cli's own texts (messages_cli.cpp): never diagnostics of a file, so
 // the code is not printed; the catalog only gives them their two languages.
@@ -271,24 +275,24 @@ inline constexpr const char* kCliSimulateUsage = "C003";
 inline constexpr const char* kCliClassUsage = "C004";
 inline constexpr const char* kCliPrintUsage = "C005";
 inline constexpr const char* kCliGenerateUsage = "C006";
-inline constexpr const char* kCliUnknownCommand = "C101";    // {0} command
-inline constexpr const char* kCliUnknownOption = "C102";     // {0} option
-inline constexpr const char* kCliNeedsValue = "C103";        // {0} option
-inline constexpr const char* kCliMustBe = "C104";            // {0} option {1} allowed {2} value
-inline constexpr const char* kCliBadValue = "C105";          // {0} value {1} option {2} allowed
-inline constexpr const char* kCliBadValueAnyOf = "C106";     // {0} value {1} option
+inline constexpr const char* kCliUnknownCommand = "C101";  // {0} command
+inline constexpr const char* kCliUnknownOption = "C102";   // {0} option
+inline constexpr const char* kCliNeedsValue = "C103";      // {0} option
+inline constexpr const char* kCliMustBe = "C104";          // {0} option {1} allowed {2} value
+inline constexpr const char* kCliBadValue = "C105";        // {0} value {1} option {2} allowed
+inline constexpr const char* kCliBadValueAnyOf = "C106";   // {0} value {1} option
 inline constexpr const char* kCliNoFile = "C107";
-inline constexpr const char* kCliOneFile = "C108";           // {0} first {1} second
-inline constexpr const char* kCliBadOption = "C109";         // {0} option {1} value
-inline constexpr const char* kCliNotAFolder = "C112";        // {0} path
-inline constexpr const char* kCliReferenceFails = "C113";    // {0} file {1} its first error or alarm
+inline constexpr const char* kCliOneFile = "C108";         // {0} first {1} second
+inline constexpr const char* kCliBadOption = "C109";       // {0} option {1} value
+inline constexpr const char* kCliNotAFolder = "C112";      // {0} path
+inline constexpr const char* kCliReferenceFails = "C113";  // {0} file {1} its first error or alarm
 inline constexpr const char* kCliClassNeeds = "C114";
-inline constexpr const char* kCliClassTotals = "C115";       // {0} programs {1} pass {2} fail
+inline constexpr const char* kCliClassTotals = "C115";  // {0} programs {1} pass {2} fail
 inline constexpr const char* kCliPrintNeeds = "C116";
 inline constexpr const char* kCliGenerateNeeds = "C117";
-inline constexpr const char* kCliToolForm = "C118";          // {0} value {1} library ids
-inline constexpr const char* kCliToolStation = "C119";       // {0} value {1} station {2} last station
-inline constexpr const char* kCliToolUnknown = "C120";       // {0} value {1} id {2} library ids
+inline constexpr const char* kCliToolForm = "C118";             // {0} value {1} library ids
+inline constexpr const char* kCliToolStation = "C119";          // {0} value {1} station {2} last station
+inline constexpr const char* kCliToolUnknown = "C120";          // {0} value {1} id {2} library ids
 inline constexpr const char* kCliDrawingNoTolerances = "C121";  // {0} drawing
 inline constexpr const char* kCliAllowedLang = "C201";
 inline constexpr const char* kCliAllowedDialect = "C202";

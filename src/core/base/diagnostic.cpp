@@ -5,8 +5,7 @@
 namespace klueng::core {
 
 bool hasErrors(const std::vector<Diagnostic>& diags) {
-  return std::any_of(diags.begin(), diags.end(),
-                     [](const Diagnostic& d) { return isError(d.severity); });
+  return std::any_of(diags.begin(), diags.end(), [](const Diagnostic& d) { return isError(d.severity); });
 }
 
 void sortByPlace(std::vector<Diagnostic>& diags) {

@@ -15,9 +15,9 @@ namespace klueng::core {
 std::span<const MessageText> allMessages() {
   static const std::vector<MessageText> all = [] {
     std::vector<MessageText> v;
-    for (auto part : {catalog::gcodeMessages(), catalog::ioMessages(), catalog::machineMessages(),
-                      catalog::compMessages(), catalog::cutMessages(), catalog::designMessages(), catalog::cliMessages(),
-                      catalog::controlMessages()})
+    for (auto part :
+         {catalog::gcodeMessages(), catalog::ioMessages(), catalog::machineMessages(), catalog::compMessages(),
+          catalog::cutMessages(), catalog::designMessages(), catalog::cliMessages(), catalog::controlMessages()})
       v.insert(v.end(), part.begin(), part.end());
     return v;
   }();
@@ -46,12 +46,21 @@ namespace {
 // menu paths are the main window's menus (action_table.cpp and klueng_th.ts):
 // a GUI test holds them to the menus.
 constexpr MessageText kGuiWording[] = {
-    {"W111", "{0} has no decimal point and is read as {1} (calculator-type input); a control with standard decimal point input reads it as {2}: if that is meant, write {3} or choose that reading in File ▸ Job details",
-     "{0} ไม่มีจุดทศนิยมจึงถูกอ่านเป็น {1} (การป้อนค่าแบบเครื่องคิดเลข) เครื่องที่ตั้งการป้อนจุดทศนิยมแบบมาตรฐานจะอ่านเป็น {2} ถ้าต้องการค่านั้น ให้เขียน {3} หรือเลือกการอ่านแบบนั้นที่ แฟ้ม ▸ รายละเอียดงาน"},
-    {"I103", "lengths without a decimal point are read in least input increments (0.001 mm, 0.0001 in), as a standard Fanuc or Haas reads them: {0} on line {1} is {2}; change it in File ▸ Job details",
-     "ความยาวที่ไม่มีจุดทศนิยมอ่านเป็นหน่วยป้อนค่าที่เล็กที่สุด (0.001 มม., 0.0001 นิ้ว) แบบที่เครื่อง Fanuc หรือ Haas ทั่วไปอ่าน: {0} ในบรรทัดที่ {1} คือ {2} เปลี่ยนได้ที่ แฟ้ม ▸ รายละเอียดงาน"},
-    {"I104", "lengths without a decimal point are read in whole millimetres or inches (calculator-type input), as the program's numbers show: {0} on line {1} is {2}; change it in File ▸ Job details",
-     "ความยาวที่ไม่มีจุดทศนิยมอ่านเป็นมิลลิเมตรหรือนิ้วเต็มหน่วย (การป้อนค่าแบบเครื่องคิดเลข) ตามที่ตัวเลขในโปรแกรมบอก: {0} ในบรรทัดที่ {1} คือ {2} เปลี่ยนได้ที่ แฟ้ม ▸ รายละเอียดงาน"},
+    {"W111",
+     "{0} has no decimal point and is read as {1} (calculator-type input); a control with standard decimal point input "
+     "reads it as {2}: if that is meant, write {3} or choose that reading in File ▸ Job details",
+     "{0} ไม่มีจุดทศนิยมจึงถูกอ่านเป็น {1} (การป้อนค่าแบบเครื่องคิดเลข) เครื่องที่ตั้งการป้อนจุดทศนิยมแบบมาตรฐานจะอ่านเป็น {2} ถ้าต้องการค่านั้น "
+     "ให้เขียน {3} หรือเลือกการอ่านแบบนั้นที่ แฟ้ม ▸ รายละเอียดงาน"},
+    {"I103",
+     "lengths without a decimal point are read in least input increments (0.001 mm, 0.0001 in), as a standard Fanuc or "
+     "Haas reads them: {0} on line {1} is {2}; change it in File ▸ Job details",
+     "ความยาวที่ไม่มีจุดทศนิยมอ่านเป็นหน่วยป้อนค่าที่เล็กที่สุด (0.001 มม., 0.0001 นิ้ว) แบบที่เครื่อง Fanuc หรือ Haas ทั่วไปอ่าน: {0} ในบรรทัดที่ "
+     "{1} คือ {2} เปลี่ยนได้ที่ แฟ้ม ▸ รายละเอียดงาน"},
+    {"I104",
+     "lengths without a decimal point are read in whole millimetres or inches (calculator-type input), as the "
+     "program's numbers show: {0} on line {1} is {2}; change it in File ▸ Job details",
+     "ความยาวที่ไม่มีจุดทศนิยมอ่านเป็นมิลลิเมตรหรือนิ้วเต็มหน่วย (การป้อนค่าแบบเครื่องคิดเลข) ตามที่ตัวเลขในโปรแกรมบอก: {0} ในบรรทัดที่ {1} คือ "
+     "{2} เปลี่ยนได้ที่ แฟ้ม ▸ รายละเอียดงาน"},
     {"I102", "blocks with errors that are {1} forms: {0}; choose {1} in Tool setting ▸ G-code dialect",
      "บล็อกที่ผิดพลาด {0} บล็อกเป็นรูปแบบของ {1}: เลือก {1} ที่ ตั้งค่ามีดตัด ▸ ภาษาจีโค้ด"},
     {"I155", "stock {0} is the default: the program has no approach to infer it from; set it in File ▸ Job details",
@@ -111,10 +120,14 @@ std::string formatMessage(const Diagnostic& d, Lang lang, Surface surface) {
 
 std::string_view severityName(Severity s, Lang lang) {
   switch (s) {
-    case Severity::Warning: return lang == Lang::Th ? "คำเตือน" : "warning";
-    case Severity::Error: return lang == Lang::Th ? "ข้อผิดพลาด" : "error";
-    case Severity::Alarm: return lang == Lang::Th ? "สัญญาณเตือน" : "alarm";
-    case Severity::Note: return lang == Lang::Th ? "หมายเหตุ" : "note";
+    case Severity::Warning:
+      return lang == Lang::Th ? "คำเตือน" : "warning";
+    case Severity::Error:
+      return lang == Lang::Th ? "ข้อผิดพลาด" : "error";
+    case Severity::Alarm:
+      return lang == Lang::Th ? "สัญญาณเตือน" : "alarm";
+    case Severity::Note:
+      return lang == Lang::Th ? "หมายเหตุ" : "note";
   }
   return "error";
 }

@@ -11,7 +11,8 @@ constexpr MessageText kIoMessages[] = {
     // SPEC 5 rule 13 lives here because the stock size comes from the program header.
     {codes::kStockSizeTooLarge, "{0}: stock size {1} is larger than any lathe holds; write at most {2}",
      "{0}: ขนาดชิ้นงาน {1} ใหญ่เกินกว่าที่เครื่องกลึงใดจะจับได้ ให้เขียนไม่เกิน {2}"},
-    {codes::kStockSizeNotPositive, "stock diameter and length must be greater than 0, not {1} (written '{2}': unit digit, then the size)",
+    {codes::kStockSizeNotPositive,
+     "stock diameter and length must be greater than 0, not {1} (written '{2}': unit digit, then the size)",
      "เส้นผ่านศูนย์กลางและความยาวของชิ้นงานต้องมากกว่า 0 ไม่ใช่ {1} (เขียนไว้ว่า '{2}': หลักหน่วยตามด้วยขนาด)"},
 
     // Whole files.
@@ -27,8 +28,7 @@ constexpr MessageText kIoMessages[] = {
     {codes::kEmptyFile, "{0}: the file is empty", "{0}: ไฟล์ว่างเปล่า"},
     {codes::kLineTooLong, "{0}: the line is too long ({1} characters, at most {2}); it is ignored",
      "{0}: บรรทัดยาวเกินไป ({1} ตัวอักษร ยาวได้ไม่เกิน {2}) จึงไม่นำบรรทัดนี้มาใช้"},
-    {codes::kLinesIgnored, "{0}: lines after line {1} are ignored",
-     "{0}: บรรทัดที่อยู่หลังบรรทัดที่ {1} จะไม่ถูกนำมาใช้"},
+    {codes::kLinesIgnored, "{0}: lines after line {1} are ignored", "{0}: บรรทัดที่อยู่หลังบรรทัดที่ {1} จะไม่ถูกนำมาใช้"},
     // Writing (io/file_write.h): an existing file of that name always keeps its bytes.
     {codes::kCannotWriteFile, "{0}: cannot write the file ({1}); an existing file of that name is left unchanged",
      "{0}: บันทึกไฟล์ไม่ได้ ({2}) ถ้ามีไฟล์ชื่อนี้อยู่แล้ว ไฟล์นั้นยังคงเดิม"},
@@ -46,8 +46,7 @@ constexpr MessageText kIoMessages[] = {
      "แต่ไฟล์มีเพียง {1} บรรทัด"},
     {codes::kDiameterUnitDigit, "stock diameter: the unit digit must be 0 (inch) or 1 (mm), not '{1}'",
      "เส้นผ่านศูนย์กลางของชิ้นงาน: หลักแรกต้องเป็นหน่วย 0 (นิ้ว) หรือ 1 (มม.) ไม่ใช่ '{1}'"},
-    {codes::kDiameterNotNumber, "stock diameter: '{1}' is not a number",
-     "เส้นผ่านศูนย์กลางของชิ้นงาน: '{1}' ไม่ใช่ตัวเลข"},
+    {codes::kDiameterNotNumber, "stock diameter: '{1}' is not a number", "เส้นผ่านศูนย์กลางของชิ้นงาน: '{1}' ไม่ใช่ตัวเลข"},
     {codes::kLengthUnitDigit, "stock length: the unit digit must be 0 (inch) or 1 (mm), not '{1}'",
      "ความยาวของชิ้นงาน: หลักแรกต้องเป็นหน่วย 0 (นิ้ว) หรือ 1 (มม.) ไม่ใช่ '{1}'"},
     {codes::kLengthNotNumber, "stock length: '{1}' is not a number", "ความยาวของชิ้นงาน: '{1}' ไม่ใช่ตัวเลข"},
@@ -62,14 +61,15 @@ constexpr MessageText kIoMessages[] = {
      "(หลักหน่วย 0 = นิ้ว หรือ 1 = มม. ตามด้วยขนาด เช่น 150 = 50 มม.)"},
     {codes::kBadBore, "stock bore: '{1}' must be a number greater than 0 and less than the diameter {2}",
      "รูในของชิ้นงานท่อ: '{1}' ต้องเป็นตัวเลขที่มากกว่า 0 และน้อยกว่าเส้นผ่านศูนย์กลาง {2}"},
-    {codes::kFileReadOnly, "{0}: the file is read-only, so it was not replaced; write to another file, or make it writable first",
+    {codes::kFileReadOnly,
+     "{0}: the file is read-only, so it was not replaced; write to another file, or make it writable first",
      "{0}: ไฟล์นี้เป็นแบบอ่านอย่างเดียว จึงไม่ได้เขียนทับ ให้บันทึกเป็นไฟล์อื่น หรือเปลี่ยนให้เขียนได้ก่อน"},
 
     // tools.cfg (SPEC 11).
-    {codes::kToolTableShort, "{0}: the tool table needs 8 lines (bitmaps of tools 01 to 08) but has {1}; tools {2} to 08 have no bitmap",
+    {codes::kToolTableShort,
+     "{0}: the tool table needs 8 lines (bitmaps of tools 01 to 08) but has {1}; tools {2} to 08 have no bitmap",
      "{0}: ตารางมีดตัดต้องมี 8 บรรทัด (ภาพของมีดตัด 01 ถึง 08) แต่มีเพียง {1} บรรทัด มีดตัด {2} ถึง 08 จึงไม่มีภาพ"},
-    {codes::kBitmapMissing, "{0}: tool {1}: the bitmap '{2}' does not exist",
-     "{0}: มีดตัด {1}: ไม่พบไฟล์ภาพ '{2}'"},
+    {codes::kBitmapMissing, "{0}: tool {1}: the bitmap '{2}' does not exist", "{0}: มีดตัด {1}: ไม่พบไฟล์ภาพ '{2}'"},
     {codes::kNotBitmapName, "{0}: tool {1}: '{2}' is not a .bmp or .png file name",
      "{0}: มีดตัด {1}: '{2}' ไม่ใช่ชื่อไฟล์ภาพ .bmp หรือ .png"},
     {codes::kNotInToolLibrary, "{0}: tool {1}: the tool library has no tool '{2}' (it has: {3})",
@@ -89,12 +89,15 @@ constexpr MessageText kIoMessages[] = {
     // Writing files (io/file_write.h).
     {codes::kFolderNotWritable, "{0}: cannot create the file: the folder {1} does not exist or cannot be written to",
      "{0}: สร้างไฟล์ไม่ได้ เพราะไม่มีโฟลเดอร์ {1} หรือไม่มีสิทธิ์เขียนลงในโฟลเดอร์นี้"},
-    {codes::kOutputIsInput, "{0}: this output is the input file {1}; writing it would destroy that file, so choose another name",
+    {codes::kOutputIsInput,
+     "{0}: this output is the input file {1}; writing it would destroy that file, so choose another name",
      "{0}: ไฟล์ผลลัพธ์นี้คือไฟล์ขาเข้า {1} ถ้าเขียนลงไปไฟล์นั้นจะหายไป จึงให้ตั้งชื่อไฟล์อื่น"},
     {codes::kOutputIsFolder, "{0}: this is a folder, not a file", "{0}: นี่คือโฟลเดอร์ ไม่ใช่ไฟล์"},
 
     // offset.cfg (SPEC 11).
-    {codes::kOffsetTableShort, "{0}: the offset table needs 16 lines (X Z R T of offsets 01 to 16) but has {1}; offsets {2} to 16 are set to 0 0 0 0",
+    {codes::kOffsetTableShort,
+     "{0}: the offset table needs 16 lines (X Z R T of offsets 01 to 16) but has {1}; offsets {2} to 16 are set to 0 0 "
+     "0 0",
      "{0}: ตารางค่าออฟเซตต้องมี 16 บรรทัด (X Z R T ของออฟเซต 01 ถึง 16) แต่มีเพียง {1} บรรทัด ออฟเซต {2} ถึง 16 จึงเป็น 0 0 0 0"},
     {codes::kOffsetEmpty, "{0}: offset {1} is empty; it needs four numbers X Z R T",
      "{0}: ออฟเซต {1} ว่างอยู่ ต้องมีตัวเลขสี่ค่า X Z R T"},
@@ -105,7 +108,8 @@ constexpr MessageText kIoMessages[] = {
      "{0}: ออฟเซต {1}: รัศมีจมูกมีด R ต้องไม่ติดลบ ({2})"},
     {codes::kBadTipNumber, "{0}: offset {1}: the tip number must be a whole number from 0 to 9, not '{2}'",
      "{0}: ออฟเซต {1}: หมายเลขปลายมีดต้องเป็นจำนวนเต็มตั้งแต่ 0 ถึง 9 ไม่ใช่ '{2}'"},
-    {codes::kOffsetBeyondLathe, "{0}: offset {1}: '{2}' is beyond any lathe's offset (at most {3} mm); the row is set to 0 0 0 0",
+    {codes::kOffsetBeyondLathe,
+     "{0}: offset {1}: '{2}' is beyond any lathe's offset (at most {3} mm); the row is set to 0 0 0 0",
      "{0}: ออฟเซต {1}: '{2}' เกินค่าออฟเซตของเครื่องกลึงทั่วไป (ไม่เกิน {3} มม.) จึงตั้งแถวนี้เป็น 0 0 0 0"},
 
     // machine.cfg.
@@ -147,22 +151,26 @@ constexpr MessageText kIoMessages[] = {
      "ชิ้นงาน {0} จากรายละเอียดงานที่ตั้งไว้สำหรับไฟล์นี้"},
     {codes::kStockFromFirstApproach, "stock {0} inferred from {1} (first approach)",
      "ชิ้นงาน {0} ประมาณจาก {1} (ตำแหน่งเข้าหาชิ้นงานครั้งแรก)"},
-    {codes::kStockFromCycleStart, "stock {0} inferred from {1} (cycle start)",
-     "ชิ้นงาน {0} ประมาณจาก {1} (จุดเริ่มวัฏจักร)"},
+    {codes::kStockFromCycleStart, "stock {0} inferred from {1} (cycle start)", "ชิ้นงาน {0} ประมาณจาก {1} (จุดเริ่มวัฏจักร)"},
     {codes::kBoreInferred, "bore Ø{0} inferred from {1} (work inside without drilling first: tube stock)",
      "รูใน Ø{0} ประมาณจาก {1} (กลึงด้านในโดยไม่เจาะก่อน: ชิ้นงานท่อ)"},
-    {codes::kStockDefault, "stock {0} is the default: the program has no approach to infer it from; set it in Job details or with --stock",
+    {codes::kStockDefault,
+     "stock {0} is the default: the program has no approach to infer it from; set it in Job details or with --stock",
      "ชิ้นงาน {0} เป็นค่าเริ่มต้น: โปรแกรมไม่มีตำแหน่งเข้าหาชิ้นงานให้ประมาณได้ ตั้งค่าได้ที่รายละเอียดงานหรือ --stock"},
     {codes::kStockFromHeader, "stock {0} from the file's job header", "ชิ้นงาน {0} จากส่วนหัวของงานในไฟล์"},
-    {codes::kStockInferredFromBore, "stock {0} inferred: the program works only inside a bore, so the bar is a size above its largest cut Ø{1} with a wall around it",
+    {codes::kStockInferredFromBore,
+     "stock {0} inferred: the program works only inside a bore, so the bar is a size above its largest cut Ø{1} with a "
+     "wall around it",
      "ชิ้นงาน {0} ประมาณจากงานกลึงด้านในเท่านั้น: ใช้ขนาดเหล็กเพลาที่โตกว่าเส้นผ่าศก. ใหญ่สุดที่ตัด Ø{1} โดยเผื่อความหนาผนัง"},
     {codes::kStockFromLargestTurned, "stock {0} inferred from {1} (the largest diameter it turns)",
      "ชิ้นงาน {0} ประมาณจาก {1} (เส้นผ่านศูนย์กลางใหญ่สุดที่กลึงด้านนอก)"},
-    {codes::kStockLengthFromDeepestCut, "stock length {0}: the deepest cut Z{1} ({2}) + {3} for the cut-off + {4} held in the chuck",
+    {codes::kStockLengthFromDeepestCut,
+     "stock length {0}: the deepest cut Z{1} ({2}) + {3} for the cut-off + {4} held in the chuck",
      "ความยาวชิ้นงาน {0}: ตัดลึกสุดที่ Z{1} ({2}) + {3} สำหรับการตัดขาด + {4} ส่วนที่หัวจับยึด"},
     // The tool library, library.cfg (docs/tools.md).
-    {codes::kLibraryLineFields, "{0}: a library line needs 9 fields separated by '|' (id | kind | px/mm | R | tip | size | bitmap | "
-             "English name | Thai name) but has {1}",
+    {codes::kLibraryLineFields,
+     "{0}: a library line needs 9 fields separated by '|' (id | kind | px/mm | R | tip | size | bitmap | "
+     "English name | Thai name) but has {1}",
      "{0}: บรรทัดของคลังมีดตัดต้องมี 9 ช่องคั่นด้วย '|' (รหัส | ชนิด | พิกเซล/มม. | R | ปลายมีด | ขนาด | "
      "ไฟล์ภาพ | ชื่อภาษาอังกฤษ | ชื่อภาษาไทย) แต่มี {1} ช่อง"},
     {codes::kBadToolId, "{0}: '{1}' is not a tool id (lowercase letters, digits, '-', '.' and '_')",
@@ -174,10 +182,13 @@ constexpr MessageText kIoMessages[] = {
      "{0}: จำนวนพิกเซลต่อมม. ต้องเป็นตัวเลข 1 ถึง 100 ไม่ใช่ '{1}'"},
     {codes::kLibraryNumberNegative, "{0}: {1} must be a number of 0 or more, not '{2}'",
      "{0}: {1} ต้องเป็นตัวเลขตั้งแต่ 0 ขึ้นไป ไม่ใช่ '{2}'"},
-    {codes::kLibraryBadTip, "{0}: the tip number must be 0 to 9, not '{1}'", "{0}: หมายเลขปลายมีดต้องเป็น 0 ถึง 9 ไม่ใช่ '{1}'"},
-    {codes::kLibraryNotBitmapName, "{0}: '{1}' is not a .bmp or .png file name", "{0}: '{1}' ไม่ใช่ชื่อไฟล์ภาพ .bmp หรือ .png"},
+    {codes::kLibraryBadTip, "{0}: the tip number must be 0 to 9, not '{1}'",
+     "{0}: หมายเลขปลายมีดต้องเป็น 0 ถึง 9 ไม่ใช่ '{1}'"},
+    {codes::kLibraryNotBitmapName, "{0}: '{1}' is not a .bmp or .png file name",
+     "{0}: '{1}' ไม่ใช่ชื่อไฟล์ภาพ .bmp หรือ .png"},
     {codes::kToolNeedsNames, "{0}: the tool needs an English and a Thai name", "{0}: มีดตัดต้องมีชื่อภาษาอังกฤษและชื่อภาษาไทย"},
-    {codes::kLibraryBitmapMissing, "{0}: tool '{1}': the bitmap '{2}' does not exist", "{0}: มีดตัด '{1}': ไม่พบไฟล์ภาพ '{2}'"},
+    {codes::kLibraryBitmapMissing, "{0}: tool '{1}': the bitmap '{2}' does not exist",
+     "{0}: มีดตัด '{1}': ไม่พบไฟล์ภาพ '{2}'"},
     {codes::kNotVariableLine, "{0}: '{1}' is not a macro variable line; write #500 = 12.5",
      "{0}: '{1}' ไม่ใช่บรรทัดตัวแปรมาโคร ต้องเขียนเป็น #500 = 12.5"},
     {codes::kVariableNotKept, "{0}: #{1} is not kept between runs; only #500 to #999 are",
@@ -185,7 +196,9 @@ constexpr MessageText kIoMessages[] = {
 
     // Machine files (resources/machines/*.machine, docs/dialects.md "Machine files").
     {codes::kMachineValueBad, "{0}: {1} = '{2}': must be {3}", "{0}: {1} = '{2}': ต้องเป็น{4}"},
-    {codes::kMachineKeyMissing, "{0}: '{1}' is missing; write it, or start the file with base = fanuc (or another machine) and write only what differs",
+    {codes::kMachineKeyMissing,
+     "{0}: '{1}' is missing; write it, or start the file with base = fanuc (or another machine) and write only what "
+     "differs",
      "{0}: ไม่มี '{1}' ให้เขียนเพิ่ม หรือขึ้นต้นไฟล์ด้วย base = fanuc (หรือเครื่องอื่น) แล้วเขียนเฉพาะค่าที่ต่างกัน"},
     {codes::kMachineUnknownBase, "{0}: base '{1}' is no machine; the machines are: {2}",
      "{0}: base '{1}' ไม่ใช่เครื่องที่มีอยู่ เครื่องที่มี: {2}"},
@@ -193,7 +206,8 @@ constexpr MessageText kIoMessages[] = {
      "{0}: ไม่มีเครื่องหรือไฟล์เครื่องนี้ เครื่องที่มี: {1}"},
     {codes::kNotAMachineFile, "{0}: a machine file's name ends in .machine", "{0}: ชื่อไฟล์เครื่องต้องลงท้ายด้วย .machine"},
     {codes::kProgramMachineUnknown,
-     "the program names the machine '{0}', which is not loaded: it is checked on the chosen machine; the machines are: {1}",
+     "the program names the machine '{0}', which is not loaded: it is checked on the chosen machine; the machines are: "
+     "{1}",
      "โปรแกรมระบุเครื่อง '{0}' ซึ่งไม่มีอยู่: จึงตรวจกับเครื่องที่เลือกไว้ เครื่องที่มี: {1}"},
 
     // Tools chosen from the program (core/machine/tool_inference.h): notes, never errors.
@@ -202,7 +216,8 @@ constexpr MessageText kIoMessages[] = {
     {codes::kToolForThreading, "T{0} = {1} (threading, {2} on line {3})", "T{0} = {1} (กลึงเกลียว {2} ในบรรทัดที่ {3})"},
     {codes::kToolForInsideThreading, "T{0} = {1} (threading inside a bore, {2} on line {3})",
      "T{0} = {1} (กลึงเกลียวใน {2} ในบรรทัดที่ {3})"},
-    {codes::kToolForGrooving, "T{0} = {1} (grooving cycle {2} on line {3})", "T{0} = {1} (วัฏจักรกลึงร่อง {2} ในบรรทัดที่ {3})"},
+    {codes::kToolForGrooving, "T{0} = {1} (grooving cycle {2} on line {3})",
+     "T{0} = {1} (วัฏจักรกลึงร่อง {2} ในบรรทัดที่ {3})"},
     {codes::kToolForDrilling, "T{0} = {1} (drilling on the centre line, {2} on line {3})",
      "T{0} = {1} (เจาะรูตามแนวศูนย์กลาง {2} ในบรรทัดที่ {3})"},
     {codes::kToolForBoring, "T{0} = {1} (cutting inside a bore, {2} on line {3})",
@@ -214,13 +229,12 @@ constexpr MessageText kIoMessages[] = {
     {codes::kOffsetFromLibrary, "offset {0} was 0 0 0 0: nose radius {1} and tip {2} of {3} are used",
      "ออฟเซต {0} เป็น 0 0 0 0: ใช้รัศมีจมูกมีด {1} และหมายเลขปลายมีด {2} ของ {3}"},
     {codes::kToolsBeyondCentre,
-     "the program cuts at X < 0 (from line {0}): its tools work beyond the centre line, as on a rear tool post, and are mirrored there",
+     "the program cuts at X < 0 (from line {0}): its tools work beyond the centre line, as on a rear tool post, and "
+     "are mirrored there",
      "โปรแกรมกลึงที่ X < 0 (ตั้งแต่บรรทัดที่ {0}): มีดทำงานอีกฝั่งของแนวศูนย์กลาง เหมือนป้อมมีดด้านหลัง จึงกลับด้านมีดไปฝั่งนั้น"},
-    {codes::kGuessReplacedStock,
-     "T{0}: {1} instead of {2}: the first guess touched the stock at line {3}",
+    {codes::kGuessReplacedStock, "T{0}: {1} instead of {2}: the first guess touched the stock at line {3}",
      "T{0}: ใช้ {1} แทน {2}: มีดที่เดาไว้ตอนแรกแตะชิ้นงานที่บรรทัดที่ {3}"},
-    {codes::kGuessReplacedChuck,
-     "T{0}: {1} instead of {2}: the first guess touched the chuck at line {3}",
+    {codes::kGuessReplacedChuck, "T{0}: {1} instead of {2}: the first guess touched the chuck at line {3}",
      "T{0}: ใช้ {1} แทน {2}: มีดที่เดาไว้ตอนแรกแตะหัวจับที่บรรทัดที่ {3}"},
     // {4} {5}: the row's own radius and tip, set for the tool the table had at that station.
     {codes::kOffsetReplacedByLibrary,

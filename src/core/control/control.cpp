@@ -38,12 +38,18 @@ std::string controlCodeWord(gcode::CodeAction action, gcode::Dialect dialect) {
 
 const char* modeKey(Mode m) {
   switch (m) {
-    case Mode::Edit: return "EDIT";
-    case Mode::Memory: return "MEM";
-    case Mode::Mdi: return "MDI";
-    case Mode::Jog: return "JOG";
-    case Mode::Handle: return "HANDLE";
-    case Mode::ZeroReturn: return "ZERO RETURN";
+    case Mode::Edit:
+      return "EDIT";
+    case Mode::Memory:
+      return "MEM";
+    case Mode::Mdi:
+      return "MDI";
+    case Mode::Jog:
+      return "JOG";
+    case Mode::Handle:
+      return "HANDLE";
+    case Mode::ZeroReturn:
+      return "ZERO RETURN";
   }
   return "";
 }
@@ -78,7 +84,8 @@ machine::Timeline withOverrides(const machine::Timeline& timeline, const Overrid
   std::vector<machine::FeedMode> feedMode(timeline.moves.size(), machine::FeedMode::PerRev);
   std::size_t next = 0;
   for (const machine::StateSnapshot& s : timeline.snapshots)
-    for (; next < feedMode.size() && next < static_cast<std::size_t>(s.moveEnd); ++next) feedMode[next] = s.modal.feedMode;
+    for (; next < feedMode.size() && next < static_cast<std::size_t>(s.moveEnd); ++next)
+      feedMode[next] = s.modal.feedMode;
   const double feed = o.feed / 100.0, spindle = o.spindle / 100.0;
   const double inf = std::numeric_limits<double>::infinity();
   double t = 0.0;
@@ -89,16 +96,23 @@ machine::Timeline withOverrides(const machine::Timeline& timeline, const Overrid
     double nd = d;
     switch (in.kind) {
       case MoveKind::Rapid:
-        nd = o.rapid <= 0 ? machine::rapidSeconds(in.path, std::min(kRapidF0Rate, m.rapidX), std::min(kRapidF0Rate, m.rapidZ))
-                          : d * 100.0 / o.rapid;
+        nd = o.rapid <= 0
+                 ? machine::rapidSeconds(in.path, std::min(kRapidF0Rate, m.rapidX), std::min(kRapidF0Rate, m.rapidZ))
+                 : d * 100.0 / o.rapid;
         break;
-      case MoveKind::Dwell: break;
-      case MoveKind::Thread: nd = d / spindle; break;  // the feed override is ignored while threading
+      case MoveKind::Dwell:
+        break;
+      case MoveKind::Thread:
+        nd = d / spindle;
+        break;  // the feed override is ignored while threading
       case MoveKind::Line:
       case MoveKind::Arc:
-        if (feed <= 0.0) nd = inf;
-        else if (dryRun) nd = in.path.length() / (dryRunFeed * feed) * 60.0;
-        else nd = feedMode[i] == machine::FeedMode::PerMinute ? d / feed : d / (feed * spindle);
+        if (feed <= 0.0)
+          nd = inf;
+        else if (dryRun)
+          nd = in.path.length() / (dryRunFeed * feed) * 60.0;
+        else
+          nd = feedMode[i] == machine::FeedMode::PerMinute ? d / feed : d / (feed * spindle);
         break;
     }
     if (in.kind != MoveKind::Dwell && nd > 0.0 && std::isfinite(nd) && d > 0.0) {
@@ -187,9 +201,13 @@ AxisValues Control::absolutePosition() const {
   return {machine_.x - r.geometry.x - r.wear.x - shift_.x, machine_.z - r.geometry.z - r.wear.z - shift_.z};
 }
 
-AxisValues Control::relativePosition() const { return {machine_.x - relativeOrigin_.x, machine_.z - relativeOrigin_.z}; }
+AxisValues Control::relativePosition() const {
+  return {machine_.x - relativeOrigin_.x, machine_.z - relativeOrigin_.z};
+}
 
-void Control::originRelative(Axis a) { (a == Axis::X ? relativeOrigin_.x : relativeOrigin_.z) = a == Axis::X ? machine_.x : machine_.z; }
+void Control::originRelative(Axis a) {
+  (a == Axis::X ? relativeOrigin_.x : relativeOrigin_.z) = a == Axis::X ? machine_.x : machine_.z;
+}
 
 AxisValues Control::distanceToGo() const {
   if (!mdiTarget_) return {};
@@ -213,7 +231,8 @@ AxisValues Control::travelMax() const {
 
 std::optional<Diagnostic> Control::indexTurret(int station) {
   if (alarm_) return diag(Severity::Alarm, kc::kResetFirst, {alarm_->code});
-  if (station < 1 || station > setup_.machine.turretStations) return diag(Severity::Error, kc::kMeasureWithoutTool, {fmt::format("{:02d}", station)});
+  if (station < 1 || station > setup_.machine.turretStations)
+    return diag(Severity::Error, kc::kMeasureWithoutTool, {fmt::format("{:02d}", station)});
   station_ = station;
   touchedStopped_ = false;
   mdiTarget_.reset();
@@ -295,7 +314,8 @@ MotionResult Control::runMoves(std::vector<Move> moves) {
     if (stop.code == kc::kCutWithSpindleStopped) {
       touchedStopped_ = true;
       stop = diag(Severity::Warning, kc::kTouchedSpindleStopped,
-                  {fmt::format("{:02d}", station_), stop.args.size() > 0 ? stop.args[0] : "", stop.args.size() > 1 ? stop.args[1] : ""});
+                  {fmt::format("{:02d}", station_), stop.args.size() > 0 ? stop.args[0] : "",
+                   stop.args.size() > 1 ? stop.args[1] : ""});
       notices_.push_back(stop);
       result.cut = true;
     } else {
@@ -386,7 +406,8 @@ MotionResult Control::zeroReturn(Axis a) {
 
 MotionResult Control::jog(Axis a, double distance, bool rapid) {
   MotionResult r;
-  if (!motionAllowed(Mode::Jog, a == Axis::X ? (distance > 0 ? "+X" : "-X") : (distance > 0 ? "+Z" : "-Z"), r)) return r;
+  if (!motionAllowed(Mode::Jog, a == Axis::X ? (distance > 0 ? "+X" : "-X") : (distance > 0 ? "+Z" : "-Z"), r))
+    return r;
   AxisValues target = machine_;
   (a == Axis::X ? target.x : target.z) += distance;
   return moveTo(target, rapid, jogFeed * overrides_.feed / 100.0);
@@ -408,7 +429,9 @@ std::vector<Diagnostic> Control::runMdi(std::string_view text) {
   if (!motionAllowed(Mode::Mdi, "CYCLE START", gate)) return {*gate.stop};
   if (!referenced(Axis::X) || !referenced(Axis::Z))
     return {diag(Severity::Alarm, kc::kNotReferenced,
-                 {controlLabel(kc::kNotReferenced), !referenced(Axis::X) && !referenced(Axis::Z) ? "X Z" : !referenced(Axis::X) ? "X" : "Z"})};
+                 {controlLabel(kc::kNotReferenced), !referenced(Axis::X) && !referenced(Axis::Z) ? "X Z"
+                                                    : !referenced(Axis::X)                       ? "X"
+                                                                                                 : "Z"})};
   // What the control remembers between MDI blocks, as blocks before the typed ones
   // (each on its own line: some machines want G98/G99 alone).
   std::vector<std::string> prefix;
@@ -416,17 +439,22 @@ std::vector<Diagnostic> Control::runMdi(std::string_view text) {
   using gcode::CodeAction;
   const bool css = mdiModal_ && mdiModal_->spindleMode == machine::SpindleMode::ConstantSurface;
   if (mdiModal_) {
-    prefix.push_back(controlCodeWord(mdiModal_->feedMode == machine::FeedMode::PerMinute ? CodeAction::FeedPerMinute
-                                                                                          : CodeAction::FeedPerRev, dialect_));
+    prefix.push_back(controlCodeWord(
+        mdiModal_->feedMode == machine::FeedMode::PerMinute ? CodeAction::FeedPerMinute : CodeAction::FeedPerRev,
+        dialect_));
     if (mdiModal_->feed > 0.0) prefix.push_back(fmt::format("F{}", mdiModal_->feed));
   }
-  if (css) prefix.push_back(fmt::format("{} S{}", controlCodeWord(CodeAction::ConstantSurface, dialect_), mdiModal_->sWord));
-  else prefix.push_back(fmt::format("{} S{}", controlCodeWord(CodeAction::ConstantRpm, dialect_), sWord_));
+  if (css)
+    prefix.push_back(fmt::format("{} S{}", controlCodeWord(CodeAction::ConstantSurface, dialect_), mdiModal_->sWord));
+  else
+    prefix.push_back(fmt::format("{} S{}", controlCodeWord(CodeAction::ConstantRpm, dialect_), sWord_));
   if (spindle_ != SpindleDir::Stopped)
-    prefix.push_back(controlCodeWord(spindle_ == SpindleDir::Cw ? CodeAction::SpindleCw : CodeAction::SpindleCcw, dialect_));
+    prefix.push_back(
+        controlCodeWord(spindle_ == SpindleDir::Cw ? CodeAction::SpindleCw : CodeAction::SpindleCcw, dialect_));
   if (coolant) prefix.push_back(controlCodeWord(CodeAction::CoolantOn, dialect_));
   if (mdiModal_ && (mdiModal_->motion == machine::MotionMode::Line || mdiModal_->motion == machine::MotionMode::Rapid))
-    prefix.push_back(controlCodeWord(mdiModal_->motion == machine::MotionMode::Line ? CodeAction::Line : CodeAction::Rapid, dialect_));
+    prefix.push_back(controlCodeWord(
+        mdiModal_->motion == machine::MotionMode::Line ? CodeAction::Line : CodeAction::Rapid, dialect_));
   io::ProgramFile file;
   file.header = header_;
   file.plainGcode = true;
@@ -477,7 +505,9 @@ std::optional<Diagnostic> Control::cycleStartRefusal(const std::vector<int>& sta
   if (alarm_) return diag(Severity::Alarm, kc::kResetFirst, {alarm_->code});
   if (!referenced(Axis::X) || !referenced(Axis::Z))
     return diag(Severity::Alarm, kc::kNotReferenced,
-                {controlLabel(kc::kNotReferenced), !referenced(Axis::X) && !referenced(Axis::Z) ? "X Z" : !referenced(Axis::X) ? "X" : "Z"});
+                {controlLabel(kc::kNotReferenced), !referenced(Axis::X) && !referenced(Axis::Z) ? "X Z"
+                                                   : !referenced(Axis::X)                       ? "X"
+                                                                                                : "Z"});
   if (exercise_) {
     std::string missing;
     for (int s : stationsUsed) {

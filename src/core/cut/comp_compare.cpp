@@ -49,7 +49,8 @@ CompComparison compareCompensation(const gcode::Program& program, const machine:
   otherRun.persistentVariables = nullptr;
   const machine::Timeline a = machine::interpret(program, setup, quiet);
   const machine::Timeline b = machine::interpret(program, otherSetup, otherRun);
-  out.usesCompensation = std::any_of(a.moves.begin(), a.moves.end(), [](const machine::Move& m) { return m.compensated; });
+  out.usesCompensation =
+      std::any_of(a.moves.begin(), a.moves.end(), [](const machine::Move& m) { return m.compensated; });
 
   CutOptions options;
   options.checkpointBudgetBytes = 0;
@@ -139,15 +140,14 @@ std::string describeDifference(const CompDifference& d, const gcode::Program& pr
   }
   std::string what = featureKindName(d.feature, lang);
   if (!th) std::transform(what.begin(), what.end(), what.begin(), [](unsigned char c) { return std::tolower(c); });
-  const std::string how = with == CompareWith::NoCompensation
-                              ? (th ? "เมื่อไม่ชดเชยรัศมีจมูกมีด" : "without compensation")
-                              : (th ? "เมื่อจมูกมีดแหลม (R 0)" : "with a sharp nose (R 0)");
-  const std::string amount = units.inch() ? fmt::format("{:.4f}", units.value(std::abs(d.normal)))
-                                           : fmt::format("{:.2f}", std::abs(d.normal));
+  const std::string how = with == CompareWith::NoCompensation ? (th ? "เมื่อไม่ชดเชยรัศมีจมูกมีด" : "without compensation")
+                                                              : (th ? "เมื่อจมูกมีดแหลม (R 0)" : "with a sharp nose (R 0)");
+  const std::string amount =
+      units.inch() ? fmt::format("{:.4f}", units.value(std::abs(d.normal))) : fmt::format("{:.2f}", std::abs(d.normal));
   const std::string unit = units.unitName(lang);
   if (th)
-    return fmt::format("{} {} {}: {} {} {} {}", what, d.label, block, d.normal > 0.0 ? "เนื้อเหลือเกิน" : "กินลึกเกิน",
-                       amount, unit, how);
+    return fmt::format("{} {} {}: {} {} {} {}", what, d.label, block, d.normal > 0.0 ? "เนื้อเหลือเกิน" : "กินลึกเกิน", amount,
+                       unit, how);
   return fmt::format("{} {} {}: {} {} {} {}", what, d.label, block, amount, unit, d.normal > 0.0 ? "short" : "too deep",
                      how);
 }

@@ -61,33 +61,30 @@ Trapezoid clipZ(const Trapezoid& t, double limit, bool keepLeft) {
   return c;
 }
 
-bool hasArea(const Trapezoid& t) {
-  return t.z1 > t.z0 && (t.top0 > t.bottom0 || t.top1 > t.bottom1);
-}
+bool hasArea(const Trapezoid& t) { return t.z1 > t.z0 && (t.top0 > t.bottom0 || t.top1 > t.bottom1); }
 
 // Moves whose form is the tool's own: threading passes, drilling on the axis.
 bool onAxis(const machine::Move& m) { return std::abs(m.path.start.y()) < 1e-6 && std::abs(m.path.end.y()) < 1e-6; }
 
 bool keepsWholeTool(const machine::Move& m) { return m.kind == machine::MoveKind::Thread || onAxis(m); }
 
-
 struct Finding {
   DefectKind kind;
   FeatureSide side;
   int column;
   double depth;
-  double described;  // radius of the described surface
-  int cause = -1;    // move index
-  int pathMove = -1; // a gouge below the programmed path: the programmed move that lies there
+  double described;   // radius of the described surface
+  int cause = -1;     // move index
+  int pathMove = -1;  // a gouge below the programmed path: the programmed move that lies there
 };
 
 // The programmed path over one column: the lowest (outside) or highest (inside)
 // radius a feed move's path has at the column's centre.
 struct ProgrammedColumn {
   double radius = 0.0;
-  int move = -1;            // into the programmed timeline; -1: no path over the column
-  double nose = 0.0;        // that move's nose radius
-  bool contour = false;     // a contour, not a tool's form (threading passes are the form)
+  int move = -1;         // into the programmed timeline; -1: no path over the column
+  double nose = 0.0;     // that move's nose radius
+  bool contour = false;  // a contour, not a tool's form (threading passes are the form)
   // A face or a retreat the path makes in the column: the contour's wall, up to
   // its top (outside) or down to its bottom (inside); NaN when none.
   double wall = std::numeric_limits<double>::quiet_NaN();
@@ -137,15 +134,15 @@ std::vector<ProgrammedColumn> programmedColumns(const machine::Timeline& program
     const ToolShape* shape = shapes.get(m.tool, m.offset);
     const double tipX = shape ? comp::tipVector(shape->tip).y() : 0.0;
     const double outer = part.outerRadius(c);
-    const bool outsideMove =
-        tipX != 0.0 ? tipX < 0.0 : outer <= 0.0 || mid.y() >= (outer + part.innerRadius(c)) / 2.0;
+    const bool outsideMove = tipX != 0.0 ? tipX < 0.0 : outer <= 0.0 || mid.y() >= (outer + part.innerRadius(c)) / 2.0;
     if (outsideMove != outside) continue;
     const double z0 = std::min(m.path.start.x(), m.path.end.x()), z1 = std::max(m.path.start.x(), m.path.end.x());
     if (z1 - z0 < dz) {  // a face or a retreat: a wall of the contour, over no column's width
       ProgrammedColumn& p = out[static_cast<std::size_t>(c)];
-      const double extreme = outside ? std::max(m.path.start.y(), m.path.end.y())
-                                     : std::min(m.path.start.y(), m.path.end.y());
-      if (m.kind != machine::MoveKind::Thread && (std::isnan(p.wall) || (outside ? extreme > p.wall : extreme < p.wall)))
+      const double extreme =
+          outside ? std::max(m.path.start.y(), m.path.end.y()) : std::min(m.path.start.y(), m.path.end.y());
+      if (m.kind != machine::MoveKind::Thread &&
+          (std::isnan(p.wall) || (outside ? extreme > p.wall : extreme < p.wall)))
         p.wall = extreme;
       continue;
     }
@@ -365,20 +362,22 @@ PartCheck checkPart(const machine::Timeline& timeline, const machine::Timeline& 
   for (int i = 0; i < n; ++i) {
     const auto k = static_cast<std::size_t>(i);
     const double ro = a.outerRadius(i), io = b.outerRadius(i);
-    if (io - ro > options.gougeTolerance) findings.push_back({DefectKind::Gouge, FeatureSide::Outside, i, io - ro, io});
+    if (io - ro > options.gougeTolerance)
+      findings.push_back({DefectKind::Gouge, FeatureSide::Outside, i, io - ro, io});
     else if (pathOut[k].move >= 0 && pathOut[k].radius - ro > options.gougeTolerance)
-      findings.push_back({DefectKind::Gouge, FeatureSide::Outside, i, pathOut[k].radius - ro, pathOut[k].radius,
-                          -1, pathOut[k].move});
+      findings.push_back(
+          {DefectKind::Gouge, FeatureSide::Outside, i, pathOut[k].radius - ro, pathOut[k].radius, -1, pathOut[k].move});
     const double describedOut = reachOut.at(k, io);
     if (ro - describedOut > options.leftoverTolerance)
       findings.push_back({DefectKind::Leftover, FeatureSide::Outside, i, ro - describedOut, describedOut, -1,
                           std::isnan(reachOut.described[k]) ? -1 : pathOut[k].move});
     if (ro <= 0.0 || io <= 0.0) continue;  // no bore where nothing is left
     const double ri = a.innerRadius(i), ii = b.innerRadius(i);
-    if (ri - ii > options.gougeTolerance) findings.push_back({DefectKind::Gouge, FeatureSide::Inside, i, ri - ii, ii});
+    if (ri - ii > options.gougeTolerance)
+      findings.push_back({DefectKind::Gouge, FeatureSide::Inside, i, ri - ii, ii});
     else if (pathIn[k].move >= 0 && ri - pathIn[k].radius > options.gougeTolerance)
-      findings.push_back({DefectKind::Gouge, FeatureSide::Inside, i, ri - pathIn[k].radius, pathIn[k].radius, -1,
-                          pathIn[k].move});
+      findings.push_back(
+          {DefectKind::Gouge, FeatureSide::Inside, i, ri - pathIn[k].radius, pathIn[k].radius, -1, pathIn[k].move});
     const double describedIn = reachIn.at(k, ii);
     if (describedIn - ri > options.leftoverTolerance)
       findings.push_back({DefectKind::Leftover, FeatureSide::Inside, i, describedIn - ri, describedIn, -1,
@@ -478,9 +477,9 @@ std::vector<Diagnostic> partCheckDiagnostics(const PartCheck& check, const UnitF
   for (const PartDefect& d : check.defects) {
     Diagnostic g;
     g.severity = Severity::Warning;
-    g.code = d.kind == DefectKind::Gouge ? (d.side == FeatureSide::Outside ? codes::kPartGouge : codes::kBoreGouge)
-                                         : (d.side == FeatureSide::Outside ? codes::kPartLeftover
-                                                                           : codes::kBoreLeftover);
+    g.code = d.kind == DefectKind::Gouge
+                 ? (d.side == FeatureSide::Outside ? codes::kPartGouge : codes::kBoreGouge)
+                 : (d.side == FeatureSide::Outside ? codes::kPartLeftover : codes::kBoreLeftover);
     g.range.line = d.line;
     g.range.column = d.line > 0 ? 1 : 0;
     g.range.file = d.file;

@@ -9,22 +9,23 @@ namespace klueng::core::cut {
 
 namespace {
 
-constexpr double kFitTolerance = 0.002;       // mm of radius: the stock's radii are exact
-constexpr double kNoseFilletRadius = 1.6;     // a concave arc this small is the tool nose's print
-constexpr double kMaxChamferLeg = 5.0;        // mm: a longer bevel is a taper
-constexpr double kMaxGrooveWidth = 10.0;      // mm
-constexpr double kMinGrooveDepth = 0.1;       // mm of radius
+constexpr double kFitTolerance = 0.002;    // mm of radius: the stock's radii are exact
+constexpr double kNoseFilletRadius = 1.6;  // a concave arc this small is the tool nose's print
+constexpr double kMaxChamferLeg = 5.0;     // mm: a longer bevel is a taper
+constexpr double kMaxGrooveWidth = 10.0;   // mm
+constexpr double kMinGrooveDepth = 0.1;    // mm of radius
 constexpr double kCylinderRise = 0.002;
-constexpr double kSliverLength = 0.15;        // mm: a bevel's end rolled by the nose, fitted apart       // mm of radius over the length
+constexpr double kSliverLength =
+    0.15;  // mm: a bevel's end rolled by the nose, fitted apart       // mm of radius over the length
 
 enum class ItemKind { Piece, Face, Thread };
 
 struct Item {
   ItemKind kind = ItemKind::Piece;
-  fit::Piece piece;      // Piece
-  double z = 0.0;        // Face
-  double jump = 0.0;     // Face: radius step between its columns
-  fit::ThreadRun thread; // Thread
+  fit::Piece piece;                  // Piece
+  double z = 0.0;                    // Face
+  double jump = 0.0;                 // Face: radius step between its columns
+  fit::ThreadRun thread;             // Thread
   double zLeft = 0.0, zRight = 0.0;  // Thread
 };
 
@@ -169,7 +170,8 @@ long neighbour(const std::vector<PartFeature>& fs, long k, int dir) {
 Vec2 sharpCorner(const PartFeature& taper, const PartFeature* other, bool leftEnd) {
   const double b = (taper.diameterRight - taper.diameterLeft) / 2.0 / std::max(1e-9, taper.length());
   const double a = taper.diameterLeft / 2.0 - b * taper.zLeft;
-  const Vec2 own = leftEnd ? Vec2(taper.zLeft, taper.diameterLeft / 2.0) : Vec2(taper.zRight, taper.diameterRight / 2.0);
+  const Vec2 own =
+      leftEnd ? Vec2(taper.zLeft, taper.diameterLeft / 2.0) : Vec2(taper.zRight, taper.diameterRight / 2.0);
   if (other == nullptr) return own;
   if (other->kind == FeatureKind::Face) return Vec2(other->zLeft, a + b * other->zLeft);
   if (other->kind == FeatureKind::Cylinder || other->kind == FeatureKind::Taper) {
@@ -263,7 +265,8 @@ void mergeScratchedCylinders(std::vector<PartFeature>& fs) {
   for (std::size_t k = 0; k + 1 < fs.size();) {
     PartFeature& a = fs[k];
     const PartFeature& b = fs[k + 1];
-    if (a.kind != FeatureKind::Cylinder || b.kind != FeatureKind::Cylinder || std::abs(a.diameter - b.diameter) > kScratch) {
+    if (a.kind != FeatureKind::Cylinder || b.kind != FeatureKind::Cylinder ||
+        std::abs(a.diameter - b.diameter) > kScratch) {
       ++k;
       continue;
     }
@@ -350,18 +353,15 @@ void readSide(const Side& s, int first, int last, FeatureSide side, const std::v
     face(it.z, 2.0 * radiusBeside(items, k, -1, it.z, 0.0), 2.0 * radiusBeside(items, k, +1, it.z, 0.0));
   }
   if (ends || (last + 1 < n && at(otherR, last + 1) > 0.0))
-    face(zEnd, 2.0 * radiusBeside(items, items.size() - 1, 0, zEnd, at(s.r, last)), ends ? 2.0 * at(otherR, last) : 0.0);
+    face(zEnd, 2.0 * radiusBeside(items, items.size() - 1, 0, zEnd, at(s.r, last)),
+         ends ? 2.0 * at(otherR, last) : 0.0);
 }
 
 }  // namespace
 
-bool PartFeature::isFortyFiveChamfer() const {
-  return kind == FeatureKind::Chamfer && std::abs(angle - 45.0) <= 0.5;
-}
+bool PartFeature::isFortyFiveChamfer() const { return kind == FeatureKind::Chamfer && std::abs(angle - 45.0) <= 0.5; }
 
-bool PartFeature::isNoseFillet() const {
-  return kind == FeatureKind::Arc && !convex && radius <= kNoseFilletRadius;
-}
+bool PartFeature::isNoseFillet() const { return kind == FeatureKind::Arc && !convex && radius <= kNoseFilletRadius; }
 
 double PartFeature::radiusAt(double z) const {
   if (kind == FeatureKind::Groove) return diameter / 2.0;
@@ -410,8 +410,8 @@ PartFeatures partFeatures(const Stock& stock) {
       }
       int j = i;
       while (j + 1 < n && side->r[static_cast<std::size_t>(j + 1)] > 0.0) ++j;
-      readSide(*side, i, j, isOuter ? FeatureSide::Outside : FeatureSide::Inside, isOuter ? inner.r : outer.r,
-               isOuter, list);
+      readSide(*side, i, j, isOuter ? FeatureSide::Outside : FeatureSide::Inside, isOuter ? inner.r : outer.r, isOuter,
+               list);
       if (isOuter) {
         out.zLeft = first ? stock.zLeft(i) : out.zLeft;
         out.zRight = stock.zRight(j);

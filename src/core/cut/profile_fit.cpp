@@ -13,7 +13,7 @@ namespace klueng::core::cut::fit {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr int kMinLinePoints = 5;   // fewer collinear points than this start an arc instead
+constexpr int kMinLinePoints = 5;  // fewer collinear points than this start an arc instead
 constexpr double kMaxArcRadius = 5000.0;
 constexpr int kMaxCheckedPoints = 256;  // arc growth checks a spread of this many points at most
 
@@ -312,8 +312,10 @@ std::vector<ThreadRun> findThreads(const std::vector<double>& z, const std::vect
       return true;
     };
     while (t.last < last && std::abs(r[t.last + 1] - r[t.last]) < 1e-9) ++t.last;  // the crest's flat
-    if (t.last < last && fallsTo(t.last, last, 1)) t.last = last;
-    else while (t.last > ext[w0].to && std::abs(r[t.last] - r[t.last - 1]) < 1e-9) --t.last;
+    if (t.last < last && fallsTo(t.last, last, 1))
+      t.last = last;
+    else
+      while (t.last > ext[w0].to && std::abs(r[t.last] - r[t.last - 1]) < 1e-9) --t.last;
     int crestStart = t.first;
     while (crestStart > first && std::abs(r[crestStart - 1] - r[crestStart]) < 1e-9) --crestStart;
     if (crestStart > first && fallsTo(crestStart, first, -1)) t.first = first;

@@ -126,8 +126,10 @@ std::vector<Trapezoid> smoothedEdge(const io::RgbImage& image, double originZ, d
         bottomEdge = (r.bottom + o.bottom) / 2;
         topEdge = (r.top + o.top) / 2;
       }
-      if (leftHalf) out.push_back({zFrom, zTo, bottomEdge, r.bottom, topEdge, r.top});
-      else out.push_back({zFrom, zTo, r.bottom, bottomEdge, r.top, topEdge});
+      if (leftHalf)
+        out.push_back({zFrom, zTo, bottomEdge, r.bottom, topEdge, r.top});
+      else
+        out.push_back({zFrom, zTo, r.bottom, bottomEdge, r.top, topEdge});
     };
     half(col - 1, zl, zc, true);
     half(col + 1, zc, zr, false);
@@ -173,8 +175,9 @@ io::ReadResult<ToolShape> makeToolShape(const io::RgbImage& image, const std::st
     return result;
   }
   if (image.width > maxPixels || image.height > maxPixels) {
-    result.diagnostics.push_back(toolError(
-        codes::kBitmapTooLarge, {fileName, std::to_string(image.width), std::to_string(image.height), std::to_string(maxPixels)}));
+    result.diagnostics.push_back(
+        toolError(codes::kBitmapTooLarge,
+                  {fileName, std::to_string(image.width), std::to_string(image.height), std::to_string(maxPixels)}));
     return result;
   }
   int c0 = image.width, c1 = -1, r0 = image.height, r1 = -1;

@@ -72,7 +72,8 @@ Contour build(const std::vector<OutsideStep>& steps, double side, double before,
     if (sloped) {
       if (k == 0) c.x0 = before;
       ContourMove m{d, z - s.length};
-      if (s.kind == StepKind::Arc && !arcMove(s, n, side, z, before / 2.0, z - s.length, d / 2.0, m, why)) m = {d, z - s.length};
+      if (s.kind == StepKind::Arc && !arcMove(s, n, side, z, before / 2.0, z - s.length, d / 2.0, m, why))
+        m = {d, z - s.length};
       m.note = s.kind == StepKind::Arc ? MoveNote::Arc : MoveNote::Taper;
       m.noteSize = s.radius;
       c.moves.push_back(m);
@@ -82,8 +83,10 @@ Contour build(const std::vector<OutsideStep>& steps, double side, double before,
     }
     const double e = s.edge == EdgeBreak::None ? 0.0 : s.edgeSize;
     const double foot = d - 2.0 * e;  // where the face meets the edge break
-    if (k == 0) c.x0 = foot;
-    else if (foot > before + kEps) c.moves.push_back({foot, z, false, false, 0.0, 0.0, 0.0, MoveNote::Face});
+    if (k == 0)
+      c.x0 = foot;
+    else if (foot > before + kEps)
+      c.moves.push_back({foot, z, false, false, 0.0, 0.0, 0.0, MoveNote::Face});
     if (s.edge == EdgeBreak::Chamfer) c.moves.push_back({d, z - e, false, false, 0.0, 0.0, 0.0, MoveNote::Chamfer, e});
     if (s.edge == EdgeBreak::Round)
       c.moves.push_back({d, z - e, true, false, e, z - e, foot / 2.0, MoveNote::Round, e});
@@ -94,7 +97,8 @@ Contour build(const std::vector<OutsideStep>& steps, double side, double before,
   // The finishing pass comes up the face to the first corner rather than along
   // Z onto it: turning away from the nose there, it goes round the corner and
   // leaves it sharp (turning toward the nose it would leave a sliver under it).
-  if (!steps.empty() && (steps[0].kind == StepKind::Cylinder || !slopedFromAxis) && c.x0 - faceFrom >= 2.0 * kFaceLead) {
+  if (!steps.empty() && (steps[0].kind == StepKind::Cylinder || !slopedFromAxis) &&
+      c.x0 - faceFrom >= 2.0 * kFaceLead) {
     c.moves.insert(c.moves.begin(), ContourMove{c.x0, 0.0, false, false, 0.0, 0.0, 0.0, MoveNote::Face});
     c.x0 -= 2.0 * kFaceLead;
   }
@@ -177,9 +181,12 @@ Diagnostic problem(const char* code, std::vector<std::string> args) {
 std::string commentText(const std::string& text) {
   std::string out = text;
   for (char& c : out) {
-    if (c == '(') c = '[';
-    else if (c == ')') c = ']';
-    else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
+    if (c == '(')
+      c = '[';
+    else if (c == ')')
+      c = ']';
+    else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+      c = ' ';
   }
   return out;
 }
@@ -191,12 +198,14 @@ void Writer::block(const std::string& words, const std::string& comment) {
     std::size_t end = words.find(' ', at);
     if (end == std::string::npos) end = words.size();
     const std::string_view word(words.data() + at, end - at);
-    const bool gCode = word.size() > 1 && word.front() == 'G' &&
-                       word.find_first_not_of("0123456789", 1) == std::string_view::npos;
+    const bool gCode =
+        word.size() > 1 && word.front() == 'G' && word.find_first_not_of("0123456789", 1) == std::string_view::npos;
     const int inA = gCode ? std::stoi(std::string(word.substr(1))) : -1;
     const int inSystem = gCode ? gcode::numberInSystem('G', inA, machine_) : -1;
-    if (gCode && inSystem >= 0 && inSystem != inA) renumbered += fmt::format("G{:02}", inSystem);
-    else renumbered += word;
+    if (gCode && inSystem >= 0 && inSystem != inA)
+      renumbered += fmt::format("G{:02}", inSystem);
+    else
+      renumbered += word;
     if (end < words.size()) renumbered += ' ';
     at = end + 1;
   }
@@ -215,13 +224,20 @@ std::string noteOf(const ContourMove& m, const Words& t) {
   };
   const std::string d = plain(std::abs(m.x));
   switch (m.note) {
-    case MoveNote::Face: return say("face to D{}", "หน้าตัดถึง D{}", d);
-    case MoveNote::Chamfer: return say("chamfer C{}", "ลบมุม C{}", plain(m.noteSize));
-    case MoveNote::Round: return say("round R{}", "มุมโค้ง R{}", plain(m.noteSize));
-    case MoveNote::Cylinder: return say("D{}, {} long", "D{} ยาว {}", d, plain(m.noteSize));
-    case MoveNote::Taper: return say("taper to D{}", "เรียวถึง D{}", d);
-    case MoveNote::Arc: return say("arc R{} to D{}", "ส่วนโค้ง R{} ถึง D{}", plain(m.noteSize), d);
-    case MoveNote::None: break;
+    case MoveNote::Face:
+      return say("face to D{}", "หน้าตัดถึง D{}", d);
+    case MoveNote::Chamfer:
+      return say("chamfer C{}", "ลบมุม C{}", plain(m.noteSize));
+    case MoveNote::Round:
+      return say("round R{}", "มุมโค้ง R{}", plain(m.noteSize));
+    case MoveNote::Cylinder:
+      return say("D{}, {} long", "D{} ยาว {}", d, plain(m.noteSize));
+    case MoveNote::Taper:
+      return say("taper to D{}", "เรียวถึง D{}", d);
+    case MoveNote::Arc:
+      return say("arc R{} to D{}", "ส่วนโค้ง R{} ถึง D{}", plain(m.noteSize), d);
+    case MoveNote::None:
+      break;
   }
   return {};
 }
@@ -232,12 +248,13 @@ void contourBlocks(Writer& w, const Contour& contour, double exitX, const Words&
   w.block(fmt::format("G01 Z0. F{}", num(kFinishFeed)), t.pick("finishing feed", "อัตราป้อนกลึงละเอียด"));
   for (const ContourMove& m : contour.moves) {
     if (m.arc)
-      w.block(fmt::format("{} X{} Z{} R{}", m.clockwise ? "G02" : "G03", num(m.x), num(m.z), num(m.radius)), noteOf(m, t));
+      w.block(fmt::format("{} X{} Z{} R{}", m.clockwise ? "G02" : "G03", num(m.x), num(m.z), num(m.radius)),
+              noteOf(m, t));
     else
       w.block(fmt::format("G01 X{} Z{}", num(m.x), num(m.z)), noteOf(m, t));
   }
-  w.block(fmt::format("G01 X{}", num(exitX)), contour.side > 0 ? t.pick("out over the bar", "ถอยพ้นผิวชิ้นงานดิบ")
-                                                                : t.pick("down into the hole", "ลงมาในรู"));
+  w.block(fmt::format("G01 X{}", num(exitX)),
+          contour.side > 0 ? t.pick("out over the bar", "ถอยพ้นผิวชิ้นงานดิบ") : t.pick("down into the hole", "ลงมาในรู"));
 }
 
 }  // namespace klueng::core::design::detail

@@ -18,11 +18,11 @@ enum class MoveNote { None, Face, Chamfer, Round, Cylinder, Taper, Arc };
 struct ContourMove {
   double x = 0.0, z = 0.0;
   bool arc = false;
-  bool clockwise = false;               // G02 (seen with X up, Z right); else G03
+  bool clockwise = false;  // G02 (seen with X up, Z right); else G03
   double radius = 0.0;
   double centreZ = 0.0, centreR = 0.0;  // arc centre (z, radius)
   MoveNote note = MoveNote::None;
-  double noteSize = 0.0;                // chamfer C, round R, a cylinder's length
+  double noteSize = 0.0;  // chamfer C, round R, a cylinder's length
 };
 
 // The contour from the face (x0 at Z0) leftward; inside, from the bore's mouth.

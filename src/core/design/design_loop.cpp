@@ -21,7 +21,7 @@ namespace {
 using cut::FeatureKind;
 using cut::PartFeature;
 
-constexpr double kZSlack = 0.1;  // mm: two stock columns, where a feature's ends are read
+constexpr double kZSlack = 0.1;             // mm: two stock columns, where a feature's ends are read
 constexpr double kThreadDepthSlack = 0.05;  // mm on the minor Ø: the thread read from the cut columns
 
 std::string plainNum(double v) { return detail::plain(v); }
@@ -78,8 +78,7 @@ std::string whatIsThere(const PartFeature& f, const std::string& drawn) {
   if (there != drawn) return there;
   there = preciseLabel(f);
   if (there != drawn) return there;
-  if (f.kind == FeatureKind::Arc)
-    return fmt::format("{} Z{} X{}", there, num3(f.centre.x()), num3(2.0 * f.centre.y()));
+  if (f.kind == FeatureKind::Arc) return fmt::format("{} Z{} X{}", there, num3(f.centre.x()), num3(2.0 * f.centre.y()));
   return fmt::format("{} Z{}–Z{}", there, num3(f.zRight), num3(f.zLeft));
 }
 
@@ -98,7 +97,8 @@ void expectSteps(const std::vector<OutsideStep>& steps, bool inside, std::vector
       out.push_back({"Ø" + plainNum(s.diameter), zr - e, zl, inside, [=](const PartFeature& f) {
                        return (f.kind == FeatureKind::Cylinder || f.kind == FeatureKind::Thread ||
                                f.kind == FeatureKind::Groove) &&
-                              overlaps(f, zr - e, zl) && near(f.kind == FeatureKind::Groove ? -1.0 : f.diameter, s.diameter);
+                              overlaps(f, zr - e, zl) &&
+                              near(f.kind == FeatureKind::Groove ? -1.0 : f.diameter, s.diameter);
                      }});
       if (s.edge == EdgeBreak::Chamfer)
         out.push_back({"C" + plainNum(e), zr, zr - e, inside, [=](const PartFeature& f) {
@@ -133,17 +133,19 @@ std::vector<Diagnostic> compareToDrawing(const PartDesign& part, const cut::Part
   expectSteps(part.outside, false, expected);
   expectSteps(part.inside, true, expected);
   for (const Groove& g : part.grooves)
-    expected.push_back({plainNum(g.width) + " × Ø" + plainNum(g.diameter), g.z, g.z - g.width, false, [=](const PartFeature& f) {
-                          return f.kind == FeatureKind::Groove && near(f.diameter, g.diameter) &&
-                                 near(f.zRight, g.z, kZSlack) && near(f.width, g.width, kZSlack);
-                        }});
+    expected.push_back(
+        {plainNum(g.width) + " × Ø" + plainNum(g.diameter), g.z, g.z - g.width, false, [=](const PartFeature& f) {
+           return f.kind == FeatureKind::Groove && near(f.diameter, g.diameter) && near(f.zRight, g.z, kZSlack) &&
+                  near(f.width, g.width, kZSlack);
+         }});
   // A thread is its pitch on the designed major Ø down to the designed minor Ø
   // (a thread cut deeper or shallower than drawn is not the drawn thread).
   for (const ThreadMark& t : partOutline(part).threads)
-    expected.push_back({"M" + plainNum(2.0 * t.major) + "×" + plainNum(t.pitch), t.zRight, t.zLeft, false, [=](const PartFeature& f) {
-                          return f.kind == FeatureKind::Thread && near(f.pitch, t.pitch) && overlaps(f, t.zRight, t.zLeft) &&
-                                 near(f.diameter, 2.0 * t.major) && near(f.minorDiameter, 2.0 * t.minor, kThreadDepthSlack);
-                        }});
+    expected.push_back(
+        {"M" + plainNum(2.0 * t.major) + "×" + plainNum(t.pitch), t.zRight, t.zLeft, false, [=](const PartFeature& f) {
+           return f.kind == FeatureKind::Thread && near(f.pitch, t.pitch) && overlaps(f, t.zRight, t.zLeft) &&
+                  near(f.diameter, 2.0 * t.major) && near(f.minorDiameter, 2.0 * t.minor, kThreadDepthSlack);
+         }});
   std::vector<Diagnostic> out;
   for (const Expected& e : expected) {
     const std::vector<PartFeature>& side = e.inside ? cut.inside : cut.outside;

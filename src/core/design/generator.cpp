@@ -17,20 +17,20 @@ namespace {
 
 using namespace detail;
 
-constexpr double kRoughDepth = 2.0;     // mm a side per roughing pass
-constexpr double kAllowanceX = 0.4;     // mm on the diameter left for the finishing pass
-constexpr double kAllowanceZ = 0.1;     // mm along Z
-constexpr double kRoughFeed = 0.25;     // mm/rev
+constexpr double kRoughDepth = 2.0;  // mm a side per roughing pass
+constexpr double kAllowanceX = 0.4;  // mm on the diameter left for the finishing pass
+constexpr double kAllowanceZ = 0.1;  // mm along Z
+constexpr double kRoughFeed = 0.25;  // mm/rev
 constexpr double kFaceFeed = 0.2;
-constexpr double kClear = 2.0;          // mm in front of the face
-constexpr double kBlade = 3.0;          // mm: the grooving tool T04's blade (tip 3: its left corner leads)
+constexpr double kClear = 2.0;  // mm in front of the face
+constexpr double kBlade = 3.0;  // mm: the grooving tool T04's blade (tip 3: its left corner leads)
 constexpr double kGrooveFeed = 0.05;
-constexpr double kBoreDepth = 1.0;      // mm a side per boring pass
+constexpr double kBoreDepth = 1.0;  // mm a side per boring pass
 constexpr double kBoreFeed = 0.15;
-constexpr double kDrill = 10.0;         // mm: the drill T06 (tools.cfg 06-drill-10mm)
-constexpr double kDrillFeed = 0.1;      // mm/rev
-constexpr double kPeck = 5.0;           // mm a peck
-constexpr int kThreadPasses = 6;          // classic G32 passes, equal chip area
+constexpr double kDrill = 10.0;     // mm: the drill T06 (tools.cfg 06-drill-10mm)
+constexpr double kDrillFeed = 0.1;  // mm/rev
+constexpr double kPeck = 5.0;       // mm a peck
+constexpr int kThreadPasses = 6;    // classic G32 passes, equal chip area
 
 // The table's material in the comments' language (the thesis's four; others as written).
 std::string materialName(const std::string& row, const Words& t) {
@@ -42,17 +42,16 @@ std::string materialName(const std::string& row, const Words& t) {
   return row;
 }
 
-
 // Roughing then finishing of one contour: the outside (side +1, from above the
 // bar) or the bore (side -1, from inside the tube's hole, its allowance negative).
 struct TurningPass {
   double side;
-  double from;         // Ø where the material starts: the bar's, or the tube's hole
-  double startX;       // the cycle's start point and where finishing ends
-  double depth;        // a side per roughing pass
+  double from;    // Ø where the material starts: the bar's, or the tube's hole
+  double startX;  // the cycle's start point and where finishing ends
+  double depth;   // a side per roughing pass
   double feed;
-  const char* comp;    // G42 outside, G41 in the bore
-  const char* what;    // "roughing 2 mm a side"
+  const char* comp;  // G42 outside, G41 in the bore
+  const char* what;  // "roughing 2 mm a side"
 };
 
 void writeTurning(Writer& w, const Contour& contour, const TurningPass& pass, gcode::Dialect dialect, const Words& t) {
@@ -69,7 +68,8 @@ void writeTurning(Writer& w, const Contour& contour, const TurningPass& pass, gc
          d -= side * 2.0 * pass.depth) {
       const double zEnd = zAtDiameter(contour, d - u) + kAllowanceZ;
       if (zEnd >= 0.0) continue;
-      w.block(fmt::format("G00 X{}", num(d)), fmt::format(fmt::runtime(t.pick("roughing pass to D{}", "กลึงหยาบถึง D{}")), plain(d)));
+      w.block(fmt::format("G00 X{}", num(d)),
+              fmt::format(fmt::runtime(t.pick("roughing pass to D{}", "กลึงหยาบถึง D{}")), plain(d)));
       // The first pass says what every pass does.
       const bool first = std::abs(d - (pass.from - side * 2.0 * pass.depth)) < 1e-9;
       w.block(fmt::format("G01 Z{} F{}", num(zEnd), num(pass.feed)),
@@ -88,10 +88,11 @@ void writeTurning(Writer& w, const Contour& contour, const TurningPass& pass, gc
   const bool haas = family == gcode::Dialect::Haas;
   const long long p = w.next() + w.step() * (haas ? 1 : 2);
   const long long q = p + w.step() * (static_cast<long long>(contour.moves.size()) + 2);
-  const std::string left = pass.side > 0 ? t.pick("0.4 on the diameter and 0.1 on Z left for finishing",
-                                                  "เหลือเผื่อกลึงละเอียด 0.4 มม. ทางเส้นผ่านศูนย์กลาง และ 0.1 มม. ทาง Z")
-                                         : t.pick("0.4 on the diameter, U negative in the bore, and 0.1 on Z left for finishing",
-                                                  "เหลือเผื่อกลึงละเอียด 0.4 มม. ทางเส้นผ่านศูนย์กลาง ค่า U ติดลบเพราะอยู่ในรู และ 0.1 มม. ทาง Z");
+  const std::string left =
+      pass.side > 0 ? t.pick("0.4 on the diameter and 0.1 on Z left for finishing",
+                             "เหลือเผื่อกลึงละเอียด 0.4 มม. ทางเส้นผ่านศูนย์กลาง และ 0.1 มม. ทาง Z")
+                    : t.pick("0.4 on the diameter, U negative in the bore, and 0.1 on Z left for finishing",
+                             "เหลือเผื่อกลึงละเอียด 0.4 มม. ทางเส้นผ่านศูนย์กลาง ค่า U ติดลบเพราะอยู่ในรู และ 0.1 มม. ทาง Z");
   if (haas) {
     w.block(fmt::format("G71 P{} Q{} U{} W{} D{} F{}", p, q, num(u), num(kAllowanceZ), num(pass.depth), num(pass.feed)),
             std::string(pass.what) + ", " + left);
@@ -103,7 +104,8 @@ void writeTurning(Writer& w, const Contour& contour, const TurningPass& pass, gc
   w.block(fmt::format("G00 X{}", num(contour.x0)), t.pick("the profile starts", "เริ่มรูปร่างชิ้นงาน"));
   contourBlocks(w, contour, pass.startX, t);
   w.block(fmt::format("G00 {} X{} Z{}", pass.comp, num(pass.startX), num(kClear)), finishing);
-  w.block(fmt::format("G70 P{} Q{}", p, q), t.pick("finishing: the profile's blocks P to Q", "กลึงละเอียดตามบล็อก P ถึง Q"));
+  w.block(fmt::format("G70 P{} Q{}", p, q),
+          t.pick("finishing: the profile's blocks P to Q", "กลึงละเอียดตามบล็อก P ถึง Q"));
 }
 
 }  // namespace
@@ -117,7 +119,8 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
   if (part.length() > reach + 1e-9) why.push_back(problem(codes::kPartLongerThanBar, {num(part.length()), num(reach)}));
   std::vector<CuttingSpeed> speeds = options.speeds;
   if (speeds.empty()) speeds = readCuttingSpeeds().value.value_or(std::vector<CuttingSpeed>{});
-  const auto row = std::find_if(speeds.begin(), speeds.end(), [&](const CuttingSpeed& s) { return s.material == part.material; });
+  const auto row =
+      std::find_if(speeds.begin(), speeds.end(), [&](const CuttingSpeed& s) { return s.material == part.material; });
   if (row == speeds.end()) {
     std::string names;
     for (const CuttingSpeed& s : speeds) names += (names.empty() ? "" : ", ") + s.material;
@@ -135,9 +138,10 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
       why.push_back(problem(codes::kBoreInSolidBar, {num(bore.smallestX()), num(kDrill), num(kDrill + 2.0)}));
     for (std::size_t k = 0; k < part.inside.size() && part.stockBore > 0.0; ++k)
       if (part.inside[k].diameter < part.stockBore - 1e-9)
-        why.push_back(problem(codes::kBoreBelowHole,
-                              {std::to_string(k + 1), num(part.inside[k].diameter), num(part.stockBore)}));
-    if (depth > part.length() + 1e-9) why.push_back(problem(codes::kBoreDeeperThanPart, {num(depth), num(part.length())}));
+        why.push_back(
+            problem(codes::kBoreBelowHole, {std::to_string(k + 1), num(part.inside[k].diameter), num(part.stockBore)}));
+    if (depth > part.length() + 1e-9)
+      why.push_back(problem(codes::kBoreDeeperThanPart, {num(depth), num(part.length())}));
   }
   // Each thread on one cylinder (its major Ø), with a pitch that fits it.
   std::vector<double> threadMajor(part.threads.size(), 0.0);
@@ -188,9 +192,9 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
   };
   const std::string tube = part.stockBore > 0.0 ? "x" + size(part.stockBore) : std::string();
   const std::string name = commentText(part.name);
-  std::string text = fmt::format("{}\n{}\n{}\n1{}{}\n1{}\nKlueng generator\n", io::headerText(name), io::headerText(name),
-                                 io::headerText(commentText(part.material)),
-                                 size(stock), tube, size(part.stockLength));
+  std::string text =
+      fmt::format("{}\n{}\n{}\n1{}{}\n1{}\nKlueng generator\n", io::headerText(name), io::headerText(name),
+                  io::headerText(commentText(part.material)), size(stock), tube, size(part.stockLength));
   // The blocks, numbered N10, N20, ... as by hand; a program too long for that
   // is numbered more closely rather than past the dialect's largest N (issue 29).
   const auto write = [&](int step) {
@@ -213,24 +217,28 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
     }
     w.block("T0101", t.pick("outside turning tool, offset 01", "มีดกลึงปอกด้านนอก ออฟเซต 01"));
     w.block(fmt::format("G50 S{}", out.spindleLimit),
-            fmt::format(fmt::runtime(t.pick("spindle limit: the machine's {} rpm", "จำกัดความเร็วรอบไว้ที่ {} รอบ/นาที ตามเครื่อง")),
-                        out.spindleLimit));
+            fmt::format(
+                fmt::runtime(t.pick("spindle limit: the machine's {} rpm", "จำกัดความเร็วรอบไว้ที่ {} รอบ/นาที ตามเครื่อง")),
+                out.spindleLimit));
     w.block(fmt::format("G96 S{} M03", num(out.cuttingSpeed)),
-            fmt::format(fmt::runtime(t.pick("Vc {} m/min for {} with a {} tool: S = 1000 x {} / 3.1416 / {} = {} rpm at D{}",
-                               "Vc {} ม./นาที สำหรับ {} มีด{}: S = 1000 x {} / 3.1416 / {} = {} รอบ/นาที ที่ D{}")),
-                        plain(out.cuttingSpeed), materialName(part.material, t),
-                        part.toolMaterial == "hss" ? "HSS" : t.pick("carbide", "คาร์ไบด์"),
-                        plain(out.cuttingSpeed), plain(stock), static_cast<long long>(std::llround(rpmAtStock)), plain(stock)));
-    w.block(fmt::format("G00 X{} Z{} M08", num(stock + 4.0), num(kClear)),
-            t.pick("2 mm over the bar, 2 mm in front of it, coolant on", "เหนือผิวชิ้นงานดิบ 2 มม. ห่างหน้า 2 มม. เปิดสารหล่อเย็น"));
+            fmt::format(
+                fmt::runtime(t.pick("Vc {} m/min for {} with a {} tool: S = 1000 x {} / 3.1416 / {} = {} rpm at D{}",
+                                    "Vc {} ม./นาที สำหรับ {} มีด{}: S = 1000 x {} / 3.1416 / {} = {} รอบ/นาที ที่ D{}")),
+                plain(out.cuttingSpeed), materialName(part.material, t),
+                part.toolMaterial == "hss" ? "HSS" : t.pick("carbide", "คาร์ไบด์"), plain(out.cuttingSpeed), plain(stock),
+                static_cast<long long>(std::llround(rpmAtStock)), plain(stock)));
+    w.block(
+        fmt::format("G00 X{} Z{} M08", num(stock + 4.0), num(kClear)),
+        t.pick("2 mm over the bar, 2 mm in front of it, coolant on", "เหนือผิวชิ้นงานดิบ 2 มม. ห่างหน้า 2 มม. เปิดสารหล่อเย็น"));
     w.block("G00 Z0.", t.pick("to the face", "ไปที่หน้างาน"));
     w.block(fmt::format("G01 X{} F{}", num(part.stockBore > 0.0 ? part.stockBore - 2.0 : -1.6), num(kFaceFeed)),
             t.pick("face the end at 0.2 mm/rev, past the centre", "ปาดหน้า ป้อน 0.2 มม./รอบ เลยศูนย์กลาง"));
     w.block(fmt::format("G00 Z{}", num(kClear)), t.pick("2 mm clear of the face", "ห่างหน้างาน 2 มม."));
-    w.block(fmt::format("G00 X{}", num(exitX)), t.pick("cycle start point, 1 mm over the bar", "จุดเริ่มวัฏจักร เหนือผิวชิ้นงานดิบ 1 มม."));
+    w.block(fmt::format("G00 X{}", num(exitX)),
+            t.pick("cycle start point, 1 mm over the bar", "จุดเริ่มวัฏจักร เหนือผิวชิ้นงานดิบ 1 มม."));
 
-    const TurningPass outsidePass{1.0, stock, exitX, kRoughDepth, kRoughFeed, "G42",
-                                   t.pick("roughing 2 mm a side", "กลึงหยาบครั้งละ 2 มม.")};
+    const TurningPass outsidePass{
+        1.0, stock, exitX, kRoughDepth, kRoughFeed, "G42", t.pick("roughing 2 mm a side", "กลึงหยาบครั้งละ 2 มม.")};
     writeTurning(w, contour, outsidePass, options.dialect, t);
     w.block("G00 G40 X100. Z100.", t.pick("compensation off, to the tool change point", "ยกเลิกชดเชย ไปจุดเปลี่ยนมีด"));
     if (!bore.moves.empty() && part.stockBore <= 0.0) {
@@ -247,7 +255,8 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
         for (double z = -kPeck; z > zDrill - kPeck + 1e-9; z -= kPeck) {
           const double to = std::max(z, zDrill);
           w.block(fmt::format("G01 Z{} F{}", num(to), num(kDrillFeed)),
-                  to == -kPeck ? t.pick("peck 5 mm, out to clear the chips", "เจาะทีละ 5 มม. ถอยออกเพื่อคายเศษ") : std::string());
+                  to == -kPeck ? t.pick("peck 5 mm, out to clear the chips", "เจาะทีละ 5 มม. ถอยออกเพื่อคายเศษ")
+                               : std::string());
           w.block(fmt::format("G00 Z{}", num(kClear)), to == -kPeck ? t.pick("out of the hole", "ถอยออกจากรู") : "");
           if (to > zDrill + 1e-9)
             w.block(fmt::format("G00 Z{}", num(to + 0.5)),
@@ -258,11 +267,13 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
                 t.pick("peck drilling, K 5 mm a peck", "เจาะเป็นช่วง K ช่วงละ 5 มม."));
       } else {
         w.block("G74 R1.", t.pick("1 mm back after each peck", "ถอยกลับ 1 มม. หลังเจาะแต่ละช่วง"));
-        w.block(fmt::format("G74 Z{} Q{} F{}", num(zDrill), static_cast<long long>(std::llround(kPeck * 1000.0)), num(kDrillFeed)),
+        w.block(fmt::format("G74 Z{} Q{} F{}", num(zDrill), static_cast<long long>(std::llround(kPeck * 1000.0)),
+                            num(kDrillFeed)),
                 t.pick("Q 5 mm a peck, in microns", "Q ช่วงละ 5 มม. หน่วยไมครอน"));
       }
       w.block("G00 X100. Z100.", t.pick("to the tool change point", "ไปจุดเปลี่ยนมีด"));
-      w.block(fmt::format("G96 S{} M03", num(out.cuttingSpeed)), t.pick("back to constant cutting speed", "กลับสู่ความเร็วตัดคงที่"));
+      w.block(fmt::format("G96 S{} M03", num(out.cuttingSpeed)),
+              t.pick("back to constant cutting speed", "กลับสู่ความเร็วตัดคงที่"));
     }
     if (!bore.moves.empty()) {
       // The boring bar from inside the hole, out along Z before it leaves.
@@ -270,8 +281,8 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
       w.block("T0505", t.pick("boring bar, offset 05", "มีดคว้านรู ออฟเซต 05"));
       w.block(fmt::format("G00 X{} Z{}", num(startX), num(kClear)),
               t.pick("cycle start point, inside the hole", "จุดเริ่มวัฏจักร ภายในรู"));
-      const TurningPass borePass{-1.0, hole, startX, kBoreDepth, kBoreFeed, "G41",
-                                 t.pick("boring 1 mm a side", "คว้านครั้งละ 1 มม.")};
+      const TurningPass borePass{
+          -1.0, hole, startX, kBoreDepth, kBoreFeed, "G41", t.pick("boring 1 mm a side", "คว้านครั้งละ 1 มม.")};
       writeTurning(w, bore, borePass, options.dialect, t);
       w.block(fmt::format("G00 G40 Z{}", num(kClear)), t.pick("out of the bore", "ถอยออกจากรู"));
       w.block("G00 X100. Z100.", t.pick("to the tool change point", "ไปจุดเปลี่ยนมีด"));
@@ -311,10 +322,10 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
         const double major = threadMajor[k], h = kIsoThreadHeight * th.pitch, minor = major - 2.0 * h;
         const double rpm = std::min(options.machine.maxSpindleRpm, spindleRpm(out.cuttingSpeed / 2.0, major));
         const double startZ = th.z + 3.0 * th.pitch, endZ = th.z - th.length, clear = major + 4.0;
-        const std::string what = fmt::format(
-            fmt::runtime(t.pick("M{}x{}: thread height 0.6134 x {} = {} mm, minor D{}",
-                                "M{}x{}: ความสูงเกลียว 0.6134 x {} = {} มม. Ø ใน D{}")),
-            plain(major), plain(th.pitch), plain(th.pitch), plain(std::round(h * 1000.0) / 1000.0), plain(minor));
+        const std::string what = fmt::format(fmt::runtime(t.pick("M{}x{}: thread height 0.6134 x {} = {} mm, minor D{}",
+                                                                 "M{}x{}: ความสูงเกลียว 0.6134 x {} = {} มม. Ø ใน D{}")),
+                                             plain(major), plain(th.pitch), plain(th.pitch),
+                                             plain(std::round(h * 1000.0) / 1000.0), plain(minor));
         w.block(fmt::format("G97 S{} M03", static_cast<long long>(std::llround(rpm))), what);
         w.block(fmt::format("G00 X{} Z{}", num(clear), num(startZ)),
                 t.pick("three pitches in front of the thread", "ห่างหน้าเกลียวสามระยะพิตช์"));
@@ -332,13 +343,12 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
             w.block(fmt::format("G00 Z{}", num(startZ)), p == 1 ? t.pick("back to the start", "กลับจุดเริ่ม") : "");
           }
         } else if (haas) {
-          w.block(fmt::format("G76 X{} Z{} K{} D{} A60 F{}", num(minor), num(endZ), num(std::round(h * 1000.0) / 1000.0),
-                              num(first), num(th.pitch)),
+          w.block(fmt::format("G76 X{} Z{} K{} D{} A60 F{}", num(minor), num(endZ),
+                              num(std::round(h * 1000.0) / 1000.0), num(first), num(th.pitch)),
                   t.pick("K thread height, D first pass depth", "K ความสูงเกลียว D ความลึกครั้งแรก"));
         } else {
-          w.block("G76 P011060 Q50 R0.05",
-                  t.pick("1 finishing pass, 1 pitch pull-out, 60 degrees, 0.05 least depth",
-                         "กลึงเก็บ 1 ครั้ง ถอนมีด 1 ระยะพิตช์ มุม 60 องศา ลึกอย่างน้อย 0.05 มม."));
+          w.block("G76 P011060 Q50 R0.05", t.pick("1 finishing pass, 1 pitch pull-out, 60 degrees, 0.05 least depth",
+                                                  "กลึงเก็บ 1 ครั้ง ถอนมีด 1 ระยะพิตช์ มุม 60 องศา ลึกอย่างน้อย 0.05 มม."));
           w.block(fmt::format("G76 X{} Z{} P{} Q{} F{}", num(minor), num(endZ),
                               static_cast<long long>(std::llround(h * 1000.0)),
                               static_cast<long long>(std::llround(first * 1000.0)), num(th.pitch)),
@@ -356,9 +366,11 @@ std::optional<GeneratedProgram> generateProgram(const PartDesign& part, const Ge
               t.pick("half the turning speed for the blade", "ใช้ความเร็วครึ่งหนึ่งของการกลึงปอกสำหรับใบมีด"));
       w.block(fmt::format("G00 X{} Z{}", num(exitX), num(kClear)), t.pick("over the bar", "เหนือผิวชิ้นงานดิบ"));
       w.block(fmt::format("G00 Z{}", num(zc)),
-              fmt::format(fmt::runtime(t.pick("the blade's right side on the part's end, Z{}", "ด้านขวาของใบมีดอยู่ที่ปลายชิ้นงาน Z{}")),
+              fmt::format(fmt::runtime(
+                              t.pick("the blade's right side on the part's end, Z{}", "ด้านขวาของใบมีดอยู่ที่ปลายชิ้นงาน Z{}")),
                           plain(-part.length())));
-      w.block(fmt::format("G01 X{} F{}", num(to), num(kGrooveFeed)), t.pick("part off at 0.05 mm/rev", "ตัดขาด ป้อน 0.05 มม./รอบ"));
+      w.block(fmt::format("G01 X{} F{}", num(to), num(kGrooveFeed)),
+              t.pick("part off at 0.05 mm/rev", "ตัดขาด ป้อน 0.05 มม./รอบ"));
       w.block(fmt::format("G00 X{}", num(exitX)), t.pick("out", "ถอยออก"));
       w.block("G00 X100. Z100.", t.pick("to the tool change point", "ไปจุดเปลี่ยนมีด"));
     }

@@ -32,8 +32,10 @@ Diagnostic fileDiagnostic(const char* code, int line, int column, std::vector<st
 std::pair<int, int> placeOf(const std::string& text, std::size_t byte) {
   int line = 1, column = 1;
   for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
-    if (text[i] == '\n') ++line, column = 1;
-    else if ((static_cast<unsigned char>(text[i]) & 0xC0) != 0x80) ++column;
+    if (text[i] == '\n')
+      ++line, column = 1;
+    else if ((static_cast<unsigned char>(text[i]) & 0xC0) != 0x80)
+      ++column;
   }
   return {line, column};
 }
@@ -64,7 +66,9 @@ double PartDesign::length() const {
   return total;
 }
 
-io::ReadResult<std::string> readPartFile(const std::string& path) { return io::readFileLimited(path, kMaxPartFileBytes); }
+io::ReadResult<std::string> readPartFile(const std::string& path) {
+  return io::readFileLimited(path, kMaxPartFileBytes);
+}
 
 io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::string& fileName) {
   io::ReadResult<PartDesign> result;
@@ -101,8 +105,7 @@ io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::st
     ok = false;
   };
   // A positive finite number, or the reason it is not.
-  const auto positive = [&](const nlohmann::json& o, const std::string& key, const std::string& field,
-                            double& out) {
+  const auto positive = [&](const nlohmann::json& o, const std::string& key, const std::string& field, double& out) {
     if (!o.contains(key)) return missing(field);
     if (!o[key].is_number() || !std::isfinite(o[key].get<double>()) || o[key].get<double>() <= 0.0 ||
         o[key].get<double>() > 10000.0)
@@ -141,7 +144,8 @@ io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::st
     };
     if (finite(v) && v.get<double>() > 0.0) {
       out = {v.get<double>(), -v.get<double>(), ""};
-    } else if (v.is_array() && v.size() == 2 && finite(v[0]) && finite(v[1]) && v[0].get<double>() >= v[1].get<double>()) {
+    } else if (v.is_array() && v.size() == 2 && finite(v[0]) && finite(v[1]) &&
+               v[0].get<double>() >= v[1].get<double>()) {
       out = {v[0].get<double>(), v[1].get<double>(), ""};
     } else if (fits && v.is_string()) {
       const auto fit = isoFit(v.get<std::string>(), size);
@@ -175,8 +179,10 @@ io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::st
         positive(o, "arc", at + ".arc", step.diameter);
         positive(o, "radius", at + ".radius", step.radius);
         if (o.contains("concave")) {
-          if (!o["concave"].is_boolean()) bad(at + ".concave", "true or false");
-          else step.concave = o["concave"].get<bool>();
+          if (!o["concave"].is_boolean())
+            bad(at + ".concave", "true or false");
+          else
+            step.concave = o["concave"].get<bool>();
         }
       } else {
         missing(at + "." + word);
@@ -191,8 +197,10 @@ io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::st
         positive(o, "round", at + ".round", step.edgeSize);
       }
       if (o.contains("tolerance")) {
-        if (step.kind != StepKind::Cylinder) bad(at + ".tolerance", "on a cylinder's or bore's Ø only");
-        else readTolerance(o["tolerance"], at + ".tolerance", step.diameter, true, step.tolerance);
+        if (step.kind != StepKind::Cylinder)
+          bad(at + ".tolerance", "on a cylinder's or bore's Ø only");
+        else
+          readTolerance(o["tolerance"], at + ".tolerance", step.diameter, true, step.tolerance);
       }
       if (o.contains("length_tolerance"))
         readTolerance(o["length_tolerance"], at + ".length_tolerance", step.length, false, step.lengthTolerance);
@@ -200,20 +208,28 @@ io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::st
       into.push_back(step);
     }
   };
-  if (!j.contains("outside") || !j["outside"].is_array()) missing("outside");
-  else readSteps("outside", true, part.outside);
+  if (!j.contains("outside") || !j["outside"].is_array())
+    missing("outside");
+  else
+    readSteps("outside", true, part.outside);
   if (j.contains("inside")) {
-    if (!j["inside"].is_array()) bad("inside", "a list [ { \"bore\": ..., \"length\": ... } ]");
-    else readSteps("inside", false, part.inside);
+    if (!j["inside"].is_array())
+      bad("inside", "a list [ { \"bore\": ..., \"length\": ... } ]");
+    else
+      readSteps("inside", false, part.inside);
   }
   if (j.contains("general_tolerance")) {
     const auto& g = j["general_tolerance"];
-    if (!g.is_string() || !generalTolerance(g.get<std::string>(), 10.0)) bad("general_tolerance", "\"f\", \"m\", \"c\" or \"v\" (ISO 2768-1)");
-    else part.generalTolerance = g.get<std::string>();
+    if (!g.is_string() || !generalTolerance(g.get<std::string>(), 10.0))
+      bad("general_tolerance", "\"f\", \"m\", \"c\" or \"v\" (ISO 2768-1)");
+    else
+      part.generalTolerance = g.get<std::string>();
   }
   if (j.contains("part_off")) {
-    if (!j["part_off"].is_boolean()) bad("part_off", "true or false");
-    else part.partOff = j["part_off"].get<bool>();
+    if (!j["part_off"].is_boolean())
+      bad("part_off", "true or false");
+    else
+      part.partOff = j["part_off"].get<bool>();
   }
   if (j.contains("grooves")) {
     if (!j["grooves"].is_array()) bad("grooves", "a list [ { \"z\": ..., \"width\": ..., \"diameter\": ... } ]");
@@ -256,8 +272,9 @@ io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::st
 io::ReadResult<std::vector<CuttingSpeed>> readCuttingSpeeds(const std::string& path) {
   io::ReadResult<std::vector<CuttingSpeed>> result;
   const std::string file =
-      path.empty() ? (std::filesystem::path(io::shippedConfigDir()) / "resources" / "parts" / "cutting_speeds.cfg").string()
-                   : path;
+      path.empty()
+          ? (std::filesystem::path(io::shippedConfigDir()) / "resources" / "parts" / "cutting_speeds.cfg").string()
+          : path;
   std::ifstream in(file);
   if (!in) {
     result.diagnostics.push_back(fileDiagnostic(codes::kPartFileNotJson, 0, 0, {file, "it cannot be read"}));
@@ -325,7 +342,8 @@ std::string writePartDesign(const PartDesign& part) {
   };
   j["outside"] = steps(part.outside, "cylinder");
   if (!part.inside.empty()) j["inside"] = steps(part.inside, "bore");
-  for (const Groove& g : part.grooves) j["grooves"].push_back({{"z", g.z}, {"width", g.width}, {"diameter", g.diameter}});
+  for (const Groove& g : part.grooves)
+    j["grooves"].push_back({{"z", g.z}, {"width", g.width}, {"diameter", g.diameter}});
   for (const Thread& t : part.threads) j["threads"].push_back({{"z", t.z}, {"length", t.length}, {"pitch", t.pitch}});
   if (part.partOff) j["part_off"] = true;
   if (!part.generalTolerance.empty()) j["general_tolerance"] = part.generalTolerance;
@@ -339,9 +357,9 @@ std::string cuttingSpeedRow(const std::string& material, const std::vector<Cutti
     if (!row.material.empty() && lower.find(row.material) != std::string::npos) return row.material;
   // The words lathe teachers write in Thai (GLOSSARY), and common English ones.
   static const std::pair<const char*, const char*> kAliases[] = {
-      {"เหล็กหล่อ", "cast-iron"}, {"cast iron", "cast-iron"}, {"อะลูมิเนียม", "aluminium"}, {"อลูมิเนียม", "aluminium"},
-      {"aluminum", "aluminium"},  {"ทองเหลือง", "brass"},       {"เหล็ก", "steel"},          {"s45c", "steel"},
-      {"mild steel", "steel"}};
+      {"เหล็กหล่อ", "cast-iron"}, {"cast iron", "cast-iron"}, {"อะลูมิเนียม", "aluminium"},
+      {"อลูมิเนียม", "aluminium"}, {"aluminum", "aluminium"},  {"ทองเหลือง", "brass"},
+      {"เหล็ก", "steel"},        {"s45c", "steel"},          {"mild steel", "steel"}};
   for (const auto& [word, row] : kAliases)
     if (lower.find(word) != std::string::npos)
       for (const CuttingSpeed& r : table)

@@ -76,11 +76,11 @@ bool isMacroCallBlock(const Block& block, Dialect dialect) {
 }
 
 bool isRuleFourGroup(ModalGroup g) {
-  return g == ModalGroup::MSpindle || g == ModalGroup::MCoolant || g == ModalGroup::MCAxis ||
-         g == ModalGroup::MBrake || g == ModalGroup::MGear || g == ModalGroup::MSubprogram ||
-         g == ModalGroup::MChuck || g == ModalGroup::MAirBlast || g == ModalGroup::MTailstock ||
-         g == ModalGroup::MThreadChamfer || g == ModalGroup::MConveyor || g == ModalGroup::MPartsCatcher ||
-         g == ModalGroup::MDoor || g == ModalGroup::MHighPressureCoolant;
+  return g == ModalGroup::MSpindle || g == ModalGroup::MCoolant || g == ModalGroup::MCAxis || g == ModalGroup::MBrake ||
+         g == ModalGroup::MGear || g == ModalGroup::MSubprogram || g == ModalGroup::MChuck ||
+         g == ModalGroup::MAirBlast || g == ModalGroup::MTailstock || g == ModalGroup::MThreadChamfer ||
+         g == ModalGroup::MConveyor || g == ModalGroup::MPartsCatcher || g == ModalGroup::MDoor ||
+         g == ModalGroup::MHighPressureCoolant;
 }
 
 constexpr int kGroupCount = static_cast<int>(ModalGroup::MOther) + 1;
@@ -194,8 +194,10 @@ class Checker {
       if (w.letter != 'G') continue;
       const CodeInfo* r = row('G', wholeNumber(w));
       if (!r) continue;
-      if (r->action == CodeAction::Inch) inch_ = true;
-      else if (r->action == CodeAction::Metric) inch_ = false;
+      if (r->action == CodeAction::Inch)
+        inch_ = true;
+      else if (r->action == CodeAction::Metric)
+        inch_ = false;
     }
   }
 
@@ -209,7 +211,8 @@ class Checker {
       if (w.comma) continue;  // ,C ,R ,A: checked with the corner rules
       if (w.expr >= 0) {
         // X#1: the value is known when the block runs; only the letter is checked here.
-        if (!profile_.flow.macroB) emit(codes::kMacroNotInDialect, w, {wordText(w)});
+        if (!profile_.flow.macroB)
+          emit(codes::kMacroNotInDialect, w, {wordText(w)});
         else if (!allowed(l) && !macroCall)
           emit(codes::kLetterNotAllowed, w, {wordText(w), std::string(1, l), letters_});
         continue;
@@ -238,9 +241,15 @@ class Checker {
           checkSequenceNumber(w);
           if (i != 0) emit(codes::kNNotFirst, w, {wordText(w)});
           break;
-        case 'O': checkProgramNumber(w, i == 0 && wordCount == 1, firstBlock); break;
-        case 'G': case 'M': readCode(w, seen); break;
-        default: break;
+        case 'O':
+          checkProgramNumber(w, i == 0 && wordCount == 1, firstBlock);
+          break;
+        case 'G':
+        case 'M':
+          readCode(w, seen);
+          break;
+        default:
+          break;
       }
     }
   }
@@ -288,15 +297,19 @@ class Checker {
     const long long n = wholeNumber(w);
     const CodeInfo* found = row(w.letter, n);
     if (!found) {
-      if (w.letter == 'G') emit(codes::kUnknownGCode, w, {wordText(w)});
+      if (w.letter == 'G')
+        emit(codes::kUnknownGCode, w, {wordText(w)});
       else if (n > 99 ? profile_.highMIsWarning : profile_.unknownMIsWarning)
         emit(codes::kMachineSpecificM, w, {wordText(w)}, Severity::Warning);
-      else emit(codes::kUnknownMCode, w, {wordText(w)});
+      else
+        emit(codes::kUnknownMCode, w, {wordText(w)});
       return;
     }
     if (found->mustStandAlone && seen.standAloneCount < 4) seen.standAlone[seen.standAloneCount++] = &w;
-    if (w.letter == 'G') readGCode(w, *found, seen);
-    else readMCode(w, *found, seen);
+    if (w.letter == 'G')
+      readGCode(w, *found, seen);
+    else
+      readMCode(w, *found, seen);
   }
 
   void readGCode(const Word& w, const CodeInfo& row, BlockCodes& seen) {
@@ -346,8 +359,8 @@ class Checker {
   void checkCodeRules(const BlockCodes& seen) {
     for (int k = 0; k < seen.standAloneCount; ++k)
       if (seen.nonNWords > 1)
-        emit(seen.standAlone[k]->letter == 'G' ? codes::kFeedModeNotAlone : codes::kMustStandAlone,
-             *seen.standAlone[k], {wordText(*seen.standAlone[k])});
+        emit(seen.standAlone[k]->letter == 'G' ? codes::kFeedModeNotAlone : codes::kMustStandAlone, *seen.standAlone[k],
+             {wordText(*seen.standAlone[k])});
     const auto& withMotion = profile_.oneShotsWithMotion;
     if (seen.oneShotWord && seen.motionWord &&
         std::find(withMotion.begin(), withMotion.end(), seen.oneShot->number) == withMotion.end()) {
@@ -370,8 +383,10 @@ class Checker {
     if (seen.singleCycle && !seen.axisWords())
       emit(codes::kSingleCycleWithoutEnd, *seen.singleCycle, {wordText(*seen.singleCycle)});
     if (seen.reference && !seen.axisWords()) {
-      if (profile_.bareG28 == BareG28::NoMotion) emit(codes::kG28NoMotion, *seen.reference, {}, Severity::Warning);
-      else if (profile_.bareG28 == BareG28::Error) emit(codes::kG28WithoutAxes, *seen.reference, {});
+      if (profile_.bareG28 == BareG28::NoMotion)
+        emit(codes::kG28NoMotion, *seen.reference, {}, Severity::Warning);
+      else if (profile_.bareG28 == BareG28::Error)
+        emit(codes::kG28WithoutAxes, *seen.reference, {});
     }
   }
 
@@ -423,17 +438,19 @@ class Checker {
       emit(codes::kArcWithoutRadius, *at, {arcCode});
     }
     if (seen.compWord && (seen.motionWord || axisWords)) {
-      if (seen.comp->action == CodeAction::CompOff) emit(codes::kCompEndOnArc, *seen.compWord, {arcCode});
-      else emit(codes::kCompStartOnArc, *seen.compWord, {wordText(*seen.compWord), arcCode});
+      if (seen.comp->action == CodeAction::CompOff)
+        emit(codes::kCompEndOnArc, *seen.compWord, {arcCode});
+      else
+        emit(codes::kCompStartOnArc, *seen.compWord, {wordText(*seen.compWord), arcCode});
     }
   }
   const CheckOptions& options_;
   const MachineProfile& profile_;
   const detail::CodeIndex& codes_;
   std::vector<Diagnostic>& out_;
-  std::string letters_;  // the profile's letters, spaced, for E201
-  std::uint32_t allowedLetters_;  // the profile's letters, one bit each (Block::letterBit)
-  bool inch_;            // inch in force: G20 seen last, or inch at power-on
+  std::string letters_;                    // the profile's letters, spaced, for E201
+  std::uint32_t allowedLetters_;           // the profile's letters, one bit each (Block::letterBit)
+  bool inch_;                              // inch in force: G20 seen last, or inch at power-on
   CodeAction motion_ = CodeAction::Rapid;  // group 01 code in force (G00 at start)
   bool full_ = false;
 
@@ -448,11 +465,12 @@ class Checker {
   void emit(const char* code, const Word& w, std::vector<std::string> args, Severity severity = Severity::Error) {
     emit(code, w.range, std::move(args), severity);
   }
-  void emit(const char* code, SourceRange range, std::vector<std::string> args,
-            Severity severity = Severity::Error) {
+  void emit(const char* code, SourceRange range, std::vector<std::string> args, Severity severity = Severity::Error) {
     if (full_) return;
     if (out_.size() + 1 >= codes::kMaxDiagnostics) {
-      out_.push_back(Diagnostic{Severity::Error, codes::kTooManyDiagnostics, {range.line, range.column, 0},
+      out_.push_back(Diagnostic{Severity::Error,
+                                codes::kTooManyDiagnostics,
+                                {range.line, range.column, 0},
                                 {std::to_string(codes::kMaxDiagnostics)}});
       full_ = true;
       return;
@@ -465,11 +483,21 @@ class Checker {
   // SPEC 4's kind of a letter, unless the block's code lists it otherwise.
   static char defaultKind(char l) {
     switch (l) {
-      case 'F': case 'S': return '+';
-      case 'P': case 'Q': return '#';
-      case 'T': return 'T';
-      case 'G': case 'M': case 'N': case 'O': return 0;  // checked with the codes
-      default: return '.';
+      case 'F':
+      case 'S':
+        return '+';
+      case 'P':
+      case 'Q':
+        return '#';
+      case 'T':
+        return 'T';
+      case 'G':
+      case 'M':
+      case 'N':
+      case 'O':
+        return 0;  // checked with the codes
+      default:
+        return '.';
     }
   }
 
@@ -480,26 +508,35 @@ class Checker {
       kind = profile_.dwellP == DwellPUnit::SecondsWithPointElseMs && w.hasDecimalPoint ? 's' : '#';
     if (kind == 'i') kind = w.hasDecimalPoint ? '+' : '#';  // Q5. is 5 mm, Q5000 is 5000 increments
     switch (kind) {
-      case '.': checkReal(w, false); break;
+      case '.':
+        checkReal(w, false);
+        break;
       case '+': {
         // S (rpm, m/min or ft/min) keeps one range in both units.
         const bool unitless = w.letter == 'S';
         const double min = unitless ? profile_.minPositiveMm : minPositive();
         if (!(w.value >= min))
-          emit(codes::kNotPositive, w, {wordText(w), std::string(1, w.letter), limitText(min),
-                                        limitText(unitless ? profile_.maxAbsMm : maxAbs())});
-        else checkReal(w, true, unitless);
+          emit(codes::kNotPositive, w,
+               {wordText(w), std::string(1, w.letter), limitText(min),
+                limitText(unitless ? profile_.maxAbsMm : maxAbs())});
+        else
+          checkReal(w, true, unitless);
         break;
       }
       case '#':
         if (wholeNumber(w) < 0) emit(codes::kNotWholeNumber, w, {wordText(w), std::string(1, w.letter)});
         break;
       case 's':  // seconds (Haas G04 P3.)
-        if (w.value < 0) emit(codes::kNegativeDwell, w, {wordText(w)});
-        else checkReal(w, false);
+        if (w.value < 0)
+          emit(codes::kNegativeDwell, w, {wordText(w)});
+        else
+          checkReal(w, false);
         break;
-      case 'T': checkTool(w); break;
-      default: break;
+      case 'T':
+        checkTool(w);
+        break;
+      default:
+        break;
     }
   }
 

@@ -35,16 +35,14 @@ constexpr CodeInfo kRows[] = {
     {'G', 1, G::Motion, P::Motion, kAll, false, "Linear interpolation", "การเคลื่อนที่เป็นเส้นตรง",
      "G01 Z-30. F0.2 - cut in a straight line to Z-30 at 0.2 mm/rev",
      "G01 Z-30. F0.2 - กลึงเป็นเส้นตรงไปที่ Z-30 ด้วยอัตราป้อน 0.2 มม./รอบ"},
-    {'G', 2, G::Motion, P::Motion, kAll, false, "Circular interpolation, clockwise",
-     "การเคลื่อนที่เป็นส่วนโค้งตามเข็มนาฬิกา", "G02 X30. Z-24. R4. - clockwise arc of radius 4 to X30 Z-24",
+    {'G', 2, G::Motion, P::Motion, kAll, false, "Circular interpolation, clockwise", "การเคลื่อนที่เป็นส่วนโค้งตามเข็มนาฬิกา",
+     "G02 X30. Z-24. R4. - clockwise arc of radius 4 to X30 Z-24",
      "G02 X30. Z-24. R4. - กลึงส่วนโค้งตามเข็มนาฬิการัศมี 4 มม. ไปที่ X30 Z-24"},
     {'G', 3, G::Motion, P::Motion, kAll, false, "Circular interpolation, counter-clockwise",
-     "การเคลื่อนที่เป็นส่วนโค้งทวนเข็มนาฬิกา",
-     "G03 X40. Z-22. R2. - counter-clockwise arc of radius 2 to X40 Z-22",
+     "การเคลื่อนที่เป็นส่วนโค้งทวนเข็มนาฬิกา", "G03 X40. Z-22. R2. - counter-clockwise arc of radius 2 to X40 Z-22",
      "G03 X40. Z-22. R2. - กลึงส่วนโค้งทวนเข็มนาฬิการัศมี 2 มม. ไปที่ X40 Z-22"},
     {'G', 4, G::NonModal, P::Motion, kAll, false, "Dwell", "การหยุดรอ (หน่วงเวลา)",
-     "G04 U0.5 - wait 0.5 s (G04 P500 waits 500 ms)",
-     "G04 U0.5 - หยุดรอ 0.5 วินาที (G04 P500 หยุดรอ 500 มิลลิวินาที)", "Pd"},
+     "G04 U0.5 - wait 0.5 s (G04 P500 waits 500 ms)", "G04 U0.5 - หยุดรอ 0.5 วินาที (G04 P500 หยุดรอ 500 มิลลิวินาที)", "Pd"},
     {'G', 18, G::Plane, P::State, kFH, false, "ZX plane", "เลือกระนาบ ZX",
      "G18 - select the ZX plane (a lathe always works in it; no effect)",
      "G18 - เลือกระนาบ ZX (เครื่องกลึงใช้ระนาบนี้เสมอ จึงไม่มีผลใด ๆ)"},
@@ -53,15 +51,12 @@ constexpr CodeInfo kRows[] = {
      "G20 - ค่าที่ตามมาเป็นหน่วยนิ้ว (ทศนิยมได้ไม่เกิน 4 ตำแหน่ง)"},
     {'G', 21, G::Units, P::State, kAll, false, "Metric input", "ป้อนค่าเป็นหน่วยมิลลิเมตร",
      "G21 - the values that follow are in millimetres", "G21 - ค่าที่ตามมาเป็นหน่วยมิลลิเมตร"},
-    {'G', 27, G::NonModal, P::Motion, kAll, false, "Reference point return check",
-     "การตรวจสอบการกลับสู่จุดอ้างอิง",
+    {'G', 27, G::NonModal, P::Motion, kAll, false, "Reference point return check", "การตรวจสอบการกลับสู่จุดอ้างอิง",
      "G27 X0. Z300. - rapid to the point and check that it is the reference point",
      "G27 X0. Z300. - เคลื่อนที่เร็วไปยังจุดนั้นแล้วตรวจสอบตำแหน่งว่าเป็นจุดอ้างอิง"},
     {'G', 28, G::NonModal, P::Motion, kAll, false, "Reference point return", "การกลับสู่จุดอ้างอิง",
-     "G28 U0. W0. - return to the reference point straight from here",
-     "G28 U0. W0. - กลับสู่จุดอ้างอิงจากตำแหน่งปัจจุบันโดยตรง"},
-    {'G', 29, G::NonModal, P::Motion, kAll, false, "Return from the reference point",
-     "การกลับจากจุดอ้างอิง",
+     "G28 U0. W0. - return to the reference point straight from here", "G28 U0. W0. - กลับสู่จุดอ้างอิงจากตำแหน่งปัจจุบันโดยตรง"},
+    {'G', 29, G::NonModal, P::Motion, kAll, false, "Return from the reference point", "การกลับจากจุดอ้างอิง",
      "G29 X30. Z2. - from the reference point through the G28 intermediate point to X30 Z2",
      "G29 X30. Z2. - กลับจากจุดอ้างอิงผ่านจุดกลางทางของ G28 ไปที่ X30 Z2"},
     {'G', 30, G::NonModal, P::Motion, kFH, false, "2nd reference point return", "การกลับสู่จุดอ้างอิงที่ 2",
@@ -70,12 +65,11 @@ constexpr CodeInfo kRows[] = {
     {'G', 32, G::Motion, P::Motion, kAll, false, "Thread cutting", "การกลึงเกลียว",
      "G32 Z-30. F1.5 - cut a thread of lead 1.5 mm to Z-30 (under G97)",
      "G32 Z-30. F1.5 - กลึงเกลียวระยะพิตช์ 1.5 มม. ไปที่ Z-30 (ใช้กับ G97)"},
-    {'G', 40, G::NoseComp, P::State, kAll, false, "Nose radius compensation off",
-     "ยกเลิกการชดเชยรัศมีจมูกมีด", "G40 G00 X100. Z100. - cancel compensation on a rapid away from the part",
+    {'G', 40, G::NoseComp, P::State, kAll, false, "Nose radius compensation off", "ยกเลิกการชดเชยรัศมีจมูกมีด",
+     "G40 G00 X100. Z100. - cancel compensation on a rapid away from the part",
      "G40 G00 X100. Z100. - ยกเลิกการชดเชยขณะเคลื่อนที่เร็วออกจากชิ้นงาน"},
     {'G', 41, G::NoseComp, P::State, kAll, false, "Nose radius compensation, tool left",
-     "การชดเชยรัศมีจมูกมีด มีดตัดอยู่ด้านซ้าย",
-     "G41 G00 X20. Z2. - start compensation with the tool left of the path (boring)",
+     "การชดเชยรัศมีจมูกมีด มีดตัดอยู่ด้านซ้าย", "G41 G00 X20. Z2. - start compensation with the tool left of the path (boring)",
      "G41 G00 X20. Z2. - เริ่มการชดเชย มีดตัดอยู่ด้านซ้ายของแนวการเคลื่อนที่ (งานคว้านรู)"},
     {'G', 42, G::NoseComp, P::State, kAll, false, "Nose radius compensation, tool right",
      "การชดเชยรัศมีจมูกมีด มีดตัดอยู่ด้านขวา",
@@ -85,9 +79,8 @@ constexpr CodeInfo kRows[] = {
      "ตั้งระบบพิกัดงาน / จำกัดความเร็วรอบ",
      "G50 S2500 - limit the spindle to 2500 rpm under G96 (G50 X_ Z_ sets the work coordinates)",
      "G50 S2500 - จำกัดความเร็วรอบไม่เกิน 2500 รอบ/นาที ขณะใช้ G96 (G50 X_ Z_ ตั้งพิกัดงาน)"},
-    {'G', 53, G::NonModal, P::Motion, kFH, false, "Move in machine coordinates",
-     "เคลื่อนที่ในระบบพิกัดเครื่อง", "G53 X0. Z0. - rapid to X0 Z0 of the machine coordinates",
-     "G53 X0. Z0. - เคลื่อนที่เร็วไปที่ X0 Z0 ของระบบพิกัดเครื่อง"},
+    {'G', 53, G::NonModal, P::Motion, kFH, false, "Move in machine coordinates", "เคลื่อนที่ในระบบพิกัดเครื่อง",
+     "G53 X0. Z0. - rapid to X0 Z0 of the machine coordinates", "G53 X0. Z0. - เคลื่อนที่เร็วไปที่ X0 Z0 ของระบบพิกัดเครื่อง"},
     {'G', 54, G::WorkOffset, P::State, kFH, false, "Work offset 1", "ระบบพิกัดงานที่ 1",
      "G54 - use work offset 1 (zero unless set)", "G54 - ใช้ระบบพิกัดงานที่ 1 (เป็นศูนย์ถ้าไม่ได้กำหนด)"},
     {'G', 55, G::WorkOffset, P::State, kFH, false, "Work offset 2", "ระบบพิกัดงานที่ 2",
@@ -111,59 +104,47 @@ constexpr CodeInfo kRows[] = {
     {'G', 70, G::CannedCycle, P::Motion, kAll, false, "Finishing cycle", "วัฏจักรกลึงเก็บผิว",
      "G70 P100 Q200 - finish along the contour of blocks N100 to N200",
      "G70 P100 Q200 - กลึงเก็บผิวตามรูปร่างในบล็อก N100 ถึง N200", "P#Q#"},
-    {'G', 71, G::CannedCycle, P::Motion, kFC, false, "Stock removal in turning",
-     "วัฏจักรกลึงปาดผิวตามแนวแกน Z",
+    {'G', 71, G::CannedCycle, P::Motion, kFC, false, "Stock removal in turning", "วัฏจักรกลึงปาดผิวตามแนวแกน Z",
      "G71 U1. R0.5 - cut 1 mm per side, retract 0.5 mm; then G71 P_ Q_ U_ W_ F_",
      "G71 U1. R0.5 - ป้อนลึกด้านละ 1 มม. ถอยมีด 0.5 มม. แล้วตามด้วย G71 P_ Q_ U_ W_ F_"},
-    {'G', 72, G::CannedCycle, P::Motion, kFC, false, "Stock removal in facing",
-     "วัฏจักรกลึงปาดหน้า",
+    {'G', 72, G::CannedCycle, P::Motion, kFC, false, "Stock removal in facing", "วัฏจักรกลึงปาดหน้า",
      "G72 W1. R0.5 - cut 1 mm along Z, retract 0.5 mm; then G72 P_ Q_ U_ W_ F_",
      "G72 W1. R0.5 - ป้อนลึกตามแนวแกน Z ครั้งละ 1 มม. ถอยมีด 0.5 มม. แล้วตามด้วย G72 P_ Q_ U_ W_ F_"},
-    {'G', 73, G::CannedCycle, P::Motion, kFC, false, "Pattern repeating cycle",
-     "วัฏจักรกลึงซ้ำตามรูปร่าง",
+    {'G', 73, G::CannedCycle, P::Motion, kFC, false, "Pattern repeating cycle", "วัฏจักรกลึงซ้ำตามรูปร่าง",
      "G73 U3. W0. R3 - remove 3 mm in 3 passes that follow the contour; then G73 P_ Q_ U_ W_ F_",
      "G73 U3. W0. R3 - กลึงออก 3 มม. ใน 3 เที่ยวตามรูปร่าง แล้วตามด้วย G73 P_ Q_ U_ W_ F_"},
-    {'G', 74, G::CannedCycle, P::Motion, kFC, false, "Face peck drilling cycle",
-     "วัฏจักรเจาะแบบถอยเป็นช่วง",
+    {'G', 74, G::CannedCycle, P::Motion, kFC, false, "Face peck drilling cycle", "วัฏจักรเจาะแบบถอยเป็นช่วง",
      "G74 R1. - retract 1 mm after each peck; then G74 Z_ Q_ F_",
      "G74 R1. - ถอยดอกเจาะ 1 มม. หลังเจาะแต่ละช่วง แล้วตามด้วย G74 Z_ Q_ F_"},
     {'G', 75, G::CannedCycle, P::Motion, kFC, false, "Grooving cycle", "วัฏจักรกลึงร่อง",
      "G75 R1. - retract 1 mm after each peck; then G75 X_ Z_ P_ Q_ F_",
      "G75 R1. - ถอยมีด 1 มม. หลังป้อนแต่ละช่วง แล้วตามด้วย G75 X_ Z_ P_ Q_ F_"},
-    {'G', 76, G::CannedCycle, P::Motion, kFC, false, "Multi-pass threading cycle",
-     "วัฏจักรกลึงเกลียวหลายเที่ยว",
+    {'G', 76, G::CannedCycle, P::Motion, kFC, false, "Multi-pass threading cycle", "วัฏจักรกลึงเกลียวหลายเที่ยว",
      "G76 P020060 Q50 R0.05 - then G76 X28.16 Z-30. P920 Q300 F1.5",
      "G76 P020060 Q50 R0.05 - แล้วตามด้วย G76 X28.16 Z-30. P920 Q300 F1.5"},
     // Haas one-block forms (Haas lathe operator's manual, G-codes; docs/dialects.md).
-    {'G', 71, G::CannedCycle, P::Motion, kH, false, "O.D./I.D. stock removal cycle",
-     "วัฏจักรกลึงปาดผิวตามแนวแกน Z",
+    {'G', 71, G::CannedCycle, P::Motion, kH, false, "O.D./I.D. stock removal cycle", "วัฏจักรกลึงปาดผิวตามแนวแกน Z",
      "G71 P100 Q200 U0.02 W0.005 D0.1 F0.01 - rough the contour N100-N200, 0.1 deep per pass (D, radius)",
-     "G71 P100 Q200 U0.02 W0.005 D0.1 F0.01 - กลึงหยาบตามรูปร่าง N100-N200 ลึกเที่ยวละ 0.1 (D, ค่ารัศมี)",
-     "P#Q#D+I.K.U.W.F+S+"},
+     "G71 P100 Q200 U0.02 W0.005 D0.1 F0.01 - กลึงหยาบตามรูปร่าง N100-N200 ลึกเที่ยวละ 0.1 (D, ค่ารัศมี)", "P#Q#D+I.K.U.W.F+S+"},
     {'G', 72, G::CannedCycle, P::Motion, kH, false, "End face stock removal cycle", "วัฏจักรกลึงปาดหน้า",
      "G72 P100 Q200 U0.02 W0.005 D0.05 F0.01 - rough the face contour N100-N200, 0.05 per pass along Z",
      "G72 P100 Q200 U0.02 W0.005 D0.05 F0.01 - กลึงหยาบปาดหน้าตามรูปร่าง N100-N200 ป้อนตามแกน Z เที่ยวละ 0.05",
      "P#Q#D+I.K.U.W.F+S+"},
-    {'G', 73, G::CannedCycle, P::Motion, kH, false, "Irregular path stock removal cycle",
-     "วัฏจักรกลึงซ้ำตามรูปร่าง",
+    {'G', 73, G::CannedCycle, P::Motion, kH, false, "Irregular path stock removal cycle", "วัฏจักรกลึงซ้ำตามรูปร่าง",
      "G73 P100 Q200 U0.02 W0.005 I0.3 K0.1 D3 F0.01 - remove I/K of stock in D=3 passes that follow the contour",
-     "G73 P100 Q200 U0.02 W0.005 I0.3 K0.1 D3 F0.01 - กลึงออกตามระยะ I/K ใน D=3 เที่ยวตามรูปร่าง",
-     "P#Q#D#I.K.U.W.F+S+"},
+     "G73 P100 Q200 U0.02 W0.005 I0.3 K0.1 D3 F0.01 - กลึงออกตามระยะ I/K ใน D=3 เที่ยวตามรูปร่าง", "P#Q#D#I.K.U.W.F+S+"},
     {'G', 74, G::CannedCycle, P::Motion, kH, false, "End face grooving cycle", "วัฏจักรกลึงร่องหน้าตัด",
      "G74 X1. Z-0.5 K0.1 F0.005 - peck the face groove 0.1 at a time to Z-0.5 (I: step in X)",
-     "G74 X1. Z-0.5 K0.1 F0.005 - ป้อนร่องหน้าตัดครั้งละ 0.1 จนถึง Z-0.5 (I: ระยะเลื่อนตามแกน X)",
-     "D+I+K+U.W.X.Z.F+"},
+     "G74 X1. Z-0.5 K0.1 F0.005 - ป้อนร่องหน้าตัดครั้งละ 0.1 จนถึง Z-0.5 (I: ระยะเลื่อนตามแกน X)", "D+I+K+U.W.X.Z.F+"},
     {'G', 75, G::CannedCycle, P::Motion, kH, false, "O.D./I.D. grooving cycle", "วัฏจักรกลึงร่อง",
      "G75 X1.5 Z-0.8 I0.05 K0.1 F0.004 - peck the groove 0.05 at a time to X1.5 (K: step along Z)",
-     "G75 X1.5 Z-0.8 I0.05 K0.1 F0.004 - ป้อนร่องครั้งละ 0.05 จนถึง X1.5 (K: ระยะเลื่อนตามแกน Z)",
-     "D+I+K+U.W.X.Z.F+"},
+     "G75 X1.5 Z-0.8 I0.05 K0.1 F0.004 - ป้อนร่องครั้งละ 0.05 จนถึง X1.5 (K: ระยะเลื่อนตามแกน Z)", "D+I+K+U.W.X.Z.F+"},
     {'G', 76, G::CannedCycle, P::Motion, kH, false, "Multi-pass threading cycle", "วัฏจักรกลึงเกลียวหลายเที่ยว",
      "G76 X0.9 Z-1. K0.0613 D0.01 F0.0833 A60 - thread 12 TPI: height K, first pass D, 60 degree insert",
      "G76 X0.9 Z-1. K0.0613 D0.01 F0.0833 A60 - กลึงเกลียว 12 เกลียว/นิ้ว: สูง K ป้อนเที่ยวแรก D มีดมุม 60 องศา",
      "A#D+I.K+P#Q#U.W.X.Z.F+E+"},
     {'G', 80, G::CannedCycle, P::State, kFH, false, "Canned cycle cancel", "ยกเลิกวัฏจักร",
-     "G80 - cancel a canned cycle (no effect on this lathe)",
-     "G80 - ยกเลิกวัฏจักร (ไม่มีผลกับเครื่องกลึงนี้)"},
+     "G80 - cancel a canned cycle (no effect on this lathe)", "G80 - ยกเลิกวัฏจักร (ไม่มีผลกับเครื่องกลึงนี้)"},
     // Drilling on centre. Fanuc 0i-TF: G83 Q in least increments (or a length with its
     // decimal point, decimal point programming), P in ms;
     // Haas: Q a length with a decimal point, P a dwell as G04 reads it.
@@ -196,42 +177,34 @@ constexpr CodeInfo kRows[] = {
     {'G', 98, G::FeedMode, P::State, kFH, false, "Feed per minute", "อัตราป้อนเป็น มม./นาที",
      "G98 - F is in mm/min from here on", "G98 - ค่า F เป็น มม./นาที ตั้งแต่บล็อกนี้"},
     {'G', 98, G::FeedMode, P::State, kC, true, "Feed per minute", "อัตราป้อนเป็น มม./นาที",
-     "G98 - alone in its block: F is in mm/min from here on",
-     "G98 - อยู่เดี่ยวในบล็อก: ค่า F เป็น มม./นาที ตั้งแต่บล็อกนี้"},
+     "G98 - alone in its block: F is in mm/min from here on", "G98 - อยู่เดี่ยวในบล็อก: ค่า F เป็น มม./นาที ตั้งแต่บล็อกนี้"},
     {'G', 99, G::FeedMode, P::State, kFH, false, "Feed per revolution", "อัตราป้อนเป็น มม./รอบ",
      "G99 - F is in mm/rev from here on", "G99 - ค่า F เป็น มม./รอบ ตั้งแต่บล็อกนี้"},
     {'G', 99, G::FeedMode, P::State, kC, true, "Feed per revolution", "อัตราป้อนเป็น มม./รอบ",
-     "G99 - alone in its block: F is in mm/rev from here on",
-     "G99 - อยู่เดี่ยวในบล็อก: ค่า F เป็น มม./รอบ ตั้งแต่บล็อกนี้"},
+     "G99 - alone in its block: F is in mm/rev from here on", "G99 - อยู่เดี่ยวในบล็อก: ค่า F เป็น มม./รอบ ตั้งแต่บล็อกนี้"},
 
     // --- M codes -------------------------------------------------------------
-    {'M', 0, G::MProgram, P::AfterMotion, kAll, true, "Program stop", "หยุดโปรแกรม",
-     "M00 - stop; press Go to carry on", "M00 - หยุดการทำงาน กด เริ่มทำงาน เพื่อทำงานต่อ"},
+    {'M', 0, G::MProgram, P::AfterMotion, kAll, true, "Program stop", "หยุดโปรแกรม", "M00 - stop; press Go to carry on",
+     "M00 - หยุดการทำงาน กด เริ่มทำงาน เพื่อทำงานต่อ"},
     {'M', 1, G::MProgram, P::AfterMotion, kAll, true, "Optional stop", "ทางเลือกการหยุด (หยุดเลือกได้)",
-     "M01 - stop only when the Optional Stop switch is on",
-     "M01 - หยุดเฉพาะเมื่อเปิดสวิตช์ทางเลือกการหยุด"},
-    {'M', 2, G::MProgram, P::AfterMotion, kAll, true, "End of program", "จบโปรแกรม",
-     "M02 - end of program", "M02 - จบโปรแกรม"},
+     "M01 - stop only when the Optional Stop switch is on", "M01 - หยุดเฉพาะเมื่อเปิดสวิตช์ทางเลือกการหยุด"},
+    {'M', 2, G::MProgram, P::AfterMotion, kAll, true, "End of program", "จบโปรแกรม", "M02 - end of program",
+     "M02 - จบโปรแกรม"},
     {'M', 3, G::MSpindle, P::BeforeMotion, kAll, false, "Spindle clockwise", "หมุนตามเข็มนาฬิกา",
-     "M03 S1000 - start the spindle clockwise at 1000 rpm",
-     "M03 S1000 - เริ่มหมุนตามเข็มนาฬิกาที่ 1000 รอบ/นาที"},
+     "M03 S1000 - start the spindle clockwise at 1000 rpm", "M03 S1000 - เริ่มหมุนตามเข็มนาฬิกาที่ 1000 รอบ/นาที"},
     {'M', 4, G::MSpindle, P::BeforeMotion, kAll, false, "Spindle counter-clockwise", "หมุนทวนเข็มนาฬิกา",
-     "M04 S1000 - start the spindle counter-clockwise at 1000 rpm",
-     "M04 S1000 - เริ่มหมุนทวนเข็มนาฬิกาที่ 1000 รอบ/นาที"},
+     "M04 S1000 - start the spindle counter-clockwise at 1000 rpm", "M04 S1000 - เริ่มหมุนทวนเข็มนาฬิกาที่ 1000 รอบ/นาที"},
     {'M', 5, G::MSpindle, P::AfterMotion, kAll, false, "Spindle stop", "หยุดหมุน",
-     "M05 - stop the spindle (after the motion of its block)",
-     "M05 - หยุดหมุนเพลาจับงาน (หลังการเคลื่อนที่ในบล็อกเดียวกัน)"},
-    {'M', 8, G::MCoolant, P::BeforeMotion, kAll, false, "Coolant on", "เปิดสารหล่อเย็น",
-     "M08 - coolant on", "M08 - เปิดสารหล่อเย็น"},
+     "M05 - stop the spindle (after the motion of its block)", "M05 - หยุดหมุนเพลาจับงาน (หลังการเคลื่อนที่ในบล็อกเดียวกัน)"},
+    {'M', 8, G::MCoolant, P::BeforeMotion, kAll, false, "Coolant on", "เปิดสารหล่อเย็น", "M08 - coolant on",
+     "M08 - เปิดสารหล่อเย็น"},
     {'M', 9, G::MCoolant, P::AfterMotion, kAll, false, "Coolant off", "ปิดสารหล่อเย็น",
-     "M09 - coolant off (after the motion of its block)",
-     "M09 - ปิดสารหล่อเย็น (หลังการเคลื่อนที่ในบล็อกเดียวกัน)"},
-    {'M', 30, G::MProgram, P::AfterMotion, kAll, true, "End of program and rewind",
-     "จบโปรแกรมและย้อนกลับต้นโปรแกรม", "M30 - end of program, back to its start",
-     "M30 - จบโปรแกรมและย้อนกลับไปต้นโปรแกรม"},
+     "M09 - coolant off (after the motion of its block)", "M09 - ปิดสารหล่อเย็น (หลังการเคลื่อนที่ในบล็อกเดียวกัน)"},
+    {'M', 30, G::MProgram, P::AfterMotion, kAll, true, "End of program and rewind", "จบโปรแกรมและย้อนกลับต้นโปรแกรม",
+     "M30 - end of program, back to its start", "M30 - จบโปรแกรมและย้อนกลับไปต้นโปรแกรม"},
     // M41 means C-axis mode in the classic dialect, a gear range on a Fanuc (SPEC 13).
-    {'M', 41, G::MCAxis, P::BeforeMotion, kC, false, "C-axis mode on",
-     "เปิดโหมดควบคุมการเคลื่อนที่ของแกน C", "M41 - enter C-axis mode (the brake must be on: M86 first)",
+    {'M', 41, G::MCAxis, P::BeforeMotion, kC, false, "C-axis mode on", "เปิดโหมดควบคุมการเคลื่อนที่ของแกน C",
+     "M41 - enter C-axis mode (the brake must be on: M86 first)",
      "M41 - เข้าสู่โหมดควบคุมการเคลื่อนที่ของแกน C (ต้องเบรกก่อนด้วย M86)"},
     {'M', 41, G::MGear, P::BeforeMotion, kFH, false, "Gear range 1 (low)", "เลือกช่วงเกียร์ 1 (ต่ำ)",
      "M41 - select the low gear range (no motion)", "M41 - เลือกช่วงเกียร์ต่ำ (ไม่มีการเคลื่อนที่)"},
@@ -240,20 +213,18 @@ constexpr CodeInfo kRows[] = {
     {'M', 86, G::MBrake, P::BeforeMotion, kFC, false, "Spindle brake on", "เบรกเพลาจับงาน",
      "M86 - apply the brake (the spindle must be stopped)", "M86 - เบรกเพลาจับงาน (เพลาต้องหยุดหมุนก่อน)"},
     {'M', 87, G::MBrake, P::BeforeMotion, kFC, false, "Spindle brake off", "ปลดเบรกเพลาจับงาน",
-     "M87 - release the brake (leave C-axis mode first)",
-     "M87 - ปลดเบรก (ต้องออกจากโหมดควบคุมการเคลื่อนที่ของแกน C ก่อน)"},
-    {'M', 91, G::MCAxis, P::BeforeMotion, kFC, false, "C-axis mode off",
-     "ปิดโหมดควบคุมการเคลื่อนที่ของแกน C", "M91 - leave C-axis mode",
-     "M91 - ออกจากโหมดควบคุมการเคลื่อนที่ของแกน C"},
+     "M87 - release the brake (leave C-axis mode first)", "M87 - ปลดเบรก (ต้องออกจากโหมดควบคุมการเคลื่อนที่ของแกน C ก่อน)"},
+    {'M', 91, G::MCAxis, P::BeforeMotion, kFC, false, "C-axis mode off", "ปิดโหมดควบคุมการเคลื่อนที่ของแกน C",
+     "M91 - leave C-axis mode", "M91 - ออกจากโหมดควบคุมการเคลื่อนที่ของแกน C"},
     // Haas machine M codes (Haas lathe operator's manual, M-codes; docs/dialects.md).
-    {'M', 10, G::MChuck, P::BeforeMotion, kH, false, "Chuck clamp", "จับชิ้นงาน (หนีบหัวจับ)",
-     "M10 - clamp the chuck", "M10 - หนีบหัวจับชิ้นงาน"},
+    {'M', 10, G::MChuck, P::BeforeMotion, kH, false, "Chuck clamp", "จับชิ้นงาน (หนีบหัวจับ)", "M10 - clamp the chuck",
+     "M10 - หนีบหัวจับชิ้นงาน"},
     {'M', 11, G::MChuck, P::BeforeMotion, kH, false, "Chuck unclamp", "ปลดหัวจับชิ้นงาน",
      "M11 - unclamp the chuck (spindle stopped)", "M11 - ปลดหัวจับชิ้นงาน (เพลาต้องหยุดหมุน)"},
-    {'M', 12, G::MAirBlast, P::BeforeMotion, kH, false, "Air blast on", "เปิดลมเป่า",
-     "M12 - auto air jet on", "M12 - เปิดลมเป่าอัตโนมัติ"},
-    {'M', 13, G::MAirBlast, P::AfterMotion, kH, false, "Air blast off", "ปิดลมเป่า",
-     "M13 - auto air jet off", "M13 - ปิดลมเป่าอัตโนมัติ"},
+    {'M', 12, G::MAirBlast, P::BeforeMotion, kH, false, "Air blast on", "เปิดลมเป่า", "M12 - auto air jet on",
+     "M12 - เปิดลมเป่าอัตโนมัติ"},
+    {'M', 13, G::MAirBlast, P::AfterMotion, kH, false, "Air blast off", "ปิดลมเป่า", "M13 - auto air jet off",
+     "M13 - ปิดลมเป่าอัตโนมัติ"},
     {'M', 14, G::MBrake, P::BeforeMotion, kH, false, "Main spindle brake on", "เบรกเพลาจับงาน",
      "M14 - clamp the main spindle (spindle stopped)", "M14 - เบรกเพลาจับงาน (เพลาต้องหยุดหมุน)"},
     {'M', 15, G::MBrake, P::BeforeMotion, kH, false, "Main spindle brake off", "ปลดเบรกเพลาจับงาน",
@@ -265,8 +236,7 @@ constexpr CodeInfo kRows[] = {
     {'M', 22, G::MTailstock, P::BeforeMotion, kH, false, "Tailstock retract", "ถอยยันศูนย์ท้ายออก",
      "M22 - retract the tailstock", "M22 - ถอยยันศูนย์ท้ายออก"},
     {'M', 23, G::MThreadChamfer, P::BeforeMotion, kH, false, "Thread chamfer on", "เปิดการลบมุมปลายเกลียว",
-     "M23 - angle out of the thread at its end (Settings 95, 96)",
-     "M23 - ถอยมีดเป็นมุมเมื่อสุดเกลียว (ตั้งค่า 95, 96)"},
+     "M23 - angle out of the thread at its end (Settings 95, 96)", "M23 - ถอยมีดเป็นมุมเมื่อสุดเกลียว (ตั้งค่า 95, 96)"},
     {'M', 24, G::MThreadChamfer, P::BeforeMotion, kH, false, "Thread chamfer off", "ปิดการลบมุมปลายเกลียว",
      "M24 - pull straight out of the thread at its end", "M24 - ถอยมีดตรงออกเมื่อสุดเกลียว"},
     {'M', 31, G::MConveyor, P::BeforeMotion, kH, false, "Chip conveyor forward", "เปิดสายพานลำเลียงเศษ",
@@ -285,10 +255,10 @@ constexpr CodeInfo kRows[] = {
      "M85 - open the automatic door", "M85 - เปิดประตูเครื่องอัตโนมัติ"},
     {'M', 86, G::MDoor, P::BeforeMotion, kH, false, "Automatic door close", "ปิดประตูอัตโนมัติ",
      "M86 - close the automatic door (Haas; a brake elsewhere)", "M86 - ปิดประตูเครื่องอัตโนมัติ (ของ Haas)"},
-    {'M', 88, G::MHighPressureCoolant, P::BeforeMotion, kH, false, "High-pressure coolant on",
-     "เปิดสารหล่อเย็นแรงดันสูง", "M88 - high-pressure coolant on", "M88 - เปิดสารหล่อเย็นแรงดันสูง"},
-    {'M', 89, G::MHighPressureCoolant, P::AfterMotion, kH, false, "High-pressure coolant off",
-     "ปิดสารหล่อเย็นแรงดันสูง", "M89 - high-pressure coolant off", "M89 - ปิดสารหล่อเย็นแรงดันสูง"},
+    {'M', 88, G::MHighPressureCoolant, P::BeforeMotion, kH, false, "High-pressure coolant on", "เปิดสารหล่อเย็นแรงดันสูง",
+     "M88 - high-pressure coolant on", "M88 - เปิดสารหล่อเย็นแรงดันสูง"},
+    {'M', 89, G::MHighPressureCoolant, P::AfterMotion, kH, false, "High-pressure coolant off", "ปิดสารหล่อเย็นแรงดันสูง",
+     "M89 - high-pressure coolant off", "M89 - ปิดสารหล่อเย็นแรงดันสูง"},
     {'M', 95, G::MOther, P::AfterMotion, kH, false, "Sleep mode", "โหมดพักเครื่อง",
      "M95 (00:30) - sleep for 30 minutes, then warm up", "M95 (00:30) - พักเครื่อง 30 นาทีแล้วอุ่นเครื่อง"},
     {'M', 97, G::MSubprogram, P::AfterMotion, kH, false, "Local subprogram call", "เรียกโปรแกรมย่อยภายใน",
@@ -310,40 +280,74 @@ struct ActionRow {
 };
 using A = CodeAction;
 constexpr ActionRow kActions[] = {
-    {'G', 0, G::Motion, A::Rapid},           {'G', 1, G::Motion, A::Line},
-    {'G', 2, G::Motion, A::ArcCw},           {'G', 3, G::Motion, A::ArcCcw},
-    {'G', 32, G::Motion, A::Thread},         {'G', 90, G::Motion, A::BoxTurning},
-    {'G', 92, G::Motion, A::BoxThreading},   {'G', 94, G::Motion, A::BoxFacing},
-    {'G', 20, G::Units, A::Inch},            {'G', 21, G::Units, A::Metric},
-    {'G', 40, G::NoseComp, A::CompOff},      {'G', 41, G::NoseComp, A::CompLeft},
-    {'G', 42, G::NoseComp, A::CompRight},    {'G', 96, G::SpindleMode, A::ConstantSurface},
-    {'G', 97, G::SpindleMode, A::ConstantRpm}, {'G', 98, G::FeedMode, A::FeedPerMinute},
-    {'G', 99, G::FeedMode, A::FeedPerRev},   {'G', 54, G::WorkOffset, A::WorkOffset},
-    {'G', 55, G::WorkOffset, A::WorkOffset}, {'G', 56, G::WorkOffset, A::WorkOffset},
-    {'G', 57, G::WorkOffset, A::WorkOffset}, {'G', 58, G::WorkOffset, A::WorkOffset},
-    {'G', 59, G::WorkOffset, A::WorkOffset}, {'G', 4, G::NonModal, A::Dwell},
-    {'G', 27, G::NonModal, A::ReferenceCheck}, {'G', 28, G::NonModal, A::ReferenceReturn},
-    {'G', 30, G::NonModal, A::SecondReferenceReturn}, {'G', 29, G::NonModal, A::ReturnFromReference},
-    {'G', 50, G::NonModal, A::CoordinateSet}, {'G', 53, G::NonModal, A::MachineCoordinates},
-    {'G', 65, G::NonModal, A::MacroCall},    {'G', 66, G::MacroModal, A::MacroModalCall},
-    {'G', 67, G::MacroModal, A::MacroModalCancel}, {'G', 80, G::CannedCycle, A::CycleCancel},
-    {'G', 70, G::CannedCycle, A::Finishing}, {'G', 71, G::CannedCycle, A::TurnRoughing},
-    {'G', 72, G::CannedCycle, A::FaceRoughing}, {'G', 73, G::CannedCycle, A::PatternRepeating},
-    {'G', 74, G::CannedCycle, A::FacePecking}, {'G', 75, G::CannedCycle, A::Grooving},
-    {'G', 76, G::CannedCycle, A::ThreadCutting}, {'G', 81, G::CannedCycle, A::Drilling},
-    {'G', 82, G::CannedCycle, A::SpotDrilling}, {'G', 83, G::CannedCycle, A::PeckDrilling},
-    {'M', 3, G::MSpindle, A::SpindleCw},     {'M', 4, G::MSpindle, A::SpindleCcw},
-    {'M', 5, G::MSpindle, A::SpindleStop},   {'M', 8, G::MCoolant, A::CoolantOn},
-    {'M', 9, G::MCoolant, A::CoolantOff},    {'M', 86, G::MBrake, A::SpindleClamp},
-    {'M', 14, G::MBrake, A::SpindleClamp},   {'M', 87, G::MBrake, A::SpindleRelease},
-    {'M', 15, G::MBrake, A::SpindleRelease}, {'M', 41, G::MCAxis, A::CAxisOn},
-    {'M', 91, G::MCAxis, A::CAxisOff},       {'M', 41, G::MGear, A::GearRange},
-    {'M', 42, G::MGear, A::GearRange},       {'M', 43, G::MGear, A::GearRange},
-    {'M', 44, G::MGear, A::GearRange},       {'M', 23, G::MThreadChamfer, A::ThreadChamferOn},
-    {'M', 24, G::MThreadChamfer, A::ThreadChamferOff}, {'M', 0, G::MProgram, A::ProgramStop},
-    {'M', 1, G::MProgram, A::OptionalStop},  {'M', 2, G::MProgram, A::ProgramEnd},
-    {'M', 30, G::MProgram, A::ProgramEnd},   {'M', 97, G::MSubprogram, A::LocalCall},
-    {'M', 98, G::MSubprogram, A::SubprogramCall}, {'M', 99, G::MSubprogram, A::SubprogramReturn},
+    {'G', 0, G::Motion, A::Rapid},
+    {'G', 1, G::Motion, A::Line},
+    {'G', 2, G::Motion, A::ArcCw},
+    {'G', 3, G::Motion, A::ArcCcw},
+    {'G', 32, G::Motion, A::Thread},
+    {'G', 90, G::Motion, A::BoxTurning},
+    {'G', 92, G::Motion, A::BoxThreading},
+    {'G', 94, G::Motion, A::BoxFacing},
+    {'G', 20, G::Units, A::Inch},
+    {'G', 21, G::Units, A::Metric},
+    {'G', 40, G::NoseComp, A::CompOff},
+    {'G', 41, G::NoseComp, A::CompLeft},
+    {'G', 42, G::NoseComp, A::CompRight},
+    {'G', 96, G::SpindleMode, A::ConstantSurface},
+    {'G', 97, G::SpindleMode, A::ConstantRpm},
+    {'G', 98, G::FeedMode, A::FeedPerMinute},
+    {'G', 99, G::FeedMode, A::FeedPerRev},
+    {'G', 54, G::WorkOffset, A::WorkOffset},
+    {'G', 55, G::WorkOffset, A::WorkOffset},
+    {'G', 56, G::WorkOffset, A::WorkOffset},
+    {'G', 57, G::WorkOffset, A::WorkOffset},
+    {'G', 58, G::WorkOffset, A::WorkOffset},
+    {'G', 59, G::WorkOffset, A::WorkOffset},
+    {'G', 4, G::NonModal, A::Dwell},
+    {'G', 27, G::NonModal, A::ReferenceCheck},
+    {'G', 28, G::NonModal, A::ReferenceReturn},
+    {'G', 30, G::NonModal, A::SecondReferenceReturn},
+    {'G', 29, G::NonModal, A::ReturnFromReference},
+    {'G', 50, G::NonModal, A::CoordinateSet},
+    {'G', 53, G::NonModal, A::MachineCoordinates},
+    {'G', 65, G::NonModal, A::MacroCall},
+    {'G', 66, G::MacroModal, A::MacroModalCall},
+    {'G', 67, G::MacroModal, A::MacroModalCancel},
+    {'G', 80, G::CannedCycle, A::CycleCancel},
+    {'G', 70, G::CannedCycle, A::Finishing},
+    {'G', 71, G::CannedCycle, A::TurnRoughing},
+    {'G', 72, G::CannedCycle, A::FaceRoughing},
+    {'G', 73, G::CannedCycle, A::PatternRepeating},
+    {'G', 74, G::CannedCycle, A::FacePecking},
+    {'G', 75, G::CannedCycle, A::Grooving},
+    {'G', 76, G::CannedCycle, A::ThreadCutting},
+    {'G', 81, G::CannedCycle, A::Drilling},
+    {'G', 82, G::CannedCycle, A::SpotDrilling},
+    {'G', 83, G::CannedCycle, A::PeckDrilling},
+    {'M', 3, G::MSpindle, A::SpindleCw},
+    {'M', 4, G::MSpindle, A::SpindleCcw},
+    {'M', 5, G::MSpindle, A::SpindleStop},
+    {'M', 8, G::MCoolant, A::CoolantOn},
+    {'M', 9, G::MCoolant, A::CoolantOff},
+    {'M', 86, G::MBrake, A::SpindleClamp},
+    {'M', 14, G::MBrake, A::SpindleClamp},
+    {'M', 87, G::MBrake, A::SpindleRelease},
+    {'M', 15, G::MBrake, A::SpindleRelease},
+    {'M', 41, G::MCAxis, A::CAxisOn},
+    {'M', 91, G::MCAxis, A::CAxisOff},
+    {'M', 41, G::MGear, A::GearRange},
+    {'M', 42, G::MGear, A::GearRange},
+    {'M', 43, G::MGear, A::GearRange},
+    {'M', 44, G::MGear, A::GearRange},
+    {'M', 23, G::MThreadChamfer, A::ThreadChamferOn},
+    {'M', 24, G::MThreadChamfer, A::ThreadChamferOff},
+    {'M', 0, G::MProgram, A::ProgramStop},
+    {'M', 1, G::MProgram, A::OptionalStop},
+    {'M', 2, G::MProgram, A::ProgramEnd},
+    {'M', 30, G::MProgram, A::ProgramEnd},
+    {'M', 97, G::MSubprogram, A::LocalCall},
+    {'M', 98, G::MSubprogram, A::SubprogramCall},
+    {'M', 99, G::MSubprogram, A::SubprogramReturn},
 };
 
 constexpr auto withActions() {
@@ -351,7 +355,8 @@ constexpr auto withActions() {
   for (std::size_t i = 0; i < rows.size(); ++i) {
     rows[i] = kRows[i];
     for (const ActionRow& a : kActions)
-      if (a.letter == rows[i].letter && a.number == rows[i].number && a.group == rows[i].group) rows[i].action = a.action;
+      if (a.letter == rows[i].letter && a.number == rows[i].number && a.group == rows[i].group)
+        rows[i].action = a.action;
   }
   return rows;
 }
@@ -363,33 +368,92 @@ constexpr auto kTable = withActions();
 constexpr SystemRename kRenames[] = {
     // System B: G90/G91 are absolute/incremental, the feed modes G94/G95, G92 the
     // coordinate setting and speed clamp, G33 threading, G77-G79 the single cycles.
-    {GcodeSystem::B, 33, 32}, {GcodeSystem::B, 92, 50}, {GcodeSystem::B, 77, 90}, {GcodeSystem::B, 78, 92},
-    {GcodeSystem::B, 79, 94}, {GcodeSystem::B, 94, 98}, {GcodeSystem::B, 95, 99},
-    {GcodeSystem::B, 90, -1}, {GcodeSystem::B, 91, -1}, {GcodeSystem::B, 98, -1}, {GcodeSystem::B, 99, -1},
+    {GcodeSystem::B, 33, 32},
+    {GcodeSystem::B, 92, 50},
+    {GcodeSystem::B, 77, 90},
+    {GcodeSystem::B, 78, 92},
+    {GcodeSystem::B, 79, 94},
+    {GcodeSystem::B, 94, 98},
+    {GcodeSystem::B, 95, 99},
+    {GcodeSystem::B, 90, -1},
+    {GcodeSystem::B, 91, -1},
+    {GcodeSystem::B, 98, -1},
+    {GcodeSystem::B, 99, -1},
     // System C: as B, and the units become G70/G71, so G70-G76 move up by two and
     // the single cycles become G20, G21, G24.
-    {GcodeSystem::C, 70, 20}, {GcodeSystem::C, 71, 21}, {GcodeSystem::C, 72, 70}, {GcodeSystem::C, 73, 71},
-    {GcodeSystem::C, 74, 72}, {GcodeSystem::C, 75, 73}, {GcodeSystem::C, 76, 74}, {GcodeSystem::C, 77, 75},
-    {GcodeSystem::C, 78, 76}, {GcodeSystem::C, 33, 32}, {GcodeSystem::C, 92, 50}, {GcodeSystem::C, 20, 90},
-    {GcodeSystem::C, 21, 92}, {GcodeSystem::C, 24, 94}, {GcodeSystem::C, 94, 98}, {GcodeSystem::C, 95, 99},
-    {GcodeSystem::C, 90, -1}, {GcodeSystem::C, 91, -1}, {GcodeSystem::C, 98, -1}, {GcodeSystem::C, 99, -1},
+    {GcodeSystem::C, 70, 20},
+    {GcodeSystem::C, 71, 21},
+    {GcodeSystem::C, 72, 70},
+    {GcodeSystem::C, 73, 71},
+    {GcodeSystem::C, 74, 72},
+    {GcodeSystem::C, 75, 73},
+    {GcodeSystem::C, 76, 74},
+    {GcodeSystem::C, 77, 75},
+    {GcodeSystem::C, 78, 76},
+    {GcodeSystem::C, 33, 32},
+    {GcodeSystem::C, 92, 50},
+    {GcodeSystem::C, 20, 90},
+    {GcodeSystem::C, 21, 92},
+    {GcodeSystem::C, 24, 94},
+    {GcodeSystem::C, 94, 98},
+    {GcodeSystem::C, 95, 99},
+    {GcodeSystem::C, 90, -1},
+    {GcodeSystem::C, 91, -1},
+    {GcodeSystem::C, 98, -1},
+    {GcodeSystem::C, 99, -1},
 };
 
 // Rows system A has not (the family mask says which controls have them).
 constexpr CodeInfo kSystemOnly[] = {
-    {'G', 90, G::Distance, P::State, kF, false, "Absolute programming", "กำหนดตำแหน่งแบบสัมบูรณ์",
+    {'G',
+     90,
+     G::Distance,
+     P::State,
+     kF,
+     false,
+     "Absolute programming",
+     "กำหนดตำแหน่งแบบสัมบูรณ์",
      "G90 - X and Z are positions from the work zero (U and W stay distances)",
-     "G90 - ค่า X และ Z เป็นตำแหน่งวัดจากศูนย์งาน (U และ W ยังเป็นระยะสัมพัทธ์)", {}, CodeAction::Absolute},
-    {'G', 91, G::Distance, P::State, kF, false, "Incremental programming", "กำหนดตำแหน่งแบบสัมพัทธ์",
+     "G90 - ค่า X และ Z เป็นตำแหน่งวัดจากศูนย์งาน (U และ W ยังเป็นระยะสัมพัทธ์)",
+     {},
+     CodeAction::Absolute},
+    {'G',
+     91,
+     G::Distance,
+     P::State,
+     kF,
+     false,
+     "Incremental programming",
+     "กำหนดตำแหน่งแบบสัมพัทธ์",
      "G91 - X and Z are distances from where the tool is (X on the diameter)",
-     "G91 - ค่า X และ Z เป็นระยะจากตำแหน่งปัจจุบันของมีด (X เป็นค่าเส้นผ่านศูนย์กลาง)", {}, CodeAction::Incremental},
+     "G91 - ค่า X และ Z เป็นระยะจากตำแหน่งปัจจุบันของมีด (X เป็นค่าเส้นผ่านศูนย์กลาง)",
+     {},
+     CodeAction::Incremental},
     // Systems B and C: G94/G95 are the feed modes, G98/G99 where G83-G85 return (system A: always the initial level).
-    {'G', 98, G::ReturnLevel, P::State, kF, false, "Drilling: return to the initial level", "เจาะรู: ถอยกลับถึงระดับเริ่มต้น",
+    {'G',
+     98,
+     G::ReturnLevel,
+     P::State,
+     kF,
+     false,
+     "Drilling: return to the initial level",
+     "เจาะรู: ถอยกลับถึงระดับเริ่มต้น",
      "G98 - a drilling cycle ends where it started, at the initial level",
-     "G98 - วัฏจักรเจาะรูถอยกลับไปจบที่ระดับเริ่มต้น", {}, CodeAction::ReturnToInitialLevel},
-    {'G', 99, G::ReturnLevel, P::State, kF, false, "Drilling: return to the R point", "เจาะรู: ถอยกลับถึงจุด R",
+     "G98 - วัฏจักรเจาะรูถอยกลับไปจบที่ระดับเริ่มต้น",
+     {},
+     CodeAction::ReturnToInitialLevel},
+    {'G',
+     99,
+     G::ReturnLevel,
+     P::State,
+     kF,
+     false,
+     "Drilling: return to the R point",
+     "เจาะรู: ถอยกลับถึงจุด R",
      "G99 - a drilling cycle ends at its R point, ready for the next hole",
-     "G99 - วัฏจักรเจาะรูถอยกลับไปจบที่จุด R พร้อมเจาะรูถัดไป", {}, CodeAction::ReturnToRPoint},
+     "G99 - วัฏจักรเจาะรูถอยกลับไปจบที่จุด R พร้อมเจาะรูถัดไป",
+     {},
+     CodeAction::ReturnToRPoint},
 };
 
 const CodeInfo* baseRow(char letter, int number, Dialect family) {
@@ -498,7 +562,8 @@ std::string inSystemNumbers(std::string_view text, GcodeSystem system) {
   for (std::size_t i = 0; i < text.size();) {
     std::size_t end = i + 1;
     while (end < text.size() && isDigit(text[end])) ++end;
-    const bool word = text[i] == 'G' && end > i + 1 && end - i <= 3 && (i == 0 || (!isLetter(text[i - 1]) && !isDigit(text[i - 1]))) &&
+    const bool word = text[i] == 'G' && end > i + 1 && end - i <= 3 &&
+                      (i == 0 || (!isLetter(text[i - 1]) && !isDigit(text[i - 1]))) &&
                       (end == text.size() || text[end] != '.');
     if (!word) {
       out += text[i++];
@@ -554,34 +619,62 @@ std::optional<CodeInfo> lookupCode(char letter, int number, Dialect dialect) {
 
 std::string_view modalGroupNumber(ModalGroup group) {
   switch (group) {
-    case ModalGroup::NonModal: return "00";
-    case ModalGroup::Motion: return "01";
-    case ModalGroup::SpindleMode: return "02";
-    case ModalGroup::FeedMode: return "05";
-    case ModalGroup::Units: return "06";
-    case ModalGroup::NoseComp: return "07";
-    case ModalGroup::CannedCycle: return "10";
-    case ModalGroup::MacroModal: return "12";
-    case ModalGroup::Distance: return "03";
-    case ModalGroup::ReturnLevel: return "11";
-    case ModalGroup::WorkOffset: return "14";
-    case ModalGroup::Plane: return "16";
-    case ModalGroup::MSpindle: return "M03/M04/M05";
-    case ModalGroup::MCoolant: return "M08/M09";
-    case ModalGroup::MCAxis: return "M41/M91";
-    case ModalGroup::MBrake: return "M86/M87";
-    case ModalGroup::MGear: return "M41/M42";
-    case ModalGroup::MProgram: return "M00/M01/M02/M30";
-    case ModalGroup::MSubprogram: return "M98/M99";
-    case ModalGroup::MChuck: return "M10/M11";
-    case ModalGroup::MAirBlast: return "M12/M13";
-    case ModalGroup::MTailstock: return "M21/M22";
-    case ModalGroup::MThreadChamfer: return "M23/M24";
-    case ModalGroup::MConveyor: return "M31/M33";
-    case ModalGroup::MPartsCatcher: return "M36/M37";
-    case ModalGroup::MDoor: return "M85/M86";
-    case ModalGroup::MHighPressureCoolant: return "M88/M89";
-    case ModalGroup::MOther: return "M";
+    case ModalGroup::NonModal:
+      return "00";
+    case ModalGroup::Motion:
+      return "01";
+    case ModalGroup::SpindleMode:
+      return "02";
+    case ModalGroup::FeedMode:
+      return "05";
+    case ModalGroup::Units:
+      return "06";
+    case ModalGroup::NoseComp:
+      return "07";
+    case ModalGroup::CannedCycle:
+      return "10";
+    case ModalGroup::MacroModal:
+      return "12";
+    case ModalGroup::Distance:
+      return "03";
+    case ModalGroup::ReturnLevel:
+      return "11";
+    case ModalGroup::WorkOffset:
+      return "14";
+    case ModalGroup::Plane:
+      return "16";
+    case ModalGroup::MSpindle:
+      return "M03/M04/M05";
+    case ModalGroup::MCoolant:
+      return "M08/M09";
+    case ModalGroup::MCAxis:
+      return "M41/M91";
+    case ModalGroup::MBrake:
+      return "M86/M87";
+    case ModalGroup::MGear:
+      return "M41/M42";
+    case ModalGroup::MProgram:
+      return "M00/M01/M02/M30";
+    case ModalGroup::MSubprogram:
+      return "M98/M99";
+    case ModalGroup::MChuck:
+      return "M10/M11";
+    case ModalGroup::MAirBlast:
+      return "M12/M13";
+    case ModalGroup::MTailstock:
+      return "M21/M22";
+    case ModalGroup::MThreadChamfer:
+      return "M23/M24";
+    case ModalGroup::MConveyor:
+      return "M31/M33";
+    case ModalGroup::MPartsCatcher:
+      return "M36/M37";
+    case ModalGroup::MDoor:
+      return "M85/M86";
+    case ModalGroup::MHighPressureCoolant:
+      return "M88/M89";
+    case ModalGroup::MOther:
+      return "M";
   }
   return "?";
 }

@@ -56,8 +56,12 @@ BlockKind kindOf(const Block& b, Dialect dialect) {
     if (!row) continue;
     switch (row->action) {
       case CodeAction::MacroCall:
-      case CodeAction::MacroModalCall: k.passedAsWritten = true; break;
-      case CodeAction::Dwell: k.dwell = true; break;
+      case CodeAction::MacroModalCall:
+        k.passedAsWritten = true;
+        break;
+      case CodeAction::Dwell:
+        k.dwell = true;
+        break;
       case CodeAction::PatternRepeating:
         k.cycle = true;
         if (!b.has('P')) k.rIsCount = true;
@@ -67,8 +71,11 @@ BlockKind kindOf(const Block& b, Dialect dialect) {
       case CodeAction::FaceRoughing:
       case CodeAction::FacePecking:
       case CodeAction::Grooving:
-      case CodeAction::ThreadCutting: k.cycle = true; break;
-      default: break;
+      case CodeAction::ThreadCutting:
+        k.cycle = true;
+        break;
+      default:
+        break;
     }
   }
   return k;
@@ -80,7 +87,8 @@ void forEachPointlessLength(const Block& b, const BlockKind& kind, F&& f) {
   if (kind.passedAsWritten || b.statement.kind != StatementKind::None) return;
   for (std::size_t i = 0; i < b.words.size(); ++i) {
     const Word& w = b.words[i];
-    if (w.hasDecimalPoint || w.expr >= 0 || w.comma || kLengthLetters.find(w.letter) == std::string_view::npos) continue;
+    if (w.hasDecimalPoint || w.expr >= 0 || w.comma || kLengthLetters.find(w.letter) == std::string_view::npos)
+      continue;
     if (w.letter == 'R' && kind.rIsCount) continue;
     f(i, w);
   }
@@ -120,11 +128,12 @@ PointEvidence weighDecimalPoints(const Program& program, InputUnits powerOnUnits
       if (position && w.letter != 'X' && w.letter != 'Z') return;
       PointClue clue{w.range, w.text(), units == InputUnits::Inch, std::abs(w.value) * mmPer(units),
                      std::abs(w.value) * incrementOf(units) * mmPer(units)};
-      const bool wholeFits =
-          clue.wholeMm <= (position ? kFarthestPositionMm : kLargestCycleSettingMm);
+      const bool wholeFits = clue.wholeMm <= (position ? kFarthestPositionMm : kLargestCycleSettingMm);
       const bool incrementsFit = clue.incrementMm >= (position ? kNearestPositionMm : kSmallestCycleSettingMm);
-      if (wholeFits && !incrementsFit) out.forWholeUnits.push_back(std::move(clue));
-      else if (!wholeFits && incrementsFit) out.forIncrements.push_back(std::move(clue));
+      if (wholeFits && !incrementsFit)
+        out.forWholeUnits.push_back(std::move(clue));
+      else if (!wholeFits && incrementsFit)
+        out.forIncrements.push_back(std::move(clue));
     });
   }
   return out;
@@ -139,8 +148,8 @@ void readLengthsInIncrements(Program& program, InputUnits powerOnUnits, Dialect 
     forEachPointlessLength(b, kind, [&](std::size_t i, const Word&) { pointless.push_back(i); });
     // A dwell's X (or U) is a time: 0.001 s in mm and inch alike (Fanuc 0i-TF, G04 dwell: IS-B).
     for (std::size_t i : pointless)
-      b.words[i].value *= kind.dwell && (b.words[i].letter == 'X' || b.words[i].letter == 'U') ? 0.001
-                                                                                            : incrementOf(units);
+      b.words[i].value *=
+          kind.dwell && (b.words[i].letter == 'X' || b.words[i].letter == 'U') ? 0.001 : incrementOf(units);
   }
 }
 

@@ -7,26 +7,26 @@
 namespace klueng::core::gcode::codes {
 
 // E1xx lexical errors and word formats (SPEC 3-4)
-inline constexpr const char* kLoneLetter = "E101";          // {0}=letter
-inline constexpr const char* kLoneNumber = "E102";          // {0}=number
-inline constexpr const char* kMalformedNumber = "E103";     // {0}=word as written
-inline constexpr const char* kUnknownCharacter = "E104";    // {0}=character
+inline constexpr const char* kLoneLetter = "E101";        // {0}=letter
+inline constexpr const char* kLoneNumber = "E102";        // {0}=number
+inline constexpr const char* kMalformedNumber = "E103";   // {0}=word as written
+inline constexpr const char* kUnknownCharacter = "E104";  // {0}=character
 inline constexpr const char* kUnclosedComment = "E105";
 inline constexpr const char* kMisplacedBlockSkip = "E106";
 inline constexpr const char* kMisplacedTapeMark = "E107";
-inline constexpr const char* kTextAfterTapeMark = "E108";   // {0}=word
+inline constexpr const char* kTextAfterTapeMark = "E108";  // {0}=word
 inline constexpr const char* kTooManyLexicalErrors = "E109";
-inline constexpr const char* kOutOfRange = "E110";          // {0}=word {1}=min {2}=max
-inline constexpr const char* kTooManyDecimals = "E111";     // {0}=word {1}=max decimals
-inline constexpr const char* kNotPositive = "E112";         // {0}=word {1}=letter {2}=min {3}=max
-inline constexpr const char* kCodeNotInteger = "E113";      // {0}=word
-inline constexpr const char* kUnknownGCode = "E114";        // {0}=word
-inline constexpr const char* kUnknownMCode = "E115";        // {0}=word
-inline constexpr const char* kBadSequenceNumber = "E116";   // {0}=word {1}=letter {2}=max
-inline constexpr const char* kBadToolWord = "E117";         // {0}=word
-inline constexpr const char* kBadToolWordFanuc = "E118";    // {0}=word {1}=max tool {2}=max offset (2 digits)
-inline constexpr const char* kNotWholeNumber = "E119";      // {0}=word {1}=letter
-inline constexpr const char* kBlockTooLong = "E120";       // {0}=limit
+inline constexpr const char* kOutOfRange = "E110";            // {0}=word {1}=min {2}=max
+inline constexpr const char* kTooManyDecimals = "E111";       // {0}=word {1}=max decimals
+inline constexpr const char* kNotPositive = "E112";           // {0}=word {1}=letter {2}=min {3}=max
+inline constexpr const char* kCodeNotInteger = "E113";        // {0}=word
+inline constexpr const char* kUnknownGCode = "E114";          // {0}=word
+inline constexpr const char* kUnknownMCode = "E115";          // {0}=word
+inline constexpr const char* kBadSequenceNumber = "E116";     // {0}=word {1}=letter {2}=max
+inline constexpr const char* kBadToolWord = "E117";           // {0}=word
+inline constexpr const char* kBadToolWordFanuc = "E118";      // {0}=word {1}=max tool {2}=max offset (2 digits)
+inline constexpr const char* kNotWholeNumber = "E119";        // {0}=word {1}=letter
+inline constexpr const char* kBlockTooLong = "E120";          // {0}=limit
 inline constexpr const char* kMacroUnclosedBracket = "E121";  // '[' without ']'
 inline constexpr const char* kMacroExpectedValue = "E122";    // {0}=what was found instead
 inline constexpr const char* kMacroUnknownWord = "E123";      // {0}=word
@@ -36,29 +36,29 @@ inline constexpr const char* kMacroTooDeep = "E126";          // {0}=limit
 inline constexpr const char* kStatementNotAlone = "E127";     // {0}=word
 inline constexpr const char* kIfWithoutGotoThen = "E128";
 inline constexpr const char* kWhileWithoutDo = "E129";
-inline constexpr const char* kBadLoopNumber = "E130";         // {0}=number
-inline constexpr const char* kExpectedAssignment = "E131";    // {0}=text
-inline constexpr const char* kCornerNotOnG01 = "E132";        // {0}=word
-inline constexpr const char* kChamferAndCorner = "E133";      // {0}=first {1}=second
-inline constexpr const char* kExponentNumber = "E134";        // {0}=the word before {1}=the E word
-inline constexpr const char* kExponentInMacro = "E139";       // {0}=the number as written (1e300)
-inline constexpr const char* kBlanksInWord = "E135";          // {0}=the word without blanks (classic)
-inline constexpr const char* kLetterOForZero = "E136";        // {0}=word as written {1}=the word meant
-inline constexpr const char* kCommaForPoint = "E137";         // {0}=word as written {1}=the word meant
-inline constexpr const char* kTextLine = "E138";              // {0}=the text (at most 20 characters)
+inline constexpr const char* kBadLoopNumber = "E130";          // {0}=number
+inline constexpr const char* kExpectedAssignment = "E131";     // {0}=text
+inline constexpr const char* kCornerNotOnG01 = "E132";         // {0}=word
+inline constexpr const char* kChamferAndCorner = "E133";       // {0}=first {1}=second
+inline constexpr const char* kExponentNumber = "E134";         // {0}=the word before {1}=the E word
+inline constexpr const char* kExponentInMacro = "E139";        // {0}=the number as written (1e300)
+inline constexpr const char* kBlanksInWord = "E135";           // {0}=the word without blanks (classic)
+inline constexpr const char* kLetterOForZero = "E136";         // {0}=word as written {1}=the word meant
+inline constexpr const char* kCommaForPoint = "E137";          // {0}=word as written {1}=the word meant
+inline constexpr const char* kTextLine = "E138";               // {0}=the text (at most 20 characters)
 inline constexpr const char* kSingleCycleWithoutEnd = "E140";  // {0}=the cycle's G word
-inline constexpr const char* kTooManyDiagnostics = "E199";  // {0}=limit
+inline constexpr const char* kTooManyDiagnostics = "E199";     // {0}=limit
 
 // E2nn block rule nn of SPEC 5 (E213, stock size, belongs to the io module)
-inline constexpr const char* kLetterNotAllowed = "E201";    // {0}=word {1}=letter {2}=allowed letters
-inline constexpr const char* kLetterTwice = "E202";         // {0}=letter
-inline constexpr const char* kMustStandAlone = "E203";      // {0}=code
-inline constexpr const char* kConflictingMCodes = "E204";   // {0}=first {1}=second
-inline constexpr const char* kSameModalGroup = "E205";      // {0}=first {1}=second {2}=group
-inline constexpr const char* kOneShotWithMotion = "E206";   // {0}=group-00 code {1}=group-01 code
-inline constexpr const char* kFeedModeNotAlone = "E207";    // {0}=code
-inline constexpr const char* kMisplacedO = "E208";          // {0}=word
-inline constexpr const char* kNNotFirst = "E209";           // {0}=word
+inline constexpr const char* kLetterNotAllowed = "E201";        // {0}=word {1}=letter {2}=allowed letters
+inline constexpr const char* kLetterTwice = "E202";             // {0}=letter
+inline constexpr const char* kMustStandAlone = "E203";          // {0}=code
+inline constexpr const char* kConflictingMCodes = "E204";       // {0}=first {1}=second
+inline constexpr const char* kSameModalGroup = "E205";          // {0}=first {1}=second {2}=group
+inline constexpr const char* kOneShotWithMotion = "E206";       // {0}=group-00 code {1}=group-01 code
+inline constexpr const char* kFeedModeNotAlone = "E207";        // {0}=code
+inline constexpr const char* kMisplacedO = "E208";              // {0}=word
+inline constexpr const char* kNNotFirst = "E209";               // {0}=word
 inline constexpr const char* kAbsoluteAndIncremental = "E210";  // {0}=absolute letter {1}=incremental
 inline constexpr const char* kDwellWithoutTime = "E211";
 
@@ -72,42 +72,44 @@ inline constexpr const char* kNegativeDwell = "E306";       // {0}=word
 inline constexpr const char* kDwellTwice = "E307";          // {0}=first {1}=second
 inline constexpr const char* kDwellWithAxis = "E308";       // {0}=word
 inline constexpr const char* kG28WithoutAxes = "E309";
-inline constexpr const char* kArcWithoutRadius = "E310";    // {0}=code
+inline constexpr const char* kArcWithoutRadius = "E310";  // {0}=code
 
 // E4xx program flow (subprograms and macro B), checked before the run
-inline constexpr const char* kDoWithoutEnd = "E401";          // {0}=loop number
-inline constexpr const char* kEndWithoutDo = "E402";          // {0}=loop number
-inline constexpr const char* kGotoNowhere = "E403";           // {0}=word {1}=N number
-inline constexpr const char* kProgramNotFound = "E404";       // {0}=word {1}=O number
-inline constexpr const char* kLocalTargetMissing = "E405";    // {0}=word {1}=N number
-inline constexpr const char* kBadMacroArgument = "E406";      // {0}=word {1}=letter
-inline constexpr const char* kMacroNotInDialect = "E407";     // {0}=word
-inline constexpr const char* kLoopsTooDeep = "E408";          // {0}=loop number
-inline constexpr const char* kLoopsCross = "E409";            // {0}=END word {1}=DO line
-inline constexpr const char* kReadOnlyVariable = "E410";      // {0}=variable
-inline constexpr const char* kCallsTooDeep = "E411";          // {0}=word {1}=limit
-inline constexpr const char* kSubprogramFileErrors = "E412";  // {0}=file {1}=line {2}=column {3}=code
-inline constexpr const char* kProfileBlockMissing = "E413";   // {0}=cycle and word {1}=N number
-inline constexpr const char* kProfileEndsBeforeStart = "E415";  // {0}=cycle and Q word {1}=N of Q {2}=N of P
+inline constexpr const char* kDoWithoutEnd = "E401";                // {0}=loop number
+inline constexpr const char* kEndWithoutDo = "E402";                // {0}=loop number
+inline constexpr const char* kGotoNowhere = "E403";                 // {0}=word {1}=N number
+inline constexpr const char* kProgramNotFound = "E404";             // {0}=word {1}=O number
+inline constexpr const char* kLocalTargetMissing = "E405";          // {0}=word {1}=N number
+inline constexpr const char* kBadMacroArgument = "E406";            // {0}=word {1}=letter
+inline constexpr const char* kMacroNotInDialect = "E407";           // {0}=word
+inline constexpr const char* kLoopsTooDeep = "E408";                // {0}=loop number
+inline constexpr const char* kLoopsCross = "E409";                  // {0}=END word {1}=DO line
+inline constexpr const char* kReadOnlyVariable = "E410";            // {0}=variable
+inline constexpr const char* kCallsTooDeep = "E411";                // {0}=word {1}=limit
+inline constexpr const char* kSubprogramFileErrors = "E412";        // {0}=file {1}=line {2}=column {3}=code
+inline constexpr const char* kProfileBlockMissing = "E413";         // {0}=cycle and word {1}=N number
+inline constexpr const char* kProfileEndsBeforeStart = "E415";      // {0}=cycle and Q word {1}=N of Q {2}=N of P
 inline constexpr const char* kProfileStartsWithoutMotion = "E414";  // {0}=cycle and P word {1}=N number
 // The called program's file name is in the folder, but as a folder (or a pipe, a device): Program::notProgramFiles.
-inline constexpr const char* kProgramFileNotAFile = "E416";  // {0}=word {1}=O number {2}=name {3}=what (en) {4}=what (th)
+inline constexpr const char* kProgramFileNotAFile =
+    "E416";  // {0}=word {1}=O number {2}=name {3}=what (en) {4}=what (th)
 
 // W1xx warnings
-inline constexpr const char* kMachineSpecificM = "W101";    // {0}=word
+inline constexpr const char* kMachineSpecificM = "W101";  // {0}=word
 inline constexpr const char* kG28NoMotion = "W102";
 inline constexpr const char* kRoundedToIncrement = "W103";  // {0}=word {1}=rounded word {2}=decimals
 // Modal rules (modal_check.cpp): a run-time alarm known while typing.
-inline constexpr const char* kFeedMoveWithoutFeed = "W104";          // {0}=G01/G02/G03/G32
+inline constexpr const char* kFeedMoveWithoutFeed = "W104";  // {0}=G01/G02/G03/G32
 inline constexpr const char* kConstantSurfaceWithoutClamp = "W105";
-inline constexpr const char* kArcRadiusCannotJoin = "W106";          // {0}=R word {1}=half the chord
-inline constexpr const char* kCornerWordWithoutComma = "W107";     // {0}=the word, {1}=",C" or ",R"
+inline constexpr const char* kArcRadiusCannotJoin = "W106";     // {0}=R word {1}=half the chord
+inline constexpr const char* kCornerWordWithoutComma = "W107";  // {0}=the word, {1}=",C" or ",R"
 // Comments and blanks as people write them (issue 26), from the parser.
-inline constexpr const char* kCommentToLineEnd = "W108";   // '(' not closed: the comment runs to the line end
-                                                           // (E105 in a profile where that is an error)
-inline constexpr const char* kBlanksInNumber = "W109";     // {0}=word as written {1}=as read ("X20 30" = X2030)
+inline constexpr const char* kCommentToLineEnd = "W108";  // '(' not closed: the comment runs to the line end
+                                                          // (E105 in a profile where that is an error)
+inline constexpr const char* kBlanksInNumber = "W109";    // {0}=word as written {1}=as read ("X20 30" = X2030)
 // Decimal point input (decimal_point.h): a word whose other reading is clearly meant.
-inline constexpr const char* kPointlessLengthInIncrements = "W110";  // {0}=word {1}=as read {2}=word with a point {3}=whole
+inline constexpr const char* kPointlessLengthInIncrements =
+    "W110";                                                   // {0}=word {1}=as read {2}=word with a point {3}=whole
 inline constexpr const char* kPointlessLengthWhole = "W111";  // {0}=word {1}=as read {2}=in increments {3}=that word
 
 // I1xx notes

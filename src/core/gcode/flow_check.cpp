@@ -65,7 +65,8 @@ class FlowChecker {
   ProgramIndex index_;
   std::vector<Call> calls_;
   std::vector<bool> hasConditions_;
-  std::set<int> profileStarts_;  // first profile blocks already looked at  // per section: IF/WHILE/GOTO/M99 P may end a recursion
+  std::set<int> profileStarts_;  // first profile blocks already looked at  // per section: IF/WHILE/GOTO/M99 P may end
+                                 // a recursion
 
   void emit(const char* code, SourceRange range, std::vector<std::string> args) {
     if (out_.size() >= 10000) return;
@@ -125,7 +126,8 @@ class FlowChecker {
             }
           break;
         }
-        default: break;
+        default:
+          break;
       }
       if (st.kind == StatementKind::None) {
         checkCalls(b, section, i);
@@ -158,7 +160,8 @@ class FlowChecker {
       const CallTarget t = callTarget(p->value, l, false);
       if (const ProgramSection* callee = index_.program(t.number))
         calls_.push_back({section, static_cast<int>(callee - index_.sections().data()), g, index});
-      else programNotFound(p->range, g->text() + " " + p->text(), t.number);
+      else
+        programNotFound(p->range, g->text() + " " + p->text(), t.number);
     }
   }
 
@@ -219,14 +222,16 @@ class FlowChecker {
       const CallTarget t = callTarget(p->value, l, profile_.flow.packedRepeats);
       if (const ProgramSection* callee = index_.program(t.number))
         calls_.push_back({section, static_cast<int>(callee - index_.sections().data()), m98, index});
-      else programNotFound(p->range, "M98 " + p->text(), t.number);
+      else
+        programNotFound(p->range, "M98 " + p->text(), t.number);
     }
     if (actionWord(b, 'M', CodeAction::LocalCall, profile_.dialect)) {
       const CallTarget t = callTarget(p->value, l, false);
       if (index_.findSequence(section, t.number, index) < 0)
         emit(codes::kLocalTargetMissing, p->range, {"M97 " + p->text(), std::to_string(t.number)});
     }
-    if (actionWord(b, 'M', CodeAction::SubprogramReturn, profile_.dialect)) hasConditions_[static_cast<std::size_t>(section)] = true;
+    if (actionWord(b, 'M', CodeAction::SubprogramReturn, profile_.dialect))
+      hasConditions_[static_cast<std::size_t>(section)] = true;
   }
 
   // Call chains through constant calls: deeper than the control allows is an
@@ -249,10 +254,12 @@ class FlowChecker {
         if (state[static_cast<std::size_t>(c->callee)] == 1) {
           // A cycle: fine when some program on it can stop calling (IF, WHILE, GOTO).
           bool conditional = false;
-          for (const Call* k : path) conditional = conditional || hasConditions_[static_cast<std::size_t>(k->callee)] ||
-                                                   hasConditions_[static_cast<std::size_t>(k->section)];
+          for (const Call* k : path)
+            conditional = conditional || hasConditions_[static_cast<std::size_t>(k->callee)] ||
+                          hasConditions_[static_cast<std::size_t>(k->section)];
           if (!conditional) {
-            emit(codes::kCallsTooDeep, c->word->range, {c->word->text(), std::to_string(profile_.flow.maxSubprogramNesting)});
+            emit(codes::kCallsTooDeep, c->word->range,
+                 {c->word->text(), std::to_string(profile_.flow.maxSubprogramNesting)});
             reported = true;
           }
         } else if (static_cast<int>(path.size()) > limit) {

@@ -29,8 +29,8 @@ using Setter = void (*)(MachineDefinition&, const Value&);
 struct Key {
   std::string_view name;
   Type type;
-  double min = 0.0, max = 0.0;          // Whole, Real; Numbers: each number
-  std::string_view choices = {};        // Choice: "a|b|c", the enum's order
+  double min = 0.0, max = 0.0;    // Whole, Real; Numbers: each number
+  std::string_view choices = {};  // Choice: "a|b|c", the enum's order
   Setter set = nullptr;
 };
 
@@ -46,9 +46,19 @@ const Key kKeys[] = {
     {"family", Type::Choice, 0, 0, "fanuc|haas|classic", KLUENG_SET(KLUENG_P.family = static_cast<Dialect>(v.choice))},
     {"gcode_system", Type::Choice, 0, 0, "A|B|C", KLUENG_SET(KLUENG_P.system = static_cast<GcodeSystem>(v.choice))},
     {"letters", Type::Letters, 0, 0, {}, KLUENG_SET(m.letters = std::string(v.text))},
-    {"program_number_max", Type::Whole, 1, 99999999, {}, KLUENG_SET(KLUENG_P.programNumberMax = static_cast<VI>(v.number))},
+    {"program_number_max",
+     Type::Whole,
+     1,
+     99999999,
+     {},
+     KLUENG_SET(KLUENG_P.programNumberMax = static_cast<VI>(v.number))},
     {"colon_program_number", Type::Flag, 0, 0, {}, KLUENG_SET(KLUENG_P.colonProgramNumber = v.number != 0.0)},
-    {"sequence_number_max", Type::Whole, 1, 99999, {}, KLUENG_SET(KLUENG_P.sequenceNumberMax = static_cast<VI>(v.number))},
+    {"sequence_number_max",
+     Type::Whole,
+     1,
+     99999,
+     {},
+     KLUENG_SET(KLUENG_P.sequenceNumberMax = static_cast<VI>(v.number))},
     {"decimals_mm", Type::Whole, 0, 4, {}, KLUENG_SET(KLUENG_P.decimalsMm = static_cast<VI>(v.number))},
     {"decimals_inch", Type::Whole, 0, 5, {}, KLUENG_SET(KLUENG_P.decimalsInch = static_cast<VI>(v.number))},
     {"max_abs_mm", Type::Real, 1, 99999999, {}, KLUENG_SET(KLUENG_P.maxAbsMm = v.number)},
@@ -57,16 +67,20 @@ const Key kKeys[] = {
     {"min_positive_inch", Type::Real, 0.000001, 1, {}, KLUENG_SET(KLUENG_P.minPositiveInch = v.number)},
     {"extra_decimals", Type::Choice, 0, 0, "error|round_with_warning",
      KLUENG_SET(KLUENG_P.extraDecimals = static_cast<ExtraDecimals>(v.choice))},
-    {"power_on_units", Type::Choice, 0, 0, "mm|inch", KLUENG_SET(KLUENG_P.powerOnUnits = static_cast<InputUnits>(v.choice))},
+    {"power_on_units", Type::Choice, 0, 0, "mm|inch",
+     KLUENG_SET(KLUENG_P.powerOnUnits = static_cast<InputUnits>(v.choice))},
     {"min_tool_digits", Type::Whole, 1, 4, {}, KLUENG_SET(KLUENG_P.minToolDigits = static_cast<VI>(v.number))},
     {"max_tool_station", Type::Whole, 0, 24, {}, KLUENG_SET(KLUENG_P.maxToolStation = static_cast<VI>(v.number))},
     {"max_offset", Type::Whole, 1, 99, {}, KLUENG_SET(KLUENG_P.maxOffset = static_cast<VI>(v.number))},
     {"tool_zero_keeps_turret", Type::Flag, 0, 0, {}, KLUENG_SET(KLUENG_P.toolZeroKeepsTurret = v.number != 0.0)},
-    {"dwell_p", Type::Choice, 0, 0, "ms|seconds_with_point", KLUENG_SET(KLUENG_P.dwellP = static_cast<DwellPUnit>(v.choice))},
-    {"bare_g28", Type::Choice, 0, 0, "error|no_motion|home_all_axes", KLUENG_SET(KLUENG_P.bareG28 = static_cast<BareG28>(v.choice))},
+    {"dwell_p", Type::Choice, 0, 0, "ms|seconds_with_point",
+     KLUENG_SET(KLUENG_P.dwellP = static_cast<DwellPUnit>(v.choice))},
+    {"bare_g28", Type::Choice, 0, 0, "error|no_motion|home_all_axes",
+     KLUENG_SET(KLUENG_P.bareG28 = static_cast<BareG28>(v.choice))},
     {"thread_under_css_is_alarm", Type::Flag, 0, 0, {}, KLUENG_SET(KLUENG_P.threadUnderCssIsAlarm = v.number != 0.0)},
     {"one_shots_with_motion", Type::Numbers, 0, 99, {}, KLUENG_SET(m.oneShots = v.numbers)},
-    {"cycle_form", Type::Choice, 0, 0, "two_block|one_block", KLUENG_SET(KLUENG_P.cycleForm = static_cast<CycleForm>(v.choice))},
+    {"cycle_form", Type::Choice, 0, 0, "two_block|one_block",
+     KLUENG_SET(KLUENG_P.cycleForm = static_cast<CycleForm>(v.choice))},
     {"unknown_m", Type::Choice, 0, 0, "error|warning", KLUENG_SET(KLUENG_P.unknownMIsWarning = v.choice == 1)},
     {"high_m", Type::Choice, 0, 0, "error|warning", KLUENG_SET(KLUENG_P.highMIsWarning = v.choice == 1)},
     {"blanks_in_words", Type::Flag, 0, 0, {}, KLUENG_SET(KLUENG_P.blanksInWords = v.number != 0.0)},
@@ -84,17 +98,42 @@ const Key kKeys[] = {
     {"thread_finish_inch", Type::Real, 0, 100, {}, KLUENG_SET(KLUENG_P.cycles.threadFinishInch = v.number)},
     {"thread_finish_mm", Type::Real, 0, 100, {}, KLUENG_SET(KLUENG_P.cycles.threadFinishMm = v.number)},
     {"thread_chamfer_leads", Type::Real, 0, 100, {}, KLUENG_SET(KLUENG_P.cycles.threadChamferLeads = v.number)},
-    {"drill_r", Type::Choice, 0, 0, "from_initial_level|plane", KLUENG_SET(KLUENG_P.cycles.drillR = static_cast<DrillR>(v.choice))},
-    {"profile_tail_beyond_start", Type::Flag, 0, 0, {}, KLUENG_SET(KLUENG_P.cycles.profileTailBeyondStart = v.number != 0.0)},
-    {"profile_first_block_needs_g00_g01", Type::Flag, 0, 0, {},
+    {"drill_r", Type::Choice, 0, 0, "from_initial_level|plane",
+     KLUENG_SET(KLUENG_P.cycles.drillR = static_cast<DrillR>(v.choice))},
+    {"profile_tail_beyond_start",
+     Type::Flag,
+     0,
+     0,
+     {},
+     KLUENG_SET(KLUENG_P.cycles.profileTailBeyondStart = v.number != 0.0)},
+    {"profile_first_block_needs_g00_g01",
+     Type::Flag,
+     0,
+     0,
+     {},
      KLUENG_SET(KLUENG_P.cycles.profileFirstBlockNeedsG00G01 = v.number != 0.0)},
     // Program flow.
     {"macro_b", Type::Flag, 0, 0, {}, KLUENG_SET(KLUENG_P.flow.macroB = v.number != 0.0)},
     {"packed_repeats", Type::Flag, 0, 0, {}, KLUENG_SET(KLUENG_P.flow.packedRepeats = v.number != 0.0)},
-    {"max_subprogram_nesting", Type::Whole, 0, 99, {}, KLUENG_SET(KLUENG_P.flow.maxSubprogramNesting = static_cast<VI>(v.number))},
-    {"max_macro_nesting", Type::Whole, 0, 99, {}, KLUENG_SET(KLUENG_P.flow.maxMacroNesting = static_cast<VI>(v.number))},
+    {"max_subprogram_nesting",
+     Type::Whole,
+     0,
+     99,
+     {},
+     KLUENG_SET(KLUENG_P.flow.maxSubprogramNesting = static_cast<VI>(v.number))},
+    {"max_macro_nesting",
+     Type::Whole,
+     0,
+     99,
+     {},
+     KLUENG_SET(KLUENG_P.flow.maxMacroNesting = static_cast<VI>(v.number))},
     {"programs_in_one_file", Type::Flag, 0, 0, {}, KLUENG_SET(KLUENG_P.flow.programsInOneFile = v.number != 0.0)},
-    {"dwell_before_corner_move", Type::Flag, 0, 0, {}, KLUENG_SET(KLUENG_P.flow.dwellBeforeCornerMove = v.number != 0.0)},
+    {"dwell_before_corner_move",
+     Type::Flag,
+     0,
+     0,
+     {},
+     KLUENG_SET(KLUENG_P.flow.dwellBeforeCornerMove = v.number != 0.0)},
     {"chamfer_with_i_or_k", Type::Flag, 0, 0, {}, KLUENG_SET(KLUENG_P.flow.chamferWithIOrK = v.number != 0.0)},
 };
 #undef KLUENG_SET
@@ -117,7 +156,8 @@ int columnOf(std::string_view line, std::string_view part) {
   return column;
 }
 int lengthOf(std::string_view s) {
-  return static_cast<int>(std::count_if(s.begin(), s.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
+  return static_cast<int>(
+      std::count_if(s.begin(), s.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
 }
 
 std::optional<double> number(std::string_view s) {
@@ -144,16 +184,17 @@ std::pair<std::string, std::string> expected(const Key& k) {
               "จำนวนเต็มตั้งแต่ " + num(k.min) + " ถึง " + num(k.max)};
     case Type::Real:
       return {"a number from " + num(k.min) + " to " + num(k.max), "ตัวเลขตั้งแต่ " + num(k.min) + " ถึง " + num(k.max)};
-    case Type::Flag: return {"0 or 1", "0 หรือ 1"};
+    case Type::Flag:
+      return {"0 or 1", "0 หรือ 1"};
     case Type::Choice: {
       std::string list(k.choices);
       std::replace(list.begin(), list.end(), '|', ' ');
       return {"one of: " + list, "ค่าใดค่าหนึ่งต่อไปนี้: " + list};
     }
-    case Type::Text: return {"a text", "ข้อความ"};
+    case Type::Text:
+      return {"a text", "ข้อความ"};
     case Type::Numbers:
-      return {"whole numbers from 0 to 99 separated by blanks, or none",
-              "จำนวนเต็ม 0 ถึง 99 คั่นด้วยช่องว่าง หรือ none"};
+      return {"whole numbers from 0 to 99 separated by blanks, or none", "จำนวนเต็ม 0 ถึง 99 คั่นด้วยช่องว่าง หรือ none"};
     case Type::Letters:
       return {"capital letters A to Z, each once", "ตัวอักษรพิมพ์ใหญ่ A ถึง Z ตัวละครั้ง"};
   }
@@ -214,7 +255,8 @@ std::optional<Value> readValue(const Key& k, std::string_view text) {
   return std::nullopt;
 }
 
-Diagnostic machineFileDiagnostic(Severity s, const char* code, int line, int column, int length, std::vector<std::string> args) {
+Diagnostic machineFileDiagnostic(Severity s, const char* code, int line, int column, int length,
+                                 std::vector<std::string> args) {
   return Diagnostic{s, code, {line, column, length, 0}, std::move(args)};
 }
 
@@ -244,7 +286,8 @@ MachineFileRead parseMachineFile(std::string_view text, const std::string& fileN
     const std::size_t eq = content.find('=');
     const std::string_view key = eq == std::string_view::npos ? std::string_view() : trim(content.substr(0, eq));
     if (key.empty()) {
-      diags.push_back(machineFileDiagnostic(Severity::Error, core::codes::kNotKeyValue, lineNumber, columnOf(line, content), lengthOf(content), {fileName}));
+      diags.push_back(machineFileDiagnostic(Severity::Error, core::codes::kNotKeyValue, lineNumber,
+                                            columnOf(line, content), lengthOf(content), {fileName}));
     } else {
       lines.push_back({lineNumber, line, key, trim(content.substr(eq + 1))});
     }
@@ -260,8 +303,9 @@ MachineFileRead parseMachineFile(std::string_view text, const std::string& fileN
     const MachineProfile* base = detail::loadedMachine(l.value);
     if (!base) {
       const std::string known = detail::loadedMachineIds();
-      diags.push_back(machineFileDiagnostic(Severity::Error, core::codes::kMachineUnknownBase, l.number, columnOf(l.line, l.value),
-                         std::max(1, lengthOf(l.value)), {fileName, std::string(l.value), known}));
+      diags.push_back(machineFileDiagnostic(Severity::Error, core::codes::kMachineUnknownBase, l.number,
+                                            columnOf(l.line, l.value), std::max(1, lengthOf(l.value)),
+                                            {fileName, std::string(l.value), known}));
       continue;
     }
     m.profile = *base;
@@ -287,20 +331,22 @@ MachineFileRead parseMachineFile(std::string_view text, const std::string& fileN
     const auto value = readValue(*key, l.value);
     if (!value) {
       const auto [en, th] = expected(*key);
-      diags.push_back(machineFileDiagnostic(Severity::Error, core::codes::kMachineValueBad, l.number, valueColumn, std::max(1, lengthOf(l.value)),
-                         {fileName, std::string(l.key), std::string(l.value), en, th}));
+      diags.push_back(machineFileDiagnostic(Severity::Error, core::codes::kMachineValueBad, l.number, valueColumn,
+                                            std::max(1, lengthOf(l.value)),
+                                            {fileName, std::string(l.key), std::string(l.value), en, th}));
       continue;
     }
     if (lineOfKey.count(key->name))
-      diags.push_back(machineFileDiagnostic(Severity::Warning, core::codes::kParameterTwice, l.number, columnOf(l.line, l.key), lengthOf(l.key),
-                         {fileName, std::string(l.key)}));
+      diags.push_back(machineFileDiagnostic(Severity::Warning, core::codes::kParameterTwice, l.number,
+                                            columnOf(l.line, l.key), lengthOf(l.key), {fileName, std::string(l.key)}));
     lineOfKey[key->name] = l.number;
     key->set(m, *value);
   }
   if (!hasBase)
     for (const Key& k : kKeys)
       if (!lineOfKey.count(k.name) && !optionalKey(k.name))
-        diags.push_back(machineFileDiagnostic(Severity::Error, core::codes::kMachineKeyMissing, 0, 0, 0, {fileName, std::string(k.name)}));
+        diags.push_back(machineFileDiagnostic(Severity::Error, core::codes::kMachineKeyMissing, 0, 0, 0,
+                                              {fileName, std::string(k.name)}));
   if (hasBase && !lineOfKey.count("id"))
     diags.push_back(machineFileDiagnostic(Severity::Error, core::codes::kMachineKeyMissing, 0, 0, 0, {fileName, "id"}));
 

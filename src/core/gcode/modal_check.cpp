@@ -38,14 +38,28 @@ bool endsTheWalk(CodeAction a) {
 // point, G50 X/Z renames the position, a corner moves the next move's start).
 bool losesPosition(CodeAction a) {
   switch (a) {
-    case CodeAction::BoxTurning: case CodeAction::BoxThreading: case CodeAction::BoxFacing:
-    case CodeAction::ReferenceCheck: case CodeAction::ReferenceReturn: case CodeAction::SecondReferenceReturn:
+    case CodeAction::BoxTurning:
+    case CodeAction::BoxThreading:
+    case CodeAction::BoxFacing:
+    case CodeAction::ReferenceCheck:
+    case CodeAction::ReferenceReturn:
+    case CodeAction::SecondReferenceReturn:
     case CodeAction::ReturnFromReference:
-    case CodeAction::CoordinateSet: case CodeAction::MachineCoordinates: case CodeAction::WorkOffset:
-    case CodeAction::Finishing: case CodeAction::TurnRoughing: case CodeAction::FaceRoughing:
-    case CodeAction::PatternRepeating: case CodeAction::FacePecking: case CodeAction::Grooving:
-    case CodeAction::ThreadCutting: case CodeAction::Drilling: case CodeAction::SpotDrilling:
-    case CodeAction::PeckDrilling: case CodeAction::Inch: case CodeAction::Metric:
+    case CodeAction::CoordinateSet:
+    case CodeAction::MachineCoordinates:
+    case CodeAction::WorkOffset:
+    case CodeAction::Finishing:
+    case CodeAction::TurnRoughing:
+    case CodeAction::FaceRoughing:
+    case CodeAction::PatternRepeating:
+    case CodeAction::FacePecking:
+    case CodeAction::Grooving:
+    case CodeAction::ThreadCutting:
+    case CodeAction::Drilling:
+    case CodeAction::SpotDrilling:
+    case CodeAction::PeckDrilling:
+    case CodeAction::Inch:
+    case CodeAction::Metric:
       return true;
     default:
       return false;
@@ -71,15 +85,32 @@ class ModalWalk {
         continue;
       }
       switch (word.letter) {
-        case 'X': if (!x) x = &word; continue;
-        case 'Z': if (!z) z = &word; continue;
-        case 'U': if (!u) u = &word; continue;
-        case 'W': if (!w) w = &word; continue;
-        case 'F': feedSet_ = true; continue;
-        case 'S': hasS = true; continue;
-        case 'T': position = false; continue;
-        case 'G': case 'M': break;
-        default: continue;
+        case 'X':
+          if (!x) x = &word;
+          continue;
+        case 'Z':
+          if (!z) z = &word;
+          continue;
+        case 'U':
+          if (!u) u = &word;
+          continue;
+        case 'W':
+          if (!w) w = &word;
+          continue;
+        case 'F':
+          feedSet_ = true;
+          continue;
+        case 'S':
+          hasS = true;
+          continue;
+        case 'T':
+          position = false;
+          continue;
+        case 'G':
+        case 'M':
+          break;
+        default:
+          continue;
       }
       const CodeInfo* info = word.hasDecimalPoint ? nullptr : findCode(word.letter, word.code(), options_.dialect);
       if (!info) continue;
@@ -93,16 +124,31 @@ class ModalWalk {
         motionWord = &word;
       }
       switch (a) {
-        case CodeAction::ConstantSurface: g96 = &word; break;
-        case CodeAction::CoordinateSet: coordinateSet = true; [[fallthrough]];
-        case CodeAction::Dwell: case CodeAction::ReferenceCheck: case CodeAction::ReferenceReturn:
-        case CodeAction::SecondReferenceReturn: case CodeAction::ReturnFromReference: case CodeAction::MachineCoordinates:
+        case CodeAction::ConstantSurface:
+          g96 = &word;
+          break;
+        case CodeAction::CoordinateSet:
+          coordinateSet = true;
+          [[fallthrough]];
+        case CodeAction::Dwell:
+        case CodeAction::ReferenceCheck:
+        case CodeAction::ReferenceReturn:
+        case CodeAction::SecondReferenceReturn:
+        case CodeAction::ReturnFromReference:
+        case CodeAction::MachineCoordinates:
           axisWordsNotAMove = true;  // X/Z/U/W here are a time, a point or a name, not a feed move
           break;
-        case CodeAction::Inch: inch_ = true; break;
-        case CodeAction::Metric: inch_ = false; break;
-        case CodeAction::CycleCancel: drilling_ = false; break;
-        default: break;
+        case CodeAction::Inch:
+          inch_ = true;
+          break;
+        case CodeAction::Metric:
+          inch_ = false;
+          break;
+        case CodeAction::CycleCancel:
+          drilling_ = false;
+          break;
+        default:
+          break;
       }
       if (a >= CodeAction::Finishing && a <= CodeAction::PeckDrilling) cycle = true;
       if (a >= CodeAction::Drilling && a <= CodeAction::PeckDrilling) drilling_ = true;
@@ -113,22 +159,32 @@ class ModalWalk {
       motion_ = *motion;
       drilling_ = false;  // a group-01 code ends a drilling cycle
     }
-    const bool boxCycle = motion_ == CodeAction::BoxTurning || motion_ == CodeAction::BoxThreading ||
-                          motion_ == CodeAction::BoxFacing;
+    const bool boxCycle =
+        motion_ == CodeAction::BoxTurning || motion_ == CodeAction::BoxThreading || motion_ == CodeAction::BoxFacing;
     if (boxCycle || drilling_) cycle = true;
 
     const bool moves = (x || z || u || w) && !cycle && !axisWordsNotAMove;
     if (moves && isFeedMotion(motion_) && !feedSet_ && !b.blockSkip) {
-      report(codes::kFeedMoveWithoutFeed, motionWord ? *motionWord : *(x ? x : z ? z : u ? u : w),
+      report(codes::kFeedMoveWithoutFeed,
+             motionWord ? *motionWord
+                        : *(x   ? x
+                            : z ? z
+                            : u ? u
+                                : w),
              {motionWord ? motionWord->text() : codeName(motion_)});
       feedSet_ = true;  // the run stops at the first: one warning, not one per block after it
     }
     // A feed given in this block counts for its own move (F is read before the motion).
 
     // Where the block ends, in program coordinates (X as a diameter).
-    const std::optional<double> toX = x ? std::optional<double>(x->value) : u ? (x_ ? std::optional<double>(*x_ + u->value) : std::nullopt) : x_;
-    const std::optional<double> toZ = z ? std::optional<double>(z->value) : w ? (z_ ? std::optional<double>(*z_ + w->value) : std::nullopt) : z_;
-    if (moves && (motion_ == CodeAction::ArcCw || motion_ == CodeAction::ArcCcw) && !b.blockSkip) arcRadius(b, toX, toZ);
+    const std::optional<double> toX = x   ? std::optional<double>(x->value)
+                                      : u ? (x_ ? std::optional<double>(*x_ + u->value) : std::nullopt)
+                                          : x_;
+    const std::optional<double> toZ = z   ? std::optional<double>(z->value)
+                                      : w ? (z_ ? std::optional<double>(*z_ + w->value) : std::nullopt)
+                                          : z_;
+    if (moves && (motion_ == CodeAction::ArcCw || motion_ == CodeAction::ArcCcw) && !b.blockSkip)
+      arcRadius(b, toX, toZ);
     if (moves) {
       x_ = toX;
       z_ = toZ;
@@ -165,7 +221,7 @@ class ModalWalk {
   bool feedSet_ = false;
   bool clamped_ = false;
   bool inch_ = false;
-  bool drilling_ = false;  // a drilling cycle is modal until G80 or a group-01 code
+  bool drilling_ = false;        // a drilling cycle is modal until G80 or a group-01 code
   std::optional<double> x_, z_;  // unknown until both are given absolutely
 };
 

@@ -30,10 +30,14 @@ bool isBlank(unsigned char c) { return c == ' ' || c == '\t' || c == '\f' || c =
 std::size_t utf8SequenceLength(std::string_view s, std::size_t i) {
   const auto c = static_cast<unsigned char>(s[i]);
   std::size_t n = 1;
-  if (c >= 0xC2 && c <= 0xDF) n = 2;
-  else if (c >= 0xE0 && c <= 0xEF) n = 3;
-  else if (c >= 0xF0 && c <= 0xF4) n = 4;
-  else return 1;
+  if (c >= 0xC2 && c <= 0xDF)
+    n = 2;
+  else if (c >= 0xE0 && c <= 0xEF)
+    n = 3;
+  else if (c >= 0xF0 && c <= 0xF4)
+    n = 4;
+  else
+    return 1;
   if (i + n > s.size()) return 1;
   for (std::size_t k = 1; k < n; ++k)
     if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return 1;
@@ -111,7 +115,7 @@ class LineParser {
         }
         ++i;
         const std::size_t before = words_.size();
-        col = lexWord(i, col + 1) ;
+        col = lexWord(i, col + 1);
         if (words_.size() > before) {
           Word& w = words_.back();
           w.comma = true;
@@ -125,7 +129,8 @@ class LineParser {
         std::string written(line.substr(i, e - i)), meant = written;
         for (std::size_t k = 1; k < meant.size(); ++k)
           if (meant[k] == 'O' || meant[k] == 'o') meant[k] = '0';
-        for (std::string* t : {&written, &meant}) t->front() = static_cast<char>(std::toupper(static_cast<unsigned char>(t->front())));
+        for (std::string* t : {&written, &meant})
+          t->front() = static_cast<char>(std::toupper(static_cast<unsigned char>(t->front())));
         report(codes::kLetterOForZero, col, static_cast<int>(e - i), {written, meant});
         col += static_cast<int>(e - i);
         i = e;
@@ -270,9 +275,12 @@ class LineParser {
     bool o = false, digit = false;
     while (e < line_.size()) {
       const auto d = static_cast<unsigned char>(line_[e]);
-      if (d == 'O' || d == 'o') o = true;
-      else if (isDigit(d)) digit = true;
-      else if (d != '.') break;
+      if (d == 'O' || d == 'o')
+        o = true;
+      else if (isDigit(d))
+        digit = true;
+      else if (d != '.')
+        break;
       ++e;
     }
     if (!o || !digit) return i;
@@ -297,17 +305,19 @@ class LineParser {
   // them: number is a view of line_ when it has no blanks, else of scratch_.
   struct NumberText {
     std::string_view number;
-    std::size_t end = 0;        // in line_, after the number
-    bool blanks = false;        // blanks between the letter and the number, or after a sign
-    bool splitDigits = false;   // blanks between two groups of digits ("X20 30")
+    std::size_t end = 0;       // in line_, after the number
+    bool blanks = false;       // blanks between the letter and the number, or after a sign
+    bool splitDigits = false;  // blanks between two groups of digits ("X20 30")
   };
   NumberText gatherNumber(std::size_t i) {
     NumberText t;
     const std::size_t n = line_.size();
     std::size_t k = i;
     while (k < n && isBlank(static_cast<unsigned char>(line_[k]))) ++k;
-    if (k > i && k < n && isNumberChar(static_cast<unsigned char>(line_[k]))) t.blanks = true;
-    else k = i;  // a lone letter: the blanks are not part of it
+    if (k > i && k < n && isNumberChar(static_cast<unsigned char>(line_[k])))
+      t.blanks = true;
+    else
+      k = i;  // a lone letter: the blanks are not part of it
     const std::size_t start = k;
     std::size_t e = k;
     while (e < n && isNumberChar(static_cast<unsigned char>(line_[e]))) ++e;
@@ -329,8 +339,10 @@ class LineParser {
     scratch_.assign(line_.substr(start, e - start));
     std::size_t b;
     while ((b = continues(e, scratch_.size() == 1 && (scratch_[0] == '+' || scratch_[0] == '-'))) != 0) {
-      if (scratch_.size() == 1 && (scratch_[0] == '+' || scratch_[0] == '-')) t.blanks = true;
-      else t.splitDigits = true;
+      if (scratch_.size() == 1 && (scratch_[0] == '+' || scratch_[0] == '-'))
+        t.blanks = true;
+      else
+        t.splitDigits = true;
       e = b;
       while (e < n && isNumberChar(static_cast<unsigned char>(line_[e]))) scratch_ += line_[e++];
     }
@@ -355,14 +367,16 @@ class LineParser {
     if (k < n && (number[k] == '+' || number[k] == '-')) ++k;
     const std::size_t intStart = k;
     std::uint64_t mantissa = 0;  // exact while at most 15 digits (parseLongUnsigned beyond)
-    while (k < n && isDigit(static_cast<unsigned char>(number[k]))) mantissa = mantissa * 10 + static_cast<std::uint64_t>(number[k++] - '0');
+    while (k < n && isDigit(static_cast<unsigned char>(number[k])))
+      mantissa = mantissa * 10 + static_cast<std::uint64_t>(number[k++] - '0');
     const std::size_t intDigits = k - intStart;
     bool point = false;
     std::size_t fracDigits = 0;
     if (k < n && number[k] == '.') {
       point = true;
       const std::size_t fracStart = ++k;
-      while (k < n && isDigit(static_cast<unsigned char>(number[k]))) mantissa = mantissa * 10 + static_cast<std::uint64_t>(number[k++] - '0');
+      while (k < n && isDigit(static_cast<unsigned char>(number[k])))
+        mantissa = mantissa * 10 + static_cast<std::uint64_t>(number[k++] - '0');
       fracDigits = k - fracStart;
     }
     i = text.end;
@@ -372,7 +386,8 @@ class LineParser {
       while (e < line_.size() && isDigit(static_cast<unsigned char>(line_[e]))) ++e;
       std::string written(line_.substr(start, e - start));
       written.front() = letter;
-      const std::string meant = std::string(1, letter) + std::string(number) + "." + std::string(line_.substr(i + 1, e - i - 1));
+      const std::string meant =
+          std::string(1, letter) + std::string(number) + "." + std::string(line_.substr(i + 1, e - i - 1));
       report(codes::kCommaForPoint, col, static_cast<int>(e - start), {written, meant});
       i = e;
       return col + static_cast<int>(e - start);
@@ -390,7 +405,8 @@ class LineParser {
     }
     if (text.splitDigits)
       report(codes::kBlanksInNumber, col, length,
-             {std::string(line_.substr(start, i - start)), std::string(1, letter) + std::string(number)}, Severity::Warning);
+             {std::string(line_.substr(start, i - start)), std::string(1, letter) + std::string(number)},
+             Severity::Warning);
 
     Word& w = words_.emplace_back();
     w.letter = letter;
@@ -554,7 +570,9 @@ class LineParser {
         return -1;
       }
       Expression e;
-      e.code.push_back(ExprToken{ExprOp::Constant, static_cast<double>(std::stoll(std::string(line_.substr(s0, std::min<std::size_t>(i - s0, 9)))))});
+      e.code.push_back(
+          ExprToken{ExprOp::Constant,
+                    static_cast<double>(std::stoll(std::string(line_.substr(s0, std::min<std::size_t>(i - s0, 9)))))});
       e.range = SourceRange{lineNumber_, col, static_cast<int>(i - s0), file_};
       col += static_cast<int>(i - s0);
       program_.expressions.push_back(std::move(e));
@@ -620,8 +638,10 @@ class LineParser {
           const char ch = line_[i];
           ++i;
           ++col;
-          if (ch == '[') ++depth;
-          else if (ch == ']' && --depth == 0) break;
+          if (ch == '[')
+            ++depth;
+          else if (ch == ']' && --depth == 0)
+            break;
         }
       }
     } else if (keyword("END")) {
@@ -634,7 +654,8 @@ class LineParser {
     if (i < line_.size() && line_[i] != '(' && line_[i] != ';') {
       std::size_t e = i;
       while (e < line_.size() && line_[e] != '(' && line_[e] != ';') ++e;
-      report(codes::kStatementNotAlone, col, static_cast<int>(e - i), {std::string(line_.substr(i, std::min<std::size_t>(e - i, 20)))});
+      report(codes::kStatementNotAlone, col, static_cast<int>(e - i),
+             {std::string(line_.substr(i, std::min<std::size_t>(e - i, 20)))});
       col += static_cast<int>(e - i);
       i = e;
     }
@@ -676,8 +697,10 @@ Program parse(std::string_view text, int firstLine, int file) {
     const char* next = lineEnd < end ? lineEnd + 1 : end;
     // CRLF, and CR CR LF (a CRLF file converted once more), end one line.
     if (lineEnd < end && *lineEnd == '\r') {
-      if (next < end && *next == '\n') ++next;
-      else if (next + 1 < end && next[0] == '\r' && next[1] == '\n') next += 2;
+      if (next < end && *next == '\n')
+        ++next;
+      else if (next + 1 < end && next[0] == '\r' && next[1] == '\n')
+        next += 2;
     }
     parser.parseLine(std::string_view(pos, static_cast<std::size_t>(lineEnd - pos)), lineNumber);
     ++program.lineCount;

@@ -37,8 +37,8 @@ bool looksLikeGcode(std::string_view firstLine) {
   if (s.size() < 2) return false;
   std::string_view rest = s.substr(1);
   if (rest.front() == '-' || rest.front() == '+') rest.remove_prefix(1);
-  return !rest.empty() && (isAsciiDigit(rest.front()) ||
-                           (rest.front() == '.' && rest.size() > 1 && isAsciiDigit(rest[1])));
+  return !rest.empty() &&
+         (isAsciiDigit(rest.front()) || (rest.front() == '.' && rest.size() > 1 && isAsciiDigit(rest[1])));
 }
 
 struct SizeCodes {
@@ -65,9 +65,8 @@ bool isUnitDigitSize(std::string_view line, bool allowBore) {
 
 // Reads "150" (unit digit 1 = mm, then 50) from header line 4 or 5; the caller
 // has checked the form with isUnitDigitSize.
-void parseStockSize(std::string_view line, int lineNumber, const SizeCodes& codes,
-                    const std::string& fileName, double& value, LengthUnit& unit,
-                    std::vector<Diagnostic>& diags) {
+void parseStockSize(std::string_view line, int lineNumber, const SizeCodes& codes, const std::string& fileName,
+                    double& value, LengthUnit& unit, std::vector<Diagnostic>& diags) {
   const std::string_view field = detail::trim(line);
   if (field.empty()) {
     diags.push_back(makeDiagnostic(Severity::Error, codes.missing, lineNumber, 1, 0, {fileName}));
@@ -80,15 +79,15 @@ void parseStockSize(std::string_view line, int lineNumber, const SizeCodes& code
     const auto lead = static_cast<unsigned char>(field.front());
     const std::size_t bytesOfFirst = lead < 0xC0 ? 1 : lead < 0xE0 ? 2 : lead < 0xF0 ? 3 : 4;
     const std::string_view first = field.substr(0, bytesOfFirst);
-    diags.push_back(makeDiagnostic(Severity::Error, codes.badUnit, lineNumber, fieldColumn, 1,
-                                   {fileName, std::string(first)}));
+    diags.push_back(
+        makeDiagnostic(Severity::Error, codes.badUnit, lineNumber, fieldColumn, 1, {fileName, std::string(first)}));
     return;
   }
   const std::string_view number = field.substr(1);
   const std::optional<double> parsed = detail::parseNumber(number);
   if (!parsed) {
-    diags.push_back(makeDiagnostic(Severity::Error, codes.badNumber, lineNumber, fieldColumn + 1,
-                                   utf8Length(number), {fileName, std::string(number)}));
+    diags.push_back(makeDiagnostic(Severity::Error, codes.badNumber, lineNumber, fieldColumn + 1, utf8Length(number),
+                                   {fileName, std::string(number)}));
     return;
   }
   if (*parsed <= 0.0) {
@@ -113,11 +112,13 @@ void parseDiameterLine(std::string_view line, const std::string& fileName, JobHe
   const std::size_t x = line.find_first_of("xX");
   h.bore = 0.0;
   if (x == std::string_view::npos) {
-    parseStockSize(line, 4, {codes::kDiameterMissing, codes::kDiameterUnitDigit, codes::kDiameterNotNumber}, fileName, h.diameter, h.diameterUnit, diags);
+    parseStockSize(line, 4, {codes::kDiameterMissing, codes::kDiameterUnitDigit, codes::kDiameterNotNumber}, fileName,
+                   h.diameter, h.diameterUnit, diags);
     return;
   }
   const std::size_t before = diags.size();
-  parseStockSize(line.substr(0, x), 4, {codes::kDiameterMissing, codes::kDiameterUnitDigit, codes::kDiameterNotNumber}, fileName, h.diameter, h.diameterUnit, diags);
+  parseStockSize(line.substr(0, x), 4, {codes::kDiameterMissing, codes::kDiameterUnitDigit, codes::kDiameterNotNumber},
+                 fileName, h.diameter, h.diameterUnit, diags);
   const std::string_view boreText = detail::trim(line.substr(x + 1));
   const double bore = detail::parseNumber(boreText).value_or(0.0);
   if (diags.size() != before) return;
@@ -167,7 +168,6 @@ void hintBrokenHeader(const std::vector<std::string_view>& lines, const std::str
     return;
   }
 }
-
 
 // ---- the machine a program names (issue 27) ----
 
@@ -241,8 +241,8 @@ std::optional<MachineLineAt> findMachineLine(const std::vector<std::string_view>
     if (!id) continue;
     const std::size_t offset = static_cast<std::size_t>(comment->text.data() - lines[i].data()) + id->second;
     MachineLineAt at;
-    at.named = NamedMachine{std::string(id->first), static_cast<int>(i) + 1,
-                            utf8Length(lines[i].substr(0, offset)) + 1};
+    at.named =
+        NamedMachine{std::string(id->first), static_cast<int>(i) + 1, utf8Length(lines[i].substr(0, offset)) + 1};
     at.lineIndex = i;
     at.comment = *comment;
     return at;
@@ -301,8 +301,7 @@ std::string withMachineNamed(std::string_view gcode, std::string_view id) {
   return out;
 }
 
-namespace {
-}  // namespace
+namespace {}  // namespace
 
 std::string stockSizeText(const JobHeader& h) {
   const bool sameUnit = h.diameterUnit == h.lengthUnit;
@@ -328,8 +327,8 @@ ReadResult<ProgramFile> parseProgramFile(std::string_view bytes, const JobHeader
   // UTF-16 text (Notepad's "Unicode") is text, not binary: read it as UTF-8.
   std::string fromUtf16;
   std::optional<detail::BytePosition> nul = detail::findNulByte(bytes);
-  if (bytes.size() >= 2 && (nul || static_cast<unsigned char>(bytes[0]) == 0xFF ||
-                            static_cast<unsigned char>(bytes[0]) == 0xFE)) {
+  if (bytes.size() >= 2 &&
+      (nul || static_cast<unsigned char>(bytes[0]) == 0xFF || static_cast<unsigned char>(bytes[0]) == 0xFE)) {
     if (std::optional<std::string> utf8 = utf16ToUtf8(bytes)) {
       fromUtf16 = std::move(*utf8);
       bytes = fromUtf16;
@@ -362,8 +361,7 @@ ReadResult<ProgramFile> parseProgramFile(std::string_view bytes, const JobHeader
     const int chars = utf8Length(lines[i]);
     if (chars <= detail::kMaxLineChars) continue;
     diags.push_back(makeDiagnostic(Severity::Error, codes::kLineTooLong, static_cast<int>(i) + 1, 1, 0,
-                                   {fileName, std::to_string(chars),
-                                    std::to_string(detail::kMaxLineChars)}));
+                                   {fileName, std::to_string(chars), std::to_string(detail::kMaxLineChars)}));
     lines[i] = std::string_view();
   }
 
@@ -395,15 +393,16 @@ ReadResult<ProgramFile> parseProgramFile(std::string_view bytes, const JobHeader
                                      {fileName, std::to_string(last)}));
     }
     parseDiameterLine(lines[3], fileName, file.header, diags);
-    parseStockSize(lines[4], 5, {codes::kLengthMissing, codes::kLengthUnitDigit, codes::kLengthNotNumber}, fileName, file.header.length,
-                   file.header.lengthUnit, diags);
+    parseStockSize(lines[4], 5, {codes::kLengthMissing, codes::kLengthUnitDigit, codes::kLengthNotNumber}, fileName,
+                   file.header.length, file.header.lengthUnit, diags);
   }
 
   // The G-code part, with every line end normalised to '\n'. With LF line
   // ends and no blanked line the text after the header is already that.
   std::string& code = file.gcode;
-  const bool plainLf = text.find('\r') == std::string::npos &&
-                       std::none_of(diags.begin(), diags.end(), [](const Diagnostic& d) { return d.code == codes::kLineTooLong; });
+  const bool plainLf =
+      text.find('\r') == std::string::npos &&
+      std::none_of(diags.begin(), diags.end(), [](const Diagnostic& d) { return d.code == codes::kLineTooLong; });
   const auto nameMachine = [&file] {
     // The machine is the program's own: never a default's.
     file.header.machine.clear();
@@ -449,8 +448,7 @@ std::string formatProgramFile(const ProgramFile& file) {
   for (const std::string& line :
        {headerText(h.project), headerText(h.part), headerText(h.material),
         formatStockSize(h.diameter, h.diameterUnit) + (h.bore > 0.0 ? "x" + detail::formatNumber(h.bore) : ""),
-        formatStockSize(h.length, h.lengthUnit),
-        headerText(h.programmer)}) {
+        formatStockSize(h.length, h.lengthUnit), headerText(h.programmer)}) {
     out += line;
     out += '\n';
   }
@@ -466,7 +464,8 @@ bool writeTextFileAtomic(const std::string& path, std::string_view text, std::st
 
 bool isProgramFileName(std::string_view path) {
   std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return ext == ".txt" || ext == ".nc" || ext == ".cnc" || ext == ".tap" || ext == ".ngc" || ext == ".gcode";
 }
 

@@ -59,7 +59,8 @@ GradedProgram gradeProgram(const std::string& path, const JobInput& base) {
     CutOptions options;
     options.checkpointBudgetBytes = 0;  // one run forward
     // A guessed tool that touches gives way to another of its kind that fits (issue 26).
-    const GuessFit fit = fitGuessedTools(timeline, job->file()->header, job->setup(), io::shippedToolLibrary(), options);
+    const GuessFit fit =
+        fitGuessedTools(timeline, job->file()->header, job->setup(), io::shippedToolLibrary(), options);
     const CutSimulator& sim = *fit.cut;
     if (sim.alarm()) {
       g.alarm = place(*sim.alarm());
@@ -75,7 +76,8 @@ GradedProgram gradeProgram(const std::string& path, const JobInput& base) {
 }
 
 std::vector<ClassRow> gradeClass(const std::string& folder, const std::string& referencePath, const Stock& reference,
-                                 const JobInput& base, double tolerance, const std::function<void(int, int, const std::string&)>& progress) {
+                                 const JobInput& base, double tolerance,
+                                 const std::function<void(int, int, const std::string&)>& progress) {
   GradeAgainst against;
   against.referencePath = referencePath;
   against.reference = &reference;
@@ -83,8 +85,8 @@ std::vector<ClassRow> gradeClass(const std::string& folder, const std::string& r
   return gradeClass(folder, against, base, progress);
 }
 
-std::vector<ClassRow> gradeClass(const std::string& folder, const GradeAgainst& against,
-                                 const JobInput& base, const std::function<void(int, int, const std::string&)>& progress) {
+std::vector<ClassRow> gradeClass(const std::string& folder, const GradeAgainst& against, const JobInput& base,
+                                 const std::function<void(int, int, const std::string&)>& progress) {
   const double tolerance = against.tolerance;
   std::error_code ec;
   std::vector<fs::path> files;
@@ -136,21 +138,23 @@ std::string classCsv(const std::vector<ClassRow>& rows, bool drawing) {
   std::string out = "file,result,errors,first_error,alarm,cycle_time_s,leftover_mm,leftover_z,gouge_mm,gouge_z";
   out += drawing ? ",feature,nominal_mm,tolerance,lower_mm,upper_mm,measured_mm,verdict\n" : "\n";
   for (const ClassRow& r : rows) {
-    std::string line = csvField(r.file) + "," + (r.pass ? "pass" : "fail") + "," + std::to_string(r.graded.errors) + "," +
-           csvField(r.graded.firstError) + "," + csvField(r.graded.alarm) + "," +
-           (r.graded.errors == 0 ? gcode::formatFixed(r.graded.cycleTime, 1) : "") + "," +
-           (r.compared ? gcode::formatFixed(r.deviation.leftover, 3) + "," + gcode::formatFixed(r.deviation.leftoverZ, 2) + "," +
-                             gcode::formatFixed(r.deviation.gouge, 3) + "," + gcode::formatFixed(r.deviation.gougeZ, 2)
-                       : ",,,");
+    std::string line =
+        csvField(r.file) + "," + (r.pass ? "pass" : "fail") + "," + std::to_string(r.graded.errors) + "," +
+        csvField(r.graded.firstError) + "," + csvField(r.graded.alarm) + "," +
+        (r.graded.errors == 0 ? gcode::formatFixed(r.graded.cycleTime, 1) : "") + "," +
+        (r.compared
+             ? gcode::formatFixed(r.deviation.leftover, 3) + "," + gcode::formatFixed(r.deviation.leftoverZ, 2) + "," +
+                   gcode::formatFixed(r.deviation.gouge, 3) + "," + gcode::formatFixed(r.deviation.gougeZ, 2)
+             : ",,,");
     if (!drawing) {
       out += line + "\n";
       continue;
     }
     for (const InspectedDimension& d : r.inspection)
-      out += line + "," + csvField(dimensionLabel(d.drawn, Lang::En)) + "," + gcode::formatFixed(d.drawn.nominal, 3) + "," +
-             csvField(toleranceLabel(d.drawn.tolerance)) + "," + gcode::formatFixed(d.lowerLimit(), 3) + "," +
-             gcode::formatFixed(d.upperLimit(), 3) + "," + (d.measured ? gcode::formatFixed(*d.measured, 3) : "") + "," +
-             verdictName(d.verdict, Lang::En) + "\n";
+      out += line + "," + csvField(dimensionLabel(d.drawn, Lang::En)) + "," + gcode::formatFixed(d.drawn.nominal, 3) +
+             "," + csvField(toleranceLabel(d.drawn.tolerance)) + "," + gcode::formatFixed(d.lowerLimit(), 3) + "," +
+             gcode::formatFixed(d.upperLimit(), 3) + "," + (d.measured ? gcode::formatFixed(*d.measured, 3) : "") +
+             "," + verdictName(d.verdict, Lang::En) + "\n";
     if (r.inspection.empty()) out += line + ",,,,,,,\n";
   }
   return out;

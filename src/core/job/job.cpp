@@ -50,8 +50,10 @@ std::vector<Diagnostic> resolveJobStock(io::ProgramFile& file, const gcode::Prog
   // The run the tools were read from, when there was one: one recording for both.
   const machine::StockInference inferred =
       recorded ? machine::inferStock(program, *recorded, setup) : machine::inferStock(program, setup, run);
-  if (inferred.found) inferred.applyTo(h);
-  else h.takeStockFrom(io::JobHeader{});
+  if (inferred.found)
+    inferred.applyTo(h);
+  else
+    h.takeStockFrom(io::JobHeader{});
   return machine::stockNotes(h, &inferred, file.gcode, file.gcodeFirstLine);
 }
 
@@ -80,7 +82,9 @@ bool byPlace(const Diagnostic& a, const Diagnostic& b) {
 
 }  // namespace
 
-ComputeLog computeLog() { return ComputeLog{jobsMade.load(), jobTimelines.load(), jobCuts.load(), jobOnWatched.load()}; }
+ComputeLog computeLog() {
+  return ComputeLog{jobsMade.load(), jobTimelines.load(), jobCuts.load(), jobOnWatched.load()};
+}
 
 void watchThread(std::thread::id id) {
   const std::lock_guard lock(watchedMutex);
@@ -115,8 +119,7 @@ std::shared_ptr<const Job> makeJob(JobInput input) {
       const gcode::MachineProfile& profile = gcode::machineProfile(*own);
       input.run.dialect = *own;
       input.setup.machine = machine::withMachineKeys(input.setup.machine, profile);
-      if (profile.maxToolStation > 0)
-        input.stations = std::min(profile.maxToolStation, input.setup.tools.stations);
+      if (profile.maxToolStation > 0) input.stations = std::min(profile.maxToolStation, input.setup.tools.stations);
       j.tools_.setup = input.setup;
     }
     j.diagnostics_.insert(j.diagnostics_.end(), warnings.begin(), warnings.end());
@@ -136,7 +139,8 @@ std::shared_ptr<const Job> makeJob(JobInput input) {
   const std::string folder =
       ownFolder ? std::filesystem::path(input.path).parent_path().string() : input.folder.value_or(std::string());
   if (ownFolder || !folder.empty())
-    for (Diagnostic& d : machine::attachSubprogramFiles(program, folder, run.dialect)) j.diagnostics_.push_back(std::move(d));
+    for (Diagnostic& d : machine::attachSubprogramFiles(program, folder, run.dialect))
+      j.diagnostics_.push_back(std::move(d));
   j.unreadable_ = std::any_of(j.diagnostics_.begin(), j.diagnostics_.end(),
                               [](const Diagnostic& d) { return d.range.file == 0 && machine::isUnreadable(d); });
 
@@ -183,7 +187,8 @@ std::shared_ptr<const Job> makeJob(JobInput input) {
     j.fitBlocks_ = fit->blocks;
     found.push_back(fit->note);
   }
-  j.diagnostics_.insert(j.diagnostics_.end(), std::make_move_iterator(found.begin()), std::make_move_iterator(found.end()));
+  j.diagnostics_.insert(j.diagnostics_.end(), std::make_move_iterator(found.begin()),
+                        std::make_move_iterator(found.end()));
   j.stockNotes_ = resolveJobStock(file, program, input.stock, j.tools_.setup, readRun, j.tools_.record.get());
   // The recorded run has told the tools and the stock all it knows: freed now, so a later
   // timeline() does not hold two runs of a long program at once (peak memory of `simulate`).
@@ -197,7 +202,8 @@ std::shared_ptr<const Job> makeJob(JobInput input) {
   }
   std::stable_sort(j.diagnostics_.begin(), j.diagnostics_.end(), byPlace);
   // The units the program speaks, before any run (issue 28 item 4: View ▸ Units shown ▸ Auto).
-  j.units_ = gcode::programInputUnits(program, powerOn, run.dialect) == gcode::InputUnits::Inch ? DisplayUnits::Inch : DisplayUnits::Mm;
+  j.units_ = gcode::programInputUnits(program, powerOn, run.dialect) == gcode::InputUnits::Inch ? DisplayUnits::Inch
+                                                                                                : DisplayUnits::Mm;
   j.program_ = std::move(program);
   j.input_ = std::move(input);
   return job;

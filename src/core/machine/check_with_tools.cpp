@@ -20,14 +20,16 @@ CheckedWithTools checkWhileInferring(const gcode::Program& program, gcode::Check
   out.inference = inferred.get();
   // Where the editor's modal walk could not follow the program, the run did.
   std::vector<Diagnostic> more;
-  if (options.modalRules && out.inference.record) more = modalWarningsFromRun(program, *out.inference.record, out.diagnostics);
+  if (options.modalRules && out.inference.record)
+    more = modalWarningsFromRun(program, *out.inference.record, out.diagnostics);
   if (toolRule) {
     options.toolsWithBitmap = toolsWithBitmap(out.inference.setup);
     std::vector<Diagnostic> tools = gcode::checkToolBitmaps(program, options);
     more.insert(more.end(), std::make_move_iterator(tools.begin()), std::make_move_iterator(tools.end()));
   }
   if (more.empty()) return out;
-  out.diagnostics.insert(out.diagnostics.end(), std::make_move_iterator(more.begin()), std::make_move_iterator(more.end()));
+  out.diagnostics.insert(out.diagnostics.end(), std::make_move_iterator(more.begin()),
+                         std::make_move_iterator(more.end()));
   sortByPlace(out.diagnostics);
   return out;
 }

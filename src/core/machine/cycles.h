@@ -50,11 +50,11 @@ struct CycleMemory {
   double g73ReliefX = 0.0, g73ReliefZ = 0.0;
   int g73Count = 0;
   double g74Retract = 0.0, g75Retract = 0.0;
-  int g76Finishing = 1;          // m
-  int g76Chamfer = 0;            // r: the pull-out is r/10 leads long, at 45 degrees
-  double g76Angle = 60.0;        // a, degrees (tool angle)
-  double g76MinDepth = 0.0;      // Δdmin
-  double g76Allowance = 0.0;     // d
+  int g76Finishing = 1;       // m
+  int g76Chamfer = 0;         // r: the pull-out is r/10 leads long, at 45 degrees
+  double g76Angle = 60.0;     // a, degrees (tool angle)
+  double g76MinDepth = 0.0;   // Δdmin
+  double g76Allowance = 0.0;  // d
 };
 
 // The profile N(P)..N(Q) of G70-G73 as moves from the cycle's start point.
@@ -70,24 +70,24 @@ struct Profile {
 // values, G20). `withFeed`: F, S, T, G40-G42 and G04 inside apply (G70);
 // the roughing cycles ignore them.
 using ProfileReader = std::function<std::optional<CycleAlarm>(const gcode::Block& cycle, const gcode::Word* g,
-                                                             bool withFeed, Profile& out)>;
+                                                              bool withFeed, Profile& out)>;
 
 struct CycleInput {
   const gcode::Program* program = nullptr;
-  int blockIndex = 0;                     // the cycle block
-  const gcode::Block* block = nullptr;    // its words with macro values evaluated (the interpreter's)
-  const ProfileReader* readProfile = nullptr;  // G70-G73 (none: "no profile block" alarm)
-  const gcode::Word* gWord = nullptr;     // the cycle's G word
-  Vec2 start = Vec2::Zero();              // controlled point when the cycle starts
-  Vec2 offset = Vec2::Zero();             // tool offset vector (z, x radius)
-  const io::OffsetTable* offsets = nullptr;  // for a T inside a G70 profile (none: offsets stay)
-  double unit = 1.0;                      // mm per program unit (25.4 under G20)
-  double feed = 0.0;                      // modal F in mm (after the cycle block's own F)
-  MotionMode motion = MotionMode::Rapid;  // modal motion when the profile starts
-  bool blockSkip = false;                 // '/' blocks of the profile skipped
+  int blockIndex = 0;                              // the cycle block
+  const gcode::Block* block = nullptr;             // its words with macro values evaluated (the interpreter's)
+  const ProfileReader* readProfile = nullptr;      // G70-G73 (none: "no profile block" alarm)
+  const gcode::Word* gWord = nullptr;              // the cycle's G word
+  Vec2 start = Vec2::Zero();                       // controlled point when the cycle starts
+  Vec2 offset = Vec2::Zero();                      // tool offset vector (z, x radius)
+  const io::OffsetTable* offsets = nullptr;        // for a T inside a G70 profile (none: offsets stay)
+  double unit = 1.0;                               // mm per program unit (25.4 under G20)
+  double feed = 0.0;                               // modal F in mm (after the cycle block's own F)
+  MotionMode motion = MotionMode::Rapid;           // modal motion when the profile starts
+  bool blockSkip = false;                          // '/' blocks of the profile skipped
   const gcode::MachineProfile* profile = nullptr;  // one-block forms, drilling: settings, G04 P rule
-  bool threadChamfer = true;              // Haas M23/M24 state (G76 one-block pull-out)
-  bool returnToRPoint = false;            // G99 (return level) of G-code systems B and C
+  bool threadChamfer = true;                       // Haas M23/M24 state (G76 one-block pull-out)
+  bool returnToRPoint = false;                     // G99 (return level) of G-code systems B and C
 };
 
 struct Expansion {
@@ -108,15 +108,15 @@ Expansion expandOneBlock(const gcode::CodeInfo& code, const CycleInput& in);
 // coordinates). Modal: a later block with only a hole position reuses them.
 struct DrillWords {
   gcode::CodeAction g = gcode::CodeAction::Drilling;  // Drilling, SpotDrilling, PeckDrilling
-  Vec2 hole = Vec2::Zero();   // hole position and bottom (z = bottom of the hole)
-  double rPlane = 0.0;        // Z of the R point
-  double peck = 0.0;          // Q: depth of each peck (G83), 0 = one feed to the bottom
-  double firstPeck = 0.0;     // Haas G83 I: first peck; J: reduction per peck; K: least peck
+  Vec2 hole = Vec2::Zero();                           // hole position and bottom (z = bottom of the hole)
+  double rPlane = 0.0;                                // Z of the R point
+  double peck = 0.0;                                  // Q: depth of each peck (G83), 0 = one feed to the bottom
+  double firstPeck = 0.0;                             // Haas G83 I: first peck; J: reduction per peck; K: least peck
   double reduce = 0.0;
   double minPeck = 0.0;
-  double dwell = 0.0;         // P: seconds at the bottom
-  double clearance = 0.0;     // G83: rapid down to this much above the last peck
-  int repeats = 1;            // Fanuc K, Haas L
+  double dwell = 0.0;           // P: seconds at the bottom
+  double clearance = 0.0;       // G83: rapid down to this much above the last peck
+  int repeats = 1;              // Fanuc K, Haas L
   bool returnToRPoint = false;  // G99 of G-code systems B and C; else back to the initial level
   double initialLevel = 0.0;    // Z where the cycle was first given (G98 returns there)
 };

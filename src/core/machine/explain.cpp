@@ -27,61 +27,131 @@ struct Phrase {
 // What each action does, as a teacher says it (Thai terms from GLOSSARY.md).
 std::optional<Phrase> actionPhrase(CodeAction a) {
   switch (a) {
-    case CodeAction::Rapid: return Phrase{"move at rapid speed, not cutting", "เคลื่อนที่เร็วโดยไม่ตัดเฉือน"};
-    case CodeAction::Line: return Phrase{"cut in a straight line", "กลึงเป็นเส้นตรง"};
-    case CodeAction::ArcCw: return Phrase{"cut a clockwise arc", "กลึงส่วนโค้งตามเข็มนาฬิกา"};
-    case CodeAction::ArcCcw: return Phrase{"cut a counter-clockwise arc", "กลึงส่วนโค้งทวนเข็มนาฬิกา"};
-    case CodeAction::Thread: return Phrase{"cut one pass of a thread, the feed locked to the spindle", "กลึงเกลียวหนึ่งเที่ยว อัตราป้อนสัมพันธ์กับรอบเพลา"};
-    case CodeAction::BoxTurning: return Phrase{"turning cycle: feed in, cut along Z, come out and return to the start", "วัฏจักรกลึงปอก: ป้อนมีดเข้า กลึงตามแนวแกน Z ถอยออก แล้วกลับจุดเริ่ม"};
-    case CodeAction::BoxThreading: return Phrase{"threading cycle: one thread pass and back to the start", "วัฏจักรกลึงเกลียว: กลึงเกลียวหนึ่งเที่ยวแล้วกลับจุดเริ่ม"};
-    case CodeAction::BoxFacing: return Phrase{"facing cycle: feed in, cut along X, come out and return to the start", "วัฏจักรกลึงปาดหน้า: ป้อนมีดเข้า กลึงตามแนวแกน X ถอยออก แล้วกลับจุดเริ่ม"};
-    case CodeAction::Inch: return Phrase{"lengths from here on are in inches", "ค่าความยาวต่อจากนี้เป็นหน่วยนิ้ว"};
-    case CodeAction::Metric: return Phrase{"lengths from here on are in millimetres", "ค่าความยาวต่อจากนี้เป็นหน่วยมิลลิเมตร"};
-    case CodeAction::CompOff: return Phrase{"cancel tool nose radius compensation", "ยกเลิกการชดเชยรัศมีจมูกมีด"};
-    case CodeAction::CompLeft: return Phrase{"compensate the nose radius with the tool left of the path", "ชดเชยรัศมีจมูกมีด โดยมีดอยู่ทางซ้ายของแนวทางเดิน"};
-    case CodeAction::CompRight: return Phrase{"compensate the nose radius with the tool right of the path", "ชดเชยรัศมีจมูกมีด โดยมีดอยู่ทางขวาของแนวทางเดิน"};
-    case CodeAction::ConstantSurface: return Phrase{"constant cutting speed: the rpm follows the diameter", "ความเร็วตัดคงที่: รอบเพลาเปลี่ยนตามเส้นผ่าศูนย์กลาง"};
-    case CodeAction::ConstantRpm: return Phrase{"constant spindle rpm", "ความเร็วรอบเพลาคงที่"};
-    case CodeAction::FeedPerMinute: return Phrase{"feed in mm per minute", "อัตราป้อนเป็นมม./นาที"};
-    case CodeAction::FeedPerRev: return Phrase{"feed in mm per revolution", "อัตราป้อนเป็นมม./รอบ"};
-    case CodeAction::WorkOffset: return Phrase{"use this work coordinate system", "ใช้ระบบพิกัดงานนี้"};
-    case CodeAction::Dwell: return Phrase{"wait with the tool standing still", "หยุดรอโดยมีดอยู่กับที่"};
-    case CodeAction::ReferenceCheck: return Phrase{"rapid to the point and check it is the reference point", "เคลื่อนที่เร็วไปยังจุดนั้นแล้วตรวจว่าเป็นจุดอ้างอิง"};
+    case CodeAction::Rapid:
+      return Phrase{"move at rapid speed, not cutting", "เคลื่อนที่เร็วโดยไม่ตัดเฉือน"};
+    case CodeAction::Line:
+      return Phrase{"cut in a straight line", "กลึงเป็นเส้นตรง"};
+    case CodeAction::ArcCw:
+      return Phrase{"cut a clockwise arc", "กลึงส่วนโค้งตามเข็มนาฬิกา"};
+    case CodeAction::ArcCcw:
+      return Phrase{"cut a counter-clockwise arc", "กลึงส่วนโค้งทวนเข็มนาฬิกา"};
+    case CodeAction::Thread:
+      return Phrase{"cut one pass of a thread, the feed locked to the spindle",
+                    "กลึงเกลียวหนึ่งเที่ยว อัตราป้อนสัมพันธ์กับรอบเพลา"};
+    case CodeAction::BoxTurning:
+      return Phrase{"turning cycle: feed in, cut along Z, come out and return to the start",
+                    "วัฏจักรกลึงปอก: ป้อนมีดเข้า กลึงตามแนวแกน Z ถอยออก แล้วกลับจุดเริ่ม"};
+    case CodeAction::BoxThreading:
+      return Phrase{"threading cycle: one thread pass and back to the start",
+                    "วัฏจักรกลึงเกลียว: กลึงเกลียวหนึ่งเที่ยวแล้วกลับจุดเริ่ม"};
+    case CodeAction::BoxFacing:
+      return Phrase{"facing cycle: feed in, cut along X, come out and return to the start",
+                    "วัฏจักรกลึงปาดหน้า: ป้อนมีดเข้า กลึงตามแนวแกน X ถอยออก แล้วกลับจุดเริ่ม"};
+    case CodeAction::Inch:
+      return Phrase{"lengths from here on are in inches", "ค่าความยาวต่อจากนี้เป็นหน่วยนิ้ว"};
+    case CodeAction::Metric:
+      return Phrase{"lengths from here on are in millimetres", "ค่าความยาวต่อจากนี้เป็นหน่วยมิลลิเมตร"};
+    case CodeAction::CompOff:
+      return Phrase{"cancel tool nose radius compensation", "ยกเลิกการชดเชยรัศมีจมูกมีด"};
+    case CodeAction::CompLeft:
+      return Phrase{"compensate the nose radius with the tool left of the path",
+                    "ชดเชยรัศมีจมูกมีด โดยมีดอยู่ทางซ้ายของแนวทางเดิน"};
+    case CodeAction::CompRight:
+      return Phrase{"compensate the nose radius with the tool right of the path",
+                    "ชดเชยรัศมีจมูกมีด โดยมีดอยู่ทางขวาของแนวทางเดิน"};
+    case CodeAction::ConstantSurface:
+      return Phrase{"constant cutting speed: the rpm follows the diameter",
+                    "ความเร็วตัดคงที่: รอบเพลาเปลี่ยนตามเส้นผ่าศูนย์กลาง"};
+    case CodeAction::ConstantRpm:
+      return Phrase{"constant spindle rpm", "ความเร็วรอบเพลาคงที่"};
+    case CodeAction::FeedPerMinute:
+      return Phrase{"feed in mm per minute", "อัตราป้อนเป็นมม./นาที"};
+    case CodeAction::FeedPerRev:
+      return Phrase{"feed in mm per revolution", "อัตราป้อนเป็นมม./รอบ"};
+    case CodeAction::WorkOffset:
+      return Phrase{"use this work coordinate system", "ใช้ระบบพิกัดงานนี้"};
+    case CodeAction::Dwell:
+      return Phrase{"wait with the tool standing still", "หยุดรอโดยมีดอยู่กับที่"};
+    case CodeAction::ReferenceCheck:
+      return Phrase{"rapid to the point and check it is the reference point", "เคลื่อนที่เร็วไปยังจุดนั้นแล้วตรวจว่าเป็นจุดอ้างอิง"};
     case CodeAction::ReferenceReturn:
-    case CodeAction::SecondReferenceReturn: return Phrase{"return to the reference point through the given point", "กลับสู่จุดอ้างอิงโดยผ่านจุดที่กำหนด"};
-    case CodeAction::ReturnFromReference: return Phrase{"come back from the reference point through the G28 point", "กลับจากจุดอ้างอิงผ่านจุดกลางทางของ G28"};
-    case CodeAction::CoordinateSet: return Phrase{"set the coordinates, or limit the spindle speed with S", "ตั้งระบบพิกัด หรือจำกัดความเร็วรอบด้วย S"};
-    case CodeAction::MachineCoordinates: return Phrase{"move in machine coordinates", "เคลื่อนที่ในระบบพิกัดเครื่อง"};
-    case CodeAction::MacroCall: return Phrase{"call a macro with arguments", "เรียกมาโครพร้อมส่งค่าอาร์กิวเมนต์"};
-    case CodeAction::MacroModalCall: return Phrase{"call a macro after every move until G67", "เรียกมาโครหลังการเคลื่อนที่ทุกครั้งจนถึง G67"};
-    case CodeAction::MacroModalCancel: return Phrase{"stop calling the macro after each move", "เลิกเรียกมาโครหลังการเคลื่อนที่"};
-    case CodeAction::CycleCancel: return Phrase{"cancel the drilling cycle", "ยกเลิกวัฏจักรเจาะ"};
-    case CodeAction::Finishing: return Phrase{"finishing cycle: follow the profile once at the finishing feed", "วัฏจักรกลึงละเอียด: กลึงตามรูปร่างหนึ่งเที่ยวด้วยอัตราป้อนกลึงละเอียด"};
-    case CodeAction::TurnRoughing: return Phrase{"rough turning cycle: take the profile down in passes along Z", "วัฏจักรกลึงปอกหยาบ: กลึงตามรูปร่างทีละเที่ยวตามแนวแกน Z"};
-    case CodeAction::FaceRoughing: return Phrase{"rough facing cycle: take the profile down in passes along X", "วัฏจักรกลึงปาดหน้าหยาบ: กลึงตามรูปร่างทีละเที่ยวตามแนวแกน X"};
-    case CodeAction::PatternRepeating: return Phrase{"pattern repeating cycle: the profile again and again, closer each pass", "วัฏจักรกลึงตามแบบซ้ำ: กลึงตามรูปร่างซ้ำ เข้าใกล้ขึ้นทุกเที่ยว"};
-    case CodeAction::FacePecking: return Phrase{"peck cycle along Z: feed in, back off to break the chip, again", "วัฏจักรเจาะจิกตามแนวแกน Z: ป้อนเข้า ถอยเพื่อตัดเศษ แล้วป้อนต่อ"};
-    case CodeAction::Grooving: return Phrase{"grooving cycle along X: plunge in pecks to break the chip", "วัฏจักรกลึงร่องตามแนวแกน X: ป้อนเข้าเป็นช่วงเพื่อตัดเศษ"};
-    case CodeAction::ThreadCutting: return Phrase{"multi-pass threading cycle: the thread in passes of less and less depth", "วัฏจักรกลึงเกลียวหลายเที่ยว: ป้อนลึกลดลงทุกเที่ยว"};
-    case CodeAction::Drilling: return Phrase{"drilling cycle: drill to the depth and rapid out", "วัฏจักรเจาะรู: เจาะถึงความลึกแล้วถอยออกเร็ว"};
-    case CodeAction::SpotDrilling: return Phrase{"drilling cycle with a dwell at the bottom", "วัฏจักรเจาะรูและหยุดรอที่ก้นรู"};
-    case CodeAction::ReturnToInitialLevel: return Phrase{"drilling cycles return to the initial level", "วัฏจักรเจาะรูถอยกลับถึงระดับเริ่มต้น"};
-    case CodeAction::ReturnToRPoint: return Phrase{"drilling cycles return to the R point", "วัฏจักรเจาะรูถอยกลับถึงจุด R"};
-    case CodeAction::PeckDrilling: return Phrase{"peck drilling cycle: drill in pecks, back out to clear the chips", "วัฏจักรเจาะจิก: เจาะทีละช่วงแล้วถอยออกเพื่อคายเศษ"};
-    case CodeAction::SpindleCw: return Phrase{"start the spindle clockwise", "เปิดเพลาหมุนตามเข็มนาฬิกา"};
-    case CodeAction::SpindleCcw: return Phrase{"start the spindle counter-clockwise", "เปิดเพลาหมุนทวนเข็มนาฬิกา"};
-    case CodeAction::SpindleStop: return Phrase{"stop the spindle", "หยุดเพลาหมุน"};
-    case CodeAction::CoolantOn: return Phrase{"turn the coolant on", "เปิดน้ำหล่อเย็น"};
-    case CodeAction::CoolantOff: return Phrase{"turn the coolant off", "ปิดน้ำหล่อเย็น"};
-    case CodeAction::SpindleClamp: return Phrase{"apply the spindle brake", "ล็อกเบรกเพลา"};
-    case CodeAction::SpindleRelease: return Phrase{"release the spindle brake", "ปลดเบรกเพลา"};
-    case CodeAction::ProgramStop: return Phrase{"stop the program until Cycle Start is pressed", "หยุดโปรแกรมจนกว่าจะกด Cycle Start"};
-    case CodeAction::OptionalStop: return Phrase{"stop here when the Optional Stop switch is on", "หยุดที่นี่เมื่อเปิดสวิตช์ Optional Stop"};
-    case CodeAction::ProgramEnd: return Phrase{"end of the program", "จบโปรแกรม"};
-    case CodeAction::LocalCall: return Phrase{"run the blocks from N(P) as a subprogram and come back", "เรียกบล็อกตั้งแต่ N(P) เป็นโปรแกรมย่อยแล้วกลับมา"};
-    case CodeAction::SubprogramCall: return Phrase{"run subprogram O(P) and come back", "เรียกโปรแกรมย่อย O(P) แล้วกลับมา"};
-    case CodeAction::SubprogramReturn: return Phrase{"return to the calling program", "กลับไปยังโปรแกรมที่เรียก"};
-    default: return std::nullopt;
+    case CodeAction::SecondReferenceReturn:
+      return Phrase{"return to the reference point through the given point", "กลับสู่จุดอ้างอิงโดยผ่านจุดที่กำหนด"};
+    case CodeAction::ReturnFromReference:
+      return Phrase{"come back from the reference point through the G28 point", "กลับจากจุดอ้างอิงผ่านจุดกลางทางของ G28"};
+    case CodeAction::CoordinateSet:
+      return Phrase{"set the coordinates, or limit the spindle speed with S", "ตั้งระบบพิกัด หรือจำกัดความเร็วรอบด้วย S"};
+    case CodeAction::MachineCoordinates:
+      return Phrase{"move in machine coordinates", "เคลื่อนที่ในระบบพิกัดเครื่อง"};
+    case CodeAction::MacroCall:
+      return Phrase{"call a macro with arguments", "เรียกมาโครพร้อมส่งค่าอาร์กิวเมนต์"};
+    case CodeAction::MacroModalCall:
+      return Phrase{"call a macro after every move until G67", "เรียกมาโครหลังการเคลื่อนที่ทุกครั้งจนถึง G67"};
+    case CodeAction::MacroModalCancel:
+      return Phrase{"stop calling the macro after each move", "เลิกเรียกมาโครหลังการเคลื่อนที่"};
+    case CodeAction::CycleCancel:
+      return Phrase{"cancel the drilling cycle", "ยกเลิกวัฏจักรเจาะ"};
+    case CodeAction::Finishing:
+      return Phrase{"finishing cycle: follow the profile once at the finishing feed",
+                    "วัฏจักรกลึงละเอียด: กลึงตามรูปร่างหนึ่งเที่ยวด้วยอัตราป้อนกลึงละเอียด"};
+    case CodeAction::TurnRoughing:
+      return Phrase{"rough turning cycle: take the profile down in passes along Z",
+                    "วัฏจักรกลึงปอกหยาบ: กลึงตามรูปร่างทีละเที่ยวตามแนวแกน Z"};
+    case CodeAction::FaceRoughing:
+      return Phrase{"rough facing cycle: take the profile down in passes along X",
+                    "วัฏจักรกลึงปาดหน้าหยาบ: กลึงตามรูปร่างทีละเที่ยวตามแนวแกน X"};
+    case CodeAction::PatternRepeating:
+      return Phrase{"pattern repeating cycle: the profile again and again, closer each pass",
+                    "วัฏจักรกลึงตามแบบซ้ำ: กลึงตามรูปร่างซ้ำ เข้าใกล้ขึ้นทุกเที่ยว"};
+    case CodeAction::FacePecking:
+      return Phrase{"peck cycle along Z: feed in, back off to break the chip, again",
+                    "วัฏจักรเจาะจิกตามแนวแกน Z: ป้อนเข้า ถอยเพื่อตัดเศษ แล้วป้อนต่อ"};
+    case CodeAction::Grooving:
+      return Phrase{"grooving cycle along X: plunge in pecks to break the chip",
+                    "วัฏจักรกลึงร่องตามแนวแกน X: ป้อนเข้าเป็นช่วงเพื่อตัดเศษ"};
+    case CodeAction::ThreadCutting:
+      return Phrase{"multi-pass threading cycle: the thread in passes of less and less depth",
+                    "วัฏจักรกลึงเกลียวหลายเที่ยว: ป้อนลึกลดลงทุกเที่ยว"};
+    case CodeAction::Drilling:
+      return Phrase{"drilling cycle: drill to the depth and rapid out", "วัฏจักรเจาะรู: เจาะถึงความลึกแล้วถอยออกเร็ว"};
+    case CodeAction::SpotDrilling:
+      return Phrase{"drilling cycle with a dwell at the bottom", "วัฏจักรเจาะรูและหยุดรอที่ก้นรู"};
+    case CodeAction::ReturnToInitialLevel:
+      return Phrase{"drilling cycles return to the initial level", "วัฏจักรเจาะรูถอยกลับถึงระดับเริ่มต้น"};
+    case CodeAction::ReturnToRPoint:
+      return Phrase{"drilling cycles return to the R point", "วัฏจักรเจาะรูถอยกลับถึงจุด R"};
+    case CodeAction::PeckDrilling:
+      return Phrase{"peck drilling cycle: drill in pecks, back out to clear the chips",
+                    "วัฏจักรเจาะจิก: เจาะทีละช่วงแล้วถอยออกเพื่อคายเศษ"};
+    case CodeAction::SpindleCw:
+      return Phrase{"start the spindle clockwise", "เปิดเพลาหมุนตามเข็มนาฬิกา"};
+    case CodeAction::SpindleCcw:
+      return Phrase{"start the spindle counter-clockwise", "เปิดเพลาหมุนทวนเข็มนาฬิกา"};
+    case CodeAction::SpindleStop:
+      return Phrase{"stop the spindle", "หยุดเพลาหมุน"};
+    case CodeAction::CoolantOn:
+      return Phrase{"turn the coolant on", "เปิดน้ำหล่อเย็น"};
+    case CodeAction::CoolantOff:
+      return Phrase{"turn the coolant off", "ปิดน้ำหล่อเย็น"};
+    case CodeAction::SpindleClamp:
+      return Phrase{"apply the spindle brake", "ล็อกเบรกเพลา"};
+    case CodeAction::SpindleRelease:
+      return Phrase{"release the spindle brake", "ปลดเบรกเพลา"};
+    case CodeAction::ProgramStop:
+      return Phrase{"stop the program until Cycle Start is pressed", "หยุดโปรแกรมจนกว่าจะกด Cycle Start"};
+    case CodeAction::OptionalStop:
+      return Phrase{"stop here when the Optional Stop switch is on", "หยุดที่นี่เมื่อเปิดสวิตช์ Optional Stop"};
+    case CodeAction::ProgramEnd:
+      return Phrase{"end of the program", "จบโปรแกรม"};
+    case CodeAction::LocalCall:
+      return Phrase{"run the blocks from N(P) as a subprogram and come back",
+                    "เรียกบล็อกตั้งแต่ N(P) เป็นโปรแกรมย่อยแล้วกลับมา"};
+    case CodeAction::SubprogramCall:
+      return Phrase{"run subprogram O(P) and come back", "เรียกโปรแกรมย่อย O(P) แล้วกลับมา"};
+    case CodeAction::SubprogramReturn:
+      return Phrase{"return to the calling program", "กลับไปยังโปรแกรมที่เรียก"};
+    default:
+      return std::nullopt;
   }
 }
 
@@ -97,7 +167,8 @@ std::string pick(Phrase p, Lang lang) { return std::string(lang == Lang::Th ? p.
 
 class Explainer {
  public:
-  Explainer(const Block& b, const StateSnapshot* after, gcode::Dialect dialect, Lang lang, std::string_view statementText)
+  Explainer(const Block& b, const StateSnapshot* after, gcode::Dialect dialect, Lang lang,
+            std::string_view statementText)
       : b_(b), after_(after), dialect_(dialect), th_(lang == Lang::Th), lang_(lang), statementText_(statementText) {}
 
   std::string run() {
@@ -148,20 +219,27 @@ class Explainer {
       std::string text = explainCode(letter, w->code(), dialect_, lang_);
       switch (row->action) {
         case CodeAction::Dwell:
-          if (const Word* t = b_.find('X') ? b_.find('X') : b_.find('U')) text += th_ ? " " + plain(t->value) + " วินาที" : " " + plain(t->value) + " s";
-          else if (const Word* p = b_.find('P')) text += th_ ? " P" + plain(p->value) : " P" + plain(p->value);
+          if (const Word* t = b_.find('X') ? b_.find('X') : b_.find('U'))
+            text += th_ ? " " + plain(t->value) + " วินาที" : " " + plain(t->value) + " s";
+          else if (const Word* p = b_.find('P'))
+            text += th_ ? " P" + plain(p->value) : " P" + plain(p->value);
           break;
         case CodeAction::CoordinateSet:
-          if (const Word* s = b_.find('S')) text = th_ ? "จำกัดความเร็วรอบเพลาไม่เกิน " + plain(s->value) + " รอบ/นาที"
-                                                        : "limit the spindle to " + plain(s->value) + " rpm";
-          else text = th_ ? "ตั้งพิกัดให้ตำแหน่งมีดปัจจุบันอ่านค่าตามที่กำหนด" : "set the coordinates so the tool here reads the given X and Z";
+          if (const Word* s = b_.find('S'))
+            text = th_ ? "จำกัดความเร็วรอบเพลาไม่เกิน " + plain(s->value) + " รอบ/นาที"
+                       : "limit the spindle to " + plain(s->value) + " rpm";
+          else
+            text = th_ ? "ตั้งพิกัดให้ตำแหน่งมีดปัจจุบันอ่านค่าตามที่กำหนด"
+                       : "set the coordinates so the tool here reads the given X and Z";
           break;
         case CodeAction::LocalCall:
         case CodeAction::SubprogramCall:
           if (const Word* p = b_.find('P')) {
             const std::string n = plain(p->value);
-            text = row->action == CodeAction::LocalCall ? (th_ ? "เรียกบล็อกตั้งแต่ N" + n + " เป็นโปรแกรมย่อยแล้วกลับมา" : "run the blocks from N" + n + " as a subprogram and come back")
-                                                       : (th_ ? "เรียกโปรแกรมย่อย O" + n + " แล้วกลับมา" : "run subprogram O" + n + " and come back");
+            text = row->action == CodeAction::LocalCall
+                       ? (th_ ? "เรียกบล็อกตั้งแต่ N" + n + " เป็นโปรแกรมย่อยแล้วกลับมา"
+                              : "run the blocks from N" + n + " as a subprogram and come back")
+                       : (th_ ? "เรียกโปรแกรมย่อย O" + n + " แล้วกลับมา" : "run subprogram O" + n + " and come back");
           }
           break;
         default:
@@ -178,15 +256,17 @@ class Explainer {
     const Word* q = b_.find('Q');
     const bool profile = a == CodeAction::Finishing || a == CodeAction::TurnRoughing || a == CodeAction::FaceRoughing ||
                          a == CodeAction::PatternRepeating;
-    if (profile && p && q) add(th_ ? "รูปร่างจากบล็อก N" + plain(p->value) + " ถึง N" + plain(q->value)
-                                   : "the profile is blocks N" + plain(p->value) + " to N" + plain(q->value));
+    if (profile && p && q)
+      add(th_ ? "รูปร่างจากบล็อก N" + plain(p->value) + " ถึง N" + plain(q->value)
+              : "the profile is blocks N" + plain(p->value) + " to N" + plain(q->value));
     const Word* u = b_.find('U');
     const Word* r = b_.find('R');
     if ((a == CodeAction::TurnRoughing || a == CodeAction::FaceRoughing) && u && r && !p)
       add(th_ ? "ป้อนลึกเที่ยวละ " + plain(u->value) + " มม. ถอยมีด " + plain(r->value) + " มม."
               : "depth of cut " + plain(u->value) + " mm per pass, retract " + plain(r->value) + " mm");
     else if (profile && p && u)
-      add(th_ ? "เผื่อกลึงละเอียด U" + plain(u->value) + " (เส้นผ่าศูนย์กลาง)" : "finishing allowance U" + plain(u->value) + " on the diameter");
+      add(th_ ? "เผื่อกลึงละเอียด U" + plain(u->value) + " (เส้นผ่าศูนย์กลาง)"
+              : "finishing allowance U" + plain(u->value) + " on the diameter");
     if (const Word* f = b_.find('F'); f && profile) add(feedText(f->value));
   }
 
@@ -198,19 +278,26 @@ class Explainer {
     const auto [station, offset] = code >= 100 ? gcode::splitToolNumber(code) : gcode::ToolNumber{code, 0};
     const std::string s = gcode::formatFixed(station, 0), o = gcode::formatFixed(offset, 0);
     const std::string two = (station < 10 ? "0" : "") + s, twoOffset = (offset < 10 ? "0" : "") + o;
-    if (offset == 0) add(th_ ? "เปลี่ยนมีดตัดหมายเลข " + two + " ยกเลิกออฟเซต" : "turn to tool " + two + ", no offset");
-    else add(th_ ? "เปลี่ยนมีดตัดหมายเลข " + two + " ใช้ออฟเซต " + twoOffset : "turn to tool " + two + " with offset " + twoOffset);
+    if (offset == 0)
+      add(th_ ? "เปลี่ยนมีดตัดหมายเลข " + two + " ยกเลิกออฟเซต" : "turn to tool " + two + ", no offset");
+    else
+      add(th_ ? "เปลี่ยนมีดตัดหมายเลข " + two + " ใช้ออฟเซต " + twoOffset
+              : "turn to tool " + two + " with offset " + twoOffset);
   }
 
   void spindleWords() {
     const Word* s = b_.find('S');
     if (!s || s->expr >= 0) return;
     for (const Word* g : b_.all('G'))
-      if (const gcode::CodeInfo* row = info(*g); row && row->action == CodeAction::CoordinateSet) return;  // G50 S: said above
+      if (const gcode::CodeInfo* row = info(*g); row && row->action == CodeAction::CoordinateSet)
+        return;  // G50 S: said above
     const bool surface = after_ && after_->modal.spindleMode == SpindleMode::ConstantSurface;
-    if (surface) add(th_ ? "ความเร็วตัด " + plain(s->value) + " ม./นาที" : "cutting speed " + plain(s->value) + " m/min");
-    else if (after_) add(th_ ? "ความเร็วรอบ " + plain(s->value) + " รอบ/นาที" : "spindle speed " + plain(s->value) + " rpm");
-    else add(th_ ? "ค่า S" + plain(s->value) : "S" + plain(s->value));
+    if (surface)
+      add(th_ ? "ความเร็วตัด " + plain(s->value) + " ม./นาที" : "cutting speed " + plain(s->value) + " m/min");
+    else if (after_)
+      add(th_ ? "ความเร็วรอบ " + plain(s->value) + " รอบ/นาที" : "spindle speed " + plain(s->value) + " rpm");
+    else
+      add(th_ ? "ค่า S" + plain(s->value) : "S" + plain(s->value));
   }
 
   void motion() {
@@ -223,27 +310,36 @@ class Explainer {
     for (const Word* c : b_.all('G'))
       if (const gcode::CodeInfo* r = info(*c)) {
         if (r->group == gcode::ModalGroup::Motion) g = c, row = r;
-        if (r->group == gcode::ModalGroup::NonModal || r->group == gcode::ModalGroup::CannedCycle) return;  // their words are theirs
+        if (r->group == gcode::ModalGroup::NonModal || r->group == gcode::ModalGroup::CannedCycle)
+          return;  // their words are theirs
       }
     if (!(x || z || u || w) && !g) return;
     CodeAction a = row ? row->action : CodeAction::None;
     if (!row && after_) {
-      static constexpr CodeAction kModes[] = {CodeAction::Rapid, CodeAction::Line, CodeAction::ArcCw, CodeAction::ArcCcw, CodeAction::Thread};
+      static constexpr CodeAction kModes[] = {CodeAction::Rapid, CodeAction::Line, CodeAction::ArcCw,
+                                              CodeAction::ArcCcw, CodeAction::Thread};
       a = kModes[static_cast<int>(after_->modal.motion)];
     }
-    std::string text = g ? explainCode('G', g->code(), dialect_, lang_) : actionPhrase(a) ? pick(*actionPhrase(a), lang_) : std::string();
+    std::string text = g                 ? explainCode('G', g->code(), dialect_, lang_)
+                       : actionPhrase(a) ? pick(*actionPhrase(a), lang_)
+                                         : std::string();
     if (text.empty()) return;
     if ((a == CodeAction::ArcCw || a == CodeAction::ArcCcw) && b_.find('R'))
       text += (th_ ? " รัศมี " : " of radius ") + plain(b_.find('R')->value);
     std::string target;
     if (x) target += "Ø" + plain(x->value);
-    if (u) target += std::string(target.empty() ? "" : " ") + (th_ ? "U" + plain(u->value) + " (ระยะเส้นผ่าศูนย์กลาง)" : "U" + plain(u->value) + " on the diameter");
+    if (u)
+      target += std::string(target.empty() ? "" : " ") +
+                (th_ ? "U" + plain(u->value) + " (ระยะเส้นผ่าศูนย์กลาง)" : "U" + plain(u->value) + " on the diameter");
     if (z) target += std::string(target.empty() ? "" : th_ ? " " : " at ") + "Z" + plain(z->value);
-    if (w) target += std::string(target.empty() ? "" : " ") + (th_ ? "W" + plain(w->value) + " ตามแนวแกน Z" : "W" + plain(w->value) + " along Z");
+    if (w)
+      target += std::string(target.empty() ? "" : " ") +
+                (th_ ? "W" + plain(w->value) + " ตามแนวแกน Z" : "W" + plain(w->value) + " along Z");
     if (!target.empty()) text += (th_ ? " ไปที่ " : " to ") + target;
     const bool feedMove = a == CodeAction::Line || a == CodeAction::ArcCw || a == CodeAction::ArcCcw;
     if (a == CodeAction::Thread) {
-      if (const Word* f = b_.find('F')) text += th_ ? " ระยะพิตช์ " + plain(f->value) + " มม." : ", lead " + plain(f->value) + " mm";
+      if (const Word* f = b_.find('F'))
+        text += th_ ? " ระยะพิตช์ " + plain(f->value) + " มม." : ", lead " + plain(f->value) + " mm";
     } else if (feedMove && after_ && after_->modal.feed > 0.0) {
       text += (th_ ? " " : ", ") + feedText(after_->modal.feed);
     } else if (feedMove && b_.find('F')) {
@@ -261,15 +357,24 @@ class Explainer {
   std::string statement() const {
     using K = gcode::StatementKind;
     switch (b_.statement.kind) {
-      case K::Assign: return th_ ? "กำหนดค่าให้ตัวแปรมาโคร" : "give a macro variable a value";
-      case K::Goto: return th_ ? "กระโดดไปยังบล็อกที่กำหนด" : "jump to the given block";
-      case K::If: return b_.statement.then ? (th_ ? "ถ้าเงื่อนไขเป็นจริง กำหนดค่าให้ตัวแปร" : "if the condition holds, give a variable a value")
-                                          : (th_ ? "ถ้าเงื่อนไขเป็นจริง กระโดดไปยังบล็อกที่กำหนด" : "if the condition holds, jump to the given block");
-      case K::While: return th_ ? "ทำซ้ำถึง END ตราบที่เงื่อนไขยังเป็นจริง" : "repeat up to END while the condition holds";
-      case K::Do: return th_ ? "ทำซ้ำถึง END ไม่รู้จบ (ออกด้วย GOTO)" : "repeat up to END without end (GOTO leaves)";
-      case K::End: return th_ ? "จบช่วงทำซ้ำ กลับไปที่ WHILE/DO" : "end of the loop: back to its WHILE/DO";
-      case K::Output: return th_ ? "ส่งข้อมูลออกภายนอก (ไม่มีผลกับการกลึง)" : "send data out (nothing to machine)";
-      default: return {};
+      case K::Assign:
+        return th_ ? "กำหนดค่าให้ตัวแปรมาโคร" : "give a macro variable a value";
+      case K::Goto:
+        return th_ ? "กระโดดไปยังบล็อกที่กำหนด" : "jump to the given block";
+      case K::If:
+        return b_.statement.then
+                   ? (th_ ? "ถ้าเงื่อนไขเป็นจริง กำหนดค่าให้ตัวแปร" : "if the condition holds, give a variable a value")
+                   : (th_ ? "ถ้าเงื่อนไขเป็นจริง กระโดดไปยังบล็อกที่กำหนด" : "if the condition holds, jump to the given block");
+      case K::While:
+        return th_ ? "ทำซ้ำถึง END ตราบที่เงื่อนไขยังเป็นจริง" : "repeat up to END while the condition holds";
+      case K::Do:
+        return th_ ? "ทำซ้ำถึง END ไม่รู้จบ (ออกด้วย GOTO)" : "repeat up to END without end (GOTO leaves)";
+      case K::End:
+        return th_ ? "จบช่วงทำซ้ำ กลับไปที่ WHILE/DO" : "end of the loop: back to its WHILE/DO";
+      case K::Output:
+        return th_ ? "ส่งข้อมูลออกภายนอก (ไม่มีผลกับการกลึง)" : "send data out (nothing to machine)";
+      default:
+        return {};
     }
   }
 
@@ -301,7 +406,8 @@ std::string explainPass(const Timeline& timeline, int moveIndex, Lang lang) {
   const int block = moves[static_cast<std::size_t>(moveIndex)].blockIndex;
   int first = moveIndex, last = moveIndex;
   while (first > 0 && moves[static_cast<std::size_t>(first - 1)].blockIndex == block) --first;
-  while (last + 1 < static_cast<int>(moves.size()) && moves[static_cast<std::size_t>(last + 1)].blockIndex == block) ++last;
+  while (last + 1 < static_cast<int>(moves.size()) && moves[static_cast<std::size_t>(last + 1)].blockIndex == block)
+    ++last;
   int passes = 0, current = 0;
   bool inPass = false;
   for (int i = first; i <= last; ++i) {
@@ -326,9 +432,9 @@ std::string explainLineText(std::string_view lineText, int fileLine, const State
   gcode::Program program = gcode::parse(lineText, fileLine);
   if (program.blocks.empty()) return {};
   // The units in force where it ran; unknown without a run: the dialect's power-on units.
-  const gcode::InputUnits units = after ? (after->modal.units == Units::Inch ? gcode::InputUnits::Inch
-                                                                             : gcode::InputUnits::Millimetre)
-                                        : gcode::machineProfile(dialect).powerOnUnits;
+  const gcode::InputUnits units =
+      after ? (after->modal.units == Units::Inch ? gcode::InputUnits::Inch : gcode::InputUnits::Millimetre)
+            : gcode::machineProfile(dialect).powerOnUnits;
   if (lengthsInIncrements) gcode::readLengthsInIncrements(program, units, dialect);
   return Explainer(program.blocks.front(), after, dialect, lang, lineText).run();
 }

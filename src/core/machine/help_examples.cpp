@@ -67,7 +67,7 @@ constexpr Example kExamples[] = {
     {'G', 32, 0, KLUENG_THREAD_TOOL "G00 X47.4 Z5.\nG32 Z-25. F1.5\nG00 X52.\nZ5.\nX47.\nG32 Z-25.\nG00 X52.\nZ5.\n"},
     {'G', 41, 0,
      KLUENG_DRILL "G01 Z-30. F0.1\nG00 Z5.\nX100. Z100.\nT0505 (boring bar)\nG96 S150 M03\nG41 G00 X14. Z2.\n"
-     "G01 Z-20. F0.1\nX10.\nG40 G00 Z5.\n"},
+                  "G01 Z-20. F0.1\nX10.\nG40 G00 Z5.\n"},
     {'G', 42, 0, "G42 G00 X44. Z2.\nG01 Z-20. F0.15\nX52.\nG40 G00 X100. Z100.\n"},
     {'G', 53, 0, "G53 X200. Z300. (machine coordinates)\n"},
     {'G', 65, 0,
@@ -115,7 +115,8 @@ constexpr Example kExamples[] = {
 
 const Example* handWritten(char letter, int number, Dialect dialect) {
   for (const Example& e : kExamples)
-    if (e.letter == letter && e.number == number && (e.dialects == 0 || (e.dialects & (1u << static_cast<int>(dialect)))))
+    if (e.letter == letter && e.number == number &&
+        (e.dialects == 0 || (e.dialects & (1u << static_cast<int>(dialect)))))
       return &e;
   return nullptr;
 }
@@ -123,11 +124,13 @@ const Example* handWritten(char letter, int number, Dialect dialect) {
 Slot slotOf(const gcode::CodeInfo& row) {
   using A = gcode::CodeAction;
   if (row.action == A::ProgramEnd) return Slot::End;
-  if (row.letter == 'M' && (row.action == A::SpindleCw || row.action == A::SpindleCcw || row.action == A::SpindleClamp ||
-                            row.action == A::SpindleRelease || row.action == A::CAxisOff))
+  if (row.letter == 'M' &&
+      (row.action == A::SpindleCw || row.action == A::SpindleCcw || row.action == A::SpindleClamp ||
+       row.action == A::SpindleRelease || row.action == A::CAxisOff))
     return Slot::Stopped;
   // Haas chuck, spindle lock and orient: the spindle must be at rest.
-  if (row.letter == 'M' && (row.number == 10 || row.number == 11 || row.number == 14 || row.number == 15 || row.number == 19))
+  if (row.letter == 'M' &&
+      (row.number == 10 || row.number == 11 || row.number == 14 || row.number == 15 || row.number == 19))
     return Slot::Stopped;
   return Slot::Running;
 }

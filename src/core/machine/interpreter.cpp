@@ -21,8 +21,14 @@ using gcode::Phase;
 
 Interpreter::Interpreter(const gcode::Program& program, const MachineSetup& setup, const RunOptions& options,
                          MachineSink& sink, FlowLog* flow)
-    : program_(program), setup_(setup), options_(options), profile_(gcode::machineProfile(options.dialect)),
-      sink_(&sink), offsets_(setup.offsets), flow_(flow), index_(program) {
+    : program_(program),
+      setup_(setup),
+      options_(options),
+      profile_(gcode::machineProfile(options.dialect)),
+      sink_(&sink),
+      offsets_(setup.offsets),
+      flow_(flow),
+      index_(program) {
   const auto& m = setup_.machine;
   pos_ = Vec2(m.startZ, m.startX / 2.0);
   mach_.position = pos_;
@@ -34,7 +40,8 @@ Interpreter::Interpreter(const gcode::Program& program, const MachineSetup& setu
     return readProfile(cycle, g, withFeed, out);
   };
   for (int n = 0; n < 100 && !distanceModes_; ++n)
-    if (const CodeInfo* row = gcode::findCode('G', n, options.dialect)) distanceModes_ = row->group == ModalGroup::Distance;
+    if (const CodeInfo* row = gcode::findCode('G', n, options.dialect))
+      distanceModes_ = row->group == ModalGroup::Distance;
 }
 
 // G90/G91 of G-code systems B and C (group 03): the block's own code first, then
@@ -54,8 +61,10 @@ void Interpreter::readDistanceMode() {
   incrementalBlock_ = *block_;
   for (Word& w : incrementalBlock_.words) {
     if (w.comma) continue;
-    if (w.letter == 'X') w.letter = 'U';
-    else if (w.letter == 'Z') w.letter = 'W';
+    if (w.letter == 'X')
+      w.letter = 'U';
+    else if (w.letter == 'Z')
+      w.letter = 'W';
   }
   incrementalBlock_.letters |= gcode::Block::letterBit('U') | gcode::Block::letterBit('W');
   block_ = &incrementalBlock_;
@@ -154,7 +163,9 @@ bool Interpreter::executeBlock() {
           drillCycle_ = nullptr;
         }  // any other group 01 row of a profile's code table: no motion of its own
         break;
-      case ModalGroup::NonModal: oneShotG = &c; break;
+      case ModalGroup::NonModal:
+        oneShotG = &c;
+        break;
       case ModalGroup::NoseComp:
         modal_.noseComp = a == CodeAction::CompLeft    ? NoseCompMode::Left
                           : a == CodeAction::CompRight ? NoseCompMode::Right
@@ -177,14 +188,22 @@ bool Interpreter::executeBlock() {
       case ModalGroup::FeedMode:
         modal_.feedMode = a == CodeAction::FeedPerMinute ? FeedMode::PerMinute : FeedMode::PerRev;
         break;
-      case ModalGroup::WorkOffset: modal_.workCoordinate = c.info->number; break;  // G54..: all zero
-      case ModalGroup::Distance: break;  // readDistanceMode
-      case ModalGroup::ReturnLevel: modal_.returnToRPoint = a == CodeAction::ReturnToRPoint; break;
-      case ModalGroup::CannedCycle:
-        if (a == CodeAction::CycleCancel) drillCycle_ = nullptr;  // G80: drilling cycle cancel
-        else cycleG = &c;              // G70-G76, G81-G83
+      case ModalGroup::WorkOffset:
+        modal_.workCoordinate = c.info->number;
+        break;  // G54..: all zero
+      case ModalGroup::Distance:
+        break;  // readDistanceMode
+      case ModalGroup::ReturnLevel:
+        modal_.returnToRPoint = a == CodeAction::ReturnToRPoint;
         break;
-      default: break;  // G18 plane, G20/G21 done above
+      case ModalGroup::CannedCycle:
+        if (a == CodeAction::CycleCancel)
+          drillCycle_ = nullptr;  // G80: drilling cycle cancel
+        else
+          cycleG = &c;  // G70-G76, G81-G83
+        break;
+      default:
+        break;  // G18 plane, G20/G21 done above
     }
   }
   if (const Word* f = find('F')) {
@@ -209,10 +228,9 @@ bool Interpreter::executeBlock() {
 
   // 2. M codes before the motion, in code order: M03 M04 M08 M41 M86 M87 M91.
   if (mCount > 1)
-    std::sort(ms.begin(), ms.begin() + static_cast<std::ptrdiff_t>(mCount),
-            [](const CodeWord& a, const CodeWord& b) {
-              return std::pair(a.info->phase, a.info->number) < std::pair(b.info->phase, b.info->number);
-            });
+    std::sort(ms.begin(), ms.begin() + static_cast<std::ptrdiff_t>(mCount), [](const CodeWord& a, const CodeWord& b) {
+      return std::pair(a.info->phase, a.info->number) < std::pair(b.info->phase, b.info->number);
+    });
   std::size_t mi = 0;
   if (capture_) {  // a profile's M codes are not the cycle's business, a call is refused
     for (std::size_t i = 0; i < mCount; ++i)
@@ -231,8 +249,7 @@ bool Interpreter::executeBlock() {
   } else if (oneShotG) {
     if (!oneShot(*oneShotG)) return false;
   } else if (singleCycle_ && (singleCycleG || hasAxisWords())) {
-    if (!singleCycle(singleCycleG ? singleCycleG->word : motionWord(nullptr), singleCycleG != nullptr))
-      return false;
+    if (!singleCycle(singleCycleG ? singleCycleG->word : motionWord(nullptr), singleCycleG != nullptr)) return false;
   } else if (drillCycle_ && !motionG && hasAxisWords()) {
     if (!drillingCycle(*drillCycle_, motionWord(nullptr), false)) return false;  // the next hole
   } else if (hasAxisWords()) {
@@ -283,11 +300,16 @@ StateSnapshot Interpreter::snapshot() {
 
 MotionMode Interpreter::motionFor(CodeAction action) {
   switch (action) {
-    case CodeAction::Line: return MotionMode::Line;
-    case CodeAction::ArcCw: return MotionMode::ArcCw;
-    case CodeAction::ArcCcw: return MotionMode::ArcCcw;
-    case CodeAction::Thread: return MotionMode::Thread;
-    default: return MotionMode::Rapid;
+    case CodeAction::Line:
+      return MotionMode::Line;
+    case CodeAction::ArcCw:
+      return MotionMode::ArcCw;
+    case CodeAction::ArcCcw:
+      return MotionMode::ArcCcw;
+    case CodeAction::Thread:
+      return MotionMode::Thread;
+    default:
+      return MotionMode::Rapid;
   }
 }
 
@@ -302,11 +324,14 @@ bool Interpreter::selectTool(const Word& t) {
   const int stations = profile_.maxToolStation > 0 ? std::min(profile_.maxToolStation, tableStations) : tableStations;
   const int offsets = std::min(profile_.maxOffset, static_cast<int>(offsets_.offsets.size()));
   // A T from a macro expression skips the checker: refuse what no turret has.
-  if (value < 0) return raise(codes::kNoSuchStation, &t, {wordText(t), t.number.str(), fmt::format("{:02d}", stations)});
+  if (value < 0)
+    return raise(codes::kNoSuchStation, &t, {wordText(t), t.number.str(), fmt::format("{:02d}", stations)});
   if (tool > stations)
-    return raise(codes::kNoSuchStation, &t, {wordText(t), fmt::format("{:02d}", tool), fmt::format("{:02d}", stations)});
+    return raise(codes::kNoSuchStation, &t,
+                 {wordText(t), fmt::format("{:02d}", tool), fmt::format("{:02d}", stations)});
   if (offset > offsets)
-    return raise(codes::kNoSuchOffset, &t, {wordText(t), fmt::format("{:02d}", offset), fmt::format("{:02d}", offsets)});
+    return raise(codes::kNoSuchOffset, &t,
+                 {wordText(t), fmt::format("{:02d}", offset), fmt::format("{:02d}", offsets)});
   // Tool 00 indexes nothing (T0000 cancels the offset of the tool in place).
   if (tool > 0 || offset > 0 || !profile_.toolZeroKeepsTurret) mach_.tool = tool;
   mach_.offset = offset;
@@ -338,7 +363,9 @@ bool Interpreter::mCode(const CodeWord& c) {
       }
       updateRpm();
       return true;
-    case ModalGroup::MCoolant: mach_.coolant = a == CodeAction::CoolantOn; return true;
+    case ModalGroup::MCoolant:
+      mach_.coolant = a == CodeAction::CoolantOn;
+      return true;
     case ModalGroup::MBrake:
       if (a == CodeAction::SpindleClamp) {  // M86; Haas M14 (M15 releases, as M87)
         if (mach_.spindle != SpindleDir::Stopped) return raise(codes::kBrakeWhileTurning, c.word, {});
@@ -356,7 +383,9 @@ bool Interpreter::mCode(const CodeWord& c) {
         mach_.cAxisMode = false;
       }
       return true;
-    case ModalGroup::MGear: mach_.gearRange = c.info->number - 40; return true;  // M41 = range 1
+    case ModalGroup::MGear:
+      mach_.gearRange = c.info->number - 40;
+      return true;  // M41 = range 1
     case ModalGroup::MThreadChamfer:
       // Haas M23/M24: chamfer out of a thread on/off (a profile without a
       // thread chamfer setting ignores them, as other machine M codes).
@@ -382,7 +411,8 @@ bool Interpreter::mCode(const CodeWord& c) {
       const Word* l = find('L');
       pending_.hasP = p != nullptr;
       const bool packed = a == CodeAction::SubprogramCall && profile_.flow.packedRepeats;
-      pending_.target = gcode::callTarget(p ? p->value : 0.0, l ? std::optional<double>(l->value) : std::nullopt, packed);
+      pending_.target =
+          gcode::callTarget(p ? p->value : 0.0, l ? std::optional<double>(l->value) : std::nullopt, packed);
       // A missing target stops the run on this block, before its snapshot.
       if (a == CodeAction::SubprogramCall && pending_.target.repeats > 0 && !index_.program(pending_.target.number))
         return raise(codes::kNoSuchProgram, c.word, {pending_.text, std::to_string(pending_.target.number)});
@@ -391,7 +421,8 @@ bool Interpreter::mCode(const CodeWord& c) {
         return raise(codes::kNoSuchSequence, c.word, {pending_.text, std::to_string(pending_.target.number)});
       return true;
     }
-    default: return true;
+    default:
+      return true;
   }
 }
 
@@ -424,7 +455,8 @@ bool Interpreter::move(const Word* g) {
       modal_.motion != MotionMode::ArcCcw)
     return cornerNeedsMove();
   switch (modal_.motion) {
-    case MotionMode::Rapid: return rapidTo(target, where);
+    case MotionMode::Rapid:
+      return rapidTo(target, where);
     case MotionMode::Line: {
       if (!feedReady(where, "G01")) return false;
       if (!angleTarget(target, where)) return false;
@@ -443,7 +475,8 @@ bool Interpreter::move(const Word* g) {
     case MotionMode::Thread: {
       if (modal_.feed <= 0.0 && !cuttingCondition(codes::kNoFeed, where, {"G32"})) return false;
       if (!threadUnderCssAllowed(where)) return false;
-      if (mach_.spindle == SpindleDir::Stopped && !cuttingCondition(codes::kThreadSpindleStopped, where, {})) return false;
+      if (mach_.spindle == SpindleDir::Stopped && !cuttingCondition(codes::kThreadSpindleStopped, where, {}))
+        return false;
       if (modal_.sWord <= 0.0 && !cuttingCondition(codes::kThreadWithoutSpeed, where, {})) return false;
       MotionCall m;
       m.kind = MoveKind::Thread;
@@ -463,7 +496,8 @@ bool Interpreter::feedReady(const Word* where, const char* code) {
   if (capture_) return true;  // the cycle checks its own moves when it makes them
   if (modal_.feed <= 0.0 && !cuttingCondition(codes::kNoFeed, where, {code})) return false;
   if (modal_.feedMode == FeedMode::PerRev) {
-    if (mach_.spindle == SpindleDir::Stopped && !cuttingCondition(codes::kFeedPerRevSpindleStopped, where, {code})) return false;
+    if (mach_.spindle == SpindleDir::Stopped && !cuttingCondition(codes::kFeedPerRevSpindleStopped, where, {code}))
+      return false;
     if (modal_.sWord <= 0.0 && !cuttingCondition(codes::kFeedPerRevWithoutSpeed, where, {code})) return false;
   }
   return true;
@@ -531,7 +565,7 @@ void run(const gcode::Program& program, const MachineSetup& setup, const RunOpti
 
 namespace {
 
-constexpr double kRecordRpm = 500.0;    // rpm and mm/min of a cut made without them in a record
+constexpr double kRecordRpm = 500.0;  // rpm and mm/min of a cut made without them in a record
 constexpr double kRecordFeed = 100.0;
 
 // RunOptions::throughAlarms: keeps the first alarm and lets the run go on.
@@ -541,8 +575,9 @@ class ThroughAlarms final : public MachineSink {
   void motion(const MotionCall& m) override {
     // A cut made without its feed, spindle or speed (noted as an alarm) still
     // takes a finite time: a record's times are not its point.
-    const bool stalled = m.kind != MoveKind::Rapid && (m.ctx.feed <= 0.0 || m.ctx.spindle == SpindleDir::Stopped ||
-                                                      m.ctx.sWord <= 0.0 || (m.kind == MoveKind::Thread && m.lead <= 0.0));
+    const bool stalled =
+        m.kind != MoveKind::Rapid && (m.ctx.feed <= 0.0 || m.ctx.spindle == SpindleDir::Stopped || m.ctx.sWord <= 0.0 ||
+                                      (m.kind == MoveKind::Thread && m.lead <= 0.0));
     if (!stalled) return next_.motion(m);
     MotionCall running = m;
     running.ctx.spindle = SpindleDir::Cw;
@@ -575,7 +610,8 @@ Timeline interpret(const gcode::Program& program, const MachineSetup& setup, con
   Timeline timeline;
   timeline.moves.reserve(program.blocks.size() + program.blocks.size() / 2);
   timeline.snapshots.reserve(program.blocks.size());
-  auto builder = makeTimelineBuilder(timeline, TimingConfig{setup.machine.rapidX, setup.machine.rapidZ, setup.machine.accelX, setup.machine.accelZ});
+  auto builder = makeTimelineBuilder(
+      timeline, TimingConfig{setup.machine.rapidX, setup.machine.rapidZ, setup.machine.accelX, setup.machine.accelZ});
   std::unique_ptr<MachineSink> compensation;
   if (options.noseCompensation) compensation = makeCompensationStage(*builder);
   MachineSink& chain = compensation ? *compensation : *builder;

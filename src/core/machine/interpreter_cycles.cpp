@@ -70,7 +70,7 @@ bool Interpreter::cannedCycle(const CodeWord& c) {
   if (a != CodeAction::Finishing && !compensationAllowed(c.word)) return false;
   const cycles::CycleInput in = cycleInput(c.word);
   cycles::Expansion e = profile_.cycleForm == gcode::CycleForm::OneBlock ? cycles::expandOneBlock(*c.info, in)
-                                                                        : cycles::expand(*c.info, in, cycleMemory_);
+                                                                         : cycles::expand(*c.info, in, cycleMemory_);
   if (e.alarm) return cycleAlarm(*e.alarm);
   if (!emitCycle(e.steps, c.word, wordText(*c.word))) return false;
   resumeAfter_ = e.resumeAfter;
@@ -102,13 +102,15 @@ bool Interpreter::cycleReady(const std::vector<cycles::Step>& steps, const Word*
     if (s.kind == cycles::StepKind::Feed) {
       if (feed <= 0.0 && !cuttingCondition(codes::kNoFeed, where, {name})) return false;
       if (modal_.feedMode == FeedMode::PerRev) {
-        if (mach_.spindle == SpindleDir::Stopped && !cuttingCondition(codes::kFeedPerRevSpindleStopped, where, {name})) return false;
+        if (mach_.spindle == SpindleDir::Stopped && !cuttingCondition(codes::kFeedPerRevSpindleStopped, where, {name}))
+          return false;
         if (!sSet && !cuttingCondition(codes::kFeedPerRevWithoutSpeed, where, {name})) return false;
       }
     } else if (s.kind == cycles::StepKind::Thread) {
       if (s.lead <= 0.0 && !cuttingCondition(codes::kNoFeed, where, {name})) return false;
       if (!threadUnderCssAllowed(where)) return false;
-      if (mach_.spindle == SpindleDir::Stopped && !cuttingCondition(codes::kThreadSpindleStopped, where, {})) return false;
+      if (mach_.spindle == SpindleDir::Stopped && !cuttingCondition(codes::kThreadSpindleStopped, where, {}))
+        return false;
       if (!sSet && !cuttingCondition(codes::kThreadWithoutSpeed, where, {})) return false;
     }
   }
@@ -155,7 +157,8 @@ bool Interpreter::emitCycle(const std::vector<cycles::Step>& steps, const Word* 
       case cycles::StepKind::Thread: {
         if (s.lead <= 0.0 && !cuttingCondition(codes::kNoFeed, where, {name})) return false;
         if (!threadUnderCssAllowed(where)) return false;
-        if (mach_.spindle == SpindleDir::Stopped && !cuttingCondition(codes::kThreadSpindleStopped, where, {})) return false;
+        if (mach_.spindle == SpindleDir::Stopped && !cuttingCondition(codes::kThreadSpindleStopped, where, {}))
+          return false;
         if (modal_.sWord <= 0.0 && !cuttingCondition(codes::kThreadWithoutSpeed, where, {})) return false;
         MotionCall m;
         m.kind = MoveKind::Thread;

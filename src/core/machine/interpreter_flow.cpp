@@ -24,17 +24,22 @@ bool isMacroCallBlock(const Block& b, gcode::Dialect dialect, CodeWord& g) {
   return w != nullptr;
 }
 
-
 namespace {
 
 std::string statementText(const Block& b) {
   switch (b.statement.kind) {
-    case StatementKind::Goto: return "GOTO";
-    case StatementKind::If: return "IF";
-    case StatementKind::While: return "WHILE";
-    case StatementKind::Do: return "DO" + std::to_string(b.statement.loop);
-    case StatementKind::End: return "END" + std::to_string(b.statement.loop);
-    default: return "#";
+    case StatementKind::Goto:
+      return "GOTO";
+    case StatementKind::If:
+      return "IF";
+    case StatementKind::While:
+      return "WHILE";
+    case StatementKind::Do:
+      return "DO" + std::to_string(b.statement.loop);
+    case StatementKind::End:
+      return "END" + std::to_string(b.statement.loop);
+    default:
+      return "#";
   }
 }
 
@@ -60,7 +65,8 @@ bool Interpreter::threadUnderCssAllowed(const Word* where) {
   if (modal_.spindleMode != SpindleMode::ConstantSurface) return true;
   if (profile_.threadUnderCssIsAlarm) return raise(codes::kThreadUnderConstantSurface, where, {});
   if (!threadCssWarned_)
-    notice(Severity::Warning, codes::kThreadUnderCssWarning, where ? where->range : SourceRange{block_->line, 1, 0}, {});
+    notice(Severity::Warning, codes::kThreadUnderCssWarning, where ? where->range : SourceRange{block_->line, 1, 0},
+           {});
   threadCssWarned_ = true;
   return true;
 }
@@ -153,7 +159,10 @@ void Interpreter::run() {
     if (pc >= section.end || pc < section.first) {
       if (frames_.size() == 1) break;
       block_ = &program_.blocks[static_cast<std::size_t>(section.end - 1)];
-      if (!returnFromCall(std::nullopt, block_->words.empty() ? SourceRange{block_->line, 1, 0, block_->file} : block_->words.front().range, "M99"))
+      if (!returnFromCall(
+              std::nullopt,
+              block_->words.empty() ? SourceRange{block_->line, 1, 0, block_->file} : block_->words.front().range,
+              "M99"))
         break;
       pc = next_;
       continue;
@@ -184,13 +193,15 @@ bool Interpreter::loopLimits() {
   // loop): what they make is bounded too, before it fills the memory.
   const long long moveBudget = kMovesPerRepeatedBlock * static_cast<long long>(m.maxBlocks);
   if (repeatedMoves_ > moveBudget)
-    return flowAlarm(codes::kEndlessLoopMoves, lastJumpAt_.line > 0 ? lastJumpAt_ : SourceRange{block_->line, 1, 0, block_->file},
+    return flowAlarm(codes::kEndlessLoopMoves,
+                     lastJumpAt_.line > 0 ? lastJumpAt_ : SourceRange{block_->line, 1, 0, block_->file},
                      {lastJumpText_.empty() ? std::string("M99") : lastJumpText_, std::to_string(repeatedMoves_),
                       std::to_string(m.maxBlocks), std::to_string(moveBudget)});
   repeating_ = visited_[static_cast<std::size_t>(blockIndex_)] != 0;
   if (visited_[static_cast<std::size_t>(blockIndex_)]) {
     if (++repeatedBlocks_ > m.maxBlocks)
-      return flowAlarm(codes::kEndlessLoopBlocks, lastJumpAt_.line > 0 ? lastJumpAt_ : SourceRange{block_->line, 1, 0, block_->file},
+      return flowAlarm(codes::kEndlessLoopBlocks,
+                       lastJumpAt_.line > 0 ? lastJumpAt_ : SourceRange{block_->line, 1, 0, block_->file},
                        {lastJumpText_.empty() ? std::string("M99") : lastJumpText_, std::to_string(repeatedBlocks_ - 1),
                         std::to_string(m.maxBlocks)});
   } else {
@@ -200,9 +211,9 @@ bool Interpreter::loopLimits() {
   // block twice ends within its own length, however long it takes; only a run
   // that repeats blocks (through M99, GOTO, WHILE) is stopped by the clock.
   if (m.maxRunTime > 0.0 && repeatedBlocks_ > 0 && sink_->elapsed() > m.maxRunTime)
-    return flowAlarm(codes::kEndlessLoopTime, lastJumpAt_.line > 0 ? lastJumpAt_ : SourceRange{block_->line, 1, 0, block_->file},
-                     {lastJumpText_.empty() ? std::string("M99") : lastJumpText_, num(sink_->elapsed()),
-                      num(m.maxRunTime)});
+    return flowAlarm(
+        codes::kEndlessLoopTime, lastJumpAt_.line > 0 ? lastJumpAt_ : SourceRange{block_->line, 1, 0, block_->file},
+        {lastJumpText_.empty() ? std::string("M99") : lastJumpText_, num(sink_->elapsed()), num(m.maxRunTime)});
   return true;
 }
 
@@ -274,7 +285,8 @@ bool Interpreter::evaluateWords(const Block& b) {
     if (flow_)
       flow_->wordValues.push_back(WordValue{snapshots_, w.range.file, w.range.line, w.range.column, v.value, v.vacant});
     if (v.vacant) {  // any address, a code word too, is left out
-      notice(Severity::Warning, codes::kVacantAddressOmitted, w.range, {w.text(), w.number.substr(w.number.find('#') + 1), std::string(1, w.letter)});
+      notice(Severity::Warning, codes::kVacantAddressOmitted, w.range,
+             {w.text(), w.number.substr(w.number.find('#') + 1), std::string(1, w.letter)});
       continue;
     }
     Word e = w;
@@ -282,8 +294,8 @@ bool Interpreter::evaluateWords(const Block& b) {
     e.value = v.value;
     // A length takes the least input increment, as the control reads the address.
     if (std::string_view("XZUWIKRC").find(w.letter) != std::string_view::npos)
-      e.value = gcode::roundToIncrement(v.value, profile_,
-                                        modal_.units == Units::Inch ? gcode::InputUnits::Inch : gcode::InputUnits::Millimetre);
+      e.value = gcode::roundToIncrement(
+          v.value, profile_, modal_.units == Units::Inch ? gcode::InputUnits::Inch : gcode::InputUnits::Millimetre);
     e.hasDecimalPoint = true;
     e.number = gcode::macroNumberText(e.value);
     if (e.number.find('.') == std::string::npos) e.number += '.';
@@ -337,27 +349,32 @@ bool Interpreter::statement(const Block& b) {
     case StatementKind::While:
     case StatementKind::Do: {
       const int end = loopPartner_[static_cast<std::size_t>(blockIndex_)];
-      if (end < 0) return flowAlarm(codes::kUnmatchedLoopEnd, st.range, {statementText(b), "END" + std::to_string(st.loop)});
+      if (end < 0)
+        return flowAlarm(codes::kUnmatchedLoopEnd, st.range, {statementText(b), "END" + std::to_string(st.loop)});
       bool enter = true;
       if (st.kind == StatementKind::While) {
         MacroValue c;
         if (!evaluate(st.condition, st.range, c)) return false;
         enter = !c.vacant && c.value != 0.0;
       }
-      if (enter) frames_.back().doBlock[static_cast<std::size_t>(st.loop)] = blockIndex_;
-      else next_ = end + 1;
+      if (enter)
+        frames_.back().doBlock[static_cast<std::size_t>(st.loop)] = blockIndex_;
+      else
+        next_ = end + 1;
       return true;
     }
     case StatementKind::End: {
       const int start = loopPartner_[static_cast<std::size_t>(blockIndex_)];
-      if (start < 0) return flowAlarm(codes::kUnmatchedLoopEnd, st.range, {statementText(b), "DO" + std::to_string(st.loop)});
+      if (start < 0)
+        return flowAlarm(codes::kUnmatchedLoopEnd, st.range, {statementText(b), "DO" + std::to_string(st.loop)});
       next_ = start;  // WHILE tests its condition again
       lastJumpAt_ = st.range;
       lastJumpText_ = statementText(b);
       return true;
     }
     case StatementKind::Output:  // DPRNT and friends print on the real control; nothing moves
-    case StatementKind::None: return true;
+    case StatementKind::None:
+      return true;
   }
   return true;
 }
@@ -385,7 +402,8 @@ bool Interpreter::performCall() {
                          nullptr);
     case PendingCall::Kind::Return:
       return returnFromCall(call.hasP ? std::optional<int>(call.target.number) : std::nullopt, call.where, call.text);
-    case PendingCall::Kind::None: return true;
+    case PendingCall::Kind::None:
+      return true;
   }
   return true;
 }
@@ -400,8 +418,9 @@ bool Interpreter::callProgram(CallFrame::Kind kind, int number, int repeats, con
     if (f.kind == CallFrame::Kind::Macro || f.kind == CallFrame::Kind::ModalMacro) ++macroLevels;
   }
   if (macro ? macroLevels >= profile_.flow.maxMacroNesting : subLevels >= profile_.flow.maxSubprogramNesting)
-    return flowAlarm(codes::kCallsTooDeep, at, {text, std::to_string(macro ? profile_.flow.maxMacroNesting
-                                                             : profile_.flow.maxSubprogramNesting)});
+    return flowAlarm(
+        codes::kCallsTooDeep, at,
+        {text, std::to_string(macro ? profile_.flow.maxMacroNesting : profile_.flow.maxSubprogramNesting)});
   FlowFrame f;
   f.kind = kind;
   f.returnTo = next_;
@@ -495,8 +514,8 @@ bool Interpreter::returnFromCall(std::optional<int> sequence, const SourceRange&
 // Argument specification I (Fanuc): A B C -> #1 #2 #3, I J K -> #4 #5 #6,
 // D E F -> #7 #8 #9, H -> #11, M -> #13, Q R S T U V W X Y Z -> #17 .. #26.
 void Interpreter::setArguments(const Block& b, std::array<MacroValue, 33>& locals) const {
-  static constexpr int kArgument[26] = {
-      1, 2, 3, 7, 8, 9, 0, 11, 4, 5, 6, 0, 13, 0, 0, 0, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26};
+  static constexpr int kArgument[26] = {1, 2, 3, 7,  8,  9,  0,  11, 4,  5,  6,  0,  13,
+                                        0, 0, 0, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26};
   for (const Word& w : b.words) {
     if (w.letter < 'A' || w.letter > 'Z' || w.comma || w.expr >= 0) continue;
     const int n = kArgument[w.letter - 'A'];

@@ -28,14 +28,14 @@
 
 namespace klueng::core::machine::detail {
 
-using gcode::CodeInfo;
-using gcode::CodeAction;
 using gcode::CallTarget;
+using gcode::CodeAction;
+using gcode::CodeInfo;
 using gcode::Word;
 
 inline constexpr double kMmPerInch = 25.4;
-inline constexpr double kMetresPerFoot = 0.3048;   // G96 S is feet/min under G20
-inline constexpr double kArcTolerance = 0.01;      // mm (SPEC 5 ext)
+inline constexpr double kMetresPerFoot = 0.3048;  // G96 S is feet/min under G20
+inline constexpr double kArcTolerance = 0.01;     // mm (SPEC 5 ext)
 inline constexpr double kPositionTolerance = 0.001;
 // Moves the blocks run again may make, per block machine.cfg max_blocks allows.
 inline constexpr long long kMovesPerRepeatedBlock = 10;
@@ -56,25 +56,25 @@ struct CodeWord {
 // subprogram (M97) or a macro (G65/G66) being run.
 struct FlowFrame {
   CallFrame::Kind kind = CallFrame::Kind::Main;
-  int program = 0;       // O number
-  int section = 0;       // ProgramIndex section of the running program
-  int entry = 0;         // block index where each pass starts
-  int returnTo = -1;     // block index the caller continues at
-  int callBlock = -1;    // block index of the call (M99 P searches the caller from here)
+  int program = 0;     // O number
+  int section = 0;     // ProgramIndex section of the running program
+  int entry = 0;       // block index where each pass starts
+  int returnTo = -1;   // block index the caller continues at
+  int callBlock = -1;  // block index of the call (M99 P searches the caller from here)
   int callFile = 0, callLine = 0;
   int repeat = 1, repeats = 1;
-  int localLevel = 0;    // index into the local-variable stack
-  int localId = 0;       // FlowLog local frame id
-  std::array<int, 4> doBlock{-1, -1, -1, -1};  // the WHILE/DO block of each active loop 1-3
+  int localLevel = 0;                             // index into the local-variable stack
+  int localId = 0;                                // FlowLog local frame id
+  std::array<int, 4> doBlock{-1, -1, -1, -1};     // the WHILE/DO block of each active loop 1-3
   std::array<gcode::MacroValue, 33> arguments{};  // G65/G66: each pass starts with these locals
 };
 
 // A call found in an NC block, performed after the block's motion.
 struct PendingCall {
   enum class Kind { None, Subprogram, Local, Return } kind = Kind::None;
-  const Word* word = nullptr;   // M98 / M97 / M99 (in the block being run)
+  const Word* word = nullptr;  // M98 / M97 / M99 (in the block being run)
   CallTarget target;
-  bool hasP = false;            // M99 P n
+  bool hasP = false;  // M99 P n
   SourceRange where;
   std::string text;
 };
@@ -125,8 +125,10 @@ class Interpreter final : public gcode::MacroVariables {
     Diagnostic d;
     d.severity = Severity::Alarm;
     d.code = code;
-    if (where) d.range = where->range;
-    else d.range = SourceRange{block_->line, 1, 0};
+    if (where)
+      d.range = where->range;
+    else
+      d.range = SourceRange{block_->line, 1, 0};
     d.args = std::move(args);
     sink_->alarm(d);
     return false;
@@ -275,7 +277,8 @@ class Interpreter final : public gcode::MacroVariables {
   std::optional<cycles::CycleAlarm> readProfile(const gcode::Block& cycle, const Word* g, bool withFeed,
                                                 cycles::Profile& out);
   bool profileOnly(const char* what, const Word* where);
-  bool profileBlockAllowed(const CodeWord* motion, const CodeWord* cycle, const CodeWord* oneShot, const CodeWord* single);
+  bool profileBlockAllowed(const CodeWord* motion, const CodeWord* cycle, const CodeWord* oneShot,
+                           const CodeWord* single);
   bool captureTool(const Word& t);
   void captureFeed(double mm);
   void captureSpeed(const Word& s);
@@ -292,42 +295,42 @@ class Interpreter final : public gcode::MacroVariables {
   Vec2 pos_ = Vec2::Zero();            // controlled point without compensation, work coordinates
   std::optional<double> g28X_, g28Z_;  // G28/G30 intermediate point (work coordinates)
   const gcode::Block* block_ = nullptr;
-  gcode::Block incrementalBlock_;      // a block read under G91 (systems B, C): X Z as U W
-  bool distanceModes_ = false;         // the machine's G-code system has G90/G91 absolute/incremental
+  gcode::Block incrementalBlock_;  // a block read under G91 (systems B, C): X Z as U W
+  bool distanceModes_ = false;     // the machine's G-code system has G90/G91 absolute/incremental
   std::array<const Word*, 26> byLetter_{};
   int blockIndex_ = 0;
-  int resumeAfter_ = -1;               // block index the run continues after (G71-G73 profile)
+  int resumeAfter_ = -1;                   // block index the run continues after (G71-G73 profile)
   const CodeInfo* singleCycle_ = nullptr;  // G90, G92 or G94 while a single cycle is modal
-  Vec2 singleTarget_ = Vec2::Zero();   // its modal X Z (controlled point)
-  double singleTaper_ = 0.0;           // its modal R (mm)
+  Vec2 singleTarget_ = Vec2::Zero();       // its modal X Z (controlled point)
+  double singleTaper_ = 0.0;               // its modal R (mm)
   const CodeInfo* drillCycle_ = nullptr;   // G81, G82 or G83 while a drilling cycle is modal (G80 ends it)
-  cycles::DrillWords drill_;           // its modal words
+  cycles::DrillWords drill_;               // its modal words
   cycles::CycleMemory cycleMemory_;
-  cycles::ProfileReader profileReader_;  // readProfile, for the cycle expansions
-  ProfileCapture* capture_ = nullptr;  // set while a G70-G73 runs its profile into a capturing sink
+  cycles::ProfileReader profileReader_;   // readProfile, for the cycle expansions
+  ProfileCapture* capture_ = nullptr;     // set while a G70-G73 runs its profile into a capturing sink
   std::deque<gcode::Word> profileWords_;  // the S and T words a G70 profile hands to its steps
   bool stopped_ = false;
   bool stopEndsRun_ = false;
-  bool optionalStopBlock_ = false;     // this block holds M01
+  bool optionalStopBlock_ = false;  // this block holds M01
   bool ended_ = false;
 
   // Program flow (interpreter_flow.cpp).
   FlowLog* flow_ = nullptr;
   gcode::ProgramIndex index_;
   std::vector<FlowFrame> frames_;
-  MacroStore macros_;                 // #1-#999 and the system variables a run keeps
-  std::vector<int> loopPartner_;      // WHILE/DO block -> its END, END -> its WHILE/DO (-1 none)
-  std::vector<char> visited_;         // blocks run at least once (the endless-loop limit counts repeats)
+  MacroStore macros_;             // #1-#999 and the system variables a run keeps
+  std::vector<int> loopPartner_;  // WHILE/DO block -> its END, END -> its WHILE/DO (-1 none)
+  std::vector<char> visited_;     // blocks run at least once (the endless-loop limit counts repeats)
   long long repeatedBlocks_ = 0;
-  long long repeatedMoves_ = 0;       // moves made by blocks run again (bounded with max_blocks)
-  bool repeating_ = false;            // the running block has run before
-  SourceRange lastJumpAt_;            // the last backward jump (named by the endless-loop alarm)
+  long long repeatedMoves_ = 0;  // moves made by blocks run again (bounded with max_blocks)
+  bool repeating_ = false;       // the running block has run before
+  SourceRange lastJumpAt_;       // the last backward jump (named by the endless-loop alarm)
   std::string lastJumpText_;
-  int next_ = 0;                      // block index to run next
-  int snapshots_ = 0;                 // snapshots emitted so far (the index of the next one)
-  int stackId_ = 0;                   // FlowLog::stacks index of the current call stack
+  int next_ = 0;       // block index to run next
+  int snapshots_ = 0;  // snapshots emitted so far (the index of the next one)
+  int stackId_ = 0;    // FlowLog::stacks index of the current call stack
   int nextLocalId_ = 1;
-  bool mainRepeated_ = false;         // M99 in the main program has looped once
+  bool mainRepeated_ = false;  // M99 in the main program has looped once
   PendingCall pending_;
   struct ModalCall {
     bool active = false;
@@ -340,14 +343,14 @@ class Interpreter final : public gcode::MacroVariables {
   // A G01 with ,C or ,R waits for the next block's move to know its corner.
   struct PendingCorner {
     bool active = false;
-    MotionCall first;       // the G01 to the virtual corner
-    char kind = 0;          // 'C' chamfer, 'R' radius
-    double size = 0.0;      // mm
-    SourceRange where;      // the ,C / ,R word
+    MotionCall first;   // the G01 to the virtual corner
+    char kind = 0;      // 'C' chamfer, 'R' radius
+    double size = 0.0;  // mm
+    SourceRange where;  // the ,C / ,R word
     std::string text;
     int blockIndex = -1;
   } corner_;
-  gcode::Block scratch_;              // the running block with its expressions evaluated
+  gcode::Block scratch_;  // the running block with its expressions evaluated
 };
 
 }  // namespace klueng::core::machine::detail

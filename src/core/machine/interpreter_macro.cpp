@@ -29,22 +29,36 @@ int Interpreter::modalCodeInA(int group) const {
     case 1:
       if (singleCycle_) return singleCycle_->number;
       switch (modal_.motion) {
-        case MotionMode::Rapid: return 0;
-        case MotionMode::Line: return 1;
-        case MotionMode::ArcCw: return 2;
-        case MotionMode::ArcCcw: return 3;
-        case MotionMode::Thread: return 32;
+        case MotionMode::Rapid:
+          return 0;
+        case MotionMode::Line:
+          return 1;
+        case MotionMode::ArcCw:
+          return 2;
+        case MotionMode::ArcCcw:
+          return 3;
+        case MotionMode::Thread:
+          return 32;
       }
       return 0;
-    case 2: return modal_.spindleMode == SpindleMode::ConstantSurface ? 96 : 97;
-    case 5: return modal_.feedMode == FeedMode::PerMinute ? 98 : 99;
-    case 6: return modal_.units == Units::Inch ? 20 : 21;
-    case 7: return modal_.noseComp == NoseCompMode::Left ? 41 : modal_.noseComp == NoseCompMode::Right ? 42 : 40;
-    case 10: return drillCycle_ ? drillCycle_->number : 80;
-    case 12: return modalCall_.active ? 66 : 67;
-    case 14: return modal_.workCoordinate;
-    case 16: return 18;
-    default: return 0;
+    case 2:
+      return modal_.spindleMode == SpindleMode::ConstantSurface ? 96 : 97;
+    case 5:
+      return modal_.feedMode == FeedMode::PerMinute ? 98 : 99;
+    case 6:
+      return modal_.units == Units::Inch ? 20 : 21;
+    case 7:
+      return modal_.noseComp == NoseCompMode::Left ? 41 : modal_.noseComp == NoseCompMode::Right ? 42 : 40;
+    case 10:
+      return drillCycle_ ? drillCycle_->number : 80;
+    case 12:
+      return modalCall_.active ? 66 : 67;
+    case 14:
+      return modal_.workCoordinate;
+    case 16:
+      return 18;
+    default:
+      return 0;
   }
 }
 
@@ -69,23 +83,49 @@ bool Interpreter::read(int n, MacroValue& out, const char*& errorCode) {
     const io::Offset& o = offsets_.at(row);
     const double lengthUnit = unit();
     switch (kind) {
-      case 0: out = MacroValue::of(o.x / lengthUnit); break;
-      case 1: out = MacroValue::of(o.z / lengthUnit); break;
-      case 2: out = MacroValue::of(o.r / lengthUnit); break;
-      default: out = MacroValue::of(o.tip); break;
+      case 0:
+        out = MacroValue::of(o.x / lengthUnit);
+        break;
+      case 1:
+        out = MacroValue::of(o.z / lengthUnit);
+        break;
+      case 2:
+        out = MacroValue::of(o.r / lengthUnit);
+        break;
+      default:
+        out = MacroValue::of(o.tip);
+        break;
     }
     return true;
   }
   switch (n) {
-    case 3000: return true;  // vacant until written (the write raises the alarm)
-    case 4109: out = MacroValue::of(modal_.feed / unit()); return true;
-    case 4115: out = MacroValue::of(frames_.back().program); return true;
-    case 4119: out = MacroValue::of(modal_.sWord); return true;
-    case 5001: case 5041: out = MacroValue::of(positionValue(1, false)); return true;
-    case 5002: case 5042: out = MacroValue::of(positionValue(2, false)); return true;
-    case 5021: out = MacroValue::of(positionValue(1, true)); return true;
-    case 5022: out = MacroValue::of(positionValue(2, true)); return true;
-    default: break;
+    case 3000:
+      return true;  // vacant until written (the write raises the alarm)
+    case 4109:
+      out = MacroValue::of(modal_.feed / unit());
+      return true;
+    case 4115:
+      out = MacroValue::of(frames_.back().program);
+      return true;
+    case 4119:
+      out = MacroValue::of(modal_.sWord);
+      return true;
+    case 5001:
+    case 5041:
+      out = MacroValue::of(positionValue(1, false));
+      return true;
+    case 5002:
+    case 5042:
+      out = MacroValue::of(positionValue(2, false));
+      return true;
+    case 5021:
+      out = MacroValue::of(positionValue(1, true));
+      return true;
+    case 5022:
+      out = MacroValue::of(positionValue(2, true));
+      return true;
+    default:
+      break;
   }
   if (n >= 4001 && n <= 4022) {
     out = MacroValue::of(modalCode(n - 4000));
@@ -104,7 +144,8 @@ bool Interpreter::writeVariable(int n, MacroValue v, const SourceRange& at) {
     if (flow_) flow_->writes.push_back(VariableWrite{snapshots_, n, -1, v.value, v.vacant});
     // The control shows it as alarm 3000 + n (Fanuc: n = 0..200).
     const int number = 3000 + static_cast<int>(std::clamp(std::round(v.value), 0.0, 999.0));
-    return flowAlarm(codes::kProgramAlarm, at, {gcode::macroNumberText(v.value), block_->comment, std::to_string(number)});
+    return flowAlarm(codes::kProgramAlarm, at,
+                     {gcode::macroNumberText(v.value), block_->comment, std::to_string(number)});
   } else if (n == 3006) {
     // #3006 = n (MESSAGE): a stop with a message, as M00.
     notice(Severity::Note, codes::kMacroStop, at, {block_->comment});
@@ -117,15 +158,20 @@ bool Interpreter::writeVariable(int n, MacroValue v, const SourceRange& at) {
     io::Offset& o = offsets_.offsets[static_cast<std::size_t>(row)];
     const double value = v.vacant ? 0.0 : v.value;
     switch (kind) {
-      case 0: o.x = value * unit(); break;
-      case 1: o.z = value * unit(); break;
+      case 0:
+        o.x = value * unit();
+        break;
+      case 1:
+        o.z = value * unit();
+        break;
       case 2:
         if (value < 0.0) return flowAlarm(codes::kReadOnlyVariable, at, {name + " =", std::to_string(n)});
         o.r = value * unit();
         break;
       default: {
         const double tip = std::round(value);
-        if (tip < 0.0 || tip > 9.0 || tip != value) return flowAlarm(codes::kReadOnlyVariable, at, {name + " =", std::to_string(n)});
+        if (tip < 0.0 || tip > 9.0 || tip != value)
+          return flowAlarm(codes::kReadOnlyVariable, at, {name + " =", std::to_string(n)});
         o.tip = static_cast<int>(tip);
         break;
       }
@@ -133,7 +179,8 @@ bool Interpreter::writeVariable(int n, MacroValue v, const SourceRange& at) {
   } else {
     MacroValue ignored;
     const char* code = nullptr;
-    if (n == 0 || read(n, ignored, code)) return flowAlarm(codes::kReadOnlyVariable, at, {name + " =", std::to_string(n)});
+    if (n == 0 || read(n, ignored, code))
+      return flowAlarm(codes::kReadOnlyVariable, at, {name + " =", std::to_string(n)});
     return flowAlarm(codes::kNoSuchVariable, at, {std::to_string(n)});
   }
   if (flow_) flow_->writes.push_back(VariableWrite{snapshots_, n, localFrame, v.value, v.vacant});

@@ -17,9 +17,12 @@ bool Interpreter::dwell(const Word* w) {
   if (modal_.feedMode == FeedMode::PerRev && mach_.spindle == SpindleDir::Stopped)
     return raise(codes::kFeedPerRevSpindleStopped, w, {"G04"});
   double seconds = 0.0;
-  if (const Word* p = find('P')) seconds = cycles::dwellSeconds(*p, profile_.dwellP);
-  else if (const Word* x = find('X')) seconds = x->value;
-  else if (const Word* uw = find('U')) seconds = uw->value;
+  if (const Word* p = find('P'))
+    seconds = cycles::dwellSeconds(*p, profile_.dwellP);
+  else if (const Word* x = find('X'))
+    seconds = x->value;
+  else if (const Word* uw = find('U'))
+    seconds = uw->value;
   DwellCall d;
   d.seconds = std::max(0.0, seconds);
   fillDwell(d);
@@ -56,7 +59,8 @@ bool Interpreter::referenceReturn(const Word* w) {
 bool Interpreter::oneShot(const CodeWord& c) {
   const Word* w = c.word;
   switch (c.info->action) {
-    case CodeAction::Dwell: return dwell(w);
+    case CodeAction::Dwell:
+      return dwell(w);
     case CodeAction::ReferenceCheck: {
       if (!hasAxisWords()) return true;
       if (!rapidTo(axisTarget(), w)) return false;
@@ -69,7 +73,8 @@ bool Interpreter::oneShot(const CodeWord& c) {
       return true;
     }
     case CodeAction::ReferenceReturn:
-    case CodeAction::SecondReferenceReturn: return referenceReturn(w);  // G30 P2..P4 would pick among several points; there is one
+    case CodeAction::SecondReferenceReturn:
+      return referenceReturn(w);  // G30 P2..P4 would pick among several points; there is one
     case CodeAction::ReturnFromReference: {
       // From the reference point via the G28 intermediate point to the target.
       if (!hasAxisWords()) return true;
@@ -104,7 +109,8 @@ bool Interpreter::oneShot(const CodeWord& c) {
       if (const Word* z = find('Z')) target.x() = z->value * u + zOf(zero);
       return rapidTo(target, w);
     }
-    default: return raise(codes::kNotSupportedYet, w, {wordText(*w)});
+    default:
+      return raise(codes::kNotSupportedYet, w, {wordText(*w)});
   }
 }
 

@@ -97,8 +97,10 @@ bool Interpreter::profileBlockAllowed(const CodeWord* motion, const CodeWord* cy
                                       const CodeWord* single) {
   for (const CodeWord* c : {cycle, single})
     if (c) return profileOnly(wordText(*c->word).c_str(), c->word);
-  if (motion && motion->info->action == CodeAction::Thread) return profileOnly(wordText(*motion->word).c_str(), motion->word);
-  if (oneShot && oneShot->info->action != CodeAction::Dwell) return profileOnly(wordText(*oneShot->word).c_str(), oneShot->word);
+  if (motion && motion->info->action == CodeAction::Thread)
+    return profileOnly(wordText(*motion->word).c_str(), motion->word);
+  if (oneShot && oneShot->info->action != CodeAction::Dwell)
+    return profileOnly(wordText(*oneShot->word).c_str(), oneShot->word);
   return true;
 }
 
@@ -221,7 +223,8 @@ std::optional<cycles::CycleAlarm> Interpreter::readProfile(const Block& cycle, c
   g28X_ = g28X;
   g28Z_ = g28Z;
 
-  if (capture.alarmSeen) return cycles::CycleAlarm{capture.alarmSeen->code, capture.alarmSeen->range, capture.alarmSeen->args};
+  if (capture.alarmSeen)
+    return cycles::CycleAlarm{capture.alarmSeen->code, capture.alarmSeen->range, capture.alarmSeen->args};
   // Only moves count for the roughing cycles.
   const auto moves = std::count_if(out.moves.begin(), out.moves.end(), [](const cycles::Step& s) {
     return s.kind == cycles::StepKind::Rapid || s.kind == cycles::StepKind::Feed;

@@ -99,12 +99,14 @@ std::vector<SetupDiagnostic> loadMachineFolders(const std::vector<std::string>& 
 
 std::optional<gcode::Dialect> resolveMachine(const std::string& nameOrFile, std::vector<SetupDiagnostic>& diagnostics) {
   gcode::Dialect d{};
-  const bool looksLikeFile = nameOrFile.find('/') != std::string::npos || fs::path(nameOrFile).extension() == ".machine";
+  const bool looksLikeFile =
+      nameOrFile.find('/') != std::string::npos || fs::path(nameOrFile).extension() == ".machine";
   if (!looksLikeFile && gcode::parseDialectId(nameOrFile, d)) return d;
   std::error_code ec;
   if (!looksLikeFile && !fs::exists(nameOrFile, ec)) {
     std::string ids;
-    for (const gcode::MachineProfile* p : gcode::machineProfiles()) ids += (ids.empty() ? "" : ", ") + std::string(p->id);
+    for (const gcode::MachineProfile* p : gcode::machineProfiles())
+      ids += (ids.empty() ? "" : ", ") + std::string(p->id);
     diagnostics.push_back({nameOrFile, Diagnostic{Severity::Error, codes::kUnknownMachine, {}, {nameOrFile, ids}}});
     return std::nullopt;
   }

@@ -21,26 +21,49 @@ bool MacroStore::read(int n, int level, const MachineSink& clock, MacroValue& ou
     return true;
   }
   switch (n) {
-    case 3001: out = MacroValue::of(clock.elapsed() * 1000.0 - timerBase_); return true;
-    case 3002: out = MacroValue::of(clock.elapsed() / 3600.0 - hourBase_); return true;
-    case 3901: out = MacroValue::of(partsMachined_); return true;
-    case 3902: out = MacroValue::of(partsRequired_); return true;
-    case 4113: out = MacroValue::of(lastM_); return true;
-    case 4114: out = MacroValue::of(lastN_); return true;
-    case 4120: out = MacroValue::of(lastT_); return true;
-    default: return false;
+    case 3001:
+      out = MacroValue::of(clock.elapsed() * 1000.0 - timerBase_);
+      return true;
+    case 3002:
+      out = MacroValue::of(clock.elapsed() / 3600.0 - hourBase_);
+      return true;
+    case 3901:
+      out = MacroValue::of(partsMachined_);
+      return true;
+    case 3902:
+      out = MacroValue::of(partsRequired_);
+      return true;
+    case 4113:
+      out = MacroValue::of(lastM_);
+      return true;
+    case 4114:
+      out = MacroValue::of(lastN_);
+      return true;
+    case 4120:
+      out = MacroValue::of(lastT_);
+      return true;
+    default:
+      return false;
   }
 }
 
 bool MacroStore::write(int n, int level, const MachineSink& clock, MacroValue v) {
-  if (n >= 1 && n <= 33) locals_[static_cast<std::size_t>(level)][static_cast<std::size_t>(n - 1)] = v;
-  else if (n >= 100 && n <= 199) common_[static_cast<std::size_t>(n - 100)] = v;
-  else if (n >= 500 && n <= 999) persistent_[static_cast<std::size_t>(n - 500)] = v;
-  else if (n == 3001) timerBase_ = clock.elapsed() * 1000.0 - v.value;  // the timer reads v from now on
-  else if (n == 3002) hourBase_ = clock.elapsed() / 3600.0 - v.value;
-  else if (n == 3901) partsMachined_ = v.value;
-  else if (n == 3902) partsRequired_ = v.value;
-  else return false;
+  if (n >= 1 && n <= 33)
+    locals_[static_cast<std::size_t>(level)][static_cast<std::size_t>(n - 1)] = v;
+  else if (n >= 100 && n <= 199)
+    common_[static_cast<std::size_t>(n - 100)] = v;
+  else if (n >= 500 && n <= 999)
+    persistent_[static_cast<std::size_t>(n - 500)] = v;
+  else if (n == 3001)
+    timerBase_ = clock.elapsed() * 1000.0 - v.value;  // the timer reads v from now on
+  else if (n == 3002)
+    hourBase_ = clock.elapsed() / 3600.0 - v.value;
+  else if (n == 3901)
+    partsMachined_ = v.value;
+  else if (n == 3902)
+    partsRequired_ = v.value;
+  else
+    return false;
   return true;
 }
 
@@ -61,8 +84,10 @@ void MacroStore::loadPersistent(const std::map<int, double>& values) {
 void MacroStore::savePersistent(std::map<int, double>& values) const {
   for (int n = 500; n <= 999; ++n) {
     const MacroValue& v = persistent_[static_cast<std::size_t>(n - 500)];
-    if (v.vacant) values.erase(n);
-    else values[n] = v.value;
+    if (v.vacant)
+      values.erase(n);
+    else
+      values[n] = v.value;
   }
 }
 

@@ -46,10 +46,10 @@ class MacroStore {
 
  private:
   std::vector<MacroLocals> locals_;                   // one per G65/G66 level (and the main's)
-  std::array<gcode::MacroValue, 100> common_{};      // #100-#199
-  std::array<gcode::MacroValue, 500> persistent_{};  // #500-#999
-  double timerBase_ = 0.0;                           // #3001 counts from here (ms)
-  double hourBase_ = 0.0;                            // #3002 (hours)
+  std::array<gcode::MacroValue, 100> common_{};       // #100-#199
+  std::array<gcode::MacroValue, 500> persistent_{};   // #500-#999
+  double timerBase_ = 0.0;                            // #3001 counts from here (ms)
+  double hourBase_ = 0.0;                             // #3002 (hours)
   double partsMachined_ = 0.0, partsRequired_ = 0.0;  // #3901 #3902
   int lastT_ = 0, lastM_ = 0, lastN_ = 0;             // #4120 #4113 #4114
 };

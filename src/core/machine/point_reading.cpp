@@ -34,9 +34,8 @@ PointReading readDecimalPoints(gcode::Program& program, bool plainProgram, std::
       out.fromProgram = true;
       // Said when it matters: increments (a shop's habit) or a reading the machine would not give.
       if (whole < increments || out.calculatorInput != machineCalculatorInput)
-        out.diagnostics.push_back(readingNote(whole > increments ? evidence.forWholeUnits.front()
-                                                               : evidence.forIncrements.front(),
-                                            whole < increments));
+        out.diagnostics.push_back(readingNote(
+            whole > increments ? evidence.forWholeUnits.front() : evidence.forIncrements.front(), whole < increments));
     }
   }
   if (!out.calculatorInput) gcode::readLengthsInIncrements(program, powerOnUnits, dialect);

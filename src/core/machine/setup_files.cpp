@@ -12,7 +12,9 @@
 
 namespace klueng::core::machine {
 
-bool isUnreadable(const Diagnostic& d) { return d.code == codes::kNoSuchFile || d.code == codes::kCannotReadFile || d.code == codes::kFileTooLarge; }
+bool isUnreadable(const Diagnostic& d) {
+  return d.code == codes::kNoSuchFile || d.code == codes::kCannotReadFile || d.code == codes::kFileTooLarge;
+}
 
 bool LoadedSetup::hasErrors() const {
   return std::any_of(diagnostics.begin(), diagnostics.end(),
@@ -70,9 +72,12 @@ LoadedSetup loadMachineSetup(const std::string& explicitDir, bool readBitmaps) {
     if (image.ok() && (image.value->width > most || image.value->height > most)) {
       const std::string& name = loaded.setup.tools.bitmap[i];
       loaded.diagnostics.push_back(
-          {toolsPath, Diagnostic{Severity::Error, codes::kToolBitmapTooLarge, {t, 1, io::utf8Length(name)},
-                                 {toolsPath, fmt::format("{:02}", t), name, std::to_string(image.value->width),
-                                  std::to_string(image.value->height), std::to_string(most), fmt::format("{:g}", ppm)}}});
+          {toolsPath,
+           Diagnostic{Severity::Error,
+                      codes::kToolBitmapTooLarge,
+                      {t, 1, io::utf8Length(name)},
+                      {toolsPath, fmt::format("{:02}", t), name, std::to_string(image.value->width),
+                       std::to_string(image.value->height), std::to_string(most), fmt::format("{:g}", ppm)}}});
       image.value.reset();
     }
     loaded.setup.tools.bitmapUnreadable[i] = !image.ok();

@@ -18,12 +18,10 @@ namespace klueng::core::machine {
 namespace {
 
 constexpr double kMmPerInch = 25.4;
-constexpr double kOnCentre = 0.5;  // mm of diameter: a feed at X0 (drill, face to centre)
+constexpr double kOnCentre = 0.5;     // mm of diameter: a feed at X0 (drill, face to centre)
 constexpr double kBelowWall = 0.005;  // mm of diameter: a retract this far below a pass leaves its wall
 
-bool isFeed(const Move& m) {
-  return m.kind == MoveKind::Line || m.kind == MoveKind::Arc || m.kind == MoveKind::Thread;
-}
+bool isFeed(const Move& m) { return m.kind == MoveKind::Line || m.kind == MoveKind::Arc || m.kind == MoveKind::Thread; }
 
 // A pass along -Z: mostly axial, going left.
 bool isZPass(const Move& m) {
@@ -68,8 +66,8 @@ bool leavesThroughTheHole(const std::vector<Move>& moves, std::size_t i) {
       const bool below = diameterOf(n.path.start) < wall || (d.y() < 0.0 && diameterOf(n.path.end) < wall);
       return alongZ && below && diameterOf(n.path.end) >= kOnCentre;
     }
-    if (diameterOf(n.path.end) >= wall - 1e-9) return false;              // back up to the wall: outside
-    if (isFeed(n) && diameterOf(n.path.end) < kOnCentre) return false;   // faced to the centre
+    if (diameterOf(n.path.end) >= wall - 1e-9) return false;            // back up to the wall: outside
+    if (isFeed(n) && diameterOf(n.path.end) < kOnCentre) return false;  // faced to the centre
   }
   return false;
 }
@@ -195,26 +193,26 @@ StockInference inferStock(const gcode::Program& program, const Timeline& run, co
   // a groove) has the bar below where its first cut starts.
   std::size_t decider = moves.size();
   for (int pass = 0; pass < 2 && decider == moves.size(); ++pass)
-  for (std::size_t i = 0; i < moves.size() && decider == moves.size(); ++i) {
-    const Move& m = moves[i];
-    if (!isFeed(m) || inside[i]) continue;
-    std::size_t first = i;  // the block's first move starts where the block started
-    while (first > 0 && moves[first - 1].blockIndex == m.blockIndex) --first;
-    if (diameterOf(moves[first].path.start) < kOnCentre) continue;
-    if (pass == 0 && zOf(moves[first].path.start) < -1e-6) continue;
-    if (pass == 1 && diameterOf(m.path.end) >= diameterOf(moves[first].path.start)) continue;  // a plunge inward only
-    decider = i;
-    // Quote the block that brought the tool there (N30 G00 X52. Z2.), not the cut.
-    r.diameterLine = first > 0 ? moves[first - 1].line : m.line;
-    const gcode::Block* block = blockOf(program, m);
-    r.cycleStart = block && isCycleBlock(*block);
-    r.inch = unitsOfBlock.count(m.blockIndex) && unitsOfBlock[m.blockIndex] == Units::Inch;
-    const double unit = r.inch ? kMmPerInch : 1.0;
-    // A plain first cut along -Z is a pass inside the bar; anything else starts above it.
-    const bool insideBar = !r.cycleStart && first == i && isZPass(m);
-    r.approachDiameter = diameterOf(moves[first].path.start) / unit;
-    r.diameter = r.inch ? inchBarSize(r.approachDiameter, insideBar) : metricBarSize(r.approachDiameter, insideBar);
-  }
+    for (std::size_t i = 0; i < moves.size() && decider == moves.size(); ++i) {
+      const Move& m = moves[i];
+      if (!isFeed(m) || inside[i]) continue;
+      std::size_t first = i;  // the block's first move starts where the block started
+      while (first > 0 && moves[first - 1].blockIndex == m.blockIndex) --first;
+      if (diameterOf(moves[first].path.start) < kOnCentre) continue;
+      if (pass == 0 && zOf(moves[first].path.start) < -1e-6) continue;
+      if (pass == 1 && diameterOf(m.path.end) >= diameterOf(moves[first].path.start)) continue;  // a plunge inward only
+      decider = i;
+      // Quote the block that brought the tool there (N30 G00 X52. Z2.), not the cut.
+      r.diameterLine = first > 0 ? moves[first - 1].line : m.line;
+      const gcode::Block* block = blockOf(program, m);
+      r.cycleStart = block && isCycleBlock(*block);
+      r.inch = unitsOfBlock.count(m.blockIndex) && unitsOfBlock[m.blockIndex] == Units::Inch;
+      const double unit = r.inch ? kMmPerInch : 1.0;
+      // A plain first cut along -Z is a pass inside the bar; anything else starts above it.
+      const bool insideBar = !r.cycleStart && first == i && isZPass(m);
+      r.approachDiameter = diameterOf(moves[first].path.start) / unit;
+      r.diameter = r.inch ? inchBarSize(r.approachDiameter, insideBar) : metricBarSize(r.approachDiameter, insideBar);
+    }
   if (decider == moves.size()) return r;
   r.found = true;
   const double unit = r.inch ? kMmPerInch : 1.0;
@@ -227,8 +225,7 @@ StockInference inferStock(const gcode::Program& program, const Timeline& run, co
   int largestTurnedLine = 0;
   for (std::size_t i = 0; i < moves.size(); ++i) {
     const Move& m = moves[i];
-    if (!isZPass(m) || zOf(m.path.end) >= 0.0 || diameterOf(m.path.start) < kOnCentre || inside[i])
-      continue;
+    if (!isZPass(m) || zOf(m.path.end) >= 0.0 || diameterOf(m.path.start) < kOnCentre || inside[i]) continue;
     const gcode::Block* block = blockOf(program, m);
     if (block && isCycleBlock(*block)) continue;
     const double d = std::max(diameterOf(m.path.start), diameterOf(m.path.end)) / unit;
@@ -289,23 +286,30 @@ StockInference inferStock(const gcode::Program& program, const Timeline& run, co
     }
   }
   if (r.insidePassDiameter > 0.0) {
-    const double bore = r.inch ? roundDown(r.insidePassDiameter - 0.0625, 0.0625)
-                               : std::floor(r.insidePassDiameter - 1.0 + 1e-9);
-    if (bore > 0.0 && bore < r.diameter) r.bore = bore;
-    else r.boreLine = 0;
+    const double bore =
+        r.inch ? roundDown(r.insidePassDiameter - 0.0625, 0.0625) : std::floor(r.insidePassDiameter - 1.0 + 1e-9);
+    if (bore > 0.0 && bore < r.diameter)
+      r.bore = bore;
+    else
+      r.boreLine = 0;
   }
   return r;
 }
 
-std::vector<Diagnostic> stockNotes(const io::JobHeader& stock, const StockInference* inference,
-                                   std::string_view gcode, int firstLine) {
+std::vector<Diagnostic> stockNotes(const io::JobHeader& stock, const StockInference* inference, std::string_view gcode,
+                                   int firstLine) {
   const std::string size = io::stockSizeText(stock);
   switch (stock.stockSource) {
-    case io::StockSource::Header: return {note(codes::kStockFromHeader, 0, {size})};
-    case io::StockSource::CommandLine: return {note(codes::kStockFromCommandLine, 0, {size})};
-    case io::StockSource::JobDetails: return {note(codes::kStockFromJobDetails, 0, {size})};
-    case io::StockSource::Default: return {note(codes::kStockDefault, 0, {size})};
-    case io::StockSource::Inferred: break;
+    case io::StockSource::Header:
+      return {note(codes::kStockFromHeader, 0, {size})};
+    case io::StockSource::CommandLine:
+      return {note(codes::kStockFromCommandLine, 0, {size})};
+    case io::StockSource::JobDetails:
+      return {note(codes::kStockFromJobDetails, 0, {size})};
+    case io::StockSource::Default:
+      return {note(codes::kStockDefault, 0, {size})};
+    case io::StockSource::Inferred:
+      break;
   }
   if (!inference || !inference->found) return {note(codes::kStockDefault, 0, {size})};
   const StockInference& r = *inference;
@@ -313,7 +317,8 @@ std::vector<Diagnostic> stockNotes(const io::JobHeader& stock, const StockInfere
   if (r.outsideFromInside)
     notes.push_back(note(codes::kStockInferredFromBore, r.boreLine, {size, number(r.largestCutDiameter)}));
   else if (r.largestTurnedDiameter > 0.0)
-    notes.push_back(note(codes::kStockFromLargestTurned, r.diameterLine, {size, lineText(gcode, firstLine, r.diameterLine)}));
+    notes.push_back(
+        note(codes::kStockFromLargestTurned, r.diameterLine, {size, lineText(gcode, firstLine, r.diameterLine)}));
   else
     notes.push_back(note(r.cycleStart ? codes::kStockFromCycleStart : codes::kStockFromFirstApproach, r.diameterLine,
                          {size, lineText(gcode, firstLine, r.diameterLine)}));

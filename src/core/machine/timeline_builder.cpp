@@ -47,7 +47,8 @@ class TimelineBuilder final : public MachineSink {
     if (m.kind == MoveKind::Rapid) feed = seconds > 0.0 ? m.path.length() / seconds * 60.0 : 0.0;
     // Speeds at both ends (mm/s): under G96 with G99 the feed changes with the rpm.
     double feedEnd = feed;
-    if (m.kind != MoveKind::Rapid && rpmStart > 0.0 && (m.kind == MoveKind::Thread || m.ctx.feedMode == FeedMode::PerRev))
+    if (m.kind != MoveKind::Rapid && rpmStart > 0.0 &&
+        (m.kind == MoveKind::Thread || m.ctx.feedMode == FeedMode::PerRev))
       feedEnd = feed * spindleRpm(m.ctx, xOf(m.path.end)) / rpmStart;
     const Ramp ramp = rampMove(m.path.length(), seconds, feed / 60.0, feedEnd / 60.0,
                                pathAcceleration(m.path, config_.accelX, config_.accelZ));
@@ -100,8 +101,7 @@ class TimelineBuilder final : public MachineSink {
     mv.spindle = c.ctx.spindle;
   }
 
-  void push(const MotionCall& m, const Segment& path, double seconds, double feed, double up = 0.0,
-            double down = 0.0) {
+  void push(const MotionCall& m, const Segment& path, double seconds, double feed, double up = 0.0, double down = 0.0) {
     Move& mv = out_.moves.emplace_back();
     stamp(mv, m, seconds);
     mv.kind = m.kind;
@@ -138,8 +138,10 @@ class TimelineBuilder final : public MachineSink {
       return;
     }
     // Where the faster-arriving axis is done: how far the other has come by then.
-    const Vec2 corner = tz < tx ? Vec2(zOf(p1), xOf(p0) + std::copysign(axisDistanceAt(tBoth, std::abs(dx), rateX, config_.accelX), dx))
-                                : Vec2(zOf(p0) + std::copysign(axisDistanceAt(tBoth, std::abs(dz), rateZ, config_.accelZ), dz), xOf(p1));
+    const Vec2 corner =
+        tz < tx
+            ? Vec2(zOf(p1), xOf(p0) + std::copysign(axisDistanceAt(tBoth, std::abs(dx), rateX, config_.accelX), dx))
+            : Vec2(zOf(p0) + std::copysign(axisDistanceAt(tBoth, std::abs(dz), rateZ, config_.accelZ), dz), xOf(p1));
     const Segment first = Segment::line(p0, corner);
     const Segment second = Segment::line(corner, p1);
     const double rampFast = tz < tx ? rampZ : rampX, rampSlow = tz < tx ? rampX : rampZ;

@@ -79,11 +79,16 @@ std::string gText(int g) { return fmt::format("G{:02}", g); }
 // The G number of a modal motion, as the notes quote it.
 int motionCode(MotionMode mode) {
   switch (mode) {
-    case MotionMode::Rapid: return 0;
-    case MotionMode::Line: return 1;
-    case MotionMode::ArcCw: return 2;
-    case MotionMode::ArcCcw: return 3;
-    case MotionMode::Thread: return 32;
+    case MotionMode::Rapid:
+      return 0;
+    case MotionMode::Line:
+      return 1;
+    case MotionMode::ArcCw:
+      return 2;
+    case MotionMode::ArcCcw:
+      return 3;
+    case MotionMode::Thread:
+      return 32;
   }
   return 1;
 }
@@ -173,12 +178,20 @@ BlockCodes codesOf(const gcode::Block& b, gcode::Dialect dialect) {
     const gcode::CodeInfo* row = gcode::findCode('G', g->code(), dialect);
     if (!row) continue;
     switch (row->action) {
-      case gcode::CodeAction::Thread: case gcode::CodeAction::BoxThreading: case gcode::CodeAction::ThreadCutting:
-      case gcode::CodeAction::Grooving: case gcode::CodeAction::FacePecking: case gcode::CodeAction::Drilling:
-      case gcode::CodeAction::SpotDrilling: case gcode::CodeAction::PeckDrilling:
-      case gcode::CodeAction::TurnRoughing: case gcode::CodeAction::FaceRoughing:
-      case gcode::CodeAction::PatternRepeating: case gcode::CodeAction::Finishing:
-      case gcode::CodeAction::BoxTurning: case gcode::CodeAction::BoxFacing:
+      case gcode::CodeAction::Thread:
+      case gcode::CodeAction::BoxThreading:
+      case gcode::CodeAction::ThreadCutting:
+      case gcode::CodeAction::Grooving:
+      case gcode::CodeAction::FacePecking:
+      case gcode::CodeAction::Drilling:
+      case gcode::CodeAction::SpotDrilling:
+      case gcode::CodeAction::PeckDrilling:
+      case gcode::CodeAction::TurnRoughing:
+      case gcode::CodeAction::FaceRoughing:
+      case gcode::CodeAction::PatternRepeating:
+      case gcode::CodeAction::Finishing:
+      case gcode::CodeAction::BoxTurning:
+      case gcode::CodeAction::BoxFacing:
         out.cycle = row->action;
         out.cycleNumber = g->code();
         break;
@@ -201,8 +214,8 @@ class Gatherer {
     const std::map<int, MotionUse> motion = recordMotion(run.moves, out_.beyondCentre);
     std::size_t begin = 0;
     for (const StateSnapshot& s : run.snapshots) {
-      const std::size_t end = std::clamp<std::size_t>(static_cast<std::size_t>(std::max(s.moveEnd, 0)), begin,
-                                                      run.moves.size());
+      const std::size_t end =
+          std::clamp<std::size_t>(static_cast<std::size_t>(std::max(s.moveEnd, 0)), begin, run.moves.size());
       const std::span<const Move> moves(run.moves.data() + begin, end - begin);
       begin = end;
       if (s.blockIndex < 0 || static_cast<std::size_t>(s.blockIndex) >= program_.blocks.size()) continue;
@@ -361,7 +374,9 @@ class Gatherer {
     const BlockCodes codes = codesOf(b, dialect_);
     using gcode::CodeAction;
     switch (codes.cycle) {
-      case CodeAction::Thread: case CodeAction::BoxThreading: case CodeAction::ThreadCutting: {
+      case CodeAction::Thread:
+      case CodeAction::BoxThreading:
+      case CodeAction::ThreadCutting: {
         if (!threads) break;
         // Inside when its own comment says so ("G76 X36.2 Z-22. ... (ID THREAD)", "(INTERNAL)");
         // else the station's passes decide, once the run is read (tool_inference.cpp).
@@ -372,17 +387,25 @@ class Gatherer {
         return;
       }
       case CodeAction::Grooving:
-        if (smallestX <= kOnCentreMm) note(ToolKind::Parting, ToolReason::Parting, gText(codes.cycleNumber) + " X0", b.line);
-        else note(ToolKind::Grooving, ToolReason::Grooving, gText(codes.cycleNumber), b.line);
+        if (smallestX <= kOnCentreMm)
+          note(ToolKind::Parting, ToolReason::Parting, gText(codes.cycleNumber) + " X0", b.line);
+        else
+          note(ToolKind::Grooving, ToolReason::Grooving, gText(codes.cycleNumber), b.line);
         return;
       case CodeAction::FacePecking:
-        if (offCentre) note(ToolKind::Grooving, ToolReason::Grooving, gText(codes.cycleNumber), b.line);
-        else drilling(deepestZ, gText(codes.cycleNumber), b.line);
+        if (offCentre)
+          note(ToolKind::Grooving, ToolReason::Grooving, gText(codes.cycleNumber), b.line);
+        else
+          drilling(deepestZ, gText(codes.cycleNumber), b.line);
         return;
-      case CodeAction::Drilling: case CodeAction::SpotDrilling: case CodeAction::PeckDrilling:
+      case CodeAction::Drilling:
+      case CodeAction::SpotDrilling:
+      case CodeAction::PeckDrilling:
         drilling(deepestZ, gText(codes.cycleNumber), b.line);
         return;
-      case CodeAction::TurnRoughing: case CodeAction::FaceRoughing: case CodeAction::PatternRepeating: {
+      case CodeAction::TurnRoughing:
+      case CodeAction::FaceRoughing:
+      case CodeAction::PatternRepeating: {
         // A negative finishing allowance leaves stock inside a bore (outside, for tools beyond the centre).
         const gcode::Word* allowance = b.find('U');
         const bool inward = allowance && allowance->expr < 0 && (allowance->value < 0.0) != out_.beyondCentre &&
@@ -394,7 +417,9 @@ class Gatherer {
           note(ToolKind::Turning, ToolReason::Turning, gText(codes.cycleNumber), b.line, false);
         return;
       }
-      case CodeAction::Finishing: case CodeAction::BoxTurning: case CodeAction::BoxFacing:
+      case CodeAction::Finishing:
+      case CodeAction::BoxTurning:
+      case CodeAction::BoxFacing:
         note(ToolKind::Turning, ToolReason::Turning, gText(codes.cycleNumber), b.line, false,
              codes.cycle == CodeAction::Finishing);
         return;

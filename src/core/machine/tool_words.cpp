@@ -95,17 +95,20 @@ double sizeMm(const std::string& up, double unitMm) {
     }
     const std::size_t j = skipSpaces(end);
     if (!fraction && (up.compare(j, 2, "MM") == 0 || up.compare(j, 6, "มม") == 0)) return v;
-    if (j < up.size() && (up[j] == '"' || up.compare(j, 4, "INCH") == 0 || up.compare(j, 2, "IN") == 0)) return v * 25.4;
+    if (j < up.size() && (up[j] == '"' || up.compare(j, 4, "INCH") == 0 || up.compare(j, 2, "IN") == 0))
+      return v * 25.4;
     if (fraction && (up.compare(j, 5, "DRILL") == 0 || up.compare(j, 3, "DIA") == 0)) return v * 25.4;
     if (up.compare(j, 3, "DIA") == 0) return v * unitMm;  // ".5 DIA"
     // Ø (C3 98), ⌀ (E2 8C 80), Φ (CE A6), "PHI" or "DIA" just before the number.
     std::size_t k = i;
     while (k > 0 && up[k - 1] == ' ') --k;
     const auto before = [&](std::string_view w) { return k >= w.size() && up.compare(k - w.size(), w.size(), w) == 0; };
-    if (before("\xC3\x98") || before("\xE2\x8C\x80") || before("\xCE\xA6") || before("PHI")) return fraction ? v * 25.4 : v;
+    if (before("\xC3\x98") || before("\xE2\x8C\x80") || before("\xCE\xA6") || before("PHI"))
+      return fraction ? v * 25.4 : v;
     // "FI16", "FI 8": Ø as Polish and Russian shops spell it (a word of its own).
     if (before("FI") && (k < 3 || !std::isalpha(static_cast<unsigned char>(up[k - 3])))) return fraction ? v * 25.4 : v;
-    const bool dWord = k == i && k >= 1 && up[k - 1] == 'D' && (k < 2 || !std::isalpha(static_cast<unsigned char>(up[k - 2])));
+    const bool dWord =
+        k == i && k >= 1 && up[k - 1] == 'D' && (k < 2 || !std::isalpha(static_cast<unsigned char>(up[k - 2])));
     if (before("DIA") || dWord) return fraction ? v * 25.4 : v * unitMm;
   }
   return 0.0;
@@ -133,14 +136,17 @@ CommentTool classifyComment(std::string_view comment, double unitMm) {
     }
     return false;
   };
-  if (hasWord(ws, {"VNMG", "VBMT", "VCMT"}) || angle("35")) out.insert = "vnmg";
-  else if (hasWord(ws, {"DNMG", "DCMT", "DCGT"}) || angle("55")) out.insert = "dnmg";
-  else if (hasWord(ws, {"CNMG", "CCMT"}) || angle("80")) out.insert = "cnmg";
-  out.finishing = hasPrefix(ws, {"FINISH", "FIN", "ACAB", "SCHLICHT", "WYKANCZ"}) ||
-                  hasText(up, {"กลึงละเอียด", "ละเอียด"});
+  if (hasWord(ws, {"VNMG", "VBMT", "VCMT"}) || angle("35"))
+    out.insert = "vnmg";
+  else if (hasWord(ws, {"DNMG", "DCMT", "DCGT"}) || angle("55"))
+    out.insert = "dnmg";
+  else if (hasWord(ws, {"CNMG", "CCMT"}) || angle("80"))
+    out.insert = "cnmg";
+  out.finishing =
+      hasPrefix(ws, {"FINISH", "FIN", "ACAB", "SCHLICHT", "WYKANCZ"}) || hasText(up, {"กลึงละเอียด", "ละเอียด"});
 
-  if (followedBy(ws, "CENTER", "DRILL") || followedBy(ws, "CENTRE", "DRILL") || hasWord(ws, {"SPOT", "CENTERDRILL", "CENTRER", "CENTRAGE", "ZENTRIER"}) ||
-      hasText(up, {"นำศูนย์", "รูศูนย์"})) {
+  if (followedBy(ws, "CENTER", "DRILL") || followedBy(ws, "CENTRE", "DRILL") ||
+      hasWord(ws, {"SPOT", "CENTERDRILL", "CENTRER", "CENTRAGE", "ZENTRIER"}) || hasText(up, {"นำศูนย์", "รูศูนย์"})) {
     out.kind = ToolKind::CentreDrill;
   } else if (hasPrefix(ws, {"THREAD", "THD", "THRD", "FILET", "ROSCA", "ROSCADO", "GEWINDE", "GWINT"}) ||
              hasText(up, {"เกลียว"})) {
@@ -187,7 +193,8 @@ std::vector<CommentToolWord> toolWordsIn(std::string_view comment) {
   for (std::size_t n = 0; n + 1 < out.size(); ++n) {
     std::string_view& t = out[n].text;
     t = t.substr(0, starts[n + 1] - starts[n]);
-    while (!t.empty() && (t.back() == ' ' || t.back() == ',' || t.back() == ';' || t.back() == '/' || t.back() == '-')) t.remove_suffix(1);
+    while (!t.empty() && (t.back() == ' ' || t.back() == ',' || t.back() == ';' || t.back() == '/' || t.back() == '-'))
+      t.remove_suffix(1);
   }
   return out;
 }

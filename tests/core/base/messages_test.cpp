@@ -21,14 +21,28 @@ TEST(Messages, EveryCodeIsUniqueAndHasBothLanguages) {
 
 // Issue 28 item 8: the stock's size reads in Thai units in Thai ("มม.", "นิ้ว"), as is, in English.
 TEST(Messages, StockSizesSpeakThaiUnits) {
-  const Diagnostic mm{Severity::Note, codes::kStockFromHeader, {}, {"\xC3\x98" "50 x 100 mm"}};
+  const Diagnostic mm{Severity::Note,
+                      codes::kStockFromHeader,
+                      {},
+                      {"\xC3\x98"
+                       "50 x 100 mm"}};
   EXPECT_EQ(formatMessage(mm, Lang::Th), "ชิ้นงาน Ø50 x 100 มม. จากส่วนหัวของงานในไฟล์");
   EXPECT_EQ(formatMessage(mm, Lang::En), "stock Ø50 x 100 mm from the file's job header");
-  const Diagnostic inch{Severity::Note, codes::kStockFromHeader, {}, {"\xC3\x98" "2 x 4 in"}};
+  const Diagnostic inch{Severity::Note,
+                        codes::kStockFromHeader,
+                        {},
+                        {"\xC3\x98"
+                         "2 x 4 in"}};
   EXPECT_EQ(formatMessage(inch, Lang::Th), "ชิ้นงาน Ø2 x 4 นิ้ว จากส่วนหัวของงานในไฟล์");
   // Not a size: left alone.
-  const Diagnostic word{Severity::Note, codes::kStockFromFirstApproach, {}, {"\xC3\x98" "3 x 25 mm", "N10 G00 X1.5 (come in)"}};
-  EXPECT_EQ(formatMessage(word, Lang::Th), "ชิ้นงาน Ø3 x 25 มม. ประมาณจาก N10 G00 X1.5 (come in) (ตำแหน่งเข้าหาชิ้นงานครั้งแรก)");
+  const Diagnostic word{Severity::Note,
+                        codes::kStockFromFirstApproach,
+                        {},
+                        {"\xC3\x98"
+                         "3 x 25 mm",
+                         "N10 G00 X1.5 (come in)"}};
+  EXPECT_EQ(formatMessage(word, Lang::Th),
+            "ชิ้นงาน Ø3 x 25 มม. ประมาณจาก N10 G00 X1.5 (come in) (ตำแหน่งเข้าหาชิ้นงานครั้งแรก)");
 }
 
 TEST(Messages, UnknownCodeFallsBackToCodeAndArgs) {
@@ -43,7 +57,7 @@ TEST(Messages, TheGuiNamesItsOwnPlacesNotFlags) {
   for (const auto& m : allMessages()) {
     const bool namesAFlag = m.en.find("--") != std::string_view::npos || m.th.find("--") != std::string_view::npos;
     if (!namesAFlag || m.code == "I150") continue;  // I150: the stock came from --stock, the CLI only
-    if (m.code.front() == 'C') continue;  // the CLI's own texts (usage, options): never shown in the GUI
+    if (m.code.front() == 'C') continue;            // the CLI's own texts (usage, options): never shown in the GUI
     const MessageText* gui = findGuiMessage(m.code);
     ASSERT_NE(gui, nullptr) << m.code << " names a flag and has no GUI text";
     EXPECT_EQ(gui->en.find("--"), std::string_view::npos) << m.code;
@@ -52,13 +66,16 @@ TEST(Messages, TheGuiNamesItsOwnPlacesNotFlags) {
     for (int i = 0; i < 6; ++i) {
       const std::string slot = "{" + std::to_string(i) + "}";
       if (m.code == "I102" && i == 2) continue;  // the dialect's CLI name (haas), only for --dialect
-      EXPECT_EQ(m.en.find(slot) != std::string_view::npos, gui->en.find(slot) != std::string_view::npos) << m.code << slot;
-      EXPECT_EQ(m.th.find(slot) != std::string_view::npos, gui->th.find(slot) != std::string_view::npos) << m.code << slot;
+      EXPECT_EQ(m.en.find(slot) != std::string_view::npos, gui->en.find(slot) != std::string_view::npos)
+          << m.code << slot;
+      EXPECT_EQ(m.th.find(slot) != std::string_view::npos, gui->th.find(slot) != std::string_view::npos)
+          << m.code << slot;
     }
   }
   Diagnostic stock{Severity::Note, "I155", {}, {"Ø50 x 100 mm"}};
-  EXPECT_EQ(formatMessage(stock, Lang::En, Surface::Gui),
-            "stock Ø50 x 100 mm is the default: the program has no approach to infer it from; set it in File ▸ Job details");
+  EXPECT_EQ(
+      formatMessage(stock, Lang::En, Surface::Gui),
+      "stock Ø50 x 100 mm is the default: the program has no approach to infer it from; set it in File ▸ Job details");
   EXPECT_EQ(formatMessage(stock, Lang::Th, Surface::Gui),
             "ชิ้นงาน Ø50 x 100 มม. เป็นค่าเริ่มต้น: โปรแกรมไม่มีตำแหน่งเข้าหาชิ้นงานให้ประมาณได้ ตั้งค่าได้ที่ แฟ้ม ▸ รายละเอียดงาน");
   EXPECT_EQ(formatMessage(stock, Lang::En, Surface::Cli), formatMessage(stock, Lang::En));
@@ -68,7 +85,8 @@ TEST(Messages, TheGuiNamesItsOwnPlacesNotFlags) {
             "blocks with errors that are Haas forms: 3; choose Haas in Tool setting ▸ G-code dialect");
   EXPECT_EQ(formatMessage(dialect, Lang::Th, Surface::Gui),
             "บล็อกที่ผิดพลาด 3 บล็อกเป็นรูปแบบของ Haas: เลือก Haas ที่ ตั้งค่ามีดตัด ▸ ภาษาจีโค้ด");
-  EXPECT_EQ(formatMessage(dialect, Lang::En), "blocks with errors that are Haas forms: 3; choose the Haas dialect (--dialect haas)");
+  EXPECT_EQ(formatMessage(dialect, Lang::En),
+            "blocks with errors that are Haas forms: 3; choose the Haas dialect (--dialect haas)");
 }
 
 }  // namespace

@@ -41,20 +41,20 @@ struct Profile {
 std::vector<Segment> outsideTowardsChuck() {
   const double taper30 = 2 / std::tan(30 * testing::kDeg);  // 30-degree taper rising 2 mm
   return PathBuilder(30, 25)
-      .lineTo(2, 8)                         // start-up (G42 G00)
-      .lineTo(0, 8)                         // approach the chamfer
-      .lineTo(-2, 10)                       // 45-degree chamfer
-      .lineTo(-8, 10)                       // diameter 20
-      .lineTo(-8 - taper30, 12)             // 30-degree taper
-      .lineTo(-16, 12)                      // diameter 24
+      .lineTo(2, 8)                           // start-up (G42 G00)
+      .lineTo(0, 8)                           // approach the chamfer
+      .lineTo(-2, 10)                         // 45-degree chamfer
+      .lineTo(-8, 10)                         // diameter 20
+      .lineTo(-8 - taper30, 12)               // 30-degree taper
+      .lineTo(-16, 12)                        // diameter 24
       .arcTo(-18, 14, -16, 14, /*cw=*/true)   // G02 R2 concave fillet
-      .lineTo(-18, 17)                      // face up
+      .lineTo(-18, 17)                        // face up
       .arcTo(-20, 19, -20, 17, /*cw=*/false)  // G03 R2 convex corner
-      .lineTo(-26, 19)                      // diameter 38
-      .lineTo(-26, 21)                      // step
-      .lineTo(-30, 21)                      // diameter 42
-      .lineTo(-30, 24)                      // face up, off the part
-      .lineTo(30, 30)                       // cancel (G40 G00)
+      .lineTo(-26, 19)                        // diameter 38
+      .lineTo(-26, 21)                        // step
+      .lineTo(-30, 21)                        // diameter 42
+      .lineTo(-30, 24)                        // face up, off the part
+      .lineTo(30, 30)                         // cancel (G40 G00)
       .build();
 }
 
@@ -121,8 +121,9 @@ TEST_P(ProfileAllTips, NoseTouchesTheContourEverywhereItCanAndNeverCutsIntoIt) {
       if (isBridge(piece, m)) continue;
       for (int j = 1; j < 50; ++j) {
         const Vec2 c = piece.pointAt(j / 50.0);
-        const double fromCarrier = m.isArc() ? std::abs((c - m.centre).norm() - m.radius())
-                                             : std::abs((c - m.start).dot(Vec2(-m.startTangent().y(), m.startTangent().x())));
+        const double fromCarrier = m.isArc()
+                                       ? std::abs((c - m.centre).norm() - m.radius())
+                                       : std::abs((c - m.start).dot(Vec2(-m.startTangent().y(), m.startTangent().x())));
         EXPECT_NEAR(fromCarrier, R, kTol);
       }
     }
@@ -164,8 +165,8 @@ TEST_P(ProfileAllTips, NoseTouchesTheContourEverywhereItCanAndNeverCutsIntoIt) {
     if (std::abs(std::sin(beta - alpha)) < 1e-9) continue;
     const double k = 1 / std::cos((alpha - beta) / 2);
     const Vec2 tv = tipVector(tip);
-    const Vec2 seed = a.end + R * Vec2(tv.x() - c * std::sin((alpha + beta) / 2) * k,
-                                       tv.y() + c * std::cos((alpha + beta) / 2) * k);
+    const Vec2 seed =
+        a.end + R * Vec2(tv.x() - c * std::sin((alpha + beta) / 2) * k, tv.y() + c * std::cos((alpha + beta) / 2) * k);
     SCOPED_TRACE(::testing::Message() << "corner after move " << i);
     EXPECT_VEC_NEAR(controlledPoint(testing::piecesOf(out, i).back().end, R, tip), seed, 1e-9);
   }
@@ -185,11 +186,11 @@ TEST_P(ProfileAllTips, ContourPathDoesNotDependOnTheTip) {
   EXPECT_VEC_NEAR(mine.pieces.front().path.start - centre.pieces.front().path.start, -R * tipVector(tip), 1e-12);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    AllProfiles, ProfileAllTips, ::testing::Combine(::testing::ValuesIn(profiles()), ::testing::Range(0, 10)),
-    [](const ::testing::TestParamInfo<ProfileAllTips::ParamType>& info) {
-      return std::get<0>(info.param).name + "_Tip" + std::to_string(std::get<1>(info.param));
-    });
+INSTANTIATE_TEST_SUITE_P(AllProfiles, ProfileAllTips,
+                         ::testing::Combine(::testing::ValuesIn(profiles()), ::testing::Range(0, 10)),
+                         [](const ::testing::TestParamInfo<ProfileAllTips::ParamType>& info) {
+                           return std::get<0>(info.param).name + "_Tip" + std::to_string(std::get<1>(info.param));
+                         });
 
 // The profile's own shape, checked once so the cases above test what they claim.
 TEST(ProfileShape, HasTapersArcsStepsAndFaces) {

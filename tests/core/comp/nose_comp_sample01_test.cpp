@@ -18,19 +18,19 @@ constexpr double R = 0.8;
 constexpr int kTip = 3;
 
 std::vector<Segment> finishingStretch() {
-  return PathBuilder(100, 50)               // N320 G00 X100. Z100.
-      .lineTo(2, 12)                        // N330 G42 G00 X24. Z2.   start-up
-      .lineTo(0, 12)                        // N340 G01 Z0.
-      .lineTo(-3, 15)                       // N350 X30. Z-3.          3x45 chamfer
-      .lineTo(-20, 15)                      // N360 Z-20.
-      .lineTo(-20, 18)                      // N370 X36.
-      .arcTo(-22, 20, -22, 18, false)       // N380 G03 X40. Z-22. R2. (centre left of the chord)
-      .lineTo(-40, 20)                      // N390 G01 Z-40.
-      .lineTo(-40, 22)                      // N400 X44.
-      .lineTo(-41, 23)                      // N410 X46. Z-41.         1x45 chamfer
-      .lineTo(-60, 23)                      // N420 Z-60.
-      .lineTo(-60, 26)                      // N430 X52.
-      .lineTo(100, 50)                      // N440 G40 G00 X100. Z100. cancel
+  return PathBuilder(100, 50)          // N320 G00 X100. Z100.
+      .lineTo(2, 12)                   // N330 G42 G00 X24. Z2.   start-up
+      .lineTo(0, 12)                   // N340 G01 Z0.
+      .lineTo(-3, 15)                  // N350 X30. Z-3.          3x45 chamfer
+      .lineTo(-20, 15)                 // N360 Z-20.
+      .lineTo(-20, 18)                 // N370 X36.
+      .arcTo(-22, 20, -22, 18, false)  // N380 G03 X40. Z-22. R2. (centre left of the chord)
+      .lineTo(-40, 20)                 // N390 G01 Z-40.
+      .lineTo(-40, 22)                 // N400 X44.
+      .lineTo(-41, 23)                 // N410 X46. Z-41.         1x45 chamfer
+      .lineTo(-60, 23)                 // N420 Z-60.
+      .lineTo(-60, 26)                 // N430 X52.
+      .lineTo(100, 50)                 // N440 G40 G00 X100. Z100. cancel
       .build();
 }
 
@@ -64,10 +64,10 @@ TEST(Sample01, FinishingStretchNoseCentreCorners) {
 
   const double t = 0.8 * (std::sqrt(2.0) - 1);
   const Vec2 expected[][2] = {
-      {{100.8, 50.8}, {2, 12.8}},        {{2, 12.8}, {t, 12.8}},           {{t, 12.8}, {-3 + t, 15.8}},
-      {{-3 + t, 15.8}, {-19.2, 15.8}},   {{-19.2, 15.8}, {-19.2, 18}},     {{-19.2, 18}, {-22, 20.8}},
-      {{-22, 20.8}, {-39.2, 20.8}},      {{-39.2, 20.8}, {-39.2, 22 + t}}, {{-39.2, 22 + t}, {-41 + t, 23.8}},
-      {{-41 + t, 23.8}, {-59.2, 23.8}},  {{-59.2, 23.8}, {-59.2, 26}},     {{-59.2, 26}, {100.8, 50.8}},
+      {{100.8, 50.8}, {2, 12.8}},       {{2, 12.8}, {t, 12.8}},           {{t, 12.8}, {-3 + t, 15.8}},
+      {{-3 + t, 15.8}, {-19.2, 15.8}},  {{-19.2, 15.8}, {-19.2, 18}},     {{-19.2, 18}, {-22, 20.8}},
+      {{-22, 20.8}, {-39.2, 20.8}},     {{-39.2, 20.8}, {-39.2, 22 + t}}, {{-39.2, 22 + t}, {-41 + t, 23.8}},
+      {{-41 + t, 23.8}, {-59.2, 23.8}}, {{-59.2, 23.8}, {-59.2, 26}},     {{-59.2, 26}, {100.8, 50.8}},
   };
   for (int i = 0; i < 12; ++i) {
     SCOPED_TRACE(::testing::Message() << "piece " << i);

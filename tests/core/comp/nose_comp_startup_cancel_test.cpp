@@ -160,7 +160,8 @@ TEST(StartUp, TipZeroAndNineStartAtTheProgrammedPoint) {
 
 // R = 0 (a sharp tool): the path is returned unchanged, one piece per move.
 TEST(StartUp, ZeroRadiusLeavesThePathAlone) {
-  const auto moves = PathBuilder(50, 30).lineTo(2, 10).lineTo(-10, 10).arcTo(-12, 12, -12, 10, false).lineTo(50, 30).build();
+  const auto moves =
+      PathBuilder(50, 30).lineTo(2, 10).lineTo(-10, 10).arcTo(-12, 12, -12, 10, false).lineTo(50, 30).build();
   const CompOutput out = compensate(CompInput{moves, Side::Right, 0.0, 3, true});
   ASSERT_EQ(out.pieces.size(), moves.size());
   for (std::size_t i = 0; i < moves.size(); ++i) {

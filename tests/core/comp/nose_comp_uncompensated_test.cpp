@@ -60,8 +60,8 @@ INSTANTIATE_TEST_SUITE_P(Angles, OutsideTaper, ::testing::Values(15, 30, 45, 60,
 // R*(1,1) = R*sqrt2*u, so q lies on the ray from the moved centre and is
 // |2 - (2 - R*sqrt2)| = R*sqrt2 from the path: leftover R*(sqrt2 - 1).
 TEST(UncompensatedArc, ConvexR2LeavesRTimesRootTwoMinusOneAtItsMiddle) {
-  const auto contour = PathBuilder(-10, 15).lineTo(-20, 15).lineTo(-20, 18).arcTo(-22, 20, -22, 18, false)
-                           .lineTo(-40, 20).build();
+  const auto contour =
+      PathBuilder(-10, 15).lineTo(-20, 15).lineTo(-20, 18).arcTo(-22, 20, -22, 18, false).lineTo(-40, 20).build();
   const Vec2 q = contour[2].pointAt(0.5);
   EXPECT_VEC_NEAR(q, Vec2(-22 + std::sqrt(2.0), 18 + std::sqrt(2.0)), 1e-12);
   EXPECT_NEAR(leftover(contour, 3, q), R * (std::sqrt(2.0) - 1), 1e-9);

@@ -209,8 +209,7 @@ std::shared_ptr<const job::Job> compile(const std::string& gcode, const machine:
   return job::makeJob(std::move(input));
 }
 
-constexpr const char* kTurnTo40 =
-    "G21 G99\nT0101\nG97 S800 M03\nG00 X52 Z2\nX40\nG01 Z-30 F0.2\nG00 X52\nZ2\nM30\n";
+constexpr const char* kTurnTo40 = "G21 G99\nT0101\nG97 S800 M03\nG00 X52 Z2\nX40\nG01 Z-30 F0.2\nG00 X52\nZ2\nM30\n";
 
 TEST(Control, AMisreadDiameterShowsInThePartCheckAsAnOversizeDiameter) {
   Control c(shippedSetup(), bar50x100(), gcode::Dialect::Fanuc);
@@ -241,7 +240,8 @@ TEST(Control, AMisreadDiameterShowsInThePartCheckAsAnOversizeDiameter) {
   // The right reading: the same check finds nothing.
   c.measure(1, Axis::X, measured);
   const auto right = compile(kTurnTo40, c.runSetup());
-  EXPECT_TRUE(cut::checkPart(*right->timeline(), *ideal->timeline(), cut::CutSetup::from(bar50x100(), c.runSetup())).defects.empty());
+  EXPECT_TRUE(cut::checkPart(*right->timeline(), *ideal->timeline(), cut::CutSetup::from(bar50x100(), c.runSetup()))
+                  .defects.empty());
 }
 
 TEST(Control, TheWrongStationAndATouchWithTheSpindleStoppedAreTheStudentsErrors) {
@@ -324,16 +324,24 @@ TEST(Control, OverridesChangeTheCycleTimeAsTheControlWould) {
       "G21 G99\nT0101\nG97 S800 M03\nG00 X40 Z2\nG01 Z-30 F0.2\nG98 G01 X50 F100\nG04 X1.0\nG00 X60 Z5\n"
       "G99 G00 X30 Z5\nG32 Z-20 F1.5\nG00 X60\nM30\n";
   const auto job = compile(program, shippedSetup());
-  ASSERT_TRUE(job->timeline()) << (job->diagnostics().empty() ? "" : formatMessage(job->diagnostics().front(), Lang::En));
+  ASSERT_TRUE(job->timeline()) << (job->diagnostics().empty() ? ""
+                                                              : formatMessage(job->diagnostics().front(), Lang::En));
   const machine::Timeline& t = *job->timeline();
   double rapid = 0, perRev = 0, perMin = 0, dwell = 0, thread = 0;
   for (const machine::Move& m : t.moves) {
     const double d = m.tEnd - m.tStart;
     switch (m.kind) {
-      case machine::MoveKind::Rapid: rapid += d; break;
-      case machine::MoveKind::Dwell: dwell += d; break;
-      case machine::MoveKind::Thread: thread += d; break;
-      default: (m.line == 6 ? perMin : perRev) += d;
+      case machine::MoveKind::Rapid:
+        rapid += d;
+        break;
+      case machine::MoveKind::Dwell:
+        dwell += d;
+        break;
+      case machine::MoveKind::Thread:
+        thread += d;
+        break;
+      default:
+        (m.line == 6 ? perMin : perRev) += d;
     }
   }
   ASSERT_GT(rapid * perRev * perMin * dwell * thread, 0.0);

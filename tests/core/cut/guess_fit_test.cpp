@@ -138,7 +138,7 @@ TEST(GuessFit, AGuessedBladeWhoseHolderTouchesGivesWayToALongerBladeOfTheSameWid
 
   // Fitted: the parting blade, a note on the G75 block, and a clean run.
   EXPECT_EQ(r->fit.setup.tools.libraryId(2), "parting-3mm");
-  EXPECT_TRUE(r->fit.setup.tools.isGuess(2));  // still Klueng's guess
+  EXPECT_TRUE(r->fit.setup.tools.isGuess(2));                      // still Klueng's guess
   EXPECT_EQ(r->fit.setup.tools.libraryId(1), first.libraryId(1));  // the turning tool never touched
   ASSERT_EQ(r->fit.notes.size(), 1u);
   const Diagnostic& note = r->fit.notes[0];

@@ -53,9 +53,9 @@ TEST(PartFeatures, HandCarvedProfileReadsAsADraughtsmanDrawsIt) {
   std::vector<FeatureKind> kinds;
   for (const PartFeature& f : p.outside) kinds.push_back(f.kind);
   using K = FeatureKind;
-  const std::vector<FeatureKind> expected{K::Face,    K::Chamfer, K::Cylinder, K::Face, K::Groove, K::Face,
-                                          K::Cylinder, K::Face,   K::Arc,      K::Cylinder, K::Taper, K::Cylinder,
-                                          K::Arc,     K::Face,    K::Cylinder, K::Face};
+  const std::vector<FeatureKind> expected{K::Face,     K::Chamfer, K::Cylinder, K::Face,     K::Groove, K::Face,
+                                          K::Cylinder, K::Face,    K::Arc,      K::Cylinder, K::Taper,  K::Cylinder,
+                                          K::Arc,      K::Face,    K::Cylinder, K::Face};
   ASSERT_EQ(kinds, expected) << [&] {
     std::string all;
     for (const PartFeature& f : p.outside) all += describeFeature(f, Lang::En) + "\n";
@@ -215,7 +215,8 @@ TEST(PartFeatures, Sample01HasTheDrawnFeatures) {
 // the programmed one, r(1 + b - sqrt(1 + b²))/b further right along Z (b = 0.2).
 TEST(PartFeatures, AShallowCornerIsTheTwoLinesMeetingNotAnArc) {
   const testing::CutRun c = cutText(
-      "Taper pin\nPin TP-1\nSteel S45C\n132\n180\nKlueng tests\nO2001 (1:5 TAPER PIN)\nG21 G40 G99\nT0101\nG96 S200 M03\nG50 S2500\nG00 X34. Z2. M08\n"
+      "Taper pin\nPin TP-1\nSteel S45C\n132\n180\nKlueng tests\nO2001 (1:5 TAPER PIN)\nG21 G40 G99\nT0101\nG96 S200 "
+      "M03\nG50 S2500\nG00 X34. Z2. M08\n"
       "G01 Z0. F0.15\nX-1.6\nG00 X20. Z2.\nG01 Z-20.\nX28. Z-40.\nZ-50.\nX34.\nG00 X100. Z100.\nM30\n");
   const PartFeatures p = partFeatures(c.sim->stock());
   const double r = 0.8, b = 0.2;
@@ -326,8 +327,15 @@ TEST(PartFeatures, ShortPiecesInABoreMouthKeepTheirOrder) {
   Stock s(30.0, 40.0, 0.2);
   // Bore radius per column from the right face (z -0.1, -0.3, ...), as the fuzzer's cut left it
   // (the last one a rounding's 1.3e-15 above the axis: the bore's run reaches Z-2).
-  const double bore[] = {1.5, 1.482500000000001, 1.4125000000000001, 1.3425000000000014, 1.2725000000000004,
-                         1.2025000000000019, 1.0500000000000056, 0.64999999999999991, 0.25000000000000844,
+  const double bore[] = {1.5,
+                         1.482500000000001,
+                         1.4125000000000001,
+                         1.3425000000000014,
+                         1.2725000000000004,
+                         1.2025000000000019,
+                         1.0500000000000056,
+                         0.64999999999999991,
+                         0.25000000000000844,
                          1.3322676295501878e-15};
   const int n = s.columnCount();
   for (int k = 0; k < 10; ++k) s.remove(n - 1 - k, 0.0, bore[k]);

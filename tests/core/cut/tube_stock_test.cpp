@@ -95,14 +95,15 @@ TEST(SpindleBore, WithoutASpindleBoreTheDrillHitsTheChuckBody) {
   const Cut c = cut(kDrillThrough, 0.0);
   ASSERT_TRUE(c.sim->alarm().has_value());
   EXPECT_EQ(c.sim->alarm()->code, "A304");
-  EXPECT_EQ(c.sim->alarm()->range.line, 10);  // N40
+  EXPECT_EQ(c.sim->alarm()->range.line, 10);                        // N40
   EXPECT_NEAR(std::stod(c.sim->alarm()->args.at(0)), -60.0, 0.05);  // the part's left end
 }
 
 TEST(SpindleBore, ToolIntoAJawIsStillACrash) {
   // Tube Ø118: the jaws hold Z-80..-65 from r59 outward.
-  const Cut c = cut("Bush\nB-1\nSteel\n1118x90\n180\nMe\n"
-                    "N10 G21 G97 S500 M03\nN20 T0101\nN30 G00 X116. Z2.\nN40 G01 Z-70. F0.2\nN50 M30\n");
+  const Cut c =
+      cut("Bush\nB-1\nSteel\n1118x90\n180\nMe\n"
+          "N10 G21 G97 S500 M03\nN20 T0101\nN30 G00 X116. Z2.\nN40 G01 Z-70. F0.2\nN50 M30\n");
   ASSERT_TRUE(c.sim->alarm().has_value());
   EXPECT_EQ(c.sim->alarm()->code, "A304");
   EXPECT_EQ(c.sim->alarm()->range.line, 10);

@@ -112,8 +112,11 @@ TEST(Generator, ArcStepsAreTurnedAndArcsThatDoNotMeetAreRefused) {
   OutsideStep hollow{StepKind::Arc, 46.0, 3.0};
   hollow.radius = 3.0;  // a quarter fillet from Ø40 at Z-40 up to Ø46 at Z-43, centre Z-40 X46
   hollow.concave = true;
-  part.outside = {{StepKind::Cylinder, 30.0, 20.0, EdgeBreak::Chamfer, 1.0}, bulge,
-                  {StepKind::Cylinder, 40.0, 15.0}, hollow, {StepKind::Cylinder, 46.0, 17.0}};
+  part.outside = {{StepKind::Cylinder, 30.0, 20.0, EdgeBreak::Chamfer, 1.0},
+                  bulge,
+                  {StepKind::Cylinder, 40.0, 15.0},
+                  hollow,
+                  {StepKind::Cylinder, 46.0, 17.0}};
   GenerateOptions options;
   options.machine = setup.machine;
   for (const gcode::Dialect dialect : {gcode::Dialect::Fanuc, gcode::Dialect::Haas, gcode::Dialect::Classic}) {
@@ -144,8 +147,9 @@ TEST(Generator, ArcStepsAreTurnedAndArcsThatDoNotMeetAreRefused) {
   EXPECT_FALSE(generateProgram(part, options, &why));
   ASSERT_FALSE(why.empty());
   EXPECT_EQ(why[0].code, "E517");
-  EXPECT_EQ(formatMessage(why[0], Lang::En),
-            "Step 2's arc R2. does not meet its neighbours: from Ø30. to Ø40. its ends are 7.071 mm apart, more than 2 × R");
+  EXPECT_EQ(
+      formatMessage(why[0], Lang::En),
+      "Step 2's arc R2. does not meet its neighbours: from Ø30. to Ø40. its ends are 7.071 mm apart, more than 2 × R");
   // R10 over Ø30 to Ø34 in 8 mm bulges over its top (centre Z-26.21 X7.16) and falls back: an undercut.
   part.outside[1] = {StepKind::Arc, 34.0, 8.0};
   part.outside[1].radius = 10.0;
@@ -174,12 +178,13 @@ TEST(Generator, PartFilesReadBoresAndArcs) {
   EXPECT_EQ(arc.value->outside[1].kind, StepKind::Arc);
   EXPECT_DOUBLE_EQ(arc.value->outside[1].radius, 5.0);
   EXPECT_TRUE(arc.value->outside[2].concave);
-  const auto noRadius = readPartDesign(
-      R"({"stock": {"diameter": 50, "length": 90}, "outside": [{"arc": 40, "length": 5}]})", "n.json");
+  const auto noRadius =
+      readPartDesign(R"({"stock": {"diameter": 50, "length": 90}, "outside": [{"arc": 40, "length": 5}]})", "n.json");
   EXPECT_EQ(noRadius.diagnostics.at(0).code, "F181");
   EXPECT_EQ(noRadius.diagnostics.at(0).args.at(1), "outside[0].radius");
   const auto holeTooBig = readPartDesign(
-      R"({"stock": {"diameter": 50, "length": 90, "bore": 50}, "outside": [{"cylinder": 30, "length": 20}]})", "h.json");
+      R"({"stock": {"diameter": 50, "length": 90, "bore": 50}, "outside": [{"cylinder": 30, "length": 20}]})",
+      "h.json");
   EXPECT_EQ(holeTooBig.diagnostics.at(0).code, "F182");
 }
 

@@ -65,7 +65,7 @@ inline GenerateOptions optionsFor(gcode::Dialect dialect, const machine::Machine
 }
 
 inline const cut::PartFeature* find(const cut::PartFeatures& p, cut::FeatureKind kind, const std::string& label,
-                             bool inside = false) {
+                                    bool inside = false) {
   for (const cut::PartFeature& f : inside ? p.inside : p.outside)
     if (f.kind == kind && cut::featureLabel(f, Lang::En) == label) return &f;
   return nullptr;

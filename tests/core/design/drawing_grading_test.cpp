@@ -49,7 +49,9 @@ class DrawingGrading : public ::testing::Test {
     ASSERT_EQ(against_.drawing.size(), 5u);
   }
   void TearDown() override { fs::remove_all(dir_); }
-  void student(const std::string& name, const std::string& text) { std::ofstream(dir_ / name, std::ios::binary) << text; }
+  void student(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name, std::ios::binary) << text;
+  }
   std::map<std::string, job::ClassRow> grade() {
     const machine::MachineSetup setup = machine::loadMachineSetup(KLUENG_SOURCE_DIR).setup;
     job::JobInput request;
@@ -76,7 +78,8 @@ void expectMeasured(const job::ClassRow& r, std::size_t k, double mm, cut::Verdi
 TEST_F(DrawingGrading, OneInOneOutOneAtTheLimit) {
   student("in.nc", sample_);
   // Ø40 cut 0.02 small (js6 allows 0.008), the first shoulder 0.3 deep (20.3 against 20 ±0.1).
-  student("out.nc", replaced(replaced(sample_, "N380 G03 X40. Z-22.", "N380 G03 X39.98 Z-22."), "N360 Z-20.", "N360 Z-20.3"));
+  student("out.nc",
+          replaced(replaced(sample_, "N380 G03 X40. Z-22.", "N380 G03 X39.98 Z-22."), "N360 Z-20.", "N360 Z-20.3"));
   // Ø46 exactly at its lower limit 45.95, Ø40 at js6's lower limit 39.992: in.
   student("limit.nc", replaced(replaced(sample_, "N410 X46. Z-41.\nN420 Z-60.", "N410 X45.95 Z-41.\nN420 Z-60."),
                                "N380 G03 X40. Z-22.", "N380 G03 X39.992 Z-22."));
@@ -140,7 +143,8 @@ TEST_F(DrawingGrading, OneInOneOutOneAtTheLimit) {
 
 TEST_F(DrawingGrading, AMissingFeatureIsOut) {
   // The drawing has a bore the students' solid shaft does not.
-  against_.drawing.push_back({cut::DimensionKind::Diameter, cut::FeatureSide::Inside, 20.0, {0.021, 0.0, "H7"}, 0.0, -10.0});
+  against_.drawing.push_back(
+      {cut::DimensionKind::Diameter, cut::FeatureSide::Inside, 20.0, {0.021, 0.0, "H7"}, 0.0, -10.0});
   student("in.nc", sample_);
   const auto rows = grade();
   const job::ClassRow& r = rows.at("in.nc");

@@ -51,7 +51,8 @@ TEST_P(EveryDialect, Sample01sPartIsTurnedToTheDrawing) {
   ASSERT_NE(r2, nullptr);
   EXPECT_NEAR(r2->centre.x(), -22.0, 0.01);
   // Part check: no gouge, nothing left beyond 0.01 mm.
-  const cut::PartCheck check = cut::checkPart(*t.job->timeline(), t.programmed, cut::CutSetup::from(io::parseProgramFile(program->text).value->header, setup));
+  const cut::PartCheck check = cut::checkPart(
+      *t.job->timeline(), t.programmed, cut::CutSetup::from(io::parseProgramFile(program->text).value->header, setup));
   EXPECT_TRUE(check.defects.empty()) << check.defects.size();
 }
 
@@ -85,7 +86,8 @@ TEST(Generator, GroovesArePlungedWithTheBladeToTheirWidthAndDiameter) {
     EXPECT_NEAR(grooves[1]->diameter, 42.0, 0.01);
     EXPECT_NEAR(grooves[1]->width, 3.0, 0.06);
     const cut::PartCheck check =
-        cut::checkPart(*t.job->timeline(), t.programmed, cut::CutSetup::from(io::parseProgramFile(program->text).value->header, setup));
+        cut::checkPart(*t.job->timeline(), t.programmed,
+                       cut::CutSetup::from(io::parseProgramFile(program->text).value->header, setup));
     EXPECT_TRUE(check.defects.empty()) << check.defects.size();
   }
   // Refused: narrower than the blade, over a shoulder, through the part.
@@ -131,7 +133,8 @@ TEST(Generator, AnM30ThreadIsCutInEveryDialect) {
     EXPECT_DOUBLE_EQ(thread->zRight, 0.0);
     EXPECT_LT(thread->zLeft, -21.0);
     const cut::PartCheck check =
-        cut::checkPart(*t.job->timeline(), t.programmed, cut::CutSetup::from(io::parseProgramFile(program->text).value->header, setup));
+        cut::checkPart(*t.job->timeline(), t.programmed,
+                       cut::CutSetup::from(io::parseProgramFile(program->text).value->header, setup));
     EXPECT_TRUE(check.defects.empty());
     // Comments are read by people: sizes as a drawing writes them, never with G-code's trailing point.
     EXPECT_NE(program->text.find("(M30x1.5: thread height 0.6134 x 1.5 = 0.92 mm, minor D28.16)"), std::string::npos)
@@ -225,7 +228,8 @@ TEST(Generator, SpeedsComeFromTheTableAndTheSpindleIsClamped) {
   const auto program = generateProgram(part, options);
   ASSERT_TRUE(program);
   EXPECT_NE(program->text.find("G96 S500. M03"), std::string::npos);
-  EXPECT_NE(program->text.find("G50 S" + std::to_string(static_cast<int>(setup.machine.maxSpindleRpm))), std::string::npos);
+  EXPECT_NE(program->text.find("G50 S" + std::to_string(static_cast<int>(setup.machine.maxSpindleRpm))),
+            std::string::npos);
   // S = 1000·Vc/(π·D) at Ø40: 3979 rpm, more than the machine's maximum: the run holds it there.
   const double atForty = 1000.0 * 500.0 / (M_PI * 40.0);
   EXPECT_NEAR(spindleRpm(500.0, 40.0), atForty, 1e-9);
@@ -321,7 +325,8 @@ TEST(Generator, BadPartFilesNameTheirPlace) {
   EXPECT_EQ(overflow.diagnostics[0].code, "F180");
   EXPECT_EQ(overflow.diagnostics[0].range.line, 2);
   EXPECT_EQ(overflow.diagnostics[0].range.column, 12);
-  EXPECT_NE(formatMessage(overflow.diagnostics[0], Lang::En).find("number overflow parsing '2.5e553'"), std::string::npos);
+  EXPECT_NE(formatMessage(overflow.diagnostics[0], Lang::En).find("number overflow parsing '2.5e553'"),
+            std::string::npos);
   const auto binary = readPartDesign(std::string("\x89PNG\r\n\x1a\n\0\0", 10), "b.json");
   EXPECT_EQ(binary.diagnostics.at(0).code, "F180");
 }

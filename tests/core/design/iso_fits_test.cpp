@@ -20,18 +20,18 @@ void expectFit(const char* fit, double size, int upper, int lower) {
 TEST(IsoFits, ShaftsFromTheTables) {
   expectFit("h7", 25, 0, -21);
   expectFit("g6", 20, -7, -20);
-  expectFit("h6", 3, 0, -6);        // "up to and including 3"
-  expectFit("h6", 3.001, 0, -8);    // the next range
+  expectFit("h6", 3, 0, -6);      // "up to and including 3"
+  expectFit("h6", 3.001, 0, -8);  // the next range
   expectFit("f7", 50, -25, -50);
   expectFit("e8", 100, -72, -126);
   expectFit("d9", 12, -50, -93);
   expectFit("c11", 45, -130, -290);  // c splits at 40
   expectFit("k6", 40, 18, 2);
-  expectFit("k9", 40, 62, 0);        // k outside grades 4-7: ei = 0
+  expectFit("k9", 40, 62, 0);  // k outside grades 4-7: ei = 0
   expectFit("m6", 25, 21, 8);
   expectFit("n6", 60, 39, 20);
   expectFit("p6", 100, 59, 37);
-  expectFit("r6", 70, 62, 43);       // r splits at 65
+  expectFit("r6", 70, 62, 43);  // r splits at 65
   expectFit("s6", 90, 93, 71);
   expectFit("s7", 450, 295, 232);
   expectFit("js6", 40, 8, -8);
@@ -43,13 +43,13 @@ TEST(IsoFits, HolesFromTheTables) {
   expectFit("H8", 25, 33, 0);
   expectFit("G7", 18, 24, 6);
   expectFit("F8", 30, 53, 20);
-  expectFit("K7", 40, 7, -18);   // ES = -ei + Δ
+  expectFit("K7", 40, 7, -18);  // ES = -ei + Δ
   expectFit("K8", 40, 12, -27);
   expectFit("M7", 40, 0, -25);
   expectFit("M6", 25, -4, -17);
   expectFit("N7", 40, -8, -33);
-  expectFit("N9", 40, 0, -62);   // N above IT8: ES = 0
-  expectFit("N9", 2, -4, -29);   // up to 3 mm: ES = -4
+  expectFit("N9", 40, 0, -62);  // N above IT8: ES = 0
+  expectFit("N9", 2, -4, -29);  // up to 3 mm: ES = -4
   expectFit("P7", 40, -17, -42);
   expectFit("P9", 40, -26, -88);  // P above IT7: no Δ
   expectFit("S7", 100, -58, -93);
@@ -63,7 +63,8 @@ TEST(IsoFits, JsIsHalfTheGradeExactly) {
 }
 
 TEST(IsoFits, WhatTheTablesDoNotHoldIsRefused) {
-  for (const char* bad : {"h0", "h19", "Js7", "x7", "j6", "h", "7", "h7a", "a11", "K2"}) EXPECT_FALSE(isoFit(bad, 25)) << bad;
+  for (const char* bad : {"h0", "h19", "Js7", "x7", "j6", "h", "7", "h7a", "a11", "K2"})
+    EXPECT_FALSE(isoFit(bad, 25)) << bad;
   EXPECT_FALSE(isoFit("h7", 0.0));
   EXPECT_FALSE(isoFit("h7", 500.5));
 }
@@ -125,7 +126,8 @@ TEST(PartTolerances, ReadFromJsonAndWrittenBack) {
 
 TEST(PartTolerances, BadTolerancesNameTheirField) {
   const auto bad = [](const std::string& step, const std::string& field) {
-    const auto part = readPartDesign(R"({ "stock": { "diameter": 50, "length": 100 }, "outside": [ )" + step + " ] }", "b.json");
+    const auto part =
+        readPartDesign(R"({ "stock": { "diameter": 50, "length": 100 }, "outside": [ )" + step + " ] }", "b.json");
     ASSERT_FALSE(part.ok()) << step;
     ASSERT_FALSE(part.diagnostics.empty());
     EXPECT_EQ(part.diagnostics[0].code, "F182");

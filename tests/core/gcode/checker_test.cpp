@@ -18,9 +18,12 @@ enum class In { Both, Fanuc, Classic };
 
 std::vector<Dialect> dialectsOf(In in) {
   switch (in) {
-    case In::Fanuc: return {Dialect::Fanuc};
-    case In::Classic: return {Dialect::Classic};
-    case In::Both: break;
+    case In::Fanuc:
+      return {Dialect::Fanuc};
+    case In::Classic:
+      return {Dialect::Classic};
+    case In::Both:
+      break;
   }
   return {Dialect::Fanuc, Dialect::Classic};
 }
@@ -33,7 +36,8 @@ std::string listing(const std::vector<Diagnostic>& diags) {
   return s.str();
 }
 
-std::vector<Diagnostic> checkText(const std::string& text, Dialect dialect, std::optional<std::vector<int>> tools = {}) {
+std::vector<Diagnostic> checkText(const std::string& text, Dialect dialect,
+                                  std::optional<std::vector<int>> tools = {}) {
   CheckOptions o;
   o.dialect = dialect;
   o.toolsWithBitmap = std::move(tools);
@@ -72,9 +76,8 @@ INSTANTIATE_TEST_SUITE_P(
     Table, Clean,
     ::testing::Values(
         // rule 1: the lathe letters, and the ext R P Q
-        CleanCase{"N10 G01 X20. Z5. F0.2 S500 T0101 M03", In::Both},
-        CleanCase{"G02 X20. Z-5. R2.", In::Both}, CleanCase{"G04 P500", In::Both},
-        CleanCase{"M41\nC10.\nH5.\nM91", In::Classic},
+        CleanCase{"N10 G01 X20. Z5. F0.2 S500 T0101 M03", In::Both}, CleanCase{"G02 X20. Z-5. R2.", In::Both},
+        CleanCase{"G04 P500", In::Both}, CleanCase{"M41\nC10.\nH5.\nM91", In::Classic},
         // rule 2: each letter once; G and M may repeat
         CleanCase{"G00 G21 G40 X20. Z5.", In::Both}, CleanCase{"M03 M08 S800", In::Both},
         // rule 3: M00/M01/M02/M30 alone, N allowed before them
@@ -103,9 +106,11 @@ INSTANTIATE_TEST_SUITE_P(
         CleanCase{"X9999.999 Z-9999.999\nU-.5 W.001", In::Both}, CleanCase{"F0.001 S9999.999", In::Both},
         CleanCase{"G20\nX1.2345 Z-0.0001", In::Both}, CleanCase{"G20\nG21\nX1.234", In::Both},
         CleanCase{"N1\nN9999 G00", In::Both}, CleanCase{"T0316", In::Both}, CleanCase{"T0100", In::Both},
-        CleanCase{"T101", In::Fanuc}, CleanCase{"T0101\nT0000", In::Fanuc}, CleanCase{"G1 X1.\ng01 x2.", In::Both}, CleanCase{"M3 S100", In::Both},
-        CleanCase{"G76 P020060 Q50 R0.05", In::Both}, CleanCase{"G71 P100 Q200 U0.5 W0.1 F0.25\nN100 G00 X30.\nN200 G01 Z-20.", In::Both},
-        CleanCase{"M98 P1234\nM30\nO1234\nM99", In::Fanuc}, CleanCase{"M42", In::Fanuc}, CleanCase{"G54\nG53 X0. Z0.", In::Fanuc},
+        CleanCase{"T101", In::Fanuc}, CleanCase{"T0101\nT0000", In::Fanuc}, CleanCase{"G1 X1.\ng01 x2.", In::Both},
+        CleanCase{"M3 S100", In::Both}, CleanCase{"G76 P020060 Q50 R0.05", In::Both},
+        CleanCase{"G71 P100 Q200 U0.5 W0.1 F0.25\nN100 G00 X30.\nN200 G01 Z-20.", In::Both},
+        CleanCase{"M98 P1234\nM30\nO1234\nM99", In::Fanuc}, CleanCase{"M42", In::Fanuc},
+        CleanCase{"G54\nG53 X0. Z0.", In::Fanuc},
         // ext arc rules
         CleanCase{"G02 X20. Z-5. I2. K0.", In::Both}, CleanCase{"G03 U4. W-2. R2.", In::Both},
         CleanCase{"G02 X20. Z-5. R2.\nX22. Z-6. R1.", In::Both},
@@ -124,9 +129,7 @@ struct FailCase {
   int length;
 };
 
-std::ostream& operator<<(std::ostream& os, const FailCase& c) {
-  return os << c.code << " in \"" << c.text << "\"";
-}
+std::ostream& operator<<(std::ostream& os, const FailCase& c) { return os << c.code << " in \"" << c.text << "\""; }
 
 class Fails : public ::testing::TestWithParam<FailCase> {};
 
@@ -150,124 +153,84 @@ INSTANTIATE_TEST_SUITE_P(
     Rules, Fails,
     ::testing::Values(
         // rule 1
-        FailCase{"G01 X30. Y5. F0.2", In::Both, "E201", 1, 10, 3},
-        FailCase{"N10 A90.", In::Both, "E201", 1, 5, 4},
+        FailCase{"G01 X30. Y5. F0.2", In::Both, "E201", 1, 10, 3}, FailCase{"N10 A90.", In::Both, "E201", 1, 5, 4},
         FailCase{"G00 X1.\nB2", In::Both, "E201", 2, 1, 2},
         // rule 2
-        FailCase{"G01 X30. X31.", In::Both, "E202", 1, 10, 4},
-        FailCase{"F0.2 Z1. F0.3", In::Both, "E202", 1, 10, 4},
+        FailCase{"G01 X30. X31.", In::Both, "E202", 1, 10, 4}, FailCase{"F0.2 Z1. F0.3", In::Both, "E202", 1, 10, 4},
         FailCase{"T0101 T0202", In::Both, "E202", 1, 7, 5},
         // rule 3
-        FailCase{"M00 X20.", In::Both, "E203", 1, 1, 3},
-        FailCase{"N5 X20. M02", In::Both, "E203", 1, 9, 3},
-        FailCase{"G00 M30", In::Both, "E203", 1, 5, 3},
-        FailCase{"M01 M08", In::Both, "E203", 1, 1, 3},
+        FailCase{"M00 X20.", In::Both, "E203", 1, 1, 3}, FailCase{"N5 X20. M02", In::Both, "E203", 1, 9, 3},
+        FailCase{"G00 M30", In::Both, "E203", 1, 5, 3}, FailCase{"M01 M08", In::Both, "E203", 1, 1, 3},
         // rule 4
-        FailCase{"M03 M05", In::Both, "E204", 1, 5, 3},
-        FailCase{"M04 S500 M03", In::Both, "E204", 1, 10, 3},
-        FailCase{"M08 M09", In::Both, "E204", 1, 5, 3},
-        FailCase{"M41 M91", In::Classic, "E204", 1, 5, 3},
-        FailCase{"M86 M87", In::Both, "E204", 1, 5, 3},
-        FailCase{"M41 M42", In::Fanuc, "E204", 1, 5, 3},
+        FailCase{"M03 M05", In::Both, "E204", 1, 5, 3}, FailCase{"M04 S500 M03", In::Both, "E204", 1, 10, 3},
+        FailCase{"M08 M09", In::Both, "E204", 1, 5, 3}, FailCase{"M41 M91", In::Classic, "E204", 1, 5, 3},
+        FailCase{"M86 M87", In::Both, "E204", 1, 5, 3}, FailCase{"M41 M42", In::Fanuc, "E204", 1, 5, 3},
         // rule 5
-        FailCase{"G00 G01 X35.", In::Both, "E205", 1, 5, 3},
-        FailCase{"G96 S100 G97", In::Both, "E205", 1, 10, 3},
-        FailCase{"G20 G21", In::Both, "E205", 1, 5, 3},
-        FailCase{"G41 G42 G00 X1.", In::Both, "E205", 1, 5, 3},
+        FailCase{"G00 G01 X35.", In::Both, "E205", 1, 5, 3}, FailCase{"G96 S100 G97", In::Both, "E205", 1, 10, 3},
+        FailCase{"G20 G21", In::Both, "E205", 1, 5, 3}, FailCase{"G41 G42 G00 X1.", In::Both, "E205", 1, 5, 3},
         FailCase{"G04 U1. G50 S100", In::Both, "E205", 1, 9, 3},
         // rule 6
-        FailCase{"G04 G01 U1.", In::Both, "E206", 1, 5, 3},
-        FailCase{"G01 X20. G28", In::Classic, "E206", 1, 10, 3},
+        FailCase{"G04 G01 U1.", In::Both, "E206", 1, 5, 3}, FailCase{"G01 X20. G28", In::Classic, "E206", 1, 10, 3},
         FailCase{"G50 S2000 G00", In::Both, "E206", 1, 11, 3},
         // rule 7
-        FailCase{"G98 F100.", In::Classic, "E207", 1, 1, 3},
-        FailCase{"N5 G01 G99", In::Classic, "E207", 1, 8, 3},
+        FailCase{"G98 F100.", In::Classic, "E207", 1, 1, 3}, FailCase{"N5 G01 G99", In::Classic, "E207", 1, 8, 3},
         FailCase{"G18 G21 G40 G80 G99", In::Classic, "E207", 1, 17, 3},
         // rule 8
-        FailCase{"N10 O0001", In::Both, "E208", 1, 5, 5},
-        FailCase{"O0001 G00", In::Both, "E208", 1, 1, 5},
+        FailCase{"N10 O0001", In::Both, "E208", 1, 5, 5}, FailCase{"O0001 G00", In::Both, "E208", 1, 1, 5},
         // (an O block alone later in the file starts a subprogram on Fanuc and Haas)
         FailCase{"O0001\nO0002", In::Classic, "E208", 2, 1, 5},
         FailCase{"G00 X1.\nO0002", In::Classic, "E208", 2, 1, 5},
         FailCase{"G00 X1.\nO0002 G00", In::Both, "E208", 2, 1, 5},
         // rule 9
-        FailCase{"X30. N200", In::Both, "E209", 1, 6, 4},
-        FailCase{"/G00 N5", In::Both, "E209", 1, 6, 2},
+        FailCase{"X30. N200", In::Both, "E209", 1, 6, 4}, FailCase{"/G00 N5", In::Both, "E209", 1, 6, 2},
         // rule 10
-        FailCase{"G01 X30. U2.", In::Both, "E210", 1, 10, 3},
-        FailCase{"Z-5. W-2.", In::Both, "E210", 1, 6, 4},
-        FailCase{"W1. Z2.", In::Both, "E210", 1, 5, 3},
-        FailCase{"G01 C10. H5.", In::Both, "E210", 1, 10, 3},
+        FailCase{"G01 X30. U2.", In::Both, "E210", 1, 10, 3}, FailCase{"Z-5. W-2.", In::Both, "E210", 1, 6, 4},
+        FailCase{"W1. Z2.", In::Both, "E210", 1, 5, 3}, FailCase{"G01 C10. H5.", In::Both, "E210", 1, 10, 3},
         // rule 11
-        FailCase{"G04", In::Both, "E211", 1, 1, 3},
-        FailCase{"N5 G4 F0.1", In::Both, "E211", 1, 4, 2},
+        FailCase{"G04", In::Both, "E211", 1, 1, 3}, FailCase{"N5 G4 F0.1", In::Both, "E211", 1, 4, 2},
         // word formats (SPEC 4)
-        FailCase{"G01 X12345.6", In::Both, "E110", 1, 5, 8},
-        FailCase{"Z-10000.", In::Both, "E110", 1, 1, 8},
-        FailCase{"I9999.9991", In::Both, "E110", 1, 1, 10},
-        FailCase{"F10000.", In::Both, "E110", 1, 1, 7},
-        FailCase{"X1.2345", In::Classic, "E111", 1, 1, 7},
-        FailCase{"G21\nZ-0.0001", In::Classic, "E111", 2, 1, 8},
+        FailCase{"G01 X12345.6", In::Both, "E110", 1, 5, 8}, FailCase{"Z-10000.", In::Both, "E110", 1, 1, 8},
+        FailCase{"I9999.9991", In::Both, "E110", 1, 1, 10}, FailCase{"F10000.", In::Both, "E110", 1, 1, 7},
+        FailCase{"X1.2345", In::Classic, "E111", 1, 1, 7}, FailCase{"G21\nZ-0.0001", In::Classic, "E111", 2, 1, 8},
         FailCase{"G20\nX1.23456", In::Classic, "E111", 2, 1, 8},
-        FailCase{"G20 X1.\nG21\nK1.2345", In::Classic, "E111", 3, 1, 7},
-        FailCase{"F-0.2", In::Both, "E112", 1, 1, 5},
-        FailCase{"F0", In::Both, "E112", 1, 1, 2},
-        FailCase{"M03 S0.0001", In::Both, "E112", 1, 5, 7},
-        FailCase{"G1.5 X1.", In::Both, "E113", 1, 1, 4},
-        FailCase{"M3.", In::Both, "E113", 1, 1, 3},
-        FailCase{"G07 X30.", In::Both, "E114", 1, 1, 3},
-        FailCase{"G100", In::Both, "E114", 1, 1, 4},
-        FailCase{"G-1", In::Both, "E114", 1, 1, 3},
-        FailCase{"G18", In::Classic, "E114", 1, 1, 3},
-        FailCase{"G54", In::Classic, "E114", 1, 1, 3},
-        FailCase{"G80", In::Classic, "E114", 1, 1, 3},
-        FailCase{"G53 X0.", In::Classic, "E114", 1, 1, 3},
-        FailCase{"M77", In::Classic, "E115", 1, 1, 3},
-        FailCase{"M42", In::Classic, "E115", 1, 1, 3},
-        FailCase{"N0 G00", In::Both, "E116", 1, 1, 2},
-        FailCase{"N10000", In::Classic, "E116", 1, 1, 6},
-        FailCase{"N1.5", In::Both, "E116", 1, 1, 4},
-        FailCase{"O0", In::Both, "E116", 1, 1, 2},
-        FailCase{"T0917", In::Classic, "E117", 1, 1, 5},
+        FailCase{"G20 X1.\nG21\nK1.2345", In::Classic, "E111", 3, 1, 7}, FailCase{"F-0.2", In::Both, "E112", 1, 1, 5},
+        FailCase{"F0", In::Both, "E112", 1, 1, 2}, FailCase{"M03 S0.0001", In::Both, "E112", 1, 5, 7},
+        FailCase{"G1.5 X1.", In::Both, "E113", 1, 1, 4}, FailCase{"M3.", In::Both, "E113", 1, 1, 3},
+        FailCase{"G07 X30.", In::Both, "E114", 1, 1, 3}, FailCase{"G100", In::Both, "E114", 1, 1, 4},
+        FailCase{"G-1", In::Both, "E114", 1, 1, 3}, FailCase{"G18", In::Classic, "E114", 1, 1, 3},
+        FailCase{"G54", In::Classic, "E114", 1, 1, 3}, FailCase{"G80", In::Classic, "E114", 1, 1, 3},
+        FailCase{"G53 X0.", In::Classic, "E114", 1, 1, 3}, FailCase{"M77", In::Classic, "E115", 1, 1, 3},
+        FailCase{"M42", In::Classic, "E115", 1, 1, 3}, FailCase{"N0 G00", In::Both, "E116", 1, 1, 2},
+        FailCase{"N10000", In::Classic, "E116", 1, 1, 6}, FailCase{"N1.5", In::Both, "E116", 1, 1, 4},
+        FailCase{"O0", In::Both, "E116", 1, 1, 2}, FailCase{"T0917", In::Classic, "E117", 1, 1, 5},
         FailCase{"T0000", In::Classic, "E117", 1, 1, 5},  // Fanuc/Haas: the turret stays, the offset is cancelled
-        FailCase{"T1317", In::Fanuc, "E118", 1, 1, 5},
-        FailCase{"T0900", In::Classic, "E117", 1, 1, 5},
-        FailCase{"T0017", In::Fanuc, "E118", 1, 1, 5},
-        FailCase{"T101", In::Classic, "E117", 1, 1, 4},
-        FailCase{"T01", In::Classic, "E117", 1, 1, 3},
-        FailCase{"T01", In::Fanuc, "E118", 1, 1, 3},
-        FailCase{"T01.01", In::Classic, "E117", 1, 1, 6},
-        FailCase{"G04 P1.5", In::Both, "E119", 1, 5, 4},
-        FailCase{"G04 P-5", In::Both, "E119", 1, 5, 3},
-        FailCase{"M98 Q1.5", In::Both, "E119", 1, 5, 4},
+        FailCase{"T1317", In::Fanuc, "E118", 1, 1, 5}, FailCase{"T0900", In::Classic, "E117", 1, 1, 5},
+        FailCase{"T0017", In::Fanuc, "E118", 1, 1, 5}, FailCase{"T101", In::Classic, "E117", 1, 1, 4},
+        FailCase{"T01", In::Classic, "E117", 1, 1, 3}, FailCase{"T01", In::Fanuc, "E118", 1, 1, 3},
+        FailCase{"T01.01", In::Classic, "E117", 1, 1, 6}, FailCase{"G04 P1.5", In::Both, "E119", 1, 5, 4},
+        FailCase{"G04 P-5", In::Both, "E119", 1, 5, 3}, FailCase{"M98 Q1.5", In::Both, "E119", 1, 5, 4},
         // lexical errors reach the checker's report
         FailCase{"G01 X", In::Both, "E101", 1, 5, 1},
         // ext rules
-        FailCase{"G02", In::Both, "E301", 1, 1, 3},
-        FailCase{"G03 F0.1 R2.", In::Both, "E301", 1, 1, 3},
+        FailCase{"G02", In::Both, "E301", 1, 1, 3}, FailCase{"G03 F0.1 R2.", In::Both, "E301", 1, 1, 3},
         FailCase{"G02 X20. Z-5. R2. I1.", In::Both, "E302", 1, 15, 3},
         FailCase{"G03 X20. Z-5.\nZ-6. K1. R1.", In::Both, "E302", 2, 10, 3},
         FailCase{"G41 G02 X20. Z-5. R2.", In::Both, "E303", 1, 1, 3},
         FailCase{"G03 X20. Z-5. R2.\nG42 X22. Z-7. R2.", In::Both, "E303", 2, 1, 3},
         FailCase{"G40 G03 X20. Z-5. R2.", In::Both, "E304", 1, 1, 3},
         FailCase{"G02 X20. Z-5. R2.\nG40 X30. Z-10. R5.", In::Both, "E304", 2, 1, 3},
-        FailCase{"T0404", In::Both, "E305", 1, 1, 5},
-        FailCase{"G04 U-1.", In::Both, "E306", 1, 5, 4},
-        FailCase{"G04 P500 U1.", In::Both, "E307", 1, 10, 3},
-        FailCase{"G04 X1. P100", In::Both, "E307", 1, 9, 4},
-        FailCase{"G04 U1. Z5.", In::Both, "E308", 1, 9, 3},
-        FailCase{"G28", In::Classic, "E309", 1, 1, 3},
+        FailCase{"T0404", In::Both, "E305", 1, 1, 5}, FailCase{"G04 U-1.", In::Both, "E306", 1, 5, 4},
+        FailCase{"G04 P500 U1.", In::Both, "E307", 1, 10, 3}, FailCase{"G04 X1. P100", In::Both, "E307", 1, 9, 4},
+        FailCase{"G04 U1. Z5.", In::Both, "E308", 1, 9, 3}, FailCase{"G28", In::Classic, "E309", 1, 1, 3},
         // warnings of the Fanuc dialect
-        FailCase{"M77", In::Fanuc, "W101", 1, 1, 3},
-        FailCase{"N5 G28", In::Fanuc, "W102", 1, 4, 3}));
+        FailCase{"M77", In::Fanuc, "W101", 1, 1, 3}, FailCase{"N5 G28", In::Fanuc, "W102", 1, 4, 3}));
 
 TEST(Checker, EveryDiagnosticOfTheProgramIsReportedInOrder) {
   const auto diags = checkText("G00 G01 X1. U1.\nM03 M04 Y1.\nG04\nN5 N6", Dialect::Classic);
   std::vector<std::string> got;
   for (const auto& d : diags)
     got.push_back(d.code + "@" + std::to_string(d.range.line) + ":" + std::to_string(d.range.column));
-  EXPECT_THAT(got, ::testing::ElementsAre("E205@1:5", "E210@1:13", "E204@2:5", "E201@2:9", "E211@3:1",
-                                          "E209@4:4"));
+  EXPECT_THAT(got, ::testing::ElementsAre("E205@1:5", "E210@1:13", "E204@2:5", "E201@2:9", "E211@3:1", "E209@4:4"));
 }
 
 TEST(Checker, StopAtFirstErrorAnswersOnlyWhetherTheProgramIsAccepted) {
@@ -328,13 +291,12 @@ TEST(Checker, ANumberWithAnExponentInAMacroExpressionIsNamedAsOne) {
 TEST(Checker, MessagesNameTheWordAndSayHowToFixIt) {
   const auto diags = checkText("G01 X30. U2.", Dialect::Fanuc);
   ASSERT_EQ(diags.size(), 1u);
-  EXPECT_EQ(formatMessage(diags[0], Lang::En),
-            "X and U in one block: use X (absolute) or U (incremental), not both");
-  EXPECT_EQ(formatMessage(diags[0], Lang::Th),
-            "X และ U อยู่ในบล็อกเดียวกัน: ใช้ X (ค่าสัมบูรณ์) หรือ U (ค่าส่วนเพิ่ม) อย่างใดอย่างหนึ่ง");
+  EXPECT_EQ(formatMessage(diags[0], Lang::En), "X and U in one block: use X (absolute) or U (incremental), not both");
+  EXPECT_EQ(formatMessage(diags[0], Lang::Th), "X และ U อยู่ในบล็อกเดียวกัน: ใช้ X (ค่าสัมบูรณ์) หรือ U (ค่าส่วนเพิ่ม) อย่างใดอย่างหนึ่ง");
   const auto range = checkText("G01 X12345.6", Dialect::Fanuc);
   ASSERT_EQ(range.size(), 1u);
-  EXPECT_EQ(formatMessage(range[0], Lang::En), "X12345.6 is out of range: the value must be from -9999.999 to 9999.999");
+  EXPECT_EQ(formatMessage(range[0], Lang::En),
+            "X12345.6 is out of range: the value must be from -9999.999 to 9999.999");
 }
 
 TEST(Checker, ToolBitmapsAreNotCheckedWithoutATable) {

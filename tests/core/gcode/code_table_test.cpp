@@ -18,8 +18,8 @@ namespace {
 bool hasThai(std::string_view s) { return s.find("\xE0\xB8") != std::string_view::npos; }
 
 TEST(CodeTable, ClassicIsExactlyTheSpecList) {
-  const std::set<int> g = {0, 1, 2, 3, 4, 20, 21, 27, 28, 29, 32, 40, 41, 42, 50, 96, 97, 98, 99,
-                           70, 71, 72, 73, 74, 75, 76, 90, 92, 94};
+  const std::set<int> g = {0,  1,  2,  3,  4,  20, 21, 27, 28, 29, 32, 40, 41, 42, 50,
+                           96, 97, 98, 99, 70, 71, 72, 73, 74, 75, 76, 90, 92, 94};
   const std::set<int> m = {0, 1, 2, 3, 4, 5, 8, 9, 41, 86, 87, 91, 30, 98, 99};
   for (int n = 0; n < 100; ++n) {
     EXPECT_EQ(findCode('G', n, Dialect::Classic) != nullptr, g.count(n) == 1) << "G" << n;
@@ -55,13 +55,13 @@ TEST(CodeTable, DialectMeanings) {
 
 TEST(CodeTable, ModalGroupsOfSection6) {
   const std::pair<int, ModalGroup> rows[] = {
-      {0, ModalGroup::Motion},      {1, ModalGroup::Motion},      {2, ModalGroup::Motion},
-      {3, ModalGroup::Motion},      {32, ModalGroup::Motion},     {90, ModalGroup::Motion},
-      {4, ModalGroup::NonModal},    {27, ModalGroup::NonModal},   {28, ModalGroup::NonModal},
-      {29, ModalGroup::NonModal},   {50, ModalGroup::NonModal},   {20, ModalGroup::Units},
-      {21, ModalGroup::Units},      {40, ModalGroup::NoseComp},   {41, ModalGroup::NoseComp},
-      {42, ModalGroup::NoseComp},   {96, ModalGroup::SpindleMode}, {97, ModalGroup::SpindleMode},
-      {98, ModalGroup::FeedMode},   {99, ModalGroup::FeedMode}};
+      {0, ModalGroup::Motion},    {1, ModalGroup::Motion},       {2, ModalGroup::Motion},
+      {3, ModalGroup::Motion},    {32, ModalGroup::Motion},      {90, ModalGroup::Motion},
+      {4, ModalGroup::NonModal},  {27, ModalGroup::NonModal},    {28, ModalGroup::NonModal},
+      {29, ModalGroup::NonModal}, {50, ModalGroup::NonModal},    {20, ModalGroup::Units},
+      {21, ModalGroup::Units},    {40, ModalGroup::NoseComp},    {41, ModalGroup::NoseComp},
+      {42, ModalGroup::NoseComp}, {96, ModalGroup::SpindleMode}, {97, ModalGroup::SpindleMode},
+      {98, ModalGroup::FeedMode}, {99, ModalGroup::FeedMode}};
   for (const auto& [n, group] : rows)
     for (Dialect d : {Dialect::Fanuc, Dialect::Classic}) EXPECT_EQ(findCode('G', n, d)->group, group) << "G" << n;
 }
@@ -142,15 +142,18 @@ namespace {
 // Issue 12: the interpreter and the cycles switch on what a code does. Every row of a
 // group they act on says it; the rows the simulator only shows (G18, M10 chuck ...) say None.
 TEST(CodeTable, EveryCodeTheInterpreterRunsHasItsAction) {
-  const ModalGroup acted[] = {ModalGroup::Motion,   ModalGroup::NonModal,  ModalGroup::Units,     ModalGroup::NoseComp,
-                              ModalGroup::SpindleMode, ModalGroup::FeedMode, ModalGroup::WorkOffset, ModalGroup::CannedCycle,
-                              ModalGroup::MacroModal, ModalGroup::MSpindle, ModalGroup::MCoolant, ModalGroup::MCAxis,
-                              ModalGroup::MBrake,   ModalGroup::MGear,     ModalGroup::MProgram,  ModalGroup::MSubprogram,
-                              ModalGroup::MThreadChamfer};
+  const ModalGroup acted[] = {ModalGroup::Motion,      ModalGroup::NonModal,      ModalGroup::Units,
+                              ModalGroup::NoseComp,    ModalGroup::SpindleMode,   ModalGroup::FeedMode,
+                              ModalGroup::WorkOffset,  ModalGroup::CannedCycle,   ModalGroup::MacroModal,
+                              ModalGroup::MSpindle,    ModalGroup::MCoolant,      ModalGroup::MCAxis,
+                              ModalGroup::MBrake,      ModalGroup::MGear,         ModalGroup::MProgram,
+                              ModalGroup::MSubprogram, ModalGroup::MThreadChamfer};
   for (const CodeInfo& row : codeTable()) {
     const bool isActed = std::find(std::begin(acted), std::end(acted), row.group) != std::end(acted);
-    if (isActed) EXPECT_NE(row.action, CodeAction::None) << row.letter << row.number;
-    else EXPECT_EQ(row.action, CodeAction::None) << row.letter << row.number;
+    if (isActed)
+      EXPECT_NE(row.action, CodeAction::None) << row.letter << row.number;
+    else
+      EXPECT_EQ(row.action, CodeAction::None) << row.letter << row.number;
   }
   // A number with two meanings has two actions: M41 is the C axis (classic) or gear range 1 (Fanuc).
   EXPECT_EQ(findCode('M', 41, Dialect::Classic)->action, CodeAction::CAxisOn);

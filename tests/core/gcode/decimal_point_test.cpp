@@ -28,14 +28,14 @@ TEST(DecimalPoint, IncrementsFollowTheUnitsInForceAtEachBlock) {
   EXPECT_DOUBLE_EQ(wordAt(p, 0, 'Z').value, 2.0);
   EXPECT_DOUBLE_EQ(wordAt(p, 0, 'U').value, -0.5);
   EXPECT_DOUBLE_EQ(wordAt(p, 0, 'W').value, 0.25);
-  EXPECT_DOUBLE_EQ(wordAt(p, 1, 'X').value, 40.0);   // a point: as written
+  EXPECT_DOUBLE_EQ(wordAt(p, 1, 'X').value, 40.0);  // a point: as written
   EXPECT_DOUBLE_EQ(wordAt(p, 1, 'Z').value, -0.005);
   EXPECT_DOUBLE_EQ(wordAt(p, 1, 'R').value, 5.0);
   EXPECT_DOUBLE_EQ(wordAt(p, 2, 'X').value, 0.125);  // G20 from its own block on: 0.0001 in
   EXPECT_DOUBLE_EQ(wordAt(p, 2, 'Z').value, -0.5);
   EXPECT_DOUBLE_EQ(wordAt(p, 2, 'I').value, 0.0025);
   EXPECT_DOUBLE_EQ(wordAt(p, 2, 'K').value, -0.0005);
-  EXPECT_DOUBLE_EQ(wordAt(p, 3, 'X').value, 1.5);    // a dwell's X is a time: 0.001 s under G20 too
+  EXPECT_DOUBLE_EQ(wordAt(p, 3, 'X').value, 1.5);  // a dwell's X is a time: 0.001 s under G20 too
 }
 
 TEST(DecimalPoint, CodesCountsFeedsExpressionsAndMacroArgumentsKeepTheirValues) {
@@ -49,14 +49,14 @@ TEST(DecimalPoint, CodesCountsFeedsExpressionsAndMacroArgumentsKeepTheirValues) 
       "S1200 M03 T0101\n");
   readLengthsInIncrements(p, InputUnits::Millimetre, Dialect::Fanuc);
   EXPECT_DOUBLE_EQ(wordAt(p, 0, 'U').value, 3.0);
-  EXPECT_DOUBLE_EQ(wordAt(p, 0, 'R').value, 3.0);    // G73's first block: R is the number of passes
+  EXPECT_DOUBLE_EQ(wordAt(p, 0, 'R').value, 3.0);  // G73's first block: R is the number of passes
   EXPECT_DOUBLE_EQ(wordAt(p, 1, 'P').value, 10.0);
   EXPECT_DOUBLE_EQ(wordAt(p, 1, 'U').value, 0.5);
-  EXPECT_DOUBLE_EQ(wordAt(p, 1, 'F').value, 25.0);   // a feed keeps its own rule
+  EXPECT_DOUBLE_EQ(wordAt(p, 1, 'F').value, 25.0);  // a feed keeps its own rule
   EXPECT_DOUBLE_EQ(wordAt(p, 2, 'P').value, 21060.0);
-  EXPECT_DOUBLE_EQ(wordAt(p, 2, 'Q').value, 50.0);   // the cycle reads Q in increments itself
+  EXPECT_DOUBLE_EQ(wordAt(p, 2, 'Q').value, 50.0);  // the cycle reads Q in increments itself
   EXPECT_DOUBLE_EQ(wordAt(p, 2, 'R').value, 0.05);
-  EXPECT_DOUBLE_EQ(wordAt(p, 3, 'X').value, 25.0);   // G65 arguments are passed as written
+  EXPECT_DOUBLE_EQ(wordAt(p, 3, 'X').value, 25.0);  // G65 arguments are passed as written
   EXPECT_DOUBLE_EQ(wordAt(p, 3, 'Z').value, -40.0);
   EXPECT_GE(wordAt(p, 5, 'X').expr, 0);
   EXPECT_DOUBLE_EQ(wordAt(p, 6, 'S').value, 1200.0);
@@ -122,10 +122,10 @@ TEST(DecimalPoint, SystemCFindsUnitsAndCyclesByTheirActions) {
   ASSERT_TRUE(read.machine.has_value());
   const Dialect c = registerMachine(*read.machine);
   Program p = parse(
-      "G70 G00 X1250 Z500\n"      // inch in system C: 0.0001 in
-      "G71 G00 X30000\n"          // metric: 0.001 mm
-      "G75 U3000 W1000 R3\n"      // system C's G73 pattern repeating: R the passes
-      "G73 U1500 R500\n");        // system C's G71 stock removal, first block
+      "G70 G00 X1250 Z500\n"  // inch in system C: 0.0001 in
+      "G71 G00 X30000\n"      // metric: 0.001 mm
+      "G75 U3000 W1000 R3\n"  // system C's G73 pattern repeating: R the passes
+      "G73 U1500 R500\n");    // system C's G71 stock removal, first block
   readLengthsInIncrements(p, InputUnits::Millimetre, c);
   EXPECT_DOUBLE_EQ(wordAt(p, 0, 'X').value, 0.125);
   EXPECT_DOUBLE_EQ(wordAt(p, 0, 'Z').value, 0.05);
@@ -136,8 +136,7 @@ TEST(DecimalPoint, SystemCFindsUnitsAndCyclesByTheirActions) {
   EXPECT_DOUBLE_EQ(wordAt(p, 3, 'R').value, 0.5);
   EXPECT_EQ(programInputUnits(parse("G70\nG00 X1.\n"), InputUnits::Millimetre, c), InputUnits::Inch);
   // System A reads the same G70 as the finishing cycle: no units change.
-  EXPECT_EQ(programInputUnits(parse("G70\nG00 X1.\n"), InputUnits::Millimetre, Dialect::Fanuc),
-            InputUnits::Millimetre);
+  EXPECT_EQ(programInputUnits(parse("G70\nG00 X1.\n"), InputUnits::Millimetre, Dialect::Fanuc), InputUnits::Millimetre);
   // A cycle's setting says "whole" in system C too: U1 is 0.001 mm in increments.
   const PointEvidence e = weighDecimalPoints(parse("G71\nG73 U1 R1\n"), InputUnits::Millimetre, c);
   ASSERT_EQ(e.forWholeUnits.size(), 2u);

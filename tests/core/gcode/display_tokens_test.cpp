@@ -32,9 +32,7 @@ TEST(DisplayTokens, MacroWordsAndVariables) {
   EXPECT_EQ(describe(u"XY10"), "addr@1+3:Y ");
 }
 
-TEST(DisplayTokens, AnUnclosedCommentRunsToTheEnd) {
-  EXPECT_EQ(describe(u"G01 (no close"), "addr@0+3:G comment@4+9 ");
-}
+TEST(DisplayTokens, AnUnclosedCommentRunsToTheEnd) { EXPECT_EQ(describe(u"G01 (no close"), "addr@0+3:G comment@4+9 "); }
 
 TEST(DisplayTokens, ACommentEndsWhereItsParenthesesBalanceAsTheParserReadsIt) {
   // "(n = Vc*1000/(pi*D))" is one comment (issue 26); the F word after it is a word.

@@ -20,7 +20,8 @@ TEST(MachineFile, ShippedFilesReadCleanInMenuOrder) {
   EXPECT_EQ(files[2].name, "classic.machine");
   for (const ShippedMachineFile& f : files) {
     const MachineFileRead read = parseMachineFile(f.text, std::string(f.name));
-    EXPECT_TRUE(read.diagnostics.empty()) << f.name << ": " << (read.diagnostics.empty() ? "" : read.diagnostics[0].code);
+    EXPECT_TRUE(read.diagnostics.empty())
+        << f.name << ": " << (read.diagnostics.empty() ? "" : read.diagnostics[0].code);
     ASSERT_TRUE(read.machine.has_value()) << f.name;
     EXPECT_TRUE(read.machine->otherKeys.empty()) << f.name << " holds a machine.cfg key";
   }
@@ -96,7 +97,8 @@ TEST(MachineFile, MissingKeysWithoutBaseAndUnknownBase) {
   ASSERT_EQ(base.diagnostics.size(), 1u);
   EXPECT_EQ(base.diagnostics[0].code, core::codes::kMachineUnknownBase);
   EXPECT_EQ(base.diagnostics[0].range.line, 2);
-  EXPECT_EQ(formatMessage(base.diagnostics[0], Lang::En).substr(0, 50), "x.machine: base 'fanucc' is no machine; the machin");
+  EXPECT_EQ(formatMessage(base.diagnostics[0], Lang::En).substr(0, 50),
+            "x.machine: base 'fanucc' is no machine; the machin");
 
   const MachineFileRead noEquals = parseMachineFile("base = fanuc\nid = x\nrapid_x 4000\n", "x.machine");
   ASSERT_EQ(noEquals.diagnostics.size(), 1u);
@@ -105,8 +107,8 @@ TEST(MachineFile, MissingKeysWithoutBaseAndUnknownBase) {
 }
 
 TEST(MachineFile, BaseAndOtherKeysAreKept) {
-  const MachineFileRead read =
-      parseMachineFile("base = haas\nid = shop\npower_on_units = mm\nrapid_x = 6000\nm_codes = 3 4 5\n", "shop.machine");
+  const MachineFileRead read = parseMachineFile(
+      "base = haas\nid = shop\npower_on_units = mm\nrapid_x = 6000\nm_codes = 3 4 5\n", "shop.machine");
   ASSERT_TRUE(read.machine.has_value());
   EXPECT_EQ(read.machine->profile.powerOnUnits, InputUnits::Millimetre);
   EXPECT_EQ(read.machine->profile.cycleForm, CycleForm::OneBlock);  // from haas
@@ -128,7 +130,10 @@ TEST(GcodeSystems, SystemBRenamesRowsOntoTheSameActions) {
   ASSERT_TRUE(parseDialectId("romi-gl240m", b));
   EXPECT_EQ(machineProfile(b).system, GcodeSystem::B);
   EXPECT_EQ(machineProfile(b).family, Dialect::Fanuc);
-  const auto action = [&](int g) { const CodeInfo* r = findCode('G', g, b); return r ? r->action : CodeAction::None; };
+  const auto action = [&](int g) {
+    const CodeInfo* r = findCode('G', g, b);
+    return r ? r->action : CodeAction::None;
+  };
   EXPECT_EQ(action(33), CodeAction::Thread);
   EXPECT_EQ(action(92), CodeAction::CoordinateSet);
   EXPECT_EQ(action(77), CodeAction::BoxTurning);
@@ -147,7 +152,8 @@ TEST(GcodeSystems, SystemBRenamesRowsOntoTheSameActions) {
   EXPECT_EQ(findCode('G', 98, b)->group, ModalGroup::ReturnLevel);
   EXPECT_EQ(numberInA('G', 33, b), 32);
   EXPECT_EQ(numberInA('G', 98, b), -1);
-  EXPECT_EQ(inSystemNumbers("G50 S2500 (G32 passes) G99 G90 X46. G32.5", b), "G92 S2500 (G33 passes) G95 G77 X46. G32.5");
+  EXPECT_EQ(inSystemNumbers("G50 S2500 (G32 passes) G99 G90 X46. G32.5", b),
+            "G92 S2500 (G33 passes) G95 G77 X46. G32.5");
   EXPECT_EQ(findCode('G', 33, b)->number, 33);  // messages say the number as written
   EXPECT_EQ(findCode('G', 90, b)->group, ModalGroup::Distance);
   EXPECT_EQ(numberInSystem('G', 32, b), 33);
@@ -162,7 +168,10 @@ TEST(GcodeSystems, SystemCMovesTheCyclesUpByTwo) {
   const MachineFileRead read = parseMachineFile("base = fanuc\nid = system-c\ngcode_system = C\n", "c.machine");
   ASSERT_TRUE(read.machine.has_value());
   const Dialect c = registerMachine(*read.machine);
-  const auto action = [&](int g) { const CodeInfo* r = findCode('G', g, c); return r ? r->action : CodeAction::None; };
+  const auto action = [&](int g) {
+    const CodeInfo* r = findCode('G', g, c);
+    return r ? r->action : CodeAction::None;
+  };
   EXPECT_EQ(action(70), CodeAction::Inch);
   EXPECT_EQ(action(71), CodeAction::Metric);
   EXPECT_EQ(action(72), CodeAction::Finishing);

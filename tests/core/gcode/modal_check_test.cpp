@@ -50,7 +50,8 @@ TEST(ModalCheck, AReferenceReturnsAxisWordsAreAPointNotAFeedMove) {
 }
 
 TEST(ModalCheck, AModalFeedMoveWithoutItsGIsWarnedAtItsFirstAxisWord) {
-  EXPECT_EQ(places(modal("G21 G98\nG01\nG00 X20. Z2.\nG01 F100. Z0.\nG00 X30.\nG01\nZ-5.\n")), std::vector<std::string>{});
+  EXPECT_EQ(places(modal("G21 G98\nG01\nG00 X20. Z2.\nG01 F100. Z0.\nG00 X30.\nG01\nZ-5.\n")),
+            std::vector<std::string>{});
   EXPECT_EQ(places(modal("G21 G98\nG00 X20. Z2.\nG01\nU-2. W-1.\n")), std::vector<std::string>{"W104@4:1+4"});
 }
 
@@ -62,9 +63,9 @@ TEST(ModalCheck, AFeedGivenBeforeOrInTheBlockIsInForce) {
 }
 
 TEST(ModalCheck, WhatOnlyTheRunCanKnowIsNotGuessed) {
-  EXPECT_TRUE(modal("#1=0.2\nG01 X20. F#1\nG01 Z-5.\n").empty());   // a macro statement ends the walk
+  EXPECT_TRUE(modal("#1=0.2\nG01 X20. F#1\nG01 Z-5.\n").empty());  // a macro statement ends the walk
   EXPECT_TRUE(modal("O0001\nM98 P100\nG01 X20. Z0.\nM30\nO0100\nF0.2\nM99\n").empty());  // the subprogram may set F
-  EXPECT_TRUE(modal("/G01 X20. Z0.\n").empty());  // a skipped block may not run
+  EXPECT_TRUE(modal("/G01 X20. Z0.\n").empty());                                         // a skipped block may not run
 }
 
 TEST(ModalCheck, G96WithoutAG50LimitIsWarned) {
@@ -95,9 +96,7 @@ TEST(ModalCheck, AnArcWhoseRadiusCannotJoinItsEndsIsWarnedAtR) {
   EXPECT_TRUE(modal("G98 G00 X50. Z2.\nG90 X45. Z-20. F100.\nG00\nG02 X40. Z-30. R5.\n").empty());
 }
 
-TEST(ModalCheck, OnlyWhenAsked) {
-  EXPECT_TRUE(check(parse("G01 X20. Z0.\nG96 S100\n", 1)).empty());
-}
+TEST(ModalCheck, OnlyWhenAsked) { EXPECT_TRUE(check(parse("G01 X20. Z0.\nG96 S100\n", 1)).empty()); }
 
 }  // namespace
 }  // namespace klueng::core::gcode

@@ -18,8 +18,8 @@ using testing::TempDir;
 
 std::string codes(const std::vector<Diagnostic>& diags) {
   std::string s;
-  for (const Diagnostic& d : diags) s += d.code + "@" + std::to_string(d.range.line) + ":" +
-                                         std::to_string(d.range.column) + " ";
+  for (const Diagnostic& d : diags)
+    s += d.code + "@" + std::to_string(d.range.line) + ":" + std::to_string(d.range.column) + " ";
   return s;
 }
 
@@ -79,8 +79,8 @@ TEST_P(PlainGcodeFirstLine, IsReadAsPlainGcodeWithDefaults) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Starts, PlainGcodeFirstLine,
-                         ::testing::Values("%", "O0001", "N10 G21", "G21 G99", "g01 x20", "M03 S500",
-                                           "T0101", "(turning)", "; comment", "  N5", "G.5"));
+                         ::testing::Values("%", "O0001", "N10 G21", "G21 G99", "g01 x20", "M03 S500", "T0101",
+                                           "(turning)", "; comment", "  N5", "G.5"));
 
 class HeaderFirstLine : public ::testing::TestWithParam<const char*> {};
 
@@ -93,8 +93,8 @@ TEST_P(HeaderFirstLine, IsReadAsAHeader) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Starts, HeaderFirstLine,
-                         ::testing::Values("Gear shaft", "Mild steel", "Turning job", "Nut", "O-ring groove",
-                                           "", "งานกลึง", "Shaft"));
+                         ::testing::Values("Gear shaft", "Mild steel", "Turning job", "Nut", "O-ring groove", "",
+                                           "งานกลึง", "Shaft"));
 
 // SPEC 2 (ext): a header needs sizes on lines 4 and 5; a broken size line
 // makes the file plain G-code, with a warning that names the line.
@@ -115,8 +115,8 @@ TEST(ProgramFile, BadUnitDigitMakesAPlainFileWithAHint) {
 }
 
 TEST(ProgramFile, NonSizeLinesMakeAPlainFile) {
-  for (const char* text : {"P\nQ\nSteel\n150\nกขค\nMe\n", "P\nQ\nSteel\n15O\n1abc\nMe\n",
-                           "P\nQ\nSteel\n\n   \nMe\n", "Project\nPart\nSteel"}) {
+  for (const char* text : {"P\nQ\nSteel\n150\nกขค\nMe\n", "P\nQ\nSteel\n15O\n1abc\nMe\n", "P\nQ\nSteel\n\n   \nMe\n",
+                           "Project\nPart\nSteel"}) {
     const auto r = parseProgramFile(text);
     ASSERT_TRUE(r.value) << text;
     EXPECT_TRUE(r.value->plainGcode) << text;
@@ -139,11 +139,11 @@ TEST_P(NeverAHeader, IsPlainAndKeepsEveryLine) {
 
 INSTANTIATE_TEST_SUITE_P(
     Files, NeverAHeader,
-    ::testing::Values("\nO0001\nG21 G99\nT0101\nG00 X52. Z2.\nG01 Z-30. F0.2\nM30\n",  // blank first line
-                      "%\n\nO1000\nG20\nT0101\nG00 X2.1 Z0.1\nM30\n%\n",             // % then a blank line
+    ::testing::Values("\nO0001\nG21 G99\nT0101\nG00 X52. Z2.\nG01 Z-30. F0.2\nM30\n",   // blank first line
+                      "%\n\nO1000\nG20\nT0101\nG00 X2.1 Z0.1\nM30\n%\n",                // % then a blank line
                       "(SHAFT 50 X 100)\n(OD ROUGH)\nG21\nT0101\nG00 X52. Z2.\nM30\n",  // comment first
-                      "O1234\nN10 G21\nN20 T0101\n150\n1100\nN60 M30\n",              // O number, size-like lines
-                      "\n\n\n150\n1100\nG00 X10.\n",  // size lines but G-code on line 6
+                      "O1234\nN10 G21\nN20 T0101\n150\n1100\nN60 M30\n",                // O number, size-like lines
+                      "\n\n\n150\n1100\nG00 X10.\n",         // size lines but G-code on line 6
                       "G21\nG99\nT0101\n150\n1100\nMe\n"));  // size lines but G-code on lines 1-3
 
 TEST(ProgramFile, RealHeaderAndThaiHeader) {

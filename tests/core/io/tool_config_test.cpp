@@ -33,12 +33,16 @@ class ScopedEnv {
  public:
   ScopedEnv(const char* name, const std::optional<std::string>& value) : name_(name) {
     if (const char* old = std::getenv(name)) old_ = old;
-    if (value) ::setenv(name, value->c_str(), 1);
-    else ::unsetenv(name);
+    if (value)
+      ::setenv(name, value->c_str(), 1);
+    else
+      ::unsetenv(name);
   }
   ~ScopedEnv() {
-    if (old_) ::setenv(name_, old_->c_str(), 1);
-    else ::unsetenv(name_);
+    if (old_)
+      ::setenv(name_, old_->c_str(), 1);
+    else
+      ::unsetenv(name_);
   }
 
  private:
@@ -84,8 +88,9 @@ TEST(ToolTable, MissingLinesAreAnError) {
   EXPECT_EQ(d.code, "F120");
   EXPECT_EQ(d.range.line, 3);
   EXPECT_EQ(d.args, (std::vector<std::string>{"tools.cfg", "3", "04"}));
-  EXPECT_EQ(formatMessage(d, Lang::En),
-            "tools.cfg: the tool table needs 8 lines (bitmaps of tools 01 to 08) but has 3; tools 04 to 08 have no bitmap");
+  EXPECT_EQ(
+      formatMessage(d, Lang::En),
+      "tools.cfg: the tool table needs 8 lines (bitmaps of tools 01 to 08) but has 3; tools 04 to 08 have no bitmap");
   ASSERT_TRUE(r.value);
   EXPECT_EQ(r.value->bitmap[2], "c.bmp");
 }
@@ -99,7 +104,8 @@ TEST(ToolTable, EmptyFileHasNoLines) {
 
 TEST(ToolTable, ExtraLinesAreIgnoredWithAWarning) {
   // An 8-station turret (the seed's): line 10 is past it.
-  const auto r = parseToolTable("1.bmp\n2.bmp\n3.bmp\n4.bmp\n5.bmp\n6.bmp\n7.bmp\n8.bmp\n\nnine.bmp\n", "/d", "t.cfg", 8);
+  const auto r =
+      parseToolTable("1.bmp\n2.bmp\n3.bmp\n4.bmp\n5.bmp\n6.bmp\n7.bmp\n8.bmp\n\nnine.bmp\n", "/d", "t.cfg", 8);
   ASSERT_EQ(r.diagnostics.size(), 1u) << codes(r.diagnostics);
   EXPECT_EQ(r.diagnostics[0].code, "F107");
   EXPECT_EQ(r.diagnostics[0].severity, Severity::Warning);
@@ -207,17 +213,16 @@ TEST_P(OffsetLineErrors, NameTheLineAndColumn) {
   EXPECT_EQ(r.value->at(1).tip, 0);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Cases, OffsetLineErrors,
-    ::testing::Values(BadOffsetLine{"1 2 0.8", "F132", 8, {"o.cfg", "01", "3"}},
-                      BadOffsetLine{"1 2 0.8 3 5", "F132", 11, {"o.cfg", "01", "5"}},
-                      BadOffsetLine{"1 2x 0.8 3", "F133", 3, {"o.cfg", "01", "2x"}},
-                      BadOffsetLine{"nan 0 0.8 3", "F133", 1, {"o.cfg", "01", "nan"}},
-                      BadOffsetLine{"0 0 -0.4 3", "F134", 5, {"o.cfg", "01", "-0.4"}},
-                      BadOffsetLine{"0 0 0.4 10", "F135", 9, {"o.cfg", "01", "10"}},
-                      BadOffsetLine{"0 0 0.4 3.5", "F135", 9, {"o.cfg", "01", "3.5"}},
-                      BadOffsetLine{"0 0 0.4 -1", "F135", 9, {"o.cfg", "01", "-1"}},
-                      BadOffsetLine{"   ", "F131", 1, {"o.cfg", "01"}}));
+INSTANTIATE_TEST_SUITE_P(Cases, OffsetLineErrors,
+                         ::testing::Values(BadOffsetLine{"1 2 0.8", "F132", 8, {"o.cfg", "01", "3"}},
+                                           BadOffsetLine{"1 2 0.8 3 5", "F132", 11, {"o.cfg", "01", "5"}},
+                                           BadOffsetLine{"1 2x 0.8 3", "F133", 3, {"o.cfg", "01", "2x"}},
+                                           BadOffsetLine{"nan 0 0.8 3", "F133", 1, {"o.cfg", "01", "nan"}},
+                                           BadOffsetLine{"0 0 -0.4 3", "F134", 5, {"o.cfg", "01", "-0.4"}},
+                                           BadOffsetLine{"0 0 0.4 10", "F135", 9, {"o.cfg", "01", "10"}},
+                                           BadOffsetLine{"0 0 0.4 3.5", "F135", 9, {"o.cfg", "01", "3.5"}},
+                                           BadOffsetLine{"0 0 0.4 -1", "F135", 9, {"o.cfg", "01", "-1"}},
+                                           BadOffsetLine{"   ", "F131", 1, {"o.cfg", "01"}}));
 
 TEST(OffsetTable, MissingLinesAreAnError) {
   const auto r = parseOffsetTable("0 0 0.8 3\n0 0 0 8\n", "o.cfg");
@@ -433,9 +438,7 @@ TEST(ToolTable, ABitmapPathThatIsAFolderSaysSo) {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("klueng-bitmap-folder-" + std::to_string(::getpid()));
   fs::create_directories(dir / "01-outside.bmp");
-  {
-    std::ofstream(dir / "tools.cfg") << "01-outside.bmp\n\n\n\n\n\n\n\n";
-  }
+  { std::ofstream(dir / "tools.cfg") << "01-outside.bmp\n\n\n\n\n\n\n\n"; }
   const auto r = readToolTable((dir / "tools.cfg").string());
   fs::remove_all(dir);
   ASSERT_EQ(r.diagnostics.size(), 1u);

@@ -124,9 +124,9 @@ TEST(Library, ShippedLibraryHasTheSchoolLathesTools) {
   const auto r = readToolLibrary(shippedToolLibraryPath());
   ASSERT_TRUE(r.ok()) << codes(r.diagnostics);
   EXPECT_TRUE(r.diagnostics.empty()) << codes(r.diagnostics);
-  for (const char* id : {"cnmg-80-r08", "cnmg-80-r04", "dnmg-55-r04", "vnmg-35-r02", "threading-60", "threading-60-id",
-                         "grooving-3mm", "parting-3mm", "centre-drill", "drill-6mm", "drill-10mm", "drill-16mm",
-                         "drill-20mm", "boring-bar-16"}) {
+  for (const char* id :
+       {"cnmg-80-r08", "cnmg-80-r04", "dnmg-55-r04", "vnmg-35-r02", "threading-60", "threading-60-id", "grooving-3mm",
+        "parting-3mm", "centre-drill", "drill-6mm", "drill-10mm", "drill-16mm", "drill-20mm", "boring-bar-16"}) {
     const LibraryTool* t = r.value->find(id);
     ASSERT_NE(t, nullptr) << id;
     EXPECT_EQ(t->pixelsPerMm, 10.0) << id;
@@ -144,8 +144,9 @@ TEST(Library, ShippedLibraryHasTheSchoolLathesTools) {
 }
 
 TEST(Library, LineFields) {
-  const auto r = parseToolLibrary(
-      "# comment\n\n  my-tool | grooving | 5 | 0.2 | 3 | 4 | sub/g.png | Groove 4 | มีดกลึงร่อง 4 มม. \n", "/lib", "l.cfg");
+  const auto r =
+      parseToolLibrary("# comment\n\n  my-tool | grooving | 5 | 0.2 | 3 | 4 | sub/g.png | Groove 4 | มีดกลึงร่อง 4 มม. \n",
+                       "/lib", "l.cfg");
   ASSERT_TRUE(r.ok()) << codes(r.diagnostics);
   ASSERT_EQ(r.value->tools.size(), 1u);
   const LibraryTool& t = r.value->tools[0];

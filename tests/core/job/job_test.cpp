@@ -21,8 +21,8 @@ namespace klueng::core::job {
 namespace {
 
 using machine::LoadedSetup;
-using machine::MachineSetup;
 using machine::loadMachineSetup;
+using machine::MachineSetup;
 
 namespace fs = std::filesystem;
 
@@ -86,7 +86,8 @@ TEST(MakeJob, APlainProgramWithASubprogramFileIsParsedOnceEach) {
   EXPECT_EQ(gcode::parseCount() - before, 2u);  // MAIN.nc and O1000.nc, nothing twice
   ASSERT_TRUE(job.program());
   EXPECT_EQ(job.program()->files.size(), 2u);
-  for (const Diagnostic& d : job.diagnostics()) ADD_FAILURE() << d.code << " line " << d.range.line << " file " << d.range.file;
+  for (const Diagnostic& d : job.diagnostics())
+    ADD_FAILURE() << d.code << " line " << d.range.line << " file " << d.range.file;
   // The stock comes from the approach X42. (the next bar up), and a note says so.
   EXPECT_EQ(job.file()->header.stockSource, io::StockSource::Inferred);
   EXPECT_GE(job.file()->header.diameter, 42.0);
@@ -115,8 +116,9 @@ TEST(MakeJob, ASubprogramFileThatIsAFolderIsSaidToBeOne) {
   EXPECT_EQ(errors[0]->code, "E416");
   EXPECT_EQ(errors[0]->range.line, 3);
   EXPECT_EQ(errors[0]->range.column, 5);
-  EXPECT_EQ(formatMessage(*errors[0], Lang::En),
-            "M98 P1000: program O1000 is not in this file, and 'O1000.nc' in its folder is a folder, not a program file");
+  EXPECT_EQ(
+      formatMessage(*errors[0], Lang::En),
+      "M98 P1000: program O1000 is not in this file, and 'O1000.nc' in its folder is a folder, not a program file");
   EXPECT_EQ(formatMessage(*errors[0], Lang::Th),
             "M98 P1000: ไม่มีโปรแกรม O1000 ในไฟล์นี้ และ 'O1000.nc' ในโฟลเดอร์เดียวกันเป็นโฟลเดอร์ ไม่ใช่ไฟล์โปรแกรม");
   EXPECT_EQ(job.program()->files.size(), 2u);  // 2000.nc
@@ -155,7 +157,7 @@ TEST(MakeJob, WithoutAToolTableTWordsAreNotChecked) {
 std::vector<std::string> modalWarnings(const std::string& text) {
   JobInput input = request("");
   input.modalRules = true;  // as the editor asks
-  io::ProgramFile file;  // the editor's text: a plain program
+  io::ProgramFile file;     // the editor's text: a plain program
   file.plainGcode = true;
   file.gcodeFirstLine = 1;
   file.gcode = text;
@@ -225,7 +227,8 @@ TEST(MakeJob, CheckThenRunOnFirstAsk) {
 
 // The cut is computed once, whichever thread asks first; every thread sees the same bar.
 TEST(MakeJob, TheCutIsComputedOnceWhicheverThreadAsks) {
-  const auto job = makeJob(inMemory("T0101\nG97 S1000 M03\nG98 G00 X38. Z2.\nG01 Z-30. F100.\nG00 X50.\nZ2.\n", 40, shipped().setup));
+  const auto job = makeJob(
+      inMemory("T0101\nG97 S1000 M03\nG98 G00 X38. Z2.\nG01 Z-30. F100.\nG00 X50.\nZ2.\n", 40, shipped().setup));
   ASSERT_FALSE(job->hasErrors());
   const ComputeLog before = computeLog();
   std::vector<std::future<const cut::CutSimulator*>> asks;

@@ -173,8 +173,8 @@ TEST(FlowRun, ModalMacroRunsAfterEachMoveUntilG67) {
 TEST(FlowRun, SystemVariablesReadTheMachineState) {
   // #5001/#5002: the end point of the last block (X as a diameter); #4001 G01;
   // #4006 G21; #4109 the F.
-  const Timeline t = runText(
-      "G21 G98 G00 X40. Z5.\nG01 Z-10. F250.\n#100=#5001\n#101=#5002\n#102=#4001\n#103=#4006\n#104=#4109\n");
+  const Timeline t =
+      runText("G21 G98 G00 X40. Z5.\nG01 Z-10. F250.\n#100=#5001\n#101=#5002\n#102=#4001\n#103=#4006\n#104=#4109\n");
   ASSERT_FALSE(t.alarm);
   std::map<int, double> got;
   for (const VariableWrite& w : t.flow.writes) got[w.number] = w.value;
@@ -324,7 +324,8 @@ TEST(FlowRun, AnEndlessLoopAroundABigCycleStopsOnItsMoves) {
   // the way out and the step to the next (the last: back to the start) =
   // 621 x 13 = 8073 moves a pass.
   const Timeline t = runText(
-      "G21 G99 G97 S500 M03\nG00 X52. Z2.\n#1=0\nWHILE [#1 LT 3] DO1\nG75 R0.5\nG75 X40. Z-60. P1000 Q100 F0.05\nEND1\nM30\n",
+      "G21 G99 G97 S500 M03\nG00 X52. Z2.\n#1=0\nWHILE [#1 LT 3] DO1\nG75 R0.5\nG75 X40. Z-60. P1000 Q100 "
+      "F0.05\nEND1\nM30\n",
       RunOptions{}, setup);
   ASSERT_TRUE(t.alarm);
   EXPECT_EQ(t.alarm->code, "A151");
@@ -341,7 +342,8 @@ TEST(FlowRun, AnEndlessLoopAroundABigCycleStopsOnItsMoves) {
 // read like any block's; a statement inside the profile is refused.
 TEST(FlowRun, ACycleProfileWithAMacroStatementIsAnAlarmNotAWrongPart) {
   const Timeline t = runText(
-      "G98 G97 S500 M03\nG00 X50. Z2.\n#1=30.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 F100.\nN10 G00 X#1\n#2=-20.\nG01 Z#2\nN20 X50.\n");
+      "G98 G97 S500 M03\nG00 X50. Z2.\n#1=30.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 F100.\nN10 G00 X#1\n#2=-20.\nG01 "
+      "Z#2\nN20 X50.\n");
   ASSERT_TRUE(t.alarm);
   EXPECT_EQ(t.alarm->code, "A148");
   EXPECT_EQ(t.alarm->range.line, 5);

@@ -99,16 +99,32 @@ TEST(HaasG71, PassesAtExactDiametersThenTheFinishAllowanceProfile) {
   const CycleRun r(kHaasG71, Dialect::Haas);
   ASSERT_FALSE(r.timeline.alarm) << r.timeline.alarm->code;
   expectPath(r, 3, kInch,
-             {{R, 1.9, 0.1}, {L, 1.9, -1.995}, {R, 2.0, -1.945}, {R, 2.0, 0.1},
-              {R, 1.8, 0.1}, {L, 1.8, -0.995}, {R, 1.9, -0.945}, {R, 1.9, 0.1},
-              {R, 1.7, 0.1}, {L, 1.7, -0.995}, {R, 1.8, -0.945}, {R, 1.8, 0.1},
-              {R, 1.6, 0.1}, {L, 1.6, -0.995}, {R, 1.7, -0.945}, {R, 1.7, 0.1},
+             {{R, 1.9, 0.1},
+              {L, 1.9, -1.995},
+              {R, 2.0, -1.945},
+              {R, 2.0, 0.1},
+              {R, 1.8, 0.1},
+              {L, 1.8, -0.995},
+              {R, 1.9, -0.945},
+              {R, 1.9, 0.1},
+              {R, 1.7, 0.1},
+              {L, 1.7, -0.995},
+              {R, 1.8, -0.945},
+              {R, 1.8, 0.1},
+              {R, 1.6, 0.1},
+              {L, 1.6, -0.995},
+              {R, 1.7, -0.945},
+              {R, 1.7, 0.1},
               // The last roughing pass follows the profile at the finish allowance.
-              {R, 1.52, 0.105}, {L, 1.52, -0.995}, {L, 1.82, -0.995}, {L, 1.82, -1.995}, {L, 2.02, -1.995},
+              {R, 1.52, 0.105},
+              {L, 1.52, -0.995},
+              {L, 1.82, -0.995},
+              {L, 1.82, -1.995},
+              {L, 2.02, -1.995},
               {R, 2.0, 0.1}});
   // G70 P Q (same in both forms): the profile itself, then back to the start.
-  expectPath(r, 9, kInch, {{R, 1.5, 0.1}, {L, 1.5, -1.0}, {L, 1.8, -1.0}, {L, 1.8, -2.0}, {L, 2.0, -2.0},
-                           {R, 2.0, 0.1}});
+  expectPath(r, 9, kInch,
+             {{R, 1.5, 0.1}, {L, 1.5, -1.0}, {L, 1.8, -1.0}, {L, 1.8, -2.0}, {L, 2.0, -2.0}, {R, 2.0, 0.1}});
   // The first pass cuts 0.1 - (-1.995) = 2.095 in at F10. in/min: 0.2095 min = 12.57 s.
   bool found = false;
   for (const Move& m : r.timeline.moves)
@@ -139,9 +155,10 @@ TEST(HaasG71, RoughAllowanceIKStopsThePassesShort) {
 
 TEST(HaasG71, WithoutDTheSetting72DepthApplies) {
   // Setting 72 = 0.1 in: passes X1.8 and X1.6 (X1.4 is not above X1.52).
-  const CycleRun r("G98 G97 S500 M03\nG00 X2. Z0.1\nG71 P10 Q20 U0.02 W0.005 F10.\n"
-              "N10 G00 X1.5\nG01 Z-1.\nX1.8\nZ-2.\nN20 X2.\n",
-              Dialect::Haas);
+  const CycleRun r(
+      "G98 G97 S500 M03\nG00 X2. Z0.1\nG71 P10 Q20 U0.02 W0.005 F10.\n"
+      "N10 G00 X1.5\nG01 Z-1.\nX1.8\nZ-2.\nN20 X2.\n",
+      Dialect::Haas);
   ASSERT_FALSE(r.timeline.alarm);
   const auto p = r.path(3, kInch);
   ASSERT_EQ(p.size(), 4u * 2 + 6);
@@ -151,9 +168,10 @@ TEST(HaasG71, WithoutDTheSetting72DepthApplies) {
 
 TEST(HaasG71, APBlockWithXAndZIsAccepted) {
   // Haas type 2 form of a monotonic profile: N10 G00 X1.5 Z0.05.
-  const CycleRun r("G98 G97 S500 M03\nG00 X2. Z0.1\nG71 P10 Q20 D0.25 F10.\n"
-              "N10 G00 X1.5 Z0.05\nG01 Z-1.\nN20 X2.\n",
-              Dialect::Haas);
+  const CycleRun r(
+      "G98 G97 S500 M03\nG00 X2. Z0.1\nG71 P10 Q20 D0.25 F10.\n"
+      "N10 G00 X1.5 Z0.05\nG01 Z-1.\nN20 X2.\n",
+      Dialect::Haas);
   ASSERT_FALSE(r.timeline.alarm);
   // D0.25: the first level, X2.0 - 0.5 = X1.5, is not above A' X1.5: no roughing pass;
   // the last pass goes to A' (X1.5 Z0.05), along the profile, and back.
@@ -181,23 +199,23 @@ constexpr const char* kHaasG71Retract =
 TEST(HaasG71, ARetractAtTheStartLevelEndingTheProfileIsTravelledNotChecked) {
   const CycleRun r(kHaasG71Retract, Dialect::Haas);
   ASSERT_FALSE(r.timeline.alarm) << r.timeline.alarm->code;
-  expectPath(r, 3, kInch,
-             {{R, 1.9, 0.1}, {L, 1.9, -1.995}, {R, 2.0, -1.945}, {R, 2.0, 0.1},
-              {R, 1.8, 0.1}, {L, 1.8, -0.995}, {R, 1.9, -0.945}, {R, 1.9, 0.1},
-              {R, 1.7, 0.1}, {L, 1.7, -0.995}, {R, 1.8, -0.945}, {R, 1.8, 0.1},
-              {R, 1.6, 0.1}, {L, 1.6, -0.995}, {R, 1.7, -0.945}, {R, 1.7, 0.1},
-              {R, 1.52, 0.105}, {L, 1.52, -0.995}, {L, 1.82, -0.995}, {L, 1.82, -1.995}, {L, 2.02, -1.995},
-              {R, 2.02, 0.105}, {R, 2.0, 0.1}});
-  expectPath(r, 10, kInch, {{R, 1.5, 0.1}, {L, 1.5, -1.0}, {L, 1.8, -1.0}, {L, 1.8, -2.0}, {L, 2.0, -2.0},
-                            {R, 2.0, 0.1}, {R, 2.0, 0.1}});
+  expectPath(r, 3, kInch, {{R, 1.9, 0.1},     {L, 1.9, -1.995}, {R, 2.0, -1.945},  {R, 2.0, 0.1},     {R, 1.8, 0.1},
+                           {L, 1.8, -0.995},  {R, 1.9, -0.945}, {R, 1.9, 0.1},     {R, 1.7, 0.1},     {L, 1.7, -0.995},
+                           {R, 1.8, -0.945},  {R, 1.8, 0.1},    {R, 1.6, 0.1},     {L, 1.6, -0.995},  {R, 1.7, -0.945},
+                           {R, 1.7, 0.1},     {R, 1.52, 0.105}, {L, 1.52, -0.995}, {L, 1.82, -0.995}, {L, 1.82, -1.995},
+                           {L, 2.02, -1.995}, {R, 2.02, 0.105}, {R, 2.0, 0.1}});
+  expectPath(
+      r, 10, kInch,
+      {{R, 1.5, 0.1}, {L, 1.5, -1.0}, {L, 1.8, -1.0}, {L, 1.8, -2.0}, {L, 2.0, -2.0}, {R, 2.0, 0.1}, {R, 2.0, 0.1}});
 }
 
 TEST(HaasG71, APieceBelowTheStartLevelAfterTheRetractStillCounts) {
   // Only the end of the profile may lie outside: X1.9 after the retract comes
   // back below the start's X2.0 and turns back in X (A121 on its block).
-  const CycleRun r("G98 G97 S500 M03\nG00 X2. Z0.1\nG71 P10 Q20 D0.05 F10.\n"
-                   "N10 G00 X1.5\nG01 Z-1.\nX2.\nZ-0.5\nN20 X1.9\n",
-                   Dialect::Haas);
+  const CycleRun r(
+      "G98 G97 S500 M03\nG00 X2. Z0.1\nG71 P10 Q20 D0.05 F10.\n"
+      "N10 G00 X1.5\nG01 Z-1.\nX2.\nZ-0.5\nN20 X1.9\n",
+      Dialect::Haas);
   ASSERT_TRUE(r.timeline.alarm);
   EXPECT_EQ(r.timeline.alarm->code, "A121");
   EXPECT_EQ(r.timeline.alarm->range.line, 7);
@@ -206,9 +224,10 @@ TEST(HaasG71, APieceBelowTheStartLevelAfterTheRetractStillCounts) {
 TEST(FanucG71, ARetractEndingTheProfileIsNotMonotonic) {
   // Fanuc 0i-TF wants the whole shape A'..B monotonic (docs/haas-cycles.md):
   // the same profile in the two-block form stops with A121 on the retract.
-  const CycleRun r("G98 G97 S500 M03\nG00 X2. Z0.1\nG71 U0.05 R0.05\nG71 P10 Q20 U0.02 W0.005 F10.\n"
-                   "N10 G00 X1.5 Z0.1\nG01 Z-1.\nX1.8\nZ-2.\nX2.\nN20 G00 Z0.1\n",
-                   Dialect::Fanuc);
+  const CycleRun r(
+      "G98 G97 S500 M03\nG00 X2. Z0.1\nG71 U0.05 R0.05\nG71 P10 Q20 U0.02 W0.005 F10.\n"
+      "N10 G00 X1.5 Z0.1\nG01 Z-1.\nX1.8\nZ-2.\nX2.\nN20 G00 Z0.1\n",
+      Dialect::Fanuc);
   ASSERT_TRUE(r.timeline.alarm);
   EXPECT_EQ(r.timeline.alarm->code, "A121");
   EXPECT_EQ(r.timeline.alarm->range.line, 10);
@@ -229,44 +248,81 @@ TEST(HaasG72, FacingPassesDAlongZ) {
   // outside: A' = Z-0.3; passes at Z 0.1 - 0.1k while above Z-0.3: Z0, Z-0.1,
   // Z-0.2; each cuts from X2.2 to the profile at X1.0 (no allowance), retracts
   // 0.05 at 45 degrees (Z +0.05, X +0.1 diameter) and rapids back to X2.2.
-  const CycleRun r("G98 G97 S500 M03\nG00 X2.2 Z0.1\nG72 P10 Q20 D0.1 F10.\n"
-              "N10 G00 Z-0.3\nG01 X1.0\nN20 Z0.1\n",
-              Dialect::Haas);
+  const CycleRun r(
+      "G98 G97 S500 M03\nG00 X2.2 Z0.1\nG72 P10 Q20 D0.1 F10.\n"
+      "N10 G00 Z-0.3\nG01 X1.0\nN20 Z0.1\n",
+      Dialect::Haas);
   ASSERT_FALSE(r.timeline.alarm) << r.timeline.alarm->code;
   expectPath(r, 3, kInch,
-             {{R, 2.2, 0.0}, {L, 1.0, 0.0}, {R, 1.1, 0.05}, {R, 2.2, 0.05},
-              {R, 2.2, -0.1}, {L, 1.0, -0.1}, {R, 1.1, -0.05}, {R, 2.2, -0.05},
-              {R, 2.2, -0.2}, {L, 1.0, -0.2}, {R, 1.1, -0.15}, {R, 2.2, -0.15},
-              {R, 2.2, -0.3}, {L, 1.0, -0.3}, {L, 1.0, 0.1}, {R, 2.2, 0.1}});
+             {{R, 2.2, 0.0},
+              {L, 1.0, 0.0},
+              {R, 1.1, 0.05},
+              {R, 2.2, 0.05},
+              {R, 2.2, -0.1},
+              {L, 1.0, -0.1},
+              {R, 1.1, -0.05},
+              {R, 2.2, -0.05},
+              {R, 2.2, -0.2},
+              {L, 1.0, -0.2},
+              {R, 1.1, -0.15},
+              {R, 2.2, -0.15},
+              {R, 2.2, -0.3},
+              {L, 1.0, -0.3},
+              {L, 1.0, 0.1},
+              {R, 2.2, 0.1}});
 }
 
 TEST(HaasG72, ARetractAlongXAtTheStartLevelEndsTheProfile) {
   // The profile of FacingPassesDAlongZ, ending at the start's Z0.1, then
   // `N20 G00 X2.2` back over the face: outside the stock, so the passes are
   // the same; the last pass travels the retract (X2.2 Z0.1 is the start).
-  const CycleRun r("G98 G97 S500 M03\nG00 X2.2 Z0.1\nG72 P10 Q20 D0.1 F10.\n"
-                   "N10 G00 Z-0.3\nG01 X1.0\nZ0.1\nN20 G00 X2.2\n",
-                   Dialect::Haas);
+  const CycleRun r(
+      "G98 G97 S500 M03\nG00 X2.2 Z0.1\nG72 P10 Q20 D0.1 F10.\n"
+      "N10 G00 Z-0.3\nG01 X1.0\nZ0.1\nN20 G00 X2.2\n",
+      Dialect::Haas);
   ASSERT_FALSE(r.timeline.alarm) << r.timeline.alarm->code;
   expectPath(r, 3, kInch,
-             {{R, 2.2, 0.0}, {L, 1.0, 0.0}, {R, 1.1, 0.05}, {R, 2.2, 0.05},
-              {R, 2.2, -0.1}, {L, 1.0, -0.1}, {R, 1.1, -0.05}, {R, 2.2, -0.05},
-              {R, 2.2, -0.2}, {L, 1.0, -0.2}, {R, 1.1, -0.15}, {R, 2.2, -0.15},
-              {R, 2.2, -0.3}, {L, 1.0, -0.3}, {L, 1.0, 0.1}, {R, 2.2, 0.1}, {R, 2.2, 0.1}});
+             {{R, 2.2, 0.0},
+              {L, 1.0, 0.0},
+              {R, 1.1, 0.05},
+              {R, 2.2, 0.05},
+              {R, 2.2, -0.1},
+              {L, 1.0, -0.1},
+              {R, 1.1, -0.05},
+              {R, 2.2, -0.05},
+              {R, 2.2, -0.2},
+              {L, 1.0, -0.2},
+              {R, 1.1, -0.15},
+              {R, 2.2, -0.15},
+              {R, 2.2, -0.3},
+              {L, 1.0, -0.3},
+              {L, 1.0, 0.1},
+              {R, 2.2, 0.1},
+              {R, 2.2, 0.1}});
 }
 
 // ---- G73 one-block ------------------------------------------------------------------
 
 TEST(HaasG73, DPassesFromTheReliefIKDownToTheProfile) {
   // D3, I0.1 (radius) K0: passes shifted 0.1, 0.05, 0 radius = X +0.2, +0.1, +0 diameter.
-  const CycleRun r("G98 G97 S500 M03\nG00 X2. Z0.1\nG73 P10 Q20 I0.1 K0. D3 F10.\n"
-              "N10 G01 X1.5 Z0.\nZ-1.\nN20 X2.\n",
-              Dialect::Haas);
+  const CycleRun r(
+      "G98 G97 S500 M03\nG00 X2. Z0.1\nG73 P10 Q20 I0.1 K0. D3 F10.\n"
+      "N10 G01 X1.5 Z0.\nZ-1.\nN20 X2.\n",
+      Dialect::Haas);
   ASSERT_FALSE(r.timeline.alarm) << r.timeline.alarm->code;
   expectPath(r, 3, kInch,
-             {{L, 1.7, 0.0}, {L, 1.7, -1.0}, {L, 2.2, -1.0}, {R, 2.0, 0.1},
-              {L, 1.6, 0.0}, {L, 1.6, -1.0}, {L, 2.1, -1.0}, {R, 2.0, 0.1},
-              {L, 1.5, 0.0}, {L, 1.5, -1.0}, {L, 2.0, -1.0}, {R, 2.0, 0.1}});
+             {{L, 1.7, 0.0},
+              {L, 1.7, -1.0},
+              {L, 2.2, -1.0},
+              {R, 2.0, 0.1},
+              {L, 1.6, 0.0},
+              {L, 1.6, -1.0},
+              {L, 2.1, -1.0},
+              {R, 2.0, 0.1},
+              {L, 1.5, 0.0},
+              {L, 1.5, -1.0},
+              {L, 2.0, -1.0},
+              {R, 2.0, 0.1}});
 }
 
 // ---- G76 one-block ------------------------------------------------------------------
@@ -281,8 +337,8 @@ TEST(HaasG76, DepthsGrowAsDTimesRootNAndEndAtK) {
   const auto p = r.path(3, kInch);
   for (std::size_t i = 1; i < p.size(); ++i)
     if (p[i].kind == T && p[i - 1].kind == R) starts.push_back(p[i - 1].x);
-  const std::vector<double> depths = {0.02, 0.02 * std::sqrt(2.0), 0.02 * std::sqrt(3.0), 0.04,
-                                      0.02 * std::sqrt(5.0), 0.02 * std::sqrt(6.0), 0.05};
+  const std::vector<double> depths = {
+      0.02, 0.02 * std::sqrt(2.0), 0.02 * std::sqrt(3.0), 0.04, 0.02 * std::sqrt(5.0), 0.02 * std::sqrt(6.0), 0.05};
   ASSERT_EQ(starts.size(), depths.size());
   for (std::size_t i = 0; i < depths.size(); ++i) EXPECT_NEAR(starts[i], 0.9 + 2.0 * (0.05 - depths[i]), 1e-6);
   // The last pass: rapid to X0.9, thread to Z-0.9, then the 45-degree chamfer of
@@ -340,9 +396,19 @@ TEST(HaasG75, PecksIInXRowsKInZ) {
   const CycleRun r("G98 G97 S500 M03\nG00 X1.5 Z-0.3\nG75 X1.0 Z-0.5 I0.1 K0.2 F5.\n", Dialect::Haas);
   ASSERT_FALSE(r.timeline.alarm) << r.timeline.alarm->code;
   expectPath(r, 3, kInch,
-             {{L, 1.3, -0.3}, {R, 1.4, -0.3}, {L, 1.1, -0.3}, {R, 1.2, -0.3}, {L, 1.0, -0.3}, {R, 1.5, -0.3},
+             {{L, 1.3, -0.3},
+              {R, 1.4, -0.3},
+              {L, 1.1, -0.3},
+              {R, 1.2, -0.3},
+              {L, 1.0, -0.3},
+              {R, 1.5, -0.3},
               {R, 1.5, -0.5},
-              {L, 1.3, -0.5}, {R, 1.4, -0.5}, {L, 1.1, -0.5}, {R, 1.2, -0.5}, {L, 1.0, -0.5}, {R, 1.5, -0.5},
+              {L, 1.3, -0.5},
+              {R, 1.4, -0.5},
+              {L, 1.1, -0.5},
+              {R, 1.2, -0.5},
+              {L, 1.0, -0.5},
+              {R, 1.5, -0.5},
               {R, 1.5, -0.3}});
 }
 
@@ -362,9 +428,9 @@ TEST(FanucG83, PecksQFromTheRPointAndReturnsToTheInitialLevel) {
   // 1 mm (parameter 5115) above the last peck: Z-5, Z-13.
   const CycleRun r("G98 G97 S500 M03\nG00 X0 Z5.\nG83 Z-20. R-3. Q8000 F100.\nG80\nG00 X50.\n", Dialect::Fanuc);
   ASSERT_FALSE(r.timeline.alarm) << r.timeline.alarm->code;
-  expectPath(r, 3, 1.0,
-             {{R, 0, 2}, {L, 0, -6}, {R, 0, 2}, {R, 0, -5}, {L, 0, -14}, {R, 0, 2}, {R, 0, -13}, {L, 0, -20},
-              {R, 0, 5}});
+  expectPath(
+      r, 3, 1.0,
+      {{R, 0, 2}, {L, 0, -6}, {R, 0, 2}, {R, 0, -5}, {L, 0, -14}, {R, 0, 2}, {R, 0, -13}, {L, 0, -20}, {R, 0, 5}});
   expectPath(r, 5, 1.0, {{R, 50, 5}});
   // Feeds: 8 + 9 + 7 = 24 mm at 100 mm/min = 14.4 s.
   double feedTime = 0.0;
@@ -458,12 +524,23 @@ TEST(HaasG83, PecksIThenLessByJNeverUnderK) {
   const CycleRun r("G98 G97 S500 M03\nG00 X0 Z0.2\nG83 Z-1. R0.05 I0.3 J0.1 K0.15 P0.5 F5.\n", Dialect::Haas);
   ASSERT_FALSE(r.timeline.alarm) << r.timeline.alarm->code;
   expectPath(r, 3, kInch,
-             {{R, 0, 0.05}, {L, 0, -0.25},
-              {R, 0, 0.05}, {R, 0, -0.2}, {L, 0, -0.45},
-              {R, 0, 0.05}, {R, 0, -0.4}, {L, 0, -0.6},
-              {R, 0, 0.05}, {R, 0, -0.55}, {L, 0, -0.75},
-              {R, 0, 0.05}, {R, 0, -0.7}, {L, 0, -0.9},
-              {R, 0, 0.05}, {R, 0, -0.85}, {L, 0, -1.0},
+             {{R, 0, 0.05},
+              {L, 0, -0.25},
+              {R, 0, 0.05},
+              {R, 0, -0.2},
+              {L, 0, -0.45},
+              {R, 0, 0.05},
+              {R, 0, -0.4},
+              {L, 0, -0.6},
+              {R, 0, 0.05},
+              {R, 0, -0.55},
+              {L, 0, -0.75},
+              {R, 0, 0.05},
+              {R, 0, -0.7},
+              {L, 0, -0.9},
+              {R, 0, 0.05},
+              {R, 0, -0.85},
+              {L, 0, -1.0},
               {R, 0, 0.2}});
   ASSERT_EQ(r.sink.dwells.size(), 1u);
   EXPECT_DOUBLE_EQ(r.sink.dwells[0].seconds, 0.5);

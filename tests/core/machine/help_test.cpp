@@ -50,7 +50,8 @@ std::string problems(const std::string& gcode, gcode::Dialect dialect,
   const job::Job& job = *made;
   std::string out;
   for (const Diagnostic& d : job.diagnostics())
-    if (isError(d.severity) || d.severity == Severity::Warning) out += "check " + formatWithPlace("example", d, Lang::En) + "\n";
+    if (isError(d.severity) || d.severity == Severity::Warning)
+      out += "check " + formatWithPlace("example", d, Lang::En) + "\n";
   if (!job.file() || !job.program() || job.hasErrors()) return out + "does not load\n";
   const Timeline& t = *job.timeline();
   if (t.alarm) return out + "run " + formatWithPlace("example", *t.alarm, Lang::En) + "\n";
@@ -70,7 +71,9 @@ TEST(Help, EveryCodeHasAWorkedExampleThatRunsClean) {
       const std::string name = codeName(row.letter, row.number);
       ASSERT_FALSE(text.empty()) << name;
       EXPECT_NE(text.find(name), std::string::npos) << name << " is not in its own example:\n" << text;
-      EXPECT_EQ(problems(text, d, workedExampleFiles(row.letter, row.number, d)), "") << name << " in " << gcode::dialectName(d) << ":\n" << text;
+      EXPECT_EQ(problems(text, d, workedExampleFiles(row.letter, row.number, d)), "")
+          << name << " in " << gcode::dialectName(d) << ":\n"
+          << text;
       ++examples;
     }
   EXPECT_GT(examples, 150);
@@ -92,7 +95,9 @@ TEST(Help, SearchFindsRoughingInEnglishAndInThai) {
   for (std::string_view q : {"roughing", "กลึงปอกหยาบ", "rough turning"}) {
     const std::vector<HelpHit> hits = searchHelp(q, gcode::Dialect::Fanuc);
     ASSERT_FALSE(hits.empty()) << q;
-    EXPECT_TRUE(std::any_of(hits.begin(), hits.end(), [](const HelpHit& h) { return h.letter == 'G' && h.number == 71; })) << q;
+    EXPECT_TRUE(std::any_of(hits.begin(), hits.end(), [](const HelpHit& h) {
+      return h.letter == 'G' && h.number == 71;
+    })) << q;
   }
   // The code itself comes first, written either way.
   for (std::string_view q : {"G71", "g71", "G071"}) {
@@ -104,10 +109,14 @@ TEST(Help, SearchFindsRoughingInEnglishAndInThai) {
   // G28 and G30 are found by the words teachers use for both (each has its own action).
   const std::vector<HelpHit> home = searchHelp("home", gcode::Dialect::Fanuc);
   for (int code : {28, 30})
-    EXPECT_TRUE(std::any_of(home.begin(), home.end(), [code](const HelpHit& h) { return h.letter == 'G' && h.number == code; })) << code;
+    EXPECT_TRUE(std::any_of(home.begin(), home.end(), [code](const HelpHit& h) {
+      return h.letter == 'G' && h.number == code;
+    })) << code;
   const std::vector<HelpHit> thread = searchHelp("เกลียว", gcode::Dialect::Fanuc);
   for (int code : {32, 76, 92})
-    EXPECT_TRUE(std::any_of(thread.begin(), thread.end(), [code](const HelpHit& h) { return h.letter == 'G' && h.number == code; })) << code;
+    EXPECT_TRUE(std::any_of(thread.begin(), thread.end(), [code](const HelpHit& h) {
+      return h.letter == 'G' && h.number == code;
+    })) << code;
   EXPECT_TRUE(searchHelp("coolant", gcode::Dialect::Fanuc).front().letter == 'M');
   EXPECT_TRUE(searchHelp("xyzzy", gcode::Dialect::Fanuc).empty());
   EXPECT_TRUE(searchHelp("  ", gcode::Dialect::Fanuc).empty());
@@ -153,8 +162,10 @@ TEST(Help, ASystemBMachineSpeaksItsOwnNumbers) {
 
   // The search and the explain bar find the system's numbers.
   const std::vector<HelpHit> hits = searchHelp("thread", romi);
-  EXPECT_TRUE(std::any_of(hits.begin(), hits.end(), [](const HelpHit& h) { return h.letter == 'G' && h.number == 33; }));
-  EXPECT_TRUE(std::none_of(hits.begin(), hits.end(), [](const HelpHit& h) { return h.letter == 'G' && h.number == 32; }));
+  EXPECT_TRUE(
+      std::any_of(hits.begin(), hits.end(), [](const HelpHit& h) { return h.letter == 'G' && h.number == 33; }));
+  EXPECT_TRUE(
+      std::none_of(hits.begin(), hits.end(), [](const HelpHit& h) { return h.letter == 'G' && h.number == 32; }));
   EXPECT_EQ(searchHelp("G78", romi).front().number, 78);
   EXPECT_EQ(explainCode('G', 99, romi, Lang::En), "drilling cycles return to the R point");
 }

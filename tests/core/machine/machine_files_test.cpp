@@ -235,8 +235,8 @@ TEST(MachineFiles, SystemBProgramCutsItsPartAndIsOfferedTheRomi) {
   ASSERT_FALSE(t.alarm.has_value());
   cut::CutSimulator sim(t, cut::CutSetup::from(io::JobHeader{}, setup));
   sim.runToEnd();
-  EXPECT_FALSE(sim.stoppingAlarm().has_value()) << formatMessage(*sim.stoppingAlarm(), Lang::En) << " line "
-                                                << sim.stoppingAlarm()->range.line;
+  EXPECT_FALSE(sim.stoppingAlarm().has_value())
+      << formatMessage(*sim.stoppingAlarm(), Lang::En) << " line " << sim.stoppingAlarm()->range.line;
   const cut::PartFeatures part = cut::partFeatures(sim.stock());
   bool d30 = false;
   std::vector<double> roots;  // the thread's roots: Ø18 (the G91 G33 pass at 24 - 6), right to left
@@ -266,8 +266,9 @@ TEST(MachineFiles, SystemBProgramCutsItsPartAndIsOfferedTheRomi) {
   ASSERT_TRUE(fromG95.has_value());
   EXPECT_EQ(fromG95->dialect, romi);
   EXPECT_EQ(fromG95->note.range.line, 3);  // G90 G95 G21;
-  const std::string g92Program = "O0001;\nG21;\nG92 S2500;\nT0101;\nG96 S200 M03;\nG00 X52. Z2.;\nG01 X48. F0.2;\n"
-                                 "Z-20.;\nG00 X100. Z100.;\nM30;\n";
+  const std::string g92Program =
+      "O0001;\nG21;\nG92 S2500;\nT0101;\nG96 S200 M03;\nG00 X52. Z2.;\nG01 X48. F0.2;\n"
+      "Z-20.;\nG00 X100. Z100.;\nM30;\n";
   const auto fromG92 = offer(g92Program);
   EXPECT_TRUE(errorsOf(g92Program, romi).empty());
   // In system A, G92 is the threading cycle: without its end point it is E140 at the G92.
@@ -276,7 +277,8 @@ TEST(MachineFiles, SystemBProgramCutsItsPartAndIsOfferedTheRomi) {
   EXPECT_EQ(asA[0].code, "E140");
   EXPECT_EQ(asA[0].range.line, 3);
   EXPECT_EQ(asA[0].range.column, 1);
-  EXPECT_EQ(formatMessage(asA[0], Lang::En), "G92 is a single cycle: its block needs the cycle's end point, X (U) and Z (W)");
+  EXPECT_EQ(formatMessage(asA[0], Lang::En),
+            "G92 is a single cycle: its block needs the cycle's end point, X (U) and Z (W)");
   ASSERT_TRUE(fromG92.has_value());
   EXPECT_EQ(fromG92->dialect, romi);
   EXPECT_EQ(fromG92->note.range.line, 3);  // G92 S2500;

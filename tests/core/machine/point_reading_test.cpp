@@ -18,7 +18,8 @@ constexpr const char* kShopHabit =
 
 TEST(PointReading, APlainProgramsNumbersDecideWithANote) {
   gcode::Program p = gcode::parse(kShopHabit);
-  const PointReading r = readDecimalPoints(p, true, std::nullopt, true, gcode::InputUnits::Millimetre, gcode::Dialect::Fanuc);
+  const PointReading r =
+      readDecimalPoints(p, true, std::nullopt, true, gcode::InputUnits::Millimetre, gcode::Dialect::Fanuc);
   EXPECT_FALSE(r.calculatorInput);
   EXPECT_TRUE(r.fromProgram);
   ASSERT_EQ(r.diagnostics.size(), 1u);
@@ -32,7 +33,8 @@ TEST(PointReading, APlainProgramsNumbersDecideWithANote) {
 
 TEST(PointReading, TheUsersChoiceWinsAndAHeaderFileFollowsTheMachine) {
   gcode::Program chosen = gcode::parse(kShopHabit);
-  const PointReading c = readDecimalPoints(chosen, true, true, false, gcode::InputUnits::Millimetre, gcode::Dialect::Fanuc);
+  const PointReading c =
+      readDecimalPoints(chosen, true, true, false, gcode::InputUnits::Millimetre, gcode::Dialect::Fanuc);
   EXPECT_TRUE(c.calculatorInput);
   EXPECT_FALSE(c.fromProgram);
   ASSERT_EQ(c.diagnostics.size(), 2u);  // W111 on U1500 and R500, nothing else
@@ -40,7 +42,8 @@ TEST(PointReading, TheUsersChoiceWinsAndAHeaderFileFollowsTheMachine) {
   EXPECT_DOUBLE_EQ(chosen.blocks[1].find('U')->value, 1500.0);
 
   gcode::Program header = gcode::parse(kShopHabit);
-  const PointReading h = readDecimalPoints(header, false, std::nullopt, true, gcode::InputUnits::Millimetre, gcode::Dialect::Fanuc);
+  const PointReading h =
+      readDecimalPoints(header, false, std::nullopt, true, gcode::InputUnits::Millimetre, gcode::Dialect::Fanuc);
   EXPECT_TRUE(h.calculatorInput);
   EXPECT_FALSE(h.fromProgram);
   EXPECT_DOUBLE_EQ(header.blocks[1].find('R')->value, 500.0);
@@ -48,7 +51,8 @@ TEST(PointReading, TheUsersChoiceWinsAndAHeaderFileFollowsTheMachine) {
 
 TEST(PointReading, WholeNumbersOnAMachineSetToIncrementsAreReadWholeAndSaidSo) {
   gcode::Program p = gcode::parse("G21 G00 X40 Z2\nG01 Z-30 F0.2\nX44\n");
-  const PointReading r = readDecimalPoints(p, true, std::nullopt, false, gcode::InputUnits::Millimetre, gcode::Dialect::Fanuc);
+  const PointReading r =
+      readDecimalPoints(p, true, std::nullopt, false, gcode::InputUnits::Millimetre, gcode::Dialect::Fanuc);
   EXPECT_TRUE(r.calculatorInput);
   ASSERT_EQ(r.diagnostics.size(), 1u);
   EXPECT_EQ(r.diagnostics[0].code, "I104");
@@ -56,13 +60,15 @@ TEST(PointReading, WholeNumbersOnAMachineSetToIncrementsAreReadWholeAndSaidSo) {
   EXPECT_DOUBLE_EQ(p.blocks[0].find('X')->value, 40.0);
   // The same on a machine that reads whole: nothing to say.
   gcode::Program q = gcode::parse("G21 G00 X40 Z2\nG01 Z-30 F0.2\nX44\n");
-  EXPECT_TRUE(readDecimalPoints(q, true, std::nullopt, true, gcode::InputUnits::Millimetre, gcode::Dialect::Fanuc).diagnostics.empty());
+  EXPECT_TRUE(readDecimalPoints(q, true, std::nullopt, true, gcode::InputUnits::Millimetre, gcode::Dialect::Fanuc)
+                  .diagnostics.empty());
 }
 
 TEST(PointReading, ATieIsTheMachines) {
   // One word for each reading: U2000 (2 m depth whole) and X30 (0.03 mm in increments).
   gcode::Program p = gcode::parse("G21 G00 X30 Z2.\nG71 U2000 R0.5\n");
-  const PointReading r = readDecimalPoints(p, true, std::nullopt, false, gcode::InputUnits::Millimetre, gcode::Dialect::Fanuc);
+  const PointReading r =
+      readDecimalPoints(p, true, std::nullopt, false, gcode::InputUnits::Millimetre, gcode::Dialect::Fanuc);
   EXPECT_FALSE(r.calculatorInput);
   EXPECT_FALSE(r.fromProgram);
   ASSERT_EQ(r.diagnostics.size(), 1u);

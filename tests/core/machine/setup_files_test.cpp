@@ -22,7 +22,8 @@ class SetupFolder {
  public:
   SetupFolder() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::temp_directory_path() / ("klueng-setup-" + std::string(info->name()) + "-" + std::to_string(::getpid()));
+    path_ =
+        fs::temp_directory_path() / ("klueng-setup-" + std::string(info->name()) + "-" + std::to_string(::getpid()));
     fs::remove_all(path_);
     fs::create_directories(path_);
   }
@@ -127,11 +128,13 @@ TEST(LoadMachineSetup, ABitmapLargerThanAToolIsASetupErrorAtItsLine) {
   EXPECT_EQ(d.diagnostic.range.line, 1);
   EXPECT_EQ(d.diagnostic.range.column, 1);
   EXPECT_EQ(formatMessage(d.diagnostic, Lang::En),
-            tools + ": tool 01: the bitmap 'wide.bmp' is 1001 x 40 pixels; a tool bitmap may be at most 1000 x 1000 "
-                    "pixels (500 mm each way at 2 pixels per mm)");
+            tools +
+                ": tool 01: the bitmap 'wide.bmp' is 1001 x 40 pixels; a tool bitmap may be at most 1000 x 1000 "
+                "pixels (500 mm each way at 2 pixels per mm)");
   EXPECT_EQ(formatMessage(d.diagnostic, Lang::Th),
-            tools + ": มีดตัด 01: ภาพ 'wide.bmp' มีขนาด 1001 x 40 พิกเซล ภาพมีดตัดต้องไม่เกิน 1000 x 1000 พิกเซล "
-                    "(ด้านละ 500 มม. ที่ 2 พิกเซลต่อมม.)");
+            tools +
+                ": มีดตัด 01: ภาพ 'wide.bmp' มีขนาด 1001 x 40 พิกเซล ภาพมีดตัดต้องไม่เกิน 1000 x 1000 พิกเซล "
+                "(ด้านละ 500 มม. ที่ 2 พิกเซลต่อมม.)");
   EXPECT_TRUE(loaded.hasErrors());
   EXPECT_TRUE(loaded.setup.tools.bitmapUnreadable[0]);
   EXPECT_FALSE(loaded.bitmaps[0]);

@@ -67,9 +67,9 @@ inline Vec2 at(double xDiameter, double z) { return Vec2(z, xDiameter / 2.0); }
 
 }  // namespace klueng::core::machine::testing
 
-#define EXPECT_POINT(actual, xDiameter, z)                                                    \
-  do {                                                                                        \
-    const ::klueng::core::Vec2 p_ = (actual);                                                 \
-    EXPECT_NEAR(2.0 * p_.y(), (xDiameter), 1e-6) << "X (diameter)";                           \
-    EXPECT_NEAR(p_.x(), (z), 1e-6) << "Z";                                                    \
+#define EXPECT_POINT(actual, xDiameter, z)                          \
+  do {                                                              \
+    const ::klueng::core::Vec2 p_ = (actual);                       \
+    EXPECT_NEAR(2.0 * p_.y(), (xDiameter), 1e-6) << "X (diameter)"; \
+    EXPECT_NEAR(p_.x(), (z), 1e-6) << "Z";                          \
   } while (0)

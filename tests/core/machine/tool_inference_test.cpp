@@ -65,37 +65,37 @@ void expectChoice(const ToolInference& r, int station, const std::string& id, To
 
 // A Haas ST shop program (inch, one-block cycles, N-comment lines, T1212 cut-off).
 const char* kHaasShaft =
-    "%\n"                                              // 1
-    "O20012 (SHAFT 1.5 DIA)\n"                         // 2
-    "G20 G40 G80 G99\n"                                // 3
-    "N1 (OD ROUGH)\n"                                  // 4
-    "G28 U0 W0\n"                                      // 5
-    "T101\n"                                           // 6
-    "G50 S3000\n"                                      // 7
-    "G96 S600 M03\n"                                   // 8
-    "G00 G54 X1.6 Z0.1 M08\n"                          // 9
-    "G71 P10 Q20 U0.02 W0.005 D0.05 F0.012\n"          // 10
-    "N10 G00 X0.8\n"                                   // 11
-    "G01 Z-1.\n"                                       // 12
-    "X1.2 Z-1.5\n"                                     // 13
-    "N20 X1.6\n"                                       // 14
-    "G00 G53 X0\n"                                     // 15
-    "M01\n"                                            // 16
-    "N3 (THREAD 3/4-12)\n"                             // 17
-    "T909\n"                                           // 18
-    "G97 S800 M03\n"                                   // 19
-    "G00 X1.0 Z0.2\n"                                  // 20
-    "G76 X0.7 Z-0.9 K0.0613 D0.01 F0.0833\n"           // 21
-    "G00 G53 X0\n"                                     // 22
-    "M01\n"                                            // 23
-    "N12 (CUT OFF)\n"                                  // 24
-    "T1212\n"                                          // 25
-    "G97 S600 M03\n"                                   // 26
-    "G00 X1.7 Z-2.2\n"                                 // 27
-    "G01 X-0.02 F0.003\n"                              // 28
-    "G00 X1.7\n"                                       // 29
-    "G28 U0 W0\n"                                      // 30
-    "M30\n"                                            // 31
+    "%\n"                                      // 1
+    "O20012 (SHAFT 1.5 DIA)\n"                 // 2
+    "G20 G40 G80 G99\n"                        // 3
+    "N1 (OD ROUGH)\n"                          // 4
+    "G28 U0 W0\n"                              // 5
+    "T101\n"                                   // 6
+    "G50 S3000\n"                              // 7
+    "G96 S600 M03\n"                           // 8
+    "G00 G54 X1.6 Z0.1 M08\n"                  // 9
+    "G71 P10 Q20 U0.02 W0.005 D0.05 F0.012\n"  // 10
+    "N10 G00 X0.8\n"                           // 11
+    "G01 Z-1.\n"                               // 12
+    "X1.2 Z-1.5\n"                             // 13
+    "N20 X1.6\n"                               // 14
+    "G00 G53 X0\n"                             // 15
+    "M01\n"                                    // 16
+    "N3 (THREAD 3/4-12)\n"                     // 17
+    "T909\n"                                   // 18
+    "G97 S800 M03\n"                           // 19
+    "G00 X1.0 Z0.2\n"                          // 20
+    "G76 X0.7 Z-0.9 K0.0613 D0.01 F0.0833\n"   // 21
+    "G00 G53 X0\n"                             // 22
+    "M01\n"                                    // 23
+    "N12 (CUT OFF)\n"                          // 24
+    "T1212\n"                                  // 25
+    "G97 S600 M03\n"                           // 26
+    "G00 X1.7 Z-2.2\n"                         // 27
+    "G01 X-0.02 F0.003\n"                      // 28
+    "G00 X1.7\n"                               // 29
+    "G28 U0 W0\n"                              // 30
+    "M30\n"                                    // 31
     "%\n";
 
 TEST(ToolInference, HaasShaftNamesItsToolsInNLineComments) {
@@ -120,7 +120,8 @@ TEST(ToolInference, HaasShaftNamesItsToolsInNLineComments) {
 
 TEST(ToolInference, WithoutCommentsTheCyclesTell) {
   std::string text = kHaasShaft;
-  for (const char* c : {"N3 (THREAD 3/4-12)\n", "N12 (CUT OFF)\n"}) text.replace(text.find(c), std::string(c).size(), "\n");
+  for (const char* c : {"N3 (THREAD 3/4-12)\n", "N12 (CUT OFF)\n"})
+    text.replace(text.find(c), std::string(c).size(), "\n");
   const ToolInference r = inferHaas(text);
   expectChoice(r, 9, "threading-60", ToolReason::Threading, 21, "G76");
   expectChoice(r, 12, "parting-3mm", ToolReason::Parting, 28, "X-0.02");
@@ -128,48 +129,48 @@ TEST(ToolInference, WithoutCommentsTheCyclesTell) {
 
 // A Fanuc 0i shop program in mm: two-block cycles, Thai comments, tube work.
 const char* kFanucFlange =
-    "O0100 (FLANGE)\n"                                 // 1
-    "N1 G21 G40 G99\n"                                 // 2
-    "N10 T0101 (กลึงปอก หยาบ)\n"                        // 3
-    "G50 S2000\n"                                      // 4
-    "G96 S180 M03\n"                                   // 5
-    "G00 X82. Z2.\n"                                   // 6
-    "G71 U2. R0.5\n"                                   // 7
-    "G71 P100 Q200 U0.4 W0.1 F0.25\n"                  // 8
-    "N100 G00 X60.\n"                                  // 9
-    "G01 Z-30.\n"                                      // 10
-    "N200 X82.\n"                                      // 11
-    "G28 U0.\n"                                        // 12
-    "(เจาะนำศูนย์)\n"                                   // 13
-    "N20 T0505\n"                                      // 14
-    "G97 S1200 M03\n"                                  // 15
-    "G00 X0 Z5.\n"                                     // 16
-    "G01 Z-4. F0.08\n"                                 // 17
-    "G00 Z5.\n"                                        // 18
-    "N30 T1010 (ดอกสว่าน 16 มม.)\n"                     // 19
-    "G00 X0 Z5.\n"                                     // 20
-    "G74 R1.\n"                                        // 21
-    "G74 Z-40. Q5000 F0.1\n"                           // 22
-    "N40 T1111\n"                                      // 23
-    "G00 X14. Z2.\n"                                   // 24
-    "G71 U1. R0.5\n"                                   // 25
-    "G71 P300 Q400 U-0.3 W0.1 F0.15\n"                 // 26
-    "N300 G00 X30.\n"                                  // 27
-    "G01 Z-20.\n"                                      // 28
-    "N400 X16.\n"                                      // 29
-    "N50 T0909\n"                                      // 30
-    "G00 X84. Z-12.\n"                                 // 31
-    "G75 R0.5\n"                                       // 32
-    "G75 X70. Z-15. P1000 Q2500 F0.05\n"               // 33
-    "N60 T0808 (ID THREAD M36x1.5)\n"                  // 34
-    "G00 X32. Z5.\n"                                   // 35
-    "G76 P010060 Q50 R0.05\n"                          // 36
-    "G76 X36. Z-15. P920 Q300 F1.5\n"                  // 37
-    "N70 T0707\n"                                      // 38
-    "G00 X84. Z-48.\n"                                 // 39
-    "G01 X-1. F0.05\n"                                 // 40
-    "G00 X84.\n"                                       // 41
-    "M30\n";                                           // 42
+    "O0100 (FLANGE)\n"                    // 1
+    "N1 G21 G40 G99\n"                    // 2
+    "N10 T0101 (กลึงปอก หยาบ)\n"           // 3
+    "G50 S2000\n"                         // 4
+    "G96 S180 M03\n"                      // 5
+    "G00 X82. Z2.\n"                      // 6
+    "G71 U2. R0.5\n"                      // 7
+    "G71 P100 Q200 U0.4 W0.1 F0.25\n"     // 8
+    "N100 G00 X60.\n"                     // 9
+    "G01 Z-30.\n"                         // 10
+    "N200 X82.\n"                         // 11
+    "G28 U0.\n"                           // 12
+    "(เจาะนำศูนย์)\n"                       // 13
+    "N20 T0505\n"                         // 14
+    "G97 S1200 M03\n"                     // 15
+    "G00 X0 Z5.\n"                        // 16
+    "G01 Z-4. F0.08\n"                    // 17
+    "G00 Z5.\n"                           // 18
+    "N30 T1010 (ดอกสว่าน 16 มม.)\n"        // 19
+    "G00 X0 Z5.\n"                        // 20
+    "G74 R1.\n"                           // 21
+    "G74 Z-40. Q5000 F0.1\n"              // 22
+    "N40 T1111\n"                         // 23
+    "G00 X14. Z2.\n"                      // 24
+    "G71 U1. R0.5\n"                      // 25
+    "G71 P300 Q400 U-0.3 W0.1 F0.15\n"    // 26
+    "N300 G00 X30.\n"                     // 27
+    "G01 Z-20.\n"                         // 28
+    "N400 X16.\n"                         // 29
+    "N50 T0909\n"                         // 30
+    "G00 X84. Z-12.\n"                    // 31
+    "G75 R0.5\n"                          // 32
+    "G75 X70. Z-15. P1000 Q2500 F0.05\n"  // 33
+    "N60 T0808 (ID THREAD M36x1.5)\n"     // 34
+    "G00 X32. Z5.\n"                      // 35
+    "G76 P010060 Q50 R0.05\n"             // 36
+    "G76 X36. Z-15. P920 Q300 F1.5\n"     // 37
+    "N70 T0707\n"                         // 38
+    "G00 X84. Z-48.\n"                    // 39
+    "G01 X-1. F0.05\n"                    // 40
+    "G00 X84.\n"                          // 41
+    "M30\n";                              // 42
 
 TEST(ToolInference, FanucFlangeThaiCommentsAndCycles) {
   const ToolInference r = infer(kFanucFlange);
@@ -190,16 +191,16 @@ TEST(ToolInference, FanucFlangeThaiCommentsAndCycles) {
 
 TEST(ToolInference, InternalThreadingAndDrillingWithoutComments) {
   const std::string text =
-      "G21 G99\n"                     // 1
-      "T1010\n"                       // 2
-      "G00 X0 Z3.\n"                  // 3
-      "G01 Z-25. F0.1\n"              // 4
-      "G00 Z3.\n"                     // 5
-      "T1111\n"                       // 6
-      "G00 X18. Z5.\n"                // 7
-      "G92 X20.2 Z-15. F1.5\n"        // 8
-      "X20.6\n"                       // 9
-      "G00 X18. Z5.\n"                // 10
+      "G21 G99\n"               // 1
+      "T1010\n"                 // 2
+      "G00 X0 Z3.\n"            // 3
+      "G01 Z-25. F0.1\n"        // 4
+      "G00 Z3.\n"               // 5
+      "T1111\n"                 // 6
+      "G00 X18. Z5.\n"          // 7
+      "G92 X20.2 Z-15. F1.5\n"  // 8
+      "X20.6\n"                 // 9
+      "G00 X18. Z5.\n"          // 10
       "M30\n";
   const ToolInference r = infer(text);
   expectChoice(r, 10, "drill-6mm", ToolReason::Drilling, 4, "G01 X0");
@@ -242,17 +243,17 @@ TEST(ToolInference, AToolListOnOneLineGivesEachStationItsOwnWords) {
   MachineSetup empty = shippedSetup();
   for (auto& b : empty.tools.bitmap) b.clear();
   const std::string text =
-      "O01234 (BOLT)\n"                          // 1
-      "(T1 OD TURN, T3 THREAD, T12 CUT OFF)\n"   // 2
-      "G20 G99\n"                                // 3
-      "T101\n"                                   // 4
-      "G00 X1.1 Z0.1\n"                          // 5
-      "G01 Z-1. F0.01\n"                         // 6
-      "G00 X2. (ROUGH TO T3 SIZE)\n"             // 7
-      "T303\n"                                   // 8
-      "G00 X1.1 Z0.2\n"                          // 9
-      "T1212\n"                                  // 10
-      "G00 X1.1 Z-1.5\n"                         // 11
+      "O01234 (BOLT)\n"                         // 1
+      "(T1 OD TURN, T3 THREAD, T12 CUT OFF)\n"  // 2
+      "G20 G99\n"                               // 3
+      "T101\n"                                  // 4
+      "G00 X1.1 Z0.1\n"                         // 5
+      "G01 Z-1. F0.01\n"                        // 6
+      "G00 X2. (ROUGH TO T3 SIZE)\n"            // 7
+      "T303\n"                                  // 8
+      "G00 X1.1 Z0.2\n"                         // 9
+      "T1212\n"                                 // 10
+      "G00 X1.1 Z-1.5\n"                        // 11
       "M30\n";
   const ToolInference r = infer(text, empty);
   expectChoice(r, 1, "cnmg-80-r08", ToolReason::Comment, 2, "T1 OD TURN");
@@ -274,8 +275,9 @@ TEST(ToolInference, DrillSizesInInchesFractionsAndPhi) {
   expectChoice(r, 9, "drill-12.7mm", ToolReason::Comment, 4, "1/2 DRILL");
   expectChoice(r, 10, "drill-25.4mm", ToolReason::Comment, 9, "1\" INSERT DRILL");
   expectChoice(r, 11, "drill-12.7mm", ToolReason::Comment, 13, "DRILL .5 DIA");
-  const std::string metric = "%\nO0050\n(PHASE 50 : PERCAGE PHI22)\nT0909\nG97 S434 M03\nG00 X0. Z2.\n"
-                             "G83 Z-54. Q4. R2. F0.18\nG80\nM30\n%\n";
+  const std::string metric =
+      "%\nO0050\n(PHASE 50 : PERCAGE PHI22)\nT0909\nG97 S434 M03\nG00 X0. Z2.\n"
+      "G83 Z-54. Q4. R2. F0.18\nG80\nM30\n%\n";
   expectChoice(infer(metric), 9, "drill-22mm", ToolReason::Comment, 3, "PHASE 50 : PERCAGE PHI22");
 }
 
@@ -309,8 +311,9 @@ TEST(ToolInference, APlainProgramsMotionDecidesTheHand) {
 }
 
 TEST(ToolInference, APlainProgramsInwardRetractsAreBoring) {
-  const std::string text = "G21 G99\nT0101\nG96 S150 M03\nG00 X44. Z2.\nG01 Z-20. F0.15\nX43.\nG00 Z2.\n"
-                           "X48.\nG01 Z-20.\nX47.\nG00 Z50.\nM30\n";
+  const std::string text =
+      "G21 G99\nT0101\nG96 S150 M03\nG00 X44. Z2.\nG01 Z-20. F0.15\nX43.\nG00 Z2.\n"
+      "X48.\nG01 Z-20.\nX47.\nG00 Z50.\nM30\n";
   const ToolInference r = inferPlain(text);
   expectChoice(r, 1, "boring-bar-16", ToolReason::Boring, 5, "G01 Z-20. F0.15");
   EXPECT_EQ(r.setup.offsets.at(1).tip, 2);
@@ -320,10 +323,11 @@ TEST(ToolInference, APlainProgramsInwardRetractsAreBoring) {
 // and a subprogram. T05 threads through #101 in O2000; T09 (no tool in the
 // table) drills on X#102 = 0.
 TEST(ToolInference, APlainProgramsRunSeesThroughMacrosAndSubprograms) {
-  const std::string text = "O1000\nG21 G99\n#101 = 28.2\n#102 = 0\n"
-                           "T0505\nG97 S600 M03\nG00 X35. Z5.\nM98 P2000\n"
-                           "T0909\nG97 S800 M03\nG00 X#102 Z2.\nG01 Z-25. F0.1\nG00 Z5.\nM30\n"
-                           "O2000\nG00 X#101\nG32 Z-20. F1.5\nG00 X35.\nZ5.\nM99\n";
+  const std::string text =
+      "O1000\nG21 G99\n#101 = 28.2\n#102 = 0\n"
+      "T0505\nG97 S600 M03\nG00 X35. Z5.\nM98 P2000\n"
+      "T0909\nG97 S800 M03\nG00 X#102 Z2.\nG01 Z-25. F0.1\nG00 Z5.\nM30\n"
+      "O2000\nG00 X#101\nG32 Z-20. F1.5\nG00 X35.\nZ5.\nM99\n";
   const ToolInference r = inferPlain(text);
   expectChoice(r, 5, "threading-60", ToolReason::Threading, 17, "G32");
   expectChoice(r, 9, "drill-6mm", ToolReason::Drilling, 12, "G01 X0");
@@ -332,8 +336,9 @@ TEST(ToolInference, APlainProgramsRunSeesThroughMacrosAndSubprograms) {
 // "ID" in the comment of the thread itself (issue 26 item 3): an inside tool,
 // even when the approach does not show it (the tool comes in at the thread's X).
 TEST(ToolInference, IdInTheThreadsOwnCommentIsAnInsideTool) {
-  const std::string text = "%\nO0123\nG21 G99\nT1010\nG97 S500 M03\nG00 X36. Z5.\n"
-                           "G76 P010060 Q50 R0.05\nG76 X36. Z-20. P1000 Q300 F2. (M36X2 ID THREAD)\nG00 Z50.\nM30\n%\n";
+  const std::string text =
+      "%\nO0123\nG21 G99\nT1010\nG97 S500 M03\nG00 X36. Z5.\n"
+      "G76 P010060 Q50 R0.05\nG76 X36. Z-20. P1000 Q300 F2. (M36X2 ID THREAD)\nG00 Z50.\nM30\n%\n";
   expectChoice(infer(text), 10, "threading-60-id", ToolReason::ThreadingInside, 8, "G76");
 }
 
@@ -377,9 +382,10 @@ TEST(ToolInference, ToolsNamedInTheShopsOwnLanguage) {
 // blade is grooving or parting"): shallow, a grooving blade; a cut-off into a
 // bore, a parting blade. Facing to the centre at the face is not a plunge.
 TEST(ToolInference, APlainProgramsStraightPlungesAreABlade) {
-  const std::string text = "G21 G99\nT0909\nG97 S600 M03\nG00 X42. Z-12.\nG01 X36. F0.05\nG00 X42.\n"
-                           "T1010\nG00 X42. Z-33.\nG01 X18. F0.04\nG00 X44.\n"
-                           "T1111\nG00 X44. Z0.\nG01 X-1.6 F0.15\nG00 Z2.\nM30\n";
+  const std::string text =
+      "G21 G99\nT0909\nG97 S600 M03\nG00 X42. Z-12.\nG01 X36. F0.05\nG00 X42.\n"
+      "T1010\nG00 X42. Z-33.\nG01 X18. F0.04\nG00 X44.\n"
+      "T1111\nG00 X44. Z0.\nG01 X-1.6 F0.15\nG00 Z2.\nM30\n";
   const ToolInference r = inferPlain(text);
   expectChoice(r, 9, "grooving-3mm", ToolReason::Grooving, 5, "G01 X36. F0.05");
   expectChoice(r, 10, "parting-3mm", ToolReason::Parting, 9, "G01 X18. F0.04");
@@ -391,10 +397,11 @@ TEST(ToolInference, APlainProgramsStraightPlungesAreABlade) {
 // finishing pass runs up the hub toward the tailstock, which is the profile's
 // way, not a left-hand tool's; the named VBMT is taken (a right-hand holder).
 TEST(ToolInference, ANamedInsertIsNotTakenForALeftHandTool) {
-  const std::string text = "G21 G99\nT0101 (OD CNMG 120408)\nG96 S180 M03\nG00 X64. Z2.\n"
-                           "G72 W2. R0.5\nG72 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 Z-15.\nG01 X30. F0.1\nZ-1.\n"
-                           "N20 X28. Z0.\nG28 U0. W0.\nT0202 (FINISH VBMT 160404)\nG96 S220 M03\nG00 X64. Z2.\n"
-                           "G70 P10 Q20\nG28 U0. W0.\nM30\n";
+  const std::string text =
+      "G21 G99\nT0101 (OD CNMG 120408)\nG96 S180 M03\nG00 X64. Z2.\n"
+      "G72 W2. R0.5\nG72 P10 Q20 U0.4 W0.1 F0.25\nN10 G00 Z-15.\nG01 X30. F0.1\nZ-1.\n"
+      "N20 X28. Z0.\nG28 U0. W0.\nT0202 (FINISH VBMT 160404)\nG96 S220 M03\nG00 X64. Z2.\n"
+      "G70 P10 Q20\nG28 U0. W0.\nM30\n";
   const ToolInference r = inferPlain(text);
   expectChoice(r, 2, "vnmg-35-r02", ToolReason::Comment, 12, "FINISH VBMT 160404");
   // T01's G72 passes and its own finishing run up the hub too: still an outside tool, never a bar.
@@ -408,8 +415,9 @@ TEST(ToolInference, ANamedInsertIsNotTakenForALeftHandTool) {
 // X < 0 has its tools beyond the centre line (I412); the user's choice for the
 // file (Job details) wins either way, and a file with a header follows it too.
 TEST(ToolInference, TheToolSideIsTheRunsUnlessTheUserChoseIt) {
-  const std::string text = "G21 G99\nT0101\nG97 S800 M03\nG00 X-32. Z0.\nG01 X1.6 F0.15\nG00 Z2.\n"
-                           "X-28.\nG01 Z-30. F0.2\nX-32.\nG00 Z2.\nM30\n";
+  const std::string text =
+      "G21 G99\nT0101\nG97 S800 M03\nG00 X-32. Z0.\nG01 X1.6 F0.15\nG00 Z2.\n"
+      "X-28.\nG01 Z-30. F0.2\nX-32.\nG00 Z2.\nM30\n";
   const gcode::Program program = gcode::parse(text, 1);
   InferenceContext context;
   context.fromProgram = true;
@@ -434,7 +442,8 @@ TEST(ToolInference, TheToolSideIsTheRunsUnlessTheUserChoseIt) {
   const gcode::Program p2 = gcode::parse(inFront, 1);
   InferenceContext plain;
   plain.fromProgram = true;
-  EXPECT_FALSE(inferTools(p2, inFront, 1, rear, io::shippedToolLibrary(), {}, 0, plain).setup.machine.toolsBeyondCentre);
+  EXPECT_FALSE(
+      inferTools(p2, inFront, 1, rear, io::shippedToolLibrary(), {}, 0, plain).setup.machine.toolsBeyondCentre);
 }
 
 // One recorded run is the evidence (issue 26 item 2): a station chosen by a macro
@@ -443,25 +452,25 @@ TEST(ToolInference, TheToolSideIsTheRunsUnlessTheUserChoseIt) {
 // and in a file with Klueng's header alike.
 TEST(ToolInference, TheRunSeesToolsChosenByVariablesAndInSubprograms) {
   const std::string text =
-      "O1000 (BUSHING)\n"                      // 1
-      "G21 G99\n"                              // 2
-      "#1 = 909\n"                             // 3
-      "T#1\n"                                  // 4
-      "G97 S600 M03\n"                         // 5
-      "G00 X30. Z5.\n"                         // 6
-      "G76 P010060 Q50 R0.05\n"                // 7
-      "G76 X27.4 Z-20. P1300 Q400 F2.\n"       // 8
-      "G00 X60. Z50.\n"                        // 9
-      "M98 P3000\n"                            // 10
-      "M30\n"                                  // 11
-      "O3000\n"                                // 12
-      "T1010\n"                                // 13
-      "G97 S500 M03\n"                         // 14
-      "G00 X52. Z-15.\n"                       // 15
-      "G75 R0.5\n"                             // 16
-      "G75 X40. Z-18. P1000 Q2500 F0.05\n"     // 17
-      "G00 X60.\n"                             // 18
-      "M99\n";                                 // 19
+      "O1000 (BUSHING)\n"                   // 1
+      "G21 G99\n"                           // 2
+      "#1 = 909\n"                          // 3
+      "T#1\n"                               // 4
+      "G97 S600 M03\n"                      // 5
+      "G00 X30. Z5.\n"                      // 6
+      "G76 P010060 Q50 R0.05\n"             // 7
+      "G76 X27.4 Z-20. P1300 Q400 F2.\n"    // 8
+      "G00 X60. Z50.\n"                     // 9
+      "M98 P3000\n"                         // 10
+      "M30\n"                               // 11
+      "O3000\n"                             // 12
+      "T1010\n"                             // 13
+      "G97 S500 M03\n"                      // 14
+      "G00 X52. Z-15.\n"                    // 15
+      "G75 R0.5\n"                          // 16
+      "G75 X40. Z-18. P1000 Q2500 F0.05\n"  // 17
+      "G00 X60.\n"                          // 18
+      "M99\n";                              // 19
   for (const bool plain : {true, false}) {
     const gcode::Program program = gcode::parse(text, 1);
     InferenceContext context;
@@ -479,22 +488,22 @@ TEST(ToolInference, TheRunSeesToolsChosenByVariablesAndInSubprograms) {
 // and T09's G92 thread are still seen from their moves.
 TEST(ToolInference, AnAlarmInTheRecordDoesNotHideTheToolsAfterIt) {
   const std::string text =
-      "G21 G99\n"                       // 1
-      "T0101\n"                         // 2
-      "G00 X42. Z2.\n"                  // 3
-      "G01 Z-30. F0.2\n"                // 4  (no M03 yet: A104)
-      "G00 X50. Z50.\n"                 // 5
-      "T1010\n"                         // 6
-      "G97 S900 M03\n"                  // 7
-      "G00 X0 Z3.\n"                    // 8
-      "G74 R1.\n"                       // 9
-      "G74 Z-30. Q4000 F0.1\n"          // 10
-      "G00 Z50.\n"                      // 11
-      "T0909\n"                         // 12
-      "G00 X45. Z5.\n"                  // 13
-      "G92 X41.2 Z-18. F1.5\n"          // 14
-      "X40.4\n"                         // 15
-      "G00 X50. Z50.\n"                 // 16
+      "G21 G99\n"               // 1
+      "T0101\n"                 // 2
+      "G00 X42. Z2.\n"          // 3
+      "G01 Z-30. F0.2\n"        // 4  (no M03 yet: A104)
+      "G00 X50. Z50.\n"         // 5
+      "T1010\n"                 // 6
+      "G97 S900 M03\n"          // 7
+      "G00 X0 Z3.\n"            // 8
+      "G74 R1.\n"               // 9
+      "G74 Z-30. Q4000 F0.1\n"  // 10
+      "G00 Z50.\n"              // 11
+      "T0909\n"                 // 12
+      "G00 X45. Z5.\n"          // 13
+      "G92 X41.2 Z-18. F1.5\n"  // 14
+      "X40.4\n"                 // 15
+      "G00 X50. Z50.\n"         // 16
       "M30\n";
   const ToolInference r = inferPlain(text);
   expectChoice(r, 10, "drill-6mm", ToolReason::Drilling, 10, "G74");
@@ -521,8 +530,9 @@ TEST(ToolInference, FacingInStepsToTheCentreIsNotBoring) {
 // A Haas program in inch by power-on (no G20 anywhere): the drill size its comment
 // writes, ".5 DIA", is read in the run's units, half an inch.
 TEST(ToolInference, ADrillSizeIsReadInThePowerOnUnits) {
-  const std::string text = "O2001\nT0505 (.5 DIA DRILL)\nG97 S1000 M03\nG00 X0 Z0.1\nG01 Z-1. F0.004\n"
-                           "G00 Z1.\nM30\n";
+  const std::string text =
+      "O2001\nT0505 (.5 DIA DRILL)\nG97 S1000 M03\nG00 X0 Z0.1\nG01 Z-1. F0.004\n"
+      "G00 Z1.\nM30\n";
   const ToolInference r = inferHaas(text);
   expectChoice(r, 5, "drill-12.7mm", ToolReason::Comment, 2, ".5 DIA DRILL");
 }

@@ -43,24 +43,24 @@ enum class Side { Left = 1, Right = -1 };  // G41 = +1 (IsNoseComp), G42 = -1
 struct CompInput {
   std::span<const Segment> moves;
   Side side = Side::Right;
-  double radius = 0.0;       // nose radius R (> 0; R == 0 means: path unchanged)
-  int tip = 3;               // imaginary tip 0..9
+  double radius = 0.0;  // nose radius R (> 0; R == 0 means: path unchanged)
+  int tip = 3;          // imaginary tip 0..9
   bool endsWithCancel = true;
   // Without compensation the imaginary tip follows the program, so the nose
   // centre before start-up and after cancel is programmed - R * tipVector.
 };
 
 struct CompPiece {
-  Segment path;       // nose-centre path
-  int source = 0;     // index into CompInput::moves
+  Segment path;    // nose-centre path
+  int source = 0;  // index into CompInput::moves
 };
 
 struct Interference {
-  int source = 0;     // index of the move where the nose cannot follow
+  int source = 0;  // index of the move where the nose cannot follow
   enum class Kind {
-    ArcSmallerThanRadius,   // concave arc radius < R (A201)
-    PathReversal,           // the offset piece would run against its programmed direction (A202)
-    ArcInStartUpOrCancel,   // start-up or cancel move is an arc: only G00/G01 allowed (A203)
+    ArcSmallerThanRadius,  // concave arc radius < R (A201)
+    PathReversal,          // the offset piece would run against its programmed direction (A202)
+    ArcInStartUpOrCancel,  // start-up or cancel move is an arc: only G00/G01 allowed (A203)
   } kind = Kind::PathReversal;
 };
 

@@ -45,8 +45,8 @@ struct AxisValues {
 };
 
 struct OffsetRow {
-  AxisValues geometry;  // machine position of the tip at the work zero, less the work shift
-  AxisValues wear;      // small corrections after measuring a part (starts as offset.cfg's X Z)
+  AxisValues geometry;     // machine position of the tip at the work zero, less the work shift
+  AxisValues wear;         // small corrections after measuring a part (starts as offset.cfg's X Z)
   bool measuredX = false;  // set by X MEASURE since power-on (the exercise asks for every tool used)
   bool measuredZ = false;
 };
@@ -70,14 +70,13 @@ int stepSpindleOverride(int percent, int steps);
 // times, feeds and rpm change. Feed override 0: the feed moves never end
 // (their tEnd is +inf), as a feed hold.
 machine::Timeline withOverrides(const machine::Timeline& timeline, const Overrides& overrides,
-                                const io::MachineConfig& machine, bool dryRun = false,
-                                double dryRunFeed = 1000.0);
+                                const io::MachineConfig& machine, bool dryRun = false, double dryRunFeed = 1000.0);
 
 // What a motion key did.
 struct MotionResult {
-  bool moved = false;                     // the turret moved (maybe less than asked)
-  bool cut = false;                       // material came off the bar (chips: the tool touches)
-  std::optional<Diagnostic> stop;         // why it stopped short: overtravel, a crash, not allowed
+  bool moved = false;              // the turret moved (maybe less than asked)
+  bool cut = false;                // material came off the bar (chips: the tool touches)
+  std::optional<Diagnostic> stop;  // why it stopped short: overtravel, a crash, not allowed
 };
 
 class Control {
@@ -129,9 +128,9 @@ class Control {
   AxisValues machinePosition() const { return machine_; }
   AxisValues absolutePosition() const;  // the work position the control computes with row = station
   AxisValues relativePosition() const;
-  void originRelative(Axis a);          // ORIGIN / "X" + ORIGIN: relative 0 here
-  AxisValues distanceToGo() const;      // of the MDI block loaded, 0 when none
-  AxisValues tip() const;               // the real tip of the tool at the turret, bar frame (X diameter)
+  void originRelative(Axis a);      // ORIGIN / "X" + ORIGIN: relative 0 here
+  AxisValues distanceToGo() const;  // of the MDI block loaded, 0 when none
+  AxisValues tip() const;           // the real tip of the tool at the turret, bar frame (X diameter)
   // Soft limits (machine.cfg travel, reference at the positive end): valid after a zero return.
   AxisValues travelMin() const;
   AxisValues travelMax() const;
@@ -143,12 +142,12 @@ class Control {
   void setSpindle(machine::SpindleDir dir);
   double spindleSpeed() const { return sWord_; }  // the S last given (rpm)
   void setSpindleSpeed(double rpm) { sWord_ = rpm; }
-  double actualRpm() const;                       // S × spindle override, 0 when stopped
+  double actualRpm() const;  // S × spindle override, 0 when stopped
 
   // --- motion keys ---
-  MotionResult zeroReturn(Axis a);               // ZERO RETURN mode + the axis key
+  MotionResult zeroReturn(Axis a);                        // ZERO RETURN mode + the axis key
   MotionResult jog(Axis a, double distance, bool rapid);  // JOG: X in diameter, sign = direction
-  MotionResult handle(int clicks);               // HANDLE: clicks × handleStep µm on handleAxis
+  MotionResult handle(int clicks);                        // HANDLE: clicks × handleStep µm on handleAxis
   // MDI: the blocks run at once with the same checker, interpreter and cut;
   // returns the check's diagnostics (lines of `text`) or the alarm that stopped them.
   std::vector<Diagnostic> runMdi(std::string_view text);
@@ -210,7 +209,8 @@ class Control {
   std::optional<Diagnostic> alarm_;
   std::vector<Diagnostic> notices_;
   bool touchedStopped_ = false;
-  bool exercise_ = false;  // forgetGeometry(): every tool used must be touched off  // the tool at the turret touched the bar with the spindle stopped
+  bool exercise_ = false;  // forgetGeometry(): every tool used must be touched off  // the tool at the turret touched
+                           // the bar with the spindle stopped
   std::optional<machine::ModalState> mdiModal_;
   machine::Timeline moves_;
   std::unique_ptr<cut::CutSimulator> sim_;

@@ -23,25 +23,25 @@ enum class CompareWith {
 };
 
 struct CompDifference {
-  double zLeft = 0.0;   // extent along Z (column edges)
+  double zLeft = 0.0;  // extent along Z (column edges)
   double zRight = 0.0;
-  double normal = 0.0;  // mm, the largest gap square to the compensated surface (+ material left, - cut away)
-  double radial = 0.0;  // mm on the radius at the same place
-  double z = 0.0;       // where it is largest
+  double normal = 0.0;    // mm, the largest gap square to the compensated surface (+ material left, - cut away)
+  double radial = 0.0;    // mm on the radius at the same place
+  double z = 0.0;         // where it is largest
   double diameter = 0.0;  // the compensated part's Ø there
   FeatureKind feature = FeatureKind::Cylinder;  // of the compensated part there
-  std::string label;    // its drawing label ("C3", "R2", "Ø30")
-  int line = 0;         // the block that cut that surface in the compensated run
+  std::string label;                            // its drawing label ("C3", "R2", "Ø30")
+  int line = 0;                                 // the block that cut that surface in the compensated run
   int file = 0;
   int blockIndex = -1;  // into the program's blocks
 };
 
 struct CompComparison {
-  std::optional<Stock> compensated;  // the program as written
-  std::optional<Stock> other;        // without compensation / with a sharp nose
+  std::optional<Stock> compensated;         // the program as written
+  std::optional<Stock> other;               // without compensation / with a sharp nose
   std::vector<CompDifference> differences;  // largest first
-  bool usesCompensation = false;     // the program has G41/G42 moves at all
-  std::optional<Diagnostic> alarm;   // one of the runs stopped on it: the parts are cut up to it
+  bool usesCompensation = false;            // the program has G41/G42 moves at all
+  std::optional<Diagnostic> alarm;          // one of the runs stopped on it: the parts are cut up to it
 };
 
 // `minimum`: gaps smaller than this (mm, square to the surface) are the same surface.

@@ -34,12 +34,12 @@ enum class EdgeBreak { None, Chamfer, Round };
 // face) leftward.
 struct OutsideStep {
   StepKind kind = StepKind::Cylinder;
-  double diameter = 0.0;  // mm: the cylinder's, or the taper's or arc's at its left end
-  double length = 0.0;    // mm along Z
+  double diameter = 0.0;             // mm: the cylinder's, or the taper's or arc's at its left end
+  double length = 0.0;               // mm along Z
   EdgeBreak edge = EdgeBreak::None;  // at the step's right-hand corner (the one away from the axis outside)
-  double edgeSize = 0.0;  // chamfer C (45°) or round R, mm
-  double radius = 0.0;    // an arc's R
-  bool concave = false;   // an arc hollowed into the part (G02 outside) rather than bulging out of it
+  double edgeSize = 0.0;             // chamfer C (45°) or round R, mm
+  double radius = 0.0;               // an arc's R
+  bool concave = false;              // an arc hollowed into the part (G02 outside) rather than bulging out of it
   // The drawing's tolerances (issue 28): on a cylinder's or bore's Ø (± or an
   // ISO 286 class such as h7, H7), and on the step's length (±); none when empty.
   cut::Tolerance tolerance = {};
@@ -69,14 +69,14 @@ struct PartDesign {
   std::string toolMaterial = "carbide";  // hss or carbide
   double stockDiameter = 0.0;            // mm
   double stockLength = 0.0;
-  double stockBore = 0.0;                // mm; 0 = a solid bar, else a tube's hole
+  double stockBore = 0.0;  // mm; 0 = a solid bar, else a tube's hole
   std::vector<OutsideStep> outside;
-  std::vector<BoreStep> inside;          // bored from the right face inward
+  std::vector<BoreStep> inside;  // bored from the right face inward
   std::vector<Groove> grooves;
   std::vector<Thread> threads;
-  bool partOff = false;                  // cut the part off the bar at its left end (parting tool T07)
-  std::string generalTolerance;          // ISO 2768-1 class (f, m, c, v) for the sizes without their own; empty: none
-  double length() const;                 // of the turned part (the steps)
+  bool partOff = false;          // cut the part off the bar at its left end (parting tool T07)
+  std::string generalTolerance;  // ISO 2768-1 class (f, m, c, v) for the sizes without their own; empty: none
+  double length() const;         // of the turned part (the steps)
 };
 
 // The largest part design (JSON) or drawing (DXF) read: a lathe part's half
@@ -136,15 +136,15 @@ std::string cuttingSpeedRow(const std::string& material, const std::vector<Cutti
 
 struct GenerateOptions {
   gcode::Dialect dialect = gcode::Dialect::Fanuc;
-  Lang lang = Lang::En;                      // the comments' language
-  io::MachineConfig machine;                 // its max_spindle_rpm clamps G50
-  std::vector<CuttingSpeed> speeds;          // empty: the shipped table
+  Lang lang = Lang::En;              // the comments' language
+  io::MachineConfig machine;         // its max_spindle_rpm clamps G50
+  std::vector<CuttingSpeed> speeds;  // empty: the shipped table
 };
 
 struct GeneratedProgram {
-  std::string text;                          // a Klueng program file: 6-line job header, then the G-code
-  double cuttingSpeed = 0.0;                 // Vc used, m/min
-  int spindleLimit = 0;                      // G50 S
+  std::string text;           // a Klueng program file: 6-line job header, then the G-code
+  double cuttingSpeed = 0.0;  // Vc used, m/min
+  int spindleLimit = 0;       // G50 S
 };
 
 // The program, or nullopt with the reasons (D-codes, English/Thai) when the part

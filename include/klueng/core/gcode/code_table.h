@@ -12,36 +12,35 @@
 
 namespace klueng::core::gcode {
 
-
 enum class ModalGroup {
-  NonModal,      // 00: G04 G27 G28 G29 G50 (G53 in Fanuc)
-  Motion,        // 01: G00 G01 G02 G03 G32 (G90 G92 G94)
-  Units,         // 06: G20 G21
-  NoseComp,      // 07: G40 G41 G42
-  SpindleMode,   // 02: G96 G97
-  FeedMode,      // 05: G98 G99
-  Plane,         // 16: G18 (Fanuc)
-  WorkOffset,    // 14: G54..G59 (Fanuc)
-  CannedCycle,   // 10/00: G70..G76, G80, G81..G83 drilling
-  MacroModal,    // 12: G66 G67 (custom macro modal call; G65 is group 00)
-  Distance,      // 03: G90 G91 absolute / incremental (G-code systems B and C)
-  ReturnLevel,   // 11: G98 G99 drilling cycles' return level (G-code systems B and C)
+  NonModal,     // 00: G04 G27 G28 G29 G50 (G53 in Fanuc)
+  Motion,       // 01: G00 G01 G02 G03 G32 (G90 G92 G94)
+  Units,        // 06: G20 G21
+  NoseComp,     // 07: G40 G41 G42
+  SpindleMode,  // 02: G96 G97
+  FeedMode,     // 05: G98 G99
+  Plane,        // 16: G18 (Fanuc)
+  WorkOffset,   // 14: G54..G59 (Fanuc)
+  CannedCycle,  // 10/00: G70..G76, G80, G81..G83 drilling
+  MacroModal,   // 12: G66 G67 (custom macro modal call; G65 is group 00)
+  Distance,     // 03: G90 G91 absolute / incremental (G-code systems B and C)
+  ReturnLevel,  // 11: G98 G99 drilling cycles' return level (G-code systems B and C)
   // M code groups, for rule 4 and the interpreter
-  MSpindle,      // M03 M04 M05
-  MCoolant,      // M08 M09
-  MCAxis,        // M41 M91 (classic)
-  MBrake,        // M86 M87
-  MGear,         // M41 M42 (Fanuc gear range)
-  MProgram,      // M00 M01 M02 M30
-  MSubprogram,   // M98 M99 (M97 Haas)
+  MSpindle,     // M03 M04 M05
+  MCoolant,     // M08 M09
+  MCAxis,       // M41 M91 (classic)
+  MBrake,       // M86 M87
+  MGear,        // M41 M42 (Fanuc gear range)
+  MProgram,     // M00 M01 M02 M30
+  MSubprogram,  // M98 M99 (M97 Haas)
   // Haas machine M codes: on/off pairs that may not share a block (rule 4)
-  MChuck,        // M10 M11
-  MAirBlast,     // M12 M13
-  MTailstock,    // M21 M22
-  MThreadChamfer,  // M23 M24
-  MConveyor,     // M31 M33
-  MPartsCatcher,   // M36 M37
-  MDoor,         // M85 M86
+  MChuck,                // M10 M11
+  MAirBlast,             // M12 M13
+  MTailstock,            // M21 M22
+  MThreadChamfer,        // M23 M24
+  MConveyor,             // M31 M33
+  MPartsCatcher,         // M36 M37
+  MDoor,                 // M85 M86
   MHighPressureCoolant,  // M88 M89
   MOther,
 };
@@ -58,35 +57,84 @@ enum class Phase { State = 0, BeforeMotion = 1, Motion = 2, AfterMotion = 3 };
 enum class CodeAction : std::uint8_t {
   None,
   // group 01
-  Rapid, Line, ArcCw, ArcCcw, Thread, BoxTurning, BoxThreading, BoxFacing,
+  Rapid,
+  Line,
+  ArcCw,
+  ArcCcw,
+  Thread,
+  BoxTurning,
+  BoxThreading,
+  BoxFacing,
   // modal states
-  Inch, Metric, CompOff, CompLeft, CompRight, ConstantSurface, ConstantRpm, FeedPerMinute, FeedPerRev,
+  Inch,
+  Metric,
+  CompOff,
+  CompLeft,
+  CompRight,
+  ConstantSurface,
+  ConstantRpm,
+  FeedPerMinute,
+  FeedPerRev,
   WorkOffset,
   // one block only
-  Dwell, ReferenceCheck, ReferenceReturn, SecondReferenceReturn, ReturnFromReference, CoordinateSet, MachineCoordinates, MacroCall,
-  MacroModalCall, MacroModalCancel,
+  Dwell,
+  ReferenceCheck,
+  ReferenceReturn,
+  SecondReferenceReturn,
+  ReturnFromReference,
+  CoordinateSet,
+  MachineCoordinates,
+  MacroCall,
+  MacroModalCall,
+  MacroModalCancel,
   // group 03 (G-code systems B and C): X and Z absolute or incremental (as U and W)
-  Absolute, Incremental,
+  Absolute,
+  Incremental,
   // group 11 (G-code systems B and C): where a drilling cycle returns, initial level or R point
-  ReturnToInitialLevel, ReturnToRPoint,
+  ReturnToInitialLevel,
+  ReturnToRPoint,
   // canned cycles
-  CycleCancel, Finishing, TurnRoughing, FaceRoughing, PatternRepeating, FacePecking, Grooving, ThreadCutting,
-  Drilling, SpotDrilling, PeckDrilling,
+  CycleCancel,
+  Finishing,
+  TurnRoughing,
+  FaceRoughing,
+  PatternRepeating,
+  FacePecking,
+  Grooving,
+  ThreadCutting,
+  Drilling,
+  SpotDrilling,
+  PeckDrilling,
   // M codes
-  SpindleCw, SpindleCcw, SpindleStop, CoolantOn, CoolantOff, SpindleClamp, SpindleRelease, CAxisOn, CAxisOff,
-  GearRange, ThreadChamferOn, ThreadChamferOff, ProgramStop, OptionalStop, ProgramEnd, LocalCall,
-  SubprogramCall, SubprogramReturn,
+  SpindleCw,
+  SpindleCcw,
+  SpindleStop,
+  CoolantOn,
+  CoolantOff,
+  SpindleClamp,
+  SpindleRelease,
+  CAxisOn,
+  CAxisOff,
+  GearRange,
+  ThreadChamferOn,
+  ThreadChamferOff,
+  ProgramStop,
+  OptionalStop,
+  ProgramEnd,
+  LocalCall,
+  SubprogramCall,
+  SubprogramReturn,
 };
 
 struct CodeInfo {
   // The machine's control family has the row (whatever number its G-code system gives it).
   bool in(Dialect d) const;
-  char letter;            // 'G' or 'M'
-  int number;             // 0..99
+  char letter;  // 'G' or 'M'
+  int number;   // 0..99
   ModalGroup group;
   Phase phase;
-  std::uint8_t dialects;  // dialectBit() of each dialect that accepts the row
-  bool mustStandAlone;    // M00 M01 M02 M30 (and G98/G99 in classic)
+  std::uint8_t dialects;    // dialectBit() of each dialect that accepts the row
+  bool mustStandAlone;      // M00 M01 M02 M30 (and G98/G99 in classic)
   std::string_view nameEn;  // short help: "Rapid traverse"
   std::string_view nameTh;
   std::string_view exampleEn;  // one-line example with explanation
@@ -115,8 +163,8 @@ std::span<const CodeInfo> codeTable();
 // action), or, for a code system A has not, a row of systemOnlyRows().
 struct SystemRename {
   GcodeSystem system;
-  int number;      // in that system
-  int numberInA;   // -1: a code system A has not (systemOnlyRows, same number)
+  int number;     // in that system
+  int numberInA;  // -1: a code system A has not (systemOnlyRows, same number)
 };
 std::span<const SystemRename> gcodeSystemRenames();
 std::span<const CodeInfo> systemOnlyRows();

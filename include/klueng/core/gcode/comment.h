@@ -15,8 +15,10 @@ template <class CharT>
 constexpr std::size_t commentClose(std::basic_string_view<CharT> line, std::size_t open) {
   int depth = 0;
   for (std::size_t j = open; j < line.size(); ++j) {
-    if (line[j] == CharT('(')) ++depth;
-    else if (line[j] == CharT(')') && --depth == 0) return j;
+    if (line[j] == CharT('('))
+      ++depth;
+    else if (line[j] == CharT(')') && --depth == 0)
+      return j;
   }
   return std::basic_string_view<CharT>::npos;
 }

@@ -24,9 +24,9 @@ namespace klueng::core::gcode {
 // One length word without a decimal point whose reading tells the two settings apart.
 struct PointClue {
   SourceRange range;
-  std::string word;      // as written: "U1250"
-  bool inch = false;     // G20 in force at its block
-  double wholeMm = 0.0;  // its length read in whole units, mm
+  std::string word;          // as written: "U1250"
+  bool inch = false;         // G20 in force at its block
+  double wholeMm = 0.0;      // its length read in whole units, mm
   double incrementMm = 0.0;  // read in least input increments, mm
 };
 

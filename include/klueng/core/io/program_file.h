@@ -23,7 +23,7 @@ struct JobHeader {
   std::string project;
   std::string part;
   std::string material;
-  double diameter = 50.0;     // as written, in `diameterUnit`
+  double diameter = 50.0;  // as written, in `diameterUnit`
   LengthUnit diameterUnit = LengthUnit::Millimetre;
   double length = 100.0;
   LengthUnit lengthUnit = LengthUnit::Millimetre;
@@ -69,9 +69,9 @@ enum class SourceEncoding { Utf8, Tis620 };
 
 struct ProgramFile {
   JobHeader header;
-  bool plainGcode = false;      // no 6-line header (SPEC 2 ext)
-  std::string gcode;            // the G-code lines, UTF-8, original line ends normalised to '\n'
-  int gcodeFirstLine = 7;       // file line number of gcode's first line (1 for plain files)
+  bool plainGcode = false;  // no 6-line header (SPEC 2 ext)
+  std::string gcode;        // the G-code lines, UTF-8, original line ends normalised to '\n'
+  int gcodeFirstLine = 7;   // file line number of gcode's first line (1 for plain files)
   SourceEncoding encoding = SourceEncoding::Utf8;
 };
 

@@ -25,9 +25,9 @@ using cut::Stock;
 struct GradedProgram {
   std::optional<Stock> part;  // the finished part; none when it did not run to its end
   int errors = 0;
-  std::string firstError;     // "E201 line 18", "unreadable"
-  std::string alarm;          // "A104 line 15"
-  double cycleTime = 0.0;     // seconds (up to the alarm)
+  std::string firstError;                    // "E201 line 18", "unreadable"
+  std::string alarm;                         // "A104 line 15"
+  double cycleTime = 0.0;                    // seconds (up to the alarm)
   std::vector<std::string> subprogramFiles;  // files of the folder its calls read (the program's own)
 };
 
@@ -36,14 +36,14 @@ struct GradedProgram {
 GradedProgram gradeProgram(const std::string& path, const JobInput& base);
 
 struct ClassRow {
-  std::string file;           // the name in the folder
+  std::string file;  // the name in the folder
   std::string path;
-  GradedProgram graded;       // (its part is dropped once compared)
+  GradedProgram graded;  // (its part is dropped once compared)
   PartDeviation deviation;
-  bool compared = false;      // it ran to its end and was compared with the reference
+  bool compared = false;  // it ran to its end and was compared with the reference
   // Against a drawing: every drawn dimension, measured (all missing when it did not run to its end).
   std::vector<InspectedDimension> inspection;
-  bool pass = false;          // ran to its end, within the reference's tolerance and every drawn dimension in
+  bool pass = false;  // ran to its end, within the reference's tolerance and every drawn dimension in
 };
 
 // What a class is graded against: a reference program's part, a drawing's
@@ -54,7 +54,7 @@ struct GradeAgainst {
   double tolerance = 0.05;           // mm on the diameter, against the reference
   std::string drawingPath;           // (a part file is not a program; named for the record)
   std::vector<DrawnDimension> drawing;
-  bool hasDrawing = false;           // graded against the drawing
+  bool hasDrawing = false;  // graded against the drawing
 };
 
 // Every program file of `folder` (io::isProgramFileName, as `check DIR` takes
@@ -62,9 +62,9 @@ struct GradeAgainst {
 // part; `progress(i, n, name)` before each. A file the others call as a
 // subprogram belongs to them and gets no row of its own.
 std::vector<ClassRow> gradeClass(const std::string& folder, const std::string& referencePath, const Stock& reference,
-                                 const JobInput& base, double tolerance, const std::function<void(int, int, const std::string&)>& progress = {});
-std::vector<ClassRow> gradeClass(const std::string& folder, const GradeAgainst& against,
-                                 const JobInput& base,
+                                 const JobInput& base, double tolerance,
+                                 const std::function<void(int, int, const std::string&)>& progress = {});
+std::vector<ClassRow> gradeClass(const std::string& folder, const GradeAgainst& against, const JobInput& base,
                                  const std::function<void(int, int, const std::string&)>& progress = {});
 
 // file,result,errors,first_error,alarm,cycle_time_s,leftover_mm,leftover_z,gouge_mm,gouge_z; with a

@@ -40,9 +40,9 @@ struct JobInput {
   // The run: dialect, power-on units, switches, #500-#999. The check and the
   // tool and stock inference use only its dialect and units.
   machine::RunOptions run;
-  io::JobHeader defaultsForPlain;                  // text fields of a read file without a header
-  std::optional<io::JobHeader> stock;              // a stock given for this run (--stock): wins over the file's
-  std::vector<machine::StationOverride> overrides; // stations set by the user (--tool, Tool Select)
+  io::JobHeader defaultsForPlain;                   // text fields of a read file without a header
+  std::optional<io::JobHeader> stock;               // a stock given for this run (--stock): wins over the file's
+  std::vector<machine::StationOverride> overrides;  // stations set by the user (--tool, Tool Select)
   // Lengths without a decimal point (--decimal-point): wins over the file's own
   // choice, its numbers and the machine (machine/point_reading.h).
   std::optional<bool> calculatorInput;
@@ -76,9 +76,9 @@ class Job {
   // The program file's own diagnostics as the editor shows one file: an error
   // inside a subprogram file is reported once, as E412 on the call that reaches it.
   std::vector<Diagnostic> programFileDiagnostics() const;
-  std::vector<Diagnostic> toolNotes() const { return tools_.notes(); }  // I401-I410
+  std::vector<Diagnostic> toolNotes() const { return tools_.notes(); }       // I401-I410
   const std::vector<Diagnostic>& stockNotes() const { return stockNotes_; }  // I150-I157
-  std::optional<gcode::Dialect> fit() const { return fit_; }  // another dialect that accepts the program
+  std::optional<gcode::Dialect> fit() const { return fit_; }                 // another dialect that accepts the program
   int fitBlocks() const { return fitBlocks_; }
   DisplayUnits units() const { return units_; }  // its last G20/G21, else the power-on units
   bool unreadable() const { return unreadable_; }

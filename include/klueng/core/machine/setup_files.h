@@ -25,8 +25,8 @@ struct LoadedSetup {
   std::string dir;     // where the files came from
   MachineSetup setup;  // defaults for what could not be read
   std::vector<SetupDiagnostic> diagnostics;
-  bool unreadable = false;      // tools.cfg or offset.cfg could not be read at all (F101-F103)
-  bool toolTableRead = false;   // tools.cfg was read: T words are checked against its bitmaps
+  bool unreadable = false;     // tools.cfg or offset.cfg could not be read at all (F101-F103)
+  bool toolTableRead = false;  // tools.cfg was read: T words are checked against its bitmaps
   // The decoded bitmaps, when asked for ([0] = tool 01).
   std::array<std::optional<io::RgbImage>, io::kToolCount> bitmaps;
   bool hasErrors() const;

@@ -38,27 +38,27 @@
 namespace klueng::core::machine {
 
 // Round bar diameters (mm) a school's store carries (EN 10060 / ISO preferred sizes).
-inline constexpr double kMetricBarSizes[] = {3,  4,  5,  6,  8,  10, 12, 14, 16, 18, 20,  22,  25,  28,  30,
-                                             32, 35, 38, 40, 45, 50, 55, 60, 65, 70, 75, 80, 85, 90, 95, 100,
-                                             110, 120, 125, 130, 140, 150, 160, 180, 200, 220, 250, 280, 300};
+inline constexpr double kMetricBarSizes[] = {3,   4,   5,   6,   8,   10,  12,  14,  16,  18,  20,  22,  25,  28, 30,
+                                             32,  35,  38,  40,  45,  50,  55,  60,  65,  70,  75,  80,  85,  90, 95,
+                                             100, 110, 120, 125, 130, 140, 150, 160, 180, 200, 220, 250, 280, 300};
 
 struct InferenceOptions {
   double cutOffMarginMm = 5.0;  // a 3 mm parting blade plus clearance, left of the deepest Z
 };
 
 struct StockInference {
-  bool found = false;          // false: no approach outside the centre (keep the defaults)
-  bool inch = false;           // sizes below are in inch (G20 at the deciding block)
-  double diameter = 0.0;       // bar size, in the unit above
+  bool found = false;     // false: no approach outside the centre (keep the defaults)
+  bool inch = false;      // sizes below are in inch (G20 at the deciding block)
+  double diameter = 0.0;  // bar size, in the unit above
   double length = 0.0;
-  double bore = 0.0;           // 0 = solid bar
+  double bore = 0.0;              // 0 = solid bar
   double approachDiameter = 0.0;  // the diameter that decided Ø, in the unit above
   // A plain outside pass larger than the approach's bar (a CAM lead-in): Ø is
   // the smallest bar above it and diameterLine its block; 0 = the approach decided.
   double largestTurnedDiameter = 0.0;
-  int diameterLine = 0;        // file line of the approach block (the one before the first cut)
-  bool cycleStart = false;     // that block is a canned cycle (G70-G76, G90, G92, G94)
-  double deepestZ = 0.0;       // deepest Z reached while feeding, in the unit above
+  int diameterLine = 0;     // file line of the approach block (the one before the first cut)
+  bool cycleStart = false;  // that block is a canned cycle (G70-G76, G90, G92, G94)
+  double deepestZ = 0.0;    // deepest Z reached while feeding, in the unit above
   int lengthLine = 0;
   double insidePassDiameter = 0.0;  // smallest inside pass before any drilling; 0 = none
   int boreLine = 0;
@@ -66,7 +66,7 @@ struct StockInference {
   // one bar size above the largest diameter it cuts plus a wall.
   bool outsideFromInside = false;
   double largestCutDiameter = 0.0;  // in the unit above
-  double cutOffMargin = 0.0;   // margin and chuck grip added to the length, in the unit above
+  double cutOffMargin = 0.0;        // margin and chuck grip added to the length, in the unit above
   double chuckGrip = 0.0;
 
   // Writes the sizes into `h` (units, diameter, length, bore; stockSource = Inferred).
@@ -75,8 +75,8 @@ struct StockInference {
 
 // Runs `program` with `setup` and `options` (no stock: no cut alarms) and
 // infers the stock. An alarm that stops the run leaves what ran before it.
-StockInference inferStock(const gcode::Program& program, const MachineSetup& setup,
-                          const RunOptions& options = {}, const InferenceOptions& inference = {});
+StockInference inferStock(const gcode::Program& program, const MachineSetup& setup, const RunOptions& options = {},
+                          const InferenceOptions& inference = {});
 // The same from a run already recorded (the one the tools were read from: issue 26).
 StockInference inferStock(const gcode::Program& program, const Timeline& recorded, const MachineSetup& setup,
                           const InferenceOptions& inference = {});
@@ -91,8 +91,8 @@ double inchBarSize(double diameterInch, bool above = false);
 // file line `firstLine` first) —, I155 default, I156 header. Severity Warning,
 // range.line = the deciding block's line (0 when none); the CLI prints them
 // as "note:", the GUI in its status bar.
-std::vector<Diagnostic> stockNotes(const io::JobHeader& stock, const StockInference* inference,
-                                   std::string_view gcode, int firstLine);
+std::vector<Diagnostic> stockNotes(const io::JobHeader& stock, const StockInference* inference, std::string_view gcode,
+                                   int firstLine);
 
 // inferStock on G-code text, parsed here and read as a Job reads it (lengths
 // without a decimal point: point_reading.h, `chosenCalculatorInput` being the
