@@ -48,7 +48,7 @@ int run(const std::string& args, std::string* err = nullptr) {
 }
 
 TEST(CliClass, ThirtyStudentsGetTheRightPassOrFail) {
-  const fs::path dir = fs::temp_directory_path() / "klueng_cli_class_test";
+  const fs::path dir = fs::temp_directory_path() / ("klueng_cli_class_test-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir / "class");
   const std::string reference = slurp(fs::path(KLUENG_SAMPLES_DIR) / "01-step-shaft.txt");
@@ -128,7 +128,7 @@ TEST(CliClass, ThirtyStudentsGetTheRightPassOrFail) {
 // programs call (O2000.nc, M98 P2000). Only the students' programs get a row,
 // the subprogram counts as theirs, and the CSV can be written again beside them.
 TEST(CliClass, OnlyTheStudentsProgramsAreGradedAndTheGradesCanBeWrittenAgain) {
-  const fs::path dir = fs::temp_directory_path() / "klueng_cli_class_folder_test";
+  const fs::path dir = fs::temp_directory_path() / ("klueng_cli_class_folder_test-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   const std::string reference = slurp(fs::path(KLUENG_SAMPLES_DIR) / "01-step-shaft.txt");
@@ -189,7 +189,7 @@ std::string pdfText(const fs::path& pdf, const std::string& options = "") {
 }
 
 TEST(CliClass, ThePdfHasTheTableAndWithSheetsEveryStudentsSheets) {
-  const fs::path dir = fs::temp_directory_path() / "klueng_cli_class_pdf_test";
+  const fs::path dir = fs::temp_directory_path() / ("klueng_cli_class_pdf_test-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir / "class");
   const std::string reference = slurp(fs::path(KLUENG_SAMPLES_DIR) / "01-step-shaft.txt");
@@ -224,7 +224,7 @@ TEST(CliClass, ThePdfHasTheTableAndWithSheetsEveryStudentsSheets) {
 // Issue 28 item 2: graded against the teacher's drawing with tolerances instead
 // of a reference program — one in, one out, one exactly at a limit.
 TEST(CliClass, GradedAgainstTheDrawingFeatureByFeature) {
-  const fs::path dir = fs::temp_directory_path() / "klueng_cli_class_drawing_test";
+  const fs::path dir = fs::temp_directory_path() / ("klueng_cli_class_drawing_test-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir / "class");
   const std::string sample = slurp(fs::path(KLUENG_SAMPLES_DIR) / "01-step-shaft.txt");

@@ -1,5 +1,6 @@
 // klueng-cli print (issue 10, item 6): the program sheet and the dimensioned
 // drawing of one program as a PDF, read back with pdftotext and pdfinfo.
+#include <unistd.h>
 #include <gtest/gtest.h>
 
 #include <array>
@@ -45,7 +46,7 @@ std::string pdfText(const fs::path& pdf) { return capture("pdftotext -layout '" 
 std::string pdfInfo(const fs::path& pdf) { return capture("pdfinfo -l 9 '" + pdf.string() + "' 2>/dev/null"); }
 
 fs::path scratch(const char* name) {
-  const fs::path dir = fs::temp_directory_path() / "klueng_cli_print_test";
+  const fs::path dir = fs::temp_directory_path() / ("klueng_cli_print_test-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   return dir / name;
 }

@@ -1,5 +1,6 @@
 // klueng-cli simulate's cut outputs, end to end: --png --profile --json --svg
 // --dxf --resolution, and stock alarms (A3xx) with their block.
+#include <unistd.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -51,7 +52,7 @@ std::string slurp(const fs::path& p) {
 }
 
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "klueng_cli_cut_test";
+  const fs::path dir = fs::temp_directory_path() / ("klueng_cli_cut_test-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   return dir / name;
 }
@@ -204,7 +205,7 @@ namespace {
 // A pawn's neck down a 15° slope (N70, line 14): the 80° CNMG's trailing edge
 // (7°) cuts into it, the 35° VNMG's (52°) does not.
 TEST(CliPartCheck, ThePawnsNeckGougesWithThe80DegreeInsertOnly) {
-  const fs::path file = fs::temp_directory_path() / "klueng_cli_pawn_neck.nc";
+  const fs::path file = fs::temp_directory_path() / ("klueng_cli_pawn_neck-" + std::to_string(::getpid()) + ".nc");
   std::ofstream(file) << "Pawn neck\nPawn P-1\nBrass\n124\n160\nKlueng tests\nO0100\nN10 G21 G40 G99\nN20 T0101\n"
                          "N30 G97 S1200 M03\nN40 G00 X28. Z2.\nN50 G42 G01 X24. Z0. F0.1\nN60 G01 Z-10.\n"
                          "N70 X22. Z-13.732\nN80 Z-20.\nN90 X24. Z-22.\nN100 Z-40.\nN110 X28.\n"
@@ -222,7 +223,7 @@ TEST(CliPartCheck, ThePawnsNeckGougesWithThe80DegreeInsertOnly) {
 // Issue 28 item 1: the part check holds the cut to the programmed path, so a
 // wrong offset row and a missing G41/G42 show — given with --config's own rows.
 TEST(CliPartCheck, AWrongTipRowAndAMissingCompensationShowOnTheirBlocks) {
-  const fs::path config = fs::temp_directory_path() / "klueng_cli_wrong_tip";
+  const fs::path config = fs::temp_directory_path() / ("klueng_cli_wrong_tip-" + std::to_string(::getpid()));
   fs::remove_all(config);
   fs::create_directories(config);
   for (const char* f : {"tools.cfg", "machine.cfg"}) fs::copy_file(fs::path(KLUENG_SOURCE_DIR) / f, config / f);
@@ -237,7 +238,7 @@ TEST(CliPartCheck, AWrongTipRowAndAMissingCompensationShowOnTheirBlocks) {
   EXPECT_EQ(thread.exitCode, 0) << thread.err;
   EXPECT_THAT(thread.err, HasSubstr("02-thread.txt:21:1: warning W320: Gouge 7.750 mm deep from Z0.000"));
 
-  const fs::path file = fs::temp_directory_path() / "klueng_cli_no_g42.txt";
+  const fs::path file = fs::temp_directory_path() / ("klueng_cli_no_g42-" + std::to_string(::getpid()) + ".txt");
   std::ifstream in(kCutSamples + "/01-step-shaft.txt");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   text.replace(text.find("G42 "), 4, "");

@@ -1,5 +1,6 @@
 // Issue 28 item 4: `simulate --features` and `--part-check` on a G20 program
 // write inches (Haas habits: G20, F0.008, Ø1.75 bar); --show-units overrides.
+#include <unistd.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -37,7 +38,7 @@ Output cli(const std::string& args) {
 }
 
 fs::path write(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / "klueng_cli_units_test";
+  const fs::path dir = fs::temp_directory_path() / ("klueng_cli_units_test-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const fs::path p = dir / name;
   std::ofstream(p, std::ios::binary) << text;

@@ -24,6 +24,7 @@
 // the tool library: 12=parting-3mm (blade 3 mm = 0.1181 in, left corner
 // controlled) and 9=vnmg-35-r02 (35 degree VNMG, R0.2 mm, tip 3; offset row 09
 // is 0 0 0 0, so it takes the library tool's nose radius and tip).
+#include <unistd.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -52,8 +53,8 @@ const std::string kCli = fromEnv("KLUENG_REAL_STYLE_CLI", KLUENG_CLI_PATH);
 const std::string kShipped = fromEnv("KLUENG_REAL_STYLE_CONFIG", KLUENG_SOURCE_DIR);
 const std::string kPrograms = KLUENG_REAL_STYLE_DIR;
 
-constexpr double kMm = 0.01;      // mm programs: 0.01 mm
-constexpr double kIn = 0.0005;    // inch programs: 0.0005 in
+constexpr double kMm = 0.01;    // mm programs: 0.01 mm
+constexpr double kIn = 0.0005;  // inch programs: 0.0005 in
 constexpr double kMmPerIn = 25.4;
 
 std::string quote(const std::string& s) {
@@ -208,7 +209,7 @@ struct Result {
 
 // check, then simulate with the profile written; the finished part in the program's unit.
 Result cut(const Job& job) {
-  const fs::path dir = fs::temp_directory_path() / "klueng_real_style_test";
+  const fs::path dir = fs::temp_directory_path() / ("klueng_real_style_test-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   // One file per test: ctest may run the tests of one program side by side.
   const fs::path csv = dir / (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".csv");
@@ -225,19 +226,19 @@ Result cut(const Job& job) {
 // Both commands must succeed without an error (warnings, such as rounded CAM
 // decimals or a machine-specific M code, are allowed), and a part must exist.
 // A job with a known limit instead checks that the limit is still there.
-#define RUN_CLEAN(job, r)                                                                           \
-  const Result r = cut(job);                                                                        \
-  if ((job).known) {                                                                                \
-    ASSERT_NE((r.check.text + r.simulate.text).find((job).known->needle), std::string::npos)        \
-        << (job).file << ": the known limit is lifted (\"" << (job).known->needle                   \
-        << "\" is gone): remove it from the job so that the test runs\n"                             \
-        << r.check.text << r.simulate.text;                                                         \
+#define RUN_CLEAN(job, r)                                                                                \
+  const Result r = cut(job);                                                                             \
+  if ((job).known) {                                                                                     \
+    ASSERT_NE((r.check.text + r.simulate.text).find((job).known->needle), std::string::npos)             \
+        << (job).file << ": the known limit is lifted (\"" << (job).known->needle                        \
+        << "\" is gone): remove it from the job so that the test runs\n"                                 \
+        << r.check.text << r.simulate.text;                                                              \
     GTEST_SKIP() << (job).file << ": known disagreement with the real control: " << (job).known->reason; \
-  }                                                                                                 \
-  ASSERT_EQ(r.check.exitCode, 0) << "check " << (job).file << ":\n" << r.check.text;               \
-  ASSERT_EQ(errorLines(r.check.text), "") << r.check.text;                                          \
-  ASSERT_EQ(r.simulate.exitCode, 0) << "simulate " << (job).file << ":\n" << r.simulate.text;       \
-  ASSERT_EQ(errorLines(r.simulate.text), "") << r.simulate.text;                                    \
+  }                                                                                                      \
+  ASSERT_EQ(r.check.exitCode, 0) << "check " << (job).file << ":\n" << r.check.text;                     \
+  ASSERT_EQ(errorLines(r.check.text), "") << r.check.text;                                               \
+  ASSERT_EQ(r.simulate.exitCode, 0) << "simulate " << (job).file << ":\n" << r.simulate.text;            \
+  ASSERT_EQ(errorLines(r.simulate.text), "") << r.simulate.text;                                         \
   ASSERT_FALSE(r.part.empty())
 
 // ============================================================================
@@ -252,8 +253,9 @@ TEST(RealStyleHaas, Shaft_Op1_G71G70_CutOff) {
   const Profile& p = r.part;
   // N10..N20 finished by G70 under G42: the nose follows the contour, so every
   // element is as programmed; G71 left U0.02 / W0.005 which G70 takes off.
-  EXPECT_NEAR(p.d(-0.5), 0.7500, kIn);      // Z-0.0625..-1.0 cylinder X0.75
-  EXPECT_NEAR(p.d(-0.03125), 0.6875, kIn);  // 1/16 x 45 chamfer X0.625 Z0 -> X0.75 Z-0.0625, half way: 0.625 + 2(0.03125)
+  EXPECT_NEAR(p.d(-0.5), 0.7500, kIn);  // Z-0.0625..-1.0 cylinder X0.75
+  EXPECT_NEAR(p.d(-0.03125), 0.6875,
+              kIn);  // 1/16 x 45 chamfer X0.625 Z0 -> X0.75 Z-0.0625, half way: 0.625 + 2(0.03125)
   EXPECT_NEAR(p.d(-1.03125), 1.1875, kIn);  // chamfer X1.125 Z-1. -> X1.25 Z-1.0625, half way
   EXPECT_NEAR(p.d(-1.5), 1.2500, kIn);      // X1.25 to Z-2.
   // G02 X1.5 Z-2.125 R0.125 from X1.25 Z-2.: centre Z-2.0 at radius 0.75 (a
@@ -265,7 +267,7 @@ TEST(RealStyleHaas, Shaft_Op1_G71G70_CutOff) {
   // Left of Z-2.75 the bar is untouched: the first G71 level is X2.2 - 2(0.06)
   // = X2.08, which meets the profile (moved by U/W) on its last face at Z-2.745.
   EXPECT_NEAR(p.d(-2.9), 2.1000, kIn);
-  EXPECT_NEAR(p.edge(-0.9, -1.1, 0.95), -1.0, kIn);     // shoulder face at Z-1.
+  EXPECT_NEAR(p.edge(-0.9, -1.1, 0.95), -1.0, kIn);  // shoulder face at Z-1.
   // The shoulder at Z-2.75: N20 G40 X2.2 cancels the compensation on the face
   // move, so the block before it (Z-2.75) ends with the offset perpendicular
   // to itself (the cancel rule of Fanuc/Haas nose compensation): the nose
@@ -273,7 +275,7 @@ TEST(RealStyleHaas, Shaft_Op1_G71G70_CutOff) {
   // its circle reaches R past the shoulder. At Ø2.05 (radius 1.025, 0.0064961
   // below the centre) the face is at Z-2.75 - sqrt(R^2 - 0.0064961^2) = -2.780819.
   EXPECT_NEAR(p.edge(-2.6, -2.9, 2.05), -2.7808, kIn);
-  EXPECT_NEAR(p.rightFace(), 0.0, kIn);                 // faced at Z0 (the bar's face)
+  EXPECT_NEAR(p.rightFace(), 0.0, kIn);  // faced at Z0 (the bar's face)
   // Cut-off: T1212 at Z-3.118 (left corner), blade 3 mm = 0.11811 in wide, fed
   // to X-0.02 past the centre: nothing left in [-3.118, -2.99989]; the part's
   // left face is the blade's right side, Z-3.118 + 0.11811 = -2.99989 (3.000 long).
@@ -289,7 +291,7 @@ TEST(RealStyleHaas, Shaft_Op1_CutOffToolFromComment) {
   const Job job{"haas-01-shaft-op1.nc", "haas", "--stock 2.1x4in", true};
   RUN_CLEAN(job, r);
   EXPECT_NE(r.check.text.find("T12 = parting-3mm"), std::string::npos) << r.check.text;
-  EXPECT_NEAR(r.part.d(-3.06), 0.0, kIn);                  // the blade's gap [-3.118, -2.99989]
+  EXPECT_NEAR(r.part.d(-3.06), 0.0, kIn);                     // the blade's gap [-3.118, -2.99989]
   EXPECT_NEAR(r.part.edge(-2.95, -3.05, 1.0), -2.9999, kIn);  // the part is 3.000 long
   EXPECT_NEAR(r.part.d(-2.5), 2.0000, kIn);
 }
@@ -307,7 +309,7 @@ TEST(RealStyleHaas, Shaft_Op2_SecondSetup_M00) {
   // The bar is modelled plain: left of Z-0.3 it is the Ø2.1 blank (on the real
   // part it is op 1's Ø2.000 there; the program does not cut it).
   EXPECT_NEAR(p.d(-0.6), 2.1000, kIn);
-  EXPECT_NEAR(p.edge(-0.1, -0.2, 1.7), -0.15, kIn);   // face between Ø1.5 and the chamfer
+  EXPECT_NEAR(p.edge(-0.1, -0.2, 1.7), -0.15, kIn);  // face between Ø1.5 and the chamfer
   // End of the profile: N200 G40 X2.2 cancels on the face move, so (as in
   // op 1) the nose circle stops centred on Z-0.3 at radius 1.0 + R and reaches
   // past it: at Ø2.05 the face is at Z-0.3 - sqrt(R^2 - 0.0064961^2) = -0.330819.
@@ -334,7 +336,7 @@ TEST(RealStyleHaas, Stud_3_4_10_G75Relief_G76) {
   // below the Ø0.745 the OD tool turned: above it the shoulder carries the
   // nose's cancel overcut (N2 G40 X1.1 on the face move, see haas-01).
   EXPECT_NEAR(p.edge(-0.95, -1.05, 0.7), -1.0, kIn);
-  EXPECT_NEAR(p.d(-1.5), 1.0000, kIn);                // the bar, left of the shoulder
+  EXPECT_NEAR(p.d(-1.5), 1.0000, kIn);  // the bar, left of the shoulder
 }
 
 // O20104: one-block G72 P Q U W D F (facing passes), G70 with G41 (the tool is
@@ -343,13 +345,13 @@ TEST(RealStyleHaas, Flange_G72_G41) {
   const Job job{"haas-04-flange-g72.nc", "haas", "--units inch --stock 3x2in", true};
   RUN_CLEAN(job, r);
   const Profile& p = r.part;
-  EXPECT_NEAR(p.d(-0.025), 1.2000, kIn);  // chamfer X1.25 Z-0.05 -> X1.15 Z0, half way: 1.15 + 2(0.025)
-  EXPECT_NEAR(p.d(-0.2), 1.2500, kIn);    // hub X1.25 from Z-0.4 to Z-0.05
-  EXPECT_NEAR(p.d(-0.6), 2.5000, kIn);    // X2.5 from Z-0.75 to Z-0.4
-  EXPECT_NEAR(p.d(-1.2), 3.0000, kIn);    // the flange: the bar left of Z-0.75
-  EXPECT_NEAR(p.edge(-0.3, -0.5, 1.875), -0.4, kIn);  // face Z-0.4 (between Ø1.25 and Ø2.5)
+  EXPECT_NEAR(p.d(-0.025), 1.2000, kIn);                // chamfer X1.25 Z-0.05 -> X1.15 Z0, half way: 1.15 + 2(0.025)
+  EXPECT_NEAR(p.d(-0.2), 1.2500, kIn);                  // hub X1.25 from Z-0.4 to Z-0.05
+  EXPECT_NEAR(p.d(-0.6), 2.5000, kIn);                  // X2.5 from Z-0.75 to Z-0.4
+  EXPECT_NEAR(p.d(-1.2), 3.0000, kIn);                  // the flange: the bar left of Z-0.75
+  EXPECT_NEAR(p.edge(-0.3, -0.5, 1.875), -0.4, kIn);    // face Z-0.4 (between Ø1.25 and Ø2.5)
   EXPECT_NEAR(p.edge(-0.65, -0.85, 2.75), -0.75, kIn);  // face Z-0.75 (between Ø2.5 and Ø3.0)
-  EXPECT_NEAR(p.rightFace(), 0.0, kIn);                  // the profile faces Z0 to X0
+  EXPECT_NEAR(p.rightFace(), 0.0, kIn);                 // the profile faces Z0 to X0
 }
 
 // O20105: tube stock, OD G71 + G70 (G42), M00, then an ID G71 with U negative
@@ -362,10 +364,10 @@ TEST(RealStyleHaas, Bushing_Tube_OdThenBore_M00) {
   EXPECT_NEAR(p.d(-0.75), 2.2500, kIn);   // OD X2.25 to Z-1.5
   EXPECT_NEAR(p.d(-2.0), 2.5000, kIn);    // the tube's OD, left of Z-1.5
   // ID under G41, tip 2 R0.4 mm: the nose follows the contour.
-  EXPECT_NEAR(p.inner(-0.015), 1.7800, kIn);  // mouth chamfer X1.81 Z0 -> X1.75 Z-0.03: 1.81 - 2(0.015)
-  EXPECT_NEAR(p.inner(-0.4), 1.7500, kIn);    // bore X1.75 to Z-0.8
-  EXPECT_NEAR(p.inner(-1.2), 1.5000, kIn);    // bore X1.5 from Z-0.8 to Z-1.6
-  EXPECT_NEAR(p.inner(-2.0), 1.2500, kIn);    // the tube's own bore past Z-1.6
+  EXPECT_NEAR(p.inner(-0.015), 1.7800, kIn);                 // mouth chamfer X1.81 Z0 -> X1.75 Z-0.03: 1.81 - 2(0.015)
+  EXPECT_NEAR(p.inner(-0.4), 1.7500, kIn);                   // bore X1.75 to Z-0.8
+  EXPECT_NEAR(p.inner(-1.2), 1.5000, kIn);                   // bore X1.5 from Z-0.8 to Z-1.6
+  EXPECT_NEAR(p.inner(-2.0), 1.2500, kIn);                   // the tube's own bore past Z-1.6
   EXPECT_NEAR(p.edge(-0.7, -0.9, 1.625, false), -0.8, kIn);  // step in the bore at Z-0.8
 }
 
@@ -414,8 +416,8 @@ TEST(RealStyleHaas, TaperPin_CamDecimals_CutOff) {
   EXPECT_NEAR(p.d(-0.0177), 0.4647, kIn);
   EXPECT_NEAR(p.d(-0.3), 0.5000, kIn);  // X0.5 to Z-0.5
   // Taper X0.5 Z-0.5 -> X0.75 Z-2. under G42 (exact): Ø = 0.5 + 0.25 (z0 - z)/1.5.
-  EXPECT_NEAR(p.d(-0.8), 0.5500, kIn);   // 0.5 + 0.25(0.3/1.5)
-  EXPECT_NEAR(p.d(-1.25), 0.6250, kIn);  // half way
+  EXPECT_NEAR(p.d(-0.8), 0.5500, kIn);    // 0.5 + 0.25(0.3/1.5)
+  EXPECT_NEAR(p.d(-1.25), 0.6250, kIn);   // half way
   EXPECT_NEAR(p.d(-2.025), 0.9500, kIn);  // chamfer X0.9 Z-2. -> X1. Z-2.05, half way
   EXPECT_NEAR(p.d(-2.3), 1.0000, kIn);    // X1. to Z-2.8
   // Cut-off at Z-2.718 (left corner), blade 0.11811: gap [-2.718, -2.59989];
@@ -499,9 +501,9 @@ TEST(RealStyleHaas, SteppedSpindle_Radii_Dwell) {
   // G03 X0.5 Z-0.06 R0.06 from X0.38 Z0: centre Z-0.06 at radius 0.19. At Z-0.02:
   // r = 0.19 + sqrt(0.06^2 - 0.04^2) = 0.19 + 0.044721 -> Ø0.469443.
   EXPECT_NEAR(p.d(-0.02), 0.4694, kIn);
-  EXPECT_NEAR(p.d(-0.3), 0.5000, kIn);     // X0.5 to Z-0.5
+  EXPECT_NEAR(p.d(-0.3), 0.5000, kIn);      // X0.5 to Z-0.5
   EXPECT_NEAR(p.d(-0.53125), 0.9375, kIn);  // chamfer X0.875 Z-0.5 -> X1. Z-0.5625, half way
-  EXPECT_NEAR(p.d(-1.0), 1.0000, kIn);     // X1. to Z-1.25
+  EXPECT_NEAR(p.d(-1.0), 1.0000, kIn);      // X1. to Z-1.25
   // G02 X1.25 Z-1.375 R0.125: centre Z-1.25 at radius 0.625 (concave). At Z-1.3125:
   // r = 0.625 - sqrt(0.125^2 - 0.0625^2) = 0.625 - 0.108253 -> Ø1.033494.
   EXPECT_NEAR(p.d(-1.3125), 1.0335, kIn);
@@ -595,8 +597,8 @@ TEST(RealStyleHaas, MetricSpigot_G71ProfileEndsWithARetract) {
   // G02 X32. Z-29. R4. from X24. Z-25.: a concave fillet, centre Z-25. at
   // radius 16; at Z-27.: r = 16 - sqrt(4^2 - 2^2) = 12.535898 -> Ø25.0718.
   EXPECT_NEAR(p.d(-27.0), 25.0718, kMm);
-  EXPECT_NEAR(p.d(-35.0), 36.000, kMm);  // X36. from Z-29. to Z-45.
-  EXPECT_NEAR(p.d(-50.0), 40.000, kMm);  // the bar, left of Z-45.
+  EXPECT_NEAR(p.d(-35.0), 36.000, kMm);                 // X36. from Z-29. to Z-45.
+  EXPECT_NEAR(p.d(-50.0), 40.000, kMm);                 // the bar, left of Z-45.
   EXPECT_NEAR(p.edge(-40.0, -50.0, 38.0), -45.0, kMm);  // the Z-45. face
   EXPECT_NEAR(p.rightFace(), 0.0, kMm);
 }
@@ -629,9 +631,9 @@ TEST(RealStyleFanuc, Flange_Lowercase_G72) {
   const Job job{"fanuc-02-flange-g72-lower.nc", "fanuc", "--stock 100x50", false};
   RUN_CLEAN(job, r);
   const Profile& p = r.part;
-  EXPECT_NEAR(p.d(-1.0), 48.0, kMm);   // chamfer x50. z-2. -> x46. z0., half way
-  EXPECT_NEAR(p.d(-6.0), 50.0, kMm);   // hub x50. from z-12. to z-2.
-  EXPECT_NEAR(p.d(-16.0), 80.0, kMm);  // x80. from z-20. to z-12.
+  EXPECT_NEAR(p.d(-1.0), 48.0, kMm);    // chamfer x50. z-2. -> x46. z0., half way
+  EXPECT_NEAR(p.d(-6.0), 50.0, kMm);    // hub x50. from z-12. to z-2.
+  EXPECT_NEAR(p.d(-16.0), 80.0, kMm);   // x80. from z-20. to z-12.
   EXPECT_NEAR(p.d(-30.0), 100.0, kMm);  // the bar
   EXPECT_NEAR(p.edge(-11.0, -13.0, 65.0), -12.0, kMm);
   EXPECT_NEAR(p.edge(-19.0, -21.0, 90.0), -20.0, kMm);
@@ -670,8 +672,8 @@ TEST(RealStyleFanuc, BoltM24_G90_G75_G76) {
   EXPECT_NEAR(p.d(-28.0), 20.0, kMm);
   EXPECT_NEAR(p.edge(-29.0, -31.0, 24.0), -30.0, kMm);  // left wall = the Ø28 shoulder
   EXPECT_NEAR(p.edge(-27.0, -25.0, 20.8), -26.0, kMm);  // right wall, where the thread ends (G76 Z-26.)
-  EXPECT_NEAR(p.d(-38.0), 28.0, kMm);  // X28. from Z-30. to Z-45.
-  EXPECT_NEAR(p.d(-55.0), 30.0, kMm);  // the bar
+  EXPECT_NEAR(p.d(-38.0), 28.0, kMm);                   // X28. from Z-30. to Z-45.
+  EXPECT_NEAR(p.d(-55.0), 30.0, kMm);                   // the bar
 }
 
 // :0500 ID work on tube stock Ø118/Ø90 x 80 (--stock 118x80x90): two-block G71
@@ -680,7 +682,7 @@ TEST(RealStyleFanuc, BearingHousing_Tube_BoreG71) {
   const Job job{"fanuc-05-bore-tube-g71.nc", "fanuc", "--stock 118x80x90", false};
   RUN_CLEAN(job, r);
   const Profile& p = r.part;
-  EXPECT_NEAR(p.inner(-0.5), 101.0, kMm);  // mouth chamfer X102. Z0. -> X100. Z-1., half way
+  EXPECT_NEAR(p.inner(-0.5), 101.0, kMm);   // mouth chamfer X102. Z0. -> X100. Z-1., half way
   EXPECT_NEAR(p.inner(-12.0), 100.0, kMm);  // X100. to Z-25.
   EXPECT_NEAR(p.inner(-40.0), 95.0, kMm);   // X95. from Z-25. to Z-50.
   EXPECT_NEAR(p.inner(-60.0), 90.0, kMm);   // the tube's bore
@@ -771,7 +773,8 @@ TEST(RealStyleFanuc, Handle_G71TypeII_ArcPocket) {
 TEST(RealStyleShopTools, Haas_T202Groove_G75) {
   const Job job{"haas-14-pin-grooves-t202.nc", "haas", "--stock 1x3in", true};
   RUN_CLEAN(job, r);
-  EXPECT_NE(r.check.text.find(":20:1: note I404: T02 = grooving-3mm (grooving cycle G75 on line 20)"), std::string::npos)
+  EXPECT_NE(r.check.text.find(":20:1: note I404: T02 = grooving-3mm (grooving cycle G75 on line 20)"),
+            std::string::npos)
       << r.check.text;
   EXPECT_NE(r.check.text.find("note I411: offset 02 held R0.8 tip 4"), std::string::npos) << r.check.text;
   const Profile& p = r.part;
@@ -793,7 +796,8 @@ TEST(RealStyleShopTools, Haas_T202Groove_G75) {
 TEST(RealStyleShopTools, Haas_T2FinishesTowardTheChuck) {
   const Job job{"haas-15-long-pin-t2-finish.nc", "haas", "--stock 1.25x6in", true};
   RUN_CLEAN(job, r);
-  EXPECT_NE(r.check.text.find(":18:1: note I408: T02 = cnmg-80-r04 (outside turning, G70 on line 18)"), std::string::npos)
+  EXPECT_NE(r.check.text.find(":18:1: note I408: T02 = cnmg-80-r04 (outside turning, G70 on line 18)"),
+            std::string::npos)
       << r.check.text;
   const Profile& p = r.part;
   EXPECT_NEAR(p.d(-0.5), 0.900, kIn);  // G70 with G40: the imaginary tip on X0.9 from Z0 to Z-5.
@@ -807,8 +811,9 @@ TEST(RealStyleShopTools, Haas_T2FinishesTowardTheChuck) {
 TEST(RealStyleShopTools, Fanuc_T0202BoresByHand) {
   const Job job{"fanuc-10-ring-hand-bored.nc", "fanuc", "--stock 80x50x40", false};
   RUN_CLEAN(job, r);
-  EXPECT_NE(r.check.text.find(":8:1: note I406: T02 = boring-bar-16 (cutting inside a bore, N6 G01 Z-20. F0.15 on line 8)"),
-            std::string::npos)
+  EXPECT_NE(
+      r.check.text.find(":8:1: note I406: T02 = boring-bar-16 (cutting inside a bore, N6 G01 Z-20. F0.15 on line 8)"),
+      std::string::npos)
       << r.check.text;
   const Profile& p = r.part;
   EXPECT_NEAR(p.inner(-10.0), 50.0, kMm);  // last pass X50. to Z-20. (tip 2 with G40: exact)
@@ -839,7 +844,8 @@ TEST(RealStyleShopTools, Fanuc_FacingBeyondTheCentre) {
 TEST(RealStyleShopTools, Haas_G71ProfileEndsWithARetract) {
   const Job job{"haas-16-pin-g71-retract.nc", "haas", "--stock 1.25x3in", true};
   RUN_CLEAN(job, r);
-  EXPECT_NE(r.check.text.find(":24:1: note I401: T02 = vnmg-35-r02 (comment \"FINISHING\" on line 24)"), std::string::npos)
+  EXPECT_NE(r.check.text.find(":24:1: note I401: T02 = vnmg-35-r02 (comment \"FINISHING\" on line 24)"),
+            std::string::npos)
       << r.check.text;
   const Profile& p = r.part;
   // G70 under G42: every element as programmed.
@@ -874,9 +880,9 @@ TEST(RealStyleDecimalPoint, Fanuc_InchCycleWordsInIncrements) {
   // The thread: G76 X1.1647 with the 60 degree tool's apex controlled, so the root is X1.1647,
   // from Z.25 to Z-1.25 less the R10 pull-out (1.0 lead = 0.0769 in).
   EXPECT_NEAR(p.minD(-0.9, -0.3), 1.1647, kIn);
-  EXPECT_NEAR(p.d(-1.4), 1.250, kIn);   // Z-1.25 to Z-1.5: G70's Ø1.25, past the thread
-  EXPECT_NEAR(p.d(-2.0), 1.600, kIn);   // X1.6 to Z-2.25
-  EXPECT_NEAR(p.d(-2.5), 1.750, kIn);   // the bar
+  EXPECT_NEAR(p.d(-1.4), 1.250, kIn);  // Z-1.25 to Z-1.5: G70's Ø1.25, past the thread
+  EXPECT_NEAR(p.d(-2.0), 1.600, kIn);  // X1.6 to Z-2.25
+  EXPECT_NEAR(p.d(-2.5), 1.750, kIn);  // the bar
   EXPECT_NEAR(p.edge(-2.0, -2.5, 1.7), -2.25, kIn);
 }
 

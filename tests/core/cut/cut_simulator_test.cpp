@@ -1,5 +1,6 @@
 #include "klueng/core/cut/cut_simulator.h"
 
+#include <unistd.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -316,9 +317,9 @@ TEST(CutSimulator, ThreadingStampsTheToolOncePerLead) {
   const ToolShape v = *makeToolShape(img, "v.bmp", 0.0, 8).value;
   machine::Move pass = move(MoveKind::Thread, Segment::line(zx(5, 14.6), zx(-30, 14.6)), 0, 1, 130);
   pass.lead = 1.5;
-  const machine::Timeline tl = timelineOf({
-      move(MoveKind::Rapid, Segment::line(zx(5, 16), zx(5, 14.6)), 0, 1, 120), pass,
-      move(MoveKind::Rapid, Segment::line(zx(-30, 14.6), zx(-30, 16)), 0, 1, 140)});
+  const machine::Timeline tl =
+      timelineOf({move(MoveKind::Rapid, Segment::line(zx(5, 16), zx(5, 14.6)), 0, 1, 120), pass,
+                  move(MoveKind::Rapid, Segment::line(zx(-30, 14.6), zx(-30, 16)), 0, 1, 140)});
   CutSimulator sim(tl, barSetup(30, 50), libraryWith(v));
   sim.runToEnd();
   ASSERT_FALSE(sim.alarm().has_value()) << sim.alarm()->code << " line " << sim.alarm()->range.line;
@@ -372,7 +373,9 @@ TEST(CutSimulator, AdvancingInStepsEqualsRunningToTheEnd) {
 TEST(CutSimulator, ARefusedBitmapStopsTheRunWhereTheToolIsFirstUsed) {
   io::RgbImage img = blankImage(10, 10);
   paint(img, 0, 0, 9, 4, 0x000000);  // holder only, no cutting edge
-  const std::string path = (std::filesystem::temp_directory_path() / "klueng_cut_holder_only.bmp").string();
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("klueng_cut_holder_only-" + std::to_string(::getpid()) + ".bmp"))
+          .string();
   ASSERT_TRUE(io::writeBmp(path, img));
   CutSetup setup = barSetup(50, 100);
   setup.tools.bitmap[0] = path;
@@ -406,10 +409,11 @@ TEST(CutSimulator, GarbageMovesNeverCrashOrHang) {
   for (int k = 0; k < 400; ++k) {
     const Vec2 to = zx(next(-120, 20), next(-5, 40));
     const int kind = static_cast<int>(next(0, 4));
-    machine::Move m = kind == 0   ? move(MoveKind::Line, Segment::line(at, to), 0, 1, k)
-                      : kind == 1 ? move(MoveKind::Arc, Segment::arc(at, to, (at + to) / 2 + zx(0, next(-3, 3)), k % 2 == 0), 0, 1, k)
-                      : kind == 2 ? move(MoveKind::Thread, Segment::line(at, to), 0, 1, k)
-                                  : move(MoveKind::Rapid, Segment::line(at, to), 0, 1, k);
+    machine::Move m =
+        kind == 0   ? move(MoveKind::Line, Segment::line(at, to), 0, 1, k)
+        : kind == 1 ? move(MoveKind::Arc, Segment::arc(at, to, (at + to) / 2 + zx(0, next(-3, 3)), k % 2 == 0), 0, 1, k)
+        : kind == 2 ? move(MoveKind::Thread, Segment::line(at, to), 0, 1, k)
+                    : move(MoveKind::Rapid, Segment::line(at, to), 0, 1, k);
     m.lead = next(0.0, 3.0);
     moves.push_back(m);
     at = to;
@@ -424,7 +428,8 @@ TEST(CutSimulator, GarbageMovesNeverCrashOrHang) {
   sim.runToEnd();
   EXPECT_TRUE(sim.finished());
   EXPECT_FALSE(sim.alarm().has_value());
-  EXPECT_NEAR(sim.removedVolume() + sim.stock().volume(), sim.stock().initialVolume(), 1e-6 * sim.stock().initialVolume());
+  EXPECT_NEAR(sim.removedVolume() + sim.stock().volume(), sim.stock().initialVolume(),
+              1e-6 * sim.stock().initialVolume());
   for (int i = 0; i < sim.stock().columnCount(); ++i)
     for (const Interval& in : sim.stock().column(i)) ASSERT_LT(in.lo, in.hi);
 }

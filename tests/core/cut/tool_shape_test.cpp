@@ -1,5 +1,6 @@
 #include "klueng/core/cut/tool_shape.h"
 
+#include <unistd.h>
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -109,7 +110,7 @@ TEST(ToolShape, MissingAndMalformedFilesGiveErrorsNamingTheFile) {
   for (const auto& a : missing.diagnostics[0].args) named = named || a.find("tool.bmp") != std::string::npos;
   EXPECT_TRUE(named);
 
-  const auto dir = std::filesystem::temp_directory_path() / "klueng_cut_tool_test";
+  const auto dir = std::filesystem::temp_directory_path() / ("klueng_cut_tool_test-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::string bad = (dir / "garbage.bmp").string();
   std::FILE* f = std::fopen(bad.c_str(), "wb");

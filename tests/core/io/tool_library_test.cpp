@@ -1,6 +1,7 @@
 // Turrets up to 24 stations, 64 offset rows, and the tool library (docs/tools.md).
 #include "klueng/core/io/tool_library.h"
 
+#include <unistd.h>
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -192,7 +193,7 @@ INSTANTIATE_TEST_SUITE_P(Cases, LibraryErrors,
                                            BadLine{"t2 | turning | 10 | 0 | 3 | 0 | a.png |  | ก", "F168", 40}));
 
 TEST(Library, AMissingBitmapIsF169OnItsLine) {
-  const auto dir = std::filesystem::temp_directory_path() / "klueng-library-test";
+  const auto dir = std::filesystem::temp_directory_path() / ("klueng-library-test-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::string path = (dir / "library.cfg").string();
   {
