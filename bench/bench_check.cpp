@@ -87,8 +87,7 @@ int main(int argc, char** argv) {
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     std::printf("blocks %zu, diagnostics %zu, %.1f ms wall, %.1f ms CPU, peak RSS %.1f MB\n", program.blocks.size(),
-                diags.size(), ms, cpuMs,
-                static_cast<double>(usage.ru_maxrss) / 1024.0);
+                diags.size(), ms, cpuMs, static_cast<double>(usage.ru_maxrss) / 1024.0);
     return diags.empty() ? 0 : 1;
   }
   benchmark::Initialize(&argc, argv);

@@ -31,11 +31,11 @@ std::vector<Segment> steppedShaft(int steps) {
   line(-3, 0);  // start-up
   for (int i = 0; i < steps; ++i) {
     line(-2, 0);
-    line(-0.5, 0.5);           // 45-degree chamfer
+    line(-0.5, 0.5);  // 45-degree chamfer
     line(-3, 0);
-    arc(-1, 1, {0, 1}, false); // G02 R1 fillet
-    line(0, 0.5);              // face up
-    arc(-1, 1, {-1, 0}, true); // G03 R1 corner
+    arc(-1, 1, {0, 1}, false);  // G02 R1 fillet
+    line(0, 0.5);               // face up
+    arc(-1, 1, {-1, 0}, true);  // G03 R1 corner
   }
   line(50, 20);  // cancel
   return m;

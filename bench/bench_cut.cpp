@@ -72,7 +72,8 @@ struct StageTimes {
   double parseCheck = 0, interpret = 0, cut = 0;
 };
 
-Outcome checkInterpretCut(const io::ProgramFile& file, const machine::MachineSetup& setup, StageTimes* times = nullptr) {
+Outcome checkInterpretCut(const io::ProgramFile& file, const machine::MachineSetup& setup,
+                          StageTimes* times = nullptr) {
   const auto t0 = Clock::now();
   const gcode::Program program = gcode::parse(file.gcode, file.gcodeFirstLine);
   gcode::CheckOptions checkOptions;
@@ -217,11 +218,12 @@ int main(int argc, char** argv) {
     const Outcome o = checkInterpretCut(*file.value, shippedSetup(), &times);
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
-    std::printf("moves %zu, parse+check %.1f ms, interpret %.1f ms, cut %.1f ms, total %.1f ms, removed %.0f mm3, "
-                "%s, peak RSS %.1f MB, stock digest %016llx\n",
-                o.moves, times.parseCheck, times.interpret, times.cut, times.parseCheck + times.interpret + times.cut,
-                o.removed, o.alarm ? "STOPPED" : "ran to the end", static_cast<double>(usage.ru_maxrss) / 1024.0,
-                static_cast<unsigned long long>(o.digest));
+    std::printf(
+        "moves %zu, parse+check %.1f ms, interpret %.1f ms, cut %.1f ms, total %.1f ms, removed %.0f mm3, "
+        "%s, peak RSS %.1f MB, stock digest %016llx\n",
+        o.moves, times.parseCheck, times.interpret, times.cut, times.parseCheck + times.interpret + times.cut,
+        o.removed, o.alarm ? "STOPPED" : "ran to the end", static_cast<double>(usage.ru_maxrss) / 1024.0,
+        static_cast<unsigned long long>(o.digest));
     return o.alarm ? 1 : 0;
   }
   benchmark::Initialize(&argc, argv);

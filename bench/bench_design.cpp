@@ -32,9 +32,12 @@ void BM_DesignLoop(benchmark::State& state, const char* name, gcode::Dialect dia
   }
 }
 
-BENCHMARK_CAPTURE(BM_DesignLoop, step_shaft_fanuc, "step-shaft.json", gcode::Dialect::Fanuc)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_DesignLoop, step_shaft_classic, "step-shaft.json", gcode::Dialect::Classic)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_DesignLoop, threaded_bush_haas, "threaded-bush.json", gcode::Dialect::Haas)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_DesignLoop, step_shaft_fanuc, "step-shaft.json", gcode::Dialect::Fanuc)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_DesignLoop, step_shaft_classic, "step-shaft.json", gcode::Dialect::Classic)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_DesignLoop, threaded_bush_haas, "threaded-bush.json", gcode::Dialect::Haas)
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -55,8 +55,9 @@ void BM_Interpret(benchmark::State& state) {
     moves = t.moves.size();
     cycle = t.cycleTime();
     alarm = t.alarm.has_value();
-    if (alarm) alarmText = t.alarm->code + " line " + std::to_string(t.alarm->range.line) + ": " +
-                           formatMessage(*t.alarm, Lang::En);
+    if (alarm)
+      alarmText =
+          t.alarm->code + " line " + std::to_string(t.alarm->range.line) + ": " + formatMessage(*t.alarm, Lang::En);
     compensated = 0;
     for (const auto& m : t.moves) compensated += m.compensated ? 1 : 0;
     benchmark::DoNotOptimize(t.moves.data());

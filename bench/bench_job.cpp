@@ -72,20 +72,14 @@ void BM_Stage(benchmark::State& state) {
   const std::vector<Diagnostic> found = gcode::check(program, options(loaded));
   for (auto _ : state) {
     switch (state.range(0)) {
-      case 0:
-        benchmark::DoNotOptimize(gcode::parse(text, 7).blocks.data());
-        break;
-      case 1:
-        benchmark::DoNotOptimize(gcode::check(program, options(loaded)).data());
-        break;
+      case 0: benchmark::DoNotOptimize(gcode::parse(text, 7).blocks.data()); break;
+      case 1: benchmark::DoNotOptimize(gcode::check(program, options(loaded)).data()); break;
       case 2:
         benchmark::DoNotOptimize(machine::inferTools(program, text, 7, loaded.setup, io::shippedToolLibrary(), {},
                                                      loaded.setup.tools.stations)
                                      .choices.data());
         break;
-      case 3:
-        benchmark::DoNotOptimize(gcode::suggestDialect(program, options(loaded), found).has_value());
-        break;
+      case 3: benchmark::DoNotOptimize(gcode::suggestDialect(program, options(loaded), found).has_value()); break;
     }
   }
   static const char* const names[] = {"parse", "check", "inferTools", "suggestDialect"};

@@ -15,9 +15,12 @@ int main(int argc, char** argv) {
   bool roughing = false, linuxcnc = false;
   int arg = 1;
   for (; arg < argc && argv[arg][0] == '-' && argv[arg][1] == '-'; ++arg) {
-    if (std::strcmp(argv[arg], "--roughing") == 0) roughing = true;
-    else if (std::strcmp(argv[arg], "--linuxcnc") == 0) linuxcnc = true;
-    else break;
+    if (std::strcmp(argv[arg], "--roughing") == 0)
+      roughing = true;
+    else if (std::strcmp(argv[arg], "--linuxcnc") == 0)
+      linuxcnc = true;
+    else
+      break;
   }
   const int minimum =
       roughing ? klueng::bench::RoughingGenerator::kMinimumBlocks : klueng::bench::ProgramGenerator::kMinimumBlocks;
@@ -31,8 +34,7 @@ int main(int argc, char** argv) {
   errno = 0;
   const long blocks = std::strtol(argv[arg], &end, 10);
   if (errno != 0 || end == argv[arg] || *end != '\0' || blocks < minimum || blocks > 50'000'000) {
-    std::fprintf(stderr, "%s: BLOCKS must be an integer from %d to 50000000, not '%s'\n", argv[0], minimum,
-                 argv[arg]);
+    std::fprintf(stderr, "%s: BLOCKS must be an integer from %d to 50000000, not '%s'\n", argv[0], minimum, argv[arg]);
     return 2;
   }
   const std::string text = roughing ? klueng::bench::RoughingGenerator::generate(static_cast<int>(blocks), linuxcnc)

@@ -50,8 +50,7 @@ class ProgramGenerator {
 
   // One in-air or roughing pattern; each starts and ends at Z2 with X <= 52.
   static std::vector<std::string> roughingPass(int diameter) {
-    return {"G00 X52. Z2.", fmtMm("G01 X%d. F0.25", diameter), "G01 Z-60.",
-            fmtMm("G01 X%d.", diameter + 2), "G00 Z2."};
+    return {"G00 X52. Z2.", fmtMm("G01 X%d. F0.25", diameter), "G01 Z-60.", fmtMm("G01 X%d.", diameter + 2), "G00 Z2."};
   }
   static std::vector<std::string> taperPass() {
     return {"G00 X52. Z2.", "G01 X20. Z0. F0.25", "X30. Z-10.", "Z-30.", "X52.", "G00 Z2."};
@@ -61,9 +60,8 @@ class ProgramGenerator {
             "G01 Z-40.",    "G03 X36. Z-44. R4.", "G01 X52.",  "G00 Z2."};
   }
   static std::vector<std::string> arcPassCentre() {
-    return {"G00 X52. Z2.",        "G01 X20. Z0. F0.25", "G01 Z-20.",
-            "G02 X28. Z-24. I4. K0.", "G01 Z-40.",        "G03 X36. Z-44. I0. K-4.",
-            "G01 X52.",            "G00 Z2."};
+    return {"G00 X52. Z2.", "G01 X20. Z0. F0.25",      "G01 Z-20.", "G02 X28. Z-24. I4. K0.",
+            "G01 Z-40.",    "G03 X36. Z-44. I0. K-4.", "G01 X52.",  "G00 Z2."};
   }
   // The finishing profile: Ø20 face corner, 1 mm chamfer, R4 fillet, R4 corner.
   static std::vector<std::string> finishingProfile(bool first) {
@@ -160,8 +158,8 @@ class ProgramGenerator {
 // time its `rs274` interpreter on the same work (a reference, never a dependency).
 class RoughingGenerator {
  public:
-  static constexpr int kLevels = 39;                            // Ø59 .. Ø21
-  static constexpr int kMinimumBlocks = 5 + kLevels * 5 + 3;   // preamble, a pass a level, ending
+  static constexpr int kLevels = 39;                          // Ø59 .. Ø21
+  static constexpr int kMinimumBlocks = 5 + kLevels * 5 + 3;  // preamble, a pass a level, ending
 
   static std::string generate(int bodyBlocks, bool linuxcnc = false) {
     RoughingGenerator g;

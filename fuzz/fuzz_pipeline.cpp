@@ -26,7 +26,7 @@ namespace {
 const machine::MachineSetup& shippedSetup() {
   static const machine::MachineSetup setup = [] {
     machine::MachineSetup s = machine::loadMachineSetup(KLUENG_SOURCE_DIR).setup;
-    s.machine.maxBlocks = 20000;     // endless loops end fast
+    s.machine.maxBlocks = 20000;  // endless loops end fast
     s.machine.maxRunTime = 36000.0;
     return s;
   }();

@@ -33,9 +33,10 @@ void scheduleScreenshot(klueng::gui::MainWindow* window, const QString& out, int
       QBuffer png;
       png.open(QIODevice::WriteOnly);
       const bool encoded = shot.save(&png, "PNG");
-      const QString why = encoded ? klueng::gui::writeFileChecked(
-                                        out, std::string_view(png.data().constData(), static_cast<std::size_t>(png.data().size())))
-                                  : QString();
+      const QString why =
+          encoded ? klueng::gui::writeFileChecked(
+                        out, std::string_view(png.data().constData(), static_cast<std::size_t>(png.data().size())))
+                  : QString();
       if (!why.isEmpty()) std::fprintf(stderr, "%s\n", qPrintable(why));
       const bool ok = encoded && why.isEmpty();
       // Where the window lies and the screen's free area, so tests can see it fits (issue 11).

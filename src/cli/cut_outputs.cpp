@@ -32,7 +32,6 @@ std::string jsonDiagnostic(const Diagnostic& d) {
       args, jsonString(formatMessage(d, Lang::En)), jsonString(formatMessage(d, Lang::Th)));
 }
 
-
 }  // namespace
 
 bool parseResolution(const std::string& text, double& out) {
@@ -72,16 +71,17 @@ CutOutcome runCut(const std::string& file, const io::JobHeader& header, const ma
     if (!reportWrite(options.pngPath, writeSectionPng(picture, options.pngPath), options.lang)) outcome.written = false;
   }
 
-  if (!options.profilePath.empty()) outcome.written =
-      writeOutput(options.profilePath, part.toCsv(), options.lang) && outcome.written;
-  if (!options.svgPath.empty()) outcome.written =
-      writeOutput(options.svgPath, part.toSvg(), options.lang) && outcome.written;
-  if (!options.dxfPath.empty()) outcome.written =
-      writeOutput(options.dxfPath, part.toDxf(), options.lang) && outcome.written;
+  if (!options.profilePath.empty())
+    outcome.written = writeOutput(options.profilePath, part.toCsv(), options.lang) && outcome.written;
+  if (!options.svgPath.empty())
+    outcome.written = writeOutput(options.svgPath, part.toSvg(), options.lang) && outcome.written;
+  if (!options.dxfPath.empty())
+    outcome.written = writeOutput(options.dxfPath, part.toDxf(), options.lang) && outcome.written;
   if (options.features) {
     const cut::PartFeatures features = cut::partFeatures(sim.stock());
     for (const auto* list : {&features.outside, &features.inside})
-      for (const cut::PartFeature& f : *list) std::printf("%s\n", cut::describeFeature(f, options.lang, options.units).c_str());
+      for (const cut::PartFeature& f : *list)
+        std::printf("%s\n", cut::describeFeature(f, options.lang, options.units).c_str());
   }
   if (!options.jsonPath.empty()) {
     std::string alarms;
@@ -97,7 +97,8 @@ CutOutcome runCut(const std::string& file, const io::JobHeader& header, const ma
         "  \"completed\": {},\n"
         "  \"alarms\": [{}],\n"
         "  \"tool_errors\": [{}],\n"
-        "  \"stock\": {{\"diameter_mm\": {:.4f}, \"length_mm\": {:.4f}, \"bore_mm\": {:.4f}, \"volume_mm3\": {:.3f}}},\n"
+        "  \"stock\": {{\"diameter_mm\": {:.4f}, \"length_mm\": {:.4f}, \"bore_mm\": {:.4f}, \"volume_mm3\": "
+        "{:.3f}}},\n"
         "  \"removed_volume_mm3\": {:.3f},\n"
         "  \"part\": {{\"volume_mm3\": {:.3f}, \"max_diameter_mm\": {:.4f}, \"length_mm\": {:.4f}, "
         "\"z_min\": {:.4f}, \"z_max\": {:.4f}}},\n"
@@ -105,9 +106,9 @@ CutOutcome runCut(const std::string& file, const io::JobHeader& header, const ma
         "  \"tool_end\": {{\"z\": {:.4f}, \"x\": {:.4f}}}\n"
         "}}\n",
         jsonString(file), sim.endTime(), stop ? "false" : "true", alarms, toolErrors, sim.stock().diameter(),
-        sim.stock().length(), sim.stock().bore(), sim.stock().initialVolume(), sim.removedVolume(), part.volume(), part.maxDiameter(),
-        part.length(), part.leftFaceZ(), part.rightFaceZ(), sim.stock().resolution(), tool.x() + 0.0,
-        2.0 * tool.y() + 0.0);
+        sim.stock().length(), sim.stock().bore(), sim.stock().initialVolume(), sim.removedVolume(), part.volume(),
+        part.maxDiameter(), part.length(), part.leftFaceZ(), part.rightFaceZ(), sim.stock().resolution(),
+        tool.x() + 0.0, 2.0 * tool.y() + 0.0);
     outcome.written = writeOutput(options.jsonPath, json, options.lang) && outcome.written;
   }
   return outcome;

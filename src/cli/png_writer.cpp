@@ -28,8 +28,8 @@ void* openModule(std::string* why) {
       failure = "cannot find the program's own folder: " + ec.message();
       return nullptr;
     }
-    for (const fs::path& candidate : {self.parent_path() / "klueng-png.so",
-                                      self.parent_path() / KLUENG_LIBDIR_FROM_BIN / "klueng-png.so"}) {
+    for (const fs::path& candidate :
+         {self.parent_path() / "klueng-png.so", self.parent_path() / KLUENG_LIBDIR_FROM_BIN / "klueng-png.so"}) {
       if (!fs::exists(candidate, ec)) continue;
       void* h = ::dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL);
       if (!h) failure = std::string("cannot open the picture module: ") + ::dlerror();
@@ -90,7 +90,8 @@ std::optional<core::Diagnostic> writePdf(const char* symbol, const Input& input,
   char* bytes = nullptr;
   std::size_t size = 0;
   char reason[512] = {0};
-  if (!draw(&input, &bytes, &size, reason, sizeof reason)) return failed(reason, std::string("สร้าง PDF ไม่ได้: ") + reason);
+  if (!draw(&input, &bytes, &size, reason, sizeof reason))
+    return failed(reason, std::string("สร้าง PDF ไม่ได้: ") + reason);
   const std::unique_ptr<char, decltype(&std::free)> owned(bytes, &std::free);
   return core::io::writeFileAtomic(path, std::string_view(bytes, size));
 }

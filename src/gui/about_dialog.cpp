@@ -29,12 +29,11 @@ AboutDialog::AboutDialog(QWidget* parent) : QDialog(parent) {
 void AboutDialog::retranslate() {
   setWindowTitle(tr("About Klueng"));
   title_->setText(tr("Klueng %1").arg(QStringLiteral("0.1.0")));
-  body_->setText(
-      tr("<p>A CNC lathe simulator for students and instructors: write a Fanuc-style lathe program, "
-         "see every mistake explained, and watch bitmap tools cut the stock, block by block.</p>"
-         "<p>Klueng descends from the 1999 Thai thesis program “Rook.IE Lathe”.</p>"
-         "<p>Built with Qt %1, Eigen, fmt and libpng.</p>")
-          .arg(QString::fromLatin1(qVersion())));
+  body_->setText(tr("<p>A CNC lathe simulator for students and instructors: write a Fanuc-style lathe program, "
+                    "see every mistake explained, and watch bitmap tools cut the stock, block by block.</p>"
+                    "<p>Klueng descends from the 1999 Thai thesis program “Rook.IE Lathe”.</p>"
+                    "<p>Built with Qt %1, Eigen, fmt and libpng.</p>")
+                     .arg(QString::fromLatin1(qVersion())));
 }
 
 void AboutDialog::changeEvent(QEvent* event) {

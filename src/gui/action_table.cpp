@@ -284,20 +284,13 @@ void ActionTable::retranslate() {
 bool ActionTable::enabledIn(EnabledWhen when, RunState state) {
   const bool running = state == RunState::Running || state == RunState::Stepping || state == RunState::Preparing;
   switch (when) {
-    case EnabledWhen::Always:
-      return true;
-    case EnabledWhen::NotRunning:
-      return !running;
-    case EnabledWhen::CanGo:
-      return !running || state == RunState::Stepping;
-    case EnabledWhen::CanStep:
-      return !running || state == RunState::Running;
-    case EnabledWhen::Running:
-      return running;
-    case EnabledWhen::Started:
-      return state != RunState::Idle;
-    case EnabledWhen::StoppedMidRun:
-      return !running && state != RunState::Idle;
+    case EnabledWhen::Always: return true;
+    case EnabledWhen::NotRunning: return !running;
+    case EnabledWhen::CanGo: return !running || state == RunState::Stepping;
+    case EnabledWhen::CanStep: return !running || state == RunState::Running;
+    case EnabledWhen::Running: return running;
+    case EnabledWhen::Started: return state != RunState::Idle;
+    case EnabledWhen::StoppedMidRun: return !running && state != RunState::Idle;
   }
   return true;
 }

@@ -18,13 +18,13 @@ namespace klueng::gui {
 
 // When an action is enabled, by the run state (the Edit actions follow the editor instead).
 enum class EnabledWhen {
-  Always,           // not gated by the run
-  NotRunning,       // New, Open, the setup dialogs: nothing changes under an animation
-  CanGo,            // idle, paused, finished, or switching a Step into Go
-  CanStep,          // idle, paused, finished, or a Go switching into a Step
-  Running,          // Pause
-  Started,          // Stop: anything but Idle
-  StoppedMidRun,    // Step Back: a run that is not animating and not reset
+  Always,         // not gated by the run
+  NotRunning,     // New, Open, the setup dialogs: nothing changes under an animation
+  CanGo,          // idle, paused, finished, or switching a Step into Go
+  CanStep,        // idle, paused, finished, or a Go switching into a Step
+  Running,        // Pause
+  Started,        // Stop: anything but Idle
+  StoppedMidRun,  // Step Back: a run that is not animating and not reset
 };
 
 class ActionTable : public QObject {

@@ -49,8 +49,10 @@ void DesignTableModel::setDesign(const core::design::PartDesign& design) {
   for (std::size_t k = 0; k < design_.inside.size(); ++k)
     rows_.push_back({design_.inside[k].kind == StepKind::Cylinder ? DesignRowKind::Bore : DesignRowKind::BoreTaper,
                      static_cast<int>(k)});
-  for (std::size_t k = 0; k < design_.grooves.size(); ++k) rows_.push_back({DesignRowKind::Groove, static_cast<int>(k)});
-  for (std::size_t k = 0; k < design_.threads.size(); ++k) rows_.push_back({DesignRowKind::Thread, static_cast<int>(k)});
+  for (std::size_t k = 0; k < design_.grooves.size(); ++k)
+    rows_.push_back({DesignRowKind::Groove, static_cast<int>(k)});
+  for (std::size_t k = 0; k < design_.threads.size(); ++k)
+    rows_.push_back({DesignRowKind::Thread, static_cast<int>(k)});
   endResetModel();
 }
 
@@ -198,7 +200,8 @@ bool DesignTableModel::setData(const QModelIndex& index, const QVariant& value, 
       if (c == Pitch) t.pitch = *v;
     }
   }
-  emit editRequested(after, tr("Edit %1 %2").arg(kindName(row.kind), headerData(c, Qt::Horizontal, Qt::DisplayRole).toString()));
+  emit editRequested(
+      after, tr("Edit %1 %2").arg(kindName(row.kind), headerData(c, Qt::Horizontal, Qt::DisplayRole).toString()));
   return true;
 }
 
@@ -216,7 +219,8 @@ QVariant DesignTableModel::headerData(int section, Qt::Orientation orientation, 
       case Diameter: return tr("Diameter, mm (a taper's or arc's at its left end; a groove's at its bottom)");
       case Length: return tr("Length along Z, mm (a groove's width)");
       case Z: return tr("Z of a groove's right wall or a thread's right end; the steps' Z are worked out");
-      case Edge: return tr("The right-hand corner: C3 is a 45° chamfer of 3 mm, R2 a round of 2 mm; empty for a sharp corner");
+      case Edge:
+        return tr("The right-hand corner: C3 is a 45° chamfer of 3 mm, R2 a round of 2 mm; empty for a sharp corner");
       case Radius: return tr("An arc's radius, mm: positive bulges out of the part, negative is hollow");
       case Pitch: return tr("A thread's pitch, mm (ISO metric)");
       default: return {};

@@ -52,9 +52,9 @@ void DesignPreview::paintEvent(QPaintEvent*) {
     const QRectF band(highlightLeft_, -radius - 4.0, highlightRight_ - highlightLeft_, 2.0 * radius + 8.0);
     p.fillRect(band, QColor(255, 214, 140, 120));
   }
-  const render::StockShape shape = cut_ ? render::stockShapeFromStock(*cut_)
-                                        : render::stockShapeFromBlank(design_.stockDiameter, design_.stockLength,
-                                                                      design_.stockBore);
+  const render::StockShape shape =
+      cut_ ? render::stockShapeFromStock(*cut_)
+           : render::stockShapeFromBlank(design_.stockDiameter, design_.stockLength, design_.stockBore);
   render::paintStock(p, shape, true);
   render::paintCentreLine(p, -shown - 3.0, 6.0);
   // The drawing: blue over the upper half, thin over the lower.
@@ -62,8 +62,10 @@ void DesignPreview::paintEvent(QPaintEvent*) {
     QPainterPath path;
     for (std::size_t k = 0; k < points.size(); ++k) {
       const QPointF at(points[k].x(), -sign * points[k].y());
-      if (k == 0) path.moveTo(at);
-      else path.lineTo(at);
+      if (k == 0)
+        path.moveTo(at);
+      else
+        path.lineTo(at);
     }
     return path;
   };

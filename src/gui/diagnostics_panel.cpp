@@ -45,9 +45,9 @@ QVariant DiagnosticsModel::data(const QModelIndex& index, int role) const {
     }
   }
   if (role == Qt::DecorationRole && index.column() == SeverityColumn)
-    return QIcon(core::isError(d.severity) ? QStringLiteral(":/icons/error.svg")
-                                           : d.severity == core::Severity::Note ? QStringLiteral(":/icons/note.svg")
-                                                                                : QStringLiteral(":/icons/warning.svg"));
+    return QIcon(core::isError(d.severity)            ? QStringLiteral(":/icons/error.svg")
+                 : d.severity == core::Severity::Note ? QStringLiteral(":/icons/note.svg")
+                                                      : QStringLiteral(":/icons/warning.svg"));
   if (role == Qt::ToolTipRole && index.column() == MessageColumn)
     return QString::fromStdString(core::formatMessage(d, lang, core::Surface::Gui));
   if (role == Qt::TextAlignmentRole && (index.column() == LineColumn || index.column() == ColumnColumn))
@@ -116,7 +116,8 @@ int DiagnosticsPanel::warningCount() const {
 void DiagnosticsPanel::retranslateUi() {
   const int errors = errorCount();
   const int warnings = warningCount();
-  if (errors == 0 && warnings == 0) setWindowTitle(tr("Diagnostics: no errors"));
+  if (errors == 0 && warnings == 0)
+    setWindowTitle(tr("Diagnostics: no errors"));
   else {
     // "1 error", never "1 errors" (Thai has one form for both).
     const QString e = errors == 1 ? tr("1 error") : tr("%1 errors").arg(errors);

@@ -13,7 +13,6 @@
 
 namespace klueng::gui {
 
-
 DialectOfferBar::DialectOfferBar(QWidget* parent) : QWidget(parent) {
   setObjectName(QStringLiteral("dialectOffer"));
   label_ = new QLabel(this);

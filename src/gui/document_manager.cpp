@@ -84,9 +84,7 @@ void DocumentManager::restoreRecovery(const RecoveryCopy& copy) {
   startLoad(copy.copyPath, copy.originalPath);
 }
 
-bool DocumentManager::isModified() const {
-  return editor_->document()->isModified() || document_->isHeaderModified();
-}
+bool DocumentManager::isModified() const { return editor_->document()->isModified() || document_->isHeaderModified(); }
 
 bool DocumentManager::maybeSave() {
   if (!isModified()) return true;
@@ -148,8 +146,8 @@ void DocumentManager::open() {
   QString dir = settings_->lastDirectory();
   if (dir.isEmpty() || !QFileInfo(dir).isDir()) dir = QString::fromStdString(core::io::samplesDir());
   if (dir.isEmpty()) dir = QDir::homePath();
-  const QString path = QFileDialog::getOpenFileName(
-      window_, tr("Open program"), dir, tr("Lathe programs (*.txt *.nc *.tap *.cnc *.gc);;All files (*)"));
+  const QString path = QFileDialog::getOpenFileName(window_, tr("Open program"), dir,
+                                                    tr("Lathe programs (*.txt *.nc *.tap *.cnc *.gc);;All files (*)"));
   if (!path.isEmpty()) startLoad(path);
 }
 
@@ -176,7 +174,8 @@ void DocumentManager::startLoad(const QString& path, const QString& detailsFor) 
   // A plain file's stock: its own Job details, else inferred; never the last file's.
   const core::io::JobHeader defaults = settings_->lastJobHeader();
   const std::optional<core::io::JobHeader> details =
-      detailsFor.isEmpty() && restoring_ ? std::nullopt : settings_->jobDetailsFor(detailsFor.isEmpty() ? path : detailsFor);
+      detailsFor.isEmpty() && restoring_ ? std::nullopt
+                                         : settings_->jobDetailsFor(detailsFor.isEmpty() ? path : detailsFor);
   const LoadContext context = context_();
   loadWatcher_.setFuture(QtConcurrent::run([path, defaults, details, context] {
     return Document::load(path, defaults, details, context.setup, context.run);
@@ -243,8 +242,10 @@ void DocumentManager::appendNextChunk() {
   const quint64 generation = fillGeneration_;
   QTimer::singleShot(0, this, [this, generation, done = pendingOffset_ >= size] {
     if (generation != fillGeneration_) return;  // a newer file took over
-    if (done) finishLoad();
-    else appendNextChunk();
+    if (done)
+      finishLoad();
+    else
+      appendNextChunk();
   });
 }
 

@@ -52,16 +52,17 @@ void ExplainBar::refresh() {
   const int k = runner_->markedSnapshot();
   if (state == RunState::Idle || state == RunState::Running || line <= 0 || !t || k < 0 ||
       k >= static_cast<int>(t->snapshots.size()) || t->snapshots[static_cast<std::size_t>(k)].line != line) {
-    const QString text = state == RunState::Idle || state == RunState::Running || line <= 0 ? QString() : explainLine(line);
+    const QString text =
+        state == RunState::Idle || state == RunState::Running || line <= 0 ? QString() : explainLine(line);
     setText(text);
     setVisible(!text.isEmpty());
     return;
   }
   // The arrow's block, with the state it leaves (the whole run is known ahead).
   const QTextBlock b = editor_->document()->findBlockByNumber(editor_->editorLineFromFileLine(line));
-  std::string what = core::machine::explainLineText(b.text().toStdString(), line, &t->snapshots[static_cast<std::size_t>(k)],
-                                                    editor_->dialect(), Language::coreLang(),
-                                                    !runner_->machineSetup().machine.calculatorInput);
+  std::string what = core::machine::explainLineText(
+      b.text().toStdString(), line, &t->snapshots[static_cast<std::size_t>(k)], editor_->dialect(),
+      Language::coreLang(), !runner_->machineSetup().machine.calculatorInput);
   if (what.empty()) {
     hide();
     return;
@@ -71,7 +72,8 @@ void ExplainBar::refresh() {
   const core::machine::StateSnapshot& snap = t->snapshots[static_cast<std::size_t>(k)];
   if (move >= 0 && runner_->currentTime() < snap.time - 1e-9 &&
       t->moves[static_cast<std::size_t>(move)].blockIndex == snap.blockIndex)
-    if (const std::string pass = core::machine::explainPass(*t, move, Language::coreLang()); !pass.empty()) what += "; " + pass;
+    if (const std::string pass = core::machine::explainPass(*t, move, Language::coreLang()); !pass.empty())
+      what += "; " + pass;
   setText(QString::fromStdString(what));
   show();
 }

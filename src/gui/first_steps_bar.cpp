@@ -52,9 +52,10 @@ void FirstStepsBar::changeEvent(QEvent* event) {
 }
 
 void FirstStepsBar::retranslate() {
-  label_->setText(tr("<b>What to do first:</b> 1. open a sample program (sample 01 turns a step shaft); "
-                     "2. press <b>Go</b> (F5) and watch the tool cut the bar; "
-                     "3. click a line of the program to read what it does."));
+  label_->setText(
+      tr("<b>What to do first:</b> 1. open a sample program (sample 01 turns a step shaft); "
+         "2. press <b>Go</b> (F5) and watch the tool cut the bar; "
+         "3. click a line of the program to read what it does."));
   openSample_->setText(tr("Open sample 01"));
   browse_->setText(tr("All samples…"));
 }

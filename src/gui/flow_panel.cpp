@@ -165,7 +165,8 @@ void FlowPanel::showStep(const machine::Timeline* timeline, int snapshot, int pr
       if (f.callLine > 0) {
         QString where = tr("line %1").arg(f.callLine);
         if (f.callFile > 0 && f.callFile < static_cast<int>(files.size()))
-          where = QStringLiteral("%1: %2").arg(QFileInfo(QString::fromStdString(files[static_cast<std::size_t>(f.callFile)])).fileName(), where);
+          where = QStringLiteral("%1: %2").arg(
+              QFileInfo(QString::fromStdString(files[static_cast<std::size_t>(f.callFile)])).fileName(), where);
         item->setText(1, where);
         item->setData(0, Qt::UserRole, f.callFile);
         item->setData(0, Qt::UserRole + 1, f.callLine);

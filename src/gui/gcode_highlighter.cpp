@@ -70,21 +70,14 @@ GcodeHighlighter::Kind GcodeHighlighter::kindOf(QChar letter) {
   const core::gcode::AddressInfo* a = core::gcode::addressInfo(static_cast<char>(upper.unicode()));
   if (!a) return Kind::Other;
   switch (a->kind) {
-    case core::gcode::AddressKind::GCode:
-      return Kind::GCode;
-    case core::gcode::AddressKind::MCode:
-      return Kind::MCode;
-    case core::gcode::AddressKind::Tool:
-      return Kind::Tool;
-    case core::gcode::AddressKind::Axis:
-      return Kind::Axis;
+    case core::gcode::AddressKind::GCode: return Kind::GCode;
+    case core::gcode::AddressKind::MCode: return Kind::MCode;
+    case core::gcode::AddressKind::Tool: return Kind::Tool;
+    case core::gcode::AddressKind::Axis: return Kind::Axis;
     case core::gcode::AddressKind::FeedSpeed:
-    case core::gcode::AddressKind::Parameter:
-      return Kind::FeedSpeed;
-    case core::gcode::AddressKind::Sequence:
-      return Kind::Sequence;
-    case core::gcode::AddressKind::Program:
-      return Kind::Program;
+    case core::gcode::AddressKind::Parameter: return Kind::FeedSpeed;
+    case core::gcode::AddressKind::Sequence: return Kind::Sequence;
+    case core::gcode::AddressKind::Program: return Kind::Program;
   }
   return Kind::Other;
 }
@@ -129,21 +122,11 @@ QList<QTextLayout::FormatRange> GcodeHighlighter::rangesFor(const QString& text,
   for (const core::gcode::DisplayToken& t : core::gcode::displayTokens(line)) {
     Kind kind = Kind::Other;
     switch (t.kind) {
-      case core::gcode::DisplayTokenKind::Comment:
-        kind = Kind::Comment;
-        break;
-      case core::gcode::DisplayTokenKind::Skip:
-        kind = Kind::Skip;
-        break;
-      case core::gcode::DisplayTokenKind::Variable:
-        kind = Kind::Variable;
-        break;
-      case core::gcode::DisplayTokenKind::MacroWord:
-        kind = Kind::Macro;
-        break;
-      case core::gcode::DisplayTokenKind::Address:
-        kind = kindOf(QChar::fromLatin1(t.letter));
-        break;
+      case core::gcode::DisplayTokenKind::Comment: kind = Kind::Comment; break;
+      case core::gcode::DisplayTokenKind::Skip: kind = Kind::Skip; break;
+      case core::gcode::DisplayTokenKind::Variable: kind = Kind::Variable; break;
+      case core::gcode::DisplayTokenKind::MacroWord: kind = Kind::Macro; break;
+      case core::gcode::DisplayTokenKind::Address: kind = kindOf(QChar::fromLatin1(t.letter)); break;
     }
     if (kind != Kind::Other) setFormat(t.start, t.length, format(kind));
   }

@@ -55,8 +55,6 @@ void Language::setLanguage(const QString& requested) {
   emit languageChanged(code_);
 }
 
-core::Lang Language::coreLang() {
-  return instance()->isThai() ? core::Lang::Th : core::Lang::En;
-}
+core::Lang Language::coreLang() { return instance()->isThai() ? core::Lang::Th : core::Lang::En; }
 
 }  // namespace klueng::gui

@@ -40,12 +40,9 @@ namespace {
 // The Dialect menu's action of a machine ("actionDialectHaas", "actionMachine_romi-gl240m").
 QString dialectActionName(core::gcode::Dialect d) {
   switch (d) {
-    case core::gcode::Dialect::Fanuc:
-      return QStringLiteral("actionDialectFanuc");
-    case core::gcode::Dialect::Haas:
-      return QStringLiteral("actionDialectHaas");
-    case core::gcode::Dialect::Classic:
-      return QStringLiteral("actionDialectClassic");
+    case core::gcode::Dialect::Fanuc: return QStringLiteral("actionDialectFanuc");
+    case core::gcode::Dialect::Haas: return QStringLiteral("actionDialectHaas");
+    case core::gcode::Dialect::Classic: return QStringLiteral("actionDialectClassic");
   }
   const std::string_view id = core::gcode::machineProfile(d).id;
   return QStringLiteral("actionMachine_") + QString::fromUtf8(id.data(), static_cast<qsizetype>(id.size()));

@@ -70,7 +70,8 @@ OffsetDefineDialog::OffsetDefineDialog(const QString& configDir, QWidget* parent
   }
   filling_ = false;
   QStringList loadProblems;
-  for (const auto& d : read.diagnostics) loadProblems << QString::fromStdString(core::formatMessage(d, Language::coreLang(), core::Surface::Gui));
+  for (const auto& d : read.diagnostics)
+    loadProblems << QString::fromStdString(core::formatMessage(d, Language::coreLang(), core::Surface::Gui));
   if (!loadProblems.isEmpty()) intro_->setToolTip(loadProblems.join(QLatin1Char('\n')));
 
   connect(table_, &QTableWidget::itemChanged, this, [this] {
@@ -161,7 +162,9 @@ void OffsetDefineDialog::accept() {
   // Never write a file the loader would refuse.
   const auto check = io::parseOffsetTable(text, "offset.cfg");
   if (!check.ok()) {
-    QMessageBox::warning(this, windowTitle(), QString::fromStdString(core::formatMessage(check.diagnostics.front(), Language::coreLang(), core::Surface::Gui)));
+    QMessageBox::warning(this, windowTitle(),
+                         QString::fromStdString(
+                             core::formatMessage(check.diagnostics.front(), Language::coreLang(), core::Surface::Gui)));
     return;
   }
   QString error;
@@ -178,9 +181,10 @@ void OffsetDefineDialog::accept() {
 
 void OffsetDefineDialog::retranslate() {
   setWindowTitle(tr("Offset Define"));
-  intro_->setText(tr("Offsets 01–64: X offset (diameter, mm), Z offset (mm), nose radius R (mm) and the imaginary "
-                     "tool tip number T (0–9). Use offset nn with T..nn, e.g. T0101. Rows 17–64 that stay 0 0 0 0 "
-                     "are not written; a tool chosen from the program fills an empty row with its own R and tip."));
+  intro_->setText(
+      tr("Offsets 01–64: X offset (diameter, mm), Z offset (mm), nose radius R (mm) and the imaginary "
+         "tool tip number T (0–9). Use offset nn with T..nn, e.g. T0101. Rows 17–64 that stay 0 0 0 0 "
+         "are not written; a tool chosen from the program fills an empty row with its own R and tip."));
   table_->setHorizontalHeaderLabels({tr("X (dia.)"), tr("Z"), tr("R"), tr("Tip T"), tr("Tip")});
   // The picture column is as wide as its header ("ปลายมีด" in Thai) with room to spare, never clipped.
   QHeaderView* header = table_->horizontalHeader();

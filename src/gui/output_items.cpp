@@ -24,7 +24,7 @@ QRectF segmentRect(const core::Segment& s) {
 StockItem::StockItem() { setZValue(0); }
 
 void StockItem::setShape(const render::StockShape& shape) {
-  const QRectF b = shape.boundingRect().adjusted(-12, -1, 12, 1);   // + the centre line overhang
+  const QRectF b = shape.boundingRect().adjusted(-12, -1, 12, 1);  // + the centre line overhang
   if (b != bounds_) {
     prepareGeometryChange();
     bounds_ = b;
@@ -37,7 +37,9 @@ void StockItem::updateRegion(const QRectF& upperRect) {
   update(mirrored(upperRect));
 }
 
-void StockItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*) { render::paintStock(*painter, shape_); }
+void StockItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*) {
+  render::paintStock(*painter, shape_);
+}
 
 // ---------------------------------------------------------------- ChuckItem
 
@@ -48,7 +50,9 @@ void ChuckItem::setChuck(const core::cut::Chuck& chuck) {
 
 QRectF ChuckItem::boundingRect() const { return render::chuckRect(chuck_).adjusted(-1, -1, 1, 1); }
 
-void ChuckItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*) { render::paintChuck(*painter, chuck_); }
+void ChuckItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*) {
+  render::paintChuck(*painter, chuck_);
+}
 
 // ---------------------------------------------------------------- ToolItem
 
@@ -64,7 +68,9 @@ QRectF ToolItem::boundingRect() const {
   return sprite_.isNull() ? QRectF() : sprite_.sceneRect(QPointF(0, 0)).adjusted(-0.5, -0.5, 0.5, 0.5);
 }
 
-void ToolItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*) { sprite_.paint(*painter, QPointF(0, 0)); }
+void ToolItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*) {
+  sprite_.paint(*painter, QPointF(0, 0));
+}
 
 // ---------------------------------------------------------------- MarkerItem
 

@@ -26,8 +26,8 @@ class OutputRuler : public QWidget {
 
  private:
   struct Tick {
-    double pos;   // pixels along the ruler
-    double value; // Z or diameter X, in units_
+    double pos;    // pixels along the ruler
+    double value;  // Z or diameter X, in units_
     bool major;
   };
   std::vector<Tick> ticks() const;

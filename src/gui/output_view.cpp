@@ -16,7 +16,7 @@
 namespace klueng::gui {
 
 namespace {
-constexpr int kTrailChunk = 4096;        // moves per completed trail item
+constexpr int kTrailChunk = 4096;  // moves per completed trail item
 constexpr double kMinPixelsPerMm = 0.05;
 constexpr double kMaxPixelsPerMm = 400.0;
 constexpr double kSceneMargin = 5000.0;  // mm of room to pan around the content
@@ -137,11 +137,12 @@ void OutputView::rebuild() {
     header = controller_->jobHeader();
     machineCfg = controller_->machineSetup().machine;
   }
-  stock_->setShape(controller_ ? controller_->stockShape() : render::stockShapeFromBlank(header.diameterMm(), header.lengthMm(), header.boreMm()));
+  stock_->setShape(controller_ ? controller_->stockShape()
+                               : render::stockShapeFromBlank(header.diameterMm(), header.lengthMm(), header.boreMm()));
   const auto* sim = controller_ && !controller_->isBusy() ? controller_->cutSimulator() : nullptr;
   chuck_->setChuck(sim ? sim->chuck()
-                       : render::chuckFor(header.diameterMm(), header.lengthMm(), machineCfg.chuckGrip, machineCfg.chuckJawHeight,
-                                        machineCfg.spindleBore));
+                       : render::chuckFor(header.diameterMm(), header.lengthMm(), machineCfg.chuckGrip,
+                                          machineCfg.chuckJawHeight, machineCfg.spindleBore));
   if (const auto* tl = controller_ ? controller_->timeline() : nullptr) {
     for (const auto& m : tl->moves)
       if (m.kind != core::machine::MoveKind::Dwell) {
@@ -169,7 +170,7 @@ void OutputView::rebuild() {
 void OutputView::appendTrail(double time) {
   const auto* tl = controller_->timeline();
   if (!tl) return;
-  if (time < trailTime_ - 1e-12) clearTrail();   // stepped back: draw the trail again
+  if (time < trailTime_ - 1e-12) clearTrail();  // stepped back: draw the trail again
   trailTime_ = time;
   const auto& moves = tl->moves;
   const QRectF bounds = pathBounds_.adjusted(-1, -1, 1, 1);
@@ -180,7 +181,8 @@ void OutputView::appendTrail(double time) {
     ++pending;
   const bool bulk = pending > 64;
   std::size_t firstTouched = trail_.empty() ? 0 : trail_.size() - 1;
-  while (trailMoves_ < static_cast<int>(moves.size()) && moves[static_cast<std::size_t>(trailMoves_)].tEnd <= time + 1e-12) {
+  while (trailMoves_ < static_cast<int>(moves.size()) &&
+         moves[static_cast<std::size_t>(trailMoves_)].tEnd <= time + 1e-12) {
     if (trail_.empty() || trail_.back()->moveCount() >= kTrailChunk) {
       auto* item = new TrailItem(bounds);
       item->setZValue(2);
@@ -230,7 +232,8 @@ void OutputView::updateFrame() {
   }
   if (!controller_->isBusy()) {
     const core::cut::ToolShape* shapePtr = controller_->currentToolShape();
-    if (shapePtr != tool_->identity()) tool_->setSprite(shapePtr ? render::ToolSprite::fromShape(*shapePtr) : render::ToolSprite(), shapePtr);
+    if (shapePtr != tool_->identity())
+      tool_->setSprite(shapePtr ? render::ToolSprite::fromShape(*shapePtr) : render::ToolSprite(), shapePtr);
   }
   tool_->setPos(toolPos);
   marker_->setPos(toolPos);

@@ -127,8 +127,8 @@ class OutputView : public QGraphicsView {
   bool measuring_ = false;
   core::UnitFormat units_;
   std::optional<QPointF> measureA_, measureB_;
-  std::vector<TrailItem*> trail_;   // completed chunks, then the live one
-  int trailMoves_ = 0;              // timeline moves already in the trail
+  std::vector<TrailItem*> trail_;  // completed chunks, then the live one
+  int trailMoves_ = 0;             // timeline moves already in the trail
   double trailTime_ = 0.0;
   QRectF pathBounds_;
   QRectF cutBounds_;  // feed moves only: what fit-to-view frames

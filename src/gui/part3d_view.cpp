@@ -18,10 +18,11 @@ using core::Vec2;
 // The tool's shapes in work units (z, radius) at its controlled point.
 void toolPolygons(const core::cut::ToolShape& tool, const Vec2& at, render::Scene3D& scene) {
   for (const core::cut::Trapezoid& t : tool.cutting)
-    scene.toolCutting.push_back({at + Vec2(t.z0, t.bottom0), at + Vec2(t.z1, t.bottom1), at + Vec2(t.z1, t.top1),
-                                 at + Vec2(t.z0, t.top0)});
+    scene.toolCutting.push_back(
+        {at + Vec2(t.z0, t.bottom0), at + Vec2(t.z1, t.bottom1), at + Vec2(t.z1, t.top1), at + Vec2(t.z0, t.top0)});
   for (const core::cut::Box& b : tool.holder)
-    scene.toolHolder.push_back({at + Vec2(b.z0, b.x0), at + Vec2(b.z1, b.x0), at + Vec2(b.z1, b.x1), at + Vec2(b.z0, b.x1)});
+    scene.toolHolder.push_back(
+        {at + Vec2(b.z0, b.x0), at + Vec2(b.z1, b.x0), at + Vec2(b.z1, b.x1), at + Vec2(b.z0, b.x1)});
   if (tool.noseRadius > 0.0) {
     std::vector<Vec2> nose;
     for (int k = 0; k < 16; ++k) {
@@ -71,7 +72,8 @@ void Part3DWidget::paintEvent(QPaintEvent*) {
     const core::io::JobHeader& h = controller_->jobHeader();
     const double key = h.diameterMm() * 1e6 + h.lengthMm() + h.boreMm() * 1e-3;
     if (h.diameterMm() > 0.0 && h.lengthMm() > 0.0 && key != blankKey_) {
-      blank_ = std::make_unique<core::cut::Stock>(h.diameterMm(), h.lengthMm(), core::cut::kDefaultResolution, h.boreMm());
+      blank_ =
+          std::make_unique<core::cut::Stock>(h.diameterMm(), h.lengthMm(), core::cut::kDefaultResolution, h.boreMm());
       blankKey_ = key;
     }
     scene.stock = blank_.get();

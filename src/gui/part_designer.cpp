@@ -51,8 +51,9 @@ class DesignCommand : public QUndoCommand {
   std::function<void(const PartDesign&)> apply_;
 };
 
-QString message(const core::Diagnostic& d) { return QString::fromStdString(core::formatMessage(d, Language::coreLang(), core::Surface::Gui)); }
-
+QString message(const core::Diagnostic& d) {
+  return QString::fromStdString(core::formatMessage(d, Language::coreLang(), core::Surface::Gui));
+}
 
 // What a new part looks like before anything is drawn: a plain bar turned down 5 mm over half its length.
 PartDesign starter(const core::io::JobHeader& job) {
@@ -199,7 +200,8 @@ void PartDesignerDialog::showLoop() {
   first->setForeground(loop_ && loop_->matches() ? QColor(0, 120, 40) : QColor(170, 30, 30));
   if (loop_) {
     for (const auto* list : {&loop_->refused, &loop_->problems, &loop_->findings})
-      for (const core::Diagnostic& d : *list) new QListWidgetItem(QStringLiteral("%1  %2").arg(QString::fromStdString(d.code), message(d)), findings_);
+      for (const core::Diagnostic& d : *list)
+        new QListWidgetItem(QStringLiteral("%1  %2").arg(QString::fromStdString(d.code), message(d)), findings_);
   }
   createButton_->setEnabled(loop_ && loop_->program.has_value());
   preview_->show(design(), cut_);
@@ -244,14 +246,15 @@ void PartDesignerDialog::addRow(int kind) {
     case DesignRowKind::BoreTaper: {
       const double hole = d.stockBore > 0.0 ? d.stockBore : 10.0;
       const double last = d.inside.empty() ? hole + 6.0 : std::max(hole, d.inside.back().diameter - 2.0);
-      d.inside.push_back({k == DesignRowKind::Bore ? core::design::StepKind::Cylinder : core::design::StepKind::Taper,
-                          last, 10.0});
+      d.inside.push_back(
+          {k == DesignRowKind::Bore ? core::design::StepKind::Cylinder : core::design::StepKind::Taper, last, 10.0});
       index = static_cast<int>(d.inside.size()) - 1;
       break;
     }
     case DesignRowKind::Groove: {
       const double z = d.outside.empty() ? -10.0 : -std::min(d.outside[0].length - 4.0, 10.0);
-      d.grooves.push_back({std::min(0.0, z), 3.0, std::max(1.0, (d.outside.empty() ? bar : d.outside[0].diameter) - 4.0)});
+      d.grooves.push_back(
+          {std::min(0.0, z), 3.0, std::max(1.0, (d.outside.empty() ? bar : d.outside[0].diameter) - 4.0)});
       index = static_cast<int>(d.grooves.size()) - 1;
       break;
     }
@@ -271,10 +274,14 @@ void PartDesignerDialog::removeRow() {
   const DesignRow row = model_->rowAt(at.row());
   PartDesign d = design();
   const auto drop = [&](auto& list) { list.erase(list.begin() + row.index); };
-  if (row.outsideStep()) drop(d.outside);
-  else if (row.boreStep()) drop(d.inside);
-  else if (row.kind == DesignRowKind::Groove) drop(d.grooves);
-  else drop(d.threads);
+  if (row.outsideStep())
+    drop(d.outside);
+  else if (row.boreStep())
+    drop(d.inside);
+  else if (row.kind == DesignRowKind::Groove)
+    drop(d.grooves);
+  else
+    drop(d.threads);
   setDesign(d, tr("Remove %1").arg(DesignTableModel::kindName(row.kind)));
 }
 
@@ -289,10 +296,10 @@ void PartDesignerDialog::moveRow(int by) {
     std::swap(list[static_cast<std::size_t>(row.index)], list[static_cast<std::size_t>(to)]);
     return true;
   };
-  const bool moved = row.outsideStep() ? swap(d.outside)
-                     : row.boreStep()  ? swap(d.inside)
+  const bool moved = row.outsideStep()                   ? swap(d.outside)
+                     : row.boreStep()                    ? swap(d.inside)
                      : row.kind == DesignRowKind::Groove ? swap(d.grooves)
-                                                          : swap(d.threads);
+                                                         : swap(d.threads);
   if (!moved) return;
   setDesign(d, by < 0 ? tr("Move up") : tr("Move down"));
   table_->setCurrentIndex(model_->index(at.row() + by, at.column()));
@@ -316,8 +323,8 @@ bool PartDesignerDialog::openFile(const QString& path, const QString& layer) {
       QStringList names;
       for (const std::string& l : layers) names << QString::fromStdString(l);
       bool ok = false;
-      const QString picked = QInputDialog::getItem(this, tr("Import DXF"), tr("The layer of the part's outline:"), names, 0,
-                                                   false, &ok);
+      const QString picked =
+          QInputDialog::getItem(this, tr("Import DXF"), tr("The layer of the part's outline:"), names, 0, false, &ok);
       if (!ok) return false;
       o.layer = picked.toStdString();
     }
@@ -338,7 +345,8 @@ bool PartDesignerDialog::openFile(const QString& path, const QString& layer) {
   fileStock_[1] = got.stockLength;
   fileStock_[2] = got.stockBore;
   const bool sameBar = std::abs(got.stockDiameter - job_.diameterMm()) < 1e-6 &&
-                       std::abs(got.stockLength - job_.lengthMm()) < 1e-6 && std::abs(got.stockBore - job_.boreMm()) < 1e-6;
+                       std::abs(got.stockLength - job_.lengthMm()) < 1e-6 &&
+                       std::abs(got.stockBore - job_.boreMm()) < 1e-6;
   fileBar_->setVisible(!sameBar);
   useFileBar_->setVisible(!sameBar);
   if (!sameBar) {
@@ -346,8 +354,8 @@ bool PartDesignerDialog::openFile(const QString& path, const QString& layer) {
     fileJob.diameter = got.stockDiameter;
     fileJob.length = got.stockLength;
     fileJob.bore = got.stockBore;
-    fileBar_->setText(tr("%1 is drawn for a bar %2.").arg(QString::fromStdString(name),
-                                                          QString::fromStdString(core::io::stockSizeText(fileJob))));
+    fileBar_->setText(tr("%1 is drawn for a bar %2.")
+                          .arg(QString::fromStdString(name), QString::fromStdString(core::io::stockSizeText(fileJob))));
   }
   if (material_->findData(QString::fromStdString(got.material)) >= 0)
     material_->setCurrentIndex(material_->findData(QString::fromStdString(got.material)));
@@ -376,7 +384,8 @@ void PartDesignerDialog::openDialog() {
 }
 
 void PartDesignerDialog::saveDialog() {
-  QString path = QFileDialog::getSaveFileName(this, tr("Save the part"), QString::fromStdString(design().name) + QStringLiteral(".json"),
+  QString path = QFileDialog::getSaveFileName(this, tr("Save the part"),
+                                              QString::fromStdString(design().name) + QStringLiteral(".json"),
                                               tr("Part files (*.json)"));
   if (path.isEmpty()) return;
   if (!path.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive)) path += QStringLiteral(".json");

@@ -95,8 +95,7 @@ void MeasureItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWid
   pen.setCosmetic(true);
   painter->setPen(pen);
   const double px = 1.0 / std::max(1e-6, painter->worldTransform().m11());
-  for (const QPointF& p : {a_, b_.value_or(a_)})
-    painter->drawEllipse(p, 3.0 * px, 3.0 * px);
+  for (const QPointF& p : {a_, b_.value_or(a_)}) painter->drawEllipse(p, 3.0 * px, 3.0 * px);
   if (b_) painter->drawLine(a_, *b_);
   painter->restore();
 }

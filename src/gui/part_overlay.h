@@ -24,8 +24,8 @@ struct PartOverlay {
     QColor colour;
   };
   std::vector<Band> bands;
-  QPainterPath otherOutline;           // upper half, scene units (comparison)
-  QPainterPath highlight;              // upper half, scene units (selected feature)
+  QPainterPath otherOutline;  // upper half, scene units (comparison)
+  QPainterPath highlight;     // upper half, scene units (selected feature)
   bool empty() const { return bands.empty() && otherOutline.isEmpty() && highlight.isEmpty(); }
 };
 

@@ -68,7 +68,7 @@ class PartPanel : public QDockWidget {
   QTreeWidgetItem* features_ = nullptr;
   QTreeWidgetItem* defects_ = nullptr;
   QTreeWidgetItem* differences_ = nullptr;
-  PartOverlay base_;  // defects and the comparison's outline; a selection adds its highlight
+  PartOverlay base_;                       // defects and the comparison's outline; a selection adds its highlight
   std::function<QString()> summaryMaker_;  // the summary line in the current language
   core::UnitFormat units_;
 };

@@ -89,8 +89,10 @@ LockState lockState(const QString& path) {
   const int fd = ::open(native.constData(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) return LockState::Missing;
   LockState state = LockState::Free;
-  if (::flock(fd, LOCK_EX | LOCK_NB) == 0) ::flock(fd, LOCK_UN);
-  else state = errno == EWOULDBLOCK ? LockState::Held : LockState::Missing;
+  if (::flock(fd, LOCK_EX | LOCK_NB) == 0)
+    ::flock(fd, LOCK_UN);
+  else
+    state = errno == EWOULDBLOCK ? LockState::Held : LockState::Missing;
   ::close(fd);
   return state;
 }
@@ -125,7 +127,8 @@ QString reasonOf(int err, const QString& folder) {
     case EEXIST: {
       // Name the file in the way: the deepest existing part of the path.
       QString part = QDir::cleanPath(folder);
-      while (!part.isEmpty() && !QFileInfo::exists(part) && part != QFileInfo(part).path()) part = QFileInfo(part).path();
+      while (!part.isEmpty() && !QFileInfo::exists(part) && part != QFileInfo(part).path())
+        part = QFileInfo(part).path();
       if (QFileInfo(part).exists() && !QFileInfo(part).isDir()) return tr("%1 is a file, not a folder").arg(part);
       break;
     }
@@ -261,7 +264,8 @@ bool Recovery::write(const QString& id, const std::string& contents, const QStri
   note.setValue(QStringLiteral("pid"), static_cast<qint64>(::getpid()));
   note.sync();
   if (note.status() != QSettings::NoError) {
-    if (error) *error = tr("cannot write %1: the folder cannot be written to, or the disk is full").arg(noteOf(folder_, id));
+    if (error)
+      *error = tr("cannot write %1: the folder cannot be written to, or the disk is full").arg(noteOf(folder_, id));
     return false;
   }
   return true;
@@ -287,7 +291,7 @@ QVector<RecoveryCopy> Recovery::orphans() const {
     c.written = note.value(QStringLiteral("written")).toDateTime();
     c.pid = note.value(QStringLiteral("pid")).toLongLong();
     const LockState lock = lockState(lockOf(folder_, c.id));
-    if (lock == LockState::Held) continue;  // a running Klueng's live copy
+    if (lock == LockState::Held) continue;                              // a running Klueng's live copy
     if (lock == LockState::Missing && processRunning(c.pid)) continue;  // an older copy: its process id
     out.push_back(c);
   }
@@ -298,8 +302,7 @@ QVector<RecoveryCopy> Recovery::orphans() const {
 RecoveryDifference Recovery::difference(const RecoveryCopy& copy) {
   RecoveryDifference d;
   d.copyLines = linesOf(copy.copyPath).value_or(QStringList());
-  const std::optional<QStringList> file =
-      copy.originalPath.isEmpty() ? std::nullopt : linesOf(copy.originalPath);
+  const std::optional<QStringList> file = copy.originalPath.isEmpty() ? std::nullopt : linesOf(copy.originalPath);
   if (!file) {
     d.fileMissing = true;
     d.linesDiffering = static_cast<int>(d.copyLines.size());

@@ -26,7 +26,7 @@ struct RecoveryCopy {
   QString originalPath;  // where it belongs; empty for an untitled program
   QString displayName;   // "01-step-shaft.txt", "untitled.txt"
   QDateTime written;
-  qint64 pid = 0;        // the Klueng process that wrote it
+  qint64 pid = 0;  // the Klueng process that wrote it
 };
 
 // One run of lines that differ between the file on disk and the copy (a line
@@ -42,8 +42,8 @@ struct RecoveryDifference {
   // Lines that differ: per hunk the larger of the lines removed and the lines
   // added, so one inserted, deleted or changed line is 1.
   int linesDiffering = 0;
-  int firstLine = 0;        // line (1-based, header included) of the first difference (0 = none)
-  bool fileMissing = false; // the original is gone (or the program was untitled)
+  int firstLine = 0;         // line (1-based, header included) of the first difference (0 = none)
+  bool fileMissing = false;  // the original is gone (or the program was untitled)
   QVector<RecoveryHunk> hunks;
   QStringList fileLines, copyLines;  // the texts compared, one entry per line
 };
@@ -63,8 +63,8 @@ class Recovery {
 
   // Writes (atomically) the copy of window `id`, holding its lock from the first
   // write on; false with `error` (what failed and why, in the UI language) on failure.
-  bool write(const QString& id, const std::string& contents, const QString& originalPath,
-             const QString& displayName, QString* error = nullptr) const;
+  bool write(const QString& id, const std::string& contents, const QString& originalPath, const QString& displayName,
+             QString* error = nullptr) const;
   // Removes the copy, its note and its lock (this window's or a dead one's).
   void remove(const QString& id) const;
   // Copies whose Klueng is not running any more, newest first.

@@ -8,7 +8,6 @@
 #include <QMessageBox>
 #include <QPushButton>
 
-
 namespace klueng::gui {
 
 RecoveryBar::RecoveryBar(QWidget* parent) : QWidget(parent) {
@@ -117,11 +116,15 @@ void RecoveryBar::retranslate() {
   const RecoveryDifference d = Recovery::difference(c);
   const QString when = QLocale().toString(c.written, QLocale::ShortFormat);
   QString what;
-  if (d.fileMissing) what = tr("%n line(s) of unsaved work", nullptr, d.linesDiffering);
-  else if (d.linesDiffering == 0) what = tr("the same as the file on disk");
-  else what = tr("%n line(s) differ from the file, the first at line %1", nullptr, d.linesDiffering).arg(d.firstLine);
+  if (d.fileMissing)
+    what = tr("%n line(s) of unsaved work", nullptr, d.linesDiffering);
+  else if (d.linesDiffering == 0)
+    what = tr("the same as the file on disk");
+  else
+    what = tr("%n line(s) differ from the file, the first at line %1", nullptr, d.linesDiffering).arg(d.firstLine);
   QString text = tr("Klueng closed without saving \"%1\" (edited %2): %3.").arg(c.displayName, when, what);
-  if (copies_.size() > 1) text += QLatin1Char(' ') + tr("%n more after this one.", nullptr, static_cast<int>(copies_.size() - 1));
+  if (copies_.size() > 1)
+    text += QLatin1Char(' ') + tr("%n more after this one.", nullptr, static_cast<int>(copies_.size() - 1));
   label_->setText(text);
 }
 

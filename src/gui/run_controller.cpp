@@ -31,20 +31,13 @@ constexpr double kMaxFrameSeconds = 0.1;  // a stalled frame never jumps further
 
 QString runStateName(RunState s) {
   switch (s) {
-    case RunState::Idle:
-      return QStringLiteral("Idle");
-    case RunState::Preparing:
-      return QStringLiteral("Preparing");
-    case RunState::Running:
-      return QStringLiteral("Running");
-    case RunState::Stepping:
-      return QStringLiteral("Stepping");
-    case RunState::Paused:
-      return QStringLiteral("Paused");
-    case RunState::Finished:
-      return QStringLiteral("Finished");
-    case RunState::Alarm:
-      return QStringLiteral("Alarm");
+    case RunState::Idle: return QStringLiteral("Idle");
+    case RunState::Preparing: return QStringLiteral("Preparing");
+    case RunState::Running: return QStringLiteral("Running");
+    case RunState::Stepping: return QStringLiteral("Stepping");
+    case RunState::Paused: return QStringLiteral("Paused");
+    case RunState::Finished: return QStringLiteral("Finished");
+    case RunState::Alarm: return QStringLiteral("Alarm");
   }
   return {};
 }

@@ -11,7 +11,8 @@
 namespace klueng::gui {
 
 const std::vector<double>& RunSpeedControl::steps() {
-  static const std::vector<double> s{0.1, 0.25, 0.5, 1.0, 2.0, 5.0, 10.0, 25.0, 100.0, RunController::kAsFastAsPossible};
+  static const std::vector<double> s{0.1, 0.25, 0.5,  1.0,   2.0,
+                                     5.0, 10.0, 25.0, 100.0, RunController::kAsFastAsPossible};
   return s;
 }
 
@@ -53,8 +54,9 @@ void RunSpeedControl::setSpeed(double factor) {
       best = i;
       break;
     }
-    if (s != RunController::kAsFastAsPossible && std::abs(std::log(s / std::max(factor, 1e-6))) <
-                                                     std::abs(std::log(steps()[static_cast<std::size_t>(best)] / std::max(factor, 1e-6))))
+    if (s != RunController::kAsFastAsPossible &&
+        std::abs(std::log(s / std::max(factor, 1e-6))) <
+            std::abs(std::log(steps()[static_cast<std::size_t>(best)] / std::max(factor, 1e-6))))
       best = i;
   }
   slider_->setValue(best);
@@ -64,8 +66,9 @@ void RunSpeedControl::retranslate() {
   caption_->setText(tr("Speed"));
   const double s = speed();
   value_->setText(s == RunController::kAsFastAsPossible ? tr("fastest") : tr("%1×").arg(s));
-  const QString tip = tr("Animation speed: 1× is real machine time; slower is slow motion; "
-                         "\"fastest\" cuts to the next stop at once");
+  const QString tip =
+      tr("Animation speed: 1× is real machine time; slower is slow motion; "
+         "\"fastest\" cuts to the next stop at once");
   slider_->setToolTip(tip);
   value_->setToolTip(tip);
 }

@@ -27,10 +27,10 @@ core::io::JobHeader readJob(QSettings& s, core::io::JobHeader h) {
   if (dia > 0) h.diameter = dia;
   if (len > 0) h.length = len;
   h.bore = bore > 0 && bore < h.diameter ? bore : 0.0;
-  h.diameterUnit = s.value(key("diameterInch"), false).toBool() ? core::io::LengthUnit::Inch
-                                                                : core::io::LengthUnit::Millimetre;
-  h.lengthUnit = s.value(key("lengthInch"), false).toBool() ? core::io::LengthUnit::Inch
-                                                            : core::io::LengthUnit::Millimetre;
+  h.diameterUnit =
+      s.value(key("diameterInch"), false).toBool() ? core::io::LengthUnit::Inch : core::io::LengthUnit::Millimetre;
+  h.lengthUnit =
+      s.value(key("lengthInch"), false).toBool() ? core::io::LengthUnit::Inch : core::io::LengthUnit::Millimetre;
   return h;
 }
 
@@ -74,7 +74,7 @@ std::optional<core::gcode::InputUnits> Settings::powerOnUnits() const {
   return std::nullopt;
 }
 void Settings::setPowerOnUnits(std::optional<core::gcode::InputUnits> units) {
-  settings_.setValue(key("gcode/units"), !units                                      ? QStringLiteral("machine")
+  settings_.setValue(key("gcode/units"), !units                                    ? QStringLiteral("machine")
                                          : *units == core::gcode::InputUnits::Inch ? QStringLiteral("inch")
                                                                                    : QStringLiteral("mm"));
 }
@@ -86,7 +86,7 @@ std::optional<core::DisplayUnits> Settings::shownUnits() const {
   return std::nullopt;
 }
 void Settings::setShownUnits(std::optional<core::DisplayUnits> units) {
-  settings_.setValue(key("view/units"), !units                                 ? QStringLiteral("auto")
+  settings_.setValue(key("view/units"), !units                               ? QStringLiteral("auto")
                                         : *units == core::DisplayUnits::Inch ? QStringLiteral("inch")
                                                                              : QStringLiteral("mm"));
 }
@@ -151,7 +151,8 @@ void Settings::setJobDetailsFor(const QString& path, const core::io::JobHeader& 
   settings_.setValue(key("path"), QFileInfo(path).absoluteFilePath());
   writeJob(settings_, h);
   if (h.calculatorInput)
-    settings_.setValue(key("decimalPoint"), *h.calculatorInput ? QStringLiteral("whole") : QStringLiteral("increments"));
+    settings_.setValue(key("decimalPoint"),
+                       *h.calculatorInput ? QStringLiteral("whole") : QStringLiteral("increments"));
   else
     settings_.remove(key("decimalPoint"));
   if (h.toolsBeyondCentre)

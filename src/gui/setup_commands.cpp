@@ -52,7 +52,8 @@ void SetupFilesCommand::restore(const SetupSnapshot& snapshot) {
     const QString path = QDir(dir_).filePath(name);
     if (!contents) {
       if (QFile::exists(path) && !QFile::remove(path)) error = path;
-    } else if (const QString why = writeFileChecked(path, std::string_view(contents->constData(), static_cast<std::size_t>(contents->size())));
+    } else if (const QString why = writeFileChecked(
+                   path, std::string_view(contents->constData(), static_cast<std::size_t>(contents->size())));
                !why.isEmpty()) {
       error = why;  // names the path, in the UI language
     }

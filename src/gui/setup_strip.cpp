@@ -59,7 +59,9 @@ void SetupLine::elide() {
 
 namespace {
 
-QString note(const core::Diagnostic& d) { return QString::fromStdString(core::formatMessage(d, Language::coreLang(), core::Surface::Gui)); }
+QString note(const core::Diagnostic& d) {
+  return QString::fromStdString(core::formatMessage(d, Language::coreLang(), core::Surface::Gui));
+}
 
 // A library tool's name in the UI language; the id when the library has no such tool.
 QString libraryName(const std::string& id) {
@@ -71,7 +73,8 @@ QString libraryName(const std::string& id) {
 // "T02 = grooving-3mm (grooving cycle G75 on line 16)" -> "grooving cycle G75 on line 16":
 // the line already names the station and the tool; the whole note is in the tooltip.
 QString reasonOf(const QString& text, int station, const std::string& id) {
-  const QString prefix = QStringLiteral("T%1 = %2 (").arg(station, 2, 10, QLatin1Char('0')).arg(QString::fromStdString(id));
+  const QString prefix =
+      QStringLiteral("T%1 = %2 (").arg(station, 2, 10, QLatin1Char('0')).arg(QString::fromStdString(id));
   if (text.startsWith(prefix) && text.endsWith(QLatin1Char(')')))
     return text.mid(prefix.size(), text.size() - prefix.size() - 1);
   return text;
@@ -179,8 +182,9 @@ QString SetupStrip::pointReadingText(QString* tip) const {
                       "(X30 = 0.030 mm)");
   } else if (!whole) {
     // Whole units are the usual school setting: only the other one is worth a line.
-    text = tr("Lengths without a decimal point: least input increments, as the machine is set (machine.cfg; "
-              "X30 = 0.030 mm)");
+    text =
+        tr("Lengths without a decimal point: least input increments, as the machine is set (machine.cfg; "
+           "X30 = 0.030 mm)");
   }
   if (tip) {
     QString first = decided ? note(*decided) : QString();
@@ -229,7 +233,7 @@ void SetupStrip::retranslateUi() {
     toolGuessed = true;
     const QString entry = QString::fromStdString(tools.bitmap[static_cast<std::size_t>(station - 1)]);
     const QString prefix = QString::fromLatin1(core::io::kLibraryPrefix.data(), int(core::io::kLibraryPrefix.size()));
-    const QString name = entry.isEmpty() ? tr("no tool")
+    const QString name = entry.isEmpty()            ? tr("no tool")
                          : entry.startsWith(prefix) ? libraryName(entry.mid(prefix.size()).trimmed().toStdString())
                                                     : QFileInfo(entry).fileName();
     items.push_back({station,
@@ -282,8 +286,9 @@ void SetupStrip::retranslateUi() {
         side = tr("Tools beyond the centre line, drawn mirrored: %1").arg(note(d));
   }
   side_->setFullText(side);
-  side_->setToolTip(side.isEmpty() ? QString() : side + QLatin1Char('\n') +
-                                                     tr("Click to change the tool side for this file (Job details)."));
+  side_->setToolTip(side.isEmpty()
+                        ? QString()
+                        : side + QLatin1Char('\n') + tr("Click to change the tool side for this file (Job details)."));
   side_->setVisible(!side.isEmpty());
 
   // Lengths without a decimal point: said when the program's numbers decided it or the reading is not the usual.

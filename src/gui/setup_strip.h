@@ -11,13 +11,11 @@
 // in the UI language.
 //
 // Public API
-//   showSetup(stockNotes, stockGuessed, plainGcode, inference, points)  what to show (kept; re-read on a language change)
-//   stockText()          the stock line as shown in full (first note, capitalised)
-//   stations()           the stations listed, in order
-//   stationText(n)       station n's line in full ("T02  Grooving tool, 3 mm — grooving cycle G75 on line 16")
-//   titleText()          the "guessed from the program" title ("" when hidden)
-//   sideText()           the beyond-the-centre line ("" when hidden)
-//   pointText()          the decimal-point reading line ("" when hidden)
+//   showSetup(stockNotes, stockGuessed, plainGcode, inference, points)  what to show (kept; re-read on a language
+//   change) stockText()          the stock line as shown in full (first note, capitalised) stations()           the
+//   stations listed, in order stationText(n)       station n's line in full ("T02  Grooving tool, 3 mm — grooving cycle
+//   G75 on line 16") titleText()          the "guessed from the program" title ("" when hidden) sideText() the
+//   beyond-the-centre line ("" when hidden) pointText()          the decimal-point reading line ("" when hidden)
 //   stationLine(n)       the clickable line of station n (tests)
 // Signals: stockActivated(), stationActivated(station), pointReadingActivated(), toolSideActivated()
 #include <QFrame>

@@ -27,7 +27,7 @@ class StatusFields : public QWidget {
  public:
   enum class Field { ToolX, ToolZ, Feed, Spindle, OffsetX, OffsetZ, NoseRadius, Tip, Tool, Time, Date, Count };
   explicit StatusFields(QWidget* parent = nullptr);
-  QString fieldText(Field f) const;   // the value part, e.g. "45.000"
+  QString fieldText(Field f) const;  // the value part, e.g. "45.000"
   // Today's date as shown ("22 พฤศจิกายน พ.ศ. 2569" / "November 22, 2026").
   static QString formatDate(const QDate& date, bool thai);
   // The same, short, as the status bar shows it ("26 พ.ย. 2569" / "Nov 26, 2026").

@@ -91,8 +91,10 @@ class ToolPreview : public QWidget {
     // 1 mm grid (5 mm when 1 mm is too fine to see) behind the bitmap.
     p.setPen(QColor(235, 235, 235));
     const double step = mm >= 4.0 ? mm : 5.0 * mm;
-    for (double x = origin.x(); x <= origin.x() + size.width() + 0.5; x += step) p.drawLine(QPointF(x, origin.y()), QPointF(x, origin.y() + size.height()));
-    for (double y = origin.y(); y <= origin.y() + size.height() + 0.5; y += step) p.drawLine(QPointF(origin.x(), y), QPointF(origin.x() + size.width(), y));
+    for (double x = origin.x(); x <= origin.x() + size.width() + 0.5; x += step)
+      p.drawLine(QPointF(x, origin.y()), QPointF(x, origin.y() + size.height()));
+    for (double y = origin.y(); y <= origin.y() + size.height() + 0.5; y += step)
+      p.drawLine(QPointF(origin.x(), y), QPointF(origin.x() + size.width(), y));
     p.setRenderHint(QPainter::SmoothPixmapTransform, scale < 1.0);
     p.drawImage(QRectF(origin, size), img);
     // Cutting-edge bounding box and the controlled point.
@@ -216,7 +218,8 @@ const render::ToolSprite& ToolSelectDialog::previewSprite() const { return previ
 QString ToolSelectDialog::resolve(const QString& name) const {
   if (name.isEmpty()) return {};
   if (name.startsWith(QLatin1String(io::kLibraryPrefix.data()))) {
-    const io::LibraryTool* t = io::shippedToolLibrary().find(name.mid(int(io::kLibraryPrefix.size())).trimmed().toStdString());
+    const io::LibraryTool* t =
+        io::shippedToolLibrary().find(name.mid(int(io::kLibraryPrefix.size())).trimmed().toStdString());
     return t ? QString::fromStdString(io::shippedToolLibrary().bitmapPath(*t)) : QString();
   }
   if (QFileInfo(name).isAbsolute()) return name;
@@ -237,7 +240,7 @@ void ToolSelectDialog::onNameEdited(const QString& text) {
   if (row < 0) return;
   tools_.bitmap[static_cast<std::size_t>(row)] = text.trimmed().toStdString();
   beforeLibrary_[static_cast<std::size_t>(row)].reset();  // the typed name is the line now
-  setOverride(row + 1, {});  // typing a file name sets the station in tools.cfg
+  setOverride(row + 1, {});                               // typing a file name sets the station in tools.cfg
   retranslate();
 }
 
@@ -280,9 +283,10 @@ void ToolSelectDialog::updatePreview() {
   }
   const auto image = io::readImage(resolve(name).toStdString());
   if (!image.value) {
-    const QString why = image.diagnostics.empty()
-                            ? tr("cannot read the bitmap")
-                            : QString::fromStdString(core::formatMessage(image.diagnostics.front(), Language::coreLang()));
+    const QString why =
+        image.diagnostics.empty()
+            ? tr("cannot read the bitmap")
+            : QString::fromStdString(core::formatMessage(image.diagnostics.front(), Language::coreLang()));
     preview_->setSprite(render::ToolSprite(), why);
     return;
   }
@@ -337,7 +341,8 @@ void ToolSelectDialog::syncControls() {
   syncing_ = true;
   nameEdit_->setText(QString::fromStdString(tools_.bitmap[static_cast<std::size_t>(row)]));
   const QString id = entry.startsWith(QLatin1String(io::kLibraryPrefix.data()))
-                         ? entry.mid(int(io::kLibraryPrefix.size())).trimmed() : QString();
+                         ? entry.mid(int(io::kLibraryPrefix.size())).trimmed()
+                         : QString();
   const int index = libraryCombo_->findData(id);
   libraryCombo_->setCurrentIndex(index < 0 ? 0 : index);
   jobOnly_->setChecked(!overrideOf(tool).isEmpty() || jobOnlyPending_ == tool);
@@ -379,8 +384,8 @@ void ToolSelectDialog::onLibraryChosen(int index) {
       if (t) {
         const auto i = static_cast<std::size_t>(row);
         if (!beforeLibrary_[i])
-          beforeLibrary_[i] = StationLine{tools_.bitmap[i], tools_.libraryPath[i], tools_.pixelsPerMm[i],
-                                          tools_.bitmapUnreadable[i]};
+          beforeLibrary_[i] =
+              StationLine{tools_.bitmap[i], tools_.libraryPath[i], tools_.pixelsPerMm[i], tools_.bitmapUnreadable[i]};
         tools_.setLibraryTool(row + 1, t->id, io::shippedToolLibrary().bitmapPath(*t), t->pixelsPerMm);
       }
     }
@@ -408,8 +413,8 @@ void ToolSelectDialog::onJobOnlyToggled(bool on) {
     const io::LibraryTool* t = io::shippedToolLibrary().find(id.toStdString());
     if (t) {
       if (!beforeLibrary_[i])
-        beforeLibrary_[i] = StationLine{tools_.bitmap[i], tools_.libraryPath[i], tools_.pixelsPerMm[i],
-                                        tools_.bitmapUnreadable[i]};
+        beforeLibrary_[i] =
+            StationLine{tools_.bitmap[i], tools_.libraryPath[i], tools_.pixelsPerMm[i], tools_.bitmapUnreadable[i]};
       tools_.setLibraryTool(row + 1, t->id, io::shippedToolLibrary().bitmapPath(*t), t->pixelsPerMm);
     }
   }
@@ -430,22 +435,27 @@ void ToolSelectDialog::accept() {
     }
     const auto image = io::readImage(path.toStdString());
     if (!image.value) {
-      problems << tr("Tool %1: %2").arg(t, 2, 10, QLatin1Char('0'))
+      problems << tr("Tool %1: %2")
+                      .arg(t, 2, 10, QLatin1Char('0'))
                       .arg(image.diagnostics.empty() ? name
-                                                     : QString::fromStdString(core::formatMessage(image.diagnostics.front(), Language::coreLang())));
+                                                     : QString::fromStdString(core::formatMessage(
+                                                           image.diagnostics.front(), Language::coreLang())));
       continue;
     }
     // Larger than a tool can be: the setup would refuse it (F139), so the dialog does now.
     const auto i = static_cast<std::size_t>(t - 1);
-    const double ppm = tools_.bitmap[i].rfind(io::kLibraryPrefix, 0) == 0 ? tools_.pixelsPerMm[i] : io::kSeedPixelsPerMm;
+    const double ppm =
+        tools_.bitmap[i].rfind(io::kLibraryPrefix, 0) == 0 ? tools_.pixelsPerMm[i] : io::kSeedPixelsPerMm;
     const int most = io::maxToolBitmapPixels(ppm);
     if (image.value->width > most || image.value->height > most) {
-      const core::Diagnostic tooLarge{core::Severity::Error, core::codes::kToolBitmapTooLarge, {},
-                                      {QDir(configDir_).filePath(QStringLiteral("tools.cfg")).toStdString(),
-                                       QStringLiteral("%1").arg(t, 2, 10, QLatin1Char('0')).toStdString(),
-                                       name.toStdString(), std::to_string(image.value->width),
-                                       std::to_string(image.value->height), std::to_string(most),
-                                       QString::number(ppm).toStdString()}};
+      const core::Diagnostic tooLarge{
+          core::Severity::Error,
+          core::codes::kToolBitmapTooLarge,
+          {},
+          {QDir(configDir_).filePath(QStringLiteral("tools.cfg")).toStdString(),
+           QStringLiteral("%1").arg(t, 2, 10, QLatin1Char('0')).toStdString(), name.toStdString(),
+           std::to_string(image.value->width), std::to_string(image.value->height), std::to_string(most),
+           QString::number(ppm).toStdString()}};
       problems << QString::fromStdString(core::formatMessage(tooLarge, Language::coreLang()));
     }
   }
@@ -507,16 +517,19 @@ void ToolSelectDialog::retranslate() {
   const bool th = Language::coreLang() == core::Lang::Th;
   for (int i = 1; i < libraryCombo_->count(); ++i) {
     const io::LibraryTool* t = io::shippedToolLibrary().find(libraryCombo_->itemData(i).toString().toStdString());
-    if (t) libraryCombo_->setItemText(i, QStringLiteral("%1 — %2").arg(QString::fromStdString(t->id),
-                                                                     QString::fromStdString(th ? t->nameTh : t->nameEn)));
+    if (t)
+      libraryCombo_->setItemText(i, QStringLiteral("%1 — %2").arg(QString::fromStdString(t->id),
+                                                                  QString::fromStdString(th ? t->nameTh : t->nameEn)));
   }
   for (int t = 1; t <= stationCount(); ++t) {
     const QString entry = shownEntry(t);
     QString name = entry.isEmpty() ? tr("(none)") : QFileInfo(entry).fileName();
     if (entry.startsWith(QLatin1String(io::kLibraryPrefix.data()))) name = entry.mid(int(io::kLibraryPrefix.size()));
     QString text = tr("Tool %1: %2").arg(t, 2, 10, QLatin1Char('0')).arg(name);
-    if (!overrideOf(t).isEmpty()) text += tr(" (this program)");
-    else if (inference_.choiceFor(t)) text += tr(" (from the program)");
+    if (!overrideOf(t).isEmpty())
+      text += tr(" (this program)");
+    else if (inference_.choiceFor(t))
+      text += tr(" (from the program)");
     list_->item(t - 1)->setText(text);
   }
   QStringList lines;

@@ -54,8 +54,7 @@ bool isMachiningTrace(const PartFeature& f, const core::cut::PartFeatures& part)
     case FeatureKind::Arc:
       if (f.radius < kSliver) return true;
       break;
-    default:
-      return false;
+    default: return false;
   }
   if (f.kind == FeatureKind::Arc) return false;
   // A drill's point: a bevel in the bore that runs down to the axis, or one of

@@ -134,7 +134,7 @@ void paintStock(QPainter& painter, const StockShape& stock, bool showBlankOutlin
     painter.drawRect(lower);
   }
   for (int half = 0; half < 2; ++half) {
-    if (half == 1) painter.scale(1.0, -1.0);   // the lower half: the section mirrored about the axis
+    if (half == 1) painter.scale(1.0, -1.0);  // the lower half: the section mirrored about the axis
     painter.setPen(Qt::NoPen);
     painter.setBrush(pal.stockFill);
     painter.drawPath(stock.fill);
@@ -176,12 +176,14 @@ void paintChuck(QPainter& painter, const core::cut::Chuck& c) {
   for (double sign : {1.0, -1.0}) {
     // Jaw: the box the crash check uses, gripping the bar's left end.
     painter.setBrush(pal.chuckFill);
-    painter.drawRect(QRectF(QPointF(c.jawZMin(), -sign * c.jawXMin()), QPointF(c.jawZMax(), -sign * c.jawXMax())).normalized());
+    painter.drawRect(
+        QRectF(QPointF(c.jawZMin(), -sign * c.jawXMin()), QPointF(c.jawZMax(), -sign * c.jawXMax())).normalized());
   }
   // The chuck body behind the bar's end: a ring around the spindle bore.
   painter.setBrush(pal.chuckFill.darker(130));
   for (double sign : {1.0, -1.0})
-    painter.drawRect(QRectF(QPointF(c.bodyZMin(), sign * c.bodyXMin()), QPointF(c.bodyZMax(), sign * c.bodyXMax())).normalized());
+    painter.drawRect(
+        QRectF(QPointF(c.bodyZMin(), sign * c.bodyXMin()), QPointF(c.bodyZMax(), sign * c.bodyXMax())).normalized());
   painter.restore();
 }
 

@@ -36,7 +36,7 @@ struct Palette {
   QColor background{250, 250, 247};
   QColor stockFill{176, 190, 204};
   QColor stockEdge{60, 72, 88};
-  QColor removedFill{235, 235, 230};   // outline of the blank, to show what was cut
+  QColor removedFill{235, 235, 230};  // outline of the blank, to show what was cut
   QColor centreLine{200, 40, 40};
   QColor chuckFill{90, 90, 96};
   QColor chuckEdge{30, 30, 34};
@@ -48,11 +48,11 @@ const Palette& palette();
 
 // Material in the upper half plane, in scene units (z, -radius), see toScene.
 struct StockShape {
-  QPainterPath fill;       // union of rectangles: runs of equal columns x material intervals
-  QPainterPath outline;    // the boundary of `fill` (no seams between runs)
-  QRectF blank;            // the uncut bar's upper half (a tube's: radii bore/2 .. diameter/2)
+  QPainterPath fill;     // union of rectangles: runs of equal columns x material intervals
+  QPainterPath outline;  // the boundary of `fill` (no seams between runs)
+  QRectF blank;          // the uncut bar's upper half (a tube's: radii bore/2 .. diameter/2)
   bool isEmpty() const { return fill.isEmpty(); }
-  QRectF boundingRect() const;       // both halves
+  QRectF boundingRect() const;  // both halves
   // Is the point (z, radius) material?  (Tests compare this with the core's part.)
   bool containsMaterial(double z, double radius) const;
 };
@@ -64,7 +64,7 @@ StockShape stockShapeFromStock(const core::cut::Stock& stock);
 void paintStock(QPainter& painter, const StockShape& stock, bool showBlankOutline = true);
 void paintCentreLine(QPainter& painter, double zFrom, double zTo);
 void paintChuck(QPainter& painter, const core::cut::Chuck& chuck);
-QRectF chuckRect(const core::cut::Chuck& chuck);   // both halves, scene units
+QRectF chuckRect(const core::cut::Chuck& chuck);  // both halves, scene units
 // The controlled point's cross: arms of halfLength, pen width in the painter's units.
 void paintMarker(QPainter& painter, const QPointF& at, double halfLength, double penWidth);
 core::cut::Chuck chuckFor(double stockDiameterMm, double stockLengthMm, double gripMm, double jawHeightMm,

@@ -54,8 +54,11 @@ struct Quad {
 class Projector {
  public:
   Projector(const QRectF& viewport, const Camera3D& cam, double sceneRadius, const Vec3& centre)
-      : cy_(std::cos(rad(cam.yaw))), sy_(std::sin(rad(cam.yaw))), cp_(std::cos(rad(cam.pitch))),
-        sp_(std::sin(rad(cam.pitch))), centre_(centre) {
+      : cy_(std::cos(rad(cam.yaw))),
+        sy_(std::sin(rad(cam.yaw))),
+        cp_(std::cos(rad(cam.pitch))),
+        sp_(std::sin(rad(cam.pitch))),
+        centre_(centre) {
     scale_ = 0.5 * std::min(viewport.width(), viewport.height()) / std::max(1e-6, sceneRadius) * cam.zoom;
     origin_ = viewport.center() + cam.pan;
   }
@@ -181,12 +184,14 @@ int paintPart3D(QPainter& painter, const QRectF& viewport, const Scene3D& scene,
   revolve(inner, theta0, 2.0 * kPi, turnSteps, true, bore, proj, quads);
   if (scene.chuck) {
     const core::cut::Chuck& c = *scene.chuck;
-    const std::vector<Vec2> body{{c.bodyZMin(), c.bodyXMin()}, {c.bodyZMin(), c.bodyXMax()},
-                                 {c.bodyZMax(), c.bodyXMax()}, {c.bodyZMax(), c.bodyXMin()}};
+    const std::vector<Vec2> body{{c.bodyZMin(), c.bodyXMin()},
+                                 {c.bodyZMin(), c.bodyXMax()},
+                                 {c.bodyZMax(), c.bodyXMax()},
+                                 {c.bodyZMax(), c.bodyXMin()}};
     revolve(body, theta0, 2.0 * kPi, turnSteps, false, chuck, proj, quads);
     // Three jaws, 30° wide, at 150°, 270° and 30° (the last one only without the cutaway).
-    const std::vector<Vec2> jaw{{c.jawZMin(), c.jawXMin()}, {c.jawZMin(), c.jawXMax()},
-                                {c.jawZMax(), c.jawXMax()}, {c.jawZMax(), c.jawXMin()}};
+    const std::vector<Vec2> jaw{
+        {c.jawZMin(), c.jawXMin()}, {c.jawZMin(), c.jawXMax()}, {c.jawZMax(), c.jawXMax()}, {c.jawZMax(), c.jawXMin()}};
     for (const double at : {150.0, 270.0, 30.0}) {
       if (camera.cutaway && at < 90.0) continue;
       revolve(jaw, rad(at - 15.0), rad(at + 15.0), 3, false, chuck.lighter(120), proj, quads);

@@ -16,11 +16,11 @@
 namespace klueng::render {
 
 struct Camera3D {
-  double yaw = 30.0;     // degrees about the vertical axis (0 = from the front, Z to the right; + shows the right end)
-  double pitch = 24.0;   // degrees above the horizontal
-  double zoom = 1.0;     // 1 = the whole scene fits the viewport
-  QPointF pan;           // pixels
-  bool cutaway = true;   // a quarter (up-front) removed
+  double yaw = 30.0;    // degrees about the vertical axis (0 = from the front, Z to the right; + shows the right end)
+  double pitch = 24.0;  // degrees above the horizontal
+  double zoom = 1.0;    // 1 = the whole scene fits the viewport
+  QPointF pan;          // pixels
+  bool cutaway = true;  // a quarter (up-front) removed
 };
 
 struct Scene3D {

@@ -30,7 +30,8 @@ QImage renderSectionPicture(const SectionPicture& picture) {
   if (picture.chuck) scene = scene.united(chuckRect(*picture.chuck));
   if (!sprite.isNull()) scene = scene.united(sprite.sceneRect(toolAt));
   scene = scene.adjusted(-3, -3, 3, 3);
-  const double scale = std::clamp(std::min(picture.maxWidth / scene.width(), picture.maxHeight / scene.height()), 0.05, 200.0);
+  const double scale =
+      std::clamp(std::min(picture.maxWidth / scene.width(), picture.maxHeight / scene.height()), 0.05, 200.0);
   const QSize size(std::max(1, static_cast<int>(std::ceil(scene.width() * scale))),
                    std::max(1, static_cast<int>(std::ceil(scene.height() * scale))));
   QImage image(size, QImage::Format_RGB32);

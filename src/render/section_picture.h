@@ -13,11 +13,11 @@ namespace klueng::render {
 struct SectionPicture {
   const core::cut::Stock* stock = nullptr;
   const core::cut::Chuck* chuck = nullptr;
-  const core::cut::ToolShape* tool = nullptr;   // may be null
+  const core::cut::ToolShape* tool = nullptr;    // may be null
   core::Vec2 toolPosition = core::Vec2::Zero();  // controlled point
   const core::machine::Timeline* path = nullptr;
-  double pathUntil = 1e300;                      // seconds
-  int maxWidth = 2400;                           // pixels; the scene is fitted inside
+  double pathUntil = 1e300;  // seconds
+  int maxWidth = 2400;       // pixels; the scene is fitted inside
   int maxHeight = 1600;
 };
 

@@ -1,6 +1,7 @@
 #pragma once
 // A tool bitmap ready to draw: white pixels transparent, at its own
-// resolution (2 pixels per mm for the seed's bitmaps, SPEC 11; a library tool's own), with its controlled point for an imaginary-tip number.
+// resolution (2 pixels per mm for the seed's bitmaps, SPEC 11; a library tool's own), with its controlled point for an
+// imaginary-tip number.
 //
 // Public API
 //   ToolSprite::fromShape(shape)      from the core's cut::ToolShape (its bitmap and the

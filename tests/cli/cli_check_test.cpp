@@ -232,30 +232,14 @@ class JsonReader {
       const char e = s_.at(++i_);
       ++i_;
       switch (e) {
-        case '"':
-          out += '"';
-          break;
-        case '\\':
-          out += '\\';
-          break;
-        case '/':
-          out += '/';
-          break;
-        case 'n':
-          out += '\n';
-          break;
-        case 't':
-          out += '\t';
-          break;
-        case 'r':
-          out += '\r';
-          break;
-        case 'b':
-          out += '\b';
-          break;
-        case 'f':
-          out += '\f';
-          break;
+        case '"': out += '"'; break;
+        case '\\': out += '\\'; break;
+        case '/': out += '/'; break;
+        case 'n': out += '\n'; break;
+        case 't': out += '\t'; break;
+        case 'r': out += '\r'; break;
+        case 'b': out += '\b'; break;
+        case 'f': out += '\f'; break;
         case 'u': {
           const unsigned cp = static_cast<unsigned>(std::stoul(s_.substr(i_, 4), nullptr, 16));
           i_ += 4;
@@ -268,8 +252,7 @@ class JsonReader {
                 out += static_cast<char>(0x80 | (cp & 0x3F));
           break;
         }
-        default:
-          fail("bad escape");
+        default: fail("bad escape");
       }
     }
     if (i_ >= s_.size()) fail("unterminated string");

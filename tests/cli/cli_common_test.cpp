@@ -19,7 +19,9 @@ TEST(CliCommon, JsonEscapeHandlesQuotesControlsThaiAndBrokenUtf8) {
   EXPECT_EQ(jsonEscape("l1\nl2\tx\r"), "l1\\nl2\\tx\\r");
   EXPECT_EQ(jsonEscape(std::string("\x01\x1f\x7f", 3)), "\\u0001\\u001f\\u007f");
   EXPECT_EQ(jsonEscape("กลึง"), "กลึง");
-  EXPECT_EQ(jsonEscape("a\xFF" "b\xE0\xB8"), "a\\ufffdb\\ufffd\\ufffd");
+  EXPECT_EQ(jsonEscape("a\xFF"
+                       "b\xE0\xB8"),
+            "a\\ufffdb\\ufffd\\ufffd");
 }
 
 TEST(CliCommon, DiagnosticJsonHasTheSixFieldsWithEnglishSeverity) {
@@ -46,16 +48,20 @@ class ScopedLocale {
   }
   ~ScopedLocale() {
     for (auto& [name, old] : saved_)
-      if (old) ::setenv(name, old->c_str(), 1);
-      else ::unsetenv(name);
+      if (old)
+        ::setenv(name, old->c_str(), 1);
+      else
+        ::unsetenv(name);
   }
 
  private:
   void save(const char* name, const std::optional<std::string>& value) {
     const char* old = std::getenv(name);
     saved_.emplace_back(name, old ? std::optional<std::string>(old) : std::nullopt);
-    if (value) ::setenv(name, value->c_str(), 1);
-    else ::unsetenv(name);
+    if (value)
+      ::setenv(name, value->c_str(), 1);
+    else
+      ::unsetenv(name);
   }
   std::vector<std::pair<const char*, std::optional<std::string>>> saved_;
 };

@@ -54,8 +54,10 @@ int main(int argc, char** argv) {
     bool same = e.size() == a.size();
     for (std::size_t c = 0; same && c < e.size(); ++c) {
       double x = 0, y = 0;
-      if (asNumber(e[c], x) && asNumber(a[c], y)) same = std::abs(x - y) <= 2e-4;
-      else same = e[c] == a[c];
+      if (asNumber(e[c], x) && asNumber(a[c], y))
+        same = std::abs(x - y) <= 2e-4;
+      else
+        same = e[c] == a[c];
     }
     if (!same) {
       std::fprintf(stderr, "row %zu differs:\n  expected %s\n  actual   %s\n", r + 1, expected[r].c_str(),

@@ -117,10 +117,11 @@ class BadInputTest : public QObject {
       const QStringList messages = openAndWait(path, &w);
       QCOMPARE(messages.size(), 1);
       QVERIFY2(messages[0].contains(QStringLiteral("pipe.nc")), qPrintable(messages[0]));
-      QVERIFY2(messages[0].contains(lang == QStringLiteral("en")
-                                        ? QStringLiteral("this is a pipe (FIFO), not an ordinary file, so it is not opened")
-                                        : QStringLiteral("นี่คือไปป์ (FIFO) ไม่ใช่ไฟล์ธรรมดา จึงไม่เปิด")),
-               qPrintable(messages[0]));
+      QVERIFY2(
+          messages[0].contains(lang == QStringLiteral("en")
+                                   ? QStringLiteral("this is a pipe (FIFO), not an ordinary file, so it is not opened")
+                                   : QStringLiteral("นี่คือไปป์ (FIFO) ไม่ใช่ไฟล์ธรรมดา จึงไม่เปิด")),
+          qPrintable(messages[0]));
     }
     Language::instance()->setLanguage(QStringLiteral("en"));
   }
@@ -135,8 +136,7 @@ class BadInputTest : public QObject {
     // The rest of the program is there to read; the long line is an F106 on line 2.
     QCOMPARE(w.editor()->blockCount(), 4);
     bool named = false;
-    for (const auto& d : w.diagnosticsPanel()->diagnostics())
-      named = named || (d.code == "F106" && d.range.line == 2);
+    for (const auto& d : w.diagnosticsPanel()->diagnostics()) named = named || (d.code == "F106" && d.range.line == 2);
     QVERIFY(named);
   }
 
@@ -162,8 +162,9 @@ class BadInputTest : public QObject {
     const QByteArray original = "G21 G99\nT0101\nG00 X40. Z2.\nM30\n";
     QVERIFY(writeFile(path, original));
     QFile(path).setPermissions(QFileDevice::ReadOwner | QFileDevice::ReadGroup | QFileDevice::ReadOther);
-    QFile(tmp.path()).setPermissions(QFileDevice::ReadOwner | QFileDevice::ExeOwner | QFileDevice::ReadGroup |
-                                     QFileDevice::ExeGroup | QFileDevice::ReadOther | QFileDevice::ExeOther);
+    QFile(tmp.path())
+        .setPermissions(QFileDevice::ReadOwner | QFileDevice::ExeOwner | QFileDevice::ReadGroup |
+                        QFileDevice::ExeGroup | QFileDevice::ReadOther | QFileDevice::ExeOther);
     MainWindow w;
     QVERIFY(openAndWait(path, &w).isEmpty());
     QTextCursor c(w.editor()->document());

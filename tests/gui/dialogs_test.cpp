@@ -30,7 +30,8 @@ bool makeConfigCopy(const QString& to) {
     if (!QFile::copy(src.filePath(QString::fromLatin1(name)), dst.filePath(QString::fromLatin1(name)))) return false;
   dst.mkpath(QStringLiteral("resources/tools"));
   for (const QString& bmp : QDir(src.filePath(QStringLiteral("resources/tools"))).entryList({QStringLiteral("*.bmp")}))
-    QFile::copy(src.filePath(QStringLiteral("resources/tools/") + bmp), dst.filePath(QStringLiteral("resources/tools/") + bmp));
+    QFile::copy(src.filePath(QStringLiteral("resources/tools/") + bmp),
+                dst.filePath(QStringLiteral("resources/tools/") + bmp));
   for (const char* name : {"tools.cfg", "offset.cfg"})
     QFile(dst.filePath(QString::fromLatin1(name))).setPermissions(QFileDevice::ReadOwner | QFileDevice::WriteOwner);
   return true;
@@ -77,7 +78,8 @@ class DialogsTest : public QObject {
     QVERIFY(after.value.has_value());
     QCOMPARE(after.value->bitmap[2], std::string("resources/tools/05-boring-bar.bmp"));
     QCOMPARE(after.value->bitmap[7], std::string());
-    for (int i : {0, 1, 3, 4, 5, 6}) QCOMPARE(after.value->bitmap[static_cast<std::size_t>(i)], before.bitmap[static_cast<std::size_t>(i)]);
+    for (int i : {0, 1, 3, 4, 5, 6})
+      QCOMPARE(after.value->bitmap[static_cast<std::size_t>(i)], before.bitmap[static_cast<std::size_t>(i)]);
   }
 
   void toolSelectRefusesAMissingBitmap() {
@@ -105,15 +107,16 @@ class DialogsTest : public QObject {
     const QFileDevice::Permissions readable = QFileDevice::ReadOwner | QFileDevice::ReadGroup | QFileDevice::ReadOther;
     QFile(dir.filePath(QStringLiteral("tools.cfg"))).setPermissions(readable);
     QFile(dir.filePath(QStringLiteral("offset.cfg"))).setPermissions(readable);
-    const QFileDevice::Permissions listable = readable | QFileDevice::ExeOwner | QFileDevice::ExeGroup |
-                                              QFileDevice::ExeOther;
+    const QFileDevice::Permissions listable =
+        readable | QFileDevice::ExeOwner | QFileDevice::ExeGroup | QFileDevice::ExeOther;
     QFile(dir.path()).setPermissions(listable);
     QFile(dir.filePath(QStringLiteral("resources"))).setPermissions(listable);
     QFile(dir.filePath(QStringLiteral("resources/tools"))).setPermissions(listable);
-    for (const QString& bmp : QDir(dir.filePath(QStringLiteral("resources/tools"))).entryList({QStringLiteral("*.bmp")}))
+    for (const QString& bmp :
+         QDir(dir.filePath(QStringLiteral("resources/tools"))).entryList({QStringLiteral("*.bmp")}))
       QFile(dir.filePath(QStringLiteral("resources/tools/") + bmp)).setPermissions(readable);
-    QFile(home.path()).setPermissions(listable | QFileDevice::WriteOwner | QFileDevice::WriteGroup |
-                                      QFileDevice::WriteOther);
+    QFile(home.path())
+        .setPermissions(listable | QFileDevice::WriteOwner | QFileDevice::WriteGroup | QFileDevice::WriteOther);
     const QByteArray oldHome = qgetenv("XDG_DATA_HOME");
     qputenv("XDG_DATA_HOME", home.path().toUtf8());
     const bool root = ::geteuid() == 0;
@@ -185,7 +188,8 @@ class DialogsTest : public QObject {
     d.setCell(0, 2, QStringLiteral("-1"));
     QVERIFY(!d.isValid());
     QVERIFY(!ok->isEnabled());
-    QVERIFY2(d.errorText().contains(QStringLiteral("01")) && d.errorText().contains(QStringLiteral("R")), qPrintable(d.errorText()));
+    QVERIFY2(d.errorText().contains(QStringLiteral("01")) && d.errorText().contains(QStringLiteral("R")),
+             qPrintable(d.errorText()));
     d.setCell(0, 2, QStringLiteral("0.8"));
     QVERIFY(d.isValid());
     for (const char* bad : {"12", "-1", "2.5", "x"}) {

@@ -34,8 +34,9 @@ class FirstStepsTest : public QObject {
       QVERIFY(QTest::qWaitForWindowExposed(&w));
       gui::FirstStepsBar* bar = w.firstSteps();
       QVERIFY(bar->isVisible());
-      QVERIFY2(bar->text().contains(QStringLiteral("open a sample program")) && bar->text().contains(QStringLiteral("Go")),
-               qPrintable(bar->text()));
+      QVERIFY2(
+          bar->text().contains(QStringLiteral("open a sample program")) && bar->text().contains(QStringLiteral("Go")),
+          qPrintable(bar->text()));
       // "All samples…" is File ▸ Open, in the shipped samples the first time.
       QString folder;
       QTimer::singleShot(200, [&folder] {

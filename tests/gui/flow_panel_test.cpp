@@ -35,21 +35,21 @@ void write(const QString& path, const QByteArray& text) {
 // Main program (Klueng header: stock 40 x 100), lines 7-..; O1000.nc beside it.
 const QByteArray kMain =
     "Flow test\nGrooves\nAluminium\n140\n1100\nKlueng tests\n"
-    "O0010 (TWO GROOVES)\n"       // 7
-    "G21 G99 T0101\n"             // 8
-    "G97 S800 M03\n"              // 9
-    "G00 X44. Z-10.\n"            // 10
-    "#100 = 36.\n"                // 11
-    "M98 P1000 L2\n"              // 12
-    "G00 X100. Z100.\n"           // 13
-    "M30\n";                      // 14
+    "O0010 (TWO GROOVES)\n"  // 7
+    "G21 G99 T0101\n"        // 8
+    "G97 S800 M03\n"         // 9
+    "G00 X44. Z-10.\n"       // 10
+    "#100 = 36.\n"           // 11
+    "M98 P1000 L2\n"         // 12
+    "G00 X100. Z100.\n"      // 13
+    "M30\n";                 // 14
 const QByteArray kSub =
-    "O1000 (GROOVE)\n"            // 1
-    "#101 = #100 - 1.\n"          // 2
-    "G01 X#101 F0.05\n"           // 3
-    "G00 X44.\n"                  // 4
-    "W-10.\n"                     // 5
-    "M99\n";                      // 6
+    "O1000 (GROOVE)\n"    // 1
+    "#101 = #100 - 1.\n"  // 2
+    "G01 X#101 F0.05\n"   // 3
+    "G00 X44.\n"          // 4
+    "W-10.\n"             // 5
+    "M99\n";              // 6
 
 }  // namespace
 
@@ -69,7 +69,8 @@ class FlowPanelTest : public QObject {
     QVERIFY(s);
     const QRect area = s->availableGeometry();
     QVERIFY2(w.width() <= area.width() && w.height() <= area.height() - 40,
-             qPrintable(QStringLiteral("%1x%2 on %3x%4").arg(w.width()).arg(w.height()).arg(area.width()).arg(area.height())));
+             qPrintable(
+                 QStringLiteral("%1x%2 on %3x%4").arg(w.width()).arg(w.height()).arg(area.width()).arg(area.height())));
   }
 
   void steppingIntoAndOutOfASubprogramFile() {
@@ -88,8 +89,12 @@ class FlowPanelTest : public QObject {
     run->setSpeed(RunController::kAsFastAsPossible);
     auto stepAndWait = [&](const char* action) {
       w.action(QString::fromLatin1(action))->trigger();
-      return QTest::qWaitFor([run] { return run->state() == RunState::Paused || run->state() == RunState::Finished ||
-                                            run->state() == RunState::Alarm; }, 30000);
+      return QTest::qWaitFor(
+          [run] {
+            return run->state() == RunState::Paused || run->state() == RunState::Finished ||
+                   run->state() == RunState::Alarm;
+          },
+          30000);
     };
     // Step Over (F10) up to the call: lines 7 .. 12, all in the main program.
     for (int line : {7, 8, 9, 10, 11}) {
@@ -147,7 +152,7 @@ class FlowPanelTest : public QObject {
     QCOMPARE(w.diagnosticsPanel()->errorCount(), 1);
     const auto& d = w.diagnosticsPanel()->diagnostics().front();
     QCOMPARE(QString::fromStdString(d.code), QStringLiteral("E412"));
-    QCOMPARE(d.range.line, 12);     // M98 P1000 L2: the P word
+    QCOMPARE(d.range.line, 12);  // M98 P1000 L2: the P word
     QCOMPARE(d.range.column, 5);
     QCOMPARE(QString::fromStdString(d.args.at(0)), QStringLiteral("O1000.nc"));
     QCOMPARE(QString::fromStdString(d.args.at(3)), QStringLiteral("E201"));

@@ -51,7 +51,8 @@ int main(int argc, char** argv) {
   for (int i = 0; i < edits; ++i) {
     QTextCursor c(w.editor()->document()->findBlockByNumber(target));
     c.movePosition(QTextCursor::EndOfBlock);
-    if (i % 2 == 0) c.insertText(QStringLiteral(" X1"));  // X twice: E-error
+    if (i % 2 == 0)
+      c.insertText(QStringLiteral(" X1"));  // X twice: E-error
     else {
       c.movePosition(QTextCursor::Left, QTextCursor::KeepAnchor, 3);
       c.removeSelectedText();
@@ -83,8 +84,9 @@ int main(int argc, char** argv) {
     longestStall = std::max(longestStall, longest / 1e6);
   }
   std::sort(times.begin(), times.end());
-  std::printf("%d edits of line %d: edit -> new diagnostics on screen median %.1f ms, fastest %.1f ms, worst %.1f ms; "
-              "longest event-loop stall %.1f ms\n",
-              edits, target + 1, times[times.size() / 2], times.front(), times.back(), longestStall);
+  std::printf(
+      "%d edits of line %d: edit -> new diagnostics on screen median %.1f ms, fastest %.1f ms, worst %.1f ms; "
+      "longest event-loop stall %.1f ms\n",
+      edits, target + 1, times[times.size() / 2], times.front(), times.back(), longestStall);
   return 0;
 }

@@ -110,9 +110,10 @@ int main(int argc, char** argv) {
     const qint64 frames0 = controller.frameCount();
     const auto [seconds, stall] = goFiveSeconds(controller, probe);
     const double cut = controller.cutSimulator()->removedVolume() - volume0;
-    std::printf("1x sample 01, 1280x800: %.1f frames/s drawn (%.1f animation steps/s), %.0f mm^3 cut in %.2f s, "
-                "longest stall %.1f ms\n",
-                (view.paintCount() - paints0) / seconds, (controller.frameCount() - frames0) / seconds, cut, seconds, stall);
+    std::printf(
+        "1x sample 01, 1280x800: %.1f frames/s drawn (%.1f animation steps/s), %.0f mm^3 cut in %.2f s, "
+        "longest stall %.1f ms\n",
+        (view.paintCount() - paints0) / seconds, (controller.frameCount() - frames0) / seconds, cut, seconds, stall);
   }
 
   // 1b. The same with the 3D view (issue 10) open beside the output screen, 640x600 each.
@@ -130,9 +131,10 @@ int main(int argc, char** argv) {
     toRoughingPass(controller, setup);
     const qint64 paints2d = view.paintCount(), paints3d = view3d.paintCount();
     const auto [seconds, stall] = goFiveSeconds(controller, probe);
-    std::printf("1x sample 01 with the 3D view: 2-D %.1f frames/s, 3D %.1f frames/s (%d quads), longest stall %.1f ms\n",
-                (view.paintCount() - paints2d) / seconds, (view3d.paintCount() - paints3d) / seconds,
-                view3d.lastQuadCount(), stall);
+    std::printf(
+        "1x sample 01 with the 3D view: 2-D %.1f frames/s, 3D %.1f frames/s (%d quads), longest stall %.1f ms\n",
+        (view.paintCount() - paints2d) / seconds, (view3d.paintCount() - paints3d) / seconds, view3d.lastQuadCount(),
+        stall);
   }
 
   // 2. As fast as possible on a long program vs the core alone.
@@ -152,8 +154,8 @@ int main(int argc, char** argv) {
     core::cut::CutSimulator sim(timeline, core::cut::CutSetup::from(file.header, setup));
     sim.runToEnd();
     const double headless = t.nsecsElapsed() / 1e9;
-    std::printf("core headless: %zu blocks, %zu moves, %.3f s (alarm: %s)\n", program.blocks.size(), timeline.moves.size(),
-                headless, sim.stoppingAlarm() ? sim.stoppingAlarm()->code.c_str() : "none");
+    std::printf("core headless: %zu blocks, %zu moves, %.3f s (alarm: %s)\n", program.blocks.size(),
+                timeline.moves.size(), headless, sim.stoppingAlarm() ? sim.stoppingAlarm()->code.c_str() : "none");
 
     RunController controller;
     controller.setMachineSetup(setup);
@@ -167,8 +169,9 @@ int main(int argc, char** argv) {
     probe.start();
     t.restart();
     controller.go();
-    (void)QTest::qWaitFor([&] { return controller.state() == RunState::Finished || controller.state() == RunState::Alarm; }, 600000);
-    view.repaint();   // the finished picture on screen
+    (void)QTest::qWaitFor(
+        [&] { return controller.state() == RunState::Finished || controller.state() == RunState::Alarm; }, 600000);
+    view.repaint();  // the finished picture on screen
     const double gui = t.nsecsElapsed() / 1e9;
     const double stall = probe.stop();
     std::printf("GUI as fast as possible: %.3f s = %.2f x the core's time (state %s), longest stall %.1f ms\n", gui,

@@ -116,10 +116,16 @@ int main(int argc, char** argv) {
   }
   for (int i = 0; i < steps.toInt(); ++i) {
     w.action(QStringLiteral("actionStep"))->trigger();
-    if (!QTest::qWaitFor([&w] { return w.runController()->state() == RunState::Paused || w.runController()->state() == RunState::Finished; }, 20000)) return 1;
+    if (!QTest::qWaitFor(
+            [&w] {
+              return w.runController()->state() == RunState::Paused || w.runController()->state() == RunState::Finished;
+            },
+            20000))
+      return 1;
   }
   QTest::qWait(300);
-  std::printf("status fields: %d px wanted, %d px shown\n", w.statusFields()->sizeHint().width(), w.statusFields()->width());
+  std::printf("status fields: %d px wanted, %d px shown\n", w.statusFields()->sizeHint().width(),
+              w.statusFields()->width());
   if (view3d) {
     QString out = QString::fromLocal8Bit(argv[3]);
     out.insert(out.lastIndexOf(QLatin1Char('.')), QStringLiteral("-3d"));

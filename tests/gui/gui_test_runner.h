@@ -21,14 +21,11 @@ bool registerGuiTest(RunnerEntry entry);
 
 }  // namespace klueng::gui_test
 
-#define KLUENG_GUI_TEST(TestObject)                                                     \
-  static const bool klueng_gui_test_registered_##TestObject =                           \
-      ::klueng::gui_test::registerGuiTest({#TestObject,                                 \
-                                           [] {                                         \
-                                             QTest::Internal::callInitMain<TestObject>(); \
-                                           },                                           \
-                                           [](int argc, char** argv) {                  \
-                                             TestObject tc;                             \
-                                             QTEST_SET_MAIN_SOURCE_PATH                 \
-                                             return QTest::qExec(&tc, argc, argv);      \
+#define KLUENG_GUI_TEST(TestObject)                                                                          \
+  static const bool klueng_gui_test_registered_##TestObject =                                                \
+      ::klueng::gui_test::registerGuiTest({#TestObject, [] { QTest::Internal::callInitMain<TestObject>(); }, \
+                                           [](int argc, char** argv) {                                       \
+                                             TestObject tc;                                                  \
+                                             QTEST_SET_MAIN_SOURCE_PATH                                      \
+                                             return QTest::qExec(&tc, argc, argv);                           \
                                            }});

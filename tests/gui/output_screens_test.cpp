@@ -30,7 +30,8 @@ using namespace klueng::gui;
 namespace {
 
 QString shotDir() {
-  const QString dir = qEnvironmentVariableIsSet("KLUENG_SHOT_DIR") ? qEnvironmentVariable("KLUENG_SHOT_DIR") : QDir::tempPath();
+  const QString dir =
+      qEnvironmentVariableIsSet("KLUENG_SHOT_DIR") ? qEnvironmentVariable("KLUENG_SHOT_DIR") : QDir::tempPath();
   QDir().mkpath(dir);
   return dir;
 }
@@ -66,7 +67,7 @@ class OutputScreensTest : public QObject {
     save(view, QStringLiteral("output-01-before.png"));
 
     // Stop in the middle of roughing (breakpoint on N170), then at the end.
-    controller.setBreakpoints({25});   // file line of N170
+    controller.setBreakpoints({25});  // file line of N170
     controller.go();
     controller.waitForIdle();
     QCOMPARE(controller.state(), RunState::Paused);
@@ -114,8 +115,9 @@ class OutputScreensTest : public QObject {
     const QPoint left = view.mapFromScene(render::toScene(-100.0, 25.0));
     const QPoint right = view.mapFromScene(render::toScene(0.0, 25.0));
     QVERIFY(visible.contains(render::toScene(0.0, 25.0)) && visible.contains(render::toScene(-100.0, -25.0)));
-    QVERIFY2(right.x() - left.x() > 0.4 * view.viewport()->width(),
-             qPrintable(QStringLiteral("the bar is %1 px of %2").arg(right.x() - left.x()).arg(view.viewport()->width())));
+    QVERIFY2(
+        right.x() - left.x() > 0.4 * view.viewport()->width(),
+        qPrintable(QStringLiteral("the bar is %1 px of %2").arg(right.x() - left.x()).arg(view.viewport()->width())));
     // Wheel up over the bar's end: that point stays under the pointer, the view zooms in.
     const QPoint at = view.mapFromScene(render::toScene(0.0, 25.0));
     const QPointF before = view.mapToScene(at);
@@ -219,7 +221,8 @@ class OutputScreensTest : public QObject {
         fields->resize(fields->sizeHint());
         lamps->move(0, fields->sizeHint().height() + 4);
         lamps->resize(lamps->sizeHint());
-        bar.resize(std::max(fields->sizeHint().width(), lamps->sizeHint().width()), fields->sizeHint().height() + lamps->sizeHint().height() + 8);
+        bar.resize(std::max(fields->sizeHint().width(), lamps->sizeHint().width()),
+                   fields->sizeHint().height() + lamps->sizeHint().height() + 8);
         bar.show();
         QVERIFY(QTest::qWaitForWindowExposed(&bar));
         QCOMPARE(fields->fieldText(StatusFields::Field::ToolX), QStringLiteral("30.000"));

@@ -101,7 +101,8 @@ QStringList lines(const char* text) { return QString::fromLatin1(text).split(QLa
 
 // The length of the longest common subsequence, by the textbook table.
 int lcsLength(const QStringList& a, const QStringList& b) {
-  std::vector<std::vector<int>> t(static_cast<std::size_t>(a.size() + 1), std::vector<int>(static_cast<std::size_t>(b.size() + 1), 0));
+  std::vector<std::vector<int>> t(static_cast<std::size_t>(a.size() + 1),
+                                  std::vector<int>(static_cast<std::size_t>(b.size() + 1), 0));
   for (qsizetype i = 1; i <= a.size(); ++i)
     for (qsizetype j = 1; j <= b.size(); ++j)
       t[i][j] = a[i - 1] == b[j - 1] ? t[i - 1][j - 1] + 1 : std::max(t[i - 1][j], t[i][j - 1]);
@@ -169,7 +170,8 @@ class RecoveryTest : public QObject {
     QVERIFY2(bar->text().contains(where), qPrintable(bar->text()));
     const QString oldCopy = bar->pending().front().copyPath;
     bar->restoreFirst();
-    QVERIFY(QTest::qWaitFor([&] { return !w.isBusy() && w.document()->filePath() == QFileInfo(program).absoluteFilePath(); }, 20000));
+    QVERIFY(QTest::qWaitFor(
+        [&] { return !w.isBusy() && w.document()->filePath() == QFileInfo(program).absoluteFilePath(); }, 20000));
     QVERIFY(!bar->isVisible());
     QVERIFY(w.editor()->toPlainText().endsWith(QString::fromLatin1(kTyped)));
     QVERIFY(w.isWindowModified());
@@ -177,7 +179,7 @@ class RecoveryTest : public QObject {
     const QString expected = original;  // ends with a newline: the text went on a new last line
     const QString got = QString::fromStdString(w.document()->formatted(w.editor()->toPlainText()));
     QCOMPARE(got, expected + QString::fromLatin1(kTyped));  // Save writes the editor's text as it is
-    QVERIFY(!QFileInfo::exists(oldCopy));  // restoring removes the copy
+    QVERIFY(!QFileInfo::exists(oldCopy));                   // restoring removes the copy
     // Saving ends it: no copy of this window is left.
     QVERIFY(w.save());
     QVERIFY(w.documentManager()->recovery().orphans().isEmpty());
@@ -230,8 +232,12 @@ class RecoveryTest : public QObject {
     posix_spawn_file_actions_addclose(&actions, out[0]);
     const QByteArray self = QCoreApplication::applicationFilePath().toLocal8Bit();
     const QByteArray dir = folder.path().toLocal8Bit();
-    char* argv[] = {const_cast<char*>(self.constData()), const_cast<char*>("--hold"), const_cast<char*>(dir.constData()),
-                    const_cast<char*>("z"), const_cast<char*>(""), nullptr};
+    char* argv[] = {const_cast<char*>(self.constData()),
+                    const_cast<char*>("--hold"),
+                    const_cast<char*>(dir.constData()),
+                    const_cast<char*>("z"),
+                    const_cast<char*>(""),
+                    nullptr};
     pid_t pid = 0;
     QCOMPARE(::posix_spawn(&pid, self.constData(), &actions, nullptr, argv, environ), 0);
     posix_spawn_file_actions_destroy(&actions);
@@ -240,8 +246,8 @@ class RecoveryTest : public QObject {
     char ready[6] = {};
     QCOMPARE(::read(out[0], ready, 6), ssize_t(6));
     QCOMPARE(QByteArray(ready, 6), QByteArray("ready\n"));
-    QVERIFY(recovery.orphans().isEmpty());  // its Klueng runs: a live copy
-    ::close(in[1]);                          // the editor ends ...
+    QVERIFY(recovery.orphans().isEmpty());                                      // its Klueng runs: a live copy
+    ::close(in[1]);                                                             // the editor ends ...
     QVERIFY(QTest::qWaitFor([&] { return processState(pid) == 'Z'; }, 10000));  // ... and is not reaped
     QCOMPARE(::kill(pid, 0), 0);
     const QVector<RecoveryCopy> orphans = recovery.orphans();
@@ -343,7 +349,8 @@ class RecoveryTest : public QObject {
     QCOMPARE(d.firstLine, 11);
     RecoveryBar bar;
     bar.offer(recovery.orphans());
-    QVERIFY2(bar.text().contains(QStringLiteral(": 1 line(s) differ from the file, the first at line 11.")), qPrintable(bar.text()));
+    QVERIFY2(bar.text().contains(QStringLiteral(": 1 line(s) differ from the file, the first at line 11.")),
+             qPrintable(bar.text()));
     QCOMPARE(bar.comparison(), QStringLiteral("line 11\n  + G04 P1. (typed)"));
 
     // A changed line and a deleted one further down: 2 lines, each shown once.
@@ -361,8 +368,9 @@ class RecoveryTest : public QObject {
     QCOMPARE(d2.linesDiffering, 3);
     QCOMPARE(d2.hunks.size(), 3);
     bar.offer(recovery.orphans());
-    QCOMPARE(bar.comparison(), QStringLiteral("line 11\n  + G04 P1. (typed)\nline 21\n  - %1\n  + G01 X99.\nline 31\n  - %2")
-                                   .arg(changedFrom, deleted));
+    QCOMPARE(bar.comparison(),
+             QStringLiteral("line 11\n  + G04 P1. (typed)\nline 21\n  - %1\n  + G01 X99.\nline 31\n  - %2")
+                 .arg(changedFrom, deleted));
   }
 
   // The line diff is a shortest edit: checked against the longest common

@@ -29,9 +29,9 @@ class RenderTest : public QObject {
     QVERIFY(!s.containsMaterial(-10.0, 15.1));
     QVERIFY(s.containsMaterial(-50.0, 24.9));
     QVERIFY(!s.containsMaterial(-50.0, 25.1));
-    QVERIFY(!s.containsMaterial(-2.0, 4.9));    // the bore
+    QVERIFY(!s.containsMaterial(-2.0, 4.9));  // the bore
     QVERIFY(s.containsMaterial(-2.0, 5.1));
-    QVERIFY(!s.containsMaterial(1.0, 10.0));    // right of the face
+    QVERIFY(!s.containsMaterial(1.0, 10.0));  // right of the face
     QCOMPARE(s.blank, QRectF(QPointF(-100.0, -25.0), QPointF(0.0, 0.0)));
     // Three runs of equal columns -> 3 rectangles (5 elements each); the outline has only real edges:
     // 3 outer tops + 1 bore top (lines), left face, step, bore wall, right face pieces.
@@ -40,8 +40,11 @@ class RenderTest : public QObject {
   }
 
   void controlledPointOfEveryTip() {
-    const QRect box(QPoint(10, 20), QPoint(19, 29));   // pixels 10..19 x 20..29
-    const struct { int tip; QPointF expect; } cases[] = {
+    const QRect box(QPoint(10, 20), QPoint(19, 29));  // pixels 10..19 x 20..29
+    const struct {
+      int tip;
+      QPointF expect;
+    } cases[] = {
         {1, {20, 20}}, {2, {10, 20}}, {3, {10, 30}}, {4, {20, 30}}, {5, {20, 25}},
         {6, {15, 20}}, {7, {10, 25}}, {8, {15, 30}}, {0, {15, 25}}, {9, {15, 25}},
     };

@@ -97,13 +97,16 @@ class RunControllerTest : public QObject {
     QCOMPARE(rig.fields.fieldText(StatusFields::Field::Time),
              StatusFields::formatClock(snap.time) + QStringLiteral(" / ") + StatusFields::formatClock(tl.cycleTime()));
     QVERIFY(tl.cycleTime() > 60.0);
-    QVERIFY(rig.fields.fieldText(StatusFields::Field::Time).endsWith(
-        QStringLiteral("%1:%2").arg(static_cast<int>(tl.cycleTime() / 60)).arg(std::fmod(tl.cycleTime(), 60.0), 4, 'f', 1, QLatin1Char('0'))));
+    QVERIFY(rig.fields.fieldText(StatusFields::Field::Time)
+                .endsWith(QStringLiteral("%1:%2")
+                              .arg(static_cast<int>(tl.cycleTime() / 60))
+                              .arg(std::fmod(tl.cycleTime(), 60.0), 4, 'f', 1, QLatin1Char('0'))));
     // Per tool on hover: sample 01 cuts with T01 only.
     QVERIFY(rig.fields.findChildren<QLabel*>().size() > 0);
     bool perTool = false;
     for (QLabel* l : rig.fields.findChildren<QLabel*>())
-      perTool |= l->toolTip().contains(QStringLiteral("T01: ") + StatusFields::formatClock(tl.timeByTool().front().seconds));
+      perTool |=
+          l->toolTip().contains(QStringLiteral("T01: ") + StatusFields::formatClock(tl.timeByTool().front().seconds));
     QVERIFY(perTool);
     QCOMPARE(StatusFields::formatClock(7.46), QStringLiteral("0:07.5"));
     QCOMPARE(StatusFields::formatClock(754.0), QStringLiteral("12:34.0"));
@@ -118,7 +121,8 @@ class RunControllerTest : public QObject {
     QVERIFY(tl.snapshots[5].machine.spindle == core::machine::SpindleDir::Cw);
     QVERIFY(rig.lamps.lamp(StatusLamps::Lamp::Spindle)->isOn());
     QVERIFY(!rig.lamps.lamp(StatusLamps::Lamp::Coolant)->isOn());
-    QVERIFY(rig.fields.fieldText(StatusFields::Field::Spindle).startsWith(QString::number(tl.snapshots[5].machine.rpm, 'f', 0)));
+    QVERIFY(rig.fields.fieldText(StatusFields::Field::Spindle)
+                .startsWith(QString::number(tl.snapshots[5].machine.rpm, 'f', 0)));
     // The tool bitmap is drawn with its controlled point on the tool position.
     QVERIFY(rig.view.toolVisible());
   }
@@ -309,7 +313,7 @@ class RunControllerTest : public QObject {
       last = p;
     });
     rig.controller.go();
-    QTest::qWait(1500);   // the first rapid from Z300 (the fastest move of the program)
+    QTest::qWait(1500);  // the first rapid from Z300 (the fastest move of the program)
     rig.controller.pause();
     QVERIFY(rig.controller.currentTime() > 0.0);
     QVERIFY2(longest <= mmPerPixel * 1.0001, qPrintable(QStringLiteral("%1 > %2").arg(longest).arg(mmPerPixel)));

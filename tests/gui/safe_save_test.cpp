@@ -45,8 +45,10 @@ class BoxAnswerer {
       if (!box) return;
       boxes_ << box->objectName() + QStringLiteral("|") + box->windowTitle() + QStringLiteral("|") + box->text() +
                     QStringLiteral("|") + box->informativeText();
-      if (auto* button = click_.isEmpty() ? nullptr : box->findChild<QPushButton*>(click_)) button->click();
-      else box->reject();
+      if (auto* button = click_.isEmpty() ? nullptr : box->findChild<QPushButton*>(click_))
+        button->click();
+      else
+        box->reject();
     });
     timer_.start(20);
   }
@@ -139,8 +141,10 @@ class SafeSaveTest : public QObject {
     QObject::connect(&poll, &QTimer::timeout, [&] {
       if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
         unexpected << box->objectName();
-        if (auto* b = box->findChild<QPushButton*>(QStringLiteral("saveAsButton"))) b->click();
-        else box->reject();  // never hang on a question this test does not expect
+        if (auto* b = box->findChild<QPushButton*>(QStringLiteral("saveAsButton")))
+          b->click();
+        else
+          box->reject();  // never hang on a question this test does not expect
       } else if (auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget())) {
         if (dialogSeen) return;
         dialogSeen = true;
@@ -199,7 +203,8 @@ class SafeSaveTest : public QObject {
       BoxAnswerer answer;
       QVERIFY(!w.exportPdf(path));
       QTRY_COMPARE(answer.boxes().size(), 1);
-      QVERIFY2(answer.boxes()[0].contains(QStringLiteral("this output is the input file")), qPrintable(answer.boxes()[0]));
+      QVERIFY2(answer.boxes()[0].contains(QStringLiteral("this output is the input file")),
+               qPrintable(answer.boxes()[0]));
     }
     QCOMPARE(readAll(path), kProgram);
 

@@ -68,7 +68,8 @@ class ScreenshotCheck : public QObject {
       QVERIFY2(p.waitForFinished(90000), "klueng did not finish under Xvfb");
       const QString text = QString::fromLocal8Bit(p.readAllStandardOutput());
       QCOMPARE(p.exitCode(), 0);
-      const QRegularExpression re(QStringLiteral("frame (-?\\d+),(-?\\d+) (\\d+)x(\\d+) screen (-?\\d+),(-?\\d+) (\\d+)x(\\d+)"));
+      const QRegularExpression re(
+          QStringLiteral("frame (-?\\d+),(-?\\d+) (\\d+)x(\\d+) screen (-?\\d+),(-?\\d+) (\\d+)x(\\d+)"));
       const auto m = re.match(text);
       QVERIFY2(m.hasMatch(), qPrintable(text));
       const QRect frame(m.captured(1).toInt(), m.captured(2).toInt(), m.captured(3).toInt(), m.captured(4).toInt());

@@ -137,7 +137,8 @@ class SetupStripTest : public QObject {
     // One click on T02 opens Tool Select on station 2.
     int shownTool = 0;
     QTimer::singleShot(0, this, [&] {
-      (void)QTest::qWaitFor([] { return qobject_cast<ToolSelectDialog*>(QApplication::activeModalWidget()) != nullptr; }, 10000);
+      (void)QTest::qWaitFor(
+          [] { return qobject_cast<ToolSelectDialog*>(QApplication::activeModalWidget()) != nullptr; }, 10000);
       if (auto* dlg = qobject_cast<ToolSelectDialog*>(QApplication::activeModalWidget())) {
         shownTool = dlg->currentTool();
         dlg->reject();
@@ -149,7 +150,8 @@ class SetupStripTest : public QObject {
     // One click on the bar opens Job details.
     bool jobDetails = false;
     QTimer::singleShot(0, this, [&] {
-      (void)QTest::qWaitFor([] { return qobject_cast<JobDetailsDialog*>(QApplication::activeModalWidget()) != nullptr; }, 10000);
+      (void)QTest::qWaitFor(
+          [] { return qobject_cast<JobDetailsDialog*>(QApplication::activeModalWidget()) != nullptr; }, 10000);
       if (auto* dlg = qobject_cast<JobDetailsDialog*>(QApplication::activeModalWidget())) {
         jobDetails = true;
         dlg->reject();
@@ -170,7 +172,8 @@ class SetupStripTest : public QObject {
   void toolSideBeyondTheCentre() {
     MainWindow w;
     w.show();
-    QVERIFY(openAndWait(w, QStringLiteral(KLUENG_SOURCE_DIR "/tests/real-style/programs/fanuc-11-face-beyond-centre.nc")));
+    QVERIFY(
+        openAndWait(w, QStringLiteral(KLUENG_SOURCE_DIR "/tests/real-style/programs/fanuc-11-face-beyond-centre.nc")));
     SetupStrip* strip = w.setupStrip();
     QTRY_VERIFY(!strip->sideText().isEmpty());
     QVERIFY2(strip->sideText().startsWith(QStringLiteral("Tools beyond the centre line, drawn mirrored: ")),
@@ -193,7 +196,8 @@ class SetupStripTest : public QObject {
       QVERIFY(openAndWait(w, path));
       QTRY_VERIFY(w.setupStrip()->stations().contains(2));
       QTimer::singleShot(0, this, [&] {
-        (void)QTest::qWaitFor([] { return qobject_cast<ToolSelectDialog*>(QApplication::activeModalWidget()) != nullptr; }, 10000);
+        (void)QTest::qWaitFor(
+            [] { return qobject_cast<ToolSelectDialog*>(QApplication::activeModalWidget()) != nullptr; }, 10000);
         if (auto* dlg = qobject_cast<ToolSelectDialog*>(QApplication::activeModalWidget())) {
           dlg->setLibraryTool(2, QStringLiteral("parting-3mm"), true);  // "Only for this program"
           dlg->accept();
@@ -221,8 +225,8 @@ class SetupStripTest : public QObject {
     QVERIFY(f.open(QIODevice::WriteOnly));
     f.write(kFanucInch);
     f.close();
-    const QString whole =
-        QStringLiteral("Lengths without a decimal point: whole millimetres/inches, as chosen in Job details (X30 = 30 mm)");
+    const QString whole = QStringLiteral(
+        "Lengths without a decimal point: whole millimetres/inches, as chosen in Job details (X30 = 30 mm)");
     {
       MainWindow w;
       w.resize(1366, 740);
@@ -234,7 +238,8 @@ class SetupStripTest : public QObject {
                                                   "line 10 = 0.1250 in (as a standard Fanuc/Haas)"));
       auto* line = strip->findChild<SetupLine*>(QStringLiteral("setupDecimalPoint"));
       QVERIFY(line && line->isVisible());
-      QVERIFY2(line->toolTip().startsWith(QStringLiteral("Lengths without a decimal point are read in least input increments")),
+      QVERIFY2(line->toolTip().startsWith(
+                   QStringLiteral("Lengths without a decimal point are read in least input increments")),
                qPrintable(line->toolTip()));
       QVERIFY(strip->titleText().contains(QStringLiteral("guessed from the program")));
       QVERIFY(!findCode(w.diagnosticsPanel()->diagnostics(), "E110"));  // 0.1250 in is a fine depth
@@ -243,7 +248,8 @@ class SetupStripTest : public QObject {
       // One click on the line opens Job details; choose whole there.
       int shownChoice = -2;
       QTimer::singleShot(0, this, [&] {
-        (void)QTest::qWaitFor([] { return qobject_cast<JobDetailsDialog*>(QApplication::activeModalWidget()) != nullptr; }, 10000);
+        (void)QTest::qWaitFor(
+            [] { return qobject_cast<JobDetailsDialog*>(QApplication::activeModalWidget()) != nullptr; }, 10000);
         if (auto* dlg = qobject_cast<JobDetailsDialog*>(QApplication::activeModalWidget())) {
           auto* combo = dlg->findChild<QComboBox*>(QStringLiteral("decimalPoint"));
           if (!combo) return dlg->reject();
@@ -289,8 +295,9 @@ class SetupStripTest : public QObject {
     const QString path = dir.filePath(QStringLiteral("deep.nc"));
     QFile f(path);
     QVERIFY(f.open(QIODevice::WriteOnly));
-    f.write("%\nO0042 (DEEP GROOVE)\nG21 G40 G99\nT0909\nG97 S600 M03\nG00 X52. Z-20.\nG75 R0.5\n"
-            "G75 X30. Z-20. P2000 F0.05\nG00 X60.\nM30\n%\n");
+    f.write(
+        "%\nO0042 (DEEP GROOVE)\nG21 G40 G99\nT0909\nG97 S600 M03\nG00 X52. Z-20.\nG75 R0.5\n"
+        "G75 X30. Z-20. P2000 F0.05\nG00 X60.\nM30\n%\n");
     f.close();
     MainWindow w;
     w.show();

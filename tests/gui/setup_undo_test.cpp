@@ -58,10 +58,12 @@ class SetupUndoTest : public QObject {
     const QDir dst(config_.path());
     for (const char* name : {"tools.cfg", "offset.cfg", "machine.cfg"})
       QVERIFY(copyFile(src, dst, QString::fromLatin1(name)));
-    for (const QString& bmp : QDir(src.filePath(QStringLiteral("resources/tools"))).entryList({QStringLiteral("*.bmp")}))
+    for (const QString& bmp :
+         QDir(src.filePath(QStringLiteral("resources/tools"))).entryList({QStringLiteral("*.bmp")}))
       QVERIFY(copyFile(src, dst, QStringLiteral("resources/tools/") + bmp));
     qputenv("KLUENG_DATA_DIR", config_.path().toUtf8());
-    QVERIFY(QFile::copy(QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt"), work_.filePath(QStringLiteral("shaft.txt"))));
+    QVERIFY(QFile::copy(QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt"),
+                        work_.filePath(QStringLiteral("shaft.txt"))));
     QFile(work_.filePath(QStringLiteral("shaft.txt"))).setPermissions(QFileDevice::ReadOwner | QFileDevice::WriteOwner);
   }
 
@@ -73,9 +75,8 @@ class SetupUndoTest : public QObject {
     QAction* undo = w.action(QStringLiteral("actionUndoSetup"));
     QAction* redo = w.action(QStringLiteral("actionRedoSetup"));
     QVERIFY(!undo->isEnabled());
-    acceptNextDialog<JobDetailsDialog>([](JobDetailsDialog& d) {
-      d.findChild<QDoubleSpinBox*>(QStringLiteral("diameter"))->setValue(40.0);
-    });
+    acceptNextDialog<JobDetailsDialog>(
+        [](JobDetailsDialog& d) { d.findChild<QDoubleSpinBox*>(QStringLiteral("diameter"))->setValue(40.0); });
     w.action(QStringLiteral("actionJobDetails"))->trigger();
     QCOMPARE(w.document()->header().diameter, 40.0);
     QVERIFY(w.document()->isHeaderModified());

@@ -101,8 +101,7 @@ class StockSourceTest : public QObject {
     QCOMPARE(w.document()->header().diameter, 32.0);
     QCOMPARE(w.document()->header().length, 60.0);
     QVERIFY(w.document()->header().stockSource == core::io::StockSource::Inferred);
-    QCOMPARE(w.stockSourceText(),
-             QStringLiteral("Stock Ø32 x 60 mm inferred from N30 G00 X34. Z0. (first approach)"));
+    QCOMPARE(w.stockSourceText(), QStringLiteral("Stock Ø32 x 60 mm inferred from N30 G00 X34. Z0. (first approach)"));
     QVERIFY(w.findChild<QLabel*>(QStringLiteral("stockSource"))->isVisible());
     // Thai at once.
     Language::instance()->setLanguage(QStringLiteral("th"));
@@ -140,8 +139,9 @@ class StockSourceTest : public QObject {
     const auto dialectPath = [&] { return title("menuToolSetting") + QStringLiteral(" ▸ ") + title("menuDialect"); };
     QCOMPARE(dialectPath(), QStringLiteral("Tool setting ▸ G-code dialect"));
     QCOMPARE(menuPath(), QStringLiteral("File ▸ Job details"));
-    QCOMPARE(w.stockSourceText(), QStringLiteral("Stock Ø50 x 100 mm is the default: the program has no approach to infer "
-                                                 "it from; set it in File ▸ Job details"));
+    QCOMPARE(w.stockSourceText(),
+             QStringLiteral("Stock Ø50 x 100 mm is the default: the program has no approach to infer "
+                            "it from; set it in File ▸ Job details"));
     Language::instance()->setLanguage(QStringLiteral("th"));
     QCoreApplication::processEvents();
     QCOMPARE(menuPath(), QStringLiteral("แฟ้ม ▸ รายละเอียดงาน"));

@@ -35,7 +35,9 @@ void shot(QWidget& w, const char* name) {
   w.grab().save(QDir(dir).filePath(QString::fromLatin1(name) + QStringLiteral(".png")));
 }
 
-bool waitIdle(MainWindow& w) { return QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000); }
+bool waitIdle(MainWindow& w) {
+  return QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000);
+}
 
 bool hasCode(const std::vector<core::Diagnostic>& diags, int line) {
   return std::any_of(diags.begin(), diags.end(), [line](const core::Diagnostic& d) {
@@ -62,8 +64,9 @@ class StudentSessionTest : public QObject {
     QVERIFY(waitIdle(w));
     // Two mistakes: "X-" has no number (line 11) and Y is not a lathe word (line 12).
     QTest::keyClicks(w.editor(), QStringLiteral("O0010"));
-    const char* lines[] = {"G21 G40 G97 G99", "T0101", "G96 S150 M03", "G00 X52. Z2. M08",
-                           "G01 X- F0.2", "G01 Z-30. Y2.", "G01 X52.", "G00 X100. Z100. M09", "M05", "M30"};
+    const char* lines[] = {
+        "G21 G40 G97 G99",     "T0101", "G96 S150 M03", "G00 X52. Z2. M08", "G01 X- F0.2", "G01 Z-30. Y2.", "G01 X52.",
+        "G00 X100. Z100. M09", "M05",   "M30"};
     for (const char* l : lines) {
       QTest::keyClick(w.editor(), Qt::Key_Return);
       QTest::keyClicks(w.editor(), QString::fromLatin1(l));
@@ -117,7 +120,8 @@ class StudentSessionTest : public QObject {
 
   void alarmInThai() {
     // The window starts in the remembered language.
-    QSettings(QStringLiteral("Klueng"), QStringLiteral("klueng")).setValue(QStringLiteral("ui/language"), QStringLiteral("th"));
+    QSettings(QStringLiteral("Klueng"), QStringLiteral("klueng"))
+        .setValue(QStringLiteral("ui/language"), QStringLiteral("th"));
     MainWindow w;
     w.resize(1280, 800);
     w.show();

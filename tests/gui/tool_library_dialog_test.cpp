@@ -32,7 +32,8 @@ bool makeConfigCopy(const QString& to) {
     if (!QFile::copy(src.filePath(QString::fromLatin1(name)), dst.filePath(QString::fromLatin1(name)))) return false;
   dst.mkpath(QStringLiteral("resources/tools"));
   for (const QString& bmp : QDir(src.filePath(QStringLiteral("resources/tools"))).entryList({QStringLiteral("*.bmp")}))
-    QFile::copy(src.filePath(QStringLiteral("resources/tools/") + bmp), dst.filePath(QStringLiteral("resources/tools/") + bmp));
+    QFile::copy(src.filePath(QStringLiteral("resources/tools/") + bmp),
+                dst.filePath(QStringLiteral("resources/tools/") + bmp));
   for (const char* name : {"tools.cfg", "offset.cfg"})
     QFile(dst.filePath(QString::fromLatin1(name))).setPermissions(QFileDevice::ReadOwner | QFileDevice::WriteOwner);
   return true;
@@ -72,7 +73,8 @@ class ToolLibraryDialogTest : public QObject {
   void showsTheProgramsChoiceAtTrueScale() {
     QTemporaryDir dir;
     QVERIFY(makeConfigCopy(dir.path()));
-    const auto inference = inferFor("T0101\nG00 X52. Z2.\n(CUT OFF)\nT1212\nG00 X55. Z-43.\nG01 X-1. F0.05\nM30\n", dir.path());
+    const auto inference =
+        inferFor("T0101\nG00 X52. Z2.\n(CUT OFF)\nT1212\nG00 X55. Z-43.\nG01 X-1. F0.05\nM30\n", dir.path());
     QVERIFY(inference.choiceFor(12));
     ToolSelectDialog d(dir.path());
     d.setProgramTools(inference, {});
@@ -127,7 +129,7 @@ class ToolLibraryDialogTest : public QObject {
     const int index = combo->findData(QStringLiteral("cnmg-80-r04"));
     QVERIFY(index > 0);
     combo->setCurrentIndex(index);
-    emit combo->activated(index);  // as a choice in the drop-down list
+    emit combo->activated(index);                                   // as a choice in the drop-down list
     QCOMPARE(name->text(), QStringLiteral("library:cnmg-80-r04"));  // going to tools.cfg, as shown
     jobOnly->click();
     QVERIFY(jobOnly->isChecked());
@@ -214,8 +216,9 @@ class ToolLibraryDialogTest : public QObject {
     });
     d.accept();
     QVERIFY(d.result() != QDialog::Accepted);
-    QCOMPARE(message, dir.filePath(QStringLiteral("tools.cfg")) + QStringLiteral(": tool 02: the bitmap 'wide.bmp' is 1001 x 40 pixels; a tool bitmap may be "
-                                     "at most 1000 x 1000 pixels (500 mm each way at 2 pixels per mm)"));
+    QCOMPARE(message, dir.filePath(QStringLiteral("tools.cfg")) +
+                          QStringLiteral(": tool 02: the bitmap 'wide.bmp' is 1001 x 40 pixels; a tool bitmap may be "
+                                         "at most 1000 x 1000 pixels (500 mm each way at 2 pixels per mm)"));
     QCOMPARE(readAll(dir.filePath(QStringLiteral("tools.cfg"))), original);
   }
 

@@ -120,14 +120,10 @@ std::string formatMessage(const Diagnostic& d, Lang lang, Surface surface) {
 
 std::string_view severityName(Severity s, Lang lang) {
   switch (s) {
-    case Severity::Warning:
-      return lang == Lang::Th ? "คำเตือน" : "warning";
-    case Severity::Error:
-      return lang == Lang::Th ? "ข้อผิดพลาด" : "error";
-    case Severity::Alarm:
-      return lang == Lang::Th ? "สัญญาณเตือน" : "alarm";
-    case Severity::Note:
-      return lang == Lang::Th ? "หมายเหตุ" : "note";
+    case Severity::Warning: return lang == Lang::Th ? "คำเตือน" : "warning";
+    case Severity::Error: return lang == Lang::Th ? "ข้อผิดพลาด" : "error";
+    case Severity::Alarm: return lang == Lang::Th ? "สัญญาณเตือน" : "alarm";
+    case Severity::Note: return lang == Lang::Th ? "หมายเหตุ" : "note";
   }
   return "error";
 }

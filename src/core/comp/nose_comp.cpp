@@ -299,12 +299,9 @@ std::optional<Segment> offsetSegment(const Segment& s, double d) {
 
 std::string_view interferenceCode(Interference::Kind kind) {
   switch (kind) {
-    case Interference::Kind::ArcSmallerThanRadius:
-      return codes::kConcaveArcTooSmall;
-    case Interference::Kind::PathReversal:
-      return codes::kNoseDoesNotFit;
-    case Interference::Kind::ArcInStartUpOrCancel:
-      return codes::kCompStartOrCancelOnArc;
+    case Interference::Kind::ArcSmallerThanRadius: return codes::kConcaveArcTooSmall;
+    case Interference::Kind::PathReversal: return codes::kNoseDoesNotFit;
+    case Interference::Kind::ArcInStartUpOrCancel: return codes::kCompStartOrCancelOnArc;
   }
   return codes::kNoseDoesNotFit;
 }
@@ -315,10 +312,8 @@ std::vector<std::string> interferenceArgs(const Interference& i, const CompInput
       const bool valid = i.source >= 0 && i.source < static_cast<int>(in.moves.size());
       return {mm(valid ? in.moves[i.source].radius() : 0.0), mm(in.radius)};
     }
-    case Interference::Kind::PathReversal:
-      return {mm(in.radius)};
-    case Interference::Kind::ArcInStartUpOrCancel:
-      return {};
+    case Interference::Kind::PathReversal: return {mm(in.radius)};
+    case Interference::Kind::ArcInStartUpOrCancel: return {};
   }
   return {};
 }
@@ -328,24 +323,15 @@ Vec2 tipVector(int tip) {
   //  7 0 5      (+X up, +Z right); vector is (dz, dx)
   //  3 8 4
   switch (tip) {
-    case 1:
-      return Vec2(1, 1);
-    case 2:
-      return Vec2(-1, 1);
-    case 3:
-      return Vec2(-1, -1);
-    case 4:
-      return Vec2(1, -1);
-    case 5:
-      return Vec2(1, 0);
-    case 6:
-      return Vec2(0, 1);
-    case 7:
-      return Vec2(-1, 0);
-    case 8:
-      return Vec2(0, -1);
-    default:
-      return Vec2(0, 0);
+    case 1: return Vec2(1, 1);
+    case 2: return Vec2(-1, 1);
+    case 3: return Vec2(-1, -1);
+    case 4: return Vec2(1, -1);
+    case 5: return Vec2(1, 0);
+    case 6: return Vec2(0, 1);
+    case 7: return Vec2(-1, 0);
+    case 8: return Vec2(0, -1);
+    default: return Vec2(0, 0);
   }
 }
 

@@ -38,18 +38,12 @@ std::string controlCodeWord(gcode::CodeAction action, gcode::Dialect dialect) {
 
 const char* modeKey(Mode m) {
   switch (m) {
-    case Mode::Edit:
-      return "EDIT";
-    case Mode::Memory:
-      return "MEM";
-    case Mode::Mdi:
-      return "MDI";
-    case Mode::Jog:
-      return "JOG";
-    case Mode::Handle:
-      return "HANDLE";
-    case Mode::ZeroReturn:
-      return "ZERO RETURN";
+    case Mode::Edit: return "EDIT";
+    case Mode::Memory: return "MEM";
+    case Mode::Mdi: return "MDI";
+    case Mode::Jog: return "JOG";
+    case Mode::Handle: return "HANDLE";
+    case Mode::ZeroReturn: return "ZERO RETURN";
   }
   return "";
 }
@@ -100,11 +94,8 @@ machine::Timeline withOverrides(const machine::Timeline& timeline, const Overrid
                  ? machine::rapidSeconds(in.path, std::min(kRapidF0Rate, m.rapidX), std::min(kRapidF0Rate, m.rapidZ))
                  : d * 100.0 / o.rapid;
         break;
-      case MoveKind::Dwell:
-        break;
-      case MoveKind::Thread:
-        nd = d / spindle;
-        break;  // the feed override is ignored while threading
+      case MoveKind::Dwell: break;
+      case MoveKind::Thread: nd = d / spindle; break;  // the feed override is ignored while threading
       case MoveKind::Line:
       case MoveKind::Arc:
         if (feed <= 0.0)

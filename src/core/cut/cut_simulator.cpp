@@ -19,12 +19,11 @@ using machine::MoveKind;
 namespace {
 
 constexpr double kNoseChordTolerance = 0.0002;  // mm: nose sweeps along arcs are this close to exact
-constexpr double kBoxChordTolerance = 0.0002;    // mm: bitmap edges next to the nose touch the surface too
+constexpr double kBoxChordTolerance = 0.0002;   // mm: bitmap edges next to the nose touch the surface too
 
 // Controlled-point pieces of the sub-path [s0, s1] of a move: straight pieces
 // (arcs as chords within `tolerance`), or for G32 the stamp positions (a == b).
-std::vector<std::pair<Vec2, Vec2>> piecesOf(const Move& m, double s0, double s1, double tolerance,
-                                             double resolution) {
+std::vector<std::pair<Vec2, Vec2>> piecesOf(const Move& m, double s0, double s1, double tolerance, double resolution) {
   std::vector<std::pair<Vec2, Vec2>> out;
   const Segment& p = m.path;
   // A lead finer than two stock columns cannot show teeth: sweep it as a groove
@@ -167,8 +166,8 @@ CutSimulator::CutSimulator(const machine::Timeline& timeline, const CutSetup& se
   const std::size_t stockBytes = 64u * static_cast<std::size_t>(std::max(1, stock_.columnCount())) + 256u;
   const std::size_t most = std::clamp<std::size_t>(options_.checkpointBudgetBytes / stockBytes, 1, 4096);
   checkpointEvery_ = options_.checkpointBudgetBytes == 0
-                        ? std::numeric_limits<std::size_t>::max()  // no way back wanted (a batch run)
-                        : std::max<std::size_t>(64, timeline_->moves.size() / most + 1);
+                         ? std::numeric_limits<std::size_t>::max()  // no way back wanted (a batch run)
+                         : std::max<std::size_t>(64, timeline_->moves.size() / most + 1);
 }
 
 void CutSimulator::reset() {
@@ -326,9 +325,7 @@ bool hitsBox(const SweepContext& c, const Box& target, Primitive&& sweepOn) {
   return hit;
 }
 
-bool boxesOverlap(const Box& a, const Box& b) {
-  return a.z0 < b.z1 && b.z0 < a.z1 && a.x0 < b.x1 && b.x0 < a.x1;
-}
+bool boxesOverlap(const Box& a, const Box& b) { return a.z0 < b.z1 && b.z0 < a.z1 && a.x0 < b.x1 && b.x0 < a.x1; }
 
 Box sweptBounds(const std::vector<std::pair<Vec2, Vec2>>& pieces, const Box& local) {
   Box b{1e300, -1e300, 1e300, -1e300};
@@ -405,10 +402,11 @@ void sweepIntervals(const SweepContext& c, const std::vector<std::pair<Vec2, Vec
 // Stock::overlap > a tolerance >= 0), unless allColumns: then every column comes.
 template <typename F>
 void forEachInterval(const SweepContext& c, const std::vector<std::pair<Vec2, Vec2>>& nosePieces,
-                     const std::vector<std::pair<Vec2, Vec2>>& boxPieces, bool holder, F&& f,
-                     bool allColumns = false) {
-  if (allColumns) sweepIntervals(c, nosePieces, boxPieces, holder, f, detail::NoCull{});
-  else sweepIntervals(c, nosePieces, boxPieces, holder, f, detail::MaterialCull{c.stock});
+                     const std::vector<std::pair<Vec2, Vec2>>& boxPieces, bool holder, F&& f, bool allColumns = false) {
+  if (allColumns)
+    sweepIntervals(c, nosePieces, boxPieces, holder, f, detail::NoCull{});
+  else
+    sweepIntervals(c, nosePieces, boxPieces, holder, f, detail::MaterialCull{c.stock});
 }
 
 // Columns whose centres lie outside (zMin, zMax) are not counted: a rapid
@@ -488,8 +486,8 @@ bool CutSimulator::excuseGuess(const char* warning, const Move& m, const Vec2& w
     d.severity = Severity::Warning;
     const std::string id = setup_.tools.libraryId(m.tool);
     const std::string& line = setup_.tools.bitmap[static_cast<std::size_t>(m.tool - 1)];
-    d.args.insert(d.args.begin(), {fmt::format("{:02}", m.tool),
-                                   id.empty() ? line.substr(line.find_last_of('/') + 1) : id});
+    d.args.insert(d.args.begin(),
+                  {fmt::format("{:02}", m.tool), id.empty() ? line.substr(line.find_last_of('/') + 1) : id});
     if (depth) d.args.push_back(fmt::format("{:.3f}", depth()));
     warnings_.push_back(std::move(d));
     warned = true;
@@ -520,8 +518,13 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
     return;
   }
   const double s0 = nextMoveDone_;
-  SweepContext ctx{&stock_, &chuck_, nullptr, options_.collisionTolerance,
-                   detail::Grid{-stock_.length(), stock_.resolution(), stock_.columnCount()}, Box{}, Box{}};
+  SweepContext ctx{&stock_,
+                   &chuck_,
+                   nullptr,
+                   options_.collisionTolerance,
+                   detail::Grid{-stock_.length(), stock_.resolution(), stock_.columnCount()},
+                   Box{},
+                   Box{}};
 
   const double dz = stock_.resolution();
   auto nose = [&](double a, double b) { return piecesOf(m, a, b, kNoseChordTolerance, dz); };
@@ -532,8 +535,10 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
     double lo = s0, hi = sEnd;
     for (int k = 0; k < 40 && hi - lo > 1e-9; ++k) {
       const double mid = (lo + hi) / 2;
-      if (test(mid)) hi = mid;
-      else lo = mid;
+      if (test(mid))
+        hi = mid;
+      else
+        lo = mid;
     }
     return hi;
   };
@@ -616,7 +621,9 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
             excuseGuess(codes::kGuessEdgeBrushesStock, m, timeline_->moves[index].path.pointAt(s)))
           return;
       }
-      raise(m.kind == MoveKind::Rapid ? codes::kRapidIntoStock : (edge ? codes::kCutWithSpindleStopped : codes::kHolderHitsStock), s);
+      raise(m.kind == MoveKind::Rapid ? codes::kRapidIntoStock
+                                      : (edge ? codes::kCutWithSpindleStopped : codes::kHolderHitsStock),
+            s);
     }
     return;
   }

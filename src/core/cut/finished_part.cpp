@@ -14,9 +14,7 @@ FinishedPart::FinishedPart(const Stock& stock) : stock_(&stock), volume_(stock.v
   last_ = n - 1;
   while (last_ >= 0 && stock.outerRadius(last_) <= 0.0) --last_;
   if (first_ > last_) return;
-  auto row = [&](double z, int i) {
-    return ProfileRow{z, 2.0 * stock.outerRadius(i), 2.0 * stock.innerRadius(i)};
-  };
+  auto row = [&](double z, int i) { return ProfileRow{z, 2.0 * stock.outerRadius(i), 2.0 * stock.innerRadius(i)}; };
   rows_.reserve(static_cast<std::size_t>(last_ - first_ + 3));
   rows_.push_back(row(stock.zLeft(first_), first_));
   for (int i = first_; i <= last_; ++i) rows_.push_back(row(stock.zCentre(i), i));
@@ -147,9 +145,9 @@ std::string FinishedPart::toDxf() const {
   auto lines = [&](const std::vector<Vec2>& pts, const char* layer) {
     for (const double sign : {1.0, -1.0})
       for (std::size_t k = 1; k < pts.size(); ++k)
-        out += fmt::format("0\nLINE\n8\n{}\n10\n{:.4f}\n20\n{:.4f}\n30\n0.0\n11\n{:.4f}\n21\n{:.4f}\n31\n0.0\n",
-                           layer, pts[k - 1].x() + 0.0, sign * pts[k - 1].y() + 0.0, pts[k].x() + 0.0,
-                           sign * pts[k].y() + 0.0);
+        out +=
+            fmt::format("0\nLINE\n8\n{}\n10\n{:.4f}\n20\n{:.4f}\n30\n0.0\n11\n{:.4f}\n21\n{:.4f}\n31\n0.0\n", layer,
+                        pts[k - 1].x() + 0.0, sign * pts[k - 1].y() + 0.0, pts[k].x() + 0.0, sign * pts[k].y() + 0.0);
   };
   lines(outerProfile(), "PART");
   lines(innerProfile(), "BORE");

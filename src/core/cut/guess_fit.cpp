@@ -23,7 +23,7 @@ struct Touch {
   int station = 0;
   bool chuck = false;  // the chuck, else the stock
   int line = 0;
-  int severity = 0;    // 1 = a warning (the run went on), 2 = the alarm that stopped it
+  int severity = 0;  // 1 = a warning (the run went on), 2 = the alarm that stopped it
 };
 
 // The guessed stations' touches of a finished run, in the order they happened
@@ -36,8 +36,8 @@ std::vector<Touch> touchesOf(const CutSimulator& sim, const machine::Timeline& t
     out.push_back({station, w.code == std::string(codes::kGuessHitsChuck), w.range.line, 1});
   }
   if (const auto& alarm = sim.alarm()) {
-    const bool stock = alarm->code == std::string(codes::kRapidIntoStock) ||
-                       alarm->code == std::string(codes::kHolderHitsStock);
+    const bool stock =
+        alarm->code == std::string(codes::kRapidIntoStock) || alarm->code == std::string(codes::kHolderHitsStock);
     const bool chuck = alarm->code == std::string(codes::kToolHitsChuck);
     const int i = sim.currentMove();
     if ((stock || chuck) && i >= 0) {
@@ -189,8 +189,7 @@ GuessFit fitGuessedTools(const machine::Timeline& timeline, const io::JobHeader&
       note.severity = Severity::Note;
       note.code = touch.chuck ? codes::kGuessReplacedChuck : codes::kGuessReplacedStock;
       note.range = SourceRange{touch.line, 1, 0};
-      note.args = {fmt::format("{:02}", touch.station), candidate->id, firstGuess,
-                   std::to_string(touch.line)};
+      note.args = {fmt::format("{:02}", touch.station), candidate->id, firstGuess, std::to_string(touch.line)};
       if (!out.notes.empty() && out.notes.back().args[0] == note.args[0]) out.notes.pop_back();  // a better one
       out.notes.push_back(std::move(note));
       out.setup = std::move(trial);

@@ -36,13 +36,16 @@ PartDeviation compareParts(const Stock& student, const Stock& reference, double 
   PartDeviation d;
   const double same = 1e-6;
   d.sameBar = std::abs(student.diameter() - reference.diameter()) < same &&
-              std::abs(student.length() - reference.length()) < same && std::abs(student.bore() - reference.bore()) < same;
+              std::abs(student.length() - reference.length()) < same &&
+              std::abs(student.bore() - reference.bore()) < same;
   const int n = reference.columnCount();
   if (n <= 0 || student.columnCount() <= 0) return d;
   const int k = std::max(0, static_cast<int>(std::ceil(zTolerance / reference.resolution() - 1e-9)));
   std::vector<double> outerLo, outerHi, innerLo, innerHi;
-  slidingRange(n, k, [&](int j) { return reference.outerRadius(j); }, outerLo, outerHi);
-  slidingRange(n, k, [&](int j) { return reference.innerRadius(j); }, innerLo, innerHi);
+  slidingRange(
+      n, k, [&](int j) { return reference.outerRadius(j); }, outerLo, outerHi);
+  slidingRange(
+      n, k, [&](int j) { return reference.innerRadius(j); }, innerLo, innerHi);
   auto note = [&d](double excess, double z, bool leftover) {
     double& worst = leftover ? d.leftover : d.gouge;
     if (2.0 * excess > worst) {

@@ -16,9 +16,9 @@ struct KindName {
 };
 
 constexpr KindName kKindNames[] = {
-    {FeatureKind::Face, "Face", "หน้าตัด"},         {FeatureKind::Cylinder, "Cylinder", "ทรงกระบอก"},
-    {FeatureKind::Taper, "Taper", "เรียว"},          {FeatureKind::Chamfer, "Chamfer", "ลบมุม"},
-    {FeatureKind::Arc, "Arc", "ส่วนโค้ง"},            {FeatureKind::Groove, "Groove", "ร่อง"},
+    {FeatureKind::Face, "Face", "หน้าตัด"},     {FeatureKind::Cylinder, "Cylinder", "ทรงกระบอก"},
+    {FeatureKind::Taper, "Taper", "เรียว"},    {FeatureKind::Chamfer, "Chamfer", "ลบมุม"},
+    {FeatureKind::Arc, "Arc", "ส่วนโค้ง"},      {FeatureKind::Groove, "Groove", "ร่อง"},
     {FeatureKind::Thread, "Thread", "เกลียว"},
 };
 
@@ -78,24 +78,21 @@ std::string featureLabel(const PartFeature& f, Lang lang) { return featureLabel(
 std::string featureLabel(const PartFeature& f, Lang lang, const UnitFormat& units) {
   const Words w{units};
   switch (f.kind) {
-    case FeatureKind::Cylinder:
-      return "Ø" + w.size(f.diameter);
-    case FeatureKind::Face:
-      return "Z" + w.face(f.zLeft);
+    case FeatureKind::Cylinder: return "Ø" + w.size(f.diameter);
+    case FeatureKind::Face: return "Z" + w.face(f.zLeft);
     case FeatureKind::Chamfer:
       // An inch drawing writes a 45° chamfer as "0.050″ × 45°", a metric one "C1.25".
       if (f.isFortyFiveChamfer()) return units.inch() ? w.size(f.radialHeight) + " × 45°" : "C" + num(f.radialHeight);
       return w.size(f.axialLength) + " × " + num(f.angle, 1) + "°";
-    case FeatureKind::Taper:
-      return num(f.angle, 2) + "°";
-    case FeatureKind::Arc:
-      return "R" + w.size(f.radius);
+    case FeatureKind::Taper: return num(f.angle, 2) + "°";
+    case FeatureKind::Arc: return "R" + w.size(f.radius);
     case FeatureKind::Groove:
       return fmt::format("{} {} × Ø{}", th(lang) ? "ร่อง" : "groove", w.size(f.width), w.size(f.diameter));
     case FeatureKind::Thread:
       if (units.inch()) {
         // A unified thread is named by its major Ø and threads per inch: "0.750″-16 TPI".
-        if (const double tpi = threadsPerInch(f.pitch); tpi > 0.0) return fmt::format("{}-{} TPI", w.size(f.diameter), num(tpi, 1));
+        if (const double tpi = threadsPerInch(f.pitch); tpi > 0.0)
+          return fmt::format("{}-{} TPI", w.size(f.diameter), num(tpi, 1));
         return "Ø" + w.size(f.diameter) + " × P" + w.size(f.pitch);
       }
       return "M" + num(f.diameter, 1) + "×" + num(f.pitch);
@@ -108,35 +105,33 @@ std::string describeFeature(const PartFeature& f, Lang lang) { return describeFe
 std::string describeFeature(const PartFeature& f, Lang lang, const UnitFormat& units) {
   const Words w{units};
   const std::string kind = featureKindName(f.kind, lang);
-  const std::string where =
-      f.kind == FeatureKind::Face
-          ? fmt::format("Z{}", w.place(f.zLeft))
-          : say(lang, "Z{} to Z{}", "Z{} ถึง Z{}", w.place(f.zRight), w.place(f.zLeft));
+  const std::string where = f.kind == FeatureKind::Face
+                                ? fmt::format("Z{}", w.place(f.zLeft))
+                                : say(lang, "Z{} to Z{}", "Z{} ถึง Z{}", w.place(f.zRight), w.place(f.zLeft));
   const std::string inside = f.side == FeatureSide::Inside ? (th(lang) ? " (ด้านใน)" : " (inside)") : "";
   switch (f.kind) {
     case FeatureKind::Face:
       return say(lang, "{}{} at {} from Ø{} to Ø{}", "{}{} ที่ {} จาก Ø{} ถึง Ø{}", kind, inside, where,
-                         w.exact(f.diameterLeft), w.exact(f.diameterRight));
+                 w.exact(f.diameterLeft), w.exact(f.diameterRight));
     case FeatureKind::Cylinder:
-      return say(lang, "{}{} Ø{}, {}, length {}", "{}{} Ø{} {} ยาว {}", kind, inside,
-                         w.exact(f.diameter), where, w.exact(f.length()));
+      return say(lang, "{}{} Ø{}, {}, length {}", "{}{} Ø{} {} ยาว {}", kind, inside, w.exact(f.diameter), where,
+                 w.exact(f.length()));
     case FeatureKind::Taper:
     case FeatureKind::Chamfer:
-      return say(lang, "{}{} {} ({} × {}°), Ø{} to Ø{}, {}", "{}{} {} ({} × {}°) Ø{} ถึง Ø{} {}", kind,
-                         inside, featureLabel(f, lang, units), w.exact(f.axialLength), num(f.angle, 2),
-                         w.exact(f.diameterRight), w.exact(f.diameterLeft), where);
+      return say(lang, "{}{} {} ({} × {}°), Ø{} to Ø{}, {}", "{}{} {} ({} × {}°) Ø{} ถึง Ø{} {}", kind, inside,
+                 featureLabel(f, lang, units), w.exact(f.axialLength), num(f.angle, 2), w.exact(f.diameterRight),
+                 w.exact(f.diameterLeft), where);
     case FeatureKind::Arc:
-      return say(lang, "{}{} R{} {}, centre Z{} X{}, {}", "{}{} R{} {} จุดศูนย์กลาง Z{} X{} {}", kind,
-                         inside, w.exact(f.radius),
-                         f.convex ? (th(lang) ? "มุมนูน" : "round") : (th(lang) ? "มุมเว้า" : "fillet"),
-                         w.place(f.centre.x()), w.place(2.0 * f.centre.y()), where);
+      return say(lang, "{}{} R{} {}, centre Z{} X{}, {}", "{}{} R{} {} จุดศูนย์กลาง Z{} X{} {}", kind, inside,
+                 w.exact(f.radius), f.convex ? (th(lang) ? "มุมนูน" : "round") : (th(lang) ? "มุมเว้า" : "fillet"),
+                 w.place(f.centre.x()), w.place(2.0 * f.centre.y()), where);
     case FeatureKind::Groove:
-      return say(lang, "{}{} width {}, depth {}, Ø{}, {}", "{}{} กว้าง {} ลึก {} Ø{} {}", kind, inside,
-                         w.exact(f.width), w.exact(f.depth), w.exact(f.diameter), where);
+      return say(lang, "{}{} width {}, depth {}, Ø{}, {}", "{}{} กว้าง {} ลึก {} Ø{} {}", kind, inside, w.exact(f.width),
+                 w.exact(f.depth), w.exact(f.diameter), where);
     case FeatureKind::Thread:
-      return say(lang, "{}{} {}, pitch {}, major Ø{}, minor Ø{}, {}", "{}{} {} ระยะพิตช์ {} Ø นอก {} Ø ใน {} {}",
-                         kind, inside, featureLabel(f, lang, units), w.exact(f.pitch),
-                         w.exact(f.diameter), w.exact(f.minorDiameter), where);
+      return say(lang, "{}{} {}, pitch {}, major Ø{}, minor Ø{}, {}", "{}{} {} ระยะพิตช์ {} Ø นอก {} Ø ใน {} {}", kind,
+                 inside, featureLabel(f, lang, units), w.exact(f.pitch), w.exact(f.diameter), w.exact(f.minorDiameter),
+                 where);
   }
   return kind;
 }

@@ -61,8 +61,10 @@ Stock cropToSpan(const Stock& stock, const PartSpan& span) {
   const double all = stock.diameter();
   for (int i = 0; i < out.columnCount(); ++i) {
     const double zc = out.zCentre(i);
-    if (zc < span.zLeft || zc > span.zRight) out.remove(i, 0.0, all);
-    else if (zc < span.trimUntil) out.remove(i, span.trimRadius, all);
+    if (zc < span.zLeft || zc > span.zRight)
+      out.remove(i, 0.0, all);
+    else if (zc < span.trimUntil)
+      out.remove(i, span.trimRadius, all);
   }
   return out;
 }

@@ -12,11 +12,11 @@ struct Piece {
   bool arc = false;
   int first = 0;
   int last = 0;
-  double a = 0.0, b = 0.0;  // line: r = a + b·z
+  double a = 0.0, b = 0.0;     // line: r = a + b·z
   Vec2 centre = Vec2::Zero();  // arc
   double radius = 0.0;
-  bool upper = false;       // arc: the profile is the circle's upper half (r above the centre)
-  double zLeft = 0.0;       // resolved extent (set by resolveJoins or the caller)
+  bool upper = false;  // arc: the profile is the circle's upper half (r above the centre)
+  double zLeft = 0.0;  // resolved extent (set by resolveJoins or the caller)
   double zRight = 0.0;
   double at(double z) const;  // r on the carrier (an arc clamps z into its circle)
 };

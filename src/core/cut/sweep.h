@@ -78,8 +78,8 @@ void visitColumns(const MaterialCull& cull, int first, int last, Bound&& bound, 
 // columns p..q. With `exact`, the sweep's own lo is bottom + a.y() to the bit on
 // a move along Z (a.y() == b.y()), so a pass over the surface it or its twin cut
 // is skipped; otherwise rounding may differ and a margin keeps the bound below.
-inline double lineBound(const Grid& g, int p, int q, const Vec2& a, const Vec2& b, double z0, double z1,
-                        double bottom, bool exact, bool alongX) {
+inline double lineBound(const Grid& g, int p, int q, const Vec2& a, const Vec2& b, double z0, double z1, double bottom,
+                        bool exact, bool alongX) {
   const double yLo = std::min(a.y(), b.y());
   const double margin = 1e-9 * (1.0 + std::abs(a.y()) + std::abs(b.y()) + std::abs(bottom));
   if (alongX) return exact ? yLo + bottom : yLo + bottom - margin;  // the sweep's own branch for dz ~ 0
@@ -124,8 +124,7 @@ void sweepBoxLine(const Grid& g, const Vec2& a, const Vec2& b, const Box& box, F
 // Trapezoid (local) swept along the line a -> b. x(s) + bottom(z - z(s)) is
 // linear in s, so the extremes over the s-range sit at its ends.
 template <typename F, typename Cull = NoCull>
-void sweepTrapezoidLine(const Grid& g, const Vec2& a, const Vec2& b, const Trapezoid& t, F&& f,
-                        const Cull& cull = {}) {
+void sweepTrapezoidLine(const Grid& g, const Vec2& a, const Vec2& b, const Trapezoid& t, F&& f, const Cull& cull = {}) {
   const double dz = b.x() - a.x();
   int first, last;
   g.range(std::min(a.x(), b.x()) + t.z0, std::max(a.x(), b.x()) + t.z1, first, last);
@@ -182,19 +181,25 @@ void sweepDiscLine(const Grid& g, Vec2 a, Vec2 b, double r, F&& f, const Cull& c
     return;
   }
   const Vec2 d = (b - a) / len;
-  const Vec2 down(d.y() * r, -d.x() * r);  // normal with negative x, length r
+  const Vec2 down(d.y() * r, -d.x() * r);                         // normal with negative x, length r
   const double tLoA = a.x() + down.x(), tLoB = b.x() + down.x();  // lower tangent points' z
   const double tHiA = a.x() - down.x(), tHiB = b.x() - down.x();  // upper tangent points' z
   const double slope = (b.y() - a.y()) / (b.x() - a.x());
   visitColumns(cull, first, last, bound, [&](int i) {
     const double z = g.centre(i);
     double lo, hi;
-    if (z < tLoA) lo = a.y() - half(z - a.x());
-    else if (z > tLoB) lo = b.y() - half(z - b.x());
-    else lo = a.y() + down.y() + (z - tLoA) * slope;
-    if (z < tHiA) hi = a.y() + half(z - a.x());
-    else if (z > tHiB) hi = b.y() + half(z - b.x());
-    else hi = a.y() - down.y() + (z - tHiA) * slope;
+    if (z < tLoA)
+      lo = a.y() - half(z - a.x());
+    else if (z > tLoB)
+      lo = b.y() - half(z - b.x());
+    else
+      lo = a.y() + down.y() + (z - tLoA) * slope;
+    if (z < tHiA)
+      hi = a.y() + half(z - a.x());
+    else if (z > tHiB)
+      hi = b.y() + half(z - b.x());
+    else
+      hi = a.y() - down.y() + (z - tHiA) * slope;
     if (hi >= lo) f(i, lo, hi);
   });
 }

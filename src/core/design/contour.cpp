@@ -224,20 +224,13 @@ std::string noteOf(const ContourMove& m, const Words& t) {
   };
   const std::string d = plain(std::abs(m.x));
   switch (m.note) {
-    case MoveNote::Face:
-      return say("face to D{}", "หน้าตัดถึง D{}", d);
-    case MoveNote::Chamfer:
-      return say("chamfer C{}", "ลบมุม C{}", plain(m.noteSize));
-    case MoveNote::Round:
-      return say("round R{}", "มุมโค้ง R{}", plain(m.noteSize));
-    case MoveNote::Cylinder:
-      return say("D{}, {} long", "D{} ยาว {}", d, plain(m.noteSize));
-    case MoveNote::Taper:
-      return say("taper to D{}", "เรียวถึง D{}", d);
-    case MoveNote::Arc:
-      return say("arc R{} to D{}", "ส่วนโค้ง R{} ถึง D{}", plain(m.noteSize), d);
-    case MoveNote::None:
-      break;
+    case MoveNote::Face: return say("face to D{}", "หน้าตัดถึง D{}", d);
+    case MoveNote::Chamfer: return say("chamfer C{}", "ลบมุม C{}", plain(m.noteSize));
+    case MoveNote::Round: return say("round R{}", "มุมโค้ง R{}", plain(m.noteSize));
+    case MoveNote::Cylinder: return say("D{}, {} long", "D{} ยาว {}", d, plain(m.noteSize));
+    case MoveNote::Taper: return say("taper to D{}", "เรียวถึง D{}", d);
+    case MoveNote::Arc: return say("arc R{} to D{}", "ส่วนโค้ง R{} ถึง D{}", plain(m.noteSize), d);
+    case MoveNote::None: break;
   }
   return {};
 }

@@ -54,19 +54,14 @@ std::string num3(double v) {
 // The feature's sizes to the micron, for when the short label reads as the drawing's.
 std::string preciseLabel(const PartFeature& f) {
   switch (f.kind) {
-    case FeatureKind::Cylinder:
-      return "Ø" + num3(f.diameter);
+    case FeatureKind::Cylinder: return "Ø" + num3(f.diameter);
     case FeatureKind::Chamfer:
       if (std::abs(f.radialHeight - f.axialLength) < 5e-4) return "C" + num3(f.radialHeight);
       return num3(f.axialLength) + " × " + num3(f.radialHeight);
-    case FeatureKind::Arc:
-      return "R" + num3(f.radius);
-    case FeatureKind::Groove:
-      return num3(f.width) + " × Ø" + num3(f.diameter);
-    case FeatureKind::Thread:
-      return "M" + num3(f.diameter) + "×" + num3(f.pitch);
-    default:
-      return neutralLabel(f);
+    case FeatureKind::Arc: return "R" + num3(f.radius);
+    case FeatureKind::Groove: return num3(f.width) + " × Ø" + num3(f.diameter);
+    case FeatureKind::Thread: return "M" + num3(f.diameter) + "×" + num3(f.pitch);
+    default: return neutralLabel(f);
   }
 }
 

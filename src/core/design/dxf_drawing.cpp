@@ -168,8 +168,9 @@ std::pair<std::string, std::string> unreadableByDxflib(const std::string& text) 
     while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.remove_suffix(1);
     if (end - at >= 1023) {
       const std::string n = std::to_string(lines.size() + 1), length = std::to_string(end - at);
-      return {"line " + n + " is " + length + " characters long (a DXF line holds one code or one value): it is corrupt",
-              "บรรทัด " + n + " ยาว " + length + " ตัวอักษร (บรรทัดของ DXF มีรหัสหรือค่าเพียงหนึ่งอย่าง): ไฟล์เสียหาย"};
+      return {
+          "line " + n + " is " + length + " characters long (a DXF line holds one code or one value): it is corrupt",
+          "บรรทัด " + n + " ยาว " + length + " ตัวอักษร (บรรทัดของ DXF มีรหัสหรือค่าเพียงหนึ่งอย่าง): ไฟล์เสียหาย"};
     }
     lines.push_back(line);
     at = end + 1;
@@ -189,7 +190,7 @@ std::pair<std::string, std::string> unreadableByDxflib(const std::string& text) 
     if (code == 0 || code == 9) entity = lines[i + 1];
     // Only where dxflib allocates by them (an MLEADER's group 90 holds flags, not a count).
     const bool counts = (entity == "LWPOLYLINE" && code == 90) || (entity == "LEADER" && code == 76) ||
-                       (entity == "SPLINE" && code >= 72 && code <= 74);
+                        (entity == "SPLINE" && code >= 72 && code <= 74);
     // (dxflib keeps strtol's long as an int: -3000000000 becomes 1294967296.)
     const long count = counts ? number(lines[i + 1]) : 0;
     // Reals (points 10-39, values 40-59): dxflib reads them with istream >>, which

@@ -27,9 +27,9 @@ struct DxfOddEntity {
 
 struct DxfDrawing {
   bool parsed = false;
-  std::string why;          // when not parsed (English)
-  std::string whyThai;      // the same in Thai
-  int insunits = 0;         // $INSUNITS: 0 unitless, 1 in, 4 mm, ...
+  std::string why;      // when not parsed (English)
+  std::string whyThai;  // the same in Thai
+  int insunits = 0;     // $INSUNITS: 0 unitless, 1 in, 4 mm, ...
   std::vector<DxfSegment> segments;
   std::vector<DxfOddEntity> odd;
 };

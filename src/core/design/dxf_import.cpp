@@ -88,7 +88,8 @@ class Importer {
     if (units.factor == 0.0) return fail(codes::kDxfUnits, {file_, std::to_string(drawing.insunits)});
     scale_ = units.factor;
     if (scale_ != 1.0)
-      out_.diagnostics.push_back(fileProblem(codes::kDxfInches, {file_, fmt::format("{}", scale_), units.name}, Severity::Note));
+      out_.diagnostics.push_back(
+          fileProblem(codes::kDxfInches, {file_, fmt::format("{}", scale_), units.name}, Severity::Note));
     if (!collect(drawing)) return;
     std::vector<Walked> chain;
     if (!join(chain)) return;
@@ -121,7 +122,9 @@ class Importer {
   std::vector<DxfSegment> segs_;     // the outline's, in mm
   bool hasBore_ = false;
 
-  void fail(const char* code, std::vector<std::string> args) { out_.diagnostics.push_back(fileProblem(code, std::move(args))); }
+  void fail(const char* code, std::vector<std::string> args) {
+    out_.diagnostics.push_back(fileProblem(code, std::move(args)));
+  }
   // The drawing's own X Y of a part point (z, radius).
   std::string X(const Vec2& p) const { return mm((p.x() + right_) / scale_); }
   std::string Y(const Vec2& p) const { return mm((p.y() + axis_) / scale_); }
@@ -134,7 +137,8 @@ class Importer {
     for (const std::string& l : layers) list += (list.empty() ? "" : ", ") + l;
     if (!options_.layer.empty()) {
       layer_ = options_.layer;
-      if (!layers.count(layer_)) return fail(codes::kDxfNothingOnLayer, {file_, layer_, list.empty() ? "-" : list}), false;
+      if (!layers.count(layer_))
+        return fail(codes::kDxfNothingOnLayer, {file_, layer_, list.empty() ? "-" : list}), false;
       return true;
     }
     if (layers.empty()) return fail(codes::kDxfNothingOnLayer, {file_, "0", "-"}), false;
@@ -196,7 +200,8 @@ class Importer {
         // The gap to close: to the nearest other loose end (off the axis).
         double gap = 1e300;
         for (std::size_t j = 0; j < 2 * n; ++j)
-          if (j / 2 != i / 2 && meets[j].empty() && ends[j].y() > kJoin) gap = std::min(gap, (ends[i] - ends[j]).norm());
+          if (j / 2 != i / 2 && meets[j].empty() && ends[j].y() > kJoin)
+            gap = std::min(gap, (ends[i] - ends[j]).norm());
         const std::string g = gap == 1e300 ? "-" : mm(gap);
         if (segs_[i / 2].arc)
           return fail(codes::kDxfArcApart, {file_, mm(segs_[i / 2].radius / scale_), X(ends[i]), Y(ends[i]), g}), false;
@@ -234,8 +239,8 @@ class Importer {
   }
 
   // The outside (from the face's top) or the bore (from its bottom), walked leftward to the left end.
-  bool walk(const std::vector<Walked>& chain, bool outside, std::vector<OutsideStep>& steps, std::vector<Groove>* grooves,
-            double& leftEnd) {
+  bool walk(const std::vector<Walked>& chain, bool outside, std::vector<OutsideStep>& steps,
+            std::vector<Groove>* grooves, double& leftEnd) {
     const std::size_t n = chain.size();
     const bool loop = (chain.front().a - chain.back().b).norm() <= kJoin;
     double left = 0.0;
@@ -250,7 +255,9 @@ class Importer {
       if (!found || (outside ? p.y() > best : p.y() < best)) first = k, best = p.y(), found = true;
     }
     // Which way leaves the face: forward (chain[first] onward) unless that runs along Z0.
-    const auto offFace = [&](const Walked& w) { return w.b.x() < -kJoin || (outside ? w.b.y() > w.a.y() : w.b.y() < w.a.y()); };
+    const auto offFace = [&](const Walked& w) {
+      return w.b.x() < -kJoin || (outside ? w.b.y() > w.a.y() : w.b.y() < w.a.y());
+    };
     std::vector<Walked> path;
     if (found && offFace(chain[first])) {
       for (std::size_t k = first; k < n + (loop ? first : 0); ++k) path.push_back(chain[k % n]);
@@ -273,7 +280,8 @@ class Importer {
     return toSteps(run, outside ? 1.0 : -1.0, steps, grooves);
   }
 
-  bool toSteps(const std::vector<Walked>& run, double side, std::vector<OutsideStep>& steps, std::vector<Groove>* grooves) {
+  bool toSteps(const std::vector<Walked>& run, double side, std::vector<OutsideStep>& steps,
+               std::vector<Groove>* grooves) {
     const auto isFace = [](const Walked& w) { return !w.arc && std::abs(w.b.x() - w.a.x()) <= kJoin; };
     const auto isFlat = [](const Walked& w) { return !w.arc && std::abs(w.b.y() - w.a.y()) <= kJoin; };
     bool afterFace = true;
@@ -287,7 +295,8 @@ class Importer {
       if (isFace(w)) {
         // Down, across and up again to the same diameter: a groove in the cylinder.
         if (grooves && rise < -kJoin && i + 2 < run.size() && nextFlat && isFace(run[i + 2]) &&
-            std::abs(run[i + 2].b.y() - w.a.y()) <= kJoin && !steps.empty() && steps.back().kind == StepKind::Cylinder) {
+            std::abs(run[i + 2].b.y() - w.a.y()) <= kJoin && !steps.empty() &&
+            steps.back().kind == StepKind::Cylinder) {
           const double width = w.a.x() - run[i + 1].b.x();
           if (round3(2.0 * run[i + 1].a.y()) <= 0.0 || round3(width) <= 0.0)
             return fail(codes::kDxfReachesAxis, {file_, X(run[i + 1].a), Y(run[i + 1].a)}), false;
@@ -305,7 +314,8 @@ class Importer {
       if (round3(len) <= 0.0 && !isFace(w)) continue;  // a sliver drawn by the CAD's rounding
       if (d <= 0.0 || (grooves && std::abs(w.b.y()) <= kJoin))
         return fail(codes::kDxfReachesAxis, {file_, X(w.b), Y(w.b)}), false;
-      if (w.arc && !(w.radius <= 10000.0)) return fail(codes::kDxfArcTooFlat, {file_, mm(w.radius / scale_), X(w.b), Y(w.b)}), false;
+      if (w.arc && !(w.radius <= 10000.0))
+        return fail(codes::kDxfArcTooFlat, {file_, mm(w.radius / scale_), X(w.b), Y(w.b)}), false;
       if (isFlat(w)) {
         // The cylinder beyond a groove goes on as the same step.
         if (!afterFace && !steps.empty() && steps.back().kind == StepKind::Cylinder &&
@@ -326,7 +336,8 @@ class Importer {
         pending = EdgeBreak::Round;  // a quarter round between a face and a cylinder
         pendingSize = w.radius;
       } else {
-        if (w.arc && side < 0.0) return fail(codes::kDxfArcInBore, {file_, mm(w.radius / scale_), X(w.b), Y(w.b)}), false;
+        if (w.arc && side < 0.0)
+          return fail(codes::kDxfArcInBore, {file_, mm(w.radius / scale_), X(w.b), Y(w.b)}), false;
         OutsideStep s{w.arc ? StepKind::Arc : StepKind::Taper, d, round3(len)};
         if (w.arc) s.radius = round3(w.radius), s.concave = !convex;
         steps.push_back(s);
@@ -339,7 +350,8 @@ class Importer {
 
 }  // namespace
 
-io::ReadResult<PartDesign> importDxf(const std::string& text, const std::string& fileName, const DxfImportOptions& options) {
+io::ReadResult<PartDesign> importDxf(const std::string& text, const std::string& fileName,
+                                     const DxfImportOptions& options) {
   io::ReadResult<PartDesign> out;
   Importer(fileName, options, out).run(text);
   return out;

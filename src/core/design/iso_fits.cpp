@@ -14,7 +14,8 @@ namespace {
 // The 25 size ranges' upper ends; most tables only split at the 13 main ones.
 constexpr std::array<double, 25> kFine = {3,   6,   10,  14,  18,  24,  30,  40,  50,  65,  80,  100, 120,
                                           140, 160, 180, 200, 225, 250, 280, 315, 355, 400, 450, 500};
-constexpr std::array<int, 25> kMainOf = {0, 1, 2, 3, 3, 4, 4, 5, 5, 6, 6, 7, 7, 8, 8, 8, 9, 9, 9, 10, 10, 11, 11, 12, 12};
+constexpr std::array<int, 25> kMainOf = {0, 1, 2, 3, 3, 4, 4,  5,  5,  6,  6,  7, 7,
+                                         8, 8, 8, 9, 9, 9, 10, 10, 11, 11, 12, 12};
 
 // Standard tolerance grades IT1-IT18 by main range (µm).
 constexpr double kIt[18][13] = {
@@ -49,9 +50,9 @@ constexpr double kK[13] = {0, 1, 1, 1, 2, 2, 2, 3, 3, 4, 4, 4, 5};  // grades 4-
 constexpr double kM[13] = {2, 4, 6, 7, 8, 9, 11, 13, 15, 17, 20, 21, 23};
 constexpr double kN[13] = {4, 8, 10, 12, 15, 17, 20, 23, 27, 31, 34, 37, 40};
 constexpr double kP[13] = {6, 12, 15, 18, 22, 26, 32, 37, 43, 50, 56, 62, 68};
-constexpr double kR[25] = {10, 15, 19, 23, 23, 28, 28, 34, 34, 41, 43, 51, 54,
+constexpr double kR[25] = {10, 15, 19, 23, 23, 28, 28, 34, 34,  41,  43,  51, 54,
                            63, 65, 68, 77, 80, 84, 94, 98, 108, 114, 126, 132};
-constexpr double kS[25] = {14, 19, 23, 28, 28, 35, 35, 43, 43, 53, 59, 71, 79,
+constexpr double kS[25] = {14, 19,  23,  28,  28,  35,  35,  43,  43,  53,  59,  71, 79,
                            92, 100, 108, 122, 130, 140, 158, 170, 190, 208, 232, 252};
 
 struct ShaftDeviation {
@@ -122,9 +123,12 @@ std::optional<cut::Tolerance> isoFit(const std::string& toleranceClass, double s
   double es = 0.0;
   if (lower == "k" || lower == "m" || lower == "n") {
     if (grade < 3) return std::nullopt;  // the standard has no Δ below IT3
-    if (grade <= 8) es = -shaft->value + delta;
-    else if (lower == "m" || size <= 3.0) es = -shaft->value;
-    else es = 0.0;  // K and N above IT8 over 3 mm
+    if (grade <= 8)
+      es = -shaft->value + delta;
+    else if (lower == "m" || size <= 3.0)
+      es = -shaft->value;
+    else
+      es = 0.0;  // K and N above IT8 over 3 mm
     if (lower == "k" && grade <= 8) es = -(size <= 3.0 ? 0.0 : kK[main]) + delta;
   } else {
     if (grade < 3) return std::nullopt;

@@ -241,15 +241,10 @@ class Checker {
           checkSequenceNumber(w);
           if (i != 0) emit(codes::kNNotFirst, w, {wordText(w)});
           break;
-        case 'O':
-          checkProgramNumber(w, i == 0 && wordCount == 1, firstBlock);
-          break;
+        case 'O': checkProgramNumber(w, i == 0 && wordCount == 1, firstBlock); break;
         case 'G':
-        case 'M':
-          readCode(w, seen);
-          break;
-        default:
-          break;
+        case 'M': readCode(w, seen); break;
+        default: break;
       }
     }
   }
@@ -484,20 +479,15 @@ class Checker {
   static char defaultKind(char l) {
     switch (l) {
       case 'F':
-      case 'S':
-        return '+';
+      case 'S': return '+';
       case 'P':
-      case 'Q':
-        return '#';
-      case 'T':
-        return 'T';
+      case 'Q': return '#';
+      case 'T': return 'T';
       case 'G':
       case 'M':
       case 'N':
-      case 'O':
-        return 0;  // checked with the codes
-      default:
-        return '.';
+      case 'O': return 0;  // checked with the codes
+      default: return '.';
     }
   }
 
@@ -508,9 +498,7 @@ class Checker {
       kind = profile_.dwellP == DwellPUnit::SecondsWithPointElseMs && w.hasDecimalPoint ? 's' : '#';
     if (kind == 'i') kind = w.hasDecimalPoint ? '+' : '#';  // Q5. is 5 mm, Q5000 is 5000 increments
     switch (kind) {
-      case '.':
-        checkReal(w, false);
-        break;
+      case '.': checkReal(w, false); break;
       case '+': {
         // S (rpm, m/min or ft/min) keeps one range in both units.
         const bool unitless = w.letter == 'S';
@@ -532,11 +520,8 @@ class Checker {
         else
           checkReal(w, false);
         break;
-      case 'T':
-        checkTool(w);
-        break;
-      default:
-        break;
+      case 'T': checkTool(w); break;
+      default: break;
     }
   }
 

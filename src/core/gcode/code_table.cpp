@@ -619,62 +619,34 @@ std::optional<CodeInfo> lookupCode(char letter, int number, Dialect dialect) {
 
 std::string_view modalGroupNumber(ModalGroup group) {
   switch (group) {
-    case ModalGroup::NonModal:
-      return "00";
-    case ModalGroup::Motion:
-      return "01";
-    case ModalGroup::SpindleMode:
-      return "02";
-    case ModalGroup::FeedMode:
-      return "05";
-    case ModalGroup::Units:
-      return "06";
-    case ModalGroup::NoseComp:
-      return "07";
-    case ModalGroup::CannedCycle:
-      return "10";
-    case ModalGroup::MacroModal:
-      return "12";
-    case ModalGroup::Distance:
-      return "03";
-    case ModalGroup::ReturnLevel:
-      return "11";
-    case ModalGroup::WorkOffset:
-      return "14";
-    case ModalGroup::Plane:
-      return "16";
-    case ModalGroup::MSpindle:
-      return "M03/M04/M05";
-    case ModalGroup::MCoolant:
-      return "M08/M09";
-    case ModalGroup::MCAxis:
-      return "M41/M91";
-    case ModalGroup::MBrake:
-      return "M86/M87";
-    case ModalGroup::MGear:
-      return "M41/M42";
-    case ModalGroup::MProgram:
-      return "M00/M01/M02/M30";
-    case ModalGroup::MSubprogram:
-      return "M98/M99";
-    case ModalGroup::MChuck:
-      return "M10/M11";
-    case ModalGroup::MAirBlast:
-      return "M12/M13";
-    case ModalGroup::MTailstock:
-      return "M21/M22";
-    case ModalGroup::MThreadChamfer:
-      return "M23/M24";
-    case ModalGroup::MConveyor:
-      return "M31/M33";
-    case ModalGroup::MPartsCatcher:
-      return "M36/M37";
-    case ModalGroup::MDoor:
-      return "M85/M86";
-    case ModalGroup::MHighPressureCoolant:
-      return "M88/M89";
-    case ModalGroup::MOther:
-      return "M";
+    case ModalGroup::NonModal: return "00";
+    case ModalGroup::Motion: return "01";
+    case ModalGroup::SpindleMode: return "02";
+    case ModalGroup::FeedMode: return "05";
+    case ModalGroup::Units: return "06";
+    case ModalGroup::NoseComp: return "07";
+    case ModalGroup::CannedCycle: return "10";
+    case ModalGroup::MacroModal: return "12";
+    case ModalGroup::Distance: return "03";
+    case ModalGroup::ReturnLevel: return "11";
+    case ModalGroup::WorkOffset: return "14";
+    case ModalGroup::Plane: return "16";
+    case ModalGroup::MSpindle: return "M03/M04/M05";
+    case ModalGroup::MCoolant: return "M08/M09";
+    case ModalGroup::MCAxis: return "M41/M91";
+    case ModalGroup::MBrake: return "M86/M87";
+    case ModalGroup::MGear: return "M41/M42";
+    case ModalGroup::MProgram: return "M00/M01/M02/M30";
+    case ModalGroup::MSubprogram: return "M98/M99";
+    case ModalGroup::MChuck: return "M10/M11";
+    case ModalGroup::MAirBlast: return "M12/M13";
+    case ModalGroup::MTailstock: return "M21/M22";
+    case ModalGroup::MThreadChamfer: return "M23/M24";
+    case ModalGroup::MConveyor: return "M31/M33";
+    case ModalGroup::MPartsCatcher: return "M36/M37";
+    case ModalGroup::MDoor: return "M85/M86";
+    case ModalGroup::MHighPressureCoolant: return "M88/M89";
+    case ModalGroup::MOther: return "M";
   }
   return "?";
 }

@@ -56,12 +56,8 @@ BlockKind kindOf(const Block& b, Dialect dialect) {
     if (!row) continue;
     switch (row->action) {
       case CodeAction::MacroCall:
-      case CodeAction::MacroModalCall:
-        k.passedAsWritten = true;
-        break;
-      case CodeAction::Dwell:
-        k.dwell = true;
-        break;
+      case CodeAction::MacroModalCall: k.passedAsWritten = true; break;
+      case CodeAction::Dwell: k.dwell = true; break;
       case CodeAction::PatternRepeating:
         k.cycle = true;
         if (!b.has('P')) k.rIsCount = true;
@@ -71,11 +67,8 @@ BlockKind kindOf(const Block& b, Dialect dialect) {
       case CodeAction::FaceRoughing:
       case CodeAction::FacePecking:
       case CodeAction::Grooving:
-      case CodeAction::ThreadCutting:
-        k.cycle = true;
-        break;
-      default:
-        break;
+      case CodeAction::ThreadCutting: k.cycle = true; break;
+      default: break;
     }
   }
   return k;

@@ -126,8 +126,7 @@ class FlowChecker {
             }
           break;
         }
-        default:
-          break;
+        default: break;
       }
       if (st.kind == StatementKind::None) {
         checkCalls(b, section, i);

@@ -184,19 +184,16 @@ std::pair<std::string, std::string> expected(const Key& k) {
               "จำนวนเต็มตั้งแต่ " + num(k.min) + " ถึง " + num(k.max)};
     case Type::Real:
       return {"a number from " + num(k.min) + " to " + num(k.max), "ตัวเลขตั้งแต่ " + num(k.min) + " ถึง " + num(k.max)};
-    case Type::Flag:
-      return {"0 or 1", "0 หรือ 1"};
+    case Type::Flag: return {"0 or 1", "0 หรือ 1"};
     case Type::Choice: {
       std::string list(k.choices);
       std::replace(list.begin(), list.end(), '|', ' ');
       return {"one of: " + list, "ค่าใดค่าหนึ่งต่อไปนี้: " + list};
     }
-    case Type::Text:
-      return {"a text", "ข้อความ"};
+    case Type::Text: return {"a text", "ข้อความ"};
     case Type::Numbers:
       return {"whole numbers from 0 to 99 separated by blanks, or none", "จำนวนเต็ม 0 ถึง 99 คั่นด้วยช่องว่าง หรือ none"};
-    case Type::Letters:
-      return {"capital letters A to Z, each once", "ตัวอักษรพิมพ์ใหญ่ A ถึง Z ตัวละครั้ง"};
+    case Type::Letters: return {"capital letters A to Z, each once", "ตัวอักษรพิมพ์ใหญ่ A ถึง Z ตัวละครั้ง"};
   }
   return {};
 }

@@ -111,15 +111,27 @@ EvalResult evaluate(const Expression& expr, MacroVariables& variables) {
         push(a.value);
         break;
       }
-      case ExprOp::Eq: case ExprOp::Ne: {
+      case ExprOp::Eq:
+      case ExprOp::Ne: {
         const MacroValue b = pop(), a = pop();
         const bool e = equal(a, b);
         push((t.op == ExprOp::Eq) == e ? 1.0 : 0.0);
         break;
       }
-      case ExprOp::Add: case ExprOp::Sub: case ExprOp::Mul: case ExprOp::Div: case ExprOp::Mod:
-      case ExprOp::And: case ExprOp::Or: case ExprOp::Xor: case ExprOp::Gt: case ExprOp::Ge:
-      case ExprOp::Lt: case ExprOp::Le: case ExprOp::Atan2: case ExprOp::Pow: {
+      case ExprOp::Add:
+      case ExprOp::Sub:
+      case ExprOp::Mul:
+      case ExprOp::Div:
+      case ExprOp::Mod:
+      case ExprOp::And:
+      case ExprOp::Or:
+      case ExprOp::Xor:
+      case ExprOp::Gt:
+      case ExprOp::Ge:
+      case ExprOp::Lt:
+      case ExprOp::Le:
+      case ExprOp::Atan2:
+      case ExprOp::Pow: {
         const double b = pop().value, a = pop().value;
         double v = 0.0;
         switch (t.op) {
@@ -150,7 +162,8 @@ EvalResult evaluate(const Expression& expr, MacroVariables& variables) {
           }
           case ExprOp::Pow:
             v = std::pow(a, b);
-            if (!std::isfinite(v)) return fail(codes::kOutsideFunctionDomain, {"POW", macroNumberText(a) + ", " + macroNumberText(b)});
+            if (!std::isfinite(v))
+              return fail(codes::kOutsideFunctionDomain, {"POW", macroNumberText(a) + ", " + macroNumberText(b)});
             break;
           default: break;
         }
@@ -164,7 +177,8 @@ EvalResult evaluate(const Expression& expr, MacroVariables& variables) {
           case ExprOp::Sin: v = std::sin(a * kDeg); break;
           case ExprOp::Cos: v = std::cos(a * kDeg); break;
           case ExprOp::Tan:
-            if (std::abs(std::fmod(std::abs(a), 180.0) - 90.0) < 1e-12) return fail(codes::kOutsideFunctionDomain, {"TAN", macroNumberText(a)});
+            if (std::abs(std::fmod(std::abs(a), 180.0) - 90.0) < 1e-12)
+              return fail(codes::kOutsideFunctionDomain, {"TAN", macroNumberText(a)});
             v = std::tan(a * kDeg);
             break;
           case ExprOp::Asin:

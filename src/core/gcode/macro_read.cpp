@@ -22,10 +22,10 @@ struct Function {
   ExprOp op;
 };
 constexpr Function kFunctions[] = {
-    {"SIN", ExprOp::Sin},   {"COS", ExprOp::Cos},   {"TAN", ExprOp::Tan},     {"ASIN", ExprOp::Asin},
-    {"ACOS", ExprOp::Acos}, {"ATAN", ExprOp::Atan}, {"SQRT", ExprOp::Sqrt},   {"SQR", ExprOp::Sqrt},
+    {"SIN", ExprOp::Sin},   {"COS", ExprOp::Cos},     {"TAN", ExprOp::Tan},   {"ASIN", ExprOp::Asin},
+    {"ACOS", ExprOp::Acos}, {"ATAN", ExprOp::Atan},   {"SQRT", ExprOp::Sqrt}, {"SQR", ExprOp::Sqrt},
     {"ABS", ExprOp::Abs},   {"ROUND", ExprOp::Round}, {"RND", ExprOp::Round}, {"FIX", ExprOp::Fix},
-    {"FUP", ExprOp::Fup},   {"LN", ExprOp::Ln},     {"EXP", ExprOp::Exp},     {"POW", ExprOp::Pow},
+    {"FUP", ExprOp::Fup},   {"LN", ExprOp::Ln},       {"EXP", ExprOp::Exp},   {"POW", ExprOp::Pow},
     {"BIN", ExprOp::Bin},   {"BCD", ExprOp::Bcd},
 };
 
@@ -35,14 +35,14 @@ struct Operator {
   int level;  // 1 comparison, 2 additive, 3 multiplicative
 };
 constexpr Operator kWordOperators[] = {
-    {"EQ", ExprOp::Eq, 1}, {"NE", ExprOp::Ne, 1}, {"GT", ExprOp::Gt, 1}, {"GE", ExprOp::Ge, 1},
-    {"LT", ExprOp::Lt, 1}, {"LE", ExprOp::Le, 1}, {"OR", ExprOp::Or, 2}, {"XOR", ExprOp::Xor, 2},
+    {"EQ", ExprOp::Eq, 1},   {"NE", ExprOp::Ne, 1},   {"GT", ExprOp::Gt, 1}, {"GE", ExprOp::Ge, 1},
+    {"LT", ExprOp::Lt, 1},   {"LE", ExprOp::Le, 1},   {"OR", ExprOp::Or, 2}, {"XOR", ExprOp::Xor, 2},
     {"AND", ExprOp::And, 3}, {"MOD", ExprOp::Mod, 3},
 };
 
 // Statement keywords (the parser reads them, parser.cpp), for isMacroKeyword.
-constexpr const char* kStatementWords[] = {"IF",    "THEN",  "GOTO",  "WHILE", "DO",
-                                           "END",   "POPEN", "PCLOS", "DPRNT", "BPRNT"};
+constexpr const char* kStatementWords[] = {"IF",  "THEN",  "GOTO",  "WHILE", "DO",
+                                           "END", "POPEN", "PCLOS", "DPRNT", "BPRNT"};
 
 class Reader {
  public:
@@ -188,10 +188,16 @@ class Reader {
   bool number() {
     const std::size_t start = i_;
     bool digits = false;
-    while (i_ < s_.size() && std::isdigit(static_cast<unsigned char>(s_[i_]))) { ++i_; digits = true; }
+    while (i_ < s_.size() && std::isdigit(static_cast<unsigned char>(s_[i_]))) {
+      ++i_;
+      digits = true;
+    }
     if (i_ < s_.size() && s_[i_] == '.') {
       ++i_;
-      while (i_ < s_.size() && std::isdigit(static_cast<unsigned char>(s_[i_]))) { ++i_; digits = true; }
+      while (i_ < s_.size() && std::isdigit(static_cast<unsigned char>(s_[i_]))) {
+        ++i_;
+        digits = true;
+      }
     }
     if (!digits) return fail(codes::kMacroExpectedValue, {std::string(s_.substr(start, 1))}, start);
     // 1e300, 2.5E-3: no control reads an exponent (the E would be read as a word of its own).
@@ -229,7 +235,8 @@ class Reader {
     if (std::isdigit(static_cast<unsigned char>(c))) {
       const std::size_t start = i_;
       while (i_ < s_.size() && std::isdigit(static_cast<unsigned char>(s_[i_]))) ++i_;
-      if (i_ < s_.size() && s_[i_] == '.') return fail(codes::kMacroBadVariable, {std::string(s_.substr(start, i_ + 1 - start))}, start);
+      if (i_ < s_.size() && s_[i_] == '.')
+        return fail(codes::kMacroBadVariable, {std::string(s_.substr(start, i_ + 1 - start))}, start);
       double v = 0.0;
       std::from_chars(s_.data() + start, s_.data() + i_, v);
       emit(ExprOp::Constant, v);

@@ -26,10 +26,8 @@ bool endsTheWalk(CodeAction a) {
     case CodeAction::MacroModalCall:
     case CodeAction::LocalCall:
     case CodeAction::SubprogramCall:
-    case CodeAction::SubprogramReturn:
-      return true;
-    default:
-      return false;
+    case CodeAction::SubprogramReturn: return true;
+    default: return false;
   }
 }
 
@@ -59,10 +57,8 @@ bool losesPosition(CodeAction a) {
     case CodeAction::SpotDrilling:
     case CodeAction::PeckDrilling:
     case CodeAction::Inch:
-    case CodeAction::Metric:
-      return true;
-    default:
-      return false;
+    case CodeAction::Metric: return true;
+    default: return false;
   }
 }
 
@@ -97,20 +93,12 @@ class ModalWalk {
         case 'W':
           if (!w) w = &word;
           continue;
-        case 'F':
-          feedSet_ = true;
-          continue;
-        case 'S':
-          hasS = true;
-          continue;
-        case 'T':
-          position = false;
-          continue;
+        case 'F': feedSet_ = true; continue;
+        case 'S': hasS = true; continue;
+        case 'T': position = false; continue;
         case 'G':
-        case 'M':
-          break;
-        default:
-          continue;
+        case 'M': break;
+        default: continue;
       }
       const CodeInfo* info = word.hasDecimalPoint ? nullptr : findCode(word.letter, word.code(), options_.dialect);
       if (!info) continue;
@@ -124,12 +112,8 @@ class ModalWalk {
         motionWord = &word;
       }
       switch (a) {
-        case CodeAction::ConstantSurface:
-          g96 = &word;
-          break;
-        case CodeAction::CoordinateSet:
-          coordinateSet = true;
-          [[fallthrough]];
+        case CodeAction::ConstantSurface: g96 = &word; break;
+        case CodeAction::CoordinateSet: coordinateSet = true; [[fallthrough]];
         case CodeAction::Dwell:
         case CodeAction::ReferenceCheck:
         case CodeAction::ReferenceReturn:
@@ -138,17 +122,10 @@ class ModalWalk {
         case CodeAction::MachineCoordinates:
           axisWordsNotAMove = true;  // X/Z/U/W here are a time, a point or a name, not a feed move
           break;
-        case CodeAction::Inch:
-          inch_ = true;
-          break;
-        case CodeAction::Metric:
-          inch_ = false;
-          break;
-        case CodeAction::CycleCancel:
-          drilling_ = false;
-          break;
-        default:
-          break;
+        case CodeAction::Inch: inch_ = true; break;
+        case CodeAction::Metric: inch_ = false; break;
+        case CodeAction::CycleCancel: drilling_ = false; break;
+        default: break;
       }
       if (a >= CodeAction::Finishing && a <= CodeAction::PeckDrilling) cycle = true;
       if (a >= CodeAction::Drilling && a <= CodeAction::PeckDrilling) drilling_ = true;

@@ -8,8 +8,7 @@ int programNumberAt(const Program& program, int index) {
   for (int i = index; i >= 0; --i) {
     const Block& b = program.blocks[static_cast<std::size_t>(i)];
     if (b.file != file) break;
-    if (!b.words.empty() && b.words.front().letter == 'O' && b.words.front().expr < 0)
-      return b.words.front().code();
+    if (!b.words.empty() && b.words.front().letter == 'O' && b.words.front().expr < 0) return b.words.front().code();
   }
   return 0;
 }

@@ -13,7 +13,8 @@ namespace klueng::core::gcode {
 namespace {
 
 bool startsProgram(const Block& b) {
-  return !b.words.empty() && b.words.front().letter == 'O' && b.words.front().expr < 0 && !b.words.front().hasDecimalPoint;
+  return !b.words.empty() && b.words.front().letter == 'O' && b.words.front().expr < 0 &&
+         !b.words.front().hasDecimalPoint;
 }
 
 int wholeOr(double v, int fallback) {

@@ -52,8 +52,7 @@ Diagnostic failure(const std::string& path, int err) {
     case EDQUOT:
 #endif
       return writeError(codes::kNoSpaceToWrite, {path});
-    default:
-      return writeError(codes::kCannotWriteFile, {path, std::strerror(err), thaiReason(err)});
+    default: return writeError(codes::kCannotWriteFile, {path, std::strerror(err), thaiReason(err)});
   }
 }
 

@@ -27,8 +27,7 @@ std::uint32_t readLe32(std::string_view b, std::size_t at) {
          static_cast<std::uint32_t>(static_cast<unsigned char>(b[at + 3])) << 24;
 }
 std::uint16_t readLe16(std::string_view b, std::size_t at) {
-  return static_cast<std::uint16_t>(static_cast<unsigned char>(b[at]) |
-                                    static_cast<unsigned char>(b[at + 1]) << 8);
+  return static_cast<std::uint16_t>(static_cast<unsigned char>(b[at]) | static_cast<unsigned char>(b[at + 1]) << 8);
 }
 
 Diagnostic fileError(const char* code, const std::string& fileName, std::vector<std::string> more = {}) {
@@ -67,8 +66,8 @@ ReadResult<RgbImage> decodeBmp(std::string_view b, const std::string& fileName) 
   }
   const std::uint32_t pixelOffset = readLe32(b, 10);
   const std::uint32_t headerSize = readLe32(b, 14);
-  if (headerSize != 12 && headerSize != 40 && headerSize != 52 && headerSize != 56 &&
-      headerSize != 64 && headerSize != 108 && headerSize != 124)
+  if (headerSize != 12 && headerSize != 40 && headerSize != 52 && headerSize != 56 && headerSize != 64 &&
+      headerSize != 108 && headerSize != 124)
     return damaged("unknown header size");
   if (14 + static_cast<std::size_t>(headerSize) > b.size()) {
     diags.push_back(fileError(codes::kImageTruncated, fileName));
@@ -102,13 +101,13 @@ ReadResult<RgbImage> decodeBmp(std::string_view b, const std::string& fileName) 
 
   constexpr std::uint32_t kRgb = 0, kBitfields = 3, kAlphaBitfields = 6;
   const bool indexed = bitsPerPixel == 1 || bitsPerPixel == 4 || bitsPerPixel == 8;
-  const bool supported =
-      (indexed && compression == kRgb) ||
-      ((bitsPerPixel == 16 || bitsPerPixel == 32) &&
-       (compression == kRgb || compression == kBitfields || compression == kAlphaBitfields)) ||
-      (bitsPerPixel == 24 && compression == kRgb);
+  const bool supported = (indexed && compression == kRgb) ||
+                         ((bitsPerPixel == 16 || bitsPerPixel == 32) &&
+                          (compression == kRgb || compression == kBitfields || compression == kAlphaBitfields)) ||
+                         (bitsPerPixel == 24 && compression == kRgb);
   if (!supported) {
-    diags.push_back(fileError(codes::kUnsupportedBmp, fileName, {std::to_string(bitsPerPixel), std::to_string(compression)}));
+    diags.push_back(
+        fileError(codes::kUnsupportedBmp, fileName, {std::to_string(bitsPerPixel), std::to_string(compression)}));
     return result;
   }
 
@@ -117,9 +116,13 @@ ReadResult<RgbImage> decodeBmp(std::string_view b, const std::string& fileName) 
   std::uint32_t masks[4] = {0, 0, 0, 0};
   std::size_t afterHeader = 14 + headerSize;
   if (bitsPerPixel == 16 && compression == kRgb) {
-    masks[0] = 0x7C00; masks[1] = 0x03E0; masks[2] = 0x001F;
+    masks[0] = 0x7C00;
+    masks[1] = 0x03E0;
+    masks[2] = 0x001F;
   } else if (bitsPerPixel == 32 && compression == kRgb) {
-    masks[0] = 0xFF0000; masks[1] = 0x00FF00; masks[2] = 0x0000FF;
+    masks[0] = 0xFF0000;
+    masks[1] = 0x00FF00;
+    masks[2] = 0x0000FF;
   } else if (compression == kBitfields || compression == kAlphaBitfields) {
     std::size_t at = 14 + 40;
     const int count = compression == kAlphaBitfields || headerSize >= 56 ? 4 : 3;
@@ -178,7 +181,8 @@ ReadResult<RgbImage> decodeBmp(std::string_view b, const std::string& fileName) 
         const unsigned shift = 8 - bitsPerPixel - static_cast<unsigned>(bit % 8);
         const std::uint32_t index = (byte >> shift) & ((1u << bitsPerPixel) - 1);
         if (index >= palette.size()) {
-          diags.push_back(fileError(codes::kColourOutsidePalette, fileName, {std::to_string(index), std::to_string(palette.size())}));
+          diags.push_back(fileError(codes::kColourOutsidePalette, fileName,
+                                    {std::to_string(index), std::to_string(palette.size())}));
           return result;
         }
         rgb = palette[index];
@@ -238,9 +242,8 @@ ReadResult<RgbImage> decodePng(std::string_view bytes, const std::string& fileNa
   for (std::size_t i = 0; i < image.pixels.size(); ++i) {
     const unsigned char* p = &rgba[i * 4];
     // A see-through pixel is empty space, like white.
-    image.pixels[i] = p[3] < 128 ? 0xFFFFFFu
-                                 : static_cast<std::uint32_t>(p[0]) << 16 |
-                                       static_cast<std::uint32_t>(p[1]) << 8 | p[2];
+    image.pixels[i] =
+        p[3] < 128 ? 0xFFFFFFu : static_cast<std::uint32_t>(p[0]) << 16 | static_cast<std::uint32_t>(p[1]) << 8 | p[2];
   }
   png_image_free(&png);
   result.value = std::move(image);
@@ -253,7 +256,7 @@ ReadResult<RgbImage> decodeImage(std::string_view bytes, const std::string& file
   if (bytes.size() > detail::kMaxFileBytes) {
     ReadResult<RgbImage> result;
     result.diagnostics.push_back(fileError(codes::kFileTooLarge, fileName,
-                                                   {std::to_string(bytes.size()), sizeLimitText(detail::kMaxFileBytes)}));
+                                           {std::to_string(bytes.size()), sizeLimitText(detail::kMaxFileBytes)}));
     return result;
   }
   if (bytes.size() >= 2 && bytes[0] == 'B' && bytes[1] == 'M') return decodeBmp(bytes, fileName);

@@ -68,9 +68,9 @@ std::uint32_t tis620CodePoint(unsigned char b) {
     const std::uint32_t cp = kWindows874High[b - 0x80];
     return cp ? cp : kReplacement;
   }
-  if (b == 0xA0) return 0x00A0;                       // no-break space (Windows-874)
+  if (b == 0xA0) return 0x00A0;                                    // no-break space (Windows-874)
   if ((b >= 0xDB && b <= 0xDE) || b >= 0xFC) return kReplacement;  // unassigned in TIS-620
-  return 0x0E01 + (b - 0xA1);                         // Thai block, in TIS-620 order
+  return 0x0E01 + (b - 0xA1);                                      // Thai block, in TIS-620 order
 }
 
 }  // namespace
@@ -134,9 +134,12 @@ std::optional<std::string> utf16ToUtf8(std::string_view bytes) {
     }
     const std::size_t pairs = n / 2;
     // Mostly ASCII (a G-code program is): at least half the high bytes are NUL, no low byte is.
-    if (oddNul * 2 >= pairs && evenNul == 0) little = true;
-    else if (evenNul * 2 >= pairs && oddNul == 0) little = false;
-    else return std::nullopt;
+    if (oddNul * 2 >= pairs && evenNul == 0)
+      little = true;
+    else if (evenNul * 2 >= pairs && oddNul == 0)
+      little = false;
+    else
+      return std::nullopt;
   }
   if ((bytes.size() - start) % 2 != 0) return std::nullopt;
   std::string out;

@@ -66,9 +66,8 @@ std::optional<std::string> readFileBytes(const std::string& path, std::vector<Di
   while (in && (in.read(buffer, sizeof buffer) || in.gcount() > 0)) {
     bytes.append(buffer, static_cast<std::size_t>(in.gcount()));
     if (bytes.size() > maxBytes) {
-      diags.push_back(
-          makeDiagnostic(Severity::Error, codes::kFileTooLarge, 0, 0, 0,
-                         {path, std::to_string(bytes.size()), sizeLimitText(maxBytes)}));
+      diags.push_back(makeDiagnostic(Severity::Error, codes::kFileTooLarge, 0, 0, 0,
+                                     {path, std::to_string(bytes.size()), sizeLimitText(maxBytes)}));
       return std::nullopt;
     }
   }
@@ -134,9 +133,7 @@ std::vector<std::string_view> splitLines(std::string_view text) {
   return lines;
 }
 
-bool endsWithLineBreak(std::string_view text) {
-  return !text.empty() && (text.back() == '\n' || text.back() == '\r');
-}
+bool endsWithLineBreak(std::string_view text) { return !text.empty() && (text.back() == '\n' || text.back() == '\r'); }
 
 std::string_view trim(std::string_view s) {
   const auto isSpace = [](char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; };
@@ -173,8 +170,7 @@ std::optional<double> parseNumber(std::string_view text) {
   std::string_view body = text.front() == '+' ? text.substr(1) : text;
   double value = 0.0;
   const auto [end, ec] = std::from_chars(body.data(), body.data() + body.size(), value);
-  if (ec != std::errc() || end != body.data() + body.size() || !std::isfinite(value))
-    return std::nullopt;
+  if (ec != std::errc() || end != body.data() + body.size() || !std::isfinite(value)) return std::nullopt;
   return value;
 }
 

@@ -39,8 +39,8 @@ std::optional<std::string> decodeConfig(std::string_view bytes, const std::strin
 }
 
 // Warns once about non-blank lines past the last one the format uses.
-void warnAboutExtraLines(const std::vector<std::string_view>& lines, std::size_t used,
-                         const std::string& fileName, std::vector<Diagnostic>& diags) {
+void warnAboutExtraLines(const std::vector<std::string_view>& lines, std::size_t used, const std::string& fileName,
+                         std::vector<Diagnostic>& diags) {
   for (std::size_t i = used; i < lines.size(); ++i) {
     if (detail::trim(lines[i]).empty()) continue;
     diags.push_back(makeDiagnostic(Severity::Warning, codes::kLinesIgnored, static_cast<int>(i) + 1, 1, 0,
@@ -66,7 +66,8 @@ bool hasControlCharacters(std::string_view s) {
 
 std::string oneConfigLine(std::string_view text) {
   std::string s(text);
-  std::replace_if(s.begin(), s.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+  std::replace_if(
+      s.begin(), s.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
   return s;
 }
 
@@ -114,8 +115,8 @@ void ToolTable::setLibraryTool(int tool, const std::string& id, const std::strin
   bitmapUnreadable[i] = false;
 }
 
-ReadResult<ToolTable> parseToolTable(std::string_view text, const std::string& folder,
-                                     const std::string& fileName, int stations, const ToolLibrary* library) {
+ReadResult<ToolTable> parseToolTable(std::string_view text, const std::string& folder, const std::string& fileName,
+                                     int stations, const ToolLibrary* library) {
   ReadResult<ToolTable> result;
   auto& diags = result.diagnostics;
   const std::optional<std::string> decoded = decodeConfig(text, fileName, diags);
@@ -136,7 +137,8 @@ ReadResult<ToolTable> parseToolTable(std::string_view text, const std::string& f
       const LibraryTool* t = library->find(id);
       if (!t) {
         const std::string_view at = id.empty() ? name : id;
-        diags.push_back(makeDiagnostic(Severity::Error, codes::kNotInToolLibrary, tool, detail::columnOf(line, at), utf8Length(at),
+        diags.push_back(makeDiagnostic(Severity::Error, codes::kNotInToolLibrary, tool, detail::columnOf(line, at),
+                                       utf8Length(at),
                                        {fileName, twoDigits(tool), std::string(id), library->idList()}));
         continue;
       }
@@ -195,8 +197,7 @@ ReadResult<ToolTable> readToolTable(const std::string& path, int stations, const
       const std::string target = fs::read_symlink(file, lec).string();
       notAFile(fmt::format("a link to '{}', which does not exist", target),
                fmt::format("ลิงก์ไปยัง '{}' ซึ่งไม่มีอยู่", target));
-    }
-    else
+    } else
       result.diagnostics.push_back(
           makeDiagnostic(Severity::Error, codes::kBitmapMissing, tool, 1, length, {path, twoDigits(tool), name}));
   }
@@ -224,8 +225,7 @@ ReadResult<OffsetTable> parseOffsetTable(std::string_view text, const std::strin
   const std::vector<std::string_view> lines = detail::splitLines(*decoded);
 
   OffsetTable table;
-  for (int number = 1; number <= kOffsetCount && static_cast<std::size_t>(number) <= lines.size();
-       ++number) {
+  for (int number = 1; number <= kOffsetCount && static_cast<std::size_t>(number) <= lines.size(); ++number) {
     const std::string_view line = lines[static_cast<std::size_t>(number - 1)];
     const std::vector<std::string_view> fields = detail::splitFields(line);
     const std::string label = twoDigits(number);
@@ -236,8 +236,7 @@ ReadResult<OffsetTable> parseOffsetTable(std::string_view text, const std::strin
     if (fields.size() != 4) {
       // Point at the first field too many, or at the end of a short line.
       const int column = fields.size() > 4 ? detail::columnOf(line, fields[4])
-                                           : utf8Length(detail::trim(line)) +
-                                                 detail::columnOf(line, fields[0]);
+                                           : utf8Length(detail::trim(line)) + detail::columnOf(line, fields[0]);
       diags.push_back(makeDiagnostic(Severity::Error, codes::kOffsetFieldCount, number, column, 0,
                                      {fileName, label, std::to_string(fields.size())}));
       continue;
@@ -257,8 +256,9 @@ ReadResult<OffsetTable> parseOffsetTable(std::string_view text, const std::strin
       }
     }
     if (rowOk && offset.r < 0.0) {
-      diags.push_back(makeDiagnostic(Severity::Error, codes::kNegativeNoseRadius, number, detail::columnOf(line, fields[2]),
-                                     utf8Length(fields[2]), {fileName, label, std::string(fields[2])}));
+      diags.push_back(makeDiagnostic(Severity::Error, codes::kNegativeNoseRadius, number,
+                                     detail::columnOf(line, fields[2]), utf8Length(fields[2]),
+                                     {fileName, label, std::string(fields[2])}));
       rowOk = false;
     }
     // A wear or geometry offset beyond any lathe's (1e308 once passed here) is a typing slip.
@@ -267,8 +267,8 @@ ReadResult<OffsetTable> parseOffsetTable(std::string_view text, const std::strin
       const double limit = i == 2 ? kMaxNoseRadiusMm : kMaxOffsetMm;
       if (std::abs(*numbers[i]) > limit) {
         const std::string_view f = fields[static_cast<std::size_t>(i)];
-        diags.push_back(makeDiagnostic(Severity::Error, codes::kOffsetBeyondLathe, number, detail::columnOf(line, f), utf8Length(f),
-                                       {fileName, label, std::string(f), detail::formatNumber(limit)}));
+        diags.push_back(makeDiagnostic(Severity::Error, codes::kOffsetBeyondLathe, number, detail::columnOf(line, f),
+                                       utf8Length(f), {fileName, label, std::string(f), detail::formatNumber(limit)}));
         rowOk = false;
       }
     }
@@ -311,8 +311,8 @@ std::string formatOffsetTable(const OffsetTable& t) {
   std::string out;
   for (int i = 0; i < last; ++i) {
     const Offset& o = t.offsets[static_cast<std::size_t>(i)];
-    out += fmt::format("{} {} {} {}\n", detail::formatNumber(o.x), detail::formatNumber(o.z),
-                       detail::formatNumber(o.r), std::clamp(o.tip, 0, 9));
+    out += fmt::format("{} {} {} {}\n", detail::formatNumber(o.x), detail::formatNumber(o.z), detail::formatNumber(o.r),
+                       std::clamp(o.tip, 0, 9));
   }
   return out;
 }
@@ -338,13 +338,22 @@ struct Plausible {
   double min, max;
 };
 constexpr Plausible kPlausible[] = {
-    {"rapid_x", 1.0, 200000.0},       {"rapid_z", 1.0, 200000.0},
-    {"accel_x", 0.0, 100000.0},       {"accel_z", 0.0, 100000.0},      {"max_spindle_rpm", 1.0, 100000.0},
-    {"reference_x", -100000.0, 100000.0}, {"reference_z", -100000.0, 100000.0},
-    {"start_x", -100000.0, 100000.0}, {"start_z", -100000.0, 100000.0},
-    {"travel_x_min", -100000.0, 100000.0}, {"travel_x_max", -100000.0, 100000.0},
-    {"travel_z_min", -100000.0, 100000.0}, {"travel_z_max", -100000.0, 100000.0},
-    {"chuck_grip", 0.0, 10000.0},     {"chuck_jaw_height", 0.0, 10000.0}, {"spindle_bore", 0.0, 10000.0},
+    {"rapid_x", 1.0, 200000.0},
+    {"rapid_z", 1.0, 200000.0},
+    {"accel_x", 0.0, 100000.0},
+    {"accel_z", 0.0, 100000.0},
+    {"max_spindle_rpm", 1.0, 100000.0},
+    {"reference_x", -100000.0, 100000.0},
+    {"reference_z", -100000.0, 100000.0},
+    {"start_x", -100000.0, 100000.0},
+    {"start_z", -100000.0, 100000.0},
+    {"travel_x_min", -100000.0, 100000.0},
+    {"travel_x_max", -100000.0, 100000.0},
+    {"travel_z_min", -100000.0, 100000.0},
+    {"travel_z_max", -100000.0, 100000.0},
+    {"chuck_grip", 0.0, 10000.0},
+    {"chuck_jaw_height", 0.0, 10000.0},
+    {"spindle_bore", 0.0, 10000.0},
     {"max_run_time", 1.0, 1.0e7},
 };
 
@@ -372,7 +381,8 @@ constexpr MachineKey kMachineKeys[] = {
      "radial height of the jaws above the stock, mm"},
     {"spindle_bore", &MachineConfig::spindleBore, Rule::NonNegative,
      "through-hole of the spindle and chuck (diameter, mm): drills may pass the part's end into it"},
-    {"turret_stations", nullptr, Rule::Stations, "tool stations on the turret (1 to 24)", &MachineConfig::turretStations},
+    {"turret_stations", nullptr, Rule::Stations, "tool stations on the turret (1 to 24)",
+     &MachineConfig::turretStations},
     {"max_blocks", nullptr, Rule::Count,
      "a program that loops without end stops after this many blocks run again by a loop, jump or call",
      &MachineConfig::maxBlocks},
@@ -429,43 +439,44 @@ ReadResult<MachineConfig> parseMachineConfig(std::string_view text, const std::s
                                      utf8Length(key), {fileName, std::string(key)}));
       continue;
     }
-    const int valueColumn = value.empty() ? detail::columnOf(line, content) + utf8Length(content)
-                                          : detail::columnOf(line, value);
+    const int valueColumn =
+        value.empty() ? detail::columnOf(line, content) + utf8Length(content) : detail::columnOf(line, value);
     const std::optional<double> number = detail::parseNumber(value);
     if (!number) {
-      diags.push_back(makeDiagnostic(Severity::Error, codes::kParameterNotNumber, lineNumber, valueColumn, utf8Length(value),
-                                     {fileName, std::string(key), std::string(value)}));
+      diags.push_back(makeDiagnostic(Severity::Error, codes::kParameterNotNumber, lineNumber, valueColumn,
+                                     utf8Length(value), {fileName, std::string(key), std::string(value)}));
       continue;
     }
     if (entry->rule == Rule::Positive && *number <= 0.0) {
-      diags.push_back(makeDiagnostic(Severity::Error, codes::kParameterNotPositive, lineNumber, valueColumn, utf8Length(value),
-                                     {fileName, std::string(key), std::string(value)}));
+      diags.push_back(makeDiagnostic(Severity::Error, codes::kParameterNotPositive, lineNumber, valueColumn,
+                                     utf8Length(value), {fileName, std::string(key), std::string(value)}));
       continue;
     }
     if (entry->rule == Rule::NonNegative && *number < 0.0) {
-      diags.push_back(makeDiagnostic(Severity::Error, codes::kParameterNegative, lineNumber, valueColumn, utf8Length(value),
-                                     {fileName, std::string(key), std::string(value)}));
+      diags.push_back(makeDiagnostic(Severity::Error, codes::kParameterNegative, lineNumber, valueColumn,
+                                     utf8Length(value), {fileName, std::string(key), std::string(value)}));
       continue;
     }
     if (entry->rule == Rule::Flag && *number != 0.0 && *number != 1.0) {
-      diags.push_back(makeDiagnostic(Severity::Error, codes::kParameterNotWhole, lineNumber, valueColumn, utf8Length(value),
-                                     {fileName, std::string(key), std::string(value), "0", "1"}));
+      diags.push_back(makeDiagnostic(Severity::Error, codes::kParameterNotWhole, lineNumber, valueColumn,
+                                     utf8Length(value), {fileName, std::string(key), std::string(value), "0", "1"}));
       continue;
     }
     const bool stations = entry->rule == Rule::Stations;
     if ((stations || entry->rule == Rule::Count) &&
         (*number != std::floor(*number) || *number < (stations ? kMinTurretStations : 1) ||
          *number > (stations ? kMaxTurretStations : kMaxBlockLimit))) {
-      diags.push_back(makeDiagnostic(Severity::Error, codes::kParameterNotWhole, lineNumber, valueColumn, utf8Length(value),
-                                     {fileName, std::string(key), std::string(value),
-                                      std::to_string(stations ? kMinTurretStations : 1),
-                                      std::to_string(stations ? kMaxTurretStations : kMaxBlockLimit)}));
+      diags.push_back(makeDiagnostic(
+          Severity::Error, codes::kParameterNotWhole, lineNumber, valueColumn, utf8Length(value),
+          {fileName, std::string(key), std::string(value), std::to_string(stations ? kMinTurretStations : 1),
+           std::to_string(stations ? kMaxTurretStations : kMaxBlockLimit)}));
       continue;
     }
     bool plausible = true;
     for (const Plausible& p : kPlausible)
       if (key == p.name && (*number < p.min || *number > p.max)) {
-        diags.push_back(makeDiagnostic(Severity::Error, codes::kParameterOutOfRange, lineNumber, valueColumn, utf8Length(value),
+        diags.push_back(makeDiagnostic(Severity::Error, codes::kParameterOutOfRange, lineNumber, valueColumn,
+                                       utf8Length(value),
                                        {fileName, std::string(key), std::string(value), detail::formatNumber(p.min),
                                         detail::formatNumber(p.max)}));
         plausible = false;
@@ -475,9 +486,12 @@ ReadResult<MachineConfig> parseMachineConfig(std::string_view text, const std::s
       diags.push_back(makeDiagnostic(Severity::Warning, codes::kParameterTwice, lineNumber, detail::columnOf(line, key),
                                      utf8Length(key), {fileName, std::string(key)}));
     lineOfKey[entry->name] = lineNumber;
-    if (entry->field) config.*(entry->field) = *number;
-    else if (entry->flag) config.*(entry->flag) = *number != 0.0;
-    else config.*(entry->count) = static_cast<int>(*number);
+    if (entry->field)
+      config.*(entry->field) = *number;
+    else if (entry->flag)
+      config.*(entry->flag) = *number != 0.0;
+    else
+      config.*(entry->count) = static_cast<int>(*number);
   }
 
   // An empty machine.cfg (or only comments) is not what anyone meant to write: say the defaults apply.
@@ -487,8 +501,8 @@ ReadResult<MachineConfig> parseMachineConfig(std::string_view text, const std::s
   const auto checkRange = [&](const char* minKey, double MachineConfig::*min, const char* maxKey,
                               double MachineConfig::*max) {
     if (config.*min < config.*max) return;
-    const int line = std::max(lineOfKey.count(minKey) ? lineOfKey[minKey] : 0,
-                              lineOfKey.count(maxKey) ? lineOfKey[maxKey] : 0);
+    const int line =
+        std::max(lineOfKey.count(minKey) ? lineOfKey[minKey] : 0, lineOfKey.count(maxKey) ? lineOfKey[maxKey] : 0);
     diags.push_back(makeDiagnostic(Severity::Error, codes::kTravelLimitsReversed, line, line ? 1 : 0, 0,
                                    {fileName, minKey, maxKey}));
     MachineConfig defaults;
@@ -502,9 +516,9 @@ ReadResult<MachineConfig> parseMachineConfig(std::string_view text, const std::s
   const auto inside = [&](const char* key, double MachineConfig::*v, double lo, double hi) {
     if (config.*v >= lo && config.*v <= hi) return;
     const int line = lineOfKey.count(key) ? lineOfKey[key] : 0;
-    diags.push_back(makeDiagnostic(Severity::Error, codes::kStartOutsideTravel, line, line ? 1 : 0, 0,
-                                   {fileName, key, detail::formatNumber(config.*v), detail::formatNumber(lo),
-                                    detail::formatNumber(hi)}));
+    diags.push_back(makeDiagnostic(
+        Severity::Error, codes::kStartOutsideTravel, line, line ? 1 : 0, 0,
+        {fileName, key, detail::formatNumber(config.*v), detail::formatNumber(lo), detail::formatNumber(hi)}));
   };
   inside("start_x", &MachineConfig::startX, config.travelXMin, config.travelXMax);
   inside("start_z", &MachineConfig::startZ, config.travelZMin, config.travelZMax);
@@ -617,8 +631,7 @@ std::string ensureUserConfigDir(std::string* error) {
   const ReadResult<ToolTable> shippedTools = readToolTable((shipped / "tools.cfg").string());
   if (shippedTools.value)
     for (const std::string& name : shippedTools.value->bitmap)
-      if (!name.empty() && name.rfind(kLibraryPrefix, 0) != 0 && fs::path(name).is_relative() &&
-          !copyIfMissing(name))
+      if (!name.empty() && name.rfind(kLibraryPrefix, 0) != 0 && fs::path(name).is_relative() && !copyIfMissing(name))
         return {};
   return user;
 }

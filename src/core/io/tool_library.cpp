@@ -58,7 +58,8 @@ std::vector<std::string_view> splitBars(std::string_view line) {
   std::size_t start = 0;
   for (;;) {
     const std::size_t bar = line.find('|', start);
-    const std::string_view raw = line.substr(start, bar == std::string_view::npos ? std::string_view::npos : bar - start);
+    const std::string_view raw =
+        line.substr(start, bar == std::string_view::npos ? std::string_view::npos : bar - start);
     std::string_view field = detail::trim(raw);
     if (field.empty()) field = raw.substr(0, 0);  // keep the position for the column
     out.push_back(field);
@@ -135,8 +136,8 @@ ReadResult<ToolLibrary> parseToolLibrary(std::string_view text, const std::strin
     const std::vector<std::string_view> f = splitBars(line);
     const auto error = [&](const char* code, std::string_view at, std::vector<std::string> args) {
       args.insert(args.begin(), fileName);
-      diags.push_back(makeDiagnostic(Severity::Error, code, lineNo, detail::columnOf(line, at), utf8Length(at),
-                                     std::move(args)));
+      diags.push_back(
+          makeDiagnostic(Severity::Error, code, lineNo, detail::columnOf(line, at), utf8Length(at), std::move(args)));
     };
     if (f.size() != kFieldCount) {
       error(codes::kLibraryLineFields, content, {std::to_string(f.size())});
@@ -211,8 +212,8 @@ ReadResult<ToolLibrary> readToolLibrary(const std::string& path) {
   for (const LibraryTool& t : result.value->tools) {
     std::error_code ec;
     if (!fs::is_regular_file(result.value->bitmapPath(t), ec))
-      result.diagnostics.push_back(
-          makeDiagnostic(Severity::Error, codes::kLibraryBitmapMissing, t.line, 1, utf8Length(t.id), {path, t.id, t.bitmap}));
+      result.diagnostics.push_back(makeDiagnostic(Severity::Error, codes::kLibraryBitmapMissing, t.line, 1,
+                                                  utf8Length(t.id), {path, t.id, t.bitmap}));
   }
   return result;
 }

@@ -34,8 +34,10 @@ class CompensationStage final : public MachineSink {
   }
 
   void dwell(const DwellCall& d) override {
-    if (state_ == State::Active) events_.push_back(d);
-    else next_.dwell(d);
+    if (state_ == State::Active)
+      events_.push_back(d);
+    else
+      next_.dwell(d);
   }
 
   void setPosition(const Vec2& p) override {
@@ -48,8 +50,10 @@ class CompensationStage final : public MachineSink {
 
   void compensation(NoseCompMode mode, double radius, int tip) override {
     if (mode == NoseCompMode::Off) {
-      if (state_ == State::Active) cancelPending_ = true;
-      else state_ = State::Off;
+      if (state_ == State::Active)
+        cancelPending_ = true;
+      else
+        state_ = State::Off;
       return;
     }
     cancelPending_ = false;
@@ -64,8 +68,10 @@ class CompensationStage final : public MachineSink {
   }
 
   void blockDone(const StateSnapshot& s) override {
-    if (state_ == State::Active) events_.push_back(s);
-    else next_.blockDone(s);
+    if (state_ == State::Active)
+      events_.push_back(s);
+    else
+      next_.blockDone(s);
   }
 
   void alarm(const Diagnostic& d) override {
@@ -99,8 +105,7 @@ class CompensationStage final : public MachineSink {
     in.tip = tip_;
     in.endsWithCancel = endsWithCancel;
     const comp::CompOutput out = comp::compensate(in);
-    const std::size_t stopAt =
-        out.interference ? static_cast<std::size_t>(out.interference->source) : motions_.size();
+    const std::size_t stopAt = out.interference ? static_cast<std::size_t>(out.interference->source) : motions_.size();
 
     std::size_t piece = 0;
     for (const Event& e : events_) {
@@ -111,8 +116,8 @@ class CompensationStage final : public MachineSink {
         for (; piece < out.pieces.size() && static_cast<std::size_t>(out.pieces[piece].source) == ref->index; ++piece) {
           MotionCall m = source;
           m.path = comp::controlledPath(out.pieces[piece].path, radius_, tip_);
-          if (m.path.isArc() && m.kind == MoveKind::Line) m.kind = MoveKind::Arc;     // bridging arc
-          if (!m.path.isArc() && m.kind == MoveKind::Arc) m.kind = MoveKind::Line;    // degenerate arc
+          if (m.path.isArc() && m.kind == MoveKind::Line) m.kind = MoveKind::Arc;   // bridging arc
+          if (!m.path.isArc() && m.kind == MoveKind::Arc) m.kind = MoveKind::Line;  // degenerate arc
           m.compensated = true;
           next_.motion(m);
         }

@@ -60,7 +60,10 @@ Expansion expand(const gcode::CodeInfo& code, const CycleInput& in, CycleMemory&
   const Block& b = cycleBlock(in);
   const double u = in.unit;
   const std::string name = gName(in, code);
-  const bool secondBlock = (g == A::Finishing || g == A::TurnRoughing || g == A::FaceRoughing || g == A::PatternRepeating) ? (b.has('P') || b.has('Q')) : hasAxis(b);
+  const bool secondBlock =
+      (g == A::Finishing || g == A::TurnRoughing || g == A::FaceRoughing || g == A::PatternRepeating)
+          ? (b.has('P') || b.has('Q'))
+          : hasAxis(b);
   auto value = [&](char letter, double fallback) {
     const Word* w = b.find(letter);
     return w ? w->value * u : fallback;
@@ -74,8 +77,10 @@ Expansion expand(const gcode::CodeInfo& code, const CycleInput& in, CycleMemory&
         const Word* dw = b.find(depthLetter);
         if (!dw || dw->value <= 0.0)
           e.alarm = alarmAt(codes::kCycleNeedsPositive, dw ? dw : in.gWord, b, {name, std::string(1, depthLetter)});
-        else if (g == A::TurnRoughing) memory.g71Depth = dw->value * u, memory.g71Retract = value('R', memory.g71Retract);
-        else memory.g72Depth = dw->value * u, memory.g72Retract = value('R', memory.g72Retract);
+        else if (g == A::TurnRoughing)
+          memory.g71Depth = dw->value * u, memory.g71Retract = value('R', memory.g71Retract);
+        else
+          memory.g72Depth = dw->value * u, memory.g72Retract = value('R', memory.g72Retract);
         break;
       }
       case A::PatternRepeating:
@@ -95,9 +100,7 @@ Expansion expand(const gcode::CodeInfo& code, const CycleInput& in, CycleMemory&
         if (const Word* q = b.find('Q')) memory.g76MinDepth = increment(*q, u);
         memory.g76Allowance = value('R', memory.g76Allowance);
         break;
-      case A::Finishing:
-        e.alarm = alarmAt(codes::kCycleNeedsPAndQ, in.gWord, b, {name});
-        break;
+      case A::Finishing: e.alarm = alarmAt(codes::kCycleNeedsPAndQ, in.gWord, b, {name}); break;
       default: break;
     }
     return e;
@@ -155,7 +158,8 @@ Expansion expand(const gcode::CodeInfo& code, const CycleInput& in, CycleMemory&
       movesOnly(p);
       const double moves = static_cast<double>(memory.g73Count) * static_cast<double>(p.moves.size() + 1);
       if (moves > kMaxCycleMoves) {
-        e.alarm = alarmAt(codes::kTooManyCycleMoves, in.gWord, b, {name, fmt::format("{:.0f}", moves), fmt::format("{:.0f}", kMaxCycleMoves)});
+        e.alarm = alarmAt(codes::kTooManyCycleMoves, in.gWord, b,
+                          {name, fmt::format("{:.0f}", moves), fmt::format("{:.0f}", kMaxCycleMoves)});
         return e;
       }
       const Vec2 allowance(value('W', 0.0), value('U', 0.0) / 2.0);
@@ -200,7 +204,8 @@ Expansion expand(const gcode::CodeInfo& code, const CycleInput& in, CycleMemory&
       const double width = std::abs(g == A::FacePecking ? xOf(target) - xOf(in.start) : zOf(target) - zOf(in.start));
       const double moves = peckCycleMoves(drill, peck, width, std::abs(g == A::FacePecking ? across : along));
       if (moves > kMaxCycleMoves) {
-        e.alarm = alarmAt(codes::kTooManyCycleMoves, in.gWord, b, {name, fmt::format("{:.0f}", moves), fmt::format("{:.0f}", kMaxCycleMoves)});
+        e.alarm = alarmAt(codes::kTooManyCycleMoves, in.gWord, b,
+                          {name, fmt::format("{:.0f}", moves), fmt::format("{:.0f}", kMaxCycleMoves)});
         return e;
       }
       if (g == A::FacePecking) {
@@ -227,8 +232,7 @@ Expansion expand(const gcode::CodeInfo& code, const CycleInput& in, CycleMemory&
       }
       const double taper = value('R', 0.0);  // R(i): radius difference, start minus end
       const double flank = std::tan(memory.g76Angle / 2.0 * std::numbers::pi / 180.0);
-      const auto depths = threadDepths(height, first, memory.g76MinDepth, memory.g76Allowance,
-                                       memory.g76Finishing);
+      const auto depths = threadDepths(height, first, memory.g76MinDepth, memory.g76Allowance, memory.g76Finishing);
       // Pull-out at 45 degrees over the last r/10 leads, still threading.
       threadInfeed(e.steps, in.start, target, height, taper, flank, depths, memory.g76Chamfer / 10.0 * in.feed,
                    in.feed);

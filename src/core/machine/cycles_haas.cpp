@@ -79,8 +79,8 @@ Expansion grooving(const gcode::CodeInfo& code, const CycleInput& in, const Bloc
   const Vec2 target = axisTarget(b, in.start, in.offset, u);
   const Word* iw = b.find('I');
   const Word* kw = b.find('K');
-  const double i = iw ? std::abs(increment(*iw, u)) : 0.0;  // radius: X step (G74) or X peck (G75)
-  const double k = kw ? std::abs(increment(*kw, u)) : 0.0;  // Z peck (G74) or Z step (G75)
+  const double i = iw ? std::abs(increment(*iw, u)) : 0.0;            // radius: X step (G74) or X peck (G75)
+  const double k = kw ? std::abs(increment(*kw, u)) : 0.0;            // Z peck (G74) or Z step (G75)
   const double retract = setting(s.peckClearInch, s.peckClearMm, u);  // Setting 22
   const double drillDepth = std::abs(g == A::FacePecking ? zOf(target) - zOf(in.start) : xOf(target) - xOf(in.start));
   const double peck = g == A::FacePecking ? k : i;
@@ -127,11 +127,12 @@ Expansion threading(const gcode::CodeInfo& code, const CycleInput& in, const Blo
   const bool doubleEdge = method == 2 || method == 4;
   const bool constantDepth = method == 3 || method == 4;
   const double angle = b.has('A') ? b.find('A')->value : 0.0;  // tool nose angle, degrees
-  const double taper = length(b, 'I', u, 0.0);                  // radius, start minus end
+  const double taper = length(b, 'I', u, 0.0);                 // radius, start minus end
   const double minCut = setting(s.threadMinCutInch, s.threadMinCutMm, u);
   const double finish = setting(s.threadFinishInch, s.threadFinishMm, u);
   if (constantDepth && height / first > kMaxPasses) {
-    e.alarm = alarmAt(codes::kTooManyPasses, b.find('D'), b, {name, fmt::format("{:.0f}", std::ceil(height / first)), num(first)});
+    e.alarm = alarmAt(codes::kTooManyPasses, b.find('D'), b,
+                      {name, fmt::format("{:.0f}", std::ceil(height / first)), num(first)});
     return e;
   }
   const double flank = doubleEdge ? 0.0 : std::tan(angle / 2.0 * std::numbers::pi / 180.0);

@@ -41,7 +41,9 @@ inline std::string num(double v) {
 inline double sign(double v) { return v > kEps ? 1.0 : v < -kEps ? -1.0 : 0.0; }
 
 inline Step rapid(const Vec2& a, const Vec2& b) { return Step{StepKind::Rapid, Segment::line(a, b), 0.0, 0.0, {}, {}}; }
-inline Step feedLine(const Vec2& a, const Vec2& b) { return Step{StepKind::Feed, Segment::line(a, b), 0.0, 0.0, {}, {}}; }
+inline Step feedLine(const Vec2& a, const Vec2& b) {
+  return Step{StepKind::Feed, Segment::line(a, b), 0.0, 0.0, {}, {}};
+}
 inline Step thread(const Vec2& a, const Vec2& b, double lead) {
   return Step{StepKind::Thread, Segment::line(a, b), lead, 0.0, {}, {}};
 }

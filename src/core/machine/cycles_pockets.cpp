@@ -107,8 +107,10 @@ std::optional<CycleAlarm> roughPockets(const std::string& g, const SourceRange& 
     return CycleAlarm{codes::kTooManyPasses, where, {g, fmt::format("{:.0f}", levels), num(depth)}};
   // Every level looks at every piece: bound that work, then the moves themselves.
   if (levels * static_cast<double>(roughed.size()) > 20.0 * kMaxCycleMoves)
-    return CycleAlarm{codes::kTooManyCycleMoves, where,
-                      {g, fmt::format("{:.0f}", levels * static_cast<double>(roughed.size())), fmt::format("{:.0f}", kMaxCycleMoves)}};
+    return CycleAlarm{codes::kTooManyCycleMoves,
+                      where,
+                      {g, fmt::format("{:.0f}", levels * static_cast<double>(roughed.size())),
+                       fmt::format("{:.0f}", kMaxCycleMoves)}};
   // Each level's stretches, read once; kept only while the moves they make stay within the bound.
   std::vector<std::vector<Span>> spansOf;
   double moves = 0.0;
@@ -118,7 +120,8 @@ std::optional<CycleAlarm> roughPockets(const std::string& g, const SourceRange& 
     if (moves <= kMaxCycleMoves) spansOf.push_back(std::move(spans));
   }
   if (moves > kMaxCycleMoves)
-    return CycleAlarm{codes::kTooManyCycleMoves, where, {g, fmt::format("{:.0f}", moves), fmt::format("{:.0f}", kMaxCycleMoves)}};
+    return CycleAlarm{
+        codes::kTooManyCycleMoves, where, {g, fmt::format("{:.0f}", moves), fmt::format("{:.0f}", kMaxCycleMoves)}};
 
   const auto to = [&](const Vec2& p, bool feed) {
     if ((p - pos).norm() <= kEps) return;

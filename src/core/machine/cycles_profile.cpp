@@ -12,7 +12,8 @@ namespace klueng::core::machine::cycles::detail {
 std::optional<CycleAlarm> readProfile(const CycleInput& in, const Block& cycle, bool withFeed, Profile& out) {
   if (in.readProfile) return (*in.readProfile)(cycle, in.gWord, withFeed, out);
   const Word* pw = cycle.find('P');
-  return alarmAt(codes::kNoProfileBlock, pw, cycle, {in.gWord ? "G" + in.gWord->number : "G7x", "P", pw ? pw->number.str() : ""});
+  return alarmAt(codes::kNoProfileBlock, pw, cycle,
+                 {in.gWord ? "G" + in.gWord->number : "G7x", "P", pw ? pw->number.str() : ""});
 }
 
 void movesOnly(Profile& p) {
@@ -102,7 +103,7 @@ std::optional<CycleAlarm> stockRemoval(const CycleInput& in, Profile& profile, d
                    {g, swap ? "Z" : "X"});
   const Vec2 aPrime = first.path.end;
   std::vector<Step> contour(moves.begin() + 1, moves.end());
-  const double sb = sign(start.y() - aPrime.y());           // towards the stock
+  const double sb = sign(start.y() - aPrime.y());  // towards the stock
   // Pieces at the end of the profile that lie wholly at or beyond the start
   // point's level (`X1.6` back to the start's X, then a retract along Z) are
   // outside the stock: the passes run along the profile before them. Where the
@@ -133,7 +134,8 @@ std::optional<CycleAlarm> stockRemoval(const CycleInput& in, Profile& profile, d
     }
     if (!ok) {
       const Block& b = in.program->blocks[static_cast<std::size_t>(profile.blockOf[i + 1])];
-      return alarmAt(codes::kProfileNotMonotonic, b.words.empty() ? nullptr : &b.words.front(), b, {g, std::to_string(b.line)});
+      return alarmAt(codes::kProfileNotMonotonic, b.words.empty() ? nullptr : &b.words.front(), b,
+                     {g, std::to_string(b.line)});
     }
   }
   std::vector<Step> shifted, roughed;

@@ -27,14 +27,10 @@ struct Phrase {
 // What each action does, as a teacher says it (Thai terms from GLOSSARY.md).
 std::optional<Phrase> actionPhrase(CodeAction a) {
   switch (a) {
-    case CodeAction::Rapid:
-      return Phrase{"move at rapid speed, not cutting", "เคลื่อนที่เร็วโดยไม่ตัดเฉือน"};
-    case CodeAction::Line:
-      return Phrase{"cut in a straight line", "กลึงเป็นเส้นตรง"};
-    case CodeAction::ArcCw:
-      return Phrase{"cut a clockwise arc", "กลึงส่วนโค้งตามเข็มนาฬิกา"};
-    case CodeAction::ArcCcw:
-      return Phrase{"cut a counter-clockwise arc", "กลึงส่วนโค้งทวนเข็มนาฬิกา"};
+    case CodeAction::Rapid: return Phrase{"move at rapid speed, not cutting", "เคลื่อนที่เร็วโดยไม่ตัดเฉือน"};
+    case CodeAction::Line: return Phrase{"cut in a straight line", "กลึงเป็นเส้นตรง"};
+    case CodeAction::ArcCw: return Phrase{"cut a clockwise arc", "กลึงส่วนโค้งตามเข็มนาฬิกา"};
+    case CodeAction::ArcCcw: return Phrase{"cut a counter-clockwise arc", "กลึงส่วนโค้งทวนเข็มนาฬิกา"};
     case CodeAction::Thread:
       return Phrase{"cut one pass of a thread, the feed locked to the spindle",
                     "กลึงเกลียวหนึ่งเที่ยว อัตราป้อนสัมพันธ์กับรอบเพลา"};
@@ -47,12 +43,9 @@ std::optional<Phrase> actionPhrase(CodeAction a) {
     case CodeAction::BoxFacing:
       return Phrase{"facing cycle: feed in, cut along X, come out and return to the start",
                     "วัฏจักรกลึงปาดหน้า: ป้อนมีดเข้า กลึงตามแนวแกน X ถอยออก แล้วกลับจุดเริ่ม"};
-    case CodeAction::Inch:
-      return Phrase{"lengths from here on are in inches", "ค่าความยาวต่อจากนี้เป็นหน่วยนิ้ว"};
-    case CodeAction::Metric:
-      return Phrase{"lengths from here on are in millimetres", "ค่าความยาวต่อจากนี้เป็นหน่วยมิลลิเมตร"};
-    case CodeAction::CompOff:
-      return Phrase{"cancel tool nose radius compensation", "ยกเลิกการชดเชยรัศมีจมูกมีด"};
+    case CodeAction::Inch: return Phrase{"lengths from here on are in inches", "ค่าความยาวต่อจากนี้เป็นหน่วยนิ้ว"};
+    case CodeAction::Metric: return Phrase{"lengths from here on are in millimetres", "ค่าความยาวต่อจากนี้เป็นหน่วยมิลลิเมตร"};
+    case CodeAction::CompOff: return Phrase{"cancel tool nose radius compensation", "ยกเลิกการชดเชยรัศมีจมูกมีด"};
     case CodeAction::CompLeft:
       return Phrase{"compensate the nose radius with the tool left of the path",
                     "ชดเชยรัศมีจมูกมีด โดยมีดอยู่ทางซ้ายของแนวทางเดิน"};
@@ -62,16 +55,11 @@ std::optional<Phrase> actionPhrase(CodeAction a) {
     case CodeAction::ConstantSurface:
       return Phrase{"constant cutting speed: the rpm follows the diameter",
                     "ความเร็วตัดคงที่: รอบเพลาเปลี่ยนตามเส้นผ่าศูนย์กลาง"};
-    case CodeAction::ConstantRpm:
-      return Phrase{"constant spindle rpm", "ความเร็วรอบเพลาคงที่"};
-    case CodeAction::FeedPerMinute:
-      return Phrase{"feed in mm per minute", "อัตราป้อนเป็นมม./นาที"};
-    case CodeAction::FeedPerRev:
-      return Phrase{"feed in mm per revolution", "อัตราป้อนเป็นมม./รอบ"};
-    case CodeAction::WorkOffset:
-      return Phrase{"use this work coordinate system", "ใช้ระบบพิกัดงานนี้"};
-    case CodeAction::Dwell:
-      return Phrase{"wait with the tool standing still", "หยุดรอโดยมีดอยู่กับที่"};
+    case CodeAction::ConstantRpm: return Phrase{"constant spindle rpm", "ความเร็วรอบเพลาคงที่"};
+    case CodeAction::FeedPerMinute: return Phrase{"feed in mm per minute", "อัตราป้อนเป็นมม./นาที"};
+    case CodeAction::FeedPerRev: return Phrase{"feed in mm per revolution", "อัตราป้อนเป็นมม./รอบ"};
+    case CodeAction::WorkOffset: return Phrase{"use this work coordinate system", "ใช้ระบบพิกัดงานนี้"};
+    case CodeAction::Dwell: return Phrase{"wait with the tool standing still", "หยุดรอโดยมีดอยู่กับที่"};
     case CodeAction::ReferenceCheck:
       return Phrase{"rapid to the point and check it is the reference point", "เคลื่อนที่เร็วไปยังจุดนั้นแล้วตรวจว่าเป็นจุดอ้างอิง"};
     case CodeAction::ReferenceReturn:
@@ -81,16 +69,13 @@ std::optional<Phrase> actionPhrase(CodeAction a) {
       return Phrase{"come back from the reference point through the G28 point", "กลับจากจุดอ้างอิงผ่านจุดกลางทางของ G28"};
     case CodeAction::CoordinateSet:
       return Phrase{"set the coordinates, or limit the spindle speed with S", "ตั้งระบบพิกัด หรือจำกัดความเร็วรอบด้วย S"};
-    case CodeAction::MachineCoordinates:
-      return Phrase{"move in machine coordinates", "เคลื่อนที่ในระบบพิกัดเครื่อง"};
-    case CodeAction::MacroCall:
-      return Phrase{"call a macro with arguments", "เรียกมาโครพร้อมส่งค่าอาร์กิวเมนต์"};
+    case CodeAction::MachineCoordinates: return Phrase{"move in machine coordinates", "เคลื่อนที่ในระบบพิกัดเครื่อง"};
+    case CodeAction::MacroCall: return Phrase{"call a macro with arguments", "เรียกมาโครพร้อมส่งค่าอาร์กิวเมนต์"};
     case CodeAction::MacroModalCall:
       return Phrase{"call a macro after every move until G67", "เรียกมาโครหลังการเคลื่อนที่ทุกครั้งจนถึง G67"};
     case CodeAction::MacroModalCancel:
       return Phrase{"stop calling the macro after each move", "เลิกเรียกมาโครหลังการเคลื่อนที่"};
-    case CodeAction::CycleCancel:
-      return Phrase{"cancel the drilling cycle", "ยกเลิกวัฏจักรเจาะ"};
+    case CodeAction::CycleCancel: return Phrase{"cancel the drilling cycle", "ยกเลิกวัฏจักรเจาะ"};
     case CodeAction::Finishing:
       return Phrase{"finishing cycle: follow the profile once at the finishing feed",
                     "วัฏจักรกลึงละเอียด: กลึงตามรูปร่างหนึ่งเที่ยวด้วยอัตราป้อนกลึงละเอียด"};
@@ -114,44 +99,31 @@ std::optional<Phrase> actionPhrase(CodeAction a) {
                     "วัฏจักรกลึงเกลียวหลายเที่ยว: ป้อนลึกลดลงทุกเที่ยว"};
     case CodeAction::Drilling:
       return Phrase{"drilling cycle: drill to the depth and rapid out", "วัฏจักรเจาะรู: เจาะถึงความลึกแล้วถอยออกเร็ว"};
-    case CodeAction::SpotDrilling:
-      return Phrase{"drilling cycle with a dwell at the bottom", "วัฏจักรเจาะรูและหยุดรอที่ก้นรู"};
+    case CodeAction::SpotDrilling: return Phrase{"drilling cycle with a dwell at the bottom", "วัฏจักรเจาะรูและหยุดรอที่ก้นรู"};
     case CodeAction::ReturnToInitialLevel:
       return Phrase{"drilling cycles return to the initial level", "วัฏจักรเจาะรูถอยกลับถึงระดับเริ่มต้น"};
-    case CodeAction::ReturnToRPoint:
-      return Phrase{"drilling cycles return to the R point", "วัฏจักรเจาะรูถอยกลับถึงจุด R"};
+    case CodeAction::ReturnToRPoint: return Phrase{"drilling cycles return to the R point", "วัฏจักรเจาะรูถอยกลับถึงจุด R"};
     case CodeAction::PeckDrilling:
       return Phrase{"peck drilling cycle: drill in pecks, back out to clear the chips",
                     "วัฏจักรเจาะจิก: เจาะทีละช่วงแล้วถอยออกเพื่อคายเศษ"};
-    case CodeAction::SpindleCw:
-      return Phrase{"start the spindle clockwise", "เปิดเพลาหมุนตามเข็มนาฬิกา"};
-    case CodeAction::SpindleCcw:
-      return Phrase{"start the spindle counter-clockwise", "เปิดเพลาหมุนทวนเข็มนาฬิกา"};
-    case CodeAction::SpindleStop:
-      return Phrase{"stop the spindle", "หยุดเพลาหมุน"};
-    case CodeAction::CoolantOn:
-      return Phrase{"turn the coolant on", "เปิดน้ำหล่อเย็น"};
-    case CodeAction::CoolantOff:
-      return Phrase{"turn the coolant off", "ปิดน้ำหล่อเย็น"};
-    case CodeAction::SpindleClamp:
-      return Phrase{"apply the spindle brake", "ล็อกเบรกเพลา"};
-    case CodeAction::SpindleRelease:
-      return Phrase{"release the spindle brake", "ปลดเบรกเพลา"};
+    case CodeAction::SpindleCw: return Phrase{"start the spindle clockwise", "เปิดเพลาหมุนตามเข็มนาฬิกา"};
+    case CodeAction::SpindleCcw: return Phrase{"start the spindle counter-clockwise", "เปิดเพลาหมุนทวนเข็มนาฬิกา"};
+    case CodeAction::SpindleStop: return Phrase{"stop the spindle", "หยุดเพลาหมุน"};
+    case CodeAction::CoolantOn: return Phrase{"turn the coolant on", "เปิดน้ำหล่อเย็น"};
+    case CodeAction::CoolantOff: return Phrase{"turn the coolant off", "ปิดน้ำหล่อเย็น"};
+    case CodeAction::SpindleClamp: return Phrase{"apply the spindle brake", "ล็อกเบรกเพลา"};
+    case CodeAction::SpindleRelease: return Phrase{"release the spindle brake", "ปลดเบรกเพลา"};
     case CodeAction::ProgramStop:
       return Phrase{"stop the program until Cycle Start is pressed", "หยุดโปรแกรมจนกว่าจะกด Cycle Start"};
     case CodeAction::OptionalStop:
       return Phrase{"stop here when the Optional Stop switch is on", "หยุดที่นี่เมื่อเปิดสวิตช์ Optional Stop"};
-    case CodeAction::ProgramEnd:
-      return Phrase{"end of the program", "จบโปรแกรม"};
+    case CodeAction::ProgramEnd: return Phrase{"end of the program", "จบโปรแกรม"};
     case CodeAction::LocalCall:
       return Phrase{"run the blocks from N(P) as a subprogram and come back",
                     "เรียกบล็อกตั้งแต่ N(P) เป็นโปรแกรมย่อยแล้วกลับมา"};
-    case CodeAction::SubprogramCall:
-      return Phrase{"run subprogram O(P) and come back", "เรียกโปรแกรมย่อย O(P) แล้วกลับมา"};
-    case CodeAction::SubprogramReturn:
-      return Phrase{"return to the calling program", "กลับไปยังโปรแกรมที่เรียก"};
-    default:
-      return std::nullopt;
+    case CodeAction::SubprogramCall: return Phrase{"run subprogram O(P) and come back", "เรียกโปรแกรมย่อย O(P) แล้วกลับมา"};
+    case CodeAction::SubprogramReturn: return Phrase{"return to the calling program", "กลับไปยังโปรแกรมที่เรียก"};
+    default: return std::nullopt;
   }
 }
 
@@ -242,8 +214,7 @@ class Explainer {
                        : (th_ ? "เรียกโปรแกรมย่อย O" + n + " แล้วกลับมา" : "run subprogram O" + n + " and come back");
           }
           break;
-        default:
-          break;
+        default: break;
       }
       add(w->text() + " " + text);
       if (row->action >= CodeAction::Finishing && row->action <= CodeAction::PeckDrilling) cycleWords(row->action);
@@ -357,24 +328,17 @@ class Explainer {
   std::string statement() const {
     using K = gcode::StatementKind;
     switch (b_.statement.kind) {
-      case K::Assign:
-        return th_ ? "กำหนดค่าให้ตัวแปรมาโคร" : "give a macro variable a value";
-      case K::Goto:
-        return th_ ? "กระโดดไปยังบล็อกที่กำหนด" : "jump to the given block";
+      case K::Assign: return th_ ? "กำหนดค่าให้ตัวแปรมาโคร" : "give a macro variable a value";
+      case K::Goto: return th_ ? "กระโดดไปยังบล็อกที่กำหนด" : "jump to the given block";
       case K::If:
         return b_.statement.then
                    ? (th_ ? "ถ้าเงื่อนไขเป็นจริง กำหนดค่าให้ตัวแปร" : "if the condition holds, give a variable a value")
                    : (th_ ? "ถ้าเงื่อนไขเป็นจริง กระโดดไปยังบล็อกที่กำหนด" : "if the condition holds, jump to the given block");
-      case K::While:
-        return th_ ? "ทำซ้ำถึง END ตราบที่เงื่อนไขยังเป็นจริง" : "repeat up to END while the condition holds";
-      case K::Do:
-        return th_ ? "ทำซ้ำถึง END ไม่รู้จบ (ออกด้วย GOTO)" : "repeat up to END without end (GOTO leaves)";
-      case K::End:
-        return th_ ? "จบช่วงทำซ้ำ กลับไปที่ WHILE/DO" : "end of the loop: back to its WHILE/DO";
-      case K::Output:
-        return th_ ? "ส่งข้อมูลออกภายนอก (ไม่มีผลกับการกลึง)" : "send data out (nothing to machine)";
-      default:
-        return {};
+      case K::While: return th_ ? "ทำซ้ำถึง END ตราบที่เงื่อนไขยังเป็นจริง" : "repeat up to END while the condition holds";
+      case K::Do: return th_ ? "ทำซ้ำถึง END ไม่รู้จบ (ออกด้วย GOTO)" : "repeat up to END without end (GOTO leaves)";
+      case K::End: return th_ ? "จบช่วงทำซ้ำ กลับไปที่ WHILE/DO" : "end of the loop: back to its WHILE/DO";
+      case K::Output: return th_ ? "ส่งข้อมูลออกภายนอก (ไม่มีผลกับการกลึง)" : "send data out (nothing to machine)";
+      default: return {};
     }
   }
 

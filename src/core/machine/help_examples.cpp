@@ -182,15 +182,9 @@ std::string workedExample(char letter, int number, gcode::Dialect dialect) {
   const std::string line = exampleLine(*row);  // the row's own example: the machine's numbers already
   text = own(kStart);
   switch (slotOf(*row)) {
-    case Slot::Running:
-      text += line + "\n" + own(kEnd);
-      break;
-    case Slot::Stopped:
-      text += "G00 X100. Z100. M09\nM05\n" + line + "\nM30\n";
-      break;
-    case Slot::End:
-      text += "G00 X100. Z100. M09\n" + line + "\n";
-      break;
+    case Slot::Running: text += line + "\n" + own(kEnd); break;
+    case Slot::Stopped: text += "G00 X100. Z100. M09\nM05\n" + line + "\nM30\n"; break;
+    case Slot::End: text += "G00 X100. Z100. M09\n" + line + "\n"; break;
   }
   return text;
 }

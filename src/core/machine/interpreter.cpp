@@ -163,9 +163,7 @@ bool Interpreter::executeBlock() {
           drillCycle_ = nullptr;
         }  // any other group 01 row of a profile's code table: no motion of its own
         break;
-      case ModalGroup::NonModal:
-        oneShotG = &c;
-        break;
+      case ModalGroup::NonModal: oneShotG = &c; break;
       case ModalGroup::NoseComp:
         modal_.noseComp = a == CodeAction::CompLeft    ? NoseCompMode::Left
                           : a == CodeAction::CompRight ? NoseCompMode::Right
@@ -188,22 +186,16 @@ bool Interpreter::executeBlock() {
       case ModalGroup::FeedMode:
         modal_.feedMode = a == CodeAction::FeedPerMinute ? FeedMode::PerMinute : FeedMode::PerRev;
         break;
-      case ModalGroup::WorkOffset:
-        modal_.workCoordinate = c.info->number;
-        break;  // G54..: all zero
-      case ModalGroup::Distance:
-        break;  // readDistanceMode
-      case ModalGroup::ReturnLevel:
-        modal_.returnToRPoint = a == CodeAction::ReturnToRPoint;
-        break;
+      case ModalGroup::WorkOffset: modal_.workCoordinate = c.info->number; break;  // G54..: all zero
+      case ModalGroup::Distance: break;                                            // readDistanceMode
+      case ModalGroup::ReturnLevel: modal_.returnToRPoint = a == CodeAction::ReturnToRPoint; break;
       case ModalGroup::CannedCycle:
         if (a == CodeAction::CycleCancel)
           drillCycle_ = nullptr;  // G80: drilling cycle cancel
         else
           cycleG = &c;  // G70-G76, G81-G83
         break;
-      default:
-        break;  // G18 plane, G20/G21 done above
+      default: break;  // G18 plane, G20/G21 done above
     }
   }
   if (const Word* f = find('F')) {
@@ -300,16 +292,11 @@ StateSnapshot Interpreter::snapshot() {
 
 MotionMode Interpreter::motionFor(CodeAction action) {
   switch (action) {
-    case CodeAction::Line:
-      return MotionMode::Line;
-    case CodeAction::ArcCw:
-      return MotionMode::ArcCw;
-    case CodeAction::ArcCcw:
-      return MotionMode::ArcCcw;
-    case CodeAction::Thread:
-      return MotionMode::Thread;
-    default:
-      return MotionMode::Rapid;
+    case CodeAction::Line: return MotionMode::Line;
+    case CodeAction::ArcCw: return MotionMode::ArcCw;
+    case CodeAction::ArcCcw: return MotionMode::ArcCcw;
+    case CodeAction::Thread: return MotionMode::Thread;
+    default: return MotionMode::Rapid;
   }
 }
 
@@ -363,9 +350,7 @@ bool Interpreter::mCode(const CodeWord& c) {
       }
       updateRpm();
       return true;
-    case ModalGroup::MCoolant:
-      mach_.coolant = a == CodeAction::CoolantOn;
-      return true;
+    case ModalGroup::MCoolant: mach_.coolant = a == CodeAction::CoolantOn; return true;
     case ModalGroup::MBrake:
       if (a == CodeAction::SpindleClamp) {  // M86; Haas M14 (M15 releases, as M87)
         if (mach_.spindle != SpindleDir::Stopped) return raise(codes::kBrakeWhileTurning, c.word, {});
@@ -383,9 +368,7 @@ bool Interpreter::mCode(const CodeWord& c) {
         mach_.cAxisMode = false;
       }
       return true;
-    case ModalGroup::MGear:
-      mach_.gearRange = c.info->number - 40;
-      return true;  // M41 = range 1
+    case ModalGroup::MGear: mach_.gearRange = c.info->number - 40; return true;  // M41 = range 1
     case ModalGroup::MThreadChamfer:
       // Haas M23/M24: chamfer out of a thread on/off (a profile without a
       // thread chamfer setting ignores them, as other machine M codes).
@@ -421,8 +404,7 @@ bool Interpreter::mCode(const CodeWord& c) {
         return raise(codes::kNoSuchSequence, c.word, {pending_.text, std::to_string(pending_.target.number)});
       return true;
     }
-    default:
-      return true;
+    default: return true;
   }
 }
 
@@ -455,8 +437,7 @@ bool Interpreter::move(const Word* g) {
       modal_.motion != MotionMode::ArcCcw)
     return cornerNeedsMove();
   switch (modal_.motion) {
-    case MotionMode::Rapid:
-      return rapidTo(target, where);
+    case MotionMode::Rapid: return rapidTo(target, where);
     case MotionMode::Line: {
       if (!feedReady(where, "G01")) return false;
       if (!angleTarget(target, where)) return false;

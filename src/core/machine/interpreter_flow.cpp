@@ -28,18 +28,12 @@ namespace {
 
 std::string statementText(const Block& b) {
   switch (b.statement.kind) {
-    case StatementKind::Goto:
-      return "GOTO";
-    case StatementKind::If:
-      return "IF";
-    case StatementKind::While:
-      return "WHILE";
-    case StatementKind::Do:
-      return "DO" + std::to_string(b.statement.loop);
-    case StatementKind::End:
-      return "END" + std::to_string(b.statement.loop);
-    default:
-      return "#";
+    case StatementKind::Goto: return "GOTO";
+    case StatementKind::If: return "IF";
+    case StatementKind::While: return "WHILE";
+    case StatementKind::Do: return "DO" + std::to_string(b.statement.loop);
+    case StatementKind::End: return "END" + std::to_string(b.statement.loop);
+    default: return "#";
   }
 }
 
@@ -373,8 +367,7 @@ bool Interpreter::statement(const Block& b) {
       return true;
     }
     case StatementKind::Output:  // DPRNT and friends print on the real control; nothing moves
-    case StatementKind::None:
-      return true;
+    case StatementKind::None: return true;
   }
   return true;
 }
@@ -402,8 +395,7 @@ bool Interpreter::performCall() {
                          nullptr);
     case PendingCall::Kind::Return:
       return returnFromCall(call.hasP ? std::optional<int>(call.target.number) : std::nullopt, call.where, call.text);
-    case PendingCall::Kind::None:
-      return true;
+    case PendingCall::Kind::None: return true;
   }
   return true;
 }

@@ -29,36 +29,22 @@ int Interpreter::modalCodeInA(int group) const {
     case 1:
       if (singleCycle_) return singleCycle_->number;
       switch (modal_.motion) {
-        case MotionMode::Rapid:
-          return 0;
-        case MotionMode::Line:
-          return 1;
-        case MotionMode::ArcCw:
-          return 2;
-        case MotionMode::ArcCcw:
-          return 3;
-        case MotionMode::Thread:
-          return 32;
+        case MotionMode::Rapid: return 0;
+        case MotionMode::Line: return 1;
+        case MotionMode::ArcCw: return 2;
+        case MotionMode::ArcCcw: return 3;
+        case MotionMode::Thread: return 32;
       }
       return 0;
-    case 2:
-      return modal_.spindleMode == SpindleMode::ConstantSurface ? 96 : 97;
-    case 5:
-      return modal_.feedMode == FeedMode::PerMinute ? 98 : 99;
-    case 6:
-      return modal_.units == Units::Inch ? 20 : 21;
-    case 7:
-      return modal_.noseComp == NoseCompMode::Left ? 41 : modal_.noseComp == NoseCompMode::Right ? 42 : 40;
-    case 10:
-      return drillCycle_ ? drillCycle_->number : 80;
-    case 12:
-      return modalCall_.active ? 66 : 67;
-    case 14:
-      return modal_.workCoordinate;
-    case 16:
-      return 18;
-    default:
-      return 0;
+    case 2: return modal_.spindleMode == SpindleMode::ConstantSurface ? 96 : 97;
+    case 5: return modal_.feedMode == FeedMode::PerMinute ? 98 : 99;
+    case 6: return modal_.units == Units::Inch ? 20 : 21;
+    case 7: return modal_.noseComp == NoseCompMode::Left ? 41 : modal_.noseComp == NoseCompMode::Right ? 42 : 40;
+    case 10: return drillCycle_ ? drillCycle_->number : 80;
+    case 12: return modalCall_.active ? 66 : 67;
+    case 14: return modal_.workCoordinate;
+    case 16: return 18;
+    default: return 0;
   }
 }
 
@@ -83,49 +69,25 @@ bool Interpreter::read(int n, MacroValue& out, const char*& errorCode) {
     const io::Offset& o = offsets_.at(row);
     const double lengthUnit = unit();
     switch (kind) {
-      case 0:
-        out = MacroValue::of(o.x / lengthUnit);
-        break;
-      case 1:
-        out = MacroValue::of(o.z / lengthUnit);
-        break;
-      case 2:
-        out = MacroValue::of(o.r / lengthUnit);
-        break;
-      default:
-        out = MacroValue::of(o.tip);
-        break;
+      case 0: out = MacroValue::of(o.x / lengthUnit); break;
+      case 1: out = MacroValue::of(o.z / lengthUnit); break;
+      case 2: out = MacroValue::of(o.r / lengthUnit); break;
+      default: out = MacroValue::of(o.tip); break;
     }
     return true;
   }
   switch (n) {
-    case 3000:
-      return true;  // vacant until written (the write raises the alarm)
-    case 4109:
-      out = MacroValue::of(modal_.feed / unit());
-      return true;
-    case 4115:
-      out = MacroValue::of(frames_.back().program);
-      return true;
-    case 4119:
-      out = MacroValue::of(modal_.sWord);
-      return true;
+    case 3000: return true;  // vacant until written (the write raises the alarm)
+    case 4109: out = MacroValue::of(modal_.feed / unit()); return true;
+    case 4115: out = MacroValue::of(frames_.back().program); return true;
+    case 4119: out = MacroValue::of(modal_.sWord); return true;
     case 5001:
-    case 5041:
-      out = MacroValue::of(positionValue(1, false));
-      return true;
+    case 5041: out = MacroValue::of(positionValue(1, false)); return true;
     case 5002:
-    case 5042:
-      out = MacroValue::of(positionValue(2, false));
-      return true;
-    case 5021:
-      out = MacroValue::of(positionValue(1, true));
-      return true;
-    case 5022:
-      out = MacroValue::of(positionValue(2, true));
-      return true;
-    default:
-      break;
+    case 5042: out = MacroValue::of(positionValue(2, false)); return true;
+    case 5021: out = MacroValue::of(positionValue(1, true)); return true;
+    case 5022: out = MacroValue::of(positionValue(2, true)); return true;
+    default: break;
   }
   if (n >= 4001 && n <= 4022) {
     out = MacroValue::of(modalCode(n - 4000));
@@ -158,12 +120,8 @@ bool Interpreter::writeVariable(int n, MacroValue v, const SourceRange& at) {
     io::Offset& o = offsets_.offsets[static_cast<std::size_t>(row)];
     const double value = v.vacant ? 0.0 : v.value;
     switch (kind) {
-      case 0:
-        o.x = value * unit();
-        break;
-      case 1:
-        o.z = value * unit();
-        break;
+      case 0: o.x = value * unit(); break;
+      case 1: o.z = value * unit(); break;
       case 2:
         if (value < 0.0) return flowAlarm(codes::kReadOnlyVariable, at, {name + " =", std::to_string(n)});
         o.r = value * unit();

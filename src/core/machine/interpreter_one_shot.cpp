@@ -59,8 +59,7 @@ bool Interpreter::referenceReturn(const Word* w) {
 bool Interpreter::oneShot(const CodeWord& c) {
   const Word* w = c.word;
   switch (c.info->action) {
-    case CodeAction::Dwell:
-      return dwell(w);
+    case CodeAction::Dwell: return dwell(w);
     case CodeAction::ReferenceCheck: {
       if (!hasAxisWords()) return true;
       if (!rapidTo(axisTarget(), w)) return false;
@@ -109,8 +108,7 @@ bool Interpreter::oneShot(const CodeWord& c) {
       if (const Word* z = find('Z')) target.x() = z->value * u + zOf(zero);
       return rapidTo(target, w);
     }
-    default:
-      return raise(codes::kNotSupportedYet, w, {wordText(*w)});
+    default: return raise(codes::kNotSupportedYet, w, {wordText(*w)});
   }
 }
 

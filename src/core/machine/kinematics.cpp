@@ -78,8 +78,7 @@ double integrateInverseRpm(const Segment& path, const InverseRpm& g) {
       sum += (ub - ua) * g.invCap;
     } else {
       // integral of x du = cx (ub - ua) - (r / dir) (cos(phi0 + dir ub) - cos(phi0 + dir ua))
-      const double integral =
-          cx * (ub - ua) - dir * r * (std::cos(phi0 + dir * ub) - std::cos(phi0 + dir * ua));
+      const double integral = cx * (ub - ua) - dir * r * (std::cos(phi0 + dir * ub) - std::cos(phi0 + dir * ua));
       sum += (xm < 0 ? -integral : integral) / g.c;
     }
   }

@@ -21,29 +21,14 @@ bool MacroStore::read(int n, int level, const MachineSink& clock, MacroValue& ou
     return true;
   }
   switch (n) {
-    case 3001:
-      out = MacroValue::of(clock.elapsed() * 1000.0 - timerBase_);
-      return true;
-    case 3002:
-      out = MacroValue::of(clock.elapsed() / 3600.0 - hourBase_);
-      return true;
-    case 3901:
-      out = MacroValue::of(partsMachined_);
-      return true;
-    case 3902:
-      out = MacroValue::of(partsRequired_);
-      return true;
-    case 4113:
-      out = MacroValue::of(lastM_);
-      return true;
-    case 4114:
-      out = MacroValue::of(lastN_);
-      return true;
-    case 4120:
-      out = MacroValue::of(lastT_);
-      return true;
-    default:
-      return false;
+    case 3001: out = MacroValue::of(clock.elapsed() * 1000.0 - timerBase_); return true;
+    case 3002: out = MacroValue::of(clock.elapsed() / 3600.0 - hourBase_); return true;
+    case 3901: out = MacroValue::of(partsMachined_); return true;
+    case 3902: out = MacroValue::of(partsRequired_); return true;
+    case 4113: out = MacroValue::of(lastM_); return true;
+    case 4114: out = MacroValue::of(lastN_); return true;
+    case 4120: out = MacroValue::of(lastT_); return true;
+    default: return false;
   }
 }
 

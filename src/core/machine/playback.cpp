@@ -87,7 +87,8 @@ Pose poseAt(const Timeline& timeline, int done, double time) {
   const int k = shownSnapshot(timeline, done, time);
   // Stopped by an alarm: the alarmed block's modal words are in force.
   const bool atAlarm = timeline.alarm && timeline.flow.alarmState &&
-                       k + 1 >= static_cast<int>(timeline.snapshots.size()) && time >= timeline.cycleTime() - kPlaybackEps;
+                       k + 1 >= static_cast<int>(timeline.snapshots.size()) &&
+                       time >= timeline.cycleTime() - kPlaybackEps;
   if (atAlarm || (k >= 0 && k < static_cast<int>(timeline.snapshots.size()))) {
     const StateSnapshot& snap = atAlarm ? *timeline.flow.alarmState : at(timeline, k);
     p.hasState = true;
@@ -97,9 +98,11 @@ Pose poseAt(const Timeline& timeline, int done, double time) {
     p.rpm = snap.machine.rpm;
   }
   // Inside a move: its feed, and the rpm as G96 changes it along the move.
-  const double doneTime = done >= 0 && done < static_cast<int>(timeline.snapshots.size()) ? at(timeline, done).time : 0.0;
+  const double doneTime =
+      done >= 0 && done < static_cast<int>(timeline.snapshots.size()) ? at(timeline, done).time : 0.0;
   const int m = timeline.moveAt(time);
-  if (m >= 0 && time < timeline.moves[static_cast<std::size_t>(m)].tEnd - kPlaybackEps && time > doneTime + kPlaybackEps) {
+  if (m >= 0 && time < timeline.moves[static_cast<std::size_t>(m)].tEnd - kPlaybackEps &&
+      time > doneTime + kPlaybackEps) {
     const Move& move = timeline.moves[static_cast<std::size_t>(m)];
     const double f = move.fractionAt(time);
     p.feedMmPerMin = move.feed;

@@ -70,8 +70,9 @@ std::vector<Diagnostic> modalWarningsFromRun(const gcode::Program& program, cons
       for (const StateSnapshot& s : record.snapshots)
         if (s.file == 0 && s.line < a.range.line) before = &s;
       const bool inch = before && before->modal.units == Units::Inch;
-      if (r) out.push_back(warning(gcode::codes::kArcRadiusCannotJoin, a.range,
-                                   {r->text(), gcode::formatFixed(inch ? halfMm / 25.4 : halfMm, 3)}));
+      if (r)
+        out.push_back(warning(gcode::codes::kArcRadiusCannotJoin, a.range,
+                              {r->text(), gcode::formatFixed(inch ? halfMm / 25.4 : halfMm, 3)}));
     }
   }
   return out;

@@ -300,16 +300,11 @@ std::vector<Diagnostic> stockNotes(const io::JobHeader& stock, const StockInfere
                                    int firstLine) {
   const std::string size = io::stockSizeText(stock);
   switch (stock.stockSource) {
-    case io::StockSource::Header:
-      return {note(codes::kStockFromHeader, 0, {size})};
-    case io::StockSource::CommandLine:
-      return {note(codes::kStockFromCommandLine, 0, {size})};
-    case io::StockSource::JobDetails:
-      return {note(codes::kStockFromJobDetails, 0, {size})};
-    case io::StockSource::Default:
-      return {note(codes::kStockDefault, 0, {size})};
-    case io::StockSource::Inferred:
-      break;
+    case io::StockSource::Header: return {note(codes::kStockFromHeader, 0, {size})};
+    case io::StockSource::CommandLine: return {note(codes::kStockFromCommandLine, 0, {size})};
+    case io::StockSource::JobDetails: return {note(codes::kStockFromJobDetails, 0, {size})};
+    case io::StockSource::Default: return {note(codes::kStockDefault, 0, {size})};
+    case io::StockSource::Inferred: break;
   }
   if (!inference || !inference->found) return {note(codes::kStockDefault, 0, {size})};
   const StockInference& r = *inference;

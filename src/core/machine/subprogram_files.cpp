@@ -55,8 +55,8 @@ std::vector<FolderEntry> folderFiles(const std::string& folder) {
   for (; !ec && it != fs::directory_iterator(); it.increment(ec)) {
     std::error_code fec;
     const bool regular = it->is_regular_file(fec);
-    files.push_back({lower(it->path().filename().string()), it->path().string(), regular,
-                     !regular && it->is_directory(fec)});
+    files.push_back(
+        {lower(it->path().filename().string()), it->path().string(), regular, !regular && it->is_directory(fec)});
     if (files.size() > 100000) break;
   }
   std::sort(files.begin(), files.end(),
@@ -111,8 +111,7 @@ std::vector<Diagnostic> attachSubprogramFiles(gcode::Program& program, const std
       if (path.empty() && notAFile &&
           std::none_of(program.notProgramFiles.begin(), program.notProgramFiles.end(),
                        [number](const gcode::Program::NotAFile& n) { return n.number == number; }))
-        program.notProgramFiles.push_back(
-            {number, fs::path(notAFile->path).filename().string(), notAFile->folder});
+        program.notProgramFiles.push_back({number, fs::path(notAFile->path).filename().string(), notAFile->folder});
       if (path.empty() || attached.count(path)) continue;
       attached.insert(path);
       const int fileIndex = static_cast<int>(program.files.size());
@@ -126,8 +125,8 @@ std::vector<Diagnostic> attachSubprogramFiles(gcode::Program& program, const std
       gcode::Program sub = gcode::parse(read.value->gcode, read.value->gcodeFirstLine, fileIndex);
       for (Diagnostic& d : sub.lexicalDiagnostics) program.lexicalDiagnostics.push_back(std::move(d));
       // A file without its own O block is the program its name says.
-      const bool named = !sub.blocks.empty() && !sub.blocks.front().words.empty() &&
-                         sub.blocks.front().words.front().letter == 'O';
+      const bool named =
+          !sub.blocks.empty() && !sub.blocks.front().words.empty() && sub.blocks.front().words.front().letter == 'O';
       if (!named) {
         gcode::Block o;
         o.line = read.value->gcodeFirstLine;

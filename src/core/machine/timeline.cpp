@@ -46,16 +46,18 @@ double Move::timeAt(double fraction) const {
   const Profile p = profileOf(*this);
   const double upPart = p.peak * p.up / 2.0, downPart = p.peak * p.down / 2.0;
   double tau;
-  if (s <= upPart) tau = std::sqrt(2.0 * p.up * s / p.peak);
-  else if (s <= 1.0 - downPart) tau = s / p.peak + p.up / 2.0;
-  else tau = p.total - std::sqrt(2.0 * p.down * (1.0 - s) / p.peak);
+  if (s <= upPart)
+    tau = std::sqrt(2.0 * p.up * s / p.peak);
+  else if (s <= 1.0 - downPart)
+    tau = s / p.peak + p.up / 2.0;
+  else
+    tau = p.total - std::sqrt(2.0 * p.down * (1.0 - s) / p.peak);
   return tStart + std::clamp(tau, 0.0, p.total);
 }
 
 int Timeline::moveAt(double t) const {
   if (moves.empty() || t < moves.front().tStart) return -1;
-  auto it = std::upper_bound(moves.begin(), moves.end(), t,
-                             [](double time, const Move& m) { return time < m.tEnd; });
+  auto it = std::upper_bound(moves.begin(), moves.end(), t, [](double time, const Move& m) { return time < m.tEnd; });
   if (it == moves.end()) return static_cast<int>(moves.size()) - 1;
   return static_cast<int>(it - moves.begin());
 }
@@ -66,8 +68,10 @@ std::vector<ToolTime> Timeline::timeByTool() const {
     const double seconds = m.tEnd - m.tStart;
     if (seconds <= 0.0) continue;
     auto it = std::find_if(out.begin(), out.end(), [&m](const ToolTime& t) { return t.tool == m.tool; });
-    if (it == out.end()) out.push_back({m.tool, seconds});
-    else it->seconds += seconds;
+    if (it == out.end())
+      out.push_back({m.tool, seconds});
+    else
+      it->seconds += seconds;
   }
   return out;
 }
@@ -92,8 +96,10 @@ CutSide sideOfCuts(const Timeline& timeline) {
   for (const Move& m : timeline.moves) {
     if (m.kind != MoveKind::Line && m.kind != MoveKind::Arc && m.kind != MoveKind::Thread) continue;
     const double mid = (m.path.start.y() + m.path.end.y()) / 2.0;
-    if (mid < -kOffCentre) below += m.path.length();
-    else if (mid > kOffCentre) above += m.path.length();
+    if (mid < -kOffCentre)
+      below += m.path.length();
+    else if (mid > kOffCentre)
+      above += m.path.length();
   }
   if (below > above && below >= 1.0) return CutSide::Beyond;
   return above > below && above >= 1.0 ? CutSide::Front : CutSide::None;

@@ -79,16 +79,11 @@ std::string gText(int g) { return fmt::format("G{:02}", g); }
 // The G number of a modal motion, as the notes quote it.
 int motionCode(MotionMode mode) {
   switch (mode) {
-    case MotionMode::Rapid:
-      return 0;
-    case MotionMode::Line:
-      return 1;
-    case MotionMode::ArcCw:
-      return 2;
-    case MotionMode::ArcCcw:
-      return 3;
-    case MotionMode::Thread:
-      return 32;
+    case MotionMode::Rapid: return 0;
+    case MotionMode::Line: return 1;
+    case MotionMode::ArcCw: return 2;
+    case MotionMode::ArcCcw: return 3;
+    case MotionMode::Thread: return 32;
   }
   return 1;
 }
@@ -195,8 +190,7 @@ BlockCodes codesOf(const gcode::Block& b, gcode::Dialect dialect) {
         out.cycle = row->action;
         out.cycleNumber = g->code();
         break;
-      default:
-        break;
+      default: break;
     }
   }
   return out;
@@ -400,9 +394,7 @@ class Gatherer {
         return;
       case CodeAction::Drilling:
       case CodeAction::SpotDrilling:
-      case CodeAction::PeckDrilling:
-        drilling(deepestZ, gText(codes.cycleNumber), b.line);
-        return;
+      case CodeAction::PeckDrilling: drilling(deepestZ, gText(codes.cycleNumber), b.line); return;
       case CodeAction::TurnRoughing:
       case CodeAction::FaceRoughing:
       case CodeAction::PatternRepeating: {
@@ -423,8 +415,7 @@ class Gatherer {
         note(ToolKind::Turning, ToolReason::Turning, gText(codes.cycleNumber), b.line, false,
              codes.cycle == CodeAction::Finishing);
         return;
-      default:
-        break;
+      default: break;
     }
     // Plain feeds (G01, G02, G03 and whatever a macro or a subprogram moves).
     for (const Move& m : moves) {

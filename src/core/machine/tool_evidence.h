@@ -39,36 +39,36 @@ struct MotionUse {
   double outside = 0.0;       // Z feeds left by a retract outward
   double threadInside = 0.0;  // the same for thread passes only
   double threadOutside = 0.0;
-  double belowZero = 0.0;     // fed at X < 0 (a tool beyond the centre)
-  double aboveZero = 0.0;     // fed at X > 0
-  int insideLine = 0;         // the first Z feed left inward
-  int belowLine = 0;          // the first feed at X < 0
-  int threadLine = 0;         // the first thread pass
-  double drillDepth = 0.0;    // deepest feed along -Z on the centre line (Z < 0)
+  double belowZero = 0.0;   // fed at X < 0 (a tool beyond the centre)
+  double aboveZero = 0.0;   // fed at X > 0
+  int insideLine = 0;       // the first Z feed left inward
+  int belowLine = 0;        // the first feed at X < 0
+  int threadLine = 0;       // the first thread pass
+  double drillDepth = 0.0;  // deepest feed along -Z on the centre line (Z < 0)
   int drillLine = 0;
-  double plunge = 0.0;        // deepest straight radial feed toward the centre off it (on the diameter)
-  double plungeEndX = 0.0;    // the X it ended at (diameter)
-  double plungeZ = 0.0;       // and its Z
+  double plunge = 0.0;      // deepest straight radial feed toward the centre off it (on the diameter)
+  double plungeEndX = 0.0;  // the X it ended at (diameter)
+  double plungeZ = 0.0;     // and its Z
   int plungeLine = 0;
 };
 
 struct StationUse {
-  int firstLine = 0;              // the first T block selecting it
-  std::set<int> offsets;          // offset numbers used with it (1..)
+  int firstLine = 0;      // the first T block selecting it
+  std::set<int> offsets;  // offset numbers used with it (1..)
   std::optional<Evidence> comment;
   std::optional<Evidence> cycle;  // the first telling cycle or move
   std::optional<Evidence> turning;
-  double drillDepthMm = 0.0;      // deepest drilling on centre
+  double drillDepthMm = 0.0;  // deepest drilling on centre
   int drillLine = 0;
   std::string drillCode;
-  MotionUse motion;               // everything it moved
+  MotionUse motion;  // everything it moved
 };
 
 struct ProgramEvidence {
-  std::map<int, StationUse> uses;     // by station, every station the run selects
-  std::vector<int> order;             // the station of every T selection, in run order
-  std::map<int, Evidence> partings;   // station -> its plunge to X0 (counts for one of the last tools)
-  bool beyondCentre = false;          // the moves were mirrored: the tools work at X < 0
+  std::map<int, StationUse> uses;       // by station, every station the run selects
+  std::vector<int> order;               // the station of every T selection, in run order
+  std::map<int, Evidence> partings;     // station -> its plunge to X0 (counts for one of the last tools)
+  bool beyondCentre = false;            // the moves were mirrored: the tools work at X < 0
   std::vector<std::string_view> lines;  // the G-code text's lines (comments, block texts)
   int firstLine = 1;
   // The words of a file line ("G01 Z-51.4") without its comment, for a note.

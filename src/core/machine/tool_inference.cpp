@@ -57,8 +57,10 @@ const io::LibraryTool* pick(const io::ToolLibrary& lib, const Evidence& e) {
     if (e.kind == ToolKind::Turning) {
       const bool insertMatch = t.id.rfind(insert, 0) == 0;
       const bool bestInsert = best->id.rfind(insert, 0) == 0;
-      if (insertMatch && !bestInsert) best = &t;
-      else if (insertMatch && bestInsert && e.finishing && t.noseRadius < best->noseRadius) best = &t;
+      if (insertMatch && !bestInsert)
+        best = &t;
+      else if (insertMatch && bestInsert && e.finishing && t.noseRadius < best->noseRadius)
+        best = &t;
     } else if (e.kind == ToolKind::Drill && e.drillMm > 0.0) {
       if (std::abs(t.size - e.drillMm) < std::abs(best->size - e.drillMm)) best = &t;
     }
@@ -83,7 +85,8 @@ std::optional<ToolKind> currentKind(const io::ToolTable& tools, int station, con
 // What a tools.cfg line names: "02-outside-left-hand.bmp" is a left-hand turning tool.
 bool namesLeftHand(std::string_view fileName) {
   std::string name(fileName);
-  std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(name.begin(), name.end(), name.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return name.find("left-hand") != std::string::npos || name.find("left_hand") != std::string::npos ||
          name.find("lefthand") != std::string::npos;
 }
@@ -113,8 +116,7 @@ const ToolChoice* ToolInference::choiceFor(int station) const {
 
 ToolInference inferTools(const gcode::Program& program, std::string_view gcodeText, int gcodeFirstLine,
                          const MachineSetup& setup, const io::ToolLibrary& library,
-                         const std::vector<StationOverride>& overrides, int stations,
-                         const InferenceContext& context) {
+                         const std::vector<StationOverride>& overrides, int stations, const InferenceContext& context) {
   ToolInference out;
   out.setup = setup;
   out.fromProgram = context.fromProgram;
@@ -125,8 +127,10 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
   // for a plain program the side its cuts are on, else the machine's setting.
   const CutSide side = sideOfCuts(*out.record);
   bool beyond = setup.machine.toolsBeyondCentre;
-  if (context.toolsBeyondCentre) beyond = *context.toolsBeyondCentre;
-  else if (context.fromProgram && side != CutSide::None) beyond = side == CutSide::Beyond;
+  if (context.toolsBeyondCentre)
+    beyond = *context.toolsBeyondCentre;
+  else if (context.fromProgram && side != CutSide::None)
+    beyond = side == CutSide::Beyond;
   const detail::ProgramEvidence evidence =
       detail::gatherEvidence(program, gcodeText, gcodeFirstLine, *out.record, context.run.dialect, beyond);
   std::map<int, StationUse> uses = evidence.uses;
@@ -157,8 +161,12 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
       d.severity = Severity::Note;
       d.code = empty ? codes::kOffsetFromLibrary : codes::kOffsetReplacedByLibrary;
       d.range.line = line;
-      d.args = {twoDigits(n), fmt::format("{:g}", tool.noseRadius), std::to_string(tool.tip), tool.id,
-                fmt::format("{:g}", o.r), std::to_string(o.tip)};
+      d.args = {twoDigits(n),
+                fmt::format("{:g}", tool.noseRadius),
+                std::to_string(tool.tip),
+                tool.id,
+                fmt::format("{:g}", o.r),
+                std::to_string(o.tip)};
       o.r = tool.noseRadius;
       o.tip = tool.tip;
       out.offsetNotes.push_back(std::move(d));
@@ -304,8 +312,10 @@ bool parseStationOverride(std::string_view text, int stations, const io::ToolLib
   int station = 0;
   bool digits = !number.empty() && number.size() <= 2;
   for (char c : number) {
-    if (c < '0' || c > '9') digits = false;
-    else station = station * 10 + (c - '0');
+    if (c < '0' || c > '9')
+      digits = false;
+    else
+      station = station * 10 + (c - '0');
   }
   const auto say = [&](const char* code, std::vector<std::string> args) {
     error = formatMessage(Diagnostic{Severity::Error, code, {}, std::move(args)}, lang);

@@ -11,9 +11,9 @@ namespace klueng::core::machine::detail {
 
 struct CommentTool {
   io::ToolKind kind = io::ToolKind::Unknown;
-  bool finishing = false;     // FINISH / กลึงละเอียด: the small nose radius
-  std::string insert;         // "vnmg", "dnmg", "cnmg" when the comment names one
-  double drillMm = 0.0;       // a size written with the drill ("DRILL 16MM", "Ø10"); 0 = none
+  bool finishing = false;  // FINISH / กลึงละเอียด: the small nose radius
+  std::string insert;      // "vnmg", "dnmg", "cnmg" when the comment names one
+  double drillMm = 0.0;    // a size written with the drill ("DRILL 16MM", "Ø10"); 0 = none
 };
 
 // Unknown kind when the comment names no tool.

@@ -79,12 +79,12 @@ inline void expectWellFormed(const CompOutput& out, int movesCovered) {
   EXPECT_EQ(out.pieces.empty() ? -1 : out.pieces.back().source, movesCovered - 1);
 }
 
-#define EXPECT_VEC_NEAR(actual, expected, tol)                                   \
-  do {                                                                           \
-    const ::klueng::core::Vec2 a_ = (actual);                                    \
-    const ::klueng::core::Vec2 e_ = (expected);                                  \
-    EXPECT_NEAR(a_.x(), e_.x(), tol) << "z of " #actual;                         \
-    EXPECT_NEAR(a_.y(), e_.y(), tol) << "x of " #actual;                         \
+#define EXPECT_VEC_NEAR(actual, expected, tol)           \
+  do {                                                   \
+    const ::klueng::core::Vec2 a_ = (actual);            \
+    const ::klueng::core::Vec2 e_ = (expected);          \
+    EXPECT_NEAR(a_.x(), e_.x(), tol) << "z of " #actual; \
+    EXPECT_NEAR(a_.y(), e_.y(), tol) << "x of " #actual; \
   } while (0)
 
 }  // namespace klueng::core::comp::testing

@@ -38,7 +38,8 @@ TEST_P(LineLineCorner, MatchesTheSeedClosedFormOrBridges) {
   const Vec2 P(5, 10);
   const double length = 20;
   for (int alphaDeg = 0; alphaDeg < 360; alphaDeg += 15) {
-    for (int turnDeg : {-170, -150, -120, -91, -90, -89, -60, -45, -30, -15, 15, 30, 45, 60, 89, 90, 91, 120, 150, 170}) {
+    for (int turnDeg :
+         {-170, -150, -120, -91, -90, -89, -60, -45, -30, -15, 15, 30, 45, 60, 89, 90, 91, 120, 150, 170}) {
       SCOPED_TRACE(::testing::Message() << "alpha " << alphaDeg << " turn " << turnDeg);
       const double a = alphaDeg * kDeg, b = (alphaDeg + turnDeg) * kDeg;
       const Vec2 t1(std::cos(a), std::sin(a)), t2(std::cos(b), std::sin(b));
@@ -127,8 +128,7 @@ TEST(ArcCorner, LineIntoArcConvexExtendsTheLine) {
   EXPECT_NEAR(piecesOf(out, 2)[0].radius(), 4.2, 1e-9);
   const std::vector<Segment> contour{moves[1], moves[2]};
   for (const CompPiece& p : out.pieces)
-    for (int k = 0; k <= 100; ++k)
-      EXPECT_GE(testing::distanceToPath(p.path.pointAt(k / 100.0), contour), R - 1e-9);
+    for (int k = 0; k <= 100; ++k) EXPECT_GE(testing::distanceToPath(p.path.pointAt(k / 100.0), contour), R - 1e-9);
 }
 
 // G03 R5 around the origin to (0,5), then G03 R5 around (-5,5) leaving upwards:
@@ -215,12 +215,14 @@ TEST(ArcCorner, TangentContinuationAddsNothing) {
 // arc) have no direction: they get a zero-length piece where the nose is, the
 // corner is taken between their neighbours, and nothing becomes NaN.
 TEST(ArcCorner, ZeroLengthMovesGiveNoNaN) {
-  const std::vector<Segment> moves{
-      Segment::line({5, 12}, {2, 10}),  Segment::line({2, 10}, {0, 10}),
-      Segment::line({0, 10}, {0, 10}),  Segment::line({0, 10}, {-1e-12, 10}),
-      Segment::arc({-1e-12, 10}, {-1e-12, 10}, {-1e-12, 10}, true),
-      Segment::line({-1e-12, 10}, {-5, 15}),  // 45 degrees up: concave for G42
-      Segment::line({-5, 15}, {-5, 15}),      Segment::line({-5, 15}, {20, 20})};
+  const std::vector<Segment> moves{Segment::line({5, 12}, {2, 10}),
+                                   Segment::line({2, 10}, {0, 10}),
+                                   Segment::line({0, 10}, {0, 10}),
+                                   Segment::line({0, 10}, {-1e-12, 10}),
+                                   Segment::arc({-1e-12, 10}, {-1e-12, 10}, {-1e-12, 10}, true),
+                                   Segment::line({-1e-12, 10}, {-5, 15}),  // 45 degrees up: concave for G42
+                                   Segment::line({-5, 15}, {-5, 15}),
+                                   Segment::line({-5, 15}, {20, 20})};
   for (const Side side : {Side::Left, Side::Right}) {
     for (const bool cancel : {false, true}) {
       const CompOutput out = compensate(CompInput{moves, side, R, 3, cancel});

@@ -16,7 +16,13 @@ using testing::piecesOf;
 // G42 towards the chuck along X10, a G02 R1 concave fillet (centre (0,11))
 // into a face up at Z-1, then G40.
 std::vector<Segment> filletProfile() {
-  return PathBuilder(5, 15).lineTo(2, 10).lineTo(0, 10).arcTo(-1, 11, 0, 11, true).lineTo(-1, 14).lineTo(20, 30).build();
+  return PathBuilder(5, 15)
+      .lineTo(2, 10)
+      .lineTo(0, 10)
+      .arcTo(-1, 11, 0, 11, true)
+      .lineTo(-1, 14)
+      .lineTo(20, 30)
+      .build();
 }
 
 TEST(Interference, ConcaveArcSmallerThanTheNose) {
@@ -61,8 +67,13 @@ TEST(Interference, NoseEqualToTheFilletStandsAtItsCentre) {
 
 // A convex arc smaller than the nose is no problem: the nose goes round it.
 TEST(Interference, ConvexArcSmallerThanTheNoseIsFine) {
-  const auto moves = PathBuilder(5, 15).lineTo(2, 10).lineTo(0, 10).lineTo(0, 12).arcTo(-0.5, 12.5, -0.5, 12, false)
-                         .lineTo(-5, 12.5).build();
+  const auto moves = PathBuilder(5, 15)
+                         .lineTo(2, 10)
+                         .lineTo(0, 10)
+                         .lineTo(0, 12)
+                         .arcTo(-0.5, 12.5, -0.5, 12, false)
+                         .lineTo(-5, 12.5)
+                         .build();
   const CompOutput out = compensate(CompInput{moves, Side::Right, 0.8, 3, false});
   EXPECT_FALSE(out.interference);
   EXPECT_NEAR(piecesOf(out, 3)[0].radius(), 1.3, 1e-12);
@@ -72,8 +83,15 @@ TEST(Interference, ConvexArcSmallerThanTheNoseIsFine) {
 // walls the bottom's offset (X12.8) would run from Z-5.8 to Z-5.2, i.e. +Z,
 // against its programmed -Z direction.
 std::vector<Segment> groove(double width) {
-  return PathBuilder(5, 20).lineTo(2, 15).lineTo(-5, 15).lineTo(-5, 12).lineTo(-5 - width, 12).lineTo(-5 - width, 15)
-      .lineTo(-15, 15).lineTo(20, 30).build();
+  return PathBuilder(5, 20)
+      .lineTo(2, 15)
+      .lineTo(-5, 15)
+      .lineTo(-5, 12)
+      .lineTo(-5 - width, 12)
+      .lineTo(-5 - width, 15)
+      .lineTo(-15, 15)
+      .lineTo(20, 30)
+      .build();
 }
 
 TEST(Interference, GrooveNarrowerThanTheNoseReversesThePath) {

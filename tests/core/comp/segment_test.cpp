@@ -50,17 +50,17 @@ struct DistanceCase {
 
 TEST(Segment, DistanceToLineClampsToTheEnds) {
   const Segment s = Segment::line({0, 0}, {10, 0});
-  for (const DistanceCase& c : {DistanceCase{{5, 3}, 3.0}, DistanceCase{{-4, 3}, 5.0}, DistanceCase{{13, -4}, 5.0},
-                                DistanceCase{{10, 0}, 0.0}})
+  for (const DistanceCase& c :
+       {DistanceCase{{5, 3}, 3.0}, DistanceCase{{-4, 3}, 5.0}, DistanceCase{{13, -4}, 5.0}, DistanceCase{{10, 0}, 0.0}})
     EXPECT_NEAR(distanceTo(s, c.p), c.expected, 1e-12) << c.p.transpose();
 }
 
 TEST(Segment, DistanceToArcUsesItsAngularRange) {
   const Segment quarter = Segment::arc({5, 0}, {0, 5}, {0, 0}, true);  // first quadrant
   for (const DistanceCase& c : {
-           DistanceCase{{6, 6}, std::sqrt(72.0) - 5},  // inside the range, outside the circle
-           DistanceCase{{1, 1}, 5 - std::sqrt(2.0)},   // inside the range, inside the circle
-           DistanceCase{{0, 0}, 5.0},                  // the centre
+           DistanceCase{{6, 6}, std::sqrt(72.0) - 5},                 // inside the range, outside the circle
+           DistanceCase{{1, 1}, 5 - std::sqrt(2.0)},                  // inside the range, inside the circle
+           DistanceCase{{0, 0}, 5.0},                                 // the centre
            DistanceCase{{-3, -4}, std::sqrt(8.0 * 8.0 + 4.0 * 4.0)},  // out of range: end point (5,0) is nearer
        })
     EXPECT_NEAR(distanceTo(quarter, c.p), c.expected, 1e-12) << c.p.transpose();
@@ -140,7 +140,7 @@ TEST(IntersectCarriers, TwoCircles) {
   const double z = 58.0 / 14.0, x = std::sqrt(25 - z * z);
   EXPECT_VEC_NEAR(hits.points[0], Vec2(z, x), 1e-12);
   EXPECT_VEC_NEAR(hits.points[1], Vec2(z, -x), 1e-12);
-  EXPECT_EQ(intersectCarriers(a, Segment::arc({3, 0}, {0, 3}, {0, 0}, true)).count, 0);  // concentric
+  EXPECT_EQ(intersectCarriers(a, Segment::arc({3, 0}, {0, 3}, {0, 0}, true)).count, 0);     // concentric
   EXPECT_EQ(intersectCarriers(a, Segment::arc({21, 0}, {19, 0}, {20, 0}, true)).count, 0);  // apart
 }
 

@@ -331,17 +331,10 @@ TEST(Control, OverridesChangeTheCycleTimeAsTheControlWould) {
   for (const machine::Move& m : t.moves) {
     const double d = m.tEnd - m.tStart;
     switch (m.kind) {
-      case machine::MoveKind::Rapid:
-        rapid += d;
-        break;
-      case machine::MoveKind::Dwell:
-        dwell += d;
-        break;
-      case machine::MoveKind::Thread:
-        thread += d;
-        break;
-      default:
-        (m.line == 6 ? perMin : perRev) += d;
+      case machine::MoveKind::Rapid: rapid += d; break;
+      case machine::MoveKind::Dwell: dwell += d; break;
+      case machine::MoveKind::Thread: thread += d; break;
+      default: (m.line == 6 ? perMin : perRev) += d;
     }
   }
   ASSERT_GT(rapid * perRev * perMin * dwell * thread, 0.0);

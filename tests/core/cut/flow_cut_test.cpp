@@ -26,8 +26,8 @@ struct Cut {
 Cut cut(const std::string& text) {
   Cut c;
   c.run = testing::runProgramText(text);
-  EXPECT_FALSE(hasErrors(c.run.checkDiagnostics)) << c.run.checkDiagnostics.front().code << " line "
-                                                   << c.run.checkDiagnostics.front().range.line;
+  EXPECT_FALSE(hasErrors(c.run.checkDiagnostics))
+      << c.run.checkDiagnostics.front().code << " line " << c.run.checkDiagnostics.front().range.line;
   EXPECT_FALSE(c.run.timeline.alarm.has_value()) << c.run.timeline.alarm->code;
   c.sim = std::make_unique<CutSimulator>(c.run.timeline, CutSetup::from(c.run.file.header, c.run.setup));
   c.sim->runToEnd();
@@ -55,9 +55,9 @@ TEST(FlowCut, MacroRoughingLoopCutsTheSamePartAsItsUnrolledTwin) {
                            "END1\n"
                            "G00 X100. Z100.\n"
                            "M30\n";
-  std::string unrolled = std::string(kHeader) + "O0002 (THE SAME, WRITTEN OUT)\nG21 G40 G99\nT0101\nG97 S1200 M03\nG00 X42. Z2.\n";
-  for (int d = 39; d >= 30; --d)
-    unrolled += "G00 X" + std::to_string(d) + ".\nG01 Z-25. F0.2\nG00 U1. Z2.\n";
+  std::string unrolled =
+      std::string(kHeader) + "O0002 (THE SAME, WRITTEN OUT)\nG21 G40 G99\nT0101\nG97 S1200 M03\nG00 X42. Z2.\n";
+  for (int d = 39; d >= 30; --d) unrolled += "G00 X" + std::to_string(d) + ".\nG01 Z-25. F0.2\nG00 U1. Z2.\n";
   unrolled += "G00 X100. Z100.\nM30\n";
 
   const Cut ca = cut(loop);
@@ -114,8 +114,8 @@ TEST(FlowCut, GrooveSubprogramCalledFourTimesCutsFourEqualGrooves) {
   }
   for (int k = 0; k < 4; ++k) {
     EXPECT_NEAR(g[k].bottom, 32.0, 0.01) << k;
-    EXPECT_NEAR(g[k].to - g[k].from, g[0].to - g[0].from, 0.011) << k;    // equal widths
-    EXPECT_NEAR(g[k].from + 10.0 * k, g[0].from, 0.011) << k;            // 10 mm apart
+    EXPECT_NEAR(g[k].to - g[k].from, g[0].to - g[0].from, 0.011) << k;  // equal widths
+    EXPECT_NEAR(g[k].from + 10.0 * k, g[0].from, 0.011) << k;           // 10 mm apart
   }
   EXPECT_NEAR(g[0].to - g[0].from, 3.0, 0.05);  // the 3 mm tool
 }

@@ -105,7 +105,8 @@ TEST(PartCheck, An80DegreeInsertGougesThePawnsNeckByItsTrailingEdge) {
   EXPECT_EQ(in[0].range.line, 14);
   const std::string en = formatMessage(in[0], Lang::En);
   EXPECT_NE(en.find(fmt::format("Gouge {:.4f} in deep", g.depth / 25.4)), std::string::npos) << en;
-  EXPECT_NE(en.find(fmt::format("(deepest at Z{:.4f}, Ø{:.4f})", g.z / 25.4, g.diameter / 25.4)), std::string::npos) << en;
+  EXPECT_NE(en.find(fmt::format("(deepest at Z{:.4f}, Ø{:.4f})", g.z / 25.4, g.diameter / 25.4)), std::string::npos)
+      << en;
   EXPECT_NE(formatMessage(in[0], Lang::Th).find(fmt::format("ลึก {:.4f} นิ้ว", g.depth / 25.4)), std::string::npos);
 }
 
@@ -159,7 +160,8 @@ TEST(PartCheck, AWrongTipNumberOnTheThreadingToolIsAGougeOnTheFirstPass) {
   EXPECT_EQ(ds.front().code, "W320");
   // With the row's own tip 8 the same thread is clean.
   const testing::Run right = runWith(sample, 3, io::Offset{0.0, 0.0, 0.0, 8});
-  EXPECT_TRUE(checkPart(right.timeline, right.programmed, CutSetup::from(right.file.header, right.setup)).defects.empty());
+  EXPECT_TRUE(
+      checkPart(right.timeline, right.programmed, CutSetup::from(right.file.header, right.setup)).defects.empty());
 }
 
 TEST(PartCheck, WithoutNoseCompensationTheChamfersAndTheRoundAreLeftFat) {
@@ -259,7 +261,8 @@ TEST(PartCheck, ARunStoppedByAnAlarmChecksWhatWasCutAndSaysSo) {
 
 TEST(PartCheck, NothingCutSaysSo) {
   const std::string rapidsOnly =
-      "Rapids\nR-1\nSteel\n150\n1100\nKlueng tests\nO0001\nN10 G21 G99\nN20 T0101\nN30 G00 X60. Z5.\nN40 X80. Z50.\nN50 M30\n";
+      "Rapids\nR-1\nSteel\n150\n1100\nKlueng tests\nO0001\nN10 G21 G99\nN20 T0101\nN30 G00 X60. Z5.\nN40 X80. "
+      "Z50.\nN50 M30\n";
   const testing::Run run = runProgramText(rapidsOnly);
   const PartCheck check = checkPart(run.timeline, run.programmed, CutSetup::from(run.file.header, run.setup));
   EXPECT_TRUE(check.nothingCut);

@@ -186,8 +186,8 @@ TEST(Crash, RapidIntoTheStockOnTheDogLegsSecondLeg) {
   // From X60 Z40 to X40 Z-10: X (4000 mm/min) ends after 0.15 s, when Z has
   // reached Z20 (8000 mm/min): the first leg ends in air, the second runs along
   // X40 into the face at Z0.
-  const std::string text = std::string(kHeader) +
-                           "N10 G21 G97 S800 M03\nN20 T0101\nN30 G00 X60. Z40.\nN40 G00 X40. Z-10.\nN50 M30\n";
+  const std::string text =
+      std::string(kHeader) + "N10 G21 G97 S800 M03\nN20 T0101\nN30 G00 X60. Z40.\nN40 G00 X40. Z-10.\nN50 M30\n";
   const Cut c = cutProgram(text);
   ASSERT_FALSE(c.run.timeline.alarm.has_value());
   int legs = 0;
@@ -217,8 +217,8 @@ TEST(Crash, T0100OnTheWayHomeKeepsTheInsert) {
 }
 
 TEST(Crash, RapidThroughTheStockOnTheFirstLeg) {
-  const std::string text = std::string(kHeader) +
-                           "N10 G21 G97 S800 M03\nN20 T0101\nN30 G00 X70. Z-10.\nN40 G00 X40. Z-60.\nN50 M30\n";
+  const std::string text =
+      std::string(kHeader) + "N10 G21 G97 S800 M03\nN20 T0101\nN30 G00 X70. Z-10.\nN40 G00 X40. Z-60.\nN50 M30\n";
   const Cut c = cutProgram(text);
   ASSERT_TRUE(c.sim->alarm().has_value());
   EXPECT_EQ(c.sim->alarm()->code, "A301");
@@ -231,8 +231,8 @@ TEST(Crash, RapidThroughTheStockOnTheFirstLeg) {
 
 TEST(Crash, HolderIntoTheStock) {
   // A plunge far deeper than the insert is tall: the holder follows it into the bar.
-  const std::string text = std::string(kHeader) +
-                           "N10 G21 G97 S800 M03\nN20 T0101\nN30 G00 X60. Z-30.\nN40 G01 X10. F0.1\nN50 M30\n";
+  const std::string text =
+      std::string(kHeader) + "N10 G21 G97 S800 M03\nN20 T0101\nN30 G00 X60. Z-30.\nN40 G01 X10. F0.1\nN50 M30\n";
   const Cut c = cutProgram(text);
   ASSERT_TRUE(c.sim->alarm().has_value());
   EXPECT_EQ(c.sim->alarm()->code, "A303");
@@ -246,8 +246,8 @@ TEST(Crash, HolderIntoTheStock) {
 
 TEST(Crash, ToolIntoTheChuck) {
   // machine.cfg: the jaws grip the left 15 mm (Z-100..-85) and stand 20 mm above the bar.
-  const std::string text = std::string(kHeader) +
-                           "N10 G21 G97 S800 M03\nN20 T0101\nN30 G00 X52. Z2.\nN40 G01 Z-95. F0.3\nN50 M30\n";
+  const std::string text =
+      std::string(kHeader) + "N10 G21 G97 S800 M03\nN20 T0101\nN30 G00 X52. Z2.\nN40 G01 Z-95. F0.3\nN50 M30\n";
   const Cut c = cutProgram(text);
   ASSERT_TRUE(c.sim->alarm().has_value());
   EXPECT_EQ(c.sim->alarm()->code, "A304");
@@ -257,8 +257,8 @@ TEST(Crash, ToolIntoTheChuck) {
 }
 
 TEST(Crash, CutWithTheSpindleStopped) {
-  const std::string text = std::string(kHeader) +
-                           "N10 G21 G98\nN20 T0101\nN30 G00 X40. Z2.\nN40 G01 Z-10. F100.\nN50 M30\n";
+  const std::string text =
+      std::string(kHeader) + "N10 G21 G98\nN20 T0101\nN30 G00 X40. Z2.\nN40 G01 Z-10. F100.\nN50 M30\n";
   const Cut c = cutProgram(text);
   ASSERT_FALSE(c.run.timeline.alarm.has_value());
   ASSERT_TRUE(c.sim->alarm().has_value());

@@ -92,7 +92,8 @@ TEST(Stock, RangeMaximaMatchAScanOfEveryColumn) {
     const int last = std::min(4999, first + std::uniform_int_distribution<int>(0, 4000)(random));
     double expected = 0.0;
     for (int i = first; i <= last; ++i) expected = std::max(expected, s.outerRadius(i));
-    ASSERT_DOUBLE_EQ(s.maxOuterRadius(first, last), expected) << "round " << round << " [" << first << ", " << last << "]";
+    ASSERT_DOUBLE_EQ(s.maxOuterRadius(first, last), expected)
+        << "round " << round << " [" << first << ", " << last << "]";
   }
   EXPECT_DOUBLE_EQ(s.maxOuterRadius(3000, 2999), 0.0);  // an empty range
 }

@@ -100,7 +100,8 @@ TEST(SweepCull, VisitsEveryColumnThePrimitiveReachesOnRandomStock) {
 // visits no column of it, only the uncut shoulder beyond.
 TEST(SweepCull, ASecondPassAlongZVisitsOnlyTheShoulder) {
   // Heights at which each primitive turns the Ø60 bar's outside down (no groove under it).
-  for (auto [kind, y] : {std::pair{Kind::Disc, 29.37}, std::pair{Kind::Box, 24.37}, std::pair{Kind::FlatTrapezoid, 29.27}}) {
+  for (auto [kind, y] :
+       {std::pair{Kind::Disc, 29.37}, std::pair{Kind::Box, 24.37}, std::pair{Kind::FlatTrapezoid, 29.27}}) {
     Stock s(60.0, 120.0);
     const Vec2 a(1.3, y), b(-100.0, y);
     auto remove = [&s](int i, double lo, double hi) { s.remove(i, lo, hi); };

@@ -57,8 +57,7 @@ TEST(DesignLoop, ADrawingThatDiffersIsNamedFeatureByFeature) {
   EXPECT_EQ(texts[0], "The drawing's C2 (Z0 to Z-2) is not on the cut part within 0.01 mm: there it is C3");
   EXPECT_EQ(texts[1], "The drawing's Ø40.02 (Z-22.5 to Z-40) is not on the cut part within 0.01 mm: there it is Ø40");
   EXPECT_EQ(texts[2], "The drawing's R2.5 (Z-20 to Z-22.5) is not on the cut part within 0.01 mm: there it is R2");
-  EXPECT_EQ(formatMessage(findings[0], Lang::Th),
-            "C2 ตามแบบ (Z0 ถึง Z-2) ไม่มีบนชิ้นงานที่กลึงได้ภายใน 0.01 มม.: ตรงนั้นเป็น C3");
+  EXPECT_EQ(formatMessage(findings[0], Lang::Th), "C2 ตามแบบ (Z0 ถึง Z-2) ไม่มีบนชิ้นงานที่กลึงได้ภายใน 0.01 มม.: ตรงนั้นเป็น C3");
   // Ø40.005 is within 0.01 mm of the cut Ø40: no finding.
   drawing = shipped("step-shaft.json");
   drawing.outside[1].diameter = 40.005;
@@ -117,7 +116,6 @@ TEST(DesignLoop, APartThatCannotBeTurnedIsRefusedBeforeAnythingRuns) {
   EXPECT_FALSE(loop.cut);
   EXPECT_FALSE(loop.matches());
 }
-
 
 TEST(PartDesignFile, WritesWhatItReads) {
   for (const char* name : {"step-shaft.json", "threaded-bush.json"}) {
@@ -184,7 +182,6 @@ TEST(PartDesignFile, TheOutlineFollowsTheDrawing) {
   EXPECT_NEAR(bush.threads[0].minor, 15.0 - 0.6134 * 1.5, 1e-12);
 }
 
-
 TEST(DesignLoop, PartedOffTheBarInEveryDialectAndHomeInTheDialectsHabit) {
   const machine::MachineSetup setup = machine::loadMachineSetup(KLUENG_SOURCE_DIR).setup;
   for (const char* name : {"step-shaft.json", "threaded-bush.json"}) {
@@ -221,7 +218,6 @@ TEST(DesignLoop, PartedOffTheBarInEveryDialectAndHomeInTheDialectsHabit) {
                              "p.json")
                   .value->partOff);
 }
-
 
 TEST(DesignLoop, ASolidBarIsDrilledThenBoredInEveryDialect) {
   const machine::MachineSetup setup = machine::loadMachineSetup(KLUENG_SOURCE_DIR).setup;

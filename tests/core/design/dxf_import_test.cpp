@@ -19,8 +19,9 @@ namespace {
 // A drawing written by dxflib to a scratch file and read back as text.
 class Sketch {
  public:
-  explicit Sketch(int insunits = 4) : path_(std::filesystem::temp_directory_path() /
-                                            ("klueng-dxf-" + std::to_string(::getpid()) + "-" + std::to_string(next_++) + ".dxf")) {
+  explicit Sketch(int insunits = 4)
+      : path_(std::filesystem::temp_directory_path() /
+              ("klueng-dxf-" + std::to_string(::getpid()) + "-" + std::to_string(next_++) + ".dxf")) {
     writer_ = dxf_.out(path_.c_str(), DL_Codes::AC1015);
     dxf_.writeHeader(*writer_);
     writer_->dxfString(9, "$INSUNITS");
@@ -84,7 +85,7 @@ void drawStepShaft(Sketch& s, double right, double axis, double k = 1.0, bool cl
   L(-20, 15, -20, 18);
   const auto [cx, cy] = P(-22, 18);
   s.arc(cx, cy, 2 * k, 0.0, 90.0);  // R2, from (-20, 18) round to (-22, 20)
-  L(-22, 20, -40, 20);             // Ø40
+  L(-22, 20, -40, 20);              // Ø40
   L(-40, 20, -40, 22);
   L(-40, 22, -41, 23);  // C1
   L(-41, 23, -60, 23);  // Ø46
@@ -107,7 +108,7 @@ TEST(DxfImport, Sample01sSectionReadsAsTheStepShaftDesign) {
   Sketch s;
   drawStepShaft(s, 160.0, 40.0);
   s.line(90.0, 40.0, 170.0, 40.0, "AXES", "CENTER");  // the centre line, longer than the part
-  s.line(100.0, 20.0, 160.0, 20.0, "DIMENSIONS");      // a dimension line below: another layer
+  s.line(100.0, 20.0, 160.0, 20.0, "DIMENSIONS");     // a dimension line below: another layer
   const std::string text = s.text();
   // Two layers with lines: the user must pick one.
   const auto unpicked = importDxf(text, "shaft.dxf");
@@ -136,10 +137,17 @@ TEST(DxfImport, OnePolylineInInchesWithABulgeReadsTheSame) {
   // Without a centre line the axis is the outline's lowest Y; drawn right to left, open along the axis.
   const double tq = std::tan(M_PI / 8.0);  // a quarter arc's bulge, counter-clockwise
   std::vector<std::array<double, 3>> v;
-  for (const auto& [z, r, bulge] : std::vector<std::array<double, 3>>{{0, 0, 0},   {0, 12, 0},  {-3, 15, 0},
-                                                                       {-20, 15, 0}, {-20, 18, tq}, {-22, 20, 0},
-                                                                       {-40, 20, 0}, {-40, 22, 0}, {-41, 23, 0},
-                                                                       {-60, 23, 0}, {-60, 0, 0}})
+  for (const auto& [z, r, bulge] : std::vector<std::array<double, 3>>{{0, 0, 0},
+                                                                      {0, 12, 0},
+                                                                      {-3, 15, 0},
+                                                                      {-20, 15, 0},
+                                                                      {-20, 18, tq},
+                                                                      {-22, 20, 0},
+                                                                      {-40, 20, 0},
+                                                                      {-40, 22, 0},
+                                                                      {-41, 23, 0},
+                                                                      {-60, 23, 0},
+                                                                      {-60, 0, 0}})
     v.push_back({3.0 + z * k, 1.0 + r * k, bulge});
   Sketch s(1);
   s.polyline(v, false);
@@ -157,9 +165,9 @@ TEST(DxfImport, TheThreadedBushsSectionReadsWithItsGrooveAndBore) {
   Sketch s;
   const auto L = [&](double z1, double r1, double z2, double r2) { s.line(100 + z1, r1, 100 + z2, r2); };
   s.line(40, 0, 110, 0, "0", "CENTER");
-  L(0, 11, 0, 13.5), L(0, 13.5, -1.5, 15), L(-1.5, 15, -24, 15);  // C1.5 and Ø30
+  L(0, 11, 0, 13.5), L(0, 13.5, -1.5, 15), L(-1.5, 15, -24, 15);          // C1.5 and Ø30
   L(-24, 15, -24, 13.5), L(-24, 13.5, -28, 13.5), L(-28, 13.5, -28, 15);  // groove 4 wide to Ø27
-  L(-28, 15, -28, 22), L(-28, 22, -29, 23), L(-29, 23, -50, 23);  // C1 and Ø46
+  L(-28, 15, -28, 22), L(-28, 22, -29, 23), L(-29, 23, -50, 23);          // C1 and Ø46
   L(-50, 23, -50, 9), L(-50, 9, -30, 9), L(-30, 9, -30, 10), L(-30, 10, -1, 10), L(-1, 10, 0, 11);  // the bore
   const auto design = importDxf(s.text(), "bush.dxf");
   ASSERT_TRUE(design.ok()) << formatMessage(design.diagnostics.at(0), Lang::En);
@@ -192,13 +200,14 @@ TEST(DxfImport, BadDrawingsSayWhatAndWhere) {
             "p.dxf is not an ASCII DXF drawing: it is a binary file (save the drawing as ASCII DXF)");
   // Found by fuzz_design: a polyline's vertex count dxflib would allocate before reading (14 GB here).
   EXPECT_EQ(firstProblem("0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\nPART\n90\n462000000\n10\n0\n20\n0\n0\nENDSEC\n"
-                         "0\nEOF\n").second,
+                         "0\nEOF\n")
+                .second,
             "p.dxf is not an ASCII DXF drawing: line 10 says 462000000 points (group 90), more than the file holds: it "
             "is corrupt");
   // The same with the code written "90?" (dxflib reads its leading number) and a count past a long.
-  EXPECT_EQ(firstProblem("0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\nPART\n90?\n622222222222222222222\n0\nENDSEC\n")
-                .first,
-            "F185");
+  EXPECT_EQ(
+      firstProblem("0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\nPART\n90?\n622222222222222222222\n0\nENDSEC\n").first,
+      "F185");
   // Found by fuzz_design: a count behind 40 leading zeros (dxflib reads the whole line: 7.8 GB).
   EXPECT_EQ(firstProblem("0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\nPART\n90\n" + std::string(40, '0') +
                          "244839779\n0\nENDSEC\n")
@@ -216,7 +225,8 @@ TEST(DxfImport, BadDrawingsSayWhatAndWhere) {
   EXPECT_EQ(firstProblem("999\ndxflib\n0\nSECTION\n2\nENTITIES\n0\nENDSEC\n0\nEOF\n").second,
             "p.dxf is not an ASCII DXF drawing: dxflib could not read it");
   // A negative count that dxflib's int makes 1,294,967,296.
-  EXPECT_EQ(firstProblem("0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\nPART\n90\n-3000000000\n0\nENDSEC\n").first, "F185");
+  EXPECT_EQ(firstProblem("0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\nPART\n90\n-3000000000\n0\nENDSEC\n").first,
+            "F185");
   // A layer name of 3,000 characters: dxflib would read on forever (its lines hold 1,023).
   EXPECT_EQ(firstProblem("0\nSECTION\n2\nENTITIES\n0\nLINE\n8\n" + std::string(3000, 'P') +
                          "\n10\n0\n20\n0\n11\n10\n21\n0\n0\nENDSEC\n0\nEOF\n")
@@ -244,8 +254,9 @@ TEST(DxfImport, BadDrawingsSayWhatAndWhere) {
     s.line(20, 20, 20, 22).line(20, 22, 19, 23).line(19, 23, 0, 23).line(0, 23, 0, 0);
     const auto [code, text] = firstProblem(s.text());
     EXPECT_EQ(code, "F190");  // the first loose end is the arc's
-    EXPECT_EQ(text, "p.dxf: the arc R2.000 ending at X38.000 Y20.000 does not meet its neighbours: the nearest line "
-                    "ends 18.000 mm away");  // the loose end of the Ø40's shoulder
+    EXPECT_EQ(text,
+              "p.dxf: the arc R2.000 ending at X38.000 Y20.000 does not meet its neighbours: the nearest line "
+              "ends 18.000 mm away");  // the loose end of the Ø40's shoulder
   }
   {  // The arc drawn 0.3 mm too far left: it meets neither the face nor the Ø40 line.
     Sketch s;
@@ -342,8 +353,9 @@ TEST(DxfImport, AnArcFlatterThanTheRoundingIsALineAndAHugeOneIsRefused) {
     s.polyline({{40, 8, 0}, {40, 20, 0}, {0, 20, 0}, {0, 8, 0.1}}, true);  // the bore dips 2 mm toward the axis
     const auto [code, text] = firstProblem(s.text());
     EXPECT_EQ(code, "F198");
-    EXPECT_EQ(text, "p.dxf: the bore has an arc R101.000 ending at X0.000 Y8.000: a part design bores cylinders and "
-                    "tapers (with a chamfer or round at their mouth) only");
+    EXPECT_EQ(text,
+              "p.dxf: the bore has an arc R101.000 ending at X0.000 Y8.000: a part design bores cylinders and "
+              "tapers (with a chamfer or round at their mouth) only");
   }
 }
 
@@ -376,7 +388,8 @@ TEST(DxfImport, ABulgeOrCoordinateBeyondADoubleIsRefusedAtItsLine) {
   const auto [id, message] = firstProblem(text);
   EXPECT_EQ(id, "F185");
   EXPECT_EQ(message, fmt::format("p.dxf is not an ASCII DXF drawing: line {} holds -1e405, which is not a finite "
-                                 "number: it is corrupt", line));
+                                 "number: it is corrupt",
+                                 line));
   // A decimal comma is read as dxflib reads it: "1,5e999" is beyond a double too.
   EXPECT_EQ(firstProblem(withBulge("1,5e999").first).first, "F185");
   EXPECT_EQ(firstProblem(withBulge("nan").first).first, "F185");

@@ -18,12 +18,9 @@ enum class In { Both, Fanuc, Classic };
 
 std::vector<Dialect> dialectsOf(In in) {
   switch (in) {
-    case In::Fanuc:
-      return {Dialect::Fanuc};
-    case In::Classic:
-      return {Dialect::Classic};
-    case In::Both:
-      break;
+    case In::Fanuc: return {Dialect::Fanuc};
+    case In::Classic: return {Dialect::Classic};
+    case In::Both: break;
   }
   return {Dialect::Fanuc, Dialect::Classic};
 }

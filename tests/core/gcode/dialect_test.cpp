@@ -53,34 +53,26 @@ INSTANTIATE_TEST_SUITE_P(
     Differences, EachDialect,
     ::testing::Values(
         // 1. program and sequence numbers
-        Row{"%\nO20012 (PART NAME)\nG00 X1.", {}, {}, {"E116@2:1"}},
-        Row{"O12345678", {}, {"E116@1:1"}, {"E116@1:1"}},
+        Row{"%\nO20012 (PART NAME)\nG00 X1.", {}, {}, {"E116@2:1"}}, Row{"O12345678", {}, {"E116@1:1"}, {"E116@1:1"}},
         Row{"O123456789", {"E116@1:1"}, {"E116@1:1"}, {"E116@1:1"}},
         Row{":0100\nG00 X1.", {}, {"E104@1:1"}, {"E104@1:1"}},
         Row{"G00 X1.\n:0100", {}, {"E104@2:1"}, {"E104@2:1"}},  // Fanuc: a subprogram starts
-        Row{"N99999 G00", {}, {}, {"E116@1:1"}},
-        Row{"N100000 G00", {"E116@1:1"}, {"E116@1:1"}, {"E116@1:1"}},
+        Row{"N99999 G00", {}, {}, {"E116@1:1"}}, Row{"N100000 G00", {"E116@1:1"}, {"E116@1:1"}, {"E116@1:1"}},
         // 2. more decimals than the least increment (Haas powers on in inch: 4 decimals)
         Row{"G00 X0.42928932", {"W103@1:5"}, {"W103@1:5"}, {"E111@1:5"}},
         Row{"G21\nG00 X0.4292", {"W103@2:5"}, {"W103@2:5"}, {"E111@2:5"}},
         // 3. power-on units: inch on a Haas (4 decimals, inch ranges)
         Row{"G00 X1.2345 Z-0.0625", {"W103@1:5", "W103@1:13"}, {}, {"E111@1:5", "E111@1:13"}},
-        Row{"G00 X1000.", {}, {"E110@1:5"}, {}},
-        Row{"G20\nG01 Z-1. F0.0008", {}, {}, {"E112@2:10"}},
+        Row{"G00 X1000.", {}, {"E110@1:5"}, {}}, Row{"G20\nG01 Z-1. F0.0008", {}, {}, {"E112@2:10"}},
         Row{"G97 S2500 M03", {}, {}, {}},  // S is not a length: no inch range
         // 4. T words
-        Row{"T1212", {}, {}, {"E117@1:1"}},
-        Row{"T101", {}, {}, {"E117@1:1"}},
-        Row{"T1312", {"E118@1:1"}, {"E118@1:1"}, {"E117@1:1"}},
-        Row{"T0165", {"E118@1:1"}, {"E118@1:1"}, {"E117@1:1"}},
+        Row{"T1212", {}, {}, {"E117@1:1"}}, Row{"T101", {}, {}, {"E117@1:1"}},
+        Row{"T1312", {"E118@1:1"}, {"E118@1:1"}, {"E117@1:1"}}, Row{"T0165", {"E118@1:1"}, {"E118@1:1"}, {"E117@1:1"}},
         Row{"T1", {"E118@1:1"}, {"E118@1:1"}, {"E117@1:1"}},
         // 5. one-shot G with a motion G; G30
-        Row{"G53 G00 X0", {}, {}, {"E114@1:1"}},
-        Row{"G00 G53 X0 Z-2.", {}, {}, {"E114@1:5"}},
-        Row{"G28 G00 U0 W0", {}, {}, {"E206@1:5"}},
-        Row{"G30 U0. W0.", {}, {}, {"E114@1:1"}},
-        Row{"G00 G30 U0. W0.", {}, {}, {"E114@1:5"}},
-        Row{"G04 G01 U1.", {"E206@1:5"}, {"E206@1:5"}, {"E206@1:5"}},
+        Row{"G53 G00 X0", {}, {}, {"E114@1:1"}}, Row{"G00 G53 X0 Z-2.", {}, {}, {"E114@1:5"}},
+        Row{"G28 G00 U0 W0", {}, {}, {"E206@1:5"}}, Row{"G30 U0. W0.", {}, {}, {"E114@1:1"}},
+        Row{"G00 G30 U0. W0.", {}, {}, {"E114@1:5"}}, Row{"G04 G01 U1.", {"E206@1:5"}, {"E206@1:5"}, {"E206@1:5"}},
         Row{"G50 S2000 G00", {"E206@1:11"}, {"E206@1:11"}, {"E206@1:11"}},
         // bare G28: Fanuc moves nothing (warning), Haas homes both axes
         Row{"N5 G28", {"W102@1:4"}, {}, {"E309@1:4"}},
@@ -91,20 +83,22 @@ INSTANTIATE_TEST_SUITE_P(
         Row{"G73 P10 Q20 I0.3 K0.1 D3. F0.01\nN10 G00 X1.\nN20 G01 Z-1.", {"E201@1:23"}, {"E119@1:23"}, {"E201@1:23"}},
         Row{"G70 P10 Q20\nN10 G00 X1.\nN20 G01 Z-1.", {}, {}, {}},
         Row{"G76 X0.9 Z-1. K0.0613 D0.01 F0.0833 A60",
-            {"W103@1:15", "E201@1:23", "W103@1:29", "E201@1:37"}, {},
+            {"W103@1:15", "E201@1:23", "W103@1:29", "E201@1:37"},
+            {},
             {"E111@1:15", "E201@1:23", "E111@1:29", "E201@1:37"}},
         Row{"G76 X0.9 Z-1. K0.0613 D0.01 F0.0833 A60 I-0.01 P2 Q0",
-            {"W103@1:15", "E201@1:23", "W103@1:29", "E201@1:37"}, {},
+            {"W103@1:15", "E201@1:23", "W103@1:29", "E201@1:37"},
+            {},
             {"E111@1:15", "E201@1:23", "E111@1:29", "E201@1:37"}},
-        Row{"G76 X0.9 Z-1. K0.0613 D0.01 F0.0833 A60.", V{"W103@1:15", "E201@1:23", "W103@1:29", "E201@1:37"},
-            {"E119@1:37"}, {"E111@1:15", "E201@1:23", "E111@1:29", "E201@1:37"}},
+        Row{"G76 X0.9 Z-1. K0.0613 D0.01 F0.0833 A60.",
+            V{"W103@1:15", "E201@1:23", "W103@1:29", "E201@1:37"},
+            {"E119@1:37"},
+            {"E111@1:15", "E201@1:23", "E111@1:29", "E201@1:37"}},
         Row{"G75 X1.5 Z-0.8 I0.05 K0.1 F0.004", {}, {}, {}},
         Row{"G75 X1.5 Z-0.8 I0.05 K0.1 D0.02 F0.004", {"E201@1:27"}, {}, {"E201@1:27"}},
-        Row{"G75 X1.5 Z-0.8 I-0.05 F0.004", {}, {"E112@1:16"}, {}},
-        Row{"G74 X1. Z-0.5 K0.1 F0.005", {}, {}, {}},
+        Row{"G75 X1.5 Z-0.8 I-0.05 F0.004", {}, {"E112@1:16"}, {}}, Row{"G74 X1. Z-0.5 K0.1 F0.005", {}, {}, {}},
         // 7. G04 P: seconds with a decimal point on a Haas
-        Row{"G04 P3.", {"E119@1:5"}, {}, {"E119@1:5"}},
-        Row{"G04 P3000", {}, {}, {}},
+        Row{"G04 P3.", {"E119@1:5"}, {}, {"E119@1:5"}}, Row{"G04 P3000", {}, {}, {}},
         Row{"G04 P-3.", {"E119@1:5"}, {"E306@1:5"}, {"E119@1:5"}},
         // 8. drilling on centre
         Row{"G81 Z-20. R2. F0.1", {}, {}, {"E114@1:1"}},
@@ -119,25 +113,31 @@ INSTANTIATE_TEST_SUITE_P(
         // 9. Haas machine M codes
         Row{"M21", {"W101@1:1"}, {}, {"E115@1:1"}},
         Row{"M21 M22", {"W101@1:1", "W101@1:5"}, {"E204@1:5"}, {"E115@1:1", "E115@1:5"}},
-        Row{"M88 M08", {"W101@1:1"}, {}, {"E115@1:1"}},
-        Row{"M86 M87", {"E204@1:5"}, {"E115@1:5"}, {"E204@1:5"}},
+        Row{"M88 M08", {"W101@1:1"}, {}, {"E115@1:1"}}, Row{"M86 M87", {"E204@1:5"}, {"E115@1:5"}, {"E204@1:5"}},
         Row{"M85 M86", {"W101@1:1"}, {"E204@1:5"}, {"E115@1:1"}},
         Row{"M14 M15", {"W101@1:1", "W101@1:5"}, {"E204@1:5"}, {"E115@1:1", "E115@1:5"}},
-        Row{"M91", {}, {"E115@1:1"}, {}},
-        Row{"M97 P1000\nN1000 M99", {"W101@1:1"}, {}, {"E115@1:1"}},
+        Row{"M91", {}, {"E115@1:1"}, {}}, Row{"M97 P1000\nN1000 M99", {"W101@1:1"}, {}, {"E115@1:1"}},
         Row{"M97 P1000", {"W101@1:1"}, {"E405@1:5"}, {"E115@1:1"}},  // Haas: no N1000
         // M97 and M98 share the one P: M98 calls O1000, which is not there.
-        Row{"M97 P1000 M98 P2000\nN1000 M99\nO2000\nM99", {"W101@1:1", "E404@1:5"}, {"E404@1:5", "E204@1:11"},
+        Row{"M97 P1000 M98 P2000\nN1000 M99\nO2000\nM99",
+            {"W101@1:1", "E404@1:5"},
+            {"E404@1:5", "E204@1:11"},
             {"E115@1:1", "E404@1:5", "E208@3:1"}},
         Row{"M133 P2000", {"W101@1:1"}, {"W101@1:1"}, {"E115@1:1"}},
         // 11. G70-G73 profiles: the P and Q blocks exist (E413 at the word), and on a
         // Fanuc the first block holds G00 or G01 (PS0065; E414 at the N block, once).
         Row{"G71 U2. R0.5\nG71 P140 Q220 U0.4 W0.1 F0.25\nN100 G00 X40. Z0\nN220 G01 Z-30.",
-            {"E413@2:5"}, {"E413@2:5"}, {"E413@2:5"}},
+            {"E413@2:5"},
+            {"E413@2:5"},
+            {"E413@2:5"}},
         Row{"G71 U2. R0.5\nG71 P100 Q220 U0.4 W0.1 F0.25\nN100 G00 X40. Z0\nN200 G01 Z-30.\nG70 P100 Q220",
-            {"E413@2:10", "E413@5:10"}, {"E413@2:10", "E413@5:10"}, {"E413@2:10", "E413@5:10"}},
+            {"E413@2:10", "E413@5:10"},
+            {"E413@2:10", "E413@5:10"},
+            {"E413@2:10", "E413@5:10"}},
         Row{"G71 U2. R0.5\nG71 P100 Q200 U0.4 W0.1 F0.25\nN100\nG00 X40. Z0\nG01 Z-30.\nN200\nG70 P100 Q200",
-            {"E414@3:1"}, {}, {"E414@3:1"}},
+            {"E414@3:1"},
+            {},
+            {"E414@3:1"}},
         Row{"G70 P100 Q200\nN100 X1.2\nN200 G01 Z-1.", {"E414@2:1"}, {}, {"E414@2:1"}},
         Row{"G70 P100 Q200\nN100 G0 X1.2\nN200 G01 Z-1.", {}, {}, {}},
         // Q before P in the program: the profile would run backwards; the message says the block is
@@ -200,8 +200,9 @@ TEST(Dialects, CornerWordsWithoutTheCommaAreNamed) {
   EXPECT_EQ(diags[0].code, "W107");
   EXPECT_EQ(diags[0].severity, Severity::Warning);
   EXPECT_EQ(diags[0].range, (SourceRange{1, 14, 4}));
-  EXPECT_EQ(formatMessage(diags[0], Lang::En),
-            "K-2. on a G01 is not read: a chamfer or corner round is written with a comma (,C2.), so the corner stays sharp");
+  EXPECT_EQ(
+      formatMessage(diags[0], Lang::En),
+      "K-2. on a G01 is not read: a chamfer or corner round is written with a comma (,C2.), so the corner stays sharp");
   EXPECT_EQ(diags[1].range, (SourceRange{2, 7, 3}));
   EXPECT_EQ(formatMessage(diags[1], Lang::Th),
             "R3. ในบล็อก G01 ไม่ถูกอ่าน การลบมุมหรือการมนมุมต้องเขียนโดยมีจุลภาคนำหน้า (,R3.) มุมจึงยังคงเป็นมุมแหลม");
@@ -237,7 +238,8 @@ TEST(Dialects, ClassicMessagesKeepTheSeedText) {
   EXPECT_EQ(formatMessage(n[0], Lang::En), "N10000: N must be a whole number from 1 to 9999");
   const auto y = check(parse("Y1."), classic);
   ASSERT_EQ(y.size(), 1u);
-  EXPECT_EQ(formatMessage(y[0], Lang::En), "Y1.: letter Y is not a lathe word; use C F G H I K M N O P Q R S T U W X Z");
+  EXPECT_EQ(formatMessage(y[0], Lang::En),
+            "Y1.: letter Y is not a lathe word; use C F G H I K M N O P Q R S T U W X Z");
   const auto f = check(parse("F0"), classic);
   ASSERT_EQ(f.size(), 1u);
   EXPECT_EQ(formatMessage(f[0], Lang::En), "F0: F must be positive (0.001 to 9999.999)");
@@ -312,8 +314,8 @@ TEST(Lexer, LowercasePackedWords) {
   std::vector<std::string> words;
   for (const Block& b : p.blocks)
     for (const Word& w : b.words) words.push_back(w.text() + "@" + std::to_string(w.range.column));
-  EXPECT_THAT(words, ElementsAre("N1@1", "G0@3", "X380.@5", "Z300.@10", "T0101@15", "M16@20", "N2@1", "G01@3",
-                                 "X-.5@6", "Z-3.@10", "F.2@14"));
+  EXPECT_THAT(words, ElementsAre("N1@1", "G0@3", "X380.@5", "Z300.@10", "T0101@15", "M16@20", "N2@1", "G01@3", "X-.5@6",
+                                 "Z-3.@10", "F.2@14"));
   EXPECT_DOUBLE_EQ(p.blocks[1].words[2].value, -0.5);
   EXPECT_DOUBLE_EQ(p.blocks[1].words[4].value, 0.2);
 }

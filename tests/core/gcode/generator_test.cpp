@@ -113,8 +113,8 @@ TEST(GeneratedProgramShape, RoughingGoesDownAllLevelsClearOfTheChuck) {
       }
       if (w.letter == 'X' && w.value == lowestX) ++feedsAtLowest;
     }
-  EXPECT_EQ(lowestX, 21.0);   // the last level
-  EXPECT_EQ(lowestZ, -100.0);  // the chuck grips Z -105..-120
+  EXPECT_EQ(lowestX, 21.0);      // the last level
+  EXPECT_EQ(lowestZ, -100.0);    // the chuck grips Z -105..-120
   EXPECT_GT(feedsAtLowest, 50);  // many passes a level
 }
 

@@ -42,7 +42,7 @@ double value(const std::string& text, Vars vars = {}) {
 TEST(MacroExpression, PrecedenceAndBrackets) {
   EXPECT_DOUBLE_EQ(value("1+2*3"), 7.0);
   EXPECT_DOUBLE_EQ(value("[1+2]*3"), 9.0);
-  EXPECT_DOUBLE_EQ(value("10-4-3"), 3.0);        // left to right
+  EXPECT_DOUBLE_EQ(value("10-4-3"), 3.0);  // left to right
   EXPECT_DOUBLE_EQ(value("12/4/3"), 1.0);
   EXPECT_DOUBLE_EQ(value("-2*-3"), 6.0);
   EXPECT_DOUBLE_EQ(value("2+3 GT 4"), 1.0);     // comparisons bind last
@@ -74,7 +74,7 @@ TEST(MacroExpression, FunctionsInDegrees) {
   EXPECT_DOUBLE_EQ(value("POW[2,10]"), 1024.0);
   EXPECT_DOUBLE_EQ(value("BCD[123]"), 0x123);
   EXPECT_DOUBLE_EQ(value("BIN[291]"), 123.0);  // 291 = 0x123
-  EXPECT_DOUBLE_EQ(value("sin[90]"), 1.0);      // lower case reads too
+  EXPECT_DOUBLE_EQ(value("sin[90]"), 1.0);     // lower case reads too
 }
 
 TEST(MacroExpression, VariablesAndTheVacantRules) {
@@ -82,7 +82,7 @@ TEST(MacroExpression, VariablesAndTheVacantRules) {
   v.set[1] = 2.0;
   v.set[101] = 7.0;
   EXPECT_DOUBLE_EQ(value("#1*#101", v), 14.0);
-  EXPECT_DOUBLE_EQ(value("#[#1+99]", v), 7.0);   // #101 through a computed number
+  EXPECT_DOUBLE_EQ(value("#[#1+99]", v), 7.0);  // #101 through a computed number
   v.set[2] = 5.0;
   EXPECT_DOUBLE_EQ(value("##1", v), 5.0);  // #[#1] = #2
   v.set.erase(2);

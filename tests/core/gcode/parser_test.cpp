@@ -36,8 +36,8 @@ TEST(Parser, WordsWrittenTogether) {
   const Program p = parse("G01X20.Z-5.");
   ASSERT_EQ(p.blocks.size(), 1u);
   EXPECT_TRUE(p.lexicalDiagnostics.empty());
-  EXPECT_THAT(wordsOf(p.blocks[0]), ElementsAre(WordView{'G', "01", 1, 3}, WordView{'X', "20.", 4, 4},
-                                                WordView{'Z', "-5.", 8, 4}));
+  EXPECT_THAT(wordsOf(p.blocks[0]),
+              ElementsAre(WordView{'G', "01", 1, 3}, WordView{'X', "20.", 4, 4}, WordView{'Z', "-5.", 8, 4}));
   EXPECT_EQ(p.blocks[0].words[0].code(), 1);
   EXPECT_DOUBLE_EQ(p.blocks[0].words[1].value, 20.0);
   EXPECT_TRUE(p.blocks[0].words[1].hasDecimalPoint);
@@ -48,8 +48,8 @@ TEST(Parser, WordsWrittenTogether) {
 TEST(Parser, WordsWithSpacesAndTabs) {
   const Program p = parse("G01  X20.\tZ-5.");
   ASSERT_EQ(p.blocks.size(), 1u);
-  EXPECT_THAT(wordsOf(p.blocks[0]), ElementsAre(WordView{'G', "01", 1, 3}, WordView{'X', "20.", 6, 4},
-                                                WordView{'Z', "-5.", 11, 4}));
+  EXPECT_THAT(wordsOf(p.blocks[0]),
+              ElementsAre(WordView{'G', "01", 1, 3}, WordView{'X', "20.", 6, 4}, WordView{'Z', "-5.", 11, 4}));
 }
 
 TEST(Parser, LowerCaseLettersAndShortNumbers) {
@@ -109,8 +109,8 @@ TEST(Parser, ThaiCommentBeforeAnErrorGivesCodePointColumn) {
 }
 
 TEST(Parser, LineEndsLfCrlfCr) {
-  for (const char* text : {"G00\nG01\n\nG02 X1. Z1. R1.\n", "G00\r\nG01\r\n\r\nG02 X1. Z1. R1.\r\n",
-                           "G00\rG01\r\rG02 X1. Z1. R1.\r"}) {
+  for (const char* text :
+       {"G00\nG01\n\nG02 X1. Z1. R1.\n", "G00\r\nG01\r\n\r\nG02 X1. Z1. R1.\r\n", "G00\rG01\r\rG02 X1. Z1. R1.\r"}) {
     const Program p = parse(text, 7);
     ASSERT_EQ(p.blocks.size(), 3u) << text;
     EXPECT_EQ(p.blocks[0].line, 7);
@@ -218,11 +218,9 @@ INSTANTIATE_TEST_SUITE_P(
                       LexCase{"G01 # X1.", "E125", 5, 1, "#"},        // '#' without a variable number
                       LexCase{"G01 X[#1+2.", "E121", 6, 1, nullptr},  // unclosed bracket
                       LexCase{"G01 X#1 Z[#2 PLUS 1]", "E123", 14, 1, "PLUS"},
-                      LexCase{"#1=SIN 30.", "E124", 4, 1, "SIN"},
-                      LexCase{"WHILE [#1 LT 3] DO 4", "E130", 20, 1, "4"},
-                      LexCase{"IF [#1 EQ 0] X1.", "E128", 1, 2, nullptr},
-                      LexCase{"G01 X20. @", "E104", 10, 1, "@"},
-                      LexCase{"G01 X20. ===", "E104", 10, 3, "="},    // a run of unknown characters
+                      LexCase{"#1=SIN 30.", "E124", 4, 1, "SIN"}, LexCase{"WHILE [#1 LT 3] DO 4", "E130", 20, 1, "4"},
+                      LexCase{"IF [#1 EQ 0] X1.", "E128", 1, 2, nullptr}, LexCase{"G01 X20. @", "E104", 10, 1, "@"},
+                      LexCase{"G01 X20. ===", "E104", 10, 3, "="},  // a run of unknown characters
                       LexCase{"G01 X20. []", "E104", 10, 2, "["}));
 
 TEST(Parser, EveryErrorOfALineIsReported) {

@@ -37,7 +37,8 @@ std::vector<Diagnostic> checkSample(const std::string& name, Dialect dialect) {
 
 std::string listing(const std::vector<Diagnostic>& diags) {
   std::ostringstream s;
-  for (const auto& d : diags) s << "  line " << d.range.line << ":" << d.range.column << " " << formatMessage(d, Lang::En) << "\n";
+  for (const auto& d : diags)
+    s << "  line " << d.range.line << ":" << d.range.column << " " << formatMessage(d, Lang::En) << "\n";
   return s.str();
 }
 
@@ -59,7 +60,8 @@ TEST(Samples, GrammarErrorsReportsEveryBrokenLineInClassic) {
     if (n == 10 || n == 15 || n == 20 || n == 240) {
       EXPECT_EQ(errorsPerLine[b.line], 0) << "N" << n << " must be clean\n" << listing(diags);
     } else if (n >= 30 && n <= 230) {
-      EXPECT_GE(errorsPerLine[b.line], 1) << "N" << n << " (line " << b.line << ") must be reported\n" << listing(diags);
+      EXPECT_GE(errorsPerLine[b.line], 1) << "N" << n << " (line " << b.line << ") must be reported\n"
+                                          << listing(diags);
       ++brokenBlocks;
     }
   }
@@ -73,10 +75,10 @@ TEST(Samples, GrammarErrorsNamesTheRuleOfEachLine) {
   std::map<int, std::set<std::string>> codes;
   for (const auto& d : diags) codes[d.range.line].insert(d.code);
   // file line -> a code that must be among that line's diagnostics
-  const std::map<int, std::string> expected = {
-      {11, "E201"}, {12, "E210"}, {13, "E210"}, {14, "E205"}, {15, "E206"}, {16, "E204"}, {17, "E204"},
-      {18, "E203"}, {19, "E207"}, {20, "E202"}, {21, "E101"}, {22, "E110"}, {23, "E114"}, {24, "E115"},
-      {25, "E117"}, {26, "E211"}, {27, "E209"}, {28, "E208"}, {29, "E210"}, {30, "E112"}};
+  const std::map<int, std::string> expected = {{11, "E201"}, {12, "E210"}, {13, "E210"}, {14, "E205"}, {15, "E206"},
+                                               {16, "E204"}, {17, "E204"}, {18, "E203"}, {19, "E207"}, {20, "E202"},
+                                               {21, "E101"}, {22, "E110"}, {23, "E114"}, {24, "E115"}, {25, "E117"},
+                                               {26, "E211"}, {27, "E209"}, {28, "E208"}, {29, "E210"}, {30, "E112"}};
   for (const auto& [line, code] : expected)
     EXPECT_TRUE(codes[line].count(code)) << "line " << line << " lacks " << code << "\n" << listing(diags);
 }

@@ -84,13 +84,13 @@ TEST(BlockLetters, ParseRecordsTheLettersOfEveryWordAndFindTrustsThem) {
   const Program p = parse("N10 G01 X20. ,C1. F0.2\n#1 = 5\nN20 IF [#1 GT 2] GOTO 40\n");
   ASSERT_EQ(p.blocks.size(), 3u);
   const Block& b = p.blocks[0];
-  EXPECT_EQ(b.letters, Block::letterBit('N') | Block::letterBit('G') | Block::letterBit('X') |
-                           Block::letterBit('C') | Block::letterBit('F'));
+  EXPECT_EQ(b.letters, Block::letterBit('N') | Block::letterBit('G') | Block::letterBit('X') | Block::letterBit('C') |
+                           Block::letterBit('F'));
   EXPECT_EQ(b.find('Z'), nullptr);
   EXPECT_EQ(b.find('C'), nullptr);  // ,C is a comma word
   ASSERT_NE(b.findComma('C'), nullptr);
   EXPECT_EQ(b.findComma('C')->value, 1.0);
-  EXPECT_EQ(p.blocks[1].letters, 0u);                      // an assignment has no words
+  EXPECT_EQ(p.blocks[1].letters, 0u);                     // an assignment has no words
   EXPECT_EQ(p.blocks[2].letters, Block::letterBit('N'));  // a statement keeps only its N
   int gs = 0;
   for (const Word* g : b.all('G')) gs += g->code();

@@ -76,11 +76,12 @@ TEST(FileWrite, AFullDiskLeavesTheOldFileAndNoTemporaryFile) {
   EXPECT_EQ(testing::readFile(path), old);
   EXPECT_EQ(entries(dir.path()), 1);
   EXPECT_EQ(formatMessage(*failed, Lang::En),
-            path + ": cannot write the file: there is no space for it (the disk is full, or the file is over the "
-                   "size allowed); an existing file of that name is left unchanged");
-  EXPECT_EQ(formatMessage(*failed, Lang::Th),
-            path + ": บันทึกไฟล์ไม่ได้ เพราะไม่มีที่ว่างพอ (ดิสก์เต็ม หรือไฟล์ใหญ่เกินขนาดที่อนุญาต) "
-                   "ถ้ามีไฟล์ชื่อนี้อยู่แล้ว ไฟล์นั้นยังคงเดิม");
+            path +
+                ": cannot write the file: there is no space for it (the disk is full, or the file is over the "
+                "size allowed); an existing file of that name is left unchanged");
+  EXPECT_EQ(formatMessage(*failed, Lang::Th), path +
+                                                  ": บันทึกไฟล์ไม่ได้ เพราะไม่มีที่ว่างพอ (ดิสก์เต็ม หรือไฟล์ใหญ่เกินขนาดที่อนุญาต) "
+                                                  "ถ้ามีไฟล์ชื่อนี้อยู่แล้ว ไฟล์นั้นยังคงเดิม");
 }
 
 // /dev/full is a device: written into (never renamed over) and its ENOSPC reported.
@@ -126,8 +127,8 @@ TEST(FileWrite, AFolderAndAMissingFolder) {
   const auto missing = writeFileAtomic(inMissing, "x");
   ASSERT_TRUE(missing);
   EXPECT_EQ(missing->code, "F125");
-  EXPECT_EQ(formatMessage(*missing, Lang::En), inMissing + ": cannot create the file: the folder " + dir.file("no/such") +
-                                                   " does not exist or cannot be written to");
+  EXPECT_EQ(formatMessage(*missing, Lang::En), inMissing + ": cannot create the file: the folder " +
+                                                   dir.file("no/such") + " does not exist or cannot be written to");
 }
 
 TEST(FileWrite, AnOutputThatIsAnInputIsFound) {
@@ -140,9 +141,8 @@ TEST(FileWrite, AnOutputThatIsAnInputIsFound) {
   const auto clash = outputOverwritesInput(viaDots, {dir.file("other.nc"), program});
   ASSERT_TRUE(clash);
   EXPECT_EQ(clash->code, "F126");
-  EXPECT_EQ(formatMessage(*clash, Lang::En),
-            viaDots + ": this output is the input file " + program +
-                "; writing it would destroy that file, so choose another name");
+  EXPECT_EQ(formatMessage(*clash, Lang::En), viaDots + ": this output is the input file " + program +
+                                                 "; writing it would destroy that file, so choose another name");
   fs::create_symlink(program, dir.file("link.nc"));
   EXPECT_TRUE(outputOverwritesInput(dir.file("link.nc"), {program}));
   fs::create_hard_link(program, dir.file("hard.nc"));

@@ -58,7 +58,7 @@ std::string firstCode(const ReadResult<RgbImage>& r) {
 
 TEST(Bmp, TwentyFourBitBottomUpWithRowPadding) {
   // 3 x 2: bottom row first; each row is 9 bytes + 3 padding. Pixels are B G R.
-  const std::string rows = bytes({0, 0, 255, 0, 255, 0, 255, 0, 0, 0, 0, 0}) +   // bottom: red green blue
+  const std::string rows = bytes({0, 0, 255, 0, 255, 0, 255, 0, 0, 0, 0, 0}) +     // bottom: red green blue
                            bytes({0, 0, 0, 255, 255, 255, 0, 160, 224, 0, 0, 0});  // top: black white gold
   const auto r = decodeImage(makeBmp(3, 2, 24, 0, "", rows), "t.bmp");
   ASSERT_TRUE(r.ok()) << firstCode(r);
@@ -217,7 +217,8 @@ TEST(Bmp, APipeOrADeviceIsRefusedWithoutOpeningIt) {
   EXPECT_FALSE(r.ok());
   ASSERT_EQ(r.diagnostics.size(), 1u);
   EXPECT_EQ(r.diagnostics[0].code, "F157");
-  EXPECT_EQ(formatMessage(r.diagnostics[0], Lang::En), pipe + ": this is a pipe (FIFO), not an ordinary file, so it is not opened");
+  EXPECT_EQ(formatMessage(r.diagnostics[0], Lang::En),
+            pipe + ": this is a pipe (FIFO), not an ordinary file, so it is not opened");
   EXPECT_EQ(formatMessage(r.diagnostics[0], Lang::Th), pipe + ": นี่คือไปป์ (FIFO) ไม่ใช่ไฟล์ธรรมดา จึงไม่เปิด");
   const auto device = notAnOrdinaryFile("/dev/null");
   ASSERT_TRUE(device);
@@ -375,9 +376,8 @@ TEST_P(ShippedBitmaps, InsertLeadsInTheTipDirection) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Tools, ShippedBitmaps,
-                         ::testing::Values(ShippedTool{1, 3}, ShippedTool{2, 4}, ShippedTool{3, 8},
-                                           ShippedTool{4, 3}, ShippedTool{5, 2}, ShippedTool{6, 7},
-                                           ShippedTool{7, 3}, ShippedTool{8, 6}));
+                         ::testing::Values(ShippedTool{1, 3}, ShippedTool{2, 4}, ShippedTool{3, 8}, ShippedTool{4, 3},
+                                           ShippedTool{5, 2}, ShippedTool{6, 7}, ShippedTool{7, 3}, ShippedTool{8, 6}));
 
 }  // namespace
 }  // namespace klueng::core::io

@@ -38,7 +38,8 @@ TEST(MachineConfigKeys, AnEmptyFileSaysTheDefaultsApply) {
     ASSERT_EQ(r.diagnostics.size(), 1u) << text;
     EXPECT_EQ(r.diagnostics[0].code, "F137");
     EXPECT_EQ(r.diagnostics[0].severity, Severity::Warning);
-    EXPECT_EQ(formatMessage(r.diagnostics[0], Lang::En), "m.cfg: sets no machine parameter: every parameter keeps its default (SPEC 1)");
+    EXPECT_EQ(formatMessage(r.diagnostics[0], Lang::En),
+              "m.cfg: sets no machine parameter: every parameter keeps its default (SPEC 1)");
     EXPECT_DOUBLE_EQ(r.value->rapidX, MachineConfig{}.rapidX);
   }
   EXPECT_TRUE(parseMachineConfig("rapid_x = 3000\n", "m.cfg").diagnostics.empty());
@@ -55,9 +56,9 @@ TEST(MachineConfigKeys, BadValues) {
     EXPECT_EQ(r.value->turretStations, 12) << v;
   }
   const auto r = parseMachineConfig("turret_stations = 25\n", "m.cfg");
-  EXPECT_EQ(formatMessage(r.diagnostics[0], Lang::En), "m.cfg: turret_stations must be a whole number from 1 to 24, not 25");
-  EXPECT_EQ(formatMessage(r.diagnostics[0], Lang::Th),
-            "m.cfg: turret_stations ต้องเป็นจำนวนเต็มตั้งแต่ 1 ถึง 24 ไม่ใช่ 25");
+  EXPECT_EQ(formatMessage(r.diagnostics[0], Lang::En),
+            "m.cfg: turret_stations must be a whole number from 1 to 24, not 25");
+  EXPECT_EQ(formatMessage(r.diagnostics[0], Lang::Th), "m.cfg: turret_stations ต้องเป็นจำนวนเต็มตั้งแต่ 1 ถึง 24 ไม่ใช่ 25");
 }
 
 }  // namespace

@@ -28,10 +28,10 @@ MachineSetup acceleratingSetup() {
 
 constexpr char kProgram[] =
     "G98 T0101\n"
-    "G00 X20. Z2.\n"       // 2: rapid, both axes
-    "G01 Z1.9 F600.\n"     // 3: 0.1 mm at 10 mm/s: too short to reach the feed
-    "Z-48.1\n"             // 4: 50 mm: trapezoid
-    "X40. Z-58.1\n"        // 5: 10 mm radial and 10 mm along Z: X holds the ramp
+    "G00 X20. Z2.\n"    // 2: rapid, both axes
+    "G01 Z1.9 F600.\n"  // 3: 0.1 mm at 10 mm/s: too short to reach the feed
+    "Z-48.1\n"          // 4: 50 mm: trapezoid
+    "X40. Z-58.1\n"     // 5: 10 mm radial and 10 mm along Z: X holds the ramp
     "M30\n";
 
 double blockSeconds(const Timeline& t, int line) {
@@ -159,8 +159,8 @@ namespace {
 TEST(CycleTime, SplitsByToolInTheOrderTheToolsAreFirstUsed) {
   // T01: rapid 298 mm in Z (2.235 s) and 10 mm at 100 mm/min (6 s); T04: 1 s dwell
   // and 5 mm at 100 mm/min (3 s); back to T01 for a 5 mm move (3 s).
-  const Timeline t = testing::runText(
-      "G98 T0101\nG00 X20. Z2.\nG01 Z-8. F100.\nT0404\nG04 P1000\nG01 Z-13.\nT0101\nG01 Z-18.\nM30\n");
+  const Timeline t =
+      testing::runText("G98 T0101\nG00 X20. Z2.\nG01 Z-8. F100.\nT0404\nG04 P1000\nG01 Z-13.\nT0101\nG01 Z-18.\nM30\n");
   ASSERT_FALSE(t.alarm);
   const std::vector<ToolTime> byTool = t.timeByTool();
   ASSERT_EQ(byTool.size(), 2u);

@@ -84,27 +84,30 @@ INSTANTIATE_TEST_SUITE_P(
         AlarmCase{"OffsetDoesNotExist", "G00 X10.\nT0165\n", F, "A118", 2, 1, 1},
         AlarmCase{"ThreadWithoutS", "M03\nG32 Z-10. F1.\n", F, "A119", 2, 1, 1},
         // Canned cycles (cycles_test.cpp has their motion).
-        AlarmCase{"CycleProfileNotFound", "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\n"
-                  "G71 P10 Q20 U0.4 F100.\n", F, "A120", 4, 5, 3},
+        AlarmCase{"CycleProfileNotFound",
+                  "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\n"
+                  "G71 P10 Q20 U0.4 F100.\n",
+                  F, "A120", 4, 5, 3},
         AlarmCase{"CycleProfileNotMonotonic",
                   "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\n"
-                  "G71 P10 Q20 F100.\nN10 G00 X30.\nG01 Z-20.\nX40.\nZ-30.\nN20 X36.\n", F,
-                  "A121", 9, 1, 3},
+                  "G71 P10 Q20 F100.\nN10 G00 X30.\nG01 Z-20.\nX40.\nZ-30.\nN20 X36.\n",
+                  F, "A121", 9, 1, 3},
         // Fanuc PS0065: the profile's first block (N10 alone) holds no G00/G01.
         AlarmCase{"CycleProfileFirstBlockWithoutG00G01",
                   "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\n"
-                  "G71 P10 Q20 F100.\nN10\nG00 X30.\nN20 G01 Z-20.\n", F,
-                  "A153", 5, 1, 3},
+                  "G71 P10 Q20 F100.\nN10\nG00 X30.\nN20 G01 Z-20.\n",
+                  F, "A153", 5, 1, 3},
         AlarmCase{"CycleDepthZero", "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U0 R0.5\n", F, "A122", 3, 5, 2},
-        AlarmCase{"CycleUnderNoseComp", "G98 G97 S500 M03 T0101\nG42 G00 X50. Z2.\nG71 U2. R0.5\n", F, "A123",
-                  3, 1, 2},
+        AlarmCase{"CycleUnderNoseComp", "G98 G97 S500 M03 T0101\nG42 G00 X50. Z2.\nG71 U2. R0.5\n", F, "A123", 3, 1, 2},
         // A first block that moves along Z without naming X is neither type I nor II.
-        AlarmCase{"CycleProfileFirstBlockAlongZ", "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\n"
-                  "G71 P10 Q20 F100.\nN10 G00 Z0.\nN20 G01 X30.\n", F,
-                  "A124", 5, 1, 3},
-        AlarmCase{"CycleProfileWithoutMoves", "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\n"
-                  "G71 P10 Q20 F100.\nN10 G00 X30.\nN20 F0.2\n", F,
-                  "A125", 4, 5, 3},
+        AlarmCase{"CycleProfileFirstBlockAlongZ",
+                  "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\n"
+                  "G71 P10 Q20 F100.\nN10 G00 Z0.\nN20 G01 X30.\n",
+                  F, "A124", 5, 1, 3},
+        AlarmCase{"CycleProfileWithoutMoves",
+                  "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\n"
+                  "G71 P10 Q20 F100.\nN10 G00 X30.\nN20 F0.2\n",
+                  F, "A125", 4, 5, 3},
         AlarmCase{"CycleWithoutQ", "G98 G97 S500 M03\nG00 X50. Z2.\nG70 P10\nN10 G01 X30.\n", F, "A126", 3, 1, 2},
         AlarmCase{"CycleTooManyPecks", "G98 G97 S500 M03\nG00 X0. Z2.\nG74 R1.\nG74 Z-100. Q1 F100.\n", F, "A127", 4,
                   12, 3}),

@@ -104,8 +104,8 @@ TEST(Corner, HaasReadsIOrKAsTheChamferOfA90DegreeCorner) {
   // ChamferBetweenAFaceAndADiameter, from K on the face move and from I on a Z move.
   RunOptions haas;
   haas.dialect = gcode::Dialect::Haas;
-  for (const char* text : {"G21 G98 G00 X20. Z0.\nG01 X30. K-2. F100.\nZ-20.\n",
-                           "G21 G98 G00 X30. Z5.\nG01 Z0. I2. F100.\nX20.\n"}) {
+  for (const char* text :
+       {"G21 G98 G00 X20. Z0.\nG01 X30. K-2. F100.\nZ-20.\n", "G21 G98 G00 X30. Z5.\nG01 Z0. I2. F100.\nX20.\n"}) {
     const Timeline t = runText(text, haas);
     ASSERT_FALSE(t.alarm) << t.alarm->code;
     const auto c = cuts(t);

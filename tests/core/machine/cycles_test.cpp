@@ -185,24 +185,41 @@ TEST(SingleCycles, G90UnderG99WithTheSpindleStoppedRaisesA104) {
 // Z-39.9 shoulder, X38 and X34 at its Z-19.9 shoulder. Each pass retracts
 // 0.5 at 45 degrees (X +1, Z +0.5) and rapids back to Z2.
 constexpr const char* kG71 =
-    "G98 G97 S500 M03\n"            // 1
-    "G00 X50. Z2.\n"                // 2
-    "G71 U2. R0.5\n"                // 3
-    "G71 P10 Q20 U0.4 W0.1 F100.\n" // 4
-    "N10 G00 X30.\n"                // 5
-    "G01 Z-20.\n"                   // 6
-    "X40.\n"                        // 7
-    "Z-40.\n"                       // 8
-    "N20 X50.\n";                   // 9
+    "G98 G97 S500 M03\n"             // 1
+    "G00 X50. Z2.\n"                 // 2
+    "G71 U2. R0.5\n"                 // 3
+    "G71 P10 Q20 U0.4 W0.1 F100.\n"  // 4
+    "N10 G00 X30.\n"                 // 5
+    "G01 Z-20.\n"                    // 6
+    "X40.\n"                         // 7
+    "Z-40.\n"                        // 8
+    "N20 X50.\n";                    // 9
 
-const std::vector<Corner> kG71Path = {
-    {R, 46, 2}, {L, 46, -39.9}, {R, 47, -39.4}, {R, 47, 2},
-    {R, 42, 2}, {L, 42, -39.9}, {R, 43, -39.4}, {R, 43, 2},
-    {R, 38, 2}, {L, 38, -19.9}, {R, 39, -19.4}, {R, 39, 2},
-    {R, 34, 2}, {L, 34, -19.9}, {R, 35, -19.4}, {R, 35, 2},
-    // The last pass: to the offset A', along the offset profile, back to A.
-    {R, 30.4, 2.1}, {L, 30.4, -19.9}, {L, 40.4, -19.9}, {L, 40.4, -39.9}, {L, 50.4, -39.9},
-    {R, 50, 2}};
+// clang-format off: one row per pass, as the manual draws them
+const std::vector<Corner> kG71Path = {{R, 46, 2},
+                                      {L, 46, -39.9},
+                                      {R, 47, -39.4},
+                                      {R, 47, 2},
+                                      {R, 42, 2},
+                                      {L, 42, -39.9},
+                                      {R, 43, -39.4},
+                                      {R, 43, 2},
+                                      {R, 38, 2},
+                                      {L, 38, -19.9},
+                                      {R, 39, -19.4},
+                                      {R, 39, 2},
+                                      {R, 34, 2},
+                                      {L, 34, -19.9},
+                                      {R, 35, -19.4},
+                                      {R, 35, 2},
+                                      // The last pass: to the offset A', along the offset profile, back to A.
+                                      {R, 30.4, 2.1},
+                                      {L, 30.4, -19.9},
+                                      {L, 40.4, -19.9},
+                                      {L, 40.4, -39.9},
+                                      {L, 50.4, -39.9},
+                                      {R, 50, 2}};
+// clang-format on
 
 TEST(StockRemoval, G71RoughsFourPassesThenTheOffsetProfile) {
   const CycleRun t(std::string(kG71) + "G00 X100. Z100.\n");
@@ -214,8 +231,7 @@ TEST(StockRemoval, G71RoughsFourPassesThenTheOffsetProfile) {
   expectPath(t, 10, {{R, 100, 100}});
   int feedPasses = 0;
   for (const Move& m : t.moves)
-    if (m.line == 4 && m.kind == L && std::abs(xOf(m.path.start) - xOf(m.path.end)) < 1e-9 &&
-        zOf(m.path.start) == 2.0)
+    if (m.line == 4 && m.kind == L && std::abs(xOf(m.path.start) - xOf(m.path.end)) < 1e-9 && zOf(m.path.start) == 2.0)
       ++feedPasses;
   EXPECT_EQ(feedPasses, 4);
 }
@@ -227,14 +243,14 @@ TEST(StockRemoval, G71RoughsFourPassesThenTheOffsetProfile) {
 // depth 1 per side, allowance U-0.4 (inside): levels X24, X26; offset A' X27.6.
 TEST(StockRemoval, G71ShapeStepWrittenG00IsCutInTheLastPass) {
   const CycleRun t(
-      "G98 G97 S500 M03\n"              // 1
-      "G00 X22. Z2.\n"                  // 2
-      "G71 U1. R0.3\n"                  // 3
-      "G71 P10 Q20 U-0.4 W0. F100.\n"   // 4
-      "N10 G00 X28.\n"                  // 5
-      "G01 Z-20.\n"                     // 6
-      "N20 G00 X22.\n"                  // 7
-      "G00 Z100.\n");                   // 8
+      "G98 G97 S500 M03\n"             // 1
+      "G00 X22. Z2.\n"                 // 2
+      "G71 U1. R0.3\n"                 // 3
+      "G71 P10 Q20 U-0.4 W0. F100.\n"  // 4
+      "N10 G00 X28.\n"                 // 5
+      "G01 Z-20.\n"                    // 6
+      "N20 G00 X22.\n"                 // 7
+      "G00 Z100.\n");                  // 8
   ASSERT_FALSE(t.alarm) << t.alarm->code;
   const std::vector<Corner> last = {{R, 27.6, 2}, {L, 27.6, -20}, {L, 21.6, -20}, {R, 22, 2}};
   const auto got = pathOf(t, 4);
@@ -261,9 +277,13 @@ TEST(StockRemoval, G71PassesEndWhereTheyMeetAnArcOfTheProfile) {
   std::vector<Corner> cuts;
   for (const Corner& c : pathOf(t, 4))
     if (c.kind == L && c.x < 50.0 - 1e-9) cuts.push_back(c);
-  const std::vector<std::pair<double, double>> expected = {
-      {46, -20}, {42, -20}, {38, -10 - std::sqrt(99.0)}, {34, -10 - std::sqrt(91.0)},
-      {30, -10 - std::sqrt(75.0)}, {26, -10 - std::sqrt(51.0)}, {22, -10 - std::sqrt(19.0)}};
+  const std::vector<std::pair<double, double>> expected = {{46, -20},
+                                                           {42, -20},
+                                                           {38, -10 - std::sqrt(99.0)},
+                                                           {34, -10 - std::sqrt(91.0)},
+                                                           {30, -10 - std::sqrt(75.0)},
+                                                           {26, -10 - std::sqrt(51.0)},
+                                                           {22, -10 - std::sqrt(19.0)}};
   // The seven pass ends, then the profile's own Z-10 line and arc (the last pass).
   ASSERT_GE(cuts.size(), expected.size());
   for (std::size_t i = 0; i < expected.size(); ++i) {
@@ -376,9 +396,10 @@ void expectAlarm(std::string_view text, const char* code, int line) {
 
 TEST(StockRemoval, G71ProfileThatTurnsBackRaisesA121OnItsBlock) {
   // X30 -> Z-20 -> X40 -> Z-30 -> X36: the last block goes back down in X.
-  expectAlarm("G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F100.\n"
-              "N10 G00 X30.\nG01 Z-20.\nX40.\nZ-30.\nN20 X36.\n",
-              "A121", 9);
+  expectAlarm(
+      "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F100.\n"
+      "N10 G00 X30.\nG01 Z-20.\nX40.\nZ-30.\nN20 X36.\n",
+      "A121", 9);
 }
 
 // ---- G71 type II (pockets) -------------------------------------------------------
@@ -399,21 +420,21 @@ TEST(StockRemoval, G71TypeIIRoughsAPocketLevelByLevel) {
       "N10 G00 X40. W0.\nG01 Z-10.\nX30.\nZ-20.\nX40.\nZ-30.\nN20 X50.\n");
   ASSERT_FALSE(t.alarm) << t.alarm->code;
   expectPath(t, 4,
-             {{R, 46, 2}, {L, 46, -30}, {R, 47, -29.5}, {R, 47, 2},
-              {R, 42, 2}, {L, 42, -30}, {R, 43, -29.5}, {R, 43, 2},
-              {R, 50, 2}, {R, 50, -10}, {R, 43, -10}, {L, 38, -10}, {L, 38, -20}, {R, 39, -19.5}, {R, 50, -19.5},
-              {R, 50, 2},
-              {R, 50, -10}, {R, 39, -10}, {L, 34, -10}, {L, 34, -20}, {R, 35, -19.5}, {R, 50, -19.5}, {R, 50, 2},
-              {R, 40, 2}, {L, 40, -10}, {L, 30, -10}, {L, 30, -20}, {L, 40, -20}, {L, 40, -30}, {L, 50, -30},
-              {R, 50, 2}});
+             {{R, 46, 2},     {L, 46, -30}, {R, 47, -29.5}, {R, 47, 2},   {R, 42, 2},   {L, 42, -30}, {R, 43, -29.5},
+              {R, 43, 2},     {R, 50, 2},   {R, 50, -10},   {R, 43, -10}, {L, 38, -10}, {L, 38, -20}, {R, 39, -19.5},
+              {R, 50, -19.5}, {R, 50, 2},   {R, 50, -10},   {R, 39, -10}, {L, 34, -10}, {L, 34, -20}, {R, 35, -19.5},
+              {R, 50, -19.5}, {R, 50, 2},   {R, 40, 2},     {L, 40, -10}, {L, 30, -10}, {L, 30, -20}, {L, 40, -20},
+              {L, 40, -30},   {L, 50, -30}, {R, 50, 2}});
   // The same profile as type I (X only in its first block) turns back in X: A121 at the X40 block.
-  expectAlarm("G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\nG71 P10 Q20 F100.\n"
-              "N10 G00 X40.\nG01 Z-10.\nX30.\nZ-20.\nX40.\nZ-30.\nN20 X50.\n",
-              "A121", 7);
+  expectAlarm(
+      "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\nG71 P10 Q20 F100.\n"
+      "N10 G00 X40.\nG01 Z-10.\nX30.\nZ-20.\nX40.\nZ-30.\nN20 X50.\n",
+      "A121", 7);
   // Type II still needs Z one way: a profile that turns back in Z is A121.
-  expectAlarm("G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\nG71 P10 Q20 F100.\n"
-              "N10 G00 X40. Z2.\nG01 Z-10.\nX30. Z-5.\nN20 X50.\n",
-              "A121", 7);
+  expectAlarm(
+      "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\nG71 P10 Q20 F100.\n"
+      "N10 G00 X40. Z2.\nG01 Z-10.\nX30. Z-5.\nN20 X50.\n",
+      "A121", 7);
 }
 
 // A round-bottomed pocket: G02 X24 Z-30 R15 from X24 Z-10 dips to
@@ -480,11 +501,25 @@ TEST(StockRemoval, G72RoughsAlongXThreePassesThenTheOffsetProfile) {
       "G98 G97 S500 M03\nG00 X52. Z2.\nG72 W2. R0.5\nG72 P10 Q20 U0.4 W0.2 F100.\n"
       "N10 G00 Z-6.\nG01 X30.\nZ-2.\nX10.\nN20 Z2.\n");
   ASSERT_FALSE(t.alarm) << t.alarm->code;
-  expectPath(t, 4, {{R, 52, 0},    {L, 10.4, 0},  {R, 11.4, 0.5},  {R, 52, 0.5},
-                    {R, 52, -2},   {L, 30.4, -2}, {R, 31.4, -1.5}, {R, 52, -1.5},
-                    {R, 52, -4},   {L, 30.4, -4}, {R, 31.4, -3.5}, {R, 52, -3.5},
-                    {R, 52.4, -5.8}, {L, 30.4, -5.8}, {L, 30.4, -1.8}, {L, 10.4, -1.8}, {L, 10.4, 2.2},
-                    {R, 52, 2}});
+  expectPath(t, 4,
+             {{R, 52, 0},
+              {L, 10.4, 0},
+              {R, 11.4, 0.5},
+              {R, 52, 0.5},
+              {R, 52, -2},
+              {L, 30.4, -2},
+              {R, 31.4, -1.5},
+              {R, 52, -1.5},
+              {R, 52, -4},
+              {L, 30.4, -4},
+              {R, 31.4, -3.5},
+              {R, 52, -3.5},
+              {R, 52.4, -5.8},
+              {L, 30.4, -5.8},
+              {L, 30.4, -1.8},
+              {L, 10.4, -1.8},
+              {L, 10.4, 2.2},
+              {R, 52, 2}});
 }
 
 // ---- G73 -----------------------------------------------------------------------
@@ -496,9 +531,19 @@ TEST(PatternRepeating, G73ThreePassesWithTheReliefShrinking) {
       "G98 G97 S500 M03\nG00 X50. Z2.\nG73 U3. W1. R3\nG73 P10 Q20 U0.4 W0.1 F100.\n"
       "N10 G00 X30.\nG01 Z-20.\nN20 X50.\n");
   ASSERT_FALSE(t.alarm) << t.alarm->code;
-  expectPath(t, 4, {{R, 36.4, 3.1}, {L, 36.4, -18.9}, {L, 56.4, -18.9}, {R, 50, 2},
-                    {R, 33.4, 2.6}, {L, 33.4, -19.4}, {L, 53.4, -19.4}, {R, 50, 2},
-                    {R, 30.4, 2.1}, {L, 30.4, -19.9}, {L, 50.4, -19.9}, {R, 50, 2}});
+  expectPath(t, 4,
+             {{R, 36.4, 3.1},
+              {L, 36.4, -18.9},
+              {L, 56.4, -18.9},
+              {R, 50, 2},
+              {R, 33.4, 2.6},
+              {L, 33.4, -19.4},
+              {L, 53.4, -19.4},
+              {R, 50, 2},
+              {R, 30.4, 2.1},
+              {L, 30.4, -19.9},
+              {L, 50.4, -19.9},
+              {R, 50, 2}});
 }
 
 // ---- G74 / G75 -------------------------------------------------------------------
@@ -531,9 +576,19 @@ TEST(Threading, G76DepthsFollowTheSquareRootThenFinish) {
   // 0.3, 0.42426, 0.51962, 0.6, 0.67082, 0.73485, 0.79373, 0.84853, then 0.87,
   // then two passes at 0.92.
   const auto d = cycles::threadDepths(0.92, 0.3, 0.05, 0.05, 2);
-  const std::vector<double> expected = {0.3,     0.3 * std::sqrt(2.0), 0.3 * std::sqrt(3.0), 0.6,
-                                        0.3 * std::sqrt(5.0), 0.3 * std::sqrt(6.0), 0.3 * std::sqrt(7.0),
-                                        0.3 * std::sqrt(8.0), 0.87, 0.92, 0.92};
+  // clang-format off: one row per pass, as the manual draws them
+  const std::vector<double> expected = {0.3,
+                                        0.3 * std::sqrt(2.0),
+                                        0.3 * std::sqrt(3.0),
+                                        0.6,
+                                        0.3 * std::sqrt(5.0),
+                                        0.3 * std::sqrt(6.0),
+                                        0.3 * std::sqrt(7.0),
+                                        0.3 * std::sqrt(8.0),
+                                        0.87,
+                                        0.92,
+                                        0.92};
+  // clang-format on
   ASSERT_EQ(d.size(), expected.size());
   for (std::size_t i = 0; i < d.size(); ++i) EXPECT_NEAR(d[i], expected[i], 1e-12) << i;
 }
@@ -549,8 +604,7 @@ TEST(Threading, G76MinimumDepthClampsTheIncrements) {
 }
 
 TEST(Threading, G76PassesRunAtTheRootPlusTheDepthLeftWithFlankInfeed) {
-  const CycleRun t(
-      "G97 S500 M03\nG00 X35. Z5.\nG76 P020060 Q50 R0.05\nG76 X28.16 Z-20. P920 Q300 F1.5\n");
+  const CycleRun t("G97 S500 M03\nG00 X35. Z5.\nG76 P020060 Q50 R0.05\nG76 X28.16 Z-20. P920 Q300 F1.5\n");
   ASSERT_FALSE(t.alarm) << t.alarm->code;
   const auto d = cycles::threadDepths(0.92, 0.3, 0.05, 0.05, 2);
   std::vector<const Move*> threads;
@@ -592,7 +646,8 @@ TEST(Threading, G76ChamferPullsOutAt45DegreesOverRTenthsOfALead) {
 // during threading (G97 is recommended); the control runs the thread. One warning.
 TEST(Threading, G76UnderG96WarnsOnceAndThreads) {
   const Timeline t = interpret(gcode::parse("G96 S100 M03\nG00 X35. Z5.\nG76 P010060 Q50 R0.05\n"
-                                            "G76 X28.16 Z-20. P920 Q300 F1.5\nG76 X28.16 Z-20. P920 Q300 F1.5\n", 1),
+                                            "G76 X28.16 Z-20. P920 Q300 F1.5\nG76 X28.16 Z-20. P920 Q300 F1.5\n",
+                                            1),
                                testing::testSetup(), RunOptions{});
   EXPECT_FALSE(t.alarm);
   ASSERT_EQ(t.flow.notices.size(), 1u);
@@ -604,7 +659,8 @@ TEST(Threading, G76UnderG96WarnsOnceAndThreads) {
 TEST(Threading, G76UnderG96RaisesA108OnTheClassicTrainer) {
   RunOptions classic;
   classic.dialect = gcode::Dialect::Classic;
-  const Timeline t = interpret(gcode::parse("G96 S100 M03\nG00 X35. Z5.\nG32 Z-10. F1.5\n", 1), testing::testSetup(), classic);
+  const Timeline t =
+      interpret(gcode::parse("G96 S100 M03\nG00 X35. Z5.\nG32 Z-10. F1.5\n", 1), testing::testSetup(), classic);
   ASSERT_TRUE(t.alarm);
   EXPECT_EQ(t.alarm->code, "A108");
   EXPECT_EQ(t.alarm->range.line, 3);

@@ -77,9 +77,10 @@ TEST(Explain, StateCodesSpindleAndTool) {
   EXPECT_EQ(r.explain(2, Lang::Th), "G50 S2500: G50 จำกัดความเร็วรอบเพลาไม่เกิน 2500 รอบ/นาที");
   EXPECT_EQ(r.explain(3, Lang::En), "T0101: turn to tool 01 with offset 01");
   EXPECT_EQ(r.explain(3, Lang::Th), "T0101: เปลี่ยนมีดตัดหมายเลข 01 ใช้ออฟเซต 01");
-  EXPECT_EQ(r.explain(4, Lang::En),
-            "G96 S180 M03: G96 constant cutting speed: the rpm follows the diameter; cutting speed 180 m/min; M03 start "
-            "the spindle clockwise");
+  EXPECT_EQ(
+      r.explain(4, Lang::En),
+      "G96 S180 M03: G96 constant cutting speed: the rpm follows the diameter; cutting speed 180 m/min; M03 start "
+      "the spindle clockwise");
   EXPECT_EQ(r.explain(4, Lang::Th),
             "G96 S180 M03: G96 ความเร็วตัดคงที่: รอบเพลาเปลี่ยนตามเส้นผ่าศูนย์กลาง; ความเร็วตัด 180 ม./นาที; M03 "
             "เปิดเพลาหมุนตามเข็มนาฬิกา");
@@ -89,7 +90,8 @@ TEST(Explain, StateCodesSpindleAndTool) {
 
 TEST(Explain, RapidsDwellsAndMCodes) {
   const Ran r = run(kTurning);
-  EXPECT_EQ(r.explain(5, Lang::En), "G00 X52. Z2. M08: move at rapid speed, not cutting to Ø52 at Z2; M08 turn the coolant on");
+  EXPECT_EQ(r.explain(5, Lang::En),
+            "G00 X52. Z2. M08: move at rapid speed, not cutting to Ø52 at Z2; M08 turn the coolant on");
   EXPECT_EQ(r.explain(5, Lang::Th), "G00 X52. Z2. M08: เคลื่อนที่เร็วโดยไม่ตัดเฉือน ไปที่ Ø52 Z2; M08 เปิดน้ำหล่อเย็น");
   EXPECT_EQ(r.explain(8, Lang::En), "G04 X1.5: G04 wait with the tool standing still 1.5 s");
   EXPECT_EQ(r.explain(8, Lang::Th), "G04 X1.5: G04 หยุดรอโดยมีดอยู่กับที่ 1.5 วินาที");
@@ -98,28 +100,31 @@ TEST(Explain, RapidsDwellsAndMCodes) {
 }
 
 TEST(Explain, CyclesSayTheirProfileDepthAndAllowance) {
-  const Ran r = run(
-      "G21 G99\nG50 S2000\nT0101\nG96 S150 M03\nG00 X52. Z2.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\n"
-      "N10 G00 X30.\nG01 Z-20.\nN20 X52.\nG00 X100. Z100.\nM30\n");
-  EXPECT_EQ(r.explain(6, Lang::En),
-            "G71 U2. R0.5: G71 rough turning cycle: take the profile down in passes along Z; depth of cut 2 mm per pass, "
-            "retract 0.5 mm");
+  const Ran r =
+      run("G21 G99\nG50 S2000\nT0101\nG96 S150 M03\nG00 X52. Z2.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\n"
+          "N10 G00 X30.\nG01 Z-20.\nN20 X52.\nG00 X100. Z100.\nM30\n");
+  EXPECT_EQ(
+      r.explain(6, Lang::En),
+      "G71 U2. R0.5: G71 rough turning cycle: take the profile down in passes along Z; depth of cut 2 mm per pass, "
+      "retract 0.5 mm");
   EXPECT_EQ(r.explain(6, Lang::Th),
             "G71 U2. R0.5: G71 วัฏจักรกลึงปอกหยาบ: กลึงตามรูปร่างทีละเที่ยวตามแนวแกน Z; ป้อนลึกเที่ยวละ 2 มม. ถอยมีด 0.5 มม.");
-  EXPECT_EQ(r.explain(7, Lang::En),
-            "G71 P10 Q20 U0.4 W0.1 F0.25: G71 rough turning cycle: take the profile down in passes along Z; the profile "
-            "is blocks N10 to N20; finishing allowance U0.4 on the diameter; 0.25 mm per revolution");
+  EXPECT_EQ(
+      r.explain(7, Lang::En),
+      "G71 P10 Q20 U0.4 W0.1 F0.25: G71 rough turning cycle: take the profile down in passes along Z; the profile "
+      "is blocks N10 to N20; finishing allowance U0.4 on the diameter; 0.25 mm per revolution");
 }
 
 TEST(Explain, InsideACycleThePassIsCounted) {
-  const Ran r = run(
-      "G21 G99\nG50 S2000\nT0101\nG96 S150 M03\nG00 X52. Z2.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\n"
-      "N10 G00 X30.\nG01 Z-20.\nN20 X52.\nG00 X100. Z100.\nM30\n");
+  const Ran r =
+      run("G21 G99\nG50 S2000\nT0101\nG96 S150 M03\nG00 X52. Z2.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.25\n"
+          "N10 G00 X30.\nG01 Z-20.\nN20 X52.\nG00 X100. Z100.\nM30\n");
   // Roughing from Ø52 to Ø30.4 at 2 mm a side: passes at Ø48, 44, 40, 36, 32 and the last at 30.4 plus
   // the pass along the profile.
   std::vector<int> cuts;  // the G71 block's moves that cut
   for (std::size_t i = 0; i < r.timeline.moves.size(); ++i)
-    if (r.timeline.moves[i].line == 7 && r.timeline.moves[i].kind == MoveKind::Line) cuts.push_back(static_cast<int>(i));
+    if (r.timeline.moves[i].line == 7 && r.timeline.moves[i].kind == MoveKind::Line)
+      cuts.push_back(static_cast<int>(i));
   ASSERT_GT(cuts.size(), 3u);
   const std::string first = explainPass(r.timeline, cuts.front(), Lang::En);
   const std::string last = explainPass(r.timeline, cuts.back(), Lang::En);
@@ -137,24 +142,29 @@ TEST(Explain, InsideACycleThePassIsCounted) {
 
 TEST(Explain, ThreadsAndMacroStatements) {
   const Ran r = run("G21 G99\nT0303\nG97 S800 M03\nG00 X30. Z5.\nG32 Z-30. F1.5\n#1=2\nG00 X40.\nM30\n");
-  EXPECT_EQ(r.explain(5, Lang::En), "G32 Z-30. F1.5: cut one pass of a thread, the feed locked to the spindle to Z-30, lead 1.5 mm");
-  EXPECT_EQ(r.explain(3, Lang::En), "G97 S800 M03: G97 constant spindle rpm; spindle speed 800 rpm; M03 start the spindle clockwise");
+  EXPECT_EQ(r.explain(5, Lang::En),
+            "G32 Z-30. F1.5: cut one pass of a thread, the feed locked to the spindle to Z-30, lead 1.5 mm");
+  EXPECT_EQ(r.explain(3, Lang::En),
+            "G97 S800 M03: G97 constant spindle rpm; spindle speed 800 rpm; M03 start the spindle clockwise");
   EXPECT_EQ(r.explain(6, Lang::En, "#1=2"), "#1=2: give a macro variable a value");
   EXPECT_EQ(r.explain(6, Lang::Th, "#1=2"), "#1=2: กำหนดค่าให้ตัวแปรมาโคร");
 }
 
 TEST(Explain, WithoutARunTheWordsAloneAreSaid) {
   const gcode::Program p = gcode::parse("G01 X30. Z-20. F0.2\n", 1);
-  EXPECT_EQ(explainWords(p.blocks[0], gcode::Dialect::Fanuc, Lang::En), "G01 X30. Z-20. F0.2: cut in a straight line to Ø30 at Z-20, feed F0.2");
+  EXPECT_EQ(explainWords(p.blocks[0], gcode::Dialect::Fanuc, Lang::En),
+            "G01 X30. Z-20. F0.2: cut in a straight line to Ø30 at Z-20, feed F0.2");
 }
 
 TEST(Explain, ALineOfTextAsTheEditorHoldsIt) {
-  EXPECT_EQ(explainLineText("#1=2", 6, nullptr, gcode::Dialect::Fanuc, Lang::En), "#1=2: give a macro variable a value");
+  EXPECT_EQ(explainLineText("#1=2", 6, nullptr, gcode::Dialect::Fanuc, Lang::En),
+            "#1=2: give a macro variable a value");
   EXPECT_EQ(explainLineText("G01 X30. Z-20. F0.2 (finish)", 9, nullptr, gcode::Dialect::Fanuc, Lang::En),
             "G01 X30. Z-20. F0.2: cut in a straight line to Ø30 at Z-20, feed F0.2");
   EXPECT_EQ(explainLineText("(only a comment)", 3, nullptr, gcode::Dialect::Fanuc, Lang::En), "");
   const Ran r = run(kTurning);
-  EXPECT_EQ(explainLineText("G01 X30. Z-20. F0.2", 6, &r.after(6), gcode::Dialect::Fanuc, Lang::En), r.explain(6, Lang::En));
+  EXPECT_EQ(explainLineText("G01 X30. Z-20. F0.2", 6, &r.after(6), gcode::Dialect::Fanuc, Lang::En),
+            r.explain(6, Lang::En));
 }
 
 // Issue 26 item 6: a job that reads lengths without a point in least input
@@ -162,8 +172,7 @@ TEST(Explain, ALineOfTextAsTheEditorHoldsIt) {
 TEST(Explain, LengthsInIncrementsAreSaidAsTheyAreRead) {
   const std::string whole = explainLineText("G71 U1500 R500", 12, nullptr, gcode::Dialect::Fanuc, Lang::En);
   EXPECT_NE(whole.find("depth of cut 1500 mm per pass, retract 500 mm"), std::string::npos) << whole;
-  const std::string increments =
-      explainLineText("G71 U1500 R500", 12, nullptr, gcode::Dialect::Fanuc, Lang::En, true);
+  const std::string increments = explainLineText("G71 U1500 R500", 12, nullptr, gcode::Dialect::Fanuc, Lang::En, true);
   EXPECT_NE(increments.find("depth of cut 1.5 mm per pass, retract 0.5 mm"), std::string::npos) << increments;
   EXPECT_EQ(explainLineText("G01 X30000 Z-20. F0.2", 9, nullptr, gcode::Dialect::Fanuc, Lang::En, true),
             "G01 X30000 Z-20. F0.2: cut in a straight line to Ø30 at Z-20, feed F0.2");
@@ -181,7 +190,8 @@ TEST(Explain, EveryCodeOfTheTableHasASentenceInBothLanguages) {
       EXPECT_GE(th.size(), 6u) << row.letter << row.number;
       EXPECT_NE(en, th) << row.letter << row.number;
       // Thai text is Thai: it holds a letter of the Thai block (U+0E00..U+0E7F: E0 B8/B9 in UTF-8).
-      EXPECT_TRUE(th.find("\xE0\xB8") != std::string::npos || th.find("\xE0\xB9") != std::string::npos) << row.letter << row.number;
+      EXPECT_TRUE(th.find("\xE0\xB8") != std::string::npos || th.find("\xE0\xB9") != std::string::npos)
+          << row.letter << row.number;
     }
   EXPECT_GT(rows, 100);
   EXPECT_TRUE(explainCode('G', 999, gcode::Dialect::Fanuc, Lang::En).empty());

@@ -40,12 +40,12 @@ TEST(Interpreter, InitialStateFollowsSpec6) {
 
 TEST(Interpreter, ModalStateIsKeptAndSnapshottedPerBlock) {
   const Timeline t = runText(
-      "G98 G96 S120 M03\n"   // 1
+      "G98 G96 S120 M03\n"     // 1
       "G01 X40. Z290. F150\n"  // 2
-      "Z280.\n"              // 3: still G01, F150
-      "G97 S800 M08\n"       // 4
-      "G99 G01 W-5. F0.1\n"  // 5
-      "M09 M05\n");          // 6
+      "Z280.\n"                // 3: still G01, F150
+      "G97 S800 M08\n"         // 4
+      "G99 G01 W-5. F0.1\n"    // 5
+      "M09 M05\n");            // 6
   ASSERT_FALSE(t.alarm);
   ASSERT_EQ(t.snapshots.size(), 6u);
   EXPECT_EQ(t.snapshots[0].modal.feedMode, FeedMode::PerMinute);
@@ -163,7 +163,7 @@ TEST(Interpreter, G96FacingTimeMatchesTheAnalyticIntegral) {
   const Move& m = t.moves.back();
   EXPECT_NEAR(m.tEnd - m.tStart, expected, 1e-9);
   EXPECT_NEAR(m.rpm, 1000.0 * 150.0 / (std::numbers::pi * 60.0), 1e-9);  // 795.77 at X60
-  EXPECT_DOUBLE_EQ(m.rpmEnd, 2000.0);                                      // clamped at the centre
+  EXPECT_DOUBLE_EQ(m.rpmEnd, 2000.0);                                    // clamped at the centre
   EXPECT_NEAR(m.feed, 0.25 * m.rpm, 1e-9);
   // Without G50 S the machine maximum (3000) clamps.
   const Timeline u = runText("G96 S150 M03\nG00 X60. Z0.\nG01 X0. F0.25\n");
@@ -218,9 +218,9 @@ TEST(Interpreter, ArcByRadiusShortAndLongAndByCentre) {
 
 TEST(Interpreter, G28GoesViaTheIntermediatePointAndG29ComesBackThroughIt) {
   const Timeline t = runText(
-      "G00 X40. Z50.\n"     // 1
-      "G28 X60. Z100.\n"    // 2: via X60 Z100 to the reference X0 Z300
-      "G29 X30. Z20.\n");   // 3: via X60 Z100 to X30 Z20
+      "G00 X40. Z50.\n"    // 1
+      "G28 X60. Z100.\n"   // 2: via X60 Z100 to the reference X0 Z300
+      "G29 X30. Z20.\n");  // 3: via X60 Z100 to X30 Z20
   ASSERT_FALSE(t.alarm);
   std::vector<Move> g28, g29;
   for (const Move& m : t.moves) (m.line == 2 ? g28 : m.line == 3 ? g29 : g28).push_back(m);
@@ -260,9 +260,9 @@ TEST(Interpreter, G27LightsThePositionCheckLampAtTheReferencePoint) {
 
 TEST(Interpreter, G50SetsTheCoordinatesOfTheCurrentPosition) {
   const Timeline t = runText(
-      "G50 X100. Z50.\n"     // the tool (at the start position) now reads X100 Z50
-      "G00 X80. Z40.\n"      // dX 10 radius (0.15 s), dZ 10 (0.075 s)
-      "G28 U0. W0.\n");      // the reference point is where the tool started
+      "G50 X100. Z50.\n"  // the tool (at the start position) now reads X100 Z50
+      "G00 X80. Z40.\n"   // dX 10 radius (0.15 s), dZ 10 (0.075 s)
+      "G28 U0. W0.\n");   // the reference point is where the tool started
   ASSERT_FALSE(t.alarm);
   EXPECT_POINT(t.snapshots[0].machine.position, 100.0, 50.0);
   EXPECT_TRUE(t.moves.empty() || t.moves[0].line == 2);

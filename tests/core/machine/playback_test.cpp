@@ -13,22 +13,22 @@ using testing::runText;
 
 // Line numbers are the text's lines (line 1 = O0001).
 constexpr const char* kProgram =
-    "O0001\n"                 // 1
-    "G21 G99 T0101\n"         // 2
-    "G97 S1000 M03\n"         // 3
-    "G00 X40. Z2.\n"          // 4
-    "G01 Z-10. F0.2\n"        // 5
-    "M01\n"                   // 6
-    "G00 X42.\n"              // 7
-    "M98 P1000\n"             // 8
-    "G00 Z5.\n"               // 9
-    "M00\n"                   // 10
-    "G00 X50.\n"              // 11
-    "M30\n"                   // 12
-    "O1000\n"                 // 13
-    "G01 X38. F0.1\n"         // 14
-    "G00 X42.\n"              // 15
-    "M99\n";                  // 16
+    "O0001\n"           // 1
+    "G21 G99 T0101\n"   // 2
+    "G97 S1000 M03\n"   // 3
+    "G00 X40. Z2.\n"    // 4
+    "G01 Z-10. F0.2\n"  // 5
+    "M01\n"             // 6
+    "G00 X42.\n"        // 7
+    "M98 P1000\n"       // 8
+    "G00 Z5.\n"         // 9
+    "M00\n"             // 10
+    "G00 X50.\n"        // 11
+    "M30\n"             // 12
+    "O1000\n"           // 13
+    "G01 X38. F0.1\n"   // 14
+    "G00 X42.\n"        // 15
+    "M99\n";            // 16
 
 class Playback : public ::testing::Test {
  protected:
@@ -129,7 +129,8 @@ TEST_F(Playback, StepBackGoesOverTheLastBlockOrToTheStartOfThisOne) {
 TEST_F(Playback, MidMoveThePoseShowsTheMovesFeedAndPlace) {
   // G01 Z-10. F0.2 at 1000 rpm: 200 mm/min, 12 mm from Z2 in 3.6 s.
   const int k = snapshotOf(5);
-  const Move& cut = timeline_.moves[static_cast<std::size_t>(timeline_.snapshots[static_cast<std::size_t>(k)].moveEnd - 1)];
+  const Move& cut =
+      timeline_.moves[static_cast<std::size_t>(timeline_.snapshots[static_cast<std::size_t>(k)].moveEnd - 1)];
   ASSERT_NEAR(cut.tEnd - cut.tStart, 3.6, 1e-9);
   const double half = (cut.tStart + cut.tEnd) / 2.0;
   const Pose pose = poseAt(timeline_, k - 1, half);
@@ -144,7 +145,8 @@ TEST_F(Playback, MidMoveThePoseShowsTheMovesFeedAndPlace) {
 
 TEST_F(Playback, ASlowFrameNeverJumpsFurtherThanItsTravel) {
   const int k = snapshotOf(5);
-  const Move& cut = timeline_.moves[static_cast<std::size_t>(timeline_.snapshots[static_cast<std::size_t>(k)].moveEnd - 1)];
+  const Move& cut =
+      timeline_.moves[static_cast<std::size_t>(timeline_.snapshots[static_cast<std::size_t>(k)].moveEnd - 1)];
   // 200 mm/min = 3.333 mm/s: 1 mm of travel is 0.3 s of the 3.6 s move.
   EXPECT_NEAR(limitTravel(timeline_, cut.tStart, 2.0, 1.0), 0.3, 1e-9);
   EXPECT_NEAR(limitTravel(timeline_, cut.tStart, 0.1, 1.0), 0.1, 1e-12);  // within the travel: all of dt

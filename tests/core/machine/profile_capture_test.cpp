@@ -74,8 +74,8 @@ TEST(ProfileCapture, G70CutsTheChamferAndCornerOfItsProfile) {
 
 TEST(ProfileCapture, G71FinishesItsLastPassAlongTheChamferAndCorner) {
   // No finishing allowance: the last pass is the profile itself.
-  const Timeline t = runText(std::string("G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\nG71 P10 Q20 F100.\n") +
-                             kCornerProfile);
+  const Timeline t =
+      runText(std::string("G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\nG71 P10 Q20 F100.\n") + kCornerProfile);
   ASSERT_FALSE(t.alarm) << t.alarm->code;
   const std::vector<Cut> cuts = cutsOf(t, 4);
   ASSERT_GE(cuts.size(), 6u);
@@ -102,9 +102,10 @@ TEST(ProfileCapture, AProfileReadsMacroValuesLikeNumbers) {
 
 TEST(ProfileCapture, TheCycleBlockReadsItsOwnMacroValues) {
   const std::string profile = "N10 G00 X30.\nG01 Z-20.\nN20 X50.\n";
-  const Timeline numbers = runText("G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F100.\n" + profile);
-  const Timeline values =
-      runText("#1=2.\n#2=0.4\nG98 G97 S500 M03\nG00 X50. Z2.\nG71 U#1 R0.5\nG71 P10 Q20 U#2 W0.1 F[#2*250]\n" + profile);
+  const Timeline numbers =
+      runText("G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F100.\n" + profile);
+  const Timeline values = runText(
+      "#1=2.\n#2=0.4\nG98 G97 S500 M03\nG00 X50. Z2.\nG71 U#1 R0.5\nG71 P10 Q20 U#2 W0.1 F[#2*250]\n" + profile);
   ASSERT_FALSE(numbers.alarm) << numbers.alarm->code;
   ASSERT_FALSE(values.alarm) << values.alarm->code;
   const std::vector<Cut> expected = cutsOf(numbers, 4);
@@ -134,11 +135,11 @@ TEST_P(ProfileRefuses, ABlockThatIsNoMoveWithA150AtItsWord) {
   for (const Move& m : t.moves) EXPECT_NE(m.line, 4);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    FanucLimitations, ProfileRefuses,
-    ::testing::Values(Refused{"G01 Z-20. G28 U0.", "G28", 11}, Refused{"G01 Z-20. M98 P100", "M98", 11},
-                      Refused{"G32 Z-20. F1.5", "G32", 1}, Refused{"G90 X40. Z-20.", "G90", 1},
-                      Refused{"G65 P100 A1.", "G65", 1}));
+INSTANTIATE_TEST_SUITE_P(FanucLimitations, ProfileRefuses,
+                         ::testing::Values(Refused{"G01 Z-20. G28 U0.", "G28", 11},
+                                           Refused{"G01 Z-20. M98 P100", "M98", 11},
+                                           Refused{"G32 Z-20. F1.5", "G32", 1}, Refused{"G90 X40. Z-20.", "G90", 1},
+                                           Refused{"G65 P100 A1.", "G65", 1}));
 
 TEST(ProfileCapture, ADwellInTheProfileWaitsUnderG70Only) {
   const std::string program =

@@ -105,10 +105,10 @@ TEST(OneShotWithMotion, G00G53WithXAndZ) {
 
 TEST(OneShotWithMotion, G28G01UWReturnsAndLeavesG01Modal) {
   const Timeline t = runText(
-      "G98 G97 S500 M03\n"       // 1
-      "G00 X40. Z10.\n"          // 2
-      "G28 G01 U0 W0 F100.\n"    // 3: intermediate = here, then the reference X0 Z300 at rapid
-      "X20. Z290.\n",            // 4: G01 from the reference point
+      "G98 G97 S500 M03\n"     // 1
+      "G00 X40. Z10.\n"        // 2
+      "G28 G01 U0 W0 F100.\n"  // 3: intermediate = here, then the reference X0 Z300 at rapid
+      "X20. Z290.\n",          // 4: G01 from the reference point
       in(Dialect::Fanuc));
   ASSERT_FALSE(t.alarm);
   EXPECT_POINT(t.snapshots[2].machine.position, 0.0, 300.0);
@@ -175,8 +175,8 @@ TEST(G30, ReturnsViaTheIntermediatePointToTheReferencePoint) {
 TEST(ToolWord, LimitsComeFromTheTablesAndTheProfile) {
   const MachineSetup setup = testing::testSetup();
   const int stations = static_cast<int>(setup.tools.bitmap.size());
-  const int offsets = std::min(gcode::machineProfile(Dialect::Fanuc).maxOffset,
-                               static_cast<int>(setup.offsets.offsets.size()));
+  const int offsets =
+      std::min(gcode::machineProfile(Dialect::Fanuc).maxOffset, static_cast<int>(setup.offsets.offsets.size()));
   // The last station with the last offset is fine.
   const std::string last = fmt::format("T{:02d}{:02d}\n", stations, offsets);
   const Timeline ok = runText(last, in(Dialect::Fanuc));

@@ -139,7 +139,7 @@ TEST(Samples, RuntimeAlarmsStopsOnN40) {
   const Timeline t = runSample("05-runtime-alarms.txt");
   ASSERT_TRUE(t.alarm);
   EXPECT_EQ(t.alarm->code, "A104");
-  EXPECT_EQ(t.alarm->range.line, 12);  // N40
+  EXPECT_EQ(t.alarm->range.line, 12);   // N40
   EXPECT_EQ(t.alarm->range.column, 5);  // its G01
 }
 

@@ -79,8 +79,9 @@ TEST(StockInference, OnlyBehindTheFaceTheFirstCutsStartGivesTheBar) {
 // the centre give a bar a size above Ø30.5 — no tube: a step in Z followed by
 // facing down to the centre line is a face cut, not a bore.
 TEST(StockInference, BeyondTheCentreTheSameBarAndAFaceStepIsNoBore) {
-  const std::string text = "G21 G98\nT0101\nG97 S600 M03\nG00 X-30.5 Z0.\nG01 Z-1. F60\nX0.\nG00 Z3.\n"
-                           "X-30.5\nG01 Z-2.\nX0.\nG00 Z3.\nM30\n";
+  const std::string text =
+      "G21 G98\nT0101\nG97 S600 M03\nG00 X-30.5 Z0.\nG01 Z-1. F60\nX0.\nG00 Z3.\n"
+      "X-30.5\nG01 Z-2.\nX0.\nG00 Z3.\nM30\n";
   const StockInference r = infer(text);
   ASSERT_TRUE(r.found);
   EXPECT_DOUBLE_EQ(r.approachDiameter, 30.5);
@@ -177,20 +178,20 @@ TEST(StockInference, InsideWorkWithoutDrillingIsATube) {
 // A Fanuc boring program that never turns the outside: G71 with U-0.4 (inside)
 // from X86. Roughing passes from X88 (U1. per side) out to the Ø100 profile.
 const std::string kBoreOnly =
-    "G21 G99 G97 S600 M03\n"                  // 1
-    "T0505\n"                                 // 2
-    "G00 X86. Z2.\n"                          // 3
-    "G71 U1. R0.5\n"                          // 4
-    "G71 P10 Q20 U-0.4 W0.1 F0.2\n"           // 5
-    "N10 G00 X100.\n"                         // 6
-    "G01 Z0. F0.1\n"                          // 7
-    "X96. Z-2.\n"                             // 8
-    "Z-30.\n"                                 // 9
-    "X90.\n"                                  // 10
-    "N20 Z-45.\n"                             // 11
-    "G70 P10 Q20\n"                           // 12
-    "G00 Z100.\n"                             // 13
-    "M30\n";                                  // 14
+    "G21 G99 G97 S600 M03\n"         // 1
+    "T0505\n"                        // 2
+    "G00 X86. Z2.\n"                 // 3
+    "G71 U1. R0.5\n"                 // 4
+    "G71 P10 Q20 U-0.4 W0.1 F0.2\n"  // 5
+    "N10 G00 X100.\n"                // 6
+    "G01 Z0. F0.1\n"                 // 7
+    "X96. Z-2.\n"                    // 8
+    "Z-30.\n"                        // 9
+    "X90.\n"                         // 10
+    "N20 Z-45.\n"                    // 11
+    "G70 P10 Q20\n"                  // 12
+    "G00 Z100.\n"                    // 13
+    "M30\n";                         // 14
 
 TEST(StockInference, BoringOnlyProgramGetsABarAroundItsLargestCut) {
   const StockInference r = infer(kBoreOnly);
@@ -220,18 +221,18 @@ StockInference inferIn(const std::string& text, gcode::Dialect dialect) {
 }
 
 const std::string kVNeck =
-    "G21 G99\n"                     // 1
-    "T0101\n"                       // 2
-    "G97 S800 M03\n"                // 3
-    "G00 X52. Z2.\n"                // 4
-    "G01 X44. Z0. F0.2\n"           // 5
-    "Z-10.\n"                       // 6
-    "X40. Z-15.\n"                  // 7
-    "X44. Z-20.\n"                  // 8
-    "Z-30.\n"                       // 9
-    "G00 X60.\n"                    // 10
-    "Z100.\n"                       // 11
-    "M30\n";                        // 12
+    "G21 G99\n"            // 1
+    "T0101\n"              // 2
+    "G97 S800 M03\n"       // 3
+    "G00 X52. Z2.\n"       // 4
+    "G01 X44. Z0. F0.2\n"  // 5
+    "Z-10.\n"              // 6
+    "X40. Z-15.\n"         // 7
+    "X44. Z-20.\n"         // 8
+    "Z-30.\n"              // 9
+    "G00 X60.\n"           // 10
+    "Z100.\n"              // 11
+    "M30\n";               // 12
 
 TEST(StockInference, AnOutsideNeckIsNoBore) {
   for (const gcode::Dialect dialect : {gcode::Dialect::Fanuc, gcode::Dialect::Haas}) {
@@ -242,7 +243,7 @@ TEST(StockInference, AnOutsideNeckIsNoBore) {
     EXPECT_FALSE(r.outsideFromInside);
     EXPECT_DOUBLE_EQ(r.diameter, 50.0);  // X52. before a diagonal first cut: the bar below it
     EXPECT_EQ(r.diameterLine, 4);
-    EXPECT_DOUBLE_EQ(r.length, 50.0);    // 30 + 5 + 15
+    EXPECT_DOUBLE_EQ(r.length, 50.0);  // 30 + 5 + 15
     EXPECT_EQ(noteText(kVNeck, r, 0), "stock Ø50 x 50 mm inferred from G00 X52. Z2. (first approach)");
     io::JobHeader h;
     r.applyTo(h);
@@ -265,8 +266,9 @@ TEST(StockInference, AnOutsideNeckIsNoBore) {
 // Passes that retract along the cut (G00 Z2. at the pass's own X) and step
 // down for the next: outside roughing, not a bore (main read Ø50/Ø47).
 TEST(StockInference, RetractAlongTheCutIsNoBore) {
-  const std::string text = "G21 G99\nT0101\nG97 S800 M03\nG00 X48. Z2.\nG01 Z-30. F0.2\nG00 Z2.\nX46.\n"
-                           "G01 Z-30.\nG00 Z2.\nX100. Z100.\nM30\n";
+  const std::string text =
+      "G21 G99\nT0101\nG97 S800 M03\nG00 X48. Z2.\nG01 Z-30. F0.2\nG00 Z2.\nX46.\n"
+      "G01 Z-30.\nG00 Z2.\nX100. Z100.\nM30\n";
   const StockInference r = infer(text);
   ASSERT_TRUE(r.found);
   EXPECT_DOUBLE_EQ(r.bore, 0.0);
@@ -279,33 +281,33 @@ TEST(StockInference, RetractAlongTheCutIsNoBore) {
 // as a Ø40 bar, but the program turns Ø44 along -Z: the bar is the next size
 // above that, solid (main read "Ø60/Ø42 ... works only inside a bore").
 const std::string kCamOutside =
-    "%\n"                                   // 1
-    "O2001 (OUTSIDE PROFILE)\n"             // 2
-    "(T1 OD 55DEG R0.8)\n"                  // 3
-    "N10 G21 G99 G40\n"                     // 4
-    "N20 G28 U0.\n"                         // 5
-    "N30 T0101\n"                           // 6
-    "N40 G50 S2500\n"                       // 7
-    "N50 G96 S180 M03\n"                    // 8
-    "N60 G00 X44.8 Z3.\n"                   // 9
-    "N70 G01 X43.6 Z1. F0.3\n"              // 10
-    "N80 Z-10.\n"                           // 11
-    "N90 X39.6 Z-15.\n"                     // 12
-    "N100 X43.6 Z-20.\n"                    // 13
-    "N110 Z-30.\n"                          // 14
-    "N120 X47.6 Z-28.\n"                    // 15
-    "N130 G00 Z3.\n"                        // 16
-    "N140 X45.\n"                           // 17
-    "N150 G01 X41. Z1.\n"                   // 18
-    "N160 X44. Z-0.5 F0.15\n"               // 19
-    "N170 Z-10.\n"                          // 20
-    "N180 X40. Z-15.\n"                     // 21
-    "N190 X44. Z-20.\n"                     // 22
-    "N200 Z-30.\n"                          // 23
-    "N210 X47. Z-31.5\n"                    // 24
-    "N220 G00 X100. Z100.\n"                // 25
-    "N230 M30\n"                            // 26
-    "%\n";                                  // 27
+    "%\n"                        // 1
+    "O2001 (OUTSIDE PROFILE)\n"  // 2
+    "(T1 OD 55DEG R0.8)\n"       // 3
+    "N10 G21 G99 G40\n"          // 4
+    "N20 G28 U0.\n"              // 5
+    "N30 T0101\n"                // 6
+    "N40 G50 S2500\n"            // 7
+    "N50 G96 S180 M03\n"         // 8
+    "N60 G00 X44.8 Z3.\n"        // 9
+    "N70 G01 X43.6 Z1. F0.3\n"   // 10
+    "N80 Z-10.\n"                // 11
+    "N90 X39.6 Z-15.\n"          // 12
+    "N100 X43.6 Z-20.\n"         // 13
+    "N110 Z-30.\n"               // 14
+    "N120 X47.6 Z-28.\n"         // 15
+    "N130 G00 Z3.\n"             // 16
+    "N140 X45.\n"                // 17
+    "N150 G01 X41. Z1.\n"        // 18
+    "N160 X44. Z-0.5 F0.15\n"    // 19
+    "N170 Z-10.\n"               // 20
+    "N180 X40. Z-15.\n"          // 21
+    "N190 X44. Z-20.\n"          // 22
+    "N200 Z-30.\n"               // 23
+    "N210 X47. Z-31.5\n"         // 24
+    "N220 G00 X100. Z100.\n"     // 25
+    "N230 M30\n"                 // 26
+    "%\n";                       // 27
 
 TEST(StockInference, CamOutsideProfileIsASolidBarAboveWhatItTurns) {
   for (const gcode::Dialect dialect : {gcode::Dialect::Fanuc, gcode::Dialect::Haas}) {

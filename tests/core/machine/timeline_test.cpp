@@ -29,7 +29,10 @@ class RecordingSink final : public MachineSink {
   void dwell(const DwellCall& d) override { calls.push_back("DWELL " + std::to_string(d.line)); }
   void setPosition(const Vec2&) override { calls.push_back("SET"); }
   void compensation(NoseCompMode mode, double radius, int tip) override {
-    calls.push_back(std::string("COMP ") + (mode == NoseCompMode::Right ? "R" : mode == NoseCompMode::Left ? "L" : "OFF") +
+    calls.push_back(std::string("COMP ") +
+                    (mode == NoseCompMode::Right  ? "R"
+                     : mode == NoseCompMode::Left ? "L"
+                                                  : "OFF") +
                     " " + std::to_string(static_cast<int>(std::lround(radius * 10))) + " " + std::to_string(tip));
   }
   void blockDone(const StateSnapshot& s) override { calls.push_back("DONE " + std::to_string(s.line)); }
@@ -43,23 +46,41 @@ TEST(Sink, InterpreterEmitsCanonicalCallsWithProgrammedPaths) {
       gcode::parse("G98 T0101\nG42 G00 X20. Z2.\nG01 Z-10. F100.\nG04 P100\nG40 G00 X50. Z10.\n", 1);
   RecordingSink sink;
   run(program, testSetup(), {}, sink);
-  const std::vector<std::string> expected = {
-      "SET",           "DONE 1",         "COMP R 8 3",  "RAPID 2 X200/10 Z20/10", "DONE 2",
-      "LINE 3 X200/10 Z-100/10",         "DONE 3",      "DWELL 4",                "DONE 4",
-      "COMP OFF 8 3",  "RAPID 5 X500/10 Z100/10",       "DONE 5",                 "END"};
+  const std::vector<std::string> expected = {"SET",
+                                             "DONE 1",
+                                             "COMP R 8 3",
+                                             "RAPID 2 X200/10 Z20/10",
+                                             "DONE 2",
+                                             "LINE 3 X200/10 Z-100/10",
+                                             "DONE 3",
+                                             "DWELL 4",
+                                             "DONE 4",
+                                             "COMP OFF 8 3",
+                                             "RAPID 5 X500/10 Z100/10",
+                                             "DONE 5",
+                                             "END"};
   EXPECT_EQ(sink.calls, expected);
 }
 
 TEST(Sink, CompensationStageCanBeChainedInFrontOfAnySink) {
-  const gcode::Program program = gcode::parse("G98 T0101\nG42 G00 X20. Z2.\nG01 Z-10. F100.\nX30.\nG40 G00 X50. Z10.\n", 1);
+  const gcode::Program program =
+      gcode::parse("G98 T0101\nG42 G00 X20. Z2.\nG01 Z-10. F100.\nX30.\nG40 G00 X50. Z10.\n", 1);
   RecordingSink sink;
   auto comp = makeCompensationStage(sink);
   run(program, testSetup(), {}, *comp);
   // Start-up ends at the tip X20 Z1.2, the face's end at X28.4 (see the golden case
   // g42_nose_comp_right); block 2's DONE comes after its (delayed) move.
-  const std::vector<std::string> expected = {"SET",          "DONE 1",  "RAPID 2 X200/10 Z12/10", "DONE 2",
-                                             "LINE 3 X200/10 Z-100/10", "DONE 3", "LINE 4 X284/10 Z-100/10",
-                                             "DONE 4",       "RAPID 5 X500/10 Z100/10", "DONE 5", "END"};
+  const std::vector<std::string> expected = {"SET",
+                                             "DONE 1",
+                                             "RAPID 2 X200/10 Z12/10",
+                                             "DONE 2",
+                                             "LINE 3 X200/10 Z-100/10",
+                                             "DONE 3",
+                                             "LINE 4 X284/10 Z-100/10",
+                                             "DONE 4",
+                                             "RAPID 5 X500/10 Z100/10",
+                                             "DONE 5",
+                                             "END"};
   EXPECT_EQ(sink.calls, expected);
 }
 
@@ -105,7 +126,8 @@ TEST(Timeline, PositionAtAndMoveAtFollowTheMoves) {
 TEST(Timeline, TraceCsvHasTheExactHeaderAndOneRowPerMove) {
   const Timeline t = runText("G98 G00 X20. Z0.\nG02 X30. Z-5. R5. F100.\nG04 P500\n");
   const std::string csv = formatTraceCsv(t);
-  const std::string header = "kind,line,t_start,t_end,x_start,z_start,x_end,z_end,i,k,dir,feed_mm_min,rpm,level,program\n";
+  const std::string header =
+      "kind,line,t_start,t_end,x_start,z_start,x_end,z_end,i,k,dir,feed_mm_min,rpm,level,program\n";
   ASSERT_EQ(csv.rfind(header, 0), 0u);
   EXPECT_NE(csv.find("\nARC,2,2.2500,6.9624,20.0000,0.0000,30.0000,-5.0000,5.0000,0.0000,CW,100.0000,0.0000,0,\n"),
             std::string::npos)
@@ -122,18 +144,18 @@ TEST(Robustness, OddProgramsNeverCrashAndKeepFiniteTimes) {
   // Blocks a checker would reject or that are merely strange: the interpreter
   // must still stop cleanly or run with finite, continuous times.
   const char* programs[] = {
-      "G02 X10. Z300.\n",                         // arc without feed
-      "G98 G02 X0. Z300. R5. F100\n",             // zero-chord arc by R
-      "G98 G03 X0. Z300. I-5. F100\n",            // full circle by I/K
-      "G98 G02 X10. Z290. F100\n",                // arc without R or I/K
-      "G98 G01 X9999.999 F100\n",                 // far away (travel limit)
-      "G96 S9999 M03\nG98 G01 X0. Z0. F9999\n",   // huge G96 speed, through X0
-      "G04 P-5\n",                                // negative dwell
-      "G50 X-10. Z-10.\nG28 U0. W0.\n",           // G50 then the reference point
-      "G42\nG40\nG42 G41 G01 X5.\n",              // comp toggles without moves
-      "M03 M04 M05\nM86 M87\n",                   // conflicting M codes in one block
-      "T9999\n",                                  // tool 99, offset 99
-      "G20 G96 S100 M03\nG01 X1. F0.01\n",        // inch surface speed
+      "G02 X10. Z300.\n",                        // arc without feed
+      "G98 G02 X0. Z300. R5. F100\n",            // zero-chord arc by R
+      "G98 G03 X0. Z300. I-5. F100\n",           // full circle by I/K
+      "G98 G02 X10. Z290. F100\n",               // arc without R or I/K
+      "G98 G01 X9999.999 F100\n",                // far away (travel limit)
+      "G96 S9999 M03\nG98 G01 X0. Z0. F9999\n",  // huge G96 speed, through X0
+      "G04 P-5\n",                               // negative dwell
+      "G50 X-10. Z-10.\nG28 U0. W0.\n",          // G50 then the reference point
+      "G42\nG40\nG42 G41 G01 X5.\n",             // comp toggles without moves
+      "M03 M04 M05\nM86 M87\n",                  // conflicting M codes in one block
+      "T9999\n",                                 // tool 99, offset 99
+      "G20 G96 S100 M03\nG01 X1. F0.01\n",       // inch surface speed
   };
   for (const char* text : programs) {
     SCOPED_TRACE(text);

@@ -121,9 +121,9 @@ class CutSimulator {
   // The alarm that stopped the run: the cut alarm, else the timeline's own alarm.
   std::optional<Diagnostic> stoppingAlarm() const;
 
-  Vec2 toolPosition() const;            // controlled point at time()
-  int currentMove() const;              // -1 before the first move
-  const ToolShape* currentTool() const; // shape of the tool at time(), nullptr if none (loads it on first use)
+  Vec2 toolPosition() const;             // controlled point at time()
+  int currentMove() const;               // -1 before the first move
+  const ToolShape* currentTool() const;  // shape of the tool at time(), nullptr if none (loads it on first use)
   const Stock& stock() const { return stock_; }
   const Chuck& chuck() const { return chuck_; }
   double removedVolume() const { return stock_.removedVolume(); }
@@ -149,8 +149,8 @@ class CutSimulator {
   Stock stock_;
   Chuck chuck_;
   double time_ = 0.0;
-  std::size_t nextMove_ = 0;     // first move not completely cut
-  double nextMoveDone_ = 0.0;    // path parameter of nextMove_ already cut
+  std::size_t nextMove_ = 0;   // first move not completely cut
+  double nextMoveDone_ = 0.0;  // path parameter of nextMove_ already cut
   std::optional<Diagnostic> alarm_;
   std::vector<Diagnostic> warnings_;
   std::array<bool, io::kMaxStations> warnedGuess_{};
@@ -160,6 +160,5 @@ class CutSimulator {
   std::vector<CutCheckpoint> checkpoints_;
   std::size_t checkpointEvery_ = 64;
 };
-
 
 }  // namespace klueng::core::cut

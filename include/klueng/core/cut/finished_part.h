@@ -27,7 +27,7 @@ class FinishedPart {
   // right faces (column edges) repeating the end columns' values.
   const std::vector<ProfileRow>& rows() const { return rows_; }
   bool empty() const { return first_ > last_; }
-  double rightFaceZ() const;   // right edge of the rightmost column with material
+  double rightFaceZ() const;  // right edge of the rightmost column with material
   double leftFaceZ() const;
   // Interpolated linearly between column centres; nullopt outside the part or
   // where nothing is left.

@@ -32,10 +32,10 @@ namespace klueng::core::cut {
 constexpr int kMaxGuessCandidates = 3;
 
 struct GuessFit {
-  machine::MachineSetup setup;         // the setup the run used (replacements still marked guessed)
-  std::vector<Diagnostic> notes;       // I413/I414, one per replaced station, in the order they were found
-  std::unique_ptr<CutSimulator> cut;   // the run with `setup`, cut to its end or its alarm
-  int runs = 0;                        // whole cuts made (1 when nothing was tried)
+  machine::MachineSetup setup;        // the setup the run used (replacements still marked guessed)
+  std::vector<Diagnostic> notes;      // I413/I414, one per replaced station, in the order they were found
+  std::unique_ptr<CutSimulator> cut;  // the run with `setup`, cut to its end or its alarm
+  int runs = 0;                       // whole cuts made (1 when nothing was tried)
 };
 
 // `timeline` must outlive the result (its cut points to it).

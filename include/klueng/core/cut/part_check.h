@@ -37,13 +37,13 @@ enum class DefectKind { Gouge, Leftover };
 struct PartDefect {
   DefectKind kind = DefectKind::Gouge;
   FeatureSide side = FeatureSide::Outside;
-  double zLeft = 0.0;    // extent along Z (column edges)
+  double zLeft = 0.0;  // extent along Z (column edges)
   double zRight = 0.0;
-  double depth = 0.0;    // mm, radial: the largest along the extent
-  double z = 0.0;        // where it is largest
-  double diameter = 0.0; // the described part's Ø there
-  int line = 0;          // the block that caused it: the real cut that removed the
-  int file = 0;          // material (gouge), the ideal cut that should have (leftover)
+  double depth = 0.0;     // mm, radial: the largest along the extent
+  double z = 0.0;         // where it is largest
+  double diameter = 0.0;  // the described part's Ø there
+  int line = 0;           // the block that caused it: the real cut that removed the
+  int file = 0;           // material (gouge), the ideal cut that should have (leftover)
 };
 
 struct PartCheckOptions {
@@ -53,11 +53,11 @@ struct PartCheckOptions {
 };
 
 struct PartCheck {
-  std::vector<PartDefect> defects;          // sorted by Z, right to left
-  std::optional<Diagnostic> stoppedBy;      // the alarm the run stopped on: what was cut up to it is checked
-  bool nothingCut = false;                  // no move cut the stock (no moves, only rapids, empty stock)
-  Stock cut;                                // the real cut (up to the alarm): the finished part
-  double largestGouge() const;              // mm, 0 when none
+  std::vector<PartDefect> defects;      // sorted by Z, right to left
+  std::optional<Diagnostic> stoppedBy;  // the alarm the run stopped on: what was cut up to it is checked
+  bool nothingCut = false;              // no move cut the stock (no moves, only rapids, empty stock)
+  Stock cut;                            // the real cut (up to the alarm): the finished part
+  double largestGouge() const;          // mm, 0 when none
   double largestLeftover() const;
 };
 

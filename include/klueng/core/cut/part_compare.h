@@ -13,7 +13,7 @@ struct PartDeviation {
   double leftoverZ = 0.0;  // where
   double gouge = 0.0;      // mm on the diameter: material cut away inside the reference part (largest)
   double gougeZ = 0.0;
-  bool sameBar = true;     // both parts come from the same bar (diameter, length, bore)
+  bool sameBar = true;  // both parts come from the same bar (diameter, length, bore)
 };
 
 PartDeviation compareParts(const Stock& student, const Stock& reference, double zTolerance = 0.05);

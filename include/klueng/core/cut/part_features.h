@@ -24,7 +24,7 @@ enum class FeatureSide { Outside, Inside };
 struct PartFeature {
   FeatureKind kind = FeatureKind::Cylinder;
   FeatureSide side = FeatureSide::Outside;
-  double zLeft = 0.0;   // extent along Z, zLeft <= zRight (a face: zLeft == zRight)
+  double zLeft = 0.0;  // extent along Z, zLeft <= zRight (a face: zLeft == zRight)
   double zRight = 0.0;
   double diameterLeft = 0.0;   // Ø of the profile at zLeft / zRight (a face: the
   double diameterRight = 0.0;  // larger and the smaller Ø, left = larger)

@@ -15,7 +15,7 @@ inline constexpr double kPipRadius = 1.0;  // mm
 inline constexpr double kNoseFillet = 1.6;  // mm
 
 struct PartSpan {
-  double zLeft = 0.0;    // the part's ends (column edges); zLeft < zRight when the stock holds material
+  double zLeft = 0.0;  // the part's ends (column edges); zLeft < zRight when the stock holds material
   double zRight = 0.0;
   bool parted = false;       // a parting gap lies left of the part
   bool stubLeftOut = false;  // untouched bar left of the part was left out

@@ -62,8 +62,8 @@ class Stock {
     return overlapWithMaterial(i, lo, hi);
   }
 
-  double volume() const;          // mm^3 of material left
-  double initialVolume() const;   // mm^3 of the bar
+  double volume() const;                             // mm^3 of material left
+  double initialVolume() const;                      // mm^3 of the bar
   double removedVolume() const { return removed_; }  // sum of what remove() took
 
  private:
@@ -85,12 +85,12 @@ class Stock {
 
 // The chuck (SPEC 1 ext): jaws grip the stock's left `grip` mm; the body sits left of the bar.
 struct Chuck {
-  double stockLength = 0.0;   // mm
-  double stockRadius = 0.0;   // mm
-  double grip = 15.0;         // mm of bar inside the jaws
+  double stockLength = 0.0;         // mm
+  double stockRadius = 0.0;         // mm
+  double grip = 15.0;               // mm of bar inside the jaws
   double spindleBoreRadius = 20.0;  // the body's through-hole: nothing there to hit
-  double jawHeight = 20.0;    // radial size of the jaws outside the bar
-  double bodyWidth = 40.0;    // Z size of the chuck body left of the bar
+  double jawHeight = 20.0;          // radial size of the jaws outside the bar
+  double bodyWidth = 40.0;          // Z size of the chuck body left of the bar
   // Axis-aligned boxes in (z, x radius): the jaws, then the body (a ring
   // around the spindle bore).
   double jawZMin() const { return -stockLength; }

@@ -24,7 +24,7 @@
 
 namespace klueng::core::cut {
 
-constexpr double kPixelsPerMm = io::kSeedPixelsPerMm;  // the seed's resolution (SPEC 11)
+constexpr double kPixelsPerMm = io::kSeedPixelsPerMm;     // the seed's resolution (SPEC 11)
 constexpr int kMaxToolPixels = io::kMaxToolBitmapPixels;  // a tool bitmap is at most 500 mm each way (at 2 px/mm)
 // The pixel limit at a bitmap's own resolution: 500 mm each way.
 constexpr int maxToolPixels(double pixelsPerMm) { return io::maxToolBitmapPixels(pixelsPerMm); }
@@ -49,10 +49,10 @@ struct Trapezoid {
 struct ToolShape {
   double noseRadius = 0.0;
   int tip = 0;
-  Vec2 noseCentre = Vec2::Zero();   // relative to the controlled point
-  std::vector<Trapezoid> cutting;   // cutting-edge region minus the nose square
-  std::vector<Box> holder;          // black pixels
-  Box bounds;                       // of everything, including the nose circle
+  Vec2 noseCentre = Vec2::Zero();  // relative to the controlled point
+  std::vector<Trapezoid> cutting;  // cutting-edge region minus the nose square
+  std::vector<Box> holder;         // black pixels
+  Box bounds;                      // of everything, including the nose circle
   // For drawing: the bitmap and the controlled point in pixel units
   // (x to the right from the image's left edge, y down from its top edge).
   io::RgbImage image;
@@ -66,8 +66,8 @@ struct ToolShape {
 // kMaxToolPixels; diagnostics name the file.
 // pixelsPerMm: the bitmap's resolution (2 for the seed's plain bitmaps; a
 // library tool's own, e.g. 10). Limit: maxToolPixels(pixelsPerMm).
-io::ReadResult<ToolShape> makeToolShape(const io::RgbImage& image, const std::string& fileName,
-                                        double noseRadius, int tip, double pixelsPerMm = kPixelsPerMm);
+io::ReadResult<ToolShape> makeToolShape(const io::RgbImage& image, const std::string& fileName, double noseRadius,
+                                        int tip, double pixelsPerMm = kPixelsPerMm);
 // readImage (F1xx for missing / malformed / oversized files) + makeToolShape.
 io::ReadResult<ToolShape> loadToolShape(const std::string& path, double noseRadius, int tip,
                                         double pixelsPerMm = kPixelsPerMm);

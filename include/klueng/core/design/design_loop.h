@@ -23,11 +23,11 @@ inline constexpr double kDrawingTolerance = 0.01;  // mm on diameters and radii
 
 struct DesignLoop {
   std::optional<GeneratedProgram> program;
-  std::vector<Diagnostic> refused;     // why the generator wrote nothing (E5xx)
-  std::vector<Diagnostic> problems;    // the program's errors and the run's alarm (should never happen)
-  std::unique_ptr<cut::Stock> cut;     // the part as cut (null when nothing ran)
-  cut::PartFeatures features;          // of the cut part
-  std::vector<Diagnostic> findings;    // W530 per drawing feature not on the cut part; gouges and leftovers
+  std::vector<Diagnostic> refused;   // why the generator wrote nothing (E5xx)
+  std::vector<Diagnostic> problems;  // the program's errors and the run's alarm (should never happen)
+  std::unique_ptr<cut::Stock> cut;   // the part as cut (null when nothing ran)
+  cut::PartFeatures features;        // of the cut part
+  std::vector<Diagnostic> findings;  // W530 per drawing feature not on the cut part; gouges and leftovers
   bool matches() const { return program && problems.empty() && findings.empty() && cut; }
 };
 

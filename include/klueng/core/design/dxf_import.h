@@ -23,8 +23,8 @@
 namespace klueng::core::design {
 
 struct DxfImportOptions {
-  std::string layer;          // empty: the only layer with lines and arcs
-  double chuckGrip = 15.0;    // mm the jaws hold, for the bar's length
+  std::string layer;        // empty: the only layer with lines and arcs
+  double chuckGrip = 15.0;  // mm the jaws hold, for the bar's length
   std::string material = "steel";
 };
 

@@ -10,8 +10,8 @@
 namespace klueng::core::gcode {
 
 struct DialectFit {
-  Dialect dialect;    // the dialect that checks the program without errors
-  int blocks = 0;     // blocks with errors in the current dialect that are clean there
+  Dialect dialect;  // the dialect that checks the program without errors
+  int blocks = 0;   // blocks with errors in the current dialect that are clean there
   // Note I102 ("13 blocks with errors are Haas ST (NGC) forms: choose ..."),
   // severity Note (never an error), at the first such block.
   Diagnostic note;

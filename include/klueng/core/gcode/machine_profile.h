@@ -45,8 +45,8 @@ enum class CycleForm : std::uint8_t {
 
 // The unit of G04 P.
 enum class DwellPUnit : std::uint8_t {
-  Milliseconds,             // classic, Fanuc: P is an integer in ms (P500 = 0.5 s)
-  SecondsWithPointElseMs,   // Haas: P1.5 = 1.5 s, P1500 = 1.5 s (no point: ms)
+  Milliseconds,            // classic, Fanuc: P is an integer in ms (P500 = 0.5 s)
+  SecondsWithPointElseMs,  // Haas: P1.5 = 1.5 s, P1500 = 1.5 s (no point: ms)
 };
 
 // What a G28 without axis words does.
@@ -65,13 +65,13 @@ enum class DrillR : std::uint8_t {
 // Machine settings the cycles use where a program leaves a value out (Haas
 // settings, Fanuc parameters), in inch and mm as the control keeps them.
 struct CycleSettings {
-  double roughDepthInch, roughDepthMm;        // G71/G72 depth per pass without D (Haas setting 72)
-  double roughRetractInch, roughRetractMm;    // G71/G72 retract after a pass (Haas setting 73)
-  double peckClearInch, peckClearMm;          // G74/G75 chip-breaking retract, G83 clearance above the
-                                              // last peck (Haas setting 22; Fanuc parameter 5115)
-  double threadMinCutInch, threadMinCutMm;    // G76 one-block: least depth of a pass (Haas setting 99)
-  double threadFinishInch, threadFinishMm;    // G76 one-block: depth of the last pass (Haas setting 86)
-  double threadChamferLeads;                  // G76 one-block: pull-out length in leads (Haas setting 95)
+  double roughDepthInch, roughDepthMm;      // G71/G72 depth per pass without D (Haas setting 72)
+  double roughRetractInch, roughRetractMm;  // G71/G72 retract after a pass (Haas setting 73)
+  double peckClearInch, peckClearMm;        // G74/G75 chip-breaking retract, G83 clearance above the
+                                            // last peck (Haas setting 22; Fanuc parameter 5115)
+  double threadMinCutInch, threadMinCutMm;  // G76 one-block: least depth of a pass (Haas setting 99)
+  double threadFinishInch, threadFinishMm;  // G76 one-block: depth of the last pass (Haas setting 86)
+  double threadChamferLeads;                // G76 one-block: pull-out length in leads (Haas setting 95)
   DrillR drillR;
   // G71/G72: profile pieces after the last cut that lie wholly at or beyond the
   // start point's depth level (outside the stock: `X1.6` back to the start's X,
@@ -86,11 +86,11 @@ struct CycleSettings {
 
 // Program flow (issue 9): subprograms and custom macro B.
 struct FlowSettings {
-  bool macroB;                // #variables, expressions, IF/WHILE/GOTO, G65/G66
-  bool packedRepeats;         // M98 P31000 = 3 x O1000 (Fanuc); Haas reads P as the program number
-  int maxSubprogramNesting;   // M98/M97 levels below the main program
-  int maxMacroNesting;        // G65/G66 levels
-  bool programsInOneFile;     // an O block alone may start a subprogram anywhere in a file (else first block only)
+  bool macroB;               // #variables, expressions, IF/WHILE/GOTO, G65/G66
+  bool packedRepeats;        // M98 P31000 = 3 x O1000 (Fanuc); Haas reads P as the program number
+  int maxSubprogramNesting;  // M98/M97 levels below the main program
+  int maxMacroNesting;       // G65/G66 levels
+  bool programsInOneFile;    // an O block alone may start a subprogram anywhere in a file (else first block only)
   // ,C / ,R on G01: a G04 dwell may come between the corner's two moves (Haas
   // lathe manual, "Corner rounding and chamfering"); Fanuc wants the move next.
   bool dwellBeforeCornerMove;
@@ -100,20 +100,20 @@ struct FlowSettings {
 };
 
 struct MachineProfile {
-  Dialect dialect;           // its place in the registry
-  Dialect family;            // the code table's column: Fanuc, Haas or Classic
-  GcodeSystem system;        // the G numbers: system A, B or C
-  std::string_view id;       // "fanuc", "haas", "classic", "romi-gl240m" (CLI, settings, job header)
-  std::string_view nameEn;   // "Fanuc 0i-TF"
+  Dialect dialect;          // its place in the registry
+  Dialect family;           // the code table's column: Fanuc, Haas or Classic
+  GcodeSystem system;       // the G numbers: system A, B or C
+  std::string_view id;      // "fanuc", "haas", "classic", "romi-gl240m" (CLI, settings, job header)
+  std::string_view nameEn;  // "Fanuc 0i-TF"
   std::string_view nameTh;
-  std::string_view file;     // the file it was read from; "" for a shipped one built in
-  std::string_view text;     // the file's text (its machine.cfg keys are read by machine/machine_files.h)
+  std::string_view file;  // the file it was read from; "" for a shipped one built in
+  std::string_view text;  // the file's text (its machine.cfg keys are read by machine/machine_files.h)
   // Address letters a block may hold (SPEC 5 rule 1 and its extensions).
   std::string_view letters;
   // Program numbers: O (or ':' where colonProgramNumber) with 1..programNumberMax.
   int programNumberMax;
   bool colonProgramNumber;
-  int sequenceNumberMax;     // N 1..max
+  int sequenceNumberMax;  // N 1..max
   // Word formats: decimals of the least input increment, mm and inch.
   int decimalsMm;
   int decimalsInch;
@@ -123,12 +123,12 @@ struct MachineProfile {
   double minPositiveMm;
   double minPositiveInch;
   ExtraDecimals extraDecimals;
-  InputUnits powerOnUnits;   // before any G20/G21 (overridden by --units / the GUI setting)
+  InputUnits powerOnUnits;  // before any G20/G21 (overridden by --units / the GUI setting)
   // T words: tool number and offset number. Digits: a T word has minToolDigits..4
   // digits (T101 = tool 01 offset 01 when 3 are allowed).
   int minToolDigits;
-  int maxToolStation;        // 0 = the machine's turret size (machine.cfg turret_stations)
-  int maxOffset;             // offset rows (16 classic, 64 others)
+  int maxToolStation;  // 0 = the machine's turret size (machine.cfg turret_stations)
+  int maxOffset;       // offset rows (16 classic, 64 others)
   // T0000 (tool 00, offset 00): the turret stays where it is and the offset is
   // cancelled, as a Fanuc or Haas turret reads T__00 (true); classic: E117.
   bool toolZeroKeepsTurret;
@@ -141,11 +141,11 @@ struct MachineProfile {
   // Group-00 codes that may share a block with G00/G01 (G28, G30, G53), as G numbers.
   std::span<const int> oneShotsWithMotion;
   CycleForm cycleForm;
-  bool unknownMIsWarning;    // an M code 0-99 outside the table: W101 (true) or E115 (false)
-  bool highMIsWarning;       // an M code from 100 up (machine options: live tooling...): W101 or E115
-  bool blanksInWords;        // "X 38" reads as X38 (true, as a Fanuc), or E135 (false)
-  bool commentToLineEnd;     // an unclosed '(' runs to the line end: W108 (true) or E105 (false)
-  CycleSettings cycles;      // defaults of the cycles (one-block forms, drilling)
+  bool unknownMIsWarning;  // an M code 0-99 outside the table: W101 (true) or E115 (false)
+  bool highMIsWarning;     // an M code from 100 up (machine options: live tooling...): W101 or E115
+  bool blanksInWords;      // "X 38" reads as X38 (true, as a Fanuc), or E135 (false)
+  bool commentToLineEnd;   // an unclosed '(' runs to the line end: W108 (true) or E105 (false)
+  CycleSettings cycles;    // defaults of the cycles (one-block forms, drilling)
   FlowSettings flow;
   // The M codes the machine accepts, from its family's rows; empty = all of them.
   std::span<const int> mCodes;

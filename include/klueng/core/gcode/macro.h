@@ -24,8 +24,8 @@ struct MacroValue {
 // expression is ASCII). On error, code/args/errorColumn say what went wrong.
 struct ExprReadResult {
   bool ok = false;
-  std::size_t end = 0;        // bytes consumed
-  const char* code = nullptr; // E121.. (diagnostic_codes.h)
+  std::size_t end = 0;         // bytes consumed
+  const char* code = nullptr;  // E121.. (diagnostic_codes.h)
   std::vector<std::string> args;
   int errorColumn = 0;
 };
@@ -49,7 +49,7 @@ class MacroVariables {
 struct EvalResult {
   bool ok = true;
   MacroValue value;
-  const char* code = nullptr;        // run-time alarm code (A13x)
+  const char* code = nullptr;  // run-time alarm code (A13x)
   std::vector<std::string> args;
 };
 

@@ -13,19 +13,19 @@ namespace klueng::core::gcode {
 struct Word {
   // (Members ordered to avoid padding: a big program holds millions of words.)
   // (48 bytes: the flags and the digit count share the first eight with expr.)
-  char letter = 0;          // upper-case address letter, 'A'..'Z'
+  char letter = 0;  // upper-case address letter, 'A'..'Z'
   bool hasDecimalPoint : 1 = false;
-  bool colon : 1 = false;   // an ISO ':' program number (":0100"), stored as letter 'O'
-  bool comma : 1 = false;   // a Fanuc ',C' ',R' ',A' word (chamfer, corner radius, angle) on G01
-  bool blanks : 1 = false;  // written with blanks inside ("X 38"): a Fanuc skips them, classic refuses
+  bool colon : 1 = false;     // an ISO ':' program number (":0100"), stored as letter 'O'
+  bool comma : 1 = false;     // a Fanuc ',C' ',R' ',A' word (chamfer, corner radius, angle) on G01
+  bool blanks : 1 = false;    // written with blanks inside ("X 38"): a Fanuc skips them, classic refuses
   std::int16_t decimals = 0;  // digits after the decimal point (a line is at most 4096 characters)
-  int expr = -1;            // macro B: index into Program::expressions when the value is an
-                            // expression (X#101, Z-[#1+2.]); value is 0 then and number holds
-                            // the expression as written ("#101", "-[#1+2.]")
-  double value = 0.0;       // numeric value as written (mm or inch, diameters for X/U)
-  WordNumber number;        // the number exactly as written ("01", "-.5", "25.")
-                            // (an O word written ':0100' has colon set and number "0100")
-  SourceRange range;        // covers letter and number
+  int expr = -1;              // macro B: index into Program::expressions when the value is an
+                              // expression (X#101, Z-[#1+2.]); value is 0 then and number holds
+                              // the expression as written ("#101", "-[#1+2.]")
+  double value = 0.0;         // numeric value as written (mm or inch, diameters for X/U)
+  WordNumber number;          // the number exactly as written ("01", "-.5", "25.")
+                              // (an O word written ':0100' has colon set and number "0100")
+  SourceRange range;          // covers letter and number
 
   // Integer code of a G/M/T/N/O word ("G01" -> 1). Only meaningful when
   // !hasDecimalPoint; G-code numbers like "G1.5" are reported by the checker.
@@ -52,32 +52,61 @@ enum class StatementKind : std::uint8_t {
 
 struct Statement {
   StatementKind kind = StatementKind::None;
-  bool then = false;     // IF ... THEN assignment (else IF ... GOTO)
-  int loop = 0;          // DO m / END m identifier (1-3)
-  int condition = -1;    // expression index (Program::expressions)
-  int target = -1;       // expression index of the variable number: #[#1+100] = ...
-  int value = -1;        // expression index of the value or the GOTO target
-  SourceRange range;     // the keyword (or the '#' of an assignment)
+  bool then = false;   // IF ... THEN assignment (else IF ... GOTO)
+  int loop = 0;        // DO m / END m identifier (1-3)
+  int condition = -1;  // expression index (Program::expressions)
+  int target = -1;     // expression index of the variable number: #[#1+100] = ...
+  int value = -1;      // expression index of the value or the GOTO target
+  SourceRange range;   // the keyword (or the '#' of an assignment)
 };
 
 // Macro expressions, compiled to postfix when the line is read.
 enum class ExprOp : std::uint8_t {
-  Constant,   // push value
-  Variable,   // pop n, push #n
-  Negate, Plus,
-  Add, Sub, Mul, Div, Mod, And, Or, Xor,
-  Eq, Ne, Gt, Ge, Lt, Le,
-  Sin, Cos, Tan, Asin, Acos, Atan, Atan2, Sqrt, Abs, Round, Fix, Fup, Ln, Exp, Pow, Bin, Bcd,
+  Constant,  // push value
+  Variable,  // pop n, push #n
+  Negate,
+  Plus,
+  Add,
+  Sub,
+  Mul,
+  Div,
+  Mod,
+  And,
+  Or,
+  Xor,
+  Eq,
+  Ne,
+  Gt,
+  Ge,
+  Lt,
+  Le,
+  Sin,
+  Cos,
+  Tan,
+  Asin,
+  Acos,
+  Atan,
+  Atan2,
+  Sqrt,
+  Abs,
+  Round,
+  Fix,
+  Fup,
+  Ln,
+  Exp,
+  Pow,
+  Bin,
+  Bcd,
 };
 
 struct ExprToken {
   ExprOp op = ExprOp::Constant;
-  double value = 0.0;    // Constant only
+  double value = 0.0;  // Constant only
 };
 
 struct Expression {
-  std::vector<ExprToken> code;   // postfix
-  SourceRange range;             // the expression as written
+  std::vector<ExprToken> code;  // postfix
+  SourceRange range;            // the expression as written
 };
 
 struct Block {
@@ -154,11 +183,11 @@ struct Block {
 };
 
 struct Program {
-  std::vector<Block> blocks;    // only lines with words; blank, comment-only and % lines are dropped
+  std::vector<Block> blocks;                   // only lines with words; blank, comment-only and % lines are dropped
   std::vector<Diagnostic> lexicalDiagnostics;  // errors found while reading the text
-  int firstLine = 1;            // file line of the first G-code line
-  int lineCount = 0;            // number of G-code lines read
-  std::vector<Expression> expressions;  // macro expressions of every block (Word::expr, Statement)
+  int firstLine = 1;                           // file line of the first G-code line
+  int lineCount = 0;                           // number of G-code lines read
+  std::vector<Expression> expressions;         // macro expressions of every block (Word::expr, Statement)
   // Subprogram files appended after the program's own blocks (io/subprogram_files.h):
   // files[0] is the program itself (empty name); files[i] the path of file i.
   std::vector<std::string> files{std::string()};
@@ -166,8 +195,8 @@ struct Program {
   // folder, a pipe, a device), so that the call says so (E416) instead of "not
   // in its folder" (E404).
   struct NotAFile {
-    int number = 0;     // the O number called
-    std::string name;   // the entry's name in the folder
+    int number = 0;    // the O number called
+    std::string name;  // the entry's name in the folder
     bool folder = false;
   };
   std::vector<NotAFile> notProgramFiles;

@@ -15,8 +15,8 @@
 namespace klueng::core::gcode {
 
 struct ProgramSection {
-  int number = 0;   // O number (0 = the unnumbered start of the main file)
-  int first = 0;    // blocks [first, end): the O block is `first` when there is one
+  int number = 0;  // O number (0 = the unnumbered start of the main file)
+  int first = 0;   // blocks [first, end): the O block is `first` when there is one
   int end = 0;
   int file = 0;
 };
@@ -48,7 +48,7 @@ class ProgramIndex {
 // Fanuc packs the repeats into P: M98 P31000 = 3 x O1000 (profile
 // packedSubprogramRepeats); L, when given, is the repeat count.
 struct CallTarget {
-  int number = 0;    // O number (M98, G65, G66) or N number (M97)
+  int number = 0;  // O number (M98, G65, G66) or N number (M97)
   int repeats = 1;
 };
 CallTarget callTarget(double p, std::optional<double> l, bool packedRepeats);

@@ -74,7 +74,9 @@ class WordNumber {
   const char* end() const { return data() + size(); }
   std::size_t find(char c, std::size_t from = 0) const { return view().find(c, from); }
   std::size_t find(std::string_view s, std::size_t from = 0) const { return view().find(s, from); }
-  std::string substr(std::size_t from, std::size_t count = npos) const { return std::string(view().substr(from, count)); }
+  std::string substr(std::size_t from, std::size_t count = npos) const {
+    return std::string(view().substr(from, count));
+  }
 
   friend bool operator==(const WordNumber& a, const WordNumber& b) { return a.view() == b.view(); }
   friend bool operator==(const WordNumber& a, std::string_view b) { return a.view() == b; }
@@ -87,7 +89,7 @@ class WordNumber {
   friend std::ostream& operator<<(std::ostream& os, const WordNumber& n);
 
  private:
-  static constexpr std::size_t kTag = 15;            // inline: the length; 0xFF: on the heap
+  static constexpr std::size_t kTag = 15;  // inline: the length; 0xFF: on the heap
   static constexpr unsigned char kHeapTag = 0xFF;
   static constexpr std::size_t kInlineCapacity = 15;
 
@@ -102,9 +104,7 @@ class WordNumber {
     std::memcpy(&n, buf_ + sizeof(char*), sizeof n);
     return n;
   }
-  void clearInline() {
-    std::memset(buf_, 0, sizeof buf_);
-  }
+  void clearInline() { std::memset(buf_, 0, sizeof buf_); }
   void init(std::string_view text) {
     clearInline();
     if (text.size() <= kInlineCapacity) {

@@ -39,13 +39,15 @@ struct ToolTable {
   std::array<std::string, kMaxStations> libraryPath;
   std::array<double, kMaxStations> pixelsPerMm = filledPixelsPerMm();
   int stations = kDefaultTurretStations;  // turret size the table was read for
-  std::string folder;  // folder of tools.cfg, to resolve relative names
+  std::string folder;                     // folder of tools.cfg, to resolve relative names
   // Bitmaps that exist but do not decode (machine/setup_files.h sets them): no tool there.
   std::array<bool, kMaxStations> bitmapUnreadable{};
   // Tools Klueng guessed from a program (machine/tool_inference.h), not chosen by
   // the user: their holders touching the stock or chuck are warnings, not alarms.
   std::array<bool, kMaxStations> guessed{};
-  bool isGuess(int tool) const { return tool >= 1 && tool <= kMaxStations && guessed[static_cast<std::size_t>(tool - 1)]; }
+  bool isGuess(int tool) const {
+    return tool >= 1 && tool <= kMaxStations && guessed[static_cast<std::size_t>(tool - 1)];
+  }
   std::string bitmapPath(int tool) const;  // resolved path, empty if none
   double pixelsPerMmOf(int tool) const;    // 2 for a plain bitmap
   std::string libraryId(int tool) const;   // the ID of a `library:ID` line, else empty
@@ -59,32 +61,32 @@ struct ToolTable {
 };
 
 struct Offset {
-  double x = 0.0;   // X offset, diameter
+  double x = 0.0;  // X offset, diameter
   double z = 0.0;
-  double r = 0.0;   // nose radius
-  int tip = 0;      // imaginary tip 0..9
+  double r = 0.0;  // nose radius
+  int tip = 0;     // imaginary tip 0..9
 };
 
 struct OffsetTable {
-  std::array<Offset, kOffsetCount> offsets;  // [0] = offset 01
+  std::array<Offset, kOffsetCount> offsets;                              // [0] = offset 01
   const Offset& at(int number) const { return offsets.at(number - 1); }  // number 1..64
   Offset& at(int number) { return offsets.at(number - 1); }
 };
 
 struct MachineConfig {
-  double rapidX = 4000.0;        // mm/min (radial axis; diameter values move at this rate in radius)
-  double rapidZ = 8000.0;        // mm/min
+  double rapidX = 4000.0;  // mm/min (radial axis; diameter values move at this rate in radius)
+  double rapidZ = 8000.0;  // mm/min
   // Axis accelerations, mm/s² (X radial): every move speeds up and slows down
   // at these as the control plans it (issue 11). 0 = off: moves start and stop
   // at once, the time is length / feed as the textbooks compute it.
   double accelX = 0.0;
   double accelZ = 0.0;
   double maxSpindleRpm = 3000.0;
-  double referenceX = 0.0;       // diameter, work coordinates at start
+  double referenceX = 0.0;  // diameter, work coordinates at start
   double referenceZ = 300.0;
-  double startX = 0.0;           // tool start position (diameter)
+  double startX = 0.0;  // tool start position (diameter)
   double startZ = 300.0;
-  double travelXMin = -1000.0;   // diameter
+  double travelXMin = -1000.0;  // diameter
   double travelXMax = 1000.0;
   double travelZMin = -1000.0;
   double travelZMax = 1000.0;
@@ -94,7 +96,7 @@ struct MachineConfig {
   // bar passing the part's left end inside it is not a chuck collision. 40 mm is
   // the through-hole of a 160 mm three-jaw chuck on a school lathe; 0 = none.
   double spindleBore = 40.0;
-  int turretStations = 12;       // tool stations on the turret, 1..24
+  int turretStations = 12;  // tool stations on the turret, 1..24
   // The tools work beyond the centre line (programmed in negative X: rear tool
   // posts, many hobby and Russian lathes): the cut mirrors them onto the front,
   // where the same bar is cut the same way (a plain program's run decides it).

@@ -13,10 +13,10 @@ namespace klueng::core::io {
 
 // What a tool is for. Order and ids are part of the library format.
 enum class ToolKind {
-  Unknown,          // a user's own bitmap we cannot tell
-  Turning,          // outside turning (roughing, finishing, profiling)
-  ThreadingOd,      // outside threading
-  ThreadingId,      // inside threading
+  Unknown,      // a user's own bitmap we cannot tell
+  Turning,      // outside turning (roughing, finishing, profiling)
+  ThreadingOd,  // outside threading
+  ThreadingId,  // inside threading
   Grooving,
   Parting,
   CentreDrill,
@@ -29,16 +29,16 @@ std::string_view toolKindId(ToolKind kind);
 bool parseToolKindId(std::string_view id, ToolKind& out);
 
 struct LibraryTool {
-  std::string id;          // "cnmg-80-r08"
+  std::string id;  // "cnmg-80-r08"
   ToolKind kind = ToolKind::Unknown;
   double pixelsPerMm = 10.0;
-  double noseRadius = 0.0; // mm
-  int tip = 0;             // imaginary tip 0..9 (SPEC 9)
-  double size = 0.0;       // drill diameter / blade width, mm; 0 = not applicable
-  std::string bitmap;      // file name, relative to the library's folder
+  double noseRadius = 0.0;  // mm
+  int tip = 0;              // imaginary tip 0..9 (SPEC 9)
+  double size = 0.0;        // drill diameter / blade width, mm; 0 = not applicable
+  std::string bitmap;       // file name, relative to the library's folder
   std::string nameEn;
   std::string nameTh;
-  int line = 0;            // its line in library.cfg, for diagnostics
+  int line = 0;  // its line in library.cfg, for diagnostics
 };
 
 struct ToolLibrary {
@@ -54,8 +54,7 @@ struct ToolLibrary {
 // Lines: `id | kind | px_per_mm | nose_r | tip | size | bitmap | English name | Thai name`;
 // blank lines and lines starting with '#' are skipped. Errors (F160..F166)
 // carry file:line:column; a bad line is left out, the rest is kept.
-ReadResult<ToolLibrary> parseToolLibrary(std::string_view text, const std::string& folder,
-                                         const std::string& fileName);
+ReadResult<ToolLibrary> parseToolLibrary(std::string_view text, const std::string& folder, const std::string& fileName);
 // Also reports bitmaps that do not exist (F167).
 ReadResult<ToolLibrary> readToolLibrary(const std::string& path);
 // The shipped library (resources/tools/library/library.cfg under

@@ -39,6 +39,7 @@ std::string explainLineText(std::string_view lineText, int fileLine, const State
                             Lang lang, bool lengthsInIncrements = false);
 
 // The same without a run: what the words alone say (no rpm, feed mode unknown).
-std::string explainWords(const gcode::Block& block, gcode::Dialect dialect, Lang lang, std::string_view statementText = {});
+std::string explainWords(const gcode::Block& block, gcode::Dialect dialect, Lang lang,
+                         std::string_view statementText = {});
 
 }  // namespace klueng::core::machine

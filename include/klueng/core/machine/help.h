@@ -21,7 +21,8 @@ std::vector<std::pair<std::string, std::string>> workedExampleFiles(char letter,
 
 // The moves a code's worked example makes (for a picture of them): the example
 // run with the default machine; empty when the dialect has no such code.
-std::vector<Segment> workedExamplePath(char letter, int number, gcode::Dialect dialect, std::vector<bool>* rapid = nullptr);
+std::vector<Segment> workedExamplePath(char letter, int number, gcode::Dialect dialect,
+                                       std::vector<bool>* rapid = nullptr);
 
 struct HelpHit {
   char letter = 'G';

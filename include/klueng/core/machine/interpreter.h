@@ -13,9 +13,9 @@ namespace klueng::core::machine {
 
 struct RunOptions {
   gcode::Dialect dialect = gcode::Dialect::Fanuc;
-  bool optionalStop = false;   // M01 stops when on
-  bool blockSkip = false;      // '/' blocks skipped when on
-  bool stopAtM00 = false;      // false: a headless run records the stop and continues
+  bool optionalStop = false;  // M01 stops when on
+  bool blockSkip = false;     // '/' blocks skipped when on
+  bool stopAtM00 = false;     // false: a headless run records the stop and continues
   // Units before any G20/G21 (CLI --units, the GUI setting); nullopt = the dialect's.
   std::optional<gcode::InputUnits> powerOnUnits;
   // Custom macro B: the persistent common variables #500-#999 (io/macro_variables.h

@@ -16,18 +16,18 @@ enum class RunCommand { Go, Step, StepOver, StepOut };
 
 struct StopRequest {
   RunCommand command = RunCommand::Go;
-  int done = -1;                   // the last snapshot (block) finished; -1 = none yet
-  double endTime = 0.0;            // where the run ends: the cycle time, or earlier at a cut alarm
-  bool optionalStop = false;       // the M01 switch
+  int done = -1;                               // the last snapshot (block) finished; -1 = none yet
+  double endTime = 0.0;                        // where the run ends: the cycle time, or earlier at a cut alarm
+  bool optionalStop = false;                   // the M01 switch
   const std::set<int>* breakpoints = nullptr;  // file lines of the program itself (file 0)
-  int runToLine = 0;               // Run to cursor: stop before the first block at or after it (0 = none)
+  int runToLine = 0;                           // Run to cursor: stop before the first block at or after it (0 = none)
 };
 
 struct StopTarget {
-  int snapshot = -1;          // the last block done when the run stops
-  double time = 0.0;          // when that is
-  bool isEnd = true;          // the run ends there (Finished, or the timeline's own alarm)
-  bool beforeNext = false;    // stopped before the next block (a breakpoint, Run to cursor)
+  int snapshot = -1;        // the last block done when the run stops
+  double time = 0.0;        // when that is
+  bool isEnd = true;        // the run ends there (Finished, or the timeline's own alarm)
+  bool beforeNext = false;  // stopped before the next block (a breakpoint, Run to cursor)
 };
 
 // Go: the end, or the first breakpoint / Run-to-cursor line (before that block; the block the
@@ -55,8 +55,8 @@ struct Pose {
   double programmedFeed = 0.0;
   FeedMode feedMode = FeedMode::PerRev;
   double rpm = 0.0;
-  double feedMmPerMin = 0.0;     // of the move under way; 0 between moves
-  bool hasState = false;         // machine/feed come from a block (none has run yet: false)
+  double feedMmPerMin = 0.0;  // of the move under way; 0 between moves
+  bool hasState = false;      // machine/feed come from a block (none has run yet: false)
 };
 Pose poseAt(const Timeline& timeline, int done, double time);
 

@@ -15,10 +15,10 @@ namespace klueng::core::machine {
 // Everything that decides how fast a move runs, captured when its block runs.
 struct MotionContext {
   FeedMode feedMode = FeedMode::PerRev;
-  double feed = 0.0;            // mm/min (G98) or mm/rev (G99), already in mm
+  double feed = 0.0;  // mm/min (G98) or mm/rev (G99), already in mm
   SpindleMode spindleMode = SpindleMode::ConstantRpm;
-  double sWord = 0.0;           // rpm (G97) or m/min (G96), 0 = not set
-  double rpmCap = 0.0;          // min(G50 S, machine maximum): the G96 clamp
+  double sWord = 0.0;   // rpm (G97) or m/min (G96), 0 = not set
+  double rpmCap = 0.0;  // min(G50 S, machine maximum): the G96 clamp
   SpindleDir spindle = SpindleDir::Stopped;
   int tool = 0;
   int offset = 0;
@@ -31,15 +31,15 @@ struct MotionContext {
 struct MotionCall {
   MoveKind kind = MoveKind::Line;  // Rapid, Line, Arc or Thread
   Segment path;
-  double lead = 0.0;               // Thread: mm/rev
+  double lead = 0.0;  // Thread: mm/rev
   int line = 0;
   int blockIndex = 0;
-  int file = 0;                    // as StateSnapshot: file, call level, O number
+  int file = 0;  // as StateSnapshot: file, call level, O number
   int callLevel = 0;
   int program = 0;
-  SourceRange where;               // the word an alarm about this move points at
+  SourceRange where;  // the word an alarm about this move points at
   MotionContext ctx;
-  bool compensated = false;        // set by the compensation stage
+  bool compensated = false;  // set by the compensation stage
 };
 
 struct DwellCall {
@@ -81,10 +81,10 @@ std::unique_ptr<MachineSink> makeCompensationStage(MachineSink& next);
 // Final stage: builds the Timeline (rapid dog-legs, move times, G96 rpm
 // along the move, snapshots).
 struct TimingConfig {
-  double rapidX = 4000.0;   // mm/min, radial
-  double rapidZ = 8000.0;   // mm/min
-  double accelX = 0.0;      // mm/s², radial; 0 = moves start and stop at once
-  double accelZ = 0.0;      // mm/s²
+  double rapidX = 4000.0;  // mm/min, radial
+  double rapidZ = 8000.0;  // mm/min
+  double accelX = 0.0;     // mm/s², radial; 0 = moves start and stop at once
+  double accelZ = 0.0;     // mm/s²
 };
 std::unique_ptr<MachineSink> makeTimelineBuilder(Timeline& out, const TimingConfig& config);
 

@@ -17,25 +17,25 @@ enum class MoveKind : std::uint8_t { Rapid, Line, Arc, Thread, Dwell };
 
 struct Move {
   // (Ordered to avoid padding: 168 bytes, not 200; a long program makes millions.)
-  Segment path;              // controlled point (imaginary tip), work coords, (z, x radius);
-                             // a rapid dog-leg is several Rapid moves, each a straight Segment
+  Segment path;                    // controlled point (imaginary tip), work coords, (z, x radius);
+                                   // a rapid dog-leg is several Rapid moves, each a straight Segment
   Vec2 noseCentre = Vec2::Zero();  // nose centre minus controlled point (constant while a tool is active)
-  double tStart = 0.0;       // seconds
+  double tStart = 0.0;             // seconds
   double tEnd = 0.0;
-  double feed = 0.0;         // mm/min actually used (rapid rate for rapids; at the start for G96)
-  double rpm = 0.0;          // spindle rpm at the move's start
-  double rpmEnd = 0.0;       // spindle rpm at the move's end (differs under G96)
-  double lead = 0.0;         // G32 lead mm/rev
+  double feed = 0.0;    // mm/min actually used (rapid rate for rapids; at the start for G96)
+  double rpm = 0.0;     // spindle rpm at the move's start
+  double rpmEnd = 0.0;  // spindle rpm at the move's end (differs under G96)
+  double lead = 0.0;    // G32 lead mm/rev
   // Acceleration (machine.cfg accel_x/accel_z, 0 = off): seconds spent speeding
   // up at the start and slowing down at the end of the move (a trapezoid of
   // speed over time; a triangle when up + down is the whole move).
   float rampUp = 0.0f;
   float rampDown = 0.0f;
-  int line = 0;              // source file line of the block
+  int line = 0;  // source file line of the block
   int blockIndex = 0;
-  int file = 0;              // Program::files index of the block
-  int callLevel = 0;         // 0 = main program
-  int program = 0;           // O number of the program the block belongs to
+  int file = 0;       // Program::files index of the block
+  int callLevel = 0;  // 0 = main program
+  int program = 0;    // O number of the program the block belongs to
   int tool = 0;
   int offset = 0;
   MoveKind kind = MoveKind::Line;
@@ -57,9 +57,9 @@ struct ToolTime {
 
 struct Timeline {
   std::vector<Move> moves;
-  std::vector<StateSnapshot> snapshots;   // one per executed block, in execution order
-  std::optional<Diagnostic> alarm;        // the alarm that stopped the run, if any
-  FlowLog flow;                           // call stacks and macro variables (flow.h)
+  std::vector<StateSnapshot> snapshots;  // one per executed block, in execution order
+  std::optional<Diagnostic> alarm;       // the alarm that stopped the run, if any
+  FlowLog flow;                          // call stacks and macro variables (flow.h)
   double cycleTime() const { return moves.empty() ? 0.0 : moves.back().tEnd; }
   // The cycle time split by tool, in the order the tools are first used.
   std::vector<ToolTime> timeByTool() const;

@@ -41,7 +41,7 @@ enum class ToolReason {
 };
 
 struct StationOverride {
-  int station = 0;         // 1..kMaxStations
+  int station = 0;  // 1..kMaxStations
   std::string libraryId;
 };
 
@@ -49,19 +49,19 @@ struct ToolChoice {
   int station = 0;
   std::string libraryId;
   ToolReason reason = ToolReason::Turning;
-  std::string detail;      // the comment text, or the code seen ("G76", "X0.")
-  int line = 0;            // file line of the evidence; 0 for an override
+  std::string detail;  // the comment text, or the code seen ("G76", "X0.")
+  int line = 0;        // file line of the evidence; 0 for an override
   // The note in the catalog: code I401..I409, args {station "03", id, detail, line}.
   Diagnostic note() const;
 };
 
 struct ToolInference {
-  MachineSetup setup;                 // the input setup, amended (setup.tools.guessed marks the guesses)
-  bool fromProgram = false;           // a plain program: its evidence decided every station
+  MachineSetup setup;        // the input setup, amended (setup.tools.guessed marks the guesses)
+  bool fromProgram = false;  // a plain program: its evidence decided every station
   // The recorded run (machine::recordRun) all evidence but the comments came
   // from; the stock is read from the same run.
   std::shared_ptr<const Timeline> record;
-  std::vector<ToolChoice> choices;    // one per station that got a library tool, by station
+  std::vector<ToolChoice> choices;      // one per station that got a library tool, by station
   std::vector<Diagnostic> offsetNotes;  // I410 per offset row filled from a library tool
   // Every note, choices first: what the CLI prints and the GUI lists.
   std::vector<Diagnostic> notes() const;
@@ -91,7 +91,7 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
 
 // `N=ID` (the CLI's --tool value): station 1..stations and a library id.
 // Returns false and fills error with a message in `lang` when it is not.
-bool parseStationOverride(std::string_view text, int stations, const io::ToolLibrary& library,
-                          StationOverride& out, std::string& error, Lang lang = Lang::En);
+bool parseStationOverride(std::string_view text, int stations, const io::ToolLibrary& library, StationOverride& out,
+                          std::string& error, Lang lang = Lang::En);
 
 }  // namespace klueng::core::machine
