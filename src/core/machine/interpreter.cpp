@@ -25,7 +25,9 @@ Interpreter::Interpreter(const gcode::Program& program, const MachineSetup& setu
       setup_(setup),
       options_(options),
       profile_(gcode::machineProfile(options.dialect)),
-      sink_(&sink),
+      runCorners_(sink, [this](const Segment& s, const SourceRange& at) { return pathWithinTravel(s, at); }),
+      corners_(&runCorners_),
+      sink_(&runCorners_),
       offsets_(setup.offsets),
       flow_(flow),
       index_(program) {
@@ -70,20 +72,20 @@ void Interpreter::readDistanceMode() {
   block_ = &incrementalBlock_;
 }
 
-bool Interpreter::withinTravel(const Vec2& work, const Word* where) {
+bool Interpreter::withinTravel(const Vec2& work, const SourceRange& at) {
   if (capture_) return true;  // a profile is a shape; the cycle's moves are checked
   const auto& m = setup_.machine;
   const Vec2 machine = work - mach_.workShift;
   const double xd = 2.0 * xOf(machine), z = zOf(machine);
   if (xd < m.travelXMin - kPositionTolerance || xd > m.travelXMax + kPositionTolerance)
-    return raise(codes::kBeyondTravelLimit, where, {"X", num(xd), num(m.travelXMin), num(m.travelXMax)});
+    return raiseAt(codes::kBeyondTravelLimit, at, {"X", num(xd), num(m.travelXMin), num(m.travelXMax)});
   if (z < m.travelZMin - kPositionTolerance || z > m.travelZMax + kPositionTolerance)
-    return raise(codes::kBeyondTravelLimit, where, {"Z", num(z), num(m.travelZMin), num(m.travelZMax)});
+    return raiseAt(codes::kBeyondTravelLimit, at, {"Z", num(z), num(m.travelZMin), num(m.travelZMax)});
   return true;
 }
 
-bool Interpreter::pathWithinTravel(const Segment& s, const Word* where) {
-  if (!withinTravel(s.end, where)) return false;
+bool Interpreter::pathWithinTravel(const Segment& s, const SourceRange& at) {
+  if (!withinTravel(s.end, at)) return false;
   if (!s.isArc()) return true;
   // The arc's extreme points that lie on the swept part of the circle.
   const double r = s.radius();
@@ -95,7 +97,7 @@ bool Interpreter::pathWithinTravel(const Segment& s, const Word* where) {
     double u = (s.ccw ? 1.0 : -1.0) * (phi - phi0);
     u = std::fmod(u, 2.0 * std::numbers::pi);
     if (u < 0) u += 2.0 * std::numbers::pi;
-    if (u <= sweep && !withinTravel(s.centre + r * Vec2(std::cos(phi), std::sin(phi)), where)) return false;
+    if (u <= sweep && !withinTravel(s.centre + r * Vec2(std::cos(phi), std::sin(phi)), at)) return false;
   }
   return true;
 }
@@ -254,9 +256,9 @@ bool Interpreter::executeBlock() {
   updateRpm();
 
   // A chamfer or corner waits for a move in the very next block.
-  if (corner_.active && corner_.blockIndex != blockIndex_) {
+  if (corners_->heldBefore(blockIndex_)) {
     const bool dwellOnly = oneShotG && oneShotG->info->action == CodeAction::Dwell && !motionG && mCount == 0;
-    if (!(dwellOnly && profile_.flow.dwellBeforeCornerMove)) return cornerNeedsMove();
+    if (!(dwellOnly && profile_.flow.dwellBeforeCornerMove)) return corners_->refuse();
   }
   const Word* t = find('T');
   const Word* n = find('N');
@@ -433,14 +435,14 @@ bool Interpreter::cAxisWords() {
 bool Interpreter::move(const Word* g) {
   const Word* where = motionWord(g);
   Vec2 target = axisTarget();
-  if (corner_.active && modal_.motion != MotionMode::Line && modal_.motion != MotionMode::ArcCw &&
+  if (corners_->holding() && modal_.motion != MotionMode::Line && modal_.motion != MotionMode::ArcCw &&
       modal_.motion != MotionMode::ArcCcw)
-    return cornerNeedsMove();
+    return corners_->refuse();
   switch (modal_.motion) {
     case MotionMode::Rapid: return rapidTo(target, where);
     case MotionMode::Line: {
       if (!feedReady(where, "G01")) return false;
-      if (!angleTarget(target, where)) return false;
+      if (!angleTarget(target)) return false;
       const Segment path = Segment::line(pos_, target);
       if (chamferWord() || commaWord('R')) return holdCorner(path, where);
       return feedMoveAfterCorner(MoveKind::Line, path, where);

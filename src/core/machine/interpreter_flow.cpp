@@ -174,7 +174,7 @@ void Interpreter::run() {
     pc = next_;
   }
   // A chamfer or corner still waiting for its move when the program ends.
-  if (corner_.active && !sink_->halted()) cornerNeedsMove();
+  if (corners_->holding() && !sink_->halted()) corners_->refuse();
   if (flow_ && sink_->halted() && block_ && !capture_) flow_->alarmState = snapshot();
   // The persistent variables go back to the caller (who keeps them in a file).
   if (options_.persistentVariables) macros_.savePersistent(*options_.persistentVariables);

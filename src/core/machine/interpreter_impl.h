@@ -23,6 +23,7 @@
 #include "klueng/core/machine/flow.h"
 #include "klueng/core/machine/interpreter.h"
 #include "klueng/core/machine/kinematics.h"
+#include "machine/corner_stage.h"
 #include "machine/cycles.h"
 #include "machine/macro_store.h"
 
@@ -121,14 +122,17 @@ class Interpreter final : public gcode::MacroVariables {
 
   void updateRpm() { mach_.rpm = spindleRpm(context(), xOf(pos_)); }
 
+  // Where an alarm about `where` points: the word, else the block's line.
+  SourceRange rangeOf(const Word* where) const { return where ? where->range : SourceRange{block_->line, 1, 0}; }
+
   bool raise(const char* code, const Word* where, std::vector<std::string> args) {
+    return raiseAt(code, rangeOf(where), std::move(args));
+  }
+  bool raiseAt(const char* code, const SourceRange& at, std::vector<std::string> args) {
     Diagnostic d;
     d.severity = Severity::Alarm;
     d.code = code;
-    if (where)
-      d.range = where->range;
-    else
-      d.range = SourceRange{block_->line, 1, 0};
+    d.range = at;
     d.args = std::move(args);
     sink_->alarm(d);
     return false;
@@ -186,7 +190,7 @@ class Interpreter final : public gcode::MacroVariables {
     m.file = block_->file;
     m.callLevel = static_cast<int>(frames_.size()) - 1;
     m.program = frames_.empty() ? 0 : frames_.back().program;
-    m.where = where ? where->range : SourceRange{block_->line, 1, 0};
+    m.where = rangeOf(where);
     m.ctx = context();
   }
 
@@ -198,8 +202,10 @@ class Interpreter final : public gcode::MacroVariables {
   }
 
   // ---- interpreter.cpp ---------------------------------------------------------
-  bool withinTravel(const Vec2& work, const Word* where);
-  bool pathWithinTravel(const Segment& s, const Word* where);
+  bool withinTravel(const Vec2& work, const SourceRange& at);
+  bool withinTravel(const Vec2& work, const Word* where) { return withinTravel(work, rangeOf(where)); }
+  bool pathWithinTravel(const Segment& s, const SourceRange& at);
+  bool pathWithinTravel(const Segment& s, const Word* where) { return pathWithinTravel(s, rangeOf(where)); }
   bool rapidTo(const Vec2& target, const Word* where);
   bool executeBlock();
   void readDistanceMode();
@@ -242,7 +248,7 @@ class Interpreter final : public gcode::MacroVariables {
   bool threadUnderCssAllowed(const Word* where);
   bool threadCssWarned_ = false;
 
-  // ---- interpreter_corner.cpp (,C ,R ,A on G01) ---------------------------------
+  // ---- interpreter_corner.cpp (,C ,R ,A on G01; the corner stage cuts the corner) ---
   const Word* commaWord(char letter) const { return block_->findComma(letter); }
   // ,C, or an I or K where the profile reads them as ,C (Haas, 90-degree corners).
   const Word* chamferWord() const {
@@ -251,11 +257,10 @@ class Interpreter final : public gcode::MacroVariables {
     const Word* i = block_->find('I');
     return i ? i : block_->find('K');
   }
-  bool holdCorner(const Segment& first, const Word* where);
+  bool holdCorner(const Segment& path, const Word* where);
   bool feedMoveAfterCorner(MoveKind kind, const Segment& path, const Word* where);
-  bool cutHeldCorner(const Segment& path, Vec2& start, const Word* where);
-  bool cornerNeedsMove();
-  bool angleTarget(Vec2& target, const Word* where);
+  bool cornerCut(const CornerStage::Cut& cut);
+  bool angleTarget(Vec2& target);
 
   // ---- interpreter_one_shot.cpp -------------------------------------------------
   Vec2 referencePoint() const;
@@ -287,7 +292,9 @@ class Interpreter final : public gcode::MacroVariables {
   const MachineSetup& setup_;
   const RunOptions& options_;
   const gcode::MachineProfile& profile_;
-  MachineSink* sink_;  // a capturing sink while a cycle reads its profile
+  CornerStage runCorners_;  // the corner stage in front of the run's sink
+  CornerStage* corners_;    // it, or the one in front of a profile's capturing sink
+  MachineSink* sink_;       // the same stage: every call goes through it
 
   ModalState modal_;
   MachineState mach_;
@@ -340,16 +347,6 @@ class Interpreter final : public gcode::MacroVariables {
     std::string text;
   } modalCall_;
   bool movedThisBlock_ = false;
-  // A G01 with ,C or ,R waits for the next block's move to know its corner.
-  struct PendingCorner {
-    bool active = false;
-    MotionCall first;   // the G01 to the virtual corner
-    char kind = 0;      // 'C' chamfer, 'R' radius
-    double size = 0.0;  // mm
-    SourceRange where;  // the ,C / ,R word
-    std::string text;
-    int blockIndex = -1;
-  } corner_;
   gcode::Block scratch_;  // the running block with its expressions evaluated
 };
 

@@ -162,7 +162,6 @@ std::optional<cycles::CycleAlarm> Interpreter::readProfile(const Block& cycle, c
   const int blockIndex = blockIndex_, next = next_, resumeAfter = resumeAfter_;
   const bool movedThisBlock = movedThisBlock_, stopped = stopped_, stopEndsRun = stopEndsRun_,
              optionalStop = optionalStopBlock_;
-  const PendingCorner corner = corner_;
   const CodeInfo* single = singleCycle_;
   const Vec2 singleTarget = singleTarget_;
   const double singleTaper = singleTaper_;
@@ -175,9 +174,12 @@ std::optional<cycles::CycleAlarm> Interpreter::readProfile(const Block& cycle, c
   profileWords_.clear();
   ProfileCapture capture(withFeed, out, *chain, profileWords_);
   capture.end_ = pos_;
-  sink_ = &capture;
+  // A corner held before the cycle stays held in the run's stage; the profile's own go through a stage of its own.
+  CornerStage corners(capture, [this](const Segment& s, const SourceRange& at) { return pathWithinTravel(s, at); });
+  CornerStage* runCorners = corners_;
+  corners_ = &corners;
+  sink_ = &corners;
   capture_ = &capture;
-  corner_ = PendingCorner{};
   singleCycle_ = nullptr;
   drillCycle_ = nullptr;
   for (int i = out.ns; i <= out.nf && !capture.halted(); ++i) {
@@ -198,9 +200,10 @@ std::optional<cycles::CycleAlarm> Interpreter::readProfile(const Block& cycle, c
     }
     if (!executeBlock()) break;
   }
-  if (!capture.halted() && corner_.active) cornerNeedsMove();
+  if (!capture.halted() && corners.holding()) corners.refuse();
 
   sink_ = chain;
+  corners_ = runCorners;
   capture_ = nullptr;
   std::swap(scratch, scratch_);
   modal_ = modal;
@@ -215,7 +218,6 @@ std::optional<cycles::CycleAlarm> Interpreter::readProfile(const Block& cycle, c
   stopped_ = stopped;
   stopEndsRun_ = stopEndsRun;
   optionalStopBlock_ = optionalStop;
-  corner_ = corner;
   singleCycle_ = single;
   singleTarget_ = singleTarget;
   singleTaper_ = singleTaper;
