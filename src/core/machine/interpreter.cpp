@@ -29,8 +29,7 @@ Interpreter::Interpreter(const gcode::Program& program, const MachineSetup& setu
       corners_(&runCorners_),
       sink_(&runCorners_),
       offsets_(setup.offsets),
-      flow_(flow),
-      index_(program) {
+      flow_(program, profile_, macros_, flow, [this](const Diagnostic& d) { sink_->alarm(d); }) {
   const auto& m = setup_.machine;
   pos_ = Vec2(m.startZ, m.startX / 2.0);
   mach_.position = pos_;
@@ -272,7 +271,7 @@ void Interpreter::emitSnapshot() {
   if (capture_) return;  // a profile block is read, not run
   sink_->blockDone(snapshot());
   ++snapshots_;
-  if (stopped_ && stopEndsRun_) ended_ = true;
+  if (stopped_ && stopEndsRun_) flow_.end();
 }
 
 StateSnapshot Interpreter::snapshot() {
@@ -280,9 +279,9 @@ StateSnapshot Interpreter::snapshot() {
   snap.line = block_->line;
   snap.blockIndex = blockIndex_;
   snap.file = block_->file;
-  snap.callStack = stackId_;
-  snap.callLevel = static_cast<int>(frames_.size()) - 1;
-  snap.program = frames_.empty() ? 0 : frames_.back().program;
+  snap.callStack = flow_.stackId();
+  snap.callLevel = flow_.level();
+  snap.program = flow_.program();
   snap.modal = modal_;
   snap.machine = mach_;
   snap.machine.position = pos_;
@@ -385,25 +384,25 @@ bool Interpreter::mCode(const CodeWord& c) {
       return true;
     case ModalGroup::MSubprogram: {
       // Performed after the block (interpreter_flow.cpp): M98 P L, M97 P L, M99 [P].
-      pending_ = PendingCall{};
-      pending_.kind = a == CodeAction::SubprogramCall ? PendingCall::Kind::Subprogram
-                      : a == CodeAction::LocalCall    ? PendingCall::Kind::Local
-                                                      : PendingCall::Kind::Return;
-      pending_.word = c.word;
-      pending_.where = c.word->range;
-      pending_.text = wordText(*c.word);
+      PendingCall call;
+      call.kind = a == CodeAction::SubprogramCall ? PendingCall::Kind::Subprogram
+                  : a == CodeAction::LocalCall    ? PendingCall::Kind::Local
+                                                  : PendingCall::Kind::Return;
+      call.where = c.word->range;
+      call.text = wordText(*c.word);
       const Word* p = find('P');
       const Word* l = find('L');
-      pending_.hasP = p != nullptr;
+      call.hasP = p != nullptr;
       const bool packed = a == CodeAction::SubprogramCall && profile_.flow.packedRepeats;
-      pending_.target =
-          gcode::callTarget(p ? p->value : 0.0, l ? std::optional<double>(l->value) : std::nullopt, packed);
+      call.target = gcode::callTarget(p ? p->value : 0.0, l ? std::optional<double>(l->value) : std::nullopt, packed);
       // A missing target stops the run on this block, before its snapshot.
-      if (a == CodeAction::SubprogramCall && pending_.target.repeats > 0 && !index_.program(pending_.target.number))
-        return raise(codes::kNoSuchProgram, c.word, {pending_.text, std::to_string(pending_.target.number)});
-      if (a == CodeAction::LocalCall && pending_.target.repeats > 0 &&
-          index_.findSequence(index_.sectionOf(blockIndex_), pending_.target.number, -1) < 0)
-        return raise(codes::kNoSuchSequence, c.word, {pending_.text, std::to_string(pending_.target.number)});
+      const gcode::ProgramIndex& index = flow_.index();
+      if (a == CodeAction::SubprogramCall && call.target.repeats > 0 && !index.program(call.target.number))
+        return raise(codes::kNoSuchProgram, c.word, {call.text, std::to_string(call.target.number)});
+      if (a == CodeAction::LocalCall && call.target.repeats > 0 &&
+          index.findSequence(index.sectionOf(blockIndex_), call.target.number, -1) < 0)
+        return raise(codes::kNoSuchSequence, c.word, {call.text, std::to_string(call.target.number)});
+      flow_.setPending(std::move(call));
       return true;
     }
     default: return true;

@@ -25,7 +25,9 @@
 #include "klueng/core/machine/kinematics.h"
 #include "machine/corner_stage.h"
 #include "machine/cycles.h"
+#include "machine/flow_engine.h"
 #include "machine/macro_store.h"
+#include "machine/number_text.h"
 
 namespace klueng::core::machine::detail {
 
@@ -38,46 +40,12 @@ inline constexpr double kMmPerInch = 25.4;
 inline constexpr double kMetresPerFoot = 0.3048;  // G96 S is feet/min under G20
 inline constexpr double kArcTolerance = 0.01;     // mm (SPEC 5 ext)
 inline constexpr double kPositionTolerance = 0.001;
-// Moves the blocks run again may make, per block machine.cfg max_blocks allows.
-inline constexpr long long kMovesPerRepeatedBlock = 10;
-
-inline std::string num(double v) {
-  if (std::abs(v) < 0.0005) v = 0.0;  // no "-0.000"
-  return fmt::format("{:.3f}", v);
-}
 
 inline std::string wordText(const Word& w) { return std::string(1, w.letter) + w.number; }
 
 struct CodeWord {
   const Word* word;
   const CodeInfo* info;
-};
-
-// One level of program flow: the main program, a subprogram (M98), a local
-// subprogram (M97) or a macro (G65/G66) being run.
-struct FlowFrame {
-  CallFrame::Kind kind = CallFrame::Kind::Main;
-  int program = 0;     // O number
-  int section = 0;     // ProgramIndex section of the running program
-  int entry = 0;       // block index where each pass starts
-  int returnTo = -1;   // block index the caller continues at
-  int callBlock = -1;  // block index of the call (M99 P searches the caller from here)
-  int callFile = 0, callLine = 0;
-  int repeat = 1, repeats = 1;
-  int localLevel = 0;                             // index into the local-variable stack
-  int localId = 0;                                // FlowLog local frame id
-  std::array<int, 4> doBlock{-1, -1, -1, -1};     // the WHILE/DO block of each active loop 1-3
-  std::array<gcode::MacroValue, 33> arguments{};  // G65/G66: each pass starts with these locals
-};
-
-// A call found in an NC block, performed after the block's motion.
-struct PendingCall {
-  enum class Kind { None, Subprogram, Local, Return } kind = Kind::None;
-  const Word* word = nullptr;  // M98 / M97 / M99 (in the block being run)
-  CallTarget target;
-  bool hasP = false;  // M99 P n
-  SourceRange where;
-  std::string text;
 };
 
 // A G65 / G66 / G67 block (the code table's macro call actions) runs as a call, not as motion.
@@ -179,8 +147,8 @@ class Interpreter final : public gcode::MacroVariables {
     d.line = block_->line;
     d.blockIndex = blockIndex_;
     d.file = block_->file;
-    d.callLevel = static_cast<int>(frames_.size()) - 1;
-    d.program = frames_.empty() ? 0 : frames_.back().program;
+    d.callLevel = flow_.level();
+    d.program = flow_.program();
     d.ctx = context();
   }
 
@@ -188,15 +156,15 @@ class Interpreter final : public gcode::MacroVariables {
     m.line = block_->line;
     m.blockIndex = blockIndex_;
     m.file = block_->file;
-    m.callLevel = static_cast<int>(frames_.size()) - 1;
-    m.program = frames_.empty() ? 0 : frames_.back().program;
+    m.callLevel = flow_.level();
+    m.program = flow_.program();
     m.where = rangeOf(where);
     m.ctx = context();
   }
 
   void moved(const Vec2& target) {
     movedThisBlock_ = true;
-    repeatedMoves_ += repeating_;
+    flow_.noteMove();
     if ((target - pos_).norm() > 1e-9) mach_.positionCheck = false;
     pos_ = target;
   }
@@ -221,29 +189,20 @@ class Interpreter final : public gcode::MacroVariables {
   void emitSnapshot();
   StateSnapshot snapshot();  // the state after the current block
 
-  // ---- interpreter_flow.cpp (program flow: subprograms, macro statements) -------
+  // ---- interpreter_flow.cpp (the run loop, macro statements; the flow engine moves the counter) ---
+  CallSite callSite() const { return CallSite{blockIndex_, block_->file, block_->line, snapshots_}; }
+  bool flowAlarm(const char* code, const SourceRange& at, std::vector<std::string> args) {
+    return raiseAt(code, at, std::move(args));
+  }
   bool runBlock(int index);
   bool statement(const gcode::Block& b);
   bool evaluateWords(const gcode::Block& b);
   bool evaluate(int expr, const SourceRange& at, gcode::MacroValue& out);
   bool writeVariable(int n, gcode::MacroValue v, const SourceRange& at);
-  bool jumpTo(int n, const SourceRange& at, const std::string& text);
-  bool performCall();
   bool macroCall(const gcode::Block& b, const CodeWord& g);
-  bool modalMacroCall();
-  bool callProgram(CallFrame::Kind kind, int number, int repeats, const SourceRange& at, const std::string& text,
-                   const gcode::Block* arguments);
   double positionValue(int axis, bool machine) const;
-  bool returnFromCall(std::optional<int> sequence, const SourceRange& at, const std::string& text);
-  bool loopLimits();
-  bool loopStopped_ = false;  // a loop limit ended the run (even a run through alarms)
-  void noteStack();
-  void setArguments(const gcode::Block& b, std::array<gcode::MacroValue, 33>& locals) const;
   int modalCode(int group) const;
   int modalCodeInA(int group) const;  // as system A numbers it
-  void matchLoops();
-  bool flowAlarm(const char* code, const SourceRange& at, std::vector<std::string> args);
-  void notice(Severity severity, const char* code, const SourceRange& at, std::vector<std::string> args);
   // Threading under G96: the profile's alarm, or a warning (once a run) and true.
   bool threadUnderCssAllowed(const Word* where);
   bool threadCssWarned_ = false;
@@ -319,33 +278,10 @@ class Interpreter final : public gcode::MacroVariables {
   bool stopped_ = false;
   bool stopEndsRun_ = false;
   bool optionalStopBlock_ = false;  // this block holds M01
-  bool ended_ = false;
 
-  // Program flow (interpreter_flow.cpp).
-  FlowLog* flow_ = nullptr;
-  gcode::ProgramIndex index_;
-  std::vector<FlowFrame> frames_;
-  MacroStore macros_;             // #1-#999 and the system variables a run keeps
-  std::vector<int> loopPartner_;  // WHILE/DO block -> its END, END -> its WHILE/DO (-1 none)
-  std::vector<char> visited_;     // blocks run at least once (the endless-loop limit counts repeats)
-  long long repeatedBlocks_ = 0;
-  long long repeatedMoves_ = 0;  // moves made by blocks run again (bounded with max_blocks)
-  bool repeating_ = false;       // the running block has run before
-  SourceRange lastJumpAt_;       // the last backward jump (named by the endless-loop alarm)
-  std::string lastJumpText_;
-  int next_ = 0;       // block index to run next
+  MacroStore macros_;  // #1-#999 and the system variables a run keeps
+  FlowEngine flow_;    // the program counter, call stack and loops (after macros_: its calls push their levels)
   int snapshots_ = 0;  // snapshots emitted so far (the index of the next one)
-  int stackId_ = 0;    // FlowLog::stacks index of the current call stack
-  int nextLocalId_ = 1;
-  bool mainRepeated_ = false;  // M99 in the main program has looped once
-  PendingCall pending_;
-  struct ModalCall {
-    bool active = false;
-    int program = 0, repeats = 1, level = 0;
-    gcode::Block arguments;
-    SourceRange where;
-    std::string text;
-  } modalCall_;
   bool movedThisBlock_ = false;
   gcode::Block scratch_;  // the running block with its expressions evaluated
 };

@@ -41,7 +41,7 @@ int Interpreter::modalCodeInA(int group) const {
     case 6: return modal_.units == Units::Inch ? 20 : 21;
     case 7: return modal_.noseComp == NoseCompMode::Left ? 41 : modal_.noseComp == NoseCompMode::Right ? 42 : 40;
     case 10: return drillCycle_ ? drillCycle_->number : 80;
-    case 12: return modalCall_.active ? 66 : 67;
+    case 12: return flow_.modalCallActive() ? 66 : 67;
     case 14: return modal_.workCoordinate;
     case 16: return 18;
     default: return 0;
@@ -60,7 +60,7 @@ bool Interpreter::read(int n, MacroValue& out, const char*& errorCode) {
   errorCode = codes::kNoSuchVariable;
   out = MacroValue{};
   if (n == 0) return true;
-  if (macros_.read(n, frames_.empty() ? 0 : frames_.back().localLevel, *sink_, out)) return true;
+  if (macros_.read(n, flow_.localLevel(), *sink_, out)) return true;
   const int offsets = static_cast<int>(offsets_.offsets.size());
   // Tool offsets: #2001+ X, #2101+ Z, #2201+ nose radius, #2301+ tip (per offset number).
   if (n >= 2001 && n <= 2400) {
@@ -79,7 +79,7 @@ bool Interpreter::read(int n, MacroValue& out, const char*& errorCode) {
   switch (n) {
     case 3000: return true;  // vacant until written (the write raises the alarm)
     case 4109: out = MacroValue::of(modal_.feed / unit()); return true;
-    case 4115: out = MacroValue::of(frames_.back().program); return true;
+    case 4115: out = MacroValue::of(flow_.program()); return true;
     case 4119: out = MacroValue::of(modal_.sWord); return true;
     case 5001:
     case 5041: out = MacroValue::of(positionValue(1, false)); return true;
@@ -98,19 +98,19 @@ bool Interpreter::read(int n, MacroValue& out, const char*& errorCode) {
 
 bool Interpreter::writeVariable(int n, MacroValue v, const SourceRange& at) {
   const std::string name = "#" + std::to_string(n);
-  const int localFrame = n >= 1 && n <= 33 ? frames_.back().localId : -1;
-  if (macros_.write(n, frames_.back().localLevel, *sink_, v)) {
+  const int localFrame = n >= 1 && n <= 33 ? flow_.frame().localId : -1;
+  if (macros_.write(n, flow_.localLevel(), *sink_, v)) {
     // kept by the store
   } else if (n == 3000) {
     // #3000 = n (MESSAGE): a program alarm with the block's comment as its text.
-    if (flow_) flow_->writes.push_back(VariableWrite{snapshots_, n, -1, v.value, v.vacant});
+    if (FlowLog* log = flow_.log()) log->writes.push_back(VariableWrite{snapshots_, n, -1, v.value, v.vacant});
     // The control shows it as alarm 3000 + n (Fanuc: n = 0..200).
     const int number = 3000 + static_cast<int>(std::clamp(std::round(v.value), 0.0, 999.0));
     return flowAlarm(codes::kProgramAlarm, at,
                      {gcode::macroNumberText(v.value), block_->comment, std::to_string(number)});
   } else if (n == 3006) {
     // #3006 = n (MESSAGE): a stop with a message, as M00.
-    notice(Severity::Note, codes::kMacroStop, at, {block_->comment});
+    flow_.notice(Severity::Note, codes::kMacroStop, at, {block_->comment});
     stopped_ = true;
     stopEndsRun_ = options_.stopAtM00;
   } else if (n >= 2001 && n <= 2400 && (n - 2001) % 100 < static_cast<int>(offsets_.offsets.size())) {
@@ -141,7 +141,7 @@ bool Interpreter::writeVariable(int n, MacroValue v, const SourceRange& at) {
       return flowAlarm(codes::kReadOnlyVariable, at, {name + " =", std::to_string(n)});
     return flowAlarm(codes::kNoSuchVariable, at, {std::to_string(n)});
   }
-  if (flow_) flow_->writes.push_back(VariableWrite{snapshots_, n, localFrame, v.value, v.vacant});
+  if (FlowLog* log = flow_.log()) log->writes.push_back(VariableWrite{snapshots_, n, localFrame, v.value, v.vacant});
   return true;
 }
 

@@ -134,8 +134,9 @@ std::optional<cycles::CycleAlarm> Interpreter::readProfile(const Block& cycle, c
   if (!pw || !qw) return alarmAt(codes::kCycleNeedsPAndQ, g, {name});
   // The program's own sequence index: P the first N after the cycle (else the
   // first in the program), Q the first at or after P.
-  const int section = index_.sectionOf(blockIndex_);
-  out.ns = index_.findSequence(section, pw->code(), blockIndex_);
+  const gcode::ProgramIndex& index = flow_.index();
+  const int section = index.sectionOf(blockIndex_);
+  out.ns = index.findSequence(section, pw->code(), blockIndex_);
   if (out.ns < 0) return alarmAt(codes::kNoProfileBlock, pw, {name, "P", pw->number.str()});
   // Fanuc 0i-TF (PS0065): the profile's first block must hold G00 or G01.
   if (profile_.cycles.profileFirstBlockNeedsG00G01) {
@@ -148,7 +149,7 @@ std::optional<cycles::CycleAlarm> Interpreter::readProfile(const Block& cycle, c
                                 first.words.empty() ? SourceRange{first.line, 1, 0} : first.words.front().range,
                                 {name + " " + wordText(*pw), std::to_string(pw->code())}};
   }
-  out.nf = index_.findSequence(section, qw->code(), out.ns - 1);
+  out.nf = index.findSequence(section, qw->code(), out.ns - 1);
   if (out.nf < out.ns) out.nf = -1;
   if (out.nf < 0) return alarmAt(codes::kNoProfileBlock, qw, {name, "Q", qw->number.str()});
   if (capture_) return alarmAt(codes::kProfileCommandNotAllowed, g, {name, std::to_string(cycle.line)});
@@ -159,7 +160,7 @@ std::optional<cycles::CycleAlarm> Interpreter::readProfile(const Block& cycle, c
   const Vec2 pos = pos_;
   const gcode::Block* block = block_;
   const auto byLetter = byLetter_;
-  const int blockIndex = blockIndex_, next = next_, resumeAfter = resumeAfter_;
+  const int blockIndex = blockIndex_, resumeAfter = resumeAfter_;
   const bool movedThisBlock = movedThisBlock_, stopped = stopped_, stopEndsRun = stopEndsRun_,
              optionalStop = optionalStopBlock_;
   const CodeInfo* single = singleCycle_;
@@ -212,7 +213,6 @@ std::optional<cycles::CycleAlarm> Interpreter::readProfile(const Block& cycle, c
   block_ = block;
   byLetter_ = byLetter;
   blockIndex_ = blockIndex;
-  next_ = next;
   resumeAfter_ = resumeAfter;
   movedThisBlock_ = movedThisBlock;
   stopped_ = stopped;
