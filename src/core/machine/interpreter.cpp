@@ -29,6 +29,7 @@ Interpreter::Interpreter(const gcode::Program& program, const MachineSetup& setu
       corners_(&runCorners_),
       sink_(&runCorners_),
       offsets_(setup.offsets),
+      effects_(this),
       flow_(program, profile_, macros_, flow, [this](const Diagnostic& d) { sink_->alarm(d); }) {
   const auto& m = setup_.machine;
   pos_ = Vec2(m.startZ, m.startX / 2.0);
@@ -72,7 +73,7 @@ void Interpreter::readDistanceMode() {
 }
 
 bool Interpreter::withinTravel(const Vec2& work, const SourceRange& at) {
-  if (capture_) return true;  // a profile is a shape; the cycle's moves are checked
+  if (!effects_->checksMoves()) return true;  // a profile is a shape; the cycle's moves are checked
   const auto& m = setup_.machine;
   const Vec2 machine = work - mach_.workShift;
   const double xd = 2.0 * xOf(machine), z = zOf(machine);
@@ -147,7 +148,7 @@ bool Interpreter::executeBlock() {
     if (gs[i].info->group == ModalGroup::Units)
       modal_.units = gs[i].info->action == CodeAction::Inch ? Units::Inch : Units::Mm;
   if (const Word* t = find('T'))
-    if (capture_ ? !captureTool(*t) : !selectTool(*t)) return false;
+    if (!effects_->tool(*t)) return false;
   for (std::size_t i = 0; i < gCount; ++i) {
     const CodeWord& c = gs[i];
     const CodeAction a = c.info->action;
@@ -201,21 +202,10 @@ bool Interpreter::executeBlock() {
   }
   if (const Word* f = find('F')) {
     modal_.feed = f->value * unit();
-    if (capture_) captureFeed(modal_.feed);
+    effects_->feed(modal_.feed);
   }
-  if (const Word* s = find('S'); s && capture_) {
-    captureSpeed(*s);
-  } else if (s) {
-    if (oneShotG && oneShotG->info->action == CodeAction::CoordinateSet) {
-      modal_.rpmClamp = s->value;
-    } else if (modal_.spindleMode == SpindleMode::ConstantSurface) {
-      modal_.sWord = s->value * (modal_.units == Units::Inch ? kMetresPerFoot : 1.0);
-    } else {
-      if (s->value > setup_.machine.maxSpindleRpm + 1e-9)
-        return raise(codes::kSpindleAboveMaximum, s, {num(s->value), num(setup_.machine.maxSpindleRpm)});
-      modal_.sWord = s->value;
-    }
-  }
+  if (const Word* s = find('S'))
+    if (!effects_->speed(*s, oneShotG && oneShotG->info->action == CodeAction::CoordinateSet)) return false;
   if (compChanged) sink_->compensation(modal_.noseComp, mach_.noseRadius, mach_.tip);
   updateRpm();
 
@@ -225,18 +215,14 @@ bool Interpreter::executeBlock() {
       return std::pair(a.info->phase, a.info->number) < std::pair(b.info->phase, b.info->number);
     });
   std::size_t mi = 0;
-  if (capture_) {  // a profile's M codes are not the cycle's business, a call is refused
-    for (std::size_t i = 0; i < mCount; ++i)
-      if (ms[i].info->group == ModalGroup::MSubprogram) return profileOnly(wordText(*ms[i].word).c_str(), ms[i].word);
-    mCount = 0;
-  }
+  if (!effects_->mCodes(ms.data(), mCount)) return false;
   for (; mi < mCount && ms[mi].info->phase != Phase::AfterMotion; ++mi)
     if (!mCode(ms[mi])) return false;
 
   // 3. The motion or one-shot G of the block.
   if (motionG) modal_.motion = motionFor(motionG->info->action);
   if (!cAxisWords()) return false;
-  if (capture_ && !profileBlockAllowed(motionG, cycleG, oneShotG, singleCycleG)) return false;
+  if (!effects_->blockAllowed(motionG, cycleG, oneShotG, singleCycleG)) return false;
   if (cycleG) {
     if (!cannedCycle(*cycleG)) return false;
   } else if (oneShotG) {
@@ -268,7 +254,6 @@ bool Interpreter::executeBlock() {
 }
 
 void Interpreter::emitSnapshot() {
-  if (capture_) return;  // a profile block is read, not run
   sink_->blockDone(snapshot());
   ++snapshots_;
   if (stopped_ && stopEndsRun_) flow_.end();
@@ -332,6 +317,20 @@ bool Interpreter::selectTool(const Word& t) {
     mach_.offsetZ = o.z;
     mach_.noseRadius = o.r;
     mach_.tip = o.tip;
+  }
+  return true;
+}
+
+// S: rpm (G97), surface speed (G96) or, in a G50 block, the rpm clamp.
+bool Interpreter::speed(const Word& s, bool coordinateSet) {
+  if (coordinateSet) {
+    modal_.rpmClamp = s.value;
+  } else if (modal_.spindleMode == SpindleMode::ConstantSurface) {
+    modal_.sWord = s.value * (modal_.units == Units::Inch ? kMetresPerFoot : 1.0);
+  } else {
+    if (s.value > setup_.machine.maxSpindleRpm + 1e-9)
+      return raise(codes::kSpindleAboveMaximum, &s, {num(s.value), num(setup_.machine.maxSpindleRpm)});
+    modal_.sWord = s.value;
   }
   return true;
 }
@@ -475,7 +474,7 @@ bool Interpreter::move(const Word* g) {
 }
 
 bool Interpreter::feedReady(const Word* where, const char* code) {
-  if (capture_) return true;  // the cycle checks its own moves when it makes them
+  if (!effects_->checksMoves()) return true;  // the cycle checks its own moves when it makes them
   if (modal_.feed <= 0.0 && !cuttingCondition(codes::kNoFeed, where, {code})) return false;
   if (modal_.feedMode == FeedMode::PerRev) {
     if (mach_.spindle == SpindleDir::Stopped && !cuttingCondition(codes::kFeedPerRevSpindleStopped, where, {code}))

@@ -23,6 +23,7 @@
 #include "klueng/core/machine/flow.h"
 #include "klueng/core/machine/interpreter.h"
 #include "klueng/core/machine/kinematics.h"
+#include "machine/block_effects.h"
 #include "machine/corner_stage.h"
 #include "machine/cycles.h"
 #include "machine/flow_engine.h"
@@ -43,17 +44,12 @@ inline constexpr double kPositionTolerance = 0.001;
 
 inline std::string wordText(const Word& w) { return std::string(1, w.letter) + w.number; }
 
-struct CodeWord {
-  const Word* word;
-  const CodeInfo* info;
-};
-
 // A G65 / G66 / G67 block (the code table's macro call actions) runs as a call, not as motion.
 bool isMacroCallBlock(const gcode::Block& b, gcode::Dialect dialect, CodeWord& g);
 
-struct ProfileCapture;  // interpreter_profile.cpp
-
-class Interpreter final : public gcode::MacroVariables {
+// The running block's T, F, S and M take effect on the machine (the
+// interpreter is the run's BlockEffects) or in a profile being read.
+class Interpreter final : public gcode::MacroVariables, private BlockEffects {
  public:
   Interpreter(const gcode::Program& program, const MachineSetup& setup, const RunOptions& options, MachineSink& sink,
               FlowLog* flow);
@@ -179,6 +175,13 @@ class Interpreter final : public gcode::MacroVariables {
   void readDistanceMode();
   static MotionMode motionFor(gcode::CodeAction action);
   bool selectTool(const Word& t);
+  // BlockEffects of a run: the words act on the machine.
+  bool checksMoves() const override { return true; }
+  bool blockAllowed(const CodeWord*, const CodeWord*, const CodeWord*, const CodeWord*) override { return true; }
+  bool tool(const Word& t) override { return selectTool(t); }
+  void feed(double) override {}  // modal: the block has set it
+  bool speed(const Word& s, bool coordinateSet) override;
+  bool mCodes(const CodeWord*, std::size_t&) override { return true; }
   bool mCode(const CodeWord& c);
   bool cAxisWords();
   bool move(const Word* g);
@@ -240,12 +243,6 @@ class Interpreter final : public gcode::MacroVariables {
   // ---- interpreter_profile.cpp (G70-G73 read N(P)..N(Q) by running them) ---------
   std::optional<cycles::CycleAlarm> readProfile(const gcode::Block& cycle, const Word* g, bool withFeed,
                                                 cycles::Profile& out);
-  bool profileOnly(const char* what, const Word* where);
-  bool profileBlockAllowed(const CodeWord* motion, const CodeWord* cycle, const CodeWord* oneShot,
-                           const CodeWord* single);
-  bool captureTool(const Word& t);
-  void captureFeed(double mm);
-  void captureSpeed(const Word& s);
 
   const gcode::Program& program_;
   const MachineSetup& setup_;
@@ -273,7 +270,7 @@ class Interpreter final : public gcode::MacroVariables {
   cycles::DrillWords drill_;               // its modal words
   cycles::CycleMemory cycleMemory_;
   cycles::ProfileReader profileReader_;   // readProfile, for the cycle expansions
-  ProfileCapture* capture_ = nullptr;     // set while a G70-G73 runs its profile into a capturing sink
+  BlockEffects* effects_;                 // the interpreter, or the capture of a profile being read
   std::deque<gcode::Word> profileWords_;  // the S and T words a G70 profile hands to its steps
   bool stopped_ = false;
   bool stopEndsRun_ = false;

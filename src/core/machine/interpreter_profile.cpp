@@ -1,127 +1,19 @@
 // G70-G73 read their profile N(P)..N(Q) through the interpreter itself: the
 // blocks run, from the cycle's start point, into a capturing sink instead of
-// the chain, and the moves they make become the cycle's profile. So a profile
-// block means what it means anywhere else: modal G00-G03, U/W, ,C/,R corners,
-// ,A angles, macro values (X#1), G20. Then every bit of state is put back: the
-// control reads the profile, it does not run it.
-//
-// What may stand in the profile follows the Fanuc 0i-TF manual (multiple
-// repetitive cycles, "Limitations": no one-shot G code but G04, no other
-// cycle, no subprogram or macro call); Haas reads its G71-G73 P..Q the same.
-// F, S, T, G40-G42 and G04 take effect in G70 only (Fanuc: "F, S and T in
-// blocks ns to nf are ignored in G71/G72/G73 and effective in G70").
+// the chain (profile_capture.h), and the moves they make become the cycle's
+// profile. So a profile block means what it means anywhere else: modal
+// G00-G03, U/W, ,C/,R corners, ,A angles, macro values (X#1), G20. The
+// capture is also the blocks' BlockEffects: it says what a profile may hold
+// and keeps its F, S and T for G70. Then every bit of state is put back: the
+// control reads the profile, it does not run it. Haas reads its G71-G73 P..Q
+// the same.
 #include "klueng/core/diagnostic_codes.h"
 #include "machine/interpreter_impl.h"
+#include "machine/profile_capture.h"
 
 namespace klueng::core::machine::detail {
 
 using gcode::Block;
-
-struct ProfileCapture final : MachineSink {
-  ProfileCapture(bool withFeed, cycles::Profile& out, const MachineSink& chain, std::deque<Word>& words)
-      : withFeed(withFeed), out(out), chain(chain), words(words) {}
-
-  void motion(const MotionCall& m) override {
-    cycles::Step s;
-    s.kind = m.kind == MoveKind::Rapid ? cycles::StepKind::Rapid : cycles::StepKind::Feed;
-    s.path = m.path;
-    s.where = m.where;
-    take(s);
-    end_ = m.path.end;
-    out.moves.push_back(s);
-    out.blockOf.push_back(m.blockIndex);
-  }
-  void dwell(const DwellCall& d) override {
-    if (!withFeed) return;
-    cycles::Step s;
-    s.kind = cycles::StepKind::Dwell;
-    s.seconds = d.seconds;
-    s.path = Segment::line(end_, end_);
-    out.moves.push_back(s);
-    out.blockOf.push_back(d.blockIndex);
-  }
-  void setPosition(const Vec2&) override {}  // G50 is refused in a profile
-  void compensation(NoseCompMode mode, double, int) override {
-    if (!withFeed) return;
-    cycles::Step s;
-    s.kind = cycles::StepKind::Compensation;
-    s.comp = mode;
-    s.path = Segment::line(end_, end_);
-    out.moves.push_back(s);
-    out.blockOf.push_back(block);
-  }
-  void blockDone(const StateSnapshot&) override {}
-  void alarm(const Diagnostic& d) override {
-    if (!alarmSeen) alarmSeen = d;
-  }
-  void end() override {}
-  bool halted() const override { return alarmSeen.has_value(); }
-  double elapsed() const override { return chain.elapsed(); }
-
-  // F, S, T of a G70 profile apply from the block's move on, when the cycle runs.
-  void feed(double mm) {
-    if (withFeed) pendingFeed = mm;
-  }
-  void speed(const Word& s) {
-    if (withFeed) pendingS = &words.emplace_back(s);
-  }
-  void tool(const Word& t) {
-    if (withFeed) pendingT = &words.emplace_back(t);
-  }
-  void take(cycles::Step& s) {
-    s.feed = pendingFeed;
-    s.sWord = pendingS;
-    s.tWord = pendingT;
-    pendingFeed = 0.0;
-    pendingS = pendingT = nullptr;
-  }
-
-  const bool withFeed;
-  cycles::Profile& out;
-  const MachineSink& chain;
-  std::deque<Word>& words;
-  std::optional<Diagnostic> alarmSeen;
-  double pendingFeed = 0.0;
-  const Word* pendingS = nullptr;
-  const Word* pendingT = nullptr;
-  Vec2 end_ = Vec2::Zero();
-  int block = 0;
-};
-
-// A block the profile may not hold: `what` names it.
-bool Interpreter::profileOnly(const char* what, const Word* where) {
-  return raise(codes::kProfileCommandNotAllowed, where, {what, std::to_string(block_->line)});
-}
-
-bool Interpreter::profileBlockAllowed(const CodeWord* motion, const CodeWord* cycle, const CodeWord* oneShot,
-                                      const CodeWord* single) {
-  for (const CodeWord* c : {cycle, single})
-    if (c) return profileOnly(wordText(*c->word).c_str(), c->word);
-  if (motion && motion->info->action == CodeAction::Thread)
-    return profileOnly(wordText(*motion->word).c_str(), motion->word);
-  if (oneShot && oneShot->info->action != CodeAction::Dwell)
-    return profileOnly(wordText(*oneShot->word).c_str(), oneShot->word);
-  return true;
-}
-
-// A T in a G70 profile: its offset counts from this block's own target on,
-// and the cycle changes the tool when it gets there. The roughing cycles ignore it.
-bool Interpreter::captureTool(const Word& t) {
-  if (!capture_->withFeed) return true;
-  capture_->tool(t);
-  const int number = gcode::splitToolNumber(t.code()).offset;
-  if (number == 0) {
-    mach_.offsetX = mach_.offsetZ = 0.0;
-  } else if (number > 0 && number <= io::kOffsetCount) {  // a negative T (a typing slip the check reports) names none
-    const io::Offset& o = offsets_.at(number);
-    mach_.offsetX = o.x;
-    mach_.offsetZ = o.z;
-  }
-  return true;
-}
-
-void Interpreter::captureFeed(double mm) { capture_->feed(mm); }
-void Interpreter::captureSpeed(const Word& s) { capture_->speed(s); }
 
 std::optional<cycles::CycleAlarm> Interpreter::readProfile(const Block& cycle, const Word* g, bool withFeed,
                                                            cycles::Profile& out) {
@@ -152,7 +44,7 @@ std::optional<cycles::CycleAlarm> Interpreter::readProfile(const Block& cycle, c
   out.nf = index.findSequence(section, qw->code(), out.ns - 1);
   if (out.nf < out.ns) out.nf = -1;
   if (out.nf < 0) return alarmAt(codes::kNoProfileBlock, qw, {name, "Q", qw->number.str()});
-  if (capture_) return alarmAt(codes::kProfileCommandNotAllowed, g, {name, std::to_string(cycle.line)});
+  // (A cycle in a profile is refused before it reads one: ProfileCapture::blockAllowed.)
 
   // Everything a block can change, put back when the profile has been read.
   const ModalState modal = modal_;
@@ -160,7 +52,7 @@ std::optional<cycles::CycleAlarm> Interpreter::readProfile(const Block& cycle, c
   const Vec2 pos = pos_;
   const gcode::Block* block = block_;
   const auto byLetter = byLetter_;
-  const int blockIndex = blockIndex_, resumeAfter = resumeAfter_;
+  const int blockIndex = blockIndex_, resumeAfter = resumeAfter_, snapshots = snapshots_;
   const bool movedThisBlock = movedThisBlock_, stopped = stopped_, stopEndsRun = stopEndsRun_,
              optionalStop = optionalStopBlock_;
   const CodeInfo* single = singleCycle_;
@@ -173,14 +65,13 @@ std::optional<cycles::CycleAlarm> Interpreter::readProfile(const Block& cycle, c
   std::swap(scratch, scratch_);  // the cycle block's evaluated words stay where `cycle` points
 
   profileWords_.clear();
-  ProfileCapture capture(withFeed, out, *chain, profileWords_);
-  capture.end_ = pos_;
+  ProfileCapture capture(withFeed, out, *chain, profileWords_, mach_, offsets_, pos_);
   // A corner held before the cycle stays held in the run's stage; the profile's own go through a stage of its own.
   CornerStage corners(capture, [this](const Segment& s, const SourceRange& at) { return pathWithinTravel(s, at); });
   CornerStage* runCorners = corners_;
   corners_ = &corners;
   sink_ = &corners;
-  capture_ = &capture;
+  effects_ = &capture;
   singleCycle_ = nullptr;
   drillCycle_ = nullptr;
   for (int i = out.ns; i <= out.nf && !capture.halted(); ++i) {
@@ -188,7 +79,7 @@ std::optional<cycles::CycleAlarm> Interpreter::readProfile(const Block& cycle, c
     if (b.blockSkip && options_.blockSkip) continue;
     block_ = &b;
     blockIndex_ = i;
-    capture.block = i;
+    capture.startBlock(i, b.line);
     if (b.statement.kind != gcode::StatementKind::None) {
       raise(codes::kProfileHasMacro, g, {name, std::to_string(b.line)});
       break;
@@ -196,7 +87,7 @@ std::optional<cycles::CycleAlarm> Interpreter::readProfile(const Block& cycle, c
     if (b.hasExpressions && !evaluateWords(b)) break;
     CodeWord call{};
     if (isMacroCallBlock(*block_, options_.dialect, call)) {
-      profileOnly(call.word->text().c_str(), call.word);
+      capture.refuse(call.word->text(), call.word);
       break;
     }
     if (!executeBlock()) break;
@@ -205,7 +96,8 @@ std::optional<cycles::CycleAlarm> Interpreter::readProfile(const Block& cycle, c
 
   sink_ = chain;
   corners_ = runCorners;
-  capture_ = nullptr;
+  effects_ = this;
+  snapshots_ = snapshots;
   std::swap(scratch, scratch_);
   modal_ = modal;
   mach_ = mach;
@@ -225,8 +117,7 @@ std::optional<cycles::CycleAlarm> Interpreter::readProfile(const Block& cycle, c
   g28X_ = g28X;
   g28Z_ = g28Z;
 
-  if (capture.alarmSeen)
-    return cycles::CycleAlarm{capture.alarmSeen->code, capture.alarmSeen->range, capture.alarmSeen->args};
+  if (const auto& seen = capture.alarmSeen()) return cycles::CycleAlarm{seen->code, seen->range, seen->args};
   // Only moves count for the roughing cycles.
   const auto moves = std::count_if(out.moves.begin(), out.moves.end(), [](const cycles::Step& s) {
     return s.kind == cycles::StepKind::Rapid || s.kind == cycles::StepKind::Feed;
