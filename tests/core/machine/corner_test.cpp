@@ -128,6 +128,40 @@ TEST(Corner, HaasReadsIOrKAsTheChamferOfA90DegreeCorner) {
   EXPECT_POINT(f[0]->path.end, 30.0, 0.0);
 }
 
+TEST(Corner, TwoCornersInARowShareTheMoveBetweenThem) {
+  // Face to X30 with ,C2, along Z to Z-20 with ,R3, up to X50: the Z move
+  // runs between the chamfer's end (X30 Z-2) and the arc's start (X30 Z-17).
+  const Timeline t = runText("G98 G00 X20. Z0.\nG01 X30. ,C2. F100.\nZ-20. ,R3.\nX50.\n");
+  ASSERT_FALSE(t.alarm) << t.alarm->code;
+  const auto c = cuts(t);
+  ASSERT_EQ(c.size(), 5u);
+  EXPECT_POINT(c[0]->path.end, 26.0, 0.0);
+  EXPECT_POINT(c[1]->path.end, 30.0, -2.0);
+  EXPECT_EQ(c[1]->line, 2);
+  EXPECT_POINT(c[2]->path.start, 30.0, -2.0);
+  EXPECT_POINT(c[2]->path.end, 30.0, -17.0);
+  EXPECT_EQ(c[2]->line, 3);
+  ASSERT_TRUE(c[3]->path.isArc());
+  EXPECT_POINT(c[3]->path.centre, 36.0, -17.0);
+  EXPECT_POINT(c[3]->path.end, 36.0, -20.0);
+  EXPECT_EQ(c[3]->line, 3);
+  EXPECT_POINT(c[4]->path.start, 36.0, -20.0);
+  EXPECT_POINT(c[4]->path.end, 50.0, -20.0);
+  EXPECT_EQ(c[4]->line, 4);
+}
+
+TEST(Corner, ARadiusStraightOnRoundsNothing) {
+  // ,R between two moves in one direction: no corner; the G01 runs whole.
+  const Timeline t = runText("G98 G00 X30. Z2.\nG01 Z-10. ,R2. F100.\nZ-20.\n");
+  ASSERT_FALSE(t.alarm) << t.alarm->code;
+  const auto c = cuts(t);
+  ASSERT_EQ(c.size(), 2u);
+  EXPECT_FALSE(c[0]->path.isArc());
+  EXPECT_POINT(c[0]->path.start, 30.0, 2.0);
+  EXPECT_POINT(c[0]->path.end, 30.0, -10.0);
+  EXPECT_POINT(c[1]->path.end, 30.0, -20.0);
+}
+
 TEST(Corner, ACornerLongerThanAMoveIsAnAlarm) {
   Timeline t = runText("G98 G00 X20. Z0.\nG01 X24. ,C3. F100.\nZ-20.\n");  // the face is 2 mm
   ASSERT_TRUE(t.alarm);

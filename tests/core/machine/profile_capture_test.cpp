@@ -72,6 +72,34 @@ TEST(ProfileCapture, G70CutsTheChamferAndCornerOfItsProfile) {
   EXPECT_EQ(t.moves.back().line, 4);
 }
 
+// A chamfer held by the block before the cycle is the run's, not the
+// profile's: the profile cuts its own corners, and the held ,C still has no
+// move of its own in the next block (A144 at the ,C of line 3).
+TEST(ProfileCapture, ACornerHeldBeforeTheCycleStaysTheRuns) {
+  const Timeline t =
+      runText(std::string("G98 G97 S500 M03\nG00 X50. Z2.\nG01 X52. ,C1. F100.\nG70 P10 Q20\nG00 X100. Z100.\nM30\n") +
+              kCornerProfile);
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->code, "A144");
+  EXPECT_EQ(t.alarm->range, (SourceRange{3, 10, 4}));
+  EXPECT_EQ(t.alarm->args, std::vector<std::string>{",C1."});
+  // The cycle's moves came first, its profile's corners cut; the held G01 never went.
+  expectCuts(cutsOf(t, 4), {{L, 20, 0}, {L, 26, 0}, {L, 30, -2}, {L, 30, -17}, {A, 36, -20}, {L, 50, -20}});
+  EXPECT_TRUE(cutsOf(t, 3).empty());
+}
+
+// An M98 in a profile is refused where it stands (the capture decides, not
+// the run): the alarm names the M98 and the cycle's profile line.
+TEST(ProfileCapture, ASubprogramCallInTheProfileIsRefused) {
+  const Timeline t = runText(
+      "G98 G97 S500 M03\nG00 X50. Z2.\nG70 P10 Q20 F100.\nM30\nN10 G00 X20.\nG01 Z0. M98 P100\nN20 X50.\n"
+      "O100\nG00 U1.\nM99\n");
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->code, "A150");
+  EXPECT_EQ(t.alarm->range, (SourceRange{6, 9, 3}));
+  EXPECT_EQ(t.alarm->args, (std::vector<std::string>{"M98", "6"}));
+}
+
 TEST(ProfileCapture, G71FinishesItsLastPassAlongTheChamferAndCorner) {
   // No finishing allowance: the last pass is the profile itself.
   const Timeline t =
