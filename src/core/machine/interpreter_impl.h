@@ -3,8 +3,13 @@
 //   interpreter.cpp          the block (in-block order of SPEC 7), T, M, C, group-01 motion
 //   interpreter_one_shot.cpp group 00: G04 G27 G28 G29 G30 G50 G53
 //   interpreter_cycles.cpp   G90/G92/G94, G70-G76 (both forms), G81-G83 drilling
-// It reads its dialect's rules from the machine profile (gcode/machine_profile.h),
-// never from the dialect itself.
+//   interpreter_corner.cpp   ,C ,R ,A on G01 (the CornerStage cuts the corner)
+//   interpreter_flow.cpp     the run loop, macro statements (the FlowEngine moves the counter)
+//   interpreter_macro.cpp    the system variables that show machine state (the MacroStore keeps the rest)
+//   interpreter_profile.cpp  G70-G73 reading their profile into a ProfileCapture
+// It owns the running block and the modal and machine state; the parts it
+// composes own the rest (README.md). It reads its dialect's rules from the
+// machine profile (gcode/machine_profile.h), never from the dialect itself.
 #include <fmt/format.h>
 
 #include <algorithm>
