@@ -19,7 +19,7 @@ Vec2 cornerUnitVector(const Vec2& v) {
 }
 
 // The direction a segment leaves its start.
-Vec2 startDirection(const Segment& s) {
+Vec2 cornerStartDirection(const Segment& s) {
   if (!s.isArc()) return cornerUnitVector(s.end - s.start);
   const Vec2 r = s.start - s.centre;
   const Vec2 t = s.ccw ? Vec2(-r.y(), r.x()) : Vec2(r.y(), -r.x());
@@ -27,7 +27,7 @@ Vec2 startDirection(const Segment& s) {
 }
 
 // The point of `s` at distance d from its start along the path (an arc: by chord, as the control measures it).
-std::optional<Vec2> pointFromStart(const Segment& s, double d) {
+std::optional<Vec2> cornerPointFromStart(const Segment& s, double d) {
   if (!s.isArc()) {
     const double len = (s.end - s.start).norm();
     if (d > len + 1e-9) return std::nullopt;
@@ -42,7 +42,7 @@ std::optional<Vec2> pointFromStart(const Segment& s, double d) {
   return Vec2(s.centre + r * Vec2(std::cos(phi), std::sin(phi)));
 }
 
-Segment withStart(const Segment& s, const Vec2& start) {
+Segment cornerWithStart(const Segment& s, const Vec2& start) {
   return s.isArc() ? Segment::arc(start, s.end, s.centre, s.ccw) : Segment::line(start, s.end);
 }
 
@@ -82,7 +82,7 @@ CornerStage::Cut CornerStage::follow(const MotionCall& m) {
   const Vec2 start = *done.pieceEnd;
   if ((m.path.end - start).norm() <= 1e-9) return done;  // the corner piece took all of the move
   MotionCall rest = m;
-  rest.path = withStart(m.path, start);
+  rest.path = cornerWithStart(m.path, start);
   if (!travel_(rest.path, m.where)) {
     done.ok = false;
     return done;
@@ -104,7 +104,7 @@ CornerStage::Cut CornerStage::cut(const MotionCall& m) {
   const double size = held.request.size;
   const double len1 = (first.end - first.start).norm();
   const Vec2 d1 = cornerUnitVector(first.end - first.start);
-  const Vec2 d2 = startDirection(path);
+  const Vec2 d2 = cornerStartDirection(path);
   const auto tooLong = [&]() {
     alarmAt(held, codes::kCornerLongerThanMove);
     return done;
@@ -114,7 +114,7 @@ CornerStage::Cut CornerStage::cut(const MotionCall& m) {
   if (held.request.kind == 'C') {
     if (size > len1 + 1e-9) return tooLong();
     p1 = corner - d1 * size;
-    const auto q = pointFromStart(path, size);
+    const auto q = cornerPointFromStart(path, size);
     if (!q) return tooLong();
     p2 = *q;
   } else {

@@ -17,7 +17,7 @@ using gcode::StatementKind;
 
 namespace {
 
-std::string loopText(const Block& b) {
+std::string flowLoopText(const Block& b) {
   return (b.statement.kind == StatementKind::End  ? "END"
           : b.statement.kind == StatementKind::Do ? "DO"
                                                   : "WHILE") +
@@ -26,7 +26,7 @@ std::string loopText(const Block& b) {
 
 // Argument specification I (Fanuc): A B C -> #1 #2 #3, I J K -> #4 #5 #6,
 // D E F -> #7 #8 #9, H -> #11, M -> #13, Q R S T U V W X Y Z -> #17 .. #26.
-void setArguments(const Block& b, MacroLocals& locals) {
+void flowSetArguments(const Block& b, MacroLocals& locals) {
   static constexpr int kArgument[26] = {1, 2, 3, 7,  8,  9,  0,  11, 4,  5,  6,  0,  13,
                                         0, 0, 0, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26};
   for (const gcode::Word& w : b.words) {
@@ -170,7 +170,7 @@ bool FlowEngine::loopLimits(const Block& b, const io::MachineConfig& m, const Ma
 bool FlowEngine::loopStart(const Block& b, bool enter) {
   const gcode::Statement& st = b.statement;
   const int end = loopPartner_[static_cast<std::size_t>(current_)];
-  if (end < 0) return alarm(codes::kUnmatchedLoopEnd, st.range, {loopText(b), "END" + std::to_string(st.loop)});
+  if (end < 0) return alarm(codes::kUnmatchedLoopEnd, st.range, {flowLoopText(b), "END" + std::to_string(st.loop)});
   if (enter)
     frames_.back().doBlock[static_cast<std::size_t>(st.loop)] = current_;
   else
@@ -181,9 +181,9 @@ bool FlowEngine::loopStart(const Block& b, bool enter) {
 bool FlowEngine::loopEnd(const Block& b) {
   const gcode::Statement& st = b.statement;
   const int start = loopPartner_[static_cast<std::size_t>(current_)];
-  if (start < 0) return alarm(codes::kUnmatchedLoopEnd, st.range, {loopText(b), "DO" + std::to_string(st.loop)});
+  if (start < 0) return alarm(codes::kUnmatchedLoopEnd, st.range, {flowLoopText(b), "DO" + std::to_string(st.loop)});
   next_ = start;  // WHILE tests its condition again
-  noteJump(st.range, loopText(b));
+  noteJump(st.range, flowLoopText(b));
   return true;
 }
 
@@ -245,7 +245,7 @@ bool FlowEngine::call(CallFrame::Kind kind, int number, int repeats, const Sourc
   f.localLevel = frames_.back().localLevel;
   f.localId = frames_.back().localId;
   if (macro) {
-    if (arguments) setArguments(*arguments, f.arguments);
+    if (arguments) flowSetArguments(*arguments, f.arguments);
     f.localLevel = macros_.pushLevel(f.arguments);
     f.localId = nextLocalId_++;
     if (log_) {
