@@ -33,107 +33,30 @@ namespace {
 
 using namespace klueng::core;
 
-struct CheckOptions {
+struct CheckOptions : JobOptions {
   std::vector<std::string> files;
-  Lang lang = Lang::En;
-  gcode::Dialect dialect = gcode::Dialect::Fanuc;
-  std::string machine;        // --machine NAME|FILE, resolved once the machines folders are read
-  bool dialectGiven = false;  // --dialect or --machine: wins over the machine a program names
   bool json = false;
   bool summary = false;
-  std::string configDir;
-  std::optional<io::JobHeader> stock;             // --stock
-  std::optional<gcode::InputUnits> powerOnUnits;  // --units
-  std::optional<bool> calculatorInput;            // --decimal-point
-  std::vector<std::string> tools;                 // --tool N=ID, checked once the turret size is known
 };
 
-// The message (a kCli* code and its args, or a text already in `lang`), then the usage.
-int usageError(Lang lang, const char* code, std::vector<std::string> args = {}) {
-  printCliError("check", code, lang, std::move(args));
-  std::fputs(cliText(codes::kCliCheckUsage, lang).c_str(), stderr);
-  return 2;
-}
-
-int usageError(Lang lang, const std::string& text) {
+// A --tool choice refused once the turret is known (a text already in `lang`), then the usage.
+int toolChoiceError(Lang lang, const std::string& text) {
   std::fprintf(stderr, "klueng-cli check: %s\n%s", text.c_str(), cliText(codes::kCliCheckUsage, lang).c_str());
   return 2;
 }
 
-// "--stock must be DxL..., not 'x'".
-int mustBe(Lang lang, const std::string& option, const char* allowed, const std::string& value) {
-  return usageError(lang, codes::kCliMustBe, {option, cliText(allowed, lang), value});
-}
-
-// Accepts "--opt value" and "--opt=value". Returns an exit code on error.
+// The command line by check's option table (cli_common.h). Returns an exit code to stop with.
 std::optional<int> parseArgs(const std::vector<std::string>& args, CheckOptions& o) {
-  o.lang = langOfArgs(args);
-  const Lang lang = o.lang;
-  bool onlyFiles = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    std::string arg = args[i];
-    if (onlyFiles || arg.rfind("--", 0) != 0 || arg == "--") {
-      if (!onlyFiles && arg == "--") {
-        onlyFiles = true;
-        continue;
-      }
-      o.files.push_back(arg);
-      continue;
-    }
-    if (arg == "--help") {
-      std::fputs(cliText(codes::kCliCheckUsage, lang).c_str(), stdout);
-      return 0;
-    }
-    if (arg == "--json") {
-      o.json = true;
-      continue;
-    }
-    if (arg == "--summary") {
-      o.summary = true;
-      continue;
-    }
-    std::string value;
-    bool hasValue = false;
-    if (const std::size_t eq = arg.find('='); eq != std::string::npos) {
-      value = arg.substr(eq + 1);
-      arg.resize(eq);
-      hasValue = true;
-    }
-    if (arg != "--lang" && arg != "--dialect" && arg != "--machine" && arg != "--config" && arg != "--stock" &&
-        arg != "--units" && arg != "--tool" && arg != "--decimal-point")
-      return usageError(lang, codes::kCliUnknownOption, {arg});
-    if (!hasValue) {
-      if (i + 1 >= args.size()) return usageError(lang, codes::kCliNeedsValue, {arg});
-      value = args[++i];
-    }
-    if (arg == "--lang") {
-      const auto lang = parseLang(value);
-      if (!lang) return mustBe(o.lang, arg, codes::kCliAllowedLang, value);
-      o.lang = *lang;
-    } else if (arg == "--dialect") {
-      const auto dialect = parseDialect(value);
-      if (!dialect) return mustBe(lang, arg, codes::kCliAllowedDialect, value);
-      o.dialect = *dialect;
-      o.dialectGiven = true;
-    } else if (arg == "--machine") {
-      o.machine = value;
-      o.dialectGiven = true;
-    } else if (arg == "--stock") {
-      o.stock = parseStock(value);
-      if (!o.stock) return mustBe(lang, arg, codes::kCliAllowedStock, value);
-    } else if (arg == "--units") {
-      o.powerOnUnits = parseUnits(value);
-      if (!o.powerOnUnits) return mustBe(lang, arg, codes::kCliAllowedUnits, value);
-    } else if (arg == "--decimal-point") {
-      o.calculatorInput = parseDecimalPoint(value);
-      if (!o.calculatorInput) return mustBe(lang, arg, codes::kCliAllowedDecimalPoint, value);
-    } else if (arg == "--tool") {
-      o.tools.push_back(value);
-    } else {
-      o.configDir = value;
-    }
-  }
-  if (o.files.empty()) return usageError(lang, codes::kCliNoFile);
+  std::vector<CliOption> options = machineOptions(o);
+  for (CliOption& row : runOptions(o)) options.push_back(std::move(row));
+  options.push_back(flagOption("--json", o.json));
+  options.push_back(flagOption("--summary", o.summary));
+  const auto file = [&o](const std::string& arg) {
+    o.files.push_back(arg);
+    return true;
+  };
+  if (const auto exit = parseCommandLine("check", codes::kCliCheckUsage, args, options, file)) return exit;
+  if (o.files.empty()) return usageError("check", codes::kCliCheckUsage, o.lang, codes::kCliNoFile);
   return std::nullopt;
 }
 
@@ -166,15 +89,16 @@ struct FileSummary {
 };
 
 void printSummary(const std::vector<FileSummary>& rows, Lang lang) {
-  const bool th = lang == Lang::Th;
+  const auto text = [lang](const char* code) { return cliText(code, lang); };
   std::size_t width = 4;
   for (const auto& r : rows) width = std::max(width, r.file.size());
-  std::string out = fmt::format("\n{:<{}}  {:>6}  {:>8}  {}\n", th ? "ไฟล์" : "file", width, th ? "ข้อผิดพลาด" : "errors",
-                                th ? "คำเตือน" : "warnings", th ? "ผล" : "result");
+  std::string out =
+      fmt::format("\n{:<{}}  {:>6}  {:>8}  {}\n", text(codes::kCliSummaryFile), width, text(codes::kCliSummaryErrors),
+                  text(codes::kCliSummaryWarnings), text(codes::kCliSummaryResult));
   for (const auto& r : rows) {
-    const char* result = r.unreadable ? (th ? "อ่านไม่ได้" : "unreadable")
-                         : r.errors   ? (th ? "ไม่ผ่าน" : "FAIL")
-                                      : (th ? "ผ่าน" : "ok");
+    const std::string result = text(r.unreadable ? codes::kCliSummaryUnreadable
+                                    : r.errors   ? codes::kCliSummaryFail
+                                                 : codes::kCliSummaryOk);
     out += fmt::format("{:<{}}  {:>6}  {:>8}  {}\n", r.file, width, r.errors, r.warnings, result);
   }
   std::fwrite(out.data(), 1, out.size(), stdout);
@@ -191,7 +115,7 @@ int runCheck(const std::vector<std::string>& args) {
   std::string error;
   std::optional<core::job::JobInput> request =
       jobRequest(config, o.dialect, o.powerOnUnits, o.stock, o.tools, error, o.lang);
-  if (!request) return usageError(o.lang, error);
+  if (!request) return toolChoiceError(o.lang, error);
   request->calculatorInput = o.calculatorInput;
 
   std::vector<FileDiagnostic> all = config.diagnostics;

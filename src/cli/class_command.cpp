@@ -35,87 +35,47 @@ namespace {
 
 using namespace klueng::core;
 
-struct ClassOptions {
-  std::string dir, reference, drawing, layer, generalTolerance, csv, pdf, configDir;
+struct ClassOptions : JobOptions {
+  std::string dir, reference, drawing, layer, generalTolerance, csv, pdf;
   bool sheets = false;
   double tolerance = 0.05;
-  gcode::Dialect dialect = gcode::Dialect::Fanuc;
-  std::string machine;        // --machine NAME|FILE
-  bool dialectGiven = false;  // --dialect or --machine: wins over the machine a program names
-  Lang lang = langFromLocale();
 };
 
-// The options, or nullopt after saying what is wrong (in the command's language).
-std::optional<ClassOptions> parse(const std::vector<std::string>& args) {
-  ClassOptions o;
-  o.lang = langOfArgs(args);
-  const Lang lang = o.lang;
-  const auto bad = [lang](const std::string& option, const std::string& value, const char* allowed) {
-    if (allowed)
-      printCliError("class", codes::kCliBadValue, lang, {value, option, cliText(allowed, lang)});
-    else
-      printCliError("class", codes::kCliBadValueAnyOf, lang, {value, option});
-    return std::nullopt;
+// class's option table (cli_common.h): the shared rows, then its own.
+std::optional<int> parseClassOptions(const std::vector<std::string>& args, ClassOptions& o) {
+  std::vector<CliOption> options = machineOptions(o);
+  const std::vector<CliOption> own = {
+      valueOption("--reference", o.reference),
+      valueOption("--drawing", o.drawing),
+      valueOption("--layer", o.layer),
+      valueOption("--csv", o.csv),
+      valueOption("--pdf", o.pdf),
+      flagOption("--sheets", o.sheets),
+      {"--general-tolerance",
+       {},
+       true,
+       codes::kCliAllowedGeneralTolerance,
+       [&o](const std::string& v) {
+         o.generalTolerance = v;
+         return design::generalTolerance(v, 10.0).has_value();
+       }},
+      {"--tolerance",
+       {},
+       true,
+       codes::kCliAllowedTolerance,
+       [&o](const std::string& v) {
+         char* end = nullptr;
+         o.tolerance = std::strtod(v.c_str(), &end);
+         return end && *end == '\0' && !v.empty() && o.tolerance >= 0.0 && o.tolerance <= 100.0;
+       }},
   };
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    const bool takesValue = a == "--reference" || a == "--drawing" || a == "--layer" || a == "--general-tolerance" ||
-                            a == "--csv" || a == "--pdf" || a == "--config" || a == "--tolerance" || a == "--dialect" ||
-                            a == "--machine" || a == "--lang";
-    if (takesValue && i + 1 >= args.size()) {
-      printCliError("class", codes::kCliNeedsValue, lang, {a});
-      return std::nullopt;
-    }
-    if (a == "--reference")
-      o.reference = args[++i];
-    else if (a == "--drawing")
-      o.drawing = args[++i];
-    else if (a == "--layer")
-      o.layer = args[++i];
-    else if (a == "--general-tolerance") {
-      o.generalTolerance = args[++i];
-      if (!design::generalTolerance(o.generalTolerance, 10.0))
-        return bad(a, o.generalTolerance, codes::kCliAllowedGeneralTolerance);
-    } else if (a == "--csv")
-      o.csv = args[++i];
-    else if (a == "--pdf")
-      o.pdf = args[++i];
-    else if (a == "--sheets")
-      o.sheets = true;
-    else if (a == "--config")
-      o.configDir = args[++i];
-    else if (a == "--machine") {
-      o.machine = args[++i];
-      o.dialectGiven = true;
-    } else if (a == "--tolerance") {
-      const std::string& v = args[++i];
-      char* end = nullptr;
-      o.tolerance = std::strtod(v.c_str(), &end);
-      if (!end || *end != '\0' || v.empty() || !(o.tolerance >= 0.0) || o.tolerance > 100.0) return bad(a, v, nullptr);
-    } else if (a == "--dialect") {
-      const auto d = parseDialect(args[++i]);
-      if (!d) return bad(a, args[i], codes::kCliAllowedDialect);
-      o.dialect = *d;
-      o.dialectGiven = true;
-    } else if (a == "--lang") {
-      const auto l = parseLang(args[++i]);
-      if (!l) return bad(a, args[i], codes::kCliAllowedLang);
-      o.lang = *l;
-    } else if (a.starts_with("--")) {
-      printCliError("class", codes::kCliUnknownOption, lang, {a});
-      return std::nullopt;
-    } else if (o.dir.empty()) {
-      o.dir = a;
-    } else {
-      printCliError("class", codes::kCliOneFile, lang, {o.dir, a});
-      return std::nullopt;
-    }
-  }
-  if (o.dir.empty() || (o.reference.empty() && o.drawing.empty())) {
-    printCliError("class", codes::kCliClassNeeds, lang);
-    return std::nullopt;
-  }
-  return o;
+  options.insert(options.end(), own.begin(), own.end());
+  const auto exit =
+      parseCommandLine("class", codes::kCliClassUsage, args, options, oneFile("class", o.dir, langOfArgs(args)));
+  if (exit) return exit;
+  if (o.dir.empty() || (o.reference.empty() && o.drawing.empty()))
+    return usageError("class", codes::kCliClassUsage, o.lang, codes::kCliClassNeeds);
+  return std::nullopt;
 }
 
 // The table as the picture module draws it (klueng-png.so, opened only for --pdf).
@@ -152,16 +112,8 @@ std::optional<std::vector<cut::DrawnDimension>> readDrawing(const ClassOptions& 
 }  // namespace
 
 int runClass(const std::vector<std::string>& args) {
-  if (std::find(args.begin(), args.end(), "--help") != args.end()) {
-    std::fputs(cliText(codes::kCliClassUsage, langOfArgs(args)).c_str(), stdout);
-    return 0;
-  }
-  std::optional<ClassOptions> parsed = parse(args);
-  if (!parsed) {
-    std::fputs(cliText(codes::kCliClassUsage, langOfArgs(args)).c_str(), stderr);
-    return 2;
-  }
-  ClassOptions& o = *parsed;
+  ClassOptions o;
+  if (const auto exit = parseClassOptions(args, o)) return *exit;
   LoadedConfig config = loadConfig(o.configDir);
   if (!chooseMachine(o.machine, config, o.dialect, o.lang)) return 2;
   for (const auto& fd : config.diagnostics) printDiagnostic(stderr, fd.file, fd.diagnostic, o.lang);

@@ -60,6 +60,157 @@ void printCliError(const char* command, const char* code, Lang lang, std::vector
   std::fwrite(line.data(), 1, line.size(), stderr);
 }
 
+int usageError(const char* command, const char* usage, Lang lang, const char* code, std::vector<std::string> args) {
+  printCliError(command, code, lang, std::move(args));
+  std::fputs(cliText(usage, lang).c_str(), stderr);
+  return 2;
+}
+
+std::optional<int> parseCommandLine(const char* command, const char* usage, const std::vector<std::string>& args,
+                                    const std::vector<CliOption>& options,
+                                    const std::function<bool(const std::string&)>& positional) {
+  // Mistakes before --lang are already said in its language.
+  const Lang lang = langOfArgs(args);
+  for (const std::string& a : args) {
+    if (a == "--") break;  // a file may be called --help after it
+    if (a == "--help" || a == "-h") {
+      std::fputs(cliText(usage, lang).c_str(), stdout);
+      return 0;
+    }
+  }
+  bool onlyFiles = false;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    std::string arg = args[i];
+    if (!onlyFiles && arg == "--") {
+      onlyFiles = true;
+      continue;
+    }
+    if (onlyFiles || arg.size() < 2 || arg[0] != '-') {
+      if (!positional(arg)) {
+        std::fputs(cliText(usage, lang).c_str(), stderr);
+        return 2;
+      }
+      continue;
+    }
+    std::optional<std::string> value;  // "--opt=value"
+    if (const std::size_t eq = arg.find('='); eq != std::string::npos && arg.rfind("--", 0) == 0) {
+      value = arg.substr(eq + 1);
+      arg.resize(eq);
+    }
+    const auto row = std::find_if(options.begin(), options.end(), [&](const CliOption& o) {
+      return arg == o.name || (!o.alias.empty() && arg == o.alias);
+    });
+    if (row == options.end()) return usageError(command, usage, lang, codes::kCliUnknownOption, {arg});
+    if (row->takesValue && !value) {
+      if (i + 1 >= args.size()) return usageError(command, usage, lang, codes::kCliNeedsValue, {arg});
+      value = args[++i];
+    }
+    if (!row->takesValue && value) return usageError(command, usage, lang, codes::kCliBadValueAnyOf, {*value, arg});
+    if (row->apply(value.value_or(std::string()))) continue;
+    if (row->allowed)
+      return usageError(command, usage, lang, codes::kCliBadValue, {*value, arg, cliText(row->allowed, lang)});
+    return usageError(command, usage, lang, codes::kCliBadValueAnyOf, {*value, arg});
+  }
+  return std::nullopt;
+}
+
+std::vector<CliOption> machineOptions(JobOptions& o) {
+  o.lang = langFromLocale();
+  return {
+      {"--lang",
+       {},
+       true,
+       codes::kCliAllowedLang,
+       [&o](const std::string& v) {
+         const auto lang = parseLang(v);
+         if (lang) o.lang = *lang;
+         return lang.has_value();
+       }},
+      {"--dialect",
+       {},
+       true,
+       codes::kCliAllowedDialect,
+       [&o](const std::string& v) {
+         const auto dialect = parseDialect(v);
+         if (dialect) o.dialect = *dialect;
+         o.dialectGiven = true;
+         return dialect.has_value();
+       }},
+      {"--machine",
+       {},
+       true,
+       nullptr,
+       [&o](const std::string& v) {
+         o.machine = v;
+         o.dialectGiven = true;
+         return !v.empty();
+       }},
+      valueOption("--config", o.configDir),
+  };
+}
+
+std::vector<CliOption> runOptions(JobOptions& o) {
+  return {
+      {"--stock",
+       {},
+       true,
+       codes::kCliAllowedStock,
+       [&o](const std::string& v) {
+         o.stock = parseStock(v);
+         return o.stock.has_value();
+       }},
+      {"--units",
+       {},
+       true,
+       codes::kCliAllowedUnits,
+       [&o](const std::string& v) {
+         o.powerOnUnits = parseUnits(v);
+         return o.powerOnUnits.has_value();
+       }},
+      {"--decimal-point",
+       {},
+       true,
+       codes::kCliAllowedDecimalPoint,
+       [&o](const std::string& v) {
+         o.calculatorInput = parseDecimalPoint(v);
+         return o.calculatorInput.has_value();
+       }},
+      {"--tool",
+       {},
+       true,
+       nullptr,
+       [&o](const std::string& v) {
+         o.tools.push_back(v);  // its form and station are checked by jobRequest, in the run's language
+         return true;
+       }},
+  };
+}
+
+CliOption flagOption(std::string name, bool& target) {
+  return {std::move(name), {}, false, nullptr, [&target](const std::string&) {
+            target = true;
+            return true;
+          }};
+}
+
+CliOption valueOption(std::string name, std::string& target, std::string alias) {
+  return {std::move(name), std::move(alias), true, nullptr, [&target](const std::string& v) {
+            target = v;
+            return true;
+          }};
+}
+
+std::function<bool(const std::string&)> oneFile(const char* command, std::string& target, Lang lang) {
+  return [command, &target, lang](const std::string& arg) {
+    if (!target.empty()) {
+      printCliError(command, codes::kCliOneFile, lang, {target, arg});
+      return false;
+    }
+    target = arg;
+    return true;
+  };
+}
+
 std::optional<Lang> parseLang(std::string_view text) {
   if (text == "en") return Lang::En;
   if (text == "th") return Lang::Th;

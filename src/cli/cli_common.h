@@ -4,6 +4,7 @@
 // style or as JSON.
 #include <array>
 #include <cstdio>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -35,6 +36,49 @@ core::Lang langOfArgs(const std::vector<std::string>& args);
 std::string cliText(const char* code, core::Lang lang, std::vector<std::string> args = {});
 // "klueng-cli COMMAND: <text>\n" on stderr.
 void printCliError(const char* command, const char* code, core::Lang lang, std::vector<std::string> args = {});
+
+// One row of a command's option table (issue 30 item 5). Every command parses its
+// command line with parseCommandLine over its own rows, so the forms ("--opt v",
+// "--opt=v", "--" before file names, --help), the mistakes, their two languages
+// and exit 2 are the same everywhere; the rows for the options that several
+// commands share are made by the functions below, once.
+struct CliOption {
+  std::string name;                               // "--stock"
+  std::string alias;                              // "-o", or empty
+  bool takesValue = false;                        // a flag takes none
+  const char* allowed = nullptr;                  // kCliAllowed*: what a refused value may be
+  std::function<bool(const std::string&)> apply;  // false: the value is refused
+};
+// What several commands share: the language, the machine, the setup folder, the run's inputs.
+struct JobOptions {
+  core::Lang lang = core::Lang::En;
+  core::gcode::Dialect dialect = core::gcode::Dialect::Fanuc;
+  bool dialectGiven = false;                 // --dialect or --machine: wins over the machine a program names
+  std::string machine;                       // --machine NAME|FILE, resolved once the machines folders are read
+  std::string configDir;                     // --config DIR
+  std::optional<core::io::JobHeader> stock;  // --stock
+  std::optional<core::gcode::InputUnits> powerOnUnits;  // --units
+  std::optional<bool> calculatorInput;                  // --decimal-point
+  std::vector<std::string> tools;                       // --tool N=ID, checked once the turret size is known
+};
+// --lang --dialect --machine --config: every command's rows.
+std::vector<CliOption> machineOptions(JobOptions& o);
+// --stock --units --decimal-point --tool: the rows of the commands that run a program.
+std::vector<CliOption> runOptions(JobOptions& o);
+CliOption flagOption(std::string name, bool& target);
+CliOption valueOption(std::string name, std::string& target, std::string alias = {});
+// A positional argument handler taking one file into `target` (a second: kCliOneFile).
+std::function<bool(const std::string&)> oneFile(const char* command, std::string& target, core::Lang lang);
+
+// Parses `args` by `options`; `positional` takes the other arguments (false: it said why).
+// Returns nullopt to go on, else the exit status: 0 after printing the usage (`usage`, a
+// kCli*Usage code) for --help or -h, 2 after a mistake and the usage on stderr.
+std::optional<int> parseCommandLine(const char* command, const char* usage, const std::vector<std::string>& args,
+                                    const std::vector<CliOption>& options,
+                                    const std::function<bool(const std::string&)>& positional);
+// A mistake found after parsing (a missing file...): the message, the usage, 2.
+int usageError(const char* command, const char* usage, core::Lang lang, const char* code,
+               std::vector<std::string> args = {});
 
 // A part design (JSON, or a DXF's outline on `layer`) read as its drawn
 // dimensions with their tolerances (`general`: an ISO 2768 class for the ones

@@ -1,5 +1,5 @@
 // klueng-cli generate PART.json|PART.dxf -o OUT.nc [--dialect fanuc|haas|classic] [--machine NAME|FILE] [--material M]
-//                   [--tool-material hss|carbide] [--layer NAME] [--stock DxL[xBORE]] [--lang en|th] [--config DIR]
+//                   [--tool-material hss|carbide] [--layer NAME] [--stock DxL[xBORE][in]] [--lang en|th] [--config DIR]
 // Issue 14: a part design (docs/parts.md) or a DXF half section to a complete program, written atomically.
 // Exit 0 written, 1 the part cannot be turned (reasons on stderr), 2 bad use or files.
 #include <algorithm>
@@ -30,73 +30,56 @@ bool isDxf(const std::string& path) {
   return ext == ".dxf";
 }
 
-// "50x100" or "50x100x16" (mm): the bar, and a tube's hole.
-bool parseStock(const std::string& v, double& d, double& l, double& bore) {
-  char x1 = 0, x2 = 0, tail = 0;
-  bore = 0.0;
-  const int n = std::sscanf(v.c_str(), "%lf%c%lf%c%lf%c", &d, &x1, &l, &x2, &bore, &tail);
-  const bool sizes = d > 0.0 && l > 0.0 && d <= 10000.0 && l <= 10000.0 && (x1 == 'x' || x1 == 'X');
-  if (n == 3) return sizes;
-  return n == 5 && sizes && (x2 == 'x' || x2 == 'X') && bore > 0.0 && bore < d;
-}
-
 }  // namespace
 
 int runGenerate(const std::vector<std::string>& args) {
-  const Lang lang = langOfArgs(args);
-  const std::string usage = cliText(codes::kCliGenerateUsage, lang);
-  if (std::find(args.begin(), args.end(), "--help") != args.end()) {
-    std::fputs(usage.c_str(), stdout);
-    return 0;
-  }
-  std::string file, out, configDir;
-  std::string machine;  // --machine NAME|FILE
+  JobOptions job;
+  std::string file, out;
   std::optional<std::string> material, toolMaterial;
-  std::optional<std::array<double, 3>> stock;
   design::DxfImportOptions dxfOptions;
+  // generate's option table (cli_common.h): the shared rows, then its own. --stock is the
+  // bar the design is turned from, read as check and simulate read it (a size in inches is
+  // turned into millimetres, the design's unit).
+  std::vector<CliOption> table = machineOptions(job);
+  const std::vector<CliOption> own = {
+      valueOption("--output", out, "-o"),
+      valueOption("--layer", dxfOptions.layer),
+      {"--material",
+       {},
+       true,
+       nullptr,
+       [&material](const std::string& v) {
+         material = v;
+         return !v.empty();
+       }},
+      {"--tool-material",
+       {},
+       true,
+       codes::kCliAllowedToolMaterial,
+       [&toolMaterial](const std::string& v) {
+         toolMaterial = v;
+         return v == "hss" || v == "carbide";
+       }},
+      {"--stock",
+       {},
+       true,
+       codes::kCliAllowedStock,
+       [&job](const std::string& v) {
+         job.stock = parseStock(v);
+         return job.stock.has_value();
+       }},
+  };
+  table.insert(table.end(), own.begin(), own.end());
+  const auto exit =
+      parseCommandLine("generate", codes::kCliGenerateUsage, args, table, oneFile("generate", file, langOfArgs(args)));
+  if (exit) return *exit;
+  if (file.empty() || out.empty())
+    return usageError("generate", codes::kCliGenerateUsage, job.lang, codes::kCliGenerateNeeds);
   design::GenerateOptions options;
-  options.lang = lang;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a.rfind("-", 0) != 0) {
-      file = a;
-      continue;
-    }
-    if (i + 1 >= args.size()) {
-      printCliError("generate", codes::kCliNeedsValue, lang, {a});
-      std::fputs(usage.c_str(), stderr);
-      return 2;
-    }
-    const std::string v = args[++i];
-    if (a == "-o" || a == "--output")
-      out = v;
-    else if (a == "--config")
-      configDir = v;
-    else if (a == "--material")
-      material = v;
-    else if (a == "--tool-material" && (v == "hss" || v == "carbide"))
-      toolMaterial = v;
-    else if (a == "--dialect" && parseDialect(v))
-      options.dialect = *parseDialect(v);
-    else if (a == "--machine")
-      machine = v;
-    else if (a == "--layer")
-      dxfOptions.layer = v;
-    else if (std::array<double, 3> s{}; a == "--stock" && parseStock(v, s[0], s[1], s[2]))
-      stock = s;
-    else if (a == "--lang" && parseLang(v))
-      options.lang = *parseLang(v);
-    else {
-      printCliError("generate", codes::kCliBadOption, lang, {a, v});
-      std::fputs(usage.c_str(), stderr);
-      return 2;
-    }
-  }
-  if (file.empty() || out.empty()) {
-    printCliError("generate", codes::kCliGenerateNeeds, lang);
-    std::fputs(usage.c_str(), stderr);
-    return 2;
-  }
+  options.lang = job.lang;
+  options.dialect = job.dialect;
+  const std::string& configDir = job.configDir;
+  const std::string& machine = job.machine;
   LoadedConfig config = loadConfig(configDir);
   // --machine NAME|FILE: the program in that machine's G-code system, with its machine.cfg keys.
   if (!chooseMachine(machine, config, options.dialect, options.lang)) return 2;
@@ -118,10 +101,10 @@ int runGenerate(const std::vector<std::string>& args) {
   if (!design.ok()) return 2;
   if (material) design.value->material = *material;
   if (toolMaterial) design.value->toolMaterial = *toolMaterial;
-  if (stock) {
-    design.value->stockDiameter = (*stock)[0];
-    design.value->stockLength = (*stock)[1];
-    design.value->stockBore = (*stock)[2];
+  if (job.stock) {
+    design.value->stockDiameter = job.stock->diameterMm();
+    design.value->stockLength = job.stock->lengthMm();
+    design.value->stockBore = job.stock->boreMm();
   }
   std::vector<Diagnostic> why;
   const auto program = design::generateProgram(*design.value, options, &why);

@@ -26,104 +26,37 @@ using namespace klueng::core;
 
 namespace {
 
-struct PrintOptions {
+struct PrintOptions : JobOptions {
   std::string file;
   std::string pdf;
   bool program = true;
   bool drawing = true;
-  Lang lang = Lang::En;
-  gcode::Dialect dialect = gcode::Dialect::Fanuc;
-  bool dialectGiven = false;  // --dialect or --machine: wins over the machine a program names
-  std::string machine;        // --machine NAME|FILE
-  std::optional<io::JobHeader> stock;
-  std::optional<gcode::InputUnits> powerOnUnits;
-  std::optional<bool> calculatorInput;
-  std::string configDir;
-  std::vector<std::string> tools;
   std::string design;  // --design PART.json|PART.dxf: its tolerances on the drawing
 };
 
-std::optional<PrintOptions> parse(const std::vector<std::string>& args) {
-  PrintOptions o;
-  o.lang = langOfArgs(args);
-  const Lang lang = o.lang;
-  const auto bad = [lang](const std::string& option, const std::string& value, const char* allowed) {
-    printCliError("print", codes::kCliBadValue, lang, {value, option, cliText(allowed, lang)});
-    return std::nullopt;
-  };
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a.rfind("--", 0) != 0) {
-      if (!o.file.empty()) {
-        printCliError("print", codes::kCliOneFile, lang, {o.file, a});
-        return std::nullopt;
-      }
-      o.file = a;
-      continue;
-    }
-    if (i + 1 >= args.size()) {
-      printCliError("print", codes::kCliNeedsValue, lang, {a});
-      return std::nullopt;
-    }
-    const std::string v = args[++i];
-    if (a == "--pdf") {
-      o.pdf = v;
-    } else if (a == "--sheet") {
-      if (v != "program" && v != "drawing" && v != "both") return bad(a, v, codes::kCliAllowedSheet);
-      o.program = v != "drawing";
-      o.drawing = v != "program";
-    } else if (a == "--lang") {
-      const auto lang = parseLang(v);
-      if (!lang) return bad(a, v, codes::kCliAllowedLang);
-      o.lang = *lang;
-    } else if (a == "--dialect") {
-      const auto dialect = parseDialect(v);
-      if (!dialect) return bad(a, v, codes::kCliAllowedDialect);
-      o.dialect = *dialect;
-      o.dialectGiven = true;
-    } else if (a == "--machine") {
-      o.machine = v;
-      o.dialectGiven = true;
-    } else if (a == "--design") {
-      o.design = v;
-    } else if (a == "--stock") {
-      o.stock = parseStock(v);
-      if (!o.stock) return bad(a, v, codes::kCliAllowedStock);
-    } else if (a == "--units") {
-      o.powerOnUnits = parseUnits(v);
-      if (!o.powerOnUnits) return bad(a, v, codes::kCliAllowedUnits);
-    } else if (a == "--decimal-point") {
-      o.calculatorInput = parseDecimalPoint(v);
-      if (!o.calculatorInput) return bad(a, v, codes::kCliAllowedDecimalPoint);
-    } else if (a == "--config") {
-      o.configDir = v;
-    } else if (a == "--tool") {
-      o.tools.push_back(v);
-    } else {
-      printCliError("print", codes::kCliUnknownOption, lang, {a});
-      return std::nullopt;
-    }
-  }
-  if (o.file.empty() || o.pdf.empty()) {
-    printCliError("print", codes::kCliPrintNeeds, lang);
-    return std::nullopt;
-  }
-  return o;
+// print's option table (cli_common.h): the shared rows, then its own.
+std::optional<int> parsePrintOptions(const std::vector<std::string>& args, PrintOptions& o) {
+  std::vector<CliOption> options = machineOptions(o);
+  for (CliOption& row : runOptions(o)) options.push_back(std::move(row));
+  options.push_back(valueOption("--pdf", o.pdf));
+  options.push_back(valueOption("--design", o.design));
+  options.push_back({"--sheet", {}, true, codes::kCliAllowedSheet, [&o](const std::string& v) {
+                       o.program = v != "drawing";
+                       o.drawing = v != "program";
+                       return v == "program" || v == "drawing" || v == "both";
+                     }});
+  const auto exit =
+      parseCommandLine("print", codes::kCliPrintUsage, args, options, oneFile("print", o.file, langOfArgs(args)));
+  if (exit) return exit;
+  if (o.file.empty() || o.pdf.empty()) return usageError("print", codes::kCliPrintUsage, o.lang, codes::kCliPrintNeeds);
+  return std::nullopt;
 }
 
 }  // namespace
 
 int runPrint(const std::vector<std::string>& args) {
-  if (std::find(args.begin(), args.end(), "--help") != args.end()) {
-    std::fputs(cliText(codes::kCliPrintUsage, langOfArgs(args)).c_str(), stdout);
-    return 0;
-  }
-  std::optional<PrintOptions> parsed = parse(args);
-  if (!parsed) {
-    std::fputs(cliText(codes::kCliPrintUsage, langOfArgs(args)).c_str(), stderr);
-    return 2;
-  }
-  PrintOptions& o = *parsed;
+  PrintOptions o;
+  if (const auto exit = parsePrintOptions(args, o)) return *exit;
   LoadedConfig config = loadConfig(o.configDir);
   // The machine the program names at its head, unless --machine or --dialect chose one.
   std::vector<Diagnostic> machineWarnings;

@@ -15,7 +15,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -45,7 +44,7 @@ namespace {
 
 using namespace klueng::core;
 
-struct SimulateOptions {
+struct SimulateOptions : JobOptions {
   std::string file;
   std::string tracePath;
   bool cycleTime = false;
@@ -53,144 +52,60 @@ struct SimulateOptions {
   bool compareCompensation = false;  // --compare-compensation [none|sharp]
   bool compareSharp = false;
   double partTolerance = 0.01;  // --part-tolerance MM (leftover allowed, radial)
-  std::string configDir;
-  Lang lang = Lang::En;
-  gcode::Dialect dialect = gcode::Dialect::Fanuc;
-  bool dialectGiven = false;  // --dialect or --machine: wins over the machine a program names
-  std::string machine;        // --machine NAME|FILE
   bool optionalStop = false;
   bool blockSkip = false;
-  bool persistVariables = true;        // write #500-#999 back to macro_variables.cfg (config or user data folder)
-  CutOutputOptions cut;                // --png --profile --json --resolution (cut_outputs.h)
-  std::optional<io::JobHeader> stock;  // --stock
-  std::optional<gcode::InputUnits> powerOnUnits;  // --units
-  std::optional<bool> calculatorInput;            // --decimal-point
-  std::optional<DisplayUnits> showUnits;          // --show-units (nullopt: auto, the program's)
-  std::vector<std::string> tools;                 // --tool N=ID, checked once the turret size is known
+  bool noPersist = false;                 // --no-persist: keep macro_variables.cfg as it is
+  CutOutputOptions cut;                   // --png --profile --json --resolution (cut_outputs.h)
+  std::optional<DisplayUnits> showUnits;  // --show-units (nullopt: auto, the program's)
 };
 
-// One row per option: name, whether it takes a value, what it does. New
-// outputs (--png, --json, ...) add a row here and a step in runSimulate.
-struct OptionSpec {
-  const char* name;
-  bool takesValue;
-  std::function<bool(SimulateOptions&, const std::string&)> apply;  // false: bad value
-};
-
-const std::vector<OptionSpec>& optionSpecs() {
-  static const std::vector<OptionSpec> specs = {
-      {"--trace", true,
-       [](SimulateOptions& o, const std::string& v) {
-         o.tracePath = v;
-         return true;
-       }},
-      {"--cycle-time", false,
-       [](SimulateOptions& o, const std::string&) {
-         o.cycleTime = true;
-         return true;
-       }},
-      {"--config", true,
-       [](SimulateOptions& o, const std::string& v) {
-         o.configDir = v;
-         return true;
-       }},
-      {"--lang", true,
-       [](SimulateOptions& o, const std::string& v) {
-         const auto lang = parseLang(v);
-         if (lang) o.lang = *lang;
-         return lang.has_value();
-       }},
-      {"--dialect", true,
-       [](SimulateOptions& o, const std::string& v) {
-         const auto dialect = parseDialect(v);
-         if (dialect) o.dialect = *dialect;
-         o.dialectGiven = true;
-         return dialect.has_value();
-       }},
-      {"--machine", true,
-       [](SimulateOptions& o, const std::string& v) {
-         o.machine = v;
-         o.dialectGiven = true;
-         return true;
-       }},
-      {"--optional-stop", false,
-       [](SimulateOptions& o, const std::string&) {
-         o.optionalStop = true;
-         return true;
-       }},
-      {"--block-skip", false,
-       [](SimulateOptions& o, const std::string&) {
-         o.blockSkip = true;
-         return true;
-       }},
-      {"--no-persist", false,
-       [](SimulateOptions& o, const std::string&) {
-         o.persistVariables = false;
-         return true;
-       }},
-      {"--png", true,
-       [](SimulateOptions& o, const std::string& v) {
-         o.cut.pngPath = v;
-         return true;
-       }},
-      {"--profile", true,
-       [](SimulateOptions& o, const std::string& v) {
-         o.cut.profilePath = v;
-         return true;
-       }},
-      {"--json", true,
-       [](SimulateOptions& o, const std::string& v) {
-         o.cut.jsonPath = v;
-         return true;
-       }},
-      {"--part-check", false,
-       [](SimulateOptions& o, const std::string&) {
-         o.partCheck = true;
-         return true;
-       }},
-      {"--part-tolerance", true,
-       [](SimulateOptions& o, const std::string& v) {
+// simulate's option table (cli_common.h): the shared rows, then its own. New outputs
+// (--png, --json, ...) add a row here and a step in runSimulate.
+std::optional<int> parseSimulateOptions(const std::vector<std::string>& args, SimulateOptions& o) {
+  std::vector<CliOption> options = machineOptions(o);
+  for (CliOption& row : runOptions(o)) options.push_back(std::move(row));
+  bool noStock = false;
+  const std::vector<CliOption> own = {
+      valueOption("--trace", o.tracePath),
+      flagOption("--cycle-time", o.cycleTime),
+      flagOption("--optional-stop", o.optionalStop),
+      flagOption("--block-skip", o.blockSkip),
+      flagOption("--no-persist", o.noPersist),
+      valueOption("--png", o.cut.pngPath),
+      valueOption("--profile", o.cut.profilePath),
+      valueOption("--json", o.cut.jsonPath),
+      valueOption("--svg", o.cut.svgPath),
+      valueOption("--dxf", o.cut.dxfPath),
+      flagOption("--features", o.cut.features),
+      flagOption("--no-stock", noStock),
+      flagOption("--part-check", o.partCheck),
+      {"--part-tolerance",
+       {},
+       true,
+       codes::kCliAllowedMillimetres,
+       [&o](const std::string& v) {
          o.partCheck = true;
          return parseResolution(v, o.partTolerance);
        }},
-      {"--compare-compensation", true,
-       [](SimulateOptions& o, const std::string& v) {
+      {"--resolution",
+       {},
+       true,
+       codes::kCliAllowedMillimetres,
+       [&o](const std::string& v) { return parseResolution(v, o.cut.resolution); }},
+      {"--compare-compensation",
+       {},
+       true,
+       codes::kCliAllowedCompare,
+       [&o](const std::string& v) {
          o.compareCompensation = true;
          o.compareSharp = v == "sharp";
          return v == "none" || v == "sharp";
        }},
-      {"--features", false,
-       [](SimulateOptions& o, const std::string&) {
-         o.cut.features = true;
-         return true;
-       }},
-      {"--svg", true,
-       [](SimulateOptions& o, const std::string& v) {
-         o.cut.svgPath = v;
-         return true;
-       }},
-      {"--dxf", true,
-       [](SimulateOptions& o, const std::string& v) {
-         o.cut.dxfPath = v;
-         return true;
-       }},
-      {"--no-stock", false,
-       [](SimulateOptions& o, const std::string&) {
-         o.cut.enabled = false;
-         return true;
-       }},
-      {"--stock", true,
-       [](SimulateOptions& o, const std::string& v) {
-         o.stock = parseStock(v);
-         return o.stock.has_value();
-       }},
-      {"--units", true,
-       [](SimulateOptions& o, const std::string& v) {
-         o.powerOnUnits = parseUnits(v);
-         return o.powerOnUnits.has_value();
-       }},
-      {"--show-units", true,
-       [](SimulateOptions& o, const std::string& v) {
+      {"--show-units",
+       {},
+       true,
+       codes::kCliAllowedShowUnits,
+       [&o](const std::string& v) {
          if (v == "mm")
            o.showUnits = DisplayUnits::Mm;
          else if (v == "inch")
@@ -199,75 +114,17 @@ const std::vector<OptionSpec>& optionSpecs() {
            return false;
          return true;
        }},
-      {"--decimal-point", true,
-       [](SimulateOptions& o, const std::string& v) {
-         o.calculatorInput = parseDecimalPoint(v);
-         return o.calculatorInput.has_value();
-       }},
-      {"--tool", true,
-       [](SimulateOptions& o, const std::string& v) {
-         o.tools.push_back(v);
-         return true;
-       }},
-      {"--resolution", true,
-       [](SimulateOptions& o, const std::string& v) { return parseResolution(v, o.cut.resolution); }},
   };
-  return specs;
-}
-
-// What an option allows (a kCliAllowed* code), for the options whose values are a closed set or a form.
-const char* allowedValues(const std::string& option) {
-  if (option == "--stock") return codes::kCliAllowedStock;
-  if (option == "--units") return codes::kCliAllowedUnits;
-  if (option == "--decimal-point") return codes::kCliAllowedDecimalPoint;
-  if (option == "--lang") return codes::kCliAllowedLang;
-  if (option == "--dialect") return codes::kCliAllowedDialect;
-  if (option == "--resolution" || option == "--part-tolerance") return codes::kCliAllowedMillimetres;
-  return nullptr;
-}
-
-std::optional<SimulateOptions> parseOptions(const std::vector<std::string>& args) {
-  SimulateOptions o;
-  o.lang = langOfArgs(args);
-  const Lang lang = o.lang;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a.rfind("--", 0) != 0) {
-      if (!o.file.empty()) {
-        printCliError("simulate", codes::kCliOneFile, lang, {o.file, a});
-        return std::nullopt;
-      }
-      o.file = a;
-      continue;
-    }
-    const OptionSpec* spec = nullptr;
-    for (const auto& s : optionSpecs())
-      if (a == s.name) spec = &s;
-    if (!spec) {
-      printCliError("simulate", codes::kCliUnknownOption, lang, {a});
-      return std::nullopt;
-    }
-    std::string value;
-    if (spec->takesValue) {
-      if (i + 1 >= args.size()) {
-        printCliError("simulate", codes::kCliNeedsValue, lang, {a});
-        return std::nullopt;
-      }
-      value = args[++i];
-    }
-    if (!spec->apply(o, value)) {
-      if (const char* allowed = allowedValues(a))
-        printCliError("simulate", codes::kCliBadValue, lang, {value, a, cliText(allowed, lang)});
-      else
-        printCliError("simulate", codes::kCliBadValueAnyOf, lang, {value, a});
-      return std::nullopt;
-    }
-  }
+  options.insert(options.end(), own.begin(), own.end());
+  const auto exit = parseCommandLine("simulate", codes::kCliSimulateUsage, args, options,
+                                     oneFile("simulate", o.file, langOfArgs(args)));
+  if (exit) return exit;
+  if (noStock) o.cut.enabled = false;
   if (o.file.empty()) {
-    std::fputs(cliText(codes::kCliSimulateUsage, lang).c_str(), stderr);
-    return std::nullopt;
+    std::fputs(cliText(codes::kCliSimulateUsage, o.lang).c_str(), stderr);
+    return 2;
   }
-  return o;
+  return std::nullopt;
 }
 
 void printDiagnostic(const std::string& file, const Diagnostic& d, Lang lang) {
@@ -277,13 +134,8 @@ void printDiagnostic(const std::string& file, const Diagnostic& d, Lang lang) {
 }  // namespace
 
 int runSimulate(const std::vector<std::string>& args) {
-  if (std::find(args.begin(), args.end(), "--help") != args.end()) {
-    std::fputs(cliText(codes::kCliSimulateUsage, langOfArgs(args)).c_str(), stdout);
-    return 0;
-  }
-  std::optional<SimulateOptions> parsed = parseOptions(args);
-  if (!parsed) return 2;
-  SimulateOptions& o = *parsed;
+  SimulateOptions o;
+  if (const auto exit = parseSimulateOptions(args, o)) return *exit;
 
   // The machine files first: the checker needs to know which tools have a bitmap.
   LoadedConfig config = loadConfig(o.configDir);
@@ -335,7 +187,7 @@ int runSimulate(const std::vector<std::string>& args) {
   const io::MacroVariables before = variables;
   const machine::Timeline& timeline = *job.timeline();  // the run, with the stored #500-#999
   for (const Diagnostic& n : timeline.flow.notices) printDiagnostic(job.fileOf(n), n, o.lang);
-  if (variables != before && o.persistVariables && stored.value && !variablesPath.empty()) {
+  if (variables != before && !o.noPersist && stored.value && !variablesPath.empty()) {
     std::error_code ec;
     std::filesystem::create_directories(variablesDir, ec);  // the user's data folder may not exist yet
     // The run's own result does not depend on it: said, and the run goes on.

@@ -14,6 +14,7 @@
 
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/machine/setup_files.h"
+#include "klueng/core/diagnostic_codes.h"
 #include "render/class_pdf_input.h"
 #include "render/module_bytes.h"
 #include "render/offscreen_app.h"
@@ -33,16 +34,14 @@ void paintSummary(QPainter& p, QPdfWriter& writer, const KluengClassPdf& in) {
   const ReportLanguage lang = thai ? ReportLanguage::Thai : ReportLanguage::English;
   const double mm = writer.logicalDpiX() / 25.4;
   const QRectF page(0, 0, writer.width(), writer.height());
-  QStringList header =
-      thai
-          ? QStringList{QStringLiteral("โปรแกรม"),       QStringLiteral("ผล"),          QStringLiteral("ข้อผิดพลาด"),
-                        QStringLiteral("สัญญาณเตือน"),     QStringLiteral("เวลา (วินาที)"), QStringLiteral("เนื้อเหลือ (มม.)"),
-                        QStringLiteral("กินเนื้อเกิน (มม.)")}
-          : QStringList{QStringLiteral("Program"),   QStringLiteral("Result"),         QStringLiteral("Errors"),
-                        QStringLiteral("Alarm"),     QStringLiteral("Cycle time (s)"), QStringLiteral("Leftover (mm)"),
-                        QStringLiteral("Gouge (mm)")};
+  namespace codes = core::codes;
+  QStringList header;
+  for (const char* code :
+       {codes::kReportColumnProgram, codes::kReportColumnResult, codes::kReportColumnErrors, codes::kReportColumnAlarm,
+        codes::kReportColumnSeconds, codes::kReportColumnLeftover, codes::kReportColumnGouge})
+    header << reportText(code, lang);
   if (in.drawing && !in.hasReference) {  // the drawing's dimensions in tolerance, no leftover or gouge
-    header[5] = thai ? QStringLiteral("ขนาดในพิกัด") : QStringLiteral("In tolerance");
+    header[5] = reportText(codes::kReportColumnInTolerance, lang);
     header[6] = QString();
   }
   const double widths[7] = {0.19, 0.08, 0.17, 0.13, 0.13, 0.15, 0.15};
@@ -58,33 +57,22 @@ void paintSummary(QPainter& p, QPdfWriter& writer, const KluengClassPdf& in) {
     p.setPen(Qt::black);
     p.setFont(titleFont);
     p.drawText(QRectF(0, 0, page.width(), 10 * mm), Qt::AlignLeft | Qt::AlignVCenter,
-               thai ? QStringLiteral("ผลการตรวจงานทั้งชั้นเรียน") : QStringLiteral("Class grades"));
+               reportText(codes::kReportClassTitle, lang));
     p.setFont(textFont);
     // What they were graded against: the reference, the drawing, or both on two lines.
     QStringList lines;
     const QString date = reportDate(QDate::currentDate(), lang);
     const QString drawing = in.drawing ? QString::fromUtf8(in.drawing) : QString();
     if (in.hasReference || !in.drawing)
-      lines << (thai ? QStringLiteral("เทียบกับ %1 · พิกัดความเผื่อ %2 มม. บนเส้นผ่าศูนย์กลาง · %3")
-                     : QStringLiteral("Against %1 · tolerance %2 mm on the diameter · %3"))
-                   .arg(QString::fromUtf8(in.reference ? in.reference : ""))
-                   .arg(in.tolerance, 0, 'f', 3)
-                   .arg(date);
+      lines << reportText(
+          codes::kReportAgainstReference, lang,
+          {QString::fromUtf8(in.reference ? in.reference : ""), QString::number(in.tolerance, 'f', 3), date});
     if (in.drawing && in.hasReference)
-      lines << (thai ? QStringLiteral("และเทียบกับแบบงาน %1 (%2 ขนาดที่มีพิกัดความเผื่อ)")
-                     : QStringLiteral("and against the drawing %1 (%2 toleranced dimensions)"))
-                   .arg(drawing)
-                   .arg(in.dimensions);
+      lines << reportText(codes::kReportAlsoDrawing, lang, {drawing, QString::number(in.dimensions)});
     else if (in.drawing)
-      lines << (thai ? QStringLiteral("เทียบกับแบบงาน %1 (%2 ขนาดที่มีพิกัดความเผื่อ) · %3")
-                     : QStringLiteral("Against the drawing %1 (%2 toleranced dimensions) · %3"))
-                   .arg(drawing)
-                   .arg(in.dimensions)
-                   .arg(date);
-    lines << (thai ? QStringLiteral("%1 โปรแกรม: ผ่าน %2 ไม่ผ่าน %3") : QStringLiteral("%1 programs: %2 pass, %3 fail"))
-                 .arg(in.rows)
-                 .arg(passed)
-                 .arg(in.rows - passed);
+      lines << reportText(codes::kReportAgainstDrawing, lang, {drawing, QString::number(in.dimensions), date});
+    lines << reportText(codes::kCliClassTotals, lang,
+                        {QString::number(in.rows), QString::number(passed), QString::number(in.rows - passed)});
     for (int i = 0; i < lines.size(); ++i)
       p.drawText(QRectF(0, (11 + 6 * i) * mm, page.width(), 6 * mm), Qt::AlignLeft | Qt::AlignVCenter,
                  p.fontMetrics().elidedText(lines[i], Qt::ElideRight, static_cast<int>(page.width())));
@@ -98,8 +86,8 @@ void paintSummary(QPainter& p, QPdfWriter& writer, const KluengClassPdf& in) {
         p.setPen(!head && c == 1 ? (texts[c] == QStringLiteral("pass") ? QColor(0, 120, 0) : QColor(190, 0, 0))
                                  : QColor(Qt::black));
         QString text = texts[c];
-        if (!head && c == 1 && thai)
-          text = text == QStringLiteral("pass") ? QStringLiteral("ผ่าน") : QStringLiteral("ไม่ผ่าน");
+        if (!head && c == 1)  // the CSV's "pass"/"fail" in the sheet's words
+          text = reportText(text == QStringLiteral("pass") ? codes::kReportPass : codes::kReportFail, lang);
         p.drawText(QRectF(x + 1 * mm, y, w - 2 * mm, rowHeight), Qt::AlignLeft | Qt::AlignVCenter,
                    p.fontMetrics().elidedText(text, Qt::ElideRight, static_cast<int>(w - 2 * mm)));
         x += w;
@@ -120,14 +108,14 @@ void paintSummary(QPainter& p, QPdfWriter& writer, const KluengClassPdf& in) {
 // Against a drawing: each student's toleranced dimensions, measured, in or out,
 // a block per student kept on one page when it fits.
 void paintInspection(QPainter& p, QPdfWriter& writer, const KluengClassPdf& in) {
-  const bool thai = in.thai != 0;
+  const ReportLanguage lang = in.thai != 0 ? ReportLanguage::Thai : ReportLanguage::English;
   const double mm = writer.logicalDpiX() / 25.4;
   const QRectF page(0, 0, writer.width(), writer.height());
-  const QStringList header =
-      thai ? QStringList{QStringLiteral("ขนาด"), QStringLiteral("พิกัดความเผื่อ"), QStringLiteral("ขอบเขต (มม.)"),
-                         QStringLiteral("วัดได้ (มม.)"), QStringLiteral("ผล")}
-           : QStringList{QStringLiteral("Dimension"), QStringLiteral("Tolerance"), QStringLiteral("Limits (mm)"),
-                         QStringLiteral("Measured (mm)"), QStringLiteral("Result")};
+  namespace codes = core::codes;
+  QStringList header;
+  for (const char* code : {codes::kReportColumnDimension, codes::kReportColumnTolerance, codes::kReportColumnLimits,
+                           codes::kReportColumnMeasured, codes::kReportColumnResult})
+    header << reportText(code, lang);
   const double widths[5] = {0.24, 0.22, 0.20, 0.16, 0.18};
   const double rowHeight = 6.5 * mm, top = 24 * mm, bottom = page.height() - 5 * mm;
   const QFont titleFont(QString::fromLatin1(kReportFontFamily), 16, QFont::Bold);
@@ -157,14 +145,10 @@ void paintInspection(QPainter& p, QPdfWriter& writer, const KluengClassPdf& in) 
     p.setPen(Qt::black);
     p.setFont(titleFont);
     p.drawText(QRectF(0, 0, page.width(), 10 * mm), Qt::AlignLeft | Qt::AlignVCenter,
-               thai ? QStringLiteral("ตรวจวัดเทียบกับแบบงาน %1").arg(QString::fromUtf8(in.drawing))
-                    : QStringLiteral("Inspection against %1").arg(QString::fromUtf8(in.drawing)));
+               reportText(codes::kReportInspectionTitle, lang, {QString::fromUtf8(in.drawing)}));
     p.setFont(textFont);
-    p.drawText(
-        QRectF(0, 11 * mm, page.width(), 6 * mm), Qt::AlignLeft | Qt::AlignVCenter,
-        thai ? QStringLiteral("วัดละเอียด 0.001 มม. ค่าที่เท่ากับขอบเขตพอดีถือว่าอยู่ในพิกัด ขนาดที่ไม่มีบนชิ้นงานถือว่าไม่ผ่าน")
-             : QStringLiteral(
-                   "Measured to 0.001 mm; a value exactly at a limit is in; a dimension not on the part is out."));
+    p.drawText(QRectF(0, 11 * mm, page.width(), 6 * mm), Qt::AlignLeft | Qt::AlignVCenter,
+               reportText(codes::kReportInspectionRule, lang));
     y = top;
     drawRow(header, boldFont, Qt::black);
     p.setPen(QPen(Qt::black, 0.3 * mm));
@@ -179,10 +163,9 @@ void paintInspection(QPainter& p, QPdfWriter& writer, const KluengClassPdf& in) 
     for (int d = 0; d < in.dimensions; ++d)
       inCount += in.verdicts[static_cast<std::size_t>(r * in.dimensions + d)] == 0;
     p.fillRect(QRectF(0, y, page.width(), rowHeight), QColor(230, 230, 230));
-    const QString verdict = thai ? (pass ? QStringLiteral("ผ่าน") : QStringLiteral("ไม่ผ่าน"))
-                                 : (pass ? QStringLiteral("pass") : QStringLiteral("fail"));
-    const QString count = thai ? QStringLiteral("อยู่ในพิกัด %1 จาก %2").arg(inCount).arg(in.dimensions)
-                               : QStringLiteral("%1 of %2 in").arg(inCount).arg(in.dimensions);
+    const QString verdict = reportText(pass ? codes::kReportPass : codes::kReportFail, lang);
+    const QString count =
+        reportText(codes::kReportInCount, lang, {QString::number(inCount), QString::number(in.dimensions)});
     drawRow({cell(in, r, 0), count, QString(), QString(), verdict}, boldFont,
             pass ? QColor(0, 120, 0) : QColor(190, 0, 0));
     for (int d = 0; d < in.dimensions; ++d) {
@@ -202,12 +185,15 @@ extern "C" __attribute__((visibility("default"))) int klueng_class_pdf(const Klu
                                                                        std::size_t* size, char* error,
                                                                        std::size_t errorSize) {
   using namespace klueng;
-  auto fail = [&](const QString& why) {
-    if (error && errorSize > 0)
-      std::strncpy(error, why.toUtf8().constData(), errorSize - 1), error[errorSize - 1] = '\0';
+  // The reason in the sheets' language (messages_render.cpp): the CLI and the GUI show it as it is.
+  auto fail = [&](const char* code) {
+    const QByteArray why =
+        render::reportText(code, in && in->thai ? render::ReportLanguage::Thai : render::ReportLanguage::English)
+            .toUtf8();
+    if (error && errorSize > 0) std::strncpy(error, why.constData(), errorSize - 1), error[errorSize - 1] = '\0';
     return 0;
   };
-  if (!in || !bytes || !size) return fail(QStringLiteral("nothing to write to"));
+  if (!in || !bytes || !size) return fail(core::codes::kReportNothingToWrite);
   render::ensureGuiApplication();
   // Into memory: QPdfWriter does not report a failed file write (issue 29), the CLI's writer does.
   QBuffer pdf;
@@ -217,7 +203,7 @@ extern "C" __attribute__((visibility("default"))) int klueng_class_pdf(const Klu
   writer.setPageSize(QPageSize(QPageSize::A4));
   writer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
   QPainter painter;
-  if (!painter.begin(&writer)) return fail(QStringLiteral("the PDF could not be started"));
+  if (!painter.begin(&writer)) return fail(core::codes::kReportPdfNotStarted);
   render::paintSummary(painter, writer, *in);
   if (in->drawing && in->dimensions > 0 && in->rows > 0) render::paintInspection(painter, writer, *in);
   if (in->sheets > 0) {
@@ -244,7 +230,7 @@ extern "C" __attribute__((visibility("default"))) int klueng_class_pdf(const Klu
       render::paintDrawingSheet(painter, writer, data, lang);
     }
   }
-  if (!painter.end()) return fail(QStringLiteral("the PDF could not be finished"));
-  if (!render::handBytes(pdf.data(), bytes, size)) return fail(QStringLiteral("the PDF is empty"));
+  if (!painter.end()) return fail(core::codes::kReportPdfNotFinished);
+  if (!render::handBytes(pdf.data(), bytes, size)) return fail(core::codes::kReportPdfEmpty);
   return 1;
 }

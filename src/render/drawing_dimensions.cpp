@@ -1,7 +1,9 @@
 #include "render/drawing_dimensions.h"
 #include "render/number_text.h"
+#include "render/report_text.h"
 
 #include "klueng/core/cut/part_span.h"
+#include "klueng/core/diagnostic_codes.h"
 
 #include <QFontMetricsF>
 
@@ -324,7 +326,9 @@ std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part,
       if (isMachiningTrace(f, part)) continue;
       DimensionItem d;
       d.text = label(f, frame);
-      if (f.side == FeatureSide::Inside) d.text += frame.thai ? QStringLiteral(" (ใน)") : QStringLiteral(" (inside)");
+      if (f.side == FeatureSide::Inside)
+        d.text = reportText(core::codes::kReportInside, frame.thai ? ReportLanguage::Thai : ReportLanguage::English,
+                            {d.text});
       const QPointF anchor = anchorOf(f, frame);
       const double w = fm.horizontalAdvance(d.text);
       const bool toLeft = anchor.x() + 3.0 * mm + w > bounds.right();
@@ -364,8 +368,8 @@ std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part,
   }
   if (noseRadius > 0.0) {
     DimensionItem d;
-    d.text = (frame.thai ? QStringLiteral("มุมด้านในเป็นรัศมีจมูกมีด R") : QStringLiteral("Inside corners: tool nose R")) +
-             num(noseRadius, frame.units);
+    d.text = reportText(core::codes::kReportNoseCorners, frame.thai ? ReportLanguage::Thai : ReportLanguage::English,
+                        {num(noseRadius, frame.units)});
     const double w = fm.horizontalAdvance(d.text);
     d.textRect = QRectF(pageX(part.zLeft), (shoulders.size() > 2 ? row2 : row1) + 3.0 * mm, w, textH);
     out.push_back(d);

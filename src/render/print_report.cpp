@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "klueng/core/diagnostic_codes.h"
 #include "render/drawing_dimensions.h"
 #include "render/module_bytes.h"
 #include "render/offscreen_app.h"
@@ -20,15 +21,19 @@ extern "C" __attribute__((visibility("default"))) int klueng_print_pdf(const Klu
                                                                        std::size_t* size, char* error,
                                                                        std::size_t errorSize) {
   using namespace klueng;
-  const auto fail = [&](const QString& why) {
+  // The reason in the sheets' language (messages_render.cpp): the CLI and the GUI show it as it is.
+  const auto fail = [&](const char* code) {
+    const QByteArray why =
+        render::reportText(code, in && in->thai ? render::ReportLanguage::Thai : render::ReportLanguage::English)
+            .toUtf8();
     if (error && errorSize > 0) {
-      std::strncpy(error, why.toUtf8().constData(), errorSize - 1);
+      std::strncpy(error, why.constData(), errorSize - 1);
       error[errorSize - 1] = '\0';
     }
     return 0;
   };
-  if (!in || !bytes || !size || !in->job || !in->job->file()) return fail(QStringLiteral("nothing to print"));
-  if (!in->programSheet && !in->drawingSheet) return fail(QStringLiteral("no sheet asked for"));
+  if (!in || !bytes || !size || !in->job || !in->job->file()) return fail(core::codes::kReportNothingToWrite);
+  if (!in->programSheet && !in->drawingSheet) return fail(core::codes::kReportNoSheet);
   render::ensureGuiApplication();
   const render::ReportLanguage lang = in->thai ? render::ReportLanguage::Thai : render::ReportLanguage::English;
   render::ReportData data;
@@ -50,7 +55,7 @@ extern "C" __attribute__((visibility("default"))) int klueng_print_pdf(const Klu
   // A shaft is long: the drawing is landscape, the listing portrait.
   writer.setPageOrientation(in->programSheet ? QPageLayout::Portrait : QPageLayout::Landscape);
   QPainter painter;
-  if (!painter.begin(&writer)) return fail(QStringLiteral("the PDF could not be started"));
+  if (!painter.begin(&writer)) return fail(core::codes::kReportPdfNotStarted);
   if (in->programSheet) render::paintProgramSheet(painter, writer, data, lang);
   if (in->drawingSheet) {
     if (in->programSheet) {
@@ -59,7 +64,7 @@ extern "C" __attribute__((visibility("default"))) int klueng_print_pdf(const Klu
     }
     render::paintDrawingSheet(painter, writer, data, lang);
   }
-  if (!painter.end()) return fail(QStringLiteral("the PDF could not be finished"));
-  if (!klueng::render::handBytes(pdf.data(), bytes, size)) return fail(QStringLiteral("the PDF is empty"));
+  if (!painter.end()) return fail(core::codes::kReportPdfNotFinished);
+  if (!klueng::render::handBytes(pdf.data(), bytes, size)) return fail(core::codes::kReportPdfEmpty);
   return 1;
 }

@@ -15,6 +15,8 @@
 #include "klueng/core/cut/part_span.h"
 #include "klueng/core/job/job.h"
 #include "klueng/core/gcode/checker.h"
+#include "klueng/core/diagnostic_codes.h"
+#include "klueng/core/messages.h"
 
 #ifndef KLUENG_VERSION
 #define KLUENG_VERSION "0"
@@ -25,46 +27,29 @@ namespace {
 
 bool thai(ReportLanguage lang) { return lang == ReportLanguage::Thai; }
 
-// The texts of SPEC 12 (and GLOSSARY.md), fixed per sheet language.
+// The texts of SPEC 12 (and GLOSSARY.md), fixed per sheet language: read once from the catalog.
 struct Texts {
   QString programTitle, page, project, material, part, diameter, programmer, length;
   QString drawingTitle, date, fileName, version, scale, untitled;
   QString cycleTime, toAlarm;
 };
 
+Texts textsIn(ReportLanguage lang) {
+  namespace codes = core::codes;
+  const auto t = [lang](const char* code) { return reportText(code, lang); };
+  return Texts{t(codes::kReportProgramTitle), reportText(codes::kReportPage, lang, {QStringLiteral("%1")}),
+               t(codes::kReportProject),      t(codes::kReportMaterial),
+               t(codes::kReportPart),         t(codes::kReportDiameter),
+               t(codes::kReportProgrammer),   t(codes::kReportLength),
+               t(codes::kReportDrawingTitle), t(codes::kReportDate),
+               t(codes::kReportFileName),     t(codes::kReportVersion),
+               t(codes::kReportScale),        t(codes::kReportUntitled),
+               t(codes::kReportCycleTime),    t(codes::kReportToAlarm)};
+}
+
 const Texts& texts(ReportLanguage lang) {
-  static const Texts english{QStringLiteral("CNC Program Sheet"),
-                             QStringLiteral("Page %1"),
-                             QStringLiteral("Project"),
-                             QStringLiteral("Material"),
-                             QStringLiteral("Part"),
-                             QStringLiteral("Diameter (mm.)"),
-                             QStringLiteral("Programmer"),
-                             QStringLiteral("Length (mm.)"),
-                             QStringLiteral("Part Drawing"),
-                             QStringLiteral("Date"),
-                             QStringLiteral("Program"),
-                             QStringLiteral("Version"),
-                             QStringLiteral("Scale"),
-                             QStringLiteral("Untitled"),
-                             QStringLiteral("Cycle time"),
-                             QStringLiteral("up to the alarm")};
-  static const Texts thaiTexts{QStringLiteral("ชุดรหัสสั่งการทำงาน"),
-                               QStringLiteral("หน้าที่ %1"),
-                               QStringLiteral("ชื่องาน"),
-                               QStringLiteral("วัสดุ"),
-                               QStringLiteral("ชิ้นงาน"),
-                               QStringLiteral("เส้นผ่าศก. (มม.)"),
-                               QStringLiteral("ผู้เขียน"),
-                               QStringLiteral("ความยาว (มม.)"),
-                               QStringLiteral("เอกสารแสดงภาพชิ้นงาน"),
-                               QStringLiteral("วันที่"),
-                               QStringLiteral("ไฟล์โปรแกรม"),
-                               QStringLiteral("รุ่นโปรแกรม"),
-                               QStringLiteral("มาตราส่วน"),
-                               QStringLiteral("ไม่มีชื่อ"),
-                               QStringLiteral("เวลาทำงาน"),
-                               QStringLiteral("ถึงจุดที่เกิดสัญญาณเตือน")};
+  static const Texts english = textsIn(ReportLanguage::English);
+  static const Texts thaiTexts = textsIn(ReportLanguage::Thai);
   return thai(lang) ? thaiTexts : english;
 }
 
@@ -180,20 +165,23 @@ void drawField(QPainter& painter, const QRectF& cell, const QString& label, cons
 
 }  // namespace
 
+QString reportText(const char* code, ReportLanguage lang, const QStringList& args) {
+  core::Diagnostic d{core::Severity::Note, code, {}, {}};
+  for (const QString& a : args) d.args.push_back(a.toStdString());
+  return QString::fromStdString(core::formatMessage(d, thai(lang) ? core::Lang::Th : core::Lang::En));
+}
+
 QString reportDate(const QDate& date, ReportLanguage lang, DateLength length) {
   if (!date.isValid()) return {};
   const bool isLong = length == DateLength::Long;
-  if (!thai(lang))
-    return QLocale(QLocale::English, QLocale::UnitedStates)
-        .toString(date, isLong ? QStringLiteral("MMMM d, yyyy") : QStringLiteral("MMM d, yyyy"));
   // Thai dates count years in the Buddhist era (2569 = 2026), which Qt's
-  // calendars do not have; the month names are the Thai locale's.
-  const QString month = QLocale(QLocale::Thai, QLocale::Thailand)
-                            .monthName(date.month(), isLong ? QLocale::LongFormat : QLocale::ShortFormat);
-  return (isLong ? QStringLiteral("%1 %2 พ.ศ. %3") : QStringLiteral("%1 %2 %3"))
-      .arg(date.day())
-      .arg(month)
-      .arg(date.year() + 543);
+  // calendars do not have; the month names are the locale's.
+  const QLocale locale =
+      thai(lang) ? QLocale(QLocale::Thai, QLocale::Thailand) : QLocale(QLocale::English, QLocale::UnitedStates);
+  const QString month = locale.monthName(date.month(), isLong ? QLocale::LongFormat : QLocale::ShortFormat);
+  const int year = date.year() + (thai(lang) ? 543 : 0);
+  return reportText(isLong ? core::codes::kReportDateLong : core::codes::kReportDateShort, lang,
+                    {QString::number(date.day()), month, QString::number(year)});
 }
 
 QString kluengVersion() { return QStringLiteral("Klueng %1").arg(QString::fromLatin1(KLUENG_VERSION)); }
@@ -216,19 +204,15 @@ StockShape runForReport(const core::job::Job& job, ReportLanguage lang, QString*
   }
   if (!cutPart) return blank;
   if (file.header.diameterMm() <= 0 || file.header.lengthMm() <= 0) {
-    if (note) *note = thai(lang) ? QStringLiteral("ขนาดชิ้นงานไม่ถูกต้อง") : QStringLiteral("The stock size is not valid.");
+    if (note) *note = reportText(core::codes::kReportBadStock, lang);
     return blank;
   }
   if (!timeline) {
-    if (note)
-      *note = thai(lang) ? QStringLiteral("โปรแกรมมีข้อผิดพลาด: ภาพนี้แสดงชิ้นงานก่อนกลึง")
-                         : QStringLiteral("The program has errors: the drawing shows the uncut bar.");
+    if (note) *note = reportText(core::codes::kReportProgramErrors, lang);
     return blank;
   }
   const core::cut::CutSimulator& cut = *job.cut();
-  if (cut.alarm() && note)
-    *note = thai(lang) ? QStringLiteral("โปรแกรมหยุดด้วยสัญญาณเตือน: ภาพนี้แสดงชิ้นงานจนถึงจุดที่หยุด")
-                       : QStringLiteral("The program stopped on an alarm: the drawing shows the part up to it.");
+  if (cut.alarm() && note) *note = reportText(core::codes::kReportStoppedOnAlarm, lang);
   // The finished part only: no parting gap, no bar left in the chuck (issue 28 item 3).
   const core::cut::Stock part = core::cut::cropToSpan(cut.stock(), core::cut::finishedPartSpan(cut.stock()));
   if (features) {
@@ -255,11 +239,9 @@ QString durationText(double seconds, ReportLanguage lang) {
   const double tenths = std::round(std::max(0.0, seconds) * 10.0) / 10.0;
   const int minutes = static_cast<int>(tenths / 60.0);
   const double rest = tenths - 60.0 * minutes;
-  if (thai(lang))
-    return minutes > 0 ? QStringLiteral("%1 นาที %2 วินาที").arg(minutes).arg(rest, 0, 'f', 1)
-                       : QStringLiteral("%1 วินาที").arg(rest, 0, 'f', 1);
-  return minutes > 0 ? QStringLiteral("%1 min %2 s").arg(minutes).arg(rest, 0, 'f', 1)
-                     : QStringLiteral("%1 s").arg(rest, 0, 'f', 1);
+  const QString secondsText = QString::number(rest, 'f', 1);
+  return minutes > 0 ? reportText(core::codes::kReportMinutes, lang, {QString::number(minutes), secondsText})
+                     : reportText(core::codes::kReportSeconds, lang, {secondsText});
 }
 
 void addCycleTimes(ReportData& data, const core::job::Job& job) {

@@ -5,6 +5,7 @@
 //
 // Public API
 //   ReportLanguage                 English or Thai (texts are fixed by SPEC 12, not tr()).
+//   reportText(code, lang, args)   a sheet's own words from the core's catalog (messages_render.cpp).
 //   reportDate(date, lang)         "October 19, 1999" / "19 ตุลาคม พ.ศ. 2542" (Buddhist era).
 //   ReportData                     what both sheets print: the program file (header + G-code),
 //                                  its file name, the date, the finished part.
@@ -35,10 +36,9 @@
 #include "klueng/core/units.h"
 #include "render/drawing_dimensions.h"
 #include "render/lathe_painters.h"
+#include "render/report_text.h"
 
 namespace klueng::render {
-
-enum class ReportLanguage { English, Thai };
 
 // Fonts with Thai glyphs (fonts-thai-tlwg), so Thai never prints as boxes.
 inline constexpr const char* kReportFontFamily = "Loma";

@@ -731,7 +731,7 @@ TEST(CliLanguage, CommandLineMistakesAndTheUsageAreThaiUnderLangTh) {
   EXPECT_THAT(stock.out, HasSubstr("klueng-cli simulate: ค่า 'abc' ใช้กับ --stock ไม่ได้ ค่าที่ใช้ได้: DxL[xBORE][in] "
                                    "โดย 0 < D, L <= 9999.999 และ 0 < BORE < D เช่น 50x100, 2.1x4in, 118x80x90\n"));
   const CliRun units = runCliWithErrors("check --units feet --lang th x.nc");
-  EXPECT_THAT(units.out, HasSubstr("klueng-cli check: --units ต้องเป็น mm หรือ inch ไม่ใช่ 'feet'\n"));
+  EXPECT_THAT(units.out, HasSubstr("klueng-cli check: ค่า 'feet' ใช้กับ --units ไม่ได้ ค่าที่ใช้ได้: mm หรือ inch\n"));
   const CliRun sheet = runCliWithErrors("print x.nc --pdf x.pdf --sheet poster --lang th");
   EXPECT_EQ(sheet.exitCode, 2);
   EXPECT_THAT(sheet.out,
@@ -755,7 +755,8 @@ TEST(CliLanguage, ClassAndGenerateErrorsAreThaiUnderLangTh) {
   EXPECT_THAT(classUse.out, HasSubstr("klueng-cli class: ต้องระบุโฟลเดอร์ DIR และ --reference REF.nc หรือ --drawing "
                                       "PART.json\nวิธีใช้: klueng-cli class DIR"));
   const CliRun tolerance = runCliWithErrors("class x --reference y --tolerance lots");
-  EXPECT_THAT(tolerance.out, HasSubstr("klueng-cli class: bad value 'lots' for --tolerance\n"));
+  EXPECT_THAT(tolerance.out,
+              HasSubstr("klueng-cli class: bad value 'lots' for --tolerance; allowed: a number from 0 to 100 (mm)\n"));
 
   const std::string part = dir.file("none.json");
   const CliRun generate =
@@ -763,7 +764,8 @@ TEST(CliLanguage, ClassAndGenerateErrorsAreThaiUnderLangTh) {
   EXPECT_EQ(generate.exitCode, 2);
   EXPECT_THAT(generate.out, HasSubstr("F101: " + part + ": ไม่พบไฟล์\n"));  // read with the part-file limit
   const CliRun option = runCliWithErrors("generate " + quote(part) + " -o x.nc --tool-material wood --lang th");
-  EXPECT_THAT(option.out, HasSubstr("klueng-cli generate: ตัวเลือก --tool-material wood ใช้ไม่ได้\n"));
+  EXPECT_THAT(option.out,
+              HasSubstr("klueng-cli generate: ค่า 'wood' ใช้กับ --tool-material ไม่ได้ ค่าที่ใช้ได้: hss หรือ carbide\n"));
 }
 
 // A picture that cannot be written is said in the run's language, as every other output.

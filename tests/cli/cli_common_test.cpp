@@ -4,6 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
 #include <optional>
 
 namespace klueng::cli {
@@ -105,6 +109,40 @@ TEST(CliCommon, ShippedConfigLoadsCleanWithEveryBitmap) {
   EXPECT_EQ(config.setup.machine.rapidZ, 8000.0);
   ASSERT_TRUE(config.bitmaps[2]);
   EXPECT_EQ(config.bitmaps[2]->width, 60);  // 30 mm at 2 px/mm
+}
+
+// Issue 30 item 5: the words a user reads come from the core's bilingual catalog
+// (src/core/base/messages_*.cpp) or from tr(); no Thai text is written into the code
+// of the CLI, the painters or the window (comments may quote it). Fails on the
+// literal it finds, with its file and line.
+TEST(CliSources, NoThaiLiteralBypassesTheCatalogOrTr) {
+  namespace fs = std::filesystem;
+  std::vector<std::string> found;
+  for (const char* folder : {"src/cli", "src/render", "src/gui", "src/app"}) {
+    for (const fs::directory_entry& e : fs::recursive_directory_iterator(fs::path(KLUENG_SOURCE_DIR) / folder)) {
+      const std::string ext = e.path().extension().string();
+      if (ext != ".cpp" && ext != ".h") continue;
+      std::ifstream in(e.path());
+      std::string line;
+      for (int n = 1; std::getline(in, line); ++n) {
+        // Thai letters are U+0E00..U+0E7F: E0 B8 xx or E0 B9 xx in UTF-8.
+        std::size_t thai = std::string::npos;
+        for (std::size_t i = 0; i + 1 < line.size() && thai == std::string::npos; ++i)
+          if (static_cast<unsigned char>(line[i]) == 0xE0 &&
+              (static_cast<unsigned char>(line[i + 1]) == 0xB8 || static_cast<unsigned char>(line[i + 1]) == 0xB9))
+            thai = i;
+        if (thai == std::string::npos) continue;
+        const std::size_t comment = line.find("//");
+        if (comment < thai) continue;
+        // A source text for tr() may hold a Thai example (the translation file has its Thai).
+        if (line.find("tr(") < thai || line.find("KLUENG_TR(") < thai) continue;
+        found.push_back(fs::relative(e.path(), KLUENG_SOURCE_DIR).string() + ":" + std::to_string(n));
+      }
+    }
+  }
+  std::string list;
+  for (const std::string& f : found) list += f + "\n";
+  EXPECT_TRUE(found.empty()) << list;
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 // more closely, or refused with E519 (exit 1) when even N1, N2, ... would not
 // fit, and nothing is written. English and Thai.
 #include <gtest/gtest.h>
+#include <unistd.h>
 #include <sys/wait.h>
 
 #include <cstdio>
@@ -54,7 +55,8 @@ class CliGenerateLimits : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
-           ("klueng_cli_generate_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+           ("klueng_cli_generate_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+            "-" + std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }

@@ -210,9 +210,11 @@ TEST(CliPrint, StockOptionAndAProgramWithErrors) {
 
 TEST(CliPrint, BadCommandLinesExitTwo) {
   EXPECT_EQ(print("'" + kSample01 + "'"), 2);  // no --pdf
-  EXPECT_EQ(print("'" + kSample01 + "' --pdf /tmp/x.pdf --sheet poster"), 2);
-  EXPECT_EQ(print("/no/such/file.nc --pdf /tmp/klueng-none.pdf"), 2);
-  EXPECT_FALSE(fs::exists("/tmp/klueng-none.pdf"));
+  const fs::path never = scratch("never.pdf");
+  fs::remove(never);
+  EXPECT_EQ(print("'" + kSample01 + "' --pdf '" + never.string() + "' --sheet poster"), 2);
+  EXPECT_EQ(print("/no/such/file.nc --pdf '" + never.string() + "'"), 2);
+  EXPECT_FALSE(fs::exists(never));
 }
 
 }  // namespace

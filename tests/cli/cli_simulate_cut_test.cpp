@@ -20,6 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 const std::string kCut = KLUENG_CLI_PATH;
 const std::string kCutSamples = KLUENG_SAMPLES_DIR;
@@ -85,7 +86,7 @@ TEST(CliSimulateCut, Sample01WritesEveryOutput) {
   ASSERT_GT(image.size(), 24u);
   EXPECT_EQ(image.substr(1, 3), "PNG");
   const std::string profile = slurp(csv);
-  EXPECT_EQ(profile.substr(0, 18), "z,x_outer,x_inner\n");
+  EXPECT_EQ(profile.substr(0, 27), "z_mm,x_outer_mm,x_inner_mm\n");
   EXPECT_NEAR(diameterAt(profile, -10.0), 30.0, 0.01);
   EXPECT_NEAR(diameterAt(profile, -30.0), 40.0, 0.01);
   EXPECT_NEAR(diameterAt(profile, -50.0), 46.0, 0.01);
@@ -117,6 +118,40 @@ TEST(CliSimulateCut, AFullDiskIsReportedAndAnOldOutputSurvives) {
   EXPECT_EQ(slurp(png).substr(1, 3), "PNG");
   for (const auto& e : fs::directory_iterator(png.parent_path()))
     EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
+}
+
+// Without its picture module beside it, klueng-cli says so in the run's language
+// (issue 30 item 5: the Thai text carried the English reason) and keeps the old picture.
+TEST(CliSimulateCut, AMissingPictureModuleIsSaidInEitherLanguage) {
+  const fs::path bin = scratch("lonely") / "bin";
+  fs::create_directories(bin);
+  const fs::path cli = bin / "klueng-cli";
+  fs::copy_file(kCut, cli, fs::copy_options::overwrite_existing);
+  const fs::path png = scratch("lonely-part.png");
+  { std::ofstream(png) << "old picture"; }
+  const auto run = [&](const std::string& lang) {
+    const std::string command = "env LC_ALL= LC_MESSAGES= LANG=C '" + cli.string() + "' simulate '" + kCutSamples +
+                                "/01-step-shaft.txt' --png '" + png.string() + "' --lang " + lang + " --config '" +
+                                kCutShipped + "' 2>&1 >/dev/null";
+    Result r;
+    FILE* pipe = ::popen(command.c_str(), "r");
+    if (!pipe) return r;
+    char buf[4096];
+    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) r.err.append(buf, n);
+    const int status = ::pclose(pipe);
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+  };
+  const Result en = run("en");
+  EXPECT_EQ(en.exitCode, 2);
+  EXPECT_THAT(en.err, HasSubstr(png.string() + ": error F108: " + png.string() +
+                                ": cannot write the file (the picture module klueng-png.so is not installed beside " +
+                                cli.string() + ")"));
+  const Result th = run("th");
+  EXPECT_EQ(th.exitCode, 2);
+  EXPECT_THAT(th.err, HasSubstr("(ไม่ได้ติดตั้งโมดูลวาดภาพ klueng-png.so ไว้คู่กับ " + cli.string() + ")"));
+  EXPECT_THAT(th.err, Not(HasSubstr("not installed")));
+  EXPECT_EQ(slurp(png), "old picture");
 }
 
 // --png is drawn by the screen's painters (render/, through the picture module):

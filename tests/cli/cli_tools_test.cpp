@@ -130,8 +130,9 @@ TEST(CliTools, BadToolValuesExitTwoAndListTheLibrary) {
   EXPECT_THAT(thai.out, HasSubstr("klueng-cli simulate: --tool 13=parting-3mm: ป้อมมีดไม่มีตำแหน่ง 13 (มี 1 ถึง 12)\n"));
   EXPECT_THAT(run("check '" + file + "' --tool knurl --lang th").out,
               HasSubstr("--tool ต้องเป็น N=ID (หมายเลขป้อมมีดและมีดในคลังมีด เช่น 3=threading-60) ไม่ใช่ 'knurl'"));
-  EXPECT_THAT(run("print '" + file + "' --pdf /tmp/never.pdf --tool 3=knurl-30 --lang th").out,
-              HasSubstr("--tool 3=knurl-30: ไม่มีมีด 'knurl-30' ในคลังมีด มีดในคลังมีด: cnmg-80-r08"));
+  EXPECT_THAT(
+      run("print '" + file + "' --pdf '" + (testFolder() / "never.pdf").string() + "' --tool 3=knurl-30 --lang th").out,
+      HasSubstr("--tool 3=knurl-30: ไม่มีมีด 'knurl-30' ในคลังมีด มีดในคลังมีด: cnmg-80-r08"));
 }
 
 TEST(CliTools, AStationWithoutEvidenceKeepsE305) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -93,6 +94,28 @@ TEST(CliUnits, AG20ProgramsFeaturesAreInInches) {
               HasSubstr("Cylinder Ø50, Z0 to Z-100, length 100\n"));
   EXPECT_THAT(cli("simulate '" + metric.string() + "' --features --show-units inch").out,
               HasSubstr("Cylinder Ø1.9685″, Z0.0000 to Z-3.9370, length 3.9370″\n"));
+}
+
+// The --profile CSV names its unit in the header and stays in millimetres on a G20 program
+// (a machine reads it, so it has one unit; issue 30 item 5): the Ø1.500″ neck is 38.1 mm.
+TEST(CliUnits, AG20ProgramsProfileIsInMillimetresAndSaysSo) {
+  const fs::path file = write("inch-profile.txt", kHeader + kBody);
+  const fs::path csv = write("inch-profile.csv", "");
+  const Output r = cli("simulate '" + file.string() + "' --profile '" + csv.string() + "'");
+  ASSERT_EQ(r.exitCode, 0) << r.out;
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "z_mm,x_outer_mm,x_inner_mm");
+  bool neck = false, bar = false;
+  while (std::getline(in, line)) {
+    double z = 0, outer = 0, inner = 0;
+    if (std::sscanf(line.c_str(), "%lf,%lf,%lf", &z, &outer, &inner) != 3) continue;
+    if (z < -5.0 && z > -20.0) neck = neck || std::abs(outer - 38.1) < 0.01;  // Ø1.500″ to Z-1.0″
+    if (z < -30.0 && z > -70.0) bar = bar || std::abs(outer - 44.45) < 0.01;  // the Ø1.75″ bar
+  }
+  EXPECT_TRUE(neck);
+  EXPECT_TRUE(bar);
 }
 
 // A pawn's neck in inches (Haas habits): down a 15° slope on line 14 the 80° CNMG's

@@ -6,6 +6,7 @@
 // The full disk is the file size limit (ulimit -f, SIGXFSZ ignored): writes
 // past it fail with EFBIG for root too, in any container, without a mount.
 #include <gtest/gtest.h>
+#include <unistd.h>
 #include <sys/wait.h>
 
 #include <cstdio>
@@ -76,7 +77,8 @@ class CliWrite : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
-           ("klueng_cli_write_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+           ("klueng_cli_write_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "-" +
+            std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     fs::copy_file(std::string(KLUENG_SAMPLES_DIR) + "/01-step-shaft.txt", dir_ / "prog.nc");

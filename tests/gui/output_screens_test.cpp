@@ -2,6 +2,7 @@
 // drawing is where the geometry says it is, and saves PNGs for people to look
 // at (into $KLUENG_SHOT_DIR, default: the temp folder).
 #include <QApplication>
+#include <QCoreApplication>
 #include <QDir>
 #include <QFileDialog>
 #include <QLabel>
@@ -31,7 +32,9 @@ namespace {
 
 QString shotDir() {
   const QString dir =
-      qEnvironmentVariableIsSet("KLUENG_SHOT_DIR") ? qEnvironmentVariable("KLUENG_SHOT_DIR") : QDir::tempPath();
+      qEnvironmentVariableIsSet("KLUENG_SHOT_DIR")
+          ? qEnvironmentVariable("KLUENG_SHOT_DIR")
+          : QDir::tempPath() + QStringLiteral("/klueng-shots-%1").arg(QCoreApplication::applicationPid());
   QDir().mkpath(dir);
   return dir;
 }

@@ -97,7 +97,7 @@ std::string errorLines(const std::string& text) {
 }
 
 // The finished part read from `--profile` (src/core/cut/finished_part.cpp:
-// header "z,x_outer,x_inner", then one row per stock column at its centre plus
+// header "z_mm,x_outer_mm,x_inner_mm", then one row per stock column at its centre plus
 // the two end faces, diameters in mm, "%.4f"). Lengths in and out are in the
 // program's unit: `unit` mm per program unit (1 or 25.4).
 class Profile {
@@ -904,7 +904,8 @@ TEST(RealStyleDecimalPoint, Fanuc_ReadWholeTheCycleWordsAreRefused) {
   const Output bad = runCli("check " + quote(kPrograms + "/fanuc-12-inch-bushing-pointless.nc") +
                             " --decimal-point 3401 --config " + quote(kShipped));
   EXPECT_EQ(bad.exitCode, 2) << bad.text;
-  EXPECT_NE(bad.text.find("--decimal-point must be whole or increments, not '3401'"), std::string::npos) << bad.text;
+  EXPECT_NE(bad.text.find("bad value '3401' for --decimal-point; allowed: whole or increments"), std::string::npos)
+      << bad.text;
 }
 
 // A Haas CAM post that writes the G71 allowances without a point (U400 W100 =

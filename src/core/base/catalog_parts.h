@@ -13,4 +13,5 @@ std::span<const MessageText> cutMessages();
 std::span<const MessageText> designMessages();
 std::span<const MessageText> cliMessages();
 std::span<const MessageText> controlMessages();
+std::span<const MessageText> renderMessages();
 }  // namespace klueng::core::catalog

@@ -15,9 +15,9 @@ namespace klueng::core {
 std::span<const MessageText> allMessages() {
   static const std::vector<MessageText> all = [] {
     std::vector<MessageText> v;
-    for (auto part :
-         {catalog::gcodeMessages(), catalog::ioMessages(), catalog::machineMessages(), catalog::compMessages(),
-          catalog::cutMessages(), catalog::designMessages(), catalog::cliMessages(), catalog::controlMessages()})
+    for (auto part : {catalog::gcodeMessages(), catalog::ioMessages(), catalog::machineMessages(),
+                      catalog::compMessages(), catalog::cutMessages(), catalog::designMessages(),
+                      catalog::cliMessages(), catalog::controlMessages(), catalog::renderMessages()})
       v.insert(v.end(), part.begin(), part.end());
     return v;
   }();

@@ -21,7 +21,7 @@ constexpr MessageText kCliMessages[] = {
      "       klueng-cli print FILE --pdf OUT.pdf [--sheet program|drawing|both] [--lang en|th]\n"
      "                               [--dialect ...] [--stock ...] [--units ...] [--config DIR]\n"
      "       klueng-cli generate PART.json|PART.dxf -o OUT.nc [--dialect ...] [--material M]\n"
-     "                               [--tool-material hss|carbide] [--layer NAME] [--stock DxL[xBORE]]\n"
+     "                               [--tool-material hss|carbide] [--layer NAME] [--stock DxL[xBORE][in]]\n"
      "  --dialect  fanuc (Fanuc 0i-TF, default), haas (Haas ST lathe), classic (1999 rules)\n"
      "  --stock  50x100 (mm), 2.1x4in, 118x80x90 (tube: bore 90); without it the file's\n"
      "           header, else the stock inferred from the program (a note says which)\n"
@@ -40,7 +40,7 @@ constexpr MessageText kCliMessages[] = {
      "       klueng-cli print FILE --pdf OUT.pdf [--sheet program|drawing|both] [--lang en|th]\n"
      "                               [--dialect ...] [--stock ...] [--units ...] [--config DIR]\n"
      "       klueng-cli generate PART.json|PART.dxf -o OUT.nc [--dialect ...] [--material M]\n"
-     "                               [--tool-material hss|carbide] [--layer NAME] [--stock DxL[xBORE]]\n"
+     "                               [--tool-material hss|carbide] [--layer NAME] [--stock DxL[xBORE][in]]\n"
      "  --dialect  fanuc (Fanuc 0i-TF ค่าเริ่มต้น), haas (เครื่องกลึง Haas ST), classic (กฎปี 1999)\n"
      "  --stock  50x100 (มม.), 2.1x4in, 118x80x90 (ท่อ: รูใน 90) ถ้าไม่ระบุ ใช้ส่วนหัวของไฟล์\n"
      "           หรือขนาดชิ้นงานที่อนุมานจากโปรแกรม (มีหมายเหตุบอกว่ามาจากที่ใด)\n"
@@ -143,11 +143,11 @@ constexpr MessageText kCliMessages[] = {
      "           ต่อท้ายขนาดเส้นผ่าศูนย์กลางในแบบงาน\n"},
     {codes::kCliGenerateUsage,
      "usage: klueng-cli generate PART.json|PART.dxf -o OUT.nc [--dialect fanuc|haas|classic] [--material NAME]\n"
-     "                           [--tool-material hss|carbide] [--layer NAME] [--stock DxL[xBORE]]\n"
+     "                           [--tool-material hss|carbide] [--layer NAME] [--stock DxL[xBORE][in]]\n"
      "                           [--machine NAME|FILE] [--lang en|th] [--config DIR]\n"
      "  the part file's format and DXF drawings: docs/parts.md; cutting speeds: resources/parts/cutting_speeds.cfg\n",
      "วิธีใช้: klueng-cli generate PART.json|PART.dxf -o OUT.nc [--dialect fanuc|haas|classic] [--material NAME]\n"
-     "                           [--tool-material hss|carbide] [--layer NAME] [--stock DxL[xBORE]]\n"
+     "                           [--tool-material hss|carbide] [--layer NAME] [--stock DxL[xBORE][in]]\n"
      "                           [--machine NAME|FILE] [--lang en|th] [--config DIR]\n"
      "  รูปแบบไฟล์ชิ้นงานและแบบ DXF: docs/parts.md ความเร็วตัด: resources/parts/cutting_speeds.cfg\n"},
 
@@ -155,12 +155,10 @@ constexpr MessageText kCliMessages[] = {
     {codes::kCliUnknownCommand, "unknown command '{0}'", "ไม่รู้จักคำสั่ง '{0}'"},
     {codes::kCliUnknownOption, "unknown option '{0}'", "ไม่รู้จักตัวเลือก '{0}'"},
     {codes::kCliNeedsValue, "{0} needs a value", "{0} ต้องมีค่าตามหลัง"},
-    {codes::kCliMustBe, "{0} must be {1}, not '{2}'", "{0} ต้องเป็น {1} ไม่ใช่ '{2}'"},
     {codes::kCliBadValue, "bad value '{0}' for {1}; allowed: {2}", "ค่า '{0}' ใช้กับ {1} ไม่ได้ ค่าที่ใช้ได้: {2}"},
     {codes::kCliBadValueAnyOf, "bad value '{0}' for {1}", "ค่า '{0}' ใช้กับ {1} ไม่ได้"},
     {codes::kCliNoFile, "no FILE given", "ไม่ได้ระบุ FILE"},
     {codes::kCliOneFile, "only one FILE (got '{0}' and '{1}')", "ระบุ FILE ได้ไฟล์เดียว (ได้รับ '{0}' และ '{1}')"},
-    {codes::kCliBadOption, "bad option {0} {1}", "ตัวเลือก {0} {1} ใช้ไม่ได้"},
     {codes::kCliNotAFolder, "{0} is not a folder", "{0} ไม่ใช่โฟลเดอร์"},
     {codes::kCliReferenceFails, "the reference {0} does not run to its end ({1})",
      "โปรแกรมต้นแบบ {0} ทำงานไม่ถึงจุดจบ ({1})"},
@@ -193,8 +191,30 @@ constexpr MessageText kCliMessages[] = {
     {codes::kCliAllowedDecimalPoint, "whole or increments", "whole หรือ increments"},
     {codes::kCliAllowedSheet, "program, drawing or both", "program, drawing หรือ both"},
     {codes::kCliAllowedMillimetres, "a number from 0.001 to 5 (mm)", "ตัวเลขตั้งแต่ 0.001 ถึง 5 (มม.)"},
+    {codes::kCliAllowedShowUnits, "auto, mm or inch", "auto, mm หรือ inch"},
+    {codes::kCliAllowedCompare, "none or sharp", "none หรือ sharp"},
+    {codes::kCliAllowedToolMaterial, "hss or carbide", "hss หรือ carbide"},
+    {codes::kCliAllowedTolerance, "a number from 0 to 100 (mm)", "ตัวเลขตั้งแต่ 0 ถึง 100 (มม.)"},
     {codes::kCliAllowedGeneralTolerance, "f, m, c or v (ISO 2768-1: fine, medium, coarse, very coarse)",
      "f, m, c หรือ v (ISO 2768-1: ละเอียด ปานกลาง หยาบ หยาบมาก)"},
+
+    // Why a picture or a PDF was not made (the reasons F108 gives in both languages).
+    {codes::kCliNoOwnFolder, "cannot find the program's own folder: {0}", "หาโฟลเดอร์ของโปรแกรมไม่พบ: {0}"},
+    {codes::kCliModuleNotOpened, "cannot open the picture module: {0}", "เปิดโมดูลวาดภาพ klueng-png.so ไม่ได้: {0}"},
+    {codes::kCliModuleMissing, "the picture module klueng-png.so is not installed beside {0}",
+     "ไม่ได้ติดตั้งโมดูลวาดภาพ klueng-png.so ไว้คู่กับ {0}"},
+    {codes::kCliModuleNoEntry, "klueng-png.so has no {0}: not Klueng's picture module",
+     "klueng-png.so ไม่มี {0}: ไม่ใช่โมดูลวาดภาพของ Klueng"},
+    {codes::kCliPictureNotDrawn, "the picture could not be drawn", "วาดภาพไม่ได้"},
+
+    // check --summary.
+    {codes::kCliSummaryFile, "file", "ไฟล์"},
+    {codes::kCliSummaryErrors, "errors", "ข้อผิดพลาด"},
+    {codes::kCliSummaryWarnings, "warnings", "คำเตือน"},
+    {codes::kCliSummaryResult, "result", "ผล"},
+    {codes::kCliSummaryUnreadable, "unreadable", "อ่านไม่ได้"},
+    {codes::kCliSummaryFail, "FAIL", "ไม่ผ่าน"},
+    {codes::kCliSummaryOk, "ok", "ผ่าน"},
 };
 }  // namespace
 
