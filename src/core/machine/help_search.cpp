@@ -4,83 +4,17 @@
 #include <cctype>
 #include <string>
 
-#include "klueng/core/machine/explain.h"
 #include "klueng/core/machine/help.h"
 
 namespace klueng::core::machine {
 
 namespace {
 
-using gcode::CodeAction;
-
-// What a student types looking for a code, beyond its name (GLOSSARY.md terms).
-std::string_view keywords(CodeAction a) {
-  switch (a) {
-    case CodeAction::Rapid: return "rapid positioning traverse fast move เคลื่อนที่เร็ว";
-    case CodeAction::Line: return "linear straight line feed cut turning taper กลึงเส้นตรง กลึงปอก กลึงเรียว";
-    case CodeAction::ArcCw:
-    case CodeAction::ArcCcw: return "arc circle radius fillet round corner ส่วนโค้ง รัศมี มุมมน";
-    case CodeAction::Thread:
-    case CodeAction::BoxThreading:
-    case CodeAction::ThreadCutting: return "thread threading pitch lead screw เกลียว กลึงเกลียว ระยะพิตช์";
-    case CodeAction::BoxTurning: return "turning cycle roughing box simple กลึงปอก วัฏจักร";
-    case CodeAction::BoxFacing:
-    case CodeAction::FaceRoughing: return "facing face roughing กลึงปาดหน้า ปาดหน้า";
-    case CodeAction::TurnRoughing: return "roughing rough turning stock removal od id กลึงปอกหยาบ กลึงหยาบ";
-    case CodeAction::Finishing: return "finishing finish pass contour กลึงละเอียด กลึงเก็บผิว";
-    case CodeAction::PatternRepeating: return "pattern repeating casting forging profile กลึงตามแบบ งานหล่อ";
-    case CodeAction::ReturnToInitialLevel:
-    case CodeAction::ReturnToRPoint: return "drilling return level initial r point เจาะ ระดับถอยกลับ จุด R";
-    case CodeAction::Absolute:
-    case CodeAction::Incremental: return "absolute incremental distance mode สัมบูรณ์ สัมพัทธ์";
-    case CodeAction::FacePecking:
-    case CodeAction::Drilling:
-    case CodeAction::SpotDrilling:
-    case CodeAction::PeckDrilling: return "drilling drill hole peck centre เจาะ เจาะรู เจาะจิก";
-    case CodeAction::Grooving: return "grooving groove parting off undercut กลึงร่อง ร่อง ตัดขาด";
-    case CodeAction::CompOff:
-    case CodeAction::CompLeft:
-    case CodeAction::CompRight: return "nose radius compensation tnrc offset ชดเชยรัศมีจมูกมีด";
-    case CodeAction::ConstantSurface: return "css surface speed cutting speed ความเร็วตัด ความเร็วผิว";
-    case CodeAction::ConstantRpm: return "rpm spindle speed ความเร็วรอบ";
-    case CodeAction::FeedPerMinute:
-    case CodeAction::FeedPerRev: return "feed rate อัตราป้อน";
-    case CodeAction::Inch:
-    case CodeAction::Metric: return "units inch metric millimetre หน่วย นิ้ว มิลลิเมตร";
-    case CodeAction::Dwell: return "dwell wait pause delay หยุดรอ หน่วงเวลา";
-    case CodeAction::ReferenceCheck:
-    case CodeAction::ReferenceReturn:
-    case CodeAction::SecondReferenceReturn:
-    case CodeAction::ReturnFromReference: return "reference point home return จุดอ้างอิง";
-    case CodeAction::CoordinateSet: return "spindle limit clamp max rpm coordinate จำกัดความเร็วรอบ ตั้งพิกัด";
-    case CodeAction::SpindleCw:
-    case CodeAction::SpindleCcw:
-    case CodeAction::SpindleStop: return "spindle start stop rotation เพลา หมุน";
-    case CodeAction::CoolantOn:
-    case CodeAction::CoolantOff: return "coolant flood น้ำหล่อเย็น สารหล่อเย็น";
-    case CodeAction::LocalCall:
-    case CodeAction::SubprogramCall:
-    case CodeAction::SubprogramReturn:
-    case CodeAction::MacroCall:
-    case CodeAction::MacroModalCall: return "subprogram subroutine call macro โปรแกรมย่อย มาโคร";
-    case CodeAction::ProgramStop:
-    case CodeAction::OptionalStop:
-    case CodeAction::ProgramEnd: return "stop end program หยุด จบโปรแกรม";
-    default: return "";
-  }
-}
-
 // Lower-case ASCII letters; Thai and digits stay as they are.
 std::string folded(std::string_view s) {
   std::string out(s);
   for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return out;
-}
-
-std::string codeName(const gcode::CodeInfo& row) {
-  std::string s(1, row.letter);
-  if (row.number < 10) s += '0';
-  return s + std::to_string(row.number);
 }
 
 }  // namespace
@@ -112,12 +46,11 @@ std::vector<HelpHit> searchHelp(std::string_view query, gcode::Dialect dialect) 
       rows.push_back(own);
   for (const gcode::CodeInfo* ownRow : rows) {
     const gcode::CodeInfo& row = *ownRow;
-    const std::string code = folded(codeName(row));
+    const std::string code = folded(gcode::codeWord(row));
     const std::string names = folded(std::string(row.nameEn) + " " + std::string(row.nameTh));
     const std::string rest =
-        folded(std::string(row.exampleEn) + " " + std::string(row.exampleTh) + " " +
-               explainCode(row.letter, row.number, dialect, Lang::En) + " " +
-               explainCode(row.letter, row.number, dialect, Lang::Th) + " " + std::string(keywords(row.action)));
+        folded(std::string(row.exampleEn) + " " + std::string(row.exampleTh) + " " + std::string(row.says.en) + " " +
+               std::string(row.says.th) + " " + std::string(row.keywords));
     int score = 0;
     bool all = true;
     for (const std::string& t : terms) {
