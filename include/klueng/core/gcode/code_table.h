@@ -1,8 +1,8 @@
 #pragma once
-// Codes as data: one row per G or M code with its modal group, in-block
-// execution priority and help text, for both dialects (SPEC 6, 7, 13).
-// The checker, the interpreter, the editor's tooltips and the help pages all
-// read this one table.
+// Codes as data (SPEC 4, 6, 7, 13): one row per G or M code and meaning with its action, group,
+// in-block phase, flags, names, example, explanation phrase, search keywords and word kinds.
+// The checker, the interpreter, tool inference, the explain bar, the tooltips and the help
+// read this one table, by action, never by number (so system B's G33 is system A's G32).
 #include <array>
 #include <cstddef>
 #include <cstdint>
