@@ -15,7 +15,7 @@
 
 #include "gui/help_pictures.h"
 #include "gui/language.h"
-#include "klueng/core/machine/help.h"
+#include "klueng/core/help/help.h"
 
 namespace klueng::gui {
 

@@ -12,7 +12,7 @@
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/io/tool_config.h"
 #include "klueng/core/io/tool_library.h"
-#include "klueng/core/machine/explain.h"
+#include "klueng/core/help/explain.h"
 #include "klueng/core/machine/tool_inference.h"
 #include "test_support.h"
 

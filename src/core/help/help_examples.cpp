@@ -2,12 +2,12 @@
 // small job: face, one turning pass, the code, retract, end. Motion codes,
 // cycles and calls need a program of their own; those are written out here in
 // the habits of shop programs (G50 limit before G96, retract before a tool
-// change, G97 for threads). Every example runs clean: tests/core/machine/help_test.cpp.
+// change, G97 for threads). Every example runs clean: tests/core/help/help_test.cpp.
 #include <array>
 #include <string>
 
 #include "klueng/core/gcode/parser.h"
-#include "klueng/core/machine/help.h"
+#include "klueng/core/help/help.h"
 #include "klueng/core/machine/interpreter.h"
 
 namespace klueng::core::machine {

@@ -1,4 +1,4 @@
-#include "klueng/core/machine/explain.h"
+#include "klueng/core/help/explain.h"
 
 #include <cmath>
 #include <numbers>

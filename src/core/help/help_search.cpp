@@ -4,7 +4,7 @@
 #include <cctype>
 #include <string>
 
-#include "klueng/core/machine/help.h"
+#include "klueng/core/help/help.h"
 
 namespace klueng::core::machine {
 
