@@ -6,7 +6,7 @@
 #include "gui/code_editor.h"
 #include "gui/language.h"
 #include "gui/run_controller.h"
-#include "klueng/core/machine/explain.h"
+#include "klueng/core/help/explain.h"
 
 namespace klueng::gui {
 

@@ -15,7 +15,7 @@
 
 #include "gui/help_pictures.h"
 #include "gui/language.h"
-#include "klueng/core/machine/help.h"
+#include "klueng/core/help/help.h"
 
 namespace klueng::gui {
 
@@ -169,7 +169,7 @@ QString HelpContents::buildHtml(bool thai, core::gcode::Dialect dialect) {
             QStringLiteral("<h4><a name='ex-%1'></a>%1 \u2014 %2</h4><pre>%3</pre>")
                 .arg(code, esc(name),
                      QString::fromStdString(core::machine::workedExample(c.letter, c.number, dialect)).toHtmlEscaped());
-        if (pictured(c.letter, c.number))  // the path the example really makes (rebuild() draws it)
+        if (pictured(c))  // the path the example really makes (rebuild() draws it)
           examples += QStringLiteral("<p><img src='help-path-%1.png'><br><i>%2</i></p>")
                           .arg(code, tr("Red: cutting moves; blue dashes: rapids; grey: the bar."));
       }
@@ -200,8 +200,16 @@ QString HelpContents::buildHtml(bool thai, core::gcode::Dialect dialect) {
   return html;
 }
 
-bool HelpContents::pictured(char letter, int number) {
-  return letter == 'G' && (number == 71 || number == 72 || number == 73 || number == 76);
+namespace {
+// The cycles whose worked example gets a picture of its path, by action: the
+// machine's own numbers (G73 roughs in G-code system C) follow from its rows.
+constexpr core::gcode::CodeAction kPicturedCycles[] = {
+    core::gcode::CodeAction::TurnRoughing, core::gcode::CodeAction::FaceRoughing,
+    core::gcode::CodeAction::PatternRepeating, core::gcode::CodeAction::ThreadCutting};
+}  // namespace
+
+bool HelpContents::pictured(const core::gcode::CodeInfo& row) {
+  return std::find(std::begin(kPicturedCycles), std::end(kPicturedCycles), row.action) != std::end(kPicturedCycles);
 }
 
 void HelpContents::rebuild() {
@@ -209,9 +217,12 @@ void HelpContents::rebuild() {
   const bool thai = Language::coreLang() == core::Lang::Th;
   QTextDocument* doc = browser_->document();
   doc->addResource(QTextDocument::ImageResource, QUrl(QStringLiteral("help-tips.png")), tipNumbersPicture());
-  for (int number : {71, 72, 73, 76})
-    doc->addResource(QTextDocument::ImageResource, QUrl(QStringLiteral("help-path-G%1.png").arg(number)),
-                     examplePathPicture('G', number, dialect_));
+  for (const core::gcode::CodeAction action : kPicturedCycles)
+    if (const core::gcode::CodeInfo* row = core::gcode::findAction('G', action, dialect_))
+      doc->addResource(
+          QTextDocument::ImageResource,
+          QUrl(QStringLiteral("help-path-%1.png").arg(QString::fromStdString(core::gcode::codeWord(*row)))),
+          examplePathPicture('G', row->number, dialect_));
   search_->setPlaceholderText(tr("Search: G71, roughing, กลึงปอกหยาบ ..."));
   browser_->setHtml(buildHtml(thai, dialect_));
   if (!search_->text().isEmpty()) search(search_->text());

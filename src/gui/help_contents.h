@@ -25,8 +25,9 @@ class HelpContents : public QDialog {
   // Open at a code's entry (F1 on a word in the editor).
   void showCode(char letter, int number);
   static QString anchorOf(char letter, int number);  // "G71", "M08"
-  // Codes whose worked example comes with a picture of its path (G71-G73, G76).
-  static bool pictured(char letter, int number);
+  // Codes whose worked example comes with a picture of its path: the roughing and threading cycles by action
+  // (G71-G73, G76 in G-code system A).
+  static bool pictured(const core::gcode::CodeInfo& row);
   QTextBrowser* browser() const { return browser_; }
   QLineEdit* searchField() const { return search_; }
   QListWidget* hits() const { return hits_; }

@@ -7,7 +7,7 @@
 
 #include "klueng/core/comp/nose_comp.h"
 #include "klueng/core/geometry.h"
-#include "klueng/core/machine/help.h"
+#include "klueng/core/help/help.h"
 
 namespace klueng::gui {
 

@@ -44,7 +44,7 @@
 #include <QTemporaryDir>
 #include "gui/explain_bar.h"
 #include "klueng/core/gcode/parser.h"
-#include "klueng/core/machine/explain.h"
+#include "klueng/core/help/explain.h"
 #include "gui/resources.h"
 #include "gui/run_controller.h"
 #include "gui/settings.h"

@@ -300,7 +300,7 @@ class Checker {
         emit(codes::kUnknownMCode, w, {wordText(w)});
       return;
     }
-    if (found->mustStandAlone && seen.standAloneCount < 4) seen.standAlone[seen.standAloneCount++] = &w;
+    if (found->mustStandAlone() && seen.standAloneCount < 4) seen.standAlone[seen.standAloneCount++] = &w;
     if (w.letter == 'G')
       readGCode(w, *found, seen);
     else
@@ -329,7 +329,7 @@ class Checker {
     } else if (row.group == ModalGroup::CannedCycle) {
       seen.cannedCycle = true;
     }
-    if (!row.words.empty() && !seen.wordRow) seen.wordRow = &row;
+    if (row.words.any() && !seen.wordRow) seen.wordRow = &row;
     if (row.action == CodeAction::Dwell) seen.dwell = &w;
     if (row.action == CodeAction::ReferenceReturn) seen.reference = &w;
     if (row.action == CodeAction::BoxTurning || row.action == CodeAction::BoxThreading ||
@@ -420,7 +420,8 @@ class Checker {
   // starting or ending on one.
   void checkArc(const BlockCodes& seen) {
     if (motion_ != CodeAction::ArcCw && motion_ != CodeAction::ArcCcw) return;
-    const std::string arcCode = motion_ == CodeAction::ArcCw ? "G02" : "G03";
+    const CodeInfo* arcRow = findAction('G', motion_, options_.dialect);
+    const std::string arcCode = arcRow ? codeWord(*arcRow) : std::string();
     const bool axisWords = seen.axisWords();
     if (seen.motionWord && !axisWords) emit(codes::kArcWithoutEndPoint, *seen.motionWord, {wordText(*seen.motionWord)});
     if (!seen.cannedCycle && seen.has('R') && (seen.has('I') || seen.has('K')))
@@ -475,31 +476,45 @@ class Checker {
 
   InputUnits units() const { return inch_ ? InputUnits::Inch : InputUnits::Millimetre; }
 
-  // SPEC 4's kind of a letter, unless the block's code lists it otherwise.
-  static char defaultKind(char l) {
+  // How a word's value is checked: its code's word kind resolved for this word.
+  enum class ValueRule { None, Real, Positive, Whole, Seconds, Tool };
+
+  // SPEC 4's rule for a letter, unless the block's code lists it otherwise.
+  static ValueRule defaultRule(char l) {
     switch (l) {
       case 'F':
-      case 'S': return '+';
+      case 'S': return ValueRule::Positive;
       case 'P':
-      case 'Q': return '#';
-      case 'T': return 'T';
+      case 'Q': return ValueRule::Whole;
+      case 'T': return ValueRule::Tool;
       case 'G':
       case 'M':
       case 'N':
-      case 'O': return 0;  // checked with the codes
-      default: return '.';
+      case 'O': return ValueRule::None;  // checked with the codes
+      default: return ValueRule::Real;
     }
   }
 
+  ValueRule ruleOf(const Word& w, const CodeInfo* row) const {
+    switch (row ? row->words.of(w.letter) : WordKind::Default) {
+      case WordKind::Default: return defaultRule(w.letter);
+      case WordKind::Length: return ValueRule::Real;
+      case WordKind::Positive: return ValueRule::Positive;
+      case WordKind::Whole: return ValueRule::Whole;
+      // A dwell time: the profile says how P is read.
+      case WordKind::Dwell:
+        return profile_.dwellP == DwellPUnit::SecondsWithPointElseMs && w.hasDecimalPoint ? ValueRule::Seconds
+                                                                                          : ValueRule::Whole;
+      // Q5. is 5 mm, Q5000 is 5000 increments.
+      case WordKind::Increment: return w.hasDecimalPoint ? ValueRule::Positive : ValueRule::Whole;
+    }
+    return defaultRule(w.letter);
+  }
+
   void checkValue(const Word& w, const CodeInfo* row) {
-    char kind = row ? wordKind(*row, w.letter) : 0;
-    if (!kind) kind = defaultKind(w.letter);
-    if (kind == 'd')  // a dwell time: the profile says how P is read
-      kind = profile_.dwellP == DwellPUnit::SecondsWithPointElseMs && w.hasDecimalPoint ? 's' : '#';
-    if (kind == 'i') kind = w.hasDecimalPoint ? '+' : '#';  // Q5. is 5 mm, Q5000 is 5000 increments
-    switch (kind) {
-      case '.': checkReal(w, false); break;
-      case '+': {
+    switch (ruleOf(w, row)) {
+      case ValueRule::Real: checkReal(w, false); break;
+      case ValueRule::Positive: {
         // S (rpm, m/min or ft/min) keeps one range in both units.
         const bool unitless = w.letter == 'S';
         const double min = unitless ? profile_.minPositiveMm : minPositive();
@@ -511,17 +526,17 @@ class Checker {
           checkReal(w, true, unitless);
         break;
       }
-      case '#':
+      case ValueRule::Whole:
         if (wholeNumber(w) < 0) emit(codes::kNotWholeNumber, w, {wordText(w), std::string(1, w.letter)});
         break;
-      case 's':  // seconds (Haas G04 P3.)
+      case ValueRule::Seconds:  // seconds (Haas G04 P3.)
         if (w.value < 0)
           emit(codes::kNegativeDwell, w, {wordText(w)});
         else
           checkReal(w, false);
         break;
-      case 'T': checkTool(w); break;
-      default: break;
+      case ValueRule::Tool: checkTool(w); break;
+      case ValueRule::None: break;
     }
   }
 

@@ -127,8 +127,8 @@ class ModalWalk {
         case CodeAction::CycleCancel: drilling_ = false; break;
         default: break;
       }
-      if (a >= CodeAction::Finishing && a <= CodeAction::PeckDrilling) cycle = true;
-      if (a >= CodeAction::Drilling && a <= CodeAction::PeckDrilling) drilling_ = true;
+      if (isCuttingCycle(a)) cycle = true;
+      if (isDrillingCycle(a)) drilling_ = true;
     }
     if (coordinateSet && hasS) clamped_ = true;
     if (g96 && !clamped_ && !b.blockSkip) report(codes::kConstantSurfaceWithoutClamp, *g96, {});
@@ -173,8 +173,10 @@ class ModalWalk {
   void setInch(bool inch) { inch_ = inch; }
 
  private:
-  static std::string codeName(CodeAction a) {
-    return a == CodeAction::Line ? "G01" : a == CodeAction::ArcCw ? "G02" : a == CodeAction::ArcCcw ? "G03" : "G32";
+  // The dialect's code for a modal motion (G33 for a thread in G-code system B).
+  std::string codeName(CodeAction a) const {
+    const CodeInfo* row = findAction('G', a, options_.dialect);
+    return row ? codeWord(*row) : std::string();
   }
 
   // A114 as the interpreter raises it: R shorter than half the chord.

@@ -116,8 +116,9 @@ std::vector<int> calledPrograms(const Program& program, Dialect dialect) {
     if (!p || p->expr >= 0) continue;
     bool m98 = false, macro = false;
     for (const Word& w : b.words) {
-      if (w.letter == 'M' && w.expr < 0 && w.code() == 98) m98 = true;
-      if (w.letter == 'G' && w.expr < 0 && (w.code() == 65 || w.code() == 66) && !w.hasDecimalPoint) macro = true;
+      const CodeAction a = actionOf(w, dialect);
+      if (a == CodeAction::SubprogramCall) m98 = true;
+      if (a == CodeAction::MacroCall || a == CodeAction::MacroModalCall) macro = true;
     }
     if (!m98 && !macro) continue;
     const Word* l = b.find('L');

@@ -35,7 +35,9 @@ std::optional<cycles::CycleAlarm> Interpreter::readProfile(const Block& cycle, c
     const Block& first = program_.blocks[static_cast<std::size_t>(out.ns)];
     bool motion = first.statement.kind != gcode::StatementKind::None;  // refused below (A148)
     for (const Word& w : first.words)
-      motion = motion || (w.letter == 'G' && (w.expr >= 0 || (!w.hasDecimalPoint && (w.code() == 0 || w.code() == 1))));
+      motion =
+          motion || (w.letter == 'G' && (w.expr >= 0 || gcode::actionOf(w, options_.dialect) == CodeAction::Rapid ||
+                                         gcode::actionOf(w, options_.dialect) == CodeAction::Line));
     if (!motion)
       return cycles::CycleAlarm{codes::kProfileStartsWithoutMotion,
                                 first.words.empty() ? SourceRange{first.line, 1, 0} : first.words.front().range,

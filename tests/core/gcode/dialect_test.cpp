@@ -261,12 +261,14 @@ TEST(Dialects, HaasMessagesNameItsLettersAndInchRanges) {
 }
 
 TEST(CodeTable, CodesCarryTheirWordKinds) {
-  EXPECT_EQ(wordKind(*findCode('G', 83, Dialect::Haas), 'Q'), '+');
-  EXPECT_EQ(wordKind(*findCode('G', 83, Dialect::Fanuc), 'Q'), 'i');
-  EXPECT_EQ(wordKind(*findCode('G', 76, Dialect::Haas), 'K'), '+');
-  EXPECT_EQ(wordKind(*findCode('G', 73, Dialect::Haas), 'D'), '#');
-  EXPECT_EQ(wordKind(*findCode('G', 4, Dialect::Classic), 'P'), 'd');
-  EXPECT_EQ(wordKind(*findCode('G', 71, Dialect::Fanuc), 'D'), 0);
+  EXPECT_EQ(findCode('G', 83, Dialect::Haas)->words.of('Q'), WordKind::Positive);
+  EXPECT_EQ(findCode('G', 83, Dialect::Fanuc)->words.of('Q'), WordKind::Increment);
+  EXPECT_EQ(findCode('G', 76, Dialect::Haas)->words.of('K'), WordKind::Positive);
+  EXPECT_EQ(findCode('G', 73, Dialect::Haas)->words.of('D'), WordKind::Whole);
+  EXPECT_EQ(findCode('G', 4, Dialect::Classic)->words.of('P'), WordKind::Dwell);
+  EXPECT_EQ(findCode('G', 71, Dialect::Fanuc)->words.of('D'), WordKind::Default);
+  EXPECT_EQ(findCode('G', 71, Dialect::Haas)->words.of('U'), WordKind::Length);
+  EXPECT_FALSE(findCode('G', 71, Dialect::Fanuc)->words.any());
   EXPECT_EQ(findCode('M', 86, Dialect::Haas)->group, ModalGroup::MDoor);
   EXPECT_EQ(findCode('M', 86, Dialect::Fanuc)->group, ModalGroup::MBrake);
   EXPECT_EQ(findCode('M', 14, Dialect::Haas)->group, ModalGroup::MBrake);

@@ -1,11 +1,14 @@
 #pragma once
-// Codes as data: one row per G or M code with its modal group, in-block
-// execution priority and help text, for both dialects (SPEC 6, 7, 13).
-// The checker, the interpreter, the editor's tooltips and the help pages all
-// read this one table.
+// Codes as data (SPEC 4, 6, 7, 13): one row per G or M code and meaning with its action, group,
+// in-block phase, flags, names, example, explanation phrase, search keywords and word kinds.
+// The checker, the interpreter, tool inference, the explain bar, the tooltips and the help
+// read this one table, by action, never by number (so system B's G33 is system A's G32).
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 
 #include "klueng/core/gcode/machine_profile.h"
@@ -126,32 +129,103 @@ enum class CodeAction : std::uint8_t {
   SubprogramReturn,
 };
 
+// A canned cycle that cuts (G70-G76, G81-G83; not G80), by its action.
+constexpr bool isCuttingCycle(CodeAction a) {
+  switch (a) {
+    case CodeAction::Finishing:
+    case CodeAction::TurnRoughing:
+    case CodeAction::FaceRoughing:
+    case CodeAction::PatternRepeating:
+    case CodeAction::FacePecking:
+    case CodeAction::Grooving:
+    case CodeAction::ThreadCutting:
+    case CodeAction::Drilling:
+    case CodeAction::SpotDrilling:
+    case CodeAction::PeckDrilling: return true;
+    default: return false;
+  }
+}
+// A drilling cycle on centre (G81-G83), by its action.
+constexpr bool isDrillingCycle(CodeAction a) {
+  return a == CodeAction::Drilling || a == CodeAction::SpotDrilling || a == CodeAction::PeckDrilling;
+}
+
+// How a word's value reads in a code's block, where the code wants it other
+// than SPEC 4's kind for the letter (the checker's value rules).
+enum class WordKind : std::uint8_t {
+  Default,    // SPEC 4's kind for the letter
+  Length,     // a signed length (U on a G71 Haas row)
+  Positive,   // a positive real in F's range (D depth of cut)
+  Whole,      // a whole number: block number, count, least increments (P, Q of G70)
+  Dwell,      // a dwell time, read as the profile's dwellP says (G04 P)
+  Increment,  // a positive increment: a length with a decimal point, else whole least input
+              // increments (Fanuc G83 Q5000 = Q5. = 5 mm, as decimal point programming reads any length)
+};
+
+// The words of one code whose kind differs from the default, built in the table
+// as WordKinds().whole("PQ").positive("DF"). Letters are A-Z and listed once: a
+// table entry that breaks this does not compile (the table is constexpr).
+class WordKinds {
+ public:
+  constexpr WordKinds& length(std::string_view letters) { return set(letters, WordKind::Length); }
+  constexpr WordKinds& positive(std::string_view letters) { return set(letters, WordKind::Positive); }
+  constexpr WordKinds& whole(std::string_view letters) { return set(letters, WordKind::Whole); }
+  constexpr WordKinds& dwell(std::string_view letters) { return set(letters, WordKind::Dwell); }
+  constexpr WordKinds& increment(std::string_view letters) { return set(letters, WordKind::Increment); }
+
+  // The kind of `letter`; Default when not listed (or not a letter A-Z).
+  constexpr WordKind of(char letter) const {
+    return letter >= 'A' && letter <= 'Z' ? kinds_[static_cast<std::size_t>(letter - 'A')] : WordKind::Default;
+  }
+  constexpr bool any() const {
+    for (WordKind k : kinds_)
+      if (k != WordKind::Default) return true;
+    return false;
+  }
+
+ private:
+  // Not constexpr: reaching it while the table is built stops the compile.
+  static void badWordLetter() {}
+  constexpr WordKinds& set(std::string_view letters, WordKind kind) {
+    for (char c : letters) {
+      if (c < 'A' || c > 'Z' || kinds_[static_cast<std::size_t>(c - 'A')] != WordKind::Default) badWordLetter();
+      kinds_[static_cast<std::size_t>(c - 'A')] = kind;
+    }
+    return *this;
+  }
+  std::array<WordKind, 26> kinds_{};
+};
+
+// One sentence in both languages.
+struct Phrase {
+  std::string_view en, th;
+};
+
+// One row per code and dialect meaning: everything Klueng knows about the code.
 struct CodeInfo {
+  // Flags: alone in its block (M00 M01 M02 M30, and G98/G99 in classic, SPEC 5 rule 7).
+  static constexpr std::uint8_t kStandsAlone = 1;
+  // Wants the spindle at rest (Haas M10/M11 chuck, M14/M15 brake, M19 orient): its worked example stops it first.
+  static constexpr std::uint8_t kSpindleAtRest = 2;
+
   // The machine's control family has the row (whatever number its G-code system gives it).
   bool in(Dialect d) const;
+  bool mustStandAlone() const { return (flags & kStandsAlone) != 0; }
   char letter;  // 'G' or 'M'
   int number;   // 0..99
   ModalGroup group;
   Phase phase;
   std::uint8_t dialects;    // dialectBit() of each dialect that accepts the row
-  bool mustStandAlone;      // M00 M01 M02 M30 (and G98/G99 in classic)
+  std::uint8_t flags;       // kStandsAlone, kSpindleAtRest
+  CodeAction action;        // what the interpreter, the checker and the cycles do with it
   std::string_view nameEn;  // short help: "Rapid traverse"
   std::string_view nameTh;
   std::string_view exampleEn;  // one-line example with explanation
   std::string_view exampleTh;
-  // The words the code takes whose value kind differs from the default, as
-  // letter + kind pairs ("P#Q#D+"): '.' signed length, '+' positive real
-  // (F-like range), '#' whole number (block number, count, least increments),
-  // 'd' dwell time read as the profile's dwellP says, 'i' a positive increment:
-  // a length with a decimal point, else whole least input increments (Fanuc
-  // G83 Q5000 = Q5. = 5 mm, as decimal point programming reads any length). Letters not listed keep
-  // SPEC 4's kind. Read by the checker (and the help pages).
-  std::string_view words = {};
-  CodeAction action = CodeAction::None;  // from the table's action list (code_table.cpp)
+  Phrase says;                // what it does, as a teacher says it (the explain bar's clause)
+  std::string_view keywords;  // what students type looking for it, beyond its name (help search)
+  WordKinds words = {};       // its words' kinds where they differ from SPEC 4 (the checker)
 };
-
-// The kind of `letter` in `row`'s word list; 0 when not listed.
-char wordKind(const CodeInfo& row, char letter);
 
 // Every row of every control family, numbered as G-code system A. A code whose
 // meaning differs between the families (M41, G98/G99 standing alone) has one
@@ -183,9 +257,17 @@ int numberInA(char letter, int number, Dialect dialect);
 std::optional<CodeInfo> lookupCode(char letter, int number, Dialect dialect);
 // Same, without a copy (constant time): nullptr when unknown.
 const CodeInfo* findCode(char letter, int number, Dialect dialect);
+// The code as a control shows it: "G01", "M98".
+std::string codeWord(const CodeInfo& row);
+// The dialect's row for `action` under its own number (G33 for Thread in
+// system B), the lowest number first; nullptr when the dialect has none.
+const CodeInfo* findAction(char letter, CodeAction action, Dialect dialect);
 
 struct Block;
 struct Word;
+// What a G or M word does in `dialect` (G33 threads in system B): its row's
+// action; None for another letter, an unknown code, G#1 or G1.5.
+CodeAction actionOf(const Word& word, Dialect dialect);
 // The block's first G word whose row calls a macro (G65, G66, G67: the code
 // table's macro call actions) and, in `row`, that row; nullptr when none.
 const Word* macroCallWord(const Block& block, Dialect dialect, const CodeInfo** row = nullptr);

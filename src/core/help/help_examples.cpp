@@ -2,12 +2,12 @@
 // small job: face, one turning pass, the code, retract, end. Motion codes,
 // cycles and calls need a program of their own; those are written out here in
 // the habits of shop programs (G50 limit before G96, retract before a tool
-// change, G97 for threads). Every example runs clean: tests/core/machine/help_test.cpp.
+// change, G97 for threads). Every example runs clean: tests/core/help/help_test.cpp.
 #include <array>
 #include <string>
 
 #include "klueng/core/gcode/parser.h"
-#include "klueng/core/machine/help.h"
+#include "klueng/core/help/help.h"
 #include "klueng/core/machine/interpreter.h"
 
 namespace klueng::core::machine {
@@ -129,9 +129,7 @@ Slot slotOf(const gcode::CodeInfo& row) {
        row.action == A::SpindleRelease || row.action == A::CAxisOff))
     return Slot::Stopped;
   // Haas chuck, spindle lock and orient: the spindle must be at rest.
-  if (row.letter == 'M' &&
-      (row.number == 10 || row.number == 11 || row.number == 14 || row.number == 15 || row.number == 19))
-    return Slot::Stopped;
+  if (row.flags & gcode::CodeInfo::kSpindleAtRest) return Slot::Stopped;
   return Slot::Running;
 }
 
@@ -146,7 +144,11 @@ std::string exampleLine(const gcode::CodeInfo& row) {
 }  // namespace
 
 std::vector<std::pair<std::string, std::string>> workedExampleFiles(char letter, int number, gcode::Dialect dialect) {
-  if (letter == 'M' && (number == 98 || number == 99) && dialect == Dialect::Classic)
+  // The classic control keeps one program per file: its M98/M99 examples call the file beside them.
+  const gcode::CodeInfo* row = gcode::findCode(letter, number, dialect);
+  const bool call =
+      row && (row->action == gcode::CodeAction::SubprogramCall || row->action == gcode::CodeAction::SubprogramReturn);
+  if (call && gcode::machineProfile(dialect).family == Dialect::Classic)
     return {{"O1234.nc", "O1234 (one pass)\nG01 X46. F0.2\nZ-10.\nG00 X52. Z2.\nM99\n"}};
   return {};
 }

@@ -1,12 +1,12 @@
 // Explanations of blocks (issue 11): one block per code family with its exact
 // English and Thai text, and a sentence for every code of the table.
-#include "klueng/core/machine/explain.h"
+#include "klueng/core/help/explain.h"
 
 #include <gtest/gtest.h>
 
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/machine/interpreter.h"
-#include "test_support.h"
+#include "../machine/test_support.h"
 
 namespace klueng::core::machine {
 namespace {

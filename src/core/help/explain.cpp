@@ -1,9 +1,7 @@
-#include "klueng/core/machine/explain.h"
+#include "klueng/core/help/explain.h"
 
-#include <cctype>
 #include <cmath>
 #include <numbers>
-#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -20,113 +18,6 @@ using gcode::Block;
 using gcode::CodeAction;
 using gcode::Word;
 
-struct Phrase {
-  std::string_view en, th;
-};
-
-// What each action does, as a teacher says it (Thai terms from GLOSSARY.md).
-std::optional<Phrase> actionPhrase(CodeAction a) {
-  switch (a) {
-    case CodeAction::Rapid: return Phrase{"move at rapid speed, not cutting", "เคลื่อนที่เร็วโดยไม่ตัดเฉือน"};
-    case CodeAction::Line: return Phrase{"cut in a straight line", "กลึงเป็นเส้นตรง"};
-    case CodeAction::ArcCw: return Phrase{"cut a clockwise arc", "กลึงส่วนโค้งตามเข็มนาฬิกา"};
-    case CodeAction::ArcCcw: return Phrase{"cut a counter-clockwise arc", "กลึงส่วนโค้งทวนเข็มนาฬิกา"};
-    case CodeAction::Thread:
-      return Phrase{"cut one pass of a thread, the feed locked to the spindle",
-                    "กลึงเกลียวหนึ่งเที่ยว อัตราป้อนสัมพันธ์กับรอบเพลา"};
-    case CodeAction::BoxTurning:
-      return Phrase{"turning cycle: feed in, cut along Z, come out and return to the start",
-                    "วัฏจักรกลึงปอก: ป้อนมีดเข้า กลึงตามแนวแกน Z ถอยออก แล้วกลับจุดเริ่ม"};
-    case CodeAction::BoxThreading:
-      return Phrase{"threading cycle: one thread pass and back to the start",
-                    "วัฏจักรกลึงเกลียว: กลึงเกลียวหนึ่งเที่ยวแล้วกลับจุดเริ่ม"};
-    case CodeAction::BoxFacing:
-      return Phrase{"facing cycle: feed in, cut along X, come out and return to the start",
-                    "วัฏจักรกลึงปาดหน้า: ป้อนมีดเข้า กลึงตามแนวแกน X ถอยออก แล้วกลับจุดเริ่ม"};
-    case CodeAction::Inch: return Phrase{"lengths from here on are in inches", "ค่าความยาวต่อจากนี้เป็นหน่วยนิ้ว"};
-    case CodeAction::Metric: return Phrase{"lengths from here on are in millimetres", "ค่าความยาวต่อจากนี้เป็นหน่วยมิลลิเมตร"};
-    case CodeAction::CompOff: return Phrase{"cancel tool nose radius compensation", "ยกเลิกการชดเชยรัศมีจมูกมีด"};
-    case CodeAction::CompLeft:
-      return Phrase{"compensate the nose radius with the tool left of the path",
-                    "ชดเชยรัศมีจมูกมีด โดยมีดอยู่ทางซ้ายของแนวทางเดิน"};
-    case CodeAction::CompRight:
-      return Phrase{"compensate the nose radius with the tool right of the path",
-                    "ชดเชยรัศมีจมูกมีด โดยมีดอยู่ทางขวาของแนวทางเดิน"};
-    case CodeAction::ConstantSurface:
-      return Phrase{"constant cutting speed: the rpm follows the diameter",
-                    "ความเร็วตัดคงที่: รอบเพลาเปลี่ยนตามเส้นผ่าศูนย์กลาง"};
-    case CodeAction::ConstantRpm: return Phrase{"constant spindle rpm", "ความเร็วรอบเพลาคงที่"};
-    case CodeAction::FeedPerMinute: return Phrase{"feed in mm per minute", "อัตราป้อนเป็นมม./นาที"};
-    case CodeAction::FeedPerRev: return Phrase{"feed in mm per revolution", "อัตราป้อนเป็นมม./รอบ"};
-    case CodeAction::WorkOffset: return Phrase{"use this work coordinate system", "ใช้ระบบพิกัดงานนี้"};
-    case CodeAction::Dwell: return Phrase{"wait with the tool standing still", "หยุดรอโดยมีดอยู่กับที่"};
-    case CodeAction::ReferenceCheck:
-      return Phrase{"rapid to the point and check it is the reference point", "เคลื่อนที่เร็วไปยังจุดนั้นแล้วตรวจว่าเป็นจุดอ้างอิง"};
-    case CodeAction::ReferenceReturn:
-    case CodeAction::SecondReferenceReturn:
-      return Phrase{"return to the reference point through the given point", "กลับสู่จุดอ้างอิงโดยผ่านจุดที่กำหนด"};
-    case CodeAction::ReturnFromReference:
-      return Phrase{"come back from the reference point through the G28 point", "กลับจากจุดอ้างอิงผ่านจุดกลางทางของ G28"};
-    case CodeAction::CoordinateSet:
-      return Phrase{"set the coordinates, or limit the spindle speed with S", "ตั้งระบบพิกัด หรือจำกัดความเร็วรอบด้วย S"};
-    case CodeAction::MachineCoordinates: return Phrase{"move in machine coordinates", "เคลื่อนที่ในระบบพิกัดเครื่อง"};
-    case CodeAction::MacroCall: return Phrase{"call a macro with arguments", "เรียกมาโครพร้อมส่งค่าอาร์กิวเมนต์"};
-    case CodeAction::MacroModalCall:
-      return Phrase{"call a macro after every move until G67", "เรียกมาโครหลังการเคลื่อนที่ทุกครั้งจนถึง G67"};
-    case CodeAction::MacroModalCancel:
-      return Phrase{"stop calling the macro after each move", "เลิกเรียกมาโครหลังการเคลื่อนที่"};
-    case CodeAction::CycleCancel: return Phrase{"cancel the drilling cycle", "ยกเลิกวัฏจักรเจาะ"};
-    case CodeAction::Finishing:
-      return Phrase{"finishing cycle: follow the profile once at the finishing feed",
-                    "วัฏจักรกลึงละเอียด: กลึงตามรูปร่างหนึ่งเที่ยวด้วยอัตราป้อนกลึงละเอียด"};
-    case CodeAction::TurnRoughing:
-      return Phrase{"rough turning cycle: take the profile down in passes along Z",
-                    "วัฏจักรกลึงปอกหยาบ: กลึงตามรูปร่างทีละเที่ยวตามแนวแกน Z"};
-    case CodeAction::FaceRoughing:
-      return Phrase{"rough facing cycle: take the profile down in passes along X",
-                    "วัฏจักรกลึงปาดหน้าหยาบ: กลึงตามรูปร่างทีละเที่ยวตามแนวแกน X"};
-    case CodeAction::PatternRepeating:
-      return Phrase{"pattern repeating cycle: the profile again and again, closer each pass",
-                    "วัฏจักรกลึงตามแบบซ้ำ: กลึงตามรูปร่างซ้ำ เข้าใกล้ขึ้นทุกเที่ยว"};
-    case CodeAction::FacePecking:
-      return Phrase{"peck cycle along Z: feed in, back off to break the chip, again",
-                    "วัฏจักรเจาะจิกตามแนวแกน Z: ป้อนเข้า ถอยเพื่อตัดเศษ แล้วป้อนต่อ"};
-    case CodeAction::Grooving:
-      return Phrase{"grooving cycle along X: plunge in pecks to break the chip",
-                    "วัฏจักรกลึงร่องตามแนวแกน X: ป้อนเข้าเป็นช่วงเพื่อตัดเศษ"};
-    case CodeAction::ThreadCutting:
-      return Phrase{"multi-pass threading cycle: the thread in passes of less and less depth",
-                    "วัฏจักรกลึงเกลียวหลายเที่ยว: ป้อนลึกลดลงทุกเที่ยว"};
-    case CodeAction::Drilling:
-      return Phrase{"drilling cycle: drill to the depth and rapid out", "วัฏจักรเจาะรู: เจาะถึงความลึกแล้วถอยออกเร็ว"};
-    case CodeAction::SpotDrilling: return Phrase{"drilling cycle with a dwell at the bottom", "วัฏจักรเจาะรูและหยุดรอที่ก้นรู"};
-    case CodeAction::ReturnToInitialLevel:
-      return Phrase{"drilling cycles return to the initial level", "วัฏจักรเจาะรูถอยกลับถึงระดับเริ่มต้น"};
-    case CodeAction::ReturnToRPoint: return Phrase{"drilling cycles return to the R point", "วัฏจักรเจาะรูถอยกลับถึงจุด R"};
-    case CodeAction::PeckDrilling:
-      return Phrase{"peck drilling cycle: drill in pecks, back out to clear the chips",
-                    "วัฏจักรเจาะจิก: เจาะทีละช่วงแล้วถอยออกเพื่อคายเศษ"};
-    case CodeAction::SpindleCw: return Phrase{"start the spindle clockwise", "เปิดเพลาหมุนตามเข็มนาฬิกา"};
-    case CodeAction::SpindleCcw: return Phrase{"start the spindle counter-clockwise", "เปิดเพลาหมุนทวนเข็มนาฬิกา"};
-    case CodeAction::SpindleStop: return Phrase{"stop the spindle", "หยุดเพลาหมุน"};
-    case CodeAction::CoolantOn: return Phrase{"turn the coolant on", "เปิดน้ำหล่อเย็น"};
-    case CodeAction::CoolantOff: return Phrase{"turn the coolant off", "ปิดน้ำหล่อเย็น"};
-    case CodeAction::SpindleClamp: return Phrase{"apply the spindle brake", "ล็อกเบรกเพลา"};
-    case CodeAction::SpindleRelease: return Phrase{"release the spindle brake", "ปลดเบรกเพลา"};
-    case CodeAction::ProgramStop:
-      return Phrase{"stop the program until Cycle Start is pressed", "หยุดโปรแกรมจนกว่าจะกด Cycle Start"};
-    case CodeAction::OptionalStop:
-      return Phrase{"stop here when the Optional Stop switch is on", "หยุดที่นี่เมื่อเปิดสวิตช์ Optional Stop"};
-    case CodeAction::ProgramEnd: return Phrase{"end of the program", "จบโปรแกรม"};
-    case CodeAction::LocalCall:
-      return Phrase{"run the blocks from N(P) as a subprogram and come back",
-                    "เรียกบล็อกตั้งแต่ N(P) เป็นโปรแกรมย่อยแล้วกลับมา"};
-    case CodeAction::SubprogramCall: return Phrase{"run subprogram O(P) and come back", "เรียกโปรแกรมย่อย O(P) แล้วกลับมา"};
-    case CodeAction::SubprogramReturn: return Phrase{"return to the calling program", "กลับไปยังโปรแกรมที่เรียก"};
-    default: return std::nullopt;
-  }
-}
-
 // "30", "-59.8", "0.25": what the number says, no trailing zeros.
 std::string plain(double v) {
   std::string s = gcode::formatFixed(v, 3);
@@ -135,7 +26,7 @@ std::string plain(double v) {
   return s == "-0" ? "0" : s;
 }
 
-std::string pick(Phrase p, Lang lang) { return std::string(lang == Lang::Th ? p.th : p.en); }
+std::string pick(gcode::Phrase p, Lang lang) { return std::string(lang == Lang::Th ? p.th : p.en); }
 
 class Explainer {
  public:
@@ -217,7 +108,7 @@ class Explainer {
         default: break;
       }
       add(w->text() + " " + text);
-      if (row->action >= CodeAction::Finishing && row->action <= CodeAction::PeckDrilling) cycleWords(row->action);
+      if (gcode::isCuttingCycle(row->action)) cycleWords(row->action);
     }
   }
 
@@ -291,9 +182,11 @@ class Explainer {
                                               CodeAction::ArcCcw, CodeAction::Thread};
       a = kModes[static_cast<int>(after_->modal.motion)];
     }
-    std::string text = g                 ? explainCode('G', g->code(), dialect_, lang_)
-                       : actionPhrase(a) ? pick(*actionPhrase(a), lang_)
-                                         : std::string();
+    // No G word: the modal motion's row in the dialect says it.
+    const gcode::CodeInfo* modal = g ? nullptr : gcode::findAction('G', a, dialect_);
+    std::string text = g       ? explainCode('G', g->code(), dialect_, lang_)
+                       : modal ? pick(modal->says, lang_)
+                               : std::string();
     if (text.empty()) return;
     if ((a == CodeAction::ArcCw || a == CodeAction::ArcCcw) && b_.find('R'))
       text += (th_ ? " รัศมี " : " of radius ") + plain(b_.find('R')->value);
@@ -355,13 +248,7 @@ class Explainer {
 
 std::string explainCode(char letter, int number, gcode::Dialect dialect, Lang lang) {
   const gcode::CodeInfo* row = gcode::findCode(letter, number, dialect);
-  if (!row) return {};
-  if (const std::optional<Phrase> p = actionPhrase(row->action)) return pick(*p, lang);
-  // No action of its own: the table's name, as a clause.
-  std::string name(lang == Lang::Th ? row->nameTh : row->nameEn);
-  if (lang == Lang::En && name.size() > 1 && std::islower(static_cast<unsigned char>(name[1])))
-    name[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(name[0])));
-  return name;
+  return row ? pick(row->says, lang) : std::string();
 }
 
 std::string explainPass(const Timeline& timeline, int moveIndex, Lang lang) {

@@ -1,7 +1,7 @@
 // Help that teaches (issue 11): every code's worked example runs clean through
 // the simulator — check, run and cut on a Ø50 x 100 bar with the shipped
 // setup — and the search finds codes from the words students use.
-#include "klueng/core/machine/help.h"
+#include "klueng/core/help/help.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -11,7 +11,7 @@
 
 #include "klueng/core/cut/cut_simulator.h"
 #include "klueng/core/gcode/machine_file.h"
-#include "klueng/core/machine/explain.h"
+#include "klueng/core/help/explain.h"
 #include "klueng/core/io/tool_library.h"
 #include "klueng/core/job/job.h"
 #include "klueng/core/machine/setup_files.h"
