@@ -71,6 +71,9 @@ void MainWindow::createActions() {
   connect(operatorPanel_, &OperatorPanel::cycleStartRequested, this, [this](bool singleBlock) {
     action(singleBlock ? QStringLiteral("actionStep") : QStringLiteral("actionGo"))->trigger();
   });
+  connect(operatorPanel_, &OperatorPanel::overridesChanged, runner_, &RunController::setOverrides);
+  connect(operatorPanel_, &OperatorPanel::feedHoldRequested, this,
+          [this] { operatorPanel_->showFeedHold(runner_->feedHold()); });
   connect(operatorPanel_, &OperatorPanel::switchesChanged, this, [this](bool optionalStop, bool blockSkip) {
     action(QStringLiteral("actionOptionalStop"))->setChecked(optionalStop);
     action(QStringLiteral("actionBlockSkip"))->setChecked(blockSkip);
@@ -290,8 +293,8 @@ void MainWindow::createDocks() {
   view3d_->hide();
   // Issue 31: the operator panel beside the output screen; its touch-off gives the run its offset rows.
   operatorPanel_ = new OperatorPanel(this, [this] {
-    return OperatorPanel::Source{jobDoc_.tools().setup, document_->header(), jobDoc_.dialect(), runner_->timeline(),
-                                 currentProgramFile()};
+    return OperatorPanel::Source{jobDoc_.tools().setup, document_->header(),  jobDoc_.dialect(),
+                                 runner_->timeline(),   currentProgramFile(), document_->filePath()};
   });
   addDockWidget(Qt::RightDockWidgetArea, operatorPanel_);
   operatorPanel_->hide();

@@ -630,8 +630,9 @@ machine::MachineSetup Control::runSetup() const {
     const OffsetRow& r = row(n);
     const AxisValues t = trueTip(n);
     io::Offset& o = out.offsets.at(n);
-    o.x = r.wear.x + ((r.geometry.x + shift_.x) + t.x);
-    o.z = r.wear.z + ((r.geometry.z + shift_.z) + t.z);
+    // To the nanometre: the sum of 0.001 mm entries carries no float noise into offset.cfg text.
+    o.x = std::round((r.wear.x + ((r.geometry.x + shift_.x) + t.x)) * 1e6) / 1e6;
+    o.z = std::round((r.wear.z + ((r.geometry.z + shift_.z) + t.z)) * 1e6) / 1e6;
   }
   return out;
 }
