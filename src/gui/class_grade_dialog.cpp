@@ -109,6 +109,8 @@ ClassGradeDialog::ClassGradeDialog(const core::machine::MachineSetup& setup, cor
   table_->setSelectionMode(QAbstractItemView::SingleSelection);
   table_->horizontalHeader()->setStretchLastSection(true);
   table_->verticalHeader()->hide();
+  table_->setColumnHidden(kTouchOff, true);  // until a graded program asks for the setup exercise
+  table_->setWordWrap(true);                 // the touch-off lines wrap in the room left (showRows)
   details_ = new QTableWidget(0, 5, this);
   details_->setObjectName(QStringLiteral("dimensionTable"));
   details_->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -344,6 +346,15 @@ void ClassGradeDialog::showRows() {
       table_->item(row, kTouchOff)->setForeground(r.touchOff.pass() ? QColor(0, 120, 0) : QColor(190, 0, 0));
   }
   table_->resizeColumnsToContents();
+  if (!table_->isColumnHidden(kTouchOff)) {
+    // The touch-off lines take the room the other columns leave and wrap there (a line per tool
+    // can be long, in Thai more so), instead of running off the dialog.
+    int used = 0;
+    for (int c = 0; c < kTouchOff; ++c)
+      if (!table_->isColumnHidden(c)) used += table_->columnWidth(c);
+    table_->setColumnWidth(kTouchOff, std::max(240, table_->viewport()->width() - used));
+    table_->resizeRowsToContents();
+  }
   saveButton_->setEnabled(!rows_.empty());
   pdfButton_->setEnabled(!rows_.empty());
   summary_->setText(rows_.empty()

@@ -3,6 +3,7 @@
 // (dialect, power-on units, animation speed).
 #include <QActionGroup>
 #include <QAction>
+#include <QDir>
 #include <QMenu>
 #include <QStatusBar>
 #include <QToolBar>
@@ -32,6 +33,7 @@
 #include "gui/settings.h"
 #include "gui/status_panel.h"
 #include "klueng/core/gcode/machine_profile.h"
+#include "klueng/core/io/tool_config.h"
 
 namespace klueng::gui {
 
@@ -98,7 +100,13 @@ void MainWindow::createActions() {
   on("actionPrintPreview", [this] { printPreview(); });
   on("actionExportPdf", [this] { exportPdf(); });
   on("actionGradeClass", [this] {
-    auto* dialog = new ClassGradeDialog(jobDoc_.setup(), jobDoc_.dialect(), document_->filePath(), this);
+    // Graded against offset.cfg as it is on disk: the operator panel's touch-off (the exercise's
+    // entries) is this window's run, not the class's true offsets (issue 31 item 5).
+    core::machine::MachineSetup setup = jobDoc_.setup();
+    const auto shipped =
+        core::io::readOffsetTable(QDir(configDir_).filePath(QStringLiteral("offset.cfg")).toStdString());
+    if (shipped.value) setup.offsets = *shipped.value;
+    auto* dialog = new ClassGradeDialog(setup, jobDoc_.dialect(), document_->filePath(), this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     connect(dialog, &ClassGradeDialog::openProgram, this, [this](const QString& path) { openFile(path); });
     dialog->show();

@@ -210,8 +210,16 @@ void OperatorPanel::build() {
   message_->setObjectName(QStringLiteral("operatorMessage"));
   message_->setWordWrap(true);
   message_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-  // Room for a two-line message kept: the keys below do not jump under the mouse when one appears.
-  message_->setMinimumHeight(2 * message_->fontMetrics().lineSpacing());
+  // Room for a three-line message kept (an alarm in words, or a message and the note under it):
+  // the keys below do not jump under the mouse when one appears. Measured on three bold Thai
+  // lines: a Thai line (its fallback font, vowels above and below) is taller than a Latin one.
+  {
+    QLabel probe(QStringLiteral("ก้ำ Xg\nก้ำ Xg\nก้ำ Xg"));
+    QFont bold = message_->font();
+    bold.setBold(true);
+    probe.setFont(bold);
+    message_->setMinimumHeight(probe.sizeHint().height());
+  }
   message_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
   v->addWidget(message_);
 

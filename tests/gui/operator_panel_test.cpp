@@ -209,6 +209,13 @@ class OperatorPanelTest : public QObject {
     QCOMPARE(panel->findChild<QLabel*>(QStringLiteral("operatorTitle"))->text(), QStringLiteral("HAAS"));
     QCOMPARE(panel->findChild<QToolButton*>(QStringLiteral("operatorModeZrn"))->text(), QStringLiteral("ZERO RET"));
     QCOMPARE(panel->findChild<QToolButton*>(QStringLiteral("operatorSpindleCw"))->text(), QStringLiteral("FWD"));
+    // Haas rapid override keys: 5 / 25 / 50 / 100 %, no F0; the slowest one reaches the run.
+    auto* rapid = panel->findChild<QComboBox*>(QStringLiteral("operatorRapidOverride"));
+    QCOMPARE(rapid->itemText(0), QStringLiteral("R 5%"));
+    QCOMPARE(rapid->count(), 4);
+    rapid->setCurrentIndex(0);
+    QCOMPARE(panel->control()->overrides().rapid, 5);
+    QCOMPARE(w.findChild<gui::RunController*>()->overrides().rapid, 5);
     panel->pressMode(ctl::Mode::Memory);
     panel->pressCycleStart();
     QVERIFY2(panel->messageLabel()->text().startsWith(QStringLiteral("A601 ZERO RETURN REQUIRED")),
@@ -236,6 +243,7 @@ class OperatorPanelTest : public QObject {
     QCOMPARE(panel->control()->layout(), ctl::Layout::Fanuc);
     QCOMPARE(panel->findChild<QLabel*>(QStringLiteral("operatorTitle"))->text(), QStringLiteral("FANUC Series 0i-TF"));
     QCOMPARE(panel->findChild<QToolButton*>(QStringLiteral("operatorModeZrn"))->text(), QStringLiteral("ZRN"));
+    QCOMPARE(rapid->itemText(0), QStringLiteral("R F0"));
   }
 
   // Issue 31 item 5 and the review: the job file's (OFFSETS: UNKNOWN) powers the panel on in the
@@ -355,22 +363,25 @@ class OperatorPanelTest : public QObject {
     QVERIFY(std::abs(runner->currentTime() - stood - 0.5) < 1e-6);
     runner->stop();
 
-    // Grade a class: the touch-off line beside the part's grade.
-    const core::machine::MachineSetup setup = core::machine::loadMachineSetup(KLUENG_SOURCE_DIR).setup;
-    gui::ClassGradeDialog dialog(setup, core::gcode::Dialect::Fanuc, QString());
-    dialog.show();
-    dialog.setFolder(dir.filePath(QStringLiteral("class")));
-    dialog.setReference(dir.filePath(QStringLiteral("reference.nc")));
-    QSignalSpy done(&dialog, &gui::ClassGradeDialog::finished);
-    dialog.grade();
+    // File > Grade a class: the touch-off line beside the part's grade, against offset.cfg's true rows
+    // (not the exercise's entries this window's run has).
+    w.action(QStringLiteral("actionGradeClass"))->trigger();
+    auto* dialog = w.findChild<gui::ClassGradeDialog*>();
+    QVERIFY(dialog);
+    QVERIFY(dialog->table()->isColumnHidden(dialog->table()->columnCount() - 1));
+    dialog->setFolder(dir.filePath(QStringLiteral("class")));
+    dialog->setReference(dir.filePath(QStringLiteral("reference.nc")));
+    QSignalSpy done(dialog, &gui::ClassGradeDialog::finished);
+    dialog->grade();
     QTRY_COMPARE_WITH_TIMEOUT(done.count(), 1, 30000);
-    QCOMPARE(dialog.table()->rowCount(), 1);
-    const int touchColumn = dialog.table()->columnCount() - 1;
-    QVERIFY(!dialog.table()->isColumnHidden(touchColumn));
-    QCOMPARE(dialog.table()->horizontalHeaderItem(touchColumn)->text(), QStringLiteral("Touch-off"));
-    QCOMPARE(dialog.table()->item(0, touchColumn)->text(),
+    QCOMPARE(dialog->table()->rowCount(), 1);
+    const int touchColumn = dialog->table()->columnCount() - 1;
+    QVERIFY(!dialog->table()->isColumnHidden(touchColumn));
+    QCOMPARE(dialog->table()->horizontalHeaderItem(touchColumn)->text(), QStringLiteral("Touch-off"));
+    QCOMPARE(dialog->table()->item(0, touchColumn)->text(),
              QStringLiteral("T01 touched off at X0.000 Z-0.001, true X0.000 Z0.000: within 0.050 mm"));
-    QCOMPARE(dialog.table()->item(0, 1)->text(), QStringLiteral("pass"));
+    QCOMPARE(dialog->table()->item(0, 1)->text(), QStringLiteral("pass"));
+    dialog->close();
   }
 };
 
