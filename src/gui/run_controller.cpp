@@ -160,6 +160,7 @@ void RunController::invalidate() {
   frameTimer_.stop();
   cut_.reset();
   timeline_.reset();
+  clock_ = {};
   stockShapeVolume_ = -1.0;
   time_ = 0.0;
   snapshotIndex_ = -1;
@@ -376,6 +377,7 @@ void RunController::onPrepared() {
     return;
   }
   timeline_ = result->timeline;
+  clock_ = {};  // a new timeline may sit where the old one was: its rates are rebuilt
   toolTimes_ = timeline_ ? timeline_->timeByTool() : std::vector<core::machine::ToolTime>{};
   files_ = result->files;
   cutSetup_ = result->fitted ? *result->fitted : setup_;

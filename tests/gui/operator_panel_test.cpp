@@ -25,6 +25,7 @@
 #include "gui/output_view.h"
 #include "gui/resources.h"
 #include "gui/run_controller.h"
+#include "gui/status_panel.h"
 #include "gui_test_runner.h"
 #include "window_test_support.h"
 #include "klueng/core/control/control.h"
@@ -347,6 +348,10 @@ class OperatorPanelTest : public QObject {
     QVERIFY2(std::abs(runner->currentTime() - held - 0.05) < 1e-6,
              qPrintable(QString::number(runner->currentTime() - held)));
     QVERIFY(runner->status().feedHold);
+    auto* fields = w.findChild<gui::StatusFields*>();
+    QVERIFY(fields);
+    QCOMPARE(fields->fieldText(gui::StatusFields::Field::Feed), QStringLiteral("FEED HOLD"));
+    QCOMPARE(fields->fieldText(gui::StatusFields::Field::Spindle), QStringLiteral("800 rpm"));
     QCOMPARE(runner->status().feedMmPerMin, 0.0);
     QVERIFY(runner->status().rpm > 799.0);
     QVERIFY2(panel->messageLabel()->text().contains(QStringLiteral("FEED HOLD: the axes stop")),
