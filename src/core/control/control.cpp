@@ -449,10 +449,20 @@ MotionResult Control::zeroReturn(Axis a) {
   return r;
 }
 
+bool Control::homedForJog(Axis a, MotionResult& out) const {
+  // Haas: "before you can jog an axis, the machine must establish its home position" (NGC
+  // operator's manual, Jog Mode; Setting 53 Jog w/o Zero Return is OFF at power-on). A Fanuc
+  // jogs before its reference return, without soft limits.
+  if (layout_ != Layout::Haas || referenced(a)) return true;
+  out.stop = diag(Severity::Alarm, kc::kNotReferenced, {controlLabel(kc::kNotReferenced), a == Axis::X ? "X" : "Z"});
+  return false;
+}
+
 MotionResult Control::jog(Axis a, double distance, bool rapid) {
   MotionResult r;
   if (!motionAllowed(Mode::Jog, a == Axis::X ? (distance > 0 ? "+X" : "-X") : (distance > 0 ? "+Z" : "-Z"), r))
     return r;
+  if (!homedForJog(a, r)) return r;
   AxisValues target = machine_;
   (a == Axis::X ? target.x : target.z) += distance;
   return moveTo(target, rapid, jogFeed * overrides_.feed / 100.0);
@@ -461,6 +471,7 @@ MotionResult Control::jog(Axis a, double distance, bool rapid) {
 MotionResult Control::handle(int clicks) {
   MotionResult r;
   if (!motionAllowed(Mode::Handle, "HANDLE", r)) return r;
+  if (!homedForJog(handleAxis_, r)) return r;
   AxisValues target = machine_;
   // Whole micrometres: a click never leaves the 0.001 mm grid (X in diameter, as the display).
   double& v = handleAxis_ == Axis::X ? target.x : target.z;

@@ -111,6 +111,22 @@ TEST(Control, CycleStartIsRefusedUntilBothAxesReturnedToTheReference) {
   Control haas(shippedSetup(), bar50x100(), gcode::Dialect::Haas);
   EXPECT_EQ(haas.layout(), Layout::Haas);
   EXPECT_EQ(haas.cycleStartRefusal()->args[0], "ZERO RETURN REQUIRED");
+  // A Haas jogs an axis only after its zero return (the handle too); nothing moves, no RESET needed.
+  const AxisValues before = haas.machinePosition();
+  const MotionResult notHomed = haas.jog(Axis::Z, -5.0, false);
+  ASSERT_TRUE(notHomed.stop);
+  EXPECT_EQ(notHomed.stop->code, kc::kNotReferenced);
+  EXPECT_EQ(notHomed.stop->args, (std::vector<std::string>{"ZERO RETURN REQUIRED", "Z"}));
+  haas.setMode(Mode::Handle);
+  haas.setHandleAxis(Axis::X);
+  EXPECT_EQ(haas.handle(10).stop->args[1], "X");
+  EXPECT_EQ(haas.machinePosition(), before);
+  EXPECT_FALSE(haas.alarm());
+  haas.setMode(Mode::ZeroReturn);
+  haas.zeroReturn(Axis::Z);
+  haas.setMode(Mode::Jog);
+  EXPECT_TRUE(haas.jog(Axis::Z, -5.0, false).moved);
+  EXPECT_EQ(haas.jog(Axis::X, -5.0, false).stop->args[1], "X");
 }
 
 TEST(Control, JogStopsAtTheSoftLimitsWithTheControlsOvertravelAlarm) {

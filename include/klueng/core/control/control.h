@@ -210,6 +210,7 @@ class Control {
   void rebuildSim();
   Diagnostic diag(Severity s, const char* code, std::vector<std::string> args = {}) const;
   bool motionAllowed(Mode wanted, const char* key, MotionResult& out);
+  bool homedForJog(Axis a, MotionResult& out) const;  // Haas jogs only a referenced axis
 
   machine::MachineSetup setup_;
   io::JobHeader header_;
