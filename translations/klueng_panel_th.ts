@@ -88,8 +88,8 @@
         <translation>ปรับอัตราป้อน: 0 ถึง 150 % ทีละ 10 % ไม่มีผลขณะกลึงเกลียว</translation>
     </message>
     <message>
-        <source>Rapid override: F0, 25, 50 or 100 % of the rapid rate</source>
-        <translation>ปรับอัตราเคลื่อนที่เร็ว: F0, 25, 50 หรือ 100 % ของอัตราเคลื่อนที่เร็ว</translation>
+        <source>Rapid override: F0 (Haas: 5 %), 25, 50 or 100 % of the rapid rate</source>
+        <translation>ปรับอัตราเคลื่อนที่เร็ว: F0 (Haas: 5 %), 25, 50 หรือ 100 % ของอัตราเคลื่อนที่เร็ว</translation>
     </message>
     <message>
         <source>Spindle override: 50 to 120 % of the programmed speed</source>
@@ -114,10 +114,6 @@
     <message>
         <source>Cycle start (Alt+Enter): MDI runs the typed blocks, MEMORY runs the program</source>
         <translation>เริ่มทำงาน (Alt+Enter): โหมด MDI รันบล็อกที่พิมพ์ โหมด MEMORY รันโปรแกรม</translation>
-    </message>
-    <message>
-        <source>Feed hold: the feed override goes to 0 %</source>
-        <translation>หยุดป้อนชั่วคราว: ค่าปรับอัตราป้อนเป็น 0 %</translation>
     </message>
     <message>
         <source>Reset (Alt+Backspace): clears the alarm</source>
@@ -184,12 +180,32 @@
         <translation>แบบฝึกหัด: ไม่รู้ค่าออฟเซต</translation>
     </message>
     <message>
-        <source>Every geometry offset starts at 0: each tool the program uses must be touched off before cycle start, and cycle start then says how far the entries are from the true tools</source>
-        <translation>ค่าออฟเซตรูปทรงทุกแถวเริ่มที่ 0: ต้องตั้งศูนย์มีดทุกตัวที่โปรแกรมใช้ก่อนกด CYCLE START แล้วเครื่องจะบอกว่าค่าที่ป้อนคลาดจากมีดจริงเท่าใด</translation>
+        <source>Every geometry offset starts at 0: each tool the program uses must be touched off before cycle start, and cycle start then says how far the entries are from the true tools and saves them beside the program for grading. A job file with (OFFSETS: UNKNOWN) at its head starts in the exercise.</source>
+        <translation>ค่าออฟเซตรูปทรงทุกแถวเริ่มที่ 0: ต้องตั้งศูนย์มีดทุกตัวที่โปรแกรมใช้ก่อนกด CYCLE START แล้วเครื่องจะบอกว่าค่าที่ป้อนคลาดจากมีดจริงเท่าใด และบันทึกค่าไว้ข้างไฟล์โปรแกรมเพื่อให้ครูตรวจ ไฟล์งานที่มี (OFFSETS: UNKNOWN) ที่หัวโปรแกรมจะเริ่มในแบบฝึกหัดนี้ทันที</translation>
     </message>
     <message>
         <source>CHIPS</source>
         <translation>มีเศษตัด</translation>
+    </message>
+    <message>
+        <source>Touch-off saved for grading: %1</source>
+        <translation>บันทึกค่าตั้งศูนย์มีดไว้ให้ตรวจแล้ว: %1</translation>
+    </message>
+    <message>
+        <source>Touch-off not saved (%1): %2</source>
+        <translation>บันทึกค่าตั้งศูนย์มีดไม่ได้ (%1): %2</translation>
+    </message>
+    <message>
+        <source>FEED HOLD: the axes stop, the spindle keeps turning; CYCLE START in MEM resumes</source>
+        <translation>FEED HOLD: แกนหยุดเคลื่อนที่ เพลาจับงานยังหมุนอยู่ กด CYCLE START ในโหมด MEM เพื่อทำงานต่อ</translation>
+    </message>
+    <message>
+        <source>FEED HOLD: no program is moving</source>
+        <translation>FEED HOLD: ไม่มีโปรแกรมที่กำลังเคลื่อนที่</translation>
+    </message>
+    <message>
+        <source>Feed hold: a running program's axes decelerate and stop, the spindle keeps turning; CYCLE START resumes</source>
+        <translation>หยุดป้อนชั่วคราว: แกนของโปรแกรมที่กำลังทำงานจะลดความเร็วจนหยุด เพลาจับงานยังหมุนอยู่ กด CYCLE START เพื่อทำงานต่อ</translation>
     </message>
 </context>
 </TS>

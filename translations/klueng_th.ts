@@ -1637,5 +1637,9 @@
         <source>The layer of the part's outline:</source>
         <translation>เลเยอร์ของเส้นรอบรูปชิ้นงาน:</translation>
     </message>
+    <message>
+        <source>Touch-off</source>
+        <translation>การตั้งศูนย์มีด</translation>
+    </message>
 </context>
 </TS>

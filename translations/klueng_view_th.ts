@@ -404,6 +404,10 @@
         <source>Nose radius of the active offset (inches)</source>
         <translation>รัศมีจมูกมีดของออฟเซตที่ใช้อยู่ (นิ้ว)</translation>
     </message>
+    <message>
+        <source>FEED HOLD</source>
+        <translation>หยุดป้อน</translation>
+    </message>
 </context>
 <context>
     <name>klueng::gui::StatusLamps</name>

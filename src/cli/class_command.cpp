@@ -170,6 +170,11 @@ int runClass(const std::vector<std::string>& args) {
     return 2;  // the old file keeps its bytes; the message says why (issue 29)
   }
   if (!o.pdf.empty() && !writePdf(o, rows, config.dir)) return 2;
+  // The setup exercise (issue 31): each student's touch-off, tool by tool, in the chosen language.
+  for (const core::job::ClassRow& r : rows)
+    if (r.touchOff.asked)
+      std::fprintf(stderr, "%s: %s\n", r.file.c_str(),
+                   core::job::touchOffText(r.touchOff, o.tolerance, o.lang).c_str());
   const std::string totals = cliText(codes::kCliClassTotals, o.lang,
                                      {std::to_string(rows.size()), std::to_string(passed),
                                       std::to_string(rows.size() - static_cast<std::size_t>(passed))});

@@ -1,5 +1,6 @@
 #include "gui/class_grade_dialog.h"
 
+#include <algorithm>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
@@ -37,7 +38,7 @@ namespace klueng::gui {
 
 namespace {
 
-enum Column { kProgram, kResult, kErrors, kAlarm, kCycleTime, kLeftover, kGouge, kDrawing, kColumns };
+enum Column { kProgram, kResult, kErrors, kAlarm, kCycleTime, kLeftover, kGouge, kDrawing, kTouchOff, kColumns };
 
 // The drawing's toleranced dimensions, or nullopt with the reasons in the UI language.
 std::optional<std::vector<core::cut::DrawnDimension>> readDrawing(const QString& path, const std::string& general,
@@ -108,6 +109,8 @@ ClassGradeDialog::ClassGradeDialog(const core::machine::MachineSetup& setup, cor
   table_->setSelectionMode(QAbstractItemView::SingleSelection);
   table_->horizontalHeader()->setStretchLastSection(true);
   table_->verticalHeader()->hide();
+  table_->setColumnHidden(kTouchOff, true);  // until a graded program asks for the setup exercise
+  table_->setWordWrap(true);                 // the touch-off lines wrap in the room left (showRows)
   details_ = new QTableWidget(0, 5, this);
   details_->setObjectName(QStringLiteral("dimensionTable"));
   details_->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -224,7 +227,7 @@ void ClassGradeDialog::retranslate() {
   saveButton_->setText(tr("Save CSV..."));
   pdfButton_->setText(tr("Save PDF..."));
   table_->setHorizontalHeaderLabels({tr("Program"), tr("Result"), tr("Errors"), tr("Alarm"), tr("Cycle time (s)"),
-                                     tr("Leftover (mm)"), tr("Gouge (mm)"), tr("Drawing")});
+                                     tr("Leftover (mm)"), tr("Gouge (mm)"), tr("Drawing"), tr("Touch-off")});
   details_->setHorizontalHeaderLabels(
       {tr("Dimension"), tr("Tolerance"), tr("Limits (mm)"), tr("Measured (mm)"), tr("Result")});
   // Every header whole in both languages ("เวลาทำงาน (วินาที)" is wider than a default column).
@@ -304,6 +307,9 @@ void ClassGradeDialog::showRows() {
   table_->setColumnHidden(kLeftover, !reference);
   table_->setColumnHidden(kGouge, !reference);
   table_->setColumnHidden(kDrawing, !drawing);
+  // The setup exercise (issue 31): shown when a program or the reference says the offsets are unknown.
+  table_->setColumnHidden(kTouchOff, std::none_of(rows_.begin(), rows_.end(),
+                                                  [](const core::job::ClassRow& r) { return r.touchOff.asked; }));
   details_->setVisible(drawing);
   table_->setRowCount(static_cast<int>(rows_.size()));
   int passed = 0;
@@ -331,8 +337,24 @@ void ClassGradeDialog::showRows() {
     int in = 0;
     for (const core::cut::InspectedDimension& d : r.inspection) in += d.in() ? 1 : 0;
     set(kDrawing, drawing ? tr("%1 of %2 in tolerance").arg(in).arg(r.inspection.size()) : QString());
+    // Each tool's entered offsets against the true ones, one tool a line in the tooltip.
+    const QString touch =
+        QString::fromStdString(core::job::touchOffText(r.touchOff, gradedTolerance_, Language::coreLang()));
+    set(kTouchOff, touch);
+    table_->item(row, kTouchOff)->setToolTip(QString(touch).replace(QStringLiteral("; "), QStringLiteral("\n")));
+    if (r.touchOff.asked)
+      table_->item(row, kTouchOff)->setForeground(r.touchOff.pass() ? QColor(0, 120, 0) : QColor(190, 0, 0));
   }
   table_->resizeColumnsToContents();
+  if (!table_->isColumnHidden(kTouchOff)) {
+    // The touch-off lines take the room the other columns leave and wrap there (a line per tool
+    // can be long, in Thai more so), instead of running off the dialog.
+    int used = 0;
+    for (int c = 0; c < kTouchOff; ++c)
+      if (!table_->isColumnHidden(c)) used += table_->columnWidth(c);
+    table_->setColumnWidth(kTouchOff, std::max(240, table_->viewport()->width() - used));
+    table_->resizeRowsToContents();
+  }
   saveButton_->setEnabled(!rows_.empty());
   pdfButton_->setEnabled(!rows_.empty());
   summary_->setText(rows_.empty()

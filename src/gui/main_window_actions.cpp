@@ -3,6 +3,7 @@
 // (dialect, power-on units, animation speed).
 #include <QActionGroup>
 #include <QAction>
+#include <QDir>
 #include <QMenu>
 #include <QStatusBar>
 #include <QToolBar>
@@ -32,6 +33,7 @@
 #include "gui/settings.h"
 #include "gui/status_panel.h"
 #include "klueng/core/gcode/machine_profile.h"
+#include "klueng/core/io/tool_config.h"
 
 namespace klueng::gui {
 
@@ -71,6 +73,9 @@ void MainWindow::createActions() {
   connect(operatorPanel_, &OperatorPanel::cycleStartRequested, this, [this](bool singleBlock) {
     action(singleBlock ? QStringLiteral("actionStep") : QStringLiteral("actionGo"))->trigger();
   });
+  connect(operatorPanel_, &OperatorPanel::overridesChanged, runner_, &RunController::setOverrides);
+  connect(operatorPanel_, &OperatorPanel::feedHoldRequested, this,
+          [this] { operatorPanel_->showFeedHold(runner_->feedHold()); });
   connect(operatorPanel_, &OperatorPanel::switchesChanged, this, [this](bool optionalStop, bool blockSkip) {
     action(QStringLiteral("actionOptionalStop"))->setChecked(optionalStop);
     action(QStringLiteral("actionBlockSkip"))->setChecked(blockSkip);
@@ -95,7 +100,13 @@ void MainWindow::createActions() {
   on("actionPrintPreview", [this] { printPreview(); });
   on("actionExportPdf", [this] { exportPdf(); });
   on("actionGradeClass", [this] {
-    auto* dialog = new ClassGradeDialog(jobDoc_.setup(), jobDoc_.dialect(), document_->filePath(), this);
+    // Graded against offset.cfg as it is on disk: the operator panel's touch-off (the exercise's
+    // entries) is this window's run, not the class's true offsets (issue 31 item 5).
+    core::machine::MachineSetup setup = jobDoc_.setup();
+    const auto shipped =
+        core::io::readOffsetTable(QDir(configDir_).filePath(QStringLiteral("offset.cfg")).toStdString());
+    if (shipped.value) setup.offsets = *shipped.value;
+    auto* dialog = new ClassGradeDialog(setup, jobDoc_.dialect(), document_->filePath(), this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     connect(dialog, &ClassGradeDialog::openProgram, this, [this](const QString& path) { openFile(path); });
     dialog->show();
@@ -290,8 +301,8 @@ void MainWindow::createDocks() {
   view3d_->hide();
   // Issue 31: the operator panel beside the output screen; its touch-off gives the run its offset rows.
   operatorPanel_ = new OperatorPanel(this, [this] {
-    return OperatorPanel::Source{jobDoc_.tools().setup, document_->header(), jobDoc_.dialect(), runner_->timeline(),
-                                 currentProgramFile()};
+    return OperatorPanel::Source{jobDoc_.tools().setup, document_->header(),  jobDoc_.dialect(),
+                                 runner_->timeline(),   currentProgramFile(), document_->filePath()};
   });
   addDockWidget(Qt::RightDockWidgetArea, operatorPanel_);
   operatorPanel_->hide();

@@ -24,11 +24,14 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <set>
 
 #include "gui/language.h"
 #include "klueng/core/diagnostic_codes.h"
+#include "klueng/core/io/tool_config.h"
+#include "klueng/core/job/class_grading.h"
 #include "klueng/core/job/job.h"
 #include "klueng/core/messages.h"
 #include "render/lathe_painters.h"
@@ -207,8 +210,16 @@ void OperatorPanel::build() {
   message_->setObjectName(QStringLiteral("operatorMessage"));
   message_->setWordWrap(true);
   message_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-  // Room for a two-line message kept: the keys below do not jump under the mouse when one appears.
-  message_->setMinimumHeight(2 * message_->fontMetrics().lineSpacing());
+  // Room for a three-line message kept (an alarm in words, or a message and the note under it):
+  // the keys below do not jump under the mouse when one appears. Measured on three bold Thai
+  // lines: a Thai line (its fallback font, vowels above and below) is taller than a Latin one.
+  {
+    QLabel probe(QStringLiteral("ก้ำ Xg\nก้ำ Xg\nก้ำ Xg"));
+    QFont bold = message_->font();
+    bold.setBold(true);
+    probe.setFont(bold);
+    message_->setMinimumHeight(probe.sizeHint().height());
+  }
   message_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
   v->addWidget(message_);
 
@@ -339,6 +350,7 @@ void OperatorPanel::build() {
       control_->overrides().spindle = spindleOv_->currentData().toInt();
       refresh();
       updateCycleTime();
+      emitOverrides();
     });
   ++row;
   const char* switchNames[4] = {"operatorSingleBlock", "operatorOptStop", "operatorBlockDelete", "operatorDryRun"};
@@ -351,6 +363,7 @@ void OperatorPanel::build() {
       *flags[i] = on;
       refresh();
       updateCycleTime();
+      if (i == 3) emitOverrides();
     });
     // Pressed by the user (not set at power-on): the Run menu's switches follow.
     if (i == 1 || i == 2)
@@ -376,7 +389,7 @@ void OperatorPanel::build() {
   connect(modes_, &QButtonGroup::idClicked, this, [this](int id) { pressMode(static_cast<ctl::Mode>(id)); });
   connect(cycleStart_, &QToolButton::clicked, this, &OperatorPanel::pressCycleStart);
   connect(reset_, &QToolButton::clicked, this, &OperatorPanel::pressReset);
-  connect(feedHold_, &QToolButton::clicked, this, [this] { feedOv_->setCurrentIndex(0); });
+  connect(feedHold_, &QToolButton::clicked, this, &OperatorPanel::pressFeedHold);
   connect(powerOn_, &QToolButton::clicked, this, &OperatorPanel::powerOn);
   connect(zoom_, &QToolButton::clicked, this, [this] {
     view_->zoom = (view_->zoom + 1) % 3;
@@ -544,6 +557,19 @@ void OperatorPanel::applyLayoutLabels() {
   const char* jogs[4] = {"-X", "+X", "-Z", "+Z"};
   for (int i = 0; i < 4; ++i) jogKeys_[i]->setText(QString::fromLatin1(jogs[i]));
   rapid_->setText(haas ? QStringLiteral("RAPID") : QStringLiteral("RAPID"));
+  // The rapid override keys: Fanuc F0 / 25 / 50 / 100 %, Haas 5 / 25 / 50 / 100 % (Haas NGC
+  // operator's manual, T2.17 Override Keys). The value is kept when the machine changes.
+  const int slowest = haas ? 5 : 0;
+  if (rapidOv_->itemData(0).toInt() != slowest) {
+    const QSignalBlocker quiet(rapidOv_);
+    const int now = rapidOv_->currentData().toInt();
+    rapidOv_->clear();
+    for (int p : {slowest, 25, 50, 100})
+      rapidOv_->addItem(p == 0 ? QStringLiteral("R F0") : QStringLiteral("R %1%").arg(p), p);
+    const int at = rapidOv_->findData(now);
+    rapidOv_->setCurrentIndex(at >= 0 ? at : 0);
+    if (control_) control_->overrides().rapid = rapidOv_->currentData().toInt();
+  }
   const char* steps[3] = {"×1", "×10", "×100"};
   const char* haasSteps[3] = {".001", ".01", ".1"};
   for (int i = 0; i < 3; ++i) handleStep_->button(i)->setText(QString::fromUtf8(haas ? haasSteps[i] : steps[i]));
@@ -597,14 +623,15 @@ void OperatorPanel::retranslateUi() {
   sWord_->setToolTip(tr("Spindle speed for the spindle keys, rpm"));
   coolant_->setToolTip(tr("Coolant on / off (M08 / M09)"));
   feedOv_->setToolTip(tr("Feed override: 0 to 150 % in steps of 10 %; it does not act while threading"));
-  rapidOv_->setToolTip(tr("Rapid override: F0, 25, 50 or 100 % of the rapid rate"));
+  rapidOv_->setToolTip(tr("Rapid override: F0 (Haas: 5 %), 25, 50 or 100 % of the rapid rate"));
   spindleOv_->setToolTip(tr("Spindle override: 50 to 120 % of the programmed speed"));
   switches_[0]->setToolTip(tr("Single block: the program stops after each block"));
   switches_[1]->setToolTip(tr("Optional stop: M01 stops the program"));
   switches_[2]->setToolTip(tr("Block delete: blocks starting with / are skipped"));
   switches_[3]->setToolTip(tr("Dry run: feed moves at the jog feed, to try a program in the air"));
   cycleStart_->setToolTip(tr("Cycle start (Alt+Enter): MDI runs the typed blocks, MEMORY runs the program"));
-  feedHold_->setToolTip(tr("Feed hold: the feed override goes to 0 %"));
+  feedHold_->setToolTip(
+      tr("Feed hold: a running program's axes decelerate and stop, the spindle keeps turning; CYCLE START resumes"));
   reset_->setToolTip(tr("Reset (Alt+Backspace): clears the alarm"));
   powerOn_->setToolTip(
       tr("Power on again: a new bar, the turret short of the reference point, the offsets as the job has them"));
@@ -621,7 +648,9 @@ void OperatorPanel::retranslateUi() {
   exercise_->setText(tr("Exercise: the offsets are unknown"));
   exercise_->setToolTip(
       tr("Every geometry offset starts at 0: each tool the program uses must be touched off "
-         "before cycle start, and cycle start then says how far the entries are from the true tools"));
+         "before cycle start, and cycle start then says how far the entries are from the true tools "
+         "and saves them beside the program for grading. A job file with (OFFSETS: UNKNOWN) at its head "
+         "starts in the exercise."));
   offsets_->setToolTip(
       tr("Geometry and wear offsets, X as a diameter; the selected row takes MEASURE and +INPUT") +
       QStringLiteral("\n\n") +
@@ -677,9 +706,11 @@ void OperatorPanel::powerOn() {
   rapidOv_->setCurrentIndex(rapidOv_->findData(100));
   spindleOv_->setCurrentIndex(spindleOv_->findData(100));
   for (QToolButton* sw : switches_) sw->setChecked(false);
+  // The teacher's job file may ask for the setup exercise: (OFFSETS: UNKNOWN) at its head.
+  if (core::io::offsetsUnknownIn(s.programFile.gcode) > 0) control_->forgetGeometry();
   {
     const QSignalBlocker quiet(exercise_);
-    exercise_->setChecked(false);
+    exercise_->setChecked(control_->exercise());
   }
   coolant_->setChecked(false);
   handleStep_->button(0)->setChecked(true);
@@ -689,6 +720,7 @@ void OperatorPanel::powerOn() {
   micReading_->clear();
   applyLayoutLabels();
   emitOffsets();
+  emitOverrides();
   refresh();
   updateCycleTime();
 }
@@ -784,12 +816,47 @@ void OperatorPanel::pressCycleStart() {
       const auto refusal = control_->cycleStartRefusal(used);
       // The exercise: how far the entered offsets are from the true ones.
       showMessage(refusal ? refusal : control_->exercise() ? control_->compareTouchOff(used) : std::nullopt);
+      if (!refusal && control_->exercise()) saveTouchOff();
       if (!refusal) emit cycleStartRequested(control_->singleBlock);
       return;
     }
     default:
       showMessage(core::Diagnostic{core::Severity::Note, core::codes::kKeyNotInMode, {}, {"CYCLE START", "MEM / MDI"}});
   }
+}
+
+void OperatorPanel::saveTouchOff() {
+  // The student's touch-off, beside the program, for klueng-cli class and Grade a class.
+  const QString program = source_().programPath;
+  if (program.isEmpty()) {
+    touchOffSaved_.clear();
+    return;
+  }
+  const std::string path = core::job::touchOffFilePath(program.toStdString());
+  std::string error;
+  const bool ok =
+      core::io::writeTextFileAtomic(path, core::io::formatOffsetTable(control_->runSetup().offsets), &error);
+  touchOffSaved_ = ok ? QString::fromStdString(path) : QString();
+  const QString name = QString::fromStdString(std::filesystem::path(path).filename().string());
+  note_ = ok ? tr("Touch-off saved for grading: %1").arg(name)
+             : tr("Touch-off not saved (%1): %2").arg(name, QString::fromStdString(error));
+  showMessage(shown_);
+}
+
+void OperatorPanel::pressFeedHold() {
+  if (!control_) return;
+  emit feedHoldRequested();
+}
+
+void OperatorPanel::showFeedHold(bool held) {
+  showMessage(std::nullopt);
+  note_ = held ? tr("FEED HOLD: the axes stop, the spindle keeps turning; CYCLE START in MEM resumes")
+               : tr("FEED HOLD: no program is moving");
+  showMessage(shown_);
+}
+
+void OperatorPanel::emitOverrides() {
+  if (control_) emit overridesChanged(control_->overrides(), control_->dryRun, control_->jogFeed);
 }
 
 void OperatorPanel::pressReset() {
@@ -804,10 +871,14 @@ QString OperatorPanel::text(const core::Diagnostic& d) const {
 }
 
 void OperatorPanel::showMessage(const std::optional<core::Diagnostic>& d) {
-  if (&d != &shown_) mdiPlace_ = {0, 0};  // a new message: not about an MDI line unless showAll says so
+  if (&d != &shown_) {
+    mdiPlace_ = {0, 0};  // a new message: not about an MDI line unless showAll says so
+    note_.clear();
+  }
   shown_ = d;
   if (!d) {
-    message_->clear();
+    message_->setStyleSheet(QString());
+    message_->setText(note_);
     return;
   }
   const bool bad = core::isError(d->severity);
@@ -817,6 +888,7 @@ void OperatorPanel::showMessage(const std::optional<core::Diagnostic>& d) {
                                  : QString());
   QString line = QString::fromStdString(d->code) + QStringLiteral(" ") + text(*d);
   if (mdiPlace_.first > 0) line += tr(" (MDI line %1, column %2)").arg(mdiPlace_.first).arg(mdiPlace_.second);
+  if (!note_.isEmpty()) line += QLatin1Char('\n') + note_;
   message_->setText(line);
 }
 

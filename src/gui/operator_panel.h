@@ -39,6 +39,7 @@ class OperatorPanel : public QDockWidget {
     core::gcode::Dialect dialect = core::gcode::Dialect::Fanuc;
     const core::machine::Timeline* program = nullptr;  // the job's last run, if any: its cycle time
     core::io::ProgramFile programFile;                 // the program as it is now: the tools the exercise asks for
+    QString programPath;  // its file, if saved: the exercise's offsets go beside it (job::touchOffFilePath)
   };
   OperatorPanel(QWidget* parent, std::function<Source()> source);
   ~OperatorPanel() override;
@@ -56,11 +57,16 @@ class OperatorPanel : public QDockWidget {
   void pressMeasure();  // the offset page's input + MEASURE
   void pressCycleStart();
   void pressReset();
+  void pressFeedHold();
+  // What FEED HOLD did to the run: `held` = a run was moving and now stands.
+  void showFeedHold(bool held);
   QLineEdit* offsetInput() const { return input_; }
   QPlainTextEdit* mdiText() const { return mdi_; }
   QLabel* messageLabel() const { return message_; }
   QLabel* cycleTimeLabel() const { return cycleTime_; }
   QTableWidget* offsetTable() const { return offsets_; }
+  // Where the exercise's touch-off was last saved (empty: not saved).
+  QString touchOffSaved() const { return touchOffSaved_; }
   void retranslateUi();
 
  signals:
@@ -70,6 +76,10 @@ class OperatorPanel : public QDockWidget {
   void cycleStartRequested(bool singleBlock);
   // The OPT STOP and BLOCK SKIP keys pressed: the run's own switches follow them.
   void switchesChanged(bool optionalStop, bool blockSkip);
+  // The override knobs or DRY RUN changed (also at power-on): the run plays at them.
+  void overridesChanged(const klueng::core::control::Overrides& overrides, bool dryRun, double dryRunFeed);
+  // FEED HOLD pressed: the run should stop its axes (showFeedHold says whether one was moving).
+  void feedHoldRequested();
 
  protected:
   void changeEvent(QEvent* event) override;
@@ -84,6 +94,8 @@ class OperatorPanel : public QDockWidget {
   void showAll(const std::vector<core::Diagnostic>& ds);
   void afterMotion(const core::control::MotionResult& r);
   void emitOffsets();
+  void emitOverrides();
+  void saveTouchOff();
   QString text(const core::Diagnostic& d) const;
 
   std::function<Source()> source_;
@@ -93,6 +105,8 @@ class OperatorPanel : public QDockWidget {
   core::io::OffsetTable lastEmitted_;
   bool emitted_ = false;
   bool chips_ = false;  // the last motion key cut the bar
+  QString touchOffSaved_;
+  QString note_;  // a line under the message (where the touch-off was saved)
   std::optional<core::Diagnostic> shown_;
   std::pair<int, int> mdiPlace_{0, 0};  // line, column in the MDI text of the message shown
 

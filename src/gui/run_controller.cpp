@@ -132,6 +132,27 @@ void RunController::setSpeed(double factor) {
   }
 }
 
+void RunController::setOverrides(const core::control::Overrides& overrides, bool dryRun, double dryRunFeed) {
+  overrides_ = overrides;
+  dryRun_ = dryRun;
+  dryRunFeed_ = dryRunFeed;
+  clock_ = {};  // rebuilt on the next frame
+  emitStatus();
+}
+
+bool RunController::feedHold() {
+  if (state_ != RunState::Running && state_ != RunState::Stepping) return false;
+  if (busy_ || !frameTimer_.isActive()) {
+    pause();  // a run in the background has no axes to slow down
+    held_ = true;
+    emitStatus();
+    return true;
+  }
+  holding_ = true;
+  holdLeft_ = kFeedHoldSeconds;
+  return true;
+}
+
 // A changed input applies to the next run; a run in progress keeps its timeline.
 void RunController::invalidate() {
   stale_ = true;
@@ -139,6 +160,7 @@ void RunController::invalidate() {
   frameTimer_.stop();
   cut_.reset();
   timeline_.reset();
+  clock_ = {};
   stockShapeVolume_ = -1.0;
   time_ = 0.0;
   snapshotIndex_ = -1;
@@ -187,8 +209,13 @@ RunStatus RunController::status() const {
     s.programmedFeed = pose.programmedFeed;
     s.feedMode = pose.feedMode;
   }
-  s.rpm = pose.rpm;
-  s.feedMmPerMin = pose.feedMmPerMin;
+  s.rpm = pose.rpm * overrides_.spindle / 100.0;
+  // The feed the overrides make (the clock is the timeline's until the first frame builds it).
+  s.feedMmPerMin =
+      pose.feedMmPerMin * (clock_.timeline() == timeline_.get() ? clock_.rate(timeline_->moveAt(time_)) : 1.0);
+  // Held: the axes stand, the spindle turns on.
+  s.feedHold = held_;
+  if (held_) s.feedMmPerMin = 0.0;
   s.machine.optionalStopSwitch = options_.optionalStop;
   if (cut_ && !busy_ && cut_->alarm()) s.position = const_cast<core::cut::CutSimulator*>(cut_.get())->toolPosition();
   return s;
@@ -196,9 +223,15 @@ RunStatus RunController::status() const {
 
 // ---------------------------------------------------------------- commands
 
-void RunController::go() { prepareAndThen(Pending::Go); }
+void RunController::go() {
+  held_ = holding_ = false;  // CYCLE START after a FEED HOLD resumes
+  prepareAndThen(Pending::Go);
+}
 
-void RunController::step() { prepareAndThen(Pending::Step); }
+void RunController::step() {
+  held_ = holding_ = false;
+  prepareAndThen(Pending::Step);
+}
 void RunController::stepOver() { prepareAndThen(Pending::StepOver); }
 void RunController::stepOut() { prepareAndThen(Pending::StepOut); }
 
@@ -222,6 +255,7 @@ void RunController::pause() {
 
 void RunController::stop() {
   frameTimer_.stop();
+  held_ = holding_ = false;
   if (busy_) waitForIdle();
   pending_ = Pending::None;
   resetPlayback();
@@ -343,6 +377,7 @@ void RunController::onPrepared() {
     return;
   }
   timeline_ = result->timeline;
+  clock_ = {};  // a new timeline may sit where the old one was: its rates are rebuilt
   toolTimes_ = timeline_ ? timeline_->timeByTool() : std::vector<core::machine::ToolTime>{};
   files_ = result->files;
   cutSetup_ = result->fitted ? *result->fitted : setup_;
@@ -414,11 +449,49 @@ void RunController::tick() {
   const qint64 now = wallClock_.nsecsElapsed();
   const double wall = std::min(kMaxFrameSeconds, (now - lastTickNs_) * 1e-9);
   lastTickNs_ = now;
-  double dt = wall * speed_;
-  if (speed_ < 1.0 && maxStepMm_ > 0.0) dt = machine::limitTravel(*timeline_, time_, dt, maxStepMm_);
-  advanceTo(std::min(time_ + dt, targetTime_));
+  advancePlayback(wall * speed_);
+}
+
+void RunController::advancePlayback(double seconds) {
+  if (!timeline_ || !cut_ || busy_ || (state_ != RunState::Running && state_ != RunState::Stepping)) return;
+  if (clock_.timeline() != timeline_.get())
+    clock_ = core::control::OverrideClock(*timeline_, overrides_, setup_.machine, dryRun_, dryRunFeed_);
+  bool stopHere = false;
+  if (holding_) {
+    // FEED HOLD: the speed falls to nothing over kFeedHoldSeconds (the mean of the ramp over
+    // this frame). A thread pass is not stopped half-way and a dwell's timer runs on (Haas NGC
+    // operator's manual, Override Usage): the hold waits for their end.
+    const int i = timeline_->moveAt(time_);
+    const machine::MoveKind kind =
+        i >= 0 ? timeline_->moves[static_cast<std::size_t>(i)].kind : machine::MoveKind::Rapid;
+    const bool runsOn = i >= 0 && time_ >= timeline_->moves[static_cast<std::size_t>(i)].tStart &&
+                        (kind == machine::MoveKind::Thread || kind == machine::MoveKind::Dwell);
+    if (!runsOn) {
+      const double used = std::min(seconds, holdLeft_);
+      const double mean = (holdLeft_ - used / 2.0) / kFeedHoldSeconds;
+      holdLeft_ -= used;
+      seconds = used * mean;
+      stopHere = holdLeft_ <= kEps;
+    }
+  }
+  double t = clock_.advance(time_, seconds);
+  if (speed_ < 1.0 && maxStepMm_ > 0.0)
+    t = time_ + machine::limitTravel(*timeline_, time_, std::max(0.0, t - time_), maxStepMm_);
+  advanceTo(std::min(t, targetTime_));
   ++frames_;
-  if (cut_->alarm() || time_ >= targetTime_ - kEps) finishStop();
+  if (cut_->alarm() || time_ >= targetTime_ - kEps) {
+    holding_ = false;
+    finishStop();
+    return;
+  }
+  if (stopHere) {
+    holding_ = false;
+    held_ = true;
+    frameTimer_.stop();
+    setState(RunState::Paused);
+    updateLine();
+    emitStatus();
+  }
 }
 
 void RunController::advanceTo(double t) {

@@ -38,6 +38,7 @@
 #include <memory>
 #include <optional>
 
+#include "klueng/core/control/control.h"
 #include "klueng/core/cut/cut_simulator.h"
 #include "klueng/core/diagnostic.h"
 #include "klueng/core/gcode/code_table.h"
@@ -70,6 +71,7 @@ struct RunStatus {
   double cycleTime = 0.0;
   std::vector<core::machine::ToolTime> toolTimes;  // the cycle time per tool
   int line = 0;                                    // file line of the block (0 = none)
+  bool feedHold = false;                           // FEED HOLD: the axes stand, the spindle turns on
 };
 
 class RunController : public QObject {
@@ -104,6 +106,19 @@ class RunController : public QObject {
   QSet<int> breakpoints() const { return breakpoints_; }
   void setSpeed(double factor);
   double speed() const { return speed_; }
+  // The operator panel's overrides (issue 31): each move plays at the length they give it
+  // (control::OverrideClock), relative to the speed above; they act at once, also during a run.
+  void setOverrides(const core::control::Overrides& overrides, bool dryRun = false, double dryRunFeed = 1000.0);
+  const core::control::Overrides& overrides() const { return overrides_; }
+  // FEED HOLD (issue 31): the axes decelerate and stop within kFeedHoldSeconds of machine time (a
+  // thread pass and a dwell first run to their end, as the controls do), the spindle keeps turning;
+  // go() (CYCLE START) resumes. Returns false when no run was moving.
+  bool feedHold();
+  bool isFeedHeld() const { return held_; }
+  static constexpr double kFeedHoldSeconds = 0.2;
+  // One frame of the playback clock: `seconds` of machine time at the overrides (the frame
+  // timer passes wall time × speed; tests drive it directly).
+  void advancePlayback(double seconds);
 
   RunState state() const { return state_; }
   bool isBusy() const { return busy_; }
@@ -193,6 +208,13 @@ class RunController : public QObject {
   QSet<int> breakpoints_;
   double speed_ = 1.0;
   double maxStepMm_ = 0.0;
+  core::control::Overrides overrides_;
+  bool dryRun_ = false;
+  double dryRunFeed_ = 1000.0;
+  core::control::OverrideClock clock_;  // of timeline_ at overrides_ (rebuilt when either changes)
+  bool holding_ = false;                // FEED HOLD pressed: decelerating
+  double holdLeft_ = 0.0;               // machine seconds of the deceleration left
+  bool held_ = false;                   // FEED HOLD: stopped, CYCLE START resumes
   bool stale_ = true;
 
   std::shared_ptr<const core::machine::Timeline> timeline_;

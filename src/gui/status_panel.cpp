@@ -81,6 +81,8 @@ void StatusFields::setStatus(const RunStatus& s) {
   set(Field::Feed, s.programmedFeed <= 0 ? QStringLiteral("-")
                    : u.inch()            ? (perRev ? tr("%1 in/rev").arg(feed) : tr("%1 in/min").arg(feed))
                                          : (perRev ? tr("%1 mm/rev").arg(feed) : tr("%1 mm/min").arg(feed)));
+  // FEED HOLD: the axes stand (the spindle field keeps its rpm).
+  if (s.feedHold) set(Field::Feed, tr("FEED HOLD"));
   set(Field::Spindle, tr("%1 rpm").arg(number(s.rpm, 0)));
   set(Field::OffsetX, length(m.offsetX));
   set(Field::OffsetZ, length(m.offsetZ));

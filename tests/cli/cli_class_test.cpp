@@ -178,6 +178,51 @@ TEST(CliClass, EachProgramIsGradedOnTheMachineItNames) {
   fs::remove_all(dir);
 }
 
+// Issue 31 item 5: the setup exercise. Sample 01 with (OFFSETS: UNKNOWN) at its head: each student's
+// program runs on the touch-off saved beside it and gets a graded line per tool, English or Thai.
+TEST(CliClass, TheSetupExerciseIsGradedOnEachStudentsTouchOff) {
+  const fs::path dir = fs::temp_directory_path() / ("klueng_cli_class_touchoff_test_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string reference = slurp(fs::path(KLUENG_SAMPLES_DIR) / "01-step-shaft.txt");
+  const std::string exercise = replaced(reference, "O0001\n", "O0001\n(OFFSETS: UNKNOWN)\n");
+  for (const char* name : {"dao.txt", "ekk.txt", "fon.txt"}) std::ofstream(dir / name, std::ios::binary) << exercise;
+  // dao touched off right: offset.cfg's own rows; ekk's T01 is 0.3 mm out on the diameter; fon saved nothing.
+  const std::string shipped = slurp(fs::path(KLUENG_SOURCE_DIR) / "offset.cfg");
+  std::ofstream(dir / "dao.offset.cfg", std::ios::binary) << shipped;
+  std::ofstream(dir / "ekk.offset.cfg", std::ios::binary) << replaced(shipped, "0 0 0.8 3\n", "0.3 0 0.8 3\n");
+  const std::string args =
+      "'" + dir.string() + "' --reference '" + KLUENG_SAMPLES_DIR + "/01-step-shaft.txt' --tolerance 0.05";
+  const fs::path csvPath = dir / "grades.csv";
+  std::string err;
+  ASSERT_EQ(run(args + " --csv '" + csvPath.string() + "'", &err), 0) << err;
+  EXPECT_NE(err.find("3 programs: 1 pass, 2 fail"), std::string::npos) << err;
+  EXPECT_NE(err.find("dao.txt: T01 touched off at X0.000 Z0.000, true X0.000 Z0.000: within 0.050 mm\n"),
+            std::string::npos)
+      << err;
+  EXPECT_NE(err.find("ekk.txt: T01 touched off at X0.300 Z0.000, true X0.000 Z0.000: outside 0.050 mm\n"),
+            std::string::npos)
+      << err;
+  EXPECT_NE(err.find("fon.txt: the offsets are unknown but fon.offset.cfg was not found"), std::string::npos) << err;
+  const std::string csv = slurp(csvPath);
+  EXPECT_NE(csv.find("gouge_z,touch_off\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\ndao.txt,pass,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",T01 X0.000/0.000 Z0.000/0.000 in\n"), std::string::npos) << csv;
+  // ekk's part comes out 0.3 mm large on the diameter: the part check sees the touch-off too.
+  const auto ekk = csv.find("\nekk.txt,fail,0,,,");
+  ASSERT_NE(ekk, std::string::npos) << csv;
+  const std::string ekkLine = csv.substr(ekk + 1, csv.find('\n', ekk + 1) - ekk - 1);
+  EXPECT_NE(ekkLine.find(",0.300,"), std::string::npos) << ekkLine;
+  EXPECT_NE(ekkLine.find(",T01 X0.300/0.000 Z0.000/0.000 out"), std::string::npos) << ekkLine;
+  EXPECT_NE(csv.find("\nfon.txt,fail,0,,,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",not saved (fon.offset.cfg)\n"), std::string::npos) << csv;
+  // In Thai.
+  ASSERT_EQ(run(args + " --lang th --csv '" + csvPath.string() + "'", &err), 0) << err;
+  EXPECT_NE(err.find("ekk.txt: T01 ตั้งศูนย์ได้ X0.300 Z0.000 ค่าจริง X0.000 Z0.000: เกินพิกัด 0.050 มม."), std::string::npos)
+      << err;
+  fs::remove_all(dir);
+}
+
 std::string pdfText(const fs::path& pdf, const std::string& options = "") {
   std::string text;
   FILE* pipe = ::popen(("pdftotext " + options + " '" + pdf.string() + "' - 2>/dev/null").c_str(), "r");

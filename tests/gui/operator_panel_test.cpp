@@ -5,25 +5,33 @@
 #include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDir>
+#include <QFile>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPlainTextEdit>
 #include <QSignalSpy>
 #include <QTableWidget>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QToolButton>
 #include <cmath>
 
 #include "fresh_user_folders.h"
+#include "gui/class_grade_dialog.h"
 #include "gui/language.h"
 #include "gui/main_window.h"
 #include "gui/operator_panel.h"
 #include "gui/output_view.h"
 #include "gui/resources.h"
 #include "gui/run_controller.h"
+#include "gui/status_panel.h"
 #include "gui_test_runner.h"
 #include "window_test_support.h"
 #include "klueng/core/control/control.h"
+#include "klueng/core/io/tool_config.h"
+#include "klueng/core/job/class_grading.h"
+#include "klueng/core/machine/setup_files.h"
 
 using namespace klueng;
 namespace ctl = klueng::core::control;
@@ -33,6 +41,17 @@ namespace {
 QString minSec(double s) {
   const int m = static_cast<int>(s / 60.0);
   return QStringLiteral("%1:%2").arg(m).arg(s - m * 60.0, 4, 'f', 1, QLatin1Char('0'));
+}
+
+// A teacher's job: Ø50 x 100 bar, turn Ø40 over 30 mm with T0101; the head asks for the exercise.
+const char* kExerciseJob =
+    "Setup exercise\nShaft\nAluminium\n150\n1100\nTeacher\n(OFFSETS: UNKNOWN)\n"
+    "G21 G99\nT0101\nG97 S800 M03\nG00 X52 Z2\nX40\nG01 Z-30 F0.2\nG00 X52\nZ2\nM30\n";
+
+void writeText(const QString& path, const QByteArray& text) {
+  QFile f(path);
+  QVERIFY(f.open(QIODevice::WriteOnly));
+  f.write(text);
 }
 
 }  // namespace
@@ -191,6 +210,13 @@ class OperatorPanelTest : public QObject {
     QCOMPARE(panel->findChild<QLabel*>(QStringLiteral("operatorTitle"))->text(), QStringLiteral("HAAS"));
     QCOMPARE(panel->findChild<QToolButton*>(QStringLiteral("operatorModeZrn"))->text(), QStringLiteral("ZERO RET"));
     QCOMPARE(panel->findChild<QToolButton*>(QStringLiteral("operatorSpindleCw"))->text(), QStringLiteral("FWD"));
+    // Haas rapid override keys: 5 / 25 / 50 / 100 %, no F0; the slowest one reaches the run.
+    auto* rapid = panel->findChild<QComboBox*>(QStringLiteral("operatorRapidOverride"));
+    QCOMPARE(rapid->itemText(0), QStringLiteral("R 5%"));
+    QCOMPARE(rapid->count(), 4);
+    rapid->setCurrentIndex(0);
+    QCOMPARE(panel->control()->overrides().rapid, 5);
+    QCOMPARE(w.findChild<gui::RunController*>()->overrides().rapid, 5);
     panel->pressMode(ctl::Mode::Memory);
     panel->pressCycleStart();
     QVERIFY2(panel->messageLabel()->text().startsWith(QStringLiteral("A601 ZERO RETURN REQUIRED")),
@@ -218,6 +244,149 @@ class OperatorPanelTest : public QObject {
     QCOMPARE(panel->control()->layout(), ctl::Layout::Fanuc);
     QCOMPARE(panel->findChild<QLabel*>(QStringLiteral("operatorTitle"))->text(), QStringLiteral("FANUC Series 0i-TF"));
     QCOMPARE(panel->findChild<QToolButton*>(QStringLiteral("operatorModeZrn"))->text(), QStringLiteral("ZRN"));
+    QCOMPARE(rapid->itemText(0), QStringLiteral("R F0"));
+  }
+
+  // Issue 31 item 5 and the review: the job file's (OFFSETS: UNKNOWN) powers the panel on in the
+  // exercise; the touch-off is saved beside the program at cycle start and Grade a class shows it;
+  // FEED HOLD stops the run's axes with the spindle turning; the overrides reach the run.
+  void theJobFilesExerciseIsTouchedOffHeldAndGraded() {
+    QTemporaryDir dir;
+    QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("class")));
+    const QString program = dir.filePath(QStringLiteral("class/somchai.nc"));
+    writeText(program, kExerciseJob);
+    writeText(dir.filePath(QStringLiteral("reference.nc")),
+              QByteArray(kExerciseJob).replace("(OFFSETS: UNKNOWN)\n", ""));
+    gui::MainWindow w;
+    QVERIFY(klueng::test::showSample(w));
+    QVERIFY(w.openFile(program));
+    QVERIFY(QTest::qWaitFor([&w] { return !w.isBusy(); }, 30000));
+    auto* runner = w.findChild<gui::RunController*>();
+    w.action(QStringLiteral("operatorPanelDock"))->trigger();
+    gui::OperatorPanel* panel = w.operatorPanel();
+    QVERIFY(panel->isVisible());
+    ctl::Control* c = panel->control();
+    QVERIFY(c->exercise());
+    QVERIFY(panel->findChild<QCheckBox*>(QStringLiteral("operatorExercise"))->isChecked());
+    QCOMPARE(panel->offsetTable()->item(0, 1)->text(), QStringLiteral("0.000"));
+    panel->pressMode(ctl::Mode::ZeroReturn);
+    panel->pressJog(ctl::Axis::X, 1);
+    panel->pressJog(ctl::Axis::Z, 1);
+    QSignalSpy started(panel, &gui::OperatorPanel::cycleStartRequested);
+    panel->pressMode(ctl::Mode::Memory);
+    panel->pressCycleStart();
+    QVERIFY2(panel->messageLabel()->text().startsWith(QStringLiteral("A609 the offsets are unknown: touch off T01")),
+             qPrintable(panel->messageLabel()->text()));
+    QCOMPARE(started.count(), 0);
+    QVERIFY(!QFile::exists(dir.filePath(QStringLiteral("class/somchai.offset.cfg"))));
+
+    // Touch off T01: the face with the handwheel, Z0 + MEASURE; a skimmed Ø, X + MEASURE.
+    c->setSpindleSpeed(800.0);
+    c->setSpindle(core::machine::SpindleDir::Cw);
+    panel->pressMode(ctl::Mode::Jog);
+    QVERIFY(!c->jog(ctl::Axis::Z, 0.1 - c->tip().z, true).stop);
+    QVERIFY(!c->jog(ctl::Axis::X, 40.0 - c->tip().x, true).stop);
+    panel->pressMode(ctl::Mode::Handle);
+    c->setHandleAxis(ctl::Axis::Z);
+    int clicks = 0;
+    while (clicks < 200 && !c->handle(-1).cut) ++clicks;
+    QCOMPARE(clicks, 100);  // from Z+0.100: the 101st click takes the first chip
+    panel->setOffsetRow(1);
+    panel->offsetInput()->setText(QStringLiteral("Z0"));
+    panel->pressMeasure();
+    panel->pressMode(ctl::Mode::Jog);
+    QVERIFY(!c->jog(ctl::Axis::Z, 2.0 - c->tip().z, true).stop);
+    QVERIFY(!c->jog(ctl::Axis::X, 49.0 - c->tip().x, false).stop);
+    QVERIFY(c->jog(ctl::Axis::Z, -12.0, false).cut);
+    QVERIFY(!c->jog(ctl::Axis::Z, 14.0, false).stop);
+    c->setSpindle(core::machine::SpindleDir::Stopped);
+    QCOMPARE(c->micrometer(-5.0), 49.0);
+    panel->offsetInput()->setText(QStringLiteral("X49.000"));
+    panel->pressMeasure();
+
+    // Cycle start: accepted, compared, saved beside the program; the run starts.
+    // Real time (no one-pixel slow-motion rule): frames only advance while the test waits on the
+    // event loop; between waits the test drives the run's clock itself.
+    runner->setSpeed(1.0);
+    panel->pressMode(ctl::Mode::Memory);
+    panel->pressCycleStart();
+    QCOMPARE(started.count(), 1);
+    const QString saved = dir.filePath(QStringLiteral("class/somchai.offset.cfg"));
+    QCOMPARE(panel->touchOffSaved(), saved);
+    QVERIFY2(panel->messageLabel()->text().contains(QStringLiteral("Touch-off saved for grading: somchai.offset.cfg")),
+             qPrintable(panel->messageLabel()->text()));
+    QFile file(saved);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const auto table = core::io::parseOffsetTable(file.readAll().toStdString(), "somchai.offset.cfg");
+    QVERIFY(table.value);
+    QCOMPARE(table.value->at(1).x, 0.0);
+    QCOMPARE(table.value->at(1).z, -0.001);
+    QVERIFY(QTest::qWaitFor([runner] { return runner->state() == gui::RunState::Running; }, 30000));
+
+    // The feed override knob reaches the run's clock.
+    auto* feedOv = panel->findChild<QComboBox*>(QStringLiteral("operatorFeedOverride"));
+    feedOv->setCurrentIndex(feedOv->findData(50));
+    QCOMPARE(runner->overrides().feed, 50);
+    // Into the first feed move (G01 Z-30 F0.2 at 800 rpm, 12 s with its ramps): 5 s of the clock at 50 % is 2.5 s.
+    const core::machine::Timeline* tl = runner->timeline();
+    int feed = -1;
+    for (int i = 0; i < static_cast<int>(tl->moves.size()) && feed < 0; ++i)
+      if (tl->moves[static_cast<std::size_t>(i)].kind == core::machine::MoveKind::Line) feed = i;
+    QVERIFY(feed >= 0);
+    const core::machine::Move& f = tl->moves[static_cast<std::size_t>(feed)];
+    runner->advancePlayback(f.tStart - runner->currentTime());  // rapids at 100 %: their own time
+    QVERIFY(std::abs(runner->currentTime() - f.tStart) < 1e-6);
+    runner->advancePlayback(5.0);
+    QVERIFY(std::abs(runner->currentTime() - (f.tStart + 2.5)) < 1e-6);
+
+    // FEED HOLD: the axes slow to a stop within 0.2 s (0.05 s of the move at 50 %), the spindle turns on.
+    panel->findChild<QToolButton*>(QStringLiteral("operatorFeedHold"))->click();
+    const double held = runner->currentTime();
+    runner->advancePlayback(1.0);
+    QCOMPARE(runner->state(), gui::RunState::Paused);
+    QVERIFY(runner->isFeedHeld());
+    QVERIFY2(std::abs(runner->currentTime() - held - 0.05) < 1e-6,
+             qPrintable(QString::number(runner->currentTime() - held)));
+    QVERIFY(runner->status().feedHold);
+    auto* fields = w.findChild<gui::StatusFields*>();
+    QVERIFY(fields);
+    QCOMPARE(fields->fieldText(gui::StatusFields::Field::Feed), QStringLiteral("FEED HOLD"));
+    QCOMPARE(fields->fieldText(gui::StatusFields::Field::Spindle), QStringLiteral("800 rpm"));
+    QCOMPARE(runner->status().feedMmPerMin, 0.0);
+    QVERIFY(runner->status().rpm > 799.0);
+    QVERIFY2(panel->messageLabel()->text().contains(QStringLiteral("FEED HOLD: the axes stop")),
+             qPrintable(panel->messageLabel()->text()));
+    const double stood = runner->currentTime();
+    runner->advancePlayback(10.0);
+    QCOMPARE(runner->currentTime(), stood);
+    // CYCLE START resumes where it stood.
+    panel->pressCycleStart();
+    QCOMPARE(started.count(), 2);
+    QCOMPARE(runner->state(), gui::RunState::Running);
+    QVERIFY(!runner->isFeedHeld());
+    runner->advancePlayback(1.0);
+    QVERIFY(std::abs(runner->currentTime() - stood - 0.5) < 1e-6);
+    runner->stop();
+
+    // File > Grade a class: the touch-off line beside the part's grade, against offset.cfg's true rows
+    // (not the exercise's entries this window's run has).
+    w.action(QStringLiteral("actionGradeClass"))->trigger();
+    auto* dialog = w.findChild<gui::ClassGradeDialog*>();
+    QVERIFY(dialog);
+    QVERIFY(dialog->table()->isColumnHidden(dialog->table()->columnCount() - 1));
+    dialog->setFolder(dir.filePath(QStringLiteral("class")));
+    dialog->setReference(dir.filePath(QStringLiteral("reference.nc")));
+    QSignalSpy done(dialog, &gui::ClassGradeDialog::finished);
+    dialog->grade();
+    QTRY_COMPARE_WITH_TIMEOUT(done.count(), 1, 30000);
+    QCOMPARE(dialog->table()->rowCount(), 1);
+    const int touchColumn = dialog->table()->columnCount() - 1;
+    QVERIFY(!dialog->table()->isColumnHidden(touchColumn));
+    QCOMPARE(dialog->table()->horizontalHeaderItem(touchColumn)->text(), QStringLiteral("Touch-off"));
+    QCOMPARE(dialog->table()->item(0, touchColumn)->text(),
+             QStringLiteral("T01 touched off at X0.000 Z-0.001, true X0.000 Z0.000: within 0.050 mm"));
+    QCOMPARE(dialog->table()->item(0, 1)->text(), QStringLiteral("pass"));
+    dialog->close();
   }
 };
 

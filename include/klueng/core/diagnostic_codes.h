@@ -266,6 +266,11 @@ inline constexpr const char* kNotMeasureInput = "E608";            // {0} the te
 inline constexpr const char* kToolsNotTouchedOff = "A609";         // {0} stations ("T01 T03")
 inline constexpr const char* kFeedOverrideZero = "I610";
 inline constexpr const char* kOffsetsCompared = "I611";  // {0} worst row, {1} X error Ø, {2} Z error (mm)
+// Class grading of the setup exercise (job/class_grading.h touchOffText): {0} station, {1} X Ø {2} Z entered,
+// {3} X Ø {4} Z true (offset.cfg), {5} the tolerance (mm).
+inline constexpr const char* kTouchOffWithin = "I612";
+inline constexpr const char* kTouchOffOutside = "W613";
+inline constexpr const char* kTouchOffNotSaved = "W614";  // {0} the file looked for, {1} why (empty: not there)
 
 // klueng-cli's own texts (messages_cli.cpp): never diagnostics of a file, so
 // the code is not printed; the catalog only gives them their two languages.

@@ -31,6 +31,14 @@ constexpr MessageText kControlMessages[] = {
     {codes::kFeedOverrideZero, "feed override is 0 %: the axes do not move", "ปรับอัตราป้อนไว้ที่ 0 % แกนจึงไม่เคลื่อนที่"},
     {codes::kOffsetsCompared, "touch-off: offset {0} is off by X{1} (diameter) Z{2} mm, the largest of the tools used",
      "การตั้งศูนย์มีด: ออฟเซต {0} คลาดเคลื่อน X{1} (ขนาดโต) Z{2} มม. มากที่สุดในบรรดามีดที่ใช้"},
+    {codes::kTouchOffWithin, "T{0} touched off at X{1} Z{2}, true X{3} Z{4}: within {5} mm",
+     "T{0} ตั้งศูนย์ได้ X{1} Z{2} ค่าจริง X{3} Z{4}: อยู่ในพิกัด {5} มม."},
+    {codes::kTouchOffOutside, "T{0} touched off at X{1} Z{2}, true X{3} Z{4}: outside {5} mm",
+     "T{0} ตั้งศูนย์ได้ X{1} Z{2} ค่าจริง X{3} Z{4}: เกินพิกัด {5} มม."},
+    {codes::kTouchOffNotSaved,
+     "the offsets are unknown but {0} was not found{1}: touch off at the Operator panel, then MEM + CYCLE START saves "
+     "it",
+     "โจทย์ไม่บอกค่าออฟเซต แต่ไม่พบไฟล์ {0}{1} ต้องตั้งศูนย์มีดที่แผงควบคุมเครื่อง แล้วกด MEM + CYCLE START เพื่อบันทึก"},
 };
 }  // namespace
 

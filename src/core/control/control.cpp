@@ -72,40 +72,94 @@ int stepRapidOverride(int percent, int steps) {
 
 int stepSpindleOverride(int percent, int steps) { return std::clamp((percent / 10 + steps) * 10, 50, 120); }
 
-machine::Timeline withOverrides(const machine::Timeline& timeline, const Overrides& o, const io::MachineConfig& m,
-                                bool dryRun, double dryRunFeed) {
-  machine::Timeline out = timeline;
+namespace {
+
+// The feed mode of each move (G98 / G99), from the snapshots that end its blocks.
+std::vector<machine::FeedMode> movesFeedMode(const machine::Timeline& timeline) {
   std::vector<machine::FeedMode> feedMode(timeline.moves.size(), machine::FeedMode::PerRev);
   std::size_t next = 0;
   for (const machine::StateSnapshot& s : timeline.snapshots)
     for (; next < feedMode.size() && next < static_cast<std::size_t>(s.moveEnd); ++next)
       feedMode[next] = s.modal.feedMode;
+  return feedMode;
+}
+
+// How long a move takes at these overrides (+inf: it never ends, feed override 0).
+double overriddenSeconds(const Move& in, machine::FeedMode feedMode, const Overrides& o, const io::MachineConfig& m,
+                         bool dryRun, double dryRunFeed) {
   const double feed = o.feed / 100.0, spindle = o.spindle / 100.0;
-  const double inf = std::numeric_limits<double>::infinity();
+  const double d = in.tEnd - in.tStart;
+  switch (in.kind) {
+    case MoveKind::Rapid:
+      return o.rapid <= 0
+                 ? machine::rapidSeconds(in.path, std::min(kRapidF0Rate, m.rapidX), std::min(kRapidF0Rate, m.rapidZ))
+                 : d * 100.0 / o.rapid;
+    case MoveKind::Dwell: return d;
+    case MoveKind::Thread: return d / spindle;  // the feed override is ignored while threading
+    case MoveKind::Line:
+    case MoveKind::Arc:
+      if (feed <= 0.0) return std::numeric_limits<double>::infinity();
+      if (dryRun) return in.path.length() / (dryRunFeed * feed) * 60.0;
+      return feedMode == machine::FeedMode::PerMinute ? d / feed : d / (feed * spindle);
+  }
+  return d;
+}
+
+}  // namespace
+
+OverrideClock::OverrideClock(const machine::Timeline& timeline, const Overrides& o, const io::MachineConfig& m,
+                             bool dryRun, double dryRunFeed)
+    : timeline_(&timeline) {
+  const std::vector<machine::FeedMode> feedMode = movesFeedMode(timeline);
+  rate_.reserve(timeline.moves.size());
+  for (std::size_t i = 0; i < timeline.moves.size(); ++i) {
+    const Move& mv = timeline.moves[i];
+    const double d = mv.tEnd - mv.tStart;
+    const double nd = overriddenSeconds(mv, feedMode[i], o, m, dryRun, dryRunFeed);
+    rate_.push_back(d <= 0.0 ? 1.0 : !std::isfinite(nd) ? 0.0 : nd <= 0.0 ? 1.0 : d / nd);
+  }
+}
+
+double OverrideClock::advance(double t, double seconds) const {
+  if (!timeline_ || timeline_->moves.empty() || seconds <= 0.0) return t + std::max(0.0, seconds);
+  const std::vector<Move>& moves = timeline_->moves;
+  const int n = static_cast<int>(moves.size());
+  int i = t < moves.front().tStart ? 0 : timeline_->moveAt(t);
+  double left = seconds;
+  while (i < n) {
+    const Move& m = moves[static_cast<std::size_t>(i)];
+    if (t < m.tStart) {  // between moves: the timeline's own time
+      const double gap = m.tStart - t;
+      if (left <= gap) return t + left;
+      t = m.tStart;
+      left -= gap;
+    }
+    if (t >= m.tEnd) {
+      ++i;
+      continue;
+    }
+    const double r = rate(i);
+    if (r <= 0.0) return t;  // feed override 0: the axes stand
+    const double need = (m.tEnd - t) / r;
+    if (left <= need) return t + left * r;
+    t = m.tEnd;
+    left -= need;
+    ++i;
+  }
+  return t + left;  // past the last move
+}
+
+machine::Timeline withOverrides(const machine::Timeline& timeline, const Overrides& o, const io::MachineConfig& m,
+                                bool dryRun, double dryRunFeed) {
+  machine::Timeline out = timeline;
+  const std::vector<machine::FeedMode> feedMode = movesFeedMode(timeline);
+  const double spindle = o.spindle / 100.0;
   double t = 0.0;
   for (std::size_t i = 0; i < out.moves.size(); ++i) {
     const Move& in = timeline.moves[i];
     Move& mv = out.moves[i];
     const double d = in.tEnd - in.tStart;
-    double nd = d;
-    switch (in.kind) {
-      case MoveKind::Rapid:
-        nd = o.rapid <= 0
-                 ? machine::rapidSeconds(in.path, std::min(kRapidF0Rate, m.rapidX), std::min(kRapidF0Rate, m.rapidZ))
-                 : d * 100.0 / o.rapid;
-        break;
-      case MoveKind::Dwell: break;
-      case MoveKind::Thread: nd = d / spindle; break;  // the feed override is ignored while threading
-      case MoveKind::Line:
-      case MoveKind::Arc:
-        if (feed <= 0.0)
-          nd = inf;
-        else if (dryRun)
-          nd = in.path.length() / (dryRunFeed * feed) * 60.0;
-        else
-          nd = feedMode[i] == machine::FeedMode::PerMinute ? d / feed : d / (feed * spindle);
-        break;
-    }
+    const double nd = overriddenSeconds(in, feedMode[i], o, m, dryRun, dryRunFeed);
     if (in.kind != MoveKind::Dwell && nd > 0.0 && std::isfinite(nd) && d > 0.0) {
       mv.feed = in.feed * d / nd;
       mv.rampUp = static_cast<float>(in.rampUp * nd / d);
@@ -395,10 +449,20 @@ MotionResult Control::zeroReturn(Axis a) {
   return r;
 }
 
+bool Control::homedForJog(Axis a, MotionResult& out) const {
+  // Haas: "before you can jog an axis, the machine must establish its home position" (NGC
+  // operator's manual, Jog Mode; Setting 53 Jog w/o Zero Return is OFF at power-on). A Fanuc
+  // jogs before its reference return, without soft limits.
+  if (layout_ != Layout::Haas || referenced(a)) return true;
+  out.stop = diag(Severity::Alarm, kc::kNotReferenced, {controlLabel(kc::kNotReferenced), a == Axis::X ? "X" : "Z"});
+  return false;
+}
+
 MotionResult Control::jog(Axis a, double distance, bool rapid) {
   MotionResult r;
   if (!motionAllowed(Mode::Jog, a == Axis::X ? (distance > 0 ? "+X" : "-X") : (distance > 0 ? "+Z" : "-Z"), r))
     return r;
+  if (!homedForJog(a, r)) return r;
   AxisValues target = machine_;
   (a == Axis::X ? target.x : target.z) += distance;
   return moveTo(target, rapid, jogFeed * overrides_.feed / 100.0);
@@ -407,6 +471,7 @@ MotionResult Control::jog(Axis a, double distance, bool rapid) {
 MotionResult Control::handle(int clicks) {
   MotionResult r;
   if (!motionAllowed(Mode::Handle, "HANDLE", r)) return r;
+  if (!homedForJog(handleAxis_, r)) return r;
   AxisValues target = machine_;
   // Whole micrometres: a click never leaves the 0.001 mm grid (X in diameter, as the display).
   double& v = handleAxis_ == Axis::X ? target.x : target.z;
@@ -576,8 +641,9 @@ machine::MachineSetup Control::runSetup() const {
     const OffsetRow& r = row(n);
     const AxisValues t = trueTip(n);
     io::Offset& o = out.offsets.at(n);
-    o.x = r.wear.x + ((r.geometry.x + shift_.x) + t.x);
-    o.z = r.wear.z + ((r.geometry.z + shift_.z) + t.z);
+    // To the nanometre: the sum of 0.001 mm entries carries no float noise into offset.cfg text.
+    o.x = std::round((r.wear.x + ((r.geometry.x + shift_.x) + t.x)) * 1e6) / 1e6;
+    o.z = std::round((r.wear.z + ((r.geometry.z + shift_.z) + t.z)) * 1e6) / 1e6;
   }
   return out;
 }

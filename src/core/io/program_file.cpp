@@ -210,9 +210,9 @@ bool headLine(std::string_view line, std::optional<HeadComment>& comment, bool& 
 }
 
 // "MACHINE: romi-gl240m" -> the id and its offset in `text`; nullopt for any other comment.
-std::optional<std::pair<std::string_view, std::size_t>> machineComment(std::string_view text) {
+// `word` is the key ("MACHINE", "OFFSETS"), any case, then ':', '=' or blanks, then one value.
+std::optional<std::pair<std::string_view, std::size_t>> keyComment(std::string_view text, std::string_view kWord) {
   const std::string_view t = detail::trim(text);
-  constexpr std::string_view kWord = "MACHINE";
   if (t.size() <= kWord.size()) return std::nullopt;
   for (std::size_t i = 0; i < kWord.size(); ++i)
     if (upperAscii(t[i]) != kWord[i]) return std::nullopt;
@@ -237,7 +237,7 @@ std::optional<MachineLineAt> findMachineLine(const std::vector<std::string_view>
     bool programStart = false;
     if (!headLine(lines[i], comment, programStart)) break;
     if (!comment) continue;
-    const auto id = machineComment(comment->text);
+    const auto id = keyComment(comment->text, "MACHINE");
     if (!id) continue;
     const std::size_t offset = static_cast<std::size_t>(comment->text.data() - lines[i].data()) + id->second;
     MachineLineAt at;
@@ -251,6 +251,24 @@ std::optional<MachineLineAt> findMachineLine(const std::vector<std::string_view>
 }
 
 }  // namespace
+
+int offsetsUnknownIn(std::string_view gcode) {
+  const std::vector<std::string_view> lines = detail::splitLines(gcode);
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    std::optional<HeadComment> comment;
+    bool programStart = false;
+    if (!headLine(lines[i], comment, programStart)) break;
+    if (!comment) continue;
+    const auto value = keyComment(comment->text, "OFFSETS");
+    if (!value || value->first.size() != 7) continue;
+    std::string upper;
+    for (char c : value->first) upper.push_back(upperAscii(c));
+    // Only what the comment says alone: "(OFFSETS: UNKNOWN T1 T2)" is not the key.
+    if (upper == "UNKNOWN" && detail::trim(comment->text.substr(value->second + 7)).empty())
+      return static_cast<int>(i) + 1;
+  }
+  return 0;
+}
 
 std::optional<NamedMachine> machineNamedIn(std::string_view gcode) {
   const std::optional<MachineLineAt> at = findMachineLine(detail::splitLines(gcode));
@@ -407,6 +425,8 @@ ReadResult<ProgramFile> parseProgramFile(std::string_view bytes, const JobHeader
     // The machine is the program's own: never a default's.
     file.header.machine.clear();
     file.header.machineLine = 0;
+    const int unknownAt = offsetsUnknownIn(file.gcode);
+    file.header.offsetsUnknownLine = unknownAt > 0 ? file.gcodeFirstLine + unknownAt - 1 : 0;
     if (const std::optional<NamedMachine> named = machineNamedIn(file.gcode)) {
       file.header.machine = named->id;
       file.header.machineLine = file.gcodeFirstLine + named->line - 1;

@@ -11,6 +11,9 @@
 #include "klueng/core/cut/guess_fit.h"
 #include "klueng/core/cut/part_features.h"
 #include "klueng/core/io/tool_library.h"
+#include "klueng/core/io/tool_config.h"
+#include "klueng/core/diagnostic_codes.h"
+#include "klueng/core/messages.h"
 #include "klueng/core/machine/interpreter.h"
 
 namespace klueng::core::job {
@@ -30,7 +33,60 @@ std::string csvField(const std::string& s) {
   return out + "\"";
 }
 
+// Whether the file at `path` says the offsets are unknown (its head); false when it cannot be read.
+bool classAsksTouchOff(const std::string& path) {
+  if (path.empty()) return false;
+  const io::ReadResult<io::ProgramFile> read = io::readProgramFile(path);
+  return read.value && read.value->header.offsetsUnknown();
+}
+
+std::string touchOffMm(double v) { return gcode::formatFixed(std::abs(v) < 0.0005 ? 0.0 : v, 3); }
+
 }  // namespace
+
+bool TouchOffGrade::pass() const {
+  return !asked || (saved && std::all_of(tools.begin(), tools.end(), [](const ToolTouchOff& t) { return t.within; }));
+}
+
+std::string touchOffFilePath(const std::string& programPath) {
+  fs::path p(programPath);
+  p.replace_extension(".offset.cfg");
+  return p.string();
+}
+
+std::string touchOffSummary(const TouchOffGrade& g) {
+  if (!g.asked) return {};
+  if (!g.saved) return "not saved (" + g.file + (g.readError.empty() ? "" : ": " + g.readError) + ")";
+  std::string out;
+  for (const ToolTouchOff& t : g.tools) {
+    if (!out.empty()) out += "; ";
+    out += "T" + std::string(t.station < 10 ? "0" : "") + std::to_string(t.station) + " X" + touchOffMm(t.enteredX) +
+           "/" + touchOffMm(t.trueX) + " Z" + touchOffMm(t.enteredZ) + "/" + touchOffMm(t.trueZ) +
+           (t.within ? " in" : " out");
+  }
+  return out.empty() ? "no tool used" : out;
+}
+
+std::string touchOffText(const TouchOffGrade& g, double tolerance, Lang lang) {
+  if (!g.asked) return {};
+  auto say = [lang](const char* code, std::vector<std::string> args) {
+    Diagnostic d;
+    d.severity = Severity::Note;
+    d.code = code;
+    d.args = std::move(args);
+    return formatMessage(d, lang);
+  };
+  if (!g.saved)
+    return say(core::codes::kTouchOffNotSaved, {g.file, g.readError.empty() ? "" : " (" + g.readError + ")"});
+  std::string out;
+  for (const ToolTouchOff& t : g.tools) {
+    if (!out.empty()) out += "; ";
+    out += say(t.within ? core::codes::kTouchOffWithin : core::codes::kTouchOffOutside,
+               {std::string(t.station < 10 ? "0" : "") + std::to_string(t.station), touchOffMm(t.enteredX),
+                touchOffMm(t.enteredZ), touchOffMm(t.trueX), touchOffMm(t.trueZ), gcode::formatFixed(tolerance, 3)});
+  }
+  return out;
+}
 
 GradedProgram gradeProgram(const std::string& path, const JobInput& base) {
   GradedProgram g;
@@ -51,6 +107,9 @@ GradedProgram gradeProgram(const std::string& path, const JobInput& base) {
       return g;
     }
     const machine::Timeline& timeline = *job->timeline();
+    for (const machine::Move& m : timeline.moves)
+      if (m.tool > 0 && std::find(g.stations.begin(), g.stations.end(), m.tool) == g.stations.end())
+        g.stations.push_back(m.tool);
     g.cycleTime = timeline.cycleTime();
     if (timeline.alarm) {
       g.alarm = place(*timeline.alarm);
@@ -98,12 +157,45 @@ std::vector<ClassRow> gradeClass(const std::string& folder, const GradeAgainst& 
   }
   std::sort(files.begin(), files.end());
   std::vector<ClassRow> rows;
+  const bool referenceAsks = classAsksTouchOff(against.referencePath);
   for (std::size_t i = 0; i < files.size(); ++i) {
     ClassRow row;
     row.file = files[i].filename().string();
     row.path = files[i].string();
     if (progress) progress(static_cast<int>(i), static_cast<int>(files.size()), row.file);
-    row.graded = gradeProgram(row.path, base);
+    TouchOffGrade& touch = row.touchOff;
+    touch.asked = referenceAsks || classAsksTouchOff(row.path);
+    JobInput input = base;
+    if (touch.asked) {
+      // The student's own offsets: the run uses them, as the lathe would.
+      const std::string offsetsPath = touchOffFilePath(row.path);
+      touch.file = fs::path(offsetsPath).filename().string();
+      if (fs::exists(offsetsPath, ec)) {
+        const io::ReadResult<io::OffsetTable> read = io::readOffsetTable(offsetsPath);
+        const auto bad = std::find_if(read.diagnostics.begin(), read.diagnostics.end(),
+                                      [](const Diagnostic& d) { return isError(d.severity); });
+        if (read.value && bad == read.diagnostics.end()) {
+          touch.saved = true;
+          input.setup.offsets = *read.value;
+        } else {
+          touch.readError = bad != read.diagnostics.end() ? formatMessage(*bad, Lang::En) : "unreadable";
+        }
+      }
+    }
+    row.graded = gradeProgram(row.path, input);
+    if (touch.saved)
+      for (int s : row.graded.stations) {
+        if (s < 1 || s > io::kOffsetCount) continue;
+        ToolTouchOff t;
+        t.station = s;
+        t.enteredX = input.setup.offsets.at(s).x;
+        t.enteredZ = input.setup.offsets.at(s).z;
+        t.trueX = base.setup.offsets.at(s).x;
+        t.trueZ = base.setup.offsets.at(s).z;
+        t.within =
+            std::abs(t.enteredX - t.trueX) <= tolerance + 1e-9 && std::abs(t.enteredZ - t.trueZ) <= tolerance + 1e-9;
+        touch.tools.push_back(t);
+      }
     if (row.graded.part) {
       row.pass = true;
       if (against.reference) {
@@ -118,6 +210,7 @@ std::vector<ClassRow> gradeClass(const std::string& folder, const GradeAgainst& 
       row.pass = row.pass && std::all_of(row.inspection.begin(), row.inspection.end(),
                                          [](const InspectedDimension& d) { return d.in(); });
     }
+    row.pass = row.pass && touch.pass();
     row.graded.part.reset();  // thirty parts need not stay in memory
     rows.push_back(std::move(row));
   }
@@ -135,7 +228,9 @@ std::vector<ClassRow> gradeClass(const std::string& folder, const GradeAgainst& 
 }
 
 std::string classCsv(const std::vector<ClassRow>& rows, bool drawing) {
+  const bool touchOff = std::any_of(rows.begin(), rows.end(), [](const ClassRow& r) { return r.touchOff.asked; });
   std::string out = "file,result,errors,first_error,alarm,cycle_time_s,leftover_mm,leftover_z,gouge_mm,gouge_z";
+  if (touchOff) out += ",touch_off";
   out += drawing ? ",feature,nominal_mm,tolerance,lower_mm,upper_mm,measured_mm,verdict\n" : "\n";
   for (const ClassRow& r : rows) {
     std::string line =
@@ -146,6 +241,7 @@ std::string classCsv(const std::vector<ClassRow>& rows, bool drawing) {
              ? gcode::formatFixed(r.deviation.leftover, 3) + "," + gcode::formatFixed(r.deviation.leftoverZ, 2) + "," +
                    gcode::formatFixed(r.deviation.gouge, 3) + "," + gcode::formatFixed(r.deviation.gougeZ, 2)
              : ",,,");
+    if (touchOff) line += "," + csvField(touchOffSummary(r.touchOff));
     if (!drawing) {
       out += line + "\n";
       continue;

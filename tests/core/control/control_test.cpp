@@ -7,9 +7,15 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
 
 #include "klueng/core/cut/part_check.h"
 #include "klueng/core/diagnostic_codes.h"
+#include "klueng/core/io/tool_config.h"
+#include "klueng/core/job/class_grading.h"
 #include "klueng/core/job/job.h"
 #include "klueng/core/machine/kinematics.h"
 #include "klueng/core/machine/setup_files.h"
@@ -105,6 +111,22 @@ TEST(Control, CycleStartIsRefusedUntilBothAxesReturnedToTheReference) {
   Control haas(shippedSetup(), bar50x100(), gcode::Dialect::Haas);
   EXPECT_EQ(haas.layout(), Layout::Haas);
   EXPECT_EQ(haas.cycleStartRefusal()->args[0], "ZERO RETURN REQUIRED");
+  // A Haas jogs an axis only after its zero return (the handle too); nothing moves, no RESET needed.
+  const AxisValues before = haas.machinePosition();
+  const MotionResult notHomed = haas.jog(Axis::Z, -5.0, false);
+  ASSERT_TRUE(notHomed.stop);
+  EXPECT_EQ(notHomed.stop->code, kc::kNotReferenced);
+  EXPECT_EQ(notHomed.stop->args, (std::vector<std::string>{"ZERO RETURN REQUIRED", "Z"}));
+  haas.setMode(Mode::Handle);
+  haas.setHandleAxis(Axis::X);
+  EXPECT_EQ(haas.handle(10).stop->args[1], "X");
+  EXPECT_EQ(haas.machinePosition(), before);
+  EXPECT_FALSE(haas.alarm());
+  haas.setMode(Mode::ZeroReturn);
+  haas.zeroReturn(Axis::Z);
+  haas.setMode(Mode::Jog);
+  EXPECT_TRUE(haas.jog(Axis::Z, -5.0, false).moved);
+  EXPECT_EQ(haas.jog(Axis::X, -5.0, false).stop->args[1], "X");
 }
 
 TEST(Control, JogStopsAtTheSoftLimitsWithTheControlsOvertravelAlarm) {
@@ -362,6 +384,136 @@ TEST(Control, OverridesChangeTheCycleTimeAsTheControlWould) {
   Overrides hold;
   hold.feed = 0;
   EXPECT_TRUE(std::isinf(withOverrides(t, hold, shippedSetup().machine).cycleTime()));
+}
+
+TEST(Control, TheRunsClockPlaysEachMoveAtTheOverriddenSpeed) {
+  const auto job = compile(kTurnTo40, shippedSetup());
+  ASSERT_TRUE(job->timeline());
+  const machine::Timeline& t = *job->timeline();
+  int feed = -1, rapid = -1;
+  for (int i = 0; i < static_cast<int>(t.moves.size()); ++i) {
+    const machine::Move& m = t.moves[static_cast<std::size_t>(i)];
+    if (m.tEnd <= m.tStart) continue;
+    if (feed < 0 && m.kind == machine::MoveKind::Line) feed = i;
+    if (rapid < 0 && m.kind == machine::MoveKind::Rapid) rapid = i;
+  }
+  ASSERT_GE(feed, 0);
+  ASSERT_GE(rapid, 0);
+  const machine::Move& f = t.moves[static_cast<std::size_t>(feed)];
+  const machine::Move& r = t.moves[static_cast<std::size_t>(rapid)];
+  const double fd = f.tEnd - f.tStart, rd = r.tEnd - r.tStart;
+  // G01 Z-30 F0.2 at 800 rpm: 30 / (0.2 x 800) min = 11.25 s at full feed, and the ramps.
+  EXPECT_GT(fd, 11.25);
+  EXPECT_LT(fd, 13.0);
+
+  Overrides half;
+  half.feed = 50;
+  const OverrideClock clock(t, half, shippedSetup().machine);
+  EXPECT_DOUBLE_EQ(clock.rate(feed), 0.5);
+  EXPECT_DOUBLE_EQ(clock.rate(rapid), 1.0);
+  // 11.25 s of the machine's time get the feed move half way, 22.5 s to its end; the rapid keeps its time.
+  EXPECT_NEAR(clock.advance(f.tStart, fd), f.tStart + fd / 2.0, 1e-9);
+  EXPECT_NEAR(clock.advance(f.tStart, 2.0 * fd), f.tEnd, 1e-9);
+  EXPECT_NEAR(clock.advance(r.tStart, rd), r.tEnd, 1e-9);
+  // The whole run: the cycle time withOverrides gives brings the clock to the timeline's end.
+  const double slow = withOverrides(t, half, shippedSetup().machine).cycleTime();
+  EXPECT_NEAR(slow, t.cycleTime() + fd, 1e-9);
+  EXPECT_NEAR(clock.advance(0.0, slow), t.cycleTime(), 1e-9);
+  // Spindle 120 %: a feed per revolution is 1.2 times as fast; at 100 % everything as programmed.
+  Overrides fast;
+  fast.spindle = 120;
+  EXPECT_NEAR(OverrideClock(t, fast, shippedSetup().machine).rate(feed), 1.2, 1e-12);
+  EXPECT_NEAR(OverrideClock(t, Overrides{}, shippedSetup().machine).advance(1.0, 7.5), 8.5, 1e-12);
+
+  // Feed override 0: the run reaches the feed move and stands there, however long the clock runs.
+  Overrides stand;
+  stand.feed = 0;
+  const OverrideClock held(t, stand, shippedSetup().machine);
+  EXPECT_DOUBLE_EQ(held.rate(feed), 0.0);
+  EXPECT_NEAR(held.advance(0.0, 1000.0), f.tStart, 1e-9);
+}
+
+// The setup exercise graded in a class (issue 31 item 5): each student touches off T01 at the
+// panel, the touch-off is saved beside the program, and klueng-cli class compares it.
+TEST(Control, AClassIsGradedOnTheOffsetsItsStudentsTouchedOff) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("klueng_touchoff_class_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir / "class");
+  const std::string head = "Setup exercise\nShaft\nAluminium\n150\n1100\nTeacher\n";
+  const auto write = [](const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; };
+  write(dir / "reference.nc", head + kTurnTo40);
+  for (const char* name : {"a.nc", "b.nc", "c.nc"})
+    write(dir / "class" / name, head + "(OFFSETS: UNKNOWN)\n" + kTurnTo40);
+  // Student a touches off right (Z one click into the face), student b types the radius for X.
+  for (const auto& [name, reading] : {std::pair{"a", 0.0}, std::pair{"b", 24.5}}) {
+    Control c(shippedSetup(), bar50x100(), gcode::Dialect::Fanuc);
+    c.forgetGeometry();
+    referenceBoth(c);
+    c.setSpindleSpeed(800.0);
+    c.setSpindle(machine::SpindleDir::Cw);
+    touchFace(c);
+    c.measure(1, Axis::Z, 0.0);
+    c.setSpindle(machine::SpindleDir::Cw);
+    const double measured = skimDiameter(c, 49.0);
+    c.measure(1, Axis::X, reading > 0.0 ? reading : measured);
+    EXPECT_FALSE(c.cycleStartRefusal({1}));
+    const std::string program = (dir / "class" / (std::string(name) + ".nc")).string();
+    EXPECT_EQ(job::touchOffFilePath(program), (dir / "class" / (std::string(name) + ".offset.cfg")).string());
+    write(job::touchOffFilePath(program), io::formatOffsetTable(c.runSetup().offsets));
+  }
+  // Student c never saved a touch-off.
+
+  job::JobInput base;
+  base.setup = shippedSetup();
+  base.run.dialect = gcode::Dialect::Fanuc;
+  const job::GradedProgram reference = job::gradeProgram((dir / "reference.nc").string(), base);
+  ASSERT_TRUE(reference.part) << reference.firstError << reference.alarm;
+  const std::vector<job::ClassRow> rows =
+      job::gradeClass((dir / "class").string(), (dir / "reference.nc").string(), *reference.part, base, 0.05);
+  ASSERT_EQ(rows.size(), 3u);
+
+  const job::ClassRow& a = rows[0];
+  EXPECT_EQ(a.file, "a.nc");
+  EXPECT_TRUE(a.touchOff.asked && a.touchOff.saved);
+  ASSERT_EQ(a.touchOff.tools.size(), 1u);
+  EXPECT_EQ(a.touchOff.tools[0].station, 1);
+  EXPECT_NEAR(a.touchOff.tools[0].enteredX, 0.0, 1e-9);
+  EXPECT_NEAR(a.touchOff.tools[0].enteredZ, -0.001, 1e-9);
+  EXPECT_EQ(a.touchOff.tools[0].trueX, shippedSetup().offsets.at(1).x);
+  EXPECT_EQ(a.touchOff.tools[0].trueZ, shippedSetup().offsets.at(1).z);
+  EXPECT_TRUE(a.touchOff.tools[0].within);
+  EXPECT_TRUE(a.pass);
+  EXPECT_EQ(job::touchOffSummary(a.touchOff), "T01 X0.000/0.000 Z-0.001/0.000 in");
+  EXPECT_EQ(job::touchOffText(a.touchOff, 0.05, Lang::En),
+            "T01 touched off at X0.000 Z-0.001, true X0.000 Z0.000: within 0.050 mm");
+  EXPECT_EQ(job::touchOffText(a.touchOff, 0.05, Lang::Th),
+            "T01 ตั้งศูนย์ได้ X0.000 Z-0.001 ค่าจริง X0.000 Z0.000: อยู่ในพิกัด 0.050 มม.");
+
+  // The radius typed for the diameter: 24.5 mm out, and the run on those offsets cuts nothing of the Ø40.
+  const job::ClassRow& b = rows[1];
+  ASSERT_EQ(b.touchOff.tools.size(), 1u);
+  EXPECT_NEAR(b.touchOff.tools[0].enteredX, 24.5, 1e-9);
+  EXPECT_FALSE(b.touchOff.tools[0].within);
+  EXPECT_FALSE(b.pass);
+  EXPECT_TRUE(b.compared);
+  EXPECT_NEAR(b.deviation.leftover, 10.0, 0.01);  // on the diameter: the bar's Ø50 left where Ø40 was turned
+  EXPECT_EQ(job::touchOffSummary(b.touchOff), "T01 X24.500/0.000 Z-0.001/0.000 out");
+
+  const job::ClassRow& c = rows[2];
+  EXPECT_TRUE(c.touchOff.asked);
+  EXPECT_FALSE(c.touchOff.saved);
+  EXPECT_FALSE(c.pass);
+  EXPECT_TRUE(c.compared);  // its part is right (the true offsets), the exercise is not done
+  EXPECT_EQ(job::touchOffText(c.touchOff, 0.05, Lang::En),
+            "the offsets are unknown but c.offset.cfg was not found: touch off at the Operator panel, then MEM + "
+            "CYCLE START saves it");
+
+  const std::string csv = job::classCsv(rows);
+  EXPECT_NE(csv.find("gouge_mm,gouge_z,touch_off\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",T01 X0.000/0.000 Z-0.001/0.000 in\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",not saved (c.offset.cfg)\n"), std::string::npos) << csv;
+  fs::remove_all(dir);
 }
 
 TEST(Control, TheOffsetPageReadsAnAxisAndAValue) {

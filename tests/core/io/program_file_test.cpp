@@ -554,5 +554,28 @@ TEST(ProgramFile, OnlyTheHeadNamesTheMachine) {
   EXPECT_EQ(parseProgramFile("G21\nM30\n", defaults).value->header.machine, "");
 }
 
+// Issue 31 item 5: the teacher's job file asks for the setup exercise at its head.
+TEST(ProgramFile, OffsetsUnknownAtTheHeadAsksForTheSetupExercise) {
+  const auto r =
+      parseProgramFile(kHeader + "%\nO0031 (SETUP)\n(MACHINE: fanuc)\n(OFFSETS: UNKNOWN)\nG21 G99\nM30\n%\n");
+  ASSERT_TRUE(r.ok()) << codes(r.diagnostics);
+  EXPECT_TRUE(r.value->header.offsetsUnknown());
+  EXPECT_EQ(r.value->header.offsetsUnknownLine, 10);  // 6 header lines, %, O0031, the machine, then the key
+  EXPECT_EQ(r.value->header.machine, "fanuc");        // both keys at one head
+  EXPECT_EQ(offsetsUnknownIn(r.value->gcode), 4);
+  // The forms a machine comment has, any case.
+  EXPECT_EQ(offsetsUnknownIn("O0031 (offsets = unknown)\nG21\n"), 1);
+  EXPECT_EQ(offsetsUnknownIn("%\n; Offsets unknown\nG21\n"), 2);
+  // Not the key: another value, more words, or a comment after the first block.
+  EXPECT_EQ(offsetsUnknownIn("(OFFSETS: KNOWN)\nG21\n"), 0);
+  EXPECT_EQ(offsetsUnknownIn("(OFFSETS: UNKNOWN T1)\nG21\n"), 0);
+  EXPECT_EQ(offsetsUnknownIn("(OFFSETS UNKNOWNS)\nG21\n"), 0);
+  const auto plain = parseProgramFile("G21 G99\n(OFFSETS: UNKNOWN)\nM30\n");
+  ASSERT_TRUE(plain.ok());
+  EXPECT_FALSE(plain.value->header.offsetsUnknown());
+  const auto first = parseProgramFile("(OFFSETS: UNKNOWN)\nG21 G99\nM30\n");
+  EXPECT_EQ(first.value->header.offsetsUnknownLine, 1);
+}
+
 }  // namespace
 }  // namespace klueng::core::io

@@ -72,6 +72,29 @@ int stepSpindleOverride(int percent, int steps);
 machine::Timeline withOverrides(const machine::Timeline& timeline, const Overrides& overrides,
                                 const io::MachineConfig& machine, bool dryRun = false, double dryRunFeed = 1000.0);
 
+// The run's clock at the panel's overrides (issue 31): a GUI run plays the
+// job's own timeline, each move at the length withOverrides gives it, so at
+// feed override 50 % a feed move takes twice the playback time and a rapid
+// (rapid override 100 %) the same. advance() says how far the timeline gets in
+// `seconds` of the machine's time from its time `t`; feed override 0 stands at
+// the start of the next feed move (rate 0). The default clock is the timeline's.
+class OverrideClock {
+ public:
+  OverrideClock() = default;
+  OverrideClock(const machine::Timeline& timeline, const Overrides& overrides, const io::MachineConfig& machine,
+                bool dryRun = false, double dryRunFeed = 1000.0);
+  double advance(double t, double seconds) const;
+  // Timeline seconds per machine second in move `i` (1 = as programmed, 0 = stands).
+  double rate(int i) const {
+    return i >= 0 && i < static_cast<int>(rate_.size()) ? rate_[static_cast<std::size_t>(i)] : 1.0;
+  }
+  const machine::Timeline* timeline() const { return timeline_; }
+
+ private:
+  const machine::Timeline* timeline_ = nullptr;
+  std::vector<double> rate_;
+};
+
 // What a motion key did.
 struct MotionResult {
   bool moved = false;              // the turret moved (maybe less than asked)
@@ -187,6 +210,7 @@ class Control {
   void rebuildSim();
   Diagnostic diag(Severity s, const char* code, std::vector<std::string> args = {}) const;
   bool motionAllowed(Mode wanted, const char* key, MotionResult& out);
+  bool homedForJog(Axis a, MotionResult& out) const;  // Haas jogs only a referenced axis
 
   machine::MachineSetup setup_;
   io::JobHeader header_;

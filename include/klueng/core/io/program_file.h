@@ -46,6 +46,10 @@ struct JobHeader {
   // File line of that comment, 0 when none. Job details writes it (withMachineNamed).
   std::string machine;
   int machineLine = 0;
+  // The setup exercise (issue 31 item 5): `(OFFSETS: UNKNOWN)` at the program's
+  // head (offsetsUnknownIn); the file line of that comment, 0 when none.
+  int offsetsUnknownLine = 0;
+  bool offsetsUnknown() const { return offsetsUnknownLine > 0; }
   double diameterMm() const { return diameterUnit == LengthUnit::Inch ? diameter * 25.4 : diameter; }
   double lengthMm() const { return lengthUnit == LengthUnit::Inch ? length * 25.4 : length; }
   double boreMm() const { return diameterUnit == LengthUnit::Inch ? bore * 25.4 : bore; }
@@ -108,6 +112,11 @@ struct NamedMachine {
   int column = 0;
 };
 std::optional<NamedMachine> machineNamedIn(std::string_view gcode);
+// The teacher's setup exercise (issue 31 item 5, docs/program-file.md §9): a
+// comment `(OFFSETS: UNKNOWN)` (also `(OFFSETS UNKNOWN)`, `;OFFSETS: UNKNOWN`,
+// any case) among the lines of the program's head, as `(MACHINE: id)` is found.
+// The line (1 at the first line of `gcode`) of that comment, 0 when none.
+int offsetsUnknownIn(std::string_view gcode);
 // `gcode` naming machine `id`: the head's `(MACHINE: ...)` line rewritten, or a
 // new one put after the head's `%` and O line (before the first other line);
 // empty `id` takes the line out. Every other line stays as it was.

@@ -22,6 +22,34 @@ using cut::InspectedDimension;
 using cut::PartDeviation;
 using cut::Stock;
 
+// The setup exercise (issue 31 item 5, docs/program-file.md §9): a program (or
+// the reference) whose head says `(OFFSETS: UNKNOWN)` is graded on the offsets
+// its student touched off at the Operator panel, saved beside the program as
+// `<name>.offset.cfg` (touchOffFilePath; offset.cfg's format: the rows the run
+// used). Each tool the program uses: its row's X (diameter) and Z against the
+// true ones (the class's offset.cfg), within the class tolerance or not; the
+// program is also run on the student's offsets, so a wrong touch-off shows in its part.
+struct ToolTouchOff {
+  int station = 0;
+  double enteredX = 0.0, enteredZ = 0.0;  // the student's row (X diameter), mm
+  double trueX = 0.0, trueZ = 0.0;        // offset.cfg's row
+  bool within = false;                    // both within the tolerance
+};
+struct TouchOffGrade {
+  bool asked = false;     // the program or the reference says the offsets are unknown
+  bool saved = false;     // the student's offsets file was found and read
+  std::string file;       // its name in the folder
+  std::string readError;  // why it could not be read (the file's first problem, English)
+  std::vector<ToolTouchOff> tools;
+  bool pass() const;
+};
+// "somchai.nc" -> "somchai.offset.cfg" in the same folder.
+std::string touchOffFilePath(const std::string& programPath);
+// "T01 X0.000/0.000 Z-0.012/0.000 in; T02 ... out", "not saved (somchai.offset.cfg)"; empty when not asked.
+std::string touchOffSummary(const TouchOffGrade& grade);
+// The graded line in words (I612 / W613 per tool, W614 when not saved), joined by "; "; empty when not asked.
+std::string touchOffText(const TouchOffGrade& grade, double tolerance, Lang lang);
+
 struct GradedProgram {
   std::optional<Stock> part;  // the finished part; none when it did not run to its end
   int errors = 0;
@@ -29,6 +57,7 @@ struct GradedProgram {
   std::string alarm;                         // "A104 line 15"
   double cycleTime = 0.0;                    // seconds (up to the alarm)
   std::vector<std::string> subprogramFiles;  // files of the folder its calls read (the program's own)
+  std::vector<int> stations;                 // the turret stations its run used, in order
 };
 
 // Loads, checks, runs and cuts one program (makeJob with `base`, its path set
@@ -43,7 +72,9 @@ struct ClassRow {
   bool compared = false;  // it ran to its end and was compared with the reference
   // Against a drawing: every drawn dimension, measured (all missing when it did not run to its end).
   std::vector<InspectedDimension> inspection;
-  bool pass = false;  // ran to its end, within the reference's tolerance and every drawn dimension in
+  TouchOffGrade touchOff;  // the setup exercise, when asked
+  bool pass = false;       // ran to its end, within the reference's tolerance and every drawn dimension in (and every
+                           // tool touched off within it, when asked)
 };
 
 // What a class is graded against: a reference program's part, a drawing's
@@ -67,7 +98,8 @@ std::vector<ClassRow> gradeClass(const std::string& folder, const std::string& r
 std::vector<ClassRow> gradeClass(const std::string& folder, const GradeAgainst& against, const JobInput& base,
                                  const std::function<void(int, int, const std::string&)>& progress = {});
 
-// file,result,errors,first_error,alarm,cycle_time_s,leftover_mm,leftover_z,gouge_mm,gouge_z; with a
+// file,result,errors,first_error,alarm,cycle_time_s,leftover_mm,leftover_z,gouge_mm,gouge_z (then touch_off,
+// touchOffSummary, when a row was asked for the setup exercise); with a
 // drawing (`drawing`), one line per student and drawn dimension, followed by
 // feature,nominal_mm,tolerance,lower_mm,upper_mm,measured_mm,verdict (in, out or missing).
 std::string classCsv(const std::vector<ClassRow>& rows, bool drawing = false);
