@@ -10,6 +10,7 @@
 // diagnostics and timeline use.
 #include <QList>
 #include <QPlainTextEdit>
+#include <QPointer>
 #include <functional>
 #include <optional>
 #include <utility>
@@ -61,6 +62,11 @@ class CodeEditor : public QPlainTextEdit {
   // The G or M code under (or just before) the text cursor: ('G', 71) on "G71".
   std::optional<std::pair<char, int>> codeAtCursor() const;
 
+  // The window's Edit > Undo / Redo (issue 30 item 2): Ctrl+Z / Ctrl+Y and the context
+  // menu's Undo / Redo trigger them, so the text's undo steps go through the document's
+  // one stack, in order with the setup's; the editor never undoes on its own.
+  void setUndoActions(QAction* undo, QAction* redo);
+
   // Gutter helpers used by LineNumberArea.
   int gutterWidth() const;
   int breakpointMarginWidth() const;
@@ -79,6 +85,9 @@ class CodeEditor : public QPlainTextEdit {
   bool viewportEvent(QEvent* event) override;
   void paintEvent(QPaintEvent* event) override;
   void changeEvent(QEvent* event) override;
+  bool event(QEvent* event) override;
+  void keyPressEvent(QKeyEvent* event) override;
+  void contextMenuEvent(QContextMenuEvent* event) override;
 
  private:
   void updateGutterWidth();
@@ -93,6 +102,7 @@ class CodeEditor : public QPlainTextEdit {
   core::gcode::Dialect dialect_ = core::gcode::Dialect::Fanuc;
   std::function<QString(int, int)> wordValue_;
   std::function<QString(int)> explainLine_;
+  QPointer<QAction> undoAction_, redoAction_;
 };
 
 }  // namespace klueng::gui
