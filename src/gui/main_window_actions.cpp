@@ -4,6 +4,7 @@
 #include <QActionGroup>
 #include <QAction>
 #include <QMenu>
+#include <QRegularExpression>
 #include <QStatusBar>
 #include <QToolBar>
 #include <QTextDocument>
@@ -127,8 +128,10 @@ void MainWindow::createActions() {
     // The step it would undo, named: "Undo Tool Select", "Redo Typing".
     undo->setText(undoGroup_->canUndo() ? tr("&Undo %1").arg(undoGroup_->undoText()) : tr("&Undo"));
     redo->setText(undoGroup_->canRedo() ? tr("&Redo %1").arg(undoGroup_->redoText()) : tr("&Redo"));
-    undo->setStatusTip(undo->text().remove(QLatin1Char('&')));
-    redo->setStatusTip(redo->text().remove(QLatin1Char('&')));
+    // The tip without the mnemonic, the Thai "(U)" form included: "Undo Typing".
+    static const QRegularExpression mnemonic(QStringLiteral(R"(\s*\(&.\)|&)"));
+    undo->setStatusTip(undo->text().remove(mnemonic));
+    redo->setStatusTip(redo->text().remove(mnemonic));
     for (QAction* a : {undo, redo})
       a->setToolTip(QStringLiteral("%1 (%2)").arg(a->statusTip(), a->shortcut().toString(QKeySequence::NativeText)));
   };
