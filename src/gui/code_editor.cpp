@@ -3,6 +3,8 @@
 #include <QAction>
 #include <QContextMenuEvent>
 #include <QKeyEvent>
+#include <QMimeData>
+#include <QTextCursor>
 #include <QMenu>
 #include <memory>
 
@@ -382,7 +384,22 @@ void CodeEditor::keyPressEvent(QKeyEvent* event) {
     event->accept();
     return;
   }
+  if (!newUndoStep_) {
+    QPlainTextEdit::keyPressEvent(event);
+    return;
+  }
+  // An edit block's step is never joined to the one before it (an empty block adds none).
+  QTextCursor step(document());
+  step.beginEditBlock();
   QPlainTextEdit::keyPressEvent(event);
+  step.endEditBlock();
+}
+
+void CodeEditor::insertFromMimeData(const QMimeData* source) {
+  QTextCursor step(document());
+  step.beginEditBlock();
+  QPlainTextEdit::insertFromMimeData(source);
+  step.endEditBlock();
 }
 
 void CodeEditor::contextMenuEvent(QContextMenuEvent* event) {

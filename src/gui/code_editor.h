@@ -66,6 +66,10 @@ class CodeEditor : public QPlainTextEdit {
   // menu's Undo / Redo trigger them, so the text's undo steps go through the document's
   // one stack, in order with the setup's; the editor never undoes on its own.
   void setUndoActions(QAction* undo, QAction* redo);
+  // The next edit starts an undo step of its own (set when the document's stack moved
+  // by another step): the text document would join typing that goes on where it stopped
+  // to its last step, which may lie under a setup edit, or whose redo was given up.
+  void setNewUndoStep(bool on) { newUndoStep_ = on; }
 
   // Gutter helpers used by LineNumberArea.
   int gutterWidth() const;
@@ -88,6 +92,7 @@ class CodeEditor : public QPlainTextEdit {
   bool event(QEvent* event) override;
   void keyPressEvent(QKeyEvent* event) override;
   void contextMenuEvent(QContextMenuEvent* event) override;
+  void insertFromMimeData(const QMimeData* source) override;
 
  private:
   void updateGutterWidth();
@@ -103,6 +108,7 @@ class CodeEditor : public QPlainTextEdit {
   std::function<QString(int, int)> wordValue_;
   std::function<QString(int)> explainLine_;
   QPointer<QAction> undoAction_, redoAction_;
+  bool newUndoStep_ = false;
 };
 
 }  // namespace klueng::gui

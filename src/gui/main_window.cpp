@@ -185,8 +185,17 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   undoGroup_ = new QUndoGroup(this);
   undoGroup_->addStack(jobDoc_.undoStack());
   undoGroup_->setActiveStack(jobDoc_.undoStack());
-  connect(editor_->document(), &QTextDocument::undoCommandAdded, this, [this] {
-    if (!docs_->isFillingEditor()) jobDoc_.undoStack()->push(new TextEditCommand(editor_));
+  auto pushingText = std::make_shared<bool>(false);
+  connect(editor_->document(), &QTextDocument::undoCommandAdded, this, [this, pushingText] {
+    if (docs_->isFillingEditor()) return;
+    *pushingText = true;
+    jobDoc_.undoStack()->push(new TextEditCommand(editor_));
+    *pushingText = false;
+    editor_->setNewUndoStep(false);  // typing goes on into this step
+  });
+  // Any other move of the stack (a setup edit, an undo, a redo): the next typing is a new step.
+  connect(jobDoc_.undoStack(), &QUndoStack::indexChanged, this, [this, pushingText] {
+    if (!*pushingText) editor_->setNewUndoStep(true);
   });
   createDocks();
   createActions();

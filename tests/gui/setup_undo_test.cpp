@@ -238,6 +238,37 @@ class SetupUndoTest : public QObject {
     QVERIFY(w.close());
   }
 
+  // Typing that goes on where it stopped, after a setup edit, is a step of its own: the
+  // editor would join it to the typing before the setup edit, undone in the wrong order.
+  void typingAfterASetupEditIsItsOwnStep() {
+    MainWindow w;
+    QVERIFY(w.openFile(work_.filePath(QStringLiteral("shaft.txt"))));
+    QVERIFY(QTest::qWaitFor([&] { return !w.isBusy(); }, 20000));
+    const QString original = w.editor()->toPlainText();
+    QTextCursor c(w.editor()->document());
+    c.movePosition(QTextCursor::End);
+    w.editor()->setTextCursor(c);
+    QTest::keyClicks(w.editor(), QStringLiteral("(A"));
+    acceptNextDialog<OffsetDefineDialog>([](OffsetDefineDialog& d) { d.setCell(0, 2, QStringLiteral("0.4")); });
+    w.action(QStringLiteral("actionOffsetDefine"))->trigger();
+    QTest::keyClicks(w.editor(), QStringLiteral("B)"));
+    QCOMPARE(w.undoStack()->count(), 3);
+    w.action(QStringLiteral("actionUndo"))->trigger();
+    QCOMPARE(w.editor()->toPlainText(), original + QStringLiteral("(A"));
+    QCOMPARE(w.jobDocument().setup().offsets.at(1).r, 0.4);
+    w.action(QStringLiteral("actionUndo"))->trigger();
+    QCOMPARE(w.jobDocument().setup().offsets.at(1).r, 0.8);
+    w.action(QStringLiteral("actionUndo"))->trigger();
+    QCOMPARE(w.editor()->toPlainText(), original);
+    QVERIFY(!w.isWindowModified());  // all undone: nothing to save
+    // Typed again after an undo, the editor's redo is given up, and so is the stack's.
+    QTest::keyClicks(w.editor(), QStringLiteral("C"));
+    QCOMPARE(w.undoStack()->count(), 1);
+    QVERIFY(!w.action(QStringLiteral("actionRedo"))->isEnabled());
+    w.action(QStringLiteral("actionUndo"))->trigger();
+    QCOMPARE(w.editor()->toPlainText(), original);
+  }
+
   void theEditMenuHasOneUndo() {
     MainWindow w;
     QMenu* edit = w.findChild<QMenu*>(QStringLiteral("menuEdit"));
