@@ -349,28 +349,16 @@
         <translation>บันทึกอัตโนมัติไม่สำเร็จ: %1</translation>
     </message>
     <message>
-        <source>Undo &amp;Setup Change</source>
-        <translation>เลิกทำการตั้งค่า (&amp;S)</translation>
+        <source>&amp;Undo %1</source>
+        <translation>เลิกทำ %1 (&amp;U)</translation>
     </message>
     <message>
-        <source>Redo Setup Chan&amp;ge</source>
-        <translation>ทำการตั้งค่าซ้ำ (&amp;G)</translation>
+        <source>&amp;Redo %1</source>
+        <translation>ทำซ้ำ %1 (&amp;R)</translation>
     </message>
     <message>
-        <source>Undo the last change to the job details, the tools or the offsets</source>
-        <translation>เลิกทำการแก้ไขล่าสุดของรายละเอียดงาน มีดตัด หรือค่าออฟเซต</translation>
-    </message>
-    <message>
-        <source>Redo the last change to the job details, the tools or the offsets undone</source>
-        <translation>ทำซ้ำการแก้ไขรายละเอียดงาน มีดตัด หรือค่าออฟเซตที่เพิ่งเลิกทำ</translation>
-    </message>
-    <message>
-        <source>Undo: %1</source>
-        <translation>เลิกทำ: %1</translation>
-    </message>
-    <message>
-        <source>Redo: %1</source>
-        <translation>ทำซ้ำ: %1</translation>
+        <source>Job Details</source>
+        <translation>รายละเอียดงาน</translation>
     </message>
     <message>
         <source>Tool Select</source>
@@ -379,10 +367,6 @@
     <message>
         <source>Offset Define</source>
         <translation>กำหนดค่าออฟเซต</translation>
-    </message>
-    <message>
-        <source>The machine setup could not be written back: %1</source>
-        <translation>เขียนไฟล์ตั้งค่าเครื่องกลับคืนไม่ได้: %1</translation>
     </message>
     <message>
         <source>The machine setup has errors:</source>
@@ -1201,6 +1185,14 @@
         <translation>มีการแก้ไขที่ยังไม่บันทึก</translation>
     </message>
     <message>
+        <source>The tool or offset tables have been changed.</source>
+        <translation>ตารางมีดตัดหรือตารางค่าออฟเซตถูกแก้ไข</translation>
+    </message>
+    <message>
+        <source>The program "%1" and the tool or offset tables have been changed.</source>
+        <translation>ชุดรหัสสั่งการทำงาน "%1" และตารางมีดตัดหรือตารางค่าออฟเซตถูกแก้ไข</translation>
+    </message>
+    <message>
         <source>The program "%1" has been changed.</source>
         <translation>ชุดรหัสสั่งการทำงาน "%1" ถูกแก้ไข</translation>
     </message>
@@ -1349,8 +1341,51 @@
 <context>
     <name>klueng::gui::SetupCommands</name>
     <message>
-        <source>Job details</source>
+        <source>Job Details</source>
         <translation>รายละเอียดงาน</translation>
+    </message>
+    <message>
+        <source>Typing</source>
+        <translation>การพิมพ์</translation>
+    </message>
+</context>
+<context>
+    <name>klueng::gui::SetupSave</name>
+    <message>
+        <source>Read-only setup</source>
+        <translation>ไฟล์ตั้งค่าแบบอ่านอย่างเดียว</translation>
+    </message>
+    <message>
+        <source>The setup in "%1" is read-only, so Klueng will not write over it.</source>
+        <translation>ไฟล์ตั้งค่าใน "%1" เป็นแบบอ่านอย่างเดียว Klueng จึงจะไม่บันทึกทับ</translation>
+    </message>
+    <message>
+        <source>Save the tool and offset tables to your own setup folder instead?</source>
+        <translation>ต้องการบันทึกตารางมีดตัดและตารางค่าออฟเซตลงในโฟลเดอร์ตั้งค่าของคุณเองแทนหรือไม่?</translation>
+    </message>
+    <message>
+        <source>Save to &amp;My Setup Folder</source>
+        <translation>บันทึกลงโฟลเดอร์ตั้งค่าของฉัน (&amp;M)</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>ยกเลิก</translation>
+    </message>
+    <message>
+        <source>Cannot save the setup</source>
+        <translation>บันทึกการตั้งค่าไม่ได้</translation>
+    </message>
+    <message>
+        <source>Cannot save the setup: %1</source>
+        <translation>บันทึกการตั้งค่าไม่ได้: %1</translation>
+    </message>
+    <message>
+        <source>Cannot save the tool table: %1</source>
+        <translation>บันทึกตารางมีดตัดไม่ได้: %1</translation>
+    </message>
+    <message>
+        <source>Cannot save the offset table: %1</source>
+        <translation>บันทึกตารางค่าออฟเซตไม่ได้: %1</translation>
     </message>
 </context>
 <context>

@@ -172,11 +172,6 @@
         <translation>ค่าออฟเซตทุกค่าถูกต้อง</translation>
     </message>
     <message>
-        <location filename="../src/gui/offset_define_dialog.cpp" line="170"/>
-        <source>Cannot save the offset table: %1</source>
-        <translation>บันทึกตารางค่าออฟเซตไม่ได้: %1</translation>
-    </message>
-    <message>
         <location filename="../src/gui/offset_define_dialog.cpp" line="178"/>
         <source>Offset Define</source>
         <translation>กำหนดค่าออฟเซต</translation>
@@ -533,12 +528,6 @@
         <location filename="../src/gui/tool_select_dialog.cpp" line="444"/>
         <source>Tool %1: %2</source>
         <translation>มีดตัด %1: %2</translation>
-    </message>
-    <message>
-        <location filename="../src/gui/tool_select_dialog.cpp" line="393"/>
-        <location filename="../src/gui/tool_select_dialog.cpp" line="417"/>
-        <source>Cannot save the tool table: %1</source>
-        <translation>บันทึกตารางมีดตัดไม่ได้: %1</translation>
     </message>
     <message>
         <location filename="../src/gui/tool_select_dialog.cpp" line="426"/>

@@ -61,12 +61,10 @@ const ActionSpec kActions[] = {
      KLUENG_TR("Draw a turned part and get its program, checked by cutting it"), EnabledWhen::NotRunning},
     {"actionExit", "exit", kNoKey, "Ctrl+Q", KLUENG_TR("E&xit"), nullptr},
     // Edit
-    {"actionUndo", "undo", QKeySequence::Undo, nullptr, KLUENG_TR("&Undo"), nullptr, EnabledWhen::Always, false, true},
-    {"actionRedo", "redo", QKeySequence::Redo, nullptr, KLUENG_TR("&Redo"), nullptr, EnabledWhen::Always, false, true},
-    {"actionUndoSetup", "undo", kNoKey, "Ctrl+Alt+Z", KLUENG_TR("Undo &Setup Change"),
-     KLUENG_TR("Undo the last change to the job details, the tools or the offsets")},  // the undo stack enables it
-    {"actionRedoSetup", "redo", kNoKey, "Ctrl+Alt+Y", KLUENG_TR("Redo Setup Chan&ge"),
-     KLUENG_TR("Redo the last change to the job details, the tools or the offsets undone")},
+    // One Undo / Redo for the text and the setup (issue 30 item 2): window-wide keys, the
+    // editor passes Ctrl+Z / Ctrl+Y on to them; the window names and enables them.
+    {"actionUndo", "undo", QKeySequence::Undo, nullptr, KLUENG_TR("&Undo"), nullptr},
+    {"actionRedo", "redo", QKeySequence::Redo, nullptr, KLUENG_TR("&Redo"), nullptr},
     {"actionCut", "cut", QKeySequence::Cut, nullptr, KLUENG_TR("Cu&t"), nullptr, EnabledWhen::Always, false, true},
     {"actionCopy", "copy", QKeySequence::Copy, nullptr, KLUENG_TR("&Copy"), nullptr, EnabledWhen::Always, false, true},
     {"actionPaste", "paste", QKeySequence::Paste, nullptr, KLUENG_TR("&Paste"), nullptr, EnabledWhen::Always, false,
@@ -150,7 +148,7 @@ const MenuSpec kMenus[] = {
      "actionPrintPreview actionExportPdf | actionPartDesigner actionGradeClass | actionExit"},
     {"menuRecent", KLUENG_TR("&Recent Files"), ""},
     {"menuEdit", KLUENG_TR("&Edit"),
-     "actionUndo actionRedo actionUndoSetup actionRedoSetup | actionCut actionCopy actionPaste actionDelete "
+     "actionUndo actionRedo | actionCut actionCopy actionPaste actionDelete "
      "actionSelectAll | actionFind actionReplace "
      "actionGoToLine"},
     {"menuRun", KLUENG_TR("&Run"),

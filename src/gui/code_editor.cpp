@@ -1,5 +1,13 @@
 #include "gui/code_editor.h"
 
+#include <QAction>
+#include <QContextMenuEvent>
+#include <QKeyEvent>
+#include <QMimeData>
+#include <QTextCursor>
+#include <QMenu>
+#include <memory>
+
 #include "klueng/core/gcode/address_table.h"
 #include "klueng/core/gcode/display_tokens.h"
 
@@ -345,6 +353,67 @@ bool CodeEditor::viewportEvent(QEvent* event) {
     return true;
   }
   return QPlainTextEdit::viewportEvent(event);
+}
+
+void CodeEditor::setUndoActions(QAction* undo, QAction* redo) {
+  undoAction_ = undo;
+  redoAction_ = redo;
+}
+
+// The undo keys, as the platform has them (Ctrl+Z; Ctrl+Y or Ctrl+Shift+Z).
+static QAction* codeEditorUndoActionFor(QKeyEvent* key, QAction* undo, QAction* redo) {
+  if (undo && key->matches(QKeySequence::Undo)) return undo;
+  if (redo && key->matches(QKeySequence::Redo)) return redo;
+  return nullptr;
+}
+
+bool CodeEditor::event(QEvent* event) {
+  // Left to the window's shortcut: the text control would take Ctrl+Z for itself.
+  if (event->type() == QEvent::ShortcutOverride &&
+      codeEditorUndoActionFor(static_cast<QKeyEvent*>(event), undoAction_, redoAction_)) {
+    event->ignore();
+    return true;
+  }
+  return QPlainTextEdit::event(event);
+}
+
+void CodeEditor::keyPressEvent(QKeyEvent* event) {
+  // Reaches here when the window's shortcut did not take it (e.g. nothing to undo).
+  if (QAction* a = codeEditorUndoActionFor(event, undoAction_, redoAction_)) {
+    if (a->isEnabled()) a->trigger();
+    event->accept();
+    return;
+  }
+  if (!newUndoStep_) {
+    QPlainTextEdit::keyPressEvent(event);
+    return;
+  }
+  // An edit block's step is never joined to the one before it (an empty block adds none).
+  QTextCursor step(document());
+  step.beginEditBlock();
+  QPlainTextEdit::keyPressEvent(event);
+  step.endEditBlock();
+}
+
+void CodeEditor::insertFromMimeData(const QMimeData* source) {
+  QTextCursor step(document());
+  step.beginEditBlock();
+  QPlainTextEdit::insertFromMimeData(source);
+  step.endEditBlock();
+}
+
+void CodeEditor::contextMenuEvent(QContextMenuEvent* event) {
+  std::unique_ptr<QMenu> menu(createStandardContextMenu(event->pos()));
+  // The menu's Undo / Redo are the window's, which know the setup's steps too.
+  for (QAction* a : menu->actions()) {
+    QAction* ours = a->objectName() == QLatin1String("edit-undo")   ? undoAction_.data()
+                    : a->objectName() == QLatin1String("edit-redo") ? redoAction_.data()
+                                                                    : nullptr;
+    if (!ours) continue;
+    menu->insertAction(a, ours);
+    menu->removeAction(a);
+  }
+  menu->exec(event->globalPos());
 }
 
 void CodeEditor::changeEvent(QEvent* event) {

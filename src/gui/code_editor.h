@@ -10,6 +10,7 @@
 // diagnostics and timeline use.
 #include <QList>
 #include <QPlainTextEdit>
+#include <QPointer>
 #include <functional>
 #include <optional>
 #include <utility>
@@ -61,6 +62,15 @@ class CodeEditor : public QPlainTextEdit {
   // The G or M code under (or just before) the text cursor: ('G', 71) on "G71".
   std::optional<std::pair<char, int>> codeAtCursor() const;
 
+  // The window's Edit > Undo / Redo (issue 30 item 2): Ctrl+Z / Ctrl+Y and the context
+  // menu's Undo / Redo trigger them, so the text's undo steps go through the document's
+  // one stack, in order with the setup's; the editor never undoes on its own.
+  void setUndoActions(QAction* undo, QAction* redo);
+  // The next edit starts an undo step of its own (set when the document's stack moved
+  // by another step): the text document would join typing that goes on where it stopped
+  // to its last step, which may lie under a setup edit, or whose redo was given up.
+  void setNewUndoStep(bool on) { newUndoStep_ = on; }
+
   // Gutter helpers used by LineNumberArea.
   int gutterWidth() const;
   int breakpointMarginWidth() const;
@@ -79,6 +89,10 @@ class CodeEditor : public QPlainTextEdit {
   bool viewportEvent(QEvent* event) override;
   void paintEvent(QPaintEvent* event) override;
   void changeEvent(QEvent* event) override;
+  bool event(QEvent* event) override;
+  void keyPressEvent(QKeyEvent* event) override;
+  void contextMenuEvent(QContextMenuEvent* event) override;
+  void insertFromMimeData(const QMimeData* source) override;
 
  private:
   void updateGutterWidth();
@@ -93,6 +107,8 @@ class CodeEditor : public QPlainTextEdit {
   core::gcode::Dialect dialect_ = core::gcode::Dialect::Fanuc;
   std::function<QString(int, int)> wordValue_;
   std::function<QString(int)> explainLine_;
+  QPointer<QAction> undoAction_, redoAction_;
+  bool newUndoStep_ = false;
 };
 
 }  // namespace klueng::gui

@@ -127,15 +127,22 @@ bool Document::save(const QString& path, const QString& gcode, QString* error) {
 
 QString Document::displayName() const { return path_.isEmpty() ? tr("untitled.txt") : QFileInfo(path_).fileName(); }
 
+Document::HeaderState Document::headerStateFor(const core::io::JobHeader& header) const {
+  HeaderState s{header, {}, headerModified_ || !file_.plainGcode};
+  s.header.stockSource = file_.plainGcode ? core::io::StockSource::JobDetails : core::io::StockSource::Header;
+  s.stockNotes = core::machine::stockNotes(s.header, nullptr, {}, 1);
+  return s;
+}
+
 void Document::setHeader(const core::io::JobHeader& header) {
-  file_.header = header;
-  file_.header.stockSource = file_.plainGcode ? core::io::StockSource::JobDetails : core::io::StockSource::Header;
-  stockNotes_ = core::machine::stockNotes(file_.header, nullptr, {}, 1);
+  const HeaderState s = headerStateFor(header);
+  file_.header = s.header;
+  stockNotes_ = s.stockNotes;
   // The old header's diagnostics (lines 1-6, e.g. a bad stock size) no longer apply.
   if (!file_.plainGcode)
     std::erase_if(fileDiagnostics_, [](const core::Diagnostic& d) { return d.range.line >= 1 && d.range.line <= 6; });
   // A plain file is saved without a header: its Job details are remembered elsewhere.
-  headerModified_ = headerModified_ || !file_.plainGcode;
+  headerModified_ = s.modified;
   emit headerChanged();
 }
 

@@ -39,6 +39,8 @@ class Document : public QObject {
     bool modified = false;
   };
   HeaderState headerState() const { return {file_.header, stockNotes_, headerModified_}; }
+  // What setHeader(header) would make of it, without making it (an undo command's "after").
+  HeaderState headerStateFor(const core::io::JobHeader& header) const;
   void restoreHeader(const HeaderState& state);
 
   // Reads and splits a program file; thread-safe (touches no Document).

@@ -63,8 +63,9 @@ void DocumentManager::autosave() {
   }
   if (hasRecoveryCopy_ && autosavedRevision_ == revision_) return;
   QString error;
+  const RecoverySetup setup = isSetupModified() && setup_.recovery ? setup_.recovery() : RecoverySetup{};
   if (!recovery_.write(sessionId_, document_->formatted(editor_->toPlainText()), document_->filePath(),
-                       document_->displayName(), &error)) {
+                       document_->displayName(), &error, setup)) {
     emit autosaveFailed(error);
     return;
   }
@@ -84,7 +85,16 @@ void DocumentManager::restoreRecovery(const RecoveryCopy& copy) {
   startLoad(copy.copyPath, copy.originalPath);
 }
 
-bool DocumentManager::isModified() const { return editor_->document()->isModified() || document_->isHeaderModified(); }
+bool DocumentManager::isProgramModified() const {
+  return editor_->document()->isModified() || document_->isHeaderModified();
+}
+
+bool DocumentManager::isModified() const { return isProgramModified() || isSetupModified(); }
+
+void DocumentManager::setupChanged() {
+  ++revision_;
+  emit modificationChanged();
+}
 
 bool DocumentManager::maybeSave() {
   if (!isModified()) return true;
@@ -92,7 +102,14 @@ bool DocumentManager::maybeSave() {
   box.setObjectName(QStringLiteral("unsavedChangesBox"));
   box.setIcon(QMessageBox::Warning);
   box.setWindowTitle(tr("Unsaved changes"));
-  box.setText(tr("The program \"%1\" has been changed.").arg(document_->displayName()));
+  // Say what is unsaved: the program, the tool and offset tables, or both.
+  if (!isProgramModified())
+    box.setText(tr("The tool or offset tables have been changed."));
+  else if (isSetupModified())
+    box.setText(
+        tr("The program \"%1\" and the tool or offset tables have been changed.").arg(document_->displayName()));
+  else
+    box.setText(tr("The program \"%1\" has been changed.").arg(document_->displayName()));
   box.setInformativeText(tr("Do you want to save your changes?"));
   QPushButton* saveButton = box.addButton(tr("&Save"), QMessageBox::AcceptRole);
   QPushButton* discardButton = box.addButton(tr("&Discard"), QMessageBox::DestructiveRole);
@@ -256,9 +273,11 @@ void DocumentManager::finishLoad() {
   editor_->setUndoRedoEnabled(true);
   editor_->setReadOnly(false);
   editor_->moveCursor(QTextCursor::Start);
+  std::optional<RecoverySetup> restoredSetup;
   if (restoring_) {
     // Unsaved work again, as it was: modified until the user saves it.
     recovery_.remove(restoring_->id);
+    if (restoring_->setup.present) restoredSetup = restoring_->setup;
     restoring_.reset();
     editor_->document()->setModified(true);
     ++revision_;
@@ -269,6 +288,12 @@ void DocumentManager::finishLoad() {
     rememberFile();
   }
   emit loaded(document_->filePath(), loadedText);
+  // The unsaved setup edits the copy kept are in memory again, unsaved.
+  if (restoredSetup && setup_.restore) {
+    setup_.restore(*restoredSetup);
+    setupChanged();
+    autosave();
+  }
 }
 
 void DocumentManager::rememberFile() {
@@ -281,6 +306,13 @@ void DocumentManager::rememberFile() {
 }
 
 bool DocumentManager::save() {
+  // Only the setup changed in an untitled program: its files are written, no name is asked
+  // (unless stations set for this program need the program's file to belong to).
+  if (document_->isUntitled() && !isProgramModified() && isSetupModified()) {
+    if (!setup_.save(QString())) return false;
+    emit modificationChanged();
+    if (!isSetupModified()) return true;
+  }
   if (document_->isUntitled()) return saveAs();
   return saveFile(document_->filePath());
 }
@@ -333,6 +365,8 @@ bool DocumentManager::saveFile(const QString& path) {
     ++fillGeneration_;  // the queued chunks and finishLoad() of this fill are void now
     finishLoad();
   }
+  // The setup first: it may ask (a read-only setup folder), and a No saves nothing.
+  if (isSetupModified() && !setup_.save(QFileInfo(path).absoluteFilePath())) return false;
   QString error;
   const QString old = document_->filePath();
   if (!old.isEmpty()) watcher_->removePath(old);

@@ -36,8 +36,25 @@ class DocumentManager : public QObject {
   DocumentManager(QWidget* window, CodeEditor* editor, Settings* settings, std::function<LoadContext()> context);
   ~DocumentManager() override;
 
+  // The setup the window holds for the document (issue 30 item 2): it is part of what is
+  // unsaved, saved, autosaved and recovered.
+  struct SetupHooks {
+    std::function<bool()> modified;
+    // Writes what is edited (tools.cfg, offset.cfg; the stations set for `programPath`
+    // when it is not empty); false when the user cancelled or a write failed.
+    std::function<bool(const QString& programPath)> save;
+    std::function<RecoverySetup()> recovery;  // what an autosave keeps of it
+    std::function<void(const RecoverySetup&)> restore;
+  };
+  void setSetupHooks(SetupHooks hooks) { setup_ = std::move(hooks); }
+  // A setup edit or its undo: a new revision for the autosave, the title's '*'.
+  void setupChanged();
+
   Document* document() const { return document_; }
+  // The program (text or header) or the setup has unsaved changes.
   bool isModified() const;
+  bool isProgramModified() const;
+  bool isSetupModified() const { return setup_.modified && setup_.modified(); }
   // True while a file is read or still going into the editor.
   bool isLoading() const { return loadInFlight_; }
   // True while the editor is being filled: its changes are not the user's.
@@ -113,6 +130,7 @@ class DocumentManager : public QObject {
   quint64 autosavedRevision_ = 0;  // the revision the recovery copy holds
   bool hasRecoveryCopy_ = false;
   std::optional<RecoveryCopy> restoring_;  // a recovery copy being loaded
+  SetupHooks setup_;
 };
 
 }  // namespace klueng::gui

@@ -20,6 +20,7 @@
 #include <QToolBar>
 #include <QToolButton>
 #include <QVBoxLayout>
+#include <QUndoGroup>
 #include <QUndoStack>
 #include <QtConcurrent/QtConcurrentRun>
 
@@ -48,6 +49,9 @@
 #include "gui/setup_strip.h"
 #include "gui/settings.h"
 #include "gui/setup_commands.h"
+#include "gui/setup_save.h"
+#include "gui/job_tools.h"
+#include "klueng/core/io/tool_library.h"
 #include "gui/part_panel.h"
 #include "gui/status_panel.h"
 #include "gui/tool_select_dialog.h"
@@ -176,7 +180,23 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
           [this] { QTimer::singleShot(300, this, &MainWindow::showBusyIndicator); });
   connect(checker_, &CheckController::finished, this, &MainWindow::onCheckFinished);
 
-  setupUndo_ = new QUndoStack(this);
+  // One Edit > Undo for the text and the setup (issue 30 item 2): the editor's undo steps
+  // go onto the document's stack as commands (setup_commands.h), beside the setup edits.
+  undoGroup_ = new QUndoGroup(this);
+  undoGroup_->addStack(jobDoc_.undoStack());
+  undoGroup_->setActiveStack(jobDoc_.undoStack());
+  auto pushingText = std::make_shared<bool>(false);
+  connect(editor_->document(), &QTextDocument::undoCommandAdded, this, [this, pushingText] {
+    if (docs_->isFillingEditor()) return;
+    *pushingText = true;
+    jobDoc_.undoStack()->push(new TextEditCommand(editor_));
+    *pushingText = false;
+    editor_->setNewUndoStep(false);  // typing goes on into this step
+  });
+  // Any other move of the stack (a setup edit, an undo, a redo): the next typing is a new step.
+  connect(jobDoc_.undoStack(), &QUndoStack::indexChanged, this, [this, pushingText] {
+    if (!*pushingText) editor_->setNewUndoStep(true);
+  });
   createDocks();
   createActions();
   connectDocuments();
@@ -255,8 +275,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
 }
 
 MainWindow::~MainWindow() {
-  // The stack clears itself when Qt deletes it, after this object's members are gone.
-  setupUndo_->disconnect(this);
+  // The stack goes with jobDoc_, before the group and the actions: nothing may call back.
+  undoGroup_->disconnect(this);
+  jobDoc_.undoStack()->disconnect(this);
+  jobDoc_.undoStack()->clear();
 }
 
 // ---------------------------------------------------------------- documents
@@ -274,8 +296,42 @@ void MainWindow::connectDocuments() {
     lastDiagnostics_.clear();
     showDiagnostics();
   });
+  docs_->setSetupHooks({[this] { return jobDoc_.isSetupModified(); },
+                        [this](const QString& programPath) { return saveSetup(programPath); },
+                        [this] {
+                          RecoverySetup r;
+                          r.present = true;
+                          r.dir = configDir_;
+                          r.tools = QByteArray::fromStdString(core::io::formatToolTable(jobDoc_.setup().tools));
+                          r.offsets = QByteArray::fromStdString(core::io::formatOffsetTable(jobDoc_.setup().offsets));
+                          for (const auto& o : jobDoc_.overrides())
+                            r.overrides << QStringLiteral("%1=%2").arg(o.station).arg(
+                                QString::fromStdString(o.libraryId));
+                          return r;
+                        },
+                        [this](const RecoverySetup& r) {
+                          // As the tables were in memory: unsaved, against the files on disk.
+                          const std::string dir = r.dir.isEmpty() ? configDir_.toStdString() : r.dir.toStdString();
+                          SetupEdit e = jobDoc_.edit();
+                          if (auto t = core::io::parseToolTable(r.tools.toStdString(), dir, "tools.cfg",
+                                                                jobDoc_.setup().machine.turretStations);
+                              t.value)
+                            e.tools = *t.value;
+                          if (auto o = core::io::parseOffsetTable(r.offsets.toStdString(), "offset.cfg"); o.value)
+                            e.offsets = *o.value;
+                          e.overrides.clear();
+                          for (const QString& item : r.overrides) {
+                            core::machine::StationOverride o;
+                            std::string error;
+                            if (core::machine::parseStationOverride(item.toStdString(), core::io::kMaxStations,
+                                                                    core::io::shippedToolLibrary(), o, error))
+                              e.overrides.push_back(o);
+                          }
+                          applySetupEdit(e);
+                        }});
   connect(docs_, &DocumentManager::cleared, this, [this] {
-    setupUndo_->clear();  // one undo history per document
+    jobDoc_.undoStack()->clear();  // one undo history per document
+    revertSetup();
     updateTitle();
     checkNow();
   });
@@ -287,8 +343,9 @@ void MainWindow::connectDocuments() {
   });
   connect(docs_, &DocumentManager::loadFailed, this, &MainWindow::loadFailed);
   connect(docs_, &DocumentManager::loaded, this, [this](const QString& path, const QString& text) {
-    setupUndo_->clear();
-    jobDoc_.setOverrides(loadToolOverrides(path));
+    jobDoc_.undoStack()->clear();
+    revertSetup();
+    jobDoc_.setSavedOverrides(loadToolOverrides(path));
     updateTitle();
     // A program that names its machine at its head ((MACHINE: id), issue 27) selects it.
     core::gcode::Dialect named{};
@@ -450,12 +507,15 @@ void MainWindow::showDiagnostics() {
 
 // ---------------------------------------------------------------- running
 
-void MainWindow::loadMachineSetup(const QString& dir) {
-  // A dialog that wrote a per-user copy tells us where; otherwise the core decides.
+void MainWindow::loadMachineSetup(const QString& dir, bool keepEdits) {
+  // A save into the per-user folder tells us where; otherwise the core decides.
   if (!dir.isEmpty()) configDirOverride_ = dir;
   const core::machine::LoadedSetup loaded = core::machine::loadMachineSetup(configDirOverride_.toStdString());
   configDir_ = QString::fromStdString(loaded.dir);
+  const bool edited = keepEdits && jobDoc_.isSetupModified();
+  const SetupEdit edits = jobDoc_.edit();
   jobDoc_.setSetup(loaded.setup, loaded.toolsWithBitmap());  // the next check decides the job's tools
+  if (edited) jobDoc_.applyEdit(edits);                      // still in memory, still unsaved
   // A setup file the reader refused is said at once, file and line, above the editor.
   const bool problems =
       std::any_of(loaded.diagnostics.begin(), loaded.diagnostics.end(),
@@ -645,6 +705,8 @@ void MainWindow::showJobDetails() {
   JobDetailsDialog dlg(h, this);
   if (dlg.exec() != QDialog::Accepted) return;
   const core::io::JobHeader chosen = dlg.header();
+  // The header and the head line naming the machine are one step of Edit > Undo.
+  jobDoc_.undoStack()->beginMacro(tr("Job Details"));
   setJobDetails(chosen);
   // A name no loaded machine has shows as "not named": kept unless another machine is picked.
   core::gcode::Dialect d{};
@@ -664,16 +726,8 @@ void MainWindow::showJobDetails() {
     edit.setPosition(static_cast<int>(before.size() - tail), QTextCursor::KeepAnchor);
     edit.insertText(after.mid(head, after.size() - head - tail));
   }
+  jobDoc_.undoStack()->endMacro();
   if (core::gcode::parseDialectId(chosen.machine, d) && d != jobDoc_.dialect()) setDialect(d);
-}
-
-void MainWindow::applyJobDetails(const core::io::JobHeader& header) {
-  document_->setHeader(header);
-  if (!document_->isPlainGcode())
-    settings_->setLastJobHeader(header);
-  else if (!document_->isUntitled())
-    settings_->setJobDetailsFor(document_->filePath(), header);
-  checkNow();
 }
 
 void MainWindow::showFind() {
@@ -697,38 +751,76 @@ void MainWindow::goToLine() {
 void MainWindow::showToolSelect() { showToolSelectFor(0); }
 
 void MainWindow::showToolSelectFor(int station) {
-  ToolSelectDialog dlg(configDir_, this);
+  // The dialog edits the tables the document holds; its OK is one undo step, nothing is written.
+  ToolSelectDialog dlg(jobDoc_.setup().tools, jobDoc_.setup().offsets, configDir_, this);
   dlg.setProgramTools(jobDoc_.tools(), jobDoc_.overrides());
   if (station > 0) dlg.setCurrentTool(station);
-  const SetupSnapshot before = SetupSnapshot::read(configDir_, jobDoc_.overrides());
   if (dlg.exec() != QDialog::Accepted) return;
-  const QString dir = dlg.savedConfigDir();
-  pushSetupChange(tr("Tool Select"), dir, before, SetupSnapshot::read(dir, dlg.jobOverrides()));
+  SetupEdit after = jobDoc_.edit();
+  if (dlg.toolsChanged()) after.tools = dlg.toolTable();
+  after.overrides = dlg.jobOverrides();
+  pushSetupEdit(tr("Tool Select"), after);
 }
 
 void MainWindow::showOffsetDefine() {
-  OffsetDefineDialog dlg(configDir_, this);
-  const SetupSnapshot before = SetupSnapshot::read(configDir_, jobDoc_.overrides());
+  OffsetDefineDialog dlg(jobDoc_.setup().offsets, this);
   if (dlg.exec() != QDialog::Accepted) return;
-  const QString dir = dlg.savedConfigDir();
-  pushSetupChange(tr("Offset Define"), dir, before, SetupSnapshot::read(dir, jobDoc_.overrides()));
+  SetupEdit after = jobDoc_.edit();
+  after.offsets = dlg.offsetTable();
+  pushSetupEdit(tr("Offset Define"), after);
 }
 
-void MainWindow::pushSetupChange(const QString& text, const QString& dir, const SetupSnapshot& before,
-                                 const SetupSnapshot& after) {
-  const auto reload = [this](const QString& folder, const std::vector<core::machine::StationOverride>& overrides,
-                             const QString& error) {
-    jobDoc_.setOverrides(overrides);
-    saveToolOverrides(document_->filePath(), jobDoc_.overrides());
-    loadMachineSetup(folder);
-    if (!error.isEmpty())
-      showBanner(
-          BannerKind::Setup, [error] { return tr("The machine setup could not be written back: %1").arg(error); },
-          true);
-    checkNow();  // empty offset rows may take a library tool's nose radius and tip
-  };
-  reload(dir, after.overrides, {});  // the dialog wrote the files; this takes them in
-  if (!(before == after)) setupUndo_->push(new SetupFilesCommand(text, dir, before, after, reload));
+void MainWindow::pushSetupEdit(const QString& text, const SetupEdit& after) {
+  const SetupEdit before = jobDoc_.edit();
+  if (before.sameAs(after)) return;  // OK on an unchanged dialog is no step
+  jobDoc_.undoStack()->push(
+      new SetupCommand(text, before, after, [this](const SetupEdit& edit) { applySetupEdit(edit); }));
+}
+
+void MainWindow::applySetupEdit(const SetupEdit& edit) {
+  // A run takes the new offsets at once with the tools the program was given; the next
+  // check's Job decides the tools again (empty offset rows may take a library tool's nose).
+  const bool sameTools = core::io::formatToolTable(edit.tools) == core::io::formatToolTable(jobDoc_.setup().tools);
+  core::machine::MachineSetup run = jobDoc_.tools().setup;
+  jobDoc_.applyEdit(edit);
+  if (sameTools)
+    run.offsets = jobDoc_.runSetup().offsets;
+  else
+    run = jobDoc_.runSetup();
+  runner_->setMachineSetup(run);
+  if (designer_) designer_->setMachineSetup(jobDoc_.setup());
+  docs_->setupChanged();  // the title's '*', the autosave
+  updateStockLabel();
+  checkNow();
+}
+
+bool MainWindow::saveSetup(const QString& programPath) {
+  SetupToSave what;
+  what.dir = configDir_;
+  what.tools = &jobDoc_.setup().tools;
+  what.offsets = &jobDoc_.setup().offsets;
+  what.toolsEdited = jobDoc_.toolsModified();
+  what.offsetsEdited = jobDoc_.offsetsModified();
+  const QString written = saveSetupFiles(this, what);
+  if (written.isEmpty()) return false;
+  if (!programPath.isEmpty()) saveToolOverrides(programPath, jobDoc_.overrides());
+  if (QDir(written) != QDir(configDir_)) {
+    // The per-user folder is the setup now: read from there, the edits being in it.
+    loadMachineSetup(written, false);
+    runner_->setMachineSetup(jobDoc_.setup());
+    checkNow();
+  }
+  // Stations set for an untitled program wait for its file (Save As) to be remembered.
+  jobDoc_.markSetupSaved(!programPath.isEmpty());
+  return true;
+}
+
+void MainWindow::revertSetup() {
+  if (jobDoc_.toolsModified() || jobDoc_.offsetsModified()) {
+    loadMachineSetup({}, false);
+    runner_->setMachineSetup(jobDoc_.setup());
+  }
+  jobDoc_.setSavedOverrides({});  // the next program's own, when it has any
 }
 
 void MainWindow::showHelpContents() {

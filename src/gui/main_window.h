@@ -32,6 +32,7 @@ class QSplitter;
 class QTimer;
 class QToolBar;
 class QToolButton;
+class QUndoGroup;
 class QUndoStack;
 
 namespace klueng::gui {
@@ -72,7 +73,10 @@ class MainWindow : public QMainWindow {
   class FirstStepsBar* firstSteps() const {
     return firstSteps_;
   }
-  QUndoStack* setupUndoStack() const { return setupUndo_; }
+  // The document's edits, text and setup, in the order made (Edit > Undo / Redo).
+  QUndoStack* undoStack() const { return jobDoc_.undoStack(); }
+  // The tool and offset tables and this program's stations as held in memory (saved by File > Save).
+  const JobDocument& jobDocument() const { return jobDoc_; }
   RunController* runController() const { return runner_; }
   class FlowPanel* flowPanel() const {
     return flow_;
@@ -171,14 +175,20 @@ class MainWindow : public QMainWindow {
   void onCheckFinished(const CheckController::JobPtr& job);
   void showDiagnostics();
 
-  void loadMachineSetup(const QString& dir = {});
+  // Reads the setup folder; unsaved edits of the tool and offset tables stay (a dialect's
+  // machine keys change, not the user's edits) unless `keepEdits` is false.
+  void loadMachineSetup(const QString& dir = {}, bool keepEdits = true);
   // The machines past the three shipped dialects (romi-gl240m, the user's own
   // machines folders) in the dialect menu, named in the UI language (issue 27).
   void updateMachineMenu();
-  void applyJobDetails(const core::io::JobHeader& header);
-  // Takes in what a setup dialog wrote and makes it one undoable step.
-  void pushSetupChange(const QString& text, const QString& dir, const struct SetupSnapshot& before,
-                       const struct SetupSnapshot& after);
+  // A setup dialog's result as one undo command on the document's stack (none when nothing changed).
+  void pushSetupEdit(const QString& text, const SetupEdit& after);
+  // What the command does and undoes: the in-memory setup, and every reader of it told.
+  void applySetupEdit(const SetupEdit& edit);
+  // File > Save's part for the setup: the edited files, the stations set for `programPath`.
+  bool saveSetup(const QString& programPath);
+  // The edits are dropped (a new or another program after Discard): the setup as on disk.
+  void revertSetup();
   // The open file's folder (subprogram files come from there); empty when untitled.
   QString programFolder() const;
   // Hand the editor's current text to the run controller (before a run).
@@ -226,8 +236,8 @@ class MainWindow : public QMainWindow {
   QPointer<PartDesignerDialog> designer_;
   QPointer<HelpContents> help_;
   CheckController* checker_ = nullptr;
-  QUndoStack* setupUndo_ = nullptr;        // job details, tools, offsets of this document
-  std::function<void()> updateSetupUndo_;  // enables and names Undo/Redo Setup Change
+  class QUndoGroup* undoGroup_ = nullptr;  // Edit > Undo / Redo follow the active document's stack
+  std::function<void()> updateUndo_;       // enables and names Edit > Undo / Redo
 
   RunSpeedControl* speedControl_ = nullptr;
 

@@ -5,11 +5,13 @@
 #include <QAction>
 #include <QDir>
 #include <QMenu>
+#include <QRegularExpression>
 #include <QStatusBar>
 #include <QToolBar>
 #include <QTextDocument>
 #include <QTimer>
 #include <QTreeWidget>
+#include <QUndoGroup>
 #include <QUndoStack>
 #include <QVBoxLayout>
 
@@ -114,37 +116,42 @@ void MainWindow::createActions() {
   on("actionPartDesigner", [this] { showPartDesigner(); });
   on("actionExit", [this] { close(); });
 
-  // Edit: the editor's own commands; the editor enables them.
-  on("actionUndo", [this] { editor_->undo(); });
-  on("actionRedo", [this] { editor_->redo(); });
+  // Edit: one Undo / Redo for the document's edits, text and setup alike (issue 30 item 2):
+  // the group follows the active document's stack; the rest are the editor's own commands.
+  on("actionUndo", [this] { undoGroup_->undo(); });
+  on("actionRedo", [this] { undoGroup_->redo(); });
   on("actionCut", [this] { editor_->cut(); });
   on("actionCopy", [this] { editor_->copy(); });
   on("actionPaste", [this] { editor_->paste(); });
   on("actionDelete", [this] { editor_->textCursor().removeSelectedText(); });
   on("actionSelectAll", [this] { editor_->selectAll(); });
-  for (const char* n : {"actionUndo", "actionRedo", "actionCut", "actionCopy", "actionDelete"})
-    action(QString::fromLatin1(n))->setEnabled(false);
-  connect(editor_, &QPlainTextEdit::undoAvailable, action(QStringLiteral("actionUndo")), &QAction::setEnabled);
-  connect(editor_, &QPlainTextEdit::redoAvailable, action(QStringLiteral("actionRedo")), &QAction::setEnabled);
+  for (const char* n : {"actionCut", "actionCopy", "actionDelete"}) action(QString::fromLatin1(n))->setEnabled(false);
   for (const char* n : {"actionCut", "actionCopy", "actionDelete"})
     connect(editor_, &QPlainTextEdit::copyAvailable, action(QString::fromLatin1(n)), &QAction::setEnabled);
-  // Job details, tools and offsets: the document's own undo stack.
-  QAction* undoSetup = action(QStringLiteral("actionUndoSetup"));
-  QAction* redoSetup = action(QStringLiteral("actionRedoSetup"));
-  on("actionUndoSetup", [this] { setupUndo_->undo(); });
-  on("actionRedoSetup", [this] { setupUndo_->redo(); });
-  updateSetupUndo_ = [this, undoSetup, redoSetup] {
-    const bool idle = !runner_ || runner_->state() == RunState::Idle || runner_->state() == RunState::Paused ||
-                      runner_->state() == RunState::Finished || runner_->state() == RunState::Alarm;
-    undoSetup->setEnabled(idle && setupUndo_->canUndo());
-    redoSetup->setEnabled(idle && setupUndo_->canRedo());
-    // The step it would undo, in the tip: "Undo Setup Change: Tool Select".
-    undoSetup->setStatusTip(setupUndo_->canUndo() ? tr("Undo: %1").arg(setupUndo_->undoText()) : QString());
-    redoSetup->setStatusTip(setupUndo_->canRedo() ? tr("Redo: %1").arg(setupUndo_->redoText()) : QString());
+  QAction* undo = action(QStringLiteral("actionUndo"));
+  QAction* redo = action(QStringLiteral("actionRedo"));
+  editor_->setUndoActions(undo, redo);  // its keys and context menu go through the stack too
+  updateUndo_ = [this, undo, redo] {
+    // Not while a run animates the text it was given (the editor is read-only then too).
+    const bool idle = !runner_ || ActionTable::enabledIn(EnabledWhen::NotRunning, runner_->state());
+    undo->setEnabled(idle && undoGroup_->canUndo());
+    redo->setEnabled(idle && undoGroup_->canRedo());
+    // The step it would undo, named: "Undo Tool Select", "Redo Typing".
+    undo->setText(undoGroup_->canUndo() ? tr("&Undo %1").arg(undoGroup_->undoText()) : tr("&Undo"));
+    redo->setText(undoGroup_->canRedo() ? tr("&Redo %1").arg(undoGroup_->redoText()) : tr("&Redo"));
+    // The tip without the mnemonic, the Thai "(U)" form included: "Undo Typing".
+    static const QRegularExpression mnemonic(QStringLiteral(R"(\s*\(&.\)|&)"));
+    undo->setStatusTip(undo->text().remove(mnemonic));
+    redo->setStatusTip(redo->text().remove(mnemonic));
+    for (QAction* a : {undo, redo})
+      a->setToolTip(QStringLiteral("%1 (%2)").arg(a->statusTip(), a->shortcut().toString(QKeySequence::NativeText)));
   };
-  connect(setupUndo_, &QUndoStack::indexChanged, this, [this] { updateSetupUndo_(); });
-  connect(runner_, &RunController::stateChanged, this, [this] { updateSetupUndo_(); });
-  updateSetupUndo_();
+  connect(undoGroup_, &QUndoGroup::indexChanged, this, [this] { updateUndo_(); });
+  connect(undoGroup_, &QUndoGroup::activeStackChanged, this, [this] { updateUndo_(); });
+  connect(undoGroup_, &QUndoGroup::canUndoChanged, this, [this] { updateUndo_(); });
+  connect(undoGroup_, &QUndoGroup::canRedoChanged, this, [this] { updateUndo_(); });
+  connect(runner_, &RunController::stateChanged, this, [this] { updateUndo_(); });
+  updateUndo_();
   on("actionFind", [this] { showFind(); });
   on("actionReplace", [this] { showFind(); });
   on("actionGoToLine", [this] { goToLine(); });
@@ -307,7 +314,8 @@ void MainWindow::createDocks() {
   addDockWidget(Qt::RightDockWidgetArea, operatorPanel_);
   operatorPanel_->hide();
   connect(operatorPanel_, &OperatorPanel::offsetsChanged, this, [this](const core::io::OffsetTable& offsets) {
-    // The run takes them at once; the next check's Job holds them too.
+    // The control's offset rows, for the run only: not offset.cfg (power on starts from the
+    // setup's again), so no edit to undo or save. The run takes them at once; the next check's Job too.
     core::machine::MachineSetup run = jobDoc_.tools().setup;
     run.offsets = offsets;
     jobDoc_.setOffsets(offsets);
@@ -366,7 +374,7 @@ void MainWindow::updateMachineMenu() {
 void MainWindow::retranslateUi() {
   actions_->retranslate();
   updateMachineMenu();
-  updateSetupUndo_();  // its tips name the step in the new language
+  updateUndo_();  // Undo / Redo name the step in the new language
   updateTitle();
   updateStockLabel();
   // The banner says what it said, in the new language.

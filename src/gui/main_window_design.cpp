@@ -1,4 +1,4 @@
-// Job details as the dialog's OK sets them (undoable), and File > Part
+// Job details as the dialog's OK sets them (an undo command), and File > Part
 // designer... (issue 14): the designer dialog wired to the window —
 // the bar and material from Job details (and back, when a part file brings its
 // own bar), the generated program into the editor as a new file.
@@ -11,18 +11,18 @@
 namespace klueng::gui {
 
 void MainWindow::setJobDetails(const core::io::JobHeader& header) {
-  const Document::HeaderState before = document_->headerState();
-  applyJobDetails(header);
-  setupUndo_->push(new JobDetailsCommand(before, document_->headerState(), [this](const Document::HeaderState& state) {
-    document_->restoreHeader(state);
-    if (!document_->isPlainGcode())
-      settings_->setLastJobHeader(state.header);
-    else if (!document_->isUntitled() && state.header.stockSource == core::io::StockSource::JobDetails)
-      settings_->setJobDetailsFor(document_->filePath(), state.header);
-    else if (!document_->isUntitled())
-      settings_->removeJobDetailsFor(document_->filePath());
-    checkNow();
-  }));
+  // The command is the edit: its first redo sets the header (issue 30 item 2).
+  jobDoc_.undoStack()->push(new JobDetailsCommand(
+      document_->headerState(), document_->headerStateFor(header), [this](const Document::HeaderState& state) {
+        document_->restoreHeader(state);
+        if (!document_->isPlainGcode())
+          settings_->setLastJobHeader(state.header);
+        else if (!document_->isUntitled() && state.header.stockSource == core::io::StockSource::JobDetails)
+          settings_->setJobDetailsFor(document_->filePath(), state.header);
+        else if (!document_->isUntitled())
+          settings_->removeJobDetailsFor(document_->filePath());
+        checkNow();
+      }));
 }
 
 void MainWindow::showPartDesigner() {

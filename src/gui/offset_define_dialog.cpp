@@ -36,8 +36,20 @@ QString formatValue(double v) {
 }
 }  // namespace
 
-OffsetDefineDialog::OffsetDefineDialog(const QString& configDir, QWidget* parent)
-    : QDialog(parent), configDir_(configDir), savedDir_(configDir) {
+OffsetDefineDialog::OffsetDefineDialog(const QString& configDir, QWidget* parent) : QDialog(parent) {
+  const auto read = io::readOffsetTable(configDir.toStdString() + "/offset.cfg");
+  build(read.value.value_or(io::OffsetTable{}));
+  QStringList loadProblems;
+  for (const auto& d : read.diagnostics)
+    loadProblems << QString::fromStdString(core::formatMessage(d, Language::coreLang(), core::Surface::Gui));
+  if (!loadProblems.isEmpty()) intro_->setToolTip(loadProblems.join(QLatin1Char('\n')));
+}
+
+OffsetDefineDialog::OffsetDefineDialog(const io::OffsetTable& offsets, QWidget* parent) : QDialog(parent) {
+  build(offsets);
+}
+
+void OffsetDefineDialog::build(const io::OffsetTable& table) {
   intro_ = new QLabel(this);
   intro_->setWordWrap(true);
   table_ = new QTableWidget(io::kOffsetCount, ColumnCount, this);
@@ -54,8 +66,6 @@ OffsetDefineDialog::OffsetDefineDialog(const QString& configDir, QWidget* parent
   layout->addWidget(status_);
   layout->addWidget(buttons_);
 
-  const auto read = io::readOffsetTable(configDir.toStdString() + "/offset.cfg");
-  const io::OffsetTable table = read.value.value_or(io::OffsetTable{});
   filling_ = true;
   for (int row = 0; row < io::kOffsetCount; ++row) {
     const io::Offset& o = table.offsets[static_cast<std::size_t>(row)];
@@ -69,10 +79,6 @@ OffsetDefineDialog::OffsetDefineDialog(const QString& configDir, QWidget* parent
     for (int c = ColX; c <= ColT; ++c) table_->item(row, c)->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
   }
   filling_ = false;
-  QStringList loadProblems;
-  for (const auto& d : read.diagnostics)
-    loadProblems << QString::fromStdString(core::formatMessage(d, Language::coreLang(), core::Surface::Gui));
-  if (!loadProblems.isEmpty()) intro_->setToolTip(loadProblems.join(QLatin1Char('\n')));
 
   connect(table_, &QTableWidget::itemChanged, this, [this] {
     if (!filling_) validate();
@@ -167,15 +173,8 @@ void OffsetDefineDialog::accept() {
                              core::formatMessage(check.diagnostics.front(), Language::coreLang(), core::Surface::Gui)));
     return;
   }
-  QString error;
-  const QString target = writableConfigDir(configDir_, &error);
-  // Checked and atomic (issue 29); the reason in the UI language.
-  const QString writeError = target.isEmpty() ? error : writeFileChecked(target + QStringLiteral("/offset.cfg"), text);
-  if (!writeError.isEmpty()) {
-    QMessageBox::warning(this, windowTitle(), tr("Cannot save the offset table: %1").arg(writeError));
-    return;
-  }
-  savedDir_ = target;
+  // Nothing is written here (issue 30 item 2): the window makes the table an undo step on
+  // the setup it holds, and File ▸ Save writes offset.cfg.
   QDialog::accept();
 }
 

@@ -3,9 +3,10 @@
 // type, each row's tip number shown as a small picture.
 //
 // Public API
+//   OffsetDefineDialog dlg(offsets, parent);     the table the document holds
 //   OffsetDefineDialog dlg(configDir, parent);   reads configDir/offset.cfg
-//   dlg.exec() == Accepted -> offset.cfg written (to savedConfigDir(): configDir, or the
-//                             per-user copy when configDir is read-only)
+//   dlg.exec() == Accepted -> offsetTable() is the edited table, every cell valid; the
+//                             dialog writes no file (issue 30 item 2: File > Save does)
 //   offsetTable()           the edited table
 //   setCell(row, column, text) / cellText(row, column)   row 0..15, column 0..3 = X Z R T
 //   isValid()               every cell valid (OK is disabled otherwise)
@@ -25,9 +26,9 @@ class OffsetDefineDialog : public QDialog {
   Q_OBJECT
  public:
   explicit OffsetDefineDialog(const QString& configDir, QWidget* parent = nullptr);
+  explicit OffsetDefineDialog(const core::io::OffsetTable& offsets, QWidget* parent = nullptr);
 
   core::io::OffsetTable offsetTable() const;
-  QString savedConfigDir() const { return savedDir_; }
   void setCell(int row, int column, const QString& text);
   QString cellText(int row, int column) const;
   bool isValid() const;
@@ -40,12 +41,11 @@ class OffsetDefineDialog : public QDialog {
   void changeEvent(QEvent* event) override;
 
  private:
+  void build(const core::io::OffsetTable& table);
   void retranslate();
   void validate();
   QString cellError(int row, int column) const;
 
-  QString configDir_;
-  QString savedDir_;
   QTableWidget* table_ = nullptr;
   QLabel* status_ = nullptr;
   QLabel* intro_ = nullptr;

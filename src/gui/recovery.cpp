@@ -239,7 +239,7 @@ Recovery::Recovery(QString folder) : folder_(std::move(folder)) {
 QString Recovery::newId() { return QUuid::createUuid().toString(QUuid::WithoutBraces); }
 
 bool Recovery::write(const QString& id, const std::string& contents, const QString& originalPath,
-                     const QString& displayName, QString* error) const {
+                     const QString& displayName, QString* error, const RecoverySetup& setup) const {
   std::error_code made;
   std::filesystem::create_directories(std::filesystem::path(QFile::encodeName(folder_).toStdString()), made);
   if (made || !QFileInfo(folder_).isDir()) {
@@ -262,6 +262,13 @@ bool Recovery::write(const QString& id, const std::string& contents, const QStri
   note.setValue(QStringLiteral("name"), displayName);
   note.setValue(QStringLiteral("written"), QDateTime::currentDateTime());
   note.setValue(QStringLiteral("pid"), static_cast<qint64>(::getpid()));
+  note.remove(QStringLiteral("setup"));
+  if (setup.present) {
+    note.setValue(QStringLiteral("setup/dir"), setup.dir);
+    note.setValue(QStringLiteral("setup/tools"), setup.tools);
+    note.setValue(QStringLiteral("setup/offsets"), setup.offsets);
+    note.setValue(QStringLiteral("setup/overrides"), setup.overrides);
+  }
   note.sync();
   if (note.status() != QSettings::NoError) {
     if (error)
@@ -290,6 +297,11 @@ QVector<RecoveryCopy> Recovery::orphans() const {
     c.displayName = note.value(QStringLiteral("name")).toString();
     c.written = note.value(QStringLiteral("written")).toDateTime();
     c.pid = note.value(QStringLiteral("pid")).toLongLong();
+    c.setup.present = note.contains(QStringLiteral("setup/tools"));
+    c.setup.dir = note.value(QStringLiteral("setup/dir")).toString();
+    c.setup.tools = note.value(QStringLiteral("setup/tools")).toByteArray();
+    c.setup.offsets = note.value(QStringLiteral("setup/offsets")).toByteArray();
+    c.setup.overrides = note.value(QStringLiteral("setup/overrides")).toStringList();
     const LockState lock = lockState(lockOf(folder_, c.id));
     if (lock == LockState::Held) continue;                              // a running Klueng's live copy
     if (lock == LockState::Missing && processRunning(c.pid)) continue;  // an older copy: its process id

@@ -12,6 +12,7 @@
 // so neither a dead editor's zombie nor a process id reused after a reboot
 // hides a copy. Copies written before the lock (no .lock file) fall back to the
 // process id, a zombie counting as gone.
+#include <QByteArray>
 #include <QDateTime>
 #include <QString>
 #include <QStringList>
@@ -20,6 +21,15 @@
 
 namespace klueng::gui {
 
+// The unsaved setup edits of the window (issue 30 item 2): tools.cfg and offset.cfg as
+// held in memory and the stations set for the program, so a crash loses none of them.
+struct RecoverySetup {
+  bool present = false;
+  QString dir;                // the setup folder they belong to
+  QByteArray tools, offsets;  // the files' text as Save would write it
+  QStringList overrides;      // "3=cnmg-80-r04"
+};
+
 struct RecoveryCopy {
   QString id;            // the window session that wrote it
   QString copyPath;      // the recovered program (as Save would write it)
@@ -27,6 +37,7 @@ struct RecoveryCopy {
   QString displayName;   // "01-step-shaft.txt", "untitled.txt"
   QDateTime written;
   qint64 pid = 0;  // the Klueng process that wrote it
+  RecoverySetup setup;
 };
 
 // One run of lines that differ between the file on disk and the copy (a line
@@ -64,7 +75,7 @@ class Recovery {
   // Writes (atomically) the copy of window `id`, holding its lock from the first
   // write on; false with `error` (what failed and why, in the UI language) on failure.
   bool write(const QString& id, const std::string& contents, const QString& originalPath, const QString& displayName,
-             QString* error = nullptr) const;
+             QString* error = nullptr, const RecoverySetup& setup = {}) const;
   // Removes the copy, its note and its lock (this window's or a dead one's).
   void remove(const QString& id) const;
   // Copies whose Klueng is not running any more, newest first.

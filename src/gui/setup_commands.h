@@ -1,22 +1,23 @@
 #pragma once
-// Undo for what is not the program's text (issue 12): Job details and the tool
-// and offset tables. One QUndoStack per document (the window clears it with
-// each new or opened file); the editor keeps its own text undo.
+// The edits of a document as undo commands (issue 30 item 2, as Tiled does it):
+// the command IS the edit. Each changes what the document holds in memory —
+// its first redo() applies it, undo() puts back what was there — and nothing
+// is written to disk until File ▸ Save. One stack per document
+// (JobDocument::undoStack()); the window's QUndoGroup gives Edit ▸ Undo / Redo.
 //
 //   JobDetailsCommand  the document's header (and where a plain file's stock came from)
-//   SetupFilesCommand  tools.cfg / offset.cfg as the dialogs wrote them, and the
-//                      program's own station choices (Tool Select)
-// A command is pushed after its change is made: its first redo does nothing.
-#include <QByteArray>
+//   SetupCommand       tools.cfg / offset.cfg as held in memory, and the program's
+//                      own station choices (Tool Select, Offset Define, touch-off)
+//   TextEditCommand    one undo step of the editor's QTextDocument, so that text
+//                      and setup edits share one history in the order they were made
+#include <QPointer>
 #include <QString>
+#include <QPlainTextEdit>
 #include <QUndoCommand>
 #include <functional>
-#include <map>
-#include <optional>
-#include <vector>
 
 #include "gui/document.h"
-#include "klueng/core/machine/tool_inference.h"
+#include "gui/job_document.h"
 
 namespace klueng::gui {
 
@@ -30,33 +31,30 @@ class JobDetailsCommand : public QUndoCommand {
  private:
   Document::HeaderState before_, after_;
   Apply apply_;
-  bool done_ = true;  // the dialog already applied it
 };
 
-// The files of a setup folder the dialogs write, and the program's station choices.
-struct SetupSnapshot {
-  std::map<QString, std::optional<QByteArray>> files;  // name -> contents (nullopt: no such file)
-  std::vector<core::machine::StationOverride> overrides;
-  bool operator==(const SetupSnapshot& o) const;
-  // tools.cfg and offset.cfg of `dir`.
-  static SetupSnapshot read(const QString& dir, std::vector<core::machine::StationOverride> overrides);
-};
-
-class SetupFilesCommand : public QUndoCommand {
+class SetupCommand : public QUndoCommand {
  public:
-  // Reloads the setup from `dir` with these station choices; `error` is empty when the files were written.
-  using Reload = std::function<void(const QString& dir, const std::vector<core::machine::StationOverride>& overrides,
-                                    const QString& error)>;
-  SetupFilesCommand(const QString& text, QString dir, SetupSnapshot before, SetupSnapshot after, Reload reload);
+  using Apply = std::function<void(const SetupEdit&)>;
+  SetupCommand(const QString& text, SetupEdit before, SetupEdit after, Apply apply);
   void undo() override;
   void redo() override;
 
  private:
-  void restore(const SetupSnapshot& snapshot);
+  SetupEdit before_, after_;
+  Apply apply_;
+};
 
-  QString dir_;
-  SetupSnapshot before_, after_;
-  Reload reload_;
+// Pushed when the QTextDocument adds an undo step (QTextDocument::undoCommandAdded):
+// the edit is already in the text, so the first redo does nothing.
+class TextEditCommand : public QUndoCommand {
+ public:
+  explicit TextEditCommand(QPlainTextEdit* editor);
+  void undo() override;
+  void redo() override;
+
+ private:
+  QPointer<QPlainTextEdit> editor_;  // its undo() shows where the text changed
   bool done_ = true;
 };
 

@@ -13,13 +13,11 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMessageBox>
-#include <QTemporaryFile>
 #include <QPainter>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QVBoxLayout>
 
-#include "gui/file_save.h"
 #include "gui/language.h"
 #include "klueng/core/diagnostic_codes.h"
 #include "klueng/core/io/program_file.h"
@@ -30,29 +28,6 @@
 namespace klueng::gui {
 
 namespace io = core::io;
-
-// Tried, not asked: access() (behind QFileInfo::isWritable) answers for the real user, and
-// root or a read-only mount would be told "writable" where the save then fails.
-static bool canWriteIn(const QString& dir) {
-  QTemporaryFile probe(QDir(dir).filePath(QStringLiteral(".klueng-write-test-XXXXXX")));
-  return probe.open();
-}
-
-static bool canWriteFile(const QString& path) {
-  QFile f(path);
-  return !f.exists() || f.open(QIODevice::ReadWrite | QIODevice::Append);
-}
-
-QString writableConfigDir(const QString& dir, QString* error) {
-  bool writable = QFileInfo(dir).isDir() && canWriteIn(dir);
-  for (const char* name : {"tools.cfg", "offset.cfg"})
-    if (writable && !canWriteFile(QDir(dir).filePath(QString::fromLatin1(name)))) writable = false;
-  if (writable) return dir;
-  std::string err;
-  const std::string user = io::ensureUserConfigDir(&err);
-  if (user.empty() && error) *error = QString::fromStdString(err);
-  return QString::fromStdString(user);
-}
 
 // The bitmap with the tool's controlled point, scaled to fit, on a 1 mm grid.
 class ToolPreview : public QWidget {
@@ -119,17 +94,28 @@ class ToolPreview : public QWidget {
   QString message_;
 };
 
-ToolSelectDialog::ToolSelectDialog(const QString& configDir, QWidget* parent)
-    : QDialog(parent), configDir_(configDir), savedDir_(configDir) {
+ToolSelectDialog::ToolSelectDialog(const QString& configDir, QWidget* parent) : QDialog(parent), configDir_(configDir) {
   const std::string dir = configDir.toStdString();
   auto tools = io::readToolTable(dir + "/tools.cfg");
-  tools_ = tools.value.value_or(io::ToolTable{});
-  tools_.folder = dir;
-  loaded_ = tools_;
   auto offsets = io::readOffsetTable(dir + "/offset.cfg");
-  offsets_ = offsets.value.value_or(io::OffsetTable{});
   for (auto& d : tools.diagnostics) loadDiagnostics_.push_back(d);
   for (auto& d : offsets.diagnostics) loadDiagnostics_.push_back(d);
+  io::ToolTable table = tools.value.value_or(io::ToolTable{});
+  table.folder = dir;
+  build(table, offsets.value.value_or(io::OffsetTable{}));
+}
+
+ToolSelectDialog::ToolSelectDialog(const io::ToolTable& tools, const io::OffsetTable& offsets, const QString& configDir,
+                                   QWidget* parent)
+    : QDialog(parent), configDir_(configDir) {
+  build(tools, offsets);
+}
+
+void ToolSelectDialog::build(const io::ToolTable& tools, const io::OffsetTable& offsets) {
+  tools_ = tools;
+  if (tools_.folder.empty()) tools_.folder = configDir_.toStdString();
+  loaded_ = tools_;
+  offsets_ = offsets;
 
   list_ = new QListWidget(this);
   list_->setMinimumWidth(300);
@@ -463,47 +449,23 @@ void ToolSelectDialog::accept() {
     QMessageBox::warning(this, windowTitle(), problems.join(QLatin1Char('\n')));
     return;
   }
-  // Nothing of tools.cfg changed (only stations for this program, or nothing): the file
-  // stays as it is, byte for byte, and is not copied anywhere.
-  if (tools_.bitmap == loaded_.bitmap) {
-    savedDir_ = configDir_;
-    QDialog::accept();
-    return;
-  }
-  QString error;
-  const QString target = writableConfigDir(configDir_, &error);
-  if (target.isEmpty()) {
-    QMessageBox::warning(this, windowTitle(), tr("Cannot save the tool table: %1").arg(error));
-    return;
-  }
-  io::ToolTable out = tools_;
-  if (QDir(target) != QDir(configDir_)) {
-    // A per-user copy: names relative to the old folder must still find their bitmaps.
-    for (auto& name : out.bitmap) {
-      const QString q = QString::fromStdString(name);
-      if (q.isEmpty() || q.startsWith(QLatin1String(io::kLibraryPrefix.data())) || QFileInfo(q).isAbsolute() ||
-          QFileInfo::exists(QDir(target).filePath(q)))
-        continue;
-      name = QFileInfo(resolve(q)).absoluteFilePath().toStdString();
+  // Nothing is written here (issue 30 item 2): the window makes the edited table an undo
+  // step on the setup it holds, and File ▸ Save writes tools.cfg. A table the loader would
+  // refuse is never accepted.
+  if (toolsChanged()) {
+    const auto check = io::parseToolTable(io::formatToolTable(tools_), tools_.folder, "tools.cfg", stationCount());
+    if (!check.ok()) {
+      QMessageBox::warning(
+          this, windowTitle(),
+          QString::fromStdString(core::formatMessage(check.diagnostics.front(), Language::coreLang())));
+      return;
     }
   }
-  out.folder = target.toStdString();
-  const std::string text = io::formatToolTable(out);
-  const auto check = io::parseToolTable(text, out.folder, "tools.cfg", stationCount());
-  if (!check.ok()) {
-    QMessageBox::warning(this, windowTitle(),
-                         QString::fromStdString(core::formatMessage(check.diagnostics.front(), Language::coreLang())));
-    return;
-  }
-  // Checked and atomic (issue 29); the reason in the UI language.
-  if (const QString writeError = writeFileChecked(target + QStringLiteral("/tools.cfg"), text); !writeError.isEmpty()) {
-    QMessageBox::warning(this, windowTitle(), tr("Cannot save the tool table: %1").arg(writeError));
-    return;
-  }
-  tools_ = out;
-  savedDir_ = target;
+  tools_.bitmapUnreadable.fill(false);  // every named bitmap was read just now
   QDialog::accept();
 }
+
+bool ToolSelectDialog::toolsChanged() const { return tools_.bitmap != loaded_.bitmap; }
 
 void ToolSelectDialog::retranslate() {
   setWindowTitle(tr("Tool Select"));

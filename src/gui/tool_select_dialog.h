@@ -6,13 +6,14 @@
 // are marked with their reason; a station can be set for this program only.
 //
 // Public API
-//   ToolSelectDialog dlg(configDir, parent);   reads configDir/tools.cfg and offset.cfg
-//   dlg.exec() == Accepted  -> the dialog has written tools.cfg (see savedConfigDir()) if one
-//                          of its lines changed; stations set "only for this program" never
-//                          touch it (they are jobOverrides())
-//   toolTable()            the edited table (names as written, folder = savedConfigDir())
-//   savedConfigDir()       where tools.cfg went: configDir, or the per-user copy
-//                          (userConfigDir()) when configDir is read-only
+//   ToolSelectDialog dlg(tools, offsets, configDir, parent)   the tables the document holds
+//   ToolSelectDialog dlg(configDir, parent)   reads configDir/tools.cfg and offset.cfg
+//   dlg.exec() == Accepted  -> toolTable() is the edited table, checked; the dialog writes
+//                          no file (issue 30 item 2: the window makes it an undo step and
+//                          File > Save writes tools.cfg). Stations set "only for this
+//                          program" never change the table (they are jobOverrides())
+//   toolTable()            the edited table (names as written, folder = configDir)
+//   toolsChanged()         a line of the table differs from the one given
 //   setCurrentTool(n) / currentTool()   1..stations
 //   stationCount()         list rows (the turret)
 //   setProgramTools(inference, overrides)  the program's choices and this file's overrides
@@ -22,9 +23,6 @@
 //   setBitmapName(tool, name)           as if typed (tests)
 //   previewSprite()        the sprite shown (tests)
 //   loadDiagnostics()      problems found reading the files (shown in the dialog)
-// Helpers shared by the dialogs:
-//   writableConfigDir(dir, &error)   dir when tools.cfg/offset.cfg there can be written,
-//                          else the per-user copy (core::io::ensureUserConfigDir())
 #include <QDialog>
 #include <array>
 #include <optional>
@@ -48,17 +46,17 @@ class QPlainTextEdit;
 
 namespace klueng::gui {
 
-QString writableConfigDir(const QString& dir, QString* error);
-
 class ToolPreview;
 
 class ToolSelectDialog : public QDialog {
   Q_OBJECT
  public:
   explicit ToolSelectDialog(const QString& configDir, QWidget* parent = nullptr);
+  ToolSelectDialog(const core::io::ToolTable& tools, const core::io::OffsetTable& offsets, const QString& configDir,
+                   QWidget* parent = nullptr);
 
   core::io::ToolTable toolTable() const;
-  QString savedConfigDir() const { return savedDir_; }
+  bool toolsChanged() const;
   int currentTool() const;
   void setCurrentTool(int tool);
   void setBitmapName(int tool, const QString& name);
@@ -78,6 +76,7 @@ class ToolSelectDialog : public QDialog {
   void changeEvent(QEvent* event) override;
 
  private:
+  void build(const core::io::ToolTable& tools, const core::io::OffsetTable& offsets);
   void retranslate();
   void updatePreview();
   void browse();
@@ -93,9 +92,8 @@ class ToolSelectDialog : public QDialog {
   void syncControls();
 
   QString configDir_;
-  QString savedDir_;
   core::io::ToolTable tools_;
-  core::io::ToolTable loaded_;  // tools.cfg as read: OK writes it only when a line changed
+  core::io::ToolTable loaded_;  // the table as given: toolsChanged() compares with it
   // A station's tools.cfg line from before a library tool was chosen into it, so ticking
   // "only for this program" afterwards gives tools.cfg its own line back.
   struct StationLine {

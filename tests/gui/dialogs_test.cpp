@@ -14,6 +14,7 @@
 #include "gui_test_runner.h"
 #include "gui/job_details_dialog.h"
 #include "gui/offset_define_dialog.h"
+#include "gui/setup_save.h"
 #include "gui/tool_select_dialog.h"
 #include "klueng/core/io/tool_config.h"
 
@@ -71,10 +72,14 @@ class DialogsTest : public QObject {
 
     d.setBitmapName(3, QStringLiteral("resources/tools/05-boring-bar.bmp"));
     d.setBitmapName(8, QString());
+    const QByteArray original = readAll(dir.filePath(QStringLiteral("tools.cfg")));
     d.accept();
     QCOMPARE(d.result(), int(QDialog::Accepted));
-    QCOMPARE(d.savedConfigDir(), dir.path());
-    const auto after = core::io::readToolTable(dir.filePath(QStringLiteral("tools.cfg")).toStdString());
+    // The edited table, as File > Save will write it; the dialog itself writes nothing (issue 30 item 2).
+    QVERIFY(d.toolsChanged());
+    QCOMPARE(readAll(dir.filePath(QStringLiteral("tools.cfg"))), original);
+    const auto after =
+        core::io::parseToolTable(core::io::formatToolTable(d.toolTable()), dir.path().toStdString(), "tools.cfg");
     QVERIFY(after.value.has_value());
     QCOMPARE(after.value->bitmap[2], std::string("resources/tools/05-boring-bar.bmp"));
     QCOMPARE(after.value->bitmap[7], std::string());
@@ -97,13 +102,16 @@ class DialogsTest : public QObject {
     QCOMPARE(readAll(dir.filePath(QStringLiteral("tools.cfg"))), original);
   }
 
-  void toolSelectWritesAPerUserCopyWhenTheFolderIsReadOnly() {
+  // Saving a setup edited in a read-only folder asks (issue 29 item 2 for programs, issue 30
+  // item 2): Cancel writes nothing; "Save to My Setup Folder" writes the per-user copy.
+  void savingAReadOnlySetupAsksForTheUsersOwnFolder() {
     // A shared folder the user may read but not write (/usr/share/klueng). Root may write
-    // anything, so as root the dialog runs as the user "nobody" (seteuid) against a folder
+    // anything, so as root the save runs as the user "nobody" (seteuid) against a folder
     // that nobody may write: the same test as root and as a normal user, never skipped.
     QTemporaryDir dir;
     QTemporaryDir home;
     QVERIFY(makeConfigCopy(dir.path()));
+    const QByteArray originalTools = readAll(dir.filePath(QStringLiteral("tools.cfg")));
     const QFileDevice::Permissions readable = QFileDevice::ReadOwner | QFileDevice::ReadGroup | QFileDevice::ReadOther;
     QFile(dir.filePath(QStringLiteral("tools.cfg"))).setPermissions(readable);
     QFile(dir.filePath(QStringLiteral("offset.cfg"))).setPermissions(readable);
@@ -121,33 +129,43 @@ class DialogsTest : public QObject {
     qputenv("XDG_DATA_HOME", home.path().toUtf8());
     const bool root = ::geteuid() == 0;
     if (root) QCOMPARE(::seteuid(65534), 0);
-    QString savedDir;
-    bool accepted = false;
-    QString modalText;  // a message box would block the test: record and close it
-    QTimer closer;
-    QObject::connect(&closer, &QTimer::timeout, [&] {
-      if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
-        modalText = box->text();
-        box->reject();
-      }
-    });
-    closer.start(50);
-    {
-      ToolSelectDialog d(dir.path());
-      d.setBitmapName(4, QStringLiteral("resources/tools/01-outside-turning.bmp"));
-      d.accept();
-      accepted = d.result() == QDialog::Accepted;
-      savedDir = d.savedConfigDir();
-    }
+    core::io::ToolTable tools = *core::io::readToolTable(dir.filePath(QStringLiteral("tools.cfg")).toStdString()).value;
+    tools.folder = dir.path().toStdString();
+    tools.bitmap[3] = "resources/tools/01-outside-turning.bmp";
+    const core::io::OffsetTable offsets =
+        *core::io::readOffsetTable(dir.filePath(QStringLiteral("offset.cfg")).toStdString()).value;
+    SetupToSave what{dir.path(), &tools, &offsets, true, false};
+    QStringList asked;  // the box's text, each time; the button named is pressed
+    const auto answer = [&asked](const char* button) {
+      QTimer::singleShot(0, [&asked, button] {
+        QVERIFY(QTest::qWaitFor([] { return qobject_cast<QMessageBox*>(QApplication::activeModalWidget()); }, 5000));
+        auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        asked << box->objectName() + QLatin1Char(':') + box->text();
+        box->findChild<QPushButton*>(QString::fromLatin1(button))->click();
+      });
+    };
+    const bool writable = setupFolderWritable(dir.path());
+    answer("cancelButton");
+    const QString cancelled = saveSetupFiles(nullptr, what);
+    answer("ownFolderButton");
+    const QString savedDir = saveSetupFiles(nullptr, what);
     if (root) QCOMPARE(::seteuid(0), 0);
     qputenv("XDG_DATA_HOME", oldHome);
-    QVERIFY2(modalText.isEmpty(), qPrintable(modalText));
-    QVERIFY(accepted);
-    QVERIFY(savedDir != dir.path());
+    QVERIFY(!writable);
+    QVERIFY(cancelled.isEmpty());
+    QCOMPARE(asked.size(), 2);
+    QCOMPARE(asked[0],
+             QStringLiteral("readOnlySetupBox:The setup in \"%1\" is read-only, so Klueng will not write over it.")
+                 .arg(dir.path()));
+    QCOMPARE(readAll(dir.filePath(QStringLiteral("tools.cfg"))), originalTools);
     QVERIFY2(savedDir.startsWith(home.path()), qPrintable(savedDir));
     const auto saved = core::io::readToolTable(savedDir.toStdString() + "/tools.cfg");
     QVERIFY(saved.ok());
-    QCOMPARE(QString::fromStdString(saved.value->bitmap[3]), QStringLiteral("resources/tools/01-outside-turning.bmp"));
+    // Relative names still find their bitmaps from the new folder.
+    QVERIFY(QFileInfo::exists(QString::fromStdString(saved.value->bitmapPath(4))));
+    QVERIFY(QString::fromStdString(saved.value->bitmap[3])
+                .endsWith(QStringLiteral("resources/tools/01-outside-turning.bmp")));
+    QVERIFY(core::io::readOffsetTable(savedDir.toStdString() + "/offset.cfg").ok());
   }
 
   void offsetDefineRoundTripsOffsetCfg() {
@@ -162,9 +180,11 @@ class DialogsTest : public QObject {
     d.setCell(3, 2, QStringLiteral("0.4"));
     d.setCell(3, 3, QStringLiteral("2"));
     QVERIFY(d.isValid());
+    const QByteArray original = readAll(dir.filePath(QStringLiteral("offset.cfg")));
     d.accept();
     QCOMPARE(d.result(), int(QDialog::Accepted));
-    const auto after = core::io::readOffsetTable(dir.filePath(QStringLiteral("offset.cfg")).toStdString());
+    QCOMPARE(readAll(dir.filePath(QStringLiteral("offset.cfg"))), original);  // File > Save writes it
+    const auto after = core::io::parseOffsetTable(core::io::formatOffsetTable(d.offsetTable()), "offset.cfg");
     QVERIFY(after.ok());
     const auto& o = after.value->at(4);
     QCOMPARE(o.x, 12.5);

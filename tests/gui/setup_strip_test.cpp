@@ -205,6 +205,8 @@ class SetupStripTest : public QObject {
       });
       QTest::mouseClick(w.setupStrip()->stationLine(2), Qt::LeftButton, {}, QPoint(10, 5));
       QTRY_VERIFY(w.setupStrip()->stationText(2).startsWith(QStringLiteral("T02  Parting (cut-off) tool, 3 mm — ")));
+      QVERIFY(w.isWindowModified());  // an edit of this document, remembered when it is saved (issue 30 item 2)
+      QVERIFY(w.save());
     }
     MainWindow again;
     again.show();

@@ -104,10 +104,11 @@ class ToolLibraryDialogTest : public QObject {
     QCOMPARE(d.jobOverrides().size(), std::size_t(1));
     QCOMPARE(d.jobOverrides()[0].station, 3);
     QCOMPARE(d.jobOverrides()[0].libraryId, std::string("threading-60-id"));
-    const auto saved = core::io::readToolTable(dir.filePath(QStringLiteral("tools.cfg")).toStdString());
-    QVERIFY(saved.ok());
-    QCOMPARE(saved.value->libraryId(10), std::string("drill-16mm"));
-    QCOMPARE(saved.value->bitmap[2], std::string("resources/tools/03-threading-60.bmp"));
+    // The table File > Save writes: station 10 from the library, station 3 as it was.
+    const core::io::ToolTable saved = d.toolTable();
+    QCOMPARE(saved.libraryId(10), std::string("drill-16mm"));
+    QCOMPARE(saved.bitmap[2], std::string("resources/tools/03-threading-60.bmp"));
+    QCOMPARE(readAll(dir.filePath(QStringLiteral("tools.cfg"))), original);  // nothing written by the dialog
     QVERIFY(original.startsWith(QByteArray("resources/tools/01-outside-turning.bmp")));
   }
 
@@ -139,7 +140,7 @@ class ToolLibraryDialogTest : public QObject {
              qPrintable(d.choiceText()));
     d.accept();
     QCOMPARE(d.result(), int(QDialog::Accepted));
-    QCOMPARE(d.savedConfigDir(), dir.path());
+    QVERIFY(!d.toolsChanged());  // nothing for File > Save to write to tools.cfg
     QCOMPARE(readAll(cfg), original);
     QCOMPARE(d.jobOverrides().size(), std::size_t(1));
     QCOMPARE(d.jobOverrides()[0].station, 1);
@@ -164,10 +165,10 @@ class ToolLibraryDialogTest : public QObject {
     d.accept();
     QCOMPARE(d.result(), int(QDialog::Accepted));
     QVERIFY(d.jobOverrides().empty());
-    const auto saved = core::io::readToolTable(dir.filePath(QStringLiteral("tools.cfg")).toStdString());
-    QVERIFY(saved.ok());
-    QCOMPARE(saved.value->libraryId(4), std::string("cnmg-80-r04"));
-    QCOMPARE(saved.value->bitmap[0], std::string("resources/tools/01-outside-turning.bmp"));
+    QVERIFY(d.toolsChanged());
+    const core::io::ToolTable saved = d.toolTable();
+    QCOMPARE(saved.libraryId(4), std::string("cnmg-80-r04"));
+    QCOMPARE(saved.bitmap[0], std::string("resources/tools/01-outside-turning.bmp"));
   }
 
   // OK with only a station for this program: tools.cfg is not rewritten at all (its
@@ -230,11 +231,10 @@ class ToolLibraryDialogTest : public QObject {
     d.setCell(39, 3, QStringLiteral("2"));
     d.accept();
     QCOMPARE(d.result(), int(QDialog::Accepted));
-    const auto saved = core::io::readOffsetTable(d.savedConfigDir().toStdString() + "/offset.cfg");
-    QVERIFY(saved.ok());
-    QCOMPARE(saved.value->at(40).r, 0.4);
-    QCOMPARE(saved.value->at(40).tip, 2);
-    QCOMPARE(saved.value->at(1).r, 0.8);
+    const core::io::OffsetTable saved = d.offsetTable();
+    QCOMPARE(saved.at(40).r, 0.4);
+    QCOMPARE(saved.at(40).tip, 2);
+    QCOMPARE(saved.at(1).r, 0.8);
   }
 };
 
