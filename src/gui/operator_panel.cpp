@@ -214,7 +214,9 @@ void OperatorPanel::build() {
   // the keys below do not jump under the mouse when one appears. Measured on three bold Thai
   // lines: a Thai line (its fallback font, vowels above and below) is taller than a Latin one.
   {
-    QLabel probe(QStringLiteral("ก้ำ Xg\nก้ำ Xg\nก้ำ Xg"));
+    // Ko kai with mai tho above and sara am: a tall Thai cluster (a probe, never shown).
+    const QString line = QStringLiteral(u"\u0E01\u0E49\u0E33 Xg");
+    QLabel probe(line + u'\n' + line + u'\n' + line);
     QFont bold = message_->font();
     bold.setBold(true);
     probe.setFont(bold);
