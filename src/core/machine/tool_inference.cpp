@@ -304,6 +304,21 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
   return out;
 }
 
+bool recordIsTheRun(const Timeline& record, const MachineSetup& recordedWith, const RunOptions& recorded,
+                    const MachineSetup& setup, const RunOptions& run) {
+  if (record.alarm || record.recordStandIns || (record.recordCompensates && run.noseCompensation)) return false;
+  if (run.throughAlarms || run.dialect != recorded.dialect || run.powerOnUnits != recorded.powerOnUnits ||
+      run.optionalStop != recorded.optionalStop || run.blockSkip != recorded.blockSkip ||
+      run.stopAtM00 != recorded.stopAtM00)
+    return false;
+  // The run reads the offsets, the machine and the turret's size; a tool's bitmap and the
+  // tool side are the cut's (the side is decided from this very record).
+  io::MachineConfig machine = setup.machine;
+  machine.toolsBeyondCentre = recordedWith.machine.toolsBeyondCentre;
+  return machine == recordedWith.machine && setup.offsets.offsets == recordedWith.offsets.offsets &&
+         setup.tools.bitmap.size() == recordedWith.tools.bitmap.size();
+}
+
 bool parseStationOverride(std::string_view text, int stations, const io::ToolLibrary& library, StationOverride& out,
                           std::string& error, Lang lang) {
   const std::size_t eq = text.find('=');
