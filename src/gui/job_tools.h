@@ -12,7 +12,7 @@
 #include <optional>
 #include <vector>
 
-#include "klueng/core/machine/tool_inference.h"
+#include "klueng/core/infer/tool_inference.h"
 
 namespace klueng::gui {
 

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "gui/document.h"
-#include "klueng/core/machine/tool_inference.h"
+#include "klueng/core/infer/tool_inference.h"
 
 namespace klueng::gui {
 

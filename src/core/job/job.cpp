@@ -13,12 +13,12 @@
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/gcode/program_index.h"
 #include "klueng/core/io/tool_library.h"
-#include "klueng/core/machine/point_reading.h"
+#include "klueng/core/infer/point_reading.h"
 #include "klueng/core/gcode/decimal_point.h"
 #include "klueng/core/machine/setup_files.h"
-#include "klueng/core/machine/stock_inference.h"
+#include "klueng/core/infer/stock_inference.h"
 #include "klueng/core/machine/subprogram_files.h"
-#include "machine/check_with_tools.h"  // the check and the tool inference side by side (machine's own)
+#include "infer/check_with_tools.h"  // the check and the tool inference side by side (infer's own)
 
 namespace klueng::core::job {
 

@@ -24,7 +24,7 @@
 #include "klueng/core/machine/interpreter.h"
 #include "klueng/core/machine/setup_files.h"
 #include "klueng/core/machine/timeline.h"
-#include "klueng/core/machine/tool_inference.h"
+#include "klueng/core/infer/tool_inference.h"
 #include "klueng/core/units.h"
 
 namespace klueng::core::job {

@@ -1,4 +1,4 @@
-#include "klueng/core/machine/tool_inference.h"
+#include "klueng/core/infer/tool_inference.h"
 
 #include <fmt/format.h>
 
@@ -9,7 +9,7 @@
 #include <optional>
 #include <set>
 
-#include "machine/tool_evidence.h"
+#include "infer/tool_evidence.h"
 #include "klueng/core/diagnostic_codes.h"
 #include "klueng/core/messages.h"
 
