@@ -14,7 +14,7 @@
 #include "klueng/core/io/tool_library.h"
 #include "klueng/core/job/job.h"
 #include "klueng/core/machine/setup_files.h"
-#include "klueng/core/machine/tool_inference.h"
+#include "klueng/core/infer/tool_inference.h"
 #include "program_generator.h"
 
 namespace {

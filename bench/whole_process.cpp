@@ -222,6 +222,7 @@ int main(int argc, char** argv) {
         request.path = programs[row.program].path.string();
         request.setup = loaded.setup;
         request.stations = loaded.setup.tools.stations;
+        request.timelineNext = interpret;  // as simulate asks
         const std::shared_ptr<const job::Job> job = job::makeJob(request);
         if (!interpret || !job->program() || !job->file() || job->hasErrors()) return;
         if (!row.cut)

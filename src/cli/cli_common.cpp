@@ -22,7 +22,7 @@
 #include "klueng/core/io/macro_variables.h"
 #include "klueng/core/io/tool_library.h"
 #include "klueng/core/io/text_encoding.h"
-#include "klueng/core/machine/stock_inference.h"
+#include "klueng/core/infer/stock_inference.h"
 
 namespace klueng::cli {
 

@@ -21,7 +21,7 @@
 #include "klueng/core/machine/interpreter.h"
 #include "klueng/core/job/job.h"
 #include "klueng/core/machine/setup_files.h"
-#include "klueng/core/machine/tool_inference.h"
+#include "klueng/core/infer/tool_inference.h"
 #include "klueng/core/messages.h"
 
 namespace klueng::cli {

@@ -163,6 +163,7 @@ int runSimulate(const std::vector<std::string>& args) {
   const std::string variablesPath = variablesDir.empty() ? std::string() : io::macroVariablesPath(variablesDir);
   io::MacroVariables variables;
   request->run.persistentVariables = &variables;  // read below, before the run asks for them
+  request->timelineNext = true;                   // a recorded run that is the run is not made twice
   // Read and parse once: tools from the program (library choices, notes say which), the check, the stock.
   const core::job::Job& job = *keepUntilExit(core::job::makeJob(*request));
   for (const Diagnostic& n : job.toolNotes()) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());

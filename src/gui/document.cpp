@@ -4,8 +4,8 @@
 
 #include "gui/file_save.h"
 #include "klueng/core/diagnostic_codes.h"
-#include "klueng/core/machine/stock_inference.h"
-#include "klueng/core/machine/stock_inference.h"
+#include "klueng/core/infer/stock_inference.h"
+#include "klueng/core/infer/stock_inference.h"
 
 namespace klueng::gui {
 

@@ -17,7 +17,7 @@
 #include "klueng/core/gcode/code_table.h"
 #include "klueng/core/io/program_file.h"
 #include "klueng/core/job/job.h"
-#include "klueng/core/machine/tool_inference.h"
+#include "klueng/core/infer/tool_inference.h"
 
 namespace klueng::gui {
 

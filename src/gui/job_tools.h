@@ -1,5 +1,5 @@
 #pragma once
-// Tools from the program in the GUI (core/machine/tool_inference.h): the
+// Tools from the program in the GUI (core/infer/tool_inference.h): the
 // background check's Job (core/job/job.h) also decides the job's tools, so the
 // checker's E305, the run and Tool Select all see the same setup.
 //
@@ -12,7 +12,7 @@
 #include <optional>
 #include <vector>
 
-#include "klueng/core/machine/tool_inference.h"
+#include "klueng/core/infer/tool_inference.h"
 
 namespace klueng::gui {
 

@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "klueng/core/diagnostic.h"
-#include "klueng/core/machine/tool_inference.h"
+#include "klueng/core/infer/tool_inference.h"
 
 class QGridLayout;
 

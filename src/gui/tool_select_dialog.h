@@ -32,7 +32,7 @@
 
 #include "klueng/core/diagnostic.h"
 #include "klueng/core/io/tool_config.h"
-#include "klueng/core/machine/tool_inference.h"
+#include "klueng/core/infer/tool_inference.h"
 #include "render/tool_sprite.h"
 
 class QCheckBox;

@@ -210,7 +210,7 @@ constexpr MessageText kIoMessages[] = {
      "{1}",
      "โปรแกรมระบุเครื่อง '{0}' ซึ่งไม่มีอยู่: จึงตรวจกับเครื่องที่เลือกไว้ เครื่องที่มี: {1}"},
 
-    // Tools chosen from the program (core/machine/tool_inference.h): notes, never errors.
+    // Tools chosen from the program (core/infer/tool_inference.h): notes, never errors.
     // {0} station (2 digits), {1} library id, {2} what was seen, {3} file line.
     {codes::kToolFromComment, "T{0} = {1} (comment \"{2}\" on line {3})", "T{0} = {1} (หมายเหตุ \"{2}\" ในบรรทัดที่ {3})"},
     {codes::kToolForThreading, "T{0} = {1} (threading, {2} on line {3})", "T{0} = {1} (กลึงเกลียว {2} ในบรรทัดที่ {3})"},

@@ -377,24 +377,33 @@ void sweepIntervals(const SweepContext& c, const std::vector<std::pair<Vec2, Vec
   if (!(all.z0 <= all.z1)) return;
   const double highest = materialUnder(all);
   auto above = [&](const Box& swept) { return swept.x0 >= highest || swept.x0 >= materialUnder(swept); };
+  // (Inside a Stock::Batch, a removing f leaves maxima to settle: settled after each
+  // primitive, so the next one is culled by exact maxima, as without the batch.)
   if (nose) {
     const double r = t.noseRadius;
     for (const auto& [a, b] : nosePieces) {
       const Vec2 ca = a + t.noseCentre, cb = b + t.noseCentre;
       if (above(sweptBox(ca, cb, Box{-r, r, -r, r}))) continue;
       detail::sweepDiscLine(c.grid, ca, cb, r, f, cull);
+      c.stock->settle();
     }
   }
   if (holder) {
     for (const Box& box : t.holder)
       for (const auto& [a, b] : boxPieces)
-        if (!above(sweptBox(a, b, box))) detail::sweepBoxLine(c.grid, a, b, box, f, cull);
+        if (!above(sweptBox(a, b, box))) {
+          detail::sweepBoxLine(c.grid, a, b, box, f, cull);
+          c.stock->settle();
+        }
     return;
   }
   for (const Trapezoid& edge : t.cutting) {
     const Box box = edge.bounds();
     for (const auto& [a, b] : boxPieces)
-      if (!above(sweptBox(a, b, box))) detail::sweepTrapezoidLine(c.grid, a, b, edge, f, cull);
+      if (!above(sweptBox(a, b, box))) {
+        detail::sweepTrapezoidLine(c.grid, a, b, edge, f, cull);
+        c.stock->settle();
+      }
   }
 }
 
@@ -582,8 +591,10 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
     // Cut what the tool removed on its way in, then stop at the crash.
     const auto inNose = nose(s0, s);
     const auto inBoxes = boxes(s0, s);
-    if (nearStock && m.kind != MoveKind::Rapid && m.spindle != machine::SpindleDir::Stopped)
+    if (nearStock && m.kind != MoveKind::Rapid && m.spindle != machine::SpindleDir::Stopped) {
+      const Stock::Batch batch(stock_);
       forEachInterval(ctx, inNose, inBoxes, false, [&](int i, double lo, double hi) { stock_.remove(i, lo, hi); });
+    }
     raise(codes::kToolHitsChuck, s);
     return;
   }
@@ -628,7 +639,10 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
     return;
   }
 
-  forEachInterval(ctx, nosePieces, boxPieces, false, [&](int i, double lo, double hi) { stock_.remove(i, lo, hi); });
+  {
+    const Stock::Batch batch(stock_);
+    forEachInterval(ctx, nosePieces, boxPieces, false, [&](int i, double lo, double hi) { stock_.remove(i, lo, hi); });
+  }
   if (options_.detectCollisions && !tool->holder.empty() && overlapsStock(ctx, nosePieces, boxPieces, true)) {
     const double s = earliest([&](double e) { return overlapsStock(ctx, nose(s0, e), boxes(s0, e), true); });
     const double everywhere = std::numeric_limits<double>::infinity();

@@ -4,6 +4,10 @@
 #include <cmath>
 #include <numbers>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace klueng::core::cut {
 
 namespace {
@@ -60,14 +64,25 @@ namespace {
 // Largest of p[0..n) (radii, so never below 0). Four running maxima: one
 // would wait on each comparison before the next (this is a hot loop of the cut).
 double maxOf(const double* p, int n) {
-  double m0 = 0.0, m1 = 0.0, m2 = 0.0, m3 = 0.0;
   int k = 0;
+#if defined(__SSE2__)
+  // Two doubles an instruction (maxpd): GCC will not turn std::max into it by itself.
+  __m128d v0 = _mm_setzero_pd(), v1 = _mm_setzero_pd();
+  for (; k + 4 <= n; k += 4) {
+    v0 = _mm_max_pd(v0, _mm_loadu_pd(p + k));
+    v1 = _mm_max_pd(v1, _mm_loadu_pd(p + k + 2));
+  }
+  v0 = _mm_max_pd(v0, v1);
+  double m0 = std::max(_mm_cvtsd_f64(v0), _mm_cvtsd_f64(_mm_unpackhi_pd(v0, v0))), m1 = 0.0, m2 = 0.0, m3 = 0.0;
+#else
+  double m0 = 0.0, m1 = 0.0, m2 = 0.0, m3 = 0.0;
   for (; k + 4 <= n; k += 4) {
     m0 = std::max(m0, p[k]);
     m1 = std::max(m1, p[k + 1]);
     m2 = std::max(m2, p[k + 2]);
     m3 = std::max(m3, p[k + 3]);
   }
+#endif
   for (; k < n; ++k) m0 = std::max(m0, p[k]);
   return std::max(std::max(m0, m1), std::max(m2, m3));
 }
@@ -104,6 +119,12 @@ void Stock::updateOuter(int i) {
   const double old = outer_[static_cast<std::size_t>(i)];
   const double now = c.empty() ? 0.0 : c.back().hi;
   outer_[static_cast<std::size_t>(i)] = now;
+  if (deferMaxima_ && now <= old) {
+    // Lowered: the maxima stay high (still bounds) until settle().
+    dirtyFirst_ = dirtyFirst_ <= dirtyLast_ ? std::min(dirtyFirst_, i / kBlock) : i / kBlock;
+    dirtyLast_ = std::max(dirtyLast_, i / kBlock);
+    return;
+  }
   // Each level's maximum is recomputed from the level below only when it held the old value.
   auto refresh = [&](double& top, int first, int count, int step, auto&& below) {
     const double was = top;
@@ -118,6 +139,19 @@ void Stock::updateOuter(int i) {
   const int s0 = i / kSuper * kSuper;
   refresh(superMax_[static_cast<std::size_t>(i / kSuper)], s0, std::min(kSuper, columnCount() - s0), kBlock,
           [&](int k) { return blockMax_[static_cast<std::size_t>(k / kBlock)]; });
+}
+
+void Stock::settleDirty() {
+  const int n = columnCount();
+  const int blocks = static_cast<int>(blockMax_.size());
+  for (int b = dirtyFirst_; b <= dirtyLast_; ++b)
+    blockMax_[static_cast<std::size_t>(b)] = maxOf(outer_.data() + b * kBlock, std::min(kBlock, n - b * kBlock));
+  for (int s = dirtyFirst_ * kBlock / kSuper; s <= dirtyLast_ * kBlock / kSuper; ++s) {
+    const int first = s * (kSuper / kBlock);
+    superMax_[static_cast<std::size_t>(s)] = maxOf(blockMax_.data() + first, std::min(kSuper / kBlock, blocks - first));
+  }
+  dirtyFirst_ = 0;
+  dirtyLast_ = -1;
 }
 
 double Stock::removeFromMaterial(int i, double lo, double hi) {

@@ -95,6 +95,7 @@ GradedProgram gradeProgram(const std::string& path, const JobInput& base) {
     input.path = path;
     input.file.reset();
     input.folder.reset();  // the student's own folder
+    input.timelineNext = true;
     const std::shared_ptr<const Job> job = makeJob(std::move(input));
     const std::optional<gcode::Program>& program = job->program();
     if (program)

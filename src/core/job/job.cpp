@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <thread>
 
 #include "klueng/core/diagnostic_codes.h"
@@ -12,12 +13,12 @@
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/gcode/program_index.h"
 #include "klueng/core/io/tool_library.h"
-#include "klueng/core/machine/point_reading.h"
+#include "klueng/core/infer/point_reading.h"
 #include "klueng/core/gcode/decimal_point.h"
 #include "klueng/core/machine/setup_files.h"
-#include "klueng/core/machine/stock_inference.h"
+#include "klueng/core/infer/stock_inference.h"
 #include "klueng/core/machine/subprogram_files.h"
-#include "machine/check_with_tools.h"  // the check and the tool inference side by side (machine's own)
+#include "infer/check_with_tools.h"  // the check and the tool inference side by side (infer's own)
 
 namespace klueng::core::job {
 
@@ -27,6 +28,7 @@ std::atomic<long long> jobsMade{0};
 std::atomic<long long> jobTimelines{0};
 std::atomic<long long> jobCuts{0};
 std::atomic<long long> jobOnWatched{0};
+std::atomic<long long> jobReusedRecords{0};
 std::mutex watchedMutex;
 std::thread::id watched;
 
@@ -75,6 +77,23 @@ SourceRange callInto(const gcode::Program& program, int file) {
   return SourceRange{program.blocks.empty() ? program.firstLine : program.blocks.front().line, 1, 0, 0};
 }
 
+// Whether a run may read or write a macro variable: an expression or a macro statement.
+bool usesVariables(const gcode::Program& program) {
+  return std::any_of(program.blocks.begin(), program.blocks.end(), [](const gcode::Block& b) {
+    return b.hasExpressions || b.statement.kind != gcode::StatementKind::None;
+  });
+}
+
+// #500-#999 the run starts from and leaves: a record starts them vacant and keeps them
+// nowhere, so it is the run only when the stored ones cannot matter.
+bool persistentAlike(const machine::Timeline& record, const std::map<int, double>* stored, bool usesVariables) {
+  if (!stored || !usesVariables) return true;  // none kept, or none read or written
+  const auto persistent = [](int n) { return n >= 500 && n <= 999; };
+  return std::none_of(stored->begin(), stored->end(), [&](const auto& v) { return persistent(v.first); }) &&
+         std::none_of(record.flow.writes.begin(), record.flow.writes.end(),
+                      [&](const machine::VariableWrite& w) { return persistent(w.number); });
+}
+
 bool byPlace(const Diagnostic& a, const Diagnostic& b) {
   if (a.range.file != b.range.file) return a.range.file < b.range.file;
   return a.range.line != b.range.line ? a.range.line < b.range.line : a.range.column < b.range.column;
@@ -83,7 +102,7 @@ bool byPlace(const Diagnostic& a, const Diagnostic& b) {
 }  // namespace
 
 ComputeLog computeLog() {
-  return ComputeLog{jobsMade.load(), jobTimelines.load(), jobCuts.load(), jobOnWatched.load()};
+  return ComputeLog{jobsMade.load(), jobTimelines.load(), jobCuts.load(), jobOnWatched.load(), jobReusedRecords.load()};
 }
 
 void watchThread(std::thread::id id) {
@@ -190,8 +209,15 @@ std::shared_ptr<const Job> makeJob(JobInput input) {
   j.diagnostics_.insert(j.diagnostics_.end(), std::make_move_iterator(found.begin()),
                         std::make_move_iterator(found.end()));
   j.stockNotes_ = resolveJobStock(file, program, input.stock, j.tools_.setup, readRun, j.tools_.record.get());
-  // The recorded run has told the tools and the stock all it knows: freed now, so a later
-  // timeline() does not hold two runs of a long program at once (peak memory of `simulate`).
+  // The recorded run has told the tools and the stock all it knows. When it is the run
+  // itself and the caller runs next, it is kept to be the timeline (interpreted once);
+  // otherwise freed now, so a later timeline() does not hold two runs of a long program
+  // at once (peak memory of `simulate`), nor the editor's check a run it never shows.
+  if (input.timelineNext && j.tools_.record &&
+      machine::recordIsTheRun(*j.tools_.record, readSetup, readRun, j.tools_.setup, run)) {
+    j.record_ = std::move(j.tools_.record);
+    j.programUsesVariables_ = usesVariables(program);
+  }
   j.tools_.record.reset();
   // The run needs a bar: a header without a size is reported on its line (SPEC 2).
   const io::JobHeader& h = file.header;
@@ -240,11 +266,19 @@ std::string Job::fileOf(const Diagnostic& d) const {
 
 const machine::Timeline* Job::timeline() const {
   std::call_once(timelineOnce_, [this] {
+    std::shared_ptr<const machine::Timeline> record = std::move(record_);
     if (!program_ || hasErrors()) return;
     logCompute(jobTimelines);
-    timeline_ = machine::interpret(*program_, tools_.setup, input_.run);
+    // #500-#999 are known only now (the CLI reads them after makeJob).
+    if (record && persistentAlike(*record, input_.run.persistentVariables, programUsesVariables_)) {
+      ++jobReusedRecords;
+      timeline_ = std::move(record);
+      return;
+    }
+    record.reset();  // one run in memory at a time
+    timeline_ = std::make_shared<const machine::Timeline>(machine::interpret(*program_, tools_.setup, input_.run));
   });
-  return timeline_ ? &*timeline_ : nullptr;
+  return timeline_.get();
 }
 
 const cut::CutSimulator* Job::cut() const {

@@ -560,6 +560,7 @@ class ThroughAlarms final : public MachineSink {
         m.kind != MoveKind::Rapid && (m.ctx.feed <= 0.0 || m.ctx.spindle == SpindleDir::Stopped || m.ctx.sWord <= 0.0 ||
                                       (m.kind == MoveKind::Thread && m.lead <= 0.0));
     if (!stalled) return next_.motion(m);
+    standIns = true;
     MotionCall running = m;
     running.ctx.spindle = SpindleDir::Cw;
     running.ctx.spindleMode = SpindleMode::ConstantRpm;
@@ -571,7 +572,10 @@ class ThroughAlarms final : public MachineSink {
   }
   void dwell(const DwellCall& d) override { next_.dwell(d); }
   void setPosition(const Vec2& p) override { next_.setPosition(p); }
-  void compensation(NoseCompMode mode, double radius, int tip) override { next_.compensation(mode, radius, tip); }
+  void compensation(NoseCompMode mode, double radius, int tip) override {
+    compensates = compensates || mode != NoseCompMode::Off;
+    next_.compensation(mode, radius, tip);
+  }
   void blockDone(const StateSnapshot& s) override { next_.blockDone(s); }
   void alarm(const Diagnostic& d) override {
     if (!first) first = d;
@@ -580,6 +584,8 @@ class ThroughAlarms final : public MachineSink {
   bool halted() const override { return next_.halted(); }
   double elapsed() const override { return next_.elapsed(); }
   std::optional<Diagnostic> first;
+  bool standIns = false;     // a cut made with the stand-in feed and speed above
+  bool compensates = false;  // G41/G42 asked for (a record follows the programmed path)
 
  private:
   MachineSink& next_;
@@ -603,6 +609,8 @@ Timeline interpret(const gcode::Program& program, const MachineSetup& setup, con
   ThroughAlarms through(chain);
   run(program, setup, options, through, timeline.flow);
   if (!timeline.alarm) timeline.alarm = through.first;
+  timeline.recordStandIns = through.standIns;
+  timeline.recordCompensates = through.compensates;
   return timeline;
 }
 

@@ -13,7 +13,7 @@
 #include "klueng/core/io/tool_config.h"
 #include "klueng/core/io/tool_library.h"
 #include "klueng/core/help/explain.h"
-#include "klueng/core/machine/tool_inference.h"
+#include "klueng/core/infer/tool_inference.h"
 #include "test_support.h"
 
 // Its own namespace: the tests are unity-built and sibling files have helpers of the same names.

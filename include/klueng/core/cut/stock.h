@@ -62,12 +62,35 @@ class Stock {
     return overlapWithMaterial(i, lo, hi);
   }
 
+  // While a batch is open, remove() lowers a column's outer radius at once but leaves
+  // its block and super-block maxima as they were (too high is allowed: they only
+  // skip) until settle(): a pass that turns a run of columns down recomputes each
+  // block once, not once per column (issue 29 item 14). Closing the batch settles.
+  class Batch {
+   public:
+    explicit Batch(Stock& stock) : stock_(stock) { stock_.deferMaxima_ = true; }
+    ~Batch() {
+      stock_.settle();
+      stock_.deferMaxima_ = false;
+    }
+    Batch(const Batch&) = delete;
+    Batch& operator=(const Batch&) = delete;
+
+   private:
+    Stock& stock_;
+  };
+  // The block and super-block maxima of the columns lowered since the last settle, exact again.
+  void settle() {
+    if (dirtyFirst_ <= dirtyLast_) settleDirty();
+  }
+
   double volume() const;                             // mm^3 of material left
   double initialVolume() const;                      // mm^3 of the bar
   double removedVolume() const { return removed_; }  // sum of what remove() took
 
  private:
   void updateOuter(int i);
+  void settleDirty();
   double removeFromMaterial(int i, double lo, double hi);         // lo below the column's outer radius
   double overlapWithMaterial(int i, double lo, double hi) const;  // the same
 
@@ -81,6 +104,9 @@ class Stock {
   std::vector<double> outer_;
   std::vector<double> blockMax_;  // max outer radius per block of kBlock columns
   std::vector<double> superMax_;  // and per super-block of kSuper columns (kBlock blocks)
+  bool deferMaxima_ = false;      // a Batch is open
+  int dirtyFirst_ = 0;            // blocks whose maxima wait for settle(): [first, last]
+  int dirtyLast_ = -1;
 };
 
 // The chuck (SPEC 1 ext): jaws grip the stock's left `grip` mm; the body sits left of the bar.

@@ -65,6 +65,7 @@ struct Offset {
   double z = 0.0;
   double r = 0.0;  // nose radius
   int tip = 0;     // imaginary tip 0..9
+  bool operator==(const Offset&) const = default;
 };
 
 struct OffsetTable {
@@ -112,6 +113,7 @@ struct MachineConfig {
   // this much simulated machining time in seconds (max_run_time).
   int maxBlocks = 200000;
   double maxRunTime = 36000.0;
+  bool operator==(const MachineConfig&) const = default;
 };
 
 // Line n = bitmap of station n (empty line = no bitmap), or `library:ID`; at

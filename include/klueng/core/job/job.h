@@ -24,7 +24,7 @@
 #include "klueng/core/machine/interpreter.h"
 #include "klueng/core/machine/setup_files.h"
 #include "klueng/core/machine/timeline.h"
-#include "klueng/core/machine/tool_inference.h"
+#include "klueng/core/infer/tool_inference.h"
 #include "klueng/core/units.h"
 
 namespace klueng::core::job {
@@ -58,6 +58,11 @@ struct JobInput {
   // (its keys join the setup's machine.cfg); a name not loaded is F205 and changes nothing.
   // Set where no machine was chosen for this very program (class grading a folder).
   bool programMachine = false;
+  // The caller asks for timeline() next (simulate, a sheet with its run): the tool
+  // inference's recorded run is kept, and when it is the very run (machine::recordIsTheRun)
+  // it becomes the timeline, so the program is interpreted once (issue 29 item 14).
+  // False (the editor's check): the record is freed when the tools and stock are known.
+  bool timelineNext = false;
 };
 
 class Job {
@@ -106,8 +111,11 @@ class Job {
   DisplayUnits units_ = DisplayUnits::Mm;
   bool unreadable_ = false;
 
+  // The recorded run while it may still become the timeline (JobInput::timelineNext).
+  mutable std::shared_ptr<const machine::Timeline> record_;
+  bool programUsesVariables_ = false;  // some block has an expression or a macro statement
   mutable std::once_flag timelineOnce_;
-  mutable std::optional<machine::Timeline> timeline_;
+  mutable std::shared_ptr<const machine::Timeline> timeline_;
   mutable std::once_flag cutOnce_;
   mutable std::unique_ptr<cut::CutSimulator> cut_;
 };
@@ -125,6 +133,7 @@ struct ComputeLog {
   long long timelines = 0;
   long long cuts = 0;
   long long onWatchedThread = 0;  // jobs made, timelines and cuts computed on it
+  long long reusedRecords = 0;    // timelines that are the tool inference's recorded run
 };
 ComputeLog computeLog();
 void watchThread(std::thread::id id);

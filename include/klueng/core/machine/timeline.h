@@ -60,6 +60,11 @@ struct Timeline {
   std::vector<StateSnapshot> snapshots;  // one per executed block, in execution order
   std::optional<Diagnostic> alarm;       // the alarm that stopped the run, if any
   FlowLog flow;                          // call stacks and macro variables (flow.h)
+  // A record (RunOptions::throughAlarms) differs from the run interpret() makes with the
+  // same inputs when it made a cut with a stand-in feed, spindle or speed, or was asked
+  // for nose compensation (it follows the programmed path): job.cpp reuses only one that is not.
+  bool recordStandIns = false;
+  bool recordCompensates = false;
   double cycleTime() const { return moves.empty() ? 0.0 : moves.back().tEnd; }
   // The cycle time split by tool, in the order the tools are first used.
   std::vector<ToolTime> timeByTool() const;

@@ -1,4 +1,4 @@
-#include "machine/tool_words.h"
+#include "infer/tool_words.h"
 
 #include <algorithm>
 #include <cctype>

@@ -1,6 +1,6 @@
 #pragma once
 // What a comment says about a tool: the words real programs use, in English
-// (Haas and Fanuc shop habits) and Thai (GLOSSARY.md). Private to machine.
+// (Haas and Fanuc shop habits) and Thai (GLOSSARY.md). Private to infer.
 #include <string>
 #include <string_view>
 #include <vector>

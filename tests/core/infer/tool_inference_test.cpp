@@ -1,6 +1,6 @@
 // Tools from the program: programs written in Haas and Fanuc shops' habits,
 // each choice and the line of its evidence asserted.
-#include "klueng/core/machine/tool_inference.h"
+#include "klueng/core/infer/tool_inference.h"
 
 #include <gtest/gtest.h>
 

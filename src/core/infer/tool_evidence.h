@@ -3,7 +3,7 @@
 // interpreter (issue 26 item 2): the blocks each tool really runs after macros,
 // subprograms, cycles, offsets and G20/G21, and the moves they make. Only the
 // comments come from the text, because a run has none: the T block's own,
-// the comment lines around it and a tool list at the top. Private to machine;
+// the comment lines around it and a tool list at the top. Private to infer;
 // tool_inference.cpp decides the tools from it.
 #include <map>
 #include <optional>
@@ -16,7 +16,7 @@
 #include "klueng/core/gcode/program.h"
 #include "klueng/core/io/tool_library.h"
 #include "klueng/core/machine/timeline.h"
-#include "klueng/core/machine/tool_inference.h"
+#include "klueng/core/infer/tool_inference.h"
 
 namespace klueng::core::machine::detail {
 

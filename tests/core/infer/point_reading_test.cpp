@@ -1,6 +1,6 @@
 // How a job reads lengths without a decimal point (issue 26 item 6): the
 // user's choice, else a plain program's numbers, else the machine.
-#include "klueng/core/machine/point_reading.h"
+#include "klueng/core/infer/point_reading.h"
 
 #include <gtest/gtest.h>
 

@@ -89,6 +89,14 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
                          const std::vector<StationOverride>& overrides = {}, int stations = 0,
                          const InferenceContext& context = {});
 
+// The recorded run made with (recordedWith, recorded) is the very run interpret(program,
+// setup, run) makes, move by move (issue 29 item 14: the program is then interpreted once):
+// no alarm, no stand-in feed or speed, no nose compensation asked for (or a run without it),
+// the same dialect, units and switches, the same offsets and machine (a guessed tool may
+// bring its own nose). #500-#999 are the caller's to weigh: a record starts them vacant.
+bool recordIsTheRun(const Timeline& record, const MachineSetup& recordedWith, const RunOptions& recorded,
+                    const MachineSetup& setup, const RunOptions& run);
+
 // `N=ID` (the CLI's --tool value): station 1..stations and a library id.
 // Returns false and fills error with a message in `lang` when it is not.
 bool parseStationOverride(std::string_view text, int stations, const io::ToolLibrary& library, StationOverride& out,

@@ -1,11 +1,11 @@
 // Stock inferred from the program (issue 8 item 6, docs/program-file.md).
-#include "klueng/core/machine/stock_inference.h"
+#include "klueng/core/infer/stock_inference.h"
 
 #include <gtest/gtest.h>
 
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/messages.h"
-#include "test_support.h"
+#include "../machine/test_support.h"
 
 namespace klueng::core::machine {
 namespace {

@@ -7,7 +7,7 @@
 #include <cstring>
 #include <span>
 
-#include "machine/tool_words.h"
+#include "infer/tool_words.h"
 #include "klueng/core/gcode/code_table.h"
 #include "klueng/core/gcode/comment.h"
 

@@ -1,5 +1,5 @@
 // How one job reads lengths without a decimal point (point_reading.h).
-#include "klueng/core/machine/point_reading.h"
+#include "klueng/core/infer/point_reading.h"
 
 #include <string>
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "klueng/core/gcode/checker.h"
-#include "klueng/core/machine/tool_inference.h"
+#include "klueng/core/infer/tool_inference.h"
 
 namespace klueng::core::machine::detail {
 

@@ -1,4 +1,4 @@
-#include "klueng/core/machine/tool_inference.h"
+#include "klueng/core/infer/tool_inference.h"
 
 #include <fmt/format.h>
 
@@ -9,7 +9,7 @@
 #include <optional>
 #include <set>
 
-#include "machine/tool_evidence.h"
+#include "infer/tool_evidence.h"
 #include "klueng/core/diagnostic_codes.h"
 #include "klueng/core/messages.h"
 
@@ -302,6 +302,21 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
   std::sort(out.choices.begin(), out.choices.end(),
             [](const ToolChoice& a, const ToolChoice& b) { return a.station < b.station; });
   return out;
+}
+
+bool recordIsTheRun(const Timeline& record, const MachineSetup& recordedWith, const RunOptions& recorded,
+                    const MachineSetup& setup, const RunOptions& run) {
+  if (record.alarm || record.recordStandIns || (record.recordCompensates && run.noseCompensation)) return false;
+  if (run.throughAlarms || run.dialect != recorded.dialect || run.powerOnUnits != recorded.powerOnUnits ||
+      run.optionalStop != recorded.optionalStop || run.blockSkip != recorded.blockSkip ||
+      run.stopAtM00 != recorded.stopAtM00)
+    return false;
+  // The run reads the offsets, the machine and the turret's size; a tool's bitmap and the
+  // tool side are the cut's (the side is decided from this very record).
+  io::MachineConfig machine = setup.machine;
+  machine.toolsBeyondCentre = recordedWith.machine.toolsBeyondCentre;
+  return machine == recordedWith.machine && setup.offsets.offsets == recordedWith.offsets.offsets &&
+         setup.tools.bitmap.size() == recordedWith.tools.bitmap.size();
 }
 
 bool parseStationOverride(std::string_view text, int stations, const io::ToolLibrary& library, StationOverride& out,

@@ -1,4 +1,4 @@
-#include "klueng/core/machine/stock_inference.h"
+#include "klueng/core/infer/stock_inference.h"
 
 #include <fmt/format.h>
 
@@ -11,7 +11,7 @@
 #include "klueng/core/geometry.h"
 #include "klueng/core/diagnostic_codes.h"
 #include "klueng/core/gcode/parser.h"
-#include "klueng/core/machine/point_reading.h"
+#include "klueng/core/infer/point_reading.h"
 
 namespace klueng::core::machine {
 

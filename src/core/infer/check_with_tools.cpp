@@ -4,7 +4,7 @@
 #include <future>
 
 #include "klueng/core/machine/setup_files.h"
-#include "run_warnings.h"
+#include "machine/run_warnings.h"
 
 namespace klueng::core::machine::detail {
 
