@@ -86,7 +86,7 @@ TEST(CliSimulateCut, Sample01WritesEveryOutput) {
   ASSERT_GT(image.size(), 24u);
   EXPECT_EQ(image.substr(1, 3), "PNG");
   const std::string profile = slurp(csv);
-  EXPECT_EQ(profile.substr(0, 27), "z_mm,x_outer_mm,x_inner_mm\n");
+  EXPECT_EQ(profile.substr(0, 18), "z,x_outer,x_inner\n");
   EXPECT_NEAR(diameterAt(profile, -10.0), 30.0, 0.01);
   EXPECT_NEAR(diameterAt(profile, -30.0), 40.0, 0.01);
   EXPECT_NEAR(diameterAt(profile, -50.0), 46.0, 0.01);

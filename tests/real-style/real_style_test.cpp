@@ -97,7 +97,7 @@ std::string errorLines(const std::string& text) {
 }
 
 // The finished part read from `--profile` (src/core/cut/finished_part.cpp:
-// header "z_mm,x_outer_mm,x_inner_mm", then one row per stock column at its centre plus
+// header "z,x_outer,x_inner", then one row per stock column at its centre plus
 // the two end faces, diameters in mm, "%.4f"). Lengths in and out are in the
 // program's unit: `unit` mm per program unit (1 or 25.4).
 class Profile {

@@ -103,7 +103,7 @@ std::vector<Vec2> FinishedPart::innerProfile() const {
 }
 
 std::string FinishedPart::toCsv() const {
-  std::string out = "z_mm,x_outer_mm,x_inner_mm\n";  // the unit in the header: always mm, even under G20
+  std::string out = "z,x_outer,x_inner\n";  // the header scripts read (README); the values are always mm, G20 too
   for (const ProfileRow& r : rows_)
     out += fmt::format("{:.4f},{:.4f},{:.4f}\n", r.z + 0.0, r.outerDiameter + 0.0, r.innerDiameter + 0.0);
   return out;

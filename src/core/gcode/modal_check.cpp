@@ -35,6 +35,7 @@ bool endsTheWalk(CodeAction a) {
 // from the words alone (cycles return to their start, G28 goes to the reference
 // point, G50 X/Z renames the position, a corner moves the next move's start).
 bool losesPosition(CodeAction a) {
+  if (isCuttingCycle(a)) return true;
   switch (a) {
     case CodeAction::BoxTurning:
     case CodeAction::BoxThreading:
@@ -46,16 +47,6 @@ bool losesPosition(CodeAction a) {
     case CodeAction::CoordinateSet:
     case CodeAction::MachineCoordinates:
     case CodeAction::WorkOffset:
-    case CodeAction::Finishing:
-    case CodeAction::TurnRoughing:
-    case CodeAction::FaceRoughing:
-    case CodeAction::PatternRepeating:
-    case CodeAction::FacePecking:
-    case CodeAction::Grooving:
-    case CodeAction::ThreadCutting:
-    case CodeAction::Drilling:
-    case CodeAction::SpotDrilling:
-    case CodeAction::PeckDrilling:
     case CodeAction::Inch:
     case CodeAction::Metric: return true;
     default: return false;

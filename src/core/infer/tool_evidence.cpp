@@ -76,14 +76,14 @@ std::vector<std::string_view> splitLines(std::string_view text) {
 
 std::string gText(int g) { return fmt::format("G{:02}", g); }
 
-// The G number of a modal motion, as the notes quote it.
-int motionCode(MotionMode mode) {
+// The G number of a modal motion, as the notes quote it, in the machine's G-code system (G33 in system B).
+int motionCode(MotionMode mode, gcode::Dialect dialect) {
   switch (mode) {
     case MotionMode::Rapid: return 0;
     case MotionMode::Line: return 1;
     case MotionMode::ArcCw: return 2;
     case MotionMode::ArcCcw: return 3;
-    case MotionMode::Thread: return 32;
+    case MotionMode::Thread: return gcode::numberInSystem('G', 32, dialect);
   }
   return 1;
 }
@@ -222,7 +222,7 @@ class Gatherer {
         current_ = &out_.uses[station];  // a tool in use before any T block of the run selects it
         currentStation_ = station;
       }
-      block(b, moves, station, motionCode(s.modal.motion));
+      block(b, moves, station, motionCode(s.modal.motion, dialect_));
     }
     for (auto& [station, use] : out_.uses)
       if (const auto it = motion.find(station); it != motion.end()) use.motion = it->second;

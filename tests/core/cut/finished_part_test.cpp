@@ -64,7 +64,7 @@ TEST(FinishedPart, CsvHasOneRowPerColumnPlusTheFaces) {
   std::istringstream in(csv);
   std::string line;
   std::getline(in, line);
-  EXPECT_EQ(line, "z_mm,x_outer_mm,x_inner_mm");
+  EXPECT_EQ(line, "z,x_outer,x_inner");
   std::vector<std::string> rows;
   while (std::getline(in, line)) rows.push_back(line);
   ASSERT_EQ(rows.size(), 22u);

@@ -46,7 +46,7 @@ class FinishedPart {
   std::vector<Vec2> outerProfile() const;
   std::vector<Vec2> innerProfile() const;  // empty when the part is solid
 
-  std::string toCsv() const;  // header "z_mm,x_outer_mm,x_inner_mm": mm always (G20 too), diameters, "%.4f"
+  std::string toCsv() const;  // header "z,x_outer,x_inner": mm always (G20 too), diameters, "%.4f"
   std::string toSvg() const;  // both halves, mm units, X up
   std::string toDxf() const;  // AutoCAD R12 DXF: LINE entities of both halves (layer PART) and the bore (BORE), mm
 
