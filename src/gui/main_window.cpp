@@ -126,7 +126,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   recoveryBar_ = new RecoveryBar(this);
   editorLayout->addWidget(recoveryBar_);
   dialectOffer_ = new DialectOfferBar(this);
-  connect(dialectOffer_, &DialectOfferBar::switchRequested, this, &MainWindow::setDialect);
+  connect(dialectOffer_, &DialectOfferBar::switchRequested, this, &MainWindow::takeMachineOffer);
   editorLayout->addWidget(dialectOffer_);
   editorLayout->addWidget(editor_, 1);
   explainBar_ = new ExplainBar(runner_, editor_, this);
@@ -347,10 +347,11 @@ void MainWindow::connectDocuments() {
     revertSetup();
     jobDoc_.setSavedOverrides(loadToolOverrides(path));
     updateTitle();
-    // A program that names its machine at its head ((MACHINE: id), issue 27) selects it.
+    // A program that names its machine at its head ((MACHINE: id), issue 27) selects it, for
+    // itself; one that names none is read on the menu's machine (an earlier file's is not kept).
     core::gcode::Dialect named{};
-    if (core::gcode::parseDialectId(document_->header().machine, named) && named != jobDoc_.dialect())
-      setDialect(named);
+    if (!core::gcode::parseDialectId(document_->header().machine, named)) named = settings_->dialect();
+    if (named != jobDoc_.dialect()) useMachineForThisProgram(named);
     checker_->checkText(text);  // the text just loaded: no need to read it back from the editor
     emit fileLoaded(path);
   });
@@ -711,10 +712,17 @@ void MainWindow::showJobDetails() {
   // A name no loaded machine has shows as "not named": kept unless another machine is picked.
   core::gcode::Dialect d{};
   const std::string shown = core::gcode::parseDialectId(h.machine, d) ? h.machine : std::string();
-  if (chosen.machine != shown) {
+  if (chosen.machine != shown) nameMachineInProgram(chosen.machine);
+  jobDoc_.undoStack()->endMacro();
+  if (core::gcode::parseDialectId(chosen.machine, d) && d != jobDoc_.dialect()) useMachineForThisProgram(d);
+}
+
+void MainWindow::nameMachineInProgram(const std::string& id) {
+  {
+    const std::string text = editor_->toPlainText().toStdString();
     // One edit of the changed lines only (undone with Ctrl+Z): the program's head names the machine.
     const QString before = editor_->toPlainText();
-    const QString after = QString::fromStdString(core::io::withMachineNamed(text, chosen.machine));
+    const QString after = QString::fromStdString(core::io::withMachineNamed(text, id));
     qsizetype head = 0;
     while (head < before.size() && head < after.size() && before[head] == after[head]) ++head;
     qsizetype tail = 0;
@@ -726,8 +734,6 @@ void MainWindow::showJobDetails() {
     edit.setPosition(static_cast<int>(before.size() - tail), QTextCursor::KeepAnchor);
     edit.insertText(after.mid(head, after.size() - head - tail));
   }
-  jobDoc_.undoStack()->endMacro();
-  if (core::gcode::parseDialectId(chosen.machine, d) && d != jobDoc_.dialect()) setDialect(d);
 }
 
 void MainWindow::showFind() {

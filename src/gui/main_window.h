@@ -115,7 +115,13 @@ class MainWindow : public QMainWindow {
   // Diagnostics of the last finished check (checker + file header).
   const std::vector<core::Diagnostic>& diagnostics() const { return lastDiagnostics_; }
   core::gcode::Dialect dialect() const { return jobDoc_.dialect(); }
+  // The machine chosen in the menu: every program that names none is checked on it (remembered).
   void setDialect(core::gcode::Dialect d);
+  // The machine of the program in the editor only (its `(MACHINE: id)` line, an offer taken):
+  // not remembered, so the next file opened is read on the menu's machine again (issue 38 item 8).
+  void useMachineForThisProgram(core::gcode::Dialect d);
+  // The offer bar's switch: the program's head names the machine (one undo step), and it is used.
+  void takeMachineOffer(core::gcode::Dialect d);
   // Units before any G20/G21 (Dialect menu; remembered): nullopt = the dialect's.
   void setPowerOnUnits(std::optional<core::gcode::InputUnits> units);
   // The unit lengths are shown in (View ▸ Units shown; remembered): nullopt = Auto,
@@ -131,6 +137,8 @@ class MainWindow : public QMainWindow {
   bool saveAs();
   void showJobDetails();
   void setJobDetails(const core::io::JobHeader& header);  // as the dialog's OK does: undoable
+  // Writes or rewrites the program's `(MACHINE: id)` head line ("" takes it out): one edit of the changed lines.
+  void nameMachineInProgram(const std::string& id);
   void showPartDesigner();
   // Reports (SPEC 12): the program sheet and the drawing sheet, in the UI's language.
   void printCode();     // File > Print Code: printer dialog

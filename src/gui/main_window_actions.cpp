@@ -392,10 +392,21 @@ void MainWindow::toggleLanguage() {
 }
 
 void MainWindow::setDialect(core::gcode::Dialect d) {
+  settings_->setDialect(d);
+  useMachineForThisProgram(d);
+}
+
+void MainWindow::takeMachineOffer(core::gcode::Dialect d) {
+  jobDoc_.undoStack()->beginMacro(tr("Use the offered machine"));
+  nameMachineInProgram(std::string(core::gcode::machineProfile(d).id));
+  jobDoc_.undoStack()->endMacro();
+  useMachineForThisProgram(d);
+}
+
+void MainWindow::useMachineForThisProgram(core::gcode::Dialect d) {
   const bool machineKeys =
       !core::gcode::machineProfile(d).file.empty() || !core::gcode::machineProfile(jobDoc_.dialect()).file.empty();
   jobDoc_.setDialect(d);
-  settings_->setDialect(d);
   // A machine file's machine.cfg keys (rapids, travel ...) are part of the setup: read it again with them.
   if (machineKeys && !configDir_.isEmpty()) loadMachineSetup();
   editor_->setDialect(d);

@@ -84,12 +84,30 @@ class DialectOfferTest : public QObject {
     QTRY_VERIFY(checked.count() > 0);
     QTRY_VERIFY(!bar->isOffering());
     QVERIFY(w.action(QStringLiteral("actionDialectHaas"))->isChecked());
-    QCOMPARE(Settings().dialect(), core::gcode::Dialect::Haas);
+    // The offer taken belongs to this program: its head names the machine (one undo step),
+    // and the menu's machine, the one every other file is read on, stays Fanuc (issue 38 item 8).
+    QVERIFY2(w.findChild<CodeEditor*>()->toPlainText().startsWith(QStringLiteral("%\nO20031 (HAAS OD)\n(MACHINE: haas)\n")),
+             qPrintable(w.findChild<CodeEditor*>()->toPlainText().left(60)));
+    QCOMPARE(Settings().dialect(), core::gcode::Dialect::Fanuc);
     // The stock is inferred again in the new dialect: the Haas inch cycle starts
     // at X2.1, the largest 1/8-inch bar not above it is Ø2 in.
     QTRY_VERIFY(w.stockSourceText().startsWith(QStringLiteral("Stock Ø2 x ")));
     QVERIFY(w.stockSourceText().contains(QStringLiteral("inferred from G00 X2.1 Z0.1")));
     QCOMPARE(w.document()->header().diameterMm(), 2.0 * 25.4);
+
+    // The next program, which names no machine, is read on the menu's machine again.
+    QVERIFY(w.saveFile(path));
+    const QString plain = dir.filePath(QStringLiteral("fanuc.nc"));
+    QFile g(plain);
+    QVERIFY(g.open(QIODevice::WriteOnly));
+    g.write("%\nO0001\nT0101\nG97 S900 M03\nG00 X52. Z2.\nG01 X48. F0.2\nZ-20.\nG00 X100. Z100.\nM30\n%\n");
+    g.close();
+    QVERIFY(openAndWait(w, plain));
+    QTRY_VERIFY(w.action(QStringLiteral("actionDialectFanuc"))->isChecked());
+    QCOMPARE(Settings().dialect(), core::gcode::Dialect::Fanuc);
+    // And the Haas program, opened again, is Haas by its own head line.
+    QVERIFY(openAndWait(w, path));
+    QTRY_VERIFY(w.action(QStringLiteral("actionDialectHaas"))->isChecked());
   }
 
   void powerOnUnitsAreASettingOfTheDialectMenu() {
@@ -112,6 +130,19 @@ class DialectOfferTest : public QObject {
         if (d.code == "W103") return true;
       return false;
     };
+    // Its own numbers speak inch (four decimals, F0.005): it is read in inches with note I107
+    // (issue 38 item 8), so the four decimals are no longer "too many for mm".
+    const auto hasCode = [&w](const char* code) {
+      for (const auto& d : w.diagnostics())
+        if (d.code == code) return true;
+      return false;
+    };
+    QTRY_VERIFY(hasCode("I107"));
+    QVERIFY(!hasW103());
+    // Chosen mm in the menu, the program is read in mm: W103 says the decimals are too many.
+    QSignalSpy mm(&w, &MainWindow::checkFinished);
+    w.action(QStringLiteral("actionUnitsMm"))->trigger();
+    QTRY_VERIFY(mm.count() > 0);
     QTRY_VERIFY(hasW103());
     QSignalSpy checked(&w, &MainWindow::checkFinished);
     w.action(QStringLiteral("actionUnitsInch"))->trigger();

@@ -932,4 +932,88 @@ TEST(RealStyleDecimalPoint, Haas_MetricAllowancesInIncrementsAndAStrayWholeWord)
   EXPECT_NEAR(p.rightFace(), 0.0, kMm);
 }
 
+// ============================================================================
+// What the control stops on, and what it reads on (issue 38): programs in the
+// habits of production shops and labs whose lathes ran them.
+// ============================================================================
+
+// O4410: an inch production op with the safety line G18G20G40G80G90G99 before
+// each tool (G90 alone selects the turning cycle and moves nothing: W112, not
+// the E140 it was), T0101G54, G50S2500, and a G92 thread cycle with its end point.
+TEST(RealStyleControlReading, Fanuc_InchSafetyLinesRunAsOnTheLathe) {
+  const Job job{"fanuc-13-inch-safety-lines.nc", "fanuc", "--units inch --stock 2x3in", true};
+  RUN_CLEAN(job, r);
+  EXPECT_NE(r.check.text.find(":7:13: warning W112: G90 is a single cycle"), std::string::npos) << r.check.text;
+  EXPECT_NE(r.check.text.find(":26:13: warning W112: "), std::string::npos) << r.check.text;
+  EXPECT_EQ(r.check.text.find("I102"), std::string::npos) << "no other machine is offered:\n" << r.check.text;
+  const Profile& p = r.part;
+  // T01 under G40 (tip 3): cylinders and faces exact.
+  EXPECT_NEAR(p.d(-0.80), 1.85, kIn);    // X1.85 to Z-.9, left by the X1.5 pass that stops at Z-.7
+  EXPECT_NEAR(p.d(-0.65), 1.50, kIn);    // X1.5 from the thread's end (Z-.6) to Z-.7
+  EXPECT_NEAR(p.d(-1.20), 2.00, kIn);    // the bar behind Z-.9
+  EXPECT_NEAR(p.minD(-0.5, -0.1), 1.42, kIn);  // G92's last pass X1.42 (T03, apex controlled)
+  EXPECT_NEAR(p.rightFace(), 0.0, kIn);  // faced at Z0.
+}
+
+// O0314: a mill habit in the safety line (G21G40G49G54G80G90: G49 is read and
+// does nothing) and a bar puller at the end, G1 into the bar at X0 with the
+// spindle stopped (M5): not a cut, no A302, no hole in the part.
+TEST(RealStyleControlReading, Fanuc_G49SafetyLineAndABarPuller) {
+  const Job job{"fanuc-14-safety-g49-bar-puller.nc", "fanuc", "--stock 36x80", false};
+  RUN_CLEAN(job, r);
+  EXPECT_EQ(r.check.text.find("I102"), std::string::npos) << r.check.text;
+  const Profile& p = r.part;
+  EXPECT_NEAR(p.d(-10.0), 30.0, kMm);      // X30. to Z-25.
+  EXPECT_NEAR(p.d(-30.0), 36.0, kMm);      // the bar
+  EXPECT_NEAR(p.inner(-5.0), 0.0, kMm);    // the puller went in to Z-12. at X0 and drilled nothing
+  EXPECT_NEAR(p.edge(-24.0, -26.0, 33.0), -25.0, kMm);
+  EXPECT_NEAR(p.rightFace(), 0.0, kMm);    // faced X34. -> X-1. at Z0.
+}
+
+// O0815: a label line (the part's name in Chinese) before the first '%', which
+// the control skips (note I105, not E138), and `G53 G00 X100 Z150 T00` homing
+// lines whose T00 cancels the offset (not E118).
+TEST(RealStyleControlReading, Fanuc_LeaderLineAndT00HomingLines) {
+  const Job job{"fanuc-15-leader-homing-t00.nc", "fanuc", "--stock 45x60", false};
+  RUN_CLEAN(job, r);
+  EXPECT_NE(r.check.text.find(":1:1: note I105: lines 1-1 stand before the first '%'"), std::string::npos)
+      << r.check.text;
+  const Profile& p = r.part;
+  // G70 under G40 with T01 (R0.8, tip 3): cylinders exact.
+  EXPECT_NEAR(p.d(-10.0), 24.0, kMm);  // X24 from Z-2 to Z-20
+  EXPECT_NEAR(p.d(-30.0), 40.0, kMm);  // X40 from Z-20 to Z-35
+  EXPECT_NEAR(p.d(-45.0), 45.0, kMm);  // the bar behind the shape
+  EXPECT_NEAR(p.edge(-19.0, -21.0, 32.0), -20.0, kMm);
+}
+
+// O0216, a Brazilian course's habits: ';' ends every block, a comment in ( )
+// after it is fine, but "T0404 ;bedame de 3mm" puts text in the next block
+// (E141) and "(USA MAX(#100,#112) COMO PISO)" ends at its first ')' (E142):
+// a Fanuc stops on both. Haas reads both lines as comments.
+TEST(RealStyleControlReading, Fanuc_TextAfterSemicolonAndAfterAnInnerParenthesisStop) {
+  const std::string file = quote(kPrograms + "/fanuc-16-eob-text-nested-comment.nc");
+  const Output fanuc = runCli("check " + file + " --dialect fanuc --stock 46x60 --config " + quote(kShipped));
+  EXPECT_EQ(fanuc.exitCode, 1) << fanuc.text;
+  EXPECT_NE(fanuc.text.find(":3:20: error E142: "), std::string::npos) << fanuc.text;
+  EXPECT_NE(fanuc.text.find(":19:8: error E141: this control ends the block at ';' and reads \"bedame de 3mm\""),
+            std::string::npos)
+      << fanuc.text;
+  EXPECT_EQ(errorLines(fanuc.text).find(":6:"), std::string::npos) << "'; (desbaste) ;' is fine:\n" << fanuc.text;
+  EXPECT_EQ(fanuc.text.find("I102"), std::string::npos) << "text is no other machine's form:\n" << fanuc.text;
+  const Output haas =
+      runCli("check " + file + " --dialect haas --units mm --stock 46x60 --config " + quote(kShipped));
+  EXPECT_EQ(errorLines(haas.text), "") << haas.text;
+}
+
+// O20020: a Haas program with "; comment" after its blocks, as Haas reads them.
+TEST(RealStyleControlReading, Haas_SemicolonCommentsAreComments) {
+  const Job job{"haas-20-eob-comments.nc", "haas", "--units inch --stock 1x3in", true};
+  RUN_CLEAN(job, r);
+  const Profile& p = r.part;
+  EXPECT_NEAR(p.d(-0.25), 0.6, kIn);  // X0.6 to Z-0.5
+  EXPECT_NEAR(p.d(-0.75), 0.8, kIn);  // X0.8 from Z-0.5 to Z-1.0
+  EXPECT_NEAR(p.d(-1.5), 1.0, kIn);   // the bar
+  EXPECT_NEAR(p.rightFace(), 0.0, kIn);
+}
+
 }  // namespace

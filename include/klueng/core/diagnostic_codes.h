@@ -145,6 +145,7 @@ inline constexpr const char* kStockFromCommandLine = "I150";
 inline constexpr const char* kStockFromJobDetails = "I151";
 inline constexpr const char* kStockFromFirstApproach = "I152";
 inline constexpr const char* kStockFromCycleStart = "I153";
+inline constexpr const char* kStockFromComment = "I161";  // {0} size, {1} the comment that names the bar
 inline constexpr const char* kBoreInferred = "I154";
 inline constexpr const char* kStockDefault = "I155";
 inline constexpr const char* kStockFromHeader = "I156";
@@ -166,12 +167,20 @@ inline constexpr const char* kOffsetReplacedByLibrary = "I411";
 // texts in messages_gcode.cpp beside W110/W111): {0} the deciding word, {1} its line, {2} its length.
 inline constexpr const char* kLengthsInIncrements = "I103";
 inline constexpr const char* kLengthsWhole = "I104";
+// The units of a plain program without G20/G21, from its own sizes (infer/units_reading.h):
+// {0} "inch" or "mm", {1} the first word that spoke them.
+inline constexpr const char* kUnitsFromProgram = "I107";
 inline constexpr const char* kToolsBeyondCentre =
     "I412";  // {0} line of the first cut at X < 0  // a row set for the table's tool, in a plain program
 // A guessed tool that touched, replaced by another library tool of its kind that runs clean
 // (cut/guess_fit.h): {0} station, {1} the replacement, {2} the first guess, {3} line of the touch.
 inline constexpr const char* kGuessReplacedStock = "I413";
 inline constexpr const char* kGuessReplacedChuck = "I414";
+// A guessed blade set on its right (+Z) corner: on its left one it would cut into what the other
+// tools turned beside its plunge. {0} station, {1} the blade's width (mm).
+inline constexpr const char* kBladeOnItsRightCorner = "I415";
+// The nose radius a tool's comment states, used for its offsets: {0} station, {1} radius (mm).
+inline constexpr const char* kNoseRadiusFromComment = "I416";
 
 // Run-time alarms and notes of the interpreter (machine; texts in messages_machine.cpp)
 inline constexpr const char* kSpindleAboveMaximum = "A101";
@@ -235,6 +244,11 @@ inline constexpr const char* kThreadUnderCssWarning = "W131";  // Fanuc/Haas: th
 inline constexpr const char* kConcaveArcTooSmall = "A201";
 inline constexpr const char* kNoseDoesNotFit = "A202";
 inline constexpr const char* kCompStartOrCancelOnArc = "A203";
+// A guessed nose radius (a plain program's tool: the shipped offsets or the library's insert) whose
+// compensated path does not fit (A201/A202): the run uses the largest common radius that fits
+// (issue 38 item 7). {0} station, {1} the guess (mm), {2} line of the interference, {3} the radius used,
+// {4} the alarm the guess raised.
+inline constexpr const char* kGuessedNoseTooBig = "W205";
 
 // Material removal (cut; texts in messages_cut.cpp)
 inline constexpr const char* kRapidIntoStock = "A301";

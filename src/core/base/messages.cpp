@@ -51,6 +51,11 @@ constexpr MessageText kGuiWording[] = {
      "reads it as {2}: if that is meant, write {3} or choose that reading in File ▸ Job details",
      "{0} ไม่มีจุดทศนิยมจึงถูกอ่านเป็น {1} (การป้อนค่าแบบเครื่องคิดเลข) เครื่องที่ตั้งการป้อนจุดทศนิยมแบบมาตรฐานจะอ่านเป็น {2} ถ้าต้องการค่านั้น "
      "ให้เขียน {3} หรือเลือกการอ่านแบบนั้นที่ แฟ้ม ▸ รายละเอียดงาน"},
+    {"I107",
+     "the program names no units (no G20 or G21) and its sizes are in {0} ({1} is a {0} size, as the other cycle "
+     "depths, feeds and speeds): it is read in {0}; choose the power-on units in Tool setting if that is wrong",
+     "โปรแกรมไม่ได้ระบุหน่วย (ไม่มี G20 หรือ G21) และขนาดต่าง ๆ เป็นหน่วย {0} ({1} เป็นขนาดในหน่วย {0} เช่นเดียวกับระยะป้อนลึก "
+     "อัตราป้อน และความเร็วอื่น ๆ) จึงอ่านเป็น {0}: ถ้าไม่ถูกต้องให้เลือกหน่วยเมื่อเปิดเครื่องที่ ตั้งค่ามีดตัด"},
     {"I103",
      "lengths without a decimal point are read in least input increments (0.001 mm, 0.0001 in), as a standard Fanuc or "
      "Haas reads them: {0} on line {1} is {2}; change it in File ▸ Job details",
@@ -61,8 +66,8 @@ constexpr MessageText kGuiWording[] = {
      "program's numbers show: {0} on line {1} is {2}; change it in File ▸ Job details",
      "ความยาวที่ไม่มีจุดทศนิยมอ่านเป็นมิลลิเมตรหรือนิ้วเต็มหน่วย (การป้อนค่าแบบเครื่องคิดเลข) ตามที่ตัวเลขในโปรแกรมบอก: {0} ในบรรทัดที่ {1} คือ "
      "{2} เปลี่ยนได้ที่ แฟ้ม ▸ รายละเอียดงาน"},
-    {"I102", "blocks with errors that are {1} forms: {0}; choose {1} in Tool setting ▸ G-code dialect",
-     "บล็อกที่ผิดพลาด {0} บล็อกเป็นรูปแบบของ {1}: เลือก {1} ที่ ตั้งค่ามีดตัด ▸ ภาษาจีโค้ด"},
+    {"I102", "blocks with errors or warnings that are {1} forms: {0}; choose {1} in Tool setting ▸ G-code dialect",
+     "บล็อกที่ผิดพลาดหรือมีคำเตือน {0} บล็อกเป็นรูปแบบของ {1}: เลือก {1} ที่ ตั้งค่ามีดตัด ▸ ภาษาจีโค้ด"},
     {"I155", "stock {0} is the default: the program has no approach to infer it from; set it in File ▸ Job details",
      "ชิ้นงาน {0} เป็นค่าเริ่มต้น: โปรแกรมไม่มีตำแหน่งเข้าหาชิ้นงานให้ประมาณได้ ตั้งค่าได้ที่ แฟ้ม ▸ รายละเอียดงาน"},
 };

@@ -64,8 +64,6 @@ constexpr MessageText kGcodeMessages[] = {
      "{0}: การลบมุม ,C การมนมุม ,R และมุม ,A ใช้ได้เฉพาะในบล็อก G01"},
     {"E134", "{0}{1}: a G-code number has no exponent (E): write the value of {0}{1} in digits with a decimal point",
      "{0}{1}: ตัวเลขในจีโค้ดเขียนแบบยกกำลัง (E) ไม่ได้: ให้เขียนค่าของ {0}{1} เป็นตัวเลขพร้อมจุดทศนิยม"},
-    {"E140", "{0} is a single cycle: its block needs the cycle's end point, X (U) and Z (W)",
-     "{0} เป็นวัฏจักรทำงานครั้งเดียว: บล็อกต้องมีจุดสิ้นสุดของวัฏจักร X (U) และ Z (W)"},
     {"E139",
      "{0}: a number in a macro expression has no exponent (E): write the value of {0} in digits with a decimal point",
      "{0}: ตัวเลขในนิพจน์มาโครเขียนแบบยกกำลัง (E) ไม่ได้: ให้เขียนค่าของ {0} เป็นตัวเลขพร้อมจุดทศนิยม"},
@@ -82,6 +80,14 @@ constexpr MessageText kGcodeMessages[] = {
     {"E138",
      "this line looks like text (\"{0}\"): the control stops here; put the text inside ( ) to make it a comment",
      "บรรทัดนี้ดูเหมือนเป็นข้อความ (\"{0}\") เครื่องจะหยุดทำงานที่บรรทัดนี้: ให้เขียนข้อความไว้ใน ( ) เพื่อให้เป็นหมายเหตุ"},
+    {"E141",
+     "this control ends the block at ';' and reads \"{0}\" after it as the next block: it is not G-code, so the "
+     "control stops here; put the text inside ( )",
+     "เครื่องนี้จบบล็อกที่ ';' และอ่าน \"{0}\" ที่อยู่หลังเป็นบล็อกถัดไป ซึ่งไม่ใช่จีโค้ด เครื่องจึงหยุดที่นี่: ให้เขียนข้อความไว้ใน ( )"},
+    {"E142",
+     "this control ends a comment at its first ')': \"{0}\" after it is read as G-code and the control stops here; "
+     "leave out the parentheses inside the comment",
+     "เครื่องนี้จบหมายเหตุที่ ')' ตัวแรก: \"{0}\" ที่อยู่หลังจะถูกอ่านเป็นจีโค้ด และเครื่องจะหยุดที่นี่ ให้เอาวงเล็บที่อยู่ภายในหมายเหตุออก"},
     {"E199", "more than {0} errors; the rest of the program is not checked",
      "พบข้อผิดพลาดมากกว่า {0} รายการ จึงไม่ตรวจสอบส่วนที่เหลือของโปรแกรม"},
 
@@ -157,6 +163,16 @@ constexpr MessageText kGcodeMessages[] = {
      "{0}: ไม่มีบล็อก N{1} ในโปรแกรมนี้สำหรับรูปร่างชิ้นงาน (P คือบล็อกแรกของรูปร่าง Q คือบล็อกสุดท้าย ซึ่งอยู่ที่หรือถัดจาก P)"},
     {"E415", "{0}: block N{1} lies before N{2}, where the profile starts: Q names the profile's last block, after P's",
      "{0}: บล็อก N{1} อยู่ก่อน N{2} ซึ่งเป็นจุดเริ่มของรูปร่างชิ้นงาน: Q คือบล็อกสุดท้ายของรูปร่าง ซึ่งต้องอยู่ถัดจากบล็อกของ P"},
+    {"E417",
+     "{0}: the shape N{1}-N{2} holds this cycle's own block, so the cycle would read itself as part of the shape: the "
+     "control stops; put the shape after the cycle (or before it) and let P and Q name only its blocks",
+     "{0}: รูปร่าง N{1}-N{2} มีบล็อกของวัฏจักรนี้อยู่ด้วย วัฏจักรจึงอ่านตัวเองเป็นส่วนหนึ่งของรูปร่าง เครื่องจะหยุด: "
+     "ให้เขียนรูปร่างไว้หลัง (หรือก่อน) วัฏจักร และให้ P กับ Q ระบุเฉพาะบล็อกของรูปร่าง"},
+    {"E418",
+     "{0} roughs at the feed F of its block or the one in force, but no F has been given before it: the control stops "
+     "(feed zero); add F to the cycle's block, e.g. F0.2",
+     "{0} กลึงหยาบด้วยอัตราป้อน F ในบล็อกของวัฏจักรหรือค่าที่ใช้อยู่ แต่ยังไม่มีการกำหนด F ก่อนหน้านี้ เครื่องจะหยุด (อัตราป้อนเป็นศูนย์): "
+     "ให้เติม F ในบล็อกของวัฏจักร เช่น F0.2"},
     {"E414",
      "{0}: the first block of the profile, N{1}, holds neither G00 nor G01; the control stops there (Fanuc alarm "
      "PS0065): write the first move in it (N{1} G00 X.. Z..)",
@@ -203,6 +219,34 @@ constexpr MessageText kGcodeMessages[] = {
      "{0} ไม่มีจุดทศนิยมจึงถูกอ่านเป็น {1} (การป้อนค่าแบบเครื่องคิดเลข) เครื่องที่ตั้งการป้อนจุดทศนิยมแบบมาตรฐานจะอ่านเป็น {2} ถ้าต้องการค่านั้น "
      "ให้เขียน {3} หรือเลือกการอ่านแบบนั้นในรายละเอียดงาน (--decimal-point increments)"},
 
+    {"W112",
+     "{0} is a single cycle, but this block has no end point (X/U, Z/W): it runs no cycle and only selects {0}, so a "
+     "later block with X or Z and no G00/G01 runs the cycle; in G-code system B, G90 is absolute input and G92 S the "
+     "spindle speed clamp: if the program is written for system B, choose that machine",
+     "{0} เป็นวัฏจักรทำงานครั้งเดียว แต่บล็อกนี้ไม่มีจุดสิ้นสุด (X/U, Z/W) จึงไม่ทำวัฏจักร เพียงเลือกโหมด {0} ไว้ "
+     "บล็อกถัดไปที่มี X หรือ Z โดยไม่มี G00/G01 จะทำวัฏจักรนั้น ในระบบรหัส G แบบ B คำสั่ง G90 คือการกำหนดค่าแบบสัมบูรณ์ "
+     "และ G92 S คือการจำกัดความเร็วรอบสูงสุด: ถ้าโปรแกรมเขียนสำหรับระบบ B ให้เลือกเครื่องนั้น"},
+
+    {"W115",
+     "{0} {1} in G-code system A selects the threading cycle without an end point: it moves nothing and sets the "
+     "spindle speed {1} (under G96, a surface speed), not a limit; the speed clamp is G50 {1} in system A and "
+     "{0} {1} in system B: if the program is written for system B, choose that machine",
+     "{0} {1} ในระบบรหัส G แบบ A คือการเลือกวัฏจักรกลึงเกลียวโดยไม่มีจุดสิ้นสุด จึงไม่เคลื่อนที่ แต่ตั้งความเร็วรอบ {1} "
+     "(ถ้าเป็น G96 คือความเร็วตัด) ไม่ใช่การจำกัดความเร็วรอบ การจำกัดความเร็วรอบคือ G50 {1} ในระบบ A และ {0} {1} "
+     "ในระบบ B: ถ้าโปรแกรมเขียนสำหรับระบบ B ให้เลือกเครื่องนั้น"},
+    {"W116",
+     "{0} and {1} belong to the same modal group ({2}): this control uses the last one, {1}; keep only the one you mean",
+     "{0} และ {1} อยู่ในกลุ่มโมดอลเดียวกัน ({2}): เครื่องนี้ใช้ตัวสุดท้ายคือ {1} ให้เหลือไว้เฉพาะคำสั่งที่ต้องการ"},
+    {"W113",
+     "this control ends a comment at its first ')': \"{0}\" after it stands outside the comment (it holds no word, "
+     "the control reads on); leave out the parentheses inside the comment",
+     "เครื่องนี้จบหมายเหตุที่ ')' ตัวแรก: \"{0}\" ที่อยู่หลังจึงอยู่นอกหมายเหตุ (ไม่มีคำสั่งใด เครื่องจึงทำงานต่อ) "
+     "ให้เอาวงเล็บที่อยู่ภายในหมายเหตุออก"},
+    {"W114",
+     "this control ends the block at ';' and runs \"{0}\" after it as the next block; Klueng reads it as a comment: "
+     "put it on a line of its own",
+     "เครื่องนี้จบบล็อกที่ ';' และทำงาน \"{0}\" ที่อยู่หลังเป็นบล็อกถัดไป แต่ Klueng อ่านเป็นหมายเหตุ: ให้เขียนไว้ในบรรทัดของตัวเอง"},
+
     // I1xx: notes
     {"I103",
      "lengths without a decimal point are read in least input increments (0.001 mm, 0.0001 in), as a standard Fanuc or "
@@ -214,8 +258,22 @@ constexpr MessageText kGcodeMessages[] = {
      "program's numbers show: {0} on line {1} is {2}; change it in Job details (--decimal-point)",
      "ความยาวที่ไม่มีจุดทศนิยมอ่านเป็นมิลลิเมตรหรือนิ้วเต็มหน่วย (การป้อนค่าแบบเครื่องคิดเลข) ตามที่ตัวเลขในโปรแกรมบอก: {0} ในบรรทัดที่ {1} คือ "
      "{2} เปลี่ยนได้ที่รายละเอียดงาน (--decimal-point)"},
-    {"I102", "blocks with errors that are {1} forms: {0}; choose the {1} dialect (--dialect {2})",
-     "บล็อกที่ผิดพลาด {0} บล็อกเป็นรูปแบบของ {1}: เลือกรูปแบบคำสั่ง {1} (--dialect {2})"},
+    {"I107",
+     "the program names no units (no G20 or G21) and its sizes are in {0} ({1} is a {0} size, as the other cycle "
+     "depths, feeds and speeds): it is read in {0}; choose the units in Tool setting (--units) if that is wrong",
+     "โปรแกรมไม่ได้ระบุหน่วย (ไม่มี G20 หรือ G21) และขนาดต่าง ๆ เป็นหน่วย {0} ({1} เป็นขนาดในหน่วย {0} เช่นเดียวกับระยะป้อนลึก "
+     "อัตราป้อน และความเร็วอื่น ๆ) จึงอ่านเป็น {0}: ถ้าไม่ถูกต้องให้เลือกหน่วยที่ ตั้งค่ามีดตัด (--units)"},
+    {"I106",
+     "{0} is an angle without its comma, as a Fanuc 0-T reads it (parameter 3405#4): write {1}, or set "
+     "angle_without_comma = 1 in the machine file",
+     "{0} เป็นมุมที่ไม่มีเครื่องหมายจุลภาค แบบที่ Fanuc 0-T อ่าน (พารามิเตอร์ 3405#4): ให้เขียน {1} หรือตั้งค่า "
+     "angle_without_comma = 1 ในไฟล์เครื่อง"},
+    {"I105",
+     "lines 1-{0} stand before the first '%': a control reading the file skips this leader (a title, a label), so it "
+     "is not checked or run",
+     "บรรทัดที่ 1-{0} อยู่ก่อนเครื่องหมาย '%' ตัวแรก: เครื่องที่อ่านไฟล์จะข้ามส่วนนำนี้ (ชื่อเรื่อง ป้ายชื่อ) จึงไม่ตรวจและไม่ทำงาน"},
+    {"I102", "blocks with errors or warnings that are {1} forms: {0}; choose the {1} dialect (--dialect {2})",
+     "บล็อกที่ผิดพลาดหรือมีคำเตือน {0} บล็อกเป็นรูปแบบของ {1}: เลือกรูปแบบคำสั่ง {1} (--dialect {2})"},
 };
 }  // namespace
 

@@ -151,6 +151,8 @@ constexpr MessageText kIoMessages[] = {
      "ชิ้นงาน {0} จากรายละเอียดงานที่ตั้งไว้สำหรับไฟล์นี้"},
     {codes::kStockFromFirstApproach, "stock {0} inferred from {1} (first approach)",
      "ชิ้นงาน {0} ประมาณจาก {1} (ตำแหน่งเข้าหาชิ้นงานครั้งแรก)"},
+    {codes::kStockFromComment, "stock {0} from the program's comment {1}",
+     "ชิ้นงาน {0} ตามหมายเหตุในโปรแกรม {1}"},
     {codes::kStockFromCycleStart, "stock {0} inferred from {1} (cycle start)", "ชิ้นงาน {0} ประมาณจาก {1} (จุดเริ่มวัฏจักร)"},
     {codes::kBoreInferred, "bore Ø{0} inferred from {1} (work inside without drilling first: tube stock)",
      "รูใน Ø{0} ประมาณจาก {1} (กลึงด้านในโดยไม่เจาะก่อน: ชิ้นงานท่อ)"},
@@ -234,6 +236,14 @@ constexpr MessageText kIoMessages[] = {
      "โปรแกรมกลึงที่ X < 0 (ตั้งแต่บรรทัดที่ {0}): มีดทำงานอีกฝั่งของแนวศูนย์กลาง เหมือนป้อมมีดด้านหลัง จึงกลับด้านมีดไปฝั่งนั้น"},
     {codes::kGuessReplacedStock, "T{0}: {1} instead of {2}: the first guess touched the stock at line {3}",
      "T{0}: ใช้ {1} แทน {2}: มีดที่เดาไว้ตอนแรกแตะชิ้นงานที่บรรทัดที่ {3}"},
+    {codes::kNoseRadiusFromComment, "T{0}: nose radius {1} mm, as its comment says, is used for its offsets",
+     "T{0}: ใช้รัศมีจมูกมีด {1} มม. ตามที่หมายเหตุของมีดระบุ สำหรับออฟเซตของมีดนี้"},
+    {codes::kBladeOnItsRightCorner,
+     "T{0}: the {1} mm blade is taken as set on its right (+Z) corner: set on its left corner, as the library's "
+     "blade is, it would cut into what the other tools turned beside its plunge; choose it in Tool Select if the "
+     "shop sets it otherwise",
+     "T{0}: ใบมีดกว้าง {1} มม. ถือว่าตั้งค่าที่มุมขวา (ด้าน +Z) เพราะถ้าตั้งที่มุมซ้ายแบบใบมีดในคลัง "
+     "จะตัดเข้าไปในส่วนที่มีดอื่นกลึงไว้ข้างตำแหน่งที่ป้อนตัด: ถ้าโรงงานตั้งค่าแบบอื่นให้เลือกที่ เลือกมีดตัด"},
     {codes::kGuessReplacedChuck, "T{0}: {1} instead of {2}: the first guess touched the chuck at line {3}",
      "T{0}: ใช้ {1} แทน {2}: มีดที่เดาไว้ตอนแรกแตะหัวจับที่บรรทัดที่ {3}"},
     // {4} {5}: the row's own radius and tip, set for the tool the table had at that station.

@@ -101,6 +101,9 @@ Box pathBounds(const Move& m, double s0, double s1, const Box& local) {
   return Box{box.z0 + local.z0, box.z1 + local.z1, box.x0 + local.x0, box.x1 + local.x1};
 }
 
+// A feed that ends (or starts) this close to the centre line, in radius, may have cut a part off.
+constexpr double kCutOffReachMm = 1.0;
+
 Diagnostic makeAlarm(const char* code, const Move& m, const Vec2& where) {
   Diagnostic d;
   d.severity = Severity::Alarm;
@@ -510,6 +513,10 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
   if (beyond) mirrored = mirroredAcrossCentre(timeline_->moves[index]);
   const Move& m = beyond ? mirrored : timeline_->moves[index];
   if (m.kind == MoveKind::Dwell) return;
+  // A bar puller or bar stop cuts nothing and touches nothing: it grips or stops the bar with the
+  // spindle stopped. (Where it drags the bar is the machine's own M codes: not modelled, so the
+  // part it leaves stays in view.)
+  if (setup_.tools.isBarHolder(m.tool)) return;
   const Segment& path = m.path;
   if (!path.start.allFinite() || !path.end.allFinite() || (path.isArc() && !path.centre.allFinite())) return;
   const ToolShape* tool = tools_.get(m.tool, m.offset);
@@ -643,6 +650,10 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
     const Stock::Batch batch(stock_);
     forEachInterval(ctx, nosePieces, boxPieces, false, [&](int i, double lo, double hi) { stock_.remove(i, lo, hi); });
   }
+  // A cut that reaches the centre line may have cut a part off: it drops into the catcher.
+  if (sEnd >= 1.0 && std::min(std::abs(m.path.start[1]), std::abs(m.path.end[1])) < kCutOffReachMm &&
+      std::abs(m.path.end[1] - m.path.start[1]) >= std::abs(m.path.end[0] - m.path.start[0]))
+    stock_.catchCutOffPart();
   if (options_.detectCollisions && !tool->holder.empty() && overlapsStock(ctx, nosePieces, boxPieces, true)) {
     const double s = earliest([&](double e) { return overlapsStock(ctx, nose(s0, e), boxes(s0, e), true); });
     const double everywhere = std::numeric_limits<double>::infinity();

@@ -33,6 +33,19 @@ Stock::Stock(double diameter, double length, double resolution, double bore)
   superMax_.assign(static_cast<std::size_t>((n + kSuper - 1) / kSuper), r);
 }
 
+bool Stock::catchCutOffPart() {
+  const int n = columnCount();
+  int gap = 0;
+  while (gap < n && (outer_[static_cast<std::size_t>(gap)] > 0.0 || caught(gap))) ++gap;
+  bool any = false;
+  for (int i = gap + 1; i < n && !any; ++i) any = outer_[static_cast<std::size_t>(i)] > 0.0 && !caught(i);
+  if (!any) return false;
+  if (caught_.empty()) caught_.assign(static_cast<std::size_t>(n), 0);
+  for (int i = gap + 1; i < n; ++i)
+    if (outer_[static_cast<std::size_t>(i)] > 0.0) caught_[static_cast<std::size_t>(i)] = 1;
+  return true;
+}
+
 int Stock::columnAt(double z) const {
   const double f = (z + length_) / dz_;
   if (!(f >= 0.0) || f > columnCount()) return -1;

@@ -11,6 +11,7 @@
 #include "code_index.h"
 #include "diagnostic_codes.h"
 #include "klueng/core/gcode/address_table.h"
+#include "klueng/core/gcode/parser.h"
 #include "flow_check.h"
 #include "modal_check.h"
 #include "klueng/core/gcode/word_format.h"
@@ -61,11 +62,12 @@ long long wholeNumber(const Word& w) {
 int toolStation(const Word& w, const MachineProfile& profile, int turretStations) {
   const auto digits = static_cast<int>(w.number.size());
   const long long n = wholeNumber(w);
-  const bool shapeOk = n >= 0 && digits >= profile.minToolDigits && digits <= 4;
   const auto [tool, offset] = splitToolNumber(n);
   const int maxTool = profile.maxToolStation > 0 ? profile.maxToolStation : turretStations;
   // T0000: the turret stays and the offset is cancelled (an offset for tool 00, T0017, is refused).
+  // Homing lines write it as T0 or T00 as often (`G53 G00 X100 Z150 T00`): zero in any number of digits.
   const bool keepTurret = profile.toolZeroKeepsTurret && tool == 0 && offset == 0;
+  const bool shapeOk = n >= 0 && (digits >= profile.minToolDigits || (keepTurret && digits >= 1)) && digits <= 4;
   return !shapeOk || (tool < 1 && !keepTurret) || tool > maxTool || offset > profile.maxOffset ? -1 : tool;
 }
 
@@ -73,6 +75,15 @@ int toolStation(const Word& w, const MachineProfile& profile, int turretStations
 bool isMacroCallBlock(const Block& block, Dialect dialect) {
   const CodeInfo* row = nullptr;
   return macroCallWord(block, dialect, &row) && row->action != CodeAction::MacroModalCancel;
+}
+
+// A block with a canned or single cycle code (its words are the cycle's, A too).
+bool hasCycleCode(const Block& block) {
+  for (const Word* g : block.all('G')) {
+    if (g->expr >= 0 || g->hasDecimalPoint) continue;
+    if (g->code() >= 70 && g->code() <= 94 && g->code() != 80) return true;
+  }
+  return false;
 }
 
 bool isRuleFourGroup(ModalGroup g) {
@@ -147,6 +158,7 @@ class Checker {
     const Word* dwell = nullptr;        // G04
     const Word* reference = nullptr;    // G28
     const Word* singleCycle = nullptr;  // G90/G92/G94 (system A), G77/G78/G79 (B)
+    CodeAction singleCycleAction = CodeAction::None;
     const Word* compWord = nullptr;     // G40 G41 G42
     const CodeInfo* comp = nullptr;
     bool cannedCycle = false;
@@ -249,6 +261,16 @@ class Checker {
     }
   }
 
+  // The motion a block moves with: its own group-01 code, else the modal one.
+  CodeAction motionOf(const Block& block) const {
+    for (const Word* g : block.all('G')) {
+      if (g->expr >= 0 || g->hasDecimalPoint) continue;
+      if (const CodeInfo* row = findCode('G', g->code(), options_.dialect); row && row->group == ModalGroup::Motion)
+        return row->action;
+    }
+    return motion_;
+  }
+
   // A letter the profile has not. X1e9, Z2.5E-3: a number written with an
   // exponent reads as two words; say so.
   void checkUnknownLetter(const Block& block, int i) {
@@ -263,6 +285,10 @@ class Checker {
       return;
     }
     emit(codes::kLetterNotAllowed, w, {wordText(w), std::string(1, w.letter), letters_});
+    // `G01 X40. A-45.`: a Fanuc 0-T's angle (parameter 3405#4); offered, not assumed.
+    if (w.letter == 'A' && profile_.family == Dialect::Fanuc && motionOf(block) == CodeAction::Line &&
+        !hasCycleCode(block))
+      emit(codes::kAngleWithoutComma, w, {wordText(w), "," + wordText(w)}, Severity::Note);
   }
 
   void checkSequenceNumber(const Word& w) {
@@ -311,8 +337,11 @@ class Checker {
     const auto group = static_cast<std::size_t>(row.group);
     const std::uint32_t groupBit = 1u << group;
     if (seen.groupMask & groupBit) {
-      emit(codes::kSameModalGroup, w,
-           {wordText(*seen.firstOfGroup[group]), wordText(w), std::string(modalGroupNumber(row.group))});
+      // Fanuc: "only the last G code specified is valid" (docs/dialects.md §2); group 00 is no mode.
+      const bool lastWins = profile_.sameGroupLastWins && row.group != ModalGroup::NonModal;
+      emit(lastWins ? codes::kSameGroupLastWins : codes::kSameModalGroup, w,
+           {wordText(*seen.firstOfGroup[group]), wordText(w), std::string(modalGroupNumber(row.group))},
+           lastWins ? Severity::Warning : Severity::Error);
     } else {
       seen.groupMask |= groupBit;
       seen.firstOfGroup[group] = &w;
@@ -333,8 +362,10 @@ class Checker {
     if (row.action == CodeAction::Dwell) seen.dwell = &w;
     if (row.action == CodeAction::ReferenceReturn) seen.reference = &w;
     if (row.action == CodeAction::BoxTurning || row.action == CodeAction::BoxThreading ||
-        row.action == CodeAction::BoxFacing)
+        row.action == CodeAction::BoxFacing) {
       seen.singleCycle = &w;
+      seen.singleCycleAction = row.action;
+    }
   }
 
   void readMCode(const Word& w, const CodeInfo& row, BlockCodes& seen) {
@@ -373,10 +404,16 @@ class Checker {
         emit(codes::kAbsoluteAndIncremental, *later(seen.has(abs), seen.has(inc)),
              {std::string(1, abs), std::string(1, inc)});
     if (seen.dwell) checkDwell(block, *seen.dwell, seen.has('U') ? seen.has('U') : seen.has('X'), seen.has('P'));
-    // A single cycle block names its end point: `G92 S3000` (system B's clamp, read in
-    // system A) would select the threading cycle and set 3000 rpm.
-    if (seen.singleCycle && !seen.axisWords())
-      emit(codes::kSingleCycleWithoutEnd, *seen.singleCycle, {wordText(*seen.singleCycle)});
+    // A single cycle code without its end point only selects the mode: the control moves nothing
+    // (the safety line `G18 G20 G40 G80 G90 G99`). `G92 S3000` (system B's clamp read in system A)
+    // sets 3000 rpm: a warning, and suggestDialect offers the system-B machine.
+    if (seen.singleCycle && !seen.axisWords()) {
+      if (const Word* s = block.find('S'); s && seen.singleCycleAction == CodeAction::BoxThreading)
+        emit(codes::kClampOfAnotherSystem, *seen.singleCycle, {wordText(*seen.singleCycle), wordText(*s)},
+             Severity::Warning);
+      else
+        emit(codes::kSingleCycleWithoutEnd, *seen.singleCycle, {wordText(*seen.singleCycle)}, Severity::Warning);
+    }
     if (seen.reference && !seen.axisWords()) {
       if (profile_.bareG28 == BareG28::NoMotion)
         emit(codes::kG28NoMotion, *seen.reference, {}, Severity::Warning);
@@ -621,6 +658,58 @@ std::vector<Diagnostic> checkToolBitmaps(const Program& program, const CheckOpti
   return out;
 }
 
+namespace {
+
+// At most 20 code points of a tail, blanks trimmed, for a message.
+std::string shownTail(std::string_view text) {
+  const std::size_t b = text.find_first_not_of(" \t");
+  if (b == std::string_view::npos) return {};
+  const std::size_t e = text.find_last_not_of(" \t");
+  std::string_view t = text.substr(b, e + 1 - b);
+  std::size_t n = 0, k = 0;
+  while (k < t.size() && n < 20) {
+    ++k;
+    while (k < t.size() && (static_cast<unsigned char>(t[k]) & 0xC0) == 0x80) ++k;
+    ++n;
+  }
+  return std::string(t.substr(0, k));
+}
+
+bool hasLetter(std::string_view text) {
+  return std::any_of(text.begin(), text.end(), [](char c) {
+    const auto u = static_cast<unsigned char>(c);
+    return std::isalpha(u) || u >= 0x80;
+  });
+}
+
+// What a Fanuc reads after ';' and after a comment's first ')' (Program::tails): text that is not
+// G-code stops the control (E141/E142); words after ';' run as a block Klueng does not run (W114);
+// a lone ')' is a warning (W113).
+void checkTextTails(const Program& program, const MachineProfile& profile, std::vector<Diagnostic>& out) {
+  for (const Program::TextTail& tail : program.tails) {
+    if (tail.afterEndOfBlock ? !profile.semicolonEndsBlock : !profile.commentEndsAtFirstParen) continue;
+    std::string text = tail.text;
+    if (!tail.afterEndOfBlock) std::replace(text.begin(), text.end(), ')', ' ');
+    const Program read = parseFragment(text, tail.line, tail.file);
+    const bool notGcode = hasErrors(read.lexicalDiagnostics);
+    const bool words = !read.blocks.empty();
+    SourceRange at{tail.line, tail.column, static_cast<int>(shownTail(tail.text).size()), tail.file};
+    if (tail.afterEndOfBlock) {
+      if (notGcode)
+        out.push_back(Diagnostic{Severity::Error, codes::kTextAfterEndOfBlock, at, {shownTail(tail.text)}});
+      else if (words)
+        out.push_back(Diagnostic{Severity::Warning, codes::kWordsAfterEndOfBlock, at, {shownTail(tail.text)}});
+    } else if ((notGcode || words) && hasLetter(text)) {
+      out.push_back(Diagnostic{Severity::Error, codes::kTextAfterComment, at, {shownTail(tail.text)}});
+    } else {
+      out.push_back(Diagnostic{Severity::Warning, codes::kLoneCloseAfterComment, at, {shownTail(tail.text)}});
+    }
+    if (out.size() >= codes::kMaxDiagnostics) return;
+  }
+}
+
+}  // namespace
+
 std::vector<Diagnostic> check(const Program& program, const CheckOptions& options) {
   std::vector<Diagnostic> out = program.lexicalDiagnostics;
   const MachineProfile& profile = machineProfile(options.dialect);
@@ -636,6 +725,7 @@ std::vector<Diagnostic> check(const Program& program, const CheckOptions& option
         if (w.blanks && !profile.blanksInWords)
           out.push_back(Diagnostic{Severity::Error, codes::kBlanksInWord, w.range, {w.text()}});
   }
+  if (profile.semicolonEndsBlock || profile.commentEndsAtFirstParen) checkTextTails(program, profile, out);
   Checker checker(options, out);
   if (options.stopAtFirstError && hasErrors(out)) return out;
   std::size_t seen = out.size();  // diagnostics already looked at for stopAtFirstError

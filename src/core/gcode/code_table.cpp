@@ -442,6 +442,21 @@ constexpr CodeInfo kRows[] = {
      "G80 - ยกเลิกวัฏจักร (ไม่มีผลกับเครื่องกลึงนี้)",
      {"cancel the drilling cycle", "ยกเลิกวัฏจักรเจาะ"},
      "cancel cycle drilling ยกเลิกวัฏจักร"},
+    // A machining centre's habit in a lathe's safety line (`G21 G40 G49 G54 G80 G90`): no source says a
+    // Fanuc lathe stops on it (docs/dialects.md §10), so it is read and does nothing, as G80 here.
+    {'G',
+     49,
+     G::ToolLength,
+     P::State,
+     kF,
+     kNoFlags,
+     A::None,
+     "Tool length compensation cancel",
+     "ยกเลิกการชดเชยความยาวมีด",
+     "G49 - cancel tool length compensation (a machining-centre code; no effect on this lathe)",
+     "G49 - ยกเลิกการชดเชยความยาวมีด (รหัสของเครื่องกัด ไม่มีผลกับเครื่องกลึงนี้)",
+     {"cancel tool length compensation", "ยกเลิกการชดเชยความยาวมีด"},
+     "tool length compensation cancel mill safety line ยกเลิก ชดเชยความยาว"},
     // Drilling on centre. Fanuc 0i-TF: G83 Q in least increments (or a length with its
     // decimal point, decimal point programming), P in ms;
     // Haas: Q a length with a decimal point, P a dwell as G04 reads it.
@@ -1298,6 +1313,7 @@ std::string_view modalGroupNumber(ModalGroup group) {
     case ModalGroup::ReturnLevel: return "11";
     case ModalGroup::WorkOffset: return "14";
     case ModalGroup::Plane: return "16";
+    case ModalGroup::ToolLength: return "08";
     case ModalGroup::MSpindle: return "M03/M04/M05";
     case ModalGroup::MCoolant: return "M08/M09";
     case ModalGroup::MCAxis: return "M41/M91";

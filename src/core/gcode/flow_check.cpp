@@ -65,6 +65,7 @@ class FlowChecker {
   ProgramIndex index_;
   std::vector<Call> calls_;
   std::vector<bool> hasConditions_;
+  bool feedMayBeSet_ = true;      // some block before this one in the section may have given F
   std::set<int> profileStarts_;  // first profile blocks already looked at  // per section: IF/WHILE/GOTO/M99 P may end
                                  // a recursion
 
@@ -81,6 +82,8 @@ class FlowChecker {
       int block;
     };
     std::vector<Open> open;
+    // A called program may run at its caller's feed: only the first program starts at feed zero.
+    feedMayBeSet_ = section != 0 || s.first != 0;
     for (int i = s.first; i < s.end; ++i) {
       const Block& b = program_.blocks[static_cast<std::size_t>(i)];
       const Statement& st = b.statement;
@@ -132,6 +135,8 @@ class FlowChecker {
         checkCalls(b, section, i);
         checkProfile(b, section, i);
       }
+      // A feed may come from a block the walk cannot follow (a call, a jump, a macro value).
+      if (st.kind != StatementKind::None || b.mayHave('F') || b.mayHave('P')) feedMayBeSet_ = true;
     }
     for (const Open& o : open) {
       const Block& b = program_.blocks[static_cast<std::size_t>(o.block)];
@@ -192,6 +197,14 @@ class FlowChecker {
            {g->text() + " " + q->text(), std::to_string(q->code()), std::to_string(p->code())});
     else if (nf < ns)
       emit(codes::kProfileBlockMissing, q->range, {g->text() + " " + q->text(), std::to_string(q->code())});
+    else if (ns <= index && index <= nf)
+      // The shape would hold the cycle that reads it (Fanuc PS0066: a command not allowed in the shape).
+      emit(codes::kProfileHoldsItsCycle, g->range,
+           {g->text() + " " + p->text() + " " + q->text(), std::to_string(p->code()), std::to_string(q->code())});
+    // A roughing cycle cuts at its own F or the modal one: none given yet is feed zero (Fanuc PS0011).
+    const CodeInfo* row = findCode('G', g->code(), profile_.dialect);
+    if (row && row->action != CodeAction::Finishing && !b.mayHave('F') && !feedMayBeSet_)
+      emit(codes::kRoughingWithoutFeed, g->range, {g->text()});
     if (!profile_.cycles.profileFirstBlockNeedsG00G01 || !profileStarts_.insert(ns).second) return;
     const Block& first = program_.blocks[static_cast<std::size_t>(ns)];
     if (first.statement.kind != StatementKind::None || actionWord(first, 'G', CodeAction::Rapid, profile_.dialect) ||

@@ -85,6 +85,11 @@ const Key kKeys[] = {
     {"high_m", Type::Choice, 0, 0, "error|warning", KLUENG_SET(KLUENG_P.highMIsWarning = v.choice == 1)},
     {"blanks_in_words", Type::Flag, 0, 0, {}, KLUENG_SET(KLUENG_P.blanksInWords = v.number != 0.0)},
     {"comment_to_line_end", Type::Flag, 0, 0, {}, KLUENG_SET(KLUENG_P.commentToLineEnd = v.number != 0.0)},
+    {"semicolon_ends_block", Type::Flag, 0, 0, {}, KLUENG_SET(KLUENG_P.semicolonEndsBlock = v.number != 0.0)},
+    {"comment_ends_at_first_paren", Type::Flag, 0, 0, {},
+     KLUENG_SET(KLUENG_P.commentEndsAtFirstParen = v.number != 0.0)},
+    {"angle_without_comma", Type::Flag, 0, 0, {}, KLUENG_SET(KLUENG_P.angleWithoutComma = v.number != 0.0)},
+    {"same_group_last_wins", Type::Flag, 0, 0, {}, KLUENG_SET(KLUENG_P.sameGroupLastWins = v.number != 0.0)},
     {"m_codes", Type::Numbers, 0, 99, {}, KLUENG_SET(m.mCodes = v.numbers)},
     // Cycle defaults.
     {"rough_depth_inch", Type::Real, 0, 100, {}, KLUENG_SET(KLUENG_P.cycles.roughDepthInch = v.number)},
@@ -140,7 +145,11 @@ const Key kKeys[] = {
 #undef KLUENG_P
 
 // Keys a file must hold unless it names a `base` (m_codes may be left out: all).
-bool optionalKey(std::string_view name) { return name == "m_codes"; }
+// Keys added after machine files were in teachers' hands: left out, they keep the old reading.
+bool optionalKey(std::string_view name) {
+  return name == "m_codes" || name == "semicolon_ends_block" || name == "comment_ends_at_first_paren" ||
+         name == "angle_without_comma" || name == "same_group_last_wins";
+}
 
 std::string_view trim(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r')) s.remove_prefix(1);

@@ -62,6 +62,11 @@ class LineParser {
   LineParser(Program& program, std::size_t& diagnosticBudget, int file)
       : program_(program), budget_(diagnosticBudget), file_(file) {}
 
+  void addTail(bool afterEndOfBlock, int column, std::string_view text) {
+    if (program_.tails.size() >= codes::kMaxLexicalDiagnostics) return;  // a hostile file: bounded
+    program_.tails.push_back({lineNumber_, column, file_, afterEndOfBlock, std::string(text)});
+  }
+
   void parseLine(std::string_view line, int lineNumber) {
     line_ = line;
     lineNumber_ = lineNumber;
@@ -85,8 +90,12 @@ class LineParser {
         const int startCol = col;
         const std::size_t close = commentClose(line, i);
         const std::size_t j = close == std::string_view::npos ? line.size() : close;
+        const std::size_t firstClose = line.find(')', i + 1);
         int endCol = col + 1;
-        for (std::size_t k = i + 1; k < j; k += utf8SequenceLength(line, k)) ++endCol;
+        for (std::size_t k = i + 1; k < j; k += utf8SequenceLength(line, k)) {
+          if (k == firstClose + 1) addTail(false, endCol, line.substr(k, j + 1 - k));
+          ++endCol;
+        }
         appendComment(block, line.substr(i + 1, j - i - 1));
         if (j >= line.size()) {
           report(codes::kCommentToLineEnd, startCol, endCol - startCol, {}, Severity::Warning);
@@ -97,6 +106,8 @@ class LineParser {
           col = endCol + 1;
         }
       } else if (c == ';') {
+        if (line.find_first_not_of(" \t\f\v;", i + 1) != std::string_view::npos)
+          addTail(true, col + 1, line.substr(i + 1));
         appendComment(block, line.substr(i + 1));
         i = line.size();
       } else if (block.statement.kind == StatementKind::None && isLetter(c) && i + 1 < line.size() &&
@@ -671,8 +682,41 @@ std::atomic<std::size_t> parses{0};
 
 std::size_t parseCount() { return parses.load(std::memory_order_relaxed); }
 
+// The start of the first line that is a tape mark ('%' after blanks), when lines stand
+// before it and the program goes on after it; nullptr otherwise (no leader).
+const char* firstTapeMark(const char* begin, const char* end) {
+  const char* line = begin;
+  bool first = true;
+  for (const char* c = begin; c < end; ++c) {
+    if (*c == '\n' || *c == '\r') {
+      line = c + 1;
+      first = false;
+      continue;
+    }
+    if (isBlank(static_cast<unsigned char>(*c))) continue;
+    if (*c == '%') {
+      if (first) return nullptr;
+      // The program must go on after it: a '%' that only ends the file closes the program, no leader.
+      while (c < end && *c != '\n' && *c != '\r') ++c;
+      for (; c < end; ++c)
+        if (!isBlank(static_cast<unsigned char>(*c)) && *c != '\n' && *c != '\r' && *c != '%') return line;
+      return nullptr;
+    }
+    // Some text on this line: skip to its end and look at the next.
+    while (c < end && *c != '\n' && *c != '\r') ++c;
+    if (c == end) break;
+    line = c + 1;
+    first = false;
+  }
+  return nullptr;
+}
+
 Program parse(std::string_view text, int firstLine, int file) {
   parses.fetch_add(1, std::memory_order_relaxed);
+  return parseFragment(text, firstLine, file);
+}
+
+Program parseFragment(std::string_view text, int firstLine, int file) {
   Program program;
   program.firstLine = firstLine;
   std::size_t budget = codes::kMaxLexicalDiagnostics;
@@ -689,6 +733,22 @@ Program parse(std::string_view text, int firstLine, int file) {
 
   int lineNumber = firstLine;
   const char* pos = begin;
+  // A control reading a file skips the leader before the first '%' line (a title, a part
+  // name in any script): those lines are counted, not read.
+  const char* leaderEnd = firstTapeMark(begin, end);
+  bool leaderHasText = false;
+  while (leaderEnd && pos < leaderEnd) {
+    const char* lineEnd = pos;
+    while (lineEnd < end && *lineEnd != '\n' && *lineEnd != '\r') ++lineEnd;
+    for (const char* c = pos; c < lineEnd; ++c)
+      if (!isBlank(static_cast<unsigned char>(*c))) leaderHasText = true;
+    pos = lineEnd < end && *lineEnd == '\r' && lineEnd + 1 < end && lineEnd[1] == '\n' ? lineEnd + 2 : lineEnd + 1;
+    ++program.lineCount;
+    ++lineNumber;
+  }
+  if (leaderHasText)
+    program.lexicalDiagnostics.push_back(
+        Diagnostic{Severity::Note, codes::kLeaderSkipped, {firstLine, 1, 0, file}, {std::to_string(lineNumber - 1)}});
   while (pos < end) {
     // Line ends: LF, CRLF or CR. Lines are short: one pass over a line's bytes
     // finds its end (a memchr call or two per line cost more than the bytes).
@@ -708,6 +768,14 @@ Program parse(std::string_view text, int firstLine, int file) {
     pos = next;
   }
   return program;
+}
+
+void readAnglesWithoutComma(Program& program) {
+  for (Block& block : program.blocks) {
+    if (!block.mayHave('A') || block.findComma('A')) continue;
+    for (Word& w : block.words)
+      if (w.letter == 'A') w.comma = true;
+  }
 }
 
 }  // namespace klueng::core::gcode

@@ -1,5 +1,8 @@
 #include "klueng/core/infer/stock_inference.h"
 
+#include <cctype>
+#include <cstdlib>
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -209,7 +212,8 @@ StockInference inferStock(const gcode::Program& program, const Timeline& run, co
       r.inch = unitsOfBlock.count(m.blockIndex) && unitsOfBlock[m.blockIndex] == Units::Inch;
       const double unit = r.inch ? kMmPerInch : 1.0;
       // A plain first cut along -Z is a pass inside the bar; anything else starts above it.
-      const bool insideBar = !r.cycleStart && first == i && isZPass(m);
+      // (A feed that only reaches the face, `G01 Z0.` at the approach's X, is no pass inside it.)
+      const bool insideBar = !r.cycleStart && first == i && isZPass(m) && zOf(m.path.end) < -1e-6;
       r.approachDiameter = diameterOf(moves[first].path.start) / unit;
       r.diameter = r.inch ? inchBarSize(r.approachDiameter, insideBar) : metricBarSize(r.approachDiameter, insideBar);
     }
@@ -296,6 +300,128 @@ StockInference inferStock(const gcode::Program& program, const Timeline& run, co
   return r;
 }
 
+namespace {
+
+bool stockWordIn(const std::string& up) {
+  for (const char* w : {"MATERIAL", "STOCK", "BAR", "TUBING", "TUBE", "BLANK", "ROHTEIL", "BRUT", "BARRA", "BARRE",
+                        "MATERIA", "TARUGO", "\xD0\x97\xD0\x90\xD0\x93\xD0\x9E\xD0\xA2\xD0\x9E\xD0\x92\xD0\x9A\xD0\x90",
+                        "\xE0\xB8\x8A\xE0\xB8\xB4\xE0\xB9\x89\xE0\xB8\x99\xE0\xB8\x87\xE0\xB8\xB2\xE0\xB8\x99"})
+    if (up.find(w) != std::string::npos) return true;
+  return false;
+}
+
+// The next word after position i (letters only, upper case), skipping blanks and an inch mark.
+std::string wordAfter(const std::string& up, std::size_t i) {
+  while (i < up.size() && (up[i] == ' ' || up[i] == '"')) ++i;
+  std::size_t e = i;
+  while (e < up.size() && std::isalpha(static_cast<unsigned char>(up[e]))) ++e;
+  return up.substr(i, e - i);
+}
+
+// The letters (or Ø) right before position i, skipping blanks, '=' and ':'.
+std::string wordBefore(const std::string& up, std::size_t i) {
+  while (i > 0 && (up[i - 1] == ' ' || up[i - 1] == '=' || up[i - 1] == ':')) --i;
+  if (i >= 2 && up.compare(i - 2, 2, "\xC3\x98") == 0) return "DIA";  // Ø
+  std::size_t b = i;
+  while (b > 0 && std::isalpha(static_cast<unsigned char>(up[b - 1]))) --b;
+  return up.substr(b, i - b);
+}
+
+// A tool list's line ("(T08 ID TURN 3/4" SHANK BORING BAR)") names a tool, not the bar.
+bool namesATool(const std::string& up) {
+  for (const char* w : {"TOOL", "BORING", "SHANK", "HOLDER", "INSERT", "PULLER", "PULER", "DRILL", "FEEDER"})
+    if (up.find(w) != std::string::npos) return true;
+  for (std::size_t i = 0; i + 1 < up.size(); ++i)
+    if (up[i] == 'T' && std::isdigit(static_cast<unsigned char>(up[i + 1])) &&
+        (i == 0 || !std::isalpha(static_cast<unsigned char>(up[i - 1]))))
+      return true;
+  return false;
+}
+
+}  // namespace
+
+bool readStockComment(StockInference& r, std::string_view gcode, int firstLine) {
+  int line = firstLine;
+  for (std::size_t pos = 0; pos < gcode.size(); ++line) {
+    std::size_t end = gcode.find('\n', pos);
+    if (end == std::string_view::npos) end = gcode.size();
+    const std::string_view text = gcode.substr(pos, end - pos);
+    pos = end + 1;
+    const std::size_t open = text.find('(');
+    if (open == std::string_view::npos) continue;
+    std::string up(text.substr(open + 1));
+    for (char& c : up) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    if (!stockWordIn(up) || namesATool(up)) continue;
+    double od = 0.0, id = 0.0, length = 0.0;
+    std::vector<double> plain;  // numbers without a mark, in order
+    bool sizedPair = false;     // a number followed by "X" (50 X 100)
+    bool inchMark = up.find('"') != std::string::npos;
+    for (std::size_t i = 0; i < up.size();) {
+      const bool startsNumber = std::isdigit(static_cast<unsigned char>(up[i])) ||
+                                (up[i] == '.' && i + 1 < up.size() && std::isdigit(static_cast<unsigned char>(up[i + 1])));
+      if (!startsNumber) {
+        ++i;
+        continue;
+      }
+      // Glued to a word ("G54", "1018CRS", "IC20"), not a size; D50 and L100 are.
+      const bool glued = i > 0 && (std::isalnum(static_cast<unsigned char>(up[i - 1])) || up[i - 1] == '.') &&
+                         wordBefore(up, i) != "D" && wordBefore(up, i) != "L" && wordBefore(up, i) != "X";
+      if (glued) {
+        while (i < up.size() && (std::isalnum(static_cast<unsigned char>(up[i])) || up[i] == '.')) ++i;
+        continue;
+      }
+      std::size_t e = i;
+      while (e < up.size() && (std::isdigit(static_cast<unsigned char>(up[e])) || up[e] == '.')) ++e;
+      if ((e < up.size() && up[e] == '/') || (i > 0 && up[i - 1] == '/')) {  // 3/4": a fraction, not read
+        i = e + 1;
+        continue;
+      }
+      const double v = std::atof(up.substr(i, e - i).c_str());
+      const std::string after = wordAfter(up, e), before = wordBefore(up, i);
+      if (after == "IN" || after == "INCH") inchMark = true;
+      if (after == "OD" || before == "OD" || before == "DIA" || before == "D" || after == "DIA")
+        od = v;
+      else if (after == "ID" || before == "ID")
+        id = v;
+      else if (after == "L" || after == "LG" || after == "LONG" || after == "LENGTH" || before == "L" ||
+               before == "LG" || before == "LENGTH")
+        length = v;
+      else if (std::isalpha(static_cast<unsigned char>(e < up.size() ? up[e] : ' ')))
+        ;  // "1018CRS", "3003Y": a name, not a size
+      else if (before == "X" && od > 0.0 && length == 0.0)
+        length = v;  // Ø32x60: the length after the diameter's x
+      else
+        plain.push_back(v);
+      // "50 X 100": the sizes are written as a size is, or there is no unmarked size at all.
+      const std::string next = wordAfter(up, e);
+      sizedPair = sizedPair || next == "X";
+      i = e;
+    }
+    // "DIA 50 X 100", "1.750 BAR": unmarked numbers are the diameter, then the length.
+    std::size_t k = 0;
+    if (sizedPair) {
+      if (od == 0.0 && k < plain.size()) od = plain[k++];
+      if (length == 0.0 && k < plain.size()) length = plain[k++];
+    }
+    if (!(od > 0.0) || (id > 0.0 && id >= od) || (!r.found && !(length > 0.0))) continue;
+    const bool inch = inchMark || (r.inch && up.find("MM") == std::string::npos);
+    const double toUnit = inch == r.inch ? 1.0 : (inch ? kMmPerInch : 1.0 / kMmPerInch);
+    // A bar the program could not have come from (half the size its moves show, or twice) is another number.
+    if (r.found && (od * toUnit < 0.8 * r.diameter || od * toUnit > 2.0 * r.diameter)) continue;
+    r.diameter = od * toUnit;
+    if (id > 0.0) r.bore = id * toUnit;
+    if (length > 0.0) r.length = length * toUnit;
+    r.commentLine = line;
+    const std::string_view shown = text.substr(open);
+    r.commentText = std::string(shown.substr(0, std::min<std::size_t>(shown.size(), 60)));
+    while (!r.commentText.empty() && (r.commentText.back() == ' ' || r.commentText.back() == '\r'))
+      r.commentText.pop_back();
+    r.found = true;
+    return true;
+  }
+  return false;
+}
+
 std::vector<Diagnostic> stockNotes(const io::JobHeader& stock, const StockInference* inference, std::string_view gcode,
                                    int firstLine) {
   const std::string size = io::stockSizeText(stock);
@@ -309,6 +435,10 @@ std::vector<Diagnostic> stockNotes(const io::JobHeader& stock, const StockInfere
   if (!inference || !inference->found) return {note(codes::kStockDefault, 0, {size})};
   const StockInference& r = *inference;
   std::vector<Diagnostic> notes;
+  if (r.commentLine > 0) {
+    notes.push_back(note(codes::kStockFromComment, r.commentLine, {size, r.commentText}));
+    return notes;
+  }
   if (r.outsideFromInside)
     notes.push_back(note(codes::kStockInferredFromBore, r.boreLine, {size, number(r.largestCutDiameter)}));
   else if (r.largestTurnedDiameter > 0.0)

@@ -111,6 +111,9 @@ std::map<int, MotionUse> recordMotion(std::span<const Move> moves, bool mirror) 
   // inward from a bore. (A feed toward the tailstock ends a face profile or a
   // back cut, and what follows it says nothing about the side.)
   Pending zRun;
+  // A straight feed outward off the centre line, then straight back in: an inside groove's plunge
+  // from a bore (an outside tool never feeds out into the wall and drops back in).
+  Pending outward;
   for (const Move& m : moves) {
     if (m.tool < 1 || m.kind == MoveKind::Dwell) continue;
     const Ends p = endsOf(m, mirror);
@@ -127,6 +130,14 @@ std::map<int, MotionUse> recordMotion(std::span<const Move> moves, bool mirror) 
       if (dx < 0.0 && !u.insideLine) u.insideLine = zRun.line;
       zRun = {};
     }
+    if (outward.tool && (outward.tool != m.tool || std::abs(dz) > 1e-3 || dx > 1e-3)) outward = {};
+    if (outward.tool && dx < -1e-3) {
+      u.inside += outward.length;
+      if (!u.insideLine) u.insideLine = outward.line;
+      outward = {};
+    }
+    if (m.kind == MoveKind::Line && std::abs(dz) < 1e-3 && dx > 0.0 && p.start.y() > kOnCentreMm)
+      outward = Pending{m.tool, dx, m.line, false};
     if (m.kind == MoveKind::Rapid) continue;
     if (m.kind == MoveKind::Thread && !u.threadLine) u.threadLine = m.line;
     if (std::abs(p.start.y()) <= kOnCentreMm && std::abs(p.end.y()) <= kOnCentreMm && dz < 0.0 &&
@@ -296,10 +307,21 @@ class Gatherer {
       if (auto listed = toolList_.find(station); listed != toolList_.end()) lines.push_back(listed->second);
       for (std::size_t k = 1; k < lines.size(); ++k) texts.push_back(rawComment(lines[k]));
     }
+    // A radius any of them states (the tool list's "CNMG 432" as well as the T line's "R0.4").
+    for (std::size_t k = 0; k < texts.size() && !u.noseRadiusMm; ++k) {
+      const std::string text(commentForStation(texts[k], station));
+      if (text.empty()) continue;
+      if (const double r = classifyComment(text, unitMm).noseRadiusMm; r > 0.0) {
+        u.noseRadiusMm = r;
+        u.noseRadiusLine = lines[k];
+      }
+    }
     for (std::size_t k = 0; k < texts.size(); ++k) {
       const std::string text(commentForStation(texts[k], station));  // its part of "(T1 OD, T3 THREAD)"
       if (text.empty()) continue;
       const CommentTool c = classifyComment(text, unitMm);
+      if (c.holdsBar) u.holdsBar = true;
+      if (c.pullsBar) u.pullsBar = true;
       if (c.kind == ToolKind::Unknown) continue;
       Evidence e;
       e.kind = c.kind;
@@ -308,6 +330,7 @@ class Gatherer {
       e.line = lines[k];
       e.strong = true;
       e.finishing = c.finishing;
+      e.roughing = c.roughing;
       e.insert = c.insert;
       e.drillMm = c.drillMm;
       // "(FINISHING)" above T0202 and "(T02 = 35* FINISH TURNING TOOL ...)" in the tool

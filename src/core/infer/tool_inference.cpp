@@ -295,6 +295,71 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
       out.setup.machine.toolsBeyondCentre = false;  // in front, whatever the machine's setting says
     }
   }
+  constexpr double kFinishingNoseMm = 0.4;
+  // The nose radius a station's comment states ("(PROXODNOI R0.4)", "(OD TURN CNMG 431)") is the
+  // shop's insert: it wins over the guessed insert's and the shipped table's (issue 38 item 7).
+  if (context.fromProgram)
+    for (const auto& [station, use] : uses) {
+      // A finishing tool whose comment states no radius: the library's finishing insert's (R0.4),
+      // not the roughing R0.8 a table row or the everyday insert would give.
+      const bool finishing =
+          use.comment && use.comment->finishing && !use.comment->roughing && use.comment->kind == ToolKind::Turning;
+      const double stated = use.noseRadiusMm > 0.0 ? use.noseRadiusMm : finishing ? kFinishingNoseMm : 0.0;
+      if (!(stated > 0.0) || overridden.count(station)) continue;
+      bool changed = false;
+      for (int n : use.offsets.empty() ? std::set<int>{station} : use.offsets) {
+        if (n < 1 || n > io::kOffsetCount) continue;
+        io::Offset& o = out.setup.offsets.at(n);
+        // (CNMG 432 is 0.794 mm: the R0.8 row is that insert.) Drills and threads have no nose.
+        if (std::abs(o.r - stated) < 0.02 || o.tip == 0 || o.tip == 7 || o.tip == 8) continue;
+        if (!(use.noseRadiusMm > 0.0) && o.r <= stated) continue;  // a finishing guess only makes a nose smaller
+        o.r = stated;
+        changed = true;
+      }
+      if (!changed) continue;
+      Diagnostic d;
+      d.severity = Severity::Note;
+      d.code = codes::kNoseRadiusFromComment;
+      d.range.line = use.noseRadiusMm > 0.0 ? use.noseRadiusLine : use.comment->line;
+      d.args = {twoDigits(station), fmt::format("{:g}", std::round(stated * 1000.0) / 1000.0)};
+      out.offsetNotes.push_back(std::move(d));
+    }
+  // A guessed blade's controlled corner (issue 38): the library's blades are set on their left
+  // (chuck-side) corner; where that blade, at the Z it plunges to, would cut into what the other
+  // tools turned (a back chamfer, a head up to the cut-off), the shop sets it on its right corner.
+  if (context.fromProgram)
+    for (const ToolChoice& c : out.choices) {
+      const io::LibraryTool* tool = library.find(c.libraryId);
+      const auto use = uses.find(c.station);
+      if (!tool || overridden.count(c.station) || use == uses.end() || tool->tip != 3 || !(tool->size > 0.0) ||
+          (tool->kind != ToolKind::Parting && tool->kind != ToolKind::Grooving) || use->second.motion.plunge <= 0.0)
+        continue;
+      const double zPlunge = use->second.motion.plungeZ;
+      double turnedTo = zPlunge;  // the lowest Z other tools fed to within the blade's width above the plunge
+      for (const Move& m : out.record->moves) {
+        if (m.tool == c.station || m.tool < 1 || m.kind == MoveKind::Rapid || m.kind == MoveKind::Dwell) continue;
+        for (const Vec2& p : {m.path.start, m.path.end})
+          // (A pass that ends at the cut-off's Z, its end shifted by a nose radius, is not a feature.)
+          if (p.x() > zPlunge + std::max(0.5, tool->size / 4.0) && p.x() < zPlunge + tool->size - 0.05 &&
+              std::abs(p.y()) > 0.01)
+            turnedTo = std::max(turnedTo, p.x());
+      }
+      if (turnedTo <= zPlunge) continue;
+      for (int n : use->second.offsets)
+        if (n >= 1 && n <= io::kOffsetCount) out.setup.offsets.at(n).tip = 4;
+      Diagnostic d;
+      d.severity = Severity::Note;
+      d.code = codes::kBladeOnItsRightCorner;
+      d.range.line = use->second.motion.plungeLine;
+      d.args = {twoDigits(c.station), fmt::format("{:g}", tool->size)};
+      out.offsetNotes.push_back(std::move(d));
+    }
+  // A bar puller or bar stop cuts nothing, whoever chose the station's picture.
+  for (const auto& [station, use] : uses)
+    if (use.holdsBar) {
+      out.setup.tools.holdsBar[static_cast<std::size_t>(station - 1)] = true;
+      out.setup.tools.pullsBarOut[static_cast<std::size_t>(station - 1)] = use.pullsBar;
+    }
   // Every station of a plain program the user did not set is a guess.
   if (context.fromProgram)
     for (const auto& [station, use] : uses)

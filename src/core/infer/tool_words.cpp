@@ -116,9 +116,51 @@ double sizeMm(const std::string& up, double unitMm) {
 
 }  // namespace
 
+namespace {
+
+bool isUpperAt(const std::string& s, std::size_t i) { return i < s.size() && s[i] >= 'A' && s[i] <= 'Z'; }
+bool isDigitAt(const std::string& s, std::size_t i) { return i < s.size() && s[i] >= '0' && s[i] <= '9'; }
+
+// The nose radius a tool comment states, in mm; 0 when none: "R0.4", "R.8", "R0,2" (a radius word
+// of its own), an ISO insert code's last two digits ("CNMG 120408": 0.8 mm), an ANSI code's last
+// digit in 64ths of an inch ("CNMG 431": 1/64 in).
+double statedNoseRadiusMm(const std::string& up, double unitMm) {
+  for (std::size_t i = 0; i < up.size(); ++i) {
+    // An insert code: four letters, an optional blank, then 6 (ISO) or 3 (ANSI) digits.
+    if (i + 4 < up.size() && (i == 0 || !isUpperAt(up, i - 1)) && isUpperAt(up, i) && isUpperAt(up, i + 1) &&
+        isUpperAt(up, i + 2) && isUpperAt(up, i + 3) && std::string_view("CDKRSTVW").find(up[i]) != std::string_view::npos) {
+      std::size_t d = i + 4;
+      if (d < up.size() && up[d] == ' ') ++d;
+      std::size_t e = d;
+      while (isDigitAt(up, e)) ++e;
+      if (e - d == 6) return (up[e - 2] - '0') + (up[e - 1] - '0') / 10.0;
+      if (e - d == 3 && up[e - 1] >= '1' && up[e - 1] <= '8') return (up[e - 1] - '0') * 25.4 / 64.0;
+    }
+    // "R0.4": R alone before a number with a decimal point (a comma for it too).
+    if (up[i] != 'R' || (i > 0 && (isUpperAt(up, i - 1) || isDigitAt(up, i - 1)))) continue;
+    std::size_t k = i + 1;
+    while (k < up.size() && (up[k] == ' ' || up[k] == '=')) ++k;
+    std::size_t e = k;
+    bool point = false;
+    while (e < up.size() && (isDigitAt(up, e) || ((up[e] == '.' || up[e] == ',') && !point))) {
+      point = point || up[e] == '.' || up[e] == ',';
+      ++e;
+    }
+    if (!point || e == k || isUpperAt(up, e)) continue;
+    std::string number = up.substr(k, e - k);
+    std::replace(number.begin(), number.end(), ',', '.');
+    const double mm = std::atof(number.c_str()) * unitMm;
+    if (mm >= 0.05 && mm <= 3.0) return mm;
+  }
+  return 0.0;
+}
+
+}  // namespace
+
 CommentTool classifyComment(std::string_view comment, double unitMm) {
   CommentTool out;
   const std::string up = upper(comment);
+  out.noseRadiusMm = statedNoseRadiusMm(up, unitMm);
   const std::vector<std::string> ws = words(up);
   // The words shops write in English, Thai and the other languages lathe programs
   // come in (French, Spanish/Portuguese, German, Italian, Polish): a tool's kind is
@@ -142,9 +184,23 @@ CommentTool classifyComment(std::string_view comment, double unitMm) {
     out.insert = "dnmg";
   else if (hasWord(ws, {"CNMG", "CCMT"}) || angle("80"))
     out.insert = "cnmg";
+  out.roughing = hasPrefix(ws, {"ROUGH", "ROUSH", "EBAUCH", "DESBAST", "SCHRUPP", "ZGRUB", "CERNOV", "CHERNOV"}) ||
+                 hasText(up, {"กลึงหยาบ", "ЧЕРНОВ", "чернов"});
   out.finishing =
-      hasPrefix(ws, {"FINISH", "FIN", "ACAB", "SCHLICHT", "WYKANCZ"}) || hasText(up, {"กลึงละเอียด", "ละเอียด"});
+      hasPrefix(ws, {"FINISH", "FIN", "ACAB", "SCHLICHT", "WYKANCZ", "CISTOV", "CHISTOV"}) ||
+      hasText(up, {"กลึงละเอียด", "ละเอียด", "ЧИСТОВ", "чистов"});
 
+  // A bar puller or bar stop, as shops spell it ("BARPULER", "BAR PULLER", "BAR STOP", "PUXADOR"):
+  // it grips or stops the bar with the spindle stopped and cuts nothing.
+  if (followedBy(ws, "BAR", "PULLER") || followedBy(ws, "BAR", "PULER") || followedBy(ws, "BAR", "PULL") ||
+      followedBy(ws, "BAR", "STOP") || followedBy(ws, "BAR", "FEEDER") || followedBy(ws, "BAR", "GRIPPER") ||
+      hasPrefix(ws, {"BARPUL", "BARSTOP", "BARGRIP", "PUXADOR", "STANGENZIEH", "STANGENGREIF", "TIREBARRE",
+                     "EMBARREUR", "JALADOR"}) ||
+      hasText(up, {"ตัวดึงชิ้นงาน", "ตัวดึงบาร์", "ตัวกั้นบาร์", "ЗАХВАТ ПРУТКА"})) {
+    out.holdsBar = true;
+    out.pullsBar = !followedBy(ws, "BAR", "STOP") && !hasPrefix(ws, {"BARSTOP"}) && !hasText(up, {"ตัวกั้นบาร์"});
+    return out;
+  }
   if (followedBy(ws, "CENTER", "DRILL") || followedBy(ws, "CENTRE", "DRILL") ||
       hasWord(ws, {"SPOT", "CENTERDRILL", "CENTRER", "CENTRAGE", "ZENTRIER"}) || hasText(up, {"นำศูนย์", "รูศูนย์"})) {
     out.kind = ToolKind::CentreDrill;
@@ -153,8 +209,8 @@ CommentTool classifyComment(std::string_view comment, double unitMm) {
     out.kind = inside ? ToolKind::ThreadingId : ToolKind::ThreadingOd;
   } else if (followedBy(ws, "CUT", "OFF") || followedBy(ws, "PART", "OFF") ||
              hasPrefix(ws, {"CUTOFF", "PARTING", "PARTOFF", "TRONC", "TRONZ", "SANGR", "BEDAME", "ABSTECH", "ODCIN",
-                            "ODCIEC"}) ||
-             hasText(up, {"ตัดขาด", "ตัดชิ้นงาน"})) {
+                            "ODCIEC", "OTREZ"}) ||
+             hasText(up, {"ตัดขาด", "ตัดชิ้นงาน", "ОТРЕЗ", "отрез"})) {
     out.kind = ToolKind::Parting;
   } else if (hasPrefix(ws, {"GROOV", "GORGE", "RANUR", "EINSTECH", "ROWK", "ROWEK"}) || hasText(up, {"ร่อง"})) {
     out.kind = ToolKind::Grooving;
@@ -167,8 +223,9 @@ CommentTool classifyComment(std::string_view comment, double unitMm) {
   } else if (!out.insert.empty() || out.finishing ||
              hasWord(ws, {"OD", "ROUGH", "ROUGHING", "TURN", "TURNING", "FACE", "FACING", "PROFILE", "CONTOUR"}) ||
              hasPrefix(ws, {"EBAUCH", "DRESSAGE", "CHARIOT", "DESBAST", "REFRENT", "CILINDR", "FACEAR", "SCHRUPP",
-                            "TOCZ", "PLANOW", "ZEWN"}) ||
-             hasText(up, {"กลึงปอก", "กลึงหยาบ", "ปาดหน้า", "กลึงผิว", "กลึงขึ้นรูป"})) {
+                            "TOCZ", "PLANOW", "ZEWN", "PROXODN", "PROHODN", "TOCEN", "TOCHEN"}) ||
+             hasText(up, {"กลึงปอก", "กลึงหยาบ", "ปาดหน้า", "กลึงผิว", "กลึงขึ้นรูป", "ПРОХОДН", "проходн", "ТОЧЕН",
+                          "точен"})) {
     out.kind = ToolKind::Turning;
   }
   return out;

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <sstream>
 #include <thread>
 
 #include "klueng/core/diagnostic_codes.h"
@@ -17,6 +18,7 @@
 #include "klueng/core/gcode/decimal_point.h"
 #include "klueng/core/machine/setup_files.h"
 #include "klueng/core/infer/stock_inference.h"
+#include "klueng/core/infer/units_reading.h"
 #include "klueng/core/machine/subprogram_files.h"
 #include "infer/check_with_tools.h"  // the check and the tool inference side by side (infer's own)
 
@@ -50,8 +52,10 @@ std::vector<Diagnostic> resolveJobStock(io::ProgramFile& file, const gcode::Prog
   if (h.stockSource == io::StockSource::CommandLine || h.stockSource == io::StockSource::JobDetails)
     return machine::stockNotes(h, nullptr, file.gcode, file.gcodeFirstLine);
   // The run the tools were read from, when there was one: one recording for both.
-  const machine::StockInference inferred =
+  machine::StockInference inferred =
       recorded ? machine::inferStock(program, *recorded, setup) : machine::inferStock(program, setup, run);
+  // The bar the program's own comment names wins over the approach (issue 38 item 8).
+  machine::readStockComment(inferred, file.gcode, file.gcodeFirstLine);
   if (inferred.found)
     inferred.applyTo(h);
   else
@@ -101,6 +105,49 @@ bool byPlace(const Diagnostic& a, const Diagnostic& b) {
 
 }  // namespace
 
+namespace {
+
+bool isNoseInterference(const std::optional<Diagnostic>& alarm) {
+  return alarm && (alarm->code == std::string_view(codes::kNoseDoesNotFit) ||
+                   alarm->code == std::string_view(codes::kConcaveArcTooSmall));
+}
+
+std::string radiusText(double mm) {
+  std::ostringstream s;
+  s << mm;  // 0.8, 0.4: as an insert's radius is written
+  return s.str();
+}
+
+// A guessed nose radius must not stop a run the shop's real insert would not (issue 38 item 7):
+// when the compensated path does not fit a guessed tool's radius, the run is made again with the
+// largest common insert radius below it that fits, and W205 says which guess and what radius.
+machine::Timeline fitGuessedNose(machine::Timeline run, const gcode::Program& program,
+                                 const machine::MachineSetup& setup, const machine::RunOptions& options) {
+  if (!isNoseInterference(run.alarm) || run.snapshots.empty()) return run;
+  const int tool = run.snapshots.back().machine.tool;
+  const int offset = run.snapshots.back().machine.offset;
+  if (!setup.tools.isGuess(tool) || offset < 1 || offset > io::kOffsetCount) return run;
+  const double guess = setup.offsets.at(offset).r;
+  for (const double radius : {1.2, 0.8, 0.4, 0.2, 0.1}) {
+    if (radius >= guess - 1e-9) continue;
+    machine::MachineSetup smaller = setup;
+    smaller.offsets.at(offset).r = radius;
+    machine::Timeline again = machine::interpret(program, smaller, options);
+    if (isNoseInterference(again.alarm)) continue;
+    Diagnostic w;
+    w.severity = Severity::Warning;
+    w.code = codes::kGuessedNoseTooBig;
+    w.range = run.alarm->range;
+    w.args = {(tool < 10 ? "0" : "") + std::to_string(tool), radiusText(guess), std::to_string(run.alarm->range.line),
+              radiusText(radius), run.alarm->code};
+    again.flow.notices.insert(again.flow.notices.begin(), std::move(w));
+    return again;
+  }
+  return run;
+}
+
+}  // namespace
+
 ComputeLog computeLog() {
   return ComputeLog{jobsMade.load(), jobTimelines.load(), jobCuts.load(), jobOnWatched.load(), jobReusedRecords.load()};
 }
@@ -143,6 +190,14 @@ std::shared_ptr<const Job> makeJob(JobInput input) {
     }
     j.diagnostics_.insert(j.diagnostics_.end(), warnings.begin(), warnings.end());
   }
+  // A plain program without G20/G21 whose sizes clearly speak the other unit (issue 38 item 8).
+  gcode::Program program = gcode::parse(file.gcode, file.gcodeFirstLine);
+  if (!input.run.powerOnUnits && file.plainGcode)
+    if (std::optional<machine::UnitsReading> read =
+            machine::readPowerOnUnits(program, input.run.dialect, gcode::powerOnUnitsOf(input.run.dialect, {}))) {
+      input.run.powerOnUnits = read->units;
+      j.diagnostics_.push_back(read->note);
+    }
   const machine::RunOptions& run = input.run;
   // The check and the inference read the program as a run in this dialect and these units would;
   // they never touch #500-#999.
@@ -151,7 +206,6 @@ std::shared_ptr<const Job> makeJob(JobInput input) {
   readRun.powerOnUnits = run.powerOnUnits;
   const gcode::InputUnits powerOn = gcode::powerOnUnitsOf(run.dialect, run.powerOnUnits);
 
-  gcode::Program program = gcode::parse(file.gcode, file.gcodeFirstLine);
   // The program's folder is the control's memory: subprograms it calls come from there.
   // A file's own folder may be "" (a relative name: the current folder); an empty folder given means none.
   const bool ownFolder = !input.folder && !input.path.empty();
@@ -160,6 +214,7 @@ std::shared_ptr<const Job> makeJob(JobInput input) {
   if (ownFolder || !folder.empty())
     for (Diagnostic& d : machine::attachSubprogramFiles(program, folder, run.dialect))
       j.diagnostics_.push_back(std::move(d));
+  if (gcode::machineProfile(run.dialect).angleWithoutComma) gcode::readAnglesWithoutComma(program);
   j.unreadable_ = std::any_of(j.diagnostics_.begin(), j.diagnostics_.end(),
                               [](const Diagnostic& d) { return d.range.file == 0 && machine::isUnreadable(d); });
 
@@ -276,7 +331,8 @@ const machine::Timeline* Job::timeline() const {
       return;
     }
     record.reset();  // one run in memory at a time
-    timeline_ = std::make_shared<const machine::Timeline>(machine::interpret(*program_, tools_.setup, input_.run));
+    timeline_ = std::make_shared<const machine::Timeline>(fitGuessedNose(
+        machine::interpret(*program_, tools_.setup, input_.run), *program_, tools_.setup, input_.run));
   });
   return timeline_.get();
 }

@@ -82,11 +82,11 @@ TEST(Messages, TheGuiNamesItsOwnPlacesNotFlags) {
   EXPECT_NE(formatMessage(stock, Lang::En).find("--stock"), std::string::npos);
   Diagnostic dialect{Severity::Note, "I102", {}, {"3", "Haas", "haas"}};
   EXPECT_EQ(formatMessage(dialect, Lang::En, Surface::Gui),
-            "blocks with errors that are Haas forms: 3; choose Haas in Tool setting ▸ G-code dialect");
+            "blocks with errors or warnings that are Haas forms: 3; choose Haas in Tool setting ▸ G-code dialect");
   EXPECT_EQ(formatMessage(dialect, Lang::Th, Surface::Gui),
-            "บล็อกที่ผิดพลาด 3 บล็อกเป็นรูปแบบของ Haas: เลือก Haas ที่ ตั้งค่ามีดตัด ▸ ภาษาจีโค้ด");
+            "บล็อกที่ผิดพลาดหรือมีคำเตือน 3 บล็อกเป็นรูปแบบของ Haas: เลือก Haas ที่ ตั้งค่ามีดตัด ▸ ภาษาจีโค้ด");
   EXPECT_EQ(formatMessage(dialect, Lang::En),
-            "blocks with errors that are Haas forms: 3; choose the Haas dialect (--dialect haas)");
+            "blocks with errors or warnings that are Haas forms: 3; choose the Haas dialect (--dialect haas)");
 }
 
 }  // namespace

@@ -62,10 +62,11 @@ TEST(Comments, ANestedNoteInsideATitleReadsToTheOuterParenthesis) {
 }
 
 TEST(Comments, BannerGivesOneWarningPerUnclosedLineOnAFanuc) {
-  EXPECT_THAT(listOf(checked(kBanner)), ElementsAre("W108 3:1+1", "W108 4:1+9"));
+  // A Fanuc's comment ends at its first ')': the formula's "= 25000/78.5 = 318 tr/min" after
+  // it is read as words and stops the control (issue 38 item 5); Haas reads the nesting.
+  EXPECT_THAT(listOf(checked(kBanner)), ElementsAre("W108 3:1+1", "W108 4:1+9", "E142 6:22+20"));
   const auto diags = checked(kBanner);
   EXPECT_EQ(diags[0].severity, Severity::Warning);
-  EXPECT_FALSE(hasErrors(diags));
   EXPECT_FALSE(hasErrors(checked(kBanner, Dialect::Haas)));
 }
 

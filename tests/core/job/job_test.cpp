@@ -88,9 +88,10 @@ TEST(MakeJob, APlainProgramWithASubprogramFileIsParsedOnceEach) {
   EXPECT_EQ(job.program()->files.size(), 2u);
   for (const Diagnostic& d : job.diagnostics())
     ADD_FAILURE() << d.code << " line " << d.range.line << " file " << d.range.file;
-  // The stock comes from the approach X42. (the next bar up), and a note says so.
+  // The stock comes from the approach X42., and a note says so: the feed there only reaches the
+  // face (G01 Z0.), so it is above the bar, the largest standard bar not above it (issue 38).
   EXPECT_EQ(job.file()->header.stockSource, io::StockSource::Inferred);
-  EXPECT_GE(job.file()->header.diameter, 42.0);
+  EXPECT_EQ(job.file()->header.diameter, 40.0);
   ASSERT_FALSE(job.stockNotes().empty());
   // A boring bar for the empty station 9, from its comment.
   ASSERT_FALSE(job.toolNotes().empty());
@@ -266,6 +267,53 @@ TEST(MakeJob, AnErrorInASubprogramFileIsOneE412OnItsCallForTheEditor) {
   EXPECT_EQ(errors[0].range.line, 5);
   EXPECT_EQ(errors[0].range.column, 5);
   EXPECT_EQ(errors[0].args, (std::vector<std::string>{"O1000.nc", "2", "10", "E201"}));
+}
+
+// A guessed nose radius never stops a run the shop's insert would not (issue 38 item 7): a
+// finishing pass under G42 steps up a 1.5 mm shoulder and retracts along +Z, as a Brazilian
+// course program's G70 does. The shipped offset 01 (R0.8, a guess for a plain program) cannot
+// follow the 1.5 mm face between two concave corners (A202); R0.4 can.
+TEST(MakeJob, AGuessedNoseThatDoesNotFitRunsWithTheLargestRadiusThatDoes) {
+  const machine::testing::ScratchFolder folder{"guessednose"};
+  const std::string text =
+      "O0002\n"                   // 1
+      "G21 G40 G99\n"             // 2
+      "T0101\n"                   // 3
+      "G97 S1000 M3\n"            // 4
+      "G00 X90. Z5.\n"            // 5
+      "G42 G00 X76. Z2.\n"        // 6
+      "G01 Z-20. F0.1\n"          // 7
+      "X79.\n"                    // 8
+      "G00 Z2.\n"                 // 9
+      "G40 G00 X100. Z50.\n"      // 10
+      "M30\n";                    // 11
+  const std::string path = folder.write("shoulder.nc", text);
+  JobInput in = request(path);
+  io::JobHeader bar;
+  bar.diameter = 80.0;
+  bar.length = 60.0;
+  bar.stockSource = io::StockSource::CommandLine;
+  in.stock = bar;
+  const auto made = makeJob(in);
+  ASSERT_TRUE(made->setup().tools.isGuess(1));
+  const machine::Timeline* t = made->timeline();
+  ASSERT_NE(t, nullptr);
+  EXPECT_FALSE(t->alarm.has_value()) << t->alarm->code << " line " << t->alarm->range.line;
+  ASSERT_FALSE(t->flow.notices.empty());
+  const Diagnostic& w = t->flow.notices.front();
+  EXPECT_EQ(w.code, "W205");
+  EXPECT_EQ(w.severity, Severity::Warning);
+  EXPECT_EQ(w.args, (std::vector<std::string>{"01", "0.8", std::to_string(w.range.line), "0.4", "A202"}));
+  EXPECT_GE(w.range.line, 8);
+
+  // The user's own tools (not guessed): the alarm is the program's, as on the lathe.
+  JobInput chosen = in;
+  chosen.inferTools = false;
+  const auto own = makeJob(chosen);
+  ASSERT_FALSE(own->setup().tools.isGuess(1));
+  ASSERT_NE(own->timeline(), nullptr);
+  ASSERT_TRUE(own->timeline()->alarm.has_value());
+  EXPECT_EQ(own->timeline()->alarm->code, "A202");
 }
 
 }  // namespace

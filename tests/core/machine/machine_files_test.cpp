@@ -271,14 +271,18 @@ TEST(MachineFiles, SystemBProgramCutsItsPartAndIsOfferedTheRomi) {
       "Z-20.;\nG00 X100. Z100.;\nM30;\n";
   const auto fromG92 = offer(g92Program);
   EXPECT_TRUE(errorsOf(g92Program, romi).empty());
-  // In system A, G92 is the threading cycle: without its end point it is E140 at the G92.
-  const auto asA = errorsOf(g92Program, gcode::Dialect::Fanuc);
+  // In system A, G92 is the threading cycle: without its end point it moves nothing and sets
+  // the speed. No manual says the control stops: W115 at the G92, never an error (issue 38).
+  EXPECT_TRUE(errorsOf(g92Program, gcode::Dialect::Fanuc).empty());
+  gcode::CheckOptions fanucA;
+  fanucA.dialect = gcode::Dialect::Fanuc;
+  const std::vector<Diagnostic> asA = gcode::check(gcode::parse(g92Program, 1), fanucA);
   ASSERT_EQ(asA.size(), 1u);
-  EXPECT_EQ(asA[0].code, "E140");
+  EXPECT_EQ(asA[0].code, "W115");
+  EXPECT_EQ(asA[0].severity, Severity::Warning);
   EXPECT_EQ(asA[0].range.line, 3);
   EXPECT_EQ(asA[0].range.column, 1);
-  EXPECT_EQ(formatMessage(asA[0], Lang::En),
-            "G92 is a single cycle: its block needs the cycle's end point, X (U) and Z (W)");
+  EXPECT_EQ(formatMessage(asA[0], Lang::En).substr(0, 60), "G92 S2500 in G-code system A selects the threading cycle wit");
   ASSERT_TRUE(fromG92.has_value());
   EXPECT_EQ(fromG92->dialect, romi);
   EXPECT_EQ(fromG92->note.range.line, 3);  // G92 S2500;

@@ -53,14 +53,21 @@ class Stock {
   // Removes radius range [lo, hi] from column i; returns the removed volume in mm^3.
   // (Inline: a sweep asks it of every column it passes, mostly above the material.)
   double remove(int i, double lo, double hi) {
-    if (i < 0 || i >= columnCount() || !(hi > lo) || lo >= outer_[static_cast<std::size_t>(i)]) return 0.0;
+    if (i < 0 || i >= columnCount() || !(hi > lo) || lo >= outer_[static_cast<std::size_t>(i)] || caught(i))
+      return 0.0;
     return removeFromMaterial(i, lo, hi);
   }
   // Longest overlap, in mm, of radius range [lo, hi] with the material of column i (0 = none).
   double overlap(int i, double lo, double hi) const {
-    if (i < 0 || i >= columnCount() || lo >= outer_[static_cast<std::size_t>(i)]) return 0.0;
+    if (i < 0 || i >= columnCount() || lo >= outer_[static_cast<std::size_t>(i)] || caught(i)) return 0.0;
     return overlapWithMaterial(i, lo, hi);
   }
+  // A part cut off the bar falls into the parts catcher: its columns stay where they were, for the
+  // finished part's profile and picture, but no later move cuts or touches them (issue 38: an
+  // M99 repeat or the next part's facing sweeps through where the last part was).
+  // Catches everything right of the first empty column from the chuck; true when it caught something.
+  bool catchCutOffPart();
+  bool caught(int i) const { return !caught_.empty() && caught_[static_cast<std::size_t>(i)] != 0; }
 
   // While a batch is open, remove() lowers a column's outer radius at once but leaves
   // its block and super-block maxima as they were (too high is allowed: they only
@@ -104,6 +111,7 @@ class Stock {
   std::vector<double> outer_;
   std::vector<double> blockMax_;  // max outer radius per block of kBlock columns
   std::vector<double> superMax_;  // and per super-block of kSuper columns (kBlock blocks)
+  std::vector<char> caught_;      // columns of parts cut off (empty until the first)
   bool deferMaxima_ = false;      // a Batch is open
   int dirtyFirst_ = 0;            // blocks whose maxima wait for settle(): [first, last]
   int dirtyLast_ = -1;

@@ -28,6 +28,7 @@ enum class ModalGroup {
   MacroModal,   // 12: G66 G67 (custom macro modal call; G65 is group 00)
   Distance,     // 03: G90 G91 absolute / incremental (G-code systems B and C)
   ReturnLevel,  // 11: G98 G99 drilling cycles' return level (G-code systems B and C)
+  ToolLength,   // 08: G49 (a machining centre's tool length compensation; nothing to cancel on a lathe)
   // M code groups, for rule 4 and the interpreter
   MSpindle,     // M03 M04 M05
   MCoolant,     // M08 M09

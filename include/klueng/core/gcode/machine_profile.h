@@ -145,6 +145,17 @@ struct MachineProfile {
   bool highMIsWarning;     // an M code from 100 up (machine options: live tooling...): W101 or E115
   bool blanksInWords;      // "X 38" reads as X38 (true, as a Fanuc), or E135 (false)
   bool commentToLineEnd;   // an unclosed '(' runs to the line end: W108 (true) or E105 (false)
+  // Fanuc reading of the end of a block and of comments (issue 38 item 5; docs/dialects.md §1):
+  // ';' ends the block and what follows is the next block, and a comment ends at its first ')'.
+  // False (Haas, classic): the rest of a line after ';' is a comment, parentheses may nest.
+  bool semicolonEndsBlock = false;
+  bool commentEndsAtFirstParen = false;
+  // A without a comma is the angle of a G01 (`G01 X40. A-45.`, Fanuc parameter 3405#4, the 0-T
+  // style), where the machine has no A axis (issue 38 item 4).
+  bool angleWithoutComma = false;
+  // Two G codes of one modal group in a block: the control uses the last (true, Fanuc: a warning)
+  // or refuses the block (false: E205).
+  bool sameGroupLastWins = false;
   CycleSettings cycles;    // defaults of the cycles (one-block forms, drilling)
   FlowSettings flow;
   // The M codes the machine accepts, from its family's rows; empty = all of them.

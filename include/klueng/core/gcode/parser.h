@@ -19,6 +19,12 @@ namespace klueng::core::gcode {
 // a line may be a statement (#1=..., IF, WHILE/DO, END, GOTO); ',C' ',R' ',A'
 // read as comma words.
 Program parse(std::string_view text, int firstLine = 1, int file = 0);
+// The same reading of a piece of a line (the checker reads a ';' or ')' tail with it); not counted
+// by parseCount().
+Program parseFragment(std::string_view text, int firstLine = 1, int file = 0);
+// A machine that reads A without a comma as a G01's angle (`G01 X40. A-45.`, Fanuc parameter
+// 3405#4, MachineProfile::angleWithoutComma): every such A word becomes the ,A the rest reads.
+void readAnglesWithoutComma(Program& program);
 
 // How many times parse() has run in this process (issue 12: the tests count
 // the parses one edit or one CLI command costs).

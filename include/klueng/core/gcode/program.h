@@ -200,6 +200,18 @@ struct Program {
     bool folder = false;
   };
   std::vector<NotAFile> notProgramFiles;
+  // Text that controls read differently (issue 38 item 5): what follows the first ';' of a line
+  // (a Fanuc reads it as the next block; here it is a comment), and what follows the first ')' of
+  // a comment with nested parentheses (a Fanuc's comment ends there; here at the balancing ')').
+  // The checker judges them by the machine's profile; only lines that have such text are listed.
+  struct TextTail {
+    int line = 0;
+    int column = 0;  // of the tail's first character
+    int file = 0;
+    bool afterEndOfBlock = false;  // after ';' (else after a comment's first ')')
+    std::string text;
+  };
+  std::vector<TextTail> tails;
 };
 
 // The O number whose program contains block `index` (the nearest O word at or

@@ -26,6 +26,7 @@
 // Pure core, no Qt. Every number comes with the file line of the block that
 // decided it, and stockNotes() turns that into notes (I150-I157) for the user.
 #include <optional>
+#include <string>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -68,10 +69,19 @@ struct StockInference {
   double largestCutDiameter = 0.0;  // in the unit above
   double cutOffMargin = 0.0;        // margin and chuck grip added to the length, in the unit above
   double chuckGrip = 0.0;
+  // The bar the program's own comment names ("(MATERIAL: 2.25"OD X 1.5"ID X 2.32"L BRONZE TUBING)",
+  // "(STOCK: DIA 50 X 100)"): it wins over the approach; 0 = no such comment.
+  int commentLine = 0;
+  std::string commentText;  // the comment, at most 60 characters, for the note
 
   // Writes the sizes into `h` (units, diameter, length, bore; stockSource = Inferred).
   void applyTo(io::JobHeader& h) const;
 };
+
+// A comment that names the bar (a word such as MATERIAL, STOCK, BAR, TUBING, BLANK with a diameter,
+// and perhaps a bore and a length: `2.25"OD X 1.5"ID X 2.32"L`, `DIA 50 X 100`, `Ø32x60`): its sizes
+// replace the inferred ones (in `r`'s unit), and `r.commentLine` says where. True when one did.
+bool readStockComment(StockInference& r, std::string_view gcode, int firstLine);
 
 // Runs `program` with `setup` and `options` (no stock: no cut alarms) and
 // infers the stock. An alarm that stops the run leaves what ran before it.

@@ -48,6 +48,17 @@ struct ToolTable {
   bool isGuess(int tool) const {
     return tool >= 1 && tool <= kMaxStations && guessed[static_cast<std::size_t>(tool - 1)];
   }
+  // Stations that hold or stop the bar (a bar puller, a bar stop: "(BARPULER)", "(BAR STOP)"): they
+  // go into the bar with the spindle stopped, so their moves remove nothing and touch nothing.
+  std::array<bool, kMaxStations> holdsBar{};
+  bool isBarHolder(int tool) const {
+    return tool >= 1 && tool <= kMaxStations && holdsBar[static_cast<std::size_t>(tool - 1)];
+  }
+  // Of those, the pullers (a bar stop only stands in the bar's way).
+  std::array<bool, kMaxStations> pullsBarOut{};
+  bool pullsBar(int tool) const {
+    return isBarHolder(tool) && pullsBarOut[static_cast<std::size_t>(tool - 1)];
+  }
   std::string bitmapPath(int tool) const;  // resolved path, empty if none
   double pixelsPerMmOf(int tool) const;    // 2 for a plain bitmap
   std::string libraryId(int tool) const;   // the ID of a `library:ID` line, else empty
