@@ -305,8 +305,26 @@ std::string formatGccStyle(const std::string& file, const Diagnostic& d, Lang la
   return formatWithPlace(file, d, lang);
 }
 
+std::string printable(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (const char ch : text) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c == '\n')
+      out += "\\n";
+    else if (c == '\r')
+      out += "\\r";
+    else if ((c < 0x20 && c != '\t') || c == 0x7F)
+      out += fmt::format("\\x{:02x}", c);
+    else
+      out += ch;
+  }
+  return out;
+}
+
 void printDiagnostic(std::FILE* out, const std::string& file, const Diagnostic& d, Lang lang) {
-  const std::string line = formatGccStyle(file, d, lang) + '\n';
+  // One diagnostic, one line: a file name holding a line end cannot forge another.
+  const std::string line = printable(formatGccStyle(file, d, lang)) + '\n';
   std::fwrite(line.data(), 1, line.size(), out);
 }
 

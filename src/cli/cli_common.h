@@ -123,7 +123,11 @@ using FileDiagnostic = core::machine::SetupDiagnostic;
 
 // `FILE:LINE:COL: error E104: message` (`FILE: ...` when the line is unknown), no newline.
 std::string formatGccStyle(const std::string& file, const core::Diagnostic& d, core::Lang lang);
+// Prints one line: printable(formatGccStyle(...)).
 void printDiagnostic(std::FILE* out, const std::string& file, const core::Diagnostic& d, core::Lang lang);
+// `text` with line ends and other control characters escaped (\n, \r, \x1b; tabs and UTF-8
+// kept), so that a file name holding a newline cannot forge a line of output (issue 42).
+std::string printable(std::string_view text);
 
 // JSON string contents (without quotes): escapes quotes, backslashes and
 // control characters; invalid UTF-8 bytes become U+FFFD.

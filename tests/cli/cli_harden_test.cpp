@@ -1,0 +1,182 @@
+// Issue 42 ("Harden, round 3"), items 1, 2, 5 and 7: a folder run reads only
+// what lies in its folder and never quotes a file that is not a program; no
+// output may replace a file the run reads; an interrupted write leaves no
+// temporary file; parallel runs update #500-#999 under a lock.
+#include <gtest/gtest.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "cli_common.h"
+
+extern char** environ;
+
+// Its own namespace: the tests are unity-built and sibling files have helpers of the same names.
+namespace cli_harden_test {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The CLI under test; KLUENG_CLI_UNDER_TEST runs these tests against another build (an older one, to see them fail).
+const std::string kCli = std::getenv("KLUENG_CLI_UNDER_TEST") ? std::getenv("KLUENG_CLI_UNDER_TEST") : KLUENG_CLI_PATH;
+
+const std::string kSecret = "SECRET-MARKER-do-not-print:$6$salt$hash:19000:0:99999:7:::";
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void put(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
+
+std::string quote(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+// klueng-cli ARGS (stdout and stderr together); the exit status.
+int run(const std::string& args, std::string& out) {
+  const std::string command = "env LC_ALL= LC_MESSAGES= LANG=C " + quote(kCli) + " " + args + " 2>&1";
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (!pipe) return -1;
+  char buf[4096];
+  out.clear();
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) out.append(buf, n);
+  const int status = ::pclose(pipe);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// A folder of its own per test and process, removed at the end.
+struct TempDir {
+  fs::path path;
+  explicit TempDir(const std::string& name)
+      : path(fs::temp_directory_path() / ("klueng_cli_harden_" + name + "-" + std::to_string(::getpid()))) {
+    fs::remove_all(path);
+    fs::create_directories(path);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+};
+
+std::string sample01() { return slurp(fs::path(KLUENG_SAMPLES_DIR) / "01-step-shaft.txt"); }
+
+// The class folder of issue 42 item 1 and 7: one good program and every kind of entry a
+// folder run must not read. The secret lies outside the folder.
+fs::path makeClassFolder(const fs::path& root) {
+  const fs::path dir = root / "class";
+  fs::create_directories(dir / "d.nc");
+  put(root / "secret.txt", kSecret + "\n" + kSecret + "\n");
+  put(dir / "ok.nc", sample01());
+  fs::create_symlink(root / "secret.txt", dir / "evil.nc");
+  fs::create_symlink(root / "nothing-here.txt", dir / "dangling.nc");
+  EXPECT_EQ(::mkfifo((dir / "pipe.nc").c_str(), 0600), 0);
+  // Text that is no program (a password file copied in), and binary data without a NUL byte.
+  put(dir / "copied.nc", "root:x:0:0:" + kSecret + "\ndaemon:x:1:1:" + kSecret + "\n");
+  put(dir / "binary.nc", std::string("\x7f" "ELF\x02\x01\x01\x03\x04\x05\x06\x07\x08\x0e\x0f") + kSecret + "\n");
+  return dir;
+}
+
+bool hasLine(const std::string& out, const std::string& line) {
+  std::istringstream in(out);
+  for (std::string l; std::getline(in, l);)
+    if (l == line) return true;
+  return false;
+}
+
+}  // namespace
+
+// Item 1 and 7: `check DIR` gives every entry a line, reads none outside, quotes no non-program.
+TEST(CliHarden, CheckFolderReadsOnlyItsOwnProgramsAndQuotesNoOtherFile) {
+  const TempDir tmp("check_folder");
+  const fs::path dir = makeClassFolder(tmp.path);
+  std::string out;
+  EXPECT_EQ(run("check " + quote(dir.string()) + " --config " + quote(KLUENG_SOURCE_DIR), out), 2) << out;
+  EXPECT_EQ(out.find("SECRET-MARKER"), std::string::npos) << out;
+  EXPECT_TRUE(hasLine(out, (dir / "evil.nc").string() + ": error F158: " + (dir / "evil.nc").string() +
+                               ": refused: points outside the folder, so it is not read"))
+      << out;
+  EXPECT_NE(out.find((dir / "dangling.nc").string() + ": error F101:"), std::string::npos) << out;
+  EXPECT_NE(out.find((dir / "pipe.nc").string() + ": error F157:"), std::string::npos) << out;
+  EXPECT_NE(out.find((dir / "d.nc").string() + ": error F102:"), std::string::npos) << out;
+  EXPECT_TRUE(hasLine(out, (dir / "copied.nc").string() + ": error F159: " + (dir / "copied.nc").string() +
+                               ": this is not a G-code program (no G-code in its first 20 lines), so its text is "
+                               "not shown"))
+      << out;
+  EXPECT_NE(out.find((dir / "binary.nc").string() + ": error F159:"), std::string::npos) << out;
+  EXPECT_EQ(out.find("E138"), std::string::npos) << out;
+  EXPECT_EQ(out.find((dir / "ok.nc").string() + ": error"), std::string::npos) << out;
+}
+
+// Item 1 and 7: `class DIR` gives each of them a failed row and never reads them.
+TEST(CliHarden, ClassFolderRefusesLinksOutAndListsEveryEntry) {
+  const TempDir tmp("class_folder");
+  const fs::path dir = makeClassFolder(tmp.path);
+  put(tmp.path / "ref.nc", sample01());
+  std::string out;
+  const fs::path csv = tmp.path / "grades.csv";
+  ASSERT_EQ(run("class " + quote(dir.string()) + " --reference " + quote((tmp.path / "ref.nc").string()) + " --csv " +
+                    quote(csv.string()) + " --config " + quote(KLUENG_SOURCE_DIR),
+                out),
+            0)
+      << out;
+  EXPECT_EQ(out.find("SECRET-MARKER"), std::string::npos) << out;
+  const std::string table = slurp(csv);
+  EXPECT_EQ(table.find("SECRET-MARKER"), std::string::npos) << table;
+  EXPECT_TRUE(hasLine(table, "evil.nc,fail,1,F158 refused: points outside the folder,,,,,,")) << table;
+  EXPECT_TRUE(hasLine(table, "dangling.nc,fail,1,F101 unreadable: a link to nothing,,,,,,")) << table;
+  EXPECT_TRUE(hasLine(table, "pipe.nc,fail,1,F157 unreadable: not an ordinary file,,,,,,")) << table;
+  EXPECT_TRUE(hasLine(table, "d.nc,fail,1,F102 unreadable: a folder,,,,,,")) << table;
+  EXPECT_TRUE(hasLine(table, "copied.nc,fail,1,F159,,,,,,")) << table;
+  EXPECT_TRUE(hasLine(table, "binary.nc,fail,1,F159,,,,,,")) << table;
+  EXPECT_NE(table.find("\nok.nc,pass,0,,,"), std::string::npos) << table;
+  EXPECT_NE(out.find("7 programs: 1 pass, 6 fail"), std::string::npos) << out;
+}
+
+// Item 1: a subprogram file that is a link out of the program's folder is not read.
+TEST(CliHarden, SubprogramLinkOutOfTheFolderIsRefused) {
+  const TempDir tmp("subprogram_link");
+  fs::create_directories(tmp.path / "prog");
+  put(tmp.path / "secret.txt", kSecret + "\n");
+  fs::create_symlink(tmp.path / "secret.txt", tmp.path / "prog" / "O1000.nc");
+  const fs::path prog = tmp.path / "prog" / "main.nc";
+  put(prog, "O0001\nG21 G99\nT0101\nG97 S500 M03\nM98 P1000\nM30\n");
+  std::string out;
+  EXPECT_EQ(run("check " + quote(prog.string()) + " --stock 50x100 --config " + quote(KLUENG_SOURCE_DIR), out), 1)
+      << out;
+  EXPECT_EQ(out.find("SECRET-MARKER"), std::string::npos) << out;
+  EXPECT_NE(out.find("O1000.nc: error F158: "), std::string::npos) << out;
+}
+
+// Item 1: a file name holding a newline cannot forge a diagnostic line.
+TEST(CliHarden, FileNameWithANewlineIsPrintedEscaped) {
+  const TempDir tmp("newline_name");
+  const std::string name = "x\nforged.nc:1:1: error E999: fake.nc";
+  put(tmp.path / name, "G01 Y5.\n");
+  std::string out;
+  run("check " + quote(tmp.path.string()) + " --stock 50x100 --config " + quote(KLUENG_SOURCE_DIR), out);
+  std::istringstream lines(out);
+  for (std::string l; std::getline(lines, l);) EXPECT_FALSE(l.starts_with("forged.nc")) << out;
+  EXPECT_NE(out.find("x\\nforged.nc:1:1: error E999: fake.nc:1:5: error E201: "), std::string::npos) << out;
+  EXPECT_EQ(klueng::cli::printable("a\nb\rc\x1b[31m\td"), "a\\nb\\rc\\x1b[31m\td");
+}
+
+}  // namespace cli_harden_test
