@@ -1,4 +1,5 @@
 #include "cli_common.h"
+#include "klueng/core/job/run_inputs.h"
 
 #include <fmt/format.h>
 
@@ -392,18 +393,10 @@ bool outputsAllowed(const std::vector<std::string>& outputs, const std::vector<s
   return allowed;
 }
 
-std::vector<std::string> setupFiles(const LoadedConfig& config) {
-  if (config.dir.empty()) return {};
-  return {joinPath(config.dir, "tools.cfg"), joinPath(config.dir, "offset.cfg"), joinPath(config.dir, "machine.cfg"),
-          io::macroVariablesPath(config.dir)};
-}
+std::vector<std::string> setupFiles(const LoadedConfig& config) { return core::job::setupInputFiles(config); }
 
 std::vector<std::string> programInputs(const std::string& file, const core::job::Job& job, const LoadedConfig& config) {
-  std::vector<std::string> inputs{file};
-  if (job.program())
-    for (const std::string& sub : job.program()->files) inputs.push_back(sub);  // files[0] is "": the program
-  for (std::string& setup : setupFiles(config)) inputs.push_back(std::move(setup));
-  return inputs;
+  return core::job::runInputFiles(file, &job, config);
 }
 
 bool reportWrite(const std::string& path, const std::optional<Diagnostic>& failure, Lang lang) {

@@ -152,7 +152,8 @@ LoadedConfig loadConfig(const std::string& explicitDir = {});
 // setup file) would destroy it (F126); a read-only output is refused (F119).
 // Prints each; true when there is none. Empty names are skipped.
 bool outputsAllowed(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs, core::Lang lang);
-// The setup files of `config` (tools.cfg, offset.cfg, machine.cfg, macro_variables.cfg in its folder): inputs too.
+// Every file a run with `config` reads (core::job::setupInputFiles: the setup tables,
+// macro_variables.cfg, the tool pictures, the library, the cutting speeds, the machine files): inputs too.
 std::vector<std::string> setupFiles(const LoadedConfig& config);
 // What a run of `file` read: the program, its subprogram files and the setup files.
 std::vector<std::string> programInputs(const std::string& file, const core::job::Job& job, const LoadedConfig& config);

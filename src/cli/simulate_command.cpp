@@ -171,8 +171,11 @@ int runSimulate(const std::vector<std::string>& args) {
   if (job.unreadable()) return 2;
   // An output naming the program, a subprogram file or a setup file would destroy it: refused
   // before the run, as a compiler refuses `-o` naming its source (issue 29).
+  std::vector<std::string> inputs = programInputs(o.file, job, config);
+  inputs.push_back(variablesPath);  // #500-#999 are read too
+  if (!o.machine.empty() && std::filesystem::is_regular_file(o.machine)) inputs.push_back(o.machine);
   if (!outputsAllowed({o.tracePath, o.cut.pngPath, o.cut.profilePath, o.cut.jsonPath, o.cut.svgPath, o.cut.dxfPath},
-                      programInputs(o.file, job, config), o.lang))
+                      inputs, o.lang))
     return 2;
   if (!job.file() || !job.program() || job.hasErrors()) return 1;
   for (const Diagnostic& n : job.stockNotes()) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());

@@ -102,6 +102,16 @@ bool hasLine(const std::string& out, const std::string& line) {
   return false;
 }
 
+// A setup folder of its own: the shipped tables and tool pictures, copied.
+fs::path copyConfig(const fs::path& dst) {
+  const fs::path src(KLUENG_SOURCE_DIR);
+  fs::create_directories(dst / "resources" / "tools");
+  for (const char* f : {"tools.cfg", "offset.cfg", "machine.cfg"}) fs::copy_file(src / f, dst / f);
+  for (const fs::directory_entry& e : fs::directory_iterator(src / "resources" / "tools"))
+    if (e.is_regular_file()) fs::copy_file(e.path(), dst / "resources" / "tools" / e.path().filename());
+  return dst;
+}
+
 }  // namespace
 
 // Item 1 and 7: `check DIR` gives every entry a line, reads none outside, quotes no non-program.
@@ -177,6 +187,55 @@ TEST(CliHarden, FileNameWithANewlineIsPrintedEscaped) {
   for (std::string l; std::getline(lines, l);) EXPECT_FALSE(l.starts_with("forged.nc")) << out;
   EXPECT_NE(out.find("x\\nforged.nc:1:1: error E999: fake.nc:1:5: error E201: "), std::string::npos) << out;
   EXPECT_EQ(klueng::cli::printable("a\nb\rc\x1b[31m\td"), "a\\nb\\rc\\x1b[31m\td");
+}
+
+// Item 2: no output replaces a file the run reads: a tool picture of the setup folder, the
+// tool library, a library picture, the cutting-speed table (F126, exit 2, the file unchanged).
+TEST(CliHarden, OutputsNeverReplaceTheSetupTheRunReads) {
+  const TempDir tmp("outputs_inputs");
+  const fs::path config = copyConfig(tmp.path / "config");
+  const fs::path prog = tmp.path / "prog.nc";
+  put(prog, sample01());
+  const fs::path bitmap1 = config / "resources" / "tools" / "01-outside-turning.bmp";
+  const fs::path bitmap2 = config / "resources" / "tools" / "02-outside-left-hand.bmp";
+  const std::string bytes1 = slurp(bitmap1), bytes2 = slurp(bitmap2);
+  const std::string base = "simulate " + quote(prog.string()) + " --config " + quote(config.string());
+  std::string out;
+  EXPECT_EQ(run(base + " --png " + quote(bitmap1.string()), out), 2) << out;
+  EXPECT_NE(out.find(bitmap1.string() + ": error F126: "), std::string::npos) << out;
+  EXPECT_EQ(slurp(bitmap1), bytes1);
+  EXPECT_EQ(run(base + " --trace " + quote(bitmap2.string()), out), 2) << out;
+  EXPECT_NE(out.find(bitmap2.string() + ": error F126: "), std::string::npos) << out;
+  EXPECT_EQ(slurp(bitmap2), bytes2);
+
+  // The shipped library and table: kept as they were whatever happens (they are the sources').
+  const fs::path library = fs::path(KLUENG_SOURCE_DIR) / "resources" / "tools" / "library" / "library.cfg";
+  const fs::path picture = fs::path(KLUENG_SOURCE_DIR) / "resources" / "tools" / "library" / "cnmg-80-r08.png";
+  const fs::path speeds = fs::path(KLUENG_SOURCE_DIR) / "resources" / "parts" / "cutting_speeds.cfg";
+  const std::string libraryBytes = slurp(library), pictureBytes = slurp(picture), speedsBytes = slurp(speeds);
+  ASSERT_FALSE(libraryBytes.empty());
+  ASSERT_FALSE(pictureBytes.empty());
+  ASSERT_FALSE(speedsBytes.empty());
+  const int svg = run(base + " --svg " + quote(library.string()), out);
+  const std::string svgOut = out;
+  const int json = run(base + " --json " + quote(picture.string()), out);
+  const std::string jsonOut = out;
+  const int generate = run("generate " + quote(KLUENG_SOURCE_DIR "/resources/parts/step-shaft.json") + " -o " +
+                               quote(speeds.string()) + " --config " + quote(config.string()),
+                           out);
+  const std::string generateOut = out;
+  const bool libraryKept = slurp(library) == libraryBytes, pictureKept = slurp(picture) == pictureBytes,
+             speedsKept = slurp(speeds) == speedsBytes;
+  if (!libraryKept) put(library, libraryBytes);
+  if (!pictureKept) put(picture, pictureBytes);
+  if (!speedsKept) put(speeds, speedsBytes);
+  EXPECT_EQ(svg, 2) << svgOut;
+  EXPECT_NE(svgOut.find(library.string() + ": error F126: "), std::string::npos) << svgOut;
+  EXPECT_EQ(json, 2) << jsonOut;
+  EXPECT_NE(jsonOut.find(picture.string() + ": error F126: "), std::string::npos) << jsonOut;
+  EXPECT_EQ(generate, 2) << generateOut;
+  EXPECT_NE(generateOut.find(speeds.string() + ": error F126: "), std::string::npos) << generateOut;
+  EXPECT_TRUE(libraryKept && pictureKept && speedsKept);
 }
 
 }  // namespace cli_harden_test
