@@ -18,6 +18,7 @@
 #include "gui/main_window.h"
 #include "gui/resources.h"
 #include "gui/settings.h"
+#include "klueng/core/io/file_write.h"
 
 namespace {
 
@@ -70,6 +71,8 @@ void scheduleScreenshot(klueng::gui::MainWindow* window, const QString& out, int
 
 int main(int argc, char** argv) {
   QApplication app(argc, argv);
+  // A kill during a save leaves no temporary file beside the program (issue 42).
+  klueng::core::io::removeTemporaryFilesOnSignals();
   QApplication::setOrganizationName(QStringLiteral("Klueng"));
   QApplication::setApplicationName(QStringLiteral("klueng"));
   QApplication::setApplicationDisplayName(QStringLiteral("Klueng"));

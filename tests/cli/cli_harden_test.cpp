@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "cli_common.h"
+#include "klueng/core/io/macro_variables.h"
 
 extern char** environ;
 
@@ -110,6 +111,77 @@ fs::path copyConfig(const fs::path& dst) {
   for (const fs::directory_entry& e : fs::directory_iterator(src / "resources" / "tools"))
     if (e.is_regular_file()) fs::copy_file(e.path(), dst / "resources" / "tools" / e.path().filename());
   return dst;
+}
+
+// klueng-cli ARGS as a child of its own (SIGINT and SIGTERM at their defaults, output to /dev/null).
+pid_t spawnCli(const std::vector<std::string>& args) {
+  std::vector<std::string> all{kCli};
+  all.insert(all.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& a : all) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t files;
+  posix_spawn_file_actions_init(&files);
+  posix_spawn_file_actions_addopen(&files, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&files, 2, "/dev/null", O_WRONLY, 0);
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  sigset_t defaults;
+  sigemptyset(&defaults);
+  sigaddset(&defaults, SIGINT);
+  sigaddset(&defaults, SIGTERM);
+  posix_spawnattr_setsigdefault(&attr, &defaults);
+  sigset_t none;
+  sigemptyset(&none);
+  posix_spawnattr_setsigmask(&attr, &none);
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
+  pid_t pid = -1;
+  if (posix_spawn(&pid, argv[0], &files, &attr, argv.data(), environ) != 0) pid = -1;
+  posix_spawn_file_actions_destroy(&files);
+  posix_spawnattr_destroy(&attr);
+  return pid;
+}
+
+// The temporary files of writes to `name` in `dir` (`.NAME.tmp-XXXXXX`).
+int temporaries(const fs::path& dir, const std::string& name) {
+  int n = 0;
+  std::error_code ec;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir, ec))
+    if (e.path().filename().string().starts_with("." + name + ".tmp-")) ++n;
+  return n;
+}
+
+// A program of `moves` feed moves: a trace of some 20 MB, written long enough to be interrupted.
+std::string longProgram(int moves) {
+  std::string text = "G21 G99\nT0101\nG97 S500 M03\nG00 X52. Z2.\n";
+  for (int i = 0; i < moves; ++i) text += i % 2 ? "G01 X51. Z1. F0.2\n" : "G01 X52. Z2. F0.2\n";
+  return text + "M30\n";
+}
+
+// Interrupts `simulate --trace` by `sig` while the trace's temporary file is there; true when it was.
+bool interruptTraceWrite(const fs::path& dir, const fs::path& prog, int sig) {
+  for (int attempt = 0; attempt < 5; ++attempt) {
+    std::error_code ec;
+    fs::remove(dir / "trace.csv", ec);
+    const pid_t pid = spawnCli({"simulate", prog.string(), "--no-stock", "--no-persist", "--stock", "60x100",
+                                "--config", KLUENG_SOURCE_DIR, "--trace", (dir / "trace.csv").string()});
+    if (pid < 0) return false;
+    int status = 0;
+    bool signalled = false;
+    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (std::chrono::steady_clock::now() < until) {
+      if (::waitpid(pid, &status, WNOHANG) == pid) break;  // finished before we caught the write
+      if (temporaries(dir, "trace.csv") > 0) {
+        ::kill(pid, sig);
+        signalled = true;
+        ::waitpid(pid, &status, 0);
+        break;
+      }
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+    if (signalled && WIFSIGNALED(status) && WTERMSIG(status) == sig) return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -236,6 +308,61 @@ TEST(CliHarden, OutputsNeverReplaceTheSetupTheRunReads) {
   EXPECT_EQ(generate, 2) << generateOut;
   EXPECT_NE(generateOut.find(speeds.string() + ": error F126: "), std::string::npos) << generateOut;
   EXPECT_TRUE(libraryKept && pictureKept && speedsKept);
+}
+
+// Item 5: SIGTERM and SIGINT during a write remove its temporary file, and the process still ends by the signal.
+TEST(CliHarden, InterruptedWriteLeavesNoTemporaryFile) {
+  const TempDir tmp("interrupted");
+  const fs::path prog = tmp.path / "long.nc";
+  put(prog, longProgram(300000));
+  for (const int sig : {SIGTERM, SIGINT}) {
+    EXPECT_TRUE(interruptTraceWrite(tmp.path, prog, sig)) << "signal " << sig << ": the write was never caught";
+    EXPECT_EQ(temporaries(tmp.path, "trace.csv"), 0) << "signal " << sig;
+  }
+}
+
+// Item 5: twenty parallel runs of #500=#500+1 add twenty (read, run and write under one lock).
+TEST(CliHarden, ParallelRunsUpdateMacroVariablesUnderALock) {
+  const TempDir tmp("parallel");
+  const fs::path config = copyConfig(tmp.path / "config");
+  put(config / "macro_variables.cfg", "#500 = 0\n");
+  const fs::path prog = tmp.path / "count.nc";
+  put(prog, "O0001\n#500=#500+1\nM30\n");
+  std::vector<pid_t> pids;
+  for (int i = 0; i < 20; ++i)
+    pids.push_back(spawnCli({"simulate", prog.string(), "--stock", "50x100", "--config", config.string()}));
+  for (const pid_t pid : pids) {
+    ASSERT_GT(pid, 0);
+    int status = 0;
+    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;
+  }
+  const auto stored = klueng::core::io::readMacroVariables((config / "macro_variables.cfg").string());
+  ASSERT_TRUE(stored.value.has_value());
+  EXPECT_EQ(stored.value->at(500), 20.0);
+  EXPECT_EQ(temporaries(config, "macro_variables.cfg"), 0);
+}
+
+// Item 5: a failed write of macro_variables.cfg (no space: the file size limit) is F109 and exit 2.
+TEST(CliHarden, FailedMacroVariablesWriteExitsTwo) {
+  const TempDir tmp("variables_full");
+  const fs::path config = copyConfig(tmp.path / "config");
+  put(config / "macro_variables.cfg", "#500 = 0\n");
+  const fs::path prog = tmp.path / "count.nc";
+  put(prog, "O0001\n#500=#500+1\nM30\n");
+  std::string out;
+  const std::string inner = "trap '' XFSZ; ulimit -f 0; exec " + quote(kCli) + " simulate " +
+                            quote(prog.string()) + " --stock 50x100 --config " + quote(config.string());
+  const std::string command = "env LC_ALL= LC_MESSAGES= LANG=C sh -c " + quote(inner) + " 2>&1";
+  FILE* pipe = ::popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  char buf[4096];
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) out.append(buf, n);
+  const int status = ::pclose(pipe);
+  ASSERT_TRUE(WIFEXITED(status)) << out;
+  EXPECT_EQ(WEXITSTATUS(status), 2) << out;
+  EXPECT_NE(out.find((config / "macro_variables.cfg").string() + ": error F109: "), std::string::npos) << out;
+  EXPECT_EQ(slurp(config / "macro_variables.cfg"), "#500 = 0\n");
 }
 
 }  // namespace cli_harden_test
