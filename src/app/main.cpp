@@ -11,11 +11,14 @@
 #include <QTimer>
 #include <cstdio>
 
+#include "gui/document.h"
 #include "gui/file_save.h"
+#include "gui/job_document.h"
 #include "gui/language.h"
 #include "gui/main_window.h"
 #include "gui/resources.h"
 #include "gui/settings.h"
+#include "klueng/core/io/file_write.h"
 
 namespace {
 
@@ -26,6 +29,17 @@ void scheduleScreenshot(klueng::gui::MainWindow* window, const QString& out, int
   QObject::connect(poll, &QTimer::timeout, window, [window, out, exitCode, poll] {
     if (window->isBusy()) return;
     poll->stop();
+    // The program and every file of the setup are inputs: a picture never replaces one (issue 42).
+    std::vector<std::string> inputs = klueng::gui::setupInputs(window->jobDocument().tools().setup);
+    if (const QString file = window->document()->filePath(); !file.isEmpty()) inputs.push_back(file.toStdString());
+    if (const QString why = klueng::gui::outputIsAnyInput(out, inputs); !why.isEmpty()) {
+      std::fprintf(stderr, "%s\n", qPrintable(why));
+      std::printf("screenshot REFUSED\n");
+      std::fflush(stdout);
+      *exitCode = 2;
+      QApplication::exit(*exitCode);
+      return;
+    }
     // One more pass so the last repaint (underlines, fit to view) is done.
     QTimer::singleShot(300, window, [window, out, exitCode] {
       const QPixmap shot = window->grab();
@@ -57,6 +71,8 @@ void scheduleScreenshot(klueng::gui::MainWindow* window, const QString& out, int
 
 int main(int argc, char** argv) {
   QApplication app(argc, argv);
+  // A kill during a save leaves no temporary file beside the program (issue 42).
+  klueng::core::io::removeTemporaryFilesOnSignals();
   QApplication::setOrganizationName(QStringLiteral("Klueng"));
   QApplication::setApplicationName(QStringLiteral("klueng"));
   QApplication::setApplicationDisplayName(QStringLiteral("Klueng"));

@@ -24,6 +24,7 @@
 #include "cli_common.h"
 #include "klueng/core/machine/machine_files.h"
 #include "klueng/core/diagnostic_codes.h"
+#include "klueng/core/io/folder_files.h"
 #include "klueng/core/job/job.h"
 #include "commands.h"
 
@@ -60,23 +61,27 @@ std::optional<int> parseArgs(const std::vector<std::string>& args, CheckOptions&
   return std::nullopt;
 }
 
-// A folder stands for the program files in it (not its subfolders), sorted by name.
-std::vector<std::string> expandFolders(const std::vector<std::string>& args) {
+// One file to check: a named one, or an entry of a named folder.
+struct CheckedFile {
+  std::string path;
+  bool inFolder = false;                // read as a folder run: only a G-code program is parsed
+  std::optional<Diagnostic> refusal;    // a folder entry not read (a link out of it, a pipe...)
+};
+
+// A folder stands for the program files in it (not its subfolders), sorted by name; an entry
+// that is not read (io::folderEntryRefusal) is listed with why, so it is never left out silently.
+std::vector<CheckedFile> expandFolders(const std::vector<std::string>& args) {
   namespace fs = std::filesystem;
-  std::vector<std::string> files;
+  std::vector<CheckedFile> files;
   for (const std::string& arg : args) {
     std::error_code ec;
     if (!fs::is_directory(arg, ec)) {
-      files.push_back(arg);
+      files.push_back({arg, false, std::nullopt});
       continue;
     }
-    std::vector<std::string> inFolder;
-    for (const auto& entry : fs::directory_iterator(arg, ec))
-      if (entry.is_regular_file(ec) && io::isProgramFileName(entry.path().string()))
-        inFolder.push_back(entry.path().string());
-    std::sort(inFolder.begin(), inFolder.end());
-    if (inFolder.empty()) files.push_back(arg);  // reported as unreadable (a folder)
-    files.insert(files.end(), inFolder.begin(), inFolder.end());
+    const std::vector<io::FolderEntry> entries = io::programFolderEntries(arg);
+    if (entries.empty()) files.push_back({arg, false, std::nullopt});  // reported as unreadable (a folder)
+    for (const io::FolderEntry& e : entries) files.push_back({e.path, true, io::folderEntryRefusal(e)});
   }
   return files;
 }
@@ -91,7 +96,7 @@ struct FileSummary {
 void printSummary(const std::vector<FileSummary>& rows, Lang lang) {
   const auto text = [lang](const char* code) { return cliText(code, lang); };
   std::size_t width = 4;
-  for (const auto& r : rows) width = std::max(width, r.file.size());
+  for (const auto& r : rows) width = std::max(width, printable(r.file).size());
   std::string out =
       fmt::format("\n{:<{}}  {:>6}  {:>8}  {}\n", text(codes::kCliSummaryFile), width, text(codes::kCliSummaryErrors),
                   text(codes::kCliSummaryWarnings), text(codes::kCliSummaryResult));
@@ -99,7 +104,7 @@ void printSummary(const std::vector<FileSummary>& rows, Lang lang) {
     const std::string result = text(r.unreadable ? codes::kCliSummaryUnreadable
                                     : r.errors   ? codes::kCliSummaryFail
                                                  : codes::kCliSummaryOk);
-    out += fmt::format("{:<{}}  {:>6}  {:>8}  {}\n", r.file, width, r.errors, r.warnings, result);
+    out += fmt::format("{:<{}}  {:>6}  {:>8}  {}\n", printable(r.file), width, r.errors, r.warnings, result);
   }
   std::fwrite(out.data(), 1, out.size(), stdout);
 }
@@ -125,13 +130,21 @@ int runCheck(const std::vector<std::string>& args) {
   std::vector<FileSummary> summary;
   std::vector<FileDiagnostic> notes;  // each file's tool choices and where its stock comes from
 
-  const std::vector<std::string> files = expandFolders(o.files);
-  for (const std::string& path : files) {
+  const std::vector<CheckedFile> files = expandFolders(o.files);
+  for (const CheckedFile& file : files) {
+    const std::string& path = file.path;
+    if (file.refusal) {
+      all.push_back({path, *file.refusal});
+      summary.push_back(FileSummary{path, 1, 0, true});
+      anyUnreadable = true;
+      continue;
+    }
     // A program that names its machine is checked on it (the setup with that machine's keys).
     std::vector<Diagnostic> machineWarnings;
     const gcode::Dialect own = programMachine(path, o.dialectGiven, o.dialect, machineWarnings);
     core::job::JobInput input = *request;
     input.path = path;
+    input.folderRun = file.inFolder;
     if (own != o.dialect) {
       input.run.dialect = own;
       input.stations = stationLimit(config, own);
@@ -156,7 +169,7 @@ int runCheck(const std::vector<std::string>& args) {
     anyUnreadable = anyUnreadable || job->unreadable();
     anyError = anyError || row.errors > 0;
     summary.push_back(row);
-    if (&path == &files.back()) keepUntilExit(std::move(job));
+    if (&file == &files.back()) keepUntilExit(std::move(job));
   }
 
   if (o.json) {

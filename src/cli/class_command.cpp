@@ -27,6 +27,7 @@
 #include "klueng/core/design/part_design.h"
 #include "render/class_pdf_cells.h"
 #include "klueng/core/gcode/word_format.h"
+#include "klueng/core/io/folder_files.h"
 #include "klueng/core/io/program_file.h"
 
 namespace klueng::cli {
@@ -155,12 +156,17 @@ int runClass(const std::vector<std::string>& args) {
   std::vector<std::string> inputs = setupFiles(config);
   if (!o.reference.empty()) inputs.push_back(o.reference);
   if (!o.drawing.empty()) inputs.push_back(o.drawing);
-  for (const std::filesystem::directory_entry& e : std::filesystem::directory_iterator(o.dir, ec))
-    if (e.is_regular_file(ec) && io::isProgramFileName(e.path().string())) inputs.push_back(e.path().string());
+  for (const io::FolderEntry& e : io::programFolderEntries(o.dir))
+    if (e.kind == io::FolderEntryKind::Program) {
+      inputs.push_back(e.path);
+      inputs.push_back(core::job::touchOffFilePath(e.path));  // the setup exercise's offsets
+    }
   if (!outputsAllowed({o.csv, o.pdf}, inputs, o.lang)) return 2;
   const std::vector<core::job::ClassRow> rows = core::job::gradeClass(
       o.dir, against, *request,
-      [](int i, int n, const std::string& name) { std::fprintf(stderr, "[%d/%d] %s\n", i + 1, n, name.c_str()); });
+      [](int i, int n, const std::string& name) {
+        std::fprintf(stderr, "[%d/%d] %s\n", i + 1, n, printable(name).c_str());
+      });
   const int passed =
       static_cast<int>(std::count_if(rows.begin(), rows.end(), [](const core::job::ClassRow& r) { return r.pass; }));
   const std::string table = core::job::classCsv(rows, against.hasDrawing);
@@ -173,8 +179,8 @@ int runClass(const std::vector<std::string>& args) {
   // The setup exercise (issue 31): each student's touch-off, tool by tool, in the chosen language.
   for (const core::job::ClassRow& r : rows)
     if (r.touchOff.asked)
-      std::fprintf(stderr, "%s: %s\n", r.file.c_str(),
-                   core::job::touchOffText(r.touchOff, o.tolerance, o.lang).c_str());
+      std::fprintf(stderr, "%s: %s\n", printable(r.file).c_str(),
+                   printable(core::job::touchOffText(r.touchOff, o.tolerance, o.lang)).c_str());
   const std::string totals = cliText(codes::kCliClassTotals, o.lang,
                                      {std::to_string(rows.size()), std::to_string(passed),
                                       std::to_string(rows.size() - static_cast<std::size_t>(passed))});

@@ -1,4 +1,5 @@
 #include "cli_common.h"
+#include "klueng/core/job/run_inputs.h"
 
 #include <fmt/format.h>
 
@@ -305,8 +306,26 @@ std::string formatGccStyle(const std::string& file, const Diagnostic& d, Lang la
   return formatWithPlace(file, d, lang);
 }
 
+std::string printable(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (const char ch : text) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c == '\n')
+      out += "\\n";
+    else if (c == '\r')
+      out += "\\r";
+    else if ((c < 0x20 && c != '\t') || c == 0x7F)
+      out += fmt::format("\\x{:02x}", c);
+    else
+      out += ch;
+  }
+  return out;
+}
+
 void printDiagnostic(std::FILE* out, const std::string& file, const Diagnostic& d, Lang lang) {
-  const std::string line = formatGccStyle(file, d, lang) + '\n';
+  // One diagnostic, one line: a file name holding a line end cannot forge another.
+  const std::string line = printable(formatGccStyle(file, d, lang)) + '\n';
   std::fwrite(line.data(), 1, line.size(), out);
 }
 
@@ -374,18 +393,10 @@ bool outputsAllowed(const std::vector<std::string>& outputs, const std::vector<s
   return allowed;
 }
 
-std::vector<std::string> setupFiles(const LoadedConfig& config) {
-  if (config.dir.empty()) return {};
-  return {joinPath(config.dir, "tools.cfg"), joinPath(config.dir, "offset.cfg"), joinPath(config.dir, "machine.cfg"),
-          io::macroVariablesPath(config.dir)};
-}
+std::vector<std::string> setupFiles(const LoadedConfig& config) { return core::job::setupInputFiles(config); }
 
 std::vector<std::string> programInputs(const std::string& file, const core::job::Job& job, const LoadedConfig& config) {
-  std::vector<std::string> inputs{file};
-  if (job.program())
-    for (const std::string& sub : job.program()->files) inputs.push_back(sub);  // files[0] is "": the program
-  for (std::string& setup : setupFiles(config)) inputs.push_back(std::move(setup));
-  return inputs;
+  return core::job::runInputFiles(file, &job, config);
 }
 
 bool reportWrite(const std::string& path, const std::optional<Diagnostic>& failure, Lang lang) {

@@ -123,7 +123,11 @@ using FileDiagnostic = core::machine::SetupDiagnostic;
 
 // `FILE:LINE:COL: error E104: message` (`FILE: ...` when the line is unknown), no newline.
 std::string formatGccStyle(const std::string& file, const core::Diagnostic& d, core::Lang lang);
+// Prints one line: printable(formatGccStyle(...)).
 void printDiagnostic(std::FILE* out, const std::string& file, const core::Diagnostic& d, core::Lang lang);
+// `text` with line ends and other control characters escaped (\n, \r, \x1b; tabs and UTF-8
+// kept), so that a file name holding a newline cannot forge a line of output (issue 42).
+std::string printable(std::string_view text);
 
 // JSON string contents (without quotes): escapes quotes, backslashes and
 // control characters; invalid UTF-8 bytes become U+FFFD.
@@ -148,7 +152,8 @@ LoadedConfig loadConfig(const std::string& explicitDir = {});
 // setup file) would destroy it (F126); a read-only output is refused (F119).
 // Prints each; true when there is none. Empty names are skipped.
 bool outputsAllowed(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs, core::Lang lang);
-// The setup files of `config` (tools.cfg, offset.cfg, machine.cfg, macro_variables.cfg in its folder): inputs too.
+// Every file a run with `config` reads (core::job::setupInputFiles: the setup tables,
+// macro_variables.cfg, the tool pictures, the library, the cutting speeds, the machine files): inputs too.
 std::vector<std::string> setupFiles(const LoadedConfig& config);
 // What a run of `file` read: the program, its subprogram files and the setup files.
 std::vector<std::string> programInputs(const std::string& file, const core::job::Job& job, const LoadedConfig& config);

@@ -7,6 +7,7 @@
 #include "cli_common.h"
 #include "commands.h"
 #include "klueng/core/diagnostic_codes.h"
+#include "klueng/core/io/file_write.h"
 
 namespace {
 
@@ -19,6 +20,8 @@ void printUsage(std::FILE* out, klueng::core::Lang lang) {
 
 int main(int argc, char** argv) {
   klueng::cli::prepareBatchMemory();
+  // Ctrl+C or a kill during a write leaves no `.out.csv.tmp-*` behind (issue 42).
+  klueng::core::io::removeTemporaryFilesOnSignals();
   const klueng::core::Lang lang = klueng::cli::langOfArgs(std::vector<std::string>(argv + 1, argv + argc));
   if (argc < 2) {
     printUsage(stderr, lang);

@@ -171,8 +171,11 @@ int runSimulate(const std::vector<std::string>& args) {
   if (job.unreadable()) return 2;
   // An output naming the program, a subprogram file or a setup file would destroy it: refused
   // before the run, as a compiler refuses `-o` naming its source (issue 29).
+  std::vector<std::string> inputs = programInputs(o.file, job, config);
+  inputs.push_back(variablesPath);  // #500-#999 are read too
+  if (!o.machine.empty() && std::filesystem::is_regular_file(o.machine)) inputs.push_back(o.machine);
   if (!outputsAllowed({o.tracePath, o.cut.pngPath, o.cut.profilePath, o.cut.jsonPath, o.cut.svgPath, o.cut.dxfPath},
-                      programInputs(o.file, job, config), o.lang))
+                      inputs, o.lang))
     return 2;
   if (!job.file() || !job.program() || job.hasErrors()) return 1;
   for (const Diagnostic& n : job.stockNotes()) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
@@ -180,6 +183,9 @@ int runSimulate(const std::vector<std::string>& args) {
   const io::ProgramFile& programFile = *job.file();
   const gcode::Program& program = *job.program();
   machine::RunOptions runOptions = request->run;
+  // Read, run and write #500-#999 under one lock: a parallel run waits, then reads our values.
+  std::optional<io::MacroVariablesLock> variablesLock;
+  if (!o.noPersist && !variablesPath.empty()) variablesLock.emplace(variablesDir);
   const io::ReadResult<io::MacroVariables> stored = variablesPath.empty()
                                                         ? io::ReadResult<io::MacroVariables>{io::MacroVariables{}, {}}
                                                         : io::readMacroVariables(variablesPath);
@@ -188,12 +194,15 @@ int runSimulate(const std::vector<std::string>& args) {
   const io::MacroVariables before = variables;
   const machine::Timeline& timeline = *job.timeline();  // the run, with the stored #500-#999
   for (const Diagnostic& n : timeline.flow.notices) printDiagnostic(job.fileOf(n), n, o.lang);
+  bool variablesWritten = true;
   if (variables != before && !o.noPersist && stored.value && !variablesPath.empty()) {
     std::error_code ec;
     std::filesystem::create_directories(variablesDir, ec);  // the user's data folder may not exist yet
-    // The run's own result does not depend on it: said, and the run goes on.
-    writeOutput(variablesPath, io::formatMacroVariables(variables), o.lang);
+    // The run's own result does not depend on it: said, the run goes on, and the exit status is 2
+    // as for any output that could not be written (README).
+    variablesWritten = writeOutput(variablesPath, io::formatMacroVariables(variables), o.lang);
   }
+  variablesLock.reset();
 
   if (!o.tracePath.empty() && !writeOutput(o.tracePath, machine::formatTraceCsv(timeline), o.lang)) return 2;
   // The stock: collisions stop the run on their block (SPEC 8), and the cut outputs.
@@ -232,7 +241,7 @@ int runSimulate(const std::vector<std::string>& args) {
   }
   const std::optional<Diagnostic>& alarm = cut.alarm ? cut.alarm : timeline.alarm;
   if (alarm) printDiagnostic(job.fileOf(*alarm), *alarm, o.lang);
-  if (!cut.written) return 2;  // an output could not be written (said on stderr); the old file is kept
+  if (!cut.written || !variablesWritten) return 2;  // an output could not be written (said); the old file is kept
   return alarm ? 1 : 0;
 }
 

@@ -403,6 +403,7 @@ bool ClassGradeDialog::saveCsv(const QString& path, QString* why) {
   if (refused.isEmpty() && !gradedDrawing_.isEmpty()) refused = outputIsInput(path, gradedDrawing_);
   for (const core::job::ClassRow& row : rows_)
     if (refused.isEmpty()) refused = outputIsInput(path, QString::fromStdString(row.path));
+  if (refused.isEmpty()) refused = outputIsAnyInput(path, setupInputs(setup_));  // the setup too (issue 42)
   if (refused.isEmpty()) refused = writeFileChecked(path, core::job::classCsv(rows_, !gradedDrawing_.isEmpty()));
   if (why) *why = refused;
   return refused.isEmpty();
@@ -413,6 +414,7 @@ bool ClassGradeDialog::savePdf(const QString& path, QString* why) {
   if (refused.isEmpty() && !gradedDrawing_.isEmpty()) refused = outputIsInput(path, gradedDrawing_);
   for (const core::job::ClassRow& row : rows_)
     if (refused.isEmpty()) refused = outputIsInput(path, QString::fromStdString(row.path));
+  if (refused.isEmpty()) refused = outputIsAnyInput(path, setupInputs(setup_));  // the setup too (issue 42)
   if (refused.isEmpty()) {
     const core::Lang lang = Language::coreLang();
     const render::ClassPdfCells cells(rows_, lang, !gradedReference_.isEmpty());

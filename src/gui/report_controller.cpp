@@ -151,6 +151,8 @@ bool ReportController::exportPdf(const QString& path) {
   };
   // The program itself is never the PDF's name (issue 29).
   if (const QString why = outputIsInput(target, source.filePath); !why.isEmpty()) return fail(why);
+  // Nor is a file of the setup the run reads: a table, a tool picture, the library (issue 42).
+  if (const QString why = outputIsAnyInput(target, setupInputs(source.setup)); !why.isEmpty()) return fail(why);
   const render::ReportData data = reportData(source, true);
   // Into memory, then the checked writer: QPdfWriter says nothing when its file write fails
   // (a full disk gave a 0-byte PDF and "Exported"); the old file is kept on failure.

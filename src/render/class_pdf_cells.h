@@ -28,7 +28,8 @@ class ClassPdfCells {
                            ? std::string()
                            : std::to_string(in) + "/" + std::to_string(r.inspection.size()));
       cells_.push_back(r.compared ? core::gcode::formatFixed(r.deviation.gouge, 3) : "");
-      paths_.push_back(r.path);
+      // A refused entry (a link out of the folder, a pipe) gets no sheet: it is never read.
+      paths_.push_back(r.graded.refusal ? std::string() : r.path);
       dimensions_ = static_cast<int>(r.inspection.size());
       for (const core::cut::InspectedDimension& d : r.inspection) {
         dimensionCells_.push_back(core::cut::dimensionLabel(d.drawn, lang));

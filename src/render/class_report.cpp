@@ -212,8 +212,10 @@ extern "C" __attribute__((visibility("default"))) int klueng_class_pdf(const Klu
     const render::ReportLanguage lang = in->thai ? render::ReportLanguage::Thai : render::ReportLanguage::English;
     for (int i = 0; i < in->sheets; ++i) {
       // The job as the grading read it: its folder's subprograms, its tools, its stock.
+      if (!in->sheetPaths[i] || !*in->sheetPaths[i]) continue;  // refused unread: its row says why
       core::job::JobInput input;
       input.path = in->sheetPaths[i];
+      input.folderRun = true;  // no sheet prints a file that is not a program
       input.setup = setup.setup;
       input.run.dialect = dialect;
       const std::shared_ptr<const core::job::Job> job = core::job::makeJob(std::move(input));

@@ -1,5 +1,7 @@
 // Starts the real `klueng` under Xvfb (xvfb-run -a) with --screenshot, then
 // checks the PNG: the window's size, and a real picture, not a blank one.
+#include <QDir>
+#include <QFile>
 #include <QGuiApplication>
 #include <QImage>
 #include <QProcess>
@@ -77,6 +79,46 @@ class ScreenshotCheck : public QObject {
       QCOMPARE(screen.width(), 1366);
       QVERIFY2(screen.contains(frame), qPrintable(lang + QStringLiteral(": ") + text));
       QVERIFY(!QImage(out).isNull());
+    }
+  }
+
+  // Issue 42 item 2: `--screenshot X X` and a picture onto a tool bitmap of the setup
+  // folder are refused (F126, exit 2) and the file keeps its bytes.
+  void screenshotNeverReplacesAnInput() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString source = QStringLiteral(KLUENG_SOURCE_DIR);
+    QVERIFY(QDir().mkpath(dir.filePath(QStringLiteral("resources/tools"))));
+    for (const QString& f : {QStringLiteral("tools.cfg"), QStringLiteral("offset.cfg"), QStringLiteral("machine.cfg")})
+      QVERIFY(QFile::copy(source + QLatin1Char('/') + f, dir.filePath(f)));
+    const QDir tools(source + QStringLiteral("/resources/tools"));
+    for (const QString& f : tools.entryList({QStringLiteral("*.bmp")}, QDir::Files))
+      QVERIFY(QFile::copy(tools.filePath(f), dir.filePath(QStringLiteral("resources/tools/") + f)));
+    const QString program = dir.filePath(QStringLiteral("prog.txt"));
+    QVERIFY(QFile::copy(QStringLiteral(KLUENG_SAMPLES_DIR "/01-step-shaft.txt"), program));
+    const QString bitmap = dir.filePath(QStringLiteral("resources/tools/01-outside-turning.bmp"));
+    for (const QString& out : {program, bitmap}) {
+      QFile before(out);
+      QVERIFY(before.open(QIODevice::ReadOnly));
+      const QByteArray bytes = before.readAll();
+      before.close();
+      QProcess p;
+      QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+      env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+      env.insert(QStringLiteral("KLUENG_DATA_DIR"), dir.path());
+      env.insert(QStringLiteral("XDG_CONFIG_HOME"), dir.filePath(QStringLiteral("home/config")));
+      env.insert(QStringLiteral("XDG_DATA_HOME"), dir.filePath(QStringLiteral("home/data")));
+      p.setProcessEnvironment(env);
+      p.start(QStringLiteral(KLUENG_APP_PATH),
+              {QStringLiteral("--lang"), QStringLiteral("en"), QStringLiteral("--screenshot"), out, program});
+      QVERIFY2(p.waitForFinished(90000), "klueng did not finish");
+      const QString err = QString::fromLocal8Bit(p.readAllStandardError());
+      QCOMPARE(p.exitCode(), 2);
+      QVERIFY2(err.contains(QStringLiteral("F126")) || err.contains(QStringLiteral("this output is the input file")),
+               qPrintable(err));
+      QFile after(out);
+      QVERIFY(after.open(QIODevice::ReadOnly));
+      QCOMPARE(after.readAll(), bytes);
     }
   }
 };

@@ -271,10 +271,7 @@ io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::st
 
 io::ReadResult<std::vector<CuttingSpeed>> readCuttingSpeeds(const std::string& path) {
   io::ReadResult<std::vector<CuttingSpeed>> result;
-  const std::string file =
-      path.empty()
-          ? (std::filesystem::path(io::shippedConfigDir()) / "resources" / "parts" / "cutting_speeds.cfg").string()
-          : path;
+  const std::string file = path.empty() ? io::shippedCuttingSpeedsPath() : path;
   std::ifstream in(file);
   if (!in) {
     result.diagnostics.push_back(fileDiagnostic(codes::kPartFileNotJson, 0, 0, {file, "it cannot be read"}));

@@ -1,5 +1,6 @@
 #include "klueng/core/io/file_write.h"
 
+#include <atomic>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -10,6 +11,8 @@
 
 #ifndef _WIN32
 #include <fcntl.h>
+#include <pthread.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 #else
@@ -61,6 +64,59 @@ std::string folderOf(const fs::path& target) {
 }
 
 #ifndef _WIN32
+// The temporary files being written, for the signal handler: fixed slots of
+// lock-free atomics and plain buffers, all a handler may touch (async-signal-safe).
+constexpr int kTempSlots = 32;
+struct TempSlot {
+  std::atomic<int> state{0};  // 0 free, 1 being filled or emptied, 2 holds a path
+  char path[4096]{};
+};
+TempSlot tempSlots[kTempSlots];
+static_assert(std::atomic<int>::is_always_lock_free);
+
+// Signals are blocked from mkstemp until the path is registered: none can fall in between.
+class BlockedSignals {
+ public:
+  BlockedSignals() {
+    sigset_t set;
+    sigemptyset(&set);
+    for (const int sig : {SIGINT, SIGTERM, SIGHUP, SIGQUIT}) sigaddset(&set, sig);
+    pthread_sigmask(SIG_BLOCK, &set, &old_);
+  }
+  ~BlockedSignals() { pthread_sigmask(SIG_SETMASK, &old_, nullptr); }
+  BlockedSignals(const BlockedSignals&) = delete;
+  BlockedSignals& operator=(const BlockedSignals&) = delete;
+
+ private:
+  sigset_t old_;
+};
+
+int registerTemp(const std::string& path) {
+  if (path.size() >= sizeof(TempSlot::path)) return -1;
+  for (int i = 0; i < kTempSlots; ++i) {
+    int expected = 0;
+    if (!tempSlots[i].state.compare_exchange_strong(expected, 1)) continue;
+    std::memcpy(tempSlots[i].path, path.c_str(), path.size() + 1);
+    tempSlots[i].state.store(2);
+    return i;
+  }
+  return -1;  // more writes at once than slots: that one is not removed on a signal
+}
+
+void unregisterTemp(int slot) {
+  if (slot < 0) return;
+  tempSlots[slot].state.store(1);
+  tempSlots[slot].path[0] = '\0';
+  tempSlots[slot].state.store(0);
+}
+
+extern "C" void removeTempsAndReraise(int sig) {
+  for (TempSlot& slot : tempSlots)
+    if (slot.state.load() == 2) ::unlink(slot.path);
+  ::signal(sig, SIG_DFL);  // then end as the signal would have
+  ::raise(sig);
+}
+
 // Writes all of `bytes` to fd; 0, or the errno of the first failed write.
 int writeAll(int fd, std::string_view bytes) {
   std::size_t written = 0;
@@ -77,6 +133,19 @@ int writeAll(int fd, std::string_view bytes) {
 #endif
 
 }  // namespace
+
+void removeTemporaryFilesOnSignals() {
+#ifndef _WIN32
+  for (const int sig : {SIGINT, SIGTERM, SIGHUP, SIGQUIT}) {
+    struct sigaction old {};
+    if (::sigaction(sig, nullptr, &old) != 0 || old.sa_handler == SIG_IGN) continue;
+    struct sigaction action {};
+    action.sa_handler = removeTempsAndReraise;
+    sigemptyset(&action.sa_mask);
+    ::sigaction(sig, &action, nullptr);
+  }
+#endif
+}
 
 bool isReadOnlyFile(const std::string& path) {
 #ifndef _WIN32
@@ -112,7 +181,18 @@ std::optional<Diagnostic> writeFileAtomic(const std::string& path, std::string_v
   }
   const std::string folder = folderOf(target);
   std::string temp = (fs::path(folder) / ("." + target.filename().string() + ".tmp-XXXXXX")).string();
-  const int fd = ::mkstemp(temp.data());
+  int fd = -1;
+  int slot = -1;
+  {
+    const BlockedSignals blocked;
+    fd = ::mkstemp(temp.data());
+    if (fd >= 0) slot = registerTemp(temp);
+  }
+  // Unregistered once renamed or removed: a signal then has nothing of ours to remove.
+  struct Unregister {
+    int slot;
+    ~Unregister() { unregisterTemp(slot); }
+  } unregister{slot};
   if (fd < 0) {
     const int err = errno;
     if (err == ENOENT || err == ENOTDIR || err == EACCES || err == EPERM || err == EROFS)

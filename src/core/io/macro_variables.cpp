@@ -1,6 +1,7 @@
 // The #500-#999 file (macro_variables.h).
 #include "klueng/core/io/macro_variables.h"
 
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -10,6 +11,12 @@
 
 #include "io/text_util.h"
 #include "klueng/core/diagnostic_codes.h"
+
+#ifndef _WIN32
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+#endif
 
 namespace klueng::core::io {
 
@@ -91,6 +98,31 @@ std::string formatMacroVariables(const MacroVariables& values) {
 
 std::string macroVariablesPath(const std::string& folder) {
   return (std::filesystem::path(folder.empty() ? "." : folder) / std::string(kMacroVariablesFile)).string();
+}
+
+}  // namespace klueng::core::io
+
+namespace klueng::core::io {
+
+MacroVariablesLock::MacroVariablesLock(const std::string& folder) {
+#ifndef _WIN32
+  fd_ = ::open(folder.empty() ? "." : folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd_ < 0) return;
+  while (::flock(fd_, LOCK_EX) != 0) {
+    if (errno == EINTR) continue;
+    ::close(fd_);  // a file system without locks: run unlocked, as before
+    fd_ = -1;
+    return;
+  }
+#else
+  (void)folder;
+#endif
+}
+
+MacroVariablesLock::~MacroVariablesLock() {
+#ifndef _WIN32
+  if (fd_ >= 0) ::close(fd_);  // closing releases the lock
+#endif
 }
 
 }  // namespace klueng::core::io

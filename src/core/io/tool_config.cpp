@@ -570,6 +570,10 @@ std::string shippedConfigDir() {
   return dir;
 }
 
+std::string shippedCuttingSpeedsPath() {
+  return (fs::path(shippedConfigDir()) / "resources" / "parts" / "cutting_speeds.cfg").string();
+}
+
 std::string samplesDir(const std::string& shippedDir) {
   if (shippedDir.empty()) return {};
   std::error_code ec;

@@ -10,6 +10,7 @@
 #include "klueng/core/cut/cut_simulator.h"
 #include "klueng/core/cut/guess_fit.h"
 #include "klueng/core/cut/part_features.h"
+#include "klueng/core/io/folder_files.h"
 #include "klueng/core/io/tool_library.h"
 #include "klueng/core/io/tool_config.h"
 #include "klueng/core/diagnostic_codes.h"
@@ -24,7 +25,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string place(const Diagnostic& d) { return d.code + " line " + std::to_string(d.range.line); }
+std::string place(const Diagnostic& d) {
+  return d.range.line > 0 ? d.code + " line " + std::to_string(d.range.line) : d.code;  // a file's own F-code has none
+}
 
 std::string csvField(const std::string& s) {
   if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
@@ -38,6 +41,14 @@ bool classAsksTouchOff(const std::string& path) {
   if (path.empty()) return false;
   const io::ReadResult<io::ProgramFile> read = io::readProgramFile(path);
   return read.value && read.value->header.offsetsUnknown();
+}
+
+// A refused entry's first_error: its code and the English words of the CSV.
+std::string refusalText(const Diagnostic& d) {
+  if (d.code == codes::kOutsideFolder) return d.code + " refused: points outside the folder";
+  if (d.code == codes::kNoSuchFile) return d.code + " unreadable: a link to nothing";
+  if (d.code == codes::kNotAnOrdinaryFile) return d.code + " unreadable: not an ordinary file";
+  return d.code + " unreadable: a folder";
 }
 
 std::string touchOffMm(double v) { return gcode::formatFixed(std::abs(v) < 0.0005 ? 0.0 : v, 3); }
@@ -149,29 +160,44 @@ std::vector<ClassRow> gradeClass(const std::string& folder, const GradeAgainst& 
                                  const std::function<void(int, int, const std::string&)>& progress) {
   const double tolerance = against.tolerance;
   std::error_code ec;
-  std::vector<fs::path> files;
-  for (const fs::directory_entry& e : fs::directory_iterator(folder, ec)) {
+  // Only what lies in the folder is read; a link out of it, a pipe, a folder or a dangling
+  // link is a failed row of its own, never opened (issue 42 item 1).
+  std::vector<io::FolderEntry> files;
+  for (io::FolderEntry& e : io::programFolderEntries(folder)) {
     std::error_code same;
-    if (e.is_regular_file(ec) && io::isProgramFileName(e.path().string()) &&
-        (against.referencePath.empty() || !fs::equivalent(e.path(), against.referencePath, same)))
-      files.push_back(e.path());
+    if (e.kind == io::FolderEntryKind::Program && !against.referencePath.empty() &&
+        fs::equivalent(e.path, against.referencePath, same))
+      continue;
+    files.push_back(std::move(e));
   }
-  std::sort(files.begin(), files.end());
   std::vector<ClassRow> rows;
   const bool referenceAsks = classAsksTouchOff(against.referencePath);
   for (std::size_t i = 0; i < files.size(); ++i) {
     ClassRow row;
-    row.file = files[i].filename().string();
-    row.path = files[i].string();
+    row.file = files[i].name;
+    row.path = files[i].path;
     if (progress) progress(static_cast<int>(i), static_cast<int>(files.size()), row.file);
+    if (const std::optional<Diagnostic> refused = io::folderEntryRefusal(files[i])) {
+      row.graded.errors = 1;
+      row.graded.firstError = refusalText(*refused);
+      row.graded.refusal = refused;
+      rows.push_back(std::move(row));
+      continue;
+    }
     TouchOffGrade& touch = row.touchOff;
     touch.asked = referenceAsks || classAsksTouchOff(row.path);
     JobInput input = base;
+    input.folderRun = true;
     if (touch.asked) {
       // The student's own offsets: the run uses them, as the lathe would.
       const std::string offsetsPath = touchOffFilePath(row.path);
       touch.file = fs::path(offsetsPath).filename().string();
-      if (fs::exists(offsetsPath, ec)) {
+      std::error_code lec;
+      const bool present = fs::exists(fs::symlink_status(offsetsPath, lec));
+      if (present && (!io::insideFolder(offsetsPath, folder) || !fs::is_regular_file(offsetsPath, lec))) {
+        // Its messages quote its lines: a file from outside the folder is not read.
+        touch.readError = "refused: not a file of the folder";
+      } else if (present) {
         const io::ReadResult<io::OffsetTable> read = io::readOffsetTable(offsetsPath);
         const auto bad = std::find_if(read.diagnostics.begin(), read.diagnostics.end(),
                                       [](const Diagnostic& d) { return isError(d.severity); });

@@ -13,6 +13,7 @@
 #include "klueng/core/gcode/dialect_fit.h"
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/gcode/program_index.h"
+#include "klueng/core/io/folder_files.h"
 #include "klueng/core/io/tool_library.h"
 #include "klueng/core/infer/point_reading.h"
 #include "klueng/core/gcode/decimal_point.h"
@@ -98,6 +99,23 @@ bool persistentAlike(const machine::Timeline& record, const std::map<int, double
                       [&](const machine::VariableWrite& w) { return persistent(w.number); });
 }
 
+// A subprogram file that is a link leaving the program's folder (O1000.nc -> /etc/shadow) is
+// not the control's memory: its blocks and messages go, F158 stays, and the call is E404 as
+// for a missing file, so nothing of its text reaches a message, a sheet or a PDF (issue 42).
+void dropFilesOutside(gcode::Program& program, const std::string& folder, std::vector<Diagnostic>& diagnostics) {
+  for (int k = 1; k < static_cast<int>(program.files.size()); ++k) {
+    const std::string& path = program.files[static_cast<std::size_t>(k)];
+    if (io::insideFolder(path, folder)) continue;
+    const auto fromIt = [k](const Diagnostic& d) { return d.range.file == k; };
+    std::erase_if(program.blocks, [k](const gcode::Block& b) { return b.file == k; });
+    std::erase_if(program.lexicalDiagnostics, fromIt);
+    std::erase_if(diagnostics, fromIt);
+    Diagnostic refused{Severity::Error, codes::kOutsideFolder, {}, {path}};
+    refused.range.file = k;
+    diagnostics.push_back(std::move(refused));
+  }
+}
+
 bool byPlace(const Diagnostic& a, const Diagnostic& b) {
   if (a.range.file != b.range.file) return a.range.file < b.range.file;
   return a.range.line != b.range.line ? a.range.line < b.range.line : a.range.column < b.range.column;
@@ -171,6 +189,11 @@ std::shared_ptr<const Job> makeJob(JobInput input) {
     j.file_ = std::move(read.value);
   }
   j.unreadable_ = std::any_of(j.diagnostics_.begin(), j.diagnostics_.end(), machine::isUnreadable);
+  if (j.file_ && input.folderRun)
+    if (std::optional<Diagnostic> refusal = io::notAGcodeProgram(j.file_->gcode, input.path)) {
+      j.diagnostics_.push_back(std::move(*refusal));
+      j.file_.reset();
+    }
   if (!j.file_) {
     j.input_ = std::move(input);
     return job;
@@ -214,6 +237,7 @@ std::shared_ptr<const Job> makeJob(JobInput input) {
   if (ownFolder || !folder.empty())
     for (Diagnostic& d : machine::attachSubprogramFiles(program, folder, run.dialect))
       j.diagnostics_.push_back(std::move(d));
+  dropFilesOutside(program, folder, j.diagnostics_);
   if (gcode::machineProfile(run.dialect).angleWithoutComma) gcode::readAnglesWithoutComma(program);
   j.unreadable_ = std::any_of(j.diagnostics_.begin(), j.diagnostics_.end(),
                               [](const Diagnostic& d) { return d.range.file == 0 && machine::isUnreadable(d); });

@@ -34,4 +34,10 @@ std::optional<Diagnostic> outputOverwritesInput(const std::string& output, const
 // True when `path` is an existing file writeFileAtomic would refuse as read-only (F119).
 bool isReadOnlyFile(const std::string& path);
 
+// SIGINT, SIGTERM, SIGHUP and SIGQUIT remove the temporary file of every write
+// under way (`.NAME.tmp-XXXXXX`), then end the process by the same signal as
+// before (issue 42 item 5). Call once at start; a signal the process ignores
+// (a background job's SIGINT) stays ignored.
+void removeTemporaryFilesOnSignals();
+
 }  // namespace klueng::core::io

@@ -29,4 +29,21 @@ std::string formatMacroVariables(const MacroVariables& values);
 // The file's path in `folder`.
 std::string macroVariablesPath(const std::string& folder);
 
+// An exclusive lock on `folder`'s #500-#999 from construction to destruction,
+// so that parallel runs read, change and write macro_variables.cfg one after
+// another (issue 42 item 5: twenty runs of #500=#500+1 add twenty). It is an
+// flock on the folder itself: nothing is left behind, and a crashed run's lock
+// goes with its process. Not locked (locked() false) when the folder is missing.
+class MacroVariablesLock {
+ public:
+  explicit MacroVariablesLock(const std::string& folder);
+  ~MacroVariablesLock();
+  MacroVariablesLock(const MacroVariablesLock&) = delete;
+  MacroVariablesLock& operator=(const MacroVariablesLock&) = delete;
+  bool locked() const { return fd_ >= 0; }
+
+ private:
+  int fd_ = -1;
+};
+
 }  // namespace klueng::core::io

@@ -165,6 +165,8 @@ std::string userConfigDir();
 // The folder of the shipped defaults: <prefix>/share/klueng beside the running
 // program's bin/ when installed, the repository top in a build tree.
 std::string shippedConfigDir();
+// The shipped cutting-speed table (resources/parts/cutting_speeds.cfg) the program generator reads.
+std::string shippedCuttingSpeedsPath();
 // The sample programs shipped with Klueng: samples/ in the shipped folder when
 // installed, resources/samples in a build tree; empty when neither is there.
 std::string samplesDir(const std::string& shippedDir = shippedConfigDir());

@@ -58,6 +58,9 @@ struct GradedProgram {
   double cycleTime = 0.0;                    // seconds (up to the alarm)
   std::vector<std::string> subprogramFiles;  // files of the folder its calls read (the program's own)
   std::vector<int> stations;                 // the turret stations its run used, in order
+  // A folder entry that was not read (io::folderEntryRefusal: F158 a link out of the folder,
+  // F157 a pipe, F102 a folder, F101 a dangling link); firstError says the same in words.
+  std::optional<Diagnostic> refusal;
 };
 
 // Loads, checks, runs and cuts one program (makeJob with `base`, its path set

@@ -63,6 +63,10 @@ struct JobInput {
   // it becomes the timeline, so the program is interpreted once (issue 29 item 14).
   // False (the editor's check): the record is freed when the tools and stock are known.
   bool timelineNext = false;
+  // A file of a folder run (check DIR, class DIR): one that is not a G-code program
+  // (binary data, no G-code in its first lines) is refused with F159, never parsed,
+  // so no message quotes its text (issue 42 item 1).
+  bool folderRun = false;
 };
 
 class Job {
