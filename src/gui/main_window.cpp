@@ -352,6 +352,9 @@ void MainWindow::connectDocuments() {
     core::gcode::Dialect named{};
     if (!core::gcode::parseDialectId(document_->header().machine, named)) named = settings_->dialect();
     if (named != jobDoc_.dialect()) useMachineForThisProgram(named);
+    // The bar as the check reads the program (its units, a comment naming the bar): the first
+    // check's Job says it, as after a change of machine or units.
+    restockOnNextCheck_ = true;
     checker_->checkText(text);  // the text just loaded: no need to read it back from the editor
     emit fileLoaded(path);
   });

@@ -52,10 +52,10 @@ constexpr MessageText kGuiWording[] = {
      "{0} ไม่มีจุดทศนิยมจึงถูกอ่านเป็น {1} (การป้อนค่าแบบเครื่องคิดเลข) เครื่องที่ตั้งการป้อนจุดทศนิยมแบบมาตรฐานจะอ่านเป็น {2} ถ้าต้องการค่านั้น "
      "ให้เขียน {3} หรือเลือกการอ่านแบบนั้นที่ แฟ้ม ▸ รายละเอียดงาน"},
     {"I107",
-     "the program names no units (no G20 or G21) and its sizes are in {0} ({1} is a {0} size, as the other cycle "
-     "depths, feeds and speeds): it is read in {0}; choose the power-on units in Tool setting if that is wrong",
-     "โปรแกรมไม่ได้ระบุหน่วย (ไม่มี G20 หรือ G21) และขนาดต่าง ๆ เป็นหน่วย {0} ({1} เป็นขนาดในหน่วย {0} เช่นเดียวกับระยะป้อนลึก "
-     "อัตราป้อน และความเร็วอื่น ๆ) จึงอ่านเป็น {0}: ถ้าไม่ถูกต้องให้เลือกหน่วยเมื่อเปิดเครื่องที่ ตั้งค่ามีดตัด"},
+     "the program names no units (no G20 or G21) and its sizes are in {0} ({1} and its other cycle depths, feeds "
+     "and speeds are {0} values): it is read in {0}; choose the power-on units in Tool setting if that is wrong",
+     "โปรแกรมไม่ได้ระบุหน่วย (ไม่มี G20 หรือ G21) และขนาดต่าง ๆ เป็นหน่วย {0} ({1} รวมทั้งระยะป้อนลึก "
+     "อัตราป้อน และความเร็วอื่น ๆ เป็นค่าในหน่วย {0}) จึงอ่านเป็น {0}: ถ้าไม่ถูกต้องให้เลือกหน่วยเมื่อเปิดเครื่องที่ ตั้งค่ามีดตัด"},
     {"I103",
      "lengths without a decimal point are read in least input increments (0.001 mm, 0.0001 in), as a standard Fanuc or "
      "Haas reads them: {0} on line {1} is {2}; change it in File ▸ Job details",

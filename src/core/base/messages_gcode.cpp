@@ -259,10 +259,10 @@ constexpr MessageText kGcodeMessages[] = {
      "ความยาวที่ไม่มีจุดทศนิยมอ่านเป็นมิลลิเมตรหรือนิ้วเต็มหน่วย (การป้อนค่าแบบเครื่องคิดเลข) ตามที่ตัวเลขในโปรแกรมบอก: {0} ในบรรทัดที่ {1} คือ "
      "{2} เปลี่ยนได้ที่รายละเอียดงาน (--decimal-point)"},
     {"I107",
-     "the program names no units (no G20 or G21) and its sizes are in {0} ({1} is a {0} size, as the other cycle "
-     "depths, feeds and speeds): it is read in {0}; choose the units in Tool setting (--units) if that is wrong",
-     "โปรแกรมไม่ได้ระบุหน่วย (ไม่มี G20 หรือ G21) และขนาดต่าง ๆ เป็นหน่วย {0} ({1} เป็นขนาดในหน่วย {0} เช่นเดียวกับระยะป้อนลึก "
-     "อัตราป้อน และความเร็วอื่น ๆ) จึงอ่านเป็น {0}: ถ้าไม่ถูกต้องให้เลือกหน่วยที่ ตั้งค่ามีดตัด (--units)"},
+     "the program names no units (no G20 or G21) and its sizes are in {0} ({1} and its other cycle depths, feeds "
+     "and speeds are {0} values): it is read in {0}; choose the units in Tool setting (--units) if that is wrong",
+     "โปรแกรมไม่ได้ระบุหน่วย (ไม่มี G20 หรือ G21) และขนาดต่าง ๆ เป็นหน่วย {0} ({1} รวมทั้งระยะป้อนลึก "
+     "อัตราป้อน และความเร็วอื่น ๆ เป็นค่าในหน่วย {0}) จึงอ่านเป็น {0}: ถ้าไม่ถูกต้องให้เลือกหน่วยที่ ตั้งค่ามีดตัด (--units)"},
     {"I106",
      "{0} is an angle without its comma, as a Fanuc 0-T reads it (parameter 3405#4): write {1}, or set "
      "angle_without_comma = 1 in the machine file",
