@@ -98,5 +98,28 @@ TEST(Stock, RangeMaximaMatchAScanOfEveryColumn) {
   EXPECT_DOUBLE_EQ(s.maxOuterRadius(3000, 2999), 0.0);  // an empty range
 }
 
+// A part cut off the bar drops into the catcher (issue 38): it stays in view for the finished
+// part, but nothing later cuts it or collides with it.
+TEST(StockCatcher, APartCutOffStaysInViewAndIsNeverCutAgain) {
+  Stock bar(20.0, 30.0, 1.0);  // 30 columns of 1 mm, Z-30..0
+  ASSERT_EQ(bar.columnCount(), 30);
+  EXPECT_FALSE(bar.catchCutOffPart());  // one piece: nothing to catch
+  const int cut = bar.columnAt(-10.5);  // a 1 mm blade cuts off Z-11..-10 to the centre
+  bar.remove(cut, 0.0, 10.0);
+  ASSERT_EQ(bar.outerRadius(cut), 0.0);
+  EXPECT_TRUE(bar.catchCutOffPart());
+  const int part = bar.columnAt(-5.0), stub = bar.columnAt(-20.0);
+  EXPECT_TRUE(bar.caught(part));
+  EXPECT_FALSE(bar.caught(stub));
+  // The next part's facing sweeps through where the part was: it stays whole.
+  EXPECT_EQ(bar.remove(part, 0.0, 10.0), 0.0);
+  EXPECT_EQ(bar.overlap(part, 0.0, 10.0), 0.0);
+  EXPECT_DOUBLE_EQ(bar.outerRadius(part), 10.0);
+  // The bar in the chuck is cut as before.
+  EXPECT_GT(bar.remove(stub, 8.0, 10.0), 0.0);
+  EXPECT_DOUBLE_EQ(bar.outerRadius(stub), 8.0);
+  EXPECT_FALSE(bar.catchCutOffPart());  // nothing new cut off
+}
+
 }  // namespace
 }  // namespace klueng::core::cut
