@@ -22,6 +22,7 @@ namespace {
 
 constexpr double kMmPerInch = 25.4;
 constexpr double kOnCentre = 0.5;     // mm of diameter: a feed at X0 (drill, face to centre)
+constexpr double kBeyondTheDrillMm = 1.0;  // an inside pass this much deeper than the hole needs a bore
 constexpr double kBelowWall = 0.005;  // mm of diameter: a retract this far below a pass leaves its wall
 
 bool isFeed(const Move& m) { return m.kind == MoveKind::Line || m.kind == MoveKind::Arc || m.kind == MoveKind::Thread; }
@@ -260,11 +261,16 @@ StockInference inferStock(const gcode::Program& program, const Timeline& run, co
   r.chuckGrip = std::max(0.0, setup.machine.chuckGrip) / unit;
   r.length = roundUp(-r.deepestZ + r.cutOffMargin + r.chuckGrip, r.inch ? 0.25 : 5.0);
 
-  // Bore: inside passes before the first drilling on centre.
+  // Bore: inside passes where no drill on centre has been before them (a shallow drill, a 1" insert
+  // drill .25 deep, leaves the boring bar's deeper passes in the tube's own bore).
+  double drilledTo = 0.0;  // the deepest Z drilled on centre so far
   for (std::size_t i = 0; i < moves.size(); ++i) {
     const Move& m = moves[i];
-    if (isZPass(m) && diameterOf(m.path.start) < kOnCentre && zOf(m.path.end) < 0.0) break;  // drilled
-    if (!inside[i]) continue;
+    if (isZPass(m) && diameterOf(m.path.start) < kOnCentre && zOf(m.path.end) < 0.0) {
+      drilledTo = std::min(drilledTo, zOf(m.path.end));
+      continue;
+    }
+    if (!inside[i] || (drilledTo < 0.0 && zOf(m.path.end) > drilledTo - kBeyondTheDrillMm)) continue;
     const double d = diameterOf(m.path.start) / unit;
     if (r.insidePassDiameter == 0.0 || d < r.insidePassDiameter) {
       r.insidePassDiameter = d;

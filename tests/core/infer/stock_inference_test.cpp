@@ -423,3 +423,36 @@ TEST(StockNotes, EachSourceSaysWhereTheStockCameFrom) {
 
 }  // namespace
 }  // namespace klueng::core::machine
+
+namespace klueng::core::machine {
+namespace {
+
+// An op-2 program of a production shop (issue 38): it faces the tube down to X30. only, spots it
+// with a drill 5 mm deep, then bores to Z-25.: the boring passes deeper than the drill's hole ran
+// in the tube's own bore.
+TEST(StockInference, BoringDeeperThanAShallowDrillIsATube) {
+  const StockInference r = inferStock(gcode::parse("O0201\n"
+                                                   "G21 G99 G97 S800 M03\n"
+                                                   "T0101\n"
+                                                   "G00 X62. Z0.\n"
+                                                   "G01 X30. F0.2\n"
+                                                   "G00 Z2.\n"
+                                                   "T0606\n"
+                                                   "G00 X0. Z2.\n"
+                                                   "G01 Z-5. F0.1\n"
+                                                   "G00 Z2.\n"
+                                                   "T0505\n"
+                                                   "G00 X26. Z2.\n"
+                                                   "G01 Z-25. F0.15\n"
+                                                   "G00 X25.\n"
+                                                   "G00 Z2.\n"
+                                                   "M30\n",
+                                                   1),
+                                      testing::testSetup());
+  ASSERT_TRUE(r.found);
+  EXPECT_EQ(r.boreLine, 13);  // G01 Z-25. at X26.
+  EXPECT_DOUBLE_EQ(r.bore, 25.0);  // a size below the pass
+}
+
+}  // namespace
+}  // namespace klueng::core::machine
