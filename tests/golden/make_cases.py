@@ -267,8 +267,9 @@ case("block_skip_off", "G00 X10.\n/G00 X50.\nG00 Z250.\n", [
 
 # ---------------------------------------------------------------- alarms
 X10 = [row("RAPID", 1, 0, 0.075, 0, 300, 10, 300, feed=4000)]
+# The 1999 trainer stops on an S above the maximum; a Fanuc or Haas clamps it (W132, issue 38).
 case("alarm_a101_speed_above_max", "G00 X10.\nG97 S3500 M03\n", X10,
-     alarm="program.nc:2:5: alarm A101")
+     alarm="program.nc:2:5: alarm A101", args="--dialect classic")
 case("alarm_a102_no_feed", "G98\nG00 X10.\nG01 Z290.\n",
      [row("RAPID", 2, 0, 0.075, 0, 300, 10, 300, feed=4000)], alarm="program.nc:3:1: alarm A102")
 case("alarm_a103_g99_without_s", "M03\nG00 X10.\nG01 Z290. F0.2\n",
@@ -280,8 +281,9 @@ case("alarm_a104_sample05", SAMPLE05, [
     row("RAPID", 11, 0, 0.3375, 0, 300, 45, 255, feed=BOTH),   # X 22.5 radius 0.3375 s
     row("RAPID", 11, 0.3375, 2.235, 45, 255, 45, 2, feed=8000),  # Z 298 mm 2.235 s
 ], alarm="program.nc:12:5: alarm A104")
-case("alarm_a105_reversal", "M03 S500\nG98 G01 X10. F100.\nM04\n",
-     [row("LINE", 2, 0, 3, 0, 300, 10, 300, feed=100, rpm=500)], alarm="program.nc:3:1: alarm A105")
+# A Fanuc reverses the spindle (W133; issue 38): the run goes on, nothing moves after M04.
+case("spindle_reversal_fanuc_reverses", "M03 S500\nG98 G01 X10. F100.\nM04\n",
+     [row("LINE", 2, 0, 3, 0, 300, 10, 300, feed=100, rpm=500)])
 case("alarm_a106_start_with_brake", "M86\nS100 M03\n", [], alarm="program.nc:2:6: alarm A106")
 case("alarm_a107_brake_while_turning", "M03 S100\nM86\n", [], alarm="program.nc:2:1: alarm A107")
 RPM30 = 1000 * 100 / (math.pi * 30)
@@ -318,7 +320,9 @@ case("alarm_a201_nose_comp_interference",
          row("RAPID", 2, 0, 0.15, 0, 300, 20, 280, feed=BOTH),
          row("RAPID", 2, 0.15, 2.241, 20, 280, 20, 1.2, feed=8000),
          row("LINE", 3, 2.241, 9.441, 20, 1.2, 20, -10.8, feed=100),
-     ], alarm="program.nc:4:1: alarm A201")
+     ], alarm="program.nc:4:1: alarm A201",
+     # The tool the user chose (not a guess for a plain program): its R0.8 alarms (issue 38 item 7).
+     args="--tool 1=cnmg-80-r08")
 
 
 # ---------------------------------------------------------------- the samples

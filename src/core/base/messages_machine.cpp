@@ -129,6 +129,13 @@ constexpr MessageText kMachineMessages[] = {
      "M99 ท้ายโปรแกรมหลัก: เครื่องจริงจะวนกลับไปทำงานใหม่ตั้งแต่ต้น แต่การจำลองจะหยุดหลังวนซ้ำหนึ่งรอบ"},
     {codes::kVacantAddressOmitted, "{0}: #{1} is vacant, so the control omits the address {2} from this block",
      "{0}: #{1} ว่าง เครื่องควบคุมจึงไม่ใช้ตำแหน่ง {2} ในบล็อกนี้"},
+    {codes::kSpindleClampedToMaximum,
+     "spindle speed S{0} rpm is above the machine maximum of {1} rpm: the control turns the spindle at {1} rpm; write "
+     "S{1} or less",
+     "ความเร็วรอบ S{0} รอบ/นาที สูงกว่าค่าสูงสุดของเครื่อง {1} รอบ/นาที เครื่องจะหมุนที่ {1} รอบ/นาที: ให้เขียน S{1} หรือน้อยกว่า"},
+    {codes::kSpindleReversed,
+     "{0} reverses the spindle while it turns: the control brakes it and turns it the other way; write M05 first",
+     "{0} กลับทิศทางหัวจับขณะที่ยังหมุนอยู่ เครื่องจะหยุดแล้วหมุนกลับทิศ: ควรสั่ง M05 ก่อน"},
     {codes::kThreadUnderCssWarning,
      "threading under constant surface speed (G96): the rpm is set by the diameter of each pass; write G97 before "
      "threading",

@@ -90,6 +90,9 @@ const Key kKeys[] = {
      KLUENG_SET(KLUENG_P.commentEndsAtFirstParen = v.number != 0.0)},
     {"angle_without_comma", Type::Flag, 0, 0, {}, KLUENG_SET(KLUENG_P.angleWithoutComma = v.number != 0.0)},
     {"same_group_last_wins", Type::Flag, 0, 0, {}, KLUENG_SET(KLUENG_P.sameGroupLastWins = v.number != 0.0)},
+    {"spindle_above_maximum_is_alarm", Type::Flag, 0, 0, {},
+     KLUENG_SET(KLUENG_P.spindleAboveMaximumIsAlarm = v.number != 0.0)},
+    {"spindle_reversal_is_alarm", Type::Flag, 0, 0, {}, KLUENG_SET(KLUENG_P.spindleReversalIsAlarm = v.number != 0.0)},
     {"m_codes", Type::Numbers, 0, 99, {}, KLUENG_SET(m.mCodes = v.numbers)},
     // Cycle defaults.
     {"rough_depth_inch", Type::Real, 0, 100, {}, KLUENG_SET(KLUENG_P.cycles.roughDepthInch = v.number)},
@@ -148,7 +151,8 @@ const Key kKeys[] = {
 // Keys added after machine files were in teachers' hands: left out, they keep the old reading.
 bool optionalKey(std::string_view name) {
   return name == "m_codes" || name == "semicolon_ends_block" || name == "comment_ends_at_first_paren" ||
-         name == "angle_without_comma" || name == "same_group_last_wins";
+         name == "angle_without_comma" || name == "same_group_last_wins" || name == "spindle_above_maximum_is_alarm" ||
+         name == "spindle_reversal_is_alarm";
 }
 
 std::string_view trim(std::string_view s) {

@@ -328,11 +328,23 @@ bool Interpreter::speed(const Word& s, bool coordinateSet) {
   } else if (modal_.spindleMode == SpindleMode::ConstantSurface) {
     modal_.sWord = s.value * (modal_.units == Units::Inch ? kMetresPerFoot : 1.0);
   } else {
-    if (s.value > setup_.machine.maxSpindleRpm + 1e-9)
-      return raise(codes::kSpindleAboveMaximum, &s, {num(s.value), num(setup_.machine.maxSpindleRpm)});
-    modal_.sWord = s.value;
+    const std::optional<double> rpm = allowedRpm(s);
+    if (!rpm) return false;
+    modal_.sWord = *rpm;
   }
   return true;
+}
+
+std::optional<double> Interpreter::allowedRpm(const Word& s) {
+  const double max = setup_.machine.maxSpindleRpm;
+  if (s.value <= max + 1e-9) return s.value;
+  if (profile_.spindleAboveMaximumIsAlarm) {
+    raise(codes::kSpindleAboveMaximum, &s, {num(s.value), num(max)});
+    return std::nullopt;
+  }
+  if (!spindleClampWarned_) flow_.notice(Severity::Warning, codes::kSpindleClampedToMaximum, s.range, {num(s.value), num(max)});
+  spindleClampWarned_ = true;
+  return max;
 }
 
 bool Interpreter::mCode(const CodeWord& c) {
@@ -344,8 +356,12 @@ bool Interpreter::mCode(const CodeWord& c) {
       } else {
         const SpindleDir dir = a == CodeAction::SpindleCw ? SpindleDir::Cw : SpindleDir::Ccw;
         if (mach_.brake) return raise(codes::kSpindleStartedWithBrakeOn, c.word, {wordText(*c.word)});
-        if (mach_.spindle != SpindleDir::Stopped && mach_.spindle != dir)
-          return raise(codes::kSpindleReversedWithoutStop, c.word, {wordText(*c.word)});
+        if (mach_.spindle != SpindleDir::Stopped && mach_.spindle != dir) {
+          if (profile_.spindleReversalIsAlarm)
+            return raise(codes::kSpindleReversedWithoutStop, c.word, {wordText(*c.word)});
+          if (!reversalWarned_) flow_.notice(Severity::Warning, codes::kSpindleReversed, c.word->range, {wordText(*c.word)});
+          reversalWarned_ = true;
+        }
         mach_.spindle = dir;
       }
       updateRpm();

@@ -133,9 +133,9 @@ bool Interpreter::emitCycle(const std::vector<cycles::Step>& steps, const Word* 
       if (modal_.spindleMode == SpindleMode::ConstantSurface) {
         modal_.sWord = s.sWord->value * (modal_.units == Units::Inch ? kMetresPerFoot : 1.0);
       } else {
-        if (s.sWord->value > setup_.machine.maxSpindleRpm + 1e-9)
-          return raise(codes::kSpindleAboveMaximum, s.sWord, {num(s.sWord->value), num(setup_.machine.maxSpindleRpm)});
-        modal_.sWord = s.sWord->value;
+        const std::optional<double> rpm = allowedRpm(*s.sWord);
+        if (!rpm) return false;
+        modal_.sWord = *rpm;
       }
       updateRpm();
     }

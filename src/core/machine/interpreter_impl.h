@@ -214,6 +214,10 @@ class Interpreter final : public gcode::MacroVariables, private BlockEffects {
   // Threading under G96: the profile's alarm, or a warning (once a run) and true.
   bool threadUnderCssAllowed(const Word* where);
   bool threadCssWarned_ = false;
+  bool spindleClampWarned_ = false;  // W132 once a run
+  bool reversalWarned_ = false;      // W133 once a run
+  // S above the machine's maximum under G97: an alarm, or the speed the control clamps it to.
+  std::optional<double> allowedRpm(const Word& s);
 
   // ---- interpreter_corner.cpp (,C ,R ,A on G01; the corner stage cuts the corner) ---
   const Word* commaWord(char letter) const { return block_->findComma(letter); }

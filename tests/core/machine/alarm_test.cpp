@@ -56,15 +56,15 @@ constexpr auto C = gcode::Dialect::Classic;
 INSTANTIATE_TEST_SUITE_P(
     Spec8, AlarmTest,
     ::testing::Values(
-        AlarmCase{"SpeedAboveMaximum", "G97 S3500 M03\n", F, "A101", 1, 5, 0},
-        AlarmCase{"SpeedAboveMaximumLater", "G00 X20.\nS3001\n", F, "A101", 2, 1, 1},
+        AlarmCase{"SpeedAboveMaximum", "G97 S3500 M03\n", C, "A101", 1, 5, 0},
+        AlarmCase{"SpeedAboveMaximumLater", "G00 X20.\nS3001\n", C, "A101", 2, 1, 1},
         AlarmCase{"NoFeedG01", "G98\nG01 X10. Z10.\n", F, "A102", 2, 1, 1},
         AlarmCase{"NoFeedModalArc", "G98\nG02 X10. Z290. R20.\n", F, "A102", 2, 1, 1},
         AlarmCase{"NoFeedG32", "G97 S100 M03\nG32 Z10.\n", F, "A102", 2, 1, 1},
         AlarmCase{"G99WithoutS", "M03\nG01 X10. F0.2\n", F, "A103", 2, 1, 1},
         AlarmCase{"G99SpindleStopped", "G98 G01 X20. Z10. F100\nG99\n  X18.\n", F, "A104", 3, 3, 2},
         AlarmCase{"G04UnderG99SpindleStopped", "G04 X1.\n", F, "A104", 1, 1, 0},
-        AlarmCase{"ReversalWithoutM05", "S500 M03\nM04\n", F, "A105", 2, 1, 1},
+        AlarmCase{"ReversalWithoutM05", "S500 M03\nM04\n", C, "A105", 2, 1, 1},
         AlarmCase{"StartWithBrakeOn", "M86\nS100 M03\n", F, "A106", 2, 6, 1},
         AlarmCase{"BrakeWhileTurning", "S100 M03\nM86\n", F, "A107", 2, 1, 1},
         AlarmCase{"ThreadUnderG96", "G96 S100 M03\nG32 Z-10. F1.\n", C, "A108", 2, 1, 1},
@@ -135,8 +135,24 @@ TEST(Alarm, SampleFiveStopsOnN40) {
   EXPECT_DOUBLE_EQ(t.cycleTime(), t.moves.back().tEnd);
 }
 
+// A Fanuc clamps an S above the spindle's maximum and reverses M03 -> M04 without M05: warnings
+// W132/W133 (no source says the control stops; issue 38), the run goes on at the maximum.
+TEST(Alarm, AFanucClampsTheSpeedAndReversesTheSpindle) {
+  RunOptions fanuc;
+  fanuc.dialect = gcode::Dialect::Fanuc;
+  const Timeline t = runText("G97 S3500 M03\nG98 G01 X20. F100.\nM04\nG01 X30.\n", fanuc);
+  ASSERT_FALSE(t.alarm) << t.alarm->code;
+  std::vector<std::string> codes;
+  for (const Diagnostic& d : t.flow.notices) codes.push_back(d.code + "@" + std::to_string(d.range.line));
+  EXPECT_EQ(codes, (std::vector<std::string>{"W132@1", "W133@3"}));
+  ASSERT_FALSE(t.snapshots.empty());
+  EXPECT_DOUBLE_EQ(t.snapshots.front().modal.sWord, testing::testSetup().machine.maxSpindleRpm);
+}
+
 TEST(Alarm, TheTimelineBeforeTheAlarmIsKept) {
-  const Timeline t = runText("G98\nG01 X20. Z290. F100\nG01 X30.\nS100 M03\nM04\nG00 X0.\n");
+  RunOptions classic;
+  classic.dialect = gcode::Dialect::Classic;  // the 1999 trainer stops on M04 after M03
+  const Timeline t = runText("G98\nG01 X20. Z290. F100\nG01 X30.\nS100 M03\nM04\nG00 X0.\n", classic);
   ASSERT_TRUE(t.alarm);
   EXPECT_EQ(t.alarm->code, "A105");
   EXPECT_EQ(t.snapshots.size(), 4u);

@@ -156,6 +156,10 @@ struct MachineProfile {
   // Two G codes of one modal group in a block: the control uses the last (true, Fanuc: a warning)
   // or refuses the block (false: E205).
   bool sameGroupLastWins = false;
+  // An S above the machine's maximum under G97: an alarm (the 1999 trainer) or clamped to the maximum
+  // with a warning (a Fanuc or Haas clamps it); M03 <-> M04 without M05: an alarm, or reversed.
+  bool spindleAboveMaximumIsAlarm = true;
+  bool spindleReversalIsAlarm = true;
   CycleSettings cycles;    // defaults of the cycles (one-block forms, drilling)
   FlowSettings flow;
   // The M codes the machine accepts, from its family's rows; empty = all of them.
