@@ -364,3 +364,16 @@ TEST(CliClass, ABadReferenceOrBadOptionsExitTwo) {
 }  // namespace
 
 }  // namespace cli_class_test
+
+// The process's scratch folders go with it (ctest runs each test in a process of its own): nothing
+// is left in the temporary folder after a run.
+class CliClassScratchCleanup : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    for (const char* prefix : {"klueng_cli_class_test-", "klueng_cli_class_pdf_test-"}) {
+      std::error_code ec;
+      std::filesystem::remove_all(std::filesystem::temp_directory_path() / (prefix + std::to_string(::getpid())), ec);
+    }
+  }
+};
+[[maybe_unused]] ::testing::Environment* const kCliClassScratchCleanup = ::testing::AddGlobalTestEnvironment(new CliClassScratchCleanup);

@@ -302,3 +302,16 @@ TEST(CliGenerate, ADxfDrawingBecomesAProgramAndAnOpenOneWritesNothing) {
 }  // namespace
 
 }  // namespace cli_print_test
+
+// The process's scratch folders go with it (ctest runs each test in a process of its own): nothing
+// is left in the temporary folder after a run.
+class CliPrintScratchCleanup : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    for (const char* prefix : {"klueng_cli_print_test-"}) {
+      std::error_code ec;
+      std::filesystem::remove_all(std::filesystem::temp_directory_path() / (prefix + std::to_string(::getpid())), ec);
+    }
+  }
+};
+[[maybe_unused]] ::testing::Environment* const kCliPrintScratchCleanup = ::testing::AddGlobalTestEnvironment(new CliPrintScratchCleanup);

@@ -253,6 +253,7 @@ TEST(CliPartCheck, ThePawnsNeckGougesWithThe80DegreeInsertOnly) {
   EXPECT_EQ(vnmg.err.find("W320"), std::string::npos) << vnmg.err;
   const Result thai = simulate("'" + file.string() + "' --part-check --tool 1=cnmg-80-r08 --lang th");
   EXPECT_THAT(thai.err, HasSubstr("มีดตัดกินเนื้อชิ้นงานเกินแบบ"));
+  fs::remove(file);
 }
 
 // Issue 28 item 1: the part check holds the cut to the programmed path, so a
@@ -283,6 +284,7 @@ TEST(CliPartCheck, AWrongTipRowAndAMissingCompensationShowOnTheirBlocks) {
   EXPECT_THAT(fat.err, HasSubstr(file.string() + ":43:1: warning W321: Material left 0.469 mm from Z0.000 to Z-3.000"));
   EXPECT_THAT(fat.err,
               HasSubstr(file.string() + ":49:1: warning W321: Material left 0.469 mm from Z-40.000 to Z-41.000"));
+  fs::remove(file);
 }
 
 TEST(CliPartCheck, SamplesAreCleanAndAnAlarmedRunSaysWhatWasChecked) {
@@ -297,3 +299,16 @@ TEST(CliPartCheck, SamplesAreCleanAndAnAlarmedRunSaysWhatWasChecked) {
 }  // namespace
 
 }  // namespace cli_simulate_cut_test
+
+// The process's scratch folders go with it (ctest runs each test in a process of its own): nothing
+// is left in the temporary folder after a run.
+class CliSimulateCutScratchCleanup : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    for (const char* prefix : {"klueng_cli_cut_test-", "klueng_cli_wrong_tip-"}) {
+      std::error_code ec;
+      std::filesystem::remove_all(std::filesystem::temp_directory_path() / (prefix + std::to_string(::getpid())), ec);
+    }
+  }
+};
+[[maybe_unused]] ::testing::Environment* const kCliSimulateCutScratchCleanup = ::testing::AddGlobalTestEnvironment(new CliSimulateCutScratchCleanup);

@@ -160,3 +160,16 @@ TEST(CliUnits, AG20ProgramsPartCheckIsInInches) {
 }  // namespace
 
 }  // namespace cli_units_test
+
+// The process's scratch folders go with it (ctest runs each test in a process of its own): nothing
+// is left in the temporary folder after a run.
+class CliUnitsScratchCleanup : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    for (const char* prefix : {"klueng_cli_units_test-"}) {
+      std::error_code ec;
+      std::filesystem::remove_all(std::filesystem::temp_directory_path() / (prefix + std::to_string(::getpid())), ec);
+    }
+  }
+};
+[[maybe_unused]] ::testing::Environment* const kCliUnitsScratchCleanup = ::testing::AddGlobalTestEnvironment(new CliUnitsScratchCleanup);

@@ -1017,3 +1017,16 @@ TEST(RealStyleControlReading, Haas_SemicolonCommentsAreComments) {
 }
 
 }  // namespace
+
+// The process's scratch folders go with it (ctest runs each test in a process of its own): nothing
+// is left in the temporary folder after a run.
+class RealStyleScratchCleanup : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    for (const char* prefix : {"klueng_real_style_test-"}) {
+      std::error_code ec;
+      std::filesystem::remove_all(std::filesystem::temp_directory_path() / (prefix + std::to_string(::getpid())), ec);
+    }
+  }
+};
+[[maybe_unused]] ::testing::Environment* const kRealStyleScratchCleanup = ::testing::AddGlobalTestEnvironment(new RealStyleScratchCleanup);

@@ -1,3 +1,4 @@
+#include <string>
 #include "klueng/core/cut/tool_shape.h"
 
 #include <unistd.h>
@@ -142,3 +143,16 @@ TEST(ToolShape, ShippedBitmapsLoadWithTheirOffsets) {
 
 }  // namespace
 }  // namespace klueng::core::cut
+
+// The process's scratch folders go with it (ctest runs each test in a process of its own): nothing
+// is left in the temporary folder after a run.
+class ToolShapeScratchCleanup : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    for (const char* prefix : {"klueng_cut_tool_test-"}) {
+      std::error_code ec;
+      std::filesystem::remove_all(std::filesystem::temp_directory_path() / (prefix + std::to_string(::getpid())), ec);
+    }
+  }
+};
+[[maybe_unused]] ::testing::Environment* const kToolShapeScratchCleanup = ::testing::AddGlobalTestEnvironment(new ToolShapeScratchCleanup);

@@ -1,6 +1,7 @@
 // Help that teaches (issue 11): every code's worked example runs clean through
 // the simulator — check, run and cut on a Ø50 x 100 bar with the shipped
 // setup — and the search finds codes from the words students use.
+#include <string>
 #include "klueng/core/help/help.h"
 
 #include <gtest/gtest.h>
@@ -172,3 +173,16 @@ TEST(Help, ASystemBMachineSpeaksItsOwnNumbers) {
 
 }  // namespace
 }  // namespace klueng::core::machine
+
+// The process's scratch folders go with it (ctest runs each test in a process of its own): nothing
+// is left in the temporary folder after a run.
+class HelpScratchCleanup : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    for (const char* prefix : {"klueng-help-examples-"}) {
+      std::error_code ec;
+      std::filesystem::remove_all(std::filesystem::temp_directory_path() / (prefix + std::to_string(::getpid())), ec);
+    }
+  }
+};
+[[maybe_unused]] ::testing::Environment* const kHelpScratchCleanup = ::testing::AddGlobalTestEnvironment(new HelpScratchCleanup);
