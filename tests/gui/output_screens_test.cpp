@@ -57,6 +57,10 @@ bool near(QRgb a, const QColor& b, int tolerance = 12) {
 class OutputScreensTest : public QObject {
   Q_OBJECT
  private slots:
+  // The pictures stay only where KLUENG_SHOT_DIR asks for them: nothing left in /tmp after a run.
+  void cleanupTestCase() {
+    if (!qEnvironmentVariableIsSet("KLUENG_SHOT_DIR")) QDir(shotDir()).removeRecursively();
+  }
   void outputScreenShowsTheCutPart() {
     RunController controller;
     controller.setMachineSetup(loadSetup());

@@ -393,6 +393,7 @@ TEST(CutSimulator, ARefusedBitmapStopsTheRunWhereTheToolIsFirstUsed) {
   ASSERT_EQ(sim.toolDiagnostics().size(), 1u);
   EXPECT_EQ(sim.removedVolume(), 0.0);
   EXPECT_DOUBLE_EQ(sim.endTime(), 0.0);
+  std::filesystem::remove(path);
 }
 
 TEST(CutSimulator, GarbageMovesNeverCrashOrHang) {
