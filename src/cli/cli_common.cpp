@@ -103,9 +103,13 @@ std::optional<int> parseCommandLine(const char* command, const char* usage, cons
     });
     if (row == options.end()) return usageError(command, usage, lang, codes::kCliUnknownOption, {arg});
     if (row->takesValue && !value) {
-      if (i + 1 >= args.size()) return usageError(command, usage, lang, codes::kCliNeedsValue, {arg});
+      // `--trace --cycle-time` is --trace without its file, not a file named "--cycle-time".
+      const bool nextIsOption = i + 1 < args.size() && args[i + 1].size() > 2 && args[i + 1].rfind("--", 0) == 0;
+      if (i + 1 >= args.size() || nextIsOption) return usageError(command, usage, lang, codes::kCliNeedsValue, {arg});
       value = args[++i];
     }
+    // `--trace ""` names nothing: the same mistake.
+    if (row->takesValue && value->empty()) return usageError(command, usage, lang, codes::kCliNeedsValue, {arg});
     if (!row->takesValue && value) return usageError(command, usage, lang, codes::kCliBadValueAnyOf, {*value, arg});
     if (row->apply(value.value_or(std::string()))) continue;
     if (row->allowed)

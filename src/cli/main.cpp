@@ -34,6 +34,10 @@ int main(int argc, char** argv) {
   if (command == "class") return klueng::cli::runClass(args);
   if (command == "print") return klueng::cli::runPrint(args);
   if (command == "generate") return klueng::cli::runGenerate(args);
+  if (command == "--version") {
+    std::printf("klueng-cli %s\n", KLUENG_VERSION);
+    return 0;
+  }
   if (command == "--help" || command == "-h" || command == "help") {
     printUsage(stdout, lang);
     return 0;

@@ -365,4 +365,31 @@ TEST(CliHarden, FailedMacroVariablesWriteExitsTwo) {
   EXPECT_EQ(slurp(config / "macro_variables.cfg"), "#500 = 0\n");
 }
 
+// Unix manners (issue 42 item 4): a version, and an option's missing value is an error, never
+// the next option taken as a file name nor an empty name that writes nothing.
+TEST(CliHarden, VersionAndMissingOptionValues) {
+  std::string out;
+  EXPECT_EQ(run("--version", out), 0);
+  EXPECT_EQ(out, "klueng-cli 0.1.0\n");
+  EXPECT_EQ(run("--help", out), 0);
+  EXPECT_NE(out.find("--machine ID|FILE"), std::string::npos) << out;
+  const TempDir tmp("option_values");
+  const fs::path prog = tmp.path / "p.nc";
+  put(prog, sample01());
+  const std::string cd = "cd " + quote(tmp.path.string()) + " && ";
+  const std::string command = cd + "env LC_ALL= LC_MESSAGES= LANG=C " + quote(kCli) + " simulate p.nc --trace --cycle-time 2>&1";
+  FILE* pipe = ::popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  char buf[4096];
+  out.clear();
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) out.append(buf, n);
+  const int status = ::pclose(pipe);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2) << out;
+  EXPECT_NE(out.find("--trace needs a value"), std::string::npos) << out;
+  EXPECT_FALSE(fs::exists(tmp.path / "--cycle-time"));
+  EXPECT_EQ(run("simulate " + quote(prog.string()) + " --trace ''", out), 2);
+  EXPECT_NE(out.find("--trace needs a value"), std::string::npos) << out;
+}
+
 }  // namespace cli_harden_test
