@@ -7,6 +7,7 @@
 // tolerances), pass when everything is within and the program ran to its end.
 // One row per program (CSV; with a drawing one per program and dimension); one
 // bad file is one failed row, never the end of the batch.
+#include <unistd.h>
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
@@ -165,7 +166,8 @@ int runClass(const std::vector<std::string>& args) {
   const std::vector<core::job::ClassRow> rows = core::job::gradeClass(
       o.dir, against, *request,
       [](int i, int n, const std::string& name) {
-        std::fprintf(stderr, "[%d/%d] %s\n", i + 1, n, printable(name).c_str());
+        // Progress is for a person watching; a script or a pipe reading stderr gets the diagnostics only.
+        if (::isatty(STDERR_FILENO)) std::fprintf(stderr, "[%d/%d] %s\n", i + 1, n, printable(name).c_str());
       });
   const int passed =
       static_cast<int>(std::count_if(rows.begin(), rows.end(), [](const core::job::ClassRow& r) { return r.pass; }));
