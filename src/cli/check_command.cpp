@@ -64,8 +64,8 @@ std::optional<int> parseArgs(const std::vector<std::string>& args, CheckOptions&
 // One file to check: a named one, or an entry of a named folder.
 struct CheckedFile {
   std::string path;
-  bool inFolder = false;                // read as a folder run: only a G-code program is parsed
-  std::optional<Diagnostic> refusal;    // a folder entry not read (a link out of it, a pipe...)
+  bool inFolder = false;              // read as a folder run: only a G-code program is parsed
+  std::optional<Diagnostic> refusal;  // a folder entry not read (a link out of it, a pipe...)
 };
 
 // A folder stands for the program files in it (not its subfolders), sorted by name; an entry

@@ -163,9 +163,8 @@ int runClass(const std::vector<std::string>& args) {
       inputs.push_back(core::job::touchOffFilePath(e.path));  // the setup exercise's offsets
     }
   if (!outputsAllowed({o.csv, o.pdf}, inputs, o.lang)) return 2;
-  const std::vector<core::job::ClassRow> rows = core::job::gradeClass(
-      o.dir, against, *request,
-      [](int i, int n, const std::string& name) {
+  const std::vector<core::job::ClassRow> rows =
+      core::job::gradeClass(o.dir, against, *request, [](int i, int n, const std::string& name) {
         // Progress is for a person watching; a script or a pipe reading stderr gets the diagnostics only.
         if (::isatty(STDERR_FILENO)) std::fprintf(stderr, "[%d/%d] %s\n", i + 1, n, printable(name).c_str());
       });

@@ -241,7 +241,7 @@ inline constexpr const char* kProfileStartsWithoutMotion = "A153";  // {0} cycle
 inline constexpr const char* kSubprogramFileHasErrors = "E412";
 inline constexpr const char* kMainProgramRepeats = "I160";
 inline constexpr const char* kVacantAddressOmitted = "W130";
-inline constexpr const char* kThreadUnderCssWarning = "W131";  // Fanuc/Haas: threading under G96 runs
+inline constexpr const char* kThreadUnderCssWarning = "W131";    // Fanuc/Haas: threading under G96 runs
 inline constexpr const char* kSpindleClampedToMaximum = "W132";  // {0} S, {1} maximum: Fanuc/Haas clamp (A101 in C)
 inline constexpr const char* kSpindleReversed = "W133";          // {0} the M word: Fanuc/Haas reverse (A105 in C)
 

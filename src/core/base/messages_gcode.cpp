@@ -235,7 +235,8 @@ constexpr MessageText kGcodeMessages[] = {
      "(ถ้าเป็น G96 คือความเร็วตัด) ไม่ใช่การจำกัดความเร็วรอบ การจำกัดความเร็วรอบคือ G50 {1} ในระบบ A และ {0} {1} "
      "ในระบบ B: ถ้าโปรแกรมเขียนสำหรับระบบ B ให้เลือกเครื่องนั้น"},
     {"W116",
-     "{0} and {1} belong to the same modal group ({2}): this control uses the last one, {1}; keep only the one you mean",
+     "{0} and {1} belong to the same modal group ({2}): this control uses the last one, {1}; keep only the one you "
+     "mean",
      "{0} และ {1} อยู่ในกลุ่มโมดอลเดียวกัน ({2}): เครื่องนี้ใช้ตัวสุดท้ายคือ {1} ให้เหลือไว้เฉพาะคำสั่งที่ต้องการ"},
     {"W113",
      "this control ends a comment at its first ')': \"{0}\" after it stands outside the comment (it holds no word, "

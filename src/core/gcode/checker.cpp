@@ -159,7 +159,7 @@ class Checker {
     const Word* reference = nullptr;    // G28
     const Word* singleCycle = nullptr;  // G90/G92/G94 (system A), G77/G78/G79 (B)
     CodeAction singleCycleAction = CodeAction::None;
-    const Word* compWord = nullptr;     // G40 G41 G42
+    const Word* compWord = nullptr;  // G40 G41 G42
     const CodeInfo* comp = nullptr;
     bool cannedCycle = false;
     int nonNWords = 0;

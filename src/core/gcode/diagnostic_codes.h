@@ -36,19 +36,19 @@ inline constexpr const char* kMacroTooDeep = "E126";          // {0}=limit
 inline constexpr const char* kStatementNotAlone = "E127";     // {0}=word
 inline constexpr const char* kIfWithoutGotoThen = "E128";
 inline constexpr const char* kWhileWithoutDo = "E129";
-inline constexpr const char* kBadLoopNumber = "E130";          // {0}=number
-inline constexpr const char* kExpectedAssignment = "E131";     // {0}=text
-inline constexpr const char* kCornerNotOnG01 = "E132";         // {0}=word
-inline constexpr const char* kChamferAndCorner = "E133";       // {0}=first {1}=second
-inline constexpr const char* kExponentNumber = "E134";         // {0}=the word before {1}=the E word
-inline constexpr const char* kExponentInMacro = "E139";        // {0}=the number as written (1e300)
-inline constexpr const char* kBlanksInWord = "E135";           // {0}=the word without blanks (classic)
-inline constexpr const char* kLetterOForZero = "E136";         // {0}=word as written {1}=the word meant
-inline constexpr const char* kCommaForPoint = "E137";          // {0}=word as written {1}=the word meant
-inline constexpr const char* kTextLine = "E138";               // {0}=the text (at most 20 characters)
-inline constexpr const char* kTextAfterEndOfBlock = "E141";     // {0}=the text after ';' (at most 20 characters)
-inline constexpr const char* kTextAfterComment = "E142";        // {0}=the text after the comment's first ')'
-inline constexpr const char* kTooManyDiagnostics = "E199";     // {0}=limit
+inline constexpr const char* kBadLoopNumber = "E130";        // {0}=number
+inline constexpr const char* kExpectedAssignment = "E131";   // {0}=text
+inline constexpr const char* kCornerNotOnG01 = "E132";       // {0}=word
+inline constexpr const char* kChamferAndCorner = "E133";     // {0}=first {1}=second
+inline constexpr const char* kExponentNumber = "E134";       // {0}=the word before {1}=the E word
+inline constexpr const char* kExponentInMacro = "E139";      // {0}=the number as written (1e300)
+inline constexpr const char* kBlanksInWord = "E135";         // {0}=the word without blanks (classic)
+inline constexpr const char* kLetterOForZero = "E136";       // {0}=word as written {1}=the word meant
+inline constexpr const char* kCommaForPoint = "E137";        // {0}=word as written {1}=the word meant
+inline constexpr const char* kTextLine = "E138";             // {0}=the text (at most 20 characters)
+inline constexpr const char* kTextAfterEndOfBlock = "E141";  // {0}=the text after ';' (at most 20 characters)
+inline constexpr const char* kTextAfterComment = "E142";     // {0}=the text after the comment's first ')'
+inline constexpr const char* kTooManyDiagnostics = "E199";   // {0}=limit
 
 // E2nn block rule nn of SPEC 5 (E213, stock size, belongs to the io module)
 inline constexpr const char* kLetterNotAllowed = "E201";        // {0}=word {1}=letter {2}=allowed letters
@@ -91,8 +91,8 @@ inline constexpr const char* kSubprogramFileErrors = "E412";        // {0}=file 
 inline constexpr const char* kProfileBlockMissing = "E413";         // {0}=cycle and word {1}=N number
 inline constexpr const char* kProfileEndsBeforeStart = "E415";      // {0}=cycle and Q word {1}=N of Q {2}=N of P
 inline constexpr const char* kProfileStartsWithoutMotion = "E414";  // {0}=cycle and P word {1}=N number
-inline constexpr const char* kProfileHoldsItsCycle = "E417";  // {0}=cycle with P and Q {1}=N of P {2}=N of Q
-inline constexpr const char* kRoughingWithoutFeed = "E418";   // {0}=the cycle's G word
+inline constexpr const char* kProfileHoldsItsCycle = "E417";        // {0}=cycle with P and Q {1}=N of P {2}=N of Q
+inline constexpr const char* kRoughingWithoutFeed = "E418";         // {0}=the cycle's G word
 // The called program's file name is in the folder, but as a folder (or a pipe, a device): Program::notProgramFiles.
 inline constexpr const char* kProgramFileNotAFile =
     "E416";  // {0}=word {1}=O number {2}=name {3}=what (en) {4}=what (th)
@@ -119,15 +119,15 @@ inline constexpr const char* kPointlessLengthWhole = "W111";  // {0}=word {1}=as
 inline constexpr const char* kSingleCycleWithoutEnd = "W112";  // {0}=the cycle's G word
 // `G92 S2500` read in system A: the threading cycle's code with only S sets the spindle speed; in
 // system B it is the clamp. A warning, and suggestDialect offers a system-B machine.
-inline constexpr const char* kClampOfAnotherSystem = "W115";  // {0}=the G word {1}=the S word
-inline constexpr const char* kSameGroupLastWins = "W116";  // {0}=first {1}=second (used) {2}=group
-inline constexpr const char* kLoneCloseAfterComment = "W113";   // {0}=what follows a comment's first ')' (no letter)
-inline constexpr const char* kWordsAfterEndOfBlock = "W114";    // {0}=the words after ';'
+inline constexpr const char* kClampOfAnotherSystem = "W115";   // {0}=the G word {1}=the S word
+inline constexpr const char* kSameGroupLastWins = "W116";      // {0}=first {1}=second (used) {2}=group
+inline constexpr const char* kLoneCloseAfterComment = "W113";  // {0}=what follows a comment's first ')' (no letter)
+inline constexpr const char* kWordsAfterEndOfBlock = "W114";   // {0}=the words after ';'
 
 // I1xx notes
-inline constexpr const char* kDialectFits = "I102";  // {0}=blocks {1}=dialect name {2}=dialect id
+inline constexpr const char* kDialectFits = "I102";        // {0}=blocks {1}=dialect name {2}=dialect id
 inline constexpr const char* kAngleWithoutComma = "I106";  // {0}=the A word {1}=with its comma
-inline constexpr const char* kLeaderSkipped = "I105";  // {0}=the last line of the leader before the first '%'
+inline constexpr const char* kLeaderSkipped = "I105";      // {0}=the last line of the leader before the first '%'
 
 // Every code above, for the catalog completeness test.
 inline constexpr const char* kAll[] = {

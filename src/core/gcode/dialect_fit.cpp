@@ -18,10 +18,10 @@ namespace {
 // text after ';', a comma for the point) are the program's mistakes, not forms of another machine.
 bool isForm(const Diagnostic& d) {
   static constexpr std::string_view kForms[] = {
-      codes::kUnknownCharacter,    codes::kTooManyDecimals,  codes::kUnknownGCode,     codes::kUnknownMCode,
-      codes::kBadSequenceNumber,   codes::kBadToolWord,      codes::kBadToolWordFanuc, codes::kNotWholeNumber,
-      codes::kBlanksInWord,        codes::kLetterNotAllowed, codes::kLetterTwice,      codes::kMustStandAlone,
-      codes::kOneShotWithMotion,   codes::kFeedModeNotAlone, codes::kG28WithoutAxes,   codes::kMacroNotInDialect,
+      codes::kUnknownCharacter,  codes::kTooManyDecimals,  codes::kUnknownGCode,     codes::kUnknownMCode,
+      codes::kBadSequenceNumber, codes::kBadToolWord,      codes::kBadToolWordFanuc, codes::kNotWholeNumber,
+      codes::kBlanksInWord,      codes::kLetterNotAllowed, codes::kLetterTwice,      codes::kMustStandAlone,
+      codes::kOneShotWithMotion, codes::kFeedModeNotAlone, codes::kG28WithoutAxes,   codes::kMacroNotInDialect,
   };
   if (d.code == std::string_view(codes::kClampOfAnotherSystem)) return true;
   return d.severity == Severity::Error && std::find(std::begin(kForms), std::end(kForms), d.code) != std::end(kForms);

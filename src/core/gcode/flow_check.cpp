@@ -65,7 +65,7 @@ class FlowChecker {
   ProgramIndex index_;
   std::vector<Call> calls_;
   std::vector<bool> hasConditions_;
-  bool feedMayBeSet_ = true;      // some block before this one in the section may have given F
+  bool feedMayBeSet_ = true;     // some block before this one in the section may have given F
   std::set<int> profileStarts_;  // first profile blocks already looked at  // per section: IF/WHILE/GOTO/M99 P may end
                                  // a recursion
 

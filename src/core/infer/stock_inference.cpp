@@ -21,9 +21,9 @@ namespace klueng::core::machine {
 namespace {
 
 constexpr double kMmPerInch = 25.4;
-constexpr double kOnCentre = 0.5;     // mm of diameter: a feed at X0 (drill, face to centre)
+constexpr double kOnCentre = 0.5;          // mm of diameter: a feed at X0 (drill, face to centre)
 constexpr double kBeyondTheDrillMm = 1.0;  // an inside pass this much deeper than the hole needs a bore
-constexpr double kBelowWall = 0.005;  // mm of diameter: a retract this far below a pass leaves its wall
+constexpr double kBelowWall = 0.005;       // mm of diameter: a retract this far below a pass leaves its wall
 
 bool isFeed(const Move& m) { return m.kind == MoveKind::Line || m.kind == MoveKind::Arc || m.kind == MoveKind::Thread; }
 
@@ -363,8 +363,9 @@ bool readStockComment(StockInference& r, std::string_view gcode, int firstLine) 
     bool sizedPair = false;     // a number followed by "X" (50 X 100)
     bool inchMark = up.find('"') != std::string::npos;
     for (std::size_t i = 0; i < up.size();) {
-      const bool startsNumber = std::isdigit(static_cast<unsigned char>(up[i])) ||
-                                (up[i] == '.' && i + 1 < up.size() && std::isdigit(static_cast<unsigned char>(up[i + 1])));
+      const bool startsNumber =
+          std::isdigit(static_cast<unsigned char>(up[i])) ||
+          (up[i] == '.' && i + 1 < up.size() && std::isdigit(static_cast<unsigned char>(up[i + 1])));
       if (!startsNumber) {
         ++i;
         continue;

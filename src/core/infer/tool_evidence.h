@@ -28,7 +28,7 @@ struct Evidence {
   bool strong = false;
   bool finishing = false;
   bool roughing = false;  // the same comment also says roughing
-  std::string insert;  // "vnmg" when a comment names the insert
+  std::string insert;     // "vnmg" when a comment names the insert
   double drillMm = 0.0;
 };
 
@@ -62,9 +62,9 @@ struct StationUse {
   double drillDepthMm = 0.0;  // deepest drilling on centre
   int drillLine = 0;
   std::string drillCode;
-  MotionUse motion;  // everything it moved
-  bool holdsBar = false;  // a comment names it a bar puller or bar stop
-  bool pullsBar = false;  // a bar puller
+  MotionUse motion;           // everything it moved
+  bool holdsBar = false;      // a comment names it a bar puller or bar stop
+  bool pullsBar = false;      // a bar puller
   double noseRadiusMm = 0.0;  // the radius one of its comments states ("R0.4", "CNMG 431")
   int noseRadiusLine = 0;
 };

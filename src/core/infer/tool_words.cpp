@@ -128,7 +128,8 @@ double statedNoseRadiusMm(const std::string& up, double unitMm) {
   for (std::size_t i = 0; i < up.size(); ++i) {
     // An insert code: four letters, an optional blank, then 6 (ISO) or 3 (ANSI) digits.
     if (i + 4 < up.size() && (i == 0 || !isUpperAt(up, i - 1)) && isUpperAt(up, i) && isUpperAt(up, i + 1) &&
-        isUpperAt(up, i + 2) && isUpperAt(up, i + 3) && std::string_view("CDKRSTVW").find(up[i]) != std::string_view::npos) {
+        isUpperAt(up, i + 2) && isUpperAt(up, i + 3) &&
+        std::string_view("CDKRSTVW").find(up[i]) != std::string_view::npos) {
       std::size_t d = i + 4;
       if (d < up.size() && up[d] == ' ') ++d;
       std::size_t e = d;
@@ -186,16 +187,15 @@ CommentTool classifyComment(std::string_view comment, double unitMm) {
     out.insert = "cnmg";
   out.roughing = hasPrefix(ws, {"ROUGH", "ROUSH", "EBAUCH", "DESBAST", "SCHRUPP", "ZGRUB", "CERNOV", "CHERNOV"}) ||
                  hasText(up, {"กลึงหยาบ", "ЧЕРНОВ", "чернов"});
-  out.finishing =
-      hasPrefix(ws, {"FINISH", "FIN", "ACAB", "SCHLICHT", "WYKANCZ", "CISTOV", "CHISTOV"}) ||
-      hasText(up, {"กลึงละเอียด", "ละเอียด", "ЧИСТОВ", "чистов"});
+  out.finishing = hasPrefix(ws, {"FINISH", "FIN", "ACAB", "SCHLICHT", "WYKANCZ", "CISTOV", "CHISTOV"}) ||
+                  hasText(up, {"กลึงละเอียด", "ละเอียด", "ЧИСТОВ", "чистов"});
 
   // A bar puller or bar stop, as shops spell it ("BARPULER", "BAR PULLER", "BAR STOP", "PUXADOR"):
   // it grips or stops the bar with the spindle stopped and cuts nothing.
   if (followedBy(ws, "BAR", "PULLER") || followedBy(ws, "BAR", "PULER") || followedBy(ws, "BAR", "PULL") ||
       followedBy(ws, "BAR", "STOP") || followedBy(ws, "BAR", "FEEDER") || followedBy(ws, "BAR", "GRIPPER") ||
-      hasPrefix(ws, {"BARPUL", "BARSTOP", "BARGRIP", "PUXADOR", "STANGENZIEH", "STANGENGREIF", "TIREBARRE",
-                     "EMBARREUR", "JALADOR"}) ||
+      hasPrefix(ws, {"BARPUL", "BARSTOP", "BARGRIP", "PUXADOR", "STANGENZIEH", "STANGENGREIF", "TIREBARRE", "EMBARREUR",
+                     "JALADOR"}) ||
       hasText(up, {"ตัวดึงชิ้นงาน", "ตัวดึงบาร์", "ตัวกั้นบาร์", "ЗАХВАТ ПРУТКА"})) {
     out.holdsBar = true;
     out.pullsBar = !followedBy(ws, "BAR", "STOP") && !hasPrefix(ws, {"BARSTOP"}) && !hasText(up, {"ตัวกั้นบาร์"});
@@ -224,8 +224,7 @@ CommentTool classifyComment(std::string_view comment, double unitMm) {
              hasWord(ws, {"OD", "ROUGH", "ROUGHING", "TURN", "TURNING", "FACE", "FACING", "PROFILE", "CONTOUR"}) ||
              hasPrefix(ws, {"EBAUCH", "DRESSAGE", "CHARIOT", "DESBAST", "REFRENT", "CILINDR", "FACEAR", "SCHRUPP",
                             "TOCZ", "PLANOW", "ZEWN", "PROXODN", "PROHODN", "TOCEN", "TOCHEN"}) ||
-             hasText(up, {"กลึงปอก", "กลึงหยาบ", "ปาดหน้า", "กลึงผิว", "กลึงขึ้นรูป", "ПРОХОДН", "проходн", "ТОЧЕН",
-                          "точен"})) {
+             hasText(up, {"กลึงปอก", "กลึงหยาบ", "ปาดหน้า", "กลึงผิว", "กลึงขึ้นรูป", "ПРОХОДН", "проходн", "ТОЧЕН", "точен"})) {
     out.kind = ToolKind::Turning;
   }
   return out;

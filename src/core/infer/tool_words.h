@@ -11,12 +11,12 @@ namespace klueng::core::machine::detail {
 
 struct CommentTool {
   io::ToolKind kind = io::ToolKind::Unknown;
-  bool finishing = false;  // FINISH / กลึงละเอียด: the small nose radius
-  bool roughing = false;   // ROUGH / กลึงหยาบ too ("ROUGH AND FINISH": one insert for both)
-  std::string insert;      // "vnmg", "dnmg", "cnmg" when the comment names one
-  double drillMm = 0.0;    // a size written with the drill ("DRILL 16MM", "Ø10"); 0 = none
-  bool holdsBar = false;   // a bar puller or bar stop: no cutting tool (kind stays Unknown)
-  bool pullsBar = false;   // a bar puller (it drags the bar out of the open chuck)
+  bool finishing = false;     // FINISH / กลึงละเอียด: the small nose radius
+  bool roughing = false;      // ROUGH / กลึงหยาบ too ("ROUGH AND FINISH": one insert for both)
+  std::string insert;         // "vnmg", "dnmg", "cnmg" when the comment names one
+  double drillMm = 0.0;       // a size written with the drill ("DRILL 16MM", "Ø10"); 0 = none
+  bool holdsBar = false;      // a bar puller or bar stop: no cutting tool (kind stays Unknown)
+  bool pullsBar = false;      // a bar puller (it drags the bar out of the open chuck)
   double noseRadiusMm = 0.0;  // the nose radius the comment states ("R0.4", "CNMG 120408", "CNMG 431"); 0 = none
 };
 

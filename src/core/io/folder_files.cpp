@@ -136,8 +136,9 @@ std::optional<Diagnostic> notAGcodeProgram(std::string_view gcode, const std::st
     ++lines;
   }
   if (!anyText) return std::nullopt;  // blank or comments only: the checker has its own words for it
-  return fileError(codes::kNotAProgram, {fileName, "no G-code in its first " + std::to_string(kGcodeProbeLines) + " lines",
-                                         "ไม่มี G-code ใน " + std::to_string(kGcodeProbeLines) + " บรรทัดแรก"});
+  return fileError(codes::kNotAProgram,
+                   {fileName, "no G-code in its first " + std::to_string(kGcodeProbeLines) + " lines",
+                    "ไม่มี G-code ใน " + std::to_string(kGcodeProbeLines) + " บรรทัดแรก"});
 }
 
 }  // namespace klueng::core::io

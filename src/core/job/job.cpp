@@ -355,8 +355,8 @@ const machine::Timeline* Job::timeline() const {
       return;
     }
     record.reset();  // one run in memory at a time
-    timeline_ = std::make_shared<const machine::Timeline>(fitGuessedNose(
-        machine::interpret(*program_, tools_.setup, input_.run), *program_, tools_.setup, input_.run));
+    timeline_ = std::make_shared<const machine::Timeline>(
+        fitGuessedNose(machine::interpret(*program_, tools_.setup, input_.run), *program_, tools_.setup, input_.run));
   });
   return timeline_.get();
 }

@@ -19,7 +19,8 @@ namespace fs = std::filesystem;
 std::vector<std::string> setupInputFiles(const machine::LoadedSetup& loaded) {
   std::vector<std::string> files;
   if (!loaded.dir.empty()) {
-    for (const char* name : {"tools.cfg", "offset.cfg", "machine.cfg"}) files.push_back((fs::path(loaded.dir) / name).string());
+    for (const char* name : {"tools.cfg", "offset.cfg", "machine.cfg"})
+      files.push_back((fs::path(loaded.dir) / name).string());
     files.push_back(io::macroVariablesPath(loaded.dir));
   }
   for (int tool = 1; tool <= io::kMaxStations; ++tool)

@@ -342,7 +342,8 @@ std::optional<double> Interpreter::allowedRpm(const Word& s) {
     raise(codes::kSpindleAboveMaximum, &s, {num(s.value), num(max)});
     return std::nullopt;
   }
-  if (!spindleClampWarned_) flow_.notice(Severity::Warning, codes::kSpindleClampedToMaximum, s.range, {num(s.value), num(max)});
+  if (!spindleClampWarned_)
+    flow_.notice(Severity::Warning, codes::kSpindleClampedToMaximum, s.range, {num(s.value), num(max)});
   spindleClampWarned_ = true;
   return max;
 }
@@ -359,7 +360,8 @@ bool Interpreter::mCode(const CodeWord& c) {
         if (mach_.spindle != SpindleDir::Stopped && mach_.spindle != dir) {
           if (profile_.spindleReversalIsAlarm)
             return raise(codes::kSpindleReversedWithoutStop, c.word, {wordText(*c.word)});
-          if (!reversalWarned_) flow_.notice(Severity::Warning, codes::kSpindleReversed, c.word->range, {wordText(*c.word)});
+          if (!reversalWarned_)
+            flow_.notice(Severity::Warning, codes::kSpindleReversed, c.word->range, {wordText(*c.word)});
           reversalWarned_ = true;
         }
         mach_.spindle = dir;

@@ -53,8 +53,7 @@ class Stock {
   // Removes radius range [lo, hi] from column i; returns the removed volume in mm^3.
   // (Inline: a sweep asks it of every column it passes, mostly above the material.)
   double remove(int i, double lo, double hi) {
-    if (i < 0 || i >= columnCount() || !(hi > lo) || lo >= outer_[static_cast<std::size_t>(i)] || caught(i))
-      return 0.0;
+    if (i < 0 || i >= columnCount() || !(hi > lo) || lo >= outer_[static_cast<std::size_t>(i)] || caught(i)) return 0.0;
     return removeFromMaterial(i, lo, hi);
   }
   // Longest overlap, in mm, of radius range [lo, hi] with the material of column i (0 = none).

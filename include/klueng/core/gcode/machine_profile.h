@@ -160,7 +160,7 @@ struct MachineProfile {
   // with a warning (a Fanuc or Haas clamps it); M03 <-> M04 without M05: an alarm, or reversed.
   bool spindleAboveMaximumIsAlarm = true;
   bool spindleReversalIsAlarm = true;
-  CycleSettings cycles;    // defaults of the cycles (one-block forms, drilling)
+  CycleSettings cycles;  // defaults of the cycles (one-block forms, drilling)
   FlowSettings flow;
   // The M codes the machine accepts, from its family's rows; empty = all of them.
   std::span<const int> mCodes;

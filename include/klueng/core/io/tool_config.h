@@ -56,9 +56,7 @@ struct ToolTable {
   }
   // Of those, the pullers (a bar stop only stands in the bar's way).
   std::array<bool, kMaxStations> pullsBarOut{};
-  bool pullsBar(int tool) const {
-    return isBarHolder(tool) && pullsBarOut[static_cast<std::size_t>(tool - 1)];
-  }
+  bool pullsBar(int tool) const { return isBarHolder(tool) && pullsBarOut[static_cast<std::size_t>(tool - 1)]; }
   std::string bitmapPath(int tool) const;  // resolved path, empty if none
   double pixelsPerMmOf(int tool) const;    // 2 for a plain bitmap
   std::string libraryId(int tool) const;   // the ID of a `library:ID` line, else empty
