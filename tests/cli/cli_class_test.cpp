@@ -12,6 +12,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include "../scratch_folders.h"
 
 // Its own namespace: the tests are unity-built and sibling files have helpers of the same names.
 namespace cli_class_test {
@@ -366,15 +367,6 @@ TEST(CliClass, ABadReferenceOrBadOptionsExitTwo) {
 
 }  // namespace cli_class_test
 
-// The process's scratch folders go with it (ctest runs each test in a process of its own): nothing
-// is left in the temporary folder after a run.
-class CliClassScratchCleanup : public ::testing::Environment {
- public:
-  void TearDown() override {
-    for (const char* prefix : {"klueng_cli_class_test-", "klueng_cli_class_pdf_test-"}) {
-      std::error_code ec;
-      std::filesystem::remove_all(std::filesystem::temp_directory_path() / (prefix + std::to_string(::getpid())), ec);
-    }
-  }
-};
-[[maybe_unused]] ::testing::Environment* const kCliClassScratchCleanup = ::testing::AddGlobalTestEnvironment(new CliClassScratchCleanup);
+// Its scratch folders go with the process: nothing left in /tmp after a run.
+[[maybe_unused]] ::testing::Environment* const kCliClassScratchCleanup =
+    klueng::test::removeScratchFoldersAtExit({"klueng_cli_class_test-", "klueng_cli_class_pdf_test-"});

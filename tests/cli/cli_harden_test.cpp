@@ -92,7 +92,9 @@ fs::path makeClassFolder(const fs::path& root) {
   EXPECT_EQ(::mkfifo((dir / "pipe.nc").c_str(), 0600), 0);
   // Text that is no program (a password file copied in), and binary data without a NUL byte.
   put(dir / "copied.nc", "root:x:0:0:" + kSecret + "\ndaemon:x:1:1:" + kSecret + "\n");
-  put(dir / "binary.nc", std::string("\x7f" "ELF\x02\x01\x01\x03\x04\x05\x06\x07\x08\x0e\x0f") + kSecret + "\n");
+  put(dir / "binary.nc", std::string("\x7f"
+                                     "ELF\x02\x01\x01\x03\x04\x05\x06\x07\x08\x0e\x0f") +
+                             kSecret + "\n");
   return dir;
 }
 
@@ -351,8 +353,8 @@ TEST(CliHarden, FailedMacroVariablesWriteExitsTwo) {
   const fs::path prog = tmp.path / "count.nc";
   put(prog, "O0001\n#500=#500+1\nM30\n");
   std::string out;
-  const std::string inner = "trap '' XFSZ; ulimit -f 0; exec " + quote(kCli) + " simulate " +
-                            quote(prog.string()) + " --stock 50x100 --config " + quote(config.string());
+  const std::string inner = "trap '' XFSZ; ulimit -f 0; exec " + quote(kCli) + " simulate " + quote(prog.string()) +
+                            " --stock 50x100 --config " + quote(config.string());
   const std::string command = "env LC_ALL= LC_MESSAGES= LANG=C sh -c " + quote(inner) + " 2>&1";
   FILE* pipe = ::popen(command.c_str(), "r");
   ASSERT_NE(pipe, nullptr);
@@ -377,7 +379,8 @@ TEST(CliHarden, VersionAndMissingOptionValues) {
   const fs::path prog = tmp.path / "p.nc";
   put(prog, sample01());
   const std::string cd = "cd " + quote(tmp.path.string()) + " && ";
-  const std::string command = cd + "env LC_ALL= LC_MESSAGES= LANG=C " + quote(kCli) + " simulate p.nc --trace --cycle-time 2>&1";
+  const std::string command =
+      cd + "env LC_ALL= LC_MESSAGES= LANG=C " + quote(kCli) + " simulate p.nc --trace --cycle-time 2>&1";
   FILE* pipe = ::popen(command.c_str(), "r");
   ASSERT_NE(pipe, nullptr);
   char buf[4096];

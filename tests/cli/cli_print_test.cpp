@@ -14,6 +14,7 @@
 #include <cctype>
 #include <vector>
 #include <sstream>
+#include "../scratch_folders.h"
 
 // Its own namespace: the tests are unity-built and sibling files have helpers of the same names.
 namespace cli_print_test {
@@ -303,15 +304,6 @@ TEST(CliGenerate, ADxfDrawingBecomesAProgramAndAnOpenOneWritesNothing) {
 
 }  // namespace cli_print_test
 
-// The process's scratch folders go with it (ctest runs each test in a process of its own): nothing
-// is left in the temporary folder after a run.
-class CliPrintScratchCleanup : public ::testing::Environment {
- public:
-  void TearDown() override {
-    for (const char* prefix : {"klueng_cli_print_test-"}) {
-      std::error_code ec;
-      std::filesystem::remove_all(std::filesystem::temp_directory_path() / (prefix + std::to_string(::getpid())), ec);
-    }
-  }
-};
-[[maybe_unused]] ::testing::Environment* const kCliPrintScratchCleanup = ::testing::AddGlobalTestEnvironment(new CliPrintScratchCleanup);
+// Its scratch folders go with the process: nothing left in /tmp after a run.
+[[maybe_unused]] ::testing::Environment* const kCliPrintScratchCleanup =
+    klueng::test::removeScratchFoldersAtExit({"klueng_cli_print_test-"});

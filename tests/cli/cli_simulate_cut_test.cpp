@@ -12,6 +12,7 @@
 #include <string>
 
 #include "klueng/core/io/image.h"
+#include "../scratch_folders.h"
 
 // Its own namespace: the tests are unity-built and sibling files have helpers of the same names.
 namespace cli_simulate_cut_test {
@@ -300,15 +301,6 @@ TEST(CliPartCheck, SamplesAreCleanAndAnAlarmedRunSaysWhatWasChecked) {
 
 }  // namespace cli_simulate_cut_test
 
-// The process's scratch folders go with it (ctest runs each test in a process of its own): nothing
-// is left in the temporary folder after a run.
-class CliSimulateCutScratchCleanup : public ::testing::Environment {
- public:
-  void TearDown() override {
-    for (const char* prefix : {"klueng_cli_cut_test-", "klueng_cli_wrong_tip-"}) {
-      std::error_code ec;
-      std::filesystem::remove_all(std::filesystem::temp_directory_path() / (prefix + std::to_string(::getpid())), ec);
-    }
-  }
-};
-[[maybe_unused]] ::testing::Environment* const kCliSimulateCutScratchCleanup = ::testing::AddGlobalTestEnvironment(new CliSimulateCutScratchCleanup);
+// Its scratch folders go with the process: nothing left in /tmp after a run.
+[[maybe_unused]] ::testing::Environment* const kCliSimulateCutScratchCleanup =
+    klueng::test::removeScratchFoldersAtExit({"klueng_cli_cut_test-", "klueng_cli_wrong_tip-"});

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include "../scratch_folders.h"
 
 // Its own namespace: the tests are unity-built and sibling files have helpers of the same names.
 namespace cli_units_test {
@@ -161,15 +162,6 @@ TEST(CliUnits, AG20ProgramsPartCheckIsInInches) {
 
 }  // namespace cli_units_test
 
-// The process's scratch folders go with it (ctest runs each test in a process of its own): nothing
-// is left in the temporary folder after a run.
-class CliUnitsScratchCleanup : public ::testing::Environment {
- public:
-  void TearDown() override {
-    for (const char* prefix : {"klueng_cli_units_test-"}) {
-      std::error_code ec;
-      std::filesystem::remove_all(std::filesystem::temp_directory_path() / (prefix + std::to_string(::getpid())), ec);
-    }
-  }
-};
-[[maybe_unused]] ::testing::Environment* const kCliUnitsScratchCleanup = ::testing::AddGlobalTestEnvironment(new CliUnitsScratchCleanup);
+// Its scratch folders go with the process: nothing left in /tmp after a run.
+[[maybe_unused]] ::testing::Environment* const kCliUnitsScratchCleanup =
+    klueng::test::removeScratchFoldersAtExit({"klueng_cli_units_test-"});

@@ -86,8 +86,9 @@ class DialectOfferTest : public QObject {
     QVERIFY(w.action(QStringLiteral("actionDialectHaas"))->isChecked());
     // The offer taken belongs to this program: its head names the machine (one undo step),
     // and the menu's machine, the one every other file is read on, stays Fanuc (issue 38 item 8).
-    QVERIFY2(w.findChild<CodeEditor*>()->toPlainText().startsWith(QStringLiteral("%\nO20031 (HAAS OD)\n(MACHINE: haas)\n")),
-             qPrintable(w.findChild<CodeEditor*>()->toPlainText().left(60)));
+    QVERIFY2(
+        w.findChild<CodeEditor*>()->toPlainText().startsWith(QStringLiteral("%\nO20031 (HAAS OD)\n(MACHINE: haas)\n")),
+        qPrintable(w.findChild<CodeEditor*>()->toPlainText().left(60)));
     QCOMPARE(Settings().dialect(), core::gcode::Dialect::Fanuc);
     // The stock is inferred again in the new dialect: the Haas inch cycle starts
     // at X2.1, the largest 1/8-inch bar not above it is Ø2 in.

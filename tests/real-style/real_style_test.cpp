@@ -38,6 +38,7 @@
 #include <sstream>
 #include <string>
 #include <vector>
+#include "../scratch_folders.h"
 
 namespace {
 
@@ -948,11 +949,11 @@ TEST(RealStyleControlReading, Fanuc_InchSafetyLinesRunAsOnTheLathe) {
   EXPECT_EQ(r.check.text.find("I102"), std::string::npos) << "no other machine is offered:\n" << r.check.text;
   const Profile& p = r.part;
   // T01 under G40 (tip 3): cylinders and faces exact.
-  EXPECT_NEAR(p.d(-0.80), 1.85, kIn);    // X1.85 to Z-.9, left by the X1.5 pass that stops at Z-.7
-  EXPECT_NEAR(p.d(-0.65), 1.50, kIn);    // X1.5 from the thread's end (Z-.6) to Z-.7
-  EXPECT_NEAR(p.d(-1.20), 2.00, kIn);    // the bar behind Z-.9
+  EXPECT_NEAR(p.d(-0.80), 1.85, kIn);          // X1.85 to Z-.9, left by the X1.5 pass that stops at Z-.7
+  EXPECT_NEAR(p.d(-0.65), 1.50, kIn);          // X1.5 from the thread's end (Z-.6) to Z-.7
+  EXPECT_NEAR(p.d(-1.20), 2.00, kIn);          // the bar behind Z-.9
   EXPECT_NEAR(p.minD(-0.5, -0.1), 1.42, kIn);  // G92's last pass X1.42 (T03, apex controlled)
-  EXPECT_NEAR(p.rightFace(), 0.0, kIn);  // faced at Z0.
+  EXPECT_NEAR(p.rightFace(), 0.0, kIn);        // faced at Z0.
 }
 
 // O0314: a mill habit in the safety line (G21G40G49G54G80G90: G49 is read and
@@ -963,11 +964,11 @@ TEST(RealStyleControlReading, Fanuc_G49SafetyLineAndABarPuller) {
   RUN_CLEAN(job, r);
   EXPECT_EQ(r.check.text.find("I102"), std::string::npos) << r.check.text;
   const Profile& p = r.part;
-  EXPECT_NEAR(p.d(-10.0), 30.0, kMm);      // X30. to Z-25.
-  EXPECT_NEAR(p.d(-30.0), 36.0, kMm);      // the bar
-  EXPECT_NEAR(p.inner(-5.0), 0.0, kMm);    // the puller went in to Z-12. at X0 and drilled nothing
+  EXPECT_NEAR(p.d(-10.0), 30.0, kMm);    // X30. to Z-25.
+  EXPECT_NEAR(p.d(-30.0), 36.0, kMm);    // the bar
+  EXPECT_NEAR(p.inner(-5.0), 0.0, kMm);  // the puller went in to Z-12. at X0 and drilled nothing
   EXPECT_NEAR(p.edge(-24.0, -26.0, 33.0), -25.0, kMm);
-  EXPECT_NEAR(p.rightFace(), 0.0, kMm);    // faced X34. -> X-1. at Z0.
+  EXPECT_NEAR(p.rightFace(), 0.0, kMm);  // faced X34. -> X-1. at Z0.
 }
 
 // O0815: a label line (the part's name in Chinese) before the first '%', which
@@ -1000,8 +1001,7 @@ TEST(RealStyleControlReading, Fanuc_TextAfterSemicolonAndAfterAnInnerParenthesis
       << fanuc.text;
   EXPECT_EQ(errorLines(fanuc.text).find(":6:"), std::string::npos) << "'; (desbaste) ;' is fine:\n" << fanuc.text;
   EXPECT_EQ(fanuc.text.find("I102"), std::string::npos) << "text is no other machine's form:\n" << fanuc.text;
-  const Output haas =
-      runCli("check " + file + " --dialect haas --units mm --stock 46x60 --config " + quote(kShipped));
+  const Output haas = runCli("check " + file + " --dialect haas --units mm --stock 46x60 --config " + quote(kShipped));
   EXPECT_EQ(errorLines(haas.text), "") << haas.text;
 }
 
@@ -1018,15 +1018,6 @@ TEST(RealStyleControlReading, Haas_SemicolonCommentsAreComments) {
 
 }  // namespace
 
-// The process's scratch folders go with it (ctest runs each test in a process of its own): nothing
-// is left in the temporary folder after a run.
-class RealStyleScratchCleanup : public ::testing::Environment {
- public:
-  void TearDown() override {
-    for (const char* prefix : {"klueng_real_style_test-"}) {
-      std::error_code ec;
-      std::filesystem::remove_all(std::filesystem::temp_directory_path() / (prefix + std::to_string(::getpid())), ec);
-    }
-  }
-};
-[[maybe_unused]] ::testing::Environment* const kRealStyleScratchCleanup = ::testing::AddGlobalTestEnvironment(new RealStyleScratchCleanup);
+// Its scratch folders go with the process: nothing left in /tmp after a run.
+[[maybe_unused]] ::testing::Environment* const kRealStyleScratchCleanup =
+    klueng::test::removeScratchFoldersAtExit({"klueng_real_style_test-"});

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "cut_test_util.h"
+#include "../../scratch_folders.h"
 
 namespace klueng::core::cut {
 namespace {
@@ -144,15 +145,6 @@ TEST(ToolShape, ShippedBitmapsLoadWithTheirOffsets) {
 }  // namespace
 }  // namespace klueng::core::cut
 
-// The process's scratch folders go with it (ctest runs each test in a process of its own): nothing
-// is left in the temporary folder after a run.
-class ToolShapeScratchCleanup : public ::testing::Environment {
- public:
-  void TearDown() override {
-    for (const char* prefix : {"klueng_cut_tool_test-"}) {
-      std::error_code ec;
-      std::filesystem::remove_all(std::filesystem::temp_directory_path() / (prefix + std::to_string(::getpid())), ec);
-    }
-  }
-};
-[[maybe_unused]] ::testing::Environment* const kToolShapeScratchCleanup = ::testing::AddGlobalTestEnvironment(new ToolShapeScratchCleanup);
+// Its scratch folders go with the process: nothing left in /tmp after a run.
+[[maybe_unused]] ::testing::Environment* const kToolShapeScratchCleanup =
+    klueng::test::removeScratchFoldersAtExit({"klueng_cut_tool_test-"});

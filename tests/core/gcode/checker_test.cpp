@@ -167,8 +167,9 @@ INSTANTIATE_TEST_SUITE_P(
         FailCase{"G20 G21", In::Classic, "E205", 1, 5, 3}, FailCase{"G41 G42 G00 X1.", In::Classic, "E205", 1, 5, 3},
         FailCase{"G04 U1. G50 S100", In::Both, "E205", 1, 9, 3},
         // A Fanuc uses the last G code of a modal group (issue 38): a warning at the second.
-        FailCase{"G00 G01 X35. F0.2", In::Fanuc, "W116", 1, 5, 3}, FailCase{"G96 S100 G97", In::Fanuc, "W116", 1, 10, 3},
-        FailCase{"G20 G21", In::Fanuc, "W116", 1, 5, 3}, FailCase{"G41 G42 G00 X1.", In::Fanuc, "W116", 1, 5, 3},
+        FailCase{"G00 G01 X35. F0.2", In::Fanuc, "W116", 1, 5, 3},
+        FailCase{"G96 S100 G97", In::Fanuc, "W116", 1, 10, 3}, FailCase{"G20 G21", In::Fanuc, "W116", 1, 5, 3},
+        FailCase{"G41 G42 G00 X1.", In::Fanuc, "W116", 1, 5, 3},
         // rule 6
         FailCase{"G04 G01 U1.", In::Both, "E206", 1, 5, 3}, FailCase{"G01 X20. G28", In::Classic, "E206", 1, 10, 3},
         FailCase{"G50 S2000 G00", In::Both, "E206", 1, 11, 3},

@@ -147,8 +147,7 @@ TEST(CommentEnd, AFanucCommentEndsAtItsFirstCloseParenthesis) {
   EXPECT_THAT(errorsOn(macro), ElementsAre("E142 1:21"));
   EXPECT_THAT(errorsOn(macro, Dialect::Haas), IsEmpty());
   // Only a ')' (or signs) after it: the control reads on, a warning.
-  EXPECT_THAT(placesOf(readOn("(ROUGH (T01) )\n(--- WAIT (CLEAR #503) ---)\n")),
-              ElementsAre("W113 1:13", "W113 2:23"));
+  EXPECT_THAT(placesOf(readOn("(ROUGH (T01) )\n(--- WAIT (CLEAR #503) ---)\n")), ElementsAre("W113 1:13", "W113 2:23"));
 }
 
 TEST(CycleRules, AShapeThatHoldsItsOwnCycleStopsTheControl) {

@@ -341,7 +341,8 @@ TEST(DialectFit, NamesTheDialectThatAcceptsTheProgram) {
   EXPECT_EQ(fit->note.severity, Severity::Note);
   EXPECT_EQ(fit->note.range, (SourceRange{5, 1, 0}));
   EXPECT_EQ(formatMessage(fit->note, Lang::En),
-            "blocks with errors or warnings that are Haas ST (NGC) forms: 2; choose the Haas ST (NGC) dialect (--dialect haas)");
+            "blocks with errors or warnings that are Haas ST (NGC) forms: 2; choose the Haas ST (NGC) dialect "
+            "(--dialect haas)");
   EXPECT_EQ(formatMessage(fit->note, Lang::Th),
             "บล็อกที่ผิดพลาดหรือมีคำเตือน 2 บล็อกเป็นรูปแบบของ Haas ST (NGC): เลือกรูปแบบคำสั่ง Haas ST (NGC) (--dialect haas)");
 }

@@ -17,6 +17,7 @@
 #include "klueng/core/job/job.h"
 #include "klueng/core/machine/setup_files.h"
 #include "klueng/core/messages.h"
+#include "../../scratch_folders.h"
 
 namespace klueng::core::machine {
 namespace {
@@ -174,15 +175,6 @@ TEST(Help, ASystemBMachineSpeaksItsOwnNumbers) {
 }  // namespace
 }  // namespace klueng::core::machine
 
-// The process's scratch folders go with it (ctest runs each test in a process of its own): nothing
-// is left in the temporary folder after a run.
-class HelpScratchCleanup : public ::testing::Environment {
- public:
-  void TearDown() override {
-    for (const char* prefix : {"klueng-help-examples-"}) {
-      std::error_code ec;
-      std::filesystem::remove_all(std::filesystem::temp_directory_path() / (prefix + std::to_string(::getpid())), ec);
-    }
-  }
-};
-[[maybe_unused]] ::testing::Environment* const kHelpScratchCleanup = ::testing::AddGlobalTestEnvironment(new HelpScratchCleanup);
+// Its scratch folders go with the process: nothing left in /tmp after a run.
+[[maybe_unused]] ::testing::Environment* const kHelpScratchCleanup =
+    klueng::test::removeScratchFoldersAtExit({"klueng-help-examples-"});

@@ -45,8 +45,9 @@ std::optional<UnitsReading> unitsOf(const std::string& text, gcode::Dialect d = 
 
 TEST(UnitsReading, AnInchRoughingProgramWithoutG20IsReadInInches) {
   // An American production shop's 13 lines: depth .1, retract .02, 500 ft/min.
-  const auto r = unitsOf("O1002\nG50S1250\nG0T0101\nG96S500M3\nX8.Z.04\nG71U.1R.02\nG71P10Q20U.02F.04\n"
-                         "N10G0X6.\nG1Z-2.\nN20G1X8.\nG0X11.Z6.\nM30\n");
+  const auto r = unitsOf(
+      "O1002\nG50S1250\nG0T0101\nG96S500M3\nX8.Z.04\nG71U.1R.02\nG71P10Q20U.02F.04\n"
+      "N10G0X6.\nG1Z-2.\nN20G1X8.\nG0X11.Z6.\nM30\n");
   ASSERT_TRUE(r.has_value());
   EXPECT_EQ(r->units, gcode::InputUnits::Inch);
   EXPECT_EQ(r->note.code, "I107");
@@ -57,16 +58,17 @@ TEST(UnitsReading, AnInchRoughingProgramWithoutG20IsReadInInches) {
 TEST(UnitsReading, AMetricProgramAndOneThatNamesItsUnitsStayAsTheyAre) {
   EXPECT_FALSE(unitsOf("T0101\nG96S200M3\nG0X52.Z2.\nG71U2.R0.5\nG71P1Q2U0.4W0.1F0.25\nN1G0X30.\nG1Z-20.\nN2X52.\n"
                        "M30\n")
-                   .has_value());  // mm: the machine's own units
+                   .has_value());                                                 // mm: the machine's own units
   EXPECT_FALSE(unitsOf("G20\nT0101\nG96S500M3\nG71U.1R.02\nM30\n").has_value());  // G20 says it
   // Too little to tell: the machine's units stand.
   EXPECT_FALSE(unitsOf("T0101\nG0X8.Z1.\nG1Z-2.F.04\nM30\n").has_value());
 }
 
 TEST(UnitsReading, AMetricProgramOnAnInchHaasIsReadInMm) {
-  const auto r = unitsOf("T101\nG96 S180 M03\nG00 X52. Z2.\nG71 P1 Q2 U0.4 W0.1 D1.5 F0.25\nN1 G00 X30.\n"
-                         "G01 Z-20.\nN2 X52.\nM30\n",
-                         gcode::Dialect::Haas);
+  const auto r = unitsOf(
+      "T101\nG96 S180 M03\nG00 X52. Z2.\nG71 P1 Q2 U0.4 W0.1 D1.5 F0.25\nN1 G00 X30.\n"
+      "G01 Z-20.\nN2 X52.\nM30\n",
+      gcode::Dialect::Haas);
   ASSERT_TRUE(r.has_value());
   EXPECT_EQ(r->units, gcode::InputUnits::Millimetre);
 }

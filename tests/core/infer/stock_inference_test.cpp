@@ -450,7 +450,7 @@ TEST(StockInference, BoringDeeperThanAShallowDrillIsATube) {
                                                    1),
                                       testing::testSetup());
   ASSERT_TRUE(r.found);
-  EXPECT_EQ(r.boreLine, 13);  // G01 Z-25. at X26.
+  EXPECT_EQ(r.boreLine, 13);       // G01 Z-25. at X26.
   EXPECT_DOUBLE_EQ(r.bore, 25.0);  // a size below the pass
 }
 

@@ -276,17 +276,17 @@ TEST(MakeJob, AnErrorInASubprogramFileIsOneE412OnItsCallForTheEditor) {
 TEST(MakeJob, AGuessedNoseThatDoesNotFitRunsWithTheLargestRadiusThatDoes) {
   const machine::testing::ScratchFolder folder{"guessednose"};
   const std::string text =
-      "O0002\n"                   // 1
-      "G21 G40 G99\n"             // 2
-      "T0101\n"                   // 3
-      "G97 S1000 M3\n"            // 4
-      "G00 X90. Z5.\n"            // 5
-      "G42 G00 X76. Z2.\n"        // 6
-      "G01 Z-20. F0.1\n"          // 7
-      "X79.\n"                    // 8
-      "G00 Z2.\n"                 // 9
-      "G40 G00 X100. Z50.\n"      // 10
-      "M30\n";                    // 11
+      "O0002\n"               // 1
+      "G21 G40 G99\n"         // 2
+      "T0101\n"               // 3
+      "G97 S1000 M3\n"        // 4
+      "G00 X90. Z5.\n"        // 5
+      "G42 G00 X76. Z2.\n"    // 6
+      "G01 Z-20. F0.1\n"      // 7
+      "X79.\n"                // 8
+      "G00 Z2.\n"             // 9
+      "G40 G00 X100. Z50.\n"  // 10
+      "M30\n";                // 11
   const std::string path = folder.write("shoulder.nc", text);
   JobInput in = request(path);
   io::JobHeader bar;

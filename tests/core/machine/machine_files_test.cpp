@@ -282,7 +282,8 @@ TEST(MachineFiles, SystemBProgramCutsItsPartAndIsOfferedTheRomi) {
   EXPECT_EQ(asA[0].severity, Severity::Warning);
   EXPECT_EQ(asA[0].range.line, 3);
   EXPECT_EQ(asA[0].range.column, 1);
-  EXPECT_EQ(formatMessage(asA[0], Lang::En).substr(0, 60), "G92 S2500 in G-code system A selects the threading cycle wit");
+  EXPECT_EQ(formatMessage(asA[0], Lang::En).substr(0, 60),
+            "G92 S2500 in G-code system A selects the threading cycle wit");
   ASSERT_TRUE(fromG92.has_value());
   EXPECT_EQ(fromG92->dialect, romi);
   EXPECT_EQ(fromG92->note.range.line, 3);  // G92 S2500;
