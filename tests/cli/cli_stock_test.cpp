@@ -77,6 +77,24 @@ TEST(CliStock, PlainFileTellsTheInferredStock) {
   EXPECT_THAT(th.out, HasSubstr(": หมายเหตุ I152: ชิ้นงาน Ø50 x 80 มม. ประมาณจาก N30 G00 X52. Z0."));
 }
 
+// A shop's thread to a shoulder with G32 passes: the guessed bar must leave the threading tool,
+// whose insert reaches 10 mm behind its point, room before the jaws (it ran on the real lathe).
+TEST(CliStock, InferredBarSticksOutFarEnoughForTheThreadingTool) {
+  const std::string file =
+      writeFile("thread.nc",
+                "O1100\nG21 G99\nT0404\nG97 S500 M03\nG00 X26. Z5.\nX23.4\nG32 Z-20. F1.5\nG00 X26.\nZ5.\n"
+                "X23.\nG32 Z-20. F1.5\nG00 X26.\nZ5.\nG28 U0 W0\nM30\n");
+  const CliRun run = runCli("simulate " + file + " --cycle-time");
+  EXPECT_EQ(run.exitCode, 0) << run.out;
+  EXPECT_THAT(run.out, Not(HasSubstr("A304")));
+  EXPECT_THAT(run.out, HasSubstr(file + ":7:1: note I162: stock length 50, not 40: T04 reaches Z-30 here, so the bar "
+                                        "sticks out far enough for it to clear the chuck's jaws\n"));
+  // The same bar given on the command line is the user's: a tool that meets its jaws is an alarm.
+  const CliRun given = runCli("simulate " + file + " --stock 25x40");
+  EXPECT_EQ(given.exitCode, 1) << given.out;
+  EXPECT_THAT(given.out, HasSubstr(file + ":7:1: alarm A304: The tool hits the chuck at Z-16.000 X23.400"));
+}
+
 TEST(CliStock, HeaderFileHasNoNoteAndStockOptionWins) {
   const std::string file = writeFile("header.txt", "Job\nPart\nSteel\n150\n1100\nMe\n" + kPlain);
   EXPECT_EQ(runCli("check " + file).out, "");

@@ -155,6 +155,8 @@ inline constexpr const char* kStockFromHeader = "I156";
 inline constexpr const char* kStockLengthFromDeepestCut = "I157";
 inline constexpr const char* kStockInferredFromBore = "I158";
 inline constexpr const char* kStockFromLargestTurned = "I159";
+// {0} new length, {1} the length from the deepest cut, {2} tool station, {3} how deep the tool reaches
+inline constexpr const char* kStockLengthForTools = "I162";
 inline constexpr const char* kToolFromComment = "I401";
 inline constexpr const char* kToolForThreading = "I402";
 inline constexpr const char* kToolForInsideThreading = "I403";

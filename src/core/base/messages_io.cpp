@@ -172,6 +172,10 @@ constexpr MessageText kIoMessages[] = {
     {codes::kStockLengthFromDeepestCut,
      "stock length {0}: the deepest cut Z{1} ({2}) + {3} for the cut-off + {4} held in the chuck",
      "ความยาวชิ้นงาน {0}: ตัดลึกสุดที่ Z{1} ({2}) + {3} สำหรับการตัดขาด + {4} ส่วนที่หัวจับยึด"},
+    {codes::kStockLengthForTools,
+     "stock length {0}, not {1}: T{2} reaches Z-{3} here, so the bar sticks out far enough for it to clear the "
+     "chuck's jaws",
+     "ความยาวชิ้นงาน {0} ไม่ใช่ {1}: มีด T{2} ยื่นไปถึง Z-{3} ตรงนี้ จึงให้ชิ้นงานยื่นออกจากหัวจับพอให้มีดไม่ชนปากจับ"},
     // The tool library, library.cfg (docs/tools.md).
     {codes::kLibraryLineFields,
      "{0}: a library line needs 9 fields separated by '|' (id | kind | px/mm | R | tip | size | bitmap | "

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "diagnostic_codes.h"
+#include "klueng/core/gcode/code_table.h"
 
 namespace klueng::core::gcode {
 
@@ -16,6 +17,21 @@ namespace {
 // or M code this machine has not (Haas's G71 D, a 5-digit O, `G04 P3.`), or system B's `G92 S2500`
 // read in system A (a warning). Rules every machine keeps in its own way (a profile's first block,
 // text after ';', a comma for the point) are the program's mistakes, not forms of another machine.
+// An M code this machine passes on as its builder's (W101) that another machine's control reads as a
+// subprogram call (Haas's M97 P1000): here the blocks it calls never run, so the program is that
+// machine's. Other builder M codes (M31 chip conveyor, M216 load monitor) say nothing of the control.
+bool callOfAnotherMachine(const Diagnostic& d) {
+  if (d.args.empty() || d.args[0].size() < 2 || (d.args[0][0] != 'M' && d.args[0][0] != 'm')) return false;
+  const std::string digits = d.args[0].substr(1);
+  if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 4) return false;
+  const int number = std::stoi(digits);
+  const std::vector<const MachineProfile*> machines = machineProfiles();
+  return std::any_of(machines.begin(), machines.end(), [&](const MachineProfile* m) {
+    const CodeInfo* row = findCode('M', number, m->dialect);
+    return row && row->group == ModalGroup::MSubprogram;
+  });
+}
+
 bool isForm(const Diagnostic& d) {
   static constexpr std::string_view kForms[] = {
       codes::kUnknownCharacter,  codes::kTooManyDecimals,  codes::kUnknownGCode,     codes::kUnknownMCode,
@@ -24,12 +40,16 @@ bool isForm(const Diagnostic& d) {
       codes::kOneShotWithMotion, codes::kFeedModeNotAlone, codes::kG28WithoutAxes,   codes::kMacroNotInDialect,
   };
   if (d.code == std::string_view(codes::kClampOfAnotherSystem)) return true;
+  if (d.code == std::string_view(codes::kMachineSpecificM)) return callOfAnotherMachine(d);
   return d.severity == Severity::Error && std::find(std::begin(kForms), std::end(kForms), d.code) != std::end(kForms);
 }
 
 // Where another machine is looked at: an M code it does not list (M93 typed for M03) is the
 // program's slip there, not a sign that the machine is the wrong one.
-bool isFormThere(const Diagnostic& d) { return isForm(d) && d.code != std::string_view(codes::kUnknownMCode); }
+bool isFormThere(const Diagnostic& d) {
+  return isForm(d) && d.code != std::string_view(codes::kUnknownMCode) &&
+         d.code != std::string_view(codes::kMachineSpecificM);
+}
 
 long errorCount(const std::vector<Diagnostic>& diags) {
   return std::count_if(diags.begin(), diags.end(), [](const Diagnostic& d) { return d.severity == Severity::Error; });

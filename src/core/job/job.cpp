@@ -1,5 +1,7 @@
 // One job (job.h): the one chain from a program to its check, tools, stock and run.
 #include "klueng/core/job/job.h"
+
+#include "stick_out.h"
 #include "klueng/core/machine/machine_files.h"
 
 #include <algorithm>
@@ -57,11 +59,16 @@ std::vector<Diagnostic> resolveJobStock(io::ProgramFile& file, const gcode::Prog
       recorded ? machine::inferStock(program, *recorded, setup) : machine::inferStock(program, setup, run);
   // The bar the program's own comment names wins over the approach (issue 38 item 8).
   machine::readStockComment(inferred, file.gcode, file.gcodeFirstLine);
-  if (inferred.found)
-    inferred.applyTo(h);
-  else
+  if (!inferred.found) {
     h.takeStockFrom(io::JobHeader{});
-  return machine::stockNotes(h, &inferred, file.gcode, file.gcodeFirstLine);
+    return machine::stockNotes(h, &inferred, file.gcode, file.gcodeFirstLine);
+  }
+  inferred.applyTo(h);
+  std::vector<Diagnostic> notes = machine::stockNotes(h, &inferred, file.gcode, file.gcodeFirstLine);
+  // A bar the program's comment names keeps its length; one guessed from the cuts makes room for the tools.
+  if (recorded && inferred.commentLine == 0)
+    if (std::optional<Diagnostic> longer = lengthenForTools(h, *recorded, setup)) notes.push_back(std::move(*longer));
+  return notes;
 }
 
 // The call in the program itself (file 0) that reaches subprogram file `file`.

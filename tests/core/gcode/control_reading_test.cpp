@@ -85,6 +85,25 @@ TEST(SafetyLine, G92WithOnlySInSystemAIsAWarningAndTheSystemBOffer) {
   EXPECT_EQ(fit->note.range.line, 3);
 }
 
+TEST(Offer, AHaasLocalCallIsAHaasProgramButABuildersMCodeIsNot) {
+  const std::string local =
+      "%\nO01234\nG20\nT101\nG97 S1000 M03\nG00 X1.1 Z0.1\nM97 P100 L2\nG28\nM30\n"
+      "N100 G01 Z-0.5 F0.01\nG00 X1.2\nZ0.1\nM99\n%\n";
+  const std::vector<Diagnostic> d = readOn(local);
+  EXPECT_THAT(placesOf(d), ElementsAre("W101 7:1", "W102 8:1"));
+  CheckOptions o;
+  o.dialect = Dialect::Fanuc;
+  const auto fit = suggestDialect(parse(local), o, d);
+  ASSERT_TRUE(fit.has_value());
+  EXPECT_EQ(fit->dialect, Dialect::Haas);
+  EXPECT_EQ(fit->note.range.line, 7);
+  // M31 (chip conveyor) is a builder's code on a Fanuc and Haas's own: no sign of the control.
+  const std::string conveyor = "O0001\nG21\nT0101\nM31\nG97 S800 M03\nG00 X40. Z2.\nG01 Z-10. F0.2\nM30\n";
+  const std::vector<Diagnostic> c = readOn(conveyor);
+  EXPECT_THAT(placesOf(c), ElementsAre("W101 4:1"));
+  EXPECT_FALSE(suggestDialect(parse(conveyor), o, c).has_value());
+}
+
 TEST(Leader, TheLabelBeforeTheFirstPercentIsSkippedWithANote) {
   const Program p = parse("法兰盘 6061\n%\nO0815\nG00 X40. Z2.\nM30\n%\n");
   EXPECT_THAT(placesOf(p.lexicalDiagnostics), ElementsAre("I105 1:1"));
