@@ -114,6 +114,26 @@ double sizeMm(const std::string& up, double unitMm) {
   return 0.0;
 }
 
+// A bare number right after the drill's own word, in the program's units: "DRILL 10", "FORET 22",
+// "SVERLO 1.3", "T2 DRILL 1.0" in an inch program ("DRILL 10X30": the diameter, then the depth).
+double sizeAfterDrillWord(const std::string& up, std::initializer_list<std::string_view> drillWords, double unitMm) {
+  for (std::string_view w : drillWords)
+    for (std::size_t at = up.find(w); at != std::string::npos; at = up.find(w, at + 1)) {
+      if (at > 0 && std::isalpha(static_cast<unsigned char>(up[at - 1]))) continue;
+      std::size_t j = at + w.size();
+      while (j < up.size() && std::isalpha(static_cast<unsigned char>(up[j]))) ++j;  // the word's ending
+      while (j < up.size() && (up[j] == ' ' || up[j] == ':' || up[j] == '-')) ++j;
+      if (j >= up.size() || !(std::isdigit(static_cast<unsigned char>(up[j])) || up[j] == '.')) continue;
+      char* end = nullptr;
+      const double v = std::strtod(up.c_str() + j, &end);
+      const std::size_t after = static_cast<std::size_t>(end - up.c_str());
+      if (after < up.size() && up[after] == '/') continue;  // a fraction: sizeMm's
+      if (after < up.size() && std::isalpha(static_cast<unsigned char>(up[after])) && up[after] != 'X') continue;
+      if (v > 0.0) return v * unitMm;
+    }
+  return 0.0;
+}
+
 }  // namespace
 
 namespace {
@@ -214,10 +234,12 @@ CommentTool classifyComment(std::string_view comment, double unitMm) {
     out.kind = ToolKind::Parting;
   } else if (hasPrefix(ws, {"GROOV", "GORGE", "RANUR", "EINSTECH", "ROWK", "ROWEK"}) || hasText(up, {"ร่อง"})) {
     out.kind = ToolKind::Grooving;
-  } else if (hasPrefix(ws, {"DRILL", "PERCAGE", "PERCER", "FORET", "BOHR", "TALADR", "BROCA", "WIERT"}) ||
-             hasText(up, {"ดอกสว่าน", "เจาะ"})) {
+  } else if (hasPrefix(ws, {"DRILL", "PERCAGE", "PERCER", "FORET", "BOHR", "TALADR", "BROCA", "WIERT", "SVERL"}) ||
+             hasText(up, {"ดอกสว่าน", "เจาะ", "СВЕРЛ"})) {
     out.kind = ToolKind::Drill;
     out.drillMm = sizeMm(up, unitMm);
+    if (out.drillMm == 0.0)
+      out.drillMm = sizeAfterDrillWord(up, {"DRILL", "FORET", "BOHRER", "BROCA", "SVERLO", "WIERTLO"}, unitMm);
   } else if (hasPrefix(ws, {"BORE", "BORING", "ALESAGE", "MANDRIN", "WYTACZ"}) || hasText(up, {"คว้าน"}) || inside) {
     out.kind = ToolKind::Boring;
   } else if (!out.insert.empty() || out.finishing ||

@@ -279,6 +279,17 @@ TEST(ToolInference, DrillSizesInInchesFractionsAndPhi) {
       "%\nO0050\n(PHASE 50 : PERCAGE PHI22)\nT0909\nG97 S434 M03\nG00 X0. Z2.\n"
       "G83 Z-54. Q4. R2. F0.18\nG80\nM30\n%\n";
   expectChoice(infer(metric), 9, "drill-22mm", ToolReason::Comment, 3, "PHASE 50 : PERCAGE PHI22");
+  // A bare number after the drill's word is its size in the program's units.
+  const std::string bare =
+      "%\nO0400\nG21 G99\nT0505 (DRILL 10)\nG97 S800 M03\nG00 X0 Z5.\nG74 R1.\nG74 Z-30. Q5000 F0.1\nG00 Z10.\n"
+      "T1010 (SVERLO 8.0)\nG00 X0 Z2.\nG01 Z-12. F0.05\nG00 Z5.\nM30\n%\n";
+  const ToolInference b = infer(bare);
+  expectChoice(b, 5, "drill-10mm", ToolReason::Comment, 4, "DRILL 10");
+  expectChoice(b, 10, "drill-8mm", ToolReason::Comment, 10, "SVERLO 8.0");
+  const std::string inchBare =
+      "%\nO1234\nG20 G99\nT0909 (DRILL .5)\nG97 S800 M03\nG00 X0. Z0.1\n"
+      "G01 Z-0.8 F0.003\nG00 Z1.\nM30\n%\n";
+  expectChoice(infer(inchBare), 9, "drill-12.7mm", ToolReason::Comment, 4, "DRILL .5");
 }
 
 // A plain program (no job header): every station from the program's evidence,
