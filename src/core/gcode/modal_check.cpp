@@ -111,6 +111,7 @@ class ModalWalk {
         case CodeAction::SecondReferenceReturn:
         case CodeAction::ReturnFromReference:
         case CodeAction::MachineCoordinates:
+        case CodeAction::DataSetting:
           axisWordsNotAMove = true;  // X/Z/U/W here are a time, a point or a name, not a feed move
           break;
         case CodeAction::Inch: inch_ = true; break;

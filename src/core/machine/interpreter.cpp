@@ -57,7 +57,8 @@ void Interpreter::readDistanceMode() {
     const CodeInfo* row = gcode::findCode('G', w.code(), options_.dialect);
     if (!row) continue;
     if (row->group == ModalGroup::Distance) modal_.incremental = row->action == CodeAction::Incremental;
-    positions = positions || row->action == CodeAction::CoordinateSet || row->action == CodeAction::MachineCoordinates;
+    positions = positions || row->action == CodeAction::CoordinateSet ||
+                row->action == CodeAction::MachineCoordinates || row->action == CodeAction::DataSetting;
   }
   if (!modal_.incremental || positions || !(block_->mayHave('X') || block_->mayHave('Z'))) return;
   incrementalBlock_ = *block_;

@@ -238,6 +238,7 @@ class Interpreter final : public gcode::MacroVariables, private BlockEffects {
   bool oneShot(const CodeWord& c);
   bool dwell(const Word* w);
   bool referenceReturn(const Word* w);
+  bool dataSetting(const Word* w);
 
   // ---- interpreter_cycles.cpp ---------------------------------------------------
   bool compensationAllowed(const Word* g);

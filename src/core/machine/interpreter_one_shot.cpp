@@ -3,6 +3,9 @@
 // block with G00/G01 where the profile allows it (the motion G becomes modal).
 #include "machine/interpreter_impl.h"
 #include "klueng/core/diagnostic_codes.h"
+#include <algorithm>
+
+#include <fmt/format.h>
 
 namespace klueng::core::machine::detail {
 
@@ -56,10 +59,42 @@ bool Interpreter::referenceReturn(const Word* w) {
   return true;
 }
 
+// G10 P_ X_ Z_ R_ Q_ (U W C: added): the program writes an offset (Fanuc 16i/18i-TB Operator's
+// Manual B-63524EN/01 §14.5.2; 0i-TF the same). P 10000+n is geometry offset n, P n its wear;
+// this simulator keeps one row per offset, so wear changes X and Z (and C the radius), geometry
+// everything. X and Z move no tool here (the path is the program's); R and Q steer the nose
+// compensation. As with #2001-#2400, the new values count from the next T word. P0 (the work
+// shift) and L2/L20 (work offsets) name what Klueng's work coordinates, the program's own, do not have.
+bool Interpreter::dataSetting(const Word* w) {
+  const Word* l = find('L');
+  const Word* p = find('P');
+  const int table = l ? l->code() : 0;
+  if (!p || table == 2 || table == 20 || table == 50) return true;
+  int number = p->code();
+  const bool geometry = number > 10000 || table == 10;
+  if (number > 10000) number -= 10000;
+  if (number == 0) return true;
+  if (number < 1 || number > static_cast<int>(offsets_.offsets.size()))
+    return raise(codes::kNoSuchOffset, p,
+                 {wordText(*p), fmt::format("{:02d}", number), fmt::format("{:02d}", offsets_.offsets.size())});
+  io::Offset& o = offsets_.offsets[static_cast<std::size_t>(number - 1)];
+  const double u = unit();
+  if (const Word* x = find('X')) o.x = x->value * u;
+  if (const Word* z = find('Z')) o.z = z->value * u;
+  if (const Word* du = find('U')) o.x += du->value * u;
+  if (const Word* dw = find('W')) o.z += dw->value * u;
+  if (const Word* c = find('C')) o.r = std::max(0.0, o.r + c->value * u);
+  if (const Word* r = find('R'); r && geometry) o.r = std::max(0.0, r->value * u);
+  if (const Word* q = find('Q')) o.tip = std::clamp(q->code(), 0, 9);
+  (void)w;
+  return true;
+}
+
 bool Interpreter::oneShot(const CodeWord& c) {
   const Word* w = c.word;
   switch (c.info->action) {
     case CodeAction::Dwell: return dwell(w);
+    case CodeAction::DataSetting: return dataSetting(w);
     case CodeAction::ReferenceCheck: {
       if (!hasAxisWords()) return true;
       if (!rapidTo(axisTarget(), w)) return false;

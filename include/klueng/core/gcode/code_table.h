@@ -91,6 +91,7 @@ enum class CodeAction : std::uint8_t {
   MacroCall,
   MacroModalCall,
   MacroModalCancel,
+  DataSetting,  // G10: offsets written by the program
   // group 03 (G-code systems B and C): X and Z absolute or incremental (as U and W)
   Absolute,
   Incremental,
