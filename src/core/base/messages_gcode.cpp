@@ -247,6 +247,11 @@ constexpr MessageText kGcodeMessages[] = {
      "this control ends the block at ';' and runs \"{0}\" after it as the next block; Klueng reads it as a comment: "
      "put it on a line of its own",
      "เครื่องนี้จบบล็อกที่ ';' และทำงาน \"{0}\" ที่อยู่หลังเป็นบล็อกถัดไป แต่ Klueng อ่านเป็นหมายเหตุ: ให้เขียนไว้ในบรรทัดของตัวเอง"},
+    {"W117",
+     "{0}: program number 0, as a CAM post leaves it; the program runs, but the control stores programs from O1 "
+     "up: give it its own number before you send it to the machine's memory",
+     "{0}: หมายเลขโปรแกรม 0 ตามที่โปรแกรม CAM ใส่มา โปรแกรมทำงานได้ แต่เครื่องเก็บโปรแกรมตั้งแต่ O1 ขึ้นไป "
+     "ให้ตั้งหมายเลขของโปรแกรมก่อนส่งเข้าหน่วยความจำของเครื่อง"},
 
     // I1xx: notes
     {"I103",

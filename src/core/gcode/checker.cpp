@@ -304,7 +304,9 @@ class Checker {
       return;
     }
     const long long n = wholeNumber(w);
-    if (n < 1 || n > profile_.programNumberMax)
+    if (n == 0 && !profile_.programNumberZeroIsError)
+      emit(codes::kProgramNumberZero, w, {wordText(w)}, Severity::Warning);
+    else if (n < 1 || n > profile_.programNumberMax)
       emit(codes::kBadSequenceNumber, w, {wordText(w), "O", std::to_string(profile_.programNumberMax)});
     if (!(alone && (firstBlock || profile_.flow.programsInOneFile))) emit(codes::kMisplacedO, w, {wordText(w)});
   }

@@ -203,7 +203,8 @@ INSTANTIATE_TEST_SUITE_P(
         FailCase{"G53 X0.", In::Classic, "E114", 1, 1, 3}, FailCase{"M77", In::Classic, "E115", 1, 1, 3},
         FailCase{"M42", In::Classic, "E115", 1, 1, 3}, FailCase{"N0 G00", In::Both, "E116", 1, 1, 2},
         FailCase{"N10000", In::Classic, "E116", 1, 1, 6}, FailCase{"N1.5", In::Both, "E116", 1, 1, 4},
-        FailCase{"O0", In::Both, "E116", 1, 1, 2}, FailCase{"T0917", In::Classic, "E117", 1, 1, 5},
+        FailCase{"O0", In::Classic, "E116", 1, 1, 2}, FailCase{"O0", In::Fanuc, "W117", 1, 1, 2},
+        FailCase{"T0917", In::Classic, "E117", 1, 1, 5},
         FailCase{"T0000", In::Classic, "E117", 1, 1, 5},  // Fanuc/Haas: the turret stays, the offset is cancelled
         FailCase{"T1317", In::Fanuc, "E118", 1, 1, 5}, FailCase{"T0900", In::Classic, "E117", 1, 1, 5},
         FailCase{"T0017", In::Fanuc, "E118", 1, 1, 5}, FailCase{"T101", In::Classic, "E117", 1, 1, 4},

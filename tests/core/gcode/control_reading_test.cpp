@@ -104,6 +104,13 @@ TEST(Offer, AHaasLocalCallIsAHaasProgramButABuildersMCodeIsNot) {
   EXPECT_FALSE(suggestDialect(parse(conveyor), o, c).has_value());
 }
 
+TEST(ProgramNumber, ACamPostsO0000IsAWarningWhereNoManualSaysTheControlStops) {
+  const std::string mastercam = "%\nO0000(SHAFT - T)\nG21\nG0 T0101\nG97 S1000 M03\nG0 X52. Z2.\nM30\n%\n";
+  EXPECT_THAT(placesOf(readOn(mastercam)), ElementsAre("W117 2:1"));
+  EXPECT_THAT(placesOf(readOn(mastercam, Dialect::Haas)), ElementsAre("W117 2:1"));
+  EXPECT_THAT(placesOf(readOn(mastercam, Dialect::Classic)), ElementsAre("E116 2:1"));
+}
+
 TEST(Leader, TheLabelBeforeTheFirstPercentIsSkippedWithANote) {
   const Program p = parse("法兰盘 6061\n%\nO0815\nG00 X40. Z2.\nM30\n%\n");
   EXPECT_THAT(placesOf(p.lexicalDiagnostics), ElementsAre("I105 1:1"));

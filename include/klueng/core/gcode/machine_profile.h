@@ -156,6 +156,9 @@ struct MachineProfile {
   // Two G codes of one modal group in a block: the control uses the last (true, Fanuc: a warning)
   // or refuses the block (false: E205).
   bool sameGroupLastWins = false;
+  // O0 (a CAM post's O0000 left as it came): refused (E116, the 1999 rules) or a warning (W117, where
+  // no manual says the control stops on it).
+  bool programNumberZeroIsError = false;
   // An S above the machine's maximum under G97: an alarm (the 1999 trainer) or clamped to the maximum
   // with a warning (a Fanuc or Haas clamps it); M03 <-> M04 without M05: an alarm, or reversed.
   bool spindleAboveMaximumIsAlarm = true;
