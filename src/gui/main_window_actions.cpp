@@ -78,6 +78,11 @@ void MainWindow::createActions() {
   connect(operatorPanel_, &OperatorPanel::overridesChanged, runner_, &RunController::setOverrides);
   connect(operatorPanel_, &OperatorPanel::feedHoldRequested, this,
           [this] { operatorPanel_->showFeedHold(runner_->feedHold()); });
+  // One run (issue 40 item 2): the panel shows the runner's run, its RESET stops it as Stop does.
+  operatorPanel_->followRun(runner_);
+  connect(operatorPanel_, &OperatorPanel::resetRequested, this,
+          [this] { action(QStringLiteral("actionStop"))->trigger(); });
+  connect(operatorPanel_, &OperatorPanel::singleBlockChanged, runner_, &RunController::setSingleBlock);
   connect(operatorPanel_, &OperatorPanel::switchesChanged, this, [this](bool optionalStop, bool blockSkip) {
     action(QStringLiteral("actionOptionalStop"))->setChecked(optionalStop);
     action(QStringLiteral("actionBlockSkip"))->setChecked(blockSkip);
