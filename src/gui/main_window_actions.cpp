@@ -377,7 +377,17 @@ void MainWindow::updateMachineMenu() {
 }
 
 void MainWindow::retranslateUi() {
+  // The status bar may show an action's tip (the mouse over its button or menu item, as over
+  // Toggle Language when it is clicked): it says it again in the new language.
+  QAction* tipShown = nullptr;
+  if (const QString shown = statusBar()->currentMessage(); !shown.isEmpty())
+    for (QAction* a : findChildren<QAction*>())
+      if (a->statusTip() == shown) {
+        tipShown = a;
+        break;
+      }
   actions_->retranslate();
+  if (tipShown) statusBar()->showMessage(tipShown->statusTip());
   updateMachineMenu();
   updateUndo_();  // Undo / Redo name the step in the new language
   updateTitle();
