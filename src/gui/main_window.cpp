@@ -87,14 +87,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   runner_->setOptionalStop(settings_->optionalStop());
   runner_->setBlockSkip(settings_->blockSkip());
 
-  // A plain file's stock is inferred with the setup, dialect and units in force.
-  docs_ = new DocumentManager(this, editor_, settings_.get(), [this] {
-    DocumentManager::LoadContext context;
-    context.setup = runner_->machineSetup();
-    context.run.dialect = jobDoc_.dialect();
-    context.run.powerOnUnits = jobDoc_.powerOnUnits();
-    return context;
-  });
+  docs_ = new DocumentManager(this, editor_, settings_.get());
   document_ = docs_->document();
   reports_ = new ReportController(this, [this] {
     ReportController::Source source;
