@@ -317,6 +317,9 @@ void MainWindow::createDocks() {
                                  runner_->timeline(),   currentProgramFile(), document_->filePath()};
   });
   addDockWidget(Qt::RightDockWidgetArea, operatorPanel_);
+  // The right-hand docks (the panel, the 3D view) run down to the status bar, beside the bottom
+  // docks: on a 1366 x 768 screen the panel's keys then fit down to the last row (issue 40 item 4).
+  setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
   operatorPanel_->hide();
   connect(operatorPanel_, &OperatorPanel::offsetsChanged, this, [this](const core::io::OffsetTable& offsets) {
     // The control's offset rows, for the run only: not offset.cfg (power on starts from the

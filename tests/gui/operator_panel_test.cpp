@@ -10,6 +10,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPlainTextEdit>
+#include <QScrollArea>
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -210,6 +211,18 @@ class OperatorPanelTest : public QObject {
     QVERIFY(panel->isVisible() && panel->control());
     QVERIFY(panel->control()->mode() != ctl::Mode::Memory);
     QVERIFY(!panel->showsRun());
+    // At 1366 x 728 (a 768 px screen less its task bar) the last row of keys is in sight, in both
+    // languages: the panel runs down beside the bottom docks (issue 40 item 4).
+    const auto lastRowInSight = [panel] {
+      auto* scroll = panel->findChild<QScrollArea*>();
+      QWidget* last = panel->findChild<QToolButton*>(QStringLiteral("operatorDryRun"));
+      const QPoint bottom = last->mapTo(scroll->viewport(), QPoint(0, last->height()));
+      return last->isVisible() && bottom.y() <= scroll->viewport()->height();
+    };
+    QTRY_VERIFY(lastRowInSight());
+    gui::Language::instance()->setLanguage(QStringLiteral("th"));
+    QTRY_VERIFY(lastRowInSight());
+    gui::Language::instance()->setLanguage(QStringLiteral("en"));
     const auto label = [panel](const char* name) { return panel->findChild<QLabel*>(QLatin1String(name))->text(); };
     QVERIFY2(!label("operatorState").startsWith(QStringLiteral("MEM")), qPrintable(label("operatorState")));
 
