@@ -173,14 +173,18 @@ void OperatorPanel::afterMotion(const ctl::MotionResult& r) {
   refresh();
 }
 
+std::optional<ctl::MeasureInput> OperatorPanel::readOffsetInput(std::optional<ctl::Axis> only) {
+  auto parsed = ctl::parseMeasureInput(input_->text().toStdString());
+  if (parsed && (!only || parsed->axis == *only)) return parsed;
+  showMessage(
+      core::Diagnostic{core::Severity::Error, core::codes::kNotMeasureInput, {}, {input_->text().toStdString()}});
+  return std::nullopt;
+}
+
 void OperatorPanel::pressMeasure() {
   if (!control_) return;
-  const auto parsed = ctl::parseMeasureInput(input_->text().toStdString());
-  if (!parsed) {
-    showMessage(
-        core::Diagnostic{core::Severity::Error, core::codes::kNotMeasureInput, {}, {input_->text().toStdString()}});
-    return;
-  }
+  const auto parsed = readOffsetInput();
+  if (!parsed) return;
   showMessage(control_->measure(offsetRow(), parsed->axis, parsed->value));
   input_->clear();
   emitOffsets();
@@ -200,12 +204,8 @@ void OperatorPanel::setExercise(bool on) {
 
 void OperatorPanel::pressInputWear() {
   if (!control_) return;
-  const auto parsed = ctl::parseMeasureInput(input_->text().toStdString());
-  if (!parsed) {
-    showMessage(
-        core::Diagnostic{core::Severity::Error, core::codes::kNotMeasureInput, {}, {input_->text().toStdString()}});
-    return;
-  }
+  const auto parsed = readOffsetInput();
+  if (!parsed) return;
   ctl::OffsetRow& r = control_->row(offsetRow());
   (parsed->axis == ctl::Axis::X ? r.wear.x : r.wear.z) += parsed->value;
   input_->clear();
@@ -216,12 +216,8 @@ void OperatorPanel::pressInputWear() {
 
 void OperatorPanel::pressMeasureShift() {
   if (!control_) return;
-  const auto parsed = ctl::parseMeasureInput(input_->text().toStdString());
-  if (!parsed || parsed->axis != ctl::Axis::Z) {
-    showMessage(
-        core::Diagnostic{core::Severity::Error, core::codes::kNotMeasureInput, {}, {input_->text().toStdString()}});
-    return;
-  }
+  const auto parsed = readOffsetInput(ctl::Axis::Z);
+  if (!parsed) return;
   showMessage(control_->measureWorkShift(parsed->value));
   input_->clear();
   emitOffsets();

@@ -132,6 +132,8 @@ class OperatorPanel : public QDockWidget {
   void showMessage(const std::optional<core::Diagnostic>& d);
   void showAll(const std::vector<core::Diagnostic>& ds);
   void afterMotion(const core::control::MotionResult& r);
+  // The offset page's input read ("X49.6", "Z0"; only that axis when given), or E608 said.
+  std::optional<core::control::MeasureInput> readOffsetInput(std::optional<core::control::Axis> only = std::nullopt);
   void emitOffsets();
   void emitOverrides();
   void saveTouchOff();
