@@ -5,7 +5,6 @@
 #include "gui/file_save.h"
 #include "klueng/core/diagnostic_codes.h"
 #include "klueng/core/infer/stock_inference.h"
-#include "klueng/core/infer/stock_inference.h"
 
 namespace klueng::gui {
 
@@ -16,8 +15,7 @@ void takeStock(core::io::JobHeader& h, const core::io::JobHeader& from) { h.take
 }  // namespace
 
 LoadedProgram Document::load(const QString& path, const core::io::JobHeader& defaultsForPlain,
-                             const std::optional<core::io::JobHeader>& jobDetails,
-                             const core::machine::MachineSetup& setup, const core::machine::RunOptions& run) {
+                             const std::optional<core::io::JobHeader>& jobDetails) {
   LoadedProgram out;
   out.path = QFileInfo(path).absoluteFilePath();
   // Never another file's stock, project, part or material (issue 28 item 3).
@@ -30,12 +28,10 @@ LoadedProgram Document::load(const QString& path, const core::io::JobHeader& def
     out.ok = true;
     out.file = std::move(*result.value);
     core::io::ProgramFile& f = out.file;
-    std::optional<core::machine::StockInference> inferred;
-    if (f.plainGcode && !jobDetails) {
-      inferred = core::machine::inferStockFromText(f.gcode, f.gcodeFirstLine, setup, run, f.header.calculatorInput);
-      if (inferred->found) inferred->applyTo(f.header);
-    }
-    out.stockNotes = core::machine::stockNotes(f.header, inferred ? &*inferred : nullptr, f.gcode, f.gcodeFirstLine);
+    // A plain file's bar is not inferred here: the first check's Job reads it from the run it
+    // records for the tools (one recording of the program, issue 40 item 2), and the window
+    // takes it then (Document::takeInferredStock).
+    out.stockNotes = core::machine::stockNotes(f.header, nullptr, f.gcode, f.gcodeFirstLine);
     out.gcode = QString::fromStdString(out.file.gcode);
     out.file.gcode.clear();  // the editor owns the text from now on
   }

@@ -44,12 +44,11 @@ class Document : public QObject {
   void restoreHeader(const HeaderState& state);
 
   // Reads and splits a program file; thread-safe (touches no Document).
-  // A plain file's stock (SPEC 2 ext): `jobDetails` (set for this very file),
-  // else inferred from the program with `setup`, else JobHeader's defaults —
-  // never `defaultsForPlain`'s stock, whose text fields (project ...) it keeps.
+  // A plain file's stock (SPEC 2 ext): `jobDetails` (set for this very file), else JobHeader's
+  // defaults until the first check's Job infers it (takeInferredStock) — never
+  // `defaultsForPlain`'s stock, whose text fields (project ...) it keeps.
   static LoadedProgram load(const QString& path, const core::io::JobHeader& defaultsForPlain,
-                            const std::optional<core::io::JobHeader>& jobDetails = std::nullopt,
-                            const core::machine::MachineSetup& setup = {}, const core::machine::RunOptions& run = {});
+                            const std::optional<core::io::JobHeader>& jobDetails = std::nullopt);
 
   // A plain file whose stock was inferred (or defaulted) takes the stock a
   // Job resolved (`resolved`, with its notes) — after the dialect or the units

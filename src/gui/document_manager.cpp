@@ -22,13 +22,11 @@
 
 namespace klueng::gui {
 
-DocumentManager::DocumentManager(QWidget* window, CodeEditor* editor, Settings* settings,
-                                 std::function<LoadContext()> context)
+DocumentManager::DocumentManager(QWidget* window, CodeEditor* editor, Settings* settings)
     : QObject(window),
       window_(window),
       editor_(editor),
       settings_(settings),
-      context_(std::move(context)),
       document_(new Document(this)),
       watcher_(new QFileSystemWatcher(this)),
       diskChangeTimer_(new QTimer(this)),
@@ -193,10 +191,8 @@ void DocumentManager::startLoad(const QString& path, const QString& detailsFor) 
   const std::optional<core::io::JobHeader> details =
       detailsFor.isEmpty() && restoring_ ? std::nullopt
                                          : settings_->jobDetailsFor(detailsFor.isEmpty() ? path : detailsFor);
-  const LoadContext context = context_();
-  loadWatcher_.setFuture(QtConcurrent::run([path, defaults, details, context] {
-    return Document::load(path, defaults, details, context.setup, context.run);
-  }));
+  loadWatcher_.setFuture(
+      QtConcurrent::run([path, defaults, details] { return Document::load(path, defaults, details); }));
   emit busyChanged();
 }
 

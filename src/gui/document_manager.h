@@ -3,8 +3,8 @@
 // does it): new, open (read off the GUI thread, then fed to the editor a few
 // thousand lines per event-loop pass), save / save as (atomic), the unsaved-
 // changes prompt, watching the file on disk and the recent-files menu. It owns
-// no machining: the window tells it how to read a plain file's stock
-// (LoadContext) and hears `replaced`, `loaded` and `saved`.
+// no machining (a plain file's stock comes from the window's first check) and
+// the window hears `replaced`, `loaded` and `saved`.
 #include <QFutureWatcher>
 #include <QObject>
 #include <QString>
@@ -27,13 +27,7 @@ class Settings;
 class DocumentManager : public QObject {
   Q_OBJECT
  public:
-  // What a load needs to infer a plain file's stock: the setup and the run's dialect and units.
-  struct LoadContext {
-    core::machine::MachineSetup setup;
-    core::machine::RunOptions run;
-  };
-
-  DocumentManager(QWidget* window, CodeEditor* editor, Settings* settings, std::function<LoadContext()> context);
+  DocumentManager(QWidget* window, CodeEditor* editor, Settings* settings);
   ~DocumentManager() override;
 
   // The setup the window holds for the document (issue 30 item 2): it is part of what is
@@ -113,7 +107,6 @@ class DocumentManager : public QObject {
   QWidget* window_;
   CodeEditor* editor_;
   Settings* settings_;
-  std::function<LoadContext()> context_;
   Document* document_;
   QFileSystemWatcher* watcher_;
   QTimer* diskChangeTimer_;

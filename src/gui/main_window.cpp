@@ -67,6 +67,23 @@
 namespace klueng::gui {
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::make_unique<Settings>()) {
+  takeSettings();
+  createEditorAndRunner();
+  createDocumentControllers();
+  createCentralArea();
+  createStatusBar();
+  createChecker();
+  createUndoGroup();
+  createDocks();
+  createActions();
+  connectDocuments();
+  connectEditing();
+  connectRunner();
+  startUp();
+}
+
+// The machine, units and switches the user last chose.
+void MainWindow::takeSettings() {
   setObjectName(QStringLiteral("mainWindow"));
   setWindowIcon(QIcon(QStringLiteral(":/icons/klueng.svg")));
   jobDoc_.setDialect(settings_->dialect());
@@ -76,7 +93,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
       core::gcode::powerOnUnitsOf(jobDoc_.dialect(), jobDoc_.powerOnUnits()) == core::gcode::InputUnits::Inch
           ? core::DisplayUnits::Inch
           : core::DisplayUnits::Mm;  // until the first check says the program's
+}
 
+void MainWindow::createEditorAndRunner() {
   editor_ = new CodeEditor(this);
   editor_->setObjectName(QStringLiteral("codeEditor"));
   editor_->setDialect(jobDoc_.dialect());
@@ -86,15 +105,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   runner_->setPowerOnUnits(jobDoc_.powerOnUnits());
   runner_->setOptionalStop(settings_->optionalStop());
   runner_->setBlockSkip(settings_->blockSkip());
+}
 
-  // A plain file's stock is inferred with the setup, dialect and units in force.
-  docs_ = new DocumentManager(this, editor_, settings_.get(), [this] {
-    DocumentManager::LoadContext context;
-    context.setup = runner_->machineSetup();
-    context.run.dialect = jobDoc_.dialect();
-    context.run.powerOnUnits = jobDoc_.powerOnUnits();
-    return context;
-  });
+// The open program, its loading and saving, and the reports and prints made of it.
+void MainWindow::createDocumentControllers() {
+  docs_ = new DocumentManager(this, editor_, settings_.get());
   document_ = docs_->document();
   reports_ = new ReportController(this, [this] {
     ReportController::Source source;
@@ -108,16 +123,31 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
     return source;
   });
   connect(reports_, &ReportController::message, statusBar(), &QStatusBar::showMessage);
+}
 
+// The editor on the left (with its bars), the output screen on the right.
+void MainWindow::createCentralArea() {
   output_ = new OutputView(this);
   output_->setObjectName(QStringLiteral("outputView"));
   output_->setRunController(runner_);
+  QWidget* editorPane = createEditorPane();
+  QWidget* outputPane = createOutputPane();
+  splitter_ = new QSplitter(Qt::Horizontal, this);
+  splitter_->setObjectName(QStringLiteral("mainSplitter"));
+  splitter_->addWidget(editorPane);
+  splitter_->addWidget(outputPane);
+  splitter_->setStretchFactor(0, 2);
+  splitter_->setStretchFactor(1, 3);
+  splitter_->setChildrenCollapsible(false);
+  setCentralWidget(splitter_);
+}
 
+// The editor with the bars above it (alarms, first steps, recovery, the machine offer) and below it.
+QWidget* MainWindow::createEditorPane() {
   // Banner above the editor: alarms and refused runs, in the UI language.
   banner_ = new Banner(this);
-
-  auto* editorPane = new QWidget(this);
-  auto* editorLayout = new QVBoxLayout(editorPane);
+  auto* pane = new QWidget(this);
+  auto* editorLayout = new QVBoxLayout(pane);
   editorLayout->setContentsMargins(0, 0, 0, 0);
   editorLayout->setSpacing(0);
   editorLayout->addWidget(banner_);
@@ -132,17 +162,21 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   explainBar_ = new ExplainBar(runner_, editor_, this);
   editorLayout->addWidget(explainBar_);
   editor_->setLineExplainer([this](int fileLine) { return explainBar_->explainLine(fileLine); });
+  return pane;
+}
 
+// The output screen with the setup strip above it and the lamps below.
+QWidget* MainWindow::createOutputPane() {
   statusLamps_ = new StatusLamps(this);
   statusLamps_->setObjectName(QStringLiteral("statusLamps"));
   statusLamps_->setOptionalStopSwitch(settings_->optionalStop());
-  auto* outputPane = new QWidget(this);
-  auto* outputLayout = new QVBoxLayout(outputPane);
+  auto* pane = new QWidget(this);
+  auto* outputLayout = new QVBoxLayout(pane);
   outputLayout->setContentsMargins(0, 0, 0, 0);
   outputLayout->setSpacing(2);
   // SPEC 2 (ext), issue 26: where the stock came from and, for a plain file, the
   // tools guessed from the program, before a run; a click changes one.
-  setupStrip_ = new SetupStrip(outputPane);
+  setupStrip_ = new SetupStrip(pane);
   connect(setupStrip_, &SetupStrip::stockActivated, this, &MainWindow::showJobDetails);
   connect(setupStrip_, &SetupStrip::stationActivated, this, &MainWindow::showToolSelectFor);
   connect(setupStrip_, &SetupStrip::pointReadingActivated, this, &MainWindow::showJobDetails);
@@ -150,16 +184,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   outputLayout->addWidget(setupStrip_);
   outputLayout->addWidget(output_, 1);
   outputLayout->addWidget(statusLamps_);
+  return pane;
+}
 
-  splitter_ = new QSplitter(Qt::Horizontal, this);
-  splitter_->setObjectName(QStringLiteral("mainSplitter"));
-  splitter_->addWidget(editorPane);
-  splitter_->addWidget(outputPane);
-  splitter_->setStretchFactor(0, 2);
-  splitter_->setStretchFactor(1, 3);
-  splitter_->setChildrenCollapsible(false);
-  setCentralWidget(splitter_);
-
+void MainWindow::createStatusBar() {
   statusFields_ = new StatusFields(this);
   statusFields_->setObjectName(QStringLiteral("statusFields"));
   statusBar()->addWidget(statusFields_, 1);
@@ -173,13 +201,17 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   busyBar_->setTextVisible(false);
   busyBar_->hide();
   menuBar()->setCornerWidget(busyBar_, Qt::TopRightCorner);
+}
 
+void MainWindow::createChecker() {
   checker_ = new CheckController(
       this, [this] { return editor_->toPlainText(); }, [this] { return checkRequest(); });
   connect(checker_, &CheckController::started, this,
           [this] { QTimer::singleShot(300, this, &MainWindow::showBusyIndicator); });
   connect(checker_, &CheckController::finished, this, &MainWindow::onCheckFinished);
+}
 
+void MainWindow::createUndoGroup() {
   // One Edit > Undo for the text and the setup (issue 30 item 2): the editor's undo steps
   // go onto the document's stack as commands (setup_commands.h), beside the setup edits.
   undoGroup_ = new QUndoGroup(this);
@@ -197,10 +229,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
   connect(jobDoc_.undoStack(), &QUndoStack::indexChanged, this, [this, pushingText] {
     if (!*pushingText) editor_->setNewUndoStep(true);
   });
-  createDocks();
-  createActions();
-  connectDocuments();
+}
 
+// The program's edits: the check, the stock drawn, the breakpoints, a diagnostic's line.
+void MainWindow::connectEditing() {
   // Only real edits re-check; the highlighter's re-colouring changes no characters.
   connect(editor_->document(), &QTextDocument::contentsChange, this, [this](int, int removed, int added) {
     if ((removed == 0 && added == 0) || docs_->isFillingEditor()) return;
@@ -235,7 +267,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
     else if (line >= 1 && !document_->isPlainGcode())
       showJobDetails();  // a header line
   });
+}
 
+// What the run shows: the executing line, the words' values, the status bar and lamps, alarms.
+void MainWindow::connectRunner() {
   connect(runner_, &RunController::executingLineChanged, editor_, &CodeEditor::setExecutingLine);
   editor_->setWordValueLookup([this](int fileLine, int column) -> QString {
     const core::machine::Timeline* t = runner_->timeline();
@@ -256,7 +291,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), settings_(std::ma
     else if (!isBusy())
       busyBar_->hide();
   });
+}
 
+// The setup files, the language, the layout, an empty program; unsaved work to recover; first steps.
+void MainWindow::startUp() {
   loadMachineSetup();
   Language::instance()->setLanguage(settings_->language());
   retranslateUi();

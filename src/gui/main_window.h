@@ -169,9 +169,22 @@ class MainWindow : public QMainWindow {
   void changeEvent(QEvent* event) override;
 
  private:
+  // The constructor's steps, in order.
+  void takeSettings();
+  void createEditorAndRunner();
+  void createDocumentControllers();
+  void createCentralArea();
+  QWidget* createEditorPane();
+  QWidget* createOutputPane();
+  void createStatusBar();
+  void createChecker();
+  void createUndoGroup();
   void createActions();
   void createDocks();
   void connectDocuments();
+  void connectEditing();
+  void connectRunner();
+  void startUp();
   void retranslateUi();
   void restoreLayout();
   void saveLayout();

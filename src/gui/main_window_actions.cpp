@@ -78,6 +78,11 @@ void MainWindow::createActions() {
   connect(operatorPanel_, &OperatorPanel::overridesChanged, runner_, &RunController::setOverrides);
   connect(operatorPanel_, &OperatorPanel::feedHoldRequested, this,
           [this] { operatorPanel_->showFeedHold(runner_->feedHold()); });
+  // One run (issue 40 item 2): the panel shows the runner's run, its RESET stops it as Stop does.
+  operatorPanel_->followRun(runner_);
+  connect(operatorPanel_, &OperatorPanel::resetRequested, this,
+          [this] { action(QStringLiteral("actionStop"))->trigger(); });
+  connect(operatorPanel_, &OperatorPanel::singleBlockChanged, runner_, &RunController::setSingleBlock);
   connect(operatorPanel_, &OperatorPanel::switchesChanged, this, [this](bool optionalStop, bool blockSkip) {
     action(QStringLiteral("actionOptionalStop"))->setChecked(optionalStop);
     action(QStringLiteral("actionBlockSkip"))->setChecked(blockSkip);
@@ -312,6 +317,9 @@ void MainWindow::createDocks() {
                                  runner_->timeline(),   currentProgramFile(), document_->filePath()};
   });
   addDockWidget(Qt::RightDockWidgetArea, operatorPanel_);
+  // The right-hand docks (the panel, the 3D view) run down to the status bar, beside the bottom
+  // docks: on a 1366 x 768 screen the panel's keys then fit down to the last row (issue 40 item 4).
+  setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
   operatorPanel_->hide();
   connect(operatorPanel_, &OperatorPanel::offsetsChanged, this, [this](const core::io::OffsetTable& offsets) {
     // The control's offset rows, for the run only: not offset.cfg (power on starts from the
@@ -372,7 +380,17 @@ void MainWindow::updateMachineMenu() {
 }
 
 void MainWindow::retranslateUi() {
+  // The status bar may show an action's tip (the mouse over its button or menu item, as over
+  // Toggle Language when it is clicked): it says it again in the new language.
+  QAction* tipShown = nullptr;
+  if (const QString shown = statusBar()->currentMessage(); !shown.isEmpty())
+    for (QAction* a : findChildren<QAction*>())
+      if (a->statusTip() == shown) {
+        tipShown = a;
+        break;
+      }
   actions_->retranslate();
+  if (tipShown) statusBar()->showMessage(tipShown->statusTip());
   updateMachineMenu();
   updateUndo_();  // Undo / Redo name the step in the new language
   updateTitle();

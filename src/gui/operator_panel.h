@@ -11,6 +11,7 @@
 #include <functional>
 #include <memory>
 
+#include "gui/run_controller.h"
 #include "klueng/core/control/control.h"
 
 class QButtonGroup;
@@ -18,6 +19,8 @@ class QCheckBox;
 class QComboBox;
 class QDial;
 class QDoubleSpinBox;
+class QGridLayout;
+class QHBoxLayout;
 class QLabel;
 class QLineEdit;
 class QPlainTextEdit;
@@ -25,6 +28,7 @@ class QSpinBox;
 class QTableWidget;
 class QTabWidget;
 class QToolButton;
+class QVBoxLayout;
 
 namespace klueng::gui {
 
@@ -54,12 +58,22 @@ class OperatorPanel : public QDockWidget {
   void pressMode(core::control::Mode mode);
   void pressJog(core::control::Axis axis, int direction);  // one jog tick (a held key repeats it)
   void turnHandle(int clicks);
-  void pressMeasure();  // the offset page's input + MEASURE
+  void pressMeasure();        // the offset page's input + MEASURE
+  void pressInputWear();      // the input + +INPUT: added to the selected row's wear
+  void pressMeasureShift();   // "Z0" + SHIFT MEASURE: the work shift Z
+  void pressMicrometer();     // the bar's diameter at the micrometer's Z
+  void setExercise(bool on);  // the exercise: every geometry offset unknown (off: power on again)
   void pressCycleStart();
   void pressReset();
   void pressFeedHold();
   // What FEED HOLD did to the run: `held` = a run was moving and now stands.
   void showFeedHold(bool held);
+  // The one run (issue 40 item 2): whichever key started it (Go on the tool bar, or MEM +
+  // CYCLE START here), the panel is the machine that runs it. While a run is under way (not
+  // reset) and the mode is MEM, the mode, the positions, the spindle and the feed on the panel
+  // are the run's; RESET stops it (resetRequested) and SINGLE BLOCK acts on it.
+  void followRun(const RunController* runner);
+  bool showsRun() const;
   QLineEdit* offsetInput() const { return input_; }
   QPlainTextEdit* mdiText() const { return mdi_; }
   QLabel* messageLabel() const { return message_; }
@@ -80,25 +94,55 @@ class OperatorPanel : public QDockWidget {
   void overridesChanged(const klueng::core::control::Overrides& overrides, bool dryRun, double dryRunFeed);
   // FEED HOLD pressed: the run should stop its axes (showFeedHold says whether one was moving).
   void feedHoldRequested();
+  // RESET pressed while a run is under way: the run stops (as the tool bar's Stop).
+  void resetRequested();
+  // The SINGLE BLOCK switch: the run stops after each block.
+  void singleBlockChanged(bool on);
 
  protected:
   void changeEvent(QEvent* event) override;
   void showEvent(QShowEvent* event) override;
 
  private:
+  // The panel's face (operator_panel_build.cpp), in the order build() lays it out.
   void build();
+  void addTitleRow(QVBoxLayout* v);
+  void addPositionPage(QVBoxLayout* v);
+  void addMessageLine(QVBoxLayout* v);
+  QWidget* buildKeysPage();
+  void addModeKeys(QGridLayout* g);
+  void addJogKeys(QGridLayout* g, int row);
+  void addHandwheel(QGridLayout* g, int row);
+  void addSpindleKeys(QGridLayout* g, int row);
+  void addSpindleSpeedAndCoolant(QGridLayout* g, int row);
+  void addOverrideKnobs(QGridLayout* g, int row);
+  void addSwitches(QGridLayout* g, int row);
+  QHBoxLayout* buildCycleKeys();
+  QWidget* buildOffsetPage();
+  QWidget* buildMdiPage();
+  void addShortcuts();
+  void putInScrollArea(QWidget* body);
   void applyLayoutLabels();
-  void refresh();          // every page from the model
+  void refresh();  // every page from the model
+  void showPositions();
+  void showState();
+  void showOffsetRows();
+  void followRunState(RunState state);
   void updateCycleTime();  // the job's cycle time at the overrides (the program may be long: not on every key)
   void showMessage(const std::optional<core::Diagnostic>& d);
   void showAll(const std::vector<core::Diagnostic>& ds);
   void afterMotion(const core::control::MotionResult& r);
+  // The offset page's input read ("X49.6", "Z0"; only that axis when given), or E608 said.
+  std::optional<core::control::MeasureInput> readOffsetInput(std::optional<core::control::Axis> only = std::nullopt);
   void emitOffsets();
   void emitOverrides();
   void saveTouchOff();
   QString text(const core::Diagnostic& d) const;
 
   std::function<Source()> source_;
+  const RunController* runner_ = nullptr;
+  bool runUnderWay_ = false;  // the runner's run is not reset: MEM shows it
+  RunStatus run_;             // the run's last status
   std::unique_ptr<core::control::Control> control_;
   const core::machine::Timeline* program_ = nullptr;
   core::io::OffsetTable fileOffsets_;  // offset.cfg as first read: the wear at power-on

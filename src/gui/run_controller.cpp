@@ -153,6 +153,14 @@ bool RunController::feedHold() {
   return true;
 }
 
+void RunController::setSingleBlock(bool on) {
+  singleBlock_ = on;
+  if (!on || state_ != RunState::Running || busy_ || !timeline_ || !cut_) return;
+  // Switched on while the program runs: it stops at the end of the block it is in.
+  stepKind_ = Pending::Step;
+  startRun(true);
+}
+
 // A changed input applies to the next run; a run in progress keeps its timeline.
 void RunController::invalidate() {
   stale_ = true;
@@ -204,6 +212,11 @@ RunStatus RunController::status() const {
   s.toolTimes = toolTimes_;
   const machine::Pose pose = machine::poseAt(*timeline_, snapshotIndex_, time_);
   if (!timeline_->moves.empty()) s.position = pose.position;
+  s.moveEnd = s.position;
+  if (const int i = timeline_->moveAt(time_); i >= 0) {
+    const machine::Move& m = timeline_->moves[static_cast<std::size_t>(i)];
+    if (time_ >= m.tStart && time_ < m.tEnd) s.moveEnd = m.path.end;
+  }
   if (pose.hasState) {
     s.machine = pose.machine;
     s.programmedFeed = pose.programmedFeed;
@@ -225,7 +238,7 @@ RunStatus RunController::status() const {
 
 void RunController::go() {
   held_ = holding_ = false;  // CYCLE START after a FEED HOLD resumes
-  prepareAndThen(Pending::Go);
+  prepareAndThen(singleBlock_ ? Pending::Step : Pending::Go);
 }
 
 void RunController::step() {

@@ -72,6 +72,7 @@ struct RunStatus {
   std::vector<core::machine::ToolTime> toolTimes;  // the cycle time per tool
   int line = 0;                                    // file line of the block (0 = none)
   bool feedHold = false;                           // FEED HOLD: the axes stand, the spindle turns on
+  core::Vec2 moveEnd = core::Vec2::Zero();         // where the move under way ends (= position between moves)
 };
 
 class RunController : public QObject {
@@ -115,6 +116,10 @@ class RunController : public QObject {
   // go() (CYCLE START) resumes. Returns false when no run was moving.
   bool feedHold();
   bool isFeedHeld() const { return held_; }
+  // SINGLE BLOCK (the operator panel's switch): on during a run, the run stops at the end of the
+  // block it is in; while on, go() runs one block at a time.
+  void setSingleBlock(bool on);
+  bool singleBlock() const { return singleBlock_; }
   static constexpr double kFeedHoldSeconds = 0.2;
   // One frame of the playback clock: `seconds` of machine time at the overrides (the frame
   // timer passes wall time × speed; tests drive it directly).
@@ -215,6 +220,7 @@ class RunController : public QObject {
   bool holding_ = false;                // FEED HOLD pressed: decelerating
   double holdLeft_ = 0.0;               // machine seconds of the deceleration left
   bool held_ = false;                   // FEED HOLD: stopped, CYCLE START resumes
+  bool singleBlock_ = false;            // SINGLE BLOCK: go() runs one block
   bool stale_ = true;
 
   std::shared_ptr<const core::machine::Timeline> timeline_;

@@ -13,6 +13,7 @@
 #include <QLineEdit>
 #include <QTextBrowser>
 #include "gui/main_window.h"
+#include "gui/operator_panel.h"
 #include "gui/part3d_view.h"
 #include "gui/part_designer.h"
 #include "gui/part_panel.h"
@@ -109,6 +110,13 @@ int main(int argc, char** argv) {
     w.view3dDock()->show();
     w.resizeDocks({w.view3dDock()}, {560}, Qt::Horizontal);
   }
+  // "panel:N": the Operator panel shown, N blocks stepped from the tool bar (the window, then the
+  // panel alone as OUT-panel.png): the panel follows the run, its last row in sight.
+  const bool panel = steps.startsWith(QStringLiteral("panel:"));
+  if (panel) {
+    steps = steps.mid(6);
+    w.action(QStringLiteral("operatorPanelDock"))->trigger();
+  }
   if (steps == QStringLiteral("end")) {  // run to the program's end
     w.action(QStringLiteral("actionGo"))->trigger();
     if (!QTest::qWaitFor([&w] { return w.runController()->state() == RunState::Finished; }, 60000)) return 1;
@@ -126,6 +134,11 @@ int main(int argc, char** argv) {
   QTest::qWait(300);
   std::printf("status fields: %d px wanted, %d px shown\n", w.statusFields()->sizeHint().width(),
               w.statusFields()->width());
+  if (panel) {
+    QString out = QString::fromLocal8Bit(argv[3]);
+    out.insert(out.lastIndexOf(QLatin1Char('.')), QStringLiteral("-panel"));
+    if (!w.operatorPanel()->grab().save(out)) return 1;
+  }
   if (view3d) {
     QString out = QString::fromLocal8Bit(argv[3]);
     out.insert(out.lastIndexOf(QLatin1Char('.')), QStringLiteral("-3d"));

@@ -332,9 +332,14 @@ class MainWindowTest : public QObject {
     QVERIFY(file);
     QCOMPARE(file->title(), QStringLiteral("&File"));
     QCOMPARE(w.action(QStringLiteral("actionGo"))->text(), QStringLiteral("&Go"));
-    w.action(QStringLiteral("actionToggleLanguage"))->trigger();
+    // The mouse on Toggle Language: its tip in the status bar, then in Thai after the click (issue 40 item 4).
+    QAction* toggle = w.action(QStringLiteral("actionToggleLanguage"));
+    toggle->showStatusText(&w);
+    QCOMPARE(w.statusBar()->currentMessage(), QStringLiteral("Switch between Thai and English"));
+    toggle->trigger();
     QVERIFY(Language::instance()->isThai());
     QTRY_COMPARE(file->title(), QStringLiteral("แฟ้ม (&F)"));
+    QCOMPARE(w.statusBar()->currentMessage(), QStringLiteral("สลับระหว่างภาษาไทยและภาษาอังกฤษ"));
     QCOMPARE(w.action(QStringLiteral("actionGo"))->text(), QStringLiteral("เริ่มทำงาน (&G)"));
     QCOMPARE(w.action(QStringLiteral("actionStep"))->text(), QStringLiteral("ทำงานทีละบรรทัด (&S)"));
     QCOMPARE(w.menuBar()->findChild<QMenu*>(QStringLiteral("menuToolSetting"))->title(),
@@ -348,8 +353,10 @@ class MainWindowTest : public QObject {
     QCOMPARE(w.diagnosticsPanel()->model()->index(0, DiagnosticsModel::MessageColumn).data().toString(),
              QString::fromStdString(core::formatMessage(d, core::Lang::Th)));
     // And back.
-    w.action(QStringLiteral("actionToggleLanguage"))->trigger();
+    toggle->showStatusText(&w);
+    toggle->trigger();
     QTRY_COMPARE(file->title(), QStringLiteral("&File"));
+    QCOMPARE(w.statusBar()->currentMessage(), QStringLiteral("Switch between Thai and English"));
     QCOMPARE(Settings().language(), QStringLiteral("en"));
   }
 

@@ -10,6 +10,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPlainTextEdit>
+#include <QScrollArea>
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -196,6 +197,111 @@ class OperatorPanelTest : public QObject {
     QCOMPARE(panel->findChild<QToolButton*>(QStringLiteral("operatorCycleStart"))->text(),
              QStringLiteral("CYCLE START"));
     gui::Language::instance()->setLanguage(QStringLiteral("en"));
+  }
+
+  // Issue 40 item 2: one run, two faces. Go on the tool bar runs the program on the panel's
+  // machine: MEM, the moving positions, the spindle; FEED HOLD holds it, RESET ends it, SINGLE
+  // BLOCK stops it after the block it is in; the tool bar's Pause acts on a run the panel started.
+  void theToolBarsRunIsThePanelsRun() {
+    gui::MainWindow w;
+    QVERIFY(klueng::test::showSample(w));
+    auto* runner = w.findChild<gui::RunController*>();
+    gui::OperatorPanel* panel = w.operatorPanel();
+    w.action(QStringLiteral("operatorPanelDock"))->trigger();
+    QVERIFY(panel->isVisible() && panel->control());
+    QVERIFY(panel->control()->mode() != ctl::Mode::Memory);
+    QVERIFY(!panel->showsRun());
+    // At 1366 x 728 (a 768 px screen less its task bar) the last row of keys is in sight, in both
+    // languages: the panel runs down beside the bottom docks (issue 40 item 4).
+    const auto lastRowInSight = [panel] {
+      auto* scroll = panel->findChild<QScrollArea*>();
+      QWidget* last = panel->findChild<QToolButton*>(QStringLiteral("operatorDryRun"));
+      const QPoint bottom = last->mapTo(scroll->viewport(), QPoint(0, last->height()));
+      return last->isVisible() && bottom.y() <= scroll->viewport()->height();
+    };
+    QTRY_VERIFY(lastRowInSight());
+    gui::Language::instance()->setLanguage(QStringLiteral("th"));
+    QTRY_VERIFY(lastRowInSight());
+    gui::Language::instance()->setLanguage(QStringLiteral("en"));
+    const auto label = [panel](const char* name) { return panel->findChild<QLabel*>(QLatin1String(name))->text(); };
+    QVERIFY2(!label("operatorState").startsWith(QStringLiteral("MEM")), qPrintable(label("operatorState")));
+
+    // The frame timer barely moves the run: the test drives its clock.
+    runner->setSpeed(1e-6);
+    w.action(QStringLiteral("actionGo"))->trigger();
+    QVERIFY(QTest::qWaitFor([runner] { return runner->state() == gui::RunState::Running; }, 30000));
+    runner->setMaxStepMm(0.0);  // no slow-motion pixel limit: each step of the clock is whole
+    QCOMPARE(panel->control()->mode(), ctl::Mode::Memory);
+    QVERIFY(panel->findChild<QToolButton*>(QStringLiteral("operatorModeMem"))->isChecked());
+    QVERIFY(panel->showsRun());
+    // On until the spindle turns and the tool moves.
+    for (int i = 0; i < 20000 && (runner->status().rpm <= 0.0 || runner->status().feedMmPerMin <= 0.0); ++i)
+      runner->advancePlayback(0.25);
+    QVERIFY(runner->status().rpm > 0.0);
+    const QString state = label("operatorState");
+    QVERIFY2(state.startsWith(QStringLiteral("MEM")), qPrintable(state));
+    QVERIFY2(state.contains(QStringLiteral("S%1 CW").arg(runner->status().rpm, 0, 'f', 0)), qPrintable(state));
+    QVERIFY2(!state.contains(QStringLiteral("S0 STOP")), qPrintable(state));
+    // The work position is the run's controlled point (X a diameter); the machine and
+    // distance-to-go columns move with it.
+    const auto shown = [&] {
+      QStringList l;
+      for (const char* axis : {"X", "Z"})
+        for (int c = 0; c < 4; ++c)
+          l << panel->findChild<QLabel*>(QStringLiteral("operatorPos%1%2").arg(QLatin1String(axis)).arg(c))->text();
+      return l;
+    };
+    const core::Vec2 p = runner->status().position;
+    QCOMPARE(label("operatorPosX0"), QString::number(2.0 * p.y(), 'f', 3));
+    QCOMPARE(label("operatorPosZ0"), QString::number(p.x(), 'f', 3));
+    const QStringList before = shown();
+    runner->advancePlayback(0.5);
+    const QStringList after = shown();
+    QVERIFY(before[0] != after[0] || before[4] != after[4]);                              // work X or Z
+    QVERIFY(before[2] != after[2] || before[6] != after[6]);                              // machine X or Z
+    QVERIFY(after[3] != QStringLiteral("0.000") || after[7] != QStringLiteral("0.000"));  // distance to go
+
+    // FEED HOLD on the panel: the axes decelerate and stand, the run waits.
+    QTest::mouseClick(panel->findChild<QToolButton*>(QStringLiteral("operatorFeedHold")), Qt::LeftButton);
+    for (int i = 0; i < 20 && runner->state() == gui::RunState::Running; ++i) runner->advancePlayback(0.05);
+    QCOMPARE(runner->state(), gui::RunState::Paused);
+    QVERIFY(runner->isFeedHeld());
+    QVERIFY2(label("operatorState").contains(QStringLiteral("HOLD")), qPrintable(label("operatorState")));
+    const QStringList held = shown();
+    runner->advancePlayback(1.0);
+    QCOMPARE(shown(), held);
+    // RESET on the panel ends the run; the panel is its own machine again.
+    QTest::mouseClick(panel->findChild<QToolButton*>(QStringLiteral("operatorReset")), Qt::LeftButton);
+    QCOMPARE(runner->state(), gui::RunState::Idle);
+    QVERIFY(!panel->showsRun());
+    QCOMPARE(label("operatorPosX2"), QString::number(panel->control()->machinePosition().x, 'f', 3));
+
+    // SINGLE BLOCK switched on during a run: it stops at the end of the block it is in.
+    w.action(QStringLiteral("actionGo"))->trigger();
+    QVERIFY(QTest::qWaitFor([runner] { return runner->state() == gui::RunState::Running; }, 30000));
+    runner->advancePlayback(1.0);
+    QTest::mouseClick(panel->findChild<QToolButton*>(QStringLiteral("operatorSingleBlock")), Qt::LeftButton);
+    QCOMPARE(runner->state(), gui::RunState::Stepping);
+    for (int i = 0; i < 20000 && runner->state() == gui::RunState::Stepping; ++i) runner->advancePlayback(0.05);
+    QCOMPARE(runner->state(), gui::RunState::Paused);
+    QTest::mouseClick(panel->findChild<QToolButton*>(QStringLiteral("operatorSingleBlock")), Qt::LeftButton);
+    QVERIFY(!runner->singleBlock());
+    w.action(QStringLiteral("actionStop"))->trigger();
+    // A run MEM + CYCLE START started (after the zero return): the tool bar's Pause and Stop act on it.
+    panel->pressMode(ctl::Mode::ZeroReturn);
+    panel->pressJog(ctl::Axis::X, 1);
+    panel->pressJog(ctl::Axis::Z, 1);
+    panel->pressMode(ctl::Mode::Memory);
+    QSignalSpy started(panel, &gui::OperatorPanel::cycleStartRequested);
+    QTest::mouseClick(panel->findChild<QToolButton*>(QStringLiteral("operatorCycleStart")), Qt::LeftButton);
+    QCOMPARE(started.count(), 1);
+    QVERIFY(QTest::qWaitFor([runner] { return runner->state() == gui::RunState::Running; }, 30000));
+    w.action(QStringLiteral("actionPause"))->trigger();
+    QCOMPARE(runner->state(), gui::RunState::Paused);
+    QVERIFY(panel->showsRun());
+    w.action(QStringLiteral("actionStop"))->trigger();
+    QCOMPARE(runner->state(), gui::RunState::Idle);
+    QVERIFY(!panel->showsRun());
   }
 
   void haasLayout() {
