@@ -92,6 +92,12 @@ struct MachineConfig {
   double accelX = 0.0;
   double accelZ = 0.0;
   double maxSpindleRpm = 3000.0;
+  // What the spindle can give and the chuck allows (issue 39, cutting data): the motor's
+  // rating in kW, its largest torque in N*m, the chuck's highest permitted rpm. 0 = not
+  // known (the machine file or machine.cfg does not say): that check is not made.
+  double spindlePowerKw = 0.0;
+  double spindleTorqueNm = 0.0;
+  double chuckMaxRpm = 0.0;
   double referenceX = 0.0;  // diameter, work coordinates at start
   double referenceZ = 300.0;
   double startX = 0.0;  // tool start position (diameter)
