@@ -784,4 +784,23 @@
         <translation>คลิกเพื่อเปลี่ยนด้านของมีดตัดสำหรับไฟล์นี้ (รายละเอียดงาน)</translation>
     </message>
 </context>
+<context>
+    <name>klueng::gui::CuttingPlot</name>
+    <message>
+        <source>power (kW, max %1)</source>
+        <translation>กำลังตัด (กิโลวัตต์ สูงสุด %1)</translation>
+    </message>
+    <message>
+        <source>, spindle %1 kW</source>
+        <translation>, เพลาจับงาน %1 กิโลวัตต์</translation>
+    </message>
+    <message>
+        <source>Vc (ft/min, max %1)</source>
+        <translation>ความเร็วตัด Vc (ฟุต/นาที สูงสุด %1)</translation>
+    </message>
+    <message>
+        <source>Vc (m/min, max %1)</source>
+        <translation>ความเร็วตัด Vc (ม./นาที สูงสุด %1)</translation>
+    </message>
+</context>
 </TS>
