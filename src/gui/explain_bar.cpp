@@ -93,9 +93,12 @@ QString ExplainBar::explainLine(int fileLine) const {
       if (s.file == 0 && s.line == fileLine) after = &s;
     }
   }
-  return QString::fromStdString(core::machine::explainLineText(text, fileLine, after, editor_->dialect(),
-                                                               Language::coreLang(),
-                                                               !runner_->machineSetup().machine.calculatorInput));
+  QString what = QString::fromStdString(
+      core::machine::explainLineText(text, fileLine, after, editor_->dialect(), Language::coreLang(),
+                                     !runner_->machineSetup().machine.calculatorInput));
+  if (const QString cut = cuttingDataLine(fileLine); !what.isEmpty() && !cut.isEmpty())
+    what += QStringLiteral("\n") + cut;
+  return what;
 }
 
 void ExplainBar::refresh() {
