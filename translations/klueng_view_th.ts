@@ -585,6 +585,26 @@
         <source>(none)</source>
         <translation>(ไม่มี)</translation>
     </message>
+    <message>
+        <source>Tool material:</source>
+        <translation>วัสดุมีดตัด:</translation>
+    </message>
+    <message>
+        <source>(the library tool&apos;s, else not known)</source>
+        <translation>(ตามมีดในคลัง ถ้าไม่มีถือว่าไม่ทราบ)</translation>
+    </message>
+    <message>
+        <source>HSS (high-speed steel)</source>
+        <translation>HSS (เหล็กกล้ารอบสูง ไฮสปีด)</translation>
+    </message>
+    <message>
+        <source>Carbide</source>
+        <translation>คาร์ไบด์</translation>
+    </message>
+    <message>
+        <source>Coated carbide</source>
+        <translation>คาร์ไบด์เคลือบผิว</translation>
+    </message>
 </context>
 <context>
     <name>klueng::gui::PartPanel</name>

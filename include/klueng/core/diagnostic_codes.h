@@ -104,6 +104,7 @@ inline constexpr const char* kVariableNotKept = "F171";
 inline constexpr const char* kLibraryBadOption = "F172";    // {0} file, {1} the word (library.cfg's 10th field)
 inline constexpr const char* kMaterialLineFields = "F173";  // {0} file, {1} fields found (materials.cfg)
 inline constexpr const char* kMaterialBadNumber = "F174";   // {0} file, {1} what, {2} the text
+inline constexpr const char* kToolLineBadOption = "F175";   // {0} file, {1} station, {2} the option (tools.cfg)
 // Part designs and the cutting-speed table (design; texts in messages_design.cpp)
 inline constexpr const char* kPartFileNotJson = "F180";   // {0} file, {1} why
 inline constexpr const char* kPartFieldMissing = "F181";  // {0} file, {1} field

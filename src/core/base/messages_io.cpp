@@ -206,6 +206,11 @@ constexpr MessageText kIoMessages[] = {
      "kc1.1 | mc | source) but has {1}",
      "{0}: บรรทัดของวัสดุต้องมี 9 ช่องคั่นด้วย '|' (รหัส | ชื่อ | ชื่ออังกฤษ | ชื่อไทย | Vc มีดไฮสปีด | Vc มีดคาร์ไบด์ | "
      "kc1.1 | mc | แหล่งที่มา) แต่มี {1} ช่อง"},
+    {codes::kToolLineBadOption,
+     "{0}: tool {1}: '{2}' is not a station option (after '|': material=hss, material=carbide or "
+     "material=coated-carbide)",
+     "{0}: มีดตัด {1}: '{2}' ไม่ใช่ตัวเลือกของสถานีมีด (หลัง '|': material=hss, material=carbide หรือ "
+     "material=coated-carbide)"},
     {codes::kMaterialBadNumber, "{0}: {1} must be a number of 0 or more (a range: MIN-MAX), not '{2}'",
      "{0}: {1} ต้องเป็นตัวเลขตั้งแต่ 0 ขึ้นไป (ช่วง: ต่ำสุด-สูงสุด) ไม่ใช่ '{2}'"},
 

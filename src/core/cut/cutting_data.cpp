@@ -205,8 +205,10 @@ CuttingDataOptions cuttingDataOptions(const std::string& headerMaterial, const i
     const std::size_t k = static_cast<std::size_t>(tool - 1);
     const std::string id = tools.libraryId(tool);
     const io::LibraryTool* t = id.empty() ? nullptr : library->find(id);
+    // The station's own word (tools.cfg, Tool Select) wins over the library's.
+    if (!parseToolMaterialId(tools.material[k], o.toolMaterial[k]) && t)
+      parseToolMaterialId(t->material, o.toolMaterial[k]);
     if (!t) continue;
-    parseToolMaterialId(t->material, o.toolMaterial[k]);
     o.edgeLength[k] = t->edge;
     o.noseRadius[k] = t->noseRadius;
     if (t->kind == io::ToolKind::Drill || t->kind == io::ToolKind::CentreDrill) o.drillDiameter[k] = t->size;

@@ -130,7 +130,20 @@ ReadResult<ToolTable> parseToolTable(std::string_view text, const std::string& f
   table.stations = stations;
   for (int tool = 1; tool <= stations && static_cast<std::size_t>(tool) <= lines.size(); ++tool) {
     const std::string_view line = lines[static_cast<std::size_t>(tool - 1)];
-    const std::string_view name = detail::trim(line);
+    std::string_view name = detail::trim(line);
+    // ` | material=...` after the bitmap or library tool (issue 39).
+    if (const std::size_t bar = name.find('|'); bar != std::string_view::npos) {
+      const std::string_view option = detail::trim(name.substr(bar + 1));
+      name = detail::trim(name.substr(0, bar));
+      const std::string_view value = option.rfind("material=", 0) == 0 ? option.substr(9) : std::string_view();
+      if (value == "hss" || value == "carbide" || value == "coated-carbide") {
+        table.material[static_cast<std::size_t>(tool - 1)] = std::string(value);
+      } else {
+        diags.push_back(makeDiagnostic(Severity::Error, codes::kToolLineBadOption, tool,
+                                       detail::columnOf(line, option.empty() ? name : option), utf8Length(option),
+                                       {fileName, twoDigits(tool), std::string(option)}));
+      }
+    }
     if (name.empty()) continue;  // a tool without a bitmap
     if (name.rfind(kLibraryPrefix, 0) == 0) {
       const std::string_view id = detail::trim(name.substr(kLibraryPrefix.size()));
@@ -211,7 +224,12 @@ std::string formatToolTable(const ToolTable& t) {
   for (int i = 0; i < kMaxStations; ++i)
     if (!t.bitmap[static_cast<std::size_t>(i)].empty()) last = std::max(last, i + 1);
   std::string out;
-  for (int i = 0; i < last; ++i) out += oneConfigLine(t.bitmap[static_cast<std::size_t>(i)]) + '\n';
+  for (int i = 0; i < last; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    out += oneConfigLine(t.bitmap[k]);
+    if (!t.material[k].empty() && !t.bitmap[k].empty()) out += " | material=" + oneConfigLine(t.material[k]);
+    out += '\n';
+  }
   return out;
 }
 

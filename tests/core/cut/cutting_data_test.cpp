@@ -113,6 +113,23 @@ TEST(CuttingDataTest, SteelWithHssIsTooFastOnItsBlock) {
   EXPECT_NE(formatMessage(w, Lang::Th).find("ไฮสปีด"), std::string::npos);
 }
 
+// tools.cfg's ` | material=hss` (Tool Select) wins over the library tool's coated carbide.
+TEST(CuttingDataTest, TheStationsToolMaterialWinsOverTheLibrarys) {
+  testing::Run run = runProgramText(kSteelTurn);
+  const io::ToolLibrary& library = io::shippedToolLibrary();
+  const io::LibraryTool* insert = library.find("cnmg-80-r08");
+  ASSERT_NE(insert, nullptr);
+  run.setup.tools.setLibraryTool(1, insert->id, library.bitmapPath(*insert), insert->pixelsPerMm);
+  EXPECT_EQ(cuttingDataOptions("S45C", run.setup.tools, run.setup.machine, shippedMaterials()).toolMaterial[0],
+            ToolMaterial::CoatedCarbide);
+  run.setup.tools.material[0] = "hss";
+  EXPECT_EQ(cuttingDataOptions("S45C", run.setup.tools, run.setup.machine, shippedMaterials()).toolMaterial[0],
+            ToolMaterial::Hss);
+  // A plain bitmap says nothing of its material until its line does.
+  EXPECT_EQ(cuttingDataOptions("S45C", io::ToolTable{}, run.setup.machine, shippedMaterials()).toolMaterial[0],
+            ToolMaterial::Unknown);
+}
+
 TEST(CuttingDataTest, MachineLimitsWarnOnTheCuttingBlock) {
   const CdRun r = cdRun(kSteelTurn, [](CuttingDataOptions& o) {
     o.spindlePowerKw = 1.5;  // the cut needs 2.06 kW

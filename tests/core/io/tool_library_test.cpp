@@ -230,6 +230,25 @@ TEST(Library, AMissingBitmapIsF169OnItsLine) {
   std::filesystem::remove_all(dir);
 }
 
+// Issue 39: a station's line may say its tool's cutting material after ` | `; it is written back.
+TEST(Library, ToolsCfgLineSaysTheToolMaterial) {
+  const auto r =
+      parseToolTable("a.bmp | material=hss\n\nlibrary:cnmg-80-r04 | material=carbide\nb.bmp\n\n\n\n\n", "/d", "t.cfg");
+  ASSERT_TRUE(r.ok()) << codes(r.diagnostics);
+  EXPECT_EQ(r.value->bitmap[0], "a.bmp");
+  EXPECT_EQ(r.value->material[0], "hss");
+  EXPECT_EQ(r.value->libraryId(3), "cnmg-80-r04");
+  EXPECT_EQ(r.value->material[2], "carbide");
+  EXPECT_EQ(r.value->material[3], "");
+  EXPECT_EQ(formatToolTable(*r.value),
+            "a.bmp | material=hss\n\nlibrary:cnmg-80-r04 | material=carbide\nb.bmp\n\n\n\n\n");
+  const auto bad = parseToolTable("a.bmp | material=diamond\n\n\n\n\n\n\n\n", "/d", "t.cfg");
+  ASSERT_EQ(bad.diagnostics.size(), 1u) << codes(bad.diagnostics);
+  EXPECT_EQ(bad.diagnostics[0].code, "F175");
+  EXPECT_EQ(bad.diagnostics[0].range, (SourceRange{1, 9, 16}));
+  EXPECT_EQ(bad.value->bitmap[0], "a.bmp");  // the tool itself is kept
+}
+
 TEST(Library, ToolsCfgNamesALibraryTool) {
   const auto r = parseToolTable("a.bmp\n\nlibrary:threading-60\n\n\n\n\n\n\n\n\nlibrary: parting-3mm\n", "/d", "t.cfg");
   ASSERT_TRUE(r.ok()) << codes(r.diagnostics);

@@ -38,6 +38,10 @@ struct ToolTable {
   // its resolution, nose radius and tip. Plain bitmaps: empty / 2 px/mm.
   std::array<std::string, kMaxStations> libraryPath;
   std::array<double, kMaxStations> pixelsPerMm = filledPixelsPerMm();
+  // The tool's cutting material as the line says it, after ` | `: `hss`, `carbide`,
+  // `coated-carbide` (`01-turning.bmp | material=hss`); empty = the library tool's, else not
+  // known (issue 39: the cutting speeds are judged by it). Tool Select edits it.
+  std::array<std::string, kMaxStations> material;
   int stations = kDefaultTurretStations;  // turret size the table was read for
   std::string folder;                     // folder of tools.cfg, to resolve relative names
   // Bitmaps that exist but do not decode (machine/setup_files.h sets them): no tool there.
