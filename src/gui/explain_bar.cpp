@@ -43,6 +43,10 @@ void ExplainBar::measureRun() {
   if (!timeline || timeline == dataFor_.lock() || watcher_.isRunning()) return;
   dataFor_ = timeline;
   data_.reset();
+  emit cuttingDataReady(nullptr, 0.0, 0.0, false);  // the last run's plot goes
+  // A very long run's numbers (about 190 bytes a cut) would cost the window more memory than the
+  // run itself (issue 29 item 8's goal): klueng-cli simulate --cutting-data measures those.
+  if (timeline->moves.size() > kCuttingDataMoveLimit) return;
   const core::io::JobHeader header = runner_->jobHeader();
   const core::machine::MachineSetup setup = runner_->cutSetup();
   core::cut::CuttingDataOptions options =

@@ -29,7 +29,9 @@ class ExplainBar : public QLabel {
   QString explainLine(int fileLine) const;
   // The cutting-data line of a block (empty when it cuts nothing or the data is not ready).
   QString cuttingDataLine(int fileLine) const;
-  // The run's cutting data (nullptr until computed for the run's timeline).
+  // The run's cutting data (nullptr until computed for the run's timeline; never for a run of
+  // more than kCuttingDataMoveLimit moves).
+  static constexpr std::size_t kCuttingDataMoveLimit = 250000;
   const core::cut::CuttingData* cuttingData() const { return data_.get(); }
 
  signals:
