@@ -1676,5 +1676,52 @@
         <source>Touch-off</source>
         <translation>การตั้งศูนย์มีด</translation>
     </message>
+    <message>
+        <source>Cutting data</source>
+        <translation>ข้อมูลการตัด</translation>
+    </message>
+    <message>
+        <source>%1 line %2</source>
+        <translation>%1 บรรทัด %2</translation>
+    </message>
+    <message>
+        <source>line %1: %2</source>
+        <translation>บรรทัด %1: %2</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>ไม่มี</translation>
+    </message>
+</context>
+<context>
+    <name>klueng::gui::ExplainBar</name>
+    <message>
+        <source>in</source>
+        <translation>นิ้ว</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>มม.</translation>
+    </message>
+    <message>
+        <source>ft/min</source>
+        <translation>ฟุต/นาที</translation>
+    </message>
+    <message>
+        <source>m/min</source>
+        <translation>ม./นาที</translation>
+    </message>
+    <message>
+        <source>Cutting data: Vc %1, f %2 %3/rev, ap %4 %3</source>
+        <translation>ข้อมูลการตัด: ความเร็วตัด Vc %1, อัตราป้อน f %2 %3/รอบ, ความลึกป้อนตัด ap %4 %3</translation>
+    </message>
+    <message>
+        <source>, Rz %1 µm, Ra %2 µm</source>
+        <translation>, ความหยาบผิว Rz %1 ไมครอน, Ra %2 ไมครอน</translation>
+    </message>
+    <message>
+        <source>, power %1 kW, torque %2 N·m</source>
+        <translation>, กำลังตัด %1 กิโลวัตต์, แรงบิด %2 นิวตันเมตร</translation>
+    </message>
 </context>
 </TS>

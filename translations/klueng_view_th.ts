@@ -585,6 +585,26 @@
         <source>(none)</source>
         <translation>(ไม่มี)</translation>
     </message>
+    <message>
+        <source>Tool material:</source>
+        <translation>วัสดุมีดตัด:</translation>
+    </message>
+    <message>
+        <source>(the library tool&apos;s, else not known)</source>
+        <translation>(ตามมีดในคลัง ถ้าไม่มีถือว่าไม่ทราบ)</translation>
+    </message>
+    <message>
+        <source>HSS (high-speed steel)</source>
+        <translation>HSS (เหล็กกล้ารอบสูง ไฮสปีด)</translation>
+    </message>
+    <message>
+        <source>Carbide</source>
+        <translation>คาร์ไบด์</translation>
+    </message>
+    <message>
+        <source>Coated carbide</source>
+        <translation>คาร์ไบด์เคลือบผิว</translation>
+    </message>
 </context>
 <context>
     <name>klueng::gui::PartPanel</name>
@@ -782,6 +802,25 @@
     <message>
         <source>Click to change the tool side for this file (Job details).</source>
         <translation>คลิกเพื่อเปลี่ยนด้านของมีดตัดสำหรับไฟล์นี้ (รายละเอียดงาน)</translation>
+    </message>
+</context>
+<context>
+    <name>klueng::gui::CuttingPlot</name>
+    <message>
+        <source>power (kW, max %1)</source>
+        <translation>กำลังตัด (กิโลวัตต์ สูงสุด %1)</translation>
+    </message>
+    <message>
+        <source>, spindle %1 kW</source>
+        <translation>, เพลาจับงาน %1 กิโลวัตต์</translation>
+    </message>
+    <message>
+        <source>Vc (ft/min, max %1)</source>
+        <translation>ความเร็วตัด Vc (ฟุต/นาที สูงสุด %1)</translation>
+    </message>
+    <message>
+        <source>Vc (m/min, max %1)</source>
+        <translation>ความเร็วตัด Vc (ม./นาที สูงสุด %1)</translation>
     </message>
 </context>
 </TS>

@@ -8,6 +8,7 @@
 // The stock: --stock, else the file's header, else inferred from the program
 // (a note on stderr says which, SPEC 2 ext).
 //                          [--tool N=ID]...   (library tool ID at station N for this run)
+//                          [--cutting-data out.csv]  (per block: Vc, f, ap, Rz/Ra, power; W330-W336)
 // Checks the program (errors -> printed, exit 1), runs it into a Timeline and
 // writes what was asked for. An alarm is printed like a diagnostic
 // (FILE:LINE:COL: alarm A104: ...) and gives exit 1; the trace up to it is
@@ -25,6 +26,7 @@
 #include "commands.h"
 #include "cut_outputs.h"
 #include "klueng/core/cut/comp_compare.h"
+#include "klueng/core/cut/cutting_data.h"
 #include "klueng/core/cut/part_check.h"
 #include "klueng/core/gcode/checker.h"
 #include "klueng/core/gcode/parser.h"
@@ -57,6 +59,7 @@ struct SimulateOptions : JobOptions {
   bool noPersist = false;                 // --no-persist: keep macro_variables.cfg as it is
   CutOutputOptions cut;                   // --png --profile --json --resolution (cut_outputs.h)
   std::optional<DisplayUnits> showUnits;  // --show-units (nullopt: auto, the program's)
+  std::string cuttingDataPath;            // --cutting-data out.csv (issue 39)
 };
 
 // simulate's option table (cli_common.h): the shared rows, then its own. New outputs
@@ -76,6 +79,7 @@ std::optional<int> parseSimulateOptions(const std::vector<std::string>& args, Si
       valueOption("--json", o.cut.jsonPath),
       valueOption("--svg", o.cut.svgPath),
       valueOption("--dxf", o.cut.dxfPath),
+      valueOption("--cutting-data", o.cuttingDataPath),
       flagOption("--features", o.cut.features),
       flagOption("--no-stock", noStock),
       flagOption("--part-check", o.partCheck),
@@ -174,7 +178,8 @@ int runSimulate(const std::vector<std::string>& args) {
   std::vector<std::string> inputs = programInputs(o.file, job, config);
   inputs.push_back(variablesPath);  // #500-#999 are read too
   if (!o.machine.empty() && std::filesystem::is_regular_file(o.machine)) inputs.push_back(o.machine);
-  if (!outputsAllowed({o.tracePath, o.cut.pngPath, o.cut.profilePath, o.cut.jsonPath, o.cut.svgPath, o.cut.dxfPath},
+  if (!outputsAllowed({o.tracePath, o.cut.pngPath, o.cut.profilePath, o.cut.jsonPath, o.cut.svgPath, o.cut.dxfPath,
+                       o.cuttingDataPath},
                       inputs, o.lang))
     return 2;
   if (!job.file() || !job.program() || job.hasErrors()) return 1;
@@ -239,9 +244,30 @@ int runSimulate(const std::vector<std::string>& args) {
                    std::string(severityName(Severity::Note, o.lang)).c_str(),
                    cut::describeDifference(d, program, with, o.lang, units).c_str());
   }
+  bool cuttingDataWritten = true;
+  if (!o.cuttingDataPath.empty()) {
+    // Cutting data (issue 39): measured on demand from the same run, with the tools the cut used.
+    const cut::MaterialTable& materials = cut::shippedMaterials();
+    cut::CuttingDataOptions options =
+        cut::cuttingDataOptions(programFile.header.material, cutSetup.tools, cutSetup.machine, materials);
+    options.units = machine::programUnits(timeline, gcode::powerOnUnitsOf(runOptions.dialect, runOptions.powerOnUnits));
+    if (!options.material) {
+      const Diagnostic note =
+          programFile.header.material.empty()
+              ? Diagnostic{Severity::Note, codes::kMaterialNotNamed, {}, {materials.idList()}}
+              : Diagnostic{
+                    Severity::Note, codes::kMaterialUnknown, {}, {programFile.header.material, materials.idList()}};
+      std::fprintf(stderr, "%s\n", formatNote(o.file, note, o.lang).c_str());
+    }
+    const cut::CuttingData data =
+        cut::measureCuts(timeline, cut::CutSetup::from(programFile.header, cutSetup), options);
+    for (const Diagnostic& w : data.warnings) printDiagnostic(job.fileOf(w), w, o.lang);
+    cuttingDataWritten = writeOutput(o.cuttingDataPath, cut::formatCuttingDataCsv(data, options.units), o.lang);
+  }
   const std::optional<Diagnostic>& alarm = cut.alarm ? cut.alarm : timeline.alarm;
   if (alarm) printDiagnostic(job.fileOf(*alarm), *alarm, o.lang);
-  if (!cut.written || !variablesWritten) return 2;  // an output could not be written (said); the old file is kept
+  if (!cut.written || !variablesWritten || !cuttingDataWritten)
+    return 2;  // an output could not be written (said); the old file is kept
   return alarm ? 1 : 0;
 }
 

@@ -1,5 +1,7 @@
 #include "gui/class_grade_dialog.h"
 
+#include "klueng/core/messages.h"
+
 #include <algorithm>
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -38,7 +40,19 @@ namespace klueng::gui {
 
 namespace {
 
-enum Column { kProgram, kResult, kErrors, kAlarm, kCycleTime, kLeftover, kGouge, kDrawing, kTouchOff, kColumns };
+enum Column {
+  kProgram,
+  kResult,
+  kErrors,
+  kAlarm,
+  kCycleTime,
+  kLeftover,
+  kGouge,
+  kDrawing,
+  kCutting,
+  kTouchOff,
+  kColumns
+};
 
 // The drawing's toleranced dimensions, or nullopt with the reasons in the UI language.
 std::optional<std::vector<core::cut::DrawnDimension>> readDrawing(const QString& path, const std::string& general,
@@ -227,7 +241,8 @@ void ClassGradeDialog::retranslate() {
   saveButton_->setText(tr("Save CSV..."));
   pdfButton_->setText(tr("Save PDF..."));
   table_->setHorizontalHeaderLabels({tr("Program"), tr("Result"), tr("Errors"), tr("Alarm"), tr("Cycle time (s)"),
-                                     tr("Leftover (mm)"), tr("Gouge (mm)"), tr("Drawing"), tr("Touch-off")});
+                                     tr("Leftover (mm)"), tr("Gouge (mm)"), tr("Drawing"), tr("Cutting data"),
+                                     tr("Touch-off")});
   details_->setHorizontalHeaderLabels(
       {tr("Dimension"), tr("Tolerance"), tr("Limits (mm)"), tr("Measured (mm)"), tr("Result")});
   // Every header whole in both languages ("เวลาทำงาน (วินาที)" is wider than a default column).
@@ -337,6 +352,19 @@ void ClassGradeDialog::showRows() {
     int in = 0;
     for (const core::cut::InspectedDimension& d : r.inspection) in += d.in() ? 1 : 0;
     set(kDrawing, drawing ? tr("%1 of %2 in tolerance").arg(in).arg(r.inspection.size()) : QString());
+    // The teacher's cutting-data warnings (issue 39): their codes and lines; the messages in the tooltip.
+    QString cutting, cuttingTip;
+    for (const core::Diagnostic& w : r.graded.cuttingWarnings) {
+      cutting += (cutting.isEmpty() ? QString() : QStringLiteral(", ")) +
+                 tr("%1 line %2").arg(QString::fromStdString(w.code)).arg(w.range.line);
+      cuttingTip += (cuttingTip.isEmpty() ? QString() : QStringLiteral("\n")) +
+                    tr("line %1: %2")
+                        .arg(w.range.line)
+                        .arg(QString::fromStdString(core::formatMessage(w, Language::coreLang(), core::Surface::Gui)));
+    }
+    set(kCutting, r.graded.errors == 0 && r.graded.alarm.empty() && cutting.isEmpty() ? tr("none") : cutting);
+    table_->item(row, kCutting)->setToolTip(cuttingTip);
+    if (!cutting.isEmpty()) table_->item(row, kCutting)->setForeground(QColor(160, 100, 0));
     // Each tool's entered offsets against the true ones, one tool a line in the tooltip.
     const QString touch =
         QString::fromStdString(core::job::touchOffText(r.touchOff, gradedTolerance_, Language::coreLang()));

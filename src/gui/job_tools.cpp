@@ -51,7 +51,9 @@ void saveToolOverrides(const QString& filePath, const std::vector<machine::Stati
 }
 
 bool sameTools(const machine::MachineSetup& a, const machine::MachineSetup& b) {
-  if (a.tools.bitmap != b.tools.bitmap || a.tools.libraryPath != b.tools.libraryPath) return false;
+  if (a.tools.bitmap != b.tools.bitmap || a.tools.libraryPath != b.tools.libraryPath ||
+      a.tools.material != b.tools.material)  // the cutting data judges by it (issue 39)
+    return false;
   // How the program is read and where its tools sit change the run as much as a tool does.
   if (a.machine.calculatorInput != b.machine.calculatorInput ||
       a.machine.toolsBeyondCentre != b.machine.toolsBeyondCentre)

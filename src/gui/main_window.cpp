@@ -29,6 +29,7 @@
 #include "gui/banner.h"
 #include "gui/code_editor.h"
 #include "gui/diagnostics_panel.h"
+#include "gui/cutting_plot.h"
 #include "gui/explain_bar.h"
 #include "render/report_sheets.h"
 #include "gui/dialect_offer_bar.h"
@@ -183,6 +184,10 @@ QWidget* MainWindow::createOutputPane() {
   connect(setupStrip_, &SetupStrip::toolSideActivated, this, &MainWindow::showJobDetails);
   outputLayout->addWidget(setupStrip_);
   outputLayout->addWidget(output_, 1);
+  // Spindle power and Vc over the cycle time (issue 39), from the explain bar's cutting data.
+  cuttingPlot_ = new CuttingPlot(runner_, outputPane);
+  connect(explainBar_, &ExplainBar::cuttingDataReady, cuttingPlot_, &CuttingPlot::setData);
+  outputLayout->addWidget(cuttingPlot_);
   outputLayout->addWidget(statusLamps_);
   return pane;
 }

@@ -248,6 +248,7 @@ class MainWindow : public QMainWindow {
   bool bannerError_ = false;
   bool partDockGrown_ = false;  // the Part dock made tall enough for its list once this session
   class ExplainBar* explainBar_ = nullptr;
+  class CuttingPlot* cuttingPlot_ = nullptr;
   DialectOfferBar* dialectOffer_ = nullptr;
   class RecoveryBar* recoveryBar_ = nullptr;
   class FirstStepsBar* firstSteps_ = nullptr;

@@ -132,6 +132,8 @@ class RunController : public QObject {
   RunStatus status() const;
   // The timeline being played (nullptr before the first run).
   const core::machine::Timeline* timeline() const { return timeline_.get(); }
+  // The same, shared: a worker thread reading it keeps it alive (the explain bar's cutting data).
+  std::shared_ptr<const core::machine::Timeline> sharedTimeline() const { return timeline_; }
   const core::io::JobHeader& jobHeader() const { return file_.header; }
   // The stock as the core's cut has left it at currentTime().
   render::StockShape stockShape() const;

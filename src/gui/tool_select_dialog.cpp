@@ -127,6 +127,11 @@ void ToolSelectDialog::build(const io::ToolTable& tools, const io::OffsetTable& 
   for (const io::LibraryTool& t : io::shippedToolLibrary().tools)
     libraryCombo_->addItem(QString(), QString::fromStdString(t.id));
   libraryCombo_->setObjectName(QStringLiteral("toolLibrary"));
+  materialLabel_ = new QLabel(this);
+  materialCombo_ = new QComboBox(this);
+  materialCombo_->setObjectName(QStringLiteral("toolMaterial"));
+  for (const char* id : {"", "hss", "carbide", "coated-carbide"})
+    materialCombo_->addItem(QString(), QString::fromLatin1(id));
   jobOnly_ = new QCheckBox(this);
   jobOnly_->setObjectName(QStringLiteral("toolJobOnly"));
   choice_ = new QLabel(this);
@@ -155,14 +160,16 @@ void ToolSelectDialog::build(const io::ToolTable& tools, const io::OffsetTable& 
   nameRow->addWidget(browseButton_);
   right->addLayout(nameRow, 1, 1);
   right->addWidget(jobOnly_, 2, 1);
-  right->addWidget(offsetLabel_, 3, 0);
+  right->addWidget(materialLabel_, 3, 0);
+  right->addWidget(materialCombo_, 3, 1);
+  right->addWidget(offsetLabel_, 4, 0);
   auto* offsetRow = new QHBoxLayout;
   offsetRow->addWidget(offsetSpin_);
   offsetRow->addWidget(tipInfo_, 1);
-  right->addLayout(offsetRow, 3, 1);
-  right->addWidget(choice_, 4, 0, 1, 2);
-  right->addWidget(preview_, 5, 0, 1, 2);
-  right->setRowStretch(5, 1);
+  right->addLayout(offsetRow, 4, 1);
+  right->addWidget(choice_, 5, 0, 1, 2);
+  right->addWidget(preview_, 6, 0, 1, 2);
+  right->setRowStretch(6, 1);
   auto* top = new QHBoxLayout;
   top->addWidget(list_);
   top->addLayout(right, 1);
@@ -176,6 +183,10 @@ void ToolSelectDialog::build(const io::ToolTable& tools, const io::OffsetTable& 
   connect(browseButton_, &QPushButton::clicked, this, &ToolSelectDialog::browse);
   connect(libraryCombo_, &QComboBox::activated, this, &ToolSelectDialog::onLibraryChosen);
   connect(jobOnly_, &QCheckBox::toggled, this, &ToolSelectDialog::onJobOnlyToggled);
+  connect(materialCombo_, &QComboBox::activated, this, [this](int index) {
+    if (!syncing_ && list_->currentRow() >= 0)
+      setToolMaterial(list_->currentRow() + 1, materialCombo_->itemData(index).toString());
+  });
   connect(offsetSpin_, &QSpinBox::valueChanged, this, &ToolSelectDialog::updatePreview);
   connect(buttons_, &QDialogButtonBox::accepted, this, &ToolSelectDialog::accept);
   connect(buttons_, &QDialogButtonBox::rejected, this, &QDialog::reject);
@@ -331,6 +342,8 @@ void ToolSelectDialog::syncControls() {
                          : QString();
   const int index = libraryCombo_->findData(id);
   libraryCombo_->setCurrentIndex(index < 0 ? 0 : index);
+  const int material = materialCombo_->findData(QString::fromStdString(tools_.material[static_cast<std::size_t>(row)]));
+  materialCombo_->setCurrentIndex(material < 0 ? 0 : material);
   jobOnly_->setChecked(!overrideOf(tool).isEmpty() || jobOnlyPending_ == tool);
   syncing_ = false;
   const auto* c = inference_.choiceFor(tool);
@@ -465,7 +478,15 @@ void ToolSelectDialog::accept() {
   QDialog::accept();
 }
 
-bool ToolSelectDialog::toolsChanged() const { return tools_.bitmap != loaded_.bitmap; }
+bool ToolSelectDialog::toolsChanged() const {
+  return tools_.bitmap != loaded_.bitmap || tools_.material != loaded_.material;
+}
+
+void ToolSelectDialog::setToolMaterial(int tool, const QString& id) {
+  if (tool < 1 || tool > stationCount()) return;
+  tools_.material[static_cast<std::size_t>(tool - 1)] = id.toStdString();
+  if (tool == currentTool()) syncControls();
+}
 
 void ToolSelectDialog::retranslate() {
   setWindowTitle(tr("Tool Select"));
@@ -476,6 +497,11 @@ void ToolSelectDialog::retranslate() {
   libraryLabel_->setText(tr("Library tool:"));
   jobOnly_->setText(tr("Only for this program (tools.cfg is not changed)"));
   libraryCombo_->setItemText(0, tr("(a bitmap file, below)"));
+  materialLabel_->setText(tr("Tool material:"));
+  materialCombo_->setItemText(0, tr("(the library tool's, else not known)"));
+  materialCombo_->setItemText(1, tr("HSS (high-speed steel)"));
+  materialCombo_->setItemText(2, tr("Carbide"));
+  materialCombo_->setItemText(3, tr("Coated carbide"));
   const bool th = Language::coreLang() == core::Lang::Th;
   for (int i = 1; i < libraryCombo_->count(); ++i) {
     const io::LibraryTool* t = io::shippedToolLibrary().find(libraryCombo_->itemData(i).toString().toStdString());

@@ -23,6 +23,8 @@
 //   setBitmapName(tool, name)           as if typed (tests)
 //   previewSprite()        the sprite shown (tests)
 //   loadDiagnostics()      problems found reading the files (shown in the dialog)
+//   setToolMaterial(tool, id)  as if chosen in the Tool material box ("hss", "carbide",
+//                          "coated-carbide"; "" = the library's): the cutting data judges by it
 #include <QDialog>
 #include <array>
 #include <optional>
@@ -57,6 +59,7 @@ class ToolSelectDialog : public QDialog {
 
   core::io::ToolTable toolTable() const;
   bool toolsChanged() const;
+  void setToolMaterial(int tool, const QString& id);
   int currentTool() const;
   void setCurrentTool(int tool);
   void setBitmapName(int tool, const QString& name);
@@ -112,6 +115,8 @@ class ToolSelectDialog : public QDialog {
   QListWidget* list_ = nullptr;
   QLabel* libraryLabel_ = nullptr;
   QComboBox* libraryCombo_ = nullptr;
+  QLabel* materialLabel_ = nullptr;  // the tool's cutting material (issue 39): tools.cfg `| material=`
+  QComboBox* materialCombo_ = nullptr;
   QCheckBox* jobOnly_ = nullptr;
   QLabel* choice_ = nullptr;
   QLabel* nameLabel_ = nullptr;

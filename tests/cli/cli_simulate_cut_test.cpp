@@ -297,6 +297,43 @@ TEST(CliPartCheck, SamplesAreCleanAndAnAlarmedRunSaysWhatWasChecked) {
   EXPECT_THAT(alarmed.err, HasSubstr("note I324: The run stopped on alarm A104"));
 }
 
+// Issue 39: --cutting-data writes one row per cutting block with its units in the column names, prints the
+// teacher's warnings on their blocks (never an error: exit 0), and is refused (F126) when it names an input.
+TEST(CliCuttingData, WritesPerBlockAndWarnsOnTheBlock) {
+  const fs::path config = scratch("cd-config");
+  fs::create_directories(config);
+  for (const char* name : {"offset.cfg", "machine.cfg"})
+    fs::copy_file(kCutShipped + "/" + name, config / name, fs::copy_options::overwrite_existing);
+  std::ofstream(config / "tools.cfg") << "library:cnmg-80-r08\n\n\n\n\n\n\n\n";
+  std::ofstream(config / "machine.cfg", std::ios::app) << "spindle_power_kw = 1.5\n";
+  const fs::path prog = scratch("cd.nc"), csv = scratch("cd.csv");
+  const std::string moves =
+      "G21 G40 G99\nT0101\nG97 S1000 M03\nG00 X60. Z2.\nX46.\nG01 Z-30. F0.2\nG00 X60.\nZ50.\nM30\n";
+  std::ofstream(prog) << "Cutting data\nSteel\nSteel S45C\n150\n1100\nTest\n" << moves;
+  const Result r = simulate("'" + prog.string() + "' --cutting-data '" + csv.string() + "'", config.string());
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  // 2.06 kW at the edge (the hand calculation of cutting_data_test.cpp) on a 1.5 kW spindle.
+  EXPECT_THAT(r.err, HasSubstr(prog.string() + ":12:1: warning W334: this cut needs 2.1 kW at the edge"));
+  EXPECT_THAT(r.err, Not(HasSubstr("W330")));  // 145 m/min: inside coated carbide's range in S45C
+  const std::string rows = slurp(csv);
+  EXPECT_THAT(rows, HasSubstr("line,file,tool,t_start_s,t_end_s,moves,diameter_mm,rpm,vc_m_min,f_mm_rev,ap_mm,"));
+  EXPECT_THAT(rows, HasSubstr("\n12,0,1,"));
+  EXPECT_THAT(rows, HasSubstr(",46.00,1000,145,0.200,2.00,"));
+  EXPECT_THAT(rows, HasSubstr(",W334\n"));
+  // Naming the program as the output: refused, the program kept.
+  const std::string before = slurp(prog);
+  const Result refused = simulate("'" + prog.string() + "' --cutting-data '" + prog.string() + "'", config.string());
+  EXPECT_EQ(refused.exitCode, 2) << refused.err;
+  EXPECT_THAT(refused.err, HasSubstr("error F126"));
+  EXPECT_EQ(slurp(prog), before);
+  // A material the table does not know is said once, with the list.
+  std::ofstream(prog) << "Cutting data\nSteel\nUnobtainium\n150\n1100\nTest\n" << moves;
+  const Result unknown = simulate("'" + prog.string() + "' --cutting-data '" + csv.string() + "'", config.string());
+  EXPECT_EQ(unknown.exitCode, 0) << unknown.err;
+  EXPECT_THAT(unknown.err, HasSubstr("note I330: material 'Unobtainium' is not in materials.cfg"));
+  EXPECT_THAT(unknown.err, HasSubstr("known materials: ss400, s45c,"));
+}
+
 }  // namespace
 
 }  // namespace cli_simulate_cut_test

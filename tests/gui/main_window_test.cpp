@@ -937,6 +937,48 @@ class MainWindowTest : public QObject {
     QTRY_VERIFY(!w.explainBar()->isVisible());
   }
 
+  // Issue 39: the bar's second line gives the block's cutting data, the plot under the output view
+  // draws the run's power and Vc, and the hover help says the same as the bar.
+  void stepShowsTheCuttingData() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("steel.txt"));
+    {
+      QFile f(path);
+      QVERIFY(f.open(QIODevice::WriteOnly));
+      f.write(
+          "Cutting data\nSteel\nS45C\n150\n1100\nTest\nG21 G40 G99\nT0101\nG97 S1000 M03\nG00 X60. Z2.\nX46.\n"
+          "G01 Z-30. F0.2\nG00 X60.\nZ50.\nM30\n");
+    }
+    MainWindow w;
+    w.show();
+    QVERIFY(w.openFile(path));
+    QVERIFY(waitIdle(w));
+    RunController* run = w.runController();
+    run->setSpeed(RunController::kAsFastAsPossible);
+    // G21 G40 G99, T0101, G97 S1000 M03, G00 X60. Z2., X46., G01 Z-30. F0.2: the arrow on line 12.
+    for (int i = 0; i < 6; ++i) {
+      w.action(QStringLiteral("actionStep"))->trigger();
+      QTRY_COMPARE_WITH_TIMEOUT(run->state(), RunState::Paused, 20000);
+    }
+    QCOMPARE(w.editor()->executingFileLine(), 12);
+    QTRY_VERIFY_WITH_TIMEOUT(w.explainBar()->cuttingData() != nullptr, 20000);
+    // The hand calculation of tests/core/cut/cutting_data_test.cpp: pi * 46 * 1000 / 1000 = 144.5 m/min,
+    // Rz = 0.2^2 / (8 * 0.8) = 6.25 um, and S45C's kc1.1 gives 2.06 kW and 19.7 N*m.
+    QTRY_VERIFY(w.explainBar()->text().contains(
+        QStringLiteral("\nCutting data: Vc 145 m/min, f 0.200 mm/rev, ap 2.00 mm, Rz 6.3 µm, Ra 1.6 µm, power 2.06 kW, "
+                       "torque 19.7 N·m")));
+    QCOMPARE(w.explainBar()->explainLine(12), w.explainBar()->text());
+    auto* plot = w.findChild<QWidget*>(QStringLiteral("cuttingPlot"));
+    QVERIFY(plot);
+    QTRY_VERIFY(plot->isVisible());
+    Language::instance()->setLanguage(QStringLiteral("th"));
+    QTRY_VERIFY(w.explainBar()->text().contains(QStringLiteral("ข้อมูลการตัด: ความเร็วตัด Vc 145 ม./นาที")));
+    Language::instance()->setLanguage(QStringLiteral("en"));
+    w.action(QStringLiteral("actionStop"))->trigger();
+    QTRY_VERIFY(!w.explainBar()->isVisible());
+  }
+
   void stepHighlightsTheExecutingBlock() {
     MainWindow w;
     w.show();

@@ -171,6 +171,32 @@ class ToolLibraryDialogTest : public QObject {
     QCOMPARE(saved.bitmap[0], std::string("resources/tools/01-outside-turning.bmp"));
   }
 
+  // Issue 39: the Tool material box sets the station's `| material=` (the cutting data judges by it).
+  void toolMaterialIsEditedPerStation() {
+    QTemporaryDir dir;
+    QVERIFY(makeConfigCopy(dir.path()));
+    ToolSelectDialog d(dir.path());
+    auto* material = d.findChild<QComboBox*>(QStringLiteral("toolMaterial"));
+    QVERIFY(material);
+    d.setCurrentTool(1);
+    QCOMPARE(material->currentIndex(), 0);  // the shipped tools.cfg says none
+    QVERIFY(!d.toolsChanged());
+    const int hss = material->findData(QStringLiteral("hss"));
+    QVERIFY(hss > 0);
+    material->setCurrentIndex(hss);
+    emit material->activated(hss);
+    QVERIFY(d.toolsChanged());
+    d.setCurrentTool(2);
+    QCOMPARE(material->currentIndex(), 0);
+    d.setCurrentTool(1);
+    QCOMPARE(material->currentIndex(), hss);
+    d.accept();
+    QCOMPARE(d.result(), int(QDialog::Accepted));
+    const core::io::ToolTable saved = d.toolTable();
+    QCOMPARE(saved.material[0], std::string("hss"));
+    QVERIFY(core::io::formatToolTable(saved).starts_with("resources/tools/01-outside-turning.bmp | material=hss\n"));
+  }
+
   // OK with only a station for this program: tools.cfg is not rewritten at all (its
   // bytes stay as the user wrote them, Windows line ends included).
   void okWithOnlyThisProgramsStationsDoesNotRewriteToolsCfg() {

@@ -101,6 +101,10 @@ inline constexpr const char* kToolNeedsNames = "F168";
 inline constexpr const char* kLibraryBitmapMissing = "F169";
 inline constexpr const char* kNotVariableLine = "F170";
 inline constexpr const char* kVariableNotKept = "F171";
+inline constexpr const char* kLibraryBadOption = "F172";    // {0} file, {1} the word (library.cfg's 10th field)
+inline constexpr const char* kMaterialLineFields = "F173";  // {0} file, {1} fields found (materials.cfg)
+inline constexpr const char* kMaterialBadNumber = "F174";   // {0} file, {1} what, {2} the text
+inline constexpr const char* kToolLineBadOption = "F175";   // {0} file, {1} station, {2} the option (tools.cfg)
 // Part designs and the cutting-speed table (design; texts in messages_design.cpp)
 inline constexpr const char* kPartFileNotJson = "F180";   // {0} file, {1} why
 inline constexpr const char* kPartFieldMissing = "F181";  // {0} file, {1} field
@@ -274,6 +278,19 @@ inline constexpr const char* kGuessHitsChuck = "W325";
 inline constexpr const char* kGuessEdgeBrushesStock = "W326";  // a guessed tool's edge, < 0.2 mm, in a rapid
 inline constexpr const char* kPartCheckStopped = "I324";       // {0} the alarm's code
 inline constexpr const char* kPartCheckNothingCut = "I325";
+// Cutting data (issue 39, cut/cutting_data.h): warnings on the block, never errors.
+inline constexpr const char* kCutSpeedHigh =
+    "W330";  // {0} Vc, {1} unit, {2} tool material, {3} material, {4} max, {5} fix
+inline constexpr const char* kCutSpeedLow =
+    "W331";  // {0} Vc, {1} unit, {2} tool material, {3} material, {4} min, {5} fix
+inline constexpr const char* kFinishTooRough =
+    "W332";  // {0} f, {1} r, {2} Ra, {3} Rz, {4} limit Ra, {5} largest f, {6} unit
+inline constexpr const char* kDepthOverEdge = "W333";      // {0} ap, {1} edge, {2} largest ap, {3} unit
+inline constexpr const char* kPowerOverSpindle = "W334";   // {0} Pc kW, {1} machine kW, {2} ap, {3} f, {4} unit
+inline constexpr const char* kTorqueOverSpindle = "W335";  // {0} torque, {1} machine torque, {2} diameter, {3} unit
+inline constexpr const char* kRpmOverChuck = "W336";       // {0} rpm, {1} chuck's limit
+inline constexpr const char* kMaterialUnknown = "I330";    // {0} the header's material, {1} the known ones
+inline constexpr const char* kMaterialNotNamed = "I331";   // {0} the known ones
 
 // The operator panel (issue 31; control; texts in messages_control.cpp).
 inline constexpr const char* kNotReferenced = "A601";          // {0} the control's alarm, {1} axes not referenced

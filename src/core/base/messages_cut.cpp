@@ -57,6 +57,53 @@ constexpr MessageText kCutMessages[] = {
      "การทำงานหยุดด้วยสัญญาณเตือน {0} ที่บรรทัดนี้: การตรวจชิ้นงานเปรียบเทียบเฉพาะส่วนที่ตัดไปแล้วจนถึงจุดนั้น"},
     {codes::kPartCheckNothingCut, "Part check: no move cut the stock, so there is no part to check",
      "การตรวจชิ้นงาน: ไม่มีการเคลื่อนที่ใดตัดเนื้อชิ้นงาน จึงไม่มีชิ้นงานให้ตรวจ"},
+    // Cutting data (issue 39, docs/cutting-data.md): a teacher's warnings, never errors.
+    // W330/W331: {0} Vc, {1} its unit, {2}/{3} tool material en/th, {4}/{5} material en/th,
+    // {6} the range's end, {7} the spindle speed that reaches it here (rpm).
+    {codes::kCutSpeedHigh,
+     "cutting speed {0} {1} is above the {6} {1} a {2} tool stands in {4}: the edge burns; lower the spindle speed "
+     "to about S{7} (rpm, G97) or the G96 S value",
+     "ความเร็วตัด {0} {1} สูงกว่า {6} {1} ที่มีด{3}ทนได้เมื่อกลึง{5}: คมมีดจะไหม้ ให้ลดความเร็วรอบลงเหลือประมาณ S{7} "
+     "(รอบ/นาที G97) หรือลดค่า S ของ G96"},
+    {codes::kCutSpeedLow,
+     "cutting speed {0} {1} is below the {6} {1} a {2} tool wants in {4}: built-up edge and a torn surface; raise "
+     "the spindle speed to about S{7} (rpm, G97) or use G96",
+     "ความเร็วตัด {0} {1} ต่ำกว่า {6} {1} ที่มีด{3}ต้องการเมื่อกลึง{5}: เศษโลหะจะพอกติดคมมีดและผิวฉีก ให้เพิ่มความเร็วรอบเป็น"
+     "ประมาณ S{7} (รอบ/นาที G97) หรือใช้ G96"},
+    // {0} f, {1} nose radius, {2} Ra um, {3} Rz um, {4} the Ra allowed, {5} the largest feed for it, {6} unit
+    {codes::kFinishTooRough,
+     "finishing feed {0} {6}/rev with nose radius R{1} leaves Ra {2} um (Rz {3} um), rougher than Ra {4} um: use "
+     "F{5} or less, or an insert with a larger nose radius",
+     "อัตราป้อนกลึงละเอียด {0} {6}/รอบ กับรัศมีปลายมีด R{1} ให้ผิว Ra {2} ไมครอน (Rz {3} ไมครอน) หยาบกว่า Ra {4} ไมครอน "
+     "ให้ใช้ F{5} หรือน้อยกว่า หรือใช้เม็ดมีดที่มีรัศมีปลายมีดโตกว่า"},
+    // {0} ap, {1} the edge's length, {2} the largest depth for it, {3} unit
+    {codes::kDepthOverEdge,
+     "depth of cut {0} {3} is more than the {2} {3} the insert's {1} {3} cutting edge takes (about 2/3 of it): cut "
+     "in more passes",
+     "ความลึกป้อนตัด {0} {3} มากกว่า {2} {3} ที่คมตัดยาว {1} {3} ของเม็ดมีดรับได้ (ประมาณ 2/3 ของความยาวคม) "
+     "ให้แบ่งกลึงหลายเที่ยว"},
+    // {0} Pc kW, {1} the spindle's kW, {2} ap, {3} f, {4} unit
+    {codes::kPowerOverSpindle,
+     "this cut needs {0} kW at the edge (depth {2} {4}, feed {3} {4}/rev) but the spindle gives {1} kW: the spindle "
+     "stalls; take a smaller depth or feed",
+     "การตัดนี้ต้องใช้กำลัง {0} กิโลวัตต์ที่คมมีด (ลึก {2} {4} ป้อน {3} {4}/รอบ) แต่มอเตอร์เพลาจับงานให้ได้ {1} กิโลวัตต์: "
+     "เพลาจับงานจะหยุดหมุน ให้ลดความลึกหรืออัตราป้อน"},
+    // {0} torque N*m, {1} the spindle's, {2} diameter, {3} unit
+    {codes::kTorqueOverSpindle,
+     "this cut needs {0} N*m of torque at diameter {2} {3} but the spindle gives {1} N*m: take a smaller depth or "
+     "feed",
+     "การตัดนี้ต้องใช้แรงบิด {0} นิวตันเมตร ที่เส้นผ่านศูนย์กลาง {2} {3} แต่เพลาจับงานให้ได้ {1} นิวตันเมตร "
+     "ให้ลดความลึกหรืออัตราป้อน"},
+    {codes::kRpmOverChuck,
+     "spindle speed {0} rpm is above the chuck's limit of {1} rpm: the jaws lose their grip; clamp it with G50 S{1} "
+     "(G92 S on system B/C) or lower S",
+     "ความเร็วรอบ {0} รอบ/นาที สูงกว่าที่หัวจับรับได้ {1} รอบ/นาที: ปากจับจะคลายแรงจับ ให้จำกัดรอบด้วย G50 S{1} "
+     "(G92 S ในระบบ B/C) หรือลดค่า S"},
+    {codes::kMaterialUnknown,
+     "material '{0}' is not in materials.cfg: cutting speeds and power are not judged; known materials: {1}",
+     "ไม่มีวัสดุ '{0}' ใน materials.cfg: จึงไม่ตรวจความเร็วตัดและกำลังตัด วัสดุที่รู้จัก: {1}"},
+    {codes::kMaterialNotNamed, "the job names no material: cutting speeds and power are not judged; name one of: {0}",
+     "งานนี้ไม่ได้ระบุวัสดุ: จึงไม่ตรวจความเร็วตัดและกำลังตัด ให้ระบุวัสดุอย่างใดอย่างหนึ่ง: {0}"},
 };
 }  // namespace
 

@@ -179,9 +179,9 @@ constexpr MessageText kIoMessages[] = {
     // The tool library, library.cfg (docs/tools.md).
     {codes::kLibraryLineFields,
      "{0}: a library line needs 9 fields separated by '|' (id | kind | px/mm | R | tip | size | bitmap | "
-     "English name | Thai name) but has {1}",
+     "English name | Thai name), and may have a 10th (material=..., edge=...), but has {1}",
      "{0}: บรรทัดของคลังมีดตัดต้องมี 9 ช่องคั่นด้วย '|' (รหัส | ชนิด | พิกเซล/มม. | R | ปลายมีด | ขนาด | "
-     "ไฟล์ภาพ | ชื่อภาษาอังกฤษ | ชื่อภาษาไทย) แต่มี {1} ช่อง"},
+     "ไฟล์ภาพ | ชื่อภาษาอังกฤษ | ชื่อภาษาไทย) และมีช่องที่ 10 ได้ (material=..., edge=...) แต่มี {1} ช่อง"},
     {codes::kBadToolId, "{0}: '{1}' is not a tool id (lowercase letters, digits, '-', '.' and '_')",
      "{0}: '{1}' ไม่ใช่รหัสมีดตัด (ใช้ได้เฉพาะอักษรอังกฤษตัวเล็ก ตัวเลข '-' '.' และ '_')"},
     {codes::kDuplicateToolId, "{0}: the tool id '{1}' is already used on line {2}",
@@ -202,6 +202,21 @@ constexpr MessageText kIoMessages[] = {
      "{0}: '{1}' ไม่ใช่บรรทัดตัวแปรมาโคร ต้องเขียนเป็น #500 = 12.5"},
     {codes::kVariableNotKept, "{0}: #{1} is not kept between runs; only #500 to #999 are",
      "{0}: #{1} ไม่ถูกเก็บไว้ระหว่างการทำงานแต่ละครั้ง เก็บได้เฉพาะ #500 ถึง #999"},
+    {codes::kLibraryBadOption,
+     "{0}: '{1}' is not a tool option (material=hss, material=carbide, material=coated-carbide, edge=MM)",
+     "{0}: '{1}' ไม่ใช่ตัวเลือกของมีดตัด (material=hss, material=carbide, material=coated-carbide, edge=มม.)"},
+    {codes::kMaterialLineFields,
+     "{0}: a material line needs 9 fields separated by '|' (id | names | English | Thai | HSS Vc | carbide Vc | "
+     "kc1.1 | mc | source) but has {1}",
+     "{0}: บรรทัดของวัสดุต้องมี 9 ช่องคั่นด้วย '|' (รหัส | ชื่อ | ชื่ออังกฤษ | ชื่อไทย | Vc มีดไฮสปีด | Vc มีดคาร์ไบด์ | "
+     "kc1.1 | mc | แหล่งที่มา) แต่มี {1} ช่อง"},
+    {codes::kToolLineBadOption,
+     "{0}: tool {1}: '{2}' is not a station option (after '|': material=hss, material=carbide or "
+     "material=coated-carbide)",
+     "{0}: มีดตัด {1}: '{2}' ไม่ใช่ตัวเลือกของสถานีมีด (หลัง '|': material=hss, material=carbide หรือ "
+     "material=coated-carbide)"},
+    {codes::kMaterialBadNumber, "{0}: {1} must be a number of 0 or more (a range: MIN-MAX), not '{2}'",
+     "{0}: {1} ต้องเป็นตัวเลขตั้งแต่ 0 ขึ้นไป (ช่วง: ต่ำสุด-สูงสุด) ไม่ใช่ '{2}'"},
 
     // Machine files (resources/machines/*.machine, docs/dialects.md "Machine files").
     {codes::kMachineValueBad, "{0}: {1} = '{2}': must be {3}", "{0}: {1} = '{2}': ต้องเป็น{4}"},

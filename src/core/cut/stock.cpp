@@ -167,11 +167,30 @@ void Stock::settleDirty() {
   dirtyLast_ = -1;
 }
 
+void Stock::setTally(RemovalTally* tally) {
+  tally_ = tally;
+  if (tally_) {
+    tally_->radial.assign(columns_.size(), 0.0);
+    tally_->touched.clear();
+    tally_->sectionArea = 0.0;
+  }
+}
+
+namespace {
+void addToTally(RemovalTally& t, int i, double radial, double dz) {
+  double& r = t.radial[static_cast<std::size_t>(i)];
+  if (r == 0.0) t.touched.push_back(i);
+  r += radial;
+  t.sectionArea += radial * dz;
+}
+}  // namespace
+
 double Stock::removeFromMaterial(int i, double lo, double hi) {
   auto& c = columns_[static_cast<std::size_t>(i)];
   if (c.size() == 1 && hi >= c[0].hi && lo > c[0].lo) {
     // The common case: turning the outside of a solid or bored column down.
     const double area = c[0].hi * c[0].hi - lo * lo;
+    if (tally_) addToTally(*tally_, i, c[0].hi - lo, dz_);
     c[0].hi = lo;
     updateOuter(i);
     removed_ += std::numbers::pi * area * dz_;
@@ -189,6 +208,7 @@ double Stock::removeFromMaterial(int i, double lo, double hi) {
     const double a = std::max(in.lo, lo);
     const double b = std::min(in.hi, hi);
     removedArea += b * b - a * a;
+    if (tally_) addToTally(*tally_, i, b - a, dz_);
     if (in.lo < lo) kept.push_back({in.lo, lo});
     if (in.hi > hi) kept.push_back({hi, in.hi});
   }

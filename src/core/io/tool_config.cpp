@@ -130,7 +130,20 @@ ReadResult<ToolTable> parseToolTable(std::string_view text, const std::string& f
   table.stations = stations;
   for (int tool = 1; tool <= stations && static_cast<std::size_t>(tool) <= lines.size(); ++tool) {
     const std::string_view line = lines[static_cast<std::size_t>(tool - 1)];
-    const std::string_view name = detail::trim(line);
+    std::string_view name = detail::trim(line);
+    // ` | material=...` after the bitmap or library tool (issue 39).
+    if (const std::size_t bar = name.find('|'); bar != std::string_view::npos) {
+      const std::string_view option = detail::trim(name.substr(bar + 1));
+      name = detail::trim(name.substr(0, bar));
+      const std::string_view value = option.rfind("material=", 0) == 0 ? option.substr(9) : std::string_view();
+      if (value == "hss" || value == "carbide" || value == "coated-carbide") {
+        table.material[static_cast<std::size_t>(tool - 1)] = std::string(value);
+      } else {
+        diags.push_back(makeDiagnostic(Severity::Error, codes::kToolLineBadOption, tool,
+                                       detail::columnOf(line, option.empty() ? name : option), utf8Length(option),
+                                       {fileName, twoDigits(tool), std::string(option)}));
+      }
+    }
     if (name.empty()) continue;  // a tool without a bitmap
     if (name.rfind(kLibraryPrefix, 0) == 0) {
       const std::string_view id = detail::trim(name.substr(kLibraryPrefix.size()));
@@ -211,7 +224,12 @@ std::string formatToolTable(const ToolTable& t) {
   for (int i = 0; i < kMaxStations; ++i)
     if (!t.bitmap[static_cast<std::size_t>(i)].empty()) last = std::max(last, i + 1);
   std::string out;
-  for (int i = 0; i < last; ++i) out += oneConfigLine(t.bitmap[static_cast<std::size_t>(i)]) + '\n';
+  for (int i = 0; i < last; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    out += oneConfigLine(t.bitmap[k]);
+    if (!t.material[k].empty() && !t.bitmap[k].empty()) out += " | material=" + oneConfigLine(t.material[k]);
+    out += '\n';
+  }
   return out;
 }
 
@@ -343,6 +361,9 @@ constexpr Plausible kPlausible[] = {
     {"accel_x", 0.0, 100000.0},
     {"accel_z", 0.0, 100000.0},
     {"max_spindle_rpm", 1.0, 100000.0},
+    {"spindle_power_kw", 0.0, 10000.0},
+    {"spindle_torque_nm", 0.0, 1000000.0},
+    {"chuck_max_rpm", 0.0, 100000.0},
     {"reference_x", -100000.0, 100000.0},
     {"reference_z", -100000.0, 100000.0},
     {"start_x", -100000.0, 100000.0},
@@ -368,6 +389,12 @@ constexpr MachineKey kMachineKeys[] = {
      "X acceleration, mm/s^2 (radial); 0 = moves start and stop at once"},
     {"accel_z", &MachineConfig::accelZ, Rule::NonNegative, "Z acceleration, mm/s^2; 0 = off"},
     {"max_spindle_rpm", &MachineConfig::maxSpindleRpm, Rule::Positive, "maximum spindle speed, rpm"},
+    {"spindle_power_kw", &MachineConfig::spindlePowerKw, Rule::NonNegative,
+     "spindle motor power, kW (cutting-data warnings, docs/cutting-data.md); 0 = not known"},
+    {"spindle_torque_nm", &MachineConfig::spindleTorqueNm, Rule::NonNegative,
+     "largest spindle torque, N*m; 0 = not known"},
+    {"chuck_max_rpm", &MachineConfig::chuckMaxRpm, Rule::NonNegative,
+     "highest speed the chuck is rated for, rpm (on its body or in its manual); 0 = not known"},
     {"reference_x", &MachineConfig::referenceX, Rule::Any, "reference point X (diameter), G27/G28/G29"},
     {"reference_z", &MachineConfig::referenceZ, Rule::Any, "reference point Z"},
     {"start_x", &MachineConfig::startX, Rule::Any, "tool start position X (diameter)"},

@@ -139,7 +139,7 @@ ReadResult<ToolLibrary> parseToolLibrary(std::string_view text, const std::strin
       diags.push_back(
           makeDiagnostic(Severity::Error, code, lineNo, detail::columnOf(line, at), utf8Length(at), std::move(args)));
     };
-    if (f.size() != kFieldCount) {
+    if (f.size() != kFieldCount && f.size() != kFieldCount + 1) {
       error(codes::kLibraryLineFields, content, {std::to_string(f.size())});
       continue;
     }
@@ -193,6 +193,26 @@ ReadResult<ToolLibrary> parseToolLibrary(std::string_view text, const std::strin
     }
     tool.nameEn = std::string(f[7]);
     tool.nameTh = std::string(f[8]);
+    if (f.size() > kFieldCount) {
+      std::string_view rest = detail::trim(f[kFieldCount]);
+      while (!rest.empty()) {
+        const std::size_t space = rest.find_first_of(" \t");
+        const std::string_view word = rest.substr(0, space);
+        rest = space == std::string_view::npos ? std::string_view() : detail::trim(rest.substr(space));
+        const std::size_t eq = word.find('=');
+        const std::string_view key = word.substr(0, eq);
+        const std::string_view value = eq == std::string_view::npos ? std::string_view() : word.substr(eq + 1);
+        const std::optional<double> number = detail::parseNumber(value);
+        if (key == "material" && (value == "hss" || value == "carbide" || value == "coated-carbide")) {
+          tool.material = std::string(value);
+        } else if (key == "edge" && number && *number >= 0.0) {
+          tool.edge = *number;
+        } else {
+          error(codes::kLibraryBadOption, word, {std::string(word)});
+          ok = false;
+        }
+      }
+    }
     if (!ok) continue;
     lineOfId.emplace(tool.id, lineNo);
     tool.line = lineNo;

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "klueng/core/cut/cut_simulator.h"
+#include "klueng/core/cut/cutting_data.h"
 #include "klueng/core/cut/guess_fit.h"
 #include "klueng/core/cut/part_features.h"
 #include "klueng/core/io/folder_files.h"
@@ -138,6 +139,12 @@ GradedProgram gradeProgram(const std::string& path, const JobInput& base) {
       return g;
     }
     g.part = sim.stock();
+    // The teacher's view of its cuts, with the tools the cut used (measured on the same run).
+    const io::JobHeader& header = job->file()->header;
+    CuttingDataOptions cutting =
+        cuttingDataOptions(header.material, fit.setup.tools, fit.setup.machine, shippedMaterials());
+    cutting.units = job->units();
+    g.cuttingWarnings = measureCuts(timeline, CutSetup::from(header, fit.setup), cutting).warnings;
   } catch (const std::exception& ex) {  // one file must never end the batch
     g = GradedProgram{};
     g.errors = 1;

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <system_error>
 
+#include "klueng/core/cut/cutting_data.h"
 #include "klueng/core/io/macro_variables.h"
 #include "klueng/core/io/tool_config.h"
 #include "klueng/core/io/tool_library.h"
@@ -29,6 +30,7 @@ std::vector<std::string> setupInputFiles(const machine::LoadedSetup& loaded) {
   files.push_back(io::shippedToolLibraryPath());
   for (const io::LibraryTool& tool : library.tools) files.push_back(library.bitmapPath(tool));
   files.push_back(io::shippedCuttingSpeedsPath());
+  files.push_back(cut::shippedMaterialsPath());  // the cutting data's materials (issue 39)
   for (const std::string& folder : machine::machineFolders(loaded.dir)) {
     std::error_code ec;
     for (fs::directory_iterator it(folder, ec); !ec && it != fs::directory_iterator(); it.increment(ec))

@@ -181,16 +181,37 @@ TEST_P(LibraryErrors, NameFileLineAndColumn) {
   EXPECT_EQ(r.value->tools.size(), 1u);  // the bad line is left out, the good one kept
 }
 
-INSTANTIATE_TEST_SUITE_P(Cases, LibraryErrors,
-                         ::testing::Values(BadLine{"x | turning | 10", "F160", 1},
-                                           BadLine{"Bad_ID! | turning | 10 | 0 | 3 | 0 | a.png | A | ก", "F161", 1},
-                                           BadLine{"ok | turning | 10 | 0 | 3 | 0 | a.png | A | ก", "F162", 1},
-                                           BadLine{"t2 | knurling | 10 | 0 | 3 | 0 | a.png | A | ก", "F163", 6},
-                                           BadLine{"t2 | turning | 0.5 | 0 | 3 | 0 | a.png | A | ก", "F164", 16},
-                                           BadLine{"t2 | turning | 10 | -1 | 3 | 0 | a.png | A | ก", "F165", 21},
-                                           BadLine{"t2 | turning | 10 | 0 | 12 | 0 | a.png | A | ก", "F166", 25},
-                                           BadLine{"t2 | turning | 10 | 0 | 3 | 0 | a.gif | A | ก", "F167", 33},
-                                           BadLine{"t2 | turning | 10 | 0 | 3 | 0 | a.png |  | ก", "F168", 40}));
+INSTANTIATE_TEST_SUITE_P(
+    Cases, LibraryErrors,
+    ::testing::Values(BadLine{"x | turning | 10", "F160", 1},
+                      BadLine{"Bad_ID! | turning | 10 | 0 | 3 | 0 | a.png | A | ก", "F161", 1},
+                      BadLine{"ok | turning | 10 | 0 | 3 | 0 | a.png | A | ก", "F162", 1},
+                      BadLine{"t2 | knurling | 10 | 0 | 3 | 0 | a.png | A | ก", "F163", 6},
+                      BadLine{"t2 | turning | 0.5 | 0 | 3 | 0 | a.png | A | ก", "F164", 16},
+                      BadLine{"t2 | turning | 10 | -1 | 3 | 0 | a.png | A | ก", "F165", 21},
+                      BadLine{"t2 | turning | 10 | 0 | 12 | 0 | a.png | A | ก", "F166", 25},
+                      BadLine{"t2 | turning | 10 | 0 | 3 | 0 | a.gif | A | ก", "F167", 33},
+                      BadLine{"t2 | turning | 10 | 0 | 3 | 0 | a.png |  | ก", "F168", 40},
+                      BadLine{"t2 | turning | 10 | 0 | 3 | 0 | a.png | A | ก | material=hss edge=x", "F172", 62},
+                      BadLine{"t2 | turning | 10 | 0 | 3 | 0 | a.png | A | ก | material=steel", "F172", 49}));
+
+// Issue 39: the optional 10th field says the tool's cutting material and its edge's length.
+TEST(Library, ToolMaterialAndEdgeAreOptional) {
+  const auto r = parseToolLibrary(
+      "a | turning | 10 | 0.8 | 3 | 0 | a.png | A | ก | material=coated-carbide edge=12.9\n"
+      "b | drill | 10 | 0 | 7 | 8 | b.png | B | ข |  material=hss \n"
+      "c | turning | 10 | 0.4 | 3 | 0 | c.png | C | ค\n",
+      "/lib", "library.cfg");
+  ASSERT_TRUE(r.ok()) << codes(r.diagnostics);
+  ASSERT_EQ(r.value->tools.size(), 3u);
+  EXPECT_EQ(r.value->tools[0].material, "coated-carbide");
+  EXPECT_DOUBLE_EQ(r.value->tools[0].edge, 12.9);
+  EXPECT_EQ(r.value->tools[1].material, "hss");
+  EXPECT_DOUBLE_EQ(r.value->tools[1].edge, 0.0);
+  EXPECT_EQ(r.value->tools[2].material, "");
+  // The shipped library says every tool's material.
+  for (const LibraryTool& t : shippedToolLibrary().tools) EXPECT_FALSE(t.material.empty()) << t.id;
+}
 
 TEST(Library, AMissingBitmapIsF169OnItsLine) {
   const auto dir = std::filesystem::temp_directory_path() / ("klueng-library-test-" + std::to_string(::getpid()));
@@ -207,6 +228,25 @@ TEST(Library, AMissingBitmapIsF169OnItsLine) {
   EXPECT_EQ(r.diagnostics[0].code, "F169");
   EXPECT_EQ(r.diagnostics[0].range, (SourceRange{2, 1, 4}));
   std::filesystem::remove_all(dir);
+}
+
+// Issue 39: a station's line may say its tool's cutting material after ` | `; it is written back.
+TEST(Library, ToolsCfgLineSaysTheToolMaterial) {
+  const auto r =
+      parseToolTable("a.bmp | material=hss\n\nlibrary:cnmg-80-r04 | material=carbide\nb.bmp\n\n\n\n\n", "/d", "t.cfg");
+  ASSERT_TRUE(r.ok()) << codes(r.diagnostics);
+  EXPECT_EQ(r.value->bitmap[0], "a.bmp");
+  EXPECT_EQ(r.value->material[0], "hss");
+  EXPECT_EQ(r.value->libraryId(3), "cnmg-80-r04");
+  EXPECT_EQ(r.value->material[2], "carbide");
+  EXPECT_EQ(r.value->material[3], "");
+  EXPECT_EQ(formatToolTable(*r.value),
+            "a.bmp | material=hss\n\nlibrary:cnmg-80-r04 | material=carbide\nb.bmp\n\n\n\n\n");
+  const auto bad = parseToolTable("a.bmp | material=diamond\n\n\n\n\n\n\n\n", "/d", "t.cfg");
+  ASSERT_EQ(bad.diagnostics.size(), 1u) << codes(bad.diagnostics);
+  EXPECT_EQ(bad.diagnostics[0].code, "F175");
+  EXPECT_EQ(bad.diagnostics[0].range, (SourceRange{1, 9, 16}));
+  EXPECT_EQ(bad.value->bitmap[0], "a.bmp");  // the tool itself is kept
 }
 
 TEST(Library, ToolsCfgNamesALibraryTool) {

@@ -128,6 +128,9 @@ class CutSimulator {
   const Chuck& chuck() const { return chuck_; }
   double removedVolume() const { return stock_.removedVolume(); }
   const std::vector<Diagnostic>& toolDiagnostics() const { return tools_.diagnostics(); }
+  // Every removal from here on adds to `tally` (nullptr: none). Forward runs only: going
+  // back or reset() restores a stock without it.
+  void setRemovalTally(RemovalTally* tally) { stock_.setTally(tally); }
   // A guessed tool (io::ToolTable::guessed) whose holder or body touches the stock
   // or the chuck: a warning, once a station, and the run goes on (issue 26).
   const std::vector<Diagnostic>& warnings() const { return warnings_; }

@@ -16,6 +16,19 @@ struct Interval {
   double hi = 0.0;
 };
 
+// What remove() takes while a tally is attached (Stock::setTally; cutting data, issue 39):
+// the half section's area (z, radius) and, per column, the radial length removed.
+struct RemovalTally {
+  double sectionArea = 0.0;    // mm^2
+  std::vector<double> radial;  // per column, mm (sized to the stock's columns on attach)
+  std::vector<int> touched;    // the columns with radial > 0, in first-touch order
+  void clear() {
+    for (int i : touched) radial[static_cast<std::size_t>(i)] = 0.0;
+    touched.clear();
+    sectionArea = 0.0;
+  }
+};
+
 class Stock {
  public:
   Stock() = default;
@@ -90,6 +103,10 @@ class Stock {
     if (dirtyFirst_ <= dirtyLast_) settleDirty();
   }
 
+  // Attach (or detach, nullptr) a tally every removal adds to; it must outlive the attachment.
+  // A plain run has none: removeFromMaterial asks one pointer.
+  void setTally(RemovalTally* tally);
+
   double volume() const;                             // mm^3 of material left
   double initialVolume() const;                      // mm^3 of the bar
   double removedVolume() const { return removed_; }  // sum of what remove() took
@@ -111,8 +128,9 @@ class Stock {
   std::vector<double> blockMax_;  // max outer radius per block of kBlock columns
   std::vector<double> superMax_;  // and per super-block of kSuper columns (kBlock blocks)
   std::vector<char> caught_;      // columns of parts cut off (empty until the first)
-  bool deferMaxima_ = false;      // a Batch is open
-  int dirtyFirst_ = 0;            // blocks whose maxima wait for settle(): [first, last]
+  RemovalTally* tally_ = nullptr;
+  bool deferMaxima_ = false;  // a Batch is open
+  int dirtyFirst_ = 0;        // blocks whose maxima wait for settle(): [first, last]
   int dirtyLast_ = -1;
 };
 

@@ -38,6 +38,10 @@ struct ToolTable {
   // its resolution, nose radius and tip. Plain bitmaps: empty / 2 px/mm.
   std::array<std::string, kMaxStations> libraryPath;
   std::array<double, kMaxStations> pixelsPerMm = filledPixelsPerMm();
+  // The tool's cutting material as the line says it, after ` | `: `hss`, `carbide`,
+  // `coated-carbide` (`01-turning.bmp | material=hss`); empty = the library tool's, else not
+  // known (issue 39: the cutting speeds are judged by it). Tool Select edits it.
+  std::array<std::string, kMaxStations> material;
   int stations = kDefaultTurretStations;  // turret size the table was read for
   std::string folder;                     // folder of tools.cfg, to resolve relative names
   // Bitmaps that exist but do not decode (machine/setup_files.h sets them): no tool there.
@@ -92,6 +96,12 @@ struct MachineConfig {
   double accelX = 0.0;
   double accelZ = 0.0;
   double maxSpindleRpm = 3000.0;
+  // What the spindle can give and the chuck allows (issue 39, cutting data): the motor's
+  // rating in kW, its largest torque in N*m, the chuck's highest permitted rpm. 0 = not
+  // known (the machine file or machine.cfg does not say): that check is not made.
+  double spindlePowerKw = 0.0;
+  double spindleTorqueNm = 0.0;
+  double chuckMaxRpm = 0.0;
   double referenceX = 0.0;  // diameter, work coordinates at start
   double referenceZ = 300.0;
   double startX = 0.0;  // tool start position (diameter)

@@ -38,6 +38,11 @@ struct LibraryTool {
   std::string bitmap;       // file name, relative to the library's folder
   std::string nameEn;
   std::string nameTh;
+  // Optional 10th field, `key=value` words (issue 39): material=hss|carbide|coated-carbide
+  // (the cutting-speed range the cutting data judges by; empty = not known) and edge=MM (the
+  // insert's cutting-edge length; 0 = not known).
+  std::string material;
+  double edge = 0.0;
   int line = 0;  // its line in library.cfg, for diagnostics
 };
 

@@ -58,6 +58,9 @@ struct GradedProgram {
   double cycleTime = 0.0;                    // seconds (up to the alarm)
   std::vector<std::string> subprogramFiles;  // files of the folder its calls read (the program's own)
   std::vector<int> stations;                 // the turret stations its run used, in order
+  // The cutting-data warnings of its run (W330-W336, cut/cutting_data.h; issue 39): what a teacher
+  // would say about its speeds, feeds and depths. Not part of pass/fail.
+  std::vector<Diagnostic> cuttingWarnings;
   // A folder entry that was not read (io::folderEntryRefusal: F158 a link out of the folder,
   // F157 a pipe, F102 a folder, F101 a dangling link); firstError says the same in words.
   std::optional<Diagnostic> refusal;

@@ -1,0 +1,464 @@
+// Cutting data of a recorded run (issue 39): cut/cutting_data.h, docs/cutting-data.md.
+#include "klueng/core/cut/cutting_data.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <numbers>
+#include <sstream>
+#include <tuple>
+
+#include "klueng/core/diagnostic_codes.h"
+#include "klueng/core/io/tool_library.h"
+
+namespace klueng::core::cut {
+
+namespace {
+
+constexpr double kFeetPerMetre = 1.0 / 0.3048;
+
+std::string_view cdTrim(std::string_view s) {
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+  return s;
+}
+
+std::vector<std::string_view> cdSplit(std::string_view s, char sep) {
+  std::vector<std::string_view> out;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t at = s.find(sep, start);
+    out.push_back(cdTrim(s.substr(start, at == std::string_view::npos ? std::string_view::npos : at - start)));
+    if (at == std::string_view::npos) return out;
+    start = at + 1;
+  }
+}
+
+// Lower case (ASCII) without spaces: "Al 6061" and "al6061" name the same row.
+std::string cdKey(std::string_view s) {
+  std::string out;
+  for (const char c : s)
+    if (!std::isspace(static_cast<unsigned char>(c)))
+      out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+std::optional<double> cdNumber(std::string_view s) {
+  double v = 0.0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || end != s.data() + s.size() || s.empty() || !std::isfinite(v) || v < 0.0) return std::nullopt;
+  return v;
+}
+
+bool cdRange(std::string_view s, double& lo, double& hi) {
+  const std::size_t dash = s.find('-');
+  if (dash == std::string_view::npos) return false;
+  const auto a = cdNumber(cdTrim(s.substr(0, dash)));
+  const auto b = cdNumber(cdTrim(s.substr(dash + 1)));
+  if (!a || !b || *a > *b) return false;
+  lo = *a;
+  hi = *b;
+  return true;
+}
+
+Diagnostic cdFileError(const char* code, int line, std::vector<std::string> args) {
+  return Diagnostic{Severity::Error, code, SourceRange{line, 1, 0, 0}, std::move(args)};
+}
+
+}  // namespace
+
+std::string_view toolMaterialId(ToolMaterial m) {
+  switch (m) {
+    case ToolMaterial::Hss: return "hss";
+    case ToolMaterial::Carbide: return "carbide";
+    case ToolMaterial::CoatedCarbide: return "coated-carbide";
+    case ToolMaterial::Unknown: break;
+  }
+  return "";
+}
+
+bool parseToolMaterialId(std::string_view id, ToolMaterial& out) {
+  for (const ToolMaterial m : {ToolMaterial::Hss, ToolMaterial::Carbide, ToolMaterial::CoatedCarbide})
+    if (id == toolMaterialId(m)) {
+      out = m;
+      return true;
+    }
+  return false;
+}
+
+const Material* MaterialTable::find(std::string_view headerMaterial) const {
+  const std::string key = cdKey(headerMaterial);
+  if (key.empty()) return nullptr;
+  for (const Material& m : rows)
+    for (const std::string& name : m.names)
+      if (cdKey(name) == key) return &m;
+  // As teachers write it, with more words ("Steel S45C", "Aluminium 6061"): a name the header holds,
+  // the most specific first (a row lists its names from its grade to its generic words).
+  const Material* best = nullptr;
+  std::size_t bestRank = 0;
+  std::size_t bestLength = 0;
+  for (const Material& m : rows)
+    for (std::size_t rank = 0; rank < m.names.size(); ++rank) {
+      const std::string k = cdKey(m.names[rank]);
+      if (k.size() < 3 || key.find(k) == std::string::npos) continue;  // "pom", "304" at least
+      if (!best || rank < bestRank || (rank == bestRank && k.size() > bestLength)) {
+        best = &m;
+        bestRank = rank;
+        bestLength = k.size();
+      }
+    }
+  return best;
+}
+
+std::string MaterialTable::idList() const {
+  std::string out;
+  for (const Material& m : rows) out += (out.empty() ? "" : ", ") + m.id;
+  return out;
+}
+
+io::ReadResult<MaterialTable> parseMaterials(std::string_view text, const std::string& fileName) {
+  io::ReadResult<MaterialTable> result;
+  MaterialTable table;
+  int lineNo = 0;
+  std::size_t pos = 0;
+  while (pos <= text.size()) {
+    const std::size_t end = text.find('\n', pos);
+    std::string_view line = text.substr(pos, end == std::string_view::npos ? std::string_view::npos : end - pos);
+    pos = end == std::string_view::npos ? text.size() + 1 : end + 1;
+    ++lineNo;
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    const std::string_view content = cdTrim(line);
+    if (content.empty() || content.front() == '#') continue;
+    const std::vector<std::string_view> f = cdSplit(content, '|');
+    if (f.size() != 9) {
+      result.diagnostics.push_back(
+          cdFileError(codes::kMaterialLineFields, lineNo, {fileName, std::to_string(f.size())}));
+      continue;
+    }
+    Material m;
+    m.id = std::string(f[0]);
+    for (const std::string_view name : cdSplit(f[1], ','))
+      if (!name.empty()) m.names.push_back(std::string(name));
+    if (std::find(m.names.begin(), m.names.end(), m.id) == m.names.end()) m.names.insert(m.names.begin(), m.id);
+    m.nameEn = std::string(f[2]);
+    m.nameTh = std::string(f[3]);
+    bool ok = true;
+    const auto bad = [&](const char* what, std::string_view text) {
+      result.diagnostics.push_back(cdFileError(codes::kMaterialBadNumber, lineNo, {fileName, what, std::string(text)}));
+      ok = false;
+    };
+    if (!cdRange(f[4], m.hssMin, m.hssMax)) bad("HSS Vc", f[4]);
+    if (!cdRange(f[5], m.carbideMin, m.carbideMax)) bad("carbide Vc", f[5]);
+    if (const auto v = cdNumber(f[6]))
+      m.kc11 = *v;
+    else
+      bad("kc1.1", f[6]);
+    if (const auto v = cdNumber(f[7]); v && *v < 1.0)
+      m.mc = *v;
+    else
+      bad("mc", f[7]);
+    m.source = std::string(f[8]);
+    m.line = lineNo;
+    if (ok) table.rows.push_back(std::move(m));
+  }
+  result.value = std::move(table);
+  return result;
+}
+
+io::ReadResult<MaterialTable> readMaterials(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    io::ReadResult<MaterialTable> r;
+    r.diagnostics.push_back(cdFileError(codes::kMaterialLineFields, 0, {path, "0"}));
+    return r;
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parseMaterials(text.str(), path);
+}
+
+std::string shippedMaterialsPath() {
+  return (std::filesystem::path(io::shippedConfigDir()) / "resources" / "parts" / "materials.cfg").string();
+}
+
+const MaterialTable& shippedMaterials() {
+  static const MaterialTable table = readMaterials(shippedMaterialsPath()).value.value_or(MaterialTable{});
+  return table;
+}
+
+CuttingDataOptions cuttingDataOptions(const std::string& headerMaterial, const io::ToolTable& tools,
+                                      const io::MachineConfig& machine, const MaterialTable& materials,
+                                      const io::ToolLibrary* library) {
+  CuttingDataOptions o;
+  o.material = materials.find(headerMaterial);
+  o.spindlePowerKw = machine.spindlePowerKw;
+  o.spindleTorqueNm = machine.spindleTorqueNm;
+  o.chuckMaxRpm = machine.chuckMaxRpm;
+  if (!library) library = &io::shippedToolLibrary();
+  for (int tool = 1; tool <= io::kToolCount; ++tool) {
+    const std::size_t k = static_cast<std::size_t>(tool - 1);
+    const std::string id = tools.libraryId(tool);
+    const io::LibraryTool* t = id.empty() ? nullptr : library->find(id);
+    // The station's own word (tools.cfg, Tool Select) wins over the library's.
+    if (!parseToolMaterialId(tools.material[k], o.toolMaterial[k]) && t)
+      parseToolMaterialId(t->material, o.toolMaterial[k]);
+    if (!t) continue;
+    o.edgeLength[k] = t->edge;
+    o.noseRadius[k] = t->noseRadius;
+    if (t->kind == io::ToolKind::Drill || t->kind == io::ToolKind::CentreDrill) o.drillDiameter[k] = t->size;
+  }
+  return o;
+}
+
+double roughnessRz(double feed, double noseRadius) {
+  return noseRadius > 0.0 ? feed * feed / (8.0 * noseRadius) * 1000.0 : 0.0;
+}
+
+double roughnessRa(double feed, double noseRadius) {
+  return noseRadius > 0.0 ? feed * feed / (32.0 * noseRadius) * 1000.0 : 0.0;
+}
+
+double specificCuttingForce(double kc11, double mc, double h) { return h > 0.0 ? kc11 * std::pow(h, -mc) : 0.0; }
+
+namespace {
+
+struct WarningKeeper {
+  const CuttingDataOptions& options;
+  std::vector<Diagnostic>& out;
+  std::map<std::tuple<std::string, int, int>, bool> said;
+  std::map<std::string, int> perCode;
+  void add(const char* code, const machine::Move& m, std::vector<std::string> args) {
+    if (!said.emplace(std::make_tuple(std::string(code), m.file, m.line), true).second) return;
+    if (++perCode[code] > options.warningsPerCode) return;
+    out.push_back(Diagnostic{Severity::Warning, code, SourceRange{m.line, 1, 0, m.file}, std::move(args)});
+  }
+};
+
+std::string_view toolMaterialEn(ToolMaterial m) {
+  switch (m) {
+    case ToolMaterial::Hss: return "HSS";
+    case ToolMaterial::Carbide: return "carbide";
+    case ToolMaterial::CoatedCarbide: return "coated carbide";
+    case ToolMaterial::Unknown: break;
+  }
+  return "";
+}
+
+std::string_view toolMaterialTh(ToolMaterial m) {
+  switch (m) {
+    case ToolMaterial::Hss: return "ไฮสปีด (HSS)";
+    case ToolMaterial::Carbide: return "คาร์ไบด์";
+    case ToolMaterial::CoatedCarbide: return "คาร์ไบด์เคลือบผิว";
+    case ToolMaterial::Unknown: break;
+  }
+  return "";
+}
+
+// Numbers in the program's units.
+struct CdUnits {
+  bool inch = false;
+  double length(double mm) const { return inch ? mm / kMmPerInch : mm; }
+  double speed(double mPerMin) const { return inch ? mPerMin * kFeetPerMetre : mPerMin; }
+  std::string len(double mm) const { return inch ? fmt::format("{:.4f}", length(mm)) : fmt::format("{:.2f}", mm); }
+  std::string feed(double mm) const { return inch ? fmt::format("{:.4f}", length(mm)) : fmt::format("{:.3f}", mm); }
+  std::string vc(double mPerMin) const { return fmt::format("{:.0f}", speed(mPerMin)); }
+  const char* vcUnit() const { return inch ? "ft/min" : "m/min"; }
+  const char* unitArg() const { return inch ? kUnitArgInch : kUnitArgMm; }
+};
+
+}  // namespace
+
+CuttingData measureCuts(const machine::Timeline& timeline, const CutSetup& setup, const CuttingDataOptions& options) {
+  CuttingData data;
+  CutOptions cutOptions;
+  cutOptions.checkpointBudgetBytes = 0;
+  CutSimulator sim(timeline, setup, cutOptions);
+  RemovalTally tally;
+  sim.setRemovalTally(&tally);
+  const double sinKr = std::sin(kEnteringAngleDeg * std::numbers::pi / 180.0);
+  const Material* material = options.material;
+  const CdUnits u{options.units == DisplayUnits::Inch};
+  WarningKeeper warn{options, data.warnings, {}, {}};
+
+  const auto& moves = timeline.moves;
+  for (std::size_t i = 0; i < moves.size(); ++i) {
+    const machine::Move& m = moves[i];
+    tally.clear();
+    sim.advanceTo(m.tEnd);
+    if (sim.alarm()) {
+      data.stoppedByAlarm = true;
+      break;
+    }
+    const double topRpm = std::max(m.rpm, m.rpmEnd);
+    if (options.chuckMaxRpm > 0.0 && m.spindle != machine::SpindleDir::Stopped && topRpm > options.chuckMaxRpm + 0.5)
+      warn.add(codes::kRpmOverChuck, m, {fmt::format("{:.0f}", topRpm), fmt::format("{:.0f}", options.chuckMaxRpm)});
+    const bool thread = m.kind == machine::MoveKind::Thread;
+    if (!(m.kind == machine::MoveKind::Line || m.kind == machine::MoveKind::Arc || thread)) continue;
+    if (tally.sectionArea <= 1e-9 || m.rpm <= 0.0 || m.tool < 1 || m.tool > io::kToolCount) continue;
+    const std::size_t k = static_cast<std::size_t>(m.tool - 1);
+
+    CutNumbers c;
+    c.move = i;
+    c.line = m.line;
+    c.file = m.file;
+    c.blockIndex = m.blockIndex;
+    c.tool = m.tool;
+    c.tStart = m.tStart;
+    c.tEnd = m.tEnd;
+    c.thread = thread;
+    // Where the edge cuts fastest: the larger of the move's two ends (a drill at its rim).
+    const double drill = options.drillDiameter[k];
+    const double d0 = drill > 0.0 ? drill : 2.0 * std::abs(m.path.start.y());
+    const double d1 = drill > 0.0 ? drill : 2.0 * std::abs(m.path.end.y());
+    const double vc0 = std::numbers::pi * d0 * m.rpm / 1000.0;
+    const double vc1 = std::numbers::pi * d1 * m.rpmEnd / 1000.0;
+    c.diameter = vc1 > vc0 ? d1 : d0;
+    c.rpm = vc1 > vc0 ? m.rpmEnd : m.rpm;
+    c.vc = std::max(vc0, vc1);
+    c.feed = thread ? m.lead : m.feed / m.rpm;
+    // The depth, across the feed: along Z (turning, boring, drilling) the deepest radial cut of a
+    // column; along X (facing, grooving) the half section removed over the radial length engaged.
+    const double along = std::abs(m.path.end.x() - m.path.start.x());
+    const double across = std::abs(m.path.end.y() - m.path.start.y());
+    double deepest = 0.0;
+    for (const int col : tally.touched) deepest = std::max(deepest, tally.radial[static_cast<std::size_t>(col)]);
+    c.depth = along >= across ? deepest : (deepest > 0.0 ? tally.sectionArea / deepest : 0.0);
+    c.chipWidth = c.depth / sinKr;
+    c.chipThickness = c.feed * sinKr;
+    c.removalRate = c.vc * c.depth * c.feed;
+    const int row = m.offset >= 1 ? m.offset : m.tool;
+    const double offsetR = row >= 1 && row <= io::kOffsetCount ? setup.offsets.at(row).r : 0.0;
+    c.noseRadius = offsetR > 0.0 ? offsetR : options.noseRadius[k];
+    if (!thread && drill <= 0.0 && c.noseRadius > 0.0) {
+      c.rz = roughnessRz(c.feed, c.noseRadius);
+      c.ra = roughnessRa(c.feed, c.noseRadius);
+    }
+    if (material && material->kc11 > 0.0 && !thread && drill <= 0.0) {
+      c.kc = specificCuttingForce(material->kc11, material->mc, c.chipThickness);
+      c.force = c.kc * c.depth * c.feed;
+      c.power = c.force * c.vc / 60000.0;
+      c.torque = c.force * c.diameter / 2000.0;
+    }
+
+    // The teacher's warnings, once a block each.
+    const ToolMaterial tm = options.toolMaterial[k];
+    if (material && tm != ToolMaterial::Unknown && !thread) {
+      const bool hss = tm == ToolMaterial::Hss;
+      const double lo = hss ? material->hssMin : material->carbideMin;
+      const double hi = hss ? material->hssMax : material->carbideMax;
+      const double mid = (lo + hi) / 2.0;
+      const std::string rpmFix =
+          c.diameter > 0.0 ? fmt::format("{:.0f}", mid * 1000.0 / (std::numbers::pi * c.diameter)) : "?";
+      const std::vector<std::string> common = {
+          u.vc(c.vc),       u.vcUnit(),      std::string(toolMaterialEn(tm)), std::string(toolMaterialTh(tm)),
+          material->nameEn, material->nameTh};
+      if (hi > 0.0 && c.vc > hi * 1.005) {
+        std::vector<std::string> args = common;
+        args.push_back(u.vc(hi));
+        args.push_back(rpmFix);
+        warn.add(codes::kCutSpeedHigh, m, std::move(args));
+      } else if (lo > 0.0 && c.vc < lo * 0.995 && c.diameter > 0.0) {
+        std::vector<std::string> args = common;
+        args.push_back(u.vc(lo));
+        args.push_back(rpmFix);
+        warn.add(codes::kCutSpeedLow, m, std::move(args));
+      }
+    }
+    if (c.ra && c.depth <= options.finishingDepth && options.finishRa > 0.0 && *c.ra > options.finishRa * 1.005) {
+      const double fmax = std::sqrt(options.finishRa * 32.0 * c.noseRadius / 1000.0);
+      warn.add(codes::kFinishTooRough, m,
+               {u.feed(c.feed), u.len(c.noseRadius), fmt::format("{:.1f}", *c.ra), fmt::format("{:.1f}", *c.rz),
+                fmt::format("{:.1f}", options.finishRa), u.feed(fmax), u.unitArg()});
+    }
+    const double edge = options.edgeLength[k];
+    if (edge > 0.0 && c.depth > edge * 2.0 / 3.0 * 1.005)
+      warn.add(codes::kDepthOverEdge, m, {u.len(c.depth), u.len(edge), u.len(edge * 2.0 / 3.0), u.unitArg()});
+    if (options.spindlePowerKw > 0.0 && c.power > options.spindlePowerKw * 1.005)
+      warn.add(codes::kPowerOverSpindle, m,
+               {fmt::format("{:.1f}", c.power), fmt::format("{:.1f}", options.spindlePowerKw), u.len(c.depth),
+                u.feed(c.feed), u.unitArg()});
+    if (options.spindleTorqueNm > 0.0 && c.torque > options.spindleTorqueNm * 1.005)
+      warn.add(codes::kTorqueOverSpindle, m,
+               {fmt::format("{:.0f}", c.torque), fmt::format("{:.0f}", options.spindleTorqueNm), u.len(c.diameter),
+                u.unitArg()});
+    data.cuts.push_back(c);
+  }
+  return data;
+}
+
+namespace {
+
+void mergeCut(CutNumbers& into, const CutNumbers& c) {
+  into.tEnd = c.tEnd;
+  into.diameter = std::max(into.diameter, c.diameter);
+  into.rpm = std::max(into.rpm, c.rpm);
+  into.vc = std::max(into.vc, c.vc);
+  into.feed = std::max(into.feed, c.feed);
+  into.depth = std::max(into.depth, c.depth);
+  into.chipWidth = std::max(into.chipWidth, c.chipWidth);
+  into.chipThickness = std::max(into.chipThickness, c.chipThickness);
+  into.removalRate = std::max(into.removalRate, c.removalRate);
+  into.noseRadius = std::max(into.noseRadius, c.noseRadius);
+  if (c.rz) into.rz = std::max(into.rz.value_or(0.0), *c.rz);
+  if (c.ra) into.ra = std::max(into.ra.value_or(0.0), *c.ra);
+  into.kc = std::max(into.kc, c.kc);
+  into.force = std::max(into.force, c.force);
+  into.power = std::max(into.power, c.power);
+  into.torque = std::max(into.torque, c.torque);
+}
+
+}  // namespace
+
+std::optional<CutNumbers> CuttingData::ofLine(int file, int line) const {
+  std::optional<CutNumbers> out;
+  for (const CutNumbers& c : cuts) {
+    if (c.file != file || c.line != line) continue;
+    if (!out)
+      out = c;
+    else
+      mergeCut(*out, c);
+  }
+  return out;
+}
+
+std::string formatCuttingDataCsv(const CuttingData& data, DisplayUnits units) {
+  const bool inch = units == DisplayUnits::Inch;
+  const CdUnits u{inch};
+  std::string out = inch ? "line,file,tool,t_start_s,t_end_s,moves,diameter_in,rpm,vc_ft_min,f_in_rev,ap_in,"
+                           "chip_width_in,chip_thickness_in,q_in3_min,nose_radius_in,rz_um,ra_um,kc_n_mm2,fc_n,pc_kw,"
+                           "torque_nm,warnings\n"
+                         : "line,file,tool,t_start_s,t_end_s,moves,diameter_mm,rpm,vc_m_min,f_mm_rev,ap_mm,"
+                           "chip_width_mm,chip_thickness_mm,q_cm3_min,nose_radius_mm,rz_um,ra_um,kc_n_mm2,fc_n,pc_kw,"
+                           "torque_nm,warnings\n";
+  const auto codesOf = [&](int file, int line) {
+    std::string s;
+    for (const Diagnostic& d : data.warnings)
+      if (d.range.file == file && d.range.line == line && s.find(d.code) == std::string::npos)
+        s += (s.empty() ? "" : " ") + d.code;
+    return s;
+  };
+  const double q = inch ? 1.0 / 16.387064 : 1.0;  // cm^3 -> in^3
+  std::size_t i = 0;
+  while (i < data.cuts.size()) {
+    CutNumbers b = data.cuts[i];
+    std::size_t j = i + 1;
+    for (; j < data.cuts.size() && data.cuts[j].line == b.line && data.cuts[j].file == b.file; ++j)
+      mergeCut(b, data.cuts[j]);
+    const auto opt = [](const std::optional<double>& v) { return v ? fmt::format("{:.2f}", *v) : std::string(); };
+    out += fmt::format(
+        "{},{},{},{:.3f},{:.3f},{},{},{:.0f},{},{},{},{},{},{:.2f},{},{},{},{:.0f},{:.0f},{:.3f},{:.1f},{}\n", b.line,
+        b.file, b.tool, b.tStart, b.tEnd, j - i, u.len(b.diameter), b.rpm, u.vc(b.vc), u.feed(b.feed), u.len(b.depth),
+        u.len(b.chipWidth), u.feed(b.chipThickness), b.removalRate * q, u.len(b.noseRadius), opt(b.rz), opt(b.ra), b.kc,
+        b.force, b.power, b.torque, codesOf(b.file, b.line));
+    i = j;
+  }
+  return out;
+}
+
+}  // namespace klueng::core::cut
