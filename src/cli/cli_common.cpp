@@ -248,6 +248,38 @@ gcode::Dialect programMachine(const std::string& file, bool chosen, gcode::Diale
   return machine::machineOfProgram(*read.value, warnings).value_or(dialect);
 }
 
+ProgramArg programArg(const std::string& arg) {
+  ProgramArg program{arg == "-" ? std::string(kStdinName) : arg, std::nullopt, std::nullopt};
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(arg, ec);
+  const bool stream = arg == "-" || (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status) &&
+                                     !std::filesystem::is_directory(status));
+  if (!stream) return program;
+  const std::string path = arg == "-" ? std::string("/dev/stdin") : arg;
+  io::ReadResult<io::ProgramFile> read = io::readProgramFile(path);
+  for (Diagnostic& d : read.diagnostics)
+    for (std::string& a : d.args)
+      if (a == path) a = program.name;
+  program.file = std::move(read.value);
+  program.readDiagnostics = std::move(read.diagnostics);
+  return program;
+}
+
+void ProgramArg::into(core::job::JobInput& input) const {
+  input.path = name;
+  if (!readDiagnostics) return;
+  input.file = file;
+  input.readDiagnostics = readDiagnostics;
+  input.folder = std::string();  // a pipe has no folder of subprograms
+}
+
+gcode::Dialect programMachine(const ProgramArg& program, bool chosen, gcode::Dialect dialect,
+                              std::vector<Diagnostic>& warnings) {
+  if (!program.readDiagnostics) return programMachine(program.name, chosen, dialect, warnings);
+  if (chosen || !program.file) return dialect;
+  return machine::machineOfProgram(*program.file, warnings).value_or(dialect);
+}
+
 namespace {
 std::optional<double> positiveNumber(std::string_view s) {
   if (s.empty() || s.size() > 32) return std::nullopt;

@@ -180,10 +180,15 @@ std::shared_ptr<const Job> makeJob(JobInput input) {
   std::shared_ptr<Job> job(new Job());
   Job& j = *job;
   j.tools_.setup = input.setup;
+  const bool readBefore = input.readDiagnostics.has_value();
+  if (readBefore) {
+    j.diagnostics_ = std::move(*input.readDiagnostics);
+    input.readDiagnostics.reset();
+  }
   if (input.file) {
     j.file_ = std::move(input.file);
     input.file.reset();
-  } else {
+  } else if (!readBefore) {
     auto read = io::readProgramFile(input.path, input.defaultsForPlain);
     j.diagnostics_ = std::move(read.diagnostics);
     j.file_ = std::move(read.value);
