@@ -232,6 +232,14 @@ bool chooseMachine(const std::string& machine, machine::LoadedSetup& config, gco
   if (!machine.empty()) {
     std::vector<FileDiagnostic> why;
     const auto chosen = machine::resolveMachine(machine, why);
+    // `--machine deep` when machines/deep.machine is there but did not load: its own
+    // errors say why, not "no such machine" (issue 42 item 6).
+    if (!chosen && why.size() == 1 && why.front().diagnostic.code == codes::kUnknownMachine) {
+      std::vector<FileDiagnostic> own;
+      for (const FileDiagnostic& d : config.diagnostics)
+        if (std::filesystem::path(d.file).filename() == machine + ".machine") own.push_back(d);
+      if (!own.empty()) why = std::move(own);
+    }
     for (const FileDiagnostic& d : why) printDiagnostic(stderr, d.file, d.diagnostic, lang);
     if (!chosen) return false;
     dialect = *chosen;

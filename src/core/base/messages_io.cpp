@@ -136,7 +136,7 @@ constexpr MessageText kIoMessages[] = {
     {codes::kParameterNotWhole, "{0}: {1} must be a whole number from {3} to {4}, not {2}",
      "{0}: {1} ต้องเป็นจำนวนเต็มตั้งแต่ {3} ถึง {4} ไม่ใช่ {2}"},
     {codes::kParameterOutOfRange, "{0}: {1} = {2} is outside what a lathe can have ({3} to {4}); the default is used",
-     "{0}: {1} = {2} อยู่นอกช่วงที่เครื่องกลึงจะมีได้ ({3} ถึง {4}) จึงใช้ค่าเริ่มต้นแทน"},
+     "{0}: {1} = {2} อยู่นอกช่วงที่เครื่องกลึงจะมีได้ ({5} ถึง {4}) จึงใช้ค่าเริ่มต้นแทน"},
     {codes::kStartOutsideTravel, "{0}: the tool start {1} = {2} is outside the travel limits {3} to {4}",
      "{0}: ตำแหน่งเริ่มต้นของมีด {1} = {2} อยู่นอกระยะเคลื่อนที่ {3} ถึง {4}"},
 
