@@ -132,7 +132,9 @@ int runCheck(const std::vector<std::string>& args) {
 
   const std::vector<CheckedFile> files = expandFolders(o.files);
   for (const CheckedFile& file : files) {
-    const std::string& path = file.path;
+    const ProgramArg program =
+        file.inFolder ? ProgramArg{file.path, std::nullopt, std::nullopt} : programArg(file.path);
+    const std::string& path = program.name;
     if (file.refusal) {
       all.push_back({path, *file.refusal});
       summary.push_back(FileSummary{path, 1, 0, true});
@@ -141,9 +143,9 @@ int runCheck(const std::vector<std::string>& args) {
     }
     // A program that names its machine is checked on it (the setup with that machine's keys).
     std::vector<Diagnostic> machineWarnings;
-    const gcode::Dialect own = programMachine(path, o.dialectGiven, o.dialect, machineWarnings);
+    const gcode::Dialect own = programMachine(program, o.dialectGiven, o.dialect, machineWarnings);
     core::job::JobInput input = *request;
-    input.path = path;
+    program.into(input);
     input.folderRun = file.inFolder;
     if (own != o.dialect) {
       input.run.dialect = own;

@@ -28,6 +28,7 @@
 #include "klueng/core/design/part_design.h"
 #include "render/class_pdf_cells.h"
 #include "klueng/core/gcode/word_format.h"
+#include "klueng/core/io/file_read.h"
 #include "klueng/core/io/folder_files.h"
 #include "klueng/core/io/program_file.h"
 
@@ -132,6 +133,11 @@ int runClass(const std::vector<std::string>& args) {
   against.tolerance = o.tolerance;
   core::job::GradedProgram reference;
   if (!o.reference.empty()) {
+    // A named pipe is refused unopened, with its own message (issue 42 item 4).
+    if (const auto refused = io::wouldBlockOnOpen(o.reference)) {
+      printDiagnostic(stderr, o.reference, *refused, o.lang);
+      return 2;
+    }
     reference = core::job::gradeProgram(o.reference, *request);
     if (!reference.part) {
       printCliError("class", codes::kCliReferenceFails, o.lang, {o.reference, reference.firstError + reference.alarm});

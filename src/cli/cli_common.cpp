@@ -232,6 +232,14 @@ bool chooseMachine(const std::string& machine, machine::LoadedSetup& config, gco
   if (!machine.empty()) {
     std::vector<FileDiagnostic> why;
     const auto chosen = machine::resolveMachine(machine, why);
+    // `--machine deep` when machines/deep.machine is there but did not load: its own
+    // errors say why, not "no such machine" (issue 42 item 6).
+    if (!chosen && why.size() == 1 && why.front().diagnostic.code == codes::kUnknownMachine) {
+      std::vector<FileDiagnostic> own;
+      for (const FileDiagnostic& d : config.diagnostics)
+        if (std::filesystem::path(d.file).filename() == machine + ".machine") own.push_back(d);
+      if (!own.empty()) why = std::move(own);
+    }
     for (const FileDiagnostic& d : why) printDiagnostic(stderr, d.file, d.diagnostic, lang);
     if (!chosen) return false;
     dialect = *chosen;
@@ -246,6 +254,38 @@ gcode::Dialect programMachine(const std::string& file, bool chosen, gcode::Diale
   const io::ReadResult<io::ProgramFile> read = io::readProgramFile(file);
   if (!read.value) return dialect;  // the job's own reading reports why
   return machine::machineOfProgram(*read.value, warnings).value_or(dialect);
+}
+
+ProgramArg programArg(const std::string& arg) {
+  ProgramArg program{arg == "-" ? std::string(kStdinName) : arg, std::nullopt, std::nullopt};
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(arg, ec);
+  const bool stream = arg == "-" || (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status) &&
+                                     !std::filesystem::is_directory(status));
+  if (!stream) return program;
+  const std::string path = arg == "-" ? std::string("/dev/stdin") : arg;
+  io::ReadResult<io::ProgramFile> read = io::readProgramFile(path);
+  for (Diagnostic& d : read.diagnostics)
+    for (std::string& a : d.args)
+      if (a == path) a = program.name;
+  program.file = std::move(read.value);
+  program.readDiagnostics = std::move(read.diagnostics);
+  return program;
+}
+
+void ProgramArg::into(core::job::JobInput& input) const {
+  input.path = name;
+  if (!readDiagnostics) return;
+  input.file = file;
+  input.readDiagnostics = readDiagnostics;
+  input.folder = std::string();  // a pipe has no folder of subprograms
+}
+
+gcode::Dialect programMachine(const ProgramArg& program, bool chosen, gcode::Dialect dialect,
+                              std::vector<Diagnostic>& warnings) {
+  if (!program.readDiagnostics) return programMachine(program.name, chosen, dialect, warnings);
+  if (chosen || !program.file) return dialect;
+  return machine::machineOfProgram(*program.file, warnings).value_or(dialect);
 }
 
 namespace {

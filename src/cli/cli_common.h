@@ -103,6 +103,26 @@ bool chooseMachine(const std::string& machine, core::machine::LoadedSetup& confi
 core::gcode::Dialect programMachine(const std::string& file, bool chosen, core::gcode::Dialect dialect,
                                     std::vector<core::Diagnostic>& warnings);
 
+// The name a program read from standard input (`check -`: an editor's linter pipes
+// its buffer) goes by in every message, as GCC names it.
+inline constexpr const char* kStdinName = "<stdin>";
+// A program named on the command line (issue 42 item 4). One that is not an
+// ordinary file — `-` (standard input), /dev/stdin, a shell's <(cmd), a named
+// pipe — is read here, once, since a pipe cannot be read twice (a named pipe is
+// refused unopened, F157); an ordinary file is left to the job, which reads it.
+struct ProgramArg {
+  std::string name;                           // what the messages say: the argument, kStdinName for "-"
+  std::optional<core::io::ProgramFile> file;  // read here
+  std::optional<std::vector<core::Diagnostic>> readDiagnostics;  // set when read here
+  // The program into a job's input: its path (name), what was read, and no folder of
+  // subprograms for a stream (it has none).
+  void into(core::job::JobInput& input) const;
+};
+ProgramArg programArg(const std::string& arg);
+// programMachine for a program that may have been read already.
+core::gcode::Dialect programMachine(const ProgramArg& program, bool chosen, core::gcode::Dialect dialect,
+                                    std::vector<core::Diagnostic>& warnings);
+
 // --stock DxL[xBORE][in]: "50x100", "2.1x4in", "118x80x90" (Ø118 tube, 80 long,
 // Ø90 bore). 0 < D, L <= 9999.999 (what a header line and Job details hold: a
 // 1e308 bar would take minutes to draw and measure), 0 < BORE < D; mm unless

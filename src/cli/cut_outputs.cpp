@@ -93,7 +93,7 @@ CutOutcome runCut(const std::string& file, const io::JobHeader& header, const ma
     const std::string json = fmt::format(
         "{{\n"
         "  \"file\": {},\n"
-        "  \"cycle_time_s\": {:.4f},\n"
+        "  \"cycle_time_s\": {},\n"
         "  \"completed\": {},\n"
         "  \"alarms\": [{}],\n"
         "  \"tool_errors\": [{}],\n"
@@ -105,10 +105,11 @@ CutOutcome runCut(const std::string& file, const io::JobHeader& header, const ma
         "  \"resolution_mm\": {:.4f},\n"
         "  \"tool_end\": {{\"z\": {:.4f}, \"x\": {:.4f}}}\n"
         "}}\n",
-        jsonString(file), sim.endTime(), stop ? "false" : "true", alarms, toolErrors, sim.stock().diameter(),
-        sim.stock().length(), sim.stock().bore(), sim.stock().initialVolume(), sim.removedVolume(), part.volume(),
-        part.maxDiameter(), part.length(), part.leftFaceZ(), part.rightFaceZ(), sim.stock().resolution(),
-        tool.x() + 0.0, 2.0 * tool.y() + 0.0);
+        // JSON has no inf: a time no double holds is null (machine.cfg refuses what made it, issue 42).
+        jsonString(file), std::isfinite(sim.endTime()) ? fmt::format("{:.4f}", sim.endTime()) : std::string("null"),
+        stop ? "false" : "true", alarms, toolErrors, sim.stock().diameter(), sim.stock().length(), sim.stock().bore(),
+        sim.stock().initialVolume(), sim.removedVolume(), part.volume(), part.maxDiameter(), part.length(),
+        part.leftFaceZ(), part.rightFaceZ(), sim.stock().resolution(), tool.x() + 0.0, 2.0 * tool.y() + 0.0);
     outcome.written = writeOutput(options.jsonPath, json, options.lang) && outcome.written;
   }
   return outcome;

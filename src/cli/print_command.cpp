@@ -60,7 +60,9 @@ int runPrint(const std::vector<std::string>& args) {
   LoadedConfig config = loadConfig(o.configDir);
   // The machine the program names at its head, unless --machine or --dialect chose one.
   std::vector<Diagnostic> machineWarnings;
-  o.dialect = programMachine(o.file, o.dialectGiven, o.dialect, machineWarnings);
+  const ProgramArg programArgument = programArg(o.file);  // `-` and pipes are read once, here
+  o.file = programArgument.name;
+  o.dialect = programMachine(programArgument, o.dialectGiven, o.dialect, machineWarnings);
   if (!chooseMachine(o.machine, config, o.dialect, o.lang)) return 2;
   for (const auto& fd : config.diagnostics) printDiagnostic(stderr, fd.file, fd.diagnostic, o.lang);
   for (const Diagnostic& d : machineWarnings) printDiagnostic(stderr, o.file, d, o.lang);
@@ -73,7 +75,7 @@ int runPrint(const std::vector<std::string>& args) {
     return 2;
   }
   request->calculatorInput = o.calculatorInput;
-  request->path = o.file;
+  programArgument.into(*request);
   const std::shared_ptr<const core::job::Job> made = core::job::makeJob(*request);
   const core::job::Job& job = *made;
   for (const Diagnostic& n : job.toolNotes()) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());

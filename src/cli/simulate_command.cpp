@@ -145,7 +145,9 @@ int runSimulate(const std::vector<std::string>& args) {
   LoadedConfig config = loadConfig(o.configDir);
   // The machine the program names at its head, unless --machine or --dialect chose one.
   std::vector<Diagnostic> machineWarnings;
-  o.dialect = programMachine(o.file, o.dialectGiven, o.dialect, machineWarnings);
+  const ProgramArg programArgument = programArg(o.file);  // `-` and pipes are read once, here
+  o.file = programArgument.name;
+  o.dialect = programMachine(programArgument, o.dialectGiven, o.dialect, machineWarnings);
   if (!chooseMachine(o.machine, config, o.dialect, o.lang)) return 2;
   for (const auto& fd : config.diagnostics) printDiagnostic(fd.file, fd.diagnostic, o.lang);
   for (const Diagnostic& d : machineWarnings) printDiagnostic(o.file, d, o.lang);
@@ -158,7 +160,7 @@ int runSimulate(const std::vector<std::string>& args) {
     return 2;
   }
   request->calculatorInput = o.calculatorInput;
-  request->path = o.file;
+  programArgument.into(*request);
   request->run.optionalStop = o.optionalStop;
   request->run.blockSkip = o.blockSkip;
   // #500-#999 belong to the machine, not to the program's folder (issue 26 item 9): they live in

@@ -1,4 +1,5 @@
 #include "gui/document_manager.h"
+#include "gui/file_save.h"
 
 #include <QDir>
 #include <QFileDialog>
@@ -336,6 +337,18 @@ bool DocumentManager::saveFile(const QString& path) {
                              .arg(document_->displayName()));
     return false;
   }
+  // A file the run reads (tools.cfg, a tool picture, a subprogram file...) is never replaced by
+  // the program: refused as the CLI refuses it, F126 (issue 42 item 2).
+  if (setup_.inputs)
+    if (const QString why = outputIsAnyInput(path, setup_.inputs()); !why.isEmpty()) {
+      QMessageBox box(window_);
+      box.setObjectName(QStringLiteral("outputIsInputBox"));
+      box.setIcon(QMessageBox::Warning);
+      box.setWindowTitle(tr("Cannot save the program"));
+      box.setText(why);
+      box.exec();
+      return false;
+    }
   // A read-only file is the owner's "keep this": never written over (not even by root),
   // never made writable behind the user's back; offer another name instead, as editors do.
   if (core::io::isReadOnlyFile(path.toStdString())) {

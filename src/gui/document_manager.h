@@ -39,6 +39,9 @@ class DocumentManager : public QObject {
     std::function<bool(const QString& programPath)> save;
     std::function<RecoverySetup()> recovery;  // what an autosave keeps of it
     std::function<void(const RecoverySetup&)> restore;
+    // Every file the run reads besides the program (setup, pictures, library, subprograms):
+    // Save As onto one of them is refused, F126 (issue 42 item 2).
+    std::function<std::vector<std::string>()> inputs;
   };
   void setSetupHooks(SetupHooks hooks) { setup_ = std::move(hooks); }
   // A setup edit or its undo: a new revision for the autosave, the title's '*'.

@@ -36,6 +36,7 @@
 #include "gui/first_steps_bar.h"
 #include "klueng/core/io/tool_config.h"
 #include "gui/document_manager.h"
+#include "gui/file_save.h"
 #include "gui/find_dialog.h"
 #include "gui/flow_panel.h"
 #include "gui/help_contents.h"
@@ -371,6 +372,15 @@ void MainWindow::connectDocuments() {
                               e.overrides.push_back(o);
                           }
                           applySetupEdit(e);
+                        },
+                        [this] {
+                          // Every file the run reads besides the program itself: the setup, the tool
+                          // pictures, the library, the machines, the subprogram files (F126, issue 42).
+                          std::vector<std::string> inputs = setupInputs(jobDoc_.setup());
+                          if (const auto& job = jobDoc_.job(); job && job->program())
+                            for (std::size_t k = 1; k < job->program()->files.size(); ++k)
+                              inputs.push_back(job->program()->files[k]);
+                          return inputs;
                         }});
   connect(docs_, &DocumentManager::cleared, this, [this] {
     jobDoc_.undoStack()->clear();  // one undo history per document

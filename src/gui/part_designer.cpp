@@ -368,6 +368,12 @@ bool PartDesignerDialog::saveFile(const QString& path) {
   PartDesign d = design();
   d.material = material_->currentData().toString().toStdString();
   d.toolMaterial = toolMaterial_->currentData().toString().toStdString();
+  // A file the designer or a run reads (the cutting speeds, the library, tools.cfg, a tool
+  // picture) is never replaced by a part: F126 (issue 42 item 2).
+  if (const QString why = outputIsAnyInput(path, setupInputs(setup_)); !why.isEmpty()) {
+    QMessageBox::warning(this, tr("Part designer"), tr("Cannot save %1: %2").arg(QDir::toNativeSeparators(path), why));
+    return false;
+  }
   // The same checked writer as programs: a read-only part file is refused, root too (issue 29).
   if (const QString why = writeFileChecked(path, core::design::writePartDesign(d)); !why.isEmpty()) {
     QMessageBox::warning(this, tr("Part designer"), tr("Cannot save %1: %2").arg(QDir::toNativeSeparators(path), why));

@@ -600,7 +600,8 @@ TEST(CliConfig, ToolsCfgGarbageLineAndMissingBitmap) {
   EXPECT_THAT(run.out, HasSubstr(config + "/tools.cfg:2:1: error F122: "));
   EXPECT_THAT(run.out, HasSubstr(config + "/tools.cfg:3:1: error F121: "));
   // Sample 02 uses T0303, whose bitmap is gone.
-  EXPECT_THAT(run.out, HasSubstr("02-thread.txt:17:5: error E305"));
+  EXPECT_THAT(run.out, HasSubstr("02-thread.txt:17:5: error E311: T0303: tool 03's bitmap in tools.cfg cannot be used "
+                                 "(resources/tools/gone.bmp: no such file)"));  // why, not "has no bitmap" (issue 42)
 }
 
 TEST(CliConfig, OffsetCfgGarbageAndExtraLines) {
@@ -666,7 +667,8 @@ TEST(CliConfig, DamagedBitmapIsReportedAndItsToolHasNoBitmap) {
   const CliRun run = runCli("check --config " + quote(config) + " " + quote(kSamples + "/01-step-shaft.txt"));
   EXPECT_EQ(run.exitCode, 2);  // the setup has errors (issue 13: exit 2, not 1)
   EXPECT_THAT(run.out, HasSubstr("01-outside-turning.bmp: error F15"));
-  EXPECT_THAT(run.out, HasSubstr("01-step-shaft.txt:10:5: error E305"));  // N20 T0101
+  EXPECT_THAT(run.out, HasSubstr("01-step-shaft.txt:10:5: error E311: T0101: tool 01's bitmap in tools.cfg cannot be "
+                                 "used (resources/tools/01-outside-turning.bmp: "));  // N20 T0101, and why
 }
 
 TEST(CliConfig, BinaryConfigFileDoesNotCrash) {

@@ -215,7 +215,8 @@ TEST_F(CliFlow, EndlessLoopStopsWithAnAlarmNamingTheLoop) {
   const std::string main = write("e.nc", "G21\n#1 = 0\nWHILE [#1 GE 0] DO1\n#1 = #1 + 1\nEND1\nM30\n");
   const CliRun run = runCli("simulate " + main + " --no-stock");
   EXPECT_EQ(run.exitCode, 1);
-  EXPECT_THAT(run.out, HasSubstr(main + ":5:1: alarm A132: END1: the program loops without end"));
+  EXPECT_THAT(run.out, HasSubstr(main + ":5:1: alarm A132: END1: stopped after "));
+  EXPECT_THAT(run.out, HasSubstr("the limit is machine.cfg max_blocks = "));
 }
 
 }  // namespace

@@ -67,7 +67,8 @@ inline constexpr const char* kParameterNegative = "F144";
 inline constexpr const char* kParameterTwice = "F145";
 inline constexpr const char* kTravelLimitsReversed = "F146";
 inline constexpr const char* kParameterNotWhole = "F147";
-inline constexpr const char* kParameterOutOfRange = "F148";
+inline constexpr const char* kParameterOutOfRange =
+    "F148";  // {0} file, {1} key, {2} value, {3} min (en), {4} max, {5} min (th)
 inline constexpr const char* kStartOutsideTravel = "F149";
 // Machine files (gcode/machine_file.h, machine/machine_files.h; texts in messages_io.cpp).
 inline constexpr const char* kMachineValueBad =
@@ -88,7 +89,9 @@ inline constexpr const char* kColourOutsidePalette = "F156";
 inline constexpr const char* kNotAnOrdinaryFile = "F157";  // {0} file, {1} what (en), {2} what (th)
 // A folder run (check DIR, class DIR) reads only what lies in the folder, and says what it will not quote (issue 42).
 inline constexpr const char* kOutsideFolder = "F158";  // {0} file: a link that leaves the folder, never read
-inline constexpr const char* kNotAProgram = "F159";    // {0} file, {1} why (en), {2} why (th); its text is not shown
+// A path the system cannot open as it is written (ENAMETOOLONG), rather than "no such file" (issue 42 item 6).
+inline constexpr const char* kPathTooLong = "F172";  // {0} file, {1} its length in characters
+inline constexpr const char* kNotAProgram = "F159";  // {0} file, {1} why (en), {2} why (th); its text is not shown
 inline constexpr const char* kLibraryLineFields = "F160";
 inline constexpr const char* kBadToolId = "F161";
 inline constexpr const char* kDuplicateToolId = "F162";
@@ -106,9 +109,9 @@ inline constexpr const char* kMaterialLineFields = "F173";  // {0} file, {1} fie
 inline constexpr const char* kMaterialBadNumber = "F174";   // {0} file, {1} what, {2} the text
 inline constexpr const char* kToolLineBadOption = "F175";   // {0} file, {1} station, {2} the option (tools.cfg)
 // Part designs and the cutting-speed table (design; texts in messages_design.cpp)
-inline constexpr const char* kPartFileNotJson = "F180";   // {0} file, {1} why
+inline constexpr const char* kPartFileNotJson = "F180";   // {0} file, {1} why (en), {2} why (th)
 inline constexpr const char* kPartFieldMissing = "F181";  // {0} file, {1} field
-inline constexpr const char* kPartFieldBad = "F182";      // {0} file, {1} field, {2} what it must be
+inline constexpr const char* kPartFieldBad = "F182";      // {0} file, {1} field, {2} what it must be (en), {3} (th)
 inline constexpr const char* kSpeedsLineBad = "F183";     // {0} file, {1} line text
 // DXF drawings (design/dxf_import; texts in messages_design.cpp). Places are the drawing's own X Y.
 inline constexpr const char* kDxfEmpty = "F184";              // {0} file
@@ -116,16 +119,16 @@ inline constexpr const char* kDxfNotDxf = "F185";             // {0} file, {1} w
 inline constexpr const char* kDxfNothingOnLayer = "F186";     // {0} file, {1} layer, {2} layers with lines
 inline constexpr const char* kDxfPickLayer = "F187";          // {0} file, {1} layers
 inline constexpr const char* kDxfUnsupportedEntity = "F188";  // {0} file, {1} entity, {2} layer, {3} X, {4} Y
-inline constexpr const char* kDxfOpenContour = "F189";        // {0} file, {1} X, {2} Y, {3} gap
-inline constexpr const char* kDxfArcApart = "F190";           // {0} file, {1} R, {2} X, {3} Y, {4} gap
-inline constexpr const char* kDxfUnits = "F191";              // {0} file, {1} $INSUNITS value
-inline constexpr const char* kDxfSize = "F192";               // {0} file, {1} Ø, {2} length, {3} units
-inline constexpr const char* kDxfBranch = "F193";             // {0} file, {1} X, {2} Y, {3} how many
-inline constexpr const char* kDxfTurnsBack = "F194";          // {0} file, {1} X, {2} Y
-inline constexpr const char* kDxfSeveralOutlines = "F195";    // {0} file, {1} how many, {2} layer
-inline constexpr const char* kDxfReachesAxis = "F196";        // {0} file, {1} X, {2} Y
-inline constexpr const char* kDxfArcTooFlat = "F197";         // {0} file, {1} R, {2} X, {3} Y
-inline constexpr const char* kDxfArcInBore = "F198";          // {0} file, {1} R, {2} X, {3} Y
+inline constexpr const char* kDxfOpenContour = "F189";        // {0} file, {1} X, {2} Y, {3} the gap (en), {4} (th)
+inline constexpr const char* kDxfArcApart = "F190";         // {0} file, {1} R, {2} X, {3} Y, {4} the gap (en), {5} (th)
+inline constexpr const char* kDxfUnits = "F191";            // {0} file, {1} $INSUNITS value
+inline constexpr const char* kDxfSize = "F192";             // {0} file, {1} Ø, {2} length, {3} units (en), {4} (th)
+inline constexpr const char* kDxfBranch = "F193";           // {0} file, {1} X, {2} Y, {3} how many
+inline constexpr const char* kDxfTurnsBack = "F194";        // {0} file, {1} X, {2} Y
+inline constexpr const char* kDxfSeveralOutlines = "F195";  // {0} file, {1} how many, {2} layer
+inline constexpr const char* kDxfReachesAxis = "F196";      // {0} file, {1} X, {2} Y
+inline constexpr const char* kDxfArcTooFlat = "F197";       // {0} file, {1} R, {2} X, {3} Y
+inline constexpr const char* kDxfArcInBore = "F198";        // {0} file, {1} R, {2} X, {3} Y
 inline constexpr const char* kDxfInches = "I180";
 inline constexpr const char* kNotAsDrawn = "W530";  // {0} drawing feature, {1} Z from, {2} Z to, {3} what the cut part
                                                     // has             // {0} file, {1} factor, {2} unit name
@@ -244,6 +247,10 @@ inline constexpr const char* kProfileCommandNotAllowed = "A150";
 inline constexpr const char* kEndlessLoopMoves = "A151";
 inline constexpr const char* kNoCAxisOnThisMachine = "A152";
 inline constexpr const char* kProfileStartsWithoutMotion = "A153";  // {0} cycle, {1} N number
+// E305 for a station whose named bitmap cannot be used (a 20000 x 20000 picture, a pipe, a
+// damaged file): the job says why instead of "has no bitmap" (issue 42 item 6).
+inline constexpr const char* kToolBitmapUnusable = "E311";  // {0} T word, {1} tool, {2} why (en), {3} why (th)
+inline constexpr const char* kCallWithoutProgram = "A154";  // {0} M98/G65/G66: no P (Fanuc alarm PS0076)
 inline constexpr const char* kSubprogramFileHasErrors = "E412";
 inline constexpr const char* kMainProgramRepeats = "I160";
 inline constexpr const char* kVacantAddressOmitted = "W130";

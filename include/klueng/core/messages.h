@@ -24,7 +24,13 @@ std::span<const MessageText> allMessages();
 // nullptr when the code is unknown.
 const MessageText* findMessage(std::string_view code);
 // Text of the diagnostic in the language; an unknown code gives the code and args.
+// An argument longer than kMaxMessageArgChars code points (a 10 MB tool name, the
+// layer list of a 100,000-layer drawing) is shortened in its middle, and the message
+// says how much was left out (issue 42 item 6); Diagnostic::args stay whole.
 std::string formatMessage(const Diagnostic& d, Lang lang);
+inline constexpr std::size_t kMaxMessageArgChars = 1000;
+// `text` shortened so: its first and last code points around "… [N characters left out] …".
+std::string elideMessageArg(std::string_view text, Lang lang);
 
 // Where a message is read. The CLI's texts name its flags (--stock,
 // --dialect haas, --decimal-point); the GUI's name the menu items that do the

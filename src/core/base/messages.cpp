@@ -85,10 +85,18 @@ std::string localSize(const std::string& a, Lang lang) {
   return a;
 }
 
+// Byte offsets of the code points of `text` (a lead byte is any byte that is not 10xxxxxx).
+std::vector<std::size_t> codePointStarts(std::string_view text) {
+  std::vector<std::size_t> starts;
+  for (std::size_t i = 0; i < text.size(); ++i)
+    if ((static_cast<unsigned char>(text[i]) & 0xC0) != 0x80) starts.push_back(i);
+  return starts;
+}
+
 std::string formatText(const MessageText* t, const Diagnostic& d, Lang lang) {
   if (!t) {
     std::string s = d.code;
-    for (const auto& a : d.args) s += " " + a;
+    for (const auto& a : d.args) s += " " + elideMessageArg(a, lang);
     return s;
   }
   fmt::dynamic_format_arg_store<fmt::format_context> store;
@@ -96,7 +104,7 @@ std::string formatText(const MessageText* t, const Diagnostic& d, Lang lang) {
   // a size with its unit ("Ø50 mm") speaks Thai units under Thai.
   for (const auto& a : d.args) {
     const char* unit = unitArgText(a, lang);
-    store.push_back(unit ? std::string(unit) : localSize(a, lang));
+    store.push_back(unit ? std::string(unit) : localSize(elideMessageArg(a, lang), lang));
   }
   // Missing args are a bug in the caller; show the template rather than throw.
   for (std::size_t i = d.args.size(); i < 8; ++i) store.push_back(std::string("?"));
@@ -109,6 +117,19 @@ std::string formatText(const MessageText* t, const Diagnostic& d, Lang lang) {
 }
 
 }  // namespace
+
+std::string elideMessageArg(std::string_view text, Lang lang) {
+  if (text.size() <= kMaxMessageArgChars) return std::string(text);  // fewer code points than bytes
+  const std::vector<std::size_t> starts = codePointStarts(text);
+  if (starts.size() <= kMaxMessageArgChars) return std::string(text);
+  constexpr std::size_t kHead = kMaxMessageArgChars * 3 / 4;
+  constexpr std::size_t kTail = kMaxMessageArgChars / 5;
+  const std::size_t left = starts.size() - kHead - kTail;
+  const std::string_view head = text.substr(0, starts[kHead]);
+  const std::string_view tail = text.substr(starts[starts.size() - kTail]);
+  if (lang == Lang::Th) return fmt::format("{} … [ตัดออก {} ตัวอักษร] … {}", head, left, tail);
+  return fmt::format("{} … [{} characters left out] … {}", head, left, tail);
+}
 
 const MessageText* findGuiMessage(std::string_view code) {
   for (const MessageText& t : kGuiWording)

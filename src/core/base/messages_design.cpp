@@ -53,9 +53,9 @@ constexpr MessageText kDesignMessages[] = {
      "The program would have {0} blocks, but {2} numbers blocks only from N1 to N{1}: it is not written; turn the "
      "part in fewer steps",
      "โปรแกรมจะมี {0} บล็อก แต่ {3} ใช้หมายเลขบล็อกได้เพียง N1 ถึง N{1}: จึงไม่เขียนโปรแกรม ให้ลดจำนวนขั้นของชิ้นงาน"},
-    {codes::kPartFileNotJson, "{0} is not a part file: {1}", "{0} ไม่ใช่ไฟล์ชิ้นงาน: {1}"},
+    {codes::kPartFileNotJson, "{0} is not a part file: {1}", "{0} ไม่ใช่ไฟล์ชิ้นงาน: {2}"},
     {codes::kPartFieldMissing, "{0}: \"{1}\" is missing", "{0}: ไม่มีค่า \"{1}\""},
-    {codes::kPartFieldBad, "{0}: \"{1}\" must be {2}", "{0}: ค่า \"{1}\" ต้องเป็น{2}"},
+    {codes::kPartFieldBad, "{0}: \"{1}\" must be {2}", "{0}: ค่า \"{1}\" ต้องเป็น{3}"},
     {codes::kSpeedsLineBad, "{0}: \"{1}\" is not \"material | HSS m/min | carbide m/min\"",
      "{0}: \"{1}\" ไม่อยู่ในรูป \"วัสดุ | มีด HSS ม./นาที | มีดคาร์ไบด์ ม./นาที\""},
     {codes::kDxfEmpty, "{0} is empty: there is no drawing in it", "{0} ว่างเปล่า: ไม่มีแบบอยู่ในไฟล์"},
@@ -69,17 +69,15 @@ constexpr MessageText kDesignMessages[] = {
      "convert it to lines and arcs",
      "{0}: มี {1} บนเลเยอร์ \"{2}\" ใกล้ X{3} Y{4}: รูปร่างงานกลึงอ่านได้จากเส้นตรง ส่วนโค้ง และโพลีไลน์เท่านั้น "
      "ให้แปลงเป็นเส้นตรงและส่วนโค้งก่อน"},
-    {codes::kDxfOpenContour, "{0}: the outline is open at X{1} Y{2}: the nearest other end is {3} mm away",
-     "{0}: รูปร่างไม่ปิดที่ X{1} Y{2}: ปลายเส้นอื่นที่ใกล้ที่สุดห่างออกไป {3} มม."},
-    {codes::kDxfArcApart,
-     "{0}: the arc R{1} ending at X{2} Y{3} does not meet its neighbours: the nearest line ends {4} mm away",
-     "{0}: ส่วนโค้ง R{1} ที่สิ้นสุดที่ X{2} Y{3} ไม่ต่อกับเส้นข้างเคียง: ปลายเส้นที่ใกล้ที่สุดห่างออกไป {4} มม."},
+    {codes::kDxfOpenContour, "{0}: the outline is open at X{1} Y{2}: {3}", "{0}: รูปร่างไม่ปิดที่ X{1} Y{2}: {4}"},
+    {codes::kDxfArcApart, "{0}: the arc R{1} ending at X{2} Y{3} does not meet its neighbours: {4}",
+     "{0}: ส่วนโค้ง R{1} ที่สิ้นสุดที่ X{2} Y{3} ไม่ต่อกับเส้นข้างเคียง: {5}"},
     {codes::kDxfUnits, "{0}: the drawing's units ($INSUNITS {1}) are not a length Klueng can turn",
      "{0}: หน่วยของแบบ ($INSUNITS {1}) ไม่ใช่หน่วยความยาวที่ Klueng ใช้กลึงได้"},
     {codes::kDxfSize,
      "{0}: in {3} the part would be Ø{1} mm and {2} mm long: the drawing's units look wrong (set $INSUNITS or scale "
      "it)",
-     "{0}: ในหน่วย {3} ชิ้นงานจะมีขนาด Ø{1} มม. ยาว {2} มม.: หน่วยของแบบน่าจะผิด (ตั้งค่า $INSUNITS หรือย่อขยายแบบ)"},
+     "{0}: ในหน่วย{4} ชิ้นงานจะมีขนาด Ø{1} มม. ยาว {2} มม.: หน่วยของแบบน่าจะผิด (ตั้งค่า $INSUNITS หรือย่อขยายแบบ)"},
     {codes::kDxfBranch, "{0}: {3} lines meet at X{1} Y{2}: the part must be drawn as one outline",
      "{0}: มีเส้น {3} เส้นมาบรรจบกันที่ X{1} Y{2}: ต้องเขียนชิ้นงานเป็นรูปร่างเดียว"},
     {codes::kDxfTurnsBack,
@@ -105,7 +103,7 @@ constexpr MessageText kDesignMessages[] = {
      "{0}: รูคว้านมีส่วนโค้ง R{1} ที่สิ้นสุดที่ X{2} Y{3}: แบบชิ้นงานคว้านรูได้เฉพาะทรงกระบอกและเรียว "
      "(ลบมุมหรือมนที่ปากรูได้)"},
     {codes::kDxfInches, "{0}: the drawing is in {2}: sizes multiplied by {1} to millimetres",
-     "{0}: แบบใช้หน่วย {2}: คูณขนาดด้วย {1} เป็นมิลลิเมตร"},
+     "{0}: แบบใช้หน่วย{3}: คูณขนาดด้วย {1} เป็นมิลลิเมตร"},
 };
 }  // namespace
 

@@ -124,6 +124,10 @@ constexpr MessageText kGcodeMessages[] = {
      "G40 ยกเลิกการชดเชยรัศมีจมูกมีดบนส่วนโค้ง ({0}) ไม่ได้: ให้ยกเลิกในบล็อก G00 หรือ G01"},
     {"E305", "{0}: tool {1} has no bitmap in tools.cfg: choose it in Tool setting > Tool select, or use another tool",
      "{0}: มีดตัดหมายเลข {1} ไม่มีรูปภาพใน tools.cfg: กำหนดที่ การตั้งค่ามีดตัด > เลือกมีดตัด หรือใช้มีดตัดอื่น"},
+    {codes::kToolBitmapUnusable,
+     "{0}: tool {1}'s bitmap in tools.cfg cannot be used ({2}): choose another in Tool setting > Tool select, or use "
+     "another tool",
+     "{0}: ใช้รูปภาพของมีดตัดหมายเลข {1} ใน tools.cfg ไม่ได้ ({3}): เลือกรูปอื่นที่ การตั้งค่ามีดตัด > เลือกมีดตัด หรือใช้มีดตัดอื่น"},
     {"E306", "{0}: the dwell time cannot be negative", "{0}: เวลาหยุดรอต้องไม่เป็นค่าลบ"},
     {"E307", "{0} and {1} both give the dwell time: use P (milliseconds) or U/X (seconds), not both",
      "{0} และ {1} กำหนดเวลาหยุดรอซ้ำกัน: ใช้ P (มิลลิวินาที) หรือ U/X (วินาที) อย่างใดอย่างหนึ่ง"},
@@ -168,6 +172,11 @@ constexpr MessageText kGcodeMessages[] = {
      "control stops; put the shape after the cycle (or before it) and let P and Q name only its blocks",
      "{0}: รูปร่าง N{1}-N{2} มีบล็อกของวัฏจักรนี้อยู่ด้วย วัฏจักรจึงอ่านตัวเองเป็นส่วนหนึ่งของรูปร่าง เครื่องจะหยุด: "
      "ให้เขียนรูปร่างไว้หลัง (หรือก่อน) วัฏจักร และให้ P กับ Q ระบุเฉพาะบล็อกของรูปร่าง"},
+    {"E419",
+     "{0} without P: the block names no program to call; write the program's number after P ({0} P1000; Fanuc alarm "
+     "PS0076)",
+     "{0} ไม่มี P: บล็อกนี้ไม่ได้ระบุโปรแกรมที่จะเรียก ให้เขียนหมายเลขโปรแกรมต่อท้าย P ({0} P1000; สัญญาณเตือน PS0076 ของ "
+     "Fanuc)"},
     {"E418",
      "{0} roughs at the feed F of its block or the one in force, but no F has been given before it: the control stops "
      "(feed zero); add F to the cycle's block, e.g. F0.2",

@@ -19,6 +19,11 @@ constexpr MessageText kIoMessages[] = {
     {codes::kNoSuchFile, "{0}: no such file", "{0}: ไม่พบไฟล์"},
     {codes::kNotAnOrdinaryFile, "{0}: this is {1}, not an ordinary file, so it is not opened",
      "{0}: นี่คือ{2} ไม่ใช่ไฟล์ธรรมดา จึงไม่เปิด"},
+    {codes::kPathTooLong,
+     "{0}: the path is too long for the system to open ({1} characters; a path may have at most 4095, and each "
+     "folder or file name in it 255): run the command from a folder nearer to the file, or shorten the names",
+     "{0}: พาธยาวเกินกว่าที่ระบบจะเปิดได้ ({1} ตัวอักษร พาธยาวได้ไม่เกิน 4095 และชื่อโฟลเดอร์หรือชื่อไฟล์แต่ละชื่อยาวได้ไม่เกิน 255) "
+     "ให้สั่งงานจากโฟลเดอร์ที่อยู่ใกล้ไฟล์กว่านี้ หรือย่อชื่อให้สั้นลง"},
     {codes::kOutsideFolder, "{0}: refused: points outside the folder, so it is not read",
      "{0}: ไม่รับ: ลิงก์นี้ชี้ออกไปนอกโฟลเดอร์ จึงไม่อ่าน"},
     {codes::kNotAProgram, "{0}: this is not a G-code program ({1}), so its text is not shown",
@@ -131,7 +136,7 @@ constexpr MessageText kIoMessages[] = {
     {codes::kParameterNotWhole, "{0}: {1} must be a whole number from {3} to {4}, not {2}",
      "{0}: {1} ต้องเป็นจำนวนเต็มตั้งแต่ {3} ถึง {4} ไม่ใช่ {2}"},
     {codes::kParameterOutOfRange, "{0}: {1} = {2} is outside what a lathe can have ({3} to {4}); the default is used",
-     "{0}: {1} = {2} อยู่นอกช่วงที่เครื่องกลึงจะมีได้ ({3} ถึง {4}) จึงใช้ค่าเริ่มต้นแทน"},
+     "{0}: {1} = {2} อยู่นอกช่วงที่เครื่องกลึงจะมีได้ ({5} ถึง {4}) จึงใช้ค่าเริ่มต้นแทน"},
     {codes::kStartOutsideTravel, "{0}: the tool start {1} = {2} is outside the travel limits {3} to {4}",
      "{0}: ตำแหน่งเริ่มต้นของมีด {1} = {2} อยู่นอกระยะเคลื่อนที่ {3} ถึง {4}"},
 

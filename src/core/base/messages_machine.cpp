@@ -72,16 +72,22 @@ constexpr MessageText kMachineMessages[] = {
     {codes::kProgramAlarm, "program alarm {2} (#3000 = {0}): {1}",
      "สัญญาณเตือนจากโปรแกรม หมายเลข {2} (#3000 = {0}): {1}"},
     {codes::kDivisionByZero, "division by zero: {0} {1} 0", "หารด้วยศูนย์: {0} {1} 0"},
+    // A limit, not a proof that the loop never ends (issue 42 item 6): say which limit and how to raise it.
     {codes::kEndlessLoopBlocks,
-     "{0}: the program loops without end; stopped after {1} blocks (machine.cfg max_blocks = {2})",
-     "{0}: โปรแกรมวนซ้ำไม่รู้จบ หยุดหลังจากทำงาน {1} บล็อก (machine.cfg max_blocks = {2})"},
+     "{0}: stopped after {1} blocks run again by loops, jumps and calls: the limit is machine.cfg max_blocks = {2}; "
+     "raise it if the program is meant to run longer",
+     "{0}: หยุดหลังจากทำบล็อกซ้ำ {1} บล็อก (จากการวนซ้ำ การกระโดด และการเรียกโปรแกรมย่อย) ซึ่งถึงขีดจำกัด "
+     "max_blocks = {2} ใน machine.cfg แล้ว ถ้าโปรแกรมนี้ต้องทำงานนานกว่านี้ ให้เพิ่มค่านี้"},
     {codes::kEndlessLoopTime,
-     "{0}: the program loops without end; stopped after {1} s of machining (machine.cfg max_run_time = {2} s)",
-     "{0}: โปรแกรมวนซ้ำไม่รู้จบ หยุดหลังจากเวลาทำงาน {1} วินาที (machine.cfg max_run_time = {2} วินาที)"},
+     "{0}: stopped after {1} s of machining while blocks run again: the limit is machine.cfg max_run_time = {2} s; "
+     "raise it if the program is meant to run longer",
+     "{0}: หยุดหลังจากเวลาทำงาน {1} วินาทีขณะที่ทำบล็อกซ้ำ ซึ่งถึงขีดจำกัด max_run_time = {2} วินาที ใน machine.cfg "
+     "แล้ว ถ้าโปรแกรมนี้ต้องทำงานนานกว่านี้ ให้เพิ่มค่านี้"},
     {codes::kEndlessLoopMoves,
-     "{0}: the program loops without end; stopped after {1} moves made by repeated blocks (machine.cfg max_blocks = "
-     "{2} allows {3})",
-     "{0}: โปรแกรมวนซ้ำไม่รู้จบ หยุดหลังจากบล็อกที่ทำซ้ำเคลื่อนที่ไป {1} ครั้ง (machine.cfg max_blocks = {2} ยอมให้ {3} ครั้ง)"},
+     "{0}: stopped after {1} moves made by blocks run again: machine.cfg max_blocks = {2} allows {3}; raise it if "
+     "the program is meant to run longer",
+     "{0}: หยุดหลังจากบล็อกที่ทำซ้ำเคลื่อนที่ไป {1} ครั้ง ซึ่ง max_blocks = {2} ใน machine.cfg ยอมให้ {3} ครั้ง "
+     "ถ้าโปรแกรมนี้ต้องทำงานนานกว่านี้ ให้เพิ่มค่านี้"},
     {codes::kNoCAxisOnThisMachine,
      "{0}: this machine has no C axis; a chamfer or a corner round is written with a comma (,C2. ,R3.)",
      "{0}: เครื่องนี้ไม่มีแกน C การลบมุมหรือการมนมุมต้องเขียนโดยมีจุลภาคนำหน้า (,C2. ,R3.)"},
@@ -92,6 +98,11 @@ constexpr MessageText kMachineMessages[] = {
      "in it (N{1} G00 X.. Z..)",
      "{0}: บล็อกแรกของรูปร่างชิ้นงาน N{1} ไม่มี G00 หรือ G01 (สัญญาณเตือน PS0065 ของ Fanuc) ให้เขียนการเคลื่อนที่แรกไว้ในบล็อกนั้น (N{1} "
      "G00 X.. Z..)"},
+    {codes::kCallWithoutProgram,
+     "{0} without P: the block names no program to call; write the program's number after P ({0} P1000; Fanuc alarm "
+     "PS0076)",
+     "{0} ไม่มี P: บล็อกนี้ไม่ได้ระบุโปรแกรมที่จะเรียก ให้เขียนหมายเลขโปรแกรมต่อท้าย P ({0} P1000; สัญญาณเตือน PS0076 ของ "
+     "Fanuc)"},
     {codes::kNoSuchProgram, "{0}: no program O{1} in this file or its folder",
      "{0}: ไม่พบโปรแกรม O{1} ในไฟล์นี้หรือในโฟลเดอร์เดียวกัน"},
     {codes::kNoSuchSequence, "{0}: no block N{1} to jump to", "{0}: ไม่มีบล็อก N{1} ให้กระโดดไป"},

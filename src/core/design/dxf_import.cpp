@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <filesystem>
 #include <set>
 
@@ -30,26 +31,33 @@ Diagnostic fileProblem(const char* code, std::vector<std::string> args, Severity
   return d;
 }
 
-std::string mm(double v) { return fmt::format("{:.3f}", std::abs(v) < 5e-4 ? 0.0 : v); }
+// A size or place in a message: three decimals; a huge one in powers of ten (not 300 digits),
+// and one no double holds as "1e308+" (issue 42 item 6: "Øinf").
+std::string mm(double v) {
+  if (!std::isfinite(v)) return v < 0.0 ? "-1e308+" : "1e308+";
+  if (std::abs(v) >= 1e7) return fmt::format("{:.3e}", v);
+  return fmt::format("{:.3f}", std::abs(v) < 5e-4 ? 0.0 : v);
+}
 double round3(double v) { return std::round(v * 1000.0) / 1000.0; }
 
 struct Units {
   double factor;
   const char* name;
+  const char* thai = "";
 };
 
 // $INSUNITS to millimetres; factor 0 when it is no length.
 Units unitsOf(int insunits) {
   switch (insunits) {
-    case 0: return {1.0, "millimetres"};  // unitless: as drawn, checked by size below
-    case 1: return {25.4, "inches"};
-    case 2: return {304.8, "feet"};
-    case 4: return {1.0, "millimetres"};
-    case 5: return {10.0, "centimetres"};
-    case 6: return {1000.0, "metres"};
-    case 9: return {0.0254, "mils"};
-    case 13: return {0.001, "microns"};
-    case 14: return {100.0, "decimetres"};
+    case 0: return {1.0, "millimetres", "มิลลิเมตร"};  // unitless: as drawn, checked by size below
+    case 1: return {25.4, "inches", "นิ้ว"};
+    case 2: return {304.8, "feet", "ฟุต"};
+    case 4: return {1.0, "millimetres", "มิลลิเมตร"};
+    case 5: return {10.0, "centimetres", "เซนติเมตร"};
+    case 6: return {1000.0, "metres", "เมตร"};
+    case 9: return {0.0254, "mils", "มิล"};
+    case 13: return {0.001, "microns", "ไมครอน"};
+    case 14: return {100.0, "decimetres", "เดซิเมตร"};
     default: return {0.0, ""};
   }
 }
@@ -87,9 +95,10 @@ class Importer {
     const Units units = unitsOf(drawing.insunits);
     if (units.factor == 0.0) return fail(codes::kDxfUnits, {file_, std::to_string(drawing.insunits)});
     scale_ = units.factor;
+    units_ = units;
     if (scale_ != 1.0)
       out_.diagnostics.push_back(
-          fileProblem(codes::kDxfInches, {file_, fmt::format("{}", scale_), units.name}, Severity::Note));
+          fileProblem(codes::kDxfInches, {file_, fmt::format("{}", scale_), units.name, units.thai}, Severity::Note));
     if (!collect(drawing)) return;
     std::vector<Walked> chain;
     if (!join(chain)) return;
@@ -104,8 +113,8 @@ class Importer {
     for (const OutsideStep& s : part.outside) widest = std::max(widest, s.diameter);
     for (const BoreStep& s : part.inside) narrowest = std::min(narrowest, s.diameter);
     const double length = -xLeft;
-    if (widest < 1.0 || widest > 2000.0 || length > 5000.0)
-      return fail(codes::kDxfSize, {file_, mm(widest), mm(length), units.name});
+    if (!std::isfinite(widest) || !std::isfinite(length) || widest < 1.0 || widest > 2000.0 || length > 5000.0)
+      return fail(codes::kDxfSize, {file_, mm(widest), mm(length), units.name, units.thai});
     part.stockDiameter = std::ceil((widest + 2.0) / 5.0 - 1e-9) * 5.0;
     if (!part.inside.empty()) part.stockBore = std::max(0.0, std::floor((narrowest - 2.0) / 2.0 + 1e-9) * 2.0);
     part.stockLength = std::ceil((length + options_.chuckGrip + 5.0) / 5.0 - 1e-9) * 5.0;
@@ -118,6 +127,7 @@ class Importer {
   io::ReadResult<PartDesign>& out_;
   std::string layer_;
   double scale_ = 1.0;
+  Units units_{1.0, "millimetres", "มิลลิเมตร"};
   double axis_ = 0.0, right_ = 0.0;  // the drawing's Y of the axis, X of the face (mm)
   std::vector<DxfSegment> segs_;     // the outline's, in mm
   bool hasBore_ = false;
@@ -152,6 +162,12 @@ class Importer {
     double lowest = 1e300;
     for (DxfSegment s : d.segments) {
       s.a *= scale_, s.b *= scale_, s.centre *= scale_, s.radius *= scale_;
+      // Past what a double holds once in millimetres: refused as a drawing of the wrong units,
+      // never joined or measured as inf (issue 42 item 6: "Øinf").
+      if (!s.a.allFinite() || !s.b.allFinite() || !s.centre.allFinite() || !std::isfinite(s.radius)) {
+        const double inf = std::numeric_limits<double>::infinity();
+        return fail(codes::kDxfSize, {file_, mm(inf), mm(inf), units_.name, units_.thai}), false;
+      }
       if (s.centreLine) {
         if (!s.arc && std::abs(s.a.y() - s.b.y()) < kJoin) axis_ = s.a.y(), axisFound = true;
         continue;
@@ -202,10 +218,18 @@ class Importer {
         for (std::size_t j = 0; j < 2 * n; ++j)
           if (j / 2 != i / 2 && meets[j].empty() && ends[j].y() > kJoin)
             gap = std::min(gap, (ends[i] - ends[j]).norm());
-        const std::string g = gap == 1e300 ? "-" : mm(gap);
+        // How far the nearest other loose end is, in words: "- mm away" said nothing (issue 42 item 6).
+        const bool alone = gap == 1e300;
+        const std::string en = alone ? "no other loose line end is left to join it to"
+                                     : "the nearest other end is " + mm(gap) + " mm away";
+        const std::string th =
+            alone ? "ไม่มีปลายเส้นอื่นที่ยังไม่ต่อเหลืออยู่ให้ต่อเข้าด้วยกัน" : "ปลายเส้นอื่นที่ใกล้ที่สุดห่างออกไป " + mm(gap) + " มม.";
         if (segs_[i / 2].arc)
-          return fail(codes::kDxfArcApart, {file_, mm(segs_[i / 2].radius / scale_), X(ends[i]), Y(ends[i]), g}), false;
-        return fail(codes::kDxfOpenContour, {file_, X(ends[i]), Y(ends[i]), g}), false;
+          return fail(codes::kDxfArcApart, {file_, mm(segs_[i / 2].radius / scale_), X(ends[i]), Y(ends[i]),
+                                            alone ? en : "the nearest line ends " + mm(gap) + " mm away",
+                                            alone ? th : "ปลายเส้นที่ใกล้ที่สุดห่างออกไป " + mm(gap) + " มม."}),
+                 false;
+        return fail(codes::kDxfOpenContour, {file_, X(ends[i]), Y(ends[i]), en, th}), false;
       }
     }
     // Walk from an end on the axis if there is one, else round the loop.

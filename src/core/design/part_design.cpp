@@ -1,6 +1,7 @@
 // Reading part designs (JSON, with nlohmann::json) and the cutting-speed table.
 #include "klueng/core/design/part_design.h"
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -73,25 +74,39 @@ io::ReadResult<std::string> readPartFile(const std::string& path) {
 io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::string& fileName) {
   io::ReadResult<PartDesign> result;
   nlohmann::json j;
+  // Why the text is not JSON, in our words (both languages), never the JSON library's
+  // English (issue 42 item 6); the diagnostic's line and column say where.
+  // The place is said in the words too: a window that lists messages without their place still shows it.
+  const auto notJson = [&](std::size_t byte, const std::string& en, const std::string& th) {
+    const auto [line, column] = placeOf(text, byte);
+    const std::string at = fmt::format(" (line {}, column {})", line, column);
+    const std::string atTh = fmt::format(" (บรรทัด {} คอลัมน์ {})", line, column);
+    result.diagnostics.push_back(fileDiagnostic(codes::kPartFileNotJson, line, column, {fileName, en + at, th + atTh}));
+  };
   try {
     j = nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
-    const auto [line, column] = placeOf(text, e.byte > 0 ? e.byte - 1 : 0);
-    std::string why = e.what();
-    if (const auto at = why.find("]: "); at != std::string::npos) why = why.substr(at + 3);
-    result.diagnostics.push_back(fileDiagnostic(codes::kPartFileNotJson, line, column, {fileName, why}));
+    const std::size_t byte = e.byte > 0 ? e.byte - 1 : 0;
+    if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+      result.diagnostics.push_back(
+          fileDiagnostic(codes::kPartFileNotJson, 0, 0, {fileName, "the file is empty", "ไฟล์ว่างเปล่า"}));
+    else if (byte + 1 >= text.size())
+      notJson(byte, "the text ends before the JSON is complete (a missing } or ]?)",
+              "ข้อความจบก่อนที่ JSON จะครบ (ขาด } หรือ ] หรือไม่)");
+    else
+      notJson(byte, "the JSON is not valid here (a missing comma, quote or bracket, or a word that is not JSON?)",
+              "JSON ไม่ถูกต้องที่ตำแหน่งนี้ (ขาดจุลภาค เครื่องหมายคำพูด หรือวงเล็บ หรือมีคำที่ไม่ใช่ JSON หรือไม่)");
     return result;
   } catch (const nlohmann::json::exception& e) {
     // A number too big for a double ("number overflow parsing '2.5e553'"): no byte
     // offset in the exception, so the place is where that number is written.
-    std::string why = e.what();
-    if (const auto at = why.find("] "); at != std::string::npos) why = why.substr(at + 2);
+    const std::string why = e.what();
     std::size_t byte = 0;
     if (const auto q = why.find('\''); q != std::string::npos)
       if (const auto q2 = why.find('\'', q + 1); q2 != std::string::npos)
         byte = std::min(text.find(why.substr(q + 1, q2 - q - 1)), text.size());
-    const auto [line, column] = placeOf(text, byte);
-    result.diagnostics.push_back(fileDiagnostic(codes::kPartFileNotJson, line, column, {fileName, why}));
+    notJson(byte, "a number is too large for this program (at most about 1e308)",
+            "ตัวเลขใหญ่เกินกว่าที่โปรแกรมรับได้ (ไม่เกินประมาณ 1e308)");
     return result;
   }
   PartDesign part;
@@ -100,40 +115,59 @@ io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::st
     result.diagnostics.push_back(fileDiagnostic(codes::kPartFieldMissing, 0, 0, {fileName, field}));
     ok = false;
   };
-  const auto bad = [&](const std::string& field, const char* what) {
-    result.diagnostics.push_back(fileDiagnostic(codes::kPartFieldBad, 0, 0, {fileName, field, what}));
+  // What the field must be, in both languages: the Thai sentence is Thai all through (issue 42 item 6).
+  const auto bad = [&](const std::string& field, const std::string& en, const std::string& th) {
+    result.diagnostics.push_back(fileDiagnostic(codes::kPartFieldBad, 0, 0, {fileName, field, en, th}));
     ok = false;
   };
-  // A positive finite number, or the reason it is not.
-  const auto positive = [&](const nlohmann::json& o, const std::string& key, const std::string& field, double& out) {
+  // A positive finite number up to `max`, or the reason it is not.
+  const auto positive = [&](const nlohmann::json& o, const std::string& key, const std::string& field, double& out,
+                            double max = kMaxPartSize) {
     if (!o.contains(key)) return missing(field);
     if (!o[key].is_number() || !std::isfinite(o[key].get<double>()) || o[key].get<double>() <= 0.0 ||
-        o[key].get<double>() > 10000.0)
-      return bad(field, "a number of millimetres above 0 (at most 10000)");
+        o[key].get<double>() > max) {
+      const std::string most = fmt::format("{}", max);
+      return bad(field, "a number of millimetres above 0 (at most " + most + ")",
+                 "ตัวเลขเป็นมิลลิเมตรที่มากกว่า 0 (ไม่เกิน " + most + ")");
+    }
     out = o[key].get<double>();
   };
   if (!j.is_object()) {
-    bad("(the file)", "an object { ... }");
+    bad("(the file)", "an object { ... }", "ออบเจกต์ { ... }");
     return result;
   }
-  if (j.contains("name") && j["name"].is_string()) part.name = j["name"].get<std::string>();
-  if (j.contains("material") && j["material"].is_string()) part.material = j["material"].get<std::string>();
+  // The name and material go into the program's header and comments: a text the program's
+  // own check reads back (a 10 MB name made a program its check refused; issue 42 item 6).
+  const auto words = [&](const char* key, std::string& out) {
+    if (!j.contains(key) || !j[key].is_string()) return;
+    const std::string text = j[key].get<std::string>();
+    std::size_t points = 0;
+    for (const char c : text) points += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+    if (points > kMaxPartTextChars)
+      return bad(key, "a text of at most " + std::to_string(kMaxPartTextChars) + " characters",
+                 "ข้อความยาวไม่เกิน " + std::to_string(kMaxPartTextChars) + " ตัวอักษร");
+    out = text;
+  };
+  words("name", part.name);
+  words("material", part.material);
   if (j.contains("tool_material")) {
     if (!j["tool_material"].is_string() ||
         (j["tool_material"].get<std::string>() != "hss" && j["tool_material"].get<std::string>() != "carbide"))
-      bad("tool_material", "\"hss\" or \"carbide\"");
+      bad("tool_material", "\"hss\" or \"carbide\"", "\"hss\" หรือ \"carbide\"");
     else
       part.toolMaterial = j["tool_material"].get<std::string>();
   }
   if (!j.contains("stock") || !j["stock"].is_object()) {
     missing("stock");
   } else {
-    positive(j["stock"], "diameter", "stock.diameter", part.stockDiameter);
-    positive(j["stock"], "length", "stock.length", part.stockLength);
+    // A bar a lathe holds (the DXF import's limits): the program's rapids clear it by a few mm
+    // and must stay within the control's numbers (issue 42 item 6: a 10000 mm stock).
+    positive(j["stock"], "diameter", "stock.diameter", part.stockDiameter, kMaxStockDiameter);
+    positive(j["stock"], "length", "stock.length", part.stockLength, kMaxStockLength);
     if (j["stock"].contains("bore")) {
       positive(j["stock"], "bore", "stock.bore", part.stockBore);
       if (part.stockBore >= part.stockDiameter && part.stockDiameter > 0.0)
-        bad("stock.bore", "smaller than the stock's diameter");
+        bad("stock.bore", "smaller than the stock's diameter", "เล็กกว่าเส้นผ่านศูนย์กลางของชิ้นงาน");
     }
   }
   // A tolerance: a number (±), [upper, lower] in mm, or (on a Ø) an ISO 286 class such as "h7".
@@ -149,12 +183,16 @@ io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::st
       out = {v[0].get<double>(), v[1].get<double>(), ""};
     } else if (fits && v.is_string()) {
       const auto fit = isoFit(v.get<std::string>(), size);
-      if (!fit) return bad(field, (std::string("an ISO 286 class of ") + kIsoFitsKnown).c_str());
+      if (!fit)
+        return bad(field, std::string("an ISO 286 class of ") + kIsoFitsKnown,
+                   std::string("ชั้นพิกัดงานสวม ISO 286 หนึ่งใน ") + kIsoFitsKnown);
       out = *fit;
       return;
     } else {
-      return bad(field, fits ? "± mm (0.05), [upper, lower] mm ([0.02, -0.01]) or an ISO 286 class (\"h7\")"
-                             : "± mm (0.1) or [upper, lower] mm ([0.1, -0.2])");
+      return fits ? bad(field, "± mm (0.05), [upper, lower] mm ([0.02, -0.01]) or an ISO 286 class (\"h7\")",
+                        "± มม. (0.05), [บน, ล่าง] มม. ([0.02, -0.01]) หรือชั้นพิกัดงานสวม ISO 286 (\"h7\")")
+                  : bad(field, "± mm (0.1) or [upper, lower] mm ([0.1, -0.2])",
+                        "± มม. (0.1) หรือ [บน, ล่าง] มม. ([0.1, -0.2])");
     }
     out.text = cut::toleranceLabel(out);
   };
@@ -165,7 +203,8 @@ io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::st
       const nlohmann::json& o = j[key][k];
       const std::string at = key + "[" + std::to_string(k) + "]";
       if (!o.is_object()) {
-        bad(at, key == "inside" ? "an object { \"bore\": ... }" : "an object { \"cylinder\": ... }");
+        bad(at, key == "inside" ? "an object { \"bore\": ... }" : "an object { \"cylinder\": ... }",
+            key == "inside" ? "ออบเจกต์ { \"bore\": ... }" : "ออบเจกต์ { \"cylinder\": ... }");
         continue;
       }
       OutsideStep step;
@@ -180,7 +219,7 @@ io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::st
         positive(o, "radius", at + ".radius", step.radius);
         if (o.contains("concave")) {
           if (!o["concave"].is_boolean())
-            bad(at + ".concave", "true or false");
+            bad(at + ".concave", "true or false", "true หรือ false");
           else
             step.concave = o["concave"].get<bool>();
         }
@@ -198,7 +237,7 @@ io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::st
       }
       if (o.contains("tolerance")) {
         if (step.kind != StepKind::Cylinder)
-          bad(at + ".tolerance", "on a cylinder's or bore's Ø only");
+          bad(at + ".tolerance", "on a cylinder's or bore's Ø only", "ใส่ได้เฉพาะที่ Ø ของทรงกระบอกหรือรูคว้านเท่านั้น");
         else
           readTolerance(o["tolerance"], at + ".tolerance", step.diameter, true, step.tolerance);
       }
@@ -214,32 +253,35 @@ io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::st
     readSteps("outside", true, part.outside);
   if (j.contains("inside")) {
     if (!j["inside"].is_array())
-      bad("inside", "a list [ { \"bore\": ..., \"length\": ... } ]");
+      bad("inside", "a list [ { \"bore\": ..., \"length\": ... } ]", "รายการ [ { \"bore\": ..., \"length\": ... } ]");
     else
       readSteps("inside", false, part.inside);
   }
   if (j.contains("general_tolerance")) {
     const auto& g = j["general_tolerance"];
     if (!g.is_string() || !generalTolerance(g.get<std::string>(), 10.0))
-      bad("general_tolerance", "\"f\", \"m\", \"c\" or \"v\" (ISO 2768-1)");
+      bad("general_tolerance", "\"f\", \"m\", \"c\" or \"v\" (ISO 2768-1)",
+          "\"f\", \"m\", \"c\" หรือ \"v\" (ISO 2768-1)");
     else
       part.generalTolerance = g.get<std::string>();
   }
   if (j.contains("part_off")) {
     if (!j["part_off"].is_boolean())
-      bad("part_off", "true or false");
+      bad("part_off", "true or false", "true หรือ false");
     else
       part.partOff = j["part_off"].get<bool>();
   }
   if (j.contains("grooves")) {
-    if (!j["grooves"].is_array()) bad("grooves", "a list [ { \"z\": ..., \"width\": ..., \"diameter\": ... } ]");
+    if (!j["grooves"].is_array())
+      bad("grooves", "a list [ { \"z\": ..., \"width\": ..., \"diameter\": ... } ]",
+          "รายการ [ { \"z\": ..., \"width\": ..., \"diameter\": ... } ]");
     for (std::size_t k = 0; j["grooves"].is_array() && k < j["grooves"].size(); ++k) {
       const nlohmann::json& o = j["grooves"][k];
       const std::string at = "grooves[" + std::to_string(k) + "]";
       Groove g;
       if (!o.is_object() || !o.contains("z") || !o["z"].is_number() || !std::isfinite(o["z"].get<double>()) ||
           o["z"].get<double>() > 0.0) {
-        bad(at + ".z", "the Z of its right wall, 0 or below");
+        bad(at + ".z", "the Z of its right wall, 0 or below", "ค่า Z ของผนังด้านขวาของร่อง เป็น 0 หรือต่ำกว่า");
         continue;
       }
       g.z = o["z"].get<double>();
@@ -249,14 +291,16 @@ io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::st
     }
   }
   if (j.contains("threads")) {
-    if (!j["threads"].is_array()) bad("threads", "a list [ { \"z\": ..., \"length\": ..., \"pitch\": ... } ]");
+    if (!j["threads"].is_array())
+      bad("threads", "a list [ { \"z\": ..., \"length\": ..., \"pitch\": ... } ]",
+          "รายการ [ { \"z\": ..., \"length\": ..., \"pitch\": ... } ]");
     for (std::size_t k = 0; j["threads"].is_array() && k < j["threads"].size(); ++k) {
       const nlohmann::json& o = j["threads"][k];
       const std::string at = "threads[" + std::to_string(k) + "]";
       Thread t;
       if (!o.is_object() || !o.contains("z") || !o["z"].is_number() || !std::isfinite(o["z"].get<double>()) ||
           o["z"].get<double>() > 0.0) {
-        bad(at + ".z", "the Z of its right end, 0 or below");
+        bad(at + ".z", "the Z of its right end, 0 or below", "ค่า Z ของปลายด้านขวาของเกลียว เป็น 0 หรือต่ำกว่า");
         continue;
       }
       t.z = o["z"].get<double>();
@@ -272,11 +316,13 @@ io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::st
 io::ReadResult<std::vector<CuttingSpeed>> readCuttingSpeeds(const std::string& path) {
   io::ReadResult<std::vector<CuttingSpeed>> result;
   const std::string file = path.empty() ? io::shippedCuttingSpeedsPath() : path;
-  std::ifstream in(file);
-  if (!in) {
-    result.diagnostics.push_back(fileDiagnostic(codes::kPartFileNotJson, 0, 0, {file, "it cannot be read"}));
+  // Read as every setup file is (a named pipe is refused, never waited on; issue 42 item 4).
+  const io::ReadResult<std::string> bytes = io::readFileLimited(file, kMaxPartFileBytes);
+  if (!bytes.value) {
+    result.diagnostics = bytes.diagnostics;
     return result;
   }
+  std::istringstream in(*bytes.value);
   std::vector<CuttingSpeed> rows;
   std::string line;
   for (int n = 1; std::getline(in, line); ++n) {

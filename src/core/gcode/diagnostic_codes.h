@@ -93,6 +93,7 @@ inline constexpr const char* kProfileEndsBeforeStart = "E415";      // {0}=cycle
 inline constexpr const char* kProfileStartsWithoutMotion = "E414";  // {0}=cycle and P word {1}=N number
 inline constexpr const char* kProfileHoldsItsCycle = "E417";        // {0}=cycle with P and Q {1}=N of P {2}=N of Q
 inline constexpr const char* kRoughingWithoutFeed = "E418";         // {0}=the cycle's G word
+inline constexpr const char* kCallWithoutP = "E419";  // {0}=G65/G66: no P (was E404 "program O?"; Fanuc alarm 076)
 // The called program's file name is in the folder, but as a folder (or a pipe, a device): Program::notProgramFiles.
 inline constexpr const char* kProgramFileNotAFile =
     "E416";  // {0}=word {1}=O number {2}=name {3}=what (en) {4}=what (th)
@@ -177,6 +178,7 @@ inline constexpr const char* kAll[] = {
     kProfileStartsWithoutMotion,
     kProfileHoldsItsCycle,
     kRoughingWithoutFeed,
+    kCallWithoutP,
     kProgramFileNotAFile,
     kOutOfRange,
     kTooManyDecimals,

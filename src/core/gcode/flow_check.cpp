@@ -159,7 +159,7 @@ class FlowChecker {
         emit(codes::kBadMacroArgument, w.range, {w.text(), std::string(1, w.letter)});
     }
     if (!b.find('P')) {
-      emit(codes::kProgramNotFound, g->range, {g->text(), "?"});
+      emit(codes::kCallWithoutP, g->range, {g->text()});  // not "program O?" (issue 42 item 6)
     } else if (p) {
       const CallTarget t = callTarget(p->value, l, false);
       if (const ProgramSection* callee = index_.program(t.number))

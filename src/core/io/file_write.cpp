@@ -172,8 +172,14 @@ std::optional<Diagnostic> writeFileAtomic(const std::string& path, std::string_v
 #ifndef _WIN32
   if (fs::exists(status) && !fs::is_regular_file(status)) {
     // A device or a pipe cannot be replaced by renaming over it: write into it.
-    const int fd = ::open(target.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+    // A pipe is opened without waiting (issue 42 item 4): with no reader at the
+    // other end the open fails at once (ENXIO) and the output is refused, F157;
+    // with one (`--json >(jq .)`, a FIFO someone reads) it is written as usual.
+    const int fd = ::open(target.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC | O_NONBLOCK);
+    if (fd < 0 && errno == ENXIO && fs::is_fifo(status))
+      return writeError(codes::kNotAnOrdinaryFile, {path, "a pipe (FIFO) that nobody reads", "ไปป์ (FIFO) ที่ไม่มีใครอ่าน"});
     if (fd < 0) return failure(path, errno);
+    if (const int flags = ::fcntl(fd, F_GETFL); flags >= 0) ::fcntl(fd, F_SETFL, flags & ~O_NONBLOCK);
     int err = writeAll(fd, bytes);
     if (::close(fd) != 0 && err == 0) err = errno;
     if (err != 0) return failure(path, err);

@@ -33,12 +33,23 @@ std::optional<std::string> readFileBytes(const std::string& path, std::vector<Di
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
+  if (ec == std::errc::filename_too_long) {
+    diags.push_back(
+        makeDiagnostic(Severity::Error, codes::kPathTooLong, 0, 0, 0, {path, std::to_string(utf8Length(path))}));
+    return std::nullopt;
+  }
   if (!fs::exists(status)) {
     diags.push_back(makeDiagnostic(Severity::Error, codes::kNoSuchFile, 0, 0, 0, {path}));
     return std::nullopt;
   }
   if (fs::is_directory(status)) {
     diags.push_back(makeDiagnostic(Severity::Error, codes::kCannotReadFile, 0, 0, 0, {path}));
+    return std::nullopt;
+  }
+  // A named pipe would wait for a writer for ever: refused unopened (F157). A
+  // pipe we hold (standard input, a shell's <(cmd)) is read until its end below.
+  if (std::optional<Diagnostic> refused = wouldBlockOnOpen(path)) {
+    diags.push_back(std::move(*refused));
     return std::nullopt;
   }
   std::ifstream in(path, std::ios::binary);

@@ -351,15 +351,18 @@ struct MachineKey {
 };
 
 // Values no lathe has (rapid_x = 1e-300, max_spindle_rpm = 1e308 once passed): F148.
+// `zeroIsOff`: 0 is allowed too (accel_x = 0 turns acceleration off), but nothing between 0 and min
+// (accel_x = 1e-320 made every move last for ever: a cycle time of inf; issue 42 item 6).
 struct Plausible {
   const char* name;
   double min, max;
+  bool zeroIsOff = false;
 };
 constexpr Plausible kPlausible[] = {
     {"rapid_x", 1.0, 200000.0},
     {"rapid_z", 1.0, 200000.0},
-    {"accel_x", 0.0, 100000.0},
-    {"accel_z", 0.0, 100000.0},
+    {"accel_x", 1.0, 100000.0, true},
+    {"accel_z", 1.0, 100000.0, true},
     {"max_spindle_rpm", 1.0, 100000.0},
     {"spindle_power_kw", 0.0, 10000.0},
     {"spindle_torque_nm", 0.0, 1000000.0},
@@ -501,11 +504,12 @@ ReadResult<MachineConfig> parseMachineConfig(std::string_view text, const std::s
     }
     bool plausible = true;
     for (const Plausible& p : kPlausible)
-      if (key == p.name && (*number < p.min || *number > p.max)) {
-        diags.push_back(makeDiagnostic(Severity::Error, codes::kParameterOutOfRange, lineNumber, valueColumn,
-                                       utf8Length(value),
-                                       {fileName, std::string(key), std::string(value), detail::formatNumber(p.min),
-                                        detail::formatNumber(p.max)}));
+      if (key == p.name && (*number < p.min || *number > p.max) && !(p.zeroIsOff && *number == 0.0)) {
+        const std::string min = detail::formatNumber(p.min);
+        diags.push_back(
+            makeDiagnostic(Severity::Error, codes::kParameterOutOfRange, lineNumber, valueColumn, utf8Length(value),
+                           {fileName, std::string(key), std::string(value), p.zeroIsOff ? "0 (off) or " + min : min,
+                            detail::formatNumber(p.max), p.zeroIsOff ? "0 (ปิด) หรือ " + min : min}));
         plausible = false;
       }
     if (!plausible) continue;

@@ -16,6 +16,8 @@
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/gcode/program_index.h"
 #include "klueng/core/io/folder_files.h"
+#include "klueng/core/io/image.h"
+#include "klueng/core/messages.h"
 #include "klueng/core/io/tool_library.h"
 #include "klueng/core/infer/point_reading.h"
 #include "klueng/core/gcode/decimal_point.h"
@@ -123,6 +125,25 @@ void dropFilesOutside(gcode::Program& program, const std::string& folder, std::v
   }
 }
 
+// E305 "tool 01 has no bitmap" for a station whose tools.cfg names a picture that cannot be
+// used says why instead (E311: too large, a pipe, damaged; issue 42 item 6).
+void explainUnusableBitmaps(std::vector<Diagnostic>& found, const io::ToolTable& tools) {
+  for (Diagnostic& d : found) {
+    if (d.code != "E305" || d.args.size() < 2) continue;  // the checker's kToolWithoutBitmap
+    const int tool = std::atoi(d.args[1].c_str());
+    if (tool < 1 || tool > static_cast<int>(tools.bitmap.size())) continue;
+    const std::string& name = tools.bitmap[static_cast<std::size_t>(tool - 1)];
+    const std::string path = tools.bitmapPath(tool);
+    if (name.empty() || path.empty()) continue;
+    const io::ReadResult<io::RgbImage> image = io::readImage(path);
+    if (image.value || image.diagnostics.empty()) continue;
+    Diagnostic why = image.diagnostics.front();
+    if (!why.args.empty()) why.args.front() = name;
+    d.code = codes::kToolBitmapUnusable;
+    d.args = {d.args[0], d.args[1], formatMessage(why, Lang::En), formatMessage(why, Lang::Th)};
+  }
+}
+
 bool byPlace(const Diagnostic& a, const Diagnostic& b) {
   if (a.range.file != b.range.file) return a.range.file < b.range.file;
   return a.range.line != b.range.line ? a.range.line < b.range.line : a.range.column < b.range.column;
@@ -187,10 +208,15 @@ std::shared_ptr<const Job> makeJob(JobInput input) {
   std::shared_ptr<Job> job(new Job());
   Job& j = *job;
   j.tools_.setup = input.setup;
+  const bool readBefore = input.readDiagnostics.has_value();
+  if (readBefore) {
+    j.diagnostics_ = std::move(*input.readDiagnostics);
+    input.readDiagnostics.reset();
+  }
   if (input.file) {
     j.file_ = std::move(input.file);
     input.file.reset();
-  } else {
+  } else if (!readBefore) {
     auto read = io::readProgramFile(input.path, input.defaultsForPlain);
     j.diagnostics_ = std::move(read.diagnostics);
     j.file_ = std::move(read.value);
@@ -285,6 +311,7 @@ std::shared_ptr<const Job> makeJob(JobInput input) {
         check.toolsWithBitmap = std::move(tools);
     found = gcode::check(program, check);
   }
+  explainUnusableBitmaps(found, j.tools_.setup.tools);
   found.insert(found.end(), reading.diagnostics.begin(), reading.diagnostics.end());
   // Say once which dialect accepts a program this one refuses (I102).
   if (auto fit = gcode::suggestDialect(program, check, found)) {

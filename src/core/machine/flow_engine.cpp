@@ -162,7 +162,9 @@ bool FlowEngine::loopLimits(const Block& b, const io::MachineConfig& m, const Ma
   // A time limit is no loop detector (issue 29 item 5): a program that has run no
   // block twice ends within its own length, however long it takes; only a run
   // that repeats blocks (through M99, GOTO, WHILE) is stopped by the clock.
-  if (m.maxRunTime > 0.0 && repeatedBlocks_ > 0 && clock.elapsed() > m.maxRunTime)
+  // Only while a block runs again: a subprogram called twice (M98 P1000 L2) followed by a long,
+  // slow cut of the main program is no loop, and the clock does not stop it (issue 42 item 6).
+  if (m.maxRunTime > 0.0 && repeating_ && clock.elapsed() > m.maxRunTime)
     return stop(codes::kEndlessLoopTime, {num(clock.elapsed()), num(m.maxRunTime)});
   return true;
 }

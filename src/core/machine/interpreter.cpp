@@ -415,6 +415,7 @@ bool Interpreter::mCode(const CodeWord& c) {
       call.target = gcode::callTarget(p ? p->value : 0.0, l ? std::optional<double>(l->value) : std::nullopt, packed);
       // A missing target stops the run on this block, before its snapshot.
       const gcode::ProgramIndex& index = flow_.index();
+      if (a == CodeAction::SubprogramCall && !p) return raise(codes::kCallWithoutProgram, c.word, {call.text});
       if (a == CodeAction::SubprogramCall && call.target.repeats > 0 && !index.program(call.target.number))
         return raise(codes::kNoSuchProgram, c.word, {call.text, std::to_string(call.target.number)});
       if (a == CodeAction::LocalCall && call.target.repeats > 0 &&

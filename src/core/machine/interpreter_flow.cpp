@@ -231,7 +231,7 @@ bool Interpreter::macroCall(const Block& b, const CodeWord& g) {
   const Word* p = nullptr;
   for (const Word& w : b.words)
     if (w.letter == 'P' && !w.comma && !p) p = &w;
-  if (!p) return flowAlarm(codes::kNoSuchProgram, at, {text, "?"});
+  if (!p) return flowAlarm(codes::kCallWithoutProgram, at, {text});  // not "program O?" (issue 42 item 6)
   const Word* l = nullptr;
   for (const Word& w : b.words)
     if (w.letter == 'L') l = &w;

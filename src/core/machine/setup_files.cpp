@@ -13,7 +13,8 @@
 namespace klueng::core::machine {
 
 bool isUnreadable(const Diagnostic& d) {
-  return d.code == codes::kNoSuchFile || d.code == codes::kCannotReadFile || d.code == codes::kFileTooLarge;
+  return d.code == codes::kNoSuchFile || d.code == codes::kCannotReadFile || d.code == codes::kFileTooLarge ||
+         d.code == codes::kNotAnOrdinaryFile || d.code == codes::kPathTooLong;
 }
 
 bool LoadedSetup::hasErrors() const {

@@ -11,6 +11,7 @@
 
 #include "klueng/core/gcode/parser.h"
 #include "klueng/core/gcode/program_index.h"
+#include "klueng/core/io/folder_files.h"
 #include "klueng/core/io/program_file.h"
 
 namespace klueng::core::machine {
@@ -116,6 +117,9 @@ std::vector<Diagnostic> attachSubprogramFiles(gcode::Program& program, const std
       attached.insert(path);
       const int fileIndex = static_cast<int>(program.files.size());
       program.files.push_back(path);
+      // A link that leaves the folder (O1000.nc -> /etc/shadow) is never opened: the
+      // job drops the file with F158 and the call is E404 (issue 42 item 1).
+      if (!io::insideFolder(path, folder)) continue;
       io::ReadResult<io::ProgramFile> read = io::readProgramFile(path);
       for (Diagnostic d : read.diagnostics) {
         d.range.file = fileIndex;

@@ -89,5 +89,30 @@ TEST(Messages, TheGuiNamesItsOwnPlacesNotFlags) {
             "blocks with errors or warnings that are Haas forms: 3; choose the Haas dialect (--dialect haas)");
 }
 
+// Issue 42 item 6: a 10 MB tool name made a 10 MB message. An argument over
+// kMaxMessageArgChars code points is shortened in its middle (never inside a Thai
+// character) and the message says how much was left out; the args stay whole.
+TEST(Messages, VeryLongArgumentsAreShortenedInTheMiddle) {
+  const std::string name = "start-" + std::string(10 * 1024 * 1024, 'x') + "-end";
+  const Diagnostic d{Severity::Error, codes::kNoSuchFile, {}, {name}};
+  const std::string en = formatMessage(d, Lang::En);
+  EXPECT_LT(en.size(), 2 * kMaxMessageArgChars);
+  EXPECT_TRUE(en.starts_with("start-xxx")) << en.substr(0, 100);
+  EXPECT_NE(en.find("-end: no such file"), std::string::npos);
+  EXPECT_NE(en.find(" … [" + std::to_string(name.size() - kMaxMessageArgChars * 3 / 4 - kMaxMessageArgChars / 5) +
+                    " characters left out] … "),
+            std::string::npos);
+  EXPECT_NE(formatMessage(d, Lang::Th).find("ตัวอักษร] …"), std::string::npos);
+  EXPECT_EQ(d.args.front().size(), name.size());
+  // Thai text is cut between characters, and a short text is left as it is.
+  std::string thai;
+  for (int i = 0; i < 3000; ++i) thai += "ก";
+  const std::string cut = elideMessageArg(thai, Lang::En);
+  EXPECT_LT(cut.size(), thai.size());
+  EXPECT_TRUE(cut.starts_with("กกก"));
+  EXPECT_TRUE(cut.ends_with("กกก"));
+  EXPECT_EQ(elideMessageArg("short", Lang::En), "short");
+}
+
 }  // namespace
 }  // namespace klueng::core

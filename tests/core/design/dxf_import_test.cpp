@@ -406,5 +406,58 @@ TEST(DxfImport, AHugeFiniteBulgeIsAnArcTooLargeNotANumberlessOne) {
   }
 }
 
+// Issue 42 item 6: the messages of a bad drawing read as sentences with sane numbers:
+// no "- mm away", no "Øinf", no 300-digit number, and a drawing of 100,000 layers
+// does not make a message of 789 KB.
+TEST(DxfImport, MessagesSayNumbersSanelyAndStayShort) {
+  {  // One loose end and no other left to join it to.
+    Sketch s;
+    s.line(60, 0, 60, 12).line(60, 12, 0, 12).line(0, 12, 0, 5);
+    const auto [code, text] = firstProblem(s.text());
+    EXPECT_EQ(code, "F189");
+    EXPECT_EQ(text, "p.dxf: the outline is open at X0.000 Y5.000: no other loose line end is left to join it to");
+    Sketch t;
+    t.line(60, 0, 60, 12).line(60, 12, 0, 12).line(0, 12, 0, 5);
+    const auto read = importDxf(t.text(), "p.dxf");
+    ASSERT_FALSE(read.diagnostics.empty());
+    EXPECT_EQ(formatMessage(read.diagnostics[0], Lang::Th),
+              "p.dxf: รูปร่างไม่ปิดที่ X0.000 Y5.000: ไม่มีปลายเส้นอื่นที่ยังไม่ต่อเหลืออยู่ให้ต่อเข้าด้วยกัน");
+  }
+  // Sizes of 250 digits, and past what a double holds once in mm (written by hand: dxflib's
+  // writer overflows its buffer on such numbers).
+  for (const char* k : {"e250", "e305"}) {
+    std::string dxf = "0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n6\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n";
+    const auto line = [&](const std::string& x1, const std::string& y1, const std::string& x2, const std::string& y2) {
+      dxf += "0\nLINE\n8\nPROFILE\n10\n" + x1 + "\n20\n" + y1 + "\n11\n" + x2 + "\n21\n" + y2 + "\n";
+    };
+    const std::string w = std::string("6") + k, h = std::string("2") + k;
+    line(w, "0", w, h);
+    line(w, h, "0", h);
+    line("0", h, "0", "0");
+    line("0", "0", w, "0");
+    dxf += "0\nENDSEC\n0\nEOF\n";
+    const auto [code, text] = firstProblem(dxf);
+    EXPECT_EQ(code, "F192") << text;
+    EXPECT_EQ(text.find("inf"), std::string::npos) << text;
+    EXPECT_EQ(text.find("0000000000"), std::string::npos) << text;
+    EXPECT_LT(text.size(), 200u) << text;
+  }
+  {  // Thai names the units in Thai.
+    Sketch s(6);
+    drawStepShaft(s, 60, 0);
+    const auto read = importDxf(s.text(), "p.dxf");
+    ASSERT_FALSE(read.diagnostics.empty());
+    EXPECT_EQ(formatMessage(read.diagnostics[0], Lang::Th).find("metres"), std::string::npos);
+  }
+  {  // 100,000 layers, each with a line: the message lists some and says how many were left out.
+    Sketch s;
+    for (int i = 0; i < 100000; ++i) s.line(0, i, 1, i, "LAYER-" + std::to_string(i));
+    const auto [code, text] = firstProblem(s.text());
+    EXPECT_EQ(code, "F187");
+    EXPECT_LT(text.size(), 2000u);
+    EXPECT_NE(text.find("characters left out"), std::string::npos) << text.substr(0, 300);
+  }
+}
+
 }  // namespace
 }  // namespace klueng::core::design

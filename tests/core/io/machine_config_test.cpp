@@ -121,6 +121,26 @@ TEST(MachineConfigRanges, ImplausibleValuesAreRefused) {
             "machine.cfg: the tool start start_z = 300 is outside the travel limits -200 to 250");
 }
 
+// Issue 42 item 6: accel_x = 1e-320 made every move last for ever (a cycle time of inf, and
+// JSON that is not JSON); 0 still turns acceleration off, and the message names the range.
+TEST(MachineConfigRanges, AccelerationIsZeroOrAtLeastOne) {
+  const auto r = parseMachineConfig("accel_x = 1e-320\naccel_z = 0.5\n", "machine.cfg");
+  ASSERT_EQ(r.diagnostics.size(), 2u);
+  EXPECT_EQ(r.diagnostics[0].code, "F148");
+  EXPECT_EQ(r.diagnostics[0].range.line, 1);
+  EXPECT_EQ(r.diagnostics[1].range.line, 2);
+  EXPECT_DOUBLE_EQ(r.value->accelX, MachineConfig{}.accelX);
+  EXPECT_EQ(formatMessage(r.diagnostics[0], Lang::En),
+            "machine.cfg: accel_x = 1e-320 is outside what a lathe can have (0 (off) or 1 to 100000); the default is "
+            "used");
+  EXPECT_EQ(formatMessage(r.diagnostics[0], Lang::Th),
+            "machine.cfg: accel_x = 1e-320 อยู่นอกช่วงที่เครื่องกลึงจะมีได้ (0 (ปิด) หรือ 1 ถึง 100000) จึงใช้ค่าเริ่มต้นแทน");
+  const auto off = parseMachineConfig("accel_x = 0\naccel_z = 2500\n", "machine.cfg");
+  EXPECT_TRUE(off.diagnostics.empty());
+  EXPECT_DOUBLE_EQ(off.value->accelX, 0.0);
+  EXPECT_DOUBLE_EQ(off.value->accelZ, 2500.0);
+}
+
 // Issue 29 item 10: a setup file's problems are capped as a program's are (E199):
 // 100 of them, then F129 at the line where reading stopped.
 TEST(ConfigProblemCap, AHostileMachineCfgReportsAHundredProblemsThenStops) {

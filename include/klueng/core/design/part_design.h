@@ -82,6 +82,12 @@ struct PartDesign {
 // The largest part design (JSON) or drawing (DXF) read: a lathe part's half
 // section is kilobytes; a 90 MB drawing took 16 s and 1.1 GB to refuse (issue 29).
 inline constexpr std::size_t kMaxPartFileBytes = 16u * 1024u * 1024u;
+// The largest size a design may give (the largest stock a program's header holds), and
+// the longest name or material (they are written into the program's header).
+inline constexpr double kMaxPartSize = 9999.999;
+inline constexpr double kMaxStockDiameter = 2000.0;
+inline constexpr double kMaxStockLength = 5000.0;
+inline constexpr std::size_t kMaxPartTextChars = 200;
 // A part design's or drawing's bytes: F101 no such file, F102 a folder or
 // unreadable, F103 over kMaxPartFileBytes (a device such as /dev/zero stops there).
 io::ReadResult<std::string> readPartFile(const std::string& path);

@@ -23,6 +23,19 @@ ReadResult<std::string> readFileLimited(const std::string& path, std::size_t max
 // folder or a missing path (their own readers say F101/F102).
 std::optional<Diagnostic> notAnOrdinaryFile(const std::string& path);
 
+// Whether `path` names a descriptor this process already holds open:
+// /dev/stdin, /dev/fd/N, /proc/self/fd/N (a shell's `<(cmd)`), or a link to
+// one. Such a pipe has its writer already: it is read until its end, with
+// the same size limit as a file (issue 42 item 4).
+bool isOpenDescriptor(const std::string& path);
+
+// F157 when opening `path` to read could wait for ever: a named pipe (FIFO)
+// that is not one of our open descriptors (it waits for a writer), or a
+// socket. Every reader of the io module asks it before it opens a file, so a
+// program, a setup table, a part design or a machine file that is a FIFO is
+// refused at once. Only lstat/stat/readlink are called. nullopt otherwise.
+std::optional<Diagnostic> wouldBlockOnOpen(const std::string& path);
+
 // The limit as F103 says it: "64 MB", "1 MB", "1500 bytes".
 std::string sizeLimitText(std::size_t maxBytes);
 

@@ -34,6 +34,10 @@ struct JobInput {
   // memory), else the file at `path`, read here.
   std::string path;
   std::optional<io::ProgramFile> file;
+  // What reading the program said when the caller read it already (a pipe or
+  // standard input can be read only once, issue 42 item 4): with `file`, its
+  // warnings; without, why it could not be read (then `path` is not read again).
+  std::optional<std::vector<Diagnostic>> readDiagnostics;
   // Where subprogram files come from; nullopt = the folder of `path` (empty = none).
   std::optional<std::string> folder;
   machine::MachineSetup setup;  // tools.cfg / offset.cfg / machine.cfg as loaded

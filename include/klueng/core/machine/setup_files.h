@@ -35,7 +35,8 @@ struct LoadedSetup {
   std::optional<std::vector<int>> toolsWithBitmap() const;
 };
 
-// True for "the file could not be read at all" (missing, a folder, no access, too large).
+// True for "the file could not be read at all" (missing, a folder, no access, too large, a
+// named pipe or a device refused unopened, a path too long to open).
 bool isUnreadable(const Diagnostic& d);
 
 // Reads the setup from findConfigDir(explicitDir). Every bitmap is decoded
