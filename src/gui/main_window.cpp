@@ -186,7 +186,7 @@ QWidget* MainWindow::createOutputPane() {
   outputLayout->addWidget(setupStrip_);
   outputLayout->addWidget(output_, 1);
   // Spindle power and Vc over the cycle time (issue 39), from the explain bar's cutting data.
-  cuttingPlot_ = new CuttingPlot(runner_, outputPane);
+  cuttingPlot_ = new CuttingPlot(runner_, pane);
   connect(explainBar_, &ExplainBar::cuttingDataReady, cuttingPlot_, &CuttingPlot::setData);
   outputLayout->addWidget(cuttingPlot_);
   outputLayout->addWidget(statusLamps_);

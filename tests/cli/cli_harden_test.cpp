@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "cli_common.h"
+#include "cli_shell.h"
 #include "klueng/core/io/macro_variables.h"
 
 extern char** environ;
@@ -33,35 +34,17 @@ namespace {
 namespace fs = std::filesystem;
 
 // The CLI under test; KLUENG_CLI_UNDER_TEST runs these tests against another build (an older one, to see them fail).
-const std::string kCli = std::getenv("KLUENG_CLI_UNDER_TEST") ? std::getenv("KLUENG_CLI_UNDER_TEST") : KLUENG_CLI_PATH;
+const std::string kCli = klueng::test::cliUnderTest(KLUENG_CLI_PATH);
 
 const std::string kSecret = "SECRET-MARKER-do-not-print:$6$salt$hash:19000:0:99999:7:::";
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-void put(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
-
-std::string quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
+using klueng::test::put;
+using klueng::test::slurp;
+constexpr auto quote = &klueng::test::shellQuote;
 
 // klueng-cli ARGS (stdout and stderr together); the exit status.
 int run(const std::string& args, std::string& out) {
-  const std::string command = "env LC_ALL= LC_MESSAGES= LANG=C " + quote(kCli) + " " + args + " 2>&1";
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (!pipe) return -1;
-  char buf[4096];
-  out.clear();
-  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) out.append(buf, n);
-  const int status = ::pclose(pipe);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return klueng::test::runShell("env LC_ALL= LC_MESSAGES= LANG=C " + quote(kCli) + " " + args, out);
 }
 
 // A folder of its own per test and process, removed at the end.

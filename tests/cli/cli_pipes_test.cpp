@@ -15,6 +15,7 @@
 #include <string>
 
 #include "../scratch_folders.h"
+#include "cli_shell.h"
 
 // Its own namespace: the tests are unity-built and sibling files have helpers of the same names.
 namespace cli_pipes_test {
@@ -23,42 +24,26 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kCli = std::getenv("KLUENG_CLI_UNDER_TEST") ? std::getenv("KLUENG_CLI_UNDER_TEST") : KLUENG_CLI_PATH;
+const std::string kCli = klueng::test::cliUnderTest(KLUENG_CLI_PATH);
 
 const auto* const kCleanup = klueng::test::removeScratchFoldersAtExit({"klueng_cli_pipes-"});
 
-std::string quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
+using klueng::test::put;
+using klueng::test::slurp;
+constexpr auto quote = &klueng::test::shellQuote;
 
 // `shell` run by bash (stdout and stderr together), cut off after 30 s: a command that waits
 // on a pipe is killed by `timeout` and its status is 124. {cli} stands for the CLI.
 int sh(std::string shell, std::string& out) {
   for (std::size_t at; (at = shell.find("{cli}")) != std::string::npos;)
-    shell.replace(at, 5, "env LC_ALL= LC_MESSAGES= LANG=C timeout 30 " + quote(kCli));
-  const std::string command = "bash -c " + quote(shell) + " 2>&1";
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (!pipe) return -1;
-  char buf[4096];
-  out.clear();
-  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) out.append(buf, n);
-  const int status = ::pclose(pipe);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    shell.replace(at, 5, klueng::test::cliCommand(kCli, 30));
+  return klueng::test::runShell("bash -c " + quote(shell), out);
 }
 
 fs::path scratch() {
   const fs::path p = fs::temp_directory_path() / ("klueng_cli_pipes-" + std::to_string(::getpid()));
   fs::create_directories(p);
   return p;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 fs::path fifo(const std::string& name) {

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "../scratch_folders.h"
+#include "cli_shell.h"
 
 // Its own namespace: the tests are unity-built and sibling files have helpers of the same names.
 namespace cli_words_test {
@@ -25,22 +26,11 @@ const std::string kCli = std::getenv("KLUENG_CLI_UNDER_TEST") ? std::getenv("KLU
 
 const auto* const kCleanup = klueng::test::removeScratchFoldersAtExit({"klueng_cli_words-"});
 
-std::string quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
+constexpr auto quote = &klueng::test::shellQuote;
 
 // klueng-cli ARGS (stdout and stderr together); the exit status.
 int run(const std::string& args, std::string& out) {
-  const std::string command = "env LC_ALL= LC_MESSAGES= LANG=C timeout 60 " + quote(kCli) + " " + args + " 2>&1";
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (!pipe) return -1;
-  char buf[4096];
-  out.clear();
-  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) out.append(buf, n);
-  const int status = ::pclose(pipe);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return klueng::test::runShell(klueng::test::cliCommand(kCli, 60) + " " + args, out);
 }
 
 fs::path scratch() {
@@ -154,7 +144,7 @@ TEST(CliWords, APathTooLongToOpenSaysSo) {
   std::string out;
   EXPECT_EQ(run("check " + quote(path) + kConfig, out), 2) << out.substr(0, 300);
   EXPECT_EQ(out.find("no such file"), std::string::npos) << out.substr(0, 300);
-  EXPECT_NE(out.find("error F172: "), std::string::npos) << out.substr(0, 300);
+  EXPECT_NE(out.find("error F176: "), std::string::npos) << out.substr(0, 300);
   EXPECT_NE(out.find("the path is too long for the system to open (" + std::to_string(path.size()) + " characters"),
             std::string::npos)
       << out.substr(0, 300);

@@ -90,7 +90,7 @@ inline constexpr const char* kNotAnOrdinaryFile = "F157";  // {0} file, {1} what
 // A folder run (check DIR, class DIR) reads only what lies in the folder, and says what it will not quote (issue 42).
 inline constexpr const char* kOutsideFolder = "F158";  // {0} file: a link that leaves the folder, never read
 // A path the system cannot open as it is written (ENAMETOOLONG), rather than "no such file" (issue 42 item 6).
-inline constexpr const char* kPathTooLong = "F172";  // {0} file, {1} its length in characters
+inline constexpr const char* kPathTooLong = "F176";  // {0} file, {1} its length in characters
 inline constexpr const char* kNotAProgram = "F159";  // {0} file, {1} why (en), {2} why (th); its text is not shown
 inline constexpr const char* kLibraryLineFields = "F160";
 inline constexpr const char* kBadToolId = "F161";

@@ -75,7 +75,7 @@ struct MaterialTable {
 };
 
 // `id | names (comma separated) | English | Thai | HSS min-max | carbide min-max | kc1.1 | mc | source`.
-// A bad line is F172 (fields) / F173 (a number or range), and left out.
+// A bad line is F173 (fields) / F174 (a number or range), and left out.
 io::ReadResult<MaterialTable> parseMaterials(std::string_view text, const std::string& fileName);
 io::ReadResult<MaterialTable> readMaterials(const std::string& path);
 std::string shippedMaterialsPath();       // resources/parts/materials.cfg of the shipped data
