@@ -256,6 +256,11 @@ constexpr MessageText kGcodeMessages[] = {
      "this control ends the block at ';' and runs \"{0}\" after it as the next block; Klueng reads it as a comment: "
      "put it on a line of its own",
      "เครื่องนี้จบบล็อกที่ ';' และทำงาน \"{0}\" ที่อยู่หลังเป็นบล็อกถัดไป แต่ Klueng อ่านเป็นหมายเหตุ: ให้เขียนไว้ในบรรทัดของตัวเอง"},
+    {"W118",
+     "{0} shares its block with other words: this control runs the block's move and other words first, then "
+     "stops; a stop on a line of its own is easier to read",
+     "{0} อยู่ในบล็อกเดียวกับคำสั่งอื่น: เครื่องนี้ทำการเคลื่อนที่และคำสั่งอื่นในบล็อกก่อนแล้วจึงหยุด "
+     "การเขียนคำสั่งหยุดไว้บรรทัดของตัวเองอ่านง่ายกว่า"},
     {"W117",
      "{0}: program number 0, as a CAM post leaves it; the program runs, but the control stores programs from O1 "
      "up: give it its own number before you send it to the machine's memory",

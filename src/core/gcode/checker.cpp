@@ -385,10 +385,14 @@ class Checker {
   // Rules 3 and 7 (stand-alone codes; N may come before them) and rule 6 (a
   // one-shot G with a motion G).
   void checkCodeRules(const BlockCodes& seen) {
-    for (int k = 0; k < seen.standAloneCount; ++k)
-      if (seen.nonNWords > 1)
-        emit(seen.standAlone[k]->letter == 'G' ? codes::kFeedModeNotAlone : codes::kMustStandAlone, *seen.standAlone[k],
-             {wordText(*seen.standAlone[k])});
+    for (int k = 0; k < seen.standAloneCount; ++k) {
+      if (seen.nonNWords <= 1) continue;
+      const Word& w = *seen.standAlone[k];
+      if (w.letter == 'M' && !profile_.stopCodesAloneIsError)
+        emit(codes::kStopCodeWithOtherWords, w, {wordText(w)}, Severity::Warning);
+      else
+        emit(w.letter == 'G' ? codes::kFeedModeNotAlone : codes::kMustStandAlone, w, {wordText(w)});
+    }
     const auto& withMotion = profile_.oneShotsWithMotion;
     if (seen.oneShotWord && seen.motionWord &&
         std::find(withMotion.begin(), withMotion.end(), seen.oneShot->number) == withMotion.end()) {

@@ -120,11 +120,12 @@ inline constexpr const char* kPointlessLengthWhole = "W111";  // {0}=word {1}=as
 inline constexpr const char* kSingleCycleWithoutEnd = "W112";  // {0}=the cycle's G word
 // `G92 S2500` read in system A: the threading cycle's code with only S sets the spindle speed; in
 // system B it is the clamp. A warning, and suggestDialect offers a system-B machine.
-inline constexpr const char* kClampOfAnotherSystem = "W115";   // {0}=the G word {1}=the S word
-inline constexpr const char* kSameGroupLastWins = "W116";  // {0}=first {1}=second (used) {2}=group
-inline constexpr const char* kProgramNumberZero = "W117";  // {0}=word
-inline constexpr const char* kLoneCloseAfterComment = "W113";  // {0}=what follows a comment's first ')' (no letter)
-inline constexpr const char* kWordsAfterEndOfBlock = "W114";   // {0}=the words after ';'
+inline constexpr const char* kClampOfAnotherSystem = "W115";    // {0}=the G word {1}=the S word
+inline constexpr const char* kSameGroupLastWins = "W116";       // {0}=first {1}=second (used) {2}=group
+inline constexpr const char* kProgramNumberZero = "W117";       // {0}=word
+inline constexpr const char* kStopCodeWithOtherWords = "W118";  // {0}=word (M00 M01 M02 M30)
+inline constexpr const char* kLoneCloseAfterComment = "W113";   // {0}=what follows a comment's first ')' (no letter)
+inline constexpr const char* kWordsAfterEndOfBlock = "W114";    // {0}=the words after ';'
 
 // I1xx notes
 inline constexpr const char* kDialectFits = "I102";        // {0}=blocks {1}=dialect name {2}=dialect id

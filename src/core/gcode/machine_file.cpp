@@ -94,6 +94,7 @@ const Key kKeys[] = {
      KLUENG_SET(KLUENG_P.commentEndsAtFirstParen = v.number != 0.0)},
     {"angle_without_comma", Type::Flag, 0, 0, {}, KLUENG_SET(KLUENG_P.angleWithoutComma = v.number != 0.0)},
     {"same_group_last_wins", Type::Flag, 0, 0, {}, KLUENG_SET(KLUENG_P.sameGroupLastWins = v.number != 0.0)},
+    {"stop_codes_alone_is_error", Type::Flag, 0, 0, {}, KLUENG_SET(KLUENG_P.stopCodesAloneIsError = v.number != 0.0)},
     {"program_number_zero_is_error",
      Type::Flag,
      0,
@@ -166,7 +167,8 @@ const Key kKeys[] = {
 bool optionalKey(std::string_view name) {
   return name == "m_codes" || name == "semicolon_ends_block" || name == "comment_ends_at_first_paren" ||
          name == "angle_without_comma" || name == "same_group_last_wins" || name == "spindle_above_maximum_is_alarm" ||
-         name == "spindle_reversal_is_alarm" || name == "program_number_zero_is_error";
+         name == "spindle_reversal_is_alarm" || name == "program_number_zero_is_error" ||
+         name == "stop_codes_alone_is_error";
 }
 
 std::string_view trim(std::string_view s) {

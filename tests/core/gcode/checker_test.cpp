@@ -156,8 +156,10 @@ INSTANTIATE_TEST_SUITE_P(
         FailCase{"G01 X30. X31.", In::Both, "E202", 1, 10, 4}, FailCase{"F0.2 Z1. F0.3", In::Both, "E202", 1, 10, 4},
         FailCase{"T0101 T0202", In::Both, "E202", 1, 7, 5},
         // rule 3
-        FailCase{"M00 X20.", In::Both, "E203", 1, 1, 3}, FailCase{"N5 X20. M02", In::Both, "E203", 1, 9, 3},
-        FailCase{"G00 M30", In::Both, "E203", 1, 5, 3}, FailCase{"M01 M08", In::Both, "E203", 1, 1, 3},
+        FailCase{"M00 X20.", In::Classic, "E203", 1, 1, 3}, FailCase{"N5 X20. M02", In::Classic, "E203", 1, 9, 3},
+        FailCase{"G00 M30", In::Classic, "E203", 1, 5, 3}, FailCase{"M01 M08", In::Classic, "E203", 1, 1, 3},
+        // Fanuc, Haas: no manual says the control stops; the move first, then the stop (W118).
+        FailCase{"M00 X20.", In::Fanuc, "W118", 1, 1, 3}, FailCase{"G00 X100. Z100. M30", In::Fanuc, "W118", 1, 17, 3},
         // rule 4
         FailCase{"M03 M05", In::Both, "E204", 1, 5, 3}, FailCase{"M04 S500 M03", In::Both, "E204", 1, 10, 3},
         FailCase{"M08 M09", In::Both, "E204", 1, 5, 3}, FailCase{"M41 M91", In::Classic, "E204", 1, 5, 3},

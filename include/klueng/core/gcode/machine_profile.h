@@ -159,6 +159,9 @@ struct MachineProfile {
   // O0 (a CAM post's O0000 left as it came): refused (E116, the 1999 rules) or a warning (W117, where
   // no manual says the control stops on it).
   bool programNumberZeroIsError = false;
+  // M00 M01 M02 M30 with other words in the block (`G00 X100. Z100. M30`): refused (E203, the 1999
+  // rules) or run, the move first, with a warning (W118, where no manual says the control stops).
+  bool stopCodesAloneIsError = false;
   // An S above the machine's maximum under G97: an alarm (the 1999 trainer) or clamped to the maximum
   // with a warning (a Fanuc or Haas clamps it); M03 <-> M04 without M05: an alarm, or reversed.
   bool spindleAboveMaximumIsAlarm = true;
