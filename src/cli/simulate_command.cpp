@@ -141,7 +141,8 @@ int runSimulate(const std::vector<std::string>& args) {
   LoadedConfig config = loadConfig(o.configDir);
   // The machine the program names at its head, unless --machine or --dialect chose one.
   std::vector<Diagnostic> machineWarnings;
-  o.dialect = programMachine(o.file, o.dialectGiven, o.dialect, machineWarnings);
+  std::optional<io::ProgramFile> read;  // the file read once, for the machine and the job
+  o.dialect = programMachine(o.file, o.dialectGiven, o.dialect, machineWarnings, &read);
   if (!chooseMachine(o.machine, config, o.dialect, o.lang)) return 2;
   for (const auto& fd : config.diagnostics) printDiagnostic(fd.file, fd.diagnostic, o.lang);
   for (const Diagnostic& d : machineWarnings) printDiagnostic(o.file, d, o.lang);
@@ -155,6 +156,7 @@ int runSimulate(const std::vector<std::string>& args) {
   }
   request->calculatorInput = o.calculatorInput;
   request->path = o.file;
+  request->file = std::move(read);
   request->run.optionalStop = o.optionalStop;
   request->run.blockSkip = o.blockSkip;
   // #500-#999 belong to the machine, not to the program's folder (issue 26 item 9): they live in
