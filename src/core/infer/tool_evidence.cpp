@@ -97,15 +97,27 @@ Ends endsOf(const Move& m, bool mirror) {
   return {Vec2(m.path.start.x(), -m.path.start.y()), Vec2(m.path.end.x(), -m.path.end.y())};
 }
 
-// What each tool's moves show, summed over the run.
-std::map<int, MotionUse> recordMotion(std::span<const Move> moves, bool mirror) {
-  std::map<int, MotionUse> uses;
+// What each tool's moves show, summed over the run: the moves are added in run order, a
+// block's at a time (the gatherer reads each block's moves once, while they are in the cache).
+class MotionRecorder {
+ public:
+  explicit MotionRecorder(bool mirror) : mirror_(mirror) {}
+  void add(std::span<const Move> moves) {
+    for (const Move& m : moves) addMove(m);
+  }
+  const std::map<int, MotionUse>& uses() const { return uses_; }
+
+ private:
   struct Pending {
     int tool = 0;  // 0 = none
     double length = 0.0;
     int line = 0;
     bool thread = false;
   };
+  std::map<int, MotionUse> uses_;
+  bool mirror_ = false;
+  MotionUse* last_ = nullptr;  // uses_[lastTool_] (a map's elements stay put)
+  int lastTool_ = 0;
   // The last feed along Z toward the chuck, until X moves: a tool feeds into its
   // work toward the chuck and leaves it across X, outward from a diameter,
   // inward from a bore. (A feed toward the tailstock ends a face profile or a
@@ -114,12 +126,17 @@ std::map<int, MotionUse> recordMotion(std::span<const Move> moves, bool mirror) 
   // A straight feed outward off the centre line, then straight back in: an inside groove's plunge
   // from a bore (an outside tool never feeds out into the wall and drops back in).
   Pending outward;
-  for (const Move& m : moves) {
-    if (m.tool < 1 || m.kind == MoveKind::Dwell) continue;
-    const Ends p = endsOf(m, mirror);
+
+  void addMove(const Move& m) {
+    if (m.tool < 1 || m.kind == MoveKind::Dwell) return;
+    const Ends p = endsOf(m, mirror_);
     const Vec2 d = p.end - p.start;  // (z, x radius)
     const double dz = d.x(), dx = d.y();
-    MotionUse& u = uses[m.tool];
+    if (!last_ || lastTool_ != m.tool) {
+      last_ = &uses_[m.tool];
+      lastTool_ = m.tool;
+    }
+    MotionUse& u = *last_;
     if (zRun.tool != m.tool) zRun = {};
     // (A feed on down to the centre line after it is a face cut, not a bore's wall.)
     const bool facesToCentre = m.kind != MoveKind::Rapid && dx < 0.0 && 2.0 * p.end.y() <= kOnCentreMm;
@@ -138,7 +155,7 @@ std::map<int, MotionUse> recordMotion(std::span<const Move> moves, bool mirror) 
     }
     if (m.kind == MoveKind::Line && std::abs(dz) < 1e-3 && dx > 0.0 && p.start.y() > kOnCentreMm)
       outward = Pending{m.tool, dx, m.line, false};
-    if (m.kind == MoveKind::Rapid) continue;
+    if (m.kind == MoveKind::Rapid) return;
     if (m.kind == MoveKind::Thread && !u.threadLine) u.threadLine = m.line;
     if (std::abs(p.start.y()) <= kOnCentreMm && std::abs(p.end.y()) <= kOnCentreMm && dz < 0.0 &&
         p.end.x() < u.drillDepth) {
@@ -167,8 +184,7 @@ std::map<int, MotionUse> recordMotion(std::span<const Move> moves, bool mirror) 
       u.plungeLine = m.line;
     }
   }
-  return uses;
-}
+};
 
 bool isFeed(const Move& m) { return m.kind != MoveKind::Rapid && m.kind != MoveKind::Dwell; }
 
@@ -216,13 +232,14 @@ class Gatherer {
   void gather(const Timeline& run) {
     markBlockLines();
     readToolList();
-    const std::map<int, MotionUse> motion = recordMotion(run.moves, out_.beyondCentre);
+    MotionRecorder motion(out_.beyondCentre);
     std::size_t begin = 0;
     for (const StateSnapshot& s : run.snapshots) {
       const std::size_t end =
           std::clamp<std::size_t>(static_cast<std::size_t>(std::max(s.moveEnd, 0)), begin, run.moves.size());
       const std::span<const Move> moves(run.moves.data() + begin, end - begin);
       begin = end;
+      motion.add(moves);  // every move once, in run order
       if (s.blockIndex < 0 || static_cast<std::size_t>(s.blockIndex) >= program_.blocks.size()) continue;
       const gcode::Block& b = program_.blocks[static_cast<std::size_t>(s.blockIndex)];
       const int station = s.machine.tool;
@@ -235,8 +252,9 @@ class Gatherer {
       }
       block(b, moves, station, motionCode(s.modal.motion, dialect_));
     }
+    motion.add(std::span<const Move>(run.moves.data() + begin, run.moves.size() - begin));  // after the last block
     for (auto& [station, use] : out_.uses)
-      if (const auto it = motion.find(station); it != motion.end()) use.motion = it->second;
+      if (const auto it = motion.uses().find(station); it != motion.uses().end()) use.motion = it->second;
   }
 
  private:
@@ -254,9 +272,13 @@ class Gatherer {
   // (A flag per line of the program's own text: a set of 100,000 lines cost most of the scan.)
   void markBlockLines() {
     isBlockLine_.assign(out_.lines.size(), false);
+    const auto holdsMoreThanN = [](const gcode::Block& b) {
+      // A parsed block's letters are exact (no bit past 'Z'): its words need no visit (a cache miss each).
+      if ((b.letters >> 26) == 0) return (b.letters & ~gcode::Block::letterBit('N')) != 0;
+      return std::any_of(b.words.begin(), b.words.end(), [](const gcode::Word& w) { return w.letter != 'N'; });
+    };
     for (const gcode::Block& b : program_.blocks)
-      if (b.file == 0 && b.line >= out_.firstLine && b.line - out_.firstLine < lineCount() &&
-          std::any_of(b.words.begin(), b.words.end(), [](const gcode::Word& w) { return w.letter != 'N'; }))
+      if (b.file == 0 && b.line >= out_.firstLine && b.line - out_.firstLine < lineCount() && holdsMoreThanN(b))
         isBlockLine_[static_cast<std::size_t>(b.line - out_.firstLine)] = true;
   }
 
