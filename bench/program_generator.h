@@ -234,7 +234,10 @@ class YardstickGenerator {
   static constexpr int kPasses = 140;
   static constexpr int kMinimumBlocks = kPasses * 8;  // four G01 moves a pass at least
 
-  static std::string generate(int blocks, bool linuxcnc = false) {
+  // steps = true: the chain in steps of one word a block ("Z-12.345", then "X49.816"), about
+  // 8.5 bytes a block, so that a 5,000,000-block program stays under the 64 MB a file may
+  // have (issue 42 item 3: the check's memory a block).
+  static std::string generate(int blocks, bool linuxcnc = false, bool steps = false) {
     std::string text;
     const int per = std::max(4, blocks / kPasses - 4);  // the G01 chain's length a pass
     text.reserve(static_cast<std::size_t>(kPasses) * static_cast<std::size_t>(per + 4) * 18 + 256);
@@ -252,7 +255,12 @@ class YardstickGenerator {
       text += buf;
       for (int j = 1; j <= per; ++j) {
         const double z = 1.0 - (61.0 * j) / per;
-        move("", d + 0.02 * std::sin(z), z);
+        if (!steps) {
+          move("", d + 0.02 * std::sin(z), z);
+        } else {
+          std::snprintf(buf, sizeof buf, j % 2 ? "Z%.3f\n" : "X%.3f\n", j % 2 ? z : d + 0.02 * std::sin(z));
+          text += buf;
+        }
       }
       move("", d + 0.5, -59.75);
       text += "G00 Z2.\n";
