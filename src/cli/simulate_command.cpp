@@ -156,7 +156,6 @@ int runSimulate(const std::vector<std::string>& args) {
   }
   request->calculatorInput = o.calculatorInput;
   request->path = o.file;
-  request->file = std::move(read);
   request->run.optionalStop = o.optionalStop;
   request->run.blockSkip = o.blockSkip;
   // #500-#999 belong to the machine, not to the program's folder (issue 26 item 9): they live in
@@ -167,7 +166,9 @@ int runSimulate(const std::vector<std::string>& args) {
   request->run.persistentVariables = &variables;  // read below, before the run asks for them
   request->timelineNext = true;                   // a recorded run that is the run is not made twice
   // Read and parse once: tools from the program (library choices, notes say which), the check, the stock.
-  const core::job::Job& job = *keepUntilExit(core::job::makeJob(*request));
+  core::job::JobInput input = *request;
+  input.file = std::move(read);  // moved, not copied: one text of the program in memory
+  const core::job::Job& job = *keepUntilExit(core::job::makeJob(std::move(input)));
   for (const Diagnostic& n : job.toolNotes()) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
   for (const auto& d : job.diagnostics()) printDiagnostic(job.fileOf(d), d, o.lang);
   if (job.unreadable()) return 2;
