@@ -1,5 +1,6 @@
 // klueng-bench-whole-process [--cli PATH] [--runs N] [--sizes 10000,100000,1000000]
-//                            [--roughing BLOCKS] [--yardstick BLOCKS] [--rs274 PATH] [--in-process 0|1]
+//                            [--roughing BLOCKS] [--yardstick BLOCKS [--steps 1]] [--rs274 PATH]
+//                            [--in-process 0|1]
 //
 // What a user waits for (issue 13): `klueng-cli check` and `klueng-cli simulate`
 // timed as whole processes (exec, page faults, reading, output, exit) on the
@@ -20,7 +21,8 @@
 // The yardstick (issue 40, YardstickGenerator: 100,000 blocks by default, 0 = none) is the
 // program Klueng's speed is judged on: check and simulate beside rs274, as the roughing program.
 // Goals: check <= 0.15 x rs274, simulate <= 0.5 x. `--in-process 0` times the processes only
-// (a 5,000,000-block program's peak RSS: `--sizes 5000000 --roughing 0 --yardstick 0 --runs 1`).
+// (`--steps 1`: the yardstick one word a block, so 5,000,000 blocks fit in a program file's 64 MB;
+// its peak RSS: `--sizes 0 --roughing 0 --yardstick 5000000 --steps 1 --runs 1 --in-process 0`).
 #include <spawn.h>
 #include <sys/resource.h>
 #include <fcntl.h>
@@ -118,6 +120,7 @@ int main(int argc, char** argv) {
   int roughing = 100'000;
   int yardstick = 100'000;
   bool inProcessRuns = true;
+  bool steps = false;
   std::vector<int> sizes = {10'000, 100'000, 1'000'000};
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i];
@@ -133,6 +136,8 @@ int main(int argc, char** argv) {
       yardstick = std::max(0, std::atoi(argv[i + 1]));
     else if (key == "--in-process")
       inProcessRuns = std::atoi(argv[i + 1]) != 0;
+    else if (key == "--steps")
+      steps = std::atoi(argv[i + 1]) != 0;
     else if (key == "--sizes") {
       sizes.clear();
       for (std::string rest = argv[i + 1]; !rest.empty();) {
@@ -178,9 +183,12 @@ int main(int argc, char** argv) {
     }
   }
   if (yardstick > 0) {
-    programs.push_back({"yardstick", yardstick, generate("y", yardstick, {"--yardstick"}, ".txt"), {}, {}});
+    std::vector<std::string> flags = {"--yardstick"};
+    if (steps) flags.push_back("--steps");
+    programs.push_back({"yardstick", yardstick, generate("y", yardstick, flags, ".txt"), {}, {}});
     if (!rs274.empty()) {
-      programs.back().ngc = generate("y", yardstick, {"--yardstick", "--linuxcnc"}, ".ngc");
+      flags.push_back("--linuxcnc");
+      programs.back().ngc = generate("y", yardstick, flags, ".ngc");
       programs.back().toolTable = scratch / "yardstick.tbl";  // as ../shared/bench/README.md times it
       std::ofstream(programs.back().toolTable) << "T1 P1 X0 Z0 D0.063 I0 J0 Q2\n";
     }
