@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <span>
 
 #include "infer/tool_words.h"
@@ -42,36 +43,6 @@ std::string commentOf(std::string_view line) {
   const auto b = out.find_first_not_of(" \t");
   const auto e = out.find_last_not_of(" \t\r");
   return b == std::string::npos ? std::string() : out.substr(b, e - b + 1);
-}
-
-std::vector<std::string_view> splitLines(std::string_view text) {
-  std::vector<std::string_view> lines;
-  lines.reserve(static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1);
-  if (std::memchr(text.data(), '\r', text.size()) == nullptr) {
-    // LF only (the usual case): memchr from line end to line end.
-    const char* p = text.data();
-    const char* const end = p + text.size();
-    while (p < end) {
-      const char* nl = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
-      if (!nl) {
-        lines.emplace_back(p, static_cast<std::size_t>(end - p));
-        break;
-      }
-      lines.emplace_back(p, static_cast<std::size_t>(nl - p));
-      p = nl + 1;
-    }
-    return lines;
-  }
-  std::size_t start = 0;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (text[i] == '\n' || text[i] == '\r') {
-      lines.push_back(text.substr(start, i - start));
-      if (text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;
-      start = i + 1;
-    }
-  }
-  if (start < text.size()) lines.push_back(text.substr(start));
-  return lines;
 }
 
 std::string gText(int g) { return fmt::format("G{:02}", g); }
@@ -493,6 +464,32 @@ class Gatherer {
 
 }  // namespace
 
+TextLines::TextLines(std::string_view text) : text_(text) {
+  const std::size_t n = std::min<std::size_t>(text.size(), std::numeric_limits<std::uint32_t>::max());
+  const bool lfOnly = std::memchr(text.data(), '\r', text.size()) == nullptr;
+  starts_.reserve(static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1);
+  std::size_t start = 0;
+  while (start < n) {
+    starts_.push_back(static_cast<std::uint32_t>(start));
+    if (lfOnly) {
+      // (memchr from line end to line end: the usual case)
+      const void* nl = std::memchr(text.data() + start, '\n', text.size() - start);
+      if (!nl) break;
+      start = static_cast<std::size_t>(static_cast<const char*>(nl) - text.data()) + 1;
+      continue;
+    }
+    std::size_t i = text.find_first_of("\r\n", start);
+    if (i == std::string_view::npos) break;
+    if (text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;  // CRLF ends one line
+    start = i + 1;
+  }
+}
+
+std::string_view TextLines::operator[](std::size_t i) const {
+  const std::string_view rest = text_.substr(starts_[i]);
+  return rest.substr(0, rest.find_first_of("\r\n"));
+}
+
 std::string ProgramEvidence::blockText(int fileLine) const {
   const int i = fileLine - firstLine;
   if (i < 0 || i >= static_cast<int>(lines.size())) return {};
@@ -505,7 +502,7 @@ std::string ProgramEvidence::blockText(int fileLine) const {
 ProgramEvidence gatherEvidence(const gcode::Program& program, std::string_view gcodeText, int gcodeFirstLine,
                                const Timeline& run, gcode::Dialect dialect, bool beyondCentre) {
   ProgramEvidence out;
-  out.lines = splitLines(gcodeText);
+  out.lines = TextLines(gcodeText);
   out.firstLine = gcodeFirstLine;
   out.beyondCentre = beyondCentre;
   Gatherer(program, out, dialect).gather(run);
