@@ -9,6 +9,8 @@
 // and dwells repeat in air above Ø20. The last tenth of the blocks repeats a
 // finishing profile under G42. Every rapid moves in Z only above material that
 // is already cut below it, or at X52 (above the bar).
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -218,6 +220,53 @@ class RoughingGenerator {
     block("M05");
     block("M30");
     if (linuxcnc_) text_ += "%\n";
+  }
+};
+
+// The yardstick of issue 40 (Klueng's speed is judged on it beside LinuxCNC's rs274): a CAM-style
+// roughing job on a Ø50 x 100 aluminium bar, 140 passes, each a chain of short G01 moves that keeps
+// a ±0.01 mm wave on the radius (as a CAM system's output does, so no two moves are alike), a 45°
+// retract into the space just cut and a rapid back. Most blocks are bare "X.. Z.." words without an
+// N number: the text a post-processor writes. With linuxcnc = true the same moves in LinuxCNC's
+// dialect (G7 diameter mode, G95), to time `rs274 -t tool.tbl -g OUT.ngc /dev/null` on them.
+class YardstickGenerator {
+ public:
+  static constexpr int kPasses = 140;
+  static constexpr int kMinimumBlocks = kPasses * 8;  // four G01 moves a pass at least
+
+  // steps = true: the chain in steps of one word a block ("Z-12.345", then "X49.816"), about
+  // 8.5 bytes a block, so that a 5,000,000-block program stays under the 64 MB a file may
+  // have (issue 42 item 3: the check's memory a block).
+  static std::string generate(int blocks, bool linuxcnc = false, bool steps = false) {
+    std::string text;
+    const int per = std::max(4, blocks / kPasses - 4);  // the G01 chain's length a pass
+    text.reserve(static_cast<std::size_t>(kPasses) * static_cast<std::size_t>(per + 4) * 18 + 256);
+    text += linuxcnc ? "G18 G7 G21 G90 G40\nT1 M6\nM3 S1000\nG0 X60 Z5\nG95 F0.25\n"
+                     : "Benchmark\nRoughing passes\nAluminium\n150\n1100\nyardstick\nO0100\n"
+                       "N1 G21 G40 G97\nN2 G99\nN3 T0101\nN4 M03 S1000\nN5 G00 X60. Z5.\nN6 F0.25\n";
+    char buf[64];
+    const auto move = [&](const char* g, double x, double z) {
+      std::snprintf(buf, sizeof buf, "%sX%.3f Z%.3f\n", g, x, z);
+      text += buf;
+    };
+    for (int p = 0; p < kPasses; ++p) {
+      const double d = 49.8 - 0.2 * p;  // this pass's diameter
+      std::snprintf(buf, sizeof buf, "G00 X%.3f Z2.\nG01 X%.3f Z1.\n", d + 1.0, d);
+      text += buf;
+      for (int j = 1; j <= per; ++j) {
+        const double z = 1.0 - (61.0 * j) / per;
+        if (!steps) {
+          move("", d + 0.02 * std::sin(z), z);
+        } else {
+          std::snprintf(buf, sizeof buf, j % 2 ? "Z%.3f\n" : "X%.3f\n", j % 2 ? z : d + 0.02 * std::sin(z));
+          text += buf;
+        }
+      }
+      move("", d + 0.5, -59.75);
+      text += "G00 Z2.\n";
+    }
+    text += linuxcnc ? "G0 X100 Z100\nM5\nM2\n" : "G00 X100. Z100.\nM05\nM30\n";
+    return text;
   }
 };
 

@@ -1,5 +1,6 @@
 // klueng-bench-whole-process [--cli PATH] [--runs N] [--sizes 10000,100000,1000000]
-//                            [--roughing BLOCKS] [--rs274 PATH]
+//                            [--roughing BLOCKS] [--yardstick BLOCKS [--steps 1]] [--rs274 PATH]
+//                            [--in-process 0|1]
 //
 // What a user waits for (issue 13): `klueng-cli check` and `klueng-cli simulate`
 // timed as whole processes (exec, page faults, reading, output, exit) on the
@@ -16,6 +17,12 @@
 // interpreter runs the same blocks in its dialect, turn about with ours, and
 // each roughing row says its ratio to it, of wall time and of CPU time (user +
 // system, from the child's rusage: what other work on the machine changes least).
+//
+// The yardstick (issue 40, YardstickGenerator: 100,000 blocks by default, 0 = none) is the
+// program Klueng's speed is judged on: check and simulate beside rs274, as the roughing program.
+// Goals: check <= 0.15 x rs274, simulate <= 0.5 x. `--in-process 0` times the processes only
+// (`--steps 1`: the yardstick one word a block, so 5,000,000 blocks fit in a program file's 64 MB;
+// its peak RSS: `--sizes 0 --roughing 0 --yardstick 5000000 --steps 1 --runs 1 --in-process 0`).
 #include <spawn.h>
 #include <sys/resource.h>
 #include <fcntl.h>
@@ -111,6 +118,9 @@ int main(int argc, char** argv) {
   std::string rs274;  // LinuxCNC's interpreter, a reference when given (never needed)
   int runs = 5;
   int roughing = 100'000;
+  int yardstick = 100'000;
+  bool inProcessRuns = true;
+  bool steps = false;
   std::vector<int> sizes = {10'000, 100'000, 1'000'000};
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i];
@@ -122,6 +132,12 @@ int main(int argc, char** argv) {
       runs = std::max(1, std::atoi(argv[i + 1]));
     else if (key == "--roughing")
       roughing = std::max(0, std::atoi(argv[i + 1]));
+    else if (key == "--yardstick")
+      yardstick = std::max(0, std::atoi(argv[i + 1]));
+    else if (key == "--in-process")
+      inProcessRuns = std::atoi(argv[i + 1]) != 0;
+    else if (key == "--steps")
+      steps = std::atoi(argv[i + 1]) != 0;
     else if (key == "--sizes") {
       sizes.clear();
       for (std::string rest = argv[i + 1]; !rest.empty();) {
@@ -141,6 +157,8 @@ int main(int argc, char** argv) {
     std::string name;
     int blocks = 0;
     fs::path path;
+    fs::path ngc;        // the same blocks for rs274, when it is given
+    fs::path toolTable;  // rs274's tool table for them
   };
   std::vector<Program> programs;
   auto generate = [&](const std::string& name, int blocks, std::vector<std::string> flags, const char* ext) {
@@ -155,13 +173,24 @@ int main(int argc, char** argv) {
     }
     return path;
   };
-  for (int blocks : sizes) programs.push_back({"generated", blocks, generate("p", blocks, {}, ".txt")});
-  fs::path roughingNgc;
+  for (int blocks : sizes) programs.push_back({"generated", blocks, generate("p", blocks, {}, ".txt"), {}, {}});
   if (roughing > 0) {
-    programs.push_back({"roughing", roughing, generate("r", roughing, {"--roughing"}, ".txt")});
+    programs.push_back({"roughing", roughing, generate("r", roughing, {"--roughing"}, ".txt"), {}, {}});
     if (!rs274.empty()) {
-      roughingNgc = generate("r", roughing, {"--roughing", "--linuxcnc"}, ".ngc");
-      std::ofstream(scratch / "tool.tbl") << "T1 P1 Z0 D0.8 ;turning\n";
+      programs.back().ngc = generate("r", roughing, {"--roughing", "--linuxcnc"}, ".ngc");
+      programs.back().toolTable = scratch / "tool.tbl";
+      std::ofstream(programs.back().toolTable) << "T1 P1 Z0 D0.8 ;turning\n";
+    }
+  }
+  if (yardstick > 0) {
+    std::vector<std::string> flags = {"--yardstick"};
+    if (steps) flags.push_back("--steps");
+    programs.push_back({"yardstick", yardstick, generate("y", yardstick, flags, ".txt"), {}, {}});
+    if (!rs274.empty()) {
+      flags.push_back("--linuxcnc");
+      programs.back().ngc = generate("y", yardstick, flags, ".ngc");
+      programs.back().toolTable = scratch / "yardstick.tbl";  // as ../shared/bench/README.md times it
+      std::ofstream(programs.back().toolTable) << "T1 P1 X0 Z0 D0.063 I0 J0 Q2\n";
     }
   }
 
@@ -195,13 +224,11 @@ int main(int argc, char** argv) {
     const std::string& path = programs[p].path.string();
     add("check", p, {cli, "check", path, "--config", config.string()}, false);
     add("simulate", p, {cli, "simulate", path, "--config", config.string()}, true);
-    if (programs[p].name == "roughing") {
-      // The floor: everything but the cut.
+    if (programs[p].name == "roughing")  // the floor: everything but the cut
       add("--no-stock", p, {cli, "simulate", path, "--config", config.string(), "--no-stock"}, false);
-      if (!roughingNgc.empty())
-        add("rs274", p, {rs274, "-g", "-t", (scratch / "tool.tbl").string(), roughingNgc.string(), "/dev/null"}, false,
-            false);
-    }
+    if (!programs[p].ngc.empty())
+      add("rs274", p, {rs274, "-t", programs[p].toolTable.string(), "-g", programs[p].ngc.string(), "/dev/null"}, false,
+          false);
   }
   for (int r = 0; r < runs; ++r)
     for (Row& row : rows) {
@@ -213,7 +240,7 @@ int main(int argc, char** argv) {
     }
   // 3. The same calls in-process, as the CLI makes them (a one-way cut keeps no checkpoints).
   const machine::LoadedSetup loaded = machine::loadMachineSetup(config.string());
-  for (int r = 0; r < runs; ++r)
+  for (int r = 0; r < runs && inProcessRuns; ++r)
     for (Row& row : rows) {
       if (!row.inProcess) continue;
       const bool interpret = row.label != "check";
@@ -234,23 +261,22 @@ int main(int argc, char** argv) {
 
   std::printf("%-9s %-9s %-10s %10s %10s %10s %7s %9s %12s\n", "program", "blocks", "command", "process", "CPU",
               "in-proc", "ratio", "peak RSS", "process/1k");
-  double rs274Ms = 0.0, rs274Cpu = 0.0;
-  for (const Row& row : rows)
-    if (!row.inProcess) {
-      rs274Ms = median(row.process);
-      rs274Cpu = median(row.processCpu);
-    }
   for (const Row& row : rows) {
     const Program& program = programs[row.program];
+    double rs274Ms = 0.0, rs274Cpu = 0.0;  // LinuxCNC on the same program's blocks
+    for (const Row& other : rows)
+      if (!other.inProcess && other.program == row.program) {
+        rs274Ms = median(other.process);
+        rs274Cpu = median(other.processCpu);
+      }
     const double p = median(row.process), c = median(row.processCpu), q = median(row.inProcessMs);
     std::printf("%-9s %-9d %-10s %8.1f ms %7.1f ms ", program.name.c_str(), program.blocks, row.label.c_str(), p, c);
-    if (row.inProcess)
+    if (row.inProcess && inProcessRuns)
       std::printf("%7.1f ms %6.2fx", q, p / q);
     else
       std::printf("%10s %7s", "-", "-");
     std::printf(" %6ld MB %9.3f ms", row.rssKb / 1024, p / (program.blocks / 1000.0));
-    if (program.name == "roughing" && rs274Ms > 0.0)
-      std::printf("  %.2f x rs274 (CPU %.2f x)", p / rs274Ms, c / rs274Cpu);
+    if (rs274Ms > 0.0) std::printf("  %.2f x rs274 (CPU %.2f x)", p / rs274Ms, c / rs274Cpu);
     std::printf("%s\n", row.exitCode ? "  (exit status not 0!)" : "");
   }
   fs::remove_all(scratch);

@@ -3,8 +3,9 @@
 // and exits. Most of what it used to wait for on a 100k-block program was the
 // kernel handing it fresh 4 KiB pages (12,800 page faults for `check`, a
 // third of its time). This lets the C library take its heap in 2 MiB
-// transparent huge pages instead (one fault per 2 MiB), and keeps freed
-// memory for reuse rather than giving it back and faulting it in again.
+// transparent huge pages instead (one fault per 2 MiB), for every thread,
+// and keeps freed memory for reuse rather than giving it back and faulting
+// it in again.
 #include <utility>
 
 namespace klueng::cli {

@@ -143,9 +143,11 @@ int runCheck(const std::vector<std::string>& args) {
     }
     // A program that names its machine is checked on it (the setup with that machine's keys).
     std::vector<Diagnostic> machineWarnings;
-    const gcode::Dialect own = programMachine(program, o.dialectGiven, o.dialect, machineWarnings);
+    std::optional<io::ProgramFile> read;  // a file read once, for the machine and the job
+    const gcode::Dialect own = programMachine(program, o.dialectGiven, o.dialect, machineWarnings, &read);
     core::job::JobInput input = *request;
     program.into(input);
+    if (read) input.file = std::move(read);
     input.folderRun = file.inFolder;
     if (own != o.dialect) {
       input.run.dialect = own;

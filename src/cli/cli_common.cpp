@@ -249,11 +249,14 @@ bool chooseMachine(const std::string& machine, machine::LoadedSetup& config, gco
 }
 
 gcode::Dialect programMachine(const std::string& file, bool chosen, gcode::Dialect dialect,
-                              std::vector<Diagnostic>& warnings) {
+                              std::vector<Diagnostic>& warnings, std::optional<io::ProgramFile>* keep) {
   if (chosen) return dialect;
-  const io::ReadResult<io::ProgramFile> read = io::readProgramFile(file);
+  io::ReadResult<io::ProgramFile> read = io::readProgramFile(file);
   if (!read.value) return dialect;  // the job's own reading reports why
-  return machine::machineOfProgram(*read.value, warnings).value_or(dialect);
+  const gcode::Dialect own = machine::machineOfProgram(*read.value, warnings).value_or(dialect);
+  // A read with something to say is read again by the job, which reports it.
+  if (keep && read.diagnostics.empty()) *keep = std::move(read.value);
+  return own;
 }
 
 ProgramArg programArg(const std::string& arg) {
@@ -282,8 +285,8 @@ void ProgramArg::into(core::job::JobInput& input) const {
 }
 
 gcode::Dialect programMachine(const ProgramArg& program, bool chosen, gcode::Dialect dialect,
-                              std::vector<Diagnostic>& warnings) {
-  if (!program.readDiagnostics) return programMachine(program.name, chosen, dialect, warnings);
+                              std::vector<Diagnostic>& warnings, std::optional<io::ProgramFile>* keep) {
+  if (!program.readDiagnostics) return programMachine(program.name, chosen, dialect, warnings, keep);
   if (chosen || !program.file) return dialect;
   return machine::machineOfProgram(*program.file, warnings).value_or(dialect);
 }

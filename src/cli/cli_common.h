@@ -100,8 +100,11 @@ bool chooseMachine(const std::string& machine, core::machine::LoadedSetup& confi
 // The machine a program names at its head, `(MACHINE: romi-gl240m)` (Job details
 // writes it), runs it unless --machine or --dialect chose one (`chosen`); else
 // `dialect`. A machine that is not loaded: `dialect`, and warning F205 in `warnings`.
+// `keep`, when given, receives the program as read when reading it said nothing (no
+// diagnostic): the caller hands it to makeJob (JobInput::file), so the file is read once.
 core::gcode::Dialect programMachine(const std::string& file, bool chosen, core::gcode::Dialect dialect,
-                                    std::vector<core::Diagnostic>& warnings);
+                                    std::vector<core::Diagnostic>& warnings,
+                                    std::optional<core::io::ProgramFile>* keep = nullptr);
 
 // The name a program read from standard input (`check -`: an editor's linter pipes
 // its buffer) goes by in every message, as GCC names it.
@@ -120,8 +123,10 @@ struct ProgramArg {
 };
 ProgramArg programArg(const std::string& arg);
 // programMachine for a program that may have been read already.
+// A regular file read for its machine is kept in `keep` (when given) for the job.
 core::gcode::Dialect programMachine(const ProgramArg& program, bool chosen, core::gcode::Dialect dialect,
-                                    std::vector<core::Diagnostic>& warnings);
+                                    std::vector<core::Diagnostic>& warnings,
+                                    std::optional<core::io::ProgramFile>* keep = nullptr);
 
 // --stock DxL[xBORE][in]: "50x100", "2.1x4in", "118x80x90" (Ø118 tube, 80 long,
 // Ø90 bore). 0 < D, L <= 9999.999 (what a header line and Job details hold: a

@@ -147,7 +147,8 @@ int runSimulate(const std::vector<std::string>& args) {
   std::vector<Diagnostic> machineWarnings;
   const ProgramArg programArgument = programArg(o.file);  // `-` and pipes are read once, here
   o.file = programArgument.name;
-  o.dialect = programMachine(programArgument, o.dialectGiven, o.dialect, machineWarnings);
+  std::optional<io::ProgramFile> read;  // a file read once, for the machine and the job
+  o.dialect = programMachine(programArgument, o.dialectGiven, o.dialect, machineWarnings, &read);
   if (!chooseMachine(o.machine, config, o.dialect, o.lang)) return 2;
   for (const auto& fd : config.diagnostics) printDiagnostic(fd.file, fd.diagnostic, o.lang);
   for (const Diagnostic& d : machineWarnings) printDiagnostic(o.file, d, o.lang);
@@ -171,7 +172,9 @@ int runSimulate(const std::vector<std::string>& args) {
   request->run.persistentVariables = &variables;  // read below, before the run asks for them
   request->timelineNext = true;                   // a recorded run that is the run is not made twice
   // Read and parse once: tools from the program (library choices, notes say which), the check, the stock.
-  const core::job::Job& job = *keepUntilExit(core::job::makeJob(*request));
+  core::job::JobInput input = *request;
+  if (read) input.file = std::move(read);  // moved, not copied: one text of the program in memory
+  const core::job::Job& job = *keepUntilExit(core::job::makeJob(std::move(input)));
   for (const Diagnostic& n : job.toolNotes()) std::fprintf(stderr, "%s\n", formatNote(o.file, n, o.lang).c_str());
   for (const auto& d : job.diagnostics()) printDiagnostic(job.fileOf(d), d, o.lang);
   if (job.unreadable()) return 2;

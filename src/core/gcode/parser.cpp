@@ -685,6 +685,8 @@ std::size_t parseCount() { return parses.load(std::memory_order_relaxed); }
 // The start of the first line that is a tape mark ('%' after blanks), when lines stand
 // before it and the program goes on after it; nullptr otherwise (no leader).
 const char* firstTapeMark(const char* begin, const char* end) {
+  // No '%' anywhere (most programs): no leader either, found without a look at each byte.
+  if (begin == end || !std::memchr(begin, '%', static_cast<std::size_t>(end - begin))) return nullptr;
   const char* line = begin;
   bool first = true;
   for (const char* c = begin; c < end; ++c) {

@@ -50,23 +50,27 @@ ProgramIndex::ProgramIndex(const Program& program) {
   for (int i = 0; i < n; ++i) {
     const Block& b = program.blocks[static_cast<std::size_t>(i)];
     // Each block's words are an allocation of their own, and this loop reads
-    // only their first: ask for those of a few blocks ahead (it waits on memory).
-    if (i + 8 < n) __builtin_prefetch(program.blocks[static_cast<std::size_t>(i + 8)].words.data());
+    // only the first of a block with an O or N word (most CAM blocks have
+    // neither): ask for those of a few blocks ahead (it waits on memory).
+    const auto readsWords = [](const Block& x) { return x.mayHave('O') || x.mayHave('N'); };
+    if (i + 8 < n && readsWords(program.blocks[static_cast<std::size_t>(i + 8)]))
+      __builtin_prefetch(program.blocks[static_cast<std::size_t>(i + 8)].words.data());
     const bool newFile = i == 0 || program.blocks[static_cast<std::size_t>(i - 1)].file != b.file;
     // A program starts at its O block, at the start of each file, and the
     // main file's first section may have no O number.
-    if (newFile || startsProgram(b)) {
+    const bool opens = b.mayHave('O') && startsProgram(b);
+    if (newFile || opens) {
       if (!sections_.empty()) sections_.back().end = i;
       ProgramSection s;
       s.first = i;
       s.file = b.file;
-      s.number = startsProgram(b) ? b.words.front().code() : 0;
+      s.number = opens ? b.words.front().code() : 0;
       // A subprogram file without an O block is named by its file (set by the loader as its first O).
       sections_.push_back(s);
       sequences_.emplace_back();
     }
     sectionOfBlock_[static_cast<std::size_t>(i)] = static_cast<int>(sections_.size()) - 1;
-    if (!b.words.empty() && b.words.front().letter == 'N' && b.words.front().expr < 0)
+    if (b.mayHave('N') && !b.words.empty() && b.words.front().letter == 'N' && b.words.front().expr < 0)
       sequences_.back().emplace_back(b.words.front().code(), i);
   }
   if (!sections_.empty()) sections_.back().end = n;

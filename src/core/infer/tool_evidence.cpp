@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <span>
 
 #include "infer/tool_words.h"
@@ -44,36 +45,6 @@ std::string commentOf(std::string_view line) {
   return b == std::string::npos ? std::string() : out.substr(b, e - b + 1);
 }
 
-std::vector<std::string_view> splitLines(std::string_view text) {
-  std::vector<std::string_view> lines;
-  lines.reserve(static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1);
-  if (std::memchr(text.data(), '\r', text.size()) == nullptr) {
-    // LF only (the usual case): memchr from line end to line end.
-    const char* p = text.data();
-    const char* const end = p + text.size();
-    while (p < end) {
-      const char* nl = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
-      if (!nl) {
-        lines.emplace_back(p, static_cast<std::size_t>(end - p));
-        break;
-      }
-      lines.emplace_back(p, static_cast<std::size_t>(nl - p));
-      p = nl + 1;
-    }
-    return lines;
-  }
-  std::size_t start = 0;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (text[i] == '\n' || text[i] == '\r') {
-      lines.push_back(text.substr(start, i - start));
-      if (text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;
-      start = i + 1;
-    }
-  }
-  if (start < text.size()) lines.push_back(text.substr(start));
-  return lines;
-}
-
 std::string gText(int g) { return fmt::format("G{:02}", g); }
 
 // The G number of a modal motion, as the notes quote it, in the machine's G-code system (G33 in system B).
@@ -97,15 +68,27 @@ Ends endsOf(const Move& m, bool mirror) {
   return {Vec2(m.path.start.x(), -m.path.start.y()), Vec2(m.path.end.x(), -m.path.end.y())};
 }
 
-// What each tool's moves show, summed over the run.
-std::map<int, MotionUse> recordMotion(std::span<const Move> moves, bool mirror) {
-  std::map<int, MotionUse> uses;
+// What each tool's moves show, summed over the run: the moves are added in run order, a
+// block's at a time (the gatherer reads each block's moves once, while they are in the cache).
+class MotionRecorder {
+ public:
+  explicit MotionRecorder(bool mirror) : mirror_(mirror) {}
+  void add(std::span<const Move> moves) {
+    for (const Move& m : moves) addMove(m);
+  }
+  const std::map<int, MotionUse>& uses() const { return uses_; }
+
+ private:
   struct Pending {
     int tool = 0;  // 0 = none
     double length = 0.0;
     int line = 0;
     bool thread = false;
   };
+  std::map<int, MotionUse> uses_;
+  bool mirror_ = false;
+  MotionUse* last_ = nullptr;  // uses_[lastTool_] (a map's elements stay put)
+  int lastTool_ = 0;
   // The last feed along Z toward the chuck, until X moves: a tool feeds into its
   // work toward the chuck and leaves it across X, outward from a diameter,
   // inward from a bore. (A feed toward the tailstock ends a face profile or a
@@ -114,12 +97,17 @@ std::map<int, MotionUse> recordMotion(std::span<const Move> moves, bool mirror) 
   // A straight feed outward off the centre line, then straight back in: an inside groove's plunge
   // from a bore (an outside tool never feeds out into the wall and drops back in).
   Pending outward;
-  for (const Move& m : moves) {
-    if (m.tool < 1 || m.kind == MoveKind::Dwell) continue;
-    const Ends p = endsOf(m, mirror);
+
+  void addMove(const Move& m) {
+    if (m.tool < 1 || m.kind == MoveKind::Dwell) return;
+    const Ends p = endsOf(m, mirror_);
     const Vec2 d = p.end - p.start;  // (z, x radius)
     const double dz = d.x(), dx = d.y();
-    MotionUse& u = uses[m.tool];
+    if (!last_ || lastTool_ != m.tool) {
+      last_ = &uses_[m.tool];
+      lastTool_ = m.tool;
+    }
+    MotionUse& u = *last_;
     if (zRun.tool != m.tool) zRun = {};
     // (A feed on down to the centre line after it is a face cut, not a bore's wall.)
     const bool facesToCentre = m.kind != MoveKind::Rapid && dx < 0.0 && 2.0 * p.end.y() <= kOnCentreMm;
@@ -138,7 +126,7 @@ std::map<int, MotionUse> recordMotion(std::span<const Move> moves, bool mirror) 
     }
     if (m.kind == MoveKind::Line && std::abs(dz) < 1e-3 && dx > 0.0 && p.start.y() > kOnCentreMm)
       outward = Pending{m.tool, dx, m.line, false};
-    if (m.kind == MoveKind::Rapid) continue;
+    if (m.kind == MoveKind::Rapid) return;
     if (m.kind == MoveKind::Thread && !u.threadLine) u.threadLine = m.line;
     if (std::abs(p.start.y()) <= kOnCentreMm && std::abs(p.end.y()) <= kOnCentreMm && dz < 0.0 &&
         p.end.x() < u.drillDepth) {
@@ -167,8 +155,7 @@ std::map<int, MotionUse> recordMotion(std::span<const Move> moves, bool mirror) 
       u.plungeLine = m.line;
     }
   }
-  return uses;
-}
+};
 
 bool isFeed(const Move& m) { return m.kind != MoveKind::Rapid && m.kind != MoveKind::Dwell; }
 
@@ -216,13 +203,14 @@ class Gatherer {
   void gather(const Timeline& run) {
     markBlockLines();
     readToolList();
-    const std::map<int, MotionUse> motion = recordMotion(run.moves, out_.beyondCentre);
+    MotionRecorder motion(out_.beyondCentre);
     std::size_t begin = 0;
     for (const StateSnapshot& s : run.snapshots) {
       const std::size_t end =
           std::clamp<std::size_t>(static_cast<std::size_t>(std::max(s.moveEnd, 0)), begin, run.moves.size());
       const std::span<const Move> moves(run.moves.data() + begin, end - begin);
       begin = end;
+      motion.add(moves);  // every move once, in run order
       if (s.blockIndex < 0 || static_cast<std::size_t>(s.blockIndex) >= program_.blocks.size()) continue;
       const gcode::Block& b = program_.blocks[static_cast<std::size_t>(s.blockIndex)];
       const int station = s.machine.tool;
@@ -235,8 +223,9 @@ class Gatherer {
       }
       block(b, moves, station, motionCode(s.modal.motion, dialect_));
     }
+    motion.add(std::span<const Move>(run.moves.data() + begin, run.moves.size() - begin));  // after the last block
     for (auto& [station, use] : out_.uses)
-      if (const auto it = motion.find(station); it != motion.end()) use.motion = it->second;
+      if (const auto it = motion.uses().find(station); it != motion.uses().end()) use.motion = it->second;
   }
 
  private:
@@ -254,9 +243,13 @@ class Gatherer {
   // (A flag per line of the program's own text: a set of 100,000 lines cost most of the scan.)
   void markBlockLines() {
     isBlockLine_.assign(out_.lines.size(), false);
+    const auto holdsMoreThanN = [](const gcode::Block& b) {
+      // A parsed block's letters are exact (no bit past 'Z'): its words need no visit (a cache miss each).
+      if ((b.letters >> 26) == 0) return (b.letters & ~gcode::Block::letterBit('N')) != 0;
+      return std::any_of(b.words.begin(), b.words.end(), [](const gcode::Word& w) { return w.letter != 'N'; });
+    };
     for (const gcode::Block& b : program_.blocks)
-      if (b.file == 0 && b.line >= out_.firstLine && b.line - out_.firstLine < lineCount() &&
-          std::any_of(b.words.begin(), b.words.end(), [](const gcode::Word& w) { return w.letter != 'N'; }))
+      if (b.file == 0 && b.line >= out_.firstLine && b.line - out_.firstLine < lineCount() && holdsMoreThanN(b))
         isBlockLine_[static_cast<std::size_t>(b.line - out_.firstLine)] = true;
   }
 
@@ -471,6 +464,32 @@ class Gatherer {
 
 }  // namespace
 
+TextLines::TextLines(std::string_view text) : text_(text) {
+  const std::size_t n = std::min<std::size_t>(text.size(), std::numeric_limits<std::uint32_t>::max());
+  const bool lfOnly = std::memchr(text.data(), '\r', text.size()) == nullptr;
+  starts_.reserve(static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1);
+  std::size_t start = 0;
+  while (start < n) {
+    starts_.push_back(static_cast<std::uint32_t>(start));
+    if (lfOnly) {
+      // (memchr from line end to line end: the usual case)
+      const void* nl = std::memchr(text.data() + start, '\n', text.size() - start);
+      if (!nl) break;
+      start = static_cast<std::size_t>(static_cast<const char*>(nl) - text.data()) + 1;
+      continue;
+    }
+    std::size_t i = text.find_first_of("\r\n", start);
+    if (i == std::string_view::npos) break;
+    if (text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;  // CRLF ends one line
+    start = i + 1;
+  }
+}
+
+std::string_view TextLines::operator[](std::size_t i) const {
+  const std::string_view rest = text_.substr(starts_[i]);
+  return rest.substr(0, rest.find_first_of("\r\n"));
+}
+
 std::string ProgramEvidence::blockText(int fileLine) const {
   const int i = fileLine - firstLine;
   if (i < 0 || i >= static_cast<int>(lines.size())) return {};
@@ -483,7 +502,7 @@ std::string ProgramEvidence::blockText(int fileLine) const {
 ProgramEvidence gatherEvidence(const gcode::Program& program, std::string_view gcodeText, int gcodeFirstLine,
                                const Timeline& run, gcode::Dialect dialect, bool beyondCentre) {
   ProgramEvidence out;
-  out.lines = splitLines(gcodeText);
+  out.lines = TextLines(gcodeText);
   out.firstLine = gcodeFirstLine;
   out.beyondCentre = beyondCentre;
   Gatherer(program, out, dialect).gather(run);

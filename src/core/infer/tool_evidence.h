@@ -5,6 +5,7 @@
 // comments come from the text, because a run has none: the T block's own,
 // the comment lines around it and a tool list at the top. Private to infer;
 // tool_inference.cpp decides the tools from it.
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <set>
@@ -69,12 +70,27 @@ struct StationUse {
   int noseRadiusLine = 0;
 };
 
+// The lines of a G-code text, kept as where each starts (4 bytes a line, not a 16-byte view:
+// a long program's table is read only near its T blocks and its comment lines). A line ends
+// at LF, CR or CRLF; a text over 4 GiB keeps the lines that start in its first 4 GiB.
+class TextLines {
+ public:
+  TextLines() = default;
+  explicit TextLines(std::string_view text);
+  std::size_t size() const { return starts_.size(); }
+  std::string_view operator[](std::size_t i) const;
+
+ private:
+  std::string_view text_;
+  std::vector<std::uint32_t> starts_;
+};
+
 struct ProgramEvidence {
-  std::map<int, StationUse> uses;       // by station, every station the run selects
-  std::vector<int> order;               // the station of every T selection, in run order
-  std::map<int, Evidence> partings;     // station -> its plunge to X0 (counts for one of the last tools)
-  bool beyondCentre = false;            // the moves were mirrored: the tools work at X < 0
-  std::vector<std::string_view> lines;  // the G-code text's lines (comments, block texts)
+  std::map<int, StationUse> uses;    // by station, every station the run selects
+  std::vector<int> order;            // the station of every T selection, in run order
+  std::map<int, Evidence> partings;  // station -> its plunge to X0 (counts for one of the last tools)
+  bool beyondCentre = false;         // the moves were mirrored: the tools work at X < 0
+  TextLines lines;                   // the G-code text's lines (comments, block texts)
   int firstLine = 1;
   // The words of a file line ("G01 Z-51.4") without its comment, for a note.
   std::string blockText(int fileLine) const;

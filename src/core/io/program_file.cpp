@@ -250,10 +250,33 @@ std::optional<MachineLineAt> findMachineLine(const std::vector<std::string_view>
   return std::nullopt;
 }
 
+// detail::splitLines' lines of `text` up to and including the first that is not a head line:
+// all that the head's readers look at (a long program's other lines would cost a split each read).
+std::vector<std::string_view> headLines(std::string_view text) {
+  std::vector<std::string_view> lines;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t i = text.find_first_of("\r\n", start);
+    if (i == std::string_view::npos) {
+      lines.push_back(text.substr(start));
+      break;
+    }
+    lines.push_back(text.substr(start, i - start));
+    // CRLF is one line end; so is CR CR LF (as splitLines reads them).
+    if (text[i] == '\r' && i + 2 < text.size() && text[i + 1] == '\r' && text[i + 2] == '\n') i += 1;
+    if (text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;
+    start = i + 1;
+    std::optional<HeadComment> comment;
+    bool programStart = false;
+    if (!headLine(lines.back(), comment, programStart)) break;
+  }
+  return lines;
+}
+
 }  // namespace
 
 int offsetsUnknownIn(std::string_view gcode) {
-  const std::vector<std::string_view> lines = detail::splitLines(gcode);
+  const std::vector<std::string_view> lines = headLines(gcode);
   for (std::size_t i = 0; i < lines.size(); ++i) {
     std::optional<HeadComment> comment;
     bool programStart = false;
@@ -271,7 +294,7 @@ int offsetsUnknownIn(std::string_view gcode) {
 }
 
 std::optional<NamedMachine> machineNamedIn(std::string_view gcode) {
-  const std::optional<MachineLineAt> at = findMachineLine(detail::splitLines(gcode));
+  const std::optional<MachineLineAt> at = findMachineLine(headLines(gcode));
   if (!at) return std::nullopt;
   return at->named;
 }

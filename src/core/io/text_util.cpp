@@ -125,7 +125,10 @@ std::vector<std::string_view> splitLines(std::string_view text) {
   std::vector<std::string_view> lines;
   std::size_t start = 0;
   if (text.find('\r') == std::string_view::npos) {
-    // LF only (the usual case): let find() (memchr) do the scanning.
+    // LF only (the usual case): let find() (memchr) do the scanning, into one
+    // allocation (std::count runs over the text in wide strides; a program has
+    // 100,000 lines, and regrowth would copy them some 17 times).
+    lines.reserve(static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1);
     for (std::size_t end; (end = text.find('\n', start)) != std::string_view::npos; start = end + 1)
       lines.push_back(text.substr(start, end - start));
     if (start < text.size()) lines.push_back(text.substr(start));

@@ -139,8 +139,12 @@ class FlowEngine {
   AlarmFn alarm_;
   gcode::ProgramIndex index_;
   std::vector<FlowFrame> frames_;
-  std::vector<int> loopPartner_;  // WHILE/DO block -> its END, END -> its WHILE/DO (-1 none)
-  std::vector<char> visited_;     // blocks run at least once (the endless-loop limit counts repeats)
+  std::vector<int> loopPartner_;  // WHILE/DO block -> its END, END -> its WHILE/DO (-1 none; empty: no loops)
+  int partnerOf(int block) const {
+    const auto i = static_cast<std::size_t>(block);
+    return i < loopPartner_.size() ? loopPartner_[i] : -1;
+  }
+  std::vector<char> visited_;  // blocks run at least once (the endless-loop limit counts repeats)
   long long repeatedBlocks_ = 0;
   long long repeatedMoves_ = 0;  // moves made by blocks run again (bounded with max_blocks)
   bool repeating_ = false;       // the running block has run before

@@ -130,6 +130,42 @@ TEST(GeneratedProgramShape, RoughingInLinuxCncDialectHasTheSameBlocks) {
   EXPECT_EQ(theirs.substr(theirs.find("N6 ")), afterHeader(ours, 7).substr(afterHeader(ours, 7).find("N6 ")) + "%\n");
 }
 
+// The yardstick of issue 40 (bench/: check and simulate against rs274 on it).
+TEST(GeneratedProgramShape, YardstickIsCleanWithAChainAPass) {
+  using klueng::bench::YardstickGenerator;
+  for (const bool steps : {false, true})
+    for (int blocks : {YardstickGenerator::kMinimumBlocks, 14000}) {
+      const std::string file = YardstickGenerator::generate(blocks, false, steps);
+      EXPECT_EQ(file.rfind("Benchmark\nRoughing passes\nAluminium\n150\n1100\nyardstick\nO0100\n", 0), 0u);
+      const Program program = parse(afterHeader(file, 6), 7);
+      const int per = std::max(4, blocks / YardstickGenerator::kPasses - 4);
+      // O0100, N1..N6, each pass (its chain and four more blocks), the three last blocks.
+      EXPECT_EQ(program.blocks.size(), static_cast<std::size_t>(1 + 6 + YardstickGenerator::kPasses * (per + 4) + 3))
+          << blocks;
+      // With steps, the chains are one word a block (X or Z); else two.
+      const auto oneAxisWord = std::count_if(program.blocks.begin(), program.blocks.end(), [](const Block& b) {
+        return b.words.size() == 1 && (b.words[0].letter == 'X' || b.words[0].letter == 'Z');
+      });
+      EXPECT_EQ(oneAxisWord, steps ? YardstickGenerator::kPasses * per : 0) << blocks;
+      CheckOptions options;
+      options.toolsWithBitmap = std::vector<int>{1};
+      const auto diags = check(program, options);
+      EXPECT_TRUE(diags.empty()) << blocks << " blocks:\n" << describe(diags);
+    }
+}
+
+TEST(GeneratedProgramShape, YardstickInLinuxCncDialectHasTheSameMoves) {
+  const std::string ours = klueng::bench::YardstickGenerator::generate(3000);
+  const std::string theirs = klueng::bench::YardstickGenerator::generate(3000, true);
+  EXPECT_EQ(theirs.rfind("G18 G7 G21 G90 G40\nT1 M6\nM3 S1000\nG0 X60 Z5\nG95 F0.25\n", 0), 0u);
+  // The passes are the same text: after our 13 lines and their 5, up to the last three lines.
+  const std::string ourEnd = "G00 X100. Z100.\nM05\nM30\n", theirEnd = "G0 X100 Z100\nM5\nM2\n";
+  const std::string passes = afterHeader(ours, 13);
+  ASSERT_GT(passes.size(), ourEnd.size());
+  EXPECT_EQ(passes.substr(passes.size() - ourEnd.size()), ourEnd);
+  EXPECT_EQ(afterHeader(theirs, 5), passes.substr(0, passes.size() - ourEnd.size()) + theirEnd);
+}
+
 INSTANTIATE_TEST_SUITE_P(BothDialects, GeneratedProgram, ::testing::Values(Dialect::Fanuc, Dialect::Classic));
 
 }  // namespace
