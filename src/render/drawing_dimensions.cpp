@@ -132,249 +132,329 @@ QRectF dimensionBounds(const DimensionItem& item) {
   return box;
 }
 
-std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part, const DimensionFrame& frame) {
-  std::vector<DimensionItem> out;
-  if (part.empty()) return out;
-  const QFontMetricsF fm(frame.font, frame.device);
-  const double mm = frame.mm;
-  const double textH = fm.height();
-  const QRectF bounds = frame.bounds.isEmpty() ? QRectF(-1e9, -1e9, 2e9, 2e9) : frame.bounds;
-  double maxR = 0.0;
-  for (const PartFeature& f : part.outside) maxR = std::max({maxR, f.diameterLeft / 2.0, f.diameterRight / 2.0});
-  const double topY = frame.toPage(part.zRight, maxR).y();
-  const double bottomY = frame.toPage(part.zRight, -maxR).y();
-  const auto pageX = [&](double z) { return frame.toPage(z, 0.0).x(); };
-  const auto mark = [&](const std::function<QString(const PartFeature&)>& fn, const PartFeature& f) {
-    return fn ? fn(f) : QString();
-  };
+namespace {
+
+// A mark the frame's design gives a feature (its tolerance), or none.
+QString designMarkOf(const std::function<QString(const PartFeature&)>& fn, const PartFeature& f) {
+  return fn ? fn(f) : QString();
+}
+
+// One part's dimensions laid out on the page, a step at a time: the diameters
+// across the part, the step lengths under it, the leaders above it, the surface
+// finish marks and the note on the nose corners.
+class DimensionLayout {
+ public:
+  DimensionLayout(const core::cut::PartFeatures& part, const DimensionFrame& frame)
+      : part_(part),
+        frame_(frame),
+        fm_(frame.font, frame.device),
+        mm_(frame.mm),
+        textH_(fm_.height()),
+        bounds_(frame.bounds.isEmpty() ? QRectF(-1e9, -1e9, 2e9, 2e9) : frame.bounds) {
+    double maxR = 0.0;
+    for (const PartFeature& f : part.outside) maxR = std::max({maxR, f.diameterLeft / 2.0, f.diameterRight / 2.0});
+    topY_ = frame.toPage(part.zRight, maxR).y();
+    bottomY_ = frame.toPage(part.zRight, -maxR).y();
+  }
+
+  std::vector<DimensionItem> layout() {
+    std::vector<DimensionItem> out;
+    const std::vector<QRectF> diameterTexts = addDiameters(out);
+    const std::vector<double> stations = lengthStations();
+    const double row1 = bottomY_ + 7.0 * mm_, row2 = bottomY_ + 15.0 * mm_;
+    const double overallRow = stations.size() > 2 ? row2 : row1;
+    addStepLengths(out, stations, row1, row2);
+    out.push_back(lengthItem(part_.zRight, part_.zLeft, overallRow));
+    addLeaders(out, diameterTexts);
+    addSurfaceFinish(out);
+    addNoseCornerNote(out, overallRow);
+    return out;
+  }
+
+ private:
+  double pageX(double z) const { return frame_.toPage(z, 0.0).x(); }
 
   // Diameters across the part: outside on the line's left, bores on its right;
   // each line where no other is near, each text off the part's lines and the other texts.
-  std::vector<double> lineXs;
-  std::vector<QRectF> texts;
-  for (const auto* list : {&part.outside, &part.inside}) {
-    for (const PartFeature& f : *list) {
-      if (f.kind != FeatureKind::Cylinder && f.kind != FeatureKind::Thread) continue;
-      // A step short on paper (a flange's 4 mm spigot at 1:5) still gets its Ø, on
-      // its middle, unless another Ø line is drawn right there; a fin under 1 mm
-      // (a ring of the bar a roughing pass stopped short of) gets none.
-      const bool shortOnPaper = std::abs(pageX(f.zRight) - pageX(f.zLeft)) < 2.5 * mm;
-      if (shortOnPaper && f.length() < 1.0) continue;
-      if (shortOnPaper && std::any_of(lineXs.begin(), lineXs.end(), [&](double x) {
-            return std::abs(x - pageX((f.zLeft + f.zRight) / 2.0)) < 1.0 * mm;
-          }))
-        continue;
-      const double r = f.diameter / 2.0;
-      const bool inside = f.side == FeatureSide::Inside;
-      // A thread in a bore: the line spans the bore's material, its minor Ø.
-      const double rLine = f.kind == FeatureKind::Thread && inside ? f.minorDiameter / 2.0 : r;
-      DimensionItem d;
-      d.text = f.kind == FeatureKind::Thread ? label(f, frame) : QStringLiteral("Ø") + num(f.diameter, frame.units);
-      if (const QString tol = mark(frame.marks.tolerance, f); !tol.isEmpty()) d.text += QLatin1Char(' ') + tol;
-      const double w = fm.horizontalAdvance(d.text);
-      double zc = (f.zLeft + f.zRight) / 2.0;
-      for (const double at : {0.5, 0.3, 0.7, 0.15, 0.85}) {
-        if (shortOnPaper) break;
-        const double z = f.zLeft + at * f.length();
-        if (std::none_of(lineXs.begin(), lineXs.end(), [&](double x) { return std::abs(x - pageX(z)) < 2.5 * mm; })) {
-          zc = z;
-          break;
-        }
-      }
-      const QPointF top = frame.toPage(zc, rLine), bottom = frame.toPage(zc, -rLine);
-      lineXs.push_back(top.x());
-      d.lines.emplace_back(top, bottom);
-      d.arrows.emplace_back(top, bottom);
-      d.arrows.emplace_back(bottom, top);
-      d.vertical = true;
-      const double span = bottom.y() - top.y();
-      const auto place = [&] {
-        QRectF first;
-        for (const bool left : {!inside, inside}) {
-          for (const double at : {0.25, 0.5, 0.75, 0.12, 0.88, 0.38, 0.62}) {
-            const double x = left ? top.x() - 0.6 * mm - textH : top.x() + 0.6 * mm;
-            const QRectF rect(x, top.y() + at * span - w / 2.0, textH, w);
-            if (first.isNull()) first = rect;
-            // Half a millimetre clear of the part's lines: a thread's teeth are close-set.
-            if (!touchesAny(rect.adjusted(-0.5 * mm, -0.5 * mm, 0.5 * mm, 0.5 * mm), frame.partLines) &&
-                std::none_of(texts.begin(), texts.end(), [&](const QRectF& t) { return t.intersects(rect); }))
-              return rect;
-          }
-        }
-        // Beyond the line's upper end, the line carried on to it (a thread's teeth
-        // leave no clear place across the part).
-        if (!inside) {
-          const QRectF above(top.x() - 0.6 * mm - textH, top.y() - 2.0 * mm - w, textH, w);
-          if (!touchesAny(above, frame.partLines) &&
-              std::none_of(texts.begin(), texts.end(), [&](const QRectF& t) { return t.intersects(above); })) {
-            d.lines.emplace_back(top, QPointF(top.x(), above.top()));
-            return above;
-          }
-        }
-        return first;  // nowhere clear (a part too small on paper): the usual place
-      };
-      const QRectF best = place();
-      d.textRect = best;
-      texts.push_back(best);
-      out.push_back(d);
-    }
+  // Returns where the texts went.
+  std::vector<QRectF> addDiameters(std::vector<DimensionItem>& out) const {
+    std::vector<double> lineXs;
+    std::vector<QRectF> texts;
+    for (const auto* list : {&part_.outside, &part_.inside})
+      for (const PartFeature& f : *list)
+        if (f.kind == FeatureKind::Cylinder || f.kind == FeatureKind::Thread) addDiameter(out, f, lineXs, texts);
+    return texts;
   }
 
-  // Step lengths chained from the right face, and the overall length under them.
-  // A taper's ends are stations too: a cylinder running into a taper has no face,
-  // and without them the drawing would not say where the taper starts.
-  std::vector<double> shoulders = part.shoulderZ();
-  for (const auto* list : {&part.outside, &part.inside})
-    for (const PartFeature& f : *list)
-      if (f.kind == FeatureKind::Taper && !isMachiningTrace(f, part)) {
-        shoulders.push_back(f.zRight);
-        shoulders.push_back(f.zLeft);
+  void addDiameter(std::vector<DimensionItem>& out, const PartFeature& f, std::vector<double>& lineXs,
+                   std::vector<QRectF>& texts) const {
+    const double mm = mm_;
+    // A step short on paper (a flange's 4 mm spigot at 1:5) still gets its Ø, on
+    // its middle, unless another Ø line is drawn right there; a fin under 1 mm
+    // (a ring of the bar a roughing pass stopped short of) gets none.
+    const bool shortOnPaper = std::abs(pageX(f.zRight) - pageX(f.zLeft)) < 2.5 * mm;
+    if (shortOnPaper && f.length() < 1.0) return;
+    if (shortOnPaper && std::any_of(lineXs.begin(), lineXs.end(), [&](double x) {
+          return std::abs(x - pageX((f.zLeft + f.zRight) / 2.0)) < 1.0 * mm;
+        }))
+      return;
+    const double r = f.diameter / 2.0;
+    const bool inside = f.side == FeatureSide::Inside;
+    // A thread in a bore: the line spans the bore's material, its minor Ø.
+    const double rLine = f.kind == FeatureKind::Thread && inside ? f.minorDiameter / 2.0 : r;
+    DimensionItem d;
+    d.text = f.kind == FeatureKind::Thread ? label(f, frame_) : QStringLiteral("Ø") + num(f.diameter, frame_.units);
+    if (const QString tol = designMarkOf(frame_.marks.tolerance, f); !tol.isEmpty()) d.text += QLatin1Char(' ') + tol;
+    double zc = (f.zLeft + f.zRight) / 2.0;
+    for (const double at : {0.5, 0.3, 0.7, 0.15, 0.85}) {
+      if (shortOnPaper) break;
+      const double z = f.zLeft + at * f.length();
+      if (std::none_of(lineXs.begin(), lineXs.end(), [&](double x) { return std::abs(x - pageX(z)) < 2.5 * mm; })) {
+        zc = z;
+        break;
       }
-  // Stations closer than a sliver are one (a face two columns from the part's end
-  // is its end); the part's own ends are kept as they are. A groove is placed by
-  // its near wall; its width is in its callout, so its far wall is no station.
-  constexpr double kOneStation = 0.15;  // mm
-  std::vector<double> farWalls;
-  for (const auto* list : {&part.outside, &part.inside})
-    for (const PartFeature& f : *list)
-      if (f.kind == FeatureKind::Groove) farWalls.push_back(f.zLeft);
-  std::erase_if(shoulders, [&](double z) {
-    return z > part.zRight - kOneStation || z < part.zLeft + kOneStation ||
-           std::any_of(farWalls.begin(), farWalls.end(), [&](double w) { return std::abs(w - z) < kOneStation; });
-  });
-  shoulders.push_back(part.zRight);
-  shoulders.push_back(part.zLeft);
-  std::sort(shoulders.begin(), shoulders.end(), std::greater<>());
-  shoulders.erase(
-      std::unique(shoulders.begin(), shoulders.end(), [](double a, double b) { return a - b < kOneStation; }),
-      shoulders.end());
-  if (shoulders.back() != part.zLeft) shoulders.back() = part.zLeft;
-  const double row1 = bottomY + 7.0 * mm, row2 = bottomY + 15.0 * mm;
-  const auto lengthItem = [&](double za, double zb, double rowY) {
+    }
+    const QPointF top = frame_.toPage(zc, rLine), bottom = frame_.toPage(zc, -rLine);
+    lineXs.push_back(top.x());
+    d.lines.emplace_back(top, bottom);
+    d.arrows.emplace_back(top, bottom);
+    d.arrows.emplace_back(bottom, top);
+    d.vertical = true;
+    const QRectF best = placeDiameterText(d, top, bottom, inside, texts);
+    d.textRect = best;
+    texts.push_back(best);
+    out.push_back(d);
+  }
+
+  // Where a diameter's text goes beside its line from `top` to `bottom`.
+  QRectF placeDiameterText(DimensionItem& d, const QPointF& top, const QPointF& bottom, bool inside,
+                           const std::vector<QRectF>& texts) const {
+    const double mm = mm_, textH = textH_;
+    const double w = fm_.horizontalAdvance(d.text);
+    const double span = bottom.y() - top.y();
+    QRectF first;
+    for (const bool left : {!inside, inside}) {
+      for (const double at : {0.25, 0.5, 0.75, 0.12, 0.88, 0.38, 0.62}) {
+        const double x = left ? top.x() - 0.6 * mm - textH : top.x() + 0.6 * mm;
+        const QRectF rect(x, top.y() + at * span - w / 2.0, textH, w);
+        if (first.isNull()) first = rect;
+        // Half a millimetre clear of the part's lines: a thread's teeth are close-set.
+        if (!touchesAny(rect.adjusted(-0.5 * mm, -0.5 * mm, 0.5 * mm, 0.5 * mm), frame_.partLines) &&
+            std::none_of(texts.begin(), texts.end(), [&](const QRectF& t) { return t.intersects(rect); }))
+          return rect;
+      }
+    }
+    // Beyond the line's upper end, the line carried on to it (a thread's teeth
+    // leave no clear place across the part).
+    if (!inside) {
+      const QRectF above(top.x() - 0.6 * mm - textH, top.y() - 2.0 * mm - w, textH, w);
+      if (!touchesAny(above, frame_.partLines) &&
+          std::none_of(texts.begin(), texts.end(), [&](const QRectF& t) { return t.intersects(above); })) {
+        d.lines.emplace_back(top, QPointF(top.x(), above.top()));
+        return above;
+      }
+    }
+    return first;  // nowhere clear (a part too small on paper): the usual place
+  }
+
+  // The Z stations the step lengths are chained between, from the right face to the left.
+  std::vector<double> lengthStations() const {
+    const core::cut::PartFeatures& part = part_;
+    // A taper's ends are stations too: a cylinder running into a taper has no face,
+    // and without them the drawing would not say where the taper starts.
+    std::vector<double> shoulders = part.shoulderZ();
+    for (const auto* list : {&part.outside, &part.inside})
+      for (const PartFeature& f : *list)
+        if (f.kind == FeatureKind::Taper && !isMachiningTrace(f, part)) {
+          shoulders.push_back(f.zRight);
+          shoulders.push_back(f.zLeft);
+        }
+    // Stations closer than a sliver are one (a face two columns from the part's end
+    // is its end); the part's own ends are kept as they are. A groove is placed by
+    // its near wall; its width is in its callout, so its far wall is no station.
+    constexpr double kOneStation = 0.15;  // mm
+    std::vector<double> farWalls;
+    for (const auto* list : {&part.outside, &part.inside})
+      for (const PartFeature& f : *list)
+        if (f.kind == FeatureKind::Groove) farWalls.push_back(f.zLeft);
+    std::erase_if(shoulders, [&](double z) {
+      return z > part.zRight - kOneStation || z < part.zLeft + kOneStation ||
+             std::any_of(farWalls.begin(), farWalls.end(), [&](double w) { return std::abs(w - z) < kOneStation; });
+    });
+    shoulders.push_back(part.zRight);
+    shoulders.push_back(part.zLeft);
+    std::sort(shoulders.begin(), shoulders.end(), std::greater<>());
+    shoulders.erase(
+        std::unique(shoulders.begin(), shoulders.end(), [](double a, double b) { return a - b < kOneStation; }),
+        shoulders.end());
+    if (shoulders.back() != part.zLeft) shoulders.back() = part.zLeft;
+    return shoulders;
+  }
+
+  // A length from `za` to `zb` on the row at `rowY` under the part, its extension lines from the profile.
+  DimensionItem lengthItem(double za, double zb, double rowY) const {
+    const double mm = mm_;
     DimensionItem d;
     const double xa = pageX(za), xb = pageX(zb);
     for (const double z : {za, zb}) {
-      const double from = frame.toPage(z, -outerRadiusAt(part, z)).y() + 1.0 * mm;
+      const double from = frame_.toPage(z, -outerRadiusAt(part_, z)).y() + 1.0 * mm;
       d.lines.emplace_back(QPointF(pageX(z), from), QPointF(pageX(z), rowY + 1.5 * mm));
     }
     d.lines.emplace_back(QPointF(xa, rowY), QPointF(xb, rowY));
     d.arrows.emplace_back(QPointF(xa, rowY), QPointF(xb, rowY));
     d.arrows.emplace_back(QPointF(xb, rowY), QPointF(xa, rowY));
-    d.text = num(za - zb, frame.units);
-    const double w = fm.horizontalAdvance(d.text);
-    d.textRect = QRectF((xa + xb) / 2.0 - w / 2.0, rowY - 0.3 * mm - textH, w, textH);
+    d.text = num(za - zb, frame_.units);
+    const double w = fm_.horizontalAdvance(d.text);
+    d.textRect = QRectF((xa + xb) / 2.0 - w / 2.0, rowY - 0.3 * mm - textH_, w, textH_);
     return d;
-  };
+  }
+
+  // Step lengths chained from the right face (the overall length goes under them).
+  void addStepLengths(std::vector<DimensionItem>& out, const std::vector<double>& shoulders, double row1,
+                      double row2) const {
+    std::vector<DimensionItem> chain;
+    for (std::size_t k = 0; k + 1 < shoulders.size() && shoulders.size() > 2; ++k)
+      chain.push_back(lengthItem(shoulders[k], shoulders[k + 1], row1));
+    std::reverse(chain.begin(), chain.end());  // left to right on the page
+    placeShortStepTexts(chain, row1, row2);
+    for (const DimensionItem& d : chain) out.push_back(d);
+  }
+
   // A step too short for its text gets the text beside it, left of its extension
   // lines where that is free, else under its dimension line; never on a neighbour's.
-  std::vector<DimensionItem> chain;
-  for (std::size_t k = 0; k + 1 < shoulders.size() && shoulders.size() > 2; ++k)
-    chain.push_back(lengthItem(shoulders[k], shoulders[k + 1], row1));
-  std::reverse(chain.begin(), chain.end());  // left to right on the page
-  const double gap = 0.8 * mm;
-  std::vector<QRectF> taken;
-  const auto isFree = [&](const QRectF& r) {
-    return std::none_of(taken.begin(), taken.end(),
-                        [&](const QRectF& t) { return t.adjusted(-gap, 0, gap, 0).intersects(r); });
-  };
-  for (std::size_t k = 0; k < chain.size(); ++k) {
-    const double left = chain[k].lines[1].x1(), right = chain[k].lines[0].x1();  // zb is left of za
-    if (chain[k].textRect.width() + 2.0 * gap > right - left) continue;          // placed in the second pass
-    taken.push_back(chain[k].textRect);
-  }
-  for (std::size_t k = 0; k < chain.size(); ++k) {
-    QRectF& box = chain[k].textRect;
-    const double left = chain[k].lines[1].x1(), right = chain[k].lines[0].x1();
-    if (box.width() + 2.0 * gap <= right - left) continue;
-    QRectF beside = box;
-    beside.moveRight(left - gap);
-    QRectF besideRight = box;
-    besideRight.moveLeft(right + gap);
-    QRectF under = box, underLower = box;
-    under.moveTop(row1 + 0.5 * mm);
-    underLower.moveTop(under.bottom() + 0.3 * mm);
-    if (isFree(beside))
-      box = beside;
-    else if (isFree(under))
-      box = under;
-    else if (isFree(underLower) && underLower.bottom() < row2 - 0.5 * mm)
-      box = underLower;
-    else if (isFree(besideRight))
-      box = besideRight;
-    else {
-      while (!isFree(under)) under.translate(box.width() + gap, 0.0);
-      box = under;
+  void placeShortStepTexts(std::vector<DimensionItem>& chain, double row1, double row2) const {
+    const double mm = mm_;
+    const double gap = 0.8 * mm;
+    std::vector<QRectF> taken;
+    const auto isFree = [&](const QRectF& r) {
+      return std::none_of(taken.begin(), taken.end(),
+                          [&](const QRectF& t) { return t.adjusted(-gap, 0, gap, 0).intersects(r); });
+    };
+    for (std::size_t k = 0; k < chain.size(); ++k) {
+      const double left = chain[k].lines[1].x1(), right = chain[k].lines[0].x1();  // zb is left of za
+      if (chain[k].textRect.width() + 2.0 * gap > right - left) continue;          // placed in the second pass
+      taken.push_back(chain[k].textRect);
     }
-    taken.push_back(box);
+    for (std::size_t k = 0; k < chain.size(); ++k) {
+      QRectF& box = chain[k].textRect;
+      const double left = chain[k].lines[1].x1(), right = chain[k].lines[0].x1();
+      if (box.width() + 2.0 * gap <= right - left) continue;
+      QRectF beside = box;
+      beside.moveRight(left - gap);
+      QRectF besideRight = box;
+      besideRight.moveLeft(right + gap);
+      QRectF under = box, underLower = box;
+      under.moveTop(row1 + 0.5 * mm);
+      underLower.moveTop(under.bottom() + 0.3 * mm);
+      if (isFree(beside))
+        box = beside;
+      else if (isFree(under))
+        box = under;
+      else if (isFree(underLower) && underLower.bottom() < row2 - 0.5 * mm)
+        box = underLower;
+      else if (isFree(besideRight))
+        box = besideRight;
+      else {
+        while (!isFree(under)) under.translate(box.width() + gap, 0.0);
+        box = under;
+      }
+      taken.push_back(box);
+    }
   }
-  for (const DimensionItem& d : chain) out.push_back(d);
-  out.push_back(lengthItem(part.zRight, part.zLeft, shoulders.size() > 2 ? row2 : row1));
 
   // Leaders above the part: chamfers, radii, tapers, grooves; staggered so labels
   // never overlap, turned to the anchor's left where the frame ends on its right.
-  std::vector<QRectF> placed = texts;  // the diameters' texts too: a leader's label keeps off them
-  double noseRadius = 0.0;
-  for (const auto* list : {&part.outside, &part.inside}) {
-    for (const PartFeature& f : *list) {
-      if (f.isNoseFillet()) {
-        noseRadius = std::max(noseRadius, f.radius);
-        continue;
+  void addLeaders(std::vector<DimensionItem>& out, const std::vector<QRectF>& diameterTexts) const {
+    std::vector<QRectF> placed = diameterTexts;  // the diameters' texts too: a leader's label keeps off them
+    for (const auto* list : {&part_.outside, &part_.inside}) {
+      for (const PartFeature& f : *list) {
+        if (f.isNoseFillet()) continue;
+        if (f.kind != FeatureKind::Chamfer && f.kind != FeatureKind::Arc && f.kind != FeatureKind::Taper &&
+            f.kind != FeatureKind::Groove)
+          continue;
+        if (isMachiningTrace(f, part_)) continue;
+        out.push_back(leaderItem(f, placed));
       }
-      if (f.kind != FeatureKind::Chamfer && f.kind != FeatureKind::Arc && f.kind != FeatureKind::Taper &&
-          f.kind != FeatureKind::Groove)
-        continue;
-      if (isMachiningTrace(f, part)) continue;
-      DimensionItem d;
-      d.text = label(f, frame);
-      if (f.side == FeatureSide::Inside)
-        d.text = reportText(core::codes::kReportInside, frame.thai ? ReportLanguage::Thai : ReportLanguage::English,
-                            {d.text});
-      const QPointF anchor = anchorOf(f, frame);
-      const double w = fm.horizontalAdvance(d.text);
-      const bool toLeft = anchor.x() + 3.0 * mm + w > bounds.right();
-      QRectF box;
-      for (int level = 0; level < 12; ++level) {
-        const double y = topY - 6.0 * mm - level * (textH + 1.0 * mm);
-        box = QRectF(toLeft ? anchor.x() - 3.0 * mm - w : anchor.x() + 3.0 * mm, y - textH, w, textH);
-        if (box.top() < bounds.top()) {  // no room higher up: the lowest level, beside the others
-          box.moveTop(topY - 6.0 * mm - textH);
-          break;
-        }
-        if (std::none_of(placed.begin(), placed.end(),
-                         [&](const QRectF& p) { return p.adjusted(-3 * mm, 0, 3 * mm, 0).intersects(box); }))
-          break;
-      }
-      box.moveLeft(std::clamp(box.left(), bounds.left(), std::max(bounds.left(), bounds.right() - w)));
-      placed.push_back(box);
-      d.textRect = box;
-      const QPointF knee(toLeft ? box.right() + 0.5 * mm : box.left() - 0.5 * mm, box.bottom() + 0.4 * mm);
-      d.lines.emplace_back(anchor, knee);
-      d.lines.emplace_back(knee, QPointF(toLeft ? box.left() : box.right(), knee.y()));
-      d.arrows.emplace_back(anchor, knee);
-      out.push_back(d);
     }
   }
+
+  // One feature's leader, its label on the lowest level clear of those `placed` (and added to them).
+  DimensionItem leaderItem(const PartFeature& f, std::vector<QRectF>& placed) const {
+    const double mm = mm_, textH = textH_;
+    DimensionItem d;
+    d.text = label(f, frame_);
+    if (f.side == FeatureSide::Inside)
+      d.text = reportText(core::codes::kReportInside, frame_.thai ? ReportLanguage::Thai : ReportLanguage::English,
+                          {d.text});
+    const QPointF anchor = anchorOf(f, frame_);
+    const double w = fm_.horizontalAdvance(d.text);
+    const bool toLeft = anchor.x() + 3.0 * mm + w > bounds_.right();
+    QRectF box;
+    for (int level = 0; level < 12; ++level) {
+      const double y = topY_ - 6.0 * mm - level * (textH + 1.0 * mm);
+      box = QRectF(toLeft ? anchor.x() - 3.0 * mm - w : anchor.x() + 3.0 * mm, y - textH, w, textH);
+      if (box.top() < bounds_.top()) {  // no room higher up: the lowest level, beside the others
+        box.moveTop(topY_ - 6.0 * mm - textH);
+        break;
+      }
+      if (std::none_of(placed.begin(), placed.end(),
+                       [&](const QRectF& p) { return p.adjusted(-3 * mm, 0, 3 * mm, 0).intersects(box); }))
+        break;
+    }
+    box.moveLeft(std::clamp(box.left(), bounds_.left(), std::max(bounds_.left(), bounds_.right() - w)));
+    placed.push_back(box);
+    d.textRect = box;
+    const QPointF knee(toLeft ? box.right() + 0.5 * mm : box.left() - 0.5 * mm, box.bottom() + 0.4 * mm);
+    d.lines.emplace_back(anchor, knee);
+    d.lines.emplace_back(knee, QPointF(toLeft ? box.left() : box.right(), knee.y()));
+    d.arrows.emplace_back(anchor, knee);
+    return d;
+  }
+
   // Surface finish where the design gives one: on the upper profile of the feature.
-  if (frame.marks.surfaceFinish) {
-    for (const auto* list : {&part.outside, &part.inside}) {
+  void addSurfaceFinish(std::vector<DimensionItem>& out) const {
+    if (!frame_.marks.surfaceFinish) return;
+    for (const auto* list : {&part_.outside, &part_.inside}) {
       for (const PartFeature& f : *list) {
-        const QString ra = frame.marks.surfaceFinish(f);
+        const QString ra = frame_.marks.surfaceFinish(f);
         if (ra.isEmpty()) continue;
         const double z = f.zLeft + 0.3 * f.length();
         const double r = f.side == FeatureSide::Inside ? -f.radiusAt(z) : f.radiusAt(z);
-        out.push_back(finishMark(ra, frame.toPage(z, r), 2.5 * mm, fm));
+        out.push_back(finishMark(ra, frame_.toPage(z, r), 2.5 * mm_, fm_));
       }
     }
   }
-  if (noseRadius > 0.0) {
+
+  // The nose's fillets are no leaders: one note under the lengths gives their largest radius.
+  void addNoseCornerNote(std::vector<DimensionItem>& out, double lastRow) const {
+    double noseRadius = 0.0;
+    for (const auto* list : {&part_.outside, &part_.inside})
+      for (const PartFeature& f : *list)
+        if (f.isNoseFillet()) noseRadius = std::max(noseRadius, f.radius);
+    if (noseRadius <= 0.0) return;
     DimensionItem d;
-    d.text = reportText(core::codes::kReportNoseCorners, frame.thai ? ReportLanguage::Thai : ReportLanguage::English,
-                        {num(noseRadius, frame.units)});
-    const double w = fm.horizontalAdvance(d.text);
-    d.textRect = QRectF(pageX(part.zLeft), (shoulders.size() > 2 ? row2 : row1) + 3.0 * mm, w, textH);
+    d.text = reportText(core::codes::kReportNoseCorners, frame_.thai ? ReportLanguage::Thai : ReportLanguage::English,
+                        {num(noseRadius, frame_.units)});
+    const double w = fm_.horizontalAdvance(d.text);
+    d.textRect = QRectF(pageX(part_.zLeft), lastRow + 3.0 * mm_, w, textH_);
     out.push_back(d);
   }
-  return out;
+
+  const core::cut::PartFeatures& part_;
+  const DimensionFrame& frame_;
+  const QFontMetricsF fm_;
+  const double mm_;
+  const double textH_;
+  const QRectF bounds_;
+  double topY_ = 0.0;
+  double bottomY_ = 0.0;
+};
+
+}  // namespace
+
+std::vector<DimensionItem> layoutDimensions(const core::cut::PartFeatures& part, const DimensionFrame& frame) {
+  if (part.empty()) return {};
+  return DimensionLayout(part, frame).layout();
 }
 
 void paintDimensions(QPainter& painter, const std::vector<DimensionItem>& items, const DimensionFrame& frame) {

@@ -299,59 +299,60 @@ machine::Timeline programmedPath(const gcode::Program& program, const machine::M
   return machine::interpret(program, setup, options);
 }
 
-PartCheck checkPart(const machine::Timeline& run, const machine::Timeline& programmed, const CutSetup& setup,
-                    const PartCheckOptions& options) {
-  return checkPart(run, programmed, setup, ToolLibrary(setup.tools, setup.offsets), options);
-}
+namespace {
 
-PartCheck checkPart(const machine::Timeline& timeline, const machine::Timeline& programmed, const CutSetup& setup,
-                    const ToolLibrary& tools, const PartCheckOptions& options) {
-  PartCheck out;
-  CutOptions cutOptions;
-  cutOptions.resolution = options.resolution;
-  cutOptions.checkpointBudgetBytes = 0;  // forward only
+// A leftover against the programmed path belongs to the block whose path lies there.
+bool foundFromPath(const Finding& f) { return f.kind == DefectKind::Leftover && f.pathMove >= 0; }
 
-  CutSimulator real(timeline, setup, tools, cutOptions);
-  real.runToEnd();
-  out.stoppedBy = real.stoppingAlarm();
-  const double end = real.endTime();
+// The same moves with the ideal tools (no holder: nothing to collide).
+struct IdealRun {
+  machine::Timeline timeline;
+  ToolLibrary tools;
+};
 
-  // The same moves with the ideal tools (no holder: nothing to collide).
-  machine::Timeline idealTimeline = timeline;
-  ToolLibrary idealTools = tools;
+IdealRun idealRunOf(const machine::Timeline& timeline, const ToolLibrary& tools) {
+  IdealRun ideal{timeline, tools};
   std::set<std::pair<int, int>> made;
-  for (machine::Move& m : idealTimeline.moves) {
+  for (machine::Move& m : ideal.timeline.moves) {
     if (m.tool <= 0 || keepsWholeTool(m)) continue;
-    const ToolShape* shape = idealTools.get(m.tool, m.offset);
+    const ToolShape* shape = ideal.tools.get(m.tool, m.offset);
     if (!shape) continue;
-    if (made.insert({m.tool, m.offset}).second) idealTools.set(m.tool, m.offset + kIdealOffset, idealToolShape(*shape));
+    if (made.insert({m.tool, m.offset}).second)
+      ideal.tools.set(m.tool, m.offset + kIdealOffset, idealToolShape(*shape));
     m.offset += kIdealOffset;
   }
-  CutOptions idealOptions = cutOptions;
-  idealOptions.detectCollisions = false;
-  CutSimulator ideal(idealTimeline, setup, idealTools, idealOptions);
-  ideal.advanceTo(end);
+  return ideal;
+}
 
-  out.cut = real.stock();
-  const Stock& a = real.stock();
-  const Stock& b = ideal.stock();
-  out.nothingCut = b.removedVolume() <= 0.0 && a.removedVolume() <= 0.0;
+struct ProgrammedPaths {
+  std::vector<ProgrammedColumn> outside;
+  std::vector<ProgrammedColumn> inside;
+};
 
-  // The programmed path (where the run got to) per column, outside and inside.
+// The programmed path (where the run got to) per column, outside and inside.
+ProgrammedPaths programmedPathColumns(const machine::Timeline& programmed, const Stock& a, const ToolLibrary& tools,
+                                      double pathEnd) {
   ToolLibrary shapes = tools;
-  const double pathEnd = out.stoppedBy ? end : std::numeric_limits<double>::infinity();
-  std::vector<ProgrammedColumn> pathOut = programmedColumns(programmed, a, shapes, pathEnd, true);
-  std::vector<ProgrammedColumn> pathIn = programmedColumns(programmed, a, shapes, pathEnd, false);
-
-  std::vector<Finding> findings;
-  const int n = a.columnCount();
+  ProgrammedPaths path{programmedColumns(programmed, a, shapes, pathEnd, true),
+                       programmedColumns(programmed, a, shapes, pathEnd, false)};
   // The programmed path judges a column the real cut left as one ring or bar (or
   // nothing): an island left inside (a drill's cone beside a bore's end) is no surface of it.
-  for (int i = 0; i < n; ++i)
+  for (int i = 0; i < a.columnCount(); ++i)
     if (a.column(i).size() > 1) {
-      pathOut[static_cast<std::size_t>(i)] = ProgrammedColumn{};
-      pathIn[static_cast<std::size_t>(i)] = ProgrammedColumn{};
+      path.outside[static_cast<std::size_t>(i)] = ProgrammedColumn{};
+      path.inside[static_cast<std::size_t>(i)] = ProgrammedColumn{};
     }
+  return path;
+}
+
+// Each column where the real cut `a` went below the described part `b` or the
+// programmed path (a gouge), or left more than the tool's nose could reach (a leftover).
+std::vector<Finding> findDefectColumns(const Stock& a, const Stock& b, const ProgrammedPaths& path,
+                                       const PartCheckOptions& options) {
+  std::vector<Finding> findings;
+  const int n = a.columnCount();
+  const std::vector<ProgrammedColumn>& pathOut = path.outside;
+  const std::vector<ProgrammedColumn>& pathIn = path.inside;
   std::vector<double> idealOut(static_cast<std::size_t>(n)), idealIn(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) {
     idealOut[static_cast<std::size_t>(i)] = b.outerRadius(i);
@@ -383,20 +384,19 @@ PartCheck checkPart(const machine::Timeline& timeline, const machine::Timeline& 
       findings.push_back({DefectKind::Leftover, FeatureSide::Inside, i, describedIn - ri, describedIn, -1,
                           std::isnan(reachIn.described[k]) ? -1 : pathIn[k].move});
   }
-  if (findings.empty()) return out;
+  return findings;
+}
 
-  // Which block did it: replay the runs move by move. A gouge belongs to the
-  // real move after which the column first went below the described part; one
-  // below the programmed path counts only when that move's own programmed path
-  // runs over the column (a grooving blade's width beside its plunge is the
-  // tool's, not a gouge). A leftover belongs to the ideal move after which the
-  // described part went below what stayed.
-  CutSimulator realReplay(timeline, setup, tools, cutOptions);
-  CutSimulator idealReplay(idealTimeline, setup, idealTools, idealOptions);
-  // A leftover against the programmed path belongs to the block whose path lies there.
-  const auto fromPath = [](const Finding& f) { return f.kind == DefectKind::Leftover && f.pathMove >= 0; };
+// Which block did it: replay the runs move by move. A gouge belongs to the
+// real move after which the column first went below the described part; one
+// below the programmed path counts only when that move's own programmed path
+// runs over the column (a grooving blade's width beside its plunge is the
+// tool's, not a gouge). A leftover belongs to the ideal move after which the
+// described part went below what stayed.
+void findDefectCauses(std::vector<Finding>& findings, CutSimulator& realReplay, CutSimulator& idealReplay,
+                      const machine::Timeline& timeline, const Stock& a, double end, const PartCheckOptions& options) {
   std::size_t pending = findings.size();
-  for (const Finding& f : findings) pending -= fromPath(f) ? 1 : 0;
+  for (const Finding& f : findings) pending -= foundFromPath(f) ? 1 : 0;
   for (std::size_t k = 0; k < timeline.moves.size() && pending > 0; ++k) {
     const machine::Move& m = timeline.moves[k];
     if (m.tStart >= end) break;
@@ -405,7 +405,7 @@ PartCheck checkPart(const machine::Timeline& timeline, const machine::Timeline& 
     idealReplay.advanceTo(t);
     if (m.kind == machine::MoveKind::Dwell) continue;
     for (Finding& f : findings) {
-      if (f.cause >= 0 || fromPath(f)) continue;
+      if (f.cause >= 0 || foundFromPath(f)) continue;
       const bool outside = f.side == FeatureSide::Outside;
       const Stock& s = f.kind == DefectKind::Gouge ? realReplay.stock() : idealReplay.stock();
       const double now = outside ? s.outerRadius(f.column) : s.innerRadius(f.column);
@@ -422,17 +422,24 @@ PartCheck checkPart(const machine::Timeline& timeline, const machine::Timeline& 
       }
     }
   }
-  // A gouge below the programmed path that its own move did not make over the
-  // column is the tool's form (a blade's width, a parting cut): not a defect.
+}
+
+// A gouge below the programmed path that its own move did not make over the
+// column is the tool's form (a blade's width, a parting cut): not a defect.
+void dropToolFormGouges(std::vector<Finding>& findings, const machine::Timeline& timeline, const Stock& a) {
   std::erase_if(findings, [&](const Finding& f) {
     if (f.pathMove < 0 || f.kind != DefectKind::Gouge) return false;
     if (f.cause < 0) return true;
     const machine::Move& cause = timeline.moves[static_cast<std::size_t>(f.cause)];
     return !runsOver(cause, a.zCentre(f.column));
   });
-  if (findings.empty()) return out;
+}
 
-  // Runs of neighbouring columns with the same kind, side and cause are one defect.
+// Runs of neighbouring columns with the same kind, side and cause are one defect;
+// the defects from the right end of the part to the left.
+std::vector<PartDefect> defectsFromFindings(std::vector<Finding>& findings, const Stock& a,
+                                            const machine::Timeline& timeline, const machine::Timeline& programmed) {
+  std::vector<PartDefect> defects;
   std::sort(findings.begin(), findings.end(), [](const Finding& x, const Finding& y) {
     if (x.kind != y.kind) return x.kind < y.kind;
     if (x.side != y.side) return x.side < y.side;
@@ -442,8 +449,8 @@ PartCheck checkPart(const machine::Timeline& timeline, const machine::Timeline& 
     std::size_t e = k;
     while (e + 1 < findings.size() && findings[e + 1].kind == findings[k].kind &&
            findings[e + 1].side == findings[k].side && findings[e + 1].column == findings[e].column + 1 &&
-           findings[e + 1].cause == findings[k].cause && fromPath(findings[e + 1]) == fromPath(findings[k]) &&
-           (!fromPath(findings[k]) || findings[e + 1].pathMove == findings[k].pathMove))
+           findings[e + 1].cause == findings[k].cause && foundFromPath(findings[e + 1]) == foundFromPath(findings[k]) &&
+           (!foundFromPath(findings[k]) || findings[e + 1].pathMove == findings[k].pathMove))
       ++e;
     PartDefect d;
     d.kind = findings[k].kind;
@@ -456,18 +463,63 @@ PartCheck checkPart(const machine::Timeline& timeline, const machine::Timeline& 
       d.z = a.zCentre(findings[m].column);
       d.diameter = 2.0 * findings[m].described;
     }
-    if (fromPath(findings[k])) {
+    if (foundFromPath(findings[k])) {
       d.line = programmed.moves[static_cast<std::size_t>(findings[k].pathMove)].line;
       d.file = programmed.moves[static_cast<std::size_t>(findings[k].pathMove)].file;
     } else if (findings[k].cause >= 0) {
       d.line = timeline.moves[static_cast<std::size_t>(findings[k].cause)].line;
       d.file = timeline.moves[static_cast<std::size_t>(findings[k].cause)].file;
     }
-    out.defects.push_back(d);
+    defects.push_back(d);
     k = e + 1;
   }
-  std::sort(out.defects.begin(), out.defects.end(),
+  std::sort(defects.begin(), defects.end(),
             [](const PartDefect& x, const PartDefect& y) { return x.zRight > y.zRight; });
+  return defects;
+}
+
+}  // namespace
+
+PartCheck checkPart(const machine::Timeline& run, const machine::Timeline& programmed, const CutSetup& setup,
+                    const PartCheckOptions& options) {
+  return checkPart(run, programmed, setup, ToolLibrary(setup.tools, setup.offsets), options);
+}
+
+PartCheck checkPart(const machine::Timeline& timeline, const machine::Timeline& programmed, const CutSetup& setup,
+                    const ToolLibrary& tools, const PartCheckOptions& options) {
+  PartCheck out;
+  CutOptions cutOptions;
+  cutOptions.resolution = options.resolution;
+  cutOptions.checkpointBudgetBytes = 0;  // forward only
+
+  CutSimulator real(timeline, setup, tools, cutOptions);
+  real.runToEnd();
+  out.stoppedBy = real.stoppingAlarm();
+  const double end = real.endTime();
+
+  IdealRun idealRun = idealRunOf(timeline, tools);
+  CutOptions idealOptions = cutOptions;
+  idealOptions.detectCollisions = false;
+  CutSimulator ideal(idealRun.timeline, setup, idealRun.tools, idealOptions);
+  ideal.advanceTo(end);
+
+  out.cut = real.stock();
+  const Stock& a = real.stock();
+  const Stock& b = ideal.stock();
+  out.nothingCut = b.removedVolume() <= 0.0 && a.removedVolume() <= 0.0;
+
+  const double pathEnd = out.stoppedBy ? end : std::numeric_limits<double>::infinity();
+  std::vector<Finding> findings =
+      findDefectColumns(a, b, programmedPathColumns(programmed, a, tools, pathEnd), options);
+  if (findings.empty()) return out;
+
+  CutSimulator realReplay(timeline, setup, tools, cutOptions);
+  CutSimulator idealReplay(idealRun.timeline, setup, idealRun.tools, idealOptions);
+  findDefectCauses(findings, realReplay, idealReplay, timeline, a, end, options);
+  dropToolFormGouges(findings, timeline, a);
+  if (findings.empty()) return out;
+
+  out.defects = defectsFromFindings(findings, a, timeline, programmed);
   return out;
 }
 

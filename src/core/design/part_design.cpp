@@ -47,6 +47,300 @@ std::string trim(const std::string& s) {
   return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
 }
 
+// The JSON of a part file, or why the text is not JSON in `result`'s diagnostics.
+std::optional<nlohmann::json> parsePartJson(const std::string& text, const std::string& fileName,
+                                            io::ReadResult<PartDesign>& result) {
+  // Why the text is not JSON, in our words (both languages), never the JSON library's
+  // English (issue 42 item 6); the diagnostic's line and column say where.
+  // The place is said in the words too: a window that lists messages without their place still shows it.
+  const auto notJson = [&](std::size_t byte, const std::string& en, const std::string& th) {
+    const auto [line, column] = placeOf(text, byte);
+    const std::string at = fmt::format(" (line {}, column {})", line, column);
+    const std::string atTh = fmt::format(" (บรรทัด {} คอลัมน์ {})", line, column);
+    result.diagnostics.push_back(fileDiagnostic(codes::kPartFileNotJson, line, column, {fileName, en + at, th + atTh}));
+  };
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    const std::size_t byte = e.byte > 0 ? e.byte - 1 : 0;
+    if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+      result.diagnostics.push_back(
+          fileDiagnostic(codes::kPartFileNotJson, 0, 0, {fileName, "the file is empty", "ไฟล์ว่างเปล่า"}));
+    else if (byte + 1 >= text.size())
+      notJson(byte, "the text ends before the JSON is complete (a missing } or ]?)",
+              "ข้อความจบก่อนที่ JSON จะครบ (ขาด } หรือ ] หรือไม่)");
+    else
+      notJson(byte, "the JSON is not valid here (a missing comma, quote or bracket, or a word that is not JSON?)",
+              "JSON ไม่ถูกต้องที่ตำแหน่งนี้ (ขาดจุลภาค เครื่องหมายคำพูด หรือวงเล็บ หรือมีคำที่ไม่ใช่ JSON หรือไม่)");
+  } catch (const nlohmann::json::exception& e) {
+    // A number too big for a double ("number overflow parsing '2.5e553'"): no byte
+    // offset in the exception, so the place is where that number is written.
+    const std::string why = e.what();
+    std::size_t byte = 0;
+    if (const auto q = why.find('\''); q != std::string::npos)
+      if (const auto q2 = why.find('\'', q + 1); q2 != std::string::npos)
+        byte = std::min(text.find(why.substr(q + 1, q2 - q - 1)), text.size());
+    notJson(byte, "a number is too large for this program (at most about 1e308)",
+            "ตัวเลขใหญ่เกินกว่าที่โปรแกรมรับได้ (ไม่เกินประมาณ 1e308)");
+  }
+  return std::nullopt;
+}
+
+// Reads a part design's fields from its JSON, one read function a field; each
+// problem is a diagnostic in `result`, and any problem leaves the design unread.
+class PartDesignReader {
+ public:
+  PartDesignReader(nlohmann::json j, const std::string& fileName, io::ReadResult<PartDesign>& result)
+      : j_(std::move(j)), fileName_(fileName), result_(result) {}
+
+  void read() {
+    if (!j_.is_object()) {
+      bad("(the file)", "an object { ... }", "ออบเจกต์ { ... }");
+      return;
+    }
+    readNameAndMaterial();
+    readToolMaterial();
+    readStock();
+    readOutsideAndInside();
+    readGeneralTolerance();
+    readPartOff();
+    readGrooves();
+    readThreads();
+    if (ok_) result_.value = std::move(part_);
+  }
+
+ private:
+  void missing(const std::string& field) {
+    result_.diagnostics.push_back(fileDiagnostic(codes::kPartFieldMissing, 0, 0, {fileName_, field}));
+    ok_ = false;
+  }
+
+  // What the field must be, in both languages: the Thai sentence is Thai all through (issue 42 item 6).
+  void bad(const std::string& field, const std::string& en, const std::string& th) {
+    result_.diagnostics.push_back(fileDiagnostic(codes::kPartFieldBad, 0, 0, {fileName_, field, en, th}));
+    ok_ = false;
+  }
+
+  // A positive finite number up to `max`, or the reason it is not.
+  void positive(const nlohmann::json& o, const std::string& key, const std::string& field, double& out,
+                double max = kMaxPartSize) {
+    if (!o.contains(key)) return missing(field);
+    if (!o[key].is_number() || !std::isfinite(o[key].get<double>()) || o[key].get<double>() <= 0.0 ||
+        o[key].get<double>() > max) {
+      const std::string most = fmt::format("{}", max);
+      return bad(field, "a number of millimetres above 0 (at most " + most + ")",
+                 "ตัวเลขเป็นมิลลิเมตรที่มากกว่า 0 (ไม่เกิน " + most + ")");
+    }
+    out = o[key].get<double>();
+  }
+
+  // The name and material go into the program's header and comments: a text the program's
+  // own check reads back (a 10 MB name made a program its check refused; issue 42 item 6).
+  void words(const char* key, std::string& out) {
+    if (!j_.contains(key) || !j_[key].is_string()) return;
+    const std::string text = j_[key].get<std::string>();
+    std::size_t points = 0;
+    for (const char c : text) points += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+    if (points > kMaxPartTextChars)
+      return bad(key, "a text of at most " + std::to_string(kMaxPartTextChars) + " characters",
+                 "ข้อความยาวไม่เกิน " + std::to_string(kMaxPartTextChars) + " ตัวอักษร");
+    out = text;
+  }
+
+  void readNameAndMaterial() {
+    words("name", part_.name);
+    words("material", part_.material);
+  }
+
+  void readToolMaterial() {
+    if (!j_.contains("tool_material")) return;
+    if (!j_["tool_material"].is_string() ||
+        (j_["tool_material"].get<std::string>() != "hss" && j_["tool_material"].get<std::string>() != "carbide"))
+      bad("tool_material", "\"hss\" or \"carbide\"", "\"hss\" หรือ \"carbide\"");
+    else
+      part_.toolMaterial = j_["tool_material"].get<std::string>();
+  }
+
+  void readStock() {
+    if (!j_.contains("stock") || !j_["stock"].is_object()) return missing("stock");
+    // A bar a lathe holds (the DXF import's limits): the program's rapids clear it by a few mm
+    // and must stay within the control's numbers (issue 42 item 6: a 10000 mm stock).
+    positive(j_["stock"], "diameter", "stock.diameter", part_.stockDiameter, kMaxStockDiameter);
+    positive(j_["stock"], "length", "stock.length", part_.stockLength, kMaxStockLength);
+    if (j_["stock"].contains("bore")) {
+      positive(j_["stock"], "bore", "stock.bore", part_.stockBore);
+      if (part_.stockBore >= part_.stockDiameter && part_.stockDiameter > 0.0)
+        bad("stock.bore", "smaller than the stock's diameter", "เล็กกว่าเส้นผ่านศูนย์กลางของชิ้นงาน");
+    }
+  }
+
+  // A tolerance: a number (±), [upper, lower] in mm, or (on a Ø) an ISO 286 class such as "h7".
+  void readTolerance(const nlohmann::json& v, const std::string& field, double size, bool fits, cut::Tolerance& out) {
+    const auto finite = [](const nlohmann::json& n) {
+      return n.is_number() && std::isfinite(n.get<double>()) && std::abs(n.get<double>()) <= 100.0;
+    };
+    if (finite(v) && v.get<double>() > 0.0) {
+      out = {v.get<double>(), -v.get<double>(), ""};
+    } else if (v.is_array() && v.size() == 2 && finite(v[0]) && finite(v[1]) &&
+               v[0].get<double>() >= v[1].get<double>()) {
+      out = {v[0].get<double>(), v[1].get<double>(), ""};
+    } else if (fits && v.is_string()) {
+      const auto fit = isoFit(v.get<std::string>(), size);
+      if (!fit)
+        return bad(field, std::string("an ISO 286 class of ") + kIsoFitsKnown,
+                   std::string("ชั้นพิกัดงานสวม ISO 286 หนึ่งใน ") + kIsoFitsKnown);
+      out = *fit;
+      return;
+    } else {
+      return fits ? bad(field, "± mm (0.05), [upper, lower] mm ([0.02, -0.01]) or an ISO 286 class (\"h7\")",
+                        "± มม. (0.05), [บน, ล่าง] มม. ([0.02, -0.01]) หรือชั้นพิกัดงานสวม ISO 286 (\"h7\")")
+                  : bad(field, "± mm (0.1) or [upper, lower] mm ([0.1, -0.2])",
+                        "± มม. (0.1) หรือ [บน, ล่าง] มม. ([0.1, -0.2])");
+    }
+    out.text = cut::toleranceLabel(out);
+  }
+
+  // One step of a list: its kind and Ø, length, edge break, tolerances and roughness;
+  // nothing when its kind is missing or it is not an object.
+  std::optional<OutsideStep> readStep(const std::string& key, bool arcs, std::size_t k) {
+    const std::string word = key == "inside" ? "bore" : "cylinder";
+    const nlohmann::json& o = j_[key][k];
+    const std::string at = key + "[" + std::to_string(k) + "]";
+    if (!o.is_object()) {
+      bad(at, key == "inside" ? "an object { \"bore\": ... }" : "an object { \"cylinder\": ... }",
+          key == "inside" ? "ออบเจกต์ { \"bore\": ... }" : "ออบเจกต์ { \"cylinder\": ... }");
+      return std::nullopt;
+    }
+    OutsideStep step;
+    if (o.contains(word)) {
+      positive(o, word, at + "." + word, step.diameter);
+    } else if (o.contains("taper")) {
+      step.kind = StepKind::Taper;
+      positive(o, "taper", at + ".taper", step.diameter);
+    } else if (arcs && o.contains("arc")) {
+      step.kind = StepKind::Arc;
+      positive(o, "arc", at + ".arc", step.diameter);
+      positive(o, "radius", at + ".radius", step.radius);
+      if (o.contains("concave")) {
+        if (!o["concave"].is_boolean())
+          bad(at + ".concave", "true or false", "true หรือ false");
+        else
+          step.concave = o["concave"].get<bool>();
+      }
+    } else {
+      missing(at + "." + word);
+      return std::nullopt;
+    }
+    positive(o, "length", at + ".length", step.length);
+    if (o.contains("chamfer")) {
+      step.edge = EdgeBreak::Chamfer;
+      positive(o, "chamfer", at + ".chamfer", step.edgeSize);
+    } else if (o.contains("round")) {
+      step.edge = EdgeBreak::Round;
+      positive(o, "round", at + ".round", step.edgeSize);
+    }
+    if (o.contains("tolerance")) {
+      if (step.kind != StepKind::Cylinder)
+        bad(at + ".tolerance", "on a cylinder's or bore's Ø only", "ใส่ได้เฉพาะที่ Ø ของทรงกระบอกหรือรูคว้านเท่านั้น");
+      else
+        readTolerance(o["tolerance"], at + ".tolerance", step.diameter, true, step.tolerance);
+    }
+    if (o.contains("length_tolerance"))
+      readTolerance(o["length_tolerance"], at + ".length_tolerance", step.length, false, step.lengthTolerance);
+    if (o.contains("roughness")) positive(o, "roughness", at + ".roughness", step.roughness);
+    return step;
+  }
+
+  // A list of steps: outside cylinders, tapers and arcs; in the bore cylinders and tapers.
+  void readSteps(const std::string& key, bool arcs, std::vector<OutsideStep>& into) {
+    for (std::size_t k = 0; k < j_[key].size(); ++k)
+      if (const std::optional<OutsideStep> step = readStep(key, arcs, k)) into.push_back(*step);
+  }
+
+  void readOutsideAndInside() {
+    if (!j_.contains("outside") || !j_["outside"].is_array())
+      missing("outside");
+    else
+      readSteps("outside", true, part_.outside);
+    if (j_.contains("inside")) {
+      if (!j_["inside"].is_array())
+        bad("inside", "a list [ { \"bore\": ..., \"length\": ... } ]", "รายการ [ { \"bore\": ..., \"length\": ... } ]");
+      else
+        readSteps("inside", false, part_.inside);
+    }
+  }
+
+  void readGeneralTolerance() {
+    if (!j_.contains("general_tolerance")) return;
+    const auto& g = j_["general_tolerance"];
+    if (!g.is_string() || !generalTolerance(g.get<std::string>(), 10.0))
+      bad("general_tolerance", "\"f\", \"m\", \"c\" or \"v\" (ISO 2768-1)",
+          "\"f\", \"m\", \"c\" หรือ \"v\" (ISO 2768-1)");
+    else
+      part_.generalTolerance = g.get<std::string>();
+  }
+
+  void readPartOff() {
+    if (!j_.contains("part_off")) return;
+    if (!j_["part_off"].is_boolean())
+      bad("part_off", "true or false", "true หรือ false");
+    else
+      part_.partOff = j_["part_off"].get<bool>();
+  }
+
+  // The Z of a groove's right wall or a thread's right end: 0 or below.
+  bool zAtOrBelowFace(const nlohmann::json& o) const {
+    return o.is_object() && o.contains("z") && o["z"].is_number() && std::isfinite(o["z"].get<double>()) &&
+           o["z"].get<double>() <= 0.0;
+  }
+
+  void readGrooves() {
+    if (!j_.contains("grooves")) return;
+    if (!j_["grooves"].is_array())
+      bad("grooves", "a list [ { \"z\": ..., \"width\": ..., \"diameter\": ... } ]",
+          "รายการ [ { \"z\": ..., \"width\": ..., \"diameter\": ... } ]");
+    for (std::size_t k = 0; j_["grooves"].is_array() && k < j_["grooves"].size(); ++k) {
+      const nlohmann::json& o = j_["grooves"][k];
+      const std::string at = "grooves[" + std::to_string(k) + "]";
+      Groove g;
+      if (!zAtOrBelowFace(o)) {
+        bad(at + ".z", "the Z of its right wall, 0 or below", "ค่า Z ของผนังด้านขวาของร่อง เป็น 0 หรือต่ำกว่า");
+        continue;
+      }
+      g.z = o["z"].get<double>();
+      positive(o, "width", at + ".width", g.width);
+      positive(o, "diameter", at + ".diameter", g.diameter);
+      part_.grooves.push_back(g);
+    }
+  }
+
+  void readThreads() {
+    if (!j_.contains("threads")) return;
+    if (!j_["threads"].is_array())
+      bad("threads", "a list [ { \"z\": ..., \"length\": ..., \"pitch\": ... } ]",
+          "รายการ [ { \"z\": ..., \"length\": ..., \"pitch\": ... } ]");
+    for (std::size_t k = 0; j_["threads"].is_array() && k < j_["threads"].size(); ++k) {
+      const nlohmann::json& o = j_["threads"][k];
+      const std::string at = "threads[" + std::to_string(k) + "]";
+      Thread t;
+      if (!zAtOrBelowFace(o)) {
+        bad(at + ".z", "the Z of its right end, 0 or below", "ค่า Z ของปลายด้านขวาของเกลียว เป็น 0 หรือต่ำกว่า");
+        continue;
+      }
+      t.z = o["z"].get<double>();
+      positive(o, "length", at + ".length", t.length);
+      positive(o, "pitch", at + ".pitch", t.pitch);
+      part_.threads.push_back(t);
+    }
+  }
+
+  nlohmann::json j_;
+  const std::string& fileName_;
+  io::ReadResult<PartDesign>& result_;
+  PartDesign part_;
+  bool ok_ = true;
+};
+
 }  // namespace
 
 const OutsideStep* cylinderUnder(const PartDesign& part, double zRight, double zLeft, bool clearOfEdge) {
@@ -73,243 +367,9 @@ io::ReadResult<std::string> readPartFile(const std::string& path) {
 
 io::ReadResult<PartDesign> readPartDesign(const std::string& text, const std::string& fileName) {
   io::ReadResult<PartDesign> result;
-  nlohmann::json j;
-  // Why the text is not JSON, in our words (both languages), never the JSON library's
-  // English (issue 42 item 6); the diagnostic's line and column say where.
-  // The place is said in the words too: a window that lists messages without their place still shows it.
-  const auto notJson = [&](std::size_t byte, const std::string& en, const std::string& th) {
-    const auto [line, column] = placeOf(text, byte);
-    const std::string at = fmt::format(" (line {}, column {})", line, column);
-    const std::string atTh = fmt::format(" (บรรทัด {} คอลัมน์ {})", line, column);
-    result.diagnostics.push_back(fileDiagnostic(codes::kPartFileNotJson, line, column, {fileName, en + at, th + atTh}));
-  };
-  try {
-    j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    const std::size_t byte = e.byte > 0 ? e.byte - 1 : 0;
-    if (text.find_first_not_of(" \t\r\n") == std::string::npos)
-      result.diagnostics.push_back(
-          fileDiagnostic(codes::kPartFileNotJson, 0, 0, {fileName, "the file is empty", "ไฟล์ว่างเปล่า"}));
-    else if (byte + 1 >= text.size())
-      notJson(byte, "the text ends before the JSON is complete (a missing } or ]?)",
-              "ข้อความจบก่อนที่ JSON จะครบ (ขาด } หรือ ] หรือไม่)");
-    else
-      notJson(byte, "the JSON is not valid here (a missing comma, quote or bracket, or a word that is not JSON?)",
-              "JSON ไม่ถูกต้องที่ตำแหน่งนี้ (ขาดจุลภาค เครื่องหมายคำพูด หรือวงเล็บ หรือมีคำที่ไม่ใช่ JSON หรือไม่)");
-    return result;
-  } catch (const nlohmann::json::exception& e) {
-    // A number too big for a double ("number overflow parsing '2.5e553'"): no byte
-    // offset in the exception, so the place is where that number is written.
-    const std::string why = e.what();
-    std::size_t byte = 0;
-    if (const auto q = why.find('\''); q != std::string::npos)
-      if (const auto q2 = why.find('\'', q + 1); q2 != std::string::npos)
-        byte = std::min(text.find(why.substr(q + 1, q2 - q - 1)), text.size());
-    notJson(byte, "a number is too large for this program (at most about 1e308)",
-            "ตัวเลขใหญ่เกินกว่าที่โปรแกรมรับได้ (ไม่เกินประมาณ 1e308)");
-    return result;
-  }
-  PartDesign part;
-  bool ok = true;
-  const auto missing = [&](const std::string& field) {
-    result.diagnostics.push_back(fileDiagnostic(codes::kPartFieldMissing, 0, 0, {fileName, field}));
-    ok = false;
-  };
-  // What the field must be, in both languages: the Thai sentence is Thai all through (issue 42 item 6).
-  const auto bad = [&](const std::string& field, const std::string& en, const std::string& th) {
-    result.diagnostics.push_back(fileDiagnostic(codes::kPartFieldBad, 0, 0, {fileName, field, en, th}));
-    ok = false;
-  };
-  // A positive finite number up to `max`, or the reason it is not.
-  const auto positive = [&](const nlohmann::json& o, const std::string& key, const std::string& field, double& out,
-                            double max = kMaxPartSize) {
-    if (!o.contains(key)) return missing(field);
-    if (!o[key].is_number() || !std::isfinite(o[key].get<double>()) || o[key].get<double>() <= 0.0 ||
-        o[key].get<double>() > max) {
-      const std::string most = fmt::format("{}", max);
-      return bad(field, "a number of millimetres above 0 (at most " + most + ")",
-                 "ตัวเลขเป็นมิลลิเมตรที่มากกว่า 0 (ไม่เกิน " + most + ")");
-    }
-    out = o[key].get<double>();
-  };
-  if (!j.is_object()) {
-    bad("(the file)", "an object { ... }", "ออบเจกต์ { ... }");
-    return result;
-  }
-  // The name and material go into the program's header and comments: a text the program's
-  // own check reads back (a 10 MB name made a program its check refused; issue 42 item 6).
-  const auto words = [&](const char* key, std::string& out) {
-    if (!j.contains(key) || !j[key].is_string()) return;
-    const std::string text = j[key].get<std::string>();
-    std::size_t points = 0;
-    for (const char c : text) points += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
-    if (points > kMaxPartTextChars)
-      return bad(key, "a text of at most " + std::to_string(kMaxPartTextChars) + " characters",
-                 "ข้อความยาวไม่เกิน " + std::to_string(kMaxPartTextChars) + " ตัวอักษร");
-    out = text;
-  };
-  words("name", part.name);
-  words("material", part.material);
-  if (j.contains("tool_material")) {
-    if (!j["tool_material"].is_string() ||
-        (j["tool_material"].get<std::string>() != "hss" && j["tool_material"].get<std::string>() != "carbide"))
-      bad("tool_material", "\"hss\" or \"carbide\"", "\"hss\" หรือ \"carbide\"");
-    else
-      part.toolMaterial = j["tool_material"].get<std::string>();
-  }
-  if (!j.contains("stock") || !j["stock"].is_object()) {
-    missing("stock");
-  } else {
-    // A bar a lathe holds (the DXF import's limits): the program's rapids clear it by a few mm
-    // and must stay within the control's numbers (issue 42 item 6: a 10000 mm stock).
-    positive(j["stock"], "diameter", "stock.diameter", part.stockDiameter, kMaxStockDiameter);
-    positive(j["stock"], "length", "stock.length", part.stockLength, kMaxStockLength);
-    if (j["stock"].contains("bore")) {
-      positive(j["stock"], "bore", "stock.bore", part.stockBore);
-      if (part.stockBore >= part.stockDiameter && part.stockDiameter > 0.0)
-        bad("stock.bore", "smaller than the stock's diameter", "เล็กกว่าเส้นผ่านศูนย์กลางของชิ้นงาน");
-    }
-  }
-  // A tolerance: a number (±), [upper, lower] in mm, or (on a Ø) an ISO 286 class such as "h7".
-  const auto readTolerance = [&](const nlohmann::json& v, const std::string& field, double size, bool fits,
-                                 cut::Tolerance& out) {
-    const auto finite = [](const nlohmann::json& n) {
-      return n.is_number() && std::isfinite(n.get<double>()) && std::abs(n.get<double>()) <= 100.0;
-    };
-    if (finite(v) && v.get<double>() > 0.0) {
-      out = {v.get<double>(), -v.get<double>(), ""};
-    } else if (v.is_array() && v.size() == 2 && finite(v[0]) && finite(v[1]) &&
-               v[0].get<double>() >= v[1].get<double>()) {
-      out = {v[0].get<double>(), v[1].get<double>(), ""};
-    } else if (fits && v.is_string()) {
-      const auto fit = isoFit(v.get<std::string>(), size);
-      if (!fit)
-        return bad(field, std::string("an ISO 286 class of ") + kIsoFitsKnown,
-                   std::string("ชั้นพิกัดงานสวม ISO 286 หนึ่งใน ") + kIsoFitsKnown);
-      out = *fit;
-      return;
-    } else {
-      return fits ? bad(field, "± mm (0.05), [upper, lower] mm ([0.02, -0.01]) or an ISO 286 class (\"h7\")",
-                        "± มม. (0.05), [บน, ล่าง] มม. ([0.02, -0.01]) หรือชั้นพิกัดงานสวม ISO 286 (\"h7\")")
-                  : bad(field, "± mm (0.1) or [upper, lower] mm ([0.1, -0.2])",
-                        "± มม. (0.1) หรือ [บน, ล่าง] มม. ([0.1, -0.2])");
-    }
-    out.text = cut::toleranceLabel(out);
-  };
-  // A list of steps: outside cylinders, tapers and arcs; in the bore cylinders and tapers.
-  const auto readSteps = [&](const std::string& key, bool arcs, std::vector<OutsideStep>& into) {
-    const std::string word = key == "inside" ? "bore" : "cylinder";
-    for (std::size_t k = 0; k < j[key].size(); ++k) {
-      const nlohmann::json& o = j[key][k];
-      const std::string at = key + "[" + std::to_string(k) + "]";
-      if (!o.is_object()) {
-        bad(at, key == "inside" ? "an object { \"bore\": ... }" : "an object { \"cylinder\": ... }",
-            key == "inside" ? "ออบเจกต์ { \"bore\": ... }" : "ออบเจกต์ { \"cylinder\": ... }");
-        continue;
-      }
-      OutsideStep step;
-      if (o.contains(word)) {
-        positive(o, word, at + "." + word, step.diameter);
-      } else if (o.contains("taper")) {
-        step.kind = StepKind::Taper;
-        positive(o, "taper", at + ".taper", step.diameter);
-      } else if (arcs && o.contains("arc")) {
-        step.kind = StepKind::Arc;
-        positive(o, "arc", at + ".arc", step.diameter);
-        positive(o, "radius", at + ".radius", step.radius);
-        if (o.contains("concave")) {
-          if (!o["concave"].is_boolean())
-            bad(at + ".concave", "true or false", "true หรือ false");
-          else
-            step.concave = o["concave"].get<bool>();
-        }
-      } else {
-        missing(at + "." + word);
-        continue;
-      }
-      positive(o, "length", at + ".length", step.length);
-      if (o.contains("chamfer")) {
-        step.edge = EdgeBreak::Chamfer;
-        positive(o, "chamfer", at + ".chamfer", step.edgeSize);
-      } else if (o.contains("round")) {
-        step.edge = EdgeBreak::Round;
-        positive(o, "round", at + ".round", step.edgeSize);
-      }
-      if (o.contains("tolerance")) {
-        if (step.kind != StepKind::Cylinder)
-          bad(at + ".tolerance", "on a cylinder's or bore's Ø only", "ใส่ได้เฉพาะที่ Ø ของทรงกระบอกหรือรูคว้านเท่านั้น");
-        else
-          readTolerance(o["tolerance"], at + ".tolerance", step.diameter, true, step.tolerance);
-      }
-      if (o.contains("length_tolerance"))
-        readTolerance(o["length_tolerance"], at + ".length_tolerance", step.length, false, step.lengthTolerance);
-      if (o.contains("roughness")) positive(o, "roughness", at + ".roughness", step.roughness);
-      into.push_back(step);
-    }
-  };
-  if (!j.contains("outside") || !j["outside"].is_array())
-    missing("outside");
-  else
-    readSteps("outside", true, part.outside);
-  if (j.contains("inside")) {
-    if (!j["inside"].is_array())
-      bad("inside", "a list [ { \"bore\": ..., \"length\": ... } ]", "รายการ [ { \"bore\": ..., \"length\": ... } ]");
-    else
-      readSteps("inside", false, part.inside);
-  }
-  if (j.contains("general_tolerance")) {
-    const auto& g = j["general_tolerance"];
-    if (!g.is_string() || !generalTolerance(g.get<std::string>(), 10.0))
-      bad("general_tolerance", "\"f\", \"m\", \"c\" or \"v\" (ISO 2768-1)",
-          "\"f\", \"m\", \"c\" หรือ \"v\" (ISO 2768-1)");
-    else
-      part.generalTolerance = g.get<std::string>();
-  }
-  if (j.contains("part_off")) {
-    if (!j["part_off"].is_boolean())
-      bad("part_off", "true or false", "true หรือ false");
-    else
-      part.partOff = j["part_off"].get<bool>();
-  }
-  if (j.contains("grooves")) {
-    if (!j["grooves"].is_array())
-      bad("grooves", "a list [ { \"z\": ..., \"width\": ..., \"diameter\": ... } ]",
-          "รายการ [ { \"z\": ..., \"width\": ..., \"diameter\": ... } ]");
-    for (std::size_t k = 0; j["grooves"].is_array() && k < j["grooves"].size(); ++k) {
-      const nlohmann::json& o = j["grooves"][k];
-      const std::string at = "grooves[" + std::to_string(k) + "]";
-      Groove g;
-      if (!o.is_object() || !o.contains("z") || !o["z"].is_number() || !std::isfinite(o["z"].get<double>()) ||
-          o["z"].get<double>() > 0.0) {
-        bad(at + ".z", "the Z of its right wall, 0 or below", "ค่า Z ของผนังด้านขวาของร่อง เป็น 0 หรือต่ำกว่า");
-        continue;
-      }
-      g.z = o["z"].get<double>();
-      positive(o, "width", at + ".width", g.width);
-      positive(o, "diameter", at + ".diameter", g.diameter);
-      part.grooves.push_back(g);
-    }
-  }
-  if (j.contains("threads")) {
-    if (!j["threads"].is_array())
-      bad("threads", "a list [ { \"z\": ..., \"length\": ..., \"pitch\": ... } ]",
-          "รายการ [ { \"z\": ..., \"length\": ..., \"pitch\": ... } ]");
-    for (std::size_t k = 0; j["threads"].is_array() && k < j["threads"].size(); ++k) {
-      const nlohmann::json& o = j["threads"][k];
-      const std::string at = "threads[" + std::to_string(k) + "]";
-      Thread t;
-      if (!o.is_object() || !o.contains("z") || !o["z"].is_number() || !std::isfinite(o["z"].get<double>()) ||
-          o["z"].get<double>() > 0.0) {
-        bad(at + ".z", "the Z of its right end, 0 or below", "ค่า Z ของปลายด้านขวาของเกลียว เป็น 0 หรือต่ำกว่า");
-        continue;
-      }
-      t.z = o["z"].get<double>();
-      positive(o, "length", at + ".length", t.length);
-      positive(o, "pitch", at + ".pitch", t.pitch);
-      part.threads.push_back(t);
-    }
-  }
-  if (ok) result.value = std::move(part);
+  std::optional<nlohmann::json> j = parsePartJson(text, fileName, result);
+  if (!j) return result;
+  PartDesignReader(std::move(*j), fileName, result).read();
   return result;
 }
 
