@@ -1,4 +1,5 @@
-// The code table (SPEC 4, 6, 7, 13): one row per G/M code and dialect meaning.
+// The code table (SPEC 4, 6, 7, 13): one row per G code and dialect meaning (the M codes: code_table_m.cpp),
+// the G-code systems B and C, and the lookups over every row.
 #include "klueng/core/gcode/code_table.h"
 
 #include <algorithm>
@@ -7,88 +8,22 @@
 #include <cstdint>
 
 #include "code_index.h"
+#include "code_table_rows.h"
 #include "klueng/core/gcode/program.h"
 
 #include <fmt/format.h>
 
 #include <string>
+#include <vector>
 
 namespace klueng::core::gcode {
 
 namespace {
 
-using G = ModalGroup;
-using P = Phase;
-using A = CodeAction;
-// Dialect masks of a row.
-constexpr std::uint8_t kF = dialectBit(Dialect::Fanuc);
-constexpr std::uint8_t kH = dialectBit(Dialect::Haas);
-constexpr std::uint8_t kC = dialectBit(Dialect::Classic);
-constexpr std::uint8_t kFH = kF | kH;
-constexpr std::uint8_t kFC = kF | kC;
-constexpr std::uint8_t kAll = kF | kH | kC;
-// Flags of a row.
-constexpr std::uint8_t kNoFlags = 0;
-constexpr std::uint8_t kAlone = CodeInfo::kStandsAlone;
-constexpr std::uint8_t kAtRest = CodeInfo::kSpindleAtRest;
-
-// What a code does, as a teacher says it (Thai terms from GLOSSARY.md): shared by the rows of one action.
-constexpr Phrase kReferenceReturnSays{"return to the reference point through the given point",
-                                      "กลับสู่จุดอ้างอิงโดยผ่านจุดที่กำหนด"};
-constexpr Phrase kWorkOffsetSays{"use this work coordinate system", "ใช้ระบบพิกัดงานนี้"};
-constexpr Phrase kTurnRoughingSays{"rough turning cycle: take the profile down in passes along Z",
-                                   "วัฏจักรกลึงปอกหยาบ: กลึงตามรูปร่างทีละเที่ยวตามแนวแกน Z"};
-constexpr Phrase kFaceRoughingSays{"rough facing cycle: take the profile down in passes along X",
-                                   "วัฏจักรกลึงปาดหน้าหยาบ: กลึงตามรูปร่างทีละเที่ยวตามแนวแกน X"};
-constexpr Phrase kPatternRepeatingSays{"pattern repeating cycle: the profile again and again, closer each pass",
-                                       "วัฏจักรกลึงตามแบบซ้ำ: กลึงตามรูปร่างซ้ำ เข้าใกล้ขึ้นทุกเที่ยว"};
-constexpr Phrase kFacePeckingSays{"peck cycle along Z: feed in, back off to break the chip, again",
-                                  "วัฏจักรเจาะจิกตามแนวแกน Z: ป้อนเข้า ถอยเพื่อตัดเศษ แล้วป้อนต่อ"};
-constexpr Phrase kGroovingSays{"grooving cycle along X: plunge in pecks to break the chip",
-                               "วัฏจักรกลึงร่องตามแนวแกน X: ป้อนเข้าเป็นช่วงเพื่อตัดเศษ"};
-constexpr Phrase kThreadCuttingSays{"multi-pass threading cycle: the thread in passes of less and less depth",
-                                    "วัฏจักรกลึงเกลียวหลายเที่ยว: ป้อนลึกลดลงทุกเที่ยว"};
-constexpr Phrase kPeckDrillingSays{"peck drilling cycle: drill in pecks, back out to clear the chips",
-                                   "วัฏจักรเจาะจิก: เจาะทีละช่วงแล้วถอยออกเพื่อคายเศษ"};
-constexpr Phrase kFeedPerMinuteSays{"feed in mm per minute", "อัตราป้อนเป็นมม./นาที"};
-constexpr Phrase kFeedPerRevSays{"feed in mm per revolution", "อัตราป้อนเป็นมม./รอบ"};
-constexpr Phrase kProgramEndSays{"end of the program", "จบโปรแกรม"};
-constexpr Phrase kSpindleClampSays{"apply the spindle brake", "ล็อกเบรกเพลา"};
-constexpr Phrase kSpindleReleaseSays{"release the spindle brake", "ปลดเบรกเพลา"};
-// What a student types looking for a code, beyond its name (GLOSSARY.md terms): shared by related rows.
-constexpr std::string_view kAirBlastWords = "air blast jet chips ลมเป่า";
-constexpr std::string_view kArcWords = "arc circle radius fillet round corner ส่วนโค้ง รัศมี มุมมน";
-constexpr std::string_view kBrakeWords = "spindle brake lock clamp เบรก เพลา";
-constexpr std::string_view kCAxisWords = "c-axis c axis indexing spindle position แกน c";
-constexpr std::string_view kCallWords = "subprogram subroutine call macro โปรแกรมย่อย มาโคร";
-constexpr std::string_view kChuckWords = "chuck clamp jaws grip หัวจับ จับชิ้นงาน";
-constexpr std::string_view kCompWords = "nose radius compensation tnrc offset ชดเชยรัศมีจมูกมีด";
-constexpr std::string_view kConveyorWords = "chip conveyor chips สายพาน เศษ";
-constexpr std::string_view kCoolantWords = "coolant flood น้ำหล่อเย็น สารหล่อเย็น";
-constexpr std::string_view kDistanceWords = "absolute incremental distance mode สัมบูรณ์ สัมพัทธ์";
-constexpr std::string_view kDoorWords = "door automatic ประตู";
-constexpr std::string_view kDrillingWords = "drilling drill hole peck centre เจาะ เจาะรู เจาะจิก";
-constexpr std::string_view kFacingWords = "facing face roughing กลึงปาดหน้า ปาดหน้า";
-constexpr std::string_view kFeedWords = "feed rate อัตราป้อน";
-constexpr std::string_view kGearWords = "gear range low high spindle เกียร์";
-constexpr std::string_view kGroovingWords = "grooving groove parting off undercut กลึงร่อง ร่อง ตัดขาด";
-constexpr std::string_view kHighPressureWords = "coolant high pressure through tool สารหล่อเย็น แรงดันสูง";
-constexpr std::string_view kPartsCatcherWords = "parts catcher tray finished part ถาดรับชิ้นงาน";
-constexpr std::string_view kPatternWords = "pattern repeating casting forging profile กลึงตามแบบ งานหล่อ";
-constexpr std::string_view kReferenceWords = "reference point home return จุดอ้างอิง";
-constexpr std::string_view kRelayWords = "output relay signal รีเลย์";
-constexpr std::string_view kReturnLevelWords = "drilling return level initial r point เจาะ ระดับถอยกลับ จุด R";
-constexpr std::string_view kRoughingWords = "roughing rough turning stock removal od id กลึงปอกหยาบ กลึงหยาบ";
-constexpr std::string_view kSpindleWords = "spindle start stop rotation เพลา หมุน";
-constexpr std::string_view kStopWords = "stop end program หยุด จบโปรแกรม";
-constexpr std::string_view kTailstockWords = "tailstock centre support ยันศูนย์ท้าย";
-constexpr std::string_view kThreadChamferWords = "thread chamfer pull out เกลียว ลบมุม";
-constexpr std::string_view kThreadWords = "thread threading pitch lead screw เกลียว กลึงเกลียว ระยะพิตช์";
-constexpr std::string_view kUnitsWords = "units inch metric millimetre หน่วย นิ้ว มิลลิเมตร";
-constexpr std::string_view kWorkOffsetWords = "work offset coordinate system zero ระบบพิกัดงาน ศูนย์งาน";
+using namespace table_rows;
 
 // clang-format off: one code per block of lines, its facts in the same places.
-constexpr CodeInfo kRows[] = {
+constexpr CodeInfo kGRows[] = {
     // --- G codes -------------------------------------------------------------
     {'G',
      0,
@@ -591,489 +526,10 @@ constexpr CodeInfo kRows[] = {
      "G99 - alone in its block: F is in mm/rev from here on", "G99 - อยู่เดี่ยวในบล็อก: ค่า F เป็น มม./รอบ ตั้งแต่บล็อกนี้",
      kFeedPerRevSays, kFeedWords},
 
-    // --- M codes -------------------------------------------------------------
-    {'M',
-     0,
-     G::MProgram,
-     P::AfterMotion,
-     kAll,
-     kAlone,
-     A::ProgramStop,
-     "Program stop",
-     "หยุดโปรแกรม",
-     "M00 - stop; press Go to carry on",
-     "M00 - หยุดการทำงาน กด เริ่มทำงาน เพื่อทำงานต่อ",
-     {"stop the program until Cycle Start is pressed", "หยุดโปรแกรมจนกว่าจะกด Cycle Start"},
-     kStopWords},
-    {'M',
-     1,
-     G::MProgram,
-     P::AfterMotion,
-     kAll,
-     kAlone,
-     A::OptionalStop,
-     "Optional stop",
-     "ทางเลือกการหยุด (หยุดเลือกได้)",
-     "M01 - stop only when the Optional Stop switch is on",
-     "M01 - หยุดเฉพาะเมื่อเปิดสวิตช์ทางเลือกการหยุด",
-     {"stop here when the Optional Stop switch is on", "หยุดที่นี่เมื่อเปิดสวิตช์ Optional Stop"},
-     kStopWords},
-    {'M', 2, G::MProgram, P::AfterMotion, kAll, kAlone, A::ProgramEnd, "End of program", "จบโปรแกรม",
-     "M02 - end of program", "M02 - จบโปรแกรม", kProgramEndSays, kStopWords},
-    {'M',
-     3,
-     G::MSpindle,
-     P::BeforeMotion,
-     kAll,
-     kNoFlags,
-     A::SpindleCw,
-     "Spindle clockwise",
-     "หมุนตามเข็มนาฬิกา",
-     "M03 S1000 - start the spindle clockwise at 1000 rpm",
-     "M03 S1000 - เริ่มหมุนตามเข็มนาฬิกาที่ 1000 รอบ/นาที",
-     {"start the spindle clockwise", "เปิดเพลาหมุนตามเข็มนาฬิกา"},
-     kSpindleWords},
-    {'M',
-     4,
-     G::MSpindle,
-     P::BeforeMotion,
-     kAll,
-     kNoFlags,
-     A::SpindleCcw,
-     "Spindle counter-clockwise",
-     "หมุนทวนเข็มนาฬิกา",
-     "M04 S1000 - start the spindle counter-clockwise at 1000 rpm",
-     "M04 S1000 - เริ่มหมุนทวนเข็มนาฬิกาที่ 1000 รอบ/นาที",
-     {"start the spindle counter-clockwise", "เปิดเพลาหมุนทวนเข็มนาฬิกา"},
-     kSpindleWords},
-    {'M',
-     5,
-     G::MSpindle,
-     P::AfterMotion,
-     kAll,
-     kNoFlags,
-     A::SpindleStop,
-     "Spindle stop",
-     "หยุดหมุน",
-     "M05 - stop the spindle (after the motion of its block)",
-     "M05 - หยุดหมุนเพลาจับงาน (หลังการเคลื่อนที่ในบล็อกเดียวกัน)",
-     {"stop the spindle", "หยุดเพลาหมุน"},
-     kSpindleWords},
-    {'M',
-     8,
-     G::MCoolant,
-     P::BeforeMotion,
-     kAll,
-     kNoFlags,
-     A::CoolantOn,
-     "Coolant on",
-     "เปิดสารหล่อเย็น",
-     "M08 - coolant on",
-     "M08 - เปิดสารหล่อเย็น",
-     {"turn the coolant on", "เปิดน้ำหล่อเย็น"},
-     kCoolantWords},
-    {'M',
-     9,
-     G::MCoolant,
-     P::AfterMotion,
-     kAll,
-     kNoFlags,
-     A::CoolantOff,
-     "Coolant off",
-     "ปิดสารหล่อเย็น",
-     "M09 - coolant off (after the motion of its block)",
-     "M09 - ปิดสารหล่อเย็น (หลังการเคลื่อนที่ในบล็อกเดียวกัน)",
-     {"turn the coolant off", "ปิดน้ำหล่อเย็น"},
-     kCoolantWords},
-    {'M', 30, G::MProgram, P::AfterMotion, kAll, kAlone, A::ProgramEnd, "End of program and rewind",
-     "จบโปรแกรมและย้อนกลับต้นโปรแกรม", "M30 - end of program, back to its start", "M30 - จบโปรแกรมและย้อนกลับไปต้นโปรแกรม",
-     kProgramEndSays, kStopWords},
-    // M41 means C-axis mode in the classic dialect, a gear range on a Fanuc (SPEC 13).
-    {'M',
-     41,
-     G::MCAxis,
-     P::BeforeMotion,
-     kC,
-     kNoFlags,
-     A::CAxisOn,
-     "C-axis mode on",
-     "เปิดโหมดควบคุมการเคลื่อนที่ของแกน C",
-     "M41 - enter C-axis mode (the brake must be on: M86 first)",
-     "M41 - เข้าสู่โหมดควบคุมการเคลื่อนที่ของแกน C (ต้องเบรกก่อนด้วย M86)",
-     {"C-axis mode on", "เปิดโหมดควบคุมการเคลื่อนที่ของแกน C"},
-     kCAxisWords},
-    {'M',
-     41,
-     G::MGear,
-     P::BeforeMotion,
-     kFH,
-     kNoFlags,
-     A::GearRange,
-     "Gear range 1 (low)",
-     "เลือกช่วงเกียร์ 1 (ต่ำ)",
-     "M41 - select the low gear range (no motion)",
-     "M41 - เลือกช่วงเกียร์ต่ำ (ไม่มีการเคลื่อนที่)",
-     {"gear range 1 (low)", "เลือกช่วงเกียร์ 1 (ต่ำ)"},
-     kGearWords},
-    {'M',
-     42,
-     G::MGear,
-     P::BeforeMotion,
-     kFH,
-     kNoFlags,
-     A::GearRange,
-     "Gear range 2 (high)",
-     "เลือกช่วงเกียร์ 2 (สูง)",
-     "M42 - select the high gear range (no motion)",
-     "M42 - เลือกช่วงเกียร์สูง (ไม่มีการเคลื่อนที่)",
-     {"gear range 2 (high)", "เลือกช่วงเกียร์ 2 (สูง)"},
-     kGearWords},
-    {'M', 86, G::MBrake, P::BeforeMotion, kFC, kNoFlags, A::SpindleClamp, "Spindle brake on", "เบรกเพลาจับงาน",
-     "M86 - apply the brake (the spindle must be stopped)", "M86 - เบรกเพลาจับงาน (เพลาต้องหยุดหมุนก่อน)", kSpindleClampSays,
-     kBrakeWords},
-    {'M', 87, G::MBrake, P::BeforeMotion, kFC, kNoFlags, A::SpindleRelease, "Spindle brake off", "ปลดเบรกเพลาจับงาน",
-     "M87 - release the brake (leave C-axis mode first)", "M87 - ปลดเบรก (ต้องออกจากโหมดควบคุมการเคลื่อนที่ของแกน C ก่อน)",
-     kSpindleReleaseSays, kBrakeWords},
-    {'M',
-     91,
-     G::MCAxis,
-     P::BeforeMotion,
-     kFC,
-     kNoFlags,
-     A::CAxisOff,
-     "C-axis mode off",
-     "ปิดโหมดควบคุมการเคลื่อนที่ของแกน C",
-     "M91 - leave C-axis mode",
-     "M91 - ออกจากโหมดควบคุมการเคลื่อนที่ของแกน C",
-     {"C-axis mode off", "ปิดโหมดควบคุมการเคลื่อนที่ของแกน C"},
-     kCAxisWords},
-    // Haas machine M codes (Haas lathe operator's manual, M-codes; docs/dialects.md).
-    {'M',
-     10,
-     G::MChuck,
-     P::BeforeMotion,
-     kH,
-     kAtRest,
-     A::None,
-     "Chuck clamp",
-     "จับชิ้นงาน (หนีบหัวจับ)",
-     "M10 - clamp the chuck",
-     "M10 - หนีบหัวจับชิ้นงาน",
-     {"chuck clamp", "จับชิ้นงาน (หนีบหัวจับ)"},
-     kChuckWords},
-    {'M',
-     11,
-     G::MChuck,
-     P::BeforeMotion,
-     kH,
-     kAtRest,
-     A::None,
-     "Chuck unclamp",
-     "ปลดหัวจับชิ้นงาน",
-     "M11 - unclamp the chuck (spindle stopped)",
-     "M11 - ปลดหัวจับชิ้นงาน (เพลาต้องหยุดหมุน)",
-     {"chuck unclamp", "ปลดหัวจับชิ้นงาน"},
-     kChuckWords},
-    {'M',
-     12,
-     G::MAirBlast,
-     P::BeforeMotion,
-     kH,
-     kNoFlags,
-     A::None,
-     "Air blast on",
-     "เปิดลมเป่า",
-     "M12 - auto air jet on",
-     "M12 - เปิดลมเป่าอัตโนมัติ",
-     {"air blast on", "เปิดลมเป่า"},
-     kAirBlastWords},
-    {'M',
-     13,
-     G::MAirBlast,
-     P::AfterMotion,
-     kH,
-     kNoFlags,
-     A::None,
-     "Air blast off",
-     "ปิดลมเป่า",
-     "M13 - auto air jet off",
-     "M13 - ปิดลมเป่าอัตโนมัติ",
-     {"air blast off", "ปิดลมเป่า"},
-     kAirBlastWords},
-    {'M', 14, G::MBrake, P::BeforeMotion, kH, kAtRest, A::SpindleClamp, "Main spindle brake on", "เบรกเพลาจับงาน",
-     "M14 - clamp the main spindle (spindle stopped)", "M14 - เบรกเพลาจับงาน (เพลาต้องหยุดหมุน)", kSpindleClampSays,
-     kBrakeWords},
-    {'M', 15, G::MBrake, P::BeforeMotion, kH, kAtRest, A::SpindleRelease, "Main spindle brake off", "ปลดเบรกเพลาจับงาน",
-     "M15 - release the main spindle brake", "M15 - ปลดเบรกเพลาจับงาน", kSpindleReleaseSays, kBrakeWords},
-    {'M',
-     19,
-     G::MOther,
-     P::BeforeMotion,
-     kH,
-     kAtRest,
-     A::None,
-     "Spindle orient",
-     "หมุนเพลาไปยังมุมที่กำหนด",
-     "M19 P90 - stop the spindle at 90 degrees",
-     "M19 P90 - หยุดเพลาจับงานที่มุม 90 องศา",
-     {"spindle orient", "หมุนเพลาไปยังมุมที่กำหนด"},
-     "spindle orient angle position เพลา มุม"},
-    {'M',
-     21,
-     G::MTailstock,
-     P::BeforeMotion,
-     kH,
-     kNoFlags,
-     A::None,
-     "Tailstock advance",
-     "เลื่อนยันศูนย์ท้ายเข้า",
-     "M21 - move the tailstock to the part",
-     "M21 - เลื่อนยันศูนย์ท้ายเข้าหาชิ้นงาน",
-     {"tailstock advance", "เลื่อนยันศูนย์ท้ายเข้า"},
-     kTailstockWords},
-    {'M',
-     22,
-     G::MTailstock,
-     P::BeforeMotion,
-     kH,
-     kNoFlags,
-     A::None,
-     "Tailstock retract",
-     "ถอยยันศูนย์ท้ายออก",
-     "M22 - retract the tailstock",
-     "M22 - ถอยยันศูนย์ท้ายออก",
-     {"tailstock retract", "ถอยยันศูนย์ท้ายออก"},
-     kTailstockWords},
-    {'M',
-     23,
-     G::MThreadChamfer,
-     P::BeforeMotion,
-     kH,
-     kNoFlags,
-     A::ThreadChamferOn,
-     "Thread chamfer on",
-     "เปิดการลบมุมปลายเกลียว",
-     "M23 - angle out of the thread at its end (Settings 95, 96)",
-     "M23 - ถอยมีดเป็นมุมเมื่อสุดเกลียว (ตั้งค่า 95, 96)",
-     {"thread chamfer on", "เปิดการลบมุมปลายเกลียว"},
-     kThreadChamferWords},
-    {'M',
-     24,
-     G::MThreadChamfer,
-     P::BeforeMotion,
-     kH,
-     kNoFlags,
-     A::ThreadChamferOff,
-     "Thread chamfer off",
-     "ปิดการลบมุมปลายเกลียว",
-     "M24 - pull straight out of the thread at its end",
-     "M24 - ถอยมีดตรงออกเมื่อสุดเกลียว",
-     {"thread chamfer off", "ปิดการลบมุมปลายเกลียว"},
-     kThreadChamferWords},
-    {'M',
-     31,
-     G::MConveyor,
-     P::BeforeMotion,
-     kH,
-     kNoFlags,
-     A::None,
-     "Chip conveyor forward",
-     "เปิดสายพานลำเลียงเศษ",
-     "M31 - run the chip conveyor forward",
-     "M31 - เดินสายพานลำเลียงเศษไปข้างหน้า",
-     {"chip conveyor forward", "เปิดสายพานลำเลียงเศษ"},
-     kConveyorWords},
-    {'M',
-     33,
-     G::MConveyor,
-     P::BeforeMotion,
-     kH,
-     kNoFlags,
-     A::None,
-     "Chip conveyor stop",
-     "หยุดสายพานลำเลียงเศษ",
-     "M33 - stop the chip conveyor",
-     "M33 - หยุดสายพานลำเลียงเศษ",
-     {"chip conveyor stop", "หยุดสายพานลำเลียงเศษ"},
-     kConveyorWords},
-    {'M',
-     36,
-     G::MPartsCatcher,
-     P::BeforeMotion,
-     kH,
-     kNoFlags,
-     A::None,
-     "Parts catcher on",
-     "ยกถาดรับชิ้นงานขึ้น",
-     "M36 - swing the parts catcher in",
-     "M36 - ยกถาดรับชิ้นงานเข้ารับ",
-     {"parts catcher on", "ยกถาดรับชิ้นงานขึ้น"},
-     kPartsCatcherWords},
-    {'M',
-     37,
-     G::MPartsCatcher,
-     P::BeforeMotion,
-     kH,
-     kNoFlags,
-     A::None,
-     "Parts catcher off",
-     "เก็บถาดรับชิ้นงาน",
-     "M37 - swing the parts catcher out",
-     "M37 - เก็บถาดรับชิ้นงานออก",
-     {"parts catcher off", "เก็บถาดรับชิ้นงาน"},
-     kPartsCatcherWords},
-    {'M',
-     59,
-     G::MOther,
-     P::BeforeMotion,
-     kH,
-     kNoFlags,
-     A::None,
-     "Set output relay",
-     "เปิดรีเลย์เอาต์พุต",
-     "M59 P1103 - switch output relay 1103 on",
-     "M59 P1103 - เปิดรีเลย์เอาต์พุตหมายเลข 1103",
-     {"set output relay", "เปิดรีเลย์เอาต์พุต"},
-     kRelayWords},
-    {'M',
-     69,
-     G::MOther,
-     P::BeforeMotion,
-     kH,
-     kNoFlags,
-     A::None,
-     "Clear output relay",
-     "ปิดรีเลย์เอาต์พุต",
-     "M69 P1103 - switch output relay 1103 off",
-     "M69 P1103 - ปิดรีเลย์เอาต์พุตหมายเลข 1103",
-     {"clear output relay", "ปิดรีเลย์เอาต์พุต"},
-     kRelayWords},
-    {'M',
-     85,
-     G::MDoor,
-     P::BeforeMotion,
-     kH,
-     kNoFlags,
-     A::None,
-     "Automatic door open",
-     "เปิดประตูอัตโนมัติ",
-     "M85 - open the automatic door",
-     "M85 - เปิดประตูเครื่องอัตโนมัติ",
-     {"automatic door open", "เปิดประตูอัตโนมัติ"},
-     kDoorWords},
-    {'M',
-     86,
-     G::MDoor,
-     P::BeforeMotion,
-     kH,
-     kNoFlags,
-     A::None,
-     "Automatic door close",
-     "ปิดประตูอัตโนมัติ",
-     "M86 - close the automatic door (Haas; a brake elsewhere)",
-     "M86 - ปิดประตูเครื่องอัตโนมัติ (ของ Haas)",
-     {"automatic door close", "ปิดประตูอัตโนมัติ"},
-     kDoorWords},
-    {'M',
-     88,
-     G::MHighPressureCoolant,
-     P::BeforeMotion,
-     kH,
-     kNoFlags,
-     A::None,
-     "High-pressure coolant on",
-     "เปิดสารหล่อเย็นแรงดันสูง",
-     "M88 - high-pressure coolant on",
-     "M88 - เปิดสารหล่อเย็นแรงดันสูง",
-     {"high-pressure coolant on", "เปิดสารหล่อเย็นแรงดันสูง"},
-     kHighPressureWords},
-    {'M',
-     89,
-     G::MHighPressureCoolant,
-     P::AfterMotion,
-     kH,
-     kNoFlags,
-     A::None,
-     "High-pressure coolant off",
-     "ปิดสารหล่อเย็นแรงดันสูง",
-     "M89 - high-pressure coolant off",
-     "M89 - ปิดสารหล่อเย็นแรงดันสูง",
-     {"high-pressure coolant off", "ปิดสารหล่อเย็นแรงดันสูง"},
-     kHighPressureWords},
-    {'M',
-     95,
-     G::MOther,
-     P::AfterMotion,
-     kH,
-     kNoFlags,
-     A::None,
-     "Sleep mode",
-     "โหมดพักเครื่อง",
-     "M95 (00:30) - sleep for 30 minutes, then warm up",
-     "M95 (00:30) - พักเครื่อง 30 นาทีแล้วอุ่นเครื่อง",
-     {"sleep mode", "โหมดพักเครื่อง"},
-     "sleep warm up idle พักเครื่อง อุ่นเครื่อง"},
-    {'M',
-     97,
-     G::MSubprogram,
-     P::AfterMotion,
-     kH,
-     kNoFlags,
-     A::LocalCall,
-     "Local subprogram call",
-     "เรียกโปรแกรมย่อยภายใน",
-     "M97 P1000 - run the blocks from N1000 of this program up to M99",
-     "M97 P1000 - เรียกใช้บล็อกตั้งแต่ N1000 ของโปรแกรมนี้จนถึง M99",
-     {"run the blocks from N(P) as a subprogram and come back", "เรียกบล็อกตั้งแต่ N(P) เป็นโปรแกรมย่อยแล้วกลับมา"},
-     kCallWords},
-    {'M',
-     98,
-     G::MSubprogram,
-     P::AfterMotion,
-     kAll,
-     kNoFlags,
-     A::SubprogramCall,
-     "Subprogram call",
-     "เรียกโปรแกรมย่อย",
-     "M98 P1234 - run subprogram O1234",
-     "M98 P1234 - เรียกใช้โปรแกรมย่อย O1234",
-     {"run subprogram O(P) and come back", "เรียกโปรแกรมย่อย O(P) แล้วกลับมา"},
-     kCallWords},
-    {'M',
-     99,
-     G::MSubprogram,
-     P::AfterMotion,
-     kAll,
-     kNoFlags,
-     A::SubprogramReturn,
-     "End of subprogram",
-     "จบโปรแกรมย่อย",
-     "M99 - return to the calling program",
-     "M99 - กลับไปยังโปรแกรมที่เรียก",
-     {"return to the calling program", "กลับไปยังโปรแกรมที่เรียก"},
-     kCallWords},
 };
 // clang-format on
 
-constexpr std::span<const CodeInfo> kTable = kRows;
-
-// Every row says what it does and has the words students look for it by, and its
-// one-line examples open with its own code ("G04 U0.5 - ..."), in both languages:
-// a row without them does not compile.
-constexpr bool complete(const CodeInfo& row) {
-  if (row.nameEn.empty() || row.nameTh.empty() || row.says.en.empty() || row.says.th.empty() || row.keywords.empty())
-    return false;
-  if (row.number < 0 || row.number > 99) return false;
-  const char code[] = {row.letter, static_cast<char>('0' + row.number / 10), static_cast<char>('0' + row.number % 10)};
-  const std::string_view own(code, sizeof code);
-  return row.exampleEn.starts_with(own) && row.exampleTh.starts_with(own);
-}
-constexpr bool allComplete(std::span<const CodeInfo> rows) {
-  for (const CodeInfo& row : rows)
-    if (!complete(row)) return false;
-  return true;
-}
-static_assert(allComplete(kRows), "a code table row lacks a name, phrase, keywords or example");
+static_assert(allComplete(kGRows), "a G code row lacks a name, phrase, keywords or example");
 
 // G-code systems B and C (docs/dialects.md, "G-code systems"): the same
 // functions under other numbers. FANUC Series 0i-TF Operator's Manual
@@ -1148,8 +604,20 @@ constexpr CodeInfo kSystemOnly[] = {
 // clang-format on
 static_assert(allComplete(kSystemOnly), "a system B/C row lacks a name, phrase, keywords or example");
 
+// The G-code rows, then the M-code rows (code_table_m.cpp), in one list that never changes: the
+// code index keeps pointers into it. Built on first use, as a machine registered at start-up may ask.
+std::span<const CodeInfo> allRows() {
+  static const std::vector<CodeInfo> rows = [] {
+    std::vector<CodeInfo> all(std::begin(kGRows), std::end(kGRows));
+    const std::span<const CodeInfo> m = detail::mCodeRows();
+    all.insert(all.end(), m.begin(), m.end());
+    return all;
+  }();
+  return rows;
+}
+
 const CodeInfo* baseRow(char letter, int number, Dialect family) {
-  for (const CodeInfo& row : kTable)
+  for (const CodeInfo& row : allRows())
     if (row.letter == letter && row.number == number && (row.dialects & dialectBit(family))) return &row;
   return nullptr;
 }
@@ -1172,7 +640,7 @@ int numberInSystemOf(int numberInA, GcodeSystem system) {
 void buildCodeIndex(const MachineProfile& profile, CodeIndex& out) {
   out = CodeIndex{};
   const std::uint8_t bit = dialectBit(profile.family);
-  for (const CodeInfo& row : kTable) {
+  for (const CodeInfo& row : allRows()) {
     if (!(row.dialects & bit)) continue;
     if (row.letter == 'M' && !profile.mCodes.empty() &&
         std::find(profile.mCodes.begin(), profile.mCodes.end(), row.number) == profile.mCodes.end())
@@ -1226,7 +694,7 @@ void buildCodeIndex(const MachineProfile& profile, CodeIndex& out) {
 
 }  // namespace detail
 
-std::span<const CodeInfo> codeTable() { return kTable; }
+std::span<const CodeInfo> codeTable() { return allRows(); }
 std::span<const SystemRename> gcodeSystemRenames() { return kRenames; }
 std::span<const CodeInfo> systemOnlyRows() { return kSystemOnly; }
 
