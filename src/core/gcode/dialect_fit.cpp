@@ -55,6 +55,19 @@ long errorCount(const std::vector<Diagnostic>& diags) {
   return std::count_if(diags.begin(), diags.end(), [](const Diagnostic& d) { return d.severity == Severity::Error; });
 }
 
+// The blocks written in another machine's form, alone (with the expressions they use): a machine
+// that does not read them as its own is ruled out by this small check, so a typed mistake every
+// machine refuses costs no full check of a long program on each (the editor checks on every edit).
+Program formBlocksOf(const Program& program, const std::set<int>& lines) {
+  Program sample;
+  sample.firstLine = program.firstLine;
+  sample.lineCount = program.lineCount;
+  sample.expressions = program.expressions;
+  for (const Block& b : program.blocks)
+    if (b.file == 0 && lines.count(b.line)) sample.blocks.push_back(b);
+  return sample;
+}
+
 }  // namespace
 
 std::optional<DialectFit> suggestDialect(const Program& program, const CheckOptions& options,
@@ -65,11 +78,14 @@ std::optional<DialectFit> suggestDialect(const Program& program, const CheckOpti
   for (const Diagnostic& d : diagnostics)
     if (isForm(d)) current.insert(d.range.line);
   const long errorsHere = errorCount(diagnostics);
+  const Program forms = formBlocksOf(program, current);
   for (const MachineProfile* machine : machineProfiles()) {
     const MachineProfile& profile = *machine;
     if (profile.dialect == options.dialect) continue;
     CheckOptions other = options;
     other.dialect = profile.dialect;
+    const std::vector<Diagnostic> formsThere = check(forms, other);
+    if (std::any_of(formsThere.begin(), formsThere.end(), isFormThere)) continue;
     const std::vector<Diagnostic> there = check(program, other);
     // There, every block reads as that machine's own, and the program has no more errors
     // than here (its own mistakes stay mistakes on any machine).
