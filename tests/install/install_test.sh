@@ -15,9 +15,10 @@ done
 # A user with nothing set up: no KLUENG_DATA_DIR, an empty home.
 run_as_new_user() {
   env -u KLUENG_DATA_DIR HOME="$work/home" XDG_DATA_HOME="$work/home/.local/share" \
-      XDG_CONFIG_HOME="$work/home/.config" "$@"
+      XDG_CONFIG_HOME="$work/home/.config" XDG_RUNTIME_DIR="$work/runtime" "$@"
 }
 mkdir -p "$work/home"
+mkdir -m 700 -p "$work/runtime"  # Qt's runtime folder here, not /tmp/runtime-$USER
 
 check_tree() {  # check_tree ROOT: the programs and data under ROOT/usr
   local root="$1" cli="$1/usr/bin/klueng-cli" data="$1/usr/share/klueng"
