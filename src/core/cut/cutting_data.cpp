@@ -5,16 +5,15 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <numbers>
-#include <sstream>
 #include <tuple>
 
 #include "klueng/core/diagnostic_codes.h"
+#include "io/text_util.h"
+#include "klueng/core/io/file_read.h"
 #include "klueng/core/io/tool_library.h"
 
 namespace klueng::core::cut {
@@ -22,19 +21,15 @@ namespace klueng::core::cut {
 namespace {
 
 constexpr double kFeetPerMetre = 1.0 / 0.3048;
-
-std::string_view cdTrim(std::string_view s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-  return s;
-}
+constexpr std::size_t kMaxMaterialsFileBytes = 1 << 20;  // a table of a few dozen rows
 
 std::vector<std::string_view> cdSplit(std::string_view s, char sep) {
   std::vector<std::string_view> out;
   std::size_t start = 0;
   for (;;) {
     const std::size_t at = s.find(sep, start);
-    out.push_back(cdTrim(s.substr(start, at == std::string_view::npos ? std::string_view::npos : at - start)));
+    out.push_back(
+        io::detail::trim(s.substr(start, at == std::string_view::npos ? std::string_view::npos : at - start)));
     if (at == std::string_view::npos) return out;
     start = at + 1;
   }
@@ -49,18 +44,18 @@ std::string cdKey(std::string_view s) {
   return out;
 }
 
+// A number of 0 or more, as the setup files write numbers.
 std::optional<double> cdNumber(std::string_view s) {
-  double v = 0.0;
-  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (ec != std::errc() || end != s.data() + s.size() || s.empty() || !std::isfinite(v) || v < 0.0) return std::nullopt;
+  const std::optional<double> v = io::detail::parseNumber(s);
+  if (!v || !std::isfinite(*v) || *v < 0.0) return std::nullopt;
   return v;
 }
 
 bool cdRange(std::string_view s, double& lo, double& hi) {
   const std::size_t dash = s.find('-');
   if (dash == std::string_view::npos) return false;
-  const auto a = cdNumber(cdTrim(s.substr(0, dash)));
-  const auto b = cdNumber(cdTrim(s.substr(dash + 1)));
+  const auto a = cdNumber(io::detail::trim(s.substr(0, dash)));
+  const auto b = cdNumber(io::detail::trim(s.substr(dash + 1)));
   if (!a || !b || *a > *b) return false;
   lo = *a;
   hi = *b;
@@ -126,14 +121,9 @@ io::ReadResult<MaterialTable> parseMaterials(std::string_view text, const std::s
   io::ReadResult<MaterialTable> result;
   MaterialTable table;
   int lineNo = 0;
-  std::size_t pos = 0;
-  while (pos <= text.size()) {
-    const std::size_t end = text.find('\n', pos);
-    std::string_view line = text.substr(pos, end == std::string_view::npos ? std::string_view::npos : end - pos);
-    pos = end == std::string_view::npos ? text.size() + 1 : end + 1;
+  for (const std::string_view line : io::detail::splitLines(text)) {
     ++lineNo;
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    const std::string_view content = cdTrim(line);
+    const std::string_view content = io::detail::trim(line);
     if (content.empty() || content.front() == '#') continue;
     const std::vector<std::string_view> f = cdSplit(content, '|');
     if (f.size() != 9) {
@@ -172,15 +162,14 @@ io::ReadResult<MaterialTable> parseMaterials(std::string_view text, const std::s
 }
 
 io::ReadResult<MaterialTable> readMaterials(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
+  // Read as every setup file is: a missing file, a folder, a FIFO or an endless device is said so.
+  io::ReadResult<std::string> bytes = io::readFileLimited(path, kMaxMaterialsFileBytes);
+  if (!bytes.value) {
     io::ReadResult<MaterialTable> r;
-    r.diagnostics.push_back(cdFileError(codes::kMaterialLineFields, 0, {path, "0"}));
+    r.diagnostics = std::move(bytes.diagnostics);
     return r;
   }
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseMaterials(text.str(), path);
+  return parseMaterials(*bytes.value, path);
 }
 
 std::string shippedMaterialsPath() {

@@ -286,6 +286,16 @@ TEST(CuttingDataTest, MaterialsFileErrors) {
   EXPECT_EQ(r.diagnostics[0].range.line, 2);
   EXPECT_EQ(r.diagnostics[1].code, codes::kMaterialLineFields);
   EXPECT_EQ(r.diagnostics[1].range.line, 3);
+  // CRLF lines read as LF lines; a missing file is said as a missing file, not as a line of 0 fields.
+  const auto crlf = parseMaterials("x | x | X | เอกซ์ | 10-20 | 40-50 | 1000 | 0.2 | book\r\n", "m.cfg");
+  ASSERT_TRUE(crlf.value.has_value());
+  EXPECT_TRUE(crlf.diagnostics.empty());
+  ASSERT_EQ(crlf.value->rows.size(), 1u);
+  EXPECT_EQ(crlf.value->rows[0].source, "book");
+  const auto missing = readMaterials("/nonexistent-klueng-folder/materials.cfg");
+  EXPECT_FALSE(missing.value.has_value());
+  ASSERT_EQ(missing.diagnostics.size(), 1u);
+  EXPECT_EQ(missing.diagnostics[0].code, codes::kNoSuchFile);
 }
 
 TEST(CuttingDataTest, RoughnessAndKienzleFormulas) {
