@@ -1016,6 +1016,25 @@ TEST(RealStyleControlReading, Haas_SemicolonCommentsAreComments) {
   EXPECT_NEAR(p.rightFace(), 0.0, kIn);
 }
 
+// O2417: the same groove twice, the second 20 mm further in through a local coordinate system
+// (G52 Z-20. ... G52 Z0), G61/G64 and G09 around the cuts and the 0i-TF's G23 G25 G69 in the safety
+// line: codes the control has that Klueng read as E114 before; none changes the path but G52.
+TEST(RealStyleControlReading, Fanuc_LocalCoordinatesForTheSecondGroove) {
+  const Job job{"fanuc-17-g52-second-step.nc", "fanuc", "--stock 56x80", false};
+  RUN_CLEAN(job, r);
+  EXPECT_EQ(r.check.text.find("warning"), std::string::npos) << r.check.text;
+  const Profile& p = r.part;
+  EXPECT_NEAR(p.d(-5.0), 46.0, kMm);  // X46. from Z0 to Z-50.
+  EXPECT_NEAR(p.d(-8.5), 40.0, kMm);  // the groove, left corner at Z-10., 3 mm wide
+  EXPECT_NEAR(p.d(-20.0), 46.0, kMm);
+  EXPECT_NEAR(p.d(-28.5), 40.0, kMm);  // the same groove from the local zero: Z-30. to Z-27.
+  EXPECT_NEAR(p.d(-40.0), 46.0, kMm);
+  EXPECT_NEAR(p.d(-60.0), 56.0, kMm);  // the bar behind Z-50.
+  EXPECT_NEAR(p.edge(-29.0, -31.0, 43.0), -30.0, kMm);
+  EXPECT_NEAR(p.edge(-26.0, -28.0, 43.0), -27.0, kMm);
+  EXPECT_NEAR(p.rightFace(), 0.0, kMm);
+}
+
 }  // namespace
 
 // Its scratch folders go with the process: nothing left in /tmp after a run.

@@ -28,6 +28,9 @@ constexpr MessageText kGcodeMessages[] = {
     {"E111", "{0} has too many decimals: at most {1} digits after the decimal point",
      "{0} มีทศนิยมมากเกินไป: ใช้ทศนิยมได้ไม่เกิน {1} ตำแหน่ง"},
     {"E112", "{0}: {1} must be positive ({2} to {3})", "{0}: ค่า {1} ต้องเป็นบวก ({2} ถึง {3})"},
+    {"E143",
+     "{0}: a spindle speed of zero: the spindle stands still until the next S (a cutting move then stops the run)",
+     "{0}: ความเร็วรอบเพลาเป็นศูนย์ เพลาจะหยุดนิ่งจนกว่าจะสั่ง S ใหม่ (การตัดเฉือนระหว่างนั้นจะทำให้การจำลองหยุด)"},
     {"E113", "{0}: a G or M code is a whole number, write it without a decimal point (e.g. G01)",
      "{0}: รหัส G หรือ M ต้องเป็นจำนวนเต็ม เขียนโดยไม่มีจุดทศนิยม (เช่น G01)"},
     {"E114", "{0} is not a G code of this lathe: see Help > Contents for the list of G codes",
@@ -261,6 +264,11 @@ constexpr MessageText kGcodeMessages[] = {
      "stops; a stop on a line of its own is easier to read",
      "{0} อยู่ในบล็อกเดียวกับคำสั่งอื่น: เครื่องนี้ทำการเคลื่อนที่และคำสั่งอื่นในบล็อกก่อนแล้วจึงหยุด "
      "การเขียนคำสั่งหยุดไว้บรรทัดของตัวเองอ่านง่ายกว่า"},
+    {"W119",
+     "{0} is a code of this control that Klueng does not simulate: the check reads on, but a run stops at this "
+     "block (A117); Help > Contents says what the code does",
+     "{0} เป็นรหัสของเครื่องนี้ที่ Klueng ไม่จำลอง: การตรวจทำต่อไปได้ แต่การจำลองจะหยุดที่บล็อกนี้ (A117) "
+     "ดูความหมายของรหัสได้ที่ วิธีใช้ > สารบัญ"},
     {"W117",
      "{0}: program number 0, as a CAM post leaves it; the program runs, but the control stores programs from O1 "
      "up: give it its own number before you send it to the machine's memory",
@@ -288,6 +296,10 @@ constexpr MessageText kGcodeMessages[] = {
      "angle_without_comma = 1 in the machine file",
      "{0} เป็นมุมที่ไม่มีเครื่องหมายจุลภาค แบบที่ Fanuc 0-T อ่าน (พารามิเตอร์ 3405#4): ให้เขียน {1} หรือตั้งค่า "
      "angle_without_comma = 1 ในไฟล์เครื่อง"},
+    {"I163",
+     "lines {0}-{1} stand after the closing '%': a control stops reading the file there (the tape's end), so they "
+     "are not checked or run",
+     "บรรทัดที่ {0}-{1} อยู่หลังเครื่องหมาย '%' ปิดท้าย: เครื่องหยุดอ่านไฟล์ที่นั่น (จบเทป) จึงไม่ตรวจและไม่ทำงาน"},
     {"I105",
      "lines 1-{0} stand before the first '%': a control reading the file skips this leader (a title, a label), so it "
      "is not checked or run",

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <charconv>
 #include <cstdint>
 #include <string>
 
@@ -72,6 +73,17 @@ int toolStation(const Word& w, const MachineProfile& profile, int turretStations
 }
 
 // G65 / G66: the block's letters are the macro's arguments (G67 takes none).
+// An error of the classic rules that no manual of this control makes a stop: a warning here
+// (machine file key error_codes_as_warnings, docs/dialects.md §10).
+bool isErrorAsWarning(const MachineProfile& profile, const char* code) {
+  if (profile.errorsAsWarnings.empty() || code[0] != 'E') return false;
+  int number = 0;
+  const char* end = code + std::char_traits<char>::length(code);
+  if (std::from_chars(code + 1, end, number).ptr != end) return false;
+  return std::find(profile.errorsAsWarnings.begin(), profile.errorsAsWarnings.end(), number) !=
+         profile.errorsAsWarnings.end();
+}
+
 bool isMacroCallBlock(const Block& block, Dialect dialect) {
   const CodeInfo* row = nullptr;
   return macroCallWord(block, dialect, &row) && row->action != CodeAction::MacroModalCancel;
@@ -95,7 +107,7 @@ bool isRuleFourGroup(ModalGroup g) {
 }
 
 constexpr int kGroupCount = static_cast<int>(ModalGroup::MOther) + 1;
-static_assert(kGroupCount <= 32, "group masks are 32-bit");
+static_assert(kGroupCount <= 64, "group masks are 64-bit");
 
 class Checker {
  public:
@@ -144,7 +156,8 @@ class Checker {
   // the mask bit is set: no per-block clearing of the arrays (this runs for
   // every block of a 100,000-block program).
   struct BlockCodes {
-    std::uint32_t letterMask = 0, groupMask = 0, mGroupMask = 0;
+    std::uint32_t letterMask = 0;
+    std::uint64_t groupMask = 0, mGroupMask = 0;
     std::array<const Word*, 26> firstOfLetter;
     std::array<const Word*, kGroupCount> firstOfGroup;
     std::array<const Word*, kGroupCount> firstMOfGroup;
@@ -183,7 +196,7 @@ class Checker {
   // The row of a G or M code number in this machine's code index (as findCode, without
   // asking the registry for every word of a 100,000-block program).
   const CodeInfo* row(char letter, long long n) const {
-    return n >= 0 && n <= 99 ? codes_.rows[letter == 'G' ? 0 : 1][static_cast<std::size_t>(n)] : nullptr;
+    return n >= 0 && n < kCodeNumbers ? codes_.rows[letter == 'G' ? 0 : 1][static_cast<std::size_t>(n)] : nullptr;
   }
 
   // G65 / G66 (as gcode::macroCallWord; G67 takes no arguments).
@@ -314,11 +327,18 @@ class Checker {
   // A G or M word: known to the dialect, and one per modal group (rules 4 and 5).
   void readCode(const Word& w, BlockCodes& seen) {
     if (w.hasDecimalPoint) {
+      // G12.1, G05.1 ...: a code of the control with a point in its number (its own table).
+      if (const DecimalCode* d = w.letter == 'G' ? findDecimalCode(w.value, profile_.dialect) : nullptr) {
+        if (d->changesPath) emit(codes::kCodeNotSimulated, w, {wordText(w)}, Severity::Warning);
+        return;
+      }
       emit(codes::kCodeNotInteger, w, {wordText(w)});
       return;
     }
     const long long n = wholeNumber(w);
     const CodeInfo* found = row(w.letter, n);
+    if (found && found->action == CodeAction::NotSimulated)
+      emit(codes::kCodeNotSimulated, w, {wordText(w)}, Severity::Warning);
     if (!found) {
       if (w.letter == 'G')
         emit(codes::kUnknownGCode, w, {wordText(w)});
@@ -337,7 +357,7 @@ class Checker {
 
   void readGCode(const Word& w, const CodeInfo& row, BlockCodes& seen) {
     const auto group = static_cast<std::size_t>(row.group);
-    const std::uint32_t groupBit = 1u << group;
+    const std::uint64_t groupBit = std::uint64_t{1} << group;
     if (seen.groupMask & groupBit) {
       // Fanuc: "only the last G code specified is valid" (docs/dialects.md §2); group 00 is no mode.
       const bool lastWins = profile_.sameGroupLastWins && row.group != ModalGroup::NonModal;
@@ -373,7 +393,7 @@ class Checker {
   void readMCode(const Word& w, const CodeInfo& row, BlockCodes& seen) {
     if (!isRuleFourGroup(row.group)) return;
     const auto group = static_cast<std::size_t>(row.group);
-    const std::uint32_t groupBit = 1u << group;
+    const std::uint64_t groupBit = std::uint64_t{1} << group;
     if (seen.mGroupMask & groupBit) {
       emit(codes::kConflictingMCodes, w, {wordText(*seen.firstMOfGroup[group]), wordText(w)});
     } else {
@@ -446,12 +466,13 @@ class Checker {
     }
     if (chamfer && corner)
       emit(codes::kChamferAndCorner, *later(chamfer, corner), {"," + wordText(*chamfer), "," + wordText(*corner)});
-    // The old forms "X30. K-2." / "Z-20. R3." (a 90-degree chamfer or round without the
-    // comma) are not simulated: say so rather than leave the corner sharp without a word.
+    // The forms "X30. K-2." / "Z-20. R3." (a 90-degree chamfer or round without the comma):
+    // read where the machine file says its control reads them, else said, not left sharp unsaid.
     if (!onLine) return;
     for (const char letter : {'I', 'K', 'R'})
       if (const Word* w = seen.has(letter);
-          w && !w->comma && w->expr < 0 && (letter == 'R' || !profile_.flow.chamferWithIOrK)) {
+          w && !w->comma && w->expr < 0 &&
+          !(letter == 'R' ? profile_.flow.cornerRWithoutComma : profile_.flow.chamferWithIOrK)) {
         std::string size(w->number.view());
         if (!size.empty() && (size[0] == '-' || size[0] == '+')) size.erase(0, 1);
         emit(codes::kCornerWordWithoutComma, *w, {wordText(*w), (letter == 'R' ? ",R" : ",C") + size},
@@ -514,6 +535,7 @@ class Checker {
       full_ = true;
       return;
     }
+    if (severity == Severity::Error && isErrorAsWarning(profile_, code)) severity = Severity::Warning;
     out_.push_back(Diagnostic{severity, code, range, std::move(args)});
   }
 
@@ -561,7 +583,9 @@ class Checker {
         // S (rpm, m/min or ft/min) keeps one range in both units.
         const bool unitless = w.letter == 'S';
         const double min = unitless ? profile_.minPositiveMm : minPositive();
-        if (!(w.value >= min))
+        if (unitless && w.value == 0.0)
+          emit(codes::kSpindleSpeedZero, w, {wordText(w)});
+        else if (!(w.value >= min))
           emit(codes::kNotPositive, w,
                {wordText(w), std::string(1, w.letter), limitText(min),
                 limitText(unitless ? profile_.maxAbsMm : maxAbs())});
@@ -719,6 +743,8 @@ void checkTextTails(const Program& program, const MachineProfile& profile, std::
 std::vector<Diagnostic> check(const Program& program, const CheckOptions& options) {
   std::vector<Diagnostic> out = program.lexicalDiagnostics;
   const MachineProfile& profile = machineProfile(options.dialect);
+  for (Diagnostic& d : out)
+    if (d.severity == Severity::Error && isErrorAsWarning(profile, d.code.c_str())) d.severity = Severity::Warning;
   if (!profile.commentToLineEnd || !profile.blanksInWords) {
     // The profile's strict reading of comments and blanks (the 1999 rules).
     for (Diagnostic& d : out)

@@ -11,7 +11,7 @@
 namespace klueng::core::gcode::detail {
 
 struct CodeIndex {
-  std::array<std::array<const CodeInfo*, 100>, 2> rows{};  // [G, M][number]
+  std::array<std::array<const CodeInfo*, kCodeNumbers>, 2> rows{};  // [G, M][number]
   std::deque<CodeInfo> renamed;   // rows of the system under their own numbers (stable addresses)
   std::deque<std::string> texts;  // their names and examples with the system's G numbers
 };

@@ -86,9 +86,14 @@ constexpr std::string_view kWorkOffsetWords = "work offset coordinate system zer
 constexpr bool complete(const CodeInfo& row) {
   if (row.nameEn.empty() || row.nameTh.empty() || row.says.en.empty() || row.says.th.empty() || row.keywords.empty())
     return false;
-  if (row.number < 0 || row.number > 99) return false;
-  const char code[] = {row.letter, static_cast<char>('0' + row.number / 10), static_cast<char>('0' + row.number % 10)};
-  const std::string_view own(code, sizeof code);
+  if (row.number < 0 || row.number >= kCodeNumbers) return false;
+  // The example starts with the code as written, two digits at least: G04, G103.
+  char code[4] = {row.letter, 0, 0, 0};
+  std::size_t size = 1;
+  if (row.number >= 100) code[size++] = static_cast<char>('0' + row.number / 100);
+  code[size++] = static_cast<char>('0' + row.number / 10 % 10);
+  code[size++] = static_cast<char>('0' + row.number % 10);
+  const std::string_view own(code, size);
   return row.exampleEn.starts_with(own) && row.exampleTh.starts_with(own);
 }
 constexpr bool allComplete(std::span<const CodeInfo> rows) {

@@ -21,6 +21,7 @@ inline constexpr const char* kTooManyDecimals = "E111";       // {0}=word {1}=ma
 inline constexpr const char* kNotPositive = "E112";           // {0}=word {1}=letter {2}=min {3}=max
 inline constexpr const char* kCodeNotInteger = "E113";        // {0}=word
 inline constexpr const char* kUnknownGCode = "E114";          // {0}=word
+inline constexpr const char* kSpindleSpeedZero = "E143";      // {0}=the S word (S0; SPEC 4: S from 0.001)
 inline constexpr const char* kUnknownMCode = "E115";          // {0}=word
 inline constexpr const char* kBadSequenceNumber = "E116";     // {0}=word {1}=letter {2}=max
 inline constexpr const char* kBadToolWord = "E117";           // {0}=word
@@ -124,12 +125,16 @@ inline constexpr const char* kClampOfAnotherSystem = "W115";    // {0}=the G wor
 inline constexpr const char* kSameGroupLastWins = "W116";       // {0}=first {1}=second (used) {2}=group
 inline constexpr const char* kProgramNumberZero = "W117";       // {0}=word
 inline constexpr const char* kStopCodeWithOtherWords = "W118";  // {0}=word (M00 M01 M02 M30)
-inline constexpr const char* kLoneCloseAfterComment = "W113";   // {0}=what follows a comment's first ')' (no letter)
-inline constexpr const char* kWordsAfterEndOfBlock = "W114";    // {0}=the words after ';'
+// A code of the control that Klueng does not simulate (G68 double turret, G12.1 polar interpolation):
+// the check reads on, a run stops there with A117 (was E113/E114, a false "not a code of this lathe").
+inline constexpr const char* kCodeNotSimulated = "W119";       // {0}=word
+inline constexpr const char* kLoneCloseAfterComment = "W113";  // {0}=what follows a comment's first ')' (no letter)
+inline constexpr const char* kWordsAfterEndOfBlock = "W114";   // {0}=the words after ';'
 
 // I1xx notes
 inline constexpr const char* kDialectFits = "I102";        // {0}=blocks {1}=dialect name {2}=dialect id
 inline constexpr const char* kAngleWithoutComma = "I106";  // {0}=the A word {1}=with its comma
+inline constexpr const char* kTrailerSkipped = "I163";     // {0}=first {1}=last line after the closing '%'
 inline constexpr const char* kLeaderSkipped = "I105";      // {0}=the last line of the leader before the first '%'
 
 // Every code above, for the catalog completeness test.
@@ -186,6 +191,7 @@ inline constexpr const char* kAll[] = {
     kNotPositive,
     kCodeNotInteger,
     kUnknownGCode,
+    kSpindleSpeedZero,
     kUnknownMCode,
     kBadSequenceNumber,
     kBadToolWord,
@@ -221,6 +227,7 @@ inline constexpr const char* kAll[] = {
     kBlanksInNumber,
     kDialectFits,
     kLeaderSkipped,
+    kTrailerSkipped,
     kAngleWithoutComma,
     kPointlessLengthInIncrements,
     kPointlessLengthWhole,

@@ -109,6 +109,7 @@ const Key kKeys[] = {
      KLUENG_SET(KLUENG_P.spindleAboveMaximumIsAlarm = v.number != 0.0)},
     {"spindle_reversal_is_alarm", Type::Flag, 0, 0, {}, KLUENG_SET(KLUENG_P.spindleReversalIsAlarm = v.number != 0.0)},
     {"m_codes", Type::Numbers, 0, 99, {}, KLUENG_SET(m.mCodes = v.numbers)},
+    {"error_codes_as_warnings", Type::Numbers, 101, 499, {}, KLUENG_SET(m.errorsAsWarnings = v.numbers)},
     // Cycle defaults.
     {"rough_depth_inch", Type::Real, 0, 100, {}, KLUENG_SET(KLUENG_P.cycles.roughDepthInch = v.number)},
     {"rough_depth_mm", Type::Real, 0, 100, {}, KLUENG_SET(KLUENG_P.cycles.roughDepthMm = v.number)},
@@ -158,6 +159,7 @@ const Key kKeys[] = {
      {},
      KLUENG_SET(KLUENG_P.flow.dwellBeforeCornerMove = v.number != 0.0)},
     {"chamfer_with_i_or_k", Type::Flag, 0, 0, {}, KLUENG_SET(KLUENG_P.flow.chamferWithIOrK = v.number != 0.0)},
+    {"corner_r_without_comma", Type::Flag, 0, 0, {}, KLUENG_SET(KLUENG_P.flow.cornerRWithoutComma = v.number != 0.0)},
 };
 #undef KLUENG_SET
 #undef KLUENG_P
@@ -168,7 +170,7 @@ bool optionalKey(std::string_view name) {
   return name == "m_codes" || name == "semicolon_ends_block" || name == "comment_ends_at_first_paren" ||
          name == "angle_without_comma" || name == "same_group_last_wins" || name == "spindle_above_maximum_is_alarm" ||
          name == "spindle_reversal_is_alarm" || name == "program_number_zero_is_error" ||
-         name == "stop_codes_alone_is_error";
+         name == "stop_codes_alone_is_error" || name == "error_codes_as_warnings" || name == "corner_r_without_comma";
 }
 
 std::string_view trim(std::string_view s) {
@@ -221,7 +223,8 @@ std::pair<std::string, std::string> expected(const Key& k) {
     }
     case Type::Text: return {"a text", "ข้อความ"};
     case Type::Numbers:
-      return {"whole numbers from 0 to 99 separated by blanks, or none", "จำนวนเต็ม 0 ถึง 99 คั่นด้วยช่องว่าง หรือ none"};
+      return {"whole numbers from " + num(k.min) + " to " + num(k.max) + " separated by blanks, or none",
+              "จำนวนเต็ม " + num(k.min) + " ถึง " + num(k.max) + " คั่นด้วยช่องว่าง หรือ none"};
     case Type::Letters: return {"capital letters A to Z, each once", "ตัวอักษรพิมพ์ใหญ่ A ถึง Z ตัวละครั้ง"};
   }
   return {};
@@ -341,6 +344,7 @@ MachineFileRead parseMachineFile(std::string_view text, const std::string& fileN
     m.letters = base->letters;
     m.oneShots.assign(base->oneShotsWithMotion.begin(), base->oneShotsWithMotion.end());
     m.mCodes.assign(base->mCodes.begin(), base->mCodes.end());
+    m.errorsAsWarnings.assign(base->errorsAsWarnings.begin(), base->errorsAsWarnings.end());
   }
   const bool hasBase = lineOfKey.count("base") != 0;
 

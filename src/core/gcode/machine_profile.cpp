@@ -46,6 +46,7 @@ void bind(Entry& e) {
   p.text = e.def.text;
   p.oneShotsWithMotion = e.def.oneShots;
   p.mCodes = e.def.mCodes;
+  p.errorsAsWarnings = e.def.errorsAsWarnings;
 }
 
 Dialect add(Registry& r, MachineDefinition def) {

@@ -191,11 +191,22 @@ class LineParser {
         ++i;
         ++col;
       } else if (c == '%' && !sawWordOrSkip && !tapeLine && block.comment.empty()) {
-        // Tape start/end mark: only blanks and comments may follow it.
+        // Tape start/end mark: only blanks and comments may follow it. A control skips what follows
+        // the first '%' up to the line end (B-63524EN §8), so text there (`%PART 7`) is one E108 for
+        // the whole rest, never read as words or as a line of text.
         tapeLine = true;
         sawWordOrSkip = true;
         ++i;
         ++col;
+        std::size_t rest = i;
+        while (rest < line.size() && isBlank(static_cast<unsigned char>(line[rest]))) ++rest;
+        if (rest < line.size() && line[rest] != '(' && line[rest] != ';') {
+          std::string_view tail = line.substr(rest);
+          while (!tail.empty() && isBlank(static_cast<unsigned char>(tail.back()))) tail.remove_suffix(1);
+          report(codes::kTextAfterTapeMark, col + static_cast<int>(rest - i), static_cast<int>(tail.size()),
+                 {std::string(tail.substr(0, std::min<std::size_t>(tail.size(), 40)))});
+          return;
+        }
       } else {
         // Unknown characters: one diagnostic for a run of them, so binary
         // junk gives few messages.
@@ -682,6 +693,32 @@ std::atomic<std::size_t> parses{0};
 
 std::size_t parseCount() { return parses.load(std::memory_order_relaxed); }
 
+namespace {
+// A line whose first character after blanks is '%'.
+bool startsWithTapeMark(std::string_view line) {
+  for (const char c : line) {
+    if (c == '%') return true;
+    if (!isBlank(static_cast<unsigned char>(c))) return false;
+  }
+  return false;
+}
+// Any character that is not a blank or a line end.
+bool holdsText(std::string_view text) {
+  return std::any_of(text.begin(), text.end(),
+                     [](char c) { return !isBlank(static_cast<unsigned char>(c)) && c != '\n' && c != '\r'; });
+}
+// A line in `text` that is a tape mark.
+bool holdsTapeMark(std::string_view text) {
+  std::size_t at = 0;
+  while (at < text.size()) {
+    const std::size_t lineEnd = std::min(text.find_first_of("\r\n", at), text.size());
+    if (startsWithTapeMark(text.substr(at, lineEnd - at))) return true;
+    at = lineEnd + 1;
+  }
+  return false;
+}
+}  // namespace
+
 // The start of the first line that is a tape mark ('%' after blanks), when lines stand
 // before it and the program goes on after it; nullptr otherwise (no leader).
 const char* firstTapeMark(const char* begin, const char* end) {
@@ -751,6 +788,7 @@ Program parseFragment(std::string_view text, int firstLine, int file) {
   if (leaderHasText)
     program.lexicalDiagnostics.push_back(
         Diagnostic{Severity::Note, codes::kLeaderSkipped, {firstLine, 1, 0, file}, {std::to_string(lineNumber - 1)}});
+  int tapeMarks = 0;  // '%' lines read so far
   while (pos < end) {
     // Line ends: LF, CRLF or CR. Lines are short: one pass over a line's bytes
     // finds its end (a memchr call or two per line cost more than the bytes).
@@ -764,10 +802,26 @@ Program parseFragment(std::string_view text, int firstLine, int file) {
       else if (next + 1 < end && next[0] == '\r' && next[1] == '\n')
         next += 2;
     }
-    parser.parseLine(std::string_view(pos, static_cast<std::size_t>(lineEnd - pos)), lineNumber);
+    const std::string_view line(pos, static_cast<std::size_t>(lineEnd - pos));
+    parser.parseLine(line, lineNumber);
     ++program.lineCount;
     ++lineNumber;
     pos = next;
+    // The closing '%' ends the tape: a control stops reading there, so what follows it (a note,
+    // a DOS end-of-file byte) is counted, not read. Another '%' after it: more tapes, read on.
+    if (startsWithTapeMark(line) && ++tapeMarks >= 2 && pos < end) {
+      const std::string_view rest(pos, static_cast<std::size_t>(end - pos));
+      if (holdsText(rest) && !holdsTapeMark(rest)) {
+        const int lines = static_cast<int>(std::count(rest.begin(), rest.end(), '\n')) + (rest.back() != '\n' ? 1 : 0);
+        program.lineCount += lines;
+        program.lexicalDiagnostics.push_back(
+            Diagnostic{Severity::Note,
+                       codes::kTrailerSkipped,
+                       {lineNumber, 1, 0, file},
+                       {std::to_string(lineNumber), std::to_string(lineNumber + lines - 1)}});
+        break;
+      }
+    }
   }
   return program;
 }

@@ -128,7 +128,13 @@ bool Interpreter::executeBlock() {
     if (w.letter >= 'A' && w.letter <= 'Z' && !byLetter_[static_cast<std::size_t>(w.letter - 'A')])
       byLetter_[static_cast<std::size_t>(w.letter - 'A')] = &w;
     if (w.letter != 'G' && w.letter != 'M') continue;
+    if (w.letter == 'G' && w.hasDecimalPoint) {  // G12.1, G05.1 (the checker let only the control's own pass)
+      const gcode::DecimalCode* d = gcode::findDecimalCode(w.value, options_.dialect);
+      if (!d || d->changesPath) return raise(codes::kNotSupportedYet, &w, {wordText(w)});
+      continue;  // G05.1, G13.1 ...: how the control moves along the path, not the path
+    }
     const CodeInfo* info = gcode::findCode(w.letter, w.code(), options_.dialect);
+    if (info && info->action == CodeAction::NotSimulated) return raise(codes::kNotSupportedYet, &w, {wordText(w)});
     if (w.letter == 'G') {
       if (!info) return raise(codes::kNotSupportedYet, &w, {wordText(w)});
       if (gCount < gs.size()) gs[gCount++] = {&w, info};
@@ -198,7 +204,8 @@ bool Interpreter::executeBlock() {
         else
           cycleG = &c;  // G70-G76, G81-G83
         break;
-      default: break;  // G18 plane, G20/G21 done above
+      case ModalGroup::Plane: zxPlane_ = a == CodeAction::ZxPlane; break;
+      default: break;  // G20/G21 done above; G61, G22, G187 ...: nothing on the path
     }
   }
   if (const Word* f = find('F')) {
@@ -222,6 +229,11 @@ bool Interpreter::executeBlock() {
 
   // 3. The motion or one-shot G of the block.
   if (motionG) modal_.motion = motionFor(motionG->info->action);
+  if (!zxPlane_ && (modal_.motion == MotionMode::ArcCw || modal_.motion == MotionMode::ArcCcw) && hasAxisWords() &&
+      !oneShotG && !cycleG) {
+    const Word* arc = motionWord(motionG ? motionG->word : nullptr);
+    return raise(codes::kNotSupportedYet, arc, {(arc ? wordText(*arc) : std::string("G02/G03")) + " (G17/G19)"});
+  }
   if (!cAxisWords()) return false;
   if (!effects_->blockAllowed(motionG, cycleG, oneShotG, singleCycleG)) return false;
   if (cycleG) {
@@ -462,7 +474,7 @@ bool Interpreter::move(const Word* g) {
       if (!feedReady(where, "G01")) return false;
       if (!angleTarget(target)) return false;
       const Segment path = Segment::line(pos_, target);
-      if (chamferWord() || commaWord('R')) return holdCorner(path, where);
+      if (chamferWord() || cornerWord()) return holdCorner(path, where);
       return feedMoveAfterCorner(MoveKind::Line, path, where);
     }
     case MotionMode::ArcCw:

@@ -19,7 +19,7 @@ bool Interpreter::cornerCut(const CornerStage::Cut& cut) {
 
 bool Interpreter::holdCorner(const Segment& path, const Word* where) {
   const Word* c = chamferWord();
-  const Word* w = c ? c : commaWord('R');
+  const Word* w = c ? c : cornerWord();
   CornerRequest request;
   request.kind = c ? 'C' : 'R';
   request.size = std::abs(w->value) * unit();

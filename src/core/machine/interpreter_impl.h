@@ -67,7 +67,8 @@ class Interpreter final : public gcode::MacroVariables, private BlockEffects {
   // ---- helpers -------------------------------------------------------------
 
   double unit() const { return modal_.units == Units::Inch ? kMmPerInch : 1.0; }
-  Vec2 offsetVector() const { return Vec2(mach_.offsetZ, mach_.offsetX / 2.0); }
+  // What an absolute X/Z word is measured from: the tool's offset, and a G52 local zero.
+  Vec2 offsetVector() const { return Vec2(mach_.offsetZ, mach_.offsetX / 2.0) + localShift_; }
 
   double rpmCap() const {
     const double max = setup_.machine.maxSpindleRpm;
@@ -228,6 +229,11 @@ class Interpreter final : public gcode::MacroVariables, private BlockEffects {
     const Word* i = block_->find('I');
     return i ? i : block_->find('K');
   }
+  // ,R, or an R where the profile reads it as ,R (Fanuc T "Chamfering and corner R").
+  const Word* cornerWord() const {
+    if (const Word* r = commaWord('R')) return r;
+    return profile_.flow.cornerRWithoutComma ? block_->find('R') : nullptr;
+  }
   bool holdCorner(const Segment& path, const Word* where);
   bool feedMoveAfterCorner(MoveKind kind, const Segment& path, const Word* where);
   bool cornerCut(const CornerStage::Cut& cut);
@@ -239,6 +245,7 @@ class Interpreter final : public gcode::MacroVariables, private BlockEffects {
   bool dwell(const Word* w);
   bool referenceReturn(const Word* w);
   bool dataSetting(const Word* w);
+  bool localCoordinates(const Word* w);
 
   // ---- interpreter_cycles.cpp ---------------------------------------------------
   bool compensationAllowed(const Word* g);
@@ -267,6 +274,8 @@ class Interpreter final : public gcode::MacroVariables, private BlockEffects {
   io::OffsetTable offsets_;            // the setup's offsets; macro B may write them (#2001 ...)
   Vec2 pos_ = Vec2::Zero();            // controlled point without compensation, work coordinates
   std::optional<double> g28X_, g28Z_;  // G28/G30 intermediate point (work coordinates)
+  Vec2 localShift_{0.0, 0.0};          // G52 local zero (Z, X radius) in the work coordinates
+  bool zxPlane_ = true;                // G18 (a lathe's plane); G17/G19 arcs are not simulated
   const gcode::Block* block_ = nullptr;
   gcode::Block incrementalBlock_;  // a block read under G91 (systems B, C): X Z as U W
   bool distanceModes_ = false;     // the machine's G-code system has G90/G91 absolute/incremental

@@ -90,11 +90,24 @@ bool Interpreter::dataSetting(const Word* w) {
   return true;
 }
 
+// G52 X_ Z_: a local coordinate system whose zero lies at X Z of the work coordinates (Fanuc T
+// series, "Local coordinate system"; Haas the same); G52 X0 Z0 cancels it, an axis not given keeps
+// its shift. Absolute words are read from the local zero (offsetVector); the tool does not move and
+// the path stays in the work coordinates the stock is placed in.
+bool Interpreter::localCoordinates(const Word* w) {
+  (void)w;
+  const double u = unit();
+  if (const Word* x = find('X')) localShift_.y() = x->value * u / 2.0;
+  if (const Word* z = find('Z')) localShift_.x() = z->value * u;
+  return true;
+}
+
 bool Interpreter::oneShot(const CodeWord& c) {
   const Word* w = c.word;
   switch (c.info->action) {
     case CodeAction::Dwell: return dwell(w);
     case CodeAction::DataSetting: return dataSetting(w);
+    case CodeAction::LocalCoordinates: return localCoordinates(w);
     case CodeAction::ReferenceCheck: {
       if (!hasAxisWords()) return true;
       if (!rapidTo(axisTarget(), w)) return false;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <sstream>
 #include <string>
 
@@ -137,8 +138,14 @@ TEST_P(Fails, ReportsCodeLineAndColumn) {
     const auto hit = std::find_if(diags.begin(), diags.end(), [&](const Diagnostic& d) { return d.code == c.code; });
     ASSERT_NE(hit, diags.end()) << c << " (" << dialectName(dialect) << ")\n" << listing(diags);
     EXPECT_EQ(hit->range, (SourceRange{c.line, c.column, c.length})) << c << "\n" << listing(diags);
-    EXPECT_EQ(hit->severity, c.code[0] == 'W' ? Severity::Warning : Severity::Error);
-    EXPECT_EQ(hasErrors(diags), c.code[0] != 'W');
+    // An E code no manual of the machine's control makes a stop is a warning there (docs/dialects.md §10).
+    const auto& demoted = machineProfile(dialect).errorsAsWarnings;
+    const bool warning =
+        c.code[0] == 'W' || std::find(demoted.begin(), demoted.end(), std::atoi(c.code + 1)) != demoted.end();
+    EXPECT_EQ(hit->severity, warning ? Severity::Warning : Severity::Error) << c << " (" << dialectName(dialect) << ")";
+    if (c.code[0] == 'W' || !warning) {  // (a demoted case may hold another error, as E310 beside E302)
+      EXPECT_EQ(hasErrors(diags), !warning) << c << " (" << dialectName(dialect) << ")\n" << listing(diags);
+    }
     expectMessagesComplete(diags);
     EXPECT_TRUE(std::is_sorted(diags.begin(), diags.end(), [](const Diagnostic& a, const Diagnostic& b) {
       return a.range.line != b.range.line ? a.range.line < b.range.line : a.range.column < b.range.column;

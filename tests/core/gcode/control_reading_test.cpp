@@ -197,5 +197,70 @@ TEST(CycleRules, RoughingAtFeedZeroStopsTheControl) {
   EXPECT_THAT(errorsOn(own), IsEmpty());
 }
 
+// Codes the control has that change nothing Klueng draws (stroke check, spindle speed detection,
+// exact stop, double-turret mirror off, AI contour control): read, no diagnostic. A Fanuc 0i-TF
+// job shop's safety line and a Haas NGC post's preamble, as they write them.
+TEST(ControlCodes, MachineFunctionsOfTheSafetyLineAreReadAndChangeNothing) {
+  const std::string fanuc =
+      "%\nO3105(SPACER)\nG40G97G99G23G25G69\nG05.1Q0\nT0101\nG13.1\nG61\nG96S180M03\nG50S2500\nG00X52.Z2.\n"
+      "G09G01X50.F.15\nG64\nG22\nM30\n%\n";
+  EXPECT_THAT(placesOf(readOn(fanuc)), IsEmpty());
+  const std::string haas =
+      "%\nO01234 (BUSHING)\nG103 P1\nG187 P1\nG15 G113\nG154 P1\nG20 G40 G99\nT101\nG50 S2000\nG96 S600 M03\n"
+      "G00 X1.2 Z0.1\nG61\nG09 G01 X1.1 F0.006\nG64\nM30\n%\n";
+  EXPECT_THAT(placesOf(readOn(haas, Dialect::Haas)), IsEmpty());
+}
+
+// A code of the control that Klueng does not simulate is no "not a G code of this lathe" (E113,
+// E114): a warning at the check, and the run stops at it (A117, Klueng's own limit).
+TEST(ControlCodes, CodesKluengDoesNotSimulateAreAWarningNotAnError) {
+  const std::string polar = "G21 G99\nT0101\nG00 X40. Z2.\nG12.1\nG01 X20. C10. F0.1\nG13.1\nM30\n";
+  EXPECT_THAT(placesOf(readOn(polar)), ElementsAre("W119 4:1"));
+  EXPECT_THAT(placesOf(readOn("G21\nG68\nG00 X40.\nG69\nM30\n")), ElementsAre("W119 2:1"));
+  EXPECT_THAT(placesOf(readOn("G20\nG112\nG113\nM30\n", Dialect::Haas)), ElementsAre("W119 2:1"));
+  // A point in a number that is no code of this control stays E113; a number none has, E114.
+  EXPECT_THAT(errorsOn("G21\nG12.5\nM30\n"), ElementsAre("E113 2:1"));
+  EXPECT_THAT(errorsOn("G21\nG12.1\nM30\n", Dialect::Haas), ElementsAre("E113 2:1"));
+  EXPECT_THAT(errorsOn("G21\nG48\nM30\n"), ElementsAre("E114 2:1"));
+  EXPECT_THAT(errorsOn("G21\nG103 P1\nM30\n"), ElementsAre("E114 2:1"));  // Haas's, not the 0i-TF's
+}
+
+// The §10 audit: errors of the classic rules that no Fanuc or Haas manual or alarm list makes a stop
+// are warnings there (machine key error_codes_as_warnings), and stay errors in the classic rules.
+TEST(Audit, ErrorsNoManualMakesAStopAreWarningsOnFanucAndHaas) {
+  struct Case {
+    const char* text;
+    const char* place;  // code line:column
+    bool haasKeepsIt;
+  };
+  const Case cases[] = {
+      {"G21 G99\nG00 X40. Z2.\nG01 X30. /Z-5. F0.2\n", "E106 3:10", false},
+      {"%PART 7\nG21\nG00 X40.\n", "E108 1:2", false},
+      {"G21\nM03 S0\nG00 X40.\n", "E143 2:5", false},
+      {"G21 G99\nG00 X40. Z2.\nG50 G00 X40. Z2.\n", "E206 3:5", false},
+      {"G21\nG00 N20 X40.\n", "E209 2:5", false},
+      {"G21 G99\nG00 X40. Z2.\nG01 X30. U-2. F0.2\n", "E210 3:10", false},
+      {"G21 G99\nG00 X40. Z2.\nG02 R5. F0.2\n", "E301 3:1", false},
+      {"G21 G99\nG00 X40. Z2.\nG02 X30. Z-3. R5. K-5. F0.2\n", "E302 3:15", false},
+      {"G21 G99\nG00 X40. Z2.\nG04\n", "E211 3:1", true},
+      {"G21 G99\nG00 X40. X42. Z2.\n", "E202 2:10", true},
+  };
+  for (const Case& c : cases) {
+    const std::vector<Diagnostic> classic = readOn(c.text, Dialect::Classic);
+    EXPECT_THAT(placesOf(classic), ::testing::Contains(c.place)) << c.text;
+    for (const Dialect d : {Dialect::Fanuc, Dialect::Haas}) {
+      const std::vector<Diagnostic> read = readOn(c.text, d);
+      bool found = false;
+      for (const Diagnostic& diag : read) {
+        if (placesOf({diag}).front() != c.place) continue;
+        found = true;
+        const bool error = d == Dialect::Haas && c.haasKeepsIt;
+        EXPECT_EQ(diag.severity, error ? Severity::Error : Severity::Warning) << c.text << " " << c.place;
+      }
+      EXPECT_TRUE(found) << c.text << " " << c.place << " on " << static_cast<int>(d);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace klueng::core::gcode

@@ -186,32 +186,28 @@ TEST(Dialects, RoundingWarningNamesTheRoundedValue) {
   EXPECT_FALSE(hasErrors(diags));
 }
 
-// "X30. K-2." and "Z-20. R3." (the old 90-degree chamfer and round without the
-// comma) are not simulated on a Fanuc: a warning at the word says how to write
-// them, instead of a corner silently left sharp. Haas reads I or K as ,C (its
-// manual: "for chamfering a 90 degree angle only"), but not R. Arcs and cycles
-// keep their I/K/R, and ",R" is no warning.
+// "X30. K-2." and "Z-20. R3." (the 90-degree chamfer and round without the comma): a Fanuc T
+// series reads them (B-63944EN-1/02 §4.5, parameter 3405#4 CCR = 0), Haas reads I or K as ,C (its
+// manual: "for chamfering a 90 degree angle only") but not R: a warning at the word says how to
+// write it, instead of a corner silently left sharp. Arcs and cycles keep their I/K/R, and ",R" is
+// no warning.
 TEST(Dialects, CornerWordsWithoutTheCommaAreNamed) {
   const std::string text =
       "G99 G01 X30. K-2. F0.2\nZ-20. R3.\nX40. ,R2.\nZ-30.\nG02 X44. Z-32. R2.\nG01 X50.\nG90 X46. Z-40. R-1. F0.2\n";
   CheckOptions fanuc;
-  const auto diags = check(parse(text), fanuc);
-  ASSERT_EQ(diags.size(), 2u);
-  EXPECT_EQ(diags[0].code, "W107");
-  EXPECT_EQ(diags[0].severity, Severity::Warning);
-  EXPECT_EQ(diags[0].range, (SourceRange{1, 14, 4}));
-  EXPECT_EQ(
-      formatMessage(diags[0], Lang::En),
-      "K-2. on a G01 is not read: a chamfer or corner round is written with a comma (,C2.), so the corner stays sharp");
-  EXPECT_EQ(diags[1].range, (SourceRange{2, 7, 3}));
-  EXPECT_EQ(formatMessage(diags[1], Lang::Th),
-            "R3. ในบล็อก G01 ไม่ถูกอ่าน การลบมุมหรือการมนมุมต้องเขียนโดยมีจุลภาคนำหน้า (,R3.) มุมจึงยังคงเป็นมุมแหลม");
+  EXPECT_TRUE(check(parse(text), fanuc).empty());
   CheckOptions haas;
   haas.dialect = gcode::Dialect::Haas;
   const auto h = check(parse(text), haas);
   ASSERT_EQ(h.size(), 1u);
   EXPECT_EQ(h[0].code, "W107");
+  EXPECT_EQ(h[0].severity, Severity::Warning);
   EXPECT_EQ(h[0].range, (SourceRange{2, 7, 3}));
+  EXPECT_EQ(formatMessage(h[0], Lang::En),
+            "R3. on a G01 is not read: a chamfer or corner round is written with a comma (,R3.), so the corner stays "
+            "sharp");
+  EXPECT_EQ(formatMessage(h[0], Lang::Th),
+            "R3. ในบล็อก G01 ไม่ถูกอ่าน การลบมุมหรือการมนมุมต้องเขียนโดยมีจุลภาคนำหน้า (,R3.) มุมจึงยังคงเป็นมุมแหลม");
 }
 
 TEST(Dialects, ToolRangeComesFromTheTurret) {

@@ -168,6 +168,34 @@ TEST(Parser, WordsAfterATapeMarkAreReported) {
   EXPECT_EQ(p.lexicalDiagnostics[0].range, (SourceRange{1, 3, 3}));
 }
 
+// A control skips what follows the first '%' to the line end (B-63524EN §8): a title there is one
+// E108 (a warning on Fanuc and Haas), never read as a line of text (E138) or as words.
+TEST(Parser, TextAfterATapeMarkIsOneDiagnosticForTheWholeRest) {
+  const Program p = parse("%PART 7 OD  \nG21\n");
+  ASSERT_EQ(p.blocks.size(), 1u);
+  ASSERT_EQ(p.lexicalDiagnostics.size(), 1u);
+  EXPECT_EQ(p.lexicalDiagnostics[0].code, "E108");
+  EXPECT_EQ(p.lexicalDiagnostics[0].range, (SourceRange{1, 2, 9}));
+  ASSERT_FALSE(p.lexicalDiagnostics[0].args.empty());
+  EXPECT_EQ(p.lexicalDiagnostics[0].args[0], "PART 7 OD");
+  EXPECT_TRUE(parse("% (TAPE START)\n").lexicalDiagnostics.empty());
+}
+
+// The closing '%' ends the tape: what follows (a note, a DOS end-of-file byte) is counted, not read.
+TEST(Parser, LinesAfterTheClosingTapeMarkAreNotRead) {
+  const Program p = parse("%\nO1000\nG00 X10.\nM30\n%\nEND OF TAPE  made by DNC\n\x1a");
+  ASSERT_EQ(p.blocks.size(), 3u);
+  ASSERT_EQ(p.lexicalDiagnostics.size(), 1u);
+  EXPECT_EQ(p.lexicalDiagnostics[0].code, "I163");
+  EXPECT_EQ(p.lexicalDiagnostics[0].range.line, 6);
+  EXPECT_EQ(p.lexicalDiagnostics[0].args, (std::vector<std::string>{"6", "7"}));
+  EXPECT_EQ(p.lineCount, 7);
+  // Another tape after it is read: several programs, each between its own '%' lines.
+  const Program two = parse("%\nO1\nG00 X1.\n%\n%\nO2\nG00 X2.\n%\n");
+  EXPECT_EQ(two.blocks.size(), 4u);
+  EXPECT_TRUE(two.lexicalDiagnostics.empty());
+}
+
 TEST(Parser, PercentInsideABlockIsAnError) {
   const Program p = parse("G00 % X1.");
   ASSERT_EQ(p.lexicalDiagnostics.size(), 1u);

@@ -121,11 +121,18 @@ TEST(Corner, HaasReadsIOrKAsTheChamferOfA90DegreeCorner) {
   const auto d = cuts(along);
   EXPECT_POINT(d[0]->path.end, 30.0, 2.0);
   EXPECT_POINT(d[1]->path.end, 26.0, 0.0);
-  // Fanuc reads neither: the face runs to the corner, sharp (the checker's W107 says so).
+  // A Fanuc T series reads it too (B-63944EN-1/02 §4.5, CCR = 0); the classic rules do not: the face
+  // runs to the corner, sharp (the checker's W107 says so).
   const Timeline fanuc = runText("G98 G00 X20. Z0.\nG01 X30. K-2. F100.\nZ-20.\n");
   const auto f = cuts(fanuc);
-  ASSERT_EQ(f.size(), 2u);
-  EXPECT_POINT(f[0]->path.end, 30.0, 0.0);
+  ASSERT_EQ(f.size(), 3u);
+  EXPECT_POINT(f[1]->path.end, 30.0, -2.0);
+  RunOptions classic;
+  classic.dialect = gcode::Dialect::Classic;
+  const Timeline sharp = runText("G98\nG00 X20. Z0.\nG01 X30. K-2. F100.\nZ-20.\n", classic);
+  const auto k = cuts(sharp);
+  ASSERT_EQ(k.size(), 2u);
+  EXPECT_POINT(k[0]->path.end, 30.0, 0.0);
 }
 
 TEST(Corner, TwoCornersInARowShareTheMoveBetweenThem) {

@@ -29,6 +29,15 @@ enum class ModalGroup {
   Distance,     // 03: G90 G91 absolute / incremental (G-code systems B and C)
   ReturnLevel,  // 11: G98 G99 drilling cycles' return level (G-code systems B and C)
   ToolLength,   // 08: G49 (a machining centre's tool length compensation; nothing to cancel on a lathe)
+  // Machine functions that change no path Klueng draws, or that it does not simulate (CodeAction::NotSimulated)
+  ExactStop,    // 15: G61 G64 (exact stop mode; G09, Fanuc group 00, exact stop in one block)
+  StrokeCheck,  // 09: G22 G23 stored stroke check (Fanuc T)
+  SpeedCheck,   // 08: G25 G26 spindle speed fluctuation detection (Fanuc T)
+  MirrorImage,  // 04: G68 G69 mirror image for double turret (Fanuc T)
+  Lookahead,    // G103 block lookahead (Haas)
+  Smoothness,   // G187 smoothness and corner rounding (Haas)
+  SpindleSwap,  // G14 G15 secondary spindle swap (Haas)
+  PolarInterp,  // G112 G113 XY to XC interpolation (Haas; Fanuc G12.1 G13.1)
   // M code groups, for rule 4 and the interpreter
   MSpindle,     // M03 M04 M05
   MCoolant,     // M08 M09
@@ -91,7 +100,15 @@ enum class CodeAction : std::uint8_t {
   MacroCall,
   MacroModalCall,
   MacroModalCancel,
-  DataSetting,  // G10: offsets written by the program
+  DataSetting,       // G10: offsets written by the program
+  LocalCoordinates,  // G52: a local coordinate system inside the work coordinates
+  // A code of the control that Klueng does not simulate (G68 double turret, G112 XC interpolation ...):
+  // the checker warns, the interpreter stops there with A117.
+  NotSimulated,
+  // group 16: the plane arcs and nose compensation work in (a lathe turns in ZX: G18)
+  XyPlane,
+  ZxPlane,
+  YzPlane,
   // group 03 (G-code systems B and C): X and Z absolute or incremental (as U and W)
   Absolute,
   Incremental,
@@ -203,6 +220,9 @@ struct Phrase {
   std::string_view en, th;
 };
 
+// G and M numbers a row may have (Haas G103, G154, G187 lie above 99).
+inline constexpr int kCodeNumbers = 300;
+
 // One row per code and dialect meaning: everything Klueng knows about the code.
 struct CodeInfo {
   // Flags: alone in its block (M00 M01 M02 M30, and G98/G99 in classic, SPEC 5 rule 7).
@@ -214,7 +234,7 @@ struct CodeInfo {
   bool in(Dialect d) const;
   bool mustStandAlone() const { return (flags & kStandsAlone) != 0; }
   char letter;  // 'G' or 'M'
-  int number;   // 0..99
+  int number;   // 0..kCodeNumbers-1
   ModalGroup group;
   Phase phase;
   std::uint8_t dialects;    // dialectBit() of each dialect that accepts the row
@@ -259,6 +279,18 @@ int numberInA(char letter, int number, Dialect dialect);
 std::optional<CodeInfo> lookupCode(char letter, int number, Dialect dialect);
 // Same, without a copy (constant time): nullptr when unknown.
 const CodeInfo* findCode(char letter, int number, Dialect dialect);
+
+// A G code written with a decimal point that a control has (Fanuc G12.1 polar coordinate
+// interpolation, G05.1 AI contour control): its name, and whether it changes the path Klueng
+// draws (then a run stops at it with A117, as at any code it does not simulate) or only how
+// the control moves along it (then it is read and does nothing here).
+struct DecimalCode {
+  double value;  // 12.1
+  std::uint8_t dialects;
+  bool changesPath;
+  Phrase name;
+};
+const DecimalCode* findDecimalCode(double value, Dialect dialect);
 // The code as a control shows it: "G01", "M98".
 std::string codeWord(const CodeInfo& row);
 // The dialect's row for `action` under its own number (G33 for Thread in

@@ -17,7 +17,7 @@ namespace klueng::core::gcode {
 // A machine as read, owning its texts (MachineProfile only views them).
 struct MachineDefinition {
   std::string id, nameEn, nameTh, letters, file, text;
-  std::vector<int> oneShots, mCodes;
+  std::vector<int> oneShots, mCodes, errorsAsWarnings;
   MachineProfile profile{};  // its string views and spans are set when it is registered
   // Keys that are not profile keys, in file order: machine.cfg's, or mistakes.
   struct OtherKey {

@@ -97,6 +97,9 @@ struct FlowSettings {
   // "For chamfering a 90 degree angle only, an I or K value can be substituted
   // where ,C is used" (Haas lathe manual, "Corner rounding and chamfering").
   bool chamferWithIOrK;
+  // R on a G01 without its comma is the corner R (Fanuc T series "Chamfering and corner R":
+  // `G01 Z_ R±r`, B-63944EN-1/02 §4.5; the 0i-TF the same). Else W107 and a sharp corner.
+  bool cornerRWithoutComma = false;
 };
 
 struct MachineProfile {
@@ -140,6 +143,9 @@ struct MachineProfile {
   bool threadUnderCssIsAlarm;
   // Group-00 codes that may share a block with G00/G01 (G28, G30, G53), as G numbers.
   std::span<const int> oneShotsWithMotion;
+  // E codes of the classic rules that no manual of this control makes a stop (docs/dialects.md §10):
+  // given as warnings here, the block read as the message says (106 = E106).
+  std::span<const int> errorsAsWarnings;
   CycleForm cycleForm;
   bool unknownMIsWarning;  // an M code 0-99 outside the table: W101 (true) or E115 (false)
   bool highMIsWarning;     // an M code from 100 up (machine options: live tooling...): W101 or E115
