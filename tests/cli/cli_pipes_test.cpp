@@ -110,7 +110,8 @@ TEST(CliPipes, AMachineFileThatIsANamedPipeIsRefused) {
   EXPECT_NE(text.find("F157"), std::string::npos) << text;
 }
 
-// Output: a pipe nobody reads is refused at once (F157); one that is read is written.
+// Output: a pipe nobody reads is refused (F157) within a second, never waited on for ever; one that
+// is read is written, also when its reader opens it just after the run starts (`cat fifo & ...`).
 TEST(CliPipes, OutputToAPipeNeverWaits) {
   const fs::path pipe = fifo("trace.csv");
   std::string text;

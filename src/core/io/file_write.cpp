@@ -174,8 +174,13 @@ std::optional<Diagnostic> writeFileAtomic(const std::string& path, std::string_v
     // A device or a pipe cannot be replaced by renaming over it: write into it.
     // A pipe is opened without waiting (issue 42 item 4): with no reader at the
     // other end the open fails at once (ENXIO) and the output is refused, F157;
-    // with one (`--json >(jq .)`, a FIFO someone reads) it is written as usual.
-    const int fd = ::open(target.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC | O_NONBLOCK);
+    // with one (`--json >(jq .)`, a FIFO someone reads) it is written as usual. A reader
+    // started beside the run (`cat fifo & klueng-cli ...`) gets a second to open its end.
+    int fd = ::open(target.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC | O_NONBLOCK);
+    for (int wait = 0; fd < 0 && errno == ENXIO && fs::is_fifo(status) && wait < 20; ++wait) {
+      ::usleep(50'000);
+      fd = ::open(target.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC | O_NONBLOCK);
+    }
     if (fd < 0 && errno == ENXIO && fs::is_fifo(status))
       return writeError(codes::kNotAnOrdinaryFile, {path, "a pipe (FIFO) that nobody reads", "ไปป์ (FIFO) ที่ไม่มีใครอ่าน"});
     if (fd < 0) return failure(path, errno);
