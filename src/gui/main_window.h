@@ -179,7 +179,18 @@ class MainWindow : public QMainWindow {
   void createStatusBar();
   void createChecker();
   void createUndoGroup();
-  void createActions();
+  void createActions();  // its steps:
+  void connectOperatorPanel();
+  void connectFileActions();
+  void connectEditActions();
+  void connectUndoActions();
+  void connectRunActions();
+  void createSpeedControl();
+  void connectSetupActions();
+  void connectViewAndHelpActions();
+  // The named action's triggered() runs `slot`.
+  template <class Slot>
+  void on(const char* actionName, Slot&& slot);
   void createDocks();
   void connectDocuments();
   void connectEditing();

@@ -63,6 +63,11 @@ int speedCount() { return static_cast<int>(speeds().size()); }
 
 QAction* MainWindow::action(const QString& objectName) const { return actions_->action(objectName); }
 
+template <class Slot>
+void MainWindow::on(const char* actionName, Slot&& slot) {
+  connect(action(QString::fromLatin1(actionName)), &QAction::triggered, this, std::forward<Slot>(slot));
+}
+
 void MainWindow::createActions() {
   // The table makes every action, menu and tool bar (action_table.cpp); here each gets its slot.
   actions_ = new ActionTable(this, speedCount());
@@ -72,6 +77,21 @@ void MainWindow::createActions() {
   actions_->add(QStringLiteral("view3dDock"), view3d_->toggleViewAction());
   actions_->add(QStringLiteral("operatorPanelDock"), operatorPanel_->toggleViewAction());
   operatorPanel_->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_M));
+  connectOperatorPanel();
+  actions_->buildToolBars();
+  actions_->buildMenus();
+  connect(actions_->menu(QStringLiteral("menuRecent")), &QMenu::aboutToShow, this,
+          [this] { docs_->fillRecentMenu(actions_->menu(QStringLiteral("menuRecent"))); });
+  connectFileActions();
+  connectEditActions();
+  connectRunActions();
+  createSpeedControl();
+  connectSetupActions();
+  connectViewAndHelpActions();
+}
+
+// The operator panel's buttons act on the window's run (issue 40 item 2).
+void MainWindow::connectOperatorPanel() {
   connect(operatorPanel_, &OperatorPanel::cycleStartRequested, this, [this](bool singleBlock) {
     action(singleBlock ? QStringLiteral("actionStep") : QStringLiteral("actionGo"))->trigger();
   });
@@ -87,15 +107,9 @@ void MainWindow::createActions() {
     action(QStringLiteral("actionOptionalStop"))->setChecked(optionalStop);
     action(QStringLiteral("actionBlockSkip"))->setChecked(blockSkip);
   });
-  actions_->buildToolBars();
-  actions_->buildMenus();
-  connect(actions_->menu(QStringLiteral("menuRecent")), &QMenu::aboutToShow, this,
-          [this] { docs_->fillRecentMenu(actions_->menu(QStringLiteral("menuRecent"))); });
+}
 
-  const auto on = [this](const char* name, auto&& slot) {
-    connect(action(QString::fromLatin1(name)), &QAction::triggered, this, std::forward<decltype(slot)>(slot));
-  };
-  // File
+void MainWindow::connectFileActions() {
   on("actionNew", [this] { newFile(); });
   on("actionOpen", [this] { open(); });
   on("actionSave", [this] { save(); });
@@ -120,9 +134,11 @@ void MainWindow::createActions() {
   });
   on("actionPartDesigner", [this] { showPartDesigner(); });
   on("actionExit", [this] { close(); });
+}
 
-  // Edit: one Undo / Redo for the document's edits, text and setup alike (issue 30 item 2):
-  // the group follows the active document's stack; the rest are the editor's own commands.
+// Edit: one Undo / Redo for the document's edits, text and setup alike (issue 30 item 2):
+// the group follows the active document's stack; the rest are the editor's own commands.
+void MainWindow::connectEditActions() {
   on("actionUndo", [this] { undoGroup_->undo(); });
   on("actionRedo", [this] { undoGroup_->redo(); });
   on("actionCut", [this] { editor_->cut(); });
@@ -133,6 +149,14 @@ void MainWindow::createActions() {
   for (const char* n : {"actionCut", "actionCopy", "actionDelete"}) action(QString::fromLatin1(n))->setEnabled(false);
   for (const char* n : {"actionCut", "actionCopy", "actionDelete"})
     connect(editor_, &QPlainTextEdit::copyAvailable, action(QString::fromLatin1(n)), &QAction::setEnabled);
+  connectUndoActions();
+  on("actionFind", [this] { showFind(); });
+  on("actionReplace", [this] { showFind(); });
+  on("actionGoToLine", [this] { goToLine(); });
+}
+
+// Undo and Redo name the step they would take, and are off while a run animates the text.
+void MainWindow::connectUndoActions() {
   QAction* undo = action(QStringLiteral("actionUndo"));
   QAction* redo = action(QStringLiteral("actionRedo"));
   editor_->setUndoActions(undo, redo);  // its keys and context menu go through the stack too
@@ -157,11 +181,10 @@ void MainWindow::createActions() {
   connect(undoGroup_, &QUndoGroup::canRedoChanged, this, [this] { updateUndo_(); });
   connect(runner_, &RunController::stateChanged, this, [this] { updateUndo_(); });
   updateUndo_();
-  on("actionFind", [this] { showFind(); });
-  on("actionReplace", [this] { showFind(); });
-  on("actionGoToLine", [this] { goToLine(); });
+}
 
-  // Run: the runner gets the editor's text first.
+// Run: the runner gets the editor's text first.
+void MainWindow::connectRunActions() {
   const auto run = [this](void (RunController::*command)()) {
     return [this, command] {
       syncRunner();
@@ -194,6 +217,10 @@ void MainWindow::createActions() {
     runner_->setBlockSkip(checked);
     settings_->setBlockSkip(checked);
   });
+}
+
+// Run > Speed and the run tool bar's slider: the same choice.
+void MainWindow::createSpeedControl() {
   for (int i = 0; i < speedCount(); ++i)
     connect(action(QStringLiteral("actionSpeed%1").arg(i)), &QAction::triggered, this, [this, i] { setSpeedIndex(i); });
   speedControl_ = new RunSpeedControl(this);
@@ -209,8 +236,10 @@ void MainWindow::createActions() {
   runBar->addSeparator();
   runBar->addWidget(speedControl_);
   setSpeedIndex(static_cast<int>(std::find(speeds().begin(), speeds().end(), 1.0) - speeds().begin()));
+}
 
-  // Tool setting
+// Tool setting: the tables, the machine (dialect), the power-on and the shown units.
+void MainWindow::connectSetupActions() {
   on("actionToolSelect", [this] { showToolSelect(); });
   on("actionOffsetDefine", [this] { showOffsetDefine(); });
   for (const core::gcode::Dialect d :
@@ -240,8 +269,10 @@ void MainWindow::createActions() {
     const auto u = units;
     connect(a, &QAction::triggered, this, [this, u] { setShownUnits(u); });
   }
+}
 
-  // View
+// View and Help.
+void MainWindow::connectViewAndHelpActions() {
   on("actionFitView", [this] { output_->fitToView(); });
   on("actionZoomIn", [this] { output_->zoomIn(); });
   on("actionZoomOut", [this] { output_->zoomOut(); });
@@ -250,8 +281,6 @@ void MainWindow::createActions() {
   connect(action(QStringLiteral("actionShowPath")), &QAction::toggled, output_, &OutputView::setShowPath);
   connect(action(QStringLiteral("actionShowStatusBar")), &QAction::toggled, statusBar(), &QWidget::setVisible);
   connect(action(QStringLiteral("actionShowLamps")), &QAction::toggled, statusLamps_, &QWidget::setVisible);
-
-  // Help
   on("actionContents", [this] { showHelpContents(); });
   on("actionToggleLanguage", [this] { toggleLanguage(); });
   on("actionAbout", [this] { showAbout(); });

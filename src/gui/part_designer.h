@@ -17,9 +17,11 @@
 
 class QCheckBox;
 class QComboBox;
+class QHBoxLayout;
 class QLabel;
 class QListWidget;
 class QPushButton;
+class QSplitter;
 class QTabWidget;
 class QTableView;
 class QTimer;
@@ -70,7 +72,12 @@ class PartDesignerDialog : public QDialog {
   void changeEvent(QEvent* event) override;
 
  private:
-  void buildUi();
+  void buildUi();  // its steps:
+  void addRowButtons(QHBoxLayout* top);
+  void addChoices(QHBoxLayout* top);
+  QHBoxLayout* buildBarLine();
+  QSplitter* buildTableAndViews();
+  QHBoxLayout* buildFindingsAndButtons();
   void retranslate();
   void apply(const core::design::PartDesign& design);  // the undo stack's commands land here
   void scheduleLoop();

@@ -37,6 +37,20 @@ QToolButton* toolButton(QWidget* parent, const char* name, const char* icon) {
 
 void PartDesignerDialog::buildUi() {
   auto* top = new QHBoxLayout;
+  addRowButtons(top);
+  top->addStretch(1);
+  addChoices(top);
+  auto* layout = new QVBoxLayout(this);
+  layout->addLayout(top);
+  layout->addLayout(buildBarLine());
+  layout->addWidget(buildTableAndViews(), 1);
+  layout->addLayout(buildFindingsAndButtons());
+  resize(1180, 640);
+  retranslate();
+}
+
+// Add, remove, move a row; undo, redo; open and save a design.
+void PartDesignerDialog::addRowButtons(QHBoxLayout* top) {
   addButton_ = toolButton(this, "designAdd", "new");
   addButton_->setPopupMode(QToolButton::InstantPopup);
   auto* addMenu = new QMenu(addButton_);
@@ -73,7 +87,10 @@ void PartDesignerDialog::buildUi() {
   for (QToolButton* b :
        {addButton_, removeButton_, upButton_, downButton_, undoButton_, redoButton_, openButton_, saveButton_})
     top->addWidget(b);
-  top->addStretch(1);
+}
+
+// The machine (dialect), the material, the tool material, parting off.
+void PartDesignerDialog::addChoices(QHBoxLayout* top) {
   dialectLabel_ = new QLabel(this);
   dialect_ = new QComboBox(this);
   dialect_->setObjectName(QStringLiteral("designDialect"));
@@ -106,7 +123,10 @@ void PartDesignerDialog::buildUi() {
   for (QWidget* w : std::initializer_list<QWidget*>{dialectLabel_, dialect_, materialLabel_, material_,
                                                     toolMaterialLabel_, toolMaterial_, partOff_})
     top->addWidget(w);
+}
 
+// The bar the design is cut from, and the one the open file names (to take over).
+QHBoxLayout* PartDesignerDialog::buildBarLine() {
   auto* bar = new QHBoxLayout;
   barLabel_ = new QLabel(this);
   barLabel_->setObjectName(QStringLiteral("designBar"));
@@ -130,7 +150,11 @@ void PartDesignerDialog::buildUi() {
   bar->addWidget(fileBar_);
   bar->addWidget(useFileBar_);
   bar->addStretch(1);
+  return bar;
+}
 
+// The rows beside the drawing and the 3D view.
+QSplitter* PartDesignerDialog::buildTableAndViews() {
   table_ = new QTableView(this);
   table_->setObjectName(QStringLiteral("designTable"));
   table_->setModel(model_);
@@ -155,7 +179,11 @@ void PartDesignerDialog::buildUi() {
   split->setStretchFactor(0, 1);
   split->setStretchFactor(1, 1);
   split->setSizes({500, 640});
+  return split;
+}
 
+// What the design loop found, and the buttons to take its program or close.
+QHBoxLayout* PartDesignerDialog::buildFindingsAndButtons() {
   findings_ = new QListWidget(this);
   findings_->setObjectName(QStringLiteral("designFindings"));
   findings_->setWordWrap(true);
@@ -176,14 +204,7 @@ void PartDesignerDialog::buildUi() {
   buttons->addStretch(1);
   buttons->addWidget(closeButton);
   bottom->addLayout(buttons);
-
-  auto* layout = new QVBoxLayout(this);
-  layout->addLayout(top);
-  layout->addLayout(bar);
-  layout->addWidget(split, 1);
-  layout->addLayout(bottom);
-  resize(1180, 640);
-  retranslate();
+  return bottom;
 }
 
 void PartDesignerDialog::retranslate() {

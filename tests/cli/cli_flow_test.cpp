@@ -211,12 +211,23 @@ TEST_F(CliFlow, MainProgramM99RepeatsOnceWithANote) {
   EXPECT_EQ(traceRows("t.csv").size(), 3u);
 }
 
-TEST_F(CliFlow, EndlessLoopStopsWithAnAlarmNamingTheLoop) {
-  const std::string main = write("e.nc", "G21\n#1 = 0\nWHILE [#1 GE 0] DO1\n#1 = #1 + 1\nEND1\nM30\n");
+TEST_F(CliFlow, ALongLoopStopsAtTheBlockLimitNamingTheLoop) {
+  // A finite WHILE of 70,000 turns runs 210,000 blocks again: past the shipped max_blocks.
+  const std::string main = write("e.nc", "G21\n#1 = 0\nWHILE [#1 LT 70000] DO1\n#1 = #1 + 1\nEND1\nM30\n");
   const CliRun run = runCli("simulate " + main + " --no-stock");
   EXPECT_EQ(run.exitCode, 1);
-  EXPECT_THAT(run.out, HasSubstr(main + ":5:1: alarm A132: END1: stopped after "));
-  EXPECT_THAT(run.out, HasSubstr("the limit is machine.cfg max_blocks = "));
+  EXPECT_THAT(run.out, HasSubstr(main + ":5:1: alarm A132: END1: stopped at the block limit, machine.cfg "
+                                        "max_blocks = 200000 (200000 blocks run again by loops, jumps and calls); if "
+                                        "the program is meant to run longer, raise max_blocks in machine.cfg"));
+  EXPECT_THAT(run.out, Not(HasSubstr("without end")));
+}
+
+TEST_F(CliFlow, AnEndlessLoopIsSaidSoAtItsLine) {
+  const std::string main = write("g.nc", "G21 G98\nG00 X50. Z2.\nN10 G01 Z-5. F100.\nG00 Z2.\nGOTO 10\nM30\n");
+  const CliRun run = runCli("simulate " + main + " --no-stock");
+  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_THAT(run.out, HasSubstr(main + ":5:1: alarm A155: GOTO10 loops without end: the run came back to line 3 "
+                                        "in the same state as on an earlier pass"));
 }
 
 }  // namespace

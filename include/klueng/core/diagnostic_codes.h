@@ -225,8 +225,10 @@ inline constexpr const char* kTooManyPasses = "A127";
 inline constexpr const char* kNoSuchStation = "A128";
 inline constexpr const char* kProgramAlarm = "A130";
 inline constexpr const char* kDivisionByZero = "A131";
-inline constexpr const char* kEndlessLoopBlocks = "A132";
-inline constexpr const char* kEndlessLoopTime = "A133";
+// A132 A133 A151: a limit on a long run stopped it (machine.cfg max_blocks, max_run_time);
+// A155: the run came back to a state it was in before, the loop is proven endless.
+inline constexpr const char* kBlockLimitReached = "A132";  // {0} last jump, {1} blocks run again, {2} max_blocks
+inline constexpr const char* kTimeLimitReached = "A133";   // {0} last jump, {1} seconds, {2} max_run_time
 inline constexpr const char* kCallsTooDeep = "A134";
 inline constexpr const char* kNoSuchProgram = "A135";
 inline constexpr const char* kNoSuchSequence = "A136";
@@ -244,13 +246,15 @@ inline constexpr const char* kMacroStop = "A147";
 inline constexpr const char* kProfileHasMacro = "A148";
 inline constexpr const char* kTooManyCycleMoves = "A149";
 inline constexpr const char* kProfileCommandNotAllowed = "A150";
-inline constexpr const char* kEndlessLoopMoves = "A151";
+inline constexpr const char* kMoveLimitReached = "A151";  // {0} last jump, {1} moves, {2} max_blocks, {3} allowed
 inline constexpr const char* kNoCAxisOnThisMachine = "A152";
 inline constexpr const char* kProfileStartsWithoutMotion = "A153";  // {0} cycle, {1} N number
 // E305 for a station whose named bitmap cannot be used (a 20000 x 20000 picture, a pipe, a
 // damaged file): the job says why instead of "has no bitmap" (issue 42 item 6).
 inline constexpr const char* kToolBitmapUnusable = "E311";  // {0} T word, {1} tool, {2} why (en), {3} why (th)
 inline constexpr const char* kCallWithoutProgram = "A154";  // {0} M98/G65/G66: no P (Fanuc alarm PS0076)
+// {0} the backward jump (GOTO10, END1, M99), {1} the line it returns to
+inline constexpr const char* kEndlessLoop = "A155";
 inline constexpr const char* kSubprogramFileHasErrors = "E412";
 inline constexpr const char* kMainProgramRepeats = "I160";
 inline constexpr const char* kVacantAddressOmitted = "W130";

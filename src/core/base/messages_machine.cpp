@@ -72,22 +72,29 @@ constexpr MessageText kMachineMessages[] = {
     {codes::kProgramAlarm, "program alarm {2} (#3000 = {0}): {1}",
      "สัญญาณเตือนจากโปรแกรม หมายเลข {2} (#3000 = {0}): {1}"},
     {codes::kDivisionByZero, "division by zero: {0} {1} 0", "หารด้วยศูนย์: {0} {1} 0"},
-    // A limit, not a proof that the loop never ends (issue 42 item 6): say which limit and how to raise it.
-    {codes::kEndlessLoopBlocks,
-     "{0}: stopped after {1} blocks run again by loops, jumps and calls: the limit is machine.cfg max_blocks = {2}; "
-     "raise it if the program is meant to run longer",
-     "{0}: หยุดหลังจากทำบล็อกซ้ำ {1} บล็อก (จากการวนซ้ำ การกระโดด และการเรียกโปรแกรมย่อย) ซึ่งถึงขีดจำกัด "
-     "max_blocks = {2} ใน machine.cfg แล้ว ถ้าโปรแกรมนี้ต้องทำงานนานกว่านี้ ให้เพิ่มค่านี้"},
-    {codes::kEndlessLoopTime,
-     "{0}: stopped after {1} s of machining while blocks run again: the limit is machine.cfg max_run_time = {2} s; "
-     "raise it if the program is meant to run longer",
-     "{0}: หยุดหลังจากเวลาทำงาน {1} วินาทีขณะที่ทำบล็อกซ้ำ ซึ่งถึงขีดจำกัด max_run_time = {2} วินาที ใน machine.cfg "
-     "แล้ว ถ้าโปรแกรมนี้ต้องทำงานนานกว่านี้ ให้เพิ่มค่านี้"},
-    {codes::kEndlessLoopMoves,
-     "{0}: stopped after {1} moves made by blocks run again: machine.cfg max_blocks = {2} allows {3}; raise it if "
-     "the program is meant to run longer",
-     "{0}: หยุดหลังจากบล็อกที่ทำซ้ำเคลื่อนที่ไป {1} ครั้ง ซึ่ง max_blocks = {2} ใน machine.cfg ยอมให้ {3} ครั้ง "
-     "ถ้าโปรแกรมนี้ต้องทำงานนานกว่านี้ ให้เพิ่มค่านี้"},
+    // A limit, not a proof that the loop never ends (issue 42 item 6): say which limit and how to raise it;
+    // "without end" only where the run came back to a state it was in before (A155).
+    {codes::kBlockLimitReached,
+     "{0}: stopped at the block limit, machine.cfg max_blocks = {2} ({1} blocks run again by loops, jumps and "
+     "calls); if the program is meant to run longer, raise max_blocks in machine.cfg",
+     "{0}: หยุดที่ขีดจำกัดจำนวนบล็อก max_blocks = {2} ใน machine.cfg (ทำบล็อกซ้ำไปแล้ว {1} บล็อกจากการวนซ้ำ "
+     "การกระโดด และการเรียกโปรแกรมย่อย) ถ้าโปรแกรมนี้ต้องทำงานนานกว่านี้ ให้เพิ่มค่า max_blocks ใน machine.cfg"},
+    {codes::kTimeLimitReached,
+     "{0}: stopped at the time limit, machine.cfg max_run_time = {2} s ({1} s of machining while blocks run "
+     "again); if the program is meant to run longer, raise max_run_time in machine.cfg",
+     "{0}: หยุดที่ขีดจำกัดเวลา max_run_time = {2} วินาที ใน machine.cfg (ตัดงานไปแล้ว {1} วินาทีขณะที่ทำบล็อกซ้ำ) "
+     "ถ้าโปรแกรมนี้ต้องทำงานนานกว่านี้ ให้เพิ่มค่า max_run_time ใน machine.cfg"},
+    {codes::kMoveLimitReached,
+     "{0}: stopped at the move limit: blocks run again made {1} moves, and machine.cfg max_blocks = {2} allows {3} "
+     "(10 a block); if the program is meant to run longer, raise max_blocks in machine.cfg",
+     "{0}: หยุดที่ขีดจำกัดจำนวนการเคลื่อนที่: บล็อกที่ทำซ้ำเคลื่อนที่ไปแล้ว {1} ครั้ง แต่ max_blocks = {2} ใน "
+     "machine.cfg ยอมให้ {3} ครั้ง (บล็อกละ 10 ครั้ง) ถ้าโปรแกรมนี้ต้องทำงานนานกว่านี้ ให้เพิ่มค่า max_blocks ใน "
+     "machine.cfg"},
+    {codes::kEndlessLoop,
+     "{0} loops without end: the run came back to line {1} in the same state as on an earlier pass (the same "
+     "variables, modes and position), so it would repeat for ever; a control runs it until RESET",
+     "{0} วนซ้ำไม่รู้จบ: การทำงานกลับมาที่บรรทัด {1} ในสภาพเดียวกับรอบก่อนหน้าทุกอย่าง (ตัวแปร โหมด และตำแหน่งเดิม) "
+     "จึงจะวนซ้ำเช่นนี้ตลอดไป เครื่องจริงจะทำงานต่อไปจนกว่าจะกด RESET"},
     {codes::kNoCAxisOnThisMachine,
      "{0}: this machine has no C axis; a chamfer or a corner round is written with a comma (,C2. ,R3.)",
      "{0}: เครื่องนี้ไม่มีแกน C การลบมุมหรือการมนมุมต้องเขียนโดยมีจุลภาคนำหน้า (,C2. ,R3.)"},

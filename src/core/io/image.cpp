@@ -6,6 +6,7 @@
 #include <bit>
 #include <cstring>
 #include <fstream>
+#include <optional>
 
 #include "io/text_util.h"
 #include "klueng/core/io/file_read.h"
@@ -53,138 +54,154 @@ struct Channel {
   }
 };
 
-ReadResult<RgbImage> decodeBmp(std::string_view b, const std::string& fileName) {
-  ReadResult<RgbImage> result;
-  auto& diags = result.diagnostics;
-  const auto damaged = [&](const char* what) {
-    diags.push_back(fileError(codes::kBmpHeaderDamaged, fileName, {what}));
-    return result;
-  };
-  if (b.size() < 14 + 12) {
-    diags.push_back(fileError(codes::kImageTruncated, fileName));
-    return result;
-  }
-  const std::uint32_t pixelOffset = readLe32(b, 10);
-  const std::uint32_t headerSize = readLe32(b, 14);
-  if (headerSize != 12 && headerSize != 40 && headerSize != 52 && headerSize != 56 && headerSize != 64 &&
-      headerSize != 108 && headerSize != 124)
-    return damaged("unknown header size");
-  if (14 + static_cast<std::size_t>(headerSize) > b.size()) {
-    diags.push_back(fileError(codes::kImageTruncated, fileName));
-    return result;
-  }
-
+// What a BMP's file header and info header say.
+struct BmpHeader {
+  std::uint32_t pixelOffset = 0;
+  std::uint32_t headerSize = 0;  // 12: OS/2 BITMAPCOREHEADER; 40 .. 124: the Windows headers
   std::int64_t width = 0, height = 0;
+  bool topDown = false;  // rows stored from the top (a negative height)
   int bitsPerPixel = 0;
   std::uint32_t compression = 0, colorsUsed = 0;
   int paletteEntrySize = 4;
-  if (headerSize == 12) {  // OS/2 BITMAPCOREHEADER
-    width = readLe16(b, 18);
-    height = static_cast<std::int16_t>(readLe16(b, 20));
-    if (readLe16(b, 22) != 1) return damaged("planes must be 1");
-    bitsPerPixel = readLe16(b, 24);
-    paletteEntrySize = 3;
+  bool indexed() const { return bitsPerPixel == 1 || bitsPerPixel == 4 || bitsPerPixel == 8; }
+};
+
+// Each step of reading a BMP: nothing, or why the file is refused.
+using BmpError = std::optional<Diagnostic>;
+
+constexpr std::uint32_t kBmpRgb = 0, kBmpBitfields = 3, kBmpAlphaBitfields = 6;
+
+Diagnostic bmpDamaged(const std::string& fileName, const char* what) {
+  return fileError(codes::kBmpHeaderDamaged, fileName, {what});
+}
+
+// The file header and the info header: where the pixels are, the size, the pixel format.
+BmpError readBmpHeader(std::string_view b, const std::string& fileName, BmpHeader& h) {
+  if (b.size() < 14 + 12) return fileError(codes::kImageTruncated, fileName);
+  h.pixelOffset = readLe32(b, 10);
+  h.headerSize = readLe32(b, 14);
+  if (h.headerSize != 12 && h.headerSize != 40 && h.headerSize != 52 && h.headerSize != 56 && h.headerSize != 64 &&
+      h.headerSize != 108 && h.headerSize != 124)
+    return bmpDamaged(fileName, "unknown header size");
+  if (14 + static_cast<std::size_t>(h.headerSize) > b.size()) return fileError(codes::kImageTruncated, fileName);
+  if (h.headerSize == 12) {  // OS/2 BITMAPCOREHEADER
+    h.width = readLe16(b, 18);
+    h.height = static_cast<std::int16_t>(readLe16(b, 20));
+    if (readLe16(b, 22) != 1) return bmpDamaged(fileName, "planes must be 1");
+    h.bitsPerPixel = readLe16(b, 24);
+    h.paletteEntrySize = 3;
   } else {
-    width = static_cast<std::int32_t>(readLe32(b, 18));
-    height = static_cast<std::int32_t>(readLe32(b, 22));
-    if (readLe16(b, 26) != 1) return damaged("planes must be 1");
-    bitsPerPixel = readLe16(b, 28);
-    compression = readLe32(b, 30);
-    colorsUsed = readLe32(b, 46);
+    h.width = static_cast<std::int32_t>(readLe32(b, 18));
+    h.height = static_cast<std::int32_t>(readLe32(b, 22));
+    if (readLe16(b, 26) != 1) return bmpDamaged(fileName, "planes must be 1");
+    h.bitsPerPixel = readLe16(b, 28);
+    h.compression = readLe32(b, 30);
+    h.colorsUsed = readLe32(b, 46);
   }
-  const bool topDown = height < 0;
-  if (topDown) height = -height;
-  if (width < 1 || height < 1 || width > kMaxSide || height > kMaxSide) {
-    diags.push_back(fileError(codes::kImageSizeRefused, fileName, {std::to_string(width), std::to_string(height)}));
-    return result;
-  }
+  h.topDown = h.height < 0;
+  if (h.topDown) h.height = -h.height;
+  return std::nullopt;
+}
 
-  constexpr std::uint32_t kRgb = 0, kBitfields = 3, kAlphaBitfields = 6;
-  const bool indexed = bitsPerPixel == 1 || bitsPerPixel == 4 || bitsPerPixel == 8;
-  const bool supported = (indexed && compression == kRgb) ||
-                         ((bitsPerPixel == 16 || bitsPerPixel == 32) &&
-                          (compression == kRgb || compression == kBitfields || compression == kAlphaBitfields)) ||
-                         (bitsPerPixel == 24 && compression == kRgb);
-  if (!supported) {
-    diags.push_back(
-        fileError(codes::kUnsupportedBmp, fileName, {std::to_string(bitsPerPixel), std::to_string(compression)}));
-    return result;
-  }
+// The sizes and pixel formats read: indexed colours, 24-bit, 16 and 32 bits with masks.
+BmpError checkBmpFormat(const BmpHeader& h, const std::string& fileName) {
+  if (h.width < 1 || h.height < 1 || h.width > kMaxSide || h.height > kMaxSide)
+    return fileError(codes::kImageSizeRefused, fileName, {std::to_string(h.width), std::to_string(h.height)});
+  const bool supported =
+      (h.indexed() && h.compression == kBmpRgb) ||
+      ((h.bitsPerPixel == 16 || h.bitsPerPixel == 32) &&
+       (h.compression == kBmpRgb || h.compression == kBmpBitfields || h.compression == kBmpAlphaBitfields)) ||
+      (h.bitsPerPixel == 24 && h.compression == kBmpRgb);
+  if (!supported)
+    return fileError(codes::kUnsupportedBmp, fileName, {std::to_string(h.bitsPerPixel), std::to_string(h.compression)});
+  return std::nullopt;
+}
 
-  // Channel masks: defaults for BI_RGB; after a 40-byte header they follow it,
-  // in larger headers they are part of it.
-  std::uint32_t masks[4] = {0, 0, 0, 0};
-  std::size_t afterHeader = 14 + headerSize;
-  if (bitsPerPixel == 16 && compression == kRgb) {
+// Channel masks: defaults for BI_RGB; after a 40-byte header they follow it (`afterHeader`,
+// where the palette would start, moves past them), in larger headers they are part of it.
+BmpError readBmpMasks(std::string_view b, const BmpHeader& h, const std::string& fileName, std::uint32_t (&masks)[4],
+                      std::size_t& afterHeader) {
+  afterHeader = 14 + h.headerSize;
+  if (h.bitsPerPixel == 16 && h.compression == kBmpRgb) {
     masks[0] = 0x7C00;
     masks[1] = 0x03E0;
     masks[2] = 0x001F;
-  } else if (bitsPerPixel == 32 && compression == kRgb) {
+  } else if (h.bitsPerPixel == 32 && h.compression == kBmpRgb) {
     masks[0] = 0xFF0000;
     masks[1] = 0x00FF00;
     masks[2] = 0x0000FF;
-  } else if (compression == kBitfields || compression == kAlphaBitfields) {
+  } else if (h.compression == kBmpBitfields || h.compression == kBmpAlphaBitfields) {
     std::size_t at = 14 + 40;
-    const int count = compression == kAlphaBitfields || headerSize >= 56 ? 4 : 3;
-    if (headerSize == 40) afterHeader += static_cast<std::size_t>(count) * 4;
-    if (at + static_cast<std::size_t>(count) * 4 > b.size()) {
-      diags.push_back(fileError(codes::kImageTruncated, fileName));
-      return result;
-    }
+    const int count = h.compression == kBmpAlphaBitfields || h.headerSize >= 56 ? 4 : 3;
+    if (h.headerSize == 40) afterHeader += static_cast<std::size_t>(count) * 4;
+    if (at + static_cast<std::size_t>(count) * 4 > b.size()) return fileError(codes::kImageTruncated, fileName);
     for (int i = 0; i < count; ++i) masks[i] = readLe32(b, at + static_cast<std::size_t>(i) * 4);
-    if (masks[0] == 0 && masks[1] == 0 && masks[2] == 0) return damaged("colour masks are zero");
+    if (masks[0] == 0 && masks[1] == 0 && masks[2] == 0) return bmpDamaged(fileName, "colour masks are zero");
   }
+  return std::nullopt;
+}
 
-  std::vector<std::uint32_t> palette;
-  if (indexed) {
-    const std::uint32_t maxColors = 1u << bitsPerPixel;
-    const std::uint32_t count = colorsUsed == 0 ? maxColors : colorsUsed;
-    if (count > maxColors) return damaged("too many palette colours");
-    if (afterHeader + static_cast<std::size_t>(count) * paletteEntrySize > b.size()) {
-      diags.push_back(fileError(codes::kImageTruncated, fileName));
-      return result;
-    }
-    palette.resize(count);
-    for (std::uint32_t i = 0; i < count; ++i) {
-      const std::size_t at = afterHeader + static_cast<std::size_t>(i) * paletteEntrySize;
-      palette[i] = static_cast<std::uint32_t>(static_cast<unsigned char>(b[at + 2])) << 16 |
-                   static_cast<std::uint32_t>(static_cast<unsigned char>(b[at + 1])) << 8 |
-                   static_cast<unsigned char>(b[at]);
-    }
+// An indexed picture's colours, as 0xRRGGBB.
+BmpError readBmpPalette(std::string_view b, const BmpHeader& h, std::size_t afterHeader, const std::string& fileName,
+                        std::vector<std::uint32_t>& palette) {
+  if (!h.indexed()) return std::nullopt;
+  const std::uint32_t maxColors = 1u << h.bitsPerPixel;
+  const std::uint32_t count = h.colorsUsed == 0 ? maxColors : h.colorsUsed;
+  if (count > maxColors) return bmpDamaged(fileName, "too many palette colours");
+  if (afterHeader + static_cast<std::size_t>(count) * h.paletteEntrySize > b.size())
+    return fileError(codes::kImageTruncated, fileName);
+  palette.resize(count);
+  for (std::uint32_t i = 0; i < count; ++i) {
+    const std::size_t at = afterHeader + static_cast<std::size_t>(i) * h.paletteEntrySize;
+    palette[i] = static_cast<std::uint32_t>(static_cast<unsigned char>(b[at + 2])) << 16 |
+                 static_cast<std::uint32_t>(static_cast<unsigned char>(b[at + 1])) << 8 |
+                 static_cast<unsigned char>(b[at]);
   }
+  return std::nullopt;
+}
 
-  const std::size_t stride = ((static_cast<std::size_t>(width) * bitsPerPixel + 31) / 32) * 4;
-  const std::size_t needed = static_cast<std::size_t>(pixelOffset) + stride * static_cast<std::size_t>(height);
-  if (pixelOffset < afterHeader || pixelOffset > b.size()) return damaged("pixel data offset out of range");
-  if (needed > b.size()) {
-    diags.push_back(fileError(codes::kImageTruncated, fileName));
-    return result;
-  }
+// The bytes of one row of pixels (rows are padded to 4 bytes).
+std::size_t bmpStride(const BmpHeader& h) {
+  return ((static_cast<std::size_t>(h.width) * h.bitsPerPixel + 31) / 32) * 4;
+}
 
-  RgbImage image;
-  image.width = static_cast<int>(width);
-  image.height = static_cast<int>(height);
-  image.pixels.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+// The pixel rows lie after the headers and within the file.
+BmpError checkBmpPixelData(std::string_view b, const BmpHeader& h, std::size_t afterHeader,
+                           const std::string& fileName) {
+  const std::size_t needed =
+      static_cast<std::size_t>(h.pixelOffset) + bmpStride(h) * static_cast<std::size_t>(h.height);
+  if (h.pixelOffset < afterHeader || h.pixelOffset > b.size())
+    return bmpDamaged(fileName, "pixel data offset out of range");
+  if (needed > b.size()) return fileError(codes::kImageTruncated, fileName);
+  return std::nullopt;
+}
+
+// The pixels, top row first, as 0xRRGGBB. Many programs write an alpha mask but leave every
+// alpha at 0: then it means nothing; else a pixel less than half opaque is background (white).
+BmpError readBmpPixels(std::string_view b, const BmpHeader& h, const std::uint32_t (&masks)[4],
+                       const std::vector<std::uint32_t>& palette, const std::string& fileName, RgbImage& image) {
+  image.width = static_cast<int>(h.width);
+  image.height = static_cast<int>(h.height);
+  image.pixels.resize(static_cast<std::size_t>(h.width) * static_cast<std::size_t>(h.height));
   const Channel red(masks[0]), green(masks[1]), blue(masks[2]), alpha(masks[3]);
   std::vector<std::uint8_t> alphas;
   if (alpha.mask) alphas.resize(image.pixels.size());
-
+  const int bitsPerPixel = h.bitsPerPixel;
+  const std::size_t stride = bmpStride(h);
   for (int row = 0; row < image.height; ++row) {
-    const int y = topDown ? row : image.height - 1 - row;
-    const std::size_t rowStart = pixelOffset + stride * static_cast<std::size_t>(row);
+    const int y = h.topDown ? row : image.height - 1 - row;
+    const std::size_t rowStart = h.pixelOffset + stride * static_cast<std::size_t>(row);
     for (int x = 0; x < image.width; ++x) {
       std::uint32_t rgb = 0;
       const std::size_t i = static_cast<std::size_t>(y) * image.width + x;
-      if (indexed) {
+      if (h.indexed()) {
         const std::size_t bit = static_cast<std::size_t>(x) * bitsPerPixel;
         const auto byte = static_cast<unsigned char>(b[rowStart + bit / 8]);
         const unsigned shift = 8 - bitsPerPixel - static_cast<unsigned>(bit % 8);
         const std::uint32_t index = (byte >> shift) & ((1u << bitsPerPixel) - 1);
-        if (index >= palette.size()) {
-          diags.push_back(fileError(codes::kColourOutsidePalette, fileName,
-                                    {std::to_string(index), std::to_string(palette.size())}));
-          return result;
-        }
+        if (index >= palette.size())
+          return fileError(codes::kColourOutsidePalette, fileName,
+                           {std::to_string(index), std::to_string(palette.size())});
         rgb = palette[index];
       } else if (bitsPerPixel == 24) {
         const std::size_t at = rowStart + static_cast<std::size_t>(x) * 3;
@@ -200,12 +217,29 @@ ReadResult<RgbImage> decodeBmp(std::string_view b, const std::string& fileName) 
       image.pixels[i] = rgb;
     }
   }
-  // Many programs write an alpha mask but leave every alpha at 0: then it means nothing.
   if (alpha.mask && std::any_of(alphas.begin(), alphas.end(), [](std::uint8_t a) { return a != 0; }))
     for (std::size_t i = 0; i < alphas.size(); ++i)
       if (alphas[i] < 128) image.pixels[i] = 0xFFFFFF;
+  return std::nullopt;
+}
 
-  result.value = std::move(image);
+ReadResult<RgbImage> decodeBmp(std::string_view b, const std::string& fileName) {
+  BmpHeader h;
+  std::uint32_t masks[4] = {0, 0, 0, 0};
+  std::size_t afterHeader = 0;
+  std::vector<std::uint32_t> palette;
+  RgbImage image;
+  BmpError error = readBmpHeader(b, fileName, h);
+  if (!error) error = checkBmpFormat(h, fileName);
+  if (!error) error = readBmpMasks(b, h, fileName, masks, afterHeader);
+  if (!error) error = readBmpPalette(b, h, afterHeader, fileName, palette);
+  if (!error) error = checkBmpPixelData(b, h, afterHeader, fileName);
+  if (!error) error = readBmpPixels(b, h, masks, palette, fileName, image);
+  ReadResult<RgbImage> result;
+  if (error)
+    result.diagnostics.push_back(std::move(*error));
+  else
+    result.value = std::move(image);
   return result;
 }
 

@@ -414,7 +414,7 @@ constexpr MachineKey kMachineKeys[] = {
     {"turret_stations", nullptr, Rule::Stations, "tool stations on the turret (1 to 24)",
      &MachineConfig::turretStations},
     {"max_blocks", nullptr, Rule::Count,
-     "a program that loops without end stops after this many blocks run again by a loop, jump or call",
+     "a run stops after this many blocks run again by a loop, jump or call (a loop proven endless stops before)",
      &MachineConfig::maxBlocks},
     {"max_run_time", &MachineConfig::maxRunTime, Rule::Positive,
      "... or, once blocks run again, after this much simulated machining time, seconds\n"

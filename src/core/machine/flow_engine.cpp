@@ -146,24 +146,28 @@ void FlowEngine::noteStack() {
   stackId_ = static_cast<int>(log_->stacks.size()) - 1;
 }
 
-bool FlowEngine::loopLimits(const Block& b, const io::MachineConfig& m, const MachineSink& clock) {
+bool FlowEngine::stopLoop(const char* code, const Block& b, std::vector<std::string> args) {
   // The alarms name the last backward jump (else the block itself, an M99 repeat).
-  const auto stop = [&](const char* code, std::vector<std::string> args) {
-    loopStopped_ = true;
-    args.insert(args.begin(), lastJumpText_.empty() ? std::string("M99") : lastJumpText_);
-    return alarm(code, lastJumpAt_.line > 0 ? lastJumpAt_ : SourceRange{b.line, 1, 0, b.file}, std::move(args));
-  };
+  loopStopped_ = true;
+  args.insert(args.begin(), lastJumpText_.empty() ? std::string("M99") : lastJumpText_);
+  return alarm(code, lastJumpAt_.line > 0 ? lastJumpAt_ : SourceRange{b.line, 1, 0, b.file}, std::move(args));
+}
+
+bool FlowEngine::loopLimits(const Block& b, const io::MachineConfig& m, const MachineSink& clock) {
+  // Limits, not a proof that the run never ends (issue 42 item 6): the alarms say which
+  // limit stopped the run and how to raise it; the interpreter's loopCanEnd (loop_proof.h)
+  // proves the endless loops.
   // Blocks run again may also each make many moves (a G75 of 200,000 pecks in a
   // loop): what they make is bounded too, before it fills the memory.
   const long long moveBudget = kMovesPerRepeatedBlock * static_cast<long long>(m.maxBlocks);
   if (repeatedMoves_ > moveBudget)
-    return stop(codes::kEndlessLoopMoves,
-                {std::to_string(repeatedMoves_), std::to_string(m.maxBlocks), std::to_string(moveBudget)});
+    return stopLoop(codes::kMoveLimitReached, b,
+                    {std::to_string(repeatedMoves_), std::to_string(m.maxBlocks), std::to_string(moveBudget)});
   const auto i = static_cast<std::size_t>(current_);
   repeating_ = visited_[i] != 0;
   if (visited_[i]) {
     if (++repeatedBlocks_ > m.maxBlocks)
-      return stop(codes::kEndlessLoopBlocks, {std::to_string(repeatedBlocks_ - 1), std::to_string(m.maxBlocks)});
+      return stopLoop(codes::kBlockLimitReached, b, {std::to_string(repeatedBlocks_ - 1), std::to_string(m.maxBlocks)});
   } else {
     visited_[i] = 1;
   }
@@ -173,9 +177,32 @@ bool FlowEngine::loopLimits(const Block& b, const io::MachineConfig& m, const Ma
   // Only while a block runs again: a subprogram called twice (M98 P1000 L2) followed by a long,
   // slow cut of the main program is no loop, and the clock does not stop it (issue 42 item 6).
   if (m.maxRunTime > 0.0 && repeating_ && clock.elapsed() > m.maxRunTime)
-    return stop(codes::kEndlessLoopTime, {num(clock.elapsed()), num(m.maxRunTime)});
+    return stopLoop(codes::kTimeLimitReached, b, {num(clock.elapsed()), num(m.maxRunTime)});
   return true;
 }
+
+void FlowEngine::writeState(RunStateWords& out) const {
+  out.add(current_);
+  out.add(mainRepeated_);
+  out.add(static_cast<int>(pending_.kind));
+  out.add(static_cast<int>(frames_.size()));
+  // (A frame's localId only tells the FlowLog's frames apart: no state of the run.)
+  for (const FlowFrame& f : frames_) {
+    for (int v : {static_cast<int>(f.kind), f.program, f.section, f.entry, f.returnTo, f.callBlock, f.callFile,
+                  f.callLine, f.repeat, f.repeats, f.localLevel})
+      out.add(v);
+    for (int d : f.doBlock) out.add(d);
+    for (const MacroValue& v : f.arguments) out.add(v);
+  }
+  out.add(modalCall_.active);
+  if (!modalCall_.active) return;
+  for (int v : {modalCall_.program, modalCall_.repeats, modalCall_.level}) out.add(v);
+  MacroLocals arguments{};  // what each call of the modal macro starts with
+  flowSetArguments(modalCall_.arguments, arguments);
+  for (const MacroValue& v : arguments) out.add(v);
+}
+
+bool FlowEngine::stopEndlessLoop(const Block& b) { return stopLoop(codes::kEndlessLoop, b, {std::to_string(b.line)}); }
 
 bool FlowEngine::loopStart(const Block& b, bool enter) {
   const gcode::Statement& st = b.statement;
@@ -294,7 +321,7 @@ bool FlowEngine::returnFromCall(std::optional<int> sequence, const SourceRange& 
     ++f.repeat;
     if (f.kind == CallFrame::Kind::Macro || f.kind == CallFrame::Kind::ModalMacro) {
       // Each pass of G65 ... L starts with the call's arguments again.
-      macros_.locals(f.localLevel) = f.arguments;
+      macros_.resetLocals(f.localLevel, f.arguments);
     }
     noteStack();
     next_ = f.entry;

@@ -15,6 +15,7 @@
 #include "klueng/core/gcode/program_index.h"
 #include "klueng/core/io/tool_config.h"
 #include "klueng/core/machine/flow.h"
+#include "machine/loop_proof.h"
 #include "machine/macro_store.h"
 
 namespace klueng::core::machine {
@@ -74,6 +75,8 @@ class FlowEngine {
   void enter(int blockIndex) {
     current_ = blockIndex;
     next_ = blockIndex + 1;
+    cameBack_ = jumpedBack_;
+    jumpedBack_ = false;
   }
   int next() const { return next_; }
   void resumeAfter(int blockIndex) { next_ = blockIndex + 1; }  // G71-G73 skip their own profile
@@ -113,8 +116,17 @@ class FlowEngine {
   bool loopStart(const gcode::Block& b, bool enter);
   // ENDm at the running block: back to its WHILE/DO.
   bool loopEnd(const gcode::Block& b);
-  // The endless-loop limits, before the running block runs (false: an alarm stopped the run).
+  // The limits on a long run (blocks, time, moves run again), before the running block runs
+  // (false: an alarm stopped the run).
   bool loopLimits(const gcode::Block& b, const io::MachineConfig& machine, const MachineSink& clock);
+  // The running block was reached by a backward jump (GOTO, END, M99): the run's state here
+  // goes to the proof of an endless loop (loop_proof.h).
+  bool cameBack() const { return cameBack_; }
+  // The flow's part of that state: the running block, the call stack, the modal macro call.
+  void writeState(RunStateWords& out) const;
+  // The run came back to the running block `b` in a state it was in before: it loops for
+  // ever; the alarm stops it (false).
+  bool stopEndlessLoop(const gcode::Block& b);
   bool loopStopped() const { return loopStopped_; }
   // A move made by the running block (blocks run again may make only so many).
   void noteMove() { repeatedMoves_ += repeating_; }
@@ -130,7 +142,10 @@ class FlowEngine {
   void noteJump(const SourceRange& at, const std::string& text) {
     lastJumpAt_ = at;
     lastJumpText_ = text;
+    jumpedBack_ = true;
   }
+  // Stops a run that loops (or may loop) at the last backward jump: false.
+  bool stopLoop(const char* code, const gcode::Block& b, std::vector<std::string> args);
 
   const gcode::Program& program_;
   const gcode::MachineProfile& profile_;
@@ -149,10 +164,12 @@ class FlowEngine {
   long long repeatedMoves_ = 0;  // moves made by blocks run again (bounded with max_blocks)
   bool repeating_ = false;       // the running block has run before
   bool loopStopped_ = false;     // a loop limit ended the run (even a run through alarms)
-  SourceRange lastJumpAt_;       // the last backward jump (named by the endless-loop alarm)
+  SourceRange lastJumpAt_;       // the last backward jump (named by the loop alarms)
   std::string lastJumpText_;
-  int current_ = 0;  // block index running
-  int next_ = 0;     // block index to run next
+  bool jumpedBack_ = false;  // a backward jump has set the next block
+  bool cameBack_ = false;    // the running block was reached by one
+  int current_ = 0;          // block index running
+  int next_ = 0;             // block index to run next
   bool ended_ = false;
   int stackId_ = 0;
   int nextLocalId_ = 1;

@@ -3,7 +3,7 @@
 // evaluates their expressions; the flow engine (flow_engine.h) decides which
 // block runs next and keeps the call stack. Variables: interpreter_macro.cpp.
 #include <cmath>
-
+#include <cstdint>
 #include <string_view>
 
 #include "klueng/core/gcode/word_format.h"
@@ -82,6 +82,7 @@ bool Interpreter::runBlock(int index) {
   blockIndex_ = index;
   flow_.enter(index);
   if (!flow_.loopLimits(b, setup_.machine, *sink_)) return false;
+  if (flow_.cameBack() && !loopCanEnd()) return false;
   if (b.statement.kind != StatementKind::None) {
     stopped_ = false;
     stopEndsRun_ = false;
@@ -102,6 +103,68 @@ bool Interpreter::runBlock(int index) {
   if (flow_.hasPending()) return flow_.performPending(callSite());
   if (flow_.modalCallDue(movedThisBlock_)) return flow_.modalMacroCall(callSite());
   return true;
+}
+
+bool Interpreter::loopCanEnd() {
+  // Not proven here: a program that reads the clock (#3001 #3002), whose state then grows
+  // with every pass, or a corner or compensated path still being worked out, which the
+  // words below do not hold.
+  if (macros_.clockRead() || corners_->holding() || modal_.noseComp != NoseCompMode::Off) return true;
+  std::uint64_t quick = mixHash(macros_.valuesHash(), static_cast<std::uint64_t>(blockIndex_));
+  quick = mixHash(mixHash(quick, bitsOf(pos_.x())), bitsOf(pos_.y()));
+  const bool endless = loopProof_.seenBefore(quick, [this](RunStateWords& out) {
+    flow_.writeState(out);
+    macros_.writeState(out);
+    writeState(out);
+  });
+  return !endless || flow_.stopEndlessLoop(*block_);
+}
+
+// Every field of ModalState, MachineState, DrillWords and CycleMemory: a field added to them is
+// added here (a field left out could call a loop that ends endless).
+void Interpreter::writeState(RunStateWords& out) const {
+  for (int v : {static_cast<int>(modal_.motion), static_cast<int>(modal_.units), static_cast<int>(modal_.noseComp),
+                static_cast<int>(modal_.spindleMode), static_cast<int>(modal_.feedMode), modal_.workCoordinate})
+    out.add(v);
+  for (double v : {modal_.feed, modal_.sWord, modal_.rpmClamp}) out.add(v);
+  out.add(modal_.incremental);
+  out.add(modal_.returnToRPoint);
+  const MachineState& m = mach_;
+  for (double v : {m.position.x(), m.position.y(), m.workShift.x(), m.workShift.y(), m.rpm, m.cAngle, m.offsetX,
+                   m.offsetZ, m.noseRadius})
+    out.add(v);
+  for (int v : {m.tool, m.offset, m.tip, m.gearRange, static_cast<int>(m.spindle)}) out.add(v);
+  for (bool v : {m.coolant, m.brake, m.cAxisMode, m.positionCheck, m.optionalStopSwitch, m.threadChamfer}) out.add(v);
+  out.add(pos_.x());
+  out.add(pos_.y());
+  for (const std::optional<double>& g28 : {g28X_, g28Z_}) {
+    out.add(g28.has_value());
+    out.add(g28.value_or(0.0));
+  }
+  // The modal cycles: which (the code table's row) and their words.
+  out.add(static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(singleCycle_)));
+  for (double v : {singleTarget_.x(), singleTarget_.y(), singleTaper_}) out.add(v);
+  out.add(static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(drillCycle_)));
+  const cycles::DrillWords& d = drill_;
+  out.add(static_cast<int>(d.g));
+  for (double v : {d.hole.x(), d.hole.y(), d.rPlane, d.peck, d.firstPeck, d.reduce, d.minPeck, d.dwell, d.clearance,
+                   d.initialLevel})
+    out.add(v);
+  out.add(d.repeats);
+  out.add(d.returnToRPoint);
+  const cycles::CycleMemory& c = cycleMemory_;
+  for (double v : {c.g71Depth, c.g71Retract, c.g72Depth, c.g72Retract, c.g73ReliefX, c.g73ReliefZ, c.g74Retract,
+                   c.g75Retract, c.g76Angle, c.g76MinDepth, c.g76Allowance})
+    out.add(v);
+  for (int v : {c.g73Count, c.g76Finishing, c.g76Chamfer}) out.add(v);
+  // The offsets, where the program has written them (#2001.., G10).
+  const bool offsetsWritten = offsets_.offsets != setup_.offsets.offsets;
+  out.add(offsetsWritten);
+  if (!offsetsWritten) return;
+  for (const io::Offset& o : offsets_.offsets) {
+    for (double v : {o.x, o.z, o.r}) out.add(v);
+    out.add(o.tip);
+  }
 }
 
 bool Interpreter::evaluate(int expr, const SourceRange& at, MacroValue& out) {

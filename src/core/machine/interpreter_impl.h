@@ -204,6 +204,10 @@ class Interpreter final : public gcode::MacroVariables, private BlockEffects {
     return raiseAt(code, at, std::move(args));
   }
   bool runBlock(int index);
+  // At a block reached by a backward jump: false (an alarm stopped the run) when the run
+  // was in this very state before (loop_proof.h).
+  bool loopCanEnd();
+  void writeState(RunStateWords& out) const;  // the modal and machine state, the position, the offsets
   bool statement(const gcode::Block& b);
   bool evaluateWords(const gcode::Block& b);
   bool evaluate(int expr, const SourceRange& at, gcode::MacroValue& out);
@@ -295,9 +299,10 @@ class Interpreter final : public gcode::MacroVariables, private BlockEffects {
   bool stopEndsRun_ = false;
   bool optionalStopBlock_ = false;  // this block holds M01
 
-  MacroStore macros_;  // #1-#999 and the system variables a run keeps
-  FlowEngine flow_;    // the program counter, call stack and loops (after macros_: its calls push their levels)
-  int snapshots_ = 0;  // snapshots emitted so far (the index of the next one)
+  MacroStore macros_;    // #1-#999 and the system variables a run keeps
+  FlowEngine flow_;      // the program counter, call stack and loops (after macros_: its calls push their levels)
+  LoopProof loopProof_;  // the states at the backward jumps, compared (an endless loop is proven)
+  int snapshots_ = 0;    // snapshots emitted so far (the index of the next one)
   bool movedThisBlock_ = false;
   gcode::Block scratch_;  // the running block with its expressions evaluated
 };

@@ -133,13 +133,14 @@ TEST(FlowRun, EndlessLoopsStopByBlocksOrByTime) {
   EXPECT_EQ(t.alarm->range, (SourceRange{4, 1, 3}));
   EXPECT_EQ(t.alarm->args.at(0), "END1");
   expectBilingual(*t.alarm);
-  // With motion, the time limit comes first: 10 mm at 100 mm/min = 6 s a pass.
+  // With motion, the time limit comes first: 10 mm at 100 mm/min = 6 s a pass (each pass
+  // counts in #1, so no pass comes back to the state of another: no proven endless loop).
   setup.machine.maxBlocks = 1000000;
   setup.machine.maxRunTime = 60.0;
-  t = runText("G98 G00 X20. Z0.\nN5 G01 W-10. F100.\nG00 W10.\nGOTO 5\n", {}, setup);
+  t = runText("G98 G00 X20. Z0.\nN5 G01 W-10. F100.\nG00 W10.\n#1=#1+1\nGOTO 5\n", {}, setup);
   ASSERT_TRUE(t.alarm);
   EXPECT_EQ(t.alarm->code, "A133");
-  EXPECT_EQ(t.alarm->range, (SourceRange{4, 1, 4}));
+  EXPECT_EQ(t.alarm->range, (SourceRange{5, 1, 4}));
   EXPECT_GE(t.cycleTime(), 60.0);
   EXPECT_LT(t.cycleTime(), 67.0);
   // A straight program longer than the limit is no loop (issue 29 item 5): it runs to its
@@ -322,14 +323,15 @@ TEST(FlowRun, AnEndlessLoopAroundABigCycleStopsOnItsMoves) {
   // G75 from X52 Z2 to X40 Z-60: 6 mm deep in 1 mm pecks (P1000), a position
   // every 0.1 mm (Q100): 621 positions, each 6 feeds, 5 retracts between them,
   // the way out and the step to the next (the last: back to the start) =
-  // 621 x 13 = 8073 moves a pass.
+  // 621 x 13 = 8073 moves a pass. Each pass counts in #1: no pass comes back to the state of
+  // another (a loop that did would be proven endless, A155, before its third pass).
   const Timeline t = runText(
-      "G21 G99 G97 S500 M03\nG00 X52. Z2.\n#1=0\nWHILE [#1 LT 3] DO1\nG75 R0.5\nG75 X40. Z-60. P1000 Q100 "
-      "F0.05\nEND1\nM30\n",
+      "G21 G99 G97 S500 M03\nG00 X52. Z2.\n#1=0\nWHILE [#1 LT 10] DO1\n#1=#1+1\nG75 R0.5\nG75 X40. Z-60. P1000 "
+      "Q100 F0.05\nEND1\nM30\n",
       RunOptions{}, setup);
   ASSERT_TRUE(t.alarm);
   EXPECT_EQ(t.alarm->code, "A151");
-  EXPECT_EQ(t.alarm->range.line, 7);  // END1, the jump that repeated
+  EXPECT_EQ(t.alarm->range.line, 8);  // END1, the jump that repeated
   EXPECT_EQ(t.alarm->args.at(2), "1000");
   EXPECT_EQ(t.alarm->args.at(3), "10000");
   // The first pass is not repeated; the second counts 8073 and the third passes 10000.
