@@ -230,6 +230,15 @@ try {
         const file = path.join(shotsDir, `page-${w}x${h}-${lang}.png`);
         await page.screenshot({ path: file });
         console.log(`  screenshot ${file}`);
+        // And the tool in the cut: Stop, then Step to the middle of the roughing.
+        await page.click('#stop');
+        for (let i = 0; i < 10; ++i) {
+          await page.click('#step');
+          await page.waitForFunction(() => document.body.dataset.run === 'paused', { timeout: 30000 });
+        }
+        const cutting = path.join(shotsDir, `page-${w}x${h}-${lang}-cutting.png`);
+        await page.screenshot({ path: cutting });
+        console.log(`  screenshot ${cutting}`);
       }
     }
   }
