@@ -124,6 +124,61 @@ try {
     if (sim.status !== 0) check(got.state === 'alarm', `${sample}: the CLI's alarm stops the page's run too`);
   }
 
+  // ------------------------------------------------------------ the real-style programs, core to core
+  // tests/real-style/programs (shop programs' forms): the module in the page's worker checks and
+  // runs each as klueng-cli does: the same errors, cycle time and finished part.
+  {
+    const dir = path.join(root, 'tests/real-style/programs');
+    const programs = fs.existsSync(dir) ? fs.readdirSync(dir).filter((f) => /\.(nc|txt|tap)$/i.test(f)).sort() : [];
+    await page.evaluate(() => {
+      window.testWorker = new Worker('worker.js');
+      let id = 0;
+      window.ask = (msg) => new Promise((resolve) => {
+        const mine = ++id;
+        window.testWorker.onmessage = (e) => { if (e.data.id === mine) resolve(e.data.result || { error: e.data.error }); };
+        window.testWorker.postMessage({ ...msg, id: mine });
+      });
+    });
+    let agree = 0;
+    for (const name of programs) {
+      const file = path.join(dir, name);
+      const bytes = [...fs.readFileSync(file)];
+      const page1 = await page.evaluate(async (b) => {
+        const program = (() => {
+          const u = new Uint8Array(b);
+          try { return new TextDecoder('utf-8', { fatal: true }).decode(u); } catch { return new TextDecoder('windows-874').decode(u); }
+        })().replace(/\r\n?/g, '\n');
+        const c = await window.ask({ type: 'check', text: program, machine: '', units: 0, lang: 0 });
+        const r = await window.ask({ type: 'run', text: program, machine: '', units: 0, lang: 0 });
+        return { errors: c.diagnostics.filter((d) => d.severity === 'error').map((d) => `${d.line}:${d.code}`),
+          ok: r.ok, cycle: r.cycleTime, features: (r.features || []).map((f) => f.text) };
+      }, bytes);
+      const cliCheck = JSON.parse(spawnSync(cli, ['check', file, '--json', '--lang', 'en'], { encoding: 'utf8' }).stdout);
+      const cliErrors = cliCheck.filter((d) => d.severity === 'error' && path.basename(d.file) === name)
+        .map((d) => `${d.line}:${d.code}`);
+      const sim = spawnSync(cli, ['simulate', file, '--cycle-time', '--features', '--no-persist', '--lang', 'en'],
+        { encoding: 'utf8', env: { ...process.env, HOME: scratch, XDG_DATA_HOME: scratch } });
+      const lines = sim.stdout.trim().split('\n').filter(Boolean);
+      let same = JSON.stringify(page1.errors.sort()) === JSON.stringify(cliErrors.sort());
+      if (same && page1.ok && lines.length) {
+        const cliCycle = Number(lines[lines.length - 1]);
+        same = Math.abs(page1.cycle - cliCycle) <= 0.1 && page1.features.length === lines.length - 1 &&
+          page1.features.every((f, i) => {
+            const a = numbers(f);
+            const b = numbers(lines[i]);
+            return a.length === b.length && a.every((v, k) => Math.abs(v - b[k]) <= 0.01);
+          });
+      } else if (same) {
+        same = !page1.ok === (lines.length === 0);
+      }
+      if (!same) console.log(`  ${name}: page ${JSON.stringify(page1).slice(0, 300)}\n    cli errors ${cliErrors} stdout ${lines.slice(-2)}`);
+      agree += same ? 1 : 0;
+    }
+    await page.evaluate(() => window.testWorker.terminate());
+    check(programs.length > 0 && agree === programs.length,
+      `real-style programs: ${agree}/${programs.length} checked and run by the page's module as by klueng-cli`);
+  }
+
   // ------------------------------------------------------------ an error typed, in both languages
   for (const lang of ['en', 'th']) {
     await open('01-step-shaft.txt', lang);
