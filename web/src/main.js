@@ -218,7 +218,7 @@ function forgetRun() {
   runKey = '';
   state = null;
   t = 0;
-  view.dispatch({ effects: setExecuting.of(0) });
+  showExecuting(0);
   showFeatures();
   setRunState('ready');
   $('message').textContent = '';
@@ -262,10 +262,20 @@ async function advanceTo(time) {
     toolKey = state.toolKey;
     toolPicture = toolKey ? makeToolPicture(await call('toolImage')) : null;
   }
-  view.dispatch({ effects: setExecuting.of(state.line || 0) });
+  showExecuting(state.line || 0);
   showStatus();
   draw();
   if (state.finished && time >= run.endTime - 1e-9) finish();
+}
+
+// The executing block is marked and kept in sight, as the desktop's editor follows the run.
+let executing = 0;
+function showExecuting(line) {
+  const effects = [setExecuting.of(line)];
+  if (line !== executing && line >= 1 && line <= view.state.doc.lines)
+    effects.push(EditorView.scrollIntoView(view.state.doc.line(line).from, { y: 'nearest' }));
+  executing = line;
+  view.dispatch({ effects });
 }
 
 function finish() {

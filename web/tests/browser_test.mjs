@@ -276,7 +276,7 @@ try {
         await page.click('#go');
         await page.waitForSelector('body[data-part="yes"]', { timeout: 60000 });
         // The cursor on a block, for its explain line.
-        await page.click('.cm-content');
+        await page.focus('.cm-content');
         await page.keyboard.down('Control');
         await page.keyboard.press('Home');
         await page.keyboard.up('Control');
