@@ -13,6 +13,7 @@
 #include "klueng/core/geometry.h"
 #include "klueng/core/job/job.h"
 #include "klueng/core/machine/kinematics.h"
+#include "klueng/core/number_read.h"
 
 namespace klueng::core::control {
 
@@ -191,7 +192,7 @@ std::optional<MeasureInput> parseMeasureInput(std::string_view text) {
   in.axis = a == 'X' ? Axis::X : Axis::Z;
   const std::string_view number = trim(text.substr(1));
   if (number.empty() || number.front() == '+') return std::nullopt;
-  const auto [end, ec] = std::from_chars(number.data(), number.data() + number.size(), in.value);
+  const auto [end, ec] = readDouble(number.data(), number.data() + number.size(), in.value);
   if (ec != std::errc{} || end != number.data() + number.size() || !std::isfinite(in.value)) return std::nullopt;
   return in;
 }

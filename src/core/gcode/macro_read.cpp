@@ -8,6 +8,7 @@
 #include "diagnostic_codes.h"
 #include "klueng/core/gcode/display_tokens.h"
 #include "klueng/core/gcode/macro.h"
+#include "klueng/core/number_read.h"
 
 namespace klueng::core::gcode {
 
@@ -210,7 +211,7 @@ class Reader {
       }
     }
     double v = 0.0;
-    const auto r = std::from_chars(s_.data() + start, s_.data() + i_, v);
+    const auto r = readDouble(s_.data() + start, s_.data() + i_, v);
     if (r.ec != std::errc()) v = 1e308;
     emit(ExprOp::Constant, v);
     end_ = i_;
@@ -238,7 +239,7 @@ class Reader {
       if (i_ < s_.size() && s_[i_] == '.')
         return fail(codes::kMacroBadVariable, {std::string(s_.substr(start, i_ + 1 - start))}, start);
       double v = 0.0;
-      std::from_chars(s_.data() + start, s_.data() + i_, v);
+      readDouble(s_.data() + start, s_.data() + i_, v);
       emit(ExprOp::Constant, v);
       end_ = i_;
       return true;

@@ -15,6 +15,7 @@
 #include "diagnostic_codes.h"
 #include "klueng/core/gcode/comment.h"
 #include "klueng/core/gcode/macro.h"
+#include "klueng/core/number_read.h"
 
 namespace klueng::core::gcode {
 
@@ -52,7 +53,7 @@ constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1
 // Value of a longer "digits[.digits]" (no sign).
 double parseLongUnsigned(std::string_view digits) {
   double v = 0.0;
-  const auto result = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+  const auto result = readDouble(digits.data(), digits.data() + digits.size(), v);
   if (result.ec == std::errc::result_out_of_range) v = 1e308;  // reported as out of range by the checker
   return v;
 }

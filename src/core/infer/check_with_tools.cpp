@@ -14,10 +14,16 @@ CheckedWithTools checkWhileInferring(const gcode::Program& program, gcode::Check
   const bool toolRule = options.toolsWithBitmap.has_value();
   gcode::CheckOptions grammar = options;
   grammar.toolsWithBitmap.reset();
+#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
+  // The WebAssembly build has no threads (issue 41): the check, then the inference.
+  out.diagnostics = gcode::check(program, grammar);
+  out.inference = infer();
+#else
   // Both only read the program; the inference's result is waited for below.
   std::future<ToolInference> inferred = std::async(std::launch::async, infer);
   out.diagnostics = gcode::check(program, grammar);
   out.inference = inferred.get();
+#endif
   // Where the editor's modal walk could not follow the program, the run did.
   std::vector<Diagnostic> more;
   if (options.modalRules && out.inference.record)

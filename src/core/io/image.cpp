@@ -1,6 +1,16 @@
 #include "klueng/core/io/image.h"
 
+// PNG: libpng on the desktop; the WebAssembly build (issue 41), which has no libpng, reads
+// the same 8-bit RGBA through stb_image (shipped with emscripten), defined by its CMakeLists.
+#if defined(KLUENG_PNG_STB)
+#define STB_IMAGE_STATIC
+#define STB_IMAGE_IMPLEMENTATION
+#define STBI_ONLY_PNG
+#define STBI_NO_STDIO
+#include <stb_image.h>
+#else
 #include <png.h>
+#endif
 
 #include <algorithm>
 #include <bit>
@@ -243,6 +253,46 @@ ReadResult<RgbImage> decodeBmp(std::string_view b, const std::string& fileName) 
   return result;
 }
 
+// 8-bit RGBA rows into the raster; a see-through pixel is empty space, like white.
+RgbImage rgbaImage(int width, int height, const unsigned char* rgba) {
+  RgbImage image;
+  image.width = width;
+  image.height = height;
+  image.pixels.resize(static_cast<std::size_t>(image.width) * image.height);
+  for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+    const unsigned char* p = &rgba[i * 4];
+    image.pixels[i] =
+        p[3] < 128 ? 0xFFFFFFu : static_cast<std::uint32_t>(p[0]) << 16 | static_cast<std::uint32_t>(p[1]) << 8 | p[2];
+  }
+  return image;
+}
+
+#if defined(KLUENG_PNG_STB)
+ReadResult<RgbImage> decodePng(std::string_view bytes, const std::string& fileName) {
+  ReadResult<RgbImage> result;
+  const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+  const int size = static_cast<int>(bytes.size());  // decodeImage refused more than 64 MB
+  int width = 0, height = 0, channels = 0;
+  if (!stbi_info_from_memory(data, size, &width, &height, &channels)) {
+    result.diagnostics.push_back(fileError(codes::kPngDamaged, fileName, {stbi_failure_reason()}));
+    return result;
+  }
+  if (width < 1 || height < 1 || width > kMaxSide || height > kMaxSide) {
+    result.diagnostics.push_back(
+        fileError(codes::kImageSizeRefused, fileName, {std::to_string(width), std::to_string(height)}));
+    return result;
+  }
+  // Palette, grey and 16-bit all become 8-bit RGBA.
+  stbi_uc* rgba = stbi_load_from_memory(data, size, &width, &height, &channels, 4);
+  if (!rgba) {
+    result.diagnostics.push_back(fileError(codes::kPngDamaged, fileName, {stbi_failure_reason()}));
+    return result;
+  }
+  result.value = rgbaImage(width, height, rgba);
+  stbi_image_free(rgba);
+  return result;
+}
+#else
 ReadResult<RgbImage> decodePng(std::string_view bytes, const std::string& fileName) {
   ReadResult<RgbImage> result;
   // libpng's simplified API keeps its setjmp/longjmp error handling inside the
@@ -269,20 +319,11 @@ ReadResult<RgbImage> decodePng(std::string_view bytes, const std::string& fileNa
     png_image_free(&png);
     return result;
   }
-  RgbImage image;
-  image.width = static_cast<int>(png.width);
-  image.height = static_cast<int>(png.height);
-  image.pixels.resize(static_cast<std::size_t>(image.width) * image.height);
-  for (std::size_t i = 0; i < image.pixels.size(); ++i) {
-    const unsigned char* p = &rgba[i * 4];
-    // A see-through pixel is empty space, like white.
-    image.pixels[i] =
-        p[3] < 128 ? 0xFFFFFFu : static_cast<std::uint32_t>(p[0]) << 16 | static_cast<std::uint32_t>(p[1]) << 8 | p[2];
-  }
+  result.value = rgbaImage(static_cast<int>(png.width), static_cast<int>(png.height), rgba.data());
   png_image_free(&png);
-  result.value = std::move(image);
   return result;
 }
+#endif
 
 }  // namespace
 

@@ -11,6 +11,7 @@
 
 #include "io/text_util.h"
 #include "klueng/core/diagnostic_codes.h"
+#include "klueng/core/number_read.h"
 
 #ifndef _WIN32
 #include <fcntl.h>
@@ -59,7 +60,7 @@ ReadResult<MacroVariables> parseMacroVariables(std::string_view text, const std:
     int number = 0;
     double v = 0.0;
     const auto n1 = std::from_chars(name.data(), name.data() + name.size(), number);
-    const auto n2 = std::from_chars(value.data(), value.data() + value.size(), v);
+    const auto n2 = readDouble(value.data(), value.data() + value.size(), v);
     if (name.empty() || n1.ec != std::errc() || n1.ptr != name.data() + name.size() || value.empty() ||
         n2.ec != std::errc() || n2.ptr != value.data() + value.size() || !std::isfinite(v)) {
       bad(codes::kNotVariableLine, std::string(body.substr(0, 40)));

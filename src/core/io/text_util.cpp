@@ -12,6 +12,7 @@
 #include "klueng/core/io/file_read.h"
 #include "klueng/core/io/text_encoding.h"
 #include "klueng/core/diagnostic_codes.h"
+#include "klueng/core/number_read.h"
 
 namespace klueng::core::io::detail {
 
@@ -183,7 +184,7 @@ std::optional<double> parseNumber(std::string_view text) {
   // from_chars does not take a leading '+'.
   std::string_view body = text.front() == '+' ? text.substr(1) : text;
   double value = 0.0;
-  const auto [end, ec] = std::from_chars(body.data(), body.data() + body.size(), value);
+  const auto [end, ec] = readDouble(body.data(), body.data() + body.size(), value);
   if (ec != std::errc() || end != body.data() + body.size() || !std::isfinite(value)) return std::nullopt;
   return value;
 }
