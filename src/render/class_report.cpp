@@ -46,7 +46,7 @@ void paintSummary(QPainter& p, QPdfWriter& writer, const KluengClassPdf& in) {
     header[5] = reportText(codes::kReportColumnInTolerance, lang);
     header[6] = QString();
   }
-  const double widths[kClassPdfColumns] = {0.15, 0.07, 0.14, 0.10, 0.09, 0.11, 0.09, 0.25};
+  const double widths[kClassPdfColumns] = {0.14, 0.07, 0.11, 0.11, 0.11, 0.11, 0.12, 0.23};
   const double rowHeight = 6.5 * mm, top = (in.drawing && in.hasReference ? 36 : 30) * mm;
   const int perPage = std::max(1, static_cast<int>((page.height() - top - 10 * mm) / rowHeight) - 1);
   int passed = 0;
