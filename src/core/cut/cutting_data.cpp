@@ -341,37 +341,85 @@ bool cdSpeedRange(const CuttingDataOptions& options, ToolMaterial tm, double& lo
   return true;
 }
 
-bool cdSpeedOutside(const CutNumbers& c, const CuttingDataOptions& options, ToolMaterial tm) {
-  double lo = 0.0, hi = 0.0;
-  if (c.thread || !cdSpeedRange(options, tm, lo, hi)) return false;
-  return (hi > 0.0 && c.vc > hi * 1.005) || (lo > 0.0 && c.vc < lo * 0.995 && c.diameter > 0.0);
-}
-
-// Whether a cutting move might warn, whatever depth it turns out to cut (a superset of the
-// warnings measureCuts gives it): what the check measures.
-bool cdCouldWarn(const CutNumbers& c, const CuttingDataOptions& options) {
-  const std::size_t k = static_cast<std::size_t>(c.tool - 1);
-  if (cdSpeedOutside(c, options, options.toolMaterial[k])) return true;
-  if (c.ra) {
-    const double limit = std::min(finishLimit(options, false, c.diameter, c.z0, c.z1),
-                                  finishLimit(options, true, c.diameter, c.z0, c.z1));
-    if (limit > 0.0 && *c.ra > limit * 1.005) return true;
+// Whether a move might warn, whatever depth it turns out to cut (a superset of the warnings
+// measureCuts gives it), from the move alone: what the check measures. Lean, since it is asked of
+// every move of a long program: no CutNumbers, the stations' facts worked out once.
+class CdCandidates {
+ public:
+  CdCandidates(const CutSetup& setup, const CuttingDataOptions& options) : setup_(setup), options_(options) {
+    const Material* material = options.material;
+    const bool limits = options.spindlePowerKw > 0.0 || options.spindleTorqueNm > 0.0;
+    for (std::size_t k = 0; k < io::kToolCount; ++k) {
+      speedJudged_[k] = cdSpeedRange(options, options.toolMaterial[k], lo_[k], hi_[k]);
+      const bool force = material && material->kc11 > 0.0 && options.drillDiameter[k] <= 0.0;
+      always_[k] = options.edgeLength[k] > 0.0 || (force && limits);  // the depth decides
+    }
   }
-  if (options.edgeLength[k] > 0.0) return true;
-  const bool force = options.material && options.material->kc11 > 0.0 && !c.thread && options.drillDiameter[k] <= 0.0;
-  return force && (options.spindlePowerKw > 0.0 || options.spindleTorqueNm > 0.0);
+
+  bool couldWarn(const machine::Move& m) const {
+    if (m.kind == machine::MoveKind::Rapid || m.kind == machine::MoveKind::Dwell) return cdOverChuck(m, options_);
+    if (m.tool < 1 || m.tool > io::kToolCount) return false;
+    const std::size_t k = static_cast<std::size_t>(m.tool - 1);
+    if (always_[k] || cdOverChuck(m, options_)) return true;
+    if (m.kind == machine::MoveKind::Thread || m.rpm <= 0.0) return false;  // a thread's speed and finish: not judged
+    const double drill = options_.drillDiameter[k];
+    const bool marks = !options_.finishMarks.empty();
+    double diameter = drill;
+    if (speedJudged_[k] || marks) {
+      const double d0 = drill > 0.0 ? drill : 2.0 * std::abs(m.path.start.y());
+      const double d1 = drill > 0.0 ? drill : 2.0 * std::abs(m.path.end.y());
+      const double vc0 = d0 * m.rpm, vc1 = d1 * m.rpmEnd;  // x pi / 1000 below
+      diameter = vc1 > vc0 ? d1 : d0;
+      const double vc = std::numbers::pi * std::max(vc0, vc1) / 1000.0;
+      if (speedJudged_[k] &&
+          ((hi_[k] > 0.0 && vc > hi_[k] * 1.005) || (lo_[k] > 0.0 && vc < lo_[k] * 0.995 && diameter > 0.0)))
+        return true;
+    }
+    if (drill > 0.0) return false;
+    const int row = m.offset >= 1 ? m.offset : m.tool;
+    const double offsetR = row >= 1 && row <= io::kOffsetCount ? setup_.offsets.at(row).r : 0.0;
+    const double r = offsetR > 0.0 ? offsetR : options_.noseRadius[k];
+    if (r <= 0.0) return false;
+    // Ra = f^2 / (32 r) * 1000 above the limit, f = feed / rpm, without a division a move.
+    const double limit = !marks ? options_.finishRa
+                                : std::min(finishLimit(options_, false, diameter, m.path.start.x(), m.path.end.x()),
+                                           finishLimit(options_, true, diameter, m.path.start.x(), m.path.end.x()));
+    return limit > 0.0 && m.feed * m.feed > limit * 1.005 * 32.0 * r / 1000.0 * m.rpm * m.rpm;
+  }
+
+ private:
+  const CutSetup& setup_;
+  const CuttingDataOptions& options_;
+  std::array<bool, io::kToolCount> speedJudged_{}, always_{};
+  std::array<double, io::kToolCount> lo_{}, hi_{};
+};
+
+// The codes the run could raise at all, from its tools and the machine (a superset): once each has
+// been said warningsPerCode times, the check has nothing more to say and stops measuring.
+std::vector<const char*> cdPossibleCodes(const CuttingDataOptions& options) {
+  std::vector<const char*> out = {codes::kFinishTooRough};
+  const bool force = options.material && options.material->kc11 > 0.0;
+  bool speed = false, edge = false;
+  for (std::size_t k = 0; k < io::kToolCount; ++k) {
+    double lo = 0.0, hi = 0.0;
+    speed = speed || cdSpeedRange(options, options.toolMaterial[k], lo, hi);
+    edge = edge || options.edgeLength[k] > 0.0;
+  }
+  if (speed) out.insert(out.end(), {codes::kCutSpeedHigh, codes::kCutSpeedLow});
+  if (edge) out.push_back(codes::kDepthOverEdge);
+  if (force && options.spindlePowerKw > 0.0) out.push_back(codes::kPowerOverSpindle);
+  if (force && options.spindleTorqueNm > 0.0) out.push_back(codes::kTorqueOverSpindle);
+  if (options.chuckMaxRpm > 0.0) out.push_back(codes::kRpmOverChuck);
+  return out;
 }
 
-// The last move that might warn, +1; 0 when none might.
+// The last move that might warn, +1; 0 when none might (looked for from the end).
 std::size_t cdMovesToMeasure(const machine::Timeline& timeline, const CutSetup& setup,
                              const CuttingDataOptions& options, std::size_t end) {
-  std::size_t last = 0;
-  for (std::size_t i = 0; i < end; ++i) {
-    const machine::Move& m = timeline.moves[i];
-    if (cdOverChuck(m, options) || (cdCutting(m) && cdCouldWarn(cdStockFree(m, i, setup, options), options)))
-      last = i + 1;
-  }
-  return last;
+  const CdCandidates candidates(setup, options);
+  for (std::size_t i = end; i > 0; --i)
+    if (candidates.couldWarn(timeline.moves[i - 1])) return i;
+  return 0;
 }
 
 // The path's radius at z (a line's or an arc's chord; the nearer end outside its Z range).
@@ -405,8 +453,14 @@ CuttingData measureCuts(const machine::Timeline& timeline, const CutSetup& setup
     data.lastInside.assign(static_cast<std::size_t>(stock.columnCount()), -1);
   }
 
+  const std::vector<const char*> possible =
+      options.warningsOnly ? cdPossibleCodes(options) : std::vector<const char*>{};
+  const auto saidAll = [&] {
+    return std::all_of(possible.begin(), possible.end(),
+                       [&](const char* code) { return warn.perCode[code] >= options.warningsPerCode; });
+  };
   const auto& moves = timeline.moves;
-  for (std::size_t i = 0; i < measured; ++i) {
+  for (std::size_t i = 0; i < measured && !(options.warningsOnly && saidAll()); ++i) {
     const machine::Move& m = moves[i];
     tally.clear();
     sim.advanceTo(m.tEnd);
