@@ -649,6 +649,14 @@
         <translation>รูปร่าง / สิ่งที่พบ</translation>
     </message>
     <message>
+        <source>Ra (µm)</source>
+        <translation>Ra (ไมครอน)</translation>
+    </message>
+    <message>
+        <source>Ra %1 µm, Rz %2 µm: the theoretical roughness of line %3&apos;s cut (feed %4, nose R%5)</source>
+        <translation>Ra %1 ไมครอน, Rz %2 ไมครอน: ความหยาบผิวตามทฤษฎีของการตัดในบรรทัด %3 (อัตราป้อน %4 รัศมีจมูกมีด R%5)</translation>
+    </message>
+    <message>
         <source>Where</source>
         <translation>ตำแหน่ง</translation>
     </message>

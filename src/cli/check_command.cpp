@@ -1,6 +1,6 @@
 // klueng-cli check FILE|FOLDER... [--lang en|th] [--dialect fanuc|haas|classic] [--json]
 //                                 [--config DIR] [--summary] [--stock DxL[xBORE][in]] [--units mm|inch]
-//                                 [--tool N=ID]...
+//                                 [--tool N=ID]... [--design PART.json|PART.dxf]
 // Reads each program, parses and checks it (SPEC 3-5, 13) against the tool
 // table found by findConfigDir, and prints every diagnostic: one GCC-style
 // line each, or one JSON array for all files. A file without a job header
@@ -8,6 +8,8 @@
 // the program names in comments or cycles come from the library (a note says
 // which; --tool N=ID sets a station for this run); T words naming stations
 // still without a tool are E305. Exit 0 = no errors, 1 = errors in a program,
+// The cutting-data warnings (W330-W336, docs/cutting-data.md) come with the check's own,
+// measured on the run the check records; --design gives W332 the part's roughness marks.
 // 2 = a file could not be read, a setup file (machine.cfg, tools.cfg,
 // offset.cfg, a tool bitmap) has errors, or the command line is wrong.
 #include <fmt/format.h>
@@ -38,6 +40,7 @@ struct CheckOptions : JobOptions {
   std::vector<std::string> files;
   bool json = false;
   bool summary = false;
+  std::string design;  // --design PART.json|PART.dxf: its roughness marks judge the finishing feeds (W332)
 };
 
 // A --tool choice refused once the turret is known (a text already in `lang`), then the usage.
@@ -52,6 +55,7 @@ std::optional<int> parseArgs(const std::vector<std::string>& args, CheckOptions&
   for (CliOption& row : runOptions(o)) options.push_back(std::move(row));
   options.push_back(flagOption("--json", o.json));
   options.push_back(flagOption("--summary", o.summary));
+  options.push_back(valueOption("--design", o.design));
   const auto file = [&o](const std::string& arg) {
     o.files.push_back(arg);
     return true;
@@ -122,6 +126,12 @@ int runCheck(const std::vector<std::string>& args) {
       jobRequest(config, o.dialect, o.powerOnUnits, o.stock, o.tools, error, o.lang);
   if (!request) return toolChoiceError(o.lang, error);
   request->calculatorInput = o.calculatorInput;
+  if (!o.design.empty()) {
+    const std::optional<design::PartDesign> part =
+        readPartDrawing(o.design, {}, config.setup.machine.chuckGrip, o.lang);
+    if (!part) return 2;  // said, on its line
+    request->finishMarks = design::finishMarks(*part);
+  }
 
   std::vector<FileDiagnostic> all = config.diagnostics;
   bool anyError = false;

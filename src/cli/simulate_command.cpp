@@ -9,6 +9,7 @@
 // (a note on stderr says which, SPEC 2 ext).
 //                          [--tool N=ID]...   (library tool ID at station N for this run)
 //                          [--cutting-data out.csv]  (per block: Vc, f, ap, Rz/Ra, power; W330-W336)
+//                          [--design PART.json|PART.dxf]  (its roughness marks for W332)
 // Checks the program (errors -> printed, exit 1), runs it into a Timeline and
 // writes what was asked for. An alarm is printed like a diagnostic
 // (FILE:LINE:COL: alarm A104: ...) and gives exit 1; the trace up to it is
@@ -60,6 +61,7 @@ struct SimulateOptions : JobOptions {
   CutOutputOptions cut;                   // --png --profile --json --resolution (cut_outputs.h)
   std::optional<DisplayUnits> showUnits;  // --show-units (nullopt: auto, the program's)
   std::string cuttingDataPath;            // --cutting-data out.csv (issue 39)
+  std::string design;                     // --design PART: its roughness marks judge the finishing feeds (W332)
 };
 
 // simulate's option table (cli_common.h): the shared rows, then its own. New outputs
@@ -80,6 +82,7 @@ std::optional<int> parseSimulateOptions(const std::vector<std::string>& args, Si
       valueOption("--svg", o.cut.svgPath),
       valueOption("--dxf", o.cut.dxfPath),
       valueOption("--cutting-data", o.cuttingDataPath),
+      valueOption("--design", o.design),
       flagOption("--features", o.cut.features),
       flagOption("--no-stock", noStock),
       flagOption("--part-check", o.partCheck),
@@ -161,6 +164,12 @@ int runSimulate(const std::vector<std::string>& args) {
     return 2;
   }
   request->calculatorInput = o.calculatorInput;
+  if (!o.design.empty()) {
+    const std::optional<design::PartDesign> part =
+        readPartDrawing(o.design, {}, config.setup.machine.chuckGrip, o.lang);
+    if (!part) return 2;  // said, on its line
+    request->finishMarks = design::finishMarks(*part);
+  }
   programArgument.into(*request);
   request->run.optionalStop = o.optionalStop;
   request->run.blockSkip = o.blockSkip;
@@ -182,6 +191,7 @@ int runSimulate(const std::vector<std::string>& args) {
   // before the run, as a compiler refuses `-o` naming its source (issue 29).
   std::vector<std::string> inputs = programInputs(o.file, job, config);
   inputs.push_back(variablesPath);  // #500-#999 are read too
+  if (!o.design.empty()) inputs.push_back(o.design);
   if (!o.machine.empty() && std::filesystem::is_regular_file(o.machine)) inputs.push_back(o.machine);
   if (!outputsAllowed({o.tracePath, o.cut.pngPath, o.cut.profilePath, o.cut.jsonPath, o.cut.svgPath, o.cut.dxfPath,
                        o.cuttingDataPath},
@@ -255,6 +265,7 @@ int runSimulate(const std::vector<std::string>& args) {
     const cut::MaterialTable& materials = cut::shippedMaterials();
     cut::CuttingDataOptions options =
         cut::cuttingDataOptions(programFile.header.material, cutSetup.tools, cutSetup.machine, materials);
+    options.finishMarks = request->finishMarks;
     options.units = machine::programUnits(timeline, gcode::powerOnUnitsOf(runOptions.dialect, runOptions.powerOnUnits));
     if (!options.material) {
       const Diagnostic note =
@@ -266,7 +277,12 @@ int runSimulate(const std::vector<std::string>& args) {
     }
     const cut::CuttingData data =
         cut::measureCuts(timeline, cut::CutSetup::from(programFile.header, cutSetup), options);
-    for (const Diagnostic& w : data.warnings) printDiagnostic(job.fileOf(w), w, o.lang);
+    // The check's own (job.diagnostics(), printed above) are not said twice.
+    for (const Diagnostic& w : data.warnings)
+      if (std::none_of(job.diagnostics().begin(), job.diagnostics().end(), [&](const Diagnostic& d) {
+            return d.code == w.code && d.range.line == w.range.line && d.range.file == w.range.file;
+          }))
+        printDiagnostic(job.fileOf(w), w, o.lang);
     cuttingDataWritten = writeOutput(o.cuttingDataPath, cut::formatCuttingDataCsv(data, options.units), o.lang);
   }
   const std::optional<Diagnostic>& alarm = cut.alarm ? cut.alarm : timeline.alarm;

@@ -52,6 +52,7 @@ void ExplainBar::measureRun() {
   core::cut::CuttingDataOptions options =
       core::cut::cuttingDataOptions(header.material, setup.tools, setup.machine, core::cut::shippedMaterials());
   options.units = core::machine::programUnits(*timeline, core::gcode::InputUnits::Millimetre);
+  options.finishMarks = finishMarks_;
   dataUnits_ = options.units;
   watcher_.setFuture(QtConcurrent::run([timeline, header, setup, options] {
     return std::shared_ptr<const core::cut::CuttingData>(std::make_shared<core::cut::CuttingData>(

@@ -33,6 +33,8 @@ class ExplainBar : public QLabel {
   // more than kCuttingDataMoveLimit moves).
   static constexpr std::size_t kCuttingDataMoveLimit = 250000;
   const core::cut::CuttingData* cuttingData() const { return data_.get(); }
+  // The drawing's roughness marks the finishing feeds are judged by (W332): the next run's.
+  void setFinishMarks(std::vector<core::cut::FinishMark> marks) { finishMarks_ = std::move(marks); }
 
  signals:
   // The run's cutting data is measured (the plot under the output view draws it).
@@ -52,6 +54,7 @@ class ExplainBar : public QLabel {
   CodeEditor* editor_;
   std::shared_ptr<const core::cut::CuttingData> data_;
   core::DisplayUnits dataUnits_ = core::DisplayUnits::Mm;
+  std::vector<core::cut::FinishMark> finishMarks_;
   std::weak_ptr<const core::machine::Timeline> dataFor_;  // the timeline data_ (or the one computing) is of
   QFutureWatcher<std::shared_ptr<const core::cut::CuttingData>> watcher_;
 };

@@ -503,7 +503,10 @@ CheckController::Request MainWindow::checkRequest() const {
   file.header = document_->header();
   file.plainGcode = document_->isPlainGcode();
   file.gcodeFirstLine = document_->gcodeFirstLine();
-  return jobDoc_.checkInput(std::move(file), programFolder().toStdString());
+  CheckController::Request r = jobDoc_.checkInput(std::move(file), programFolder().toStdString());
+  // A program made in the Part Designer: its roughness marks judge the finishing feeds (W332, issue 39).
+  if (document_->design()) r.finishMarks = core::design::finishMarks(*document_->design());
+  return r;
 }
 
 void MainWindow::onCheckFinished(const CheckController::JobPtr& job) {
@@ -522,6 +525,7 @@ void MainWindow::onCheckFinished(const CheckController::JobPtr& job) {
   // The job's tools: library choices for the stations the program uses (a note per choice in Tool Select).
   const bool toolsChanged = !sameTools(job->tools().setup, jobDoc_.tools().setup);
   jobDoc_.setJob(job);
+  explainBar_->setFinishMarks(job->input().finishMarks);
   // Which word decided how lengths without a decimal point are read (point_reading.h), for the strip.
   pointNote_.reset();
   for (const core::Diagnostic& d : found)

@@ -80,11 +80,12 @@ PartPanel::PartPanel(QWidget* parent, std::function<Source()> source)
   layout->addLayout(bar);
   list_ = new QTreeWidget(body);
   list_->setObjectName(QStringLiteral("partList"));
-  list_->setColumnCount(3);
+  list_->setColumnCount(4);
   list_->setAlternatingRowColors(true);
   list_->header()->setSectionResizeMode(0, QHeaderView::Stretch);
   list_->header()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
   list_->header()->setSectionResizeMode(2, QHeaderView::ResizeToContents);
+  list_->header()->setSectionResizeMode(3, QHeaderView::ResizeToContents);
   layout->addWidget(list_);
   setWidget(body);
   connect(check_, &QPushButton::clicked, this, &PartPanel::analyse);
@@ -125,7 +126,7 @@ void PartPanel::retranslateUi() {
   compare_->setItemText(0, tr("No comparison"));
   compare_->setItemText(1, tr("Compare: without G41/G42"));
   compare_->setItemText(2, tr("Compare: sharp nose (R 0)"));
-  list_->setHeaderLabels({tr("Feature / finding"), tr("Where"), tr("Line")});
+  list_->setHeaderLabels({tr("Feature / finding"), tr("Where"), tr("Line"), tr("Ra (µm)")});
   if (features_) features_->setText(0, tr("Features"));
   if (defects_) defects_->setText(0, tr("Part check"));
   if (differences_) differences_->setText(0, tr("Compensation"));
@@ -163,6 +164,7 @@ void PartPanel::analyse() {
     std::shared_ptr<const core::job::Job> job;
     cut::PartCheck check;
     cut::PartFeatures part;
+    cut::CuttingData measured;  // the run's cuts: the roughness each surface got (issue 39)
     std::optional<cut::CompComparison> comparison;
   };
   const auto done = offGuiThread([input = std::move(input), comparison]() {
@@ -175,6 +177,7 @@ void PartPanel::analyse() {
     const machine::Timeline programmed = cut::programmedPath(*job.program(), job.setup(), job.input().run, *timeline);
     a->check = cut::checkPart(*timeline, programmed, setup);
     a->part = cut::partFeatures(a->check.cut);  // the part the check cut, not a second cut
+    a->measured = cut::measureRun(*timeline, job.file()->header, job.setup(), job.units(), job.input().finishMarks);
     if (comparison > 0) {
       const auto with = comparison == 1 ? cut::CompareWith::NoCompensation : cut::CompareWith::SharpNose;
       a->comparison = cut::compareCompensation(*job.program(), job.setup(), job.input().run, setup, with);
@@ -194,9 +197,22 @@ void PartPanel::analyse() {
   features_ = new QTreeWidgetItem(list_);
   for (const auto* side : {&part.outside, &part.inside})
     for (const cut::PartFeature& f : *side) {
+      // The roughness its surface got from the cut that left it (theoretical, Ra = f²/32r): the
+      // block in the Line column (activating the row goes there), the numbers in the tooltip.
+      const std::optional<cut::SurfaceFinish> got = cut::surfaceFinishOf(done->measured, check.cut, f);
       QTreeWidgetItem* item = row(features_, qs(cut::describeFeature(f, lang, units_)),
-                                  qs(cut::featureLabel(f, lang, units_)), 0, f.zLeft, f.zRight);
+                                  qs(cut::featureLabel(f, lang, units_)), got ? got->line : 0, f.zLeft, f.zRight);
       item->setData(0, kPathRole, QVariant::fromValue(profileOf(f)));
+      if (got) {
+        item->setText(3, QString::number(got->ra, 'f', 2));
+        item->setToolTip(3,
+                         tr("Ra %1 µm, Rz %2 µm: the theoretical roughness of line %3's cut (feed %4, nose R%5)")
+                             .arg(got->ra, 0, 'f', 2)
+                             .arg(got->rz, 0, 'f', 1)
+                             .arg(got->line)
+                             .arg(qs(units_.feed(got->feed, true)) + QLatin1Char(' ') + qs(units_.feedUnit(true, lang)),
+                                  qs(units_.size(got->noseRadius, 3))));
+      }
     }
   defects_ = new QTreeWidgetItem(list_);
   for (const Diagnostic& d : cut::partCheckDiagnostics(check, units_)) {

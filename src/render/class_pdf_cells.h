@@ -28,6 +28,9 @@ class ClassPdfCells {
                            ? std::string()
                            : std::to_string(in) + "/" + std::to_string(r.inspection.size()));
       cells_.push_back(r.compared ? core::gcode::formatFixed(r.deviation.gouge, 3) : "");
+      // The cutting-data warnings (issue 39), code and line; "–" for a program that ran without any.
+      const std::string cutting = core::job::cuttingWarningsText(r.graded, lang);
+      cells_.push_back(!cutting.empty() || r.graded.errors > 0 || !r.graded.alarm.empty() ? cutting : "–");
       // A refused entry (a link out of the folder, a pipe) gets no sheet: it is never read.
       paths_.push_back(r.graded.refusal ? std::string() : r.path);
       dimensions_ = static_cast<int>(r.inspection.size());

@@ -6,12 +6,14 @@
 #include <cstddef>
 
 extern "C" {
+enum { kClassPdfColumns = 8 };
 struct KluengClassPdf {
   int thai;                       // 1: Thai texts and dates
   const char* reference;          // the reference program's name
   double tolerance;               // mm on the diameter
   int rows;                       // students
-  const char* const* cells;       // rows x 7 (program, result, errors, alarm, cycle time s, leftover, gouge), UTF-8
+  const char* const* cells;       // rows x kClassPdfColumns (program, result, errors, alarm, cycle time s, leftover,
+                                  // gouge, cutting-data warnings), UTF-8
   int sheets;                     // with --sheets: each student's program sheet and drawing follow
   const char* const* sheetPaths;  // sheets paths, in row order
   const char* configDir;          // the setup for the drawings

@@ -4,6 +4,7 @@
 #include <QBuffer>
 #include <QCoreApplication>
 #include <QFileInfo>
+#include <QFontMetricsF>
 #include <QGuiApplication>
 #include <QPageLayout>
 #include <QPainter>
@@ -25,7 +26,8 @@ namespace klueng::render {
 namespace {
 
 QString cell(const KluengClassPdf& in, int row, int column) {
-  return QString::fromUtf8(in.cells[static_cast<std::size_t>(row) * 7 + static_cast<std::size_t>(column)]);
+  return QString::fromUtf8(
+      in.cells[static_cast<std::size_t>(row) * kClassPdfColumns + static_cast<std::size_t>(column)]);
 }
 
 // The summary table, as many pages as it needs. Returns false when nothing could be drawn.
@@ -36,15 +38,15 @@ void paintSummary(QPainter& p, QPdfWriter& writer, const KluengClassPdf& in) {
   const QRectF page(0, 0, writer.width(), writer.height());
   namespace codes = core::codes;
   QStringList header;
-  for (const char* code :
-       {codes::kReportColumnProgram, codes::kReportColumnResult, codes::kReportColumnErrors, codes::kReportColumnAlarm,
-        codes::kReportColumnSeconds, codes::kReportColumnLeftover, codes::kReportColumnGouge})
+  for (const char* code : {codes::kReportColumnProgram, codes::kReportColumnResult, codes::kReportColumnErrors,
+                           codes::kReportColumnAlarm, codes::kReportColumnSeconds, codes::kReportColumnLeftover,
+                           codes::kReportColumnGouge, codes::kReportColumnCutting})
     header << reportText(code, lang);
   if (in.drawing && !in.hasReference) {  // the drawing's dimensions in tolerance, no leftover or gouge
     header[5] = reportText(codes::kReportColumnInTolerance, lang);
     header[6] = QString();
   }
-  const double widths[7] = {0.19, 0.08, 0.17, 0.13, 0.13, 0.15, 0.15};
+  const double widths[kClassPdfColumns] = {0.14, 0.07, 0.11, 0.11, 0.11, 0.11, 0.12, 0.23};
   const double rowHeight = 6.5 * mm, top = (in.drawing && in.hasReference ? 36 : 30) * mm;
   const int perPage = std::max(1, static_cast<int>((page.height() - top - 10 * mm) / rowHeight) - 1);
   int passed = 0;
@@ -80,9 +82,13 @@ void paintSummary(QPainter& p, QPdfWriter& writer, const KluengClassPdf& in) {
     auto row = [&](const QStringList& texts, bool head, int index) {
       double x = 0;
       if (!head && index % 2 == 1) p.fillRect(QRectF(0, y, page.width(), rowHeight), QColor(242, 242, 242));
-      for (int c = 0; c < 7; ++c) {
+      for (int c = 0; c < kClassPdfColumns; ++c) {
         const double w = widths[c] * page.width();
-        p.setFont(head ? boldFont : textFont);
+        // A heading shrinks to its column (down to about 6 pt) rather than lose its words.
+        QFont font = head ? boldFont : textFont;
+        for (int i = 0; head && i < 4 && QFontMetricsF(font, p.device()).horizontalAdvance(texts[c]) > w - 2 * mm; ++i)
+          font.setPointSizeF(font.pointSizeF() * 0.9);
+        p.setFont(font);
         p.setPen(!head && c == 1 ? (texts[c] == QStringLiteral("pass") ? QColor(0, 120, 0) : QColor(190, 0, 0))
                                  : QColor(Qt::black));
         QString text = texts[c];
@@ -99,7 +105,7 @@ void paintSummary(QPainter& p, QPdfWriter& writer, const KluengClassPdf& in) {
     p.drawLine(QPointF(0, y), QPointF(page.width(), y));
     for (int r = first; r < std::min(in.rows, first + perPage); ++r) {
       QStringList texts;
-      for (int c = 0; c < 7; ++c) texts << cell(in, r, c);
+      for (int c = 0; c < kClassPdfColumns; ++c) texts << cell(in, r, c);
       row(texts, false, r);
     }
   }

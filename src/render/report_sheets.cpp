@@ -192,7 +192,8 @@ namespace {
 // given), then its finished part, cut only when `cutPart` (the drawing).
 // The job's timeline and cut are computed here when nobody asked before: call on a worker thread.
 StockShape runForReport(const core::job::Job& job, ReportLanguage lang, QString* note, ReportData* times, bool cutPart,
-                        core::cut::PartFeatures* features = nullptr) {
+                        core::cut::PartFeatures* features = nullptr,
+                        std::vector<std::pair<core::cut::PartFeature, core::cut::SurfaceFinish>>* finishes = nullptr) {
   if (!job.file()) return StockShape{};
   const core::io::ProgramFile& file = *job.file();
   const StockShape blank = stockShapeFromBlank(file.header.diameterMm(), file.header.lengthMm(), file.header.boreMm());
@@ -218,6 +219,18 @@ StockShape runForReport(const core::job::Job& job, ReportLanguage lang, QString*
   if (features) {
     *features = core::cut::partFeatures(part);
     core::cut::addThreadLeadChamfers(part, *features);  // the chamfer before a thread is the designer's
+    // The roughness each surface got: the run measured, each surface's last cut (issue 39).
+    if (finishes && !cut.alarm()) {
+      finishes->clear();
+      const core::cut::CuttingData measured = core::cut::measureRun(*timeline, file.header, job.setup(), job.units());
+      for (const auto* side : {&features->outside, &features->inside})
+        for (const core::cut::PartFeature& f : *side)
+          if (f.isNoseFillet()) {
+            continue;  // the tool's print in a corner, not a surface the drawing gives
+          } else if (const auto got = core::cut::surfaceFinishOf(measured, cut.stock(), f)) {
+            finishes->emplace_back(f, *got);
+          }
+    }
   }
   StockShape shape = stockShapeFromStock(part);
   shape.blank = QRectF();  // a drawing shows the part, not the bar it came from
@@ -231,7 +244,7 @@ StockShape finishedPart(const core::job::Job& job, ReportLanguage lang, QString*
 }
 
 void addRunResults(ReportData& data, const core::job::Job& job, ReportLanguage lang, bool withPart) {
-  const StockShape part = runForReport(job, lang, &data.partNote, &data, withPart, &data.features);
+  const StockShape part = runForReport(job, lang, &data.partNote, &data, withPart, &data.features, &data.finishes);
   if (withPart) data.part = part;
 }
 
@@ -389,6 +402,55 @@ QRectF partSceneRect(const StockShape& part) {
   if (r.isEmpty()) r = part.blank.united(QRectF(part.blank.left(), 0, part.blank.width(), part.blank.height()));
   return r;
 }
+}  // namespace
+
+namespace {
+
+// The roughness each surface got (issue 39): a heading and a row per surface where the drawing
+// leaves room — left of the title block under a drawing across the sheet, above it beside one.
+void paintFinishes(QPainter& painter, const DrawingLayout& l, const ReportData& data, ReportLanguage lang) {
+  if (data.finishes.empty()) return;
+  const double mm = l.pixelsPerMm;
+  const bool beside = l.drawingArea.right() <= l.titleBlock.left() + 1.0;
+  const QRectF box = beside ? QRectF(l.titleBlock.left(), l.drawingArea.top(), l.titleBlock.width(),
+                                     l.titleBlock.top() - 4 * mm - l.drawingArea.top())
+                            : QRectF(l.frame.left() + 5 * mm, l.titleBlock.top(),
+                                     l.titleBlock.left() - 9 * mm - l.frame.left(), l.titleBlock.height());
+  const double rowHeight = 4.6 * mm;
+  const int rows = static_cast<int>(box.height() / rowHeight) - 1;
+  if (rows < 1 || box.width() < 40 * mm) return;
+  const core::Lang coreLang = lang == ReportLanguage::Thai ? core::Lang::Th : core::Lang::En;
+  painter.save();
+  painter.setPen(Qt::black);
+  drawFitted(painter, QRectF(box.left(), box.top(), box.width(), rowHeight),
+             reportText(core::codes::kReportFinishTitle, lang), reportFont(9, true), Qt::AlignLeft | Qt::AlignVCenter);
+  const int count = static_cast<int>(data.finishes.size());
+  const int shown = count > rows ? rows - 1 : count;
+  const auto qs = [](const std::string& s) { return QString::fromStdString(s); };
+  for (int i = 0; i < shown; ++i) {
+    const auto& [f, got] = data.finishes[static_cast<std::size_t>(i)];
+    QString surface = qs(core::cut::featureLabel(f, coreLang, data.units));
+    if (f.kind == core::cut::FeatureKind::Face)
+      surface = qs(core::cut::featureKindName(f.kind, coreLang)) + QStringLiteral(" Z") + qs(data.units.size(f.zLeft));
+    else
+      surface += QStringLiteral(" Z%1…%2").arg(qs(data.units.size(f.zRight)), qs(data.units.size(f.zLeft)));
+    if (f.side == core::cut::FeatureSide::Inside) surface = reportText(core::codes::kReportInside, lang, {surface});
+    const QString text = reportText(
+        core::codes::kReportFinishRow, lang,
+        {surface, QString::number(got.ra, 'f', 2), QString::number(got.rz, 'f', 1), QString::number(got.line),
+         QString::number(data.units.value(got.feed), 'g', 3) + QLatin1Char(' ') +
+             qs(data.units.feedUnit(true, coreLang)),
+         qs(data.units.size(got.noseRadius, 3))});
+    drawFitted(painter, QRectF(box.left(), box.top() + (i + 1) * rowHeight, box.width(), rowHeight), text,
+               reportFont(8.5), Qt::AlignLeft | Qt::AlignVCenter);
+  }
+  if (shown < count)
+    drawFitted(painter, QRectF(box.left(), box.top() + (shown + 1) * rowHeight, box.width(), rowHeight),
+               reportText(core::codes::kReportFinishMore, lang, {QString::number(count - shown)}), reportFont(8.5),
+               Qt::AlignLeft | Qt::AlignVCenter);
+  painter.restore();
+}
+
 }  // namespace
 
 DrawingLayout drawingLayout(const QPagedPaintDevice& device, const StockShape& part) {
@@ -565,6 +627,8 @@ void paintDrawingSheet(QPainter& painter, QPagedPaintDevice& device, const Repor
     drawFitted(painter, QRectF(l.frame.left() + 5 * mm, l.frame.top() + 14 * mm, l.frame.width() - 10 * mm, 7 * mm),
                data.partNote, reportFont(10), Qt::AlignLeft | Qt::AlignVCenter);
   }
+
+  paintFinishes(painter, l, data, lang);
 
   // Title block.
   const QString fileName = data.fileName.isEmpty() ? t.untitled : data.fileName;

@@ -28,6 +28,7 @@
 #include <QSizeF>
 #include <QString>
 
+#include "klueng/core/cut/cutting_data.h"
 #include "klueng/core/cut/part_features.h"
 #include "klueng/core/gcode/code_table.h"
 #include "klueng/core/io/program_file.h"
@@ -57,6 +58,9 @@ struct ReportData {
   QString partNote;                  // printed under the drawing when the part is not the finished one
   core::cut::PartFeatures features;  // the part's features, dimensioned on the drawing (empty: overall size only)
   DesignMarks marks;                 // tolerances and surface finish from a part design (none for a plain program)
+  // The roughness each feature's surface got from the cut that left it (issue 39; cut::surfaceFinishOf):
+  // listed beside the title block. Filled by addRunResults with the part.
+  std::vector<std::pair<core::cut::PartFeature, core::cut::SurfaceFinish>> finishes;
   core::UnitFormat units;            // the unit the drawing's dimensions are written in (issue 28 item 4)
   // Cycle time (issue 11): total and per tool; total < 0 = not known (the program has errors).
   double cycleTime = -1.0;
@@ -68,7 +72,7 @@ struct ReportData {
 // These ask the Job for its timeline (and cut): call them on a worker thread.
 void addCycleTimes(ReportData& data, const core::job::Job& job);
 // The same and, with `withPart`, data.part, data.features and data.partNote as
-// finishedPart gives them — from the job's one run.
+// finishedPart gives them — from the job's one run — and data.finishes (the run measured).
 void addRunResults(ReportData& data, const core::job::Job& job, ReportLanguage lang, bool withPart);
 // "3 min 12.4 s" / "3 นาที 12.4 วินาที".
 QString durationText(double seconds, ReportLanguage lang);

@@ -103,7 +103,8 @@ TEST(CliClass, ThirtyStudentsGetTheRightPassOrFail) {
   std::istringstream csv(slurp(csvPath));
   std::string line;
   std::getline(csv, line);
-  EXPECT_EQ(line, "file,result,errors,first_error,alarm,cycle_time_s,leftover_mm,leftover_z,gouge_mm,gouge_z");
+  EXPECT_EQ(line,
+            "file,result,errors,first_error,alarm,cycle_time_s,leftover_mm,leftover_z,gouge_mm,gouge_z,cutting_data");
   int rows = 0;
   while (std::getline(csv, line)) {
     ++rows;
@@ -209,7 +210,7 @@ TEST(CliClass, TheSetupExerciseIsGradedOnEachStudentsTouchOff) {
       << err;
   EXPECT_NE(err.find("fon.txt: the offsets are unknown but fon.offset.cfg was not found"), std::string::npos) << err;
   const std::string csv = slurp(csvPath);
-  EXPECT_NE(csv.find("gouge_z,touch_off\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("gouge_z,cutting_data,touch_off\n"), std::string::npos) << csv;
   EXPECT_NE(csv.find("\ndao.txt,pass,"), std::string::npos) << csv;
   EXPECT_NE(csv.find(",T01 X0.000/0.000 Z0.000/0.000 in\n"), std::string::npos) << csv;
   // ekk's part comes out 0.3 mm large on the diameter: the part check sees the touch-off too.
@@ -235,6 +236,40 @@ std::string pdfText(const fs::path& pdf, const std::string& options = "") {
   for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) text.append(buf, n);
   ::pclose(pipe);
   return text;
+}
+
+// Issue 39 item 4: each student's cutting-data warnings, code and line, in the CSV's cutting_data
+// column and the PDF's "Cutting data" column. Sample 01 with its finishing feed F0.1 made F0.35 on
+// line 44 alone (the Ø30 from Z-3 to Z-20): Ra = 0.35^2 / (32 * 0.8) * 1000 = 4.8 um > 3.2.
+TEST(CliClass, TheCuttingDataWarningsAreAColumn) {
+  const fs::path dir = fs::temp_directory_path() / ("klueng_cli_class_cutting_test-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir / "class");
+  const std::string reference = slurp(fs::path(KLUENG_SAMPLES_DIR) / "01-step-shaft.txt");
+  std::ofstream(dir / "class" / "anna.nc", std::ios::binary) << reference;
+  std::ofstream(dir / "class" / "boon.nc", std::ios::binary)
+      << replaced(replaced(reference, "N360 Z-20.", "N360 Z-20. F0.35"), "N370 X36.", "N370 X36. F0.1");
+  const std::string ref = std::string(KLUENG_SAMPLES_DIR) + "/01-step-shaft.txt";
+  std::string err;
+  ASSERT_EQ(run("'" + (dir / "class").string() + "' --reference '" + ref + "' --csv '" + (dir / "g.csv").string() +
+                    "' --pdf '" + (dir / "g.pdf").string() + "'",
+                &err),
+            0)
+      << err;
+  const std::string csv = slurp(dir / "g.csv");
+  EXPECT_NE(csv.find(",gouge_z,cutting_data\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\nanna.nc,pass,0,,,77.8,0.000,0.00,0.000,0.00,\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",W332 line 44\n"), std::string::npos) << csv;
+  const std::string table = pdfText(dir / "g.pdf", "-layout");
+  for (const char* s : {"Cutting data", "W332 line 44"}) EXPECT_NE(table.find(s), std::string::npos) << s << table;
+  ASSERT_EQ(run("'" + (dir / "class").string() + "' --reference '" + ref + "' --pdf '" + (dir / "g.pdf").string() +
+                    "' --lang th",
+                &err),
+            0)
+      << err;
+  const std::string thai = pdfText(dir / "g.pdf", "-layout");
+  EXPECT_NE(thai.find("W332 บรรทัด 44"), std::string::npos) << thai;
+  fs::remove_all(dir);
 }
 
 TEST(CliClass, ThePdfHasTheTableAndWithSheetsEveryStudentsSheets) {
@@ -298,16 +333,16 @@ TEST(CliClass, GradedAgainstTheDrawingFeatureByFeature) {
   EXPECT_NE(err.find("3 programs: 2 pass, 1 fail"), std::string::npos) << err;
   const std::string csv = slurp(csvPath);
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
-            "file,result,errors,first_error,alarm,cycle_time_s,leftover_mm,leftover_z,gouge_mm,gouge_z,"
+            "file,result,errors,first_error,alarm,cycle_time_s,leftover_mm,leftover_z,gouge_mm,gouge_z,cutting_data,"
             "feature,nominal_mm,tolerance,lower_mm,upper_mm,measured_mm,verdict");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 3 * 4) << csv;
-  EXPECT_NE(csv.find("\nanna.nc,pass,0,,,77.8,,,,,Ø30,30.000,h7 (0/-0.021),29.979,30.000,30.000,in\n"),
+  EXPECT_NE(csv.find("\nanna.nc,pass,0,,,77.8,,,,,,Ø30,30.000,h7 (0/-0.021),29.979,30.000,30.000,in\n"),
             std::string::npos)
       << csv;
-  EXPECT_NE(csv.find("\nboon.nc,fail,0,,,77.8,,,,,Ø40,40.000,js6 (±0.008),39.992,40.008,39.980,out\n"),
+  EXPECT_NE(csv.find("\nboon.nc,fail,0,,,77.8,,,,,,Ø40,40.000,js6 (±0.008),39.992,40.008,39.980,out\n"),
             std::string::npos)
       << csv;
-  EXPECT_NE(csv.find("\nchai.nc,pass,0,,,77.8,,,,,Ø46,46.000,0/-0.05,45.950,46.000,45.950,in\n"), std::string::npos)
+  EXPECT_NE(csv.find("\nchai.nc,pass,0,,,77.8,,,,,,Ø46,46.000,0/-0.05,45.950,46.000,45.950,in\n"), std::string::npos)
       << csv;
 
   // Besides the reference, and as a PDF in Thai: the drawing's page lists every student's dimensions.
@@ -353,7 +388,7 @@ TEST(CliClass, GradedAgainstTheDrawingFeatureByFeature) {
                 &err),
             0)
       << err;
-  EXPECT_NE(slurp(csvPath).find("\nanna.nc,pass,0,,,77.8,,,,,Ø30,30.000,ISO 2768-m (±0.2),29.800,30.200,30.000,in\n"),
+  EXPECT_NE(slurp(csvPath).find("\nanna.nc,pass,0,,,77.8,,,,,,Ø30,30.000,ISO 2768-m (±0.2),29.800,30.200,30.000,in\n"),
             std::string::npos)
       << slurp(csvPath);
   fs::remove_all(dir);
@@ -370,5 +405,5 @@ TEST(CliClass, ABadReferenceOrBadOptionsExitTwo) {
 }  // namespace cli_class_test
 
 // Its scratch folders go with the process: nothing left in /tmp after a run.
-[[maybe_unused]] ::testing::Environment* const kCliClassScratchCleanup =
-    klueng::test::removeScratchFoldersAtExit({"klueng_cli_class_test-", "klueng_cli_class_pdf_test-"});
+[[maybe_unused]] ::testing::Environment* const kCliClassScratchCleanup = klueng::test::removeScratchFoldersAtExit(
+    {"klueng_cli_class_test-", "klueng_cli_class_pdf_test-", "klueng_cli_class_cutting_test-"});

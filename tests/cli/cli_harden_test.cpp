@@ -208,12 +208,12 @@ TEST(CliHarden, ClassFolderRefusesLinksOutAndListsEveryEntry) {
   EXPECT_EQ(out.find("SECRET-MARKER"), std::string::npos) << out;
   const std::string table = slurp(csv);
   EXPECT_EQ(table.find("SECRET-MARKER"), std::string::npos) << table;
-  EXPECT_TRUE(hasLine(table, "evil.nc,fail,1,F158 refused: points outside the folder,,,,,,")) << table;
-  EXPECT_TRUE(hasLine(table, "dangling.nc,fail,1,F101 unreadable: a link to nothing,,,,,,")) << table;
-  EXPECT_TRUE(hasLine(table, "pipe.nc,fail,1,F157 unreadable: not an ordinary file,,,,,,")) << table;
-  EXPECT_TRUE(hasLine(table, "d.nc,fail,1,F102 unreadable: a folder,,,,,,")) << table;
-  EXPECT_TRUE(hasLine(table, "copied.nc,fail,1,F159,,,,,,")) << table;
-  EXPECT_TRUE(hasLine(table, "binary.nc,fail,1,F159,,,,,,")) << table;
+  EXPECT_TRUE(hasLine(table, "evil.nc,fail,1,F158 refused: points outside the folder,,,,,,,")) << table;
+  EXPECT_TRUE(hasLine(table, "dangling.nc,fail,1,F101 unreadable: a link to nothing,,,,,,,")) << table;
+  EXPECT_TRUE(hasLine(table, "pipe.nc,fail,1,F157 unreadable: not an ordinary file,,,,,,,")) << table;
+  EXPECT_TRUE(hasLine(table, "d.nc,fail,1,F102 unreadable: a folder,,,,,,,")) << table;
+  EXPECT_TRUE(hasLine(table, "copied.nc,fail,1,F159,,,,,,,")) << table;
+  EXPECT_TRUE(hasLine(table, "binary.nc,fail,1,F159,,,,,,,")) << table;
   EXPECT_NE(table.find("\nok.nc,pass,0,,,"), std::string::npos) << table;
   EXPECT_NE(out.find("7 programs: 1 pass, 6 fail"), std::string::npos) << out;
 }

@@ -334,6 +334,66 @@ TEST(CliCuttingData, WritesPerBlockAndWarnsOnTheBlock) {
   EXPECT_THAT(unknown.err, HasSubstr("known materials: ss400, s45c,"));
 }
 
+// Runs `klueng-cli check` with stdout and stderr captured.
+Result checkCommand(const std::string& args, const std::string& config) {
+  const std::string command =
+      "env LC_ALL= LC_MESSAGES= LANG=C '" + kCut + "' check " + args + " --config '" + config + "' 2>&1";
+  Result r;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (!pipe) return r;
+  char buf[4096];
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) r.err.append(buf, n);
+  const int status = ::pclose(pipe);
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::size_t occurrences(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+// Issue 39 item 1: the plain check says the cutting-data warnings on their blocks, in both
+// languages and in --json, from the run it records; simulate says each once; --design gives
+// W332 the part's roughness mark.
+TEST(CliCuttingData, TheCheckSaysThemOnTheirBlocks) {
+  const fs::path config = scratch("cc-config");
+  fs::create_directories(config);
+  for (const char* name : {"offset.cfg", "machine.cfg"})
+    fs::copy_file(kCutShipped + "/" + name, config / name, fs::copy_options::overwrite_existing);
+  std::ofstream(config / "tools.cfg") << "library:cnmg-80-r08\n\n\n\n\n\n\n\n";
+  std::ofstream(config / "machine.cfg", std::ios::app) << "spindle_power_kw = 1.5\n";
+  const fs::path prog = scratch("cc.nc");
+  std::ofstream(prog) << "Cutting data\nSteel\nSteel S45C\n150\n1100\nTest\n"
+                         "G21 G40 G99\nT0101\nG97 S1000 M03\nG00 X60. Z2.\nX46.\nG01 Z-30. F0.2\nG00 X60.\n"
+                         "Z2.\nX45.4\nG01 Z-30. F0.25\nG00 X60.\nZ50.\nM30\n";
+  const Result r = checkCommand("'" + prog.string() + "'", config.string());
+  EXPECT_EQ(r.exitCode, 0) << r.err;  // warnings: the real control runs the program
+  EXPECT_THAT(r.err, HasSubstr(prog.string() + ":12:1: warning W334: this cut needs 2.1 kW at the edge (depth 2.00 "
+                                               "mm, feed 0.200 mm/rev) but the spindle gives 1.5 kW"));
+  // Line 16 takes 0.3 mm at 0.25 mm/rev: Ra 2.44 um, within the default 3.2, and 0.5 kW: sound.
+  EXPECT_THAT(r.err, Not(HasSubstr(":16:1: warning W33")));
+  const Result th = checkCommand("'" + prog.string() + "' --lang th", config.string());
+  EXPECT_THAT(th.err, HasSubstr(":12:1: คำเตือน W334: การตัดนี้ต้องใช้กำลัง 2.1 กิโลวัตต์ที่คมมีด"));
+  const Result json = checkCommand("'" + prog.string() + "' --json", config.string());
+  EXPECT_THAT(json.err, HasSubstr("\"line\": 12, \"column\": 1, \"severity\": \"warning\", \"code\": \"W334\""));
+  // The design asks Ra 1.6 on the Ø45.4: line 16's 2.44 um is too rough for it.
+  const fs::path part = scratch("cc.json");
+  std::ofstream(part) << "{ \"name\": \"Shaft\", \"material\": \"steel\", \"stock\": { \"diameter\": 50, "
+                         "\"length\": 100 }, \"outside\": [ { \"cylinder\": 45.4, \"length\": 30, "
+                         "\"roughness\": 1.6 } ] }\n";
+  const Result marked = checkCommand("'" + prog.string() + "' --design '" + part.string() + "'", config.string());
+  EXPECT_THAT(marked.err, HasSubstr(":16:1: warning W332: finishing feed 0.250 mm/rev with nose radius R0.80 leaves "
+                                    "Ra 2.4 um (Rz 9.8 um), rougher than Ra 1.6 um (the drawing's mark for diameter "
+                                    "45.40 from Z0.00 to Z-30.00)"))
+      << marked.err;
+  // simulate says the check's warnings once, --cutting-data or not.
+  const Result sim =
+      simulate("'" + prog.string() + "' --cutting-data '" + scratch("cc.csv").string() + "'", config.string());
+  EXPECT_EQ(occurrences(sim.err, "warning W334"), 1u) << sim.err;
+}
+
 }  // namespace
 
 }  // namespace cli_simulate_cut_test

@@ -104,12 +104,12 @@ class ClassGradeTest : public QObject {
     // The CSV and the PDF, as the CLI writes them.
     QVERIFY(dialog.saveCsv(dir.filePath(QStringLiteral("grades.csv"))));
     QVERIFY(readAll(dir.filePath(QStringLiteral("grades.csv")))
-                .contains("\nboon.nc,fail,0,,,77.8,,,,,Ø40,40.000,js6 (±0.008),39.992,40.008,39.980,out\n"));
+                .contains("\nboon.nc,fail,0,,,77.8,,,,,,Ø40,40.000,js6 (±0.008),39.992,40.008,39.980,out\n"));
     QString why;
     QVERIFY2(dialog.savePdf(dir.filePath(QStringLiteral("grades.pdf")), &why), qPrintable(why));
     const QString en = pdfText(dir.filePath(QStringLiteral("grades.pdf")));
     for (const char* s : {"Against the drawing shaft.json (4 toleranced dimensions)", "Inspection against shaft.json",
-                          "js6 (±0.008)", "39.980", "3 of 4 in", "In tolerance"})
+                          "js6 (±0.008)", "39.980", "3 of 4 in", "In tolerance", "Cutting data"})
       QVERIFY2(en.contains(QString::fromUtf8(s)), s);
     // The drawing is not the PDF's name.
     QVERIFY(!dialog.savePdf(dir.filePath(QStringLiteral("shaft.json")), &why));

@@ -30,6 +30,7 @@
 #include "gui_test_runner.h"
 #include "fresh_user_folders.h"
 #include "gui/code_editor.h"
+#include "klueng/core/diagnostic_codes.h"
 #include "gui/diagnostics_panel.h"
 #include "gui/find_dialog.h"
 #include "gui/gcode_highlighter.h"
@@ -977,6 +978,51 @@ class MainWindowTest : public QObject {
     Language::instance()->setLanguage(QStringLiteral("en"));
     w.action(QStringLiteral("actionStop"))->trigger();
     QTRY_VERIFY(!w.explainBar()->isVisible());
+  }
+
+  // Issue 39 item 1: the cutting-data warnings are in the diagnostics list from the check itself
+  // (no run): on their block, in the UI's language; a sound program has none.
+  void cuttingDataWarningsAreListedByTheCheck() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("rough.txt"));
+    {
+      QFile f(path);
+      QVERIFY(f.open(QIODevice::WriteOnly));
+      // The shipped T01 (R0.8): a 0.3 mm pass at F0.35 leaves Ra = 0.35^2 / 25.6 * 1000 = 4.8 um > 3.2 (line 12).
+      f.write(
+          "Cutting data\nSteel\nS45C\n150\n1100\nTest\nG21 G40 G99\nT0101\nG97 S800 M03\nG00 X60. Z2.\nX49.4\n"
+          "G01 Z-20. F0.35\nG00 X60.\nM30\n");
+    }
+    MainWindow w;
+    w.show();
+    QVERIFY(w.openFile(path));
+    QVERIFY(waitIdle(w));
+    DiagnosticsPanel* panel = w.diagnosticsPanel();
+    const auto& diags = panel->diagnostics();
+    const auto rough = std::find_if(diags.begin(), diags.end(), [](const core::Diagnostic& d) {
+      return d.code == std::string(core::codes::kFinishTooRough);
+    });
+    QVERIFY(rough != diags.end());
+    QCOMPARE(rough->range.line, 12);
+    QCOMPARE(rough->severity, core::Severity::Warning);
+    QCOMPARE(panel->errorCount(), 0);
+    const int row = static_cast<int>(rough - diags.begin());
+    const QModelIndex msg = panel->model()->index(row, DiagnosticsModel::MessageColumn);
+    QVERIFY(msg.data().toString().startsWith(
+        QStringLiteral("finishing feed 0.350 mm/rev with nose radius R0.80 leaves Ra 4.8 um (Rz 19.1 um)")));
+    Language::instance()->setLanguage(QStringLiteral("th"));
+    QTRY_VERIFY(panel->model()
+                    ->index(row, DiagnosticsModel::MessageColumn)
+                    .data()
+                    .toString()
+                    .startsWith(QStringLiteral("อัตราป้อนกลึงละเอียด 0.350")));
+    Language::instance()->setLanguage(QStringLiteral("en"));
+    // F0.2 instead: Ra 1.6, nothing to say.
+    w.editor()->setPlainText(w.editor()->toPlainText().replace(QStringLiteral("F0.35"), QStringLiteral("F0.2")));
+    QTRY_VERIFY_WITH_TIMEOUT(std::none_of(panel->diagnostics().begin(), panel->diagnostics().end(),
+                                          [](const core::Diagnostic& d) { return d.code.rfind("W33", 0) == 0; }),
+                             20000);
   }
 
   void stepHighlightsTheExecutingBlock() {

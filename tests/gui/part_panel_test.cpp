@@ -64,6 +64,19 @@ class PartPanelTest : public QObject {
     QVERIFY(features.contains(QStringLiteral("Arc R2 round, centre Z-22 X36, Z-20 to Z-22")));
     QVERIFY(texts(group(part->list(), QStringLiteral("Part check"))).isEmpty());  // sample 01 is right
     QVERIFY(part->summary()->text().contains(QStringLiteral("no gouge, no leftover")));
+    // Issue 39 item 3: each surface's roughness from the cut that left it. The Ø30 is finished on
+    // line 44 (N360) at F0.1 with R0.8: Ra = 0.1^2 / (32 * 0.8) * 1000 = 0.39 um, Rz 1.56 um.
+    QTreeWidgetItem* featureGroup = group(part->list(), QStringLiteral("Features"));
+    QTreeWidgetItem* cylinder30 = nullptr;
+    for (int i = 0; i < featureGroup->childCount(); ++i)
+      if (featureGroup->child(i)->text(0) == QStringLiteral("Cylinder Ø30, Z-3 to Z-19.2, length 16.2"))
+        cylinder30 = featureGroup->child(i);
+    QVERIFY(cylinder30);
+    QCOMPARE(part->list()->headerItem()->text(3), QStringLiteral("Ra (µm)"));
+    QCOMPARE(cylinder30->text(3), QStringLiteral("0.39"));
+    QCOMPARE(cylinder30->text(2), QStringLiteral("44"));
+    QCOMPARE(cylinder30->toolTip(3), QStringLiteral("Ra 0.39 µm, Rz 1.6 µm: the theoretical roughness of line 44's cut "
+                                                    "(feed 0.100 mm/rev, nose R0.8)"));
 
     QTreeWidgetItem* comp = group(part->list(), QStringLiteral("Compensation"));
     const QStringList differences = texts(comp);

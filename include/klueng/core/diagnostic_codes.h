@@ -295,7 +295,7 @@ inline constexpr const char* kCutSpeedHigh =
 inline constexpr const char* kCutSpeedLow =
     "W331";  // {0} Vc, {1} unit, {2} tool material, {3} material, {4} min, {5} fix
 inline constexpr const char* kFinishTooRough =
-    "W332";  // {0} f, {1} r, {2} Ra, {3} Rz, {4} limit Ra, {5} largest f, {6} unit
+    "W332";  // {0} f, {1} r, {2} Ra, {3} Rz, {4} limit Ra, {5} largest f, {6} unit, {7}/{8} why the limit
 inline constexpr const char* kDepthOverEdge = "W333";      // {0} ap, {1} edge, {2} largest ap, {3} unit
 inline constexpr const char* kPowerOverSpindle = "W334";   // {0} Pc kW, {1} machine kW, {2} ap, {3} f, {4} unit
 inline constexpr const char* kTorqueOverSpindle = "W335";  // {0} torque, {1} machine torque, {2} diameter, {3} unit
@@ -400,6 +400,10 @@ inline constexpr const char* kReportProgramErrors = "R031";
 inline constexpr const char* kReportStoppedOnAlarm = "R032";
 inline constexpr const char* kReportInside = "R040";       // {0} a feature's label
 inline constexpr const char* kReportNoseCorners = "R041";  // {0} the nose radius
+// The roughness the cuts leave on the drawing sheet (issue 39): a heading, a row per surface, the rest.
+inline constexpr const char* kReportFinishTitle = "R042";
+inline constexpr const char* kReportFinishRow = "R043";   // {0} surface {1} Ra {2} Rz {3} line {4} feed {5} nose R
+inline constexpr const char* kReportFinishMore = "R044";  // {0} surfaces not listed
 inline constexpr const char* kReportClassTitle = "R050";
 inline constexpr const char* kReportAgainstReference = "R051";  // {0} reference {1} tolerance mm {2} date
 inline constexpr const char* kReportAlsoDrawing = "R052";       // {0} drawing {1} dimensions
@@ -421,6 +425,7 @@ inline constexpr const char* kReportColumnTolerance = "R067";
 inline constexpr const char* kReportColumnLimits = "R068";
 inline constexpr const char* kReportColumnMeasured = "R069";
 inline constexpr const char* kReportInCount = "R071";  // {0} in {1} of
+inline constexpr const char* kReportColumnCutting = "R072";  // the class table's cutting-data warnings
 // Why the picture module drew no PDF (its entry points write the code, the CLI says it).
 inline constexpr const char* kReportNothingToWrite = "R080";
 inline constexpr const char* kReportNoSheet = "R081";

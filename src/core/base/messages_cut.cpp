@@ -70,12 +70,13 @@ constexpr MessageText kCutMessages[] = {
      "the spindle speed to about S{7} (rpm, G97) or use G96",
      "ความเร็วตัด {0} {1} ต่ำกว่า {6} {1} ที่มีด{3}ต้องการเมื่อกลึง{5}: เศษโลหะจะพอกติดคมมีดและผิวฉีก ให้เพิ่มความเร็วรอบเป็น"
      "ประมาณ S{7} (รอบ/นาที G97) หรือใช้ G96"},
-    // {0} f, {1} nose radius, {2} Ra um, {3} Rz um, {4} the Ra allowed, {5} the largest feed for it, {6} unit
+    // {0} f, {1} nose radius, {2} Ra um, {3} Rz um, {4} the Ra allowed, {5} the largest feed for it, {6} unit,
+    // {7}/{8} where the Ra allowed comes from (the drawing's mark, or the default), en/th
     {codes::kFinishTooRough,
-     "finishing feed {0} {6}/rev with nose radius R{1} leaves Ra {2} um (Rz {3} um), rougher than Ra {4} um: use "
-     "F{5} or less, or an insert with a larger nose radius",
+     "finishing feed {0} {6}/rev with nose radius R{1} leaves Ra {2} um (Rz {3} um), rougher than Ra {4} um ({7}): "
+     "use F{5} or less, or an insert with a larger nose radius",
      "อัตราป้อนกลึงละเอียด {0} {6}/รอบ กับรัศมีปลายมีด R{1} ให้ผิว Ra {2} ไมครอน (Rz {3} ไมครอน) หยาบกว่า Ra {4} ไมครอน "
-     "ให้ใช้ F{5} หรือน้อยกว่า หรือใช้เม็ดมีดที่มีรัศมีปลายมีดโตกว่า"},
+     "({8}) ให้ใช้ F{5} หรือน้อยกว่า หรือใช้เม็ดมีดที่มีรัศมีปลายมีดโตกว่า"},
     // {0} ap, {1} the edge's length, {2} the largest depth for it, {3} unit
     {codes::kDepthOverEdge,
      "depth of cut {0} {3} is more than the {2} {3} the insert's {1} {3} cutting edge takes (about 2/3 of it): cut "

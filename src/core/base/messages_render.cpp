@@ -41,6 +41,12 @@ constexpr MessageText kRenderMessages[] = {
     // The drawing's labels.
     {codes::kReportInside, "{0} (inside)", "{0} (ใน)"},
     {codes::kReportNoseCorners, "Inside corners: tool nose R{0}", "มุมด้านในเป็นรัศมีจมูกมีด R{0}"},
+    // The roughness each finished surface got from its last cut (issue 39): theoretical, Ra = f²/(32·r).
+    {codes::kReportFinishTitle, "Roughness the cuts leave (theoretical, Ra = f²/32r)",
+     "ความหยาบผิวที่ได้จากการตัด (ตามทฤษฎี Ra = f²/32r)"},
+    {codes::kReportFinishRow, "{0}: Ra {1} µm (Rz {2}), line {3}, f {4}, R{5}",
+     "{0}: Ra {1} ไมครอน (Rz {2}) บรรทัด {3} ป้อน {4} R{5}"},
+    {codes::kReportFinishMore, "… and {0} more surfaces", "… และอีก {0} ผิว"},
     // The class grades (the totals line is the CLI's kCliClassTotals: one text for both).
     {codes::kReportClassTitle, "Class grades", "ผลการตรวจงานทั้งชั้นเรียน"},
     {codes::kReportAgainstReference, "Against {0} · tolerance {1} mm on the diameter · {2}",
@@ -57,6 +63,7 @@ constexpr MessageText kRenderMessages[] = {
     {codes::kReportColumnLeftover, "Leftover (mm)", "เนื้อเหลือ (มม.)"},
     {codes::kReportColumnGouge, "Gouge (mm)", "กินเนื้อเกิน (มม.)"},
     {codes::kReportColumnInTolerance, "In tolerance", "ขนาดในพิกัด"},
+    {codes::kReportColumnCutting, "Cutting data", "ข้อมูลการตัด"},
     {codes::kReportPass, "pass", "ผ่าน"},
     {codes::kReportFail, "fail", "ไม่ผ่าน"},
     {codes::kReportInspectionTitle, "Inspection against {0}", "ตรวจวัดเทียบกับแบบงาน {0}"},

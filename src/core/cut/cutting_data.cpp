@@ -15,6 +15,7 @@
 #include "io/text_util.h"
 #include "klueng/core/io/file_read.h"
 #include "klueng/core/io/tool_library.h"
+#include "klueng/core/cut/part_features.h"
 
 namespace klueng::core::cut {
 
@@ -263,8 +264,179 @@ struct CdUnits {
 
 }  // namespace
 
+double finishLimit(const CuttingDataOptions& options, bool inside, double diameter, double zA, double zB,
+                   const FinishMark** mark) {
+  // A mark lies under the cut when their Z ranges overlap and the path runs on its diameters
+  // (within 0.5 mm: the imaginary tip of a finishing pass is on the surface, the nose centre off it).
+  constexpr double kOnSurface = 0.5;
+  const double zLo = std::min(zA, zB), zHi = std::max(zA, zB);
+  for (const FinishMark& f : options.finishMarks)
+    if (f.inside == inside && f.ra > 0.0 && std::min(zHi, f.zRight) >= std::max(zLo, f.zLeft) - 1e-9 &&
+        diameter >= f.dMin - kOnSurface && diameter <= f.dMax + kOnSurface) {
+      if (mark) *mark = &f;
+      return f.ra;
+    }
+  if (mark) *mark = nullptr;
+  return options.finishRa;
+}
+
+namespace {
+
+// The numbers of a cutting move that need no stock: speed, feed, nose, roughness.
+CutNumbers cdStockFree(const machine::Move& m, std::size_t index, const CutSetup& setup,
+                       const CuttingDataOptions& options) {
+  const std::size_t k = static_cast<std::size_t>(m.tool - 1);
+  CutNumbers c;
+  c.move = index;
+  c.line = m.line;
+  c.file = m.file;
+  c.blockIndex = m.blockIndex;
+  c.tool = m.tool;
+  c.tStart = m.tStart;
+  c.tEnd = m.tEnd;
+  c.thread = m.kind == machine::MoveKind::Thread;
+  c.z0 = m.path.start.x();
+  c.z1 = m.path.end.x();
+  c.d0 = 2.0 * std::abs(m.path.start.y());
+  c.d1 = 2.0 * std::abs(m.path.end.y());
+  c.facing = std::abs(c.z1 - c.z0) < std::abs(m.path.end.y() - m.path.start.y());
+  // Where the edge cuts fastest: the larger of the move's two ends (a drill at its rim).
+  const double drill = options.drillDiameter[k];
+  const double d0 = drill > 0.0 ? drill : c.d0;
+  const double d1 = drill > 0.0 ? drill : c.d1;
+  const double vc0 = std::numbers::pi * d0 * m.rpm / 1000.0;
+  const double vc1 = std::numbers::pi * d1 * m.rpmEnd / 1000.0;
+  c.diameter = vc1 > vc0 ? d1 : d0;
+  c.rpm = vc1 > vc0 ? m.rpmEnd : m.rpm;
+  c.vc = std::max(vc0, vc1);
+  c.feed = c.thread ? m.lead : m.feed / m.rpm;
+  const int row = m.offset >= 1 ? m.offset : m.tool;
+  const double offsetR = row >= 1 && row <= io::kOffsetCount ? setup.offsets.at(row).r : 0.0;
+  c.noseRadius = offsetR > 0.0 ? offsetR : options.noseRadius[k];
+  if (!c.thread && drill <= 0.0 && c.noseRadius > 0.0) {
+    c.rz = roughnessRz(c.feed, c.noseRadius);
+    c.ra = roughnessRa(c.feed, c.noseRadius);
+  }
+  return c;
+}
+
+bool cdCutting(const machine::Move& m) {
+  return (m.kind == machine::MoveKind::Line || m.kind == machine::MoveKind::Arc ||
+          m.kind == machine::MoveKind::Thread) &&
+         m.rpm > 0.0 && m.tool >= 1 && m.tool <= io::kToolCount;
+}
+
+bool cdOverChuck(const machine::Move& m, const CuttingDataOptions& options) {
+  return options.chuckMaxRpm > 0.0 && m.spindle != machine::SpindleDir::Stopped &&
+         std::max(m.rpm, m.rpmEnd) > options.chuckMaxRpm + 0.5;
+}
+
+// The Vc range of the tool's material in the job's material; false when either is not known.
+bool cdSpeedRange(const CuttingDataOptions& options, ToolMaterial tm, double& lo, double& hi) {
+  const Material* material = options.material;
+  if (!material || tm == ToolMaterial::Unknown) return false;
+  const bool hss = tm == ToolMaterial::Hss;
+  lo = hss ? material->hssMin : material->carbideMin;
+  hi = hss ? material->hssMax : material->carbideMax;
+  return true;
+}
+
+// Whether a move might warn, whatever depth it turns out to cut (a superset of the warnings
+// measureCuts gives it), from the move alone: what the check measures. Lean, since it is asked of
+// every move of a long program: no CutNumbers, the stations' facts worked out once.
+class CdCandidates {
+ public:
+  CdCandidates(const CutSetup& setup, const CuttingDataOptions& options) : setup_(setup), options_(options) {
+    const Material* material = options.material;
+    const bool limits = options.spindlePowerKw > 0.0 || options.spindleTorqueNm > 0.0;
+    for (std::size_t k = 0; k < io::kToolCount; ++k) {
+      speedJudged_[k] = cdSpeedRange(options, options.toolMaterial[k], lo_[k], hi_[k]);
+      const bool force = material && material->kc11 > 0.0 && options.drillDiameter[k] <= 0.0;
+      always_[k] = options.edgeLength[k] > 0.0 || (force && limits);  // the depth decides
+    }
+  }
+
+  bool couldWarn(const machine::Move& m) const {
+    if (m.kind == machine::MoveKind::Rapid || m.kind == machine::MoveKind::Dwell) return cdOverChuck(m, options_);
+    if (m.tool < 1 || m.tool > io::kToolCount) return false;
+    const std::size_t k = static_cast<std::size_t>(m.tool - 1);
+    if (always_[k] || cdOverChuck(m, options_)) return true;
+    if (m.kind == machine::MoveKind::Thread || m.rpm <= 0.0) return false;  // a thread's speed and finish: not judged
+    const double drill = options_.drillDiameter[k];
+    const bool marks = !options_.finishMarks.empty();
+    double diameter = drill;
+    if (speedJudged_[k] || marks) {
+      const double d0 = drill > 0.0 ? drill : 2.0 * std::abs(m.path.start.y());
+      const double d1 = drill > 0.0 ? drill : 2.0 * std::abs(m.path.end.y());
+      const double vc0 = d0 * m.rpm, vc1 = d1 * m.rpmEnd;  // x pi / 1000 below
+      diameter = vc1 > vc0 ? d1 : d0;
+      const double vc = std::numbers::pi * std::max(vc0, vc1) / 1000.0;
+      if (speedJudged_[k] &&
+          ((hi_[k] > 0.0 && vc > hi_[k] * 1.005) || (lo_[k] > 0.0 && vc < lo_[k] * 0.995 && diameter > 0.0)))
+        return true;
+    }
+    if (drill > 0.0) return false;
+    const int row = m.offset >= 1 ? m.offset : m.tool;
+    const double offsetR = row >= 1 && row <= io::kOffsetCount ? setup_.offsets.at(row).r : 0.0;
+    const double r = offsetR > 0.0 ? offsetR : options_.noseRadius[k];
+    if (r <= 0.0) return false;
+    // Ra = f^2 / (32 r) * 1000 above the limit, f = feed / rpm, without a division a move.
+    const double limit = !marks ? options_.finishRa
+                                : std::min(finishLimit(options_, false, diameter, m.path.start.x(), m.path.end.x()),
+                                           finishLimit(options_, true, diameter, m.path.start.x(), m.path.end.x()));
+    return limit > 0.0 && m.feed * m.feed > limit * 1.005 * 32.0 * r / 1000.0 * m.rpm * m.rpm;
+  }
+
+ private:
+  const CutSetup& setup_;
+  const CuttingDataOptions& options_;
+  std::array<bool, io::kToolCount> speedJudged_{}, always_{};
+  std::array<double, io::kToolCount> lo_{}, hi_{};
+};
+
+// The codes the run could raise at all, from its tools and the machine (a superset): once each has
+// been said warningsPerCode times, the check has nothing more to say and stops measuring.
+std::vector<const char*> cdPossibleCodes(const CuttingDataOptions& options) {
+  std::vector<const char*> out = {codes::kFinishTooRough};
+  const bool force = options.material && options.material->kc11 > 0.0;
+  bool speed = false, edge = false;
+  for (std::size_t k = 0; k < io::kToolCount; ++k) {
+    double lo = 0.0, hi = 0.0;
+    speed = speed || cdSpeedRange(options, options.toolMaterial[k], lo, hi);
+    edge = edge || options.edgeLength[k] > 0.0;
+  }
+  if (speed) out.insert(out.end(), {codes::kCutSpeedHigh, codes::kCutSpeedLow});
+  if (edge) out.push_back(codes::kDepthOverEdge);
+  if (force && options.spindlePowerKw > 0.0) out.push_back(codes::kPowerOverSpindle);
+  if (force && options.spindleTorqueNm > 0.0) out.push_back(codes::kTorqueOverSpindle);
+  if (options.chuckMaxRpm > 0.0) out.push_back(codes::kRpmOverChuck);
+  return out;
+}
+
+// The last move that might warn, +1; 0 when none might (looked for from the end).
+std::size_t cdMovesToMeasure(const machine::Timeline& timeline, const CutSetup& setup,
+                             const CuttingDataOptions& options, std::size_t end) {
+  const CdCandidates candidates(setup, options);
+  for (std::size_t i = end; i > 0; --i)
+    if (candidates.couldWarn(timeline.moves[i - 1])) return i;
+  return 0;
+}
+
+// The path's radius at z (a line's or an arc's chord; the nearer end outside its Z range).
+double cdPathRadiusAt(const CutNumbers& c, double z) {
+  if (std::abs(c.z1 - c.z0) < 1e-9) return std::min(c.d0, c.d1) / 2.0;
+  const double t = std::clamp((z - c.z0) / (c.z1 - c.z0), 0.0, 1.0);
+  return (c.d0 + t * (c.d1 - c.d0)) / 2.0;
+}
+
+}  // namespace
+
 CuttingData measureCuts(const machine::Timeline& timeline, const CutSetup& setup, const CuttingDataOptions& options) {
   CuttingData data;
+  const std::size_t end = std::min(options.moveEnd, timeline.moves.size());
+  // The check measures only as far as a warning could come; a sound program not at all.
+  const std::size_t measured = options.warningsOnly ? cdMovesToMeasure(timeline, setup, options, end) : end;
+  if (measured == 0) return data;
   CutOptions cutOptions;
   cutOptions.checkpointBudgetBytes = 0;
   CutSimulator sim(timeline, setup, cutOptions);
@@ -274,9 +446,21 @@ CuttingData measureCuts(const machine::Timeline& timeline, const CutSetup& setup
   const Material* material = options.material;
   const CdUnits u{options.units == DisplayUnits::Inch};
   WarningKeeper warn{options, data.warnings, {}, {}};
+  const Stock& stock = sim.stock();
+  std::vector<double> radials;  // the radial cut of each column a move touched
+  if (!options.warningsOnly) {
+    data.lastOutside.assign(static_cast<std::size_t>(stock.columnCount()), -1);
+    data.lastInside.assign(static_cast<std::size_t>(stock.columnCount()), -1);
+  }
 
+  const std::vector<const char*> possible =
+      options.warningsOnly ? cdPossibleCodes(options) : std::vector<const char*>{};
+  const auto saidAll = [&] {
+    return std::all_of(possible.begin(), possible.end(),
+                       [&](const char* code) { return warn.perCode[code] >= options.warningsPerCode; });
+  };
   const auto& moves = timeline.moves;
-  for (std::size_t i = 0; i < moves.size(); ++i) {
+  for (std::size_t i = 0; i < measured && !(options.warningsOnly && saidAll()); ++i) {
     const machine::Move& m = moves[i];
     tally.clear();
     sim.advanceTo(m.tEnd);
@@ -284,50 +468,43 @@ CuttingData measureCuts(const machine::Timeline& timeline, const CutSetup& setup
       data.stoppedByAlarm = true;
       break;
     }
-    const double topRpm = std::max(m.rpm, m.rpmEnd);
-    if (options.chuckMaxRpm > 0.0 && m.spindle != machine::SpindleDir::Stopped && topRpm > options.chuckMaxRpm + 0.5)
-      warn.add(codes::kRpmOverChuck, m, {fmt::format("{:.0f}", topRpm), fmt::format("{:.0f}", options.chuckMaxRpm)});
-    const bool thread = m.kind == machine::MoveKind::Thread;
-    if (!(m.kind == machine::MoveKind::Line || m.kind == machine::MoveKind::Arc || thread)) continue;
-    if (tally.sectionArea <= 1e-9 || m.rpm <= 0.0 || m.tool < 1 || m.tool > io::kToolCount) continue;
+    if (cdOverChuck(m, options))
+      warn.add(codes::kRpmOverChuck, m,
+               {fmt::format("{:.0f}", std::max(m.rpm, m.rpmEnd)), fmt::format("{:.0f}", options.chuckMaxRpm)});
+    if (!cdCutting(m) || tally.sectionArea <= 1e-9) continue;
     const std::size_t k = static_cast<std::size_t>(m.tool - 1);
-
-    CutNumbers c;
-    c.move = i;
-    c.line = m.line;
-    c.file = m.file;
-    c.blockIndex = m.blockIndex;
-    c.tool = m.tool;
-    c.tStart = m.tStart;
-    c.tEnd = m.tEnd;
-    c.thread = thread;
-    // Where the edge cuts fastest: the larger of the move's two ends (a drill at its rim).
+    CutNumbers c = cdStockFree(m, i, setup, options);
+    const bool thread = c.thread;
     const double drill = options.drillDiameter[k];
-    const double d0 = drill > 0.0 ? drill : 2.0 * std::abs(m.path.start.y());
-    const double d1 = drill > 0.0 ? drill : 2.0 * std::abs(m.path.end.y());
-    const double vc0 = std::numbers::pi * d0 * m.rpm / 1000.0;
-    const double vc1 = std::numbers::pi * d1 * m.rpmEnd / 1000.0;
-    c.diameter = vc1 > vc0 ? d1 : d0;
-    c.rpm = vc1 > vc0 ? m.rpmEnd : m.rpm;
-    c.vc = std::max(vc0, vc1);
-    c.feed = thread ? m.lead : m.feed / m.rpm;
-    // The depth, across the feed: along Z (turning, boring, drilling) the deepest radial cut of a
-    // column; along X (facing, grooving) the half section removed over the radial length engaged.
-    const double along = std::abs(m.path.end.x() - m.path.start.x());
-    const double across = std::abs(m.path.end.y() - m.path.start.y());
+    // The depth, across the feed: along Z (turning, boring, drilling) the radial cut over most of
+    // the length engaged (the median of the columns: a finishing pass that also takes the sliver a
+    // roughing pass left at a shoulder is 0.2 mm deep, not the shoulder's height); along X (facing,
+    // grooving) the half section removed over the radial length engaged.
+    // Outside or in the bore: the side of the column's material its path runs nearer.
     double deepest = 0.0;
-    for (const int col : tally.touched) deepest = std::max(deepest, tally.radial[static_cast<std::size_t>(col)]);
-    c.depth = along >= across ? deepest : (deepest > 0.0 ? tally.sectionArea / deepest : 0.0);
+    int insideColumns = 0;
+    radials.clear();
+    for (const int col : tally.touched) {
+      const std::size_t ci = static_cast<std::size_t>(col);
+      deepest = std::max(deepest, tally.radial[ci]);
+      radials.push_back(tally.radial[ci]);
+      const double r = cdPathRadiusAt(c, stock.zCentre(col));
+      const bool inside =
+          stock.outerRadius(col) > 0.0 && std::abs(r - stock.innerRadius(col)) < std::abs(r - stock.outerRadius(col));
+      insideColumns += inside ? 1 : 0;
+      if (!options.warningsOnly) (inside ? data.lastInside : data.lastOutside)[ci] = static_cast<int>(data.cuts.size());
+    }
+    c.inside = insideColumns * 2 > static_cast<int>(tally.touched.size());
+    double median = 0.0;
+    if (!radials.empty()) {
+      const auto mid = radials.begin() + static_cast<std::ptrdiff_t>(radials.size() / 2);
+      std::nth_element(radials.begin(), mid, radials.end());
+      median = *mid;
+    }
+    c.depth = !c.facing ? median : (deepest > 0.0 ? tally.sectionArea / deepest : 0.0);
     c.chipWidth = c.depth / sinKr;
     c.chipThickness = c.feed * sinKr;
     c.removalRate = c.vc * c.depth * c.feed;
-    const int row = m.offset >= 1 ? m.offset : m.tool;
-    const double offsetR = row >= 1 && row <= io::kOffsetCount ? setup.offsets.at(row).r : 0.0;
-    c.noseRadius = offsetR > 0.0 ? offsetR : options.noseRadius[k];
-    if (!thread && drill <= 0.0 && c.noseRadius > 0.0) {
-      c.rz = roughnessRz(c.feed, c.noseRadius);
-      c.ra = roughnessRa(c.feed, c.noseRadius);
-    }
     if (material && material->kc11 > 0.0 && !thread && drill <= 0.0) {
       c.kc = specificCuttingForce(material->kc11, material->mc, c.chipThickness);
       c.force = c.kc * c.depth * c.feed;
@@ -337,10 +514,7 @@ CuttingData measureCuts(const machine::Timeline& timeline, const CutSetup& setup
 
     // The teacher's warnings, once a block each.
     const ToolMaterial tm = options.toolMaterial[k];
-    if (material && tm != ToolMaterial::Unknown && !thread) {
-      const bool hss = tm == ToolMaterial::Hss;
-      const double lo = hss ? material->hssMin : material->carbideMin;
-      const double hi = hss ? material->hssMax : material->carbideMax;
+    if (double lo = 0.0, hi = 0.0; !thread && cdSpeedRange(options, tm, lo, hi)) {
       const double mid = (lo + hi) / 2.0;
       const std::string rpmFix =
           c.diameter > 0.0 ? fmt::format("{:.0f}", mid * 1000.0 / (std::numbers::pi * c.diameter)) : "?";
@@ -359,11 +533,27 @@ CuttingData measureCuts(const machine::Timeline& timeline, const CutSetup& setup
         warn.add(codes::kCutSpeedLow, m, std::move(args));
       }
     }
-    if (c.ra && c.depth <= options.finishingDepth && options.finishRa > 0.0 && *c.ra > options.finishRa * 1.005) {
-      const double fmax = std::sqrt(options.finishRa * 32.0 * c.noseRadius / 1000.0);
+    const FinishMark* mark = nullptr;
+    const double finishRa = finishLimit(options, c.inside, c.diameter, c.z0, c.z1, &mark);
+    if (c.ra && c.depth <= options.finishingDepth && finishRa > 0.0 && *c.ra > finishRa * 1.005) {
+      const double fmax = std::sqrt(finishRa * 32.0 * c.noseRadius / 1000.0);
+      // Where the limit comes from: the drawing's mark on this surface, or the default.
+      std::string whyEn, whyTh;
+      if (mark) {
+        const std::string d =
+            mark->dMin == mark->dMax ? u.len(mark->dMin) : u.len(mark->dMin) + "-" + u.len(mark->dMax);
+        whyEn = fmt::format("the drawing's mark for {} {} from Z{} to Z{}", mark->inside ? "the bore" : "diameter", d,
+                            u.len(mark->zRight), u.len(mark->zLeft));
+        whyTh = fmt::format("ตามสัญลักษณ์ความหยาบผิวในแบบงานของ{} {} จาก Z{} ถึง Z{}", mark->inside ? "รูเจาะ Ø" : "Ø", d,
+                            u.len(mark->zRight), u.len(mark->zLeft));
+      } else {
+        const bool n8 = std::abs(finishRa - 3.2) < 1e-9;  // ISO 1302's N8, the usual turned finish
+        whyEn = n8 ? "the default, N8: the drawing gives no mark here" : "the default: the drawing gives no mark here";
+        whyTh = n8 ? "ค่าปกติ N8 เพราะแบบงานไม่ได้กำหนดความหยาบผิวตรงนี้" : "ค่าปกติ เพราะแบบงานไม่ได้กำหนดความหยาบผิวตรงนี้";
+      }
       warn.add(codes::kFinishTooRough, m,
                {u.feed(c.feed), u.len(c.noseRadius), fmt::format("{:.1f}", *c.ra), fmt::format("{:.1f}", *c.rz),
-                fmt::format("{:.1f}", options.finishRa), u.feed(fmax), u.unitArg()});
+                fmt::format("{:.1f}", finishRa), u.feed(fmax), u.unitArg(), whyEn, whyTh});
     }
     const double edge = options.edgeLength[k];
     if (edge > 0.0 && c.depth > edge * 2.0 / 3.0 * 1.005)
@@ -376,9 +566,100 @@ CuttingData measureCuts(const machine::Timeline& timeline, const CutSetup& setup
       warn.add(codes::kTorqueOverSpindle, m,
                {fmt::format("{:.0f}", c.torque), fmt::format("{:.0f}", options.spindleTorqueNm), u.len(c.diameter),
                 u.unitArg()});
-    data.cuts.push_back(c);
+    if (!options.warningsOnly) data.cuts.push_back(c);
   }
   return data;
+}
+
+std::size_t movesBeforeAlarm(const machine::Timeline& record) {
+  if (!record.alarm) return record.moves.size();
+  const SourceRange& at = record.alarm->range;
+  std::size_t before = 0;
+  for (const machine::StateSnapshot& s : record.snapshots) {
+    if (s.file == at.file && s.line == at.line) return before;
+    before = static_cast<std::size_t>(s.moveEnd);
+  }
+  return record.moves.size();
+}
+
+std::vector<Diagnostic> checkCuttingData(const machine::Timeline& record, const io::JobHeader& header,
+                                         const machine::MachineSetup& setup, DisplayUnits units,
+                                         std::vector<FinishMark> finishMarks) {
+  if (header.diameter <= 0.0 || header.length <= 0.0 || record.moves.empty()) return {};
+  CuttingDataOptions options = cuttingDataOptions(header.material, setup.tools, setup.machine, shippedMaterials());
+  options.units = units;
+  options.finishMarks = std::move(finishMarks);
+  options.warningsOnly = true;
+  options.moveEnd = movesBeforeAlarm(record);
+  return measureCuts(record, CutSetup::from(header, setup), options).warnings;
+}
+
+std::optional<SurfaceFinish> surfaceFinishOf(const CuttingData& data, const Stock& stock, const PartFeature& f) {
+  if (data.lastOutside.size() != static_cast<std::size_t>(stock.columnCount()) || f.kind == FeatureKind::Thread)
+    return std::nullopt;
+  const bool inside = f.side == FeatureSide::Inside;
+  const CutNumbers* left = nullptr;
+  if (f.kind == FeatureKind::Face) {
+    // A face: the last cut across X at its Z (within the nose and two columns) over its diameters.
+    const double dLo = std::min(f.diameterLeft, f.diameterRight), dHi = std::max(f.diameterLeft, f.diameterRight);
+    for (const CutNumbers& c : data.cuts) {
+      const double reach = c.noseRadius + 2.0 * stock.columnWidth();
+      if (c.facing && c.inside == inside && std::abs(c.z0 - f.zLeft) <= reach &&
+          std::min(std::max(c.d0, c.d1), dHi) > std::max(std::min(c.d0, c.d1), dLo))
+        left = &c;
+    }
+  } else {
+    // Along Z: the cut that last reached most of its columns (the rougher one on a tie).
+    std::map<int, int> count;
+    int first = 0, last = -1;
+    stock.columnRange(f.zLeft, f.zRight, first, last);
+    const std::vector<int>& lastCut = inside ? data.lastInside : data.lastOutside;
+    for (int col = first; col <= last; ++col)
+      if (const int cut = lastCut[static_cast<std::size_t>(col)]; cut >= 0) ++count[cut];
+    int best = -1, bestCount = 0;
+    for (const auto& [cut, n] : count) {
+      const double ra = data.cuts[static_cast<std::size_t>(cut)].ra.value_or(0.0);
+      if (best < 0 || n > bestCount ||
+          (n == bestCount && ra > data.cuts[static_cast<std::size_t>(best)].ra.value_or(0.0))) {
+        best = cut;
+        bestCount = n;
+      }
+    }
+    // A surface mostly as the bar came (a cut only brushed its end) got no roughness from a cut.
+    if (best >= 0 && 2 * bestCount > last - first + 1) left = &data.cuts[static_cast<std::size_t>(best)];
+  }
+  if (!left || !left->ra) return std::nullopt;
+  SurfaceFinish s;
+  s.inside = inside;
+  s.zLeft = f.zLeft;
+  s.zRight = f.zRight;
+  s.dMin = std::min(f.diameterLeft, f.diameterRight);
+  s.dMax = std::max(f.diameterLeft, f.diameterRight);
+  s.line = left->line;
+  s.file = left->file;
+  s.feed = left->feed;
+  s.noseRadius = left->noseRadius;
+  s.ra = *left->ra;
+  s.rz = left->rz.value_or(0.0);
+  s.face = f.kind == FeatureKind::Face;
+  return s;
+}
+
+std::vector<SurfaceFinish> surfaceFinishes(const CuttingData& data, const Stock& stock) {
+  std::vector<SurfaceFinish> out;
+  const PartFeatures features = partFeatures(stock);
+  for (const auto* list : {&features.outside, &features.inside})
+    for (const PartFeature& f : *list)
+      if (std::optional<SurfaceFinish> s = surfaceFinishOf(data, stock, f)) out.push_back(*s);
+  return out;
+}
+
+CuttingData measureRun(const machine::Timeline& timeline, const io::JobHeader& header,
+                       const machine::MachineSetup& setup, DisplayUnits units, std::vector<FinishMark> finishMarks) {
+  CuttingDataOptions options = cuttingDataOptions(header.material, setup.tools, setup.machine, shippedMaterials());
+  options.units = units;
+  options.finishMarks = std::move(finishMarks);
+  return measureCuts(timeline, CutSetup::from(header, setup), options);
 }
 
 namespace {

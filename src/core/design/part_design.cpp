@@ -496,6 +496,22 @@ std::vector<cut::DrawnDimension> drawnDimensions(const PartDesign& part, const s
   return out;
 }
 
+std::vector<cut::FinishMark> finishMarks(const PartDesign& part) {
+  std::vector<cut::FinishMark> out;
+  for (const bool inside : {false, true}) {
+    double z = 0.0, from = 0.0;  // a first taper or arc starts on the axis
+    for (const OutsideStep& s : inside ? part.inside : part.outside) {
+      const double zr = z, zl = z - s.length;
+      const double d0 = s.kind == StepKind::Cylinder ? s.diameter : std::min(from, s.diameter);
+      const double d1 = s.kind == StepKind::Cylinder ? s.diameter : std::max(from, s.diameter);
+      if (s.roughness > 0.0) out.push_back(cut::FinishMark{inside, zl, zr, d0, d1, s.roughness});
+      z = zl;
+      from = s.diameter;
+    }
+  }
+  return out;
+}
+
 double spindleRpm(double cuttingSpeed, double diameter) {
   return diameter > 0.0 ? 1000.0 * cuttingSpeed / (M_PI * diameter) : 0.0;
 }

@@ -261,9 +261,18 @@ std::vector<ClassRow> gradeClass(const std::string& folder, const GradeAgainst& 
   return rows;
 }
 
+std::string cuttingWarningsText(const GradedProgram& g, Lang lang) {
+  std::string out;
+  for (const Diagnostic& w : g.cuttingWarnings)
+    out +=
+        (out.empty() ? "" : ", ") + w.code + (lang == Lang::Th ? " บรรทัด " : " line ") + std::to_string(w.range.line);
+  return out;
+}
+
 std::string classCsv(const std::vector<ClassRow>& rows, bool drawing) {
   const bool touchOff = std::any_of(rows.begin(), rows.end(), [](const ClassRow& r) { return r.touchOff.asked; });
-  std::string out = "file,result,errors,first_error,alarm,cycle_time_s,leftover_mm,leftover_z,gouge_mm,gouge_z";
+  std::string out =
+      "file,result,errors,first_error,alarm,cycle_time_s,leftover_mm,leftover_z,gouge_mm,gouge_z,cutting_data";
   if (touchOff) out += ",touch_off";
   out += drawing ? ",feature,nominal_mm,tolerance,lower_mm,upper_mm,measured_mm,verdict\n" : "\n";
   for (const ClassRow& r : rows) {
@@ -274,7 +283,8 @@ std::string classCsv(const std::vector<ClassRow>& rows, bool drawing) {
         (r.compared
              ? gcode::formatFixed(r.deviation.leftover, 3) + "," + gcode::formatFixed(r.deviation.leftoverZ, 2) + "," +
                    gcode::formatFixed(r.deviation.gouge, 3) + "," + gcode::formatFixed(r.deviation.gougeZ, 2)
-             : ",,,");
+             : ",,,") +
+        "," + csvField(cuttingWarningsText(r.graded, Lang::En));
     if (touchOff) line += "," + csvField(touchOffSummary(r.touchOff));
     if (!drawing) {
       out += line + "\n";

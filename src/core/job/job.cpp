@@ -322,6 +322,14 @@ std::shared_ptr<const Job> makeJob(JobInput input) {
   j.diagnostics_.insert(j.diagnostics_.end(), std::make_move_iterator(found.begin()),
                         std::make_move_iterator(found.end()));
   j.stockNotes_ = resolveJobStock(file, program, input.stock, j.tools_.setup, readRun, j.tools_.record.get());
+  // The units the program speaks, before any run (issue 28 item 4: View ▸ Units shown ▸ Auto).
+  j.units_ = gcode::programInputUnits(program, powerOn, run.dialect) == gcode::InputUnits::Inch ? DisplayUnits::Inch
+                                                                                                : DisplayUnits::Mm;
+  // What a teacher would say about the speeds, feeds and depths (issue 39), from the same record.
+  if (input.cuttingData && j.tools_.record && !core::hasErrors(j.diagnostics_))
+    for (Diagnostic& w :
+         cut::checkCuttingData(*j.tools_.record, file.header, j.tools_.setup, j.units_, input.finishMarks))
+      j.diagnostics_.push_back(std::move(w));
   // The recorded run has told the tools and the stock all it knows. When it is the run
   // itself and the caller runs next, it is kept to be the timeline (interpreted once);
   // otherwise freed now, so a later timeline() does not hold two runs of a long program
@@ -340,9 +348,6 @@ std::shared_ptr<const Job> makeJob(JobInput input) {
       j.diagnostics_.push_back(Diagnostic{Severity::Error, code, SourceRange{h.diameter <= 0 ? 4 : 5, 1, 0}, {}});
   }
   std::stable_sort(j.diagnostics_.begin(), j.diagnostics_.end(), byPlace);
-  // The units the program speaks, before any run (issue 28 item 4: View ▸ Units shown ▸ Auto).
-  j.units_ = gcode::programInputUnits(program, powerOn, run.dialect) == gcode::InputUnits::Inch ? DisplayUnits::Inch
-                                                                                                : DisplayUnits::Mm;
   j.program_ = std::move(program);
   j.input_ = std::move(input);
   return job;

@@ -510,7 +510,7 @@ TEST(Control, AClassIsGradedOnTheOffsetsItsStudentsTouchedOff) {
             "CYCLE START saves it");
 
   const std::string csv = job::classCsv(rows);
-  EXPECT_NE(csv.find("gouge_mm,gouge_z,touch_off\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("gouge_mm,gouge_z,cutting_data,touch_off\n"), std::string::npos) << csv;
   EXPECT_NE(csv.find(",T01 X0.000/0.000 Z-0.001/0.000 in\n"), std::string::npos) << csv;
   EXPECT_NE(csv.find(",not saved (c.offset.cfg)\n"), std::string::npos) << csv;
   fs::remove_all(dir);

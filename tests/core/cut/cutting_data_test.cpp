@@ -2,6 +2,7 @@
 // and each teacher's warning on its block, never on a sound program.
 #include "klueng/core/cut/cutting_data.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -235,7 +236,8 @@ TEST(CuttingDataTest, FinishingFeedTooLargeForTheNose) {
   // The largest feed for Ra 3.2 with R0.8: sqrt(3.2 * 32 * 0.8 / 1000) = 0.286 mm/rev.
   EXPECT_EQ(formatMessage(r.data.warnings[0], Lang::En),
             "finishing feed 0.300 mm/rev with nose radius R0.80 leaves Ra 3.5 um (Rz 14.1 um), rougher than Ra 3.2 "
-            "um: use F0.286 or less, or an insert with a larger nose radius");
+            "um (the default, N8: the drawing gives no mark here): use F0.286 or less, or an insert with a larger "
+            "nose radius");
 }
 
 TEST(CuttingDataTest, FacingDepthIsTheAxialWidth) {
@@ -304,6 +306,180 @@ TEST(CuttingDataTest, RoughnessAndKienzleFormulas) {
   EXPECT_DOUBLE_EQ(roughnessRz(0.2, 0.0), 0.0);
   EXPECT_DOUBLE_EQ(specificCuttingForce(1500, 0.22, 1.0), 1500.0);
   EXPECT_NEAR(specificCuttingForce(1500, 0.22, 0.1), 1500.0 * std::pow(10.0, 0.22), 1e-9);
+}
+
+// Issue 39 item 2: the drawing's roughness mark judges the finishing feed where it lies, the
+// message says which limit it was; the 3.2 um default only where no mark lies under the cut.
+const std::string kFinishPass =
+    "Cutting data\nFinish\nS45C\n150\n1100\nTest\n"
+    "G21 G40 G99\n"      // 7
+    "T0101\n"            // 8
+    "G97 S800 M03\n"     // 9
+    "G00 X60. Z2.\n"     // 10
+    "X49.4\n"            // 11
+    "G01 Z-20. F0.25\n"  // 12: Ra = 0.0625 / (32 * 0.8) * 1000 = 2.441 um, ap 0.3 mm
+    "G00 X60.\n"         // 13
+    "M30\n";
+
+TEST(CuttingDataTest, TheDrawingsRoughnessMarkJudgesTheFinishingFeed) {
+  // No mark: 2.44 um is within the default 3.2: sound.
+  EXPECT_TRUE(cdRun(kFinishPass).data.warnings.empty());
+  // The drawing asks Ra 1.6 on Ø49.4 from Z0 to Z-20: the largest feed is sqrt(1.6 * 32 * 0.8 / 1000) = 0.202.
+  const CdRun marked = cdRun(kFinishPass, [](CuttingDataOptions& o) {
+    o.finishMarks.push_back(FinishMark{false, -20.0, 0.0, 49.4, 49.4, 1.6});
+  });
+  ASSERT_EQ(warningCodesOn(marked.data, 12), (std::vector<std::string>{codes::kFinishTooRough}));
+  EXPECT_EQ(formatMessage(marked.data.warnings[0], Lang::En),
+            "finishing feed 0.250 mm/rev with nose radius R0.80 leaves Ra 2.4 um (Rz 9.8 um), rougher than Ra 1.6 "
+            "um (the drawing's mark for diameter 49.40 from Z0.00 to Z-20.00): use F0.202 or less, or an insert "
+            "with a larger nose radius");
+  EXPECT_NE(formatMessage(marked.data.warnings[0], Lang::Th).find("ตามสัญลักษณ์ความหยาบผิวในแบบงาน"), std::string::npos);
+  // A mark on another surface (Ø30) leaves this one to the default: sound again.
+  const CdRun elsewhere = cdRun(kFinishPass, [](CuttingDataOptions& o) {
+    o.finishMarks.push_back(FinishMark{false, -20.0, 0.0, 30.0, 30.0, 1.6});
+  });
+  EXPECT_TRUE(elsewhere.data.warnings.empty());
+  // A coarser mark (Ra 6.3) allows more than the default: a 0.3 feed (Ra 3.5) passes there.
+  const CdRun coarse = cdRun(
+      "Cutting data\nFinish\nS45C\n150\n1100\nTest\nG21 G40 G99\nT0101\nG97 S800 M03\nG00 X60. Z2.\nX49.4\n"
+      "G01 Z-20. F0.3\nG00 X60.\nM30\n",
+      [](CuttingDataOptions& o) {
+        o.finishMarks.push_back(FinishMark{false, -20.0, 0.0, 49.4, 49.4, 6.3});
+      });
+  EXPECT_TRUE(coarse.data.warnings.empty());
+  // finishLimit itself: the mark's side and diameter (within 0.5 mm) and Z overlap.
+  CuttingDataOptions o;
+  o.finishMarks.push_back(FinishMark{false, -20.0, -5.0, 30.0, 30.0, 0.8});
+  const FinishMark* mark = nullptr;
+  EXPECT_DOUBLE_EQ(finishLimit(o, false, 30.3, -10.0, -30.0, &mark), 0.8);
+  EXPECT_NE(mark, nullptr);
+  EXPECT_DOUBLE_EQ(finishLimit(o, true, 30.0, -10.0, -30.0, &mark), 3.2);  // a bore: not this mark
+  EXPECT_EQ(mark, nullptr);
+  EXPECT_DOUBLE_EQ(finishLimit(o, false, 31.0, -10.0, -30.0), 3.2);  // 1 mm off its diameter
+  EXPECT_DOUBLE_EQ(finishLimit(o, false, 30.0, -1.0, 0.0), 3.2);     // right of it
+}
+
+// Issue 39 item 1: the check's warnings-only measure gives the very warnings the full one does,
+// on their blocks, and stops at the record's first alarm.
+TEST(CuttingDataTest, WarningsOnlyGivesTheSameWarnings) {
+  const std::string rough =
+      "Cutting data\nRough\nS45C\n150\n1100\nTest\n"
+      "G21 G40 G99\n"     // 7
+      "T0101\n"           // 8
+      "G97 S1000 M03\n"   // 9
+      "G00 X60. Z2.\n"    // 10
+      "X46.\n"            // 11
+      "G01 Z-30. F0.2\n"  // 12: sound
+      "G00 X60.\n"        // 13
+      "Z2.\n"             // 14
+      "X45.4\n"           // 15
+      "G01 Z-30. F0.4\n"  // 16: ap 0.3, Ra = 0.16 / 25.6 * 1000 = 6.25 um > 3.2
+      "G00 X60.\n"        // 17
+      "M30\n";
+  const CdRun full = cdRun(rough, [](CuttingDataOptions& o) { o.toolMaterial[0] = ToolMaterial::Hss; });
+  // HSS in S45C (20-35 m/min): line 12 at pi * 46 * 1000 / 1000 = 144.5 and line 16 at 142.6 are too fast.
+  EXPECT_EQ(warningCodesOn(full.data, 12), (std::vector<std::string>{codes::kCutSpeedHigh}));
+  EXPECT_EQ(warningCodesOn(full.data, 16), (std::vector<std::string>{codes::kCutSpeedHigh, codes::kFinishTooRough}));
+  CuttingDataOptions only = full.options;
+  only.warningsOnly = true;
+  const CuttingData quick = measureCuts(full.run.timeline, CutSetup::from(full.run.file.header, full.run.setup), only);
+  ASSERT_EQ(quick.warnings.size(), full.data.warnings.size());
+  for (std::size_t i = 0; i < quick.warnings.size(); ++i) {
+    EXPECT_EQ(quick.warnings[i].code, full.data.warnings[i].code);
+    EXPECT_EQ(quick.warnings[i].range.line, full.data.warnings[i].range.line);
+    EXPECT_EQ(quick.warnings[i].args, full.data.warnings[i].args);
+  }
+  EXPECT_TRUE(quick.cuts.empty());  // the check keeps no numbers
+  // Measured only up to move 5 (the first cut and its retract): line 16 is not reached.
+  only.moveEnd = 5;
+  const CuttingData part = measureCuts(full.run.timeline, CutSetup::from(full.run.file.header, full.run.setup), only);
+  ASSERT_EQ(part.warnings.size(), 1u);
+  EXPECT_EQ(part.warnings[0].range.line, 12);
+  // The sound carbide run: nothing to say, in either mode.
+  CdRun sound = cdRun(kSteelTurn);
+  sound.options.warningsOnly = true;
+  EXPECT_TRUE(measureCuts(sound.run.timeline, CutSetup::from(sound.run.file.header, sound.run.setup), sound.options)
+                  .warnings.empty());
+}
+
+// The check stops measuring once every code the run could raise has been said its 20 times: 30
+// passes of 0.1 mm at F0.4 (Ra 6.25 um, W332 each) give the same 20 warnings as the full measure.
+TEST(CuttingDataTest, TheCheckStopsWhenEverythingItCouldSayIsSaid) {
+  std::string text = "Cutting data\nPasses\nS45C\n150\n1100\nTest\nG21 G40 G99\nT0101\nG97 S800 M03\nG00 X52. Z2.\n";
+  for (int pass = 1; pass <= 30; ++pass)  // 0.1 mm a pass on the radius: X49.8, X49.6 ...
+    text += fmt::format("G00 X{:.1f}\nG01 Z-10. F0.4\nG00 X52.\nZ2.\n", 50.0 - 0.2 * pass);
+  text += "M30\n";
+  // A tool whose material and edge are not known: W332 is the only code the run could raise.
+  CdRun full = cdRun(text, [](CuttingDataOptions& o) {
+    o.toolMaterial[0] = ToolMaterial::Unknown;
+    o.edgeLength[0] = 0.0;
+  });
+  ASSERT_EQ(full.data.warnings.size(), 20u);  // at most 20 of one code
+  CuttingDataOptions only = full.options;
+  only.warningsOnly = true;
+  const CuttingData quick = measureCuts(full.run.timeline, CutSetup::from(full.run.file.header, full.run.setup), only);
+  ASSERT_EQ(quick.warnings.size(), 20u);
+  for (std::size_t i = 0; i < 20; ++i) {
+    EXPECT_EQ(quick.warnings[i].code, codes::kFinishTooRough);
+    EXPECT_EQ(quick.warnings[i].range.line, full.data.warnings[i].range.line);
+  }
+}
+
+// Issue 39 item 3: the roughness each finished surface got is the last cut's over it.
+TEST(CuttingDataTest, EachSurfaceGetsTheRoughnessOfItsLastCut) {
+  const CdRun r = cdRun(
+      "Cutting data\nSurfaces\nS45C\n150\n1100\nTest\n"
+      "G21 G40 G99\n"     // 7
+      "T0101\n"           // 8
+      "G97 S1000 M03\n"   // 9
+      "G00 X60. Z2.\n"    // 10
+      "X46.\n"            // 11
+      "G01 Z-30. F0.3\n"  // 12: Ø46 over 30 mm, Ra = 0.3^2 / (32 * 0.8) * 1000 = 3.516 um
+      "G00 X60.\n"        // 13
+      "Z2.\n"             // 14
+      "X40.\n"            // 15
+      "G01 Z-20. F0.1\n"  // 16: Ø40 over 20 mm, Ra = 0.1^2 / 25.6 * 1000 = 0.3906 um, Rz 1.5625 um
+      "X48. F0.15\n"      // 17: the shoulder at Z-20 faced out, Ra = 0.15^2 / 25.6 * 1000 = 0.8789 um
+      "G00 X60.\n"        // 18
+      "M30\n");
+  ASSERT_FALSE(r.data.cuts.empty());
+  CutSimulator sim(r.run.timeline, CutSetup::from(r.run.file.header, r.run.setup));
+  sim.runToEnd();
+  const std::vector<SurfaceFinish> got = surfaceFinishes(r.data, sim.stock());
+  const auto find = [&](double dMax, bool face) -> const SurfaceFinish* {
+    for (const SurfaceFinish& s : got)
+      if (s.face == face && std::abs(s.dMax - dMax) < 0.05 && (face || std::abs(s.dMin - dMax) < 0.05)) return &s;
+    return nullptr;
+  };
+  const SurfaceFinish* finished = find(40.0, false);
+  ASSERT_NE(finished, nullptr);
+  EXPECT_EQ(finished->line, 16);
+  expectWithin1Percent(finished->ra, 0.3906, "Ra of the Ø40");
+  expectWithin1Percent(finished->rz, 1.5625, "Rz of the Ø40");
+  // Ø46 left of the shoulder: line 12's surface (Z-20 to Z-30).
+  const SurfaceFinish* left = find(46.0, false);
+  ASSERT_NE(left, nullptr);
+  EXPECT_EQ(left->line, 12);
+  expectWithin1Percent(left->ra, 3.516, "Ra of the Ø46");
+  // The shoulder face up to Ø46 at Z-20: the facing move of line 17.
+  const SurfaceFinish* shoulder = find(46.0, true);
+  ASSERT_NE(shoulder, nullptr);
+  EXPECT_EQ(shoulder->line, 17);
+  expectWithin1Percent(shoulder->ra, 0.8789, "Ra of the shoulder");
+}
+
+TEST(CuttingDataTest, ARecordIsMeasuredUpToItsFirstAlarm) {
+  machine::Timeline t;
+  for (int i = 0; i < 4; ++i) {
+    t.moves.emplace_back();
+    machine::StateSnapshot s;
+    s.line = 10 + i;
+    s.moveEnd = i + 1;
+    t.snapshots.push_back(s);
+  }
+  EXPECT_EQ(movesBeforeAlarm(t), 4u);
+  t.alarm = Diagnostic{Severity::Alarm, "A104", SourceRange{12, 1, 0, 0}, {}};
+  EXPECT_EQ(movesBeforeAlarm(t), 2u);  // lines 10 and 11's moves
 }
 
 }  // namespace

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "klueng/core/cut/cutting_data.h"
 #include "klueng/core/cut/inspection.h"
 #include "klueng/core/gcode/code_table.h"
 #include "klueng/core/geometry.h"
@@ -102,6 +103,10 @@ std::string writePartDesign(const PartDesign& part);
 // the ones without take the general tolerance (`general`, or the design's
 // general_tolerance when empty) when there is one, else are left out.
 std::vector<cut::DrawnDimension> drawnDimensions(const PartDesign& part, const std::string& general = {});
+
+// The drawing's roughness marks (each step's `roughness`) for the cutting-data warning W332
+// (cut/cutting_data.h): a step's Z range and diameters (a taper's or arc's from the step before).
+std::vector<cut::FinishMark> finishMarks(const PartDesign& part);
 
 // ISO metric external thread: radial height per mm of pitch.
 inline constexpr double kIsoThreadHeight = 0.6134;

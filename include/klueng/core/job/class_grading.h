@@ -104,10 +104,14 @@ std::vector<ClassRow> gradeClass(const std::string& folder, const std::string& r
 std::vector<ClassRow> gradeClass(const std::string& folder, const GradeAgainst& against, const JobInput& base,
                                  const std::function<void(int, int, const std::string&)>& progress = {});
 
-// file,result,errors,first_error,alarm,cycle_time_s,leftover_mm,leftover_z,gouge_mm,gouge_z (then touch_off,
-// touchOffSummary, when a row was asked for the setup exercise); with a
-// drawing (`drawing`), one line per student and drawn dimension, followed by
-// feature,nominal_mm,tolerance,lower_mm,upper_mm,measured_mm,verdict (in, out or missing).
+// The cutting-data warnings of a graded program, code and line: "W332 line 12, W330 line 15"
+// (Thai "W332 บรรทัด 12"); empty when none. The CSV, the PDF and the dialog's column.
+std::string cuttingWarningsText(const GradedProgram& g, Lang lang);
+
+// file,result,errors,first_error,alarm,cycle_time_s,leftover_mm,leftover_z,gouge_mm,gouge_z,cutting_data (then
+// touch_off, touchOffSummary, when a row was asked for the setup exercise); with a drawing (`drawing`), one line per
+// student and drawn dimension, followed by feature,nominal_mm,tolerance,lower_mm,upper_mm,measured_mm,verdict (in, out
+// or missing).
 std::string classCsv(const std::vector<ClassRow>& rows, bool drawing = false);
 
 }  // namespace klueng::core::job

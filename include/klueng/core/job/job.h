@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "klueng/core/cut/cut_simulator.h"
+#include "klueng/core/cut/cutting_data.h"
 #include "klueng/core/diagnostic.h"
 #include "klueng/core/gcode/checker.h"
 #include "klueng/core/gcode/program.h"
@@ -71,6 +72,12 @@ struct JobInput {
   // (binary data, no G-code in its first lines) is refused with F159, never parsed,
   // so no message quotes its text (issue 42 item 1).
   bool folderRun = false;
+  // The cutting-data warnings (W330-W336, issue 39 item 1) join the diagnostics, measured on the
+  // run the tool inference records (cut::checkCuttingData): no run of their own.
+  bool cuttingData = true;
+  // The drawing's roughness marks for W332 (design::finishMarks of the part the program is for);
+  // where none lies under a finishing cut, Ra 3.2 um.
+  std::vector<cut::FinishMark> finishMarks;
 };
 
 class Job {
