@@ -14,6 +14,8 @@
 #include "klueng/core/io/image.h"
 #include "../scratch_folders.h"
 
+#include "cli_shell.h"
+
 // Its own namespace: the tests are unity-built and sibling files have helpers of the same names.
 namespace cli_simulate_cut_test {
 
@@ -32,18 +34,19 @@ struct Result {
   std::string err;
 };
 
-// Runs klueng-cli with stderr captured (stdout discarded).
-Result simulate(const std::string& args, const std::string& config = kCutShipped) {
-  const std::string command =
-      "env LC_ALL= LC_MESSAGES= LANG=C '" + kCut + "' simulate " + args + " --config '" + config + "' 2>&1 >/dev/null";
+// Runs `klueng-cli SUBCOMMAND` with stderr captured (and stdout too where `keepStdout`).
+Result runCli(const std::string& subcommand, const std::string& args, const std::string& config, bool keepStdout) {
+  std::string command = "env LC_ALL= LC_MESSAGES= LANG=C " + klueng::test::shellQuote(kCut) + " " + subcommand + " " +
+                        args + " --config " + klueng::test::shellQuote(config);
+  if (!keepStdout) command = "{ " + command + " >/dev/null; }";
   Result r;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (!pipe) return r;
-  char buf[4096];
-  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) r.err.append(buf, n);
-  const int status = ::pclose(pipe);
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.exitCode = klueng::test::runShell(command, r.err);
   return r;
+}
+
+// Runs klueng-cli simulate with stderr captured (stdout discarded).
+Result simulate(const std::string& args, const std::string& config = kCutShipped) {
+  return runCli("simulate", args, config, false);
 }
 
 std::string slurp(const fs::path& p) {
@@ -335,18 +338,7 @@ TEST(CliCuttingData, WritesPerBlockAndWarnsOnTheBlock) {
 }
 
 // Runs `klueng-cli check` with stdout and stderr captured.
-Result checkCommand(const std::string& args, const std::string& config) {
-  const std::string command =
-      "env LC_ALL= LC_MESSAGES= LANG=C '" + kCut + "' check " + args + " --config '" + config + "' 2>&1";
-  Result r;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (!pipe) return r;
-  char buf[4096];
-  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) r.err.append(buf, n);
-  const int status = ::pclose(pipe);
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+Result checkCommand(const std::string& args, const std::string& config) { return runCli("check", args, config, true); }
 
 std::size_t occurrences(const std::string& text, const std::string& what) {
   std::size_t n = 0;
