@@ -251,6 +251,8 @@ inline constexpr const char* kProfileStartsWithoutMotion = "A153";  // {0} cycle
 // damaged file): the job says why instead of "has no bitmap" (issue 42 item 6).
 inline constexpr const char* kToolBitmapUnusable = "E311";  // {0} T word, {1} tool, {2} why (en), {3} why (th)
 inline constexpr const char* kCallWithoutProgram = "A154";  // {0} M98/G65/G66: no P (Fanuc alarm PS0076)
+// The run would keep more than RunOptions::memoryBudgetMb (issue 42 item 3): Klueng's own stop.
+inline constexpr const char* kRunMemoryBudget = "A155";  // {0} the budget in MB, {1} the block's line
 inline constexpr const char* kSubprogramFileHasErrors = "E412";
 inline constexpr const char* kMainProgramRepeats = "I160";
 inline constexpr const char* kVacantAddressOmitted = "W130";

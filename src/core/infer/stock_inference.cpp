@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <map>
 #include <string>
 
 #include "klueng/core/geometry.h"
@@ -188,8 +187,13 @@ StockInference inferStock(const gcode::Program& program, const Timeline& run, co
   StockInference r;
   const std::vector<Move>& moves = tl.moves;
   const std::vector<char> inside = insidePasses(program, moves);
-  std::map<int, Units> unitsOfBlock;
-  for (const StateSnapshot& s : tl.snapshots) unitsOfBlock[s.blockIndex] = s.modal.units;
+  // The units a block ran in: its last run's (a search from the end, for the one block asked;
+  // a map of every block's was a node a block, 64 bytes each, issue 42 item 3).
+  const auto inchBlock = [&tl](int blockIndex) {
+    for (std::size_t k = tl.blockCount(); k-- > 0;)
+      if (const BlockMark mark = tl.blockMark(k); mark.blockIndex == blockIndex) return mark.units == Units::Inch;
+    return false;
+  };
 
   // Ø: the first feeding block off the centre that is not inside work. An
   // approach comes from in front of the face (not a drill, not a retract inside
@@ -210,7 +214,7 @@ StockInference inferStock(const gcode::Program& program, const Timeline& run, co
       r.diameterLine = first > 0 ? moves[first - 1].line : m.line;
       const gcode::Block* block = blockOf(program, m);
       r.cycleStart = block && isCycleBlock(*block);
-      r.inch = unitsOfBlock.count(m.blockIndex) && unitsOfBlock[m.blockIndex] == Units::Inch;
+      r.inch = inchBlock(m.blockIndex);
       const double unit = r.inch ? kMmPerInch : 1.0;
       // A plain first cut along -Z is a pass inside the bar; anything else starts above it.
       // (A feed that only reaches the face, `G01 Z0.` at the approach's X, is no pass inside it.)

@@ -205,7 +205,8 @@ class Gatherer {
     readToolList();
     MotionRecorder motion(out_.beyondCentre);
     std::size_t begin = 0;
-    for (const StateSnapshot& s : run.snapshots) {
+    for (std::size_t k = 0; k < run.blockCount(); ++k) {
+      const BlockMark s = run.blockMark(k);
       const std::size_t end =
           std::clamp<std::size_t>(static_cast<std::size_t>(std::max(s.moveEnd, 0)), begin, run.moves.size());
       const std::span<const Move> moves(run.moves.data() + begin, end - begin);
@@ -213,15 +214,15 @@ class Gatherer {
       motion.add(moves);  // every move once, in run order
       if (s.blockIndex < 0 || static_cast<std::size_t>(s.blockIndex) >= program_.blocks.size()) continue;
       const gcode::Block& b = program_.blocks[static_cast<std::size_t>(s.blockIndex)];
-      const int station = s.machine.tool;
+      const int station = s.tool;
       if (station < 1 || station > io::kMaxStations) continue;
       if (const gcode::Word* t = b.find('T'); t && (t->expr >= 0 || t->code() != 0))
-        select(b, station, s.machine.offset, s.modal.units == Units::Inch ? 25.4 : 1.0);
+        select(b, station, s.offset, s.units == Units::Inch ? 25.4 : 1.0);
       if (!current_ || currentStation_ != station) {
         current_ = &out_.uses[station];  // a tool in use before any T block of the run selects it
         currentStation_ = station;
       }
-      block(b, moves, station, motionCode(s.modal.motion, dialect_));
+      block(b, moves, station, motionCode(s.motion, dialect_));
     }
     motion.add(std::span<const Move>(run.moves.data() + begin, run.moves.size() - begin));  // after the last block
     for (auto& [station, use] : out_.uses)

@@ -372,6 +372,7 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
 bool recordIsTheRun(const Timeline& record, const MachineSetup& recordedWith, const RunOptions& recorded,
                     const MachineSetup& setup, const RunOptions& run) {
   if (record.alarm || record.recordStandIns || (record.recordCompensates && run.noseCompensation)) return false;
+  if (!record.marks.empty()) return false;  // a record of marks keeps no states to show
   if (run.throughAlarms || run.dialect != recorded.dialect || run.powerOnUnits != recorded.powerOnUnits ||
       run.optionalStop != recorded.optionalStop || run.blockSkip != recorded.blockSkip ||
       run.stopAtM00 != recorded.stopAtM00)

@@ -616,9 +616,13 @@ class ThroughAlarms final : public MachineSink {
 Timeline interpret(const gcode::Program& program, const MachineSetup& setup, const RunOptions& options) {
   Timeline timeline;
   timeline.moves.reserve(program.blocks.size() + program.blocks.size() / 2);
-  timeline.snapshots.reserve(program.blocks.size());
+  if (options.blockMarksOnly)
+    timeline.marks.reserve(program.blocks.size());
+  else
+    timeline.snapshots.reserve(program.blocks.size());
   auto builder = makeTimelineBuilder(
-      timeline, TimingConfig{setup.machine.rapidX, setup.machine.rapidZ, setup.machine.accelX, setup.machine.accelZ});
+      timeline, TimingConfig{setup.machine.rapidX, setup.machine.rapidZ, setup.machine.accelX, setup.machine.accelZ},
+      TimelineLimits{options.blockMarksOnly, options.memoryBudgetMb << 20});
   std::unique_ptr<MachineSink> compensation;
   if (options.noseCompensation) compensation = makeCompensationStage(*builder);
   MachineSink& chain = compensation ? *compensation : *builder;

@@ -2,7 +2,9 @@
 // times (SPEC 10).
 #include <cmath>
 #include <limits>
+#include <string>
 
+#include "klueng/core/diagnostic_codes.h"
 #include "klueng/core/comp/nose_comp.h"
 #include "klueng/core/geometry.h"
 #include "klueng/core/machine/kinematics.h"
@@ -16,7 +18,8 @@ constexpr double kMinLength = 1e-9;  // mm; shorter moves take no time and are n
 
 class TimelineBuilder final : public MachineSink {
  public:
-  TimelineBuilder(Timeline& out, const TimingConfig& config) : out_(out), config_(config) {}
+  TimelineBuilder(Timeline& out, const TimingConfig& config, const TimelineLimits& limits)
+      : out_(out), config_(config), limits_(limits) {}
 
   void motion(const MotionCall& m) override {
     if (halted()) return;
@@ -71,10 +74,22 @@ class TimelineBuilder final : public MachineSink {
 
   void blockDone(const StateSnapshot& s) override {
     if (halted()) return;
-    StateSnapshot& snap = out_.snapshots.emplace_back(s);
-    snap.time = time_;
-    snap.moveEnd = static_cast<int>(out_.moves.size());
-    snap.machine.position = position_;
+    if (limits_.blockMarksOnly) {
+      BlockMark& mark = out_.marks.emplace_back(BlockMark::of(s));
+      mark.moveEnd = static_cast<int>(out_.moves.size());
+    } else {
+      StateSnapshot& snap = out_.snapshots.emplace_back(s);
+      snap.time = time_;
+      snap.moveEnd = static_cast<int>(out_.moves.size());
+      snap.machine.position = position_;
+    }
+    if (limits_.budgetBytes > 0 && heldBytes() > limits_.budgetBytes) {
+      const std::size_t mb = limits_.budgetBytes >> 20;
+      out_.alarm = Diagnostic{Severity::Alarm,
+                              codes::kRunMemoryBudget,
+                              SourceRange{s.line, 1, 0, s.file},
+                              {std::to_string(mb), std::to_string(s.line)}};
+    }
   }
 
   void alarm(const Diagnostic& d) override {
@@ -149,16 +164,25 @@ class TimelineBuilder final : public MachineSink {
     push(m, second, tRest, second.length() / tRest * 60.0, 0.0, rampSlow);
   }
 
+  // What the run keeps so far: it grows with every block and every move (the budget's measure).
+  std::size_t heldBytes() const {
+    return out_.moves.size() * sizeof(Move) + out_.snapshots.size() * sizeof(StateSnapshot) +
+           out_.marks.size() * sizeof(BlockMark) + out_.flow.writes.size() * sizeof(VariableWrite) +
+           out_.flow.wordValues.size() * sizeof(WordValue);
+  }
+
   Timeline& out_;
   TimingConfig config_;
+  TimelineLimits limits_;
   Vec2 position_ = Vec2::Zero();
   double time_ = 0.0;
 };
 
 }  // namespace
 
-std::unique_ptr<MachineSink> makeTimelineBuilder(Timeline& out, const TimingConfig& config) {
-  return std::make_unique<TimelineBuilder>(out, config);
+std::unique_ptr<MachineSink> makeTimelineBuilder(Timeline& out, const TimingConfig& config,
+                                                 const TimelineLimits& limits) {
+  return std::make_unique<TimelineBuilder>(out, config, limits);
 }
 
 }  // namespace klueng::core::machine

@@ -1,0 +1,106 @@
+// Issue 42 item 3: a run's memory is bounded. An endless loop under max_blocks = 100000000
+// stops with A155 once its moves and states would pass the budget (it ended in std::bad_alloc at
+// 10.9 GB), and a record read only for evidence keeps a 24-byte mark a block, not a StateSnapshot.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "klueng/core/gcode/parser.h"
+#include "klueng/core/messages.h"
+#include "test_support.h"
+
+namespace run_memory_test {
+namespace {
+
+using namespace klueng::core;
+using namespace klueng::core::machine;
+using klueng::core::machine::testing::runText;
+using klueng::core::machine::testing::testSetup;
+
+constexpr const char* kEndlessMacroLoop = "#1=0\nWHILE [1 EQ 1] DO1\n#1=#1+1\nEND1\nM30\n";
+
+TEST(RunMemory, AnEndlessLoopUnderAHugeBlockLimitStopsAtTheBudget) {
+  MachineSetup setup = testSetup();
+  setup.machine.maxBlocks = 100000000;
+  RunOptions options;
+  options.memoryBudgetMb = 4;
+  const Timeline t = runText(kEndlessMacroLoop, options, setup);
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->code, "A155");
+  const int line = t.alarm->range.line;
+  EXPECT_GE(line, 2);
+  EXPECT_LE(line, 4);
+  // Just past the budget: a block's snapshot and its write more than 4 MB.
+  const std::size_t held = t.snapshots.size() * sizeof(StateSnapshot) + t.flow.writes.size() * sizeof(VariableWrite);
+  EXPECT_GT(held, std::size_t{4} << 20);
+  EXPECT_LE(held, (std::size_t{4} << 20) + sizeof(StateSnapshot) + sizeof(VariableWrite));
+  const std::string en = formatMessage(*t.alarm, Lang::En);
+  const std::string th = formatMessage(*t.alarm, Lang::Th);
+  EXPECT_NE(en.find("would need more than 4 MB of memory"), std::string::npos) << en;
+  EXPECT_NE(en.find("it stops at line " + std::to_string(line)), std::string::npos) << en;
+  EXPECT_NE(th.find("หน่วยความจำเกิน 4 MB"), std::string::npos) << th;
+  EXPECT_NE(th.find("จึงหยุดที่บรรทัด " + std::to_string(line)), std::string::npos) << th;
+}
+
+TEST(RunMemory, ALongProgramOfMovesStopsAtTheBudgetToo) {
+  std::string text = "G98 G00 X20. Z0.\nF100.\n";
+  for (int i = 0; i < 20000; ++i) text += i % 2 ? "G01 X20.\n" : "G01 X19.\n";
+  text += "M30\n";
+  RunOptions options;
+  options.memoryBudgetMb = 1;
+  const Timeline t = runText(text, options);
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->code, "A155");
+  const std::size_t held = t.moves.size() * sizeof(Move) + t.snapshots.size() * sizeof(StateSnapshot);
+  EXPECT_GT(held, std::size_t{1} << 20);
+  EXPECT_LE(held, (std::size_t{1} << 20) + sizeof(Move) + sizeof(StateSnapshot));
+  // The default budget (4096 MB) lets the same program run to its end.
+  EXPECT_EQ(RunOptions{}.memoryBudgetMb, 4096u);
+  const Timeline whole = runText(text);
+  EXPECT_FALSE(whole.alarm);
+  EXPECT_EQ(whole.moves.size(), 20002u);  // the first rapid's two legs and the 20,000 feeds
+  EXPECT_EQ(whole.snapshots.size(), 20003u);
+}
+
+TEST(RunMemory, ARecordOfMarksKeepsWhatTheSnapshotsSay) {
+  const char* text =
+      "G21 G99\nT0101\nG96 S180 M03\nG50 S2500\nG00 X52. Z2.\nG01 X48. F0.2\nZ-30.\nG20\nG00 X3. Z1.\n"
+      "T0202\nG97 S800\nG01 X1. F0.01\nM98 P1000 L2\nM30\nO1000\nG01 W-0.1\nG00 W0.1\nM99\n";
+  const gcode::Program program = gcode::parse(text, 1);
+  ASSERT_TRUE(program.lexicalDiagnostics.empty());
+  RunOptions full;
+  RunOptions marks;
+  marks.blockMarksOnly = true;
+  const Timeline a = recordRun(program, testSetup(), full);
+  const Timeline b = recordRun(program, testSetup(), marks);
+  EXPECT_TRUE(a.marks.empty());
+  EXPECT_TRUE(b.snapshots.empty());
+  ASSERT_EQ(a.snapshots.size(), b.marks.size());
+  ASSERT_EQ(a.moves.size(), b.moves.size());
+  ASSERT_GT(a.snapshots.size(), 15u);
+  bool inch = false, clamped = false, secondTool = false;
+  for (std::size_t k = 0; k < a.snapshots.size(); ++k) {
+    const StateSnapshot& s = a.snapshots[k];
+    const BlockMark& m = b.marks[k];
+    EXPECT_EQ(m.blockIndex, s.blockIndex);
+    EXPECT_EQ(m.moveEnd, s.moveEnd);
+    EXPECT_EQ(m.line, s.line);
+    EXPECT_EQ(m.file, s.file);
+    EXPECT_EQ(m.tool, s.machine.tool);
+    EXPECT_EQ(m.offset, s.machine.offset);
+    EXPECT_EQ(m.units, s.modal.units);
+    EXPECT_EQ(m.motion, s.modal.motion);
+    EXPECT_EQ(m.spindleMode, s.modal.spindleMode);
+    EXPECT_EQ(m.rpmClamped, s.modal.rpmClamp > 0.0);
+    inch = inch || m.units == Units::Inch;
+    clamped = clamped || m.rpmClamped;
+    secondTool = secondTool || m.tool == 2;
+    // The evidence reads both kinds of record alike.
+    EXPECT_EQ(a.blockMark(k).moveEnd, b.blockMark(k).moveEnd);
+  }
+  EXPECT_TRUE(inch && clamped && secondTool);
+  EXPECT_EQ(a.blockCount(), b.blockCount());
+}
+
+}  // namespace
+}  // namespace run_memory_test
