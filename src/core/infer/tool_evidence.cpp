@@ -293,7 +293,7 @@ class Gatherer {
     // `N1 (OD ROUGH)` line is one, as Haas programs write them), then just after
     // it, then the tool list. (Lines of the program's own file: a subprogram
     // file's T block has only its own comment.)
-    std::vector<std::string> texts = {b.comment};
+    std::vector<std::string> texts = {b.comment.str()};
     std::vector<int> lines = {b.line};
     if (b.file == 0) {
       for (int l = b.line - 1; l >= b.line - 3 && !blockLine(l); --l) lines.push_back(l);
