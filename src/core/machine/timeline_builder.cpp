@@ -1,5 +1,6 @@
 // Last stage of the chain: turns canonical calls into the Timeline with exact
 // times (SPEC 10).
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -83,7 +84,7 @@ class TimelineBuilder final : public MachineSink {
       snap.moveEnd = static_cast<int>(out_.moves.size());
       snap.machine.position = position_;
     }
-    if (limits_.budgetBytes > 0 && heldBytes() > limits_.budgetBytes) {
+    if (limits_.budgetBytes > 0 && neededBytes() > limits_.budgetBytes) {
       const std::size_t mb = limits_.budgetBytes >> 20;
       out_.alarm = Diagnostic{Severity::Alarm,
                               codes::kRunMemoryBudget,
@@ -164,11 +165,19 @@ class TimelineBuilder final : public MachineSink {
     push(m, second, tRest, second.length() / tRest * 60.0, 0.0, rampSlow);
   }
 
-  // What the run keeps so far: it grows with every block and every move (the budget's measure).
-  std::size_t heldBytes() const {
-    return out_.moves.size() * sizeof(Move) + out_.snapshots.size() * sizeof(StateSnapshot) +
-           out_.marks.size() * sizeof(BlockMark) + out_.flow.writes.size() * sizeof(VariableWrite) +
-           out_.flow.wordValues.size() * sizeof(WordValue);
+  // What the run keeps so far (it grows with every block and every move), and the copy the
+  // largest of its lists makes when it grows next: a list grows by moving into one twice its
+  // size, so both are held at once (an endless loop's states took 1.5 x what they kept).
+  std::size_t neededBytes() const {
+    const std::size_t parts[] = {out_.moves.size() * sizeof(Move), out_.snapshots.size() * sizeof(StateSnapshot),
+                                 out_.marks.size() * sizeof(BlockMark), out_.flow.writes.size() * sizeof(VariableWrite),
+                                 out_.flow.wordValues.size() * sizeof(WordValue)};
+    std::size_t held = 0, largest = 0;
+    for (const std::size_t part : parts) {
+      held += part;
+      largest = std::max(largest, part);
+    }
+    return held + largest;
   }
 
   Timeline& out_;

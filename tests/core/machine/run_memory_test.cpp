@@ -3,6 +3,7 @@
 // 10.9 GB), and a record read only for evidence keeps a 24-byte mark a block, not a StateSnapshot.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "klueng/core/gcode/parser.h"
@@ -30,16 +31,35 @@ TEST(RunMemory, AnEndlessLoopUnderAHugeBlockLimitStopsAtTheBudget) {
   const int line = t.alarm->range.line;
   EXPECT_GE(line, 2);
   EXPECT_LE(line, 4);
-  // Just past the budget: a block's snapshot and its write more than 4 MB.
-  const std::size_t held = t.snapshots.size() * sizeof(StateSnapshot) + t.flow.writes.size() * sizeof(VariableWrite);
-  EXPECT_GT(held, std::size_t{4} << 20);
-  EXPECT_LE(held, (std::size_t{4} << 20) + sizeof(StateSnapshot) + sizeof(VariableWrite));
+  // Just past the budget: what the run keeps, and the copy its largest list (the states) makes
+  // when it grows, is more than 4 MB; a block before, it was not.
+  const std::size_t states = t.snapshots.size() * sizeof(StateSnapshot);
+  const std::size_t needed = states + t.flow.writes.size() * sizeof(VariableWrite) + states;
+  EXPECT_GT(needed, std::size_t{4} << 20);
+  EXPECT_LE(needed, (std::size_t{4} << 20) + 2 * sizeof(StateSnapshot) + sizeof(VariableWrite));
   const std::string en = formatMessage(*t.alarm, Lang::En);
   const std::string th = formatMessage(*t.alarm, Lang::Th);
   EXPECT_NE(en.find("would need more than 4 MB of memory"), std::string::npos) << en;
   EXPECT_NE(en.find("it stops at line " + std::to_string(line)), std::string::npos) << en;
   EXPECT_NE(th.find("หน่วยความจำเกิน 4 MB"), std::string::npos) << th;
   EXPECT_NE(th.find("จึงหยุดที่บรรทัด " + std::to_string(line)), std::string::npos) << th;
+}
+
+TEST(RunMemory, ARecordThroughAlarmsStopsAtTheBudget) {
+  // The check's record of marks (through alarms, as the tool inference makes it) is bounded too.
+  MachineSetup setup = testSetup();
+  setup.machine.maxBlocks = 100000000;
+  RunOptions options;
+  options.memoryBudgetMb = 4;
+  options.blockMarksOnly = true;
+  const Timeline t = recordRun(gcode::parse(kEndlessMacroLoop, 1), setup, options);
+  ASSERT_TRUE(t.alarm);
+  EXPECT_EQ(t.alarm->code, "A155");
+  const std::size_t marks = t.marks.size() * sizeof(BlockMark);
+  const std::size_t writes = t.flow.writes.size() * sizeof(VariableWrite);
+  EXPECT_GT(marks + writes + std::max(marks, writes), std::size_t{4} << 20);
+  EXPECT_LE(marks + writes + std::max(marks, writes),
+            (std::size_t{4} << 20) + 2 * sizeof(BlockMark) + 2 * sizeof(VariableWrite));
 }
 
 TEST(RunMemory, ALongProgramOfMovesStopsAtTheBudgetToo) {
@@ -51,9 +71,10 @@ TEST(RunMemory, ALongProgramOfMovesStopsAtTheBudgetToo) {
   const Timeline t = runText(text, options);
   ASSERT_TRUE(t.alarm);
   EXPECT_EQ(t.alarm->code, "A155");
-  const std::size_t held = t.moves.size() * sizeof(Move) + t.snapshots.size() * sizeof(StateSnapshot);
-  EXPECT_GT(held, std::size_t{1} << 20);
-  EXPECT_LE(held, (std::size_t{1} << 20) + sizeof(Move) + sizeof(StateSnapshot));
+  const std::size_t states = t.snapshots.size() * sizeof(StateSnapshot);  // the larger list
+  const std::size_t needed = t.moves.size() * sizeof(Move) + states + states;
+  EXPECT_GT(needed, std::size_t{1} << 20);
+  EXPECT_LE(needed, (std::size_t{1} << 20) + sizeof(Move) + 2 * sizeof(StateSnapshot));
   // The default budget (4096 MB) lets the same program run to its end.
   EXPECT_EQ(RunOptions{}.memoryBudgetMb, 4096u);
   const Timeline whole = runText(text);
