@@ -165,19 +165,23 @@ class TimelineBuilder final : public MachineSink {
     push(m, second, tRest, second.length() / tRest * 60.0, 0.0, rampSlow);
   }
 
-  // What the run keeps so far (it grows with every block and every move), and the copy the
-  // largest of its lists makes when it grows next: a list grows by moving into one twice its
-  // size, so both are held at once (an endless loop's states took 1.5 x what they kept).
+  // What the run keeps so far (it grows with every block and every move), and the copy a full
+  // list makes when it grows next: it moves into one twice its size while the old one is still
+  // held (an endless loop's states took 1.5 x what they kept). A list reserved for the whole
+  // program (interpret() reserves the moves and states) makes no copy.
   std::size_t neededBytes() const {
-    const std::size_t parts[] = {out_.moves.size() * sizeof(Move), out_.snapshots.size() * sizeof(StateSnapshot),
-                                 out_.marks.size() * sizeof(BlockMark), out_.flow.writes.size() * sizeof(VariableWrite),
-                                 out_.flow.wordValues.size() * sizeof(WordValue)};
-    std::size_t held = 0, largest = 0;
-    for (const std::size_t part : parts) {
-      held += part;
-      largest = std::max(largest, part);
-    }
-    return held + largest;
+    std::size_t held = 0, copies = 0;
+    const auto add = [&](const auto& list) {
+      const std::size_t bytes = list.size() * sizeof(list.front());
+      held += bytes;
+      if (!list.empty() && list.size() == list.capacity()) copies += bytes;
+    };
+    add(out_.moves);
+    add(out_.snapshots);
+    add(out_.marks);
+    add(out_.flow.writes);
+    add(out_.flow.wordValues);
+    return held + copies;
   }
 
   Timeline& out_;
