@@ -134,7 +134,7 @@ int main(int argc, char** argv) {
   const double perBlock = bytes / static_cast<double>(lines);
   std::printf("program   yardstick, one word a block: %zu lines, %d blocks asked\n", lines, blocks);
   std::printf("command   klueng-cli %s (exit %d)\n", command.c_str(), r.exitCode);
-  std::printf("peak RSS  %.1f MB (%ld kB)\n", bytes / 1048576.0, r.rssKb);
+  std::printf("peak RSS  %.0f MB (%ld kB; MB = 1000 kB, as docs/performance.md counts)\n", r.rssKb / 1000.0, r.rssKb);
   std::printf("a block   %.0f bytes (goal %.0f: %s)\n", perBlock, goal, perBlock <= goal ? "met" : "not met");
   std::printf("time      %.0f ms wall, %.0f ms CPU\n", r.wallMs, r.cpuMs);
   return r.exitCode < 0 ? 1 : 0;
