@@ -205,11 +205,20 @@ class Gatherer {
     readToolList();
     MotionRecorder motion(out_.beyondCentre);
     std::size_t begin = 0;
+    const std::size_t moveCount = run.moveCount();
+    // A block's moves, whole: the run's own, or a record's read back into a scratch list.
+    std::vector<Move> scratch;
+    const auto movesOf = [&](std::size_t from, std::size_t to) -> std::span<const Move> {
+      if (!run.moves.empty()) return {run.moves.data() + from, to - from};
+      scratch.clear();
+      for (std::size_t i = from; i < to; ++i) scratch.push_back(run.recordMoves[i].move());
+      return {scratch.data(), scratch.size()};
+    };
     for (std::size_t k = 0; k < run.blockCount(); ++k) {
       const BlockMark s = run.blockMark(k);
       const std::size_t end =
-          std::clamp<std::size_t>(static_cast<std::size_t>(std::max(s.moveEnd, 0)), begin, run.moves.size());
-      const std::span<const Move> moves(run.moves.data() + begin, end - begin);
+          std::clamp<std::size_t>(static_cast<std::size_t>(std::max(s.moveEnd, 0)), begin, moveCount);
+      const std::span<const Move> moves = movesOf(begin, end);
       begin = end;
       motion.add(moves);  // every move once, in run order
       if (s.blockIndex < 0 || static_cast<std::size_t>(s.blockIndex) >= program_.blocks.size()) continue;
@@ -224,7 +233,7 @@ class Gatherer {
       }
       block(b, moves, station, motionCode(s.motion, dialect_));
     }
-    motion.add(std::span<const Move>(run.moves.data() + begin, run.moves.size() - begin));  // after the last block
+    motion.add(movesOf(begin, moveCount));  // after the last block
     for (auto& [station, use] : out_.uses)
       if (const auto it = motion.uses().find(station); it != motion.uses().end()) use.motion = it->second;
   }

@@ -336,14 +336,14 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
         continue;
       const double zPlunge = use->second.motion.plungeZ;
       double turnedTo = zPlunge;  // the lowest Z other tools fed to within the blade's width above the plunge
-      for (const Move& m : out.record->moves) {
-        if (m.tool == c.station || m.tool < 1 || m.kind == MoveKind::Rapid || m.kind == MoveKind::Dwell) continue;
+      out.record->forEachMove([&](const auto& m) {
+        if (m.tool == c.station || m.tool < 1 || m.kind == MoveKind::Rapid || m.kind == MoveKind::Dwell) return;
         for (const Vec2& p : {m.path.start, m.path.end})
           // (A pass that ends at the cut-off's Z, its end shifted by a nose radius, is not a feature.)
           if (p.x() > zPlunge + std::max(0.5, tool->size / 4.0) && p.x() < zPlunge + tool->size - 0.05 &&
               std::abs(p.y()) > 0.01)
             turnedTo = std::max(turnedTo, p.x());
-      }
+      });
       if (turnedTo <= zPlunge) continue;
       for (int n : use->second.offsets)
         if (n >= 1 && n <= io::kOffsetCount) out.setup.offsets.at(n).tip = 4;

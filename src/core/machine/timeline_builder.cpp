@@ -67,7 +67,7 @@ class TimelineBuilder final : public MachineSink {
     mv.path = Segment::line(position_, position_);
     mv.rpm = mv.rpmEnd = spindleRpm(d.ctx, xOf(position_));
     time_ = mv.tEnd;
-    out_.moves.push_back(mv);
+    keep(mv);
   }
 
   void setPosition(const Vec2& p) override { position_ = p; }
@@ -77,7 +77,7 @@ class TimelineBuilder final : public MachineSink {
     if (halted()) return;
     if (limits_.blockMarksOnly) {
       BlockMark& mark = out_.marks.emplace_back(BlockMark::of(s));
-      mark.moveEnd = static_cast<int>(out_.moves.size());
+      mark.moveEnd = static_cast<int>(out_.recordMoves.size());
     } else {
       StateSnapshot& snap = out_.snapshots.emplace_back(s);
       snap.time = time_;
@@ -117,8 +117,16 @@ class TimelineBuilder final : public MachineSink {
     mv.spindle = c.ctx.spindle;
   }
 
+  // A record of marks keeps what the evidence reads of a move; a timeline keeps it whole.
+  void keep(const Move& mv) {
+    if (limits_.blockMarksOnly)
+      out_.recordMoves.push_back(RecordMove::of(mv));
+    else
+      out_.moves.push_back(mv);
+  }
+
   void push(const MotionCall& m, const Segment& path, double seconds, double feed, double up = 0.0, double down = 0.0) {
-    Move& mv = out_.moves.emplace_back();
+    Move mv;
     stamp(mv, m, seconds);
     mv.kind = m.kind;
     mv.path = path;
@@ -131,6 +139,7 @@ class TimelineBuilder final : public MachineSink {
     mv.rampDown = static_cast<float>(down);
     time_ = mv.tEnd;
     position_ = path.end;
+    keep(mv);
   }
 
   // G00: both axes start together, each at its own rapid rate (and with its
@@ -179,6 +188,7 @@ class TimelineBuilder final : public MachineSink {
     add(out_.moves);
     add(out_.snapshots);
     add(out_.marks);
+    add(out_.recordMoves);
     add(out_.flow.writes);
     add(out_.flow.wordValues);
     return held + copies;

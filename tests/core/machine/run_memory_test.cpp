@@ -1,6 +1,7 @@
 // Issue 42 item 3: a run's memory is bounded. An endless loop under max_blocks = 100000000
 // stops with A155 once its moves and states would pass the budget (it ended in std::bad_alloc at
-// 10.9 GB), and a record read only for evidence keeps a 24-byte mark a block, not a StateSnapshot.
+// 10.9 GB), and a record read only for evidence keeps a 24-byte mark a block, not a StateSnapshot,
+// and a 96-byte RecordMove a move, not a Move.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -105,10 +106,28 @@ TEST(RunMemory, ARecordOfMarksKeepsWhatTheSnapshotsSay) {
   marks.blockMarksOnly = true;
   const Timeline a = recordRun(program, testSetup(), full);
   const Timeline b = recordRun(program, testSetup(), marks);
-  EXPECT_TRUE(a.marks.empty());
-  EXPECT_TRUE(b.snapshots.empty());
+  EXPECT_TRUE(a.marks.empty() && a.recordMoves.empty());
+  EXPECT_TRUE(b.snapshots.empty() && b.moves.empty());
   ASSERT_EQ(a.snapshots.size(), b.marks.size());
-  ASSERT_EQ(a.moves.size(), b.moves.size());
+  ASSERT_EQ(a.moves.size(), b.recordMoves.size());
+  ASSERT_EQ(a.moveCount(), b.moveCount());
+  // Each kept move says what the move says of its path, block, line, file, tool, offset and kind.
+  for (std::size_t k = 0; k < a.moves.size(); ++k) {
+    const Move& m = a.moves[k];
+    const Move r = b.recordMoves[k].move();
+    EXPECT_EQ(r.path.start, m.path.start);
+    EXPECT_EQ(r.path.end, m.path.end);
+    EXPECT_EQ(r.path.centre, m.path.centre);
+    EXPECT_EQ(r.path.kind, m.path.kind);
+    EXPECT_EQ(r.path.ccw, m.path.ccw);
+    EXPECT_EQ(r.line, m.line);
+    EXPECT_EQ(r.blockIndex, m.blockIndex);
+    EXPECT_EQ(r.file, m.file);
+    EXPECT_EQ(r.tool, m.tool);
+    EXPECT_EQ(r.offset, m.offset);
+    EXPECT_EQ(r.kind, m.kind);
+  }
+  EXPECT_EQ(sideOfCuts(a), sideOfCuts(b));
   ASSERT_GT(a.snapshots.size(), 15u);
   bool inch = false, clamped = false, secondTool = false;
   for (std::size_t k = 0; k < a.snapshots.size(); ++k) {
