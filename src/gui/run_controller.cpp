@@ -358,8 +358,9 @@ void RunController::prepareAndThen(Pending what) {
       for (const auto& d : job->diagnostics()) result->errors.push_back(d);
       return result;
     }
-    // The job's timeline, not a copy: the pointer keeps the job alive.
-    result->timeline = std::shared_ptr<const machine::Timeline>(job, job->timeline());
+    // The job's timeline, not a copy, held on its own: the job's program (its blocks and
+    // words) goes when this returns, the run keeps only what it plays.
+    result->timeline = job->sharedTimeline();
     // A guessed tool that touches gives way to another of its kind that fits: one whole cut
     // here (more only when a guess touched), so the run draws the tool that fits.
     if (std::any_of(setup.tools.guessed.begin(), setup.tools.guessed.end(), [](bool g) { return g; })) {

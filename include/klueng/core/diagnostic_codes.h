@@ -255,6 +255,8 @@ inline constexpr const char* kToolBitmapUnusable = "E311";  // {0} T word, {1} t
 inline constexpr const char* kCallWithoutProgram = "A154";  // {0} M98/G65/G66: no P (Fanuc alarm PS0076)
 // {0} the backward jump (GOTO10, END1, M99), {1} the line it returns to
 inline constexpr const char* kEndlessLoop = "A155";
+// The run would keep more than RunOptions::memoryBudgetMb (issue 42 item 3): Klueng's own stop.
+inline constexpr const char* kRunMemoryBudget = "A156";  // {0} the budget in MB, {1} the block's line
 inline constexpr const char* kSubprogramFileHasErrors = "E412";
 inline constexpr const char* kMainProgramRepeats = "I160";
 inline constexpr const char* kVacantAddressOmitted = "W130";

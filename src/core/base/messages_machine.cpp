@@ -141,6 +141,11 @@ constexpr MessageText kMachineMessages[] = {
     {codes::kTooManyCycleMoves,
      "{0} would make {1} moves (more than {2}): check its pecks, steps or passes for a typing slip",
      "{0} จะเคลื่อนที่ {1} ครั้ง (เกิน {2} ครั้ง) ให้ตรวจสอบระยะป้อน ระยะเลื่อน หรือจำนวนเที่ยว ว่าพิมพ์ผิดหรือไม่"},
+    {codes::kRunMemoryBudget,
+     "the run would need more than {0} MB of memory to keep its moves and block states; it stops at line {1} (a loop "
+     "that runs this long, or a program this long, is more than the simulation keeps)",
+     "การจำลองต้องใช้หน่วยความจำเกิน {0} MB เพื่อเก็บการเคลื่อนที่และสถานะของทุกบล็อก จึงหยุดที่บรรทัด {1} "
+     "(การวนซ้ำที่นานขนาดนี้ หรือโปรแกรมที่ยาวขนาดนี้ เกินกว่าที่การจำลองจะเก็บไว้ได้)"},
     {codes::kMainProgramRepeats,
      "M99 at the end of the main program: the control runs it again from the start; the simulation stops after one "
      "repeat",

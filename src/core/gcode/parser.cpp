@@ -68,6 +68,8 @@ class LineParser {
     program_.tails.push_back({lineNumber_, column, file_, afterEndOfBlock, std::string(text)});
   }
 
+  // One line of text: its items in turn (blanks, comments, a macro statement, words, and what is
+  // none of them: each reported), then the block they make.
   void parseLine(std::string_view line, int lineNumber) {
     line_ = line;
     lineNumber_ = lineNumber;
@@ -75,161 +77,216 @@ class LineParser {
     block.line = lineNumber;
     block.file = file_;
     words_.clear();
-    bool sawWordOrSkip = false;  // '/' is block skip only before the first word
-    bool tapeLine = false;
-
+    LineState state;
     std::size_t i = 0;
     int col = 1;
-    while (i < line.size()) {
-      const auto c = static_cast<unsigned char>(line[i]);
-      if (isBlank(c)) {
-        ++i;
-        ++col;
-      } else if (c == '(') {
-        // A comment ends where its parentheses balance ("(n = Vc*1000/(pi*D))"
-        // is one comment) or at the end of the line (issue 26; docs/program-file.md).
-        const int startCol = col;
-        const std::size_t close = commentClose(line, i);
-        const std::size_t j = close == std::string_view::npos ? line.size() : close;
-        const std::size_t firstClose = line.find(')', i + 1);
-        int endCol = col + 1;
-        for (std::size_t k = i + 1; k < j; k += utf8SequenceLength(line, k)) {
-          if (k == firstClose + 1) addTail(false, endCol, line.substr(k, j + 1 - k));
-          ++endCol;
-        }
-        appendComment(block, line.substr(i + 1, j - i - 1));
-        if (j >= line.size()) {
-          report(codes::kCommentToLineEnd, startCol, endCol - startCol, {}, Severity::Warning);
-          i = j;
-          col = endCol;
-        } else {
-          i = j + 1;
-          col = endCol + 1;
-        }
-      } else if (c == ';') {
-        if (line.find_first_not_of(" \t\f\v;", i + 1) != std::string_view::npos)
-          addTail(true, col + 1, line.substr(i + 1));
-        appendComment(block, line.substr(i + 1));
-        i = line.size();
-      } else if (block.statement.kind == StatementKind::None && isLetter(c) && i + 1 < line.size() &&
-                 isLetter(static_cast<unsigned char>(line[i + 1])) && startsStatement(line.substr(i))) {
-        // IF / WHILE / GOTO / DO / END: a macro statement to the end of the line.
-        col = lexStatement(block, i, col);
-        sawWordOrSkip = true;
-      } else if (block.statement.kind == StatementKind::None && c == '#') {
-        col = lexAssignment(block.statement, i, col, false);
-        sawWordOrSkip = true;
-      } else if (c == ',' && i + 1 < line.size() && isLetter(static_cast<unsigned char>(line[i + 1]))) {
-        // ',C' ',R' ',A': chamfer, corner radius and angle words of G01.
-        if (words_.size() == codes::kMaxWordsPerBlock) {
-          report(codes::kBlockTooLong, col, 0, {std::to_string(codes::kMaxWordsPerBlock)});
-          break;
-        }
-        ++i;
-        const std::size_t before = words_.size();
-        col = lexWord(i, col + 1);
-        if (words_.size() > before) {
-          Word& w = words_.back();
-          w.comma = true;
-          w.range.column -= 1;
-          w.range.length += 1;
-        }
-        sawWordOrSkip = true;
-      } else if (isLetter(c) && oForZeroEnd(i) > i) {
-        // "GO1": the letter O typed for the digit 0. One error that names the word meant.
-        const std::size_t e = oForZeroEnd(i);
-        std::string written(line.substr(i, e - i)), meant = written;
-        for (std::size_t k = 1; k < meant.size(); ++k)
-          if (meant[k] == 'O' || meant[k] == 'o') meant[k] = '0';
-        for (std::string* t : {&written, &meant})
-          t->front() = static_cast<char>(std::toupper(static_cast<unsigned char>(t->front())));
-        report(codes::kLetterOForZero, col, static_cast<int>(e - i), {written, meant});
-        col += static_cast<int>(e - i);
-        i = e;
-        sawWordOrSkip = true;
-      } else if ((isLetter(c) && looksLikeText(i)) || utf8SequenceLength(line, i) > 1) {
-        // "roughing pass", "กลึงหยาบ": words the author meant as a comment. One error for the line.
-        std::size_t e = i;
-        while (e < line.size() && line[e] != '(' && line[e] != ';') ++e;
-        std::size_t last = e;
-        while (last > i && isBlank(static_cast<unsigned char>(line[last - 1]))) --last;
-        int length = 0;
-        std::size_t shown = i;  // the first 20 code points, for the message
-        for (std::size_t k = i; k < last; k += utf8SequenceLength(line, k))
-          if (++length <= 20) shown = k + utf8SequenceLength(line, k);
-        report(codes::kTextLine, col, length, {std::string(line.substr(i, shown - i))});
-        for (std::size_t k = last; k < e; ++k) ++length;
-        col += length;
-        i = e;
-        sawWordOrSkip = true;
-      } else if (isLetter(c)) {
-        if (words_.size() == codes::kMaxWordsPerBlock) {
-          report(codes::kBlockTooLong, col, 0, {std::to_string(codes::kMaxWordsPerBlock)});
-          break;
-        }
-        col = lexWord(i, col);
-        sawWordOrSkip = true;
-      } else if (c == ':' && i + 1 < line.size() && isDigit(static_cast<unsigned char>(line[i + 1]))) {
-        // ISO program number ":0100": read as an O word; the checker decides
-        // whether the profile allows it.
-        if (words_.size() == codes::kMaxWordsPerBlock) {
-          report(codes::kBlockTooLong, col, 0, {std::to_string(codes::kMaxWordsPerBlock)});
-          break;
-        }
-        col = lexWord(i, col);
-        sawWordOrSkip = true;
-      } else if (isNumberChar(c)) {
-        // A number with no address letter before it.
-        const std::size_t start = i;
-        while (i < line.size() && isNumberChar(static_cast<unsigned char>(line[i]))) ++i;
-        const int length = static_cast<int>(i - start);
-        report(codes::kLoneNumber, col, length, {std::string(line.substr(start, i - start))});
-        col += length;
-        sawWordOrSkip = true;
-      } else if (c == '/' && !sawWordOrSkip && !tapeLine) {
-        block.blockSkip = true;
-        sawWordOrSkip = true;
-        ++i;
-        ++col;
-      } else if (c == '%' && !sawWordOrSkip && !tapeLine && block.comment.empty()) {
-        // Tape start/end mark: only blanks and comments may follow it. A control skips what follows
-        // the first '%' up to the line end (B-63524EN §8), so text there (`%PART 7`) is one E108 for
-        // the whole rest, never read as words or as a line of text.
-        tapeLine = true;
-        sawWordOrSkip = true;
-        ++i;
-        ++col;
-        std::size_t rest = i;
-        while (rest < line.size() && isBlank(static_cast<unsigned char>(line[rest]))) ++rest;
-        if (rest < line.size() && line[rest] != '(' && line[rest] != ';') {
-          std::string_view tail = line.substr(rest);
-          while (!tail.empty() && isBlank(static_cast<unsigned char>(tail.back()))) tail.remove_suffix(1);
-          report(codes::kTextAfterTapeMark, col + static_cast<int>(rest - i), static_cast<int>(tail.size()),
-                 {std::string(tail.substr(0, std::min<std::size_t>(tail.size(), 40)))});
-          return;
-        }
-      } else {
-        // Unknown characters: one diagnostic for a run of them, so binary
-        // junk gives few messages.
-        const std::size_t start = i;
-        const int startCol = col;
-        while (i < line.size()) {
-          const auto d = static_cast<unsigned char>(line[i]);
-          if (isBlank(d) || isLetter(d) || isNumberChar(d) || d == '(' || d == ';') break;
-          if (d == '/' && !sawWordOrSkip) break;
-          i += utf8SequenceLength(line, i);
-          ++col;
-        }
-        const std::string_view run = line.substr(start, i - start);
-        const std::size_t first = utf8SequenceLength(run, 0);
-        const bool slash = run.size() == 1 && run[0] == '/';
-        const bool percent = run.size() == 1 && run[0] == '%';
-        const char* code = slash     ? codes::kMisplacedBlockSkip
-                           : percent ? codes::kMisplacedTapeMark
-                                     : codes::kUnknownCharacter;
-        report(code, startCol, col - startCol, {std::string(run.substr(0, first))});
-      }
+    while (i < line.size())
+      if (!readItem(block, state, i, col)) break;
+    finishBlock(std::move(block), state.tapeLine);
+  }
+
+ private:
+  struct LineState {
+    bool sawWordOrSkip = false;  // '/' is block skip only before the first word
+    bool tapeLine = false;       // a '%' line: only blanks and comments may follow
+  };
+
+  // The item that starts at line_[i]: read, or reported; i and col move past it. False when the
+  // block can hold no more words (E120): the rest of the line is not read.
+  bool readItem(Block& block, LineState& state, std::size_t& i, int& col) {
+    const std::string_view line = line_;
+    const auto c = static_cast<unsigned char>(line[i]);
+    if (isBlank(c)) {
+      ++i;
+      ++col;
+    } else if (c == '(') {
+      col = readComment(block, i, col);
+    } else if (c == ';') {
+      readEndOfBlockComment(block, i, col);
+    } else if (block.statement.kind == StatementKind::None && isLetter(c) && i + 1 < line.size() &&
+               isLetter(static_cast<unsigned char>(line[i + 1])) && startsStatement(line.substr(i))) {
+      // IF / WHILE / GOTO / DO / END: a macro statement to the end of the line.
+      col = lexStatement(block, i, col);
+      state.sawWordOrSkip = true;
+    } else if (block.statement.kind == StatementKind::None && c == '#') {
+      col = lexAssignment(block.statement, i, col, false);
+      state.sawWordOrSkip = true;
+    } else if (c == ',' && i + 1 < line.size() && isLetter(static_cast<unsigned char>(line[i + 1]))) {
+      if (blockIsFull(col)) return false;
+      col = readCommaWord(i, col);
+      state.sawWordOrSkip = true;
+    } else if (isLetter(c) && oForZeroEnd(i) > i) {
+      col = reportLetterOForZero(i, col);
+      state.sawWordOrSkip = true;
+    } else if ((isLetter(c) && looksLikeText(i)) || utf8SequenceLength(line, i) > 1) {
+      col = reportTextLine(i, col);
+      state.sawWordOrSkip = true;
+    } else if (isLetter(c)) {
+      if (blockIsFull(col)) return false;
+      col = lexWord(i, col);
+      state.sawWordOrSkip = true;
+    } else if (c == ':' && i + 1 < line.size() && isDigit(static_cast<unsigned char>(line[i + 1]))) {
+      // ISO program number ":0100": read as an O word; the checker decides
+      // whether the profile allows it.
+      if (blockIsFull(col)) return false;
+      col = lexWord(i, col);
+      state.sawWordOrSkip = true;
+    } else if (isNumberChar(c)) {
+      col = reportLoneNumber(i, col);
+      state.sawWordOrSkip = true;
+    } else if (c == '/' && !state.sawWordOrSkip && !state.tapeLine) {
+      block.blockSkip = true;
+      state.sawWordOrSkip = true;
+      ++i;
+      ++col;
+    } else if (c == '%' && !state.sawWordOrSkip && !state.tapeLine && block.comment.empty()) {
+      // Tape start/end mark: only blanks and comments may follow it.
+      state.tapeLine = true;
+      state.sawWordOrSkip = true;
+      ++i;
+      ++col;
+      return !reportTextAfterTapeMark(i, col);
+    } else {
+      col = reportUnknownRun(i, col, state.sawWordOrSkip);
     }
+    return true;
+  }
+
+  // A control skips what follows the first '%' up to the line end (B-63524EN §8), so text there
+  // (`%PART 7`) is one E108 for the whole rest, never read as words or as a line of text. True when
+  // there was some: the rest of the line is not read.
+  bool reportTextAfterTapeMark(std::size_t i, int col) {
+    const std::string_view line = line_;
+    std::size_t rest = i;
+    while (rest < line.size() && isBlank(static_cast<unsigned char>(line[rest]))) ++rest;
+    if (rest >= line.size() || line[rest] == '(' || line[rest] == ';') return false;
+    std::string_view tail = line.substr(rest);
+    while (!tail.empty() && isBlank(static_cast<unsigned char>(tail.back()))) tail.remove_suffix(1);
+    report(codes::kTextAfterTapeMark, col + static_cast<int>(rest - i), static_cast<int>(tail.size()),
+           {std::string(tail.substr(0, std::min<std::size_t>(tail.size(), 40)))});
+    return true;
+  }
+
+  // "( ... )": a comment ends where its parentheses balance ("(n = Vc*1000/(pi*D))" is one
+  // comment) or at the end of the line (issue 26; docs/program-file.md). Returns the column after it.
+  int readComment(Block& block, std::size_t& i, int col) {
+    const std::string_view line = line_;
+    const int startCol = col;
+    const std::size_t close = commentClose(line, i);
+    const std::size_t j = close == std::string_view::npos ? line.size() : close;
+    const std::size_t firstClose = line.find(')', i + 1);
+    int endCol = col + 1;
+    for (std::size_t k = i + 1; k < j; k += utf8SequenceLength(line, k)) {
+      if (k == firstClose + 1) addTail(false, endCol, line.substr(k, j + 1 - k));
+      ++endCol;
+    }
+    appendComment(block, line.substr(i + 1, j - i - 1));
+    if (j >= line.size()) {
+      report(codes::kCommentToLineEnd, startCol, endCol - startCol, {}, Severity::Warning);
+      i = j;
+      return endCol;
+    }
+    i = j + 1;
+    return endCol + 1;
+  }
+
+  // ";": the rest of the line is a comment (and a tail that a Fanuc reads as the next block).
+  void readEndOfBlockComment(Block& block, std::size_t& i, int col) {
+    const std::string_view line = line_;
+    if (line.find_first_not_of(" \t\f\v;", i + 1) != std::string_view::npos) addTail(true, col + 1, line.substr(i + 1));
+    appendComment(block, line.substr(i + 1));
+    i = line.size();
+  }
+
+  // A block keeps at most kMaxWordsPerBlock words: one more is E120, and the line ends there.
+  bool blockIsFull(int col) {
+    if (words_.size() != codes::kMaxWordsPerBlock) return false;
+    report(codes::kBlockTooLong, col, 0, {std::to_string(codes::kMaxWordsPerBlock)});
+    return true;
+  }
+
+  // ',C' ',R' ',A': chamfer, corner radius and angle words of G01.
+  int readCommaWord(std::size_t& i, int col) {
+    ++i;
+    const std::size_t before = words_.size();
+    col = lexWord(i, col + 1);
+    if (words_.size() > before) {
+      Word& w = words_.back();
+      w.comma = true;
+      w.range.column -= 1;
+      w.range.length += 1;
+    }
+    return col;
+  }
+
+  // "GO1": the letter O typed for the digit 0. One error that names the word meant.
+  int reportLetterOForZero(std::size_t& i, int col) {
+    const std::size_t e = oForZeroEnd(i);
+    std::string written(line_.substr(i, e - i)), meant = written;
+    for (std::size_t k = 1; k < meant.size(); ++k)
+      if (meant[k] == 'O' || meant[k] == 'o') meant[k] = '0';
+    for (std::string* t : {&written, &meant})
+      t->front() = static_cast<char>(std::toupper(static_cast<unsigned char>(t->front())));
+    report(codes::kLetterOForZero, col, static_cast<int>(e - i), {written, meant});
+    col += static_cast<int>(e - i);
+    i = e;
+    return col;
+  }
+
+  // "roughing pass", "กลึงหยาบ": words the author meant as a comment. One error for the line.
+  int reportTextLine(std::size_t& i, int col) {
+    const std::string_view line = line_;
+    std::size_t e = i;
+    while (e < line.size() && line[e] != '(' && line[e] != ';') ++e;
+    std::size_t last = e;
+    while (last > i && isBlank(static_cast<unsigned char>(line[last - 1]))) --last;
+    int length = 0;
+    std::size_t shown = i;  // the first 20 code points, for the message
+    for (std::size_t k = i; k < last; k += utf8SequenceLength(line, k))
+      if (++length <= 20) shown = k + utf8SequenceLength(line, k);
+    report(codes::kTextLine, col, length, {std::string(line.substr(i, shown - i))});
+    for (std::size_t k = last; k < e; ++k) ++length;
+    col += length;
+    i = e;
+    return col;
+  }
+
+  // A number with no address letter before it.
+  int reportLoneNumber(std::size_t& i, int col) {
+    const std::string_view line = line_;
+    const std::size_t start = i;
+    while (i < line.size() && isNumberChar(static_cast<unsigned char>(line[i]))) ++i;
+    const int length = static_cast<int>(i - start);
+    report(codes::kLoneNumber, col, length, {std::string(line.substr(start, i - start))});
+    return col + length;
+  }
+
+  // Unknown characters: one diagnostic for a run of them, so binary junk gives few messages.
+  int reportUnknownRun(std::size_t& i, int col, bool sawWordOrSkip) {
+    const std::string_view line = line_;
+    const std::size_t start = i;
+    const int startCol = col;
+    while (i < line.size()) {
+      const auto d = static_cast<unsigned char>(line[i]);
+      if (isBlank(d) || isLetter(d) || isNumberChar(d) || d == '(' || d == ';') break;
+      if (d == '/' && !sawWordOrSkip) break;
+      i += utf8SequenceLength(line, i);
+      ++col;
+    }
+    const std::string_view run = line.substr(start, i - start);
+    const std::size_t first = utf8SequenceLength(run, 0);
+    const bool slash = run.size() == 1 && run[0] == '/';
+    const bool percent = run.size() == 1 && run[0] == '%';
+    const char* code = slash     ? codes::kMisplacedBlockSkip
+                       : percent ? codes::kMisplacedTapeMark
+                                 : codes::kUnknownCharacter;
+    report(code, startCol, col - startCol, {std::string(run.substr(0, first))});
+    return col;
+  }
+
+  // The block the line's words make: a statement keeps only an N word beside it; a '%' line's
+  // words are reported, not run; a line without words makes no block.
+  void finishBlock(Block block, bool tapeLine) {
     if (block.statement.kind != StatementKind::None) {
       // Only an N word may share the block with a statement.
       for (std::size_t k = 0; k < words_.size(); ++k)
@@ -252,7 +309,6 @@ class LineParser {
     program_.blocks.push_back(std::move(block));
   }
 
- private:
   Program& program_;
   std::size_t& budget_;
   int file_ = 0;

@@ -1,6 +1,10 @@
 #include "klueng/core/gcode/program.h"
 
+#include <ostream>
+
 namespace klueng::core::gcode {
+
+std::ostream& operator<<(std::ostream& os, const BlockComment& c) { return os << c.view(); }
 
 int programNumberAt(const Program& program, int index) {
   if (index < 0 || index >= static_cast<int>(program.blocks.size())) return 0;

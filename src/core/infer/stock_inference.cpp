@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <map>
 #include <string>
 
 #include "klueng/core/geometry.h"
@@ -25,10 +24,15 @@ constexpr double kOnCentre = 0.5;          // mm of diameter: a feed at X0 (dril
 constexpr double kBeyondTheDrillMm = 1.0;  // an inside pass this much deeper than the hole needs a bore
 constexpr double kBelowWall = 0.005;       // mm of diameter: a retract this far below a pass leaves its wall
 
-bool isFeed(const Move& m) { return m.kind == MoveKind::Line || m.kind == MoveKind::Arc || m.kind == MoveKind::Thread; }
+// (A Move, or a RecordMove of a record of marks: the same names.)
+template <typename M>
+bool isFeed(const M& m) {
+  return m.kind == MoveKind::Line || m.kind == MoveKind::Arc || m.kind == MoveKind::Thread;
+}
 
 // A pass along -Z: mostly axial, going left.
-bool isZPass(const Move& m) {
+template <typename M>
+bool isZPass(const M& m) {
   const Vec2 d = m.path.end - m.path.start;
   return isFeed(m) && d.x() < -1e-6 && std::abs(d.x()) > 5.0 * std::abs(d.y());
 }
@@ -41,7 +45,8 @@ bool isCycleBlock(const gcode::Block& b) {
   return false;
 }
 
-const gcode::Block* blockOf(const gcode::Program& program, const Move& m) {
+template <typename M>
+const gcode::Block* blockOf(const gcode::Program& program, const M& m) {
   return m.blockIndex >= 0 && static_cast<std::size_t>(m.blockIndex) < program.blocks.size()
              ? &program.blocks[static_cast<std::size_t>(m.blockIndex)]
              : nullptr;
@@ -57,12 +62,13 @@ const gcode::Block* blockOf(const gcode::Program& program, const Move& m) {
 // (X44 Z-10, X40 Z-15, X44 Z-20, Z-30) comes back up to the pass's diameter
 // before the tool leaves, and a return home across the part (G28 to X0) does
 // not start below it. Everything else — however it moves in X — is outside work.
-bool leavesThroughTheHole(const std::vector<Move>& moves, std::size_t i) {
-  const Move& m = moves[i];
+template <typename Moves>
+bool leavesThroughTheHole(const Moves& moves, std::size_t i) {
+  const auto& m = moves[i];
   if (!isZPass(m) || zOf(m.path.end) >= 0.0 || diameterOf(m.path.start) < kOnCentre) return false;
   const double wall = diameterOf(m.path.end) - kBelowWall;
   for (std::size_t k = i + 1; k < moves.size(); ++k) {
-    const Move& n = moves[k];
+    const auto& n = moves[k];
     if (zOf(n.path.end) >= -1e-9) {  // leaves in front of the face
       const Vec2 d = n.path.end - n.path.start;
       const bool alongZ = std::abs(d.x()) > 5.0 * std::abs(d.y());
@@ -81,7 +87,8 @@ bool leavesThroughTheHole(const std::vector<Move>& moves, std::size_t i) {
 // to Ø100: boring); one that cuts down below its start is outside work, even
 // where its retract returns below a pass (a Haas G76 started at X0.9414 under
 // the thread's first passes).
-std::vector<char> insidePasses(const gcode::Program& program, const std::vector<Move>& moves) {
+template <typename Moves>
+std::vector<char> insidePasses(const gcode::Program& program, const Moves& moves) {
   std::vector<char> inside(moves.size(), 0);
   for (std::size_t first = 0; first < moves.size();) {
     std::size_t last = first;
@@ -176,20 +183,21 @@ StockInference inferStock(const gcode::Program& program, const MachineSetup& set
   return inferStock(program, recordRun(program, setup, options), setup, inference);
 }
 
-StockInference inferStock(const gcode::Program& program, const Timeline& run, const MachineSetup& setup,
-                          const InferenceOptions& inference) {
-  // Tools beyond the centre line (X < 0) measure the same round bar: read the run as from the front.
-  std::optional<Timeline> mirrored;
-  if (setup.machine.toolsBeyondCentre || sideOfCuts(run) == CutSide::Beyond) {
-    mirrored = run;
-    for (Move& m : mirrored->moves) m = mirroredAcrossCentre(m);
-  }
-  const Timeline& tl = mirrored ? *mirrored : run;
+namespace {
+
+// The bar, from the moves of tl (its moves, or a record's: `moves` is one of the two lists).
+template <typename Moves>
+StockInference inferFromMoves(const gcode::Program& program, const Timeline& tl, const Moves& moves,
+                              const MachineSetup& setup, const InferenceOptions& inference) {
   StockInference r;
-  const std::vector<Move>& moves = tl.moves;
   const std::vector<char> inside = insidePasses(program, moves);
-  std::map<int, Units> unitsOfBlock;
-  for (const StateSnapshot& s : tl.snapshots) unitsOfBlock[s.blockIndex] = s.modal.units;
+  // The units a block ran in: its last run's (a search from the end, for the one block asked;
+  // a map of every block's was a node a block, 64 bytes each, issue 42 item 3).
+  const auto inchBlock = [&tl](int blockIndex) {
+    for (std::size_t k = tl.blockCount(); k-- > 0;)
+      if (const BlockMark mark = tl.blockMark(k); mark.blockIndex == blockIndex) return mark.units == Units::Inch;
+    return false;
+  };
 
   // Ø: the first feeding block off the centre that is not inside work. An
   // approach comes from in front of the face (not a drill, not a retract inside
@@ -198,7 +206,7 @@ StockInference inferStock(const gcode::Program& program, const Timeline& run, co
   std::size_t decider = moves.size();
   for (int pass = 0; pass < 2 && decider == moves.size(); ++pass)
     for (std::size_t i = 0; i < moves.size() && decider == moves.size(); ++i) {
-      const Move& m = moves[i];
+      const auto& m = moves[i];
       if (!isFeed(m) || inside[i]) continue;
       std::size_t first = i;  // the block's first move starts where the block started
       while (first > 0 && moves[first - 1].blockIndex == m.blockIndex) --first;
@@ -210,7 +218,7 @@ StockInference inferStock(const gcode::Program& program, const Timeline& run, co
       r.diameterLine = first > 0 ? moves[first - 1].line : m.line;
       const gcode::Block* block = blockOf(program, m);
       r.cycleStart = block && isCycleBlock(*block);
-      r.inch = unitsOfBlock.count(m.blockIndex) && unitsOfBlock[m.blockIndex] == Units::Inch;
+      r.inch = inchBlock(m.blockIndex);
       const double unit = r.inch ? kMmPerInch : 1.0;
       // A plain first cut along -Z is a pass inside the bar; anything else starts above it.
       // (A feed that only reaches the face, `G01 Z0.` at the approach's X, is no pass inside it.)
@@ -229,7 +237,7 @@ StockInference inferStock(const gcode::Program& program, const Timeline& run, co
   double largestTurned = 0.0;
   int largestTurnedLine = 0;
   for (std::size_t i = 0; i < moves.size(); ++i) {
-    const Move& m = moves[i];
+    const auto& m = moves[i];
     if (!isZPass(m) || zOf(m.path.end) >= 0.0 || diameterOf(m.path.start) < kOnCentre || inside[i]) continue;
     const gcode::Block* block = blockOf(program, m);
     if (block && isCycleBlock(*block)) continue;
@@ -248,7 +256,7 @@ StockInference inferStock(const gcode::Program& program, const Timeline& run, co
 
   // Length: the deepest Z while feeding, the cut-off margin and the chuck grip.
   double deepest = 0.0;
-  for (const Move& m : moves) {
+  for (const auto& m : moves) {
     if (!isFeed(m)) continue;
     const double z = std::min(zOf(m.path.start), zOf(m.path.end));
     if (z < deepest - 1e-9) {
@@ -265,7 +273,7 @@ StockInference inferStock(const gcode::Program& program, const Timeline& run, co
   // drill .25 deep, leaves the boring bar's deeper passes in the tube's own bore).
   double drilledTo = 0.0;  // the deepest Z drilled on centre so far
   for (std::size_t i = 0; i < moves.size(); ++i) {
-    const Move& m = moves[i];
+    const auto& m = moves[i];
     if (isZPass(m) && diameterOf(m.path.start) < kOnCentre && zOf(m.path.end) < 0.0) {
       drilledTo = std::min(drilledTo, zOf(m.path.end));
       continue;
@@ -282,7 +290,7 @@ StockInference inferStock(const gcode::Program& program, const Timeline& run, co
   if (r.insidePassDiameter > 0.0) {
     double largest = 0.0, largestInside = 0.0;
     for (std::size_t i = 0; i < moves.size(); ++i) {
-      const Move& m = moves[i];
+      const auto& m = moves[i];
       if (!isFeed(m)) continue;
       largest = std::max({largest, diameterOf(m.path.start), diameterOf(m.path.end)});
       if (inside[i]) largestInside = std::max(largestInside, diameterOf(m.path.start));
@@ -304,6 +312,22 @@ StockInference inferStock(const gcode::Program& program, const Timeline& run, co
       r.boreLine = 0;
   }
   return r;
+}
+
+}  // namespace
+
+StockInference inferStock(const gcode::Program& program, const Timeline& run, const MachineSetup& setup,
+                          const InferenceOptions& inference) {
+  // Tools beyond the centre line (X < 0) measure the same round bar: read the run as from the front.
+  std::optional<Timeline> mirrored;
+  if (setup.machine.toolsBeyondCentre || sideOfCuts(run) == CutSide::Beyond) {
+    mirrored = run;
+    for (Move& m : mirrored->moves) m = mirroredAcrossCentre(m);
+    for (RecordMove& m : mirrored->recordMoves) m = RecordMove::of(mirroredAcrossCentre(m.move()));
+  }
+  const Timeline& tl = mirrored ? *mirrored : run;
+  if (tl.moves.empty() && !tl.recordMoves.empty()) return inferFromMoves(program, tl, tl.recordMoves, setup, inference);
+  return inferFromMoves(program, tl, tl.moves, setup, inference);
 }
 
 namespace {

@@ -205,25 +205,35 @@ class Gatherer {
     readToolList();
     MotionRecorder motion(out_.beyondCentre);
     std::size_t begin = 0;
-    for (const StateSnapshot& s : run.snapshots) {
+    const std::size_t moveCount = run.moveCount();
+    // A block's moves, whole: the run's own, or a record's read back into a scratch list.
+    std::vector<Move> scratch;
+    const auto movesOf = [&](std::size_t from, std::size_t to) -> std::span<const Move> {
+      if (!run.moves.empty()) return {run.moves.data() + from, to - from};
+      scratch.clear();
+      for (std::size_t i = from; i < to; ++i) scratch.push_back(run.recordMoves[i].move());
+      return {scratch.data(), scratch.size()};
+    };
+    for (std::size_t k = 0; k < run.blockCount(); ++k) {
+      const BlockMark s = run.blockMark(k);
       const std::size_t end =
-          std::clamp<std::size_t>(static_cast<std::size_t>(std::max(s.moveEnd, 0)), begin, run.moves.size());
-      const std::span<const Move> moves(run.moves.data() + begin, end - begin);
+          std::clamp<std::size_t>(static_cast<std::size_t>(std::max(s.moveEnd, 0)), begin, moveCount);
+      const std::span<const Move> moves = movesOf(begin, end);
       begin = end;
       motion.add(moves);  // every move once, in run order
       if (s.blockIndex < 0 || static_cast<std::size_t>(s.blockIndex) >= program_.blocks.size()) continue;
       const gcode::Block& b = program_.blocks[static_cast<std::size_t>(s.blockIndex)];
-      const int station = s.machine.tool;
+      const int station = s.tool;
       if (station < 1 || station > io::kMaxStations) continue;
       if (const gcode::Word* t = b.find('T'); t && (t->expr >= 0 || t->code() != 0))
-        select(b, station, s.machine.offset, s.modal.units == Units::Inch ? 25.4 : 1.0);
+        select(b, station, s.offset, s.units == Units::Inch ? 25.4 : 1.0);
       if (!current_ || currentStation_ != station) {
         current_ = &out_.uses[station];  // a tool in use before any T block of the run selects it
         currentStation_ = station;
       }
-      block(b, moves, station, motionCode(s.modal.motion, dialect_));
+      block(b, moves, station, motionCode(s.motion, dialect_));
     }
-    motion.add(std::span<const Move>(run.moves.data() + begin, run.moves.size() - begin));  // after the last block
+    motion.add(movesOf(begin, moveCount));  // after the last block
     for (auto& [station, use] : out_.uses)
       if (const auto it = motion.uses().find(station); it != motion.uses().end()) use.motion = it->second;
   }
@@ -292,7 +302,7 @@ class Gatherer {
     // `N1 (OD ROUGH)` line is one, as Haas programs write them), then just after
     // it, then the tool list. (Lines of the program's own file: a subprogram
     // file's T block has only its own comment.)
-    std::vector<std::string> texts = {b.comment};
+    std::vector<std::string> texts = {b.comment.str()};
     std::vector<int> lines = {b.line};
     if (b.file == 0) {
       for (int l = b.line - 1; l >= b.line - 3 && !blockLine(l); --l) lines.push_back(l);

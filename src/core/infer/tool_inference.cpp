@@ -361,14 +361,14 @@ void takeStatedNoseRadii(ToolInference& out, const std::map<int, StationUse>& us
 // (zPlunge itself when none did).
 double turnedBesidePlunge(const Timeline& record, int bladeStation, double zPlunge, double bladeWidth) {
   double turnedTo = zPlunge;
-  for (const Move& m : record.moves) {
-    if (m.tool == bladeStation || m.tool < 1 || m.kind == MoveKind::Rapid || m.kind == MoveKind::Dwell) continue;
+  record.forEachMove([&](const auto& m) {
+    if (m.tool == bladeStation || m.tool < 1 || m.kind == MoveKind::Rapid || m.kind == MoveKind::Dwell) return;
     for (const Vec2& p : {m.path.start, m.path.end})
       // (A pass that ends at the cut-off's Z, its end shifted by a nose radius, is not a feature.)
       if (p.x() > zPlunge + std::max(0.5, bladeWidth / 4.0) && p.x() < zPlunge + bladeWidth - 0.05 &&
           std::abs(p.y()) > 0.01)
         turnedTo = std::max(turnedTo, p.x());
-  }
+  });
   return turnedTo;
 }
 
@@ -443,6 +443,7 @@ ToolInference inferTools(const gcode::Program& program, std::string_view gcodeTe
 bool recordIsTheRun(const Timeline& record, const MachineSetup& recordedWith, const RunOptions& recorded,
                     const MachineSetup& setup, const RunOptions& run) {
   if (record.alarm || record.recordStandIns || (record.recordCompensates && run.noseCompensation)) return false;
+  if (!record.marks.empty()) return false;  // a record of marks keeps no states to show
   if (run.throughAlarms || run.dialect != recorded.dialect || run.powerOnUnits != recorded.powerOnUnits ||
       run.optionalStop != recorded.optionalStop || run.blockSkip != recorded.blockSkip ||
       run.stopAtM00 != recorded.stopAtM00)

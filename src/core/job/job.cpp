@@ -295,6 +295,8 @@ std::shared_ptr<const Job> makeJob(JobInput input) {
     machine::InferenceContext context;
     context.fromProgram = file.plainGcode;
     context.run = readRun;
+    // No run follows (the check, the editor's): the record keeps a mark a block, not its state.
+    context.run.blockMarksOnly = !input.timelineNext;
     context.toolsBeyondCentre = file.header.toolsBeyondCentre;
     machine::detail::CheckedWithTools checked = machine::detail::checkWhileInferring(program, check, [&] {
       return machine::inferTools(program, file.gcode, file.gcodeFirstLine, readSetup, io::shippedToolLibrary(),

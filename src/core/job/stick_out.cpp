@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -28,26 +29,28 @@ std::string lengthText(double v) {
 
 std::optional<Diagnostic> lengthenForTools(io::JobHeader& h, const machine::Timeline& run,
                                            const machine::MachineSetup& setup) {
-  if (h.stockSource != io::StockSource::Inferred || run.moves.empty()) return std::nullopt;
+  if (h.stockSource != io::StockSource::Inferred || run.moveCount() == 0) return std::nullopt;
   const cut::Chuck jaws{};  // the jaws' radial size above the bar
   const double grip = std::clamp(setup.machine.chuckGrip, 0.0, h.lengthMm());
   const double stickOut = h.lengthMm() - grip;
   const double jawTop = h.diameterMm() / 2.0 + jaws.jawHeight;
   cut::ToolLibrary shapes(setup.tools, setup.offsets);
-  double reach = 0.0;  // the deepest Z any part of a tool comes to (<= 0)
-  const machine::Move* deepest = nullptr;
-  for (const machine::Move& m : run.moves) {
-    if (m.tool < 1) continue;
+  double reach = 0.0;                          // the deepest Z any part of a tool comes to (<= 0)
+  std::optional<machine::RecordMove> deepest;  // what the note names of the deepest move
+  run.forEachMove([&](const auto& m) {
+    if (m.tool < 1) return;
     const double low = std::min(xOf(m.path.start), xOf(m.path.end));
-    if (m.kind == machine::MoveKind::Rapid && low > jawTop) continue;
+    if (m.kind == machine::MoveKind::Rapid && low > jawTop) return;
     const double z = std::min(zOf(m.path.start), zOf(m.path.end));
     const cut::ToolShape* shape = shapes.get(m.tool, m.offset);
-    if (!shape || low + shape->bounds.x0 > jawTop) continue;
+    if (!shape || low + shape->bounds.x0 > jawTop) return;
     if (z + shape->bounds.z0 < reach - 1e-9) {
       reach = z + shape->bounds.z0;
-      deepest = &m;
+      deepest = machine::RecordMove{
+          m.path, m.line, m.blockIndex, m.file, static_cast<std::int16_t>(m.tool), static_cast<std::int16_t>(m.offset),
+          m.kind};
     }
-  }
+  });
   const double needed = -reach + kJawClearanceMm;
   if (!deepest || needed <= stickOut + 1e-9 || needed - stickOut > kLongestLengtheningMm) return std::nullopt;
   const bool inch = h.lengthUnit == io::LengthUnit::Inch;

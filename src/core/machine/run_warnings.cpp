@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "klueng/core/diagnostic_codes.h"
@@ -39,10 +40,11 @@ std::vector<Diagnostic> modalWarningsFromRun(const gcode::Program& program, cons
                                              const std::vector<Diagnostic>& found) {
   std::vector<Diagnostic> out;
   // W105: a G96 block run with no spindle limit in force, before the first alarm.
-  for (const StateSnapshot& s : record.snapshots) {
+  for (std::size_t k = 0; k < record.blockCount(); ++k) {
+    const BlockMark s = record.blockMark(k);
     if (record.alarm && s.line >= record.alarm->range.line && s.file == record.alarm->range.file) break;
     if (s.file != 0 || s.blockIndex < 0 || static_cast<std::size_t>(s.blockIndex) >= program.blocks.size()) continue;
-    if (s.modal.spindleMode != SpindleMode::ConstantSurface || s.modal.rpmClamp > 0.0) continue;
+    if (s.spindleMode != SpindleMode::ConstantSurface || s.rpmClamped) continue;
     const gcode::Block& b = program.blocks[static_cast<std::size_t>(s.blockIndex)];
     const gcode::Word* g96 = nullptr;
     for (const gcode::Word* g : b.all('G'))
@@ -66,10 +68,11 @@ std::vector<Diagnostic> modalWarningsFromRun(const gcode::Program& program, cons
       const gcode::Word* r = wordAt(program, a.range);
       const double halfMm = a.args.size() > 1 ? std::atof(a.args[1].c_str()) : 0.0;
       // The half chord in the block's own units, as the walk writes it.
-      const StateSnapshot* before = record.snapshots.empty() ? nullptr : &record.snapshots.back();
-      for (const StateSnapshot& s : record.snapshots)
-        if (s.file == 0 && s.line < a.range.line) before = &s;
-      const bool inch = before && before->modal.units == Units::Inch;
+      std::optional<BlockMark> before;
+      if (record.blockCount() > 0) before = record.blockMark(record.blockCount() - 1);
+      for (std::size_t k = 0; k < record.blockCount(); ++k)
+        if (const BlockMark s = record.blockMark(k); s.file == 0 && s.line < a.range.line) before = s;
+      const bool inch = before && before->units == Units::Inch;
       if (r)
         out.push_back(warning(gcode::codes::kArcRadiusCannotJoin, a.range,
                               {r->text(), gcode::formatFixed(inch ? halfMm / 25.4 : halfMm, 3)}));

@@ -93,14 +93,14 @@ Move mirroredAcrossCentre(const Move& in) {
 CutSide sideOfCuts(const Timeline& timeline) {
   constexpr double kOffCentre = 0.005;  // radius, mm
   double below = 0.0, above = 0.0;
-  for (const Move& m : timeline.moves) {
-    if (m.kind != MoveKind::Line && m.kind != MoveKind::Arc && m.kind != MoveKind::Thread) continue;
+  timeline.forEachMove([&](const auto& m) {
+    if (m.kind != MoveKind::Line && m.kind != MoveKind::Arc && m.kind != MoveKind::Thread) return;
     const double mid = (m.path.start.y() + m.path.end.y()) / 2.0;
     if (mid < -kOffCentre)
       below += m.path.length();
     else if (mid > kOffCentre)
       above += m.path.length();
-  }
+  });
   if (below > above && below >= 1.0) return CutSide::Beyond;
   return above > below && above >= 1.0 ? CutSide::Front : CutSide::None;
 }

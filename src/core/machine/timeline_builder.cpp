@@ -1,8 +1,11 @@
 // Last stage of the chain: turns canonical calls into the Timeline with exact
 // times (SPEC 10).
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
+#include "klueng/core/diagnostic_codes.h"
 #include "klueng/core/comp/nose_comp.h"
 #include "klueng/core/geometry.h"
 #include "klueng/core/machine/kinematics.h"
@@ -16,7 +19,8 @@ constexpr double kMinLength = 1e-9;  // mm; shorter moves take no time and are n
 
 class TimelineBuilder final : public MachineSink {
  public:
-  TimelineBuilder(Timeline& out, const TimingConfig& config) : out_(out), config_(config) {}
+  TimelineBuilder(Timeline& out, const TimingConfig& config, const TimelineLimits& limits)
+      : out_(out), config_(config), limits_(limits) {}
 
   void motion(const MotionCall& m) override {
     if (halted()) return;
@@ -63,7 +67,7 @@ class TimelineBuilder final : public MachineSink {
     mv.path = Segment::line(position_, position_);
     mv.rpm = mv.rpmEnd = spindleRpm(d.ctx, xOf(position_));
     time_ = mv.tEnd;
-    out_.moves.push_back(mv);
+    keep(mv);
   }
 
   void setPosition(const Vec2& p) override { position_ = p; }
@@ -71,10 +75,22 @@ class TimelineBuilder final : public MachineSink {
 
   void blockDone(const StateSnapshot& s) override {
     if (halted()) return;
-    StateSnapshot& snap = out_.snapshots.emplace_back(s);
-    snap.time = time_;
-    snap.moveEnd = static_cast<int>(out_.moves.size());
-    snap.machine.position = position_;
+    if (limits_.blockMarksOnly) {
+      BlockMark& mark = out_.marks.emplace_back(BlockMark::of(s));
+      mark.moveEnd = static_cast<int>(out_.recordMoves.size());
+    } else {
+      StateSnapshot& snap = out_.snapshots.emplace_back(s);
+      snap.time = time_;
+      snap.moveEnd = static_cast<int>(out_.moves.size());
+      snap.machine.position = position_;
+    }
+    if (limits_.budgetBytes > 0 && neededBytes() > limits_.budgetBytes) {
+      const std::size_t mb = limits_.budgetBytes >> 20;
+      out_.alarm = Diagnostic{Severity::Alarm,
+                              codes::kRunMemoryBudget,
+                              SourceRange{s.line, 1, 0, s.file},
+                              {std::to_string(mb), std::to_string(s.line)}};
+    }
   }
 
   void alarm(const Diagnostic& d) override {
@@ -101,8 +117,16 @@ class TimelineBuilder final : public MachineSink {
     mv.spindle = c.ctx.spindle;
   }
 
+  // A record of marks keeps what the evidence reads of a move; a timeline keeps it whole.
+  void keep(const Move& mv) {
+    if (limits_.blockMarksOnly)
+      out_.recordMoves.push_back(RecordMove::of(mv));
+    else
+      out_.moves.push_back(mv);
+  }
+
   void push(const MotionCall& m, const Segment& path, double seconds, double feed, double up = 0.0, double down = 0.0) {
-    Move& mv = out_.moves.emplace_back();
+    Move mv;
     stamp(mv, m, seconds);
     mv.kind = m.kind;
     mv.path = path;
@@ -115,6 +139,7 @@ class TimelineBuilder final : public MachineSink {
     mv.rampDown = static_cast<float>(down);
     time_ = mv.tEnd;
     position_ = path.end;
+    keep(mv);
   }
 
   // G00: both axes start together, each at its own rapid rate (and with its
@@ -149,16 +174,38 @@ class TimelineBuilder final : public MachineSink {
     push(m, second, tRest, second.length() / tRest * 60.0, 0.0, rampSlow);
   }
 
+  // What the run keeps so far (it grows with every block and every move), and the copy a full
+  // list makes when it grows next: it moves into one twice its size while the old one is still
+  // held (an endless loop's states took 1.5 x what they kept). A list reserved for the whole
+  // program (interpret() reserves the moves and states) makes no copy.
+  std::size_t neededBytes() const {
+    std::size_t held = 0, copies = 0;
+    const auto add = [&](const auto& list) {
+      const std::size_t bytes = list.size() * sizeof(list.front());
+      held += bytes;
+      if (!list.empty() && list.size() == list.capacity()) copies += bytes;
+    };
+    add(out_.moves);
+    add(out_.snapshots);
+    add(out_.marks);
+    add(out_.recordMoves);
+    add(out_.flow.writes);
+    add(out_.flow.wordValues);
+    return held + copies;
+  }
+
   Timeline& out_;
   TimingConfig config_;
+  TimelineLimits limits_;
   Vec2 position_ = Vec2::Zero();
   double time_ = 0.0;
 };
 
 }  // namespace
 
-std::unique_ptr<MachineSink> makeTimelineBuilder(Timeline& out, const TimingConfig& config) {
-  return std::make_unique<TimelineBuilder>(out, config);
+std::unique_ptr<MachineSink> makeTimelineBuilder(Timeline& out, const TimingConfig& config,
+                                                 const TimelineLimits& limits) {
+  return std::make_unique<TimelineBuilder>(out, config, limits);
 }
 
 }  // namespace klueng::core::machine

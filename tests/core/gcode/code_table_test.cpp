@@ -233,7 +233,7 @@ TEST(CodeTable, ActionsFindTheMachinesOwnCodes) {
 
   const Program p = parse("G33 Z-20. F1.5 G1.5 G#1 M98 P10", 1);
   ASSERT_EQ(p.blocks.size(), 1u);
-  const std::vector<Word>& w = p.blocks[0].words;
+  const auto& w = p.blocks[0].words;
   ASSERT_EQ(w.size(), 7u);
   EXPECT_EQ(actionOf(w[0], romi), CodeAction::Thread);
   EXPECT_EQ(actionOf(w[0], Dialect::Fanuc), CodeAction::None);  // no G33 in system A

@@ -2,7 +2,15 @@
 // The parsed program: blocks of words, each with its source range. No modal
 // knowledge lives here (that is the interpreter's job).
 #include <cstdint>
+#include <initializer_list>
+#include <iosfwd>
+#include <iterator>
+#include <memory>
+#include <new>
+#include <stdexcept>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "klueng/core/diagnostic.h"
@@ -52,12 +60,12 @@ enum class StatementKind : std::uint8_t {
 
 struct Statement {
   StatementKind kind = StatementKind::None;
-  bool then = false;   // IF ... THEN assignment (else IF ... GOTO)
-  int loop = 0;        // DO m / END m identifier (1-3)
-  int condition = -1;  // expression index (Program::expressions)
-  int target = -1;     // expression index of the variable number: #[#1+100] = ...
-  int value = -1;      // expression index of the value or the GOTO target
-  SourceRange range;   // the keyword (or the '#' of an assignment)
+  bool then = false;      // IF ... THEN assignment (else IF ... GOTO)
+  std::int16_t loop = 0;  // DO m / END m identifier (1-3) (16 bits: a Statement is 32 bytes, not 40)
+  int condition = -1;     // expression index (Program::expressions)
+  int target = -1;        // expression index of the variable number: #[#1+100] = ...
+  int value = -1;         // expression index of the value or the GOTO target
+  SourceRange range;      // the keyword (or the '#' of an assignment)
 };
 
 // Macro expressions, compiled to postfix when the line is read.
@@ -109,9 +117,163 @@ struct Expression {
   SourceRange range;            // the expression as written
 };
 
+// The words of a block (a big program holds millions of blocks): a pointer and two 32-bit
+// counts, 16 bytes, not std::vector's 24; one exact allocation a block, as the parser makes it.
+// Reads like the std::vector<Word> it replaced (range-for, size, [], front, back, push_back).
+class WordList {
+ public:
+  using value_type = Word;
+  using iterator = Word*;
+  using const_iterator = const Word*;
+
+  WordList() = default;
+  WordList(std::initializer_list<Word> words) { assign(words.begin(), words.end()); }
+  WordList(const std::vector<Word>& words) { assign(words.begin(), words.end()); }  // NOLINT: reads like one
+  WordList(const WordList& o) { assign(o.begin(), o.end()); }
+  WordList(WordList&& o) noexcept : data_(o.data_), size_(o.size_), capacity_(o.capacity_) {
+    o.data_ = nullptr;
+    o.size_ = o.capacity_ = 0;
+  }
+  WordList& operator=(const WordList& o) {
+    if (this != &o) assign(o.begin(), o.end());
+    return *this;
+  }
+  WordList& operator=(WordList&& o) noexcept {
+    if (this != &o) {
+      release();
+      data_ = o.data_;
+      size_ = o.size_;
+      capacity_ = o.capacity_;
+      o.data_ = nullptr;
+      o.size_ = o.capacity_ = 0;
+    }
+    return *this;
+  }
+  WordList& operator=(std::initializer_list<Word> words) {
+    assign(words.begin(), words.end());
+    return *this;
+  }
+  ~WordList() { release(); }
+
+  template <typename It>
+  void assign(It first, It last) {
+    WordList fresh;  // (first may point into this list)
+    fresh.reserve(static_cast<std::size_t>(std::distance(first, last)));
+    for (; first != last; ++first) fresh.push_back(*first);
+    *this = std::move(fresh);
+  }
+  void reserve(std::size_t n) {
+    if (n <= capacity_) return;
+    Word* grown = std::allocator<Word>().allocate(n);
+    for (std::uint32_t k = 0; k < size_; ++k) {
+      new (grown + k) Word(std::move(data_[k]));
+      data_[k].~Word();
+    }
+    if (data_) std::allocator<Word>().deallocate(data_, capacity_);
+    data_ = grown;
+    capacity_ = static_cast<std::uint32_t>(n);
+  }
+  void push_back(const Word& w) { emplace_back(w); }
+  void push_back(Word&& w) { emplace_back(std::move(w)); }
+  template <typename... Args>
+  Word& emplace_back(Args&&... args) {
+    if (size_ == capacity_) {
+      Word made(std::forward<Args>(args)...);  // (args may name a word of this list)
+      reserve(capacity_ == 0 ? 1 : std::size_t{capacity_} * 2);
+      return *new (data_ + size_++) Word(std::move(made));
+    }
+    return *new (data_ + size_++) Word(std::forward<Args>(args)...);
+  }
+  void pop_back() { data_[--size_].~Word(); }
+  void clear() {
+    while (size_ > 0) pop_back();
+  }
+  iterator erase(const_iterator at) {
+    const auto k = static_cast<std::size_t>(at - data_);
+    for (std::size_t i = k; i + 1 < size_; ++i) data_[i] = std::move(data_[i + 1]);
+    pop_back();
+    return data_ + k;
+  }
+
+  std::size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  Word* data() { return data_; }
+  const Word* data() const { return data_; }
+  Word* begin() { return data_; }
+  Word* end() { return data_ + size_; }
+  const Word* begin() const { return data_; }
+  const Word* end() const { return data_ + size_; }
+  Word& operator[](std::size_t i) { return data_[i]; }
+  const Word& operator[](std::size_t i) const { return data_[i]; }
+  Word& at(std::size_t i) {
+    if (i >= size_) throw std::out_of_range("WordList::at");
+    return data_[i];
+  }
+  const Word& at(std::size_t i) const {
+    if (i >= size_) throw std::out_of_range("WordList::at");
+    return data_[i];
+  }
+  Word& front() { return data_[0]; }
+  const Word& front() const { return data_[0]; }
+  Word& back() { return data_[size_ - 1]; }
+  const Word& back() const { return data_[size_ - 1]; }
+
+ private:
+  void release() {
+    clear();
+    if (data_) std::allocator<Word>().deallocate(data_, capacity_);
+    data_ = nullptr;
+    capacity_ = 0;
+  }
+  Word* data_ = nullptr;
+  std::uint32_t size_ = 0;
+  std::uint32_t capacity_ = 0;
+};
+
+// The comments of a block, joined by a space: most blocks have none, so a block keeps one pointer
+// (8 bytes, not a std::string's 32). Reads like the std::string it replaced.
+class BlockComment {
+ public:
+  BlockComment() = default;
+  BlockComment(std::string_view text) {  // NOLINT(google-explicit-constructor): reads like a string
+    if (!text.empty()) text_ = std::make_unique<std::string>(text);
+  }
+  BlockComment(const BlockComment& o) : text_(o.text_ ? std::make_unique<std::string>(*o.text_) : nullptr) {}
+  BlockComment(BlockComment&&) noexcept = default;
+  BlockComment& operator=(const BlockComment& o) {
+    if (this != &o) text_ = o.text_ ? std::make_unique<std::string>(*o.text_) : nullptr;
+    return *this;
+  }
+  BlockComment& operator=(BlockComment&&) noexcept = default;
+  ~BlockComment() = default;
+
+  bool empty() const { return !text_ || text_->empty(); }
+  std::size_t size() const { return text_ ? text_->size() : 0; }
+  std::string_view view() const { return text_ ? std::string_view(*text_) : std::string_view(); }
+  operator std::string_view() const { return view(); }  // NOLINT(google-explicit-constructor)
+  std::string str() const { return std::string(view()); }
+  void append(std::string_view text) {
+    if (text.empty()) return;
+    if (!text_) text_ = std::make_unique<std::string>();
+    text_->append(text);
+  }
+  BlockComment& operator+=(char c) {
+    append(std::string_view(&c, 1));
+    return *this;
+  }
+  friend bool operator==(const BlockComment& a, std::string_view b) { return a.view() == b; }
+  friend bool operator==(const BlockComment& a, const char* b) { return a.view() == b; }
+  friend bool operator==(const BlockComment& a, const BlockComment& b) { return a.view() == b.view(); }
+  friend std::ostream& operator<<(std::ostream& os, const BlockComment& c);
+
+ private:
+  std::unique_ptr<std::string> text_;
+};
+
+// (A block is 72 bytes, not 112: a big program holds millions, issue 42 item 3.)
 struct Block {
-  std::vector<Word> words;      // in source order
-  std::string comment;          // text of ( ) and ; comments, joined by a space
+  WordList words;               // in source order
+  BlockComment comment;         // text of ( ) and ; comments, joined by a space
   Statement statement;          // a macro statement (kind None for an NC block)
   int line = 0;                 // 1-based line in the file
   int file = 0;                 // Program::files index: 0 = the program itself, else a subprogram file
@@ -166,8 +328,7 @@ struct Block {
       const Word* end_;
       char letter_;
     };
-    LetterWords(const std::vector<Word>& words, char letter, bool present)
-        : words_(words), letter_(letter), present_(present) {}
+    LetterWords(const WordList& words, char letter, bool present) : words_(words), letter_(letter), present_(present) {}
     iterator begin() const {
       const Word* end = words_.data() + words_.size();
       return {present_ ? words_.data() : end, end, letter_};
@@ -175,12 +336,13 @@ struct Block {
     iterator end() const { return {words_.data() + words_.size(), words_.data() + words_.size(), letter_}; }
 
    private:
-    const std::vector<Word>& words_;
+    const WordList& words_;
     char letter_;
     bool present_;
   };
   LetterWords all(char letter) const { return LetterWords(words, letter, mayHave(letter)); }
 };
+static_assert(sizeof(Block) == 72, "a Block is 72 bytes: big programs hold millions");
 
 struct Program {
   std::vector<Block> blocks;                   // only lines with words; blank, comment-only and % lines are dropped

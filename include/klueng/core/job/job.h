@@ -108,6 +108,12 @@ class Job {
 
   // The run, interpreted on first ask; nullptr when there is no program or an error.
   const machine::Timeline* timeline() const;
+  // The same timeline, shared on its own: a holder keeps the run, not the job's program and
+  // diagnostics (the GUI's run keeps a long program's timeline, issue 42 item 3).
+  std::shared_ptr<const machine::Timeline> sharedTimeline() const {
+    timeline();
+    return timeline_;
+  }
   // The bar the timeline cuts, run to its end (or its alarm) on first ask; nullptr without a timeline.
   const cut::CutSimulator* cut() const;
 

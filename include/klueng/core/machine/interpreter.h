@@ -1,5 +1,6 @@
 #pragma once
 // Runs a checked Program into a Timeline (SPEC 6-10).
+#include <cstddef>
 #include <map>
 #include <optional>
 
@@ -30,6 +31,14 @@ struct RunOptions {
   // after it is still seen; Timeline::alarm keeps the first. The loop limits
   // still end the run.
   bool throughAlarms = false;
+  // A record read only for evidence (the check's, when no run follows it): each executed block
+  // leaves a BlockMark instead of a StateSnapshot (Timeline::marks), 24 bytes, not 176.
+  bool blockMarksOnly = false;
+  // The memory the timeline may take: moves, snapshots and the macro values it logs (issue 42
+  // item 3). A run that would need more stops with A156 at the block that reached it, instead of
+  // taking all the computer's memory (an endless loop under max_blocks = 100000000). 0 = none.
+  std::size_t memoryBudgetMb = kRunMemoryBudgetMb;
+  static constexpr std::size_t kRunMemoryBudgetMb = 4096;
 };
 
 struct MachineSetup {

@@ -3,6 +3,7 @@
 // (ARCHITECTURE: Interpreter -> Compensator -> Timeline). The interpreter
 // turns blocks into a few canonical calls; sinks can be chained, each one
 // forwarding (possibly transformed) calls to the next.
+#include <cstddef>
 #include <memory>
 
 #include "klueng/core/comp/segment.h"
@@ -86,6 +87,12 @@ struct TimingConfig {
   double accelX = 0.0;     // mm/s², radial; 0 = moves start and stop at once
   double accelZ = 0.0;     // mm/s²
 };
-std::unique_ptr<MachineSink> makeTimelineBuilder(Timeline& out, const TimingConfig& config);
+// What the builder keeps and how much of it (RunOptions::blockMarksOnly, memoryBudgetMb).
+struct TimelineLimits {
+  bool blockMarksOnly = false;  // Timeline::marks instead of snapshots
+  std::size_t budgetBytes = 0;  // moves, snapshots or marks and the flow's value logs; 0 = none
+};
+std::unique_ptr<MachineSink> makeTimelineBuilder(Timeline& out, const TimingConfig& config,
+                                                 const TimelineLimits& limits = {});
 
 }  // namespace klueng::core::machine

@@ -55,17 +55,96 @@ struct ToolTime {
   double seconds = 0.0;  // moves and dwells made with it
 };
 
+// What a record read only for evidence keeps of an executed block instead of its StateSnapshot
+// (RunOptions::blockMarksOnly: the check's tool and stock inference and its modal warnings read
+// no more; 24 bytes, not 176, issue 42 item 3).
+struct BlockMark {
+  int blockIndex = 0;
+  int moveEnd = 0;  // Timeline::moves index one past the block's last move
+  int line = 0;
+  int file = 0;
+  std::int16_t tool = 0;  // machine.tool, machine.offset (stations and offsets are small)
+  std::int16_t offset = 0;
+  Units units = Units::Mm;  // modal.units, modal.motion, modal.spindleMode
+  MotionMode motion = MotionMode::Rapid;
+  SpindleMode spindleMode = SpindleMode::ConstantRpm;
+  bool rpmClamped = false;  // modal.rpmClamp > 0
+
+  static BlockMark of(const StateSnapshot& s) {
+    return {s.blockIndex,
+            s.moveEnd,
+            s.line,
+            s.file,
+            static_cast<std::int16_t>(s.machine.tool),
+            static_cast<std::int16_t>(s.machine.offset),
+            s.modal.units,
+            s.modal.motion,
+            s.modal.spindleMode,
+            s.modal.rpmClamp > 0.0};
+  }
+};
+static_assert(sizeof(BlockMark) == 24, "a record keeps one a block");
+
+// What a record of marks keeps of a move (RunOptions::blockMarksOnly): what the tool and stock
+// inference read of it, under the names a Move gives them, 96 bytes, not 176. move() gives it
+// back as a Move (times, feeds and speeds zero, as a fresh Move's).
+struct RecordMove {
+  Segment path;
+  int line = 0;
+  int blockIndex = 0;
+  int file = 0;
+  std::int16_t tool = 0;  // stations and offsets are small
+  std::int16_t offset = 0;
+  MoveKind kind = MoveKind::Line;
+
+  static RecordMove of(const Move& m) {
+    return {
+        m.path, m.line, m.blockIndex, m.file, static_cast<std::int16_t>(m.tool), static_cast<std::int16_t>(m.offset),
+        m.kind};
+  }
+  Move move() const {
+    Move m;
+    m.path = path;
+    m.line = line;
+    m.blockIndex = blockIndex;
+    m.file = file;
+    m.tool = tool;
+    m.offset = offset;
+    m.kind = kind;
+    return m;
+  }
+};
+static_assert(sizeof(RecordMove) == 96, "a record of marks keeps one a move");
+
 struct Timeline {
   std::vector<Move> moves;
   std::vector<StateSnapshot> snapshots;  // one per executed block, in execution order
-  std::optional<Diagnostic> alarm;       // the alarm that stopped the run, if any
-  FlowLog flow;                          // call stacks and macro variables (flow.h)
+  // Instead of snapshots, in a record made with RunOptions::blockMarksOnly: one per executed block.
+  std::vector<BlockMark> marks;
+  // Instead of moves, in a record made with RunOptions::blockMarksOnly.
+  std::vector<RecordMove> recordMoves;
+  std::optional<Diagnostic> alarm;  // the alarm that stopped the run, if any
+  FlowLog flow;                     // call stacks and macro variables (flow.h)
   // A record (RunOptions::throughAlarms) differs from the run interpret() makes with the
   // same inputs when it made a cut with a stand-in feed, spindle or speed, or was asked
   // for nose compensation (it follows the programmed path): job.cpp reuses only one that is not.
   bool recordStandIns = false;
   bool recordCompensates = false;
   double cycleTime() const { return moves.empty() ? 0.0 : moves.back().tEnd; }
+  // The executed blocks as the evidence reads them, from the marks or the snapshots.
+  std::size_t blockCount() const { return snapshots.empty() ? marks.size() : snapshots.size(); }
+  BlockMark blockMark(std::size_t k) const { return snapshots.empty() ? marks[k] : BlockMark::of(snapshots[k]); }
+  // The moves as the evidence reads them: f(m) for each of the moves or of a record's moves, a
+  // Move or a RecordMove (the same names for what both keep: path, line, blockIndex, file, tool,
+  // offset, kind).
+  std::size_t moveCount() const { return moves.empty() ? recordMoves.size() : moves.size(); }
+  template <typename F>
+  void forEachMove(F&& f) const {
+    if (!moves.empty())
+      for (const Move& m : moves) f(m);
+    else
+      for (const RecordMove& r : recordMoves) f(r);
+  }
   // The cycle time split by tool, in the order the tools are first used.
   std::vector<ToolTime> timeByTool() const;
   // Position of the controlled point at time t (clamped to [0, cycleTime]).
