@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <cstring>
 #include <iterator>
+#include <memory>
 #include <string>
 
 #include "diagnostic_codes.h"
@@ -304,9 +305,25 @@ class LineParser {
       report(codes::kTextAfterTapeMark, w.range.column, w.range.length, {w.letter + w.number});
       return;
     }
-    block.words.assign(std::make_move_iterator(words_.begin()), std::make_move_iterator(words_.end()));
+    block.words = storeWords();
     noteWords(block);
     program_.blocks.push_back(std::move(block));
+  }
+
+  // The line's words moved into the program's word store, one chunk after another (a block's
+  // words side by side): the block borrows them, no allocation a block.
+  WordList storeWords() {
+    const std::size_t n = words_.size();
+    if (!chunk_ || chunkUsed_ + n > kChunkWords) {
+      auto chunk = std::shared_ptr<Word[]>(new Word[std::max(kChunkWords, n)]);
+      chunk_ = chunk.get();
+      chunkUsed_ = 0;
+      program_.wordStores.push_back(std::move(chunk));
+    }
+    Word* at = chunk_ + chunkUsed_;
+    for (std::size_t k = 0; k < n; ++k) at[k] = std::move(words_[k]);
+    chunkUsed_ += n;
+    return WordList::borrow(at, n);
   }
 
   Program& program_;
@@ -314,8 +331,11 @@ class LineParser {
   int file_ = 0;
   std::string_view line_;
   int lineNumber_ = 0;
-  // Words of the current line; reused so each block gets one exact allocation.
+  // Words of the current line; reused, then moved into the word store.
   std::vector<Word> words_;
+  static constexpr std::size_t kChunkWords = 4096;  // words a store chunk holds (196 KB)
+  Word* chunk_ = nullptr;                           // the chunk being filled, and how far
+  std::size_t chunkUsed_ = 0;
   std::string scratch_;  // a number written with blanks inside, gathered without them
 
   // What the scans ask of a block without reading its words.

@@ -149,6 +149,8 @@ std::vector<Diagnostic> attachSubprogramFiles(gcode::Program& program, const std
         shiftExpressions(b, offset);
         program.blocks.push_back(std::move(b));
       }
+      // The moved blocks borrow their words from the file's word store: the program keeps it.
+      for (std::shared_ptr<void>& store : sub.wordStores) program.wordStores.push_back(std::move(store));
       added = true;
     }
     if (!added) break;

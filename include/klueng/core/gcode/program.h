@@ -1,6 +1,7 @@
 #pragma once
 // The parsed program: blocks of words, each with its source range. No modal
 // knowledge lives here (that is the interpreter's job).
+#include <algorithm>
 #include <cstdint>
 #include <initializer_list>
 #include <iosfwd>
@@ -118,8 +119,10 @@ struct Expression {
 };
 
 // The words of a block (a big program holds millions of blocks): a pointer and two 32-bit
-// counts, 16 bytes, not std::vector's 24; one exact allocation a block, as the parser makes it.
-// Reads like the std::vector<Word> it replaced (range-for, size, [], front, back, push_back).
+// counts, 16 bytes, not std::vector's 24. The parser's blocks borrow their words from the
+// program's word store (Program::wordStores: no allocation a block); a block copied, built by
+// hand or changed in length owns its own. Reads like the std::vector<Word> it replaced
+// (range-for, size, [], front, back, push_back).
 class WordList {
  public:
   using value_type = Word;
@@ -127,6 +130,13 @@ class WordList {
   using const_iterator = const Word*;
 
   WordList() = default;
+  // Words kept elsewhere (a word store that outlives the list): read and changed in place, never freed here.
+  static WordList borrow(Word* words, std::size_t n) {
+    WordList list;
+    list.data_ = n > 0 ? words : nullptr;
+    list.size_ = static_cast<std::uint32_t>(n);
+    return list;
+  }
   WordList(std::initializer_list<Word> words) { assign(words.begin(), words.end()); }
   WordList(const std::vector<Word>& words) { assign(words.begin(), words.end()); }  // NOLINT: reads like one
   WordList(const WordList& o) { assign(o.begin(), o.end()); }
@@ -163,13 +173,18 @@ class WordList {
     *this = std::move(fresh);
   }
   void reserve(std::size_t n) {
-    if (n <= capacity_) return;
+    if (n <= capacity_ && !borrowed()) return;
+    n = std::max<std::size_t>(n, size_);
     Word* grown = std::allocator<Word>().allocate(n);
-    for (std::uint32_t k = 0; k < size_; ++k) {
-      new (grown + k) Word(std::move(data_[k]));
-      data_[k].~Word();
+    if (borrowed()) {
+      for (std::uint32_t k = 0; k < size_; ++k) new (grown + k) Word(data_[k]);  // the store keeps its own
+    } else {
+      for (std::uint32_t k = 0; k < size_; ++k) {
+        new (grown + k) Word(std::move(data_[k]));
+        data_[k].~Word();
+      }
+      if (data_) std::allocator<Word>().deallocate(data_, capacity_);
     }
-    if (data_) std::allocator<Word>().deallocate(data_, capacity_);
     data_ = grown;
     capacity_ = static_cast<std::uint32_t>(n);
   }
@@ -177,19 +192,24 @@ class WordList {
   void push_back(Word&& w) { emplace_back(std::move(w)); }
   template <typename... Args>
   Word& emplace_back(Args&&... args) {
-    if (size_ == capacity_) {
+    if (size_ == capacity_ || borrowed()) {
       Word made(std::forward<Args>(args)...);  // (args may name a word of this list)
       reserve(capacity_ == 0 ? 1 : std::size_t{capacity_} * 2);
       return *new (data_ + size_++) Word(std::move(made));
     }
     return *new (data_ + size_++) Word(std::forward<Args>(args)...);
   }
-  void pop_back() { data_[--size_].~Word(); }
+  void pop_back() {
+    --size_;
+    if (!borrowed()) data_[size_].~Word();
+    if (size_ == 0 && borrowed()) data_ = nullptr;
+  }
   void clear() {
     while (size_ > 0) pop_back();
   }
   iterator erase(const_iterator at) {
     const auto k = static_cast<std::size_t>(at - data_);
+    if (borrowed()) reserve(size_);
     for (std::size_t i = k; i + 1 < size_; ++i) data_[i] = std::move(data_[i + 1]);
     pop_back();
     return data_ + k;
@@ -219,10 +239,12 @@ class WordList {
   const Word& back() const { return data_[size_ - 1]; }
 
  private:
+  bool borrowed() const { return capacity_ == 0 && data_ != nullptr; }
   void release() {
     clear();
-    if (data_) std::allocator<Word>().deallocate(data_, capacity_);
+    if (data_ && capacity_ > 0) std::allocator<Word>().deallocate(data_, capacity_);
     data_ = nullptr;
+    size_ = 0;
     capacity_ = 0;
   }
   Word* data_ = nullptr;
@@ -345,7 +367,10 @@ struct Block {
 static_assert(sizeof(Block) == 72, "a Block is 72 bytes: big programs hold millions");
 
 struct Program {
-  std::vector<Block> blocks;                   // only lines with words; blank, comment-only and % lines are dropped
+  std::vector<Block> blocks;  // only lines with words; blank, comment-only and % lines are dropped
+  // Where the parsed blocks' words live (WordList::borrow): kept while any block of the program
+  // may read them, also by a program the blocks were moved into (attachSubprogramFiles).
+  std::vector<std::shared_ptr<void>> wordStores;
   std::vector<Diagnostic> lexicalDiagnostics;  // errors found while reading the text
   int firstLine = 1;                           // file line of the first G-code line
   int lineCount = 0;                           // number of G-code lines read
