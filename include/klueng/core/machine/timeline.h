@@ -83,7 +83,7 @@ struct BlockMark {
             s.modal.rpmClamp > 0.0};
   }
 };
-static_assert(sizeof(BlockMark) == 24, "a record keeps one a block");
+static_assert(sizeof(void*) != 8 || sizeof(BlockMark) == 24, "a record keeps one a block");  // (64-bit builds)
 
 // What a record of marks keeps of a move (RunOptions::blockMarksOnly): what the tool and stock
 // inference read of it, under the names a Move gives them, 96 bytes, not 176. move() gives it
@@ -114,7 +114,7 @@ struct RecordMove {
     return m;
   }
 };
-static_assert(sizeof(RecordMove) == 96, "a record of marks keeps one a move");
+static_assert(sizeof(void*) != 8 || sizeof(RecordMove) == 96, "a record of marks keeps one a move");  // (64-bit)
 
 struct Timeline {
   std::vector<Move> moves;
