@@ -61,7 +61,7 @@ struct ReportData {
   // The roughness each feature's surface got from the cut that left it (issue 39; cut::surfaceFinishOf):
   // listed beside the title block. Filled by addRunResults with the part.
   std::vector<std::pair<core::cut::PartFeature, core::cut::SurfaceFinish>> finishes;
-  core::UnitFormat units;            // the unit the drawing's dimensions are written in (issue 28 item 4)
+  core::UnitFormat units;  // the unit the drawing's dimensions are written in (issue 28 item 4)
   // Cycle time (issue 11): total and per tool; total < 0 = not known (the program has errors).
   double cycleTime = -1.0;
   bool cycleTimeToAlarm = false;  // the run stops on an alarm: the time is up to it

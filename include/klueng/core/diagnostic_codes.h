@@ -426,7 +426,7 @@ inline constexpr const char* kReportColumnDimension = "R066";
 inline constexpr const char* kReportColumnTolerance = "R067";
 inline constexpr const char* kReportColumnLimits = "R068";
 inline constexpr const char* kReportColumnMeasured = "R069";
-inline constexpr const char* kReportInCount = "R071";  // {0} in {1} of
+inline constexpr const char* kReportInCount = "R071";        // {0} in {1} of
 inline constexpr const char* kReportColumnCutting = "R072";  // the class table's cutting-data warnings
 // Why the picture module drew no PDF (its entry points write the code, the CLI says it).
 inline constexpr const char* kReportNothingToWrite = "R080";

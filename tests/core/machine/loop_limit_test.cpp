@@ -95,8 +95,8 @@ TEST(EndlessLoop, AGotoToItselfIsEndlessAtOnce) {
 // endless, found within a few passes (the moves of those passes are kept).
 TEST(EndlessLoop, AWhileWhoseConditionNeverChangesIsEndless) {
   MachineSetup setup = testSetup();
-  const Timeline t = runText(
-      "G98 G00 X20. Z0.\n#1=1\nWHILE [#1 EQ 1] DO1\nG01 W-10. F100.\nG00 W10.\nEND1\nM30\n", {}, setup);
+  const Timeline t =
+      runText("G98 G00 X20. Z0.\n#1=1\nWHILE [#1 EQ 1] DO1\nG01 W-10. F100.\nG00 W10.\nEND1\nM30\n", {}, setup);
   ASSERT_TRUE(t.alarm);
   EXPECT_EQ(t.alarm->code, "A155");
   EXPECT_EQ(t.alarm->range.line, 6);  // END1
@@ -129,16 +129,14 @@ TEST(EndlessLoop, LoopsThatEndAreNotEndless) {
   setup.machine.maxBlocks = 1000000;
   EXPECT_FALSE(runText("#1=0\nWHILE [#1 LT 70000] DO1\n#1=#1+1\nEND1\nM30\n", {}, setup).alarm);
   // The same pass three times by M98 L3: the repeat count is state.
-  EXPECT_FALSE(runText("G98 G00 X20. Z0.\nM98 P1000 L3\nM30\nO1000\nG01 W-1. F100.\nG00 W1.\nM99\n", {}, setup)
-                   .alarm);
+  EXPECT_FALSE(runText("G98 G00 X20. Z0.\nM98 P1000 L3\nM30\nO1000\nG01 W-1. F100.\nG00 W1.\nM99\n", {}, setup).alarm);
   // The position is state: an incremental move each pass, until Z (#5002) is at -50.
   EXPECT_FALSE(runText("G98 G00 X20. Z0.\nN5 G01 W-1. F100.\nIF [#5002 GT -50.] GOTO 5\nM30\n", {}, setup).alarm);
   // The offsets are state: a program that corrects its own wear until a value is reached.
   EXPECT_FALSE(runText("N5 #2001=#2001+0.01\nIF [#2001 LT 1.] GOTO 5\nM30\n", {}, setup).alarm);
   // A macro's argument is state: each call passes the next value.
-  EXPECT_FALSE(runText("#100=0\nN5 G65 P9000 A#100\nIF [#100 LT 20] GOTO 5\nM30\nO9000\n#100=#1+1\nM99\n", {},
-                       setup)
-                   .alarm);
+  EXPECT_FALSE(
+      runText("#100=0\nN5 G65 P9000 A#100\nIF [#100 LT 20] GOTO 5\nM30\nO9000\n#100=#1+1\nM99\n", {}, setup).alarm);
   // A loop that waits on the timer (#3001) ends when the time is up: the clock is state.
   const Timeline timer = runText("G98\n#3001=0\nN5 G04 X1.\nIF [#3001 LT 5000] GOTO 5\nM30\n", {}, setup);
   EXPECT_FALSE(timer.alarm) << formatMessage(*timer.alarm, Lang::En);
