@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "scratch_config.h"
 #include "program_generator.h"
 
 extern char** environ;
@@ -60,22 +61,6 @@ PeakRun runOnce(const std::vector<std::string>& args) {
   }
   posix_spawn_file_actions_destroy(&actions);
   return r;
-}
-
-// The shipped setup with max_run_time at its limit, so that simulate runs every block.
-fs::path makeConfig(const fs::path& scratch) {
-  const fs::path dir = scratch / "config";
-  fs::create_directories(dir);
-  const fs::path source = KLUENG_SOURCE_DIR;
-  fs::copy_file(source / "tools.cfg", dir / "tools.cfg");
-  fs::copy_file(source / "offset.cfg", dir / "offset.cfg");
-  fs::create_directory_symlink(source / "resources", dir / "resources");
-  std::ifstream in(source / "machine.cfg");
-  std::ofstream out(dir / "machine.cfg");
-  for (std::string line; std::getline(in, line);)
-    if (line.rfind("max_run_time", 0) != 0) out << line << '\n';
-  out << "max_run_time = 10000000\n";
-  return dir;
 }
 
 }  // namespace
@@ -125,7 +110,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> args = {cli, command, program.string()};
   if (command == "simulate") {
     args.push_back("--config");
-    args.push_back(makeConfig(scratch).string());
+    args.push_back(klueng::bench::makeLongRunConfig(scratch).string());
   }
   const PeakRun r = runOnce(args);
   std::error_code ignored;

@@ -40,6 +40,7 @@
 #include <string>
 #include <vector>
 
+#include "scratch_config.h"
 #include "klueng/core/cut/cut_simulator.h"
 #include "klueng/core/io/tool_library.h"
 #include "klueng/core/job/job.h"
@@ -95,22 +96,6 @@ double median(std::vector<double> v) {
   return v.empty() ? 0.0 : (v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]));
 }
 
-// The shipped setup with max_run_time at its limit, in a scratch folder.
-fs::path makeConfig(const fs::path& scratch) {
-  const fs::path dir = scratch / "config";
-  fs::create_directories(dir);
-  const fs::path source = KLUENG_SOURCE_DIR;
-  fs::copy_file(source / "tools.cfg", dir / "tools.cfg");
-  fs::copy_file(source / "offset.cfg", dir / "offset.cfg");
-  fs::create_directory_symlink(source / "resources", dir / "resources");
-  std::ifstream in(source / "machine.cfg");
-  std::ofstream out(dir / "machine.cfg");
-  for (std::string line; std::getline(in, line);)
-    if (line.rfind("max_run_time", 0) != 0) out << line << '\n';
-  out << "max_run_time = 10000000\n";
-  return dir;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -149,7 +134,7 @@ int main(int argc, char** argv) {
   }
   const fs::path scratch = fs::temp_directory_path() / ("klueng-whole-process-" + std::to_string(::getpid()));
   fs::create_directories(scratch);
-  const fs::path config = makeConfig(scratch);
+  const fs::path config = klueng::bench::makeLongRunConfig(scratch);
 
   // 1. The programs, written before anything is timed, by klueng-gen-program
   // (this process stays small, see 2.).
