@@ -103,6 +103,7 @@ void MainWindow::createEditorAndRunner() {
   editor_->setDialect(jobDoc_.dialect());
 
   runner_ = new RunController(this);
+  runner_->setLastCheck([this] { return jobDoc_.job(); });
   runner_->setDialect(jobDoc_.dialect());
   runner_->setPowerOnUnits(jobDoc_.powerOnUnits());
   runner_->setOptionalStop(settings_->optionalStop());

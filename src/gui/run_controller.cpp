@@ -84,6 +84,10 @@ void RunController::setProgramFolder(const QString& folder) {
   invalidate();
 }
 
+void RunController::setLastCheck(std::function<std::shared_ptr<const core::job::Job>()> lastCheck) {
+  lastCheck_ = std::move(lastCheck);
+}
+
 void RunController::setMachineSetup(const machine::MachineSetup& setup) {
   setup_ = setup;
   cutSetup_ = setup;  // until the next run fits its guesses
@@ -344,7 +348,8 @@ void RunController::prepareAndThen(Pending what) {
   auto options = options_;
   const std::string folder = folder_.toStdString();
   options.optionalStop = true;  // record every M01; the switch decides while playing
-  prepareWatcher_.setFuture(QtConcurrent::run([file, setup, options, folder]() {
+  std::shared_ptr<const core::job::Job> checked = lastCheck_ ? lastCheck_() : nullptr;
+  prepareWatcher_.setFuture(QtConcurrent::run([file, setup, options, folder, checked = std::move(checked)]() mutable {
     auto result = std::make_shared<Prepared>();
     core::job::JobInput input;
     input.file = file;
@@ -352,6 +357,7 @@ void RunController::prepareAndThen(Pending what) {
     input.inferTools = false;
     input.run = options;
     input.folder = folder;
+    input.sameText = std::move(checked);  // shared while the run is made; the window keeps its own
     const std::shared_ptr<const core::job::Job> job = core::job::makeJob(std::move(input));
     if (job->program()) result->files = job->program()->files;
     if (job->hasErrors() || !job->timeline()) {

@@ -35,6 +35,7 @@
 #include <QSet>
 #include <QString>
 #include <QTimer>
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -46,6 +47,10 @@
 #include "klueng/core/machine/interpreter.h"
 #include "klueng/core/machine/timeline.h"
 #include "render/lathe_painters.h"
+
+namespace klueng::core::job {
+class Job;
+}
 
 namespace klueng::gui {
 
@@ -86,6 +91,10 @@ class RunController : public QObject {
   void setProgram(const core::io::ProgramFile& file, const QString& displayName = {});
   // The folder subprogram files (O1000.nc ...) are read from: the program's own (empty = none).
   void setProgramFolder(const QString& folder);
+  // Where the window's last check is asked for when a run is prepared: a check of the same text,
+  // read alike, lends the run its parsed program (core::job::JobInput::sameText), so a long
+  // program is not parsed a second time beside the editor's check (issue 42 item 3).
+  void setLastCheck(std::function<std::shared_ptr<const core::job::Job>()> lastCheck);
   // The files of the running program: [0] the program itself (""), then its subprogram files.
   const std::vector<std::string>& programFiles() const { return files_; }
   // Program::files index of the block being executed (0 = the program in the editor).
@@ -205,7 +214,8 @@ class RunController : public QObject {
 
   core::io::ProgramFile file_;
   QString displayName_;
-  QString folder_;                  // subprogram files come from here
+  QString folder_;  // subprogram files come from here
+  std::function<std::shared_ptr<const core::job::Job>()> lastCheck_;
   std::vector<std::string> files_;  // Program::files of the prepared run
   Pending stepKind_ = Pending::Step;
   core::machine::MachineSetup setup_;

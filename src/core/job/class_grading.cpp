@@ -109,7 +109,7 @@ GradedProgram gradeProgram(const std::string& path, const JobInput& base) {
     input.folder.reset();  // the student's own folder
     input.timelineNext = true;
     const std::shared_ptr<const Job> job = makeJob(std::move(input));
-    const std::optional<gcode::Program>& program = job->program();
+    const gcode::Program* program = job->program();
     if (program)
       g.subprogramFiles.assign(program->files.begin() + std::min<std::ptrdiff_t>(1, std::ssize(program->files)),
                                program->files.end());

@@ -200,6 +200,48 @@ machine::Timeline fitGuessedNose(machine::Timeline run, const gcode::Program& pr
   return run;
 }
 
+// Parse once, attach the subprogram files from `folder`, read the power-on units from the
+// numbers (issue 38 item 8), the angles and the lengths without a decimal point.
+ProgramReading readProgram(const io::ProgramFile& file, const std::string& folder, bool ownFolder,
+                           const machine::RunOptions& run, std::optional<bool> givenPoint, bool machinePoint) {
+  ProgramReading r;
+  r.folder = folder;
+  r.dialect = run.dialect;
+  r.givenUnits = run.powerOnUnits;
+  r.givenPoint = givenPoint;
+  r.machinePoint = machinePoint;
+  auto program = std::make_shared<gcode::Program>(gcode::parse(file.gcode, file.gcodeFirstLine));
+  std::optional<gcode::InputUnits> units = run.powerOnUnits;
+  // A plain program without G20/G21 whose sizes clearly speak the other unit.
+  if (!units && file.plainGcode)
+    if (std::optional<machine::UnitsReading> read =
+            machine::readPowerOnUnits(*program, run.dialect, gcode::powerOnUnitsOf(run.dialect, {}))) {
+      r.unitsRead = units = read->units;
+      r.notes.push_back(read->note);
+    }
+  if (ownFolder || !folder.empty())
+    for (Diagnostic& d : machine::attachSubprogramFiles(*program, folder, run.dialect)) r.notes.push_back(std::move(d));
+  dropFilesOutside(*program, folder, r.notes);
+  if (gcode::machineProfile(run.dialect).angleWithoutComma) gcode::readAnglesWithoutComma(*program);
+  r.points = machine::readDecimalPoints(*program, file.plainGcode, givenPoint, machinePoint,
+                                        gcode::powerOnUnitsOf(run.dialect, units), run.dialect);
+  r.program = std::move(program);
+  return r;
+}
+
+// Whether `same` read this very text as this job would: then its blocks are this job's.
+bool readAlike(const Job& same, const io::ProgramFile& file, const std::string& folder, const machine::RunOptions& run,
+               std::optional<bool> givenPoint, const machine::MachineSetup& setup) {
+  const ProgramReading& r = same.reading();
+  const std::optional<io::ProgramFile>& other = same.file();
+  // The GUI's run is given the check's setup, whose machine reads lengths as the check concluded:
+  // read again with that, the program's numbers or the choice decide alike, or the machine did.
+  const bool machineAlike =
+      r.machinePoint == setup.machine.calculatorInput || r.points.calculatorInput == setup.machine.calculatorInput;
+  return r.program && other && r.folder == folder && r.dialect == run.dialect && r.givenUnits == run.powerOnUnits &&
+         r.givenPoint == givenPoint && machineAlike && other->plainGcode == file.plainGcode &&
+         other->gcodeFirstLine == file.gcodeFirstLine && other->gcode == file.gcode;
+}
 }  // namespace
 
 ComputeLog computeLog() {
@@ -254,14 +296,24 @@ std::shared_ptr<const Job> makeJob(JobInput input) {
     }
     j.diagnostics_.insert(j.diagnostics_.end(), warnings.begin(), warnings.end());
   }
-  // A plain program without G20/G21 whose sizes clearly speak the other unit (issue 38 item 8).
-  gcode::Program program = gcode::parse(file.gcode, file.gcodeFirstLine);
-  if (!input.run.powerOnUnits && file.plainGcode)
-    if (std::optional<machine::UnitsReading> read =
-            machine::readPowerOnUnits(program, input.run.dialect, gcode::powerOnUnitsOf(input.run.dialect, {}))) {
-      input.run.powerOnUnits = read->units;
-      j.diagnostics_.push_back(read->note);
-    }
+  // The program's folder is the control's memory: subprograms it calls come from there.
+  // A file's own folder may be "" (a relative name: the current folder); an empty folder given means none.
+  const bool ownFolder = !input.folder && !input.path.empty();
+  const std::string folder =
+      ownFolder ? std::filesystem::path(input.path).parent_path().string() : input.folder.value_or(std::string());
+  const std::optional<bool> givenPoint = input.calculatorInput ? input.calculatorInput : file.header.calculatorInput;
+  if (const Job* same = input.sameText.get();
+      same && readAlike(*same, file, folder, input.run, givenPoint, input.setup))
+    j.reading_ = same->reading_;  // the same blocks: shared, not parsed again
+  else
+    j.reading_ = readProgram(file, folder, ownFolder, input.run, givenPoint, input.setup.machine.calculatorInput);
+  input.sameText.reset();
+  const ProgramReading& read = j.reading_;
+  const gcode::Program& program = *read.program;
+  if (read.unitsRead) input.run.powerOnUnits = read.unitsRead;
+  j.diagnostics_.insert(j.diagnostics_.end(), read.notes.begin(), read.notes.end());
+  j.unreadable_ = std::any_of(j.diagnostics_.begin(), j.diagnostics_.end(),
+                              [](const Diagnostic& d) { return d.range.file == 0 && machine::isUnreadable(d); });
   const machine::RunOptions& run = input.run;
   // The check and the inference read the program as a run in this dialect and these units would;
   // they never touch #500-#999.
@@ -269,25 +321,8 @@ std::shared_ptr<const Job> makeJob(JobInput input) {
   readRun.dialect = run.dialect;
   readRun.powerOnUnits = run.powerOnUnits;
   const gcode::InputUnits powerOn = gcode::powerOnUnitsOf(run.dialect, run.powerOnUnits);
-
-  // The program's folder is the control's memory: subprograms it calls come from there.
-  // A file's own folder may be "" (a relative name: the current folder); an empty folder given means none.
-  const bool ownFolder = !input.folder && !input.path.empty();
-  const std::string folder =
-      ownFolder ? std::filesystem::path(input.path).parent_path().string() : input.folder.value_or(std::string());
-  if (ownFolder || !folder.empty())
-    for (Diagnostic& d : machine::attachSubprogramFiles(program, folder, run.dialect))
-      j.diagnostics_.push_back(std::move(d));
-  dropFilesOutside(program, folder, j.diagnostics_);
-  if (gcode::machineProfile(run.dialect).angleWithoutComma) gcode::readAnglesWithoutComma(program);
-  j.unreadable_ = std::any_of(j.diagnostics_.begin(), j.diagnostics_.end(),
-                              [](const Diagnostic& d) { return d.range.file == 0 && machine::isUnreadable(d); });
-
-  // Lengths without a decimal point, read as the user, the program or the machine says.
+  const machine::PointReading& reading = read.points;
   machine::MachineSetup readSetup = input.setup;
-  machine::PointReading reading = machine::readDecimalPoints(
-      program, file.plainGcode, input.calculatorInput ? input.calculatorInput : file.header.calculatorInput,
-      input.setup.machine.calculatorInput, powerOn, run.dialect);
   readSetup.machine.calculatorInput = reading.calculatorInput;
 
   gcode::CheckOptions check;
@@ -360,7 +395,6 @@ std::shared_ptr<const Job> makeJob(JobInput input) {
       j.diagnostics_.push_back(Diagnostic{Severity::Error, code, SourceRange{h.diameter <= 0 ? 4 : 5, 1, 0}, {}});
   }
   std::stable_sort(j.diagnostics_.begin(), j.diagnostics_.end(), byPlace);
-  j.program_ = std::move(program);
   j.input_ = std::move(input);
   return job;
 }
@@ -373,15 +407,15 @@ std::vector<Diagnostic> Job::programFileDiagnostics() const {
       own.push_back(d);
       continue;
     }
-    if (!isError(d.severity) || !program_ ||
+    if (!isError(d.severity) || !reading_.program ||
         std::find(reported.begin(), reported.end(), d.range.file) != reported.end())
       continue;
     reported.push_back(d.range.file);
     Diagnostic e;
     e.severity = Severity::Error;
     e.code = codes::kSubprogramFileHasErrors;
-    e.range = callInto(*program_, d.range.file);
-    const std::string& path = program_->files[static_cast<std::size_t>(d.range.file)];
+    e.range = callInto(*reading_.program, d.range.file);
+    const std::string& path = reading_.program->files[static_cast<std::size_t>(d.range.file)];
     e.args = {path.substr(path.find_last_of('/') + 1), std::to_string(d.range.line), std::to_string(d.range.column),
               d.code};
     own.push_back(std::move(e));
@@ -391,13 +425,13 @@ std::vector<Diagnostic> Job::programFileDiagnostics() const {
 }
 
 std::string Job::fileOf(const Diagnostic& d) const {
-  return program_ ? machine::diagnosticFile(*program_, d, input_.path) : input_.path;
+  return reading_.program ? machine::diagnosticFile(*reading_.program, d, input_.path) : input_.path;
 }
 
 const machine::Timeline* Job::timeline() const {
   std::call_once(timelineOnce_, [this] {
     std::shared_ptr<const machine::Timeline> record = std::move(record_);
-    if (!program_ || hasErrors()) return;
+    if (!reading_.program || hasErrors()) return;
     logCompute(jobTimelines);
     // #500-#999 are known only now (the CLI reads them after makeJob).
     if (record && persistentAlike(*record, input_.run.persistentVariables, programUsesVariables_)) {
@@ -406,8 +440,8 @@ const machine::Timeline* Job::timeline() const {
       return;
     }
     record.reset();  // one run in memory at a time
-    timeline_ = std::make_shared<const machine::Timeline>(
-        fitGuessedNose(machine::interpret(*program_, tools_.setup, input_.run), *program_, tools_.setup, input_.run));
+    timeline_ = std::make_shared<const machine::Timeline>(fitGuessedNose(
+        machine::interpret(*reading_.program, tools_.setup, input_.run), *reading_.program, tools_.setup, input_.run));
   });
   return timeline_.get();
 }

@@ -269,6 +269,62 @@ TEST(MakeJob, AnErrorInASubprogramFileIsOneE412OnItsCallForTheEditor) {
   EXPECT_EQ(errors[0].args, (std::vector<std::string>{"O1000.nc", "2", "10", "E201"}));
 }
 
+// The GUI's run lends the editor's check its parsed program (issue 42 item 3): a job of the same
+// text, read alike, shares the check's blocks, subprogram files and readings, and runs as a job
+// that parsed the text itself; another text, folder or dialect is parsed anew.
+TEST(MakeJob, TheRunSharesTheChecksProgramWhenItReadsTheSameText) {
+  const machine::testing::ScratchFolder folder{"sametext"};
+  folder.write("O2000.nc", "O2000\nG01 U-4 F0.2\nG00 U4\nW-6\nM99\n");
+  const auto editorJob = [&](const std::string& text, gcode::Dialect dialect, std::shared_ptr<const Job> same) {
+    JobInput input = request("", dialect);
+    io::ProgramFile file;  // a plain program in the editor: lengths without a point, a subprogram file
+    file.plainGcode = true;
+    file.gcodeFirstLine = 1;
+    file.gcode = text;
+    input.file = file;
+    input.folder = folder.path();
+    input.inferTools = same == nullptr;  // the run takes the check's tools as they are
+    if (same) input.setup = same->setup();
+    input.sameText = std::move(same);
+    return makeJob(std::move(input));
+  };
+  const std::string text = "O0001\nG21 G99\nT0101\nG97 S800 M03\nG00 X42 Z2\nM98 P32000\nG00 X100 Z100\nM30\n";
+  const auto check = editorJob(text, gcode::Dialect::Fanuc, nullptr);
+  ASSERT_FALSE(check->hasErrors());
+  ASSERT_EQ(check->program()->files.size(), 2u);  // O2000.nc attached
+  const auto run = editorJob(text, gcode::Dialect::Fanuc, check);
+  EXPECT_EQ(run->program(), check->program());  // the same blocks, not a copy
+  const auto parsed = makeJob([&] {
+    JobInput input = request("", gcode::Dialect::Fanuc);
+    input.file = *check->file();
+    input.folder = folder.path();
+    input.inferTools = false;
+    input.setup = check->setup();
+    return input;
+  }());
+  ASSERT_NE(parsed->program(), check->program());
+  // The subprogram three times (M98 P32000), as a job that parsed the text itself runs it, to the move.
+  ASSERT_TRUE(run->timeline() && parsed->timeline());
+  ASSERT_EQ(run->timeline()->moves.size(), parsed->timeline()->moves.size());
+  for (std::size_t i = 0; i < run->timeline()->moves.size(); ++i) {
+    EXPECT_EQ(run->timeline()->moves[i].path.end, parsed->timeline()->moves[i].path.end) << i;
+    EXPECT_EQ(run->timeline()->moves[i].line, parsed->timeline()->moves[i].line) << i;
+  }
+  EXPECT_EQ(run->diagnostics().size(), parsed->diagnostics().size());
+  // X42 without a point reads as 42 mm in both: the shared reading of the lengths.
+  const auto approach = std::find_if(run->timeline()->moves.rbegin(), run->timeline()->moves.rend(),
+                                     [](const machine::Move& m) { return m.line == 5; });
+  ASSERT_NE(approach, run->timeline()->moves.rend());
+  EXPECT_DOUBLE_EQ(approach->path.end.y(), 21.0);
+  EXPECT_DOUBLE_EQ(approach->path.end.x(), 2.0);
+  // Another text, another dialect: parsed anew, read as that job reads it.
+  const auto edited = editorJob(text + "G00 X50 Z5\n", gcode::Dialect::Fanuc, check);
+  EXPECT_NE(edited->program(), check->program());
+  EXPECT_EQ(edited->program()->blocks.size(), check->program()->blocks.size() + 1);
+  const auto haas = editorJob(text, gcode::Dialect::Haas, check);
+  EXPECT_NE(haas->program(), check->program());
+}
+
 // A guessed nose radius never stops a run the shop's insert would not (issue 38 item 7): a
 // finishing pass under G42 steps up a 1.5 mm shoulder and retracts along +Z, as a Brazilian
 // course program's G70 does. The shipped offset 01 (R0.8, a guess for a plain program) cannot

@@ -25,10 +25,13 @@
 #include "klueng/core/machine/interpreter.h"
 #include "klueng/core/machine/setup_files.h"
 #include "klueng/core/machine/timeline.h"
+#include "klueng/core/infer/point_reading.h"
 #include "klueng/core/infer/tool_inference.h"
 #include "klueng/core/units.h"
 
 namespace klueng::core::job {
+
+class Job;
 
 struct JobInput {
   // The program: `file` when set (the editor's text and header, already in
@@ -78,6 +81,26 @@ struct JobInput {
   // The drawing's roughness marks for W332 (design::finishMarks of the part the program is for);
   // where none lies under a finishing cut, Ra 3.2 um.
   std::vector<cut::FinishMark> finishMarks;
+  // A job made before of the same text (the editor's last check, for the GUI's run): when it
+  // read the text alike (first line, folder, dialect, units, decimal points), its parsed program
+  // is shared, with its subprogram files as that job read them, not parsed a second time
+  // (issue 42 item 3: the window's memory). Otherwise the text is parsed as usual.
+  std::shared_ptr<const Job> sameText;
+};
+
+// The program as a run reads it: parsed once, its subprogram files attached, its power-on
+// units and its lengths without a decimal point read (makeJob); and what it was read with.
+struct ProgramReading {
+  std::shared_ptr<const gcode::Program> program;
+  std::vector<Diagnostic> notes;               // I107, the subprogram files' own diagnostics, F158
+  std::optional<gcode::InputUnits> unitsRead;  // the power-on units its numbers decided (I107)
+  machine::PointReading points;
+  // What decided the reading: the same again reads the same blocks.
+  std::string folder;
+  gcode::Dialect dialect = gcode::Dialect::Fanuc;
+  std::optional<gcode::InputUnits> givenUnits;
+  std::optional<bool> givenPoint;
+  bool machinePoint = false;
 };
 
 class Job {
@@ -86,8 +109,10 @@ class Job {
   const std::string& path() const { return input_.path; }
   // The program file with the resolved stock in its header; nullopt when unreadable.
   const std::optional<io::ProgramFile>& file() const { return file_; }
-  // Subprogram files appended (Program::files); nullopt when unreadable.
-  const std::optional<gcode::Program>& program() const { return program_; }
+  // Subprogram files appended (Program::files); nullptr when unreadable.
+  const gcode::Program* program() const { return reading_.program.get(); }
+  // The program and what it was read with (shared by a later job of the same text, JobInput::sameText).
+  const ProgramReading& reading() const { return reading_; }
   // The setup with the program's tools and its reading of lengths without a point.
   const machine::MachineSetup& setup() const { return tools_.setup; }
   const machine::ToolInference& tools() const { return tools_; }
@@ -123,7 +148,7 @@ class Job {
 
   JobInput input_;
   std::optional<io::ProgramFile> file_;
-  std::optional<gcode::Program> program_;
+  ProgramReading reading_;
   machine::ToolInference tools_;
   std::vector<Diagnostic> diagnostics_;
   std::vector<Diagnostic> stockNotes_;
