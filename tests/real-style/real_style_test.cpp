@@ -1035,6 +1035,24 @@ TEST(RealStyleControlReading, Fanuc_LocalCoordinatesForTheSecondGroove) {
   EXPECT_NEAR(p.rightFace(), 0.0, kMm);
 }
 
+// O1809: G42 on the approach to the cycle's start, G71 and G70 under it, G40 on the way home: a
+// shop habit the 0i-TF runs (A123 had stopped it at the G71). The roughing passes run on the
+// programmed shape (W134), the G70 pass is compensated, so the taper and the chamfer come out as
+// drawn, not fat by the nose radius.
+TEST(RealStyleControlReading, Fanuc_G42BeforeTheRoughingCycle) {
+  const Job job{"fanuc-18-g42-before-g71.nc", "fanuc", "--stock 52x80", false};
+  RUN_CLEAN(job, r);
+  EXPECT_NE(r.simulate.text.find("W134"), std::string::npos) << r.simulate.text;
+  const Profile& p = r.part;
+  EXPECT_NEAR(p.d(-1.0), 22.0, kMm);   // the chamfer X20. Z0 -> X24. Z-2., half way
+  EXPECT_NEAR(p.d(-8.0), 24.0, kMm);   // X24. to Z-15.
+  EXPECT_NEAR(p.d(-20.0), 27.0, kMm);  // the taper X24. Z-15. -> X30. Z-25., half way
+  EXPECT_NEAR(p.d(-30.0), 30.0, kMm);  // X30. to Z-35.
+  EXPECT_NEAR(p.d(-45.0), 40.0, kMm);  // after the R5 to X40., to Z-50.
+  EXPECT_NEAR(p.d(-60.0), 52.0, kMm);  // the bar behind Z-50.
+  EXPECT_NEAR(p.edge(-49.0, -51.0, 46.0), -50.0, kMm);
+}
+
 }  // namespace
 
 // Its scratch folders go with the process: nothing left in /tmp after a run.

@@ -263,6 +263,8 @@ inline constexpr const char* kVacantAddressOmitted = "W130";
 inline constexpr const char* kThreadUnderCssWarning = "W131";    // Fanuc/Haas: threading under G96 runs
 inline constexpr const char* kSpindleClampedToMaximum = "W132";  // {0} S, {1} maximum: Fanuc/Haas clamp (A101 in C)
 inline constexpr const char* kSpindleReversed = "W133";          // {0} the M word: Fanuc/Haas reverse (A105 in C)
+// {0} the cycle's word (G71): Fanuc/Haas run it under G41/G42 (A123 in C)
+inline constexpr const char* kCycleRunsUncompensated = "W134";
 
 // Nose radius compensation (comp; texts in messages_comp.cpp)
 inline constexpr const char* kConcaveArcTooSmall = "A201";

@@ -159,6 +159,14 @@ constexpr MessageText kMachineMessages[] = {
     {codes::kSpindleReversed,
      "{0} reverses the spindle while it turns: the control brakes it and turns it the other way; write M05 first",
      "{0} กลับทิศทางหัวจับขณะที่ยังหมุนอยู่ เครื่องจะหยุดแล้วหมุนกลับทิศ: ควรสั่ง M05 ก่อน"},
+    {codes::kCycleRunsUncompensated,
+     "{0} runs under nose radius compensation (G41/G42): the control offsets the cycle's shape by the nose "
+     "radius; Klueng runs the cycle's own passes on the programmed shape, the tool's imaginary tip on it, and "
+     "compensates again after the cycle, so a roughing pass may differ by up to the nose radius (the finishing "
+     "allowance covers it; G70's pass is compensated)",
+     "{0} ทำงานขณะชดเชยรัศมีปลายมีด (G41/G42): เครื่องจริงจะเลื่อนรูปร่างของไซเคิลออกไปเท่ารัศมีปลายมีด "
+     "แต่ Klueng เดินมีดของไซเคิลตามรูปร่างที่เขียนไว้ โดยใช้ปลายมีดสมมติ แล้วจึงชดเชยต่อหลังจบไซเคิล "
+     "ดังนั้นรอบกลึงหยาบอาจต่างจากเครื่องจริงได้ไม่เกินรัศมีปลายมีด (ค่าเผื่อกลึงละเอียดครอบคลุมส่วนนี้ และรอบ G70 ได้รับการชดเชยตามปกติ)"},
     {codes::kThreadUnderCssWarning,
      "threading under constant surface speed (G96): the rpm is set by the diameter of each pass; write G97 before "
      "threading",

@@ -108,6 +108,12 @@ const Key kKeys[] = {
      {},
      KLUENG_SET(KLUENG_P.spindleAboveMaximumIsAlarm = v.number != 0.0)},
     {"spindle_reversal_is_alarm", Type::Flag, 0, 0, {}, KLUENG_SET(KLUENG_P.spindleReversalIsAlarm = v.number != 0.0)},
+    {"cycle_under_compensation_is_alarm",
+     Type::Flag,
+     0,
+     0,
+     {},
+     KLUENG_SET(KLUENG_P.cycleUnderCompensationIsAlarm = v.number != 0.0)},
     {"m_codes", Type::Numbers, 0, 99, {}, KLUENG_SET(m.mCodes = v.numbers)},
     {"error_codes_as_warnings", Type::Numbers, 101, 499, {}, KLUENG_SET(m.errorsAsWarnings = v.numbers)},
     // Cycle defaults.
@@ -170,7 +176,8 @@ bool optionalKey(std::string_view name) {
   return name == "m_codes" || name == "semicolon_ends_block" || name == "comment_ends_at_first_paren" ||
          name == "angle_without_comma" || name == "same_group_last_wins" || name == "spindle_above_maximum_is_alarm" ||
          name == "spindle_reversal_is_alarm" || name == "program_number_zero_is_error" ||
-         name == "stop_codes_alone_is_error" || name == "error_codes_as_warnings" || name == "corner_r_without_comma";
+         name == "stop_codes_alone_is_error" || name == "error_codes_as_warnings" || name == "corner_r_without_comma" ||
+         name == "cycle_under_compensation_is_alarm";
 }
 
 std::string_view trim(std::string_view s) {

@@ -7,9 +7,26 @@
 
 namespace klueng::core::machine::detail {
 
+// A cycle under G41/G42: an alarm where the machine file says so (A123, the 1999 rules); on a Fanuc
+// or Haas it runs (no manual found says it stops), with W134 once a run (docs/dialects.md §10).
 bool Interpreter::compensationAllowed(const Word* g) {
   if (modal_.noseComp == NoseCompMode::Off) return true;
-  return raise(codes::kCycleUnderNoseComp, g, {wordText(*g)});
+  if (profile_.cycleUnderCompensationIsAlarm) return raise(codes::kCycleUnderNoseComp, g, {wordText(*g)});
+  if (!cycleCompWarned_) flow_.notice(Severity::Warning, codes::kCycleRunsUncompensated, g->range, {wordText(*g)});
+  cycleCompWarned_ = true;
+  return true;
+}
+
+// The cycle's own passes on the programmed shape: the compensation stage cancels on the cycle's
+// first move and starts again on the first move after it, as a G40 before and a G41/G42 after
+// the cycle would.
+bool Interpreter::emitUncompensated(const std::vector<cycles::Step>& steps, const Word* g, const std::string& name) {
+  const NoseCompMode held = modal_.noseComp;
+  if (held == NoseCompMode::Off) return emitCycle(steps, g, name);
+  sink_->compensation(NoseCompMode::Off, mach_.noseRadius, mach_.tip);
+  const bool done = emitCycle(steps, g, name);
+  if (modal_.noseComp == held) sink_->compensation(held, mach_.noseRadius, mach_.tip);
+  return done;
 }
 
 bool Interpreter::singleCycle(const Word* where, bool fresh) {
@@ -28,8 +45,8 @@ bool Interpreter::singleCycle(const Word* where, bool fresh) {
   if (const Word* w = find('W')) target.x() = zOf(pos_) + w->value * u;
   if (const Word* r = find('R')) singleTaper_ = r->value * u;  // G90/G92: radius; G94: Z
   singleTarget_ = target;
-  return emitCycle(cycles::singleCycle(singleCycle_->action, pos_, target, singleTaper_, modal_.feed), where,
-                   fmt::format("G{}", singleCycle_->number));
+  return emitUncompensated(cycles::singleCycle(singleCycle_->action, pos_, target, singleTaper_, modal_.feed), where,
+                           fmt::format("G{}", singleCycle_->number));
 }
 
 cycles::CycleInput Interpreter::cycleInput(const Word* g) const {
@@ -72,7 +89,9 @@ bool Interpreter::cannedCycle(const CodeWord& c) {
   cycles::Expansion e = profile_.cycleForm == gcode::CycleForm::OneBlock ? cycles::expandOneBlock(*c.info, in)
                                                                          : cycles::expand(*c.info, in, cycleMemory_);
   if (e.alarm) return cycleAlarm(*e.alarm);
-  if (!emitCycle(e.steps, c.word, wordText(*c.word))) return false;
+  const bool emitted = a == CodeAction::Finishing ? emitCycle(e.steps, c.word, wordText(*c.word))
+                                                  : emitUncompensated(e.steps, c.word, wordText(*c.word));
+  if (!emitted) return false;
   resumeAfter_ = e.resumeAfter;
   return true;
 }
@@ -84,7 +103,7 @@ bool Interpreter::drillingCycle(const CodeInfo& g, const Word* where, bool fresh
   const cycles::CycleInput in = cycleInput(where);
   if (auto a = cycles::readDrillWords(g, in, fresh, drill_)) return cycleAlarm(*a);
   drillCycle_ = &g;
-  return emitCycle(cycles::drill(drill_, pos_), where, fmt::format("G{}", g.number));
+  return emitUncompensated(cycles::drill(drill_, pos_), where, fmt::format("G{}", g.number));
 }
 
 bool Interpreter::cycleReady(const std::vector<cycles::Step>& steps, const Word* g, const std::string& name) {

@@ -221,6 +221,7 @@ class Interpreter final : public gcode::MacroVariables, private BlockEffects {
   bool threadCssWarned_ = false;
   bool spindleClampWarned_ = false;  // W132 once a run
   bool reversalWarned_ = false;      // W133 once a run
+  bool cycleCompWarned_ = false;     // W134 once a run
   // S above the machine's maximum under G97: an alarm, or the speed the control clamps it to.
   std::optional<double> allowedRpm(const Word& s);
 
@@ -260,6 +261,7 @@ class Interpreter final : public gcode::MacroVariables, private BlockEffects {
   bool cycleAlarm(const cycles::CycleAlarm& a);
   bool cycleReady(const std::vector<cycles::Step>& steps, const Word* g, const std::string& name);
   bool emitCycle(const std::vector<cycles::Step>& steps, const Word* g, const std::string& name);
+  bool emitUncompensated(const std::vector<cycles::Step>& steps, const Word* g, const std::string& name);
 
   // ---- interpreter_profile.cpp (G70-G73 read N(P)..N(Q) by running them) ---------
   std::optional<cycles::CycleAlarm> readProfile(const gcode::Block& cycle, const Word* g, bool withFeed,

@@ -98,7 +98,7 @@ INSTANTIATE_TEST_SUITE_P(
                   "G71 P10 Q20 F100.\nN10\nG00 X30.\nN20 G01 Z-20.\n",
                   F, "A153", 5, 1, 3},
         AlarmCase{"CycleDepthZero", "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U0 R0.5\n", F, "A122", 3, 5, 2},
-        AlarmCase{"CycleUnderNoseComp", "G98 G97 S500 M03 T0101\nG42 G00 X50. Z2.\nG71 U2. R0.5\n", F, "A123", 3, 1, 2},
+        AlarmCase{"CycleUnderNoseComp", "G98 G97 S500 M03 T0101\nG42 G00 X50. Z2.\nG71 U2. R0.5\n", C, "A123", 3, 1, 2},
         // A first block that moves along Z without naming X is neither type I nor II.
         AlarmCase{"CycleProfileFirstBlockAlongZ",
                   "G98 G97 S500 M03\nG00 X50. Z2.\nG71 U2. R0.5\n"

@@ -364,11 +364,76 @@ TEST(StockRemoval, FSAndTInTheProfileApplyUnderG70Only) {
   EXPECT_TRUE(sawFeed80);
 }
 
-TEST(StockRemoval, G71UnderG42RaisesA123) {
-  const CycleRun t("G98 G97 S500 M03 T0101\nG42 G00 X50. Z2.\nG71 U2. R0.5\n");
+TEST(StockRemoval, G71UnderG42RaisesA123InTheClassicRules) {
+  RunOptions classic;
+  classic.dialect = gcode::Dialect::Classic;
+  const Timeline t = runText("G98 G97 S500 M03 T0101\nG42 G00 X50. Z2.\nG71 U2. R0.5\n", classic);
   ASSERT_TRUE(t.alarm);
   EXPECT_EQ(t.alarm->code, "A123");
   EXPECT_EQ(t.alarm->range.line, 3);
+}
+
+// G42 written before G71 and cancelled after G70, as many shops write it: a Fanuc runs it (no
+// manual found says it stops). The roughing passes run on the programmed shape (W134, once), the
+// G70 pass is compensated, and the run goes on to its end.
+TEST(StockRemoval, G71UnderG42RunsOnAFanucWithOneWarning) {
+  const std::string text =
+      "G21 G99\n"                      // 1
+      "T0101\n"                        // 2  offset 01: R0.8, tip 3
+      "G97 S1000 M03\n"                // 3
+      "G00 G42 X50. Z2.\n"             // 4
+      "G71 U2. R0.5\n"                 // 5
+      "G71 P10 Q20 U0.4 W0.1 F0.25\n"  // 6
+      "N10 G00 X30.\n"                 // 7
+      "G01 Z-20. F0.1\n"               // 8
+      "X40. Z-25.\n"                   // 9
+      "N20 X50.\n"                     // 10
+      "G70 P10 Q20\n"                  // 11
+      "G40 G00 X100. Z50.\n"           // 12
+      "G00 G42 X50. Z-30.\n"           // 13  a single cycle under G42 too
+      "G90 X46. Z-40. F0.2\n"          // 14
+      "G40 G00 X100. Z50.\n"           // 15
+      "M30\n";                         // 16
+  const Timeline t = runText(text);
+  EXPECT_FALSE(t.alarm) << t.alarm->code;
+  std::vector<const Diagnostic*> w134;
+  for (const Diagnostic& d : t.flow.notices)
+    if (d.code == "W134") w134.push_back(&d);
+  ASSERT_EQ(w134.size(), 1u);
+  EXPECT_EQ(w134[0]->range.line, 5);
+  EXPECT_EQ(w134[0]->args, (std::vector<std::string>{"G71"}));
+  // The roughing passes: the last one along the shape plus U0.4, uncompensated, down to Z-20 + W0.1.
+  double smallest = 1e9;
+  for (const Move& m : t.moves)
+    if (m.line == 6 && m.kind == MoveKind::Line) {
+      EXPECT_FALSE(m.compensated);
+      smallest = std::min(smallest, 2.0 * std::min(xOf(m.path.start), xOf(m.path.end)));
+    }
+  EXPECT_NEAR(smallest, 30.4, 1e-9);
+  // G70's pass (its moves carry its line) is compensated: along Z at X30 (tip 3 on a Z-parallel line:
+  // the imaginary tip stays on the line) to the taper's start, Z-20.
+  bool finished = false;
+  for (const Move& m : t.moves)
+    if (m.line == 11 && m.kind == MoveKind::Line) {
+      EXPECT_TRUE(m.compensated);
+      if (std::abs(zOf(m.path.end) - zOf(m.path.start)) > 10.0) {
+        EXPECT_NEAR(2.0 * xOf(m.path.start), 30.0, 1e-9);
+        EXPECT_NEAR(2.0 * xOf(m.path.end), 30.0, 1e-9);
+        finished = true;
+      }
+    }
+  EXPECT_TRUE(finished);
+  // The G90 under G42 runs too: its cut along Z at X46 to Z-40, not compensated; no second W134.
+  bool turned = false;
+  for (const Move& m : t.moves)
+    if (m.line == 14 && m.kind == MoveKind::Line && std::abs(zOf(m.path.end) + 40.0) < 1e-9 &&
+        std::abs(xOf(m.path.end) - xOf(m.path.start)) < 1e-9) {
+      EXPECT_FALSE(m.compensated);
+      EXPECT_NEAR(2.0 * xOf(m.path.end), 46.0, 1e-9);
+      turned = true;
+    }
+  EXPECT_TRUE(turned);
+  EXPECT_EQ(t.snapshots.back().line, 16);  // to the end
 }
 
 TEST(StockRemoval, G71WithAMissingProfileRaisesA120AtP) {

@@ -172,6 +172,9 @@ struct MachineProfile {
   // with a warning (a Fanuc or Haas clamps it); M03 <-> M04 without M05: an alarm, or reversed.
   bool spindleAboveMaximumIsAlarm = true;
   bool spindleReversalIsAlarm = true;
+  // A canned cycle (G71-G76, G90/G92/G94) under G41/G42: an alarm (A123, the 1999 trainer), or run
+  // with its passes uncompensated and a warning (W134), as no Fanuc or Haas source says it stops.
+  bool cycleUnderCompensationIsAlarm = true;
   CycleSettings cycles;  // defaults of the cycles (one-block forms, drilling)
   FlowSettings flow;
   // The M codes the machine accepts, from its family's rows; empty = all of them.
