@@ -638,7 +638,8 @@ Timeline interpret(const gcode::Program& program, const MachineSetup& setup, con
   }
   auto builder = makeTimelineBuilder(
       timeline, TimingConfig{setup.machine.rapidX, setup.machine.rapidZ, setup.machine.accelX, setup.machine.accelZ},
-      TimelineLimits{options.blockMarksOnly, options.blockMarksOnly && options.recordSpeeds, options.memoryBudgetMb << 20});
+      TimelineLimits{options.blockMarksOnly, options.blockMarksOnly && options.recordSpeeds,
+                     options.memoryBudgetMb << 20});
   std::unique_ptr<MachineSink> compensation;
   if (options.noseCompensation) compensation = makeCompensationStage(*builder);
   MachineSink& chain = compensation ? *compensation : *builder;

@@ -170,7 +170,6 @@ TEST(RunMemory, ARecordOfMarksKeepsWhatTheSnapshotsSay) {
   EXPECT_EQ(a.blockCount(), b.blockCount());
 }
 
-
 bool sameBits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
 bool sameBits(const Vec2& a, const Vec2& b) { return sameBits(a.x(), b.x()) && sameBits(a.y(), b.y()); }
 

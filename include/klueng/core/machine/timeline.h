@@ -100,14 +100,9 @@ struct RecordMove {
   SpindleDir spindle = SpindleDir::Stopped;
 
   static RecordMove of(const Move& m) {
-    return {m.path,
-            m.line,
-            m.blockIndex,
-            m.file,
-            static_cast<std::int16_t>(m.tool),
-            static_cast<std::int16_t>(m.offset),
-            m.kind,
-            m.spindle};
+    return {
+        m.path, m.line,   m.blockIndex, m.file, static_cast<std::int16_t>(m.tool), static_cast<std::int16_t>(m.offset),
+        m.kind, m.spindle};
   }
   Move move() const {
     Move m;
