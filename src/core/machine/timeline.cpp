@@ -2,8 +2,6 @@
 #include "klueng/core/machine/program_units.h"
 
 #include <algorithm>
-#include <bit>
-#include <cstdint>
 #include <cmath>
 
 namespace klueng::core::machine {
@@ -62,39 +60,6 @@ int Timeline::moveAt(double t) const {
   auto it = std::upper_bound(moves.begin(), moves.end(), t, [](double time, const Move& m) { return time < m.tEnd; });
   if (it == moves.end()) return static_cast<int>(moves.size()) - 1;
   return static_cast<int>(it - moves.begin());
-}
-
-namespace {
-
-bool sameBits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
-
-}  // namespace
-
-void RecordMoveList::push_back(const RecordMove& m) {
-  Packed p;
-  p.endZ = m.path.end.x();
-  p.endX = m.path.end.y();
-  p.line = m.line;
-  p.blockIndex = m.blockIndex;
-  p.file = m.file;
-  p.tool = m.tool;
-  p.offset = m.offset;
-  p.kind = m.kind;
-  p.spindle = m.spindle;
-  const std::size_t i = moves_.size();
-  const Vec2& start = m.path.start;
-  if (i == 0 || !sameBits(start.x(), moves_.back().endZ) || !sameBits(start.y(), moves_.back().endX)) {
-    p.flags |= kOwnStart;
-    starts_.push_back({i, start.x(), start.y()});
-  }
-  const Vec2& centre = m.path.centre;
-  if (!sameBits(centre.x(), 0.0) || !sameBits(centre.y(), 0.0)) {
-    p.flags |= kCentre;
-    centres_.push_back({i, centre.x(), centre.y()});
-  }
-  if (m.path.kind == Segment::Kind::Arc) p.flags |= kArc;
-  if (m.path.ccw) p.flags |= kCcw;
-  moves_.push_back(p);
 }
 
 RecordMove RecordMoveList::unpack(std::size_t i, const Point* start, const Point* centre) const {

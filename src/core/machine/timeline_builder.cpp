@@ -121,7 +121,7 @@ class TimelineBuilder final : public MachineSink {
   // A record of marks keeps what the evidence reads of a move; a timeline keeps it whole.
   void keep(const Move& mv) {
     if (limits_.blockMarksOnly) {
-      out_.recordMoves.push_back(RecordMove::of(mv));
+      out_.recordMoves.push_back(mv);
       if (limits_.recordSpeeds) out_.recordSpeeds.push_back(MoveSpeeds::of(mv));
     } else {
       out_.moves.push_back(mv);
@@ -196,13 +196,16 @@ class TimelineBuilder final : public MachineSink {
       for (; seen > 0 && seen < list.capacity(); seen *= 2) outgrown_ += seen * size;
       seen = list.capacity();
     };
-    add(out_.moves);
-    add(out_.snapshots);
-    add(out_.marks);
-    add(out_.recordMoves.packed());
-    add(out_.recordMoves.starts());
-    add(out_.recordMoves.centres());
-    add(out_.recordSpeeds);
+    if (limits_.blockMarksOnly) {  // (the lists of the other kind stay empty)
+      add(out_.marks);
+      add(out_.recordMoves.packed());
+      add(out_.recordMoves.starts());
+      add(out_.recordMoves.centres());
+      add(out_.recordSpeeds);
+    } else {
+      add(out_.moves);
+      add(out_.snapshots);
+    }
     add(out_.flow.writes);
     add(out_.flow.wordValues);
     return held + copies + outgrown_;

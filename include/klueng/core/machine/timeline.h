@@ -1,4 +1,5 @@
 #pragma once
+#include <bit>
 #include <cstdint>
 // The result of interpreting a program: every move with exact times, and the
 // state after every block. Consumers: the cut simulator, trace/CSV writer,
@@ -146,7 +147,9 @@ class RecordMoveList {
   std::size_t size() const { return moves_.size(); }
   bool empty() const { return moves_.empty(); }
   void reserve(std::size_t n) { moves_.reserve(n); }
-  void push_back(const RecordMove& m);
+  // (Inline: the timeline builder packs every move of the check's record straight from its Move.)
+  void push_back(const RecordMove& m) { pack(m); }
+  void push_back(const Move& m) { pack(m); }
   RecordMove operator[](std::size_t i) const;
 
   class const_iterator {
@@ -171,6 +174,36 @@ class RecordMoveList {
   const std::vector<Point>& centres() const { return centres_; }
 
  private:
+  static bool sameBits(double a, double b) {
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+  }
+  template <typename M>  // a Move or a RecordMove: the same names
+  void pack(const M& m) {
+    Packed p;
+    p.endZ = m.path.end.x();
+    p.endX = m.path.end.y();
+    p.line = m.line;
+    p.blockIndex = m.blockIndex;
+    p.file = m.file;
+    p.tool = static_cast<std::int16_t>(m.tool);
+    p.offset = static_cast<std::int16_t>(m.offset);
+    p.kind = m.kind;
+    p.spindle = m.spindle;
+    const std::size_t i = moves_.size();
+    const Vec2& start = m.path.start;
+    if (i == 0 || !sameBits(start.x(), moves_.back().endZ) || !sameBits(start.y(), moves_.back().endX)) {
+      p.flags |= kOwnStart;
+      starts_.push_back({i, start.x(), start.y()});
+    }
+    const Vec2& centre = m.path.centre;
+    if (!sameBits(centre.x(), 0.0) || !sameBits(centre.y(), 0.0)) {
+      p.flags |= kCentre;
+      centres_.push_back({i, centre.x(), centre.y()});
+    }
+    if (m.path.kind == Segment::Kind::Arc) p.flags |= kArc;
+    if (m.path.ccw) p.flags |= kCcw;
+    moves_.push_back(p);
+  }
   RecordMove unpack(std::size_t i, const Point* start, const Point* centre) const;
   std::vector<Packed> moves_;
   std::vector<Point> starts_;
