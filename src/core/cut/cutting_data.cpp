@@ -572,26 +572,42 @@ CuttingData measureCuts(const machine::Timeline& timeline, const CutSetup& setup
 }
 
 std::size_t movesBeforeAlarm(const machine::Timeline& record) {
-  if (!record.alarm) return record.moves.size();
+  if (!record.alarm) return record.moveCount();
   const SourceRange& at = record.alarm->range;
   std::size_t before = 0;
-  for (const machine::StateSnapshot& s : record.snapshots) {
+  for (std::size_t k = 0; k < record.blockCount(); ++k) {
+    const machine::BlockMark s = record.blockMark(k);
     if (s.file == at.file && s.line == at.line) return before;
     before = static_cast<std::size_t>(s.moveEnd);
   }
-  return record.moves.size();
+  return record.moveCount();
 }
 
 std::vector<Diagnostic> checkCuttingData(const machine::Timeline& record, const io::JobHeader& header,
                                          const machine::MachineSetup& setup, DisplayUnits units,
                                          std::vector<FinishMark> finishMarks) {
-  if (header.diameter <= 0.0 || header.length <= 0.0 || record.moves.empty()) return {};
+  if (header.diameter <= 0.0 || header.length <= 0.0 || record.moveCount() == 0) return {};
+  // A record of marks keeps its moves' feeds and speeds only when asked (RunOptions::recordSpeeds).
+  if (record.moves.empty() && record.recordSpeeds.size() != record.recordMoves.size()) return {};
   CuttingDataOptions options = cuttingDataOptions(header.material, setup.tools, setup.machine, shippedMaterials());
   options.units = units;
   options.finishMarks = std::move(finishMarks);
   options.warningsOnly = true;
   options.moveEnd = movesBeforeAlarm(record);
-  return measureCuts(record, CutSetup::from(header, setup), options).warnings;
+  const CutSetup cutSetup = CutSetup::from(header, setup);
+  if (!record.moves.empty()) return measureCuts(record, cutSetup, options).warnings;
+  // A record of marks: its moves made whole again, as far as a warning could come (a sound program
+  // none), for the cut that measures them (the record's moves are what the run's would be but for
+  // the call level, program, nose centre and compensation, which neither reads).
+  const CdCandidates candidates(cutSetup, options);
+  std::size_t measured = std::min(options.moveEnd, record.recordMoves.size());
+  while (measured > 0 && !candidates.couldWarn(record.recordedMove(measured - 1))) --measured;
+  if (measured == 0) return {};
+  machine::Timeline moves;
+  moves.moves.reserve(measured);
+  for (std::size_t i = 0; i < measured; ++i) moves.moves.push_back(record.recordedMove(i));
+  options.moveEnd = measured;
+  return measureCuts(moves, cutSetup, options).warnings;
 }
 
 std::optional<SurfaceFinish> surfaceFinishOf(const CuttingData& data, const Stock& stock, const PartFeature& f) {

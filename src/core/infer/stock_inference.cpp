@@ -323,7 +323,12 @@ StockInference inferStock(const gcode::Program& program, const Timeline& run, co
   if (setup.machine.toolsBeyondCentre || sideOfCuts(run) == CutSide::Beyond) {
     mirrored = run;
     for (Move& m : mirrored->moves) m = mirroredAcrossCentre(m);
-    for (RecordMove& m : mirrored->recordMoves) m = RecordMove::of(mirroredAcrossCentre(m.move()));
+    if (!run.recordMoves.empty()) {
+      mirrored->recordMoves = RecordMoveList();
+      mirrored->recordMoves.reserve(run.recordMoves.size());
+      for (const RecordMove& m : run.recordMoves)
+        mirrored->recordMoves.push_back(RecordMove::of(mirroredAcrossCentre(m.move())));
+    }
   }
   const Timeline& tl = mirrored ? *mirrored : run;
   if (tl.moves.empty() && !tl.recordMoves.empty()) return inferFromMoves(program, tl, tl.recordMoves, setup, inference);

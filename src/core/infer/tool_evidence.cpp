@@ -63,7 +63,8 @@ int motionCode(MotionMode mode, gcode::Dialect dialect) {
 struct Ends {
   Vec2 start, end;
 };
-Ends endsOf(const Move& m, bool mirror) {
+template <typename M>  // a Move or a RecordMove
+Ends endsOf(const M& m, bool mirror) {
   if (!mirror) return {m.path.start, m.path.end};
   return {Vec2(m.path.start.x(), -m.path.start.y()), Vec2(m.path.end.x(), -m.path.end.y())};
 }
@@ -73,8 +74,9 @@ Ends endsOf(const Move& m, bool mirror) {
 class MotionRecorder {
  public:
   explicit MotionRecorder(bool mirror) : mirror_(mirror) {}
-  void add(std::span<const Move> moves) {
-    for (const Move& m : moves) addMove(m);
+  template <typename M>
+  void add(std::span<const M> moves) {
+    for (const M& m : moves) addMove(m);
   }
   const std::map<int, MotionUse>& uses() const { return uses_; }
 
@@ -98,7 +100,8 @@ class MotionRecorder {
   // from a bore (an outside tool never feeds out into the wall and drops back in).
   Pending outward;
 
-  void addMove(const Move& m) {
+  template <typename M>
+  void addMove(const M& m) {
     if (m.tool < 1 || m.kind == MoveKind::Dwell) return;
     const Ends p = endsOf(m, mirror_);
     const Vec2 d = p.end - p.start;  // (z, x radius)
@@ -157,7 +160,10 @@ class MotionRecorder {
   }
 };
 
-bool isFeed(const Move& m) { return m.kind != MoveKind::Rapid && m.kind != MoveKind::Dwell; }
+template <typename M>
+bool isFeed(const M& m) {
+  return m.kind != MoveKind::Rapid && m.kind != MoveKind::Dwell;
+}
 
 // The cycle a block runs, or its motion code: what its G words do in the dialect.
 struct BlockCodes {
@@ -203,22 +209,32 @@ class Gatherer {
   void gather(const Timeline& run) {
     markBlockLines();
     readToolList();
+    // The run's own moves where they lie, or a record's unpacked a block's at a time.
+    if (!run.moves.empty() || run.recordMoves.empty()) {
+      const std::span<const Move> all(run.moves);
+      gatherMoves(run, all.size(), [&](std::size_t from, std::size_t to) { return all.subspan(from, to - from); });
+      return;
+    }
+    std::vector<RecordMove> scratch;
+    auto next = run.recordMoves.begin();  // the record read once, in order
+    gatherMoves(run, run.recordMoves.size(), [&](std::size_t from, std::size_t to) {
+      scratch.clear();
+      for (std::size_t i = from; i < to; ++i, ++next) scratch.push_back(*next);
+      return std::span<const RecordMove>(scratch);
+    });
+  }
+
+ private:
+  // movesOf(from, to): the moves [from, to) as a span, asked for in order.
+  template <typename MovesOf>
+  void gatherMoves(const Timeline& run, std::size_t moveCount, MovesOf movesOf) {
     MotionRecorder motion(out_.beyondCentre);
     std::size_t begin = 0;
-    const std::size_t moveCount = run.moveCount();
-    // A block's moves, whole: the run's own, or a record's read back into a scratch list.
-    std::vector<Move> scratch;
-    const auto movesOf = [&](std::size_t from, std::size_t to) -> std::span<const Move> {
-      if (!run.moves.empty()) return {run.moves.data() + from, to - from};
-      scratch.clear();
-      for (std::size_t i = from; i < to; ++i) scratch.push_back(run.recordMoves[i].move());
-      return {scratch.data(), scratch.size()};
-    };
     for (std::size_t k = 0; k < run.blockCount(); ++k) {
       const BlockMark s = run.blockMark(k);
       const std::size_t end =
           std::clamp<std::size_t>(static_cast<std::size_t>(std::max(s.moveEnd, 0)), begin, moveCount);
-      const std::span<const Move> moves = movesOf(begin, end);
+      const auto moves = movesOf(begin, end);
       begin = end;
       motion.add(moves);  // every move once, in run order
       if (s.blockIndex < 0 || static_cast<std::size_t>(s.blockIndex) >= program_.blocks.size()) continue;
@@ -238,7 +254,6 @@ class Gatherer {
       if (const auto it = motion.uses().find(station); it != motion.uses().end()) use.motion = it->second;
   }
 
- private:
   const gcode::Program& program_;
   ProgramEvidence& out_;
   gcode::Dialect dialect_;
@@ -378,12 +393,13 @@ class Gatherer {
   }
 
   // What one executed block of the station shows: its cycle, or its feeds.
-  void block(const gcode::Block& b, std::span<const Move> moves, int station, int motionCode) {
-    const bool feeds = std::any_of(moves.begin(), moves.end(), [](const Move& m) { return isFeed(m); });
+  template <typename M>
+  void block(const gcode::Block& b, std::span<const M> moves, int station, int motionCode) {
+    const bool feeds = std::any_of(moves.begin(), moves.end(), [](const M& m) { return isFeed(m); });
     if (!feeds) return;  // a rapid, a selection, the first block of a two-block cycle
     double deepestZ = 0.0, smallestX = 1e300;
     bool offCentre = false, threads = false;
-    for (const Move& m : moves) {
+    for (const M& m : moves) {
       if (!isFeed(m)) continue;
       const Ends p = endsOf(m, out_.beyondCentre);
       deepestZ = std::min({deepestZ, p.start.x(), p.end.x()});
@@ -444,7 +460,7 @@ class Gatherer {
       default: break;
     }
     // Plain feeds (G01, G02, G03 and whatever a macro or a subprogram moves).
-    for (const Move& m : moves) {
+    for (const M& m : moves) {
       if (!isFeed(m)) continue;
       const Ends p = endsOf(m, out_.beyondCentre);
       const double dz = p.end.x() - p.start.x();

@@ -32,8 +32,9 @@ namespace klueng::core::job {
 namespace {
 
 // The check measures the cutting data (issue 39) on the run it records for the tools, which
-// then keeps its whole moves. A program longer than this (a CAM job of millions of blocks) keeps
-// a mark a block instead (issue 42 item 3): its cutting data comes from simulate.
+// then keeps each move's feeds and speeds beside its marks (RunOptions::recordSpeeds). A program
+// longer than this (a CAM job of millions of blocks) keeps the marks alone (issue 42 item 3): its
+// cutting data comes from simulate.
 constexpr std::size_t kCuttingDataCheckBlocks = 200'000;
 bool measuresCuttingData(const JobInput& input, const gcode::Program& program) {
   return input.cuttingData && program.blocks.size() <= kCuttingDataCheckBlocks;
@@ -339,8 +340,10 @@ std::shared_ptr<const Job> makeJob(JobInput input) {
     context.fromProgram = file.plainGcode;
     context.run = readRun;
     // No run follows (the check, the editor's): the record keeps a mark a block, not its state,
-    // unless the cutting data is measured on it (its feeds and speeds are in the whole moves).
-    context.run.blockMarksOnly = !input.timelineNext && !measuresCuttingData(input, program);
+    // and the moves as the evidence reads them, with their feeds and speeds when the cutting
+    // data is measured on it.
+    context.run.blockMarksOnly = !input.timelineNext;
+    context.run.recordSpeeds = measuresCuttingData(input, program);
     context.toolsBeyondCentre = file.header.toolsBeyondCentre;
     machine::detail::CheckedWithTools checked = machine::detail::checkWhileInferring(program, check, [&] {
       return machine::inferTools(program, file.gcode, file.gcodeFirstLine, readSetup, io::shippedToolLibrary(),
@@ -372,8 +375,7 @@ std::shared_ptr<const Job> makeJob(JobInput input) {
   j.units_ = gcode::programInputUnits(program, powerOn, run.dialect) == gcode::InputUnits::Inch ? DisplayUnits::Inch
                                                                                                 : DisplayUnits::Mm;
   // What a teacher would say about the speeds, feeds and depths (issue 39), from the same record.
-  if (measuresCuttingData(input, program) && j.tools_.record && j.tools_.record->marks.empty() &&
-      !core::hasErrors(j.diagnostics_))
+  if (measuresCuttingData(input, program) && j.tools_.record && !core::hasErrors(j.diagnostics_))
     for (Diagnostic& w :
          cut::checkCuttingData(*j.tools_.record, file.header, j.tools_.setup, j.units_, input.finishMarks))
       j.diagnostics_.push_back(std::move(w));

@@ -630,6 +630,7 @@ Timeline interpret(const gcode::Program& program, const MachineSetup& setup, con
   const std::size_t blocks = program.blocks.size();
   if (options.blockMarksOnly) {
     timeline.recordMoves.reserve(blocks + blocks / 2);
+    if (options.recordSpeeds) timeline.recordSpeeds.reserve(blocks + blocks / 2);
     timeline.marks.reserve(blocks);
   } else {
     timeline.moves.reserve(blocks + blocks / 2);
@@ -637,7 +638,8 @@ Timeline interpret(const gcode::Program& program, const MachineSetup& setup, con
   }
   auto builder = makeTimelineBuilder(
       timeline, TimingConfig{setup.machine.rapidX, setup.machine.rapidZ, setup.machine.accelX, setup.machine.accelZ},
-      TimelineLimits{options.blockMarksOnly, options.memoryBudgetMb << 20});
+      TimelineLimits{options.blockMarksOnly, options.blockMarksOnly && options.recordSpeeds,
+                     options.memoryBudgetMb << 20});
   std::unique_ptr<MachineSink> compensation;
   if (options.noseCompensation) compensation = makeCompensationStage(*builder);
   MachineSink& chain = compensation ? *compensation : *builder;

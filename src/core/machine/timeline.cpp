@@ -62,6 +62,63 @@ int Timeline::moveAt(double t) const {
   return static_cast<int>(it - moves.begin());
 }
 
+RecordMove RecordMoveList::unpack(std::size_t i, const Point* start, const Point* centre) const {
+  const Packed& p = moves_[i];
+  RecordMove m;
+  m.path.start = start ? Vec2(start->z, start->x) : Vec2(moves_[i - 1].endZ, moves_[i - 1].endX);
+  m.path.end = Vec2(p.endZ, p.endX);
+  m.path.centre = centre ? Vec2(centre->z, centre->x) : Vec2(0.0, 0.0);
+  m.path.kind = (p.flags & kArc) ? Segment::Kind::Arc : Segment::Kind::Line;
+  m.path.ccw = (p.flags & kCcw) != 0;
+  m.line = p.line;
+  m.blockIndex = p.blockIndex;
+  m.file = p.file;
+  m.tool = p.tool;
+  m.offset = p.offset;
+  m.kind = p.kind;
+  m.spindle = p.spindle;
+  return m;
+}
+
+RecordMove RecordMoveList::operator[](std::size_t i) const {
+  const auto of = [i](const std::vector<Point>& list) {
+    return &*std::lower_bound(list.begin(), list.end(), i, [](const Point& p, std::size_t k) { return p.move < k; });
+  };
+  const std::uint8_t flags = moves_[i].flags;
+  return unpack(i, (flags & kOwnStart) ? of(starts_) : nullptr, (flags & kCentre) ? of(centres_) : nullptr);
+}
+
+RecordMove RecordMoveList::const_iterator::operator*() const {
+  const std::uint8_t flags = list_->moves_[i_].flags;
+  return list_->unpack(i_, (flags & kOwnStart) ? &list_->starts_[start_] : nullptr,
+                       (flags & kCentre) ? &list_->centres_[centre_] : nullptr);
+}
+
+RecordMoveList::const_iterator& RecordMoveList::const_iterator::operator++() {
+  const std::uint8_t flags = list_->moves_[i_].flags;
+  if (flags & kOwnStart) ++start_;
+  if (flags & kCentre) ++centre_;
+  ++i_;
+  return *this;
+}
+
+Move Timeline::recordedMove(std::size_t i) const {
+  if (!moves.empty()) return moves[i];
+  Move m = recordMoves[i].move();
+  if (i < recordSpeeds.size()) {
+    const MoveSpeeds& s = recordSpeeds[i];
+    m.tStart = i > 0 ? recordSpeeds[i - 1].tEnd : 0.0;
+    m.tEnd = s.tEnd;
+    m.feed = s.feed;
+    m.rpm = s.rpm;
+    m.rpmEnd = s.rpmEnd;
+    m.lead = s.lead;
+    m.rampUp = s.rampUp;
+    m.rampDown = s.rampDown;
+  }
+  return m;
+}
+
 std::vector<ToolTime> Timeline::timeByTool() const {
   std::vector<ToolTime> out;
   for (const Move& m : moves) {

@@ -1,6 +1,7 @@
 // Last stage of the chain: turns canonical calls into the Timeline with exact
 // times (SPEC 10).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -119,10 +120,12 @@ class TimelineBuilder final : public MachineSink {
 
   // A record of marks keeps what the evidence reads of a move; a timeline keeps it whole.
   void keep(const Move& mv) {
-    if (limits_.blockMarksOnly)
-      out_.recordMoves.push_back(RecordMove::of(mv));
-    else
+    if (limits_.blockMarksOnly) {
+      out_.recordMoves.push_back(mv);
+      if (limits_.recordSpeeds) out_.recordSpeeds.push_back(MoveSpeeds::of(mv));
+    } else {
       out_.moves.push_back(mv);
+    }
   }
 
   void push(const MotionCall& m, const Segment& path, double seconds, double feed, double up = 0.0, double down = 0.0) {
@@ -174,24 +177,38 @@ class TimelineBuilder final : public MachineSink {
     push(m, second, tRest, second.length() / tRest * 60.0, 0.0, rampSlow);
   }
 
-  // What the run keeps so far (it grows with every block and every move), and the copy a full
-  // list makes when it grows next: it moves into one twice its size while the old one is still
-  // held (an endless loop's states took 1.5 x what they kept). A list reserved for the whole
-  // program (interpret() reserves the moves and states) makes no copy.
-  std::size_t neededBytes() const {
-    std::size_t held = 0, copies = 0;
+  // What the run keeps so far (it grows with every block and every move), the copy a full list
+  // makes when it grows next (it moves into one twice its size while the old one is still held:
+  // an endless loop's states took 1.5 x what they kept), and the lists it has outgrown: a batch
+  // run keeps freed memory in its heap (src/cli/batch_memory.cpp), so the smaller copies a list
+  // left behind as it doubled are still the process's (the check of an endless loop peaked at
+  // 1.5 x its budget). A list reserved for the whole program (interpret() reserves the moves and
+  // states) makes no copy and leaves none behind.
+  std::size_t neededBytes() {
+    std::size_t held = 0, copies = 0, k = 0;
     const auto add = [&](const auto& list) {
-      const std::size_t bytes = list.size() * sizeof(list.front());
+      const std::size_t size = sizeof(list.front());
+      const std::size_t bytes = list.size() * size;
       held += bytes;
       if (!list.empty() && list.size() == list.capacity()) copies += bytes;
+      // (Each doubling since the last block: a block of many moves may grow a list more than once.)
+      std::size_t& seen = capacities_[k++];
+      for (; seen > 0 && seen < list.capacity(); seen *= 2) outgrown_ += seen * size;
+      seen = list.capacity();
     };
-    add(out_.moves);
-    add(out_.snapshots);
-    add(out_.marks);
-    add(out_.recordMoves);
+    if (limits_.blockMarksOnly) {  // (the lists of the other kind stay empty)
+      add(out_.marks);
+      add(out_.recordMoves.packed());
+      add(out_.recordMoves.starts());
+      add(out_.recordMoves.centres());
+      add(out_.recordSpeeds);
+    } else {
+      add(out_.moves);
+      add(out_.snapshots);
+    }
     add(out_.flow.writes);
     add(out_.flow.wordValues);
-    return held + copies;
+    return held + copies + outgrown_;
   }
 
   Timeline& out_;
@@ -199,6 +216,9 @@ class TimelineBuilder final : public MachineSink {
   TimelineLimits limits_;
   Vec2 position_ = Vec2::Zero();
   double time_ = 0.0;
+  // neededBytes(): the capacity each list had when last seen, and the bytes of those it outgrew.
+  std::array<std::size_t, 9> capacities_{};
+  std::size_t outgrown_ = 0;
 };
 
 }  // namespace

@@ -10,7 +10,11 @@
 #include <sstream>
 #include <string>
 
+#include "klueng/core/cut/cutting_data.h"
 #include "klueng/core/diagnostic_codes.h"
+#include "klueng/core/gcode/parser.h"
+#include "klueng/core/io/program_file.h"
+#include "klueng/core/messages.h"
 #include "klueng/core/job/job.h"
 #include "klueng/core/machine/setup_files.h"
 #include "klueng/core/machine/trace.h"
@@ -243,6 +247,61 @@ TEST(RecordReuse, TheEditorsCheckKeepsNoRecord) {
   ASSERT_TRUE(asked.timeline);
   EXPECT_FALSE(asked.reused);
   expectSameRun(*asked.timeline, freshRun(*job));
+}
+
+// The check keeps no whole record (issue 40 item 1): its record keeps a mark a block, its moves
+// packed and, for the cutting data, each move's feeds and speeds; the cutting-data warnings it
+// gives are the whole record's, word for word.
+TEST(RecordReuse, TheChecksPackedRecordGivesTheWholeRecordsCuttingData) {
+  // Station 1 HSS in S45C: too fast at S1000 (W330 on line 12), a rough finish at F0.5 (W332 on
+  // line 15), an arc and a dwell between them; G96 on a taper (line 18: the rpm changes along it).
+  const std::string text =
+      "Cutting data\nShaft\nS45C\n150\n1100\nTest\nG21 G40 G99\nT0101\nG97 S1000 M03\nG00 X60. Z2.\n"
+      "X49.4\nG01 Z-20. F0.2\nG02 X53.4 Z-22. R2.\nG00 X60. Z2.\nG01 X48.8 Z-5. F0.5\nG04 X0.2\n"
+      "G50 S2000\nG96 S300\nG01 X40. Z-15. F0.3\nG00 X60.\nM30\n";
+  const io::ProgramFile file = *io::parseProgramFile(text).value;
+  machine::MachineSetup setup = shippedForReuse().setup;
+  setup.tools.material[0] = "hss";
+  const gcode::Program program = gcode::parse(file.gcode, file.gcodeFirstLine);
+  machine::RunOptions whole;
+  machine::RunOptions packed;
+  packed.blockMarksOnly = true;
+  packed.recordSpeeds = true;
+  const machine::Timeline a = machine::recordRun(program, setup, whole);
+  const machine::Timeline b = machine::recordRun(program, setup, packed);
+  ASSERT_TRUE(b.moves.empty() && b.snapshots.empty());
+  ASSERT_EQ(b.recordSpeeds.size(), a.moves.size());
+  const auto said = [&](const machine::Timeline& record) {
+    std::vector<std::string> out;
+    for (const Diagnostic& d : cut::checkCuttingData(record, file.header, setup, DisplayUnits::Mm))
+      out.push_back(std::to_string(d.range.line) + " " + formatMessage(d, Lang::En));
+    return out;
+  };
+  const std::vector<std::string> fromWhole = said(a);
+  EXPECT_EQ(said(b), fromWhole);
+  ASSERT_GE(fromWhole.size(), 2u);
+  const auto on = [&](const char* line, const char* code) {
+    return std::any_of(fromWhole.begin(), fromWhole.end(), [&](const std::string& w) {
+      return w.rfind(std::string(line) + " ", 0) == 0 && w.find(code) != std::string::npos;
+    });
+  };
+  EXPECT_TRUE(on("12", "cutting speed")) << fromWhole.front();
+  EXPECT_TRUE(on("15", "finishing feed")) << fromWhole.back();
+  // A record without its moves' speeds measures nothing rather than something wrong.
+  packed.recordSpeeds = false;
+  EXPECT_TRUE(said(machine::recordRun(program, setup, packed)).empty());
+  // The check itself (no run follows) says the same warnings from its packed record.
+  JobInput input;
+  input.setup = setup;
+  input.stations = setup.tools.stations;
+  input.file = file;
+  input.folder = std::string();
+  const auto job = makeJob(input);
+  std::vector<std::string> fromCheck;
+  for (const Diagnostic& d : job->diagnostics())
+    if (d.code.rfind("W33", 0) == 0)
+      fromCheck.push_back(std::to_string(d.range.line) + " " + formatMessage(d, Lang::En));
+  EXPECT_EQ(fromCheck, fromWhole);
 }
 
 }  // namespace

@@ -34,6 +34,9 @@ struct RunOptions {
   // A record read only for evidence (the check's, when no run follows it): each executed block
   // leaves a BlockMark instead of a StateSnapshot (Timeline::marks), 24 bytes, not 176.
   bool blockMarksOnly = false;
+  // With blockMarksOnly: each move's times, feeds and speeds too (Timeline::recordSpeeds, 48 bytes
+  // a move), what the check's cutting data (issue 39) reads of the record besides the moves.
+  bool recordSpeeds = false;
   // The memory the timeline may take: moves, snapshots and the macro values it logs (issue 42
   // item 3). A run that would need more stops with A156 at the block that reached it, instead of
   // taking all the computer's memory (an endless loop under max_blocks = 100000000). 0 = none.

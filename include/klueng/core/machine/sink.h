@@ -90,6 +90,7 @@ struct TimingConfig {
 // What the builder keeps and how much of it (RunOptions::blockMarksOnly, memoryBudgetMb).
 struct TimelineLimits {
   bool blockMarksOnly = false;  // Timeline::marks instead of snapshots
+  bool recordSpeeds = false;    // with blockMarksOnly: Timeline::recordSpeeds beside recordMoves
   std::size_t budgetBytes = 0;  // moves, snapshots or marks and the flow's value logs; 0 = none
 };
 std::unique_ptr<MachineSink> makeTimelineBuilder(Timeline& out, const TimingConfig& config,

@@ -1,4 +1,5 @@
 #pragma once
+#include <bit>
 #include <cstdint>
 // The result of interpreting a program: every move with exact times, and the
 // state after every block. Consumers: the cut simulator, trace/CSV writer,
@@ -85,9 +86,10 @@ struct BlockMark {
 };
 static_assert(sizeof(void*) != 8 || sizeof(BlockMark) == 24, "a record keeps one a block");  // (64-bit builds)
 
-// What a record of marks keeps of a move (RunOptions::blockMarksOnly): what the tool and stock
-// inference read of it, under the names a Move gives them, 96 bytes, not 176. move() gives it
-// back as a Move (times, feeds and speeds zero, as a fresh Move's).
+// A move of a record of marks (RunOptions::blockMarksOnly) as the tool and stock inference read
+// it, under the names a Move gives them (96 bytes, made as it is read: RecordMoveList keeps 40 a
+// move). move() gives it back as a Move (its times, feeds and speeds zero, as a fresh Move's;
+// Timeline::recordedMove gives them too, when the record kept them).
 struct RecordMove {
   Segment path;
   int line = 0;
@@ -96,11 +98,12 @@ struct RecordMove {
   std::int16_t tool = 0;  // stations and offsets are small
   std::int16_t offset = 0;
   MoveKind kind = MoveKind::Line;
+  SpindleDir spindle = SpindleDir::Stopped;
 
   static RecordMove of(const Move& m) {
     return {
-        m.path, m.line, m.blockIndex, m.file, static_cast<std::int16_t>(m.tool), static_cast<std::int16_t>(m.offset),
-        m.kind};
+        m.path, m.line,   m.blockIndex, m.file, static_cast<std::int16_t>(m.tool), static_cast<std::int16_t>(m.offset),
+        m.kind, m.spindle};
   }
   Move move() const {
     Move m;
@@ -111,10 +114,118 @@ struct RecordMove {
     m.tool = tool;
     m.offset = offset;
     m.kind = kind;
+    m.spindle = spindle;
     return m;
   }
 };
-static_assert(sizeof(void*) != 8 || sizeof(RecordMove) == 96, "a record of marks keeps one a move");  // (64-bit)
+
+// The moves of a record of marks, packed (issue 42 item 3): 40 bytes a move, not 96. A move
+// keeps where it ends; where it starts only when that is not where the move before it ended (the
+// first move, after a G50 or a dwell's jump), and an arc's centre, in lists of their own. Read
+// back whole, bit for bit: list[i] and a loop over the list give RecordMoves (the loop without a
+// search).
+class RecordMoveList {
+ public:
+  // (Plain numbers: no 16-byte alignment to pad to.)
+  struct Packed {
+    double endZ = 0.0, endX = 0.0;
+    int line = 0;
+    int blockIndex = 0;
+    int file = 0;
+    std::int16_t tool = 0;
+    std::int16_t offset = 0;
+    MoveKind kind = MoveKind::Line;
+    SpindleDir spindle = SpindleDir::Stopped;
+    std::uint8_t flags = 0;  // kOwnStart, kCentre, kArc, kCcw
+  };
+  struct Point {  // a start or a centre kept apart: the move it belongs to
+    std::size_t move = 0;
+    double z = 0.0, x = 0.0;
+  };
+  static constexpr std::uint8_t kOwnStart = 1, kCentre = 2, kArc = 4, kCcw = 8;
+
+  std::size_t size() const { return moves_.size(); }
+  bool empty() const { return moves_.empty(); }
+  void reserve(std::size_t n) { moves_.reserve(n); }
+  // (Inline: the timeline builder packs every move of the check's record straight from its Move.)
+  void push_back(const RecordMove& m) { pack(m); }
+  void push_back(const Move& m) { pack(m); }
+  RecordMove operator[](std::size_t i) const;
+
+  class const_iterator {
+   public:
+    RecordMove operator*() const;
+    const_iterator& operator++();
+    bool operator!=(const const_iterator& o) const { return i_ != o.i_; }
+    bool operator==(const const_iterator& o) const { return i_ == o.i_; }
+
+   private:
+    friend class RecordMoveList;
+    const_iterator(const RecordMoveList* list, std::size_t i) : list_(list), i_(i) {}
+    const RecordMoveList* list_;
+    std::size_t i_ = 0, start_ = 0, centre_ = 0;  // the next of starts_, centres_
+  };
+  const_iterator begin() const { return {this, 0}; }
+  const_iterator end() const { return {this, moves_.size()}; }
+
+  // What it keeps (the run's memory budget reads their sizes).
+  const std::vector<Packed>& packed() const { return moves_; }
+  const std::vector<Point>& starts() const { return starts_; }
+  const std::vector<Point>& centres() const { return centres_; }
+
+ private:
+  static bool sameBits(double a, double b) {
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+  }
+  template <typename M>  // a Move or a RecordMove: the same names
+  void pack(const M& m) {
+    Packed p;
+    p.endZ = m.path.end.x();
+    p.endX = m.path.end.y();
+    p.line = m.line;
+    p.blockIndex = m.blockIndex;
+    p.file = m.file;
+    p.tool = static_cast<std::int16_t>(m.tool);
+    p.offset = static_cast<std::int16_t>(m.offset);
+    p.kind = m.kind;
+    p.spindle = m.spindle;
+    const std::size_t i = moves_.size();
+    const Vec2& start = m.path.start;
+    if (i == 0 || !sameBits(start.x(), moves_.back().endZ) || !sameBits(start.y(), moves_.back().endX)) {
+      p.flags |= kOwnStart;
+      starts_.push_back({i, start.x(), start.y()});
+    }
+    const Vec2& centre = m.path.centre;
+    if (!sameBits(centre.x(), 0.0) || !sameBits(centre.y(), 0.0)) {
+      p.flags |= kCentre;
+      centres_.push_back({i, centre.x(), centre.y()});
+    }
+    if (m.path.kind == Segment::Kind::Arc) p.flags |= kArc;
+    if (m.path.ccw) p.flags |= kCcw;
+    moves_.push_back(p);
+  }
+  RecordMove unpack(std::size_t i, const Point* start, const Point* centre) const;
+  std::vector<Packed> moves_;
+  std::vector<Point> starts_;
+  std::vector<Point> centres_;
+};
+static_assert(sizeof(void*) != 8 || sizeof(RecordMoveList::Packed) == 40, "a record of marks keeps one a move");
+
+// What a record of marks keeps beside each move when the check measures its cutting data
+// (RunOptions::recordSpeeds, issue 39): the times, feeds, speeds and ramps of the Move, 48 bytes
+// (a move starts when the one before it ends, the first at 0).
+struct MoveSpeeds {
+  double tEnd = 0.0;
+  double feed = 0.0;
+  double rpm = 0.0;
+  double rpmEnd = 0.0;
+  double lead = 0.0;
+  float rampUp = 0.0f;
+  float rampDown = 0.0f;
+
+  static MoveSpeeds of(const Move& m) { return {m.tEnd, m.feed, m.rpm, m.rpmEnd, m.lead, m.rampUp, m.rampDown}; }
+};
+static_assert(sizeof(MoveSpeeds) == 48, "a record keeps one a move");
 
 struct Timeline {
   std::vector<Move> moves;
@@ -122,7 +233,9 @@ struct Timeline {
   // Instead of snapshots, in a record made with RunOptions::blockMarksOnly: one per executed block.
   std::vector<BlockMark> marks;
   // Instead of moves, in a record made with RunOptions::blockMarksOnly.
-  std::vector<RecordMove> recordMoves;
+  RecordMoveList recordMoves;
+  // Beside recordMoves, one a move, in a record made with RunOptions::recordSpeeds too.
+  std::vector<MoveSpeeds> recordSpeeds;
   std::optional<Diagnostic> alarm;  // the alarm that stopped the run, if any
   FlowLog flow;                     // call stacks and macro variables (flow.h)
   // A record (RunOptions::throughAlarms) differs from the run interpret() makes with the
@@ -145,6 +258,10 @@ struct Timeline {
     else
       for (const RecordMove& r : recordMoves) f(r);
   }
+  // Move i as the run made it, from the moves or from a record's moves and speeds (a record
+  // without speeds gives them zero): the same Move but for its call level, program, nose
+  // centre and compensated flag, which a record does not keep.
+  Move recordedMove(std::size_t i) const;
   // The cycle time split by tool, in the order the tools are first used.
   std::vector<ToolTime> timeByTool() const;
   // Position of the controlled point at time t (clamped to [0, cycleTime]).
