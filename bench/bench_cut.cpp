@@ -6,7 +6,10 @@
 //   klueng_bench_cut --cut-file=PROGRAM.txt    one run of a program file with
 //                                              stage times, peak RSS and a digest
 //                                              of the stock left (same digest =
-//                                              the same cut, to the bit)
+//                                              the same cut, to the bit); the cut
+//                                              as the CLI's simulate runs it (no
+//                                              stock copies for going back), or
+//                                              with --checkpoints as the window's
 #include <benchmark/benchmark.h>
 
 #include <sys/resource.h>
@@ -72,8 +75,8 @@ struct StageTimes {
   double parseCheck = 0, interpret = 0, cut = 0;
 };
 
-Outcome checkInterpretCut(const io::ProgramFile& file, const machine::MachineSetup& setup,
-                          StageTimes* times = nullptr) {
+Outcome checkInterpretCut(const io::ProgramFile& file, const machine::MachineSetup& setup, StageTimes* times = nullptr,
+                          const cut::CutOptions& cutOptions = {}) {
   const auto t0 = Clock::now();
   const gcode::Program program = gcode::parse(file.gcode, file.gcodeFirstLine);
   gcode::CheckOptions checkOptions;
@@ -82,7 +85,7 @@ Outcome checkInterpretCut(const io::ProgramFile& file, const machine::MachineSet
   const auto t1 = Clock::now();
   const machine::Timeline timeline = machine::interpret(program, setup);
   const auto t2 = Clock::now();
-  cut::CutSimulator sim(timeline, cut::CutSetup::from(file.header, setup));
+  cut::CutSimulator sim(timeline, cut::CutSetup::from(file.header, setup), cutOptions);
   sim.runToEnd();
   const auto t3 = Clock::now();
   if (times) {
@@ -206,6 +209,11 @@ BENCHMARK(BM_CutOnly)->Arg(10'000)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark
 BENCHMARK(BM_CutOnlyRoughing)->Arg(100'000)->Unit(benchmark::kMillisecond);
 
 int main(int argc, char** argv) {
+  cut::CutOptions cutOptions;
+  cutOptions.checkpointBudgetBytes = 0;  // as the CLI cuts
+  for (int i = 1; i < argc; ++i)
+    if (std::string_view(argv[i]) == "--checkpoints")
+      cutOptions.checkpointBudgetBytes = cut::CutOptions{}.checkpointBudgetBytes;
   for (int i = 1; i < argc; ++i) {
     const std::string_view arg = argv[i];
     if (arg.rfind("--cut-file=", 0) != 0) continue;
@@ -215,7 +223,7 @@ int main(int argc, char** argv) {
       return 1;
     }
     StageTimes times;
-    const Outcome o = checkInterpretCut(*file.value, shippedSetup(), &times);
+    const Outcome o = checkInterpretCut(*file.value, shippedSetup(), &times, cutOptions);
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     std::printf(
