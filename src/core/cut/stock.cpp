@@ -133,9 +133,7 @@ void Stock::updateOuter(int i) {
   const double now = c.empty() ? 0.0 : c.back().hi;
   outer_[static_cast<std::size_t>(i)] = now;
   if (deferMaxima_ && now <= old) {
-    // Lowered: the maxima stay high (still bounds) until settle().
-    dirtyFirst_ = dirtyFirst_ <= dirtyLast_ ? std::min(dirtyFirst_, i / kBlock) : i / kBlock;
-    dirtyLast_ = std::max(dirtyLast_, i / kBlock);
+    lowerInBatch(i, now);
     return;
   }
   // Each level's maximum is recomputed from the level below only when it held the old value.
@@ -192,7 +190,10 @@ double Stock::removeFromMaterial(int i, double lo, double hi) {
     const double area = c[0].hi * c[0].hi - lo * lo;
     if (tally_) addToTally(*tally_, i, c[0].hi - lo, dz_);
     c[0].hi = lo;
-    updateOuter(i);
+    if (deferMaxima_)
+      lowerInBatch(i, lo);  // what updateOuter does for a lowered column, without its call
+    else
+      updateOuter(i);
     removed_ += std::numbers::pi * area * dz_;
     return std::numbers::pi * area * dz_;
   }

@@ -4,6 +4,7 @@
 // in [bore/2, diameter/2] (bore 0 = a solid bar; a tube otherwise). Radial values are exact doubles; Z is resolved to
 // `resolution` mm: column i stands for Z in [zLeft(i), zLeft(i) + resolution]
 // and is sampled at its centre. Bores and undercuts are several intervals.
+#include <algorithm>
 #include <span>
 #include <vector>
 
@@ -113,6 +114,14 @@ class Stock {
 
  private:
   void updateOuter(int i);
+  // Column i's outer radius lowered to `now` inside a Batch: the maxima stay high (still
+  // bounds) until settle().
+  void lowerInBatch(int i, double now) {
+    outer_[static_cast<std::size_t>(i)] = now;
+    const int b = i / kBlock;
+    dirtyFirst_ = dirtyFirst_ <= dirtyLast_ ? std::min(dirtyFirst_, b) : b;
+    dirtyLast_ = std::max(dirtyLast_, b);
+  }
   void settleDirty();
   double removeFromMaterial(int i, double lo, double hi);         // lo below the column's outer radius
   double overlapWithMaterial(int i, double lo, double hi) const;  // the same
