@@ -380,15 +380,17 @@ void sweepIntervals(const SweepContext& c, const std::vector<std::pair<Vec2, Vec
     return Box{std::min(a.x(), b.x()) + box.z0, std::max(a.x(), b.x()) + box.z1, std::min(a.y(), b.y()) + box.x0,
                std::max(a.y(), b.y()) + box.x1};
   };
-  auto materialUnder = [&](const Box& swept) {
+  // Whether any material under the swept box reaches above its bottom (x0 < the largest outer
+  // radius there): the answer of the maximum, found at the first column or block above.
+  auto materialAbove = [&](const Box& swept) {
     int first, last;
     c.stock->columnRange(swept.z0, swept.z1, first, last);
-    return first > last ? -kInf : c.stock->maxOuterRadius(first, last);
+    return first <= last && c.stock->maxOuterAbove(first, last, swept.x0);
   };
   const Box part = holder ? c.holderBounds : c.edgeBounds;
   // Two looks, the second only when the first cannot tell: the move's ceiling (free), then
   // the material under this primitive's sweep.
-  auto above = [&](const Box& swept) { return swept.x0 >= c.materialCeiling || swept.x0 >= materialUnder(swept); };
+  auto above = [&](const Box& swept) { return swept.x0 >= c.materialCeiling || !materialAbove(swept); };
   // (Inside a Stock::Batch, a removing f leaves maxima to settle: settled after each
   // primitive, so the next one is culled by exact maxima, as without the batch.)
   if (nose) {
