@@ -6,10 +6,14 @@
 //   klueng_bench_cut --cut-file=PROGRAM.txt    one run of a program file with
 //                                              stage times, peak RSS and a digest
 //                                              of the stock left (same digest =
-//                                              the same cut, to the bit)
+//                                              the same cut, to the bit); the cut
+//                                              as the CLI's simulate runs it (no
+//                                              stock copies for going back), or
+//                                              with --checkpoints as the window's
 #include <benchmark/benchmark.h>
 
 #include <sys/resource.h>
+#include <time.h>
 
 #include <chrono>
 #include <cstdint>
@@ -70,10 +74,17 @@ std::uint64_t stockDigest(const cut::Stock& stock) {
 using Clock = std::chrono::steady_clock;
 struct StageTimes {
   double parseCheck = 0, interpret = 0, cut = 0;
+  double cutCpu = 0;  // the cut's CPU time on this thread: steadier than the wall on a shared machine
 };
 
-Outcome checkInterpretCut(const io::ProgramFile& file, const machine::MachineSetup& setup,
-                          StageTimes* times = nullptr) {
+double threadCpuMs() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) / 1e6;
+}
+
+Outcome checkInterpretCut(const io::ProgramFile& file, const machine::MachineSetup& setup, StageTimes* times = nullptr,
+                          const cut::CutOptions& cutOptions = {}) {
   const auto t0 = Clock::now();
   const gcode::Program program = gcode::parse(file.gcode, file.gcodeFirstLine);
   gcode::CheckOptions checkOptions;
@@ -82,13 +93,16 @@ Outcome checkInterpretCut(const io::ProgramFile& file, const machine::MachineSet
   const auto t1 = Clock::now();
   const machine::Timeline timeline = machine::interpret(program, setup);
   const auto t2 = Clock::now();
-  cut::CutSimulator sim(timeline, cut::CutSetup::from(file.header, setup));
+  const double cpu0 = threadCpuMs();
+  cut::CutSimulator sim(timeline, cut::CutSetup::from(file.header, setup), cutOptions);
   sim.runToEnd();
   const auto t3 = Clock::now();
+  const double cpu1 = threadCpuMs();
   if (times) {
     times->parseCheck = std::chrono::duration<double, std::milli>(t1 - t0).count();
     times->interpret = std::chrono::duration<double, std::milli>(t2 - t1).count();
     times->cut = std::chrono::duration<double, std::milli>(t3 - t2).count();
+    times->cutCpu = cpu1 - cpu0;
   }
   return {sim.removedVolume(), hasErrors(diags) || timeline.alarm.has_value() || sim.alarm().has_value(),
           timeline.moves.size(), stockDigest(sim.stock())};
@@ -206,6 +220,11 @@ BENCHMARK(BM_CutOnly)->Arg(10'000)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark
 BENCHMARK(BM_CutOnlyRoughing)->Arg(100'000)->Unit(benchmark::kMillisecond);
 
 int main(int argc, char** argv) {
+  cut::CutOptions cutOptions;
+  cutOptions.checkpointBudgetBytes = 0;  // as the CLI cuts
+  for (int i = 1; i < argc; ++i)
+    if (std::string_view(argv[i]) == "--checkpoints")
+      cutOptions.checkpointBudgetBytes = cut::CutOptions{}.checkpointBudgetBytes;
   for (int i = 1; i < argc; ++i) {
     const std::string_view arg = argv[i];
     if (arg.rfind("--cut-file=", 0) != 0) continue;
@@ -215,15 +234,16 @@ int main(int argc, char** argv) {
       return 1;
     }
     StageTimes times;
-    const Outcome o = checkInterpretCut(*file.value, shippedSetup(), &times);
+    const Outcome o = checkInterpretCut(*file.value, shippedSetup(), &times, cutOptions);
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     std::printf(
-        "moves %zu, parse+check %.1f ms, interpret %.1f ms, cut %.1f ms, total %.1f ms, removed %.0f mm3, "
+        "moves %zu, parse+check %.1f ms, interpret %.1f ms, cut %.1f ms (CPU %.1f ms), total %.1f ms, "
+        "removed %.0f mm3, "
         "%s, peak RSS %.1f MB, stock digest %016llx\n",
-        o.moves, times.parseCheck, times.interpret, times.cut, times.parseCheck + times.interpret + times.cut,
-        o.removed, o.alarm ? "STOPPED" : "ran to the end", static_cast<double>(usage.ru_maxrss) / 1024.0,
-        static_cast<unsigned long long>(o.digest));
+        o.moves, times.parseCheck, times.interpret, times.cut, times.cutCpu,
+        times.parseCheck + times.interpret + times.cut, o.removed, o.alarm ? "STOPPED" : "ran to the end",
+        static_cast<double>(usage.ru_maxrss) / 1024.0, static_cast<unsigned long long>(o.digest));
     return o.alarm ? 1 : 0;
   }
   benchmark::Initialize(&argc, argv);

@@ -4,6 +4,7 @@
 #include <limits>
 #include <cmath>
 #include <functional>
+#include <span>
 #include <numbers>
 
 #include <fmt/format.h>
@@ -21,10 +22,13 @@ namespace {
 constexpr double kNoseChordTolerance = 0.0002;  // mm: nose sweeps along arcs are this close to exact
 constexpr double kBoxChordTolerance = 0.0002;   // mm: bitmap edges next to the nose touch the surface too
 
+using Pieces = std::vector<std::pair<Vec2, Vec2>>;
+
 // Controlled-point pieces of the sub-path [s0, s1] of a move: straight pieces
 // (arcs as chords within `tolerance`), or for G32 the stamp positions (a == b).
-std::vector<std::pair<Vec2, Vec2>> piecesOf(const Move& m, double s0, double s1, double tolerance, double resolution) {
-  std::vector<std::pair<Vec2, Vec2>> out;
+// Into `out` (cleared first): a run reuses one buffer, not two fresh ones a move.
+void piecesOf(const Move& m, double s0, double s1, double tolerance, double resolution, Pieces& out) {
+  out.clear();
   const Segment& p = m.path;
   // A lead finer than two stock columns cannot show teeth: sweep it as a groove
   // (and keep a fine-lead G32 from stamping the tool millions of times).
@@ -34,7 +38,7 @@ std::vector<std::pair<Vec2, Vec2>> piecesOf(const Move& m, double s0, double s1,
     if (m.lead <= 0.0 || span <= 1e-12) {
       if (s0 == 0.0) out.emplace_back(p.start, p.start);
       if (s1 >= 1.0 && span > 1e-12) out.emplace_back(p.end, p.end);
-      return out;
+      return;
     }
     const double step = m.lead / span;  // path parameter per revolution
     const long kFirst = s0 == 0.0 ? 0 : static_cast<long>(std::floor(s0 / step)) + 1;
@@ -44,11 +48,11 @@ std::vector<std::pair<Vec2, Vec2>> piecesOf(const Move& m, double s0, double s1,
       if (s > s0 || k == 0) out.emplace_back(p.pointAt(s), p.pointAt(s));
     }
     if (s1 >= 1.0) out.emplace_back(p.end, p.end);  // the tool stands here before it retracts
-    return out;
+    return;
   }
   if (!p.isArc()) {
     out.emplace_back(p.pointAt(s0), p.pointAt(s1));
-    return out;
+    return;
   }
   const double rho = p.radius();
   const double sweep = p.sweep() * (s1 - s0);
@@ -69,6 +73,11 @@ std::vector<std::pair<Vec2, Vec2>> piecesOf(const Move& m, double s0, double s1,
     out.emplace_back(prev, next);
     prev = next;
   }
+}
+
+Pieces piecesOf(const Move& m, double s0, double s1, double tolerance, double resolution) {
+  Pieces out;
+  piecesOf(m, s0, s1, tolerance, resolution, out);
   return out;
 }
 
@@ -298,6 +307,19 @@ Box partBounds(const ToolShape& t, bool holder) {
   return Box{z0, z1, x0, x1};
 }
 
+CutSimulator::ToolBounds boundsOf(const ToolShape& t, int tool, int offset) {
+  CutSimulator::ToolBounds b{tool, offset, partBounds(t, false), partBounds(t, true), {}, false};
+  b.edges.reserve(t.cutting.size());
+  for (const Trapezoid& edge : t.cutting) b.edges.push_back(edge.bounds());
+  const double r = t.noseRadius;
+  const Box nose{t.noseCentre.x() - r, t.noseCentre.x() + r, t.noseCentre.y() - r, t.noseCentre.y() + r};
+  auto inside = [&](const Box& p) {  // (an empty part, z0 = inf, is inside anything)
+    return t.bounds.z0 <= p.z0 && p.z1 <= t.bounds.z1 && t.bounds.x0 <= p.x0 && p.x1 <= t.bounds.x1;
+  };
+  b.boundsHoldAll = inside(b.edge) && inside(b.holder) && (r <= 0.0 || inside(nose));
+  return b;
+}
+
 // What one move's sweep does to the stock and chuck.
 struct SweepContext {
   Stock* stock;
@@ -305,12 +327,17 @@ struct SweepContext {
   const ToolShape* tool = nullptr;
   double tolerance;
   detail::Grid grid;
-  Box edgeBounds, holderBounds;  // partBounds of the tool, once a move
+  Box edgeBounds, holderBounds;    // partBounds of the tool
+  std::span<const Box> edgeBoxes;  // the bounds of each of its cutting trapezoids
+  // No material under the whole tool's sweep of this move lies above this radius (the
+  // move's first look at the stock): a primitive starting at or above it needs no look.
+  double materialCeiling = std::numeric_limits<double>::infinity();
 
-  void use(const ToolShape* t) {
+  void use(const ToolShape* t, const Box& edge, const Box& holder, std::span<const Box> edges) {
     tool = t;
-    edgeBounds = partBounds(*t, false);
-    holderBounds = partBounds(*t, true);
+    edgeBounds = edge;
+    holderBounds = holder;
+    edgeBoxes = edges;
   }
 };
 
@@ -349,37 +376,21 @@ void sweepIntervals(const SweepContext& c, const std::vector<std::pair<Vec2, Vec
                     const std::vector<std::pair<Vec2, Vec2>>& boxPieces, bool holder, F&& f, const Cull& cull) {
   const ToolShape& t = *c.tool;
   const bool nose = !holder && t.noseRadius > 0.0;
-  constexpr double inf = std::numeric_limits<double>::infinity();
   auto sweptBox = [](const Vec2& a, const Vec2& b, const Box& box) {
     return Box{std::min(a.x(), b.x()) + box.z0, std::max(a.x(), b.x()) + box.z1, std::min(a.y(), b.y()) + box.x0,
                std::max(a.y(), b.y()) + box.x1};
   };
-  auto materialUnder = [&](const Box& swept) {
+  // Whether any material under the swept box reaches above its bottom (x0 < the largest outer
+  // radius there): the answer of the maximum, found at the first column or block above.
+  auto materialAbove = [&](const Box& swept) {
     int first, last;
     c.stock->columnRange(swept.z0, swept.z1, first, last);
-    return first > last ? -inf : c.stock->maxOuterRadius(first, last);
+    return first <= last && c.stock->maxOuterAbove(first, last, swept.x0);
   };
-  // One look at the material under the whole swept part (edge or holder): a
-  // primitive starting at or above it is skipped without a look of its own.
   const Box part = holder ? c.holderBounds : c.edgeBounds;
-  double z0 = inf, z1 = -inf;
-  if (part.z0 <= part.z1)
-    for (const auto& [a, b] : boxPieces) {
-      z0 = std::min(z0, std::min(a.x(), b.x()) + part.z0);
-      z1 = std::max(z1, std::max(a.x(), b.x()) + part.z1);
-    }
-  if (nose) {
-    const double r = t.noseRadius;
-    for (const auto& [a, b] : nosePieces) {
-      const Vec2 ca = a + t.noseCentre, cb = b + t.noseCentre;
-      z0 = std::min(z0, std::min(ca.x(), cb.x()) + -r);
-      z1 = std::max(z1, std::max(ca.x(), cb.x()) + r);
-    }
-  }
-  const Box all{z0, z1, 0.0, 0.0};
-  if (!(all.z0 <= all.z1)) return;
-  const double highest = materialUnder(all);
-  auto above = [&](const Box& swept) { return swept.x0 >= highest || swept.x0 >= materialUnder(swept); };
+  // Two looks, the second only when the first cannot tell: the move's ceiling (free), then
+  // the material under this primitive's sweep.
+  auto above = [&](const Box& swept) { return swept.x0 >= c.materialCeiling || !materialAbove(swept); };
   // (Inside a Stock::Batch, a removing f leaves maxima to settle: settled after each
   // primitive, so the next one is culled by exact maxima, as without the batch.)
   if (nose) {
@@ -391,20 +402,23 @@ void sweepIntervals(const SweepContext& c, const std::vector<std::pair<Vec2, Vec
       c.stock->settle();
     }
   }
+  // A piece along which even the part's lowest point stays at or above the ceiling passes
+  // every box of the part (box.x0 >= part.x0): the boxes need no look of their own.
+  auto partAbove = [&](const Vec2& a, const Vec2& b) { return std::min(a.y(), b.y()) + part.x0 >= c.materialCeiling; };
   if (holder) {
     for (const Box& box : t.holder)
       for (const auto& [a, b] : boxPieces)
-        if (!above(sweptBox(a, b, box))) {
+        if (!partAbove(a, b) && !above(sweptBox(a, b, box))) {
           detail::sweepBoxLine(c.grid, a, b, box, f, cull);
           c.stock->settle();
         }
     return;
   }
-  for (const Trapezoid& edge : t.cutting) {
-    const Box box = edge.bounds();
+  for (std::size_t k = 0; k < t.cutting.size(); ++k) {
+    const Box& box = c.edgeBoxes[k];
     for (const auto& [a, b] : boxPieces)
-      if (!above(sweptBox(a, b, box))) {
-        detail::sweepTrapezoidLine(c.grid, a, b, edge, f, cull);
+      if (!partAbove(a, b) && !above(sweptBox(a, b, box))) {
+        detail::sweepTrapezoidLine(c.grid, a, b, t.cutting[k], f, cull);
         c.stock->settle();
       }
   }
@@ -540,7 +554,8 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
                    options_.collisionTolerance,
                    detail::Grid{-stock_.length(), stock_.resolution(), stock_.columnCount()},
                    Box{},
-                   Box{}};
+                   Box{},
+                   {}};
 
   const double dz = stock_.resolution();
   auto nose = [&](double a, double b) { return piecesOf(m, a, b, kNoseChordTolerance, dz); };
@@ -570,15 +585,20 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
   const Box swept = pathBounds(m, s0, sEnd, tool->bounds);
   int first, last;
   stock_.columnRange(swept.z0, swept.z1, first, last);
-  const bool nearStock = first <= last && swept.x0 < stock_.maxOuterRadius(first, last);
+  const double ceiling = first <= last ? stock_.maxOuterRadius(first, last) : -kInf;
+  const bool nearStock = swept.x0 < ceiling;
   const Box jaws{chuck_.jawZMin(), chuck_.jawZMax(), chuck_.jawXMin(), chuck_.jawXMax()};
   const Box body{chuck_.bodyZMin(), chuck_.bodyZMax(), chuck_.bodyXMin(), chuck_.bodyXMax()};
   const bool nearChuck = options_.detectCollisions && (boxesOverlap(swept, jaws) || boxesOverlap(swept, body));
   if (!nearStock && !nearChuck) return;
-  ctx.use(tool);
+  if (toolBounds_.tool != m.tool || toolBounds_.offset != m.offset) toolBounds_ = boundsOf(*tool, m.tool, m.offset);
+  ctx.use(tool, toolBounds_.edge, toolBounds_.holder, toolBounds_.edges);
+  if (toolBounds_.boundsHoldAll) ctx.materialCeiling = ceiling;  // (a shape made by hand may not)
 
-  const auto nosePieces = nose(s0, sEnd);
-  const auto boxPieces = boxes(s0, sEnd);
+  piecesOf(m, s0, sEnd, kNoseChordTolerance, dz, nosePieces_);
+  piecesOf(m, s0, sEnd, kBoxChordTolerance, dz, boxPieces_);
+  const Pieces& nosePieces = nosePieces_;
+  const Pieces& boxPieces = boxPieces_;
 
   // A guessed tool's holder may touch the chuck (a warning); its edge may not.
   std::optional<ToolShape> edgeOnly;
@@ -586,11 +606,12 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
   if (nearChuck && setup_.tools.isGuess(m.tool)) {
     edgeOnly = *tool;
     edgeOnly->holder.clear();
-    edgeCtx.use(&*edgeOnly);
+    edgeCtx.use(&*edgeOnly, ctx.edgeBounds, partBounds(*edgeOnly, true), ctx.edgeBoxes);
     if (hitsChuck(ctx, nosePieces, boxPieces) && !hitsChuck(edgeCtx, nosePieces, boxPieces)) {
       const double s = earliest([&](double e) { return hitsChuck(ctx, nose(s0, e), boxes(s0, e)); });
       excuseGuess(codes::kGuessHitsChuck, m, timeline_->moves[index].path.pointAt(s));
-      ctx.use(edgeCtx.tool);  // the rest of the move as its edge alone: no second word on the chuck
+      ctx.use(edgeCtx.tool, edgeCtx.edgeBounds, edgeCtx.holderBounds,
+              edgeCtx.edgeBoxes);  // the rest of the move as its edge alone: no second word on the chuck
     }
   }
   if (nearChuck && hitsChuck(ctx, nosePieces, boxPieces)) {

@@ -127,15 +127,44 @@ double Stock::maxOuterRadius(int first, int last) const {
   return std::max(m, maxOf(outer_.data() + i, end - i));
 }
 
+bool Stock::maxOuterAbove(int first, int last, double r) const {
+  if (!(r >= 0.0)) return true;  // the maximum is never below 0
+  first = std::max(first, 0);
+  const int end = std::min(last, columnCount() - 1) + 1;
+  if (first >= end) return false;
+  auto any = [r](const double* p, int n) {
+    for (int k = 0; k < n; ++k)
+      if (p[k] > r) return true;
+    return false;
+  };
+  auto up = [](int v, int step) { return (v + step - 1) / step * step; };
+  auto down = [](int v, int step) { return v / step * step; };
+  // The pieces of maxOuterRadius, in its order.
+  int i = std::min(end, up(first, kBlock));
+  if (any(outer_.data() + first, i - first)) return true;
+  if (const int to = std::min(down(end, kBlock), up(i, kSuper)); to > i) {
+    if (any(blockMax_.data() + i / kBlock, (to - i) / kBlock)) return true;
+    i = to;
+  }
+  if (i % kSuper == 0 && end - i >= kSuper) {
+    const int supers = (end - i) / kSuper;
+    if (any(superMax_.data() + i / kSuper, supers)) return true;
+    i += supers * kSuper;
+  }
+  if (const int to = down(end, kBlock); to > i) {
+    if (any(blockMax_.data() + i / kBlock, (to - i) / kBlock)) return true;
+    i = to;
+  }
+  return any(outer_.data() + i, end - i);
+}
+
 void Stock::updateOuter(int i) {
   const auto& c = columns_[static_cast<std::size_t>(i)];
   const double old = outer_[static_cast<std::size_t>(i)];
   const double now = c.empty() ? 0.0 : c.back().hi;
   outer_[static_cast<std::size_t>(i)] = now;
   if (deferMaxima_ && now <= old) {
-    // Lowered: the maxima stay high (still bounds) until settle().
-    dirtyFirst_ = dirtyFirst_ <= dirtyLast_ ? std::min(dirtyFirst_, i / kBlock) : i / kBlock;
-    dirtyLast_ = std::max(dirtyLast_, i / kBlock);
+    lowerInBatch(i, now);
     return;
   }
   // Each level's maximum is recomputed from the level below only when it held the old value.
@@ -192,7 +221,10 @@ double Stock::removeFromMaterial(int i, double lo, double hi) {
     const double area = c[0].hi * c[0].hi - lo * lo;
     if (tally_) addToTally(*tally_, i, c[0].hi - lo, dz_);
     c[0].hi = lo;
-    updateOuter(i);
+    if (deferMaxima_)
+      lowerInBatch(i, lo);  // what updateOuter does for a lowered column, without its call
+    else
+      updateOuter(i);
     removed_ += std::numbers::pi * area * dz_;
     return std::numbers::pi * area * dz_;
   }

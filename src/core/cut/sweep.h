@@ -46,6 +46,11 @@ struct MaterialCull {
   const Stock* stock;
 };
 
+// True when f would do nothing at column i for an interval starting at lo (its material lies
+// wholly at or below lo): a sweep need not work out the interval's top there. Never without a cull.
+inline bool passesOver(const NoCull&, int, double) { return false; }
+inline bool passesOver(const MaterialCull& cull, int i, double lo) { return lo >= cull.stock->outerRadius(i); }
+
 template <typename Bound, typename Body>
 void visitColumns(const NoCull&, int first, int last, Bound&&, Body&& body) {
   for (int i = first; i <= last; ++i) body(i);
@@ -144,6 +149,11 @@ void sweepTrapezoidLine(const Grid& g, const Vec2& a, const Vec2& b, const Trape
     return;
   }
   const double dx = b.y() - a.y();
+  // A box's flat bottom (top) needs no interpolation: bottomAt adds (bottom1 - bottom0) * q = +-0
+  // to bottom0, which changes no x + bottom0 to the bit unless both are 0 (then the sign of
+  // the 0 may differ).
+  const bool flatBottom = t.bottom0 == t.bottom1 && std::isfinite(t.bottom0);
+  const bool flatTop = t.top0 == t.top1 && std::isfinite(t.top0);
   visitColumns(cull, first, last, bound, [&](int i) {
     const double z = g.centre(i);
     double s0 = (z - t.z1 - a.x()) / dz, s1 = (z - t.z0 - a.x()) / dz;
@@ -153,7 +163,14 @@ void sweepTrapezoidLine(const Grid& g, const Vec2& a, const Vec2& b, const Trape
     if (s0 > s1) return;
     const double xa = a.y() + s0 * dx, xb = a.y() + s1 * dx;
     const double ua = z - (a.x() + s0 * dz), ub = z - (a.x() + s1 * dz);
-    f(i, std::min(xa + t.bottomAt(ua), xb + t.bottomAt(ub)), std::max(xa + t.topAt(ua), xb + t.topAt(ub)));
+    const double lo = flatBottom && (t.bottom0 != 0.0 || (xa != 0.0 && xb != 0.0))
+                          ? std::min(xa + t.bottom0, xb + t.bottom0)
+                          : std::min(xa + t.bottomAt(ua), xb + t.bottomAt(ub));
+    if (passesOver(cull, i, lo)) return;
+    const double hi = flatTop && (t.top0 != 0.0 || (xa != 0.0 && xb != 0.0))
+                          ? std::max(xa + t.top0, xb + t.top0)
+                          : std::max(xa + t.topAt(ua), xb + t.topAt(ub));
+    f(i, lo, hi);
   });
 }
 
@@ -176,7 +193,7 @@ void sweepDiscLine(const Grid& g, Vec2 a, Vec2 b, double r, F&& f, const Cull& c
     const double zc = (a.x() + b.x()) / 2;
     visitColumns(cull, first, last, bound, [&](int i) {
       const double h = half(g.centre(i) - zc);
-      f(i, lo - h, hi + h);
+      if (!passesOver(cull, i, lo - h)) f(i, lo - h, hi + h);
     });
     return;
   }
@@ -194,6 +211,7 @@ void sweepDiscLine(const Grid& g, Vec2 a, Vec2 b, double r, F&& f, const Cull& c
       lo = b.y() - half(z - b.x());
     else
       lo = a.y() + down.y() + (z - tLoA) * slope;
+    if (passesOver(cull, i, lo)) return;  // (where it trails the surface the move before left)
     if (z < tHiA)
       hi = a.y() + half(z - a.x());
     else if (z > tHiB)

@@ -121,5 +121,68 @@ TEST(SweepCull, ASecondPassAlongZVisitsOnlyTheShoulder) {
   }
 }
 
+// A box's flat bottom and top skip Trapezoid::bottomAt / topAt: what the sweep gives must be
+// what the interpolating formula gives, to the bit, also where a side or the path is 0 or -0
+// (there the sign of a zero could differ).
+TEST(SweepFlatEdge, GivesWhatTheInterpolatingFormulaGivesToTheBit) {
+  // The formula every trapezoid used before the flat sides' short cut (sweepTrapezoidLine, not along X).
+  auto formula = [](const Grid& g, const Vec2& a, const Vec2& b, const Trapezoid& t) {
+    std::vector<Visit> out;
+    const double dz = b.x() - a.x(), dx = b.y() - a.y();
+    int first, last;
+    g.range(std::min(a.x(), b.x()) + t.z0, std::max(a.x(), b.x()) + t.z1, first, last);
+    for (int i = first; i <= last; ++i) {
+      const double z = g.centre(i);
+      double s0 = (z - t.z1 - a.x()) / dz, s1 = (z - t.z0 - a.x()) / dz;
+      if (s0 > s1) std::swap(s0, s1);
+      s0 = std::max(s0, 0.0);
+      s1 = std::min(s1, 1.0);
+      if (s0 > s1) continue;
+      const double xa = a.y() + s0 * dx, xb = a.y() + s1 * dx;
+      const double ua = z - (a.x() + s0 * dz), ub = z - (a.x() + s1 * dz);
+      out.emplace_back(i, std::min(xa + t.bottomAt(ua), xb + t.bottomAt(ub)),
+                       std::max(xa + t.topAt(ua), xb + t.topAt(ub)));
+    }
+    return out;
+  };
+  const Stock s(50.0, 100.0);
+  const Grid g = gridOf(s);
+  // The outside-turning tool's lowest box beside its R0.8 nose (tip 3), and boxes whose bottom
+  // or top is 0 or -0.
+  const Trapezoid edges[] = {Trapezoid::of(Box{0.8, 3.5, 0.0, 0.5}), Trapezoid::of(Box{0.75, 3.5, -0.0, 0.5}),
+                             Trapezoid::of(Box{-2.0, 1.0, -0.5, 0.0}), Trapezoid::of(Box{-2.0, 1.0, -0.5, -0.0}),
+                             Trapezoid::of(Box{0.0, 9.0, 0.5, 1.0})};
+  // Moves of the yardstick program (a 0.086 mm step of the wave, radius in mm), a facing cut
+  // to the centre line and beyond, a long slope; then passes along -0 whose box edge z0 = 0.75
+  // starts exactly at a column centre: there the path's radius at the edge's end is -0, the
+  // case where a bottom of -0 added without the formula could give -0 for its +0.
+  std::vector<std::pair<Vec2, Vec2>> moves = {{Vec2(-0.742, 24.893), Vec2(-0.828, 24.8925)},
+                                              {Vec2(-30.742, 24.8955), Vec2(-30.828, 24.896)},
+                                              {Vec2(-5.5, 5.0), Vec2(-6.3, 0.0)},
+                                              {Vec2(-5.5, 5.0), Vec2(-6.3, -0.0)},
+                                              {Vec2(0.5, 0.0), Vec2(-40.0, -0.0)},
+                                              {Vec2(0.5, -0.0), Vec2(-40.0, 0.0)},
+                                              {Vec2(-10.0, 2.0), Vec2(-60.0, -3.0)}};
+  for (int i = 1000; i < 1064; ++i) {
+    const double z = g.centre(i) - 0.75;  // (exact: the same binade)
+    moves.emplace_back(Vec2(z, -0.0), Vec2(z - 5.0, -0.0));
+  }
+  for (const Trapezoid& t : edges)
+    for (const auto& [a, b] : moves) {
+      std::vector<Visit> swept;
+      detail::sweepTrapezoidLine(g, a, b, t, [&](int i, double lo, double hi) { swept.emplace_back(i, lo, hi); });
+      const std::vector<Visit> expected = formula(g, a, b, t);
+      ASSERT_EQ(swept.size(), expected.size());
+      ASSERT_FALSE(swept.empty());
+      for (std::size_t k = 0; k < swept.size(); ++k) {
+        EXPECT_EQ(std::get<0>(swept[k]), std::get<0>(expected[k]));
+        EXPECT_TRUE(sameBits(std::get<1>(swept[k]), std::get<1>(expected[k])) &&
+                    sameBits(std::get<2>(swept[k]), std::get<2>(expected[k])))
+            << "box bottom " << t.bottom0 << " top " << t.top0 << ", move to Z" << b.x() << ", column "
+            << std::get<0>(swept[k]) << ": " << std::get<1>(swept[k]) << " against " << std::get<1>(expected[k]);
+      }
+    }
+}
+
 }  // namespace
 }  // namespace klueng::core::cut

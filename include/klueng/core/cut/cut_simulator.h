@@ -145,6 +145,17 @@ class CutSimulator {
   // The latest checkpoint at or before t; nullptr when only the bar is.
   const CutCheckpoint* checkpointBefore(double t) const;
 
+ public:
+  // The bounds of a tool's cutting edge, of its holder and of each cutting trapezoid, in its
+  // own coordinates, kept for the last (tool, offset) cut with: every move asks them.
+  struct ToolBounds {
+    int tool = 0, offset = -1;
+    Box edge, holder;
+    std::vector<Box> edges;
+    bool boundsHoldAll = false;  // the shape's bounds hold its edge, holder and nose
+  };
+
+ private:
   const machine::Timeline* timeline_;
   CutSetup setup_;
   CutOptions options_;
@@ -162,6 +173,9 @@ class CutSimulator {
   // The stock after every checkpointEvery_ moves (at a move boundary, no alarm yet).
   std::vector<CutCheckpoint> checkpoints_;
   std::size_t checkpointEvery_ = 64;
+  ToolBounds toolBounds_;
+  // The controlled point's pieces of the move being cut (buffers kept from move to move).
+  std::vector<std::pair<Vec2, Vec2>> nosePieces_, boxPieces_;
 };
 
 }  // namespace klueng::core::cut

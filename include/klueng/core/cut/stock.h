@@ -4,6 +4,8 @@
 // in [bore/2, diameter/2] (bore 0 = a solid bar; a tube otherwise). Radial values are exact doubles; Z is resolved to
 // `resolution` mm: column i stands for Z in [zLeft(i), zLeft(i) + resolution]
 // and is sampled at its centre. Bores and undercuts are several intervals.
+#include <algorithm>
+#include <numbers>
 #include <span>
 #include <vector>
 
@@ -56,6 +58,9 @@ class Stock {
   double innerRadius(int i) const;                       // start of the lowest interval (0 = solid)
   // Largest outer radius over columns [first, last] (fast: block maxima).
   double maxOuterRadius(int first, int last) const;
+  // maxOuterRadius(first, last) > r, from the same columns and maxima, but stopping at the
+  // first of them above r (true for a NaN r, as a comparison with the maximum would not skip).
+  bool maxOuterAbove(int first, int last, double r) const;
   // Never below the outer radius of any column of aligned block b (columns
   // [b * kBlock, (b + 1) * kBlock)) or super-block s: what a sweep may skip.
   static constexpr int kBlock = 32;
@@ -67,6 +72,17 @@ class Stock {
   // (Inline: a sweep asks it of every column it passes, mostly above the material.)
   double remove(int i, double lo, double hi) {
     if (i < 0 || i >= columnCount() || !(hi > lo) || lo >= outer_[static_cast<std::size_t>(i)] || caught(i)) return 0.0;
+    // The cut's commonest removal, here without a call: a batch turning a one-interval
+    // column's outside down (what removeFromMaterial does in that case, to the bit).
+    Interval* one =
+        columns_[static_cast<std::size_t>(i)].size() == 1 ? columns_[static_cast<std::size_t>(i)].data() : nullptr;
+    if (deferMaxima_ && !tally_ && one && hi >= one->hi && lo > one->lo) {
+      const double area = one->hi * one->hi - lo * lo;
+      one->hi = lo;
+      lowerInBatch(i, lo);
+      removed_ += std::numbers::pi * area * dz_;
+      return std::numbers::pi * area * dz_;
+    }
     return removeFromMaterial(i, lo, hi);
   }
   // Longest overlap, in mm, of radius range [lo, hi] with the material of column i (0 = none).
@@ -113,6 +129,14 @@ class Stock {
 
  private:
   void updateOuter(int i);
+  // Column i's outer radius lowered to `now` inside a Batch: the maxima stay high (still
+  // bounds) until settle().
+  void lowerInBatch(int i, double now) {
+    outer_[static_cast<std::size_t>(i)] = now;
+    const int b = i / kBlock;
+    dirtyFirst_ = dirtyFirst_ <= dirtyLast_ ? std::min(dirtyFirst_, b) : b;
+    dirtyLast_ = std::max(dirtyLast_, b);
+  }
   void settleDirty();
   double removeFromMaterial(int i, double lo, double hi);         // lo below the column's outer radius
   double overlapWithMaterial(int i, double lo, double hi) const;  // the same
