@@ -89,7 +89,7 @@ TEST(Parser, CommentsAreKeptAndSkipped) {
   ASSERT_EQ(p.blocks.size(), 1u);
   EXPECT_TRUE(p.lexicalDiagnostics.empty());
   EXPECT_THAT(wordsOf(p.blocks[0]), ElementsAre(WordView{'N', "10", 1, 3}, WordView{'G', "00", 12, 3}));
-  EXPECT_EQ(p.blocks[0].comment, "face rapid in");
+  EXPECT_EQ(p.blocks[0].comment(), "face rapid in");
   EXPECT_EQ(p.lineCount, 3);
 }
 
@@ -98,7 +98,7 @@ TEST(Parser, ThaiCommentBeforeAWordGivesCodePointColumn) {
   const Program p = parse("(กลึงปาดหน้า) X20.");
   ASSERT_EQ(p.blocks.size(), 1u);
   EXPECT_THAT(wordsOf(p.blocks[0]), ElementsAre(WordView{'X', "20.", 15, 4}));
-  EXPECT_EQ(p.blocks[0].comment, "กลึงปาดหน้า");
+  EXPECT_EQ(p.blocks[0].comment(), "กลึงปาดหน้า");
 }
 
 TEST(Parser, ThaiCommentBeforeAnErrorGivesCodePointColumn) {
