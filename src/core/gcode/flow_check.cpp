@@ -174,6 +174,7 @@ class FlowChecker {
   // program's start; Q at or after P), and where the machine wants it the
   // first block of the profile holds G00 or G01 (Fanuc 0i-TF PS0065).
   void checkProfile(const Block& b, int section, int index) {
+    if (!b.mayHave('G')) return;  // (most blocks: their words are not read)
     const Word* g = nullptr;
     for (const Word& w : b.words) {
       if (w.letter != 'G' || w.expr >= 0 || w.hasDecimalPoint || w.comma) continue;

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <iterator>
 #include <memory>
+#include <new>
 #include <string>
 
 #include "diagnostic_codes.h"
@@ -74,7 +75,8 @@ class LineParser {
   void parseLine(std::string_view line, int lineNumber) {
     line_ = line;
     lineNumber_ = lineNumber;
-    Block block;
+    // (Made in place, and taken back when the line makes no block.)
+    Block& block = program_.blocks.emplace_back();
     block.line = lineNumber;
     block.file = file_;
     words_.clear();
@@ -83,7 +85,7 @@ class LineParser {
     int col = 1;
     while (i < line.size())
       if (!readItem(block, state, i, col)) break;
-    finishBlock(std::move(block), state.tapeLine);
+    if (!finishBlock(block, state.tapeLine)) program_.blocks.pop_back();
   }
 
  private:
@@ -290,7 +292,8 @@ class LineParser {
 
   // The block the line's words make: a statement keeps only an N word beside it; a '%' line's
   // words are reported, not run; a line without words makes no block.
-  void finishBlock(Block block, bool tapeLine) {
+  // True when the line makes a block.
+  bool finishBlock(Block& block, bool tapeLine) {
     if (block.statement().kind != StatementKind::None) {
       // Only an N word may share the block with a statement.
       for (std::size_t k = 0; k < words_.size(); ++k)
@@ -298,19 +301,18 @@ class LineParser {
           report(codes::kStatementNotAlone, words_[k].range.column, words_[k].range.length, {words_[k].text()});
       if (!words_.empty() && words_[0].letter == 'N') block.words.push_back(std::move(words_[0]));
       noteWords(block);
-      program_.blocks.push_back(std::move(block));
-      return;
+      return true;
     }
-    if (words_.empty()) return;
+    if (words_.empty()) return false;
     if (tapeLine) {
       // Words after '%' are reported, not run: the line is a tape mark.
       const Word& w = words_.front();
       report(codes::kTextAfterTapeMark, w.range.column, w.range.length, {w.letter + w.number});
-      return;
+      return false;
     }
     block.words = words_.keep();
     noteWords(block);
-    program_.blocks.push_back(std::move(block));
+    return true;
   }
 
   // The line's words, made in place in the program's word store, one chunk after another (a
@@ -321,20 +323,21 @@ class LineParser {
     explicit LineWords(Program& program) : program_(program) {}
     std::size_t size() const { return size_; }
     bool empty() const { return size_ == 0; }
-    Word& operator[](std::size_t k) { return chunk_[used_ + k]; }
-    Word& front() { return chunk_[used_]; }
-    Word& back() { return chunk_[used_ + size_ - 1]; }
+    Word& operator[](std::size_t k) { return chunk_->words[used_ + k]; }
+    Word& front() { return chunk_->words[used_]; }
+    Word& back() { return chunk_->words[used_ + size_ - 1]; }
     void clear() { size_ = 0; }
     // A fresh word after the line's others (a new chunk takes them when this one is full).
     Word& emplace_back() {
-      if (!chunk_ || used_ + size_ == capacity_) grow();
-      Word& w = chunk_[used_ + size_++];
-      w = Word();
-      return w;
+      if (!chunk_ || used_ + size_ == chunk_->capacity) grow();
+      const std::size_t at = used_ + size_++;
+      if (at < chunk_->made) return chunk_->words[at] = Word();  // a word of a line that made no block
+      ++chunk_->made;
+      return *new (chunk_->words + at) Word();
     }
     // The line's words, kept: the block borrows them.
     WordList keep() {
-      WordList list = WordList::borrow(chunk_ + used_, size_);
+      WordList list = WordList::borrow(chunk_->words + used_, size_);
       used_ += size_;
       size_ = 0;
       return list;
@@ -342,17 +345,29 @@ class LineParser {
 
    private:
     static constexpr std::size_t kChunkWords = 4096;  // words a store chunk holds (160 KB)
+    // Room for words, made one by one as the lines need them (not all at once, then again).
+    struct Chunk {
+      explicit Chunk(std::size_t n) : words(static_cast<Word*>(::operator new(n * sizeof(Word)))), capacity(n) {}
+      Chunk(const Chunk&) = delete;
+      Chunk& operator=(const Chunk&) = delete;
+      ~Chunk() {
+        std::destroy_n(words, made);
+        ::operator delete(words);
+      }
+      Word* words;
+      std::size_t capacity;
+      std::size_t made = 0;  // words [0, made) are made
+    };
     void grow() {
-      auto chunk = std::shared_ptr<Word[]>(new Word[std::max(kChunkWords, 2 * size_)]);
-      for (std::size_t k = 0; k < size_; ++k) chunk[k] = std::move(chunk_[used_ + k]);
+      auto chunk = std::make_shared<Chunk>(std::max(kChunkWords, 2 * size_));
+      for (std::size_t k = 0; k < size_; ++k) new (chunk->words + k) Word(std::move(chunk_->words[used_ + k]));
+      chunk->made = size_;
       chunk_ = chunk.get();
-      capacity_ = std::max(kChunkWords, 2 * size_);
       used_ = 0;
       program_.wordStores.push_back(std::move(chunk));
     }
     Program& program_;
-    Word* chunk_ = nullptr;  // the chunk being filled: kept words [0, used_), the line's after them
-    std::size_t capacity_ = 0;
+    Chunk* chunk_ = nullptr;  // the chunk being filled: kept words [0, used_), the line's after them
     std::size_t used_ = 0;
     std::size_t size_ = 0;
   };
@@ -372,7 +387,7 @@ class LineParser {
   // number store (a length, then the characters), which the word borrows.
   void setNumber(Word& w, std::string_view text) {
     if (text.size() <= WordNumber::kInlineCapacity) {
-      w.number = WordNumber(text);
+      w.number.setShort(text);
       return;
     }
     const std::size_t need = (sizeof(std::uint32_t) + text.size() + 3) & ~std::size_t{3};  // 4-byte aligned

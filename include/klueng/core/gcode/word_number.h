@@ -51,6 +51,16 @@ class WordNumber {
     return n;
   }
 
+  // The lexer's case: a text of at most kInlineCapacity characters, kept inside (a byte at a time:
+  // a call to memcpy for a few bytes cost more).
+  void setShort(std::string_view text) {
+    release();
+    std::uint64_t bits = kInlineTag | (static_cast<std::uint64_t>(text.size()) << 2);
+    for (std::size_t k = 0; k < text.size(); ++k)
+      bits |= static_cast<std::uint64_t>(static_cast<unsigned char>(text[k])) << (8 * (k + 1));
+    bits_ = bits;
+  }
+
   void assign(std::string_view text) {
     // (text may point into this number: build the new value before freeing the old.)
     WordNumber fresh(text);
