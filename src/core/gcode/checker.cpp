@@ -617,7 +617,7 @@ class Checker {
       emit(codes::kOutOfRange, w, {wordText(w), limitText(min), limitText(max)});
       return;
     }
-    const int maxDecimals = incrementDecimals(profile_, units());
+    const int maxDecimals = inch_ ? profile_.decimalsInch : profile_.decimalsMm;  // incrementDecimals, inline
     if (w.decimals <= maxDecimals) return;
     if (profile_.extraDecimals == ExtraDecimals::Error) {
       emit(codes::kTooManyDecimals, w, {wordText(w), std::to_string(maxDecimals)});
