@@ -560,7 +560,10 @@ class LineParser {
     const int length = static_cast<int>(k - i);
     Word& w = words_.emplace_back();
     w.letter = static_cast<char>(line[i] & ~0x20);  // upper case
-    setNumber(w, number);
+    if (number.size() <= WordNumber::kInlineCapacity)
+      w.number.setShort(number);  // (nearly always: no call)
+    else
+      setNumber(w, number);
     w.hasDecimalPoint = point;
     w.decimals = static_cast<std::int16_t>(fracDigits);
     w.range = SourceRange{lineNumber_, col, length, file_};
