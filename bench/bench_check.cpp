@@ -56,11 +56,39 @@ void BM_ParseOnly(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 
+// The yardstick program (issue 40 item 1): lexing and parsing alone, and with the grammar check
+// (the checker's block pass and checkFlow with its ProgramIndex), in memory: the part of
+// `klueng-cli check` that is the parser's and the checker's.
+void BM_YardstickParse(benchmark::State& state) {
+  const std::string file = klueng::bench::YardstickGenerator::generate(static_cast<int>(state.range(0)));
+  const std::string_view text = afterHeader(file);
+  for (auto _ : state) {
+    const gcode::Program program = gcode::parse(text, 7);
+    benchmark::DoNotOptimize(program.blocks.data());
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
+void BM_YardstickParseCheck(benchmark::State& state) {
+  const std::string file = klueng::bench::YardstickGenerator::generate(static_cast<int>(state.range(0)));
+  const std::string_view text = afterHeader(file);
+  gcode::CheckOptions options;
+  options.toolsWithBitmap = std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8};
+  for (auto _ : state) {
+    const gcode::Program program = gcode::parse(text, 7);
+    const auto diags = gcode::check(program, options);
+    benchmark::DoNotOptimize(diags.data());
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
 }  // namespace
 
 BENCHMARK(BM_ParseCheckFanuc)->Arg(100'000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ParseCheckClassic)->Arg(100'000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ParseOnly)->Arg(100'000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_YardstickParse)->Arg(100'000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_YardstickParseCheck)->Arg(100'000)->Unit(benchmark::kMillisecond);
 
 // `klueng_bench_check --check-file=PROGRAM.txt` reads a program file, parses
 // and checks it once and prints the peak resident memory: the figure for the

@@ -126,7 +126,7 @@ class Checker {
   // check_m_codes and check_other_codes): the words one by one, then their
   // values, then the rules that need the whole block.
   void checkBlock(const Block& block, bool firstBlock) {
-    if (block.statement.kind != StatementKind::None) {
+    if (block.statement().kind != StatementKind::None) {
       checkStatement(block);
       return;
     }
@@ -190,7 +190,7 @@ class Checker {
   void checkStatement(const Block& block) {
     for (const Word& w : block.words)
       if (w.letter == 'N' && w.expr < 0) checkSequenceNumber(w);
-    if (!profile_.flow.macroB) emit(codes::kMacroNotInDialect, block.statement.range, {"#"});
+    if (!profile_.flow.macroB) emit(codes::kMacroNotInDialect, block.statement().range, {"#"});
   }
 
   // The row of a G or M code number in this machine's code index (as findCode, without
@@ -617,7 +617,7 @@ class Checker {
       emit(codes::kOutOfRange, w, {wordText(w), limitText(min), limitText(max)});
       return;
     }
-    const int maxDecimals = incrementDecimals(profile_, units());
+    const int maxDecimals = inch_ ? profile_.decimalsInch : profile_.decimalsMm;  // incrementDecimals, inline
     if (w.decimals <= maxDecimals) return;
     if (profile_.extraDecimals == ExtraDecimals::Error) {
       emit(codes::kTooManyDecimals, w, {wordText(w), std::to_string(maxDecimals)});
@@ -674,7 +674,7 @@ std::vector<Diagnostic> checkToolBitmaps(const Program& program, const CheckOpti
   if (profile.letters.find('T') == std::string_view::npos) return out;
   const std::vector<int>& tools = *options.toolsWithBitmap;
   for (const Block& b : program.blocks) {
-    if (b.statement.kind != StatementKind::None || !b.has('T')) continue;  // (most blocks: one pass, no T)
+    if (b.statement().kind != StatementKind::None || !b.has('T')) continue;  // (most blocks: one pass, no T)
     // As check(): a macro call's letters are its arguments, T too.
     if (profile.flow.macroB && isMacroCallBlock(b, options.dialect)) continue;
     for (const Word& w : b.words) {

@@ -1077,6 +1077,7 @@ CodeAction actionOf(const Word& word, Dialect dialect) {
 }
 
 const Word* macroCallWord(const Block& block, Dialect dialect, const CodeInfo** row) {
+  if (!block.mayHave('G')) return nullptr;  // (most blocks: their words are not read)
   for (const Word& w : block.words) {
     if (w.letter != 'G' || w.expr >= 0 || w.hasDecimalPoint) continue;
     const CodeInfo* info = findCode('G', w.code(), dialect);

@@ -77,7 +77,7 @@ BlockKind kindOf(const Block& b, Dialect dialect) {
 // The length words of the block that a decimal point setting reads differently.
 template <typename F>
 void forEachPointlessLength(const Block& b, const BlockKind& kind, F&& f) {
-  if (kind.passedAsWritten || b.statement.kind != StatementKind::None) return;
+  if (kind.passedAsWritten || b.statement().kind != StatementKind::None) return;
   for (std::size_t i = 0; i < b.words.size(); ++i) {
     const Word& w = b.words[i];
     if (w.hasDecimalPoint || w.expr >= 0 || w.comma || kLengthLetters.find(w.letter) == std::string_view::npos)

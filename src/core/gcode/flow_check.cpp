@@ -86,7 +86,7 @@ class FlowChecker {
     feedMayBeSet_ = section != 0 || s.first != 0;
     for (int i = s.first; i < s.end; ++i) {
       const Block& b = program_.blocks[static_cast<std::size_t>(i)];
-      const Statement& st = b.statement;
+      const Statement& st = b.statement();
       switch (st.kind) {
         case StatementKind::While:
         case StatementKind::Do:
@@ -140,7 +140,7 @@ class FlowChecker {
     }
     for (const Open& o : open) {
       const Block& b = program_.blocks[static_cast<std::size_t>(o.block)];
-      emit(codes::kDoWithoutEnd, b.statement.range, {std::to_string(o.loop)});
+      emit(codes::kDoWithoutEnd, b.statement().range, {std::to_string(o.loop)});
     }
   }
 
@@ -174,6 +174,7 @@ class FlowChecker {
   // program's start; Q at or after P), and where the machine wants it the
   // first block of the profile holds G00 or G01 (Fanuc 0i-TF PS0065).
   void checkProfile(const Block& b, int section, int index) {
+    if (!b.mayHave('G')) return;  // (most blocks: their words are not read)
     const Word* g = nullptr;
     for (const Word& w : b.words) {
       if (w.letter != 'G' || w.expr >= 0 || w.hasDecimalPoint || w.comma) continue;
@@ -207,7 +208,7 @@ class FlowChecker {
       emit(codes::kRoughingWithoutFeed, g->range, {g->text()});
     if (!profile_.cycles.profileFirstBlockNeedsG00G01 || !profileStarts_.insert(ns).second) return;
     const Block& first = program_.blocks[static_cast<std::size_t>(ns)];
-    if (first.statement.kind != StatementKind::None || actionWord(first, 'G', CodeAction::Rapid, profile_.dialect) ||
+    if (first.statement().kind != StatementKind::None || actionWord(first, 'G', CodeAction::Rapid, profile_.dialect) ||
         actionWord(first, 'G', CodeAction::Line, profile_.dialect))
       return;
     for (const Word& w : first.words)

@@ -59,7 +59,7 @@ class ModalWalk {
 
   // False when the rest of the program cannot be followed.
   bool block(const Block& b, bool firstOfFile) {
-    if (b.file != 0 || b.statement.kind != StatementKind::None || b.hasExpressions) return false;
+    if (b.file != 0 || b.statement().kind != StatementKind::None || b.hasExpressions) return false;
     if (!firstOfFile && !b.words.empty() && b.words.front().letter == 'O') return false;  // another program
     // One pass over the words (the walk runs on every edit of a 100,000-block program).
     std::optional<CodeAction> motion;  // a group-01 code written in this block

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <iterator>
 #include <memory>
+#include <new>
 #include <string>
 
 #include "diagnostic_codes.h"
@@ -74,7 +75,8 @@ class LineParser {
   void parseLine(std::string_view line, int lineNumber) {
     line_ = line;
     lineNumber_ = lineNumber;
-    Block block;
+    // (Made in place, and taken back when the line makes no block.)
+    Block& block = program_.blocks.emplace_back();
     block.line = lineNumber;
     block.file = file_;
     words_.clear();
@@ -83,7 +85,7 @@ class LineParser {
     int col = 1;
     while (i < line.size())
       if (!readItem(block, state, i, col)) break;
-    finishBlock(std::move(block), state.tapeLine);
+    if (!finishBlock(block, state.tapeLine)) program_.blocks.pop_back();
   }
 
  private:
@@ -100,17 +102,20 @@ class LineParser {
     if (isBlank(c)) {
       ++i;
       ++col;
+    } else if (isLetter(c) && lexPlainWord(i, col)) {
+      // (The common word, "X49.816": read in one pass; anything else goes the long way below.)
+      state.sawWordOrSkip = true;
     } else if (c == '(') {
       col = readComment(block, i, col);
     } else if (c == ';') {
       readEndOfBlockComment(block, i, col);
-    } else if (block.statement.kind == StatementKind::None && isLetter(c) && i + 1 < line.size() &&
+    } else if (block.statement().kind == StatementKind::None && isLetter(c) && i + 1 < line.size() &&
                isLetter(static_cast<unsigned char>(line[i + 1])) && startsStatement(line.substr(i))) {
       // IF / WHILE / GOTO / DO / END: a macro statement to the end of the line.
       col = lexStatement(block, i, col);
       state.sawWordOrSkip = true;
-    } else if (block.statement.kind == StatementKind::None && c == '#') {
-      col = lexAssignment(block.statement, i, col, false);
+    } else if (block.statement().kind == StatementKind::None && c == '#') {
+      col = lexAssignment(block.editStatement(), i, col, false);
       state.sawWordOrSkip = true;
     } else if (c == ',' && i + 1 < line.size() && isLetter(static_cast<unsigned char>(line[i + 1]))) {
       if (blockIsFull(col)) return false;
@@ -140,7 +145,7 @@ class LineParser {
       state.sawWordOrSkip = true;
       ++i;
       ++col;
-    } else if (c == '%' && !state.sawWordOrSkip && !state.tapeLine && block.comment.empty()) {
+    } else if (c == '%' && !state.sawWordOrSkip && !state.tapeLine && block.comment().empty()) {
       // Tape start/end mark: only blanks and comments may follow it.
       state.tapeLine = true;
       state.sawWordOrSkip = true;
@@ -287,56 +292,120 @@ class LineParser {
 
   // The block the line's words make: a statement keeps only an N word beside it; a '%' line's
   // words are reported, not run; a line without words makes no block.
-  void finishBlock(Block block, bool tapeLine) {
-    if (block.statement.kind != StatementKind::None) {
+  // True when the line makes a block.
+  bool finishBlock(Block& block, bool tapeLine) {
+    if (block.statement().kind != StatementKind::None) {
       // Only an N word may share the block with a statement.
       for (std::size_t k = 0; k < words_.size(); ++k)
         if (words_[k].letter != 'N' || k != 0)
           report(codes::kStatementNotAlone, words_[k].range.column, words_[k].range.length, {words_[k].text()});
       if (!words_.empty() && words_[0].letter == 'N') block.words.push_back(std::move(words_[0]));
       noteWords(block);
-      program_.blocks.push_back(std::move(block));
-      return;
+      return true;
     }
-    if (words_.empty()) return;
+    if (words_.empty()) return false;
     if (tapeLine) {
       // Words after '%' are reported, not run: the line is a tape mark.
       const Word& w = words_.front();
       report(codes::kTextAfterTapeMark, w.range.column, w.range.length, {w.letter + w.number});
-      return;
+      return false;
     }
-    block.words = storeWords();
+    block.words = words_.keep();
     noteWords(block);
-    program_.blocks.push_back(std::move(block));
+    return true;
   }
 
-  // The line's words moved into the program's word store, one chunk after another (a block's
-  // words side by side): the block borrows them, no allocation a block.
-  WordList storeWords() {
-    const std::size_t n = words_.size();
-    if (!chunk_ || chunkUsed_ + n > kChunkWords) {
-      auto chunk = std::shared_ptr<Word[]>(new Word[std::max(kChunkWords, n)]);
+  // The line's words, made in place in the program's word store, one chunk after another (a
+  // block's words side by side): the block borrows them, no allocation a block and no copy.
+  // Words of a line that makes no block are left behind and made again by the next line.
+  class LineWords {
+   public:
+    explicit LineWords(Program& program) : program_(program) {}
+    std::size_t size() const { return size_; }
+    bool empty() const { return size_ == 0; }
+    Word& operator[](std::size_t k) { return chunk_->words[used_ + k]; }
+    Word& front() { return chunk_->words[used_]; }
+    Word& back() { return chunk_->words[used_ + size_ - 1]; }
+    void clear() { size_ = 0; }
+    // A fresh word after the line's others (a new chunk takes them when this one is full).
+    Word& emplace_back() {
+      if (!chunk_ || used_ + size_ == chunk_->capacity) grow();
+      const std::size_t at = used_ + size_++;
+      if (at < chunk_->made) return chunk_->words[at] = Word();  // a word of a line that made no block
+      ++chunk_->made;
+      return *new (chunk_->words + at) Word();
+    }
+    // The line's words, kept: the block borrows them.
+    WordList keep() {
+      WordList list = WordList::borrow(chunk_->words + used_, size_);
+      used_ += size_;
+      size_ = 0;
+      return list;
+    }
+
+   private:
+    static constexpr std::size_t kChunkWords = 4096;  // words a store chunk holds (160 KB)
+    // Room for words, made one by one as the lines need them (not all at once, then again).
+    struct Chunk {
+      explicit Chunk(std::size_t n) : words(static_cast<Word*>(::operator new(n * sizeof(Word)))), capacity(n) {}
+      Chunk(const Chunk&) = delete;
+      Chunk& operator=(const Chunk&) = delete;
+      ~Chunk() {
+        std::destroy_n(words, made);
+        ::operator delete(words);
+      }
+      Word* words;
+      std::size_t capacity;
+      std::size_t made = 0;  // words [0, made) are made
+    };
+    void grow() {
+      auto chunk = std::make_shared<Chunk>(std::max(kChunkWords, 2 * size_));
+      for (std::size_t k = 0; k < size_; ++k) new (chunk->words + k) Word(std::move(chunk_->words[used_ + k]));
+      chunk->made = size_;
       chunk_ = chunk.get();
-      chunkUsed_ = 0;
+      used_ = 0;
       program_.wordStores.push_back(std::move(chunk));
     }
-    Word* at = chunk_ + chunkUsed_;
-    for (std::size_t k = 0; k < n; ++k) at[k] = std::move(words_[k]);
-    chunkUsed_ += n;
-    return WordList::borrow(at, n);
-  }
+    Program& program_;
+    Chunk* chunk_ = nullptr;  // the chunk being filled: kept words [0, used_), the line's after them
+    std::size_t used_ = 0;
+    std::size_t size_ = 0;
+  };
 
   Program& program_;
   std::size_t& budget_;
   int file_ = 0;
   std::string_view line_;
   int lineNumber_ = 0;
-  // Words of the current line; reused, then moved into the word store.
-  std::vector<Word> words_;
-  static constexpr std::size_t kChunkWords = 4096;  // words a store chunk holds (196 KB)
-  Word* chunk_ = nullptr;                           // the chunk being filled, and how far
-  std::size_t chunkUsed_ = 0;
-  std::string scratch_;  // a number written with blanks inside, gathered without them
+  LineWords words_{program_};  // words of the current line
+  std::string scratch_;        // a number written with blanks inside, gathered without them
+  char* chars_ = nullptr;      // the number store chunk being filled, its size and how far
+  std::size_t charsSize_ = 0;
+  std::size_t charsUsed_ = 0;
+
+  // A word's number: kept inside the word when short (nearly always), else in the program's
+  // number store (a length, then the characters), which the word borrows.
+  void setNumber(Word& w, std::string_view text) {
+    if (text.size() <= WordNumber::kInlineCapacity) {
+      w.number.setShort(text);
+      return;
+    }
+    const std::size_t need = (sizeof(std::uint32_t) + text.size() + 3) & ~std::size_t{3};  // 4-byte aligned
+    if (!chars_ || charsUsed_ + need > charsSize_) {
+      // 1 KB first (a line the editor explains), doubling to 64 KB (a long program's).
+      charsSize_ = std::max(std::min<std::size_t>(std::max<std::size_t>(charsSize_ * 2, 1024), 64 * 1024), need);
+      auto chunk = std::shared_ptr<char[]>(new char[charsSize_]);
+      chars_ = chunk.get();
+      charsUsed_ = 0;
+      program_.wordStores.push_back(std::move(chunk));
+    }
+    char* at = chars_ + charsUsed_;
+    const auto n = static_cast<std::uint32_t>(text.size());
+    std::memcpy(at, &n, sizeof n);
+    std::memcpy(at + sizeof n, text.data(), text.size());
+    charsUsed_ += need;
+    w.number = WordNumber::borrow(at);
+  }
 
   // What the scans ask of a block without reading its words.
   static void noteWords(Block& block) {
@@ -351,8 +420,9 @@ class LineParser {
     while (!text.empty() && isBlank(static_cast<unsigned char>(text.front()))) text.remove_prefix(1);
     while (!text.empty() && isBlank(static_cast<unsigned char>(text.back()))) text.remove_suffix(1);
     if (text.empty()) return;
-    if (!block.comment.empty()) block.comment += ' ';
-    block.comment.append(text);
+    std::string& comment = block.editComment();
+    if (!comment.empty()) comment += ' ';
+    comment.append(text);
   }
 
   void report(const char* code, int column, int length, std::vector<std::string> args,
@@ -450,6 +520,60 @@ class LineParser {
     return t;
   }
 
+  // A plain word at line_[i] (a letter, an optional sign, digits with at most one point, at most
+  // 15 digits, then the end of the line, a blank not followed by more digits, or a character
+  // that starts the next item): made in one pass, exactly as the long way (readItem's checks,
+  // then lexWord) makes it; i and col move past it. False, with nothing read, for any other text.
+  bool lexPlainWord(std::size_t& i, int& col) {
+    const std::string_view line = line_;
+    const std::size_t n = line.size();
+    std::size_t k = i + 1;
+    if (k < n && (line[k] == '-' || line[k] == '+')) ++k;
+    const std::size_t intStart = k;
+    std::uint64_t mantissa = 0;
+    while (k < n && isDigit(static_cast<unsigned char>(line[k])))
+      mantissa = mantissa * 10 + static_cast<std::uint64_t>(line[k++] - '0');
+    const std::size_t intDigits = k - intStart;
+    bool point = false;
+    std::size_t fracDigits = 0;
+    if (k < n && line[k] == '.') {
+      point = true;
+      const std::size_t fracStart = ++k;
+      while (k < n && isDigit(static_cast<unsigned char>(line[k])))
+        mantissa = mantissa * 10 + static_cast<std::uint64_t>(line[k++] - '0');
+      fracDigits = k - fracStart;
+    }
+    const std::size_t digits = intDigits + fracDigits;
+    if (digits == 0 || digits > 15) return false;
+    if (k < n) {
+      const auto d = static_cast<unsigned char>(line[k]);
+      // More of a number ("1.2.3", "5-"), a letter O for a zero ("G0O1"), a comma for a point ("Z2,5"):
+      if (isNumberChar(d) || d == 'O' || d == 'o' || d == ',') return false;
+      if (isBlank(d)) {  // "X20 30": digits split by blanks
+        std::size_t b = k;
+        while (b < n && isBlank(static_cast<unsigned char>(line[b]))) ++b;
+        if (b < n && (isDigit(static_cast<unsigned char>(line[b])) || line[b] == '.')) return false;
+      }
+    }
+    if (words_.size() == codes::kMaxWordsPerBlock) return false;  // E120, the long way
+    const std::string_view number = line.substr(i + 1, k - i - 1);
+    const int length = static_cast<int>(k - i);
+    Word& w = words_.emplace_back();
+    w.letter = static_cast<char>(line[i] & ~0x20);  // upper case
+    if (number.size() <= WordNumber::kInlineCapacity)
+      w.number.setShort(number);  // (nearly always: no call)
+    else
+      setNumber(w, number);
+    w.hasDecimalPoint = point;
+    w.decimals = static_cast<std::int16_t>(fracDigits);
+    w.range = SourceRange{lineNumber_, col, length, file_};
+    const double v = static_cast<double>(mantissa) / kPow10[fracDigits];
+    w.value = number[0] == '-' ? -v : v;
+    i = k;
+    col += length;
+    return true;
+  }
+
   // Reads letter + number at line_[i]; returns the column after the word.
   int lexWord(std::size_t& i, int col) {
     const bool colon = line_[i] == ':';
@@ -510,7 +634,7 @@ class LineParser {
     Word& w = words_.emplace_back();
     w.letter = letter;
     w.colon = colon;
-    w.number.assign(number);
+    setNumber(w, number);
     w.hasDecimalPoint = point;
     w.blanks = text.blanks || text.splitDigits;
     w.decimals = static_cast<std::int16_t>(fracDigits);
@@ -584,7 +708,7 @@ class LineParser {
     w.letter = letter;
     std::size_t from = exprStart;
     while (from < i && isBlank(static_cast<unsigned char>(line_[from]))) ++from;
-    w.number.assign(line_.substr(from, i - from));
+    setNumber(w, line_.substr(from, i - from));
     w.expr = index;
     w.hasDecimalPoint = true;
     w.range = SourceRange{lineNumber_, col, c - col, file_};
@@ -647,7 +771,7 @@ class LineParser {
   }
 
   int lexStatement(Block& block, std::size_t& i, int col) {
-    Statement& st = block.statement;
+    Statement& st = block.editStatement();
     const std::size_t start = i;
     const int startCol = col;
     auto keyword = [&](std::string_view k) {

@@ -4,8 +4,6 @@
 
 namespace klueng::core::gcode {
 
-std::ostream& operator<<(std::ostream& os, const BlockComment& c) { return os << c.view(); }
-
 int programNumberAt(const Program& program, int index) {
   if (index < 0 || index >= static_cast<int>(program.blocks.size())) return 0;
   const int file = program.blocks[static_cast<std::size_t>(index)].file;

@@ -46,7 +46,7 @@ void sortRuns(std::vector<std::pair<int, int>>& v) {
 
 ProgramIndex::ProgramIndex(const Program& program) {
   const int n = static_cast<int>(program.blocks.size());
-  sectionOfBlock_.resize(static_cast<std::size_t>(n));
+  blockCount_ = n;
   for (int i = 0; i < n; ++i) {
     const Block& b = program.blocks[static_cast<std::size_t>(i)];
     // Each block's words are an allocation of their own, and this loop reads
@@ -69,7 +69,6 @@ ProgramIndex::ProgramIndex(const Program& program) {
       sections_.push_back(s);
       sequences_.emplace_back();
     }
-    sectionOfBlock_[static_cast<std::size_t>(i)] = static_cast<int>(sections_.size()) - 1;
     if (b.mayHave('N') && !b.words.empty() && b.words.front().letter == 'N' && b.words.front().expr < 0)
       sequences_.back().emplace_back(b.words.front().code(), i);
   }
@@ -85,8 +84,11 @@ const ProgramSection* ProgramIndex::program(int number) const {
 }
 
 int ProgramIndex::sectionOf(int index) const {
-  if (index < 0 || index >= static_cast<int>(sectionOfBlock_.size())) return -1;
-  return sectionOfBlock_[static_cast<std::size_t>(index)];
+  if (index < 0 || index >= blockCount_) return -1;
+  // The sections follow each other and cover every block: the last one starting at or before it.
+  const auto after = std::upper_bound(sections_.begin(), sections_.end(), index,
+                                      [](int i, const ProgramSection& s) { return i < s.first; });
+  return static_cast<int>(after - sections_.begin()) - 1;
 }
 
 int ProgramIndex::findSequence(int section, int n, int from) const {

@@ -37,7 +37,7 @@ class Explainer {
   std::string run() {
     std::string head;
     for (const Word& w : b_.words) head += (head.empty() ? "" : " ") + w.text();
-    if (b_.statement.kind != gcode::StatementKind::None) {
+    if (b_.statement().kind != gcode::StatementKind::None) {
       std::string text(statementText_);
       while (!text.empty() && (text.back() == ' ' || text.back() == '\r')) text.pop_back();
       if (!head.empty() && text.empty()) text = head;
@@ -220,11 +220,11 @@ class Explainer {
 
   std::string statement() const {
     using K = gcode::StatementKind;
-    switch (b_.statement.kind) {
+    switch (b_.statement().kind) {
       case K::Assign: return th_ ? "กำหนดค่าให้ตัวแปรมาโคร" : "give a macro variable a value";
       case K::Goto: return th_ ? "กระโดดไปยังบล็อกที่กำหนด" : "jump to the given block";
       case K::If:
-        return b_.statement.then
+        return b_.statement().then
                    ? (th_ ? "ถ้าเงื่อนไขเป็นจริง กำหนดค่าให้ตัวแปร" : "if the condition holds, give a variable a value")
                    : (th_ ? "ถ้าเงื่อนไขเป็นจริง กระโดดไปยังบล็อกที่กำหนด" : "if the condition holds, jump to the given block");
       case K::While: return th_ ? "ทำซ้ำถึง END ตราบที่เงื่อนไขยังเป็นจริง" : "repeat up to END while the condition holds";

@@ -317,7 +317,7 @@ class Gatherer {
     // `N1 (OD ROUGH)` line is one, as Haas programs write them), then just after
     // it, then the tool list. (Lines of the program's own file: a subprogram
     // file's T block has only its own comment.)
-    std::vector<std::string> texts = {b.comment.str()};
+    std::vector<std::string> texts = {std::string(b.comment())};
     std::vector<int> lines = {b.line};
     if (b.file == 0) {
       for (int l = b.line - 1; l >= b.line - 3 && !blockLine(l); --l) lines.push_back(l);
@@ -416,7 +416,7 @@ class Gatherer {
         if (!threads) break;
         // Inside when its own comment says so ("G76 X36.2 Z-22. ... (ID THREAD)", "(INTERNAL)");
         // else the station's passes decide, once the run is read (tool_inference.cpp).
-        const CommentTool said = classifyComment(b.comment);
+        const CommentTool said = classifyComment(b.comment());
         const bool inside = said.kind == ToolKind::ThreadingId || said.kind == ToolKind::Boring;
         note(inside ? ToolKind::ThreadingId : ToolKind::ThreadingOd,
              inside ? ToolReason::ThreadingInside : ToolReason::Threading, gText(codes.cycleNumber), b.line);

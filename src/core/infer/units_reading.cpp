@@ -39,7 +39,7 @@ std::optional<UnitsReading> readPowerOnUnits(const gcode::Program& program, gcod
   UnitsEvidence e;
   bool perMinute = false;
   for (const gcode::Block& b : program.blocks) {
-    if (b.statement.kind != gcode::StatementKind::None) continue;
+    if (b.statement().kind != gcode::StatementKind::None) continue;
     bool roughing = false, surfaceSpeed = false;
     for (const gcode::Word* g : b.all('G')) {
       if (g->expr >= 0 || g->hasDecimalPoint) continue;

@@ -103,7 +103,7 @@ SourceRange callInto(const gcode::Program& program, int file) {
 // Whether a run may read or write a macro variable: an expression or a macro statement.
 bool usesVariables(const gcode::Program& program) {
   return std::any_of(program.blocks.begin(), program.blocks.end(), [](const gcode::Block& b) {
-    return b.hasExpressions || b.statement.kind != gcode::StatementKind::None;
+    return b.hasExpressions || b.statement().kind != gcode::StatementKind::None;
   });
 }
 

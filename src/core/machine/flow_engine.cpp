@@ -19,10 +19,10 @@ using gcode::StatementKind;
 namespace {
 
 std::string flowLoopText(const Block& b) {
-  return (b.statement.kind == StatementKind::End  ? "END"
-          : b.statement.kind == StatementKind::Do ? "DO"
-                                                  : "WHILE") +
-         (b.statement.kind == StatementKind::While ? std::string() : std::to_string(b.statement.loop));
+  return (b.statement().kind == StatementKind::End  ? "END"
+          : b.statement().kind == StatementKind::Do ? "DO"
+                                                    : "WHILE") +
+         (b.statement().kind == StatementKind::While ? std::string() : std::to_string(b.statement().loop));
 }
 
 // Argument specification I (Fanuc): A B C -> #1 #2 #3, I J K -> #4 #5 #6,
@@ -80,7 +80,7 @@ void FlowEngine::matchLoops() {
   // A program without WHILE, DO or END (most) needs no table: 400 KB on 100,000 blocks.
   loopPartner_.clear();
   const auto isLoop = [](const gcode::Block& b) {
-    const StatementKind k = b.statement.kind;
+    const StatementKind k = b.statement().kind;
     return k == StatementKind::While || k == StatementKind::Do || k == StatementKind::End;
   };
   if (std::none_of(program_.blocks.begin(), program_.blocks.end(), isLoop)) return;
@@ -88,13 +88,13 @@ void FlowEngine::matchLoops() {
   for (const gcode::ProgramSection& s : index_.sections()) {
     std::vector<int> open;
     for (int i = s.first; i < s.end; ++i) {
-      const gcode::Statement& st = program_.blocks[static_cast<std::size_t>(i)].statement;
+      const gcode::Statement& st = program_.blocks[static_cast<std::size_t>(i)].statement();
       if (st.kind == StatementKind::While || st.kind == StatementKind::Do) {
         open.push_back(i);
       } else if (st.kind == StatementKind::End) {
         for (int k = static_cast<int>(open.size()) - 1; k >= 0; --k) {
           const int d = open[static_cast<std::size_t>(k)];
-          if (program_.blocks[static_cast<std::size_t>(d)].statement.loop == st.loop) {
+          if (program_.blocks[static_cast<std::size_t>(d)].statement().loop == st.loop) {
             loopPartner_[static_cast<std::size_t>(d)] = i;
             loopPartner_[static_cast<std::size_t>(i)] = d;
             open.resize(static_cast<std::size_t>(k));
@@ -205,7 +205,7 @@ void FlowEngine::writeState(RunStateWords& out) const {
 bool FlowEngine::stopEndlessLoop(const Block& b) { return stopLoop(codes::kEndlessLoop, b, {std::to_string(b.line)}); }
 
 bool FlowEngine::loopStart(const Block& b, bool enter) {
-  const gcode::Statement& st = b.statement;
+  const gcode::Statement& st = b.statement();
   const int end = partnerOf(current_);
   if (end < 0) return alarm(codes::kUnmatchedLoopEnd, st.range, {flowLoopText(b), "END" + std::to_string(st.loop)});
   if (enter)
@@ -216,7 +216,7 @@ bool FlowEngine::loopStart(const Block& b, bool enter) {
 }
 
 bool FlowEngine::loopEnd(const Block& b) {
-  const gcode::Statement& st = b.statement;
+  const gcode::Statement& st = b.statement();
   const int start = partnerOf(current_);
   if (start < 0) return alarm(codes::kUnmatchedLoopEnd, st.range, {flowLoopText(b), "DO" + std::to_string(st.loop)});
   next_ = start;  // WHILE tests its condition again

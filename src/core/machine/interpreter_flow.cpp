@@ -83,7 +83,7 @@ bool Interpreter::runBlock(int index) {
   flow_.enter(index);
   if (!flow_.loopLimits(b, setup_.machine, *sink_)) return false;
   if (flow_.cameBack() && !loopCanEnd()) return false;
-  if (b.statement.kind != StatementKind::None) {
+  if (b.statement().kind != StatementKind::None) {
     stopped_ = false;
     stopEndsRun_ = false;
     if (!statement(b)) return false;
@@ -187,9 +187,8 @@ bool Interpreter::evaluate(int expr, const SourceRange& at, MacroValue& out) {
 bool Interpreter::evaluateWords(const Block& b) {
   scratch_.line = b.line;
   scratch_.blockSkip = b.blockSkip;
-  scratch_.comment = b.comment;
+  scratch_.notes = b.notes;
   scratch_.file = b.file;
-  scratch_.statement = b.statement;
   scratch_.hasExpressions = false;
   scratch_.letters = b.letters;  // its words are a subset of b's
   scratch_.words.clear();
@@ -238,7 +237,7 @@ bool Interpreter::evaluateWords(const Block& b) {
 }
 
 bool Interpreter::statement(const Block& b) {
-  const gcode::Statement& st = b.statement;
+  const gcode::Statement& st = b.statement();
   MacroValue v;
   switch (st.kind) {
     case StatementKind::Assign: {

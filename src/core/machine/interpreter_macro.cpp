@@ -107,10 +107,10 @@ bool Interpreter::writeVariable(int n, MacroValue v, const SourceRange& at) {
     // The control shows it as alarm 3000 + n (Fanuc: n = 0..200).
     const int number = 3000 + static_cast<int>(std::clamp(std::round(v.value), 0.0, 999.0));
     return flowAlarm(codes::kProgramAlarm, at,
-                     {gcode::macroNumberText(v.value), block_->comment.str(), std::to_string(number)});
+                     {gcode::macroNumberText(v.value), std::string(block_->comment()), std::to_string(number)});
   } else if (n == 3006) {
     // #3006 = n (MESSAGE): a stop with a message, as M00.
-    flow_.notice(Severity::Note, codes::kMacroStop, at, {block_->comment.str()});
+    flow_.notice(Severity::Note, codes::kMacroStop, at, {std::string(block_->comment())});
     stopped_ = true;
     stopEndsRun_ = options_.stopAtM00;
   } else if (n >= 2001 && n <= 2400 && (n - 2001) % 100 < static_cast<int>(offsets_.offsets.size())) {

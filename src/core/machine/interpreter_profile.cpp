@@ -33,7 +33,7 @@ std::optional<cycles::CycleAlarm> Interpreter::readProfile(const Block& cycle, c
   // Fanuc 0i-TF (PS0065): the profile's first block must hold G00 or G01.
   if (profile_.cycles.profileFirstBlockNeedsG00G01) {
     const Block& first = program_.blocks[static_cast<std::size_t>(out.ns)];
-    bool motion = first.statement.kind != gcode::StatementKind::None;  // refused below (A148)
+    bool motion = first.statement().kind != gcode::StatementKind::None;  // refused below (A148)
     for (const Word& w : first.words)
       motion =
           motion || (w.letter == 'G' && (w.expr >= 0 || gcode::actionOf(w, options_.dialect) == CodeAction::Rapid ||
@@ -82,7 +82,7 @@ std::optional<cycles::CycleAlarm> Interpreter::readProfile(const Block& cycle, c
     block_ = &b;
     blockIndex_ = i;
     capture.startBlock(i, b.line);
-    if (b.statement.kind != gcode::StatementKind::None) {
+    if (b.statement().kind != gcode::StatementKind::None) {
       raise(codes::kProfileHasMacro, g, {name, std::to_string(b.line)});
       break;
     }

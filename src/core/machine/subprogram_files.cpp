@@ -68,7 +68,9 @@ std::vector<FolderEntry> folderFiles(const std::string& folder) {
 void shiftExpressions(gcode::Block& b, int offset) {
   for (gcode::Word& w : b.words)
     if (w.expr >= 0) w.expr += offset;
-  gcode::Statement& s = b.statement;
+  const gcode::Statement& read = b.statement();
+  if (read.condition < 0 && read.target < 0 && read.value < 0) return;  // (most blocks: no notes to make)
+  gcode::Statement& s = b.editStatement();
   if (s.condition >= 0) s.condition += offset;
   if (s.target >= 0) s.target += offset;
   if (s.value >= 0) s.value += offset;

@@ -297,7 +297,7 @@ TEST(Lexer, ColonProgramNumberIsAnOWordThatRemembersItsColon) {
   EXPECT_EQ(o.code(), 100);
   EXPECT_EQ(o.text(), ":0100");
   EXPECT_EQ(o.range, (SourceRange{1, 1, 5}));
-  EXPECT_EQ(p.blocks[0].comment, "PART");
+  EXPECT_EQ(p.blocks[0].comment(), "PART");
   // A ':' without digits stays an unknown character.
   const Program bad = parse("G00 : X1.");
   ASSERT_EQ(bad.lexicalDiagnostics.size(), 1u);

@@ -49,7 +49,7 @@ TEST(Comments, NestedParenthesesThatBalanceAreOneComment) {
   const Program p = parse("(n = Vc*1000/(pi*D) = 25000/78.5 = 318) G00 X25.");
   EXPECT_THAT(p.lexicalDiagnostics, IsEmpty());
   ASSERT_EQ(p.blocks.size(), 1u);
-  EXPECT_EQ(p.blocks[0].comment, "n = Vc*1000/(pi*D) = 25000/78.5 = 318");
+  EXPECT_EQ(p.blocks[0].comment(), "n = Vc*1000/(pi*D) = 25000/78.5 = 318");
   ASSERT_EQ(p.blocks[0].words.size(), 2u);
   EXPECT_EQ(p.blocks[0].words[0].range.column, 41);
 }
@@ -87,7 +87,7 @@ TEST(Comments, AnUnclosedCommentAfterWordsKeepsTheWords) {
   const Program p = parse("G01 X20. (finish pass");
   ASSERT_EQ(p.blocks.size(), 1u);
   EXPECT_EQ(p.blocks[0].words.size(), 2u);
-  EXPECT_EQ(p.blocks[0].comment, "finish pass");
+  EXPECT_EQ(p.blocks[0].comment(), "finish pass");
   EXPECT_THAT(listOf(p.lexicalDiagnostics), ElementsAre("W108 1:10+12"));
 }
 

@@ -144,18 +144,18 @@ TEST(MacroStatements, ParseIntoStatementsWithTheirColumns) {
       "DPRNT[X#5001[44]]\n");
   ASSERT_TRUE(p.lexicalDiagnostics.empty()) << p.lexicalDiagnostics.front().code;
   ASSERT_EQ(p.blocks.size(), 8u);
-  EXPECT_EQ(p.blocks[0].statement.kind, StatementKind::Assign);
+  EXPECT_EQ(p.blocks[0].statement().kind, StatementKind::Assign);
   EXPECT_EQ(p.blocks[0].words.size(), 1u);  // N10
-  EXPECT_EQ(p.blocks[0].statement.range.column, 5);
-  EXPECT_EQ(p.blocks[1].statement.kind, StatementKind::If);
-  EXPECT_FALSE(p.blocks[1].statement.then);
-  EXPECT_TRUE(p.blocks[2].statement.then);
-  EXPECT_EQ(p.blocks[3].statement.kind, StatementKind::While);
-  EXPECT_EQ(p.blocks[3].statement.loop, 2);
-  EXPECT_EQ(p.blocks[4].statement.kind, StatementKind::End);
-  EXPECT_EQ(p.blocks[5].statement.kind, StatementKind::Goto);
+  EXPECT_EQ(p.blocks[0].statement().range.column, 5);
+  EXPECT_EQ(p.blocks[1].statement().kind, StatementKind::If);
+  EXPECT_FALSE(p.blocks[1].statement().then);
+  EXPECT_TRUE(p.blocks[2].statement().then);
+  EXPECT_EQ(p.blocks[3].statement().kind, StatementKind::While);
+  EXPECT_EQ(p.blocks[3].statement().loop, 2);
+  EXPECT_EQ(p.blocks[4].statement().kind, StatementKind::End);
+  EXPECT_EQ(p.blocks[5].statement().kind, StatementKind::Goto);
   const Block& nc = p.blocks[6];
-  EXPECT_EQ(nc.statement.kind, StatementKind::None);
+  EXPECT_EQ(nc.statement().kind, StatementKind::None);
   EXPECT_TRUE(nc.hasExpressions);
   ASSERT_EQ(nc.words.size(), 4u);
   EXPECT_EQ(nc.words[1].text(), "X#101");
@@ -163,7 +163,7 @@ TEST(MacroStatements, ParseIntoStatementsWithTheirColumns) {
   EXPECT_EQ(nc.words[2].range.column, 11);
   EXPECT_EQ(nc.words[2].range.length, 9);
   EXPECT_EQ(nc.words[3].text(), "F[#9*0.5]");
-  EXPECT_EQ(p.blocks[7].statement.kind, StatementKind::Output);
+  EXPECT_EQ(p.blocks[7].statement().kind, StatementKind::Output);
 }
 
 TEST(MacroStatements, BlanksMayStandBetweenAnAddressAndItsExpression) {

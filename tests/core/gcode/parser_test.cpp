@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <string>
+#include <vector>
 
 #include "klueng/core/gcode/checker.h"
 #include "klueng/core/gcode/parser.h"
@@ -43,6 +44,50 @@ TEST(Parser, WordsWrittenTogether) {
   EXPECT_TRUE(p.blocks[0].words[1].hasDecimalPoint);
   EXPECT_EQ(p.blocks[0].words[1].decimals, 0);
   EXPECT_DOUBLE_EQ(p.blocks[0].words[2].value, -5.0);
+}
+
+// The plain words the lexer reads in one pass (letter, sign, digits, one point) and the words next
+// to them that it leaves to the long way: every field as the long way makes it.
+TEST(Parser, PlainWordsAndTheirNeighboursKeepEveryField) {
+  const Program p = parse("n10g1x-.5Z+12.3450 F0.25\tS0800 X20 30 G0O1 Z2,5 X1.2.3 X-#1 T0101\n");
+  ASSERT_EQ(p.blocks.size(), 1u);
+  const WordList& w = p.blocks[0].words;
+  ASSERT_EQ(w.size(), 9u);
+  struct Want {
+    char letter;
+    const char* number;
+    double value;
+    bool point;
+    int decimals;
+    int column;
+    int length;
+  };
+  const Want want[] = {{'N', "10", 10.0, false, 0, 1, 3},      {'G', "1", 1.0, false, 0, 4, 2},
+                       {'X', "-.5", -0.5, true, 1, 6, 4},      {'Z', "+12.3450", 12.345, true, 4, 10, 9},
+                       {'F', "0.25", 0.25, true, 2, 20, 5},    {'S', "0800", 800.0, false, 0, 26, 5},
+                       {'X', "2030", 2030.0, false, 0, 32, 6}, {'X', "-#1", 0.0, true, 0, 56, 4},
+                       {'T', "0101", 101.0, false, 0, 61, 5}};
+  for (std::size_t i = 0; i < w.size(); ++i) {
+    const Want& x = want[i];
+    SCOPED_TRACE(w[i].text());
+    EXPECT_EQ(w[i].letter, x.letter);
+    EXPECT_EQ(w[i].number, x.number);
+    EXPECT_DOUBLE_EQ(w[i].value, x.value);
+    EXPECT_EQ(w[i].hasDecimalPoint, x.point);
+    EXPECT_EQ(w[i].decimals, x.decimals);
+    EXPECT_EQ(w[i].range.line, 1);
+    EXPECT_EQ(w[i].range.column, x.column);
+    EXPECT_EQ(w[i].range.length, x.length);
+    EXPECT_EQ(w[i].blanks, i == 6);  // "X20 30": X2030, the blanks noted
+    EXPECT_EQ(w[i].expr >= 0, i == 7);
+    EXPECT_FALSE(w[i].colon);
+    EXPECT_FALSE(w[i].comma);
+  }
+  // The blanks inside X20 30 (a warning); G0O1, Z2,5 and X1.2.3 are errors, not words.
+  std::vector<std::string> codes;
+  for (const Diagnostic& d : p.lexicalDiagnostics) codes.push_back(d.code + ":" + std::to_string(d.range.column));
+  EXPECT_THAT(codes, ::testing::ElementsAre(::testing::EndsWith(":32"), ::testing::EndsWith(":39"),
+                                            ::testing::EndsWith(":44"), ::testing::EndsWith(":49")));
 }
 
 TEST(Parser, WordsWithSpacesAndTabs) {
@@ -89,7 +134,7 @@ TEST(Parser, CommentsAreKeptAndSkipped) {
   ASSERT_EQ(p.blocks.size(), 1u);
   EXPECT_TRUE(p.lexicalDiagnostics.empty());
   EXPECT_THAT(wordsOf(p.blocks[0]), ElementsAre(WordView{'N', "10", 1, 3}, WordView{'G', "00", 12, 3}));
-  EXPECT_EQ(p.blocks[0].comment, "face rapid in");
+  EXPECT_EQ(p.blocks[0].comment(), "face rapid in");
   EXPECT_EQ(p.lineCount, 3);
 }
 
@@ -98,7 +143,7 @@ TEST(Parser, ThaiCommentBeforeAWordGivesCodePointColumn) {
   const Program p = parse("(กลึงปาดหน้า) X20.");
   ASSERT_EQ(p.blocks.size(), 1u);
   EXPECT_THAT(wordsOf(p.blocks[0]), ElementsAre(WordView{'X', "20.", 15, 4}));
-  EXPECT_EQ(p.blocks[0].comment, "กลึงปาดหน้า");
+  EXPECT_EQ(p.blocks[0].comment(), "กลึงปาดหน้า");
 }
 
 TEST(Parser, ThaiCommentBeforeAnErrorGivesCodePointColumn) {

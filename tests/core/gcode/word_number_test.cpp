@@ -1,11 +1,12 @@
 // A word's number as written (word_number.h): short numbers inside the word,
-// long ones on the heap; copies and moves keep the text; the letter mask of a
+// long ones on the heap or in the parser's store; copies and moves keep the text; the letter mask of a
 // parsed block lets find() skip blocks without the letter.
 #include <gtest/gtest.h>
 
 #include <sstream>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "klueng/core/gcode/checker.h"
 #include "klueng/core/gcode/parser.h"
@@ -14,10 +15,11 @@ namespace klueng::core::gcode {
 namespace {
 
 TEST(WordNumber, KeepsShortAndLongTextExactly) {
-  const std::string fifteen = "-123456789.0123";  // the most held inside the word
+  const std::string seven = "-12.345";  // the most held inside the word
+  const std::string eight = "-123.456";
   const std::string sixteen = "-123456789.01234";
   const std::string long4k = "1" + std::string(4000, '0') + ".";
-  for (const std::string& text : {std::string(), std::string("01"), fifteen, sixteen, long4k}) {
+  for (const std::string& text : {std::string(), std::string("01"), seven, eight, sixteen, long4k}) {
     const WordNumber n(text);
     EXPECT_EQ(n.size(), text.size());
     EXPECT_EQ(n.view(), text);
@@ -78,6 +80,41 @@ TEST(WordNumber, ParsedWordsKeepNumbersPastTheInlineSize) {
   EXPECT_EQ(x->decimals, 1);
   const Program copy = p;  // the interpreter's rounding copies whole programs
   EXPECT_EQ(copy.blocks[0].find('X')->number, digits);
+}
+
+TEST(WordNumber, IsEightBytesAndABlockFortyOnA64BitBuild) {
+  EXPECT_EQ(sizeof(WordNumber), 8u);
+  if constexpr (sizeof(void*) == 8) {
+    EXPECT_EQ(sizeof(Word), 40u);
+    EXPECT_EQ(sizeof(Block), 40u);
+  }
+}
+
+TEST(WordNumber, ANumberFromTheParsersStoreOutlivesItsProgramInACopy) {
+  // "-123.4567" and the 20-digit number are too long to be held inside: the parser's store keeps
+  // them, and a word copied out of the program owns its own text.
+  std::vector<Word> kept;
+  {
+    Program p = parse("G01 X-123.4567 Z12345678901234567890.\n#1 = 2\nN5 #2 = 3 (a note)\n");
+    ASSERT_EQ(p.blocks.size(), 3u);
+    const Program moved = std::move(p);  // a moved program keeps its store
+    EXPECT_EQ(moved.blocks[0].find('X')->number, "-123.4567");
+    EXPECT_EQ(moved.blocks[0].find('X')->decimals, 4);
+    EXPECT_DOUBLE_EQ(moved.blocks[0].find('X')->value, -123.4567);
+    EXPECT_EQ(moved.blocks[0].find('Z')->text(), "Z12345678901234567890.");
+    EXPECT_EQ(moved.blocks[1].statement().kind, StatementKind::Assign);
+    EXPECT_EQ(moved.blocks[2].statement().kind, StatementKind::Assign);
+    EXPECT_EQ(moved.blocks[2].comment(), "a note");
+    EXPECT_EQ(moved.blocks[0].statement().kind, StatementKind::None);  // an NC block has no notes
+    EXPECT_EQ(moved.blocks[0].comment(), "");
+    for (const Word& w : moved.blocks[0].words) kept.push_back(w);
+    Block copy = moved.blocks[2];  // a copy has its own notes
+    copy.editComment() = "changed";
+    EXPECT_EQ(moved.blocks[2].comment(), "a note");
+  }
+  ASSERT_EQ(kept.size(), 3u);
+  EXPECT_EQ(kept[1].number, "-123.4567");
+  EXPECT_EQ(kept[2].number, "12345678901234567890.");
 }
 
 TEST(BlockLetters, ParseRecordsTheLettersOfEveryWordAndFindTrustsThem) {

@@ -21,7 +21,7 @@ namespace klueng::core::gcode {
 
 struct Word {
   // (Members ordered to avoid padding: a big program holds millions of words.)
-  // (48 bytes: the flags and the digit count share the first eight with expr.)
+  // (40 bytes: the flags and the digit count share the first eight with expr; the number is 8.)
   char letter = 0;  // upper-case address letter, 'A'..'Z'
   bool hasDecimalPoint : 1 = false;
   bool colon : 1 = false;     // an ISO ':' program number (":0100"), stored as letter 'O'
@@ -43,7 +43,7 @@ struct Word {
   // The word as written, for messages: "X25.4", ":0100".
   std::string text() const { return (colon ? ':' : letter) + number; }
 };
-static_assert(sizeof(Word) == 48, "a Word is 48 bytes: big programs hold millions");
+static_assert(sizeof(void*) != 8 || sizeof(Word) == 40, "a Word is 40 bytes: big programs hold millions");
 
 // Custom macro B statements (Fanuc 0i-TF manual, custom macro chapter; Haas
 // reads the same). A statement block holds only its statement (and an N word).
@@ -252,51 +252,48 @@ class WordList {
   std::uint32_t capacity_ = 0;
 };
 
-// The comments of a block, joined by a space: most blocks have none, so a block keeps one pointer
-// (8 bytes, not a std::string's 32). Reads like the std::string it replaced.
-class BlockComment {
+// What few blocks have: their comments (joined by a space) and a macro statement. A block keeps
+// one pointer to them (8 bytes, not a std::string's 32 and a Statement's 32), null for most.
+class BlockNotes {
  public:
-  BlockComment() = default;
-  BlockComment(std::string_view text) {  // NOLINT(google-explicit-constructor): reads like a string
-    if (!text.empty()) text_ = std::make_unique<std::string>(text);
-  }
-  BlockComment(const BlockComment& o) : text_(o.text_ ? std::make_unique<std::string>(*o.text_) : nullptr) {}
-  BlockComment(BlockComment&&) noexcept = default;
-  BlockComment& operator=(const BlockComment& o) {
-    if (this != &o) text_ = o.text_ ? std::make_unique<std::string>(*o.text_) : nullptr;
+  BlockNotes() = default;
+  BlockNotes(const BlockNotes& o) : data_(o.data_ ? std::make_unique<Data>(*o.data_) : nullptr) {}
+  BlockNotes(BlockNotes&&) noexcept = default;
+  BlockNotes& operator=(const BlockNotes& o) {
+    if (this == &o) return *this;
+    if (!o.data_)
+      data_.reset();
+    else if (data_)
+      *data_ = *o.data_;
+    else
+      data_ = std::make_unique<Data>(*o.data_);
     return *this;
   }
-  BlockComment& operator=(BlockComment&&) noexcept = default;
-  ~BlockComment() = default;
+  BlockNotes& operator=(BlockNotes&&) noexcept = default;
+  ~BlockNotes() = default;
 
-  bool empty() const { return !text_ || text_->empty(); }
-  std::size_t size() const { return text_ ? text_->size() : 0; }
-  std::string_view view() const { return text_ ? std::string_view(*text_) : std::string_view(); }
-  operator std::string_view() const { return view(); }  // NOLINT(google-explicit-constructor)
-  std::string str() const { return std::string(view()); }
-  void append(std::string_view text) {
-    if (text.empty()) return;
-    if (!text_) text_ = std::make_unique<std::string>();
-    text_->append(text);
-  }
-  BlockComment& operator+=(char c) {
-    append(std::string_view(&c, 1));
-    return *this;
-  }
-  friend bool operator==(const BlockComment& a, std::string_view b) { return a.view() == b; }
-  friend bool operator==(const BlockComment& a, const char* b) { return a.view() == b; }
-  friend bool operator==(const BlockComment& a, const BlockComment& b) { return a.view() == b.view(); }
-  friend std::ostream& operator<<(std::ostream& os, const BlockComment& c);
+  std::string_view comment() const { return data_ ? std::string_view(data_->comment) : std::string_view(); }
+  std::string& editComment() { return data().comment; }
+  const Statement& statement() const { return data_ ? data_->statement : kNone; }
+  Statement& editStatement() { return data().statement; }
 
  private:
-  std::unique_ptr<std::string> text_;
+  struct Data {
+    std::string comment;
+    Statement statement;
+  };
+  Data& data() {
+    if (!data_) data_ = std::make_unique<Data>();
+    return *data_;
+  }
+  static constexpr Statement kNone{};
+  std::unique_ptr<Data> data_;
 };
 
-// (A block is 72 bytes, not 112: a big program holds millions, issue 42 item 3.)
+// (A block is 40 bytes, not 112: a big program holds millions, issue 42 item 3.)
 struct Block {
   WordList words;               // in source order
-  BlockComment comment;         // text of ( ) and ; comments, joined by a space
-  Statement statement;          // a macro statement (kind None for an NC block)
+  BlockNotes notes;             // its comments and macro statement (comment(), statement())
   int line = 0;                 // 1-based line in the file
   int file = 0;                 // Program::files index: 0 = the program itself, else a subprogram file
   bool blockSkip = false;       // started with '/'
@@ -311,6 +308,14 @@ struct Block {
     return letter >= 'A' && letter <= 'Z' ? std::uint32_t{1} << (letter - 'A') : 0;
   }
   bool mayHave(char letter) const { return (letters & letterBit(letter)) != 0; }
+
+  // Text of its ( ) and ; comments, joined by a space ("" when none).
+  std::string_view comment() const { return notes.comment(); }
+  // Its macro statement (kind None for an NC block).
+  const Statement& statement() const { return notes.statement(); }
+  // For the parser and the loaders that change them (the first call makes room for the notes).
+  Statement& editStatement() { return notes.editStatement(); }
+  std::string& editComment() { return notes.editComment(); }
 
   // The first word of a letter (comma words ',C' excluded: findComma).
   // (Inline: the checker and the scans ask several letters of every block.)
@@ -365,7 +370,7 @@ struct Block {
   LetterWords all(char letter) const { return LetterWords(words, letter, mayHave(letter)); }
 };
 // (On a 64-bit build: the WebAssembly build's 32-bit pointers make it smaller.)
-static_assert(sizeof(void*) != 8 || sizeof(Block) == 72, "a Block is 72 bytes: big programs hold millions");
+static_assert(sizeof(void*) != 8 || sizeof(Block) == 40, "a Block is 40 bytes: big programs hold millions");
 
 struct Program {
   std::vector<Block> blocks;  // only lines with words; blank, comment-only and % lines are dropped

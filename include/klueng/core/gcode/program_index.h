@@ -37,7 +37,7 @@ class ProgramIndex {
 
  private:
   std::vector<ProgramSection> sections_;
-  std::vector<int> sectionOfBlock_;
+  int blockCount_ = 0;  // (a section's blocks are found by a search: no table of 4 bytes a block)
   std::unordered_map<int, int> byNumber_;
   // Per section: (N, block index), sorted; a flat array, not a node per block
   // (issue 13: the index is built for every check of a 100,000-block program).

@@ -1,8 +1,11 @@
 #pragma once
 // The number of a word exactly as written ("01", "-.5", "25.", "#101").
-// A big program holds millions of words, and std::string's 32 bytes were half
-// of each: this keeps up to 15 characters in 16 bytes, and a longer text
-// (a line may hold a 4,000-digit number) on the heap.
+// A big program holds millions of words (issue 42 item 3): this is 8 bytes. Up to 7
+// characters (nearly every number a CAM program writes: "-12.345") are kept inside;
+// a longer text is a length-prefixed run of characters, either the number's own (on the
+// heap) or borrowed from a store the parser keeps beside the words (Program::wordStores,
+// alive as long as the program's words). A copy always owns its text; a move keeps it.
+#include <bit>
 #include <cstdint>
 #include <cstring>
 #include <iosfwd>
@@ -14,14 +17,12 @@ namespace klueng::core::gcode {
 class WordNumber {
  public:
   static constexpr std::size_t npos = std::string_view::npos;
+  static constexpr std::size_t kInlineCapacity = 7;
 
-  WordNumber() { clearInline(); }
+  WordNumber() = default;
   WordNumber(std::string_view text) { init(text); }  // NOLINT(google-explicit-constructor): reads like a string
   WordNumber(const WordNumber& o) { init(o.view()); }
-  WordNumber(WordNumber&& o) noexcept {
-    std::memcpy(buf_, o.buf_, sizeof buf_);
-    o.clearInline();
-  }
+  WordNumber(WordNumber&& o) noexcept : bits_(o.bits_) { o.bits_ = kEmpty; }
   WordNumber& operator=(const WordNumber& o) {
     if (this != &o) assign(o.view());
     return *this;
@@ -29,8 +30,8 @@ class WordNumber {
   WordNumber& operator=(WordNumber&& o) noexcept {
     if (this != &o) {
       release();
-      std::memcpy(buf_, o.buf_, sizeof buf_);
-      o.clearInline();
+      bits_ = o.bits_;
+      o.bits_ = kEmpty;
     }
     return *this;
   }
@@ -42,13 +43,25 @@ class WordNumber {
   WordNumber& operator=(const char* text) { return *this = std::string_view(text); }
   ~WordNumber() { release(); }
 
+  // The text at `prefixed` (a 4-byte aligned std::uint32_t length, then the characters), kept by
+  // the caller for as long as this number or its moves live (the parser's store).
+  static WordNumber borrow(const char* prefixed) {
+    WordNumber n;
+    n.bits_ = static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(prefixed)) | kBorrowedTag;
+    return n;
+  }
+
+  // The lexer's case: a text of at most kInlineCapacity characters, kept inside (a byte at a time:
+  // a call to memcpy for a few bytes cost more).
+  void setShort(std::string_view text) {
+    release();
+    std::uint64_t bits = kInlineTag | (static_cast<std::uint64_t>(text.size()) << 2);
+    for (std::size_t k = 0; k < text.size(); ++k)
+      bits |= static_cast<std::uint64_t>(static_cast<unsigned char>(text[k])) << (8 * (k + 1));
+    bits_ = bits;
+  }
+
   void assign(std::string_view text) {
-    if (!onHeap() && text.size() <= kInlineCapacity) {
-      // The lexer's case: stays inside (memmove: text may be this number's own).
-      if (!text.empty()) std::memmove(buf_, text.data(), text.size());
-      buf_[kTag] = static_cast<char>(text.size());
-      return;
-    }
     // (text may point into this number: build the new value before freeing the old.)
     WordNumber fresh(text);
     *this = std::move(fresh);
@@ -60,8 +73,15 @@ class WordNumber {
     return *this;
   }
 
-  const char* data() const { return onHeap() ? heapPointer() : buf_; }
-  std::size_t size() const { return onHeap() ? heapSize() : static_cast<unsigned char>(buf_[kTag]); }
+  const char* data() const {
+    return isInline() ? reinterpret_cast<const char*>(&bits_) + 1 : pointer() + sizeof(std::uint32_t);
+  }
+  std::size_t size() const {
+    if (isInline()) return static_cast<std::size_t>((bits_ >> 2) & 7u);
+    std::uint32_t n = 0;
+    std::memcpy(&n, pointer(), sizeof n);
+    return n;
+  }
   bool empty() const { return size() == 0; }
   std::string_view view() const { return {data(), size()}; }
   operator std::string_view() const { return view(); }  // NOLINT(google-explicit-constructor)
@@ -89,42 +109,36 @@ class WordNumber {
   friend std::ostream& operator<<(std::ostream& os, const WordNumber& n);
 
  private:
-  static constexpr std::size_t kTag = 15;  // inline: the length; 0xFF: on the heap
-  static constexpr unsigned char kHeapTag = 0xFF;
-  static constexpr std::size_t kInlineCapacity = 15;
+  // The low two bits say the form: 01 inside (the length in bits 2-4, the characters in bytes
+  // 1-7), 00 owned (a pointer to new'd memory), 10 borrowed. (Little-endian: bytes 1-7 are the
+  // high seven; x86, ARM and WebAssembly all are.)
+  static_assert(std::endian::native == std::endian::little, "WordNumber keeps its characters in bytes 1-7");
+  static constexpr std::uint64_t kInlineTag = 1;
+  static constexpr std::uint64_t kBorrowedTag = 2;
+  static constexpr std::uint64_t kTagMask = 3;
+  static constexpr std::uint64_t kEmpty = kInlineTag;
 
-  bool onHeap() const { return static_cast<unsigned char>(buf_[kTag]) == kHeapTag; }
-  char* heapPointer() const {
-    char* p = nullptr;
-    std::memcpy(&p, buf_, sizeof p);
-    return p;
-  }
-  std::size_t heapSize() const {
-    std::uint32_t n = 0;
-    std::memcpy(&n, buf_ + sizeof(char*), sizeof n);
-    return n;
-  }
-  void clearInline() { std::memset(buf_, 0, sizeof buf_); }
+  bool isInline() const { return (bits_ & kTagMask) == kInlineTag; }
+  bool owns() const { return (bits_ & kTagMask) == 0; }
+  const char* pointer() const { return reinterpret_cast<const char*>(static_cast<std::uintptr_t>(bits_ & ~kTagMask)); }
   void init(std::string_view text) {
-    clearInline();
     if (text.size() <= kInlineCapacity) {
-      if (!text.empty()) std::memcpy(buf_, text.data(), text.size());
-      buf_[kTag] = static_cast<char>(text.size());
+      bits_ = kInlineTag | (static_cast<std::uint64_t>(text.size()) << 2);
+      if (!text.empty()) std::memcpy(reinterpret_cast<char*>(&bits_) + 1, text.data(), text.size());
       return;
     }
-    char* p = new char[text.size()];
-    std::memcpy(p, text.data(), text.size());
     const auto n = static_cast<std::uint32_t>(text.size());  // a line is at most a few MB
-    std::memcpy(buf_, &p, sizeof p);
-    std::memcpy(buf_ + sizeof p, &n, sizeof n);
-    buf_[kTag] = static_cast<char>(kHeapTag);
+    auto* p = static_cast<char*>(::operator new(sizeof n + text.size()));
+    std::memcpy(p, &n, sizeof n);
+    std::memcpy(p + sizeof n, text.data(), text.size());
+    bits_ = static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(p));
   }
   void release() {
-    if (onHeap()) delete[] heapPointer();
-    clearInline();
+    if (owns()) ::operator delete(const_cast<char*>(pointer()));
+    bits_ = kEmpty;
   }
 
-  alignas(8) char buf_[16];
+  std::uint64_t bits_ = kEmpty;
 };
 
 }  // namespace klueng::core::gcode
