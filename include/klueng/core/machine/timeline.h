@@ -1,6 +1,6 @@
 #pragma once
-#include <bit>
 #include <cstdint>
+#include <cstring>
 // The result of interpreting a program: every move with exact times, and the
 // state after every block. Consumers: the cut simulator, trace/CSV writer,
 // cycle-time report, the GUI's animation (which maps time -> pose).
@@ -174,9 +174,8 @@ class RecordMoveList {
   const std::vector<Point>& centres() const { return centres_; }
 
  private:
-  static bool sameBits(double a, double b) {
-    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
-  }
+  // memcmp, not std::bit_cast: the WebAssembly build's libc++ (emscripten 3.1.6) has no bit_cast.
+  static bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
   template <typename M>  // a Move or a RecordMove: the same names
   void pack(const M& m) {
     Packed p;
