@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <bit>
+#include <cstring>
 #include <cstdint>
 #include <string>
 
@@ -112,6 +112,25 @@ TEST(RunMemory, ALongProgramOfMovesStopsAtTheBudgetToo) {
   EXPECT_EQ(whole.snapshots.size(), 20003u);
 }
 
+bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool sameBits(const Vec2& a, const Vec2& b) { return sameBits(a.x(), b.x()) && sameBits(a.y(), b.y()); }
+
+// A packed move read back says, bit for bit, what the move says.
+void expectSameMove(const RecordMove& r, const Move& m) {
+  EXPECT_TRUE(sameBits(r.path.start, m.path.start));
+  EXPECT_TRUE(sameBits(r.path.end, m.path.end));
+  EXPECT_TRUE(sameBits(r.path.centre, m.path.centre));
+  EXPECT_EQ(r.path.kind, m.path.kind);
+  EXPECT_EQ(r.path.ccw, m.path.ccw);
+  EXPECT_EQ(r.line, m.line);
+  EXPECT_EQ(r.blockIndex, m.blockIndex);
+  EXPECT_EQ(r.file, m.file);
+  EXPECT_EQ(r.tool, m.tool);
+  EXPECT_EQ(r.offset, m.offset);
+  EXPECT_EQ(r.kind, m.kind);
+  EXPECT_EQ(r.spindle, m.spindle);
+}
+
 TEST(RunMemory, ARecordOfMarksKeepsWhatTheSnapshotsSay) {
   const char* text =
       "G21 G99\nT0101\nG96 S180 M03\nG50 S2500\nG00 X52. Z2.\nG01 X48. F0.2\nZ-30.\nG20\nG00 X3. Z1.\n"
@@ -130,19 +149,7 @@ TEST(RunMemory, ARecordOfMarksKeepsWhatTheSnapshotsSay) {
   ASSERT_EQ(a.moveCount(), b.moveCount());
   // Each kept move says what the move says of its path, block, line, file, tool, offset and kind.
   for (std::size_t k = 0; k < a.moves.size(); ++k) {
-    const Move& m = a.moves[k];
-    const Move r = b.recordMoves[k].move();
-    EXPECT_EQ(r.path.start, m.path.start);
-    EXPECT_EQ(r.path.end, m.path.end);
-    EXPECT_EQ(r.path.centre, m.path.centre);
-    EXPECT_EQ(r.path.kind, m.path.kind);
-    EXPECT_EQ(r.path.ccw, m.path.ccw);
-    EXPECT_EQ(r.line, m.line);
-    EXPECT_EQ(r.blockIndex, m.blockIndex);
-    EXPECT_EQ(r.file, m.file);
-    EXPECT_EQ(r.tool, m.tool);
-    EXPECT_EQ(r.offset, m.offset);
-    EXPECT_EQ(r.kind, m.kind);
+    expectSameMove(b.recordMoves[k], a.moves[k]);
   }
   EXPECT_EQ(sideOfCuts(a), sideOfCuts(b));
   ASSERT_GT(a.snapshots.size(), 15u);
@@ -168,25 +175,6 @@ TEST(RunMemory, ARecordOfMarksKeepsWhatTheSnapshotsSay) {
   }
   EXPECT_TRUE(inch && clamped && secondTool);
   EXPECT_EQ(a.blockCount(), b.blockCount());
-}
-
-bool sameBits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
-bool sameBits(const Vec2& a, const Vec2& b) { return sameBits(a.x(), b.x()) && sameBits(a.y(), b.y()); }
-
-// A packed move read back says, bit for bit, what the move says.
-void expectSameMove(const RecordMove& r, const Move& m) {
-  EXPECT_TRUE(sameBits(r.path.start, m.path.start));
-  EXPECT_TRUE(sameBits(r.path.end, m.path.end));
-  EXPECT_TRUE(sameBits(r.path.centre, m.path.centre));
-  EXPECT_EQ(r.path.kind, m.path.kind);
-  EXPECT_EQ(r.path.ccw, m.path.ccw);
-  EXPECT_EQ(r.line, m.line);
-  EXPECT_EQ(r.blockIndex, m.blockIndex);
-  EXPECT_EQ(r.file, m.file);
-  EXPECT_EQ(r.tool, m.tool);
-  EXPECT_EQ(r.offset, m.offset);
-  EXPECT_EQ(r.kind, m.kind);
-  EXPECT_EQ(r.spindle, m.spindle);
 }
 
 // Arcs both ways, a G50 that moves the controlled point without a move, a dwell, a rapid's two
