@@ -675,7 +675,12 @@ void CutSimulator::cutMove(std::size_t index, double sEnd) {
   if (sEnd >= 1.0 && std::min(std::abs(m.path.start[1]), std::abs(m.path.end[1])) < kCutOffReachMm &&
       std::abs(m.path.end[1] - m.path.start[1]) >= std::abs(m.path.end[0] - m.path.start[0]))
     stock_.catchCutOffPart();
-  if (options_.detectCollisions && !tool->holder.empty() && overlapsStock(ctx, nosePieces, boxPieces, true)) {
+  // A holder whose lowest point along the whole move stays above the ceiling (the material's highest
+  // radius in these columns before this move cut) meets no material: no sweep of it needed.
+  const bool holderAbove =
+      toolBounds_.boundsHoldAll && ctx.tolerance >= 0.0 && pathBounds(m, s0, sEnd, toolBounds_.holder).x0 >= ceiling;
+  if (options_.detectCollisions && !tool->holder.empty() && !holderAbove &&
+      overlapsStock(ctx, nosePieces, boxPieces, true)) {
     const double s = earliest([&](double e) { return overlapsStock(ctx, nose(s0, e), boxes(s0, e), true); });
     const double everywhere = std::numeric_limits<double>::infinity();
     if (excuseGuess(codes::kGuessHitsStock, m, timeline_->moves[index].path.pointAt(s),
