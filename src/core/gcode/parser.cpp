@@ -60,6 +60,34 @@ double parseLongUnsigned(std::string_view digits) {
   return v;
 }
 
+// [+-]? digits [. digits] from s[k]: where it ends, its digits as one integer and how many lie
+// before and after the point. One pass: the lexer's hottest loop, every word of the file.
+struct DecimalScan {
+  std::size_t start = 0, end = 0;  // the digits (after the sign) to the end
+  std::uint64_t mantissa = 0;      // exact while at most 15 digits
+  std::size_t intDigits = 0, fracDigits = 0;
+  bool point = false;
+};
+
+inline DecimalScan scanDecimal(std::string_view s, std::size_t k) {
+  const std::size_t n = s.size();
+  DecimalScan r;
+  if (k < n && (s[k] == '+' || s[k] == '-')) ++k;
+  r.start = k;
+  while (k < n && isDigit(static_cast<unsigned char>(s[k])))
+    r.mantissa = r.mantissa * 10 + static_cast<std::uint64_t>(s[k++] - '0');
+  r.intDigits = k - r.start;
+  if (k < n && s[k] == '.') {
+    r.point = true;
+    const std::size_t fracStart = ++k;
+    while (k < n && isDigit(static_cast<unsigned char>(s[k])))
+      r.mantissa = r.mantissa * 10 + static_cast<std::uint64_t>(s[k++] - '0');
+    r.fracDigits = k - fracStart;
+  }
+  r.end = k;
+  return r;
+}
+
 class LineParser {
  public:
   LineParser(Program& program, std::size_t& diagnosticBudget, int file)
@@ -527,23 +555,10 @@ class LineParser {
   bool lexPlainWord(std::size_t& i, int& col) {
     const std::string_view line = line_;
     const std::size_t n = line.size();
-    std::size_t k = i + 1;
-    if (k < n && (line[k] == '-' || line[k] == '+')) ++k;
-    const std::size_t intStart = k;
-    std::uint64_t mantissa = 0;
-    while (k < n && isDigit(static_cast<unsigned char>(line[k])))
-      mantissa = mantissa * 10 + static_cast<std::uint64_t>(line[k++] - '0');
-    const std::size_t intDigits = k - intStart;
-    bool point = false;
-    std::size_t fracDigits = 0;
-    if (k < n && line[k] == '.') {
-      point = true;
-      const std::size_t fracStart = ++k;
-      while (k < n && isDigit(static_cast<unsigned char>(line[k])))
-        mantissa = mantissa * 10 + static_cast<std::uint64_t>(line[k++] - '0');
-      fracDigits = k - fracStart;
-    }
-    const std::size_t digits = intDigits + fracDigits;
+    const DecimalScan scan = scanDecimal(line, i + 1);
+    const std::size_t k = scan.end;
+    const std::size_t fracDigits = scan.fracDigits;
+    const std::size_t digits = scan.intDigits + fracDigits;
     if (digits == 0 || digits > 15) return false;
     if (k < n) {
       const auto d = static_cast<unsigned char>(line[k]);
@@ -564,10 +579,10 @@ class LineParser {
       w.number.setShort(number);  // (nearly always: no call)
     else
       setNumber(w, number);
-    w.hasDecimalPoint = point;
+    w.hasDecimalPoint = scan.point;
     w.decimals = static_cast<std::int16_t>(fracDigits);
     w.range = SourceRange{lineNumber_, col, length, file_};
-    const double v = static_cast<double>(mantissa) / kPow10[fracDigits];
+    const double v = static_cast<double>(scan.mantissa) / kPow10[fracDigits];
     w.value = number[0] == '-' ? -v : v;
     i = k;
     col += length;
@@ -581,27 +596,15 @@ class LineParser {
     const std::size_t start = i;
     ++i;
     if (startsAddressExpression(i)) return lexAddressExpression(letter, i, col);
-    // number := [+-]? ( digits [. digits?] | . digits ), read in one pass
-    // with its value (the lexer's hottest loop: every word of the file).
+    // number := [+-]? ( digits [. digits?] | . digits ), read in one pass with its value.
     const NumberText text = gatherNumber(i);
     const std::string_view number = text.number;
     const std::size_t n = number.size();
-    std::size_t k = 0;
-    if (k < n && (number[k] == '+' || number[k] == '-')) ++k;
-    const std::size_t intStart = k;
-    std::uint64_t mantissa = 0;  // exact while at most 15 digits (parseLongUnsigned beyond)
-    while (k < n && isDigit(static_cast<unsigned char>(number[k])))
-      mantissa = mantissa * 10 + static_cast<std::uint64_t>(number[k++] - '0');
-    const std::size_t intDigits = k - intStart;
-    bool point = false;
-    std::size_t fracDigits = 0;
-    if (k < n && number[k] == '.') {
-      point = true;
-      const std::size_t fracStart = ++k;
-      while (k < n && isDigit(static_cast<unsigned char>(number[k])))
-        mantissa = mantissa * 10 + static_cast<std::uint64_t>(number[k++] - '0');
-      fracDigits = k - fracStart;
-    }
+    const DecimalScan scan = scanDecimal(number, 0);
+    const std::size_t k = scan.end;
+    const std::uint64_t mantissa = scan.mantissa;  // exact while at most 15 digits (parseLongUnsigned beyond)
+    const std::size_t intDigits = scan.intDigits, fracDigits = scan.fracDigits;
+    const bool point = scan.point;
     i = text.end;
     // "Z,15" / "X2,5": a comma typed for the decimal point.
     if (i + 1 < line_.size() && line_[i] == ',' && isDigit(static_cast<unsigned char>(line_[i + 1])) && k == n) {
@@ -641,7 +644,7 @@ class LineParser {
     w.range = SourceRange{lineNumber_, col, length, file_};
     const std::size_t digits = intDigits + fracDigits;
     const double v = digits <= 15 ? static_cast<double>(mantissa) / kPow10[fracDigits]
-                                  : parseLongUnsigned(number.substr(intStart, k - intStart));
+                                  : parseLongUnsigned(number.substr(scan.start, k - scan.start));
     w.value = number[0] == '-' ? -v : v;
     return col + length;
   }
